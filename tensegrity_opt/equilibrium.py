@@ -1,0 +1,282 @@
+"""Equilibria under a prescribed tip displacement (the paper's problem) or tip force.
+
+``solve_equilibrium`` returns the *least-energy stable* equilibrium with the tip
+held at ``(2 sum(b) - dx, dy)``: ``min E(q)`` s.t. ``tip(q) = target`` is posed in
+CasADi and solved by IPOPT from many seeds (buckling modes, mirrors, random
+starts, and the caller's ``q0``), each solution polished by Newton on the KKT
+system and classified by the inertia of the reduced Hessian.
+
+``solve_equilibrium_under_force`` returns a local minimiser of
+``E(q) - F . tip(q)`` (a prescribed dead load).
+
+Both are thread-safe (solvers are cached per thread, see :mod:`.solvers`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from .buckling import critical_force, straight_matrices
+from .errors import InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError
+from .manipulator import Manipulator
+from .seeds import seeds
+from .shapes import shape_label, sign_string
+from .solvers import LocalResult, model
+from .stability import classify
+
+__all__ = ["Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "make_equilibrium",
+           "local_equilibrium"]
+
+
+@dataclass(frozen=True)
+class Equilibrium:
+    """An equilibrium configuration of the chain.
+
+    Attributes
+    ----------
+    q : ndarray (n,)
+        Relative joint angles (rad), inside the physical range.
+    energy : float
+        Elastic energy (force x length).
+    force : ndarray (2,)
+        Tip force ``[Fx, Fy]`` holding the equilibrium (``grad E = J^T F``); for the
+        displacement problem it comes from the constraint multipliers.
+    morse_index : int
+        Number of negative eigenvalues of the reduced Hessian (0: stable).
+    stable : bool
+        Strict local minimum (Morse index 0, non-degenerate).
+    shape : str
+        Shape label (:mod:`tensegrity_opt.shapes`); ``signs`` the sign string.
+    status : str
+        The solver's return status (IPOPT ``return_status``, or the Newton status).
+    iterations : int
+        Solver iterations of the final solve.
+    tip : ndarray (2,)
+        Tip position.
+    control : str
+        ``"displacement"`` or ``"force"``.
+    hessian_eigenvalues : ndarray
+        Eigenvalues of the reduced Hessian (absolute-angle coordinates).
+    """
+
+    q: np.ndarray
+    energy: float
+    force: np.ndarray
+    morse_index: int
+    stable: bool
+    shape: str
+    signs: str
+    status: str
+    iterations: int
+    tip: np.ndarray
+    control: str = "displacement"
+    hessian_eigenvalues: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
+
+    @property
+    def fx(self) -> float:
+        return float(self.force[0])
+
+    @property
+    def fy(self) -> float:
+        return float(self.force[1])
+
+    @property
+    def kind(self) -> str:
+        """``"minimum"``, ``"maximum"`` or ``"saddle"`` (``"degenerate"`` on a zero eigenvalue)."""
+        dim = self.hessian_eigenvalues.size
+        if self.stable:
+            return "minimum"
+        if self.morse_index == 0:
+            return "degenerate"
+        return "maximum" if self.morse_index == dim else "saddle"
+
+
+def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:
+    """Classify a converged local solution into an :class:`Equilibrium`."""
+    inertia = classify(m, res.q, res.force, constrained=constrained)
+    return Equilibrium(q=res.q.copy(), energy=m.energy(res.q), force=np.asarray(res.force, float).copy(),
+                       morse_index=inertia.morse_index, stable=inertia.stable, shape=shape_label(res.q),
+                       signs=sign_string(res.q), status=res.status, iterations=res.iterations,
+                       tip=m.tip(res.q), control="displacement" if constrained else "force",
+                       hessian_eigenvalues=inertia.eigenvalues)
+
+
+def _valid(m: Manipulator, res: LocalResult) -> bool:
+    return res.success and not res.on_bound and m.in_range(res.q) and bool(np.all(np.isfinite(res.q)))
+
+
+def _check_q0(m: Manipulator, q0) -> np.ndarray | None:
+    if q0 is None:
+        return None
+    q0 = np.asarray(q0, dtype=float)
+    if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
+        raise InvalidParameterError(f"q0 must hold {m.n} finite joint angles, got shape {q0.shape}", field="q0")
+    if not m.in_range(q0):
+        raise InvalidParameterError("q0 lies outside the physical joint range |q_i| < pi - 2 beta_i", field="q0")
+    return q0
+
+
+def _straight(m: Manipulator) -> Equilibrium:
+    """The fully extended chain (the only configuration reaching ``dx = dy = 0``)."""
+    q = np.zeros(m.n)
+    _, _, S0 = straight_matrices(m)
+    fy = float(S0 @ m.gradient(q) / (S0 @ S0))
+    return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
+                       shape="I", signs=sign_string(q), status="straight", iterations=0,
+                       tip=m.tip(q), control="displacement")
+
+
+def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None,
+                      *, minimize: bool = False) -> LocalResult:
+    """One local solve for the displacement problem: Newton on the KKT system from ``(q0, F0)``,
+    or IPOPT (``minimize=True``) followed by a Newton polish. Returns the raw result."""
+    mdl = model(m.n)
+    if not minimize:
+        return mdl.newton_kkt(m.params, m.joint_limits, target, q0, F0)
+    res = mdl.minimize_displacement(m.params, m.joint_limits, target, q0)
+    if res.success and not res.on_bound:
+        pol = mdl.newton_kkt(m.params, m.joint_limits, target, res.q, res.force)
+        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-6:
+            pol.status = res.status
+            pol.iterations = res.iterations
+            return pol
+    return res
+
+
+def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, n_random: int = 8,
+                      max_modes: int = 6) -> Equilibrium:
+    """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
+
+    Parameters
+    ----------
+    m : Manipulator
+    dx, dy : float
+        Tip deflection (length units); ``dx > 0`` shortens the chain.
+    q0 : array_like (n,), optional
+        A nearby configuration (continuation, control loops): a local solve from it
+        is tried first and its solution competes with the global search.
+    n_random, max_modes : int
+        Random starts and buckling-mode seeds (each used with both signs).
+
+    Returns
+    -------
+    Equilibrium
+        Stable (``morse_index == 0``) and of least energy among those found. When two
+        mirror images tie (``dy = 0``) the one nearer ``q0`` wins, else the one with
+        ``q_1 > 0``.
+
+    Raises
+    ------
+    UnreachableTargetError
+        (``ValueError``) when the target lies beyond the chain's reach; before any solve.
+    NoEquilibriumError, SolverError
+        (``RuntimeError``) when no solve converged to a stable equilibrium inside the
+        physical range; ``status`` lists the solver statuses met.
+    """
+    target = m.check_reachable(dx, dy)
+    q0 = _check_q0(m, q0)
+    if dx == 0.0 and dy == 0.0:
+        return _straight(m)
+    candidates: list[LocalResult] = []
+    statuses: dict[str, int] = {}
+
+    def consider(res: LocalResult) -> None:
+        key = res.status if _valid(m, res) else (res.status + (" (on joint limit)" if res.on_bound else ""))
+        statuses[key] = statuses.get(key, 0) + 1
+        if _valid(m, res):
+            candidates.append(res)
+
+    if q0 is not None:
+        consider(local_equilibrium(m, target, q0, minimize=True))
+    for s in seeds(m, dx, dy, max_modes=max_modes, n_random=n_random):
+        consider(local_equilibrium(m, target, s.q, minimize=True))
+    if not candidates:
+        raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
+                          status=_summary(statuses))
+    stable: list[Equilibrium] = []
+    seen: list[np.ndarray] = []
+    for res in sorted(candidates, key=lambda r: m.energy(r.q)):
+        if any(np.max(np.abs(res.q - s)) < 1e-7 for s in seen):
+            continue
+        seen.append(res.q)
+        eq = make_equilibrium(m, res, constrained=True)
+        if eq.stable:
+            stable.append(eq)
+    if not stable:
+        raise NoEquilibriumError(
+            f"no stable equilibrium found for dx={dx:g}, dy={dy:g} ({len(seen)} unstable ones)",
+            status=_summary(statuses))
+    return _pick(stable, q0)
+
+
+def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:
+    e_min = min(e.energy for e in stable)
+    tol = 1e-9 * max(1.0, abs(e_min))
+    best = [e for e in stable if e.energy <= e_min + tol]
+    if q0 is not None:
+        return min(best, key=lambda e: float(np.linalg.norm(e.q - q0)))
+    pos = [e for e in best if _first_sign(e.q) > 0]
+    return (pos or best)[0]
+
+
+def _first_sign(q: np.ndarray) -> float:
+    nz = q[np.abs(q) > 1e-9 * max(1e-300, float(np.abs(q).max()))]
+    return float(np.sign(nz[0])) if nz.size else 0.0
+
+
+def _summary(statuses: dict[str, int]) -> str:
+    return ", ".join(f"{k} x{v}" for k, v in sorted(statuses.items()))
+
+
+def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=None) -> Equilibrium:
+    """A local minimiser of ``E(q) - F . tip(q)`` for the tip force ``F = (fx, fy)`` (dead load).
+
+    Parameters
+    ----------
+    fx, fy : float
+        Tip force (force units); ``fx < 0`` compresses.
+    q0 : array_like (n,), optional
+        Start. Default: straight, perturbed along the first free buckling mode when
+        straight is unstable under this load (``K + fx G`` not positive definite).
+
+    Returns
+    -------
+    Equilibrium
+        ``control == "force"``, classified with ``Z = I``; may be unstable only when
+        IPOPT stops at a degenerate point, which ``stable`` reports.
+
+    Raises
+    ------
+    NoEquilibriumError, SolverError
+        (``RuntimeError``) when IPOPT does not converge or only finds a point on a joint limit.
+    """
+    for name, v in (("fx", fx), ("fy", fy)):
+        if not math.isfinite(float(v)):
+            raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
+    force = np.array([float(fx), float(fy)])
+    q0 = _check_q0(m, q0)
+    if q0 is None:
+        q0 = np.zeros(m.n)
+        K, G, _ = straight_matrices(m)
+        w, V = np.linalg.eigh(np.diag(K) + force[0] * G)
+        if w[0] <= 0.0:
+            v = V[:, 0] / np.abs(V[:, 0]).max()
+            q0 = 0.05 * v * float(np.min(m.joint_limits))
+    mdl = model(m.n)
+    res = mdl.minimize_force(m.params, m.joint_limits, force, q0)
+    if res.success and not res.on_bound:
+        pol = mdl.newton_force(m.params, m.joint_limits, force, res.q)
+        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-6:
+            pol.status, pol.iterations = res.status, res.iterations
+            res = pol
+    if not res.success:
+        raise SolverError(f"IPOPT did not converge for the tip force ({fx:g}, {fy:g})", status=res.status)
+    if not _valid(m, res):
+        raise NoEquilibriumError(
+            f"no equilibrium inside the physical range for the tip force ({fx:g}, {fy:g}): the minimiser "
+            "presses a joint against its limit", status=res.status)
+    return make_equilibrium(m, res, constrained=False)

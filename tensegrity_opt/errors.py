@@ -1,0 +1,87 @@
+"""Domain exceptions of tensegrity_opt.
+
+Every exception subclasses a built-in (``ValueError`` for bad input or an
+ill-posed question, ``RuntimeError`` for a solve that did not produce a
+result), carries a machine-readable ``code`` and, where one input is to blame,
+the name of that input in ``field``.  The HTTP service maps them to answers in
+one place (``service/errors.py``) using ``code``.
+"""
+
+from __future__ import annotations
+
+__all__ = [
+    "TensegrityError",
+    "InvalidParameterError",
+    "UnreachableTargetError",
+    "StraightNotEquilibriumError",
+    "UnstableStraightError",
+    "UnsupportedError",
+    "SolverError",
+    "NoEquilibriumError",
+]
+
+
+class TensegrityError(Exception):
+    """Base of every domain exception (never raised itself)."""
+
+    code = "tensegrity_error"
+
+    def __init__(self, message: str, *, field: str | None = None, **details: object) -> None:
+        super().__init__(message)
+        self.message = message
+        self.field = field
+        self.details = details
+
+    def to_dict(self) -> dict[str, object]:
+        """Machine-readable form: ``code``, ``message``, ``field`` and details."""
+        out: dict[str, object] = {"code": self.code, "message": self.message}
+        if self.field is not None:
+            out["field"] = self.field
+        out.update({k: v for k, v in self.details.items() if v is not None})
+        return out
+
+
+class InvalidParameterError(TensegrityError, ValueError):
+    """A model parameter or argument is invalid (non-finite, non-positive, wrong shape...)."""
+
+    code = "invalid_parameter"
+
+
+class UnreachableTargetError(TensegrityError, ValueError):
+    """The requested tip position lies beyond the chain's reach."""
+
+    code = "unreachable_target"
+
+
+class StraightNotEquilibriumError(TensegrityError, ValueError):
+    """The straight configuration is not an equilibrium (asymmetric segment preloads)."""
+
+    code = "straight_not_equilibrium"
+
+
+class UnstableStraightError(TensegrityError, ValueError):
+    """The straight configuration is not stable unloaded (some joint stiffness K <= 0)."""
+
+    code = "straight_unstable"
+
+
+class UnsupportedError(TensegrityError, ValueError):
+    """The question is valid in general but not for this model (e.g. a landscape with n != 4)."""
+
+    code = "unsupported"
+
+
+class SolverError(TensegrityError, RuntimeError):
+    """A numerical solve did not converge; ``status`` holds the solver's return status."""
+
+    code = "solver_failed"
+
+    def __init__(self, message: str, *, status: str | None = None, **details: object) -> None:
+        super().__init__(message, status=status, **details)
+        self.status = status
+
+
+class NoEquilibriumError(SolverError):
+    """Solves converged but no equilibrium of the requested kind lies inside the physical range."""
+
+    code = "no_equilibrium"

@@ -1,0 +1,262 @@
+"""A serial chain of dual-triangle segments: kinematics and elastostatics in numpy.
+
+The base is fixed, the chain is straight along +x. Joint ``j`` (1-based) has the
+relative angle ``q_j``; absolute link angles are ``phi_j = q_1 + ... + q_j``.
+The base half-link has length ``b_1``, the link after joint ``j < n`` has length
+``b_j + b_{j+1}`` and the last one ``b_n`` (eq. 5 for equal ``b``), so the
+straight length is ``2 sum(b)``. A deflection ``(dx, dy)`` puts the tip at
+``(2 sum(b) - dx, dy)``.
+
+Everything here is plain numpy on relative angles ``q`` (the paper's variables);
+the solvers work on absolute angles internally.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from functools import cached_property
+from typing import Any
+
+import numpy as np
+
+from .errors import InvalidParameterError, UnreachableTargetError
+from .segment import Segment
+
+__all__ = ["Manipulator"]
+
+#: Order of the per-segment parameters in :meth:`Manipulator.params`.
+PARAM_NAMES = ("a", "b", "k1", "k2", "L1_0", "L2_0")
+
+
+@dataclass(frozen=True)
+class Manipulator:
+    """A chain of ``n >= 1`` segments (base first).
+
+    Parameters
+    ----------
+    segments : sequence of Segment
+        The segments from base to tip; they may differ in every parameter.
+
+    Raises
+    ------
+    InvalidParameterError
+        (a ``ValueError``, ``field="segments"``) when the sequence is empty or
+        holds something other than :class:`Segment`.
+    """
+
+    segments: tuple[Segment, ...]
+
+    def __init__(self, segments: Iterable[Segment]) -> None:
+        if isinstance(segments, Segment):
+            segments = (segments,)
+        try:
+            segs = tuple(segments)
+        except TypeError:
+            raise InvalidParameterError("segments must be a sequence of Segment", field="segments") from None
+        if len(segs) < 1:
+            raise InvalidParameterError("a manipulator needs n >= 1 segments", field="segments")
+        for i, s in enumerate(segs):
+            if not isinstance(s, Segment):
+                raise InvalidParameterError(
+                    f"segments[{i}] must be a Segment, got {type(s).__name__}", field=f"segments[{i}]")
+        object.__setattr__(self, "segments", segs)
+
+    @classmethod
+    def uniform(cls, n: int, a: float = 1.0, b: float = 1.0, k: float | tuple[float, float] = 1.0,
+                L0: float | tuple[float, float] = 1.0) -> "Manipulator":
+        """``n`` identical segments ``Segment(a, b, k, L0)``."""
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+            raise InvalidParameterError(f"n must be an integer >= 1, got {n!r}", field="n")
+        seg = Segment(a, b, k, L0)
+        return cls((seg,) * int(n))
+
+    @classmethod
+    def from_dict(cls, d: dict[str, Any]) -> "Manipulator":
+        """From ``{"n", "a", "b", "k", "L0"}`` (uniform) or ``{"segments": [...]}``."""
+        if "segments" in d:
+            return cls(Segment(**s) for s in d["segments"])
+        return cls.uniform(d.get("n", 4), d.get("a", 1.0), d.get("b", 1.0), d.get("k", 1.0), d.get("L0", 1.0))
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-friendly form accepted by :meth:`from_dict`."""
+        return {"segments": [s.to_dict() for s in self.segments]}
+
+    # ------------------------------------------------------------------ arrays
+    def __len__(self) -> int:
+        return len(self.segments)
+
+    @property
+    def n(self) -> int:
+        """Number of segments (= joints)."""
+        return len(self.segments)
+
+    def _col(self, name: str) -> np.ndarray:
+        return np.array([getattr(s, name) for s in self.segments], dtype=float)
+
+    @cached_property
+    def a(self) -> np.ndarray:
+        return self._col("a")
+
+    @cached_property
+    def b(self) -> np.ndarray:
+        return self._col("b")
+
+    @cached_property
+    def k1(self) -> np.ndarray:
+        return self._col("k1")
+
+    @cached_property
+    def k2(self) -> np.ndarray:
+        return self._col("k2")
+
+    @cached_property
+    def L1_0(self) -> np.ndarray:
+        return self._col("L1_0")
+
+    @cached_property
+    def L2_0(self) -> np.ndarray:
+        return self._col("L2_0")
+
+    @cached_property
+    def params(self) -> np.ndarray:
+        """Flat parameter vector ``[a, b, k1, k2, L1_0, L2_0]`` (each of length n) for the solvers."""
+        return np.concatenate([self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0])
+
+    @cached_property
+    def link_lengths(self) -> np.ndarray:
+        """Lengths of the moving links: ``b_j + b_{j+1}`` for ``j < n``, then ``b_n``."""
+        b = self.b
+        return np.concatenate([b[:-1] + b[1:], b[-1:]])
+
+    @property
+    def base_length(self) -> float:
+        """The fixed base half-link ``b_1``: joint 1 sits at ``(b_1, 0)``."""
+        return float(self.b[0])
+
+    @property
+    def straight_length(self) -> float:
+        """Tip abscissa of the straight chain, ``2 sum(b)``."""
+        return float(2.0 * self.b.sum())
+
+    @cached_property
+    def joint_limits(self) -> np.ndarray:
+        """Physical range bounds ``pi - 2 beta_i``: a configuration has ``|q_i| <`` this."""
+        return np.array([s.joint_limit for s in self.segments])
+
+    @cached_property
+    def stiffness(self) -> np.ndarray:
+        """Joint stiffnesses ``K_i = E_i''(0)`` at the straight configuration."""
+        return np.array([s.stiffness for s in self.segments])
+
+    @property
+    def symmetric(self) -> bool:
+        """True when every segment is symmetric (straight is then an equilibrium)."""
+        return all(s.symmetric for s in self.segments)
+
+    @property
+    def condition4(self) -> bool:
+        """Condition (4) for every segment: all ``K_i > 0``."""
+        return bool(np.all(self.stiffness > 0.0))
+
+    @property
+    def uniform_segments(self) -> bool:
+        """True when all segments are identical."""
+        return all(s == self.segments[0] for s in self.segments)
+
+    # ------------------------------------------------------------------ kinematics
+    def _q(self, q: Any, field: str = "q") -> np.ndarray:
+        q = np.asarray(q, dtype=float)
+        if q.shape != (self.n,):
+            raise InvalidParameterError(f"{field} must have {self.n} joint angles, got shape {q.shape}", field=field)
+        return q
+
+    def in_range(self, q: Any, margin: float = 0.0) -> bool:
+        """True when every ``|q_i| < (pi - 2 beta_i) - margin``."""
+        q = self._q(q)
+        return bool(np.all(np.abs(q) < self.joint_limits - margin))
+
+    def tip(self, q: Any) -> np.ndarray:
+        """Tip position ``(x, y)`` (eq. 5 generalised to per-segment ``b``)."""
+        phi = np.cumsum(self._q(q))
+        l = self.link_lengths
+        return np.array([self.base_length + l @ np.cos(phi), l @ np.sin(phi)])
+
+    def jacobian(self, q: Any) -> np.ndarray:
+        """Tip Jacobian ``d(x, y)/dq``, shape ``(2, n)`` (eq. 7)."""
+        phi = np.cumsum(self._q(q))
+        l = self.link_lengths
+        # d tip / d phi_j, then d phi_j / d q_i = 1 for j >= i: reverse cumulative sums.
+        dx = -l * np.sin(phi)
+        dy = l * np.cos(phi)
+        return np.vstack([np.cumsum(dx[::-1])[::-1], np.cumsum(dy[::-1])[::-1]])
+
+    def target(self, dx: float, dy: float = 0.0) -> np.ndarray:
+        """Tip position ``(2 sum(b) - dx, dy)`` for a deflection ``(dx, dy)``."""
+        return np.array([self.straight_length - float(dx), float(dy)])
+
+    def check_reachable(self, dx: float, dy: float = 0.0) -> np.ndarray:
+        """Return the target for ``(dx, dy)`` or raise :class:`UnreachableTargetError`.
+
+        The tip can reach distance at most ``sum(links)`` from joint 1 at ``(b_1, 0)``.
+        """
+        for name, v in (("dx", dx), ("dy", dy)):
+            if not math.isfinite(float(v)):
+                raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
+        target = self.target(dx, dy)
+        reach = float(self.link_lengths.sum())
+        dist = math.hypot(target[0] - self.base_length, target[1])
+        if dist > reach * (1.0 + 1e-12):
+            raise UnreachableTargetError(
+                f"target ({target[0]:.6g}, {target[1]:.6g}) for dx={dx:.6g}, dy={dy:.6g} is beyond the "
+                f"chain's reach: distance {dist:.6g} from joint 1 exceeds the total link length {reach:.6g}"
+                + (" (dx < 0 stretches the chain past its straight length)" if dx < 0 else ""),
+                field="dx" if dx < 0 or dy == 0 else "dy", distance=dist, reach=reach)
+        return target
+
+    # ------------------------------------------------------------------ elastostatics
+    def _springs(self, q: np.ndarray):
+        c = np.hypot(self.a, self.b)
+        beta = np.arctan2(self.a, self.b)
+        L1 = 2.0 * c * np.cos(beta + q / 2.0)
+        L2 = 2.0 * c * np.cos(beta - q / 2.0)
+        return c, beta, L1, L2
+
+    def spring_lengths(self, q: Any) -> tuple[np.ndarray, np.ndarray]:
+        """Per-segment spring lengths ``(L1, L2)``."""
+        _, _, L1, L2 = self._springs(self._q(q))
+        return L1, L2
+
+    def spring_forces(self, q: Any) -> tuple[np.ndarray, np.ndarray]:
+        """Per-segment spring tensions ``k_i (L_i - L_i0)``."""
+        L1, L2 = self.spring_lengths(q)
+        return self.k1 * (L1 - self.L1_0), self.k2 * (L2 - self.L2_0)
+
+    def energy(self, q: Any) -> float:
+        """Total elastic energy ``sum_i E_i(q_i)``."""
+        L1, L2 = self.spring_lengths(q)
+        return float(0.5 * (self.k1 @ (L1 - self.L1_0) ** 2 + self.k2 @ (L2 - self.L2_0) ** 2))
+
+    def torques(self, q: Any) -> np.ndarray:
+        """Joint torques ``M_i(q_i) = -dE/dq_i`` (eq. 1)."""
+        q = self._q(q)
+        return np.array([s.torque(qi) for s, qi in zip(self.segments, q)], dtype=float)
+
+    def gradient(self, q: Any) -> np.ndarray:
+        """``dE/dq = -M(q)``."""
+        return -self.torques(q)
+
+    def force_from_torques(self, q: Any) -> np.ndarray:
+        """Eq. (8): ``F = -(J J^T)^-1 J M``, the least-squares tip force balancing the torques."""
+        J = self.jacobian(q)
+        return -np.linalg.solve(J @ J.T, J @ self.torques(q))
+
+    def mirrored(self) -> "Manipulator":
+        """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""
+        return Manipulator(s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments)
+
+
+def as_manipulator(m: Manipulator | Sequence[Segment]) -> Manipulator:
+    """Accept a :class:`Manipulator` or a sequence of segments."""
+    return m if isinstance(m, Manipulator) else Manipulator(m)

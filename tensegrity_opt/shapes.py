@@ -1,0 +1,47 @@
+"""Shape labels of equilibria and buckling modes, from the sign pattern of ``q``.
+
+The sign string has one character per joint: ``+``, ``-`` or ``0`` (``|q_i|``
+below ``1e-6`` of the largest ``|q_j|``). The label counts the sign changes
+``s`` along the chain, zeros skipped:
+
+======  =========  =========================================================
+``s``   label      meaning
+======  =========  =========================================================
+(all 0) ``I``      straight
+0       ``C``      bent one way only (an arc)
+1       ``U``      one sign change: the chain bows once (Table 2's U shape)
+2       ``ZU``     two sign changes (Table 2's ZU shape)
+3       ``Z``      three sign changes (Table 2's Z shape, alternating for n = 4)
+>= 4    ``W<s>``   ``s`` sign changes, e.g. ``W4``
+======  =========  =========================================================
+
+For ``n = 4`` and the equilibria born from buckling this reproduces Table 2
+exactly: ``-+++`` / ``+---`` are U, ``-+-+`` / ``+-+-`` are Z and
+``-+--`` / ``+-++`` are ZU.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["sign_string", "shape_label"]
+
+_NAMES = {0: "C", 1: "U", 2: "ZU", 3: "Z"}
+
+
+def sign_string(q, rel_tol: float = 1e-6) -> str:
+    """``"+"``/``"-"``/``"0"`` per joint angle."""
+    q = np.asarray(q, dtype=float).ravel()
+    scale = float(np.abs(q).max()) if q.size else 0.0
+    if scale == 0.0:
+        return "0" * q.size
+    return "".join("0" if abs(v) <= rel_tol * scale else ("+" if v > 0 else "-") for v in q)
+
+
+def shape_label(q, rel_tol: float = 1e-6) -> str:
+    """The documented label (``I``, ``C``, ``U``, ``ZU``, ``Z``, ``W<s>``) of a configuration."""
+    signs = sign_string(q, rel_tol).replace("0", "")
+    if not signs:
+        return "I"
+    s = sum(1 for x, y in zip(signs, signs[1:]) if x != y)
+    return _NAMES.get(s, f"W{s}")
