@@ -1,0 +1,38 @@
+"""tensegrity_opt: equilibria, stability, buckling and stiffness of compliant serial
+manipulators built from dual-triangle tensegrity segments (Zhao, Pashkevich, Chablat).
+
+Quick start::
+
+    >>> import tensegrity_opt as to
+    >>> m = to.Manipulator.uniform(4, a=1, b=1, k=1, L0=1)
+    >>> round(to.critical_force(m).force, 6)
+    -0.572793
+    >>> eq = to.solve_equilibrium(m, dx=0.1)
+    >>> eq.shape, eq.stable
+    ('U', True)
+"""
+
+from .buckling import Buckling, Mode, critical_force
+from .curves import Curve, Jump, force_deflection
+from .equilibria import find_equilibria
+from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
+from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
+                     TensegrityError, UnreachableTargetError, UnstableStraightError, UnsupportedError)
+from .landscape import Landscape, energy_landscape
+from .manipulator import Manipulator
+from .segment import Segment
+from .shapes import shape_label, sign_string
+from .stiffness import cartesian_stiffness
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "Segment", "Manipulator",
+    "Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria",
+    "Buckling", "Mode", "critical_force",
+    "Curve", "Jump", "force_deflection",
+    "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
+    "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
+    "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",
+    "__version__",
+]

@@ -1,0 +1,161 @@
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve ...``.
+
+Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
+paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
+prints a readable table, or JSON with ``--json``. Errors print one line to stderr
+and exit with status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Any
+
+import numpy as np
+
+from . import __version__
+from .buckling import critical_force
+from .curves import force_deflection
+from .equilibria import find_equilibria
+from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
+from .errors import TensegrityError
+from .manipulator import Manipulator
+
+
+def _manipulator(args: argparse.Namespace) -> Manipulator:
+    if args.manipulator:
+        with open(args.manipulator, encoding="utf-8") as fh:
+            return Manipulator.from_dict(json.load(fh))
+    return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0)
+
+
+def _eq_dict(eq: Equilibrium) -> dict[str, Any]:
+    return {"q": eq.q.tolist(), "energy": eq.energy, "force": {"fx": eq.fx, "fy": eq.fy},
+            "morse_index": eq.morse_index, "stable": eq.stable, "shape": eq.shape, "signs": eq.signs,
+            "solver": {"status": eq.status, "iterations": eq.iterations}}
+
+
+def _fmt_q(q: np.ndarray) -> str:
+    return "[" + ", ".join(f"{v:+.5f}" for v in q) + "]"
+
+
+def _cmd_buckling(args, m) -> tuple[Any, str]:
+    bk = critical_force(m, args.boundary)
+    data = {"boundary": bk.boundary, "critical_force": bk.force, "loads": bk.loads.tolist(),
+            "modes": [{"load": md.load, "q": md.q.tolist(), "fy": md.fy, "energy_factor": md.energy_factor,
+                       "mu_x": md.mu_x, "fy_coefficient": md.fy_coefficient, "shape": md.shape,
+                       "signs": md.signs, "stable": md.stable} for md in bk.modes]}
+    lines = [f"Buckling of the straight configuration (n = {m.n}, tip {bk.boundary})",
+             f"critical force Fx0 = {bk.force:.6f}", "",
+             f"{'#':>2} {'load P':>10} {'-1/P':>10} {'mu_eq':>9} {'mu_x':>9} {'Fy/sqrt(dx)':>12} {'shape':>5} "
+             f"{'signs':>{max(5, m.n)}} {'stable':>6}  mode q"]
+    for i, md in enumerate(bk.modes, 1):
+        lines.append(f"{i:>2} {md.load:>10.6f} {-1 / md.load:>10.5f} {md.energy_factor:>9.6f} {md.mu_x:>9.6f} "
+                     f"{md.fy_coefficient:>12.6f} {md.shape:>5} {md.signs:>{max(5, m.n)}} "
+                     f"{'yes' if md.stable else 'no':>6}  {_fmt_q(md.q)}")
+    return data, "\n".join(lines)
+
+
+def _eq_table(eqs: list[Equilibrium]) -> list[str]:
+    lines = [f"{'#':>2} {'energy':>12} {'Fx':>10} {'Fy':>10} {'morse':>5} {'stable':>6} {'shape':>5}  q (rad)"]
+    for i, e in enumerate(eqs, 1):
+        lines.append(f"{i:>2} {e.energy:>12.6f} {e.fx:>10.6f} {e.fy:>10.6f} {e.morse_index:>5} "
+                     f"{'yes' if e.stable else 'no':>6} {e.shape:>5}  {_fmt_q(e.q)}")
+    return lines
+
+
+def _cmd_equilibrium(args, m):
+    if args.fx is not None or args.fy is not None:
+        eq = solve_equilibrium_under_force(m, args.fx or 0.0, args.fy or 0.0)
+        head = f"Equilibrium under the tip force ({args.fx or 0.0:g}, {args.fy or 0.0:g})"
+    else:
+        eq = solve_equilibrium(m, args.dx, args.dy)
+        head = f"Least-energy stable equilibrium at dx = {args.dx:g}, dy = {args.dy:g}"
+    return _eq_dict(eq), "\n".join([head, *(_eq_table([eq])), f"solver: {eq.status}, {eq.iterations} iterations"])
+
+
+def _cmd_equilibria(args, m):
+    eqs = find_equilibria(m, args.dx, args.dy)
+    return ({"equilibria": [_eq_dict(e) for e in eqs]},
+            "\n".join([f"All equilibria at dx = {args.dx:g}, dy = {args.dy:g}: {len(eqs)}", *_eq_table(eqs)]))
+
+
+def _cmd_curve(args, m):
+    dx = np.linspace(args.start, args.stop, args.num)
+    c = force_deflection(m, dx, args.dy, branch="stable")
+    data = {"points": [{"dx": float(c.dx[i]), "fx": float(c.fx[i]), "fy": float(c.fy[i]),
+                        "energy": float(c.energy[i]), "q": c.q[i].tolist(), "stable": bool(c.stable[i]),
+                        "shape": c.shape[i]} for i in range(c.dx.size)],
+            "jumps": [{"kind": j.kind, "dx_before": j.dx_before, "dx_after": j.dx_after,
+                       "force_before": j.force_before.tolist(), "force_after": j.force_after.tolist()}
+                      for j in c.jumps]}
+    lines = [f"Force-deflection (stable branch), dy = {args.dy:g}",
+             f"{'dx':>10} {'Fx':>10} {'Fy':>10} {'energy':>12} {'shape':>5}"]
+    lines += [f"{c.dx[i]:>10.5f} {c.fx[i]:>10.6f} {c.fy[i]:>10.6f} {c.energy[i]:>12.6f} {c.shape[i]:>5}"
+              for i in range(c.dx.size)]
+    for j in c.jumps:
+        lines.append(f"jump ({j.kind}) between dx = {j.dx_before:g} and {j.dx_after:g}: "
+                     f"F {_fmt_q(j.force_before)} -> {_fmt_q(j.force_after)}")
+    return data, "\n".join(lines)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    p = argparse.ArgumentParser(prog="tensegrity-opt", description=__doc__.splitlines()[0])
+    p.add_argument("--version", action="version", version=f"tensegrity-opt {__version__}")
+    sub = p.add_subparsers(dest="command", required=True)
+
+    def common(sp: argparse.ArgumentParser) -> None:
+        g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
+        g.add_argument("--n", type=int, default=4, help="number of segments")
+        g.add_argument("--a", type=float, default=1.0)
+        g.add_argument("--b", type=float, default=1.0)
+        g.add_argument("--k", type=float, default=1.0)
+        g.add_argument("--L0", type=float, default=1.0)
+        g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
+        sp.add_argument("--json", action="store_true", help="print JSON instead of a table")
+
+    sp = sub.add_parser("buckling", help="critical force and buckling modes (the paper's Table 1)")
+    common(sp)
+    sp.add_argument("--boundary", choices=("guided", "free"), default="guided")
+    sp.set_defaults(func=_cmd_buckling)
+
+    sp = sub.add_parser("equilibrium", help="least-energy stable equilibrium for a tip deflection or force")
+    common(sp)
+    sp.add_argument("--dx", type=float, default=0.1)
+    sp.add_argument("--dy", type=float, default=0.0)
+    sp.add_argument("--fx", type=float, default=None, help="prescribe the tip force instead")
+    sp.add_argument("--fy", type=float, default=None)
+    sp.set_defaults(func=_cmd_equilibrium)
+
+    sp = sub.add_parser("equilibria", help="every equilibrium (minima, saddles, maxima) for a tip deflection")
+    common(sp)
+    sp.add_argument("--dx", type=float, default=0.1)
+    sp.add_argument("--dy", type=float, default=0.0)
+    sp.set_defaults(func=_cmd_equilibria)
+
+    sp = sub.add_parser("curve", help="force-deflection curve along the stable branch (Fig. 6)")
+    common(sp)
+    sp.add_argument("--start", type=float, default=0.0)
+    sp.add_argument("--stop", type=float, default=1.0)
+    sp.add_argument("--num", type=int, default=11)
+    sp.add_argument("--dy", type=float, default=0.0)
+    sp.set_defaults(func=_cmd_curve)
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = build_parser().parse_args(argv)
+    try:
+        m = _manipulator(args)
+        data, text = args.func(args, m)
+    except (TensegrityError, OSError, json.JSONDecodeError, TypeError) as exc:
+        print(f"tensegrity-opt: error: {exc}", file=sys.stderr)
+        return 2
+    print(json.dumps(data, indent=2) if args.json else text)
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

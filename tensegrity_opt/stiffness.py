@@ -1,0 +1,69 @@
+"""Cartesian (tangent) stiffness at an equilibrium: ``dF/d(tip)`` along the equilibrium family.
+
+The KKT system ``r(phi, F; target) = [grad E - J^T F; tip - target] = 0`` defines
+``(phi, F)`` as functions of the target; implicit differentiation gives
+``dr/dz dz/dtarget = [0; I]``, and the last two rows of ``dz/dtarget`` are the
+2 x 2 tangent stiffness. It includes the load (geometric) term ``-F . Hess tip``
+through the KKT Jacobian, and is symmetric (it is the Hessian of the
+equilibrium energy as a function of the tip position).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import scipy.linalg as sla
+import scipy.sparse as sp
+import scipy.sparse.linalg as spla
+
+from .equilibrium import Equilibrium
+from .errors import InvalidParameterError
+from .manipulator import Manipulator
+from .solvers import model
+
+__all__ = ["cartesian_stiffness"]
+
+
+def cartesian_stiffness(m: Manipulator, eq: Equilibrium) -> np.ndarray:
+    """Tangent stiffness ``K_c = dF/d(x, y)`` at the equilibrium ``eq`` (force / length).
+
+    Parameters
+    ----------
+    m : Manipulator
+        The chain ``eq`` belongs to.
+    eq : Equilibrium
+        Any equilibrium (displacement- or force-controlled, stable or not).
+
+    Returns
+    -------
+    ndarray (2, 2)
+        ``K_c[i, j] = dF_i / d tip_j``; symmetric. Positive definite at a stable
+        equilibrium whose energy is convex in the tip position.
+
+    Raises
+    ------
+    InvalidParameterError
+        (``ValueError``) when the KKT system is singular there (e.g. the fully
+        extended chain, where the tip Jacobian loses rank), or ``eq`` has the wrong size.
+    """
+    q = np.asarray(eq.q, dtype=float)
+    if q.shape != (m.n,):
+        raise InvalidParameterError(f"eq has {q.size} joint angles, the manipulator {m.n}", field="eq")
+    mdl = model(m.n)
+    Jz, _ = mdl.kkt_parameter_jacobian(m.params, q, np.asarray(eq.force, float), np.asarray(eq.tip, float))
+    n = m.n
+    rhs = np.zeros((n + 2, 2))
+    rhs[n:, :] = np.eye(2)
+    try:
+        if n > 64:
+            sol = spla.spsolve(sp.csc_matrix(Jz), rhs)
+            sol = np.asarray(sol.todense() if sp.issparse(sol) else sol)
+        else:
+            sol = sla.solve(Jz, rhs)
+    except (sla.LinAlgError, RuntimeError):
+        sol = np.full((n + 2, 2), np.nan)
+    cond = np.linalg.cond(Jz) if n <= 64 else 1.0
+    if not np.all(np.isfinite(sol)) or cond > 1e13:
+        raise InvalidParameterError(
+            "the tangent stiffness is undefined at this equilibrium: the KKT system is singular "
+            "(fully extended chain or a bifurcation point)", field="eq")
+    return sol[n:, :]
