@@ -98,7 +98,9 @@ def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
     dxs = np.atleast_1d(np.asarray(dx, dtype=float))
     if dxs.ndim != 1 or dxs.size == 0:
         raise InvalidParameterError("dx must be a non-empty 1-D array of deflections", field="dx")
-    dys = np.broadcast_to(np.asarray(dy, dtype=float), dxs.shape).copy() if np.ndim(dy) else np.full(dxs.shape, float(dy))
+    dys = np.asarray(dy, dtype=float)
+    if dys.ndim == 0:
+        dys = np.full(dxs.shape, float(dys))
     if dys.shape != dxs.shape:
         raise InvalidParameterError("dy must be a number or have the length of dx", field="dy")
     if not (np.all(np.isfinite(dxs)) and np.all(np.isfinite(dys))):
@@ -115,8 +117,9 @@ def _continue(m: Manipulator, tr: _Track, dx: float, dy: float) -> Equilibrium |
     if dy == 0.0 and eq.tip[1] == 0.0 and tr.last_dx > 0.0 and dx > 0.0:
         r = math.sqrt(dx / tr.last_dx)
         q0, F0 = q0 * r, np.array([F0[0], F0[1] * r])
-    res = model(m.n).newton_kkt(m.params, m.joint_limits, m.target(dx, dy), q0, F0)
-    if not _valid(m, res):
+    target = m.target(dx, dy)
+    res = model(m.n).newton_kkt(m.params, m.joint_limits, target, q0, F0)
+    if not _valid(m, res, target):
         return None
     return make_equilibrium(m, res, constrained=True)
 

@@ -66,12 +66,12 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, n_random: int
     for q, F in starts:
         res = local_equilibrium(m, target, q, F)
         statuses[res.status] = statuses.get(res.status, 0) + 1
-        if _valid(m, res):
+        if _valid(m, res, target):
             results.append(res)
     # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present.
     for s in seeds(m, dx, dy, max_modes=2, n_random=0):
         res = local_equilibrium(m, target, s.q, minimize=True)
-        if _valid(m, res):
+        if _valid(m, res, target):
             results.append(res)
     if not results:
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",

@@ -105,8 +105,17 @@ def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> 
                        hessian_eigenvalues=inertia.eigenvalues)
 
 
-def _valid(m: Manipulator, res: LocalResult) -> bool:
-    return res.success and not res.on_bound and m.in_range(res.q) and bool(np.all(np.isfinite(res.q)))
+#: Largest accepted scaled residual of the equilibrium equations (checked in numpy, independently
+#: of the solver that produced the point).
+RESIDUAL_TOL = 1e-9
+
+
+def _valid(m: Manipulator, res: LocalResult, target: np.ndarray | None = None) -> bool:
+    """A converged solve inside the open physical range that really is an equilibrium."""
+    if not (res.success and not res.on_bound and np.all(np.isfinite(res.q)) and np.all(np.isfinite(res.force))
+            and m.in_range(res.q)):
+        return False
+    return m.equilibrium_residual(res.q, res.force, target) <= RESIDUAL_TOL
 
 
 def _check_q0(m: Manipulator, q0) -> np.ndarray | None:
@@ -138,12 +147,16 @@ def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np
     if not minimize:
         return mdl.newton_kkt(m.params, m.joint_limits, target, q0, F0)
     res = mdl.minimize_displacement(m.params, m.joint_limits, target, q0)
-    if res.success and not res.on_bound:
+    if not res.on_bound and np.all(np.isfinite(res.q)):
+        # Newton polish to machine precision; IPOPT's status is kept (its solve is the result).
         pol = mdl.newton_kkt(m.params, m.joint_limits, target, res.q, res.force)
-        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-6:
+        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-4:
             pol.status = res.status
             pol.iterations = res.iterations
+            pol.success = res.success or res.status == "Solved_To_Acceptable_Level"
             return pol
+        if res.status == "Solved_To_Acceptable_Level":
+            res.success = False
     return res
 
 
@@ -185,9 +198,10 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, n_
     statuses: dict[str, int] = {}
 
     def consider(res: LocalResult) -> None:
-        key = res.status if _valid(m, res) else (res.status + (" (on joint limit)" if res.on_bound else ""))
+        ok = _valid(m, res, target)
+        key = res.status if ok else (res.status + (" (on joint limit)" if res.on_bound else " (rejected)"))
         statuses[key] = statuses.get(key, 0) + 1
-        if _valid(m, res):
+        if ok:
             candidates.append(res)
 
     if q0 is not None:
@@ -270,7 +284,7 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
     res = mdl.minimize_force(m.params, m.joint_limits, force, q0)
     if res.success and not res.on_bound:
         pol = mdl.newton_force(m.params, m.joint_limits, force, res.q)
-        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-6:
+        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-4:
             pol.status, pol.iterations = res.status, res.iterations
             res = pol
     if not res.success:

@@ -239,9 +239,11 @@ class Manipulator:
         return float(0.5 * (self.k1 @ (L1 - self.L1_0) ** 2 + self.k2 @ (L2 - self.L2_0) ** 2))
 
     def torques(self, q: Any) -> np.ndarray:
-        """Joint torques ``M_i(q_i) = -dE/dq_i`` (eq. 1)."""
+        """Joint torques ``M_i(q_i) = -dE/dq_i`` (eq. 1, general form)."""
         q = self._q(q)
-        return np.array([s.torque(qi) for s, qi in zip(self.segments, q)], dtype=float)
+        c, beta, L1, L2 = self._springs(q)
+        F1, F2 = self.k1 * (L1 - self.L1_0), self.k2 * (L2 - self.L2_0)
+        return c * (F1 * np.sin(beta + q / 2.0) - F2 * np.sin(beta - q / 2.0))
 
     def gradient(self, q: Any) -> np.ndarray:
         """``dE/dq = -M(q)``."""
@@ -251,6 +253,15 @@ class Manipulator:
         """Eq. (8): ``F = -(J J^T)^-1 J M``, the least-squares tip force balancing the torques."""
         J = self.jacobian(q)
         return -np.linalg.solve(J @ J.T, J @ self.torques(q))
+
+    def equilibrium_residual(self, q: Any, force: Any, target: Any | None = None) -> float:
+        """Largest violation of ``grad E = J^T F`` (scaled by ``k c^2``) and of ``tip = target`` (by ``sum b``)."""
+        q = self._q(q)
+        scale = float(np.max(np.maximum(self.k1, self.k2) * (self.a ** 2 + self.b ** 2)))
+        r = float(np.abs(self.gradient(q) - self.jacobian(q).T @ np.asarray(force, float)).max()) / scale
+        if target is not None:
+            r = max(r, float(np.abs(self.tip(q) - np.asarray(target, float)).max()) / float(self.b.sum()))
+        return r
 
     def mirrored(self) -> "Manipulator":
         """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""

@@ -1,0 +1,154 @@
+"""Displacement- and force-controlled equilibria (the paper's main problem)."""
+
+import threading
+
+import numpy as np
+import pytest
+
+from tensegrity_opt import (InvalidParameterError, Manipulator, NoEquilibriumError, Segment,
+                            UnreachableTargetError, critical_force, solve_equilibrium,
+                            solve_equilibrium_under_force)
+from tensegrity_opt.landscape import complete_configuration
+
+PAPER = Manipulator.uniform(4)
+
+
+def landscape_minimum(m, dx, dy, starts=25):
+    """Independent route: the paper's energy method (n = 4): minimise E(q1, q4) with q2, q3 by IK."""
+    from scipy.optimize import minimize
+    target = m.target(dx, dy)
+    best = None
+    rng = np.random.default_rng(1)
+    for _ in range(starts):
+        x0 = rng.uniform(-0.8, 0.8, 2)
+        for elbow in (1, -1):
+            def f(x):
+                q = complete_configuration(m, target, (0, 3), x[0], x[1], elbow)
+                if not np.all(np.isfinite(q)) or not m.in_range(q):
+                    return 1e6
+                return m.energy(q)
+            r = minimize(f, x0, method="Nelder-Mead", options={"xatol": 1e-10, "fatol": 1e-13, "maxiter": 4000})
+            if r.fun < 1e5 and (best is None or r.fun < best[0]):
+                best = (r.fun, complete_configuration(m, target, (0, 3), r.x[0], r.x[1], elbow))
+    return best
+
+
+@pytest.mark.parametrize("dx,fy_abs", [(0.01, 0.00806), (0.1, 0.02579)])
+def test_conventions_figures_on_U_branch(dx, fy_abs):
+    eq = solve_equilibrium(PAPER, dx)
+    assert eq.stable and eq.morse_index == 0 and eq.shape == "U"
+    assert abs(eq.fy) == pytest.approx(fy_abs, rel=2e-3)      # printed to 3-4 digits
+    assert eq.q[0] > 0                                         # documented tie-break
+    assert np.allclose(eq.tip, PAPER.target(dx, 0.0), atol=1e-9)
+    assert eq.status == "Solve_Succeeded" and eq.iterations >= 0
+
+
+@pytest.mark.parametrize("dx,dy", [(0.05, 0.0), (0.5, 0.0), (0.3, 0.4), (1.5, -0.7)])
+def test_force_from_multipliers_matches_eq8(dx, dy):
+    eq = solve_equilibrium(PAPER, dx, dy)
+    assert np.allclose(eq.force, PAPER.force_from_torques(eq.q), rtol=1e-8, atol=1e-10)
+
+
+@pytest.mark.parametrize("dx,dy", [(0.1, 0.0), (0.8, 0.3), (2.0, 0.0)])
+def test_global_minimum_matches_energy_method(dx, dy):
+    eq = solve_equilibrium(PAPER, dx, dy)
+    ref_e, ref_q = landscape_minimum(PAPER, dx, dy)
+    assert eq.energy == pytest.approx(ref_e, rel=1e-9)
+    assert eq.energy <= ref_e + 1e-9
+
+
+def test_q0_selects_the_nearer_mirror_image():
+    eq = solve_equilibrium(PAPER, 0.2)
+    other = solve_equilibrium(PAPER, 0.2, q0=-eq.q)
+    assert np.allclose(other.q, -eq.q, atol=1e-8)
+    assert other.energy == pytest.approx(eq.energy, rel=1e-12)
+
+
+def test_straight_and_errors():
+    eq = solve_equilibrium(PAPER, 0.0, 0.0)
+    assert np.all(eq.q == 0) and eq.stable and np.allclose(eq.force, 0)
+    assert eq.energy == pytest.approx(4 * 1.0)   # four segments, both springs stretched by 2b - L0 = 1
+    with pytest.raises(UnreachableTargetError) as ei:
+        solve_equilibrium(PAPER, -0.01)
+    assert isinstance(ei.value, ValueError)
+    with pytest.raises(UnreachableTargetError):
+        solve_equilibrium(PAPER, 0.0, 0.1)
+    with pytest.raises(InvalidParameterError) as ei:
+        solve_equilibrium(PAPER, 0.1, q0=[0.1, 0.2])
+    assert ei.value.field == "q0"
+    with pytest.raises(InvalidParameterError):
+        solve_equilibrium(PAPER, 0.1, q0=[3.0, 0, 0, 0])
+
+
+def test_unreachable_inside_the_circle_is_a_runtime_error_with_status():
+    # the chain cannot fold back onto its base within the joint range: no equilibrium exists
+    m = Manipulator.uniform(2)
+    with pytest.raises(RuntimeError) as ei:
+        solve_equilibrium(m, 5.9, n_random=2)
+    assert ei.value.status
+
+
+def test_nonuniform_chain_energy_method():
+    m = Manipulator([Segment(1.0, 1.0, 1.0, 1.0), Segment(0.9, 1.3, 2.0, 1.5),
+                     Segment(1.1, 0.8, 0.7, 0.9), Segment(1.0, 1.1, 1.5, (1.2, 1.3))])
+    eq = solve_equilibrium(m, 0.3, 0.2)
+    ref_e, _ = landscape_minimum(m, 0.3, 0.2)
+    assert eq.energy == pytest.approx(ref_e, rel=1e-9)
+    assert np.allclose(eq.force, m.force_from_torques(eq.q), rtol=1e-8)
+
+
+def test_force_control_below_and_above_free_critical_load():
+    free = critical_force(PAPER, "free").loads[0]
+    eq = solve_equilibrium_under_force(PAPER, -0.5 * free, 0.0)
+    assert np.allclose(eq.q, 0, atol=1e-9) and eq.stable and eq.control == "force"
+    eq = solve_equilibrium_under_force(PAPER, -1.2 * free, 0.0)
+    assert eq.stable and np.abs(eq.q).max() > 0.05
+    assert np.allclose(PAPER.gradient(eq.q), PAPER.jacobian(eq.q).T @ eq.force, atol=1e-9)
+
+
+def test_force_control_round_trip_with_displacement_control():
+    """Prescribe a force, read the tip, prescribe that tip: same configuration, same force."""
+    for fx, fy in [(0.3, 0.2), (-0.04, 0.1), (0.0, -0.15)]:
+        feq = solve_equilibrium_under_force(PAPER, fx, fy)
+        assert feq.stable
+        dx, dy = PAPER.straight_length - feq.tip[0], feq.tip[1]
+        deq = solve_equilibrium(PAPER, dx, dy, q0=feq.q)
+        assert np.allclose(deq.q, feq.q, atol=1e-7)
+        assert np.allclose(deq.force, [fx, fy], atol=1e-8)
+
+
+def test_displacement_stable_can_be_dead_load_unstable():
+    """Under a prescribed tip the post-buckled U shape is stable; under the same dead load it is
+    not (its Hessian without the tip constraint has a negative eigenvalue), so IPOPT leaves it."""
+    from tensegrity_opt.stability import classify
+    deq = solve_equilibrium(PAPER, 0.3, 0.5)
+    assert classify(PAPER, deq.q, deq.force, constrained=True).morse_index == 0
+    assert classify(PAPER, deq.q, deq.force, constrained=False).morse_index == 1
+
+
+def test_force_control_errors():
+    with pytest.raises(InvalidParameterError) as ei:
+        solve_equilibrium_under_force(PAPER, float("nan"), 0.0)
+    assert ei.value.field == "fx"
+    with pytest.raises(NoEquilibriumError) as ei:
+        solve_equilibrium_under_force(PAPER, -3.0, 0.0)     # folds onto the joint limits
+    assert isinstance(ei.value, RuntimeError) and ei.value.status
+
+
+def test_threads_share_nothing():
+    """Several threads solving at once (per-thread CasADi instances) give the serial answers."""
+    dxs = [0.05, 0.2, 0.4, 0.8]
+    serial = [solve_equilibrium(PAPER, d, 0.1).q for d in dxs]
+    out = [None] * len(dxs)
+
+    def work(i):
+        for _ in range(3):
+            out[i] = solve_equilibrium(PAPER, dxs[i], 0.1).q
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(len(dxs))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for a, b in zip(out, serial):
+        assert np.allclose(a, b, atol=1e-10)

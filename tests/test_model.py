@@ -1,0 +1,160 @@
+"""Segment and Manipulator: validation, springs, torque (eq. 1-3), kinematics (eq. 5, 7)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from tensegrity_opt import InvalidParameterError, Manipulator, Segment, UnreachableTargetError
+
+
+def eq2_torque(a, b, k, L0, q):
+    """The paper's eq. (2) for a symmetric segment (independent of the general form)."""
+    c, beta = math.hypot(a, b), math.atan2(a, b)
+    return 2 * c * k * (c * math.cos(2 * beta) * math.sin(q) - L0 * math.cos(beta) * math.sin(q / 2))
+
+
+def eq3_dtorque(a, b, k, L0, q):
+    c, beta = math.hypot(a, b), math.atan2(a, b)
+    return c * k * (2 * c * math.cos(2 * beta) * math.cos(q) - L0 * math.cos(beta) * math.cos(q / 2))
+
+
+@pytest.mark.parametrize("a,b,k,L0", [(1, 1, 1, 1), (0.6, 1.3, 2.5, 1.9), (1.4, 0.7, 0.3, 0.5)])
+@pytest.mark.parametrize("frac", [-0.9, -0.2, 0.0, 0.35, 0.95])
+def test_torque_matches_eq2_and_eq3(a, b, k, L0, frac):
+    s = Segment(a, b, k, L0)
+    q = frac * s.joint_limit
+    assert s.torque(q) == pytest.approx(eq2_torque(a, b, k, L0, q), rel=1e-12, abs=1e-14)
+    assert s.dtorque(q) == pytest.approx(eq3_dtorque(a, b, k, L0, q), rel=1e-12, abs=1e-14)
+
+
+def test_eq1_general_form_for_asymmetric_segment():
+    s = Segment(0.8, 1.1, (1.5, 0.7), (1.2, 1.9))
+    c, beta = s.c, s.beta
+    for q in (-0.5, 0.2, 0.9):
+        t1, t2 = 2 * beta + q, 2 * beta - q
+        L1 = math.sqrt(2 * c * c + 2 * c * c * math.cos(t1))
+        L2 = math.sqrt(2 * c * c + 2 * c * c * math.cos(t2))
+        M1 = 1.5 * (1 - 1.2 / L1) * c * c * math.sin(t1)
+        M2 = -0.7 * (1 - 1.9 / L2) * c * c * math.sin(t2)
+        assert s.torque(q) == pytest.approx(M1 + M2, rel=1e-12)
+        h = 1e-6
+        assert s.torque(q) == pytest.approx(-(s.energy(q + h) - s.energy(q - h)) / (2 * h), rel=1e-7)
+        assert s.dtorque(q) == pytest.approx((s.torque(q + h) - s.torque(q - h)) / (2 * h), rel=1e-6)
+
+
+def test_spring_lengths_and_forces():
+    s = Segment(1, 1, 2.0, 1.5)
+    L1, L2 = s.spring_lengths(0.0)
+    assert L1 == pytest.approx(2.0) and L2 == pytest.approx(2.0)
+    F1, F2 = s.spring_forces(0.0)
+    assert F1 == pytest.approx(2.0 * 0.5) and F2 == pytest.approx(1.0)
+    # at the range bound one spring length reaches zero
+    L1, _ = s.spring_lengths(s.joint_limit)
+    assert L1 == pytest.approx(0.0, abs=1e-12)
+
+
+@pytest.mark.parametrize("a,b,L0", [(1, 1, 1), (0.5, 1, 1.6), (0.5, 1, 1.4), (0.2, 2, 0.5)])
+def test_joint_stiffness_and_condition4(a, b, L0):
+    s = Segment(a, b, 3.0, L0)
+    assert s.stiffness == pytest.approx(3.0 * (b * L0 - 2 * (b * b - a * a)), rel=1e-12, abs=1e-12)
+    assert s.condition4 == (L0 > 2 * b * (1 - (a / b) ** 2))
+
+
+def test_paper_segment_is_monotonic():
+    assert Segment(1, 1, 1, 1).monotonic()
+    assert not Segment(0.5, 1, 1, 0.5).monotonic()
+
+
+@pytest.mark.parametrize("kwargs,field", [
+    (dict(a=0, b=1), "a"), (dict(a=1, b=-1), "b"), (dict(a=1, b=float("nan")), "b"),
+    (dict(a=1, b=1, k=float("inf")), "k"), (dict(a=1, b=1, k=(1, 0)), "k[1]"),
+    (dict(a=1, b=1, L0=(1, 2, 3)), "L0"), (dict(a="x", b=1), "a"),
+])
+def test_segment_validation_names_field(kwargs, field):
+    with pytest.raises(InvalidParameterError) as ei:
+        Segment(**kwargs)
+    assert isinstance(ei.value, ValueError)
+    assert ei.value.field == field
+
+
+@pytest.mark.parametrize("n", [0, -1, 2.5, True])
+def test_uniform_validation(n):
+    with pytest.raises(ValueError) as ei:
+        Manipulator.uniform(n)
+    assert ei.value.field == "n"
+
+
+def test_manipulator_validation():
+    with pytest.raises(InvalidParameterError) as ei:
+        Manipulator([])
+    assert ei.value.field == "segments"
+    with pytest.raises(InvalidParameterError) as ei:
+        Manipulator([Segment(1, 1), "nope"])
+    assert ei.value.field == "segments[1]"
+
+
+def test_tip_equals_eq5_for_equal_b():
+    m = Manipulator.uniform(4, a=0.7, b=1.3)
+    q = np.array([0.2, -0.1, 0.3, -0.25])
+    b = 1.3
+    ph = np.cumsum(q)
+    x = b + 2 * b * np.cos(ph[:3]).sum() + b * np.cos(ph[3])
+    y = 2 * b * np.sin(ph[:3]).sum() + b * np.sin(ph[3])
+    assert np.allclose(m.tip(q), [x, y], rtol=1e-14)
+    assert m.tip(np.zeros(4)) == pytest.approx([8 * 1.3, 0.0])
+
+
+def test_tip_with_different_b_and_jacobian_by_finite_differences():
+    m = Manipulator([Segment(1, 0.5), Segment(1, 1.5), Segment(0.3, 0.9)])
+    assert m.straight_length == pytest.approx(2 * (0.5 + 1.5 + 0.9))
+    # joint positions by walking the links explicitly
+    q = np.array([0.3, -0.4, 0.2])
+    p = np.array([0.5, 0.0])
+    ang = 0.0
+    lengths = [0.5 + 1.5, 1.5 + 0.9, 0.9]
+    for qi, L in zip(q, lengths):
+        ang += qi
+        p = p + L * np.array([math.cos(ang), math.sin(ang)])
+    assert np.allclose(m.tip(q), p, rtol=1e-14)
+    J = m.jacobian(q)
+    h = 1e-6
+    for i in range(3):
+        e = np.zeros(3)
+        e[i] = h
+        assert np.allclose(J[:, i], (m.tip(q + e) - m.tip(q - e)) / (2 * h), atol=1e-8)
+
+
+def test_paper_jacobian_eq12_at_small_angles():
+    # eq. (12): J^T = b [[-7q1-5q2-3q3-q4, 7], [-5q1-5q2-3q3-q4, 5], ...] (linearised)
+    m = Manipulator.uniform(4)
+    q = 1e-5 * np.array([1.0, -2.0, 0.5, 3.0])
+    S1 = -np.array([[7, 5, 3, 1], [5, 5, 3, 1], [3, 3, 3, 1], [1, 1, 1, 1]], float)
+    J = m.jacobian(q)
+    assert np.allclose(J[0], S1 @ q, rtol=1e-8, atol=1e-14)
+    assert np.allclose(J[1], [7, 5, 3, 1], rtol=1e-8)
+
+
+def test_reachability():
+    m = Manipulator.uniform(4)
+    with pytest.raises(UnreachableTargetError) as ei:
+        m.check_reachable(-0.1)
+    assert isinstance(ei.value, ValueError) and ei.value.field == "dx"
+    with pytest.raises(UnreachableTargetError) as ei:
+        m.check_reachable(0.0, 0.5)
+    assert ei.value.field == "dy"
+    with pytest.raises(InvalidParameterError):
+        m.check_reachable(float("nan"))
+    assert m.check_reachable(0.5, 0.5) == pytest.approx([7.5, 0.5])
+
+
+def test_physical_range():
+    m = Manipulator.uniform(2, a=1, b=1)
+    assert m.joint_limits == pytest.approx([math.pi / 2] * 2)
+    assert m.in_range([1.5, -1.5]) and not m.in_range([math.pi / 2, 0.0])
+
+
+def test_roundtrip_dict():
+    m = Manipulator([Segment(1, 1, (1, 2), 1.0), Segment(0.5, 2.0, 3.0, (1.0, 1.5))])
+    assert Manipulator.from_dict(m.to_dict()) == m
+    assert Manipulator.from_dict({"n": 3, "a": 1, "b": 2, "k": 1, "L0": 3}) == Manipulator.uniform(3, 1, 2, 1, 3)
