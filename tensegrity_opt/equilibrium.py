@@ -160,8 +160,8 @@ def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np
     return res
 
 
-def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, n_random: int = 8,
-                      max_modes: int = 6) -> Equilibrium:
+def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
+                      n_random: int = 8, max_modes: int = 6) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -172,6 +172,10 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, n_
     q0 : array_like (n,), optional
         A nearby configuration (continuation, control loops): a local solve from it
         is tried first and its solution competes with the global search.
+    local : bool
+        Only the local solve from ``q0`` (Newton on the KKT system, IPOPT as the fallback):
+        the equilibrium on the branch through ``q0``, whatever its stability (read
+        ``stable``). For control loops and finite differences along a branch.
     n_random, max_modes : int
         Random starts and buckling-mode seeds (each used with both signs).
 
@@ -192,8 +196,19 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, n_
     """
     target = m.check_reachable(dx, dy)
     q0 = _check_q0(m, q0)
+    if local and q0 is None:
+        raise InvalidParameterError("local=True needs a starting configuration q0", field="q0")
     if dx == 0.0 and dy == 0.0:
         return _straight(m)
+    if local:
+        res = local_equilibrium(m, target, q0)
+        if not _valid(m, res, target):
+            fallback = local_equilibrium(m, target, q0, minimize=True)
+            if not _valid(m, fallback, target):
+                raise SolverError(f"the local solve from q0 did not converge for dx={dx:g}, dy={dy:g}",
+                                  status=f"newton: {res.status}; ipopt: {fallback.status}")
+            res = fallback
+        return make_equilibrium(m, res, constrained=True)
     candidates: list[LocalResult] = []
     statuses: dict[str, int] = {}
 

@@ -10,6 +10,7 @@ Random starts use a fixed-seed generator: the same call gives the same answer.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 import scipy.linalg as sla
@@ -28,8 +29,12 @@ class Seed:
     origin: str
 
 
+@lru_cache(maxsize=64)
 def _directions(m: Manipulator, max_modes: int) -> list[tuple[np.ndarray, float | None, float | None]]:
-    """Mode shapes with their predicted ``(Fx, Fy per t)``; geometric modes when buckling is undefined."""
+    """Mode shapes with their predicted ``(Fx, Fy per t)``; geometric modes when buckling is undefined.
+
+    Cached per manipulator (``Manipulator`` is immutable and hashable): continuation and
+    repeated solves on one chain do not recompute its modes."""
     if m.n >= 2:
         try:
             bk = critical_force(m, "guided")

@@ -104,12 +104,15 @@ class _Model:
         tgt = ca.SX.sym("target", 2)
 
         # KKT of min E s.t. tip = target:  grad E - J^T F = 0, tip - target = 0.
+        # Its Jacobian [[H, -J^T], [J, 0]] is assembled from blocks: asking CasADi for
+        # jacobian(res, z) colours a matrix with a dense row and a dense column and costs O(n^2).
         res = ca.vertcat(gradE - J.T @ F, tip - tgt)
         z = ca.vertcat(phi, F)
-        self.kkt = ca.Function("kkt", [z, p, tgt], [res, ca.jacobian(res, z)])
-        # Force control: grad (E - F.tip) = 0 in phi.
+        kkt_jac = ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])
+        self.kkt = ca.Function("kkt", [z, p, tgt], [res, kkt_jac])
+        # Force control: grad (E - F.tip) = 0 in phi, Jacobian H.
         resf = gradE - J.T @ F
-        self.force_res = ca.Function("force_res", [phi, p, F], [resf, ca.jacobian(resf, phi)])
+        self.force_res = ca.Function("force_res", [phi, p, F], [resf, H])
         self.derivs = ca.Function("derivs", [phi, p, F], [E, gradE, H, J, tip])
         # d(KKT residual)/d(parameters): for sensitivities of equilibria.
         self.kkt_dp = ca.Function("kkt_dp", [z, p, tgt], [ca.jacobian(res, p)])

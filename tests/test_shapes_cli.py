@@ -1,0 +1,59 @@
+"""Shape labels and the command line."""
+
+import json
+import subprocess
+import sys
+
+import pytest
+
+from tensegrity_opt import shape_label, sign_string
+from tensegrity_opt.cli import main
+
+
+@pytest.mark.parametrize("q,label,signs", [
+    ([-1, 2, 3, 4], "U", "-+++"), ([1, -2, -3, -4], "U", "+---"),
+    ([-1, 2, -3, 4], "Z", "-+-+"), ([1, -2, 3, -4], "Z", "+-+-"),
+    ([-1, 2, -3, -4], "ZU", "-+--"), ([1, -2, 3, 4], "ZU", "+-++"),
+    ([0, 0, 0, 0], "I", "0000"), ([1, 2, 3, 1e-9], "C", "+++0"),
+    ([1, -1, 1, -1, 1], "W4", "+-+-+"),
+])
+def test_table2_labels(q, label, signs):
+    assert shape_label(q) == label
+    assert sign_string(q) == signs
+
+
+def test_cli_buckling_table(capsys):
+    assert main(["buckling"]) == 0
+    out = capsys.readouterr().out
+    assert "-0.572793" in out and "1.145586" in out and "2.725813" in out and "3.842887" in out
+
+
+def test_cli_json_outputs(capsys):
+    assert main(["buckling", "--json", "--boundary", "free"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["critical_force"] == pytest.approx(-0.0761205, rel=1e-4)
+    assert main(["equilibria", "--dx", "0.05", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert [e["shape"] for e in data["equilibria"]] == ["U", "U", "ZU", "ZU", "Z", "Z"]
+    assert main(["equilibrium", "--dx", "0.1", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert abs(data["force"]["fy"]) == pytest.approx(0.02579, rel=1e-3)
+    assert main(["curve", "--start", "0", "--stop", "0.5", "--num", "3", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["points"]) == 3 and data["jumps"][0]["kind"] == "buckling"
+
+
+def test_cli_errors(capsys, tmp_path):
+    assert main(["equilibrium", "--dx", "-1"]) == 2
+    assert "beyond the chain's reach" in capsys.readouterr().err
+    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 2
+    bad = tmp_path / "m.json"
+    bad.write_text('{"segments": [{"a": 1, "b": -1}]}')
+    assert main(["buckling", "--manipulator", str(bad)]) == 2
+    assert "b must be finite and > 0" in capsys.readouterr().err
+
+
+def test_console_script_runs():
+    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.cli", "buckling"], capture_output=True, text=True,
+                       check=True)
+    assert "critical force Fx0 = -0.572793" in r.stdout
