@@ -21,7 +21,8 @@ from typing import Literal
 import numpy as np
 
 from .buckling import critical_force, straight_matrices
-from .errors import InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError
+from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError,
+                     UnreachableTargetError)
 from .manipulator import Manipulator
 from .seeds import seeds
 from .shapes import shape_label, sign_string
@@ -189,7 +190,8 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     Raises
     ------
     UnreachableTargetError
-        (``ValueError``) when the target lies beyond the chain's reach; before any solve.
+        (``ValueError``) when the target lies beyond the chain's reach (checked before any
+        solve), or when IPOPT proves it infeasible within the joint range from every start.
     NoEquilibriumError, SolverError
         (``RuntimeError``) when no solve converged to a stable equilibrium inside the
         physical range; ``status`` lists the solver statuses met.
@@ -224,6 +226,16 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     for s in seeds(m, dx, dy, max_modes=max_modes, n_random=n_random):
         consider(local_equilibrium(m, target, s.q, minimize=True))
     if not candidates:
+        if statuses and all(k.startswith("Infeasible_Problem_Detected") for k in statuses):
+            raise UnreachableTargetError(
+                f"the target for dx={dx:g}, dy={dy:g} lies within the chain's length but outside the workspace "
+                f"of the physical joint range |q| < pi - 2 beta: IPOPT found it infeasible from all "
+                f"{sum(statuses.values())} starts", field="dx", status=_summary(statuses))
+        if any(k.endswith("(on joint limit)") and not k.startswith("Infeasible") for k in statuses):
+            raise NoEquilibriumError(
+                f"no equilibrium inside the physical range for dx={dx:g}, dy={dy:g}: the least-energy "
+                "configurations press a joint against its range limit |q| = pi - 2 beta (a spring "
+                "length reaches zero)", status=_summary(statuses))
         raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
                           status=_summary(statuses))
     stable: list[Equilibrium] = []

@@ -31,6 +31,7 @@ class TensegrityError(Exception):
         self.message = message
         self.field = field
         self.details = details
+        self.status = details.get("status")
 
     def to_dict(self) -> dict[str, object]:
         """Machine-readable form: ``code``, ``message``, ``field`` and details."""
@@ -78,7 +79,6 @@ class SolverError(TensegrityError, RuntimeError):
 
     def __init__(self, message: str, *, status: str | None = None, **details: object) -> None:
         super().__init__(message, status=status, **details)
-        self.status = status
 
 
 class NoEquilibriumError(SolverError):

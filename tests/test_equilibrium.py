@@ -80,12 +80,16 @@ def test_straight_and_errors():
         solve_equilibrium(PAPER, 0.1, q0=[3.0, 0, 0, 0])
 
 
-def test_unreachable_inside_the_circle_is_a_runtime_error_with_status():
-    # the chain cannot fold back onto its base within the joint range: no equilibrium exists
+def test_targets_outside_the_joint_range_workspace():
+    # within the chain's length, but folding back that far needs |q| beyond pi - 2 beta
     m = Manipulator.uniform(2)
-    with pytest.raises(RuntimeError) as ei:
+    with pytest.raises(UnreachableTargetError) as ei:
         solve_equilibrium(m, 5.9, n_random=2)
-    assert ei.value.status
+    assert "Infeasible_Problem_Detected" in ei.value.status
+    # reachable, but every minimiser presses a joint against its limit: no equilibrium inside
+    with pytest.raises(NoEquilibriumError) as ei:
+        solve_equilibrium(PAPER, 5.0, 0.0)
+    assert isinstance(ei.value, RuntimeError) and "joint limit" in ei.value.status
 
 
 def test_nonuniform_chain_energy_method():
