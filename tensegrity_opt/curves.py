@@ -35,7 +35,7 @@ __all__ = ["Curve", "Jump", "force_deflection"]
 
 @dataclass(frozen=True)
 class Jump:
-    """A force discontinuity between ``dx_before`` and ``dx_after``.
+    """A force discontinuity between the points ``(dx_before, dy_before)`` and ``(dx_after, dy_after)``.
 
     ``kind`` is ``"buckling"`` (at ``dx -> 0+``: from 0 to the critical force) or
     ``"branch_switch"`` (the least-energy stable branch changes).
@@ -48,6 +48,8 @@ class Jump:
     force_after: np.ndarray
     branch_before: int
     branch_after: int
+    dy_before: float = 0.0
+    dy_after: float = 0.0
 
 
 @dataclass(frozen=True)
@@ -230,10 +232,12 @@ def _jumps(m, dxs, dys, selected, sel_ids) -> list[Jump]:
             before = i - 1 if i > 0 and dxs[i - 1] == 0.0 else None
             jumps.append(Jump("buckling", 0.0 if before is None else float(dxs[before]), float(dxs[i]),
                               np.zeros(2), np.array([fx0, 0.0]), -1, sel_ids[i]))
+            # (dy is 0 on both sides)
     for i in range(1, len(selected)):
         if sel_ids[i] != sel_ids[i - 1] and sel_ids[i] >= 0 and sel_ids[i - 1] >= 0:
             jumps.append(Jump("branch_switch", float(dxs[i - 1]), float(dxs[i]), selected[i - 1].force.copy(),
-                              selected[i].force.copy(), sel_ids[i - 1], sel_ids[i]))
+                              selected[i].force.copy(), sel_ids[i - 1], sel_ids[i], float(dys[i - 1]),
+                              float(dys[i])))
     return jumps
 
 

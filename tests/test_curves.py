@@ -66,12 +66,17 @@ def test_branch_switch_is_reported():
     c = force_deflection(PAPER, np.full(dy.size, 0.3), dy)
     assert c.stable.all()
     switches = [j for j in c.jumps if j.kind == "branch_switch"]
-    # the signs of q1 before and after differ, and the force jumps
-    if switches:
-        j = switches[0]
-        assert abs(j.force_after[1] - j.force_before[1]) > 1e-3
-    else:
-        assert np.all(np.sign(c.q[:, 0]) == np.sign(c.q[0, 0]))
+    assert len(switches) == 1
+    j = switches[0]
+    # the mirror images tie at dy = 0; past it the other U is lower: switch between dy = 0 and 0.05
+    assert j.dy_before == pytest.approx(0.0, abs=1e-12) and j.dy_after == pytest.approx(0.05)
+    assert np.sign(j.force_before[1]) != np.sign(j.force_after[1])
+    i = int(np.argmin(np.abs(dy - 0.05)))
+    assert np.sign(c.q[i, 0]) != np.sign(c.q[0, 0])
+    # the selected point is the least-energy stable one everywhere (independent global solves)
+    from tensegrity_opt import solve_equilibrium
+    for k in (0, 6, 12, 18, 24):
+        assert c.energy[k] == pytest.approx(solve_equilibrium(PAPER, 0.3, dy[k]).energy, rel=1e-10)
 
 
 def test_errors():
