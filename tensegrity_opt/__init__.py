@@ -14,9 +14,11 @@ Quick start::
 
 from .buckling import Buckling, Mode, critical_force
 from .curves import Curve, Jump, force_deflection
+from .design import (Design, PreloadDesign, choose_preloads, critical_load_sensitivity, equilibrium_sensitivity,
+                     maximize_critical_force, preloads_for_critical_force)
 from .equilibria import find_equilibria
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
-from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
+from .errors import (InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
                      TensegrityError, UnreachableTargetError, UnstableStraightError, UnsupportedError)
 from .landscape import Landscape, energy_landscape
 from .manipulator import Manipulator
@@ -31,8 +33,11 @@ __all__ = [
     "Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria",
     "Buckling", "Mode", "critical_force",
     "Curve", "Jump", "force_deflection",
+    "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
+    "critical_load_sensitivity", "equilibrium_sensitivity",
     "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",
+    "InfeasibleDesignError",
     "__version__",
 ]

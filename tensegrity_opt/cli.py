@@ -1,9 +1,13 @@
-"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve ...``.
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|serve|openapi ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
 prints a readable table, or JSON with ``--json``. Errors print one line to stderr
 and exit with status 2.
+
+``serve`` starts the HTTP service (``service/``, settings from ``TENSEGRITY_*`` environment
+variables) and ``openapi`` prints its OpenAPI document; both import the service lazily, so the
+library itself does not need FastAPI.
 """
 
 from __future__ import annotations
@@ -142,11 +146,53 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--num", type=int, default=11)
     sp.add_argument("--dy", type=float, default=0.0)
     sp.set_defaults(func=_cmd_curve)
+
+    sp = sub.add_parser("serve", help="start the HTTP service (uvicorn, one process; TENSEGRITY_* settings)")
+    sp.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1)")
+    sp.add_argument("--port", type=int, default=8000, help="TCP port (default 8000)")
+    sp.add_argument("--log-level", default="info", choices=("critical", "error", "warning", "info", "debug"))
+    sp.add_argument("--no-access-log", action="store_true", help="do not log every request")
+    sp.set_defaults(service=_cmd_serve)
+
+    sp = sub.add_parser("openapi", help="print the service's OpenAPI document (JSON, sorted keys, indent 2)")
+    sp.set_defaults(service=_cmd_openapi)
     return p
+
+
+def _cmd_serve(args: argparse.Namespace) -> int:
+    try:
+        import uvicorn
+
+        from service.config import Settings
+        from service.main import create_app
+    except ImportError as exc:  # pragma: no cover - service dependencies missing
+        print(f"tensegrity-opt: error: the service needs its dependencies ({exc})", file=sys.stderr)
+        return 2
+    try:
+        settings = Settings()
+    except ValueError as exc:
+        print(f"tensegrity-opt: error: invalid TENSEGRITY_* setting: {exc}", file=sys.stderr)
+        return 2
+    # One process: the solver pool inside it supplies the parallelism (see service/pool.py).
+    uvicorn.run(create_app(settings), host=args.host, port=args.port, log_level=args.log_level,
+                access_log=not args.no_access_log, workers=1)
+    return 0
+
+
+def _cmd_openapi(args: argparse.Namespace) -> int:
+    try:
+        from service.main import openapi_json
+    except ImportError as exc:  # pragma: no cover - service dependencies missing
+        print(f"tensegrity-opt: error: the service needs its dependencies ({exc})", file=sys.stderr)
+        return 2
+    sys.stdout.write(openapi_json())
+    return 0
 
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
+    if getattr(args, "service", None) is not None:
+        return args.service(args)
     try:
         m = _manipulator(args)
         data, text = args.func(args, m)

@@ -18,6 +18,7 @@ __all__ = [
     "UnsupportedError",
     "SolverError",
     "NoEquilibriumError",
+    "InfeasibleDesignError",
 ]
 
 
@@ -85,3 +86,13 @@ class NoEquilibriumError(SolverError):
     """Solves converged but no equilibrium of the requested kind lies inside the physical range."""
 
     code = "no_equilibrium"
+
+
+class InfeasibleDesignError(SolverError):
+    """A design or control problem has no solution; ``best`` holds the best point found (or None)."""
+
+    code = "design_infeasible"
+
+    def __init__(self, message: str, *, status: str | None = None, best: object = None, **details: object) -> None:
+        super().__init__(message, status=status, **details)
+        self.best = best

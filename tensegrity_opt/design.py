@@ -1,0 +1,560 @@
+"""Design and control: the strongest chain, preloads for a pose or a load, sensitivities.
+
+Every problem is a CasADi NLP solved by IPOPT with exact derivatives
+(:mod:`.design_solvers`); every result is verified by an independent forward computation
+(:func:`critical_force` or :func:`solve_equilibrium_under_force`) before it is returned.
+Formulations and worked examples: ``docs/design.md``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.linalg as sla
+
+from .buckling import check_straight, critical_force, straight_matrices
+from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
+from .errors import (InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError,
+                     TensegrityError)
+from .manipulator import Manipulator
+from .segment import Segment
+from .solvers import RANGE_SHRINK, model
+
+__all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
+           "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES"]
+
+#: Per-segment design variables of the buckling design problem (symmetric segments).
+DESIGN_VARIABLES = ("a", "b", "k", "L0")
+_INF = float("inf")
+
+
+@dataclass(frozen=True)
+class Design:
+    """Result of :func:`maximize_critical_force` / :func:`preloads_for_critical_force`.
+
+    Attributes
+    ----------
+    manipulator : Manipulator
+        The optimised chain.
+    critical_force : float
+        Signed critical force ``-min(loads)``, recomputed by :func:`critical_force` on it.
+    loads : ndarray
+        All its critical loads (ascending), recomputed.
+    multiplicity : int
+        How many critical loads coincide with the smallest (relative gap < 1e-4).
+    active : list of str
+        Active constraints at the optimum (bounds, budgets, tension, stiffness rows).
+    status : str
+        IPOPT's return status; ``success`` its success flag; ``iterations``.
+    initial_critical_force : float
+        The starting design's critical force (NaN when undefined there).
+    feasible : bool
+        ``preloads_for_critical_force``: whether the required load is reached.
+    """
+
+    manipulator: Manipulator
+    critical_force: float
+    loads: np.ndarray
+    multiplicity: int
+    active: list[str]
+    status: str
+    success: bool
+    iterations: int
+    boundary: str
+    initial_critical_force: float
+    feasible: bool = True
+
+    @property
+    def load(self) -> float:
+        """The critical compressive load ``-critical_force``."""
+        return -self.critical_force
+
+
+@dataclass(frozen=True)
+class PreloadDesign:
+    """Result of :func:`choose_preloads`.
+
+    Attributes
+    ----------
+    manipulator : Manipulator
+        The chain with the chosen rest lengths ``(L1_0, L2_0)`` per segment.
+    preloads : ndarray (n, 2)
+        The chosen rest lengths.
+    q : ndarray (n,)
+        The verified equilibrium configuration (force control from the optimiser's ``q``).
+    margin : float
+        Smallest eigenvalue of the Hessian of ``E - F.tip`` in joint angles at ``q``
+        (torque per radian), recomputed.
+    tip : ndarray (2,)
+        The verified tip position; ``equilibrium`` the full verified :class:`Equilibrium`.
+    """
+
+    manipulator: Manipulator
+    preloads: np.ndarray
+    q: np.ndarray
+    margin: float
+    tip: np.ndarray
+    energy: float
+    status: str
+    success: bool
+    iterations: int
+    equilibrium: Equilibrium = field(repr=False)
+
+
+# --------------------------------------------------------------------------- helpers
+def _per_segment(value, n: int, field_name: str) -> np.ndarray:
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 0:
+        arr = np.full(n, float(arr))
+    if arr.shape != (n,) or not np.all(np.isfinite(arr)):
+        raise InvalidParameterError(f"{field_name} must be a number or {n} finite numbers", field=field_name)
+    return arr
+
+
+def _symmetric_columns(m: Manipulator) -> dict[str, np.ndarray]:
+    bad = [i for i, s in enumerate(m.segments) if not s.symmetric]
+    if bad:
+        raise StraightNotEquilibriumError(
+            f"buckling design needs symmetric segments (k1 == k2, L1_0 == L2_0); segment {bad[0]} is not",
+            field=f"segments[{bad[0]}]")
+    return {"a": m.a.copy(), "b": m.b.copy(), "k": m.k1.copy(), "L0": m.L1_0.copy()}
+
+
+def _build(cols: Mapping[str, np.ndarray]) -> Manipulator:
+    return Manipulator(Segment(a, b, k, L0) for a, b, k, L0 in zip(cols["a"], cols["b"], cols["k"], cols["L0"]))
+
+
+def _multiplicity(loads: np.ndarray, rel: float = 1e-4) -> int:
+    return int(np.sum(loads <= loads[0] * (1.0 + rel)))
+
+
+def _safe_critical(m: Manipulator, boundary: str) -> float:
+    try:
+        return critical_force(m, boundary).force
+    except TensegrityError:
+        return float("nan")
+
+
+# --------------------------------------------------------------------------- 1. strongest chain
+def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
+                            bounds: Mapping[str, tuple] | None = None,
+                            budget: Mapping[str, float] | None = None, boundary: str = "guided",
+                            **constraints) -> Design:
+    """Maximise the critical load of the straight chain over per-segment design variables.
+
+    Parameters
+    ----------
+    m : Manipulator
+        The initial design (symmetric segments); what is not varied stays fixed.
+    vary : iterable of {"a", "b", "k", "L0"}
+        The per-segment variables to optimise.
+    bounds : dict, optional
+        ``{name: (lo, hi)}`` with numbers or per-segment arrays. Default for a varied
+        variable: ``(x0 / 10, 10 x0)``.
+    budget : dict, optional
+        ``{name: total}``: ``sum(name) <= total`` over the segments.
+    boundary : {"guided", "free"}
+    **constraints
+        ``total_length`` (float, or ``True`` to keep the initial ``2 sum(b)``),
+        ``tension=(T_min, T_max)`` bounds on the spring preload ``k (2b - L0)`` at straight,
+        ``K_min`` a lower bound on every joint stiffness ``k (b L0 - 2 (b^2 - a^2))``.
+
+    Returns
+    -------
+    Design
+        Verified: ``critical_force`` is recomputed by :func:`critical_force`.
+
+    Raises
+    ------
+    InvalidParameterError
+        Unknown variable/constraint, bad bounds.
+    InfeasibleDesignError
+        (``RuntimeError``) IPOPT found no feasible design; ``best`` holds its last point
+        (a :class:`Design`) when one could be evaluated.
+    """
+    return _buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
+
+
+def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: str = "guided",
+                                bounds: tuple | None = None) -> Design:
+    """The smallest change of the rest lengths ``L0`` (symmetric) giving a critical load ``>= required``.
+
+    Minimises ``sum((L0 - L0_nom)^2) / sum(L0_nom^2)`` subject to
+    ``Z^T (K(L0) - required G) Z`` positive semidefinite and ``L0`` within ``bounds``
+    (default ``(0.05 * 2b, 2b)``: springs in tension at straight).
+
+    Returns
+    -------
+    Design
+        ``feasible=True`` with the minimal change; or, when no rest lengths within the
+        bounds reach ``required``, ``feasible=False`` with the strongest achievable design.
+    """
+    required = float(required)
+    if not math.isfinite(required) or required <= 0:
+        raise InvalidParameterError("required must be a positive finite load", field="required")
+    b = m.b
+    bnds = {"L0": bounds if bounds is not None else (0.05 * 2 * b, 2 * b)}
+    try:
+        return _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
+    except InfeasibleDesignError:
+        best = _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=None)
+        return Design(**{**best.__dict__, "feasible": False})
+
+
+def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
+    from .design_solvers import buckling_design_nlp
+
+    if boundary not in ("guided", "free"):
+        raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
+    if boundary == "guided" and m.n < 2:
+        raise InvalidParameterError("a guided tip needs n >= 2 segments", field="n")
+    vary = tuple(vary)
+    for v in vary:
+        if v not in DESIGN_VARIABLES:
+            raise InvalidParameterError(f"cannot vary {v!r}: choose from {DESIGN_VARIABLES}", field="vary")
+    unknown = set(constraints) - {"total_length", "tension", "K_min"}
+    if unknown:
+        raise InvalidParameterError(f"unknown constraint(s) {sorted(unknown)}: use total_length, tension, K_min",
+                                    field=sorted(unknown)[0])
+    bounds = dict(bounds or {})
+    budget = dict(budget or {})
+    for name in list(bounds) + list(budget):
+        if name not in DESIGN_VARIABLES:
+            raise InvalidParameterError(f"unknown design variable {name!r}", field=name)
+    n = m.n
+    x0 = _symmetric_columns(m)
+    lo, hi = {}, {}
+    for name in DESIGN_VARIABLES:
+        if name in vary:
+            blo, bhi = bounds.get(name, (x0[name] / 10.0, x0[name] * 10.0))
+            lo[name] = _per_segment(blo, n, f"bounds.{name}")
+            hi[name] = _per_segment(bhi, n, f"bounds.{name}")
+            if np.any(lo[name] <= 0) or np.any(hi[name] < lo[name]):
+                raise InvalidParameterError(f"bounds for {name} need 0 < lo <= hi", field=f"bounds.{name}")
+        else:
+            lo[name] = hi[name] = x0[name]
+    start = {name: np.clip(x0[name], lo[name], hi[name]) for name in DESIGN_VARIABLES}
+    # Start inside the budgets: scale a varied variable down to its budget.
+    for name, total in budget.items():
+        total = float(total)
+        if not math.isfinite(total) or total <= 0:
+            raise InvalidParameterError(f"budget for {name} must be positive and finite", field=f"budget.{name}")
+        if start[name].sum() > total:
+            start[name] = np.maximum(start[name] * total / start[name].sum(), lo[name])
+    nlp = buckling_design_nlp(n, boundary == "guided")
+    d = nlp.d
+    # Initial load and Cholesky factor.
+    m_start = _build(start)
+    K, G, S0 = straight_matrices(m_start)
+    Z = _basis(S0, boundary == "guided", n)
+    if required is None:
+        try:
+            P0 = 0.5 * float(sla.eigh(Z.T @ np.diag(K) @ Z, Z.T @ G @ Z, eigvals_only=True)[0])
+        except (np.linalg.LinAlgError, ValueError):
+            P0 = 0.0
+        P0 = max(P0, 0.0)
+    else:
+        P0 = required
+    Mz = Z.T @ (np.diag(K) - P0 * G) @ Z
+    w_, V_ = np.linalg.eigh(Mz)
+    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, abs(w_).max()))) @ V_.T)
+    lv0 = np.array([Lc[i, j] for i in range(d) for j in range(i + 1)])
+    xv0 = np.concatenate([start["a"], start["b"], start["k"], start["L0"], [P0], lv0])
+    lbx = np.concatenate([lo["a"], lo["b"], lo["k"], lo["L0"], [required if required is not None else 0.0],
+                          np.full(lv0.size, -_INF)])
+    ubx = np.concatenate([hi["a"], hi["b"], hi["k"], hi["L0"], [_INF], np.full(lv0.size, _INF)])
+    for k_ in nlp.diag:
+        lbx[4 * n + 1 + k_] = 0.0
+    # Rows: psd (=0), budgets a,b,k,L0, total length, tension (n), K (n).
+    lbg = [np.zeros(nlp.n_psd)]
+    ubg = [np.zeros(nlp.n_psd)]
+    for name in DESIGN_VARIABLES:
+        lbg.append([-_INF])
+        ubg.append([float(budget[name]) if name in budget else _INF])
+    tl = constraints.get("total_length")
+    if tl is True:
+        tl = m.straight_length
+    lbg.append([float(tl) if tl is not None else -_INF])
+    ubg.append([float(tl) if tl is not None else _INF])
+    tension = constraints.get("tension")
+    tmin, tmax = (tension if tension is not None else (-_INF, _INF))
+    lbg.append(np.full(n, float(tmin)))
+    ubg.append(np.full(n, float(tmax)))
+    kmin = constraints.get("K_min")
+    lbg.append(np.full(n, float(kmin) if kmin is not None else -_INF))
+    ubg.append(np.full(n, _INF))
+    lbg_a, ubg_a = np.concatenate(lbg), np.concatenate(ubg)
+    weights = [1.0, 0.0] if required is None else [0.0, 1.0]
+    p = np.concatenate([x0["L0"], weights])
+    res = nlp.solve(xv0, lbx, ubx, lbg_a, ubg_a, p)
+    cols = {name: res.x[i * n:(i + 1) * n].copy() for i, name in enumerate(DESIGN_VARIABLES)}
+    for name in DESIGN_VARIABLES:          # IPOPT may step 1e-8 outside a bound: snap back
+        cols[name] = np.clip(cols[name], lo[name], hi[name])
+    P_opt = float(res.x[4 * n])
+    try:
+        m_opt = _build(cols)
+        bk = critical_force(m_opt, boundary)
+    except TensegrityError as exc:
+        raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
+    rows = np.asarray(nlp.rows(res.x)).ravel()
+    viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
+    design = Design(manipulator=m_opt, critical_force=bk.force, loads=bk.loads,
+                    multiplicity=_multiplicity(bk.loads),
+                    active=_active(cols, lo, hi, vary, budget, rows, nlp.n_psd, n, tl, tmin, tmax, kmin),
+                    status=res.status, success=res.success, iterations=res.iterations, boundary=boundary,
+                    initial_critical_force=_safe_critical(m, boundary),
+                    feasible=required is None or bk.loads[0] >= required * (1 - 1e-6))
+    if not res.success or viol > 1e-6:
+        raise InfeasibleDesignError(
+            f"IPOPT did not find a feasible design ({res.status}); constraint violation {viol:.3g}",
+            status=res.status, best=design)
+    # Independent check: the recomputed critical load is the optimiser's P (to its tolerance).
+    if required is None and abs(bk.loads[0] - P_opt) > 1e-5 * max(1.0, P_opt):
+        raise SolverError(f"verification failed: optimiser's load {P_opt:.8g} but critical_force gives "
+                          f"{bk.loads[0]:.8g}", status=res.status)
+    if required is not None and not design.feasible:
+        raise InfeasibleDesignError(f"the design reaches only {bk.loads[0]:.6g} < required {required:.6g}",
+                                    status=res.status, best=design)
+    return design
+
+
+def _basis(S0: np.ndarray, guided: bool, n: int) -> np.ndarray:
+    if not guided:
+        return np.eye(n)
+    return np.vstack([np.eye(n - 1), -S0[None, : n - 1] / S0[n - 1]])
+
+
+def _active(cols, lo, hi, vary, budget, rows, n_psd, n, tl, tmin, tmax, kmin, tol=1e-6) -> list[str]:
+    act = []
+    for name in vary:
+        for i in range(n):
+            x = cols[name][i]
+            scale = max(1.0, abs(x))
+            if x <= lo[name][i] + tol * scale:
+                act.append(f"{name}[{i}] >= {lo[name][i]:.6g}")
+            elif x >= hi[name][i] - tol * scale:
+                act.append(f"{name}[{i}] <= {hi[name][i]:.6g}")
+    r = n_psd
+    for j, name in enumerate(DESIGN_VARIABLES):
+        if name in budget and rows[r + j] >= float(budget[name]) - tol * max(1.0, abs(float(budget[name]))):
+            act.append(f"sum({name}) <= {float(budget[name]):.6g}")
+    if tl is not None:
+        act.append(f"2 sum(b) == {float(tl):.6g}")
+    ten = rows[r + 5: r + 5 + n]
+    K = rows[r + 5 + n: r + 5 + 2 * n]
+    for i in range(n):
+        if math.isfinite(tmin) and ten[i] <= tmin + tol * max(1.0, abs(tmin)):
+            act.append(f"tension[{i}] >= {tmin:.6g}")
+        if math.isfinite(tmax) and ten[i] >= tmax - tol * max(1.0, abs(tmax)):
+            act.append(f"tension[{i}] <= {tmax:.6g}")
+        if kmin is not None and K[i] <= kmin + tol * max(1.0, abs(kmin)):
+            act.append(f"K[{i}] >= {kmin:.6g}")
+    return act
+
+
+# --------------------------------------------------------------------------- 2. preloads for a pose
+def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "nominal", *,
+                    margin: float = 1e-3, taut: bool = False, bounds: tuple | None = None,
+                    end_angle: float | None = None, q0=None) -> PreloadDesign:
+    """Rest lengths ``(L1_0, L2_0)`` per segment putting the tip at ``target`` stably under ``load``.
+
+    Parameters
+    ----------
+    m : Manipulator
+        Geometry and stiffness (kept); its rest lengths are the nominal preloads.
+    target : (float, float)
+        Tip position ``(x, y)`` (length units).
+    load : (float, float)
+        Tip force ``(fx, fy)`` (a dead load).
+    objective : {"nominal", "margin", "energy"}
+        Least change from the nominal preloads; largest stability margin; least spring energy.
+    margin : float
+        Required smallest eigenvalue of the joint-space Hessian of ``E - F.tip`` (torque/rad);
+        the lower bound of the margin for ``objective="margin"``.
+    taut : bool
+        Keep every spring in tension (``L >= L0``).
+    bounds : (lo, hi), optional
+        Bounds on every rest length; default ``(0.1 b_min, 4 b_max)``.
+    end_angle : float, optional
+        Also prescribe the absolute angle of the last link (rad).
+    q0 : array_like, optional
+        Initial configuration; default the least-energy equilibrium at the target with the
+        nominal preloads (or a straight-line guess when there is none).
+
+    Returns
+    -------
+    PreloadDesign
+        Verified: the force-controlled equilibrium with these preloads, started from the
+        optimiser's ``q``, lands on the target within 1e-6 with Morse index 0.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        (``RuntimeError``) IPOPT found no feasible preloads (``best`` holds its last point as a
+        dict), or the verification failed.
+    """
+    from .design_solvers import preload_nlp
+
+    if objective not in ("nominal", "margin", "energy"):
+        raise InvalidParameterError(f"objective must be 'nominal', 'margin' or 'energy', got {objective!r}",
+                                    field="objective")
+    target = np.asarray(target, dtype=float)
+    load = np.asarray(load, dtype=float)
+    if target.shape != (2,) or not np.all(np.isfinite(target)):
+        raise InvalidParameterError("target must be two finite numbers (x, y)", field="target")
+    if load.shape != (2,) or not np.all(np.isfinite(load)):
+        raise InvalidParameterError("load must be two finite numbers (fx, fy)", field="load")
+    if not math.isfinite(margin) or margin < 0:
+        raise InvalidParameterError("margin must be finite and >= 0", field="margin")
+    n = m.n
+    dx, dy = m.straight_length - target[0], target[1]
+    m.check_reachable(dx, dy)
+    lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
+    if not (0 < lo < hi):
+        raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
+    if q0 is None:
+        try:
+            q0 = solve_equilibrium(m, dx, dy).q
+        except TensegrityError:
+            q0 = _reach_guess(m, target)
+    q0 = np.asarray(q0, dtype=float)
+    nlp = preload_nlp(n)
+    mdl = model(n)
+    L0nom = np.concatenate([m.L1_0, m.L2_0])
+    L0start = np.clip(L0nom, lo, hi)
+    params = np.concatenate([m.a, m.b, m.k1, m.k2, L0start[:n], L0start[n:]])
+    _, _, Hphi, _, _ = mdl.evaluate(params, q0, load)
+    T = np.tril(np.ones((n, n)))
+    Hq = T.T @ Hphi @ T
+    mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
+    w_, V_ = np.linalg.eigh(Hq - mu0 * np.eye(n))
+    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6)) @ V_.T)
+    lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
+    x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
+    lbx = np.concatenate([np.full(n, -_INF), np.full(2 * n, lo), [margin], np.full(lv0.size, -_INF)])
+    ubx = np.concatenate([np.full(n, _INF), np.full(2 * n, hi), [margin if objective != "margin" else _INF],
+                          np.full(lv0.size, _INF)])
+    for k_ in nlp.diag:
+        lbx[3 * n + 1 + k_] = 0.0
+    lim = m.joint_limits * (1 - RANGE_SHRINK)
+    ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
+    lbg = np.concatenate([np.zeros(n), target, [ea[0]], np.zeros(lv0.size),
+                          np.full(2 * n, 0.0 if taut else -_INF), -lim])
+    ubg = np.concatenate([np.zeros(n), target, [ea[1]], np.zeros(lv0.size), np.full(2 * n, _INF), lim])
+    weights = {"nominal": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
+    p = np.concatenate([m.a, m.b, m.k1, m.k2, load, L0nom, weights])
+    res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
+    phi = res.x[:n]
+    q = np.diff(np.concatenate([[0.0], phi]))
+    L10 = np.clip(res.x[n:2 * n], lo, hi)
+    L20 = np.clip(res.x[2 * n:3 * n], lo, hi)
+    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[3 * n])}
+    if not res.success:
+        raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
+                                    best=best)
+    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
+    try:
+        eq = solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
+    except TensegrityError as exc:
+        raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
+                                    f"({exc})", status=res.status, best=best) from exc
+    if not eq.stable or np.max(np.abs(eq.tip - target)) > 1e-6:
+        raise InfeasibleDesignError(
+            f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
+            f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
+    _, _, Hphi, _, _ = mdl.evaluate(m_new.params, eq.q, load)
+    achieved = float(np.linalg.eigvalsh(T.T @ Hphi @ T)[0])
+    return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q, margin=achieved,
+                         tip=eq.tip, energy=eq.energy, status=res.status, success=res.success,
+                         iterations=res.iterations, equilibrium=eq)
+
+
+def _reach_guess(m: Manipulator, target: np.ndarray) -> np.ndarray:
+    """A configuration bending every joint equally toward the target (a start, not a solution)."""
+    ang = math.atan2(target[1], target[0] - m.base_length)
+    return np.concatenate([[ang], np.zeros(m.n - 1)]) * 0.5
+
+
+# --------------------------------------------------------------------------- 4. sensitivities
+def critical_load_sensitivity(m: Manipulator, boundary: str = "guided", mode: int = 0) -> dict[str, np.ndarray]:
+    """``d(load)/d(parameter)`` of a critical load, per segment, for ``a``, ``b``, ``k``, ``L0``.
+
+    Symmetric segments; ``k`` and ``L0`` change both springs together. From the bordered
+    eigenproblem ``A(P) w = 0``, ``A = [[K - P G, S0], [S0^T, 0]]`` (guided) or
+    ``A = K - P G`` (free): ``dP/dp = w^T (dA/dp) w / (q^T G q)``.
+
+    Returns
+    -------
+    dict
+        ``{"a", "b", "k", "L0"}`` -> ndarray (n,), and ``"load"`` the load itself.
+
+    Raises
+    ------
+    InvalidParameterError
+        When the load is repeated (not differentiable there; use the design NLP instead).
+    """
+    bk = critical_force(m, boundary)
+    if mode < 0 or mode >= bk.loads.size:
+        raise InvalidParameterError(f"mode must be in 0..{bk.loads.size - 1}", field="mode")
+    P = bk.loads[mode]
+    gaps = np.abs(np.delete(bk.loads, mode) - P)
+    if gaps.size and gaps.min() < 1e-6 * P:
+        raise InvalidParameterError("the critical load is repeated: it has no derivative there", field="mode")
+    K, G, S0 = straight_matrices(m)
+    qv = bk.modes[mode].q
+    guided = boundary == "guided"
+    f = -float(S0 @ ((K - 0) * qv - P * (G @ qv))) / float(S0 @ S0) if guided else 0.0
+    denom = float(qv @ G @ qv)
+    n = m.n
+    a, b, k, L0 = m.a, m.b, m.k1, m.L1_0
+    T = np.tril(np.ones((n, n)))
+    dK = {"a": 4 * k * a, "b": k * (L0 - 4 * b), "k": b * L0 - 2 * (b * b - a * a), "L0": k * b}
+    out = {name: dK[name] * qv ** 2 / denom for name in ("a", "k", "L0")}
+    db = np.zeros(n)
+    Tq = T @ qv
+    for i in range(n):
+        dl = np.zeros(n)
+        dl[i] = 1.0
+        if i > 0:
+            dl[i - 1] = 1.0
+        dG_qq = float(dl @ Tq ** 2)                 # q^T T^T diag(dl) T q
+        dS0_q = float(dl @ Tq)                      # (T^T dl)^T q
+        db[i] = (dK["b"][i] * qv[i] ** 2 - P * dG_qq + (2 * f * dS0_q if guided else 0.0)) / denom
+    out["b"] = db
+    out["load"] = np.array(P)
+    return out
+
+
+def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.ndarray]:
+    """``d(q, F)/d(parameters)`` at a displacement-controlled equilibrium (tip held fixed).
+
+    Implicit differentiation of the KKT system with respect to the per-segment parameters
+    ``a, b, k1, k2, L1_0, L2_0``.
+
+    Returns
+    -------
+    dict
+        ``"dq"``: ndarray (n, 6n) and ``"dF"``: ndarray (2, 6n), columns ordered as
+        ``names`` (``"a[0]", ..., "L2_0[n-1]"``); and per-parameter blocks
+        ``"dq/<name>"`` (n, n) and ``"dF/<name>"`` (2, n).
+    """
+    n = m.n
+    mdl = model(n)
+    Jz, Jp = mdl.kkt_parameter_jacobian(m.params, np.asarray(eq.q, float), np.asarray(eq.force, float),
+                                        np.asarray(eq.tip, float))
+    try:
+        dz = -np.linalg.solve(Jz, Jp)
+    except np.linalg.LinAlgError:
+        raise InvalidParameterError("the KKT system is singular at this equilibrium", field="eq") from None
+    D = np.eye(n) - np.eye(n, k=-1)
+    dq = D @ dz[:n]
+    dF = dz[n:n + 2]
+    names = [f"{p}[{i}]" for p in ("a", "b", "k1", "k2", "L1_0", "L2_0") for i in range(n)]
+    out: dict[str, np.ndarray] = {"dq": dq, "dF": dF, "names": np.array(names)}
+    for j, p in enumerate(("a", "b", "k1", "k2", "L1_0", "L2_0")):
+        out[f"dq/{p}"] = dq[:, j * n:(j + 1) * n]
+        out[f"dF/{p}"] = dF[:, j * n:(j + 1) * n]
+    return out

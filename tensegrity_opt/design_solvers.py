@@ -1,0 +1,190 @@
+"""CasADi formulations of the design and control problems (the only design module touching CasADi).
+
+Two problem kinds, each built once per ``(n, boundary)`` / ``n`` and cached per thread (see
+:mod:`.solvers` for why per thread); every number that varies between calls (fixed
+parameters, bounds, budgets, nominal values, loads, targets, objective weights) enters
+through the parameter vector or the bounds.
+
+``BucklingDesignNLP`` — variables ``a, b, k, L0`` (per segment, symmetric springs), the load
+``P`` and a lower-triangular ``L``; constraint ``Z^T (K - P G) Z = L L^T`` with
+``diag(L) >= 0`` (positive semidefinite, smooth even where the smallest eigenvalue is
+repeated), plus budget, total-length, preload-tension and joint-stiffness rows. Objective
+``-w_P P + w_c sum((L0 - L0_nom)^2) / sum(L0_nom^2)``.
+
+``PreloadNLP`` — variables absolute angles ``phi``, rest lengths ``L1_0, L2_0``, a margin
+``mu`` and a lower-triangular ``L``; constraints ``grad E = J^T F``, ``tip = target``,
+optional last-link angle, ``H_q - mu I = L L^T`` (``H_q``: Hessian of ``E - F.tip`` in joint
+angles), spring lengths ``L_i - L_i0`` (for tautness) and joint angles (physical range).
+Objective ``w_nom |L0 - L0_nom|^2 / |L0_nom|^2 - w_mu mu + w_E E``.
+"""
+
+from __future__ import annotations
+
+import threading
+from dataclasses import dataclass
+
+import casadi as ca
+import numpy as np
+
+from .solvers import IPOPT_OPTIONS
+
+__all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
+
+_DESIGN_OPTIONS = {**IPOPT_OPTIONS, "ipopt.max_iter": 3000, "ipopt.tol": 1e-9, "ipopt.constr_viol_tol": 1e-9,
+                   "ipopt.max_wall_time": 60.0}
+
+
+@dataclass
+class NLPResult:
+    x: np.ndarray
+    lam_g: np.ndarray
+    lam_x: np.ndarray
+    success: bool
+    status: str
+    iterations: int
+
+
+def tril_size(d: int) -> int:
+    return d * (d + 1) // 2
+
+
+def _tril(v, d):
+    """Lower-triangular SX matrix from a vector (row by row), and the indices of its diagonal."""
+    L = ca.SX(d, d)
+    diag = []
+    k = 0
+    for i in range(d):
+        for j in range(i + 1):
+            L[i, j] = v[k]
+            if i == j:
+                diag.append(k)
+            k += 1
+    return L, diag
+
+
+def _lower(M, d):
+    return ca.vertcat(*[M[i, j] for i in range(d) for j in range(i + 1)])
+
+
+def _chain_matrices(b):
+    """G = -Hess x (joint angles, straight) and S0 = dy/dq for half-lengths ``b`` (SX)."""
+    n = b.shape[0]
+    links = b + ca.vertcat(b[1:], 0) if n > 1 else b
+    T = ca.DM(np.tril(np.ones((n, n))))
+    G = T.T @ ca.diag(links) @ T
+    S0 = T.T @ links
+    return G, S0
+
+
+def _run(solver, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
+    sol = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg, p=p)
+    st = solver.stats()
+    return NLPResult(np.asarray(sol["x"]).ravel(), np.asarray(sol["lam_g"]).ravel(),
+                     np.asarray(sol["lam_x"]).ravel(), bool(st["success"]), str(st["return_status"]),
+                     int(st.get("iter_count", -1)))
+
+
+class BucklingDesignNLP:
+    """max P  s.t.  Z^T (K(a,b,k,L0) - P G(b)) Z = L L^T, diag(L) >= 0, and design rows."""
+
+    def __init__(self, n: int, guided: bool) -> None:
+        self.n = n
+        self.d = d = n - 1 if guided else n
+        a, b, k, L0 = (ca.SX.sym(s, n) for s in ("a", "b", "k", "L0"))
+        P = ca.SX.sym("P")
+        lv = ca.SX.sym("L", tril_size(d))
+        L, self.diag = _tril(lv, d)
+        K = k * (b * L0 - 2 * (b * b - a * a))
+        G, S0 = _chain_matrices(b)
+        if guided:
+            Z = ca.vertcat(ca.SX.eye(n - 1), -S0[: n - 1].T / S0[n - 1])
+        else:
+            Z = ca.SX.eye(n)
+        M = Z.T @ (ca.diag(K) - P * G) @ Z
+        psd = _lower(M - L @ L.T, d)
+        # parameters: nominal L0 (n), weights (w_P, w_change)
+        L0nom = ca.SX.sym("L0nom", n)
+        w = ca.SX.sym("w", 2)
+        f = -w[0] * P + w[1] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom)
+        rows = ca.vertcat(psd,                                   # = 0
+                          ca.sum1(a), ca.sum1(b), ca.sum1(k), ca.sum1(L0),   # budgets
+                          2 * ca.sum1(b),                        # total length
+                          k * (2 * b - L0),                      # preload tension at straight (n)
+                          K)                                     # joint stiffness (n)
+        self.x = ca.vertcat(a, b, k, L0, P, lv)
+        self.nx = 4 * n + 1 + tril_size(d)
+        self.n_psd = tril_size(d)
+        self.solver = ca.nlpsol("design_buckling", "ipopt",
+                                {"x": self.x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows}, _DESIGN_OPTIONS)
+        self.rows = ca.Function("rows", [self.x], [rows])
+
+    def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
+        return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
+
+
+class PreloadNLP:
+    """Rest lengths and configuration for a stable equilibrium at a target under a tip load."""
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        phi = ca.SX.sym("phi", n)
+        L10 = ca.SX.sym("L10", n)
+        L20 = ca.SX.sym("L20", n)
+        mu = ca.SX.sym("mu")
+        lv = ca.SX.sym("L", tril_size(n))
+        Lc, self.diag = _tril(lv, n)
+        a, b, k1, k2 = (ca.SX.sym(s, n) for s in ("a", "b", "k1", "k2"))
+        F = ca.SX.sym("F", 2)
+        L0nom = ca.SX.sym("L0nom", 2 * n)
+        w = ca.SX.sym("w", 3)
+        q = phi - ca.vertcat(0, phi[:-1])
+        c = ca.sqrt(a * a + b * b)
+        beta = ca.atan2(a, b)
+        L1 = 2 * c * ca.cos(beta + q / 2)
+        L2 = 2 * c * ca.cos(beta - q / 2)
+        E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
+        links = b + ca.vertcat(b[1:], 0) if n > 1 else b
+        tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
+        J = ca.jacobian(tip, phi)
+        grad = ca.gradient(E, phi) - J.T @ F
+        Hphi = ca.hessian(E - ca.dot(F, tip), phi)[0]
+        T = ca.DM(np.tril(np.ones((n, n))))          # dphi/dq
+        Hq = T.T @ Hphi @ T
+        psd = _lower(Hq - mu * ca.SX.eye(n) - Lc @ Lc.T, n)
+        L0 = ca.vertcat(L10, L20)
+        f = (w[0] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom) - w[1] * mu + w[2] * E)
+        rows = ca.vertcat(grad, tip, phi[n - 1], psd, L1 - L10, L2 - L20, q)
+        self.x = ca.vertcat(phi, L10, L20, mu, lv)
+        self.nx = 3 * n + 1 + tril_size(n)
+        self.solver = ca.nlpsol("design_preload", "ipopt",
+                                {"x": self.x, "p": ca.vertcat(a, b, k1, k2, F, L0nom, w), "f": f, "g": rows},
+                                _DESIGN_OPTIONS)
+
+    def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
+        return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
+
+
+_local = threading.local()
+
+
+def _cache() -> dict:
+    c = getattr(_local, "cache", None)
+    if c is None:
+        c = _local.cache = {}
+    return c
+
+
+def buckling_design_nlp(n: int, guided: bool) -> BucklingDesignNLP:
+    key = ("buckling", n, guided)
+    c = _cache()
+    if key not in c:
+        c[key] = BucklingDesignNLP(n, guided)
+    return c[key]
+
+
+def preload_nlp(n: int) -> PreloadNLP:
+    key = ("preload", n)
+    c = _cache()
+    if key not in c:
+        c[key] = PreloadNLP(n)
+    return c[key]
