@@ -88,7 +88,7 @@ class Equilibrium:
     @property
     def kind(self) -> str:
         """``"minimum"``, ``"maximum"`` or ``"saddle"`` (``"degenerate"`` on a zero eigenvalue)."""
-        dim = self.hessian_eigenvalues.size
+        dim = self.q.size - 2 if self.control == "displacement" else self.q.size
         if self.stable:
             return "minimum"
         if self.morse_index == 0:

@@ -24,7 +24,6 @@ from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
-import scipy.linalg as sla
 import scipy.sparse.linalg as spla
 
 __all__ = ["LocalResult", "model", "IPOPT_OPTIONS"]
@@ -80,11 +79,56 @@ def _q_of_phi(phi):
     return phi - ca.vertcat(0, phi[:-1])
 
 
+#: Chains up to this many segments use dense linear algebra; longer ones sparse (O(n)) paths.
+DENSE_MAX = 64
+
+
+class _Fast:
+    """Low-overhead evaluation of a CasADi ``Function`` through ``Function.buffer()``.
+
+    Inputs are copied into preallocated arrays, outputs land in preallocated arrays (their
+    nonzeros, column-major); one call costs about a microsecond instead of tens. The
+    returned arrays are overwritten by the next call: copy what you keep. Not thread-safe
+    (nor is the Function): owned by one thread's model.
+    """
+
+    def __init__(self, f: ca.Function) -> None:
+        self.f = f
+        self.buf, self.trigger = f.buffer()
+        self.ins = [np.zeros(f.nnz_in(i)) for i in range(f.n_in())]
+        self.outs = [np.zeros(f.nnz_out(i)) for i in range(f.n_out())]
+        self.sparsity = [f.sparsity_out(i) for i in range(f.n_out())]
+        for i, a in enumerate(self.ins):
+            self.buf.set_arg(i, memoryview(a))
+        for i, a in enumerate(self.outs):
+            self.buf.set_res(i, memoryview(a))
+
+    def __call__(self, *args) -> list[np.ndarray]:
+        for dst, src in zip(self.ins, args):
+            dst[:] = src
+        self.trigger()
+        return self.outs
+
+    def dense(self, i: int) -> np.ndarray:
+        """Output ``i`` as a dense 2-D array (it must have been densified)."""
+        sp = self.sparsity[i]
+        return self.outs[i].reshape((sp.size1(), sp.size2()), order="F")
+
+    def csc(self, i: int):
+        """Output ``i`` as a scipy CSC matrix (a copy)."""
+        import scipy.sparse as sp_
+
+        s = self.sparsity[i]
+        return sp_.csc_matrix((self.outs[i].copy(), np.asarray(s.row()), np.asarray(s.colind())),
+                              shape=(s.size1(), s.size2()))
+
+
 class _Model:
     """All CasADi functions and solvers for one chain length ``n`` (one thread)."""
 
     def __init__(self, n: int) -> None:
         self.n = n
+        self.dense = n <= DENSE_MAX
         phi = ca.SX.sym("phi", n)
         p = ca.SX.sym("p", 6 * n)
         F = ca.SX.sym("F", 2)
@@ -102,6 +146,7 @@ class _Model:
         lag = E - ca.dot(F, tip)
         H = ca.hessian(lag, phi)[0]
         tgt = ca.SX.sym("target", 2)
+        D = ca.densify if self.dense else (lambda x: x)
 
         # KKT of min E s.t. tip = target:  grad E - J^T F = 0, tip - target = 0.
         # Its Jacobian [[H, -J^T], [J, 0]] is assembled from blocks: asking CasADi for
@@ -109,19 +154,44 @@ class _Model:
         res = ca.vertcat(gradE - J.T @ F, tip - tgt)
         z = ca.vertcat(phi, F)
         kkt_jac = ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])
-        self.kkt = ca.Function("kkt", [z, p, tgt], [res, kkt_jac])
+        self.kkt = ca.Function("kkt", [z, p, tgt], [res, D(kkt_jac)])
         # Force control: grad (E - F.tip) = 0 in phi, Jacobian H.
         resf = gradE - J.T @ F
-        self.force_res = ca.Function("force_res", [phi, p, F], [resf, H])
-        self.derivs = ca.Function("derivs", [phi, p, F], [E, gradE, H, J, tip])
-        # d(KKT residual)/d(parameters): for sensitivities of equilibria.
-        self.kkt_dp = ca.Function("kkt_dp", [z, p, tgt], [ca.jacobian(res, p)])
+        self.force_res = ca.Function("force_res", [phi, p, F], [resf, D(H)])
+        self.derivs = ca.Function("derivs", [phi, p, F], [E, gradE, D(H), ca.densify(J), tip])
+        self._fast_kkt = _Fast(self.kkt)
+        self._fast_force = _Fast(self.force_res)
+        self._fast_derivs = _Fast(self.derivs)
+        self._sym = (phi, p, F, q, E, tip, res, z, tgt)
+        self._nlp_disp = None
+        self._nlp_force = None
+        self._kkt_dp = None
 
-        g = ca.vertcat(tip, q)
-        self.nlp_disp = ca.nlpsol("eq_disp", "ipopt", {"x": phi, "p": p, "f": E, "g": g}, IPOPT_OPTIONS)
-        pf = ca.vertcat(p, F)
-        self.nlp_force = ca.nlpsol("eq_force", "ipopt",
-                                   {"x": phi, "p": pf, "f": E - ca.dot(F, tip), "g": q}, IPOPT_OPTIONS)
+    @property
+    def nlp_disp(self):
+        """IPOPT: min E s.t. [tip; q] within bounds (built on first use)."""
+        if self._nlp_disp is None:
+            phi, p, F, q, E, tip, *_ = self._sym
+            self._nlp_disp = ca.nlpsol("eq_disp", "ipopt", {"x": phi, "p": p, "f": E, "g": ca.vertcat(tip, q)},
+                                       IPOPT_OPTIONS)
+        return self._nlp_disp
+
+    @property
+    def nlp_force(self):
+        """IPOPT: min E - F.tip s.t. q within bounds (built on first use)."""
+        if self._nlp_force is None:
+            phi, p, F, q, E, tip, *_ = self._sym
+            self._nlp_force = ca.nlpsol("eq_force", "ipopt", {"x": phi, "p": ca.vertcat(p, F),
+                                                              "f": E - ca.dot(F, tip), "g": q}, IPOPT_OPTIONS)
+        return self._nlp_force
+
+    @property
+    def kkt_dp(self):
+        """d(KKT residual)/d(parameters), for sensitivities (built on first use)."""
+        if self._kkt_dp is None:
+            phi, p, F, q, E, tip, res, z, tgt = self._sym
+            self._kkt_dp = ca.Function("kkt_dp", [z, p, tgt], [ca.jacobian(res, p)])
+        return self._kkt_dp
 
     # ---------------------------------------------------------------- helpers
     @staticmethod
@@ -178,11 +248,11 @@ class _Model:
         self._set_scale(params)
         phi = self.phi(np.asarray(q0, dtype=float))
         if F0 is None:
-            _, g, _, J, _ = self.derivs(phi, params, np.zeros(2))
-            F0 = np.linalg.lstsq(np.asarray(J).T, np.asarray(g).ravel(), rcond=None)[0]
+            _, g, _, J, _ = self.evaluate(params, np.asarray(q0, dtype=float), np.zeros(2))
+            F0 = np.linalg.lstsq(J.T, g, rcond=None)[0]
         z = np.concatenate([phi, np.asarray(F0, dtype=float)])
-        return self._newton(lambda zz: self.kkt(zz, params, target), z, self.n, limits, tol, max_iter,
-                            max_step, force_fixed=None)
+        fast = self._fast_kkt
+        return self._newton(lambda zz: fast(zz, params, target), fast, z, limits, tol, max_iter, max_step, None)
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
@@ -190,70 +260,73 @@ class _Model:
         self._set_scale(params)
         force = np.asarray(force, dtype=float)
         z = self.phi(np.asarray(q0, dtype=float))
-        return self._newton(lambda zz: self.force_res(zz, params, force), z, self.n, limits, tol, max_iter,
-                            max_step, force_fixed=force)
+        fast = self._fast_force
+        return self._newton(lambda zz: fast(zz, params, force), fast, z, limits, tol, max_iter, max_step, force)
 
-    def _newton(self, fun, z, n, limits, tol, max_iter, max_step, force_fixed) -> LocalResult:
-        def residual(zz):
-            r, Jr = fun(zz)
-            return np.asarray(r).ravel(), Jr
-
-        r, Jr = residual(z)
-        norm = float(np.linalg.norm(r))
+    def _newton(self, call, fast: _Fast, z, limits, tol, max_iter, max_step, force_fixed) -> LocalResult:
+        n = self.n
+        thresh = tol * self._scale
+        r = call(z)[0].copy()
+        norm = float(np.sqrt(r @ r))
         status = "max_iter"
         it = 0
-        scale = self._scale
-        for it in range(1, max_iter + 1):
+        while True:
             if not np.isfinite(norm):
                 status = "nonfinite"
                 break
-            if norm <= tol * scale:
+            if norm <= thresh:
                 status = "converged"
-                it -= 1
                 break
+            if it >= max_iter:
+                break
+            it += 1
             try:
-                if n > 64:
-                    step = spla.spsolve(Jr.sparse().tocsc(), -r)
+                if self.dense:
+                    step = np.linalg.solve(fast.dense(1), -r)
                 else:
-                    step = sla.solve(np.asarray(Jr), -r, check_finite=True)
-            except (sla.LinAlgError, ValueError, RuntimeError):
+                    step = spla.spsolve(fast.csc(1), -r)
+            except (np.linalg.LinAlgError, ValueError, RuntimeError):
                 status = "singular_jacobian"
                 break
             if not np.all(np.isfinite(step)):
                 status = "singular_jacobian"
                 break
-            dphi = np.abs(step[:n]).max()
+            dphi = float(np.abs(step[:n]).max())
             alpha = min(1.0, max_step / dphi) if dphi > 0 else 1.0
             accepted = False
             while alpha > 1e-6:
                 z_new = z + alpha * step
-                r_new, J_new = residual(z_new)
-                n_new = float(np.linalg.norm(r_new))
+                r_new = call(z_new)[0]
+                n_new = float(np.sqrt(r_new @ r_new))
                 if np.isfinite(n_new) and n_new <= (1.0 - 1e-4 * alpha) * norm:
                     accepted = True
                     break
                 alpha *= 0.5
             if not accepted:
-                # Accept a full step once residual is tiny (roundoff floor).
-                if norm <= 1e3 * tol * scale:
-                    status = "converged"
-                else:
-                    status = "line_search_failed"
+                # at the roundoff floor no step decreases the residual any more
+                status = "converged" if norm <= 1e3 * thresh else "line_search_failed"
                 break
-            z, r, Jr, norm = z_new, r_new, J_new, n_new
-        else:
-            if norm <= tol * scale:
-                status = "converged"
+            z, r, norm = z_new, r_new.copy(), n_new
         q = self.q(z[:n])
         F = z[n:n + 2].copy() if force_fixed is None else force_fixed.copy()
-        ok = status == "converged"
-        return LocalResult(q, F, ok, status, it, bool(np.any(np.abs(q) >= limits)))
+        return LocalResult(q, F, status == "converged", status, it, bool(np.any(np.abs(q) >= limits)))
 
     # ---------------------------------------------------------------- derivatives
     def evaluate(self, params: np.ndarray, q: np.ndarray, force: np.ndarray):
-        """Energy, gradient, Lagrangian Hessian ``Hess(E - F.tip)``, tip Jacobian, tip (all in phi)."""
-        E, g, H, J, tip = self.derivs(self.phi(q), params, force)
-        return (float(E), np.asarray(g).ravel(), np.asarray(H), np.asarray(J), np.asarray(tip).ravel())
+        """Energy, gradient, Lagrangian Hessian ``Hess(E - F.tip)``, tip Jacobian, tip (all in phi).
+
+        The Hessian is dense for ``n <= DENSE_MAX``, else a scipy CSC matrix (tridiagonal).
+        """
+        fast = self._fast_derivs
+        out = fast(self.phi(q), params, force)
+        H = fast.dense(2).copy() if self.dense else fast.csc(2)
+        return float(out[0][0]), out[1].copy(), H, fast.dense(3).copy(), out[4].copy()
+
+    def kkt_matrix(self, params: np.ndarray, q: np.ndarray, force: np.ndarray, target: np.ndarray):
+        """The KKT Jacobian ``[[H, -J^T], [J, 0]]`` at ``(q, F)``: dense, or scipy CSC for long chains."""
+        fast = self._fast_kkt
+        fast(np.concatenate([self.phi(q), force]), params, target)
+        return fast.dense(1).copy() if self.dense else fast.csc(1)
 
     def kkt_parameter_jacobian(self, params: np.ndarray, q: np.ndarray, force: np.ndarray,
                                target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -261,7 +334,7 @@ class _Model:
         z = np.concatenate([self.phi(q), force])
         _, Jz = self.kkt(z, params, target)
         Jp = self.kkt_dp(z, params, target)
-        return np.asarray(Jz), np.asarray(Jp)
+        return np.asarray(ca.densify(Jz)), np.asarray(ca.densify(Jp))
 
 
 _local = threading.local()

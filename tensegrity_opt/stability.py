@@ -10,6 +10,14 @@ minimum (stable), the full dimension for a maximum, anything between for a saddl
 The change ``q -> phi`` (absolute angles) is linear and invertible, so the
 inertia is the same in either coordinate; it is computed in ``phi``, where
 ``H`` is tridiagonal.
+
+Short chains (``n <= solvers.DENSE_MAX``): the eigenvalues of ``Z^T H Z`` with ``Z`` from a
+QR factorisation of ``J^T``. Long chains: no dense step. The inertia of the KKT matrix
+``[[H, J^T], [J, 0]]`` is that of ``Z^T H Z`` plus two positive and two negative
+eigenvalues, and by Haynsworth it is the inertia of ``H`` (the signs of the pivots of
+its tridiagonal LDL^T factorisation) plus that of the 2 x 2 Schur complement
+``-J H^-1 J^T`` (one banded solve): O(n) in all. Only the count is returned then, not
+the eigenvalues.
 """
 
 from __future__ import annotations
@@ -22,16 +30,21 @@ import scipy.linalg as sla
 from .manipulator import Manipulator
 from .solvers import model
 
-__all__ = ["Inertia", "classify"]
+__all__ = ["Inertia", "classify", "reduced_hessian"]
 
 
 @dataclass(frozen=True)
 class Inertia:
-    """Eigenvalues of the reduced Hessian and the counts that classify the equilibrium."""
+    """Classification of an equilibrium.
+
+    ``eigenvalues`` of the reduced Hessian (absolute-angle coordinates) for short chains,
+    empty for long ones; ``dim`` the dimension of the reduced space.
+    """
 
     eigenvalues: np.ndarray
     morse_index: int
     degenerate: bool
+    dim: int
 
     @property
     def stable(self) -> bool:
@@ -40,11 +53,13 @@ class Inertia:
 
 
 def reduced_hessian(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: bool) -> np.ndarray:
-    """``Z^T H Z`` (``constrained``: tip held) or ``H`` (force prescribed), in absolute angles."""
+    """``Z^T H Z`` (``constrained``: tip held) or ``H`` (force prescribed), dense, in absolute angles."""
     _, _, H, J, _ = model(m.n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
+    H = H if isinstance(H, np.ndarray) else H.toarray()
     if not constrained:
         return H
-    Z = sla.null_space(J)
+    Q, _ = np.linalg.qr(J.T, mode="complete")
+    Z = Q[:, 2:]
     return Z.T @ H @ Z
 
 
@@ -52,11 +67,55 @@ def classify(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: b
              rel_tol: float = 1e-9) -> Inertia:
     """Inertia of the reduced Hessian at an equilibrium ``(q, force)``.
 
-    Eigenvalues with ``|lambda| <= rel_tol * max(1, ||H||)`` count as zero (``degenerate``).
+    Eigenvalues (or pivots) with ``|lambda| <= rel_tol * max(1, scale)`` count as zero
+    (``degenerate``).
     """
-    Hr = reduced_hessian(m, q, force, constrained=constrained)
-    if Hr.size == 0:
-        return Inertia(np.zeros(0), 0, False)
-    w = sla.eigvalsh(Hr)
-    tol = rel_tol * max(1.0, float(np.abs(w).max()))
-    return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)))
+    n = m.n
+    dim = n - 2 if constrained else n
+    if dim <= 0:
+        return Inertia(np.zeros(0), 0, False, 0)
+    _, _, H, J, _ = model(n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
+    if isinstance(H, np.ndarray):
+        if constrained:
+            Q, _ = np.linalg.qr(J.T, mode="complete")
+            Z = Q[:, 2:]
+            H = Z.T @ H @ Z
+        w = np.linalg.eigvalsh(H)
+        tol = rel_tol * max(1.0, float(np.abs(w).max()))
+        return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)), dim)
+    return _sparse_inertia(H, J if constrained else None, rel_tol, dim)
+
+
+def _sparse_inertia(H, J, rel_tol: float, dim: int) -> Inertia:
+    diag = H.diagonal().copy()
+    off = H.diagonal(1).copy()
+    scale = max(1.0, float(np.abs(diag).max()), float(np.abs(off).max(initial=0.0)))
+    tiny = rel_tol * scale
+    neg = 0
+    degenerate = False
+    d_prev = 1.0
+    e2 = off * off
+    for i in range(diag.size):          # LDL^T pivots of a tridiagonal matrix (Sylvester)
+        d = diag[i] - (e2[i - 1] / d_prev if i else 0.0)
+        if abs(d) <= tiny:
+            degenerate = True
+            d = -tiny if d < 0 else tiny
+        if d < 0:
+            neg += 1
+        d_prev = d
+    if J is None:
+        return Inertia(np.zeros(0), neg, degenerate, dim)
+    ab = np.zeros((3, diag.size))
+    ab[0, 1:] = off
+    ab[1] = diag
+    ab[2, :-1] = off
+    try:
+        X = sla.solve_banded((1, 1), ab, J.T)
+    except (np.linalg.LinAlgError, ValueError):
+        return Inertia(np.zeros(0), neg, True, dim)
+    S = -(J @ X)
+    w = np.linalg.eigvalsh((S + S.T) / 2)
+    s_tol = rel_tol * max(1.0, float(np.abs(w).max()))
+    degenerate = degenerate or bool(np.any(np.abs(w) <= s_tol))
+    morse = neg + int(np.sum(w < 0)) - 2
+    return Inertia(np.zeros(0), max(morse, 0), degenerate, dim)

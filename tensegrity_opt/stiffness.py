@@ -49,20 +49,22 @@ def cartesian_stiffness(m: Manipulator, eq: Equilibrium) -> np.ndarray:
     if q.shape != (m.n,):
         raise InvalidParameterError(f"eq has {q.size} joint angles, the manipulator {m.n}", field="eq")
     mdl = model(m.n)
-    Jz, _ = mdl.kkt_parameter_jacobian(m.params, q, np.asarray(eq.force, float), np.asarray(eq.tip, float))
+    Jz = mdl.kkt_matrix(m.params, q, np.asarray(eq.force, float), np.asarray(eq.tip, float))
     n = m.n
     rhs = np.zeros((n + 2, 2))
     rhs[n:, :] = np.eye(2)
-    try:
-        if n > 64:
-            sol = spla.spsolve(sp.csc_matrix(Jz), rhs)
-            sol = np.asarray(sol.todense() if sp.issparse(sol) else sol)
-        else:
-            sol = sla.solve(Jz, rhs)
-    except (sla.LinAlgError, RuntimeError):
-        sol = np.full((n + 2, 2), np.nan)
-    cond = np.linalg.cond(Jz) if n <= 64 else 1.0
-    if not np.all(np.isfinite(sol)) or cond > 1e13:
+    with np.errstate(all="ignore"):
+        try:
+            if sp.issparse(Jz):
+                lu = spla.splu(sp.csc_matrix(Jz))
+                sol = lu.solve(rhs)
+                cond_ok = True
+            else:
+                sol = sla.solve(Jz, rhs)
+                cond_ok = np.linalg.cond(Jz) < 1e13
+        except (sla.LinAlgError, RuntimeError, ValueError):
+            sol, cond_ok = np.full((n + 2, 2), np.nan), False
+    if not np.all(np.isfinite(sol)) or not cond_ok:
         raise InvalidParameterError(
             "the tangent stiffness is undefined at this equilibrium: the KKT system is singular "
             "(fully extended chain or a bifurcation point)", field="eq")
