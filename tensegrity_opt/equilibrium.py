@@ -27,7 +27,7 @@ from .manipulator import Manipulator
 from .seeds import seeds
 from .shapes import shape_label, sign_string
 from .solvers import LocalResult, model
-from .stability import classify
+from .stability import analyse
 
 __all__ = ["Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "make_equilibrium",
            "local_equilibrium"]
@@ -98,11 +98,11 @@ class Equilibrium:
 
 def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:
     """Classify a converged local solution into an :class:`Equilibrium`."""
-    inertia = classify(m, res.q, res.force, constrained=constrained)
-    return Equilibrium(q=res.q.copy(), energy=m.energy(res.q), force=np.asarray(res.force, float).copy(),
+    inertia, energy, tip = analyse(m, res.q, res.force, constrained=constrained)
+    return Equilibrium(q=res.q.copy(), energy=energy, force=np.asarray(res.force, float).copy(),
                        morse_index=inertia.morse_index, stable=inertia.stable, shape=shape_label(res.q),
                        signs=sign_string(res.q), status=res.status, iterations=res.iterations,
-                       tip=m.tip(res.q), control="displacement" if constrained else "force",
+                       tip=tip, control="displacement" if constrained else "force",
                        hessian_eigenvalues=inertia.eigenvalues)
 
 
@@ -111,12 +111,17 @@ def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> 
 RESIDUAL_TOL = 1e-9
 
 
-def _valid(m: Manipulator, res: LocalResult, target: np.ndarray | None = None) -> bool:
-    """A converged solve inside the open physical range that really is an equilibrium."""
+def _valid(m: Manipulator, res: LocalResult, target: np.ndarray | None = None, *,
+           check_residual: bool = True) -> bool:
+    """A converged solve inside the open physical range that really is an equilibrium.
+
+    ``check_residual`` re-evaluates the equilibrium equations in numpy (independently of
+    CasADi); Newton results, whose convergence test *is* the residual, may skip it.
+    """
     if not (res.success and not res.on_bound and np.all(np.isfinite(res.q)) and np.all(np.isfinite(res.force))
-            and m.in_range(res.q)):
+            and bool(np.all(np.abs(res.q) < m.joint_limits))):
         return False
-    return m.equilibrium_residual(res.q, res.force, target) <= RESIDUAL_TOL
+    return not check_residual or m.equilibrium_residual(res.q, res.force, target) <= RESIDUAL_TOL
 
 
 def _check_q0(m: Manipulator, q0) -> np.ndarray | None:
@@ -162,7 +167,7 @@ def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np
 
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
-                      n_random: int = 8, max_modes: int = 6) -> Equilibrium:
+                      method: str = "auto", n_random: int = 8, max_modes: int = 6) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -177,6 +182,11 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         Only the local solve from ``q0`` (Newton on the KKT system, IPOPT as the fallback):
         the equilibrium on the branch through ``q0``, whatever its stability (read
         ``stable``). For control loops and finite differences along a branch.
+    method : {"auto", "ipopt"}
+        ``"auto"``: damped Newton on the KKT system from every seed, classified, the least-energy
+        stable one kept; IPOPT (``min E`` s.t. ``tip = target``) from every seed only when Newton
+        finds no stable equilibrium. ``"ipopt"``: IPOPT from every seed (slower; the two are
+        compared in the tests).
     n_random, max_modes : int
         Random starts and buckling-mode seeds (each used with both signs).
 
@@ -204,54 +214,70 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         return _straight(m)
     if local:
         res = local_equilibrium(m, target, q0)
-        if not _valid(m, res, target):
+        if not _valid(m, res, target, check_residual=False):
             fallback = local_equilibrium(m, target, q0, minimize=True)
             if not _valid(m, fallback, target):
                 raise SolverError(f"the local solve from q0 did not converge for dx={dx:g}, dy={dy:g}",
                                   status=f"newton: {res.status}; ipopt: {fallback.status}")
             res = fallback
         return make_equilibrium(m, res, constrained=True)
-    candidates: list[LocalResult] = []
+    if method not in ("auto", "ipopt"):
+        raise InvalidParameterError(f"method must be 'auto' or 'ipopt', got {method!r}", field="method")
+    starts = ([q0] if q0 is not None else []) + [s.q for s in seeds(m, dx, dy, max_modes=max_modes,
+                                                                     n_random=n_random)]
     statuses: dict[str, int] = {}
+    if method == "auto":
+        # Newton on the KKT system from every seed (every stationary point nearby, ~0.1 ms each);
+        # IPOPT only when that finds no stable equilibrium.
+        stable, _ = _search(m, target, starts, statuses, minimize=False)
+        if stable:
+            return _pick(stable, q0)
+    stable, n_unstable = _search(m, target, starts, statuses, minimize=True)
+    if stable:
+        return _pick(stable, q0)
+    if n_unstable:
+        raise NoEquilibriumError(
+            f"no stable equilibrium found for dx={dx:g}, dy={dy:g} ({n_unstable} unstable ones)",
+            status=_summary(statuses))
+    ipopt = {k: v for k, v in statuses.items() if not k.startswith("Newton")}
+    if ipopt and all(k.startswith("Infeasible_Problem_Detected") for k in ipopt):
+        raise UnreachableTargetError(
+            f"the target for dx={dx:g}, dy={dy:g} lies within the chain's length but outside the workspace "
+            f"of the physical joint range |q| < pi - 2 beta: IPOPT found it infeasible from all "
+            f"{sum(ipopt.values())} starts", field="dx", status=_summary(statuses))
+    if any(k.endswith("(on joint limit)") and not k.startswith("Infeasible") for k in ipopt):
+        raise NoEquilibriumError(
+            f"no equilibrium inside the physical range for dx={dx:g}, dy={dy:g}: the least-energy "
+            "configurations press a joint against its range limit |q| = pi - 2 beta (a spring "
+            "length reaches zero)", status=_summary(statuses))
+    raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
+                      status=_summary(statuses))
 
-    def consider(res: LocalResult) -> None:
-        ok = _valid(m, res, target)
+
+def _search(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
+            minimize: bool) -> tuple[list[Equilibrium], int]:
+    """Local solves from every start; the distinct stable equilibria and the count of unstable ones."""
+    candidates: list[LocalResult] = []
+    for q in starts:
+        res = local_equilibrium(m, target, q, minimize=minimize)
+        ok = _valid(m, res, target, check_residual=minimize)
         key = res.status if ok else (res.status + (" (on joint limit)" if res.on_bound else " (rejected)"))
         statuses[key] = statuses.get(key, 0) + 1
         if ok:
             candidates.append(res)
-
-    if q0 is not None:
-        consider(local_equilibrium(m, target, q0, minimize=True))
-    for s in seeds(m, dx, dy, max_modes=max_modes, n_random=n_random):
-        consider(local_equilibrium(m, target, s.q, minimize=True))
-    if not candidates:
-        if statuses and all(k.startswith("Infeasible_Problem_Detected") for k in statuses):
-            raise UnreachableTargetError(
-                f"the target for dx={dx:g}, dy={dy:g} lies within the chain's length but outside the workspace "
-                f"of the physical joint range |q| < pi - 2 beta: IPOPT found it infeasible from all "
-                f"{sum(statuses.values())} starts", field="dx", status=_summary(statuses))
-        if any(k.endswith("(on joint limit)") and not k.startswith("Infeasible") for k in statuses):
-            raise NoEquilibriumError(
-                f"no equilibrium inside the physical range for dx={dx:g}, dy={dy:g}: the least-energy "
-                "configurations press a joint against its range limit |q| = pi - 2 beta (a spring "
-                "length reaches zero)", status=_summary(statuses))
-        raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
-                          status=_summary(statuses))
     stable: list[Equilibrium] = []
     seen: list[np.ndarray] = []
-    for res in sorted(candidates, key=lambda r: m.energy(r.q)):
+    n_unstable = 0
+    for res in candidates:
         if any(np.max(np.abs(res.q - s)) < 1e-7 for s in seen):
             continue
         seen.append(res.q)
         eq = make_equilibrium(m, res, constrained=True)
         if eq.stable:
             stable.append(eq)
-    if not stable:
-        raise NoEquilibriumError(
-            f"no stable equilibrium found for dx={dx:g}, dy={dy:g} ({len(seen)} unstable ones)",
-            status=_summary(statuses))
-    return _pick(stable, q0)
+        else:
+            n_unstable += 1
+    return stable, n_unstable
 
 
 def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:

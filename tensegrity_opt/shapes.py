@@ -35,13 +35,19 @@ def sign_string(q, rel_tol: float = 1e-6) -> str:
     scale = float(np.abs(q).max()) if q.size else 0.0
     if scale == 0.0:
         return "0" * q.size
-    return "".join("0" if abs(v) <= rel_tol * scale else ("+" if v > 0 else "-") for v in q)
+    idx = np.where(np.abs(q) <= rel_tol * scale, 1, np.where(q > 0, 0, 2))
+    return _CHARS[idx].tobytes().decode("ascii")
 
 
 def shape_label(q, rel_tol: float = 1e-6) -> str:
     """The documented label (``I``, ``C``, ``U``, ``ZU``, ``Z``, ``W<s>``) of a configuration."""
-    signs = sign_string(q, rel_tol).replace("0", "")
-    if not signs:
+    q = np.asarray(q, dtype=float).ravel()
+    scale = float(np.abs(q).max()) if q.size else 0.0
+    if scale == 0.0:
         return "I"
-    s = sum(1 for x, y in zip(signs, signs[1:]) if x != y)
+    sg = np.sign(q[np.abs(q) > rel_tol * scale])
+    s = int(np.count_nonzero(sg[1:] != sg[:-1]))
     return _NAMES.get(s, f"W{s}")
+
+
+_CHARS = np.array([b"+", b"0", b"-"], dtype="S1")

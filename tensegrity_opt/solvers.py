@@ -61,7 +61,9 @@ class LocalResult:
     success : bool
         The solver reports convergence.
     status : str
-        The solver's return status (IPOPT's ``return_status`` or the Newton status).
+        The solver's return status: IPOPT's ``return_status`` (``"Solve_Succeeded"``, ...) or
+        the damped Newton method's (``"Newton_Converged"``, ``"Newton_Max_Iterations"``,
+        ``"Newton_Singular_Jacobian"``, ``"Newton_Line_Search_Failed"``, ``"Newton_Nonfinite"``).
     iterations : int
     on_bound : bool
         A joint sits on its range bound (not an equilibrium of the mechanism).
@@ -98,6 +100,7 @@ class _Fast:
         self.ins = [np.zeros(f.nnz_in(i)) for i in range(f.n_in())]
         self.outs = [np.zeros(f.nnz_out(i)) for i in range(f.n_out())]
         self.sparsity = [f.sparsity_out(i) for i in range(f.n_out())]
+        self.shapes = [(sp.size1(), sp.size2()) for sp in self.sparsity]
         for i, a in enumerate(self.ins):
             self.buf.set_arg(i, memoryview(a))
         for i, a in enumerate(self.outs):
@@ -111,8 +114,7 @@ class _Fast:
 
     def dense(self, i: int) -> np.ndarray:
         """Output ``i`` as a dense 2-D array (it must have been densified)."""
-        sp = self.sparsity[i]
-        return self.outs[i].reshape((sp.size1(), sp.size2()), order="F")
+        return self.outs[i].reshape(self.shapes[i], order="F")
 
     def csc(self, i: int):
         """Output ``i`` as a scipy CSC matrix (a copy)."""
@@ -234,6 +236,9 @@ class _Model:
     # ---------------------------------------------------------------- Newton
     def _set_scale(self, params: np.ndarray) -> None:
         # Residuals are torques: scale the stopping test by k * c^2 of the stiffest segment.
+        if params is getattr(self, "_scale_params", None):
+            return
+        self._scale_params = params
         n = self.n
         a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
         self._scale = max(1.0, float(np.max(np.maximum(k1, k2) * (a * a + b * b))))
@@ -248,8 +253,16 @@ class _Model:
         self._set_scale(params)
         phi = self.phi(np.asarray(q0, dtype=float))
         if F0 is None:
-            _, g, _, J, _ = self.evaluate(params, np.asarray(q0, dtype=float), np.zeros(2))
-            F0 = np.linalg.lstsq(J.T, g, rcond=None)[0]
+            # eq. (8): F = (J J^T)^-1 J grad E, a 2 x 2 system solved by hand (a start only)
+            out = self._fast_derivs(phi, params, np.zeros(2))
+            g, J = out[1], self._fast_derivs.dense(3)
+            A = J @ J.T
+            bvec = J @ g
+            det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
+            if abs(det) > 1e-14 * max(1.0, A[0, 0] * A[1, 1]):
+                F0 = np.array([A[1, 1] * bvec[0] - A[0, 1] * bvec[1], A[0, 0] * bvec[1] - A[1, 0] * bvec[0]]) / det
+            else:
+                F0 = np.array([0.0, bvec[1] / A[1, 1] if A[1, 1] > 0 else 0.0])
         z = np.concatenate([phi, np.asarray(F0, dtype=float)])
         fast = self._fast_kkt
         return self._newton(lambda zz: fast(zz, params, target), fast, z, limits, tol, max_iter, max_step, None)
@@ -268,14 +281,14 @@ class _Model:
         thresh = tol * self._scale
         r = call(z)[0].copy()
         norm = float(np.sqrt(r @ r))
-        status = "max_iter"
+        status = "Newton_Max_Iterations"
         it = 0
         while True:
             if not np.isfinite(norm):
-                status = "nonfinite"
+                status = "Newton_Nonfinite"
                 break
             if norm <= thresh:
-                status = "converged"
+                status = "Newton_Converged"
                 break
             if it >= max_iter:
                 break
@@ -286,10 +299,10 @@ class _Model:
                 else:
                     step = spla.spsolve(fast.csc(1), -r)
             except (np.linalg.LinAlgError, ValueError, RuntimeError):
-                status = "singular_jacobian"
+                status = "Newton_Singular_Jacobian"
                 break
             if not np.all(np.isfinite(step)):
-                status = "singular_jacobian"
+                status = "Newton_Singular_Jacobian"
                 break
             dphi = float(np.abs(step[:n]).max())
             alpha = min(1.0, max_step / dphi) if dphi > 0 else 1.0
@@ -304,12 +317,12 @@ class _Model:
                 alpha *= 0.5
             if not accepted:
                 # at the roundoff floor no step decreases the residual any more
-                status = "converged" if norm <= 1e3 * thresh else "line_search_failed"
+                status = "Newton_Converged" if norm <= 1e3 * thresh else "Newton_Line_Search_Failed"
                 break
             z, r, norm = z_new, r_new.copy(), n_new
         q = self.q(z[:n])
         F = z[n:n + 2].copy() if force_fixed is None else force_fixed.copy()
-        return LocalResult(q, F, status == "converged", status, it, bool(np.any(np.abs(q) >= limits)))
+        return LocalResult(q, F, status == "Newton_Converged", status, it, bool(np.any(np.abs(q) >= limits)))
 
     # ---------------------------------------------------------------- derivatives
     def evaluate(self, params: np.ndarray, q: np.ndarray, force: np.ndarray):

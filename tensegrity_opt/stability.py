@@ -30,7 +30,7 @@ import scipy.linalg as sla
 from .manipulator import Manipulator
 from .solvers import model
 
-__all__ = ["Inertia", "classify", "reduced_hessian"]
+__all__ = ["Inertia", "classify", "analyse", "reduced_hessian"]
 
 
 @dataclass(frozen=True)
@@ -70,11 +70,21 @@ def classify(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: b
     Eigenvalues (or pivots) with ``|lambda| <= rel_tol * max(1, scale)`` count as zero
     (``degenerate``).
     """
+    return analyse(m, q, force, constrained=constrained, rel_tol=rel_tol)[0]
+
+
+def analyse(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: bool,
+            rel_tol: float = 1e-9) -> tuple[Inertia, float, np.ndarray]:
+    """``(inertia, energy, tip)`` at ``(q, force)`` from one evaluation of the model."""
     n = m.n
     dim = n - 2 if constrained else n
+    E, _, H, J, tip = model(n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
+    return _inertia(H, J, constrained, rel_tol, dim), E, tip
+
+
+def _inertia(H, J, constrained: bool, rel_tol: float, dim: int) -> Inertia:
     if dim <= 0:
         return Inertia(np.zeros(0), 0, False, 0)
-    _, _, H, J, _ = model(n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
     if isinstance(H, np.ndarray):
         if constrained:
             Q, _ = np.linalg.qr(J.T, mode="complete")
