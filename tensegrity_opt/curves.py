@@ -1,18 +1,22 @@
 """Force-deflection curves by continuation (Fig. 6).
 
-``branch="stable"``: at every ``dx`` the least-energy stable equilibrium. The
-branches present at the first deflected point (:func:`find_equilibria`) are
-followed by warm-started Newton corrections (a square-root predictor when
-``dy = 0``: near the straight configuration ``q ~ sqrt(dx)``); at each point the
-least-energy stable one is selected. When every tracked stable branch has ended
-(a fold, a joint limit) a global :func:`solve_equilibrium` starts a new one, and
-every ``recheck_every`` points a global solve checks that no lower stable branch
-appeared. ``jumps`` lists where the force is discontinuous: the buckling jump at
-``dx -> 0+`` (from 0 to the critical force, ``dy = 0``) and every switch of the
-selected branch.
+``branch="stable"``: at every point the least-energy stable equilibrium. The stable
+branches present at the first deflected point (a Newton-seeded global search) are followed
+point to point by Newton corrections, each started from the previous point's solution: for
+chains of up to ``solvers.DENSE_MAX`` segments the whole path runs in compiled code (CasADi
+``rootfinder`` under ``mapaccum``) and is classified in one batch; a point where the
+undamped step fails is retried with the damped Newton method. At each point the
+least-energy stable branch is selected. When every tracked stable branch has ended (a fold,
+a joint limit) a global :func:`solve_equilibrium` starts a new one, and every
+``recheck_every`` points a global solve checks that no lower stable branch appeared.
+``jumps`` lists where the force is discontinuous: the buckling jump at ``dx -> 0+`` (from 0
+to the critical force, ``dy = 0``) and every switch of the selected branch.
 
-``branch="all"``: additionally every branch found at the first point is returned
-in ``Curve.branches`` (NaN where it no longer exists).
+``branch="all"``: additionally every branch found at the first point (:func:`find_equilibria`)
+is followed and returned in ``Curve.branches`` (NaN where it no longer exists).
+
+Points with ``dx = dy = 0`` are the straight chain (force 0); they split the path into runs
+that are followed independently.
 """
 
 from __future__ import annotations
@@ -25,10 +29,13 @@ import numpy as np
 
 from .buckling import critical_force
 from .equilibria import find_equilibria
-from .equilibrium import Equilibrium, _straight, _valid, make_equilibrium, solve_equilibrium
-from .errors import InvalidParameterError, TensegrityError
+from .equilibrium import Equilibrium, _search, _straight, solve_equilibrium
+from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from .manipulator import Manipulator
+from .seeds import seeds
+from .shapes import shape_label
 from .solvers import model
+from .stability import _inertia
 
 __all__ = ["Curve", "Jump", "force_deflection"]
 
@@ -88,12 +95,22 @@ class Curve:
     branches: list["Curve"] = field(default_factory=list, repr=False)
 
 
-class _Track:
-    def __init__(self, bid: int, eq: Equilibrium, dx: float) -> None:
+class _Branch:
+    """One branch followed over the points of a run (arrays over all points of the curve)."""
+
+    def __init__(self, bid: int, npts: int, n: int) -> None:
         self.id = bid
-        self.eq = eq
-        self.alive = True
-        self.last_dx = dx
+        self.q = np.full((npts, n), np.nan)
+        self.F = np.full((npts, 2), np.nan)
+        self.E = np.full(npts, np.nan)
+        self.morse = np.full(npts, -1, dtype=int)
+        self.stable = np.zeros(npts, dtype=bool)
+        self.valid = np.zeros(npts, dtype=bool)
+        self.status = ["nan"] * npts
+
+    def set(self, i: int, eq: Equilibrium) -> None:
+        self.q[i], self.F[i], self.E[i] = eq.q, eq.force, eq.energy
+        self.morse[i], self.stable[i], self.valid[i], self.status[i] = eq.morse_index, eq.stable, True, eq.status
 
 
 def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
@@ -107,27 +124,88 @@ def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
         raise InvalidParameterError("dy must be a number or have the length of dx", field="dy")
     if not (np.all(np.isfinite(dxs)) and np.all(np.isfinite(dys))):
         raise InvalidParameterError("dx and dy must be finite", field="dx")
-    for a, b in zip(dxs, dys):
-        m.check_reachable(a, b)
+    dist = np.hypot(m.straight_length - dxs - m.base_length, dys)
+    far = np.flatnonzero(dist > float(m.link_lengths.sum()) * (1.0 + 1e-12))
+    if far.size:
+        m.check_reachable(dxs[far[0]], dys[far[0]])      # raises with the full message
     return dxs, dys
 
 
-def _continue(m: Manipulator, tr: _Track, dx: float, dy: float) -> Equilibrium | None:
-    """Newton corrector from the branch's last point (square-root predictor on dx when dy = 0)."""
-    eq = tr.eq
-    q0, F0 = eq.q, eq.force
-    if dy == 0.0 and eq.tip[1] == 0.0 and tr.last_dx > 0.0 and dx > 0.0:
-        r = math.sqrt(dx / tr.last_dx)
-        q0, F0 = q0 * r, np.array([F0[0], F0[1] * r])
+def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndarray, dxs, dys) -> None:
+    """Continue ``br`` from its solution at ``start`` over the points ``start+1 .. stop-1``."""
+    mdl = model(m.n)
+    n = m.n
+    lim = m.joint_limits
+    tol = 1e-9 * max(1.0, float(np.max(np.maximum(m.k1, m.k2) * (m.a ** 2 + m.b ** 2))))
+    s = start
+    while s + 1 < stop:
+        z0 = np.concatenate([np.cumsum(br.q[s]), br.F[s]])
+        if mdl.dense:
+            Z, R = mdl.batch_continue(m.params, targets[s + 1:stop], z0)
+            Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
+            ok = (R <= tol) & np.all(np.abs(Q) < lim, axis=1) & np.all(np.isfinite(Z), axis=1)
+            good = int(np.argmin(ok)) if not ok.all() else ok.size
+            if good:
+                idx = np.arange(s + 1, s + 1 + good)
+                _classify_batch(m, br, idx, Q[:good], Z[:good, n:])
+                s += good
+        if s + 1 >= stop:
+            break
+        # damped Newton (square-root predictor near the straight chain) for the next point
+        i = s + 1
+        q0, F0 = br.q[s], br.F[s]
+        if dys[i] == 0.0 and dys[s] == 0.0 and dxs[s] > 0.0 and dxs[i] > 0.0:
+            r = math.sqrt(dxs[i] / dxs[s])
+            q0, F0 = q0 * r, np.array([F0[0], F0[1] * r])
+        res = mdl.newton_kkt(m.params, lim, targets[i], q0, F0)
+        if not (res.success and np.all(np.abs(res.q) < lim)):
+            return                      # the branch ends here
+        _classify_batch(m, br, np.array([i]), res.q[None, :], res.force[None, :], status=res.status)
+        s = i
+
+
+def _classify_batch(m: Manipulator, br: _Branch, idx: np.ndarray, Q: np.ndarray, Fs: np.ndarray,
+                    status: str = "Newton_Converged") -> None:
+    mdl = model(m.n)
+    if mdl.dense and idx.size > 1:
+        E, H, J, _ = mdl.batch_derivs(m.params, Q, Fs)
+        if m.n > 2:
+            Qr, _ = np.linalg.qr(np.transpose(J, (0, 2, 1)), mode="complete")
+            Zb = Qr[:, :, 2:]
+            w = np.linalg.eigvalsh(np.transpose(Zb, (0, 2, 1)) @ H @ Zb)
+            tol = 1e-9 * np.maximum(1.0, np.abs(w).max(axis=1))
+            morse = np.sum(w < -tol[:, None], axis=1)
+            stable = (morse == 0) & ~np.any(np.abs(w) <= tol[:, None], axis=1)
+        else:
+            morse, stable = np.zeros(idx.size, dtype=int), np.ones(idx.size, dtype=bool)
+        br.q[idx], br.F[idx], br.E[idx] = Q, Fs, E
+        br.morse[idx], br.stable[idx], br.valid[idx] = morse, stable, True
+        for i in idx:
+            br.status[i] = status
+        return
+    for k, i in enumerate(idx):
+        E, _, H, J, _ = mdl.evaluate(m.params, Q[k], Fs[k])
+        inertia = _inertia(H, J, True, 1e-9, m.n - 2)
+        br.q[i], br.F[i], br.E[i] = Q[k], Fs[k], E
+        br.morse[i], br.stable[i], br.valid[i], br.status[i] = (inertia.morse_index, inertia.stable, True,
+                                                                status)
+
+
+def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
+    """Every stable equilibrium the Newton-seeded global search finds (IPOPT when it finds none)."""
     target = m.target(dx, dy)
-    res = model(m.n).newton_kkt(m.params, m.joint_limits, target, q0, F0)
-    if not _valid(m, res, target):
-        return None
-    return make_equilibrium(m, res, constrained=True)
+    starts = [s.q for s in seeds(m, dx, dy)]
+    stable, _ = _search(m, target, starts, {}, minimize=False)
+    if not stable:
+        try:
+            stable = [solve_equilibrium(m, dx, dy)]
+        except NoEquilibriumError:
+            stable = []
+    return stable
 
 
 def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"] = "stable", *,
-                     recheck_every: int = 20) -> Curve:
+                     recheck_every: int = 100) -> Curve:
     """Force-deflection relation ``F(dx, dy)`` along the least-energy stable branch.
 
     Parameters
@@ -144,82 +222,104 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     Returns
     -------
     Curve
+
+    Raises
+    ------
+    UnreachableTargetError, InvalidParameterError
+        (``ValueError``) for a point beyond reach or malformed input, before any solve.
+    NoEquilibriumError
+        (``RuntimeError``) when some point has no stable equilibrium at all.
     """
     if branch not in ("stable", "all"):
         raise InvalidParameterError(f"branch must be 'stable' or 'all', got {branch!r}", field="branch")
     dxs, dys = _points(m, dx, dy)
-    npts = dxs.size
-    tracks: list[_Track] = []
-    history: dict[int, list[Equilibrium | None]] = {}
-    selected: list[Equilibrium] = []
-    sel_ids: list[int] = []
-    next_id = 0
-    current: int | None = None
-    since_check = 0
+    npts, n = dxs.size, m.n
+    targets = np.column_stack([m.straight_length - dxs, dys])
+    straight = (dxs == 0.0) & (dys == 0.0)
+    branches: list[_Branch] = []
+    sel = np.full(npts, -1, dtype=int)
+    mirror_free = m == m.mirrored() and np.all(dys == 0.0)
 
-    def add(eq: Equilibrium, dxv: float) -> _Track:
-        nonlocal next_id
-        tr = _Track(next_id, eq, dxv)
-        next_id += 1
-        tracks.append(tr)
-        history[tr.id] = [None] * npts
-        return tr
+    def new_branch(i: int, eq: Equilibrium, stop: int) -> _Branch:
+        br = _Branch(len(branches), npts, n)
+        br.set(i, eq)
+        branches.append(br)
+        _follow(m, br, i, stop, targets, dxs, dys)
+        return br
 
-    for i, (dxv, dyv) in enumerate(zip(dxs, dys)):
-        if dxv == 0.0 and dyv == 0.0:
-            selected.append(_straight(m))
-            sel_ids.append(-1)
-            current = None
+    i = 0
+    while i < npts:
+        if straight[i]:
+            i += 1
             continue
-        if not tracks:
-            for eq in find_equilibria(m, dxv, dyv):
-                if branch == "all" or eq.stable:
-                    add(eq, dxv)
-        else:
-            for tr in tracks:
-                if not tr.alive:
-                    continue
-                eq = _continue(m, tr, dxv, dyv)
-                if eq is None or any(o is not tr and o.alive and o.last_dx == dxv
-                                     and np.max(np.abs(o.eq.q - eq.q)) < 1e-7 for o in tracks):
-                    tr.alive = False        # the branch ended, or merged into another one
-                    continue
-                tr.eq, tr.last_dx = eq, dxv
-        for tr in tracks:
-            if tr.alive and tr.last_dx == dxv:
-                history[tr.id][i] = tr.eq
-        live = [tr for tr in tracks if tr.alive and tr.last_dx == dxv and tr.eq.stable]
-        since_check += 1
-        if not live or (recheck_every and since_check >= recheck_every):
-            since_check = 0
-            try:
-                q0 = live[0].eq.q if live else (selected[-1].q if selected and sel_ids[-1] >= 0 else None)
-                g = solve_equilibrium(m, dxv, dyv, q0=q0)
-            except TensegrityError:
-                g = None
-            if g is not None and not any(np.max(np.abs(tr.eq.q - g.q)) < 1e-7 for tr in live):
-                tr = add(g, dxv)
-                history[tr.id][i] = g
-                live.append(tr)
-        if not live:
-            raise TensegrityError(f"no stable equilibrium at dx={dxv:g}, dy={dyv:g}")
-        e_min = min(tr.eq.energy for tr in live)
-        tol = 1e-9 * max(1.0, abs(e_min))
-        best = [tr for tr in live if tr.eq.energy <= e_min + tol]
-        pick = next((tr for tr in best if tr.id == current), None) or best[0]
-        current = pick.id
-        selected.append(pick.eq)
-        sel_ids.append(pick.id)
+        stop = i
+        while stop < npts and not straight[stop]:
+            stop += 1
+        run = _run_branches(m, dxs[i], dys[i], branch, mirror_free)
+        run_ids = [new_branch(i, eq, stop).id for eq in run]
+        current = None
+        since = 0
+        for j in range(i, stop):
+            live = [br for br in branches if br.valid[j] and br.stable[j]]
+            since += 1
+            if not live or (recheck_every and since >= recheck_every and j > i):
+                since = 0
+                try:
+                    g = solve_equilibrium(m, dxs[j], dys[j], q0=branches[current].q[j - 1] if current is not None
+                                          and branches[current].valid[j - 1] else None)
+                except TensegrityError:
+                    g = None
+                if g is not None and not any(np.max(np.abs(br.q[j] - g.q)) < 1e-7 for br in live):
+                    live.append(new_branch(j, g, stop))
+            if not live:
+                raise NoEquilibriumError(f"no stable equilibrium at dx={dxs[j]:g}, dy={dys[j]:g}")
+            e_min = min(br.E[j] for br in live)
+            tol = 1e-9 * max(1.0, abs(e_min))
+            best = [br for br in live if br.E[j] <= e_min + tol]
+            pick = next((br for br in best if br.id == current), None) or best[0]
+            current = pick.id
+            sel[j] = pick.id
+        del run_ids
+        i = stop
 
-    jumps = _jumps(m, dxs, dys, selected, sel_ids)
-    curve = _curve(dxs, dys, selected, sel_ids, jumps)
+    curve = _assemble(m, dxs, dys, branches, sel, straight)
     if branch == "all":
-        curve = Curve(**{**curve.__dict__, "branches": [
-            _branch_curve(m, dxs, dys, tr.id, history[tr.id]) for tr in tracks]})
+        curve = Curve(**{**curve.__dict__, "branches": [_branch_curve(dxs, dys, br) for br in branches]})
     return curve
 
 
-def _jumps(m, dxs, dys, selected, sel_ids) -> list[Jump]:
+def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free: bool) -> list[Equilibrium]:
+    if branch == "all":
+        return find_equilibria(m, dx, dy)
+    eqs = _stable_at(m, dx, dy)
+    if mirror_free:
+        # mirror images (q -> -q) of a mirror-symmetric chain at dy = 0 have equal energy all
+        # along: following one of each pair is enough
+        kept: list[Equilibrium] = []
+        for e in sorted(eqs, key=lambda e: -e.q[0]):
+            if not any(np.max(np.abs(e.q + k.q)) < 1e-7 for k in kept):
+                kept.append(e)
+        eqs = kept
+    return eqs
+
+
+def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
+    npts, n = dxs.size, m.n
+    q = np.zeros((npts, n))
+    F = np.zeros((npts, 2))
+    E = np.zeros(npts)
+    morse = np.zeros(npts, dtype=int)
+    stable = np.ones(npts, dtype=bool)
+    status = ["straight"] * npts
+    s0 = _straight(m)
+    for j in range(npts):
+        if straight[j]:
+            q[j], F[j], E[j] = s0.q, s0.force, s0.energy
+            continue
+        br = branches[sel[j]]
+        q[j], F[j], E[j], morse[j], stable[j], status[j] = br.q[j], br.F[j], br.E[j], br.morse[j], \
+            br.stable[j], br.status[j]
+    shapes = [shape_label(qq) for qq in q]
     jumps: list[Jump] = []
     pos = dxs > 0
     if np.all(dys == 0.0) and np.any(pos) and np.all(dxs >= 0.0):
@@ -231,33 +331,17 @@ def _jumps(m, dxs, dys, selected, sel_ids) -> list[Jump]:
             i = int(np.argmax(pos))
             before = i - 1 if i > 0 and dxs[i - 1] == 0.0 else None
             jumps.append(Jump("buckling", 0.0 if before is None else float(dxs[before]), float(dxs[i]),
-                              np.zeros(2), np.array([fx0, 0.0]), -1, sel_ids[i]))
-            # (dy is 0 on both sides)
-    for i in range(1, len(selected)):
-        if sel_ids[i] != sel_ids[i - 1] and sel_ids[i] >= 0 and sel_ids[i - 1] >= 0:
-            jumps.append(Jump("branch_switch", float(dxs[i - 1]), float(dxs[i]), selected[i - 1].force.copy(),
-                              selected[i].force.copy(), sel_ids[i - 1], sel_ids[i], float(dys[i - 1]),
-                              float(dys[i])))
-    return jumps
+                              np.zeros(2), np.array([fx0, 0.0]), -1, int(sel[i])))
+    for j in range(1, npts):
+        if sel[j] != sel[j - 1] and sel[j] >= 0 and sel[j - 1] >= 0:
+            jumps.append(Jump("branch_switch", float(dxs[j - 1]), float(dxs[j]), F[j - 1].copy(), F[j].copy(),
+                              int(sel[j - 1]), int(sel[j]), float(dys[j - 1]), float(dys[j])))
+    return Curve(dx=dxs.copy(), dy=dys.copy(), q=q, fx=F[:, 0].copy(), fy=F[:, 1].copy(), energy=E,
+                 stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), status=status, jumps=jumps)
 
 
-def _curve(dxs, dys, eqs, ids, jumps) -> Curve:
-    return Curve(dx=dxs.copy(), dy=dys.copy(), q=np.array([e.q for e in eqs]),
-                 fx=np.array([e.force[0] for e in eqs]), fy=np.array([e.force[1] for e in eqs]),
-                 energy=np.array([e.energy for e in eqs]), stable=np.array([e.stable for e in eqs]),
-                 morse_index=np.array([e.morse_index for e in eqs]), shape=[e.shape for e in eqs],
-                 branch=np.array(ids), status=[e.status for e in eqs], jumps=jumps)
-
-
-def _branch_curve(m, dxs, dys, bid, eqs) -> Curve:
-    nan = float("nan")
-    n = m.n
-    return Curve(dx=dxs.copy(), dy=dys.copy(),
-                 q=np.array([e.q if e is not None else np.full(n, nan) for e in eqs]),
-                 fx=np.array([e.force[0] if e is not None else nan for e in eqs]),
-                 fy=np.array([e.force[1] if e is not None else nan for e in eqs]),
-                 energy=np.array([e.energy if e is not None else nan for e in eqs]),
-                 stable=np.array([bool(e.stable) if e is not None else False for e in eqs]),
-                 morse_index=np.array([e.morse_index if e is not None else -1 for e in eqs]),
-                 shape=[e.shape if e is not None else "" for e in eqs], branch=np.full(len(eqs), bid),
-                 status=[e.status if e is not None else "nan" for e in eqs])
+def _branch_curve(dxs, dys, br: _Branch) -> Curve:
+    return Curve(dx=dxs.copy(), dy=dys.copy(), q=br.q.copy(), fx=br.F[:, 0].copy(), fy=br.F[:, 1].copy(),
+                 energy=br.E.copy(), stable=br.stable.copy(), morse_index=br.morse.copy(),
+                 shape=[shape_label(q) if v else "" for q, v in zip(br.q, br.valid)],
+                 branch=np.full(dxs.size, br.id), status=list(br.status))

@@ -83,6 +83,8 @@ def _q_of_phi(phi):
 
 #: Chains up to this many segments use dense linear algebra; longer ones sparse (O(n)) paths.
 DENSE_MAX = 64
+#: Points per compiled batch (continuation and batched derivatives).
+BATCH = 128
 
 
 class _Fast:
@@ -186,6 +188,62 @@ class _Model:
             self._nlp_force = ca.nlpsol("eq_force", "ipopt", {"x": phi, "p": ca.vertcat(p, F),
                                                               "f": E - ca.dot(F, tip), "g": q}, IPOPT_OPTIONS)
         return self._nlp_force
+
+    # ---------------------------------------------------------------- batches (short chains)
+    def _batch_functions(self):
+        if getattr(self, "_batch", None) is None:
+            n, N = self.n, BATCH
+            phi, p, F, q, E, tip, res, z, tgt = self._sym
+            resf = ca.Function("kkt_res", [z, ca.vertcat(p, tgt)], [res])
+            rf = ca.rootfinder("kkt_rf", "newton", resf,
+                               {"error_on_fail": False, "abstol": 1e-12, "max_iter": 30})
+            zp, pm, tm = ca.MX.sym("z", n + 2), ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2)
+            zn = rf(zp, ca.vertcat(pm, tm))
+            step = ca.Function("step", [zp, tm, pm], [zn, ca.norm_inf(resf(zn, ca.vertcat(pm, tm)))])
+            self._batch = (step.mapaccum("continuation", N), self.derivs.map(N))
+        return self._batch
+
+    def batch_continue(self, params: np.ndarray, targets: np.ndarray, z0: np.ndarray):
+        """Newton continuation along ``targets`` (N x 2) from ``z0 = (phi, F)``, in compiled code.
+
+        Each point starts from the previous point's solution (undamped Newton, CasADi's
+        ``rootfinder``). Returns ``(Z, residual)``: ``Z`` (N, n+2) and the infinity norm of the
+        KKT residual at each returned point (large where Newton failed). Short chains only.
+        """
+        cont, _ = self._batch_functions()
+        N = targets.shape[0]
+        P = np.repeat(params[:, None], BATCH, axis=1)
+        Z = np.empty((N, self.n + 2))
+        R = np.empty(N)
+        z = np.asarray(z0, dtype=float)
+        for s in range(0, N, BATCH):
+            chunk = targets[s:s + BATCH]
+            pad = np.vstack([chunk, np.repeat(chunk[-1:], BATCH - chunk.shape[0], axis=0)])
+            Zc, Rc = cont(z, pad.T, P)
+            Zc, Rc = np.asarray(Zc).T, np.asarray(Rc).ravel()
+            k = chunk.shape[0]
+            Z[s:s + k], R[s:s + k] = Zc[:k], Rc[:k]
+            z = Zc[k - 1]
+        return Z, R
+
+    def batch_derivs(self, params: np.ndarray, Q: np.ndarray, Fs: np.ndarray):
+        """Energy (N,), Lagrangian Hessian (N, n, n), tip Jacobian (N, 2, n), tip (N, 2) in phi."""
+        _, derivs = self._batch_functions()
+        n, N = self.n, Q.shape[0]
+        E, H, J, T = np.empty(N), np.empty((N, n, n)), np.empty((N, 2, n)), np.empty((N, 2))
+        P = np.repeat(params[:, None], BATCH, axis=1)
+        for s in range(0, N, BATCH):
+            k = min(BATCH, N - s)
+            phi = np.zeros((n, BATCH))
+            Fm = np.zeros((2, BATCH))
+            phi[:, :k] = np.cumsum(Q[s:s + k], axis=1).T
+            Fm[:, :k] = Fs[s:s + k].T
+            e, _, h, j, t = derivs(phi, P, Fm)
+            E[s:s + k] = np.asarray(e).ravel()[:k]
+            H[s:s + k] = np.asarray(h).reshape(n, BATCH, n).transpose(1, 0, 2)[:k]
+            J[s:s + k] = np.asarray(j).reshape(2, BATCH, n).transpose(1, 0, 2)[:k]
+            T[s:s + k] = np.asarray(t).T[:k]
+        return E, H, J, T
 
     @property
     def kkt_dp(self):
