@@ -117,6 +117,16 @@ def straight_matrices(m: Manipulator) -> tuple[np.ndarray, np.ndarray, np.ndarra
     return m.stiffness.copy(), G, S0
 
 
+def tip_slope(m: Manipulator) -> np.ndarray:
+    """``S0 = dy/dq`` at the straight configuration: reverse cumulative sums of the links (O(n))."""
+    return np.cumsum(m.link_lengths[::-1])[::-1]
+
+
+def quad_G(m: Manipulator, q: np.ndarray) -> float:
+    """``q^T G q = sum_j links_j (q_1 + ... + q_j)^2`` without forming ``G`` (O(n))."""
+    return float(m.link_lengths @ np.cumsum(q) ** 2)
+
+
 def check_straight(m: Manipulator) -> None:
     """Raise unless the straight configuration is a stable equilibrium of the unloaded chain."""
     grad = m.gradient(np.zeros(m.n))
@@ -138,8 +148,13 @@ def check_straight(m: Manipulator) -> None:
             f"{2 * (m.b[i] ** 2 - m.a[i] ** 2) / m.b[i]:.6g}", field=f"segments[{i}].L0")
 
 
+#: Above this many segments ``method="auto"`` uses the sparse solver and the lowest modes only.
+SPARSE_ABOVE = 200
+
+
 def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
-                   method: Literal["reduced", "paper"] = "reduced") -> Buckling:
+                   method: Literal["auto", "reduced", "paper", "sparse"] = "auto",
+                   n_modes: int | None = None) -> Buckling:
     """Critical loads and buckling modes of the straight configuration.
 
     Parameters
@@ -148,8 +163,16 @@ def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
         Symmetric segments (straight must be an equilibrium) with ``K_i > 0``.
     boundary : {"guided", "free"}
         ``"guided"``: tip held at ``dy = 0`` (the paper); ``"free"``: cantilever.
-    method : {"reduced", "paper"}
-        Symmetric reduced generalised eigenproblem or the paper's ``B^-1 A`` form.
+    method : {"auto", "reduced", "paper", "sparse"}
+        Symmetric reduced generalised eigenproblem (dense), the paper's ``B^-1 A`` form
+        (dense), or the sparse form for long chains: in absolute angles ``phi`` the stiffness
+        ``D^T K D`` is tridiagonal, ``G`` is ``diag(links)`` and the guided constraint is
+        ``links^T phi = 0``; shift-invert Lanczos (``scipy.sparse.linalg.eigsh``) with a
+        bordered sparse LU finds the lowest loads in O(n) each. ``"auto"``: ``"reduced"`` up
+        to ``SPARSE_ABOVE`` segments, ``"sparse"`` beyond.
+    n_modes : int, optional
+        How many of the lowest loads to compute: all by default for the dense methods,
+        ``min(6, all)`` for ``"sparse"``.
 
     Returns
     -------
@@ -165,24 +188,35 @@ def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
     """
     if boundary not in ("guided", "free"):
         raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
-    if method not in ("reduced", "paper"):
-        raise InvalidParameterError(f"method must be 'reduced' or 'paper', got {method!r}", field="method")
+    if method not in ("auto", "reduced", "paper", "sparse"):
+        raise InvalidParameterError(f"method must be 'auto', 'reduced', 'paper' or 'sparse', got {method!r}",
+                                    field="method")
+    if method == "auto":
+        method = "reduced" if m.n <= SPARSE_ABOVE else "sparse"
+    if n_modes is not None and (isinstance(n_modes, bool) or int(n_modes) < 1):
+        raise InvalidParameterError("n_modes must be a positive integer", field="n_modes")
     if boundary == "guided" and m.n < 2:
         raise InvalidParameterError("a guided tip (dy = 0 held) needs n >= 2 segments: one segment cannot "
                                     "move its tip along x", field="n")
     check_straight(m)
-    K, G, S0 = straight_matrices(m)
     guided = boundary == "guided"
-    if method == "reduced":
-        loads, alphas = _reduced(K, G, S0, guided)
+    total = m.n - 1 if guided else m.n
+    if method == "sparse":
+        k = min(total, int(n_modes) if n_modes is not None else 6)
+        loads, alphas = _sparse(m, guided, k)
     else:
-        loads, alphas = _paper(K, G, S0, guided)
+        K, G, S0 = straight_matrices(m)
+        loads, alphas = (_reduced if method == "reduced" else _paper)(K, G, S0, guided)
+        if n_modes is not None:
+            loads, alphas = loads[:int(n_modes)], alphas[:, :int(n_modes)]
+    K = m.stiffness
+    S0 = tip_slope(m)
     b_mean = float(m.b.mean())
     modes = []
     for j, (P, alpha) in enumerate(zip(loads, alphas.T)):
         if guided:
             # Fy from the q rows of K q = P G q + Fy S0 (least squares: exact up to roundoff).
-            fy_phys = float(S0 @ (K * alpha - P * (G @ alpha)) / (S0 @ S0))
+            fy_phys = float(S0 @ (K * alpha - P * _G_times(m, alpha)) / (S0 @ S0))
             vec = np.concatenate([alpha, [-fy_phys]])
         else:
             fy_phys = 0.0
@@ -192,13 +226,58 @@ def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
         vec = vec * (sgn / norm)
         alpha = vec[: m.n]
         fy = -vec[m.n] if guided else 0.0
-        mu_x = float(alpha @ G @ alpha) / (2.0 * b_mean)
+        mu_x = quad_G(m, alpha) / (2.0 * b_mean)
         modes.append(Mode(load=float(P), q=alpha, fy=float(fy), vector=vec, mu_x=mu_x,
                           energy_factor=float(alpha @ alpha) / mu_x,
                           fy_coefficient=float(fy) / np.sqrt(b_mean * mu_x),
                           shape=shape_label(alpha), signs=sign_string(alpha), stable=(j == 0)))
     return Buckling(force=-float(loads[0]), loads=np.asarray(loads, float), modes=modes,
                     boundary=boundary, method=method)
+
+
+def _G_times(m: Manipulator, q: np.ndarray) -> np.ndarray:
+    """``G q = T^T (links * (T q))`` in O(n)."""
+    w = m.link_lengths * np.cumsum(q)
+    return np.cumsum(w[::-1])[::-1]
+
+
+def _sparse(m: Manipulator, guided: bool, k: int) -> tuple[np.ndarray, np.ndarray]:
+    """Lowest ``k`` loads by shift-invert Lanczos in absolute angles (all sparse, O(n) per solve)."""
+    import scipy.sparse as sp
+    import scipy.sparse.linalg as spla
+
+    n = m.n
+    K = m.stiffness
+    links = m.link_lengths
+    # D^T diag(K) D with D the difference matrix (q = D phi): tridiagonal
+    main = K + np.concatenate([K[1:], [0.0]])
+    off = -K[1:]
+    A = sp.diags([off, main, off], [-1, 0, 1], format="csc")
+    M = sp.diags(links, format="csc")
+    lu = spla.splu(A)              # tridiagonal, positive definite (all K_i > 0): no fill-in
+    if guided:
+        # the bordered system [[A, l], [l^T, 0]] [u; f] = [x; 0] by its Schur complement: a
+        # direct LU of the arrow matrix pivots on the zero corner and fills in (O(n^2))
+        w = lu.solve(links)
+        lw = float(links @ w)
+
+        def solve(x):
+            y = lu.solve(np.ravel(x))
+            return y - (float(links @ y) / lw) * w
+    else:
+        def solve(x):
+            return lu.solve(np.ravel(x))
+    if n <= 3 or k >= (n - 1 if guided else n) - 1:
+        # ARPACK needs k < dimension - 1: the dense route for tiny problems
+        Kd, G, S0 = straight_matrices(m)
+        loads, alphas = _reduced(Kd, G, S0, guided)
+        return loads[:k], alphas[:, :k]
+    op = spla.LinearOperator((n, n), matvec=solve, dtype=float)
+    vals, vecs = spla.eigsh(A, k=k, M=M, sigma=0.0, which="LM", OPinv=op, tol=1e-12)
+    order = np.argsort(vals)
+    vals, U = vals[order], vecs[:, order]
+    Q = np.diff(np.vstack([np.zeros((1, k)), U]), axis=0)    # q = D phi
+    return vals, Q
 
 
 def _first_nonzero(v: np.ndarray) -> float:

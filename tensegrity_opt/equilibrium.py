@@ -20,7 +20,7 @@ from typing import Literal
 
 import numpy as np
 
-from .buckling import critical_force, straight_matrices
+from .buckling import critical_force, tip_slope
 from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError,
                      UnreachableTargetError)
 from .manipulator import Manipulator
@@ -138,7 +138,7 @@ def _check_q0(m: Manipulator, q0) -> np.ndarray | None:
 def _straight(m: Manipulator) -> Equilibrium:
     """The fully extended chain (the only configuration reaching ``dx = dy = 0``)."""
     q = np.zeros(m.n)
-    _, _, S0 = straight_matrices(m)
+    S0 = tip_slope(m)
     fy = float(S0 @ m.gradient(q) / (S0 @ S0))
     return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
                        shape="I", signs=sign_string(q), status="straight", iterations=0,
@@ -328,11 +328,13 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
     q0 = _check_q0(m, q0)
     if q0 is None:
         q0 = np.zeros(m.n)
-        K, G, _ = straight_matrices(m)
-        w, V = np.linalg.eigh(np.diag(K) + force[0] * G)
-        if w[0] <= 0.0:
-            v = V[:, 0] / np.abs(V[:, 0]).max()
-            q0 = 0.05 * v * float(np.min(m.joint_limits))
+        try:
+            # straight is unstable under a compressive load beyond the first free-tip critical load
+            first = critical_force(m, "free", n_modes=1).modes[0]
+            if -force[0] >= first.load:
+                q0 = 0.05 * first.q / np.abs(first.q).max() * float(np.min(m.joint_limits))
+        except TensegrityError:
+            pass                    # straight is not an equilibrium: IPOPT leaves it anyway
     mdl = model(m.n)
     res = mdl.minimize_force(m.params, m.joint_limits, force, q0)
     if res.success and not res.on_bound:

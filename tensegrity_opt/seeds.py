@@ -13,11 +13,11 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-import scipy.linalg as sla
 
-from .buckling import critical_force, straight_matrices
+from .buckling import critical_force, quad_G, tip_slope
 from .errors import TensegrityError
 from .manipulator import Manipulator
+from .segment import Segment
 
 __all__ = ["Seed", "seeds"]
 
@@ -31,30 +31,31 @@ class Seed:
 
 @lru_cache(maxsize=64)
 def _directions(m: Manipulator, max_modes: int) -> list[tuple[np.ndarray, float | None, float | None]]:
-    """Mode shapes with their predicted ``(Fx, Fy per t)``; geometric modes when buckling is undefined.
+    """Mode shapes with their predicted ``(Fx, Fy per t)``.
 
+    The guided buckling modes when they exist; otherwise (asymmetric preloads, ``K <= 0``) the
+    modes of the same geometry with stiff symmetric springs, which only serve as directions.
     Cached per manipulator (``Manipulator`` is immutable and hashable): continuation and
     repeated solves on one chain do not recompute its modes."""
-    if m.n >= 2:
-        try:
-            bk = critical_force(m, "guided")
-            return [(md.q, -md.load, md.fy) for md in bk.modes[:max_modes]]
-        except (TensegrityError, np.linalg.LinAlgError):
-            pass
-    _, G, S0 = straight_matrices(m)
-    if m.n >= 2:
-        Z = sla.null_space(S0[None, :])
-        _, V = sla.eigh(Z.T @ Z, Z.T @ G @ Z)
-        vecs = Z @ V
-    else:
-        vecs = np.ones((1, 1))
-    return [(v / np.linalg.norm(v), None, None) for v in vecs.T[:max_modes]]
+    if m.n < 2:
+        return [(np.ones(1), None, None)]
+    k = min(max_modes, m.n - 1)
+    try:
+        bk = critical_force(m, "guided", n_modes=k)
+        return [(md.q, -md.load, md.fy) for md in bk.modes]
+    except (TensegrityError, np.linalg.LinAlgError):
+        pass
+    # K_i = 1 + max(0, 2 (a^2 - b^2)) keeps the rest lengths positive
+    K = 1.0 + np.maximum(0.0, 2.0 * (m.a ** 2 - m.b ** 2))
+    proxy = Manipulator(Segment(a, b, 1.0, (Ki + 2.0 * (b * b - a * a)) / b) for a, b, Ki in zip(m.a, m.b, K))
+    bk = critical_force(proxy, "guided", n_modes=k)
+    return [(md.q, None, None) for md in bk.modes]
 
 
 def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
           n_random: int = 8, rng_seed: int = 20201) -> list[Seed]:
     """Seeds for the deflection ``(dx, dy)``: ``±`` each mode at each amplitude factor, then random."""
-    _, G, S0 = straight_matrices(m)
+    S0 = tip_slope(m)
     lim = m.joint_limits * 0.9
     qy = S0 * (dy / (S0 @ S0))          # least-norm q with S0^T q = dy
     dxe = max(float(dx), 1e-12)
@@ -65,7 +66,7 @@ def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitude
         return q / r if r > 1.0 else q
 
     for alpha, fx, fy in _directions(m, max_modes):
-        t0 = np.sqrt(2.0 * dxe / float(alpha @ G @ alpha))
+        t0 = np.sqrt(2.0 * dxe / quad_G(m, alpha))
         for amp in amplitudes:
             for sign in (1.0, -1.0):
                 t = sign * amp * t0
@@ -75,6 +76,6 @@ def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitude
     for _ in range(n_random):
         v = rng.standard_normal(m.n)
         v -= S0 * (S0 @ v) / (S0 @ S0)
-        t0 = np.sqrt(2.0 * dxe / float(v @ G @ v))
+        t0 = np.sqrt(2.0 * dxe / quad_G(m, v))
         out.append(Seed(shrink(t0 * rng.uniform(0.5, 2.0) * v + qy), None, "random"))
     return out

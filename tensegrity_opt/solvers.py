@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
-import scipy.sparse.linalg as spla
+import scipy.linalg as sla
 
 __all__ = ["LocalResult", "model", "IPOPT_OPTIONS"]
 
@@ -164,6 +164,16 @@ class _Model:
         self.force_res = ca.Function("force_res", [phi, p, F], [resf, D(H)])
         self.derivs = ca.Function("derivs", [phi, p, F], [E, gradE, D(H), ca.densify(J), tip])
         self._fast_kkt = _Fast(self.kkt)
+        if not self.dense:
+            # Long chains: the KKT Jacobian as the tridiagonal H (two diagonals) and the dense 2 x n
+            # J, solved by a banded factorisation and a 2 x 2 Schur complement. A general sparse
+            # LU of [[H, -J^T], [J, 0]] pivots on the zero block and fills in to O(n^2).
+            hd = ca.vertcat(*[H[i, i] for i in range(n)])
+            ho = ca.vertcat(*[H[i, i + 1] for i in range(n - 1)])
+            self.kkt_banded = ca.Function("kkt_banded", [z, p, tgt], [res, hd, ho, ca.densify(J)])
+            self.force_banded = ca.Function("force_banded", [phi, p, F], [resf, hd, ho])
+            self._fast_kkt_b = _Fast(self.kkt_banded)
+            self._fast_force_b = _Fast(self.force_banded)
         self._fast_force = _Fast(self.force_res)
         self._fast_derivs = _Fast(self.derivs)
         self._sym = (phi, p, F, q, E, tip, res, z, tgt)
@@ -322,7 +332,7 @@ class _Model:
             else:
                 F0 = np.array([0.0, bvec[1] / A[1, 1] if A[1, 1] > 0 else 0.0])
         z = np.concatenate([phi, np.asarray(F0, dtype=float)])
-        fast = self._fast_kkt
+        fast = self._fast_kkt if self.dense else self._fast_kkt_b
         return self._newton(lambda zz: fast(zz, params, target), fast, z, limits, tol, max_iter, max_step, None)
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
@@ -331,7 +341,7 @@ class _Model:
         self._set_scale(params)
         force = np.asarray(force, dtype=float)
         z = self.phi(np.asarray(q0, dtype=float))
-        fast = self._fast_force
+        fast = self._fast_force if self.dense else self._fast_force_b
         return self._newton(lambda zz: fast(zz, params, force), fast, z, limits, tol, max_iter, max_step, force)
 
     def _newton(self, call, fast: _Fast, z, limits, tol, max_iter, max_step, force_fixed) -> LocalResult:
@@ -355,7 +365,7 @@ class _Model:
                 if self.dense:
                     step = np.linalg.solve(fast.dense(1), -r)
                 else:
-                    step = spla.spsolve(fast.csc(1), -r)
+                    step = _banded_step(fast.outs, r, n, force_fixed is None)
             except (np.linalg.LinAlgError, ValueError, RuntimeError):
                 status = "Newton_Singular_Jacobian"
                 break
@@ -406,6 +416,22 @@ class _Model:
         _, Jz = self.kkt(z, params, target)
         Jp = self.kkt_dp(z, params, target)
         return np.asarray(ca.densify(Jz)), np.asarray(ca.densify(Jp))
+
+
+def _banded_step(outs: list[np.ndarray], r: np.ndarray, n: int, kkt: bool) -> np.ndarray:
+    """Newton step from a tridiagonal ``H`` (+ the 2 x n ``J`` of the KKT system), O(n)."""
+    hd, ho = outs[1], outs[2]
+    ab = np.zeros((3, n))
+    ab[0, 1:] = ho
+    ab[1] = hd
+    ab[2, :-1] = ho
+    if not kkt:
+        return sla.solve_banded((1, 1), ab, -r, check_finite=False)
+    J = outs[3].reshape((2, n), order="F")
+    X = sla.solve_banded((1, 1), ab, np.column_stack([-r[:n], J.T]), check_finite=False)
+    a, W = X[:, 0], X[:, 1:]
+    dF = np.linalg.solve(J @ W, -r[n:] - J @ a)
+    return np.concatenate([a + W @ dF, dF])
 
 
 _local = threading.local()
