@@ -167,7 +167,8 @@ def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np
 
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
-                      method: str = "auto", n_random: int = 8, max_modes: int = 6) -> Equilibrium:
+                      method: str = "auto", n_random: int | None = None,
+                      max_modes: int | None = None) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -187,8 +188,10 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         stable one kept; IPOPT (``min E`` s.t. ``tip = target``) from every seed only when Newton
         finds no stable equilibrium. ``"ipopt"``: IPOPT from every seed (slower; the two are
         compared in the tests).
-    n_random, max_modes : int
-        Random starts and buckling-mode seeds (each used with both signs).
+    n_random, max_modes : int, optional
+        Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
+        for chains of up to 64 segments; 0 and 2 for longer ones, whose least-energy
+        equilibria lie on the lowest modes' branches (each seed costs O(n) per iteration).
 
     Returns
     -------
@@ -223,6 +226,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         return make_equilibrium(m, res, constrained=True)
     if method not in ("auto", "ipopt"):
         raise InvalidParameterError(f"method must be 'auto' or 'ipopt', got {method!r}", field="method")
+    short = m.n <= 64
+    n_random = (8 if short else 0) if n_random is None else int(n_random)
+    max_modes = (6 if short else 2) if max_modes is None else int(max_modes)
     starts = ([q0] if q0 is not None else []) + [s.q for s in seeds(m, dx, dy, max_modes=max_modes,
                                                                      n_random=n_random)]
     statuses: dict[str, int] = {}

@@ -128,58 +128,112 @@ class _Fast:
 
 
 class _Model:
-    """All CasADi functions and solvers for one chain length ``n`` (one thread)."""
+    """All CasADi functions and solvers for one chain length ``n`` (one thread).
+
+    Short chains (``n <= DENSE_MAX``): one SX graph in absolute angles gives the KKT residual
+    and its dense Jacobian, the Hessian and the IPOPT problems. Long chains: the functions
+    used by Newton and the classification are MX graphs of whole-vector operations (a few
+    dozen nodes whatever ``n``), returning the tridiagonal Hessian as two diagonals; the SX
+    graph (IPOPT fallback, parameter sensitivities) is built only when first needed.
+    """
 
     def __init__(self, n: int) -> None:
         self.n = n
         self.dense = n <= DENSE_MAX
-        phi = ca.SX.sym("phi", n)
-        p = ca.SX.sym("p", 6 * n)
-        F = ca.SX.sym("F", 2)
-        a, b, k1, k2, L10, L20 = (p[i * n:(i + 1) * n] for i in range(6))
-        q = _q_of_phi(phi)
-        c = ca.sqrt(a * a + b * b)
-        beta = ca.atan2(a, b)
-        L1 = 2 * c * ca.cos(beta + q / 2)
-        L2 = 2 * c * ca.cos(beta - q / 2)
-        E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
-        links = b + ca.vertcat(b[1:], 0) if n > 1 else b
-        tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
-        J = ca.jacobian(tip, phi)
-        gradE = ca.gradient(E, phi)
-        lag = E - ca.dot(F, tip)
-        H = ca.hessian(lag, phi)[0]
-        tgt = ca.SX.sym("target", 2)
-        D = ca.densify if self.dense else (lambda x: x)
-
-        # KKT of min E s.t. tip = target:  grad E - J^T F = 0, tip - target = 0.
-        # Its Jacobian [[H, -J^T], [J, 0]] is assembled from blocks: asking CasADi for
-        # jacobian(res, z) colours a matrix with a dense row and a dense column and costs O(n^2).
-        res = ca.vertcat(gradE - J.T @ F, tip - tgt)
-        z = ca.vertcat(phi, F)
-        kkt_jac = ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])
-        self.kkt = ca.Function("kkt", [z, p, tgt], [res, D(kkt_jac)])
-        # Force control: grad (E - F.tip) = 0 in phi, Jacobian H.
-        resf = gradE - J.T @ F
-        self.force_res = ca.Function("force_res", [phi, p, F], [resf, D(H)])
-        self.derivs = ca.Function("derivs", [phi, p, F], [E, gradE, D(H), ca.densify(J), tip])
-        self._fast_kkt = _Fast(self.kkt)
-        if not self.dense:
-            # Long chains: the KKT Jacobian as the tridiagonal H (two diagonals) and the dense 2 x n
-            # J, solved by a banded factorisation and a 2 x 2 Schur complement. A general sparse
-            # LU of [[H, -J^T], [J, 0]] pivots on the zero block and fills in to O(n^2).
-            hd = ca.vertcat(*[H[i, i] for i in range(n)])
-            ho = ca.vertcat(*[H[i, i + 1] for i in range(n - 1)])
-            self.kkt_banded = ca.Function("kkt_banded", [z, p, tgt], [res, hd, ho, ca.densify(J)])
-            self.force_banded = ca.Function("force_banded", [phi, p, F], [resf, hd, ho])
-            self._fast_kkt_b = _Fast(self.kkt_banded)
-            self._fast_force_b = _Fast(self.force_banded)
-        self._fast_force = _Fast(self.force_res)
-        self._fast_derivs = _Fast(self.derivs)
-        self._sym = (phi, p, F, q, E, tip, res, z, tgt)
+        self._sx = None
         self._nlp_disp = None
         self._nlp_force = None
         self._kkt_dp = None
+        self._batch = None
+        if self.dense:
+            D = ca.densify
+            phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = self._sym
+            kkt_jac = ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])
+            self._kkt_sx = ca.Function("kkt", [z, p, tgt], [res, D(kkt_jac)])
+            self.force_res = ca.Function("force_res", [phi, p, F], [gradE - J.T @ F, D(H)])
+            self.derivs = ca.Function("derivs", [phi, p, F], [E, gradE, D(H), D(J), tip])
+            self._fast_kkt = _Fast(self._kkt_sx)
+            self._fast_force = _Fast(self.force_res)
+            self._fast_derivs = _Fast(self.derivs)
+        else:
+            self._build_banded()
+
+    @property
+    def _sym(self):
+        """The SX graph: (phi, p, F, q, E, tip, KKT residual, z, target, grad E, J, H)."""
+        if self._sx is None:
+            n = self.n
+            phi = ca.SX.sym("phi", n)
+            p = ca.SX.sym("p", 6 * n)
+            F = ca.SX.sym("F", 2)
+            a, b, k1, k2, L10, L20 = (p[i * n:(i + 1) * n] for i in range(6))
+            q = _q_of_phi(phi)
+            c = ca.sqrt(a * a + b * b)
+            beta = ca.atan2(a, b)
+            L1 = 2 * c * ca.cos(beta + q / 2)
+            L2 = 2 * c * ca.cos(beta - q / 2)
+            E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
+            links = b + ca.vertcat(b[1:], 0) if n > 1 else b
+            tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
+            J = ca.jacobian(tip, phi)
+            gradE = ca.gradient(E, phi)
+            H = ca.hessian(E - ca.dot(F, tip), phi)[0]
+            tgt = ca.SX.sym("target", 2)
+            # KKT of min E s.t. tip = target:  grad E - J^T F = 0, tip - target = 0. Its Jacobian
+            # [[H, -J^T], [J, 0]] is assembled from blocks by the users of this graph: asking
+            # CasADi for jacobian(res, z) colours a matrix with a dense row and column, O(n^2).
+            res = ca.vertcat(gradE - J.T @ F, tip - tgt)
+            z = ca.vertcat(phi, F)
+            self._sx = (phi, p, F, q, E, tip, res, z, tgt, gradE, J, H)
+        return self._sx
+
+    def _build_banded(self) -> None:
+        """MX whole-vector functions for long chains (Newton, classification, stiffness)."""
+        n = self.n
+        phi, p, F, tgt = ca.MX.sym("phi", n), ca.MX.sym("p", 6 * n), ca.MX.sym("F", 2), ca.MX.sym("t", 2)
+        a, b, k1, k2, L10, L20 = (p[i * n:(i + 1) * n] for i in range(6))
+        qs = ca.MX.sym("q", n)
+        c = ca.sqrt(a * a + b * b)
+        beta = ca.atan2(a, b)
+        L1 = 2 * c * ca.cos(beta + qs / 2)
+        L2 = 2 * c * ca.cos(beta - qs / 2)
+        Es = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
+        e1 = ca.gradient(Es, qs)                       # dE_i/dq_i (E is separable in q)
+        e2 = ca.jtimes(e1, qs, ca.DM.ones(n))          # d2E_i/dq_i2: the diagonal Hessian times 1
+        seg = ca.Function("segments", [qs, p], [Es, e1, e2])
+        E, d1, d2 = seg(phi - ca.vertcat(0, phi[:-1]), p)
+        zero = ca.MX.zeros(1)
+        g = d1 - ca.vertcat(d1[1:], zero)             # D^T e1
+        links = b + ca.vertcat(b[1:], zero)
+        sn, cs = ca.sin(phi), ca.cos(phi)
+        Jx, Jy = -links * sn, links * cs
+        tip = ca.vertcat(b[0] + ca.dot(links, cs), ca.dot(links, sn))
+        hd = d2 + ca.vertcat(d2[1:], zero) + F[0] * links * cs + F[1] * links * sn
+        ho = -d2[1:]
+        J = ca.horzcat(Jx, Jy).T
+        r1 = g - (F[0] * Jx + F[1] * Jy)
+        z = ca.vertcat(phi, F)
+        zphi, zF = z[:n], z[n:]
+        kkt = ca.Function("kkt_banded_", [phi, F, p, tgt], [ca.vertcat(r1, tip - tgt), hd, ho, J])
+        r, hdz, hoz, Jz = kkt(zphi, zF, p, tgt)
+        self.kkt_banded = ca.Function("kkt_banded", [z, p, tgt], [r, hdz, hoz, Jz])
+        self.kkt_res_banded = ca.Function("kkt_res_banded", [z, p, tgt], [r])
+        self.force_res_banded = ca.Function("force_res_banded", [phi, p, F], [r1])
+        self.force_banded = ca.Function("force_banded", [phi, p, F], [r1, hd, ho])
+        self.derivs_banded = ca.Function("derivs_banded", [phi, p, F], [E, g, hd, ho, J, tip])
+        self._fast_kkt_b = _Fast(self.kkt_banded)
+        self._fast_force_b = _Fast(self.force_banded)
+        self._fast_kkt_rb = _Fast(self.kkt_res_banded)
+        self._fast_force_rb = _Fast(self.force_res_banded)
+        self._fast_derivs_b = _Fast(self.derivs_banded)
+
+    @property
+    def kkt(self):
+        """KKT residual and Jacobian (SX); for long chains built on first use (sparse Jacobian)."""
+        if "_kkt_sx" not in self.__dict__:
+            phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = self._sym
+            self._kkt_sx = ca.Function("kkt", [z, p, tgt], [res, ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])])
+        return self._kkt_sx
 
     @property
     def nlp_disp(self):
@@ -203,7 +257,7 @@ class _Model:
     def _batch_functions(self):
         if getattr(self, "_batch", None) is None:
             n, N = self.n, BATCH
-            phi, p, F, q, E, tip, res, z, tgt = self._sym
+            phi, p, F, q, E, tip, res, z, tgt, *_ = self._sym
             resf = ca.Function("kkt_res", [z, ca.vertcat(p, tgt)], [res])
             rf = ca.rootfinder("kkt_rf", "newton", resf,
                                {"error_on_fail": False, "abstol": 1e-12, "max_iter": 30})
@@ -259,7 +313,7 @@ class _Model:
     def kkt_dp(self):
         """d(KKT residual)/d(parameters), for sensitivities (built on first use)."""
         if self._kkt_dp is None:
-            phi, p, F, q, E, tip, res, z, tgt = self._sym
+            phi, p, F, q, E, tip, res, z, tgt, *_ = self._sym
             self._kkt_dp = ca.Function("kkt_dp", [z, p, tgt], [ca.jacobian(res, p)])
         return self._kkt_dp
 
@@ -322,8 +376,12 @@ class _Model:
         phi = self.phi(np.asarray(q0, dtype=float))
         if F0 is None:
             # eq. (8): F = (J J^T)^-1 J grad E, a 2 x 2 system solved by hand (a start only)
-            out = self._fast_derivs(phi, params, np.zeros(2))
-            g, J = out[1], self._fast_derivs.dense(3)
+            if self.dense:
+                out = self._fast_derivs(phi, params, np.zeros(2))
+                g, J = out[1], self._fast_derivs.dense(3)
+            else:
+                out = self._fast_derivs_b(phi, params, np.zeros(2))
+                g, J = out[1], self._fast_derivs_b.dense(4)
             A = J @ J.T
             bvec = J @ g
             det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
@@ -332,8 +390,13 @@ class _Model:
             else:
                 F0 = np.array([0.0, bvec[1] / A[1, 1] if A[1, 1] > 0 else 0.0])
         z = np.concatenate([phi, np.asarray(F0, dtype=float)])
-        fast = self._fast_kkt if self.dense else self._fast_kkt_b
-        return self._newton(lambda zz: fast(zz, params, target), fast, z, limits, tol, max_iter, max_step, None)
+        if self.dense:
+            fast = self._fast_kkt
+            return self._newton(lambda zz: fast(zz, params, target), fast, z, limits, tol, max_iter, max_step,
+                                None)
+        full, resid = self._fast_kkt_b, self._fast_kkt_rb
+        return self._newton(lambda zz: full(zz, params, target), full, z, limits, tol, max_iter, max_step, None,
+                            residual_only=lambda zz: resid(zz, params, target))
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
@@ -341,10 +404,23 @@ class _Model:
         self._set_scale(params)
         force = np.asarray(force, dtype=float)
         z = self.phi(np.asarray(q0, dtype=float))
-        fast = self._fast_force if self.dense else self._fast_force_b
-        return self._newton(lambda zz: fast(zz, params, force), fast, z, limits, tol, max_iter, max_step, force)
+        if self.dense:
+            fast = self._fast_force
+            return self._newton(lambda zz: fast(zz, params, force), fast, z, limits, tol, max_iter, max_step,
+                                force)
+        full, resid = self._fast_force_b, self._fast_force_rb
+        return self._newton(lambda zz: full(zz, params, force), full, z, limits, tol, max_iter, max_step, force,
+                            residual_only=lambda zz: resid(zz, params, force))
 
-    def _newton(self, call, fast: _Fast, z, limits, tol, max_iter, max_step, force_fixed) -> LocalResult:
+    def _newton(self, call, fast: _Fast, z, limits, tol, max_iter, max_step, force_fixed,
+                residual_only=None) -> LocalResult:
+        """Damped Newton with a backtracking line search on ``|r|``.
+
+        ``call(z)`` evaluates the residual and its Jacobian into ``fast``'s buffers;
+        ``residual_only(z)`` (long chains) the residual alone, for the trial points of the
+        line search; the Jacobian is then evaluated once at each accepted point.
+        """
+        trial = residual_only or call
         n = self.n
         thresh = tol * self._scale
         r = call(z)[0].copy()
@@ -377,7 +453,7 @@ class _Model:
             accepted = False
             while alpha > 1e-6:
                 z_new = z + alpha * step
-                r_new = call(z_new)[0]
+                r_new = trial(z_new)[0]
                 n_new = float(np.sqrt(r_new @ r_new))
                 if np.isfinite(n_new) and n_new <= (1.0 - 1e-4 * alpha) * norm:
                     accepted = True
@@ -388,6 +464,8 @@ class _Model:
                 status = "Newton_Converged" if norm <= 1e3 * thresh else "Newton_Line_Search_Failed"
                 break
             z, r, norm = z_new, r_new.copy(), n_new
+            if residual_only is not None:
+                call(z)            # the Jacobian at the accepted point, for the next step
         q = self.q(z[:n])
         F = z[n:n + 2].copy() if force_fixed is None else force_fixed.copy()
         return LocalResult(q, F, status == "Newton_Converged", status, it, bool(np.any(np.abs(q) >= limits)))
@@ -398,16 +476,44 @@ class _Model:
 
         The Hessian is dense for ``n <= DENSE_MAX``, else a scipy CSC matrix (tridiagonal).
         """
-        fast = self._fast_derivs
-        out = fast(self.phi(q), params, force)
-        H = fast.dense(2).copy() if self.dense else fast.csc(2)
-        return float(out[0][0]), out[1].copy(), H, fast.dense(3).copy(), out[4].copy()
+        if self.dense:
+            fast = self._fast_derivs
+            out = fast(self.phi(q), params, force)
+            return float(out[0][0]), out[1].copy(), fast.dense(2).copy(), fast.dense(3).copy(), out[4].copy()
+        import scipy.sparse as sp_
 
-    def kkt_matrix(self, params: np.ndarray, q: np.ndarray, force: np.ndarray, target: np.ndarray):
-        """The KKT Jacobian ``[[H, -J^T], [J, 0]]`` at ``(q, F)``: dense, or scipy CSC for long chains."""
-        fast = self._fast_kkt
-        fast(np.concatenate([self.phi(q), force]), params, target)
-        return fast.dense(1).copy() if self.dense else fast.csc(1)
+        fast = self._fast_derivs_b
+        E, g, hd, ho, J, tip = fast(self.phi(q), params, force)
+        H = sp_.diags([ho, hd, ho], [-1, 0, 1], format="csc")
+        return float(E[0]), g.copy(), H, fast.dense(4).copy(), tip.copy()
+
+    def tangent_stiffness(self, params: np.ndarray, q: np.ndarray, force: np.ndarray) -> np.ndarray:
+        """``dF/d(tip)`` by implicit differentiation of the KKT system: ``(J H^-1 J^T)^-1``.
+
+        Dense chains solve the whole KKT system (valid even where ``H`` is singular);
+        long chains use one banded solve. Raises ``numpy.linalg.LinAlgError`` when singular.
+        """
+        n = self.n
+        if self.dense:
+            fast = self._fast_kkt
+            fast(np.concatenate([self.phi(q), force]), params, np.zeros(2))
+            Jz = fast.dense(1)
+            if np.linalg.cond(Jz) > 1e13:
+                raise np.linalg.LinAlgError("singular KKT matrix")
+            rhs = np.zeros((n + 2, 2))
+            rhs[n:] = np.eye(2)
+            return np.linalg.solve(Jz, rhs)[n:]
+        fast = self._fast_derivs_b
+        _, _, hd, ho, _, _ = fast(self.phi(q), params, force)
+        J = fast.dense(4)
+        ab = np.zeros((3, n))
+        ab[0, 1:] = ho
+        ab[1] = hd
+        ab[2, :-1] = ho
+        S = J @ sla.solve_banded((1, 1), ab, J.T)
+        if not np.all(np.isfinite(S)) or np.linalg.cond(S) > 1e13:
+            raise np.linalg.LinAlgError("singular KKT matrix")
+        return np.linalg.inv(S)
 
     def kkt_parameter_jacobian(self, params: np.ndarray, q: np.ndarray, force: np.ndarray,
                                target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

@@ -11,9 +11,6 @@ equilibrium energy as a function of the tip position).
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
-import scipy.sparse as sp
-import scipy.sparse.linalg as spla
 
 from .equilibrium import Equilibrium
 from .errors import InvalidParameterError
@@ -48,24 +45,12 @@ def cartesian_stiffness(m: Manipulator, eq: Equilibrium) -> np.ndarray:
     q = np.asarray(eq.q, dtype=float)
     if q.shape != (m.n,):
         raise InvalidParameterError(f"eq has {q.size} joint angles, the manipulator {m.n}", field="eq")
-    mdl = model(m.n)
-    Jz = mdl.kkt_matrix(m.params, q, np.asarray(eq.force, float), np.asarray(eq.tip, float))
-    n = m.n
-    rhs = np.zeros((n + 2, 2))
-    rhs[n:, :] = np.eye(2)
-    with np.errstate(all="ignore"):
-        try:
-            if sp.issparse(Jz):
-                lu = spla.splu(sp.csc_matrix(Jz))
-                sol = lu.solve(rhs)
-                cond_ok = True
-            else:
-                sol = sla.solve(Jz, rhs)
-                cond_ok = np.linalg.cond(Jz) < 1e13
-        except (sla.LinAlgError, RuntimeError, ValueError):
-            sol, cond_ok = np.full((n + 2, 2), np.nan), False
-    if not np.all(np.isfinite(sol)) or not cond_ok:
+    try:
+        K = model(m.n).tangent_stiffness(m.params, q, np.asarray(eq.force, float))
+    except (np.linalg.LinAlgError, ValueError):
+        K = None
+    if K is None or not np.all(np.isfinite(K)):
         raise InvalidParameterError(
             "the tangent stiffness is undefined at this equilibrium: the KKT system is singular "
             "(fully extended chain or a bifurcation point)", field="eq")
-    return sol[n:, :]
+    return K
