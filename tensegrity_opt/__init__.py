@@ -12,6 +12,7 @@ Quick start::
     ('U', True)
 """
 
+from .batch import solve_equilibria_batch
 from .buckling import Buckling, Mode, critical_force
 from .curves import Curve, Jump, force_deflection
 from .design import (Design, PreloadDesign, choose_preloads, critical_load_sensitivity, equilibrium_sensitivity,
@@ -31,6 +32,7 @@ __version__ = "0.1.0"
 __all__ = [
     "Segment", "Manipulator",
     "Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria",
+    "solve_equilibria_batch",
     "Buckling", "Mode", "critical_force",
     "Curve", "Jump", "force_deflection",
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",

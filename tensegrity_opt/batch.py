@@ -1,0 +1,140 @@
+"""A trajectory of tip targets solved in one call (control loops).
+
+``solve_equilibria_batch`` follows the targets in order. The first reachable target gets
+the global least-energy stable equilibrium (:func:`solve_equilibrium`); with
+``continuation=True`` every next one continues the branch through the previous solution —
+what a manipulator driven along a trajectory actually does — by Newton corrections run
+in compiled code for short chains (CasADi ``rootfinder`` under ``mapaccum``), classified in
+one batch. A point where the branch ends or loses stability is re-solved globally
+(warm-started from the previous configuration) and the continuation goes on from there.
+With ``continuation=False`` every target is solved globally on its own.
+
+Each target yields an :class:`Equilibrium` or the exception explaining why it has none
+(unreachable, no stable equilibrium...): one bad target never loses the others.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .equilibrium import Equilibrium, make_equilibrium, solve_equilibrium
+from .errors import InvalidParameterError, TensegrityError
+from .manipulator import Manipulator
+from .shapes import shape_label, sign_string
+from .solvers import model
+
+__all__ = ["solve_equilibria_batch"]
+
+
+def _targets(targets) -> np.ndarray:
+    arr = np.asarray(targets, dtype=float)
+    if arr.ndim == 1 and arr.size == 2:
+        arr = arr[None, :]
+    if arr.ndim != 2 or arr.shape[1] != 2 or arr.shape[0] == 0:
+        raise InvalidParameterError("targets must be a non-empty sequence of (dx, dy) pairs", field="targets")
+    return arr
+
+
+def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
+                           ) -> list[Equilibrium | TensegrityError]:
+    """Equilibria for a sequence of deflections ``(dx, dy)``, in order.
+
+    Parameters
+    ----------
+    m : Manipulator
+    targets : array_like (N, 2)
+        Deflections ``(dx, dy)`` (length units); the tip goes to ``(2 sum(b) - dx, dy)``.
+    continuation : bool
+        Follow the branch through the previous solution (default) or solve each globally.
+
+    Returns
+    -------
+    list
+        One entry per target: an :class:`Equilibrium` (stable) or a :class:`TensegrityError`
+        (a ``ValueError`` or ``RuntimeError`` subclass with ``code``, ``field``, ``status``).
+    """
+    pts = _targets(targets)
+    N = pts.shape[0]
+    out: list[Equilibrium | TensegrityError | None] = [None] * N
+    prev: Equilibrium | None = None
+    mdl = model(m.n)
+    i = 0
+    while i < N:
+        dx, dy = pts[i]
+        try:
+            m.check_reachable(dx, dy)
+        except TensegrityError as exc:
+            out[i] = exc
+            i += 1
+            continue
+        if not continuation or prev is None or (dx == 0.0 and dy == 0.0):
+            out[i] = prev_or_error = _global(m, dx, dy, prev.q if (continuation and prev is not None) else None)
+            if isinstance(prev_or_error, Equilibrium) and prev_or_error.status != "straight":
+                prev = prev_or_error
+            i += 1
+            continue
+        if mdl.dense:
+            j = _run(m, pts, i, prev, out)
+            if j > i:
+                prev = out[j - 1]        # type: ignore[assignment]
+                i = j
+                continue
+        # one point by the damped Newton method, else globally
+        res = mdl.newton_kkt(m.params, m.joint_limits, m.target(dx, dy), prev.q, prev.force)
+        eq = make_equilibrium(m, res, constrained=True) if (res.success and not res.on_bound) else None
+        if eq is None or not eq.stable:
+            eq = _global(m, dx, dy, prev.q)
+        out[i] = eq
+        if isinstance(eq, Equilibrium):
+            prev = eq
+        i += 1
+    return out  # type: ignore[return-value]
+
+
+def _global(m: Manipulator, dx: float, dy: float, q0) -> Equilibrium | TensegrityError:
+    try:
+        return solve_equilibrium(m, dx, dy, q0=q0)
+    except TensegrityError as exc:
+        return exc
+
+
+def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) -> int:
+    """Compiled continuation from ``prev`` over the reachable points from ``i``; fills ``out`` with
+    the accepted (valid and stable) points and returns the index of the first one not accepted."""
+    N = pts.shape[0]
+    n = m.n
+    dist = np.hypot(m.straight_length - pts[i:, 0] - m.base_length, pts[i:, 1])
+    bad = (dist > float(m.link_lengths.sum()) * (1 + 1e-12)) | ((pts[i:, 0] == 0.0) & (pts[i:, 1] == 0.0))
+    stop = i + (int(np.argmax(bad)) if bad.any() else N - i)
+    if stop <= i:
+        return i
+    mdl = model(n)
+    targets = np.column_stack([m.straight_length - pts[i:stop, 0], pts[i:stop, 1]])
+    Z, R = mdl.batch_continue(m.params, targets, np.concatenate([np.cumsum(prev.q), prev.force]))
+    Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
+    tol = 1e-9 * max(1.0, float(np.max(np.maximum(m.k1, m.k2) * (m.a ** 2 + m.b ** 2))))
+    ok = (R <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
+    k = int(np.argmin(ok)) if not ok.all() else ok.size
+    if k == 0:
+        return i
+    Fs = Z[:k, n:]
+    E, H, J, T = mdl.batch_derivs(m.params, Q[:k], Fs)
+    if n > 2:
+        Qr, _ = np.linalg.qr(np.transpose(J, (0, 2, 1)), mode="complete")
+        Zb = Qr[:, :, 2:]
+        w = np.linalg.eigvalsh(np.transpose(Zb, (0, 2, 1)) @ H @ Zb)
+        tolw = 1e-9 * np.maximum(1.0, np.abs(w).max(axis=1))
+        morse = np.sum(w < -tolw[:, None], axis=1)
+        stable = (morse == 0) & ~np.any(np.abs(w) <= tolw[:, None], axis=1)
+    else:
+        w = np.zeros((k, 0))
+        morse, stable = np.zeros(k, dtype=int), np.ones(k, dtype=bool)
+    k_st = int(np.argmin(stable)) if not stable.all() else k
+    for j in range(k_st):
+        q = Q[j]
+        out[i + j] = Equilibrium(q=q.copy(), energy=float(E[j]), force=Fs[j].copy(), morse_index=0, stable=True,
+                                 shape=shape_label(q), signs=sign_string(q), status="Newton_Converged",
+                                 iterations=-1, tip=T[j].copy(), control="displacement",
+                                 hessian_eigenvalues=w[j].copy())
+    return i + k_st
+
