@@ -22,6 +22,7 @@ from .errors import InvalidParameterError, TensegrityError
 from .manipulator import Manipulator
 from .shapes import shape_label, sign_string
 from .solvers import model
+from .stability import classify_batch
 
 __all__ = ["solve_equilibria_batch"]
 
@@ -119,16 +120,7 @@ def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) 
         return i
     Fs = Z[:k, n:]
     E, H, J, T = mdl.batch_derivs(m.params, Q[:k], Fs)
-    if n > 2:
-        Qr, _ = np.linalg.qr(np.transpose(J, (0, 2, 1)), mode="complete")
-        Zb = Qr[:, :, 2:]
-        w = np.linalg.eigvalsh(np.transpose(Zb, (0, 2, 1)) @ H @ Zb)
-        tolw = 1e-9 * np.maximum(1.0, np.abs(w).max(axis=1))
-        morse = np.sum(w < -tolw[:, None], axis=1)
-        stable = (morse == 0) & ~np.any(np.abs(w) <= tolw[:, None], axis=1)
-    else:
-        w = np.zeros((k, 0))
-        morse, stable = np.zeros(k, dtype=int), np.ones(k, dtype=bool)
+    _, stable, w = classify_batch(H, J)
     k_st = int(np.argmin(stable)) if not stable.all() else k
     for j in range(k_st):
         q = Q[j]

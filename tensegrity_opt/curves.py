@@ -35,7 +35,7 @@ from .manipulator import Manipulator
 from .seeds import seeds
 from .shapes import shape_label
 from .solvers import model
-from .stability import _inertia
+from .stability import _inertia, classify_batch
 
 __all__ = ["Curve", "Jump", "force_deflection"]
 
@@ -169,15 +169,7 @@ def _classify_batch(m: Manipulator, br: _Branch, idx: np.ndarray, Q: np.ndarray,
     mdl = model(m.n)
     if mdl.dense and idx.size > 1:
         E, H, J, _ = mdl.batch_derivs(m.params, Q, Fs)
-        if m.n > 2:
-            Qr, _ = np.linalg.qr(np.transpose(J, (0, 2, 1)), mode="complete")
-            Zb = Qr[:, :, 2:]
-            w = np.linalg.eigvalsh(np.transpose(Zb, (0, 2, 1)) @ H @ Zb)
-            tol = 1e-9 * np.maximum(1.0, np.abs(w).max(axis=1))
-            morse = np.sum(w < -tol[:, None], axis=1)
-            stable = (morse == 0) & ~np.any(np.abs(w) <= tol[:, None], axis=1)
-        else:
-            morse, stable = np.zeros(idx.size, dtype=int), np.ones(idx.size, dtype=bool)
+        morse, stable, _ = classify_batch(H, J)
         br.q[idx], br.F[idx], br.E[idx] = Q, Fs, E
         br.morse[idx], br.stable[idx], br.valid[idx] = morse, stable, True
         for i in idx:

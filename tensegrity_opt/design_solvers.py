@@ -26,7 +26,7 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from .solvers import IPOPT_OPTIONS
+from .solvers import IPOPT_OPTIONS, chain_expressions
 
 __all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
 
@@ -137,14 +137,7 @@ class PreloadNLP:
         F = ca.SX.sym("F", 2)
         L0nom = ca.SX.sym("L0nom", 2 * n)
         w = ca.SX.sym("w", 3)
-        q = phi - ca.vertcat(0, phi[:-1])
-        c = ca.sqrt(a * a + b * b)
-        beta = ca.atan2(a, b)
-        L1 = 2 * c * ca.cos(beta + q / 2)
-        L2 = 2 * c * ca.cos(beta - q / 2)
-        E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
-        links = b + ca.vertcat(b[1:], 0) if n > 1 else b
-        tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
+        q, L1, L2, E, tip = chain_expressions(phi, a, b, k1, k2, L10, L20)
         J = ca.jacobian(tip, phi)
         grad = ca.gradient(E, phi) - J.T @ F
         Hphi = ca.hessian(E - ca.dot(F, tip), phi)[0]

@@ -81,6 +81,23 @@ def _q_of_phi(phi):
     return phi - ca.vertcat(0, phi[:-1])
 
 
+def chain_expressions(phi, a, b, k1, k2, L10, L20):
+    """The chain's model in absolute angles as CasADi expressions (SX or MX).
+
+    Returns ``(q, L1, L2, E, tip)``: relative angles, spring lengths, elastic energy and tip
+    position (conventions.md); every argument is a column of length ``n``.
+    """
+    q = _q_of_phi(phi)
+    c = ca.sqrt(a * a + b * b)
+    beta = ca.atan2(a, b)
+    L1 = 2 * c * ca.cos(beta + q / 2)
+    L2 = 2 * c * ca.cos(beta - q / 2)
+    E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
+    links = b + ca.vertcat(b[1:], 0) if phi.shape[0] > 1 else b
+    tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
+    return q, L1, L2, E, tip
+
+
 #: Chains up to this many segments use dense linear algebra; longer ones sparse (O(n)) paths.
 DENSE_MAX = 64
 #: Points per compiled batch (continuation and batched derivatives).
@@ -166,15 +183,7 @@ class _Model:
             phi = ca.SX.sym("phi", n)
             p = ca.SX.sym("p", 6 * n)
             F = ca.SX.sym("F", 2)
-            a, b, k1, k2, L10, L20 = (p[i * n:(i + 1) * n] for i in range(6))
-            q = _q_of_phi(phi)
-            c = ca.sqrt(a * a + b * b)
-            beta = ca.atan2(a, b)
-            L1 = 2 * c * ca.cos(beta + q / 2)
-            L2 = 2 * c * ca.cos(beta - q / 2)
-            E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
-            links = b + ca.vertcat(b[1:], 0) if n > 1 else b
-            tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
+            q, _, _, E, tip = chain_expressions(phi, *(p[i * n:(i + 1) * n] for i in range(6)))
             J = ca.jacobian(tip, phi)
             gradE = ca.gradient(E, phi)
             H = ca.hessian(E - ca.dot(F, tip), phi)[0]

@@ -30,7 +30,7 @@ import scipy.linalg as sla
 from .manipulator import Manipulator
 from .solvers import model
 
-__all__ = ["Inertia", "classify", "analyse", "reduced_hessian"]
+__all__ = ["Inertia", "classify", "analyse", "classify_batch", "reduced_hessian"]
 
 
 @dataclass(frozen=True)
@@ -94,6 +94,25 @@ def _inertia(H, J, constrained: bool, rel_tol: float, dim: int) -> Inertia:
         tol = rel_tol * max(1.0, float(np.abs(w).max()))
         return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)), dim)
     return _sparse_inertia(H, J if constrained else None, rel_tol, dim)
+
+
+def classify_batch(H: np.ndarray, J: np.ndarray, rel_tol: float = 1e-9
+                   ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Classify many displacement-controlled equilibria at once (short chains).
+
+    ``H`` (N, n, n) Lagrangian Hessians and ``J`` (N, 2, n) tip Jacobians, absolute angles.
+    Returns ``(morse_index (N,), stable (N,), eigenvalues (N, n-2))``.
+    """
+    N, n = H.shape[0], H.shape[1]
+    if n <= 2:
+        return np.zeros(N, dtype=int), np.ones(N, dtype=bool), np.zeros((N, 0))
+    Q, _ = np.linalg.qr(np.transpose(J, (0, 2, 1)), mode="complete")
+    Z = Q[:, :, 2:]
+    w = np.linalg.eigvalsh(np.transpose(Z, (0, 2, 1)) @ H @ Z)
+    tol = rel_tol * np.maximum(1.0, np.abs(w).max(axis=1))
+    morse = np.sum(w < -tol[:, None], axis=1)
+    stable = (morse == 0) & ~np.any(np.abs(w) <= tol[:, None], axis=1)
+    return morse, stable, w
 
 
 def _sparse_inertia(H, J, rel_tol: float, dim: int) -> Inertia:
