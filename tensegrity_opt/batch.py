@@ -15,10 +15,12 @@ Each target yields an :class:`Equilibrium` or the exception explaining why it ha
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
 
-from .equilibrium import Equilibrium, make_equilibrium, solve_equilibrium
-from .errors import InvalidParameterError, TensegrityError
+from .equilibrium import Equilibrium, _check_q0, make_equilibrium, solve_equilibrium
+from .errors import InvalidParameterError, TensegrityError, TimeLimitError
 from .manipulator import Manipulator
 from .shapes import shape_label, sign_string
 from .solvers import model
@@ -36,8 +38,8 @@ def _targets(targets) -> np.ndarray:
     return arr
 
 
-def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
-                           ) -> list[Equilibrium | TensegrityError]:
+def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True, q0=None,
+                           deadline: float | None = None) -> list[Equilibrium | TensegrityError]:
     """Equilibria for a sequence of deflections ``(dx, dy)``, in order.
 
     Parameters
@@ -47,6 +49,11 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
         Deflections ``(dx, dy)`` (length units); the tip goes to ``(2 sum(b) - dx, dy)``.
     continuation : bool
         Follow the branch through the previous solution (default) or solve each globally.
+    q0 : array_like (n,), optional
+        A configuration near the first target (seeds its global solve).
+    deadline : float, optional
+        A ``time.monotonic()`` instant: targets not started by then get a
+        :class:`TimeLimitError` (``code = "timeout"``).
 
     Returns
     -------
@@ -58,9 +65,14 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
     N = pts.shape[0]
     out: list[Equilibrium | TensegrityError | None] = [None] * N
     prev: Equilibrium | None = None
+    start_q = _check_q0(m, q0)
     mdl = model(m.n)
     i = 0
     while i < N:
+        if deadline is not None and time.monotonic() > deadline:
+            for j in range(i, N):
+                out[j] = TimeLimitError("the batch time limit was reached before this target")
+            break
         dx, dy = pts[i]
         try:
             m.check_reachable(dx, dy)
@@ -68,8 +80,9 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
             out[i] = exc
             i += 1
             continue
-        if not continuation or prev is None or (dx == 0.0 and dy == 0.0):
-            out[i] = prev_or_error = _global(m, dx, dy, prev.q if (continuation and prev is not None) else None)
+        if not continuation or prev is None or (dx == 0.0 and dy == 0.0) or m.n < 2:
+            seed = prev.q if (continuation and prev is not None) else (start_q if i == 0 else None)
+            out[i] = prev_or_error = _global(m, dx, dy, seed)
             if isinstance(prev_or_error, Equilibrium) and prev_or_error.status != "straight":
                 prev = prev_or_error
             i += 1

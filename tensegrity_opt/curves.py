@@ -135,6 +135,13 @@ def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndar
     """Continue ``br`` from its solution at ``start`` over the points ``start+1 .. stop-1``."""
     mdl = model(m.n)
     n = m.n
+    if n == 1:                       # no continuation: every point is fixed by its target
+        for i in range(start + 1, stop):
+            try:
+                br.set(i, solve_equilibrium(m, dxs[i], dys[i]))
+            except TensegrityError:
+                return
+        return
     lim = m.joint_limits
     tol = 1e-9 * max(1.0, float(np.max(np.maximum(m.k1, m.k2) * (m.a ** 2 + m.b ** 2))))
     s = start
@@ -281,6 +288,8 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
 
 
 def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free: bool) -> list[Equilibrium]:
+    if m.n == 1:
+        return [solve_equilibrium(m, dx, dy)]
     if branch == "all":
         return find_equilibria(m, dx, dy)
     eqs = _stable_at(m, dx, dy)

@@ -21,12 +21,13 @@ Objective ``w_nom |L0 - L0_nom|^2 / |L0_nom|^2 - w_mu mu + w_E E``.
 from __future__ import annotations
 
 import threading
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import casadi as ca
 import numpy as np
 
-from .solvers import IPOPT_OPTIONS, chain_expressions
+from .solvers import CACHE_SIZE, IPOPT_OPTIONS, chain_expressions
 
 __all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
 
@@ -160,24 +161,23 @@ class PreloadNLP:
 _local = threading.local()
 
 
-def _cache() -> dict:
+def _cached(key, build):
+    """Per-thread LRU cache of built problems (``CACHE_SIZE`` entries, as for the equilibrium models)."""
     c = getattr(_local, "cache", None)
     if c is None:
-        c = _local.cache = {}
-    return c
+        c = _local.cache = OrderedDict()
+    if key in c:
+        c.move_to_end(key)
+        return c[key]
+    obj = c[key] = build()
+    while len(c) > CACHE_SIZE:
+        c.popitem(last=False)
+    return obj
 
 
 def buckling_design_nlp(n: int, guided: bool) -> BucklingDesignNLP:
-    key = ("buckling", n, guided)
-    c = _cache()
-    if key not in c:
-        c[key] = BucklingDesignNLP(n, guided)
-    return c[key]
+    return _cached(("buckling", n, guided), lambda: BucklingDesignNLP(n, guided))
 
 
 def preload_nlp(n: int) -> PreloadNLP:
-    key = ("preload", n)
-    c = _cache()
-    if key not in c:
-        c[key] = PreloadNLP(n)
-    return c[key]
+    return _cached(("preload", n), lambda: PreloadNLP(n))

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .equilibrium import Equilibrium, _check_q0, _straight, _valid, local_equilibrium, make_equilibrium
+from .equilibrium import (Equilibrium, _check_q0, _one_segment, _straight, _valid, local_equilibrium,
+                          make_equilibrium)
 from .errors import SolverError
 from .manipulator import Manipulator
 from .seeds import seeds
@@ -57,6 +58,8 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, n_random: int
     target = m.check_reachable(dx, dy)
     if dx == 0.0 and dy == 0.0:
         return [_straight(m)]
+    if m.n == 1:
+        return [_one_segment(m, target)]
     results = []
     statuses: dict[str, int] = {}
     starts = [(s.q, s.force) for s in seeds(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes,

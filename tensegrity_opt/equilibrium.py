@@ -139,10 +139,30 @@ def _straight(m: Manipulator) -> Equilibrium:
     """The fully extended chain (the only configuration reaching ``dx = dy = 0``)."""
     q = np.zeros(m.n)
     S0 = tip_slope(m)
-    fy = float(S0 @ m.gradient(q) / (S0 @ S0))
+    s2 = float(S0 @ S0)
+    fy = float(S0 @ m.gradient(q) / s2) if s2 > 0.0 else 0.0
     return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
                        shape="I", signs=sign_string(q), status="straight", iterations=0,
                        tip=m.tip(q), control="displacement")
+
+
+def _one_segment(m: Manipulator, target: np.ndarray) -> Equilibrium:
+    """A single segment: the target fixes the joint angle; the force is the least-norm one.
+
+    With one joint the tip constraint leaves no freedom (the configuration manifold is a
+    point) and the force along the link is not determined by equilibrium: eq. (8) gives the
+    component normal to the link, the least-norm force.
+    """
+    q = np.array([math.atan2(target[1], target[0] - m.base_length)])
+    if not m.in_range(q):
+        raise UnreachableTargetError(
+            f"reaching the target needs q = {q[0]:.6g}, outside the joint range |q| < {m.joint_limits[0]:.6g}",
+            field="dx")
+    J = m.jacobian(q)
+    force = J[:, 0] * (m.gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
+    return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True, shape=shape_label(q),
+                       signs=sign_string(q), status="closed_form", iterations=0, tip=m.tip(q),
+                       control="displacement")
 
 
 def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None,
@@ -215,6 +235,8 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         raise InvalidParameterError("local=True needs a starting configuration q0", field="q0")
     if dx == 0.0 and dy == 0.0:
         return _straight(m)
+    if m.n == 1:
+        return _one_segment(m, target)
     if local:
         res = local_equilibrium(m, target, q0)
         if not _valid(m, res, target, check_residual=False):

@@ -19,6 +19,7 @@ __all__ = [
     "SolverError",
     "NoEquilibriumError",
     "InfeasibleDesignError",
+    "TimeLimitError",
 ]
 
 
@@ -96,3 +97,9 @@ class InfeasibleDesignError(SolverError):
     def __init__(self, message: str, *, status: str | None = None, best: object = None, **details: object) -> None:
         super().__init__(message, status=status, **details)
         self.best = best
+
+
+class TimeLimitError(TensegrityError, RuntimeError):
+    """A time limit given by the caller was reached before this computation started."""
+
+    code = "timeout"

@@ -199,7 +199,9 @@ class Manipulator:
     def check_reachable(self, dx: float, dy: float = 0.0) -> np.ndarray:
         """Return the target for ``(dx, dy)`` or raise :class:`UnreachableTargetError`.
 
-        The tip can reach distance at most ``sum(links)`` from joint 1 at ``(b_1, 0)``.
+        The tip stays between ``max(0, 2 max(links) - sum(links))`` and ``sum(links)`` from joint 1
+        at ``(b_1, 0)`` (a single segment: exactly on the circle of radius ``b_1``). The joint
+        range restricts it further; that is found by the solvers.
         """
         for name, v in (("dx", dx), ("dy", dy)):
             if not math.isfinite(float(v)):
@@ -207,6 +209,15 @@ class Manipulator:
         target = self.target(dx, dy)
         reach = float(self.link_lengths.sum())
         dist = math.hypot(target[0] - self.base_length, target[1])
+        inner = max(0.0, 2.0 * float(self.link_lengths.max()) - reach)
+        if self.n == 1 and abs(dist - reach) > 1e-9 * reach:
+            raise UnreachableTargetError(
+                f"a single segment's tip moves on a circle of radius {reach:.6g} about its joint; the target "
+                f"for dx={dx:.6g}, dy={dy:.6g} is at distance {dist:.6g}", field="dx", distance=dist, reach=reach)
+        if dist < inner * (1.0 - 1e-12):
+            raise UnreachableTargetError(
+                f"the target for dx={dx:.6g}, dy={dy:.6g} is closer to joint 1 ({dist:.6g}) than the chain can fold "
+                f"({inner:.6g})", field="dx", distance=dist, reach=reach)
         if dist > reach * (1.0 + 1e-12):
             raise UnreachableTargetError(
                 f"target ({target[0]:.6g}, {target[1]:.6g}) for dx={dx:.6g}, dy={dy:.6g} is beyond the "
@@ -250,9 +261,10 @@ class Manipulator:
         return -self.torques(q)
 
     def force_from_torques(self, q: Any) -> np.ndarray:
-        """Eq. (8): ``F = -(J J^T)^-1 J M``, the least-squares tip force balancing the torques."""
+        """Eq. (8): ``F = -(J^T)^+ M``, the least-squares (least-norm where ``J`` loses rank) tip force
+        balancing the torques; ``-(J J^T)^-1 J M`` when ``J`` has full rank."""
         J = self.jacobian(q)
-        return -np.linalg.solve(J @ J.T, J @ self.torques(q))
+        return np.linalg.lstsq(J.T, -self.torques(q), rcond=None)[0]
 
     def equilibrium_residual(self, q: Any, force: Any, target: Any | None = None) -> float:
         """Largest violation of ``grad E = J^T F`` (scaled by ``k c^2``) and of ``tip = target`` (by ``sum b``)."""

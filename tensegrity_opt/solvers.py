@@ -20,6 +20,7 @@ public function of the library may be called from several threads at once.
 from __future__ import annotations
 
 import threading
+from collections import OrderedDict
 from dataclasses import dataclass
 
 import casadi as ca
@@ -551,13 +552,20 @@ def _banded_step(outs: list[np.ndarray], r: np.ndarray, n: int, kkt: bool) -> np
 
 _local = threading.local()
 
+#: Models kept per thread (least recently used evicted): each costs ~1-2 MB for short chains.
+CACHE_SIZE = 16
+
 
 def model(n: int) -> _Model:
-    """The cached CasADi model for ``n`` segments, owned by the calling thread."""
+    """The cached CasADi model for ``n`` segments, owned by the calling thread (LRU, ``CACHE_SIZE``)."""
     cache = getattr(_local, "cache", None)
     if cache is None:
-        cache = _local.cache = {}
+        cache = _local.cache = OrderedDict()
     m = cache.get(n)
     if m is None:
         m = cache[n] = _Model(n)
+        while len(cache) > CACHE_SIZE:
+            cache.popitem(last=False)
+    else:
+        cache.move_to_end(n)
     return m

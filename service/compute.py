@@ -1,0 +1,213 @@
+"""Library calls and their conversion to JSON-ready dicts; everything here runs in a solver thread.
+
+Each ``*_job`` function takes validated request models (read only) and returns a plain dict
+matching the response model. Library exceptions propagate unchanged to the route, which maps
+them through :mod:`service.errors` (batch items are mapped here, one error per target).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+import tensegrity_opt as to
+from tensegrity_opt.equilibrium import Equilibrium
+
+from . import schemas as s
+from .errors import FieldContext, error_body
+
+__all__ = [
+    "build_manipulator", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job",
+    "force_equilibrium_job", "equilibria_job", "buckling_job", "force_deflection_job", "stiffness_job",
+    "segment_torque_job", "energy_landscape_job", "batch_job", "warmup_job",
+]
+
+
+def _pair(v: float | list[float]) -> float | tuple[float, float]:
+    return (float(v[0]), float(v[1])) if isinstance(v, list) else float(v)
+
+
+def segment_count(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> int:
+    return m.n if isinstance(m, s.UniformManipulatorIn) else len(m.segments)
+
+
+def manipulator_form(m: Any) -> str:
+    return "uniform" if isinstance(m, s.UniformManipulatorIn) else "segments"
+
+
+def build_segment(seg: s.SegmentIn) -> to.Segment:
+    return to.Segment(seg.a, seg.b, _pair(seg.k), _pair(seg.L0))
+
+
+def build_manipulator(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> to.Manipulator:
+    if isinstance(m, s.UniformManipulatorIn):
+        return to.Manipulator.uniform(m.n, m.a, m.b, _pair(m.k), _pair(m.L0))
+    return to.Manipulator([build_segment(seg) for seg in m.segments])
+
+
+class NonFiniteResult(ArithmeticError):
+    """A result holds NaN or an infinity where the API promises a number (answered as 422)."""
+
+
+def _num(x: Any) -> float:
+    """A finite float, or :class:`NonFiniteResult`: a number the schema says is a number never becomes null."""
+    v = float(x)
+    if not math.isfinite(v):
+        raise NonFiniteResult("the result is not finite for this input (overflow or underflow in the model)")
+    return v
+
+
+def _nums(a: Any) -> list[Any]:
+    """``a`` as (nested) lists of finite floats, or :class:`NonFiniteResult`."""
+    arr = np.asarray(a, dtype=float)
+    if not bool(np.all(np.isfinite(arr))):
+        raise NonFiniteResult("the result is not finite for this input (overflow or underflow in the model)")
+    return arr.tolist()
+
+
+def _f(x: Any) -> float | None:
+    """A float, ``None`` for NaN and infinities (fields documented as nullable)."""
+    v = float(x)
+    return v if math.isfinite(v) else None
+
+
+def equilibrium_out(eq: Equilibrium) -> dict[str, Any]:
+    return {"q": _nums(eq.q), "energy": _num(eq.energy), "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
+            "morse_index": int(eq.morse_index), "stable": bool(eq.stable), "kind": eq.kind, "shape": eq.shape,
+            "signs": eq.signs, "tip": _nums(eq.tip),
+            "solver": {"status": str(eq.status), "iterations": int(eq.iterations)}}
+
+
+def _q0(q0: list[float] | None) -> np.ndarray | None:
+    return None if q0 is None else np.asarray(q0, dtype=float)
+
+
+# ---------------------------------------------------------------------------- jobs
+def warmup_job() -> None:
+    """Build this thread's CasADi instances for the paper's chain (first-request latency)."""
+    to.solve_equilibrium(to.Manipulator.uniform(4), 0.1)
+
+
+def equilibrium_job(req: s.EquilibriumRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0)))
+
+
+def force_equilibrium_job(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    return equilibrium_out(to.solve_equilibrium_under_force(m, req.fx, req.fy, q0=_q0(req.q0)))
+
+
+def equilibria_job(req: s.EquilibriaRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    return {"equilibria": [equilibrium_out(e) for e in to.find_equilibria(m, req.dx, req.dy)]}
+
+
+def buckling_job(req: s.BucklingRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    bk = to.critical_force(m, req.boundary)
+    return {"boundary": bk.boundary, "critical_force": _num(bk.force), "loads": _nums(bk.loads),
+            "modes": [{"load": _num(md.load), "q": _nums(md.q), "fy": _num(md.fy),
+                       "energy_factor": _num(md.energy_factor), "mu_x": _num(md.mu_x),
+                       "fy_coefficient": _num(md.fy_coefficient), "shape": md.shape, "signs": md.signs,
+                       "stable": bool(md.stable)} for md in bk.modes]}
+
+
+def deflections(dx: list[float] | s.RangeIn) -> np.ndarray:
+    if isinstance(dx, s.RangeIn):
+        return np.linspace(dx.start, dx.stop, dx.num)
+    return np.asarray(dx, dtype=float)
+
+
+def _force(v: Any) -> dict[str, float]:
+    return {"fx": _num(v[0]), "fy": _num(v[1])}
+
+
+def force_deflection_job(req: s.ForceDeflectionRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    c = to.force_deflection(m, deflections(req.dx), req.dy, branch=req.branch)
+    points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
+               "energy": _num(c.energy[i]), "q": _nums(c.q[i]), "stable": bool(c.stable[i]),
+               "morse_index": int(c.morse_index[i]), "shape": c.shape[i], "branch": int(c.branch[i])}
+              for i in range(c.dx.size)]
+    jumps = [{"kind": j.kind, "dx_before": _num(j.dx_before), "dx_after": _num(j.dx_after),
+              "force_before": _force(j.force_before), "force_after": _force(j.force_after),
+              "branch_before": int(j.branch_before), "branch_after": int(j.branch_after)} for j in c.jumps]
+    branches = []
+    for bi, br in enumerate(c.branches):
+        bid = int(br.branch[0]) if br.branch.size else bi
+        pts = []
+        for i in range(br.dx.size):
+            exists = bool(np.isfinite(br.energy[i]))
+            pts.append({"dx": _num(br.dx[i]), "dy": _num(br.dy[i]), "exists": exists, "fx": _f(br.fx[i]),
+                        "fy": _f(br.fy[i]), "energy": _f(br.energy[i]),
+                        "q": [_f(v) for v in br.q[i]], "stable": bool(br.stable[i]),
+                        "morse_index": int(br.morse_index[i]), "shape": br.shape[i]})
+        branches.append({"id": bid, "points": pts})
+    return {"points": points, "jumps": jumps, "branches": branches}
+
+
+def stiffness_job(req: s.StiffnessRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0))
+    K = to.cartesian_stiffness(m, eq)
+    return {"matrix": _nums(K), "equilibrium": equilibrium_out(eq)}
+
+
+def angles(q: list[float] | s.RangeIn) -> np.ndarray:
+    if isinstance(q, s.RangeIn):
+        return np.linspace(q.start, q.stop, q.num)
+    return np.asarray(q, dtype=float)
+
+
+def segment_torque_job(req: s.SegmentTorqueRequest) -> dict[str, Any]:
+    seg = build_segment(req.segment)
+    q = angles(req.q)
+    return {"q": _nums(q), "torque": _nums(seg.torque(q)), "dtorque": _nums(seg.dtorque(q)),
+            "energy": _nums(seg.energy(q)), "stiffness": _num(seg.stiffness), "monotonic": bool(seg.monotonic()),
+            "joint_limit": _num(seg.joint_limit)}
+
+
+def energy_landscape_job(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    land = to.energy_landscape(m, req.dx, req.dy, pair=(req.pair[0], req.pair[1]), grid=req.grid, span=req.span)
+    E = land.energy
+    energy = [[[None if not math.isfinite(v) else v for v in row] for row in plane] for plane in E.tolist()]
+    return {"pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj), "energy": energy}
+
+
+def batch_job(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> dict[str, Any]:
+    """Solve the targets in order (:func:`tensegrity_opt.solve_equilibria_batch`).
+
+    With ``continuation`` each target continues the branch through the previous result (compiled
+    continuation for short chains); a target that fails gets an error object and the next one starts
+    from the last success. Targets not started before ``deadline`` (``time.monotonic()``) get
+    ``code = "timeout"``.
+    """
+    m = build_manipulator(req.manipulator)
+    q_prev = _q0(req.q0)
+    if q_prev is not None and (q_prev.shape != (m.n,) or not m.in_range(q_prev)):
+        # A bad start would fail every target of the trajectory: refuse the request instead.
+        raise to.InvalidParameterError(
+            f"q0 must hold {m.n} joint angles inside the physical range |q_i| < pi - 2 beta_i", field="q0")
+    targets = [(t.dx, t.dy) for t in req.targets]
+    solved = to.solve_equilibria_batch(m, targets, continuation=req.continuation, q0=q_prev, deadline=deadline)
+    results: list[dict[str, Any]] = []
+    ok = 0
+    for i, (t, r) in enumerate(zip(req.targets, solved)):
+        item: dict[str, Any] = {"index": i, "dx": t.dx, "dy": t.dy, "equilibrium": None, "error": None}
+        if isinstance(r, Equilibrium):
+            try:
+                item["equilibrium"] = equilibrium_out(r)
+                ok += 1
+            except NonFiniteResult as exc:
+                item["error"] = error_body(exc, FieldContext(manipulator=form, index=i))
+        else:
+            body = error_body(r, FieldContext(manipulator=form, index=i))
+            if body is None:
+                raise r
+            item["error"] = body
+        results.append(item)
+    return {"results": results, "succeeded": ok, "failed": len(results) - ok}

@@ -1,0 +1,68 @@
+"""Shared route dependencies: settings, API-key auth, size limits, running a solve in the pool."""
+
+from __future__ import annotations
+
+import secrets
+from collections.abc import Callable
+from typing import Any
+
+from fastapi import Request, Security
+from fastapi.security import APIKeyHeader
+
+from . import schemas as s
+from .compute import manipulator_form, segment_count
+from .config import Settings
+from .errors import FieldContext, ServiceError
+
+__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch", "solve"]
+
+api_key_header = APIKeyHeader(
+    name="X-API-Key", auto_error=False, scheme_name="ApiKey",
+    description="Required only when the server is configured with API keys (TENSEGRITY_API_KEYS); "
+                "otherwise ignored.")
+
+
+def get_settings_dep(request: Request) -> Settings:
+    return request.app.state.settings
+
+
+async def require_api_key(request: Request, key: str | None = Security(api_key_header)) -> None:
+    """401 unless auth is off or ``X-API-Key`` is one of the configured keys (constant-time compare)."""
+    settings: Settings = request.app.state.settings
+    if not settings.api_keys:
+        return
+    if key:
+        given = key.encode("utf-8", "surrogateescape")
+        if any(secrets.compare_digest(given, k.encode("utf-8", "surrogateescape")) for k in settings.api_keys):
+            return
+    raise ServiceError(401, "unauthorized",
+                       "missing API key: send the X-API-Key header" if not key else "invalid API key",
+                       field="X-API-Key", headers={"WWW-Authenticate": "ApiKey"})
+
+
+def check_manipulator(m: Any, settings: Settings) -> FieldContext:
+    """Refuse chains longer than ``settings.max_segments`` (422 ``too_many_segments``)."""
+    n = segment_count(m)
+    form = manipulator_form(m)
+    if n > settings.max_segments:
+        raise ServiceError(422, "too_many_segments",
+                           f"the chain has {n} segments; this server accepts at most {settings.max_segments}",
+                           field="manipulator.n" if form == "uniform" else "manipulator.segments",
+                           details={"n": n, "max_segments": settings.max_segments})
+    return FieldContext(manipulator=form)
+
+
+def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
+    if len(req.targets) > settings.max_batch:
+        raise ServiceError(422, "batch_too_large",
+                           f"the batch has {len(req.targets)} targets; this server accepts at most "
+                           f"{settings.max_batch}", field="targets",
+                           details={"targets": len(req.targets), "max_batch": settings.max_batch})
+
+
+async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext,
+                timeout: float | None = None) -> Any:
+    """Run ``fn(*args)`` in the solver pool under the time limit; errors map through ``service.errors``."""
+    request.state.field_context = ctx
+    settings: Settings = request.app.state.settings
+    return await request.app.state.pool.run(fn, *args, timeout=timeout or settings.solve_timeout)

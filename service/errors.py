@@ -1,0 +1,287 @@
+"""The one place where failures become HTTP answers.
+
+Every refusal has the body of :class:`service.schemas.ErrorOut`
+(``{"code", "message", "field", ...}``):
+
+=====================================================  ======  ==========================================
+failure                                                status  code
+=====================================================  ======  ==========================================
+request body violates the schema                       422     ``validation_error`` (+ ``errors`` list)
+library ``ValueError`` family (bad input, ill-posed)   422     the exception's ``code``: ``invalid_parameter``,
+                                                               ``unreachable_target``, ``straight_not_equilibrium``,
+                                                               ``straight_unstable``, ``unsupported``
+library ``SolverError`` / ``NoEquilibriumError``       422     ``solver_failed`` / ``no_equilibrium``, ``status``
+                                                               holds the solver (IPOPT) status
+numerical failure outside the library's own checks     422     ``numerical_failure``
+chain or batch over the configured limit               422     ``too_many_segments`` / ``batch_too_large``
+missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
+request body over ``max_body_bytes``                   413     ``body_too_large``
+solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
+solve time limit exceeded                              504     ``timeout``
+unknown path / method                                  404/405 ``not_found`` / ``method_not_allowed``
+=====================================================  ======  ==========================================
+
+Library fields (``"dx"``, ``"q0"``, ``"segments[2].L0"``, ``"n"`` ...) are rewritten into paths
+of the request (``"manipulator.segments[2].L0"``, ``"manipulator.n"``, ``"targets[3].dx"``).
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.responses import JSONResponse
+
+from tensegrity_opt.errors import SolverError, TensegrityError
+
+from .pool import PoolSaturated, SolveTimeout
+
+log = logging.getLogger("service.errors")
+
+__all__ = ["ApiError", "ServiceError", "FieldContext", "error_body", "to_api_error", "status_for", "install",
+           "error_response", "validation_body"]
+
+
+class ServiceError(Exception):
+    """A refusal decided by the service itself (limits, auth, body size, pool, time)."""
+
+    def __init__(self, status_code: int, code: str, message: str, *, field: str | None = None,
+                 headers: dict[str, str] | None = None, details: dict[str, Any] | None = None) -> None:
+        super().__init__(message)
+        self.status_code = status_code
+        self.code = code
+        self.message = message
+        self.field = field
+        self.headers = headers
+        self.details = details
+
+
+@dataclass(frozen=True)
+class FieldContext:
+    """How library field names map onto the request.
+
+    ``manipulator``: ``"uniform"`` or ``"segments"`` (the request's form), or ``None``;
+    ``segment``: the request has one ``segment`` (the torque endpoint);
+    ``index``: position of the target in a batch.
+    """
+
+    manipulator: str | None = None
+    segment: bool = False
+    index: int | None = None
+
+
+_SEG = re.compile(r"^segments\[(\d+)\](.*)$")
+_PARAMS = ("a", "b", "k", "L0")
+
+
+def request_field(field: str | None, ctx: FieldContext) -> str | None:
+    """The request path of a library ``field``."""
+    if not field:
+        return None
+    if field == "eq":
+        return None
+    if ctx.segment and field.split("[")[0] in _PARAMS:
+        return f"segment.{field}"
+    if field == "n":
+        return "manipulator.n" if ctx.manipulator != "segments" else "manipulator.segments"
+    if field == "segments" or _SEG.match(field):
+        if ctx.manipulator == "uniform":
+            m = _SEG.match(field)
+            rest = m.group(2) if m else ""
+            return "manipulator" + rest if rest else "manipulator"
+        return f"manipulator.{field}"
+    if field.split("[")[0] in _PARAMS:
+        return f"manipulator.{field}"
+    if ctx.index is not None and field in ("dx", "dy"):
+        return f"targets[{ctx.index}].{field}"
+    return field
+
+
+def _plain(v: Any) -> Any:
+    if isinstance(v, (np.floating, float)):
+        v = float(v)
+        return v if math.isfinite(v) else None
+    if isinstance(v, (np.integer,)):
+        return int(v)
+    if isinstance(v, (np.bool_,)):
+        return bool(v)
+    if isinstance(v, (str, int, bool)) or v is None:
+        return v
+    return str(v)
+
+
+def status_for(exc: BaseException) -> int:
+    if isinstance(exc, ServiceError):
+        return exc.status_code
+    if isinstance(exc, PoolSaturated):
+        return 503
+    if isinstance(exc, SolveTimeout):
+        return 504
+    return 422
+
+
+def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[str, Any] | None:
+    """``ErrorOut`` for an exception a solve may raise, or ``None`` when it is a server bug.
+
+    Library exceptions keep their ``code`` (the bare base ``TensegrityError``, which
+    ``force_deflection`` raises when no stable equilibrium exists at a point, becomes
+    ``no_equilibrium``); numerical exceptions from numpy/scipy/CasADi become
+    ``numerical_failure``.
+    """
+    if isinstance(exc, ServiceError):
+        out: dict[str, Any] = {"code": exc.code, "message": exc.message}
+        if exc.field:
+            out["field"] = exc.field
+        if exc.details:
+            out["details"] = exc.details
+        return out
+    if isinstance(exc, SolveTimeout):
+        return {"code": "timeout", "message": str(exc)}
+    if isinstance(exc, PoolSaturated):
+        return {"code": "overloaded", "message": str(exc)}
+    if isinstance(exc, TensegrityError):
+        d = exc.to_dict()
+        code = exc.code if type(exc) is not TensegrityError else "no_equilibrium"
+        out = {"code": code, "message": exc.message}
+        field = request_field(exc.field, ctx)
+        if field:
+            out["field"] = field
+        if isinstance(exc, SolverError):
+            out["status"] = str(exc.status) if exc.status is not None else None
+        details = {k: _plain(v) for k, v in d.items() if k not in ("code", "message", "field", "status")}
+        if details:
+            out["details"] = details
+        return out
+    if isinstance(exc, (ArithmeticError, np.linalg.LinAlgError, ValueError, RuntimeError)):
+        return {"code": "numerical_failure",
+                "message": f"the computation failed numerically for this input: {type(exc).__name__}: {exc}"[:2000]}
+    return None
+
+
+def error_response(status_code: int, body: dict[str, Any], headers: dict[str, str] | None = None) -> JSONResponse:
+    return JSONResponse(status_code=status_code, content=body, headers=headers)
+
+
+def _loc_path(loc: tuple[Any, ...] | list[Any]) -> str:
+    parts = [p for p in loc if not (isinstance(p, str) and p.startswith("<") and p.endswith(">"))]
+    if parts and parts[0] == "body":
+        parts = parts[1:]
+    out = ""
+    for p in parts:
+        if isinstance(p, int):
+            out += f"[{p}]"
+        else:
+            out += ("." if out else "") + str(p)
+    return out or "body"
+
+
+def validation_body(errors: list[dict[str, Any]]) -> dict[str, Any]:
+    items = []
+    for e in errors:
+        kind = str(e.get("type", "value_error"))
+        if kind == "json_invalid":
+            reason = (e.get("ctx") or {}).get("error", "")
+            items.append({"field": "body", "message": f"invalid JSON: {reason}".rstrip(": "), "type": kind})
+            continue
+        items.append({"field": _loc_path(e.get("loc", ())), "message": str(e.get("msg", "invalid")), "type": kind})
+    if not items:
+        items = [{"field": "body", "message": "invalid request", "type": "value_error"}]
+    first = items[0]
+    more = f" (and {len(items) - 1} more)" if len(items) > 1 else ""
+    return {"code": "validation_error", "message": f"{first['field']}: {first['message']}{more}",
+            "field": first["field"], "errors": items}
+
+
+class ApiError(Exception):
+    """A fully decided HTTP refusal: status, ``ErrorOut`` body and headers."""
+
+    def __init__(self, status_code: int, body: dict[str, Any], headers: dict[str, str] | None = None) -> None:
+        super().__init__(body.get("message", ""))
+        self.status_code = status_code
+        self.body = body
+        self.headers = headers
+
+
+def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retry_after: int = 1) -> ApiError | None:
+    """The HTTP refusal for ``exc``, or ``None`` when it is a server bug (a 500)."""
+    if isinstance(exc, ApiError):
+        return exc
+    body = error_body(exc, ctx)
+    if body is None:
+        return None
+    status = status_for(exc)
+    headers = None
+    if isinstance(exc, ServiceError) and exc.headers:
+        headers = exc.headers
+    if status == 503:
+        headers = {**(headers or {}), "Retry-After": str(retry_after)}
+    return ApiError(status, body, headers)
+
+
+def _record_failure(request: Request, code: str) -> None:
+    metrics = getattr(request.app.state, "metrics", None)
+    if metrics is not None:
+        metrics.failure(code)
+
+
+#: Exceptions a solve may raise that are answers, not server bugs.
+ANSWERED = (ApiError, ServiceError, PoolSaturated, SolveTimeout, TensegrityError, ArithmeticError,
+            np.linalg.LinAlgError, ValueError, RuntimeError)
+
+
+def install(app: FastAPI) -> None:
+    """Register the exception handlers on ``app``."""
+
+    async def _validation(request: Request, exc: Exception) -> JSONResponse:
+        assert isinstance(exc, RequestValidationError)
+        body = validation_body(list(exc.errors()))
+        _record_failure(request, "validation_error")
+        ctype = request.headers.get("content-type", "")
+        if body["field"] == "body" and "json" not in ctype.lower():
+            body["message"] += " (send the body as JSON with Content-Type: application/json)"
+        return error_response(422, body)
+
+    async def _answered(request: Request, exc: Exception) -> JSONResponse:
+        settings = getattr(request.app.state, "settings", None)
+        ctx = getattr(request.state, "field_context", FieldContext())
+        err = to_api_error(exc, ctx, retry_after=getattr(settings, "retry_after", 1))
+        if err is None:  # pragma: no cover - ANSWERED types always map
+            return await _other(request, exc)
+        _record_failure(request, err.body["code"])
+        if err.body["code"] == "numerical_failure":
+            # Not a library refusal: worth a look (the input and the exception are in the log).
+            log.warning("numerical failure on %s %s: %s: %s", request.method, request.url.path,
+                        type(exc).__name__, exc, exc_info=exc)
+        return error_response(err.status_code, err.body, err.headers)
+
+    async def _http(request: Request, exc: Exception) -> JSONResponse:
+        assert isinstance(exc, StarletteHTTPException)
+        if exc.status_code == 400:
+            # FastAPI's "error parsing the body" (nesting too deep, integer too long...): a schema violation.
+            return error_response(422, {"code": "validation_error", "message": f"body: {exc.detail}",
+                                        "field": "body",
+                                        "errors": [{"field": "body", "message": str(exc.detail),
+                                                    "type": "body_parse_error"}]})
+        codes = {404: "not_found", 405: "method_not_allowed", 401: "unauthorized", 413: "body_too_large"}
+        code = codes.get(exc.status_code, "http_error")
+        return error_response(exc.status_code, {"code": code, "message": str(exc.detail)},
+                              dict(exc.headers) if exc.headers else None)
+
+    async def _other(request: Request, exc: Exception) -> JSONResponse:
+        log.error("unexpected error on %s %s", request.method, request.url.path, exc_info=exc)
+        _record_failure(request, "internal_error")
+        return error_response(500, {"code": "internal_error",
+                                    "message": f"unexpected server error ({type(exc).__name__})"})
+
+    app.add_exception_handler(RequestValidationError, _validation)
+    for cls in ANSWERED:
+        app.add_exception_handler(cls, _answered)
+    app.add_exception_handler(StarletteHTTPException, _http)
+    app.add_exception_handler(Exception, _other)

@@ -1,0 +1,150 @@
+"""The FastAPI application: ``create_app(settings)`` and the module-level ``app``.
+
+Run it with ``tensegrity-opt serve`` (one uvicorn process; the solver pool supplies the
+parallelism, see :mod:`service.pool`).
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import logging
+import math
+from collections.abc import AsyncIterator
+from contextlib import asynccontextmanager
+from typing import Any
+
+from fastapi import FastAPI
+from fastapi.middleware.cors import CORSMiddleware
+from starlette.responses import JSONResponse
+
+import tensegrity_opt
+
+from . import docs, errors
+from .compute import warmup_job
+from .config import Settings, get_settings
+from .metrics import Metrics, MetricsMiddleware
+from .middleware import BodyLimitMiddleware
+from .pool import SolverPool
+from .routes import batch, buckling, curves, equilibrium, landscape, ops, segment, stiffness
+
+log = logging.getLogger("service")
+
+__all__ = ["create_app", "openapi_document", "openapi_json", "SafeJSONResponse"]
+
+DESCRIPTION = """\
+Equilibria, stability, buckling and stiffness of compliant serial manipulators built from
+dual-triangle tensegrity segments (the `tensegrity_opt` library) over HTTP.
+
+Every `POST /v1/...` takes JSON and answers JSON in the caller's units (lengths, force per length,
+forces, energies = force x length, angles in radians). A manipulator `M` is either
+`{"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1}` (n identical segments) or
+`{"segments": [{"a", "b", "k": 1.0 | [k1, k2], "L0": 1.0 | [L1_0, L2_0]}, ...]}`.
+
+Every refusal has the body `{"code", "message", "field", ...}`: 422 for schema violations
+(`validation_error`, with the field path) and domain errors (`unreachable_target`,
+`straight_not_equilibrium`, `straight_unstable`, `too_many_segments`, `solver_failed` /
+`no_equilibrium` with the solver `status`, ...), 401 without a valid `X-API-Key` when the server has
+keys, 413 for an oversized body, 503 (`Retry-After`) when the solver pool is saturated, 504 when a
+solve exceeds the time limit. The server's limits are at `GET /version`.
+"""
+
+TAGS = [
+    {"name": "equilibrium", "description": "Equilibria under a prescribed tip displacement or force."},
+    {"name": "buckling", "description": "Critical loads and buckling modes of the straight chain."},
+    {"name": "curves", "description": "Force-deflection curves by continuation."},
+    {"name": "stiffness", "description": "Cartesian tangent stiffness."},
+    {"name": "segment", "description": "One segment's torque and stiffness."},
+    {"name": "landscape", "description": "Energy landscape of the 4-segment chain."},
+    {"name": "batch", "description": "Many targets in one request (trajectories)."},
+    {"name": "ops", "description": "Health, readiness, version and Prometheus metrics."},
+]
+
+
+def _nullify(x: Any) -> Any:
+    if isinstance(x, float):
+        return x if math.isfinite(x) else None
+    if isinstance(x, dict):
+        return {k: _nullify(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_nullify(v) for v in x]
+    return x
+
+
+class SafeJSONResponse(JSONResponse):
+    """JSON that is always valid: a NaN or infinity that slipped through becomes ``null``."""
+
+    def render(self, content: Any) -> bytes:
+        try:
+            return json.dumps(content, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
+        except ValueError:
+            return json.dumps(_nullify(content), ensure_ascii=False, allow_nan=False,
+                              separators=(",", ":")).encode("utf-8")
+
+
+def create_app(settings: Settings | None = None) -> FastAPI:
+    """A new application (its own solver pool and metrics registry) for ``settings``."""
+    settings = settings if settings is not None else get_settings()
+    pool = SolverPool(settings.workers, settings.queue_size)
+    metrics = Metrics(pool)
+
+    @asynccontextmanager
+    async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        pool.start()
+        if settings.warmup:
+            # One warm-up call per worker (best effort): each thread builds its CasADi instances.
+            jobs = [pool.run(warmup_job, timeout=max(settings.solve_timeout, 30.0)) for _ in range(pool.workers)]
+            for res in await asyncio.gather(*jobs, return_exceptions=True):
+                if isinstance(res, BaseException):
+                    log.warning("solver warm-up failed: %r", res)
+        app.state.ready = True
+        try:
+            yield
+        finally:
+            app.state.ready = False
+            pool.shutdown(wait=True, timeout=5.0)
+
+    app = FastAPI(
+        title="tensegrity-opt service", version=tensegrity_opt.__version__, description=DESCRIPTION,
+        openapi_tags=TAGS, docs_url=None, redoc_url=None, lifespan=lifespan,
+        default_response_class=SafeJSONResponse,
+        license_info={"name": "MIT"},
+    )
+    app.state.settings = settings
+    app.state.pool = pool
+    app.state.metrics = metrics
+    app.state.ready = False
+
+    errors.install(app)
+    for module in (equilibrium, buckling, curves, stiffness, segment, landscape, batch, ops):
+        app.include_router(module.router)
+    docs.install(app)
+
+    # Order (outermost first): metrics, CORS, body size limit, the app.
+    app.add_middleware(BodyLimitMiddleware, max_bytes=settings.max_body_bytes)
+    if settings.cors_origins:
+        app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=["GET", "POST"],
+                           allow_headers=["Content-Type", "X-API-Key"], expose_headers=["Retry-After"])
+    app.add_middleware(MetricsMiddleware, metrics=metrics)
+    return app
+
+
+def openapi_document() -> dict[str, Any]:
+    """The OpenAPI document; it does not depend on the environment (defaults only)."""
+    app = create_app(Settings.model_construct())
+    doc = app.openapi()
+    return doc
+
+
+def openapi_json() -> str:
+    """``tensegrity-opt openapi`` output: sorted keys, indent 2, trailing newline."""
+    return json.dumps(openapi_document(), sort_keys=True, indent=2) + "\n"
+
+
+def __getattr__(name: str) -> Any:
+    # ``service.main:app`` for ``uvicorn service.main:app``: built on first access from the environment.
+    if name == "app":
+        global app
+        app = create_app()
+        return app
+    raise AttributeError(name)

@@ -1,0 +1,38 @@
+"""Force-deflection curves."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Body, Depends, Request
+
+from .. import examples as ex
+from .. import schemas as s
+from ..compute import force_deflection_job
+from ..config import Settings
+from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
+from . import solve_responses
+
+router = APIRouter(prefix="/v1", tags=["curves"], dependencies=[Depends(require_api_key)])
+
+
+@router.post(
+    "/force-deflection", operation_id="force_deflection", response_model=s.ForceDeflectionOut,
+    summary="Force-deflection curve along the least-energy stable branch",
+    description="Continuation over the deflections `dx` (a list, or `{start, stop, num}`; at most "
+                f"{s.MAX_CURVE_POINTS} points) at fixed `dy` (`tensegrity_opt.force_deflection`). `jumps` lists the "
+                "force discontinuities (buckling at dx -> 0+, branch switches); `branch = \"all\"` also returns every "
+                "branch found at the first deflected point, with null where it no longer exists.",
+    responses=solve_responses(ex.FORCE_DEFLECTION, "unreachable_target", "no_equilibrium"))
+async def force_deflection(
+    request: Request,
+    req: Annotated[s.ForceDeflectionRequest, Body(openapi_examples={
+        "range": {"summary": "Fig. 6: 3 points from 0 to 0.1", "value": {
+            "manipulator": ex.PAPER_CHAIN, "dx": {"start": 0.0, "stop": 0.1, "num": 3}, "dy": 0.0,
+            "branch": "stable"}},
+        "list": {"summary": "explicit deflections, every branch", "value": {
+            "manipulator": ex.PAPER_CHAIN, "dx": [0.05, 0.1, 0.2], "dy": 0.0, "branch": "all"}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_manipulator(req.manipulator, settings)
+    return await solve(request, force_deflection_job, req, ctx=ctx)

@@ -1,0 +1,71 @@
+"""Equilibria under a prescribed tip displacement or force, and all equilibria."""
+
+from __future__ import annotations
+
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Body, Depends, Request
+
+from .. import examples as ex
+from .. import schemas as s
+from ..compute import equilibria_job, equilibrium_job, force_equilibrium_job
+from ..config import Settings
+from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
+from . import solve_responses
+
+router = APIRouter(prefix="/v1", tags=["equilibrium"], dependencies=[Depends(require_api_key)])
+
+_M = ex.PAPER_CHAIN
+
+
+@router.post(
+    "/equilibrium", operation_id="solve_equilibrium", response_model=s.EquilibriumOut,
+    summary="Least-energy stable equilibrium for a tip deflection",
+    description="The least-energy **stable** equilibrium with the tip held at `(2 sum(b) - dx, dy)` "
+                "(`tensegrity_opt.solve_equilibrium`). `q0` (optional) is a nearby configuration, e.g. the "
+                "previous answer of a control loop; it competes with the global search.",
+    responses=solve_responses(ex.EQUILIBRIUM, "unreachable_target", "solver_failed", "no_equilibrium"))
+async def solve_equilibrium(
+    request: Request,
+    req: Annotated[s.EquilibriumRequest, Body(openapi_examples={
+        "paper": {"summary": "the paper's chain, dx = 0.1", "value": {"manipulator": _M, "dx": 0.1, "dy": 0.0}},
+        "segments": {"summary": "segments listed, with q0", "value": {
+            "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}] * 4}, "dx": 0.1, "dy": 0.02,
+            "q0": [0.17, -0.07, -0.24, -0.13]}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_manipulator(req.manipulator, settings)
+    return await solve(request, equilibrium_job, req, ctx=ctx)
+
+
+@router.post(
+    "/equilibrium/force", operation_id="solve_equilibrium_under_force", response_model=s.EquilibriumOut,
+    summary="Equilibrium under a prescribed tip force (dead load)",
+    description="A local minimiser of `E(q) - F . tip(q)` for the tip force `F = (fx, fy)` "
+                "(`tensegrity_opt.solve_equilibrium_under_force`); `fx < 0` compresses.",
+    responses=solve_responses(ex.FORCE_EQUILIBRIUM, "solver_failed", "no_equilibrium"))
+async def solve_equilibrium_under_force(
+    request: Request,
+    req: Annotated[s.ForceEquilibriumRequest, Body(openapi_examples={
+        "paper": {"summary": "the paper's chain under fx = -0.3",
+                  "value": {"manipulator": _M, "fx": -0.3, "fy": 0.0}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_manipulator(req.manipulator, settings)
+    return await solve(request, force_equilibrium_job, req, ctx=ctx)
+
+
+@router.post(
+    "/equilibria", operation_id="find_equilibria", response_model=s.EquilibriaOut,
+    summary="Every equilibrium for a tip deflection (minima, saddles, maxima)",
+    description="All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy; "
+                "`morse_index`/`kind` classify each one.",
+    responses=solve_responses(ex.EQUILIBRIA, "unreachable_target", "solver_failed"))
+async def find_equilibria(
+    request: Request,
+    req: Annotated[s.EquilibriaRequest, Body(openapi_examples={
+        "paper": {"summary": "the paper's chain, dx = 0.1", "value": {"manipulator": _M, "dx": 0.1, "dy": 0.0}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_manipulator(req.manipulator, settings)
+    return await solve(request, equilibria_job, req, ctx=ctx)

@@ -1,0 +1,485 @@
+"""Request and response models of the HTTP API (pydantic v2), separate from the library's types.
+
+Units are the caller's: lengths in one length unit, stiffness in force per length, forces in
+force units, energies in force x length, angles in radians.
+
+Requests are validated strictly (a number must be a JSON number, not a string; booleans are not
+numbers; NaN/Infinity are refused) and unknown fields are refused, so a typo is a 422 naming the
+field instead of a silently ignored input. The bounds below are hard caps of the schema; the
+server's configured limits (`/version` reports them) can be tighter and are then answered with
+a domain code (`too_many_segments`, `batch_too_large`).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+
+from .config import HARD_MAX_BATCH, HARD_MAX_SEGMENTS
+
+# ---------------------------------------------------------------------------- limits
+#: Range of the lengths (a, b, L0) and spring stiffnesses accepted (caller's units). Values far
+#: outside any physical design (e.g. subnormal numbers) only make the model underflow.
+MIN_LENGTH = 1.0e-6
+MAX_LENGTH = 1.0e6
+MIN_STIFFNESS = 1.0e-6
+MAX_STIFFNESS = 1.0e9
+#: Largest |dx|, |dy| (length units) and |force| accepted.
+MAX_DEFLECTION = 1.0e9
+MAX_FORCE = 1.0e12
+#: Joint angles in requests (rad): q0 and the torque-curve abscissae.
+MAX_ANGLE = 6.283185307179586
+#: Points of a force-deflection curve.
+MAX_CURVE_POINTS = 501
+#: Points per axis of an energy landscape.
+MAX_GRID = 201
+#: Abscissae of a segment torque curve.
+MAX_TORQUE_POINTS = 10001
+
+_STRICT = ConfigDict(strict=True, extra="forbid")
+
+Length = Annotated[float, Field(ge=MIN_LENGTH, le=MAX_LENGTH, allow_inf_nan=False)]
+Stiff = Annotated[float, Field(ge=MIN_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan=False)]
+Deflection = Annotated[float, Field(ge=-MAX_DEFLECTION, le=MAX_DEFLECTION, allow_inf_nan=False)]
+ForceValue = Annotated[float, Field(ge=-MAX_FORCE, le=MAX_FORCE, allow_inf_nan=False)]
+Angle = Annotated[float, Field(ge=-MAX_ANGLE, le=MAX_ANGLE, allow_inf_nan=False)]
+
+
+def _number_or_pair(v: Any) -> str:
+    return "<pair>" if isinstance(v, (list, tuple)) else "<number>"
+
+
+def _pair_of(item: Any, what: str) -> Any:
+    return Annotated[
+        Union[
+            Annotated[item, Tag("<number>")],
+            Annotated[list[item], Field(min_length=2, max_length=2), Tag("<pair>")],
+        ],
+        Discriminator(_number_or_pair),
+        Field(description=f"{what}: one number for both springs or the pair [spring 1, spring 2]"),
+    ]
+
+
+StiffPair = _pair_of(Stiff, "spring stiffness k (force / length)")
+LengthPair = _pair_of(Length, "spring rest length L0 (length units)")
+
+
+# ---------------------------------------------------------------------------- manipulator
+class SegmentIn(BaseModel):
+    """One dual-triangle segment."""
+
+    model_config = ConfigDict(strict=True, extra="forbid",
+                              json_schema_extra={"examples": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0},
+                                                              {"a": 1.0, "b": 1.0, "k": [1.0, 2.0], "L0": 1.0}]})
+
+    a: Length = Field(description="triangle half-height (length units)")
+    b: Length = Field(description="triangle half-length (length units); the segment is 2b long")
+    k: StiffPair = 1.0
+    L0: LengthPair = 1.0
+
+
+class UniformManipulatorIn(BaseModel):
+    """`n` identical segments."""
+
+    model_config = ConfigDict(strict=True, extra="forbid",
+                              json_schema_extra={"examples": [{"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]})
+
+    n: int = Field(ge=1, le=HARD_MAX_SEGMENTS, description=f"number of segments (server limit "
+                                                         f"TENSEGRITY_MAX_SEGMENTS, at most {HARD_MAX_SEGMENTS})")
+    a: Length = Field(1.0, description="triangle half-height (length units)")
+    b: Length = Field(1.0, description="triangle half-length (length units)")
+    k: StiffPair = 1.0
+    L0: LengthPair = 1.0
+
+
+class SegmentedManipulatorIn(BaseModel):
+    """Segments listed from base to tip; they may differ in every parameter."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}] * 4}]})
+
+    segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
+                                      description="segments from base to tip (server limit TENSEGRITY_MAX_SEGMENTS)")
+
+
+def _manipulator_kind(v: Any) -> str:
+    if isinstance(v, SegmentedManipulatorIn) or (isinstance(v, dict) and "segments" in v):
+        return "<segments>"
+    return "<uniform>"
+
+
+ManipulatorIn = Annotated[
+    Union[
+        Annotated[UniformManipulatorIn, Tag("<uniform>")],
+        Annotated[SegmentedManipulatorIn, Tag("<segments>")],
+    ],
+    Discriminator(_manipulator_kind),
+    Field(description='the chain: {"n", "a", "b", "k", "L0"} (uniform) or {"segments": [...]}'),
+]
+
+PAPER_CHAIN = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+
+
+class RangeIn(BaseModel):
+    """`num` evenly spaced values from `start` to `stop` inclusive (like `numpy.linspace`)."""
+
+    model_config = _STRICT
+
+    start: float = Field(allow_inf_nan=False)
+    stop: float = Field(allow_inf_nan=False)
+    num: int = Field(ge=1)
+
+
+def _list_or_range(v: Any) -> str:
+    return "<range>" if isinstance(v, (dict, RangeIn)) else "<list>"
+
+
+class DeflectionRange(RangeIn):
+    start: Deflection
+    stop: Deflection
+    num: int = Field(ge=1, le=MAX_CURVE_POINTS, description=f"number of points (at most {MAX_CURVE_POINTS})")
+
+
+class AngleRange(RangeIn):
+    start: Angle
+    stop: Angle
+    num: int = Field(ge=1, le=MAX_TORQUE_POINTS, description=f"number of points (at most {MAX_TORQUE_POINTS})")
+
+
+# ---------------------------------------------------------------------------- requests
+class EquilibriumRequest(BaseModel):
+    """Least-energy stable equilibrium with the tip held at `(2 sum(b) - dx, dy)`."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "dx": 0.1, "dy": 0.0}]})
+
+    manipulator: ManipulatorIn
+    dx: Deflection = Field(description="tip deflection along x (length units); dx > 0 shortens the chain")
+    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS,
+                                   description="optional nearby configuration (rad, one angle per joint) "
+                                               "for continuation; it competes with the global search")
+
+
+class ForceEquilibriumRequest(BaseModel):
+    """A local minimiser of `E(q) - F . tip(q)` for a dead tip load `F = (fx, fy)`."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "fx": -0.3, "fy": 0.0}]})
+
+    manipulator: ManipulatorIn
+    fx: ForceValue = Field(description="tip force along x (force units); fx < 0 compresses")
+    fy: ForceValue = Field(0.0, description="tip force along y (force units)")
+    q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS,
+                                   description="optional start configuration (rad)")
+
+
+class EquilibriaRequest(BaseModel):
+    """Every equilibrium (minima, saddles, maxima) for a tip deflection."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "dx": 0.1, "dy": 0.0}]})
+
+    manipulator: ManipulatorIn
+    dx: Deflection = Field(description="tip deflection along x (length units)")
+    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+
+
+class BucklingRequest(BaseModel):
+    """Critical loads and buckling modes of the straight configuration."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "boundary": "guided"}]})
+
+    manipulator: ManipulatorIn
+    boundary: Literal["guided", "free"] = Field(
+        "guided", description='"guided": tip held at dy = 0 (the paper); "free": cantilever')
+
+
+class ForceDeflectionRequest(BaseModel):
+    """Force-deflection curve by continuation along the least-energy stable branch."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "dx": {"start": 0.0, "stop": 0.5, "num": 6}, "dy": 0.0,
+                      "branch": "stable"}]})
+
+    manipulator: ManipulatorIn
+    dx: Annotated[
+        Union[
+            Annotated[list[Deflection], Field(min_length=1, max_length=MAX_CURVE_POINTS), Tag("<list>")],
+            Annotated[DeflectionRange, Tag("<range>")],
+        ],
+        Discriminator(_list_or_range),
+        Field(description=f"deflections in the order to follow: a list or {{start, stop, num}} "
+                          f"(at most {MAX_CURVE_POINTS} points)"),
+    ]
+    dy: Deflection = Field(0.0, description="tip deflection along y, the same at every point")
+    branch: Literal["stable", "all"] = Field(
+        "stable", description='"all" also returns every branch found at the first deflected point')
+
+
+class StiffnessRequest(BaseModel):
+    """Cartesian tangent stiffness at the equilibrium `/v1/equilibrium` returns."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "dx": 0.1, "dy": 0.0}]})
+
+    manipulator: ManipulatorIn
+    dx: Deflection = Field(description="tip deflection along x (length units)")
+    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS, description="optional nearby configuration")
+
+
+class SegmentTorqueRequest(BaseModel):
+    """Torque curve `M(q)` of one segment."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"segment": {"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}, "q": [-0.5, 0.0, 0.5]},
+                     {"segment": {"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0},
+                      "q": {"start": -1.0, "stop": 1.0, "num": 5}}]})
+
+    segment: SegmentIn
+    q: Annotated[
+        Union[
+            Annotated[list[Angle], Field(min_length=1, max_length=MAX_TORQUE_POINTS), Tag("<list>")],
+            Annotated[AngleRange, Tag("<range>")],
+        ],
+        Discriminator(_list_or_range),
+        Field(description=f"joint angles (rad, |q| <= 2 pi): a list or {{start, stop, num}} "
+                          f"(at most {MAX_TORQUE_POINTS} points)"),
+    ]
+
+
+class EnergyLandscapeRequest(BaseModel):
+    """Energy over a grid of two joint angles, the other two from inverse kinematics (n = 4 only)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "dx": 0.1, "dy": 0.0, "pair": [0, 3], "grid": 3}]})
+
+    manipulator: ManipulatorIn
+    dx: Deflection = Field(description="tip deflection along x (length units)")
+    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    pair: list[Annotated[int, Field(ge=0, le=3)]] = Field(
+        [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
+    grid: int = Field(51, ge=2, le=MAX_GRID, description=f"points per axis (2..{MAX_GRID})")
+    span: Annotated[float, Field(gt=0, le=MAX_ANGLE, allow_inf_nan=False)] | None = Field(
+        None, description="half-width of both axes (rad); default: the smaller joint limit of the pair")
+
+
+class Target(BaseModel):
+    """One tip deflection."""
+
+    model_config = _STRICT
+
+    dx: Deflection
+    dy: Deflection = 0.0
+
+
+class BatchEquilibriumRequest(BaseModel):
+    """Equilibria for a sequence of targets (a trajectory), solved in order."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "targets": [{"dx": 0.05, "dy": 0.0}, {"dx": 0.1, "dy": 0.0}],
+                      "continuation": True}]})
+
+    manipulator: ManipulatorIn
+    targets: list[Target] = Field(min_length=1, max_length=HARD_MAX_BATCH,
+                                  description="targets in order (server limit TENSEGRITY_MAX_BATCH)")
+    continuation: bool = Field(True, description="start each solve from the previous result (q0)")
+    q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS,
+                                   description="optional configuration near the first target")
+
+
+# ---------------------------------------------------------------------------- responses
+class Force(BaseModel):
+    fx: float = Field(description="tip force along x (force units)")
+    fy: float = Field(description="tip force along y (force units)")
+
+
+class SolverInfo(BaseModel):
+    status: str = Field(description="the solver's return status (IPOPT return_status, Newton status, or 'straight')")
+    iterations: int
+
+
+class EquilibriumOut(BaseModel):
+    """An equilibrium configuration."""
+
+    q: list[float] = Field(description="relative joint angles (rad)")
+    energy: float = Field(description="elastic energy (force x length)")
+    force: Force
+    morse_index: int = Field(description="negative eigenvalues of the reduced Hessian (0: stable)")
+    stable: bool
+    kind: Literal["minimum", "saddle", "maximum", "degenerate"]
+    shape: str = Field(description="shape label: I, C, U, ZU, Z or W<s>")
+    signs: str = Field(description="sign of each joint angle: +, - or 0")
+    tip: list[float] = Field(description="tip position [x, y]")
+    solver: SolverInfo
+
+
+class EquilibriaOut(BaseModel):
+    equilibria: list[EquilibriumOut] = Field(description="every equilibrium found, sorted by energy")
+
+
+class ModeOut(BaseModel):
+    load: float = Field(description="critical compressive load P (> 0); Fx = -load")
+    q: list[float] = Field(description="mode shape (rad per unit amplitude)")
+    fy: float = Field(description="Fy per unit amplitude (guided; 0 for free)")
+    energy_factor: float
+    mu_x: float
+    fy_coefficient: float
+    shape: str
+    signs: str
+    stable: bool
+
+
+class BucklingOut(BaseModel):
+    boundary: Literal["guided", "free"]
+    critical_force: float = Field(description="signed critical Fx0 = -min(loads) (negative: compressive)")
+    loads: list[float] = Field(description="all critical loads, ascending")
+    modes: list[ModeOut]
+
+
+class CurvePoint(BaseModel):
+    dx: float
+    dy: float
+    fx: float
+    fy: float
+    energy: float
+    q: list[float]
+    stable: bool
+    morse_index: int
+    shape: str
+    branch: int = Field(description="branch identifier (-1: straight)")
+
+
+class JumpOut(BaseModel):
+    kind: Literal["buckling", "branch_switch"]
+    dx_before: float
+    dx_after: float
+    force_before: Force
+    force_after: Force
+    branch_before: int
+    branch_after: int
+
+
+class BranchPoint(BaseModel):
+    """A point of one followed branch; numbers are null where the branch does not exist."""
+
+    dx: float
+    dy: float
+    exists: bool
+    fx: float | None
+    fy: float | None
+    energy: float | None
+    q: list[float | None]
+    stable: bool
+    morse_index: int = Field(description="-1 where the branch does not exist")
+    shape: str
+
+
+class BranchOut(BaseModel):
+    id: int
+    points: list[BranchPoint]
+
+
+class ForceDeflectionOut(BaseModel):
+    points: list[CurvePoint]
+    jumps: list[JumpOut]
+    branches: list[BranchOut] = Field(description='branch = "all" only (else empty)')
+
+
+class StiffnessOut(BaseModel):
+    matrix: list[list[float]] = Field(description="2 x 2 tangent stiffness dF_i / d tip_j (force / length)")
+    equilibrium: EquilibriumOut
+
+
+class SegmentTorqueOut(BaseModel):
+    q: list[float] = Field(description="joint angles (rad)")
+    torque: list[float] = Field(description="spring torque M(q) = -dE/dq")
+    dtorque: list[float] = Field(description="M'(q); the segment alone is stable where < 0")
+    energy: list[float] = Field(description="segment energy E(q)")
+    stiffness: float = Field(description="joint stiffness K = E''(0)")
+    monotonic: bool = Field(description="M(q) decreases over the whole physical range")
+    joint_limit: float = Field(description="physical range |q| < pi - 2 beta (rad)")
+
+
+class EnergyLandscapeOut(BaseModel):
+    pair: list[int]
+    qi: list[float] = Field(description="grid axis of joint pair[0] (rad)")
+    qj: list[float] = Field(description="grid axis of joint pair[1] (rad)")
+    energy: list[list[list[float | None]]] = Field(
+        description="energy[elbow][i][j], elbow 0: +1, 1: -1; null where unreachable or out of range")
+
+
+class BatchItem(BaseModel):
+    """The result for one target: `equilibrium` or `error` (the other is null)."""
+
+    index: int
+    dx: float
+    dy: float
+    equilibrium: EquilibriumOut | None
+    error: "ErrorOut | None"
+
+
+class BatchOut(BaseModel):
+    results: list[BatchItem]
+    succeeded: int
+    failed: int
+
+
+class Health(BaseModel):
+    status: Literal["ok"]
+
+
+class Ready(BaseModel):
+    status: Literal["ready", "starting"]
+    workers: int
+    queue_size: int
+    in_flight: int
+
+
+class Limits(BaseModel):
+    max_segments: int
+    max_batch: int
+    solve_timeout: float
+    batch_timeout: float
+    workers: int
+    queue_size: int
+    max_body_bytes: int
+    max_curve_points: int
+    max_grid: int
+    max_torque_points: int
+
+
+class VersionOut(BaseModel):
+    service: str
+    version: str
+    library_version: str
+    api: str
+    auth: bool
+    limits: Limits
+
+
+# ---------------------------------------------------------------------------- errors
+class FieldError(BaseModel):
+    field: str = Field(description="dotted path of the offending input, e.g. manipulator.segments[0].a")
+    message: str
+    type: str
+
+
+class ErrorOut(BaseModel):
+    """Every refusal has this shape."""
+
+    code: str = Field(description="machine-readable reason, e.g. validation_error, unreachable_target, "
+                                  "straight_not_equilibrium, straight_unstable, too_many_segments, "
+                                  "solver_failed, no_equilibrium, timeout, overloaded, body_too_large, "
+                                  "unauthorized")
+    message: str = Field(description="human-readable explanation")
+    field: str | None = Field(None, description="the input to blame, when there is one")
+    status: str | None = Field(None, description="solver return status(es), for solver failures")
+    errors: list[FieldError] | None = Field(None, description="every schema violation (validation_error only)")
+    details: dict[str, Any] | None = Field(None, description="extra numbers (e.g. distance and reach)")
+
+
+BatchItem.model_rebuild()
