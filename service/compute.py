@@ -211,3 +211,77 @@ def batch_job(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> dic
             item["error"] = body
         results.append(item)
     return {"results": results, "succeeded": ok, "failed": len(results) - ok}
+
+
+# ---------------------------------------------------------------------------- design and control
+def manipulator_out(m: to.Manipulator) -> dict[str, Any]:
+    return {"segments": [{"a": _num(sg.a), "b": _num(sg.b),
+                          "k": _num(sg.k1) if sg.k1 == sg.k2 else [_num(sg.k1), _num(sg.k2)],
+                          "L0": _num(sg.L1_0) if sg.L1_0 == sg.L2_0 else [_num(sg.L1_0), _num(sg.L2_0)]}
+                         for sg in m.segments]}
+
+
+def design_out(d: to.Design) -> dict[str, Any]:
+    return {"manipulator": manipulator_out(d.manipulator), "critical_force": _num(d.critical_force),
+            "loads": _nums(d.loads), "multiplicity": int(d.multiplicity), "active": list(d.active),
+            "initial_critical_force": _f(d.initial_critical_force), "feasible": bool(d.feasible),
+            "solver": {"status": d.status, "iterations": int(d.iterations)}}
+
+
+def _best_as_json(exc: to.InfeasibleDesignError) -> to.InfeasibleDesignError:
+    """The best point of an infeasible design, made JSON-ready for the error body."""
+    best = exc.best
+    if isinstance(best, to.Design):
+        try:
+            exc.best = design_out(best)
+        except NonFiniteResult:
+            exc.best = None
+    elif isinstance(best, dict):
+        exc.best = {k: v for k, v in best.items()}
+    return exc
+
+
+def design_critical_force_job(req: s.DesignCriticalForceRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    constraints: dict[str, Any] = {}
+    if req.total_length is not None and req.total_length is not False:
+        constraints["total_length"] = req.total_length
+    if req.tension is not None:
+        constraints["tension"] = (req.tension.lo, req.tension.hi)
+    if req.K_min is not None:
+        constraints["K_min"] = req.K_min
+    try:
+        d = to.maximize_critical_force(m, vary=tuple(dict.fromkeys(req.vary)),
+                                       bounds={k: (v.lo, v.hi) for k, v in req.bounds.items()},
+                                       budget=dict(req.budget), boundary=req.boundary, **constraints)
+    except to.InfeasibleDesignError as exc:
+        raise _best_as_json(exc) from None
+    return design_out(d)
+
+
+def preloads_for_load_job(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    try:
+        d = to.preloads_for_critical_force(m, req.required, boundary=req.boundary,
+                                           bounds=(req.bounds.lo, req.bounds.hi) if req.bounds else None)
+    except to.InfeasibleDesignError as exc:
+        raise _best_as_json(exc) from None
+    if not d.feasible:
+        raise _best_as_json(to.InfeasibleDesignError(
+            f"no rest lengths within the bounds give a critical load of {req.required:g}: the best achievable "
+            f"is {d.load:.6g}", status=d.status, best=d))
+    return design_out(d)
+
+
+def preloads_job(req: s.PreloadsRequest) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    try:
+        r = to.choose_preloads(m, (req.target.x, req.target.y), (req.load.fx, req.load.fy), req.objective,
+                               margin=req.margin, taut=req.taut,
+                               bounds=(req.bounds.lo, req.bounds.hi) if req.bounds else None,
+                               end_angle=req.end_angle)
+    except to.InfeasibleDesignError as exc:
+        raise _best_as_json(exc) from None
+    return {"manipulator": manipulator_out(r.manipulator), "preloads": _nums(r.preloads), "q": _nums(r.q),
+            "margin": _num(r.margin), "tip": _nums(r.tip), "energy": _num(r.energy),
+            "solver": {"status": r.status, "iterations": int(r.iterations)}}

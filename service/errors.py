@@ -114,6 +114,10 @@ def _plain(v: Any) -> Any:
         return bool(v)
     if isinstance(v, (str, int, bool)) or v is None:
         return v
+    if isinstance(v, dict):
+        return {str(k): _plain(x) for k, x in v.items()}
+    if isinstance(v, (list, tuple, np.ndarray)):
+        return [_plain(x) for x in v]
     return str(v)
 
 
@@ -155,6 +159,9 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
             out["field"] = field
         if isinstance(exc, SolverError):
             out["status"] = str(exc.status) if exc.status is not None else None
+        best = getattr(exc, "best", None)
+        if isinstance(best, dict):
+            out["best"] = _plain(best)
         details = {k: _plain(v) for k, v in d.items() if k not in ("code", "message", "field", "status")}
         if details:
             out["details"] = details

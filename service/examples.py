@@ -84,6 +84,23 @@ BATCH = {"results": [
                "details": {"distance": 13.0, "reach": 7.0}}},
 ], "succeeded": 1, "failed": 1}
 
+DESIGN = {
+    "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.768, "L0": 1.0}, {"a": 1.0, "b": 1.0, "k": 0.2, "L0": 1.0},
+                                 {"a": 1.0, "b": 1.0, "k": 1.178286, "L0": 1.0},
+                                 {"a": 1.0, "b": 1.0, "k": 0.853714, "L0": 1.0}]},
+    "critical_force": -0.691429, "loads": [0.691429, 0.846986, 1.751871], "multiplicity": 1,
+    "active": ["k[1] >= 0.2", "sum(k) <= 4"], "initial_critical_force": -0.572793, "feasible": True,
+    "solver": {"status": "Solve_Succeeded", "iterations": 17}}
+
+PRELOADS = {
+    "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.041489, 0.944056]},
+                                 {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [0.736705, 1.198028]},
+                                 {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [0.468097, 1.248362]},
+                                 {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [0.785856, 1.154345]}]},
+    "preloads": [[1.041489, 0.944056], [0.736705, 1.198028], [0.468097, 1.248362], [0.785856, 1.154345]],
+    "q": [-0.294564, 0.281086, 0.697109, 0.321762], "margin": 0.977663, "tip": [7.0, 1.5], "energy": 4.215705,
+    "solver": {"status": "Solve_Succeeded", "iterations": 5}}
+
 ERRORS: dict[int, dict[str, dict[str, Any]]] = {
     401: {"unauthorized": {"summary": "missing or wrong API key",
                            "value": {"code": "unauthorized", "message": "missing API key: send the X-API-Key header",
@@ -117,6 +134,12 @@ ERRORS: dict[int, dict[str, dict[str, Any]]] = {
         "solver_failed": {"summary": "no solve converged (IPOPT status)", "value": {
             "code": "solver_failed", "message": "no local solve converged inside the physical range for dx=7.9, dy=0",
             "status": "Infeasible_Problem_Detected x8, Maximum_Iterations_Exceeded x6"}},
+        "design_infeasible": {"summary": "infeasible design problem: IPOPT status and best point", "value": {
+            "code": "design_infeasible",
+            "message": "no rest lengths within the bounds give a critical load of 10: the best achievable is 1.14559",
+            "status": "Solve_Succeeded",
+            "best": {"critical_force": -1.145586, "feasible": False, "multiplicity": 1,
+                     "active": ["L0[0] <= 2", "L0[1] <= 2", "L0[2] <= 2", "L0[3] <= 2"]}}},
         "no_equilibrium": {"summary": "no equilibrium inside the physical range", "value": {
             "code": "no_equilibrium",
             "message": "no equilibrium inside the physical range for the tip force (-0.6, 0): the minimiser "
