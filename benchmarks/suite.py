@@ -1,0 +1,727 @@
+"""The benchmark suite: ``python -m benchmarks [--quick] [--json PATH] [--md PATH] [--no-service]``.
+
+Prints one table (case | n | ours (median) | baseline | baseline (median) | ratio (baseline/ours) |
+target | met?) with numbered notes, and writes the same data as JSON (default
+``benchmarks/results.json``) and as markdown (default ``benchmarks/RESULTS.md``), both with the
+machine information. Every time is a median over repeated runs after a warm-up
+(``time.perf_counter``); every baseline is measured in the same run.
+
+Cases (the issue's targets):
+
+1. n = 4 local solve warm-started from the solution 0.001 away: <= 0.2 ms and >= 20x SLSQP.
+2. n = 4 global solve, not warm-started (solver built): <= 5 ms; vs the paper's energy method
+   and a 14-start SLSQP.
+3. n = 4 force-deflection curve, 1000 points: <= 0.1 s and >= 30x a warm-started SLSQP loop.
+4. n = 1000, first call in a fresh process (build included): <= 2 s; cached: <= 50 ms; vs SLSQP.
+5. n = 10000 cached: <= 1 s; exponent of the cached time over n = 1000..10000: <= 1.2.
+6. critical load n = 10000: <= 0.5 s; dense reduced ``eigh`` at n = 2000 for the ratio.
+7. service ``/v1/equilibrium`` under 32 clients: throughput >= 0.5x ``/healthz``, p99 <= 25 ms, 0 errors.
+8. service ``/v1/batch/equilibrium`` with 1000 targets: median latency <= 0.3 s.
+"""
+
+from __future__ import annotations
+
+import argparse
+import datetime as _dt
+import json
+import math
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import textwrap
+import time
+import traceback
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable
+
+import numpy as np
+
+import tensegrity_opt as to
+
+from . import baselines as bl
+from .http_load import ServerStartError
+
+ROOT = Path(__file__).resolve().parents[1]
+HERE = Path(__file__).resolve().parent
+PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+
+
+def log(msg: str) -> None:
+    print(f"[bench {time.strftime('%H:%M:%S')}] {msg}", file=sys.stderr, flush=True)
+
+
+# ============================================================================ configuration
+@dataclass(frozen=True)
+class Config:
+    quick: bool
+    service: bool
+    # case 1
+    c1_targets: int
+    c1_reps: int
+    c1_slsqp_reps: int
+    c1_tc_reps: int
+    # case 2
+    c2_targets: int
+    c2_reps: int
+    c2_ms_targets: int
+    # case 3
+    c3_reps: int
+    c3_base_reps: int
+    # case 4
+    c4_subprocs: int
+    c4_slsqp_timeout: float
+    # case 5
+    c5_ns: tuple[int, ...]
+    c5_reps: int
+    # case 6
+    c6_reps: int
+    c6_dense_reps: int
+    # case 7/8
+    c7_duration: float
+    c8_reps: int
+
+    @classmethod
+    def make(cls, quick: bool, service: bool) -> "Config":
+        if quick:
+            return cls(quick=True, service=service, c1_targets=5, c1_reps=15, c1_slsqp_reps=3, c1_tc_reps=1,
+                       c2_targets=12, c2_reps=2, c2_ms_targets=4, c3_reps=3, c3_base_reps=1,
+                       c4_subprocs=1, c4_slsqp_timeout=5.0, c5_ns=(1000, 2000, 4000, 8000, 10000), c5_reps=3,
+                       c6_reps=3, c6_dense_reps=1, c7_duration=3.0, c8_reps=2)
+        return cls(quick=False, service=service, c1_targets=10, c1_reps=50, c1_slsqp_reps=10, c1_tc_reps=3,
+                   c2_targets=40, c2_reps=3, c2_ms_targets=12, c3_reps=7, c3_base_reps=3,
+                   c4_subprocs=3, c4_slsqp_timeout=60.0, c5_ns=(1000, 2000, 4000, 8000, 10000), c5_reps=5,
+                   c6_reps=5, c6_dense_reps=2, c7_duration=10.0, c8_reps=4)
+
+
+# ============================================================================ results
+@dataclass
+class Row:
+    case: str
+    name: str
+    n: int | str
+    ours: float | None                 # value in `unit`
+    unit: str                          # "ms", "req/s", "", "errors"
+    baseline: str = "-"
+    baseline_value: float | None = None
+    baseline_display: str | None = None  # overrides the formatted value (e.g. ">60 s (stopped)")
+    ratio: float | None = None           # baseline / ours
+    ratio_display: str | None = None
+    target: str = "-"
+    met: bool | None = None
+    notes: list[str] = field(default_factory=list)
+    samples: list[float] | None = None
+    baseline_samples: list[float] | None = None
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    def to_json(self) -> dict[str, Any]:
+        d = {k: getattr(self, k) for k in ("case", "name", "n", "unit", "baseline", "ratio", "target", "met",
+                                             "notes")}
+        d["ours"] = self.ours
+        d["ours_display"] = fmt(self.ours, self.unit)
+        d["baseline_value"] = self.baseline_value
+        d["baseline_display"] = self.baseline_cell()
+        d["ratio_display"] = self.ratio_cell()
+        if self.samples is not None:
+            d["samples_s"] = self.samples               # raw timings in seconds
+        if self.baseline_samples is not None:
+            d["baseline_samples_s"] = self.baseline_samples
+        if self.extra:
+            d["extra"] = self.extra
+        return _jsonable(d)
+
+    def baseline_cell(self) -> str:
+        if self.baseline_display is not None:
+            return self.baseline_display
+        return fmt(self.baseline_value, self.unit) if self.baseline_value is not None else "-"
+
+    def ratio_cell(self) -> str:
+        if self.ratio_display is not None:
+            return self.ratio_display
+        if self.ratio is None or not math.isfinite(self.ratio):
+            return "-"
+        return f"{self.ratio:.3g}x" if self.ratio < 1000 else f"{self.ratio:.0f}x"
+
+
+def fmt(v: float | None, unit: str) -> str:
+    if v is None:
+        return "-"
+    if isinstance(v, float) and not math.isfinite(v):
+        return str(v)
+    if unit == "ms":
+        if v < 1:
+            return f"{v:.3f} ms"
+        if v < 100:
+            return f"{v:.2f} ms"
+        return f"{v:.0f} ms"
+    if unit == "req/s":
+        return f"{v:.0f} req/s"
+    if unit == "errors":
+        return f"{int(v)} errors"
+    return f"{v:.3g}" + (f" {unit}" if unit else "")
+
+
+def _jsonable(x: Any) -> Any:
+    if isinstance(x, dict):
+        return {str(k): _jsonable(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_jsonable(v) for v in x]
+    if isinstance(x, (np.floating,)):
+        x = float(x)
+    if isinstance(x, (np.integer,)):
+        return int(x)
+    if isinstance(x, (np.bool_,)):
+        return bool(x)
+    if isinstance(x, float) and not math.isfinite(x):
+        return None
+    if isinstance(x, np.ndarray):
+        return _jsonable(x.tolist())
+    return x
+
+
+def median_ms(ts: list[float]) -> float:
+    return float(statistics.median(ts) * 1e3)
+
+
+def repeat(fn: Callable[[], Any], reps: int, warmup: int = 1) -> list[float]:
+    """``reps`` timings (seconds) of ``fn()`` after ``warmup`` untimed calls."""
+    for _ in range(warmup):
+        fn()
+    out = []
+    for _ in range(reps):
+        t0 = time.perf_counter()
+        fn()
+        out.append(time.perf_counter() - t0)
+    return out
+
+
+def rel(a: float, b: float) -> float:
+    return abs(a - b) / max(abs(b), 1e-300)
+
+
+def random_targets(m: to.Manipulator, count: int, seed: int, dx=(0.05, 3.0), dy=(-1.0, 1.0)):
+    """Deflections the library solves (targets it rejects are skipped and counted)."""
+    rng = np.random.default_rng(seed)
+    out, skipped = [], 0
+    while len(out) < count:
+        t = (float(rng.uniform(*dx)), float(rng.uniform(*dy)))
+        try:
+            eq = to.solve_equilibrium(m, *t)
+        except to.TensegrityError:
+            skipped += 1
+            if skipped > 10 * count:
+                raise
+            continue
+        out.append((t, eq))
+    return out, skipped
+
+
+# ============================================================================ cases
+def case1(cfg: Config) -> list[Row]:
+    """n = 4 local solve warm-started from the solution at a target 0.001 away."""
+    m = to.Manipulator.uniform(4)
+    ch = bl.Chain(m)
+    bases, skipped = random_targets(m, cfg.c1_targets, seed=101)
+    rng = np.random.default_rng(102)
+    ours, slsqp, tc = [], [], []
+    e_slsqp, e_tc, ours_status, not_converged = [], [], set(), 0
+    for (dx, dy), prev in bases:
+        ang = rng.uniform(0, 2 * np.pi)
+        dx2, dy2 = dx + 1e-3 * math.cos(ang), dy + 1e-3 * math.sin(ang)
+        q0 = prev.q.copy()
+        eq = to.solve_equilibrium(m, dx2, dy2, q0=q0, local=True)
+        ours_status.add(eq.status)
+        ours += repeat(lambda: to.solve_equilibrium(m, dx2, dy2, q0=q0, local=True), cfg.c1_reps)
+        r = bl.slsqp_equilibrium(ch, dx2, dy2, q0)
+        not_converged += not r.success
+        e_slsqp.append(rel(r.energy, eq.energy))
+        slsqp += repeat(lambda: bl.slsqp_equilibrium(ch, dx2, dy2, q0), cfg.c1_slsqp_reps)
+        r = bl.trust_constr_equilibrium(ch, dx2, dy2, q0)
+        not_converged += not r.success
+        e_tc.append(rel(r.energy, eq.energy))
+        tc += repeat(lambda: bl.trust_constr_equilibrium(ch, dx2, dy2, q0), cfg.c1_tc_reps, warmup=0)
+    o = median_ms(ours)
+    s = median_ms(slsqp)
+    t = median_ms(tc)
+    name = "warm-start local solve (0.001 away)"
+    common = (f"{len(bases)} targets dx in [0.05,3], dy in [-1,1]; ours = solve_equilibrium(q0=prev.q, local=True), "
+              f"status {sorted(ours_status)}")
+    r1 = Row("1", name, 4, o, "ms", "SLSQP from same q0 (tol 1e-10)", s, ratio=s / o,
+             target="<= 0.2 ms and >= 20x", met=(o <= 0.2 and s / o >= 20), samples=ours, baseline_samples=slsqp,
+             notes=[common, f"SLSQP energy vs ours: max rel diff {max(e_slsqp):.1e}"])
+    r2 = Row("1", name, 4, o, "ms", "trust-constr from same q0 (exact Hessians)", t, ratio=t / o,
+             target="(info)", met=None, baseline_samples=tc,
+             notes=[f"trust-constr energy vs ours: max rel diff {max(e_tc):.1e}; baselines not converged: "
+                    f"{not_converged}"])
+    return [r1, r2]
+
+
+def case2(cfg: Config) -> list[Row]:
+    """n = 4 global solve (no q0; solver already built)."""
+    m = to.Manipulator.uniform(4)
+    ch = bl.Chain(m)
+    targets, skipped = random_targets(m, cfg.c2_targets, seed=202)
+    ours: list[float] = []
+    to.solve_equilibrium(m, 0.5, 0.1)            # warm-up
+    for (dx, dy), _ in targets:
+        ours += repeat(lambda: to.solve_equilibrium(m, dx, dy), cfg.c2_reps, warmup=0)
+    o = median_ms(ours)
+    # the paper's energy method
+    bl.energy_method_n4(ch, 0.5, 0.1)           # warm-up
+    em_t, em_cmp = [], []
+    for (dx, dy), eq in targets:
+        r, dt = bl.timed(bl.energy_method_n4, ch, dx, dy)
+        em_t.append(dt)
+        em_cmp.append((r.energy - eq.energy) / abs(eq.energy))
+    em = median_ms(em_t)
+    # SLSQP multistart, 14 random starts
+    ms_t, ms_cmp = [], []
+    for (dx, dy), eq in targets[:cfg.c2_ms_targets]:
+        r, dt = bl.timed(bl.slsqp_multistart, ch, dx, dy, 14)
+        ms_t.append(dt)
+        ms_cmp.append((r.energy - eq.energy) / abs(eq.energy))
+    ms = median_ms(ms_t)
+
+    def agree(c):
+        c = np.asarray(c)
+        same = int(np.sum(np.abs(c) <= 1e-8))
+        lower = int(np.sum(c < -1e-8))
+        return f"same energy (1e-8) on {same}/{c.size}, baseline lower on {lower}, max |rel diff| {np.abs(c).max():.1e}"
+
+    name = "global solve, not warm-started"
+    note0 = (f"{len(targets)} random targets dx in [0.05,3], dy in [-1,1] ({skipped} rejected by the library), "
+             f"{cfg.c2_reps} runs each")
+    r1 = Row("2", name, 4, o, "ms", "energy method: 101x101 grid (q1,q4) + IK + Nelder-Mead", em, ratio=em / o,
+             target="<= 5 ms", met=o <= 5.0, samples=ours, baseline_samples=em_t,
+             notes=[note0, "energy method vs ours: " + agree(em_cmp)],
+             extra={"energy_method_rel_diff": em_cmp})
+    r2 = Row("2", name, 4, o, "ms", "SLSQP multistart, 14 random starts", ms, ratio=ms / o, target="(info)",
+             met=None, baseline_samples=ms_t,
+             notes=[f"SLSQP multistart on the first {len(ms_t)} targets vs ours: " + agree(ms_cmp)],
+             extra={"multistart_rel_diff": ms_cmp})
+    return [r1, r2]
+
+
+def case3(cfg: Config) -> list[Row]:
+    m = to.Manipulator.uniform(4)
+    ch = bl.Chain(m)
+    dxs = np.linspace(0, 2, 1000)
+    curve = to.force_deflection(m, dxs)
+    ours = repeat(lambda: to.force_deflection(m, dxs), cfg.c3_reps)
+    base = repeat(lambda: bl.slsqp_force_deflection(ch, dxs), cfg.c3_base_reps, warmup=0)
+    res = bl.slsqp_force_deflection(ch, dxs)
+    E = np.array([r.energy for r in res])
+    d = (E - curve.energy) / np.maximum(np.abs(curve.energy), 1e-300)
+    o, b = median_ms(ours), median_ms(base)
+    note = (f"SLSQP curve vs ours: energies equal (1e-8) at {int(np.sum(np.abs(d) <= 1e-8))}/1000 points, "
+            f"SLSQP lower at {int(np.sum(d < -1e-8))}, max |rel diff| {np.abs(d).max():.1e}; "
+            f"{sum(not r.success for r in res)} SLSQP points not converged; ours: {len(curve.jumps)} jumps")
+    return [Row("3", "force-deflection curve, 1000 points", 4, o, "ms", "SLSQP loop, warm-started from previous",
+                b, ratio=b / o, target="<= 100 ms and >= 30x", met=(o <= 100 and b / o >= 30), samples=ours,
+                baseline_samples=base, notes=[note])]
+
+
+_FIRST_CALL = textwrap.dedent("""
+    import json, sys, time
+    import tensegrity_opt as to
+    n, dx = int(sys.argv[1]), float(sys.argv[2])
+    t0 = time.perf_counter()
+    eq = to.solve_equilibrium(to.Manipulator.uniform(n), dx)
+    t1 = time.perf_counter()
+    eq2 = to.solve_equilibrium(to.Manipulator.uniform(n), dx * 1.001)
+    t2 = time.perf_counter()
+    print(json.dumps({"first_s": t1 - t0, "second_s": t2 - t1, "energy": eq.energy, "status": eq.status}))
+""")
+
+_SLSQP_CHILD = textwrap.dedent("""
+    import json, sys, time
+    sys.path.insert(0, sys.argv[3])
+    import tensegrity_opt as to
+    from benchmarks import baselines as bl
+    n, dx = int(sys.argv[1]), float(sys.argv[2])
+    ch = bl.Chain(to.Manipulator.uniform(n))
+    q0 = bl.mode_start(ch, dx)                  # the start is built first (not timed)
+    print("ready", flush=True)
+    t0 = time.perf_counter()
+    r = bl.slsqp_equilibrium(ch, dx, 0.0, q0, maxiter=2000)
+    t1 = time.perf_counter()
+    print(json.dumps({"time_s": t1 - t0, "energy": r.energy, "success": r.success, "nit": r.nit,
+                      "message": r.message, "tip_error": r.tip_error}), flush=True)
+""")
+
+
+_SWEEP_CHILD = textwrap.dedent("""
+    import json, statistics, sys, time
+    import numpy as np
+    import tensegrity_opt as to
+    ns, reps = [int(x) for x in sys.argv[1].split(",")], int(sys.argv[2])
+    out = {}
+    for n in ns:
+        m = to.Manipulator.uniform(n)
+        L = m.straight_length
+        to.solve_equilibrium(m, 0.05 * L)
+        ts = []
+        for i in range(reps):
+            t0 = time.perf_counter()
+            to.solve_equilibrium(m, 0.05 * L * (1 + 1e-3 * (i + 1)))
+            ts.append(time.perf_counter() - t0)
+        out[n] = statistics.median(ts) * 1e3
+    print(json.dumps(out))
+""")
+
+
+def _slsqp_subprocess(n: int, dx: float, timeout: float) -> dict[str, Any]:
+    proc = subprocess.Popen([sys.executable, "-c", _SLSQP_CHILD, str(n), repr(dx), str(ROOT)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=str(ROOT))
+    try:
+        line = proc.stdout.readline()           # the start is built (not timed)
+        if line.strip() != "ready":
+            proc.wait(30)
+            return {"error": f"child failed: {proc.stderr.read()[-800:]}"}
+        t0 = time.perf_counter()
+        try:
+            out, err = proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.communicate()
+            return {"stopped": True, "timeout_s": timeout, "elapsed_s": time.perf_counter() - t0}
+        if proc.returncode != 0:
+            return {"error": f"child exited {proc.returncode}: {err[-800:]}"}
+        return json.loads(out.strip().splitlines()[-1])
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+
+
+def case4_5(cfg: Config) -> list[Row]:
+    """n = 1000 first call (fresh process) and cached; n = 10000 cached; scaling exponent."""
+    rows: list[Row] = []
+    n4 = 1000
+    L = 2.0 * n4
+    dx = 0.05 * L
+    firsts, seconds, energies = [], [], []
+    for _ in range(cfg.c4_subprocs):
+        out = subprocess.run([sys.executable, "-c", _FIRST_CALL, str(n4), repr(dx)], capture_output=True, text=True,
+                             cwd=str(ROOT), timeout=300)
+        if out.returncode != 0:
+            raise RuntimeError(f"first-call subprocess failed: {out.stderr[-800:]}")
+        d = json.loads(out.stdout.strip().splitlines()[-1])
+        firsts.append(d["first_s"])
+        seconds.append(d["second_s"])
+        energies.append(d["energy"])
+    first = median_ms(firsts)
+    # scaling sweep (main process): first call builds, then cached calls with slightly different dx
+    sweep: dict[int, dict[str, Any]] = {}
+    for n in cfg.c5_ns:
+        m = to.Manipulator.uniform(n)
+        Ln = m.straight_length
+        t0 = time.perf_counter()
+        eq = to.solve_equilibrium(m, 0.05 * Ln)
+        build = time.perf_counter() - t0
+        ts, cpu, its = [], [], []
+        for i in range(cfg.c5_reps):
+            c0 = time.process_time()
+            t0 = time.perf_counter()
+            e = to.solve_equilibrium(m, 0.05 * Ln * (1 + 1e-3 * (i + 1)))
+            ts.append(time.perf_counter() - t0)
+            cpu.append(time.process_time() - c0)
+            its.append(e.iterations)
+        sweep[n] = {"first_in_process_s": build, "cached_s": ts, "cached_median_ms": median_ms(ts),
+                    "cached_cpu_s": cpu, "cached_cpu_median_ms": median_ms(cpu), "final_newton_iterations": its,
+                    "energy": eq.energy, "status": eq.status}
+        log(f"  n={n}: cached median {median_ms(ts):.1f} ms (cpu {median_ms(cpu):.1f} ms)")
+    ns = np.array(cfg.c5_ns, float)
+    tm = np.array([sweep[n]["cached_median_ms"] for n in cfg.c5_ns])
+    slope = float(np.polyfit(np.log(ns), np.log(tm), 1)[0])
+    local = [float(np.log(tm[i + 1] / tm[i]) / np.log(ns[i + 1] / ns[i])) for i in range(len(ns) - 1)]
+    tc = np.array([sweep[n]["cached_cpu_median_ms"] for n in cfg.c5_ns])
+    slope_cpu = float(np.polyfit(np.log(ns), np.log(tc), 1)[0])
+    # SLSQP at n = 1000 from the mode-shaped start (subprocess with a time limit)
+    log(f"  SLSQP n={n4} (limit {cfg.c4_slsqp_timeout:g} s)")
+    sl = _slsqp_subprocess(n4, dx, cfg.c4_slsqp_timeout)
+    e_ours = sweep[n4]["energy"] if n4 in sweep else energies[0]
+    if "time_s" in sl:
+        b_ms = sl["time_s"] * 1e3
+        b_disp = None
+        b_note = (f"SLSQP n=1000 from the first-mode start: {sl['nit']} iterations, success {sl['success']}, "
+                  f"energy rel diff vs ours {rel(sl['energy'], e_ours):.1e}")
+    elif sl.get("stopped"):
+        b_ms = None
+        b_disp = f">{cfg.c4_slsqp_timeout:g} s (stopped)"
+        b_note = f"SLSQP n=1000 stopped after {cfg.c4_slsqp_timeout:g} s"
+    else:
+        b_ms = None
+        b_disp = "failed"
+        b_note = "SLSQP n=1000: " + sl.get("error", "?")
+
+    def ratio_of(o_ms):
+        if b_ms is not None:
+            return b_ms / o_ms, None
+        if sl.get("stopped"):
+            return None, f">{cfg.c4_slsqp_timeout * 1e3 / o_ms:.0f}x"
+        return None, "-"
+
+    r, rd = ratio_of(first)
+    rows.append(Row("4", "first call, fresh process (build incl.)", n4, first, "ms", "SLSQP n=1000, mode start",
+                    b_ms, baseline_display=b_disp, ratio=r, ratio_display=rd, target="<= 2 s", met=first <= 2000,
+                    samples=firsts,
+                    notes=[f"dx = 0.05 * straight length = {dx:g}; {len(firsts)} fresh processes, timed from after "
+                           f"the imports (Manipulator + solve); second call there: "
+                           f"{median_ms(seconds):.1f} ms", b_note],
+                    extra={"slsqp": sl}))
+    cached = sweep[n4]["cached_median_ms"]
+    r, rd = ratio_of(cached)
+    rows.append(Row("4", "cached (2nd+ call, other dx)", n4, cached, "ms", "SLSQP n=1000, mode start", b_ms,
+                    baseline_display=b_disp, ratio=r, ratio_display=rd, target="<= 50 ms", met=cached <= 50,
+                    samples=sweep[n4]["cached_s"]))
+    c10 = sweep[10000]["cached_median_ms"] if 10000 in sweep else float("nan")
+    rows.append(Row("5", "cached, dx = 0.05 L", 10000, c10, "ms", target="<= 1 s", met=c10 <= 1000,
+                    samples=sweep.get(10000, {}).get("cached_s"),
+                    notes=["cached medians (ms): " + ", ".join(f"n={n}: {sweep[n]['cached_median_ms']:.1f}"
+                                                               for n in cfg.c5_ns)]))
+    # the same sweep with single-threaded BLAS (diagnostic: OpenBLAS threads vectors longer than 10000)
+    env = {**os.environ, "OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1"}
+    out = subprocess.run([sys.executable, "-c", _SWEEP_CHILD, ",".join(map(str, cfg.c5_ns)), str(cfg.c5_reps)],
+                         capture_output=True, text=True, cwd=str(ROOT), timeout=300, env=env)
+    blas1 = {int(k): v for k, v in json.loads(out.stdout.strip().splitlines()[-1]).items()} \
+        if out.returncode == 0 else {}
+    rows.append(Row("5", "exponent of cached time vs n", "1e3..1e4", slope, "", target="<= 1.2", met=slope <= 1.2,
+                    notes=["local exponents between consecutive n: " + ", ".join(f"{x:.2f}" for x in local)
+                           + f"; exponent of the process CPU time instead of wall time: {slope_cpu:.2f}; "
+                           "Newton iterations of the returned solve at n=10000 per run: "
+                           + str(sweep.get(10000, {}).get("final_newton_iterations"))],
+                    extra={"sweep": sweep, "local_exponents": local, "exponent_cpu_time": slope_cpu}))
+    if blas1 and 10000 in blas1:
+        t1 = np.array([blas1[n] for n in cfg.c5_ns])
+        slope1 = float(np.polyfit(np.log(ns), np.log(t1), 1)[0])
+        rows.append(Row("5", "cached, OPENBLAS_NUM_THREADS=1 (diagnostic)", 10000, blas1[10000], "ms",
+                        target="(info)", met=None,
+                        notes=["fresh process with single-threaded BLAS, same sweep: " + ", ".join(
+                            f"n={n}: {blas1[n]:.1f} ms" for n in cfg.c5_ns) + f"; exponent {slope1:.2f}"],
+                        extra={"sweep_ms": blas1, "exponent": slope1}))
+    return rows
+
+
+def case6(cfg: Config) -> list[Row]:
+    m = to.Manipulator.uniform(10000)
+    bk = to.critical_force(m)
+    ours = repeat(lambda: to.critical_force(m), cfg.c6_reps)
+    o = median_ms(ours)
+    m2 = to.Manipulator.uniform(2000)
+    bk2 = to.critical_force(m2)
+    ours2 = repeat(lambda: to.critical_force(m2), cfg.c6_reps)
+    o2 = median_ms(ours2)
+    nm = len(bk2.loads)
+    bl.dense_critical_loads(to.Manipulator.uniform(200), n_modes=nm)      # warm-up of LAPACK
+    w, _ = bl.dense_critical_loads(m2, n_modes=nm)
+    dense = repeat(lambda: bl.dense_critical_loads(m2, n_modes=nm), cfg.c6_dense_reps, warmup=0)
+    d = median_ms(dense)
+    return [
+        Row("6", "critical load (guided)", 10000, o, "ms", target="<= 0.5 s", met=o <= 500, samples=ours,
+            notes=[f"critical force n=10000: {bk.force:.6e} ({len(bk.loads)} loads)"]),
+        Row("6", "critical load (guided) - baseline row is n=2000", 2000, o2, "ms",
+            "dense reduced eigh (null_space + eigh subset), n=2000", d, ratio=d / o2, target="(info)", met=None,
+            samples=ours2, baseline_samples=dense,
+            notes=[f"n=2000, {nm} lowest loads; dense vs ours lowest load rel diff {rel(float(w[0]), float(bk2.loads[0])):.1e}"]),
+    ]
+
+
+def case7_8(cfg: Config) -> list[Row]:
+    from . import http_load as hl
+
+    rows: list[Row] = []
+    with hl.own_server() as url:
+        log(f"  server at {url}")
+        hz = hl.load_phase(url, lambda i, k: ("GET", "/healthz", None), 32, cfg.c7_duration)
+        bodies = [hl.json_body({"manipulator": PAPER, "dx": 0.1 + 1e-4 * j, "dy": 0.0}) for j in range(1000)]
+        eq = hl.load_phase(url, lambda i, k: ("POST", "/v1/equilibrium", bodies[(i * 31 + k) % 1000]), 32,
+                           cfg.c7_duration)
+        H, E = hz.summary(), eq.summary()
+        ratio = H["throughput_rps"] / E["throughput_rps"] if E["throughput_rps"] else float("inf")
+        rel_tp = E["throughput_rps"] / H["throughput_rps"] if H["throughput_rps"] else float("nan")
+        common = (f"32 keep-alive clients on loopback, {cfg.c7_duration:g} s per phase; /v1/equilibrium n=4, "
+                  f"dx in [0.1, 0.2); /v1/equilibrium p50 {E['p50_ms']:.1f} ms, p99 {E['p99_ms']:.1f} ms, "
+                  f"{E['requests']} requests; /healthz p50 {H['p50_ms']:.2f} ms, {H['requests']} requests")
+        rows.append(Row("7", "service /v1/equilibrium throughput", 4, E["throughput_rps"], "req/s",
+                        "GET /healthz (same client, same run)", H["throughput_rps"], ratio=ratio,
+                        target=">= 0.5x healthz (ratio <= 2)", met=rel_tp >= 0.5,
+                        notes=[common, f"/v1/equilibrium = {rel_tp:.3f}x /healthz"],
+                        extra={"equilibrium": E, "healthz": H}))
+        rows.append(Row("7", "service /v1/equilibrium p99 latency", 4, E["p99_ms"], "ms", "GET /healthz p99",
+                        H["p99_ms"], ratio=H["p99_ms"] / E["p99_ms"], target="<= 25 ms", met=E["p99_ms"] <= 25))
+        rows.append(Row("7", "service /v1/equilibrium errors", 4, float(E["errors"]), "errors", "GET /healthz errors",
+                        float(H["errors"]), target="0", met=E["errors"] == 0,
+                        notes=[f"statuses: /v1/equilibrium {E['statuses']}, /healthz {H['statuses']}"]))
+        # case 8: a 1000-target trajectory in one request
+        s = np.linspace(0.0, 1.0, 1000)
+        traj = np.column_stack([0.05 + 1.5 * s, 0.3 * np.sin(2 * np.pi * s)])
+        body = {"manipulator": PAPER, "targets": [{"dx": float(a), "dy": float(b)} for a, b in traj],
+                "continuation": True}
+        import httpx
+
+        lat: list[float] = []
+        info: dict[str, Any] = {}
+        with httpx.Client(base_url=url, timeout=300) as client:
+            for i in range(cfg.c8_reps + (0 if cfg.quick else 1)):
+                t0 = time.perf_counter()
+                resp = client.post("/v1/batch/equilibrium", json=body)
+                dt = time.perf_counter() - t0
+                if resp.status_code != 200:
+                    raise RuntimeError(f"/v1/batch/equilibrium answered {resp.status_code}: {resp.text[:300]}")
+                if i > 0 or cfg.quick:
+                    lat.append(dt)
+                j = resp.json()
+                info = {"succeeded": j.get("succeeded"), "failed": j.get("failed")}
+        m = to.Manipulator.uniform(4)
+        lib = repeat(lambda: to.solve_equilibria_batch(m, traj), 5)
+        o = median_ms(lat)
+        lb = median_ms(lib)
+        rows.append(Row("8", "service /v1/batch/equilibrium, 1000 targets", 4, o, "ms",
+                        "library solve_equilibria_batch in-process", lb, ratio=lb / o, target="<= 0.3 s",
+                        met=o <= 300, samples=lat, baseline_samples=lib,
+                        notes=[f"trajectory dx 0.05..1.55, dy = 0.3 sin(2 pi s), continuation; response: "
+                               f"{info.get('succeeded')} succeeded, {info.get('failed')} failed; request "
+                               f"{o / lb:.0f}x the library's own batch call"], extra=info))
+    return rows
+
+
+# ============================================================================ machine, output
+def machine_info() -> dict[str, Any]:
+    import casadi
+    import scipy
+
+    cpu = "?"
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as fh:
+            for line in fh:
+                if line.lower().startswith("model name"):
+                    cpu = line.split(":", 1)[1].strip()
+                    break
+    except OSError:
+        pass
+    info = {
+        "platform": platform.platform(), "python": platform.python_version(),
+        "numpy": np.__version__, "scipy": scipy.__version__, "casadi": casadi.__version__,
+        "tensegrity_opt": to.__version__, "cpu": cpu, "nproc": os.cpu_count(),
+        "nproc_available": len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count(),
+        "date": _dt.datetime.now(_dt.timezone.utc).astimezone().isoformat(timespec="seconds"),
+        "loadavg_start": list(os.getloadavg()) if hasattr(os, "getloadavg") else None,
+    }
+    for mod in ("fastapi", "uvicorn", "httpx"):
+        try:
+            info[mod] = __import__(mod).__version__
+        except Exception:  # noqa: BLE001
+            info[mod] = None
+    return info
+
+
+HEAD = ["case", "n", "ours (median)", "baseline", "baseline (median)", "ratio (baseline/ours)", "target", "met?"]
+
+
+def _cells(r: Row) -> list[str]:
+    met = "-" if r.met is None else ("yes" if r.met else "NO")
+    return [f"{r.case} {r.name}", str(r.n), fmt(r.ours, r.unit), r.baseline, r.baseline_cell(), r.ratio_cell(),
+            r.target, met]
+
+
+def table_text(rows: list[Row]) -> str:
+    cells = [HEAD] + [_cells(r) for r in rows]
+    w = [max(len(c[i]) for c in cells) for i in range(len(HEAD))]
+    line = lambda c: " | ".join(x.ljust(w[i]) for i, x in enumerate(c))  # noqa: E731
+    sep = "-+-".join("-" * x for x in w)
+    return "\n".join([line(HEAD), sep] + [line(c) for c in cells[1:]])
+
+
+def notes_text(rows: list[Row]) -> list[str]:
+    out = []
+    for r in rows:
+        for nt in r.notes:
+            out.append(f"[{r.case}] {nt}")
+    return out
+
+
+def markdown(rows: list[Row], machine: dict[str, Any], cfg: Config, total: float, skipped: list[str]) -> str:
+    esc = lambda s: s.replace("|", "\\|")  # noqa: E731
+    lines = ["# Benchmark results", "",
+             f"`python -m benchmarks{' --quick' if cfg.quick else ''}{'' if cfg.service else ' --no-service'}` "
+             f"on {machine['date']} ({total:.0f} s). Times are medians over repeated runs after a warm-up "
+             "(`time.perf_counter`); every baseline was measured in the same run. ratio = baseline / ours.",
+             "", f"Load average at start / end: {machine.get('loadavg_start')} / {machine.get('loadavg_end')} "
+             f"(this machine has {machine.get('nproc')} cores: a load near {machine.get('nproc')} means other "
+             "processes competed for the CPU during the run).", "",
+             "| " + " | ".join(HEAD) + " |", "|" + "---|" * len(HEAD)]
+    for r in rows:
+        lines.append("| " + " | ".join(esc(c) for c in _cells(r)) + " |")
+    lines += ["", "## Notes", ""]
+    lines += [f"* {esc(n)}" for n in notes_text(rows)]
+    lines += [f"* {s}" for s in skipped]
+    lines += ["", "## Machine", ""]
+    lines += [f"* {k}: {v}" for k, v in machine.items()]
+    lines.append("")
+    return "\n".join(lines)
+
+
+CASES: list[tuple[str, Callable[[Config], list[Row]]]] = [
+    ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8),
+]
+
+
+def main(argv: list[str] | None = None) -> int:
+    p = argparse.ArgumentParser(prog="python -m benchmarks", description=__doc__.splitlines()[0])
+    p.add_argument("--quick", action="store_true", help="fewer repetitions, short service phases (< 1 min)")
+    p.add_argument("--json", default=str(HERE / "results.json"), help="JSON output (default benchmarks/results.json)")
+    p.add_argument("--md", default=str(HERE / "RESULTS.md"),
+                   help="markdown output (default benchmarks/RESULTS.md; '' to skip)")
+    p.add_argument("--no-service", action="store_true", help="skip the HTTP service cases (7, 8)")
+    p.add_argument("--only", default=None, help="comma-separated case ids to run (e.g. 1,3,7-8)")
+    args = p.parse_args(argv)
+    cfg = Config.make(args.quick, not args.no_service)
+    machine = machine_info()
+    t_start = time.perf_counter()
+    rows: list[Row] = []
+    skipped: list[str] = []
+    only = None if args.only is None else set(args.only.split(","))
+    for cid, fn in CASES:
+        if only is not None and cid not in only:
+            continue
+        if cid == "7-8" and not cfg.service:
+            skipped.append("cases 7-8 (service) skipped: --no-service")
+            continue
+        log(f"case {cid} ...")
+        t0 = time.perf_counter()
+        try:
+            rows += fn(cfg)
+        except ServerStartError as exc:
+            msg = f"cases {cid} (service) skipped: the server did not start: {str(exc)[:500]}"
+            log(msg)
+            skipped.append(msg)
+        except Exception as exc:  # noqa: BLE001 - one failing case must not lose the others
+            msg = f"cases {cid} failed: {type(exc).__name__}: {str(exc)[:500]}"
+            log(msg + "\n" + traceback.format_exc())
+            skipped.append(msg)
+        log(f"case {cid} done in {time.perf_counter() - t0:.1f} s")
+    total = time.perf_counter() - t_start
+    machine["loadavg_end"] = list(os.getloadavg()) if hasattr(os, "getloadavg") else None
+    machine["suite_seconds"] = round(total, 1)
+
+    print(table_text(rows))
+    print()
+    for nt in notes_text(rows) + skipped:
+        print(nt)
+    print(f"\nmachine: {machine['cpu']}, nproc {machine['nproc']}, python {machine['python']}, numpy "
+          f"{machine['numpy']}, scipy {machine['scipy']}, casadi {machine['casadi']}; load average "
+          f"{machine['loadavg_start']} -> {machine['loadavg_end']}; {total:.0f} s")
+
+    data = {"suite": "tensegrity_opt benchmarks", "mode": "quick" if cfg.quick else "full",
+            "service": cfg.service, "machine": machine, "columns": HEAD,
+            "rows": [r.to_json() for r in rows], "skipped": skipped,
+            "targets_met": sum(1 for r in rows if r.met is True),
+            "targets_missed": sum(1 for r in rows if r.met is False)}
+    if args.json:
+        Path(args.json).write_text(json.dumps(_jsonable(data), indent=2) + "\n", encoding="utf-8")
+    if args.md:
+        Path(args.md).write_text(markdown(rows, machine, cfg, total, skipped), encoding="utf-8")
+    return 0
