@@ -33,7 +33,7 @@ from .equilibrium import Equilibrium, _search, _straight, solve_equilibrium
 from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from .manipulator import Manipulator
 from .seeds import seeds
-from .shapes import shape_label
+from .shapes import shape_label, shape_labels
 from .solvers import model
 from .stability import _inertia, classify_batch
 
@@ -204,7 +204,7 @@ def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
 
 
 def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"] = "stable", *,
-                     recheck_every: int = 100) -> Curve:
+                     recheck_every: int = 250) -> Curve:
     """Force-deflection relation ``F(dx, dy)`` along the least-energy stable branch.
 
     Parameters
@@ -320,7 +320,7 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
         br = branches[sel[j]]
         q[j], F[j], E[j], morse[j], stable[j], status[j] = br.q[j], br.F[j], br.E[j], br.morse[j], \
             br.stable[j], br.status[j]
-    shapes = [shape_label(qq) for qq in q]
+    shapes = shape_labels(q)
     jumps: list[Jump] = []
     pos = dxs > 0
     if np.all(dys == 0.0) and np.any(pos) and np.all(dxs >= 0.0):

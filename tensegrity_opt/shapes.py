@@ -50,4 +50,20 @@ def shape_label(q, rel_tol: float = 1e-6) -> str:
     return _NAMES.get(s, f"W{s}")
 
 
+def shape_labels(Q, rel_tol: float = 1e-6) -> list[str]:
+    """:func:`shape_label` of every row of ``Q`` (m, n), vectorised."""
+    Q = np.asarray(Q, dtype=float)
+    scale = np.abs(Q).max(axis=1, keepdims=True)
+    sg = np.where(np.abs(Q) > rel_tol * scale, np.sign(Q), 0.0)
+    out = []
+    for row, sc in zip(sg, scale[:, 0]):
+        if not sc > 0.0:
+            out.append("I")
+            continue
+        nz = row[row != 0.0]
+        s = int(np.count_nonzero(nz[1:] != nz[:-1]))
+        out.append(_NAMES.get(s, f"W{s}"))
+    return out
+
+
 _CHARS = np.array([b"+", b"0", b"-"], dtype="S1")
