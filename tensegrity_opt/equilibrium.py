@@ -205,9 +205,10 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         ``stable``). For control loops and finite differences along a branch.
     method : {"auto", "ipopt"}
         ``"auto"``: damped Newton on the KKT system from every seed, classified, the least-energy
-        stable one kept; IPOPT (``min E`` s.t. ``tip = target``) from every seed only when Newton
-        finds no stable equilibrium. ``"ipopt"``: IPOPT from every seed (slower; the two are
-        compared in the tests).
+        stable one kept — enough when every segment is monotonic (condition (4)); otherwise, or when
+        Newton finds no stable equilibrium, IPOPT (``min E`` s.t. ``tip = target``) from every seed
+        too, and the least-energy stable one of both. ``"ipopt"``: IPOPT from every seed only
+        (slower; the methods are compared in the tests).
     n_random, max_modes : int, optional
         Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
         for chains of up to 64 segments; 0 and 2 for longer ones, whose least-energy
@@ -254,13 +255,18 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     starts = ([q0] if q0 is not None else []) + [s.q for s in seeds(m, dx, dy, max_modes=max_modes,
                                                                      n_random=n_random)]
     statuses: dict[str, int] = {}
+    found: list[Equilibrium] = []
     if method == "auto":
-        # Newton on the KKT system from every seed (every stationary point nearby, ~0.1 ms each);
-        # IPOPT only when that finds no stable equilibrium.
-        stable, _ = _search(m, target, starts, statuses, minimize=False)
-        if stable:
-            return _pick(stable, q0)
+        # Newton on the KKT system from every seed (every stationary point nearby, ~0.1 ms each).
+        # With monotonic segments that finds the least-energy stable equilibrium (checked against
+        # IPOPT from the same seeds on grids of targets, tests/test_equilibrium.py); with
+        # bistable segments (K <= 0) it often lands on saddles only, so IPOPT's descent from every
+        # seed is added and the union decides.
+        found, _ = _search(m, target, starts, statuses, minimize=False)
+        if found and m.monotonic:
+            return _pick(found, q0)
     stable, n_unstable = _search(m, target, starts, statuses, minimize=True)
+    stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < 1e-7 for f in found)]
     if stable:
         return _pick(stable, q0)
     if n_unstable:

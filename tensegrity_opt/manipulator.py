@@ -160,6 +160,15 @@ class Manipulator:
         """Condition (4) for every segment: all ``K_i > 0``."""
         return bool(np.all(self.stiffness > 0.0))
 
+    @cached_property
+    def monotonic(self) -> bool:
+        """Every segment's torque ``M(q)`` decreases over its whole range (one equilibrium per torque).
+
+        For a symmetric segment this is condition (4), ``K > 0`` (the paper's simplification,
+        checked here on random geometries); an asymmetric one is sampled (:meth:`Segment.monotonic`).
+        """
+        return all(s.stiffness > 0.0 if s.symmetric else s.monotonic() for s in self.segments)
+
     @property
     def uniform_segments(self) -> bool:
         """True when all segments are identical."""

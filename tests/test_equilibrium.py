@@ -178,3 +178,22 @@ def test_newton_seeded_search_agrees_with_ipopt_from_every_seed(m):
             else:
                 assert a.energy == pytest.approx(b.energy, rel=1e-10), (dx, dy)
                 assert a.stable and b.stable
+
+
+def test_bistable_segments_use_ipopt_descent_too():
+    """With K < 0 (condition (4) fails) each segment is bistable and Newton from the seeds often
+    lands on saddles only: "auto" must still be at least as good as IPOPT from every seed."""
+    m = Manipulator.uniform(6, a=0.6, b=1.0, k=1.0, L0=1.2)
+    assert not m.monotonic and m.stiffness[0] < 0
+    L = m.straight_length
+    checked = 0
+    for dx in np.linspace(1.5, 0.6 * L, 4):
+        for dy in (-0.3 * L, 0.0, 0.25 * L):
+            try:
+                ref = solve_equilibrium(m, dx, dy, method="ipopt").energy
+            except (RuntimeError, ValueError):
+                continue
+            checked += 1
+            got = solve_equilibrium(m, dx, dy)
+            assert got.stable and got.energy <= ref + 1e-9 * max(1.0, abs(ref))
+    assert checked >= 6
