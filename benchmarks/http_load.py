@@ -27,7 +27,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 
-__all__ = ["PhaseStats", "load_phase", "own_server", "free_port", "ServerStartError"]
+__all__ = ["PhaseStats", "load_phase", "load_phase_with_probe", "own_server", "free_port", "ServerStartError"]
 
 
 class ServerStartError(RuntimeError):
@@ -164,7 +164,8 @@ RequestFactory = Callable[[int, int], tuple[str, str, bytes | None]]
 
 
 async def _client(host: str, port: int, idx: int, make: RequestFactory, stop: float, stats: PhaseStats | None,
-                  count: int | None = None) -> None:
+                  count: int | None = None, every: float = 0.0) -> None:
+    """One closed-loop client; ``every`` > 0 paces it (a probe) with that pause between requests."""
     conn = _Connection(host, port)
     k = 0
     try:
@@ -181,6 +182,8 @@ async def _client(host: str, port: int, idx: int, make: RequestFactory, stop: fl
             if stats is not None:
                 stats.latencies.append(time.perf_counter() - t0)
                 stats.statuses[key] += 1
+            if every:
+                await asyncio.sleep(every)
     finally:
         conn.close()
 
@@ -201,9 +204,32 @@ async def _phase(host: str, port: int, make: RequestFactory, clients: int, durat
 def load_phase(url: str, make: RequestFactory, clients: int = 32, duration: float = 10.0,
                warmup_requests: int = 2) -> PhaseStats:
     """Run ``clients`` closed-loop keep-alive clients for ``duration`` seconds (after a warm-up)."""
+    host, port = _host_port(url)
+    return asyncio.run(_phase(host, port, make, clients, duration, warmup_requests))
+
+
+def load_phase_with_probe(url: str, make: RequestFactory, probe: RequestFactory, clients: int = 32,
+                          duration: float = 10.0, every: float = 0.02) -> tuple[PhaseStats, PhaseStats]:
+    """Like :func:`load_phase`, plus one paced client (``probe``) measuring latency under that load."""
+    host, port = _host_port(url)
+
+    async def both() -> tuple[PhaseStats, PhaseStats]:
+        await asyncio.gather(*[_client(host, port, i, make, 0.0, None, count=2) for i in range(clients)])
+        stats, probe_stats = PhaseStats(), PhaseStats()
+        start = time.perf_counter()
+        stop = start + duration
+        await asyncio.gather(*[_client(host, port, i, make, stop, stats) for i in range(clients)],
+                             _client(host, port, 0, probe, stop, probe_stats, every=every))
+        stats.elapsed = probe_stats.elapsed = time.perf_counter() - start
+        return stats, probe_stats
+
+    return asyncio.run(both())
+
+
+def _host_port(url: str) -> tuple[str, int]:
     host_port = url.split("://", 1)[-1].rstrip("/")
     host, _, port = host_port.partition(":")
-    return asyncio.run(_phase(host, int(port or 80), make, clients, duration, warmup_requests))
+    return host, int(port or 80)
 
 
 def json_body(obj) -> bytes:
