@@ -19,7 +19,7 @@ import time
 
 import numpy as np
 
-from .equilibrium import Equilibrium, _check_q0, make_equilibrium, solve_equilibrium
+from .equilibrium import Equilibrium, check_q0, make_equilibrium, solve_equilibrium
 from .errors import InvalidParameterError, TensegrityError, TimeLimitError
 from .manipulator import Manipulator
 from .shapes import shape_label, sign_string
@@ -65,7 +65,7 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
     N = pts.shape[0]
     out: list[Equilibrium | TensegrityError | None] = [None] * N
     prev: Equilibrium | None = None
-    start_q = _check_q0(m, q0)
+    start_q = check_q0(m, q0)
     mdl = model(m.n)
     i = 0
     while i < N:

@@ -29,13 +29,13 @@ import numpy as np
 
 from .buckling import critical_force
 from .equilibria import find_equilibria
-from .equilibrium import Equilibrium, _search, _straight, solve_equilibrium
+from .equilibrium import Equilibrium, search_stable, straight_equilibrium, solve_equilibrium
 from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from .manipulator import Manipulator
 from .seeds import seeds
 from .shapes import shape_label, shape_labels
 from .solvers import model
-from .stability import _inertia, classify_batch
+from .stability import classify_batch, inertia_of
 
 __all__ = ["Curve", "Jump", "force_deflection"]
 
@@ -184,7 +184,7 @@ def _classify_batch(m: Manipulator, br: _Branch, idx: np.ndarray, Q: np.ndarray,
         return
     for k, i in enumerate(idx):
         E, _, H, J, _ = mdl.evaluate(m.params, Q[k], Fs[k])
-        inertia = _inertia(H, J, True, 1e-9, m.n - 2)
+        inertia = inertia_of(H, J, True, 1e-9, m.n - 2)
         br.q[i], br.F[i], br.E[i] = Q[k], Fs[k], E
         br.morse[i], br.stable[i], br.valid[i], br.status[i] = (inertia.morse_index, inertia.stable, True,
                                                                 status)
@@ -194,7 +194,7 @@ def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
     """Every stable equilibrium the Newton-seeded global search finds (IPOPT when it finds none)."""
     target = m.target(dx, dy)
     starts = [s.q for s in seeds(m, dx, dy)]
-    stable, _ = _search(m, target, starts, {}, minimize=False)
+    stable, _ = search_stable(m, target, starts, {}, minimize=False)
     if not stable:
         try:
             stable = [solve_equilibrium(m, dx, dy)]
@@ -312,7 +312,7 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
     morse = np.zeros(npts, dtype=int)
     stable = np.ones(npts, dtype=bool)
     status = ["straight"] * npts
-    s0 = _straight(m)
+    s0 = straight_equilibrium(m)
     for j in range(npts):
         if straight[j]:
             q[j], F[j], E[j] = s0.q, s0.force, s0.energy

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .equilibrium import (Equilibrium, _check_q0, _one_segment, _straight, _valid, local_equilibrium,
+from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straight_equilibrium, is_equilibrium, local_equilibrium,
                           make_equilibrium)
 from .errors import SolverError
 from .manipulator import Manipulator
@@ -57,24 +57,24 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, n_random: int
     """
     target = m.check_reachable(dx, dy)
     if dx == 0.0 and dy == 0.0:
-        return [_straight(m)]
+        return [straight_equilibrium(m)]
     if m.n == 1:
-        return [_one_segment(m, target)]
+        return [one_segment_equilibrium(m, target)]
     results = []
     statuses: dict[str, int] = {}
     starts = [(s.q, s.force) for s in seeds(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes,
                                               n_random=n_random)]
     for q in extra_seeds or ():
-        starts.append((_check_q0(m, q), None))
+        starts.append((check_q0(m, q), None))
     for q, F in starts:
         res = local_equilibrium(m, target, q, F)
         statuses[res.status] = statuses.get(res.status, 0) + 1
-        if _valid(m, res, target):
+        if is_equilibrium(m, res, target):
             results.append(res)
     # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present.
     for s in seeds(m, dx, dy, max_modes=2, n_random=0):
         res = local_equilibrium(m, target, s.q, minimize=True)
-        if _valid(m, res, target):
+        if is_equilibrium(m, res, target):
             results.append(res)
     if not results:
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",

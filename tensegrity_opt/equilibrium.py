@@ -111,7 +111,7 @@ def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> 
 RESIDUAL_TOL = 1e-9
 
 
-def _valid(m: Manipulator, res: LocalResult, target: np.ndarray | None = None, *,
+def is_equilibrium(m: Manipulator, res: LocalResult, target: np.ndarray | None = None, *,
            check_residual: bool = True) -> bool:
     """A converged solve inside the open physical range that really is an equilibrium.
 
@@ -124,7 +124,7 @@ def _valid(m: Manipulator, res: LocalResult, target: np.ndarray | None = None, *
     return not check_residual or m.equilibrium_residual(res.q, res.force, target) <= RESIDUAL_TOL
 
 
-def _check_q0(m: Manipulator, q0) -> np.ndarray | None:
+def check_q0(m: Manipulator, q0) -> np.ndarray | None:
     if q0 is None:
         return None
     q0 = np.asarray(q0, dtype=float)
@@ -135,7 +135,7 @@ def _check_q0(m: Manipulator, q0) -> np.ndarray | None:
     return q0
 
 
-def _straight(m: Manipulator) -> Equilibrium:
+def straight_equilibrium(m: Manipulator) -> Equilibrium:
     """The fully extended chain (the only configuration reaching ``dx = dy = 0``)."""
     q = np.zeros(m.n)
     S0 = tip_slope(m)
@@ -146,7 +146,7 @@ def _straight(m: Manipulator) -> Equilibrium:
                        tip=m.tip(q), control="displacement")
 
 
-def _one_segment(m: Manipulator, target: np.ndarray) -> Equilibrium:
+def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
     """A single segment: the target fixes the joint angle; the force is the least-norm one.
 
     With one joint the tip constraint leaves no freedom (the configuration manifold is a
@@ -231,18 +231,18 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         physical range; ``status`` lists the solver statuses met.
     """
     target = m.check_reachable(dx, dy)
-    q0 = _check_q0(m, q0)
+    q0 = check_q0(m, q0)
     if local and q0 is None:
         raise InvalidParameterError("local=True needs a starting configuration q0", field="q0")
     if dx == 0.0 and dy == 0.0:
-        return _straight(m)
+        return straight_equilibrium(m)
     if m.n == 1:
-        return _one_segment(m, target)
+        return one_segment_equilibrium(m, target)
     if local:
         res = local_equilibrium(m, target, q0)
-        if not _valid(m, res, target, check_residual=False):
+        if not is_equilibrium(m, res, target, check_residual=False):
             fallback = local_equilibrium(m, target, q0, minimize=True)
-            if not _valid(m, fallback, target):
+            if not is_equilibrium(m, fallback, target):
                 raise SolverError(f"the local solve from q0 did not converge for dx={dx:g}, dy={dy:g}",
                                   status=f"newton: {res.status}; ipopt: {fallback.status}")
             res = fallback
@@ -262,10 +262,10 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         # IPOPT from the same seeds on grids of targets, tests/test_equilibrium.py); with
         # bistable segments (K <= 0) it often lands on saddles only, so IPOPT's descent from every
         # seed is added and the union decides.
-        found, _ = _search(m, target, starts, statuses, minimize=False)
+        found, _ = search_stable(m, target, starts, statuses, minimize=False)
         if found and m.monotonic:
             return _pick(found, q0)
-    stable, n_unstable = _search(m, target, starts, statuses, minimize=True)
+    stable, n_unstable = search_stable(m, target, starts, statuses, minimize=True)
     stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < 1e-7 for f in found)]
     if stable:
         return _pick(stable, q0)
@@ -288,13 +288,13 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
                       status=_summary(statuses))
 
 
-def _search(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
+def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
             minimize: bool) -> tuple[list[Equilibrium], int]:
     """Local solves from every start; the distinct stable equilibria and the count of unstable ones."""
     candidates: list[LocalResult] = []
     for q in starts:
         res = local_equilibrium(m, target, q, minimize=minimize)
-        ok = _valid(m, res, target, check_residual=minimize)
+        ok = is_equilibrium(m, res, target, check_residual=minimize)
         key = res.status if ok else (res.status + (" (on joint limit)" if res.on_bound else " (rejected)"))
         statuses[key] = statuses.get(key, 0) + 1
         if ok:
@@ -359,7 +359,7 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
         if not math.isfinite(float(v)):
             raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
     force = np.array([float(fx), float(fy)])
-    q0 = _check_q0(m, q0)
+    q0 = check_q0(m, q0)
     if q0 is None:
         q0 = np.zeros(m.n)
         try:
@@ -378,7 +378,7 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
             res = pol
     if not res.success:
         raise SolverError(f"IPOPT did not converge for the tip force ({fx:g}, {fy:g})", status=res.status)
-    if not _valid(m, res):
+    if not is_equilibrium(m, res):
         raise NoEquilibriumError(
             f"no equilibrium inside the physical range for the tip force ({fx:g}, {fy:g}): the minimiser "
             "presses a joint against its limit", status=res.status)

@@ -79,10 +79,10 @@ def analyse(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: bo
     n = m.n
     dim = n - 2 if constrained else n
     E, _, H, J, tip = model(n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
-    return _inertia(H, J, constrained, rel_tol, dim), E, tip
+    return inertia_of(H, J, constrained, rel_tol, dim), E, tip
 
 
-def _inertia(H, J, constrained: bool, rel_tol: float, dim: int) -> Inertia:
+def inertia_of(H, J, constrained: bool, rel_tol: float, dim: int) -> Inertia:
     if dim <= 0:
         return Inertia(np.zeros(0), 0, False, 0)
     if isinstance(H, np.ndarray):

@@ -5,7 +5,7 @@ import pytest
 
 import tensegrity_opt as to
 from tensegrity_opt import solvers
-from tensegrity_opt.stability import _inertia
+from tensegrity_opt.stability import inertia_of
 
 
 def wavy_chain(n):
@@ -59,8 +59,8 @@ def test_banded_newton_classification_and_stiffness_match_dense(both_models):
         assert np.allclose(gd, gb, atol=1e-12) and np.allclose(Hd, Hb.toarray(), atol=1e-12)
         assert np.allclose(Jd, Jb, atol=1e-13) and np.allclose(td, tb, atol=1e-12)
         for constrained in (True, False):
-            a = _inertia(Hd, Jd, constrained, 1e-9, m.n - 2 if constrained else m.n)
-            b = _inertia(Hb, Jb, constrained, 1e-9, m.n - 2 if constrained else m.n)
+            a = inertia_of(Hd, Jd, constrained, 1e-9, m.n - 2 if constrained else m.n)
+            b = inertia_of(Hb, Jb, constrained, 1e-9, m.n - 2 if constrained else m.n)
             assert a.morse_index == b.morse_index and a.stable == b.stable
     assert np.allclose(dm.tangent_stiffness(m.params, eq.q, eq.force),
                        bm.tangent_stiffness(m.params, eq.q, eq.force), rtol=1e-8)
@@ -72,7 +72,7 @@ def test_unstable_equilibria_are_classified_alike(both_models):
     assert sorted(e.morse_index for e in eqs)[:6] == [0, 0, 1, 1, 2, 2]
     for e in eqs:
         _, _, Hd, Jd, _ = dm.evaluate(m.params, e.q, e.force)
-        assert _inertia(Hd, Jd, True, 1e-9, m.n - 2).morse_index == e.morse_index
+        assert inertia_of(Hd, Jd, True, 1e-9, m.n - 2).morse_index == e.morse_index
 
 
 def test_long_chain_force_control_and_curve():
