@@ -26,7 +26,7 @@ from .config import Settings, get_settings
 from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware
 from .pool import SolverPool
-from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, segment, stiffness
+from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, segment, stiffness, web
 
 log = logging.getLogger("service")
 
@@ -116,7 +116,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.ready = False
 
     errors.install(app)
-    for module in (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, ops):
+    for module in (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, ops, web):
         app.include_router(module.router)
     docs.install(app)
 

@@ -1,0 +1,164 @@
+"""The web page (``service/routes/web.py``, ``service/web/``): served offline, only local assets, no traversal.
+
+The browser test that drives the page is ``test_web_e2e.py``.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import fnmatch
+import json
+import re
+import tomllib
+from html.parser import HTMLParser
+from importlib import resources
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("httpx")
+from fastapi.testclient import TestClient  # noqa: E402
+from starlette.exceptions import HTTPException  # noqa: E402
+from starlette.routing import NoMatchFound  # noqa: E402
+
+from service.config import Settings  # noqa: E402
+from service.main import create_app, openapi_document  # noqa: E402
+from service.routes import web  # noqa: E402
+
+
+def _has_page(app) -> bool:
+    try:
+        app.url_path_for("web_page")
+    except NoMatchFound:
+        return False
+    return True
+
+
+def _app(include: bool = True):
+    """The service's app with the page's router (added unless ``service.main`` already registers it)."""
+    app = create_app(Settings(warmup=False))
+    if include and not _has_page(app):
+        app.include_router(web.router)
+    if not include and _has_page(app):
+        pytest.skip("service.main registers the page itself: no app without it to compare with")
+    return app
+
+
+@pytest.fixture(scope="module")
+def client():
+    with TestClient(_app()) as c:
+        yield c
+
+
+class _Refs(HTMLParser):
+    """Every URL-valued attribute of the page."""
+
+    def __init__(self) -> None:
+        super().__init__()
+        self.refs: list[tuple[str, str, str]] = []
+        self.ids: set[str] = set()
+
+    def handle_starttag(self, tag, attrs):
+        for name, value in attrs:
+            if name in ("src", "href", "action", "xlink:href", "poster", "srcset", "data") and value is not None:
+                self.refs.append((tag, name, value))
+            if name == "id" and value:
+                self.ids.add(value)
+
+
+def _page_refs(html: str) -> _Refs:
+    p = _Refs()
+    p.feed(html)
+    return p
+
+
+EXTERNAL = re.compile(r"(?i)\b(?:https?|wss?|ftp):|(?<![\w:])//[\w.-]+\.[a-z]{2,}")
+
+
+def test_page_is_html_with_local_assets_only(client):
+    r = client.get("/")
+    assert r.status_code == 200
+    assert r.headers["content-type"].startswith("text/html")
+    html = r.text
+    assert html == resources.files("service.web").joinpath("index.html").read_text("utf-8")
+    refs = _page_refs(html).refs
+    urls = {value for _, _, value in refs}
+    assert "web/app.js" in urls and "web/app.css" in urls
+    for tag, name, value in refs:
+        # Relative to this server (or an inline data: URL): no scheme, no host.
+        assert value.startswith("data:") or not re.match(r"(?i)^([a-z][a-z0-9+.-]*:|//)", value), (tag, name, value)
+    # The page may only talk to this server.
+    csp = r.headers["content-security-policy"]
+    assert "connect-src 'self'" in csp and "script-src 'self'" in csp and "default-src 'none'" in csp
+
+
+@pytest.mark.parametrize("name", sorted(web.ASSETS))
+def test_no_external_urls_in_assets(client, name):
+    text = client.get(f"/web/{name}").text
+    assert not EXTERNAL.search(text), EXTERNAL.search(text)
+    assert "@import" not in text and "fonts." not in text.lower()
+    if name.endswith(".css"):
+        for url in re.findall(r"url\(\s*['\"]?([^'\")]+)", text):
+            assert url.startswith("data:") or not re.match(r"(?i)^([a-z][a-z0-9+.-]*:|//)", url), url
+
+
+@pytest.mark.parametrize("name,ctype", [("app.js", "text/javascript"), ("app.css", "text/css"),
+                                        ("index.html", "text/html")])
+def test_assets_have_their_content_types(client, name, ctype):
+    r = client.get(f"/web/{name}")
+    assert r.status_code == 200
+    assert r.headers["content-type"].split(";")[0].strip() == ctype
+    assert "charset=utf-8" in r.headers["content-type"]
+    assert r.headers["x-content-type-options"] == "nosniff"
+    assert r.content == resources.files("service.web").joinpath(name).read_bytes()   # shipped in the package
+
+
+@pytest.mark.parametrize("path", [
+    "/web/nope.js", "/web/__init__.py", "/web/app.JS", "/web/app.js.map", "/web/", "/web/app.js/x",
+    "/web/../main.py", "/web/..%2Fmain.py", "/web/%2e%2e%2fmain.py", "/web/%2E%2E/main.py", "/web/..%5Cmain.py",
+    "/web/..%2F..%2Fservice%2Fmain.py", "/web/%2Fetc%2Fpasswd", "/web/....//main.py", "/web/.%2e/routes/web.py",
+])
+def test_unknown_assets_are_404(client, path):
+    r = client.get(path)
+    assert r.status_code == 404, (path, r.status_code)
+    assert r.headers["content-type"].startswith("application/json")
+    assert r.json()["code"] == "not_found"
+    assert "create_app" not in r.text and "root:" not in r.text
+
+
+@pytest.mark.parametrize("asset", ["../main.py", "..\\main.py", "/etc/passwd", "../routes/web.py", "", "."])
+def test_asset_route_refuses_paths_even_unnormalised(asset):
+    # The URL a client sends may be normalised on the way; the handler itself must refuse too.
+    with pytest.raises(HTTPException) as exc:
+        asyncio.run(web.web_asset(asset))
+    assert exc.value.status_code == 404
+
+
+def test_page_routes_are_not_in_the_openapi_document():
+    doc = _app(True).openapi()
+    assert "/" not in doc["paths"] and not any(p.startswith("/web") for p in doc["paths"])
+    # The document is the service's own, page or no page (the committed openapi/openapi.json is that output).
+    assert json.dumps(doc, sort_keys=True) == json.dumps(openapi_document(), sort_keys=True)
+
+
+def test_script_uses_only_elements_of_the_page():
+    html = resources.files("service.web").joinpath("index.html").read_text("utf-8")
+    js = resources.files("service.web").joinpath("app.js").read_text("utf-8")
+    ids = _page_refs(html).ids
+    used = set(re.findall(r"\$\(\"([\w-]+)\"\)", js))
+    assert used and used <= ids, used - ids
+    # The API paths the page calls exist in the service, relative to the page.
+    paths = set(re.findall(r"api\(\"(v1/[\w/-]+)\"", js))
+    assert paths == {"v1/equilibrium", "v1/force-deflection", "v1/buckling"}
+    assert {"/" + p for p in paths} <= set(_app(True).openapi()["paths"])
+
+
+def test_assets_are_package_data():
+    """``pip install .`` ships the assets: pyproject's package-data for ``service.web`` matches every file."""
+    pyproject = Path(__file__).resolve().parents[1] / "pyproject.toml"
+    if not pyproject.is_file():
+        pytest.skip("no pyproject.toml beside the tests (installed package)")
+    conf = tomllib.loads(pyproject.read_text("utf-8")).get("tool", {}).get("setuptools", {})
+    globs = conf.get("package-data", {}).get("service.web", [])
+    missing = [name for name in web.ASSETS if not any(fnmatch.fnmatch(name, g) for g in globs)]
+    assert not missing, f"add to pyproject.toml [tool.setuptools.package-data] \"service.web\": {missing}"
