@@ -322,17 +322,22 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
             br.stable[j], br.status[j]
     shapes = shape_labels(q)
     jumps: list[Jump] = []
-    pos = dxs > 0
-    if np.all(dys == 0.0) and np.any(pos) and np.all(dxs >= 0.0):
-        try:
-            fx0 = critical_force(m, "guided").force
-        except TensegrityError:
-            fx0 = None
-        if fx0 is not None:
-            i = int(np.argmax(pos))
-            before = i - 1 if i > 0 and dxs[i - 1] == 0.0 else None
-            jumps.append(Jump("buckling", 0.0 if before is None else float(dxs[before]), float(dxs[i]),
-                              np.zeros(2), np.array([fx0, 0.0]), -1, int(sel[i])))
+    # Leaving the straight chain: the force jumps from the straight value to the branch's limit
+    # as dx -> 0+ — the critical force when the straight chain is a stable equilibrium and dy = 0,
+    # else (K <= 0, asymmetric preloads, dy != 0) the force at the first deflected point.
+    try:
+        fx0 = critical_force(m, "guided").force if m.n >= 2 else None
+    except TensegrityError:
+        fx0 = None
+    for j in range(npts):
+        if straight[j] or (j > 0 and not straight[j - 1]):
+            continue                    # not the first deflected point after the straight chain
+        if j == 0 and dys[0] != 0.0:
+            continue                    # a curve starting off the dx axis does not leave the straight chain
+        limit = np.array([fx0, 0.0]) if (fx0 is not None and dys[j] == 0.0) else F[j].copy()
+        before = float(dxs[j - 1]) if j > 0 else 0.0
+        jumps.append(Jump("buckling", before, float(dxs[j]), F[j - 1].copy() if j > 0 else np.zeros(2), limit,
+                          -1, int(sel[j]), float(dys[j - 1]) if j > 0 else 0.0, float(dys[j])))
     for j in range(1, npts):
         if sel[j] != sel[j - 1] and sel[j] >= 0 and sel[j - 1] >= 0:
             jumps.append(Jump("branch_switch", float(dxs[j - 1]), float(dxs[j]), F[j - 1].copy(), F[j].copy(),

@@ -89,3 +89,20 @@ def test_errors():
         force_deflection(PAPER, [])
     with pytest.raises(InvalidParameterError):
         force_deflection(PAPER, [0.1, 0.2], dy=[0.0, 0.1, 0.2])
+
+
+def test_jump_when_the_straight_chain_is_unstable():
+    """K < 0 (condition (4) fails): no critical load exists, but leaving the straight chain is still a
+    force discontinuity, from 0 to the force on the first deflected point."""
+    m = Manipulator.uniform(4, a=0.5, b=1.5, k=1.0, L0=1.0)
+    assert m.stiffness[0] < 0
+    c = force_deflection(m, np.linspace(0.0, 1.0, 5))
+    assert len(c.jumps) == 1 and c.jumps[0].kind == "buckling"
+    assert np.allclose(c.jumps[0].force_after, [c.fx[1], c.fy[1]])
+    assert abs(c.fx[1]) > 1.0
+
+
+def test_every_return_to_straight_is_a_jump():
+    c = force_deflection(PAPER, [0.0, 0.5, 0.0, 0.6])
+    kinds = [(j.kind, j.dx_after) for j in c.jumps]
+    assert kinds == [("buckling", 0.5), ("buckling", 0.6)]
