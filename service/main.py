@@ -20,13 +20,14 @@ from starlette.responses import JSONResponse
 
 import tensegrity_opt
 
-from . import docs, errors
+from . import docs, errors, jobs
 from .compute import warmup_job
 from .config import Settings, get_settings
 from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware
 from .pool import SolverPool
-from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, segment, stiffness, web
+from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, plots, segment, stiffness, web
+from .routes import jobs as jobs_routes
 
 log = logging.getLogger("service")
 
@@ -57,6 +58,10 @@ TAGS = [
     {"name": "segment", "description": "One segment's torque and stiffness."},
     {"name": "landscape", "description": "Energy landscape of the 4-segment chain."},
     {"name": "batch", "description": "Many targets in one request (trajectories)."},
+    {"name": "design", "description": "Design and control: strongest chain, preloads for a pose or a load."},
+    {"name": "plots", "description": "Figures (PNG or SVG): force-deflection curves, energy landscapes, equilibrium "
+                                     "shapes, torque curves, critical-load maps."},
+    {"name": "jobs", "description": "Sweeps as background jobs, stored in SQLite and resumed after a restart."},
     {"name": "ops", "description": "Health, readiness, version and Prometheus metrics."},
 ]
 
@@ -87,6 +92,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     settings = settings if settings is not None else get_settings()
     pool = SolverPool(settings.workers, settings.queue_size)
     metrics = Metrics(pool)
+    runner = jobs.JobRunner(settings)
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
@@ -97,11 +103,13 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             for res in await asyncio.gather(*jobs, return_exceptions=True):
                 if isinstance(res, BaseException):
                     log.warning("solver warm-up failed: %r", res)
+        runner.start()
         app.state.ready = True
         try:
             yield
         finally:
             app.state.ready = False
+            await asyncio.to_thread(runner.stop)
             pool.shutdown(wait=True, timeout=5.0)
 
     app = FastAPI(
@@ -113,10 +121,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.settings = settings
     app.state.pool = pool
     app.state.metrics = metrics
+    app.state.jobs = runner
     app.state.ready = False
 
     errors.install(app)
-    for module in (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, ops, web):
+    for module in (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, plots, jobs_routes,
+                   ops, web):
         app.include_router(module.router)
     docs.install(app)
 

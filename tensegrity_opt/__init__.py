@@ -26,6 +26,7 @@ from .manipulator import Manipulator
 from .segment import Segment
 from .shapes import shape_label, sign_string
 from .stiffness import cartesian_stiffness
+from .sweep import SweepResult, sweep
 
 __version__ = "0.1.0"
 
@@ -37,6 +38,7 @@ __all__ = [
     "Curve", "Jump", "force_deflection",
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
     "critical_load_sensitivity", "equilibrium_sensitivity",
+    "sweep", "SweepResult",
     "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",

@@ -26,6 +26,8 @@ from .equilibria import find_equilibria
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
 from .errors import TensegrityError
 from .manipulator import Manipulator
+from .plot_cli import add_plot_parser
+from .sweep_cli import add_sweep_parser
 
 
 def _manipulator(args: argparse.Namespace) -> Manipulator:
@@ -146,6 +148,8 @@ def build_parser() -> argparse.ArgumentParser:
     sp.add_argument("--num", type=int, default=11)
     sp.add_argument("--dy", type=float, default=0.0)
     sp.set_defaults(func=_cmd_curve)
+    add_plot_parser(sub)
+    add_sweep_parser(sub)
 
     sp = sub.add_parser("serve", help="start the HTTP service (uvicorn, one process; TENSEGRITY_* settings)")
     sp.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1)")

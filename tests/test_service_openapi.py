@@ -41,13 +41,27 @@ def test_every_operation_is_documented():
                 ("/v1/segment/torque", "post"), ("/v1/energy-landscape", "post"), ("/v1/batch/equilibrium", "post"),
                 ("/healthz", "get"), ("/readyz", "get"), ("/version", "get"), ("/metrics", "get"),
                 ("/v1/design/critical-force", "post"), ("/v1/design/preloads", "post"),
-                ("/v1/design/preloads-for-load", "post")}
+                ("/v1/design/preloads-for-load", "post"),
+                *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map")),
+                ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
+                ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/results", "get")}
     assert set(ops) == expected
     ids = [op["operationId"] for op in ops.values()]
     assert len(ids) == len(set(ids))
     error_ref = "#/components/schemas/ErrorOut"
-    for (path, _method), op in ops.items():
+    for (path, method), op in ops.items():
         assert op.get("summary"), path
+        if path.startswith("/v1/jobs"):      # no solve: 202 on submit, 404 for ids, 503 = job store
+            ok = op["responses"]["202" if method == "post" else "200"]["content"]
+            assert any("example" in m or "examples" in m for m in ok.values()), path
+            assert op.get("security") == [{"ApiKey": []}]
+            for status in ("401", "422", "503") + (("404",) if "{job_id}" in path else ()) + \
+                    (("413",) if method == "post" else ()):
+                c = op["responses"][status]["content"]["application/json"]
+                assert c["schema"]["$ref"] == error_ref and c.get("examples"), (path, status)
+            if method == "post":
+                assert op["requestBody"]["content"]["application/json"].get("examples")
+            continue
         ok = op["responses"]["200"]["content"]
         assert any("example" in media or "examples" in media for media in ok.values()), path
         if path.startswith("/v1/"):

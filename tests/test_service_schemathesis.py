@@ -32,7 +32,8 @@ def test_schemathesis_finds_no_server_error_and_no_spec_violation(tmp_path):
     port = free_port()
     env = {k: v for k, v in os.environ.items() if not k.startswith("TENSEGRITY_")}
     env.update({"TENSEGRITY_MAX_SEGMENTS": "24", "TENSEGRITY_MAX_BATCH": "50", "TENSEGRITY_SOLVE_TIMEOUT": "60",
-                "TENSEGRITY_BATCH_TIMEOUT": "30"})
+                "TENSEGRITY_BATCH_TIMEOUT": "30", "TENSEGRITY_JOBS_DB": str(tmp_path / "jobs.sqlite3"),
+                "TENSEGRITY_JOBS_MAX_POINTS": "200"})
     proc = subprocess.Popen(serve_command(port), env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     base = f"http://127.0.0.1:{port}"
     try:

@@ -1,0 +1,218 @@
+"""Request and response models of the jobs API (``/v1/jobs``): a sweep spec in, job status and rows out.
+
+The request mirrors :mod:`tensegrity_opt.sweep`'s spec (``analysis``, ``manipulator``, ``grid`` |
+``points``, ``options``). The schema checks types and ranges; the library then checks what
+depends on the analysis (which parameters it uses, dx/dy and load never together, ...) and the
+server its limits. Every refusal names the field (``grid.dx[2]``, ``points[3].load``, ...).
+The order of the ``grid`` keys is kept: it is the nesting order of the cartesian product
+(first key slowest).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, model_validator
+
+from .config import HARD_MAX_SEGMENTS
+from .schemas import Deflection, ForceValue, Length, Stiff
+
+__all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "JobCreated", "JobSummary", "JobOut", "JobResults",
+           "JobStatus", "SPEC_EXAMPLES", "JOB_EXAMPLE", "RESULTS_EXAMPLE", "CSV_EXAMPLE"]
+
+#: Schema caps (the server's ``TENSEGRITY_JOBS_MAX_POINTS`` can only be tighter).
+HARD_MAX_JOB_POINTS = 100_000
+MAX_GRID_VALUES = 10_000
+
+_STRICT = ConfigDict(strict=True, extra="forbid")
+
+Analysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design"]
+JobStatus = Literal["queued", "running", "done", "failed", "cancelled", "interrupted"]
+DesignVariable = Literal["a", "b", "k", "L0"]
+Segments = Annotated[int, Field(ge=1, le=HARD_MAX_SEGMENTS)]
+Load = Annotated[list[ForceValue], Field(min_length=2, max_length=2, description="tip force [fx, fy]")]
+
+
+def _values(item: Any, what: str) -> Any:
+    return Annotated[list[item], Field(min_length=1, max_length=MAX_GRID_VALUES, description=what)]
+
+
+class SweepManipulator(BaseModel):
+    """The uniform base chain; a point's own n, a, b, k, L0 replace these."""
+
+    model_config = _STRICT
+
+    n: Segments = Field(4, description="number of segments")
+    a: Length = Field(1.0, description="triangle half-height")
+    b: Length = Field(1.0, description="triangle half-length")
+    k: Stiff = Field(1.0, description="spring stiffness (both springs)")
+    L0: Length = Field(1.0, description="spring rest length (both springs)")
+
+
+class SweepGrid(BaseModel):
+    """``{parameter: [values]}``: the cartesian product, in the order the keys are given (first slowest)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"minProperties": 1})
+
+    n: _values(Segments, "segment counts") = None  # type: ignore[assignment]
+    a: _values(Length, "triangle half-heights") = None  # type: ignore[assignment]
+    b: _values(Length, "triangle half-lengths") = None  # type: ignore[assignment]
+    k: _values(Stiff, "spring stiffnesses") = None  # type: ignore[assignment]
+    L0: _values(Length, "spring rest lengths") = None  # type: ignore[assignment]
+    dx: _values(Deflection, "tip deflections along x (equilibrium, stiffness, equilibria_count)") = None  # type: ignore[assignment]
+    dy: _values(Deflection, "tip deflections along y (equilibrium, stiffness, equilibria_count)") = None  # type: ignore[assignment]
+    load: _values(Load, "tip forces [fx, fy] (equilibrium, stiffness; not with dx/dy)") = None  # type: ignore[assignment]
+
+    _order: list[str] = PrivateAttr(default_factory=list)
+
+    @model_validator(mode="wrap")
+    @classmethod
+    def _keep_order(cls, data: Any, handler: Any) -> Any:
+        model = handler(data)
+        if isinstance(data, dict):
+            model._order = [k for k in data if k in cls.model_fields]
+        return model
+
+    def ordered(self) -> dict[str, list[Any]]:
+        """The given parameters in the order of the request."""
+        order = self._order or [k for k in type(self).model_fields if k in self.model_fields_set]
+        return {k: getattr(self, k) for k in order if getattr(self, k) is not None}
+
+
+class SweepPoint(BaseModel):
+    """One point: any of the parameters (the rest from the base chain; dx = dy = 0)."""
+
+    model_config = _STRICT
+
+    n: Segments = None  # type: ignore[assignment]
+    a: Length = None  # type: ignore[assignment]
+    b: Length = None  # type: ignore[assignment]
+    k: Stiff = None  # type: ignore[assignment]
+    L0: Length = None  # type: ignore[assignment]
+    dx: Deflection = None  # type: ignore[assignment]
+    dy: Deflection = None  # type: ignore[assignment]
+    load: Load = None  # type: ignore[assignment]
+
+
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+BoundValue = Union[Finite, Annotated[list[Finite], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]]
+
+
+class SweepOptions(BaseModel):
+    """``boundary`` for buckling and design; the rest are ``maximize_critical_force``'s (design only)."""
+
+    model_config = _STRICT
+
+    boundary: Literal["guided", "free"] = Field(None, description="tip boundary condition (default guided)")  # type: ignore[assignment]
+    vary: list[DesignVariable] = Field(None, min_length=1, max_length=4,  # type: ignore[assignment]
+                                       description="design: per-segment variables to optimise (default [k])")
+    bounds: dict[DesignVariable, Annotated[list[BoundValue], Field(min_length=2, max_length=2)]] = Field(  # type: ignore[assignment]
+        None, description="design: {name: [lo, hi]}, numbers or per-segment lists")
+    budget: dict[DesignVariable, Finite] = Field(  # type: ignore[assignment]
+        None, description="design: {name: total}, sum over the segments <= total")
+    total_length: Union[Literal[True], Annotated[float, Field(gt=0, allow_inf_nan=False)]] = Field(  # type: ignore[assignment]
+        None, description="design: total length 2 sum(b) (true: keep the initial one)")
+    tension: Annotated[list[Finite], Field(min_length=2, max_length=2)] = Field(  # type: ignore[assignment]
+        None, description="design: [T_min, T_max] on the spring preloads at straight")
+    K_min: Finite = Field(  # type: ignore[assignment]
+        None, description="design: lower bound on every joint stiffness")
+
+
+class JobSpec(BaseModel):
+    """A sweep spec: one analysis over a grid or a list of points (exactly one of them)."""
+
+    model_config = _STRICT
+
+    analysis: Analysis = Field(description="what to compute at each point")
+    manipulator: SweepManipulator = Field(default_factory=SweepManipulator, description="the uniform base chain")
+    grid: SweepGrid = Field(None, description="cartesian product {parameter: [values]}")  # type: ignore[assignment]
+    points: Annotated[list[SweepPoint], Field(min_length=1, max_length=HARD_MAX_JOB_POINTS)] = Field(  # type: ignore[assignment]
+        None, description="explicit list of points")
+    options: SweepOptions = Field(None, description="analysis options")  # type: ignore[assignment]
+
+    def to_spec(self) -> dict[str, Any]:
+        """The library's spec (``tensegrity_opt.sweep``), grid order kept."""
+        out: dict[str, Any] = {"analysis": self.analysis, "manipulator": self.manipulator.model_dump()}
+        if self.grid is not None:
+            out["grid"] = self.grid.ordered()
+        if self.points is not None:
+            out["points"] = [p.model_dump(exclude_none=True) for p in self.points]
+        if self.options is not None:
+            out["options"] = self.options.model_dump(exclude_none=True)
+        return out
+
+
+# ---------------------------------------------------------------------------- answers
+class JobCreated(BaseModel):
+    id: str = Field(description="job id (use it in /v1/jobs/{id})")
+    status: JobStatus
+    total: int = Field(description="number of points")
+    analysis: Analysis
+
+
+class JobSummary(BaseModel):
+    id: str
+    status: JobStatus = Field(description="queued | running | done | failed | cancelled | interrupted")
+    analysis: Analysis
+    total: int = Field(description="points in the sweep")
+    done: int = Field(description="points finished and stored (failed points included)")
+    failed: int = Field(description="finished points whose row has an error")
+    progress: float = Field(description="done / total")
+    runs: int = Field(description="times the job was started (> 1: resumed after a server restart)")
+    created_at: str = Field(description="ISO 8601, UTC")
+    started_at: str | None = None
+    finished_at: str | None = None
+    message: str | None = Field(None, description="why the job failed, was cancelled or interrupted")
+
+
+class JobOut(JobSummary):
+    spec: dict[str, Any] = Field(description="the normalised sweep spec")
+    columns: list[str] = Field(description="column order of the rows")
+    results: list[dict[str, Any]] = Field(description="finished rows so far, by index (a page: offset, limit)")
+    offset: int
+    next_offset: int | None = Field(None, description="offset of the next page of rows, when there is one")
+
+
+class JobResults(BaseModel):
+    id: str
+    status: JobStatus
+    complete: bool = Field(description="every point is done")
+    total: int
+    done: int
+    columns: list[str]
+    rows: list[dict[str, Any]] = Field(description="one row per finished point, by index: index, the swept "
+                                                   "parameters, the analysis's columns, error")
+
+
+class JobList(BaseModel):
+    jobs: list[JobSummary]
+
+
+# ---------------------------------------------------------------------------- examples
+SPEC_EXAMPLES = {
+    "buckling_map": {"summary": "critical force over n x k (grid)", "value": {
+        "analysis": "buckling", "manipulator": {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0},
+        "grid": {"n": [3, 4, 5], "k": [0.5, 1.0, 2.0]}, "options": {"boundary": "guided"}}},
+    "equilibrium_points": {"summary": "equilibria at listed deflections and a tip force (points)", "value": {
+        "analysis": "equilibrium", "manipulator": {"n": 4},
+        "points": [{"dx": 0.1}, {"dx": 0.2, "dy": 0.05}, {"load": [0.2, 0.1]}]}},
+    "design": {"summary": "strongest chain per n (design)", "value": {
+        "analysis": "design", "grid": {"n": [3, 4]},
+        "options": {"vary": ["k"], "bounds": {"k": [0.2, 5.0]}, "budget": {"k": 4.0}}}},
+}
+
+_ROW = {"index": 0, "n": 3, "k": 0.5, "critical_force": -0.470871, "load2": 0.929129, "loads": [0.470871, 0.929129],
+        "mode_shape": "U", "mode_signs": "+--", "mode_q": [0.501331, -0.643451, -0.576303], "error": None}
+_COLUMNS = ["index", "n", "k", "critical_force", "load2", "loads", "mode_shape", "mode_signs", "mode_q", "error"]
+
+JOB_EXAMPLE = {
+    "id": "3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910", "status": "running", "analysis": "buckling", "total": 9, "done": 1,
+    "failed": 0, "progress": 0.111111, "runs": 1, "created_at": "2025-01-01T12:00:00.000Z",
+    "started_at": "2025-01-01T12:00:00.010Z", "finished_at": None, "message": None,
+    "spec": {**SPEC_EXAMPLES["buckling_map"]["value"]}, "columns": _COLUMNS, "results": [_ROW], "offset": 0,
+    "next_offset": None,
+}
+RESULTS_EXAMPLE = {"id": JOB_EXAMPLE["id"], "status": "done", "complete": True, "total": 9, "done": 9,
+                   "columns": _COLUMNS, "rows": [_ROW]}
+CSV_EXAMPLE = ("index,n,k,critical_force,load2,loads,mode_shape,mode_signs,mode_q,error\n"
+               '0,3,0.5,-0.470871,0.929129,"[0.470871, 0.929129]",U,+--,"[0.501331, -0.643451, -0.576303]",\n')

@@ -1,0 +1,151 @@
+"""Request models of the figure endpoints (``POST /v1/plots/<kind>``), same conventions as :mod:`service.schemas`.
+
+Requests are strict (JSON numbers only, no NaN/Infinity, unknown fields refused). Every request
+may carry ``format`` (``"png"`` or ``"svg"``; when absent the ``Accept`` header decides, PNG by
+default) and ``dpi`` (PNG resolution). The answers are images, not JSON.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+
+from . import schemas as s
+
+#: Most points per axis of a critical-load map (each point is one eigen-solve).
+MAX_MAP_AXIS = 41
+#: Most segments compared in one torque figure.
+MAX_TORQUE_SEGMENTS = 12
+#: Most points per torque curve.
+MAX_TORQUE_CURVE_POINTS = 2001
+#: Most equilibrium panels in one shapes figure.
+MAX_PANELS = 24
+#: Largest design value a map axis accepts (lengths and stiffnesses alike).
+MIN_DESIGN_VALUE = 1.0e-6
+MAX_DESIGN_VALUE = 1.0e6
+
+ImageFormat = Literal["png", "svg"]
+Dpi = Annotated[int, Field(ge=30, le=200, description="PNG resolution in dots per inch (30..200)")]
+DesignParam = Literal["a", "b", "k", "L0"]
+DesignValue = Annotated[float, Field(ge=MIN_DESIGN_VALUE, le=MAX_DESIGN_VALUE, allow_inf_nan=False)]
+
+
+def _list_or_range(v: Any) -> str:
+    return "<range>" if isinstance(v, (dict, s.RangeIn)) else "<list>"
+
+
+class _PlotRequest(BaseModel):
+    format: ImageFormat | None = Field(
+        None, description='"png" or "svg"; when absent the Accept header decides (image/svg+xml or image/png), '
+                          "PNG by default")
+    dpi: Dpi = 100
+
+
+class MapValuesRange(s.RangeIn):
+    start: DesignValue
+    stop: DesignValue
+    num: int = Field(ge=2, le=MAX_MAP_AXIS, description=f"number of values (2..{MAX_MAP_AXIS})")
+
+
+DesignValues = Annotated[
+    Union[
+        Annotated[list[DesignValue], Field(min_length=2, max_length=MAX_MAP_AXIS), Tag("<list>")],
+        Annotated[MapValuesRange, Tag("<range>")],
+    ],
+    Discriminator(_list_or_range),
+    Field(description=f"values of the parameter (> 0, strictly increasing or decreasing): a list or "
+                      f"{{start, stop, num}} (2..{MAX_MAP_AXIS} values)"),
+]
+
+CurveDeflections = Annotated[
+    Union[
+        Annotated[list[s.Deflection], Field(min_length=1, max_length=s.MAX_CURVE_POINTS), Tag("<list>")],
+        Annotated[s.DeflectionRange, Tag("<range>")],
+    ],
+    Discriminator(_list_or_range),
+    Field(description=f"deflections in the order to follow: a list or {{start, stop, num}} "
+                      f"(at most {s.MAX_CURVE_POINTS} points)"),
+]
+
+
+class PlotCurveRequest(_PlotRequest):
+    """Force-deflection curves Fx, Fy against dx with their jumps (Fig. 6)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "dx": {"start": 0.0, "stop": 2.0, "num": 41}, "dy": 0.0,
+                      "branch": "stable"}]})
+
+    manipulator: s.ManipulatorIn
+    dx: CurveDeflections
+    dy: s.Deflection = Field(0.0, description="tip deflection along y, the same at every point")
+    branch: Literal["stable", "all"] = Field(
+        "stable", description='"all" also draws every branch found at the first deflected point (unstable dashed)')
+
+
+class PlotLandscapeRequest(_PlotRequest):
+    """Energy contours E(q_i, q_j) with every equilibrium marked (n = 4, Figs. 4-5)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "dx": 0.1, "dy": 0.0, "pair": [0, 3], "grid": 101}]})
+
+    manipulator: s.ManipulatorIn
+    dx: s.Deflection = Field(description="tip deflection along x (length units)")
+    dy: s.Deflection = Field(0.0, description="tip deflection along y (length units)")
+    pair: list[Annotated[int, Field(ge=0, le=3)]] = Field(
+        [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
+    grid: int = Field(101, ge=2, le=s.MAX_GRID, description=f"points per axis (2..{s.MAX_GRID})")
+    span: Annotated[float, Field(gt=0, le=s.MAX_ANGLE, allow_inf_nan=False)] | None = Field(
+        None, description="half-width of both axes (rad); default: the reachable region of the landscape")
+
+
+class PlotShapesRequest(_PlotRequest):
+    """The chain drawn in every equilibrium, coloured by stability (Table 2's shapes)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "dx": 0.1, "dy": 0.0}]})
+
+    manipulator: s.ManipulatorIn
+    dx: s.Deflection = Field(description="tip deflection along x (length units)")
+    dy: s.Deflection = Field(0.0, description="tip deflection along y (length units)")
+    max_panels: int = Field(MAX_PANELS, ge=1, le=MAX_PANELS,
+                            description=f"draw at most this many equilibria, the lowest energies (1..{MAX_PANELS})")
+
+
+class PlotAngleRange(s.RangeIn):
+    """`num` angles (rad, |angle| <= 2 pi) from `start` to `stop` inclusive."""
+
+    start: s.Angle
+    stop: s.Angle
+    num: int = Field(ge=2, le=MAX_TORQUE_CURVE_POINTS, description=f"number of points (2..{MAX_TORQUE_CURVE_POINTS})")
+
+
+class PlotTorqueRequest(_PlotRequest):
+    """Torque-angle curves M(q) of one or several segments (Fig. 2)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 0.5},
+                                   {"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.5}]}]})
+
+    segments: list[s.SegmentIn] = Field(min_length=1, max_length=MAX_TORQUE_SEGMENTS,
+                                        description=f"the segments compared (1..{MAX_TORQUE_SEGMENTS})")
+    q: PlotAngleRange | None = Field(
+        None, description="angles {start, stop, num} (rad) for every curve; default: each segment's physical range")
+    num: int = Field(401, ge=2, le=MAX_TORQUE_CURVE_POINTS,
+                     description="points per curve over each segment's physical range (when q is absent)")
+
+
+class PlotMapRequest(_PlotRequest):
+    """Critical load over two design parameters, applied uniformly to every segment."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "param_x": "k", "values_x": {"start": 0.5, "stop": 2.0, "num": 16},
+                      "param_y": "L0", "values_y": {"start": 0.5, "stop": 2.5, "num": 21}, "boundary": "guided"}]})
+
+    manipulator: s.ManipulatorIn
+    param_x: DesignParam = Field(description="horizontal axis: a, b, k or L0")
+    values_x: DesignValues
+    param_y: DesignParam = Field(description="vertical axis: a, b, k or L0 (not param_x)")
+    values_y: DesignValues
+    boundary: Literal["guided", "free"] = Field(
+        "guided", description='"guided": tip held at dy = 0 (the paper); "free": cantilever')

@@ -1,0 +1,235 @@
+"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map ... -o fig.png|fig.svg``.
+
+:func:`add_plot_parser` adds the ``plot`` subcommand to the ``tensegrity-opt`` parser
+(:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
+other commands (``--n --a --b --k --L0`` uniform, the paper's chain by default, or
+``--manipulator FILE.json``), ``--json`` and ``-o/--output`` (the format follows the suffix);
+its ``func(args, m)`` returns ``(data, text)`` as the other commands do, so ``cli.main``
+prints one line (or JSON) and maps errors to one line on stderr and exit status 2.
+
+``python -m tensegrity_opt.plot_cli KIND ...`` runs the same command on its own.
+
+Examples::
+
+    tensegrity-opt plot curve --start 0 --stop 2 --num 41 -o curve.png
+    tensegrity-opt plot curve --start 0 --stop 1 --num 21 --branch all -o branches.svg
+    tensegrity-opt plot landscape --dx 0.1 --pair 0 3 -o landscape.png
+    tensegrity-opt plot shapes --dx 0.1 -o shapes.svg
+    tensegrity-opt plot torque --vary L0 --values 0.5 1 1.5 2 -o torque.png
+    tensegrity-opt plot map --x k 0.5 2 16 --y L0 0.5 2.5 21 -o map.png
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .errors import InvalidParameterError, UnsupportedError
+from .manipulator import Manipulator
+
+__all__ = ["add_plot_parser", "main", "KINDS"]
+
+KINDS = ("curve", "landscape", "shapes", "torque", "map")
+_PARAMS = ("a", "b", "k", "L0")
+
+
+def _output(value: str) -> str:
+    if Path(value).suffix.lower() not in (".png", ".svg"):
+        raise argparse.ArgumentTypeError(f"the figure file must end in .png or .svg, got {value!r}")
+    return value
+
+
+def _common(sp: argparse.ArgumentParser) -> None:
+    """The manipulator options of ``cli.build_parser``'s ``common()`` (same names and defaults)."""
+    g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
+    g.add_argument("--n", type=int, default=4, help="number of segments")
+    g.add_argument("--a", type=float, default=1.0)
+    g.add_argument("--b", type=float, default=1.0)
+    g.add_argument("--k", type=float, default=1.0)
+    g.add_argument("--L0", type=float, default=1.0)
+    g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
+    sp.add_argument("--json", action="store_true", help="print JSON instead of a line of text")
+    sp.add_argument("-o", "--output", type=_output, required=True, metavar="FIG.png|FIG.svg",
+                    help="figure file; PNG or SVG by its suffix")
+    sp.add_argument("--dpi", type=float, default=150.0, help="resolution of a PNG (default 150)")
+
+
+def _axis(spec: list[str], name: str) -> tuple[str, np.ndarray]:
+    param = spec[0]
+    if param not in _PARAMS:
+        raise InvalidParameterError(f"--{name}: the parameter must be one of {', '.join(_PARAMS)}, got {param!r}",
+                                    field=name)
+    try:
+        start, stop, num = float(spec[1]), float(spec[2]), int(spec[3])
+    except ValueError:
+        raise InvalidParameterError(f"--{name} takes PARAM START STOP NUM, got {' '.join(spec)!r}",
+                                    field=name) from None
+    return param, np.linspace(start, stop, num)
+
+
+def _render(args: argparse.Namespace, fig: Any, kind: str, extra: dict[str, Any]) -> tuple[dict[str, Any], str]:
+    from . import plots
+
+    path = plots.save(fig, args.output, dpi=args.dpi)
+    fmt = path.suffix.lower().lstrip(".")
+    size = path.stat().st_size
+    data = {"kind": kind, "output": str(path), "format": fmt, "bytes": size, **extra}
+    return data, f"wrote {path} ({kind}, {fmt.upper()}, {size} bytes)"
+
+
+def _plots():
+    try:
+        import matplotlib.figure  # noqa: F401  (fail here, not after a long solve, when it is missing)
+
+        from . import plots
+    except ImportError as exc:
+        raise UnsupportedError(f"figures need matplotlib ({exc}): python3 -m pip install matplotlib",
+                               field="matplotlib") from None
+    return plots
+
+
+def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    dx = np.linspace(args.start, args.stop, args.num)
+    from .curves import force_deflection
+
+    c = force_deflection(m, dx, args.dy, branch=args.branch)
+    fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
+    return _render(args, fig, "curve", {"points": int(c.dx.size), "jumps": [j.kind for j in c.jumps],
+                                        "branches": len(c.branches)})
+
+
+def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    from .equilibria import find_equilibria
+
+    eqs = find_equilibria(m, args.dx, args.dy) if m.n == 4 else None
+    span: float | str | None = "auto" if args.span is None else (None if args.span <= 0 else args.span)
+    fig = plots.plot_landscape(m, args.dx, args.dy, tuple(args.pair), args.grid, span=span, equilibria=eqs)
+    return _render(args, fig, "landscape", {"equilibria": [{"shape": e.shape, "kind": e.kind,
+                                                            "q": e.q.tolist()} for e in eqs or []]})
+
+
+def _cmd_shapes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    from .equilibria import find_equilibria
+
+    eqs = find_equilibria(m, args.dx, args.dy)
+    fig = plots.plot_shapes(m, args.dx, args.dy, equilibria=eqs, max_panels=args.max_panels)
+    return _render(args, fig, "shapes", {"equilibria": [{"shape": e.shape, "kind": e.kind, "q": e.q.tolist()}
+                                                        for e in eqs]})
+
+
+def _cmd_torque(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    if args.vary:
+        if not args.values:
+            raise InvalidParameterError("--vary needs --values V1 V2 ...", field="values")
+        base = m.segments[0]
+        segs = [base.replace(**{args.vary: v}) for v in args.values]
+    else:
+        segs = list(m.segments)
+    q = None
+    if args.qmin is not None or args.qmax is not None:
+        lim = min(s.joint_limit for s in segs)
+        q = np.linspace(-lim if args.qmin is None else args.qmin, lim if args.qmax is None else args.qmax, args.num)
+    fig = plots.plot_torque(segs, q, num=args.num)
+    return _render(args, fig, "torque", {"segments": [s.to_dict() for s in plots._segments(segs)]})
+
+
+def _cmd_map(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    px, xs = _axis(args.x, "x")
+    py, ys = _axis(args.y, "y")
+    fig = plots.plot_map(m, px, xs, py, ys, args.boundary)
+    return _render(args, fig, "map", {"x": {"param": px, "values": xs.tolist()},
+                                      "y": {"param": py, "values": ys.tolist()}, "boundary": args.boundary})
+
+
+def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
+    """Add ``plot {curve,landscape,shapes,torque,map}`` to ``subparsers`` (``add_subparsers()``'s result).
+
+    Each kind sets ``func(args, m) -> (data, text)`` like the other commands of ``cli.py``.
+    Returns the ``plot`` parser.
+    """
+    sp = subparsers.add_parser(
+        "plot", help="figures (PNG/SVG): force-deflection curve, energy landscape, equilibrium shapes, "
+                     "torque curves, critical-load map",
+        description="Draw a figure with matplotlib and write it to -o FILE (.png or .svg).")
+    kinds = sp.add_subparsers(dest="kind", required=True, metavar="KIND")
+
+    k = kinds.add_parser("curve", help="force-deflection curves Fx, Fy with their jumps (Fig. 6)")
+    _common(k)
+    k.add_argument("--start", type=float, default=0.0)
+    k.add_argument("--stop", type=float, default=1.0)
+    k.add_argument("--num", type=int, default=41)
+    k.add_argument("--dy", type=float, default=0.0)
+    k.add_argument("--branch", choices=("stable", "all"), default="stable",
+                   help="'all': every branch, unstable parts dashed")
+    k.set_defaults(func=_cmd_curve)
+
+    k = kinds.add_parser("landscape", help="energy contours E(q_i, q_j) with every equilibrium (n = 4, Figs. 4-5)")
+    _common(k)
+    k.add_argument("--dx", type=float, default=0.1)
+    k.add_argument("--dy", type=float, default=0.0)
+    k.add_argument("--pair", type=int, nargs=2, default=[0, 3], metavar=("I", "J"),
+                   help="the two grid joints, 0-based (default 0 3: the paper's q1, q4)")
+    k.add_argument("--grid", type=int, default=101, help="points per axis")
+    k.add_argument("--span", type=float, default=None,
+                   help="half-width of the axes (rad); default: the reachable region; 0: the physical range")
+    k.set_defaults(func=_cmd_landscape)
+
+    k = kinds.add_parser("shapes", help="the chain drawn in every equilibrium, coloured by stability")
+    _common(k)
+    k.add_argument("--dx", type=float, default=0.1)
+    k.add_argument("--dy", type=float, default=0.0)
+    k.add_argument("--max-panels", type=int, default=24, help="draw at most this many (lowest energies)")
+    k.set_defaults(func=_cmd_shapes)
+
+    k = kinds.add_parser("torque", help="torque-angle curves M(q) of the segments (Fig. 2)")
+    _common(k)
+    k.add_argument("--vary", choices=_PARAMS, help="one curve per value of this parameter (first segment)")
+    k.add_argument("--values", type=float, nargs="+", metavar="V", help="the values for --vary")
+    k.add_argument("--qmin", type=float, default=None, help="default: the physical range")
+    k.add_argument("--qmax", type=float, default=None)
+    k.add_argument("--num", type=int, default=401)
+    k.set_defaults(func=_cmd_torque)
+
+    k = kinds.add_parser("map", help="critical load over two design parameters (a, b, k, L0)")
+    _common(k)
+    k.add_argument("--x", nargs=4, required=True, metavar=("PARAM", "START", "STOP", "NUM"),
+                   help="horizontal axis, e.g. --x k 0.5 2 16")
+    k.add_argument("--y", nargs=4, required=True, metavar=("PARAM", "START", "STOP", "NUM"),
+                   help="vertical axis, e.g. --y L0 0.5 2.5 21")
+    k.add_argument("--boundary", choices=("guided", "free"), default="guided")
+    k.set_defaults(func=_cmd_map)
+    return sp
+
+
+def main(argv: list[str] | None = None) -> int:
+    """``python -m tensegrity_opt.plot_cli KIND ...``: the ``plot`` command on its own."""
+    import json
+
+    from .cli import _manipulator
+    from .errors import TensegrityError
+
+    p = argparse.ArgumentParser(prog="tensegrity-opt")
+    sub = p.add_subparsers(dest="command", required=True)
+    add_plot_parser(sub)
+    args = p.parse_args(["plot", *(sys.argv[1:] if argv is None else argv)])
+    try:
+        m = _manipulator(args)
+        data, text = args.func(args, m)
+    except (TensegrityError, OSError, json.JSONDecodeError, TypeError) as exc:
+        print(f"tensegrity-opt: error: {exc}", file=sys.stderr)
+        return 2
+    print(json.dumps(data, indent=2) if args.json else text)
+    return 0
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())

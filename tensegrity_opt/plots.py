@@ -1,0 +1,601 @@
+"""Figures (matplotlib, Agg canvas): curves, landscapes, shapes, torque curves and critical-load maps.
+
+Every ``plot_*`` function computes its data with the library and returns a
+:class:`matplotlib.figure.Figure` on an Agg canvas; :func:`save` writes it as PNG or SVG
+(from the file suffix) and :func:`render` returns the bytes. Matplotlib is imported
+lazily: ``import tensegrity_opt`` (and even ``import tensegrity_opt.plots`` with
+:func:`chain_geometry`) works without it. No function touches ``pyplot`` or the global
+``rcParams``, so figures may be drawn from several threads at once (one figure per thread).
+
+========================  ===================================================================
+function                  figure
+========================  ===================================================================
+:func:`plot_curve`        ``Fx`` and ``Fy`` against the deflection (Fig. 6) with the jumps of
+                          :func:`~tensegrity_opt.force_deflection`; ``branch="all"``: every branch,
+                          unstable parts dashed
+:func:`plot_landscape`    energy contours of :func:`~tensegrity_opt.energy_landscape` on both elbow
+                          branches, every equilibrium of :func:`~tensegrity_opt.find_equilibria`
+                          marked and labelled (Figs. 4-5, n = 4)
+:func:`plot_shapes`       the chain in each equilibrium: triangles, joints, both springs, coloured
+                          by stability, titled with Table 2's label
+:func:`plot_torque`       torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2)
+:func:`plot_map`          critical load ``P = -Fx0`` over two design parameters (blank where
+                          :func:`~tensegrity_opt.critical_force` raises)
+========================  ===================================================================
+
+The plotted data are the library's numbers, unchanged. Artists carry stable ``gid`` values so
+that they can be found again (tests read the data back from them):
+
+* curve: ``"fx"``, ``"fy"`` (the selected least-energy stable curve, NaN-separated at every
+  jump), ``"jump-<k>-<kind>-fx"`` / ``"-fy"`` (the ``k``-th entry of ``Curve.jumps``; a buckling
+  jump is the vertical segment at the abscissa 0 from 0 to the critical force),
+  ``"branch-<id>-fx-stable"`` / ``"-unstable"`` (``branch="all"``; NaN where the branch does not
+  exist or has the other stability);
+* landscape: ``"energy-elbow+1"`` / ``"energy-elbow-1"`` (QuadMesh, array = ``energy[e].T``),
+  ``"contour-elbow..."`` (contour set), ``"equilibria-elbow..."`` (scatter of ``(q_i, q_j)``);
+* shapes: per panel ``"triangle-<i>-<0|1>"`` (proximal/distal triangle of segment ``i``),
+  ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``;
+  the axes' gid is ``"equilibrium-<k>"``;
+* torque: ``"torque-<k>"``; map: ``"critical-load"`` (QuadMesh, array ``P[iy, ix]``).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .buckling import critical_force
+from .curves import Curve, force_deflection
+from .equilibria import find_equilibria
+from .equilibrium import Equilibrium
+from .errors import InvalidParameterError, TensegrityError
+from .landscape import complete_configuration, energy_landscape
+from .manipulator import Manipulator
+from .segment import Segment
+
+__all__ = ["chain_geometry", "plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "save",
+           "render", "landscape_span", "critical_load_grid", "curve_breaks", "physical_range",
+           "segment_label", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS"]
+
+#: File suffix / format name -> MIME type.
+FORMATS = {"png": "image/png", "svg": "image/svg+xml"}
+
+#: Colour of an equilibrium by its ``kind``.
+STABILITY_COLORS = {"minimum": "tab:green", "saddle": "tab:orange", "maximum": "tab:red",
+                    "degenerate": "tab:gray"}
+
+#: Design parameters :func:`plot_map` can vary (applied to every segment with ``Segment.replace``).
+MAP_PARAMS = ("a", "b", "k", "L0")
+
+_KIND_TEXT = {"minimum": "stable", "saddle": "saddle", "maximum": "maximum", "degenerate": "degenerate"}
+
+
+# ---------------------------------------------------------------------------- matplotlib plumbing
+def _new_figure(figsize: tuple[float, float]) -> Any:
+    """A Figure on its own Agg canvas (no pyplot, no global state)."""
+    try:
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+    except ImportError as exc:  # pragma: no cover - depends on the environment
+        raise ImportError("tensegrity_opt.plots needs matplotlib: python3 -m pip install matplotlib") from exc
+    fig = Figure(figsize=figsize, layout="constrained")
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def _format_of(path: str | Path) -> str:
+    fmt = Path(path).suffix.lower().lstrip(".")
+    if fmt not in FORMATS:
+        raise InvalidParameterError(f"the figure file must end in .png or .svg, got {str(path)!r}", field="path")
+    return fmt
+
+
+def _savefig_kwargs(fmt: str, dpi: float | None) -> dict[str, Any]:
+    kw: dict[str, Any] = {"format": fmt}
+    if dpi is not None:
+        kw["dpi"] = float(dpi)
+    if fmt == "svg":
+        kw["metadata"] = {"Date": None}          # reproducible files
+    return kw
+
+
+def save(fig: Any, path: str | Path, *, dpi: float | None = None) -> Path:
+    """Write ``fig`` to ``path`` as PNG or SVG, chosen by the suffix (``.png`` / ``.svg``).
+
+    Raises :class:`InvalidParameterError` (``field="path"``) for any other suffix.
+    """
+    path = Path(path)
+    fmt = _format_of(path)
+    fig.savefig(path, **_savefig_kwargs(fmt, dpi))
+    return path
+
+
+def render(fig: Any, fmt: str = "png", *, dpi: float | None = None) -> bytes:
+    """The bytes of ``fig`` as ``"png"`` or ``"svg"``."""
+    import io
+
+    if fmt not in FORMATS:
+        raise InvalidParameterError(f"format must be 'png' or 'svg', got {fmt!r}", field="format")
+    buf = io.BytesIO()
+    fig.savefig(buf, **_savefig_kwargs(fmt, dpi))
+    return buf.getvalue()
+
+
+# ---------------------------------------------------------------------------- geometry
+def chain_geometry(m: Manipulator, q: Any) -> dict[str, np.ndarray]:
+    """Drawing geometry of the chain at the joint angles ``q`` (conventions.md).
+
+    The base half-link of length ``b_1`` runs from the origin along +x to joint 1; the link
+    after joint ``j`` has the absolute angle ``phi_j = q_1 + ... + q_j`` and length
+    ``b_j + b_{j+1}`` (the last one ``b_n``). Segment ``i`` has its joint at ``joints[i]``, a
+    proximal triangle on the link before the joint and a distal one on the link after it: apex
+    at the joint, base perpendicular to the link at distance ``b_i`` from the joint, base
+    corners ``a_i`` either side. Spring 1 joins the two corners on the left (+ normal) side,
+    spring 2 those on the right side, so that ``|spring 1| = 2c cos(beta + q/2)`` and
+    ``|spring 2| = 2c cos(beta - q/2)`` (:meth:`Manipulator.spring_lengths`).
+
+    Returns
+    -------
+    dict of ndarray
+        ``"base"`` (2,) the origin; ``"joints"`` (n, 2); ``"tip"`` (2,) = :meth:`Manipulator.tip`;
+        ``"centerline"`` (n + 2, 2): origin, joints, tip; ``"link_angles"`` (n + 1,): ``phi_0 = 0``
+        (base link) then ``phi_1..phi_n``; ``"triangles"`` (n, 2, 3, 2): segment, proximal/distal,
+        vertices (joint, left corner, right corner); ``"springs"`` (n, 2, 2, 2): segment, spring
+        1/2, endpoints (proximal corner, distal corner).
+    """
+    q = np.asarray(q, dtype=float)
+    if q.shape != (m.n,):
+        raise InvalidParameterError(f"q must have {m.n} joint angles, got shape {q.shape}", field="q")
+    a, b = m.a, m.b
+    phi = np.concatenate([[0.0], np.cumsum(q)])
+    u = np.column_stack([np.cos(phi), np.sin(phi)])            # link directions (n + 1, 2)
+    nrm = np.column_stack([-np.sin(phi), np.cos(phi)])         # left normals
+    links = m.link_lengths
+    joints = np.empty((m.n, 2))
+    joints[0] = (m.base_length, 0.0)
+    for j in range(1, m.n):
+        joints[j] = joints[j - 1] + links[j - 1] * u[j]
+    tip = joints[-1] + links[-1] * u[m.n]
+    A, B = a[:, None], b[:, None]
+    prox_l = joints - B * u[:-1] + A * nrm[:-1]
+    prox_r = joints - B * u[:-1] - A * nrm[:-1]
+    dist_l = joints + B * u[1:] + A * nrm[1:]
+    dist_r = joints + B * u[1:] - A * nrm[1:]
+    triangles = np.stack([np.stack([joints, prox_l, prox_r], axis=1),
+                          np.stack([joints, dist_l, dist_r], axis=1)], axis=1)
+    springs = np.stack([np.stack([prox_l, dist_l], axis=1), np.stack([prox_r, dist_r], axis=1)], axis=1)
+    centerline = np.vstack([[0.0, 0.0], joints, tip])
+    return {"base": np.zeros(2), "joints": joints, "tip": tip, "centerline": centerline, "link_angles": phi,
+            "triangles": triangles, "springs": springs}
+
+
+# ---------------------------------------------------------------------------- force-deflection
+def _abscissa(c: Curve) -> tuple[np.ndarray, str]:
+    """The deflection that varies along the curve: ``dx``, or ``dy`` when only ``dy`` varies."""
+    if c.dx.size > 1 and np.ptp(c.dx) == 0.0 and np.ptp(c.dy) > 0.0:
+        return c.dy, "dy"
+    return c.dx, "dx"
+
+
+def _broken(x: np.ndarray, y: np.ndarray, breaks: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``x, y`` with a NaN inserted before every index in ``breaks`` (matplotlib breaks the line)."""
+    return np.insert(x.astype(float), breaks, np.nan), np.insert(y.astype(float), breaks, np.nan)
+
+
+def curve_breaks(c: Curve, component: int) -> np.ndarray:
+    """Indices ``j`` where the plotted component (0: ``Fx``, 1: ``Fy``) of the selected curve is
+    discontinuous between points ``j - 1`` and ``j``: the selected branch changes there and the
+    matching :class:`~tensegrity_opt.Jump` changes that component (a change without a recorded
+    jump also breaks). ``Fy`` stays continuous through the buckling jump (it is 0 on both sides)."""
+    out = []
+    for j in np.flatnonzero(c.branch[1:] != c.branch[:-1]) + 1:
+        jump = next((jp for jp in c.jumps if jp.dx_before == c.dx[j - 1] and jp.dx_after == c.dx[j]
+                     and jp.dy_before == c.dy[j - 1] and jp.dy_after == c.dy[j]), None)
+        if jump is None or jump.force_before[component] != jump.force_after[component]:
+            out.append(int(j))
+    return np.array(out, dtype=int)
+
+
+def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *, curve: Curve | None = None,
+               figsize: tuple[float, float] = (10.0, 4.2)) -> Any:
+    """Force-deflection curves ``Fx`` and ``Fy`` (Fig. 6) from :func:`~tensegrity_opt.force_deflection`.
+
+    Two panels, ``Fx`` and ``Fy`` against ``dx`` (against ``dy`` when only ``dy`` varies). The
+    selected least-energy stable curve is drawn solid and broken at every jump; the buckling jump
+    at ``dx -> 0+`` is the vertical dashed segment from 0 to the critical force, a branch switch the
+    dotted segment between the forces before and after. ``branch="all"`` also draws every branch
+    followed (``Curve.branches``): solid where stable, dashed where unstable.
+
+    Parameters
+    ----------
+    m : Manipulator
+    dx, dy, branch
+        As :func:`~tensegrity_opt.force_deflection`.
+    curve : Curve, optional
+        A curve already computed (then ``dx``, ``dy``, ``branch`` are ignored).
+    """
+    c = curve if curve is not None else force_deflection(m, dx, dy, branch=branch)
+    x, xname = _abscissa(c)
+    fig = _new_figure(figsize)
+    axes = fig.subplots(1, 2)
+    comps = (("fx", c.fx, "$F_x$"), ("fy", c.fy, "$F_y$"))
+    colors = ["tab:blue", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "tab:gray"]
+    for comp, (ax, (name, vals, tex)) in enumerate(zip(axes, comps)):
+        breaks = curve_breaks(c, comp)
+        ax.axhline(0.0, color="0.75", lw=0.8, zorder=0)
+        if c.branches:
+            ax.plot(*_broken(x, vals, breaks), color="0.8", lw=5.0, solid_capstyle="round", zorder=1,
+                    label="least-energy stable")
+            for k, br in enumerate(c.branches):
+                bid = int(br.branch[0]) if br.branch.size else k
+                v = getattr(br, name)
+                ok = np.isfinite(v)
+                shape = next((s for s, good in zip(br.shape, ok) if good and s), "")
+                col = colors[k % len(colors)]
+                line, = ax.plot(x, np.where(ok & br.stable, v, np.nan), color=col, lw=1.5, zorder=3,
+                                label=f"branch {bid} {shape}".rstrip())
+                line.set_gid(f"branch-{bid}-{name}-stable")
+                line, = ax.plot(x, np.where(ok & ~br.stable, v, np.nan), color=col, lw=1.2, ls="--", zorder=2)
+                line.set_gid(f"branch-{bid}-{name}-unstable")
+        line, = ax.plot(*_broken(x, vals, breaks), color="black" if c.branches else "tab:blue",
+                        lw=1.0 if c.branches else 1.8, marker="o", ms=2.5, zorder=4,
+                        label=None if c.branches else "least-energy stable")
+        line.set_gid(name)
+        for k, j in enumerate(c.jumps):
+            f0, f1 = float(j.force_before[comp]), float(j.force_after[comp])
+            if f0 == f1:
+                continue                        # this component is continuous there
+            if j.kind == "buckling":
+                x0 = float(j.dx_before if xname == "dx" else j.dy_before)
+                seg, = ax.plot([x0, x0], [f0, f1], color="tab:red", ls="--", lw=1.5, zorder=5,
+                               label="buckling jump")
+                ax.plot([x0], [f1], marker="o", mfc="white", mec="tab:red", ls="none", zorder=6)
+                ax.annotate(f"{tex}$_0$ = {f1:.4g}" if name == "fx" else f"{f1:.4g}", (x0, f1),
+                            textcoords="offset points", xytext=(6, -4 if f1 < f0 else 4), fontsize=8,
+                            color="tab:red", va="top" if f1 < f0 else "bottom")
+            else:
+                xa = float(j.dx_before if xname == "dx" else j.dy_before)
+                xb = float(j.dx_after if xname == "dx" else j.dy_after)
+                seg, = ax.plot([xa, xb], [f0, f1], color="tab:red", ls=":", lw=1.5, marker="D", ms=4,
+                               zorder=5, label="branch switch")
+            seg.set_gid(f"jump-{k}-{j.kind}-{name}")
+        ax.set_xlabel("$\\delta_x$" if xname == "dx" else "$\\delta_y$")
+        ax.set_ylabel(tex)
+        ax.grid(True, lw=0.4, alpha=0.5)
+        handles, labels = ax.get_legend_handles_labels()
+        seen: dict[str, Any] = {}
+        for h, lab in zip(handles, labels):
+            seen.setdefault(lab, h)
+        if seen:
+            ax.legend(seen.values(), seen.keys(), fontsize=7, loc="best")
+    other = f"$\\delta_y$ = {float(c.dy[0]):g}" if xname == "dx" and np.ptp(c.dy) == 0 else (
+        f"$\\delta_x$ = {float(c.dx[0]):g}" if xname == "dy" else "")
+    fig.suptitle(f"Force-deflection, n = {m.n}" + (f", {other}" if other else "")
+                 + (" (all branches)" if c.branches else ""), fontsize=11)
+    return fig
+
+
+# ---------------------------------------------------------------------------- landscape
+def _elbow_of(m: Manipulator, target: np.ndarray, pair: tuple[int, int], q: np.ndarray) -> int:
+    """Index (0: elbow +1, 1: elbow -1) of the landscape branch through ``q``."""
+    errs = []
+    for elbow in (1, -1):
+        full = complete_configuration(m, target, pair, q[pair[0]], q[pair[1]], elbow)
+        err = float(np.max(np.abs(full - q)))
+        errs.append(err if math.isfinite(err) else math.inf)
+    return int(np.argmin(errs))
+
+
+def _levels(values: np.ndarray, num: int) -> np.ndarray:
+    finite = values[np.isfinite(values)]
+    if finite.size == 0:
+        return np.array([])
+    lv = np.unique(np.percentile(finite, np.linspace(0.0, 100.0, num)))
+    return lv
+
+
+def landscape_span(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, int] = (0, 3),
+                   probe: int = 201) -> float:
+    """Half-width of the square ``[-s, s]^2`` holding every finite point of the landscape.
+
+    A ``probe`` x ``probe`` landscape over the default axes (the physical range) locates the
+    reachable region; the answer adds two probe cells and never exceeds the default span.
+    For small deflections the region is a small patch around the origin, so plotting over it
+    instead of the whole physical range resolves the equilibria.
+    """
+    full = energy_landscape(m, dx, dy, pair=pair, grid=probe)
+    finite = np.isfinite(full.energy).any(axis=0)
+    default = float(np.max(np.abs(full.qi)))
+    if not finite.any():
+        return default
+    cell = 2.0 * default / (probe - 1)
+    ext = max(float(np.max(np.abs(full.qi[finite.any(axis=1)]))), float(np.max(np.abs(full.qj[finite.any(axis=0)]))))
+    return float(min(default, ext + 2.0 * cell))
+
+
+def plot_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, int] = (0, 3),
+                   grid: Any = 101, *, span: float | str | None = "auto",
+                   equilibria: list[Equilibrium] | None = None, levels: int = 25,
+                   figsize: tuple[float, float] = (11.0, 4.8)) -> Any:
+    """Energy landscape ``E(q_i, q_j)`` (Figs. 4-5, n = 4) with every equilibrium marked.
+
+    One panel per elbow branch of :func:`~tensegrity_opt.energy_landscape` (colour = energy,
+    contour lines at energy percentiles, blank where unreachable or outside the physical range).
+    Every equilibrium of :func:`~tensegrity_opt.find_equilibria` (or ``equilibria``) is marked at
+    its ``(q_i, q_j)`` on the branch it lies on, coloured by stability and labelled with its shape.
+
+    ``grid``, ``span`` go to :func:`~tensegrity_opt.energy_landscape`; ``span="auto"`` (default)
+    uses :func:`landscape_span` (the reachable region), ``None`` the library's default (the
+    physical range).
+
+    Raises
+    ------
+    UnsupportedError
+        (``ValueError``) unless ``m.n == 4``; ``UnreachableTargetError`` beyond reach.
+    """
+    if isinstance(span, str):
+        if span != "auto":
+            raise InvalidParameterError(f"span must be a number, None or 'auto', got {span!r}", field="span")
+        span = landscape_span(m, dx, dy, pair) if isinstance(grid, (int, np.integer)) else None
+    land = energy_landscape(m, dx, dy, pair=pair, grid=grid, span=span)
+    eqs = find_equilibria(m, dx, dy) if equilibria is None else list(equilibria)
+    pair = land.pair
+    target = m.target(dx, dy)
+    import matplotlib
+    from matplotlib.colors import BoundaryNorm, Normalize
+    from matplotlib.lines import Line2D
+
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad=(1.0, 1.0, 1.0, 0.0))
+    lv = _levels(land.energy, levels)
+    norm = BoundaryNorm(lv, ncolors=cmap.N, extend="neither") if lv.size >= 2 else Normalize()
+    fig = _new_figure(figsize)
+    axes = fig.subplots(1, 2, sharex=True, sharey=True)
+    where = [_elbow_of(m, target, pair, e.q) for e in eqs]
+    mesh = None
+    for b, (ax, elbow) in enumerate(zip(axes, ("+1", "-1"))):
+        E = np.ma.masked_invalid(land.energy[b].T)
+        mesh = ax.pcolormesh(land.qi, land.qj, E, shading="nearest", cmap=cmap, norm=norm, rasterized=True)
+        mesh.set_gid(f"energy-elbow{elbow}")
+        if lv.size >= 2 and E.count() > 3:
+            cs = ax.contour(land.qi, land.qj, E, levels=lv, colors="k", linewidths=0.4, alpha=0.6)
+            cs.set_gid(f"contour-elbow{elbow}")
+        mine = [e for e, w in zip(eqs, where) if w == b]
+        pts = np.array([[e.q[pair[0]], e.q[pair[1]]] for e in mine]).reshape(-1, 2)
+        sc = ax.scatter(pts[:, 0], pts[:, 1], c=[STABILITY_COLORS.get(e.kind, "k") for e in mine] or None,
+                        s=60, edgecolors="black", linewidths=0.8, zorder=5)
+        sc.set_gid(f"equilibria-elbow{elbow}")
+        for e, (x, y) in zip(mine, pts):
+            ax.annotate(f"{e.shape}", (x, y), textcoords="offset points", xytext=(5, 5), fontsize=8,
+                        fontweight="bold", color="black",
+                        bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.7})
+        ax.set_title(f"elbow {elbow}", fontsize=10)
+        ax.set_xlabel(f"$q_{pair[0] + 1}$ (rad)")
+        ax.set_xlim(float(np.min(land.qi)), float(np.max(land.qi)))
+        ax.set_ylim(float(np.min(land.qj)), float(np.max(land.qj)))
+        ax.set_aspect("equal", adjustable="box")
+    axes[0].set_ylabel(f"$q_{pair[1] + 1}$ (rad)")
+    if mesh is not None:
+        fig.colorbar(mesh, ax=list(axes), label="energy E", shrink=0.9)
+    kinds = [k for k in STABILITY_COLORS if any(e.kind == k for e in eqs)]
+    if kinds:
+        axes[1].legend([Line2D([], [], ls="none", marker="o", mfc=STABILITY_COLORS[k], mec="black") for k in kinds],
+                       [_KIND_TEXT[k] for k in kinds], fontsize=7, loc="upper right")
+    fig.suptitle(f"Energy landscape E(q{pair[0] + 1}, q{pair[1] + 1}), n = {m.n}, "
+                 f"$\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}: {len(eqs)} equilibria", fontsize=11)
+    return fig
+
+
+# ---------------------------------------------------------------------------- shapes
+def plot_shapes(m: Manipulator, dx: float, dy: float = 0.0, *, equilibria: list[Equilibrium] | None = None,
+                max_panels: int = 24, ncols: int | None = None, panel_width: float = 3.8) -> Any:
+    """The chain in every equilibrium of :func:`~tensegrity_opt.find_equilibria`, one panel each.
+
+    Each panel draws, for every segment, both triangles (polygons), the joint (dot) and both
+    springs (lines between the triangles' base corners), coloured by stability (stable green,
+    saddle orange, maximum red), with the link centre line and the tip; the title is Table 2's
+    shape label, the kind, the energy and the tip force. At most ``max_panels`` equilibria (the
+    lowest energies) are drawn.
+    """
+    eqs = find_equilibria(m, dx, dy) if equilibria is None else list(equilibria)
+    shown = eqs[:max(1, int(max_panels))]
+    k = len(shown)
+    cols = ncols or min(k, 3)
+    rows = math.ceil(k / cols)
+    geos = [chain_geometry(m, e.q) for e in shown]
+    allpts = np.vstack([np.vstack([g["triangles"].reshape(-1, 2), g["centerline"]]) for g in geos])
+    amax = float(np.max(m.a))
+    lo = allpts.min(axis=0) - 0.15 * amax
+    hi = allpts.max(axis=0) + 0.15 * amax
+    aspect = float(np.clip((hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-12), 0.15, 3.0))
+    width = panel_width
+    fig = _new_figure((width * cols, (width * aspect + 0.9) * rows + 0.4))
+    axes = np.atleast_1d(fig.subplots(rows, cols, squeeze=False)).ravel()
+    from matplotlib.patches import Polygon
+
+    for idx, (ax, e, g) in enumerate(zip(axes, shown, geos)):
+        col = STABILITY_COLORS.get(e.kind, "k")
+        ax.set_gid(f"equilibrium-{idx}")
+        ax.plot([0.0, 0.0], [-1.4 * m.a[0], 1.4 * m.a[0]], color="0.3", lw=3.0, solid_capstyle="butt")
+        line, = ax.plot(g["centerline"][:, 0], g["centerline"][:, 1], color="0.55", lw=0.8, zorder=1)
+        line.set_gid("centerline")
+        for i in range(m.n):
+            for t in range(2):
+                poly = Polygon(g["triangles"][i, t], closed=True, facecolor=col, alpha=0.35, edgecolor=col, lw=0.9,
+                               zorder=2)
+                poly.set_gid(f"triangle-{i}-{t}")
+                ax.add_patch(poly)
+            for s in range(2):
+                p = g["springs"][i, s]
+                line, = ax.plot(p[:, 0], p[:, 1], color=col, lw=1.4, ls="-" if s == 0 else "--", zorder=3)
+                line.set_gid(f"spring-{i}-{s + 1}")
+        sc = ax.scatter(g["joints"][:, 0], g["joints"][:, 1], s=14, color="black", zorder=4)
+        sc.set_gid("joints")
+        line, = ax.plot([g["tip"][0]], [g["tip"][1]], marker="x", color="black", ms=6, zorder=5)
+        line.set_gid("tip")
+        ax.set_title(f"{e.shape} ({e.signs}): {_KIND_TEXT.get(e.kind, e.kind)}\n"
+                     f"E = {e.energy:.4g}, F = ({e.fx:.3g}, {e.fy:.3g})", fontsize=8, color=col)
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1], hi[1])
+        ax.set_aspect("equal", adjustable="box")
+        ax.tick_params(labelsize=7)
+    for ax in axes[k:]:
+        ax.set_visible(False)
+    more = f" (the {k} lowest of {len(eqs)})" if len(eqs) > k else ""
+    fig.suptitle(f"Equilibria at $\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}, n = {m.n}: {len(eqs)}{more}; "
+                 "spring 1 solid, spring 2 dashed", fontsize=10)
+    return fig
+
+
+# ---------------------------------------------------------------------------- torque
+def _segments(segments: Segment | Manipulator | Iterable[Segment]) -> list[Segment]:
+    if isinstance(segments, Segment):
+        return [segments]
+    if isinstance(segments, Manipulator):
+        segs = list(segments.segments)
+    else:
+        segs = list(segments)
+    out: list[Segment] = []
+    for i, s in enumerate(segs):
+        if not isinstance(s, Segment):
+            raise InvalidParameterError(f"segments[{i}] must be a Segment, got {type(s).__name__}",
+                                        field=f"segments[{i}]")
+        if s not in out:
+            out.append(s)
+    if not out:
+        raise InvalidParameterError("plot_torque needs at least one segment", field="segments")
+    return out
+
+
+def _fmt(v: float | tuple[float, float]) -> str:
+    return f"{v:g}" if not isinstance(v, tuple) else f"({v[0]:g}, {v[1]:g})"
+
+
+def segment_label(seg: Segment, others: Sequence[Segment] = ()) -> str:
+    """``"a=1, b=1, k=1, L0=1.2"``, restricted to the parameters that differ among ``others`` if any."""
+    names = [p for p in MAP_PARAMS if len({getattr(s, p) for s in others}) > 1] or list(MAP_PARAMS)
+    return ", ".join(f"{p}={_fmt(getattr(seg, p))}" for p in names)
+
+
+def physical_range(seg: Segment, num: int = 401) -> np.ndarray:
+    """``num`` angles evenly spaced inside the open physical range ``|q| < pi - 2 beta``."""
+    lim = seg.joint_limit
+    return np.linspace(-lim, lim, int(num) + 2)[1:-1]
+
+
+def plot_torque(segments: Segment | Manipulator | Iterable[Segment], q: Any = None, *, num: int = 401,
+                labels: Sequence[str] | None = None, figsize: tuple[float, float] = (6.4, 4.6)) -> Any:
+    """Torque-angle curves ``M(q)`` (Fig. 2) of one or several segments from :meth:`Segment.torque`.
+
+    ``q``: the angles (rad) for every curve; default ``num`` angles across each segment's own
+    open physical range ``|q| < pi - 2 beta`` (:func:`physical_range`), whose bounds are drawn
+    as dotted verticals. A Manipulator contributes its distinct segments.
+    """
+    segs = _segments(segments)
+    if labels is not None and len(labels) != len(segs):
+        raise InvalidParameterError(f"labels must have {len(segs)} entries", field="labels")
+    fig = _new_figure(figsize)
+    ax = fig.subplots()
+    ax.axhline(0.0, color="0.6", lw=0.8)
+    ax.axvline(0.0, color="0.85", lw=0.8)
+    limits: list[float] = []
+    qs = None if q is None else np.asarray(q, dtype=float).ravel()
+    for k, seg in enumerate(segs):
+        x = physical_range(seg, num) if qs is None else qs
+        y = seg.torque(x)
+        lab = labels[k] if labels is not None else segment_label(seg, segs)
+        lab += f" (K = {seg.stiffness:.3g}{'' if seg.monotonic() else ', non-monotonic'})"
+        line, = ax.plot(x, y, lw=1.6, label=lab)
+        line.set_gid(f"torque-{k}")
+        lim = seg.joint_limit
+        if not any(abs(lim - l) < 1e-12 for l in limits):
+            limits.append(lim)
+            for sgn in (-1, 1):
+                ax.axvline(sgn * lim, color=line.get_color(), ls=":", lw=1.0)
+    ax.set_xlabel("joint angle q (rad)")
+    ax.set_ylabel("spring torque M(q)")
+    ax.grid(True, lw=0.4, alpha=0.5)
+    ax.legend(fontsize=7, loc="best")
+    ax.set_title("Torque-angle curves (dotted: physical range |q| < $\\pi$ - 2$\\beta$)", fontsize=10)
+    return fig
+
+
+# ---------------------------------------------------------------------------- critical-load map
+def _axis_values(values: Any, field: str) -> np.ndarray:
+    v = np.asarray(values, dtype=float).ravel()
+    if v.size < 2:
+        raise InvalidParameterError(f"{field} needs at least 2 values", field=field)
+    if not np.all(np.isfinite(v)) or np.any(v <= 0.0):
+        raise InvalidParameterError(f"{field} must be finite and > 0", field=field)
+    d = np.diff(v)
+    if not (np.all(d > 0) or np.all(d < 0)):
+        raise InvalidParameterError(f"{field} must be strictly increasing or strictly decreasing", field=field)
+    return v
+
+
+def critical_load_grid(m: Manipulator, param_x: str, values_x: Any, param_y: str, values_y: Any,
+                       boundary: str = "guided") -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(xs, ys, P)`` with ``P[iy, ix] = -critical_force(m').force``, ``m'`` = every segment with
+    ``param_x = xs[ix]`` and ``param_y = ys[iy]``; NaN where ``critical_force`` raises for ``m'``
+    (straight unstable, not an equilibrium, a failed eigen-solve)."""
+    for f, p in (("param_x", param_x), ("param_y", param_y)):
+        if p not in MAP_PARAMS:
+            raise InvalidParameterError(f"{f} must be one of {', '.join(MAP_PARAMS)}, got {p!r}", field=f)
+    if param_x == param_y:
+        raise InvalidParameterError("param_x and param_y must differ", field="param_y")
+    if boundary not in ("guided", "free"):
+        raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
+    if boundary == "guided" and m.n < 2:
+        raise InvalidParameterError("a guided tip needs n >= 2 segments", field="n")
+    xs = _axis_values(values_x, "values_x")
+    ys = _axis_values(values_y, "values_y")
+    P = np.full((ys.size, xs.size), np.nan)
+    for iy, y in enumerate(ys):
+        for ix, x in enumerate(xs):
+            mm = Manipulator([s.replace(**{param_x: float(x), param_y: float(y)}) for s in m.segments])
+            try:
+                P[iy, ix] = -critical_force(mm, boundary).force
+            except (TensegrityError, ArithmeticError, np.linalg.LinAlgError):
+                pass
+    return xs, ys, P
+
+
+def plot_map(m: Manipulator, param_x: str, values_x: Any, param_y: str, values_y: Any, boundary: str = "guided",
+             *, figsize: tuple[float, float] = (6.6, 5.0)) -> Any:
+    """Critical load ``P = -Fx0`` of :func:`~tensegrity_opt.critical_force` over two design parameters.
+
+    ``param_x``, ``param_y``: two of ``a``, ``b``, ``k``, ``L0``, set to the same value in every
+    segment (``Segment.replace``; ``k``/``L0`` set both springs). Cells where ``critical_force``
+    raises (the straight chain is unstable or not an equilibrium) are blank. The manipulator's
+    own design is starred when it is uniform in both parameters.
+    """
+    xs, ys, P = critical_load_grid(m, param_x, values_x, param_y, values_y, boundary)
+    import matplotlib
+
+    cmap = matplotlib.colormaps["viridis"].with_extremes(bad=(1.0, 1.0, 1.0, 0.0))
+    fig = _new_figure(figsize)
+    ax = fig.subplots()
+    Pm = np.ma.masked_invalid(P)
+    mesh = ax.pcolormesh(xs, ys, Pm, shading="nearest", cmap=cmap)
+    mesh.set_gid("critical-load")
+    if Pm.count() >= 4 and xs.size >= 2 and ys.size >= 2 and np.nanmax(P) > np.nanmin(P):
+        cs = ax.contour(xs, ys, Pm, levels=8, colors="white", linewidths=0.6)
+        ax.clabel(cs, fontsize=7, fmt="%.3g")
+    fig.colorbar(mesh, ax=ax, label=f"critical load P = -Fx0 ({boundary} tip)")
+    base_x = {getattr(s, param_x) for s in m.segments}
+    base_y = {getattr(s, param_y) for s in m.segments}
+    if len(base_x) == 1 and len(base_y) == 1:
+        bx, by = next(iter(base_x)), next(iter(base_y))
+        if not isinstance(bx, tuple) and not isinstance(by, tuple):
+            star, = ax.plot([bx], [by], marker="*", ms=12, color="white", mec="black", ls="none", label="design")
+            star.set_gid("design")
+            ax.legend(fontsize=7, loc="best")
+    ax.set_xlabel(param_x)
+    ax.set_ylabel(param_y)
+    blank = int(np.count_nonzero(~np.isfinite(P)))
+    ax.set_title(f"Critical load, n = {m.n}" + (f" (blank: {blank} points where the straight chain is not a "
+                                                "stable equilibrium)" if blank else ""), fontsize=9)
+    return fig

@@ -1,0 +1,102 @@
+"""``tensegrity-opt sweep spec.json [-o out.csv|out.json|out.parquet] [--scheduler ...] [--no-progress]``.
+
+Wired into :mod:`tensegrity_opt.cli` by :func:`add_sweep_parser` (the command handles its own
+arguments, so it registers as a ``service``-style command returning the exit status).
+Without ``-o`` the rows go to stdout as CSV. The scheduler defaults to ``local`` (a
+``dask.distributed.LocalCluster``, one single-threaded worker process per core);
+``serial`` solves in this process; ``tcp://host:port`` uses a running Dask scheduler.
+A one-line summary goes to stderr. Errors (bad spec, unreadable file, unknown output type,
+unreachable scheduler) print one line to stderr and exit with status 2; points that fail
+are rows with an ``error`` and do not change the exit status.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import os
+import sys
+from pathlib import Path
+from typing import Any
+
+from .errors import TensegrityError
+
+__all__ = ["add_sweep_parser", "cmd_sweep"]
+
+_SUFFIXES = (".csv", ".json", ".parquet", ".pq")
+
+
+def add_sweep_parser(subparsers: Any) -> argparse.ArgumentParser:
+    """Add the ``sweep`` subcommand to ``subparsers`` (from ``ArgumentParser.add_subparsers``)."""
+    sp = subparsers.add_parser(
+        "sweep", help="run one analysis over a grid or a list of design points (Dask or serial)",
+        description="Run a sweep spec (JSON: analysis, manipulator, grid | points, options; see "
+                    "tensegrity_opt.sweep) and write one row per point.")
+    sp.add_argument("spec", help="sweep spec, a JSON file ('-' reads stdin)")
+    sp.add_argument("-o", "--output", metavar="FILE",
+                    help="out.csv | out.json | out.parquet (default: CSV on stdout)")
+    sp.add_argument("--scheduler", default="local", metavar="local|serial|tcp://HOST:PORT",
+                    help="where to solve: a local Dask cluster (default), this process, or a running "
+                         "Dask scheduler")
+    sp.add_argument("--workers", type=int, default=None, metavar="N",
+                    help="worker processes of the local cluster (default: one per core)")
+    sp.add_argument("--chunk-size", type=int, default=None, metavar="N",
+                    help="points per Dask task (default: about four tasks per worker, at most 64)")
+    sp.add_argument("--no-progress", action="store_true", help="no progress bar (it is shown only on a terminal)")
+    sp.set_defaults(service=cmd_sweep)
+    return sp
+
+
+def _load_spec(path: str) -> Any:
+    if path == "-":
+        return json.load(sys.stdin)
+    with open(path, encoding="utf-8") as fh:
+        return json.load(fh)
+
+
+def cmd_sweep(args: argparse.Namespace) -> int:
+    from .sweep import sweep, validate_spec
+
+    def fail(msg: object) -> int:
+        print(f"tensegrity-opt: error: {msg}", file=sys.stderr)
+        return 2
+
+    scheduler = args.scheduler
+    if scheduler not in ("local", "serial") and "://" not in scheduler:
+        return fail(f"--scheduler: expected local, serial or tcp://host:port, got {scheduler!r}")
+    if args.output and Path(args.output).suffix.lower() not in _SUFFIXES:
+        return fail(f"--output: unknown file type {Path(args.output).suffix or '(none)'!r}; "
+                    "use .csv, .json or .parquet")
+    for name in ("workers", "chunk_size"):
+        value = getattr(args, name)
+        if value is not None and value < 1:
+            return fail(f"--{name.replace('_', '-')} must be >= 1, got {value}")
+    try:
+        spec = validate_spec(_load_spec(args.spec))
+    except (TensegrityError, OSError, json.JSONDecodeError) as exc:
+        return fail(exc)
+    if scheduler != "serial":
+        # Dask's INFO lines (cluster start and stop) would drown the summary.
+        logging.getLogger("distributed").setLevel(logging.WARNING)
+    try:
+        result = sweep(spec, scheduler=scheduler, progress=not args.no_progress, chunk_size=args.chunk_size,
+                       workers=args.workers)
+    except TensegrityError as exc:
+        return fail(exc)
+    except (OSError, TimeoutError) as exc:
+        return fail(f"cannot reach the Dask scheduler {scheduler!r}: {exc}")
+    try:
+        if args.output:
+            out = result.save(args.output)
+            where = f"written to {os.fspath(out)}"
+        else:
+            sys.stdout.write(result.csv_text())
+            sys.stdout.flush()
+            where = "written to stdout"
+    except (TensegrityError, OSError, ImportError) as exc:
+        return fail(exc)
+    n_err = len(result.errors)
+    print(f"sweep: {len(result.rows)} points ({spec['analysis']}, {result.scheduler}), {n_err} failed, "
+          f"{result.elapsed:.1f} s; {where}", file=sys.stderr)
+    return 0
