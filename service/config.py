@@ -16,6 +16,12 @@ variable                      default    meaning
 ``TENSEGRITY_CORS_ORIGINS``   (empty)    comma-separated or JSON list; empty: CORS off
 ``TENSEGRITY_MAX_BODY_BYTES`` 1048576    request bodies above this get 413
 ``TENSEGRITY_WARMUP``         true       build each thread's solvers (n = 4) at start-up
+``TENSEGRITY_JOBS_DB``        (file)     SQLite job store, ``tensegrity_jobs.sqlite3`` in the working dir
+``TENSEGRITY_JOBS_SCHEDULER`` (unset)    jobs: unset/``serial`` runner thread; ``local``/``tcp://..`` Dask
+``TENSEGRITY_JOBS_MAX_POINTS`` 100000    most points in one job (422 above)
+``TENSEGRITY_JOBS_RESUME``    true       resume jobs a stopped server left running
+``TENSEGRITY_JOBS_SYNCHRONOUS`` NORMAL   SQLite ``synchronous`` (NORMAL survives a kill, FULL a power cut)
+``TENSEGRITY_JOBS_CHUNK_SIZE`` (auto)    points per Dask task
 ============================  =========  ==================================================
 """
 
@@ -23,7 +29,7 @@ from __future__ import annotations
 
 import json
 from functools import lru_cache
-from typing import Annotated, Any
+from typing import Annotated, Any, Literal
 
 from pydantic import Field, field_validator
 from pydantic_settings import BaseSettings, NoDecode, SettingsConfigDict
@@ -61,6 +67,24 @@ class Settings(BaseSettings):
     cors_origins: Annotated[list[str], NoDecode] = Field(default_factory=list, description="allowed CORS origins")
     max_body_bytes: int = Field(1024 * 1024, ge=1, description="largest request body (413 above)")
     warmup: bool = Field(True, description="build each worker's solvers at start-up")
+    jobs_db: str = Field("tensegrity_jobs.sqlite3", min_length=1, description="SQLite file of the job store")
+    jobs_scheduler: str | None = Field(None, description="None/serial: in-process thread; local; tcp://host:port")
+    jobs_max_points: int = Field(100_000, ge=1, le=1_000_000, description="most points in one job")
+    jobs_resume: bool = Field(True, description="resume jobs left running by a previous process")
+    jobs_synchronous: Literal["NORMAL", "FULL"] = Field("NORMAL", description="SQLite synchronous mode")
+    jobs_chunk_size: int | None = Field(None, ge=1, description="points per Dask task (default: automatic)")
+
+    @field_validator("jobs_scheduler", mode="before")
+    @classmethod
+    def _scheduler(cls, value: Any) -> Any:
+        if value is None:
+            return None
+        text = str(value).strip()
+        if text in ("", "serial", "none", "None"):
+            return None
+        if text != "local" and "://" not in text:
+            raise ValueError("expected serial, local or a Dask scheduler address like tcp://host:8786")
+        return text
 
     @field_validator("api_keys", "cors_origins", mode="before")
     @classmethod

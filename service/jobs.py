@@ -31,7 +31,7 @@ leaves no file behind.
 
 Wiring (``service/main.py``)::
 
-    runner = JobRunner(settings)          # reads TENSEGRITY_JOBS_* (JobSettings)
+    runner = JobRunner(settings)          # reads TENSEGRITY_JOBS_* (service.config.Settings)
     app.state.jobs = runner
     app.include_router(routes.jobs.router)
     # lifespan: runner.start() after the pool starts; await asyncio.to_thread(runner.stop) at exit
@@ -54,63 +54,25 @@ from collections.abc import AsyncIterator, Iterable, Mapping
 from contextlib import asynccontextmanager
 from datetime import UTC, datetime
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any
 
-from pydantic import Field, field_validator
-from pydantic_settings import BaseSettings, SettingsConfigDict
 
 from tensegrity_opt.errors import InvalidParameterError
 
+from .config import Settings
+
 # Names, not the module: ``tensegrity_opt.sweep`` may be re-exported as the function.
-from tensegrity_opt.sweep import MAX_POINTS, count_points, format_error, validate_spec  # noqa: I001
+from tensegrity_opt.sweep import count_points, format_error, validate_spec  # noqa: I001
 from tensegrity_opt.sweep import columns as sweep_columns
 from tensegrity_opt.sweep import sweep as run_sweep
 
 log = logging.getLogger("service.jobs")
 
-__all__ = ["JobSettings", "JobStore", "JobRunner", "JobNotFound", "JobFinished", "JobsUnavailable", "TERMINAL",
+__all__ = ["JobStore", "JobRunner", "JobNotFound", "JobFinished", "JobsUnavailable", "TERMINAL",
            "install", "create_app_with_jobs"]
 
 STATUSES = ("queued", "running", "done", "failed", "cancelled", "interrupted")
 TERMINAL = frozenset({"done", "failed", "cancelled", "interrupted"})
-
-
-class JobSettings(BaseSettings):
-    """Settings of the jobs feature (environment prefix ``TENSEGRITY_``).
-
-    ===============================  ==========================  =========================================
-    variable                         default                     meaning
-    ===============================  ==========================  =========================================
-    ``TENSEGRITY_JOBS_DB``           ``tensegrity_jobs.sqlite3``  SQLite file (relative: to the working dir)
-    ``TENSEGRITY_JOBS_SCHEDULER``    (unset)                     unset/``serial``: runner thread;
-                                                                 ``local`` or ``tcp://host:port``: Dask
-    ``TENSEGRITY_JOBS_MAX_POINTS``   100000                      most points in one job (422 above)
-    ``TENSEGRITY_JOBS_RESUME``       true                        resume jobs a stopped server left running
-    ``TENSEGRITY_JOBS_SYNCHRONOUS``  NORMAL                      SQLite ``synchronous`` (NORMAL or FULL)
-    ``TENSEGRITY_JOBS_CHUNK_SIZE``   (auto)                      points per Dask task
-    ===============================  ==========================  =========================================
-    """
-
-    model_config = SettingsConfigDict(env_prefix="TENSEGRITY_", extra="ignore", frozen=True)
-
-    jobs_db: str = Field("tensegrity_jobs.sqlite3", min_length=1, description="SQLite file of the job store")
-    jobs_scheduler: str | None = Field(None, description="None/serial: in-process thread; local; tcp://host:port")
-    jobs_max_points: int = Field(100_000, ge=1, le=MAX_POINTS, description="most points in one job")
-    jobs_resume: bool = Field(True, description="resume jobs left running by a previous process")
-    jobs_synchronous: Literal["NORMAL", "FULL"] = Field("NORMAL", description="SQLite synchronous mode")
-    jobs_chunk_size: int | None = Field(None, ge=1, description="points per Dask task (default: automatic)")
-
-    @field_validator("jobs_scheduler", mode="before")
-    @classmethod
-    def _scheduler(cls, value: Any) -> Any:
-        if value is None:
-            return None
-        text = str(value).strip()
-        if text in ("", "serial", "none", "None"):
-            return None
-        if text != "local" and "://" not in text:
-            raise ValueError("expected serial, local or a Dask scheduler address like tcp://host:8786")
-        return text
 
 
 class JobNotFound(KeyError):
@@ -317,21 +279,20 @@ def _setting(settings: Any, name: str, fallback: Any) -> Any:
 class JobRunner:
     """Accepts jobs, stores them, and runs them one at a time in a background thread.
 
-    ``JobRunner(settings)``: ``settings`` may be the service's ``Settings`` (its ``max_segments``
-    limits the chains of a job; ``jobs_*`` fields are used when it has them) — the ``jobs_*``
-    values otherwise come from :class:`JobSettings` (environment). Keyword arguments win.
+    ``JobRunner(settings)``: the service's :class:`service.config.Settings` (its ``jobs_*`` fields;
+    ``max_segments`` limits the chains of a job); without it the settings are read from the
+    environment. Keyword arguments win.
     """
 
     def __init__(self, settings: Any = None, *, db_path: str | os.PathLike[str] | None = None,
                  scheduler: str | None = None, resume: bool | None = None, max_points: int | None = None,
-                 synchronous: str | None = None, chunk_size: int | None = None,
-                 job_settings: JobSettings | None = None) -> None:
+                 synchronous: str | None = None, chunk_size: int | None = None) -> None:
         self.config_error: str | None = None
         try:
-            js = job_settings if job_settings is not None else JobSettings()
+            js = settings if settings is not None else Settings()
         except ValueError as exc:  # reported by start(); building the app (e.g. for OpenAPI) still works
-            js = JobSettings.model_construct()
-            self.config_error = f"invalid TENSEGRITY_JOBS_* setting: {exc}"
+            js = Settings.model_construct()
+            self.config_error = f"invalid TENSEGRITY_JOBS_* or other TENSEGRITY_* setting: {exc}"
         self.db_path = Path(db_path if db_path is not None else _setting(settings, "jobs_db", js.jobs_db))
         self.scheduler = scheduler if scheduler is not None else _setting(settings, "jobs_scheduler", js.jobs_scheduler)
         if self.scheduler == "serial":
@@ -597,7 +558,6 @@ def install(app: Any, settings: Any = None, **runner_kwargs: Any) -> JobRunner:
 
 def create_app_with_jobs() -> Any:
     """The service app (settings from the environment) with the jobs API; a uvicorn ``--factory``."""
-    from .config import Settings
     from .main import create_app
 
     settings = Settings()

@@ -255,7 +255,8 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         while stop < npts and not straight[stop]:
             stop += 1
         run = _run_branches(m, dxs[i], dys[i], branch, mirror_free)
-        run_ids = [new_branch(i, eq, stop).id for eq in run]
+        for eq in run:
+            new_branch(i, eq, stop)
         current = None
         since = 0
         for j in range(i, stop):
@@ -278,7 +279,6 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
             pick = next((br for br in best if br.id == current), None) or best[0]
             current = pick.id
             sel[j] = pick.id
-        del run_ids
         i = stop
 
     curve = _assemble(m, dxs, dys, branches, sel, straight)

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.linalg as sla
 
-from .buckling import check_straight, critical_force, straight_matrices
+from .buckling import critical_force, straight_matrices
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
 from .errors import (InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError,
                      TensegrityError)
