@@ -399,11 +399,9 @@ def client():
         from fastapi.testclient import TestClient
     from service.config import Settings
     from service.main import create_app
-    from service.routes import plots as plot_routes
 
-    app = create_app(Settings(warmup=False))
-    if not any(getattr(r, "path", "").startswith("/v1/plots/") for r in app.routes):
-        app.include_router(plot_routes.router)
+    app = create_app(Settings(warmup=False))        # service.main registers the plot routes
+    assert app.url_path_for("plot_curve") == "/v1/plots/curve"
     with TestClient(app) as c:
         yield c
 

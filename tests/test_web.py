@@ -35,12 +35,9 @@ def _has_page(app) -> bool:
 
 
 def _app(include: bool = True):
-    """The service's app with the page's router (added unless ``service.main`` already registers it)."""
+    """The service's app (``service.main`` registers the page's router)."""
     app = create_app(Settings(warmup=False))
-    if include and not _has_page(app):
-        app.include_router(web.router)
-    if not include and _has_page(app):
-        pytest.skip("service.main registers the page itself: no app without it to compare with")
+    assert _has_page(app)
     return app
 
 
