@@ -107,19 +107,24 @@ def _cmd_curve(args, m):
     return data, "\n".join(lines)
 
 
+def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
+    """The manipulator options every analysis command takes (uniform chain or a JSON file)."""
+    g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
+    g.add_argument("--n", type=int, default=4, help="number of segments")
+    g.add_argument("--a", type=float, default=1.0)
+    g.add_argument("--b", type=float, default=1.0)
+    g.add_argument("--k", type=float, default=1.0)
+    g.add_argument("--L0", type=float, default=1.0)
+    g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
+
+
 def build_parser() -> argparse.ArgumentParser:
     p = argparse.ArgumentParser(prog="tensegrity-opt", description=__doc__.splitlines()[0])
     p.add_argument("--version", action="version", version=f"tensegrity-opt {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
 
     def common(sp: argparse.ArgumentParser) -> None:
-        g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
-        g.add_argument("--n", type=int, default=4, help="number of segments")
-        g.add_argument("--a", type=float, default=1.0)
-        g.add_argument("--b", type=float, default=1.0)
-        g.add_argument("--k", type=float, default=1.0)
-        g.add_argument("--L0", type=float, default=1.0)
-        g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
+        add_manipulator_options(sp)
         sp.add_argument("--json", action="store_true", help="print JSON instead of a table")
 
     sp = sub.add_parser("buckling", help="critical force and buckling modes (the paper's Table 1)")

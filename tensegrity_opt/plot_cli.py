@@ -44,14 +44,10 @@ def _output(value: str) -> str:
 
 
 def _common(sp: argparse.ArgumentParser) -> None:
-    """The manipulator options of ``cli.build_parser``'s ``common()`` (same names and defaults)."""
-    g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
-    g.add_argument("--n", type=int, default=4, help="number of segments")
-    g.add_argument("--a", type=float, default=1.0)
-    g.add_argument("--b", type=float, default=1.0)
-    g.add_argument("--k", type=float, default=1.0)
-    g.add_argument("--L0", type=float, default=1.0)
-    g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
+    """The manipulator options of the other commands, plus the figure's output options."""
+    from .cli import add_manipulator_options     # at call time: cli imports this module
+
+    add_manipulator_options(sp)
     sp.add_argument("--json", action="store_true", help="print JSON instead of a line of text")
     sp.add_argument("-o", "--output", type=_output, required=True, metavar="FIG.png|FIG.svg",
                     help="figure file; PNG or SVG by its suffix")
@@ -212,23 +208,9 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m tensegrity_opt.plot_cli KIND ...``: the ``plot`` command on its own."""
-    import json
+    from .cli import main as cli_main
 
-    from .cli import _manipulator
-    from .errors import TensegrityError
-
-    p = argparse.ArgumentParser(prog="tensegrity-opt")
-    sub = p.add_subparsers(dest="command", required=True)
-    add_plot_parser(sub)
-    args = p.parse_args(["plot", *(sys.argv[1:] if argv is None else argv)])
-    try:
-        m = _manipulator(args)
-        data, text = args.func(args, m)
-    except (TensegrityError, OSError, json.JSONDecodeError, TypeError) as exc:
-        print(f"tensegrity-opt: error: {exc}", file=sys.stderr)
-        return 2
-    print(json.dumps(data, indent=2) if args.json else text)
-    return 0
+    return cli_main(["plot", *(sys.argv[1:] if argv is None else argv)])
 
 
 if __name__ == "__main__":  # pragma: no cover
