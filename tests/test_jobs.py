@@ -10,12 +10,9 @@ import csv
 import importlib
 import io
 import json
-import os
 import signal
-import socket
 import sqlite3
 import subprocess
-import sys
 import time
 import warnings
 from pathlib import Path
@@ -32,6 +29,7 @@ with warnings.catch_warnings():
 from service import jobs
 from service.config import Settings
 from service.main import create_app
+from servers import clean_env, free_port, stop, uvicorn_factory_command, wait_ready
 
 # the module (``tensegrity_opt.sweep`` itself may be re-exported as the function)
 S = importlib.import_module("tensegrity_opt.sweep")
@@ -281,31 +279,15 @@ def test_a_job_on_a_dask_cluster_stores_the_serial_rows(tmp_path):
 
 
 # --------------------------------------------------------------------------- a real server, killed
-def free_port() -> int:
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 def start_server(db: Path, log: Path) -> tuple[subprocess.Popen, str]:
     port = free_port()
-    env = {k: v for k, v in os.environ.items() if not k.startswith("TENSEGRITY_")}
-    env.update({"TENSEGRITY_JOBS_DB": str(db), "TENSEGRITY_WARMUP": "false", "TENSEGRITY_WORKERS": "1"})
-    cmd = [sys.executable, "-m", "uvicorn", "--factory", "service.jobs:create_app_with_jobs", "--host", "127.0.0.1",
-           "--port", str(port), "--log-level", "warning", "--no-access-log"]
+    env = clean_env(TENSEGRITY_JOBS_DB=str(db), TENSEGRITY_WARMUP="false", TENSEGRITY_WORKERS="1")
+    cmd = uvicorn_factory_command("service.jobs:create_app_with_jobs", port)
     with open(log, "ab") as out:      # the child keeps its own copy of the descriptor
         proc = subprocess.Popen(cmd, env=env, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT)
     base = f"http://127.0.0.1:{port}"
-    deadline = time.monotonic() + 60
-    while True:
-        assert proc.poll() is None, log.read_text(errors="replace")
-        try:
-            if httpx.get(base + "/healthz", timeout=2).status_code == 200:
-                return proc, base
-        except httpx.TransportError:
-            pass
-        assert time.monotonic() < deadline, "server did not come up"
-        time.sleep(0.1)
+    wait_ready(proc, base, "/healthz", 60, log=lambda: log.read_text(errors="replace"))
+    return proc, base
 
 
 def stored_points(db: Path, job_id: str) -> dict[int, str]:
@@ -353,12 +335,7 @@ def test_sigkill_mid_job_loses_no_point_and_the_restart_resumes(tmp_path):
         assert (job["status"], job["done"], job["runs"]) == ("done", total, 2)
         rows = httpx.get(f"{base}/v1/jobs/{job_id}/results", timeout=30).json()["rows"]
     finally:
-        proc.send_signal(signal.SIGINT)
-        try:
-            proc.wait(20)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait(5)
+        stop(proc, grace=20)
 
     assert [r["index"] for r in rows] == list(range(total))            # all points, no duplicates
     after = stored_points(db, job_id)

@@ -7,18 +7,16 @@ time limit; every endpoint and every schema branch is still exercised.
 
 from __future__ import annotations
 
-import os
 import shutil
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
 
-from test_service_server import free_port, serve_command
+from servers import clean_env, free_port, running_server, serve_command
 
-httpx = pytest.importorskip("httpx")
+pytest.importorskip("httpx")
 ROOT = Path(__file__).resolve().parents[1]
 
 
@@ -29,33 +27,13 @@ def schemathesis_command() -> list[str] | None:
 
 @pytest.mark.skipif(schemathesis_command() is None, reason="schemathesis is not installed (pip install '.[test]')")
 def test_schemathesis_finds_no_server_error_and_no_spec_violation(tmp_path):
-    port = free_port()
-    env = {k: v for k, v in os.environ.items() if not k.startswith("TENSEGRITY_")}
-    env.update({"TENSEGRITY_MAX_SEGMENTS": "24", "TENSEGRITY_MAX_BATCH": "50", "TENSEGRITY_SOLVE_TIMEOUT": "60",
-                "TENSEGRITY_BATCH_TIMEOUT": "30", "TENSEGRITY_JOBS_DB": str(tmp_path / "jobs.sqlite3"),
-                "TENSEGRITY_JOBS_MAX_POINTS": "200"})
-    proc = subprocess.Popen(serve_command(port), env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
-    base = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.monotonic() + 60
-        while True:
-            assert proc.poll() is None, "server exited"
-            try:
-                if httpx.get(base + "/readyz", timeout=5).status_code == 200:
-                    break
-            except httpx.TransportError:
-                pass
-            assert time.monotonic() < deadline, "server did not come up"
-            time.sleep(0.2)
+    env = clean_env(TENSEGRITY_MAX_SEGMENTS="24", TENSEGRITY_MAX_BATCH="50", TENSEGRITY_SOLVE_TIMEOUT="60",
+                    TENSEGRITY_BATCH_TIMEOUT="30", TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"),
+                    TENSEGRITY_JOBS_MAX_POINTS="200")
+    with running_server(serve_command(free_port()), env, ready="/readyz", stdout=subprocess.DEVNULL) as (_, base):
         run = subprocess.run(
             [*schemathesis_command(), "run", str(ROOT / "openapi" / "openapi.json"), "--url", base,
              "--max-examples", "20", "--seed", "1", "--checks", "not_a_server_error,response_schema_conformance",
              "--generation-database", "none", "--request-timeout", "120"],
             cwd=tmp_path, capture_output=True, text=True, timeout=900)
-        assert run.returncode == 0, run.stdout[-6000:] + run.stderr[-2000:]
-    finally:
-        proc.terminate()
-        try:
-            proc.wait(timeout=20)
-        except subprocess.TimeoutExpired:
-            proc.kill()
+    assert run.returncode == 0, run.stdout[-6000:] + run.stderr[-2000:]

@@ -10,15 +10,12 @@ from __future__ import annotations
 import math
 import os
 import shutil
-import socket
-import subprocess
-import sys
-import time
 from pathlib import Path
 
 import pytest
 
 import tensegrity_opt as to
+from servers import clean_env, free_port, running_server, uvicorn_factory_command
 
 HERE = Path(__file__).resolve().parent
 
@@ -45,41 +42,13 @@ def _binary(env: str, *names: str) -> str | None:
     return None
 
 
-def _free_port() -> int:
-    with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
-
-
 @pytest.fixture
 def server():
-    httpx = pytest.importorskip("httpx")
-    port = _free_port()
-    env = {k: v for k, v in os.environ.items() if not k.startswith("TENSEGRITY_")}
-    env.update({"TENSEGRITY_WORKERS": "2", "TENSEGRITY_WARMUP": "false"})
-    cmd = [sys.executable, "-m", "uvicorn", "--factory", "--app-dir", str(HERE), "test_web_e2e:create_web_test_app",
-           "--host", "127.0.0.1", "--port", str(port), "--log-level", "warning", "--no-access-log"]
-    proc = subprocess.Popen(cmd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-    base = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.monotonic() + 30
-        while True:
-            assert proc.poll() is None, proc.stdout.read().decode(errors="replace")
-            try:
-                if httpx.get(base + "/readyz", timeout=2).status_code == 200:
-                    break
-            except httpx.TransportError:
-                pass
-            assert time.monotonic() < deadline, "server did not come up"
-            time.sleep(0.1)
+    pytest.importorskip("httpx")
+    env = clean_env(TENSEGRITY_WORKERS="2", TENSEGRITY_WARMUP="false")
+    cmd = uvicorn_factory_command("test_web_e2e:create_web_test_app", free_port(), "--app-dir", str(HERE))
+    with running_server(cmd, env, ready="/readyz", timeout=30) as (_, base):
         yield base
-    finally:
-        proc.terminate()
-        try:
-            proc.wait(10)
-        except subprocess.TimeoutExpired:
-            proc.kill()
-            proc.wait(5)
 
 
 @pytest.fixture
