@@ -26,7 +26,7 @@ from .shapes import shape_label, sign_string
 from .solvers import model
 from .stability import classify_batch
 
-__all__ = ["solve_equilibria_batch"]
+__all__ = ["solve_equilibria_batch", "continuation_prefix"]
 
 
 def _targets(targets) -> np.ndarray:
@@ -105,6 +105,22 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
     return out  # type: ignore[return-value]
 
 
+def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0: np.ndarray
+                        ) -> tuple[np.ndarray, np.ndarray]:
+    """Compiled continuation (short chains) from ``(q0, F0)`` along ``targets`` (tip positions, N x 2).
+
+    Returns ``(Q, F)`` for the leading points where Newton converged (KKT residual within
+    ``1e-9`` of the torque scale) inside the physical range; the first failure ends the prefix.
+    """
+    n = m.n
+    Z, R = model(n).batch_continue(m.params, targets, np.concatenate([np.cumsum(q0), F0]))
+    Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
+    tol = 1e-9 * max(1.0, m.torque_scale)
+    ok = (R <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
+    k = int(np.argmin(ok)) if not ok.all() else ok.size
+    return Q[:k], Z[:k, n:]
+
+
 def _global(m: Manipulator, dx: float, dy: float, q0) -> Equilibrium | TensegrityError:
     try:
         return solve_equilibrium(m, dx, dy, q0=q0)
@@ -122,17 +138,12 @@ def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) 
     stop = i + (int(np.argmax(bad)) if bad.any() else N - i)
     if stop <= i:
         return i
-    mdl = model(n)
     targets = np.column_stack([m.straight_length - pts[i:stop, 0], pts[i:stop, 1]])
-    Z, R = mdl.batch_continue(m.params, targets, np.concatenate([np.cumsum(prev.q), prev.force]))
-    Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
-    tol = 1e-9 * max(1.0, float(np.max(np.maximum(m.k1, m.k2) * (m.a ** 2 + m.b ** 2))))
-    ok = (R <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
-    k = int(np.argmin(ok)) if not ok.all() else ok.size
+    Q, Fs = continuation_prefix(m, targets, prev.q, prev.force)
+    k = Q.shape[0]
     if k == 0:
         return i
-    Fs = Z[:k, n:]
-    E, H, J, T = mdl.batch_derivs(m.params, Q[:k], Fs)
+    E, H, J, T = model(n).batch_derivs(m.params, Q, Fs)
     _, stable, w = classify_batch(H, J)
     k_st = int(np.argmin(stable)) if not stable.all() else k
     for j in range(k_st):

@@ -27,6 +27,7 @@ from typing import Literal
 
 import numpy as np
 
+from .batch import continuation_prefix
 from .buckling import critical_force
 from .equilibria import find_equilibria
 from .equilibrium import Equilibrium, search_stable, straight_equilibrium, solve_equilibrium
@@ -143,18 +144,13 @@ def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndar
                 return
         return
     lim = m.joint_limits
-    tol = 1e-9 * max(1.0, float(np.max(np.maximum(m.k1, m.k2) * (m.a ** 2 + m.b ** 2))))
     s = start
     while s + 1 < stop:
-        z0 = np.concatenate([np.cumsum(br.q[s]), br.F[s]])
         if mdl.dense:
-            Z, R = mdl.batch_continue(m.params, targets[s + 1:stop], z0)
-            Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
-            ok = (R <= tol) & np.all(np.abs(Q) < lim, axis=1) & np.all(np.isfinite(Z), axis=1)
-            good = int(np.argmin(ok)) if not ok.all() else ok.size
+            Q, Fs = continuation_prefix(m, targets[s + 1:stop], br.q[s], br.F[s])
+            good = Q.shape[0]
             if good:
-                idx = np.arange(s + 1, s + 1 + good)
-                _classify_batch(m, br, idx, Q[:good], Z[:good, n:])
+                _classify_batch(m, br, np.arange(s + 1, s + 1 + good), Q, Fs)
                 s += good
         if s + 1 >= stop:
             break

@@ -275,11 +275,15 @@ class Manipulator:
         J = self.jacobian(q)
         return np.linalg.lstsq(J.T, -self.torques(q), rcond=None)[0]
 
+    @cached_property
+    def torque_scale(self) -> float:
+        """``max k c^2`` over the segments: the scale of joint torques, for residual tolerances."""
+        return float(np.max(np.maximum(self.k1, self.k2) * (self.a ** 2 + self.b ** 2)))
+
     def equilibrium_residual(self, q: Any, force: Any, target: Any | None = None) -> float:
         """Largest violation of ``grad E = J^T F`` (scaled by ``k c^2``) and of ``tip = target`` (by ``sum b``)."""
         q = self._q(q)
-        scale = float(np.max(np.maximum(self.k1, self.k2) * (self.a ** 2 + self.b ** 2)))
-        r = float(np.abs(self.gradient(q) - self.jacobian(q).T @ np.asarray(force, float)).max()) / scale
+        r = float(np.abs(self.gradient(q) - self.jacobian(q).T @ np.asarray(force, float)).max()) / self.torque_scale
         if target is not None:
             r = max(r, float(np.abs(self.tip(q) - np.asarray(target, float)).max()) / float(self.b.sum()))
         return r

@@ -401,14 +401,9 @@ class _Model:
             else:
                 F0 = np.array([0.0, bvec[1] / A[1, 1] if A[1, 1] > 0 else 0.0])
         z = np.concatenate([phi, np.asarray(F0, dtype=float)])
-        if self.dense:
-            fast = self._fast_kkt
-            return self._newton(lambda zz: fast(zz, params, target), fast, z, limits, tol, max_iter, max_step,
-                                None)
-        full, resid = self._fast_kkt_b, self._fast_kkt_rb
-        with _one_blas_thread():
-            return self._newton(lambda zz: full(zz, params, target), full, z, limits, tol, max_iter, max_step,
-                                None, residual_only=lambda zz: resid(zz, params, target))
+        return self._dispatch(self._fast_kkt if self.dense else self._fast_kkt_b,
+                              None if self.dense else self._fast_kkt_rb, (params, target), z, limits, tol,
+                              max_iter, max_step, None)
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
@@ -416,14 +411,22 @@ class _Model:
         self._set_scale(params)
         force = np.asarray(force, dtype=float)
         z = self.phi(np.asarray(q0, dtype=float))
-        if self.dense:
-            fast = self._fast_force
-            return self._newton(lambda zz: fast(zz, params, force), fast, z, limits, tol, max_iter, max_step,
-                                force)
-        full, resid = self._fast_force_b, self._fast_force_rb
+        return self._dispatch(self._fast_force if self.dense else self._fast_force_b,
+                              None if self.dense else self._fast_force_rb, (params, force), z, limits, tol,
+                              max_iter, max_step, force)
+
+    def _dispatch(self, full: _Fast, resid: _Fast | None, args: tuple, z, limits, tol, max_iter, max_step,
+                  force_fixed) -> LocalResult:
+        """Newton with ``full`` (residual and Jacobian); long chains add the residual-only ``resid`` for
+        the line search and hold BLAS to one thread."""
+        def call(zz):
+            return full(zz, *args)
+
+        if resid is None:
+            return self._newton(call, full, z, limits, tol, max_iter, max_step, force_fixed)
         with _one_blas_thread():
-            return self._newton(lambda zz: full(zz, params, force), full, z, limits, tol, max_iter, max_step,
-                                force, residual_only=lambda zz: resid(zz, params, force))
+            return self._newton(call, full, z, limits, tol, max_iter, max_step, force_fixed,
+                                residual_only=lambda zz: resid(zz, *args))
 
     def _newton(self, call, fast: _Fast, z, limits, tol, max_iter, max_step, force_fixed,
                 residual_only=None) -> LocalResult:
