@@ -16,17 +16,17 @@ Each target yields an :class:`Equilibrium` or the exception explaining why it ha
 from __future__ import annotations
 
 import time
+from dataclasses import dataclass
 
 import numpy as np
 
 from .equilibrium import Equilibrium, check_q0, make_equilibrium, solve_equilibrium
 from .errors import InvalidParameterError, TensegrityError, TimeLimitError
 from .manipulator import Manipulator
-from .shapes import shape_label, sign_string
 from .solvers import model
-from .stability import classify_batch
+from .stability import classify_batch, classify_reduced
 
-__all__ = ["solve_equilibria_batch", "continuation_prefix"]
+__all__ = ["solve_equilibria_batch", "continuation_prefix", "Prefix"]
 
 
 def _targets(targets) -> np.ndarray:
@@ -105,20 +105,38 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
     return out  # type: ignore[return-value]
 
 
-def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0: np.ndarray
-                        ) -> tuple[np.ndarray, np.ndarray]:
+@dataclass(frozen=True)
+class Prefix:
+    """The leading converged points of a compiled continuation (k of them), classified."""
+
+    q: np.ndarray             # (k, n) joint angles
+    force: np.ndarray         # (k, 2)
+    energy: np.ndarray        # (k,)
+    tip: np.ndarray           # (k, 2)
+    morse_index: np.ndarray   # (k,)
+    stable: np.ndarray        # (k,) bool
+    eigenvalues: np.ndarray   # (k, n-2) of the reduced Hessian, ascending
+
+
+def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0: np.ndarray) -> Prefix:
     """Compiled continuation (short chains) from ``(q0, F0)`` along ``targets`` (tip positions, N x 2).
 
-    Returns ``(Q, F)`` for the leading points where Newton converged (KKT residual within
-    ``1e-9`` of the torque scale) inside the physical range; the first failure ends the prefix.
+    Returns the leading points where Newton converged (KKT residual within ``1e-9`` of the torque
+    scale) inside the physical range — the first failure ends the prefix — classified.
     """
     n = m.n
-    Z, R = model(n).batch_continue(m.params, targets, np.concatenate([np.cumsum(q0), F0]))
+    mdl = model(n)
+    c = mdl.batch_continue(m.params, targets, np.concatenate([np.cumsum(q0), F0]))
+    Z = c.Z
     Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
     tol = 1e-9 * max(1.0, m.torque_scale)
-    ok = (R <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
+    ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
     k = int(np.argmin(ok)) if not ok.all() else ok.size
-    return Q[:k], Z[:k, n:]
+    Q, Fs = Q[:k], Z[:k, n:]
+    if c.reduced_hessian is not None:
+        return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k]))
+    E, H, J, T = mdl.batch_derivs(m.params, Q, Fs)
+    return Prefix(Q, Fs, E, T, *classify_batch(H, J))
 
 
 def _global(m: Manipulator, dx: float, dy: float, q0) -> Equilibrium | TensegrityError:
@@ -139,17 +157,16 @@ def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) 
     if stop <= i:
         return i
     targets = np.column_stack([m.straight_length - pts[i:stop, 0], pts[i:stop, 1]])
-    Q, Fs = continuation_prefix(m, targets, prev.q, prev.force)
+    pre = continuation_prefix(m, targets, prev.q, prev.force)
+    Q, Fs, E, T, stable, w = pre.q, pre.force, pre.energy, pre.tip, pre.stable, pre.eigenvalues
     k = Q.shape[0]
     if k == 0:
         return i
-    E, H, J, T = model(n).batch_derivs(m.params, Q, Fs)
-    _, stable, w = classify_batch(H, J)
     k_st = int(np.argmin(stable)) if not stable.all() else k
     for j in range(k_st):
         q = Q[j]
         out[i + j] = Equilibrium(q=q.copy(), energy=float(E[j]), force=Fs[j].copy(), morse_index=0, stable=True,
-                                 shape=shape_label(q), signs=sign_string(q), status="Newton_Converged",
+                                 status="Newton_Converged",
                                  iterations=-1, tip=T[j].copy(), control="displacement",
                                  hessian_eigenvalues=w[j].copy())
     return i + k_st

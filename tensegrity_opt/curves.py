@@ -30,13 +30,12 @@ import numpy as np
 from .batch import continuation_prefix
 from .buckling import critical_force
 from .equilibria import find_equilibria
-from .equilibrium import Equilibrium, search_stable, straight_equilibrium, solve_equilibrium
+from .equilibrium import Equilibrium, make_equilibrium, search_stable, straight_equilibrium, solve_equilibrium
 from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from .manipulator import Manipulator
 from .seeds import seeds
 from .shapes import shape_label, shape_labels
 from .solvers import model
-from .stability import classify_batch, inertia_of
 
 __all__ = ["Curve", "Jump", "force_deflection"]
 
@@ -147,10 +146,14 @@ def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndar
     s = start
     while s + 1 < stop:
         if mdl.dense:
-            Q, Fs = continuation_prefix(m, targets[s + 1:stop], br.q[s], br.F[s])
-            good = Q.shape[0]
+            pre = continuation_prefix(m, targets[s + 1:stop], br.q[s], br.F[s])
+            good = pre.q.shape[0]
             if good:
-                _classify_batch(m, br, np.arange(s + 1, s + 1 + good), Q, Fs)
+                idx = np.arange(s + 1, s + 1 + good)
+                br.q[idx], br.F[idx], br.E[idx] = pre.q, pre.force, pre.energy
+                br.morse[idx], br.stable[idx], br.valid[idx] = pre.morse_index, pre.stable, True
+                for i in idx:
+                    br.status[i] = "Newton_Converged"
                 s += good
         if s + 1 >= stop:
             break
@@ -163,27 +166,8 @@ def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndar
         res = mdl.newton_kkt(m.params, lim, targets[i], q0, F0)
         if not (res.success and np.all(np.abs(res.q) < lim)):
             return                      # the branch ends here
-        _classify_batch(m, br, np.array([i]), res.q[None, :], res.force[None, :], status=res.status)
+        br.set(i, make_equilibrium(m, res, constrained=True))
         s = i
-
-
-def _classify_batch(m: Manipulator, br: _Branch, idx: np.ndarray, Q: np.ndarray, Fs: np.ndarray,
-                    status: str = "Newton_Converged") -> None:
-    mdl = model(m.n)
-    if mdl.dense and idx.size > 1:
-        E, H, J, _ = mdl.batch_derivs(m.params, Q, Fs)
-        morse, stable, _ = classify_batch(H, J)
-        br.q[idx], br.F[idx], br.E[idx] = Q, Fs, E
-        br.morse[idx], br.stable[idx], br.valid[idx] = morse, stable, True
-        for i in idx:
-            br.status[i] = status
-        return
-    for k, i in enumerate(idx):
-        E, _, H, J, _ = mdl.evaluate(m.params, Q[k], Fs[k])
-        inertia = inertia_of(H, J, True, 1e-9, m.n - 2)
-        br.q[i], br.F[i], br.E[i] = Q[k], Fs[k], E
-        br.morse[i], br.stable[i], br.valid[i], br.status[i] = (inertia.morse_index, inertia.stable, True,
-                                                                status)
 
 
 def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:

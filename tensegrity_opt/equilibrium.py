@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -26,7 +27,7 @@ from .manipulator import Manipulator
 from .seeds import seeds
 from .shapes import shape_label, sign_string
 from .solvers import LocalResult, model
-from .stability import analyse
+from .stability import analyse, inertia_of_reduced
 
 __all__ = ["Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "make_equilibrium",
            "local_equilibrium"]
@@ -49,8 +50,6 @@ class Equilibrium:
         Number of negative eigenvalues of the reduced Hessian (0: stable).
     stable : bool
         Strict local minimum (Morse index 0, non-degenerate).
-    shape : str
-        Shape label (:mod:`tensegrity_opt.shapes`); ``signs`` the sign string.
     status : str
         The solver's return status (IPOPT ``return_status``, or the Newton status).
     iterations : int
@@ -68,13 +67,21 @@ class Equilibrium:
     force: np.ndarray
     morse_index: int
     stable: bool
-    shape: str
-    signs: str
     status: str
     iterations: int
     tip: np.ndarray
     control: str = "displacement"
     hessian_eigenvalues: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
+
+    @cached_property
+    def shape(self) -> str:
+        """Shape label of ``q`` (:func:`tensegrity_opt.shapes.shape_label`)."""
+        return shape_label(self.q)
+
+    @cached_property
+    def signs(self) -> str:
+        """Sign string of ``q`` (:func:`tensegrity_opt.shapes.sign_string`)."""
+        return sign_string(self.q)
 
     @property
     def fx(self) -> float:
@@ -97,10 +104,13 @@ class Equilibrium:
 
 def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:
     """Classify a converged local solution into an :class:`Equilibrium`."""
-    inertia, energy, tip = analyse(m, res.q, res.force, constrained=constrained)
+    if constrained and res.reduced_hessian is not None:        # the compiled kernels' outputs
+        inertia, energy, tip = inertia_of_reduced(res.reduced_hessian), res.energy, res.tip
+    else:
+        inertia, energy, tip = analyse(m, res.q, res.force, constrained=constrained)
     return Equilibrium(q=res.q.copy(), energy=energy, force=np.asarray(res.force, float).copy(),
-                       morse_index=inertia.morse_index, stable=inertia.stable, shape=shape_label(res.q),
-                       signs=sign_string(res.q), status=res.status, iterations=res.iterations,
+                       morse_index=inertia.morse_index, stable=inertia.stable, status=res.status,
+                       iterations=res.iterations,
                        tip=tip, control="displacement" if constrained else "force",
                        hessian_eigenvalues=inertia.eigenvalues)
 
@@ -117,8 +127,8 @@ def is_equilibrium(m: Manipulator, res: LocalResult, target: np.ndarray | None =
     ``check_residual`` re-evaluates the equilibrium equations in numpy (independently of
     CasADi); Newton results, whose convergence test *is* the residual, may skip it.
     """
-    if not (res.success and not res.on_bound and np.all(np.isfinite(res.q)) and np.all(np.isfinite(res.force))
-            and bool(np.all(np.abs(res.q) < m.joint_limits))):
+    if not (res.success and not res.on_bound and math.isfinite(float(res.force.sum()))
+            and m.in_range(res.q)):         # in_range is False for a NaN angle
         return False
     return not check_residual or m.equilibrium_residual(res.q, res.force, target) <= RESIDUAL_TOL
 
@@ -141,7 +151,7 @@ def straight_equilibrium(m: Manipulator) -> Equilibrium:
     s2 = float(S0 @ S0)
     fy = float(S0 @ m.gradient(q) / s2) if s2 > 0.0 else 0.0
     return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
-                       shape="I", signs=sign_string(q), status="straight", iterations=0,
+                       status="straight", iterations=0,
                        tip=m.tip(q), control="displacement")
 
 
@@ -159,8 +169,7 @@ def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
             field="dx")
     J = m.jacobian(q)
     force = J[:, 0] * (m.gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
-    return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True, shape=shape_label(q),
-                       signs=sign_string(q), status="closed_form", iterations=0, tip=m.tip(q),
+    return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True, status="closed_form", iterations=0, tip=m.tip(q),
                        control="displacement")
 
 
@@ -291,8 +300,11 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
             minimize: bool) -> tuple[list[Equilibrium], int]:
     """Local solves from every start; the distinct stable equilibria and the count of unstable ones."""
     candidates: list[LocalResult] = []
-    for q in starts:
-        res = local_equilibrium(m, target, q, minimize=minimize)
+    if minimize:
+        results = [local_equilibrium(m, target, q, minimize=True) for q in starts]
+    else:
+        results = model(m.n).newton_kkt_many(m.params, m.joint_limits, target, starts)
+    for res in results:
         ok = is_equilibrium(m, res, target, check_residual=minimize)
         key = res.status if ok else (res.status + (" (on joint limit)" if res.on_bound else " (rejected)"))
         statuses[key] = statuses.get(key, 0) + 1

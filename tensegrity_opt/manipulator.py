@@ -130,15 +130,25 @@ class Manipulator:
         b = self.b
         return np.concatenate([b[:-1] + b[1:], b[-1:]])
 
-    @property
+    @cached_property
     def base_length(self) -> float:
         """The fixed base half-link ``b_1``: joint 1 sits at ``(b_1, 0)``."""
         return float(self.b[0])
 
-    @property
+    @cached_property
     def straight_length(self) -> float:
         """Tip abscissa of the straight chain, ``2 sum(b)``."""
         return float(2.0 * self.b.sum())
+
+    @cached_property
+    def _reach(self) -> tuple[float, float]:
+        """``(inner, outer)`` distances from joint 1 between which the tip can be."""
+        reach = float(self.link_lengths.sum())
+        return max(0.0, 2.0 * float(self.link_lengths.max()) - reach), reach
+
+    @cached_property
+    def _limits_list(self) -> list[float]:
+        return [float(v) for v in self.joint_limits]
 
     @cached_property
     def joint_limits(self) -> np.ndarray:
@@ -184,6 +194,8 @@ class Manipulator:
     def in_range(self, q: Any, margin: float = 0.0) -> bool:
         """True when every ``|q_i| < (pi - 2 beta_i) - margin``."""
         q = self._q(q)
+        if margin == 0.0 and q.size <= 16:     # plain floats: several times faster than numpy for a few joints
+            return all(abs(v) < lim for v, lim in zip(q.tolist(), self._limits_list))
         return bool(np.all(np.abs(q) < self.joint_limits - margin))
 
     def tip(self, q: Any) -> np.ndarray:
@@ -216,9 +228,8 @@ class Manipulator:
             if not math.isfinite(float(v)):
                 raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
         target = self.target(dx, dy)
-        reach = float(self.link_lengths.sum())
-        dist = math.hypot(target[0] - self.base_length, target[1])
-        inner = max(0.0, 2.0 * float(self.link_lengths.max()) - reach)
+        inner, reach = self._reach
+        dist = math.hypot(self.straight_length - float(dx) - self.base_length, float(dy))
         if self.n == 1 and abs(dist - reach) > 1e-9 * reach:
             raise UnreachableTargetError(
                 f"a single segment's tip moves on a circle of radius {reach:.6g} about its joint; the target "

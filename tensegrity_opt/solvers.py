@@ -28,7 +28,9 @@ import numpy as np
 import scipy.linalg as sla
 from scipy.linalg.lapack import dgesv as _dgesv
 
-__all__ = ["LocalResult", "model", "IPOPT_OPTIONS"]
+from . import kernels as _kernels
+
+__all__ = ["LocalResult", "Continuation", "model", "IPOPT_OPTIONS"]
 
 #: Options for every IPOPT instance: exact Hessian, MUMPS, silent, bounded.
 IPOPT_OPTIONS: dict[str, object] = {
@@ -69,6 +71,10 @@ class LocalResult:
     iterations : int
     on_bound : bool
         A joint sits on its range bound (not an equilibrium of the mechanism).
+    energy, tip, reduced_hessian : float, ndarray (2,), ndarray (n-2, n-2) or None
+        Filled by the compiled kernels (:mod:`.kernels`) at the returned point: the energy, the
+        tip and ``Z^T H Z`` (absolute angles, orthonormal ``Z``), so that classifying the
+        point needs no further model evaluation. ``None`` from the other solvers.
     """
 
     q: np.ndarray
@@ -77,6 +83,25 @@ class LocalResult:
     status: str
     iterations: int
     on_bound: bool = False
+    energy: float | None = None
+    tip: np.ndarray | None = None
+    reduced_hessian: np.ndarray | None = None
+
+
+@dataclass
+class Continuation:
+    """Points of a compiled continuation (:meth:`_Model.batch_continue`), N of them.
+
+    ``Z`` (N, n+2) the iterates ``(phi, F)``, ``residual`` (N,) the KKT residual norm there (large
+    where Newton failed); from the kernels also ``energy`` (N,), ``tip`` (N, 2) and
+    ``reduced_hessian`` (N, n-2, n-2), else ``None``.
+    """
+
+    Z: np.ndarray
+    residual: np.ndarray
+    energy: np.ndarray | None = None
+    tip: np.ndarray | None = None
+    reduced_hessian: np.ndarray | None = None
 
 
 def _q_of_phi(phi):
@@ -164,6 +189,7 @@ class _Model:
         self._nlp_force = None
         self._kkt_dp = None
         self._batch = None
+        self._kern = None
         if self.dense:
             D = ca.densify
             phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = self._sym
@@ -197,6 +223,18 @@ class _Model:
             z = ca.vertcat(phi, F)
             self._sx = (phi, p, F, q, E, tip, res, z, tgt, gradE, J, H)
         return self._sx
+
+    @property
+    def kernel(self) -> tuple | None:
+        """The compiled Newton kernels (:mod:`.kernels`) as ``(Kernels, newton, seeds, continuation)``
+        fast wrappers, for ``2 <= n <= kernels.KERNEL_MAX``; else ``None``. Built on first use."""
+        if self._kern is None:
+            if 2 <= self.n <= _kernels.KERNEL_MAX:
+                k = _kernels.build(self.n, self._sym)
+                self._kern = (k, _Fast(k.newton), _Fast(k.seeds), _Fast(k.continuation))
+            else:
+                self._kern = False
+        return self._kern or None
 
     def _build_banded(self) -> None:
         """MX whole-vector functions for long chains (Newton, classification, stiffness)."""
@@ -278,28 +316,43 @@ class _Model:
             self._batch = (step.mapaccum("continuation", N), self.derivs.map(N))
         return self._batch
 
-    def batch_continue(self, params: np.ndarray, targets: np.ndarray, z0: np.ndarray):
-        """Newton continuation along ``targets`` (N x 2) from ``z0 = (phi, F)``, in compiled code.
+    def batch_continue(self, params: np.ndarray, targets: np.ndarray, z0: np.ndarray) -> "Continuation":
+        """Newton continuation along ``targets`` (N x 2 tip positions) from ``z0 = (phi, F)``, in compiled code.
 
-        Each point starts from the previous point's solution (undamped Newton, CasADi's
-        ``rootfinder``). Returns ``(Z, residual)``: ``Z`` (N, n+2) and the infinity norm of the
-        KKT residual at each returned point (large where Newton failed). Short chains only.
+        Each point starts from the previous point's solution. Chains with kernels
+        (``n <= kernels.KERNEL_MAX``) run ``kernels.CONT_ITER`` damped Newton iterations per point
+        and also return the energy, tip and reduced Hessian there; longer short chains run CasADi's
+        undamped ``rootfinder``. Short chains only (``n <= DENSE_MAX``).
         """
-        cont, _ = self._batch_functions()
-        N = targets.shape[0]
-        P = np.repeat(params[:, None], BATCH, axis=1)
-        Z = np.empty((N, self.n + 2))
+        kern = self.kernel
+        N, n = targets.shape[0], self.n
+        Z = np.empty((N, n + 2))
         R = np.empty(N)
         z = np.asarray(z0, dtype=float)
-        for s in range(0, N, BATCH):
-            chunk = targets[s:s + BATCH]
-            pad = np.vstack([chunk, np.repeat(chunk[-1:], BATCH - chunk.shape[0], axis=0)])
-            Zc, Rc = cont(z, pad.T, P)
-            Zc, Rc = np.asarray(Zc).T, np.asarray(Rc).ravel()
+        if kern is None:
+            cont, _ = self._batch_functions()
+            P = np.repeat(params[:, None], BATCH, axis=1)
+            for s in range(0, N, BATCH):
+                chunk = targets[s:s + BATCH]
+                pad = np.vstack([chunk, np.repeat(chunk[-1:], BATCH - chunk.shape[0], axis=0)])
+                Zc, Rc = cont(z, pad.T, P)
+                Zc, Rc = np.asarray(Zc).T, np.asarray(Rc).ravel()
+                k = chunk.shape[0]
+                Z[s:s + k], R[s:s + k] = Zc[:k], Rc[:k]
+                z = Zc[k - 1]
+            return Continuation(Z, R)
+        self._set_scale(params)
+        fast, B, m = kern[3], _kernels.BATCH, n - 2
+        Y = np.empty((N, 5 + m * m))
+        for s in range(0, N, B):
+            chunk = targets[s:s + B]
             k = chunk.shape[0]
-            Z[s:s + k], R[s:s + k] = Zc[:k], Rc[:k]
-            z = Zc[k - 1]
-        return Z, R
+            pad = np.vstack([chunk, np.repeat(chunk[-1:], B - k, axis=0)]) if k < B else chunk
+            out = fast(z, pad.ravel(), params, 1e-12 * self._scale)
+            Z[s:s + k] = out[0].reshape(B, n + 2)[:k]
+            Y[s:s + k] = out[1].reshape(B, 5 + m * m)[:k]
+            z = Z[s + k - 1]
+        return Continuation(Z, Y[:, 0], Y[:, 2], Y[:, 3:5], Y[:, 5:].reshape(N, m, m).transpose(0, 2, 1))
 
     def batch_derivs(self, params: np.ndarray, Q: np.ndarray, Fs: np.ndarray):
         """Energy (N,), Lagrangian Hessian (N, n, n), tip Jacobian (N, 2, n), tip (N, 2) in phi."""
@@ -381,10 +434,16 @@ class _Model:
                    max_step: float = 0.5) -> LocalResult:
         """Damped Newton on the KKT system of the displacement problem (any stationary point).
 
-        ``F0`` defaults to the least-squares force of eq. (8) at ``q0``.
+        ``F0`` defaults to the least-squares force of eq. (8) at ``q0``. Chains with compiled
+        kernels (:mod:`.kernels`) run the method there first (same step rule), and here only when
+        it did not converge.
         """
         self._set_scale(params)
         phi = self.phi(np.asarray(q0, dtype=float))
+        if max_step == _kernels.MAX_STEP and self.kernel is not None:
+            res = self._kernel_newton(params, limits, target, phi, F0, tol * self._scale, max_iter)
+            if res is not None:
+                return res
         if F0 is None:
             # eq. (8): F = (J J^T)^-1 J grad E, a 2 x 2 system solved by hand (a start only)
             if self.dense:
@@ -404,6 +463,59 @@ class _Model:
         return self._dispatch(self._fast_kkt if self.dense else self._fast_kkt_b,
                               None if self.dense else self._fast_kkt_rb, (params, target), z, limits, tol,
                               max_iter, max_step, None)
+
+    def _kernel_newton(self, params, limits, target, phi, F0, thresh, max_iter) -> LocalResult | None:
+        """The compiled damped Newton method from ``(phi, F0)``; ``None`` when it did not converge."""
+        fast = self.kernel[1]
+        n = self.n
+        use = F0 is not None
+        out = fast(phi, F0 if use else _ZERO2, 1.0 if use else 0.0, params, target, thresh)
+        its, calls = int(out[2][0]), 1
+        while not out[1][0] <= thresh:
+            if not np.isfinite(out[1][0]) or calls * _kernels.ITER >= max_iter:
+                return None
+            z = out[0]
+            out = fast(z[:n], z[n:], 1.0, params, target, thresh)      # inputs are copied first
+            its, calls = its + int(out[2][0]), calls + 1
+        return self._kernel_result(out[0], out[3][0], out[4], out[5], its, limits)
+
+    def _kernel_result(self, z, E, tip, R, its, limits) -> LocalResult:
+        n = self.n
+        q = z[:n].copy()
+        q[1:] -= z[:n - 1]
+        return LocalResult(q, z[n:n + 2].copy(), True, "Newton_Converged", its, bool(np.any(np.abs(q) >= limits)),
+                           float(E), tip.copy(), R.reshape(n - 2, n - 2).T.copy())
+
+    def newton_kkt_many(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
+                        starts: list[np.ndarray]) -> list[LocalResult]:
+        """:meth:`newton_kkt` from each start (force from eq. (8)); the seeds of a global search.
+
+        With kernels, ``kernels.SEEDS`` starts per compiled call; a start that did not converge
+        there is run again by :meth:`newton_kkt` (and so by the Python method if need be).
+        """
+        kern = self.kernel
+        if kern is None or not starts:
+            return [self.newton_kkt(params, limits, target, q) for q in starts]
+        self._set_scale(params)
+        thresh = 1e-12 * self._scale
+        fast, S, n, m = kern[2], _kernels.SEEDS, self.n, self.n - 2
+        out_all: list[LocalResult] = []
+        Q = np.asarray(starts, dtype=float)
+        for c in range(0, Q.shape[0], S):
+            chunk = Q[c:c + S]
+            k = chunk.shape[0]
+            PH = np.empty((S, n))
+            PH[:k] = np.cumsum(chunk, axis=1)
+            PH[k:] = PH[0]
+            out = fast(PH.ravel(), _ZERO2S, _ZERO2S[:S], params, target, thresh)
+            Z = out[0].reshape(S, n + 2)
+            nrm, its, E, T, R = out[1], out[2], out[3], out[4].reshape(S, 2), out[5].reshape(S, m * m)
+            for j in range(k):
+                if nrm[j] <= thresh:
+                    out_all.append(self._kernel_result(Z[j], E[j], T[j], R[j], int(its[j]), limits))
+                else:
+                    out_all.append(self.newton_kkt(params, limits, target, chunk[j]))
+        return out_all
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
@@ -544,6 +656,8 @@ class _Model:
         return np.asarray(ca.densify(Jz)), np.asarray(ca.densify(Jp))
 
 
+_ZERO2 = np.zeros(2)
+_ZERO2S = np.zeros(2 * _kernels.SEEDS)
 _blas = None
 
 

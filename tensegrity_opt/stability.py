@@ -30,7 +30,8 @@ import scipy.linalg as sla
 from .manipulator import Manipulator
 from .solvers import model
 
-__all__ = ["Inertia", "classify", "analyse", "classify_batch", "reduced_hessian"]
+__all__ = ["Inertia", "classify", "analyse", "classify_batch", "classify_reduced", "reduced_hessian",
+           "inertia_of_reduced"]
 
 
 @dataclass(frozen=True)
@@ -90,10 +91,36 @@ def inertia_of(H, J, constrained: bool, rel_tol: float, dim: int) -> Inertia:
             Q, _ = np.linalg.qr(J.T, mode="complete")
             Z = Q[:, 2:]
             H = Z.T @ H @ Z
-        w = np.linalg.eigvalsh(H)
-        tol = rel_tol * max(1.0, float(np.abs(w).max()))
-        return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)), dim)
+        return _inertia_of_eigenvalues(np.linalg.eigvalsh(H), rel_tol, dim)
     return _sparse_inertia(H, J if constrained else None, rel_tol, dim)
+
+
+def _inertia_of_eigenvalues(w: np.ndarray, rel_tol: float, dim: int) -> Inertia:
+    tol = rel_tol * max(1.0, float(np.abs(w).max()))
+    return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)), dim)
+
+
+def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> Inertia:
+    """Inertia of a displacement-controlled equilibrium from its reduced Hessian ``Z^T H Z`` (m x m).
+
+    As :func:`inertia_of`, for a reduced Hessian computed elsewhere (the compiled kernels);
+    a 2 x 2 one (``n = 4``) by the closed form, its small eigenvalue as ``det / large`` (no
+    cancellation).
+    """
+    dim = R.shape[0]
+    if dim == 0:
+        return Inertia(np.zeros(0), 0, False, 0)
+    if dim == 1:
+        w = np.array([R[0, 0]])
+    elif dim == 2:
+        a, b, d = float(R[0, 0]), float(R[0, 1]), float(R[1, 1])
+        mean, rad = 0.5 * (a + d), float(np.hypot(0.5 * (a - d), b))
+        big = mean + rad if mean >= 0 else mean - rad
+        small = (a * d - b * b) / big if big != 0.0 else 0.0
+        w = np.array(sorted((big, small)))
+    else:
+        w = np.linalg.eigvalsh(R)
+    return _inertia_of_eigenvalues(w, rel_tol, dim)
 
 
 def classify_batch(H: np.ndarray, J: np.ndarray, rel_tol: float = 1e-9
@@ -108,7 +135,15 @@ def classify_batch(H: np.ndarray, J: np.ndarray, rel_tol: float = 1e-9
         return np.zeros(N, dtype=int), np.ones(N, dtype=bool), np.zeros((N, 0))
     Q, _ = np.linalg.qr(np.transpose(J, (0, 2, 1)), mode="complete")
     Z = Q[:, :, 2:]
-    w = np.linalg.eigvalsh(np.transpose(Z, (0, 2, 1)) @ H @ Z)
+    return classify_reduced(np.transpose(Z, (0, 2, 1)) @ H @ Z, rel_tol)
+
+
+def classify_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`classify_batch` from the reduced Hessians ``R`` (N, m, m) themselves."""
+    N, m = R.shape[0], R.shape[1]
+    if m == 0:
+        return np.zeros(N, dtype=int), np.ones(N, dtype=bool), np.zeros((N, 0))
+    w = np.linalg.eigvalsh(R)
     tol = rel_tol * np.maximum(1.0, np.abs(w).max(axis=1))
     morse = np.sum(w < -tol[:, None], axis=1)
     stable = (morse == 0) & ~np.any(np.abs(w) <= tol[:, None], axis=1)

@@ -108,7 +108,9 @@ def test_equilibria(client):
     assert len(got) == len(expected) == 6
     for g, e in zip(got, expected):
         check_equilibrium(g, e)
-    assert [g["energy"] for g in got] == sorted(g["energy"] for g in got)
+    energies = [g["energy"] for g in got]
+    # sorted by energy; mirror images tie (equal to roundoff), so compare with a tolerance
+    assert all(b >= a - 1e-12 * abs(a) for a, b in zip(energies, energies[1:]))
     assert [g["kind"] for g in got] == ["minimum", "minimum", "saddle", "saddle", "maximum", "maximum"]
 
 
