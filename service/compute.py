@@ -8,6 +8,7 @@ them through :mod:`service.errors` (batch items are mapped here, one error per t
 from __future__ import annotations
 
 import math
+from functools import lru_cache
 from typing import Any
 
 import numpy as np
@@ -19,7 +20,7 @@ from . import schemas as s
 from .errors import FieldContext, error_body
 
 __all__ = [
-    "build_manipulator", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job",
+    "build_manipulator", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job", "equilibrium_inline",
     "force_equilibrium_job", "equilibria_job", "buckling_job", "force_deflection_job", "stiffness_job",
     "segment_torque_job", "energy_landscape_job", "batch_job", "warmup_job",
 ]
@@ -42,9 +43,20 @@ def build_segment(seg: s.SegmentIn) -> to.Segment:
 
 
 def build_manipulator(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> to.Manipulator:
+    """The chain of a request; the same description gives the same (cached, immutable) object, so its
+    derived arrays, buckling modes and seed directions are computed once, not per request."""
     if isinstance(m, s.UniformManipulatorIn):
-        return to.Manipulator.uniform(m.n, m.a, m.b, _pair(m.k), _pair(m.L0))
-    return to.Manipulator([build_segment(seg) for seg in m.segments])
+        key: tuple[Any, ...] = ("uniform", m.n, m.a, m.b, _pair(m.k), _pair(m.L0))
+    else:
+        key = ("segments",) + tuple((seg.a, seg.b, _pair(seg.k), _pair(seg.L0)) for seg in m.segments)
+    return _manipulator(key)
+
+
+@lru_cache(maxsize=256)
+def _manipulator(key: tuple[Any, ...]) -> to.Manipulator:
+    if key[0] == "uniform":
+        return to.Manipulator.uniform(*key[1:])
+    return to.Manipulator([to.Segment(*seg) for seg in key[1:]])
 
 
 class NonFiniteResult(ArithmeticError):
@@ -93,6 +105,23 @@ def warmup_job() -> None:
 def equilibrium_job(req: s.EquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0)))
+
+
+def equilibrium_inline(req: s.EquilibriumRequest, *, max_segments: int) -> dict[str, Any] | None:
+    """:func:`equilibrium_job` by the bounded Newton-only search, on the event loop; ``None`` when it
+    does not settle the request (long chain, bistable segments, no stable equilibrium found).
+
+    For chains of monotonic segments ``solve_equilibrium(method="auto")`` returns exactly the
+    Newton-only answer whenever that finds one, so the result does not depend on the path.
+    """
+    m = build_manipulator(req.manipulator)
+    if m.n > max_segments or not m.monotonic:
+        return None
+    try:
+        eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), method="newton")
+    except (to.NoEquilibriumError, to.SolverError):
+        return None
+    return equilibrium_out(eq)
 
 
 def force_equilibrium_job(req: s.ForceEquilibriumRequest) -> dict[str, Any]:

@@ -61,6 +61,11 @@ class Settings(BaseSettings):
     solve_timeout: float = Field(10.0, gt=0, description="seconds one request may wait for its result")
     batch_timeout: float = Field(60.0, gt=0, description="seconds one batch may run")
     workers: int = Field(2, ge=1, le=64, description="solver worker threads")
+    inline_max_segments: int = Field(
+        8, ge=0, le=64,
+        description="chains up to this many segments (with monotonic segments) are first solved on the event "
+                    "loop by the bounded Newton-only search (a few hundred microseconds, less than the hand-off "
+                    "to a worker thread); what it does not settle goes to the workers. 0: always the workers")
     queue_size: int = Field(64, ge=0, le=100000, description="requests waiting for a worker before 503")
     retry_after: int = Field(1, ge=0, description="Retry-After seconds sent with 503")
     api_keys: Annotated[list[str], NoDecode] = Field(default_factory=list, description="accepted X-API-Key values")

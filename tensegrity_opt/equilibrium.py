@@ -24,7 +24,7 @@ from .buckling import critical_force, tip_slope
 from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError,
                      UnreachableTargetError)
 from .manipulator import Manipulator
-from .seeds import seeds
+from .seeds import seed_matrix
 from .shapes import shape_label, sign_string
 from .solvers import LocalResult, model
 from .stability import analyse, inertia_of_reduced
@@ -104,14 +104,20 @@ class Equilibrium:
 
 def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:
     """Classify a converged local solution into an :class:`Equilibrium`."""
+    return _build(res, *_classify(m, res, constrained), constrained)
+
+
+def _classify(m: Manipulator, res: LocalResult, constrained: bool):
     if constrained and res.reduced_hessian is not None:        # the compiled kernels' outputs
-        inertia, energy, tip = inertia_of_reduced(res.reduced_hessian), res.energy, res.tip
-    else:
-        inertia, energy, tip = analyse(m, res.q, res.force, constrained=constrained)
+        return inertia_of_reduced(res.reduced_hessian), res.energy, res.tip
+    return analyse(m, res.q, res.force, constrained=constrained)
+
+
+def _build(res: LocalResult, inertia, energy, tip, constrained: bool) -> Equilibrium:
     return Equilibrium(q=res.q.copy(), energy=energy, force=np.asarray(res.force, float).copy(),
                        morse_index=inertia.morse_index, stable=inertia.stable, status=res.status,
                        iterations=res.iterations,
-                       tip=tip, control="displacement" if constrained else "force",
+                       tip=np.array(tip, dtype=float), control="displacement" if constrained else "force",
                        hessian_eigenvalues=inertia.eigenvalues)
 
 
@@ -127,6 +133,8 @@ def is_equilibrium(m: Manipulator, res: LocalResult, target: np.ndarray | None =
     ``check_residual`` re-evaluates the equilibrium equations in numpy (independently of
     CasADi); Newton results, whose convergence test *is* the residual, may skip it.
     """
+    if res.energy is not None and not check_residual:
+        return res.success and not res.on_bound     # a converged kernel result: finite, range checked
     if not (res.success and not res.on_bound and math.isfinite(float(res.force.sum()))
             and m.in_range(res.q)):         # in_range is False for a NaN angle
         return False
@@ -137,11 +145,11 @@ def check_q0(m: Manipulator, q0) -> np.ndarray | None:
     if q0 is None:
         return None
     q0 = np.asarray(q0, dtype=float)
+    if q0.shape == (m.n,) and m.in_range(q0):          # the common case first (NaN is not in range)
+        return q0
     if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
         raise InvalidParameterError(f"q0 must hold {m.n} finite joint angles, got shape {q0.shape}", field="q0")
-    if not m.in_range(q0):
-        raise InvalidParameterError("q0 lies outside the physical joint range |q_i| < pi - 2 beta_i", field="q0")
-    return q0
+    raise InvalidParameterError("q0 lies outside the physical joint range |q_i| < pi - 2 beta_i", field="q0")
 
 
 def straight_equilibrium(m: Manipulator) -> Equilibrium:
@@ -211,12 +219,15 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         Only the local solve from ``q0`` (Newton on the KKT system, IPOPT as the fallback):
         the equilibrium on the branch through ``q0``, whatever its stability (read
         ``stable``). For control loops and finite differences along a branch.
-    method : {"auto", "ipopt"}
+    method : {"auto", "ipopt", "newton"}
         ``"auto"``: damped Newton on the KKT system from every seed, classified, the least-energy
         stable one kept — enough when every segment is monotonic (condition (4)); otherwise, or when
         Newton finds no stable equilibrium, IPOPT (``min E`` s.t. ``tip = target``) from every seed
         too, and the least-energy stable one of both. ``"ipopt"``: IPOPT from every seed only
-        (slower; the methods are compared in the tests).
+        (slower; the methods are compared in the tests). ``"newton"``: the Newton part of
+        ``"auto"`` alone — its work is bounded (at most 50 iterations per seed) and it raises
+        :class:`NoEquilibriumError` where ``"auto"`` would go on with IPOPT; for monotonic chains
+        it returns what ``"auto"`` returns whenever it returns.
     n_random, max_modes : int, optional
         Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
         for chains of up to 64 segments; 0 and 2 for longer ones, whose least-energy
@@ -255,13 +266,14 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
                                   status=f"newton: {res.status}; ipopt: {fallback.status}")
             res = fallback
         return make_equilibrium(m, res, constrained=True)
-    if method not in ("auto", "ipopt"):
-        raise InvalidParameterError(f"method must be 'auto' or 'ipopt', got {method!r}", field="method")
+    if method not in ("auto", "ipopt", "newton"):
+        raise InvalidParameterError(f"method must be 'auto', 'ipopt' or 'newton', got {method!r}", field="method")
     short = m.n <= 64
     n_random = (8 if short else 0) if n_random is None else int(n_random)
     max_modes = (6 if short else 2) if max_modes is None else int(max_modes)
-    starts = ([q0] if q0 is not None else []) + [s.q for s in seeds(m, dx, dy, max_modes=max_modes,
-                                                                     n_random=n_random)]
+    starts = seed_matrix(m, dx, dy, max_modes=max_modes, n_random=n_random)[0]
+    if q0 is not None:
+        starts = np.vstack([q0, starts])
     statuses: dict[str, int] = {}
     found: list[Equilibrium] = []
     if method == "auto":
@@ -273,6 +285,13 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         found, _ = search_stable(m, target, starts, statuses, minimize=False)
         if found and m.monotonic:
             return _pick(found, q0)
+    if method == "newton":
+        found, n_unstable = search_stable(m, target, starts, statuses, minimize=False)
+        if found:
+            return _pick(found, q0)
+        raise NoEquilibriumError(f"Newton found no stable equilibrium for dx={dx:g}, dy={dy:g} from "
+                                 f"{len(starts)} starts ({n_unstable} unstable ones); method='auto' adds IPOPT",
+                                 status=_summary(statuses))
     stable, n_unstable = search_stable(m, target, starts, statuses, minimize=True)
     stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < 1e-7 for f in found)]
     if stable:
@@ -311,18 +330,31 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
         if ok:
             candidates.append(res)
     stable: list[Equilibrium] = []
-    seen: list[np.ndarray] = []
     n_unstable = 0
-    for res in candidates:
-        if any(np.max(np.abs(res.q - s)) < 1e-7 for s in seen):
-            continue
-        seen.append(res.q)
-        eq = make_equilibrium(m, res, constrained=True)
-        if eq.stable:
-            stable.append(eq)
+    for res in distinct(candidates):
+        inertia, energy, tip = _classify(m, res, True)
+        if inertia.stable:
+            stable.append(_build(res, inertia, energy, tip, True))
         else:
             n_unstable += 1
     return stable, n_unstable
+
+
+#: Two configurations closer than this in every joint angle (rad) are the same equilibrium.
+SAME_Q = 1e-7
+
+
+def distinct(results: list[LocalResult]) -> list[LocalResult]:
+    """The results whose ``q`` differs (by more than ``SAME_Q`` in some joint) from every earlier one's."""
+    if len(results) < 2:
+        return list(results)
+    Q = np.array([r.q for r in results])
+    same = (np.abs(Q[:, None, :] - Q[None, :, :]).max(axis=2) < SAME_Q).tolist()
+    kept: list[int] = []
+    for i in range(len(results)):
+        if not any(same[i][j] for j in kept):
+            kept.append(i)
+    return [results[i] for i in kept]
 
 
 def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:

@@ -15,7 +15,7 @@ Kernels (``n <= KERNEL_MAX`` segments)
     ``Z^T H Z`` (``Z`` an orthonormal basis of the null space of the tip Jacobian, by two
     Householder reflections) at the last iterate.
 ``seeds``
-    ``newton`` over ``SEEDS`` starts at once (a global search's seeds).
+    ``newton`` with ``SEED_ITER`` iterations over ``SEEDS`` starts at once (a global search's seeds).
 ``continuation``
     ``BATCH`` targets in order, each solved by ``CONT_ITER`` iterations from the previous
     target's solution (``mapaccum``), with the same per-point outputs.
@@ -50,14 +50,16 @@ from pathlib import Path
 
 import casadi as ca
 
-__all__ = ["KERNEL_MAX", "ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir", "compiler"]
+__all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir", "compiler"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3:
 #: an n = 16 iteration costs ~13 us compiled, no better than LAPACK driven from Python).
 KERNEL_MAX = 8
-#: Newton iterations per ``newton`` call (warm starts converge in 3-5, seeds of a global search
-#: in 4-8; an unconverged start is called again from where it stopped).
-ITER = 8
+#: Newton iterations per ``newton`` call (a warm start 0.001 away converges in 2-3; an
+#: unconverged start is called again from where it stopped). Each costs ~1.2 us for n = 4.
+ITER = 4
+#: Newton iterations per start in ``seeds`` (a global search's seeds converge in 4-8).
+SEED_ITER = 8
 #: Newton iterations per target in ``continuation`` (neighbouring targets converge in 2-4).
 CONT_ITER = 5
 #: Step lengths tried per iteration: a0, a0/2, a0/4, a0/8.
@@ -165,7 +167,9 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
                          ["phi0", "F0", "use_F0", "p", "target", "thresh"],
                          ["z", "norm", "iters", "E", "tip", "R"])
 
-    mapped = newton.map(SEEDS)
+    solve_s = run(SEED_ITER)
+    newton_s = ca.Function("newton_s", [phi0, F0, use, pm, tm, th], solve_s(ca.vertcat(phi0, Fs), pm, tm, th))
+    mapped = newton_s.map(SEEDS)
     PH, F0s, US = ca.MX.sym("phi0", n, SEEDS), ca.MX.sym("F0", 2, SEEDS), ca.MX.sym("use_F0", 1, SEEDS)
     seeds = ca.Function("seeds", [PH, F0s, US, pm, tm, th],
                         mapped(PH, F0s, US, ca.repmat(pm, 1, SEEDS), ca.repmat(tm, 1, SEEDS),

@@ -19,7 +19,7 @@ from .errors import TensegrityError
 from .manipulator import Manipulator
 from .segment import Segment
 
-__all__ = ["Seed", "seeds"]
+__all__ = ["Seed", "seeds", "seed_matrix"]
 
 
 @dataclass(frozen=True)
@@ -52,30 +52,53 @@ def _directions(m: Manipulator, max_modes: int) -> list[tuple[np.ndarray, float 
     return [(md.q, None, None) for md in bk.modes]
 
 
-def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
-          n_random: int = 8, rng_seed: int = 20201) -> list[Seed]:
-    """Seeds for the deflection ``(dx, dy)``: ``±`` each mode at each amplitude factor, then random."""
+@lru_cache(maxsize=256)
+def _basis(m: Manipulator, max_modes: int, amplitudes: tuple[float, ...], n_random: int, rng_seed: int):
+    """Seed directions scaled for ``dx = 1`` (rows), their force guesses and origins; cached per call pattern.
+
+    A seed for ``dx`` is ``sqrt(dx) * row + qy``, shrunk into the range: ``t0 = sqrt(2 dx / alpha^T G alpha)``
+    (eq. 23) scales as ``sqrt(dx)``, and the random directions come from a fixed-seed generator.
+    """
     S0 = tip_slope(m)
-    lim = m.joint_limits * 0.9
-    qy = S0 * (dy / (S0 @ S0))          # least-norm q with S0^T q = dy
-    dxe = max(float(dx), 1e-12)
-    out: list[Seed] = []
-
-    def shrink(q: np.ndarray) -> np.ndarray:
-        r = np.max(np.abs(q) / lim)
-        return q / r if r > 1.0 else q
-
+    rows, fxs, fys, origins = [], [], [], []
     for alpha, fx, fy in _directions(m, max_modes):
-        t0 = np.sqrt(2.0 * dxe / quad_G(m, alpha))
+        s1 = np.sqrt(2.0 / quad_G(m, alpha))
         for amp in amplitudes:
             for sign in (1.0, -1.0):
-                t = sign * amp * t0
-                F = None if fx is None else np.array([fx, fy * t])
-                out.append(Seed(shrink(t * alpha + qy), F, f"mode{'+' if sign > 0 else '-'}"))
+                t = sign * amp * s1
+                rows.append(t * alpha)
+                fxs.append(np.nan if fx is None else fx)
+                fys.append(np.nan if fx is None else fy * t)
+                origins.append(f"mode{'+' if sign > 0 else '-'}")
     rng = np.random.default_rng(rng_seed + m.n)
     for _ in range(n_random):
         v = rng.standard_normal(m.n)
         v -= S0 * (S0 @ v) / (S0 @ S0)
-        t0 = np.sqrt(2.0 * dxe / quad_G(m, v))
-        out.append(Seed(shrink(t0 * rng.uniform(0.5, 2.0) * v + qy), None, "random"))
-    return out
+        rows.append(np.sqrt(2.0 / quad_G(m, v)) * rng.uniform(0.5, 2.0) * v)
+        fxs.append(np.nan)
+        fys.append(np.nan)
+        origins.append("random")
+    D = np.array(rows).reshape(len(rows), m.n)
+    for a in (D, S0):
+        a.setflags(write=False)
+    return D, np.array(fxs), np.array(fys), tuple(origins), S0
+
+
+def seed_matrix(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
+                n_random: int = 8, rng_seed: int = 20201) -> tuple[np.ndarray, np.ndarray, tuple[str, ...]]:
+    """The seeds of :func:`seeds` as arrays: ``(Q (S, n), F (S, 2) with NaN rows where no guess, origins)``."""
+    D, fx, fy, origins, S0 = _basis(m, int(max_modes), tuple(float(a) for a in amplitudes), int(n_random),
+                                    int(rng_seed))
+    root = np.sqrt(max(float(dx), 1e-12))
+    Q = root * D + S0 * (float(dy) / float(S0 @ S0))      # plus the least-norm q with S0^T q = dy
+    r = np.max(np.abs(Q) / (m.joint_limits * 0.9), axis=1)
+    Q /= np.maximum(r, 1.0)[:, None]
+    return Q, np.column_stack([fx, fy * root]), origins
+
+
+def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
+          n_random: int = 8, rng_seed: int = 20201) -> list[Seed]:
+    """Seeds for the deflection ``(dx, dy)``: ``±`` each mode at each amplitude factor, then random."""
+    Q, F, origins = seed_matrix(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random,
+                                rng_seed=rng_seed)
+    return [Seed(q, None if np.isnan(f[0]) else f, o) for q, f, o in zip(Q, F, origins)]

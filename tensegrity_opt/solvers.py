@@ -494,28 +494,37 @@ class _Model:
         there is run again by :meth:`newton_kkt` (and so by the Python method if need be).
         """
         kern = self.kernel
-        if kern is None or not starts:
+        if kern is None or len(starts) == 0:
             return [self.newton_kkt(params, limits, target, q) for q in starts]
         self._set_scale(params)
         thresh = 1e-12 * self._scale
         fast, S, n, m = kern[2], _kernels.SEEDS, self.n, self.n - 2
-        out_all: list[LocalResult] = []
-        Q = np.asarray(starts, dtype=float)
-        for c in range(0, Q.shape[0], S):
-            chunk = Q[c:c + S]
-            k = chunk.shape[0]
-            PH = np.empty((S, n))
-            PH[:k] = np.cumsum(chunk, axis=1)
-            PH[k:] = PH[0]
-            out = fast(PH.ravel(), _ZERO2S, _ZERO2S[:S], params, target, thresh)
-            Z = out[0].reshape(S, n + 2)
-            nrm, its, E, T, R = out[1], out[2], out[3], out[4].reshape(S, 2), out[5].reshape(S, m * m)
-            for j in range(k):
-                if nrm[j] <= thresh:
-                    out_all.append(self._kernel_result(Z[j], E[j], T[j], R[j], int(its[j]), limits))
-                else:
-                    out_all.append(self.newton_kkt(params, limits, target, chunk[j]))
-        return out_all
+        Q0 = np.asarray(starts, dtype=float)
+        k_all = Q0.shape[0]
+        chunks = -(-k_all // S)
+        PH = np.empty((chunks * S, n))
+        PH[:k_all] = np.cumsum(Q0, axis=1)
+        PH[k_all:] = PH[0]
+        Z, Y = np.empty((chunks * S, n + 2)), np.empty((chunks * S, 5 + m * m))
+        for c in range(chunks):
+            out = fast(PH[c * S:(c + 1) * S].ravel(), _ZERO2S, _ZERO2S[:S], params, target, thresh)
+            Z[c * S:(c + 1) * S] = out[0].reshape(S, n + 2)
+            Y[c * S:(c + 1) * S, 0], Y[c * S:(c + 1) * S, 1], Y[c * S:(c + 1) * S, 2] = out[1], out[2], out[3]
+            Y[c * S:(c + 1) * S, 3:5] = out[4].reshape(S, 2)
+            Y[c * S:(c + 1) * S, 5:] = out[5].reshape(S, m * m)
+        Q = Z[:, :n].copy()
+        Q[:, 1:] -= Z[:, :n - 1]
+        on_bound = np.any(np.abs(Q) >= limits, axis=1).tolist()
+        conv = (Y[:, 0] <= thresh).tolist()
+        results: list[LocalResult] = []
+        for j in range(k_all):
+            if conv[j]:
+                y = Y[j]
+                results.append(LocalResult(Q[j], Z[j, n:], True, "Newton_Converged", int(y[1]), on_bound[j],
+                                           float(y[2]), y[3:5], y[5:].reshape(m, m).T))
+            else:
+                results.append(self.newton_kkt(params, limits, target, Q0[j]))
+        return results
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:

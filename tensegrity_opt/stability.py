@@ -22,6 +22,7 @@ the eigenvalues.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -100,6 +101,12 @@ def _inertia_of_eigenvalues(w: np.ndarray, rel_tol: float, dim: int) -> Inertia:
     return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)), dim)
 
 
+def _inertia_of_list(w: list[float], rel_tol: float) -> Inertia:
+    """:func:`_inertia_of_eigenvalues` for a few eigenvalues as floats (no numpy overhead)."""
+    tol = rel_tol * max(1.0, max(abs(v) for v in w))
+    return Inertia(np.array(w), sum(v < -tol for v in w), any(abs(v) <= tol for v in w), len(w))
+
+
 def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> Inertia:
     """Inertia of a displacement-controlled equilibrium from its reduced Hessian ``Z^T H Z`` (m x m).
 
@@ -111,16 +118,14 @@ def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> Inertia:
     if dim == 0:
         return Inertia(np.zeros(0), 0, False, 0)
     if dim == 1:
-        w = np.array([R[0, 0]])
-    elif dim == 2:
-        a, b, d = float(R[0, 0]), float(R[0, 1]), float(R[1, 1])
-        mean, rad = 0.5 * (a + d), float(np.hypot(0.5 * (a - d), b))
+        return _inertia_of_list([float(R[0, 0])], rel_tol)
+    if dim == 2:
+        (a, b), (_, d) = R.tolist()
+        mean, rad = 0.5 * (a + d), math.hypot(0.5 * (a - d), b)
         big = mean + rad if mean >= 0 else mean - rad
         small = (a * d - b * b) / big if big != 0.0 else 0.0
-        w = np.array(sorted((big, small)))
-    else:
-        w = np.linalg.eigvalsh(R)
-    return _inertia_of_eigenvalues(w, rel_tol, dim)
+        return _inertia_of_list([small, big] if small <= big else [big, small], rel_tol)
+    return _inertia_of_eigenvalues(np.linalg.eigvalsh(R), rel_tol, dim)
 
 
 def classify_batch(H: np.ndarray, J: np.ndarray, rel_tol: float = 1e-9

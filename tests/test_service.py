@@ -440,7 +440,7 @@ def test_timeout_504_and_recovery():
 
 
 def test_saturated_pool_503():
-    with make_client(workers=1, queue_size=0, retry_after=3) as c:
+    with make_client(workers=1, queue_size=0, retry_after=3, inline_max_segments=0) as c:
         pool = c.app.state.pool
         gate = threading.Event()
         job = pool.submit(gate.wait, 10)      # occupies the only worker

@@ -8,7 +8,7 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import equilibria_job, equilibrium_job, force_equilibrium_job
+from ..compute import equilibria_job, equilibrium_inline, equilibrium_job, force_equilibrium_job
 from ..config import Settings
 from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
 from . import solve_responses
@@ -35,7 +35,7 @@ async def solve_equilibrium(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, equilibrium_job, req, ctx=ctx)
+    return await solve(request, equilibrium_job, req, ctx=ctx, inline=equilibrium_inline)
 
 
 @router.post(

@@ -66,7 +66,7 @@ _503 = _err(503, "The job store cannot be used (its SQLite file could not be ope
             {"jobs_unavailable": {"summary": "job store unavailable", "value": _UNAVAILABLE}})
 
 
-def get_runner(request: Request) -> JobRunner:
+async def get_runner(request: Request) -> JobRunner:
     runner = getattr(request.app.state, "jobs", None)
     if runner is None:  # pragma: no cover - the router is only included together with a runner
         raise ServiceError(503, "jobs_unavailable", "this server has no job runner")
