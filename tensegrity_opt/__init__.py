@@ -27,13 +27,14 @@ from .segment import Segment
 from .shapes import shape_label, sign_string
 from .stiffness import cartesian_stiffness
 from .sweep import SweepResult, sweep
+from .tracking import Tracker
 
 __version__ = "0.1.0"
 
 __all__ = [
     "Segment", "Manipulator",
     "Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria",
-    "solve_equilibria_batch",
+    "solve_equilibria_batch", "Tracker",
     "Buckling", "Mode", "critical_force",
     "Curve", "Jump", "force_deflection",
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",

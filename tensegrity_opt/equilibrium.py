@@ -330,8 +330,9 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
         if ok:
             candidates.append(res)
     stable: list[Equilibrium] = []
+    cands = distinct(candidates)
     n_unstable = 0
-    for res in distinct(candidates):
+    for res in cands:
         inertia, energy, tip = _classify(m, res, True)
         if inertia.stable:
             stable.append(_build(res, inertia, energy, tip, True))
@@ -345,16 +346,14 @@ SAME_Q = 1e-7
 
 
 def distinct(results: list[LocalResult]) -> list[LocalResult]:
-    """The results whose ``q`` differs (by more than ``SAME_Q`` in some joint) from every earlier one's."""
+    """The results whose ``q`` differs (by more than ``SAME_Q`` in some joint) from every earlier one's
+    (the first of each group of coinciding results is kept)."""
     if len(results) < 2:
         return list(results)
     Q = np.array([r.q for r in results])
-    same = (np.abs(Q[:, None, :] - Q[None, :, :]).max(axis=2) < SAME_Q).tolist()
-    kept: list[int] = []
-    for i in range(len(results)):
-        if not any(same[i][j] for j in kept):
-            kept.append(i)
-    return [results[i] for i in kept]
+    same = np.abs(Q[:, None, :] - Q[None, :, :]).max(axis=2) < SAME_Q
+    keep = ~np.tril(same, -1).any(axis=1)
+    return [r for r, k in zip(results, keep.tolist()) if k]
 
 
 def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:

@@ -57,7 +57,7 @@ __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Ke
 KERNEL_MAX = 8
 #: Newton iterations per ``newton`` call (a warm start 0.001 away converges in 2-3; an
 #: unconverged start is called again from where it stopped). Each costs ~1.2 us for n = 4.
-ITER = 4
+ITER = 3
 #: Newton iterations per start in ``seeds`` (a global search's seeds converge in 4-8).
 SEED_ITER = 8
 #: Newton iterations per target in ``continuation`` (neighbouring targets converge in 2-4).
@@ -67,7 +67,7 @@ TRIALS = 4
 #: Largest change of any absolute angle in one step (rad), as in the Python Newton method.
 MAX_STEP = 0.5
 #: Starts per ``seeds`` call and targets per ``continuation`` call.
-SEEDS = 8
+SEEDS = 7
 BATCH = 128
 
 _FLAGS = ["-O2", "-fPIC", "-shared"]

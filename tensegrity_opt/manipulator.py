@@ -122,7 +122,9 @@ class Manipulator:
     @cached_property
     def params(self) -> np.ndarray:
         """Flat parameter vector ``[a, b, k1, k2, L1_0, L2_0]`` (each of length n) for the solvers."""
-        return np.concatenate([self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0])
+        p = np.concatenate([self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0])
+        p.setflags(write=False)           # shared by every solve of this chain: never modified
+        return p
 
     @cached_property
     def link_lengths(self) -> np.ndarray:

@@ -145,6 +145,7 @@ class _Fast:
         self.buf, self.trigger = f.buffer()
         self.ins = [np.zeros(f.nnz_in(i)) for i in range(f.n_in())]
         self.outs = [np.zeros(f.nnz_out(i)) for i in range(f.n_out())]
+        self._held: list[object] = [None] * f.n_in()
         self.sparsity = [f.sparsity_out(i) for i in range(f.n_out())]
         self.shapes = [(sp.size1(), sp.size2()) for sp in self.sparsity]
         for i, a in enumerate(self.ins):
@@ -153,8 +154,12 @@ class _Fast:
             self.buf.set_res(i, memoryview(a))
 
     def __call__(self, *args) -> list[np.ndarray]:
-        for dst, src in zip(self.ins, args):
+        held = self._held
+        for i, (dst, src) in enumerate(zip(self.ins, args)):
+            if src is held[i]:
+                continue                # the same read-only array as last time: already in place
             dst[:] = src
+            held[i] = src if isinstance(src, np.ndarray) and not src.flags.writeable else None
         self.trigger()
         return self.outs
 
@@ -483,8 +488,9 @@ class _Model:
         n = self.n
         q = z[:n].copy()
         q[1:] -= z[:n - 1]
-        return LocalResult(q, z[n:n + 2].copy(), True, "Newton_Converged", its, bool(np.any(np.abs(q) >= limits)),
-                           float(E), tip.copy(), R.reshape(n - 2, n - 2).T.copy())
+        # R is Z^T H Z (symmetric): its column-major nonzeros read row-major give the same matrix
+        return LocalResult(q, z[n:n + 2].copy(), True, "Newton_Converged", its, bool((np.abs(q) >= limits).any()),
+                           float(E), tip.copy(), R.reshape(n - 2, n - 2).copy())
 
     def newton_kkt_many(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
                         starts: list[np.ndarray]) -> list[LocalResult]:
