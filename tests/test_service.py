@@ -567,3 +567,28 @@ def test_metrics_method_label_is_bounded(client):
 def test_malformed_bodies_are_422(client, content, ctype):
     r = client.post("/v1/equilibrium", content=content, headers={"content-type": ctype})
     check_error(r, 422, "validation_error", "body")
+
+
+def test_inline_fast_path_answers_like_the_workers():
+    """Short monotonic chains are solved on the event loop; the answer equals the worker path's, and
+    what the fast path does not settle (bistable segments) goes to the workers."""
+    bistable = {"n": 4, "a": 0.6, "b": 1.0, "k": 1.0, "L0": 1.2}
+    bodies = [{"manipulator": PAPER, "dx": 0.1}, {"manipulator": PAPER, "dx": 0.7, "dy": -0.3},
+              {"manipulator": {"n": 6, "a": 0.8, "b": 1.2, "k": 2.5, "L0": 1.7}, "dx": 1.1, "dy": 0.2},
+              {"manipulator": PAPER, "dx": 0.2, "dy": 0.05, "q0": [0.17, -0.07, -0.24, -0.13]},
+              {"manipulator": bistable, "dx": 0.3, "dy": 0.1}]
+    with make_client() as fast, make_client(inline_max_segments=0) as workers:
+        submitted = []
+        pool = fast.app.state.pool
+        original = pool.submit
+
+        def counting(fn, *args):
+            submitted.append(args[0])
+            return original(fn, *args)
+
+        pool.submit = counting
+        for body in bodies:
+            a, b = fast.post("/v1/equilibrium", json=body), workers.post("/v1/equilibrium", json=body)
+            assert a.status_code == b.status_code == 200, (a.text, b.text)
+            assert a.json() == b.json()
+        assert [r.manipulator.a for r in submitted] == [0.6]      # only the bistable chain used a worker

@@ -1,0 +1,187 @@
+"""The compiled Newton kernels (tensegrity_opt.kernels) against independent computations.
+
+Expected values come from the numpy model of ``Manipulator`` (energy, tip, equilibrium residual),
+the library's QR route for the reduced Hessian (``stability.reduced_hessian``), the Python Newton
+method, the independent reference model of ``tests/reference_model.py`` — never from the kernels.
+"""
+
+import json
+import os
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+import tensegrity_opt as to
+from tensegrity_opt import kernels
+from tensegrity_opt.seeds import seeds
+from tensegrity_opt.solvers import model
+from tensegrity_opt.stability import inertia_of_reduced, reduced_hessian
+
+from reference_model import Chain
+
+CHAINS = {
+    "paper": to.Manipulator.uniform(4),
+    "n2": to.Manipulator.uniform(2, a=0.8, b=1.2, k=2.0, L0=1.5),
+    "n3": to.Manipulator.uniform(3),
+    "n6 non-uniform": to.Manipulator([to.Segment(1.0, 0.9 + 0.05 * i, (1.0 + 0.2 * i, 1.1), 1.0) for i in range(6)]),
+    "n8": to.Manipulator.uniform(8, a=0.8, b=1.2, k=2.5, L0=1.7),
+}
+
+
+def _python_newton(m, target, q0, F0=None):
+    """The damped Newton method in Python (the kernels' step rule, driven from numpy/LAPACK)."""
+    mdl = model(m.n)
+    mdl._set_scale(m.params)
+    phi = np.cumsum(q0)
+    if F0 is None:
+        F0 = m.force_from_torques(q0)
+    z = np.concatenate([phi, F0])
+    return mdl._newton(lambda zz: mdl._fast_kkt(zz, m.params, target), mdl._fast_kkt, z, m.joint_limits, 1e-12,
+                       50, kernels.MAX_STEP, None)
+
+
+@pytest.mark.parametrize("name", CHAINS)
+def test_kernel_solutions_are_equilibria_with_their_energy_tip_and_reduced_hessian(name):
+    m = CHAINS[name]
+    mdl = model(m.n)
+    assert mdl.kernel is not None and mdl.kernel[0].mode == "compiled"
+    checked = 0
+    for dx, dy in [(0.05, 0.0), (0.4, 0.2), (1.2, -0.5)]:
+        target = m.target(dx, dy)
+        for s in seeds(m, dx, dy):
+            res = mdl.newton_kkt(m.params, m.joint_limits, target, s.q)
+            if not res.success or res.reduced_hessian is None:
+                continue
+            checked += 1
+            assert m.equilibrium_residual(res.q, res.force, target) < 1e-10
+            assert res.energy == pytest.approx(m.energy(res.q), rel=1e-12, abs=1e-12)
+            np.testing.assert_allclose(res.tip, m.tip(res.q), atol=1e-12)
+            R_qr = reduced_hessian(m, res.q, res.force, constrained=True)
+            assert res.reduced_hessian.shape == R_qr.shape == (m.n - 2, m.n - 2)
+            if m.n > 2:
+                np.testing.assert_allclose(np.linalg.eigvalsh(res.reduced_hessian), np.linalg.eigvalsh(R_qr),
+                                           atol=1e-9 * max(1.0, np.abs(R_qr).max()))
+    assert checked >= 6
+
+
+@pytest.mark.parametrize("name", ["paper", "n6 non-uniform"])
+def test_kernel_newton_equals_python_newton_from_nearby_starts(name):
+    """Started near an equilibrium (a warm start), both methods converge to it. (From far seeds the
+    damped methods may settle on different stationary points: their line searches differ.)"""
+    m = CHAINS[name]
+    mdl = model(m.n)
+    rng = np.random.default_rng(7)
+    agree = 0
+    for dx, dy in [(0.1, 0.0), (0.7, 0.3)]:
+        target = m.target(dx, dy)
+        for s in seeds(m, dx, dy):
+            p0 = _python_newton(m, target, s.q)
+            if not p0.success:
+                continue
+            q0 = p0.q + 0.02 * rng.standard_normal(m.n)
+            k = mdl.newton_kkt(m.params, m.joint_limits, target, q0)
+            p = _python_newton(m, target, q0)
+            assert k.success and p.success and k.reduced_hessian is not None
+            np.testing.assert_allclose(k.q, p.q, atol=1e-9)
+            np.testing.assert_allclose(k.force, p.force, atol=1e-9)
+            np.testing.assert_allclose(k.q, p0.q, atol=1e-8)
+            agree += 1
+    assert agree >= 10
+
+
+def test_seed_batch_equals_single_starts():
+    m = CHAINS["paper"]
+    mdl = model(4)
+    target = m.target(0.6, 0.1)
+    starts = [s.q for s in seeds(m, 0.6, 0.1)]
+    many = mdl.newton_kkt_many(m.params, m.joint_limits, target, starts)
+    for q0, r in zip(starts, many):
+        one = mdl.newton_kkt(m.params, m.joint_limits, target, q0)
+        assert r.success == one.success
+        if r.success:
+            np.testing.assert_allclose(r.q, one.q, atol=1e-9)
+
+
+def test_continuation_kernel_matches_pointwise_solves_and_reference_model():
+    m = CHAINS["paper"]
+    ref = Chain.uniform(4, 1.0, 1.0, 1.0, 1.0)
+    eq = to.solve_equilibrium(m, 0.3)
+    dxs = np.linspace(0.3, 0.8, 200)
+    targets = np.column_stack([m.straight_length - dxs, 0.1 * np.sin(dxs)])
+    c = model(4).batch_continue(m.params, targets, np.concatenate([np.cumsum(eq.q), eq.force]))
+    assert c.reduced_hessian is not None and np.all(c.residual < 1e-10)
+    Q = np.diff(np.hstack([np.zeros((len(dxs), 1)), c.Z[:, :4]]), axis=1)
+    for i in (0, 57, 199):
+        qr, Fr, ok = ref.newton_kkt(targets[i], Q[i], c.Z[i, 4:])
+        assert ok
+        np.testing.assert_allclose(Q[i], qr, atol=1e-9)
+        np.testing.assert_allclose(c.Z[i, 4:], Fr, atol=1e-9)
+        assert c.energy[i] == pytest.approx(ref.energy(Q[i]), rel=1e-12)
+
+
+def test_inertia_of_reduced_closed_form_matches_eigvalsh():
+    rng = np.random.default_rng(3)
+    cases = [rng.standard_normal((2, 2)) for _ in range(200)]
+    cases += [np.diag([1e8, 1e-8]), np.diag([1e-12, -3.0]), np.array([[1.0, 1.0], [1.0, 1.0]]), np.zeros((2, 2))]
+    for A in cases:
+        R = (A + A.T) / 2
+        w = np.linalg.eigvalsh(R)
+        got = inertia_of_reduced(R)
+        np.testing.assert_allclose(got.eigenvalues, w, atol=1e-12 * max(1.0, np.abs(w).max()), rtol=1e-10)
+        tol = 1e-9 * max(1.0, np.abs(w).max())
+        assert got.morse_index == int(np.sum(w < -tol))
+        assert got.degenerate == bool(np.any(np.abs(w) <= tol))
+
+
+_CHILD = textwrap.dedent("""
+    import json, sys, warnings
+    import numpy as np
+    warnings.simplefilter("always")
+    with warnings.catch_warnings(record=True) as caught:
+        import tensegrity_opt as to
+        from tensegrity_opt.solvers import model
+        m = to.Manipulator.uniform(4)
+        out = [to.solve_equilibrium(m, dx, dy).q.tolist() for dx, dy in [(0.1, 0.0), (0.9, 0.4)]]
+        mode = model(4).kernel[0].mode
+    print(json.dumps({"q": out, "mode": mode, "warnings": [str(w.message) for w in caught]}))
+""")
+
+
+def _child(tmp_path, **env):
+    e = {**os.environ, "TENSEGRITY_CACHE_DIR": str(tmp_path / "cache"), **env}
+    r = subprocess.run([sys.executable, "-c", _CHILD], env=e, capture_output=True, text=True, timeout=300)
+    assert r.returncode == 0, r.stderr
+    return json.loads(r.stdout.strip().splitlines()[-1])
+
+
+def test_compiled_cached_and_virtual_machine_give_the_same_answers(tmp_path):
+    first = _child(tmp_path)
+    assert first["mode"] == "compiled" and not first["warnings"]
+    libs = sorted((tmp_path / "cache").glob("*.so"))
+    assert len(libs) == 1
+    stamp = libs[0].stat().st_mtime_ns
+    second = _child(tmp_path)                            # loads the cached library, compiles nothing
+    assert second["mode"] == "compiled"
+    assert sorted((tmp_path / "cache").glob("*")) == libs and libs[0].stat().st_mtime_ns == stamp
+    vm = _child(tmp_path, TENSEGRITY_COMPILE="0")
+    assert vm["mode"] == "virtual machine" and not vm["warnings"]
+    np.testing.assert_allclose(np.array(vm["q"]), np.array(first["q"]), atol=1e-10)
+    np.testing.assert_allclose(np.array(second["q"]), np.array(first["q"]), atol=0)
+
+
+def test_a_failing_compiler_warns_and_falls_back_to_the_virtual_machine(tmp_path):
+    broken = _child(tmp_path, CC="false")
+    assert broken["mode"] == "virtual machine"
+    assert any("compiling the Newton kernels" in w for w in broken["warnings"])
+    assert not (tmp_path / "cache").exists() or not list((tmp_path / "cache").glob("*.so"))
+    reference = [to.solve_equilibrium(CHAINS["paper"], dx, dy).q for dx, dy in [(0.1, 0.0), (0.9, 0.4)]]
+    np.testing.assert_allclose(np.array(broken["q"]), np.array(reference), atol=1e-10)
+
+
+def test_kernels_exist_only_for_short_chains():
+    assert model(kernels.KERNEL_MAX + 1).kernel is None
+    with pytest.raises(ValueError):
+        kernels.build(1, None)
