@@ -11,9 +11,10 @@ Kernels (``n <= KERNEL_MAX`` segments)
 --------------------------------------
 ``newton``
     ``ITER`` damped Newton iterations on the KKT system of ``min E`` s.t. ``tip = target``
-    from ``(phi0, F0)`` (``F0`` from eq. (8) when ``use_F0 = 0``), then the energy, tip and
+    from ``(q0, F0)`` (``F0`` from eq. (8) when ``use_F0 = 0``), then the energy, tip and
     ``Z^T H Z`` (``Z`` an orthonormal basis of the null space of the tip Jacobian, by two
-    Householder reflections) at the last iterate.
+    Householder reflections) at the last iterate, its joint angles ``q`` and
+    ``max(|q| - (pi - 2 beta))`` (non-negative on or past a joint's range bound).
 ``seeds``
     ``newton`` with ``SEED_ITER`` iterations over ``SEEDS`` starts at once (a global search's seeds).
 ``continuation``
@@ -49,6 +50,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import casadi as ca
+import numpy as np
 
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir", "compiler"]
 
@@ -163,9 +165,15 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
     phi0, F0, use, pm, tm, th = (ca.MX.sym("phi0", n), ca.MX.sym("F0", 2), ca.MX.sym("use_F0"),
                                  ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2), ca.MX.sym("thresh"))
     Fs = ca.if_else(use, F0, ls(phi0, pm))
-    newton = ca.Function("newton", [phi0, F0, use, pm, tm, th], solve_it(ca.vertcat(phi0, Fs), pm, tm, th),
-                         ["phi0", "F0", "use_F0", "p", "target", "thresh"],
-                         ["z", "norm", "iters", "E", "tip", "R"])
+    q0 = ca.MX.sym("q0", n)
+    phi_q0 = ca.cumsum(q0)
+    outs = solve_it(ca.vertcat(phi_q0, ca.if_else(use, F0, ls(phi_q0, pm))), pm, tm, th)
+    phi_f = outs[0][:n]
+    q_f = phi_f - ca.vertcat(0, phi_f[:n - 1])
+    limits = np.pi - 2 * ca.atan2(pm[:n], pm[n:2 * n])               # pi - 2 beta per joint
+    newton = ca.Function("newton", [q0, F0, use, pm, tm, th], [*outs, q_f, ca.mmax(ca.fabs(q_f) - limits)],
+                         ["q0", "F0", "use_F0", "p", "target", "thresh"],
+                         ["z", "norm", "iters", "E", "tip", "R", "q", "margin"])
 
     solve_s = run(SEED_ITER)
     newton_s = ca.Function("newton_s", [phi0, F0, use, pm, tm, th], solve_s(ca.vertcat(phi0, Fs), pm, tm, th))

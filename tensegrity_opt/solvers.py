@@ -1,10 +1,12 @@
-"""CasADi problem formulations and local solvers (the only module that touches CasADi).
+"""CasADi problem formulations and local solvers (with :mod:`.kernels` and :mod:`.design_solvers`,
+the only modules that touch CasADi).
 
 What is solved lives in the public modules (``equilibrium``, ``equilibria``,
 ``curves`` ...); this module says *how*: symbolic model in absolute link angles
 ``phi`` (energy Hessian tridiagonal, constraint Hessians diagonal, so cost grows
 about linearly in ``n``), IPOPT for minimisation, a damped Newton method on the
-KKT system for every stationary point and for warm-started local corrections.
+KKT system for every stationary point and for warm-started local corrections — for
+chains of up to ``kernels.KERNEL_MAX`` segments run as generated C (:mod:`.kernels`).
 
 Every CasADi object is built once per ``(n, problem kind)`` with all numbers
 (geometry, stiffness, preloads, loads) passed as parameters, then cached.
@@ -154,12 +156,13 @@ class _Fast:
             self.buf.set_res(i, memoryview(a))
 
     def __call__(self, *args) -> list[np.ndarray]:
-        held = self._held
-        for i, (dst, src) in enumerate(zip(self.ins, args)):
+        held, ins = self._held, self.ins
+        for i in range(len(args)):
+            src = args[i]
             if src is held[i]:
                 continue                # the same read-only array as last time: already in place
-            dst[:] = src
-            held[i] = src if isinstance(src, np.ndarray) and not src.flags.writeable else None
+            ins[i][:] = src
+            held[i] = src if type(src) is np.ndarray and not src.flags.writeable else None
         self.trigger()
         return self.outs
 
@@ -444,11 +447,11 @@ class _Model:
         it did not converge.
         """
         self._set_scale(params)
-        phi = self.phi(np.asarray(q0, dtype=float))
         if max_step == _kernels.MAX_STEP and self.kernel is not None:
-            res = self._kernel_newton(params, limits, target, phi, F0, tol * self._scale, max_iter)
+            res = self._kernel_newton(params, limits, target, q0, F0, tol * self._scale, max_iter)
             if res is not None:
                 return res
+        phi = self.phi(np.asarray(q0, dtype=float))
         if F0 is None:
             # eq. (8): F = (J J^T)^-1 J grad E, a 2 x 2 system solved by hand (a start only)
             if self.dense:
@@ -469,28 +472,22 @@ class _Model:
                               None if self.dense else self._fast_kkt_rb, (params, target), z, limits, tol,
                               max_iter, max_step, None)
 
-    def _kernel_newton(self, params, limits, target, phi, F0, thresh, max_iter) -> LocalResult | None:
-        """The compiled damped Newton method from ``(phi, F0)``; ``None`` when it did not converge."""
+    def _kernel_newton(self, params, limits, target, q0, F0, thresh, max_iter) -> LocalResult | None:
+        """The compiled damped Newton method from ``(q0, F0)``; ``None`` when it did not converge."""
         fast = self.kernel[1]
         n = self.n
         use = F0 is not None
-        out = fast(phi, F0 if use else _ZERO2, 1.0 if use else 0.0, params, target, thresh)
+        out = fast(q0, F0 if use else _ZERO2, 1.0 if use else 0.0, params, target, thresh)
         its, calls = int(out[2][0]), 1
         while not out[1][0] <= thresh:
             if not np.isfinite(out[1][0]) or calls * _kernels.ITER >= max_iter:
                 return None
-            z = out[0]
-            out = fast(z[:n], z[n:], 1.0, params, target, thresh)      # inputs are copied first
+            out = fast(out[6], out[0][n:], 1.0, params, target, thresh)     # inputs are copied first
             its, calls = its + int(out[2][0]), calls + 1
-        return self._kernel_result(out[0], out[3][0], out[4], out[5], its, limits)
-
-    def _kernel_result(self, z, E, tip, R, its, limits) -> LocalResult:
-        n = self.n
-        q = z[:n].copy()
-        q[1:] -= z[:n - 1]
+        m = n - 2
         # R is Z^T H Z (symmetric): its column-major nonzeros read row-major give the same matrix
-        return LocalResult(q, z[n:n + 2].copy(), True, "Newton_Converged", its, bool((np.abs(q) >= limits).any()),
-                           float(E), tip.copy(), R.reshape(n - 2, n - 2).copy())
+        return LocalResult(out[6].copy(), out[0][n:].copy(), True, "Newton_Converged", its, bool(out[7][0] >= 0.0),
+                           float(out[3][0]), out[4].copy(), out[5].reshape(m, m).copy())
 
     def newton_kkt_many(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
                         starts: list[np.ndarray]) -> list[LocalResult]:

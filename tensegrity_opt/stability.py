@@ -124,7 +124,9 @@ def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> Inertia:
         mean, rad = 0.5 * (a + d), math.hypot(0.5 * (a - d), b)
         big = mean + rad if mean >= 0 else mean - rad
         small = (a * d - b * b) / big if big != 0.0 else 0.0
-        return _inertia_of_list([small, big] if small <= big else [big, small], rel_tol)
+        lo, hi = (small, big) if small <= big else (big, small)
+        tol = rel_tol * max(1.0, -lo, hi)
+        return Inertia(np.array((lo, hi)), (lo < -tol) + (hi < -tol), -tol <= lo <= tol or -tol <= hi <= tol, 2)
     return _inertia_of_eigenvalues(np.linalg.eigvalsh(R), rel_tol, dim)
 
 
