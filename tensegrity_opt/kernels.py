@@ -62,8 +62,9 @@ KERNEL_MAX = 8
 ITER = 3
 #: Newton iterations per start in ``seeds`` (a global search's seeds converge in 4-8).
 SEED_ITER = 8
-#: Newton iterations per target in ``continuation`` (neighbouring targets converge in 2-4).
-CONT_ITER = 5
+#: Newton iterations per target in ``continuation`` (neighbouring targets converge in 2-3; with 4 no
+#: continuation measured broke off early, with 3 some did and were resumed by the Python method).
+CONT_ITER = 4
 #: Step lengths tried per iteration: a0, a0/2, a0/4, a0/8.
 TRIALS = 4
 #: Largest change of any absolute angle in one step (rad), as in the Python Newton method.

@@ -53,17 +53,17 @@ def shape_label(q, rel_tol: float = 1e-6) -> str:
 def shape_labels(Q, rel_tol: float = 1e-6) -> list[str]:
     """:func:`shape_label` of every row of ``Q`` (m, n), vectorised."""
     Q = np.asarray(Q, dtype=float)
+    if Q.shape[0] == 0:
+        return []
     scale = np.abs(Q).max(axis=1, keepdims=True)
     sg = np.where(np.abs(Q) > rel_tol * scale, np.sign(Q), 0.0)
-    out = []
-    for row, sc in zip(sg, scale[:, 0]):
-        if not sc > 0.0:
-            out.append("I")
-            continue
-        nz = row[row != 0.0]
-        s = int(np.count_nonzero(nz[1:] != nz[:-1]))
-        out.append(_NAMES.get(s, f"W{s}"))
-    return out
+    # carry the last nonzero sign over zeros, then count the changes between nonzero neighbours
+    idx = np.where(sg != 0.0, np.arange(sg.shape[1]), 0)
+    np.maximum.accumulate(idx, axis=1, out=idx)
+    filled = np.take_along_axis(sg, idx, axis=1)
+    changes = np.count_nonzero((filled[:, 1:] != filled[:, :-1]) & (filled[:, :-1] != 0.0), axis=1)
+    names = [_NAMES.get(c, f"W{c}") for c in range(int(changes.max(initial=0)) + 1)]
+    return ["I" if not sc > 0.0 else names[c] for c, sc in zip(changes.tolist(), scale[:, 0].tolist())]
 
 
 _CHARS = np.array([b"+", b"0", b"-"], dtype="S1")

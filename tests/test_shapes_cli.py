@@ -57,3 +57,16 @@ def test_console_script_runs():
     r = subprocess.run([sys.executable, "-m", "tensegrity_opt.cli", "buckling"], capture_output=True, text=True,
                        check=True)
     assert "critical force Fx0 = -0.572793" in r.stdout
+
+
+def test_vectorised_shape_labels_equal_the_row_by_row_labels():
+    import numpy as np
+
+    from tensegrity_opt.shapes import shape_label, shape_labels
+
+    rng = np.random.default_rng(0)
+    Q = rng.standard_normal((3000, 7)) * (rng.random((3000, 7)) > 0.3)
+    Q[::11] = 0.0
+    Q[5] = [0.0, 0.0, 1e-9, 0.0, 2.0, -1.0, 0.0]          # a tiny angle counts as zero
+    assert shape_labels(Q) == [shape_label(q) for q in Q]
+    assert shape_labels(np.zeros((0, 4))) == []
