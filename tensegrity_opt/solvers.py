@@ -493,8 +493,9 @@ class _Model:
                         starts: list[np.ndarray]) -> list[LocalResult]:
         """:meth:`newton_kkt` from each start (force from eq. (8)); the seeds of a global search.
 
-        With kernels, ``kernels.SEEDS`` starts per compiled call; a start that did not converge
-        there is run again by :meth:`newton_kkt` (and so by the Python method if need be).
+        With kernels, ``kernels.SEEDS`` starts per compiled call (``kernels.SEED_ITER`` iterations);
+        a start not converged there goes on from its iterate with the ``newton`` kernel and, if that
+        fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
         """
         kern = self.kernel
         if kern is None or len(starts) == 0:
@@ -525,8 +526,13 @@ class _Model:
                 y = Y[j]
                 results.append(LocalResult(Q[j], Z[j, n:], True, "Newton_Converged", int(y[1]), on_bound[j],
                                            float(y[2]), y[3:5], y[5:].reshape(m, m).T))
-            else:
-                results.append(self.newton_kkt(params, limits, target, Q0[j]))
+            else:               # go on from the iterate; failing that, everything again from the start
+                r = None
+                if np.all(np.isfinite(Z[j])):
+                    r = self._kernel_newton(params, limits, target, Q[j], Z[j, n:], thresh, 50 - _kernels.SEED_ITER)
+                    if r is not None:
+                        r.iterations += _kernels.SEED_ITER
+                results.append(r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
         return results
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
