@@ -78,6 +78,15 @@ _lock = threading.Lock()
 _warned = False
 
 
+def _warn(why: str) -> None:
+    """One warning per process: the kernels run in CasADi's virtual machine, and why."""
+    global _warned
+    if not _warned:
+        _warned = True
+        warnings.warn(f"tensegrity_opt: {why}; the Newton kernels run in CasADi's virtual machine instead "
+                      "(about 4x slower, same results)", RuntimeWarning, stacklevel=5)
+
+
 def cache_dir() -> Path:
     """Directory of the compiled kernels (``TENSEGRITY_CACHE_DIR`` or the user's cache directory)."""
     env = os.environ.get("TENSEGRITY_CACHE_DIR")
@@ -93,7 +102,10 @@ def compiler() -> str | None:
         return None
     cc = os.environ.get("CC")
     if cc:
-        return shutil.which(cc)
+        path = shutil.which(cc)
+        if path is None:
+            _warn(f"the C compiler CC={cc!r} was not found")
+        return path
     for name in ("cc", "gcc", "clang"):
         path = shutil.which(name)
         if path:
@@ -201,7 +213,6 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
 # ----------------------------------------------------------------------------- compile and load
 def _compile(n: int, funcs: dict[str, ca.Function]) -> str | None:
     """Generate C for ``funcs``, compile it into the cache (once per machine); the library's path."""
-    global _warned
     cc = compiler()
     if cc is None:
         return None
@@ -226,12 +237,8 @@ def _compile(n: int, funcs: dict[str, ca.Function]) -> str | None:
             shutil.copyfile(tmp_so, staged)
             os.replace(staged, target)
         except (OSError, subprocess.SubprocessError) as exc:
-            if not _warned:
-                _warned = True
-                detail = (getattr(exc, "stderr", None) or b"").decode(errors="replace")[:300]
-                warnings.warn(f"tensegrity_opt: compiling the Newton kernels with {cc} failed ({exc} {detail}); "
-                              "they run in CasADi's virtual machine instead (about 4x slower)",
-                              RuntimeWarning, stacklevel=4)
+            detail = (getattr(exc, "stderr", None) or b"").decode(errors="replace")[:300]
+            _warn(f"compiling the Newton kernels with {cc} failed ({exc} {detail})")
             return None
     return str(target)
 
@@ -267,6 +274,11 @@ def build(n: int, sym) -> Kernels:
             funcs = _graphs(n, sym)
             got = _loaded[n] = _compile(n, funcs) or funcs
     if isinstance(got, str):
-        return Kernels(n, *(ca.external(k, got) for k in _NAMES), "compiled")
+        try:
+            return Kernels(n, *(ca.external(k, got) for k in _NAMES), "compiled")
+        except RuntimeError as exc:                 # an unloadable library: never fatal
+            _warn(f"loading {got} failed ({exc})")
+            with _lock:
+                _loaded[n] = _graphs(n, sym)
     funcs = _graphs(n, sym)          # this thread's own instances
     return Kernels(n, funcs["newton"].expand(), funcs["seeds"], funcs["continuation"], "virtual machine")

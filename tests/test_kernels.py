@@ -190,3 +190,15 @@ def test_kernels_exist_only_for_short_chains():
     assert model(kernels.KERNEL_MAX + 1).kernel is None
     with pytest.raises(ValueError):
         kernels.build(1, None)
+
+
+@pytest.mark.skipif(kernels.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
+def test_a_corrupt_cached_library_warns_and_falls_back(tmp_path):
+    _child(tmp_path)
+    (lib,) = (tmp_path / "cache").glob("*.so")
+    lib.write_bytes(b"not a shared library")
+    again = _child(tmp_path)
+    assert again["mode"] == "virtual machine"
+    assert any("loading" in w and "failed" in w for w in again["warnings"])
+    reference = [to.solve_equilibrium(CHAINS["paper"], dx, dy).q for dx, dy in [(0.1, 0.0), (0.9, 0.4)]]
+    np.testing.assert_allclose(np.array(again["q"]), np.array(reference), atol=1e-10)
