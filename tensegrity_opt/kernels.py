@@ -134,23 +134,22 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
     phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = sym
     kkt_jac = ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])
     resf = ca.Function("res", [z, p, tgt], [res])
-    thresh = ca.SX.sym("thresh")
 
     # one damped Newton iteration; also reports the residual norm before it
-    r0 = res
-    nrm0 = ca.norm_2(r0)
-    step = ca.solve(kkt_jac, -r0)
+    nrm0 = ca.norm_2(res)
+    step = ca.solve(kkt_jac, -res)
     dmax = ca.mmax(ca.fabs(step[:n]))
     a0 = ca.fmin(1.0, MAX_STEP / ca.fmax(dmax, 1e-300))
-    z_new, ok_any = z, 0
-    for j in reversed(range(TRIALS)):                   # the first (longest) accepted step wins
-        al = a0 * 0.5 ** j
-        zt = z + al * step
-        nt = ca.norm_2(resf(zt, p, tgt))
-        ok = nt <= (1 - 1e-4 * al) * nrm0
-        z_new = ca.if_else(ok, zt, z_new)
     pt = ca.vertcat(p, tgt)
-    iterate = ca.Function("iterate", [z, pt], [z_new, nrm0])
+
+    def iteration(trials: int) -> ca.Function:
+        z_new = z
+        for j in reversed(range(trials)):               # the first (longest) accepted step wins
+            al = a0 * 0.5 ** j
+            zt = z + al * step
+            ok = ca.norm_2(resf(zt, p, tgt)) <= (1 - 1e-4 * al) * nrm0
+            z_new = ca.if_else(ok, zt, z_new)
+        return ca.Function(f"iterate{trials}", [z, pt], [z_new, nrm0])
 
     # outputs at a point: residual norm, energy, tip, reduced Hessian (absolute angles)
     m = n - 2
@@ -165,8 +164,8 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
     F_ls = ca.solve(J @ J.T, J @ gradE)
     ls = ca.Function("ls", [phi, p], [ca.substitute(F_ls, F, ca.DM.zeros(2))])
 
-    def run(iters: int):
-        acc = iterate.mapaccum("iterations", iters)
+    def run(iters: int, trials: int = TRIALS):
+        acc = iteration(trials).mapaccum("iterations", iters)
         zm, pm, tm, th = ca.MX.sym("z", n + 2), ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2), ca.MX.sym("th")
         Z, N0 = acc(zm, ca.repmat(ca.vertcat(pm, tm), 1, iters))
         zf = Z[:, -1]
