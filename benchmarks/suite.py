@@ -581,6 +581,19 @@ def case7_8(cfg: Config) -> list[Row]:
         rows.append(Row("7", "service /v1/equilibrium errors", 4, float(E["errors"]), "errors", "GET /healthz errors",
                         float(H["errors"]), target="0", met=E["errors"] == 0,
                         notes=[f"statuses: /v1/equilibrium {E['statuses']}, /healthz {H['statuses']}"]))
+        # the control-loop request: local solve from the previous answer (information, not a target)
+        q0 = to.solve_equilibrium(to.Manipulator.uniform(4), 0.1).q.tolist()
+        local = [hl.json_body({"manipulator": PAPER, "dx": 0.1 + 1e-5 * j, "dy": 0.0, "q0": q0, "local": True})
+                 for j in range(1000)]
+        L = hl.load_phase(url, lambda i, k: ("POST", "/v1/equilibrium", local[(i * 31 + k) % 1000]), 32,
+                          cfg.c7_duration).summary()
+        rows.append(Row("7", "service /v1/equilibrium local=true (control step)", 4, L["throughput_rps"], "req/s",
+                        "GET /healthz (same client, same run)", H["throughput_rps"],
+                        ratio=H["throughput_rps"] / L["throughput_rps"] if L["throughput_rps"] else float("inf"),
+                        target="(info)", met=None,
+                        notes=[f"local=true with q0 = the solution at dx = 0.1, targets dx in [0.1, 0.11): p50 "
+                               f"{L['p50_ms']:.1f} ms, p99 {L['p99_ms']:.1f} ms, {L['requests']} requests, "
+                               f"statuses {L['statuses']}"], extra={"local": L}))
         # case 8: a 1000-target trajectory in one request
         s = np.linspace(0.0, 1.0, 1000)
         traj = np.column_stack([0.05 + 1.5 * s, 0.3 * np.sin(2 * np.pi * s)])

@@ -104,7 +104,7 @@ def warmup_job() -> None:
 
 def equilibrium_job(req: s.EquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
-    return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0)))
+    return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local))
 
 
 def equilibrium_inline(req: s.EquilibriumRequest, *, max_segments: int) -> dict[str, Any] | None:
@@ -112,13 +112,14 @@ def equilibrium_inline(req: s.EquilibriumRequest, *, max_segments: int) -> dict[
     does not settle the request (long chain, bistable segments, no stable equilibrium found).
 
     For chains of monotonic segments ``solve_equilibrium(method="auto")`` returns exactly the
-    Newton-only answer whenever that finds one, so the result does not depend on the path.
+    Newton-only answer whenever that finds one (and with ``local`` the same Newton solve before its
+    IPOPT fallback), so the result does not depend on the path.
     """
     m = build_manipulator(req.manipulator)
     if m.n > max_segments or not m.monotonic:
         return None
     try:
-        eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), method="newton")
+        eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local, method="newton")
     except (to.NoEquilibriumError, to.SolverError):
         return None
     return equilibrium_out(eq)

@@ -160,6 +160,9 @@ class EquilibriumRequest(BaseModel):
     q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS,
                                    description="optional nearby configuration (rad, one angle per joint) "
                                                "for continuation; it competes with the global search")
+    local: bool = Field(False, description="only the local solve from `q0` (required): the equilibrium on the "
+                                           "branch through `q0`, whatever its stability (read `stable`) — for "
+                                           "control loops sending their previous answer; no global search")
 
 
 class ForceEquilibriumRequest(BaseModel):

@@ -227,7 +227,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         (slower; the methods are compared in the tests). ``"newton"``: the Newton part of
         ``"auto"`` alone — its work is bounded (at most 50 iterations per seed) and it raises
         :class:`NoEquilibriumError` where ``"auto"`` would go on with IPOPT; for monotonic chains
-        it returns what ``"auto"`` returns whenever it returns.
+        it returns what ``"auto"`` returns whenever it returns. With ``local=True`` the methods
+        differ only in the fallback: ``"newton"`` raises :class:`SolverError` where the others
+        run IPOPT from ``q0``.
     n_random, max_modes : int, optional
         Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
         for chains of up to 64 segments; 0 and 2 for longer ones, whose least-energy
@@ -257,17 +259,20 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         return straight_equilibrium(m)
     if m.n == 1:
         return one_segment_equilibrium(m, target)
+    if method not in ("auto", "ipopt", "newton"):
+        raise InvalidParameterError(f"method must be 'auto', 'ipopt' or 'newton', got {method!r}", field="method")
     if local:
         res = local_equilibrium(m, target, q0)
         if not is_equilibrium(m, res, target, check_residual=False):
+            if method == "newton":
+                raise SolverError(f"Newton from q0 did not converge for dx={dx:g}, dy={dy:g}; method='auto' "
+                                  "adds IPOPT", status=res.status)
             fallback = local_equilibrium(m, target, q0, minimize=True)
             if not is_equilibrium(m, fallback, target):
                 raise SolverError(f"the local solve from q0 did not converge for dx={dx:g}, dy={dy:g}",
                                   status=f"newton: {res.status}; ipopt: {fallback.status}")
             res = fallback
         return make_equilibrium(m, res, constrained=True)
-    if method not in ("auto", "ipopt", "newton"):
-        raise InvalidParameterError(f"method must be 'auto', 'ipopt' or 'newton', got {method!r}", field="method")
     short = m.n <= 64
     n_random = (8 if short else 0) if n_random is None else int(n_random)
     max_modes = (6 if short else 2) if max_modes is None else int(max_modes)

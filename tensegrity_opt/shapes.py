@@ -22,6 +22,8 @@ exactly: ``-+++`` / ``+---`` are U, ``-+-+`` / ``+-+-`` are Z and
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 __all__ = ["sign_string", "shape_label"]
@@ -29,8 +31,22 @@ __all__ = ["sign_string", "shape_label"]
 _NAMES = {0: "C", 1: "U", 2: "ZU", 3: "Z"}
 
 
+def _small(q, rel_tol: float) -> tuple[list[float], float] | None:
+    """``(values, threshold)`` for a short finite nonzero ``q`` handled with plain floats (several times
+    faster than numpy for a few joints), else ``None``."""
+    vals = np.asarray(q, dtype=float).ravel().tolist()
+    if not 0 < len(vals) <= 32 or not math.isfinite(sum(vals)):
+        return None
+    scale = max(abs(v) for v in vals)
+    return (vals, rel_tol * scale) if scale > 0.0 else None
+
+
 def sign_string(q, rel_tol: float = 1e-6) -> str:
     """``"+"``/``"-"``/``"0"`` per joint angle."""
+    small = _small(q, rel_tol)
+    if small is not None:
+        vals, t = small
+        return "".join("0" if abs(v) <= t else ("+" if v > 0 else "-") for v in vals)
     q = np.asarray(q, dtype=float).ravel()
     scale = float(np.abs(q).max()) if q.size else 0.0
     if scale == 0.0:
@@ -41,6 +57,12 @@ def sign_string(q, rel_tol: float = 1e-6) -> str:
 
 def shape_label(q, rel_tol: float = 1e-6) -> str:
     """The documented label (``I``, ``C``, ``U``, ``ZU``, ``Z``, ``W<s>``) of a configuration."""
+    small = _small(q, rel_tol)
+    if small is not None:
+        vals, t = small
+        pos = [v > 0 for v in vals if abs(v) > t]
+        s = sum(a != b for a, b in zip(pos, pos[1:]))
+        return _NAMES.get(s, f"W{s}")
     q = np.asarray(q, dtype=float).ravel()
     scale = float(np.abs(q).max()) if q.size else 0.0
     if scale == 0.0:

@@ -592,3 +592,20 @@ def test_inline_fast_path_answers_like_the_workers():
             assert a.status_code == b.status_code == 200, (a.text, b.text)
             assert a.json() == b.json()
         assert [r.manipulator.a for r in submitted] == [0.6]      # only the bistable chain used a worker
+
+
+def test_local_equilibrium_follows_the_branch_through_q0(client):
+    q0 = to.solve_equilibrium(to.Manipulator.uniform(4), 0.1).q.tolist()
+    body = {"manipulator": PAPER, "dx": 0.101, "dy": 0.002, "q0": q0, "local": True}
+    r = client.post("/v1/equilibrium", json=body)
+    assert r.status_code == 200, r.text
+    check_equilibrium(r.json(), to.solve_equilibrium(to.Manipulator.uniform(4), 0.101, 0.002, q0=q0, local=True))
+    with make_client(inline_max_segments=0) as workers:              # the worker path answers the same
+        assert workers.post("/v1/equilibrium", json=body).json() == r.json()
+    # from a saddle the local solve stays on the saddle's branch (unstable), unlike the global search
+    saddle = next(e for e in to.find_equilibria(to.Manipulator.uniform(4), 0.2) if e.kind == "saddle")
+    r = client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.201, "q0": saddle.q.tolist(),
+                                             "local": True})
+    assert r.status_code == 200 and r.json()["kind"] == "saddle" and r.json()["stable"] is False
+    check_error(client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.1, "local": True}),
+                422, "invalid_parameter", "q0")

@@ -23,7 +23,9 @@ _M = ex.PAPER_CHAIN
     summary="Least-energy stable equilibrium for a tip deflection",
     description="The least-energy **stable** equilibrium with the tip held at `(2 sum(b) - dx, dy)` "
                 "(`tensegrity_opt.solve_equilibrium`). `q0` (optional) is a nearby configuration, e.g. the "
-                "previous answer of a control loop; it competes with the global search.",
+                "previous answer of a control loop; it competes with the global search. With `local: true` "
+                "only the local solve from `q0` runs: the equilibrium on the branch through `q0` (read "
+                "`stable`), what a control loop following its arm wants, much cheaper than the search.",
     responses=solve_responses(ex.EQUILIBRIUM, "unreachable_target", "solver_failed", "no_equilibrium"))
 async def solve_equilibrium(
     request: Request,
@@ -31,7 +33,10 @@ async def solve_equilibrium(
         "paper": {"summary": "the paper's chain, dx = 0.1", "value": {"manipulator": _M, "dx": 0.1, "dy": 0.0}},
         "segments": {"summary": "segments listed, with q0", "value": {
             "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}] * 4}, "dx": 0.1, "dy": 0.02,
-            "q0": [0.17, -0.07, -0.24, -0.13]}}})],
+            "q0": [0.17, -0.07, -0.24, -0.13]}},
+        "control_step": {"summary": "control loop: the branch through the previous answer", "value": {
+            "manipulator": _M, "dx": 0.101, "dy": 0.0, "q0": [0.17815, -0.07659, -0.24505, -0.13118],
+            "local": True}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
