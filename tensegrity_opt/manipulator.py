@@ -63,6 +63,15 @@ class Manipulator:
                     f"segments[{i}] must be a Segment, got {type(s).__name__}", field=f"segments[{i}]")
         object.__setattr__(self, "segments", segs)
 
+    def __hash__(self) -> int:
+        # computed once: hashing 10^4 segments costs milliseconds, and the caches keyed by the chain
+        # (buckling modes, seed directions) look it up on every solve
+        h = self.__dict__.get("_hash")
+        if h is None:
+            h = hash(self.segments)
+            object.__setattr__(self, "_hash", h)
+        return h
+
     @classmethod
     def uniform(cls, n: int, a: float = 1.0, b: float = 1.0, k: float | tuple[float, float] = 1.0,
                 L0: float | tuple[float, float] = 1.0) -> "Manipulator":

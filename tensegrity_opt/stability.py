@@ -165,10 +165,10 @@ def _sparse_inertia(H, J, rel_tol: float, dim: int) -> Inertia:
     neg = 0
     degenerate = False
     d_prev = 1.0
-    e2 = off * off
-    for i in range(diag.size):          # LDL^T pivots of a tridiagonal matrix (Sylvester)
-        d = diag[i] - (e2[i - 1] / d_prev if i else 0.0)
-        if abs(d) <= tiny:
+    e2 = [0.0] + (off * off).tolist()
+    for a, e in zip(diag.tolist(), e2):   # LDL^T pivots of a tridiagonal matrix (Sylvester), plain floats
+        d = a - e / d_prev
+        if -tiny <= d <= tiny:
             degenerate = True
             d = -tiny if d < 0 else tiny
         if d < 0:
