@@ -211,21 +211,38 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
 
 # ----------------------------------------------------------------------------- compile and load
 def _compile(n: int, funcs: dict[str, ca.Function]) -> str | None:
-    """Generate C for ``funcs``, compile it into the cache (once per machine); the library's path."""
+    """Generate C for ``funcs``, compile it into the cache (once per machine); the library's path, or
+    ``None`` (with one warning) when anything on the way fails — never an error for the caller."""
     cc = compiler()
     if cc is None:
         return None
-    name = f"tensegrity_kernels_n{n}"
+    try:
+        return _compile_with(cc, f"tensegrity_kernels_n{n}", funcs)
+    except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
+        detail = (getattr(exc, "stderr", None) or b"").decode(errors="replace")[:300]
+        _warn(f"compiling the Newton kernels with {cc} failed ({exc} {detail})")
+        return None
+
+
+def _compile_with(cc: str, name: str, funcs: dict[str, ca.Function]) -> str:
     with tempfile.TemporaryDirectory(prefix="tensegrity-kernels-") as tmp:
         cg = ca.CodeGenerator(f"{name}.c", {"with_header": False})
         for f in funcs.values():
             cg.add(f)
         src_path = Path(cg.generate(tmp + os.sep))
-        src = src_path.read_bytes()
-        key = hashlib.sha256(src + " ".join([cc, *_FLAGS, ca.__version__]).encode()).hexdigest()[:16]
-        target = cache_dir() / f"{name}_{key}.so"
+        key = hashlib.sha256(src_path.read_bytes() + " ".join([cc, *_FLAGS, ca.__version__]).encode()).hexdigest()
+        target = cache_dir() / f"{name}_{key[:16]}.so"
         if target.exists():
             return str(target)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        tmp_so = Path(tmp) / "out.so"
+        subprocess.run([cc, *_FLAGS, str(src_path), "-o", str(tmp_so), "-lm"], check=True, capture_output=True,
+                       timeout=300)
+        # atomic: concurrent processes may each compile; readers never see half a file
+        staged = target.with_name(f"{target.name}.{os.getpid()}.{threading.get_ident()}.tmp")
+        shutil.copyfile(tmp_so, staged)
+        os.replace(staged, target)
+        return str(target)
         try:
             target.parent.mkdir(parents=True, exist_ok=True)
             tmp_so = Path(tmp) / "out.so"

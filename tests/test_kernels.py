@@ -202,3 +202,12 @@ def test_a_corrupt_cached_library_warns_and_falls_back(tmp_path):
     assert any("loading" in w and "failed" in w for w in again["warnings"])
     reference = [to.solve_equilibrium(CHAINS["paper"], dx, dy).q for dx, dy in [(0.1, 0.0), (0.9, 0.4)]]
     np.testing.assert_allclose(np.array(again["q"]), np.array(reference), atol=1e-10)
+
+
+@pytest.mark.skipif(kernels.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
+def test_an_unwritable_cache_directory_warns_and_falls_back(tmp_path):
+    blocker = tmp_path / "file"
+    blocker.write_text("a file where the cache directory should be")
+    got = _child(tmp_path, TENSEGRITY_CACHE_DIR=str(blocker / "cache"), TENSEGRITY_COMPILE="1")
+    assert got["mode"] == "virtual machine"
+    assert any("compiling the Newton kernels" in w for w in got["warnings"])
