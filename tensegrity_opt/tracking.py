@@ -14,7 +14,7 @@ started from the previous configuration, to the least-energy stable equilibrium
 >>> eq = tr.solve(0.10)              # first call: global least-energy stable equilibrium
 >>> eq = tr.solve(0.101, 0.002)      # next calls: one warm-started local solve
 >>> round(eq.fx, 4), eq.stable
-(-0.5741, True)
+(-0.5751, True)
 
 A tracker is not thread-safe (it holds one branch); use one per control loop.
 """

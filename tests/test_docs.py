@@ -1,0 +1,14 @@
+"""The examples in the package's docstrings run and print what they say."""
+
+import doctest
+
+import pytest
+
+import tensegrity_opt
+import tensegrity_opt.tracking
+
+
+@pytest.mark.parametrize("module", [tensegrity_opt, tensegrity_opt.tracking])
+def test_docstring_examples(module):
+    result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
+    assert result.attempted > 0 and result.failed == 0
