@@ -449,10 +449,21 @@ class Limits(BaseModel):
     batch_timeout: float
     workers: int
     queue_size: int
+    inline_max_segments: int
     max_body_bytes: int
     max_curve_points: int
     max_grid: int
     max_torque_points: int
+
+
+class KernelsOut(BaseModel):
+    """How the compiled Newton kernels run in this server process (`tensegrity_opt.kernels`)."""
+
+    compiler: str | None = Field(description="the C compiler used; null: none (kernels run in CasADi's VM)")
+    max_segments: int = Field(description="chains up to this long have kernels")
+    compiled: list[int] = Field(description="chain lengths loaded as compiled code so far")
+    virtual_machine: list[int] = Field(description="chain lengths running in CasADi's virtual machine "
+                                                   "(no compiler, or compiling failed: about 4x slower)")
 
 
 class VersionOut(BaseModel):
@@ -462,6 +473,7 @@ class VersionOut(BaseModel):
     api: str
     auth: bool
     limits: Limits
+    kernels: KernelsOut
 
 
 # ---------------------------------------------------------------------------- design and control

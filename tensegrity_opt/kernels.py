@@ -52,7 +52,8 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
-__all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir", "compiler"]
+__all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir", "compiler",
+           "status"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3:
 #: an n = 16 iteration costs ~13 us compiled, no better than LAPACK driven from Python).
@@ -257,6 +258,16 @@ def _compile_with(cc: str, name: str, funcs: dict[str, ca.Function]) -> str:
             _warn(f"compiling the Newton kernels with {cc} failed ({exc} {detail})")
             return None
     return str(target)
+
+
+def status() -> dict[str, object]:
+    """How the kernels run in this process: the compiler, the cache directory, and the chain lengths
+    loaded so far as compiled code or in the virtual machine."""
+    with _lock:
+        loaded = dict(_loaded)
+    return {"compiler": compiler(), "cache_dir": str(cache_dir()), "max_segments": KERNEL_MAX,
+            "compiled": sorted(n for n, v in loaded.items() if isinstance(v, str)),
+            "virtual_machine": sorted(n for n, v in loaded.items() if not isinstance(v, str))}
 
 
 @dataclass

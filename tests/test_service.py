@@ -279,6 +279,12 @@ def test_health_ready_version(client):
     assert r.status_code == 200 and r.json()["status"] == "ready"
     v = client.get("/version").json()
     assert v["version"] == to.__version__ and v["library_version"] == to.__version__
+    from tensegrity_opt import kernels
+    assert v["limits"]["inline_max_segments"] == 8
+    client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.1})      # loads the n = 4 kernels
+    k = client.get("/version").json()["kernels"]
+    assert k["compiler"] == kernels.compiler() and k["max_segments"] == kernels.KERNEL_MAX
+    assert 4 in (k["compiled"] if kernels.compiler() else k["virtual_machine"])
     assert v["limits"]["max_segments"] == 200 and v["limits"]["max_batch"] == 1000
     assert v["auth"] is False
 

@@ -8,6 +8,7 @@ from fastapi import APIRouter, Request
 from starlette.responses import JSONResponse, Response
 
 import tensegrity_opt
+from tensegrity_opt import kernels
 
 from .. import schemas as s
 from ..metrics import CONTENT_TYPE_LATEST
@@ -42,22 +43,27 @@ async def readyz(request: Request) -> Any:
 
 
 @router.get(
-    "/version", operation_id="version", response_model=s.VersionOut, summary="Versions and the server's limits",
+    "/version", operation_id="version", response_model=s.VersionOut,
+    summary="Versions, the server's limits and how its Newton kernels run",
     responses={200: {"description": "versions and limits", "content": {"application/json": {"example": {
         "service": "tensegrity-opt", "version": tensegrity_opt.__version__,
         "library_version": tensegrity_opt.__version__, "api": API_VERSION, "auth": False,
         "limits": {"max_segments": 200, "max_batch": 1000, "solve_timeout": 10.0, "batch_timeout": 60.0,
-                   "workers": 2, "queue_size": 64, "max_body_bytes": 1048576,
+                   "workers": 2, "queue_size": 64, "inline_max_segments": 8, "max_body_bytes": 1048576,
                    "max_curve_points": s.MAX_CURVE_POINTS, "max_grid": s.MAX_GRID,
-                   "max_torque_points": s.MAX_TORQUE_POINTS}}}}}})
+                   "max_torque_points": s.MAX_TORQUE_POINTS},
+        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
 async def version(request: Request) -> Any:
     st = request.app.state.settings
+    k = kernels.status()
     return {"service": "tensegrity-opt", "version": tensegrity_opt.__version__,
             "library_version": tensegrity_opt.__version__, "api": API_VERSION, "auth": st.auth_enabled,
             "limits": {"max_segments": st.max_segments, "max_batch": st.max_batch, "solve_timeout": st.solve_timeout,
                        "batch_timeout": st.batch_timeout, "workers": st.workers, "queue_size": st.queue_size,
+                       "inline_max_segments": st.inline_max_segments,
                        "max_body_bytes": st.max_body_bytes, "max_curve_points": s.MAX_CURVE_POINTS,
-                       "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS}}
+                       "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS},
+            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine")}}
 
 
 @router.get(
