@@ -103,6 +103,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             for res in await asyncio.gather(*jobs, return_exceptions=True):
                 if isinstance(res, BaseException):
                     log.warning("solver warm-up failed: %r", res)
+            if settings.inline_max_segments:
+                try:            # the event loop's own instances, for the requests it solves inline
+                    warmup_job()
+                except Exception as exc:  # noqa: BLE001 - best effort, as for the workers
+                    log.warning("event-loop solver warm-up failed: %r", exc)
         runner.start()
         app.state.ready = True
         try:
