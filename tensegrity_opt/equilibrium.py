@@ -298,7 +298,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
                                  f"{len(starts)} starts ({n_unstable} unstable ones); method='auto' adds IPOPT",
                                  status=_summary(statuses))
     stable, n_unstable = search_stable(m, target, starts, statuses, minimize=True)
-    stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < 1e-7 for f in found)]
+    stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < SAME_Q for f in found)]
     if stable:
         return _pick(stable, q0)
     if n_unstable:

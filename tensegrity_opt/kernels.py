@@ -266,8 +266,8 @@ def status() -> dict[str, object]:
     with _lock:
         loaded = dict(_loaded)
     return {"compiler": compiler(), "cache_dir": str(cache_dir()), "max_segments": KERNEL_MAX,
-            "compiled": sorted(n for n, v in loaded.items() if isinstance(v, str)),
-            "virtual_machine": sorted(n for n, v in loaded.items() if not isinstance(v, str))}
+            "compiled": sorted(n for n, path in loaded.items() if path),
+            "virtual_machine": sorted(n for n, path in loaded.items() if not path)}
 
 
 @dataclass
@@ -282,8 +282,8 @@ class Kernels:
 
 
 _NAMES = ("newton", "seeds", "continuation")
-#: Per process and ``n``: the compiled library's path, or the graphs when running without compiler.
-_loaded: dict[int, str | dict[str, ca.Function]] = {}
+#: Per process and ``n``: the compiled library's path, or ``""`` when the kernels run in the VM.
+_loaded: dict[int, str] = {}
 
 
 def build(n: int, sym) -> Kernels:
@@ -295,17 +295,18 @@ def build(n: int, sym) -> Kernels:
     """
     if not 2 <= n <= KERNEL_MAX:
         raise ValueError(f"kernels exist for 2 <= n <= {KERNEL_MAX}, got n={n}")
+    funcs = None
     with _lock:
-        got = _loaded.get(n)
-        if got is None:
+        path = _loaded.get(n)
+        if path is None:
             funcs = _graphs(n, sym)
-            got = _loaded[n] = _compile(n, funcs) or funcs
-    if isinstance(got, str):
+            path = _loaded[n] = _compile(n, funcs) or ""
+    if path:
         try:
-            return Kernels(n, *(ca.external(k, got) for k in _NAMES), "compiled")
+            return Kernels(n, *(ca.external(k, path) for k in _NAMES), "compiled")
         except RuntimeError as exc:                 # an unloadable library: never fatal
-            _warn(f"loading {got} failed ({exc})")
+            _warn(f"loading {path} failed ({exc})")
             with _lock:
-                _loaded[n] = _graphs(n, sym)
-    funcs = _graphs(n, sym)          # this thread's own instances
+                _loaded[n] = ""
+    funcs = funcs or _graphs(n, sym)                 # this thread's own instances
     return Kernels(n, funcs["newton"].expand(), funcs["seeds"], funcs["continuation"], "virtual machine")

@@ -101,12 +101,6 @@ def _inertia_of_eigenvalues(w: np.ndarray, rel_tol: float, dim: int) -> Inertia:
     return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)), dim)
 
 
-def _inertia_of_list(w: list[float], rel_tol: float) -> Inertia:
-    """:func:`_inertia_of_eigenvalues` for a few eigenvalues as floats (no numpy overhead)."""
-    tol = rel_tol * max(1.0, max(abs(v) for v in w))
-    return Inertia(np.array(w), sum(v < -tol for v in w), any(abs(v) <= tol for v in w), len(w))
-
-
 def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> Inertia:
     """Inertia of a displacement-controlled equilibrium from its reduced Hessian ``Z^T H Z`` (m x m).
 
@@ -118,7 +112,7 @@ def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> Inertia:
     if dim == 0:
         return Inertia(np.zeros(0), 0, False, 0)
     if dim == 1:
-        return _inertia_of_list([float(R[0, 0])], rel_tol)
+        return _inertia_of_eigenvalues(R[0].copy(), rel_tol, 1)
     if dim == 2:
         (a, b), (_, d) = R.tolist()
         mean, rad = 0.5 * (a + d), math.hypot(0.5 * (a - d), b)
