@@ -2,27 +2,29 @@
 
 Every field has an embedded default, so ``tensegrity-opt serve`` runs with no configuration.
 
-============================  =========  ==================================================
-variable                      default    meaning
-============================  =========  ==================================================
-``TENSEGRITY_MAX_SEGMENTS``   200        largest chain accepted (``too_many_segments`` above)
-``TENSEGRITY_MAX_BATCH``      1000       most targets in one ``/v1/batch/equilibrium``
-``TENSEGRITY_SOLVE_TIMEOUT``  10         seconds one request may wait for its result (504)
-``TENSEGRITY_BATCH_TIMEOUT``  60         seconds a batch may run (later targets: ``timeout``)
-``TENSEGRITY_WORKERS``        2          solver threads (each owns its CasADi instances)
-``TENSEGRITY_QUEUE_SIZE``     64         requests waiting for a solver thread (503 beyond)
-``TENSEGRITY_RETRY_AFTER``    1          ``Retry-After`` seconds sent with 503
-``TENSEGRITY_API_KEYS``       (empty)    comma-separated or JSON list; empty: auth off
-``TENSEGRITY_CORS_ORIGINS``   (empty)    comma-separated or JSON list; empty: CORS off
-``TENSEGRITY_MAX_BODY_BYTES`` 1048576    request bodies above this get 413
-``TENSEGRITY_WARMUP``         true       build each thread's solvers (n = 4) at start-up
-``TENSEGRITY_JOBS_DB``        (file)     SQLite job store, ``tensegrity_jobs.sqlite3`` in the working dir
-``TENSEGRITY_JOBS_SCHEDULER`` (unset)    jobs: unset/``serial`` runner thread; ``local``/``tcp://..`` Dask
-``TENSEGRITY_JOBS_MAX_POINTS`` 100000    most points in one job (422 above)
-``TENSEGRITY_JOBS_RESUME``    true       resume jobs a stopped server left running
-``TENSEGRITY_JOBS_SYNCHRONOUS`` NORMAL   SQLite ``synchronous`` (NORMAL survives a kill, FULL a power cut)
-``TENSEGRITY_JOBS_CHUNK_SIZE`` (auto)    points per Dask task
-============================  =========  ==================================================
+=====================================  =========  ==================================================
+variable                               default    meaning
+=====================================  =========  ==================================================
+``TENSEGRITY_MAX_SEGMENTS``            200        largest chain accepted (``too_many_segments`` above)
+``TENSEGRITY_MAX_BATCH``               1000       most targets in one ``/v1/batch/equilibrium``
+``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may wait for its result (504)
+``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
+``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
+``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
+``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: on the event loop)
+``TENSEGRITY_QUEUE_SIZE``              64         requests waiting for a solver thread (503 beyond)
+``TENSEGRITY_RETRY_AFTER``             1          ``Retry-After`` seconds sent with 503
+``TENSEGRITY_API_KEYS``                (empty)    comma-separated or JSON list; empty: auth off
+``TENSEGRITY_CORS_ORIGINS``            (empty)    comma-separated or JSON list; empty: CORS off
+``TENSEGRITY_MAX_BODY_BYTES``          1048576    request bodies above this get 413
+``TENSEGRITY_WARMUP``                  true       build each thread's solvers (n = 4) at start-up
+``TENSEGRITY_JOBS_DB``                 (file)     SQLite job store, ``tensegrity_jobs.sqlite3`` in the working dir
+``TENSEGRITY_JOBS_SCHEDULER``          (unset)    jobs: unset/``serial`` runner thread; ``local``/``tcp://..`` Dask
+``TENSEGRITY_JOBS_MAX_POINTS``         100000     most points in one job (422 above)
+``TENSEGRITY_JOBS_RESUME``             true       resume jobs a stopped server left running
+``TENSEGRITY_JOBS_SYNCHRONOUS``        NORMAL     SQLite ``synchronous`` (NORMAL survives a kill, FULL a power cut)
+``TENSEGRITY_JOBS_CHUNK_SIZE``         (auto)     points per Dask task
+=====================================  =========  ==================================================
 """
 
 from __future__ import annotations
@@ -66,6 +68,10 @@ class Settings(BaseSettings):
         description="chains up to this many segments (with monotonic segments) are first solved on the event "
                     "loop by the bounded Newton-only search (a few hundred microseconds, less than the hand-off "
                     "to a worker thread); what it does not settle goes to the workers. 0: always the workers")
+    inline_processes: int = Field(
+        1, ge=0, le=64,
+        description="solver processes for that bounded search (service.lane): the event loop hands the request "
+                    "over and goes on with HTTP meanwhile. 0: the event loop solves it itself")
     queue_size: int = Field(64, ge=0, le=100000, description="requests waiting for a worker before 503")
     retry_after: int = Field(1, ge=0, description="Retry-After seconds sent with 503")
     api_keys: Annotated[list[str], NoDecode] = Field(default_factory=list, description="accepted X-API-Key values")

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import asyncio
 import secrets
 from collections.abc import Callable
 from typing import Any
@@ -13,6 +14,8 @@ from . import schemas as s
 from .compute import manipulator_form, segment_count
 from .config import Settings
 from .errors import FieldContext, ServiceError
+from .lane import LaneUnavailable, SolverLane
+from .pool import SolveTimeout
 
 __all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch", "solve"]
 
@@ -65,15 +68,35 @@ async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: Field
                 timeout: float | None = None, inline: Callable[..., Any] | None = None) -> Any:
     """Run ``fn(*args)`` in the solver pool under the time limit; errors map through ``service.errors``.
 
-    ``inline(*args, max_segments=...)``, when given, runs first on the event loop: a bounded
-    fast path (``compute.equilibrium_inline``) that returns the result, or ``None`` to hand the
-    request to the pool. A thread hand-off costs ~0.1-0.2 ms here, as much as a whole short-chain
-    solve.
+    ``inline(*args, max_segments=...)``, when given, runs first: a bounded fast path
+    (``compute.equilibrium_inline``) that returns the result, or ``None`` to hand the request to
+    the pool. It runs in a solver process (:mod:`service.lane`) when one is ready, so the event
+    loop goes on with HTTP meanwhile; otherwise (no process configured, starting, restarting,
+    saturated, or the call raised there) on the event loop itself, which also raises any error
+    again in-process. A thread hand-off costs ~0.1-0.2 ms here, as much as a whole short-chain
+    solve, hence no solver thread for this path.
     """
     request.state.field_context = ctx
     settings: Settings = request.app.state.settings
+    timeout = timeout or settings.solve_timeout
     if inline is not None and settings.inline_max_segments:
-        out = inline(*args, max_segments=settings.inline_max_segments)
+        out = None
+        lane = _pick_lane(request.app.state.lanes)
+        try:
+            if lane is None:
+                raise LaneUnavailable("no solver process")
+            out = await lane.run(inline, *args, timeout=timeout, max_segments=settings.inline_max_segments)
+        except LaneUnavailable:
+            out = inline(*args, max_segments=settings.inline_max_segments)
+        except (asyncio.TimeoutError, TimeoutError):
+            raise SolveTimeout(timeout) from None
         if out is not None:
             return out
-    return await request.app.state.pool.run(fn, *args, timeout=timeout or settings.solve_timeout)
+    return await request.app.state.pool.run(fn, *args, timeout=timeout)
+
+
+def _pick_lane(lanes: list[SolverLane]) -> SolverLane | None:
+    """The solver process with the fewest calls outstanding (the first one if none is ready)."""
+    if len(lanes) == 1:
+        return lanes[0]
+    return min(lanes, key=lambda la: (not la.ready, la.in_flight), default=None)

@@ -1,7 +1,7 @@
 """The FastAPI application: ``create_app(settings)`` and the module-level ``app``.
 
-Run it with ``tensegrity-opt serve`` (one uvicorn process; the solver pool supplies the
-parallelism, see :mod:`service.pool`).
+Run it with ``tensegrity-opt serve`` (one uvicorn process; the solver threads of
+:mod:`service.pool` and the solver processes of :mod:`service.lane` supply the parallelism).
 """
 
 from __future__ import annotations
@@ -25,6 +25,7 @@ from .compute import warmup_job
 from .config import Settings, get_settings
 from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware
+from .lane import SolverLane
 from .pool import SolverPool
 from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, plots, segment, stiffness, web
 from .routes import jobs as jobs_routes
@@ -93,10 +94,17 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     pool = SolverPool(settings.workers, settings.queue_size)
     metrics = Metrics(pool)
     runner = jobs.JobRunner(settings)
+    lanes = [SolverLane(max_in_flight=max(settings.queue_size, 1))
+             for _ in range(settings.inline_processes if settings.inline_max_segments else 0)]
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         pool.start()
+        for lane in lanes:          # the solver processes warm up while the threads do
+            try:
+                await lane.start()
+            except OSError as exc:
+                log.warning("could not start a solver process (requests run on the event loop): %r", exc)
         if settings.warmup:
             # One warm-up call per worker (best effort): each thread builds its CasADi instances.
             jobs = [pool.run(warmup_job, timeout=max(settings.solve_timeout, 30.0)) for _ in range(pool.workers)]
@@ -108,6 +116,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                     warmup_job()
                 except Exception as exc:  # noqa: BLE001 - best effort, as for the workers
                     log.warning("event-loop solver warm-up failed: %r", exc)
+            for lane in lanes:
+                if not await lane.wait_ready(60.0):
+                    log.warning("a solver process is not ready after 60 s; requests run on the event loop")
         runner.start()
         app.state.ready = True
         try:
@@ -115,6 +126,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         finally:
             app.state.ready = False
             await asyncio.to_thread(runner.stop)
+            for lane in lanes:
+                lane.close()
             pool.shutdown(wait=True, timeout=5.0)
 
     app = FastAPI(
@@ -125,6 +138,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     )
     app.state.settings = settings
     app.state.pool = pool
+    app.state.lanes = lanes
     app.state.metrics = metrics
     app.state.jobs = runner
     app.state.ready = False

@@ -450,6 +450,8 @@ class Limits(BaseModel):
     workers: int
     queue_size: int
     inline_max_segments: int
+    inline_processes: int = Field(description="solver processes running the short chains' bounded search "
+                                              "(service.lane); 0: the event loop runs it")
     max_body_bytes: int
     max_curve_points: int
     max_grid: int

@@ -1,0 +1,283 @@
+"""Solver processes for the short requests: the event loop hands them over and stays free for HTTP.
+
+Why a process, and why this lane
+--------------------------------
+* A short chain's global search (n = 4: ~0.3-0.5 ms of Python and compiled Newton) is as long as
+  the HTTP work around it. Solved on the event loop, both share one core; the solver threads of
+  :mod:`service.pool` cannot help (the GIL: the search is mostly Python). A child process solves
+  on the other core while the loop parses, validates and answers the next requests.
+* The lane carries only calls that are *bounded* and *deterministic*: the Newton-only search of
+  :func:`service.compute.equilibrium_inline` (it returns ``None`` for what it does not settle;
+  the route then hands the request to the thread pool). Everything else still goes to the pool.
+* Nothing is lost: if the child is not running (starting, crashed, killed), is saturated, or the
+  call raises there, :meth:`SolverLane.run` raises :class:`LaneUnavailable` and the caller runs
+  the same call on the event loop, as before the lane existed; an exception is thus raised again
+  in-process with its full type and mapped to HTTP like any other. A dead child is restarted
+  (at most once every ``RESTART_INTERVAL`` seconds).
+* Protocol: one ``socketpair``; frames are a 4-byte big-endian length and a pickle of
+  ``(call id, function, args, kwargs)`` one way and ``(call id, ok, result)`` the other. The
+  child is ``python -m service.lane FD`` (a fresh interpreter, no fork of a threaded server); it
+  builds its solvers (warm-up), answers calls in order and exits when the socket closes.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import logging
+import os
+import pickle
+import socket
+import struct
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+log = logging.getLogger("service.lane")
+
+__all__ = ["SolverLane", "LaneUnavailable"]
+
+_HEADER = struct.Struct(">I")
+RESTART_INTERVAL = 5.0          # seconds between restarts of a child that died
+
+
+class LaneUnavailable(Exception):
+    """The lane cannot take or finish this call: the caller runs it itself."""
+
+
+class _Protocol(asyncio.Protocol):
+    """The loop's end of the socket: frames in, futures resolved."""
+
+    def __init__(self, lane: SolverLane) -> None:
+        self.lane = lane
+        self.buffer = bytearray()
+        self.transport: asyncio.Transport | None = None
+
+    def connection_made(self, transport: asyncio.BaseTransport) -> None:
+        self.transport = transport  # type: ignore[assignment]
+
+    def data_received(self, data: bytes) -> None:
+        buf = self.buffer
+        buf += data
+        start = 0
+        end = len(buf)
+        while end - start >= 4:
+            (size,) = _HEADER.unpack_from(buf, start)
+            if end - start - 4 < size:
+                break
+            call_id, ok, value = pickle.loads(buf[start + 4:start + 4 + size])
+            start += 4 + size
+            self.lane._resolve(call_id, ok, value)
+        if start:
+            del buf[:start]
+
+    def connection_lost(self, exc: Exception | None) -> None:
+        self.lane._lost(self)
+
+
+class SolverLane:
+    """One solver child process fed over a socket; at most ``max_in_flight`` calls outstanding.
+
+    Parameters
+    ----------
+    max_in_flight : int
+        Calls sent and not answered yet beyond which :meth:`run` refuses (the caller solves itself).
+    env : dict, optional
+        Extra environment of the child (the parent's is inherited).
+    """
+
+    def __init__(self, max_in_flight: int = 64, env: dict[str, str] | None = None) -> None:
+        self.max_in_flight = max_in_flight
+        self.env = env
+        self._proc: subprocess.Popen[bytes] | None = None
+        self._protocol: _Protocol | None = None
+        self._pending: dict[int, asyncio.Future[Any]] = {}
+        self._next_id = 0
+        self._ready: asyncio.Future[None] | None = None
+        self._last_start = -1e9
+        self._closing = False
+        self._broken = False        # the child failed its warm-up: not restarted
+        self.completed = 0          # calls answered by the child (statistics, tests)
+        self.restarts = 0
+
+    # ------------------------------------------------------------------ lifecycle
+    @property
+    def ready(self) -> bool:
+        """The child is running and has finished its warm-up."""
+        return self._ready is not None and self._ready.done() and not self._ready.cancelled() \
+            and self._ready.exception() is None and self._protocol is not None
+
+    async def start(self) -> None:
+        """Start the child (returns at once; :meth:`wait_ready` waits for its warm-up)."""
+        if self._closing or self._protocol is not None:
+            return
+        loop = asyncio.get_running_loop()
+        self._last_start = time.monotonic()
+        parent, child = socket.socketpair()
+        try:
+            self._proc = subprocess.Popen(
+                [sys.executable, "-m", "service.lane", str(child.fileno())], pass_fds=(child.fileno(),),
+                env={**os.environ, **(self.env or {})}, stdin=subprocess.DEVNULL)
+        except OSError:
+            parent.close()
+            raise
+        finally:
+            child.close()
+        self._ready = loop.create_future()
+        # The child's first frame (id -1) says it has warmed up.
+        self._pending[-1] = self._ready
+        _, proto = await loop.create_unix_connection(lambda: _Protocol(self), sock=parent)
+        self._protocol = proto
+
+    async def wait_ready(self, timeout: float) -> bool:
+        """Wait up to ``timeout`` seconds for the child's warm-up; ``True`` when it is ready."""
+        if self._ready is None:
+            return False
+        try:
+            await asyncio.wait_for(asyncio.shield(self._ready), timeout)
+        except (asyncio.TimeoutError, TimeoutError, LaneUnavailable):
+            return False
+        return self.ready
+
+    def close(self) -> None:
+        """Stop the child (its socket closes; it exits) and fail the calls still outstanding."""
+        self._closing = True
+        proto, self._protocol = self._protocol, None
+        if proto is not None and proto.transport is not None:
+            proto.transport.close()
+        self._fail_pending()
+        proc, self._proc = self._proc, None
+        if proc is not None:
+            try:
+                proc.wait(2.0)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                proc.wait(2.0)
+
+    @property
+    def pid(self) -> int | None:
+        return None if self._proc is None else self._proc.pid
+
+    @property
+    def in_flight(self) -> int:
+        return sum(1 for k in self._pending if k >= 0)
+
+    # ------------------------------------------------------------------ calls
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, **kwargs: Any) -> Any:
+        """``fn(*args, **kwargs)`` in the child (``fn`` importable by name, arguments picklable).
+
+        Raises :class:`LaneUnavailable` when the child is not ready, has too many calls, dies
+        during the call, or the call raised there; ``asyncio.TimeoutError`` after ``timeout``.
+        """
+        if not self.ready:
+            await self._maybe_restart()
+            raise LaneUnavailable("the solver process is not ready")
+        if len(self._pending) >= self.max_in_flight:
+            raise LaneUnavailable("the solver process has too many calls")
+        call_id = self._next_id
+        self._next_id += 1
+        payload = pickle.dumps((call_id, fn, args, kwargs), protocol=pickle.HIGHEST_PROTOCOL)
+        fut: asyncio.Future[Any] = asyncio.get_running_loop().create_future()
+        self._pending[call_id] = fut
+        assert self._protocol is not None and self._protocol.transport is not None
+        self._protocol.transport.write(_HEADER.pack(len(payload)) + payload)
+        try:
+            return await asyncio.wait_for(fut, timeout)
+        finally:
+            self._pending.pop(call_id, None)
+
+    def _resolve(self, call_id: int, ok: bool, value: Any) -> None:
+        fut = self._pending.pop(call_id, None)
+        if call_id >= 0:
+            self.completed += 1
+        if call_id < 0 and not ok:
+            self._broken = True
+            log.warning("the solver process failed its warm-up (%s); requests run on the event loop", value)
+        if fut is None or fut.done():
+            return
+        if ok:
+            fut.set_result(value)
+        else:
+            fut.set_exception(LaneUnavailable(value))
+
+    def _lost(self, proto: _Protocol) -> None:
+        if self._protocol is proto:
+            self._protocol = None
+        self._fail_pending()
+        proc = self._proc
+        if proc is not None and not self._closing:
+            try:
+                code = proc.wait(1.0)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                code = proc.wait(1.0)
+            log.warning("solver process %s exited (status %s); requests run on the event loop until it is "
+                        "restarted", proc.pid, code)
+            self._proc = None
+
+    def _fail_pending(self) -> None:
+        pending, self._pending = self._pending, {}
+        for fut in pending.values():
+            if not fut.done():
+                fut.set_exception(LaneUnavailable("the solver process stopped"))
+
+    async def _maybe_restart(self) -> None:
+        if self._closing or self._broken or self._protocol is not None or self._proc is not None:
+            return
+        if time.monotonic() - self._last_start < RESTART_INTERVAL:
+            return
+        self.restarts += 1
+        try:
+            await self.start()
+        except OSError as exc:          # pragma: no cover - cannot spawn
+            log.warning("could not restart the solver process: %r", exc)
+
+
+# ---------------------------------------------------------------------------- the child
+def _recv_exact(sock: socket.socket, size: int) -> bytes | None:
+    chunks = bytearray()
+    while len(chunks) < size:
+        part = sock.recv(size - len(chunks))
+        if not part:
+            return None
+        chunks += part
+    return bytes(chunks)
+
+
+def _send(sock: socket.socket, obj: Any) -> None:
+    payload = pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL)
+    sock.sendall(_HEADER.pack(len(payload)) + payload)
+
+
+def child_main(fd: int) -> None:
+    """The child: warm up, then answer calls in order until the socket closes."""
+    sock = socket.socket(fileno=fd)
+    from .compute import warmup_job
+
+    try:
+        warmup_job()
+        _send(sock, (-1, True, None))
+    except Exception as exc:  # noqa: BLE001 - reported to the parent, which then solves itself
+        _send(sock, (-1, False, repr(exc)))
+        return
+    while True:
+        head = _recv_exact(sock, 4)
+        if head is None:
+            return
+        body = _recv_exact(sock, _HEADER.unpack(head)[0])
+        if body is None:
+            return
+        call_id, fn, args, kwargs = pickle.loads(body)
+        try:
+            reply = (call_id, True, fn(*args, **kwargs))
+        except Exception as exc:  # noqa: BLE001 - the parent runs the call again itself and maps the error
+            reply = (call_id, False, f"{type(exc).__name__}: {exc}")
+        try:
+            _send(sock, reply)
+        except (pickle.PicklingError, TypeError, AttributeError) as exc:
+            _send(sock, (call_id, False, f"unpicklable result: {exc!r}"))
+
+
+if __name__ == "__main__":
+    child_main(int(sys.argv[1]))

@@ -1,0 +1,126 @@
+"""The solver process of the service (``service.lane``): same answers, and nothing lost when it fails.
+
+Expected answers come from a server without solver processes (``inline_processes=0``: the event
+loop solves), which the rest of the service tests check against the library; here the point is
+that handing the call to another process changes nothing a client can see, and that every
+failure of that process (killed, refusing, timing out, raising) still answers the request.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import time
+import warnings
+
+import pytest
+
+pytest.importorskip("fastapi")
+
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")
+    from fastapi.testclient import TestClient
+
+from service import lane as lane_mod
+from service.config import Settings
+from service.main import create_app
+
+PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+BODIES = [{"manipulator": PAPER, "dx": 0.1}, {"manipulator": PAPER, "dx": 0.7, "dy": -0.3},
+          {"manipulator": {"n": 6, "a": 0.8, "b": 1.2, "k": 2.5, "L0": 1.7}, "dx": 1.1, "dy": 0.2},
+          {"manipulator": PAPER, "dx": 0.2, "dy": 0.05, "q0": [0.17, -0.07, -0.24, -0.13]},
+          {"manipulator": PAPER, "dx": 0.101, "q0": [0.178, -0.077, -0.245, -0.131], "local": True},
+          {"manipulator": {"n": 4, "a": 0.6, "b": 1.0, "k": 1.0, "L0": 1.2}, "dx": 0.3, "dy": 0.1}]
+UNREACHABLE = {"manipulator": PAPER, "dx": 0.1, "dy": 8.5}
+
+
+def ready_client(**overrides) -> TestClient:
+    return TestClient(create_app(Settings(**{"warmup": False, **overrides})))
+
+
+def wait_ready(client: TestClient, timeout: float = 120.0) -> lane_mod.SolverLane:
+    lane = client.app.state.lanes[0]
+    assert client.portal.call(lane.wait_ready, timeout), "the solver process did not get ready"
+    return lane
+
+
+@pytest.fixture(scope="module")
+def clients():
+    with ready_client() as fast, ready_client(inline_processes=0) as plain:
+        wait_ready(fast)
+        assert plain.app.state.lanes == []
+        yield fast, plain
+
+
+def test_the_solver_process_answers_like_the_event_loop(clients):
+    fast, plain = clients
+    lane = fast.app.state.lanes[0]
+    before = lane.completed
+    for body in BODIES:
+        a, b = fast.post("/v1/equilibrium", json=body), plain.post("/v1/equilibrium", json=body)
+        assert a.status_code == b.status_code == 200, (a.text, b.text)
+        assert a.json() == b.json()
+    # every body went through the process (the bistable chain too: there it returns "not settled"
+    # and the route hands the request to a solver thread)
+    assert lane.completed - before == len(BODIES)
+    assert lane.pid is not None and lane.pid != os.getpid()
+
+
+def test_an_error_raised_in_the_solver_process_is_answered_as_without_it(clients):
+    fast, plain = clients
+    lane = fast.app.state.lanes[0]
+    before = lane.completed
+    a, b = fast.post("/v1/equilibrium", json=UNREACHABLE), plain.post("/v1/equilibrium", json=UNREACHABLE)
+    assert a.status_code == b.status_code == 422
+    assert a.json() == b.json() and a.json()["code"] == "unreachable_target"
+    assert lane.completed == before + 1          # the process answered "failed"; the loop re-raised it
+
+
+def test_a_killed_solver_process_loses_no_request_and_is_restarted(monkeypatch):
+    monkeypatch.setattr(lane_mod, "RESTART_INTERVAL", 0.0)
+    with ready_client() as fast, ready_client(inline_processes=0) as plain:
+        lane = wait_ready(fast)
+        expected = plain.post("/v1/equilibrium", json=BODIES[1]).json()
+        old = lane.pid
+        os.kill(old, signal.SIGKILL)
+        deadline = time.monotonic() + 30
+        while lane.ready and time.monotonic() < deadline:     # the loop notices the closed socket
+            time.sleep(0.01)
+        assert not lane.ready
+        r = fast.post("/v1/equilibrium", json=BODIES[1])      # answered on the event loop; restart begins
+        assert r.status_code == 200 and r.json() == expected
+        wait_ready(fast)
+        assert lane.pid not in (None, old) and lane.restarts == 1
+        before = lane.completed
+        r = fast.post("/v1/equilibrium", json=BODIES[1])
+        assert r.status_code == 200 and r.json() == expected
+        assert lane.completed == before + 1
+        pid = lane.pid
+    with pytest.raises(ProcessLookupError):     # the server's shutdown ended (and reaped) its child
+        os.kill(pid, 0)
+
+
+def test_a_saturated_solver_process_hands_the_call_back(clients):
+    fast, plain = clients
+    lane = fast.app.state.lanes[0]
+    before, limit = lane.completed, lane.max_in_flight
+    lane.max_in_flight = 0
+    try:
+        r = fast.post("/v1/equilibrium", json=BODIES[0])
+    finally:
+        lane.max_in_flight = limit
+    assert r.status_code == 200 and r.json() == plain.post("/v1/equilibrium", json=BODIES[0]).json()
+    assert lane.completed == before
+
+
+def test_a_call_over_the_time_limit_is_a_504():
+    with ready_client(solve_timeout=1e-6) as fast:
+        wait_ready(fast)
+        r = fast.post("/v1/equilibrium", json=BODIES[0])
+        assert r.status_code == 504 and r.json()["code"] == "timeout"
+
+
+def test_version_reports_the_solver_processes(clients):
+    fast, plain = clients
+    assert fast.get("/version").json()["limits"]["inline_processes"] == 1
+    assert plain.get("/version").json()["limits"]["inline_processes"] == 0
