@@ -14,10 +14,11 @@ Why a process, and why this lane
   the same call on the event loop, as before the lane existed; an exception is thus raised again
   in-process with its full type and mapped to HTTP like any other. A dead child is restarted
   (at most once every ``RESTART_INTERVAL`` seconds).
-* Protocol: one ``socketpair``; frames are a 4-byte big-endian length and a pickle of
-  ``(call id, function, args, kwargs)`` one way and ``(call id, ok, result)`` the other. The
+* Protocol: one ``socketpair``. A call is its length and id (big-endian 4 + 8 bytes) and a pickle
+  of ``(function, args, kwargs)``; a reply a 4-byte length and a pickle of ``(call id, ok, result)``. The
   child is ``python -m service.lane FD`` (a fresh interpreter, no fork of a threaded server); it
-  builds its solvers (warm-up), answers calls in order and exits when the socket closes.
+  builds its solvers (warm-up), answers calls in order and exits when the socket closes. A call
+  it cannot unpickle or run is answered "failed" (the parent then runs it itself).
 """
 
 from __future__ import annotations
@@ -38,7 +39,8 @@ log = logging.getLogger("service.lane")
 
 __all__ = ["SolverLane", "LaneUnavailable"]
 
-_HEADER = struct.Struct(">I")
+_HEADER = struct.Struct(">I")         # a reply: its length
+_CALL = struct.Struct(">Iq")          # a call: its length and id (readable even if the call cannot be unpickled)
 RESTART_INTERVAL = 5.0          # seconds between restarts of a child that died
 
 
@@ -177,11 +179,11 @@ class SolverLane:
             raise LaneUnavailable("the solver process has too many calls")
         call_id = self._next_id
         self._next_id += 1
-        payload = pickle.dumps((call_id, fn, args, kwargs), protocol=pickle.HIGHEST_PROTOCOL)
+        payload = pickle.dumps((fn, args, kwargs), protocol=pickle.HIGHEST_PROTOCOL)
         fut: asyncio.Future[Any] = asyncio.get_running_loop().create_future()
         self._pending[call_id] = fut
         assert self._protocol is not None and self._protocol.transport is not None
-        self._protocol.transport.write(_HEADER.pack(len(payload)) + payload)
+        self._protocol.transport.write(_CALL.pack(len(payload), call_id) + payload)
         try:
             return await asyncio.wait_for(fut, timeout)
         finally:
@@ -262,14 +264,15 @@ def child_main(fd: int) -> None:
         _send(sock, (-1, False, repr(exc)))
         return
     while True:
-        head = _recv_exact(sock, 4)
+        head = _recv_exact(sock, _CALL.size)
         if head is None:
             return
-        body = _recv_exact(sock, _HEADER.unpack(head)[0])
+        size, call_id = _CALL.unpack(head)
+        body = _recv_exact(sock, size)
         if body is None:
             return
-        call_id, fn, args, kwargs = pickle.loads(body)
         try:
+            fn, args, kwargs = pickle.loads(body)
             reply = (call_id, True, fn(*args, **kwargs))
         except Exception as exc:  # noqa: BLE001 - the parent runs the call again itself and maps the error
             reply = (call_id, False, f"{type(exc).__name__}: {exc}")

@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from functools import cached_property
+from functools import cached_property, lru_cache
 
 import numpy as np
 
@@ -323,27 +323,63 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
 def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
             minimize: bool) -> tuple[list[Equilibrium], int]:
     """Local solves from every start; the distinct stable equilibria and the count of unstable ones."""
+    if not minimize:
+        return _search_stable_newton(m, target, starts, statuses)
     candidates: list[LocalResult] = []
-    if minimize:
-        results = [local_equilibrium(m, target, q, minimize=True) for q in starts]
-    else:
-        results = model(m.n).newton_kkt_many(m.params, m.joint_limits, target, starts)
-    for res in results:
-        ok = is_equilibrium(m, res, target, check_residual=minimize)
-        key = res.status if ok else (res.status + (" (on joint limit)" if res.on_bound else " (rejected)"))
-        statuses[key] = statuses.get(key, 0) + 1
+    for res in (local_equilibrium(m, target, q, minimize=True) for q in starts):
+        ok = is_equilibrium(m, res, target, check_residual=True)
+        _count(statuses, res, ok)
         if ok:
             candidates.append(res)
     stable: list[Equilibrium] = []
-    cands = distinct(candidates)
     n_unstable = 0
-    for res in cands:
+    for res in distinct(candidates):
         inertia, energy, tip = _classify(m, res, True)
         if inertia.stable:
             stable.append(_build(res, inertia, energy, tip, True))
         else:
             n_unstable += 1
     return stable, n_unstable
+
+
+def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: dict[str, int]
+                          ) -> tuple[list[Equilibrium], int]:
+    """:func:`search_stable` by Newton from every start: only the distinct converged points are looked
+    at, only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
+    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts)
+    energy = b.energy.tolist()
+    on_bound = b.on_bound.tolist()
+    idx = []
+    for j, (good, bound, e) in enumerate(zip(b.success.tolist(), on_bound, energy)):
+        if good and not bound and e != e:           # a Python-method row (no kernel outputs): full check
+            good = is_equilibrium(m, b.result(j), target, check_residual=False)
+        else:
+            good = good and not bound
+        key = b.status[j] if good else (b.status[j] + (" (on joint limit)" if bound else " (rejected)"))
+        statuses[key] = statuses.get(key, 0) + 1
+        if good:
+            idx.append(j)
+    if len(idx) > 1:
+        idx = [j for j, keep in zip(idx, distinct_rows(b.q[idx]).tolist()) if keep]
+    stable: list[Equilibrium] = []
+    n_unstable = 0
+    for j in idx:
+        if energy[j] == energy[j]:
+            inertia, e, tip = inertia_of_reduced(b.reduced_hessian[j]), energy[j], b.tip[j]
+            res = None
+        else:
+            res = b.result(j)
+            inertia, e, tip = _classify(m, res, True)
+        if inertia.stable:
+            stable.append(_build(res if res is not None else b.result(j), inertia, e, tip, True))
+        else:
+            n_unstable += 1
+    return stable, n_unstable
+
+
+def _count(statuses: dict[str, int], res: LocalResult, ok: bool) -> None:
+    key = res.status if ok else (res.status + (" (on joint limit)" if res.on_bound else " (rejected)"))
+    statuses[key] = statuses.get(key, 0) + 1
 
 
 #: Two configurations closer than this in every joint angle (rad) are the same equilibrium.
@@ -355,10 +391,26 @@ def distinct(results: list[LocalResult]) -> list[LocalResult]:
     (the first of each group of coinciding results is kept)."""
     if len(results) < 2:
         return list(results)
-    Q = np.array([r.q for r in results])
-    same = np.abs(Q[:, None, :] - Q[None, :, :]).max(axis=2) < SAME_Q
-    keep = ~np.tril(same, -1).any(axis=1)
+    keep = distinct_rows(np.array([r.q for r in results]))
     return [r for r, k in zip(results, keep.tolist()) if k]
+
+
+def distinct_rows(Q: np.ndarray) -> np.ndarray:
+    """Boolean mask of the rows of ``Q`` (k, n) that differ by more than ``SAME_Q`` in some entry from
+    every earlier row (the first of each group of coinciding rows is kept)."""
+    k = Q.shape[0]
+    if k < 2:
+        return np.ones(k, dtype=bool)
+    same = np.abs(Q[:, None, :] - Q[None, :, :]).max(axis=2) < SAME_Q
+    return ~(same & _earlier(k)).any(axis=1)
+
+
+@lru_cache(maxsize=64)
+def _earlier(k: int) -> np.ndarray:
+    """``[i, j]`` true where ``j < i`` (k x k), read only."""
+    lower = np.tri(k, k, -1, dtype=bool)
+    lower.setflags(write=False)
+    return lower
 
 
 def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:

@@ -32,7 +32,7 @@ from scipy.linalg.lapack import dgesv as _dgesv
 
 from . import kernels as _kernels
 
-__all__ = ["LocalResult", "Continuation", "model", "IPOPT_OPTIONS"]
+__all__ = ["LocalResult", "SeedResults", "Continuation", "model", "IPOPT_OPTIONS"]
 
 #: Options for every IPOPT instance: exact Hessian, MUMPS, silent, bounded.
 IPOPT_OPTIONS: dict[str, object] = {
@@ -104,6 +104,34 @@ class Continuation:
     energy: np.ndarray | None = None
     tip: np.ndarray | None = None
     reduced_hessian: np.ndarray | None = None
+
+
+@dataclass
+class SeedResults:
+    """Local solves from k starts as arrays (:meth:`_Model.newton_kkt_seeds`; numpy only).
+
+    ``q`` (k, n), ``force`` (k, 2), ``success``/``on_bound`` (k,) bool, ``iterations`` (k,),
+    ``status`` (k statuses), and the kernels' ``energy`` (k,), ``tip`` (k, 2) and
+    ``reduced_hessian`` (k, n-2, n-2) at each point: NaN in the rows that came from the Python
+    Newton method (classify those from the model).
+    """
+
+    q: np.ndarray
+    force: np.ndarray
+    success: np.ndarray
+    on_bound: np.ndarray
+    iterations: np.ndarray
+    status: list[str]
+    energy: np.ndarray
+    tip: np.ndarray
+    reduced_hessian: np.ndarray
+
+    def result(self, j: int) -> LocalResult:
+        """Row ``j`` as a :class:`LocalResult`."""
+        known = not np.isnan(self.energy[j])
+        return LocalResult(self.q[j], self.force[j], bool(self.success[j]), self.status[j], int(self.iterations[j]),
+                           bool(self.on_bound[j]), float(self.energy[j]) if known else None,
+                           self.tip[j] if known else None, self.reduced_hessian[j] if known else None)
 
 
 def _q_of_phi(phi):
@@ -491,20 +519,27 @@ class _Model:
 
     def newton_kkt_many(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
                         starts: list[np.ndarray]) -> list[LocalResult]:
+        """:meth:`newton_kkt` from each start (force from eq. (8)); :meth:`newton_kkt_seeds` as objects."""
+        batch = self.newton_kkt_seeds(params, limits, target, starts)
+        return [batch.result(j) for j in range(len(batch.status))]
+
+    def newton_kkt_seeds(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
+                         starts: np.ndarray | list[np.ndarray]) -> SeedResults:
         """:meth:`newton_kkt` from each start (force from eq. (8)); the seeds of a global search.
 
         With kernels, ``kernels.SEEDS`` starts per compiled call (``kernels.SEED_ITER`` iterations);
         a start not converged there goes on from its iterate with the ``newton`` kernel and, if that
         fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
         """
+        n, m = self.n, self.n - 2
+        Q0 = np.asarray(starts, dtype=float).reshape(-1, n)
+        k_all = Q0.shape[0]
         kern = self.kernel
-        if kern is None or len(starts) == 0:
-            return [self.newton_kkt(params, limits, target, q) for q in starts]
+        if kern is None or k_all == 0:
+            return _seed_results([self.newton_kkt(params, limits, target, q) for q in Q0], n)
         self._set_scale(params)
         thresh = 1e-12 * self._scale
-        fast, S, n, m = kern[2], _kernels.SEEDS, self.n, self.n - 2
-        Q0 = np.asarray(starts, dtype=float)
-        k_all = Q0.shape[0]
+        fast, S = kern[2], _kernels.SEEDS
         chunks = -(-k_all // S)
         PH = np.empty((chunks * S, n))
         PH[:k_all] = np.cumsum(Q0, axis=1)
@@ -512,28 +547,27 @@ class _Model:
         Z, Y = np.empty((chunks * S, n + 2)), np.empty((chunks * S, 5 + m * m))
         for c in range(chunks):
             out = fast(PH[c * S:(c + 1) * S].ravel(), _ZERO2S, _ZERO2S[:S], params, target, thresh)
+            rows = Y[c * S:(c + 1) * S]
             Z[c * S:(c + 1) * S] = out[0].reshape(S, n + 2)
-            Y[c * S:(c + 1) * S, 0], Y[c * S:(c + 1) * S, 1], Y[c * S:(c + 1) * S, 2] = out[1], out[2], out[3]
-            Y[c * S:(c + 1) * S, 3:5] = out[4].reshape(S, 2)
-            Y[c * S:(c + 1) * S, 5:] = out[5].reshape(S, m * m)
+            rows[:, 0], rows[:, 1], rows[:, 2] = out[1], out[2], out[3]
+            rows[:, 3:5] = out[4].reshape(S, 2)
+            rows[:, 5:] = out[5].reshape(S, m * m)
+        Z, Y = Z[:k_all], Y[:k_all]
         Q = Z[:, :n].copy()
         Q[:, 1:] -= Z[:, :n - 1]
-        on_bound = np.any(np.abs(Q) >= limits, axis=1).tolist()
-        conv = (Y[:, 0] <= thresh).tolist()
-        results: list[LocalResult] = []
-        for j in range(k_all):
-            if conv[j]:
-                y = Y[j]
-                results.append(LocalResult(Q[j], Z[j, n:], True, "Newton_Converged", int(y[1]), on_bound[j],
-                                           float(y[2]), y[3:5], y[5:].reshape(m, m).T))
-            else:               # go on from the iterate; failing that, everything again from the start
-                r = None
-                if np.all(np.isfinite(Z[j])):
-                    r = self._kernel_newton(params, limits, target, Q[j], Z[j, n:], thresh, 50 - _kernels.SEED_ITER)
-                    if r is not None:
-                        r.iterations += _kernels.SEED_ITER
-                results.append(r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
-        return results
+        # R is Z^T H Z (symmetric): the kernel's column-major nonzeros, transposed back
+        R = Y[:, 5:].reshape(k_all, m, m).transpose(0, 2, 1).copy()
+        out_b = SeedResults(Q, Z[:, n:].copy(), Y[:, 0] <= thresh, np.any(np.abs(Q) >= limits, axis=1),
+                            Y[:, 1].astype(int), ["Newton_Converged"] * k_all, Y[:, 2].copy(), Y[:, 3:5].copy(), R)
+        for j in np.flatnonzero(~out_b.success).tolist():
+            # go on from the iterate; failing that, everything again from the start
+            r = None
+            if np.all(np.isfinite(Z[j])):
+                r = self._kernel_newton(params, limits, target, Q[j], Z[j, n:], thresh, 50 - _kernels.SEED_ITER)
+                if r is not None:
+                    r.iterations += _kernels.SEED_ITER
+            _set_row(out_b, j, r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
+        return out_b
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
@@ -675,6 +709,24 @@ class _Model:
 
 
 _ZERO2 = np.zeros(2)
+
+
+def _seed_results(results: list[LocalResult], n: int) -> SeedResults:
+    k, m = len(results), n - 2
+    out = SeedResults(np.empty((k, n)), np.empty((k, 2)), np.zeros(k, bool), np.zeros(k, bool), np.zeros(k, int),
+                      [""] * k, np.empty(k), np.empty((k, 2)), np.empty((k, m, m)))
+    for j, r in enumerate(results):
+        _set_row(out, j, r)
+    return out
+
+
+def _set_row(out: SeedResults, j: int, r: LocalResult) -> None:
+    out.q[j], out.force[j] = r.q, r.force
+    out.success[j], out.on_bound[j], out.iterations[j], out.status[j] = r.success, r.on_bound, r.iterations, r.status
+    if r.energy is None:
+        out.energy[j], out.tip[j], out.reduced_hessian[j] = np.nan, np.nan, np.nan
+    else:
+        out.energy[j], out.tip[j], out.reduced_hessian[j] = r.energy, r.tip, r.reduced_hessian
 _ZERO2S = np.zeros(2 * _kernels.SEEDS)
 _blas = None
 
