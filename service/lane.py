@@ -179,7 +179,10 @@ class SolverLane:
             raise LaneUnavailable("the solver process has too many calls")
         call_id = self._next_id
         self._next_id += 1
-        payload = pickle.dumps((fn, args, kwargs), protocol=pickle.HIGHEST_PROTOCOL)
+        try:
+            payload = pickle.dumps((fn, args, kwargs), protocol=pickle.HIGHEST_PROTOCOL)
+        except (pickle.PicklingError, TypeError, AttributeError) as exc:
+            raise LaneUnavailable(f"the call cannot be sent to the solver process: {exc}") from None
         fut: asyncio.Future[Any] = asyncio.get_running_loop().create_future()
         self._pending[call_id] = fut
         assert self._protocol is not None and self._protocol.transport is not None

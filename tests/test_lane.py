@@ -8,6 +8,7 @@ failure of that process (killed, refusing, timing out, raising) still answers th
 
 from __future__ import annotations
 
+import operator
 import os
 import signal
 import time
@@ -111,6 +112,27 @@ def test_a_saturated_solver_process_hands_the_call_back(clients):
         lane.max_in_flight = limit
     assert r.status_code == 200 and r.json() == plain.post("/v1/equilibrium", json=BODIES[0]).json()
     assert lane.completed == before
+
+
+class _FailsToUnpickle:
+    """Pickles fine here; unpickling it in the child raises ZeroDivisionError."""
+
+    def __reduce__(self):
+        return operator.truediv, (1, 0)
+
+
+def test_the_solver_process_survives_calls_it_cannot_take(clients):
+    fast, _ = clients
+    lane = fast.app.state.lanes[0]
+    pid = lane.pid
+    with pytest.raises(lane_mod.LaneUnavailable):       # cannot be pickled here: refused before sending
+        fast.portal.call(lambda: lane.run(operator.add, lambda: 0, 1, timeout=10))
+    with pytest.raises(lane_mod.LaneUnavailable):       # cannot be unpickled there: answered "failed"
+        fast.portal.call(lambda: lane.run(operator.add, _FailsToUnpickle(), 1, timeout=10))
+    with pytest.raises(lane_mod.LaneUnavailable):       # raises there: answered "failed"
+        fast.portal.call(lambda: lane.run(operator.truediv, 1, 0, timeout=10))
+    assert fast.portal.call(lambda: lane.run(operator.add, 2, 3, timeout=10)) == 5
+    assert lane.ready and lane.pid == pid
 
 
 def test_a_call_over_the_time_limit_is_a_504():
