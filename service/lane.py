@@ -24,6 +24,7 @@ Why a process, and why this lane
 from __future__ import annotations
 
 import asyncio
+import gc
 import logging
 import os
 import pickle
@@ -262,6 +263,8 @@ def child_main(fd: int) -> None:
 
     try:
         warmup_job()
+        gc.collect()
+        gc.freeze()             # as the server does: full collections skip what start-up built
         _send(sock, (-1, True, None))
     except Exception as exc:  # noqa: BLE001 - reported to the parent, which then solves itself
         _send(sock, (-1, False, repr(exc)))
