@@ -5,7 +5,8 @@ next one, until the phase ends. The client is a minimal HTTP/1.1 implementation 
 streams: httpx's ``AsyncClient`` tops out at ~200 requests/s on this 2-core machine even for
 ``GET /healthz`` (measured: p99 > 600 ms for the trivial endpoint), so it would measure itself,
 not the server, and make the ``/v1/equilibrium`` vs ``/healthz`` ratio meaningless. This client
-sustains several thousand requests/s, so the ratio reflects the server.
+sustains several thousand requests/s, so the ratio reflects the server. It runs on uvloop when
+installed: it shares the cores with the server, and its CPU per request is interference.
 
 Also: a server started for the run (``own_server``) and a single timed request (``timed_post``).
 """
@@ -205,7 +206,7 @@ def load_phase(url: str, make: RequestFactory, clients: int = 32, duration: floa
                warmup_requests: int = 2) -> PhaseStats:
     """Run ``clients`` closed-loop keep-alive clients for ``duration`` seconds (after a warm-up)."""
     host, port = _host_port(url)
-    return asyncio.run(_phase(host, port, make, clients, duration, warmup_requests))
+    return _run(_phase(host, port, make, clients, duration, warmup_requests))
 
 
 def load_phase_with_probe(url: str, make: RequestFactory, probe: RequestFactory, clients: int = 32,
@@ -223,7 +224,20 @@ def load_phase_with_probe(url: str, make: RequestFactory, probe: RequestFactory,
         stats.elapsed = probe_stats.elapsed = time.perf_counter() - start
         return stats, probe_stats
 
-    return asyncio.run(both())
+    return _run(both())
+
+
+def _run(coro):
+    """Run the load on uvloop when it is installed (the service depends on it), else asyncio's loop.
+
+    The load generator shares the machine's cores with the server under test, so its own CPU per
+    request is interference with the measurement; uvloop's event loop is C, asyncio's mostly Python.
+    """
+    try:
+        import uvloop
+    except ImportError:
+        return asyncio.run(coro)
+    return uvloop.run(coro)
 
 
 def _host_port(url: str) -> tuple[str, int]:
