@@ -18,9 +18,10 @@ from tensegrity_opt.equilibrium import Equilibrium
 
 from . import schemas as s
 from .errors import FieldContext, error_body
+from .responses import render_json
 
 __all__ = [
-    "build_manipulator", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job", "equilibrium_inline",
+    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job", "equilibrium_inline", "equilibrium_inline_args",
     "force_equilibrium_job", "equilibria_job", "buckling_job", "force_deflection_job", "stiffness_job",
     "segment_torque_job", "energy_landscape_job", "batch_job", "warmup_job",
 ]
@@ -45,11 +46,14 @@ def build_segment(seg: s.SegmentIn) -> to.Segment:
 def build_manipulator(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> to.Manipulator:
     """The chain of a request; the same description gives the same (cached, immutable) object, so its
     derived arrays, buckling modes and seed directions are computed once, not per request."""
+    return _manipulator(manipulator_key(m))
+
+
+def manipulator_key(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> tuple[Any, ...]:
+    """A chain description as a hashable tuple of plain numbers (cache key; cheap to send to a process)."""
     if isinstance(m, s.UniformManipulatorIn):
-        key: tuple[Any, ...] = ("uniform", m.n, m.a, m.b, _pair(m.k), _pair(m.L0))
-    else:
-        key = ("segments",) + tuple((seg.a, seg.b, _pair(seg.k), _pair(seg.L0)) for seg in m.segments)
-    return _manipulator(key)
+        return ("uniform", m.n, m.a, m.b, _pair(m.k), _pair(m.L0))
+    return ("segments",) + tuple((seg.a, seg.b, _pair(seg.k), _pair(seg.L0)) for seg in m.segments)
 
 
 @lru_cache(maxsize=256)
@@ -92,7 +96,7 @@ def equilibrium_out(eq: Equilibrium) -> dict[str, Any]:
             "solver": {"status": str(eq.status), "iterations": int(eq.iterations)}}
 
 
-def _q0(q0: list[float] | None) -> np.ndarray | None:
+def _q0(q0: list[float] | tuple[float, ...] | None) -> np.ndarray | None:
     return None if q0 is None else np.asarray(q0, dtype=float)
 
 
@@ -107,22 +111,31 @@ def equilibrium_job(req: s.EquilibriumRequest) -> dict[str, Any]:
     return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local))
 
 
-def equilibrium_inline(req: s.EquilibriumRequest, *, max_segments: int) -> dict[str, Any] | None:
-    """:func:`equilibrium_job` by the bounded Newton-only search, on the event loop; ``None`` when it
-    does not settle the request (long chain, bistable segments, no stable equilibrium found).
+def equilibrium_inline_args(req: s.EquilibriumRequest) -> tuple[Any, ...]:
+    """The arguments of :func:`equilibrium_inline` for a request: plain numbers, cheap to pickle."""
+    return (manipulator_key(req.manipulator), req.dx, req.dy, None if req.q0 is None else tuple(req.q0), req.local)
 
+
+def equilibrium_inline(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None, local: bool, *,
+                       max_segments: int) -> bytes | None:
+    """:func:`equilibrium_job` by the bounded Newton-only search, as the rendered JSON body; ``None``
+    when it does not settle the request (long chain, bistable segments, no stable equilibrium found).
+
+    Runs in a solver process (``service.lane``) or on the event loop, so it takes plain numbers
+    (:func:`equilibrium_inline_args`) and returns the body the route would send, rendered here
+    rather than validated and serialized again on the event loop (~65 us there per request).
     For chains of monotonic segments ``solve_equilibrium(method="auto")`` returns exactly the
     Newton-only answer whenever that finds one (and with ``local`` the same Newton solve before its
-    IPOPT fallback), so the result does not depend on the path.
+    IPOPT fallback), so the result does not depend on the path (the service tests compare the bytes).
     """
-    m = build_manipulator(req.manipulator)
+    m = _manipulator(key)
     if m.n > max_segments or not m.monotonic:
         return None
     try:
-        eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local, method="newton")
+        eq = to.solve_equilibrium(m, dx, dy, q0=_q0(q0), local=local, method="newton")
     except (to.NoEquilibriumError, to.SolverError):
         return None
-    return equilibrium_out(eq)
+    return render_json(equilibrium_out(eq))
 
 
 def force_equilibrium_job(req: s.ForceEquilibriumRequest) -> dict[str, Any]:

@@ -8,6 +8,7 @@ from collections.abc import Callable
 from typing import Any
 
 from fastapi import Request, Security
+from starlette.responses import Response
 from fastapi.security import APIKeyHeader
 
 from . import schemas as s
@@ -65,33 +66,35 @@ def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
 
 
 async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext,
-                timeout: float | None = None, inline: Callable[..., Any] | None = None) -> Any:
+                timeout: float | None = None,
+                inline: tuple[Callable[..., bytes | None], tuple[Any, ...]] | None = None) -> Any:
     """Run ``fn(*args)`` in the solver pool under the time limit; errors map through ``service.errors``.
 
-    ``inline(*args, max_segments=...)``, when given, runs first: a bounded fast path
-    (``compute.equilibrium_inline``) that returns the result, or ``None`` to hand the request to
-    the pool. It runs in a solver process (:mod:`service.lane`) when one is ready, so the event
-    loop goes on with HTTP meanwhile; otherwise (no process configured, starting, restarting,
-    saturated, or the call raised there) on the event loop itself, which also raises any error
-    again in-process. A thread hand-off costs ~0.1-0.2 ms here, as much as a whole short-chain
-    solve, hence no solver thread for this path.
+    ``inline = (g, g_args)``, when given, runs first: ``g(*g_args, max_segments=...)`` is a bounded
+    fast path (``compute.equilibrium_inline``) that returns the rendered JSON body, or ``None`` to
+    hand the request to the pool. It runs in a solver process (:mod:`service.lane`) when one is
+    ready, so the event loop goes on with HTTP meanwhile; otherwise (no process configured,
+    starting, restarting, saturated, or the call raised there) on the event loop itself, which also
+    raises any error again in-process. A thread hand-off costs ~0.1-0.2 ms here, as much as a whole
+    short-chain solve, hence no solver thread for this path.
     """
     request.state.field_context = ctx
     settings: Settings = request.app.state.settings
     timeout = timeout or settings.solve_timeout
     if inline is not None and settings.inline_max_segments:
-        out = None
+        g, g_args = inline
+        body = None
         lane = _pick_lane(request.app.state.lanes)
         try:
             if lane is None:
                 raise LaneUnavailable("no solver process")
-            out = await lane.run(inline, *args, timeout=timeout, max_segments=settings.inline_max_segments)
+            body = await lane.run(g, *g_args, timeout=timeout, max_segments=settings.inline_max_segments)
         except LaneUnavailable:
-            out = inline(*args, max_segments=settings.inline_max_segments)
+            body = g(*g_args, max_segments=settings.inline_max_segments)
         except (asyncio.TimeoutError, TimeoutError):
             raise SolveTimeout(timeout) from None
-        if out is not None:
-            return out
+        if body is not None:
+            return Response(body, media_type="application/json")
     return await request.app.state.pool.run(fn, *args, timeout=timeout)
 
 

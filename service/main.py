@@ -10,14 +10,12 @@ import asyncio
 import gc
 import json
 import logging
-import math
 from collections.abc import AsyncIterator
 from contextlib import asynccontextmanager
 from typing import Any
 
 from fastapi import FastAPI
 from fastapi.middleware.cors import CORSMiddleware
-from starlette.responses import JSONResponse
 
 import tensegrity_opt
 
@@ -28,6 +26,7 @@ from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware
 from .lane import SolverLane
 from .pool import SolverPool
+from .responses import SafeJSONResponse
 from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, plots, segment, stiffness, web
 from .routes import jobs as jobs_routes
 
@@ -66,27 +65,6 @@ TAGS = [
     {"name": "jobs", "description": "Sweeps as background jobs, stored in SQLite and resumed after a restart."},
     {"name": "ops", "description": "Health, readiness, version and Prometheus metrics."},
 ]
-
-
-def _nullify(x: Any) -> Any:
-    if isinstance(x, float):
-        return x if math.isfinite(x) else None
-    if isinstance(x, dict):
-        return {k: _nullify(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [_nullify(v) for v in x]
-    return x
-
-
-class SafeJSONResponse(JSONResponse):
-    """JSON that is always valid: a NaN or infinity that slipped through becomes ``null``."""
-
-    def render(self, content: Any) -> bytes:
-        try:
-            return json.dumps(content, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
-        except ValueError:
-            return json.dumps(_nullify(content), ensure_ascii=False, allow_nan=False,
-                              separators=(",", ":")).encode("utf-8")
 
 
 def create_app(settings: Settings | None = None) -> FastAPI:

@@ -60,7 +60,7 @@ def test_the_solver_process_answers_like_the_event_loop(clients):
     for body in BODIES:
         a, b = fast.post("/v1/equilibrium", json=body), plain.post("/v1/equilibrium", json=body)
         assert a.status_code == b.status_code == 200, (a.text, b.text)
-        assert a.json() == b.json()
+        assert a.content == b.content
     # every body went through the process (the bistable chain too: there it returns "not settled"
     # and the route hands the request to a solver thread)
     assert lane.completed - before == len(BODIES)

@@ -8,7 +8,8 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import equilibria_job, equilibrium_inline, equilibrium_job, force_equilibrium_job
+from ..compute import (equilibria_job, equilibrium_inline, equilibrium_inline_args, equilibrium_job,
+                       force_equilibrium_job)
 from ..config import Settings
 from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
 from . import solve_responses
@@ -40,7 +41,8 @@ async def solve_equilibrium(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, equilibrium_job, req, ctx=ctx, inline=equilibrium_inline)
+    return await solve(request, equilibrium_job, req, ctx=ctx,
+                       inline=(equilibrium_inline, equilibrium_inline_args(req)))
 
 
 @router.post(
