@@ -39,6 +39,7 @@ machine: about four times slower, same results.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import os
 import shutil
@@ -53,7 +54,7 @@ import casadi as ca
 import numpy as np
 
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir", "compiler",
-           "status"]
+           "seed_row", "status"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3:
 #: an n = 16 iteration costs ~13 us compiled, no better than LAPACK driven from Python).
@@ -75,6 +76,16 @@ TRIALS = 4
 MAX_STEP = 0.5
 #: Starts per ``seeds`` call and targets per ``continuation`` call.
 SEEDS = 7
+
+
+@functools.lru_cache(maxsize=None)
+def seed_row(n: int) -> dict[str, slice | int]:
+    """Where each output of a start sits in its row of the ``seeds`` kernel's output (``width``: the row
+    length): ``q`` (n), ``F`` (2), ``norm``, ``iters``, ``E``, ``tip`` (2), ``R`` ((n-2)^2, column-major),
+    ``margin`` (max |q_i| - limit_i: >= 0 means on or beyond the physical range)."""
+    m2 = (n - 2) ** 2
+    return {"q": slice(0, n), "F": slice(n, n + 2), "norm": n + 2, "iters": n + 3, "E": n + 4,
+            "tip": slice(n + 5, n + 7), "R": slice(n + 7, n + 7 + m2), "margin": n + 7 + m2, "width": n + 8 + m2}
 BATCH = 128
 
 _FLAGS = ["-O2", "-fPIC", "-shared"]
@@ -178,9 +189,8 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
         return ca.Function(f"solve{iters}", [zm, pm, tm, th], [zf, nf, its, Ef, tf, Rf])
 
     solve_it = run(ITER)
-    phi0, F0, use, pm, tm, th = (ca.MX.sym("phi0", n), ca.MX.sym("F0", 2), ca.MX.sym("use_F0"),
-                                 ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2), ca.MX.sym("thresh"))
-    Fs = ca.if_else(use, F0, ls(phi0, pm))
+    F0, use, pm, tm, th = (ca.MX.sym("F0", 2), ca.MX.sym("use_F0"), ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2),
+                           ca.MX.sym("thresh"))
     q0 = ca.MX.sym("q0", n)
     phi_q0 = ca.cumsum(q0)
     outs = solve_it(ca.vertcat(phi_q0, ca.if_else(use, F0, ls(phi_q0, pm))), pm, tm, th)
@@ -191,15 +201,19 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
                          ["q0", "F0", "use_F0", "p", "target", "thresh"],
                          ["z", "norm", "iters", "E", "tip", "R", "q", "margin"])
 
+    # the seeds of a global search: SEEDS starts (relative angles, one per column, force from eq. (8))
+    # -> one column per start, [q; F; norm; iters; E; tip; R; margin] (seed_row), read by Python as rows
     solve_s = run(SEED_ITER)
-    newton_s = ca.Function("newton_s", [phi0, F0, use, pm, tm, th], solve_s(ca.vertcat(phi0, Fs), pm, tm, th))
-    mapped = newton_s.map(SEEDS)
-    PH, F0s, US = ca.MX.sym("phi0", n, SEEDS), ca.MX.sym("F0", 2, SEEDS), ca.MX.sym("use_F0", 1, SEEDS)
-    seeds = ca.Function("seeds", [PH, F0s, US, pm, tm, th],
-                        mapped(PH, F0s, US, ca.repmat(pm, 1, SEEDS), ca.repmat(tm, 1, SEEDS),
-                               ca.repmat(th, 1, SEEDS)),
-                        ["phi0", "F0", "use_F0", "p", "target", "thresh"],
-                        ["z", "norm", "iters", "E", "tip", "R"])
+    phi_s = ca.cumsum(q0)
+    zs, ns, its_s, Es, ts, Rs = solve_s(ca.vertcat(phi_s, ls(phi_s, pm)), pm, tm, th)
+    q_s = zs[:n] - ca.vertcat(0, zs[:n - 1])
+    one = ca.Function("seed", [q0, pm, tm, th],
+                      [ca.vertcat(q_s, zs[n:], ns, its_s, Es, ts, Rs, ca.mmax(ca.fabs(q_s) - limits))])
+    Q0s = ca.MX.sym("q0", n, SEEDS)
+    seeds = ca.Function("seeds", [Q0s, pm, tm, th],
+                        [one.map(SEEDS)(Q0s, ca.repmat(pm, 1, SEEDS), ca.repmat(tm, 1, SEEDS),
+                                        ca.repmat(th, 1, SEEDS))],
+                        ["q0", "p", "target", "thresh"], ["rows"])
 
     solve_c = run(CONT_ITER)
     zc, pc, th2 = ca.MX.sym("z", n + 2), ca.MX.sym("pt", 6 * n + 3), ca.MX.sym("unused")
@@ -247,20 +261,6 @@ def _compile_with(cc: str, name: str, funcs: dict[str, ca.Function]) -> str:
         shutil.copyfile(tmp_so, staged)
         os.replace(staged, target)
         return str(target)
-        try:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            tmp_so = Path(tmp) / "out.so"
-            subprocess.run([cc, *_FLAGS, str(src_path), "-o", str(tmp_so), "-lm"], check=True,
-                           capture_output=True, timeout=300)
-            # atomic: concurrent processes may each compile; readers never see half a file
-            staged = target.with_name(f"{target.name}.{os.getpid()}.{threading.get_ident()}.tmp")
-            shutil.copyfile(tmp_so, staged)
-            os.replace(staged, target)
-        except (OSError, subprocess.SubprocessError) as exc:
-            detail = (getattr(exc, "stderr", None) or b"").decode(errors="replace")[:300]
-            _warn(f"compiling the Newton kernels with {cc} failed ({exc} {detail})")
-            return None
-    return str(target)
 
 
 def status() -> dict[str, object]:

@@ -539,31 +539,23 @@ class _Model:
             return _seed_results([self.newton_kkt(params, limits, target, q) for q in Q0], n)
         self._set_scale(params)
         thresh = 1e-12 * self._scale
-        fast, S = kern[2], _kernels.SEEDS
+        fast, S, at = kern[2], _kernels.SEEDS, _kernels.seed_row(n)
         chunks = -(-k_all // S)
-        PH = np.empty((chunks * S, n))
-        PH[:k_all] = np.cumsum(Q0, axis=1)
-        PH[k_all:] = PH[0]
-        Z, Y = np.empty((chunks * S, n + 2)), np.empty((chunks * S, 5 + m * m))
-        for c in range(chunks):
-            out = fast(PH[c * S:(c + 1) * S].ravel(), _ZERO2S, _ZERO2S[:S], params, target, thresh)
-            rows = Y[c * S:(c + 1) * S]
-            Z[c * S:(c + 1) * S] = out[0].reshape(S, n + 2)
-            rows[:, 0], rows[:, 1], rows[:, 2] = out[1], out[2], out[3]
-            rows[:, 3:5] = out[4].reshape(S, 2)
-            rows[:, 5:] = out[5].reshape(S, m * m)
-        Z, Y = Z[:k_all], Y[:k_all]
-        Q = Z[:, :n].copy()
-        Q[:, 1:] -= Z[:, :n - 1]
+        src = Q0 if k_all == chunks * S else np.vstack([Q0, np.repeat(Q0[:1], chunks * S - k_all, axis=0)])
+        Y = np.empty((chunks * S, at["width"]))
+        for c in range(chunks):           # a start's outputs are one column of the kernel's, one row here
+            Y[c * S:(c + 1) * S] = fast(src[c * S:(c + 1) * S].ravel(), params, target, thresh)[0].reshape(S, -1)
+        Y = Y[:k_all]
         # R is Z^T H Z (symmetric): the kernel's column-major nonzeros, transposed back
-        R = Y[:, 5:].reshape(k_all, m, m).transpose(0, 2, 1).copy()
-        out_b = SeedResults(Q, Z[:, n:].copy(), Y[:, 0] <= thresh, np.any(np.abs(Q) >= limits, axis=1),
-                            Y[:, 1].astype(int), ["Newton_Converged"] * k_all, Y[:, 2].copy(), Y[:, 3:5].copy(), R)
+        out_b = SeedResults(Y[:, at["q"]], Y[:, at["F"]], Y[:, at["norm"]] <= thresh, Y[:, at["margin"]] >= 0.0,
+                            Y[:, at["iters"]].astype(int), ["Newton_Converged"] * k_all, Y[:, at["E"]],
+                            Y[:, at["tip"]], Y[:, at["R"]].reshape(k_all, m, m).transpose(0, 2, 1))
         for j in np.flatnonzero(~out_b.success).tolist():
             # go on from the iterate; failing that, everything again from the start
             r = None
-            if np.all(np.isfinite(Z[j])):
-                r = self._kernel_newton(params, limits, target, Q[j], Z[j, n:], thresh, 50 - _kernels.SEED_ITER)
+            if np.all(np.isfinite(Y[j, :n + 2])):
+                r = self._kernel_newton(params, limits, target, out_b.q[j], out_b.force[j], thresh,
+                                        50 - _kernels.SEED_ITER)
                 if r is not None:
                     r.iterations += _kernels.SEED_ITER
             _set_row(out_b, j, r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
@@ -727,7 +719,6 @@ def _set_row(out: SeedResults, j: int, r: LocalResult) -> None:
         out.energy[j], out.tip[j], out.reduced_hessian[j] = np.nan, np.nan, np.nan
     else:
         out.energy[j], out.tip[j], out.reduced_hessian[j] = r.energy, r.tip, r.reduced_hessian
-_ZERO2S = np.zeros(2 * _kernels.SEEDS)
 _blas = None
 
 
