@@ -151,7 +151,6 @@ def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) 
     """Compiled continuation from ``prev`` over the reachable points from ``i``; fills ``out`` with
     the accepted (valid and stable) points and returns the index of the first one not accepted."""
     N = pts.shape[0]
-    n = m.n
     dist = np.hypot(m.straight_length - pts[i:, 0] - m.base_length, pts[i:, 1])
     bad = (dist > float(m.link_lengths.sum()) * (1 + 1e-12)) | ((pts[i:, 0] == 0.0) & (pts[i:, 1] == 0.0))
     stop = i + (int(np.argmax(bad)) if bad.any() else N - i)

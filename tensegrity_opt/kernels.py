@@ -216,7 +216,7 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
                         ["q0", "p", "target", "thresh"], ["rows"])
 
     solve_c = run(CONT_ITER)
-    zc, pc, th2 = ca.MX.sym("z", n + 2), ca.MX.sym("pt", 6 * n + 3), ca.MX.sym("unused")
+    zc, pc = ca.MX.sym("z", n + 2), ca.MX.sym("pt", 6 * n + 3)
     zf, nf, its, Ef, tf, Rf = solve_c(zc, pc[:6 * n], pc[6 * n:6 * n + 2], pc[6 * n + 2])
     point = ca.Function("point", [zc, pc], [zf, ca.vertcat(nf, its, Ef, tf, Rf)])
     cont = point.mapaccum("cont", BATCH)

@@ -10,10 +10,10 @@ from .. import examples as ex
 from .. import schemas as s
 from ..compute import buckling_job
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
+from ..deps import check_manipulator, get_settings_dep, solve
 from . import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["buckling"], dependencies=[Depends(require_api_key)])
+router = APIRouter(prefix="/v1", tags=["buckling"])
 
 
 @router.post(

@@ -10,10 +10,10 @@ from .. import examples as ex
 from .. import schemas as s
 from ..compute import force_deflection_job
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
+from ..deps import check_manipulator, get_settings_dep, solve
 from . import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["curves"], dependencies=[Depends(require_api_key)])
+router = APIRouter(prefix="/v1", tags=["curves"])
 
 
 @router.post(

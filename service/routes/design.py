@@ -10,11 +10,11 @@ from .. import examples as ex
 from .. import schemas as s
 from ..compute import design_critical_force_job, preloads_for_load_job, preloads_job, segment_count
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
+from ..deps import check_manipulator, get_settings_dep, solve
 from ..errors import ServiceError
 from . import solve_responses
 
-router = APIRouter(prefix="/v1/design", tags=["design"], dependencies=[Depends(require_api_key)])
+router = APIRouter(prefix="/v1/design", tags=["design"])
 
 _INFEASIBLE = ("design_infeasible",)
 

@@ -11,10 +11,10 @@ from .. import schemas as s
 from ..compute import (equilibria_job, equilibrium_inline, equilibrium_inline_args, equilibrium_job,
                        force_equilibrium_job)
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
+from ..deps import check_manipulator, get_settings_dep, solve
 from . import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["equilibrium"], dependencies=[Depends(require_api_key)])
+router = APIRouter(prefix="/v1", tags=["equilibrium"])
 
 _M = ex.PAPER_CHAIN
 

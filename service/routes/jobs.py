@@ -17,13 +17,12 @@ from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.sweep import write_csv
 
 from .. import job_schemas as js
-from ..deps import require_api_key
 from ..errors import ServiceError
 from ..examples import ERRORS
 from ..jobs import JobFinished, JobNotFound, JobRunner, JobsUnavailable, summary
 from ..schemas import ErrorOut
 
-router = APIRouter(prefix="/v1/jobs", tags=["jobs"], dependencies=[Depends(require_api_key)])
+router = APIRouter(prefix="/v1/jobs", tags=["jobs"])
 
 _NOT_FOUND = {"code": "not_found", "message": "no job with id '0123456789abcdef0123456789abcdef'", "field": "id"}
 _FINISHED = {"code": "job_finished", "message": "the job is already done; only queued or running jobs can be "

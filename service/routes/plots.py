@@ -20,14 +20,14 @@ from .. import examples as ex
 from .. import plot_schemas as ps
 from ..compute import build_manipulator, build_segment, deflections
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, require_api_key, solve
+from ..deps import check_manipulator, get_settings_dep, solve
 from ..errors import FieldContext
 from . import SOLVE_ERRORS, error_responses
 
 __all__ = ["router", "negotiate", "plot_curve_job", "plot_landscape_job", "plot_shapes_job", "plot_torque_job",
            "plot_map_job"]
 
-router = APIRouter(prefix="/v1/plots", tags=["plots"], dependencies=[Depends(require_api_key)])
+router = APIRouter(prefix="/v1/plots", tags=["plots"])
 
 MEDIA = {"png": "image/png", "svg": "image/svg+xml"}
 

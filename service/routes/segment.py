@@ -4,16 +4,16 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from .. import examples as ex
 from .. import schemas as s
 from ..compute import segment_torque_job
-from ..deps import require_api_key, solve
+from ..deps import solve
 from ..errors import FieldContext
 from . import error_responses, ok_response
 
-router = APIRouter(prefix="/v1", tags=["segment"], dependencies=[Depends(require_api_key)])
+router = APIRouter(prefix="/v1", tags=["segment"])
 
 
 @router.post(
