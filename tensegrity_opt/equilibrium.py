@@ -24,7 +24,7 @@ from .buckling import critical_force, tip_slope
 from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError,
                      UnreachableTargetError)
 from .manipulator import Manipulator
-from .seeds import seed_matrix
+from .seeds import seed_starts
 from .shapes import shape_label, sign_string
 from .solvers import LocalResult, model
 from .stability import analyse, inertia_of_reduced
@@ -276,7 +276,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     short = m.n <= 64
     n_random = (8 if short else 0) if n_random is None else int(n_random)
     max_modes = (6 if short else 2) if max_modes is None else int(max_modes)
-    starts = seed_matrix(m, dx, dy, max_modes=max_modes, n_random=n_random)[0]
+    starts = seed_starts(m, dx, dy, max_modes=max_modes, n_random=n_random)
     if q0 is not None:
         starts = np.vstack([q0, starts])
     statuses: dict[str, int] = {}
@@ -287,11 +287,11 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         # IPOPT from the same seeds on grids of targets, tests/test_equilibrium.py); with
         # bistable segments (K <= 0) it often lands on saddles only, so IPOPT's descent from every
         # seed is added and the union decides.
-        found, _ = search_stable(m, target, starts, statuses, minimize=False)
+        found, _ = search_stable(m, target, starts, statuses, minimize=False, least=True)
         if found and m.monotonic:
             return _pick(found, q0)
     if method == "newton":
-        found, n_unstable = search_stable(m, target, starts, statuses, minimize=False)
+        found, n_unstable = search_stable(m, target, starts, statuses, minimize=False, least=True)
         if found:
             return _pick(found, q0)
         raise NoEquilibriumError(f"Newton found no stable equilibrium for dx={dx:g}, dy={dy:g} from "
@@ -321,10 +321,16 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
 
 
 def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
-            minimize: bool) -> tuple[list[Equilibrium], int]:
-    """Local solves from every start; the distinct stable equilibria and the count of unstable ones."""
+            minimize: bool, least: bool = False) -> tuple[list[Equilibrium], int]:
+    """Local solves from every start; the distinct stable equilibria and the count of unstable ones.
+
+    ``least`` (Newton only): just the stable ones of least energy (within the tie tolerance of
+    :func:`_pick`), found by classifying the converged points in order of energy until the first
+    stable one; the unstable count then covers only the points classified (all of them when none
+    is stable).
+    """
     if not minimize:
-        return _search_stable_newton(m, target, starts, statuses)
+        return _search_stable_newton(m, target, starts, statuses, least)
     candidates: list[LocalResult] = []
     for res in (local_equilibrium(m, target, q, minimize=True) for q in starts):
         ok = is_equilibrium(m, res, target, check_residual=True)
@@ -342,10 +348,10 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
     return stable, n_unstable
 
 
-def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: dict[str, int]
+def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: dict[str, int], least: bool
                           ) -> tuple[list[Equilibrium], int]:
-    """:func:`search_stable` by Newton from every start: only the distinct converged points are looked
-    at, only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
+    """:func:`search_stable` by Newton from every start: only converged points are looked at, only
+    the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
     b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts)
     energy = b.energy.tolist()
     on_bound = b.on_bound.tolist()
@@ -359,22 +365,35 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
         statuses[key] = statuses.get(key, 0) + 1
         if good:
             idx.append(j)
-    if len(idx) > 1:
-        idx = [j for j, keep in zip(idx, distinct_rows(b.q[idx]).tolist()) if keep]
-    stable: list[Equilibrium] = []
-    n_unstable = 0
+    known = {}                                      # Python-method rows: classified from the model
     for j in idx:
-        if energy[j] == energy[j]:
-            inertia, e, tip = inertia_of_reduced(b.reduced_hessian[j]), energy[j], b.tip[j]
-            res = None
-        else:
-            res = b.result(j)
-            inertia, e, tip = _classify(m, res, True)
+        if energy[j] != energy[j]:
+            known[j] = _classify(m, b.result(j), True)
+            energy[j] = known[j][1]
+    stable: list[tuple[int, Equilibrium]] = []
+    n_unstable = 0
+    e_max = math.inf
+    for j in (sorted(idx, key=energy.__getitem__) if least else _distinct_indices(b.q, idx)):
+        if energy[j] > e_max:
+            break                                   # beyond the least stable energy and its ties
+        inertia, e, tip = known[j] if j in known else (inertia_of_reduced(b.reduced_hessian[j]), energy[j], b.tip[j])
         if inertia.stable:
-            stable.append(_build(res if res is not None else b.result(j), inertia, e, tip, True))
+            if least and e_max == math.inf:
+                e_max = e + _TIE * max(1.0, abs(e))
+            stable.append((j, _build(b.result(j), inertia, e, tip, True)))
         else:
             n_unstable += 1
-    return stable, n_unstable
+    if least:                                       # the ties in the order of the starts, duplicates dropped
+        keep = set(_distinct_indices(b.q, sorted(j for j, _ in stable)))
+        stable = sorted(((j, e) for j, e in stable if j in keep), key=lambda item: item[0])
+    return [e for _, e in stable], n_unstable
+
+
+def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
+    """The indices in ``idx`` whose rows of ``Q`` are distinct (:func:`distinct_rows`), in order."""
+    if len(idx) < 2:
+        return list(idx)
+    return [j for j, keep in zip(idx, distinct_rows(Q[idx]).tolist()) if keep]
 
 
 def _count(statuses: dict[str, int], res: LocalResult, ok: bool) -> None:
@@ -413,9 +432,13 @@ def _earlier(k: int) -> np.ndarray:
     return lower
 
 
+#: Energies within this relative distance of the least one tie (mirror images; the same point twice).
+_TIE = 1e-9
+
+
 def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:
     e_min = min(e.energy for e in stable)
-    tol = 1e-9 * max(1.0, abs(e_min))
+    tol = _TIE * max(1.0, abs(e_min))
     best = [e for e in stable if e.energy <= e_min + tol]
     if q0 is not None:
         return min(best, key=lambda e: float(np.linalg.norm(e.q - q0)))
@@ -424,6 +447,10 @@ def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:
 
 
 def _first_sign(q: np.ndarray) -> float:
+    vals = q.tolist()
+    if vals and math.isfinite(sum(vals)):           # plain floats: the common (finite) case
+        t = 1e-9 * max(1e-300, max(abs(v) for v in vals))
+        return next((1.0 if v > 0 else -1.0 for v in vals if abs(v) > t), 0.0)
     nz = q[np.abs(q) > 1e-9 * max(1e-300, float(np.abs(q).max()))]
     return float(np.sign(nz[0])) if nz.size else 0.0
 

@@ -12,6 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from functools import lru_cache
 
+import math
+
 import numpy as np
 
 from .buckling import critical_force, quad_G, tip_slope
@@ -19,7 +21,7 @@ from .errors import TensegrityError
 from .manipulator import Manipulator
 from .segment import Segment
 
-__all__ = ["Seed", "seeds", "seed_matrix"]
+__all__ = ["Seed", "seeds", "seed_matrix", "seed_starts"]
 
 
 @dataclass(frozen=True)
@@ -87,13 +89,30 @@ def _basis(m: Manipulator, max_modes: int, amplitudes: tuple[float, ...], n_rand
 def seed_matrix(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
                 n_random: int = 8, rng_seed: int = 20201) -> tuple[np.ndarray, np.ndarray, tuple[str, ...]]:
     """The seeds of :func:`seeds` as arrays: ``(Q (S, n), F (S, 2) with NaN rows where no guess, origins)``."""
-    D, fx, fy, origins, S0 = _basis(m, int(max_modes), tuple(float(a) for a in amplitudes), int(n_random),
-                                    int(rng_seed))
-    root = np.sqrt(max(float(dx), 1e-12))
-    Q = root * D + S0 * (float(dy) / float(S0 @ S0))      # plus the least-norm q with S0^T q = dy
-    r = np.max(np.abs(Q) / (m.joint_limits * 0.9), axis=1)
+    amplitudes = tuple(float(a) for a in amplitudes)
+    _, fx, fy, origins, _ = _basis(m, int(max_modes), amplitudes, int(n_random), int(rng_seed))
+    Q = seed_starts(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random, rng_seed=rng_seed)
+    return Q, np.column_stack([fx, fy * np.sqrt(max(float(dx), 1e-12))]), origins
+
+
+def seed_starts(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
+                n_random: int = 8, rng_seed: int = 20201) -> np.ndarray:
+    """The configurations of :func:`seed_matrix` alone, ``(S, n)`` (what a global search starts from)."""
+    D, _, _, _, S0 = _basis(m, int(max_modes), tuple(float(a) for a in amplitudes), int(n_random), int(rng_seed))
+    Q = math.sqrt(max(float(dx), 1e-12)) * D
+    if dy:
+        Q += S0 * (float(dy) / float(S0 @ S0))            # plus the least-norm q with S0^T q = dy
+    r = np.max(np.abs(Q) / _room(m), axis=1)
     Q /= np.maximum(r, 1.0)[:, None]
-    return Q, np.column_stack([fx, fy * root]), origins
+    return Q
+
+
+@lru_cache(maxsize=256)
+def _room(m: Manipulator) -> np.ndarray:
+    """``0.9 * joint limit`` per joint: seeds stay within 90 % of the range."""
+    room = m.joint_limits * 0.9
+    room.setflags(write=False)
+    return room
 
 
 def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),

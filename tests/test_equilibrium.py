@@ -197,3 +197,29 @@ def test_bistable_segments_use_ipopt_descent_too():
             got = solve_equilibrium(m, dx, dy)
             assert got.stable and got.energy <= ref + 1e-9 * max(1.0, abs(ref))
     assert checked >= 6
+
+
+@pytest.mark.parametrize("m", [PAPER, Manipulator([Segment(1.0, 1.0, 1.0, 1.0), Segment(0.9, 1.3, 2.0, 1.5),
+                                                   Segment(1.1, 0.8, 0.7, 0.9), Segment(1.0, 1.1, 1.5, 1.2)])])
+def test_least_energy_search_keeps_what_the_full_search_would_pick(m):
+    """search_stable(least=True) classifies in order of energy and stops after the least stable energy;
+    what it returns is exactly the full search's stable set cut to the ties of its least energy
+    (the same objects' numbers, in the same order), and the unstable count is never larger."""
+    from tensegrity_opt.equilibrium import search_stable
+    from tensegrity_opt.seeds import seed_starts
+
+    L = m.straight_length
+    for dx in np.linspace(0.02, 0.6 * L, 5):
+        for dy in (0.0, 0.13 * L, -0.2 * L):
+            target = m.target(dx, dy)
+            starts = seed_starts(m, dx, dy)
+            full, n_full = search_stable(m, target, starts, {}, minimize=False)
+            least, n_least = search_stable(m, target, starts, {}, minimize=False, least=True)
+            if not full:
+                assert not least and n_least == n_full
+                continue
+            e_min = min(e.energy for e in full)
+            ties = [e for e in full if e.energy <= e_min + 1e-9 * max(1.0, abs(e_min))]
+            assert [(e.q.tolist(), e.energy, e.iterations) for e in least] == \
+                   [(e.q.tolist(), e.energy, e.iterations) for e in ties], (dx, dy)
+            assert n_least <= n_full
