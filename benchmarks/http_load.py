@@ -29,7 +29,7 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 
-__all__ = ["PhaseStats", "load_phase", "load_phase_with_probe", "own_server", "free_port", "ServerStartError"]
+__all__ = ["PhaseStats", "load_phase", "alternating_phases", "load_phase_with_probe", "own_server", "free_port", "ServerStartError"]
 
 
 class ServerStartError(RuntimeError):
@@ -208,6 +208,25 @@ def load_phase(url: str, make: RequestFactory, clients: int = 32, duration: floa
     """Run ``clients`` closed-loop keep-alive clients for ``duration`` seconds (after a warm-up)."""
     host, port = _host_port(url)
     return _run(_phase(host, port, make, clients, duration, warmup_requests))
+
+
+def alternating_phases(url: str, makers: dict[str, RequestFactory], clients: int = 32, duration: float = 10.0,
+                       rounds: int = 4) -> dict[str, PhaseStats]:
+    """``duration`` seconds of load per request kind, in ``rounds`` alternating phases, merged per kind.
+
+    On a shared machine whose speed drifts over minutes, back-to-back phases of each kind in turn
+    expose both kinds to the same conditions, so their throughput ratio does not depend on which
+    kind happened to run in a fast minute.
+    """
+    merged = {name: PhaseStats() for name in makers}
+    for _ in range(rounds):
+        for name, make in makers.items():
+            st = load_phase(url, make, clients, duration / rounds)
+            out = merged[name]
+            out.latencies.extend(st.latencies)
+            out.statuses.update(st.statuses)
+            out.elapsed += st.elapsed
+    return merged
 
 
 def load_phase_with_probe(url: str, make: RequestFactory, probe: RequestFactory, clients: int = 32,
