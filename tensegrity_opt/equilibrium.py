@@ -232,8 +232,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         run IPOPT from ``q0``.
     n_random, max_modes : int, optional
         Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
-        for chains of up to 64 segments; 0 and 2 for longer ones, whose least-energy
-        equilibria lie on the lowest modes' branches (each seed costs O(n) per iteration).
+        for chains of up to 64 segments, plus the two arc seeds of large deflections
+        (:func:`tensegrity_opt.seeds.arc_seeds`); 0 and 2 (no arcs) for longer ones, whose
+        least-energy equilibria lie on the lowest modes' branches (each seed costs O(n) per iteration).
 
     Returns
     -------
@@ -276,7 +277,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     short = m.n <= 64
     n_random = (8 if short else 0) if n_random is None else int(n_random)
     max_modes = (6 if short else 2) if max_modes is None else int(max_modes)
-    starts = seed_starts(m, dx, dy, max_modes=max_modes, n_random=n_random)
+    starts = seed_starts(m, dx, dy, max_modes=max_modes, n_random=n_random, arcs=short)
     if q0 is not None:
         starts = np.vstack([q0, starts])
     statuses: dict[str, int] = {}

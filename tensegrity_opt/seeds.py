@@ -1,10 +1,19 @@
-"""Starting points for the global searches: buckling modes, their mirrors, random starts.
+"""Starting points for the global searches: buckling modes, their mirrors, random starts, arcs.
 
 A seed is a configuration ``q`` (and a guess of the tip force) near which a
 local solver is started. For a deflection ``(dx, dy)`` a mode ``alpha`` is
 scaled by eq. 23 (``dx ~ 1/2 t^2 alpha^T G alpha``) and shifted by the smallest
 ``q`` giving ``dy`` to first order; every seed is shrunk into the physical range.
 Random starts use a fixed-seed generator: the same call gives the same answer.
+
+The modes describe small deflections. Under large ones the least-energy shape can be a
+C curled close to the joint limits, which neither the scaled modes nor the random starts
+reach (measured: 1 of 114 random monotonic chains and targets missed it; Newton from the
+seeds stopped on the U branch, 2.1 energy units higher); two *arc* seeds cover it: every
+joint bent the same way, the same fraction of its range, ``q = ±t * limit`` with ``t <= 0.9``
+chosen so the tip lands nearest the target, used when that arc is curled (``t >= 0.25``; at
+small deflections the nearest arc is nearly straight and adds nothing). They come last, so they
+only change an answer when they find a lower minimum.
 """
 
 from __future__ import annotations
@@ -21,7 +30,7 @@ from .errors import TensegrityError
 from .manipulator import Manipulator
 from .segment import Segment
 
-__all__ = ["Seed", "seeds", "seed_matrix", "seed_starts"]
+__all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds"]
 
 
 @dataclass(frozen=True)
@@ -87,16 +96,23 @@ def _basis(m: Manipulator, max_modes: int, amplitudes: tuple[float, ...], n_rand
 
 
 def seed_matrix(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
-                n_random: int = 8, rng_seed: int = 20201) -> tuple[np.ndarray, np.ndarray, tuple[str, ...]]:
+                n_random: int = 8, rng_seed: int = 20201, arcs: bool = True
+                ) -> tuple[np.ndarray, np.ndarray, tuple[str, ...]]:
     """The seeds of :func:`seeds` as arrays: ``(Q (S, n), F (S, 2) with NaN rows where no guess, origins)``."""
     amplitudes = tuple(float(a) for a in amplitudes)
     _, fx, fy, origins, _ = _basis(m, int(max_modes), amplitudes, int(n_random), int(rng_seed))
-    Q = seed_starts(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random, rng_seed=rng_seed)
-    return Q, np.column_stack([fx, fy * np.sqrt(max(float(dx), 1e-12))]), origins
+    Q = seed_starts(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random, rng_seed=rng_seed,
+                    arcs=arcs)
+    F = np.column_stack([fx, fy * np.sqrt(max(float(dx), 1e-12))])
+    extra = Q.shape[0] - F.shape[0]                  # the arc seeds used for this target
+    if extra:
+        F = np.vstack([F, np.full((extra, 2), np.nan)])
+        origins = origins + _arc_origins(m, dx, dy)
+    return Q, F, origins
 
 
 def seed_starts(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
-                n_random: int = 8, rng_seed: int = 20201) -> np.ndarray:
+                n_random: int = 8, rng_seed: int = 20201, arcs: bool = True) -> np.ndarray:
     """The configurations of :func:`seed_matrix` alone, ``(S, n)`` (what a global search starts from)."""
     D, _, _, _, S0 = _basis(m, int(max_modes), tuple(float(a) for a in amplitudes), int(n_random), int(rng_seed))
     Q = math.sqrt(max(float(dx), 1e-12)) * D
@@ -104,7 +120,50 @@ def seed_starts(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amp
         Q += S0 * (float(dy) / float(S0 @ S0))            # plus the least-norm q with S0^T q = dy
     r = np.max(np.abs(Q) / _room(m), axis=1)
     Q /= np.maximum(r, 1.0)[:, None]
+    if arcs and m.n >= 2:
+        A = arc_seeds(m, dx, dy)
+        if A.shape[0]:
+            Q = np.vstack([Q, A])
     return Q
+
+
+def arc_seeds(m: Manipulator, dx: float, dy: float) -> np.ndarray:
+    """The arc seeds ``(k, n)``, ``k <= 2``: ``q = s * t * limit`` (the joint range ``|q| < limit``)
+    for ``s = +1, -1``, each with the fraction ``t`` of a grid over ``(0, 0.9]`` whose tip lands
+    nearest the target, kept when curled (``t >= ARC_MIN``): nearly straight arcs are the small
+    deflections the mode seeds already cover (and Newton from them converges slowly)."""
+    return np.array([s * t * _arcs(m)[0] for s, t in _arc_fractions(m, dx, dy)]).reshape(-1, m.n)
+
+
+def _arc_origins(m: Manipulator, dx: float, dy: float) -> tuple[str, ...]:
+    return tuple("arc+" if s > 0 else "arc-" for s, _ in _arc_fractions(m, dx, dy))
+
+
+def _arc_fractions(m: Manipulator, dx: float, dy: float) -> list[tuple[float, float]]:
+    shape, thetas, tips = _arcs(m)
+    tx, ty = m.target(dx, dy)
+    out = []
+    for s in (1.0, -1.0):                      # q -> -q mirrors the tip: (x, y) -> (x, -y)
+        t = float(thetas[int(np.argmin((tips[:, 0] - tx) ** 2 + (tips[:, 1] - s * ty) ** 2))])
+        if t >= ARC_MIN:
+            out.append((s, t))
+    return out
+
+
+#: Points of the grid over the arc family's fraction of the range, and the least fraction used.
+ARC_GRID = 128
+ARC_MIN = 0.25
+
+
+@lru_cache(maxsize=256)
+def _arcs(m: Manipulator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The arc family of a chain: its shape (the joint limits), the grid of fractions and the tips there."""
+    shape = np.array(m.joint_limits, dtype=float)
+    thetas = np.linspace(0.9 / ARC_GRID, 0.9, ARC_GRID)
+    tips = np.array([m.tip(t * shape) for t in thetas])
+    for a in (shape, thetas, tips):
+        a.setflags(write=False)
+    return shape, thetas, tips
 
 
 @lru_cache(maxsize=256)
@@ -116,8 +175,9 @@ def _room(m: Manipulator) -> np.ndarray:
 
 
 def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
-          n_random: int = 8, rng_seed: int = 20201) -> list[Seed]:
-    """Seeds for the deflection ``(dx, dy)``: ``±`` each mode at each amplitude factor, then random."""
+          n_random: int = 8, rng_seed: int = 20201, arcs: bool = True) -> list[Seed]:
+    """Seeds for the deflection ``(dx, dy)``: ``±`` each mode at each amplitude factor, then random,
+    then (``arcs``) the two arcs."""
     Q, F, origins = seed_matrix(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random,
-                                rng_seed=rng_seed)
+                                rng_seed=rng_seed, arcs=arcs)
     return [Seed(q, None if np.isnan(f[0]) else f, o) for q, f, o in zip(Q, F, origins)]

@@ -223,3 +223,56 @@ def test_least_energy_search_keeps_what_the_full_search_would_pick(m):
             assert [(e.q.tolist(), e.energy, e.iterations) for e in least] == \
                    [(e.q.tolist(), e.energy, e.iterations) for e in ties], (dx, dy)
             assert n_least <= n_full
+
+
+# Two asymmetric monotonic chains found by a random search (see the seeds module): under these large
+# deflections the least-energy equilibrium is a C curled near the joint limits, which the mode and
+# random seeds missed (the search returned the U branch, 6.6698 instead of 4.5947, or nothing).
+_LARGE_DEFLECTION = [
+    ([(0.8781699912119716, 1.1007219190227988, 0.9442662571352722, 1.2010074179123316, 1.789508866961235,
+       0.8422162502868251),
+      (0.774675927682128, 0.9953847179431407, 1.7772532449605976, 0.9050497919310372, 1.7876892852443016,
+       1.0934533318608768),
+      (0.7818905679212979, 1.021527236483717, 1.4808578047012813, 1.8201049907114861, 1.855360483930753,
+       1.1001941001946451),
+      (1.0473613002323532, 1.0539972085218925, 1.0792152993625055, 1.6640627982184304, 1.8770232466757157,
+       1.3750334880871655),
+      (1.1496632069781527, 0.8510483023874074, 0.7492860315892221, 1.6463016251761382, 1.1666620232766234,
+       1.5024390202238975),
+      (0.8982426640703778, 0.8583141758122244, 1.6313504903080203, 1.6121488113197824, 0.9742441063870553,
+       1.1117259699828208)], 7.5566286290524225),
+    ([(1.0623083889208083, 0.8226832541181018, 1.5992392100791228, 1.7261449035473186, 1.3342322878979198,
+       0.8749446954330838),
+      (1.0097479532673295, 0.898465463852469, 1.4650359933833297, 1.0649337636012561, 1.564596224465474,
+       1.1097618560931757),
+      (0.8859222135447771, 1.009869895613795, 1.4465197736461919, 0.8047517623628078, 1.954461290242989,
+       1.1469656908920278),
+      (0.783612079060488, 0.9025249532640583, 0.6012143908521406, 1.1343843693522557, 1.726203573580058,
+       1.651480324021818),
+      (0.7173434718241897, 0.8547727610133331, 0.9821419106023555, 1.652382730085109, 1.3856937630226704,
+       1.9078210189288232),
+      (0.993830259556162, 1.0483627122448536, 1.6515366890709833, 1.625387371539444, 1.2126057500172722,
+       1.1084100820732161),
+      (0.8625728338354093, 0.9956988723085247, 0.7125841556358787, 1.1619982925651684, 1.567787907057995,
+       0.9628574059801757)], 10.056600070360153),
+]
+
+
+@pytest.mark.parametrize("rows, dx", _LARGE_DEFLECTION, ids=["n6", "n7"])
+def test_large_deflection_c_shape_is_found(rows, dx):
+    """The least energy of the independent reference model (SLSQP from 260 starts) is what the global
+    search returns, by every method, and the shape is the C near the limits the arc seeds reach."""
+    import sys
+    from pathlib import Path
+
+    sys.path.insert(0, str(Path(__file__).parent))
+    from reference_model import Chain
+
+    m = Manipulator([Segment(a, b, (k1, k2), (L1, L2)) for a, b, k1, k2, L1, L2 in rows])
+    assert m.monotonic
+    e_ref, q_ref, _ = Chain.from_segments(rows).global_min(dx, 0.0)
+    for method in ("auto", "newton", "ipopt"):
+        eq = solve_equilibrium(m, dx, 0.0, method=method)
+        assert eq.stable and eq.energy == pytest.approx(e_ref, rel=1e-9), method
+        assert eq.shape == "C"
+        np.testing.assert_allclose(np.abs(eq.q), np.abs(q_ref), atol=1e-6)

@@ -78,7 +78,7 @@ def test_kernel_newton_equals_python_newton_from_nearby_starts(name):
     agree = 0
     for dx, dy in [(0.1, 0.0), (0.7, 0.3)]:
         target = m.target(dx, dy)
-        for s in seeds(m, dx, dy):
+        for s in seeds(m, dx, dy, arcs=False):     # the starts this comparison was written for
             p0 = _python_newton(m, target, s.q)
             if not p0.success:
                 continue
@@ -100,13 +100,17 @@ def test_seed_batch_equals_single_starts():
     starts = [s.q for s in seeds(m, 0.6, 0.1)]
     many = mdl.newton_kkt_many(m.params, m.joint_limits, target, starts)
     assert len(many) == len(starts)
+    from_kernels = 0
     for q0, r in zip(starts, many):
         one = mdl.newton_kkt(m.params, m.joint_limits, target, q0)
         assert r.success == one.success
         if r.success:
             np.testing.assert_allclose(r.q, one.q, atol=1e-9)
             np.testing.assert_allclose(r.force, one.force, atol=1e-9)
-            assert r.energy == pytest.approx(m.energy(r.q), rel=1e-12)
+            if r.energy is not None:        # None: a start the kernels left to the Python method
+                assert r.energy == pytest.approx(m.energy(r.q), rel=1e-12)
+                from_kernels += 1
+    assert from_kernels >= len(starts) - 2
 
 
 def test_continuation_kernel_matches_pointwise_solves_and_reference_model():
