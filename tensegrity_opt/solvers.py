@@ -113,7 +113,8 @@ class SeedResults:
     ``q`` (k, n), ``force`` (k, 2), ``success``/``on_bound`` (k,) bool, ``iterations`` (k,),
     ``status`` (k statuses), and the kernels' ``energy`` (k,), ``tip`` (k, 2) and
     ``reduced_hessian`` (k, n-2, n-2) at each point: NaN in the rows that came from the Python
-    Newton method (classify those from the model).
+    Newton method (classify those from the model); ``reduced_hessian`` is ``None`` when no row has
+    one (chains without kernels).
     """
 
     q: np.ndarray
@@ -124,7 +125,7 @@ class SeedResults:
     status: list[str]
     energy: np.ndarray
     tip: np.ndarray
-    reduced_hessian: np.ndarray
+    reduced_hessian: np.ndarray | None
 
     def result(self, j: int) -> LocalResult:
         """Row ``j`` as a :class:`LocalResult`."""
@@ -704,9 +705,12 @@ _ZERO2 = np.zeros(2)
 
 
 def _seed_results(results: list[LocalResult], n: int) -> SeedResults:
+    """Single results as :class:`SeedResults`; ``reduced_hessian`` only when some result has one (a long
+    chain's would be (k, n-2, n-2): never allocated for it)."""
     k, m = len(results), n - 2
+    with_r = any(r.reduced_hessian is not None for r in results)
     out = SeedResults(np.empty((k, n)), np.empty((k, 2)), np.zeros(k, bool), np.zeros(k, bool), np.zeros(k, int),
-                      [""] * k, np.empty(k), np.empty((k, 2)), np.empty((k, m, m)))
+                      [""] * k, np.empty(k), np.empty((k, 2)), np.empty((k, m, m)) if with_r else None)
     for j, r in enumerate(results):
         _set_row(out, j, r)
     return out
@@ -715,8 +719,10 @@ def _seed_results(results: list[LocalResult], n: int) -> SeedResults:
 def _set_row(out: SeedResults, j: int, r: LocalResult) -> None:
     out.q[j], out.force[j] = r.q, r.force
     out.success[j], out.on_bound[j], out.iterations[j], out.status[j] = r.success, r.on_bound, r.iterations, r.status
-    if r.energy is None:
-        out.energy[j], out.tip[j], out.reduced_hessian[j] = np.nan, np.nan, np.nan
+    if r.energy is None or out.reduced_hessian is None:
+        out.energy[j], out.tip[j] = np.nan, np.nan
+        if out.reduced_hessian is not None:
+            out.reduced_hessian[j] = np.nan
     else:
         out.energy[j], out.tip[j], out.reduced_hessian[j] = r.energy, r.tip, r.reduced_hessian
 _blas = None
