@@ -44,7 +44,6 @@ from __future__ import annotations
 
 import json
 import logging
-import math
 import os
 import sqlite3
 import threading
@@ -60,6 +59,7 @@ from typing import Any
 from tensegrity_opt.errors import InvalidParameterError
 
 from .config import Settings
+from .responses import json_safe
 
 # Names, not the module: ``tensegrity_opt.sweep`` may be re-exported as the function.
 from tensegrity_opt.sweep import count_points, format_error, validate_spec  # noqa: I001
@@ -97,18 +97,8 @@ def iso(ts: float | None) -> str | None:
     return datetime.fromtimestamp(ts, UTC).isoformat(timespec="milliseconds").replace("+00:00", "Z")
 
 
-def _json_safe(x: Any) -> Any:
-    if isinstance(x, float):
-        return x if math.isfinite(x) else None
-    if isinstance(x, dict):
-        return {k: _json_safe(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple)):
-        return [_json_safe(v) for v in x]
-    return x
-
-
 def _dumps(x: Any) -> str:
-    return json.dumps(_json_safe(x), allow_nan=False, separators=(",", ":"))
+    return json.dumps(json_safe(x), allow_nan=False, separators=(",", ":"))
 
 
 # =========================================================================== store

@@ -13,7 +13,8 @@ Why a process, and why this lane
   call raises there, :meth:`SolverLane.run` raises :class:`LaneUnavailable` and the caller runs
   the same call on the event loop, as before the lane existed; an exception is thus raised again
   in-process with its full type and mapped to HTTP like any other. A dead child is restarted
-  (at most once every ``RESTART_INTERVAL`` seconds).
+  (at most once every ``RESTART_INTERVAL`` seconds); so is one that answers no call for a whole
+  time limit (stuck).
 * Protocol: one ``socketpair``. A call is its length and id (big-endian 4 + 8 bytes) and a pickle
   of ``(function, args, kwargs)``; a reply a 4-byte length and a pickle of ``(call id, ok, result)``. The
   child is ``python -m service.lane FD`` (a fresh interpreter, no fork of a threaded server); it
@@ -171,7 +172,8 @@ class SolverLane:
         """``fn(*args, **kwargs)`` in the child (``fn`` importable by name, arguments picklable).
 
         Raises :class:`LaneUnavailable` when the child is not ready, has too many calls, dies
-        during the call, or the call raised there; ``asyncio.TimeoutError`` after ``timeout``.
+        during the call, or the call raised there; ``asyncio.TimeoutError`` after ``timeout`` (and
+        when the child answered no call at all meanwhile, it is killed as stuck and restarted).
         """
         if not self.ready:
             await self._maybe_restart()
@@ -184,14 +186,29 @@ class SolverLane:
             payload = pickle.dumps((fn, args, kwargs), protocol=pickle.HIGHEST_PROTOCOL)
         except (pickle.PicklingError, TypeError, AttributeError) as exc:
             raise LaneUnavailable(f"the call cannot be sent to the solver process: {exc}") from None
+        proto = self._protocol
+        if proto is None or proto.transport is None:            # pragma: no cover - ready implies both
+            raise LaneUnavailable("the solver process is not connected")
         fut: asyncio.Future[Any] = asyncio.get_running_loop().create_future()
         self._pending[call_id] = fut
-        assert self._protocol is not None and self._protocol.transport is not None
-        self._protocol.transport.write(_CALL.pack(len(payload), call_id) + payload)
+        progress = self.completed
+        proto.transport.write(_CALL.pack(len(payload), call_id) + payload)
         try:
             return await asyncio.wait_for(fut, timeout)
+        except (asyncio.TimeoutError, TimeoutError):
+            if self.completed == progress:
+                self._kill("answered no call within the time limit")     # stuck: restart it
+            raise
         finally:
             self._pending.pop(call_id, None)
+
+    def _kill(self, why: str) -> None:
+        """End a child that stopped answering; the closed socket then fails its calls (the callers
+        solve themselves) and the next call restarts it."""
+        proc = self._proc
+        if proc is not None and proc.poll() is None:
+            log.warning("solver process %s %s; killing it", proc.pid, why)
+            proc.kill()
 
     def _resolve(self, call_id: int, ok: bool, value: Any) -> None:
         fut = self._pending.pop(call_id, None)

@@ -8,16 +8,17 @@ from typing import Any
 
 from starlette.responses import JSONResponse
 
-__all__ = ["render_json", "SafeJSONResponse"]
+__all__ = ["render_json", "json_safe", "SafeJSONResponse"]
 
 
-def _nullify(x: Any) -> Any:
+def json_safe(x: Any) -> Any:
+    """``x`` with every NaN or infinite float (in nested dicts, lists, tuples) replaced by ``None``."""
     if isinstance(x, float):
         return x if math.isfinite(x) else None
     if isinstance(x, dict):
-        return {k: _nullify(v) for k, v in x.items()}
+        return {k: json_safe(v) for k, v in x.items()}
     if isinstance(x, (list, tuple)):
-        return [_nullify(v) for v in x]
+        return [json_safe(v) for v in x]
     return x
 
 
@@ -26,7 +27,7 @@ def render_json(content: Any) -> bytes:
     try:
         return json.dumps(content, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
     except ValueError:
-        return json.dumps(_nullify(content), ensure_ascii=False, allow_nan=False,
+        return json.dumps(json_safe(content), ensure_ascii=False, allow_nan=False,
                           separators=(",", ":")).encode("utf-8")
 
 

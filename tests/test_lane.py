@@ -135,11 +135,31 @@ def test_the_solver_process_survives_calls_it_cannot_take(clients):
     assert lane.ready and lane.pid == pid
 
 
-def test_a_call_over_the_time_limit_is_a_504():
-    with ready_client(solve_timeout=1e-6) as fast:
+def test_a_stuck_solver_process_is_killed_and_restarted(monkeypatch):
+    monkeypatch.setattr(lane_mod, "RESTART_INTERVAL", 0.0)
+    with ready_client() as fast:
+        lane = wait_ready(fast)
+        old = lane.pid
+        with pytest.raises(TimeoutError):                  # the child sleeps through the whole limit
+            fast.portal.call(lambda: lane.run(time.sleep, 30.0, timeout=0.5))
+        deadline = time.monotonic() + 30
+        while lane.ready and time.monotonic() < deadline:
+            time.sleep(0.01)
+        assert not lane.ready                              # killed as stuck
+        r = fast.post("/v1/equilibrium", json=BODIES[0])   # answered on the event loop; restart begins
+        assert r.status_code == 200
         wait_ready(fast)
-        r = fast.post("/v1/equilibrium", json=BODIES[0])
+        assert lane.pid != old and lane.restarts == 1
+
+
+def test_a_call_over_the_time_limit_is_a_504():
+    with ready_client(solve_timeout=0.5) as fast:
+        lane = wait_ready(fast)
+        busy = fast.portal.start_task_soon(lambda: lane.run(time.sleep, 3.0, timeout=10))   # occupies the child
+        r = fast.post("/v1/equilibrium", json=BODIES[0])    # queued behind it: over the 0.5 s limit
         assert r.status_code == 504 and r.json()["code"] == "timeout"
+        with pytest.raises(lane_mod.LaneUnavailable):        # no answer within the limit: killed as stuck
+            busy.result(30)
 
 
 def test_version_reports_the_solver_processes(clients):
