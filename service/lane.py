@@ -101,7 +101,7 @@ class SolverLane:
         self._ready: asyncio.Future[None] | None = None
         self._last_start = -1e9
         self._closing = False
-        self._broken = False        # the child failed its warm-up: not restarted
+        self._broken = False        # the child never got ready (failed warm-up or start): not restarted
         self.completed = 0          # calls answered by the child (statistics, tests)
         self.restarts = 0
 
@@ -225,6 +225,7 @@ class SolverLane:
             fut.set_exception(LaneUnavailable(value))
 
     def _lost(self, proto: _Protocol) -> None:
+        was_ready = self.ready
         if self._protocol is proto:
             self._protocol = None
         self._fail_pending()
@@ -235,8 +236,13 @@ class SolverLane:
             except subprocess.TimeoutExpired:
                 proc.kill()
                 code = proc.wait(1.0)
-            log.warning("solver process %s exited (status %s); requests run on the event loop until it is "
-                        "restarted", proc.pid, code)
+            if was_ready:
+                log.warning("solver process %s exited (status %s); requests run on the event loop until it "
+                            "is restarted", proc.pid, code)
+            else:               # it never got ready (cannot import the service, say): not restarted
+                self._broken = True
+                log.warning("solver process %s exited (status %s) before it was ready; requests run on the "
+                            "event loop", proc.pid, code)
             self._proc = None
 
     def _fail_pending(self) -> None:

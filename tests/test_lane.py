@@ -162,6 +162,20 @@ def test_a_call_over_the_time_limit_is_a_504():
             busy.result(30)
 
 
+def test_a_solver_process_that_cannot_start_is_not_restarted(monkeypatch):
+    """A child that dies before it is ready (here: a Python that cannot import the service) leaves the
+    requests to the event loop, once, instead of respawning every few seconds."""
+    monkeypatch.setattr(lane_mod, "RESTART_INTERVAL", 0.0)
+    monkeypatch.setattr(lane_mod.sys, "executable", "/bin/false")
+    with ready_client() as fast:
+        lane = fast.app.state.lanes[0]
+        assert not fast.portal.call(lane.wait_ready, 30.0)
+        for _ in range(3):
+            r = fast.post("/v1/equilibrium", json=BODIES[0])
+            assert r.status_code == 200
+        assert lane.restarts == 0 and not lane.ready and lane.completed == 0
+
+
 def test_version_reports_the_solver_processes(clients):
     fast, plain = clients
     assert fast.get("/version").json()["limits"]["inline_processes"] == 1
