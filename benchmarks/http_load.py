@@ -29,7 +29,8 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 
-__all__ = ["PhaseStats", "load_phase", "alternating_phases", "load_phase_with_probe", "own_server", "free_port", "ServerStartError"]
+__all__ = ["PhaseStats", "load_phase", "alternating_phases", "load_phase_with_probe", "own_server", "free_port",
+           "ServerStartError"]
 
 
 class ServerStartError(RuntimeError):

@@ -21,8 +21,9 @@ from .errors import FieldContext, error_body
 from .responses import render_json
 
 __all__ = [
-    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job", "equilibrium_inline", "equilibrium_inline_args",
-    "force_equilibrium_job", "equilibria_job", "buckling_job", "force_deflection_job", "stiffness_job",
+    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job",
+    "equilibrium_inline", "equilibrium_inline_args", "force_equilibrium_job", "equilibria_job", "buckling_job",
+    "force_deflection_job", "stiffness_job",
     "segment_torque_job", "energy_landscape_job", "batch_job", "warmup_job",
 ]
 

@@ -8,8 +8,8 @@ from collections.abc import Callable
 from typing import Any
 
 from fastapi import Request, Security
-from starlette.responses import Response
 from fastapi.security import APIKeyHeader
+from starlette.responses import Response
 
 from . import schemas as s
 from .compute import manipulator_form, segment_count

@@ -53,8 +53,8 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
-__all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir", "compiler",
-           "seed_row", "status"]
+__all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir",
+           "compiler", "seed_row", "status"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3:
 #: an n = 16 iteration costs ~13 us compiled, no better than LAPACK driven from Python).

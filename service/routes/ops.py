@@ -49,7 +49,8 @@ async def readyz(request: Request) -> Any:
         "service": "tensegrity-opt", "version": tensegrity_opt.__version__,
         "library_version": tensegrity_opt.__version__, "api": API_VERSION, "auth": False,
         "limits": {"max_segments": 200, "max_batch": 1000, "solve_timeout": 10.0, "batch_timeout": 60.0,
-                   "workers": 2, "queue_size": 64, "inline_max_segments": 8, "inline_processes": 1, "max_body_bytes": 1048576,
+                   "workers": 2, "queue_size": 64, "inline_max_segments": 8, "inline_processes": 1,
+                   "max_body_bytes": 1048576,
                    "max_curve_points": s.MAX_CURVE_POINTS, "max_grid": s.MAX_GRID,
                    "max_torque_points": s.MAX_TORQUE_POINTS},
         "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
