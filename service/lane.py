@@ -123,8 +123,9 @@ class SolverLane:
             self._proc = subprocess.Popen(
                 [sys.executable, "-m", "service.lane", str(child.fileno())], pass_fds=(child.fileno(),),
                 env={**os.environ, **(self.env or {})}, stdin=subprocess.DEVNULL)
-        except OSError:
+        except (OSError, ValueError):
             parent.close()
+            self._broken = True                 # cannot spawn here: not retried
             raise
         finally:
             child.close()
@@ -259,7 +260,7 @@ class SolverLane:
         self.restarts += 1
         try:
             await self.start()
-        except OSError as exc:          # pragma: no cover - cannot spawn
+        except (OSError, ValueError) as exc:    # pragma: no cover - cannot spawn
             log.warning("could not restart the solver process: %r", exc)
 
 

@@ -88,7 +88,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         for lane in lanes:          # the solver processes warm up while the threads do
             try:
                 await lane.start()
-            except OSError as exc:
+            except (OSError, ValueError) as exc:    # ValueError: no pass_fds on this platform
                 log.warning("could not start a solver process (requests run on the event loop): %r", exc)
         if settings.warmup:
             # One warm-up call per worker (best effort): each thread builds its CasADi instances.
