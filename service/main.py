@@ -24,9 +24,9 @@ from . import docs, errors, jobs
 from .compute import warmup_job
 from .config import Settings, get_settings
 from .deps import require_api_key
+from .lane import SolverLane
 from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware
-from .lane import SolverLane
 from .pool import SolverPool
 from .responses import SafeJSONResponse
 from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, plots, segment, stiffness, web

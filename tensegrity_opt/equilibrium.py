@@ -177,8 +177,8 @@ def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
             field="dx")
     J = m.jacobian(q)
     force = J[:, 0] * (m.gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
-    return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True, status="closed_form", iterations=0, tip=m.tip(q),
-                       control="displacement")
+    return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True, status="closed_form",
+                       iterations=0, tip=m.tip(q), control="displacement")
 
 
 def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None,
@@ -335,7 +335,7 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
     candidates: list[LocalResult] = []
     for res in (local_equilibrium(m, target, q, minimize=True) for q in starts):
         ok = is_equilibrium(m, res, target, check_residual=True)
-        _count(statuses, res, ok)
+        _count(statuses, res.status, res.on_bound, ok)
         if ok:
             candidates.append(res)
     stable: list[Equilibrium] = []
@@ -362,8 +362,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
             good = is_equilibrium(m, b.result(j), target, check_residual=False)
         else:
             good = good and not bound
-        key = b.status[j] if good else (b.status[j] + (" (on joint limit)" if bound else " (rejected)"))
-        statuses[key] = statuses.get(key, 0) + 1
+        _count(statuses, b.status[j], bound, good)
         if good:
             idx.append(j)
     known = {}                                      # Python-method rows: classified from the model
@@ -397,8 +396,9 @@ def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
     return [j for j, keep in zip(idx, distinct_rows(Q[idx]).tolist()) if keep]
 
 
-def _count(statuses: dict[str, int], res: LocalResult, ok: bool) -> None:
-    key = res.status if ok else (res.status + (" (on joint limit)" if res.on_bound else " (rejected)"))
+def _count(statuses: dict[str, int], status: str, on_bound: bool, ok: bool) -> None:
+    """Tally one local solve's outcome under its status (with why it was rejected)."""
+    key = status if ok else (status + (" (on joint limit)" if on_bound else " (rejected)"))
     statuses[key] = statuses.get(key, 0) + 1
 
 

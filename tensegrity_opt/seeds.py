@@ -18,10 +18,9 @@ only change an answer when they find a lower minimum.
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from functools import lru_cache
-
-import math
 
 import numpy as np
 
@@ -101,30 +100,34 @@ def seed_matrix(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amp
     """The seeds of :func:`seeds` as arrays: ``(Q (S, n), F (S, 2) with NaN rows where no guess, origins)``."""
     amplitudes = tuple(float(a) for a in amplitudes)
     _, fx, fy, origins, _ = _basis(m, int(max_modes), amplitudes, int(n_random), int(rng_seed))
-    Q = seed_starts(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random, rng_seed=rng_seed,
-                    arcs=arcs)
+    Q, arc_signs = _starts(m, dx, dy, max_modes, amplitudes, n_random, rng_seed, arcs)
     F = np.column_stack([fx, fy * np.sqrt(max(float(dx), 1e-12))])
-    extra = Q.shape[0] - F.shape[0]                  # the arc seeds used for this target
-    if extra:
-        F = np.vstack([F, np.full((extra, 2), np.nan)])
-        origins = origins + _arc_origins(m, dx, dy)
+    if arc_signs:                                    # the arc seeds used for this target
+        F = np.vstack([F, np.full((len(arc_signs), 2), np.nan)])
+        origins = origins + tuple("arc+" if s > 0 else "arc-" for s in arc_signs)
     return Q, F, origins
 
 
 def seed_starts(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
                 n_random: int = 8, rng_seed: int = 20201, arcs: bool = True) -> np.ndarray:
     """The configurations of :func:`seed_matrix` alone, ``(S, n)`` (what a global search starts from)."""
+    return _starts(m, dx, dy, max_modes, amplitudes, n_random, rng_seed, arcs)[0]
+
+
+def _starts(m: Manipulator, dx: float, dy: float, max_modes: int, amplitudes, n_random: int, rng_seed: int,
+            arcs: bool) -> tuple[np.ndarray, list[float]]:
+    """The seed configurations and the signs of the arc seeds among them (the last rows)."""
     D, _, _, _, S0 = _basis(m, int(max_modes), tuple(float(a) for a in amplitudes), int(n_random), int(rng_seed))
     Q = math.sqrt(max(float(dx), 1e-12)) * D
     if dy:
         Q += S0 * (float(dy) / float(S0 @ S0))            # plus the least-norm q with S0^T q = dy
     r = np.max(np.abs(Q) / _room(m), axis=1)
     Q /= np.maximum(r, 1.0)[:, None]
-    if arcs and m.n >= 2:
-        A = arc_seeds(m, dx, dy)
-        if A.shape[0]:
-            Q = np.vstack([Q, A])
-    return Q
+    fractions = _arc_fractions(m, dx, dy) if arcs and m.n >= 2 else []
+    if fractions:
+        shape = _arcs(m)[0]
+        Q = np.vstack([Q] + [s * t * shape for s, t in fractions])
+    return Q, [s for s, _ in fractions]
 
 
 def arc_seeds(m: Manipulator, dx: float, dy: float) -> np.ndarray:
@@ -133,10 +136,6 @@ def arc_seeds(m: Manipulator, dx: float, dy: float) -> np.ndarray:
     nearest the target, kept when curled (``t >= ARC_MIN``): nearly straight arcs are the small
     deflections the mode seeds already cover (and Newton from them converges slowly)."""
     return np.array([s * t * _arcs(m)[0] for s, t in _arc_fractions(m, dx, dy)]).reshape(-1, m.n)
-
-
-def _arc_origins(m: Manipulator, dx: float, dy: float) -> tuple[str, ...]:
-    return tuple("arc+" if s > 0 else "arc-" for s, _ in _arc_fractions(m, dx, dy))
 
 
 def _arc_fractions(m: Manipulator, dx: float, dy: float) -> list[tuple[float, float]]:

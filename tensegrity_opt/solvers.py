@@ -725,6 +725,8 @@ def _set_row(out: SeedResults, j: int, r: LocalResult) -> None:
             out.reduced_hessian[j] = np.nan
     else:
         out.energy[j], out.tip[j], out.reduced_hessian[j] = r.energy, r.tip, r.reduced_hessian
+
+
 _blas = None
 
 
