@@ -14,6 +14,7 @@ Both are thread-safe (solvers are cached per thread, see :mod:`.solvers`).
 
 from __future__ import annotations
 
+from collections import Counter
 import math
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
@@ -352,19 +353,17 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
 def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: dict[str, int], least: bool
                           ) -> tuple[list[Equilibrium], int]:
     """:func:`search_stable` by Newton from every start: only converged points are looked at, only
-    the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
+    the distinct ones are classified (the first of each group of coinciding points, in the order of
+    the starts), only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
     b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts)
     energy = b.energy.tolist()
     on_bound = b.on_bound.tolist()
-    idx = []
-    for j, (good, bound, e) in enumerate(zip(b.success.tolist(), on_bound, energy)):
-        if good and not bound and e != e:           # a Python-method row (no kernel outputs): full check
-            good = is_equilibrium(m, b.result(j), target, check_residual=False)
-        else:
-            good = good and not bound
-        _count(statuses, b.status[j], bound, good)
-        if good:
-            idx.append(j)
+    good = (b.success & ~b.on_bound).tolist()
+    for j in np.flatnonzero(b.success & ~b.on_bound & np.isnan(b.energy)).tolist():
+        good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
+    for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
+        _count(statuses, status, bound, ok, count)
+    idx = _distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
     known = {}                                      # Python-method rows: classified from the model
     for j in idx:
         if energy[j] != energy[j]:
@@ -373,7 +372,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     stable: list[tuple[int, Equilibrium]] = []
     n_unstable = 0
     e_max = math.inf
-    for j in (sorted(idx, key=energy.__getitem__) if least else _distinct_indices(b.q, idx)):
+    for j in (sorted(idx, key=energy.__getitem__) if least else idx):
         if energy[j] > e_max:
             break                                   # beyond the least stable energy and its ties
         inertia, e, tip = known[j] if j in known else (inertia_of_reduced(b.reduced_hessian[j]), energy[j], b.tip[j])
@@ -383,9 +382,8 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
             stable.append((j, _build(b.result(j), inertia, e, tip, True)))
         else:
             n_unstable += 1
-    if least:                                       # the ties in the order of the starts, duplicates dropped
-        keep = set(_distinct_indices(b.q, sorted(j for j, _ in stable)))
-        stable = sorted(((j, e) for j, e in stable if j in keep), key=lambda item: item[0])
+    if least:                                       # the ties in the order of the starts
+        stable.sort(key=lambda item: item[0])
     return [e for _, e in stable], n_unstable
 
 
@@ -396,10 +394,10 @@ def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
     return [j for j, keep in zip(idx, distinct_rows(Q[idx]).tolist()) if keep]
 
 
-def _count(statuses: dict[str, int], status: str, on_bound: bool, ok: bool) -> None:
-    """Tally one local solve's outcome under its status (with why it was rejected)."""
+def _count(statuses: dict[str, int], status: str, on_bound: bool, ok: bool, times: int = 1) -> None:
+    """Tally ``times`` local solves' outcome under their status (with why they were rejected)."""
     key = status if ok else (status + (" (on joint limit)" if on_bound else " (rejected)"))
-    statuses[key] = statuses.get(key, 0) + 1
+    statuses[key] = statuses.get(key, 0) + times
 
 
 #: Two configurations closer than this in every joint angle (rad) are the same equilibrium.
