@@ -265,16 +265,6 @@ class SolverLane:
 
 
 # ---------------------------------------------------------------------------- the child
-def _recv_exact(sock: socket.socket, size: int) -> bytes | None:
-    chunks = bytearray()
-    while len(chunks) < size:
-        part = sock.recv(size - len(chunks))
-        if not part:
-            return None
-        chunks += part
-    return bytes(chunks)
-
-
 def _send(sock: socket.socket, obj: Any) -> None:
     payload = pickle.dumps(obj, protocol=pickle.HIGHEST_PROTOCOL)
     sock.sendall(_HEADER.pack(len(payload)) + payload)
@@ -283,6 +273,8 @@ def _send(sock: socket.socket, obj: Any) -> None:
 def child_main(fd: int) -> None:
     """The child: warm up, then answer calls in order until the socket closes."""
     sock = socket.socket(fileno=fd)
+    # buffered: when calls queue up (many clients), one read system call takes several of them
+    calls = sock.makefile("rb", buffering=1 << 16)
     from .compute import warmup_job
 
     try:
@@ -294,12 +286,12 @@ def child_main(fd: int) -> None:
         _send(sock, (-1, False, repr(exc)))
         return
     while True:
-        head = _recv_exact(sock, _CALL.size)
-        if head is None:
+        head = calls.read(_CALL.size)
+        if len(head) < _CALL.size:
             return
         size, call_id = _CALL.unpack(head)
-        body = _recv_exact(sock, size)
-        if body is None:
+        body = calls.read(size)
+        if len(body) < size:
             return
         try:
             fn, args, kwargs = pickle.loads(body)

@@ -141,12 +141,9 @@ def arc_seeds(m: Manipulator, dx: float, dy: float) -> np.ndarray:
 def _arc_fractions(m: Manipulator, dx: float, dy: float) -> list[tuple[float, float]]:
     shape, thetas, tips = _arcs(m)
     tx, ty = m.target(dx, dy)
-    out = []
-    for s in (1.0, -1.0):                      # q -> -q mirrors the tip: (x, y) -> (x, -y)
-        t = float(thetas[int(np.argmin((tips[:, 0] - tx) ** 2 + (tips[:, 1] - s * ty) ** 2))])
-        if t >= ARC_MIN:
-            out.append((s, t))
-    return out
+    # q -> -q mirrors the tip: (x, y) -> (x, -y); rows: s = +1, -1
+    near = np.argmin((tips[:, 0] - tx) ** 2 + (tips[:, 1] - np.array([[ty], [-ty]])) ** 2, axis=1).tolist()
+    return [(s, t) for s, t in zip((1.0, -1.0), thetas[near].tolist()) if t >= ARC_MIN]
 
 
 #: Points of the grid over the arc family's fraction of the range, and the least fraction used.

@@ -38,9 +38,10 @@ async def solve_equilibrium(
         "control_step": {"summary": "control loop: the branch through the previous answer", "value": {
             "manipulator": _M, "dx": 0.101, "dy": 0.0, "q0": [0.17815, -0.07659, -0.24505, -0.13118],
             "local": True}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = check_manipulator(req.manipulator, settings)
+    # the settings from app.state, not the dependency: this route is the control loops' hot path and a
+    # FastAPI dependency costs ~15-35 us per request even when it returns at once
+    ctx = check_manipulator(req.manipulator, request.app.state.settings)
     return await solve(request, equilibrium_job, req, ctx=ctx,
                        inline=(equilibrium_inline, equilibrium_inline_args(req)))
 
