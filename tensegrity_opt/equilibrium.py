@@ -14,8 +14,8 @@ Both are thread-safe (solvers are cached per thread, see :mod:`.solvers`).
 
 from __future__ import annotations
 
-from collections import Counter
 import math
+from collections import Counter
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
 

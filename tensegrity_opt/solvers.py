@@ -469,7 +469,8 @@ class _Model:
         self._scale_params = params
         n = self.n
         a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
-        self._scale = max(1.0, float(np.max(np.maximum(k1, k2) * (a * a + b * b)))) * max(1.0, math.sqrt(n / DENSE_MAX))
+        torque = max(1.0, float(np.max(np.maximum(k1, k2) * (a * a + b * b))))
+        self._scale = torque * max(1.0, math.sqrt(n / DENSE_MAX))
 
     def newton_kkt(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray, q0: np.ndarray,
                    F0: np.ndarray | None = None, *, tol: float = 1e-12, max_iter: int = 50,
