@@ -358,8 +358,9 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts)
     energy = b.energy.tolist()
     on_bound = b.on_bound.tolist()
-    good = (b.success & ~b.on_bound).tolist()
-    for j in np.flatnonzero(b.success & ~b.on_bound & np.isnan(b.energy)).tolist():
+    inside = b.success & ~b.on_bound
+    good = inside.tolist()
+    for j in np.flatnonzero(inside & np.isnan(b.energy)).tolist():
         good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
     for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
         _count(statuses, status, bound, ok, count)
