@@ -355,7 +355,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     """:func:`search_stable` by Newton from every start: only converged points are looked at, only
     the distinct ones are classified (the first of each group of coinciding points, in the order of
     the starts), only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
-    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts)
+    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts, SAME_Q)
     energy = b.energy.tolist()
     on_bound = b.on_bound.tolist()
     inside = b.success & ~b.on_bound
@@ -364,7 +364,10 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
         good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
     for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
         _count(statuses, status, bound, ok, count)
-    idx = _distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
+    if b.distinct is not None:                    # compared by the kernel (the same test)
+        idx = np.flatnonzero(b.distinct).tolist()
+    else:
+        idx = _distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
     known = {}                                      # Python-method rows: classified from the model
     for j in idx:
         if energy[j] != energy[j]:

@@ -16,7 +16,10 @@ Kernels (``n <= KERNEL_MAX`` segments)
     Householder reflections) at the last iterate, its joint angles ``q`` and
     ``max(|q| - (pi - 2 beta))`` (non-negative on or past a joint's range bound).
 ``seeds``
-    ``newton`` with ``SEED_ITER`` iterations over ``SEEDS`` starts at once (a global search's seeds).
+    ``newton`` with ``SEED_ITER`` iterations over the starts of a global search at once
+    (``seed_columns(n)`` columns, idle ones skipped), and which of the converged points are
+    distinct (the comparison of :func:`tensegrity_opt.equilibrium.distinct_rows`, done here so the
+    search need not compare ``k^2`` rows in numpy).
 ``continuation``
     ``BATCH`` targets in order, each solved by ``CONT_ITER`` iterations from the previous
     target's solution (``mapaccum``), with the same per-point outputs.
@@ -58,8 +61,8 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
-__all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "SEEDS", "BATCH", "Kernels", "build", "cache_dir",
-           "compiler", "seed_row", "status"]
+__all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "BATCH", "Kernels", "build", "cache_dir",
+           "compiler", "seed_columns", "seed_row", "status"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3:
 #: an n = 16 iteration costs ~13 us compiled, no better than LAPACK driven from Python).
@@ -67,11 +70,12 @@ KERNEL_MAX = 8
 #: Newton iterations per ``newton`` call (a warm start 0.001 away converges in 2-3; an
 #: unconverged start is called again from where it stopped). Each costs ~1.2 us for n = 4.
 ITER = 3
-#: Newton iterations per start in ``seeds``. Measured over 300 random targets each (n = 4 paper chain,
-#: a non-uniform n = 4, n = 6): 99.5 / 78 / 89 % of the starts converge within 6 (the buckling-mode
-#: starts in 2-3, random ones in 5-6); the others go on from their iterate with ``newton``. 6
-#: instead of 8 makes the n = 4 seed call ~20 % cheaper (137 vs 168 us).
-SEED_ITER = 6
+#: Newton iterations per start in ``seeds`` (a converged start stops early, so more only costs the
+#: starts that never converge). Measured (callgrind, instructions per n = 4 global search incl. Python):
+#: 6 -> 1.65M on the benchmark's targets (a third of the searches had a start left to ``newton``, which
+#: converged within 3 more) and 1.74M on wide ones; 8 -> 1.40M / 1.53M; 10 -> 1.44M / 1.56M; 14 -> 1.45M /
+#: 1.54M. A start still unconverged goes on from its iterate with ``newton``.
+SEED_ITER = 8
 #: Newton iterations per target in ``continuation`` (neighbouring targets converge in 2-3; with 4 no
 #: continuation measured broke off early, with 3 some did and were resumed by the Python method).
 CONT_ITER = 4
@@ -79,19 +83,26 @@ CONT_ITER = 4
 TRIALS = 4
 #: Largest change of any absolute angle in one step (rad), as in the Python Newton method.
 MAX_STEP = 0.5
-#: Starts per ``seeds`` call (a global search of n = 4 has 14: 6 mode and 8 random seeds; the 2 arc
-#: seeds of large deflections make a third call) and targets per ``continuation`` call.
-SEEDS = 7
-
-
+#: Targets per ``continuation`` call.
 @functools.lru_cache(maxsize=None)
 def seed_row(n: int) -> dict[str, slice | int]:
     """Where each output of a start sits in its row of the ``seeds`` kernel's output (``width``: the row
     length): ``q`` (n), ``F`` (2), ``norm``, ``iters``, ``E``, ``tip`` (2), ``R`` ((n-2)^2, column-major),
-    ``margin`` (max |q_i| - limit_i: >= 0 means on or beyond the physical range)."""
+    ``margin`` (max |q_i| - limit_i: >= 0 means on or beyond the physical range), ``distinct`` (1 when the
+    start converged inside the range to a point differing by at least ``same`` in some joint angle from
+    every earlier such start's; :func:`tensegrity_opt.equilibrium.distinct_rows` over the call's rows)."""
     m2 = (n - 2) ** 2
     return {"q": slice(0, n), "F": slice(n, n + 2), "norm": n + 2, "iters": n + 3, "E": n + 4,
-            "tip": slice(n + 5, n + 7), "R": slice(n + 7, n + 7 + m2), "margin": n + 7 + m2, "width": n + 8 + m2}
+            "tip": slice(n + 5, n + 7), "R": slice(n + 7, n + 7 + m2), "margin": n + 7 + m2,
+            "distinct": n + 8 + m2, "width": n + 9 + m2}
+
+
+def seed_columns(n: int) -> int:
+    """Starts per ``seeds`` call: those of a default global search (``±`` each of ``min(6, n - 1)`` modes,
+    8 random, 2 arcs) and a caller's ``q0``, so that search is one call."""
+    return 2 * min(6, n - 1) + 8 + 2 + 1
+
+
 BATCH = 128
 
 _FLAGS = ["-O2", "-fPIC", "-shared"]
@@ -148,6 +159,26 @@ def _householder_null_basis(A: ca.SX) -> ca.SX:
     A1 = Q1 @ A
     Q2 = ca.diagcat(ca.SX.eye(1), reflector(A1[1:, 1]))
     return (Q1 @ Q2)[:, 2:n]
+
+
+def _distinct(n: int, cols: int) -> ca.Function:
+    """``(rows, active, thresh, same) -> distinct (1 x cols)``: a column is distinct when it is active, its
+    start converged (``norm <= thresh``) inside the range (``margin < 0``) and no earlier such column's
+    joint angles all lie within ``same`` of its own (:func:`tensegrity_opt.equilibrium.distinct_rows`, the
+    same comparisons in the same order)."""
+    at = seed_row(n)
+    Y, act, th, same = ca.SX.sym("rows", at["width"] - 1, cols), ca.SX.sym("active", 1, cols), ca.SX.sym("th"), \
+        ca.SX.sym("same")
+    good = [ca.logic_and(act[i] != 0, ca.logic_and(Y[at["norm"], i] <= th, Y[at["margin"], i] < 0))
+            for i in range(cols)]
+    out = []
+    for i in range(cols):
+        seen = ca.SX(0)
+        for j in range(i):
+            near = ca.mmax(ca.fabs(Y[at["q"], i] - Y[at["q"], j])) < same
+            seen = ca.logic_or(seen, ca.logic_and(good[j], near))
+        out.append(ca.logic_and(good[i], ca.logic_not(seen)))
+    return ca.Function("distinct", [Y, act, th, same], [ca.horzcat(*out)])
 
 
 def _graphs(n: int, sym) -> dict[str, ca.Function]:
@@ -228,19 +259,24 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
                          ["q0", "F0", "use_F0", "p", "target", "thresh"],
                          ["z", "norm", "iters", "E", "tip", "R", "q", "margin"])
 
-    # the seeds of a global search: SEEDS starts (relative angles, one per column, force from eq. (8))
-    # -> one column per start, [q; F; norm; iters; E; tip; R; margin] (seed_row), read by Python as rows
+    # the starts of a global search, one per column (relative angles; force from eq. (8)); a column whose
+    # `active` flag is 0 is not solved (padding: Switch) -> one column per start, [q; F; norm; iters; E; tip;
+    # R; margin; distinct] (seed_row), read by Python as rows
     solve_s = run(SEED_ITER)
     phi_s = ca.cumsum(q0)
     zs, ns, its_s, Es, ts, Rs = solve_s(ca.vertcat(phi_s, ls(phi_s, pm)), pm, tm, th)
     q_s = zs[:n] - ca.vertcat(0, zs[:n - 1])
+    width = seed_row(n)["width"] - 1
     one = ca.Function("seed", [q0, pm, tm, th],
                       [ca.vertcat(q_s, zs[n:], ns, its_s, Es, ts, Rs, ca.mmax(ca.fabs(q_s) - limits))])
-    Q0s = ca.MX.sym("q0", n, SEEDS)
-    seeds = ca.Function("seeds", [Q0s, pm, tm, th],
-                        [one.map(SEEDS)(Q0s, ca.repmat(pm, 1, SEEDS), ca.repmat(tm, 1, SEEDS),
-                                        ca.repmat(th, 1, SEEDS))],
-                        ["q0", "p", "target", "thresh"], ["rows"])
+    idle = ca.Function("idle", [q0, pm, tm, th], [ca.DM.zeros(width)])
+    col = ca.Function.if_else("column", one, idle)
+    cols = seed_columns(n)
+    Q0s, act, same = ca.MX.sym("q0", n, cols), ca.MX.sym("active", 1, cols), ca.MX.sym("same")
+    rows = col.map(cols)(act, Q0s, ca.repmat(pm, 1, cols), ca.repmat(tm, 1, cols), ca.repmat(th, 1, cols))
+    seeds = ca.Function("seeds", [Q0s, act, pm, tm, th, same],
+                        [ca.vertcat(rows, _distinct(n, cols)(rows, act, th, same))],
+                        ["q0", "active", "p", "target", "thresh", "same"], ["rows"])
 
     solve_c = run(CONT_ITER)
     zc, pc = ca.MX.sym("z", n + 2), ca.MX.sym("pt", 6 * n + 3)

@@ -115,7 +115,8 @@ class SeedResults:
     ``status`` (k statuses), and the kernels' ``energy`` (k,), ``tip`` (k, 2) and
     ``reduced_hessian`` (k, n-2, n-2) at each point: NaN in the rows that came from the Python
     Newton method (classify those from the model); ``reduced_hessian`` is ``None`` when no row has
-    one (chains without kernels).
+    one (chains without kernels). ``distinct`` (k,) bool when the kernel compared the rows
+    (:meth:`_Model.newton_kkt_seeds`), else ``None``.
     """
 
     q: np.ndarray
@@ -127,6 +128,7 @@ class SeedResults:
     energy: np.ndarray
     tip: np.ndarray
     reduced_hessian: np.ndarray | None
+    distinct: np.ndarray | None = None
 
     def result(self, j: int) -> LocalResult:
         """Row ``j`` as a :class:`LocalResult`."""
@@ -533,12 +535,15 @@ class _Model:
         return [batch.result(j) for j in range(len(batch.status))]
 
     def newton_kkt_seeds(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
-                         starts: np.ndarray | list[np.ndarray]) -> SeedResults:
+                         starts: np.ndarray | list[np.ndarray], same: float = 0.0) -> SeedResults:
         """:meth:`newton_kkt` from each start (force from eq. (8)); the seeds of a global search.
 
-        With kernels, ``kernels.SEEDS`` starts per compiled call (``kernels.SEED_ITER`` iterations);
-        a start not converged there goes on from its iterate with the ``newton`` kernel and, if that
-        fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
+        With kernels, up to ``kernels.seed_columns(n)`` starts per compiled call (``kernels.SEED_ITER``
+        iterations); a start not converged there goes on from its iterate with the ``newton`` kernel and,
+        if that fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
+        ``same`` > 0 (rad): the result's ``distinct`` marks the converged rows inside the range whose angles
+        differ by at least ``same`` from every earlier such row's, when one kernel call settled every start
+        (else ``distinct`` is ``None``: compare the rows yourself).
         """
         n, m = self.n, self.n - 2
         Q0 = np.asarray(starts, dtype=float).reshape(-1, n)
@@ -548,19 +553,25 @@ class _Model:
             return _seed_results([self.newton_kkt(params, limits, target, q) for q in Q0], n)
         self._set_scale(params)
         thresh = 1e-12 * self._scale
-        fast, S, at = kern[2], _kernels.SEEDS, _kernels.seed_row(n)
+        fast, S, at = kern[2], _kernels.seed_columns(n), _kernels.seed_row(n)
         chunks = -(-k_all // S)
-        src = Q0 if k_all == chunks * S else np.vstack([Q0, np.repeat(Q0[:1], chunks * S - k_all, axis=0)])
+        src = np.zeros((chunks * S, n))
+        src[:k_all] = Q0
+        active = np.zeros(chunks * S)
+        active[:k_all] = 1.0
         Y = np.empty((chunks * S, at["width"]))
         for c in range(chunks):           # a start's outputs are one column of the kernel's, one row here
-            Y[c * S:(c + 1) * S] = fast(src[c * S:(c + 1) * S].ravel(), params, target, thresh)[0].reshape(S, -1)
+            Y[c * S:(c + 1) * S] = fast(src[c * S:(c + 1) * S].ravel(), active[c * S:(c + 1) * S], params, target,
+                                        thresh, same)[0].reshape(S, -1)
         Y = Y[:k_all]
         # R is Z^T H Z (symmetric): the kernel's column-major nonzeros, transposed back
         out_b = SeedResults(Y[:, at["q"]], Y[:, at["F"]], Y[:, at["norm"]] <= thresh, Y[:, at["margin"]] >= 0.0,
                             Y[:, at["iters"]].astype(int), ["Newton_Converged"] * k_all, Y[:, at["E"]],
-                            Y[:, at["tip"]], Y[:, at["R"]].reshape(k_all, m, m).transpose(0, 2, 1))
+                            Y[:, at["tip"]], Y[:, at["R"]].reshape(k_all, m, m).transpose(0, 2, 1),
+                            Y[:, at["distinct"]] > 0.5 if chunks == 1 and same > 0.0 else None)
         for j in np.flatnonzero(~out_b.success).tolist():
             # go on from the iterate; failing that, everything again from the start
+            out_b.distinct = None             # the kernel's comparison did not see this row's final point
             r = None
             if np.all(np.isfinite(Y[j, :n + 2])):
                 r = self._kernel_newton(params, limits, target, out_b.q[j], out_b.force[j], thresh,

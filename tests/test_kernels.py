@@ -113,6 +113,65 @@ def test_seed_batch_equals_single_starts():
     assert from_kernels >= len(starts) - 2
 
 
+def _distinct_by_hand(q, good, same):
+    """Rows kept by a plain double loop: good, and no earlier good row within ``same`` in every angle."""
+    keep = []
+    for i in range(len(q)):
+        keep.append(bool(good[i]) and not any(good[j] and max(abs(a - b) for a, b in zip(q[i], q[j])) < same
+                                              for j in range(i)))
+    return np.array(keep)
+
+
+@pytest.mark.parametrize("name", ["paper", "n3", "n6 non-uniform", "n8"])
+def test_seed_call_marks_the_distinct_converged_rows(name):
+    # the kernel's marks against a double loop over the rows it returned (many starts coincide: each
+    # search below has duplicates), whether or not every start converged in the call
+    m = CHAINS[name]
+    mdl = model(m.n)
+    mdl._set_scale(m.params)
+    thresh = 1e-12 * mdl._scale
+    fast, cols, at = mdl.kernel[2], kernels.seed_columns(m.n), kernels.seed_row(m.n)
+    reach = 2 * float(np.sum(m.b))
+    dup = 0
+    for dx, dy in [(0.02 * reach, 0.0), (0.1 * reach, 0.03 * reach), (0.3 * reach, 0.0)]:
+        starts = to.seeds.seed_starts(m, dx, dy)
+        k = starts.shape[0]
+        src = np.zeros((cols, m.n))
+        src[:k] = starts
+        src[k] = starts[0]                      # one start twice: the same point, never distinct the second time
+        active = (np.arange(cols) <= k).astype(float)
+        Y = fast(src.ravel(), active, m.params, m.target(dx, dy), thresh, 1e-7)[0].reshape(cols, -1).copy()
+        good = (active > 0) & (Y[:, at["norm"]] <= thresh) & (Y[:, at["margin"]] < 0)
+        expected = _distinct_by_hand(Y[:, at["q"]].tolist(), good.tolist(), 1e-7)
+        np.testing.assert_array_equal(Y[:, at["distinct"]] > 0.5, expected)
+        assert not expected[k]
+        dup += int(good.sum() - expected.sum())
+    assert dup > 3
+
+
+def test_search_rows_carry_the_distinct_marks_only_when_one_call_settled_every_start():
+    m = CHAINS["paper"]
+    mdl = model(4)
+    target = m.target(0.1, 0.0)
+    starts = to.seeds.seed_starts(m, 0.1, 0.0)
+    b = mdl.newton_kkt_seeds(m.params, m.joint_limits, target, starts, 1e-7)
+    assert b.distinct is not None and bool(b.success.all())
+    good = b.success & ~b.on_bound
+    np.testing.assert_array_equal(b.distinct, _distinct_by_hand(b.q.tolist(), good.tolist(), 1e-7))
+    assert mdl.newton_kkt_seeds(m.params, m.joint_limits, target, starts).distinct is None     # not asked for
+
+
+def test_more_starts_than_one_call_takes_leave_the_comparison_to_the_caller():
+    m = CHAINS["paper"]
+    mdl = model(4)
+    starts = np.vstack([to.seeds.seed_starts(m, 0.4, 0.0)] * 2)
+    assert starts.shape[0] > kernels.seed_columns(4)
+    b = mdl.newton_kkt_seeds(m.params, m.joint_limits, m.target(0.4, 0.0), starts, 1e-7)
+    assert b.distinct is None
+    half = starts.shape[0] // 2
+    np.testing.assert_array_equal(b.q[:half], b.q[half:])       # the same starts give the same points
+
+
 def test_continuation_kernel_matches_pointwise_solves_and_reference_model():
     m = CHAINS["paper"]
     ref = Chain.uniform(4, 1.0, 1.0, 1.0, 1.0)
