@@ -78,6 +78,10 @@ def _num(x: Any) -> float:
 
 def _nums(a: Any) -> list[Any]:
     """``a`` as (nested) lists of finite floats, or :class:`NonFiniteResult`."""
+    if type(a) is np.ndarray and a.ndim == 1 and a.dtype == np.float64:     # the common case, as plain floats
+        vals = a.tolist()
+        if all(map(math.isfinite, vals)):
+            return vals
     arr = np.asarray(a, dtype=float)
     if not bool(np.all(np.isfinite(arr))):
         raise NonFiniteResult("the result is not finite for this input (overflow or underflow in the model)")

@@ -357,16 +357,21 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     the starts), only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
     b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts, SAME_Q)
     energy = b.energy.tolist()
-    on_bound = b.on_bound.tolist()
-    inside = b.success & ~b.on_bound
-    good = inside.tolist()
-    for j in np.flatnonzero(inside & np.isnan(b.energy)).tolist():
-        good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
-    for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
-        _count(statuses, status, bound, ok, count)
-    if b.distinct is not None:                    # compared by the kernel (the same test)
+    if b.distinct is not None:
+        # one kernel call settled every start (all converged, no Python-method row) and compared the
+        # converged points inside the range (the test of distinct_rows)
         idx = np.flatnonzero(b.distinct).tolist()
+        bound = int(np.count_nonzero(b.on_bound))
+        _count(statuses, "Newton_Converged", False, True, len(energy) - bound)
+        _count(statuses, "Newton_Converged", True, False, bound)
     else:
+        on_bound = b.on_bound.tolist()
+        inside = b.success & ~b.on_bound
+        good = inside.tolist()
+        for j in np.flatnonzero(inside & np.isnan(b.energy)).tolist():
+            good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
+        for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
+            _count(statuses, status, bound, ok, count)
         idx = _distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
     known = {}                                      # Python-method rows: classified from the model
     for j in idx:
@@ -383,7 +388,10 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
         if inertia.stable:
             if least and e_max == math.inf:
                 e_max = e + _TIE * max(1.0, abs(e))
-            stable.append((j, _build(b.result(j), inertia, e, tip, True)))
+            stable.append((j, Equilibrium(q=b.q[j].copy(), energy=e, force=b.force[j].copy(),
+                                          morse_index=inertia.morse_index, stable=True, status=b.status[j],
+                                          iterations=int(b.iterations[j]), tip=np.array(tip, dtype=float),
+                                          hessian_eigenvalues=inertia.eigenvalues)))
         else:
             n_unstable += 1
     if least:                                       # the ties in the order of the starts
@@ -400,6 +408,8 @@ def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
 
 def _count(statuses: dict[str, int], status: str, on_bound: bool, ok: bool, times: int = 1) -> None:
     """Tally ``times`` local solves' outcome under their status (with why they were rejected)."""
+    if times <= 0:
+        return
     key = status if ok else (status + (" (on joint limit)" if on_bound else " (rejected)"))
     statuses[key] = statuses.get(key, 0) + times
 

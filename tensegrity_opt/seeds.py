@@ -139,10 +139,14 @@ def arc_seeds(m: Manipulator, dx: float, dy: float) -> np.ndarray:
 
 
 def _arc_fractions(m: Manipulator, dx: float, dy: float) -> list[tuple[float, float]]:
-    shape, thetas, tips = _arcs(m)
+    _, thetas, tips = _arcs(m)
     tx, ty = m.target(dx, dy)
-    # q -> -q mirrors the tip: (x, y) -> (x, -y); rows: s = +1, -1
-    near = np.argmin((tips[:, 0] - tx) ** 2 + (tips[:, 1] - np.array([[ty], [-ty]])) ** 2, axis=1).tolist()
+    # q -> -q mirrors the tip: (x, y) -> (x, -y); rows: s = +1, -1. At ty = 0 both rows are the same
+    # distances ((y - 0)^2 is y^2 exactly): one row, from the grid's y^2 computed once per chain.
+    if ty == 0.0:
+        near = [int(np.argmin((tips[0] - tx) ** 2 + tips[2]))] * 2
+    else:
+        near = np.argmin((tips[0] - tx) ** 2 + (tips[1] - np.array([[ty], [-ty]])) ** 2, axis=1).tolist()
     return [(s, t) for s, t in zip((1.0, -1.0), thetas[near].tolist()) if t >= ARC_MIN]
 
 
@@ -153,10 +157,12 @@ ARC_MIN = 0.25
 
 @lru_cache(maxsize=256)
 def _arcs(m: Manipulator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The arc family of a chain: its shape (the joint limits), the grid of fractions and the tips there."""
+    """The arc family of a chain: its shape (the joint limits), the grid of fractions and the tips there
+    (rows: x, y, y^2)."""
     shape = np.array(m.joint_limits, dtype=float)
     thetas = np.linspace(0.9 / ARC_GRID, 0.9, ARC_GRID)
-    tips = np.array([m.tip(t * shape) for t in thetas])
+    xy = np.array([m.tip(t * shape) for t in thetas]).T
+    tips = np.vstack([xy, xy[1] ** 2])
     for a in (shape, thetas, tips):
         a.setflags(write=False)
     return shape, thetas, tips

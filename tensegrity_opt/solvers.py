@@ -25,6 +25,7 @@ import math
 import threading
 from collections import OrderedDict
 from dataclasses import dataclass
+from functools import lru_cache
 
 import casadi as ca
 import numpy as np
@@ -557,13 +558,10 @@ class _Model:
         chunks = -(-k_all // S)
         src = np.zeros((chunks * S, n))
         src[:k_all] = Q0
-        active = np.zeros(chunks * S)
-        active[:k_all] = 1.0
-        Y = np.empty((chunks * S, at["width"]))
-        for c in range(chunks):           # a start's outputs are one column of the kernel's, one row here
-            Y[c * S:(c + 1) * S] = fast(src[c * S:(c + 1) * S].ravel(), active[c * S:(c + 1) * S], params, target,
-                                        thresh, same)[0].reshape(S, -1)
-        Y = Y[:k_all]
+        # a start's outputs are one column of the kernel's, one row here (copied: the buffer is reused)
+        parts = [fast(src[c * S:(c + 1) * S].ravel(), _active(S, min(S, k_all - c * S)), params, target, thresh,
+                      same)[0].reshape(S, -1).copy() for c in range(chunks)]
+        Y = (parts[0] if chunks == 1 else np.vstack(parts))[:k_all]
         # R is Z^T H Z (symmetric): the kernel's column-major nonzeros, transposed back
         out_b = SeedResults(Y[:, at["q"]], Y[:, at["F"]], Y[:, at["norm"]] <= thresh, Y[:, at["margin"]] >= 0.0,
                             Y[:, at["iters"]].astype(int), ["Newton_Converged"] * k_all, Y[:, at["E"]],
@@ -721,6 +719,14 @@ class _Model:
 
 
 _ZERO2 = np.zeros(2)
+
+
+@lru_cache(maxsize=None)
+def _active(columns: int, k: int) -> np.ndarray:
+    """The ``seeds`` kernel's column flags for ``k`` starts (read only: passed without a copy)."""
+    a = (np.arange(columns) < k).astype(float)
+    a.setflags(write=False)
+    return a
 
 
 def _seed_results(results: list[LocalResult], n: int) -> SeedResults:
