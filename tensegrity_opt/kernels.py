@@ -165,20 +165,24 @@ def _distinct(n: int, cols: int) -> ca.Function:
     """``(rows, active, thresh, same) -> distinct (1 x cols)``: a column is distinct when it is active, its
     start converged (``norm <= thresh``) inside the range (``margin < 0``) and no earlier such column's
     joint angles all lie within ``same`` of its own (:func:`tensegrity_opt.equilibrium.distinct_rows`, the
-    same comparisons in the same order)."""
+    same comparisons). The pairs are compared by one small function mapped over them (a loop in the C
+    code; written out pair by pair the n = 8 kernel took twice as long to compile)."""
     at = seed_row(n)
-    Y, act, th, same = ca.SX.sym("rows", at["width"] - 1, cols), ca.SX.sym("active", 1, cols), ca.SX.sym("th"), \
-        ca.SX.sym("same")
-    good = [ca.logic_and(act[i] != 0, ca.logic_and(Y[at["norm"], i] <= th, Y[at["margin"], i] < 0))
-            for i in range(cols)]
-    out = []
-    for i in range(cols):
-        seen = ca.SX(0)
-        for j in range(i):
-            near = ca.mmax(ca.fabs(Y[at["q"], i] - Y[at["q"], j])) < same
-            seen = ca.logic_or(seen, ca.logic_and(good[j], near))
-        out.append(ca.logic_and(good[i], ca.logic_not(seen)))
-    return ca.Function("distinct", [Y, act, th, same], [ca.horzcat(*out)])
+    qi, qj, same = ca.SX.sym("qi", n), ca.SX.sym("qj", n), ca.SX.sym("same")
+    near = ca.Function("near", [qi, qj, same], [ca.mmax(ca.fabs(qi - qj)) < same])
+    pairs = [(i, j) for i in range(cols) for j in range(i)]
+    Y, act, th, sm = ca.MX.sym("rows", at["width"] - 1, cols), ca.MX.sym("active", 1, cols), ca.MX.sym("th"), \
+        ca.MX.sym("same")
+    Q = Y[at["q"], :]
+    close = near.map(len(pairs))(Q[:, [i for i, _ in pairs]], Q[:, [j for _, j in pairs]], ca.repmat(sm, 1, len(pairs)))
+    # the logic over the pairs' results: straight-line SX (a few hundred operations)
+    c, g = ca.SX.sym("close", 1, len(pairs)), ca.SX.sym("good", 1, cols)
+    seen = [ca.SX(0)] * cols
+    for p, (i, j) in enumerate(pairs):
+        seen[i] = ca.logic_or(seen[i], ca.logic_and(g[j], c[p]))
+    keep = ca.Function("keep", [c, g], [ca.horzcat(*[ca.logic_and(g[i], ca.logic_not(seen[i])) for i in range(cols)])])
+    good = ca.logic_and(act != 0, ca.logic_and(Y[at["norm"], :] <= th, Y[at["margin"], :] < 0))
+    return ca.Function("distinct", [Y, act, th, sm], [keep(close, good)])
 
 
 def _graphs(n: int, sym) -> dict[str, ca.Function]:
