@@ -27,7 +27,8 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from .solvers import CACHE_SIZE, IPOPT_OPTIONS, chain_expressions
+from .expressions import chain_expressions
+from .solvers import CACHE_SIZE, IPOPT_OPTIONS
 
 __all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
 

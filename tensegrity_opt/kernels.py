@@ -61,6 +61,8 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
+from .expressions import chain_expressions
+
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "BATCH", "Kernels", "build", "cache_dir",
            "compiler", "seed_columns", "seed_row", "status"]
 
@@ -185,9 +187,32 @@ def _distinct(n: int, cols: int) -> ca.Function:
     return ca.Function("distinct", [Y, act, th, sm], [keep(close, good)])
 
 
-def _graphs(n: int, sym) -> dict[str, ca.Function]:
+def _extended(p):
+    """The parameters ``p`` (6n: a, b, k1, k2, L10, L20) followed by each segment's ``beta = atan2(a, b)``
+    and ``c = sqrt(a^2 + b^2)``: computed once per kernel call instead of in every evaluation of the
+    residual (the atan2 calls were ~8 % of an n = 4 global search's instructions)."""
+    n = p.shape[0] // 6
+    a, b = p[:n], p[n:2 * n]
+    return ca.vertcat(p, ca.atan2(a, b), ca.sqrt(a * a + b * b))
+
+
+def _model(n: int):
+    """The chain's SX graph in absolute angles with the extended parameters of :func:`_extended`
+    (the graph of ``solvers._Model._sym``, ``beta`` and ``c`` read instead of computed)."""
+    phi, p, F, tgt = ca.SX.sym("phi", n), ca.SX.sym("p", 8 * n), ca.SX.sym("F", 2), ca.SX.sym("target", 2)
+    part = [p[i * n:(i + 1) * n] for i in range(8)]
+    _, _, _, E, tip = chain_expressions(phi, *part[:6], beta=part[6], c=part[7])
+    J = ca.jacobian(tip, phi)
+    gradE = ca.gradient(E, phi)
+    H = ca.hessian(E - ca.dot(F, tip), phi)[0]
+    res = ca.vertcat(gradE - J.T @ F, tip - tgt)
+    return phi, p, F, E, tip, res, ca.vertcat(phi, F), tgt, gradE, J, H
+
+
+def _graphs(n: int) -> dict[str, ca.Function]:
     """The kernel Functions (SX inside, MX wrappers for the repeated parts) for ``n`` segments."""
-    phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = sym
+    phi, p, F, E, tip, res, z, tgt, gradE, J, H = _model(n)
+    P = 8 * n                                           # extended parameters (_extended)
     kkt_jac = ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])
 
     # One damped Newton iteration on the state [z; |r(z)|] that stops once converged: the state's norm
@@ -203,7 +228,7 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
         """``(z, d, a0, |r(z)|, p, t) -> (z', |r(z')|)``: the first of the lengths a0, a0/2, ... that
         decreases the residual norm (Armijo), else ``z``."""
         zs, ds, a0s, n0s = ca.MX.sym("z", n + 2), ca.MX.sym("d", n + 2), ca.MX.sym("a0"), ca.MX.sym("n0")
-        ps, ts, zts, nts = ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2), ca.MX.sym("zt", n + 2), ca.MX.sym("nt")
+        ps, ts, zts, nts = ca.MX.sym("p", P), ca.MX.sym("t", 2), ca.MX.sym("zt", n + 2), ca.MX.sym("nt")
         args = [zs, ds, a0s, n0s, ps, ts]
         accept = ca.Function("take", [*args, zts, nts], [zts, nts])
         then = ca.Function("keep", args, [zs, n0s])     # no length accepted: stay
@@ -217,9 +242,9 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
         return then
 
     def iteration(trials: int) -> ca.Function:
-        st, pt = ca.MX.sym("state", n + 3), ca.MX.sym("pt", 6 * n + 3)
-        zz, nn, pp, tt, th_ = st[:n + 2], st[n + 2], pt[:6 * n], pt[6 * n:6 * n + 2], pt[6 * n + 2]
-        sv, nv, pv, tv = ca.MX.sym("z", n + 2), ca.MX.sym("n0"), ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2)
+        st, pt = ca.MX.sym("state", n + 3), ca.MX.sym("pt", P + 3)
+        zz, nn, pp, tt, th_ = st[:n + 2], st[n + 2], pt[:P], pt[P:P + 2], pt[P + 2]
+        sv, nv, pv, tv = ca.MX.sym("z", n + 2), ca.MX.sym("n0"), ca.MX.sym("p", P), ca.MX.sym("t", 2)
         stay = ca.Function("stay", [sv, nv, pv, tv], [sv, nv])
         d, a0 = stepf(sv, pv, tv)
         move = ca.Function("move", [sv, nv, pv, tv], line_search(trials)(sv, d, a0, nv, pv, tv))
@@ -243,7 +268,7 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
 
     def run(iters: int):
         acc = iterate.mapaccum("iterations", iters)
-        zm, pm, tm, th = ca.MX.sym("z", n + 2), ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2), ca.MX.sym("th")
+        zm, pm, tm, th = ca.MX.sym("z", n + 2), ca.MX.sym("p", P), ca.MX.sym("t", 2), ca.MX.sym("th")
         S, N0 = acc(ca.vertcat(zm, resn(zm, pm, tm)), ca.repmat(ca.vertcat(pm, tm, th), 1, iters))
         zf, nf = S[:n + 2, -1], S[n + 2, -1]
         Ef, tf, Rf = post(zf, pm, tm)
@@ -254,11 +279,12 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
     F0, use, pm, tm, th = (ca.MX.sym("F0", 2), ca.MX.sym("use_F0"), ca.MX.sym("p", 6 * n), ca.MX.sym("t", 2),
                            ca.MX.sym("thresh"))
     q0 = ca.MX.sym("q0", n)
+    pe = _extended(pm)                                  # the kernels' inputs stay the 6n parameters
     phi_q0 = ca.cumsum(q0)
-    outs = solve_it(ca.vertcat(phi_q0, ca.if_else(use, F0, ls(phi_q0, pm))), pm, tm, th)
+    outs = solve_it(ca.vertcat(phi_q0, ca.if_else(use, F0, ls(phi_q0, pe))), pe, tm, th)
     phi_f = outs[0][:n]
     q_f = phi_f - ca.vertcat(0, phi_f[:n - 1])
-    limits = np.pi - 2 * ca.atan2(pm[:n], pm[n:2 * n])               # pi - 2 beta per joint
+    limits = np.pi - 2 * pe[6 * n:7 * n]                              # pi - 2 beta per joint
     newton = ca.Function("newton", [q0, F0, use, pm, tm, th], [*outs, q_f, ca.mmax(ca.fabs(q_f) - limits)],
                          ["q0", "F0", "use_F0", "p", "target", "thresh"],
                          ["z", "norm", "iters", "E", "tip", "R", "q", "margin"])
@@ -267,28 +293,29 @@ def _graphs(n: int, sym) -> dict[str, ca.Function]:
     # `active` flag is 0 is not solved (padding: Switch) -> one column per start, [q; F; norm; iters; E; tip;
     # R; margin; distinct] (seed_row), read by Python as rows
     solve_s = run(SEED_ITER)
+    pes = ca.MX.sym("pe", P)                            # one column's inputs: the extended parameters
     phi_s = ca.cumsum(q0)
-    zs, ns, its_s, Es, ts, Rs = solve_s(ca.vertcat(phi_s, ls(phi_s, pm)), pm, tm, th)
+    zs, ns, its_s, Es, ts, Rs = solve_s(ca.vertcat(phi_s, ls(phi_s, pes)), pes, tm, th)
     q_s = zs[:n] - ca.vertcat(0, zs[:n - 1])
     width = seed_row(n)["width"] - 1
-    one = ca.Function("seed", [q0, pm, tm, th],
-                      [ca.vertcat(q_s, zs[n:], ns, its_s, Es, ts, Rs, ca.mmax(ca.fabs(q_s) - limits))])
-    idle = ca.Function("idle", [q0, pm, tm, th], [ca.DM.zeros(width)])
+    one = ca.Function("seed", [q0, pes, tm, th], [ca.vertcat(q_s, zs[n:], ns, its_s, Es, ts, Rs,
+                                                             ca.mmax(ca.fabs(q_s) - (np.pi - 2 * pes[6 * n:7 * n])))])
+    idle = ca.Function("idle", [q0, pes, tm, th], [ca.DM.zeros(width)])
     col = ca.Function.if_else("column", one, idle)
     cols = seed_columns(n)
     Q0s, act, same = ca.MX.sym("q0", n, cols), ca.MX.sym("active", 1, cols), ca.MX.sym("same")
-    rows = col.map(cols)(act, Q0s, ca.repmat(pm, 1, cols), ca.repmat(tm, 1, cols), ca.repmat(th, 1, cols))
+    rows = col.map(cols)(act, Q0s, ca.repmat(pe, 1, cols), ca.repmat(tm, 1, cols), ca.repmat(th, 1, cols))
     seeds = ca.Function("seeds", [Q0s, act, pm, tm, th, same],
                         [ca.vertcat(rows, _distinct(n, cols)(rows, act, th, same))],
                         ["q0", "active", "p", "target", "thresh", "same"], ["rows"])
 
     solve_c = run(CONT_ITER)
-    zc, pc = ca.MX.sym("z", n + 2), ca.MX.sym("pt", 6 * n + 3)
-    zf, nf, its, Ef, tf, Rf = solve_c(zc, pc[:6 * n], pc[6 * n:6 * n + 2], pc[6 * n + 2])
+    zc, pc = ca.MX.sym("z", n + 2), ca.MX.sym("pt", P + 3)
+    zf, nf, its, Ef, tf, Rf = solve_c(zc, pc[:P], pc[P:P + 2], pc[P + 2])
     point = ca.Function("point", [zc, pc], [zf, ca.vertcat(nf, its, Ef, tf, Rf)])
     cont = point.mapaccum("cont", BATCH)
     z0, T = ca.MX.sym("z0", n + 2), ca.MX.sym("targets", 2, BATCH)
-    Zc, Yc = cont(z0, ca.vertcat(ca.repmat(pm, 1, BATCH), T, ca.repmat(th, 1, BATCH)))
+    Zc, Yc = cont(z0, ca.vertcat(ca.repmat(pe, 1, BATCH), T, ca.repmat(th, 1, BATCH)))
     continuation = ca.Function("continuation", [z0, T, pm, th], [Zc, Yc],
                                ["z0", "targets", "p", "thresh"], ["Z", "Y"])
     return {"newton": newton, "seeds": seeds, "continuation": continuation}
@@ -356,7 +383,7 @@ _NAMES = ("newton", "seeds", "continuation")
 _loaded: dict[int, str] = {}
 
 
-def build(n: int, sym) -> Kernels:
+def build(n: int) -> Kernels:
     """Kernels for ``n`` segments; ``sym`` is the model's SX graph (see ``solvers._Model._sym``).
 
     The library is compiled once per machine and its path found once per process; every call
@@ -369,7 +396,7 @@ def build(n: int, sym) -> Kernels:
     with _lock:
         path = _loaded.get(n)
         if path is None:
-            funcs = _graphs(n, sym)
+            funcs = _graphs(n)
             path = _loaded[n] = _compile(n, funcs) or ""
     if path:
         try:
@@ -378,5 +405,5 @@ def build(n: int, sym) -> Kernels:
             _warn(f"loading {path} failed ({exc})")
             with _lock:
                 _loaded[n] = ""
-    funcs = funcs or _graphs(n, sym)                 # this thread's own instances
+    funcs = funcs or _graphs(n)                 # this thread's own instances
     return Kernels(n, funcs["newton"].expand(), funcs["seeds"], funcs["continuation"], "virtual machine")

@@ -33,6 +33,7 @@ import scipy.linalg as sla
 from scipy.linalg.lapack import dgesv as _dgesv
 
 from . import kernels as _kernels
+from .expressions import chain_expressions
 
 __all__ = ["LocalResult", "SeedResults", "Continuation", "model", "IPOPT_OPTIONS"]
 
@@ -137,27 +138,6 @@ class SeedResults:
         return LocalResult(self.q[j], self.force[j], bool(self.success[j]), self.status[j], int(self.iterations[j]),
                            bool(self.on_bound[j]), float(self.energy[j]) if known else None,
                            self.tip[j] if known else None, self.reduced_hessian[j] if known else None)
-
-
-def _q_of_phi(phi):
-    return phi - ca.vertcat(0, phi[:-1])
-
-
-def chain_expressions(phi, a, b, k1, k2, L10, L20):
-    """The chain's model in absolute angles as CasADi expressions (SX or MX).
-
-    Returns ``(q, L1, L2, E, tip)``: relative angles, spring lengths, elastic energy and tip
-    position (conventions.md); every argument is a column of length ``n``.
-    """
-    q = _q_of_phi(phi)
-    c = ca.sqrt(a * a + b * b)
-    beta = ca.atan2(a, b)
-    L1 = 2 * c * ca.cos(beta + q / 2)
-    L2 = 2 * c * ca.cos(beta - q / 2)
-    E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
-    links = b + ca.vertcat(b[1:], 0) if phi.shape[0] > 1 else b
-    tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
-    return q, L1, L2, E, tip
 
 
 #: Chains up to this many segments use dense linear algebra; longer ones sparse (O(n)) paths.
@@ -271,7 +251,7 @@ class _Model:
         fast wrappers, for ``2 <= n <= kernels.KERNEL_MAX``; else ``None``. Built on first use."""
         if self._kern is None:
             if 2 <= self.n <= _kernels.KERNEL_MAX:
-                k = _kernels.build(self.n, self._sym)
+                k = _kernels.build(self.n)
                 self._kern = (k, _Fast(k.newton), _Fast(k.seeds), _Fast(k.continuation))
             else:
                 self._kern = False

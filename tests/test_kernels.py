@@ -252,7 +252,7 @@ def test_a_failing_compiler_warns_and_falls_back_to_the_virtual_machine(tmp_path
 def test_kernels_exist_only_for_short_chains():
     assert model(kernels.KERNEL_MAX + 1).kernel is None
     with pytest.raises(ValueError):
-        kernels.build(1, None)
+        kernels.build(1)
 
 
 @pytest.mark.skipif(kernels.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")

@@ -1,0 +1,34 @@
+"""The chain's model as CasADi expressions: the one symbolic definition every solver builds on.
+
+Kept apart from :mod:`.solvers` (IPOPT, Newton) and :mod:`.kernels` (compiled Newton), which both
+build their graphs from it.
+"""
+
+from __future__ import annotations
+
+import casadi as ca
+
+__all__ = ["chain_expressions"]
+
+
+def _q_of_phi(phi):
+    return phi - ca.vertcat(0, phi[:-1])
+
+
+def chain_expressions(phi, a, b, k1, k2, L10, L20, *, beta=None, c=None):
+    """The chain's model in absolute angles as CasADi expressions (SX or MX).
+
+    Returns ``(q, L1, L2, E, tip)``: relative angles, spring lengths, elastic energy and tip
+    position (conventions.md); every argument is a column of length ``n``. ``beta = atan2(a, b)``
+    and ``c = sqrt(a^2 + b^2)`` may be given (symbols computed once elsewhere) instead of being part
+    of every evaluation.
+    """
+    q = _q_of_phi(phi)
+    c = ca.sqrt(a * a + b * b) if c is None else c
+    beta = ca.atan2(a, b) if beta is None else beta
+    L1 = 2 * c * ca.cos(beta + q / 2)
+    L2 = 2 * c * ca.cos(beta - q / 2)
+    E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
+    links = b + ca.vertcat(b[1:], 0) if phi.shape[0] > 1 else b
+    tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
+    return q, L1, L2, E, tip
