@@ -61,7 +61,7 @@ from pathlib import Path
 import casadi as ca
 import numpy as np
 
-from .expressions import chain_expressions
+from .expressions import kkt_graph
 
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "BATCH", "Kernels", "build", "cache_dir",
            "compiler", "seed_columns", "seed_row", "status"]
@@ -85,7 +85,8 @@ CONT_ITER = 4
 TRIALS = 4
 #: Largest change of any absolute angle in one step (rad), as in the Python Newton method.
 MAX_STEP = 0.5
-#: Targets per ``continuation`` call.
+
+
 @functools.lru_cache(maxsize=None)
 def seed_row(n: int) -> dict[str, slice | int]:
     """Where each output of a start sits in its row of the ``seeds`` kernel's output (``width``: the row
@@ -105,6 +106,7 @@ def seed_columns(n: int) -> int:
     return 2 * min(6, n - 1) + 8 + 2 + 1
 
 
+#: Targets per ``continuation`` call.
 BATCH = 128
 
 _FLAGS = ["-O2", "-fPIC", "-shared"]
@@ -189,29 +191,17 @@ def _distinct(n: int, cols: int) -> ca.Function:
 
 def _extended(p):
     """The parameters ``p`` (6n: a, b, k1, k2, L10, L20) followed by each segment's ``beta = atan2(a, b)``
-    and ``c = sqrt(a^2 + b^2)``: computed once per kernel call instead of in every evaluation of the
-    residual (the atan2 calls were ~8 % of an n = 4 global search's instructions)."""
+    and ``c = sqrt(a^2 + b^2)`` (the parameters of ``kkt_graph(n, extended=True)``): computed once per
+    kernel call instead of in every evaluation of the residual (the atan2 calls were ~8 % of an n = 4
+    global search's instructions)."""
     n = p.shape[0] // 6
     a, b = p[:n], p[n:2 * n]
     return ca.vertcat(p, ca.atan2(a, b), ca.sqrt(a * a + b * b))
 
 
-def _model(n: int):
-    """The chain's SX graph in absolute angles with the extended parameters of :func:`_extended`
-    (the graph of ``solvers._Model._sym``, ``beta`` and ``c`` read instead of computed)."""
-    phi, p, F, tgt = ca.SX.sym("phi", n), ca.SX.sym("p", 8 * n), ca.SX.sym("F", 2), ca.SX.sym("target", 2)
-    part = [p[i * n:(i + 1) * n] for i in range(8)]
-    _, _, _, E, tip = chain_expressions(phi, *part[:6], beta=part[6], c=part[7])
-    J = ca.jacobian(tip, phi)
-    gradE = ca.gradient(E, phi)
-    H = ca.hessian(E - ca.dot(F, tip), phi)[0]
-    res = ca.vertcat(gradE - J.T @ F, tip - tgt)
-    return phi, p, F, E, tip, res, ca.vertcat(phi, F), tgt, gradE, J, H
-
-
 def _graphs(n: int) -> dict[str, ca.Function]:
     """The kernel Functions (SX inside, MX wrappers for the repeated parts) for ``n`` segments."""
-    phi, p, F, E, tip, res, z, tgt, gradE, J, H = _model(n)
+    phi, p, F, _, E, tip, res, z, tgt, gradE, J, H = kkt_graph(n, extended=True)
     P = 8 * n                                           # extended parameters (_extended)
     kkt_jac = ca.blockcat([[H, -J.T], [J, ca.SX(2, 2)]])
 
@@ -384,7 +374,7 @@ _loaded: dict[int, str] = {}
 
 
 def build(n: int) -> Kernels:
-    """Kernels for ``n`` segments; ``sym`` is the model's SX graph (see ``solvers._Model._sym``).
+    """Kernels for ``n`` segments (graphs from :func:`tensegrity_opt.expressions.kkt_graph`).
 
     The library is compiled once per machine and its path found once per process; every call
     returns new ``Function`` instances, for the calling thread's model (a CasADi Function
@@ -405,5 +395,5 @@ def build(n: int) -> Kernels:
             _warn(f"loading {path} failed ({exc})")
             with _lock:
                 _loaded[n] = ""
-    funcs = funcs or _graphs(n)                 # this thread's own instances
+    funcs = funcs or _graphs(n)                      # this thread's own instances
     return Kernels(n, funcs["newton"].expand(), funcs["seeds"], funcs["continuation"], "virtual machine")

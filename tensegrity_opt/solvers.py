@@ -33,7 +33,7 @@ import scipy.linalg as sla
 from scipy.linalg.lapack import dgesv as _dgesv
 
 from . import kernels as _kernels
-from .expressions import chain_expressions
+from .expressions import kkt_graph
 
 __all__ = ["LocalResult", "SeedResults", "Continuation", "model", "IPOPT_OPTIONS"]
 
@@ -228,21 +228,7 @@ class _Model:
     def _sym(self):
         """The SX graph: (phi, p, F, q, E, tip, KKT residual, z, target, grad E, J, H)."""
         if self._sx is None:
-            n = self.n
-            phi = ca.SX.sym("phi", n)
-            p = ca.SX.sym("p", 6 * n)
-            F = ca.SX.sym("F", 2)
-            q, _, _, E, tip = chain_expressions(phi, *(p[i * n:(i + 1) * n] for i in range(6)))
-            J = ca.jacobian(tip, phi)
-            gradE = ca.gradient(E, phi)
-            H = ca.hessian(E - ca.dot(F, tip), phi)[0]
-            tgt = ca.SX.sym("target", 2)
-            # KKT of min E s.t. tip = target:  grad E - J^T F = 0, tip - target = 0. Its Jacobian
-            # [[H, -J^T], [J, 0]] is assembled from blocks by the users of this graph: asking
-            # CasADi for jacobian(res, z) colours a matrix with a dense row and column, O(n^2).
-            res = ca.vertcat(gradE - J.T @ F, tip - tgt)
-            z = ca.vertcat(phi, F)
-            self._sx = (phi, p, F, q, E, tip, res, z, tgt, gradE, J, H)
+            self._sx = kkt_graph(self.n)
         return self._sx
 
     @property
