@@ -31,10 +31,11 @@ import numpy as np
 from .batch import continuation_prefix
 from .buckling import critical_force
 from .equilibria import find_equilibria
-from .equilibrium import Equilibrium, make_equilibrium, search_stable, straight_equilibrium, solve_equilibrium
+from .equilibrium import (WELLS_MAX, Equilibrium, make_equilibrium, search_stable, straight_equilibrium,
+                          solve_equilibrium)
 from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from .manipulator import Manipulator
-from .seeds import seeds
+from .seeds import seed_starts, well_seeds
 from .shapes import shape_label, shape_labels
 from .solvers import model
 
@@ -171,11 +172,21 @@ def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndar
         s = i
 
 
+def _newton_stable(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
+    """Every stable equilibrium Newton finds from the global search's seeds and, on a multistable
+    chain, from every combination of the segments' wells (:func:`~tensegrity_opt.seeds.well_seeds`)."""
+    target = m.target(dx, dy)
+    starts = seed_starts(m, dx, dy)
+    if not m.monotonic:
+        wells = well_seeds(m, dx, dy, hilltops=False, cap=WELLS_MAX)
+        if wells.shape[0]:
+            starts = np.vstack([starts, wells])
+    return search_stable(m, target, starts, {}, minimize=False)[0]
+
+
 def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
     """Every stable equilibrium the Newton-seeded global search finds (IPOPT when it finds none)."""
-    target = m.target(dx, dy)
-    starts = [s.q for s in seeds(m, dx, dy)]
-    stable, _ = search_stable(m, target, starts, {}, minimize=False)
+    stable = _newton_stable(m, dx, dy)
     if not stable:
         try:
             stable = [solve_equilibrium(m, dx, dy)]
@@ -219,6 +230,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     branches: list[_Branch] = []
     sel = np.full(npts, -1, dtype=int)
     mirror_free = m == m.mirrored() and np.all(dys == 0.0)
+    multistable = not m.monotonic and n >= 2
 
     def new_branch(i: int, eq: Equilibrium, stop: int) -> _Branch:
         br = _Branch(len(branches), npts, n)
@@ -241,6 +253,12 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         current = None
         since = 0
         for j in range(i, stop):
+            if multistable and j > i:
+                # stable branches are born inside the range (folds): search at every point and
+                # follow each stable equilibrium that lies on no branch followed so far
+                for g in _newton_stable(m, dxs[j], dys[j]):
+                    if not any(br.valid[j] and np.max(np.abs(br.q[j] - g.q)) < 1e-6 for br in branches):
+                        new_branch(j, g, stop)
             live = [br for br in branches if br.valid[j] and br.stable[j]]
             since += 1
             if not live or (recheck_every and since >= recheck_every and j > i):

@@ -24,10 +24,16 @@ from .segment import Segment
 from .solvers import RANGE_SHRINK, model
 
 __all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
-           "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES"]
+           "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES",
+           "K_FLOOR_REL"]
 
 #: Per-segment design variables of the buckling design problem (symmetric segments).
 DESIGN_VARIABLES = ("a", "b", "k", "L0")
+#: Default floor on every joint stiffness in the buckling design problems, relative to the initial
+#: chain's stiffness scale ``max_i k_i (a_i^2 + b_i^2)``: condition (4) is ``K_i > 0`` (strict), so
+#: the design problem imposes ``K_i >= K_FLOOR_REL * scale``. An optimum that wants ``K_i -> 0+``
+#: is returned with that segment on the floor.
+K_FLOOR_REL = 1e-9
 _INF = float("inf")
 
 
@@ -53,6 +59,12 @@ class Design:
         The starting design's critical force (NaN when undefined there).
     feasible : bool
         ``preloads_for_critical_force``: whether the required load is reached.
+    K_min : float
+        The joint-stiffness floor the design was held to: ``max(K_min, K_FLOOR_REL * scale)``
+        with ``scale = max_i k_i (a_i^2 + b_i^2)`` of the initial chain (the default floor when
+        no ``K_min`` was given). Every returned segment has ``K_i > 0`` and ``K_i >= K_min``
+        (exactly: a segment the optimiser stopped a roundoff below is lifted onto it by a varied
+        ``L0``, ``k``, ``a`` or ``b``; otherwise to the solver's tolerance).
     """
 
     manipulator: Manipulator
@@ -66,6 +78,7 @@ class Design:
     boundary: str
     initial_critical_force: float
     feasible: bool = True
+    K_min: float = math.nan
 
     @property
     def load(self) -> float:
@@ -160,12 +173,19 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
     **constraints
         ``total_length`` (float, or ``True`` to keep the initial ``2 sum(b)``),
         ``tension=(T_min, T_max)`` bounds on the spring preload ``k (2b - L0)`` at straight,
-        ``K_min`` a lower bound on every joint stiffness ``k (b L0 - 2 (b^2 - a^2))``.
+        ``K_min`` a lower bound on every joint stiffness ``K_i = k (b L0 - 2 (b^2 - a^2))``.
+        Condition (4), ``K_i > 0``, is always imposed: as ``K_i >= K_min`` with ``K_min`` raised
+        to at least the floor ``K_FLOOR_REL * max_i k_i (a_i^2 + b_i^2)`` (``1e-9`` times the
+        initial chain's stiffness scale); without ``K_min`` the floor alone. An optimum at
+        ``K_i -> 0+`` (stiffness and preload moved off a segment) is returned with ``K_i`` on the
+        floor; the bound used is recorded in ``Design.K_min`` and listed in ``active`` when it holds.
 
     Returns
     -------
     Design
-        Verified: ``critical_force`` is recomputed by :func:`critical_force`.
+        Verified: ``critical_force`` is recomputed by :func:`critical_force` on the returned
+        chain. A segment the optimiser left below ``K_min`` by roundoff is lifted onto it
+        (the smallest change of one varied variable) before that check.
 
     Raises
     ------
@@ -173,7 +193,7 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
         Unknown variable/constraint, bad bounds.
     InfeasibleDesignError
         (``RuntimeError``) IPOPT found no feasible design; ``best`` holds its last point
-        (a :class:`Design`) when one could be evaluated.
+        (a :class:`Design`, lifted onto ``K_i >= K_min``) when that is a valid chain.
     """
     return _buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
 
@@ -283,8 +303,8 @@ def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -
     tmin, tmax = (tension if tension is not None else (-_INF, _INF))
     lbg.append(np.full(n, float(tmin)))
     ubg.append(np.full(n, float(tmax)))
-    kmin = constraints.get("K_min")
-    lbg.append(np.full(n, float(kmin) if kmin is not None else -_INF))
+    kmin = _stiffness_floor(x0, constraints.get("K_min"))
+    lbg.append(np.full(n, kmin))
     ubg.append(np.full(n, _INF))
     lbg_a, ubg_a = np.concatenate(lbg), np.concatenate(ubg)
     weights = [1.0, 0.0] if required is None else [0.0, 1.0]
@@ -293,20 +313,27 @@ def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -
     cols = {name: res.x[i * n:(i + 1) * n].copy() for i, name in enumerate(DESIGN_VARIABLES)}
     for name in DESIGN_VARIABLES:          # IPOPT may step 1e-8 outside a bound: snap back
         cols[name] = np.clip(cols[name], lo[name], hi[name])
+    # IPOPT honours the K rows only to its (relaxed) tolerance: K_i = K_min - 1e-9 is a normal
+    # answer when the optimum sits on the floor. Lift such segments onto K_i = K_min (a roundoff-
+    # sized change of one varied variable), then re-check every row and recompute the load there.
+    # After a failed solve any lift is allowed: it makes the reported ``best`` a valid chain.
+    _lift_stiffness(cols, lo, hi, vary, kmin, max_rel=1e-6 if res.success else _INF)
+    xv = res.x.copy()
+    xv[:4 * n] = np.concatenate([cols[name] for name in DESIGN_VARIABLES])
     P_opt = float(res.x[4 * n])
     try:
         m_opt = _build(cols)
         bk = critical_force(m_opt, boundary)
     except TensegrityError as exc:
         raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
-    rows = np.asarray(nlp.rows(res.x)).ravel()
+    rows = np.asarray(nlp.rows(xv)).ravel()
     viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
     design = Design(manipulator=m_opt, critical_force=bk.force, loads=bk.loads,
                     multiplicity=_multiplicity(bk.loads),
                     active=_active(cols, lo, hi, vary, budget, rows, nlp.n_psd, n, tl, tmin, tmax, kmin),
                     status=res.status, success=res.success, iterations=res.iterations, boundary=boundary,
                     initial_critical_force=_safe_critical(m, boundary),
-                    feasible=required is None or bk.loads[0] >= required * (1 - 1e-6))
+                    feasible=required is None or bk.loads[0] >= required * (1 - 1e-6), K_min=kmin)
     if not res.success or viol > 1e-6:
         raise InfeasibleDesignError(
             f"IPOPT did not find a feasible design ({res.status}); constraint violation {viol:.3g}",
@@ -319,6 +346,78 @@ def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -
         raise InfeasibleDesignError(f"the design reaches only {bk.loads[0]:.6g} < required {required:.6g}",
                                     status=res.status, best=design)
     return design
+
+
+def _stiffness_floor(x0: Mapping[str, np.ndarray], K_min) -> float:
+    """The joint-stiffness bound of the design problem: ``K_min`` raised to the floor (condition (4))."""
+    scale = float(np.max(x0["k"] * (x0["a"] ** 2 + x0["b"] ** 2)))
+    floor = K_FLOOR_REL * scale
+    if K_min is None:
+        return floor
+    try:
+        K_min = float(K_min)
+    except (TypeError, ValueError):
+        raise InvalidParameterError("K_min must be a finite number", field="K_min") from None
+    if not math.isfinite(K_min):
+        raise InvalidParameterError("K_min must be a finite number", field="K_min")
+    return max(K_min, floor)
+
+
+def _joint_stiffness(a, b, k, L0) -> float:
+    """``K = E''(0)`` evaluated as the library does (:attr:`Segment.stiffness`, the quantity
+    :func:`critical_force` checks), not the closed form: the two differ by roundoff."""
+    return Segment(a, b, k, L0).stiffness
+
+
+def _lift_stiffness(cols: dict[str, np.ndarray], lo, hi, vary, kmin: float, max_rel: float = _INF) -> list[int]:
+    """Put every segment with ``K_i < kmin`` onto ``K_i = kmin`` (in place) by changing one varied
+    variable: the smallest relative change among ``L0``, ``k``, ``a`` that stays within its bounds
+    and ``max_rel``, else ``b`` (which also moves the chain's geometry; the caller re-checks every
+    row). Returns the segments changed. A segment no single variable can lift so is left as it is."""
+    changed = []
+    for i in range(cols["k"].size):
+        a, b, k, L0 = (float(cols[nm][i]) for nm in DESIGN_VARIABLES)
+        if _joint_stiffness(a, b, k, L0) >= kmin:
+            continue
+        cands = []
+        if "L0" in vary:
+            cands.append(("L0", (kmin / k + 2.0 * (b * b - a * a)) / b))
+        if "k" in vary and b * L0 - 2.0 * (b * b - a * a) > 0:
+            cands.append(("k", kmin / (b * L0 - 2.0 * (b * b - a * a))))
+        if "a" in vary:
+            s = b * b - (b * L0 - kmin / k) / 2.0
+            if s > 0:
+                cands.append(("a", math.sqrt(s)))
+        if "b" in vary:                         # K >= kmin  <=>  2 b^2 - L0 b - (2 a^2 - kmin / k) <= 0
+            disc = L0 * L0 + 8.0 * (2.0 * a * a - kmin / k)
+            if disc >= 0:
+                ends = ((L0 - math.sqrt(disc)) / 4.0, (L0 + math.sqrt(disc)) / 4.0)
+                cands.append(("b", min((e for e in ends if e > 0), key=lambda e: abs(e - b), default=-1.0)))
+        best = None
+        for name, x in cands:
+            if not x > 0:
+                continue
+            vals = {"a": a, "b": b, "k": k, "L0": L0}
+            step = _INF if name != "b" or x >= b else -_INF     # the side on which K grows
+            for _ in range(64):                 # nudge until K >= kmin holds in floating point
+                vals[name] = x
+                if _joint_stiffness(vals["a"], vals["b"], vals["k"], vals["L0"]) >= kmin:
+                    break
+                x = float(np.nextafter(x, step))
+            else:
+                continue
+            if not lo[name][i] <= x <= hi[name][i]:
+                continue
+            rel = abs(x - float(cols[name][i])) / abs(float(cols[name][i]))
+            if rel > max_rel:
+                continue
+            key = (name == "b", rel)
+            if best is None or key < best[0]:
+                best = (key, name, x)
+        if best is not None:
+            cols[best[1]][i] = best[2]
+            changed.append(i)
+    return changed
 
 
 def _basis(S0: np.ndarray, guided: bool, n: int) -> np.ndarray:
@@ -350,7 +449,7 @@ def _active(cols, lo, hi, vary, budget, rows, n_psd, n, tl, tmin, tmax, kmin, to
             act.append(f"tension[{i}] >= {tmin:.6g}")
         if math.isfinite(tmax) and ten[i] >= tmax - tol * max(1.0, abs(tmax)):
             act.append(f"tension[{i}] <= {tmax:.6g}")
-        if kmin is not None and K[i] <= kmin + tol * max(1.0, abs(kmin)):
+        if K[i] <= kmin + tol * max(1.0, abs(kmin)):
             act.append(f"K[{i}] >= {kmin:.6g}")
     return act
 

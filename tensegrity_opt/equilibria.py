@@ -1,10 +1,20 @@
 """Every equilibrium for a prescribed tip displacement: minima, saddles and maxima.
 
-The KKT system ``grad E(q) = J(q)^T F``, ``tip(q) = target`` (n + 2 equations in
-``q, F``) is solved by damped Newton (CasADi residual and exact Jacobian) from
-many seeds: every buckling mode with both signs at several amplitudes, random
-starts, and IPOPT's minima (so that no minimum is missed). Solutions outside the
-physical range or on a joint limit are dropped, duplicates merged, the rest
+Two methods, one result type (:class:`EquilibriumSet`, a sorted ``list`` of
+:class:`~tensegrity_opt.Equilibrium` that also says how it was obtained):
+
+``method="search"`` (default, any ``n``)
+    The KKT system ``grad E(q) = J(q)^T F``, ``tip(q) = target`` (n + 2 equations in ``q, F``) is
+    solved by damped Newton (CasADi residual and exact Jacobian) from many seeds: every buckling
+    mode with both signs at several amplitudes, random starts, the wells of bistable segments
+    (:func:`tensegrity_opt.seeds.well_seeds`), and IPOPT's minima. Complete *in practice*: measured
+    against the homotopy (``benchmarks/search_check.py``), never certified (``certified=False``).
+``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
+    Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
+    (:mod:`tensegrity_opt.homotopy`); the real roots inside the physical range, polished by Newton.
+    ``certified=True`` when every path ended and every real root polished.
+
+Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest
 classified by the Morse index of the reduced Hessian and sorted by energy.
 """
 
@@ -12,18 +22,54 @@ from __future__ import annotations
 
 import numpy as np
 
-from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straight_equilibrium, is_equilibrium, local_equilibrium,
-                          make_equilibrium)
-from .errors import SolverError
+from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straight_equilibrium, is_equilibrium,
+                          local_equilibrium, make_equilibrium, RESIDUAL_TOL)
+from .errors import InvalidParameterError, SolverError
 from .manipulator import Manipulator
-from .seeds import seeds
+from .seeds import seeds, well_seeds
 
-__all__ = ["find_equilibria"]
+__all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
+
+#: Longest chain the homotopy method accepts (path counts: 8, 72, 456, ~2500, ~13000 for n = 2..6).
+HOMOTOPY_MAX_N = 6
 
 
-def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, n_random: int = 16,
+class EquilibriumSet(list):
+    """The equilibria of :func:`find_equilibria` (a ``list``, sorted by energy) and how they were found.
+
+    Attributes
+    ----------
+    method : str
+        ``"search"``, ``"homotopy"``, or ``"straight"`` / ``"closed_form"`` for the trivial cases.
+    certified : bool
+        True only when the set is proven complete: the homotopy tracked every path to an end and
+        every real root inside the range polished onto an equilibrium (or the case is trivial).
+    paths, failed_paths : int
+        Homotopy paths tracked and failed (0 for the search).
+    seconds : float
+        Wall time of the homotopy solver (0 for the search).
+    status : str
+        What happened, e.g. ``"phc: 456 paths, 0 failed, 0 at infinity"`` or the search's statuses.
+    """
+
+    def __init__(self, items=(), *, method: str, certified: bool, paths: int = 0, failed_paths: int = 0,
+                 seconds: float = 0.0, status: str = "") -> None:
+        super().__init__(items)
+        self.method = method
+        self.certified = bool(certified)
+        self.paths = int(paths)
+        self.failed_paths = int(failed_paths)
+        self.seconds = float(seconds)
+        self.status = status
+
+    def __repr__(self) -> str:
+        return (f"EquilibriumSet({len(self)} equilibria, method={self.method!r}, certified={self.certified}, "
+                f"paths={self.paths}, failed_paths={self.failed_paths})")
+
+
+def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
                     amplitudes=(0.6, 1.0, 1.6), max_modes: int = 12, extra_seeds=None,
-                    dedupe_tol: float = 1e-6) -> list[Equilibrium]:
+                    dedupe_tol: float = 1e-6, timeout: float | None = None) -> EquilibriumSet:
     """All equilibria inside the physical range for the tip at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -31,39 +77,56 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, n_random: int
     m : Manipulator
     dx, dy : float
         Tip deflection (length units).
+    method : {"search", "homotopy"}
+        ``"search"``: multi-start Newton (fast, any ``n``, complete in practice but not certified).
+        ``"homotopy"``: PHCpack's polyhedral homotopy on the polynomial KKT system, certified
+        (``n <= 6``; seconds: ~0.05 s for n = 3, ~4 s for n = 4, ~40 s for n = 5 on 2 cores).
     n_random : int
-        Random Newton starts (fixed seed: the answer is reproducible).
+        Random Newton starts (fixed seed: the answer is reproducible). Search only.
     amplitudes : sequence of float
-        Multiples of the eq.-23 amplitude at which each mode seeds Newton.
+        Multiples of the eq.-23 amplitude at which each mode seeds Newton. Search only.
     max_modes : int
-        At most this many buckling modes are used as seeds (all ``n - 1`` for ``n <= 13``).
+        At most this many buckling modes are used as seeds (all ``n - 1`` for ``n <= 13``). Search only.
     extra_seeds : iterable of array_like, optional
-        More starting configurations (e.g. a previous solution).
+        More starting configurations (e.g. a previous solution). Search only.
     dedupe_tol : float
         Two solutions closer than this (max-norm of ``q``, rad) are one.
+    timeout : float, optional
+        Homotopy only: seconds before PHCpack is stopped (:class:`SolverError`).
 
     Returns
     -------
-    list of Equilibrium
-        No duplicates, sorted by energy (ties: ``q_1`` descending). For the paper's chain at
-        small ``dx > 0, dy = 0``: 2 stable U, 2 saddles ZU, 2 maxima Z.
+    EquilibriumSet
+        A list without duplicates, sorted by energy (ties: ``q_1`` descending), with ``method``,
+        ``certified``, ``paths``, ``failed_paths``. For the paper's chain at small ``dx > 0, dy = 0``:
+        2 stable U, 2 saddles ZU, 2 maxima Z.
 
     Raises
     ------
     UnreachableTargetError
         (``ValueError``) beyond the chain's reach.
+    InvalidParameterError
+        (``ValueError``, ``field="method"``) for an unknown method or a chain too long for the homotopy.
+    HomotopyUnavailableError
+        (``RuntimeError``) for ``method="homotopy"`` without PHCpack (Debian package ``phcpack``).
     SolverError
-        (``RuntimeError``) when no Newton start converged at all.
+        (``RuntimeError``) when no Newton start converged at all, or PHCpack failed.
     """
+    if method not in ("search", "homotopy"):
+        raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
     target = m.check_reachable(dx, dy)
     if dx == 0.0 and dy == 0.0:
-        return [straight_equilibrium(m)]
+        return EquilibriumSet([straight_equilibrium(m)], method="straight", certified=True, status="straight")
     if m.n == 1:
-        return [one_segment_equilibrium(m, target)]
+        return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", certified=True,
+                              status="closed_form")
+    if method == "homotopy":
+        return _homotopy(m, target, dedupe_tol, timeout)
     results = []
     statuses: dict[str, int] = {}
     starts = [(s.q, s.force) for s in seeds(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes,
                                               n_random=n_random)]
+    starts += [(q, None) for q in well_seeds(m, dx, dy)]
     for q in extra_seeds or ():
         starts.append((check_q0(m, q), None))
     for q, F in starts:
@@ -79,10 +142,46 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, n_random: int
     if not results:
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
+    eqs = _sorted(m, _unique(results, dedupe_tol))
+    return EquilibriumSet(eqs, method="search", certified=False,
+                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
+
+
+def _unique(results, tol: float) -> list:
     unique: list = []
     for res in results:
-        if not any(np.max(np.abs(res.q - u.q)) < dedupe_tol for u in unique):
+        if not any(np.max(np.abs(res.q - u.q)) < tol for u in unique):
             unique.append(res)
-    eqs = [make_equilibrium(m, r, constrained=True) for r in unique]
+    return unique
+
+
+def _sorted(m: Manipulator, results) -> list[Equilibrium]:
+    eqs = [make_equilibrium(m, r, constrained=True) for r in results]
     eqs.sort(key=lambda e: (round(e.energy, 10), -e.q[0]))
     return eqs
+
+
+def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
+    from .homotopy import real_configurations, solve_homotopy
+
+    if m.n > HOMOTOPY_MAX_N:
+        raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
+                                    f"(its path count grows ~5x per segment), got n = {m.n}", field="method")
+    sol = solve_homotopy(m, target, timeout=timeout)
+    q, F, inside = real_configurations(m, sol)
+    polished, lost = [], 0
+    for qi, Fi in zip(q[inside], F[inside]):
+        res = local_equilibrium(m, target, qi, Fi)
+        if is_equilibrium(m, res, target) and np.max(np.abs(res.q - qi)) < 1e-6:
+            polished.append(res)
+        elif m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL and m.in_range(qi):
+            from .solvers import LocalResult
+            polished.append(LocalResult(qi, Fi, True, "phc_root", 0))      # a root Newton cannot improve
+        else:
+            lost += 1
+    certified = sol.complete and lost == 0
+    status = (f"phc: {sol.paths} paths, {sol.failures} failed, {sol.at_infinity} at infinity, "
+              f"{sol.singular} singular; {int(inside.sum())} real roots in range"
+              + (f", {lost} not polished" if lost else ""))
+    return EquilibriumSet(_sorted(m, _unique(polished, dedupe_tol)), method="homotopy", certified=certified,
+                          paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=status)

@@ -25,7 +25,7 @@ from .buckling import critical_force, tip_slope
 from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError,
                      UnreachableTargetError)
 from .manipulator import Manipulator
-from .seeds import seed_starts
+from .seeds import seed_starts, well_seeds
 from .shapes import shape_label, sign_string
 from .solvers import LocalResult, model
 from .stability import analyse, inertia_of_reduced
@@ -281,6 +281,15 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     starts = seed_starts(m, dx, dy, max_modes=max_modes, n_random=n_random, arcs=short)
     if q0 is not None:
         starts = np.vstack([q0, starts])
+    descents = starts                   # where IPOPT starts (multistable chains)
+    if not m.monotonic and short:
+        # the wells of the bistable segments (one per segment, every combination up to WELLS_MAX),
+        # projected onto the tip constraint: Newton from each; IPOPT's descent from the lowest ones
+        wells = well_seeds(m, dx, dy, hilltops=False, cap=WELLS_MAX)
+        if wells.shape[0]:
+            starts = np.vstack([starts, wells])
+            order = np.argsort([m.energy(q) for q in wells], kind="stable")[:WELL_DESCENTS]
+            descents = np.vstack([descents, wells[order]])
     statuses: dict[str, int] = {}
     found: list[Equilibrium] = []
     if method == "auto":
@@ -299,7 +308,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         raise NoEquilibriumError(f"Newton found no stable equilibrium for dx={dx:g}, dy={dy:g} from "
                                  f"{len(starts)} starts ({n_unstable} unstable ones); method='auto' adds IPOPT",
                                  status=_summary(statuses))
-    stable, n_unstable = search_stable(m, target, starts, statuses, minimize=True)
+    stable, n_unstable = search_stable(m, target, descents, statuses, minimize=True)
     stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < SAME_Q for f in found)]
     if stable:
         return _pick(stable, q0)
@@ -320,6 +329,13 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
             "length reaches zero)", status=_summary(statuses))
     raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
                       status=_summary(statuses))
+
+
+#: Well patterns of a multistable chain tried by Newton (every combination of the segments' wells
+#: while there are at most this many), and how many of them (lowest projected energy first) IPOPT
+#: also descends from.
+WELLS_MAX = 256
+WELL_DESCENTS = 8
 
 
 def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,

@@ -183,3 +183,118 @@ def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitude
     Q, F, origins = seed_matrix(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random,
                                 rng_seed=rng_seed, arcs=arcs)
     return [Seed(q, None if np.isnan(f[0]) else f, o) for q, f, o in zip(Q, F, origins)]
+
+
+# ----------------------------------------------------------------------------- wells of multistable chains
+#: Most sign patterns tried exhaustively; beyond, a fixed-seed sample of this many (plus the uniform ones).
+WELL_PATTERNS = 729
+
+
+@lru_cache(maxsize=512)
+def segment_critical_points(seg: Segment, num: int = 801) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The unloaded segment's wells (minima of ``E(q)``) and hilltops (maxima) inside its range.
+
+    A monotonic segment has one well (``q = 0`` when symmetric, its rest angle when pre-bent) and no
+    hilltop; a bistable one (``K < 0``) two wells around a hilltop. Found as the sign changes of the
+    torque on a grid over the range, refined by bisection (plain numpy: the model layer)."""
+    lim = seg.joint_limit
+    qs = np.linspace(-lim, lim, num)[1:-1]
+    M = seg.torque(qs)
+    wells, tops = [], []
+    for i in np.flatnonzero(np.sign(M[:-1]) != np.sign(M[1:])).tolist():
+        lo, hi = float(qs[i]), float(qs[i + 1])
+        flo = float(M[i])
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            fm = float(seg.torque(mid))
+            if (fm > 0) == (flo > 0):
+                lo, flo = mid, fm
+            else:
+                hi = mid
+        root = 0.5 * (lo + hi)
+        (wells if M[i] > 0 else tops).append(root)    # M = -E': + -> - is a minimum of E
+    return tuple(wells), tuple(tops)
+
+
+def _pattern_matrix(m: Manipulator, hilltops: bool, cap: int, rng_seed: int) -> np.ndarray:
+    """Configurations built from one unloaded critical point per segment: every combination while
+    there are at most ``cap``, else the combinations with all segments in the same well plus a
+    fixed-seed random sample."""
+    choices = []
+    for s in m.segments:
+        wells, tops = segment_critical_points(s)
+        pts = list(wells) + (list(tops) if hilltops else [])
+        choices.append(pts or [0.0])
+    total = 1
+    for c in choices:
+        total *= len(c)
+    if total <= cap:
+        grids = np.meshgrid(*choices, indexing="ij")
+        return np.stack([g.ravel() for g in grids], axis=1)
+    rng = np.random.default_rng(rng_seed + m.n)
+    rows = [[c[0] for c in choices], [c[-1] for c in choices]]
+    for _ in range(cap - 2):
+        rows.append([c[int(rng.integers(len(c)))] for c in choices])
+    return np.array(rows)
+
+
+def project_to_target(m: Manipulator, Q: np.ndarray, target: np.ndarray, *, iters: int = 30,
+                      tol: float = 1e-11) -> np.ndarray:
+    """Each row of ``Q`` moved onto ``tip(q) = target`` by minimum-norm Gauss-Newton steps
+    (``q <- q + J^T (J J^T)^-1 (target - tip)``), all rows at once; rows that do not converge or
+    leave the physical range are dropped."""
+    Q = np.array(Q, dtype=float, copy=True)
+    if Q.size == 0:
+        return Q.reshape(0, m.n)
+    l = m.link_lengths
+    lim = m.joint_limits
+    scale = float(m.b.sum())
+    ok = np.ones(Q.shape[0], dtype=bool)
+    for _ in range(iters):
+        phi = np.cumsum(Q, axis=1)
+        c, s = np.cos(phi) * l, np.sin(phi) * l
+        r = np.column_stack([target[0] - m.base_length - c.sum(axis=1), target[1] - s.sum(axis=1)])
+        err = np.abs(r).max(axis=1)
+        if np.all(err[ok] < tol * scale):
+            break
+        Jx = -np.cumsum(s[:, ::-1], axis=1)[:, ::-1]
+        Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
+        a11 = (Jx * Jx).sum(axis=1)
+        a12 = (Jx * Jy).sum(axis=1)
+        a22 = (Jy * Jy).sum(axis=1)
+        det = a11 * a22 - a12 * a12
+        bad = det <= 1e-14 * np.maximum(a11 * a22, 1e-300)
+        det = np.where(bad, 1.0, det)
+        w1 = (a22 * r[:, 0] - a12 * r[:, 1]) / det
+        w2 = (a11 * r[:, 1] - a12 * r[:, 0]) / det
+        step = Jx * w1[:, None] + Jy * w2[:, None]
+        big = np.abs(step).max(axis=1)
+        step *= np.minimum(1.0, 0.5 / np.maximum(big, 1e-300))[:, None]      # at most 0.5 rad a step
+        Q += step
+        ok &= ~bad & np.all(np.isfinite(Q), axis=1)
+    phi = np.cumsum(Q, axis=1)
+    r = np.column_stack([target[0] - m.base_length - (np.cos(phi) * l).sum(axis=1),
+                         target[1] - (np.sin(phi) * l).sum(axis=1)])
+    ok &= np.abs(r).max(axis=1) < 1e-8 * scale
+    ok &= np.all(np.abs(Q) < lim, axis=1)
+    return Q[ok]
+
+
+def well_seeds(m: Manipulator, dx: float, dy: float, *, hilltops: bool = True, cap: int = WELL_PATTERNS,
+               rng_seed: int = 7, dedupe: float = 1e-3) -> np.ndarray:
+    """Seeds of a multistable chain: one unloaded critical point per segment (its wells and, with
+    ``hilltops``, its hilltop), combined over the segments (the ``3^k`` critical points of the
+    unloaded energy, ``k`` bistable segments; exhaustive up to ``cap``, sampled beyond), each projected
+    onto the tip constraint. Empty for chains whose segments are all monotonic (one pattern: the
+    rest shape, which the mode seeds cover)."""
+    if m.n < 2 or m.monotonic:
+        return np.zeros((0, m.n))
+    P = _pattern_matrix(m, hilltops, cap, rng_seed)
+    Q = project_to_target(m, P, m.target(dx, dy))
+    if Q.shape[0] < 2:
+        return Q
+    keep = [0]
+    for i in range(1, Q.shape[0]):
+        if np.min(np.abs(Q[keep] - Q[i]).max(axis=1)) >= dedupe:
+            keep.append(i)
+    return Q[keep]
