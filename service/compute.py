@@ -148,9 +148,12 @@ def force_equilibrium_job(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
     return equilibrium_out(to.solve_equilibrium_under_force(m, req.fx, req.fy, q0=_q0(req.q0)))
 
 
-def equilibria_job(req: s.EquilibriaRequest) -> dict[str, Any]:
+def equilibria_job(req: s.EquilibriaRequest, timeout: float | None = None) -> dict[str, Any]:
+    """Every equilibrium; ``timeout`` bounds the homotopy's external solver (killed then, freeing the thread)."""
     m = build_manipulator(req.manipulator)
-    return {"equilibria": [equilibrium_out(e) for e in to.find_equilibria(m, req.dx, req.dy)]}
+    eqs = to.find_equilibria(m, req.dx, req.dy, method=req.method, timeout=timeout)
+    return {"equilibria": [equilibrium_out(e) for e in eqs], "method": eqs.method, "certified": eqs.certified,
+            "paths": eqs.paths, "failed_paths": eqs.failed_paths}
 
 
 def buckling_job(req: s.BucklingRequest) -> dict[str, Any]:

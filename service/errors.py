@@ -17,6 +17,7 @@ chain or batch over the configured limit               422     ``too_many_segmen
 missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
 request body over ``max_body_bytes``                   413     ``body_too_large``
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
+``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``
 solve time limit exceeded                              504     ``timeout``
 unknown path / method                                  404/405 ``not_found`` / ``method_not_allowed``
 =====================================================  ======  ==========================================
@@ -39,7 +40,7 @@ from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.responses import JSONResponse
 
-from tensegrity_opt.errors import SolverError, TensegrityError
+from tensegrity_opt.errors import HomotopyUnavailableError, SolverError, TensegrityError
 
 from .pool import PoolSaturated, SolveTimeout
 
@@ -128,6 +129,8 @@ def status_for(exc: BaseException) -> int:
         return 503
     if isinstance(exc, SolveTimeout):
         return 504
+    if isinstance(exc, HomotopyUnavailableError):
+        return 503
     return 422
 
 

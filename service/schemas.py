@@ -187,6 +187,11 @@ class EquilibriaRequest(BaseModel):
     manipulator: ManipulatorIn
     dx: Deflection = Field(description="tip deflection along x (length units)")
     dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    method: Literal["search", "homotopy"] = Field(
+        "search", description="`search`: multi-start Newton (any n; complete in practice, not certified); "
+                              "`homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every "
+                              "equilibrium certified (n <= 6; seconds to a minute; needs the `phcpack` package "
+                              "on the server, else 503 `homotopy_unavailable`)")
 
 
 class BucklingRequest(BaseModel):
@@ -322,6 +327,12 @@ class EquilibriumOut(BaseModel):
 
 class EquilibriaOut(BaseModel):
     equilibria: list[EquilibriumOut] = Field(description="every equilibrium found, sorted by energy")
+    method: str = Field(description="how they were found: `search`, `homotopy`, or `straight` / `closed_form` "
+                                    "for the trivial cases")
+    certified: bool = Field(description="true only when the set is proven complete (the homotopy tracked every "
+                                        "path to an end and every real root polished; or a trivial case)")
+    paths: int = Field(description="homotopy paths tracked (0 for the search)")
+    failed_paths: int = Field(description="homotopy paths that failed (any makes `certified` false)")
 
 
 class ModeOut(BaseModel):

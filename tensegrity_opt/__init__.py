@@ -17,9 +17,9 @@ from .buckling import Buckling, Mode, critical_force
 from .curves import Curve, Jump, force_deflection
 from .design import (Design, PreloadDesign, choose_preloads, critical_load_sensitivity, equilibrium_sensitivity,
                      maximize_critical_force, preloads_for_critical_force)
-from .equilibria import find_equilibria
+from .equilibria import EquilibriumSet, find_equilibria
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
-from .errors import (InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
+from .errors import (HomotopyUnavailableError, InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
                      TensegrityError, UnreachableTargetError, UnstableStraightError, UnsupportedError)
 from .landscape import Landscape, energy_landscape
 from .manipulator import Manipulator
@@ -33,7 +33,7 @@ __version__ = "0.1.0"
 
 __all__ = [
     "Segment", "Manipulator",
-    "Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria",
+    "Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria", "EquilibriumSet",
     "solve_equilibria_batch", "Tracker",
     "Buckling", "Mode", "critical_force",
     "Curve", "Jump", "force_deflection",
@@ -43,6 +43,6 @@ __all__ = [
     "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",
-    "InfeasibleDesignError",
+    "InfeasibleDesignError", "HomotopyUnavailableError",
     "__version__",
 ]

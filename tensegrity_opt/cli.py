@@ -83,9 +83,14 @@ def _cmd_equilibrium(args, m):
 
 
 def _cmd_equilibria(args, m):
-    eqs = find_equilibria(m, args.dx, args.dy)
-    return ({"equilibria": [_eq_dict(e) for e in eqs]},
-            "\n".join([f"All equilibria at dx = {args.dx:g}, dy = {args.dy:g}: {len(eqs)}", *_eq_table(eqs)]))
+    eqs = find_equilibria(m, args.dx, args.dy, method=args.method)
+    how = f"method {eqs.method}, " + ("certified complete" if eqs.certified else "not certified")
+    if eqs.paths:
+        how += f" ({eqs.paths} homotopy paths, {eqs.failed_paths} failed)"
+    return ({"equilibria": [_eq_dict(e) for e in eqs], "method": eqs.method, "certified": eqs.certified,
+             "paths": eqs.paths, "failed_paths": eqs.failed_paths},
+            "\n".join([f"All equilibria at dx = {args.dx:g}, dy = {args.dy:g}: {len(eqs)} ({how})",
+                       *_eq_table(eqs)]))
 
 
 def _cmd_curve(args, m):
@@ -144,6 +149,9 @@ def build_parser() -> argparse.ArgumentParser:
     common(sp)
     sp.add_argument("--dx", type=float, default=0.1)
     sp.add_argument("--dy", type=float, default=0.0)
+    sp.add_argument("--method", choices=("search", "homotopy"), default="search",
+                    help="search: multi-start Newton (any n, not certified); homotopy: PHCpack, certified, "
+                         "n <= 6 (default: %(default)s)")
     sp.set_defaults(func=_cmd_equilibria)
 
     sp = sub.add_parser("curve", help="force-deflection curve along the stable branch (Fig. 6)")

@@ -26,9 +26,15 @@ from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straig
                           local_equilibrium, make_equilibrium, RESIDUAL_TOL)
 from .errors import InvalidParameterError, SolverError
 from .manipulator import Manipulator
-from .seeds import seeds, well_seeds
+from .seeds import project_to_target, seeds, well_seeds
+from .solvers import model
 
 __all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
+
+#: Uniform random configurations projected onto the tip constraint per joint (default of ``n_projected``),
+#: and their generator's seed.
+PROJECTED_PER_JOINT = 60
+PROJECTED_SEED = 4242
 
 #: Longest chain the homotopy method accepts (path counts: 8, 72, 456, ~2500, ~13000 for n = 2..6).
 HOMOTOPY_MAX_N = 6
@@ -69,7 +75,8 @@ class EquilibriumSet(list):
 
 def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
                     amplitudes=(0.6, 1.0, 1.6), max_modes: int = 12, extra_seeds=None,
-                    dedupe_tol: float = 1e-6, timeout: float | None = None) -> EquilibriumSet:
+                    dedupe_tol: float = 1e-6, n_projected: int | None = None,
+                    timeout: float | None = None) -> EquilibriumSet:
     """All equilibria inside the physical range for the tip at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -89,6 +96,9 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         At most this many buckling modes are used as seeds (all ``n - 1`` for ``n <= 13``). Search only.
     extra_seeds : iterable of array_like, optional
         More starting configurations (e.g. a previous solution). Search only.
+    n_projected : int, optional
+        Uniform random configurations (fixed seed) projected onto the tip constraint, Newton from each.
+        Default ``60 n`` for chains of up to 64 segments, else 0. Search only.
     dedupe_tol : float
         Two solutions closer than this (max-norm of ``q``, rad) are one.
     timeout : float, optional
@@ -126,7 +136,6 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     statuses: dict[str, int] = {}
     starts = [(s.q, s.force) for s in seeds(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes,
                                               n_random=n_random)]
-    starts += [(q, None) for q in well_seeds(m, dx, dy)]
     for q in extra_seeds or ():
         starts.append((check_q0(m, q), None))
     for q, F in starts:
@@ -134,6 +143,20 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         statuses[res.status] = statuses.get(res.status, 0) + 1
         if is_equilibrium(m, res, target):
             results.append(res)
+    # the wells of multistable chains and uniform random configurations, each projected onto the tip
+    # constraint (a sample of the whole configuration manifold): Newton from all of them at once
+    if n_projected is None:
+        n_projected = PROJECTED_PER_JOINT * m.n if m.n <= 64 else 0
+    rng = np.random.default_rng(PROJECTED_SEED + m.n)
+    sample = project_to_target(m, rng.uniform(-0.95, 0.95, (int(n_projected), m.n)) * m.joint_limits, target)
+    more = np.vstack([well_seeds(m, dx, dy), sample])
+    if more.shape[0]:
+        batch = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, more)
+        for j in np.flatnonzero(batch.success & ~batch.on_bound).tolist():
+            res = batch.result(j)
+            if is_equilibrium(m, res, target):
+                results.append(res)
+        statuses["Newton (projected starts)"] = more.shape[0]
     # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present.
     for s in seeds(m, dx, dy, max_modes=2, n_random=0):
         res = local_equilibrium(m, target, s.q, minimize=True)

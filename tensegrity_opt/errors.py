@@ -20,6 +20,7 @@ __all__ = [
     "NoEquilibriumError",
     "InfeasibleDesignError",
     "TimeLimitError",
+    "HomotopyUnavailableError",
 ]
 
 
@@ -103,3 +104,9 @@ class TimeLimitError(TensegrityError, RuntimeError):
     """A time limit given by the caller was reached before this computation started."""
 
     code = "timeout"
+
+
+class HomotopyUnavailableError(TensegrityError, RuntimeError):
+    """The polynomial homotopy engine is not installed: PHCpack's ``phc`` (Debian package ``phcpack``)."""
+
+    code = "homotopy_unavailable"

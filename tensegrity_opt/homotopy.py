@@ -57,7 +57,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .errors import SolverError, TensegrityError
+from .errors import HomotopyUnavailableError, SolverError
 from .manipulator import Manipulator
 
 __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "solve_homotopy", "phc_path",
@@ -67,10 +67,6 @@ __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "so
 CLEAN_TOL = 1e-14
 #: A root is real when ``| |z_j| - 1 |`` and ``|g - conj(h)|`` (relative) are below this.
 REAL_TOL = 1e-6
-
-
-class HomotopyUnavailableError(TensegrityError, RuntimeError):
-    """The polynomial homotopy engine (PHCpack's ``phc``) is not installed."""
 
 
 def phc_path() -> str | None:

@@ -67,7 +67,8 @@ async def solve_equilibrium_under_force(
     "/equilibria", operation_id="find_equilibria", response_model=s.EquilibriaOut,
     summary="Every equilibrium for a tip deflection (minima, saddles, maxima)",
     description="All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy; "
-                "`morse_index`/`kind` classify each one.",
+                "`morse_index`/`kind` classify each one. `method: homotopy` certifies the set (`certified`) "
+                "for chains of up to 6 segments; the default search is complete in practice, not certified.",
     responses=solve_responses(ex.EQUILIBRIA, "unreachable_target", "solver_failed"))
 async def find_equilibria(
     request: Request,
@@ -76,4 +77,4 @@ async def find_equilibria(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, equilibria_job, req, ctx=ctx)
+    return await solve(request, equilibria_job, req, settings.solve_timeout, ctx=ctx)

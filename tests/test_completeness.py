@@ -1,0 +1,296 @@
+"""Completeness of the global searches on multistable chains (issue 13), against the homotopy.
+
+The reference sets in ``tests/data/homotopy_oracle.json`` were written by
+``python -m benchmarks.homotopy_oracle``: PHCpack's polyhedral homotopy on the polynomial KKT
+system (every isolated complex root; only certified solves kept), each real root inside the range
+polished and classified by the *independent* reference model (``reference_model.py``, which does not
+import the library). Random chains of every multistable family (bistable, heterogeneous, mixed,
+asymmetric preloads), n = 2..5, targets over the workspace, dy != 0 in most. The search under test
+must find every one of those equilibria with the same Morse index, and ``solve_equilibrium`` the
+least-energy stable one.
+
+The live homotopy tests need PHCpack's ``phc`` (Debian package ``phcpack``); they are skipped
+without it, except in CI (``TENSEGRITY_REQUIRE_PHC=1``, set by ``.ci/run``, which installs it).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import stat
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import tensegrity_opt as to
+from tensegrity_opt.homotopy import homotopy_available
+
+import reference_model as ref
+
+DATA = json.loads((Path(__file__).parent / "data" / "homotopy_oracle.json").read_text())["cases"]
+SAME = 1e-6
+
+needs_phc = pytest.mark.skipif(not homotopy_available() and os.environ.get("TENSEGRITY_REQUIRE_PHC") != "1",
+                               reason="PHCpack's phc is not installed (apt-get install phcpack)")
+
+
+def _case_id(c) -> str:
+    return f"n{len(c['manipulator']['segments'])}-{c['family']}-dx{c['dx']:.3f}-dy{c['dy']:+.3f}"
+
+
+def _chain(m: to.Manipulator) -> ref.Chain:
+    return ref.Chain(m.a, m.b, m.k1, m.k2, m.L1_0, m.L2_0)
+
+
+def _well(a, b, k, L0) -> float:
+    """The positive unloaded well of a bistable symmetric segment, from the reference model's gradient."""
+    one = ref.Chain.uniform(1, a, b, k, L0)
+    qs = np.linspace(1e-6, 0.999 * one.limits[0], 20001)
+    g = np.array([one.grad(np.array([q]))[0] for q in qs])
+    i = int(np.flatnonzero((g[:-1] < 0) & (g[1:] >= 0))[0])
+    return float(qs[i])
+
+
+def _least_descent(chain: ref.Chain, target, starts) -> float:
+    """Least energy of the reference model's SLSQP minima from ``starts``."""
+    best = np.inf
+    for q0 in starts:
+        r = chain.local_min(target, q0)
+        if r is not None:
+            best = min(best, chain.energy(r[0]))
+    return best
+
+
+def test_oracle_covers_the_families():
+    ns = [len(c["manipulator"]["segments"]) for c in DATA]
+    assert len(DATA) >= 95 and set(ns) >= {2, 3, 4}
+    assert {c["family"] for c in DATA} == {"bistable", "heterogeneous", "mixed", "asymmetric"}
+    assert sum(c["dy"] != 0.0 for c in DATA) > len(DATA) / 2
+    for c in DATA:                               # every chain is multistable
+        assert not to.Manipulator.from_dict(c["manipulator"]).monotonic
+
+
+@pytest.mark.parametrize("case", DATA, ids=_case_id)
+def test_search_finds_every_equilibrium_the_homotopy_finds(case):
+    m = to.Manipulator.from_dict(case["manipulator"])
+    got = to.find_equilibria(m, case["dx"], case["dy"])
+    assert got.method == "search" and not got.certified
+    for e in case["equilibria"]:
+        match = [g for g in got if np.max(np.abs(g.q - np.array(e["q"]))) < SAME]
+        assert match, f"missed an equilibrium of Morse index {e['morse_index']}: q = {e['q']}"
+        assert match[0].morse_index == e["morse_index"]
+        assert match[0].energy == pytest.approx(e["energy"], rel=1e-10, abs=1e-12)
+    # and nothing else: every extra point must be a genuine equilibrium the homotopy also has
+    assert len(got) == len(case["equilibria"])
+
+
+@pytest.mark.parametrize("case", [c for c in DATA if any(e["morse_index"] == 0 for e in c["equilibria"])],
+                         ids=_case_id)
+def test_solve_equilibrium_is_the_least_energy_stable_one(case):
+    m = to.Manipulator.from_dict(case["manipulator"])
+    e_min = min(e["energy"] for e in case["equilibria"] if e["morse_index"] == 0)
+    eq = to.solve_equilibrium(m, case["dx"], case["dy"])
+    assert eq.stable
+    assert eq.energy == pytest.approx(e_min, rel=1e-9, abs=1e-12)
+
+
+# ----------------------------------------------------------------------------- regressions named in issue 13
+def test_bistable_n8_least_energy():
+    """Issue 13: 5.04349 was returned, 5.04003 exists (independent brute force)."""
+    m = to.Manipulator.uniform(8, a=0.6, b=1, k=1, L0=1.2)
+    eq = to.solve_equilibrium(m, 2.0, 0.0)
+    assert eq.energy == pytest.approx(5.04003, abs=6e-6)
+    chain = _chain(m)                            # the point is a clearly stable equilibrium of the reference model
+    target = chain.target(2.0, 0.0)
+    q, F, ok = chain.newton_kkt(target, eq.q, eq.force)
+    assert ok and np.max(np.abs(q - eq.q)) < 1e-8
+    assert np.min(chain.reduced_eigs(q, F, fd=False)) > 1e-6
+
+
+def test_bistable_n8_least_energy_vs_reference_descent():
+    """The reference model's SLSQP from every combination of the segments' wells finds nothing lower."""
+    m = to.Manipulator.uniform(8, a=0.6, b=1, k=1, L0=1.2)
+    chain = _chain(m)
+    eq = to.solve_equilibrium(m, 2.0, 0.0)
+    rng = np.random.default_rng(5)
+    starts = _well(0.6, 1, 1, 1.2) * rng.choice([-1.0, 1.0], (60, m.n))
+    best = _least_descent(chain, chain.target(2.0, 0.0), starts)
+    assert np.isfinite(best) and eq.energy <= best + 1e-9
+
+
+@needs_phc
+def test_bistable_n4_least_energy_vs_homotopy():
+    """Issue 13: E = 3.21975 was returned while a stable 3.21362 exists."""
+    m = to.Manipulator.uniform(4, a=0.55, b=1, k=1.5, L0=1.25)
+    hom = to.find_equilibria(m, 1.0, 0.3, method="homotopy")
+    assert hom.certified
+    e_min = min(e.energy for e in hom if e.stable)
+    assert e_min == pytest.approx(3.21362, abs=6e-6)
+    assert to.solve_equilibrium(m, 1.0, 0.3).energy == pytest.approx(e_min, rel=1e-10)
+
+
+def test_bistable_curve_stays_on_the_least_energy_branch():
+    """Issue 13: the curve left the least-energy branch (24 points on a higher one). At every point the
+    curve's energy equals the least stable energy of the reference model's descent from all well patterns."""
+    m = to.Manipulator.uniform(5, 0.6, 1, 1, 1.2)
+    dxs = np.linspace(0.02, 4, 40)
+    c = to.force_deflection(m, dxs)
+    switches = [j for j in c.jumps if j.kind == "branch_switch"]
+    assert len(switches) == 5
+    assert switches[0].dx_before > 0.6 and switches[-1].dx_after < 2.3     # "5 times between 0.63 and 2.27"
+    chain = _chain(m)
+    w = _well(0.6, 1, 1, 1.2)
+    patterns = np.array(np.meshgrid(*[[-w, w]] * m.n, indexing="ij")).reshape(m.n, -1).T
+    for i in (5, 16, 18, 20, 30):
+        best = _least_descent(chain, chain.target(dxs[i]), patterns)
+        assert c.energy[i] <= best + 1e-8 * max(1.0, abs(best)), dxs[i]
+
+
+# ----------------------------------------------------------------------------- the homotopy itself
+@needs_phc
+def test_homotopy_paper_chain_six_equilibria_certified():
+    m = to.Manipulator.uniform(4)
+    eqs = to.find_equilibria(m, 0.1, method="homotopy")
+    assert eqs.method == "homotopy" and eqs.certified and eqs.failed_paths == 0
+    assert eqs.paths == 456                    # mixed volume of the Laurent system for a = b
+    assert [e.kind for e in eqs] == ["minimum", "minimum", "saddle", "saddle", "maximum", "maximum"]
+    assert [e.shape for e in eqs] == ["U", "U", "ZU", "ZU", "Z", "Z"]
+    assert abs(eqs[0].fy) == pytest.approx(0.02579, abs=1e-5)          # conventions.md
+    search = to.find_equilibria(m, 0.1)
+    assert len(search) == 6
+    for e in eqs:
+        assert min(np.max(np.abs(e.q - s.q)) for s in search) < 1e-9
+
+
+@needs_phc
+@pytest.mark.parametrize("seed", range(6))
+def test_homotopy_matches_independent_brute_force(seed):
+    """Random multistable n = 3 chains: the homotopy's set equals the reference model's Newton from 600
+    random starts (independent code), with the same Morse indices."""
+    rng = np.random.default_rng(300 + seed)
+    while True:
+        segs = [to.Segment(rng.uniform(0.4, 0.8), rng.uniform(0.8, 1.2), (rng.uniform(0.5, 2), rng.uniform(0.5, 2)),
+                           (rng.uniform(0.3, 0.9), rng.uniform(0.3, 0.9))) for _ in range(3)]
+        m = to.Manipulator(segs)
+        dx, dy = rng.uniform(0.1, 0.4) * m.straight_length, rng.uniform(-0.2, 0.2) * m.straight_length
+        if m.monotonic:
+            continue
+        try:
+            m.check_reachable(dx, dy)
+        except ValueError:
+            continue
+        hom = to.find_equilibria(m, dx, dy, method="homotopy")
+        if len(hom):
+            break
+    assert hom.certified
+    chain = _chain(m)
+    brute = ref.all_equilibria(chain, dx, dy, n_starts=600, seed=seed)
+    assert len(brute) == len(hom)
+    for q, F in brute:
+        e = min(hom, key=lambda e: np.max(np.abs(e.q - q)))
+        assert np.max(np.abs(e.q - q)) < 1e-8
+        assert e.morse_index == int(np.sum(chain.reduced_eigs(q, F, fd=False) < 0))
+
+
+@needs_phc
+def test_homotopy_two_segments_closed_form():
+    """n = 2: the tip fixes both joints (elbow up / down), so exactly those two configurations."""
+    m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 0.6), to.Segment(0.7, 1.1, (1.0, 1.5), (0.8, 0.7))])
+    dx, dy = 0.6, 0.4
+    eqs = to.find_equilibria(m, dx, dy, method="homotopy")
+    assert eqs.certified and eqs.paths == 8
+    x, y = m.target(dx, dy) - np.array([m.base_length, 0.0])
+    l1, l2 = m.link_lengths
+    c2 = (x * x + y * y - l1 * l1 - l2 * l2) / (2 * l1 * l2)
+    expected = []
+    for s in (1.0, -1.0):
+        q2 = s * np.arccos(c2)
+        q1 = np.arctan2(y, x) - np.arctan2(l2 * np.sin(q2), l1 + l2 * np.cos(q2))
+        if abs(q1) < m.joint_limits[0] and abs(q2) < m.joint_limits[1]:
+            expected.append(np.array([q1, q2]))
+    assert len(eqs) == len(expected) >= 1
+    for q in expected:
+        assert min(np.max(np.abs(e.q - q)) for e in eqs) < 1e-10
+
+
+def _fake_phc(tmp_path, report: str) -> str:
+    """A stand-in ``phc`` that writes ``report`` as its output file (the last argument)."""
+    out = tmp_path / "report.txt"
+    out.write_text(report)
+    exe = tmp_path / "phc"
+    exe.write_text(f"#!/bin/sh\nfor last; do :; done\ncp '{out}' \"$last\"\n")
+    exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
+    return str(exe)
+
+
+_ROOT = """solution {k} :    start residual :  1.0E-15   #iterations : 1   success
+t :  1.00000000000000E+00   0.00000000000000E+00
+m : 1
+the solution for t :
+ z1 :  {z1r}   {z1i}
+ z2 :  {z2r}   {z2i}
+ g :  {gr}   {gi}
+ h :  {hr}   {hi}
+== err :  1.0E-16 = rco :  1.0E-01 = res :  1.0E-15 = real regular ==
+"""
+
+
+def _report(m, dx, dy, failures: int) -> str:
+    """A phc report holding the two true roots of an n = 2 chain (computed here in closed form) and the
+    given number of failed paths."""
+    target = m.target(dx, dy)
+    eqs = [e for e in to.find_equilibria(m, dx, dy)]
+    body = ""
+    for k, e in enumerate(eqs, 1):
+        z = np.exp(0.5j * e.q)
+        g, h = complex(e.fx, e.fy), complex(e.fx, -e.fy)
+        body += _ROOT.format(k=k, z1r=f"{z[0].real:.14E}", z1i=f"{z[0].imag:.14E}", z2r=f"{z[1].real:.14E}",
+                             z2i=f"{z[1].imag:.14E}", gr=f"{g.real:.14E}", gi=f"{g.imag:.14E}",
+                             hr=f"{h.real:.14E}", hi=f"{h.imag:.14E}")
+    assert target is not None
+    return (f"mixed volume : {len(eqs) + failures}\nTHE SOLUTIONS :\n\n{len(eqs)} 4\n" + "=" * 20 + "\n" + body
+            + f"Number of regular solutions     : {len(eqs)}.\nNumber of singular solutions    : 0.\n"
+              f"Number of solutions at infinity : 0.\nNumber of failures              : {failures}.\n")
+
+
+def test_failed_paths_make_the_result_uncertified(tmp_path, monkeypatch):
+    m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 0.6), to.Segment(0.7, 1.1, 1.0, 0.8)])
+    monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, _report(m, 0.5, 0.2, failures=3)))
+    eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
+    assert eqs.failed_paths == 3 and not eqs.certified
+    assert len(eqs) == len(to.find_equilibria(m, 0.5, 0.2))       # the roots found are still reported
+    monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, _report(m, 0.5, 0.2, failures=0)))
+    assert to.find_equilibria(m, 0.5, 0.2, method="homotopy").certified
+
+
+def test_missing_engine_names_the_package(monkeypatch):
+    monkeypatch.setenv("TENSEGRITY_PHC", "/nonexistent/phc")
+    with pytest.raises(to.HomotopyUnavailableError, match="phcpack") as info:
+        to.find_equilibria(to.Manipulator.uniform(3, 0.6, 1, 1, 1.0), 0.3, method="homotopy")
+    assert isinstance(info.value, RuntimeError) and info.value.field == "method"
+
+
+def test_homotopy_refuses_long_chains_and_unknown_methods():
+    with pytest.raises(to.InvalidParameterError, match="up to 6"):
+        to.find_equilibria(to.Manipulator.uniform(7, 0.6, 1, 1, 1.0), 0.3, method="homotopy")
+    with pytest.raises(to.InvalidParameterError) as info:
+        to.find_equilibria(to.Manipulator.uniform(3), 0.3, method="brute")
+    assert info.value.field == "method"
+
+
+def test_polynomial_system_vanishes_at_a_true_equilibrium():
+    """The Laurent system evaluated (numpy) at an equilibrium found by the independent reference model."""
+    from tensegrity_opt.homotopy import residuals
+
+    m = to.Manipulator([to.Segment(0.6, 1.0, (1.0, 1.4), (0.7, 0.9)), to.Segment(0.5, 0.9, 1.2, 0.5),
+                        to.Segment(0.7, 1.1, 0.8, 1.6)])
+    chain = _chain(m)
+    target = chain.target(0.7, 0.3)
+    q, F, ok = chain.newton_kkt(target, np.array([0.3, -0.4, 0.2]))
+    assert ok
+    root = np.concatenate([np.exp(0.5j * q), [complex(F[0], F[1]), complex(F[0], -F[1])]])
+    assert residuals(m, target, root[None, :])[0] < 1e-13
+    wrong = root.copy()
+    wrong[1] *= np.exp(0.01j)
+    assert residuals(m, target, wrong[None, :])[0] > 1e-4
