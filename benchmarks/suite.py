@@ -17,6 +17,9 @@ Cases (the issue's targets):
 6. critical load n = 10000: <= 0.5 s; dense reduced ``eigh`` at n = 2000 for the ratio.
 7. service ``/v1/equilibrium`` under 32 clients: throughput >= 0.5x ``/healthz``, p99 <= 25 ms, 0 errors.
 8. service ``/v1/batch/equilibrium`` with 1000 targets: median latency <= 0.3 s.
+9. multistable (bistable, K < 0) chains: global solve n = 4 and n = 8 (goal <= 20 ms for n = 8) vs a
+   64-start SLSQP; ``find_equilibria`` n = 4 and n = 8 (goal <= 1 s for n = 8); the certified homotopy
+   (PHCpack) per n with its path count, vs the search on the same target.
 """
 
 from __future__ import annotations
@@ -706,8 +709,62 @@ def markdown(rows: list[Row], machine: dict[str, Any], cfg: Config, total: float
     return "\n".join(lines)
 
 
+#: The multistable chains of case 9: bistable segments (K = 1.2 - 2 (1 - 0.36) = -0.08 < 0).
+BISTABLE = {"a": 0.6, "b": 1.0, "k": 1.0, "L0": 1.2}
+
+
+def case9(cfg: Config) -> list[Row]:
+    """Multistable chains: global solve, every equilibrium, and the certified homotopy."""
+    from tensegrity_opt.homotopy import homotopy_available
+
+    rows: list[Row] = []
+    reps = 3 if cfg.quick else 7
+    for n, targets in ((4, [(1.0, 0.3), (2.0, 0.0), (0.5, -0.4)]), (8, [(2.0, 0.0), (3.0, 1.0), (1.0, -0.5)])):
+        m = to.Manipulator.uniform(n, **BISTABLE)
+        to.solve_equilibrium(m, *targets[0])                # warm-up (kernels built)
+        ours, base, agree = [], [], []
+        for dx, dy in targets:
+            ours += repeat(lambda: to.solve_equilibrium(m, dx, dy), reps, warmup=0)
+            r, dt = bl.timed(bl.slsqp_multistart, bl.Chain(m), dx, dy, 64)
+            base.append(dt)
+            agree.append((r.energy - to.solve_equilibrium(m, dx, dy).energy) / abs(r.energy))
+        o, b = median_ms(ours), median_ms(base)
+        c = np.asarray(agree)
+        rows.append(Row("9", "bistable global solve", n, o, "ms", "SLSQP multistart, 64 random starts", b,
+                        ratio=b / o, target="<= 20 ms (goal)" if n == 8 else "(info)",
+                        met=(o <= 20.0) if n == 8 else None, samples=ours, baseline_samples=base,
+                        notes=[f"bistable n={n} ({BISTABLE}), targets {targets}: SLSQP energy vs ours: same (1e-8) on "
+                               f"{int(np.sum(np.abs(c) <= 1e-8))}/{c.size}, SLSQP higher on {int(np.sum(c > 1e-8))}, "
+                               f"lower on {int(np.sum(c < -1e-8))}"]))
+        fe = repeat(lambda: to.find_equilibria(m, *targets[0]), max(2, reps // 2), warmup=1)
+        count = len(to.find_equilibria(m, *targets[0]))
+        rows.append(Row("9", "bistable find_equilibria", n, median_ms(fe), "ms", target="<= 1 s (goal)" if n == 8
+                        else "(info)", met=(median_ms(fe) <= 1000.0) if n == 8 else None, samples=fe,
+                        notes=[f"find_equilibria n={n} at (dx, dy) = {targets[0]}: {count} equilibria"]))
+    if not homotopy_available():
+        rows.append(Row("9", "homotopy (PHCpack)", "-", None, "ms", notes=["phc not installed: homotopy rows skipped"]))
+        return rows
+    for n in ((2, 3, 4) if cfg.quick else (2, 3, 4, 5)):
+        m = to.Manipulator([to.Segment(0.6, 1.0, 1.0, 1.2), to.Segment(0.55, 1.1, (1.2, 0.9), (1.0, 1.3)),
+                            to.Segment(0.7, 0.9, 1.5, 0.6), to.Segment(0.5, 1.0, 0.8, 1.1),
+                            to.Segment(0.65, 1.05, 1.0, 1.0)][:n])
+        dx, dy = 0.25 * m.straight_length, 0.1 * m.straight_length
+        t0 = time.perf_counter()
+        h = to.find_equilibria(m, dx, dy, method="homotopy")
+        th = (time.perf_counter() - t0) * 1e3
+        ts = repeat(lambda: to.find_equilibria(m, dx, dy), 3, warmup=1)
+        s = to.find_equilibria(m, dx, dy)
+        same = len(s) == len(h) and all(min(np.max(np.abs(e.q - f.q)) for f in s) < 1e-6 for e in h)
+        rows.append(Row("9", "homotopy find_equilibria (certified)", n, th, "ms", "search find_equilibria (same target)",
+                        median_ms(ts), ratio=median_ms(ts) / th, target="n <= 4 required; <= 60 s (goal n <= 6)",
+                        met=th <= 60000.0, samples=[th / 1e3], baseline_samples=ts,
+                        notes=[f"homotopy n={n}: {h.paths} paths, {h.failed_paths} failed, certified {h.certified}, "
+                               f"{len(h)} equilibria; the search finds {len(s)} ({'the same set' if same else 'DIFFERENT'})"]))
+    return rows
+
+
 CASES: list[tuple[str, Callable[[Config], list[Row]]]] = [
-    ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8),
+    ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8), ("9", case9),
 ]
 
 

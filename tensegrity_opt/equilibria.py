@@ -151,7 +151,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     sample = project_to_target(m, rng.uniform(-0.95, 0.95, (int(n_projected), m.n)) * m.joint_limits, target)
     more = np.vstack([well_seeds(m, dx, dy), sample])
     if more.shape[0]:
-        batch = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, more)
+        batch = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, more, python_fallback=False)
         for j in np.flatnonzero(batch.success & ~batch.on_bound).tolist():
             res = batch.result(j)
             if is_equilibrium(m, res, target):
@@ -171,11 +171,15 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
 
 
 def _unique(results, tol: float) -> list:
-    unique: list = []
-    for res in results:
-        if not any(np.max(np.abs(res.q - u.q)) < tol for u in unique):
-            unique.append(res)
-    return unique
+    """The first of each group of results whose angles agree within ``tol`` (max-norm), in order."""
+    if not results:
+        return []
+    Q = np.array([r.q for r in results])
+    kept = [0]
+    for i in range(1, Q.shape[0]):
+        if np.abs(Q[kept] - Q[i]).max(axis=1).min() >= tol:
+            kept.append(i)
+    return [results[i] for i in kept]
 
 
 def _sorted(m: Manipulator, results) -> list[Equilibrium]:
@@ -203,7 +207,8 @@ def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: fl
         else:
             lost += 1
     certified = sol.complete and lost == 0
-    status = (f"phc: {sol.paths} paths, {sol.failures} failed, {sol.at_infinity} at infinity, "
+    status = (f"phc ({sol.attempts} run{'s' if sol.attempts > 1 else ''}): {sol.paths} paths, {sol.failures} failed, "
+              f"{sol.at_infinity} at infinity, "
               f"{sol.singular} singular; {int(inside.sum())} real roots in range"
               + (f", {lost} not polished" if lost else ""))
     return EquilibriumSet(_sorted(m, _unique(polished, dedupe_tol)), method="homotopy", certified=certified,

@@ -230,7 +230,15 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         :class:`NoEquilibriumError` where ``"auto"`` would go on with IPOPT; for monotonic chains
         it returns what ``"auto"`` returns whenever it returns. With ``local=True`` the methods
         differ only in the fallback: ``"newton"`` raises :class:`SolverError` where the others
-        run IPOPT from ``q0``.
+        run IPOPT from ``q0``. ``"homotopy"``: the least-energy stable one of
+        ``find_equilibria(method="homotopy")`` — *certified* (every equilibrium is known) when its
+        ``status`` reads ``"homotopy (certified)"``; ``n <= 6``, seconds to minutes, needs PHCpack.
+
+        On chains with bistable segments the search also starts from every combination of the
+        segments' unloaded wells (up to ``WELLS_MAX``, projected onto the tip constraint); measured
+        against the certified homotopy on 97 random multistable chains n = 2..5 it returned the
+        least-energy stable equilibrium every time (``tests/test_completeness.py``), and against an
+        independent brute force for n = 6..10 (``benchmarks/search_check.py``). It is not certified.
     n_random, max_modes : int, optional
         Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
         for chains of up to 64 segments, plus the two arc seeds of large deflections
@@ -261,8 +269,11 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         return straight_equilibrium(m)
     if m.n == 1:
         return one_segment_equilibrium(m, target)
-    if method not in ("auto", "ipopt", "newton"):
-        raise InvalidParameterError(f"method must be 'auto', 'ipopt' or 'newton', got {method!r}", field="method")
+    if method not in ("auto", "ipopt", "newton", "homotopy"):
+        raise InvalidParameterError(f"method must be 'auto', 'ipopt', 'newton' or 'homotopy', got {method!r}",
+                                    field="method")
+    if method == "homotopy" and not local:
+        return _least_certified(m, dx, dy, q0)
     if local:
         res = local_equilibrium(m, target, q0)
         if not is_equilibrium(m, res, target, check_residual=False):
@@ -336,6 +347,22 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
 #: also descends from.
 WELLS_MAX = 256
 WELL_DESCENTS = 8
+
+
+def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None) -> Equilibrium:
+    """The least-energy stable equilibrium of the homotopy's complete set (``status`` says whether
+    that set is certified)."""
+    from dataclasses import replace
+
+    from .equilibria import find_equilibria
+
+    eqs = find_equilibria(m, dx, dy, method="homotopy")
+    stable = [e for e in eqs if e.stable]
+    label = "homotopy (certified)" if eqs.certified else f"homotopy (NOT certified: {eqs.failed_paths} failed paths)"
+    if not stable:
+        raise NoEquilibriumError(f"no stable equilibrium exists for dx={dx:g}, dy={dy:g} ({len(eqs)} unstable ones"
+                                 f"{'' if eqs.certified else ' found'}; {eqs.status})", status=label)
+    return replace(_pick(stable, q0), status=label)
 
 
 def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,

@@ -65,6 +65,8 @@ __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "so
 
 #: Coefficients smaller than this relative to the largest one of their equation are zero.
 CLEAN_TOL = 1e-14
+#: Most ``phc`` runs when paths fail (each run draws new random constants).
+ATTEMPTS = 3
 #: A root is real when ``| |z_j| - 1 |`` and ``|g - conj(h)|`` (relative) are below this.
 REAL_TOL = 1e-6
 
@@ -99,8 +101,10 @@ class HomotopySolve:
     singular : int
         Singular finite roots.
     seconds : float
-        Wall time of the ``phc`` run.
+        Wall time of the ``phc`` runs.
     threads : int
+    attempts : int
+        ``phc`` runs made (a run with failed paths is repeated, :func:`solve_homotopy`).
     """
 
     roots: np.ndarray
@@ -111,6 +115,7 @@ class HomotopySolve:
     singular: int
     seconds: float
     threads: int = 1
+    attempts: int = 1
 
     @property
     def complete(self) -> bool:
@@ -231,16 +236,24 @@ _COUNT = re.compile(r"Number of (regular solutions|singular solutions|solutions 
 _MV = re.compile(r"mixed volume\s*:\s*(\d+)")
 
 
-def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeout: float | None = None
-                   ) -> HomotopySolve:
+def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeout: float | None = None,
+                   attempts: int = ATTEMPTS) -> HomotopySolve:
     """Every isolated complex root of :func:`polynomial_system` by ``phc -b`` (polyhedral homotopy).
+
+    PHCpack draws new random constants (the gamma trick, the lifting) on every run, so a path that
+    failed in one run is tracked afresh in the next: a run with failed paths is repeated, up to
+    ``attempts`` runs in all, and the first run without failures (else the one with the fewest) is
+    returned. Measured: 3 of 96 paths failed in one n = 3 run and none in the next five.
 
     Parameters
     ----------
     threads : int, optional
         ``phc -t`` tasks; default: the CPUs available (at most 8).
     timeout : float, optional
-        Seconds before ``phc`` is killed (:class:`SolverError` with status ``"phc_timeout"``).
+        Seconds (for all attempts together) before ``phc`` is killed (:class:`SolverError` with status
+        ``"phc_timeout"``).
+    attempts : int
+        Most runs when paths fail.
 
     Raises
     ------
@@ -257,6 +270,32 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
     if threads is None:
         threads = max(1, min(8, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1))
     text = polynomial_system(m, target)
+    deadline = None if timeout is None else time.monotonic() + float(timeout)
+    best: HomotopySolve | None = None
+    for attempt in range(max(1, int(attempts))):
+        left = None if deadline is None else deadline - time.monotonic()
+        if left is not None and left <= 0.0:
+            if best is not None:
+                break                   # out of time for another try: the best run so far
+            raise SolverError(f"phc did not finish within {timeout:g} s (n = {m.n})", status="phc_timeout")
+        try:
+            run = _run_phc(exe, text, m.n, int(threads), left)
+        except SolverError:
+            if best is None:
+                raise
+            break
+        run = HomotopySolve(**{**run.__dict__, "attempts": attempt + 1,
+                               "seconds": run.seconds + (best.seconds if best else 0.0)})
+        if best is None or run.failures < best.failures:
+            best = run
+        if best.failures == 0:
+            break
+    assert best is not None
+    return best
+
+
+def _run_phc(exe: str, text: str, n: int, threads: int, timeout: float | None) -> HomotopySolve:
+    """One ``phc -b`` run on the system ``text``."""
     with tempfile.TemporaryDirectory(prefix="tensegrity_phc_") as tmp:
         src, out = os.path.join(tmp, "system.phc"), os.path.join(tmp, "system.out")
         with open(src, "w") as f:
@@ -266,14 +305,14 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
         try:
             proc = subprocess.run(cmd, capture_output=True, timeout=timeout, cwd=tmp, stdin=subprocess.DEVNULL)
         except subprocess.TimeoutExpired:
-            raise SolverError(f"phc did not finish within {timeout:g} s (n = {m.n})", status="phc_timeout") from None
+            raise SolverError(f"phc did not finish within {timeout:g} s (n = {n})", status="phc_timeout") from None
         seconds = time.perf_counter() - t0
         if not os.path.exists(out):
             raise SolverError(f"phc wrote no output (exit code {proc.returncode}): "
                               f"{proc.stderr.decode(errors='replace')[-300:]}", status="phc_failed")
         with open(out, errors="replace") as f:
             report = f.read()
-    return _parse(report, m.n + 2, seconds, int(threads))
+    return _parse(report, n + 2, seconds, threads)
 
 
 def _parse(report: str, nv: int, seconds: float, threads: int) -> HomotopySolve:

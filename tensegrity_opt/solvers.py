@@ -502,7 +502,8 @@ class _Model:
         return [batch.result(j) for j in range(len(batch.status))]
 
     def newton_kkt_seeds(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
-                         starts: np.ndarray | list[np.ndarray], same: float = 0.0) -> SeedResults:
+                         starts: np.ndarray | list[np.ndarray], same: float = 0.0, *,
+                         python_fallback: bool = True) -> SeedResults:
         """:meth:`newton_kkt` from each start (force from eq. (8)); the seeds of a global search.
 
         With kernels, up to ``kernels.seed_columns(n)`` starts per compiled call (``kernels.SEED_ITER``
@@ -510,7 +511,9 @@ class _Model:
         if that fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
         ``same`` > 0 (rad): the result's ``distinct`` marks the converged rows inside the range whose angles
         differ by at least ``same`` from every earlier such row's, when one kernel call settled every start
-        (else ``distinct`` is ``None``: compare the rows yourself).
+        (else ``distinct`` is ``None``: compare the rows yourself). ``python_fallback=False``: a start the
+        kernels did not converge is left unconverged (no run of the Python method from it): for large
+        samples of starts where a few failures cost nothing.
         """
         n, m = self.n, self.n - 2
         Q0 = np.asarray(starts, dtype=float).reshape(-1, n)
@@ -542,7 +545,10 @@ class _Model:
                                         50 - _kernels.SEED_ITER)
                 if r is not None:
                     r.iterations += _kernels.SEED_ITER
-            _set_row(out_b, j, r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
+            if r is not None or python_fallback:
+                _set_row(out_b, j, r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
+            else:
+                out_b.status[j] = "Newton_Max_Iterations"
         return out_b
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,

@@ -128,6 +128,8 @@ def test_bistable_n4_least_energy_vs_homotopy():
     e_min = min(e.energy for e in hom if e.stable)
     assert e_min == pytest.approx(3.21362, abs=6e-6)
     assert to.solve_equilibrium(m, 1.0, 0.3).energy == pytest.approx(e_min, rel=1e-10)
+    cert = to.solve_equilibrium(m, 1.0, 0.3, method="homotopy")
+    assert cert.status == "homotopy (certified)" and cert.energy == pytest.approx(e_min, rel=1e-12)
 
 
 def test_bistable_curve_stays_on_the_least_energy_branch():
@@ -262,6 +264,22 @@ def test_failed_paths_make_the_result_uncertified(tmp_path, monkeypatch):
     assert len(eqs) == len(to.find_equilibria(m, 0.5, 0.2))       # the roots found are still reported
     monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, _report(m, 0.5, 0.2, failures=0)))
     assert to.find_equilibria(m, 0.5, 0.2, method="homotopy").certified
+
+
+def test_a_run_with_failed_paths_is_repeated(tmp_path, monkeypatch):
+    """PHCpack draws new random constants per run: the first run fails 2 paths, the second none."""
+    m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 0.6), to.Segment(0.7, 1.1, 1.0, 0.8)])
+    bad, good = tmp_path / "bad.txt", tmp_path / "good.txt"
+    bad.write_text(_report(m, 0.5, 0.2, failures=2))
+    good.write_text(_report(m, 0.5, 0.2, failures=0))
+    count = tmp_path / "count"
+    exe = tmp_path / "phc"
+    exe.write_text(f"#!/bin/sh\nfor last; do :; done\nif [ -e '{count}' ]; then cp '{good}' \"$last\"; "
+                   f"else touch '{count}'; cp '{bad}' \"$last\"; fi\n")
+    exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
+    monkeypatch.setenv("TENSEGRITY_PHC", str(exe))
+    eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
+    assert eqs.certified and eqs.failed_paths == 0 and "2 runs" in eqs.status
 
 
 def test_missing_engine_names_the_package(monkeypatch):
