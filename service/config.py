@@ -61,6 +61,10 @@ class Settings(BaseSettings):
     max_segments: int = Field(200, ge=1, le=HARD_MAX_SEGMENTS, description="largest chain accepted")
     max_batch: int = Field(1000, ge=1, le=HARD_MAX_BATCH, description="most targets in one batch")
     solve_timeout: float = Field(10.0, gt=0, description="seconds one request may wait for its result")
+    homotopy_max_segments: int = Field(
+        4, ge=0, le=6,
+        description="longest chain for which /v1/equilibria accepts method=homotopy (PHCpack; n = 4 takes "
+                    "4-8 s, n = 5 one to two minutes: raise solve_timeout with it); 0: refused")
     batch_timeout: float = Field(60.0, gt=0, description="seconds one batch may run")
     workers: int = Field(2, ge=1, le=64, description="solver worker threads")
     inline_max_segments: int = Field(

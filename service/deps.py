@@ -57,6 +57,18 @@ def check_manipulator(m: Any, settings: Settings) -> FieldContext:
     return FieldContext(manipulator=form)
 
 
+def check_homotopy(req: s.EquilibriaRequest, settings: Settings) -> None:
+    """Refuse ``method: homotopy`` for chains longer than ``settings.homotopy_max_segments`` (422)."""
+    if req.method != "homotopy":
+        return
+    n = segment_count(req.manipulator)
+    if n > settings.homotopy_max_segments:
+        raise ServiceError(422, "too_many_segments",
+                           f"method 'homotopy' is accepted here for chains of up to {settings.homotopy_max_segments} "
+                           f"segments (its path count grows ~8x a segment); the chain has {n}: use method 'search'",
+                           field="method", details={"n": n, "homotopy_max_segments": settings.homotopy_max_segments})
+
+
 def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
     if len(req.targets) > settings.max_batch:
         raise ServiceError(422, "batch_too_large",

@@ -190,8 +190,8 @@ class EquilibriaRequest(BaseModel):
     method: Literal["search", "homotopy"] = Field(
         "search", description="`search`: multi-start Newton (any n; complete in practice, not certified); "
                               "`homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every "
-                              "equilibrium certified (n <= 6; seconds to a minute; needs the `phcpack` package "
-                              "on the server, else 503 `homotopy_unavailable`)")
+                              "equilibrium certified (chains up to the server's `homotopy_max_segments`, default 4; "
+                              "seconds; needs the `phcpack` package on the server, else 503 `homotopy_unavailable`)")
 
 
 class BucklingRequest(BaseModel):

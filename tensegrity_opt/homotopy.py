@@ -331,7 +331,10 @@ def _parse(report: str, nv: int, seconds: float, threads: int) -> HomotopySolve:
         if len(vals) < nv:
             continue
         root = np.array([complex(float(r), float(i)) for r, i in vals[:nv]])
-        tail = blk.split("==", 1)[1] if "==" in blk else ""
+        found = re.search(r"^== err.*==\s*$", blk, flags=re.M)     # this root's own classification line
+        tail = found.group(0) if found else ""
+        if "failure" in tail or "no solution" in tail:
+            continue                    # a failed path's last point is no root (counted in `failures`)
         roots.append(root)
         regular.append("singular" not in tail)
     paths = int(mv[-1]) if mv else len(blocks)

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import math
+import os
 import threading
 import time
 import warnings
@@ -23,6 +24,7 @@ with warnings.catch_warnings():
     from fastapi.testclient import TestClient
 
 import tensegrity_opt as to
+from tensegrity_opt.homotopy import homotopy_available
 from service.config import Settings
 from service.main import create_app
 
@@ -112,6 +114,31 @@ def test_equilibria(client):
     # sorted by energy; mirror images tie (equal to roundoff), so compare with a tolerance
     assert all(b >= a - 1e-12 * abs(a) for a, b in zip(energies, energies[1:]))
     assert [g["kind"] for g in got] == ["minimum", "minimum", "saddle", "saddle", "maximum", "maximum"]
+    assert r.json()["method"] == "search" and r.json()["certified"] is False
+
+
+@pytest.mark.skipif(not homotopy_available() and os.environ.get("TENSEGRITY_REQUIRE_PHC") != "1",
+                    reason="PHCpack's phc is not installed")
+def test_equilibria_homotopy_is_certified(client):
+    r = client.post("/v1/equilibria", json={"manipulator": {"n": 3, "a": 0.6, "L0": 0.8}, "dx": 0.5, "dy": 0.2,
+                                            "method": "homotopy"})
+    assert r.status_code == 200, r.text
+    body = r.json()
+    assert body["method"] == "homotopy" and body["certified"] is True and body["failed_paths"] == 0
+    assert body["paths"] == 96
+    search = to.find_equilibria(to.Manipulator.uniform(3, a=0.6, L0=0.8), 0.5, 0.2)
+    assert len(body["equilibria"]) == len(search) > 0
+    for g in body["equilibria"]:
+        assert min(np.max(np.abs(np.array(g["q"]) - e.q)) for e in search) < 1e-8
+
+
+def test_equilibria_homotopy_refusals(client, monkeypatch):
+    r = client.post("/v1/equilibria", json={"manipulator": {"n": 5}, "dx": 0.5, "method": "homotopy"})
+    assert r.status_code == 422 and r.json()["code"] == "too_many_segments" and r.json()["field"] == "method"
+    monkeypatch.setenv("TENSEGRITY_PHC", "/nonexistent/phc")
+    r = client.post("/v1/equilibria", json={"manipulator": {"n": 3}, "dx": 0.5, "method": "homotopy"})
+    assert r.status_code == 503 and r.json()["code"] == "homotopy_unavailable", r.text
+    assert "phcpack" in r.json()["message"]
 
 
 @pytest.mark.parametrize("boundary", ["guided", "free"])

@@ -11,7 +11,7 @@ from .. import schemas as s
 from ..compute import (equilibria_job, equilibrium_inline, equilibrium_inline_args, equilibrium_job,
                        force_equilibrium_job)
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, solve
+from ..deps import check_homotopy, check_manipulator, get_settings_dep, solve
 from . import solve_responses
 
 router = APIRouter(prefix="/v1", tags=["equilibrium"])
@@ -77,4 +77,5 @@ async def find_equilibria(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
+    check_homotopy(req, settings)
     return await solve(request, equilibria_job, req, settings.solve_timeout, ctx=ctx)
