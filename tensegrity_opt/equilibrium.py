@@ -398,7 +398,9 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     """:func:`search_stable` by Newton from every start: only converged points are looked at, only
     the distinct ones are classified (the first of each group of coinciding points, in the order of
     the starts), only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
-    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts, SAME_Q)
+    # on multistable chains (hundreds of well starts, IPOPT's descents after) a start the compiled
+    # Newton did not settle is dropped rather than run again by the Python method (~3 ms each)
+    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts, SAME_Q, python_fallback=m.monotonic)
     energy = b.energy.tolist()
     if b.distinct is not None:
         # one kernel call settled every start (all converged, no Python-method row) and compared the
