@@ -13,8 +13,15 @@ a joint limit) a global :func:`solve_equilibrium` starts a new one, and every
 ``jumps`` lists where the force is discontinuous: the buckling jump at ``dx -> 0+`` (from 0
 to the critical force, ``dy = 0``) and every switch of the selected branch.
 
+On chains with bistable segments new branches are born inside the range (folds): there a search
+from the global seeds and every combination of the segments' wells runs at *every* point, and
+each stable equilibrium on no followed branch starts a new one, so the selected branch is the
+least-energy stable one at every point (checked against the reference model's descent from all
+well patterns, ``tests/test_completeness.py``), each switch a jump located within one grid step.
+
 ``branch="all"``: additionally every branch found at the first point (:func:`find_equilibria`)
-is followed and returned in ``Curve.branches`` (NaN where it no longer exists).
+is followed and returned in ``Curve.branches`` (NaN where it no longer exists); on multistable
+chains also every branch born inside the range.
 
 Points with ``dx = dy = 0`` are the straight chain (force 0); they split the path into runs
 that are followed independently.
@@ -206,7 +213,9 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         Deflections (length units), in the order to follow (usually increasing).
     dy : float or array_like (m,)
     branch : {"stable", "all"}
-        ``"all"`` also follows every branch found at the first deflected point.
+        ``"all"`` also follows every branch found at the first deflected point and, on multistable
+        chains, every branch born inside the range (``find_equilibria`` at every point: seconds for
+        n <= 6, much more for long bistable chains with hundreds of equilibria).
     recheck_every : int
         A global solve every this many points guards against missed lower branches (0: never).
 
@@ -254,9 +263,10 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         since = 0
         for j in range(i, stop):
             if multistable and j > i:
-                # stable branches are born inside the range (folds): search at every point and
-                # follow each stable equilibrium that lies on no branch followed so far
-                for g in _newton_stable(m, dxs[j], dys[j]):
+                # branches are born inside the range (folds): search at every point and follow each
+                # equilibrium (stable ones; every one for branch="all") on no branch followed so far
+                born = find_equilibria(m, dxs[j], dys[j]) if branch == "all" else _newton_stable(m, dxs[j], dys[j])
+                for g in born:
                     if not any(br.valid[j] and np.max(np.abs(br.q[j] - g.q)) < 1e-6 for br in branches):
                         new_branch(j, g, stop)
             live = [br for br in branches if br.valid[j] and br.stable[j]]

@@ -312,3 +312,18 @@ def test_polynomial_system_vanishes_at_a_true_equilibrium():
     wrong = root.copy()
     wrong[1] *= np.exp(0.01j)
     assert residuals(m, target, wrong[None, :])[0] > 1e-4
+
+
+@needs_phc
+def test_all_branches_include_those_born_inside_the_range():
+    """branch="all" on a bistable chain: at sampled points every equilibrium of the certified homotopy
+    lies on one of the curve's branches (branches are born at folds inside the range)."""
+    m = to.Manipulator.uniform(3, 0.6, 1, 1, 1.0)
+    dxs = np.linspace(0.02, 0.45 * m.straight_length, 25)
+    c = to.force_deflection(m, dxs, 0.3, branch="all")
+    for i in range(0, 25, 3):           # following only the first point's branches left 4 of 44 off
+        hom = to.find_equilibria(m, dxs[i], 0.3, method="homotopy")
+        assert hom.certified and len(hom) > 0
+        on = [b.q[i] for b in c.branches if np.all(np.isfinite(b.q[i]))]
+        for e in hom:
+            assert min(np.max(np.abs(e.q - q)) for q in on) < 1e-6, (dxs[i], e.q)
