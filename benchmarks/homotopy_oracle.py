@@ -80,7 +80,7 @@ def cases(n: int, seed: int):
 def reference_set(m: to.Manipulator, dx: float, dy: float, timeout: float | None = None):
     target = m.target(dx, dy)
     sol = solve_homotopy(m, target, timeout=timeout)
-    q, F, inside = real_configurations(m, sol)
+    q, F, inside, _ = real_configurations(m, sol)
     chain = ref.Chain(m.a, m.b, m.k1, m.k2, m.L1_0, m.L2_0)
     out = []
     ok = sol.complete

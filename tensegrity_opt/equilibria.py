@@ -165,6 +165,12 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         res = local_equilibrium(m, target, s.q, minimize=True)
         if is_equilibrium(m, res, target):
             results.append(res)
+    if dy == 0.0 and results and m == m.mirrored():
+        # a mirror-symmetric chain at dy = 0: -q is an equilibrium whenever q is (force (Fx, -Fy))
+        for r in _unique(results, dedupe_tol):
+            res = local_equilibrium(m, target, -r.q, r.force * np.array([1.0, -1.0]))
+            if is_equilibrium(m, res, target):
+                results.append(res)
     if not results:
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
@@ -192,27 +198,46 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from .homotopy import real_configurations, solve_homotopy
+    from .homotopy import real_configurations, rest_points_at, solve_homotopy
+    from .solvers import LocalResult
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
-                                    f"(its path count grows ~5x per segment), got n = {m.n}", field="method")
+                                    f"(its path count grows ~8x a segment), got n = {m.n}", field="method")
     sol = solve_homotopy(m, target, timeout=timeout)
-    q, F, inside = real_configurations(m, sol)
-    polished, lost = [], 0
-    for qi, Fi in zip(q[inside], F[inside]):
+    q, F, inside, regular = real_configurations(m, sol)
+    # F = 0 equilibria (g = h = 0) lie outside the torus the mixed volume counts: added from the
+    # segments' unloaded critical points (all of them, from each torque's quartic)
+    rest = rest_points_at(m, target)
+    q = np.vstack([q, rest])
+    F = np.vstack([F, np.zeros((rest.shape[0], 2))])
+    inside = np.concatenate([inside, np.ones(rest.shape[0], dtype=bool)])
+    regular = np.concatenate([regular, np.ones(rest.shape[0], dtype=bool)])
+    polished, lost, singular = [], 0, []
+    for qi, Fi, reg in zip(q[inside], F[inside], regular[inside]):
         res = local_equilibrium(m, target, qi, Fi)
-        if is_equilibrium(m, res, target) and np.max(np.abs(res.q - qi)) < 1e-6:
-            polished.append(res)
+        near = 1e-6 if reg else 1e-3            # a singular root comes to ~sqrt(eps) or worse
+        if is_equilibrium(m, res, target) and np.max(np.abs(res.q - qi)) < near:
+            (polished if reg else singular).append(res)
         elif m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL and m.in_range(qi):
-            from .solvers import LocalResult
-            polished.append(LocalResult(qi, Fi, True, "phc_root", 0))      # a root Newton cannot improve
+            (polished if reg else singular).append(LocalResult(qi, Fi, True, "phc_root", 0))   # Newton cannot improve it
         else:
             lost += 1
-    certified = sol.complete and lost == 0
+    regular_set = _unique(polished, 1e-9)
+    # distinct regular roots closer than dedupe_tol would be merged below: a near-degenerate pair the
+    # certificate does not separate
+    close = len(regular_set) - len(_unique(regular_set, dedupe_tol))
+    found = _unique(regular_set + singular, dedupe_tol if not singular else max(dedupe_tol, 1e-4))
+    certified = sol.complete and lost == 0 and close == 0
+    why = []
+    if not sol.consistent:
+        why.append("phc's report did not check out")
+    if lost:
+        why.append(f"{lost} real roots did not polish")
+    if close:
+        why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
     status = (f"phc ({sol.attempts} run{'s' if sol.attempts > 1 else ''}): {sol.paths} paths, {sol.failures} failed, "
-              f"{sol.at_infinity} at infinity, "
-              f"{sol.singular} singular; {int(inside.sum())} real roots in range"
-              + (f", {lost} not polished" if lost else ""))
-    return EquilibriumSet(_sorted(m, _unique(polished, dedupe_tol)), method="homotopy", certified=certified,
+              f"{sol.at_infinity} at infinity, {sol.singular} singular; {int(inside.sum())} real roots in range"
+              + (f" ({rest.shape[0]} with F = 0)" if rest.shape[0] else "") + "".join(f"; {w}" for w in why))
+    return EquilibriumSet(_sorted(m, found), method="homotopy", certified=certified,
                           paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=status)

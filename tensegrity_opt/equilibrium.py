@@ -358,7 +358,7 @@ def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None
 
     eqs = find_equilibria(m, dx, dy, method="homotopy")
     stable = [e for e in eqs if e.stable]
-    label = "homotopy (certified)" if eqs.certified else f"homotopy (NOT certified: {eqs.failed_paths} failed paths)"
+    label = "homotopy (certified)" if eqs.certified else f"homotopy (NOT certified: {eqs.status})"
     if not stable:
         raise NoEquilibriumError(f"no stable equilibrium exists for dx={dx:g}, dy={dy:g} ({len(eqs)} unstable ones"
                                  f"{'' if eqs.certified else ' found'}; {eqs.status})", status=label)

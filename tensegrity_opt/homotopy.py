@@ -67,8 +67,10 @@ __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "so
 CLEAN_TOL = 1e-14
 #: Most ``phc`` runs when paths fail (each run draws new random constants).
 ATTEMPTS = 3
-#: A root is real when ``| |z_j| - 1 |`` and ``|g - conj(h)|`` (relative) are below this.
+#: A regular root is real when ``| |z_j| - 1 |`` and ``|g - conj(h)|`` (relative) are below this;
+#: a singular one (accurate to ~sqrt(eps) at a double root, worse beyond) when below the second.
 REAL_TOL = 1e-6
+SINGULAR_REAL_TOL = 1e-3
 
 
 def phc_path() -> str | None:
@@ -105,6 +107,8 @@ class HomotopySolve:
     threads : int
     attempts : int
         ``phc`` runs made (a run with failed paths is repeated, :func:`solve_homotopy`).
+    consistent : bool
+        The report checked out (:func:`_parse`): exit code 0, declared, listed and mixed-volume counts equal.
     """
 
     roots: np.ndarray
@@ -116,11 +120,13 @@ class HomotopySolve:
     seconds: float
     threads: int = 1
     attempts: int = 1
+    consistent: bool = True
 
     @property
     def complete(self) -> bool:
-        """Every path reached an end: no failure, and finite plus diverged roots account for every path."""
-        return self.failures == 0 and self.roots.shape[0] + self.at_infinity >= self.paths
+        """Every path reached an end (no failure, no clustered end point, no path short of ``t = 1``) and
+        the report is consistent."""
+        return self.failures == 0 and self.consistent
 
 
 # ----------------------------------------------------------------------------- the polynomial system
@@ -128,7 +134,6 @@ def _laurent_terms(m: Manipulator, target) -> list[dict[tuple[int, ...], complex
     """The ``n + 2`` Laurent polynomials (dicts exponent tuple -> coefficient), unknowns ``z_1..z_n, g, h``."""
     n = m.n
     nv = n + 2
-    a, b, k1, k2, L10, L20 = m.a, m.b, m.k1, m.k2, m.L1_0, m.L2_0
     l = m.link_lengths
 
     def unit(j: int, p: int) -> tuple[int, ...]:
@@ -140,20 +145,9 @@ def _laurent_terms(m: Manipulator, target) -> list[dict[tuple[int, ...], complex
         poly[e] = poly.get(e, 0.0) + c
 
     def dE(j: int) -> dict:
-        # c = (z + 1/z)/2, s = -i (z - 1/z)/2; E' = -k1 (L1 - L10)(b s + a c) + k2 (L2 - L20)(a c - b s)
-        # with L1 = 2 b c - 2 a s, L2 = 2 b c + 2 a s. As a Laurent polynomial in z:
-        #   c^2 = (z^2 + 2 + z^-2)/4, s^2 = -(z^2 - 2 + z^-2)/4, c s = -i (z^2 - z^-2)/4.
-        aj, bj = float(a[j]), float(b[j])
-        # E' = A c^2 + B s^2 + C cs + D c + Es s
-        A = -2.0 * aj * bj * k1[j] + 2.0 * aj * bj * k2[j]
-        B = 2.0 * aj * bj * k1[j] - 2.0 * aj * bj * k2[j]
-        C = (-2.0 * bj * bj + 2.0 * aj * aj) * k1[j] + (-2.0 * bj * bj + 2.0 * aj * aj) * k2[j]
-        D = k1[j] * L10[j] * aj - k2[j] * L20[j] * aj
-        Es = k1[j] * L10[j] * bj + k2[j] * L20[j] * bj
         poly: dict = {}
-        for p, coef in ((2, A / 4 - B / 4 - 1j * C / 4), (0, A / 2 + B / 2), (-2, A / 4 - B / 4 + 1j * C / 4),
-                        (1, D / 2 - 1j * Es / 2), (-1, D / 2 + 1j * Es / 2)):
-            add(poly, unit(j, p), complex(coef))
+        for p, coef in _dE_coefficients(m, j).items():
+            add(poly, unit(j, p), coef)
         return poly
 
     def direction(j: int, sign: int, extra: int | None = None) -> tuple[int, ...]:
@@ -183,6 +177,25 @@ def _laurent_terms(m: Manipulator, target) -> list[dict[tuple[int, ...], complex
         add(poly, direction(j, 1, n + 1), float(l[j]) / 2j)
         eqs.append(poly)
     return [_clean(p) for p in eqs]
+
+
+def _dE_coefficients(m: Manipulator, j: int) -> dict[int, complex]:
+    """Segment ``j``'s ``E'(q)`` as a Laurent polynomial in ``z = exp(i q/2)``: ``{power: coefficient}``.
+
+    ``c = cos(q/2) = (z + 1/z)/2``, ``s = sin(q/2) = -i (z - 1/z)/2``;
+    ``E' = -k1 (L1 - L10)(b s + a c) + k2 (L2 - L20)(a c - b s)`` with ``L1 = 2 b c - 2 a s``,
+    ``L2 = 2 b c + 2 a s``, i.e. ``E' = A c^2 + B s^2 + C c s + D c + Es s``, and
+    ``c^2 = (z^2 + 2 + z^-2)/4``, ``s^2 = -(z^2 - 2 + z^-2)/4``, ``c s = -i (z^2 - z^-2)/4``.
+    """
+    aj, bj = float(m.a[j]), float(m.b[j])
+    k1, k2, L10, L20 = float(m.k1[j]), float(m.k2[j]), float(m.L1_0[j]), float(m.L2_0[j])
+    A = -2.0 * aj * bj * k1 + 2.0 * aj * bj * k2
+    B = 2.0 * aj * bj * k1 - 2.0 * aj * bj * k2
+    C = (2.0 * aj * aj - 2.0 * bj * bj) * (k1 + k2)
+    D = k1 * L10 * aj - k2 * L20 * aj
+    Es = k1 * L10 * bj + k2 * L20 * bj
+    return {2: complex(A / 4 - B / 4 - 1j * C / 4), 0: complex(A / 2 + B / 2), -2: complex(A / 4 - B / 4 + 1j * C / 4),
+            1: complex(D / 2 - 1j * Es / 2), -1: complex(D / 2 + 1j * Es / 2)}
 
 
 def _clean(poly: dict) -> dict:
@@ -215,9 +228,11 @@ def polynomial_system(m: Manipulator, target) -> str:
 
 
 def residuals(m: Manipulator, target, roots: np.ndarray) -> np.ndarray:
-    """Max-norm residual of the polynomial system at each root (rows of ``roots``), relative to the
+    """Max-norm residual of the polynomial system at each root (rows of ``roots``: ``z_1..z_n, g, h`` with
+    ``g = Fx + i Fy``, ``h = Fx - i Fy``, as :func:`solve_homotopy` returns them), relative to the
     largest coefficient of each equation: an independent check of what PHCpack returned."""
     polys = _laurent_terms(m, target)
+    roots = np.asarray(roots, dtype=complex)
     out = np.zeros(roots.shape[0])
     logs = None
     for poly in polys:
@@ -272,6 +287,7 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
     text = polynomial_system(m, target)
     deadline = None if timeout is None else time.monotonic() + float(timeout)
     best: HomotopySolve | None = None
+    spent = 0.0
     for attempt in range(max(1, int(attempts))):
         left = None if deadline is None else deadline - time.monotonic()
         if left is not None and left <= 0.0:
@@ -284,14 +300,14 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
             if best is None:
                 raise
             break
-        run = HomotopySolve(**{**run.__dict__, "attempts": attempt + 1,
-                               "seconds": run.seconds + (best.seconds if best else 0.0)})
-        if best is None or run.failures < best.failures:
+        spent += run.seconds
+        run = HomotopySolve(**{**run.__dict__, "attempts": attempt + 1, "seconds": spent})
+        if best is None or (not run.complete, run.failures) < (not best.complete, best.failures):
             best = run
-        if best.failures == 0:
+        if best.complete:
             break
     assert best is not None
-    return best
+    return HomotopySolve(**{**best.__dict__, "seconds": spent})
 
 
 def _run_phc(exe: str, text: str, n: int, threads: int, timeout: float | None) -> HomotopySolve:
@@ -312,51 +328,106 @@ def _run_phc(exe: str, text: str, n: int, threads: int, timeout: float | None) -
                               f"{proc.stderr.decode(errors='replace')[-300:]}", status="phc_failed")
         with open(out, errors="replace") as f:
             report = f.read()
-    return _parse(report, n + 2, seconds, threads)
+    return _parse(report, _names(n), seconds, threads, proc.returncode)
 
 
-def _parse(report: str, nv: int, seconds: float, threads: int) -> HomotopySolve:
+def _parse(report: str, names: list[str], seconds: float, threads: int, returncode: int = 0) -> HomotopySolve:
+    """Read phc's report: every path's end point, classified by its own line, with the totals checked.
+
+    A report is ``consistent`` only when phc exited with 0, it states the mixed volume, the solution list's
+    declared size equals the number of blocks and the mixed volume, every block ended at ``Re t = 1`` (phc
+    prints a complex ``t`` whose imaginary part is not zero at the end of polyhedral paths) and
+    maps every unknown by name. Clustered end points (two paths on one root: path jumping, a root may be
+    missing) count as failures."""
+    nv = len(names)
     head, sep, sols = report.rpartition("THE SOLUTIONS")
     if not sep:
         raise SolverError("phc's output holds no solution list", status="phc_failed")
     counts = dict((k, int(v)) for k, v in _COUNT.findall(sols))
     mv = _MV.findall(head)
+    declared = re.search(r"^\s*:?\s*(\d+)\s+(\d+)\s*$", sols, flags=re.M)
     roots, regular = [], []
     blocks = re.split(r"^solution \d+ :", sols, flags=re.M)[1:]
+    consistent = returncode == 0 and bool(mv) and declared is not None
+    consistent = consistent and int(declared.group(1)) == len(blocks) == int(mv[-1])
+    failed = infinite = 0
     for blk in blocks:
-        if "the solution for t" not in blk:
-            continue
-        vals = re.findall(r"^\s*\w+\s*:\s*(" + _NUM + r")\s+(" + _NUM + r")\s*$",
-                          blk.split("the solution for t :", 1)[1], flags=re.M)
-        if len(vals) < nv:
-            continue
-        root = np.array([complex(float(r), float(i)) for r, i in vals[:nv]])
-        found = re.search(r"^== err.*==\s*$", blk, flags=re.M)     # this root's own classification line
+        t = re.search(r"^t :\s*(" + _NUM + r")\s+(" + _NUM + r")", blk, flags=re.M)
+        found = re.search(r"^== err.*==\s*$", blk, flags=re.M)     # this end point's own classification
         tail = found.group(0) if found else ""
-        if "failure" in tail or "no solution" in tail:
-            continue                    # a failed path's last point is no root (counted in `failures`)
-        roots.append(root)
+        if "the solution for t" not in blk or t is None or not tail:
+            consistent = False
+            continue
+        vals = dict((k, complex(float(r), float(i))) for k, r, i in re.findall(
+            r"^\s*(\w+)\s*:\s*(" + _NUM + r")\s+(" + _NUM + r")\s*$", blk.split("the solution for t :", 1)[1],
+            flags=re.M))
+        if "failure" in tail or "no solution" in tail or "clustered" in tail:
+            failed += 1                 # a failed path's last point, or a second path on one root
+            continue
+        if "infinity" in tail or "infinite" in tail:
+            infinite += 1
+            continue
+        if abs(float(t.group(1)) - 1.0) > 1e-8 or any(v not in vals for v in names):
+            failed += 1                 # a path that stopped before its end (Re t < 1), or an unreadable point
+            continue
+        roots.append(np.array([vals[v] for v in names]))
         regular.append("singular" not in tail)
     paths = int(mv[-1]) if mv else len(blocks)
     roots_a = np.array(roots, dtype=complex).reshape(-1, nv)
-    return HomotopySolve(roots=roots_a, regular=np.array(regular, dtype=bool), paths=paths,
-                         failures=counts.get("failures", 0), at_infinity=counts.get("solutions at infinity", 0),
-                         singular=counts.get("singular solutions", 0), seconds=seconds, threads=threads)
+    failures = max(failed, counts.get("failures", 0) + counts.get("clustered solutions", 0))
+    return HomotopySolve(roots=roots_a, regular=np.array(regular, dtype=bool), paths=paths, failures=failures,
+                         at_infinity=max(infinite, counts.get("solutions at infinity", 0)),
+                         singular=counts.get("singular solutions", 0), seconds=seconds, threads=threads,
+                         consistent=consistent)
 
 
-def real_configurations(m: Manipulator, solve: HomotopySolve, *, tol: float = REAL_TOL
-                        ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The real roots as ``(q (k, n), F (k, 2), inside (k,) bool)``: ``q_j = 2 arg z_j`` (no wrapping: the
-    principal argument is the half angle in ``(-pi, pi]``), ``F = ((g + h)/2, (g - h)/(2i))``; ``inside`` marks
-    those in the open physical range."""
+def unloaded_critical_angles(m: Manipulator, j: int) -> np.ndarray:
+    """Every joint angle inside the range where segment ``j``'s torque vanishes (``E_j'(q) = 0``): the real
+    roots on the unit circle of the quartic ``z^2 E_j'(z) = 0`` (``z = exp(i q/2)``), all of them (companion
+    matrix eigenvalues), not a grid search."""
+    c = _clean(_dE_coefficients(m, j))
+    roots = np.roots([c.get(p, 0.0) for p in (2, 1, 0, -1, -2)])      # leading zeros are dropped by np.roots
+    roots = roots[np.abs(np.abs(roots) - 1.0) < 1e-8]
+    q = 2.0 * np.angle(roots)
+    return np.unique(np.round(q[np.abs(q) < m.joint_limits[j]], 13))
+
+
+def rest_points_at(m: Manipulator, target, *, tol: float = 1e-9) -> np.ndarray:
+    """The configurations with every joint at a zero of its own torque (``F = 0`` equilibria) whose tip is
+    ``target`` (rows; usually none). They have ``g = h = 0``, outside the torus where the mixed volume
+    counts roots, so :func:`solve_homotopy` cannot see them: the caller adds them (a finite product of the
+    segments' :func:`unloaded_critical_angles`)."""
+    angles = [unloaded_critical_angles(m, j) for j in range(m.n)]
+    if any(a.size == 0 for a in angles):
+        return np.zeros((0, m.n))
+    grids = np.meshgrid(*angles, indexing="ij")
+    Q = np.stack([g.ravel() for g in grids], axis=1)
+    phi = np.cumsum(Q, axis=1)
+    l = m.link_lengths
+    tips = np.column_stack([m.base_length + (np.cos(phi) * l).sum(axis=1), (np.sin(phi) * l).sum(axis=1)])
+    near = np.abs(tips - np.asarray(target, float)).max(axis=1) < tol * float(m.b.sum())
+    return Q[near]
+
+
+def real_configurations(m: Manipulator, solve: HomotopySolve, *, tol: float = REAL_TOL,
+                        singular_tol: float = SINGULAR_REAL_TOL
+                        ) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """The real roots as ``(q (k, n), F (k, 2), inside (k,) bool, regular (k,) bool)``: ``q_j = 2 arg z_j`` (no wrapping: the
+    principal argument is the half angle in ``(-pi, pi]``, and the range needs ``Re z_j > 0``),
+    ``F = ((g + h)/2, (g - h)/(2i))`` of the points projected onto the real set (``|z| = 1``, ``h = conj g``);
+    ``inside`` marks those in the open physical range. A regular root is real when its distance from the
+    real set is below ``tol`` (regular roots come to ~1e-14); a singular one (a degenerate equilibrium,
+    computed to ~sqrt(eps) or worse) when below ``singular_tol``: the callers polish every candidate."""
     n = m.n
     R = solve.roots
     if R.size == 0:
-        return np.zeros((0, n)), np.zeros((0, 2)), np.zeros(0, dtype=bool)
+        return np.zeros((0, n)), np.zeros((0, 2)), np.zeros(0, dtype=bool), np.zeros(0, dtype=bool)
     z, g, h = R[:, :n], R[:, n], R[:, n + 1]
     fscale = max(1.0, m.torque_scale / float(m.b.sum()))
-    real = (np.abs(np.abs(z) - 1.0).max(axis=1) < tol) & (np.abs(g - np.conj(h)) < tol * np.maximum(fscale, np.abs(g)))
+    dist = np.maximum(np.abs(np.abs(z) - 1.0).max(axis=1), np.abs(g - np.conj(h)) / np.maximum(fscale, np.abs(g)))
+    real = dist < np.where(solve.regular, tol, singular_tol)
     q = 2.0 * np.angle(z[real])
-    F = np.column_stack([((g + h) / 2).real, ((g - h) / 2j).real])[real]
+    G = 0.5 * (g + np.conj(h))[real]
+    F = np.column_stack([G.real, G.imag])
     inside = np.all(np.abs(q) < m.joint_limits, axis=1)
-    return q, F, inside
+    return q, F, inside, solve.regular[real]

@@ -199,9 +199,10 @@ def segment_critical_points(seg: Segment, num: int = 801) -> tuple[tuple[float, 
     torque on a grid over the range, refined by bisection (plain numpy: the model layer)."""
     lim = seg.joint_limit
     qs = np.linspace(-lim, lim, num)[1:-1]
+    qs = qs + 0.5 * (qs[1] - qs[0]) * (np.abs(qs) < 1e-12)   # no grid point exactly on q = 0 (M(0) = 0 there)
     M = seg.torque(qs)
     wells, tops = [], []
-    for i in np.flatnonzero(np.sign(M[:-1]) != np.sign(M[1:])).tolist():
+    for i in np.flatnonzero((M[:-1] > 0) != (M[1:] > 0)).tolist():
         lo, hi = float(qs[i]), float(qs[i + 1])
         flo = float(M[i])
         for _ in range(60):
@@ -213,7 +214,16 @@ def segment_critical_points(seg: Segment, num: int = 801) -> tuple[tuple[float, 
                 hi = mid
         root = 0.5 * (lo + hi)
         (wells if M[i] > 0 else tops).append(root)    # M = -E': + -> - is a minimum of E
-    return tuple(wells), tuple(tops)
+    return _merged(wells), _merged(tops)
+
+
+def _merged(roots: list[float], tol: float = 1e-9) -> tuple[float, ...]:
+    """The roots with near-duplicates (closer than ``tol``) merged."""
+    out: list[float] = []
+    for r in sorted(roots):
+        if not out or r - out[-1] > tol:
+            out.append(r)
+    return tuple(out)
 
 
 def _pattern_matrix(m: Manipulator, hilltops: bool, cap: int, rng_seed: int) -> np.ndarray:

@@ -282,6 +282,51 @@ def test_a_run_with_failed_paths_is_repeated(tmp_path, monkeypatch):
     assert eqs.certified and eqs.failed_paths == 0 and "2 runs" in eqs.status
 
 
+@pytest.mark.parametrize("defect", ["clustered", "short", "no_solution"])
+def test_report_defects_make_the_result_uncertified(tmp_path, monkeypatch, defect):
+    """A clustered end point (path jumping), a path short of t = 1 or a failed path's last point listed as
+    a block: the set is not certified, and such a point is never reported as a root."""
+    m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 0.6), to.Segment(0.7, 1.1, 1.0, 0.8)])
+    rep = _report(m, 0.5, 0.2, failures=0)
+    first = rep.index("solution 1 :")
+    block = rep[first:rep.index("solution 2 :")] if "solution 2 :" in rep else rep[first:rep.index("Number of")]
+    if defect == "clustered":
+        bad = block.replace("real regular", "real clustered : 2")
+    elif defect == "short":
+        bad = block.replace("t :  1.00000000000000E+00", "t :  9.00000000000000E-01")
+    else:
+        bad = block.replace("real regular", "no solution")
+    rep = rep.replace(block, bad)
+    monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, rep))
+    eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
+    assert not eqs.certified
+    assert len(eqs) == len(to.find_equilibria(m, 0.5, 0.2)) - 1
+
+
+@needs_phc
+def test_homotopy_includes_a_rest_configuration_at_the_target():
+    """F = 0 roots (g = h = 0) lie outside the torus the mixed volume counts: a target exactly at the
+    tip of a pre-bent chain's rest configuration must still list it (force 0)."""
+    from scipy.optimize import brentq
+
+    segs = [to.Segment(0.6, 1.0, (1.0, 1.3), (1.0, 1.2)), to.Segment(0.5, 1.0, (1.2, 1.0), (0.9, 1.0)),
+            to.Segment(0.55, 1.0, 1.0, 1.6)]
+    m = to.Manipulator(segs)
+    chain = _chain(m)
+    q_rest = []
+    for s in segs:                               # each segment's own rest angle, by the reference model
+        one = ref.Chain.from_segments([(s.a, s.b, s.k1, s.k2, s.L1_0, s.L2_0)])
+        g = lambda q: one.grad(np.array([q]))[0]                                  # noqa: E731
+        q_rest.append(brentq(g, -0.5, 0.5))
+    q_rest = np.array(q_rest)
+    assert np.max(np.abs(chain.grad(q_rest))) < 1e-12
+    x, y = chain.tip(q_rest)
+    eqs = to.find_equilibria(m, m.straight_length - x, y, method="homotopy")
+    assert eqs.certified
+    hit = [e for e in eqs if np.max(np.abs(e.q - q_rest)) < 1e-9]
+    assert len(hit) == 1 and np.max(np.abs(hit[0].force)) < 1e-9
+
+
 def test_missing_engine_names_the_package(monkeypatch):
     monkeypatch.setenv("TENSEGRITY_PHC", "/nonexistent/phc")
     with pytest.raises(to.HomotopyUnavailableError, match="phcpack") as info:
