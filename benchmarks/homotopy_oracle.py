@@ -93,8 +93,9 @@ def reference_set(m: to.Manipulator, dx: float, dy: float, timeout: float | None
             continue
         eig = chain.reduced_eigs(qp, Fp, constrained=True, fd=False)
         scale = max(1.0, float(np.abs(eig).max())) if eig.size else 1.0
+        smallest = float(np.abs(eig).min() / scale) if eig.size else 1.0
         out.append({"q": qp.tolist(), "force": Fp.tolist(), "energy": float(chain.energy(qp)),
-                    "morse_index": int(np.sum(eig < 0)), "min_abs_eig": float(np.abs(eig).min() / scale) if eig.size else 1.0})
+                    "morse_index": int(np.sum(eig < 0)), "min_abs_eig": smallest})
     out.sort(key=lambda e: e["energy"])
     return out, sol, ok
 

@@ -19,8 +19,9 @@ from .design import (Design, PreloadDesign, choose_preloads, critical_load_sensi
                      maximize_critical_force, preloads_for_critical_force)
 from .equilibria import EquilibriumSet, find_equilibria
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
-from .errors import (HomotopyUnavailableError, InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
-                     TensegrityError, UnreachableTargetError, UnstableStraightError, UnsupportedError)
+from .errors import (HomotopyUnavailableError, InfeasibleDesignError, InvalidParameterError, NoEquilibriumError,
+                     SolverError, StraightNotEquilibriumError, TensegrityError, UnreachableTargetError,
+                     UnstableStraightError, UnsupportedError)
 from .landscape import Landscape, energy_landscape
 from .manipulator import Manipulator
 from .segment import Segment

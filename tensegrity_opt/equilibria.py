@@ -7,8 +7,11 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted ``list`` of
     The KKT system ``grad E(q) = J(q)^T F``, ``tip(q) = target`` (n + 2 equations in ``q, F``) is
     solved by damped Newton (CasADi residual and exact Jacobian) from many seeds: every buckling
     mode with both signs at several amplitudes, random starts, the wells of bistable segments
-    (:func:`tensegrity_opt.seeds.well_seeds`), and IPOPT's minima. Complete *in practice*: measured
-    against the homotopy (``benchmarks/search_check.py``), never certified (``certified=False``).
+    (:func:`tensegrity_opt.seeds.well_seeds`), uniform random configurations projected onto the tip
+    constraint, mirror images, and IPOPT's minima. Complete *in practice* for n <= 5: measured against
+    the homotopy on 104 random multistable chains (``tests/test_completeness.py``); for n >= 6 against
+    an independent brute force (``benchmarks/search_check.py``), where it misses some; never certified
+    (``certified=False``).
 ``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
     Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
     (:mod:`tensegrity_opt.homotopy`); the real roots inside the physical range, polished by Newton.
@@ -39,7 +42,8 @@ __all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
 PROJECTED_PER_JOINT = 100
 PROJECTED_SEED = 4242
 
-#: Longest chain the homotopy method accepts (path counts: 8, 72, 456, ~2500, ~13000 for n = 2..6).
+#: Longest chain the homotopy method accepts (paths on general chains: 8, 96, 832, 6272, 43648 for
+#: n = 2..6; n = 6 takes ~12 min on 2 cores).
 HOMOTOPY_MAX_N = 6
 
 
@@ -90,7 +94,8 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     method : {"search", "homotopy"}
         ``"search"``: multi-start Newton (fast, any ``n``, complete in practice but not certified).
         ``"homotopy"``: PHCpack's polyhedral homotopy on the polynomial KKT system, certified
-        (``n <= 6``; seconds: ~0.05 s for n = 3, ~4 s for n = 4, ~40 s for n = 5 on 2 cores).
+        (``n <= 6``; on 2 cores ~0.5 s for n = 3, 4-8 s for n = 4, 1-2.5 min for n = 5, ~12 min for
+        n = 6; pass ``timeout``).
     n_random : int
         Random Newton starts (fixed seed: the answer is reproducible). Search only.
     amplitudes : sequence of float
@@ -220,7 +225,8 @@ def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: fl
         if is_equilibrium(m, res, target) and np.max(np.abs(res.q - qi)) < near:
             (polished if reg else singular).append(res)
         elif m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL and m.in_range(qi):
-            (polished if reg else singular).append(LocalResult(qi, Fi, True, "phc_root", 0))   # Newton cannot improve it
+            # a root Newton cannot improve (its residual checked here)
+            (polished if reg else singular).append(LocalResult(qi, Fi, True, "phc_root", 0))
         else:
             lost += 1
     regular_set = _unique(polished, 1e-9)

@@ -313,7 +313,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         if found and m.monotonic:
             return _pick(found, q0)
     if method == "newton":
-        found, n_unstable = search_stable(m, target, starts, statuses, minimize=False, least=True)
+        found, n_unstable = search_stable(m, target, starts, statuses, minimize=False, least=True, fallback=True)
         if found:
             return _pick(found, q0)
         raise NoEquilibriumError(f"Newton found no stable equilibrium for dx={dx:g}, dy={dy:g} from "
@@ -366,7 +366,7 @@ def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None
 
 
 def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
-            minimize: bool, least: bool = False) -> tuple[list[Equilibrium], int]:
+            minimize: bool, least: bool = False, fallback: bool | None = None) -> tuple[list[Equilibrium], int]:
     """Local solves from every start; the distinct stable equilibria and the count of unstable ones.
 
     ``least`` (Newton only): just the stable ones of least energy (within the tie tolerance of
@@ -375,7 +375,8 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
     is stable).
     """
     if not minimize:
-        return _search_stable_newton(m, target, starts, statuses, least)
+        return _search_stable_newton(m, target, starts, statuses, least,
+                                     m.monotonic if fallback is None else fallback)
     candidates: list[LocalResult] = []
     for res in (local_equilibrium(m, target, q, minimize=True) for q in starts):
         ok = is_equilibrium(m, res, target, check_residual=True)
@@ -393,14 +394,15 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
     return stable, n_unstable
 
 
-def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: dict[str, int], least: bool
-                          ) -> tuple[list[Equilibrium], int]:
+def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: dict[str, int], least: bool,
+                          fallback: bool = True) -> tuple[list[Equilibrium], int]:
     """:func:`search_stable` by Newton from every start: only converged points are looked at, only
     the distinct ones are classified (the first of each group of coinciding points, in the order of
     the starts), only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
-    # on multistable chains (hundreds of well starts, IPOPT's descents after) a start the compiled
-    # Newton did not settle is dropped rather than run again by the Python method (~3 ms each)
-    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts, SAME_Q, python_fallback=m.monotonic)
+    # ``fallback=False`` (multistable chains under method "auto": hundreds of well starts, IPOPT's
+    # descents after): a start the compiled Newton did not settle is dropped rather than run again by
+    # the Python method (~3 ms each)
+    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts, SAME_Q, python_fallback=fallback)
     energy = b.energy.tolist()
     if b.distinct is not None:
         # one kernel call settled every start (all converged, no Python-method row) and compared the

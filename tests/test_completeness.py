@@ -119,6 +119,40 @@ def test_bistable_n8_least_energy_vs_reference_descent():
     assert np.isfinite(best) and eq.energy <= best + 1e-9
 
 
+def _verified_morse(chain: ref.Chain, target, e) -> int:
+    """The reference model confirms ``e`` as an equilibrium in range and returns its Morse index."""
+    q, F, ok = chain.newton_kkt(target, e.q, e.force)
+    assert ok and chain.in_range(q) and np.max(np.abs(q - e.q)) < 1e-8
+    return int(np.sum(chain.reduced_eigs(q, F, fd=False) < 0))
+
+
+def test_bistable_n5_every_equilibrium():
+    """Issue 13: 22 returned where at least 52 exist. A Morse-3 maximum an independent brute force (4000
+    reference-model starts) found at q = [0.147852, 0.355537, -0.960061, 0.309796, 0.061975] is among them."""
+    m = to.Manipulator.uniform(5, 0.6, 1, 1, 1.2)
+    eqs = to.find_equilibria(m, 0.5)
+    assert len(eqs) >= 52
+    chain = _chain(m)
+    target = chain.target(0.5)
+    q = np.array([0.147852, 0.355537, -0.960061, 0.309796, 0.061975])
+    for sign in (1.0, -1.0):                     # and its mirror image
+        e = min(eqs, key=lambda e: np.max(np.abs(e.q - sign * q)))
+        assert np.max(np.abs(e.q - sign * q)) < 1e-5
+        assert e.morse_index == _verified_morse(chain, target, e) == 3
+    assert len({round(e.energy, 8) for e in eqs}) >= 26                 # mirror pairs share an energy
+
+
+def test_monotonic_n6_maxima_are_found():
+    """Issue 13: a Morse-4 maximum and its mirror were missed on a monotonic chain."""
+    m = to.Manipulator.uniform(6, a=0.7, b=1.25, k=2.2, L0=2.1)
+    eqs = to.find_equilibria(m, 0.5)
+    chain = _chain(m)
+    top = [e for e in eqs if e.morse_index == 4]
+    assert len(top) == 2 and np.max(np.abs(top[0].q + top[1].q)) < 1e-8
+    for e in top:
+        assert _verified_morse(chain, chain.target(0.5), e) == 4
+
+
 @needs_phc
 def test_bistable_n4_least_energy_vs_homotopy():
     """Issue 13: E = 3.21975 was returned while a stable 3.21362 exists."""
