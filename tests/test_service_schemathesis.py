@@ -29,7 +29,7 @@ def schemathesis_command() -> list[str] | None:
 def test_schemathesis_finds_no_server_error_and_no_spec_violation(tmp_path):
     env = clean_env(TENSEGRITY_MAX_SEGMENTS="24", TENSEGRITY_MAX_BATCH="50", TENSEGRITY_SOLVE_TIMEOUT="60",
                     TENSEGRITY_BATCH_TIMEOUT="30", TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"),
-                    TENSEGRITY_JOBS_MAX_POINTS="200", TENSEGRITY_HOMOTOPY_MAX_SEGMENTS="3")
+                    TENSEGRITY_JOBS_MAX_POINTS="200", TENSEGRITY_HOMOTOPY_MAX_SEGMENTS="2")
     with running_server(serve_command(free_port()), env, ready="/readyz", stdout=subprocess.DEVNULL) as (_, base):
         run = subprocess.run(
             [*schemathesis_command(), "run", str(ROOT / "openapi" / "openapi.json"), "--url", base,
