@@ -36,10 +36,14 @@ __all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
 
 #: Uniform random configurations projected onto the tip constraint per joint (default of ``n_projected``),
 #: and their generator's seed.
-#: Measured on the 100 oracle chains (n = 2..5): 60 n missed 1 equilibrium, 100 n and 150 n none;
+#: Measured on the 104 oracle chains (n = 2..5): 60 n missed 1 equilibrium, 100 n and 150 n none;
 #: running the Python Newton again from the starts the kernels did not converge found nothing more
-#: and doubled the time. A start not converged in the kernels is dropped.
+#: and doubled the time. A start not converged in the kernels is dropped. Multistable chains of up
+#: to SHORT_N segments (equilibria multiply; compiled kernels: microseconds a start) SHORT_PER_JOINT: an
+#: n = 6 chain whose homotopy set has 9 equilibria showed 8 with 100 n and 1200 starts, 9 with 3000.
 PROJECTED_PER_JOINT = 100
+SHORT_N = 6
+SHORT_PER_JOINT = 500
 PROJECTED_SEED = 4242
 
 #: Longest chain the homotopy method accepts (paths on general chains: 8, 96, 832, 6272, 43648 for
@@ -106,7 +110,8 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         More starting configurations (e.g. a previous solution). Search only.
     n_projected : int, optional
         Uniform random configurations (fixed seed) projected onto the tip constraint, Newton from each.
-        Default ``100 n`` for chains of up to 64 segments, else 0. Search only.
+        Default ``500 n`` for multistable chains of up to 6 segments, ``100 n`` for other chains of up
+        to 64, else 0. Search only.
     dedupe_tol : float
         Two solutions closer than this (max-norm of ``q``, rad) are one.
     timeout : float, optional
@@ -154,7 +159,8 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     # the wells of multistable chains and uniform random configurations, each projected onto the tip
     # constraint (a sample of the whole configuration manifold): Newton from all of them at once
     if n_projected is None:
-        n_projected = PROJECTED_PER_JOINT * m.n if m.n <= 64 else 0
+        per = SHORT_PER_JOINT if m.n <= SHORT_N and not m.monotonic else PROJECTED_PER_JOINT
+        n_projected = per * m.n if m.n <= 64 else 0
     rng = np.random.default_rng(PROJECTED_SEED + m.n)
     sample = project_to_target(m, rng.uniform(-0.95, 0.95, (int(n_projected), m.n)) * m.joint_limits, target)
     more = np.vstack([well_seeds(m, dx, dy), sample])
