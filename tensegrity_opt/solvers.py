@@ -144,6 +144,9 @@ class SeedResults:
 DENSE_MAX = 64
 #: Points per compiled batch (continuation and batched derivatives).
 BATCH = 128
+#: Further batched calls of the seeds kernel for the starts of a large sample not converged in the
+#: first (``newton_kkt_seeds(python_fallback=False)``); each call is ``kernels.SEED_ITER`` iterations.
+SAMPLE_ROUNDS = 5
 
 
 class _Fast:
@@ -511,9 +514,10 @@ class _Model:
         if that fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
         ``same`` > 0 (rad): the result's ``distinct`` marks the converged rows inside the range whose angles
         differ by at least ``same`` from every earlier such row's, when one kernel call settled every start
-        (else ``distinct`` is ``None``: compare the rows yourself). ``python_fallback=False``: a start the
-        kernels did not converge is left unconverged (no run of the Python method from it): for large
-        samples of starts where a few failures cost nothing.
+        (else ``distinct`` is ``None``: compare the rows yourself). ``python_fallback=False`` (large samples
+        of starts, where a few failures cost nothing): the starts not converged in the first call go on
+        from their iterates in up to ``SAMPLE_ROUNDS`` more batched calls of the same kernel (instead of one
+        ``newton`` kernel call each), and what is still not converged is left so (no Python method).
         """
         n, m = self.n, self.n - 2
         Q0 = np.asarray(starts, dtype=float).reshape(-1, n)
@@ -524,18 +528,42 @@ class _Model:
         self._set_scale(params)
         thresh = 1e-12 * self._scale
         fast, S, at = kern[2], _kernels.seed_columns(n), _kernels.seed_row(n)
-        chunks = -(-k_all // S)
-        src = np.zeros((chunks * S, n))
-        src[:k_all] = Q0
-        # a start's outputs are one column of the kernel's, one row here (copied: the buffer is reused)
-        parts = [fast(src[c * S:(c + 1) * S].ravel(), _active(S, min(S, k_all - c * S)), params, target, thresh,
-                      same)[0].reshape(S, -1).copy() for c in range(chunks)]
-        Y = (parts[0] if chunks == 1 else np.vstack(parts))[:k_all]
+
+        def call(Q: np.ndarray) -> tuple[np.ndarray, int]:
+            k = Q.shape[0]
+            chunks = -(-k // S)
+            src = np.zeros((chunks * S, n))
+            src[:k] = Q
+            # a start's outputs are one column of the kernel's, one row here (copied: the buffer is reused)
+            parts = [fast(src[c * S:(c + 1) * S].ravel(), _active(S, min(S, k - c * S)), params, target, thresh,
+                          same)[0].reshape(S, -1).copy() for c in range(chunks)]
+            return (parts[0] if chunks == 1 else np.vstack(parts))[:k], chunks
+
+        Y, chunks = call(Q0)
         # R is Z^T H Z (symmetric): the kernel's column-major nonzeros, transposed back
         out_b = SeedResults(Y[:, at["q"]], Y[:, at["F"]], Y[:, at["norm"]] <= thresh, Y[:, at["margin"]] >= 0.0,
                             Y[:, at["iters"]].astype(int), ["Newton_Converged"] * k_all, Y[:, at["E"]],
                             Y[:, at["tip"]], Y[:, at["R"]].reshape(k_all, m, m).transpose(0, 2, 1),
                             Y[:, at["distinct"]] > 0.5 if chunks == 1 and same > 0.0 else None)
+        if not python_fallback:
+            rows = np.flatnonzero(~out_b.success)
+            if rows.size:
+                out_b.distinct = None
+            for _ in range(SAMPLE_ROUNDS):
+                Qr = out_b.q[rows]
+                rows = rows[np.all(np.isfinite(Qr), axis=1) & np.all(np.abs(Qr) < limits, axis=1)]
+                if rows.size == 0:
+                    break
+                Yr, _ = call(out_b.q[rows])
+                out_b.q[rows], out_b.force[rows] = Yr[:, at["q"]], Yr[:, at["F"]]
+                out_b.success[rows], out_b.on_bound[rows] = Yr[:, at["norm"]] <= thresh, Yr[:, at["margin"]] >= 0.0
+                out_b.iterations[rows] += Yr[:, at["iters"]].astype(int)
+                out_b.energy[rows], out_b.tip[rows] = Yr[:, at["E"]], Yr[:, at["tip"]]
+                out_b.reduced_hessian[rows] = Yr[:, at["R"]].reshape(-1, m, m).transpose(0, 2, 1)
+                rows = rows[~out_b.success[rows]]
+            for j in np.flatnonzero(~out_b.success).tolist():
+                out_b.status[j] = "Newton_Max_Iterations"
+            return out_b
         for j in np.flatnonzero(~out_b.success).tolist():
             # go on from the iterate; failing that, everything again from the start
             out_b.distinct = None             # the kernel's comparison did not see this row's final point
@@ -545,10 +573,7 @@ class _Model:
                                         50 - _kernels.SEED_ITER)
                 if r is not None:
                     r.iterations += _kernels.SEED_ITER
-            if r is not None or python_fallback:
-                _set_row(out_b, j, r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
-            else:
-                out_b.status[j] = "Newton_Max_Iterations"
+            _set_row(out_b, j, r if r is not None else self.newton_kkt(params, limits, target, Q0[j]))
         return out_b
 
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
