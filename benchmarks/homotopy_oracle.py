@@ -8,8 +8,10 @@ real roots inside the physical range, polishes each with the *independent* refer
 (``tests/reference_model.py``: its own Newton, its own Hessians; it does not import the library) and
 records ``q``, ``F``, the energy and the Morse index from the reference model's reduced Hessian.
 Only certified solves (every path ended) whose roots all polish are written. The library's search
-is then tested against this file (``tests/test_completeness.py``): the numbers never come from the
-code under test.
+is then tested against this file (``tests/test_completeness.py``). Which equilibria exist comes from
+a different method than the search (the homotopy, whose polynomial system is library code: it is
+checked independently by the n = 3 brute-force tests and the residual test there); every number
+(``q``, ``F``, energy, Morse index) comes from the reference model.
 """
 
 from __future__ import annotations
