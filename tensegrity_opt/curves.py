@@ -48,6 +48,11 @@ from .solvers import model
 
 __all__ = ["Curve", "Jump", "force_deflection"]
 
+#: Projected random starts per joint of the search for branches born at a point of a ``branch="all"``
+#: curve on a multistable chain (the first point gets find_equilibria's default): the branches already
+#: followed carry most equilibria along, the search only has to catch the new ones.
+BIRTH_PROJECTED = 50
+
 
 @dataclass(frozen=True)
 class Jump:
@@ -265,7 +270,8 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
             if multistable and j > i:
                 # branches are born inside the range (folds): search at every point and follow each
                 # equilibrium (stable ones; every one for branch="all") on no branch followed so far
-                born = find_equilibria(m, dxs[j], dys[j]) if branch == "all" else _newton_stable(m, dxs[j], dys[j])
+                born = (find_equilibria(m, dxs[j], dys[j], n_projected=BIRTH_PROJECTED * n) if branch == "all"
+                        else _newton_stable(m, dxs[j], dys[j]))
                 for g in born:
                     if not any(br.valid[j] and np.max(np.abs(br.q[j] - g.q)) < 1e-6 for br in branches):
                         new_branch(j, g, stop)

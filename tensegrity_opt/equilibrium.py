@@ -302,7 +302,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
             starts = np.vstack([starts, wells])
             order = np.argsort([m.energy(q) for q in wells], kind="stable")[:WELL_DESCENTS]
             descents = np.vstack([descents, wells[order]])
-        if m.n <= KERNEL_MAX and PROJECTED_PER_JOINT:
+        if m.n <= KERNEL_MAX and PROJECTED_PER_JOINT and method != "newton":
             # uniform random configurations projected onto the tip constraint (the compiled Newton:
             # microseconds a start): minima close to the joint limits that no well pattern reaches
             rng = np.random.default_rng(PROJECTED_SEED + m.n)
@@ -355,7 +355,8 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
 WELLS_MAX = 256
 WELL_DESCENTS = 8
 #: Multistable chains with compiled kernels (n <= KERNEL_MAX) also start Newton from this many uniform
-#: random configurations per joint, projected onto the tip constraint (an n = 7 chain's least-energy
+#: random configurations per joint, projected onto the tip constraint (methods "auto" and "ipopt"; the
+#: bounded "newton" method keeps the seeds and wells only) (an n = 7 chain's least-energy
 #: minimum, at 99.8 % of a joint's range, was reached by none of 128 well descents, found from ~3000
 #: random projected starts).
 PROJECTED_PER_JOINT = 500
