@@ -30,6 +30,7 @@ from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straig
 from .errors import InvalidParameterError, SolverError
 from .manipulator import Manipulator
 from .seeds import project_to_target, seeds, well_seeds
+from .kernels import KERNEL_MAX
 from .solvers import model
 
 __all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
@@ -41,7 +42,11 @@ __all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
 #: and doubled the time. A start not converged in the kernels is dropped. Multistable chains of up to
 #: SHORT_N segments (equilibria multiply; compiled kernels: microseconds a start) SHORT_PER_JOINT: an
 #: n = 6 chain whose homotopy set has 9 equilibria showed 8 with 100 n and 1200 starts, 9 with 3000.
+#: Chains beyond the compiled kernels (n > KERNEL_MAX: the Python Newton, ~1 ms a start) take
+#: LONG_PER_JOINT (uniform n = 20 at dx = 0.3: 24 equilibria without the sample, 36 with 20 n in
+#: 0.28 s, 38 with 100 n in 0.9 s).
 PROJECTED_PER_JOINT = 100
+LONG_PER_JOINT = 20
 SHORT_N = 6
 SHORT_PER_JOINT = 500
 PROJECTED_SEED = 4242
@@ -111,7 +116,8 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     n_projected : int, optional
         Uniform random configurations (fixed seed) projected onto the tip constraint, Newton from each.
         Default ``500 n`` for multistable chains of up to 6 segments, ``100 n`` for other chains of up
-        to 64 (a bistable n = 8 chain: ~0.7 s, some 870 equilibria of more than 1100), else 0. Search only.
+        to 8 (a bistable n = 8 chain: ~0.7 s, some 870 equilibria of more than 1100), ``20 n`` up to 64,
+        else 0. Search only.
     dedupe_tol : float
         Two solutions closer than this (max-norm of ``q``, rad) are one.
     timeout : float, optional
@@ -159,7 +165,10 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     # the wells of multistable chains and uniform random configurations, each projected onto the tip
     # constraint (a sample of the whole configuration manifold): Newton from all of them at once
     if n_projected is None:
-        per = SHORT_PER_JOINT if m.n <= SHORT_N and not m.monotonic else PROJECTED_PER_JOINT
+        if m.n <= SHORT_N and not m.monotonic:
+            per = SHORT_PER_JOINT
+        else:
+            per = PROJECTED_PER_JOINT if m.n <= KERNEL_MAX else LONG_PER_JOINT
         n_projected = per * m.n if m.n <= 64 else 0
     rng = np.random.default_rng(PROJECTED_SEED + m.n)
     sample = project_to_target(m, rng.uniform(-0.95, 0.95, (int(n_projected), m.n)) * m.joint_limits, target)
