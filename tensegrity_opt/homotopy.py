@@ -35,12 +35,16 @@ are cleaned (relative ``1e-14``) before the system is written.
 
 Certification
 -------------
-``certified`` is true only when PHCpack tracked every path of the start system to an end
-(a finite root or a root at infinity), none failed, and every real root inside the range was
-polished by Newton onto an equilibrium. A singular real root (a degenerate equilibrium, e.g.
-exactly at a bifurcation) is reported with ``degenerate=True`` counts and leaves ``certified``
-true only if it polishes. Anything else (a failed path, a phc error, a root whose polish fails)
-makes it false, never silently true.
+``certified`` (``find_equilibria(method="homotopy")``) is true only when PHCpack's report checks
+out (exit code 0; declared, listed and mixed-volume counts equal), every path of the start system
+ended at ``Re t = 1`` on a finite root or at infinity (no failed path, no clustered end point: two
+paths on one root mean one may be missing), and every real root inside the range polished by Newton
+onto an equilibrium (a singular one, computed to ~sqrt(eps), is accepted within 1e-3 of the real set
+and polished). A run with failed paths is repeated with new random constants. Equilibria with
+``F = 0`` (``g = h = 0``) lie outside the torus the mixed volume counts; they are added exactly from
+the segments' unloaded critical points (:func:`rest_points_at`). Anything else (a failed path, a phc
+error, a root whose polish fails, two distinct roots too close to separate) makes it false, never
+silently true.
 
 PHCpack is a system package: ``apt-get install phcpack`` (Debian/Ubuntu) puts ``phc`` on the
 ``PATH``; :class:`HomotopyUnavailableError` names it where it is absent.
@@ -62,7 +66,7 @@ from .errors import HomotopyUnavailableError, SolverError
 from .manipulator import Manipulator
 
 __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "solve_homotopy", "phc_path",
-           "homotopy_available"]
+           "homotopy_available", "real_configurations", "residuals", "unloaded_critical_angles", "rest_points_at"]
 
 #: Coefficients smaller than this relative to the largest one of their equation are zero.
 CLEAN_TOL = 1e-14
