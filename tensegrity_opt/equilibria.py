@@ -29,7 +29,7 @@ from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straig
                           local_equilibrium, make_equilibrium, RESIDUAL_TOL)
 from .errors import InvalidParameterError, SolverError
 from .manipulator import Manipulator
-from .seeds import project_to_target, seeds, well_seeds
+from .seeds import projected_sample, seeds, well_seeds
 from .kernels import KERNEL_MAX
 from .solvers import model
 
@@ -170,9 +170,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         else:
             per = PROJECTED_PER_JOINT if m.n <= KERNEL_MAX else LONG_PER_JOINT
         n_projected = per * m.n if m.n <= 64 else 0
-    rng = np.random.default_rng(PROJECTED_SEED + m.n)
-    sample = project_to_target(m, rng.uniform(-0.95, 0.95, (int(n_projected), m.n)) * m.joint_limits, target)
-    more = np.vstack([well_seeds(m, dx, dy), sample])
+    more = np.vstack([well_seeds(m, dx, dy), projected_sample(m, target, int(n_projected), PROJECTED_SEED)])
     if more.shape[0]:
         batch = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, more, python_fallback=False)
         for j in np.flatnonzero(batch.success & ~batch.on_bound).tolist():

@@ -26,7 +26,7 @@ from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, Ten
                      UnreachableTargetError)
 from .manipulator import Manipulator
 from .kernels import KERNEL_MAX
-from .seeds import project_to_target, seed_starts, well_seeds
+from .seeds import projected_sample, seed_starts, well_seeds
 from .shapes import shape_label, sign_string
 from .solvers import LocalResult, model
 from .stability import analyse, inertia_of_reduced
@@ -302,12 +302,11 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
             starts = np.vstack([starts, wells])
             order = np.argsort([m.energy(q) for q in wells], kind="stable")[:WELL_DESCENTS]
             descents = np.vstack([descents, wells[order]])
-        if m.n <= KERNEL_MAX and PROJECTED_PER_JOINT and method != "newton":
+        if m.n <= KERNEL_MAX and LEAST_PROJECTED_PER_JOINT and method != "newton":
             # uniform random configurations projected onto the tip constraint (the compiled Newton:
             # microseconds a start): minima close to the joint limits that no well pattern reaches
-            rng = np.random.default_rng(PROJECTED_SEED + m.n)
-            sample = rng.uniform(-0.95, 0.95, (PROJECTED_PER_JOINT * m.n, m.n)) * m.joint_limits
-            starts = np.vstack([starts, project_to_target(m, sample, target)])
+            starts = np.vstack([starts, projected_sample(m, target, LEAST_PROJECTED_PER_JOINT * m.n,
+                                                         LEAST_PROJECTED_SEED)])
     statuses: dict[str, int] = {}
     found: list[Equilibrium] = []
     if method == "auto":
@@ -359,8 +358,8 @@ WELL_DESCENTS = 8
 #: bounded "newton" method keeps the seeds and wells only) (an n = 7 chain's least-energy
 #: minimum, at 99.8 % of a joint's range, was reached by none of 128 well descents, found from ~3000
 #: random projected starts).
-PROJECTED_PER_JOINT = 500
-PROJECTED_SEED = 9090
+LEAST_PROJECTED_PER_JOINT = 500
+LEAST_PROJECTED_SEED = 9090
 
 
 def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None) -> Equilibrium:
@@ -464,8 +463,9 @@ def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
     """The indices in ``idx`` whose rows of ``Q`` are distinct (:func:`distinct_rows`), in order.
 
     Beyond 64 rows (the thousands of starts of a multistable chain) the same test without the k x k
-    comparison: each row is compared only with the kept rows whose first angle lies within ``SAME_Q``
-    (a sorted list, bisected)."""
+    comparison: each row is compared with the earlier rows whose first angle lies within ``SAME_Q``
+    (a sorted list of all earlier rows, bisected), as :func:`distinct_rows` compares it with every
+    earlier row."""
     if len(idx) < 2:
         return list(idx)
     if len(idx) <= 64:
@@ -479,12 +479,11 @@ def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
     for j in idx:
         x = first[j]
         lo, hi = bisect.bisect_left(keys, x - SAME_Q), bisect.bisect_right(keys, x + SAME_Q)
-        if lo < hi and np.min(np.abs(Q[rows[lo:hi]] - Q[j]).max(axis=1)) < SAME_Q:
-            continue
+        if not (lo < hi and np.min(np.abs(Q[rows[lo:hi]] - Q[j]).max(axis=1)) < SAME_Q):
+            out.append(j)
         pos = bisect.bisect_left(keys, x)
         keys.insert(pos, x)
         rows.insert(pos, j)
-        out.append(j)
     return out
 
 

@@ -29,7 +29,8 @@ from .errors import TensegrityError
 from .manipulator import Manipulator
 from .segment import Segment
 
-__all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds"]
+__all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds", "well_seeds", "project_to_target",
+           "projected_sample", "segment_critical_points"]
 
 
 @dataclass(frozen=True)
@@ -288,6 +289,13 @@ def project_to_target(m: Manipulator, Q: np.ndarray, target: np.ndarray, *, iter
     ok &= np.abs(r).max(axis=1) < 1e-8 * scale
     ok &= np.all(np.abs(Q) < lim, axis=1)
     return Q[ok]
+
+
+def projected_sample(m: Manipulator, target: np.ndarray, count: int, rng_seed: int) -> np.ndarray:
+    """``count`` uniform random configurations in 95 % of the joint range (generator seeded with
+    ``rng_seed + n``: reproducible), projected onto ``tip(q) = target`` (:func:`project_to_target`)."""
+    rng = np.random.default_rng(rng_seed + m.n)
+    return project_to_target(m, rng.uniform(-0.95, 0.95, (int(count), m.n)) * m.joint_limits, target)
 
 
 def well_seeds(m: Manipulator, dx: float, dy: float, *, hilltops: bool = True, cap: int = WELL_PATTERNS,
