@@ -130,14 +130,14 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
     c = mdl.batch_continue(m.params, targets, np.concatenate([np.cumsum(q0), F0]))
     Z = c.Z
     Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
-    tol = 1e-9 * max(1.0, m.torque_scale)
+    tol = 1e-9 * max(1.0, c.torque_scale)        # the residual is in the solver's units
     ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
     k = int(np.argmin(ok)) if not ok.all() else ok.size
     Q, Fs = Q[:k], Z[:k, n:]
     if c.reduced_hessian is not None:
-        return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k]))
+        return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k], scale=m.torque_scale))
     E, H, J, T = mdl.batch_derivs(m.params, Q, Fs)
-    return Prefix(Q, Fs, E, T, *classify_batch(H, J))
+    return Prefix(Q, Fs, E, T, *classify_batch(H, J, scale=m.torque_scale))
 
 
 def _global(m: Manipulator, dx: float, dy: float, q0) -> Equilibrium | TensegrityError:

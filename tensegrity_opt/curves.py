@@ -289,7 +289,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
             if not live:
                 raise NoEquilibriumError(f"no stable equilibrium at dx={dxs[j]:g}, dy={dys[j]:g}")
             e_min = min(br.E[j] for br in live)
-            tol = 1e-9 * max(1.0, abs(e_min))
+            tol = 1e-9 * max(m.torque_scale, abs(e_min))
             best = [br for br in live if br.E[j] <= e_min + tol]
             pick = next((br for br in best if br.id == current), None) or best[0]
             current = pick.id
@@ -327,7 +327,7 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
     morse = np.zeros(npts, dtype=int)
     stable = np.ones(npts, dtype=bool)
     status = ["straight"] * npts
-    s0 = straight_equilibrium(m)
+    s0 = straight_equilibrium(m, check=False)
     for j in range(npts):
         if straight[j]:
             q[j], F[j], E[j] = s0.q, s0.force, s0.energy

@@ -27,7 +27,7 @@ import numpy as np
 
 from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straight_equilibrium, is_equilibrium,
                           local_equilibrium, make_equilibrium, RESIDUAL_TOL)
-from .errors import InvalidParameterError, SolverError
+from .errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
 from .manipulator import Manipulator
 from .seeds import projected_sample, seeds, well_seeds
 from .kernels import KERNEL_MAX
@@ -145,7 +145,11 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
     target = m.check_reachable(dx, dy)
     if dx == 0.0 and dy == 0.0:
-        return EquilibriumSet([straight_equilibrium(m)], method="straight", certified=True, status="straight")
+        try:
+            return EquilibriumSet([straight_equilibrium(m)], method="straight", certified=True, status="straight")
+        except StraightNotEquilibriumError:
+            # full extension: the straight chain is the only configuration, and not an equilibrium
+            return EquilibriumSet([], method="straight", certified=True, status="straight_not_equilibrium")
     if m.n == 1:
         return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", certified=True,
                               status="closed_form")

@@ -22,8 +22,8 @@ from functools import cached_property, lru_cache
 import numpy as np
 
 from .buckling import critical_force, tip_slope
-from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, TensegrityError,
-                     UnreachableTargetError)
+from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
+                     TensegrityError, UnreachableTargetError)
 from .manipulator import Manipulator
 from .kernels import KERNEL_MAX
 from .seeds import projected_sample, seed_starts, well_seeds
@@ -111,7 +111,7 @@ def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> 
 
 def _classify(m: Manipulator, res: LocalResult, constrained: bool):
     if constrained and res.reduced_hessian is not None:        # the compiled kernels' outputs
-        return inertia_of_reduced(res.reduced_hessian), res.energy, res.tip
+        return inertia_of_reduced(res.reduced_hessian, scale=m.torque_scale), res.energy, res.tip
     return analyse(m, res.q, res.force, constrained=constrained)
 
 
@@ -154,12 +154,27 @@ def check_q0(m: Manipulator, q0) -> np.ndarray | None:
     raise InvalidParameterError("q0 lies outside the physical joint range |q_i| < pi - 2 beta_i", field="q0")
 
 
-def straight_equilibrium(m: Manipulator) -> Equilibrium:
-    """The fully extended chain (the only configuration reaching ``dx = dy = 0``)."""
+def straight_equilibrium(m: Manipulator, *, check: bool = True) -> Equilibrium:
+    """The fully extended chain (the only configuration reaching ``dx = dy = 0``).
+
+    It is an equilibrium only when its spring torques are balanced by a tip force, which at full
+    extension can only be ``Fy`` times each joint's lever arm: always so for symmetric segments
+    (no torque), in general not with asymmetric preloads (a pre-bent chain pulled straight needs an
+    unbounded tension). Then :class:`StraightNotEquilibriumError` (``check=False``: the straight
+    chain with the least-squares force, for callers that mark the point themselves).
+    """
     q = np.zeros(m.n)
     S0 = tip_slope(m)
     s2 = float(S0 @ S0)
     fy = float(S0 @ m.gradient(q) / s2) if s2 > 0.0 else 0.0
+    if check:
+        r = m.equilibrium_residual(q, (0.0, fy))
+        if r > RESIDUAL_TOL:
+            raise StraightNotEquilibriumError(
+                f"dx = dy = 0 holds the tip at full extension, which only the straight chain reaches, and the "
+                f"straight chain is not an equilibrium of this chain under any finite tip force (its spring "
+                f"torques are not proportional to the lever arms: residual {r:.3g} of k c^2; asymmetric "
+                f"preloads bend it); choose dx > 0", field="dx")
     return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
                        status="straight", iterations=0,
                        tip=m.tip(q), control="displacement")
@@ -317,18 +332,18 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         # seed is added and the union decides.
         found, _ = search_stable(m, target, starts, statuses, minimize=False, least=True)
         if found and m.monotonic:
-            return _pick(found, q0)
+            return _pick(found, q0, m.torque_scale)
     if method == "newton":
         found, n_unstable = search_stable(m, target, starts, statuses, minimize=False, least=True, fallback=True)
         if found:
-            return _pick(found, q0)
+            return _pick(found, q0, m.torque_scale)
         raise NoEquilibriumError(f"Newton found no stable equilibrium for dx={dx:g}, dy={dy:g} from "
                                  f"{len(starts)} starts ({n_unstable} unstable ones); method='auto' adds IPOPT",
                                  status=_summary(statuses))
     stable, n_unstable = search_stable(m, target, descents, statuses, minimize=True)
     stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < SAME_Q for f in found)]
     if stable:
-        return _pick(stable, q0)
+        return _pick(stable, q0, m.torque_scale)
     if n_unstable:
         raise NoEquilibriumError(
             f"no stable equilibrium found for dx={dx:g}, dy={dy:g} ({n_unstable} unstable ones)",
@@ -375,7 +390,7 @@ def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None
     if not stable:
         raise NoEquilibriumError(f"no stable equilibrium exists for dx={dx:g}, dy={dy:g} ({len(eqs)} unstable ones"
                                  f"{'' if eqs.certified else ' found'}; {eqs.status})", status=label)
-    return replace(_pick(stable, q0), status=label)
+    return replace(_pick(stable, q0, m.torque_scale), status=label)
 
 
 def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
@@ -441,13 +456,15 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     stable: list[tuple[int, Equilibrium]] = []
     n_unstable = 0
     e_max = math.inf
+    ts = m.torque_scale
     for j in (sorted(idx, key=energy.__getitem__) if least else idx):
         if energy[j] > e_max:
             break                                   # beyond the least stable energy and its ties
-        inertia, e, tip = known[j] if j in known else (inertia_of_reduced(b.reduced_hessian[j]), energy[j], b.tip[j])
+        inertia, e, tip = (known[j] if j in known else
+                           (inertia_of_reduced(b.reduced_hessian[j], scale=ts), energy[j], b.tip[j]))
         if inertia.stable:
             if least and e_max == math.inf:
-                e_max = e + _TIE * max(1.0, abs(e))
+                e_max = e + _TIE * max(ts, abs(e))
             stable.append((j, Equilibrium(q=b.q[j].copy(), energy=e, force=b.force[j].copy(),
                                           morse_index=inertia.morse_index, stable=True, status=b.status[j],
                                           iterations=int(b.iterations[j]), tip=np.array(tip, dtype=float),
@@ -526,13 +543,14 @@ def _earlier(k: int) -> np.ndarray:
     return lower
 
 
-#: Energies within this relative distance of the least one tie (mirror images; the same point twice).
+#: Energies within this relative distance of the least one tie (mirror images; the same point twice),
+#: relative to the larger of the energy and the chain's torque scale ``k c^2`` (an energy).
 _TIE = 1e-9
 
 
-def _pick(stable: list[Equilibrium], q0: np.ndarray | None) -> Equilibrium:
+def _pick(stable: list[Equilibrium], q0: np.ndarray | None, scale: float) -> Equilibrium:
     e_min = min(e.energy for e in stable)
-    tol = _TIE * max(1.0, abs(e_min))
+    tol = _TIE * max(scale, abs(e_min))
     best = [e for e in stable if e.energy <= e_min + tol]
     if q0 is not None:
         return min(best, key=lambda e: float(np.linalg.norm(e.q - q0)))

@@ -99,7 +99,8 @@ class Continuation:
 
     ``Z`` (N, n+2) the iterates ``(phi, F)``, ``residual`` (N,) the KKT residual norm there (large
     where Newton failed); from the kernels also ``energy`` (N,), ``tip`` (N, 2) and
-    ``reduced_hessian`` (N, n-2, n-2), else ``None``.
+    ``reduced_hessian`` (N, n-2, n-2), else ``None``; ``residual`` is in the solver's units, whose
+    torque scale is ``torque_scale``.
     """
 
     Z: np.ndarray
@@ -107,6 +108,8 @@ class Continuation:
     energy: np.ndarray | None = None
     tip: np.ndarray | None = None
     reduced_hessian: np.ndarray | None = None
+    #: ``max k c^2`` in the units ``residual`` is measured in (the solver's, see :meth:`_Model._units`)
+    torque_scale: float = 1.0
 
 
 @dataclass
@@ -142,6 +145,15 @@ class SeedResults:
 
 #: Chains up to this many segments use dense linear algebra; longer ones sparse (O(n)) paths.
 DENSE_MAX = 64
+
+#: The Newton methods test one norm of the KKT residual, whose rows are torques (``grad E - J^T F``) and
+#: lengths (``tip - target``), against ``1e-12`` times the torque scale ``max(1, k c^2)``. That bounds each
+#: part relative to its own scale only while the torque scale ``T`` and the length scale ``L = sum b`` are
+#: comparable: a chain with ``max(1, T) / min(L, T)`` above this ratio (slender segments ``a >> b``, very
+#: stiff or very soft springs, tiny or huge lengths) is solved in units where both are about 1 (exact
+#: powers of two; results are returned in the caller's units). Without it, ``a = 1e6`` accepted the
+#: unmoved straight chain as converged 0.1 away from its target (torque scale 1e12, threshold 1).
+UNIT_RATIO = 1e3
 #: Points per compiled batch (continuation and batched derivatives).
 BATCH = 128
 #: Further batched calls of the seeds kernel for the starts of a large sample not converged in the
@@ -334,6 +346,16 @@ class _Model:
         and also return the energy, tip and reduced Hessian there; longer short chains run CasADi's
         undamped ``rootfinder``. Short chains only (``n <= DENSE_MAX``).
         """
+        lam, kap, scaled = self._units(params)
+        if scaled is not params:
+            z0 = np.array(z0, dtype=float)
+            z0[self.n:] *= kap * lam
+            c = self.batch_continue(scaled, lam * np.asarray(targets, float), z0)
+            c.Z[:, self.n:] /= kap * lam
+            return Continuation(c.Z, c.residual, None if c.energy is None else c.energy / (kap * lam * lam),
+                                None if c.tip is None else c.tip / lam,
+                                None if c.reduced_hessian is None else c.reduced_hessian / (kap * lam * lam),
+                                c.torque_scale)
         kern = self.kernel
         N, n = targets.shape[0], self.n
         Z = np.empty((N, n + 2))
@@ -350,7 +372,7 @@ class _Model:
                 k = chunk.shape[0]
                 Z[s:s + k], R[s:s + k] = Zc[:k], Rc[:k]
                 z = Zc[k - 1]
-            return Continuation(Z, R)
+            return Continuation(Z, R, torque_scale=_torque_scale(params, n))
         self._set_scale(params)
         fast, B, m = kern[3], _kernels.BATCH, n - 2
         Y = np.empty((N, 5 + m * m))
@@ -362,7 +384,8 @@ class _Model:
             Z[s:s + k] = out[0].reshape(B, n + 2)[:k]
             Y[s:s + k] = out[1].reshape(B, 5 + m * m)[:k]
             z = Z[s + k - 1]
-        return Continuation(Z, Y[:, 0], Y[:, 2], Y[:, 3:5], Y[:, 5:].reshape(N, m, m).transpose(0, 2, 1))
+        return Continuation(Z, Y[:, 0], Y[:, 2], Y[:, 3:5], Y[:, 5:].reshape(N, m, m).transpose(0, 2, 1),
+                            _torque_scale(params, n))
 
     def batch_derivs(self, params: np.ndarray, Q: np.ndarray, Fs: np.ndarray):
         """Energy (N,), Lagrangian Hessian (N, n, n), tip Jacobian (N, 2, n), tip (N, 2) in phi."""
@@ -430,6 +453,33 @@ class _Model:
                            str(st["return_status"]), int(st.get("iter_count", -1)), self._on_bound(q, limits))
 
     # ---------------------------------------------------------------- Newton
+    def _units(self, params: np.ndarray) -> tuple[float, float, np.ndarray]:
+        """``(lam, kap, params')``: the units the Newton methods work in (see :data:`UNIT_RATIO`).
+
+        Lengths are multiplied by ``lam`` and stiffnesses by ``kap`` (powers of two, so the change is exact),
+        chosen so that both the length scale ``sum b`` and the torque scale ``k c^2`` are about 1. Identity
+        (``1, 1, params``) for a chain whose scales are within ``UNIT_RATIO`` of 1 and of each other.
+        """
+        if params is getattr(self, "_units_params", None):
+            return self._units_val
+        n = self.n
+        a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
+        torque = float(np.max(np.maximum(k1, k2) * (a * a + b * b)))
+        length = float(np.sum(b))
+        if max(1.0, torque) / min(length, torque) <= UNIT_RATIO:
+            val = (1.0, 1.0, params)
+        else:
+            lam = 2.0 ** -round(math.log2(length))
+            kap = 2.0 ** -round(math.log2(torque * lam * lam))
+            scaled = np.array(params, dtype=float)
+            scaled[:2 * n] *= lam
+            scaled[2 * n:4 * n] *= kap
+            scaled[4 * n:6 * n] *= lam
+            scaled.setflags(write=False)
+            val = (lam, kap, scaled)
+        self._units_params, self._units_val = params, val
+        return val
+
     def _set_scale(self, params: np.ndarray) -> None:
         # Residuals are torques: scale the stopping test by k * c^2 of the stiffest segment. The test is
         # on the 2-norm of n + 2 entries, whose roundoff floor grows as sqrt(n): beyond DENSE_MAX
@@ -455,6 +505,12 @@ class _Model:
         Chains with compiled kernels (:mod:`.kernels`) run the method there first (same step rule),
         and here only when it did not converge.
         """
+        lam, kap, scaled = self._units(params)
+        if scaled is not params:
+            res = self.newton_kkt(scaled, limits, lam * np.asarray(target, float), q0,
+                                  None if F0 is None else kap * lam * np.asarray(F0, float), tol=tol,
+                                  max_iter=max_iter, max_step=max_step)
+            return _unscale_result(res, lam, kap)
         self._set_scale(params)
         if max_step == _kernels.MAX_STEP and self.kernel is not None:
             res = self._kernel_newton(params, limits, target, q0, F0, tol * self._scale, max_iter)
@@ -519,6 +575,11 @@ class _Model:
         from their iterates in up to ``SAMPLE_ROUNDS`` more batched calls of the same kernel (instead of one
         ``newton`` kernel call each), and what is still not converged is left so (no Python method).
         """
+        lam, kap, scaled = self._units(params)
+        if scaled is not params:
+            out = self.newton_kkt_seeds(scaled, limits, lam * np.asarray(target, float), starts, same,
+                                        python_fallback=python_fallback)
+            return _unscale_seeds(out, lam, kap)
         n, m = self.n, self.n - 2
         Q0 = np.asarray(starts, dtype=float).reshape(-1, n)
         k_all = Q0.shape[0]
@@ -559,7 +620,7 @@ class _Model:
                 out_b.success[rows], out_b.on_bound[rows] = Yr[:, at["norm"]] <= thresh, Yr[:, at["margin"]] >= 0.0
                 out_b.iterations[rows] += Yr[:, at["iters"]].astype(int)
                 out_b.energy[rows], out_b.tip[rows] = Yr[:, at["E"]], Yr[:, at["tip"]]
-                out_b.reduced_hessian[rows] = Yr[:, at["R"]].reshape(-1, m, m).transpose(0, 2, 1)
+                out_b.reduced_hessian[rows] = Yr[:, at["R"]].reshape(rows.size, m, m).transpose(0, 2, 1)
                 rows = rows[~out_b.success[rows]]
             for j in np.flatnonzero(~out_b.success).tolist():
                 out_b.status[j] = "Newton_Max_Iterations"
@@ -579,6 +640,11 @@ class _Model:
     def newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray, *,
                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
         """Damped Newton on ``grad E = J^T F`` for a prescribed force (any stationary point)."""
+        lam, kap, scaled = self._units(params)
+        if scaled is not params:
+            res = self.newton_force(scaled, limits, kap * lam * np.asarray(force, float), q0, tol=tol,
+                                    max_iter=max_iter, max_step=max_step)
+            return _unscale_result(res, lam, kap)
         self._set_scale(params)
         force = np.asarray(force, dtype=float)
         z = self.phi(np.asarray(q0, dtype=float))
@@ -724,6 +790,29 @@ def _active(columns: int, k: int) -> np.ndarray:
     a = (np.arange(columns) < k).astype(float)
     a.setflags(write=False)
     return a
+
+
+def _torque_scale(params: np.ndarray, n: int) -> float:
+    a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
+    return float(np.max(np.maximum(k1, k2) * (a * a + b * b)))
+
+
+def _unscale_result(r: LocalResult, lam: float, kap: float) -> LocalResult:
+    """A result of the rescaled problem (:meth:`_Model._units`) in the caller's units."""
+    e = kap * lam * lam
+    return LocalResult(r.q, r.force / (kap * lam), r.success, r.status, r.iterations, r.on_bound,
+                       None if r.energy is None else r.energy / e, None if r.tip is None else r.tip / lam,
+                       None if r.reduced_hessian is None else r.reduced_hessian / e)
+
+
+def _unscale_seeds(out: SeedResults, lam: float, kap: float) -> SeedResults:
+    e = kap * lam * lam
+    out.force /= kap * lam
+    out.energy /= e
+    out.tip /= lam
+    if out.reduced_hessian is not None:
+        out.reduced_hessian /= e
+    return out
 
 
 def _seed_results(results: list[LocalResult], n: int) -> SeedResults:

@@ -69,8 +69,8 @@ def classify(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: b
              rel_tol: float = 1e-9) -> Inertia:
     """Inertia of the reduced Hessian at an equilibrium ``(q, force)``.
 
-    Eigenvalues (or pivots) with ``|lambda| <= rel_tol * max(1, scale)`` count as zero
-    (``degenerate``).
+    Eigenvalues (or pivots) with ``|lambda| <= rel_tol * max(k c^2, |lambda|_max)`` count as zero
+    (``degenerate``): relative to the chain's torque scale ``m.torque_scale``, whatever its units.
     """
     return analyse(m, q, force, constrained=constrained, rel_tol=rel_tol)[0]
 
@@ -81,10 +81,12 @@ def analyse(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: bo
     n = m.n
     dim = n - 2 if constrained else n
     E, _, H, J, tip = model(n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
-    return inertia_of(H, J, constrained, rel_tol, dim), E, tip
+    return inertia_of(H, J, constrained, rel_tol, dim, m.torque_scale), E, tip
 
 
-def inertia_of(H, J, constrained: bool, rel_tol: float, dim: int) -> Inertia:
+def inertia_of(H, J, constrained: bool, rel_tol: float, dim: int, scale: float = 1.0) -> Inertia:
+    """Inertia of ``H`` (reduced on the null space of ``J`` when ``constrained``); ``scale`` is the
+    torque scale below which an eigenvalue's size is judged against it rather than against the largest."""
     if dim <= 0:
         return Inertia(np.zeros(0), 0, False, 0)
     if isinstance(H, np.ndarray):
@@ -92,39 +94,39 @@ def inertia_of(H, J, constrained: bool, rel_tol: float, dim: int) -> Inertia:
             Q, _ = np.linalg.qr(J.T, mode="complete")
             Z = Q[:, 2:]
             H = Z.T @ H @ Z
-        return _inertia_of_eigenvalues(np.linalg.eigvalsh(H), rel_tol, dim)
-    return _sparse_inertia(H, J if constrained else None, rel_tol, dim)
+        return _inertia_of_eigenvalues(np.linalg.eigvalsh(H), rel_tol, dim, scale)
+    return _sparse_inertia(H, J if constrained else None, rel_tol, dim, scale)
 
 
-def _inertia_of_eigenvalues(w: np.ndarray, rel_tol: float, dim: int) -> Inertia:
-    tol = rel_tol * max(1.0, float(np.abs(w).max()))
+def _inertia_of_eigenvalues(w: np.ndarray, rel_tol: float, dim: int, scale: float = 1.0) -> Inertia:
+    tol = rel_tol * max(scale, float(np.abs(w).max()))
     return Inertia(w, int(np.sum(w < -tol)), bool(np.any(np.abs(w) <= tol)), dim)
 
 
-def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> Inertia:
+def inertia_of_reduced(R: np.ndarray, rel_tol: float = 1e-9, scale: float = 1.0) -> Inertia:
     """Inertia of a displacement-controlled equilibrium from its reduced Hessian ``Z^T H Z`` (m x m).
 
     As :func:`inertia_of`, for a reduced Hessian computed elsewhere (the compiled kernels);
     a 2 x 2 one (``n = 4``) by the closed form, its small eigenvalue as ``det / large`` (no
-    cancellation).
+    cancellation). ``scale``: the chain's torque scale ``k c^2`` (see :func:`classify`).
     """
     dim = R.shape[0]
     if dim == 0:
         return Inertia(np.zeros(0), 0, False, 0)
     if dim == 1:
-        return _inertia_of_eigenvalues(R[0].copy(), rel_tol, 1)
+        return _inertia_of_eigenvalues(R[0].copy(), rel_tol, 1, scale)
     if dim == 2:
         (a, b), (_, d) = R.tolist()
         mean, rad = 0.5 * (a + d), math.hypot(0.5 * (a - d), b)
         big = mean + rad if mean >= 0 else mean - rad
         small = (a * d - b * b) / big if big != 0.0 else 0.0
         lo, hi = (small, big) if small <= big else (big, small)
-        tol = rel_tol * max(1.0, -lo, hi)
+        tol = rel_tol * max(scale, -lo, hi)
         return Inertia(np.array((lo, hi)), (lo < -tol) + (hi < -tol), -tol <= lo <= tol or -tol <= hi <= tol, 2)
-    return _inertia_of_eigenvalues(np.linalg.eigvalsh(R), rel_tol, dim)
+    return _inertia_of_eigenvalues(np.linalg.eigvalsh(R), rel_tol, dim, scale)
 
 
-def classify_batch(H: np.ndarray, J: np.ndarray, rel_tol: float = 1e-9
+def classify_batch(H: np.ndarray, J: np.ndarray, rel_tol: float = 1e-9, scale: float = 1.0
                    ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Classify many displacement-controlled equilibria at once (short chains).
 
@@ -136,26 +138,26 @@ def classify_batch(H: np.ndarray, J: np.ndarray, rel_tol: float = 1e-9
         return np.zeros(N, dtype=int), np.ones(N, dtype=bool), np.zeros((N, 0))
     Q, _ = np.linalg.qr(np.transpose(J, (0, 2, 1)), mode="complete")
     Z = Q[:, :, 2:]
-    return classify_reduced(np.transpose(Z, (0, 2, 1)) @ H @ Z, rel_tol)
+    return classify_reduced(np.transpose(Z, (0, 2, 1)) @ H @ Z, rel_tol, scale)
 
 
-def classify_reduced(R: np.ndarray, rel_tol: float = 1e-9) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def classify_reduced(R: np.ndarray, rel_tol: float = 1e-9, scale: float = 1.0
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """:func:`classify_batch` from the reduced Hessians ``R`` (N, m, m) themselves."""
     N, m = R.shape[0], R.shape[1]
     if m == 0:
         return np.zeros(N, dtype=int), np.ones(N, dtype=bool), np.zeros((N, 0))
     w = np.linalg.eigvalsh(R)
-    tol = rel_tol * np.maximum(1.0, np.abs(w).max(axis=1))
+    tol = rel_tol * np.maximum(scale, np.abs(w).max(axis=1))
     morse = np.sum(w < -tol[:, None], axis=1)
     stable = (morse == 0) & ~np.any(np.abs(w) <= tol[:, None], axis=1)
     return morse, stable, w
 
 
-def _sparse_inertia(H, J, rel_tol: float, dim: int) -> Inertia:
+def _sparse_inertia(H, J, rel_tol: float, dim: int, scale: float = 1.0) -> Inertia:
     diag = H.diagonal().copy()
     off = H.diagonal(1).copy()
-    scale = max(1.0, float(np.abs(diag).max()), float(np.abs(off).max(initial=0.0)))
-    tiny = rel_tol * scale
+    tiny = rel_tol * max(scale, float(np.abs(diag).max()), float(np.abs(off).max(initial=0.0)))
     neg = 0
     degenerate = False
     d_prev = 1.0
@@ -180,7 +182,7 @@ def _sparse_inertia(H, J, rel_tol: float, dim: int) -> Inertia:
         return Inertia(np.zeros(0), neg, True, dim)
     S = -(J @ X)
     w = np.linalg.eigvalsh((S + S.T) / 2)
-    s_tol = rel_tol * max(1.0, float(np.abs(w).max()))
+    s_tol = rel_tol * max(scale, float(np.abs(w).max()))
     degenerate = degenerate or bool(np.any(np.abs(w) <= s_tol))
     morse = neg + int(np.sum(w < 0)) - 2
     return Inertia(np.zeros(0), max(morse, 0), degenerate, dim)
