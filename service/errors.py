@@ -12,7 +12,9 @@ library ``ValueError`` family (bad input, ill-posed)   422     the exception's `
                                                                ``straight_unstable``, ``unsupported``
 library ``SolverError`` / ``NoEquilibriumError``       422     ``solver_failed`` / ``no_equilibrium``, ``status``
                                                                holds the solver (IPOPT) status
-numerical failure outside the library's own checks     422     ``numerical_failure``
+numerical failure outside the library's own checks     500     ``numerical_failure`` (a server bug: logged with
+                                                               the traceback; the library validates its
+                                                               inputs first, so none is known)
 chain or batch over the configured limit               422     ``too_many_segments`` / ``batch_too_large``
 missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
 request body over ``max_body_bytes``                   413     ``body_too_large``
@@ -122,6 +124,10 @@ def _plain(v: Any) -> Any:
     return str(v)
 
 
+#: Failures of numpy, scipy or CasADi that the library did not turn into one of its refusals.
+_NUMERICAL = (ArithmeticError, np.linalg.LinAlgError, ValueError, RuntimeError)
+
+
 def status_for(exc: BaseException) -> int:
     if isinstance(exc, ServiceError):
         return exc.status_code
@@ -131,6 +137,11 @@ def status_for(exc: BaseException) -> int:
         return 504
     if isinstance(exc, HomotopyUnavailableError):
         return 503
+    if isinstance(exc, TensegrityError):
+        return 422
+    if isinstance(exc, _NUMERICAL):
+        # numpy/scipy/CasADi failed where the library did not refuse first: a bug to fix, not an answer
+        return 500
     return 422
 
 
@@ -140,7 +151,7 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
     Library exceptions keep their ``code`` (the bare base ``TensegrityError``, which
     ``force_deflection`` raises when no stable equilibrium exists at a point, becomes
     ``no_equilibrium``); numerical exceptions from numpy/scipy/CasADi become
-    ``numerical_failure``.
+    ``numerical_failure`` (answered with 500: see :func:`status_for`).
     """
     if isinstance(exc, ServiceError):
         out: dict[str, Any] = {"code": exc.code, "message": exc.message}
@@ -169,7 +180,7 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
         if details:
             out["details"] = details
         return out
-    if isinstance(exc, (ArithmeticError, np.linalg.LinAlgError, ValueError, RuntimeError)):
+    if isinstance(exc, _NUMERICAL):
         return {"code": "numerical_failure",
                 "message": f"the computation failed numerically for this input: {type(exc).__name__}: {exc}"[:2000]}
     return None
@@ -266,9 +277,9 @@ def install(app: FastAPI) -> None:
             return await _other(request, exc)
         _record_failure(request, err.body["code"])
         if err.body["code"] == "numerical_failure":
-            # Not a library refusal: worth a look (the input and the exception are in the log).
-            log.warning("numerical failure on %s %s: %s: %s", request.method, request.url.path,
-                        type(exc).__name__, exc, exc_info=exc)
+            # Not a library refusal: a bug (the input and the exception are in the log).
+            log.error("numerical failure on %s %s: %s: %s", request.method, request.url.path,
+                      type(exc).__name__, exc, exc_info=exc)
         return error_response(err.status_code, err.body, err.headers)
 
     async def _http(request: Request, exc: Exception) -> JSONResponse:

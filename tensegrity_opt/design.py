@@ -18,7 +18,7 @@ import scipy.linalg as sla
 from .buckling import critical_force, straight_matrices
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
 from .errors import (InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError,
-                     TensegrityError)
+                     TensegrityError, UnreachableTargetError)
 from .manipulator import Manipulator
 from .segment import Segment
 from .solvers import RANGE_SHRINK, model
@@ -224,6 +224,19 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
         return Design(**{**best.__dict__, "feasible": False})
 
 
+def _tension_bounds(tension) -> tuple[float, float]:
+    """``(T_min, T_max)`` from the ``tension`` constraint (``None``: unbounded), checked before any solve."""
+    if tension is None:
+        return -_INF, _INF
+    try:
+        tmin, tmax = (float(v) for v in tension)
+    except (TypeError, ValueError):
+        raise InvalidParameterError("tension must be a pair (T_min, T_max) of numbers", field="tension") from None
+    if math.isnan(tmin) or math.isnan(tmax) or tmin > tmax or tmin == _INF or tmax == -_INF:
+        raise InvalidParameterError(f"tension bounds need T_min <= T_max (got {tmin:g}, {tmax:g})", field="tension")
+    return tmin, tmax
+
+
 def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
     from .design_solvers import buckling_design_nlp
 
@@ -239,6 +252,7 @@ def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -
     if unknown:
         raise InvalidParameterError(f"unknown constraint(s) {sorted(unknown)}: use total_length, tension, K_min",
                                     field=sorted(unknown)[0])
+    _tension_bounds(constraints.get("tension"))
     bounds = dict(bounds or {})
     budget = dict(budget or {})
     for name in list(bounds) + list(budget):
@@ -299,8 +313,7 @@ def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -
         tl = m.straight_length
     lbg.append([float(tl) if tl is not None else -_INF])
     ubg.append([float(tl) if tl is not None else _INF])
-    tension = constraints.get("tension")
-    tmin, tmax = (tension if tension is not None else (-_INF, _INF))
+    tmin, tmax = _tension_bounds(constraints.get("tension"))
     lbg.append(np.full(n, float(tmin)))
     ubg.append(np.full(n, float(tmax)))
     kmin = _stiffness_floor(x0, constraints.get("K_min"))
@@ -509,8 +522,15 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     if not math.isfinite(margin) or margin < 0:
         raise InvalidParameterError("margin must be finite and >= 0", field="margin")
     n = m.n
+    if n < 2:
+        # one segment: the target alone fixes its angle (a point of a circle) and two rest lengths hold it;
+        # the NLP is written for chains (its rows assume n >= 2)
+        raise InvalidParameterError("choose_preloads needs a chain of n >= 2 segments", field="n")
     dx, dy = m.straight_length - target[0], target[1]
-    m.check_reachable(dx, dy)
+    try:
+        m.check_reachable(dx, dy)
+    except UnreachableTargetError as exc:        # the caller gave a tip position, not a deflection
+        raise UnreachableTargetError(exc.message, field="target", **exc.details) from None
     lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
     if not (0 < lo < hi):
         raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
@@ -530,7 +550,9 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     Hq = T.T @ Hphi @ T
     mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
     w_, V_ = np.linalg.eigh(Hq - mu0 * np.eye(n))
-    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6)) @ V_.T)
+    # a start for the margin's Cholesky factor; the floor relative to the Hessian's size (loads of 1e12
+    # give entries of 1e12, where an absolute 1e-6 is below roundoff and the factorisation fails)
+    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
     lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
     x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
     lbx = np.concatenate([np.full(n, -_INF), np.full(2 * n, lo), [margin], np.full(lv0.size, -_INF)])

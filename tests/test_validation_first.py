@@ -1,0 +1,76 @@
+"""Validate before solving; an internal failure is a bug answered with 500, never a 422 (issue 14, item 6).
+
+Each case below reached numpy, scipy or CasADi with an input the library should have refused, and
+came back as 422 ``numerical_failure`` carrying the solver's own message.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from fastapi.testclient import TestClient
+
+import tensegrity_opt as to
+from service import compute
+from service.config import Settings
+from service.main import create_app
+from tensegrity_opt.errors import InvalidParameterError, UnreachableTargetError
+
+PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+
+
+@pytest.fixture(scope="module")
+def client():
+    with TestClient(create_app(Settings(warmup=False, inline_processes=0)), raise_server_exceptions=False) as c:
+        yield c
+
+
+def test_preloads_for_one_segment_is_refused_before_the_nlp(client):
+    # was: 422 numerical_failure "Input 4 (lbg) has mismatching shape" (CasADi), for a reachable target
+    x, y = 1 + np.cos(0.3), np.sin(0.3)
+    with pytest.raises(InvalidParameterError) as e:
+        to.choose_preloads(to.Manipulator.uniform(1), (x, y))
+    assert e.value.field == "n"
+    r = client.post("/v1/design/preloads", json={"manipulator": {"n": 1}, "target": {"x": x, "y": y}})
+    assert r.status_code == 422 and r.json()["code"] == "invalid_parameter", r.text
+    assert r.json()["field"] == "manipulator.n"
+
+
+def test_tension_bounds_in_the_wrong_order_name_the_field(client):
+    # was: IPOPT's assertion "lb <= ub" as numerical_failure
+    with pytest.raises(InvalidParameterError) as e:
+        to.maximize_critical_force(to.Manipulator.uniform(4), vary=("k",), tension=(5.0, 1.0))
+    assert e.value.field == "tension"
+    r = client.post("/v1/design/critical-force",
+                    json={"manipulator": PAPER, "vary": ["k"], "tension": {"lo": 5, "hi": 1}})
+    assert r.status_code == 422 and r.json()["code"] == "invalid_parameter" and r.json()["field"] == "tension", r.text
+
+
+@pytest.mark.parametrize("load", [{"fx": 0.0, "fy": 1e12}, {"fx": 0.0, "fy": -1e12}, {"fx": 1e12, "fy": 1e12}])
+def test_huge_loads_on_preloads_are_answered(client, load):
+    # was: numpy LinAlgError "Matrix is not positive definite" (an absolute 1e-6 floor under 1e12 entries)
+    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 7.0, "y": 1.5}, "load": load})
+    assert r.status_code in (200, 422), r.text
+    if r.status_code == 422:
+        assert r.json()["code"] == "design_infeasible", r.text
+
+
+def test_unreachable_preload_target_names_the_target(client):
+    # the request has a tip position `target`, not a deflection `dx`
+    with pytest.raises(UnreachableTargetError) as e:
+        to.choose_preloads(to.Manipulator.uniform(4), (9.0, 1.5))
+    assert e.value.field == "target"
+    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 9.0, "y": 1.5}})
+    assert r.status_code == 422 and r.json()["code"] == "unreachable_target", r.text
+    assert r.json()["field"] == "target"
+
+
+def test_an_internal_numerical_failure_is_a_500(client, monkeypatch):
+    # what the library does not refuse is a bug: 500 with the JSON error shape, not a 422 answer
+    def broken(req):
+        raise np.linalg.LinAlgError("Matrix is not positive definite")
+
+    monkeypatch.setattr("service.routes.design.preloads_job", broken)
+    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 7.0, "y": 1.5}})
+    assert r.status_code == 500 and r.json()["code"] == "numerical_failure", r.text
+    assert compute.preloads_job is not broken
