@@ -500,7 +500,7 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     -------
     PreloadDesign
         Verified: the force-controlled equilibrium with these preloads, started from the
-        optimiser's ``q``, lands on the target within 1e-6 with Morse index 0.
+        optimiser's ``q``, lands on the target within ``1e-6 max(b)`` with Morse index 0.
 
     Raises
     ------
@@ -582,7 +582,7 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     except TensegrityError as exc:
         raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
                                     f"({exc})", status=res.status, best=best) from exc
-    if not eq.stable or np.max(np.abs(eq.tip - target)) > 1e-6:
+    if not eq.stable or np.max(np.abs(eq.tip - target)) > 1e-6 * float(m.b.max()):     # in the chain's units
         raise InfeasibleDesignError(
             f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
             f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
