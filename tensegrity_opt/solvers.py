@@ -462,6 +462,8 @@ class _Model:
         """
         if params is getattr(self, "_units_params", None):
             return self._units_val
+        if params is getattr(self, "_units_scaled", None):     # the rescaled vector itself (nested calls)
+            return 1.0, 1.0, params
         n = self.n
         a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
         torque = float(np.max(np.maximum(k1, k2) * (a * a + b * b)))
@@ -477,6 +479,7 @@ class _Model:
             scaled[4 * n:6 * n] *= lam
             scaled.setflags(write=False)
             val = (lam, kap, scaled)
+            self._units_scaled = scaled
         self._units_params, self._units_val = params, val
         return val
 
