@@ -50,7 +50,7 @@ def api(tmp_path, monkeypatch, request):
     """A TestClient on a fresh database; ``indirect`` parametrisation passes more settings."""
     db = tmp_path / "jobs.sqlite3"
     monkeypatch.setenv("TENSEGRITY_JOBS_DB", str(db))     # also when service/main.py wires the runner itself
-    app = create_app(Settings(warmup=False, max_segments=50, **getattr(request, "param", {})))
+    app = create_app(Settings(warmup=False, max_segments=50, inline_processes=0, **getattr(request, "param", {})))
     jobs.install(app, db_path=db)
     with TestClient(app) as client:
         client.db = db
@@ -347,3 +347,270 @@ def test_sigkill_mid_job_loses_no_point_and_the_restart_resumes(tmp_path):
     for i in (0, len(before), total - 1):               # before and after the kill: the library's numbers
         point = {"dx": spec["grid"]["dx"][i]}
         assert {k: rows[i][k] for k in S.RESULT_COLUMNS["equilibria_count"]} == S.evaluate_point(spec, point)
+
+
+# --------------------------------------------------------------------------- issue 14: scheduling, limits, owners
+def _wait(pred, timeout=30.0, what=""):
+    deadline = time.monotonic() + timeout
+    while not pred():
+        assert time.monotonic() < deadline, what
+        time.sleep(0.02)
+
+
+def _runner(db, **kw):
+    kw.setdefault("lease_seconds", 0.6)
+    return jobs.JobRunner(db_path=db, **kw).start()
+
+
+def test_a_point_over_the_time_limit_is_a_timeout_row_and_the_job_goes_on(tmp_path, monkeypatch):
+    """Point 1 would run forever (a Python loop inside the solve): the watchdog cuts it at the limit, its row
+    is the error ``timeout: ...`` and points 0 and 2 are computed as usual."""
+    spec = {"analysis": "equilibrium", "grid": {"dx": [0.1, 0.2, 0.3]}}
+    real = jobs.solve_chunk
+    stuck = []
+
+    def solve(header, pcols, rcols, items):
+        if items[0][0] == 1:
+            stuck.append(time.monotonic())
+            while True:               # never returns by itself
+                time.sleep(0.005)
+        return real(header, pcols, rcols, items)
+
+    monkeypatch.setattr(jobs, "solve_chunk", solve)
+    runner = _runner(tmp_path / "jobs.sqlite3", point_timeout=0.3)
+    try:
+        job_id = runner.submit(spec)["id"]
+        _wait(lambda: runner.get(job_id)["status"] in jobs.TERMINAL, 20)
+        job = runner.get(job_id)
+        assert (job["status"], job["done"], job["failed"]) == ("done", 3, 1)
+        rows = runner.rows(job_id)
+        assert rows[1]["error"].startswith("timeout: the point did not finish within 0.3 s")
+        assert rows[1]["dx"] == 0.2 and rows[1]["energy"] is None and rows[1]["q"] is None
+        assert [rows[0], rows[2]] == [r for r in S.sweep(spec).rows if r["index"] != 1]
+        assert len(stuck) == 1
+    finally:
+        runner.stop()
+
+
+def test_a_real_long_point_times_out(tmp_path):
+    """The limit also cuts a library computation (a multi-start equilibrium search on a long chain)."""
+    runner = _runner(tmp_path / "jobs.sqlite3", point_timeout=0.02)
+    try:
+        t0 = time.monotonic()
+        job_id = runner.submit({"analysis": "equilibria_count", "manipulator": {"n": 60},
+                                "points": [{"dx": 0.3}]})["id"]
+        _wait(lambda: runner.get(job_id)["status"] in jobs.TERMINAL, 20)
+        assert runner.rows(job_id)[0]["error"].startswith("timeout: ")
+        assert runner.get(job_id)["status"] == "done" and time.monotonic() - t0 < 10
+    finally:
+        runner.stop()
+
+
+def test_at_most_max_running_jobs_and_a_huge_job_does_not_hold_a_small_one(tmp_path):
+    """Two runner threads: two big jobs run at once (never three), and a small job submitted after them
+    finishes while they still run, because jobs take turns of ``slice_seconds``."""
+    runner = _runner(tmp_path / "jobs.sqlite3", max_running=2, slice_seconds=0.2)
+    big = {"analysis": "equilibria_count", "manipulator": {"n": 3},
+           "grid": {"dx": [round(0.002 * (i + 1), 6) for i in range(300)]}}
+    try:
+        a, b = runner.submit(big)["id"], runner.submit(big)["id"]
+        _wait(lambda: len(runner.running_here()) == 2, 20, "two jobs running")
+        small = runner.submit(MIXED)["id"]
+        most = 0
+
+        def small_done():
+            nonlocal most
+            most = max(most, len(runner.running_here()))
+            return runner.get(small)["status"] == "done"
+
+        _wait(small_done, 30, "the small job finishes")
+        assert most <= 2
+        for j in (a, b):
+            job = runner.get(j)
+            assert job["status"] in ("queued", "running") and 0 < job["done"] < 300
+            runner.cancel(j)
+        assert runner.rows(small) == S.sweep(MIXED).rows
+        assert runner.get(small)["runs"] == 1
+    finally:
+        runner.stop()
+
+
+@pytest.mark.parametrize("api", [{"api_keys": ["key-one", "key-two"]}], indirect=True)
+def test_jobs_belong_to_the_api_key_that_submitted_them(api):
+    one, two = {"X-API-Key": "key-one"}, {"X-API-Key": "key-two"}
+    job_id = api.post("/v1/jobs", json=MIXED, headers=one).json()["id"]
+    other = api.post("/v1/jobs", json={"analysis": "buckling", "grid": {"n": [3]}}, headers=two).json()["id"]
+    assert api.get("/v1/jobs", headers=one).status_code == 200
+    assert [j["id"] for j in api.get("/v1/jobs", headers=one).json()["jobs"]] == [job_id]
+    assert [j["id"] for j in api.get("/v1/jobs", headers=two).json()["jobs"]] == [other]
+    for method, path in (("GET", f"/v1/jobs/{job_id}"), ("GET", f"/v1/jobs/{job_id}/results"),
+                         ("GET", f"/v1/jobs/{job_id}/results?format=csv"), ("DELETE", f"/v1/jobs/{job_id}")):
+        r = api.request(method, path, headers=two)
+        assert r.status_code == 404, (method, path)
+        assert r.json() == {"code": "not_found", "message": f"no job with id {job_id!r}", "field": "id"}
+    assert api.get(f"/v1/jobs/{job_id}").status_code == 401
+    wait_for_key = lambda j: api.get(f"/v1/jobs/{job_id}", headers=one).json()["status"] == "done"  # noqa: E731
+    _wait(lambda: wait_for_key(None), 30)
+    assert api.get(f"/v1/jobs/{job_id}/results", headers=one).json()["rows"] == S.sweep(MIXED).rows
+    with sqlite3.connect(api.db) as con:
+        owners = dict(con.execute("SELECT id, owner FROM jobs"))
+    assert owners == {job_id: jobs.owner_hash("key-one"), other: jobs.owner_hash("key-two")}
+    raw = b"".join(p.read_bytes() for p in api.db.parent.glob("jobs.sqlite3*"))
+    assert b"key-one" not in raw and b"key-two" not in raw
+    assert api.delete(f"/v1/jobs/{job_id}", headers=one).status_code == 204
+
+
+def test_delete_removes_a_finished_job_and_cancels_a_running_one(api):
+    done_id = api.post("/v1/jobs", json=MIXED).json()["id"]
+    wait_for(api, done_id, done)
+    r = api.delete(f"/v1/jobs/{done_id}")
+    assert r.status_code == 204 and r.content == b""
+    assert api.get(f"/v1/jobs/{done_id}").status_code == 404
+    assert api.delete(f"/v1/jobs/{done_id}").status_code == 404
+    with sqlite3.connect(api.db) as con:
+        assert con.execute("SELECT COUNT(*) FROM points WHERE job_id = ?", (done_id,)).fetchone() == (0,)
+
+    long_id = api.post("/v1/jobs", json=slow_spec(100)).json()["id"]
+    wait_for(api, long_id, lambda j: j["done"] >= 1)
+    r = api.delete(f"/v1/jobs/{long_id}")
+    assert r.status_code == 200 and r.json()["status"] == "cancelled"
+    assert api.get(f"/v1/jobs/{long_id}").json()["status"] == "cancelled"
+    assert api.delete(f"/v1/jobs/{long_id}").status_code == 204           # finished now: deleted
+    assert api.get(f"/v1/jobs/{long_id}").status_code == 404
+    time.sleep(0.3)                       # the point in progress when cancelled stores nothing
+    with sqlite3.connect(api.db) as con:
+        assert con.execute("SELECT COUNT(*) FROM points WHERE job_id = ?", (long_id,)).fetchone() == (0,)
+
+
+def test_retention_deletes_old_finished_jobs_at_start(tmp_path):
+    db = tmp_path / "jobs.sqlite3"
+    runner = _runner(db)
+    ids = [runner.submit({"analysis": "buckling", "grid": {"n": [3]}})["id"] for _ in range(3)]
+    running = runner.submit(slow_spec(200))["id"]
+    _wait(lambda: all(runner.get(i)["status"] == "done" for i in ids), 30)
+    runner.stop()
+    old, recent, _ = ids
+    with sqlite3.connect(db) as con:
+        con.execute("UPDATE jobs SET finished_at = ? WHERE id = ?", (time.time() - 8 * 86400, old))
+        con.execute("UPDATE jobs SET finished_at = ? WHERE id = ?", (time.time() - 6 * 86400, recent))
+        con.execute("UPDATE jobs SET created_at = ? WHERE id = ?", (time.time() - 30 * 86400, running))
+    keep = jobs.JobRunner(db_path=db, retention_days=0).start()    # 0: kept forever
+    try:
+        assert {j["id"] for j in keep.list()} == {*ids, running}
+    finally:
+        keep.stop()
+    runner = jobs.JobRunner(db_path=db, retention_days=7).start()
+    try:
+        assert {j["id"] for j in runner.list()} == {recent, ids[2], running}
+        with sqlite3.connect(db) as con:
+            assert con.execute("SELECT COUNT(*) FROM points WHERE job_id = ?", (old,)).fetchone() == (0,)
+        runner.cancel(running)
+    finally:
+        runner.stop()
+
+
+def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_path):
+    """Two runners (as two servers) share the file: a job runs in one at a time; a cancel through the other
+    stops it; a runner that stops renewing loses the job to the other, which finishes it, and the first
+    stops once it sees the lost lease (storing nothing meanwhile)."""
+    db = tmp_path / "jobs.sqlite3"
+    a = _runner(db)
+    b = _runner(db)
+    try:
+        job_id = a.submit(slow_spec(200))["id"]
+        _wait(lambda: a.get(job_id)["done"] >= 2, 30)
+        assert a.running_here() == [job_id] and b.running_here() == [] and b.points_computed == 0
+        assert b.cancel(job_id)["status"] == "cancelled"
+        assert a.wait_idle(3.0)                               # within a lease renewal (0.2 s)
+        n = a.get(job_id)["done"]
+        time.sleep(0.3)
+        assert a.get(job_id)["done"] == n and b.points_computed == 0
+
+        spec = {"analysis": "equilibria_count", "manipulator": {"n": 3},
+                "grid": {"dx": [round(0.004 * (i + 1), 6) for i in range(40)]}}
+        job_id = a.submit(spec)["id"]
+        _wait(lambda: job_id in a.running_here() + b.running_here() and a.get(job_id)["done"] >= 2, 30)
+        first, second = (a, b) if a.running_here() == [job_id] else (b, a)
+        assert second.running_here() == []
+        renew = first.store.renew
+        first.store.renew = lambda *args: True                # a hung server: no renewal
+        _wait(lambda: second.running_here() == [job_id], 10, "the other runner takes the job over")
+        first.store.renew = renew
+        _wait(lambda: first.running_here() == [], 10, "the first runner stops")
+        _wait(lambda: b.get(job_id)["status"] == "done", 60)
+        job = b.get(job_id)
+        assert (job["done"], job["runs"]) == (40, 2) and job["lease_owner"] == second.id
+        assert [r["index"] for r in b.rows(job_id)] == list(range(40))
+    finally:
+        a.stop()
+        b.stop()
+
+
+@pytest.mark.parametrize("fault", ["garbage", "deleted", "read-only"])
+def test_every_storage_fault_is_503_jobs_unavailable(api, monkeypatch, fault):
+    job_id = api.post("/v1/jobs", json=MIXED).json()["id"]
+    wait_for(api, job_id, done)
+    runner = api.app.state.jobs
+    db = api.db
+    if fault == "garbage":
+        runner.store.close()                  # a fresh connection reads the damaged file (no page cache)
+        runner.store._closed = False
+        with sqlite3.connect(db) as con:
+            con.execute("PRAGMA wal_checkpoint(TRUNCATE)")
+        size = db.stat().st_size
+        with open(db, "r+b") as fh:
+            fh.write(bytes(range(256)) * (size // 256 + 1))
+    elif fault == "deleted":
+        for p in db.parent.glob("jobs.sqlite3*"):
+            p.unlink()
+    else:
+        runner.store.close()
+        runner.store._closed = False
+        monkeypatch.setattr(jobs, "_connect", lambda path: sqlite3.connect(
+            f"file:{path}?mode=ro", uri=True, timeout=1.0, isolation_level=None, check_same_thread=False))
+    calls = [("POST", "/v1/jobs", MIXED), ("DELETE", f"/v1/jobs/{job_id}", None)]
+    if fault != "read-only":                  # reading a read-only file works
+        calls += [("GET", "/v1/jobs", None), ("GET", f"/v1/jobs/{job_id}", None),
+                  ("GET", f"/v1/jobs/{job_id}/results", None), ("GET", f"/v1/jobs/{job_id}/results?format=csv", None)]
+    for method, path, body in calls:
+        r = api.request(method, path, json=body)
+        assert r.status_code == 503, (method, path, r.text)
+        assert r.json()["code"] == "jobs_unavailable" and r.headers["retry-after"], r.text
+    if fault == "deleted":
+        assert "deleted" in r.json()["message"] and not db.exists()       # nothing silently recreated
+    assert api.post("/v1/buckling", json={"manipulator": {"n": 4}}).status_code == 200
+
+
+@pytest.mark.parametrize("api", [{"jobs_results_max_limit": 4}], indirect=True)
+def test_results_are_paged_and_csv_is_streamed_in_batches(api, monkeypatch):
+    from service.routes import jobs as routes
+    job_id = api.post("/v1/jobs", json=MIXED).json()["id"]
+    wait_for(api, job_id, done)
+    expected = S.sweep(MIXED)
+    first = api.get(f"/v1/jobs/{job_id}/results").json()          # default limit: min(1000, the maximum)
+    assert (first["offset"], first["limit"], first["next_offset"], first["done"]) == (0, 4, 4, 6)
+    assert first["rows"] == expected.rows[:4]
+    last = api.get(f"/v1/jobs/{job_id}/results", params={"offset": first["next_offset"]}).json()
+    assert last["rows"] == expected.rows[4:] and last["next_offset"] is None
+    page = api.get(f"/v1/jobs/{job_id}/results", params={"offset": 1, "limit": 2}).json()
+    assert [r["index"] for r in page["rows"]] == [1, 2] and page["next_offset"] == 3
+    r = api.get(f"/v1/jobs/{job_id}/results", params={"limit": 5})
+    assert r.status_code == 422 and (r.json()["code"], r.json()["field"]) == ("invalid_parameter", "limit")
+    assert r.json()["details"] == {"max_limit": 4}
+
+    batches = []
+    real = jobs.JobStore.row_batches
+
+    def counted(self, *args, **kwargs):
+        for b in real(self, *args, **kwargs):
+            batches.append(len(b))
+            yield b
+
+    monkeypatch.setattr(routes, "CSV_BATCH", 2)
+    monkeypatch.setattr(jobs.JobStore, "row_batches", counted)
+    full = api.get(f"/v1/jobs/{job_id}/results", params={"format": "csv"})      # all rows: no JSON maximum
+    assert full.text == expected.csv_text() and batches == [2, 2, 2]
+    assert full.headers["x-total-rows"] == "6" and "x-next-offset" not in full.headers
+    part = api.get(f"/v1/jobs/{job_id}/results", params={"offset": 1, "limit": 3}, headers={"Accept": "text/csv"})
+    lines = expected.csv_text().splitlines(keepends=True)
+    assert part.text == "".join([lines[0], *lines[2:5]]) and part.headers["x-next-offset"] == "4"
