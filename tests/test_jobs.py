@@ -42,6 +42,12 @@ def slow_spec(points: int) -> dict:
             "grid": {"dx": [round(0.005 * (i + 1), 6) for i in range(points)]}}
 
 
+def quick_spec(points: int) -> dict:
+    """Every equilibrium of a 3-segment chain: a few ms to ~0.1 s a point."""
+    return {"analysis": "equilibria_count", "manipulator": {"n": 3},
+            "grid": {"dx": [round(0.004 * (i + 1), 6) for i in range(points)]}}
+
+
 MIXED = {"analysis": "equilibrium", "grid": {"dx": [0.1, 30.0, 0.2], "n": [3, 4]}}
 
 
@@ -517,7 +523,7 @@ def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_pa
     a = _runner(db)
     b = _runner(db)
     try:
-        job_id = a.submit(slow_spec(200))["id"]
+        job_id = a.submit(quick_spec(200))["id"]
         _wait(lambda: a.get(job_id)["done"] >= 2, 30)
         assert a.running_here() == [job_id] and b.running_here() == [] and b.points_computed == 0
         assert b.cancel(job_id)["status"] == "cancelled"
@@ -526,8 +532,7 @@ def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_pa
         time.sleep(0.3)
         assert a.get(job_id)["done"] == n and b.points_computed == 0
 
-        spec = {"analysis": "equilibria_count", "manipulator": {"n": 3},
-                "grid": {"dx": [round(0.004 * (i + 1), 6) for i in range(40)]}}
+        spec = quick_spec(20)
         job_id = a.submit(spec)["id"]
         _wait(lambda: job_id in a.running_here() + b.running_here() and a.get(job_id)["done"] >= 2, 30)
         first, second = (a, b) if a.running_here() == [job_id] else (b, a)
@@ -539,8 +544,8 @@ def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_pa
         _wait(lambda: first.running_here() == [], 10, "the first runner stops")
         _wait(lambda: b.get(job_id)["status"] == "done", 60)
         job = b.get(job_id)
-        assert (job["done"], job["runs"]) == (40, 2) and job["lease_owner"] == second.id
-        assert [r["index"] for r in b.rows(job_id)] == list(range(40))
+        assert (job["done"], job["runs"]) == (20, 2) and job["lease_owner"] == second.id
+        assert [r["index"] for r in b.rows(job_id)] == list(range(20))
     finally:
         a.stop()
         b.stop()
@@ -614,3 +619,60 @@ def test_results_are_paged_and_csv_is_streamed_in_batches(api, monkeypatch):
     part = api.get(f"/v1/jobs/{job_id}/results", params={"offset": 1, "limit": 3}, headers={"Accept": "text/csv"})
     lines = expected.csv_text().splitlines(keepends=True)
     assert part.text == "".join([lines[0], *lines[2:5]]) and part.headers["x-next-offset"] == "4"
+
+
+def _lease_owner_pid(db: Path, job_id: str) -> int | None:
+    with sqlite3.connect(db) as con:
+        r = con.execute("SELECT lease_owner FROM jobs WHERE id = ? AND status = 'running'", (job_id,)).fetchone()
+    return int(r[0].split("-")[0]) if r and r[0] else None
+
+
+def test_two_real_servers_share_one_file_cancel_crosses_and_a_killed_servers_job_moves(tmp_path):
+    """Two server processes on one database (lease 1 s): a job runs in one of them only; a cancel through
+    the other stops it; SIGKILL of the server running a job hands the job to the other after its lease,
+    which finishes it with every point once."""
+    db = tmp_path / "jobs.sqlite3"
+    extra = {"TENSEGRITY_JOBS_LEASE_SECONDS": "1", "TENSEGRITY_INLINE_PROCESSES": "0"}
+    procs, bases = [], []
+    try:
+        for k in range(2):
+            port = free_port()
+            env = clean_env(TENSEGRITY_JOBS_DB=str(db), TENSEGRITY_WARMUP="false", TENSEGRITY_WORKERS="1", **extra)
+            log = tmp_path / f"server{k}.log"
+            with open(log, "ab") as out:
+                procs.append(subprocess.Popen(uvicorn_factory_command("service.jobs:create_app_with_jobs", port),
+                                              env=env, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT))
+            bases.append(f"http://127.0.0.1:{port}")
+        for proc, base, k in zip(procs, bases, range(2)):
+            wait_ready(proc, base, "/healthz", 60, log=lambda k=k: (tmp_path / f"server{k}.log").read_text())
+        pids = [p.pid for p in procs]
+
+        job_id = httpx.post(bases[0] + "/v1/jobs", json=quick_spec(200), timeout=30).json()["id"]
+        _wait(lambda: httpx.get(f"{bases[1]}/v1/jobs/{job_id}", params={"limit": 0}).json()["done"] >= 3, 60)
+        holder = _lease_owner_pid(db, job_id)
+        assert holder in pids
+        other = bases[1 - pids.index(holder)]
+        r = httpx.delete(f"{other}/v1/jobs/{job_id}", timeout=30)
+        assert r.status_code == 200 and r.json()["status"] == "cancelled"
+        time.sleep(1.0)                                 # > a lease renewal (1/3 s) + a point
+        n = len(stored_points(db, job_id))
+        time.sleep(0.5)
+        assert len(stored_points(db, job_id)) == n      # the holder stopped
+
+        total = 16
+        spec = quick_spec(total)
+        job_id = httpx.post(bases[1] + "/v1/jobs", json=spec, timeout=30).json()["id"]
+        _wait(lambda: len(stored_points(db, job_id)) >= 3 and _lease_owner_pid(db, job_id) is not None, 60)
+        victim = pids.index(_lease_owner_pid(db, job_id))
+        procs[victim].send_signal(signal.SIGKILL)
+        procs[victim].wait(10)
+        survivor = bases[1 - victim]
+        _wait(lambda: httpx.get(f"{survivor}/v1/jobs/{job_id}", params={"limit": 0}).json()["status"] == "done", 60)
+        job = httpx.get(f"{survivor}/v1/jobs/{job_id}", params={"limit": 0}).json()
+        assert (job["done"], job["runs"]) == (total, 2)
+        with sqlite3.connect(db) as con:
+            assert con.execute("SELECT COUNT(*), COUNT(DISTINCT idx) FROM points WHERE job_id = ?",
+                               (job_id,)).fetchone() == (total, total)
+    finally:
+        for proc in procs:
+            stop(proc, grace=20)
