@@ -18,8 +18,7 @@ missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
 request body over ``max_body_bytes``                   413     ``body_too_large``
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
 ``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``
-job store unusable (missing, damaged, read-only,       503     ``jobs_unavailable``
-deleted or replaced file; ``service.jobs``)
+job store unusable (damaged, read-only, deleted ...)   503     ``jobs_unavailable`` (+ ``Retry-After``)
 solve time limit exceeded                              504     ``timeout``
 unknown path / method                                  404/405 ``not_found`` / ``method_not_allowed``
 =====================================================  ======  ==========================================

@@ -11,20 +11,54 @@ Durability
 * Points are keyed by ``(job, index)`` and inserted with ``INSERT OR IGNORE``: a point is stored
   once and never rewritten.
 * At start the runner takes the jobs a previous process left ``running`` (or ``queued``) and
-  resumes them: ``tensegrity_opt.sweep(spec, skip=<indices already stored>)``. With
-  ``TENSEGRITY_JOBS_RESUME=false`` a job left ``running`` is marked ``interrupted`` instead
-  (its points are kept). A graceful shutdown stops the running job between two points and
-  puts it back to ``queued``, so the next start resumes it.
-* One server process per database file (the runner assumes it owns the jobs it finds).
+  resumes them: only the indices not stored yet are solved. With ``TENSEGRITY_JOBS_RESUME=false``
+  a job left ``running`` (lease expired) is marked ``interrupted`` instead (its points are kept).
+  A graceful shutdown stops the running jobs between two points and puts them back to
+  ``queued``, so the next start resumes them.
 
-Execution
----------
-One background thread runs one job at a time (FIFO), never on the event loop. With
-``TENSEGRITY_JOBS_SCHEDULER`` unset the points are solved in that thread (the library caches its
-CasADi solvers per thread); ``local`` or ``tcp://host:port`` sends them to Dask
-(:func:`tensegrity_opt.sweep.sweep`), the rows still being stored by the runner thread.
-``DELETE /v1/jobs/{id}`` cancels: a queued job at once, a running one after its current point
-(Dask: chunk); finished points are kept.
+Execution and scheduling
+------------------------
+``TENSEGRITY_JOBS_MAX_RUNNING`` runner threads (default 2), never the event loop, each run one
+job at a time. Fair scheduling: a thread that has run its job for ``TENSEGRITY_JOBS_SLICE_SECONDS``
+checks, between two points, whether another job waits; if so its job goes back to ``queued`` and
+the thread claims the job that waited longest (``turn_at``: its creation, then the end of its last
+turn), i.e. round-robin in order of arrival. A job alone keeps its thread.
+
+With ``TENSEGRITY_JOBS_SCHEDULER`` unset the points are solved in the runner thread (the library
+caches its CasADi solvers per thread), each under ``TENSEGRITY_JOBS_POINT_TIMEOUT``: a watchdog
+thread raises :class:`PointTimeout` in a runner thread whose point is late
+(``PyThreadState_SetAsyncExc``, the mechanism of :mod:`service.pool`); it lands at the thread's next
+bytecode, i.e. once the CasADi/IPOPT call in progress returns, and the point's row becomes the
+error ``timeout: ...``; the job goes on. In-process rather than a killable subprocess per point: no
+process start-up and solver rebuild per point, rows identical to ``tensegrity_opt.sweep``'s; the
+price is that one native call longer than the limit runs to its end. ``local`` or ``tcp://host:port``
+sends the points to Dask (:func:`tensegrity_opt.sweep.sweep`; no per-point limit there).
+
+Leases: several servers on one file
+-----------------------------------
+Each runner (one per server process, ``JobRunner.id``) claims a job with one atomic ``UPDATE ...
+WHERE`` (``queued``, or ``running`` with an expired lease) ``RETURNING id``, taking a lease of
+``TENSEGRITY_JOBS_LEASE_SECONDS``. A heartbeat thread renews it every third of that; when the
+renewal finds the job no longer ``running`` under this runner's lease (cancelled through another
+server, deleted, or taken over after this server stalled), the runner stops the job after the
+current point. Rows are only stored while the runner holds the lease, and a point is stored once
+(``INSERT OR IGNORE``). A job whose server died is taken over when its lease expires.
+
+Owners, deletion, retention
+---------------------------
+With API keys configured a job belongs to the key that submitted it (the store keeps
+:func:`owner_hash`, the SHA-256 of the key); every other key sees 404 for it. Jobs stored while
+auth was off have no owner and are not visible to any key. ``DELETE`` cancels a queued or running
+job (a queued one at once, a running one after its current point; finished points are kept) and
+deletes a finished one with its rows. Finished jobs older than ``TENSEGRITY_JOBS_RETENTION_DAYS``
+(0: never) are deleted at start-up and hourly.
+
+Storage faults
+--------------
+Every SQLite or OS error of an API call, and a database file deleted or replaced while the server
+runs (its device and inode are checked on every call), raise :class:`JobsUnavailable`: 503
+``jobs_unavailable``. A deleted file is not recreated (that would silently start an empty store
+beside servers still writing into the old one).
 
 The database file is created on the first submitted job, so a server that never gets a job
 leaves no file behind.

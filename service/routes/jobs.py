@@ -69,6 +69,7 @@ _422_ID = _err(422, "Invalid path or query parameter (`validation_error`, with i
 _503 = _err(503, "The job store cannot be used: its SQLite file cannot be opened, is damaged or read-only, or "
                  "was deleted or replaced while the server runs.",
             {"jobs_unavailable": {"summary": "job store unavailable", "value": _UNAVAILABLE}})
+_503["headers"] = {"Retry-After": {"description": "seconds (TENSEGRITY_RETRY_AFTER)", "schema": {"type": "integer"}}}
 
 
 #: Rows in one JSON page of ``GET /v1/jobs/{id}/results`` when ``limit`` is not given (at most the server's
