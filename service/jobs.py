@@ -42,7 +42,9 @@ WHERE`` (``queued``, or ``running`` with an expired lease) ``RETURNING id``, tak
 renewal finds the job no longer ``running`` under this runner's lease (cancelled through another
 server, deleted, or taken over after this server stalled), the runner stops the job after the
 current point. Rows are only stored while the runner holds the lease, and a point is stored once
-(``INSERT OR IGNORE``). A job whose server died is taken over when its lease expires.
+(``INSERT OR IGNORE``). A job whose server died is taken over when its lease expires, or at once
+by a runner on the same host (the owner is ``host:pid-token``) that finds that pid gone, e.g. the
+same server restarted after a SIGKILL.
 
 Owners, deletion, retention
 ---------------------------
@@ -81,6 +83,7 @@ import hashlib
 import json
 import logging
 import os
+import socket
 import sqlite3
 import threading
 import time
@@ -406,6 +409,23 @@ class JobStore:
             "stopped while the job ran; its finished points are kept (resuming is off: TENSEGRITY_JOBS_RESUME=false)' "
             "WHERE status = 'running' AND COALESCE(lease_until, 0) < :now", {"now": now}).rowcount
 
+    def free_dead_leases(self, host: str) -> int:
+        """Free the leases held by runners of this host whose process is gone (a killed server restarted
+        on the same machine resumes its jobs at once instead of after the lease). A live process with a
+        reused pid only delays the take-over until the lease expires."""
+        now = time.time()
+        dead = []
+        for job_id, owner in self._conn().execute(
+                "SELECT id, lease_owner FROM jobs WHERE status = 'running' AND lease_until >= ?", (now,)):
+            pid = _lease_pid(owner, host)
+            if pid is not None and not _alive(pid):
+                dead.append((job_id, owner))
+        n = 0
+        for job_id, owner in dead:
+            n += self._conn().execute("UPDATE jobs SET lease_until = NULL WHERE id = ? AND lease_owner = ? AND "
+                                      "status = 'running'", (job_id, owner)).rowcount
+        return n
+
     def delete(self, job_id: str, owner: str | None = None) -> bool:
         """Remove a finished job and its rows. False when there is no such finished job."""
         with self._tx() as con:
@@ -483,6 +503,31 @@ class JobStore:
 
 
 # =========================================================================== runner
+def _lease_pid(owner: str | None, host: str) -> int | None:
+    """The pid in a lease owner ``host:pid-token`` when it is of ``host``."""
+    if not owner or ":" not in owner:
+        return None
+    h, _, rest = owner.rpartition(":")
+    if h != host:
+        return None
+    try:
+        return int(rest.split("-", 1)[0])
+    except ValueError:
+        return None
+
+
+def _alive(pid: int) -> bool:
+    if pid == os.getpid():
+        return True
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:            # exists, not ours
+        return True
+    return True
+
+
 def _setting(settings: Any, name: str, fallback: Any) -> Any:
     value = getattr(settings, name, None) if settings is not None else None
     return fallback if value is None else value
@@ -560,7 +605,8 @@ class JobRunner:
         self.max_segments = _setting(settings, "max_segments", None)
         self.store = JobStore(self.db_path, synchronous or _setting(settings, "jobs_synchronous", js.jobs_synchronous))
         #: This runner's identity in the leases (one per server process).
-        self.id = f"{os.getpid()}-{uuid.uuid4().hex[:12]}"
+        self.host = socket.gethostname()
+        self.id = f"{self.host}:{os.getpid()}-{uuid.uuid4().hex[:12]}"
         self.error: str | None = None
         self.points_computed = 0          # points this runner solved (tests, statistics)
         self._ready = False
@@ -588,6 +634,7 @@ class JobRunner:
         if self.store.exists():
             try:
                 self._open()
+                self.store.free_dead_leases(self.host)
                 n = self.store.recover(self.resume)
                 if n:
                     log.warning("%d job(s) left running by a previous process marked interrupted", n)
@@ -760,6 +807,7 @@ class JobRunner:
             if self._ready and not self.error:
                 try:
                     self.store.check_file()
+                    self.store.free_dead_leases(self.host)
                     if not self.resume:
                         self.store.recover(False)
                     with self._lock:

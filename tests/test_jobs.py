@@ -624,7 +624,7 @@ def test_results_are_paged_and_csv_is_streamed_in_batches(api, monkeypatch):
 def _lease_owner_pid(db: Path, job_id: str) -> int | None:
     with sqlite3.connect(db) as con:
         r = con.execute("SELECT lease_owner FROM jobs WHERE id = ? AND status = 'running'", (job_id,)).fetchone()
-    return int(r[0].split("-")[0]) if r and r[0] else None
+    return int(r[0].rpartition(":")[2].split("-")[0]) if r and r[0] else None
 
 
 def test_two_real_servers_share_one_file_cancel_crosses_and_a_killed_servers_job_moves(tmp_path):
