@@ -89,7 +89,7 @@ import threading
 import time
 import uuid
 from collections.abc import AsyncIterator, Callable, Iterable, Iterator, Mapping
-from contextlib import asynccontextmanager
+from contextlib import asynccontextmanager, contextmanager
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -271,20 +271,17 @@ class JobStore:
                 pass
         self._local = threading.local()
 
-    def _tx(self) -> Any:
+    @contextmanager
+    def _tx(self) -> Iterator[sqlite3.Connection]:
         """A write transaction (``BEGIN IMMEDIATE`` ... ``COMMIT``, rolled back on error)."""
-        store = self
-
-        class _Tx:
-            def __enter__(self) -> sqlite3.Connection:
-                self.con = store._conn()
-                self.con.execute("BEGIN IMMEDIATE")
-                return self.con
-
-            def __exit__(self, et: Any, ev: Any, tb: Any) -> None:
-                self.con.execute("COMMIT" if et is None else "ROLLBACK")
-
-        return _Tx()
+        con = self._conn()
+        con.execute("BEGIN IMMEDIATE")
+        try:
+            yield con
+        except BaseException:
+            con.execute("ROLLBACK")
+            raise
+        con.execute("COMMIT")
 
     # -------------------------------------------------------------- jobs
     def create(self, spec: Mapping[str, Any], total: int, columns: list[str],

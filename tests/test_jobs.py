@@ -431,10 +431,13 @@ def test_at_most_max_running_jobs_and_a_huge_job_does_not_hold_a_small_one(tmp_p
 
         _wait(small_done, 30, "the small job finishes")
         assert most <= 2
-        for j in (a, b):
+        progress = []
+        for j in (a, b):                  # neither is near its end (a thread's first point builds its solvers)
             job = runner.get(j)
-            assert job["status"] in ("queued", "running") and 0 < job["done"] < 300
+            assert job["status"] in ("queued", "running") and job["done"] < 300
+            progress.append(job["done"])
             runner.cancel(j)
+        assert max(progress) > 0
         assert runner.rows(small) == S.sweep(MIXED).rows
         assert runner.get(small)["runs"] == 1
     finally:
@@ -455,8 +458,7 @@ def test_jobs_belong_to_the_api_key_that_submitted_them(api):
         assert r.status_code == 404, (method, path)
         assert r.json() == {"code": "not_found", "message": f"no job with id {job_id!r}", "field": "id"}
     assert api.get(f"/v1/jobs/{job_id}").status_code == 401
-    wait_for_key = lambda j: api.get(f"/v1/jobs/{job_id}", headers=one).json()["status"] == "done"  # noqa: E731
-    _wait(lambda: wait_for_key(None), 30)
+    _wait(lambda: api.get(f"/v1/jobs/{job_id}", headers=one).json()["status"] == "done", 30)
     assert api.get(f"/v1/jobs/{job_id}/results", headers=one).json()["rows"] == S.sweep(MIXED).rows
     with sqlite3.connect(api.db) as con:
         owners = dict(con.execute("SELECT id, owner FROM jobs"))
