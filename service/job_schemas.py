@@ -181,7 +181,7 @@ class JobResults(BaseModel):
     done: int = Field(description="rows there are (finished points, failed ones included)")
     columns: list[str]
     offset: int = Field(description="index in the rows of the first row of this page")
-    limit: int = Field(description="most rows in this page")
+    limit: int = Field(description="most rows in this page (the one asked for, cut to the server's maximum)")
     next_offset: int | None = Field(None, description="offset of the next page; null on the last one")
     rows: list[dict[str, Any]] = Field(description="a page of rows, by index: index, the swept "
                                                    "parameters, the analysis's columns, error")
