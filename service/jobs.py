@@ -51,7 +51,8 @@ Owners, deletion, retention
 With API keys configured a job belongs to the key that submitted it (the store keeps
 :func:`owner_hash`, the SHA-256 of the key); every other key sees 404 for it. Jobs stored while
 auth was off have no owner and are not visible to any key. ``DELETE`` cancels a queued or running
-job (a queued one at once, a running one after its current point; finished points are kept) and
+job (a queued one at once; a running one at once too: its point in progress is abandoned, like a late
+point, once the CasADi call in progress returns, and stores nothing; finished points are kept) and
 deletes a finished one with its rows. Finished jobs older than ``TENSEGRITY_JOBS_RETENTION_DAYS``
 (0: never) are deleted at start-up and hourly.
 
@@ -547,6 +548,7 @@ class _Slot:
         self.deadline = 0.0
         self.armed = False
         self.fired = False
+        self.abandoned = False            # fired by _abandon, not by the deadline
 
 
 def _storage_guard(fn: Callable[..., Any]) -> Callable[..., Any]:
@@ -648,8 +650,11 @@ class JobRunner:
         return self
 
     def stop(self, timeout: float = 30.0) -> None:
-        """Stop after the current points (the jobs go back to ``queued``); close the database."""
+        """Stop: the points in progress are abandoned (computed again on resume) and the jobs go back to
+        ``queued``; close the database."""
         self._stopping.set()
+        for slot in self._slots:      # the points in progress are dropped (computed again on resume)
+            self._abandon(slot)
         with self._wake:
             self._wake.notify_all()
         with self._watch:
@@ -749,8 +754,8 @@ class JobRunner:
     def cancel(self, job_id: str, owner: str | None = None) -> dict[str, Any]:
         """Cancel a queued or running job (its finished points are kept). ``JobFinished`` when it ended.
 
-        A job running here stops after its current point; one running in another server sharing the
-        file stops at that server's next lease renewal (a third of ``TENSEGRITY_JOBS_LEASE_SECONDS``).
+        A job running here stops at once (its point in progress is abandoned); one running in another
+        server sharing the file stops at that server's next lease renewal (a third of ``TENSEGRITY_JOBS_LEASE_SECONDS``).
         """
         store = self._store()
         store.get(job_id, owner)                      # JobNotFound for someone else's job
@@ -761,6 +766,7 @@ class JobRunner:
                 for slot in self._slots:
                     if slot.job_id == job_id:
                         slot.stop.set()
+                        self._abandon(slot)
         job = self.get(job_id, owner)
         if not updated and job["status"] != "cancelled":
             raise JobFinished(job["status"])
@@ -862,6 +868,8 @@ class JobRunner:
                     if should_stop():
                         break
                     row = self._timed_row(slot, header, pcols, rcols, i, p)
+                    if row is None:      # abandoned: cancelled, lease lost, or the server stops
+                        break
                     self.points_computed += 1
                     self.store.add_point(job_id, i, row, self.id)
             else:
@@ -898,12 +906,15 @@ class JobRunner:
                                message=f"internal_error: {stored} of {job['total']} points stored")
 
     def _timed_row(self, slot: _Slot, header: Mapping[str, Any], pcols: list[str], rcols: list[str], i: int,
-                   p: Mapping[str, Any]) -> dict[str, Any]:
+                   p: Mapping[str, Any]) -> dict[str, Any] | None:
         """One point under ``point_timeout``: the watchdog raises :class:`PointTimeout` in this thread at its
-        next bytecode after the deadline (after the CasADi/IPOPT call in progress returns)."""
+        next bytecode after the deadline (after the CasADi/IPOPT call in progress returns). ``None`` when the
+        point was abandoned (:meth:`_abandon`: the job was cancelled, its lease lost, or the server stops);
+        nothing is stored for it then, and a resumed job computes it again."""
         with self._watch:
             slot.deadline = time.monotonic() + self.point_timeout
             slot.fired = False
+            slot.abandoned = False
             slot.armed = True
             self._watch.notify()
         try:
@@ -915,9 +926,20 @@ class JobRunner:
                     if slot.fired:       # sent but perhaps not delivered yet: never into the next point
                         _set_async_exc(slot.thread_id, None)
         except PointTimeout:
+            if slot.abandoned:
+                return None
             log.warning("point %d of a job exceeded %g s (TENSEGRITY_JOBS_POINT_TIMEOUT)", i, self.point_timeout)
             return error_row(header, pcols, rcols, i, p, f"timeout: the point did not finish within "
                                                           f"{self.point_timeout:g} s (TENSEGRITY_JOBS_POINT_TIMEOUT)")
+
+    def _abandon(self, slot: _Slot) -> None:
+        """Interrupt the point in progress in ``slot`` now (its job was cancelled, or its lease lost, or the
+        server stops): the thread is free after the CasADi call in progress instead of after the point."""
+        with self._watch:
+            if slot.armed and not slot.fired:
+                slot.fired = True
+                slot.abandoned = True
+                _set_async_exc(slot.thread_id, PointTimeout)
 
     def _watchdog(self) -> None:
         while not self._stopping.is_set():
@@ -948,9 +970,13 @@ class JobRunner:
                 else:
                     if ok:
                         slot.renewed = time.monotonic()
-                if not ok and slot.job_id == job_id and not slot.stop.is_set():
+                if not ok:
+                    with self._lock:        # the slot may have moved on to another job meanwhile
+                        if slot.job_id != job_id or slot.stop.is_set():
+                            continue
+                        slot.stop.set()
+                        self._abandon(slot)
                     log.warning("job %s: cancelled elsewhere or lease lost; this server stops running it", job_id)
-                    slot.stop.set()
             if self._ready and not self.error and time.monotonic() - self._purged > 3600:
                 try:
                     self._purge()

@@ -13,6 +13,7 @@ import json
 import signal
 import sqlite3
 import subprocess
+import threading
 import time
 import warnings
 from pathlib import Path
@@ -677,3 +678,39 @@ def test_two_real_servers_share_one_file_cancel_crosses_and_a_killed_servers_job
     finally:
         for proc in procs:
             stop(proc, grace=20)
+
+
+def test_a_cancel_or_a_shutdown_frees_the_thread_of_a_long_point_at_once(tmp_path, monkeypatch):
+    """A point that would run for minutes is abandoned by a cancel (nothing stored for it) and by a
+    shutdown (the job goes back to queued and computes that point again on resume)."""
+    stuck = threading.Event()
+    real = jobs.solve_chunk
+
+    def solve(header, pcols, rcols, items):
+        if items[0][0] == 1:
+            stuck.set()
+            while True:
+                time.sleep(0.005)
+        return real(header, pcols, rcols, items)
+
+    monkeypatch.setattr(jobs, "solve_chunk", solve)
+    db = tmp_path / "jobs.sqlite3"
+    runner = _runner(db, point_timeout=120, max_running=1)
+    spec = {"analysis": "equilibrium", "grid": {"dx": [0.1, 0.2, 0.3]}}
+    try:
+        job_id = runner.submit(spec)["id"]
+        assert stuck.wait(20)
+        runner.cancel(job_id)
+        assert runner.wait_idle(2.0)
+        assert [r["index"] for r in runner.rows(job_id)] == [0]
+        stuck.clear()
+        job_id = runner.submit(spec)["id"]
+        assert stuck.wait(20)
+    finally:
+        t0 = time.monotonic()
+        runner.stop()
+    assert time.monotonic() - t0 < 3.0
+    store = jobs.JobStore(db)
+    job = store.get(job_id)
+    store.close()
+    assert (job["status"], job["done"]) == ("queued", 1)

@@ -256,9 +256,9 @@ def _csv_response(runner: JobRunner, job: dict[str, Any], offset: int, limit: in
 @router.delete(
     "/{job_id}", operation_id="cancel_job", response_model=js.JobSummary,
     summary="Cancel a queued or running job; delete a finished one",
-    description="A queued or running job is cancelled (200, the job; its finished points are kept): a queued one "
-                "at once, a running one after its current point (in another server sharing the database: at "
-                "that server's next lease renewal). A finished job (done, failed, cancelled or interrupted) is "
+    description="A queued or running job is cancelled at once (200, the job; its finished points are kept; the "
+                "point in progress is abandoned once the native call in progress returns; in another server "
+                "sharing the database: at that server's next lease renewal). A finished job (done, failed, cancelled or interrupted) is "
                 "deleted with all its rows: 204, no body; the id is then unknown (404). So `DELETE` twice "
                 "cancels, then deletes. Finished jobs are also deleted after "
                 "`TENSEGRITY_JOBS_RETENTION_DAYS`. Someone else's job (API keys configured) is 404.",
