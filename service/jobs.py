@@ -31,7 +31,9 @@ thread raises :class:`PointTimeout` in a runner thread whose point is late
 bytecode, i.e. once the CasADi/IPOPT call in progress returns, and the point's row becomes the
 error ``timeout: ...``; the job goes on. In-process rather than a killable subprocess per point: no
 process start-up and solver rebuild per point, rows identical to ``tensegrity_opt.sweep``'s; the
-price is that one native call longer than the limit runs to its end. ``local`` or ``tcp://host:port``
+price is that one native call longer than the limit runs to its end (the library bounds each IPOPT
+call itself: ``ipopt.max_wall_time`` 20 s, 60 s for a design NLP, so a late point ends at most that
+long after its deadline). ``local`` or ``tcp://host:port``
 sends the points to Dask (:func:`tensegrity_opt.sweep.sweep`; no per-point limit there).
 
 Leases: several servers on one file
@@ -616,6 +618,7 @@ class JobRunner:
         self._slots = [_Slot(k) for k in range(self.max_running)]
         self._watch = threading.Condition(threading.Lock())    # the point watchdog's
         self._purged = 0.0
+        self._fault_logged = -1e9
 
     # -------------------------------------------------------------- lifecycle
     def start(self) -> JobRunner:
@@ -816,10 +819,10 @@ class JobRunner:
                     with self._lock:
                         held = [s.job_id for s in self._slots if s.job_id]
                     job = self.store.claim(self.id, self.lease_seconds, exclude=held)
-                except JobsUnavailable as exc:
-                    log.error("job runner: %s", exc)
-                except Exception:  # database trouble: retry later
-                    log.exception("cannot read the job queue")
+                except Exception as exc:  # database trouble: retry later (logged once a minute)
+                    if time.monotonic() - self._fault_logged > 60:
+                        self._fault_logged = time.monotonic()
+                        log.error("job runner: cannot read the job queue of %s: %r", self.db_path, exc)
             if job is None:
                 with self._wake:
                     if not self._stopping.is_set():
