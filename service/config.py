@@ -24,6 +24,12 @@ variable                               default    meaning
 ``TENSEGRITY_JOBS_RESUME``             true       resume jobs a stopped server left running
 ``TENSEGRITY_JOBS_SYNCHRONOUS``        NORMAL     SQLite ``synchronous`` (NORMAL survives a kill, FULL a power cut)
 ``TENSEGRITY_JOBS_CHUNK_SIZE``         (auto)     points per Dask task
+``TENSEGRITY_JOBS_POINT_TIMEOUT``      300        seconds one job point may run (then an error row ``timeout``)
+``TENSEGRITY_JOBS_MAX_RUNNING``        2          jobs a server runs at once (the rest wait, ``queued``)
+``TENSEGRITY_JOBS_SLICE_SECONDS``      30         a running job yields to a waiting one after this (round-robin)
+``TENSEGRITY_JOBS_RETENTION_DAYS``     7          finished jobs older than this are deleted; 0: kept forever
+``TENSEGRITY_JOBS_LEASE_SECONDS``      60         a server's claim on a running job, renewed every third of it
+``TENSEGRITY_JOBS_RESULTS_MAX_LIMIT``  10000      most rows in one JSON page of ``/v1/jobs/{id}/results``
 =====================================  =========  ==================================================
 """
 
@@ -88,6 +94,21 @@ class Settings(BaseSettings):
     jobs_resume: bool = Field(True, description="resume jobs left running by a previous process")
     jobs_synchronous: Literal["NORMAL", "FULL"] = Field("NORMAL", description="SQLite synchronous mode")
     jobs_chunk_size: int | None = Field(None, ge=1, description="points per Dask task (default: automatic)")
+    jobs_point_timeout: float = Field(
+        300.0, gt=0, description="seconds one job point may run in the runner thread; then its row is the error "
+                                 "'timeout: ...' and the job goes on (not applied on Dask)")
+    jobs_max_running: int = Field(2, ge=1, le=64, description="jobs this server runs at the same time")
+    jobs_slice_seconds: float = Field(
+        30.0, gt=0, description="a running job hands its runner over to a waiting job after this many seconds "
+                                "(between two points; round-robin in order of arrival)")
+    jobs_retention_days: float = Field(
+        7.0, ge=0, description="finished jobs (done, failed, cancelled, interrupted) older than this are deleted "
+                               "with their rows, at start-up and hourly; 0: kept forever")
+    jobs_lease_seconds: float = Field(
+        60.0, ge=0.3, le=3600, description="a server's lease on a job it runs, renewed every third of it; a job "
+                                           "whose lease expired (its server died) is taken over by another server")
+    jobs_results_max_limit: int = Field(10_000, ge=1, le=1_000_000,
+                                        description="most rows in one JSON page of GET /v1/jobs/{id}/results")
 
     @field_validator("jobs_scheduler", mode="before")
     @classmethod

@@ -20,6 +20,7 @@ missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
 request body over ``max_body_bytes``                   413     ``body_too_large``
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
 ``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``
+job store unusable (damaged, read-only, deleted ...)   503     ``jobs_unavailable`` (+ ``Retry-After``)
 solve time limit exceeded                              504     ``timeout``
 unknown path / method                                  404/405 ``not_found`` / ``method_not_allowed``
 =====================================================  ======  ==========================================
@@ -44,6 +45,7 @@ from starlette.responses import JSONResponse
 
 from tensegrity_opt.errors import HomotopyUnavailableError, SolverError, TensegrityError
 
+from .jobs import JobsUnavailable
 from .pool import PoolSaturated, SolveTimeout
 
 log = logging.getLogger("service.errors")
@@ -131,7 +133,7 @@ _NUMERICAL = (ArithmeticError, np.linalg.LinAlgError, ValueError, RuntimeError)
 def status_for(exc: BaseException) -> int:
     if isinstance(exc, ServiceError):
         return exc.status_code
-    if isinstance(exc, PoolSaturated):
+    if isinstance(exc, (PoolSaturated, JobsUnavailable)):
         return 503
     if isinstance(exc, SolveTimeout):
         return 504
@@ -164,6 +166,8 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
         return {"code": "timeout", "message": str(exc)}
     if isinstance(exc, PoolSaturated):
         return {"code": "overloaded", "message": str(exc)}
+    if isinstance(exc, JobsUnavailable):
+        return {"code": "jobs_unavailable", "message": str(exc)}
     if isinstance(exc, TensegrityError):
         d = exc.to_dict()
         code = exc.code if type(exc) is not TensegrityError else "no_equilibrium"
@@ -253,7 +257,7 @@ def _record_failure(request: Request, code: str) -> None:
 
 
 #: Exceptions a solve may raise that are answers, not server bugs.
-ANSWERED = (ApiError, ServiceError, PoolSaturated, SolveTimeout, TensegrityError, ArithmeticError,
+ANSWERED = (ApiError, ServiceError, PoolSaturated, SolveTimeout, JobsUnavailable, TensegrityError, ArithmeticError,
             np.linalg.LinAlgError, ValueError, RuntimeError)
 
 

@@ -178,9 +178,12 @@ class JobResults(BaseModel):
     status: JobStatus
     complete: bool = Field(description="every point is done")
     total: int
-    done: int
+    done: int = Field(description="rows there are (finished points, failed ones included)")
     columns: list[str]
-    rows: list[dict[str, Any]] = Field(description="one row per finished point, by index: index, the swept "
+    offset: int = Field(description="index in the rows of the first row of this page")
+    limit: int = Field(description="most rows in this page (the one asked for, cut to the server's maximum)")
+    next_offset: int | None = Field(None, description="offset of the next page; null on the last one")
+    rows: list[dict[str, Any]] = Field(description="a page of rows, by index: index, the swept "
                                                    "parameters, the analysis's columns, error")
 
 
@@ -213,6 +216,6 @@ JOB_EXAMPLE = {
     "next_offset": None,
 }
 RESULTS_EXAMPLE = {"id": JOB_EXAMPLE["id"], "status": "done", "complete": True, "total": 9, "done": 9,
-                   "columns": _COLUMNS, "rows": [_ROW]}
+                   "columns": _COLUMNS, "offset": 0, "limit": 1, "next_offset": 1, "rows": [_ROW]}
 CSV_EXAMPLE = ("index,n,k,critical_force,load2,loads,mode_shape,mode_signs,mode_q,error\n"
                '0,3,0.5,-0.470871,0.929129,"[0.470871, 0.929129]",U,+--,"[0.501331, -0.643451, -0.576303]",\n')

@@ -75,7 +75,7 @@ from .stiffness import cartesian_stiffness
 
 __all__ = ["ANALYSES", "PARAMETERS", "RESULT_COLUMNS", "MAX_POINTS", "SweepResult", "validate_spec", "expand",
            "count_points", "columns", "column_types", "evaluate_point", "solve_chunk", "sweep", "format_error",
-           "read_results", "write_csv"]
+           "read_results", "write_csv", "plan", "error_row"]
 
 ANALYSES = ("buckling", "equilibrium", "equilibria_count", "stiffness", "design")
 MANIPULATOR_PARAMETERS = ("n", "a", "b", "k", "L0")
@@ -491,6 +491,20 @@ def solve_chunk(header: Mapping[str, Any], param_cols: Sequence[str], result_col
     return [(int(i), _row(header, param_cols, result_cols, int(i), p)) for i, p in items]
 
 
+def plan(spec: Any) -> tuple[dict[str, Any], list[str], list[str], list[dict[str, Any]]]:
+    """``(header, param_cols, result_cols, points)`` of ``spec``: what :func:`solve_chunk` takes, for
+    callers that run the points themselves (the service's job runner, with a time limit per point)."""
+    norm = validate_spec(spec)
+    header = {k: norm[k] for k in ("analysis", "manipulator", "options")}
+    return header, _parameter_columns(norm), list(_result_types(header)), expand(norm)
+
+
+def error_row(header: Mapping[str, Any], param_cols: Sequence[str], result_cols: Sequence[str], index: int,
+              point: Mapping[str, Any], error: str) -> dict[str, Any]:
+    """The row of a point that did not produce a result: its parameters, empty results, ``error``."""
+    return _row_error(header, param_cols, result_cols, index, point, error)
+
+
 # =========================================================================== results
 def _cell_csv(v: Any, kind: str) -> str:
     if v is None:
@@ -638,12 +652,14 @@ class SweepResult:
 
 
 def write_csv(fh: Any, cols: Sequence[str], rows: Iterable[Mapping[str, Any]],
-              types: Mapping[str, str] | None = None) -> None:
-    """Write ``rows`` as CSV to the text file ``fh`` (the format of :meth:`SweepResult.to_csv`)."""
+              types: Mapping[str, str] | None = None, header: bool = True) -> None:
+    """Write ``rows`` as CSV to the text file ``fh`` (the format of :meth:`SweepResult.to_csv`);
+    ``header=False``: without the header line (a later batch of a streamed file)."""
     types = dict(types or {})
     kinds = [types.get(c) or _type_of(c) for c in cols]
     w = csv.writer(fh, lineterminator="\n")
-    w.writerow(cols)
+    if header:
+        w.writerow(cols)
     for r in rows:
         w.writerow([_cell_csv(r.get(c), k) for c, k in zip(cols, kinds)])
 

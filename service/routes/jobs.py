@@ -1,17 +1,23 @@
-"""Sweep jobs: submit a sweep spec, follow it, fetch its rows (JSON or CSV), cancel it.
+"""Sweep jobs: submit a sweep spec, follow it, fetch its rows (JSON pages or streamed CSV), cancel or
+delete it.
 
 Handlers are plain functions (FastAPI runs them in its thread pool): they only touch the
-SQLite job store; the sweeps themselves run in the job runner's background thread
-(:mod:`service.jobs`).
+SQLite job store; the sweeps themselves run in the job runner's background threads
+(:mod:`service.jobs`). With API keys configured a job belongs to the key that submitted it
+(the store keeps the key's SHA-256): every other key gets 404 for it, as for an unknown id.
+Storage faults raise ``JobsUnavailable``, answered 503 ``jobs_unavailable`` by :mod:`service.errors`.
 """
 
 from __future__ import annotations
 
 import io
+import logging
+from collections.abc import Iterator
 from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Body, Depends, Query, Request, Response
 from starlette.responses import Response as PlainResponse
+from starlette.responses import StreamingResponse
 
 from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.sweep import write_csv
@@ -19,14 +25,13 @@ from tensegrity_opt.sweep import write_csv
 from .. import job_schemas as js
 from ..errors import ServiceError
 from ..examples import ERRORS
-from ..jobs import JobFinished, JobNotFound, JobRunner, JobsUnavailable, summary
+from ..jobs import JobNotFound, JobRunner, owner_hash, summary
 from ..schemas import ErrorOut
 
 router = APIRouter(prefix="/v1/jobs", tags=["jobs"])
+log = logging.getLogger("service.jobs")
 
 _NOT_FOUND = {"code": "not_found", "message": "no job with id '0123456789abcdef0123456789abcdef'", "field": "id"}
-_FINISHED = {"code": "job_finished", "message": "the job is already done; only queued or running jobs can be "
-                                                "cancelled", "field": "id", "details": {"status": "done"}}
 _UNAVAILABLE = {"code": "jobs_unavailable",
                 "message": "cannot open the job store tensegrity_jobs.sqlite3: unable to open database file"}
 _INVALID = {
@@ -61,8 +66,17 @@ _422_ID = _err(422, "Invalid path or query parameter (`validation_error`, with i
         "code": "validation_error", "message": "limit: Input should be greater than or equal to 0", "field": "limit",
         "errors": [{"field": "limit", "message": "Input should be greater than or equal to 0",
                     "type": "greater_than_equal"}]}}})
-_503 = _err(503, "The job store cannot be used (its SQLite file could not be opened).",
+_503 = _err(503, "The job store cannot be used: its SQLite file cannot be opened, is damaged or read-only, or "
+                 "was deleted or replaced while the server runs.",
             {"jobs_unavailable": {"summary": "job store unavailable", "value": _UNAVAILABLE}})
+_503["headers"] = {"Retry-After": {"description": "seconds (TENSEGRITY_RETRY_AFTER)", "schema": {"type": "integer"}}}
+
+
+#: Rows in one JSON page of ``GET /v1/jobs/{id}/results`` when ``limit`` is not given (at most the server's
+#: ``TENSEGRITY_JOBS_RESULTS_MAX_LIMIT``).
+RESULTS_DEFAULT_LIMIT = 1000
+#: Rows read from the store per batch of a streamed CSV download.
+CSV_BATCH = 1000
 
 
 async def get_runner(request: Request) -> JobRunner:
@@ -72,30 +86,41 @@ async def get_runner(request: Request) -> JobRunner:
     return runner
 
 
+async def get_owner(request: Request) -> str | None:
+    """The job owner of this request: the SHA-256 of its API key when keys are configured, else ``None``
+    (auth off: every job is everyone's). ``require_api_key`` has checked the key already."""
+    settings = request.app.state.settings
+    if not settings.auth_enabled:
+        return None
+    return owner_hash(request.headers.get("x-api-key") or "")
+
+
 Runner = Annotated[JobRunner, Depends(get_runner)]
+Owner = Annotated[str | None, Depends(get_owner)]
 
 
 def _not_found(job_id: str) -> ServiceError:
     return ServiceError(404, "not_found", f"no job with id {job_id!r}", field="id")
 
 
-def _job(runner: JobRunner, job_id: str) -> dict[str, Any]:
+def _job(runner: JobRunner, job_id: str, owner: str | None) -> dict[str, Any]:
     try:
-        return runner.get(job_id)
+        return runner.get(job_id, owner)
     except JobNotFound:
         raise _not_found(job_id) from None
-    except JobsUnavailable as exc:
-        raise ServiceError(503, "jobs_unavailable", str(exc)) from None
 
 
 @router.post(
     "", operation_id="submit_job", status_code=202, response_model=js.JobCreated,
     summary="Submit a sweep as a background job",
     description="Body: a sweep spec (`analysis`, `manipulator`, `grid` | `points`, `options`; see "
-                "`tensegrity_opt.sweep`). Answers 202 at once with the job `id` and its number of points; the "
-                "points are solved one job at a time in a background thread and every finished point is "
-                "stored in SQLite, so a server restart resumes the job where it stopped. Follow it with "
-                "`GET /v1/jobs/{id}`.",
+                "`tensegrity_opt.sweep`). Answers 202 at once with the job `id` and its number of points. A "
+                "server runs at most `TENSEGRITY_JOBS_MAX_RUNNING` jobs at a time; jobs take turns of "
+                "`TENSEGRITY_JOBS_SLICE_SECONDS` (round-robin in order of arrival), so a huge job does not hold "
+                "later ones `queued`. A point longer than `TENSEGRITY_JOBS_POINT_TIMEOUT` becomes an error row "
+                "`timeout: ...` and the job goes on. Every finished point is stored in SQLite, so a server "
+                "restart resumes the job where it stopped. With API keys configured the job belongs to the key "
+                "that submitted it. Follow it with `GET /v1/jobs/{id}`.",
     responses={
         202: {"description": "Job accepted (queued)", "headers": {"Location": {
             "description": "the job's URL", "schema": {"type": "string"}}},
@@ -110,50 +135,47 @@ def _job(runner: JobRunner, job_id: str) -> dict[str, Any]:
         503: _503,
     })
 def submit_job(
-    runner: Runner, response: Response,
+    runner: Runner, owner: Owner, response: Response,
     spec: Annotated[js.JobSpec, Body(openapi_examples=js.SPEC_EXAMPLES)],
 ) -> Any:
     try:
-        job = runner.submit(spec.to_spec())
+        job = runner.submit(spec.to_spec(), owner)
     except InvalidParameterError as exc:
         details = {k: v for k, v in exc.details.items() if v is not None} or None
         raise ServiceError(422, exc.code, exc.message, field=exc.field, details=details) from None
-    except JobsUnavailable as exc:
-        raise ServiceError(503, "jobs_unavailable", str(exc)) from None
     response.headers["Location"] = f"/v1/jobs/{job['id']}"
     return {"id": job["id"], "status": job["status"], "total": job["total"], "analysis": job["analysis"]}
 
 
 @router.get(
     "", operation_id="list_jobs", response_model=js.JobList, summary="List jobs, newest first",
+    description="With API keys configured: the jobs of the calling key only.",
     responses={200: {"description": "jobs (no rows)", "content": {"application/json": {"example": {"jobs": [
         {k: v for k, v in js.JOB_EXAMPLE.items() if k not in ("spec", "columns", "results", "offset", "next_offset")}
     ]}}}}, 401: _401, 422: _422_ID, 503: _503})
 def list_jobs(
-    runner: Runner,
+    runner: Runner, owner: Owner,
     limit: Annotated[int, Query(ge=1, le=1000, description="most jobs listed")] = 50,
     status: Annotated[js.JobStatus | None, Query(description="only jobs with this status")] = None,
 ) -> Any:
-    try:
-        return {"jobs": [summary(j) for j in runner.list(limit, status)]}
-    except JobsUnavailable as exc:
-        raise ServiceError(503, "jobs_unavailable", str(exc)) from None
+    return {"jobs": [summary(j) for j in runner.list(limit, status, owner)]}
 
 
 @router.get(
     "/{job_id}", operation_id="get_job", response_model=js.JobOut,
     summary="Status, progress and the rows finished so far",
-    description="`status`: queued | running | done | failed | cancelled | interrupted; `done` / `total` points "
-                "(`progress`); `results`: a page of the finished rows by index (`offset`, `limit`; "
-                "`next_offset` when there are more). All rows: `GET /v1/jobs/{id}/results`.",
+    description="`status`: queued | running | done | failed | cancelled | interrupted (a started job waiting "
+                "for its next turn is `queued` again); `done` / `total` points (`progress`); `results`: a page "
+                "of the finished rows by index (`offset`, `limit`; `next_offset` when there are more). All "
+                "rows: `GET /v1/jobs/{id}/results`. Someone else's job (API keys configured) is 404.",
     responses={200: {"description": "the job", "content": {"application/json": {"example": js.JOB_EXAMPLE}}},
                401: _401, 404: _404, 422: _422_ID, 503: _503})
 def get_job(
-    runner: Runner, job_id: str,
+    runner: Runner, owner: Owner, job_id: str,
     offset: Annotated[int, Query(ge=0, le=10_000_000, description="rows to skip")] = 0,
     limit: Annotated[int, Query(ge=0, le=10_000, description="most rows returned")] = 100,
 ) -> Any:
-    job = _job(runner, job_id)
+    job = _job(runner, job_id, owner)
     rows = runner.rows(job_id, offset, limit + 1)
     more = len(rows) > limit
     return {**summary(job), "spec": job["spec"], "columns": job["columns"], "results": rows[:limit],
@@ -162,55 +184,96 @@ def get_job(
 
 @router.get(
     "/{job_id}/results", operation_id="get_job_results", response_model=js.JobResults,
-    summary="Every finished row (JSON, or CSV with ?format=csv or Accept: text/csv)",
+    summary="The finished rows: JSON pages, or CSV streamed (?format=csv or Accept: text/csv)",
     description="One row per finished point, by index: `index`, the swept parameters, the analysis's columns and "
                 "`error` (`null`, or `code: message` for a point that failed). While the job runs these are the "
-                "partial results (`complete`: false). CSV: header = `columns`, lists as JSON text, missing "
-                "values empty.",
+                "partial results (`complete`: false).\n\n"
+                f"JSON is paged: `offset` (default 0) and `limit` (default {RESULTS_DEFAULT_LIMIT}; a larger one "
+                "is cut to the server's `TENSEGRITY_JOBS_RESULTS_MAX_LIMIT`, 10000 by default, and the answer's "
+                "`limit` says the one applied); `done` is the number of rows there are, `next_offset` the offset "
+                "of the next page (`null` on the last one).\n\n"
+                "CSV is streamed from the store in batches: every row from `offset` (all of them by default; "
+                "`limit` bounds it, without the JSON maximum). Header = `columns`, lists as JSON text, missing "
+                "values empty; response headers `X-Total-Rows` (rows there are) and, when `limit` leaves rows "
+                "out, `X-Next-Offset`.",
     responses={200: {"description": "the rows", "content": {
         "application/json": {"example": js.RESULTS_EXAMPLE},
-        "text/csv": {"schema": {"type": "string"}, "example": js.CSV_EXAMPLE}}},
-        401: _401, 404: _404, 422: _422_ID, 503: _503})
+        "text/csv": {"schema": {"type": "string"}, "example": js.CSV_EXAMPLE}},
+        "headers": {"X-Total-Rows": {"description": "CSV: rows stored for the job", "schema": {"type": "integer"}},
+                    "X-Next-Offset": {"description": "CSV with `limit`: offset of the rows left out",
+                                      "schema": {"type": "integer"}}}},
+        401: _401, 404: _404,
+        422: _422_ID,
+        503: _503})
 def get_job_results(
-    request: Request, runner: Runner, job_id: str,
+    request: Request, runner: Runner, owner: Owner, job_id: str,
     format: Annotated[Literal["json", "csv"] | None, Query(
         description="json or csv (default: from the Accept header, else json)")] = None,
+    offset: Annotated[int, Query(ge=0, le=10_000_000, description="rows to skip")] = 0,
+    limit: Annotated[int | None, Query(ge=0, le=10_000_000, description=(
+        f"most rows: JSON default {RESULTS_DEFAULT_LIMIT}, cut to TENSEGRITY_JOBS_RESULTS_MAX_LIMIT; "
+        "CSV default all"))] = None,
 ) -> Any:
-    job = _job(runner, job_id)
-    rows = runner.rows(job_id)
+    job = _job(runner, job_id, owner)
     fmt = format or ("csv" if "text/csv" in request.headers.get("accept", "").lower() else "json")
+    total_rows = job["done"]
     if fmt == "csv":
-        buf = io.StringIO()
-        write_csv(buf, job["columns"], rows)
-        return PlainResponse(buf.getvalue(), media_type="text/csv; charset=utf-8",
-                             headers={"Content-Disposition": f'attachment; filename="job-{job_id}.csv"'})
+        return _csv_response(runner, job, offset, limit)
+    # A larger limit is cut to the server's maximum (not refused: the maximum is a setting, the schema cannot
+    # say it); the answer's ``limit`` and ``next_offset`` say what was sent and where the rest starts.
+    limit = min(RESULTS_DEFAULT_LIMIT if limit is None else limit, runner.results_max_limit)
+    rows = runner.rows(job_id, offset, limit + 1)
+    more = len(rows) > limit
     return {"id": job_id, "status": job["status"], "complete": job["status"] == "done", "total": job["total"],
-            "done": job["done"], "columns": job["columns"], "rows": rows}
+            "done": total_rows, "columns": job["columns"], "offset": offset, "limit": limit,
+            "next_offset": offset + limit if more else None, "rows": rows[:limit]}
+
+
+def _csv_response(runner: JobRunner, job: dict[str, Any], offset: int, limit: int | None) -> Any:
+    job_id = job["id"]
+    batches = runner.row_batches(job_id, offset, limit, CSV_BATCH)
+    first = next(batches, [])            # storage faults before the first byte are still a 503
+
+    def body() -> Iterator[str]:
+        buf = io.StringIO()
+        write_csv(buf, job["columns"], first)
+        yield buf.getvalue()
+        try:
+            for rows in batches:
+                buf = io.StringIO()
+                write_csv(buf, job["columns"], rows, header=False)
+                yield buf.getvalue()
+        except Exception:  # the status line is sent: all that is left is to end the body early
+            log.exception("job %s: the CSV download stopped", job_id)
+
+    headers = {"Content-Disposition": f'attachment; filename="job-{job_id}.csv"',
+               "X-Total-Rows": str(job["done"])}
+    if limit is not None and offset + limit < job["done"]:
+        headers["X-Next-Offset"] = str(offset + limit)
+    return StreamingResponse(body(), media_type="text/csv; charset=utf-8", headers=headers)
 
 
 @router.delete(
     "/{job_id}", operation_id="cancel_job", response_model=js.JobSummary,
-    summary="Cancel a queued or running job (finished points are kept)",
-    description="A queued job is cancelled at once, a running one after its current point. Cancelling a "
-                "cancelled job again answers it as it is; a job that already ended otherwise is 409 "
-                "`job_finished`.",
+    summary="Cancel a queued or running job; delete a finished one",
+    description="A queued or running job is cancelled at once (200, the job; its finished points are kept; the "
+                "point in progress is abandoned once the native call in progress returns; in another server "
+                "sharing the database: at that server's next lease renewal). A finished job (done, failed, cancelled or interrupted) is "
+                "deleted with all its rows: 204, no body; the id is then unknown (404). So `DELETE` twice "
+                "cancels, then deletes. Finished jobs are also deleted after "
+                "`TENSEGRITY_JOBS_RETENTION_DAYS`. Someone else's job (API keys configured) is 404.",
     responses={200: {"description": "the cancelled job", "content": {"application/json": {"example": {
         **{k: v for k, v in js.JOB_EXAMPLE.items() if k not in ("spec", "columns", "results", "offset",
                                                                   "next_offset")},
         "status": "cancelled", "finished_at": "2025-01-01T12:00:01.000Z",
         "message": "cancelled by a request; finished points are kept"}}}},
-        401: _401, 404: _404, 422: _422_ID,
-        409: _err(409, "The job already ended (done, failed or interrupted).",
-                  {"job_finished": {"summary": "job already finished", "value": _FINISHED}}),
-        503: _503})
-def cancel_job(runner: Runner, job_id: str) -> Any:
+        204: {"description": "the finished job and its rows were deleted"},
+        401: _401, 404: _404, 422: _422_ID, 503: _503})
+def cancel_job(runner: Runner, owner: Owner, job_id: str) -> Any:
     try:
-        job = runner.cancel(job_id)
+        job = runner.delete(job_id, owner)
     except JobNotFound:
         raise _not_found(job_id) from None
-    except JobFinished as exc:
-        raise ServiceError(409, "job_finished", f"the job is already {exc.status}; only queued or running jobs can "
-                                                f"be cancelled", field="id", details={"status": exc.status}) from None
-    except JobsUnavailable as exc:
-        raise ServiceError(503, "jobs_unavailable", str(exc)) from None
+    if job is None:
+        return PlainResponse(status_code=204)
     return summary(job)
