@@ -18,7 +18,8 @@ from .errors import FieldContext, ServiceError
 from .lane import LaneUnavailable, SolverLane
 from .pool import SolveTimeout
 
-__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch", "solve"]
+__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch", "solve",
+           "solve_heavy"]
 
 api_key_header = APIKeyHeader(
     name="X-API-Key", auto_error=False, scheme_name="ApiKey",
@@ -108,6 +109,18 @@ async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: Field
         if body is not None:
             return Response(body, media_type="application/json")
     return await request.app.state.pool.run(fn, *args, timeout=timeout)
+
+
+async def solve_heavy(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext) -> Any:
+    """:func:`solve` for the heavy request classes (``/v1/design/*``): in a killable solver process
+    (:mod:`service.heavy`) under the time limit, so a 504 frees its capacity and these requests never
+    hold a solver thread; in the solver threads when ``heavy_workers`` is 0."""
+    heavy = request.app.state.heavy
+    if heavy is None:
+        return await solve(request, fn, *args, ctx=ctx)
+    request.state.field_context = ctx
+    settings: Settings = request.app.state.settings
+    return await heavy.run(fn, *args, timeout=settings.solve_timeout)
 
 
 def _pick_lane(lanes: list[SolverLane]) -> SolverLane | None:

@@ -24,6 +24,7 @@ from . import docs, errors, jobs
 from .compute import warmup_job
 from .config import Settings, get_settings
 from .deps import require_api_key
+from .heavy import ProcessLane
 from .lane import SolverLane
 from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware
@@ -79,12 +80,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     pool = SolverPool(settings.workers, settings.queue_size)
     metrics = Metrics(pool)
     runner = jobs.JobRunner(settings)
+    heavy = (ProcessLane(settings.heavy_workers, settings.heavy_queue_size, grace=settings.heavy_grace)
+             if settings.heavy_workers else None)
     lanes = [SolverLane(max_in_flight=max(settings.queue_size, 1))
              for _ in range(settings.inline_processes if settings.inline_max_segments else 0)]
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         pool.start()
+        if heavy is not None:
+            heavy.start()       # the design processes import the library while the threads warm up
         for lane in lanes:          # the solver processes warm up while the threads do
             try:
                 await lane.start()
@@ -118,6 +123,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             await asyncio.to_thread(runner.stop)
             for lane in lanes:
                 lane.close()
+            if heavy is not None:
+                heavy.close()
             pool.shutdown(wait=True, timeout=5.0)
 
     app = FastAPI(
@@ -129,6 +136,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.settings = settings
     app.state.pool = pool
     app.state.lanes = lanes
+    app.state.heavy = heavy
     app.state.metrics = metrics
     app.state.jobs = runner
     app.state.ready = False

@@ -19,6 +19,13 @@ Why threads, and why this pool
   for. ``SolveCancelled`` derives from ``BaseException`` so the library's ``except
   Exception``-style handlers do not swallow it.
 
+Before that, the call runs under the library's own time limit (:func:`tensegrity_opt.time_limit`,
+the caller's remaining budget): the library checks it before every IPOPT solve, between curve
+points and every IPOPT iteration of a design solve, and raises ``TimeLimitError`` (504), so a call
+normally stops by itself at its deadline, even inside a long IPOPT solve. What neither can cut is
+one long call into compiled code that is not an IPOPT iteration (the first build of a large design
+problem): the design endpoints therefore run in killable processes (:mod:`service.heavy`).
+
 A cancel request is sent at most once per call and only while the call runs (under the
 pool lock); after the call returns, the worker takes the same lock, marks the call done and
 clears any exception still pending for its thread, so a cancel can never hit the next call.
@@ -35,6 +42,8 @@ import threading
 import time
 from collections.abc import Callable
 from typing import Any
+
+from tensegrity_opt.timelimit import time_limit
 
 log = logging.getLogger("service.pool")
 
@@ -69,7 +78,7 @@ def _set_async_exc(thread_id: int, exc: type[BaseException] | None) -> int:
 
 
 class _Job:
-    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted")
+    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted", "deadline")
 
     def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...]) -> None:
         self.fn = fn
@@ -80,6 +89,7 @@ class _Job:
         self.cancel_sent = False
         self.abandoned = False
         self.submitted = time.monotonic()
+        self.deadline: float | None = None     # time.monotonic(): the library time limit of the call
 
 
 class SolverPool:
@@ -175,6 +185,7 @@ class SolverPool:
     async def run(self, fn: Callable[..., Any], *args: Any, timeout: float) -> Any:
         """Run ``fn(*args)`` in a worker; raise :class:`SolveTimeout` after ``timeout`` seconds."""
         job = self.submit(fn, *args)
+        job.deadline = job.submitted + timeout
         fut = asyncio.wrap_future(job.future)
         try:
             return await asyncio.wait_for(fut, timeout)
@@ -254,7 +265,11 @@ class SolverPool:
                 job.state = _RUNNING
                 self._running += 1
                 self._active.add(job)
-            outcome = (True, job.fn(*job.args))
+            if job.deadline is None:
+                outcome = (True, job.fn(*job.args))
+            else:
+                with time_limit(max(job.deadline - time.monotonic(), 1e-6)):
+                    outcome = (True, job.fn(*job.args))
         except SolveCancelled:
             outcome = (False, SolveTimeout(0.0))
         except BaseException as exc:  # noqa: BLE001 - handed to the awaiting request
