@@ -7,7 +7,8 @@ variable                               default    meaning
 =====================================  =========  ==================================================
 ``TENSEGRITY_MAX_SEGMENTS``            200        largest chain accepted (``too_many_segments`` above)
 ``TENSEGRITY_MAX_BATCH``               1000       most targets in one ``/v1/batch/equilibrium``
-``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may wait for its result (504)
+``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may run (504; its computation is stopped)
+``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (0: refused)
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
