@@ -88,8 +88,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         pool.start()
-        if heavy is not None:
+        if heavy is not None and settings.warmup:
             heavy.start()       # the design processes import the library while the threads warm up
+                                # (without warm-up: on the first design request)
         for lane in lanes:          # the solver processes warm up while the threads do
             try:
                 await lane.start()
