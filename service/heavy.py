@@ -16,7 +16,7 @@ Why processes for these
   requests (``/v1/buckling``, ``/v1/equilibrium`` ...) always find a thread; heavy requests share
   ``workers`` processes and at most ``queue_size`` wait (503 ``overloaded`` beyond).
 
-A child is ``multiprocessing`` ("spawn": a fresh interpreter, no fork of a threaded server); a call
+A child is ``python -m service.heavy FD`` (a fresh interpreter, as :mod:`service.lane`); a call
 is ``(fn, args, seconds)`` over a pipe, the reply ``(ok, value)`` with the exception itself when
 the call raised (its type and fields survive: it is mapped to HTTP like any other). A child that
 dies during a call answers 503 ``overloaded`` (retry) and is replaced.
@@ -26,9 +26,12 @@ from __future__ import annotations
 
 import asyncio
 import logging
-import multiprocessing
+import socket
+import subprocess
+import sys
 import time
 from collections.abc import Callable
+from multiprocessing.connection import Connection
 from typing import Any
 
 from .pool import PoolSaturated, SolveTimeout
@@ -61,19 +64,28 @@ def _child_main(conn: Any) -> None:
 
 
 class _Child:
-    def __init__(self, ctx: Any) -> None:
-        self.conn, child_conn = ctx.Pipe()
-        self.proc = ctx.Process(target=_child_main, args=(child_conn,), daemon=True, name="tensegrity-heavy")
-        self.proc.start()
-        child_conn.close()
+    """``python -m service.heavy FD``: a fresh interpreter (no fork of a threaded server, no re-import
+    of the parent's main script) talking ``multiprocessing.connection`` frames over a socketpair."""
+
+    def __init__(self) -> None:
+        parent, child = socket.socketpair()
+        try:
+            self.proc = subprocess.Popen([sys.executable, "-m", "service.heavy", str(child.fileno())],
+                                         pass_fds=(child.fileno(),), stdin=subprocess.DEVNULL)
+        except BaseException:
+            parent.close()
+            raise
+        finally:
+            child.close()
+        self.conn = Connection(parent.detach())
         self.future: asyncio.Future[tuple[bool, Any]] | None = None
         self.reading = False
 
     def kill(self) -> None:
         try:
             self.proc.kill()
-            self.proc.join(2.0)
-        except (OSError, ValueError, AssertionError):  # pragma: no cover - already gone
+            self.proc.wait(2.0)
+        except (OSError, subprocess.TimeoutExpired):  # pragma: no cover - already gone / unkillable
             pass
         self.conn.close()
 
@@ -85,7 +97,6 @@ class ProcessLane:
         self.workers = workers
         self.queue_size = queue_size
         self.grace = grace
-        self._ctx = multiprocessing.get_context("spawn")
         self._idle: list[_Child] = []
         self._all: set[_Child] = set()
         self._waiters: list[asyncio.Future[_Child]] = []
@@ -99,7 +110,7 @@ class ProcessLane:
             self._add()
 
     def _add(self) -> None:
-        c = _Child(self._ctx)
+        c = _Child()
         self._all.add(c)
         self._give(c)
 
@@ -242,3 +253,7 @@ class ProcessLane:
             return
         if fut is not None and not fut.done():
             fut.set_result(reply)
+
+
+if __name__ == "__main__":
+    _child_main(Connection(int(sys.argv[1])))
