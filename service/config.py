@@ -14,6 +14,8 @@ variable                               default    meaning
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
 ``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: on the event loop)
 ``TENSEGRITY_QUEUE_SIZE``              64         requests waiting for a solver thread (503 beyond)
+``TENSEGRITY_HEAVY_THREADS``           (auto)     solver threads heavy requests may hold at once (``WORKERS`` - 1, >= 1)
+``TENSEGRITY_HEAVY_SEGMENTS``          50         chains longer than this make curves/equilibria requests heavy
 ``TENSEGRITY_HEAVY_WORKERS``           1          killable processes for ``/v1/design/*`` (0: the solver threads)
 ``TENSEGRITY_HEAVY_QUEUE_SIZE``        4          design requests waiting for such a process (503 beyond)
 ``TENSEGRITY_HEAVY_GRACE``             0.5        seconds after a 504 before a design process still busy is killed
@@ -93,6 +95,13 @@ class Settings(BaseSettings):
         description="solver processes for that bounded search (service.lane): the event loop hands the request "
                     "over and goes on with HTTP meanwhile. 0: the event loop solves it itself")
     queue_size: int = Field(64, ge=0, le=100000, description="requests waiting for a worker before 503")
+    heavy_threads: int | None = Field(
+        None, ge=1, le=64,
+        description="solver threads the heavy request classes (batches, curves and figures with branch=all, "
+                    "method=homotopy, curves/equilibria of chains longer than heavy_segments) may hold at once; "
+                    "default workers - 1 (at least 1), so a light request always finds a thread")
+    heavy_segments: int = Field(50, ge=1, le=HARD_MAX_SEGMENTS,
+                                description="curves/equilibria requests on longer chains count as heavy")
     heavy_workers: int = Field(
         1, ge=0, le=64,
         description="solver processes for the design endpoints (service.heavy): killed at the deadline when a "

@@ -77,7 +77,7 @@ TAGS = [
 def create_app(settings: Settings | None = None) -> FastAPI:
     """A new application (its own solver pool and metrics registry) for ``settings``."""
     settings = settings if settings is not None else get_settings()
-    pool = SolverPool(settings.workers, settings.queue_size)
+    pool = SolverPool(settings.workers, settings.queue_size, heavy_limit=settings.heavy_threads)
     metrics = Metrics(pool)
     runner = jobs.JobRunner(settings)
     heavy = (ProcessLane(settings.heavy_workers, settings.heavy_queue_size, grace=settings.heavy_grace)

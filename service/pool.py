@@ -78,9 +78,11 @@ def _set_async_exc(thread_id: int, exc: type[BaseException] | None) -> int:
 
 
 class _Job:
-    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted", "deadline")
+    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted", "deadline",
+                 "heavy")
 
-    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...]) -> None:
+    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...], heavy: bool = False) -> None:
+        self.heavy = heavy
         self.fn = fn
         self.args = args
         self.future: concurrent.futures.Future[Any] = concurrent.futures.Future()
@@ -93,11 +95,18 @@ class _Job:
 
 
 class SolverPool:
-    """``workers`` solver threads fed by a queue of at most ``queue_size`` waiting calls."""
+    """``workers`` solver threads fed by a queue of at most ``queue_size`` waiting calls.
 
-    def __init__(self, workers: int, queue_size: int, name: str = "solver") -> None:
+    Fairness: calls submitted with ``heavy=True`` (long request classes) run on at most
+    ``heavy_limit`` threads at once (default ``workers - 1``, at least 1); a free thread takes the
+    oldest queued call it may run, so with two or more workers a light call never waits for heavy ones.
+    """
+
+    def __init__(self, workers: int, queue_size: int, name: str = "solver", heavy_limit: int | None = None) -> None:
         if workers < 1 or queue_size < 0:
             raise ValueError("workers must be >= 1 and queue_size >= 0")
+        self.heavy_limit = max(1, workers - 1) if heavy_limit is None else max(1, min(heavy_limit, workers))
+        self._running_heavy = 0
         self.workers = workers
         self.queue_size = queue_size
         self.name = name
@@ -166,9 +175,9 @@ class SolverPool:
         return self.workers + self.queue_size
 
     # ------------------------------------------------------------------ submission
-    def submit(self, fn: Callable[..., Any], *args: Any) -> _Job:
+    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False) -> _Job:
         """Queue ``fn(*args)``; raise :class:`PoolSaturated` when ``workers + queue_size`` calls are pending."""
-        job = _Job(fn, args)
+        job = _Job(fn, args, heavy)
         with self._cond:
             if self._stopping:
                 raise PoolSaturated("the solver pool is shutting down")
@@ -182,9 +191,9 @@ class SolverPool:
             self.start()
         return job
 
-    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float) -> Any:
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
         """Run ``fn(*args)`` in a worker; raise :class:`SolveTimeout` after ``timeout`` seconds."""
-        job = self.submit(fn, *args)
+        job = self.submit(fn, *args, heavy=heavy)
         job.deadline = job.submitted + timeout
         fut = asyncio.wrap_future(job.future)
         try:
@@ -228,11 +237,26 @@ class SolverPool:
     # ------------------------------------------------------------------ worker
     def _next(self) -> _Job | None:
         with self._cond:
-            while not self._queue and not self._stopping:
+            while True:
+                if self._stopping:
+                    return None
+                q = self._queue
+                if q and (not q[0].heavy or self._running_heavy < self.heavy_limit):
+                    job = q.popleft()
+                else:       # the oldest call this thread may run: a light one while heavy ones wait
+                    job = next((j for j in q if not j.heavy), None)
+                    if job is not None:
+                        q.remove(job)
+                if job is not None:
+                    if job.heavy:
+                        self._running_heavy += 1
+                    return job
                 self._cond.wait()
-            if self._stopping:
-                return None
-            return self._queue.popleft()
+
+    def _heavy_done(self) -> None:
+        with self._cond:
+            self._running_heavy -= 1
+            self._cond.notify()
 
     def _worker(self) -> None:
         tid = threading.get_ident()
@@ -244,9 +268,13 @@ class SolverPool:
             if job is None:
                 return
             if not job.future.set_running_or_notify_cancel():
+                if job.heavy:
+                    self._heavy_done()
                 self._finished()
                 continue
             ok, value = self._execute(job, tid)
+            if job.heavy:
+                self._heavy_done()
             # Free the slot before the caller can see the result (a client that got its answer
             # may immediately submit again and must find the capacity).
             self._finished()
