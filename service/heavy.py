@@ -17,7 +17,7 @@ Why processes for these
   ``workers`` processes and at most ``queue_size`` wait (503 ``overloaded`` beyond).
 
 A child is ``python -m service.heavy FD`` (a fresh interpreter, as :mod:`service.lane`); a call
-is ``(fn, args, seconds)`` over a pipe, the reply ``(ok, value)`` with the exception itself when
+is ``(fn, args, deadline)`` over a socket, the reply ``(ok, value)`` with the exception itself when
 the call raised (its type and fields survive: it is mapped to HTTP like any other). A child that
 dies during a call answers 503 ``overloaded`` (retry) and is replaced.
 """
@@ -49,11 +49,13 @@ def _child_main(conn: Any) -> None:
 
     while True:
         try:
-            fn, args, seconds = conn.recv()
+            fn, args, deadline = conn.recv()
         except (EOFError, OSError):
             return
         try:
-            with time_limit(seconds if seconds and seconds > 0 else 1e-6):
+            # the deadline is absolute (CLOCK_MONOTONIC is one clock for every process of the machine):
+            # the time a call waited in the pipe (a child still importing) counts
+            with time_limit(max(deadline - time.monotonic(), 1e-6)):
                 reply: tuple[bool, Any] = (True, fn(*args))
         except Exception as exc:  # noqa: BLE001 - handed to the parent, which maps it
             reply = (False, exc)
@@ -153,7 +155,7 @@ class ProcessLane:
         child.future = fut
         try:
             self._start_reading(loop, child)
-            child.conn.send((fn, args, deadline - time.monotonic()))
+            child.conn.send((fn, args, deadline))
         except (OSError, ValueError) as exc:            # the child is gone: replace it
             self._replace(child)
             raise PoolSaturated(f"the design solver process stopped ({exc})") from None

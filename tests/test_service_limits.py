@@ -112,3 +112,24 @@ def test_half_sent_requests_are_closed_and_do_not_lock_out_new_clients():
             time.sleep(0.5)
             s.sendall(b"Host: x\r\nConnection: close\r\n\r\n")
             assert s.recv(4096).startswith(b"HTTP/1.1 200")
+
+
+def test_a_design_solve_stops_itself_at_the_deadline_and_keeps_its_process():
+    from fastapi.testclient import TestClient
+
+    from service.config import Settings
+    from service.main import create_app
+
+    # n = 16 with every variable: the build takes ~0.2 s, the IPOPT solve ~3 s (cut at 1 s by the
+    # library limit inside IPOPT): the process answers by itself, nothing is killed
+    with TestClient(create_app(Settings(warmup=False, solve_timeout=1.0, heavy_grace=2.0))) as c:
+        heavy = c.app.state.heavy
+        r = c.post("/v1/design/critical-force", json={"manipulator": {"n": 16}, "vary": ["a", "b", "k", "L0"]})
+        assert r.status_code == 504 and r.json()["code"] == "timeout"
+        t0 = time.monotonic()
+        while heavy.in_flight and time.monotonic() - t0 < 5:
+            time.sleep(0.02)
+        assert heavy.in_flight == 0 and time.monotonic() - t0 < 1.0
+        assert heavy.killed == 0
+        r = c.post("/v1/design/critical-force", json={"manipulator": {"n": 3}, "vary": ["k"]})
+        assert r.status_code == 200, r.text
