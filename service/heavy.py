@@ -44,9 +44,11 @@ __all__ = ["ProcessLane"]
 def _child_main(conn: Any) -> None:
     """The child: answer calls in order, each under the library time limit it was sent with."""
     import tensegrity_opt  # noqa: F401 - import (CasADi) before the first call, not during it
-
     from tensegrity_opt.timelimit import time_limit
 
+    from . import compute  # noqa: F401 - what the calls run
+
+    conn.send("ready")          # a call is sent only to a child that has imported (~1-3 s)
     while True:
         try:
             fn, args, deadline = conn.recv()
@@ -82,6 +84,7 @@ class _Child:
         self.conn = Connection(parent.detach())
         self.future: asyncio.Future[tuple[bool, Any]] | None = None
         self.reading = False
+        self.ready = False      # its "ready" frame came: it has imported the library
 
     def kill(self) -> None:
         try:
@@ -114,7 +117,7 @@ class ProcessLane:
     def _add(self) -> None:
         c = _Child()
         self._all.add(c)
-        self._give(c)
+        self._start_reading(asyncio.get_running_loop(), c)     # its "ready" frame makes it available
 
     def close(self) -> None:
         self._closing = True
@@ -130,8 +133,8 @@ class ProcessLane:
     # ------------------------------------------------------------------ statistics
     @property
     def busy(self) -> int:
-        """Children running a call (or finishing one whose caller timed out)."""
-        return len(self._all) - len(self._idle)
+        """Children running a call (or finishing one whose caller timed out); not the ones starting."""
+        return sum(1 for c in self._all if c.ready) - len(self._idle)
 
     @property
     def in_flight(self) -> int:
@@ -248,10 +251,23 @@ class ProcessLane:
             reply = child.conn.recv()
         except (EOFError, OSError) as exc:
             self._stop_reading(child)
+            if not child.ready:                 # died while starting (cannot import?): not retried in a loop
+                log.warning("a design solver process exited while starting (status %s)", child.proc.poll())
+                self._all.discard(child)
+                child.kill()
+                for w in self._waiters:
+                    if not w.done() and not self._all:
+                        w.set_exception(PoolSaturated("the design solver process could not start"))
+                return
             if fut is not None and not fut.done():
                 fut.set_exception(PoolSaturated(f"the design solver process stopped ({type(exc).__name__})"))
             elif child in self._all:
                 self._replace(child)
+            return
+        if not child.ready:
+            child.ready = True
+            if child in self._all:
+                self._give(child)
             return
         if fut is not None and not fut.done():
             fut.set_result(reply)
