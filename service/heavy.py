@@ -162,6 +162,10 @@ class ProcessLane:
         except (OSError, ValueError) as exc:            # the child is gone: replace it
             self._replace(child)
             raise PoolSaturated(f"the design solver process stopped ({exc})") from None
+        except BaseException:                           # not picklable (nothing was sent): child unused
+            child.future = None
+            self._give(child)
+            raise
         try:
             ok, value = await asyncio.wait_for(asyncio.shield(fut), max(deadline - time.monotonic(), 0.0))
         except (asyncio.TimeoutError, TimeoutError):
@@ -187,10 +191,12 @@ class ProcessLane:
         self._queued += 1
         try:
             return await asyncio.wait_for(w, timeout)
-        except (asyncio.TimeoutError, TimeoutError):
+        except BaseException as exc:                    # timed out, or the request went away
             if w.done() and not w.cancelled() and w.exception() is None:
-                self._give(w.result())                  # handed over at the last moment
-            raise SolveTimeout(timeout) from None
+                self._give(w.result())                  # handed over at the last moment: pass it on
+            if isinstance(exc, (asyncio.TimeoutError, TimeoutError)):
+                raise SolveTimeout(timeout) from None
+            raise
         finally:
             self._queued -= 1
             if w in self._waiters:
