@@ -4,8 +4,9 @@ A limit is a deadline (``time.monotonic()``) held in a context variable, so it b
 thread (or asyncio task) that set it; nested limits keep the earliest deadline. The library checks
 it
 
-* before every IPOPT solve and between the steps of its loops (multi-start searches, curve
-  points, batch targets), raising :class:`~tensegrity_opt.errors.TimeLimitError`;
+* before every IPOPT solve (equilibrium searches and design problems), between the points of a
+  force-deflection curve and after building a design problem, raising
+  :class:`~tensegrity_opt.errors.TimeLimitError`;
 * inside the long IPOPT solves of the design problems (:mod:`.design_solvers`), once per IPOPT
   iteration through CasADi's ``iteration_callback``: IPOPT stops with ``User_Requested_Stop``,
   which the library raises as :class:`~tensegrity_opt.errors.TimeLimitError` (never as a result).
@@ -13,9 +14,11 @@ it
 An IPOPT solve that hits its own ``max_wall_time`` / ``max_cpu_time`` is likewise reported as a
 :class:`~tensegrity_opt.errors.TimeLimitError` with that ``status``, not as an answer.
 
-What a limit cannot cut: one call into compiled code that is not an IPOPT iteration. The one
-that matters is the *first* design solve for a chain length, which builds the CasADi problem
-(``nlpsol``: ~2 s for n = 30, 20-40 s for n = 60); the limit is checked right after it returns.
+What a limit does not cut: the Newton-only stretches of a search between those checks (bounded:
+milliseconds, seconds for long chains), and one call into compiled code that is not an IPOPT
+iteration. The one that matters is the *first* design solve for a chain length, which builds the
+CasADi problem (``nlpsol``: ~2 s for n = 30, 20-40 s for n = 60); the limit is checked right after
+it returns. (``solve_equilibria_batch`` has its own ``deadline`` argument.)
 The HTTP service runs those requests in a separate process that it kills at the deadline.
 
 Example::
