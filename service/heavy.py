@@ -67,6 +67,10 @@ def _child_main(conn: Any) -> None:
             conn.send((False, RuntimeError(f"unpicklable reply: {type(exc).__name__}: {exc}")))
 
 
+class UnreadableReply(Exception):
+    """The child's reply could not be unpickled here (a server bug: answered as a 500)."""
+
+
 class _Child:
     """``python -m service.heavy FD``: a fresh interpreter (no fork of a threaded server, no re-import
     of the parent's main script) talking ``multiprocessing.connection`` frames over a socketpair."""
@@ -269,6 +273,10 @@ class ProcessLane:
                 fut.set_exception(PoolSaturated(f"the design solver process stopped ({type(exc).__name__})"))
             elif child in self._all:
                 self._replace(child)
+            return
+        except Exception as exc:  # noqa: BLE001 - a reply this process cannot unpickle: a server bug (500)
+            if fut is not None and not fut.done():
+                fut.set_exception(UnreadableReply(f"the design solver process sent an unreadable reply: {exc!r}"))
             return
         if not child.ready:
             child.ready = True
