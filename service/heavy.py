@@ -181,6 +181,10 @@ class ProcessLane:
         except PoolSaturated:
             self._replace(child)
             raise
+        except UnreadableReply:
+            child.future = None
+            self._give(child)
+            raise
         child.future = None
         self._give(child)
         if ok:
