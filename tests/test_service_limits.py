@@ -9,7 +9,6 @@ import threading
 import time
 
 import pytest
-
 from servers import clean_env, free_port, running_server, serve_command
 
 httpx = pytest.importorskip("httpx")

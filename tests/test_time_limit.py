@@ -30,9 +30,8 @@ def test_time_limit_nests_and_validates():
         check_time()                               # the outer limit again
     assert remaining() is None
     for bad in (0, -1, float("nan"), "soon"):
-        with pytest.raises(to.InvalidParameterError) as err:
-            with to.time_limit(bad):
-                pass
+        with pytest.raises(to.InvalidParameterError) as err, to.time_limit(bad):
+            pass
         assert err.value.field == "time_limit"
 
 
