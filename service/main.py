@@ -78,10 +78,10 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     """A new application (its own solver pool and metrics registry) for ``settings``."""
     settings = settings if settings is not None else get_settings()
     pool = SolverPool(settings.workers, settings.queue_size, heavy_limit=settings.heavy_threads)
-    metrics = Metrics(pool)
-    runner = jobs.JobRunner(settings)
     heavy = (ProcessLane(settings.heavy_workers, settings.heavy_queue_size, grace=settings.heavy_grace)
              if settings.heavy_workers else None)
+    metrics = Metrics(pool, heavy)
+    runner = jobs.JobRunner(settings)
     lanes = [SolverLane(max_in_flight=max(settings.queue_size, 1))
              for _ in range(settings.inline_processes if settings.inline_max_segments else 0)]
 

@@ -134,3 +134,4 @@ def test_a_design_solve_stops_itself_at_the_deadline_and_keeps_its_process():
             time.sleep(0.02)
         assert heavy.in_flight == 0 and time.monotonic() - t0 < 1.0
         assert heavy.killed == 0
+        assert "tensegrity_design_processes_killed 0.0" in c.get("/metrics").text
