@@ -7,12 +7,23 @@ variable                               default    meaning
 =====================================  =========  ==================================================
 ``TENSEGRITY_MAX_SEGMENTS``            200        largest chain accepted (``too_many_segments`` above)
 ``TENSEGRITY_MAX_BATCH``               1000       most targets in one ``/v1/batch/equilibrium``
-``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may wait for its result (504)
+``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may run (504; its computation is stopped)
+``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (0: refused)
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
 ``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: on the event loop)
 ``TENSEGRITY_QUEUE_SIZE``              64         requests waiting for a solver thread (503 beyond)
+``TENSEGRITY_HEAVY_THREADS``           (auto)     solver threads heavy requests may hold at once (``WORKERS`` - 1, >= 1)
+``TENSEGRITY_HEAVY_SEGMENTS``          50         chains longer than this make curves/equilibria requests heavy
+``TENSEGRITY_HEAVY_WORKERS``           1          killable processes for ``/v1/design/*`` (0: the solver threads)
+``TENSEGRITY_HEAVY_QUEUE_SIZE``        4          design requests waiting for such a process (503 beyond)
+``TENSEGRITY_HEAVY_GRACE``             0.5        seconds after a 504 before a design process still busy is killed
+``TENSEGRITY_REQUEST_TIMEOUT``         10         seconds to receive a whole request (headers + body): 408/closed
+``TENSEGRITY_MAX_CONNECTIONS``         (auto)     open connections; beyond, the oldest idle/half-sent one is closed
+``TENSEGRITY_LIMIT_CONCURRENCY``       (auto)     uvicorn ``limit_concurrency``: 503 beyond this many requests
+``TENSEGRITY_KEEP_ALIVE``              5          seconds an idle keep-alive connection stays open
+``TENSEGRITY_BACKLOG``                 2048       listen backlog (connections not accepted yet)
 ``TENSEGRITY_RETRY_AFTER``             1          ``Retry-After`` seconds sent with 503
 ``TENSEGRITY_API_KEYS``                (empty)    comma-separated or JSON list; empty: auth off
 ``TENSEGRITY_CORS_ORIGINS``            (empty)    comma-separated or JSON list; empty: CORS off
@@ -31,11 +42,18 @@ variable                               default    meaning
 ``TENSEGRITY_JOBS_LEASE_SECONDS``      60         a server's claim on a running job, renewed every third of it
 ``TENSEGRITY_JOBS_RESULTS_MAX_LIMIT``  10000      most rows in one JSON page of ``/v1/jobs/{id}/results``
 =====================================  =========  ==================================================
+
+(auto): ``MAX_CONNECTIONS`` is the process's descriptor limit (``RLIMIT_NOFILE``) minus 64 for the
+server's own files, at most 1024; ``LIMIT_CONCURRENCY`` that plus 8 (the cap, which makes room by closing
+idle or half-sent connections, decides first). The request timeout and the
+connection cap are enforced by ``tensegrity-opt serve`` (:mod:`service.http`); an app started by a
+bare ``uvicorn service.main:app`` has only what uvicorn's own options give.
 """
 
 from __future__ import annotations
 
 import json
+import resource
 from functools import lru_cache
 from typing import Annotated, Any, Literal
 
@@ -83,6 +101,28 @@ class Settings(BaseSettings):
         description="solver processes for that bounded search (service.lane): the event loop hands the request "
                     "over and goes on with HTTP meanwhile. 0: the event loop solves it itself")
     queue_size: int = Field(64, ge=0, le=100000, description="requests waiting for a worker before 503")
+    heavy_threads: int | None = Field(
+        None, ge=1, le=64,
+        description="solver threads the heavy request classes (batches, curves and figures with branch=all, "
+                    "method=homotopy, curves/equilibria of chains longer than heavy_segments) may hold at once; "
+                    "default workers - 1 (at least 1), so a light request always finds a thread")
+    heavy_segments: int = Field(50, ge=1, le=HARD_MAX_SEGMENTS,
+                                description="curves/equilibria requests on longer chains count as heavy")
+    heavy_workers: int = Field(
+        1, ge=0, le=64,
+        description="solver processes for the design endpoints (service.heavy): killed at the deadline when a "
+                    "solve cannot stop by itself, so a 504 frees its capacity; these requests never hold a "
+                    "solver thread. 0: design requests run in the solver threads")
+    heavy_queue_size: int = Field(4, ge=0, le=10000, description="design requests waiting for a process before 503")
+    heavy_grace: float = Field(0.5, ge=0, le=60, description="seconds after a design 504 before a busy process is killed")
+    request_timeout: float = Field(10.0, gt=0, le=3600,
+                                   description="seconds to receive a whole request (408 / connection closed)")
+    max_connections: int | None = Field(None, ge=1, le=1_000_000,
+                                        description="open connections (default: descriptor limit - 64, <= 1024)")
+    limit_concurrency: int | None = Field(None, ge=1, le=1_000_000,
+                                          description="uvicorn limit_concurrency (default: max_connections + 8)")
+    keep_alive: int = Field(5, ge=1, le=3600, description="seconds an idle keep-alive connection stays open")
+    backlog: int = Field(2048, ge=1, le=65535, description="listen backlog")
     retry_after: int = Field(1, ge=0, description="Retry-After seconds sent with 503")
     api_keys: Annotated[list[str], NoDecode] = Field(default_factory=list, description="accepted X-API-Key values")
     cors_origins: Annotated[list[str], NoDecode] = Field(default_factory=list, description="allowed CORS origins")
@@ -130,6 +170,27 @@ class Settings(BaseSettings):
     @property
     def auth_enabled(self) -> bool:
         return bool(self.api_keys)
+
+    @property
+    def connection_cap(self) -> int:
+        """``max_connections``, or the default derived from the descriptor limit."""
+        return self.max_connections if self.max_connections is not None else _default_connections()
+
+    @property
+    def concurrency_cap(self) -> int:
+        # above the connection cap by default: uvicorn counts connections too, and the cap (which
+        # closes idle or half-sent connections to make room) must decide before uvicorn's 503 does
+        return self.limit_concurrency if self.limit_concurrency is not None else self.connection_cap + 8
+
+
+def _default_connections() -> int:
+    try:
+        soft = resource.getrlimit(resource.RLIMIT_NOFILE)[0]
+    except (OSError, ValueError):  # pragma: no cover
+        soft = 1024
+    if soft == resource.RLIM_INFINITY or soft <= 0:
+        soft = 1 << 20
+    return max(16, min(1024, soft - 64))
 
 
 @lru_cache

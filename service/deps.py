@@ -18,7 +18,8 @@ from .errors import FieldContext, ServiceError
 from .lane import LaneUnavailable, SolverLane
 from .pool import SolveTimeout
 
-__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch", "solve"]
+__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch", "solve",
+           "solve_heavy", "is_heavy"]
 
 api_key_header = APIKeyHeader(
     name="X-API-Key", auto_error=False, scheme_name="ApiKey",
@@ -79,12 +80,14 @@ def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
 
 async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext,
                 timeout: float | None = None,
-                inline: tuple[Callable[..., bytes | None], tuple[Any, ...]] | None = None) -> Any:
+                inline: tuple[Callable[..., bytes | None], tuple[Any, ...]] | None = None,
+                heavy: bool = False) -> Any:
     """Run ``fn(*args)`` in the solver pool under the time limit; errors map through ``service.errors``.
 
     ``inline = (g, g_args)``, when given, runs first: ``g(*g_args, max_segments=...)`` is a bounded
     fast path (``compute.equilibrium_inline``) that returns the rendered JSON body, or ``None`` to
-    hand the request to the pool. It runs in a solver process (:mod:`service.lane`) when one is
+    hand the request to the pool. ``heavy`` marks a long request class (:func:`is_heavy`): such calls
+    hold at most ``heavy_threads`` solver threads at once. The inline path runs in a solver process (:mod:`service.lane`) when one is
     ready, so the event loop goes on with HTTP meanwhile; otherwise (no process configured,
     starting, restarting, saturated, or the call raised there) on the event loop itself, which also
     raises any error again in-process. A thread hand-off costs ~0.1-0.2 ms here, as much as a whole
@@ -107,7 +110,24 @@ async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: Field
             raise SolveTimeout(timeout) from None
         if body is not None:
             return Response(body, media_type="application/json")
-    return await request.app.state.pool.run(fn, *args, timeout=timeout)
+    return await request.app.state.pool.run(fn, *args, timeout=timeout, heavy=heavy)
+
+
+def is_heavy(settings: Settings, m: Any, *, branch_all: bool = False, homotopy: bool = False) -> bool:
+    """The fairness class of a solver-thread request: every branch, the homotopy, or a long chain."""
+    return branch_all or homotopy or segment_count(m) > settings.heavy_segments
+
+
+async def solve_heavy(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext) -> Any:
+    """:func:`solve` for the heavy request classes (``/v1/design/*``): in a killable solver process
+    (:mod:`service.heavy`) under the time limit, so a 504 frees its capacity and these requests never
+    hold a solver thread; in the solver threads when ``heavy_workers`` is 0."""
+    heavy = request.app.state.heavy
+    if heavy is None:
+        return await solve(request, fn, *args, ctx=ctx)
+    request.state.field_context = ctx
+    settings: Settings = request.app.state.settings
+    return await heavy.run(fn, *args, timeout=settings.solve_timeout)
 
 
 def _pick_lane(lanes: list[SolverLane]) -> SolverLane | None:

@@ -21,7 +21,8 @@ request body over ``max_body_bytes``                   413     ``body_too_large`
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
 ``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``
 job store unusable (damaged, read-only, deleted ...)   503     ``jobs_unavailable`` (+ ``Retry-After``)
-solve time limit exceeded                              504     ``timeout``
+solve time limit exceeded (also the library's          504     ``timeout``, ``status`` when the library
+``TimeLimitError``: IPOPT's ``max_wall_time``)                 stopped (``User_Requested_Stop``, ...)
 unknown path / method                                  404/405 ``not_found`` / ``method_not_allowed``
 =====================================================  ======  ==========================================
 
@@ -43,7 +44,7 @@ from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.responses import JSONResponse
 
-from tensegrity_opt.errors import HomotopyUnavailableError, SolverError, TensegrityError
+from tensegrity_opt.errors import HomotopyUnavailableError, SolverError, TensegrityError, TimeLimitError
 
 from .jobs import JobsUnavailable
 from .pool import PoolSaturated, SolveTimeout
@@ -135,7 +136,7 @@ def status_for(exc: BaseException) -> int:
         return exc.status_code
     if isinstance(exc, (PoolSaturated, JobsUnavailable)):
         return 503
-    if isinstance(exc, SolveTimeout):
+    if isinstance(exc, (SolveTimeout, TimeLimitError)):
         return 504
     if isinstance(exc, HomotopyUnavailableError):
         return 503
@@ -175,7 +176,7 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
         field = request_field(exc.field, ctx)
         if field:
             out["field"] = field
-        if isinstance(exc, SolverError):
+        if isinstance(exc, (SolverError, TimeLimitError)):
             out["status"] = str(exc.status) if exc.status is not None else None
         best = getattr(exc, "best", None)
         if isinstance(best, dict):

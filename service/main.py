@@ -24,6 +24,7 @@ from . import docs, errors, jobs
 from .compute import warmup_job
 from .config import Settings, get_settings
 from .deps import require_api_key
+from .heavy import ProcessLane
 from .lane import SolverLane
 from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware
@@ -76,8 +77,10 @@ TAGS = [
 def create_app(settings: Settings | None = None) -> FastAPI:
     """A new application (its own solver pool and metrics registry) for ``settings``."""
     settings = settings if settings is not None else get_settings()
-    pool = SolverPool(settings.workers, settings.queue_size)
-    metrics = Metrics(pool)
+    pool = SolverPool(settings.workers, settings.queue_size, heavy_limit=settings.heavy_threads)
+    heavy = (ProcessLane(settings.heavy_workers, settings.heavy_queue_size, grace=settings.heavy_grace)
+             if settings.heavy_workers else None)
+    metrics = Metrics(pool, heavy)
     runner = jobs.JobRunner(settings)
     lanes = [SolverLane(max_in_flight=max(settings.queue_size, 1))
              for _ in range(settings.inline_processes if settings.inline_max_segments else 0)]
@@ -85,6 +88,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
         pool.start()
+        if heavy is not None and settings.warmup:
+            heavy.start()       # the design processes import the library while the threads warm up
+                                # (without warm-up: on the first design request)
         for lane in lanes:          # the solver processes warm up while the threads do
             try:
                 await lane.start()
@@ -118,6 +124,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             await asyncio.to_thread(runner.stop)
             for lane in lanes:
                 lane.close()
+            if heavy is not None:
+                heavy.close()
             pool.shutdown(wait=True, timeout=5.0)
 
     app = FastAPI(
@@ -129,6 +137,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.settings = settings
     app.state.pool = pool
     app.state.lanes = lanes
+    app.state.heavy = heavy
     app.state.metrics = metrics
     app.state.jobs = runner
     app.state.ready = False

@@ -10,6 +10,9 @@ Exposed at ``GET /metrics`` in the Prometheus text format:
   ``no_equilibrium``, ``numerical_failure``, ``timeout``, ``overloaded``)
 * ``tensegrity_solver_pool_in_flight``, ``tensegrity_solver_pool_running``,
   ``tensegrity_solver_pool_capacity`` (gauges)
+* ``tensegrity_design_processes_in_flight`` (gauge: design requests queued or running in the
+  killable processes of :mod:`service.heavy`), ``tensegrity_design_processes_killed`` (gauge: processes
+  killed because they could not stop at a deadline)
 
 ``route`` is the route template (``/v1/equilibrium``), never the raw path, so the label set
 stays bounded; unmatched paths are ``route="<unmatched>"``.
@@ -42,7 +45,7 @@ _METHODS = frozenset({"GET", "HEAD", "POST", "PUT", "PATCH", "DELETE", "OPTIONS"
 
 
 class Metrics:
-    def __init__(self, pool: Any = None) -> None:
+    def __init__(self, pool: Any = None, heavy: Any = None) -> None:
         self.registry = CollectorRegistry(auto_describe=True)
         self.requests = Counter("tensegrity_http_requests", "HTTP requests answered",
                                 ["method", "route", "status"], registry=self.registry)
@@ -60,6 +63,13 @@ class Metrics:
             g.set_function(lambda: pool.running)
             g = Gauge("tensegrity_solver_pool_capacity", "Solver workers + queue slots", registry=self.registry)
             g.set_function(lambda: pool.capacity)
+        if heavy is not None:
+            g = Gauge("tensegrity_design_processes_in_flight", "Design requests queued or running in the design "
+                      "processes", registry=self.registry)
+            g.set_function(lambda: heavy.in_flight)
+            g = Gauge("tensegrity_design_processes_killed", "Design processes killed at a deadline",
+                      registry=self.registry)
+            g.set_function(lambda: heavy.killed)
 
     def failure(self, code: str) -> None:
         self.errors.labels(code).inc()

@@ -19,6 +19,13 @@ Why threads, and why this pool
   for. ``SolveCancelled`` derives from ``BaseException`` so the library's ``except
   Exception``-style handlers do not swallow it.
 
+Before that, the call runs under the library's own time limit (:func:`tensegrity_opt.time_limit`,
+the caller's remaining budget): the library checks it before every IPOPT solve, between curve
+points and every IPOPT iteration of a design solve, and raises ``TimeLimitError`` (504), so a call
+normally stops by itself at its deadline, even inside a long IPOPT solve. What neither can cut is
+one long call into compiled code that is not an IPOPT iteration (the first build of a large design
+problem): the design endpoints therefore run in killable processes (:mod:`service.heavy`).
+
 A cancel request is sent at most once per call and only while the call runs (under the
 pool lock); after the call returns, the worker takes the same lock, marks the call done and
 clears any exception still pending for its thread, so a cancel can never hit the next call.
@@ -35,6 +42,8 @@ import threading
 import time
 from collections.abc import Callable
 from typing import Any
+
+from tensegrity_opt.timelimit import time_limit
 
 log = logging.getLogger("service.pool")
 
@@ -69,9 +78,11 @@ def _set_async_exc(thread_id: int, exc: type[BaseException] | None) -> int:
 
 
 class _Job:
-    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted")
+    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted", "deadline",
+                 "heavy")
 
-    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...]) -> None:
+    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...], heavy: bool = False) -> None:
+        self.heavy = heavy
         self.fn = fn
         self.args = args
         self.future: concurrent.futures.Future[Any] = concurrent.futures.Future()
@@ -80,14 +91,22 @@ class _Job:
         self.cancel_sent = False
         self.abandoned = False
         self.submitted = time.monotonic()
+        self.deadline: float | None = None     # time.monotonic(): the library time limit of the call
 
 
 class SolverPool:
-    """``workers`` solver threads fed by a queue of at most ``queue_size`` waiting calls."""
+    """``workers`` solver threads fed by a queue of at most ``queue_size`` waiting calls.
 
-    def __init__(self, workers: int, queue_size: int, name: str = "solver") -> None:
+    Fairness: calls submitted with ``heavy=True`` (long request classes) run on at most
+    ``heavy_limit`` threads at once (default ``workers - 1``, at least 1); a free thread takes the
+    oldest queued call it may run, so with two or more workers a light call never waits for heavy ones.
+    """
+
+    def __init__(self, workers: int, queue_size: int, name: str = "solver", heavy_limit: int | None = None) -> None:
         if workers < 1 or queue_size < 0:
             raise ValueError("workers must be >= 1 and queue_size >= 0")
+        self.heavy_limit = max(1, workers - 1) if heavy_limit is None else max(1, min(heavy_limit, workers))
+        self._running_heavy = 0
         self.workers = workers
         self.queue_size = queue_size
         self.name = name
@@ -156,9 +175,9 @@ class SolverPool:
         return self.workers + self.queue_size
 
     # ------------------------------------------------------------------ submission
-    def submit(self, fn: Callable[..., Any], *args: Any) -> _Job:
+    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False) -> _Job:
         """Queue ``fn(*args)``; raise :class:`PoolSaturated` when ``workers + queue_size`` calls are pending."""
-        job = _Job(fn, args)
+        job = _Job(fn, args, heavy)
         with self._cond:
             if self._stopping:
                 raise PoolSaturated("the solver pool is shutting down")
@@ -172,9 +191,10 @@ class SolverPool:
             self.start()
         return job
 
-    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float) -> Any:
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
         """Run ``fn(*args)`` in a worker; raise :class:`SolveTimeout` after ``timeout`` seconds."""
-        job = self.submit(fn, *args)
+        job = self.submit(fn, *args, heavy=heavy)
+        job.deadline = job.submitted + timeout
         fut = asyncio.wrap_future(job.future)
         try:
             return await asyncio.wait_for(fut, timeout)
@@ -217,11 +237,26 @@ class SolverPool:
     # ------------------------------------------------------------------ worker
     def _next(self) -> _Job | None:
         with self._cond:
-            while not self._queue and not self._stopping:
+            while True:
+                if self._stopping:
+                    return None
+                q = self._queue
+                if q and (not q[0].heavy or self._running_heavy < self.heavy_limit):
+                    job = q.popleft()
+                else:       # the oldest call this thread may run: a light one while heavy ones wait
+                    job = next((j for j in q if not j.heavy), None)
+                    if job is not None:
+                        q.remove(job)
+                if job is not None:
+                    if job.heavy:
+                        self._running_heavy += 1
+                    return job
                 self._cond.wait()
-            if self._stopping:
-                return None
-            return self._queue.popleft()
+
+    def _heavy_done(self) -> None:
+        with self._cond:
+            self._running_heavy -= 1
+            self._cond.notify()
 
     def _worker(self) -> None:
         tid = threading.get_ident()
@@ -233,9 +268,13 @@ class SolverPool:
             if job is None:
                 return
             if not job.future.set_running_or_notify_cancel():
+                if job.heavy:
+                    self._heavy_done()
                 self._finished()
                 continue
             ok, value = self._execute(job, tid)
+            if job.heavy:
+                self._heavy_done()
             # Free the slot before the caller can see the result (a client that got its answer
             # may immediately submit again and must find the capacity).
             self._finished()
@@ -254,7 +293,11 @@ class SolverPool:
                 job.state = _RUNNING
                 self._running += 1
                 self._active.add(job)
-            outcome = (True, job.fn(*job.args))
+            if job.deadline is None:
+                outcome = (True, job.fn(*job.args))
+            else:
+                with time_limit(max(job.deadline - time.monotonic(), 1e-6)):
+                    outcome = (True, job.fn(*job.args))
         except SolveCancelled:
             outcome = (False, SolveTimeout(0.0))
         except BaseException as exc:  # noqa: BLE001 - handed to the awaiting request

@@ -20,14 +20,15 @@ from .design import (Design, PreloadDesign, choose_preloads, critical_load_sensi
 from .equilibria import EquilibriumSet, find_equilibria
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
 from .errors import (HomotopyUnavailableError, InfeasibleDesignError, InvalidParameterError, NoEquilibriumError,
-                     SolverError, StraightNotEquilibriumError, TensegrityError, UnreachableTargetError,
-                     UnstableStraightError, UnsupportedError)
+                     SolverError, StraightNotEquilibriumError, TensegrityError, TimeLimitError,
+                     UnreachableTargetError, UnstableStraightError, UnsupportedError)
 from .landscape import Landscape, energy_landscape
 from .manipulator import Manipulator
 from .segment import Segment
 from .shapes import shape_label, sign_string
 from .stiffness import cartesian_stiffness
 from .sweep import SweepResult, sweep
+from .timelimit import time_limit
 from .tracking import Tracker
 
 __version__ = "0.1.0"
@@ -44,6 +45,6 @@ __all__ = [
     "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",
-    "InfeasibleDesignError", "HomotopyUnavailableError",
+    "InfeasibleDesignError", "HomotopyUnavailableError", "TimeLimitError", "time_limit",
     "__version__",
 ]

@@ -181,6 +181,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         import uvicorn
 
         from service.config import Settings
+        from service.http import uvicorn_options
         from service.main import create_app
     except ImportError as exc:  # pragma: no cover - service dependencies missing
         print(f"tensegrity-opt: error: the service needs its dependencies ({exc})", file=sys.stderr)
@@ -191,8 +192,9 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         print(f"tensegrity-opt: error: invalid TENSEGRITY_* setting: {exc}", file=sys.stderr)
         return 2
     # One process: the solver pool inside it supplies the parallelism (see service/pool.py).
+    # Connection limits (request timeout, connection cap, keep-alive, concurrency): service/http.py.
     uvicorn.run(create_app(settings), host=args.host, port=args.port, log_level=args.log_level,
-                access_log=not args.no_access_log, workers=1)
+                access_log=not args.no_access_log, workers=1, **uvicorn_options(settings))
     return 0
 
 

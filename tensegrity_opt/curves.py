@@ -40,11 +40,12 @@ from .buckling import critical_force
 from .equilibria import find_equilibria
 from .equilibrium import (WELLS_MAX, Equilibrium, make_equilibrium, search_stable, straight_equilibrium,
                           solve_equilibrium)
-from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError
+from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from .manipulator import Manipulator
 from .seeds import seed_starts, well_seeds
 from .shapes import shape_label, shape_labels
 from .solvers import model
+from .timelimit import check_time
 
 __all__ = ["Curve", "Jump", "force_deflection"]
 
@@ -153,12 +154,15 @@ def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndar
         for i in range(start + 1, stop):
             try:
                 br.set(i, solve_equilibrium(m, dxs[i], dys[i]))
+            except TimeLimitError:
+                raise
             except TensegrityError:
                 return
         return
     lim = m.joint_limits
     s = start
     while s + 1 < stop:
+        check_time("the force-deflection curve")
         if mdl.dense:
             pre = continuation_prefix(m, targets[s + 1:stop], br.q[s], br.F[s])
             good = pre.q.shape[0]
@@ -267,6 +271,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         current = None
         since = 0
         for j in range(i, stop):
+            check_time("the force-deflection curve")
             if multistable and j > i:
                 # branches are born inside the range (folds): search at every point and follow each
                 # equilibrium (stable ones; every one for branch="all") on no branch followed so far
@@ -282,6 +287,8 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
                 try:
                     g = solve_equilibrium(m, dxs[j], dys[j], q0=branches[current].q[j - 1] if current is not None
                                           and branches[current].valid[j - 1] else None)
+                except TimeLimitError:
+                    raise
                 except TensegrityError:
                     g = None
                 if g is not None and not any(np.max(np.abs(br.q[j] - g.q)) < 1e-7 for br in live):

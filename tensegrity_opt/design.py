@@ -18,10 +18,11 @@ import scipy.linalg as sla
 from .buckling import critical_force, straight_matrices
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
 from .errors import (InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError,
-                     TensegrityError, UnreachableTargetError)
+                     TensegrityError, TimeLimitError, UnreachableTargetError)
 from .manipulator import Manipulator
 from .segment import Segment
 from .solvers import RANGE_SHRINK, model
+from .timelimit import time_limit as _time_limit
 
 __all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
            "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES",
@@ -154,8 +155,8 @@ def _safe_critical(m: Manipulator, boundary: str) -> float:
 # --------------------------------------------------------------------------- 1. strongest chain
 def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
                             bounds: Mapping[str, tuple] | None = None,
-                            budget: Mapping[str, float] | None = None, boundary: str = "guided",
-                            **constraints) -> Design:
+                            budget: Mapping[str, float] | None = None, boundary: str = "guided", *,
+                            time_limit: float | None = None, **constraints) -> Design:
     """Maximise the critical load of the straight chain over per-segment design variables.
 
     Parameters
@@ -179,6 +180,9 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
         initial chain's stiffness scale); without ``K_min`` the floor alone. An optimum at
         ``K_i -> 0+`` (stiffness and preload moved off a segment) is returned with ``K_i`` on the
         floor; the bound used is recorded in ``Design.K_min`` and listed in ``active`` when it holds.
+    time_limit : float, optional
+        Seconds this call may take (see :func:`tensegrity_opt.time_limit`, which bounds any block of
+        calls): checked before and, once per IPOPT iteration, during each solve.
 
     Returns
     -------
@@ -194,34 +198,46 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
     InfeasibleDesignError
         (``RuntimeError``) IPOPT found no feasible design; ``best`` holds its last point
         (a :class:`Design`, lifted onto ``K_i >= K_min``) when that is a valid chain.
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
-    return _buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
+    with _time_limit(time_limit):
+        return _buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
 
 
 def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: str = "guided",
-                                bounds: tuple | None = None) -> Design:
+                                bounds: tuple | None = None, time_limit: float | None = None) -> Design:
     """The smallest change of the rest lengths ``L0`` (symmetric) giving a critical load ``>= required``.
 
     Minimises ``sum((L0 - L0_nom)^2) / sum(L0_nom^2)`` subject to
     ``Z^T (K(L0) - required G) Z`` positive semidefinite and ``L0`` within ``bounds``
-    (default ``(0.05 * 2b, 2b)``: springs in tension at straight).
+    (default ``(0.05 * 2b, 2b)``: springs in tension at straight). ``time_limit`` (seconds) bounds
+    the whole call, both solves, as in :func:`maximize_critical_force`.
 
     Returns
     -------
     Design
         ``feasible=True`` with the minimal change; or, when no rest lengths within the
         bounds reach ``required``, ``feasible=False`` with the strongest achievable design.
+
+    Raises
+    ------
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
     required = float(required)
     if not math.isfinite(required) or required <= 0:
         raise InvalidParameterError("required must be a positive finite load", field="required")
     b = m.b
     bnds = {"L0": bounds if bounds is not None else (0.05 * 2 * b, 2 * b)}
-    try:
-        return _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
-    except InfeasibleDesignError:
-        best = _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=None)
-        return Design(**{**best.__dict__, "feasible": False})
+    with _time_limit(time_limit):
+        try:
+            return _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
+        except InfeasibleDesignError:
+            best = _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=None)
+            return Design(**{**best.__dict__, "feasible": False})
 
 
 def _tension_bounds(tension) -> tuple[float, float]:
@@ -470,7 +486,7 @@ def _active(cols, lo, hi, vary, budget, rows, n_psd, n, tl, tmin, tmax, kmin, to
 # --------------------------------------------------------------------------- 2. preloads for a pose
 def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "nominal", *,
                     margin: float = 1e-3, taut: bool = False, bounds: tuple | None = None,
-                    end_angle: float | None = None, q0=None) -> PreloadDesign:
+                    end_angle: float | None = None, q0=None, time_limit: float | None = None) -> PreloadDesign:
     """Rest lengths ``(L1_0, L2_0)`` per segment putting the tip at ``target`` stably under ``load``.
 
     Parameters
@@ -495,6 +511,8 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     q0 : array_like, optional
         Initial configuration; default the least-energy equilibrium at the target with the
         nominal preloads (or a straight-line guess when there is none).
+    time_limit : float, optional
+        Seconds this call may take, as in :func:`maximize_critical_force`.
 
     Returns
     -------
@@ -507,7 +525,15 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     InfeasibleDesignError
         (``RuntimeError``) IPOPT found no feasible preloads (``best`` holds its last point as a
         dict), or the verification failed.
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
+    with _time_limit(time_limit):
+        return _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0)
+
+
+def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0) -> PreloadDesign:
     from .design_solvers import preload_nlp
 
     if objective not in ("nominal", "margin", "energy"):
@@ -579,6 +605,8 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
     try:
         eq = solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
+    except TimeLimitError:
+        raise
     except TensegrityError as exc:
         raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
                                     f"({exc})", status=res.status, best=best) from exc

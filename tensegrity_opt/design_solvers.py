@@ -27,8 +27,10 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
+from .errors import TimeLimitError
 from .expressions import chain_expressions
 from .solvers import CACHE_SIZE, IPOPT_OPTIONS
+from .timelimit import TIMEOUT_STATUSES, check_time, expired
 
 __all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
 
@@ -78,9 +80,49 @@ def _chain_matrices(b):
     return G, S0
 
 
+class _DeadlineCallback(ca.Callback):
+    """IPOPT's ``iteration_callback``: asks IPOPT to stop (``User_Requested_Stop``) once the calling
+    thread's :func:`~tensegrity_opt.time_limit` is reached. One per solver instance (per thread)."""
+
+    def __init__(self, name: str, nx: int, ng: int, np_: int) -> None:
+        ca.Callback.__init__(self)
+        self._sizes = {"x": nx, "lam_x": nx, "g": ng, "lam_g": ng, "p": np_, "lam_p": np_, "f": 1}
+        self.construct(name, {})
+
+    def get_n_in(self) -> int:
+        return ca.nlpsol_n_out()
+
+    def get_n_out(self) -> int:
+        return 1
+
+    def get_name_in(self, i: int) -> str:
+        return ca.nlpsol_out(i)
+
+    def get_name_out(self, i: int) -> str:
+        return "stop"
+
+    def get_sparsity_in(self, i: int) -> ca.Sparsity:
+        return ca.Sparsity.dense(self._sizes.get(ca.nlpsol_out(i), 0), 1)
+
+    def eval(self, arg):
+        return [1 if expired() else 0]
+
+
+def _nlpsol(name: str, nlp: dict) -> tuple[ca.Function, _DeadlineCallback]:
+    """``nlpsol`` with the design options and a deadline callback (kept alive by the caller)."""
+    cb = _DeadlineCallback(f"{name}_deadline", nlp["x"].numel(), nlp["g"].numel(), nlp["p"].numel())
+    return ca.nlpsol(name, "ipopt", nlp, {**_DESIGN_OPTIONS, "iteration_callback": cb}), cb
+
+
 def _run(solver, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
+    check_time("the design solve")
     sol = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg, p=p)
     st = solver.stats()
+    status = str(st["return_status"])
+    if status in TIMEOUT_STATUSES:
+        # Out of time (the caller's limit, or IPOPT's own max_wall_time): never a result.
+        raise TimeLimitError(f"the design solve stopped at its time limit after {int(st.get('iter_count', -1))} "
+                             f"IPOPT iterations ({status})", status=status)
     return NLPResult(np.asarray(sol["x"]).ravel(), np.asarray(sol["lam_g"]).ravel(),
                      np.asarray(sol["lam_x"]).ravel(), bool(st["success"]), str(st["return_status"]),
                      int(st.get("iter_count", -1)))
@@ -116,8 +158,8 @@ class BucklingDesignNLP:
         self.x = ca.vertcat(a, b, k, L0, P, lv)
         self.nx = 4 * n + 1 + tril_size(d)
         self.n_psd = tril_size(d)
-        self.solver = ca.nlpsol("design_buckling", "ipopt",
-                                {"x": self.x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows}, _DESIGN_OPTIONS)
+        self.solver, self._deadline = _nlpsol("design_buckling",
+                                              {"x": self.x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows})
         self.rows = ca.Function("rows", [self.x], [rows])
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
@@ -151,9 +193,8 @@ class PreloadNLP:
         rows = ca.vertcat(grad, tip, phi[n - 1], psd, L1 - L10, L2 - L20, q)
         self.x = ca.vertcat(phi, L10, L20, mu, lv)
         self.nx = 3 * n + 1 + tril_size(n)
-        self.solver = ca.nlpsol("design_preload", "ipopt",
-                                {"x": self.x, "p": ca.vertcat(a, b, k1, k2, F, L0nom, w), "f": f, "g": rows},
-                                _DESIGN_OPTIONS)
+        self.solver, self._deadline = _nlpsol(
+            "design_preload", {"x": self.x, "p": ca.vertcat(a, b, k1, k2, F, L0nom, w), "f": f, "g": rows})
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
@@ -171,6 +212,7 @@ def _cached(key, build):
         c.move_to_end(key)
         return c[key]
     obj = c[key] = build()
+    check_time("building the design problem")     # the build (nlpsol) itself cannot be cut
     while len(c) > CACHE_SIZE:
         c.popitem(last=False)
     return obj

@@ -34,6 +34,7 @@ from scipy.linalg.lapack import dgesv as _dgesv
 
 from . import kernels as _kernels
 from .expressions import kkt_graph
+from .timelimit import check_time
 
 __all__ = ["LocalResult", "SeedResults", "Continuation", "model", "IPOPT_OPTIONS"]
 
@@ -430,6 +431,7 @@ class _Model:
     def minimize_displacement(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
                               q0: np.ndarray) -> LocalResult:
         """IPOPT: ``min E(q)`` s.t. ``tip(q) = target``, ``|q| < limits``, from ``q0``."""
+        check_time("the equilibrium search")
         lim = limits * (1.0 - RANGE_SHRINK)
         q0 = np.clip(q0, -lim * 0.999, lim * 0.999)
         sol = self.nlp_disp(x0=self.phi(q0), p=params,
@@ -444,6 +446,7 @@ class _Model:
     def minimize_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray,
                        q0: np.ndarray) -> LocalResult:
         """IPOPT: ``min E(q) - F.tip(q)`` s.t. ``|q| < limits``, from ``q0``."""
+        check_time("the equilibrium search")
         lim = limits * (1.0 - RANGE_SHRINK)
         q0 = np.clip(q0, -lim * 0.999, lim * 0.999)
         sol = self.nlp_force(x0=self.phi(q0), p=np.concatenate([params, force]), lbg=-lim, ubg=lim)

@@ -615,9 +615,9 @@ def test_inline_fast_path_answers_like_the_workers():
         pool = fast.app.state.pool
         original = pool.submit
 
-        def counting(fn, *args):
+        def counting(fn, *args, **kwargs):        # kwargs: heavy=
             submitted.append(args[0])
-            return original(fn, *args)
+            return original(fn, *args, **kwargs)
 
         pool.submit = counting
         for body in bodies:

@@ -151,3 +151,22 @@ def test_shutdown_cancels_queue():
         assert j.future.done()
     with pytest.raises(PoolSaturated):
         pool.submit(lambda: 1)
+
+
+def test_heavy_calls_hold_at_most_their_share_of_the_threads():
+    pool = SolverPool(2, 8)                   # heavy_limit: workers - 1 = 1
+    gate = threading.Event()
+    try:
+        heavy = [pool.submit(gate.wait, 5, heavy=True) for _ in range(3)]
+        time.sleep(0.05)
+        assert pool.running == 1              # one thread for the heavy calls, the other kept free
+        t0 = time.perf_counter()
+        assert pool.submit(lambda: "light").future.result(2) == "light"    # past the queued heavy calls
+        assert time.perf_counter() - t0 < 0.5
+        gate.set()
+        assert [j.future.result(5) for j in heavy] == [True] * 3
+        wait_idle(pool)
+    finally:
+        gate.set()
+        pool.shutdown()
+

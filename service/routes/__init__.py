@@ -14,7 +14,9 @@ _DESCRIPTIONS = {
          "with a machine-readable `code` (unreachable target, straight configuration not an equilibrium or "
          "unstable, too many segments, solver did not converge with its IPOPT `status` ...).",
     503: "Solver pool saturated: every worker is busy and the queue is full. Retry after `Retry-After` seconds.",
-    504: "The solve did not finish within the server's time limit (`TENSEGRITY_SOLVE_TIMEOUT`).",
+    504: "The solve did not finish within the server's time limit (`TENSEGRITY_SOLVE_TIMEOUT`): it was stopped "
+         "(no result; its capacity is free again). `status`, when present, says what stopped it "
+         "(`User_Requested_Stop`: the limit inside IPOPT, `Maximum_WallTime_Exceeded`: IPOPT's own limit).",
 }
 
 

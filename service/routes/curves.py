@@ -10,7 +10,7 @@ from .. import examples as ex
 from .. import schemas as s
 from ..compute import force_deflection_job
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, solve
+from ..deps import check_manipulator, get_settings_dep, is_heavy, solve
 from . import solve_responses
 
 router = APIRouter(prefix="/v1", tags=["curves"])
@@ -35,4 +35,5 @@ async def force_deflection(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, force_deflection_job, req, ctx=ctx)
+    return await solve(request, force_deflection_job, req, ctx=ctx,
+                       heavy=is_heavy(settings, req.manipulator, branch_all=req.branch == "all"))

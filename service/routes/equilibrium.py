@@ -11,7 +11,7 @@ from .. import schemas as s
 from ..compute import (equilibria_job, equilibrium_inline, equilibrium_inline_args, equilibrium_job,
                        force_equilibrium_job)
 from ..config import Settings
-from ..deps import check_homotopy, check_manipulator, get_settings_dep, solve
+from ..deps import check_homotopy, check_manipulator, get_settings_dep, is_heavy, solve
 from . import solve_responses
 
 router = APIRouter(prefix="/v1", tags=["equilibrium"])
@@ -78,4 +78,5 @@ async def find_equilibria(
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     check_homotopy(req, settings)
-    return await solve(request, equilibria_job, req, settings.solve_timeout, ctx=ctx)
+    return await solve(request, equilibria_job, req, settings.solve_timeout, ctx=ctx,
+                       heavy=is_heavy(settings, req.manipulator, homotopy=req.method == "homotopy"))

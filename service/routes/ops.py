@@ -36,9 +36,10 @@ async def healthz() -> Any:
             "status": "starting", "workers": 2, "queue_size": 64, "in_flight": 0}}}}})
 async def readyz(request: Request) -> Any:
     pool = request.app.state.pool
+    heavy = request.app.state.heavy
     ready = bool(getattr(request.app.state, "ready", False)) and pool.started
     body = {"status": "ready" if ready else "starting", "workers": pool.workers, "queue_size": pool.queue_size,
-            "in_flight": pool.in_flight}
+            "in_flight": pool.in_flight + (heavy.in_flight if heavy is not None else 0)}
     return body if ready else JSONResponse(status_code=503, content=body)
 
 

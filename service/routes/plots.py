@@ -20,7 +20,7 @@ from .. import examples as ex
 from .. import plot_schemas as ps
 from ..compute import build_manipulator, build_segment, deflections
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, solve
+from ..deps import check_manipulator, get_settings_dep, is_heavy, solve
 from ..errors import FieldContext
 from . import SOLVE_ERRORS, error_responses
 
@@ -176,7 +176,9 @@ async def plot_curve(
 ) -> Response:
     ctx = check_manipulator(req.manipulator, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
-    return _reply(await solve(request, plot_curve_job, req, fmt, ctx=ctx), fmt, "curve")
+    return _reply(await solve(request, plot_curve_job, req, fmt, ctx=ctx,
+                              heavy=is_heavy(settings, req.manipulator, branch_all=req.branch == "all")),
+                  fmt, "curve")
 
 
 @router.post(

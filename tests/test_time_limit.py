@@ -1,0 +1,80 @@
+"""Library time limits: ``to.time_limit`` / ``time_limit=`` stop a computation with ``TimeLimitError``,
+never with a result, and IPOPT's own wall-time stop is reported the same way."""
+
+from __future__ import annotations
+
+import re
+import time
+
+import numpy as np
+import pytest
+
+import tensegrity_opt as to
+from tensegrity_opt import design_solvers
+from tensegrity_opt.timelimit import check_time, remaining
+
+ALL = ("a", "b", "k", "L0")
+
+
+def test_time_limit_nests_and_validates():
+    assert remaining() is None
+    with to.time_limit(10):
+        outer = remaining()
+        with to.time_limit(100):                   # the earlier deadline wins
+            assert remaining() <= outer
+        with to.time_limit(0.01):
+            time.sleep(0.02)
+            with pytest.raises(to.TimeLimitError) as err:
+                check_time("this block")
+            assert err.value.code == "timeout" and isinstance(err.value, RuntimeError)
+        check_time()                               # the outer limit again
+    assert remaining() is None
+    for bad in (0, -1, float("nan"), "soon"):
+        with pytest.raises(to.InvalidParameterError) as err, to.time_limit(bad):
+            pass
+        assert err.value.field == "time_limit"
+
+
+def test_design_solve_stops_inside_ipopt_at_the_limit():
+    # unlimited, this solve runs ~3 s of IPOPT iterations (and ends infeasible)
+    m = to.Manipulator.uniform(16)
+    design_solvers.buckling_design_nlp(16, True)   # build first: the build itself is not cut
+    t0 = time.monotonic()
+    with pytest.raises(to.TimeLimitError) as err:
+        to.maximize_critical_force(m, vary=ALL, time_limit=0.2)
+    assert time.monotonic() - t0 < 1.0
+    assert err.value.status == "User_Requested_Stop"          # stopped by the callback inside IPOPT
+    # the same solve without a limit is a verified design (the limit left nothing behind)
+    d = to.maximize_critical_force(to.Manipulator.uniform(4), vary=("k",), bounds={"k": (0.2, 5.0)},
+                                   budget={"k": 4.0}, time_limit=30)
+    assert d.success and d.critical_force == pytest.approx(to.critical_force(d.manipulator).force)
+
+
+def test_ipopt_wall_time_status_is_a_time_limit_error_not_a_result():
+    class Stopped:
+        def __call__(self, **kw):
+            return {"x": np.zeros(3), "lam_g": np.zeros(1), "lam_x": np.zeros(3)}
+
+        def stats(self):
+            return {"success": False, "return_status": "Maximum_WallTime_Exceeded", "iter_count": 7}
+
+    with pytest.raises(to.TimeLimitError) as err:
+        design_solvers._run(Stopped(), None, None, None, None, None, None)
+    assert err.value.status == "Maximum_WallTime_Exceeded"
+
+
+def test_service_maps_time_limit_to_504_with_status():
+    from service.errors import error_body, status_for
+
+    exc = to.TimeLimitError("stopped", status="User_Requested_Stop")
+    assert status_for(exc) == 504
+    body = error_body(exc)
+    assert body["code"] == "timeout" and body["status"] == "User_Requested_Stop"
+
+
+def test_config_docstring_lists_every_setting():
+    from service import config
+
+    documented = set(re.findall(r"``TENSEGRITY_([A-Z_]+)``", config.__doc__))
+    fields = {name.upper() for name in config.Settings.model_fields}
+    assert fields <= documented, f"undocumented settings: {sorted(fields - documented)}"
