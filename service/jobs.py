@@ -533,6 +533,10 @@ def _setting(settings: Any, name: str, fallback: Any) -> Any:
     return fallback if value is None else value
 
 
+#: Seconds between repeats of a sent :class:`PointTimeout` while the point still runs.
+REFIRE_SECONDS = 0.25
+
+
 class PointTimeout(BaseException):
     """Raised asynchronously in a runner thread whose point exceeded ``TENSEGRITY_JOBS_POINT_TIMEOUT``
     (``BaseException``, as :class:`service.pool.SolveCancelled`, so the library's handlers let it through)."""
@@ -550,6 +554,7 @@ class _Slot:
         self.deadline = 0.0
         self.armed = False
         self.fired = False
+        self.fired_at = 0.0               # monotonic time the exception was last sent
         self.abandoned = False            # fired by _abandon, not by the deadline
 
 
@@ -940,9 +945,10 @@ class JobRunner:
         server stops): the thread is free after the CasADi call in progress instead of after the point."""
         with self._watch:
             if slot.armed and not slot.fired:
-                slot.fired = True
+                slot.fired, slot.fired_at = True, time.monotonic()
                 slot.abandoned = True
                 _set_async_exc(slot.thread_id, PointTimeout)
+                self._watch.notify()            # the watchdog repeats it while the point runs
 
     def _watchdog(self) -> None:
         while not self._stopping.is_set():
@@ -950,12 +956,22 @@ class JobRunner:
                 now = time.monotonic()
                 nxt = None
                 for s in self._slots:
-                    if s.armed and not s.fired:
-                        if s.deadline <= now:
-                            s.fired = True
+                    if not s.armed:
+                        continue
+                    if s.fired:
+                        # sent, and the point still runs: an exception that landed in a finaliser
+                        # (a __del__ run by the garbage collector in that thread) was swallowed there
+                        # ("Exception ignored in ..."): send it again until the point ends
+                        if now - s.fired_at >= REFIRE_SECONDS:
+                            s.fired_at = now
                             _set_async_exc(s.thread_id, PointTimeout)
-                        else:
-                            nxt = s.deadline if nxt is None else min(nxt, s.deadline)
+                        nxt = s.fired_at + REFIRE_SECONDS if nxt is None else min(nxt, s.fired_at + REFIRE_SECONDS)
+                    elif s.deadline <= now:
+                        s.fired, s.fired_at = True, now
+                        _set_async_exc(s.thread_id, PointTimeout)
+                        nxt = now + REFIRE_SECONDS if nxt is None else min(nxt, now + REFIRE_SECONDS)
+                    else:
+                        nxt = s.deadline if nxt is None else min(nxt, s.deadline)
                 self._watch.wait(1.0 if nxt is None else max(0.001, nxt - now))
 
     def _heartbeat(self) -> None:
