@@ -428,6 +428,16 @@ def test_api_answers_png_and_svg(client, kind):
     check_svg(r.content)
 
 
+@pytest.mark.parametrize("kind", ["curve", "torque"])
+def test_api_svg_is_byte_identical_between_identical_requests(client, kind):
+    # matplotlib salts clip-path ids with a random UUID unless svg.hashsalt is set (issue 14 item 7)
+    body = {**BODIES[kind], "format": "svg"}
+    first, second = client.post(f"/v1/plots/{kind}", json=body), client.post(f"/v1/plots/{kind}", json=body)
+    assert first.status_code == second.status_code == 200
+    assert b"clip-path" in first.content or b"<use " in first.content
+    assert first.content == second.content
+
+
 def test_api_content_negotiation(client):
     body = BODIES["torque"]
     r = client.post("/v1/plots/torque", json=body, headers={"Accept": "image/svg+xml"})
