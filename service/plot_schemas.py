@@ -26,7 +26,7 @@ MIN_DESIGN_VALUE = 1.0e-6
 MAX_DESIGN_VALUE = 1.0e6
 
 ImageFormat = Literal["png", "svg"]
-Dpi = Annotated[int, Field(ge=30, le=200, description="PNG resolution in dots per inch (30..200)")]
+Dpi = Annotated[s.Int, Field(ge=30, le=200, description="PNG resolution in dots per inch (30..200)")]
 DesignParam = Literal["a", "b", "k", "L0"]
 DesignValue = Annotated[float, Field(ge=MIN_DESIGN_VALUE, le=MAX_DESIGN_VALUE, allow_inf_nan=False)]
 
@@ -45,7 +45,7 @@ class _PlotRequest(BaseModel):
 class MapValuesRange(s.RangeIn):
     start: DesignValue
     stop: DesignValue
-    num: int = Field(ge=2, le=MAX_MAP_AXIS, description=f"number of values (2..{MAX_MAP_AXIS})")
+    num: s.Int = Field(ge=2, le=MAX_MAP_AXIS, description=f"number of values (2..{MAX_MAP_AXIS})")
 
 
 DesignValues = Annotated[
@@ -92,7 +92,7 @@ class PlotLandscapeRequest(_PlotRequest):
     manipulator: s.ManipulatorIn
     dx: s.Deflection = Field(description="tip deflection along x (length units)")
     dy: s.Deflection = Field(0.0, description="tip deflection along y (length units)")
-    pair: list[Annotated[int, Field(ge=0, le=3)]] = Field(
+    pair: list[Annotated[s.Int, Field(ge=0, le=3)]] = Field(
         [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
     grid: int = Field(101, ge=2, le=s.MAX_GRID, description=f"points per axis (2..{s.MAX_GRID})")
     span: Annotated[float, Field(gt=0, le=s.MAX_ANGLE, allow_inf_nan=False)] | None = Field(

@@ -192,7 +192,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         return 2
     # One process: the solver pool inside it supplies the parallelism (see service/pool.py).
     uvicorn.run(create_app(settings), host=args.host, port=args.port, log_level=args.log_level,
-                access_log=not args.no_access_log, workers=1)
+                access_log=not args.no_access_log, workers=1,
+                timeout_graceful_shutdown=settings.shutdown_timeout)
     return 0
 
 
