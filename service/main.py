@@ -57,7 +57,8 @@ Every refusal has the body `{"code", "message", "field", ...}`: 422 for schema v
 (`validation_error`, with the field path) and domain errors (`unreachable_target`,
 `straight_not_equilibrium`, `straight_unstable`, `too_many_segments`, `solver_failed` /
 `no_equilibrium` with the solver `status`, ...), 401 without a valid `X-API-Key` when the server has
-keys, 413 for an oversized body, 503 (`Retry-After`) when the solver pool is saturated, 504 when a
+keys, 413 for an oversized body, 422 `response_too_large` for an answer over the server's response size
+limit (`field` names what to ask less of), 503 (`Retry-After`) when the solver pool is saturated, 504 when a
 solve exceeds the time limit. The server's limits are at `GET /version`.
 """
 
@@ -173,6 +174,12 @@ def openapi_document() -> dict[str, Any]:
     defaults, with API keys configured so that the routes declare the ``X-API-Key`` scheme."""
     app = create_app(Settings.model_construct(api_keys=["(declared in the document)"]))
     doc = FastAPI.openapi(app)
+    # A submitted job's id leads to its status, results and cancellation (OpenAPI links: clients
+    # and stateful testing follow them).
+    created = doc["paths"]["/v1/jobs"]["post"]["responses"]["202"]
+    created["links"] = {op: {"operationId": op, "parameters": {"job_id": "$response.body#/id"},
+                             "description": f"{op.replace('_', ' ')} of the job just submitted"}
+                        for op in ("get_job", "get_job_results", "cancel_job")}
     # The key is required only by servers that have keys: ``{}`` (no requirement) is the alternative.
     for item in doc["paths"].values():
         for op in item.values():

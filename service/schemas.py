@@ -50,6 +50,9 @@ def integral(v: Any) -> Any:
 
 
 #: The request schema's integer: strict (no strings, no booleans) but integral floats accepted.
+#: As a field's type with ``= Field(ge=..)``; inside ``Annotated`` put the ``Field`` *before* the
+#: validator (``Annotated[int, Field(ge=0), BeforeValidator(integral)]``): after it, pydantic writes
+#: ``ge``/``le`` into the JSON schema instead of ``minimum``/``maximum``.
 Int = Annotated[int, BeforeValidator(integral)]
 
 Length = Annotated[float, Field(ge=MIN_LENGTH, le=MAX_LENGTH, allow_inf_nan=False)]
@@ -308,7 +311,7 @@ class EnergyLandscapeRequest(BaseModel):
     manipulator: ManipulatorIn
     dx: Deflection = Field(description="tip deflection along x (length units)")
     dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
-    pair: list[Annotated[Int, Field(ge=0, le=3)]] = Field(
+    pair: list[Annotated[int, Field(ge=0, le=3), BeforeValidator(integral)]] = Field(
         [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
     grid: Int = Field(51, ge=2, le=MAX_GRID, description=f"points per axis (2..{MAX_GRID})")
     span: Annotated[float, Field(gt=0, le=MAX_ANGLE, allow_inf_nan=False)] | None = Field(

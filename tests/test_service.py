@@ -624,6 +624,11 @@ def test_schema_caps_are_the_default_limits():
     assert doc["SegmentedManipulatorIn"]["properties"]["segments"]["maxItems"] == 200
     assert doc["BatchEquilibriumRequest"]["properties"]["targets"]["maxItems"] == 1000
     assert doc["DesignUniformManipulatorIn"]["properties"]["n"]["maximum"] == s.MAX_DESIGN_SEGMENTS
+    # integers inside Annotated keep real JSON Schema bounds (not pydantic's "ge"/"le" keywords)
+    assert doc["PlotTorqueRequest"]["properties"]["dpi"]["minimum"] == 30
+    assert doc["EnergyLandscapeRequest"]["properties"]["pair"]["items"]["maximum"] == 3
+    text = json.dumps(doc)
+    assert '"ge":' not in text and '"le":' not in text
     with pytest.raises(ValueError):
         Settings(max_segments=201)
 
