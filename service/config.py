@@ -8,7 +8,7 @@ variable                               default    meaning
 ``TENSEGRITY_MAX_SEGMENTS``            200        largest chain accepted (``too_many_segments`` above)
 ``TENSEGRITY_MAX_BATCH``               1000       most targets in one ``/v1/batch/equilibrium``
 ``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may run (504; its computation is stopped)
-``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (0: refused)
+``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (``too_many_segments`` on ``method``)
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
@@ -28,7 +28,9 @@ variable                               default    meaning
 ``TENSEGRITY_API_KEYS``                (empty)    comma-separated or JSON list; empty: auth off
 ``TENSEGRITY_CORS_ORIGINS``            (empty)    comma-separated or JSON list; empty: CORS off
 ``TENSEGRITY_MAX_BODY_BYTES``          1048576    request bodies above this get 413
+``TENSEGRITY_MAX_RESPONSE_BYTES``      8388608    JSON answers above this: 422 ``response_too_large``
 ``TENSEGRITY_WARMUP``                  true       build each thread's solvers (n = 4) at start-up
+``TENSEGRITY_SHUTDOWN_TIMEOUT``        1          seconds requests in flight get at SIGTERM, then cancelled
 ``TENSEGRITY_JOBS_DB``                 (file)     SQLite job store, ``tensegrity_jobs.sqlite3`` in the working dir
 ``TENSEGRITY_JOBS_SCHEDULER``          (unset)    jobs: unset/``serial`` runner thread; ``local``/``tcp://..`` Dask
 ``TENSEGRITY_JOBS_MAX_POINTS``         100000     most points in one job (422 above)
@@ -60,10 +62,12 @@ from typing import Annotated, Any, Literal
 from pydantic import Field, field_validator
 from pydantic_settings import BaseSettings, NoDecode, SettingsConfigDict
 
-#: Hard caps baked into the request schema (the OpenAPI document does not depend on the
-#: settings); the configurable limits below can only be tighter.
-HARD_MAX_SEGMENTS = 1000
-HARD_MAX_BATCH = 10000
+#: Caps baked into the request schema (the OpenAPI document does not depend on the settings).
+#: They are the defaults of the settings below, so the committed document says exactly what a
+#: server at its default settings accepts; the settings can only be tighter (then the domain codes
+#: ``too_many_segments`` / ``batch_too_large`` answer what the document allows and the server not).
+HARD_MAX_SEGMENTS = 200
+HARD_MAX_BATCH = 1000
 
 
 def _split(value: Any) -> Any:
@@ -82,8 +86,8 @@ class Settings(BaseSettings):
 
     model_config = SettingsConfigDict(env_prefix="TENSEGRITY_", extra="ignore", frozen=True)
 
-    max_segments: int = Field(200, ge=1, le=HARD_MAX_SEGMENTS, description="largest chain accepted")
-    max_batch: int = Field(1000, ge=1, le=HARD_MAX_BATCH, description="most targets in one batch")
+    max_segments: int = Field(HARD_MAX_SEGMENTS, ge=1, le=HARD_MAX_SEGMENTS, description="largest chain accepted")
+    max_batch: int = Field(HARD_MAX_BATCH, ge=1, le=HARD_MAX_BATCH, description="most targets in one batch")
     solve_timeout: float = Field(10.0, gt=0, description="seconds one request may wait for its result")
     homotopy_max_segments: int = Field(
         4, ge=0, le=6,
@@ -127,7 +131,15 @@ class Settings(BaseSettings):
     api_keys: Annotated[list[str], NoDecode] = Field(default_factory=list, description="accepted X-API-Key values")
     cors_origins: Annotated[list[str], NoDecode] = Field(default_factory=list, description="allowed CORS origins")
     max_body_bytes: int = Field(1024 * 1024, ge=1, description="largest request body (413 above)")
+    max_response_bytes: int = Field(
+        8 * 1024 * 1024, ge=1024,
+        description="largest JSON answer (422 response_too_large above: estimated before solving where the "
+                    "request says enough, else counted while rendering in the solver thread)")
     warmup: bool = Field(True, description="build each worker's solvers at start-up")
+    shutdown_timeout: float = Field(
+        1.0, ge=0, le=600,
+        description="seconds requests in flight get to finish at SIGTERM/SIGINT before they are cancelled "
+                    "(uvicorn's timeout_graceful_shutdown; tensegrity-opt serve)")
     jobs_db: str = Field("tensegrity_jobs.sqlite3", min_length=1, description="SQLite file of the job store")
     jobs_scheduler: str | None = Field(None, description="None/serial: in-process thread; local; tcp://host:port")
     jobs_max_points: int = Field(100_000, ge=1, le=1_000_000, description="most points in one job")

@@ -17,9 +17,10 @@ from .config import Settings
 from .errors import FieldContext, ServiceError
 from .lane import LaneUnavailable, SolverLane
 from .pool import SolveTimeout
+from .responses import ResponseTooLarge, render_json_bounded
 
-__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch", "solve",
-           "solve_heavy", "is_heavy"]
+__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch",
+           "check_curve_size", "solve", "solve_heavy", "is_heavy"]
 
 api_key_header = APIKeyHeader(
     name="X-API-Key", auto_error=False, scheme_name="ApiKey",
@@ -70,6 +71,21 @@ def check_homotopy(req: s.EquilibriaRequest, settings: Settings) -> None:
                            field="method", details={"n": n, "homotopy_max_segments": settings.homotopy_max_segments})
 
 
+#: Rough bytes of one curve row: ~20 per joint angle plus the other fields.
+CURVE_ROW_BYTES_PER_JOINT = 20
+CURVE_ROW_BYTES = 300
+
+
+def check_curve_size(n: int, points: int, branch: str, settings: Settings) -> None:
+    """Refuse before solving a curve whose answer is sure to exceed ``max_response_bytes`` (422
+    ``response_too_large`` on ``dx``): ``points`` rows of ``n`` angles, twice for ``branch = "all"``
+    (the stable rows and at least one branch). The rendered body is counted too (the number of
+    branches is known only after solving)."""
+    estimate = points * (n * CURVE_ROW_BYTES_PER_JOINT + CURVE_ROW_BYTES) * (2 if branch == "all" else 1)
+    if estimate > settings.max_response_bytes:
+        raise ResponseTooLarge(settings.max_response_bytes, "dx", estimate)
+
+
 def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
     if len(req.targets) > settings.max_batch:
         raise ServiceError(422, "batch_too_large",
@@ -78,16 +94,28 @@ def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
                            details={"targets": len(req.targets), "max_batch": settings.max_batch})
 
 
+def _rendered(fn: Callable[..., Any], args: tuple[Any, ...], limit: int, field: str | None) -> Any:
+    """``fn(*args)``; a JSON result is rendered here, in the solver thread, within ``limit`` bytes
+    (:class:`ResponseTooLarge` naming ``field`` otherwise). Bytes (figures) are returned as they are."""
+    result = fn(*args)
+    if isinstance(result, (bytes, Response)):
+        return result
+    return Response(render_json_bounded(result, limit, field), media_type="application/json")
+
+
 async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext,
                 timeout: float | None = None,
                 inline: tuple[Callable[..., bytes | None], tuple[Any, ...]] | None = None,
-                heavy: bool = False) -> Any:
+                heavy: bool = False, size_field: str | None = None) -> Any:
     """Run ``fn(*args)`` in the solver pool under the time limit; errors map through ``service.errors``.
 
     ``inline = (g, g_args)``, when given, runs first: ``g(*g_args, max_segments=...)`` is a bounded
     fast path (``compute.equilibrium_inline``) that returns the rendered JSON body, or ``None`` to
     hand the request to the pool. ``heavy`` marks a long request class (:func:`is_heavy`): such calls
-    hold at most ``heavy_threads`` solver threads at once. The inline path runs in a solver process (:mod:`service.lane`) when one is
+    hold at most ``heavy_threads`` solver threads at once. A JSON result of the pool is rendered in the
+    solver thread (the event loop only sends the bytes; FastAPI's response-model pass is skipped),
+    bounded by ``max_response_bytes``: over it, 422 ``response_too_large`` naming ``size_field``.
+    The inline fast path runs in a solver process (:mod:`service.lane`) when one is
     ready, so the event loop goes on with HTTP meanwhile; otherwise (no process configured,
     starting, restarting, saturated, or the call raised there) on the event loop itself, which also
     raises any error again in-process. A thread hand-off costs ~0.1-0.2 ms here, as much as a whole
@@ -110,7 +138,8 @@ async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: Field
             raise SolveTimeout(timeout) from None
         if body is not None:
             return Response(body, media_type="application/json")
-    return await request.app.state.pool.run(fn, *args, timeout=timeout, heavy=heavy)
+    return await request.app.state.pool.run(_rendered, fn, args, settings.max_response_bytes, size_field,
+                                            timeout=timeout, heavy=heavy)
 
 
 def is_heavy(settings: Settings, m: Any, *, branch_all: bool = False, homotopy: bool = False) -> bool:

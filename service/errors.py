@@ -16,6 +16,8 @@ numerical failure outside the library's own checks     500     ``numerical_failu
                                                                the traceback; the library validates its
                                                                inputs first, so none is known)
 chain or batch over the configured limit               422     ``too_many_segments`` / ``batch_too_large``
+answer over ``max_response_bytes`` (estimated before   422     ``response_too_large`` (``field``: the input
+solving where possible, else counted while rendering)          setting the size, ``details.max_response_bytes``)
 missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
 request body over ``max_body_bytes``                   413     ``body_too_large``
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
@@ -47,7 +49,9 @@ from starlette.responses import JSONResponse
 from tensegrity_opt.errors import HomotopyUnavailableError, SolverError, TensegrityError, TimeLimitError
 
 from .jobs import JobsUnavailable
+from .middleware import allowed_methods
 from .pool import PoolSaturated, SolveTimeout
+from .responses import ResponseTooLarge
 
 log = logging.getLogger("service.errors")
 
@@ -162,6 +166,13 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
             out["field"] = exc.field
         if exc.details:
             out["details"] = exc.details
+        return out
+    if isinstance(exc, ResponseTooLarge):
+        out = {"code": "response_too_large", "message": str(exc),
+               "details": {"max_response_bytes": exc.limit,
+                           **({"estimated_bytes": exc.estimate} if exc.estimate is not None else {})}}
+        if exc.field:
+            out["field"] = exc.field
         return out
     if isinstance(exc, SolveTimeout):
         return {"code": "timeout", "message": str(exc)}
@@ -297,8 +308,12 @@ def install(app: FastAPI) -> None:
                                                     "type": "body_parse_error"}]})
         codes = {404: "not_found", 405: "method_not_allowed", 401: "unauthorized", 413: "body_too_large"}
         code = codes.get(exc.status_code, "http_error")
-        return error_response(exc.status_code, {"code": code, "message": str(exc.detail)},
-                              dict(exc.headers) if exc.headers else None)
+        headers = dict(exc.headers) if exc.headers else None
+        if exc.status_code == 405:
+            # Every method of the path, not just those of the first route routing found.
+            allow = allowed_methods(request.app.router.routes, request.scope)
+            headers = {**(headers or {}), "Allow": ", ".join(allow)}
+        return error_response(exc.status_code, {"code": code, "message": str(exc.detail)}, headers)
 
     async def _other(request: Request, exc: Exception) -> JSONResponse:
         log.error("unexpected error on %s %s", request.method, request.url.path, exc_info=exc)

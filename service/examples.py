@@ -128,9 +128,15 @@ ERRORS: dict[int, dict[str, dict[str, Any]]] = {
             "message": "the straight configuration is not stable unloaded: segment 0 has joint stiffness "
                        "K = k (b L0 - 2 (b^2 - a^2)) = -1 <= 0 (condition (4) fails); raise L0 above 1.5",
             "field": "manipulator.L0"}},
-        "too_many_segments": {"summary": "chain longer than the server accepts", "value": {
-            "code": "too_many_segments", "message": "the chain has 500 segments; this server accepts at most 200",
-            "field": "manipulator.n", "details": {"n": 500, "max_segments": 200}}},
+        "too_many_segments": {"summary": "chain longer than this server accepts (its setting under the schema's "
+                                         "200)", "value": {
+            "code": "too_many_segments", "message": "the chain has 150 segments; this server accepts at most 100",
+            "field": "manipulator.n", "details": {"n": 150, "max_segments": 100}}},
+        "response_too_large": {"summary": "answer over the server's response size limit", "value": {
+            "code": "response_too_large",
+            "message": "the answer exceeds this server's response size limit of 8388608 bytes "
+                       "(TENSEGRITY_MAX_RESPONSE_BYTES): ask for less (dx)",
+            "field": "dx", "details": {"max_response_bytes": 8388608}}},
         "solver_failed": {"summary": "no solve converged (IPOPT status)", "value": {
             "code": "solver_failed", "message": "no local solve converged inside the physical range for dx=7.9, dy=0",
             "status": "Infeasible_Problem_Detected x8, Maximum_Iterations_Exceeded x6"}},

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Field, PrivateAttr, model_validator
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, PrivateAttr, model_validator
 
 from .config import HARD_MAX_SEGMENTS
-from .schemas import Deflection, ForceValue, Length, Stiff
+from .schemas import Deflection, ForceValue, Length, Stiff, integral
 
 __all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "JobCreated", "JobSummary", "JobOut", "JobResults",
            "JobStatus", "SPEC_EXAMPLES", "JOB_EXAMPLE", "RESULTS_EXAMPLE", "CSV_EXAMPLE"]
@@ -29,7 +29,7 @@ _STRICT = ConfigDict(strict=True, extra="forbid")
 Analysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design"]
 JobStatus = Literal["queued", "running", "done", "failed", "cancelled", "interrupted"]
 DesignVariable = Literal["a", "b", "k", "L0"]
-Segments = Annotated[int, Field(ge=1, le=HARD_MAX_SEGMENTS)]
+Segments = Annotated[int, Field(ge=1, le=HARD_MAX_SEGMENTS), BeforeValidator(integral)]
 Load = Annotated[list[ForceValue], Field(min_length=2, max_length=2, description="tip force [fx, fy]")]
 
 

@@ -102,6 +102,7 @@ class SolverLane:
         self.env = env
         self._proc: subprocess.Popen[bytes] | None = None
         self._protocol: _Protocol | None = None
+        self._sock: socket.socket | None = None     # the loop's end of the socket pair (close: shutdown)
         self._pending: dict[int, asyncio.Future[Any]] = {}
         self._next_id = 0
         self._ready: asyncio.Future[None] | None = None
@@ -140,6 +141,7 @@ class SolverLane:
         self._pending[-1] = self._ready
         _, proto = await loop.create_unix_connection(lambda: _Protocol(self), sock=parent)
         self._protocol = proto
+        self._sock = parent
 
     async def wait_ready(self, timeout: float) -> bool:
         """Wait up to ``timeout`` seconds for the child's warm-up; ``True`` when it is ready."""
@@ -156,13 +158,23 @@ class SolverLane:
         self._closing = True
         proto, self._protocol = self._protocol, None
         if proto is not None and proto.transport is not None:
+            # The transport closes its socket only at the loop's next iteration, and the wait below
+            # blocks the loop: without the shutdown the child saw no end of file and was killed after
+            # the whole wait (2 s of every SIGTERM).
+            sock = self._sock
+            if sock is not None:
+                try:
+                    sock.shutdown(socket.SHUT_RDWR)    # on the socket, whoever holds a descriptor of it
+                except OSError:
+                    pass
             proto.transport.close()
+        self._sock = None
         self._fail_pending()
         proc, self._proc = self._proc, None
         if proc is not None:
             try:
-                proc.wait(2.0)
-            except subprocess.TimeoutExpired:
+                proc.wait(0.5)
+            except subprocess.TimeoutExpired:       # busy with a call: it is only a cache of solvers
                 proc.kill()
                 proc.wait(2.0)
 

@@ -27,7 +27,7 @@ from .deps import require_api_key
 from .heavy import ProcessLane
 from .lane import SolverLane
 from .metrics import Metrics, MetricsMiddleware
-from .middleware import BodyLimitMiddleware
+from .middleware import BodyLimitMiddleware, MethodsMiddleware
 from .pool import SolverPool
 from .responses import SafeJSONResponse
 from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, plots, segment, stiffness, web
@@ -36,6 +36,10 @@ from .routes import jobs as jobs_routes
 #: Routers behind the API key (when keys are configured) and the open ones (health, version, page).
 API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, plots, jobs_routes)
 OPEN_ROUTERS = (ops, web)
+#: Seconds the job runner and the solver threads each get to stop at shutdown.
+SHUTDOWN_JOIN = 0.5
+#: Methods a browser page may use across origins (DELETE: cancel or remove a job).
+CORS_METHODS = ["GET", "HEAD", "POST", "DELETE"]
 
 log = logging.getLogger("service")
 
@@ -54,7 +58,8 @@ Every refusal has the body `{"code", "message", "field", ...}`: 422 for schema v
 (`validation_error`, with the field path) and domain errors (`unreachable_target`,
 `straight_not_equilibrium`, `straight_unstable`, `too_many_segments`, `solver_failed` /
 `no_equilibrium` with the solver `status`, ...), 401 without a valid `X-API-Key` when the server has
-keys, 413 for an oversized body, 503 (`Retry-After`) when the solver pool is saturated, 504 when a
+keys, 413 for an oversized body, 422 `response_too_large` for an answer over the server's response size
+limit (`field` names what to ask less of), 503 (`Retry-After`) when the solver pool is saturated, 504 when a
 solve exceeds the time limit. The server's limits are at `GET /version`.
 """
 
@@ -120,17 +125,24 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         try:
             yield
         finally:
+            # Prompt (SIGTERM: well under 2 s): uvicorn first gives requests in flight
+            # ``shutdown_timeout`` seconds, then cancels them (which interrupts their solves); the
+            # job runner gets a second to finish its point (else the job stays ``running`` and is
+            # resumed, that point again, by the next server); solver threads are daemons.
             app.state.ready = False
-            await asyncio.to_thread(runner.stop)
+            await asyncio.to_thread(runner.stop, SHUTDOWN_JOIN)
             for lane in lanes:
                 lane.close()
             if heavy is not None:
                 heavy.close()
-            pool.shutdown(wait=True, timeout=5.0)
+            pool.shutdown(wait=True, timeout=SHUTDOWN_JOIN)
 
     app = FastAPI(
         title="tensegrity-opt service", version=tensegrity_opt.__version__, description=DESCRIPTION,
         openapi_tags=TAGS, docs_url=None, redoc_url=None, lifespan=lifespan,
+        # No trailing-slash redirect: it built an absolute Location from the request's Host header
+        # (an open redirect through a forged Host); "/healthz/" is a plain 404 instead.
+        redirect_slashes=False,
         default_response_class=SafeJSONResponse,
         license_info={"name": "MIT"},
     )
@@ -155,10 +167,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # declared, X-API-Key included, whether or not this server has keys configured.
     app.openapi = openapi_document  # type: ignore[method-assign]
 
-    # Order (outermost first): metrics, CORS, body size limit, the app.
+    # Order (outermost first): metrics, CORS, body size limit, HEAD/OPTIONS, the app.
+    app.add_middleware(MethodsMiddleware, routes=lambda: app.router.routes)
     app.add_middleware(BodyLimitMiddleware, max_bytes=settings.max_body_bytes)
     if settings.cors_origins:
-        app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=["GET", "POST"],
+        app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=CORS_METHODS,
                            allow_headers=["Content-Type", "X-API-Key"], expose_headers=["Retry-After"])
     app.add_middleware(MetricsMiddleware, metrics=metrics)
     return app
@@ -169,7 +182,19 @@ def openapi_document() -> dict[str, Any]:
     """The OpenAPI document (built once per process); it does not depend on the environment: the
     defaults, with API keys configured so that the routes declare the ``X-API-Key`` scheme."""
     app = create_app(Settings.model_construct(api_keys=["(declared in the document)"]))
-    return FastAPI.openapi(app)
+    doc = FastAPI.openapi(app)
+    # A submitted job's id leads to its status, results and cancellation (OpenAPI links: clients
+    # and stateful testing follow them).
+    created = doc["paths"]["/v1/jobs"]["post"]["responses"]["202"]
+    created["links"] = {op: {"operationId": op, "parameters": {"job_id": "$response.body#/id"},
+                             "description": f"{op.replace('_', ' ')} of the job just submitted"}
+                        for op in ("get_job", "get_job_results", "cancel_job")}
+    # The key is required only by servers that have keys: ``{}`` (no requirement) is the alternative.
+    for item in doc["paths"].values():
+        for op in item.values():
+            if op.get("security") == [{"ApiKey": []}]:
+                op["security"] = [{"ApiKey": []}, {}]
+    return doc
 
 
 def openapi_json() -> str:

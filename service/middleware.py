@@ -1,12 +1,80 @@
-"""Pure ASGI middleware: the request body size limit (413)."""
+"""Pure ASGI middleware: the request body size limit (413); HEAD and OPTIONS on every path."""
 
 from __future__ import annotations
 
 import json
+from collections.abc import Iterable, Iterator
+from typing import Any
 
+from starlette._utils import get_route_path
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-__all__ = ["BodyLimitMiddleware"]
+__all__ = ["BodyLimitMiddleware", "MethodsMiddleware", "allowed_methods"]
+
+
+def _flat(routes: Iterable[Any]) -> Iterator[Any]:
+    """The routes, with those of included routers (FastAPI's ``effective_candidates``) in place."""
+    for route in routes:
+        nested = getattr(route, "effective_candidates", None)
+        if callable(nested):
+            yield from _flat(nested())
+        else:
+            yield route
+
+
+def allowed_methods(routes: Iterable[Any], scope: Scope) -> list[str]:
+    """Every method some route answers at ``scope``'s path (HEAD with GET, OPTIONS with any), sorted;
+    empty when no route has this path. Routing itself only knows the first route of a path, so a
+    405 used to list one method (``OPTIONS /v1/jobs`` -> ``Allow: POST``)."""
+    methods: set[str] = set()
+    path = get_route_path(scope)
+    for route in _flat(routes):
+        own = getattr(route, "methods", None)
+        regex = getattr(route, "path_regex", None)
+        if own and regex is not None and regex.match(path):
+            methods |= set(own)
+    if "GET" in methods:
+        methods.add("HEAD")
+    if methods:
+        methods.add("OPTIONS")
+    return sorted(methods)
+
+
+class MethodsMiddleware:
+    """``HEAD`` answers what ``GET`` would, without the body; ``OPTIONS`` answers 204 with ``Allow``.
+
+    ``routes()`` gives the application's routes (read when needed: the app may add routes after
+    this middleware is built). Nothing is computed for other methods (the common path costs a
+    string comparison); a CORS preflight is answered by the CORS middleware outside this one.
+    """
+
+    def __init__(self, app: ASGIApp, routes: Any) -> None:
+        self.app = app
+        self.routes = routes
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        method = scope["method"]
+        if method == "HEAD":
+            async def send_head(message: Message) -> None:
+                if message["type"] == "http.response.body":
+                    if message.get("more_body", False):
+                        return
+                    message = {"type": "http.response.body", "body": b"", "more_body": False}
+                await send(message)
+
+            await self.app({**scope, "method": "GET"}, receive, send_head)
+            return
+        if method == "OPTIONS":
+            allow = allowed_methods(self.routes(), scope)
+            if allow:
+                await send({"type": "http.response.start", "status": 204,
+                            "headers": [(b"allow", ", ".join(allow).encode())]})
+                await send({"type": "http.response.body", "body": b""})
+                return
+        await self.app(scope, receive, send)
 
 
 class BodyLimitMiddleware:

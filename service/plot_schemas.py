@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 from . import schemas as s
 
@@ -26,7 +26,8 @@ MIN_DESIGN_VALUE = 1.0e-6
 MAX_DESIGN_VALUE = 1.0e6
 
 ImageFormat = Literal["png", "svg"]
-Dpi = Annotated[int, Field(ge=30, le=200, description="PNG resolution in dots per inch (30..200)")]
+Dpi = Annotated[int, Field(ge=30, le=200, description="PNG resolution in dots per inch (30..200)"),
+              BeforeValidator(s.integral)]
 DesignParam = Literal["a", "b", "k", "L0"]
 DesignValue = Annotated[float, Field(ge=MIN_DESIGN_VALUE, le=MAX_DESIGN_VALUE, allow_inf_nan=False)]
 
@@ -45,7 +46,7 @@ class _PlotRequest(BaseModel):
 class MapValuesRange(s.RangeIn):
     start: DesignValue
     stop: DesignValue
-    num: int = Field(ge=2, le=MAX_MAP_AXIS, description=f"number of values (2..{MAX_MAP_AXIS})")
+    num: s.Int = Field(ge=2, le=MAX_MAP_AXIS, description=f"number of values (2..{MAX_MAP_AXIS})")
 
 
 DesignValues = Annotated[
@@ -92,9 +93,9 @@ class PlotLandscapeRequest(_PlotRequest):
     manipulator: s.ManipulatorIn
     dx: s.Deflection = Field(description="tip deflection along x (length units)")
     dy: s.Deflection = Field(0.0, description="tip deflection along y (length units)")
-    pair: list[Annotated[int, Field(ge=0, le=3)]] = Field(
+    pair: list[Annotated[int, Field(ge=0, le=3), BeforeValidator(s.integral)]] = Field(
         [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
-    grid: int = Field(101, ge=2, le=s.MAX_GRID, description=f"points per axis (2..{s.MAX_GRID})")
+    grid: s.Int = Field(101, ge=2, le=s.MAX_GRID, description=f"points per axis (2..{s.MAX_GRID})")
     span: Annotated[float, Field(gt=0, le=s.MAX_ANGLE, allow_inf_nan=False)] | None = Field(
         None, description="half-width of both axes (rad); default: the reachable region of the landscape")
 
@@ -108,7 +109,7 @@ class PlotShapesRequest(_PlotRequest):
     manipulator: s.ManipulatorIn
     dx: s.Deflection = Field(description="tip deflection along x (length units)")
     dy: s.Deflection = Field(0.0, description="tip deflection along y (length units)")
-    max_panels: int = Field(MAX_PANELS, ge=1, le=MAX_PANELS,
+    max_panels: s.Int = Field(MAX_PANELS, ge=1, le=MAX_PANELS,
                             description=f"draw at most this many equilibria, the lowest energies (1..{MAX_PANELS})")
 
 
@@ -117,7 +118,7 @@ class PlotAngleRange(s.RangeIn):
 
     start: s.Angle
     stop: s.Angle
-    num: int = Field(ge=2, le=MAX_TORQUE_CURVE_POINTS, description=f"number of points (2..{MAX_TORQUE_CURVE_POINTS})")
+    num: s.Int = Field(ge=2, le=MAX_TORQUE_CURVE_POINTS, description=f"number of points (2..{MAX_TORQUE_CURVE_POINTS})")
 
 
 class PlotTorqueRequest(_PlotRequest):
@@ -131,7 +132,7 @@ class PlotTorqueRequest(_PlotRequest):
                                         description=f"the segments compared (1..{MAX_TORQUE_SEGMENTS})")
     q: PlotAngleRange | None = Field(
         None, description="angles {start, stop, num} (rad) for every curve; default: each segment's physical range")
-    num: int = Field(401, ge=2, le=MAX_TORQUE_CURVE_POINTS,
+    num: s.Int = Field(401, ge=2, le=MAX_TORQUE_CURVE_POINTS,
                      description="points per curve over each segment's physical range (when q is absent)")
 
 

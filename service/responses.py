@@ -1,4 +1,11 @@
-"""JSON bodies: the one renderer of every JSON answer, and the response class that uses it."""
+"""JSON bodies: the one renderer of every JSON answer, and the response class that uses it.
+
+Solver results are rendered in the solver thread by :func:`render_json_bounded` (never on the
+event loop): piece by piece, so the GIL changes hands between pieces and the loop keeps
+answering (one ``json.dumps`` of a 40 MB body held it ~0.5 s), and counted as it goes, so a
+body over the server's ``max_response_bytes`` is refused (:class:`ResponseTooLarge`) as soon as
+the limit is crossed instead of after the whole body is built.
+"""
 
 from __future__ import annotations
 
@@ -6,9 +13,31 @@ import json
 import math
 from typing import Any
 
+import numpy as np
 from starlette.responses import JSONResponse
 
-__all__ = ["render_json", "json_safe", "SafeJSONResponse"]
+__all__ = ["render_json", "render_json_bounded", "json_safe", "SafeJSONResponse", "ResponseTooLarge"]
+
+
+class ResponseTooLarge(ValueError):
+    """The answer would exceed the server's response size limit (``max_response_bytes``)."""
+
+    def __init__(self, limit: int, field: str | None = None, estimate: int | None = None) -> None:
+        what = f"would be about {estimate} bytes, over" if estimate is not None else "exceeds"
+        super().__init__(f"the answer {what} this server's response size limit of {limit} bytes "
+                         "(TENSEGRITY_MAX_RESPONSE_BYTES)" + (f": ask for less ({field})" if field else ""))
+        self.limit = limit
+        self.field = field
+        self.estimate = estimate
+
+
+def _default(x: Any) -> Any:
+    """numpy scalars and arrays as the JSON numbers and lists they are."""
+    if isinstance(x, np.generic):
+        return x.item()
+    if isinstance(x, np.ndarray):
+        return x.tolist()
+    raise TypeError(f"{type(x).__name__} is not JSON serializable")
 
 
 def json_safe(x: Any) -> Any:
@@ -22,13 +51,69 @@ def json_safe(x: Any) -> Any:
     return x
 
 
+_ENCODER = json.JSONEncoder(ensure_ascii=False, allow_nan=False, separators=(",", ":"), default=_default)
+
+
 def render_json(content: Any) -> bytes:
     """Compact UTF-8 JSON that is always valid: a NaN or infinity that slipped through becomes ``null``."""
     try:
-        return json.dumps(content, ensure_ascii=False, allow_nan=False, separators=(",", ":")).encode("utf-8")
+        return _ENCODER.encode(content).encode("utf-8")
     except ValueError:
-        return json.dumps(json_safe(content), ensure_ascii=False, allow_nan=False,
-                          separators=(",", ":")).encode("utf-8")
+        return _ENCODER.encode(json_safe(content)).encode("utf-8")
+
+
+#: Containers longer than this (lists) are rendered item by item, down to ``_SPLIT_DEPTH`` levels.
+_SPLIT_LEN = 32
+_SPLIT_DEPTH = 3
+
+
+def _big(x: Any) -> bool:
+    if isinstance(x, list):
+        return len(x) > _SPLIT_LEN
+    if isinstance(x, dict):
+        return any(isinstance(v, (list, dict)) and _big(v) for v in x.values())
+    return False
+
+
+def _pieces(x: Any, depth: int, out: list[bytes], budget: list[int], limit: int, field: str | None) -> None:
+    if depth < _SPLIT_DEPTH and _big(x):
+        if isinstance(x, list):
+            out.append(b"[")
+            for i, v in enumerate(x):
+                if i:
+                    out.append(b",")
+                _pieces(v, depth + 1, out, budget, limit, field)
+            out.append(b"]")
+        else:
+            out.append(b"{")
+            for i, (k, v) in enumerate(x.items()):
+                out.append((b"," if i else b"") + render_json(str(k)) + b":")
+                _pieces(v, depth + 1, out, budget, limit, field)
+            out.append(b"}")
+        return
+    piece = render_json(x)
+    budget[0] += len(piece)
+    if budget[0] > limit:
+        raise ResponseTooLarge(limit, field)
+    out.append(piece)
+
+
+def render_json_bounded(content: Any, limit: int, field: str | None = None) -> bytes:
+    """:func:`render_json` of ``content`` (the same bytes), rendered piece by piece; raises
+    :class:`ResponseTooLarge` (naming ``field``, the input that sets the size) once the body
+    would exceed ``limit`` bytes."""
+    if not _big(content):
+        body = render_json(content)
+        if len(body) > limit:
+            raise ResponseTooLarge(limit, field)
+        return body
+    out: list[bytes] = []
+    budget = [0]
+    _pieces(content, 0, out, budget, limit, field)
+    body = b"".join(out)
+    if len(body) > limit:
+        raise ResponseTooLarge(limit, field)
+    return body
 
 
 class SafeJSONResponse(JSONResponse):

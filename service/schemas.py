@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 from .config import HARD_MAX_BATCH, HARD_MAX_SEGMENTS
 
@@ -38,6 +38,22 @@ MAX_GRID = 201
 MAX_TORQUE_POINTS = 10001
 
 _STRICT = ConfigDict(strict=True, extra="forbid")
+
+
+def integral(v: Any) -> Any:
+    """A float with an integral value (``4.0``, ``5e2``) as the ``int`` it is: JSON Schema's ``integer``
+    is any number with a zero fractional part, so ``"n": 4.0`` is valid by the document. Anything
+    else goes on unchanged to the strict ``int`` check (``4.5``, ``"4"``, ``true`` are refused)."""
+    if type(v) is float and v.is_integer():
+        return int(v)
+    return v
+
+
+#: The request schema's integer: strict (no strings, no booleans) but integral floats accepted.
+#: As a field's type with ``= Field(ge=..)``; inside ``Annotated`` put the ``Field`` *before* the
+#: validator (``Annotated[int, Field(ge=0), BeforeValidator(integral)]``): after it, pydantic writes
+#: ``ge``/``le`` into the JSON schema instead of ``minimum``/``maximum``.
+Int = Annotated[int, BeforeValidator(integral)]
 
 Length = Annotated[float, Field(ge=MIN_LENGTH, le=MAX_LENGTH, allow_inf_nan=False)]
 Stiff = Annotated[float, Field(ge=MIN_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan=False)]
@@ -85,7 +101,7 @@ class UniformManipulatorIn(BaseModel):
     model_config = ConfigDict(strict=True, extra="forbid",
                               json_schema_extra={"examples": [{"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]})
 
-    n: int = Field(ge=1, le=HARD_MAX_SEGMENTS, description=f"number of segments (server limit "
+    n: Int = Field(ge=1, le=HARD_MAX_SEGMENTS, description=f"number of segments (server limit "
                                                          f"TENSEGRITY_MAX_SEGMENTS, at most {HARD_MAX_SEGMENTS})")
     a: Length = Field(1.0, description="triangle half-height (length units)")
     b: Length = Field(1.0, description="triangle half-length (length units)")
@@ -103,6 +119,24 @@ class SegmentedManipulatorIn(BaseModel):
                                       description="segments from base to tip (server limit TENSEGRITY_MAX_SEGMENTS)")
 
 
+#: Chains accepted by the design endpoints (their NLPs carry a dense n x n Cholesky factor).
+MAX_DESIGN_SEGMENTS = 60
+
+
+class DesignUniformManipulatorIn(UniformManipulatorIn):
+    """`n` identical segments (design endpoints: at most 60)."""
+
+    n: Int = Field(ge=1, le=MAX_DESIGN_SEGMENTS, description=f"number of segments (at most {MAX_DESIGN_SEGMENTS} "
+                                                             "for the design endpoints)")
+
+
+class DesignSegmentedManipulatorIn(SegmentedManipulatorIn):
+    """Segments listed from base to tip (design endpoints: at most 60)."""
+
+    segments: list[SegmentIn] = Field(min_length=1, max_length=MAX_DESIGN_SEGMENTS,
+                                      description=f"segments from base to tip (at most {MAX_DESIGN_SEGMENTS})")
+
+
 def _manipulator_kind(v: Any) -> str:
     if isinstance(v, SegmentedManipulatorIn) or (isinstance(v, dict) and "segments" in v):
         return "<segments>"
@@ -118,6 +152,15 @@ ManipulatorIn = Annotated[
     Field(description='the chain: {"n", "a", "b", "k", "L0"} (uniform) or {"segments": [...]}'),
 ]
 
+DesignManipulatorIn = Annotated[
+    Union[
+        Annotated[DesignUniformManipulatorIn, Tag("<uniform>")],
+        Annotated[DesignSegmentedManipulatorIn, Tag("<segments>")],
+    ],
+    Discriminator(_manipulator_kind),
+    Field(description='the chain (at most 60 segments): {"n", "a", "b", "k", "L0"} (uniform) or {"segments": [...]}'),
+]
+
 PAPER_CHAIN = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 
 
@@ -128,7 +171,7 @@ class RangeIn(BaseModel):
 
     start: float = Field(allow_inf_nan=False)
     stop: float = Field(allow_inf_nan=False)
-    num: int = Field(ge=1)
+    num: Int = Field(ge=1)
 
 
 def _list_or_range(v: Any) -> str:
@@ -138,13 +181,13 @@ def _list_or_range(v: Any) -> str:
 class DeflectionRange(RangeIn):
     start: Deflection
     stop: Deflection
-    num: int = Field(ge=1, le=MAX_CURVE_POINTS, description=f"number of points (at most {MAX_CURVE_POINTS})")
+    num: Int = Field(ge=1, le=MAX_CURVE_POINTS, description=f"number of points (at most {MAX_CURVE_POINTS})")
 
 
 class AngleRange(RangeIn):
     start: Angle
     stop: Angle
-    num: int = Field(ge=1, le=MAX_TORQUE_POINTS, description=f"number of points (at most {MAX_TORQUE_POINTS})")
+    num: Int = Field(ge=1, le=MAX_TORQUE_POINTS, description=f"number of points (at most {MAX_TORQUE_POINTS})")
 
 
 # ---------------------------------------------------------------------------- requests
@@ -268,9 +311,9 @@ class EnergyLandscapeRequest(BaseModel):
     manipulator: ManipulatorIn
     dx: Deflection = Field(description="tip deflection along x (length units)")
     dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
-    pair: list[Annotated[int, Field(ge=0, le=3)]] = Field(
+    pair: list[Annotated[int, Field(ge=0, le=3), BeforeValidator(integral)]] = Field(
         [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
-    grid: int = Field(51, ge=2, le=MAX_GRID, description=f"points per axis (2..{MAX_GRID})")
+    grid: Int = Field(51, ge=2, le=MAX_GRID, description=f"points per axis (2..{MAX_GRID})")
     span: Annotated[float, Field(gt=0, le=MAX_ANGLE, allow_inf_nan=False)] | None = Field(
         None, description="half-width of both axes (rad); default: the smaller joint limit of the pair")
 
@@ -464,6 +507,7 @@ class Limits(BaseModel):
     inline_processes: int = Field(description="solver processes running the short chains' bounded search "
                                               "(service.lane); 0: the event loop runs it")
     max_body_bytes: int
+    max_response_bytes: int = Field(description="largest JSON answer (422 response_too_large above)")
     max_curve_points: int
     max_grid: int
     max_torque_points: int
@@ -490,8 +534,6 @@ class VersionOut(BaseModel):
 
 
 # ---------------------------------------------------------------------------- design and control
-#: Chains accepted by the design endpoints (their NLPs carry a dense n x n Cholesky factor).
-MAX_DESIGN_SEGMENTS = 60
 DesignVar = Literal["a", "b", "k", "L0"]
 Positive = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
 
@@ -506,7 +548,7 @@ class DesignCriticalForceRequest(BaseModel):
     """Maximise the critical load over per-segment design variables."""
 
     model_config = _STRICT
-    manipulator: ManipulatorIn
+    manipulator: DesignManipulatorIn
     vary: list[DesignVar] = Field(["k"], min_length=1, max_length=4, description="per-segment variables to optimise")
     bounds: dict[DesignVar, BoundsIn] = Field(default_factory=dict,
                                               description="bounds per variable; default (x0 / 10, 10 x0)")
@@ -523,7 +565,7 @@ class PreloadsForLoadRequest(BaseModel):
     """The smallest change of the rest lengths L0 making the critical load at least `required`."""
 
     model_config = _STRICT
-    manipulator: ManipulatorIn
+    manipulator: DesignManipulatorIn
     required: Positive = Field(description="required critical compressive load (force units)")
     boundary: Literal["guided", "free"] = "guided"
     bounds: BoundsIn | None = Field(None, description="bounds on every L0; default (0.05 * 2b, 2b)")
@@ -545,7 +587,7 @@ class PreloadsRequest(BaseModel):
     """Rest lengths putting the tip at a target, stably, under a tip load."""
 
     model_config = _STRICT
-    manipulator: ManipulatorIn
+    manipulator: DesignManipulatorIn
     target: Point = Field(description="tip position (length units)")
     load: LoadIn = Field(default_factory=lambda: LoadIn(), description="tip force (dead load)")
     objective: Literal["nominal", "margin", "energy"] = "nominal"

@@ -194,7 +194,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     # One process: the solver pool inside it supplies the parallelism (see service/pool.py).
     # Connection limits (request timeout, connection cap, keep-alive, concurrency): service/http.py.
     uvicorn.run(create_app(settings), host=args.host, port=args.port, log_level=args.log_level,
-                access_log=not args.no_access_log, workers=1, **uvicorn_options(settings))
+                access_log=not args.no_access_log, workers=1,
+                timeout_graceful_shutdown=settings.shutdown_timeout, **uvicorn_options(settings))
     return 0
 
 

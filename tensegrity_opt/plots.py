@@ -42,6 +42,7 @@ that they can be found again (tests read the data back from them):
 from __future__ import annotations
 
 import math
+import threading
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Any
@@ -103,6 +104,23 @@ def _savefig_kwargs(fmt: str, dpi: float | None) -> dict[str, Any]:
     return kw
 
 
+#: ``svg.hashsalt`` while an SVG is written: matplotlib otherwise salts the ids of clip paths and
+#: markers with a random UUID, so the same figure gave different bytes every time.
+SVG_HASHSALT = "tensegrity-opt"
+_SVG_LOCK = threading.Lock()     # rcParams are process-wide: one SVG save at a time under the salt
+
+
+def _savefig(fig: Any, target: Any, fmt: str, dpi: float | None) -> None:
+    """``fig.savefig`` with reproducible bytes: SVG under a fixed hash salt and no date (PNG is already)."""
+    if fmt != "svg":
+        fig.savefig(target, **_savefig_kwargs(fmt, dpi))
+        return
+    import matplotlib
+
+    with _SVG_LOCK, matplotlib.rc_context({"svg.hashsalt": SVG_HASHSALT}):
+        fig.savefig(target, **_savefig_kwargs(fmt, dpi))
+
+
 def save(fig: Any, path: str | Path, *, dpi: float | None = None) -> Path:
     """Write ``fig`` to ``path`` as PNG or SVG, chosen by the suffix (``.png`` / ``.svg``).
 
@@ -110,7 +128,7 @@ def save(fig: Any, path: str | Path, *, dpi: float | None = None) -> Path:
     """
     path = Path(path)
     fmt = _format_of(path)
-    fig.savefig(path, **_savefig_kwargs(fmt, dpi))
+    _savefig(fig, path, fmt, dpi)
     return path
 
 
@@ -121,7 +139,7 @@ def render(fig: Any, fmt: str = "png", *, dpi: float | None = None) -> bytes:
     if fmt not in FORMATS:
         raise InvalidParameterError(f"format must be 'png' or 'svg', got {fmt!r}", field="format")
     buf = io.BytesIO()
-    fig.savefig(buf, **_savefig_kwargs(fmt, dpi))
+    _savefig(fig, buf, fmt, dpi)
     return buf.getvalue()
 
 

@@ -418,9 +418,13 @@ def test_straight_unstable(client):
 
 
 def test_too_many_segments(client):
+    # The schema's cap is the default limit (200): above it the document itself refuses the body.
     r = client.post("/v1/equilibrium", json={"manipulator": {"n": 201}, "dx": 0.1})
-    body = check_error(r, 422, "too_many_segments", "manipulator.n")
-    assert body["details"] == {"n": 201, "max_segments": 200}
+    check_error(r, 422, "validation_error", "manipulator.n")
+    with make_client(max_segments=150) as c:
+        r = c.post("/v1/equilibrium", json={"manipulator": {"n": 151}, "dx": 0.1})
+        body = check_error(r, 422, "too_many_segments", "manipulator.n")
+        assert body["details"] == {"n": 151, "max_segments": 150}
     with make_client(max_segments=3) as c:
         r = c.post("/v1/buckling", json={"manipulator": {"segments": [{"a": 1, "b": 1}] * 4}})
         check_error(r, 422, "too_many_segments", "manipulator.segments")
@@ -542,6 +546,142 @@ def test_unknown_path_and_method(client):
     check_error(client.get("/v1/equilibrium"), 405, "method_not_allowed")
 
 
+# ---------------------------------------------------------------------------- response size (issue 14 item 3)
+def test_response_size_limit_is_estimated_before_solving():
+    with make_client(max_response_bytes=20000) as c:
+        body = {"manipulator": PAPER, "dx": {"start": 0.0, "stop": 0.5, "num": 301}}
+        r = c.post("/v1/force-deflection", json=body)
+        err = check_error(r, 422, "response_too_large", "dx")
+        assert err["details"]["max_response_bytes"] == 20000 and err["details"]["estimated_bytes"] > 20000
+        assert "20000" in err["message"] and "TENSEGRITY_MAX_RESPONSE_BYTES" in err["message"]
+        r = c.post("/v1/force-deflection", json={**body, "dx": {"start": 0.0, "stop": 0.5, "num": 5}})
+        assert r.status_code == 200, r.text
+        assert c.get("/version").json()["limits"]["max_response_bytes"] == 20000
+
+
+def test_response_size_limit_is_counted_while_rendering():
+    with make_client(max_response_bytes=4096, inline_max_segments=0) as c:
+        targets = [{"dx": 0.01 * (i + 1)} for i in range(30)]          # ~30 x 400 bytes
+        r = c.post("/v1/batch/equilibrium", json={"manipulator": PAPER, "targets": targets})
+        err = check_error(r, 422, "response_too_large", "targets")
+        assert err["details"] == {"max_response_bytes": 4096}
+        r = c.post("/v1/batch/equilibrium", json={"manipulator": PAPER, "targets": targets[:2]})
+        assert r.status_code == 200 and r.json()["succeeded"] == 2
+
+
+def test_json_answers_are_rendered_in_the_solver_thread(monkeypatch):
+    import service.deps as deps
+
+    threads = []
+    real = deps.render_json_bounded
+
+    def spy(*args, **kwargs):
+        threads.append(threading.current_thread().name)
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(deps, "render_json_bounded", spy)
+    with make_client(inline_max_segments=0) as c:
+        r = c.post("/v1/force-deflection", json={"manipulator": PAPER, "dx": [0.05, 0.1], "branch": "all"})
+        assert r.status_code == 200 and r.headers["content-type"] == "application/json"
+        assert len(r.json()["points"]) == 2
+    assert threads and all(name.startswith("solver-") for name in threads)
+
+
+def test_bounded_rendering_gives_the_same_bytes():
+    from service.responses import ResponseTooLarge, render_json, render_json_bounded
+
+    x = {"points": [{"q": [0.1 * j for j in range(50)], "e": float("nan"), "s": "é"} for _ in range(40)],
+         "branches": [{"id": 1, "points": [{"q": [1.0] * 40}] * 40}], "n": np.int64(3), "a": np.arange(3.0)}
+    body = render_json(x)
+    assert render_json_bounded(x, len(body)) == body
+    assert json.loads(body)["points"][0]["e"] is None and json.loads(body)["n"] == 3
+    with pytest.raises(ResponseTooLarge) as info:
+        render_json_bounded(x, len(body) - 1, "dx")
+    assert isinstance(info.value, ValueError) and info.value.field == "dx"
+
+
+# ---------------------------------------------------------------------------- the contract (issue 14 item 7)
+def test_integral_floats_are_the_integers_the_schema_allows(client):
+    # JSON Schema's "integer" is any number with a zero fractional part: 4.0 and 5.0 are valid
+    r = client.post("/v1/equilibrium", json={"manipulator": {"n": 4.0}, "dx": 0.1})
+    assert r.status_code == 200, r.text
+    assert r.json() == client.post("/v1/equilibrium", json={"manipulator": {"n": 4}, "dx": 0.1}).json()
+    r = client.post("/v1/force-deflection", json={"manipulator": PAPER, "dx": {"start": 0.0, "stop": 0.1, "num": 3.0}})
+    assert r.status_code == 200 and len(r.json()["points"]) == 3
+    for bad in (4.5, "4", True):            # still strict otherwise
+        r = client.post("/v1/equilibrium", json={"manipulator": {"n": bad}, "dx": 0.1})
+        check_error(r, 422, "validation_error", "manipulator.n")
+
+
+def test_schema_caps_are_the_default_limits():
+    from service import schemas as s
+    from service.config import HARD_MAX_BATCH, HARD_MAX_SEGMENTS
+
+    st = Settings()
+    assert (HARD_MAX_SEGMENTS, HARD_MAX_BATCH) == (st.max_segments, st.max_batch) == (200, 1000)
+    doc = create_app(Settings(warmup=False)).openapi()["components"]["schemas"]
+    assert doc["UniformManipulatorIn"]["properties"]["n"]["maximum"] == 200
+    assert doc["SegmentedManipulatorIn"]["properties"]["segments"]["maxItems"] == 200
+    assert doc["BatchEquilibriumRequest"]["properties"]["targets"]["maxItems"] == 1000
+    assert doc["DesignUniformManipulatorIn"]["properties"]["n"]["maximum"] == s.MAX_DESIGN_SEGMENTS
+    # integers inside Annotated keep real JSON Schema bounds (not pydantic's "ge"/"le" keywords)
+    assert doc["PlotTorqueRequest"]["properties"]["dpi"]["minimum"] == 30
+    assert doc["EnergyLandscapeRequest"]["properties"]["pair"]["items"]["maximum"] == 3
+    text = json.dumps(doc)
+    assert '"ge":' not in text and '"le":' not in text
+    with pytest.raises(ValueError):
+        Settings(max_segments=201)
+
+
+def test_design_limit_is_in_the_schema(client):
+    r = client.post("/v1/design/preloads-for-load", json={"manipulator": {"n": 61}, "required": 1.0})
+    check_error(r, 422, "validation_error", "manipulator.n")
+    r = client.post("/v1/design/preloads-for-load", json={"manipulator": {"segments": [{"a": 1, "b": 1}] * 61},
+                                                           "required": 1.0})
+    check_error(r, 422, "validation_error", "manipulator.segments")
+
+
+def test_api_key_is_optional_in_the_document():
+    doc = create_app(Settings(warmup=False)).openapi()
+    ops = [op for item in doc["paths"].values() for op in item.values() if op.get("security")]
+    assert ops and all(op["security"] == [{"ApiKey": []}, {}] for op in ops)
+
+
+def test_allow_lists_every_method_of_the_path(client):
+    r = client.options("/v1/jobs")
+    assert r.status_code == 204 and r.headers["allow"] == "GET, HEAD, OPTIONS, POST"
+    r = client.put("/v1/jobs")
+    check_error(r, 405, "method_not_allowed")
+    assert r.headers["allow"] == "GET, HEAD, OPTIONS, POST"
+    r = client.request("PATCH", "/v1/jobs/abc")
+    assert r.status_code == 405 and r.headers["allow"] == "DELETE, GET, HEAD, OPTIONS"
+    r = client.get("/v1/equilibrium")
+    assert r.headers["allow"] == "OPTIONS, POST"
+    check_error(client.options("/v1/nothing"), 404, "not_found")
+
+
+@pytest.mark.parametrize("path", ["/healthz", "/readyz", "/version", "/metrics"])
+def test_head_on_the_get_routes(client, path):
+    get, head = client.get(path), client.head(path)
+    assert head.status_code == get.status_code and head.content == b""
+    assert head.headers["content-type"] == get.headers["content-type"]
+
+
+def test_no_trailing_slash_redirect_from_the_host_header(client):
+    r = client.get("/healthz/", headers={"Host": "evil.example"}, follow_redirects=False)
+    check_error(r, 404, "not_found")
+    assert "location" not in r.headers
+
+
+def test_cors_allows_delete_and_head():
+    with make_client(cors_origins=["http://example.org"]) as c:
+        for method in ("DELETE", "HEAD", "GET", "POST"):
+            r = c.options("/v1/jobs/abc", headers={"Origin": "http://example.org",
+                                                   "Access-Control-Request-Method": method})
+            assert r.status_code == 200, (method, r.text)
+            assert method in r.headers["access-control-allow-methods"]
+
+
 def test_concurrent_requests_agree(client):
     """Several threads at once: every answer equals the library's (no CasADi instance is shared)."""
     m = to.Manipulator.uniform(4)
@@ -616,7 +756,7 @@ def test_inline_fast_path_answers_like_the_workers():
         original = pool.submit
 
         def counting(fn, *args, **kwargs):        # kwargs: heavy=
-            submitted.append(args[0])
+            submitted.append(args[1][0])        # deps._rendered(job, (request, ...), limit, field)
             return original(fn, *args, **kwargs)
 
         pool.submit = counting

@@ -26,3 +26,32 @@ def test_serve_over_http():
             assert r.status_code == 422 and r.json()["code"] == "too_many_segments"
             assert "tensegrity_http_requests_total" in client.get("/metrics").text
     assert proc.returncode is not None
+
+
+def test_sigterm_is_prompt_with_a_heavy_request_in_flight(tmp_path):
+    """SIGTERM used to take 4-15 s: uvicorn waited for the request's solve, the solver process was
+    killed only after a 2 s wait (its socket closed late), the pool waited 5 s for its threads."""
+    import signal
+    import threading
+    import time
+
+    env = clean_env(TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"))
+    with running_server(serve_command(free_port()), env, ready="/readyz") as (proc, base):
+        heavy = {"manipulator": {"n": 60}, "vary": ["a", "b", "k", "L0"]}      # ~10 s and more of IPOPT
+
+        def post():
+            try:
+                httpx.post(base + "/v1/design/critical-force", json=heavy, timeout=60)
+            except httpx.HTTPError:
+                pass
+
+        threading.Thread(target=post, daemon=True).start()
+        deadline = time.monotonic() + 10
+        while httpx.get(base + "/readyz").json()["in_flight"] == 0 and time.monotonic() < deadline:
+            time.sleep(0.05)
+        time.sleep(0.5)
+        start = time.monotonic()
+        proc.send_signal(signal.SIGTERM)
+        proc.wait(30)
+        took = time.monotonic() - start
+    assert took < 3.0, f"SIGTERM took {took:.2f} s"

@@ -40,4 +40,4 @@ async def batch_equilibrium(
     deadline = time.monotonic() + settings.batch_timeout
     # The hard limit leaves one solve time limit for the target running at the soft deadline.
     return await solve(request, batch_job, req, deadline, ctx.manipulator or "uniform", ctx=ctx,
-                       timeout=settings.batch_timeout + settings.solve_timeout, heavy=True)
+                       timeout=settings.batch_timeout + settings.solve_timeout, heavy=True, size_field="targets")

@@ -8,9 +8,9 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import force_deflection_job
+from ..compute import force_deflection_job, segment_count
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, is_heavy, solve
+from ..deps import check_curve_size, check_manipulator, get_settings_dep, is_heavy, solve
 from . import solve_responses
 
 router = APIRouter(prefix="/v1", tags=["curves"])
@@ -22,8 +22,11 @@ router = APIRouter(prefix="/v1", tags=["curves"])
     description="Continuation over the deflections `dx` (a list, or `{start, stop, num}`; at most "
                 f"{s.MAX_CURVE_POINTS} points) at fixed `dy` (`tensegrity_opt.force_deflection`). `jumps` lists the "
                 "force discontinuities (buckling at dx -> 0+, branch switches); `branch = \"all\"` also returns every "
-                "branch found at the first deflected point, with null where it no longer exists.",
-    responses=solve_responses(ex.FORCE_DEFLECTION, "unreachable_target", "no_equilibrium"))
+                "branch found at the first deflected point, with null where it no longer exists. An answer over the "
+                "server's `TENSEGRITY_MAX_RESPONSE_BYTES` (default 8 MiB; n = 200 with 301 points and `branch = "
+                "\"all\"` is ~40 MB) is refused with 422 `response_too_large` on `dx`: ask for fewer points or "
+                "`branch = \"stable\"`.",
+    responses=solve_responses(ex.FORCE_DEFLECTION, "unreachable_target", "no_equilibrium", "response_too_large"))
 async def force_deflection(
     request: Request,
     req: Annotated[s.ForceDeflectionRequest, Body(openapi_examples={
@@ -35,5 +38,7 @@ async def force_deflection(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, force_deflection_job, req, ctx=ctx,
+    points = req.dx.num if isinstance(req.dx, s.RangeIn) else len(req.dx)
+    check_curve_size(segment_count(req.manipulator), points, req.branch, settings)
+    return await solve(request, force_deflection_job, req, ctx=ctx, size_field="dx",
                        heavy=is_heavy(settings, req.manipulator, branch_all=req.branch == "all"))

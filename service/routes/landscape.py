@@ -33,4 +33,4 @@ async def energy_landscape(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, energy_landscape_job, req, ctx=ctx)
+    return await solve(request, energy_landscape_job, req, ctx=ctx, size_field="grid")

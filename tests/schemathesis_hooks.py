@@ -1,0 +1,116 @@
+"""schemathesis hooks for ``test_service_schemathesis.py`` (``SCHEMATHESIS_HOOKS=schemathesis_hooks``).
+
+The server runs at its *default* limits, and the committed document says exactly what it accepts;
+what these hooks bound is the *cost* of the generated requests, not what is valid:
+
+* ``map_case`` shrinks sizes inside the valid range (chains to 6 segments, 2 for the homotopy,
+  curves to 21 points, grids to 21 per axis, batches to 10 targets, job sweeps to 3 values per
+  key and 3 points), so that no generated input runs into the 10 s solve time limit (a 504, which
+  ``not_a_server_error`` counts) or keeps the job runner busy for the rest of the run. A positive
+  case stays positive; a negative case keeps its violation (only values valid for every operation
+  are shrunk there, and schemathesis revalidates a mapped case).
+* ``positive_data_is_accepted_by_the_schema``: a check on top of schemathesis' own. A request the
+  document calls valid may be refused for a domain reason (422 ``unreachable_target``, ...), but
+  never as a schema violation or over a size limit the document does not state: ``validation_error``,
+  ``too_many_segments`` (except on ``method``: the homotopy's own limit, documented there) and
+  ``batch_too_large`` would mean that the document allows what the server refuses.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import schemathesis
+
+MAX_N = 6
+MAX_N_HOMOTOPY = 2
+LIMITS = {"dx": 21, "q": 101, "targets": 10, "values_x": 6, "values_y": 6, "points": 3, "segments": MAX_N}
+MAX_NUM = 21
+MAX_GRID = 21
+MAX_JOB_VALUES = 3
+
+
+def _small_n(v: Any, cap: int, positive: bool) -> Any:
+    if isinstance(v, bool) or not isinstance(v, (int, float)) or v != int(v) or v <= cap:
+        return v
+    if positive or v <= 60:             # 60: valid on every operation (the design endpoints' cap)
+        return type(v)(cap)
+    return v
+
+
+def _bound(x: Any, positive: bool, cap: int, parent: str | None = None) -> Any:
+    if isinstance(x, list):
+        return [_bound(v, positive, cap, parent) for v in x]
+    if not isinstance(x, dict):
+        return x
+    if x.get("method") == "homotopy":
+        cap = MAX_N_HOMOTOPY
+    out = {}
+    for key, v in x.items():
+        if key == "n":
+            v = [_small_n(e, cap, positive) for e in v[:MAX_JOB_VALUES]] if isinstance(v, list) and positive \
+                else _small_n(v, cap, positive)
+        elif key == "segments" and isinstance(v, list) and len(v) > cap and (positive or len(v) <= 60):
+            v = v[:cap]
+        elif positive and key in LIMITS and isinstance(v, list) and len(v) > LIMITS[key]:
+            v = v[:LIMITS[key]]
+        elif positive and key == "num" and isinstance(v, int) and not isinstance(v, bool) and v > MAX_NUM:
+            v = MAX_NUM
+        elif positive and key == "grid" and isinstance(v, int) and not isinstance(v, bool) and v > MAX_GRID:
+            v = MAX_GRID
+        elif positive and parent == "grid" and isinstance(v, list):     # a job's grid: values per key
+            v = v[:MAX_JOB_VALUES]
+        out[key] = _bound(v, positive, cap, key)
+    return out
+
+
+@schemathesis.hook
+def map_case(ctx, case):
+    body = case.body
+    if isinstance(body, dict):
+        meta = case.meta
+        positive = meta is None or not meta.generation.mode.is_negative
+        case.body = _bound(body, positive, MAX_N)
+    return case
+
+
+SCHEMA_CODES = {"validation_error", "too_many_segments", "batch_too_large"}
+_VALIDATORS: dict[tuple[str, str], Any] = {}
+
+
+def _conforms(case) -> bool:
+    """Whether the case's JSON body conforms to the document's request schema (JSON Schema 2020-12,
+    checked here rather than trusting the case's generation mode: a case's mode does not say
+    whether each of its values is valid)."""
+    import jsonschema_rs
+
+    op = case.operation
+    key = (op.method.lower(), op.path)
+    if key not in _VALIDATORS:
+        raw = op.schema.raw_schema
+        media = (raw["paths"][op.path][op.method.lower()].get("requestBody") or {}).get("content", {})
+        schema = (media.get("application/json") or {}).get("schema")
+        _VALIDATORS[key] = None if schema is None else jsonschema_rs.Draft202012Validator(
+            {**schema, "components": raw.get("components", {})})
+    validator = _VALIDATORS[key]
+    return validator is not None and validator.is_valid(case.body)
+
+
+@schemathesis.check
+def positive_data_is_accepted_by_the_schema(ctx, response, case):
+    if response.status_code != 422 or not isinstance(case.body, dict):
+        return None
+    sent = response.request.headers.get("content-type", "") if response.request is not None else ""
+    if "json" not in sent.lower() or case.query or case.path_parameters:
+        return None             # a body sent as text/plain, say, is refused whatever it holds
+    try:
+        body = response.json()
+    except ValueError:
+        return None
+    code = body.get("code") if isinstance(body, dict) else None
+    if code not in SCHEMA_CODES or (code == "too_many_segments" and body.get("field") == "method"):
+        return None
+    if _conforms(case):
+        raise AssertionError(f"a request the document calls valid was refused as {code} on "
+                             f"{body.get('field')}: {body.get('message')}")
+    return None
