@@ -144,11 +144,6 @@ def status_for(exc: BaseException) -> int:
         return 504
     if isinstance(exc, HomotopyUnavailableError):
         return 503
-    if isinstance(exc, TensegrityError):
-        return 422
-    if isinstance(exc, _NUMERICAL):
-        # numpy/scipy/CasADi failed where the library did not refuse first: a bug to fix, not an answer
-        return 500
     return 422
 
 
@@ -158,7 +153,7 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
     Library exceptions keep their ``code`` (the bare base ``TensegrityError``, which
     ``force_deflection`` raises when no stable equilibrium exists at a point, becomes
     ``no_equilibrium``); numerical exceptions from numpy/scipy/CasADi become
-    ``numerical_failure`` (answered with 500: see :func:`status_for`).
+    ``numerical_failure`` (answered with 500: see :func:`to_api_error`).
     """
     if isinstance(exc, ServiceError):
         out: dict[str, Any] = {"code": exc.code, "message": exc.message}
@@ -253,7 +248,8 @@ def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retr
     body = error_body(exc, ctx)
     if body is None:
         return None
-    status = status_for(exc)
+    # numpy/scipy/CasADi failed where the library did not refuse first: a bug to fix (500), not an answer
+    status = 500 if body["code"] == "numerical_failure" else status_for(exc)
     headers = None
     if isinstance(exc, ServiceError) and exc.headers:
         headers = exc.headers
