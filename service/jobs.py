@@ -781,18 +781,20 @@ class JobRunner:
         return job
 
     @_storage_guard
-    def delete(self, job_id: str, owner: str | None = None) -> dict[str, Any] | None:
-        """``DELETE /v1/jobs/{id}``: a finished job is removed with its rows (``None``); a queued or
-        running one is cancelled (the cancelled job). ``JobNotFound`` otherwise."""
+    def delete(self, job_id: str, owner: str | None = None) -> None:
+        """``DELETE /v1/jobs/{id}``: remove the job and all its rows; a queued or running one is cancelled
+        first (it stops here at once, in another server sharing the file at its next lease renewal, and
+        stores nothing more: rows are stored only under a held lease of an existing job).
+        ``JobNotFound`` when there is no such job (of this owner)."""
         store = self._store()
         if store.delete(job_id, owner):
-            return None
+            return
         try:
-            return self.cancel(job_id, owner)
-        except JobFinished:        # it finished between the two statements: remove it now
-            if store.delete(job_id, owner):
-                return None
-            raise JobNotFound(job_id) from None
+            self.cancel(job_id, owner)
+        except JobFinished:        # it finished between the two statements
+            pass
+        if not store.delete(job_id, owner):
+            raise JobNotFound(job_id)
 
     def wait_idle(self, timeout: float = 10.0) -> bool:
         """True once no job is running here (tests)."""

@@ -188,7 +188,7 @@ def openapi_document() -> dict[str, Any]:
     created = doc["paths"]["/v1/jobs"]["post"]["responses"]["202"]
     created["links"] = {op: {"operationId": op, "parameters": {"job_id": "$response.body#/id"},
                              "description": f"{op.replace('_', ' ')} of the job just submitted"}
-                        for op in ("get_job", "get_job_results", "cancel_job")}
+                        for op in ("get_job", "get_job_results", "cancel_job", "delete_job")}
     # The key is required only by servers that have keys: ``{}`` (no requirement) is the alternative.
     for item in doc["paths"].values():
         for op in item.values():

@@ -146,12 +146,16 @@ def test_cancel_keeps_finished_points_and_the_runner_goes_on(api):
     queued_id = api.post("/v1/jobs", json=MIXED).json()["id"]
     wait_for(api, long_id, lambda j: j["done"] >= 3)
 
-    r = api.delete(f"/v1/jobs/{queued_id}")                       # queued: cancelled at once
+    r = api.post(f"/v1/jobs/{queued_id}/cancel")                  # queued: cancelled at once
     assert r.status_code == 200 and r.json()["status"] == "cancelled" and r.json()["done"] == 0
-    r = api.delete(f"/v1/jobs/{long_id}")                         # running: after its current point
+    r = api.post(f"/v1/jobs/{long_id}/cancel")                    # running: after its current point
     assert r.status_code == 200 and r.json()["status"] == "cancelled"
+    r = api.post(f"/v1/jobs/{long_id}/cancel")                    # again: the same answer (idempotent)
+    assert r.status_code == 200 and r.json()["status"] == "cancelled", r.text
     wait_for(api, next_id, done)
     assert api.get(f"/v1/jobs/{next_id}").json()["status"] == "done"
+    r = api.post(f"/v1/jobs/{next_id}/cancel")                    # it has ended: nothing to cancel
+    assert r.status_code == 409 and r.json()["code"] == "job_finished" and r.json()["details"] == {"status": "done"}
     cancelled = api.get(f"/v1/jobs/{long_id}/results").json()
     assert cancelled["status"] == "cancelled" and not cancelled["complete"]
     assert 3 <= cancelled["done"] < 200
@@ -469,7 +473,7 @@ def test_jobs_belong_to_the_api_key_that_submitted_them(api):
     assert api.delete(f"/v1/jobs/{job_id}", headers=one).status_code == 204
 
 
-def test_delete_removes_a_finished_job_and_cancels_a_running_one(api):
+def test_delete_removes_a_finished_job_and_a_running_one(api):
     done_id = api.post("/v1/jobs", json=MIXED).json()["id"]
     wait_for(api, done_id, done)
     r = api.delete(f"/v1/jobs/{done_id}")
@@ -481,11 +485,10 @@ def test_delete_removes_a_finished_job_and_cancels_a_running_one(api):
 
     long_id = api.post("/v1/jobs", json=slow_spec(100)).json()["id"]
     wait_for(api, long_id, lambda j: j["done"] >= 1)
-    r = api.delete(f"/v1/jobs/{long_id}")
-    assert r.status_code == 200 and r.json()["status"] == "cancelled"
-    assert api.get(f"/v1/jobs/{long_id}").json()["status"] == "cancelled"
-    assert api.delete(f"/v1/jobs/{long_id}").status_code == 204           # finished now: deleted
+    r = api.delete(f"/v1/jobs/{long_id}")                                 # running: cancelled, then removed
+    assert r.status_code == 204 and r.content == b""
     assert api.get(f"/v1/jobs/{long_id}").status_code == 404
+    assert api.delete(f"/v1/jobs/{long_id}").status_code == 404
     time.sleep(0.3)                       # the point in progress when cancelled stores nothing
     with sqlite3.connect(api.db) as con:
         assert con.execute("SELECT COUNT(*) FROM points WHERE job_id = ?", (long_id,)).fetchone() == (0,)
@@ -654,7 +657,7 @@ def test_two_real_servers_share_one_file_cancel_crosses_and_a_killed_servers_job
         holder = _lease_owner_pid(db, job_id)
         assert holder in pids
         other = bases[1 - pids.index(holder)]
-        r = httpx.delete(f"{other}/v1/jobs/{job_id}", timeout=30)
+        r = httpx.post(f"{other}/v1/jobs/{job_id}/cancel", timeout=30)
         assert r.status_code == 200 and r.json()["status"] == "cancelled"
         time.sleep(1.0)                                 # > a lease renewal (1/3 s) + a point
         n = len(stored_points(db, job_id))

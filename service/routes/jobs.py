@@ -25,7 +25,7 @@ from tensegrity_opt.sweep import write_csv
 from .. import job_schemas as js
 from ..errors import ServiceError
 from ..examples import ERRORS
-from ..jobs import JobNotFound, JobRunner, owner_hash, summary
+from ..jobs import JobFinished, JobNotFound, JobRunner, owner_hash, summary
 from ..schemas import ErrorOut
 
 router = APIRouter(prefix="/v1/jobs", tags=["jobs"])
@@ -253,27 +253,47 @@ def _csv_response(runner: JobRunner, job: dict[str, Any], offset: int, limit: in
     return StreamingResponse(body(), media_type="text/csv; charset=utf-8", headers=headers)
 
 
-@router.delete(
-    "/{job_id}", operation_id="cancel_job", response_model=js.JobSummary,
-    summary="Cancel a queued or running job; delete a finished one",
-    description="A queued or running job is cancelled at once (200, the job; its finished points are kept; the "
-                "point in progress is abandoned once the native call in progress returns; in another server "
-                "sharing the database: at that server's next lease renewal). A finished job (done, failed, cancelled or interrupted) is "
-                "deleted with all its rows: 204, no body; the id is then unknown (404). So `DELETE` twice "
-                "cancels, then deletes. Finished jobs are also deleted after "
-                "`TENSEGRITY_JOBS_RETENTION_DAYS`. Someone else's job (API keys configured) is 404.",
+@router.post(
+    "/{job_id}/cancel", operation_id="cancel_job", response_model=js.JobSummary,
+    summary="Cancel a queued or running job (its finished points are kept)",
+    description="The job stops at once (the point in progress is abandoned once the native call in progress "
+                "returns; in another server sharing the database: at that server's next lease renewal) and "
+                "stays, `cancelled`, with its finished points: its results can still be read, and `DELETE` "
+                "removes it. Cancelling a cancelled job answers it again; a job that ended otherwise (done, "
+                "failed, interrupted): 409 `job_finished`. Someone else's job (API keys configured) is 404.",
     responses={200: {"description": "the cancelled job", "content": {"application/json": {"example": {
         **{k: v for k, v in js.JOB_EXAMPLE.items() if k not in ("spec", "columns", "results", "offset",
                                                                   "next_offset")},
         "status": "cancelled", "finished_at": "2025-01-01T12:00:01.000Z",
         "message": "cancelled by a request; finished points are kept"}}}},
-        204: {"description": "the finished job and its rows were deleted"},
-        401: _401, 404: _404, 422: _422_ID, 503: _503})
+        401: _401, 404: _404,
+        409: _err(409, "The job already ended (`job_finished`, `details.status` says how).", {"job_finished": {
+            "summary": "the job had ended", "value": {
+                "code": "job_finished", "field": "id", "details": {"status": "done"},
+                "message": "job '3f2a0c1e9b7d4e5f8a6b2c1d0e9f8a7b' already ended (done): nothing to cancel"}}}),
+        422: _422_ID, 503: _503})
 def cancel_job(runner: Runner, owner: Owner, job_id: str) -> Any:
     try:
-        job = runner.delete(job_id, owner)
+        return summary(runner.cancel(job_id, owner))
     except JobNotFound:
         raise _not_found(job_id) from None
-    if job is None:
-        return PlainResponse(status_code=204)
-    return summary(job)
+    except JobFinished as exc:
+        raise ServiceError(409, "job_finished", f"job {job_id!r} already ended ({exc.status}): nothing to cancel",
+                           field="id", details={"status": exc.status}) from None
+
+
+@router.delete(
+    "/{job_id}", operation_id="delete_job", status_code=204, response_class=PlainResponse, response_model=None,
+    summary="Delete a job and all its rows (a queued or running one is cancelled first)",
+    description="Removes the job and its rows: 204, no body; the id is then unknown (404). A queued or running "
+                "job is cancelled first (to keep its finished points, `POST /v1/jobs/{id}/cancel` instead). "
+                "Finished jobs are also deleted after `TENSEGRITY_JOBS_RETENTION_DAYS`. Someone else's job "
+                "(API keys configured) is 404.",
+    responses={204: {"description": "the job and its rows were deleted"},
+               401: _401, 404: _404, 422: _422_ID, 503: _503})
+def delete_job(runner: Runner, owner: Owner, job_id: str) -> Any:
+    try:
+        runner.delete(job_id, owner)
+    except JobNotFound:
+        raise _not_found(job_id) from None
+    return PlainResponse(status_code=204)
