@@ -14,6 +14,10 @@ new ``/healthz`` failed). :func:`protocol_class` returns uvicorn's httptools pro
   closed to make room; when every connection has a request in progress the new one is closed.
   So half-open sockets cannot lock out new clients: ``/healthz`` still answers.
 
+* **JSON 400s**: a request uvicorn cannot parse (request line, headers, ``Content-Length``) is
+  refused in the service's error shape (``{"code": "bad_request", "message"}``), not uvicorn's
+  plain text.
+
 uvicorn's own ``limit_concurrency`` (503 beyond ``TENSEGRITY_LIMIT_CONCURRENCY`` requests and
 connections) and ``timeout_keep_alive`` (``TENSEGRITY_KEEP_ALIVE``) are set by ``tensegrity-opt serve``
 too. A production deployment still puts a reverse proxy in front (see the README).
@@ -22,6 +26,7 @@ too. A production deployment still puts a reverse proxy in front (see the README
 from __future__ import annotations
 
 import asyncio
+import json
 from typing import Any
 
 __all__ = ["protocol_class", "uvicorn_options"]
@@ -101,6 +106,15 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
                 return
             if self.cycle is None or self.cycle.response_complete:
                 self.transport.write(_TIMEOUT_RESPONSE)     # nothing reached the app: tell the client
+            self.transport.close()
+
+        def send_400_response(self, msg: str) -> None:
+            # uvicorn answers an unparsable request line or header, or a bad Content-Length, before the
+            # application sees it, in plain text: here in the service's JSON error shape
+            body = json.dumps({"code": "bad_request", "message": f"malformed HTTP request: {msg}"}).encode()
+            self.transport.write(b"HTTP/1.1 400 Bad Request\r\ncontent-type: application/json\r\n"
+                                 b"connection: close\r\ncontent-length: " + str(len(body)).encode() + b"\r\n\r\n"
+                                 + body)
             self.transport.close()
 
         def _close_waiting(self) -> None:

@@ -3,6 +3,7 @@ clients (half-sent requests) neither hold sockets for ever nor lock out new clie
 
 from __future__ import annotations
 
+import json
 import socket
 import sys
 import threading
@@ -111,6 +112,17 @@ def test_half_sent_requests_are_closed_and_do_not_lock_out_new_clients():
             time.sleep(0.5)
             s.sendall(b"Host: x\r\nConnection: close\r\n\r\n")
             assert s.recv(4096).startswith(b"HTTP/1.1 200")
+        # malformed HTTP (refused by the parser, before the app): the JSON error shape, not plain text
+        for raw in (b"GARBAGE\r\n\r\n", b"GET /healthz HTTP/1.1\r\nHost x\r\n\r\n",
+                    b"POST /v1/equilibrium HTTP/1.1\r\nHost: x\r\nContent-Length: -5\r\n\r\n"):
+            with socket.create_connection(("127.0.0.1", port), timeout=5) as s:
+                s.sendall(raw)
+                data = b""
+                while chunk := s.recv(4096):
+                    data += chunk
+            head, _, body = data.partition(b"\r\n\r\n")
+            assert head.startswith(b"HTTP/1.1 400") and b"content-type: application/json" in head.lower(), data
+            assert json.loads(body)["code"] == "bad_request", data
 
 
 def test_a_design_solve_stops_itself_at_the_deadline_and_keeps_its_process():
