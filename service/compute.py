@@ -65,7 +65,7 @@ def _manipulator(key: tuple[Any, ...]) -> to.Manipulator:
 
 
 class NonFiniteResult(ArithmeticError):
-    """A result holds NaN or an infinity where the API promises a number (answered as 422)."""
+    """A result holds NaN or an infinity where the API promises a number (a bug: 500 ``numerical_failure``)."""
 
 
 def _num(x: Any) -> float:

@@ -153,7 +153,7 @@ async def solve_heavy(request: Request, fn: Callable[..., Any], *args: Any, ctx:
     hold a solver thread; in the solver threads when ``heavy_workers`` is 0."""
     heavy = request.app.state.heavy
     if heavy is None:
-        return await solve(request, fn, *args, ctx=ctx)
+        return await solve(request, fn, *args, ctx=ctx, heavy=True)
     request.state.field_context = ctx
     settings: Settings = request.app.state.settings
     return await heavy.run(fn, *args, timeout=settings.solve_timeout)

@@ -64,7 +64,7 @@ def _child_main(conn: Any) -> None:
         try:
             conn.send(reply)
         except Exception as exc:  # noqa: BLE001 - an unpicklable result or exception
-            conn.send((False, RuntimeError(f"unpicklable reply: {type(exc).__name__}: {exc}")))
+            conn.send((False, UnreadableReply(f"unpicklable reply: {type(exc).__name__}: {exc}")))
 
 
 class UnreadableReply(Exception):

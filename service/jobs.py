@@ -52,10 +52,10 @@ Owners, deletion, retention
 ---------------------------
 With API keys configured a job belongs to the key that submitted it (the store keeps
 :func:`owner_hash`, the SHA-256 of the key); every other key sees 404 for it. Jobs stored while
-auth was off have no owner and are not visible to any key. ``DELETE`` cancels a queued or running
-job (a queued one at once; a running one at once too: its point in progress is abandoned, like a late
-point, once the CasADi call in progress returns, and stores nothing; finished points are kept) and
-deletes a finished one with its rows. Finished jobs older than ``TENSEGRITY_JOBS_RETENTION_DAYS``
+auth was off have no owner and are not visible to any key. ``POST /v1/jobs/{id}/cancel`` cancels a
+queued or running job (a queued one at once; a running one at once too: its point in progress is
+abandoned, like a late point, once the CasADi call in progress returns, and stores nothing; finished
+points are kept); ``DELETE`` removes a job with its rows (cancelling it first). Finished jobs older than ``TENSEGRITY_JOBS_RETENTION_DAYS``
 (0: never) are deleted at start-up and hourly.
 
 Storage faults
@@ -621,7 +621,11 @@ class JobRunner:
         self._stopping = threading.Event()
         self._threads: list[threading.Thread] = []
         self._slots = [_Slot(k) for k in range(self.max_running)]
-        self._watch = threading.Condition(threading.Lock())    # the point watchdog's
+        # the point watchdog's; ``_watch_lock`` is its lock, taken directly (a C-level ``with``) where a
+        # PointTimeout may arrive: Condition.__enter__ is Python code, between whose acquire and return an
+        # asynchronous exception would leave the lock held
+        self._watch_lock = threading.Lock()
+        self._watch = threading.Condition(self._watch_lock)
         self._purged = 0.0
         self._fault_logged = -1e9
 
@@ -895,7 +899,7 @@ class JobRunner:
             self.store.release(job_id, self.id, status="failed", message=msg[:2000], finished=True)
             return
         if slot.stop.is_set():
-            return  # cancelled (the DELETE set "cancelled"), or another server holds the job now
+            return  # cancelled (a cancel or DELETE set "cancelled"), or another server holds the job now
         stored = self.store.count(job_id)
         if stored >= job["total"]:
             self.store.release(job_id, self.id, status="done", finished=True)
@@ -931,10 +935,15 @@ class JobRunner:
             try:
                 return solve_chunk(header, pcols, rcols, [(i, p)])[0][1]
             finally:
-                with self._watch:
-                    slot.armed = False
-                    if slot.fired:       # sent but perhaps not delivered yet: never into the next point
-                        _set_async_exc(slot.thread_id, None)
+                while True:              # a repeated PointTimeout may land here too: disarm regardless
+                    try:
+                        with self._watch_lock:
+                            slot.armed = False
+                            if slot.fired:       # sent but perhaps not delivered yet: never into the next point
+                                _set_async_exc(slot.thread_id, None)
+                        break
+                    except PointTimeout:
+                        continue
         except PointTimeout:
             if slot.abandoned:
                 return None

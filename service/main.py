@@ -38,7 +38,7 @@ API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, bat
 OPEN_ROUTERS = (ops, web)
 #: Seconds the job runner and the solver threads each get to stop at shutdown.
 SHUTDOWN_JOIN = 0.5
-#: Methods a browser page may use across origins (DELETE: cancel or remove a job).
+#: Methods a browser page may use across origins (DELETE: remove a job).
 CORS_METHODS = ["GET", "HEAD", "POST", "DELETE"]
 
 log = logging.getLogger("service")

@@ -81,7 +81,8 @@ class _Job:
     __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted", "deadline",
                  "heavy")
 
-    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...], heavy: bool = False) -> None:
+    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...], heavy: bool = False,
+                 timeout: float | None = None) -> None:
         self.heavy = heavy
         self.fn = fn
         self.args = args
@@ -91,7 +92,8 @@ class _Job:
         self.cancel_sent = False
         self.abandoned = False
         self.submitted = time.monotonic()
-        self.deadline: float | None = None     # time.monotonic(): the library time limit of the call
+        # time.monotonic(): the library time limit of the call, set before any worker can see the job
+        self.deadline: float | None = None if timeout is None else self.submitted + timeout
 
 
 class SolverPool:
@@ -175,9 +177,10 @@ class SolverPool:
         return self.workers + self.queue_size
 
     # ------------------------------------------------------------------ submission
-    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False) -> _Job:
-        """Queue ``fn(*args)``; raise :class:`PoolSaturated` when ``workers + queue_size`` calls are pending."""
-        job = _Job(fn, args, heavy)
+    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False, timeout: float | None = None) -> _Job:
+        """Queue ``fn(*args)`` (under the library time limit ``timeout``, if given); raise
+        :class:`PoolSaturated` when ``workers + queue_size`` calls are pending."""
+        job = _Job(fn, args, heavy, timeout)
         with self._cond:
             if self._stopping:
                 raise PoolSaturated("the solver pool is shutting down")
@@ -193,8 +196,7 @@ class SolverPool:
 
     async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
         """Run ``fn(*args)`` in a worker; raise :class:`SolveTimeout` after ``timeout`` seconds."""
-        job = self.submit(fn, *args, heavy=heavy)
-        job.deadline = job.submitted + timeout
+        job = self.submit(fn, *args, heavy=heavy, timeout=timeout)
         fut = asyncio.wrap_future(job.future)
         try:
             return await asyncio.wait_for(fut, timeout)

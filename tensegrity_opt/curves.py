@@ -23,8 +23,9 @@ well patterns, ``tests/test_completeness.py``), each switch a jump located withi
 is followed and returned in ``Curve.branches`` (NaN where it no longer exists); on multistable
 chains also every branch born inside the range.
 
-Points with ``dx = dy = 0`` are the straight chain (force 0); they split the path into runs
-that are followed independently.
+Points with ``dx = dy = 0`` are the straight chain (force 0 for symmetric segments); they split the
+path into runs that are followed independently. With asymmetric preloads the straight chain is no
+equilibrium there: such points carry ``status = "straight_not_equilibrium"`` and ``stable = False``.
 """
 
 from __future__ import annotations
@@ -40,7 +41,8 @@ from .buckling import critical_force
 from .equilibria import find_equilibria
 from .equilibrium import (WELLS_MAX, Equilibrium, make_equilibrium, search_stable, straight_equilibrium,
                           solve_equilibrium)
-from .errors import InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
+from .errors import (InvalidParameterError, NoEquilibriumError, StraightNotEquilibriumError, TensegrityError,
+                     TimeLimitError)
 from .manipulator import Manipulator
 from .seeds import seed_starts, well_seeds
 from .shapes import shape_label, shape_labels
@@ -334,10 +336,17 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
     morse = np.zeros(npts, dtype=int)
     stable = np.ones(npts, dtype=bool)
     status = ["straight"] * npts
-    s0 = straight_equilibrium(m, check=False)
+    try:
+        s0, s0_ok = straight_equilibrium(m), True
+    except StraightNotEquilibriumError:
+        # asymmetric preloads: at dx = dy = 0 only the straight chain reaches the tip, and it is no
+        # equilibrium (an unbounded tension would be needed): the point is kept, marked, not stable
+        s0, s0_ok = straight_equilibrium(m, check=False), False
     for j in range(npts):
         if straight[j]:
             q[j], F[j], E[j] = s0.q, s0.force, s0.energy
+            if not s0_ok:
+                stable[j], status[j] = False, "straight_not_equilibrium"
             continue
         br = branches[sel[j]]
         q[j], F[j], E[j], morse[j], stable[j], status[j] = br.q[j], br.F[j], br.E[j], br.morse[j], \

@@ -461,7 +461,9 @@ class _Model:
 
         Lengths are multiplied by ``lam`` and stiffnesses by ``kap`` (powers of two, so the change is exact),
         chosen so that both the length scale ``sum b`` and the torque scale ``k c^2`` are about 1. Identity
-        (``1, 1, params``) for a chain whose scales are within ``UNIT_RATIO`` of 1 and of each other.
+        (``1, 1, params``) when ``max(1, T) / min(L, T) <= UNIT_RATIO`` (torque scale ``T``, length
+        scale ``L``): in particular for every chain with ``T >= 1`` and ``T <= UNIT_RATIO L``; long light
+        chains (``L >> T >= 1``) are not rescaled (their tip rows meet a threshold above roundoff).
         """
         if params is getattr(self, "_units_params", None):
             return self._units_val
@@ -755,7 +757,12 @@ class _Model:
 
         Dense chains solve the whole KKT system (valid even where ``H`` is singular);
         long chains use one banded solve. Raises ``numpy.linalg.LinAlgError`` when singular.
+        Computed in the solver's units (:meth:`_units`): the KKT matrix mixes torque and length rows,
+        so its condition number, tested here, grows as ``k^2`` in the caller's.
         """
+        lam, kap, scaled = self._units(params)
+        if scaled is not params:           # dF/d(tip) scales as kap (force / length)
+            return self.tangent_stiffness(scaled, q, kap * lam * np.asarray(force, float)) / kap
         n = self.n
         if self.dense:
             fast = self._fast_kkt

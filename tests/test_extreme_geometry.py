@@ -248,3 +248,24 @@ def test_service_reported_request(client):
     # POST /v1/equilibrium {"manipulator":{"n":4,"a":1e6},"dx":0.1} answered 200 with the tip at 8
     r = client.post("/v1/equilibrium", json={"manipulator": {"n": 4, "a": 1e6}, "dx": 0.1})
     assert r.status_code == 422 and r.json()["code"] == "unreachable_target", r.text
+
+
+@pytest.mark.parametrize("k", [1e7, 1e9])
+def test_stiffness_of_stiff_chains_scales_with_k(k):
+    # K / k is the same for every k; the KKT matrix's condition number grew as k^2 in the caller's units
+    # and the tangent stiffness was refused as singular from k ~ 1e7 on
+    m1, mk = to.Manipulator.uniform(4), to.Manipulator.uniform(4, k=k)
+    K1 = to.cartesian_stiffness(m1, to.solve_equilibrium(m1, 0.5))
+    Kk = to.cartesian_stiffness(mk, to.solve_equilibrium(mk, 0.5))
+    np.testing.assert_allclose(np.asarray(Kk) / k, np.asarray(K1), rtol=1e-7, atol=1e-9 * np.abs(K1).max())
+
+
+def test_a_curve_from_dx_0_on_a_pre_bent_chain_marks_the_straight_point():
+    # the straight chain at dx = dy = 0 is no equilibrium with asymmetric preloads: not a stable point
+    m = to.Manipulator([to.Segment(a=1.0, b=1.0, k=1.0, L0=(1.0, 1.3))] * 4)
+    c = to.force_deflection(m, [0.0, 0.1, 0.2])
+    assert c.status[0] == "straight_not_equilibrium" and not c.stable[0]
+    for j in (1, 2):
+        check(m, to.Equilibrium(q=c.q[j], energy=float(c.energy[j]), force=np.array([c.fx[j], c.fy[j]]),
+                                morse_index=0, stable=bool(c.stable[j]), status="", iterations=0, tip=m.tip(c.q[j])),
+              m.target(c.dx[j], 0.0))

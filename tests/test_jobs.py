@@ -717,3 +717,19 @@ def test_a_cancel_or_a_shutdown_frees_the_thread_of_a_long_point_at_once(tmp_pat
     job = store.get(job_id)
     store.close()
     assert (job["status"], job["done"]) == ("queued", 1)
+
+
+@pytest.mark.parametrize("api", [{"max_response_bytes": 1500}], indirect=True)
+def test_result_pages_are_bounded_and_limit_0_has_no_next_page(api):
+    # pages are rendered in the thread pool within max_response_bytes (422 naming `limit`), like every
+    # other answer; limit = 0 gives the counts only, not a next_offset equal to offset (a client loop)
+    job_id = api.post("/v1/jobs", json=MIXED).json()["id"]
+    wait_for(api, job_id, done)
+    for path in (f"/v1/jobs/{job_id}", f"/v1/jobs/{job_id}/results"):
+        r = api.get(path, params={"limit": 0})
+        assert r.status_code == 200 and r.json()["next_offset"] is None, r.text
+        r = api.get(path, params={"limit": 1})
+        assert r.status_code == 200 and r.json()["next_offset"] == 1, r.text
+        r = api.get(path, params={"limit": 6})
+        assert r.status_code == 422 and r.json()["code"] == "response_too_large", r.text
+        assert r.json()["field"] == "limit"

@@ -23,9 +23,12 @@ from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.sweep import write_csv
 
 from .. import job_schemas as js
+from ..config import Settings
+from ..deps import get_settings_dep
 from ..errors import ServiceError
 from ..examples import ERRORS
 from ..jobs import JobFinished, JobNotFound, JobRunner, owner_hash, summary
+from ..responses import render_json_bounded
 from ..schemas import ErrorOut
 
 router = APIRouter(prefix="/v1/jobs", tags=["jobs"])
@@ -171,15 +174,16 @@ def list_jobs(
     responses={200: {"description": "the job", "content": {"application/json": {"example": js.JOB_EXAMPLE}}},
                401: _401, 404: _404, 422: _422_ID, 503: _503})
 def get_job(
-    runner: Runner, owner: Owner, job_id: str,
+    runner: Runner, owner: Owner, job_id: str, settings: Annotated[Settings, Depends(get_settings_dep)],
     offset: Annotated[int, Query(ge=0, le=10_000_000, description="rows to skip")] = 0,
     limit: Annotated[int, Query(ge=0, le=10_000, description="most rows returned")] = 100,
 ) -> Any:
     job = _job(runner, job_id, owner)
+    limit = min(limit, runner.results_max_limit)
     rows = runner.rows(job_id, offset, limit + 1)
-    more = len(rows) > limit
-    return {**summary(job), "spec": job["spec"], "columns": job["columns"], "results": rows[:limit],
-            "offset": offset, "next_offset": offset + limit if more else None}
+    more = len(rows) > limit and limit > 0
+    return _bounded({**summary(job), "spec": job["spec"], "columns": job["columns"], "results": rows[:limit],
+                     "offset": offset, "next_offset": offset + limit if more else None}, settings)
 
 
 @router.get(
@@ -207,6 +211,7 @@ def get_job(
         503: _503})
 def get_job_results(
     request: Request, runner: Runner, owner: Owner, job_id: str,
+    settings: Annotated[Settings, Depends(get_settings_dep)],
     format: Annotated[Literal["json", "csv"] | None, Query(
         description="json or csv (default: from the Accept header, else json)")] = None,
     offset: Annotated[int, Query(ge=0, le=10_000_000, description="rows to skip")] = 0,
@@ -223,10 +228,18 @@ def get_job_results(
     # say it); the answer's ``limit`` and ``next_offset`` say what was sent and where the rest starts.
     limit = min(RESULTS_DEFAULT_LIMIT if limit is None else limit, runner.results_max_limit)
     rows = runner.rows(job_id, offset, limit + 1)
-    more = len(rows) > limit
-    return {"id": job_id, "status": job["status"], "complete": job["status"] == "done", "total": job["total"],
-            "done": total_rows, "columns": job["columns"], "offset": offset, "limit": limit,
-            "next_offset": offset + limit if more else None, "rows": rows[:limit]}
+    more = len(rows) > limit and limit > 0          # limit = 0: the counts only, no next page
+    return _bounded({"id": job_id, "status": job["status"], "complete": job["status"] == "done",
+                     "total": job["total"], "done": total_rows, "columns": job["columns"], "offset": offset,
+                     "limit": limit, "next_offset": offset + limit if more else None, "rows": rows[:limit]},
+                    settings)
+
+
+def _bounded(content: dict[str, Any], settings: Settings) -> PlainResponse:
+    """The page rendered here (a plain ``def`` route: in the thread pool, not on the event loop), within
+    ``max_response_bytes`` (422 ``response_too_large`` naming ``limit``: ask for fewer rows)."""
+    return PlainResponse(render_json_bounded(content, settings.max_response_bytes, "limit"),
+                         media_type="application/json")
 
 
 def _csv_response(runner: JobRunner, job: dict[str, Any], offset: int, limit: int | None) -> Any:
