@@ -143,23 +143,18 @@ def _manipulator_kind(v: Any) -> str:
     return "<uniform>"
 
 
-ManipulatorIn = Annotated[
-    Union[
-        Annotated[UniformManipulatorIn, Tag("<uniform>")],
-        Annotated[SegmentedManipulatorIn, Tag("<segments>")],
-    ],
-    Discriminator(_manipulator_kind),
-    Field(description='the chain: {"n", "a", "b", "k", "L0"} (uniform) or {"segments": [...]}'),
-]
+def _manipulator_union(uniform: type, segmented: type, what: str) -> Any:
+    """The request's chain: the uniform or the segmented form, told apart by ``segments``."""
+    return Annotated[
+        Union[Annotated[uniform, Tag("<uniform>")], Annotated[segmented, Tag("<segments>")]],
+        Discriminator(_manipulator_kind),
+        Field(description=f'{what}: {{"n", "a", "b", "k", "L0"}} (uniform) or {{"segments": [...]}}'),
+    ]
 
-DesignManipulatorIn = Annotated[
-    Union[
-        Annotated[DesignUniformManipulatorIn, Tag("<uniform>")],
-        Annotated[DesignSegmentedManipulatorIn, Tag("<segments>")],
-    ],
-    Discriminator(_manipulator_kind),
-    Field(description='the chain (at most 60 segments): {"n", "a", "b", "k", "L0"} (uniform) or {"segments": [...]}'),
-]
+
+ManipulatorIn = _manipulator_union(UniformManipulatorIn, SegmentedManipulatorIn, "the chain")
+DesignManipulatorIn = _manipulator_union(DesignUniformManipulatorIn, DesignSegmentedManipulatorIn,
+                                         "the chain (at most 60 segments)")
 
 PAPER_CHAIN = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 

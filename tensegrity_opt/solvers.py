@@ -470,9 +470,8 @@ class _Model:
         if params is getattr(self, "_units_scaled", None):     # the rescaled vector itself (nested calls)
             return 1.0, 1.0, params
         n = self.n
-        a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
-        torque = float(np.max(np.maximum(k1, k2) * (a * a + b * b)))
-        length = float(np.sum(b))
+        torque = _torque_scale(params, n)
+        length = float(np.sum(params[n:2 * n]))
         if max(1.0, torque) / min(length, torque) <= UNIT_RATIO:
             val = (1.0, 1.0, params)
         else:
@@ -498,9 +497,7 @@ class _Model:
             return
         self._scale_params = params
         n = self.n
-        a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
-        torque = max(1.0, float(np.max(np.maximum(k1, k2) * (a * a + b * b))))
-        self._scale = torque * max(1.0, math.sqrt(n / DENSE_MAX))
+        self._scale = max(1.0, _torque_scale(params, n)) * max(1.0, math.sqrt(n / DENSE_MAX))
 
     def newton_kkt(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray, q0: np.ndarray,
                    F0: np.ndarray | None = None, *, tol: float = 1e-12, max_iter: int = 50,
@@ -806,6 +803,7 @@ def _active(columns: int, k: int) -> np.ndarray:
 
 
 def _torque_scale(params: np.ndarray, n: int) -> float:
+    """``max k c^2`` of the parameter vector ``[a, b, k1, k2, ...]`` (``Manipulator.torque_scale``)."""
     a, b, k1, k2 = (params[i * n:(i + 1) * n] for i in range(4))
     return float(np.max(np.maximum(k1, k2) * (a * a + b * b)))
 
