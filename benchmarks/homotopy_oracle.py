@@ -3,7 +3,7 @@
 ``python -m benchmarks.homotopy_oracle [--out tests/data/homotopy_oracle.json]`` draws random chains
 of every multistable family (bistable uniform, heterogeneous bistable, monotonic and bistable
 segments mixed, asymmetric preloads; ``n = 2..5``; targets over the workspace, ``dy != 0`` in most),
-solves each target's polynomial KKT system with PHCpack (:mod:`tensegrity_opt.homotopy`), keeps the
+solves each target's polynomial KKT system with PHCpack (:mod:`tensegrity_opt.numerics.homotopy`), keeps the
 real roots inside the physical range, polishes each with the *independent* reference model
 (``tests/reference_model.py``: its own Newton, its own Hessians; it does not import the library) and
 records ``q``, ``F``, the energy and the Morse index from the reference model's reduced Hessian.
@@ -25,7 +25,7 @@ from pathlib import Path
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.homotopy import real_configurations, solve_homotopy
+from tensegrity_opt.numerics.homotopy import real_configurations, solve_homotopy
 
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT / "tests"))

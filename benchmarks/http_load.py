@@ -53,7 +53,7 @@ def own_server(timeout: float = 60.0, env: dict[str, str] | None = None) -> Iter
     if exe is None:
         cand = os.path.join(os.path.dirname(sys.executable), "tensegrity-opt")
         exe = cand if os.path.exists(cand) else None
-    cmd = [exe] if exe else [sys.executable, "-m", "tensegrity_opt.cli"]
+    cmd = [exe] if exe else [sys.executable, "-m", "tensegrity_opt.applications.cli"]
     cmd += ["serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log", "--log-level", "warning"]
     log = tempfile.NamedTemporaryFile("w+", prefix="tensegrity-bench-server-", suffix=".log", delete=False)
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env={**os.environ, **(env or {})})

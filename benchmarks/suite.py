@@ -324,8 +324,8 @@ def case2(cfg: Config) -> list[Row]:
 
 def kernel_mode(n: int) -> str:
     """How the compiled Newton kernels run here ("compiled" with the cache directory, or the VM)."""
-    from tensegrity_opt import kernels
-    from tensegrity_opt.solvers import model
+    from tensegrity_opt.numerics import kernels
+    from tensegrity_opt.numerics.chain_solver import model
 
     k = model(n).kernel
     if k is None:
@@ -715,7 +715,7 @@ BISTABLE = {"a": 0.6, "b": 1.0, "k": 1.0, "L0": 1.2}
 
 def case9(cfg: Config) -> list[Row]:
     """Multistable chains: global solve, every equilibrium, and the certified homotopy."""
-    from tensegrity_opt.homotopy import homotopy_available
+    from tensegrity_opt.numerics.homotopy import homotopy_available
 
     rows: list[Row] = []
     reps = 3 if cfg.quick else 7

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.equilibrium import Equilibrium
+from tensegrity_opt.analyses.equilibrium import Equilibrium
 
 from . import schemas as s
 from .errors import FieldContext, error_body

@@ -1,6 +1,6 @@
 """Request and response models of the jobs API (``/v1/jobs``): a sweep spec in, job status and rows out.
 
-The request mirrors :mod:`tensegrity_opt.sweep`'s spec (``analysis``, ``manipulator``, ``grid`` |
+The request mirrors :mod:`tensegrity_opt.applications.sweeps`'s spec (``analysis``, ``manipulator``, ``grid`` |
 ``points``, ``options``). The schema checks types and ranges; the library then checks what
 depends on the analysis (which parameters it uses, dx/dy and load never together, ...) and the
 server its limits. Every refusal names the field (``grid.dx[2]``, ``points[3].load``, ...).
@@ -131,7 +131,7 @@ class JobSpec(BaseModel):
     options: SweepOptions = Field(None, description="analysis options")  # type: ignore[assignment]
 
     def to_spec(self) -> dict[str, Any]:
-        """The library's spec (``tensegrity_opt.sweep``), grid order kept."""
+        """The library's spec (``tensegrity_opt.applications.sweeps``), grid order kept."""
         out: dict[str, Any] = {"analysis": self.analysis, "manipulator": self.manipulator.model_dump()}
         if self.grid is not None:
             out["grid"] = self.grid.ordered()

@@ -30,11 +30,11 @@ thread raises :class:`PointTimeout` in a runner thread whose point is late
 (``PyThreadState_SetAsyncExc``, the mechanism of :mod:`service.pool`); it lands at the thread's next
 bytecode, i.e. once the CasADi/IPOPT call in progress returns, and the point's row becomes the
 error ``timeout: ...``; the job goes on. In-process rather than a killable subprocess per point: no
-process start-up and solver rebuild per point, rows identical to ``tensegrity_opt.sweep``'s; the
+process start-up and solver rebuild per point, rows identical to ``tensegrity_opt.applications.sweeps``'s; the
 price is that one native call longer than the limit runs to its end (the library bounds each IPOPT
 call itself: ``ipopt.max_wall_time`` 20 s, 60 s for a design NLP, so a late point ends at most that
 long after its deadline). ``local`` or ``tcp://host:port``
-sends the points to Dask (:func:`tensegrity_opt.sweep.sweep`; no per-point limit there).
+sends the points to Dask (:func:`tensegrity_opt.applications.sweeps.sweep`; no per-point limit there).
 
 Leases: several servers on one file
 -----------------------------------
@@ -104,12 +104,12 @@ from .config import Settings
 from .pool import _set_async_exc
 from .responses import json_safe
 
-# Names, not the module: ``tensegrity_opt.sweep`` may be re-exported as the function.
-from tensegrity_opt.sweep import count_points, format_error, validate_spec  # noqa: I001
-from tensegrity_opt.sweep import columns as sweep_columns
-from tensegrity_opt.sweep import error_row, solve_chunk
-from tensegrity_opt.sweep import plan as plan_sweep
-from tensegrity_opt.sweep import sweep as run_sweep
+# Names, not the module: ``tensegrity_opt.applications.sweeps`` may be re-exported as the function.
+from tensegrity_opt.applications.sweeps import count_points, format_error, validate_spec  # noqa: I001
+from tensegrity_opt.applications.sweeps import columns as sweep_columns
+from tensegrity_opt.applications.sweeps import error_row, solve_chunk
+from tensegrity_opt.applications.sweeps import plan as plan_sweep
+from tensegrity_opt.applications.sweeps import sweep as run_sweep
 
 log = logging.getLogger("service.jobs")
 

@@ -509,7 +509,7 @@ class Limits(BaseModel):
 
 
 class KernelsOut(BaseModel):
-    """How the compiled Newton kernels run in this server process (`tensegrity_opt.kernels`)."""
+    """How the compiled Newton kernels run in this server process (`tensegrity_opt.numerics.kernels`)."""
 
     compiler: str | None = Field(description="the C compiler used; null: none (kernels run in CasADi's VM)")
     max_segments: int = Field(description="chains up to this long have kernels")

@@ -12,24 +12,44 @@ Quick start::
     ('U', True)
 """
 
-from .batch import solve_equilibria_batch
-from .buckling import Buckling, Mode, critical_force
-from .curves import Curve, Jump, force_deflection
-from .design import (Design, PreloadDesign, choose_preloads, critical_load_sensitivity, equilibrium_sensitivity,
-                     maximize_critical_force, preloads_for_critical_force)
-from .equilibria import EquilibriumSet, find_equilibria
-from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
-from .errors import (HomotopyUnavailableError, InfeasibleDesignError, InvalidParameterError, NoEquilibriumError,
-                     SolverError, StraightNotEquilibriumError, TensegrityError, TimeLimitError,
-                     UnreachableTargetError, UnstableStraightError, UnsupportedError)
-from .landscape import Landscape, energy_landscape
-from .manipulator import Manipulator
-from .segment import Segment
-from .shapes import shape_label, sign_string
-from .stiffness import cartesian_stiffness
-from .sweep import SweepResult, sweep
+from .analyses.all_equilibria import EquilibriumSet, find_equilibria
+from .analyses.buckling import Buckling, Mode, critical_force
+from .analyses.continuation import Tracker, solve_equilibria_batch
+from .analyses.curves import Curve, Jump, force_deflection
+from .analyses.design import (
+                     Design,
+                     PreloadDesign,
+                     choose_preloads,
+                     critical_load_sensitivity,
+                     equilibrium_sensitivity,
+                     maximize_critical_force,
+                     preloads_for_critical_force,
+)
+from .analyses.equilibrium import (
+                     Equilibrium,
+                     solve_equilibrium,
+                     solve_equilibrium_under_force,
+)
+from .analyses.landscape import Landscape, energy_landscape
+from .analyses.stiffness import cartesian_stiffness
+from .applications.sweeps import SweepResult, sweep
+from .errors import (
+                     HomotopyUnavailableError,
+                     InfeasibleDesignError,
+                     InvalidParameterError,
+                     NoEquilibriumError,
+                     SolverError,
+                     StraightNotEquilibriumError,
+                     TensegrityError,
+                     TimeLimitError,
+                     UnreachableTargetError,
+                     UnstableStraightError,
+                     UnsupportedError,
+)
+from .model.manipulator import Manipulator
+from .model.segment import Segment
+from .model.shapes import shape_label, sign_string
 from .timelimit import time_limit
-from .tracking import Tracker
 
 __version__ = "0.1.0"
 

@@ -22,7 +22,7 @@ def free_port() -> int:
 def serve_command(port: int) -> list[str]:
     """``tensegrity-opt serve`` on ``port`` (the console script, or the module when not on PATH)."""
     exe = shutil.which("tensegrity-opt")
-    base = [exe] if exe else [sys.executable, "-m", "tensegrity_opt.cli"]
+    base = [exe] if exe else [sys.executable, "-m", "tensegrity_opt.applications.cli"]
     return [*base, "serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log", "--log-level", "warning"]
 
 

@@ -24,7 +24,7 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt.homotopy import homotopy_available
+from tensegrity_opt.numerics.homotopy import homotopy_available
 
 import reference_model as ref
 
@@ -378,7 +378,7 @@ def test_homotopy_refuses_long_chains_and_unknown_methods():
 
 def test_polynomial_system_vanishes_at_a_true_equilibrium():
     """The Laurent system evaluated (numpy) at an equilibrium found by the independent reference model."""
-    from tensegrity_opt.homotopy import residuals
+    from tensegrity_opt.numerics.homotopy import residuals
 
     m = to.Manipulator([to.Segment(0.6, 1.0, (1.0, 1.4), (0.7, 0.9)), to.Segment(0.5, 0.9, 1.2, 0.5),
                         to.Segment(0.7, 1.1, 0.8, 1.6)])
@@ -450,8 +450,8 @@ def test_heterogeneous_n7_least_energy_near_the_joint_limit():
 def test_sampled_starts_rows_are_true_equilibria():
     """newton_kkt_seeds(python_fallback=False) continues unconverged rows in batched kernel calls: every
     row it marks converged is an equilibrium in numpy (residual, range), whatever round settled it."""
-    from tensegrity_opt.seeds import project_to_target
-    from tensegrity_opt.solvers import model
+    from tensegrity_opt.analyses.seeds import project_to_target
+    from tensegrity_opt.numerics.chain_solver import model
 
     m = to.Manipulator.uniform(6, 0.6, 1, 1, 1.2)
     target = m.target(1.5, 0.4)
@@ -468,7 +468,7 @@ def test_sampled_starts_rows_are_true_equilibria():
 def test_distinct_rows_of_large_samples_match_the_pairwise_test():
     """The bisected comparison used beyond 64 rows keeps exactly the rows distinct_rows keeps (the
     k x k pairwise test), also where near-coincident rows chain (noise ~ SAME_Q / 2)."""
-    from tensegrity_opt.equilibrium import SAME_Q, _distinct_indices, distinct_rows
+    from tensegrity_opt.analyses.equilibrium import SAME_Q, _distinct_indices, distinct_rows
 
     rng = np.random.default_rng(0)
     base = rng.uniform(-1, 1, (100, 5))

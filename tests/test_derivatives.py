@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from tensegrity_opt import Manipulator, Segment
-from tensegrity_opt.solvers import model
+from tensegrity_opt.numerics.chain_solver import model
 
 CHAINS = [Manipulator.uniform(4),
           Manipulator([Segment(1.0, 1.0, 1.0, 1.0), Segment(0.9, 1.3, 2.0, 1.5), Segment(1.1, 0.8, (0.7, 1.1),

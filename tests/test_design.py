@@ -9,7 +9,7 @@ import scipy.linalg as sla
 import scipy.optimize as so
 
 import tensegrity_opt as to
-from tensegrity_opt.design import (K_FLOOR_REL, InfeasibleDesignError, choose_preloads, critical_load_sensitivity,
+from tensegrity_opt.analyses.design import (K_FLOOR_REL, InfeasibleDesignError, choose_preloads, critical_load_sensitivity,
                                    equilibrium_sensitivity, maximize_critical_force,
                                    preloads_for_critical_force)
 

@@ -5,10 +5,10 @@ import doctest
 import pytest
 
 import tensegrity_opt
-import tensegrity_opt.tracking
+import tensegrity_opt.analyses.continuation
 
 
-@pytest.mark.parametrize("module", [tensegrity_opt, tensegrity_opt.tracking])
+@pytest.mark.parametrize("module", [tensegrity_opt, tensegrity_opt.analyses.continuation])
 def test_docstring_examples(module):
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.attempted > 0 and result.failed == 0

@@ -8,7 +8,7 @@ import pytest
 from tensegrity_opt import (InvalidParameterError, Manipulator, NoEquilibriumError, Segment,
                             UnreachableTargetError, critical_force, solve_equilibrium,
                             solve_equilibrium_under_force)
-from tensegrity_opt.landscape import complete_configuration
+from tensegrity_opt.analyses.landscape import complete_configuration
 
 PAPER = Manipulator.uniform(4)
 
@@ -124,7 +124,7 @@ def test_force_control_round_trip_with_displacement_control():
 def test_displacement_stable_can_be_dead_load_unstable():
     """Under a prescribed tip the post-buckled U shape is stable; under the same dead load it is
     not (its Hessian without the tip constraint has a negative eigenvalue), so IPOPT leaves it."""
-    from tensegrity_opt.stability import classify
+    from tensegrity_opt.analyses.stability import classify
     deq = solve_equilibrium(PAPER, 0.3, 0.5)
     assert classify(PAPER, deq.q, deq.force, constrained=True).morse_index == 0
     assert classify(PAPER, deq.q, deq.force, constrained=False).morse_index == 1
@@ -205,8 +205,8 @@ def test_least_energy_search_keeps_what_the_full_search_would_pick(m):
     """search_stable(least=True) classifies in order of energy and stops after the least stable energy;
     what it returns is exactly the full search's stable set cut to the ties of its least energy
     (the same objects' numbers, in the same order), and the unstable count is never larger."""
-    from tensegrity_opt.equilibrium import search_stable
-    from tensegrity_opt.seeds import seed_starts
+    from tensegrity_opt.analyses.equilibrium import search_stable
+    from tensegrity_opt.analyses.seeds import seed_starts
 
     L = m.straight_length
     for dx in np.linspace(0.02, 0.6 * L, 5):

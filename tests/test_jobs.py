@@ -1,7 +1,7 @@
 """Sweep jobs: the ``/v1/jobs`` API (TestClient), the SQLite store, resuming, and a real server
 process killed with SIGKILL mid-job and restarted on the same database.
 
-The expected rows are ``tensegrity_opt.sweep.sweep`` run directly on the same spec.
+The expected rows are ``tensegrity_opt.applications.sweeps.sweep`` run directly on the same spec.
 """
 
 from __future__ import annotations
@@ -32,8 +32,8 @@ from service.config import Settings
 from service.main import create_app
 from servers import clean_env, free_port, stop, uvicorn_factory_command, wait_ready
 
-# the module (``tensegrity_opt.sweep`` itself may be re-exported as the function)
-S = importlib.import_module("tensegrity_opt.sweep")
+# the module (``tensegrity_opt.applications.sweeps`` itself may be re-exported as the function)
+S = importlib.import_module("tensegrity_opt.applications.sweeps")
 
 ROOT = Path(__file__).resolve().parents[1]
 

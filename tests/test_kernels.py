@@ -1,4 +1,4 @@
-"""The compiled Newton kernels (tensegrity_opt.kernels) against independent computations.
+"""The compiled Newton kernels (tensegrity_opt.numerics.kernels) against independent computations.
 
 Expected values come from the numpy model of ``Manipulator`` (energy, tip, equilibrium residual),
 the library's QR route for the reduced Hessian (``stability.reduced_hessian``), the Python Newton
@@ -15,10 +15,10 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt import kernels
-from tensegrity_opt.seeds import seeds
-from tensegrity_opt.solvers import model
-from tensegrity_opt.stability import inertia_of_reduced, reduced_hessian
+from tensegrity_opt.numerics import kernels
+from tensegrity_opt.analyses.seeds import seed_starts, seeds
+from tensegrity_opt.numerics.chain_solver import model
+from tensegrity_opt.analyses.stability import inertia_of_reduced, reduced_hessian
 
 from reference_model import Chain
 
@@ -134,7 +134,7 @@ def test_seed_call_marks_the_distinct_converged_rows(name):
     reach = 2 * float(np.sum(m.b))
     dup = 0
     for dx, dy in [(0.02 * reach, 0.0), (0.1 * reach, 0.03 * reach), (0.3 * reach, 0.0)]:
-        starts = to.seeds.seed_starts(m, dx, dy)
+        starts = seed_starts(m, dx, dy)
         k = starts.shape[0]
         src = np.zeros((cols, m.n))
         src[:k] = starts
@@ -153,7 +153,7 @@ def test_search_rows_carry_the_distinct_marks_only_when_one_call_settled_every_s
     m = CHAINS["paper"]
     mdl = model(4)
     target = m.target(0.1, 0.0)
-    starts = to.seeds.seed_starts(m, 0.1, 0.0)
+    starts = seed_starts(m, 0.1, 0.0)
     b = mdl.newton_kkt_seeds(m.params, m.joint_limits, target, starts, 1e-7)
     assert b.distinct is not None and bool(b.success.all())
     good = b.success & ~b.on_bound
@@ -164,7 +164,7 @@ def test_search_rows_carry_the_distinct_marks_only_when_one_call_settled_every_s
 def test_more_starts_than_one_call_takes_leave_the_comparison_to_the_caller():
     m = CHAINS["paper"]
     mdl = model(4)
-    starts = np.vstack([to.seeds.seed_starts(m, 0.4, 0.0)] * 2)
+    starts = np.vstack([seed_starts(m, 0.4, 0.0)] * 2)
     assert starts.shape[0] > kernels.seed_columns(4)
     b = mdl.newton_kkt_seeds(m.params, m.joint_limits, m.target(0.4, 0.0), starts, 1e-7)
     assert b.distinct is None
@@ -209,7 +209,7 @@ _CHILD = textwrap.dedent("""
     warnings.simplefilter("always")
     with warnings.catch_warnings(record=True) as caught:
         import tensegrity_opt as to
-        from tensegrity_opt.solvers import model
+        from tensegrity_opt.numerics.chain_solver import model
         m = to.Manipulator.uniform(4)
         out = [to.solve_equilibrium(m, dx, dy).q.tolist() for dx, dy in [(0.1, 0.0), (0.9, 0.4)]]
         mode = model(4).kernel[0].mode

@@ -6,7 +6,7 @@ from scipy.optimize import minimize
 
 from tensegrity_opt import (InvalidParameterError, Manipulator, UnsupportedError, energy_landscape,
                             find_equilibria)
-from tensegrity_opt.landscape import complete_configuration
+from tensegrity_opt.analyses.landscape import complete_configuration
 
 PAPER = Manipulator.uniform(4)
 

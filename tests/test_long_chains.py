@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt import solvers
-from tensegrity_opt.stability import inertia_of
+from tensegrity_opt.numerics import chain_solver as solvers
+from tensegrity_opt.analyses.stability import inertia_of
 
 
 def wavy_chain(n):
@@ -88,8 +88,8 @@ def test_long_chain_force_control_and_curve():
 def test_seed_results_of_a_long_chain_hold_no_dense_reduced_hessians():
     """Without kernels (n > 8) the seed results carry no reduced Hessians: for n = 10000 a (k, n-2, n-2)
     array would be 800 MB a start (it once was, and the n = 10000 solve took 1.8 s instead of 0.2 s)."""
-    from tensegrity_opt.seeds import seed_starts
-    from tensegrity_opt.solvers import model
+    from tensegrity_opt.analyses.seeds import seed_starts
+    from tensegrity_opt.numerics.chain_solver import model
 
     m = to.Manipulator.uniform(300)
     dx = 0.05 * m.straight_length

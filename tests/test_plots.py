@@ -25,9 +25,9 @@ pytest.importorskip("matplotlib")
 from matplotlib.colors import to_rgba
 
 import tensegrity_opt as to
-from tensegrity_opt import plots
+from tensegrity_opt.applications import plots
 from tensegrity_opt.errors import InvalidParameterError, UnreachableTargetError, UnsupportedError
-from tensegrity_opt.landscape import complete_configuration
+from tensegrity_opt.analyses.landscape import complete_configuration
 
 ROOT = Path(__file__).resolve().parents[1]
 PAPER = to.Manipulator.uniform(4, a=1.0, b=1.0, k=1.0, L0=1.0)
@@ -316,11 +316,11 @@ def test_save_chooses_the_format_by_suffix(tmp_path):
 
 def test_library_imports_without_matplotlib(tmp_path):
     code = ("import sys; sys.modules['matplotlib'] = None\n"
-            "import numpy as np, tensegrity_opt as to, tensegrity_opt.plots as p, tensegrity_opt.plot_cli\n"
+            "import numpy as np, tensegrity_opt as to, tensegrity_opt.applications.plots as p, tensegrity_opt.applications.cli.plot\n"
             "m = to.Manipulator.uniform(4)\n"
             "assert np.allclose(p.chain_geometry(m, np.zeros(4))['tip'], [8, 0])\n"
             "try:\n    p.plot_torque(to.Segment(1, 1))\nexcept ImportError as e:\n    print('ImportError', e)\n"
-            "assert tensegrity_opt.plot_cli.main(['torque', '-o', 'x.png']) == 2\n")
+            "assert tensegrity_opt.applications.cli.plot.main(['torque', '-o', 'x.png']) == 2\n")
     env = {**os.environ, "PYTHONPATH": os.pathsep.join([str(ROOT), os.environ.get("PYTHONPATH", "")])}
     out = subprocess.run([sys.executable, "-c", code], check=False, capture_output=True, text=True, cwd=tmp_path,
                          env=env, timeout=120)
@@ -331,7 +331,7 @@ def test_library_imports_without_matplotlib(tmp_path):
 
 # ---------------------------------------------------------------------------- command line
 def _parser() -> argparse.ArgumentParser:
-    from tensegrity_opt.plot_cli import add_plot_parser
+    from tensegrity_opt.applications.cli.plot import add_plot_parser
 
     p = argparse.ArgumentParser(prog="tensegrity-opt")
     sub = p.add_subparsers(dest="command", required=True)
@@ -340,7 +340,7 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _run(argv: list[str]):
-    from tensegrity_opt.cli import _manipulator
+    from tensegrity_opt.applications.cli import _manipulator
 
     args = _parser().parse_args(argv)
     return args.func(args, _manipulator(args))
@@ -365,7 +365,7 @@ def test_cli_writes_png_and_svg(tmp_path, argv):
 
 
 def test_cli_options_and_errors(tmp_path, capsys):
-    from tensegrity_opt import plot_cli
+    from tensegrity_opt.applications.cli import plot as plot_cli
 
     data, _ = _run(["plot", "curve", "--num", "3", "--stop", "0.2", "--branch", "all", "-o", str(tmp_path / "c.png")])
     assert data["branches"] == 6 and data["jumps"] == ["buckling"]
@@ -382,7 +382,7 @@ def test_cli_options_and_errors(tmp_path, capsys):
                           str(tmp_path / "m.png")]) == 2
     assert plot_cli.main(["torque", "--json", "-o", str(tmp_path / "t.svg")]) == 0
     assert json.loads(capsys.readouterr().out)["segments"] == [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]
-    from tensegrity_opt import cli
+    from tensegrity_opt.applications import cli
 
     if "plot" in cli.build_parser()._subparsers._group_actions[0].choices:     # once wired into cli.py
         assert cli.main(["plot", "torque", "-o", str(tmp_path / "w.png")]) == 0

@@ -24,7 +24,7 @@ with warnings.catch_warnings():
     from fastapi.testclient import TestClient
 
 import tensegrity_opt as to
-from tensegrity_opt.homotopy import homotopy_available
+from tensegrity_opt.numerics.homotopy import homotopy_available
 from service.config import Settings
 from service.main import create_app
 
@@ -306,7 +306,7 @@ def test_health_ready_version(client):
     assert r.status_code == 200 and r.json()["status"] == "ready"
     v = client.get("/version").json()
     assert v["version"] == to.__version__ and v["library_version"] == to.__version__
-    from tensegrity_opt import kernels
+    from tensegrity_opt.numerics import kernels
     assert v["limits"]["inline_max_segments"] == 8
     client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.1})      # loads the n = 4 kernels
     k = client.get("/version").json()["kernels"]

@@ -112,7 +112,7 @@ def test_no_stray_cancellation_hits_later_calls():
 
 def test_each_call_runs_on_one_worker_thread_with_its_own_solvers():
     """Library calls in the pool agree with the main thread's; each worker owns its CasADi model."""
-    from tensegrity_opt.solvers import model
+    from tensegrity_opt.numerics.chain_solver import model
 
     pool = SolverPool(2, 64)
     m = to.Manipulator.uniform(4)

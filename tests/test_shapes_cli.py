@@ -7,7 +7,7 @@ import sys
 import pytest
 
 from tensegrity_opt import shape_label, sign_string
-from tensegrity_opt.cli import main
+from tensegrity_opt.applications.cli import main
 
 
 @pytest.mark.parametrize("q,label,signs", [
@@ -54,7 +54,7 @@ def test_cli_errors(capsys, tmp_path):
 
 
 def test_console_script_runs():
-    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.cli", "buckling"], capture_output=True, text=True,
+    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"], capture_output=True, text=True,
                        check=True)
     assert "critical force Fx0 = -0.572793" in r.stdout
 
@@ -62,7 +62,7 @@ def test_console_script_runs():
 def test_vectorised_shape_labels_equal_the_row_by_row_labels():
     import numpy as np
 
-    from tensegrity_opt.shapes import shape_label, shape_labels
+    from tensegrity_opt.model.shapes import shape_label, shape_labels
 
     rng = np.random.default_rng(0)
     Q = rng.standard_normal((3000, 7)) * (rng.random((3000, 7)) > 0.3)

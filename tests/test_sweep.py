@@ -1,4 +1,4 @@
-"""Sweeps (``tensegrity_opt.sweep``): expansion, validation, each analysis against direct library
+"""Sweeps (``tensegrity_opt.applications.sweeps``): expansion, validation, each analysis against direct library
 calls, file round-trips, failing points, skip/resume, cancellation, Dask and the CLI command.
 
 These are integration tests of the sweep machinery: the expected numbers come from the library's
@@ -17,10 +17,10 @@ import pytest
 
 import tensegrity_opt as to
 from tensegrity_opt.errors import InvalidParameterError
-from tensegrity_opt.sweep_cli import add_sweep_parser
+from tensegrity_opt.applications.cli.sweep import add_sweep_parser
 
-# the module (``tensegrity_opt.sweep`` itself may be re-exported as the function)
-S = importlib.import_module("tensegrity_opt.sweep")
+# the module (``tensegrity_opt.applications.sweeps`` itself may be re-exported as the function)
+S = importlib.import_module("tensegrity_opt.applications.sweeps")
 
 EXACT = {"rel": 1e-12, "abs": 1e-12}
 

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt import design_solvers
+from tensegrity_opt.numerics import design_nlp as design_solvers
 from tensegrity_opt.timelimit import check_time, remaining
 
 ALL = ("a", "b", "k", "L0")

@@ -20,7 +20,7 @@ from starlette.responses import Response as PlainResponse
 from starlette.responses import StreamingResponse
 
 from tensegrity_opt.errors import InvalidParameterError
-from tensegrity_opt.sweep import write_csv
+from tensegrity_opt.applications.sweeps import write_csv
 
 from .. import job_schemas as js
 from ..config import Settings
@@ -117,7 +117,7 @@ def _job(runner: JobRunner, job_id: str, owner: str | None) -> dict[str, Any]:
     "", operation_id="submit_job", status_code=202, response_model=js.JobCreated,
     summary="Submit a sweep as a background job",
     description="Body: a sweep spec (`analysis`, `manipulator`, `grid` | `points`, `options`; see "
-                "`tensegrity_opt.sweep`). Answers 202 at once with the job `id` and its number of points. A "
+                "`tensegrity_opt.applications.sweeps`). Answers 202 at once with the job `id` and its number of points. A "
                 "server runs at most `TENSEGRITY_JOBS_MAX_RUNNING` jobs at a time; jobs take turns of "
                 "`TENSEGRITY_JOBS_SLICE_SECONDS` (round-robin in order of arrival), so a huge job does not hold "
                 "later ones `queued`. A point longer than `TENSEGRITY_JOBS_POINT_TIMEOUT` becomes an error row "

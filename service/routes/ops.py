@@ -8,7 +8,7 @@ from fastapi import APIRouter, Request
 from starlette.responses import JSONResponse, Response
 
 import tensegrity_opt
-from tensegrity_opt import kernels
+from tensegrity_opt.numerics import kernels
 
 from .. import schemas as s
 from ..metrics import CONTENT_TYPE_LATEST

@@ -4,7 +4,7 @@ Each route validates its request, then draws the figure in the solver pool (the 
 and matplotlib's rendering are both CPU-bound) and answers the bytes: ``image/png`` by
 default, ``image/svg+xml`` when the body says ``"format": "svg"`` or, without ``format``, when
 the ``Accept`` header prefers ``image/svg+xml``. Refusals are the usual JSON ``ErrorOut``.
-Drawing uses :mod:`tensegrity_opt.plots` (matplotlib objects only, no pyplot: thread-safe).
+Drawing uses :mod:`tensegrity_opt.applications.plots` (matplotlib objects only, no pyplot: thread-safe).
 """
 
 from __future__ import annotations
@@ -80,20 +80,20 @@ def negotiate(fmt: str | None, accept: str | None) -> str:
 
 # ---------------------------------------------------------------------------- jobs (solver threads)
 def _image(fig: Any, fmt: str, dpi: int) -> bytes:
-    from tensegrity_opt import plots
+    from tensegrity_opt.applications import plots
 
     return plots.render(fig, fmt, dpi=dpi)
 
 
 def plot_curve_job(req: ps.PlotCurveRequest, fmt: str) -> bytes:
-    from tensegrity_opt import plots
+    from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
     return _image(plots.plot_curve(m, deflections(req.dx), req.dy, req.branch), fmt, req.dpi)
 
 
 def plot_landscape_job(req: ps.PlotLandscapeRequest, fmt: str) -> bytes:
-    from tensegrity_opt import plots
+    from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
     span: float | str = "auto" if req.span is None else req.span
@@ -102,14 +102,14 @@ def plot_landscape_job(req: ps.PlotLandscapeRequest, fmt: str) -> bytes:
 
 
 def plot_shapes_job(req: ps.PlotShapesRequest, fmt: str) -> bytes:
-    from tensegrity_opt import plots
+    from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
     return _image(plots.plot_shapes(m, req.dx, req.dy, max_panels=req.max_panels), fmt, req.dpi)
 
 
 def plot_torque_job(req: ps.PlotTorqueRequest, fmt: str) -> bytes:
-    from tensegrity_opt import plots
+    from tensegrity_opt.applications import plots
 
     segs = [build_segment(sg) for sg in req.segments]
     q = None if req.q is None else np.linspace(req.q.start, req.q.stop, req.q.num)
@@ -123,7 +123,7 @@ def _values(v: list[float] | ps.MapValuesRange) -> np.ndarray:
 
 
 def plot_map_job(req: ps.PlotMapRequest, fmt: str) -> bytes:
-    from tensegrity_opt import plots
+    from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
     fig = plots.plot_map(m, req.param_x, _values(req.values_x), req.param_y, _values(req.values_y), req.boundary)

@@ -21,7 +21,7 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InvalidParameterError, UnreachableTargetError
+from ..errors import InvalidParameterError, UnreachableTargetError
 from .segment import Segment
 
 __all__ = ["Manipulator"]

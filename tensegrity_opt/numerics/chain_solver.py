@@ -32,9 +32,9 @@ import numpy as np
 import scipy.linalg as sla
 from scipy.linalg.lapack import dgesv as _dgesv
 
+from ..timelimit import check_time
 from . import kernels as _kernels
 from .expressions import kkt_graph
-from .timelimit import check_time
 
 __all__ = ["LocalResult", "SeedResults", "Continuation", "model", "IPOPT_OPTIONS"]
 

@@ -28,8 +28,8 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg as sla
 
-from .manipulator import Manipulator
-from .solvers import model
+from ..model.manipulator import Manipulator
+from ..numerics.chain_solver import model
 
 __all__ = ["Inertia", "classify", "analyse", "classify_batch", "classify_reduced", "reduced_hessian",
            "inertia_of_reduced"]

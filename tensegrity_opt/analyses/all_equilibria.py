@@ -25,13 +25,21 @@ from __future__ import annotations
 
 import numpy as np
 
-from .equilibrium import (Equilibrium, check_q0, one_segment_equilibrium, straight_equilibrium, is_equilibrium,
-                          local_equilibrium, make_equilibrium, RESIDUAL_TOL)
-from .errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
-from .manipulator import Manipulator
+from ..errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
+from ..model.manipulator import Manipulator
+from ..numerics.chain_solver import model
+from ..numerics.kernels import KERNEL_MAX
+from .equilibrium import (
+    RESIDUAL_TOL,
+    Equilibrium,
+    check_q0,
+    is_equilibrium,
+    local_equilibrium,
+    make_equilibrium,
+    one_segment_equilibrium,
+    straight_equilibrium,
+)
 from .seeds import projected_sample, seeds, well_seeds
-from .kernels import KERNEL_MAX
-from .solvers import model
 
 __all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
 
@@ -220,8 +228,8 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from .homotopy import real_configurations, rest_points_at, solve_homotopy
-    from .solvers import LocalResult
+    from ..numerics.chain_solver import LocalResult
+    from ..numerics.homotopy import real_configurations, rest_points_at, solve_homotopy
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "

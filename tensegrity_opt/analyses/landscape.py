@@ -16,8 +16,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import InvalidParameterError, UnsupportedError
-from .manipulator import Manipulator
+from ..errors import InvalidParameterError, UnsupportedError
+from ..model.manipulator import Manipulator
 
 __all__ = ["Landscape", "energy_landscape", "complete_configuration"]
 

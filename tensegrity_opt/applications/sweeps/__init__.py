@@ -65,13 +65,13 @@ from typing import Any
 
 import numpy as np
 
-from .buckling import critical_force
-from .design import maximize_critical_force
-from .equilibria import find_equilibria
-from .equilibrium import solve_equilibrium, solve_equilibrium_under_force
-from .errors import InvalidParameterError, TensegrityError
-from .manipulator import Manipulator
-from .stiffness import cartesian_stiffness
+from ...analyses.all_equilibria import find_equilibria
+from ...analyses.buckling import critical_force
+from ...analyses.design import maximize_critical_force
+from ...analyses.equilibrium import solve_equilibrium, solve_equilibrium_under_force
+from ...analyses.stiffness import cartesian_stiffness
+from ...errors import InvalidParameterError, TensegrityError
+from ...model.manipulator import Manipulator
 
 __all__ = ["ANALYSES", "PARAMETERS", "RESULT_COLUMNS", "MAX_POINTS", "SweepResult", "validate_spec", "expand",
            "count_points", "columns", "column_types", "evaluate_point", "solve_chunk", "sweep", "format_error",

@@ -49,14 +49,14 @@ from typing import Any
 
 import numpy as np
 
-from .buckling import critical_force
-from .curves import Curve, force_deflection
-from .equilibria import find_equilibria
-from .equilibrium import Equilibrium
-from .errors import InvalidParameterError, TensegrityError
-from .landscape import complete_configuration, energy_landscape
-from .manipulator import Manipulator
-from .segment import Segment
+from ..analyses.all_equilibria import find_equilibria
+from ..analyses.buckling import critical_force
+from ..analyses.curves import Curve, force_deflection
+from ..analyses.equilibrium import Equilibrium
+from ..analyses.landscape import complete_configuration, energy_landscape
+from ..errors import InvalidParameterError, TensegrityError
+from ..model.manipulator import Manipulator
+from ..model.segment import Segment
 
 __all__ = ["chain_geometry", "plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "save",
            "render", "landscape_span", "critical_load_grid", "curve_breaks", "physical_range",

@@ -20,7 +20,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from .errors import TensegrityError
+from ...errors import TensegrityError
 
 __all__ = ["add_sweep_parser", "cmd_sweep"]
 
@@ -56,7 +56,7 @@ def _load_spec(path: str) -> Any:
 
 
 def cmd_sweep(args: argparse.Namespace) -> int:
-    from .sweep import sweep, validate_spec
+    from ..sweeps import sweep, validate_spec
 
     def fail(msg: object) -> int:
         print(f"tensegrity-opt: error: {msg}", file=sys.stderr)

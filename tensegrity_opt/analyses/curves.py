@@ -30,24 +30,32 @@ equilibrium there: such points carry ``status = "straight_not_equilibrium"`` and
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import Literal
 
 import numpy as np
 
-from .batch import continuation_prefix
+from ..errors import (
+    InvalidParameterError,
+    NoEquilibriumError,
+    StraightNotEquilibriumError,
+    TensegrityError,
+    TimeLimitError,
+)
+from ..model.manipulator import Manipulator
+from ..model.shapes import shape_label, shape_labels
+from ..timelimit import check_time
+from .all_equilibria import find_equilibria
 from .buckling import critical_force
-from .equilibria import find_equilibria
-from .equilibrium import (WELLS_MAX, Equilibrium, make_equilibrium, search_stable, straight_equilibrium,
-                          solve_equilibrium)
-from .errors import (InvalidParameterError, NoEquilibriumError, StraightNotEquilibriumError, TensegrityError,
-                     TimeLimitError)
-from .manipulator import Manipulator
+from .continuation import BranchPoints, follow
+from .equilibrium import (
+    WELLS_MAX,
+    Equilibrium,
+    search_stable,
+    solve_equilibrium,
+    straight_equilibrium,
+)
 from .seeds import seed_starts, well_seeds
-from .shapes import shape_label, shape_labels
-from .solvers import model
-from .timelimit import check_time
 
 __all__ = ["Curve", "Jump", "force_deflection"]
 
@@ -112,24 +120,6 @@ class Curve:
     branches: list["Curve"] = field(default_factory=list, repr=False)
 
 
-class _Branch:
-    """One branch followed over the points of a run (arrays over all points of the curve)."""
-
-    def __init__(self, bid: int, npts: int, n: int) -> None:
-        self.id = bid
-        self.q = np.full((npts, n), np.nan)
-        self.F = np.full((npts, 2), np.nan)
-        self.E = np.full(npts, np.nan)
-        self.morse = np.full(npts, -1, dtype=int)
-        self.stable = np.zeros(npts, dtype=bool)
-        self.valid = np.zeros(npts, dtype=bool)
-        self.status = ["nan"] * npts
-
-    def set(self, i: int, eq: Equilibrium) -> None:
-        self.q[i], self.F[i], self.E[i] = eq.q, eq.force, eq.energy
-        self.morse[i], self.stable[i], self.valid[i], self.status[i] = eq.morse_index, eq.stable, True, eq.status
-
-
 def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
     dxs = np.atleast_1d(np.asarray(dx, dtype=float))
     if dxs.ndim != 1 or dxs.size == 0:
@@ -146,48 +136,6 @@ def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
     if far.size:
         m.check_reachable(dxs[far[0]], dys[far[0]])      # raises with the full message
     return dxs, dys
-
-
-def _follow(m: Manipulator, br: _Branch, start: int, stop: int, targets: np.ndarray, dxs, dys) -> None:
-    """Continue ``br`` from its solution at ``start`` over the points ``start+1 .. stop-1``."""
-    mdl = model(m.n)
-    n = m.n
-    if n == 1:                       # no continuation: every point is fixed by its target
-        for i in range(start + 1, stop):
-            try:
-                br.set(i, solve_equilibrium(m, dxs[i], dys[i]))
-            except TimeLimitError:
-                raise
-            except TensegrityError:
-                return
-        return
-    lim = m.joint_limits
-    s = start
-    while s + 1 < stop:
-        check_time("the force-deflection curve")
-        if mdl.dense:
-            pre = continuation_prefix(m, targets[s + 1:stop], br.q[s], br.F[s])
-            good = pre.q.shape[0]
-            if good:
-                idx = np.arange(s + 1, s + 1 + good)
-                br.q[idx], br.F[idx], br.E[idx] = pre.q, pre.force, pre.energy
-                br.morse[idx], br.stable[idx], br.valid[idx] = pre.morse_index, pre.stable, True
-                for i in idx:
-                    br.status[i] = "Newton_Converged"
-                s += good
-        if s + 1 >= stop:
-            break
-        # damped Newton (square-root predictor near the straight chain) for the next point
-        i = s + 1
-        q0, F0 = br.q[s], br.F[s]
-        if dys[i] == 0.0 and dys[s] == 0.0 and dxs[s] > 0.0 and dxs[i] > 0.0:
-            r = math.sqrt(dxs[i] / dxs[s])
-            q0, F0 = q0 * r, np.array([F0[0], F0[1] * r])
-        res = mdl.newton_kkt(m.params, lim, targets[i], q0, F0)
-        if not (res.success and np.all(np.abs(res.q) < lim)):
-            return                      # the branch ends here
-        br.set(i, make_equilibrium(m, res, constrained=True))
-        s = i
 
 
 def _newton_stable(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
@@ -247,16 +195,16 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     npts, n = dxs.size, m.n
     targets = np.column_stack([m.straight_length - dxs, dys])
     straight = (dxs == 0.0) & (dys == 0.0)
-    branches: list[_Branch] = []
+    branches: list[BranchPoints] = []
     sel = np.full(npts, -1, dtype=int)
     mirror_free = m == m.mirrored() and np.all(dys == 0.0)
     multistable = not m.monotonic and n >= 2
 
-    def new_branch(i: int, eq: Equilibrium, stop: int) -> _Branch:
-        br = _Branch(len(branches), npts, n)
+    def new_branch(i: int, eq: Equilibrium, stop: int) -> BranchPoints:
+        br = BranchPoints(len(branches), npts, n)
         br.set(i, eq)
         branches.append(br)
-        _follow(m, br, i, stop, targets, dxs, dys)
+        follow(m, br, i, stop, targets, dxs, dys)
         return br
 
     i = 0
@@ -377,7 +325,7 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
                  stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), status=status, jumps=jumps)
 
 
-def _branch_curve(dxs, dys, br: _Branch) -> Curve:
+def _branch_curve(dxs, dys, br: BranchPoints) -> Curve:
     return Curve(dx=dxs.copy(), dy=dys.copy(), q=br.q.copy(), fx=br.F[:, 0].copy(), fy=br.F[:, 1].copy(),
                  energy=br.E.copy(), stable=br.stable.copy(), morse_index=br.morse.copy(),
                  shape=[shape_label(q) if v else "" for q, v in zip(br.q, br.valid)],

@@ -34,9 +34,13 @@ from typing import Literal
 import numpy as np
 import scipy.linalg as sla
 
-from .errors import InvalidParameterError, StraightNotEquilibriumError, UnstableStraightError
-from .manipulator import Manipulator
-from .shapes import shape_label, sign_string
+from ..errors import (
+    InvalidParameterError,
+    StraightNotEquilibriumError,
+    UnstableStraightError,
+)
+from ..model.manipulator import Manipulator
+from ..model.shapes import shape_label, sign_string
 
 __all__ = ["Mode", "Buckling", "critical_force", "straight_matrices"]
 

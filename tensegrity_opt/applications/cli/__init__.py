@@ -19,15 +19,19 @@ from typing import Any
 
 import numpy as np
 
-from . import __version__
-from .buckling import critical_force
-from .curves import force_deflection
-from .equilibria import find_equilibria
-from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
-from .errors import TensegrityError
-from .manipulator import Manipulator
-from .plot_cli import add_plot_parser
-from .sweep_cli import add_sweep_parser
+from ... import __version__
+from ...analyses.all_equilibria import find_equilibria
+from ...analyses.buckling import critical_force
+from ...analyses.curves import force_deflection
+from ...analyses.equilibrium import (
+    Equilibrium,
+    solve_equilibrium,
+    solve_equilibrium_under_force,
+)
+from ...errors import TensegrityError
+from ...model.manipulator import Manipulator
+from .plot import add_plot_parser
+from .sweep import add_sweep_parser
 
 
 def _manipulator(args: argparse.Namespace) -> Manipulator:
@@ -222,6 +226,3 @@ def main(argv: list[str] | None = None) -> int:
     print(json.dumps(data, indent=2) if args.json else text)
     return 0
 
-
-if __name__ == "__main__":  # pragma: no cover
-    sys.exit(main())

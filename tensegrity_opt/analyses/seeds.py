@@ -24,10 +24,10 @@ from functools import lru_cache
 
 import numpy as np
 
+from ..errors import TensegrityError
+from ..model.manipulator import Manipulator
+from ..model.segment import Segment
 from .buckling import critical_force, quad_G, tip_slope
-from .errors import TensegrityError
-from .manipulator import Manipulator
-from .segment import Segment
 
 __all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds", "well_seeds", "project_to_target",
            "projected_sample", "segment_critical_points"]

@@ -27,10 +27,10 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from .errors import TimeLimitError
+from ..errors import TimeLimitError
+from ..timelimit import TIMEOUT_STATUSES, check_time, expired
+from .chain_solver import CACHE_SIZE, IPOPT_OPTIONS
 from .expressions import chain_expressions
-from .solvers import CACHE_SIZE, IPOPT_OPTIONS
-from .timelimit import TIMEOUT_STATUSES, check_time, expired
 
 __all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
 

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import InvalidParameterError
+from ..model.manipulator import Manipulator
+from ..numerics.chain_solver import model
 from .equilibrium import Equilibrium
-from .errors import InvalidParameterError
-from .manipulator import Manipulator
-from .solvers import model
 
 __all__ = ["cartesian_stiffness"]
 

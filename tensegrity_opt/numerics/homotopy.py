@@ -62,8 +62,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .errors import HomotopyUnavailableError, SolverError
-from .manipulator import Manipulator
+from ..errors import HomotopyUnavailableError, SolverError
+from ..model.manipulator import Manipulator
 
 __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "solve_homotopy", "phc_path",
            "homotopy_available", "real_configurations", "residuals", "unloaded_critical_angles", "rest_points_at"]

@@ -21,14 +21,20 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
+from ..errors import (
+    InvalidParameterError,
+    NoEquilibriumError,
+    SolverError,
+    StraightNotEquilibriumError,
+    TensegrityError,
+    UnreachableTargetError,
+)
+from ..model.manipulator import Manipulator
+from ..model.shapes import shape_label, sign_string
+from ..numerics.chain_solver import LocalResult, model
+from ..numerics.kernels import KERNEL_MAX
 from .buckling import critical_force, tip_slope
-from .errors import (InvalidParameterError, NoEquilibriumError, SolverError, StraightNotEquilibriumError,
-                     TensegrityError, UnreachableTargetError)
-from .manipulator import Manipulator
-from .kernels import KERNEL_MAX
 from .seeds import projected_sample, seed_starts, well_seeds
-from .shapes import shape_label, sign_string
-from .solvers import LocalResult, model
 from .stability import analyse, inertia_of_reduced
 
 __all__ = ["Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "make_equilibrium",
@@ -382,7 +388,7 @@ def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None
     that set is certified)."""
     from dataclasses import replace
 
-    from .equilibria import find_equilibria
+    from .all_equilibria import find_equilibria
 
     eqs = find_equilibria(m, dx, dy, method="homotopy")
     stable = [e for e in eqs if e.stable]

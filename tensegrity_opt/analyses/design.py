@@ -15,14 +15,21 @@ from dataclasses import dataclass, field
 import numpy as np
 import scipy.linalg as sla
 
+from ..errors import (
+    InfeasibleDesignError,
+    InvalidParameterError,
+    SolverError,
+    StraightNotEquilibriumError,
+    TensegrityError,
+    TimeLimitError,
+    UnreachableTargetError,
+)
+from ..model.manipulator import Manipulator
+from ..model.segment import Segment
+from ..numerics.chain_solver import RANGE_SHRINK, model
+from ..timelimit import time_limit as _time_limit
 from .buckling import critical_force, straight_matrices
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
-from .errors import (InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError,
-                     TensegrityError, TimeLimitError, UnreachableTargetError)
-from .manipulator import Manipulator
-from .segment import Segment
-from .solvers import RANGE_SHRINK, model
-from .timelimit import time_limit as _time_limit
 
 __all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
            "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES",
@@ -254,7 +261,7 @@ def _tension_bounds(tension) -> tuple[float, float]:
 
 
 def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
-    from .design_solvers import buckling_design_nlp
+    from ..numerics.design_nlp import buckling_design_nlp
 
     if boundary not in ("guided", "free"):
         raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
@@ -534,7 +541,7 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
 
 
 def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0) -> PreloadDesign:
-    from .design_solvers import preload_nlp
+    from ..numerics.design_nlp import preload_nlp
 
     if objective not in ("nominal", "margin", "energy"):
         raise InvalidParameterError(f"objective must be 'nominal', 'margin' or 'energy', got {objective!r}",

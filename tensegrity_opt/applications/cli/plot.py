@@ -28,8 +28,8 @@ from typing import Any
 
 import numpy as np
 
-from .errors import InvalidParameterError, UnsupportedError
-from .manipulator import Manipulator
+from ...errors import InvalidParameterError, UnsupportedError
+from ...model.manipulator import Manipulator
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
@@ -45,7 +45,7 @@ def _output(value: str) -> str:
 
 def _common(sp: argparse.ArgumentParser) -> None:
     """The manipulator options of the other commands, plus the figure's output options."""
-    from .cli import add_manipulator_options     # at call time: cli imports this module
+    from . import add_manipulator_options  # at call time: cli imports this module
 
     add_manipulator_options(sp)
     sp.add_argument("--json", action="store_true", help="print JSON instead of a line of text")
@@ -68,7 +68,7 @@ def _axis(spec: list[str], name: str) -> tuple[str, np.ndarray]:
 
 
 def _render(args: argparse.Namespace, fig: Any, kind: str, extra: dict[str, Any]) -> tuple[dict[str, Any], str]:
-    from . import plots
+    from .. import plots
 
     path = plots.save(fig, args.output, dpi=args.dpi)
     fmt = path.suffix.lower().lstrip(".")
@@ -81,7 +81,7 @@ def _plots():
     try:
         import matplotlib.figure  # noqa: F401  (fail here, not after a long solve, when it is missing)
 
-        from . import plots
+        from .. import plots
     except ImportError as exc:
         raise UnsupportedError(f"figures need matplotlib ({exc}): python3 -m pip install matplotlib",
                                field="matplotlib") from None
@@ -91,7 +91,7 @@ def _plots():
 def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     dx = np.linspace(args.start, args.stop, args.num)
-    from .curves import force_deflection
+    from ...analyses.curves import force_deflection
 
     c = force_deflection(m, dx, args.dy, branch=args.branch)
     fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
@@ -101,7 +101,7 @@ def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
 
 def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from .equilibria import find_equilibria
+    from ...analyses.all_equilibria import find_equilibria
 
     eqs = find_equilibria(m, args.dx, args.dy) if m.n == 4 else None
     span: float | str | None = "auto" if args.span is None else (None if args.span <= 0 else args.span)
@@ -112,7 +112,7 @@ def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, 
 
 def _cmd_shapes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from .equilibria import find_equilibria
+    from ...analyses.all_equilibria import find_equilibria
 
     eqs = find_equilibria(m, args.dx, args.dy)
     fig = plots.plot_shapes(m, args.dx, args.dy, equilibria=eqs, max_panels=args.max_panels)
@@ -208,7 +208,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m tensegrity_opt.plot_cli KIND ...``: the ``plot`` command on its own."""
-    from .cli import main as cli_main
+    from ... import main as cli_main
 
     return cli_main(["plot", *(sys.argv[1:] if argv is None else argv)])
 
