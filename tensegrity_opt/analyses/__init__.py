@@ -1,0 +1,14 @@
+"""The analyses: what a chain does, built on :mod:`tensegrity_opt.model` and
+:mod:`tensegrity_opt.numerics`.
+
+* :mod:`.equilibrium` - one equilibrium: the least-energy stable one for a tip target, or under a tip force;
+* :mod:`.all_equilibria` - every equilibrium for a tip target (search, or the certified homotopy);
+* :mod:`.stability` - classification by the reduced Hessian's inertia (Morse index);
+* :mod:`.buckling` - the straight chain's critical loads and modes (the paper's eigenproblem);
+* :mod:`.seeds` - starting points for the global search (modes, mirrors, wells, random projections);
+* :mod:`.continuation` - equilibria followed along a sequence of targets (batches, the Tracker, curve branches);
+* :mod:`.curves` - force-deflection curves, jumps, branches;
+* :mod:`.stiffness` - the Cartesian tangent stiffness;
+* :mod:`.landscape` - the energy over two joint angles;
+* :mod:`.design` - optimal designs and preloads (maximise the critical load, choose preloads).
+"""
