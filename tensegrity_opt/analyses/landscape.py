@@ -46,11 +46,6 @@ class Landscape:
     q: np.ndarray
 
 
-def _rot(v, ang):
-    c, s = np.cos(ang), np.sin(ang)
-    return np.stack([c * v[..., 0] - s * v[..., 1], s * v[..., 0] + c * v[..., 1]], axis=-1)
-
-
 def complete_configuration(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int) -> np.ndarray:
     """Full ``q`` (shape ``(..., n)``) with ``q[pair] = (qi, qj)`` and the tip at ``target``.
 

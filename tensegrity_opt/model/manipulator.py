@@ -14,7 +14,7 @@ the solvers work on absolute angles internally.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
 from typing import Any
@@ -190,11 +190,6 @@ class Manipulator:
         """
         return all(s.stiffness > 0.0 if s.symmetric else s.monotonic() for s in self.segments)
 
-    @property
-    def uniform_segments(self) -> bool:
-        """True when all segments are identical."""
-        return all(s == self.segments[0] for s in self.segments)
-
     # ------------------------------------------------------------------ kinematics
     def _q(self, q: Any, field: str = "q") -> np.ndarray:
         q = np.asarray(q, dtype=float)
@@ -313,8 +308,3 @@ class Manipulator:
     def mirrored(self) -> "Manipulator":
         """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""
         return Manipulator(s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments)
-
-
-def as_manipulator(m: Manipulator | Sequence[Segment]) -> Manipulator:
-    """Accept a :class:`Manipulator` or a sequence of segments."""
-    return m if isinstance(m, Manipulator) else Manipulator(m)
