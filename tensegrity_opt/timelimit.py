@@ -7,7 +7,7 @@ it
 * before every IPOPT solve (equilibrium searches and design problems), between the points of a
   force-deflection curve and after building a design problem, raising
   :class:`~tensegrity_opt.errors.TimeLimitError`;
-* inside the long IPOPT solves of the design problems (:mod:`.design_solvers`), once per IPOPT
+* inside the long IPOPT solves of the design problems (:mod:`.numerics.design_nlp`), once per IPOPT
   iteration through CasADi's ``iteration_callback``: IPOPT stops with ``User_Requested_Stop``,
   which the library raises as :class:`~tensegrity_opt.errors.TimeLimitError` (never as a result).
 
