@@ -33,8 +33,8 @@ from ..errors import (
 from ..model.manipulator import Manipulator
 from ..model.shapes import shape_label, sign_string
 from ..numerics.chain_solver import LocalResult, model
-from ..serialize import number, numbers
 from ..numerics.kernels import KERNEL_MAX
+from ..serialize import number, numbers
 from .buckling import critical_force, tip_slope
 from .seeds import projected_sample, seed_starts, well_seeds
 from .stability import analyse, inertia_of_reduced
