@@ -96,8 +96,8 @@ def test_to_dict_equals_the_service_serialiser(family, seed):
           compute.stiffness_job(_req(s.StiffnessRequest, m, dx=dx, dy=dy)))
 
     for boundary in ("guided", "free"):
-        bk = _or_error(lambda: to.critical_force(m, boundary))
-        ref = _or_error(lambda: compute.buckling_job(_req(s.BucklingRequest, m, boundary=boundary)))
+        bk = _or_error(lambda b=boundary: to.critical_force(m, b))
+        ref = _or_error(lambda b=boundary: compute.buckling_job(_req(s.BucklingRequest, m, boundary=b)))
         if isinstance(bk, type):
             assert ref is bk        # the same refusal (asymmetric preloads: straight is not an equilibrium)
             continue
@@ -233,3 +233,42 @@ def test_cli_json_of_a_segments_file_is_the_api_body(client, capsys, tmp_path):
     r = client.post("/v1/equilibrium", json={"manipulator": m.to_dict(), "dx": 0.2})
     assert r.status_code == 200
     assert _cli_json(["equilibrium", "--dx", "0.2", "--manipulator", str(f)], capsys) == r.json()
+
+
+def test_the_other_service_bodies_are_to_dict_too():
+    m = to.Manipulator.uniform(4)
+    # the uniform request form builds the same chain as Manipulator.from_dict of it
+    assert to.Manipulator.from_dict({"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}) == m
+    feq = to.solve_equilibrium_under_force(m, -0.3, 0.02)
+    _same(feq.to_dict(), compute.force_equilibrium_job(_req(s.ForceEquilibriumRequest, m, fx=-0.3, fy=0.02)))
+    batch = compute.batch_job(_req(s.BatchEquilibriumRequest, m, targets=[{"dx": 0.1 * i, "dy": 0.0} for i in range(4)]),
+                              math.inf, "segments")
+    solved = to.solve_equilibria_batch(m, [(0.1 * i, 0.0) for i in range(4)])
+    for item, eq in zip(batch["results"], solved):
+        _same(eq.to_dict(), item["equilibrium"])
+
+
+# --------------------------------------------------------------------------- sweep rows: the same values
+def test_sweep_rows_hold_the_values_of_the_result_dicts():
+    from tensegrity_opt.applications import sweeps as S
+
+    res = S.sweep({"analysis": "equilibrium", "points": [{"dx": 0.1}, {"dx": 0.3, "dy": 0.05}, {"load": [-0.3, 0.02]}]})
+    json.dumps(res.to_dict(), allow_nan=False)
+    assert res.to_dict()["rows"] == [{c: r[c] for c in res.columns} for r in res.rows]
+    m = to.Manipulator.uniform(4)
+    eqs = [to.solve_equilibrium(m, 0.1), to.solve_equilibrium(m, 0.3, 0.05), to.solve_equilibrium_under_force(m, -0.3, 0.02)]
+    for row, eq in zip(res.rows, eqs):
+        d = eq.to_dict()
+        assert row["error"] is None
+        assert {k: row[k] for k in ("energy", "stable", "morse_index", "kind", "shape", "signs", "q")} == {
+            k: d[k] for k in ("energy", "stable", "morse_index", "kind", "shape", "signs", "q")}
+        assert (row["fx"], row["fy"]) == (d["force"]["fx"], d["force"]["fy"])
+        assert [row["tip_x"], row["tip_y"]] == d["tip"]
+        assert (row["status"], row["iterations"]) == (d["solver"]["status"], d["solver"]["iterations"])
+
+    res = S.sweep({"analysis": "buckling", "grid": {"n": [3, 4]}})
+    for row, n in zip(res.rows, (3, 4)):
+        d = to.critical_force(to.Manipulator.uniform(n)).to_dict()
+        assert (row["critical_force"], row["loads"], row["load2"]) == (d["critical_force"], d["loads"], d["loads"][1])
+        assert (row["mode_shape"], row["mode_signs"], row["mode_q"]) == (
+            d["modes"][0]["shape"], d["modes"][0]["signs"], d["modes"][0]["q"])
