@@ -26,16 +26,19 @@ def _family(name: str, rng: np.random.Generator) -> tuple[to.Manipulator, float,
     """A random chain of one family and a deflection for it."""
     u = lambda lo, hi: float(rng.uniform(lo, hi))  # noqa: E731
     if name == "monotonic":
-        return to.Manipulator.uniform(int(rng.integers(2, 5)), a=u(0.8, 1.2), b=1.0, k=u(0.5, 2.0), L0=1.0), u(0.05, 0.6), 0.0
+        n = int(rng.integers(2, 5))
+        return to.Manipulator.uniform(n, a=u(0.8, 1.2), b=1.0, k=u(0.5, 2.0), L0=1.0), u(0.05, 0.6), 0.0
     if name == "bistable":
         return to.Manipulator.uniform(int(rng.integers(2, 4)), a=0.5, b=1.0, k=u(0.5, 2.0), L0=0.5), u(0.1, 0.5), 0.0
     if name == "heterogeneous":
         segs = [to.Segment(u(0.6, 1.4), u(0.6, 1.4), u(0.5, 2.0), u(0.7, 1.2)) for _ in range(int(rng.integers(3, 5)))]
         return to.Manipulator(segs), u(0.05, 0.4), 0.0
     if name == "asymmetric":
-        return to.Manipulator.uniform(int(rng.integers(2, 5)), a=1.0, b=1.0, k=(1.0, 1.5), L0=(1.0, 0.9)), u(0.1, 0.5), 0.0
+        n = int(rng.integers(2, 5))
+        return to.Manipulator.uniform(n, a=1.0, b=1.0, k=(1.0, 1.5), L0=(1.0, 0.9)), u(0.1, 0.5), 0.0
     if name == "dy":
-        return to.Manipulator.uniform(int(rng.integers(2, 5)), a=1.0, b=1.0, k=u(0.5, 2.0), L0=1.0), u(0.1, 0.5), u(-0.3, 0.3)
+        n = int(rng.integers(2, 5))
+        return to.Manipulator.uniform(n, a=1.0, b=1.0, k=u(0.5, 2.0), L0=1.0), u(0.1, 0.5), u(-0.3, 0.3)
     raise AssertionError(name)
 
 
@@ -57,7 +60,7 @@ def _same_types(a, b) -> None:
         for k in a:
             _same_types(a[k], b[k])
     elif isinstance(a, list):
-        for x, y in zip(a, b):
+        for x, y in zip(a, b, strict=True):
             _same_types(x, y)
 
 
@@ -102,7 +105,7 @@ def test_to_dict_equals_the_service_serialiser(family, seed):
             assert ref is bk        # the same refusal (asymmetric preloads: straight is not an equilibrium)
             continue
         _same(bk.to_dict(), ref)
-        for md, ref_md in zip(bk.modes, ref["modes"]):
+        for md, ref_md in zip(bk.modes, ref["modes"], strict=True):
             _same(md.to_dict(), ref_md)
 
     grid = np.linspace(0.0 if dy == 0 else dx, 2 * dx, 5)      # dx = 0 is out of reach when dy != 0
@@ -110,7 +113,7 @@ def test_to_dict_equals_the_service_serialiser(family, seed):
         c = to.force_deflection(m, grid, dy, branch=branch)
         ref = compute.force_deflection_job(_req(s.ForceDeflectionRequest, m, dx=grid.tolist(), dy=dy, branch=branch))
         _same(c.to_dict(), ref)
-        for j, ref_j in zip(c.jumps, ref["jumps"]):
+        for j, ref_j in zip(c.jumps, ref["jumps"], strict=True):
             _same(j.to_dict(), ref_j)
 
 
@@ -241,10 +244,10 @@ def test_the_other_service_bodies_are_to_dict_too():
     assert to.Manipulator.from_dict({"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}) == m
     feq = to.solve_equilibrium_under_force(m, -0.3, 0.02)
     _same(feq.to_dict(), compute.force_equilibrium_job(_req(s.ForceEquilibriumRequest, m, fx=-0.3, fy=0.02)))
-    batch = compute.batch_job(_req(s.BatchEquilibriumRequest, m, targets=[{"dx": 0.1 * i, "dy": 0.0} for i in range(4)]),
-                              math.inf, "segments")
+    targets = [{"dx": 0.1 * i, "dy": 0.0} for i in range(4)]
+    batch = compute.batch_job(_req(s.BatchEquilibriumRequest, m, targets=targets), math.inf, "segments")
     solved = to.solve_equilibria_batch(m, [(0.1 * i, 0.0) for i in range(4)])
-    for item, eq in zip(batch["results"], solved):
+    for item, eq in zip(batch["results"], solved, strict=True):
         _same(eq.to_dict(), item["equilibrium"])
 
 
@@ -256,8 +259,9 @@ def test_sweep_rows_hold_the_values_of_the_result_dicts():
     json.dumps(res.to_dict(), allow_nan=False)
     assert res.to_dict()["rows"] == [{c: r[c] for c in res.columns} for r in res.rows]
     m = to.Manipulator.uniform(4)
-    eqs = [to.solve_equilibrium(m, 0.1), to.solve_equilibrium(m, 0.3, 0.05), to.solve_equilibrium_under_force(m, -0.3, 0.02)]
-    for row, eq in zip(res.rows, eqs):
+    eqs = [to.solve_equilibrium(m, 0.1), to.solve_equilibrium(m, 0.3, 0.05),
+           to.solve_equilibrium_under_force(m, -0.3, 0.02)]
+    for row, eq in zip(res.rows, eqs, strict=True):
         d = eq.to_dict()
         assert row["error"] is None
         assert {k: row[k] for k in ("energy", "stable", "morse_index", "kind", "shape", "signs", "q")} == {
@@ -267,7 +271,7 @@ def test_sweep_rows_hold_the_values_of_the_result_dicts():
         assert (row["status"], row["iterations"]) == (d["solver"]["status"], d["solver"]["iterations"])
 
     res = S.sweep({"analysis": "buckling", "grid": {"n": [3, 4]}})
-    for row, n in zip(res.rows, (3, 4)):
+    for row, n in zip(res.rows, (3, 4), strict=True):
         d = to.critical_force(to.Manipulator.uniform(n)).to_dict()
         assert (row["critical_force"], row["loads"], row["load2"]) == (d["critical_force"], d["loads"], d["loads"][1])
         assert (row["mode_shape"], row["mode_signs"], row["mode_q"]) == (
