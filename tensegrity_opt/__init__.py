@@ -38,6 +38,7 @@ from .errors import (
                      InfeasibleDesignError,
                      InvalidParameterError,
                      NoEquilibriumError,
+                     NonFiniteResult,
                      SolverError,
                      StraightNotEquilibriumError,
                      TensegrityError,
@@ -65,6 +66,6 @@ __all__ = [
     "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",
-    "InfeasibleDesignError", "HomotopyUnavailableError", "TimeLimitError", "time_limit",
+    "InfeasibleDesignError", "HomotopyUnavailableError", "TimeLimitError", "NonFiniteResult", "time_limit",
     "__version__",
 ]

@@ -5,6 +5,10 @@ ill-posed question, ``RuntimeError`` for a solve that did not produce a
 result), carries a machine-readable ``code`` and, where one input is to blame,
 the name of that input in ``field``.  The HTTP service maps them to answers in
 one place (``service/errors.py``) using ``code``.
+
+:class:`NonFiniteResult` is the exception to the family: not a refusal of the input but a
+result that came out non-finite where its JSON form promises a number (a bug, raised by
+:mod:`tensegrity_opt.serialize`), so it is an ``ArithmeticError``, not a ``TensegrityError``.
 """
 
 from __future__ import annotations
@@ -21,6 +25,7 @@ __all__ = [
     "InfeasibleDesignError",
     "TimeLimitError",
     "HomotopyUnavailableError",
+    "NonFiniteResult",
 ]
 
 
@@ -111,3 +116,14 @@ class HomotopyUnavailableError(TensegrityError, RuntimeError):
     """The polynomial homotopy engine is not installed: PHCpack's ``phc`` (Debian package ``phcpack``)."""
 
     code = "homotopy_unavailable"
+
+
+class NonFiniteResult(ArithmeticError):
+    """A result holds NaN or an infinity where its JSON form promises a number (:mod:`tensegrity_opt.serialize`).
+
+    Not a :class:`TensegrityError`: the input was accepted, the answer is broken (overflow or
+    underflow in the model), so it is a bug to report, not a refusal (the service answers
+    500 ``numerical_failure``, as for any ``ArithmeticError``).
+    """
+
+    code = "numerical_failure"

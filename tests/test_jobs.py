@@ -7,7 +7,6 @@ The expected rows are ``tensegrity_opt.applications.sweeps.sweep`` run directly 
 from __future__ import annotations
 
 import csv
-import importlib
 import io
 import json
 import signal
@@ -31,9 +30,7 @@ from service import jobs
 from service.config import Settings
 from service.main import create_app
 from servers import clean_env, free_port, stop, uvicorn_factory_command, wait_ready
-
-# the module (``tensegrity_opt.applications.sweeps`` itself may be re-exported as the function)
-S = importlib.import_module("tensegrity_opt.applications.sweeps")
+from tensegrity_opt.applications import sweeps as S
 
 ROOT = Path(__file__).resolve().parents[1]
 

@@ -23,6 +23,8 @@ classified by the Morse index of the reduced Hessian and sorted by energy.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from ..errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
@@ -95,6 +97,12 @@ class EquilibriumSet(list):
     def __repr__(self) -> str:
         return (f"EquilibriumSet({len(self)} equilibria, method={self.method!r}, certified={self.certified}, "
                 f"paths={self.paths}, failed_paths={self.failed_paths})")
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/equilibria``): ``equilibria`` (each
+        :meth:`Equilibrium.to_dict`), ``method``, ``certified``, ``paths``, ``failed_paths``."""
+        return {"equilibria": [e.to_dict() for e in self], "method": self.method, "certified": self.certified,
+                "paths": self.paths, "failed_paths": self.failed_paths}
 
 
 def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,

@@ -29,7 +29,7 @@ so for equal segments ``E ~ energy_factor * K * dx / (2 b)`` (eq. 24).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 import scipy.linalg as sla
@@ -41,6 +41,7 @@ from ..errors import (
 )
 from ..model.manipulator import Manipulator
 from ..model.shapes import shape_label, sign_string
+from ..serialize import number, numbers
 
 __all__ = ["Mode", "Buckling", "critical_force", "straight_matrices"]
 
@@ -85,6 +86,14 @@ class Mode:
     signs: str
     stable: bool
 
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (an item of ``modes`` in ``POST /v1/buckling``): ``load``, ``q``, ``fy``,
+        ``energy_factor``, ``mu_x``, ``fy_coefficient``, ``shape``, ``signs``, ``stable``."""
+        return {"load": number(self.load), "q": numbers(self.q), "fy": number(self.fy),
+                "energy_factor": number(self.energy_factor), "mu_x": number(self.mu_x),
+                "fy_coefficient": number(self.fy_coefficient), "shape": self.shape, "signs": self.signs,
+                "stable": bool(self.stable)}
+
 
 @dataclass(frozen=True)
 class Buckling:
@@ -109,6 +118,12 @@ class Buckling:
     modes: list[Mode] = field(repr=False)
     boundary: str = "guided"
     method: str = "reduced"
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/buckling``): ``boundary``, ``critical_force``, ``loads``,
+        ``modes`` (each :meth:`Mode.to_dict`)."""
+        return {"boundary": self.boundary, "critical_force": number(self.force), "loads": numbers(self.loads),
+                "modes": [md.to_dict() for md in self.modes]}
 
 
 def straight_matrices(m: Manipulator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -31,7 +31,7 @@ equilibrium there: such points carry ``status = "straight_not_equilibrium"`` and
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Literal
+from typing import Any, Literal
 
 import numpy as np
 
@@ -44,6 +44,7 @@ from ..errors import (
 )
 from ..model.manipulator import Manipulator
 from ..model.shapes import shape_label, shape_labels
+from ..serialize import nullable, number, numbers
 from ..timelimit import check_time
 from .all_equilibria import find_equilibria
 from .buckling import critical_force
@@ -83,6 +84,17 @@ class Jump:
     dy_before: float = 0.0
     dy_after: float = 0.0
 
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (an item of ``jumps`` in ``POST /v1/force-deflection``): ``kind``, ``dx_before``,
+        ``dx_after``, ``force_before`` / ``force_after`` ``{fx, fy}``, ``branch_before``, ``branch_after``."""
+        return {"kind": self.kind, "dx_before": number(self.dx_before), "dx_after": number(self.dx_after),
+                "force_before": _force(self.force_before), "force_after": _force(self.force_after),
+                "branch_before": int(self.branch_before), "branch_after": int(self.branch_after)}
+
+
+def _force(v: Any) -> dict[str, float]:
+    return {"fx": number(v[0]), "fy": number(v[1])}
+
 
 @dataclass(frozen=True)
 class Curve:
@@ -118,6 +130,30 @@ class Curve:
     status: list[str]
     jumps: list[Jump] = field(default_factory=list)
     branches: list["Curve"] = field(default_factory=list, repr=False)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/force-deflection``): ``points`` (``dx``, ``dy``, ``fx``, ``fy``,
+        ``energy``, ``q``, ``stable``, ``morse_index``, ``shape``, ``branch``), ``jumps`` (each
+        :meth:`Jump.to_dict`) and ``branches`` (``branch="all"``: ``{id, points}`` per followed branch,
+        a point with ``exists`` and ``null`` numbers where the branch does not reach)."""
+        points = [{"dx": number(self.dx[i]), "dy": number(self.dy[i]), "fx": number(self.fx[i]),
+                   "fy": number(self.fy[i]), "energy": number(self.energy[i]), "q": numbers(self.q[i]),
+                   "stable": bool(self.stable[i]), "morse_index": int(self.morse_index[i]), "shape": self.shape[i],
+                   "branch": int(self.branch[i])} for i in range(self.dx.size)]
+        return {"points": points, "jumps": [j.to_dict() for j in self.jumps],
+                "branches": [br._branch_dict(bi) for bi, br in enumerate(self.branches)]}
+
+    def _branch_dict(self, position: int) -> dict[str, Any]:
+        """This curve as the ``position``-th item of ``branches``: its id and nullable points."""
+        bid = int(self.branch[0]) if self.branch.size else position
+        pts = []
+        for i in range(self.dx.size):
+            exists = bool(np.isfinite(self.energy[i]))
+            pts.append({"dx": number(self.dx[i]), "dy": number(self.dy[i]), "exists": exists,
+                        "fx": nullable(self.fx[i]), "fy": nullable(self.fy[i]), "energy": nullable(self.energy[i]),
+                        "q": [nullable(v) for v in self.q[i]], "stable": bool(self.stable[i]),
+                        "morse_index": int(self.morse_index[i]), "shape": self.shape[i]})
+        return {"id": bid, "points": pts}
 
 
 def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:

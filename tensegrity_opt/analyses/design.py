@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 import scipy.linalg as sla
@@ -27,6 +28,7 @@ from ..errors import (
 from ..model.manipulator import Manipulator
 from ..model.segment import Segment
 from ..numerics.chain_solver import RANGE_SHRINK, model
+from ..serialize import nullable, number, numbers
 from ..timelimit import time_limit as _time_limit
 from .buckling import critical_force, straight_matrices
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
@@ -93,6 +95,15 @@ class Design:
         """The critical compressive load ``-critical_force``."""
         return -self.critical_force
 
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/design/critical-force`` and ``/v1/design/preloads-for-load``):
+        ``manipulator`` (:meth:`Manipulator.to_dict`), ``critical_force``, ``loads``, ``multiplicity``,
+        ``active``, ``initial_critical_force`` (``null`` when undefined), ``feasible``, ``solver``."""
+        return {"manipulator": self.manipulator.to_dict(), "critical_force": number(self.critical_force),
+                "loads": numbers(self.loads), "multiplicity": int(self.multiplicity), "active": list(self.active),
+                "initial_critical_force": nullable(self.initial_critical_force), "feasible": bool(self.feasible),
+                "solver": {"status": self.status, "iterations": int(self.iterations)}}
+
 
 @dataclass(frozen=True)
 class PreloadDesign:
@@ -123,6 +134,13 @@ class PreloadDesign:
     success: bool
     iterations: int
     equilibrium: Equilibrium = field(repr=False)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/design/preloads``): ``manipulator``, ``preloads``, ``q``,
+        ``margin``, ``tip``, ``energy``, ``solver`` ``{status, iterations}``."""
+        return {"manipulator": self.manipulator.to_dict(), "preloads": numbers(self.preloads), "q": numbers(self.q),
+                "margin": number(self.margin), "tip": numbers(self.tip), "energy": number(self.energy),
+                "solver": {"status": self.status, "iterations": int(self.iterations)}}
 
 
 # --------------------------------------------------------------------------- helpers

@@ -18,6 +18,7 @@ import math
 from collections import Counter
 from dataclasses import dataclass, field
 from functools import cached_property, lru_cache
+from typing import Any
 
 import numpy as np
 
@@ -33,6 +34,7 @@ from ..model.manipulator import Manipulator
 from ..model.shapes import shape_label, sign_string
 from ..numerics.chain_solver import LocalResult, model
 from ..numerics.kernels import KERNEL_MAX
+from ..serialize import number, numbers
 from .buckling import critical_force, tip_slope
 from .seeds import projected_sample, seed_starts, well_seeds
 from .stability import analyse, inertia_of_reduced
@@ -108,6 +110,16 @@ class Equilibrium:
         if self.morse_index == 0:
             return "degenerate"
         return "maximum" if self.morse_index == dim else "saddle"
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/equilibrium``): ``q``, ``energy``, ``force`` ``{fx, fy}``,
+        ``morse_index``, ``stable``, ``kind``, ``shape``, ``signs``, ``tip``, ``solver`` ``{status,
+        iterations}``; every number finite (:mod:`tensegrity_opt.serialize`)."""
+        return {"q": numbers(self.q), "energy": number(self.energy),
+                "force": {"fx": number(self.fx), "fy": number(self.fy)},
+                "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,
+                "shape": self.shape, "signs": self.signs, "tip": numbers(self.tip),
+                "solver": {"status": str(self.status), "iterations": int(self.iterations)}}
 
 
 def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:

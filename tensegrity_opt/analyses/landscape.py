@@ -13,11 +13,13 @@ which makes it an independent check of them.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from ..errors import InvalidParameterError, UnsupportedError
 from ..model.manipulator import Manipulator
+from ..serialize import nullables, numbers
 
 __all__ = ["Landscape", "energy_landscape", "complete_configuration"]
 
@@ -44,6 +46,12 @@ class Landscape:
     qj: np.ndarray
     energy: np.ndarray
     q: np.ndarray
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/energy-landscape``): ``pair``, ``qi``, ``qj`` and ``energy``
+        (``[elbow][i][j]``, ``null`` outside the reachable set or the physical range)."""
+        return {"pair": [int(p) for p in self.pair], "qi": numbers(self.qi), "qj": numbers(self.qj),
+                "energy": nullables(self.energy)}
 
 
 def complete_configuration(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int) -> np.ndarray:

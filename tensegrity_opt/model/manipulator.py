@@ -89,7 +89,8 @@ class Manipulator:
         return cls.uniform(d.get("n", 4), d.get("a", 1.0), d.get("b", 1.0), d.get("k", 1.0), d.get("L0", 1.0))
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-friendly form accepted by :meth:`from_dict`."""
+        """JSON form ``{"segments": [{"a", "b", "k", "L0"}, ...]}`` (``k`` / ``L0`` one number when both
+        springs agree, else the pair): what the API returns for a chain, accepted by :meth:`from_dict`."""
         return {"segments": [s.to_dict() for s in self.segments]}
 
     # ------------------------------------------------------------------ arrays

@@ -2,8 +2,9 @@
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
-prints a readable table, or JSON with ``--json``. Errors print one line to stderr
-and exit with status 2.
+prints a readable table, or JSON with ``--json``: the result's ``to_dict()``, the body the
+HTTP API answers for the same request (one serialiser, one NaN policy: :mod:`tensegrity_opt.serialize`).
+Errors print one line to stderr and exit with status 2.
 
 ``serve`` starts the HTTP service (``service/``, settings from ``TENSEGRITY_*`` environment
 variables) and ``openapi`` prints its OpenAPI document; both import the service lazily, so the
@@ -28,7 +29,7 @@ from ...analyses.equilibrium import (
     solve_equilibrium,
     solve_equilibrium_under_force,
 )
-from ...errors import TensegrityError
+from ...errors import NonFiniteResult, TensegrityError
 from ...model.manipulator import Manipulator
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser
@@ -41,22 +42,13 @@ def _manipulator(args: argparse.Namespace) -> Manipulator:
     return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0)
 
 
-def _eq_dict(eq: Equilibrium) -> dict[str, Any]:
-    return {"q": eq.q.tolist(), "energy": eq.energy, "force": {"fx": eq.fx, "fy": eq.fy},
-            "morse_index": eq.morse_index, "stable": eq.stable, "shape": eq.shape, "signs": eq.signs,
-            "solver": {"status": eq.status, "iterations": eq.iterations}}
-
-
 def _fmt_q(q: np.ndarray) -> str:
     return "[" + ", ".join(f"{v:+.5f}" for v in q) + "]"
 
 
 def _cmd_buckling(args, m) -> tuple[Any, str]:
     bk = critical_force(m, args.boundary)
-    data = {"boundary": bk.boundary, "critical_force": bk.force, "loads": bk.loads.tolist(),
-            "modes": [{"load": md.load, "q": md.q.tolist(), "fy": md.fy, "energy_factor": md.energy_factor,
-                       "mu_x": md.mu_x, "fy_coefficient": md.fy_coefficient, "shape": md.shape,
-                       "signs": md.signs, "stable": md.stable} for md in bk.modes]}
+    data = bk.to_dict
     lines = [f"Buckling of the straight configuration (n = {m.n}, tip {bk.boundary})",
              f"critical force Fx0 = {bk.force:.6f}", "",
              f"{'#':>2} {'load P':>10} {'-1/P':>10} {'mu_eq':>9} {'mu_x':>9} {'Fy/sqrt(dx)':>12} {'shape':>5} "
@@ -83,7 +75,7 @@ def _cmd_equilibrium(args, m):
     else:
         eq = solve_equilibrium(m, args.dx, args.dy)
         head = f"Least-energy stable equilibrium at dx = {args.dx:g}, dy = {args.dy:g}"
-    return _eq_dict(eq), "\n".join([head, *(_eq_table([eq])), f"solver: {eq.status}, {eq.iterations} iterations"])
+    return eq.to_dict, "\n".join([head, *(_eq_table([eq])), f"solver: {eq.status}, {eq.iterations} iterations"])
 
 
 def _cmd_equilibria(args, m):
@@ -91,8 +83,7 @@ def _cmd_equilibria(args, m):
     how = f"method {eqs.method}, " + ("certified complete" if eqs.certified else "not certified")
     if eqs.paths:
         how += f" ({eqs.paths} homotopy paths, {eqs.failed_paths} failed)"
-    return ({"equilibria": [_eq_dict(e) for e in eqs], "method": eqs.method, "certified": eqs.certified,
-             "paths": eqs.paths, "failed_paths": eqs.failed_paths},
+    return (eqs.to_dict,
             "\n".join([f"All equilibria at dx = {args.dx:g}, dy = {args.dy:g}: {len(eqs)} ({how})",
                        *_eq_table(eqs)]))
 
@@ -100,12 +91,7 @@ def _cmd_equilibria(args, m):
 def _cmd_curve(args, m):
     dx = np.linspace(args.start, args.stop, args.num)
     c = force_deflection(m, dx, args.dy, branch="stable")
-    data = {"points": [{"dx": float(c.dx[i]), "fx": float(c.fx[i]), "fy": float(c.fy[i]),
-                        "energy": float(c.energy[i]), "q": c.q[i].tolist(), "stable": bool(c.stable[i]),
-                        "shape": c.shape[i]} for i in range(c.dx.size)],
-            "jumps": [{"kind": j.kind, "dx_before": j.dx_before, "dx_after": j.dx_after,
-                       "force_before": j.force_before.tolist(), "force_after": j.force_after.tolist()}
-                      for j in c.jumps]}
+    data = c.to_dict
     lines = [f"Force-deflection (stable branch), dy = {args.dy:g}",
              f"{'dx':>10} {'Fx':>10} {'Fy':>10} {'energy':>12} {'shape':>5}"]
     lines += [f"{c.dx[i]:>10.5f} {c.fx[i]:>10.6f} {c.fy[i]:>10.6f} {c.energy[i]:>12.6f} {c.shape[i]:>5}"
@@ -220,9 +206,12 @@ def main(argv: list[str] | None = None) -> int:
     try:
         m = _manipulator(args)
         data, text = args.func(args, m)
-    except (TensegrityError, OSError, json.JSONDecodeError, TypeError) as exc:
+        if args.json:
+            # a command returns its result's ``to_dict`` (called only here: a table never needs it) or a dict
+            text = json.dumps(data() if callable(data) else data, indent=2)
+    except (TensegrityError, NonFiniteResult, OSError, json.JSONDecodeError, TypeError) as exc:
         print(f"tensegrity-opt: error: {exc}", file=sys.stderr)
         return 2
-    print(json.dumps(data, indent=2) if args.json else text)
+    print(text)
     return 0
 

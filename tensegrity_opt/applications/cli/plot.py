@@ -7,7 +7,7 @@ other commands (``--n --a --b --k --L0`` uniform, the paper's chain by default, 
 its ``func(args, m)`` returns ``(data, text)`` as the other commands do, so ``cli.main``
 prints one line (or JSON) and maps errors to one line on stderr and exit status 2.
 
-``python -m tensegrity_opt.plot_cli KIND ...`` runs the same command on its own.
+``python -m tensegrity_opt.applications.cli.plot KIND ...`` runs the same command on its own.
 
 Examples::
 
@@ -207,8 +207,8 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m tensegrity_opt.plot_cli KIND ...``: the ``plot`` command on its own."""
-    from . import main as cli_main
+    """``python -m tensegrity_opt.applications.cli.plot KIND ...``: the ``plot`` command on its own."""
+    from . import main as cli_main  # at call time: the cli package imports this module
 
     return cli_main(["plot", *(sys.argv[1:] if argv is None else argv)])
 

@@ -1,6 +1,6 @@
 """``tensegrity-opt sweep spec.json [-o out.csv|out.json|out.parquet] [--scheduler ...] [--no-progress]``.
 
-Wired into :mod:`tensegrity_opt.cli` by :func:`add_sweep_parser` (the command handles its own
+Wired into :mod:`tensegrity_opt.applications.cli` by :func:`add_sweep_parser` (the command handles its own
 arguments, so it registers as a ``service``-style command returning the exit status).
 Without ``-o`` the rows go to stdout as CSV. The scheduler defaults to ``local`` (a
 ``dask.distributed.LocalCluster``, one single-threaded worker process per core);
@@ -32,7 +32,7 @@ def add_sweep_parser(subparsers: Any) -> argparse.ArgumentParser:
     sp = subparsers.add_parser(
         "sweep", help="run one analysis over a grid or a list of design points (Dask or serial)",
         description="Run a sweep spec (JSON: analysis, manipulator, grid | points, options; see "
-                    "tensegrity_opt.sweep) and write one row per point.")
+                    "tensegrity_opt.applications.sweeps) and write one row per point.")
     sp.add_argument("spec", help="sweep spec, a JSON file ('-' reads stdin)")
     sp.add_argument("-o", "--output", metavar="FILE",
                     help="out.csv | out.json | out.parquet (default: CSV on stdout)")

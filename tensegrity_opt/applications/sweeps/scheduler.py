@@ -1,0 +1,188 @@
+"""Running a sweep: serially in the calling thread, or in chunks on Dask (a local cluster or a
+scheduler's address), with progress, resume (``skip``) and cancellation (``should_stop``)."""
+
+from __future__ import annotations
+
+import math
+import os
+import sys
+import time
+import uuid
+from collections.abc import Callable, Iterable
+from typing import Any
+
+from ...errors import InvalidParameterError
+from .evaluate import _row, _row_error, solve_chunk
+from .plan import _parameter_columns, _result_types, column_types, expand
+from .results import SweepResult
+from .spec import validate_spec
+
+__all__ = ["sweep"]
+
+def _tty(stream: Any) -> bool:
+    try:
+        return bool(stream.isatty())
+    except Exception:
+        return False
+
+
+class _Progress:
+    def __init__(self, enabled: bool, total: int) -> None:
+        self.bar = None
+        if enabled and _tty(sys.stderr):
+            try:
+                from tqdm import tqdm
+            except ImportError:  # pragma: no cover - tqdm missing: no bar
+                return
+            self.bar = tqdm(total=total, unit="pt", file=sys.stderr, dynamic_ncols=True, smoothing=0.1)
+
+    def update(self, k: int, errors: int) -> None:
+        if self.bar is not None:
+            self.bar.update(k)
+            if errors:
+                self.bar.set_postfix(errors=errors, refresh=False)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+
+
+def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
+          on_result: Callable[[int, dict[str, Any]], Any] | None = None, skip: Iterable[int] = (),
+          should_stop: Callable[[], bool] | None = None, chunk_size: int | None = None,
+          workers: int | None = None) -> SweepResult:
+    """Run ``spec`` (see the module docstring) and return its rows.
+
+    Parameters
+    ----------
+    scheduler : None | "serial" | "local" | "tcp://host:port" | distributed.Client
+        ``None``/``"serial"``: in the calling thread. ``"local"``: a new ``LocalCluster``
+        (``workers`` single-threaded processes, default one per core), closed at the end.
+        An address: the Dask scheduler there (its workers need ``tensegrity_opt`` installed).
+    progress : bool
+        Show a tqdm bar on stderr, only when stderr is a terminal.
+    on_result : callable(index, row), optional
+        Called in the calling thread as each point's row arrives (completion order). An
+        exception it raises stops the sweep and propagates.
+    skip : iterable of int
+        Indices already done (resume): not solved, not in the result.
+    should_stop : callable() -> bool, optional
+        Polled between points (Dask: between chunks); when true, the sweep stops early,
+        pending Dask tasks are cancelled and ``SweepResult.cancelled`` is set.
+    chunk_size : int, optional
+        Points per Dask task (default: about four chunks per worker thread, at most 64).
+    """
+    norm = validate_spec(spec)
+    header = {k: norm[k] for k in ("analysis", "manipulator", "options")}
+    param_cols = _parameter_columns(norm)
+    result_cols = list(_result_types(header))
+    cols = ["index", *param_cols, *result_cols, "error"]
+    points = expand(norm)
+    skip_set = {int(i) for i in skip}
+    todo = [(i, p) for i, p in enumerate(points) if i not in skip_set]
+    stop = should_stop or (lambda: False)
+    rows: dict[int, dict[str, Any]] = {}
+    t0 = time.perf_counter()
+    bar = _Progress(progress, len(todo))
+    n_err = 0
+    cancelled = False
+
+    def deliver(i: int, row: dict[str, Any]) -> None:
+        nonlocal n_err
+        rows[i] = row
+        if row.get("error"):
+            n_err += 1
+        if on_result is not None:
+            on_result(i, row)
+
+    label = "serial"
+    try:
+        if scheduler is None or scheduler == "serial":
+            for i, p in todo:
+                if stop():
+                    cancelled = True
+                    break
+                deliver(i, _row(header, param_cols, result_cols, i, p))
+                bar.update(1, n_err)
+        else:
+            label, cancelled = _run_dask(scheduler, header, param_cols, result_cols, todo, deliver, bar,
+                                         lambda: n_err, stop, chunk_size, workers)
+    finally:
+        bar.close()
+    types = column_types(norm)
+    return SweepResult(norm, cols, [rows[i] for i in sorted(rows)], total=len(points), skipped=len(points) - len(todo),
+                       cancelled=cancelled, elapsed=time.perf_counter() - t0, scheduler=label, types=types)
+
+
+def _run_dask(scheduler: Any, header, param_cols, result_cols, todo, deliver, bar, n_err, stop, chunk_size,
+              workers) -> tuple[str, bool]:
+    try:
+        from distributed import Client, LocalCluster, as_completed
+    except ImportError as exc:  # pragma: no cover - optional dependency
+        raise InvalidParameterError("scheduler: Dask is not installed (pip install 'dask[distributed]')",
+                                    field="scheduler") from exc
+    cluster = None
+    own_client = True
+    if isinstance(scheduler, Client):
+        client, own_client, label = scheduler, False, f"dask:{scheduler.scheduler.address}"
+    elif scheduler == "local":
+        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1, processes=True,
+                               dashboard_address=None)
+        client, label = Client(cluster), "local"
+    elif isinstance(scheduler, str) and "://" in scheduler:
+        client, label = Client(scheduler, timeout="30s"), scheduler
+    else:
+        raise InvalidParameterError(f"scheduler: expected 'serial', 'local' or a Dask address like "
+                                    f"tcp://host:8786, got {scheduler!r}", field="scheduler")
+    cancelled = False
+    try:
+        if not todo:
+            return label, False
+        threads = max(1, sum(client.nthreads().values()))
+        size = chunk_size or max(1, min(64, math.ceil(len(todo) / (4 * threads))))
+        chunks = [todo[j:j + size] for j in range(0, len(todo), size)]
+        tag = uuid.uuid4().hex[:12]
+        max_in_flight = 2 * threads + 2
+        pending = iter(enumerate(chunks))
+        owner: dict[str, list[tuple[int, Any]]] = {}
+
+        def submit_next() -> Any:
+            nxt = next(pending, None)
+            if nxt is None:
+                return None
+            k, chunk = nxt
+            fut = client.submit(solve_chunk, header, param_cols, result_cols, chunk, key=f"tensegrity-sweep-{tag}-{k}",
+                                pure=False, retries=1)
+            owner[fut.key] = chunk
+            return fut
+
+        first = [f for f in (submit_next() for _ in range(max_in_flight)) if f is not None]
+        ac = as_completed(first)
+        for fut in ac:
+            chunk = owner.pop(fut.key)
+            if fut.status == "error":
+                # The task itself failed (worker died, ...): every point of the chunk gets the error.
+                err = f"worker_failed: {type(fut.exception()).__name__}: {fut.exception()}"
+                results = [(i, _row_error(header, param_cols, result_cols, i, p, err)) for i, p in chunk]
+            else:
+                results = fut.result()
+            fut.release()
+            for i, row in results:
+                deliver(i, row)
+            bar.update(len(results), n_err())
+            if stop():
+                cancelled = True
+                rest = list(ac.futures) if hasattr(ac, "futures") else []
+                client.cancel(rest)
+                break
+            nf = submit_next()
+            if nf is not None:
+                ac.add(nf)
+        return label, cancelled
+    finally:
+        if own_client:
+            client.close()
+        if cluster is not None:
+            cluster.close()
+
+

@@ -1,0 +1,270 @@
+"""What a sweep spec may say, and its validation: one analysis, a uniform base chain, a grid or
+a list of points, options; the parameters each analysis uses and the columns of its rows.
+
+This is the one place of the rules. The service's ``service/job_schemas.JobSpec`` repeats the
+type and range checks (for its OpenAPI document and early 422 answers, plus its own size caps)
+and hands the spec here; what depends on the analysis (which parameters and options it uses,
+a deflection and a tip force never together) is checked only here.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+from typing import Any
+
+import numpy as np
+
+from ...errors import InvalidParameterError
+
+__all__ = ["ANALYSES", "PARAMETERS", "MANIPULATOR_PARAMETERS", "DEFAULT_MANIPULATOR", "DESIGN_VARIABLES",
+           "MAX_POINTS", "USES", "OPTIONS", "PARAMETER_TYPES", "RESULT_COLUMNS", "count_points", "validate_spec"]
+
+ANALYSES = ("buckling", "equilibrium", "equilibria_count", "stiffness", "design")
+MANIPULATOR_PARAMETERS = ("n", "a", "b", "k", "L0")
+PARAMETERS = (*MANIPULATOR_PARAMETERS, "dx", "dy", "load")
+DEFAULT_MANIPULATOR: dict[str, Any] = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+DESIGN_VARIABLES = ("a", "b", "k", "L0")
+#: Largest sweep :func:`expand` accepts.
+MAX_POINTS = 1_000_000
+
+#: Parameters each analysis uses.
+USES: dict[str, tuple[str, ...]] = {
+    "buckling": MANIPULATOR_PARAMETERS,
+    "design": MANIPULATOR_PARAMETERS,
+    "equilibrium": PARAMETERS,
+    "stiffness": PARAMETERS,
+    "equilibria_count": (*MANIPULATOR_PARAMETERS, "dx", "dy"),
+}
+#: Options and the analyses that use them.
+OPTIONS: dict[str, tuple[str, ...]] = {
+    "boundary": ("buckling", "design"),
+    "vary": ("design",), "bounds": ("design",), "budget": ("design",),
+    "total_length": ("design",), "tension": ("design",), "K_min": ("design",),
+}
+
+#: Column types: ``int``, ``float``, ``bool``, ``str``, ``floats`` (list of numbers), ``strs``.
+PARAMETER_TYPES = {"n": "int", "a": "float", "b": "float", "k": "float", "L0": "float", "dx": "float",
+                   "dy": "float", "load": "floats"}
+
+#: Result columns per analysis (``design`` adds ``<name>_opt`` per varied variable: the optimised
+#: per-segment values).
+RESULT_COLUMNS: dict[str, dict[str, str]] = {
+    "buckling": {"critical_force": "float", "load2": "float", "loads": "floats", "mode_shape": "str",
+                 "mode_signs": "str", "mode_q": "floats"},
+    "equilibrium": {"energy": "float", "fx": "float", "fy": "float", "stable": "bool", "morse_index": "int",
+                    "kind": "str", "shape": "str", "signs": "str", "q": "floats", "tip_x": "float",
+                    "tip_y": "float", "status": "str", "iterations": "int"},
+    "equilibria_count": {"count": "int", "n_stable": "int", "n_saddle": "int", "n_maximum": "int",
+                         "min_energy": "float"},
+    "stiffness": {"kxx": "float", "kxy": "float", "kyy": "float", "fx": "float", "fy": "float",
+                  "energy": "float", "stable": "bool", "shape": "str"},
+    "design": {"critical_force": "float", "multiplicity": "int", "initial_critical_force": "float",
+               "loads": "floats", "active": "strs", "status": "str", "success": "bool", "iterations": "int"},
+}
+
+_BASE_TYPES = {"index": "int", "error": "str", **PARAMETER_TYPES}
+_TOP_KEYS = ("analysis", "manipulator", "grid", "points", "options")
+
+def _fail(fld: str, msg: str) -> None:
+    raise InvalidParameterError(f"{fld}: {msg}", field=fld)
+
+
+def _is_number(v: Any) -> bool:
+    return isinstance(v, (int, float, np.integer, np.floating)) and not isinstance(v, (bool, np.bool_))
+
+
+def _finite(v: Any, fld: str) -> float:
+    if not _is_number(v) or not math.isfinite(float(v)):
+        _fail(fld, f"must be a finite number, got {v!r}")
+    return float(v)
+
+
+def _value(name: str, v: Any, fld: str) -> Any:
+    """One parameter value, normalised (``n`` an int, lengths floats, ``load`` ``[fx, fy]``)."""
+    if name == "n":
+        if _is_number(v) and math.isfinite(float(v)) and float(v) == int(v) and int(v) >= 1:
+            return int(v)
+        _fail(fld, f"must be an integer >= 1, got {v!r}")
+    if name in ("a", "b", "k", "L0"):
+        x = _finite(v, fld)
+        if x <= 0.0:
+            _fail(fld, f"must be > 0, got {v!r}")
+        return x
+    if name in ("dx", "dy"):
+        return _finite(v, fld)
+    if name == "load":
+        if not isinstance(v, (list, tuple)) or len(v) != 2:
+            _fail(fld, f"must be a tip force [fx, fy], got {v!r}")
+        return [_finite(v[0], f"{fld}[0]"), _finite(v[1], f"{fld}[1]")]
+    _fail(fld, f"unknown parameter; expected one of {', '.join(PARAMETERS)}")  # pragma: no cover
+
+
+def _check_name(name: Any, analysis: str, fld: str) -> None:
+    if name not in PARAMETERS:
+        _fail(fld, f"unknown parameter {name!r}; a sweep varies {', '.join(PARAMETERS)}")
+    if name not in USES[analysis]:
+        _fail(fld, f"{name!r} is not used by analysis {analysis!r} (it uses {', '.join(USES[analysis])})")
+
+
+def _check_control(keys: Iterable[str], fld: str) -> None:
+    keys = set(keys)
+    if "load" in keys and keys & {"dx", "dy"}:
+        _fail(fld, "a point gives either a tip deflection (dx, dy) or a tip force (load), not both")
+
+
+def _options(analysis: str, raw: Any) -> dict[str, Any]:
+    if raw is None:
+        raw = {}
+    if not isinstance(raw, Mapping):
+        _fail("options", "must be an object")
+    out: dict[str, Any] = {}
+    for key in raw:
+        if key not in OPTIONS:
+            _fail(f"options.{key}", f"unknown option; expected one of {', '.join(OPTIONS)}")
+        if analysis not in OPTIONS[key]:
+            _fail(f"options.{key}", f"not used by analysis {analysis!r} (only by {', '.join(OPTIONS[key])})")
+    if analysis in ("buckling", "design"):
+        boundary = raw.get("boundary", "guided")
+        if boundary not in ("guided", "free"):
+            _fail("options.boundary", f"must be 'guided' or 'free', got {boundary!r}")
+        out["boundary"] = boundary
+    if analysis != "design":
+        return out
+    vary = raw.get("vary", ["k"])
+    if isinstance(vary, str):
+        vary = [vary]
+    if not isinstance(vary, (list, tuple)) or not vary:
+        _fail("options.vary", "must be a non-empty list of design variables")
+    for i, v in enumerate(vary):
+        if v not in DESIGN_VARIABLES:
+            _fail(f"options.vary[{i}]", f"unknown design variable {v!r}; expected one of {', '.join(DESIGN_VARIABLES)}")
+    if len(set(vary)) != len(vary):
+        _fail("options.vary", "names a variable twice")
+    out["vary"] = list(vary)
+    if "bounds" in raw:
+        bounds = raw["bounds"]
+        if not isinstance(bounds, Mapping):
+            _fail("options.bounds", "must be an object {name: [lo, hi]}")
+        nb: dict[str, list[Any]] = {}
+        for name, pair in bounds.items():
+            fld = f"options.bounds.{name}"
+            if name not in DESIGN_VARIABLES:
+                _fail(fld, f"unknown design variable; expected one of {', '.join(DESIGN_VARIABLES)}")
+            if not isinstance(pair, (list, tuple)) or len(pair) != 2:
+                _fail(fld, "must be [lo, hi]")
+            side = []
+            for j, s in enumerate(pair):
+                if isinstance(s, (list, tuple)):
+                    side.append([_finite(x, f"{fld}[{j}][{i}]") for i, x in enumerate(s)])
+                else:
+                    side.append(_finite(s, f"{fld}[{j}]"))
+            nb[name] = side
+        out["bounds"] = nb
+    if "budget" in raw:
+        budget = raw["budget"]
+        if not isinstance(budget, Mapping):
+            _fail("options.budget", "must be an object {name: total}")
+        for name in budget:
+            if name not in DESIGN_VARIABLES:
+                _fail(f"options.budget.{name}",
+                      f"unknown design variable; expected one of {', '.join(DESIGN_VARIABLES)}")
+        out["budget"] = {name: _finite(v, f"options.budget.{name}") for name, v in budget.items()}
+    if "total_length" in raw:
+        tl = raw["total_length"]
+        out["total_length"] = True if tl is True else _finite(tl, "options.total_length")
+    if "tension" in raw:
+        t = raw["tension"]
+        if not isinstance(t, (list, tuple)) or len(t) != 2:
+            _fail("options.tension", "must be [T_min, T_max]")
+        out["tension"] = [_finite(t[0], "options.tension[0]"), _finite(t[1], "options.tension[1]")]
+    if "K_min" in raw:
+        out["K_min"] = _finite(raw["K_min"], "options.K_min")
+    return out
+
+
+def _header(spec: Any) -> dict[str, Any]:
+    """The validated analysis, base manipulator and options (everything but the points)."""
+    if not isinstance(spec, Mapping):
+        _fail("spec", f"a sweep spec is a JSON object, got {type(spec).__name__}")
+    for key in spec:
+        if key not in _TOP_KEYS:
+            _fail(str(key), f"unknown key; a sweep spec has {', '.join(_TOP_KEYS)}")
+    analysis = spec.get("analysis")
+    if analysis is None:
+        _fail("analysis", f"missing; one of {', '.join(ANALYSES)}")
+    if analysis not in ANALYSES:
+        _fail("analysis", f"unknown analysis {analysis!r}; one of {', '.join(ANALYSES)}")
+    raw_m = spec.get("manipulator")
+    raw_m = {} if raw_m is None else raw_m
+    if not isinstance(raw_m, Mapping):
+        _fail("manipulator", "must be an object {n, a, b, k, L0}")
+    base = dict(DEFAULT_MANIPULATOR)
+    for key, v in raw_m.items():
+        if key not in MANIPULATOR_PARAMETERS:
+            _fail(f"manipulator.{key}", "unknown key; the base chain is uniform: {n, a, b, k, L0}")
+        base[key] = _value(key, v, f"manipulator.{key}")
+    return {"analysis": analysis, "manipulator": base, "options": _options(analysis, spec.get("options"))}
+
+
+def _shape(spec: Mapping[str, Any], analysis: str) -> tuple[str, Any]:
+    has_grid, has_points = spec.get("grid") is not None, spec.get("points") is not None
+    if has_grid == has_points:
+        _fail("grid" if has_grid else "points", "give exactly one of 'grid' (cartesian product) or 'points' (a list)")
+    if has_grid:
+        grid = spec["grid"]
+        if not isinstance(grid, Mapping) or not grid:
+            _fail("grid", "must be a non-empty object {parameter: [values, ...]}")
+        for name, values in grid.items():
+            _check_name(name, analysis, f"grid.{name}")
+            if not isinstance(values, (list, tuple)) or not values:
+                _fail(f"grid.{name}", "must be a non-empty list of values")
+        _check_control(grid, "grid.load")
+        return "grid", grid
+    points = spec["points"]
+    if not isinstance(points, (list, tuple)) or not points:
+        _fail("points", "must be a non-empty list of objects {parameter: value}")
+    return "points", points
+
+
+def count_points(spec: Mapping[str, Any]) -> int:
+    """Number of points of ``spec`` without expanding it (validates its shape, not its values)."""
+    head = _header(spec)
+    kind, body = _shape(spec, head["analysis"])
+    if kind == "grid":
+        return math.prod(len(v) for v in body.values())
+    return len(body)
+
+
+def validate_spec(spec: Any) -> dict[str, Any]:
+    """The normalised spec (defaults filled in, numbers typed); raises ``InvalidParameterError``.
+
+    The error's ``field`` is the path of the culprit (``"grid.dx[2]"``, ``"points[3].load"``,
+    ``"options.vary[0]"``, ``"manipulator.n"``...) and its message starts with that path.
+    Idempotent: a normalised spec validates to itself.
+    """
+    head = _header(spec)
+    analysis = head["analysis"]
+    kind, body = _shape(spec, analysis)
+    total = math.prod(len(v) for v in body.values()) if kind == "grid" else len(body)
+    if total > MAX_POINTS:
+        _fail(kind, f"{total} points; a sweep has at most {MAX_POINTS}")
+    out: dict[str, Any] = {"analysis": analysis, "manipulator": head["manipulator"]}
+    if kind == "grid":
+        out["grid"] = {name: [_value(name, v, f"grid.{name}[{i}]") for i, v in enumerate(values)]
+                       for name, values in body.items()}
+    else:
+        out["points"] = [_point(p, analysis, f"points[{i}]") for i, p in enumerate(body)]
+    out["options"] = head["options"]
+    return out
+
+
+def _point(p: Any, analysis: str, fld: str) -> dict[str, Any]:
+    if not isinstance(p, Mapping):
+        _fail(fld, "must be an object {parameter: value}")
+    for name in p:
+        _check_name(name, analysis, f"{fld}.{name}")
+    _check_control(p, f"{fld}.load")
+    return {name: _value(name, v, f"{fld}.{name}") for name, v in p.items()}
+
+
