@@ -1,7 +1,8 @@
 """Library calls and their conversion to JSON-ready dicts; everything here runs in a solver thread.
 
-Each ``*_job`` function takes validated request models (read only) and returns a plain dict
-matching the response model. Library exceptions propagate unchanged to the route, which maps
+Each ``*_task`` function (a task of the solver pool; "job" means a persistent sweep, see
+:mod:`service.jobs`) takes validated request models (read only) and returns a plain dict matching
+the response model. Library exceptions propagate unchanged to the route, which maps
 them through :mod:`service.errors` (batch items are mapped here, one error per target).
 """
 
@@ -21,10 +22,10 @@ from .errors import FieldContext, error_body
 from .responses import render_json
 
 __all__ = [
-    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job",
-    "equilibrium_inline", "equilibrium_inline_args", "force_equilibrium_job", "equilibria_job", "buckling_job",
-    "force_deflection_job", "stiffness_job",
-    "segment_torque_job", "energy_landscape_job", "batch_job", "warmup_job",
+    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_task",
+    "equilibrium_inline", "equilibrium_inline_args", "force_equilibrium_task", "equilibria_task", "buckling_task",
+    "force_deflection_task", "stiffness_task",
+    "segment_torque_task", "energy_landscape_task", "batch_task", "warmup_task",
 ]
 
 
@@ -106,12 +107,12 @@ def _q0(q0: list[float] | tuple[float, ...] | None) -> np.ndarray | None:
 
 
 # ---------------------------------------------------------------------------- jobs
-def warmup_job() -> None:
+def warmup_task() -> None:
     """Build this thread's CasADi instances for the paper's chain (first-request latency)."""
     to.solve_equilibrium(to.Manipulator.uniform(4), 0.1)
 
 
-def equilibrium_job(req: s.EquilibriumRequest) -> dict[str, Any]:
+def equilibrium_task(req: s.EquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local))
 
@@ -123,7 +124,7 @@ def equilibrium_inline_args(req: s.EquilibriumRequest) -> tuple[Any, ...]:
 
 def equilibrium_inline(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None, local: bool, *,
                        max_segments: int) -> bytes | None:
-    """:func:`equilibrium_job` by the bounded Newton-only search, as the rendered JSON body; ``None``
+    """:func:`equilibrium_task` by the bounded Newton-only search, as the rendered JSON body; ``None``
     when it does not settle the request (long chain, bistable segments, no stable equilibrium found).
 
     Runs in a solver process (``service.lane``) or on the event loop, so it takes plain numbers
@@ -143,12 +144,12 @@ def equilibrium_inline(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[flo
     return render_json(equilibrium_out(eq))
 
 
-def force_equilibrium_job(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
+def force_equilibrium_task(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     return equilibrium_out(to.solve_equilibrium_under_force(m, req.fx, req.fy, q0=_q0(req.q0)))
 
 
-def equilibria_job(req: s.EquilibriaRequest, timeout: float | None = None) -> dict[str, Any]:
+def equilibria_task(req: s.EquilibriaRequest, timeout: float | None = None) -> dict[str, Any]:
     """Every equilibrium; ``timeout`` bounds the homotopy's external solver (killed then, freeing the thread)."""
     m = build_manipulator(req.manipulator)
     eqs = to.find_equilibria(m, req.dx, req.dy, method=req.method, timeout=timeout)
@@ -156,7 +157,7 @@ def equilibria_job(req: s.EquilibriaRequest, timeout: float | None = None) -> di
             "paths": eqs.paths, "failed_paths": eqs.failed_paths}
 
 
-def buckling_job(req: s.BucklingRequest) -> dict[str, Any]:
+def buckling_task(req: s.BucklingRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     bk = to.critical_force(m, req.boundary)
     return {"boundary": bk.boundary, "critical_force": _num(bk.force), "loads": _nums(bk.loads),
@@ -176,7 +177,7 @@ def _force(v: Any) -> dict[str, float]:
     return {"fx": _num(v[0]), "fy": _num(v[1])}
 
 
-def force_deflection_job(req: s.ForceDeflectionRequest) -> dict[str, Any]:
+def force_deflection_task(req: s.ForceDeflectionRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     c = to.force_deflection(m, deflections(req.dx), req.dy, branch=req.branch)
     points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
@@ -200,7 +201,7 @@ def force_deflection_job(req: s.ForceDeflectionRequest) -> dict[str, Any]:
     return {"points": points, "jumps": jumps, "branches": branches}
 
 
-def stiffness_job(req: s.StiffnessRequest) -> dict[str, Any]:
+def stiffness_task(req: s.StiffnessRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0))
     K = to.cartesian_stiffness(m, eq)
@@ -213,7 +214,7 @@ def angles(q: list[float] | s.RangeIn) -> np.ndarray:
     return np.asarray(q, dtype=float)
 
 
-def segment_torque_job(req: s.SegmentTorqueRequest) -> dict[str, Any]:
+def segment_torque_task(req: s.SegmentTorqueRequest) -> dict[str, Any]:
     seg = build_segment(req.segment)
     q = angles(req.q)
     return {"q": _nums(q), "torque": _nums(seg.torque(q)), "dtorque": _nums(seg.dtorque(q)),
@@ -221,7 +222,7 @@ def segment_torque_job(req: s.SegmentTorqueRequest) -> dict[str, Any]:
             "joint_limit": _num(seg.joint_limit)}
 
 
-def energy_landscape_job(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
+def energy_landscape_task(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     land = to.energy_landscape(m, req.dx, req.dy, pair=(req.pair[0], req.pair[1]), grid=req.grid, span=req.span)
     E = land.energy
@@ -229,7 +230,7 @@ def energy_landscape_job(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
     return {"pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj), "energy": energy}
 
 
-def batch_job(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> dict[str, Any]:
+def batch_task(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> dict[str, Any]:
     """Solve the targets in order (:func:`tensegrity_opt.solve_equilibria_batch`).
 
     With ``continuation`` each target continues the branch through the previous result (compiled
@@ -292,7 +293,7 @@ def _best_as_json(exc: to.InfeasibleDesignError) -> to.InfeasibleDesignError:
     return exc
 
 
-def design_critical_force_job(req: s.DesignCriticalForceRequest) -> dict[str, Any]:
+def design_critical_force_task(req: s.DesignCriticalForceRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     constraints: dict[str, Any] = {}
     if req.total_length is not None and req.total_length is not False:
@@ -310,7 +311,7 @@ def design_critical_force_job(req: s.DesignCriticalForceRequest) -> dict[str, An
     return design_out(d)
 
 
-def preloads_for_load_job(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
+def preloads_for_load_task(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     try:
         d = to.preloads_for_critical_force(m, req.required, boundary=req.boundary,
@@ -324,7 +325,7 @@ def preloads_for_load_job(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
     return design_out(d)
 
 
-def preloads_job(req: s.PreloadsRequest) -> dict[str, Any]:
+def preloads_task(req: s.PreloadsRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     try:
         r = to.choose_preloads(m, (req.target.x, req.target.y), (req.load.fx, req.load.fy), req.objective,

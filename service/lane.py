@@ -297,10 +297,10 @@ def child_main(fd: int) -> None:
     sock = socket.socket(fileno=fd)
     # buffered: when calls queue up (many clients), one read system call takes several of them
     calls = sock.makefile("rb", buffering=1 << 16)
-    from .compute import warmup_job
+    from .compute import warmup_task
 
     try:
-        warmup_job()
+        warmup_task()
         gc.collect()
         gc.freeze()             # as the server does: full collections skip what start-up built
         _send(sock, (-1, True, None))
