@@ -19,11 +19,10 @@ from tensegrity_opt.analyses.equilibrium import Equilibrium
 
 from . import schemas as s
 from .errors import FieldContext, error_body
-from .responses import render_json
 
 __all__ = [
     "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_task",
-    "equilibrium_inline", "equilibrium_inline_args", "force_equilibrium_task", "equilibria_task", "buckling_task",
+    "equilibrium_newton_task", "equilibrium_newton_args", "force_equilibrium_task", "equilibria_task", "buckling_task",
     "force_deflection_task", "stiffness_task",
     "segment_torque_task", "energy_landscape_task", "batch_task", "warmup_task",
 ]
@@ -106,7 +105,7 @@ def _q0(q0: list[float] | tuple[float, ...] | None) -> np.ndarray | None:
     return None if q0 is None else np.asarray(q0, dtype=float)
 
 
-# ---------------------------------------------------------------------------- jobs
+# ---------------------------------------------------------------------------- tasks
 def warmup_task() -> None:
     """Build this thread's CasADi instances for the paper's chain (first-request latency)."""
     to.solve_equilibrium(to.Manipulator.uniform(4), 0.1)
@@ -117,31 +116,37 @@ def equilibrium_task(req: s.EquilibriumRequest) -> dict[str, Any]:
     return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local))
 
 
-def equilibrium_inline_args(req: s.EquilibriumRequest) -> tuple[Any, ...]:
-    """The arguments of :func:`equilibrium_inline` for a request: plain numbers, cheap to pickle."""
-    return (manipulator_key(req.manipulator), req.dx, req.dy, None if req.q0 is None else tuple(req.q0), req.local)
+def equilibrium_newton_args(req: s.EquilibriumRequest, max_segments: int) -> tuple[Any, ...] | None:
+    """The arguments of :func:`equilibrium_newton_task` for a request it may settle (plain numbers,
+    cheap to pickle), or ``None`` when it could only answer "not settled": a chain longer than
+    ``max_segments`` (decided from the request, the chain is not built) or with a segment that is not
+    monotonic (bistable: Newton alone often finds saddles only). Decided here, by the caller, so such
+    a request goes straight to the solver threads instead of a round trip to a solver process."""
+    if segment_count(req.manipulator) > max_segments:
+        return None
+    key = manipulator_key(req.manipulator)
+    if not _manipulator(key).monotonic:     # the chain is cached: the solve reuses it
+        return None
+    return (key, req.dx, req.dy, None if req.q0 is None else tuple(req.q0), req.local)
 
 
-def equilibrium_inline(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None, local: bool, *,
-                       max_segments: int) -> bytes | None:
-    """:func:`equilibrium_task` by the bounded Newton-only search, as the rendered JSON body; ``None``
-    when it does not settle the request (long chain, bistable segments, no stable equilibrium found).
+def equilibrium_newton_task(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None,
+                            local: bool) -> dict[str, Any] | None:
+    """:func:`equilibrium_task` by the bounded Newton-only search (``method="newton"``); ``None`` when
+    it finds no stable equilibrium (then :func:`equilibrium_task` decides, IPOPT included).
 
-    Runs in a solver process (``service.lane``) or on the event loop, so it takes plain numbers
-    (:func:`equilibrium_inline_args`) and returns the body the route would send, rendered here
-    rather than validated and serialized again on the event loop (~65 us there per request).
-    For chains of monotonic segments ``solve_equilibrium(method="auto")`` returns exactly the
-    Newton-only answer whenever that finds one (and with ``local`` the same Newton solve before its
-    IPOPT fallback), so the result does not depend on the path (the service tests compare the bytes).
+    For the chains :func:`equilibrium_newton_args` admits (monotonic segments)
+    ``solve_equilibrium(method="auto")`` returns exactly the Newton-only answer whenever that finds
+    one (and with ``local`` the same Newton solve before its IPOPT fallback), so the answer does not
+    depend on which of the two ran (the service tests compare the bytes). Runs in a solver process
+    (``service.lane``), hence plain numbers in.
     """
     m = _manipulator(key)
-    if m.n > max_segments or not m.monotonic:
-        return None
     try:
         eq = to.solve_equilibrium(m, dx, dy, q0=_q0(q0), local=local, method="newton")
     except (to.NoEquilibriumError, to.SolverError):
         return None
-    return render_json(equilibrium_out(eq))
+    return equilibrium_out(eq)
 
 
 def force_equilibrium_task(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
