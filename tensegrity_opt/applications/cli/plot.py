@@ -207,8 +207,8 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
-    """``python -m tensegrity_opt.plot_cli KIND ...``: the ``plot`` command on its own."""
-    from ... import main as cli_main
+    """``python -m tensegrity_opt.applications.cli.plot KIND ...``: the ``plot`` command on its own."""
+    from . import main as cli_main
 
     return cli_main(["plot", *(sys.argv[1:] if argv is None else argv)])
 
