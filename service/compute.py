@@ -1,4 +1,5 @@
-"""Library calls and their conversion to JSON-ready dicts; everything here runs in a solver thread.
+"""Library calls and their conversion to JSON-ready dicts; everything here runs in a solver thread
+(or, :func:`equilibrium_newton_task`, in a solver process), never on the event loop.
 
 Each ``*_task`` function (a task of the solver pool; "job" means a persistent sweep, see
 :mod:`service.jobs`) takes validated request models (read only) and returns a plain dict matching
