@@ -18,7 +18,6 @@ import collections
 import gc
 import json
 import os
-import shutil
 import signal
 import socket
 import subprocess
@@ -49,12 +48,9 @@ def own_server(timeout: float = 60.0, env: dict[str, str] | None = None) -> Iter
     import httpx
 
     port = free_port()
-    exe = shutil.which("tensegrity-opt")
-    if exe is None:
-        cand = os.path.join(os.path.dirname(sys.executable), "tensegrity-opt")
-        exe = cand if os.path.exists(cand) else None
-    cmd = [exe] if exe else [sys.executable, "-m", "tensegrity_opt.applications.cli"]
-    cmd += ["serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log", "--log-level", "warning"]
+    # ``python -m service`` is the console script's code (service.cli), whatever the installed script points at
+    cmd = [sys.executable, "-m", "service", "serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log",
+           "--log-level", "warning"]
     log = tempfile.NamedTemporaryFile("w+", prefix="tensegrity-bench-server-", suffix=".log", delete=False)
     proc = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT, env={**os.environ, **(env or {})})
     url = f"http://127.0.0.1:{port}"

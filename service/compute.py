@@ -1,7 +1,9 @@
-"""Library calls and their conversion to JSON-ready dicts; everything here runs in a solver thread.
+"""Library calls and their conversion to JSON-ready dicts; everything here runs in a solver thread
+(or, :func:`equilibrium_newton_task`, in a solver process), never on the event loop.
 
-Each ``*_job`` function takes validated request models (read only) and returns a plain dict
-matching the response model. Library exceptions propagate unchanged to the route, which maps
+Each ``*_task`` function (a task of the solver pool; "job" means a persistent sweep, see
+:mod:`service.jobs`) takes validated request models (read only) and returns a plain dict matching
+the response model. Library exceptions propagate unchanged to the route, which maps
 them through :mod:`service.errors` (batch items are mapped here, one error per target).
 """
 
@@ -18,13 +20,12 @@ from tensegrity_opt.analyses.equilibrium import Equilibrium
 
 from . import schemas as s
 from .errors import FieldContext, error_body
-from .responses import render_json
 
 __all__ = [
-    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_job",
-    "equilibrium_inline", "equilibrium_inline_args", "force_equilibrium_job", "equilibria_job", "buckling_job",
-    "force_deflection_job", "stiffness_job",
-    "segment_torque_job", "energy_landscape_job", "batch_job", "warmup_job",
+    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_task",
+    "equilibrium_newton_task", "equilibrium_newton_args", "force_equilibrium_task", "equilibria_task", "buckling_task",
+    "force_deflection_task", "stiffness_task",
+    "segment_torque_task", "energy_landscape_task", "batch_task", "warmup_task",
 ]
 
 
@@ -105,50 +106,56 @@ def _q0(q0: list[float] | tuple[float, ...] | None) -> np.ndarray | None:
     return None if q0 is None else np.asarray(q0, dtype=float)
 
 
-# ---------------------------------------------------------------------------- jobs
-def warmup_job() -> None:
+# ---------------------------------------------------------------------------- tasks
+def warmup_task() -> None:
     """Build this thread's CasADi instances for the paper's chain (first-request latency)."""
     to.solve_equilibrium(to.Manipulator.uniform(4), 0.1)
 
 
-def equilibrium_job(req: s.EquilibriumRequest) -> dict[str, Any]:
+def equilibrium_task(req: s.EquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local))
 
 
-def equilibrium_inline_args(req: s.EquilibriumRequest) -> tuple[Any, ...]:
-    """The arguments of :func:`equilibrium_inline` for a request: plain numbers, cheap to pickle."""
-    return (manipulator_key(req.manipulator), req.dx, req.dy, None if req.q0 is None else tuple(req.q0), req.local)
+def equilibrium_newton_args(req: s.EquilibriumRequest, max_segments: int) -> tuple[Any, ...] | None:
+    """The arguments of :func:`equilibrium_newton_task` for a request it may settle (plain numbers,
+    cheap to pickle), or ``None`` when it could only answer "not settled": a chain longer than
+    ``max_segments`` (decided from the request, the chain is not built) or with a segment that is not
+    monotonic (bistable: Newton alone often finds saddles only). Decided here, by the caller, so such
+    a request goes straight to the solver threads instead of a round trip to a solver process."""
+    if segment_count(req.manipulator) > max_segments:
+        return None
+    key = manipulator_key(req.manipulator)
+    if not _manipulator(key).monotonic:     # the chain is cached: the solve reuses it
+        return None
+    return (key, req.dx, req.dy, None if req.q0 is None else tuple(req.q0), req.local)
 
 
-def equilibrium_inline(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None, local: bool, *,
-                       max_segments: int) -> bytes | None:
-    """:func:`equilibrium_job` by the bounded Newton-only search, as the rendered JSON body; ``None``
-    when it does not settle the request (long chain, bistable segments, no stable equilibrium found).
+def equilibrium_newton_task(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None,
+                            local: bool) -> dict[str, Any] | None:
+    """:func:`equilibrium_task` by the bounded Newton-only search (``method="newton"``); ``None`` when
+    it finds no stable equilibrium (then :func:`equilibrium_task` decides, IPOPT included).
 
-    Runs in a solver process (``service.lane``) or on the event loop, so it takes plain numbers
-    (:func:`equilibrium_inline_args`) and returns the body the route would send, rendered here
-    rather than validated and serialized again on the event loop (~65 us there per request).
-    For chains of monotonic segments ``solve_equilibrium(method="auto")`` returns exactly the
-    Newton-only answer whenever that finds one (and with ``local`` the same Newton solve before its
-    IPOPT fallback), so the result does not depend on the path (the service tests compare the bytes).
+    For the chains :func:`equilibrium_newton_args` admits (monotonic segments)
+    ``solve_equilibrium(method="auto")`` returns exactly the Newton-only answer whenever that finds
+    one (and with ``local`` the same Newton solve before its IPOPT fallback), so the answer does not
+    depend on which of the two ran (the service tests compare the bytes). Runs in a solver process
+    (``service.lane``), hence plain numbers in.
     """
     m = _manipulator(key)
-    if m.n > max_segments or not m.monotonic:
-        return None
     try:
         eq = to.solve_equilibrium(m, dx, dy, q0=_q0(q0), local=local, method="newton")
     except (to.NoEquilibriumError, to.SolverError):
         return None
-    return render_json(equilibrium_out(eq))
+    return equilibrium_out(eq)
 
 
-def force_equilibrium_job(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
+def force_equilibrium_task(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     return equilibrium_out(to.solve_equilibrium_under_force(m, req.fx, req.fy, q0=_q0(req.q0)))
 
 
-def equilibria_job(req: s.EquilibriaRequest, timeout: float | None = None) -> dict[str, Any]:
+def equilibria_task(req: s.EquilibriaRequest, timeout: float | None = None) -> dict[str, Any]:
     """Every equilibrium; ``timeout`` bounds the homotopy's external solver (killed then, freeing the thread)."""
     m = build_manipulator(req.manipulator)
     eqs = to.find_equilibria(m, req.dx, req.dy, method=req.method, timeout=timeout)
@@ -156,7 +163,7 @@ def equilibria_job(req: s.EquilibriaRequest, timeout: float | None = None) -> di
             "paths": eqs.paths, "failed_paths": eqs.failed_paths}
 
 
-def buckling_job(req: s.BucklingRequest) -> dict[str, Any]:
+def buckling_task(req: s.BucklingRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     bk = to.critical_force(m, req.boundary)
     return {"boundary": bk.boundary, "critical_force": _num(bk.force), "loads": _nums(bk.loads),
@@ -176,7 +183,7 @@ def _force(v: Any) -> dict[str, float]:
     return {"fx": _num(v[0]), "fy": _num(v[1])}
 
 
-def force_deflection_job(req: s.ForceDeflectionRequest) -> dict[str, Any]:
+def force_deflection_task(req: s.ForceDeflectionRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     c = to.force_deflection(m, deflections(req.dx), req.dy, branch=req.branch)
     points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
@@ -200,7 +207,7 @@ def force_deflection_job(req: s.ForceDeflectionRequest) -> dict[str, Any]:
     return {"points": points, "jumps": jumps, "branches": branches}
 
 
-def stiffness_job(req: s.StiffnessRequest) -> dict[str, Any]:
+def stiffness_task(req: s.StiffnessRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0))
     K = to.cartesian_stiffness(m, eq)
@@ -213,7 +220,7 @@ def angles(q: list[float] | s.RangeIn) -> np.ndarray:
     return np.asarray(q, dtype=float)
 
 
-def segment_torque_job(req: s.SegmentTorqueRequest) -> dict[str, Any]:
+def segment_torque_task(req: s.SegmentTorqueRequest) -> dict[str, Any]:
     seg = build_segment(req.segment)
     q = angles(req.q)
     return {"q": _nums(q), "torque": _nums(seg.torque(q)), "dtorque": _nums(seg.dtorque(q)),
@@ -221,7 +228,7 @@ def segment_torque_job(req: s.SegmentTorqueRequest) -> dict[str, Any]:
             "joint_limit": _num(seg.joint_limit)}
 
 
-def energy_landscape_job(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
+def energy_landscape_task(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     land = to.energy_landscape(m, req.dx, req.dy, pair=(req.pair[0], req.pair[1]), grid=req.grid, span=req.span)
     E = land.energy
@@ -229,7 +236,7 @@ def energy_landscape_job(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
     return {"pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj), "energy": energy}
 
 
-def batch_job(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> dict[str, Any]:
+def batch_task(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> dict[str, Any]:
     """Solve the targets in order (:func:`tensegrity_opt.solve_equilibria_batch`).
 
     With ``continuation`` each target continues the branch through the previous result (compiled
@@ -292,7 +299,7 @@ def _best_as_json(exc: to.InfeasibleDesignError) -> to.InfeasibleDesignError:
     return exc
 
 
-def design_critical_force_job(req: s.DesignCriticalForceRequest) -> dict[str, Any]:
+def design_critical_force_task(req: s.DesignCriticalForceRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     constraints: dict[str, Any] = {}
     if req.total_length is not None and req.total_length is not False:
@@ -310,7 +317,7 @@ def design_critical_force_job(req: s.DesignCriticalForceRequest) -> dict[str, An
     return design_out(d)
 
 
-def preloads_for_load_job(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
+def preloads_for_load_task(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     try:
         d = to.preloads_for_critical_force(m, req.required, boundary=req.boundary,
@@ -324,7 +331,7 @@ def preloads_for_load_job(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
     return design_out(d)
 
 
-def preloads_job(req: s.PreloadsRequest) -> dict[str, Any]:
+def preloads_task(req: s.PreloadsRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     try:
         r = to.choose_preloads(m, (req.target.x, req.target.y), (req.load.fx, req.load.fy), req.objective,

@@ -12,7 +12,7 @@ variable                               default    meaning
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
-``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: on the event loop)
+``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: none, the solver threads)
 ``TENSEGRITY_QUEUE_SIZE``              64         requests waiting for a solver thread (503 beyond)
 ``TENSEGRITY_HEAVY_THREADS``           (auto)     solver threads heavy requests may hold at once (``WORKERS`` - 1, >= 1)
 ``TENSEGRITY_HEAVY_SEGMENTS``          50         chains longer than this make curves/equilibria requests heavy
@@ -97,13 +97,15 @@ class Settings(BaseSettings):
     workers: int = Field(2, ge=1, le=64, description="solver worker threads")
     inline_max_segments: int = Field(
         8, ge=0, le=64,
-        description="chains up to this many segments (with monotonic segments) are first solved on the event "
-                    "loop by the bounded Newton-only search (a few hundred microseconds, less than the hand-off "
-                    "to a worker thread); what it does not settle goes to the workers. 0: always the workers")
+        description="/v1/equilibrium for chains up to this many segments (with monotonic segments) is first "
+                    "solved by the bounded Newton-only search in a solver process (a few hundred microseconds, "
+                    "less than the hand-off to a worker thread); what it does not settle goes to the workers. "
+                    "0: always the workers")
     inline_processes: int = Field(
         1, ge=0, le=64,
         description="solver processes for that bounded search (service.lane): the event loop hands the request "
-                    "over and goes on with HTTP meanwhile. 0: the event loop solves it itself")
+                    "over and goes on with HTTP meanwhile; while none is ready the workers solve it. 0: no "
+                    "process, the workers solve every request")
     queue_size: int = Field(64, ge=0, le=100000, description="requests waiting for a worker before 503")
     heavy_threads: int | None = Field(
         None, ge=1, le=64,

@@ -1,9 +1,11 @@
-"""Shared route dependencies: settings, API-key auth, size limits, running a solve in the pool."""
+"""Shared route dependencies: settings, API-key auth, size limits, and :func:`solve`, the one place
+that decides where a solve runs (a solver process or the solver pool; never the event loop)."""
 
 from __future__ import annotations
 
 import asyncio
 import secrets
+import time
 from collections.abc import Callable
 from typing import Any
 
@@ -17,7 +19,7 @@ from .config import Settings
 from .errors import FieldContext, ServiceError
 from .lane import LaneUnavailable, SolverLane
 from .pool import SolveTimeout
-from .responses import ResponseTooLarge, render_json_bounded
+from .responses import JSONBody, ResponseTooLarge, render_task
 
 __all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch",
            "check_curve_size", "solve", "solve_heavy", "is_heavy"]
@@ -94,52 +96,55 @@ def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
                            details={"targets": len(req.targets), "max_batch": settings.max_batch})
 
 
-def _rendered(fn: Callable[..., Any], args: tuple[Any, ...], limit: int, field: str | None) -> Any:
-    """``fn(*args)``; a JSON result is rendered here, in the solver thread, within ``limit`` bytes
-    (:class:`ResponseTooLarge` naming ``field`` otherwise). Bytes (figures) are returned as they are."""
-    result = fn(*args)
-    if isinstance(result, (bytes, Response)):
-        return result
-    return Response(render_json_bounded(result, limit, field), media_type="application/json")
-
-
 async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext,
                 timeout: float | None = None,
-                inline: tuple[Callable[..., bytes | None], tuple[Any, ...]] | None = None,
+                fast: tuple[Callable[..., Any], tuple[Any, ...]] | None = None,
                 heavy: bool = False, size_field: str | None = None) -> Any:
-    """Run ``fn(*args)`` in the solver pool under the time limit; errors map through ``service.errors``.
+    """The one dispatcher of a solve: ``fn(*args)`` under the time limit, never on the event loop.
 
-    ``inline = (g, g_args)``, when given, runs first: ``g(*g_args, max_segments=...)`` is a bounded
-    fast path (``compute.equilibrium_inline``) that returns the rendered JSON body, or ``None`` to
-    hand the request to the pool. ``heavy`` marks a long request class (:func:`is_heavy`): such calls
-    hold at most ``heavy_threads`` solver threads at once. A JSON result of the pool is rendered in the
-    solver thread (the event loop only sends the bytes; FastAPI's response-model pass is skipped),
-    bounded by ``max_response_bytes``: over it, 422 ``response_too_large`` naming ``size_field``.
-    The inline fast path runs in a solver process (:mod:`service.lane`) when one is
-    ready, so the event loop goes on with HTTP meanwhile; otherwise (no process configured,
-    starting, restarting, saturated, or the call raised there) on the event loop itself, which also
-    raises any error again in-process. A thread hand-off costs ~0.1-0.2 ms here, as much as a whole
-    short-chain solve, hence no solver thread for this path.
+    Where the call runs is decided here, once:
+
+    * ``fast = (g, g_args)`` (given by the route only for a request the bounded search may settle,
+      e.g. :func:`service.compute.equilibrium_newton_args`) and a solver process is ready and not
+      saturated: ``g(*g_args)`` runs in that process (:mod:`service.lane`), so the event loop goes on
+      with HTTP meanwhile (a thread hand-off costs ~0.1-0.2 ms, as much as a whole short-chain solve).
+      Its answer is sent as it is; when it does not settle the request (``None``) or the process
+      cannot answer (not running, restarting, saturated, died, or the call raised there: the pool
+      then raises that error again with its full type), ``fn`` runs in the pool with the time left.
+    * otherwise: ``fn(*args)`` in the solver pool (:mod:`service.pool`); ``heavy`` marks a long
+      request class (:func:`is_heavy`): such calls hold at most ``heavy_threads`` solver threads.
+
+    Both sites produce the body the same way (:func:`service.responses.render_task`: the task's
+    JSON-ready dict, rendered where it ran within ``max_response_bytes``; over it, 422
+    ``response_too_large`` naming ``size_field``), so FastAPI's response-model pass is skipped and
+    the response schema is checked by the tests for both. Errors map through ``service.errors``.
     """
     request.state.field_context = ctx
     settings: Settings = request.app.state.settings
     timeout = timeout or settings.solve_timeout
-    if inline is not None and settings.inline_max_segments:
-        g, g_args = inline
-        body = None
+    limit = settings.max_response_bytes
+    if fast is not None:
         lane = _pick_lane(request.app.state.lanes)
-        try:
-            if lane is None:
-                raise LaneUnavailable("no solver process")
-            body = await lane.run(g, *g_args, timeout=timeout, max_segments=settings.inline_max_segments)
-        except LaneUnavailable:
-            body = g(*g_args, max_segments=settings.inline_max_segments)
-        except (asyncio.TimeoutError, TimeoutError):
-            raise SolveTimeout(timeout) from None
-        if body is not None:
-            return Response(body, media_type="application/json")
-    return await request.app.state.pool.run(_rendered, fn, args, settings.max_response_bytes, size_field,
-                                            timeout=timeout, heavy=heavy)
+        if lane is not None:
+            g, g_args = fast
+            start = time.monotonic()
+            try:
+                body = await lane.run(render_task, g, g_args, limit, size_field, timeout=timeout)
+            except LaneUnavailable:
+                body = None
+            except (asyncio.TimeoutError, TimeoutError):
+                raise SolveTimeout(timeout) from None
+            if body is not None:
+                return Response(body, media_type="application/json")
+            timeout = max(timeout - (time.monotonic() - start), MIN_TIME_LEFT)
+    body = await request.app.state.pool.run(render_task, fn, args, limit, size_field, timeout=timeout, heavy=heavy)
+    if isinstance(body, JSONBody):
+        return Response(body, media_type="application/json")
+    return body             # a figure's bytes (the route adds its media type)
+
+
+#: Seconds the pool gets at least after a solver process's miss (the request's time limit goes on).
+MIN_TIME_LEFT = 0.001
 
 
 def is_heavy(settings: Settings, m: Any, *, branch_all: bool = False, homotopy: bool = False) -> bool:

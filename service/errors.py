@@ -150,9 +150,8 @@ def status_for(exc: BaseException) -> int:
 def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[str, Any] | None:
     """``ErrorOut`` for an exception a solve may raise, or ``None`` when it is a server bug.
 
-    Library exceptions keep their ``code`` (the bare base ``TensegrityError``, which
-    ``force_deflection`` raises when no stable equilibrium exists at a point, becomes
-    ``no_equilibrium``); numerical exceptions from numpy/scipy/CasADi become
+    Library exceptions keep their ``code`` (every one is a subclass of ``TensegrityError``, which is
+    never raised itself); numerical exceptions from numpy/scipy/CasADi become
     ``numerical_failure`` (answered with 500: see :func:`to_api_error`).
     """
     if isinstance(exc, ServiceError):
@@ -177,8 +176,7 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
         return {"code": "jobs_unavailable", "message": str(exc)}
     if isinstance(exc, TensegrityError):
         d = exc.to_dict()
-        code = exc.code if type(exc) is not TensegrityError else "no_equilibrium"
-        out = {"code": code, "message": exc.message}
+        out = {"code": exc.code, "message": exc.message}
         field = request_field(exc.field, ctx)
         if field:
             out["field"] = field

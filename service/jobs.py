@@ -68,15 +68,10 @@ beside servers still writing into the old one).
 The database file is created on the first submitted job, so a server that never gets a job
 leaves no file behind.
 
-Wiring (``service/main.py``)::
-
-    runner = JobRunner(settings)          # reads TENSEGRITY_JOBS_* (service.config.Settings)
-    app.state.jobs = runner
-    app.include_router(routes.jobs.router)
-    # lifespan: runner.start() after the pool starts; await asyncio.to_thread(runner.stop) at exit
-
-Until then :func:`create_app_with_jobs` (``uvicorn --factory service.jobs:create_app_with_jobs``)
-builds the service's app with the jobs API attached.
+Wiring: :func:`service.main.create_app` builds the runner (``JobRunner(settings)``, reading
+``TENSEGRITY_JOBS_*``), keeps it in ``app.state.jobs``, includes ``service.routes.jobs`` and, in its
+lifespan, starts the runner after the solver pool and stops it at shutdown. This module imports
+neither of them.
 """
 
 from __future__ import annotations
@@ -91,8 +86,8 @@ import sqlite3
 import threading
 import time
 import uuid
-from collections.abc import AsyncIterator, Callable, Iterable, Iterator, Mapping
-from contextlib import asynccontextmanager, contextmanager
+from collections.abc import Callable, Iterable, Iterator, Mapping
+from contextlib import contextmanager
 from datetime import UTC, datetime
 from pathlib import Path
 from typing import Any
@@ -114,9 +109,8 @@ from tensegrity_opt.applications.sweeps import sweep as run_sweep
 log = logging.getLogger("service.jobs")
 
 __all__ = ["JobStore", "JobRunner", "JobNotFound", "JobFinished", "JobsUnavailable", "PointTimeout", "TERMINAL",
-           "owner_hash", "install", "create_app_with_jobs"]
+           "owner_hash"]
 
-STATUSES = ("queued", "running", "done", "failed", "cancelled", "interrupted")
 TERMINAL = frozenset({"done", "failed", "cancelled", "interrupted"})
 
 
@@ -1049,45 +1043,3 @@ def summary(job: Mapping[str, Any]) -> dict[str, Any]:
             "runs": job["runs"], "created_at": iso(job["created_at"]), "started_at": iso(job["started_at"]),
             "finished_at": iso(job["finished_at"]), "message": job["message"]}
 
-
-# =========================================================================== app wiring
-def install(app: Any, settings: Any = None, **runner_kwargs: Any) -> JobRunner:
-    """Attach the jobs API to a service app built by ``service.main.create_app``.
-
-    Adds the router, ``app.state.jobs`` and wraps the app's lifespan so that the runner starts
-    after the app's own start-up and stops before its shutdown. Does nothing when the app has
-    jobs already (``service/main.py`` wires them).
-    """
-    existing = getattr(app.state, "jobs", None)
-    if existing is not None:
-        return existing
-    from .routes import jobs as jobs_routes
-
-    runner = JobRunner(settings if settings is not None else getattr(app.state, "settings", None), **runner_kwargs)
-    app.state.jobs = runner
-    app.include_router(jobs_routes.router)
-    inner = app.router.lifespan_context
-
-    @asynccontextmanager
-    async def lifespan(a: Any) -> AsyncIterator[Any]:
-        import asyncio
-
-        async with inner(a) as state:
-            runner.start()
-            try:
-                yield state
-            finally:
-                await asyncio.to_thread(runner.stop)
-
-    app.router.lifespan_context = lifespan
-    return runner
-
-
-def create_app_with_jobs() -> Any:
-    """The service app (settings from the environment) with the jobs API; a uvicorn ``--factory``."""
-    from .main import create_app
-
-    settings = Settings()
-    app = create_app(settings)
-    install(app, settings)
-    return app

@@ -3,23 +3,26 @@
 Why a process, and why this lane
 --------------------------------
 * A short chain's global search (n = 4: ~0.3-0.5 ms of Python and compiled Newton) is as long as
-  the HTTP work around it. Solved on the event loop, both share one core; the solver threads of
-  :mod:`service.pool` cannot help (the GIL: the search is mostly Python). A child process solves
-  on the other core while the loop parses, validates and answers the next requests.
+  the HTTP work around it, and a hand-off to a solver thread of :mod:`service.pool` costs
+  ~0.1-0.2 ms more, with the search then holding the GIL the event loop needs (it is mostly
+  Python). A child process solves on the other core while the loop parses, validates and answers
+  the next requests.
 * The lane carries only calls that are *bounded* and *deterministic*: the Newton-only search of
-  :func:`service.compute.equilibrium_inline` (it returns ``None`` for what it does not settle;
-  the route then hands the request to the thread pool). Everything else still goes to the pool.
+  :func:`service.compute.equilibrium_newton_task`, sent by :func:`service.deps.solve` (the one
+  dispatcher) only for requests it may settle; it renders its answer there, as a solver thread
+  would (:func:`service.responses.render_task`), or returns ``None`` when it finds nothing (the
+  request then goes to the pool). Everything else goes to the pool directly.
 * Nothing is lost: if the child is not running (starting, crashed, killed), is saturated, or the
-  call raises there, :meth:`SolverLane.run` raises :class:`LaneUnavailable` and the caller runs
-  the same call on the event loop, as before the lane existed; an exception is thus raised again
-  in-process with its full type and mapped to HTTP like any other. A dead child is restarted
+  call raises there, :meth:`SolverLane.run` raises :class:`LaneUnavailable` and the caller hands
+  the request to the pool (never to the event loop); an exception is thus raised again there with
+  its full type and mapped to HTTP like any other. A dead child is restarted
   (at most once every ``RESTART_INTERVAL`` seconds); so is one that answers no call for a whole
   time limit (stuck).
 * Protocol: one ``socketpair``. A call is its length and id (big-endian 4 + 8 bytes) and a pickle
   of ``(function, args, kwargs)``; a reply a 4-byte length and a pickle of ``(call id, ok, result)``. The
   child is ``python -m service.lane FD`` (a fresh interpreter, no fork of a threaded server); it
   builds its solvers (warm-up), answers calls in order and exits when the socket closes. A call
-  it cannot unpickle or run is answered "failed" (the parent then runs it itself).
+  it cannot unpickle or run is answered "failed" (the parent then hands the request to the pool).
 """
 
 from __future__ import annotations
@@ -47,7 +50,7 @@ RESTART_INTERVAL = 5.0          # seconds between restarts of a child that died
 
 
 class LaneUnavailable(Exception):
-    """The lane cannot take or finish this call: the caller runs it itself."""
+    """The lane cannot take or finish this call: the caller has it run elsewhere (the pool)."""
 
 
 def _expire(fut: asyncio.Future[Any]) -> None:
@@ -92,7 +95,7 @@ class SolverLane:
     Parameters
     ----------
     max_in_flight : int
-        Calls sent and not answered yet beyond which :meth:`run` refuses (the caller solves itself).
+        Calls sent and not answered yet beyond which :meth:`run` refuses (the caller hands the request to the pool).
     env : dict, optional
         Extra environment of the child (the parent's is inherited).
     """
@@ -227,7 +230,7 @@ class SolverLane:
 
     def _kill(self, why: str) -> None:
         """End a child that stopped answering; the closed socket then fails its calls (the callers
-        solve themselves) and the next call restarts it."""
+        go to the pool) and the next call restarts it."""
         proc = self._proc
         if proc is not None and proc.poll() is None:
             log.warning("solver process %s %s; killing it", proc.pid, why)
@@ -239,7 +242,7 @@ class SolverLane:
             self.completed += 1
         if call_id < 0 and not ok:
             self._broken = True
-            log.warning("the solver process failed its warm-up (%s); requests run on the event loop", value)
+            log.warning("the solver process failed its warm-up (%s); requests run in the solver threads", value)
         if fut is None or fut.done():
             return
         if ok:
@@ -260,12 +263,12 @@ class SolverLane:
                 proc.kill()
                 code = proc.wait(1.0)
             if was_ready:
-                log.warning("solver process %s exited (status %s); requests run on the event loop until it "
+                log.warning("solver process %s exited (status %s); requests run in the solver threads until it "
                             "is restarted", proc.pid, code)
             else:               # it never got ready (cannot import the service, say): not restarted
                 self._broken = True
-                log.warning("solver process %s exited (status %s) before it was ready; requests run on the "
-                            "event loop", proc.pid, code)
+                log.warning("solver process %s exited (status %s) before it was ready; requests run in the "
+                            "solver threads", proc.pid, code)
             self._proc = None
 
     def _fail_pending(self) -> None:
@@ -297,14 +300,14 @@ def child_main(fd: int) -> None:
     sock = socket.socket(fileno=fd)
     # buffered: when calls queue up (many clients), one read system call takes several of them
     calls = sock.makefile("rb", buffering=1 << 16)
-    from .compute import warmup_job
+    from .compute import warmup_task
 
     try:
-        warmup_job()
+        warmup_task()
         gc.collect()
         gc.freeze()             # as the server does: full collections skip what start-up built
         _send(sock, (-1, True, None))
-    except Exception as exc:  # noqa: BLE001 - reported to the parent, which then solves itself
+    except Exception as exc:  # noqa: BLE001 - reported to the parent, which then uses the pool only
         _send(sock, (-1, False, repr(exc)))
         return
     while True:
@@ -318,7 +321,7 @@ def child_main(fd: int) -> None:
         try:
             fn, args, kwargs = pickle.loads(body)
             reply = (call_id, True, fn(*args, **kwargs))
-        except Exception as exc:  # noqa: BLE001 - the parent runs the call again itself and maps the error
+        except Exception as exc:  # noqa: BLE001 - the parent has the pool run the request and map the error
             reply = (call_id, False, f"{type(exc).__name__}: {exc}")
         try:
             _send(sock, reply)

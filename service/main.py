@@ -21,7 +21,7 @@ from fastapi.middleware.cors import CORSMiddleware
 import tensegrity_opt
 
 from . import docs, errors, jobs
-from .compute import warmup_job
+from .compute import warmup_task
 from .config import Settings, get_settings
 from .deps import require_api_key
 from .heavy import ProcessLane
@@ -100,21 +100,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
             try:
                 await lane.start()
             except (OSError, ValueError) as exc:    # ValueError: no pass_fds on this platform
-                log.warning("could not start a solver process (requests run on the event loop): %r", exc)
+                log.warning("could not start a solver process (requests run in the solver threads): %r", exc)
         if settings.warmup:
             # One warm-up call per worker (best effort): each thread builds its CasADi instances.
-            jobs = [pool.run(warmup_job, timeout=max(settings.solve_timeout, 30.0)) for _ in range(pool.workers)]
-            for res in await asyncio.gather(*jobs, return_exceptions=True):
+            warmups = [pool.run(warmup_task, timeout=max(settings.solve_timeout, 30.0)) for _ in range(pool.workers)]
+            for res in await asyncio.gather(*warmups, return_exceptions=True):
                 if isinstance(res, BaseException):
                     log.warning("solver warm-up failed: %r", res)
-            if settings.inline_max_segments:
-                try:            # the event loop's own instances, for the requests it solves inline
-                    warmup_job()
-                except Exception as exc:  # noqa: BLE001 - best effort, as for the workers
-                    log.warning("event-loop solver warm-up failed: %r", exc)
             for lane in lanes:
                 if not await lane.wait_ready(60.0):
-                    log.warning("a solver process is not ready after 60 s; requests run on the event loop")
+                    log.warning("a solver process is not ready after 60 s; requests run in the solver threads")
         runner.start()
         # Everything built so far (modules, solvers, caches) lives as long as the process: move it
         # out of the collector's view. A full collection otherwise walks it all, ~50 ms every second

@@ -77,7 +77,7 @@ def _set_async_exc(thread_id: int, exc: type[BaseException] | None) -> int:
         return 0
 
 
-class _Job:
+class _Task:
     __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "submitted", "deadline",
                  "heavy")
 
@@ -92,7 +92,7 @@ class _Job:
         self.cancel_sent = False
         self.abandoned = False
         self.submitted = time.monotonic()
-        # time.monotonic(): the library time limit of the call, set before any worker can see the job
+        # time.monotonic(): the library time limit of the call, set before any worker can see the task
         self.deadline: float | None = None if timeout is None else self.submitted + timeout
 
 
@@ -114,11 +114,11 @@ class SolverPool:
         self.name = name
         self._lock = threading.Lock()
         self._cond = threading.Condition(self._lock)
-        self._queue: collections.deque[_Job] = collections.deque()
+        self._queue: collections.deque[_Task] = collections.deque()
         self._threads: list[threading.Thread] = []
         self._pending = 0           # submitted calls not finished yet (queued + running)
         self._running = 0
-        self._active: set[_Job] = set()
+        self._active: set[_Task] = set()
         self._stopping = False
         self.cancelled_running = 0  # calls interrupted in a worker (statistics)
 
@@ -143,19 +143,19 @@ class SolverPool:
             dropped = list(self._queue)
             self._queue.clear()
             self._cond.notify_all()
-        for job in dropped:
-            job.future.cancel()
+        for task in dropped:
+            task.future.cancel()
             self._finished()
         with self._lock:
-            running = [j for j in self._active_jobs() if j.state == _RUNNING]
-        for job in running:
-            self._cancel_running(job)
+            running = [j for j in self._active_tasks() if j.state == _RUNNING]
+        for task in running:
+            self._cancel_running(task)
         if wait:
             deadline = time.monotonic() + timeout
             for t in self._threads:
                 t.join(max(0.0, deadline - time.monotonic()))
 
-    def _active_jobs(self) -> list[_Job]:
+    def _active_tasks(self) -> list[_Task]:
         return list(self._active)
 
     # ------------------------------------------------------------------ statistics
@@ -177,10 +177,10 @@ class SolverPool:
         return self.workers + self.queue_size
 
     # ------------------------------------------------------------------ submission
-    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False, timeout: float | None = None) -> _Job:
+    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False, timeout: float | None = None) -> _Task:
         """Queue ``fn(*args)`` (under the library time limit ``timeout``, if given); raise
         :class:`PoolSaturated` when ``workers + queue_size`` calls are pending."""
-        job = _Job(fn, args, heavy, timeout)
+        task = _Task(fn, args, heavy, timeout)
         with self._cond:
             if self._stopping:
                 raise PoolSaturated("the solver pool is shutting down")
@@ -188,71 +188,71 @@ class SolverPool:
                 raise PoolSaturated(
                     f"all {self.workers} solver workers are busy and {self.queue_size} requests are queued")
             self._pending += 1
-            self._queue.append(job)
+            self._queue.append(task)
             self._cond.notify()
         if not self._threads:
             self.start()
-        return job
+        return task
 
     async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
         """Run ``fn(*args)`` in a worker; raise :class:`SolveTimeout` after ``timeout`` seconds."""
-        job = self.submit(fn, *args, heavy=heavy, timeout=timeout)
-        fut = asyncio.wrap_future(job.future)
+        task = self.submit(fn, *args, heavy=heavy, timeout=timeout)
+        fut = asyncio.wrap_future(task.future)
         try:
             return await asyncio.wait_for(fut, timeout)
         except (asyncio.TimeoutError, TimeoutError):
-            self.cancel(job)
+            self.cancel(task)
             raise SolveTimeout(timeout) from None
         except asyncio.CancelledError:
             # The request itself was cancelled (client gone, shutdown): free the worker too.
-            self.cancel(job)
+            self.cancel(task)
             raise
 
-    def cancel(self, job: _Job) -> None:
-        """Give up ``job``: drop it if still queued, interrupt it if running."""
-        if job.future.cancel():
+    def cancel(self, task: _Task) -> None:
+        """Give up ``task``: drop it if still queued, interrupt it if running."""
+        if task.future.cancel():
             # Still queued: the worker will skip it; count it as finished now.
             with self._cond:
                 try:
-                    self._queue.remove(job)
+                    self._queue.remove(task)
                 except ValueError:
                     return
             self._finished()
             return
-        self._cancel_running(job)
+        self._cancel_running(task)
 
-    def _cancel_running(self, job: _Job) -> None:
+    def _cancel_running(self, task: _Task) -> None:
         with self._lock:
-            if job.state != _RUNNING:
-                job.abandoned = True    # between dequeue and start: the worker will skip it
+            if task.state != _RUNNING:
+                task.abandoned = True    # between dequeue and start: the worker will skip it
                 return
-            if job.cancel_sent:
+            if task.cancel_sent:
                 return
-            job.cancel_sent = True
+            task.cancel_sent = True
             self.cancelled_running += 1
-            _set_async_exc(job.thread_id, SolveCancelled)
+            _set_async_exc(task.thread_id, SolveCancelled)
 
     def _finished(self) -> None:
         with self._lock:
             self._pending -= 1
 
     # ------------------------------------------------------------------ worker
-    def _next(self) -> _Job | None:
+    def _next(self) -> _Task | None:
         with self._cond:
             while True:
                 if self._stopping:
                     return None
                 q = self._queue
                 if q and (not q[0].heavy or self._running_heavy < self.heavy_limit):
-                    job = q.popleft()
+                    task = q.popleft()
                 else:       # the oldest call this thread may run: a light one while heavy ones wait
-                    job = next((j for j in q if not j.heavy), None)
-                    if job is not None:
-                        q.remove(job)
-                if job is not None:
-                    if job.heavy:
+                    task = next((j for j in q if not j.heavy), None)
+                    if task is not None:
+                        q.remove(task)
+                if task is not None:
+                    if task.heavy:
                         self._running_heavy += 1
-                    return job
+                    return task
                 self._cond.wait()
 
     def _heavy_done(self) -> None:
@@ -264,55 +264,55 @@ class SolverPool:
         tid = threading.get_ident()
         while True:
             try:
-                job = self._next()
+                task = self._next()
             except SolveCancelled:  # pragma: no cover - a stray cancel cannot reach here (see _finish)
                 continue
-            if job is None:
+            if task is None:
                 return
-            if not job.future.set_running_or_notify_cancel():
-                if job.heavy:
+            if not task.future.set_running_or_notify_cancel():
+                if task.heavy:
                     self._heavy_done()
                 self._finished()
                 continue
-            ok, value = self._execute(job, tid)
-            if job.heavy:
+            ok, value = self._execute(task, tid)
+            if task.heavy:
                 self._heavy_done()
             # Free the slot before the caller can see the result (a client that got its answer
             # may immediately submit again and must find the capacity).
             self._finished()
             if ok:
-                job.future.set_result(value)
+                task.future.set_result(value)
             else:
-                job.future.set_exception(value)
+                task.future.set_exception(value)
 
-    def _execute(self, job: _Job, tid: int) -> tuple[bool, Any]:
+    def _execute(self, task: _Task, tid: int) -> tuple[bool, Any]:
         outcome: tuple[bool, Any]
         try:
             with self._lock:
-                if job.abandoned:
+                if task.abandoned:
                     return False, SolveTimeout(0.0)
-                job.thread_id = tid
-                job.state = _RUNNING
+                task.thread_id = tid
+                task.state = _RUNNING
                 self._running += 1
-                self._active.add(job)
-            if job.deadline is None:
-                outcome = (True, job.fn(*job.args))
+                self._active.add(task)
+            if task.deadline is None:
+                outcome = (True, task.fn(*task.args))
             else:
-                with time_limit(max(job.deadline - time.monotonic(), 1e-6)):
-                    outcome = (True, job.fn(*job.args))
+                with time_limit(max(task.deadline - time.monotonic(), 1e-6)):
+                    outcome = (True, task.fn(*task.args))
         except SolveCancelled:
             outcome = (False, SolveTimeout(0.0))
         except BaseException as exc:  # noqa: BLE001 - handed to the awaiting request
             outcome = (False, exc)
-        # Disarm: after this no cancel can be sent for this job and none is pending.
+        # Disarm: after this no cancel can be sent for this task and none is pending.
         while True:
             try:
                 with self._lock:
-                    if job.state == _RUNNING:
-                        job.state = _DONE
+                    if task.state == _RUNNING:
+                        task.state = _DONE
                         self._running -= 1
-                        self._active.discard(job)
-                    if job.cancel_sent:
+                        self._active.discard(task)
+                    if task.cancel_sent:
                         _set_async_exc(tid, None)
                 break
             except SolveCancelled:

@@ -499,6 +499,8 @@ class Limits(BaseModel):
     workers: int
     queue_size: int
     inline_max_segments: int
+    # NB the description below is stale since issue 15 (with 0 processes the solver threads run the search);
+    # kept as it is because it is part of the committed OpenAPI document (change both together)
     inline_processes: int = Field(description="solver processes running the short chains' bounded search "
                                               "(service.lane); 0: the event loop runs it")
     max_body_bytes: int

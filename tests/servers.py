@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import shutil
 import signal
 import socket
 import subprocess
@@ -20,10 +19,9 @@ def free_port() -> int:
 
 
 def serve_command(port: int) -> list[str]:
-    """``tensegrity-opt serve`` on ``port`` (the console script, or the module when not on PATH)."""
-    exe = shutil.which("tensegrity-opt")
-    base = [exe] if exe else [sys.executable, "-m", "tensegrity_opt.applications.cli"]
-    return [*base, "serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log", "--log-level", "warning"]
+    """``tensegrity-opt serve`` on ``port``, as ``python -m service serve`` (the console script's own
+    code, :mod:`service.cli`, whatever the installed script points at)."""
+    return [sys.executable, "-m", "service", "serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log", "--log-level", "warning"]
 
 
 def uvicorn_factory_command(factory: str, port: int, *extra: str) -> list[str]:

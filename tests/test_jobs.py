@@ -53,9 +53,8 @@ MIXED = {"analysis": "equilibrium", "grid": {"dx": [0.1, 30.0, 0.2], "n": [3, 4]
 def api(tmp_path, monkeypatch, request):
     """A TestClient on a fresh database; ``indirect`` parametrisation passes more settings."""
     db = tmp_path / "jobs.sqlite3"
-    monkeypatch.setenv("TENSEGRITY_JOBS_DB", str(db))     # also when service/main.py wires the runner itself
-    app = create_app(Settings(warmup=False, max_segments=50, inline_processes=0, **getattr(request, "param", {})))
-    jobs.install(app, db_path=db)
+    app = create_app(Settings(warmup=False, max_segments=50, inline_processes=0, jobs_db=str(db),
+                              **getattr(request, "param", {})))
     with TestClient(app) as client:
         client.db = db
         yield client
@@ -166,9 +165,7 @@ def test_cancel_keeps_finished_points_and_the_runner_goes_on(api):
 def test_an_unusable_database_is_503_and_the_rest_of_the_service_runs(tmp_path, monkeypatch):
     bad = tmp_path / "a-directory"
     bad.mkdir()
-    monkeypatch.setenv("TENSEGRITY_JOBS_DB", str(bad))
-    app = create_app(Settings(warmup=False))
-    jobs.install(app, db_path=bad)
+    app = create_app(Settings(warmup=False, jobs_db=str(bad)))
     with TestClient(app) as client:
         r = client.post("/v1/jobs", json=MIXED)
         assert r.status_code == 503 and r.json()["code"] == "jobs_unavailable"
@@ -289,7 +286,7 @@ def test_a_job_on_a_dask_cluster_stores_the_serial_rows(tmp_path):
 def start_server(db: Path, log: Path) -> tuple[subprocess.Popen, str]:
     port = free_port()
     env = clean_env(TENSEGRITY_JOBS_DB=str(db), TENSEGRITY_WARMUP="false", TENSEGRITY_WORKERS="1")
-    cmd = uvicorn_factory_command("service.jobs:create_app_with_jobs", port)
+    cmd = uvicorn_factory_command("service.main:create_app", port)
     with open(log, "ab") as out:      # the child keeps its own copy of the descriptor
         proc = subprocess.Popen(cmd, env=env, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT)
     base = f"http://127.0.0.1:{port}"
@@ -642,7 +639,7 @@ def test_two_real_servers_share_one_file_cancel_crosses_and_a_killed_servers_job
             env = clean_env(TENSEGRITY_JOBS_DB=str(db), TENSEGRITY_WARMUP="false", TENSEGRITY_WORKERS="1", **extra)
             log = tmp_path / f"server{k}.log"
             with open(log, "ab") as out:
-                procs.append(subprocess.Popen(uvicorn_factory_command("service.jobs:create_app_with_jobs", port),
+                procs.append(subprocess.Popen(uvicorn_factory_command("service.main:create_app", port),
                                               env=env, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT))
             bases.append(f"http://127.0.0.1:{port}")
         for proc, base, k in zip(procs, bases, range(2)):

@@ -1,7 +1,7 @@
 """The solver process of the service (``service.lane``): same answers, and nothing lost when it fails.
 
-Expected answers come from a server without solver processes (``inline_processes=0``: the event
-loop solves), which the rest of the service tests check against the library; here the point is
+Expected answers come from a server without solver processes (``inline_processes=0``: the solver
+threads solve), which the rest of the service tests check against the library; here the point is
 that handing the call to another process changes nothing a client can see, and that every
 failure of that process (killed, refusing, timing out, raising) still answers the request.
 """
@@ -33,6 +33,8 @@ BODIES = [{"manipulator": PAPER, "dx": 0.1}, {"manipulator": PAPER, "dx": 0.7, "
           {"manipulator": PAPER, "dx": 0.101, "q0": [0.178, -0.077, -0.245, -0.131], "local": True},
           {"manipulator": {"n": 4, "a": 0.6, "b": 1.0, "k": 1.0, "L0": 1.2}, "dx": 0.3, "dy": 0.1}]
 UNREACHABLE = {"manipulator": PAPER, "dx": 0.1, "dy": 8.5}
+BISTABLE = BODIES[5]                     # a bistable chain: not for the bounded search
+LONG = {"manipulator": {"n": 12, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}, "dx": 0.4, "dy": 0.1}   # > 8 segments
 
 
 def ready_client(**overrides) -> TestClient:
@@ -53,7 +55,7 @@ def clients():
         yield fast, plain
 
 
-def test_the_solver_process_answers_like_the_event_loop(clients):
+def test_the_solver_process_answers_like_the_solver_threads(clients):
     fast, plain = clients
     lane = fast.app.state.lanes[0]
     before = lane.completed
@@ -61,10 +63,40 @@ def test_the_solver_process_answers_like_the_event_loop(clients):
         a, b = fast.post("/v1/equilibrium", json=body), plain.post("/v1/equilibrium", json=body)
         assert a.status_code == b.status_code == 200, (a.text, b.text)
         assert a.content == b.content
-    # every body went through the process (the bistable chain too: there it returns "not settled"
-    # and the route hands the request to a solver thread)
-    assert lane.completed - before == len(BODIES)
+    # every body the bounded search may settle went through the process; the bistable chain did not
+    # (the parent decides that: it goes straight to a solver thread, no round trip answering "not settled")
+    assert lane.completed - before == len(BODIES) - 1
     assert lane.pid is not None and lane.pid != os.getpid()
+
+
+def test_only_requests_the_bounded_search_may_settle_are_sent_to_the_solver_process(clients):
+    fast, plain = clients
+    lane = fast.app.state.lanes[0]
+    for body in (BISTABLE, LONG):
+        before = lane.completed
+        a, b = fast.post("/v1/equilibrium", json=body), plain.post("/v1/equilibrium", json=body)
+        assert a.status_code == b.status_code == 200, (a.text, b.text)
+        assert a.content == b.content
+        assert lane.completed == before, body["manipulator"]
+
+
+@pytest.mark.parametrize("body", [*BODIES, BISTABLE, LONG], ids=lambda b: f"n{b['manipulator'].get('n')}-"
+                         f"dx{b['dx']}-dy{b.get('dy', 0)}-{'local' if b.get('local') else 'q0' if 'q0' in b else 'search'}")
+def test_the_response_schema_is_the_contract_of_every_path(clients, body):
+    """The body of the solver process (rendered there, no response-model pass) validates against
+    ``EquilibriumOut`` and is byte for byte what the solver threads send for the same request,
+    which is the model's own dump of it, rendered the way the threads render."""
+    from service import schemas as s
+    from service.responses import render_json
+
+    fast, plain = clients
+    a, b = fast.post("/v1/equilibrium", json=body), plain.post("/v1/equilibrium", json=body)
+    assert a.status_code == b.status_code == 200, (a.text, b.text)
+    assert a.headers["content-type"] == b.headers["content-type"] == "application/json"
+    for r in (a, b):
+        model = s.EquilibriumOut.model_validate_json(r.content)
+        assert render_json(model.model_dump(mode="json")) == r.content
+    assert a.content == b.content
 
 
 def test_an_error_raised_in_the_solver_process_is_answered_as_without_it(clients):
@@ -74,7 +106,7 @@ def test_an_error_raised_in_the_solver_process_is_answered_as_without_it(clients
     a, b = fast.post("/v1/equilibrium", json=UNREACHABLE), plain.post("/v1/equilibrium", json=UNREACHABLE)
     assert a.status_code == b.status_code == 422
     assert a.json() == b.json() and a.json()["code"] == "unreachable_target"
-    assert lane.completed == before + 1          # the process answered "failed"; the loop re-raised it
+    assert lane.completed == before + 1          # the process answered "failed"; the pool re-raised it
 
 
 def test_a_killed_solver_process_loses_no_request_and_is_restarted(monkeypatch):
@@ -88,7 +120,7 @@ def test_a_killed_solver_process_loses_no_request_and_is_restarted(monkeypatch):
         while lane.ready and time.monotonic() < deadline:     # the loop notices the closed socket
             time.sleep(0.01)
         assert not lane.ready
-        r = fast.post("/v1/equilibrium", json=BODIES[1])      # answered on the event loop; restart begins
+        r = fast.post("/v1/equilibrium", json=BODIES[1])      # answered by a solver thread; restart begins
         assert r.status_code == 200 and r.json() == expected
         wait_ready(fast)
         assert lane.pid not in (None, old) and lane.restarts == 1
@@ -146,7 +178,7 @@ def test_a_stuck_solver_process_is_killed_and_restarted(monkeypatch):
         while lane.ready and time.monotonic() < deadline:
             time.sleep(0.01)
         assert not lane.ready                              # killed as stuck
-        r = fast.post("/v1/equilibrium", json=BODIES[0])   # answered on the event loop; restart begins
+        r = fast.post("/v1/equilibrium", json=BODIES[0])   # answered by a solver thread; restart begins
         assert r.status_code == 200
         wait_ready(fast)
         assert lane.pid != old and lane.restarts == 1
@@ -164,7 +196,7 @@ def test_a_call_over_the_time_limit_is_a_504():
 
 def test_a_solver_process_that_cannot_start_is_not_restarted(monkeypatch):
     """A child that dies before it is ready (here: a Python that cannot import the service) leaves the
-    requests to the event loop, once, instead of respawning every few seconds."""
+    requests to the solver threads, once, instead of respawning every few seconds."""
     monkeypatch.setattr(lane_mod, "RESTART_INTERVAL", 0.0)
     monkeypatch.setattr(lane_mod.sys, "executable", "/bin/false")
     with ready_client() as fast:

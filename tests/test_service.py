@@ -570,7 +570,7 @@ def test_response_size_limit_is_counted_while_rendering():
 
 
 def test_json_answers_are_rendered_in_the_solver_thread(monkeypatch):
-    import service.deps as deps
+    import service.responses as deps        # render_task, the renderer the dispatcher hands to the pool
 
     threads = []
     real = deps.render_json_bounded
@@ -743,7 +743,7 @@ def test_malformed_bodies_are_422(client, content, ctype):
 
 
 def test_inline_fast_path_answers_like_the_workers():
-    """Short monotonic chains are solved on the event loop; the answer equals the worker path's, and
+    """Short monotonic chains are solved in the solver process; the answer equals the worker path's, and
     what the fast path does not settle (bistable segments) goes to the workers."""
     bistable = {"n": 4, "a": 0.6, "b": 1.0, "k": 1.0, "L0": 1.2}
     bodies = [{"manipulator": PAPER, "dx": 0.1}, {"manipulator": PAPER, "dx": 0.7, "dy": -0.3},
@@ -751,12 +751,13 @@ def test_inline_fast_path_answers_like_the_workers():
               {"manipulator": PAPER, "dx": 0.2, "dy": 0.05, "q0": [0.17, -0.07, -0.24, -0.13]},
               {"manipulator": bistable, "dx": 0.3, "dy": 0.1}]
     with make_client() as fast, make_client(inline_max_segments=0) as workers:
+        assert fast.portal.call(fast.app.state.lanes[0].wait_ready, 120.0)   # else the workers solve everything
         submitted = []
         pool = fast.app.state.pool
         original = pool.submit
 
         def counting(fn, *args, **kwargs):        # kwargs: heavy=
-            submitted.append(args[1][0])        # deps._rendered(job, (request, ...), limit, field)
+            submitted.append(args[1][0])        # render_task(task, (request, ...), limit, field)
             return original(fn, *args, **kwargs)
 
         pool.submit = counting

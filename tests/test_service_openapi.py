@@ -28,7 +28,7 @@ def test_cli_prints_the_spec(monkeypatch):
     env = {k: v for k, v in os.environ.items() if not k.startswith("TENSEGRITY_")}
     env["TENSEGRITY_MAX_SEGMENTS"] = "7"          # settings never change the document
     env["TENSEGRITY_API_KEYS"] = "x"
-    out = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "openapi"], capture_output=True, text=True,
+    out = subprocess.run([sys.executable, "-m", "service", "openapi"], capture_output=True, text=True,
                          env=env, cwd=ROOT, timeout=120, check=True).stdout
     assert out == SPEC.read_text(encoding="utf-8")
 

@@ -259,7 +259,7 @@ def _cli(argv):
     p = argparse.ArgumentParser(prog="tensegrity-opt")
     add_sweep_parser(p.add_subparsers(dest="command", required=True))
     args = p.parse_args(argv)
-    return args.service(args)
+    return args.run(args)
 
 
 def test_cli_sweep_writes_files_and_csv_to_stdout(tmp_path, capsys):

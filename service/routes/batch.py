@@ -9,7 +9,7 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import batch_job
+from ..compute import batch_task
 from ..config import Settings
 from ..deps import check_batch, check_manipulator, get_settings_dep, solve
 from . import solve_responses
@@ -39,5 +39,5 @@ async def batch_equilibrium(
     check_batch(req, settings)
     deadline = time.monotonic() + settings.batch_timeout
     # The hard limit leaves one solve time limit for the target running at the soft deadline.
-    return await solve(request, batch_job, req, deadline, ctx.manipulator or "uniform", ctx=ctx,
+    return await solve(request, batch_task, req, deadline, ctx.manipulator or "uniform", ctx=ctx,
                        timeout=settings.batch_timeout + settings.solve_timeout, heavy=True, size_field="targets")

@@ -8,7 +8,7 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import buckling_job
+from ..compute import buckling_task
 from ..config import Settings
 from ..deps import check_manipulator, get_settings_dep, solve
 from . import solve_responses
@@ -31,4 +31,4 @@ async def critical_force(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, buckling_job, req, ctx=ctx)
+    return await solve(request, buckling_task, req, ctx=ctx)

@@ -8,7 +8,7 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import force_deflection_job, segment_count
+from ..compute import force_deflection_task, segment_count
 from ..config import Settings
 from ..deps import check_curve_size, check_manipulator, get_settings_dep, is_heavy, solve
 from . import solve_responses
@@ -40,5 +40,5 @@ async def force_deflection(
     ctx = check_manipulator(req.manipulator, settings)
     points = req.dx.num if isinstance(req.dx, s.RangeIn) else len(req.dx)
     check_curve_size(segment_count(req.manipulator), points, req.branch, settings)
-    return await solve(request, force_deflection_job, req, ctx=ctx, size_field="dx",
+    return await solve(request, force_deflection_task, req, ctx=ctx, size_field="dx",
                        heavy=is_heavy(settings, req.manipulator, branch_all=req.branch == "all"))

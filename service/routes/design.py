@@ -8,7 +8,7 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import design_critical_force_job, preloads_for_load_job, preloads_job, segment_count
+from ..compute import design_critical_force_task, preloads_for_load_task, preloads_task, segment_count
 from ..config import Settings
 from ..deps import check_manipulator, get_settings_dep, solve_heavy
 from ..errors import ServiceError
@@ -49,7 +49,7 @@ async def design_critical_force(
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     _check_design_size(req.manipulator)
-    return await solve_heavy(request, design_critical_force_job, req, ctx=ctx)
+    return await solve_heavy(request, design_critical_force_task, req, ctx=ctx)
 
 
 @router.post(
@@ -68,7 +68,7 @@ async def design_preloads_for_load(
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     _check_design_size(req.manipulator)
-    return await solve_heavy(request, preloads_for_load_job, req, ctx=ctx)
+    return await solve_heavy(request, preloads_for_load_task, req, ctx=ctx)
 
 
 @router.post(
@@ -90,4 +90,4 @@ async def design_preloads(
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     _check_design_size(req.manipulator)
-    return await solve_heavy(request, preloads_job, req, ctx=ctx)
+    return await solve_heavy(request, preloads_task, req, ctx=ctx)

@@ -8,8 +8,8 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import (equilibria_job, equilibrium_inline, equilibrium_inline_args, equilibrium_job,
-                       force_equilibrium_job)
+from ..compute import (equilibria_task, equilibrium_newton_args, equilibrium_newton_task, equilibrium_task,
+                       force_equilibrium_task)
 from ..config import Settings
 from ..deps import check_homotopy, check_manipulator, get_settings_dep, is_heavy, solve
 from . import solve_responses
@@ -41,9 +41,13 @@ async def solve_equilibrium(
 ) -> Any:
     # the settings from app.state, not the dependency: this route is the control loops' hot path and a
     # FastAPI dependency costs ~15-35 us per request even when it returns at once
-    ctx = check_manipulator(req.manipulator, request.app.state.settings)
-    return await solve(request, equilibrium_job, req, ctx=ctx,
-                       inline=(equilibrium_inline, equilibrium_inline_args(req)))
+    settings: Settings = request.app.state.settings
+    ctx = check_manipulator(req.manipulator, settings)
+    # the bounded Newton-only search settles short monotonic chains (in a solver process); the
+    # others go straight to the pool
+    fast = equilibrium_newton_args(req, settings.inline_max_segments)
+    return await solve(request, equilibrium_task, req, ctx=ctx,
+                       fast=None if fast is None else (equilibrium_newton_task, fast))
 
 
 @router.post(
@@ -60,7 +64,7 @@ async def solve_equilibrium_under_force(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, force_equilibrium_job, req, ctx=ctx)
+    return await solve(request, force_equilibrium_task, req, ctx=ctx)
 
 
 @router.post(
@@ -78,5 +82,5 @@ async def find_equilibria(
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     check_homotopy(req, settings)
-    return await solve(request, equilibria_job, req, settings.solve_timeout, ctx=ctx,
+    return await solve(request, equilibria_task, req, settings.solve_timeout, ctx=ctx,
                        heavy=is_heavy(settings, req.manipulator, homotopy=req.method == "homotopy"))

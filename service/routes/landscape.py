@@ -8,7 +8,7 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import energy_landscape_job
+from ..compute import energy_landscape_task
 from ..config import Settings
 from ..deps import check_manipulator, get_settings_dep, solve
 from . import solve_responses
@@ -33,4 +33,4 @@ async def energy_landscape(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, energy_landscape_job, req, ctx=ctx, size_field="grid")
+    return await solve(request, energy_landscape_task, req, ctx=ctx, size_field="grid")

@@ -24,8 +24,8 @@ from ..deps import check_manipulator, get_settings_dep, is_heavy, solve
 from ..errors import FieldContext
 from . import SOLVE_ERRORS, error_responses
 
-__all__ = ["router", "negotiate", "plot_curve_job", "plot_landscape_job", "plot_shapes_job", "plot_torque_job",
-           "plot_map_job"]
+__all__ = ["router", "negotiate", "plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task",
+           "plot_map_task"]
 
 router = APIRouter(prefix="/v1/plots", tags=["plots"])
 
@@ -85,14 +85,14 @@ def _image(fig: Any, fmt: str, dpi: int) -> bytes:
     return plots.render(fig, fmt, dpi=dpi)
 
 
-def plot_curve_job(req: ps.PlotCurveRequest, fmt: str) -> bytes:
+def plot_curve_task(req: ps.PlotCurveRequest, fmt: str) -> bytes:
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
     return _image(plots.plot_curve(m, deflections(req.dx), req.dy, req.branch), fmt, req.dpi)
 
 
-def plot_landscape_job(req: ps.PlotLandscapeRequest, fmt: str) -> bytes:
+def plot_landscape_task(req: ps.PlotLandscapeRequest, fmt: str) -> bytes:
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
@@ -101,14 +101,14 @@ def plot_landscape_job(req: ps.PlotLandscapeRequest, fmt: str) -> bytes:
     return _image(fig, fmt, req.dpi)
 
 
-def plot_shapes_job(req: ps.PlotShapesRequest, fmt: str) -> bytes:
+def plot_shapes_task(req: ps.PlotShapesRequest, fmt: str) -> bytes:
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
     return _image(plots.plot_shapes(m, req.dx, req.dy, max_panels=req.max_panels), fmt, req.dpi)
 
 
-def plot_torque_job(req: ps.PlotTorqueRequest, fmt: str) -> bytes:
+def plot_torque_task(req: ps.PlotTorqueRequest, fmt: str) -> bytes:
     from tensegrity_opt.applications import plots
 
     segs = [build_segment(sg) for sg in req.segments]
@@ -122,7 +122,7 @@ def _values(v: list[float] | ps.MapValuesRange) -> np.ndarray:
     return np.asarray(v, dtype=float)
 
 
-def plot_map_job(req: ps.PlotMapRequest, fmt: str) -> bytes:
+def plot_map_task(req: ps.PlotMapRequest, fmt: str) -> bytes:
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
@@ -176,7 +176,7 @@ async def plot_curve(
 ) -> Response:
     ctx = check_manipulator(req.manipulator, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
-    return _reply(await solve(request, plot_curve_job, req, fmt, ctx=ctx,
+    return _reply(await solve(request, plot_curve_task, req, fmt, ctx=ctx,
                               heavy=is_heavy(settings, req.manipulator, branch_all=req.branch == "all")),
                   fmt, "curve")
 
@@ -200,7 +200,7 @@ async def plot_landscape(
 ) -> Response:
     ctx = check_manipulator(req.manipulator, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
-    return _reply(await solve(request, plot_landscape_job, req, fmt, ctx=ctx), fmt, "landscape")
+    return _reply(await solve(request, plot_landscape_task, req, fmt, ctx=ctx), fmt, "landscape")
 
 
 @router.post(
@@ -219,7 +219,7 @@ async def plot_shapes(
 ) -> Response:
     ctx = check_manipulator(req.manipulator, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
-    return _reply(await solve(request, plot_shapes_job, req, fmt, ctx=ctx), fmt, "shapes")
+    return _reply(await solve(request, plot_shapes_task, req, fmt, ctx=ctx), fmt, "shapes")
 
 
 @router.post(
@@ -239,7 +239,7 @@ async def plot_torque(
             "q": {"start": -1.0, "stop": 1.0, "num": 201}, "format": "svg"}}})],
 ) -> Response:
     fmt = negotiate(req.format, request.headers.get("accept"))
-    return _reply(await solve(request, plot_torque_job, req, fmt, ctx=FieldContext()), fmt, "torque")
+    return _reply(await solve(request, plot_torque_task, req, fmt, ctx=FieldContext()), fmt, "torque")
 
 
 @router.post(
@@ -263,4 +263,4 @@ async def plot_map(
 ) -> Response:
     ctx = check_manipulator(req.manipulator, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
-    return _reply(await solve(request, plot_map_job, req, fmt, ctx=ctx), fmt, "map")
+    return _reply(await solve(request, plot_map_task, req, fmt, ctx=ctx), fmt, "map")

@@ -8,7 +8,7 @@ from fastapi import APIRouter, Body, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import segment_torque_job
+from ..compute import segment_torque_task
 from ..deps import solve
 from ..errors import FieldContext
 from . import error_responses, ok_response
@@ -32,4 +32,4 @@ async def segment_torque(
             "segment": {"a": 1.0, "b": 1.0, "k": [1.0, 2.0], "L0": [1.0, 1.2]},
             "q": {"start": -1.0, "stop": 1.0, "num": 5}}}})],
 ) -> Any:
-    return await solve(request, segment_torque_job, req, ctx=FieldContext(segment=True), size_field="q")
+    return await solve(request, segment_torque_task, req, ctx=FieldContext(segment=True), size_field="q")

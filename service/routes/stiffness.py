@@ -8,7 +8,7 @@ from fastapi import APIRouter, Body, Depends, Request
 
 from .. import examples as ex
 from .. import schemas as s
-from ..compute import stiffness_job
+from ..compute import stiffness_task
 from ..config import Settings
 from ..deps import check_manipulator, get_settings_dep, solve
 from . import solve_responses
@@ -31,4 +31,4 @@ async def cartesian_stiffness(
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
-    return await solve(request, stiffness_job, req, ctx=ctx)
+    return await solve(request, stiffness_task, req, ctx=ctx)

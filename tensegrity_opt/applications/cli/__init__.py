@@ -1,4 +1,4 @@
-"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|serve|openapi ...``.
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|plot|sweep ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
@@ -6,9 +6,10 @@ prints a readable table, or JSON with ``--json``: the result's ``to_dict()``, th
 HTTP API answers for the same request (one serialiser, one NaN policy: :mod:`tensegrity_opt.serialize`).
 Errors print one line to stderr and exit with status 2.
 
-``serve`` starts the HTTP service (``service/``, settings from ``TENSEGRITY_*`` environment
-variables) and ``openapi`` prints its OpenAPI document; both import the service lazily, so the
-library itself does not need FastAPI.
+The library's commands only: the HTTP service's ``serve`` and ``openapi`` belong to the service
+(:mod:`service.cli`, the ``tensegrity-opt`` console script, which hands every other command to
+:func:`main` here). This package never imports the service; :func:`build_parser` takes the extra
+commands of an application built on top (``add_commands``).
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -33,6 +35,10 @@ from ...errors import NonFiniteResult, TensegrityError
 from ...model.manipulator import Manipulator
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser
+
+
+#: The service's commands (``service.cli``): named here only to point a caller of this module there.
+SERVICE_COMMANDS = ("serve", "openapi")
 
 
 def _manipulator(args: argparse.Namespace) -> Manipulator:
@@ -113,7 +119,9 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.ArgumentParser:
+    """The parser of every library command; ``add_commands(subparsers)`` adds more (a command that
+    handles its own arguments sets ``run=callable(args) -> exit status`` as its default)."""
     p = argparse.ArgumentParser(prog="tensegrity-opt", description=__doc__.splitlines()[0])
     p.add_argument("--version", action="version", version=f"tensegrity-opt {__version__}")
     sub = p.add_subparsers(dest="command", required=True)
@@ -154,55 +162,23 @@ def build_parser() -> argparse.ArgumentParser:
     add_plot_parser(sub)
     add_sweep_parser(sub)
 
-    sp = sub.add_parser("serve", help="start the HTTP service (uvicorn, one process; TENSEGRITY_* settings)")
-    sp.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1)")
-    sp.add_argument("--port", type=int, default=8000, help="TCP port (default 8000)")
-    sp.add_argument("--log-level", default="info", choices=("critical", "error", "warning", "info", "debug"))
-    sp.add_argument("--no-access-log", action="store_true", help="do not log every request")
-    sp.set_defaults(service=_cmd_serve)
-
-    sp = sub.add_parser("openapi", help="print the service's OpenAPI document (JSON, sorted keys, indent 2)")
-    sp.set_defaults(service=_cmd_openapi)
+    if add_commands is not None:
+        add_commands(sub)
     return p
 
 
-def _cmd_serve(args: argparse.Namespace) -> int:
-    try:
-        import uvicorn
-
-        from service.config import Settings
-        from service.http import uvicorn_options
-        from service.main import create_app
-    except ImportError as exc:  # pragma: no cover - service dependencies missing
-        print(f"tensegrity-opt: error: the service needs its dependencies ({exc})", file=sys.stderr)
-        return 2
-    try:
-        settings = Settings()
-    except ValueError as exc:
-        print(f"tensegrity-opt: error: invalid TENSEGRITY_* setting: {exc}", file=sys.stderr)
-        return 2
-    # One process: the solver pool inside it supplies the parallelism (see service/pool.py).
-    # Connection limits (request timeout, connection cap, keep-alive, concurrency): service/http.py.
-    uvicorn.run(create_app(settings), host=args.host, port=args.port, log_level=args.log_level,
-                access_log=not args.no_access_log, workers=1,
-                timeout_graceful_shutdown=settings.shutdown_timeout, **uvicorn_options(settings))
-    return 0
-
-
-def _cmd_openapi(args: argparse.Namespace) -> int:
-    try:
-        from service.main import openapi_json
-    except ImportError as exc:  # pragma: no cover - service dependencies missing
-        print(f"tensegrity-opt: error: the service needs its dependencies ({exc})", file=sys.stderr)
-        return 2
-    sys.stdout.write(openapi_json())
-    return 0
-
-
-def main(argv: list[str] | None = None) -> int:
-    args = build_parser().parse_args(argv)
-    if getattr(args, "service", None) is not None:
-        return args.service(args)
+def main(argv: list[str] | None = None, parser: argparse.ArgumentParser | None = None) -> int:
+    """Run one command (``argv``: ``sys.argv[1:]`` by default) of ``parser`` (:func:`build_parser`
+    by default); the exit status."""
+    if parser is None:
+        first = next((a for a in (sys.argv[1:] if argv is None else argv) if not a.startswith("-")), None)
+        if first in SERVICE_COMMANDS:
+            print(f"tensegrity-opt: error: '{first}' is a command of the HTTP service: run `tensegrity-opt {first}` "
+                  f"(service.cli; needs pip install 'tensegrity-opt[service]')", file=sys.stderr)
+            return 2
+    args = (parser or build_parser()).parse_args(argv)
+    if getattr(args, "run", None) is not None:
+        return args.run(args)
     try:
         m = _manipulator(args)
         data, text = args.func(args, m)

@@ -208,7 +208,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m tensegrity_opt.applications.cli.plot KIND ...``: the ``plot`` command on its own."""
-    from . import main as cli_main  # at call time: the cli package imports this module
+    from . import main as cli_main
 
     return cli_main(["plot", *(sys.argv[1:] if argv is None else argv)])
 

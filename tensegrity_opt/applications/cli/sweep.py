@@ -1,7 +1,7 @@
 """``tensegrity-opt sweep spec.json [-o out.csv|out.json|out.parquet] [--scheduler ...] [--no-progress]``.
 
-Wired into :mod:`tensegrity_opt.applications.cli` by :func:`add_sweep_parser` (the command handles its own
-arguments, so it registers as a ``service``-style command returning the exit status).
+Wired into :mod:`tensegrity_opt.applications.cli` by :func:`add_sweep_parser` (the command handles
+its own arguments, so it registers as a ``run`` command returning the exit status).
 Without ``-o`` the rows go to stdout as CSV. The scheduler defaults to ``local`` (a
 ``dask.distributed.LocalCluster``, one single-threaded worker process per core);
 ``serial`` solves in this process; ``tcp://host:port`` uses a running Dask scheduler.
@@ -44,7 +44,7 @@ def add_sweep_parser(subparsers: Any) -> argparse.ArgumentParser:
     sp.add_argument("--chunk-size", type=int, default=None, metavar="N",
                     help="points per Dask task (default: about four tasks per worker, at most 64)")
     sp.add_argument("--no-progress", action="store_true", help="no progress bar (it is shown only on a terminal)")
-    sp.set_defaults(service=cmd_sweep)
+    sp.set_defaults(run=cmd_sweep)
     return sp
 
 

@@ -1,0 +1,91 @@
+"""The ``tensegrity-opt`` console script: the library's commands plus the service's ``serve`` and ``openapi``.
+
+``serve`` starts the HTTP service (uvicorn, one process; settings from ``TENSEGRITY_*`` environment
+variables) and ``openapi`` prints its OpenAPI document; every other command (``buckling``,
+``equilibrium``, ``plot``, ``sweep``, ...) is the library's (:func:`tensegrity_opt.applications.cli.main`,
+same parser, same output). This module sits above both: the library never imports the service.
+
+The service's packages (FastAPI, uvicorn, ...) are the ``service`` extra; they are imported only
+when a service command runs, so the library's commands work without them, and ``serve`` /
+``openapi`` without them print one line naming the extra and exit with status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from typing import Any
+
+from tensegrity_opt.applications import cli as library_cli
+
+__all__ = ["main", "build_parser", "add_service_commands", "EXTRA"]
+
+#: How to install what ``serve`` and ``openapi`` need.
+EXTRA = "pip install 'tensegrity-opt[service]'"
+
+
+def _missing_extra(exc: ImportError) -> int:
+    name = getattr(exc, "name", None) or str(exc)
+    print(f"tensegrity-opt: error: the HTTP service needs the 'service' extra ({name} is not installed): {EXTRA}",
+          file=sys.stderr)
+    return 2
+
+
+def _cmd_serve(args: argparse.Namespace) -> int:
+    try:
+        import uvicorn
+
+        from .config import Settings
+        from .http import uvicorn_options
+        from .main import create_app
+    except ImportError as exc:
+        return _missing_extra(exc)
+    try:
+        settings = Settings()
+    except ValueError as exc:
+        print(f"tensegrity-opt: error: invalid TENSEGRITY_* setting: {exc}", file=sys.stderr)
+        return 2
+    # One process: the solver pool inside it supplies the parallelism (see service/pool.py).
+    # Connection limits (request timeout, connection cap, keep-alive, concurrency): service/http.py.
+    uvicorn.run(create_app(settings), host=args.host, port=args.port, log_level=args.log_level,
+                access_log=not args.no_access_log, workers=1,
+                timeout_graceful_shutdown=settings.shutdown_timeout, **uvicorn_options(settings))
+    return 0
+
+
+def _cmd_openapi(args: argparse.Namespace) -> int:
+    try:
+        from .main import openapi_json
+    except ImportError as exc:
+        return _missing_extra(exc)
+    sys.stdout.write(openapi_json())
+    return 0
+
+
+def add_service_commands(sub: Any) -> None:
+    """``serve`` and ``openapi`` on the subparsers ``sub`` of the library's parser."""
+    sp = sub.add_parser("serve", help="start the HTTP service (uvicorn, one process; TENSEGRITY_* settings)")
+    sp.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1)")
+    sp.add_argument("--port", type=int, default=8000, help="TCP port (default 8000)")
+    sp.add_argument("--log-level", default="info", choices=("critical", "error", "warning", "info", "debug"))
+    sp.add_argument("--no-access-log", action="store_true", help="do not log every request")
+    sp.set_defaults(run=_cmd_serve)
+
+    sp = sub.add_parser("openapi", help="print the service's OpenAPI document (JSON, sorted keys, indent 2)")
+    sp.set_defaults(run=_cmd_openapi)
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The library's parser with the service's commands added."""
+    p = library_cli.build_parser(add_commands=add_service_commands)
+    p.description = "Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|plot|sweep|serve|openapi ...``."
+    return p
+
+
+def main(argv: list[str] | None = None) -> int:
+    """Run one command (``argv``: ``sys.argv[1:]`` by default); the exit status."""
+    return library_cli.main(argv, parser=build_parser())
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
