@@ -1,15 +1,15 @@
-"""Library calls and their conversion to JSON-ready dicts; everything here runs in a solver thread
-(or, :func:`equilibrium_newton_task`, in a solver process), never on the event loop.
+"""Library calls and their JSON bodies; everything here runs in a solver thread (or,
+:func:`equilibrium_newton_task`, in a solver process), never on the event loop.
 
 Each ``*_task`` function (a task of the solver pool; "job" means a persistent sweep, see
-:mod:`service.jobs`) takes validated request models (read only) and returns a plain dict matching
-the response model. Library exceptions propagate unchanged to the route, which maps
+:mod:`service.jobs`) takes validated request models (read only) and returns the result's own
+``to_dict()`` (the one serialiser per result type, :mod:`tensegrity_opt.serialize`'s NaN policy),
+which is the response model's shape. Library exceptions propagate unchanged to the route, which maps
 them through :mod:`service.errors` (batch items are mapped here, one error per target).
 """
 
 from __future__ import annotations
 
-import math
 from functools import lru_cache
 from typing import Any
 
@@ -17,12 +17,14 @@ import numpy as np
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.equilibrium import Equilibrium
+from tensegrity_opt.errors import NonFiniteResult
+from tensegrity_opt.serialize import number, numbers
 
 from . import schemas as s
 from .errors import FieldContext, error_body
 
 __all__ = [
-    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_out", "equilibrium_task",
+    "build_manipulator", "manipulator_key", "segment_count", "manipulator_form", "equilibrium_task",
     "equilibrium_newton_task", "equilibrium_newton_args", "force_equilibrium_task", "equilibria_task", "buckling_task",
     "force_deflection_task", "stiffness_task",
     "segment_torque_task", "energy_landscape_task", "batch_task", "warmup_task",
@@ -60,46 +62,10 @@ def manipulator_key(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> tup
 
 @lru_cache(maxsize=256)
 def _manipulator(key: tuple[Any, ...]) -> to.Manipulator:
+    """The chain of a key, by the library's own reader of the two JSON forms (:meth:`Manipulator.from_dict`)."""
     if key[0] == "uniform":
-        return to.Manipulator.uniform(*key[1:])
-    return to.Manipulator([to.Segment(*seg) for seg in key[1:]])
-
-
-class NonFiniteResult(ArithmeticError):
-    """A result holds NaN or an infinity where the API promises a number (a bug: 500 ``numerical_failure``)."""
-
-
-def _num(x: Any) -> float:
-    """A finite float, or :class:`NonFiniteResult`: a number the schema says is a number never becomes null."""
-    v = float(x)
-    if not math.isfinite(v):
-        raise NonFiniteResult("the result is not finite for this input (overflow or underflow in the model)")
-    return v
-
-
-def _nums(a: Any) -> list[Any]:
-    """``a`` as (nested) lists of finite floats, or :class:`NonFiniteResult`."""
-    if type(a) is np.ndarray and a.ndim == 1 and a.dtype == np.float64:     # the common case, as plain floats
-        vals = a.tolist()
-        if all(map(math.isfinite, vals)):
-            return vals
-    arr = np.asarray(a, dtype=float)
-    if not bool(np.all(np.isfinite(arr))):
-        raise NonFiniteResult("the result is not finite for this input (overflow or underflow in the model)")
-    return arr.tolist()
-
-
-def _f(x: Any) -> float | None:
-    """A float, ``None`` for NaN and infinities (fields documented as nullable)."""
-    v = float(x)
-    return v if math.isfinite(v) else None
-
-
-def equilibrium_out(eq: Equilibrium) -> dict[str, Any]:
-    return {"q": _nums(eq.q), "energy": _num(eq.energy), "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
-            "morse_index": int(eq.morse_index), "stable": bool(eq.stable), "kind": eq.kind, "shape": eq.shape,
-            "signs": eq.signs, "tip": _nums(eq.tip),
-            "solver": {"status": str(eq.status), "iterations": int(eq.iterations)}}
+        return to.Manipulator.from_dict(dict(zip(("n", "a", "b", "k", "L0"), key[1:])))
+    return to.Manipulator.from_dict({"segments": [dict(zip(("a", "b", "k", "L0"), seg)) for seg in key[1:]]})
 
 
 def _q0(q0: list[float] | tuple[float, ...] | None) -> np.ndarray | None:
@@ -114,7 +80,7 @@ def warmup_task() -> None:
 
 def equilibrium_task(req: s.EquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
-    return equilibrium_out(to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local))
+    return to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0), local=req.local).to_dict()
 
 
 def equilibrium_newton_args(req: s.EquilibriumRequest, max_segments: int) -> tuple[Any, ...] | None:
@@ -147,30 +113,25 @@ def equilibrium_newton_task(key: tuple[Any, ...], dx: float, dy: float, q0: tupl
         eq = to.solve_equilibrium(m, dx, dy, q0=_q0(q0), local=local, method="newton")
     except (to.NoEquilibriumError, to.SolverError):
         return None
-    return equilibrium_out(eq)
+    return eq.to_dict()
 
 
 def force_equilibrium_task(req: s.ForceEquilibriumRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
-    return equilibrium_out(to.solve_equilibrium_under_force(m, req.fx, req.fy, q0=_q0(req.q0)))
+    return to.solve_equilibrium_under_force(m, req.fx, req.fy, q0=_q0(req.q0)).to_dict()
 
 
 def equilibria_task(req: s.EquilibriaRequest, timeout: float | None = None) -> dict[str, Any]:
     """Every equilibrium; ``timeout`` bounds the homotopy's external solver (killed then, freeing the thread)."""
     m = build_manipulator(req.manipulator)
     eqs = to.find_equilibria(m, req.dx, req.dy, method=req.method, timeout=timeout)
-    return {"equilibria": [equilibrium_out(e) for e in eqs], "method": eqs.method, "certified": eqs.certified,
-            "paths": eqs.paths, "failed_paths": eqs.failed_paths}
+    return eqs.to_dict()
 
 
 def buckling_task(req: s.BucklingRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     bk = to.critical_force(m, req.boundary)
-    return {"boundary": bk.boundary, "critical_force": _num(bk.force), "loads": _nums(bk.loads),
-            "modes": [{"load": _num(md.load), "q": _nums(md.q), "fy": _num(md.fy),
-                       "energy_factor": _num(md.energy_factor), "mu_x": _num(md.mu_x),
-                       "fy_coefficient": _num(md.fy_coefficient), "shape": md.shape, "signs": md.signs,
-                       "stable": bool(md.stable)} for md in bk.modes]}
+    return bk.to_dict()
 
 
 def deflections(dx: list[float] | s.RangeIn) -> np.ndarray:
@@ -179,39 +140,17 @@ def deflections(dx: list[float] | s.RangeIn) -> np.ndarray:
     return np.asarray(dx, dtype=float)
 
 
-def _force(v: Any) -> dict[str, float]:
-    return {"fx": _num(v[0]), "fy": _num(v[1])}
-
-
 def force_deflection_task(req: s.ForceDeflectionRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     c = to.force_deflection(m, deflections(req.dx), req.dy, branch=req.branch)
-    points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
-               "energy": _num(c.energy[i]), "q": _nums(c.q[i]), "stable": bool(c.stable[i]),
-               "morse_index": int(c.morse_index[i]), "shape": c.shape[i], "branch": int(c.branch[i])}
-              for i in range(c.dx.size)]
-    jumps = [{"kind": j.kind, "dx_before": _num(j.dx_before), "dx_after": _num(j.dx_after),
-              "force_before": _force(j.force_before), "force_after": _force(j.force_after),
-              "branch_before": int(j.branch_before), "branch_after": int(j.branch_after)} for j in c.jumps]
-    branches = []
-    for bi, br in enumerate(c.branches):
-        bid = int(br.branch[0]) if br.branch.size else bi
-        pts = []
-        for i in range(br.dx.size):
-            exists = bool(np.isfinite(br.energy[i]))
-            pts.append({"dx": _num(br.dx[i]), "dy": _num(br.dy[i]), "exists": exists, "fx": _f(br.fx[i]),
-                        "fy": _f(br.fy[i]), "energy": _f(br.energy[i]),
-                        "q": [_f(v) for v in br.q[i]], "stable": bool(br.stable[i]),
-                        "morse_index": int(br.morse_index[i]), "shape": br.shape[i]})
-        branches.append({"id": bid, "points": pts})
-    return {"points": points, "jumps": jumps, "branches": branches}
+    return c.to_dict()
 
 
 def stiffness_task(req: s.StiffnessRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     eq = to.solve_equilibrium(m, req.dx, req.dy, q0=_q0(req.q0))
     K = to.cartesian_stiffness(m, eq)
-    return {"matrix": _nums(K), "equilibrium": equilibrium_out(eq)}
+    return {"matrix": numbers(K), "equilibrium": eq.to_dict()}
 
 
 def angles(q: list[float] | s.RangeIn) -> np.ndarray:
@@ -223,17 +162,15 @@ def angles(q: list[float] | s.RangeIn) -> np.ndarray:
 def segment_torque_task(req: s.SegmentTorqueRequest) -> dict[str, Any]:
     seg = build_segment(req.segment)
     q = angles(req.q)
-    return {"q": _nums(q), "torque": _nums(seg.torque(q)), "dtorque": _nums(seg.dtorque(q)),
-            "energy": _nums(seg.energy(q)), "stiffness": _num(seg.stiffness), "monotonic": bool(seg.monotonic()),
-            "joint_limit": _num(seg.joint_limit)}
+    return {"q": numbers(q), "torque": numbers(seg.torque(q)), "dtorque": numbers(seg.dtorque(q)),
+            "energy": numbers(seg.energy(q)), "stiffness": number(seg.stiffness), "monotonic": bool(seg.monotonic()),
+            "joint_limit": number(seg.joint_limit)}
 
 
 def energy_landscape_task(req: s.EnergyLandscapeRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     land = to.energy_landscape(m, req.dx, req.dy, pair=(req.pair[0], req.pair[1]), grid=req.grid, span=req.span)
-    E = land.energy
-    energy = [[[None if not math.isfinite(v) else v for v in row] for row in plane] for plane in E.tolist()]
-    return {"pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj), "energy": energy}
+    return land.to_dict()
 
 
 def batch_task(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> dict[str, Any]:
@@ -258,7 +195,7 @@ def batch_task(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> di
         item: dict[str, Any] = {"index": i, "dx": t.dx, "dy": t.dy, "equilibrium": None, "error": None}
         if isinstance(r, Equilibrium):
             try:
-                item["equilibrium"] = equilibrium_out(r)
+                item["equilibrium"] = r.to_dict()
                 ok += 1
             except NonFiniteResult as exc:
                 item["error"] = error_body(exc, FieldContext(manipulator=form, index=i))
@@ -272,26 +209,12 @@ def batch_task(req: s.BatchEquilibriumRequest, deadline: float, form: str) -> di
 
 
 # ---------------------------------------------------------------------------- design and control
-def manipulator_out(m: to.Manipulator) -> dict[str, Any]:
-    return {"segments": [{"a": _num(sg.a), "b": _num(sg.b),
-                          "k": _num(sg.k1) if sg.k1 == sg.k2 else [_num(sg.k1), _num(sg.k2)],
-                          "L0": _num(sg.L1_0) if sg.L1_0 == sg.L2_0 else [_num(sg.L1_0), _num(sg.L2_0)]}
-                         for sg in m.segments]}
-
-
-def design_out(d: to.Design) -> dict[str, Any]:
-    return {"manipulator": manipulator_out(d.manipulator), "critical_force": _num(d.critical_force),
-            "loads": _nums(d.loads), "multiplicity": int(d.multiplicity), "active": list(d.active),
-            "initial_critical_force": _f(d.initial_critical_force), "feasible": bool(d.feasible),
-            "solver": {"status": d.status, "iterations": int(d.iterations)}}
-
-
 def _best_as_json(exc: to.InfeasibleDesignError) -> to.InfeasibleDesignError:
     """The best point of an infeasible design, made JSON-ready for the error body."""
     best = exc.best
     if isinstance(best, to.Design):
         try:
-            exc.best = design_out(best)
+            exc.best = best.to_dict()
         except NonFiniteResult:
             exc.best = None
     elif isinstance(best, dict):
@@ -314,7 +237,7 @@ def design_critical_force_task(req: s.DesignCriticalForceRequest) -> dict[str, A
                                        budget=dict(req.budget), boundary=req.boundary, **constraints)
     except to.InfeasibleDesignError as exc:
         raise _best_as_json(exc) from None
-    return design_out(d)
+    return d.to_dict()
 
 
 def preloads_for_load_task(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
@@ -328,7 +251,7 @@ def preloads_for_load_task(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
         raise _best_as_json(to.InfeasibleDesignError(
             f"no rest lengths within the bounds give a critical load of {req.required:g}: the best achievable "
             f"is {d.load:.6g}", status=d.status, best=d))
-    return design_out(d)
+    return d.to_dict()
 
 
 def preloads_task(req: s.PreloadsRequest) -> dict[str, Any]:
@@ -340,6 +263,4 @@ def preloads_task(req: s.PreloadsRequest) -> dict[str, Any]:
                                end_angle=req.end_angle)
     except to.InfeasibleDesignError as exc:
         raise _best_as_json(exc) from None
-    return {"manipulator": manipulator_out(r.manipulator), "preloads": _nums(r.preloads), "q": _nums(r.q),
-            "margin": _num(r.margin), "tip": _nums(r.tip), "energy": _num(r.energy),
-            "solver": {"status": r.status, "iterations": int(r.iterations)}}
+    return r.to_dict()

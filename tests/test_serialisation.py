@@ -1,5 +1,6 @@
-"""One serialiser per result: each ``to_dict()`` equals the dict ``service/compute.py`` builds for the
-same object (the independent, pre-existing serialiser), passes ``json.dumps(allow_nan=False)``, and
+"""One serialiser per result: each ``to_dict()`` equals the dict the service built for the same object
+before the switch to ``to_dict`` (frozen in ``tests/reference_serialisers.py``: the independent,
+pre-existing serialiser), the service's body is that dict, each passes ``json.dumps(allow_nan=False)``, and
 follows the one NaN policy (:mod:`tensegrity_opt.serialize`); the CLI's ``--json`` is the API's body.
 """
 
@@ -18,7 +19,8 @@ from tensegrity_opt.serialize import nullable, nullables, number, numbers
 
 pytest.importorskip("fastapi")
 
-from service import compute  # noqa: E402  (the service's serialisers: the reference)
+import reference_serialisers as refs  # noqa: E402  (the pre-to_dict serialisers: the reference)
+from service import compute  # noqa: E402  (the service's tasks: they must give the same bodies)
 from service import schemas as s  # noqa: E402
 
 
@@ -81,38 +83,41 @@ def test_to_dict_equals_the_service_serialiser(family, seed):
     m, dx, dy = _family(family, rng)
 
     # Manipulator: the {"segments": [...]} form, k / L0 a number when equal, else a pair
-    assert m.to_dict() == compute.manipulator_out(m)
-    _same(m.to_dict(), compute.manipulator_out(m))
+    assert m.to_dict() == refs.manipulator_out(m)
+    _same(m.to_dict(), refs.manipulator_out(m))
     assert to.Manipulator.from_dict(m.to_dict()) == m
 
     eq = to.solve_equilibrium(m, dx, dy)
-    _same(eq.to_dict(), compute.equilibrium_out(eq))
+    _same(eq.to_dict(), refs.equilibrium_out(eq))
     feq = _or_error(lambda: to.solve_equilibrium_under_force(m, -0.2 * abs(eq.fx), eq.fy))
     if isinstance(feq, to.Equilibrium):
-        _same(feq.to_dict(), compute.equilibrium_out(feq))
+        _same(feq.to_dict(), refs.equilibrium_out(feq))
 
     eqs = to.find_equilibria(m, dx, dy)
-    _same(eqs.to_dict(), compute.equilibria_job(_req(s.EquilibriaRequest, m, dx=dx, dy=dy)))
+    _same(eqs.to_dict(), refs.equilibria_out(eqs))
+    _same(eqs.to_dict(), compute.equilibria_task(_req(s.EquilibriaRequest, m, dx=dx, dy=dy)))
 
     K = to.cartesian_stiffness(m, eq)
     _same({"matrix": numbers(K), "equilibrium": eq.to_dict()},
-          compute.stiffness_job(_req(s.StiffnessRequest, m, dx=dx, dy=dy)))
+          compute.stiffness_task(_req(s.StiffnessRequest, m, dx=dx, dy=dy)))
 
     for boundary in ("guided", "free"):
         bk = _or_error(lambda b=boundary: to.critical_force(m, b))
-        ref = _or_error(lambda b=boundary: compute.buckling_job(_req(s.BucklingRequest, m, boundary=b)))
+        ref = _or_error(lambda b=boundary: compute.buckling_task(_req(s.BucklingRequest, m, boundary=b)))
         if isinstance(bk, type):
             assert ref is bk        # the same refusal (asymmetric preloads: straight is not an equilibrium)
             continue
         _same(bk.to_dict(), ref)
+        _same(bk.to_dict(), refs.buckling_out(bk))
         for md, ref_md in zip(bk.modes, ref["modes"], strict=True):
             _same(md.to_dict(), ref_md)
 
     grid = np.linspace(0.0 if dy == 0 else dx, 2 * dx, 5)      # dx = 0 is out of reach when dy != 0
     for branch in ("stable", "all"):
         c = to.force_deflection(m, grid, dy, branch=branch)
-        ref = compute.force_deflection_job(_req(s.ForceDeflectionRequest, m, dx=grid.tolist(), dy=dy, branch=branch))
+        ref = compute.force_deflection_task(_req(s.ForceDeflectionRequest, m, dx=grid.tolist(), dy=dy, branch=branch))
         _same(c.to_dict(), ref)
+        _same(c.to_dict(), refs.curve_out(c))
         for j, ref_j in zip(c.jumps, ref["jumps"], strict=True):
             _same(j.to_dict(), ref_j)
 
@@ -122,28 +127,30 @@ def test_landscape_to_dict_equals_the_service_serialiser(family):
     m, dx, dy = _family(family, np.random.default_rng(3))
     m = to.Manipulator((list(m.segments) * 4)[:4])      # the landscape needs n = 4
     land = to.energy_landscape(m, dx, dy, pair=(0, 3), grid=9)
-    ref = compute.energy_landscape_job(_req(s.EnergyLandscapeRequest, m, dx=dx, dy=dy, pair=[0, 3], grid=9))
+    ref = compute.energy_landscape_task(_req(s.EnergyLandscapeRequest, m, dx=dx, dy=dy, pair=[0, 3], grid=9))
     _same(land.to_dict(), ref)
+    _same(land.to_dict(), refs.landscape_out(land))
     assert any(v is None for plane in ref["energy"] for row in plane for v in row)   # cells outside: null
 
 
 def test_design_to_dict_equals_the_service_serialiser():
     m = to.Manipulator.uniform(4)
     d = to.maximize_critical_force(m, vary=("k",), bounds={"k": (0.5, 2.0)}, budget={"k": 4.0})
-    _same(d.to_dict(), compute.design_out(d))
-    _same(d.to_dict(), compute.design_critical_force_job(_req(
+    _same(d.to_dict(), refs.design_out(d))
+    _same(d.to_dict(), compute.design_critical_force_task(_req(
         s.DesignCriticalForceRequest, m, vary=["k"], bounds={"k": {"lo": 0.5, "hi": 2.0}}, budget={"k": 4.0})))
     pl = to.preloads_for_critical_force(m, 0.8)
-    _same(pl.to_dict(), compute.preloads_for_load_job(_req(s.PreloadsForLoadRequest, m, required=0.8)))
+    _same(pl.to_dict(), compute.preloads_for_load_task(_req(s.PreloadsForLoadRequest, m, required=0.8)))
     p = to.choose_preloads(m, (7.5, 0.5), (0.0, 0.0), "energy")
-    _same(p.to_dict(), compute.preloads_job(_req(s.PreloadsRequest, m, target={"x": 7.5, "y": 0.5},
+    _same(p.to_dict(), refs.preload_design_out(p))
+    _same(p.to_dict(), compute.preloads_task(_req(s.PreloadsRequest, m, target={"x": 7.5, "y": 0.5},
                                                  objective="energy")))
     # nullable: a starting design without a critical force
     import dataclasses
 
     nan_start = dataclasses.replace(d, initial_critical_force=math.nan)
     assert nan_start.to_dict()["initial_critical_force"] is None
-    _same(nan_start.to_dict(), compute.design_out(nan_start))
+    _same(nan_start.to_dict(), refs.design_out(nan_start))
 
 
 # --------------------------------------------------------------------------- the NaN policy
@@ -167,7 +174,7 @@ def test_nan_policy():
     with pytest.raises(NonFiniteResult):
         broken.to_dict()
     with pytest.raises(ArithmeticError):
-        compute.equilibrium_out(broken)       # the service's serialiser agrees (its own class, for now)
+        refs.equilibrium_out(broken)       # the service's serialiser agrees (its own class, for now)
 
 
 def test_a_non_finite_result_is_a_500_numerical_failure():
@@ -243,9 +250,9 @@ def test_the_other_service_bodies_are_to_dict_too():
     # the uniform request form builds the same chain as Manipulator.from_dict of it
     assert to.Manipulator.from_dict({"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}) == m
     feq = to.solve_equilibrium_under_force(m, -0.3, 0.02)
-    _same(feq.to_dict(), compute.force_equilibrium_job(_req(s.ForceEquilibriumRequest, m, fx=-0.3, fy=0.02)))
+    _same(feq.to_dict(), compute.force_equilibrium_task(_req(s.ForceEquilibriumRequest, m, fx=-0.3, fy=0.02)))
     targets = [{"dx": 0.1 * i, "dy": 0.0} for i in range(4)]
-    batch = compute.batch_job(_req(s.BatchEquilibriumRequest, m, targets=targets), math.inf, "segments")
+    batch = compute.batch_task(_req(s.BatchEquilibriumRequest, m, targets=targets), math.inf, "segments")
     solved = to.solve_equilibria_batch(m, [(0.1 * i, 0.0) for i in range(4)])
     for item, eq in zip(batch["results"], solved, strict=True):
         _same(eq.to_dict(), item["equilibrium"])
