@@ -340,7 +340,7 @@ def _parser() -> argparse.ArgumentParser:
 
 
 def _run(argv: list[str]):
-    from tensegrity_opt.applications.cli import _manipulator
+    from tensegrity_opt.applications.cli.common import _manipulator
 
     args = _parser().parse_args(argv)
     return args.func(args, _manipulator(args))

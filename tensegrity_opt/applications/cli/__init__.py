@@ -15,7 +15,6 @@ commands of an application built on top (``add_commands``).
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 from collections.abc import Callable
 from typing import Any
@@ -31,21 +30,13 @@ from ...analyses.equilibrium import (
     solve_equilibrium,
     solve_equilibrium_under_force,
 )
-from ...errors import NonFiniteResult, TensegrityError
-from ...model.manipulator import Manipulator
+from .common import add_manipulator_options, run_command
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser
-
+__all__ = ["main", "build_parser", "add_manipulator_options", "SERVICE_COMMANDS"]
 
 #: The service's commands (``service.cli``): named here only to point a caller of this module there.
 SERVICE_COMMANDS = ("serve", "openapi")
-
-
-def _manipulator(args: argparse.Namespace) -> Manipulator:
-    if args.manipulator:
-        with open(args.manipulator, encoding="utf-8") as fh:
-            return Manipulator.from_dict(json.load(fh))
-    return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0)
 
 
 def _fmt_q(q: np.ndarray) -> str:
@@ -108,17 +99,6 @@ def _cmd_curve(args, m):
     return data, "\n".join(lines)
 
 
-def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
-    """The manipulator options every analysis command takes (uniform chain or a JSON file)."""
-    g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
-    g.add_argument("--n", type=int, default=4, help="number of segments")
-    g.add_argument("--a", type=float, default=1.0)
-    g.add_argument("--b", type=float, default=1.0)
-    g.add_argument("--k", type=float, default=1.0)
-    g.add_argument("--L0", type=float, default=1.0)
-    g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
-
-
 def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.ArgumentParser:
     """The parser of every library command; ``add_commands(subparsers)`` adds more (a command that
     handles its own arguments sets ``run=callable(args) -> exit status`` as its default)."""
@@ -176,18 +156,5 @@ def main(argv: list[str] | None = None, parser: argparse.ArgumentParser | None =
             print(f"tensegrity-opt: error: '{first}' is a command of the HTTP service: run `tensegrity-opt {first}` "
                   f"(service.cli; needs pip install 'tensegrity-opt[service]')", file=sys.stderr)
             return 2
-    args = (parser or build_parser()).parse_args(argv)
-    if getattr(args, "run", None) is not None:
-        return args.run(args)
-    try:
-        m = _manipulator(args)
-        data, text = args.func(args, m)
-        if args.json:
-            # a command returns its result's ``to_dict`` (called only here: a table never needs it) or a dict
-            text = json.dumps(data() if callable(data) else data, indent=2)
-    except (TensegrityError, NonFiniteResult, OSError, json.JSONDecodeError, TypeError) as exc:
-        print(f"tensegrity-opt: error: {exc}", file=sys.stderr)
-        return 2
-    print(text)
-    return 0
+    return run_command(parser or build_parser(), argv)
 

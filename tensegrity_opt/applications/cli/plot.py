@@ -30,6 +30,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
+from .common import add_manipulator_options, run_command
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
@@ -45,8 +46,6 @@ def _output(value: str) -> str:
 
 def _common(sp: argparse.ArgumentParser) -> None:
     """The manipulator options of the other commands, plus the figure's output options."""
-    from . import add_manipulator_options  # at call time: cli imports this module
-
     add_manipulator_options(sp)
     sp.add_argument("--json", action="store_true", help="print JSON instead of a line of text")
     sp.add_argument("-o", "--output", type=_output, required=True, metavar="FIG.png|FIG.svg",
@@ -208,9 +207,9 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m tensegrity_opt.applications.cli.plot KIND ...``: the ``plot`` command on its own."""
-    from . import main as cli_main
-
-    return cli_main(["plot", *(sys.argv[1:] if argv is None else argv)])
+    p = argparse.ArgumentParser(prog="tensegrity-opt")
+    add_plot_parser(p.add_subparsers(dest="command", required=True))
+    return run_command(p, ["plot", *(sys.argv[1:] if argv is None else argv)])
 
 
 if __name__ == "__main__":  # pragma: no cover
