@@ -26,7 +26,7 @@ from ..errors import (
 )
 from ..model.manipulator import Manipulator
 from ..model.segment import Segment
-from ..numerics.chain_solver import RANGE_SHRINK, model
+from ..numerics import RANGE_SHRINK, chain_solver
 from ..timelimit import time_limit as _time_limit
 from .buckling import critical_force, straight_matrices
 from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
@@ -574,11 +574,10 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
             q0 = _reach_guess(m, target)
     q0 = np.asarray(q0, dtype=float)
     nlp = preload_nlp(n)
-    mdl = model(n)
     L0nom = np.concatenate([m.L1_0, m.L2_0])
     L0start = np.clip(L0nom, lo, hi)
-    params = np.concatenate([m.a, m.b, m.k1, m.k2, L0start[:n], L0start[n:]])
-    _, _, Hphi, _, _ = mdl.evaluate(params, q0, load)
+    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start[:n], L0start[n:]))
+    _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
     T = np.tril(np.ones((n, n)))
     Hq = T.T @ Hphi @ T
     mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
@@ -621,7 +620,7 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
         raise InfeasibleDesignError(
             f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
             f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
-    _, _, Hphi, _, _ = mdl.evaluate(m_new.params, eq.q, load)
+    _, _, Hphi, _, _ = chain_solver(m_new).evaluate(eq.q, load)
     achieved = float(np.linalg.eigvalsh(T.T @ Hphi @ T)[0])
     return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q, margin=achieved,
                          tip=eq.tip, energy=eq.energy, status=res.status, success=res.success,
@@ -698,9 +697,8 @@ def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.nda
         ``"dq/<name>"`` (n, n) and ``"dF/<name>"`` (2, n).
     """
     n = m.n
-    mdl = model(n)
-    Jz, Jp = mdl.kkt_parameter_jacobian(m.params, np.asarray(eq.q, float), np.asarray(eq.force, float),
-                                        np.asarray(eq.tip, float))
+    Jz, Jp = chain_solver(m).kkt_parameter_jacobian(np.asarray(eq.q, float), np.asarray(eq.force, float),
+                                                    np.asarray(eq.tip, float))
     try:
         dz = -np.linalg.solve(Jz, Jp)
     except np.linalg.LinAlgError:

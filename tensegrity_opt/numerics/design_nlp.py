@@ -1,7 +1,7 @@
 """CasADi formulations of the design and control problems (the only design module touching CasADi).
 
 Two problem kinds, each built once per ``(n, boundary)`` / ``n`` and cached per thread (see
-:mod:`.solvers` for why per thread); every number that varies between calls (fixed
+:mod:`.chain_solver` for why per thread); every number that varies between calls (fixed
 parameters, bounds, budgets, nominal values, loads, targets, objective weights) enters
 through the parameter vector or the bounds.
 
@@ -29,8 +29,9 @@ import numpy as np
 
 from ..errors import TimeLimitError
 from ..timelimit import TIMEOUT_STATUSES, check_time, expired
-from .chain_solver import CACHE_SIZE, IPOPT_OPTIONS
+from .chain_solver import CACHE_SIZE
 from .expressions import chain_expressions
+from .ipopt import IPOPT_OPTIONS
 
 __all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
 
