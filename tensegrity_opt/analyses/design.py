@@ -261,7 +261,7 @@ def _tension_bounds(tension) -> tuple[float, float]:
 
 
 def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
-    from ..numerics.design_nlp import buckling_design_nlp
+    from ..numerics import buckling_design_nlp
 
     if boundary not in ("guided", "free"):
         raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
@@ -541,7 +541,7 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
 
 
 def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0) -> PreloadDesign:
-    from ..numerics.design_nlp import preload_nlp
+    from ..numerics import preload_nlp
 
     if objective not in ("nominal", "margin", "energy"):
         raise InvalidParameterError(f"objective must be 'nominal', 'margin' or 'energy', got {objective!r}",

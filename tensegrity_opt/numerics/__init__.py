@@ -20,10 +20,18 @@ kernels), :mod:`._fast` (buffered CasADi calls).
 """
 
 from .chain_solver import BoundSolver, ChainSolver, DENSE_MAX, chain_solver
-from .design_nlp import NLPResult, buckling_design_nlp, preload_nlp
 from .ipopt import RANGE_SHRINK
 from .kernels import KERNEL_MAX
 from .results import Continuation, LocalResult, SeedResults
 
 __all__ = ["ChainSolver", "BoundSolver", "chain_solver", "LocalResult", "SeedResults", "Continuation",
            "DENSE_MAX", "KERNEL_MAX", "RANGE_SHRINK", "NLPResult", "buckling_design_nlp", "preload_nlp"]
+
+
+def __getattr__(name: str):
+    # the design problems are built by few calls: their module is imported on first use
+    if name in ("NLPResult", "buckling_design_nlp", "preload_nlp"):
+        from . import design_nlp
+
+        return getattr(design_nlp, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

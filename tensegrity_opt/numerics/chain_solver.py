@@ -43,7 +43,6 @@ from typing import NamedTuple
 import casadi as ca
 import numpy as np
 import scipy.linalg as sla
-import scipy.sparse as _sparse
 
 from . import ipopt as _ipopt
 from . import kernels as _kernels
@@ -129,6 +128,7 @@ class ChainSolver:
         self.kind = kind
         self.dense = kind == "dense"
         self._units_params = self._units_scaled = self._scale_params = None
+        self._last_bound: BoundSolver | None = None     # chain_solver's last binding (reused for the same m)
         if self.dense:
             D = ca.densify
             phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = self._sym
@@ -471,9 +471,11 @@ class ChainSolver:
             fast = self._fast_derivs
             out = fast(np.cumsum(q), params, force)
             return float(out[0][0]), out[1].copy(), fast.dense(2).copy(), fast.dense(3).copy(), out[4].copy()
+        import scipy.sparse as sp_          # long chains only (not imported with the library)
+
         fast = self._fast_derivs_b
         E, g, hd, ho, J, tip = fast(np.cumsum(q), params, force)
-        H = _sparse.diags([ho, hd, ho], [-1, 0, 1], format="csc")
+        H = sp_.diags([ho, hd, ho], [-1, 0, 1], format="csc")
         return float(E[0]), g.copy(), H, fast.dense(4).copy(), tip.copy()
 
     def _tangent_stiffness(self, params: np.ndarray, q: np.ndarray, force: np.ndarray) -> np.ndarray:
@@ -655,5 +657,19 @@ _local = threading.local()
 
 
 def chain_solver(m) -> BoundSolver:
-    """This thread's :class:`ChainSolver` for ``m.n`` segments (built on first use, cached), bound to ``m``."""
-    return BoundSolver(ChainSolver.cached(m.n), m)
+    """This thread's :class:`ChainSolver` for ``m.n`` segments (built on first use, cached), bound to ``m``.
+
+    On the hot paths (a control step is tens of microseconds) this is one dictionary look-up: the
+    solver keeps the last binding it made and returns it again for the same manipulator object.
+    """
+    n = m.n
+    cache = getattr(_local, "cache", None)
+    s = None if cache is None else cache.get(n)
+    if s is None:
+        s = ChainSolver.cached(n)
+    else:
+        cache.move_to_end(n)
+    b = s._last_bound
+    if b is None or b.manipulator is not m:
+        b = s._last_bound = BoundSolver(s, m)
+    return b
