@@ -362,7 +362,7 @@ def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -
         bk = critical_force(m_opt, boundary)
     except TensegrityError as exc:
         raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
-    rows = np.asarray(nlp.rows(xv)).ravel()
+    rows = nlp.rows(xv)
     viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
     design = Design(manipulator=m_opt, critical_force=bk.force, loads=bk.loads,
                     multiplicity=_multiplicity(bk.loads),

@@ -11,7 +11,7 @@ The change ``q -> phi`` (absolute angles) is linear and invertible, so the
 inertia is the same in either coordinate; it is computed in ``phi``, where
 ``H`` is tridiagonal.
 
-Short chains (``n <= solvers.DENSE_MAX``): the eigenvalues of ``Z^T H Z`` with ``Z`` from a
+Short chains (``n <= numerics.DENSE_MAX``): the eigenvalues of ``Z^T H Z`` with ``Z`` from a
 QR factorisation of ``J^T``. Long chains: no dense step. The inertia of the KKT matrix
 ``[[H, J^T], [J, 0]]`` is that of ``Z^T H Z`` plus two positive and two negative
 eigenvalues, and by Haynsworth it is the inertia of ``H`` (the signs of the pivots of
