@@ -19,7 +19,7 @@ Inside: :mod:`.expressions` (the one symbolic model), :mod:`.chain_solver` (the 
 kernels), :mod:`._fast` (buffered CasADi calls).
 """
 
-from .chain_solver import BoundSolver, ChainSolver, DENSE_MAX, chain_solver
+from .chain_solver import DENSE_MAX, BoundSolver, ChainSolver, chain_solver
 from .ipopt import RANGE_SHRINK
 from .kernels import KERNEL_MAX
 from .results import Continuation, LocalResult, SeedResults

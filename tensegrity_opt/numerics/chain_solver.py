@@ -149,7 +149,7 @@ class ChainSolver:
             self._fast_derivs_b = Fast(self.derivs_banded)
 
     @classmethod
-    def cached(cls, n: int) -> "ChainSolver":
+    def cached(cls, n: int) -> ChainSolver:
         """The calling thread's solver for ``n`` segments (built on first use; LRU, ``CACHE_SIZE``)."""
         cache = getattr(_local, "cache", None)
         if cache is None:
@@ -163,7 +163,7 @@ class ChainSolver:
             cache.move_to_end(n)
         return s
 
-    def bind(self, m) -> "BoundSolver":
+    def bind(self, m) -> BoundSolver:
         """This solver bound to the manipulator ``m`` (``m.n`` segments)."""
         return BoundSolver(self, m)
 
@@ -471,7 +471,7 @@ class ChainSolver:
             fast = self._fast_derivs
             out = fast(np.cumsum(q), params, force)
             return float(out[0][0]), out[1].copy(), fast.dense(2).copy(), fast.dense(3).copy(), out[4].copy()
-        import scipy.sparse as sp_          # long chains only (not imported with the library)
+        import scipy.sparse as sp_  # long chains only (not imported with the library)
 
         fast = self._fast_derivs_b
         E, g, hd, ho, J, tip = fast(np.cumsum(q), params, force)
