@@ -324,13 +324,12 @@ def case2(cfg: Config) -> list[Row]:
 
 def kernel_mode(n: int) -> str:
     """How the compiled Newton kernels run here ("compiled" with the cache directory, or the VM)."""
-    from tensegrity_opt.numerics import kernels
-    from tensegrity_opt.numerics.chain_solver import model
+    from tensegrity_opt.numerics import chain_solver, kernels
 
-    k = model(n).kernel
-    if k is None:
+    mode = chain_solver(to.Manipulator.uniform(n)).kernel_mode
+    if mode is None:
         return "none for this n"
-    return f"{k[0].mode} (C compiler {kernels.compiler()}, cache {kernels.cache_dir()})"
+    return f"{mode} (C compiler {kernels.compiler()}, cache {kernels.cache_dir()})"
 
 
 def case3(cfg: Config) -> list[Row]:

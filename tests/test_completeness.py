@@ -451,13 +451,13 @@ def test_sampled_starts_rows_are_true_equilibria():
     """newton_kkt_seeds(python_fallback=False) continues unconverged rows in batched kernel calls: every
     row it marks converged is an equilibrium in numpy (residual, range), whatever round settled it."""
     from tensegrity_opt.analyses.seeds import project_to_target
-    from tensegrity_opt.numerics.chain_solver import model
+    from tensegrity_opt.numerics import chain_solver
 
     m = to.Manipulator.uniform(6, 0.6, 1, 1, 1.2)
     target = m.target(1.5, 0.4)
     rng = np.random.default_rng(3)
     Q = project_to_target(m, rng.uniform(-0.95, 0.95, (600, 6)) * m.joint_limits, target)
-    b = model(6).newton_kkt_seeds(m.params, m.joint_limits, target, Q, python_fallback=False)
+    b = chain_solver(m).newton_kkt_seeds(target, Q, python_fallback=False)
     ok = np.flatnonzero(b.success & ~b.on_bound)
     assert ok.size > 300 and np.any(b.iterations[ok] > 8)          # some were settled in a later round
     for j in ok:

@@ -9,7 +9,7 @@ request schema's whole range (lengths 1e-6..1e6, stiffnesses 1e-6..1e9): slender
 very stiff, very soft, tiny and huge, heterogeneous, with asymmetric preloads, bistable ones. A
 refusal (unreachable target, no equilibrium) is an allowed answer; anything else is not.
 
-Before the fix (solvers.UNIT_RATIO), ``a = 1e6`` returned the unmoved straight chain as
+Before the fix (numerics.units.UNIT_RATIO), ``a = 1e6`` returned the unmoved straight chain as
 ``Newton_Converged`` 0.1 away from its target and ``k = 1e9`` accepted tips 0.02 off; tiny chains
 (``a = b = L0 = 1e-6``) classified every minimum as degenerate and failed.
 """

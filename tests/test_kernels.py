@@ -17,7 +17,7 @@ import pytest
 import tensegrity_opt as to
 from tensegrity_opt.numerics import kernels
 from tensegrity_opt.analyses.seeds import seed_starts, seeds
-from tensegrity_opt.numerics.chain_solver import model
+from tensegrity_opt.numerics import chain_solver
 from tensegrity_opt.analyses.stability import inertia_of_reduced, reduced_hessian
 
 from reference_model import Chain
@@ -33,7 +33,7 @@ CHAINS = {
 
 def _python_newton(m, target, q0, F0=None):
     """The damped Newton method in Python (the kernels' step rule, driven from numpy/LAPACK)."""
-    mdl = model(m.n)
+    mdl = chain_solver(m).solver
     mdl._set_scale(m.params)
     phi = np.cumsum(q0)
     if F0 is None:
@@ -46,14 +46,14 @@ def _python_newton(m, target, q0, F0=None):
 @pytest.mark.parametrize("name", CHAINS)
 def test_kernel_solutions_are_equilibria_with_their_energy_tip_and_reduced_hessian(name):
     m = CHAINS[name]
-    mdl = model(m.n)
-    assert mdl.kernel is not None
-    assert mdl.kernel[0].mode == ("compiled" if kernels.compiler() else "virtual machine")
+    mdl = chain_solver(m)
+    assert mdl.kernel_mode is not None
+    assert mdl.kernel_mode == ("compiled" if kernels.compiler() else "virtual machine")
     checked = 0
     for dx, dy in [(0.05, 0.0), (0.4, 0.2), (1.2, -0.5)]:
         target = m.target(dx, dy)
         for s in seeds(m, dx, dy):
-            res = mdl.newton_kkt(m.params, m.joint_limits, target, s.q)
+            res = mdl.newton_kkt(target, s.q)
             if not res.success or res.reduced_hessian is None:
                 continue
             checked += 1
@@ -73,7 +73,7 @@ def test_kernel_newton_equals_python_newton_from_nearby_starts(name):
     """Started near an equilibrium (a warm start), both methods converge to it. (From far seeds the
     damped methods may settle on different stationary points: their line searches differ.)"""
     m = CHAINS[name]
-    mdl = model(m.n)
+    mdl = chain_solver(m)
     rng = np.random.default_rng(7)
     agree = 0
     for dx, dy in [(0.1, 0.0), (0.7, 0.3)]:
@@ -83,7 +83,7 @@ def test_kernel_newton_equals_python_newton_from_nearby_starts(name):
             if not p0.success:
                 continue
             q0 = p0.q + 0.02 * rng.standard_normal(m.n)
-            k = mdl.newton_kkt(m.params, m.joint_limits, target, q0)
+            k = mdl.newton_kkt(target, q0)
             p = _python_newton(m, target, q0)
             assert k.success and p.success and k.reduced_hessian is not None
             np.testing.assert_allclose(k.q, p.q, atol=1e-9)
@@ -95,14 +95,15 @@ def test_kernel_newton_equals_python_newton_from_nearby_starts(name):
 
 def test_seed_batch_equals_single_starts():
     m = CHAINS["paper"]
-    mdl = model(4)
+    mdl = chain_solver(m)
     target = m.target(0.6, 0.1)
     starts = [s.q for s in seeds(m, 0.6, 0.1)]
-    many = mdl.newton_kkt_many(m.params, m.joint_limits, target, starts)
+    batch = mdl.newton_kkt_seeds(target, starts)
+    many = [batch.result(j) for j in range(len(batch.status))]
     assert len(many) == len(starts)
     from_kernels = 0
     for q0, r in zip(starts, many):
-        one = mdl.newton_kkt(m.params, m.joint_limits, target, q0)
+        one = mdl.newton_kkt(target, q0)
         assert r.success == one.success
         if r.success:
             np.testing.assert_allclose(r.q, one.q, atol=1e-9)
@@ -127,7 +128,7 @@ def test_seed_call_marks_the_distinct_converged_rows(name):
     # the kernel's marks against a double loop over the rows it returned (many starts coincide: each
     # search below has duplicates), whether or not every start converged in the call
     m = CHAINS[name]
-    mdl = model(m.n)
+    mdl = chain_solver(m).solver
     mdl._set_scale(m.params)
     thresh = 1e-12 * mdl._scale
     fast, cols, at = mdl.kernel[2], kernels.seed_columns(m.n), kernels.seed_row(m.n)
@@ -151,22 +152,22 @@ def test_seed_call_marks_the_distinct_converged_rows(name):
 
 def test_search_rows_carry_the_distinct_marks_only_when_one_call_settled_every_start():
     m = CHAINS["paper"]
-    mdl = model(4)
+    mdl = chain_solver(m)
     target = m.target(0.1, 0.0)
     starts = seed_starts(m, 0.1, 0.0)
-    b = mdl.newton_kkt_seeds(m.params, m.joint_limits, target, starts, 1e-7)
+    b = mdl.newton_kkt_seeds(target, starts, 1e-7)
     assert b.distinct is not None and bool(b.success.all())
     good = b.success & ~b.on_bound
     np.testing.assert_array_equal(b.distinct, _distinct_by_hand(b.q.tolist(), good.tolist(), 1e-7))
-    assert mdl.newton_kkt_seeds(m.params, m.joint_limits, target, starts).distinct is None     # not asked for
+    assert mdl.newton_kkt_seeds(target, starts).distinct is None     # not asked for
 
 
 def test_more_starts_than_one_call_takes_leave_the_comparison_to_the_caller():
     m = CHAINS["paper"]
-    mdl = model(4)
+    mdl = chain_solver(m)
     starts = np.vstack([seed_starts(m, 0.4, 0.0)] * 2)
     assert starts.shape[0] > kernels.seed_columns(4)
-    b = mdl.newton_kkt_seeds(m.params, m.joint_limits, m.target(0.4, 0.0), starts, 1e-7)
+    b = mdl.newton_kkt_seeds(m.target(0.4, 0.0), starts, 1e-7)
     assert b.distinct is None
     half = starts.shape[0] // 2
     np.testing.assert_array_equal(b.q[:half], b.q[half:])       # the same starts give the same points
@@ -178,7 +179,7 @@ def test_continuation_kernel_matches_pointwise_solves_and_reference_model():
     eq = to.solve_equilibrium(m, 0.3)
     dxs = np.linspace(0.3, 0.8, 200)
     targets = np.column_stack([m.straight_length - dxs, 0.1 * np.sin(dxs)])
-    c = model(4).batch_continue(m.params, targets, np.concatenate([np.cumsum(eq.q), eq.force]))
+    c = chain_solver(m).batch_continue(targets, np.concatenate([np.cumsum(eq.q), eq.force]))
     assert c.reduced_hessian is not None and np.all(c.residual < 1e-10)
     Q = np.diff(np.hstack([np.zeros((len(dxs), 1)), c.Z[:, :4]]), axis=1)
     for i in (0, 57, 199):
@@ -209,10 +210,10 @@ _CHILD = textwrap.dedent("""
     warnings.simplefilter("always")
     with warnings.catch_warnings(record=True) as caught:
         import tensegrity_opt as to
-        from tensegrity_opt.numerics.chain_solver import model
+        from tensegrity_opt.numerics import chain_solver
         m = to.Manipulator.uniform(4)
         out = [to.solve_equilibrium(m, dx, dy).q.tolist() for dx, dy in [(0.1, 0.0), (0.9, 0.4)]]
-        mode = model(4).kernel[0].mode
+        mode = chain_solver(m).kernel_mode
     print(json.dumps({"q": out, "mode": mode, "warnings": [str(w.message) for w in caught]}))
 """)
 
@@ -250,7 +251,7 @@ def test_a_failing_compiler_warns_and_falls_back_to_the_virtual_machine(tmp_path
 
 
 def test_kernels_exist_only_for_short_chains():
-    assert model(kernels.KERNEL_MAX + 1).kernel is None
+    assert chain_solver(to.Manipulator.uniform(kernels.KERNEL_MAX + 1)).kernel_mode is None
     with pytest.raises(ValueError):
         kernels.build(1)
 

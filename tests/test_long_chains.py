@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt.numerics import chain_solver as solvers
+from tensegrity_opt.numerics import ChainSolver, chain_solver
 from tensegrity_opt.analyses.stability import inertia_of
 
 
@@ -32,15 +32,13 @@ def test_uniform_chain_loads_scale_like_a_column():
 
 
 @pytest.fixture
-def both_models(monkeypatch):
+def both_models():
     n = 80
-    dense_model = solvers._Model.__new__(solvers._Model)
-    monkeypatch.setattr(solvers, "DENSE_MAX", 10 ** 6)
-    dense_model.__init__(n)
-    monkeypatch.setattr(solvers, "DENSE_MAX", 64)
-    banded_model = solvers._Model(n)
+    m = wavy_chain(n)
+    dense_model = ChainSolver(n, "dense").bind(m)       # the dense route beyond DENSE_MAX, for comparison
+    banded_model = ChainSolver(n).bind(m)
     assert dense_model.dense and not banded_model.dense
-    return wavy_chain(n), dense_model, banded_model
+    return m, dense_model, banded_model
 
 
 def test_banded_newton_classification_and_stiffness_match_dense(both_models):
@@ -48,13 +46,13 @@ def test_banded_newton_classification_and_stiffness_match_dense(both_models):
     eq = to.solve_equilibrium(m, 3.0, 2.0)          # uses the banded model (n = 80 > 64)
     target = eq.tip
     q0 = eq.q * 1.05
-    rd = dm.newton_kkt(m.params, m.joint_limits, target, q0)
-    rb = bm.newton_kkt(m.params, m.joint_limits, target, q0)
+    rd = dm.newton_kkt(target, q0)
+    rb = bm.newton_kkt(target, q0)
     assert rd.success and rb.success
     assert np.allclose(rd.q, rb.q, atol=1e-10) and np.allclose(rd.force, rb.force, atol=1e-12)
     for F in (eq.force, np.array([-0.3, 0.2])):
-        Ed, gd, Hd, Jd, td = dm.evaluate(m.params, eq.q, F)
-        Eb, gb, Hb, Jb, tb = bm.evaluate(m.params, eq.q, F)
+        Ed, gd, Hd, Jd, td = dm.evaluate(eq.q, F)
+        Eb, gb, Hb, Jb, tb = bm.evaluate(eq.q, F)
         assert Ed == pytest.approx(Eb, rel=1e-13)
         assert np.allclose(gd, gb, atol=1e-12) and np.allclose(Hd, Hb.toarray(), atol=1e-12)
         assert np.allclose(Jd, Jb, atol=1e-13) and np.allclose(td, tb, atol=1e-12)
@@ -62,8 +60,8 @@ def test_banded_newton_classification_and_stiffness_match_dense(both_models):
             a = inertia_of(Hd, Jd, constrained, 1e-9, m.n - 2 if constrained else m.n)
             b = inertia_of(Hb, Jb, constrained, 1e-9, m.n - 2 if constrained else m.n)
             assert a.morse_index == b.morse_index and a.stable == b.stable
-    assert np.allclose(dm.tangent_stiffness(m.params, eq.q, eq.force),
-                       bm.tangent_stiffness(m.params, eq.q, eq.force), rtol=1e-8)
+    assert np.allclose(dm.tangent_stiffness(eq.q, eq.force),
+                       bm.tangent_stiffness(eq.q, eq.force), rtol=1e-8)
 
 
 def test_unstable_equilibria_are_classified_alike(both_models):
@@ -71,7 +69,7 @@ def test_unstable_equilibria_are_classified_alike(both_models):
     eqs = to.find_equilibria(m, 0.5, n_random=0, max_modes=3, amplitudes=(1.0,))
     assert sorted(e.morse_index for e in eqs)[:6] == [0, 0, 1, 1, 2, 2]
     for e in eqs:
-        _, _, Hd, Jd, _ = dm.evaluate(m.params, e.q, e.force)
+        _, _, Hd, Jd, _ = dm.evaluate(e.q, e.force)
         assert inertia_of(Hd, Jd, True, 1e-9, m.n - 2).morse_index == e.morse_index
 
 
@@ -89,11 +87,10 @@ def test_seed_results_of_a_long_chain_hold_no_dense_reduced_hessians():
     """Without kernels (n > 8) the seed results carry no reduced Hessians: for n = 10000 a (k, n-2, n-2)
     array would be 800 MB a start (it once was, and the n = 10000 solve took 1.8 s instead of 0.2 s)."""
     from tensegrity_opt.analyses.seeds import seed_starts
-    from tensegrity_opt.numerics.chain_solver import model
 
     m = to.Manipulator.uniform(300)
     dx = 0.05 * m.straight_length
-    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, m.target(dx, 0.0),
-                                    seed_starts(m, dx, 0.0, max_modes=2, n_random=0, arcs=False))
+    b = chain_solver(m).newton_kkt_seeds(m.target(dx, 0.0),
+                                         seed_starts(m, dx, 0.0, max_modes=2, n_random=0, arcs=False))
     assert b.reduced_hessian is None and b.q.shape == (4, 300) and b.success.any()
     assert all(b.result(j).reduced_hessian is None for j in range(4))

@@ -29,8 +29,7 @@ import numpy as np
 
 from ..errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
 from ..model.manipulator import Manipulator
-from ..numerics.chain_solver import model
-from ..numerics.kernels import KERNEL_MAX
+from ..numerics import KERNEL_MAX, chain_solver
 from .equilibrium import (
     RESIDUAL_TOL,
     Equilibrium,
@@ -192,7 +191,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         n_projected = per * m.n if m.n <= 64 else 0
     more = np.vstack([well_seeds(m, dx, dy), projected_sample(m, target, int(n_projected), PROJECTED_SEED)])
     if more.shape[0]:
-        batch = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, more, python_fallback=False)
+        batch = chain_solver(m).newton_kkt_seeds(target, more, python_fallback=False)
         for j in np.flatnonzero(batch.success & ~batch.on_bound).tolist():
             res = batch.result(j)
             if is_equilibrium(m, res, target):
@@ -236,7 +235,7 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from ..numerics.chain_solver import LocalResult
+    from ..numerics import LocalResult
     from ..numerics.homotopy import real_configurations, rest_points_at, solve_homotopy
 
     if m.n > HOMOTOPY_MAX_N:

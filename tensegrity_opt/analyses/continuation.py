@@ -1,7 +1,7 @@
 """Continuation: equilibria followed along a sequence of tip targets, in one home.
 
 Three users, one mechanism (warm-started Newton on the KKT system, the compiled continuation
-kernel of :meth:`ChainSolver.batch_continue <tensegrity_opt.numerics.chain_solver.ChainSolver.batch_continue>`
+kernel of :meth:`BoundSolver.batch_continue <tensegrity_opt.numerics.BoundSolver.batch_continue>`
 for short chains):
 
 * :func:`solve_equilibria_batch` - a whole trajectory of targets in one call;
@@ -17,7 +17,7 @@ the global least-energy stable equilibrium (:func:`solve_equilibrium`); with
 ``continuation=True`` every next one continues the branch through the previous solution —
 what a manipulator driven along a trajectory actually does — by Newton corrections run
 in compiled code for short chains (the C kernels of :mod:`.kernels` up to ``KERNEL_MAX``
-segments, CasADi's ``rootfinder`` under ``mapaccum`` up to ``solvers.DENSE_MAX``), classified
+segments, CasADi's ``rootfinder`` under ``mapaccum`` up to ``numerics.DENSE_MAX``), classified
 in one batch. For one target at a time (a control loop) see :class:`tensegrity_opt.Tracker`. A point where the branch ends or loses stability is re-solved globally
 (warm-started from the previous configuration) and the continuation goes on from there.
 With ``continuation=False`` every target is solved globally on its own.
@@ -58,7 +58,7 @@ import numpy as np
 
 from ..errors import InvalidParameterError, SolverError, TensegrityError, TimeLimitError
 from ..model.manipulator import Manipulator
-from ..numerics.chain_solver import model
+from ..numerics import chain_solver
 from ..timelimit import check_time
 from .equilibrium import (
     Equilibrium,
@@ -110,7 +110,7 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
     out: list[Equilibrium | TensegrityError | None] = [None] * N
     prev: Equilibrium | None = None
     start_q = check_q0(m, q0)
-    mdl = model(m.n)
+    mdl = chain_solver(m)
     i = 0
     while i < N:
         if deadline is not None and time.monotonic() > deadline:
@@ -138,7 +138,7 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
                 i = j
                 continue
         # one point by the damped Newton method, else globally
-        res = mdl.newton_kkt(m.params, m.joint_limits, m.target(dx, dy), prev.q, prev.force)
+        res = mdl.newton_kkt(m.target(dx, dy), prev.q, prev.force)
         eq = make_equilibrium(m, res, constrained=True) if (res.success and not res.on_bound) else None
         if eq is None or not eq.stable:
             eq = _global(m, dx, dy, prev.q)
@@ -169,8 +169,8 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
     scale) inside the physical range — the first failure ends the prefix — classified.
     """
     n = m.n
-    mdl = model(n)
-    c = mdl.batch_continue(m.params, targets, np.concatenate([np.cumsum(q0), F0]))
+    mdl = chain_solver(m)
+    c = mdl.batch_continue(targets, np.concatenate([np.cumsum(q0), F0]))
     Z = c.Z
     Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
     tol = 1e-9 * max(1.0, c.torque_scale)        # the residual is in the solver's units
@@ -179,7 +179,7 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
     Q, Fs = Q[:k], Z[:k, n:]
     if c.reduced_hessian is not None:
         return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k], scale=m.torque_scale))
-    E, H, J, T = mdl.batch_derivs(m.params, Q, Fs)
+    E, H, J, T = mdl.batch_derivs(Q, Fs)
     return Prefix(Q, Fs, E, T, *classify_batch(H, J, scale=m.torque_scale))
 
 
@@ -259,7 +259,7 @@ class Tracker:
             eq = solve_equilibrium(m, dx, dy, q0=None if prev is None else prev.q)
         else:
             target = m.check_reachable(dx, dy)
-            res = model(m.n).newton_kkt(m.params, m.joint_limits, target, prev.q, prev.force)
+            res = chain_solver(m).newton_kkt(target, prev.q, prev.force)
             if not is_equilibrium(m, res, target, check_residual=False):
                 res = local_equilibrium(m, target, prev.q, minimize=True)     # IPOPT from the previous shape
                 if not is_equilibrium(m, res, target):
@@ -305,7 +305,7 @@ class BranchPoints:
 
 def follow(m: Manipulator, br: BranchPoints, start: int, stop: int, targets: np.ndarray, dxs, dys) -> None:
     """Continue ``br`` from its solution at ``start`` over the points ``start+1 .. stop-1``."""
-    mdl = model(m.n)
+    mdl = chain_solver(m)
     n = m.n
     if n == 1:                       # no continuation: every point is fixed by its target
         for i in range(start + 1, stop):
@@ -338,7 +338,7 @@ def follow(m: Manipulator, br: BranchPoints, start: int, stop: int, targets: np.
         if dys[i] == 0.0 and dys[s] == 0.0 and dxs[s] > 0.0 and dxs[i] > 0.0:
             r = math.sqrt(dxs[i] / dxs[s])
             q0, F0 = q0 * r, np.array([F0[0], F0[1] * r])
-        res = mdl.newton_kkt(m.params, lim, targets[i], q0, F0)
+        res = mdl.newton_kkt(targets[i], q0, F0)
         if not (res.success and np.all(np.abs(res.q) < lim)):
             return                      # the branch ends here
         br.set(i, make_equilibrium(m, res, constrained=True))

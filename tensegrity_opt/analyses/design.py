@@ -27,7 +27,7 @@ from ..errors import (
 )
 from ..model.manipulator import Manipulator
 from ..model.segment import Segment
-from ..numerics.chain_solver import RANGE_SHRINK, model
+from ..numerics import RANGE_SHRINK, chain_solver
 from ..serialize import nullable, number, numbers
 from ..timelimit import time_limit as _time_limit
 from .buckling import critical_force, straight_matrices
@@ -279,7 +279,7 @@ def _tension_bounds(tension) -> tuple[float, float]:
 
 
 def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
-    from ..numerics.design_nlp import buckling_design_nlp
+    from ..numerics import buckling_design_nlp
 
     if boundary not in ("guided", "free"):
         raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
@@ -380,7 +380,7 @@ def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -
         bk = critical_force(m_opt, boundary)
     except TensegrityError as exc:
         raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
-    rows = np.asarray(nlp.rows(xv)).ravel()
+    rows = nlp.rows(xv)
     viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
     design = Design(manipulator=m_opt, critical_force=bk.force, loads=bk.loads,
                     multiplicity=_multiplicity(bk.loads),
@@ -559,7 +559,7 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
 
 
 def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0) -> PreloadDesign:
-    from ..numerics.design_nlp import preload_nlp
+    from ..numerics import preload_nlp
 
     if objective not in ("nominal", "margin", "energy"):
         raise InvalidParameterError(f"objective must be 'nominal', 'margin' or 'energy', got {objective!r}",
@@ -592,11 +592,10 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
             q0 = _reach_guess(m, target)
     q0 = np.asarray(q0, dtype=float)
     nlp = preload_nlp(n)
-    mdl = model(n)
     L0nom = np.concatenate([m.L1_0, m.L2_0])
     L0start = np.clip(L0nom, lo, hi)
-    params = np.concatenate([m.a, m.b, m.k1, m.k2, L0start[:n], L0start[n:]])
-    _, _, Hphi, _, _ = mdl.evaluate(params, q0, load)
+    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start[:n], L0start[n:]))
+    _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
     T = np.tril(np.ones((n, n)))
     Hq = T.T @ Hphi @ T
     mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
@@ -639,7 +638,7 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
         raise InfeasibleDesignError(
             f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
             f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
-    _, _, Hphi, _, _ = mdl.evaluate(m_new.params, eq.q, load)
+    _, _, Hphi, _, _ = chain_solver(m_new).evaluate(eq.q, load)
     achieved = float(np.linalg.eigvalsh(T.T @ Hphi @ T)[0])
     return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q, margin=achieved,
                          tip=eq.tip, energy=eq.energy, status=res.status, success=res.success,
@@ -716,9 +715,8 @@ def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.nda
         ``"dq/<name>"`` (n, n) and ``"dF/<name>"`` (2, n).
     """
     n = m.n
-    mdl = model(n)
-    Jz, Jp = mdl.kkt_parameter_jacobian(m.params, np.asarray(eq.q, float), np.asarray(eq.force, float),
-                                        np.asarray(eq.tip, float))
+    Jz, Jp = chain_solver(m).kkt_parameter_jacobian(np.asarray(eq.q, float), np.asarray(eq.force, float),
+                                                    np.asarray(eq.tip, float))
     try:
         dz = -np.linalg.solve(Jz, Jp)
     except np.linalg.LinAlgError:

@@ -32,8 +32,7 @@ from ..errors import (
 )
 from ..model.manipulator import Manipulator
 from ..model.shapes import shape_label, sign_string
-from ..numerics.chain_solver import LocalResult, model
-from ..numerics.kernels import KERNEL_MAX
+from ..numerics import KERNEL_MAX, LocalResult, chain_solver
 from ..serialize import number, numbers
 from .buckling import critical_force, tip_slope
 from .seeds import projected_sample, seed_starts, well_seeds
@@ -220,13 +219,13 @@ def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np
                       *, minimize: bool = False) -> LocalResult:
     """One local solve for the displacement problem: Newton on the KKT system from ``(q0, F0)``,
     or IPOPT (``minimize=True``) followed by a Newton polish. Returns the raw result."""
-    mdl = model(m.n)
+    mdl = chain_solver(m)
     if not minimize:
-        return mdl.newton_kkt(m.params, m.joint_limits, target, q0, F0)
-    res = mdl.minimize_displacement(m.params, m.joint_limits, target, q0)
+        return mdl.newton_kkt(target, q0, F0)
+    res = mdl.minimize_displacement(target, q0)
     if not res.on_bound and np.all(np.isfinite(res.q)):
         # Newton polish to machine precision; IPOPT's status is kept (its solve is the result).
-        pol = mdl.newton_kkt(m.params, m.joint_limits, target, res.q, res.force)
+        pol = mdl.newton_kkt(target, res.q, res.force)
         if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-4:
             pol.status = res.status
             pol.iterations = res.iterations
@@ -448,7 +447,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     # ``fallback=False`` (multistable chains under method "auto": hundreds of well starts, IPOPT's
     # descents after): a start the compiled Newton did not settle is dropped rather than run again by
     # the Python method (~3 ms each)
-    b = model(m.n).newton_kkt_seeds(m.params, m.joint_limits, target, starts, SAME_Q, python_fallback=fallback)
+    b = chain_solver(m).newton_kkt_seeds(target, starts, SAME_Q, python_fallback=fallback)
     energy = b.energy.tolist()
     if b.distinct is not None:
         # one kernel call settled every start (all converged, no Python-method row) and compared the
@@ -625,10 +624,10 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
                 q0 = 0.05 * first.q / np.abs(first.q).max() * float(np.min(m.joint_limits))
         except TensegrityError:
             pass                    # straight is not an equilibrium: IPOPT leaves it anyway
-    mdl = model(m.n)
-    res = mdl.minimize_force(m.params, m.joint_limits, force, q0)
+    mdl = chain_solver(m)
+    res = mdl.minimize_force(force, q0)
     if res.success and not res.on_bound:
-        pol = mdl.newton_force(m.params, m.joint_limits, force, res.q)
+        pol = mdl.newton_force(force, res.q)
         if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-4:
             pol.status, pol.iterations = res.status, res.iterations
             res = pol

@@ -11,7 +11,7 @@ The change ``q -> phi`` (absolute angles) is linear and invertible, so the
 inertia is the same in either coordinate; it is computed in ``phi``, where
 ``H`` is tridiagonal.
 
-Short chains (``n <= solvers.DENSE_MAX``): the eigenvalues of ``Z^T H Z`` with ``Z`` from a
+Short chains (``n <= numerics.DENSE_MAX``): the eigenvalues of ``Z^T H Z`` with ``Z`` from a
 QR factorisation of ``J^T``. Long chains: no dense step. The inertia of the KKT matrix
 ``[[H, J^T], [J, 0]]`` is that of ``Z^T H Z`` plus two positive and two negative
 eigenvalues, and by Haynsworth it is the inertia of ``H`` (the signs of the pivots of
@@ -29,7 +29,7 @@ import numpy as np
 import scipy.linalg as sla
 
 from ..model.manipulator import Manipulator
-from ..numerics.chain_solver import model
+from ..numerics import chain_solver
 
 __all__ = ["Inertia", "classify", "analyse", "classify_batch", "classify_reduced", "reduced_hessian",
            "inertia_of_reduced"]
@@ -56,7 +56,7 @@ class Inertia:
 
 def reduced_hessian(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: bool) -> np.ndarray:
     """``Z^T H Z`` (``constrained``: tip held) or ``H`` (force prescribed), dense, in absolute angles."""
-    _, _, H, J, _ = model(m.n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
+    _, _, H, J, _ = chain_solver(m).evaluate(np.asarray(q, float), np.asarray(force, float))
     H = H if isinstance(H, np.ndarray) else H.toarray()
     if not constrained:
         return H
@@ -80,7 +80,7 @@ def analyse(m: Manipulator, q: np.ndarray, force: np.ndarray, *, constrained: bo
     """``(inertia, energy, tip)`` at ``(q, force)`` from one evaluation of the model."""
     n = m.n
     dim = n - 2 if constrained else n
-    E, _, H, J, tip = model(n).evaluate(m.params, np.asarray(q, float), np.asarray(force, float))
+    E, _, H, J, tip = chain_solver(m).evaluate(np.asarray(q, float), np.asarray(force, float))
     return inertia_of(H, J, constrained, rel_tol, dim, m.torque_scale), E, tip
 
 

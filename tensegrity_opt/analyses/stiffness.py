@@ -14,7 +14,7 @@ import numpy as np
 
 from ..errors import InvalidParameterError
 from ..model.manipulator import Manipulator
-from ..numerics.chain_solver import model
+from ..numerics import chain_solver
 from .equilibrium import Equilibrium
 
 __all__ = ["cartesian_stiffness"]
@@ -46,7 +46,7 @@ def cartesian_stiffness(m: Manipulator, eq: Equilibrium) -> np.ndarray:
     if q.shape != (m.n,):
         raise InvalidParameterError(f"eq has {q.size} joint angles, the manipulator {m.n}", field="eq")
     try:
-        K = model(m.n).tangent_stiffness(m.params, q, np.asarray(eq.force, float))
+        K = chain_solver(m).tangent_stiffness(q, np.asarray(eq.force, float))
     except (np.linalg.LinAlgError, ValueError):
         K = None
     if K is None or not np.all(np.isfinite(K)):

@@ -1,7 +1,7 @@
 """CasADi formulations of the design and control problems (the only design module touching CasADi).
 
 Two problem kinds, each built once per ``(n, boundary)`` / ``n`` and cached per thread (see
-:mod:`.solvers` for why per thread); every number that varies between calls (fixed
+:mod:`.chain_solver` for why per thread); every number that varies between calls (fixed
 parameters, bounds, budgets, nominal values, loads, targets, objective weights) enters
 through the parameter vector or the bounds.
 
@@ -29,8 +29,9 @@ import numpy as np
 
 from ..errors import TimeLimitError
 from ..timelimit import TIMEOUT_STATUSES, check_time, expired
-from .chain_solver import CACHE_SIZE, IPOPT_OPTIONS
+from .chain_solver import CACHE_SIZE
 from .expressions import chain_expressions
+from .ipopt import IPOPT_OPTIONS
 
 __all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
 
@@ -156,14 +157,17 @@ class BucklingDesignNLP:
                           k * (2 * b - L0),                      # preload tension at straight (n)
                           K)                                     # joint stiffness (n)
         self.x = ca.vertcat(a, b, k, L0, P, lv)
-        self.nx = 4 * n + 1 + tril_size(d)
         self.n_psd = tril_size(d)
         self.solver, self._deadline = _nlpsol("design_buckling",
                                               {"x": self.x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows})
-        self.rows = ca.Function("rows", [self.x], [rows])
+        self._rows = ca.Function("rows", [self.x], [rows])
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
+
+    def rows(self, x: np.ndarray) -> np.ndarray:
+        """The constraint rows ``g(x)`` at the variables ``x`` (numpy)."""
+        return np.asarray(self._rows(x)).ravel()
 
 
 class PreloadNLP:
@@ -192,7 +196,6 @@ class PreloadNLP:
         f = (w[0] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom) - w[1] * mu + w[2] * E)
         rows = ca.vertcat(grad, tip, phi[n - 1], psd, L1 - L10, L2 - L20, q)
         self.x = ca.vertcat(phi, L10, L20, mu, lv)
-        self.nx = 3 * n + 1 + tril_size(n)
         self.solver, self._deadline = _nlpsol(
             "design_preload", {"x": self.x, "p": ca.vertcat(a, b, k1, k2, F, L0nom, w), "f": f, "g": rows})
 

@@ -18,20 +18,19 @@ Kernels (``n <= KERNEL_MAX`` segments)
 ``seeds``
     ``newton`` with ``SEED_ITER`` iterations over the starts of a global search at once
     (``seed_columns(n)`` columns, idle ones skipped), and which of the converged points are
-    distinct (the comparison of :func:`tensegrity_opt.equilibrium.distinct_rows`, done here so the
+    distinct (the comparison of :func:`tensegrity_opt.analyses.equilibrium.distinct_rows`, done here so the
     search need not compare ``k^2`` rows in numpy).
 ``continuation``
     ``BATCH`` targets in order, each solved by ``CONT_ITER`` iterations from the previous
     target's solution (``mapaccum``), with the same per-point outputs.
 
-The damped step is the one of :meth:`tensegrity_opt.solvers._Model.newton_kkt`: the Newton
+The damped step is the one of :meth:`.chain_solver.BoundSolver.newton_kkt` (:mod:`.newton`): the Newton
 direction, its angle part capped at ``MAX_STEP`` rad, then the first of ``TRIALS`` halved
 step lengths that decreases the residual norm (Armijo); when none does the iterate stays.
 As there, an iterate whose residual norm is at most the threshold is final: the remaining
 iterations of a call keep it without evaluating anything, and a shorter trial step is
 evaluated only when the longer ones were refused (conditional code, CasADi's ``Switch``).
-A converged start thus costs its own iterations, not ``SEED_ITER`` (kernel code per n = 4 global
-search of 14 starts: ~390k -> ~280k instructions, counted with callgrind).
+A converged start thus costs its own iterations, not ``SEED_ITER``.
 The kernels only propose: the caller checks the residual against its tolerance, the range
 and the stability, and falls back to the Python Newton method (and IPOPT) otherwise.
 
@@ -66,20 +65,18 @@ from .expressions import kkt_graph
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "BATCH", "Kernels", "build", "cache_dir",
            "compiler", "seed_columns", "seed_row", "status"]
 
-#: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3:
-#: an n = 16 iteration costs ~13 us compiled, no better than LAPACK driven from Python).
+#: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3 and is
+#: no faster than LAPACK driven from Python; benchmarks/RESULTS.md, "Measurement notes").
 KERNEL_MAX = 8
 #: Newton iterations per ``newton`` call (a warm start 0.001 away converges in 2-3; an
-#: unconverged start is called again from where it stopped). Each costs ~1.2 us for n = 4.
+#: unconverged start is called again from where it stopped).
 ITER = 3
 #: Newton iterations per start in ``seeds`` (a converged start stops early, so more only costs the
-#: starts that never converge). Measured (callgrind, instructions per n = 4 global search incl. Python):
-#: 6 -> 1.65M on the benchmark's targets (a third of the searches had a start left to ``newton``, which
-#: converged within 3 more) and 1.74M on wide ones; 8 -> 1.40M / 1.53M; 10 -> 1.44M / 1.56M; 14 -> 1.45M /
-#: 1.54M. A start still unconverged goes on from its iterate with ``newton``.
+#: starts that never converge; a start still unconverged goes on from its iterate with ``newton``).
+#: Chosen by instruction counts (benchmarks/RESULTS.md, "Measurement notes").
 SEED_ITER = 8
-#: Newton iterations per target in ``continuation`` (neighbouring targets converge in 2-3; with 4 no
-#: continuation measured broke off early, with 3 some did and were resumed by the Python method).
+#: Newton iterations per target in ``continuation`` (neighbouring targets converge in 2-3; a
+#: continuation broken off early is resumed by the Python method).
 CONT_ITER = 4
 #: Step lengths tried per iteration: a0, a0/2, a0/4, a0/8.
 TRIALS = 4
@@ -93,7 +90,7 @@ def seed_row(n: int) -> dict[str, slice | int]:
     length): ``q`` (n), ``F`` (2), ``norm``, ``iters``, ``E``, ``tip`` (2), ``R`` ((n-2)^2, column-major),
     ``margin`` (max |q_i| - limit_i: >= 0 means on or beyond the physical range), ``distinct`` (1 when the
     start converged inside the range to a point differing by at least ``same`` in some joint angle from
-    every earlier such start's; :func:`tensegrity_opt.equilibrium.distinct_rows` over the call's rows)."""
+    every earlier such start's; :func:`tensegrity_opt.analyses.equilibrium.distinct_rows` over the call's rows)."""
     m2 = (n - 2) ** 2
     return {"q": slice(0, n), "F": slice(n, n + 2), "norm": n + 2, "iters": n + 3, "E": n + 4,
             "tip": slice(n + 5, n + 7), "R": slice(n + 7, n + 7 + m2), "margin": n + 7 + m2,
@@ -168,9 +165,9 @@ def _householder_null_basis(A: ca.SX) -> ca.SX:
 def _distinct(n: int, cols: int) -> ca.Function:
     """``(rows, active, thresh, same) -> distinct (1 x cols)``: a column is distinct when it is active, its
     start converged (``norm <= thresh``) inside the range (``margin < 0``) and no earlier such column's
-    joint angles all lie within ``same`` of its own (:func:`tensegrity_opt.equilibrium.distinct_rows`, the
+    joint angles all lie within ``same`` of its own (:func:`tensegrity_opt.analyses.equilibrium.distinct_rows`, the
     same comparisons). The pairs are compared by one small function mapped over them (a loop in the C
-    code; written out pair by pair the n = 8 kernel took twice as long to compile)."""
+    code, not one comparison per pair written out: the generated code stays small)."""
     at = seed_row(n)
     qi, qj, same = ca.SX.sym("qi", n), ca.SX.sym("qj", n), ca.SX.sym("same")
     near = ca.Function("near", [qi, qj, same], [ca.mmax(ca.fabs(qi - qj)) < same])
@@ -192,8 +189,7 @@ def _distinct(n: int, cols: int) -> ca.Function:
 def _extended(p):
     """The parameters ``p`` (6n: a, b, k1, k2, L10, L20) followed by each segment's ``beta = atan2(a, b)``
     and ``c = sqrt(a^2 + b^2)`` (the parameters of ``kkt_graph(n, extended=True)``): computed once per
-    kernel call instead of in every evaluation of the residual (the atan2 calls were ~8 % of an n = 4
-    global search's instructions)."""
+    kernel call instead of in every evaluation of the residual."""
     n = p.shape[0] // 6
     a, b = p[:n], p[n:2 * n]
     return ca.vertcat(p, ca.atan2(a, b), ca.sqrt(a * a + b * b))
@@ -374,7 +370,7 @@ _loaded: dict[int, str] = {}
 
 
 def build(n: int) -> Kernels:
-    """Kernels for ``n`` segments (graphs from :func:`tensegrity_opt.expressions.kkt_graph`).
+    """Kernels for ``n`` segments (graphs from :func:`.expressions.kkt_graph`).
 
     The library is compiled once per machine and its path found once per process; every call
     returns new ``Function`` instances, for the calling thread's model (a CasADi Function

@@ -33,6 +33,7 @@ from ...analyses.equilibrium import (
 from .common import add_manipulator_options, run_command
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser
+
 __all__ = ["main", "build_parser", "add_manipulator_options", "SERVICE_COMMANDS"]
 
 #: The service's commands (``service.cli``): named here only to point a caller of this module there.
