@@ -25,12 +25,9 @@ from .analyses.design import (
                      maximize_critical_force,
                      preloads_for_critical_force,
 )
-from .analyses.equilibrium import (
-                     Equilibrium,
-                     solve_equilibrium,
-                     solve_equilibrium_under_force,
-)
+from .analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
 from .analyses.landscape import Landscape, energy_landscape
+from .analyses.least_energy import solve_equilibrium
 from .analyses.stiffness import cartesian_stiffness
 from .applications.sweeps import SweepResult, sweep
 from .errors import (

@@ -22,11 +22,10 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import reference_model as ref
 
 import tensegrity_opt as to
 from tensegrity_opt.numerics.homotopy import homotopy_available
-
-import reference_model as ref
 
 DATA = json.loads((Path(__file__).parent / "data" / "homotopy_oracle.json").read_text())["cases"]
 SAME = 1e-6
@@ -468,7 +467,11 @@ def test_sampled_starts_rows_are_true_equilibria():
 def test_distinct_rows_of_large_samples_match_the_pairwise_test():
     """The bisected comparison used beyond 64 rows keeps exactly the rows distinct_rows keeps (the
     k x k pairwise test), also where near-coincident rows chain (noise ~ SAME_Q / 2)."""
-    from tensegrity_opt.analyses.equilibrium import SAME_Q, _distinct_indices, distinct_rows
+    from tensegrity_opt.analyses.least_energy import (
+        SAME_Q,
+        _distinct_indices,
+        distinct_rows,
+    )
 
     rng = np.random.default_rng(0)
     base = rng.uniform(-1, 1, (100, 5))

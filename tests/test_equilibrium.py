@@ -5,9 +5,16 @@ import threading
 import numpy as np
 import pytest
 
-from tensegrity_opt import (InvalidParameterError, Manipulator, NoEquilibriumError, Segment,
-                            UnreachableTargetError, critical_force, solve_equilibrium,
-                            solve_equilibrium_under_force)
+from tensegrity_opt import (
+    InvalidParameterError,
+    Manipulator,
+    NoEquilibriumError,
+    Segment,
+    UnreachableTargetError,
+    critical_force,
+    solve_equilibrium,
+    solve_equilibrium_under_force,
+)
 from tensegrity_opt.analyses.landscape import complete_configuration
 
 PAPER = Manipulator.uniform(4)
@@ -205,7 +212,7 @@ def test_least_energy_search_keeps_what_the_full_search_would_pick(m):
     """search_stable(least=True) classifies in order of energy and stops after the least stable energy;
     what it returns is exactly the full search's stable set cut to the ties of its least energy
     (the same objects' numbers, in the same order), and the unstable count is never larger."""
-    from tensegrity_opt.analyses.equilibrium import search_stable
+    from tensegrity_opt.analyses.least_energy import search_stable
     from tensegrity_opt.analyses.seeds import seed_starts
 
     L = m.straight_length

@@ -1,7 +1,8 @@
 """The analyses: what a chain does, built on :mod:`tensegrity_opt.model` and
 :mod:`tensegrity_opt.numerics`.
 
-* :mod:`.equilibrium` - one equilibrium: the least-energy stable one for a tip target, or under a tip force;
+* :mod:`.equilibrium` - one equilibrium: the result type, local solves, the equilibrium under a tip force;
+* :mod:`.least_energy` - the least-energy stable equilibrium for a tip target (the global search);
 * :mod:`.all_equilibria` - every equilibrium for a tip target (search, or the certified homotopy);
 * :mod:`.stability` - classification by the reduced Hessian's inertia (Morse index);
 * :mod:`.buckling` - the straight chain's critical loads and modes (the paper's eigenproblem);

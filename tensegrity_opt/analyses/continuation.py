@@ -66,8 +66,8 @@ from .equilibrium import (
     is_equilibrium,
     local_equilibrium,
     make_equilibrium,
-    solve_equilibrium,
 )
+from .least_energy import solve_equilibrium
 from .stability import classify_batch, classify_reduced
 
 __all__ = ["solve_equilibria_batch", "continuation_prefix", "Prefix", "Tracker", "BranchPoints", "follow"]

@@ -49,13 +49,8 @@ from ..timelimit import check_time
 from .all_equilibria import find_equilibria
 from .buckling import critical_force
 from .continuation import BranchPoints, follow
-from .equilibrium import (
-    WELLS_MAX,
-    Equilibrium,
-    search_stable,
-    solve_equilibrium,
-    straight_equilibrium,
-)
+from .equilibrium import Equilibrium, straight_equilibrium
+from .least_energy import WELLS_MAX, search_stable, solve_equilibrium
 from .seeds import seed_starts, well_seeds
 
 __all__ = ["Curve", "Jump", "force_deflection"]

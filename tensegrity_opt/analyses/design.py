@@ -31,7 +31,8 @@ from ..numerics import RANGE_SHRINK, chain_solver
 from ..serialize import nullable, number, numbers
 from ..timelimit import time_limit as _time_limit
 from .buckling import critical_force, straight_matrices
-from .equilibrium import Equilibrium, solve_equilibrium, solve_equilibrium_under_force
+from .equilibrium import Equilibrium, solve_equilibrium_under_force
+from .least_energy import solve_equilibrium
 
 __all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
            "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES",
