@@ -25,11 +25,8 @@ from ... import __version__
 from ...analyses.all_equilibria import find_equilibria
 from ...analyses.buckling import critical_force
 from ...analyses.curves import force_deflection
-from ...analyses.equilibrium import (
-    Equilibrium,
-    solve_equilibrium,
-    solve_equilibrium_under_force,
-)
+from ...analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
+from ...analyses.least_energy import solve_equilibrium
 from .common import add_manipulator_options, run_command
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser

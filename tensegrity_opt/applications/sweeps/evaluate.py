@@ -17,7 +17,8 @@ import numpy as np
 from ...analyses.all_equilibria import find_equilibria
 from ...analyses.buckling import critical_force
 from ...analyses.design import maximize_critical_force
-from ...analyses.equilibrium import solve_equilibrium, solve_equilibrium_under_force
+from ...analyses.equilibrium import solve_equilibrium_under_force
+from ...analyses.least_energy import solve_equilibrium
 from ...analyses.stiffness import cartesian_stiffness
 from ...errors import TensegrityError
 from ...model.manipulator import Manipulator
