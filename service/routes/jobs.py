@@ -22,7 +22,6 @@ from starlette.responses import StreamingResponse
 from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.applications.sweeps import write_csv
 
-from .. import job_schemas as js
 from ..config import Settings
 from ..deps import get_settings_dep
 from ..errors import ServiceError
@@ -30,6 +29,7 @@ from ..examples import ERRORS
 from ..jobs import JobFinished, JobNotFound, JobRunner, owner_hash, summary
 from ..responses import render_json_bounded
 from ..schemas import ErrorOut
+from ..schemas import jobs as js
 
 router = APIRouter(prefix="/v1/jobs", tags=["jobs"])
 log = logging.getLogger("service.jobs")

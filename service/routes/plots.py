@@ -17,11 +17,11 @@ from fastapi import APIRouter, Body, Depends, Request
 from starlette.responses import Response
 
 from .. import examples as ex
-from .. import plot_schemas as ps
 from ..compute import build_manipulator, build_segment, deflections
 from ..config import Settings
 from ..deps import check_manipulator, get_settings_dep, is_heavy, solve
 from ..errors import FieldContext
+from ..schemas import plots as ps
 from . import SOLVE_ERRORS, error_responses
 
 __all__ = ["router", "negotiate", "plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task",

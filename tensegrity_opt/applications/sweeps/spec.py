@@ -1,7 +1,7 @@
 """What a sweep spec may say, and its validation: one analysis, a uniform base chain, a grid or
 a list of points, options; the parameters each analysis uses and the columns of its rows.
 
-This is the one place of the rules. The service's ``service/job_schemas.JobSpec`` repeats the
+This is the one place of the rules. The service's ``service/schemas/jobs.JobSpec`` repeats the
 type and range checks (for its OpenAPI document and early 422 answers, plus its own size caps)
 and hands the spec here; what depends on the analysis (which parameters and options it uses,
 a deflection and a tip force never together) is checked only here.

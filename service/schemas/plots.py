@@ -11,7 +11,7 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
-from . import schemas as s
+from . import common as s
 
 #: Most points per axis of a critical-load map (each point is one eigen-solve).
 MAX_MAP_AXIS = 41

@@ -14,11 +14,11 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, PrivateAttr, model_validator
 
-from .config import HARD_MAX_SEGMENTS
-from .schemas import Deflection, ForceValue, Length, Stiff, integral
+from ..config import HARD_MAX_SEGMENTS
+from .common import Deflection, ForceValue, Length, Stiff, integral
 
 __all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "JobCreated", "JobSummary", "JobOut", "JobResults",
-           "JobStatus", "SPEC_EXAMPLES", "JOB_EXAMPLE", "RESULTS_EXAMPLE", "CSV_EXAMPLE"]
+           "JobList", "JobStatus", "SPEC_EXAMPLES", "JOB_EXAMPLE", "RESULTS_EXAMPLE", "CSV_EXAMPLE"]
 
 #: Schema caps (the server's ``TENSEGRITY_JOBS_MAX_POINTS`` can only be tighter).
 HARD_MAX_JOB_POINTS = 100_000

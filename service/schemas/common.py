@@ -1,0 +1,195 @@
+"""What every resource's models share: the input bounds, the strict integer and the bounded number types, the
+chain and segment inputs, ranges, the tip force, the solver report and the error body.
+
+Imports nothing from its sibling modules (they all import it).
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Union
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
+
+from ..config import HARD_MAX_SEGMENTS
+
+# ---------------------------------------------------------------------------- limits
+#: Range of the lengths (a, b, L0) and spring stiffnesses accepted (caller's units). Values far
+#: outside any physical design (e.g. subnormal numbers) only make the model underflow.
+MIN_LENGTH = 1.0e-6
+MAX_LENGTH = 1.0e6
+MIN_STIFFNESS = 1.0e-6
+MAX_STIFFNESS = 1.0e9
+#: Largest |dx|, |dy| (length units) and |force| accepted.
+MAX_DEFLECTION = 1.0e9
+MAX_FORCE = 1.0e12
+#: Joint angles in requests (rad): q0 and the torque-curve abscissae.
+MAX_ANGLE = 6.283185307179586
+#: Points of a force-deflection curve.
+MAX_CURVE_POINTS = 501
+#: Points per axis of an energy landscape.
+MAX_GRID = 201
+#: Abscissae of a segment torque curve.
+MAX_TORQUE_POINTS = 10001
+
+
+_STRICT = ConfigDict(strict=True, extra="forbid")
+
+
+def integral(v: Any) -> Any:
+    """A float with an integral value (``4.0``, ``5e2``) as the ``int`` it is: JSON Schema's ``integer``
+    is any number with a zero fractional part, so ``"n": 4.0`` is valid by the document. Anything
+    else goes on unchanged to the strict ``int`` check (``4.5``, ``"4"``, ``true`` are refused)."""
+    if type(v) is float and v.is_integer():
+        return int(v)
+    return v
+
+
+#: The request schema's integer: strict (no strings, no booleans) but integral floats accepted.
+#: As a field's type with ``= Field(ge=..)``; inside ``Annotated`` put the ``Field`` *before* the
+#: validator (``Annotated[int, Field(ge=0), BeforeValidator(integral)]``): after it, pydantic writes
+#: ``ge``/``le`` into the JSON schema instead of ``minimum``/``maximum``.
+Int = Annotated[int, BeforeValidator(integral)]
+
+Length = Annotated[float, Field(ge=MIN_LENGTH, le=MAX_LENGTH, allow_inf_nan=False)]
+Stiff = Annotated[float, Field(ge=MIN_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan=False)]
+Deflection = Annotated[float, Field(ge=-MAX_DEFLECTION, le=MAX_DEFLECTION, allow_inf_nan=False)]
+ForceValue = Annotated[float, Field(ge=-MAX_FORCE, le=MAX_FORCE, allow_inf_nan=False)]
+Angle = Annotated[float, Field(ge=-MAX_ANGLE, le=MAX_ANGLE, allow_inf_nan=False)]
+
+
+def _number_or_pair(v: Any) -> str:
+    return "<pair>" if isinstance(v, (list, tuple)) else "<number>"
+
+
+def _pair_of(item: Any, what: str) -> Any:
+    return Annotated[
+        Union[
+            Annotated[item, Tag("<number>")],
+            Annotated[list[item], Field(min_length=2, max_length=2), Tag("<pair>")],
+        ],
+        Discriminator(_number_or_pair),
+        Field(description=f"{what}: one number for both springs or the pair [spring 1, spring 2]"),
+    ]
+
+
+StiffPair = _pair_of(Stiff, "spring stiffness k (force / length)")
+LengthPair = _pair_of(Length, "spring rest length L0 (length units)")
+
+
+# ---------------------------------------------------------------------------- manipulator
+class SegmentIn(BaseModel):
+    """One dual-triangle segment."""
+
+    model_config = ConfigDict(strict=True, extra="forbid",
+                              json_schema_extra={"examples": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0},
+                                                              {"a": 1.0, "b": 1.0, "k": [1.0, 2.0], "L0": 1.0}]})
+
+    a: Length = Field(description="triangle half-height (length units)")
+    b: Length = Field(description="triangle half-length (length units); the segment is 2b long")
+    k: StiffPair = 1.0
+    L0: LengthPair = 1.0
+
+
+class UniformManipulatorIn(BaseModel):
+    """`n` identical segments."""
+
+    model_config = ConfigDict(strict=True, extra="forbid",
+                              json_schema_extra={"examples": [{"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]})
+
+    n: Int = Field(ge=1, le=HARD_MAX_SEGMENTS, description=f"number of segments (server limit "
+                                                         f"TENSEGRITY_MAX_SEGMENTS, at most {HARD_MAX_SEGMENTS})")
+    a: Length = Field(1.0, description="triangle half-height (length units)")
+    b: Length = Field(1.0, description="triangle half-length (length units)")
+    k: StiffPair = 1.0
+    L0: LengthPair = 1.0
+
+
+class SegmentedManipulatorIn(BaseModel):
+    """Segments listed from base to tip; they may differ in every parameter."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}] * 4}]})
+
+    segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
+                                      description="segments from base to tip (server limit TENSEGRITY_MAX_SEGMENTS)")
+
+
+def _manipulator_kind(v: Any) -> str:
+    if isinstance(v, SegmentedManipulatorIn) or (isinstance(v, dict) and "segments" in v):
+        return "<segments>"
+    return "<uniform>"
+
+
+def _manipulator_union(uniform: type, segmented: type, what: str) -> Any:
+    """The request's chain: the uniform or the segmented form, told apart by ``segments``."""
+    return Annotated[
+        Union[Annotated[uniform, Tag("<uniform>")], Annotated[segmented, Tag("<segments>")]],
+        Discriminator(_manipulator_kind),
+        Field(description=f'{what}: {{"n", "a", "b", "k", "L0"}} (uniform) or {{"segments": [...]}}'),
+    ]
+
+
+ManipulatorIn = _manipulator_union(UniformManipulatorIn, SegmentedManipulatorIn, "the chain")
+
+
+PAPER_CHAIN = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+
+
+# ---------------------------------------------------------------------------- ranges
+class RangeIn(BaseModel):
+    """`num` evenly spaced values from `start` to `stop` inclusive (like `numpy.linspace`)."""
+
+    model_config = _STRICT
+
+    start: float = Field(allow_inf_nan=False)
+    stop: float = Field(allow_inf_nan=False)
+    num: Int = Field(ge=1)
+
+
+def _list_or_range(v: Any) -> str:
+    return "<range>" if isinstance(v, (dict, RangeIn)) else "<list>"
+
+
+class DeflectionRange(RangeIn):
+    start: Deflection
+    stop: Deflection
+    num: Int = Field(ge=1, le=MAX_CURVE_POINTS, description=f"number of points (at most {MAX_CURVE_POINTS})")
+
+
+class AngleRange(RangeIn):
+    start: Angle
+    stop: Angle
+    num: Int = Field(ge=1, le=MAX_TORQUE_POINTS, description=f"number of points (at most {MAX_TORQUE_POINTS})")
+
+
+# ---------------------------------------------------------------------------- shared answers
+class Force(BaseModel):
+    fx: float = Field(description="tip force along x (force units)")
+    fy: float = Field(description="tip force along y (force units)")
+
+
+class SolverInfo(BaseModel):
+    status: str = Field(description="the solver's return status (IPOPT return_status, Newton status, or 'straight')")
+    iterations: int
+
+
+# ---------------------------------------------------------------------------- errors
+class FieldError(BaseModel):
+    field: str = Field(description="dotted path of the offending input, e.g. manipulator.segments[0].a")
+    message: str
+    type: str
+
+
+class ErrorOut(BaseModel):
+    """Every refusal has this shape."""
+
+    code: str = Field(description="machine-readable reason, e.g. validation_error, unreachable_target, "
+                                  "straight_not_equilibrium, straight_unstable, too_many_segments, "
+                                  "solver_failed, no_equilibrium, timeout, overloaded, body_too_large, "
+                                  "unauthorized")
+    message: str = Field(description="human-readable explanation")
+    field: str | None = Field(None, description="the input to blame, when there is one")
+    status: str | None = Field(None, description="solver return status(es), for solver failures")
+    errors: list[FieldError] | None = Field(None, description="every schema violation (validation_error only)")
+    details: dict[str, Any] | None = Field(None, description="extra numbers (e.g. distance and reach)")
+    best: dict[str, Any] | None = Field(None, description="design_infeasible only: the best point IPOPT found")

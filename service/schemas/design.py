@@ -1,0 +1,131 @@
+"""Models of the design and control endpoints (``/v1/design/...``): the design chain inputs (at most 60
+segments), the requests and the designed chain out."""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, Field
+
+from .common import (_STRICT, MAX_LENGTH, MAX_STIFFNESS, Angle, Deflection, ForceValue, Int, SegmentedManipulatorIn,
+                     SegmentIn, SolverInfo, UniformManipulatorIn, _manipulator_union)
+
+# ---------------------------------------------------------------------------- the design chain
+#: Chains accepted by the design endpoints (their NLPs carry a dense n x n Cholesky factor).
+MAX_DESIGN_SEGMENTS = 60
+
+
+class DesignUniformManipulatorIn(UniformManipulatorIn):
+    """`n` identical segments (design endpoints: at most 60)."""
+
+    n: Int = Field(ge=1, le=MAX_DESIGN_SEGMENTS, description=f"number of segments (at most {MAX_DESIGN_SEGMENTS} "
+                                                             "for the design endpoints)")
+
+
+class DesignSegmentedManipulatorIn(SegmentedManipulatorIn):
+    """Segments listed from base to tip (design endpoints: at most 60)."""
+
+    segments: list[SegmentIn] = Field(min_length=1, max_length=MAX_DESIGN_SEGMENTS,
+                                      description=f"segments from base to tip (at most {MAX_DESIGN_SEGMENTS})")
+
+
+DesignManipulatorIn = _manipulator_union(DesignUniformManipulatorIn, DesignSegmentedManipulatorIn,
+                                         "the chain (at most 60 segments)")
+
+
+# ---------------------------------------------------------------------------- requests
+DesignVar = Literal["a", "b", "k", "L0"]
+Positive = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
+
+
+class BoundsIn(BaseModel):
+    model_config = _STRICT
+    lo: Positive = Field(description="lower bound (same for every segment)")
+    hi: Positive = Field(description="upper bound")
+
+
+class DesignCriticalForceRequest(BaseModel):
+    """Maximise the critical load over per-segment design variables."""
+
+    model_config = _STRICT
+    manipulator: DesignManipulatorIn
+    vary: list[DesignVar] = Field(["k"], min_length=1, max_length=4, description="per-segment variables to optimise")
+    bounds: dict[DesignVar, BoundsIn] = Field(default_factory=dict,
+                                              description="bounds per variable; default (x0 / 10, 10 x0)")
+    budget: dict[DesignVar, Positive] = Field(default_factory=dict, description="cap on the sum over the segments")
+    boundary: Literal["guided", "free"] = "guided"
+    total_length: Annotated[float, Field(gt=0, le=MAX_LENGTH, allow_inf_nan=False)] | bool | None = Field(
+        None, description="fix 2 sum(b): a length, or true to keep the initial one")
+    tension: BoundsIn | None = Field(None, description="bounds on the preload tension k (2b - L0) at straight")
+    K_min: Annotated[float, Field(ge=-MAX_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan=False)] | None = Field(
+        None, description="lower bound on every joint stiffness K_i")
+
+
+class PreloadsForLoadRequest(BaseModel):
+    """The smallest change of the rest lengths L0 making the critical load at least `required`."""
+
+    model_config = _STRICT
+    manipulator: DesignManipulatorIn
+    required: Positive = Field(description="required critical compressive load (force units)")
+    boundary: Literal["guided", "free"] = "guided"
+    bounds: BoundsIn | None = Field(None, description="bounds on every L0; default (0.05 * 2b, 2b)")
+
+
+class Point(BaseModel):
+    model_config = _STRICT
+    x: Deflection
+    y: Deflection
+
+
+class LoadIn(BaseModel):
+    model_config = _STRICT
+    fx: ForceValue = 0.0
+    fy: ForceValue = 0.0
+
+
+class PreloadsRequest(BaseModel):
+    """Rest lengths putting the tip at a target, stably, under a tip load."""
+
+    model_config = _STRICT
+    manipulator: DesignManipulatorIn
+    target: Point = Field(description="tip position (length units)")
+    load: LoadIn = Field(default_factory=lambda: LoadIn(), description="tip force (dead load)")
+    objective: Literal["nominal", "margin", "energy"] = "nominal"
+    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
+        1e-3, description="required smallest eigenvalue of the joint-space Hessian (torque / rad)")
+    taut: bool = Field(False, description="keep every spring in tension (L >= L0)")
+    bounds: BoundsIn | None = Field(None, description="bounds on every rest length; default (0.1 b_min, 4 b_max)")
+    end_angle: Angle | None = Field(None, description="absolute angle of the last link (rad), optional")
+
+
+# ---------------------------------------------------------------------------- responses
+class SegmentOut(BaseModel):
+    a: float
+    b: float
+    k: float | list[float]
+    L0: float | list[float]
+
+
+class ManipulatorOut(BaseModel):
+    segments: list[SegmentOut]
+
+
+class DesignOut(BaseModel):
+    manipulator: ManipulatorOut
+    critical_force: float = Field(description="signed critical force, recomputed by critical_force on the design")
+    loads: list[float] = Field(description="all critical loads of the design, ascending (recomputed)")
+    multiplicity: int = Field(description="how many critical loads coincide with the smallest")
+    active: list[str] = Field(description="active constraints at the optimum")
+    initial_critical_force: float | None = Field(description="the starting design's critical force")
+    feasible: bool = Field(description="preloads-for-load: whether the required load is reached")
+    solver: SolverInfo
+
+
+class PreloadsOut(BaseModel):
+    manipulator: ManipulatorOut
+    preloads: list[list[float]] = Field(description="rest lengths [L1_0, L2_0] per segment")
+    q: list[float] = Field(description="verified equilibrium configuration (rad)")
+    margin: float = Field(description="achieved stability margin (recomputed)")
+    tip: list[float]
+    energy: float
+    solver: SolverInfo

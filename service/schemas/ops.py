@@ -1,0 +1,55 @@
+"""Models of the operational endpoints: ``/healthz``, ``/readyz``, ``/version`` (its limits and kernels)."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, Field
+
+
+class Health(BaseModel):
+    status: Literal["ok"]
+
+
+class Ready(BaseModel):
+    status: Literal["ready", "starting"]
+    workers: int
+    queue_size: int
+    in_flight: int
+
+
+class Limits(BaseModel):
+    max_segments: int
+    max_batch: int
+    solve_timeout: float
+    batch_timeout: float
+    workers: int
+    queue_size: int
+    inline_max_segments: int
+    inline_processes: int = Field(description="solver processes running the short chains' bounded search "
+                                              "(service.lane); 0: the solver threads run it")
+    max_body_bytes: int
+    max_response_bytes: int = Field(description="largest JSON answer (422 response_too_large above)")
+    max_curve_points: int
+    max_grid: int
+    max_torque_points: int
+
+
+class KernelsOut(BaseModel):
+    """How the compiled Newton kernels run in this server process (`tensegrity_opt.numerics.kernels`)."""
+
+    compiler: str | None = Field(description="the C compiler used; null: none (kernels run in CasADi's VM)")
+    max_segments: int = Field(description="chains up to this long have kernels")
+    compiled: list[int] = Field(description="chain lengths loaded as compiled code so far")
+    virtual_machine: list[int] = Field(description="chain lengths running in CasADi's virtual machine "
+                                                   "(no compiler, or compiling failed: about 4x slower)")
+
+
+class VersionOut(BaseModel):
+    service: str
+    version: str
+    library_version: str
+    api: str
+    auth: bool
+    limits: Limits
+    kernels: KernelsOut
