@@ -7,14 +7,14 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted ``list`` of
     The KKT system ``grad E(q) = J(q)^T F``, ``tip(q) = target`` (n + 2 equations in ``q, F``) is
     solved by damped Newton (CasADi residual and exact Jacobian) from many seeds: every buckling
     mode with both signs at several amplitudes, random starts, the wells of bistable segments
-    (:func:`tensegrity_opt.seeds.well_seeds`), uniform random configurations projected onto the tip
+    (:func:`tensegrity_opt.analyses.seeds.well_seeds`), uniform random configurations projected onto the tip
     constraint, mirror images, and IPOPT's minima. Complete *in practice* for n <= 5: measured against
     the homotopy on 104 random multistable chains (``tests/test_completeness.py``); for n >= 6 against
     an independent brute force (``benchmarks/search_check.py``), where it misses some; never certified
     (``certified=False``).
 ``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
     Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
-    (:mod:`tensegrity_opt.homotopy`); the real roots inside the physical range, polished by Newton.
+    (:mod:`tensegrity_opt.numerics.homotopy`); the real roots inside the physical range, polished by Newton.
     ``certified=True`` when every path ended and every real root polished.
 
 Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest

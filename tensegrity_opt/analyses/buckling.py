@@ -69,7 +69,7 @@ class Mode:
     fy_coefficient : float
         Eq. 26: ``Fy ~ fy_coefficient * sqrt(dx)`` on the branch ``t > 0`` (force / sqrt(length)).
     shape, signs : str
-        Label and sign string (:mod:`tensegrity_opt.shapes`).
+        Label and sign string (:mod:`tensegrity_opt.model.shapes`).
     stable : bool
         The branch born from this mode is stable under displacement control (only the
         lowest mode: branch ``m`` has Morse index ``m - 1`` near the straight configuration).

@@ -1,7 +1,7 @@
 """Design and control: the strongest chain, preloads for a pose or a load, sensitivities.
 
 Every problem is a CasADi NLP solved by IPOPT with exact derivatives
-(:mod:`.design_solvers`); every result is verified by an independent forward computation
+(:mod:`tensegrity_opt.numerics.design_nlp`); every result is verified by an independent forward computation
 (:func:`critical_force` or :func:`solve_equilibrium_under_force`) before it is returned.
 Formulations and worked examples: ``docs/design.md``.
 """

@@ -84,12 +84,12 @@ class Equilibrium:
 
     @cached_property
     def shape(self) -> str:
-        """Shape label of ``q`` (:func:`tensegrity_opt.shapes.shape_label`)."""
+        """Shape label of ``q`` (:func:`tensegrity_opt.model.shapes.shape_label`)."""
         return shape_label(self.q)
 
     @cached_property
     def signs(self) -> str:
-        """Sign string of ``q`` (:func:`tensegrity_opt.shapes.sign_string`)."""
+        """Sign string of ``q`` (:func:`tensegrity_opt.model.shapes.sign_string`)."""
         return sign_string(self.q)
 
     @property

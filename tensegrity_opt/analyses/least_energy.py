@@ -87,7 +87,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     n_random, max_modes : int, optional
         Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
         for chains of up to 64 segments, plus the two arc seeds of large deflections
-        (:func:`tensegrity_opt.seeds.arc_seeds`); 0 and 2 (no arcs) for longer ones, whose
+        (:func:`tensegrity_opt.analyses.seeds.arc_seeds`); 0 and 2 (no arcs) for longer ones, whose
         least-energy equilibria lie on the lowest modes' branches (each seed costs O(n) per iteration).
 
     Returns

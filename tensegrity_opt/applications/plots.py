@@ -3,7 +3,7 @@
 Every ``plot_*`` function computes its data with the library and returns a
 :class:`matplotlib.figure.Figure` on an Agg canvas; :func:`save` writes it as PNG or SVG
 (from the file suffix) and :func:`render` returns the bytes. Matplotlib is imported
-lazily: ``import tensegrity_opt`` (and even ``import tensegrity_opt.plots`` with
+lazily: ``import tensegrity_opt`` (and even ``import tensegrity_opt.applications.plots`` with
 :func:`chain_geometry`) works without it. No function touches ``pyplot`` or the global
 ``rcParams``, so figures may be drawn from several threads at once (one figure per thread).
 
@@ -82,7 +82,7 @@ def _new_figure(figsize: tuple[float, float]) -> Any:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
     except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("tensegrity_opt.plots needs matplotlib: python3 -m pip install matplotlib") from exc
+        raise ImportError("tensegrity_opt.applications.plots needs matplotlib: python3 -m pip install matplotlib") from exc
     fig = Figure(figsize=figsize, layout="constrained")
     FigureCanvasAgg(fig)
     return fig
