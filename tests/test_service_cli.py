@@ -78,45 +78,15 @@ def test_the_service_packages_are_an_extra():
     assert project["scripts"]["tensegrity-opt"] == "service.cli:main"
 
 
-def _service_imports() -> dict[str, set[str]]:
-    """Every import statement (module level or inside a function) between the service's modules."""
-    import ast
+def test_nothing_but_the_entry_points_imports_service_main():
+    """``service.main`` wires everything; only the entry point imports it (no cycle through it: the
+    whole project's import graph is checked for cycles in ``tests/test_architecture.py``)."""
+    import grimp
 
-    mods = {}
-    for p in (ROOT / "service").rglob("*.py"):
-        parts = list(p.relative_to(ROOT).with_suffix("").parts)
-        is_pkg = parts[-1] == "__init__"
-        parts = parts[:-1] if is_pkg else parts
-        mods[".".join(parts)] = (p, ".".join(parts if is_pkg else parts[:-1]))
-    edges: dict[str, set[str]] = {m: set() for m in mods}
-    for m, (p, pkg) in mods.items():
-        for node in ast.walk(ast.parse(p.read_text(encoding="utf-8"))):
-            if isinstance(node, ast.ImportFrom):
-                base = pkg.split(".")[:len(pkg.split(".")) - node.level + 1] if node.level else []
-                target = ".".join(base + ([node.module] if node.module else []))
-                names = [target, *(f"{target}.{a.name}" for a in node.names)]
-            elif isinstance(node, ast.Import):
-                names = [a.name for a in node.names]
-            else:
-                continue
-            edges[m] |= {n for n in names if n in mods and n != m}
-    return edges
-
-
-def test_no_import_cycle_among_the_service_modules():
-    edges = _service_imports()
-
-    def reaches(start: str, goal: str) -> bool:
-        seen, todo = set(), [start]
-        while todo:
-            v = todo.pop()
-            if v == goal:
-                return True
-            if v not in seen:
-                seen.add(v)
-                todo.extend(edges[v])
-        return False
-
-    cycles = sorted((a, b) for a in edges for b in edges[a] if reaches(b, a))
-    assert cycles == []
-    assert {m for m in edges if "service.main" in edges[m]} <= {"service.cli"}   # nothing else imports main
+    sys.path.insert(0, str(ROOT))
+    try:
+        graph = grimp.build_graph("service", "tensegrity_opt", cache_dir=None)
+    finally:
+        sys.path.remove(str(ROOT))
+    importers = graph.find_modules_that_directly_import("service.main")
+    assert importers == {"service.cli"}
