@@ -3,6 +3,7 @@
 import json
 import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -70,3 +71,43 @@ def test_vectorised_shape_labels_equal_the_row_by_row_labels():
     Q[5] = [0.0, 0.0, 1e-9, 0.0, 2.0, -1.0, 0.0]          # a tiny angle counts as zero
     assert shape_labels(Q) == [shape_label(q) for q in Q]
     assert shape_labels(np.zeros((0, 4))) == []
+
+
+# ---------------------------------------------------------------------------- usage errors, help, pipes
+@pytest.mark.parametrize("argv", [["curve", "--num", "-1"], ["curve", "--num", "0"], ["equilibrium", "--dx", "nan"],
+                                  ["buckling", "--n", "0"], ["plot", "curve", "--num", "-3", "-o", "x.png"]])
+def test_a_bad_option_is_one_usage_line_and_exit_2(argv, capsys):
+    """A count must be >= 1 and a number finite: argparse's usage error, never a traceback (was a
+    numpy ValueError traceback for --num -1)."""
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and err.strip().splitlines()[-1].startswith("tensegrity-opt")
+    assert "expected" in err.strip().splitlines()[-1]
+
+
+def test_every_option_of_the_analysis_commands_has_help_and_its_default(capsys):
+    import argparse
+
+    from tensegrity_opt.applications.cli import build_parser
+
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    for cmd in ("buckling", "equilibrium", "equilibria", "curve"):
+        opts = [a for a in sub.choices[cmd]._actions if a.option_strings and a.dest != "help"]
+        assert opts, cmd
+        assert [a.dest for a in opts if not a.help] == [], cmd        # every option says what it is
+        with pytest.raises(SystemExit):
+            main([cmd, "--help"])
+        out = capsys.readouterr().out
+        assert "(default: 0" in out or "(default: guided)" in out, cmd    # and its default
+
+
+def test_a_closed_pipe_is_not_an_error():
+    """``tensegrity-opt buckling | head -1``: the reader leaves early; no BrokenPipeError traceback."""
+    p = subprocess.Popen([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=str(Path(__file__).resolve().parents[1]))
+    p.stdout.close()                      # nobody reads: the first write fails with EPIPE
+    err = p.stderr.read().decode()
+    assert p.wait(timeout=120) == 0
+    assert "Traceback" not in err and "BrokenPipe" not in err

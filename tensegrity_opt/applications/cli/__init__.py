@@ -27,7 +27,7 @@ from ...analyses.buckling import critical_force
 from ...analyses.curves import force_deflection
 from ...analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
 from ...analyses.least_energy import solve_equilibrium
-from .common import add_manipulator_options, run_command
+from .common import HELP_FORMAT, add_manipulator_options, finite_float, positive_int, run_command
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser
 
@@ -108,34 +108,38 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
         add_manipulator_options(sp)
         sp.add_argument("--json", action="store_true", help="print JSON instead of a table")
 
-    sp = sub.add_parser("buckling", help="critical force and buckling modes (the paper's Table 1)")
+    sp = sub.add_parser("buckling", formatter_class=HELP_FORMAT, help="critical force and buckling modes (the paper's Table 1)")
     common(sp)
-    sp.add_argument("--boundary", choices=("guided", "free"), default="guided")
+    sp.add_argument("--boundary", choices=("guided", "free"), default="guided",
+                    help="tip guided (y held, the paper's case) or free")
     sp.set_defaults(func=_cmd_buckling)
 
-    sp = sub.add_parser("equilibrium", help="least-energy stable equilibrium for a tip deflection or force")
+    sp = sub.add_parser("equilibrium", formatter_class=HELP_FORMAT, help="least-energy stable equilibrium for a tip deflection or force")
     common(sp)
-    sp.add_argument("--dx", type=float, default=0.1)
-    sp.add_argument("--dy", type=float, default=0.0)
-    sp.add_argument("--fx", type=float, default=None, help="prescribe the tip force instead")
-    sp.add_argument("--fy", type=float, default=None)
+    sp.add_argument("--dx", type=finite_float, default=0.1,
+                    help="tip deflection along the chain (length; > 0 shortens it): the tip is held at (2 sum b - dx, dy)")
+    sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
+    sp.add_argument("--fx", type=finite_float, default=None,
+                    help="prescribe the tip force instead of the deflection (force; < 0 compresses; "
+                         "0 when only --fy is given)")
+    sp.add_argument("--fy", type=finite_float, default=None, help="sideways tip force (force; 0 when only --fx is given)")
     sp.set_defaults(func=_cmd_equilibrium)
 
-    sp = sub.add_parser("equilibria", help="every equilibrium (minima, saddles, maxima) for a tip deflection")
+    sp = sub.add_parser("equilibria", formatter_class=HELP_FORMAT, help="every equilibrium (minima, saddles, maxima) for a tip deflection")
     common(sp)
-    sp.add_argument("--dx", type=float, default=0.1)
-    sp.add_argument("--dy", type=float, default=0.0)
+    sp.add_argument("--dx", type=finite_float, default=0.1, help="tip deflection along the chain (length)")
+    sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
     sp.add_argument("--method", choices=("search", "homotopy"), default="search",
                     help="search: multi-start Newton (any n, not certified); homotopy: PHCpack, certified, "
                          "n <= 6 (default: %(default)s)")
     sp.set_defaults(func=_cmd_equilibria)
 
-    sp = sub.add_parser("curve", help="force-deflection curve along the stable branch (Fig. 6)")
+    sp = sub.add_parser("curve", formatter_class=HELP_FORMAT, help="force-deflection curve along the stable branch (Fig. 6)")
     common(sp)
-    sp.add_argument("--start", type=float, default=0.0)
-    sp.add_argument("--stop", type=float, default=1.0)
-    sp.add_argument("--num", type=int, default=11)
-    sp.add_argument("--dy", type=float, default=0.0)
+    sp.add_argument("--start", type=finite_float, default=0.0, help="first tip deflection dx (length)")
+    sp.add_argument("--stop", type=finite_float, default=1.0, help="last tip deflection dx (length)")
+    sp.add_argument("--num", type=positive_int, default=11, help="number of deflections, evenly spaced")
+    sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
     sp.set_defaults(func=_cmd_curve)
     add_plot_parser(sub)
     add_sweep_parser(sub)

@@ -9,22 +9,48 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 
 from ...errors import NonFiniteResult, TensegrityError
 from ...model.manipulator import Manipulator
 
-__all__ = ["add_manipulator_options", "run_command"]
+__all__ = ["add_manipulator_options", "run_command", "positive_int", "finite_float", "HELP_FORMAT"]
+
+#: Every command's help shows each option's default.
+HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
+
+
+def positive_int(text: str) -> int:
+    """An argparse type: an integer >= 1 (a count: points, segments, panels), else a usage error (exit 2)."""
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}") from None
+    if v < 1:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {v}")
+    return v
+
+
+def finite_float(text: str) -> float:
+    """An argparse type: a finite number, else a usage error (exit 2)."""
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number, got {text!r}") from None
+    if v != v or v in (float("inf"), float("-inf")):
+        raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
+    return v
 
 
 def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     """The manipulator options every analysis command takes (uniform chain or a JSON file)."""
     g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
-    g.add_argument("--n", type=int, default=4, help="number of segments")
-    g.add_argument("--a", type=float, default=1.0)
-    g.add_argument("--b", type=float, default=1.0)
-    g.add_argument("--k", type=float, default=1.0)
-    g.add_argument("--L0", type=float, default=1.0)
+    g.add_argument("--n", type=positive_int, default=4, help="number of identical segments")
+    g.add_argument("--a", type=finite_float, default=1.0, help="half base of a segment's triangles (length)")
+    g.add_argument("--b", type=finite_float, default=1.0, help="height of a segment's triangles (length)")
+    g.add_argument("--k", type=finite_float, default=1.0, help="spring stiffness (force / length)")
+    g.add_argument("--L0", type=finite_float, default=1.0, help="spring rest length (length)")
     g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
 
 
@@ -53,5 +79,10 @@ def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:
     except (TensegrityError, NonFiniteResult, OSError, json.JSONDecodeError, TypeError) as exc:
         print(f"tensegrity-opt: error: {exc}", file=sys.stderr)
         return 2
-    print(text)
+    try:
+        print(text)
+        sys.stdout.flush()
+    except BrokenPipeError:           # the reader went away (``| head``): not an error of the command
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
     return 0

@@ -30,7 +30,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
-from .common import add_manipulator_options, run_command
+from .common import add_manipulator_options, positive_int, run_command
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
@@ -161,7 +161,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     _common(k)
     k.add_argument("--start", type=float, default=0.0)
     k.add_argument("--stop", type=float, default=1.0)
-    k.add_argument("--num", type=int, default=41)
+    k.add_argument("--num", type=positive_int, default=41)
     k.add_argument("--dy", type=float, default=0.0)
     k.add_argument("--branch", choices=("stable", "all"), default="stable",
                    help="'all': every branch, unstable parts dashed")
@@ -173,7 +173,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     k.add_argument("--dy", type=float, default=0.0)
     k.add_argument("--pair", type=int, nargs=2, default=[0, 3], metavar=("I", "J"),
                    help="the two grid joints, 0-based (default 0 3: the paper's q1, q4)")
-    k.add_argument("--grid", type=int, default=101, help="points per axis")
+    k.add_argument("--grid", type=positive_int, default=101, help="points per axis")
     k.add_argument("--span", type=float, default=None,
                    help="half-width of the axes (rad); default: the reachable region; 0: the physical range")
     k.set_defaults(func=_cmd_landscape)
@@ -182,7 +182,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     _common(k)
     k.add_argument("--dx", type=float, default=0.1)
     k.add_argument("--dy", type=float, default=0.0)
-    k.add_argument("--max-panels", type=int, default=24, help="draw at most this many (lowest energies)")
+    k.add_argument("--max-panels", type=positive_int, default=24, help="draw at most this many (lowest energies)")
     k.set_defaults(func=_cmd_shapes)
 
     k = kinds.add_parser("torque", help="torque-angle curves M(q) of the segments (Fig. 2)")
@@ -191,7 +191,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     k.add_argument("--values", type=float, nargs="+", metavar="V", help="the values for --vary")
     k.add_argument("--qmin", type=float, default=None, help="default: the physical range")
     k.add_argument("--qmax", type=float, default=None)
-    k.add_argument("--num", type=int, default=401)
+    k.add_argument("--num", type=positive_int, default=401)
     k.set_defaults(func=_cmd_torque)
 
     k = kinds.add_parser("map", help="critical load over two design parameters (a, b, k, L0)")
