@@ -1,0 +1,114 @@
+"""The equilibrium path system ``R(z, t) = 0`` of every control, as CasADi functions (one per ``n``).
+
+An equilibrium branch in one control parameter ``t`` is the solution curve of ``n + 2`` equations in
+``z = (q, F)`` (relative joint angles and the tip force)::
+
+    R1 = grad E(q; p(t)) - J(q)^T F                                  (n: stationarity)
+    R2 = A_tip (tip(q) - tip_ref) + A_F (F - F_ref) - t c            (2: the control)
+
+with ``p(t) = p + t dp + s dp2`` (the 6n chain parameters ``a, b, k1, k2, L1_0, L2_0`` moved along
+``dp`` by the control parameter — a preload control — and along ``dp2`` by a second parameter ``s``,
+for two-parameter continuation). The two control rows say what is prescribed: ``A_tip = I`` holds the
+tip (a displacement control, ``c`` its direction), ``A_F = I`` prescribes the force (a dead load ``c``),
+one row of each is a guide or a frictionless wall (the tip held along the wall's normal, the load
+prescribed along it). The analyses (:mod:`tensegrity_opt.analyses.branches`) set these matrices;
+this module only evaluates.
+
+Functions (inputs ``x = (q, F, t, s)``, ``p``, ``dp``, ``dp2``, ``ctl`` — the 14 numbers
+``A_tip, A_F`` (row-major), ``c, tip_ref, F_ref``):
+
+* ``path(x, p, dp, dp2, ctl) -> (R, R_x, H, J, E, tip)``: the residual, its Jacobian in all of ``x``
+  (``(n + 2) x (n + 4)``: the ``t`` and ``s`` columns are ``dR/dt``, ``dR/ds``), the Hessian of the
+  potential ``E - F . tip`` in ``q``, the tip Jacobian, the elastic energy and the tip;
+* ``second(x, v, p, dp, dp2, ctl) -> (R_z v, d(R_z v)/dx, (R_zz v) v)``: directional second
+  derivatives for the extended systems (Moore-Spence fold system, the cusp test).
+
+Relative angles throughout (the joint range is a box in them); dense, so built for
+``n <= DENSE_MAX`` only. Per thread, like every CasADi function here.
+"""
+
+from __future__ import annotations
+
+import threading
+from functools import lru_cache
+
+import casadi as ca
+import numpy as np
+
+from ._fast import Fast
+from .expressions import segment_energy, tip_expression
+
+__all__ = ["PathSystem", "path_system", "CONTROL_SIZE"]
+
+#: Numbers describing a control: ``A_tip`` (4), ``A_F`` (4), ``c`` (2), ``tip_ref`` (2), ``F_ref`` (2).
+CONTROL_SIZE = 14
+
+
+@lru_cache(maxsize=None)
+def _graphs(n: int):
+    x = ca.SX.sym("x", n + 4)
+    q, F, t, s = x[:n], x[n:n + 2], x[n + 2], x[n + 3]
+    p, dp, dp2 = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n)
+    ctl = ca.SX.sym("ctl", CONTROL_SIZE)
+    pe = p + t * dp + s * dp2
+    a, b, k1, k2, L10, L20 = (pe[i * n:(i + 1) * n] for i in range(6))
+    _, _, E = segment_energy(q, a, b, k1, k2, L10, L20)
+    phi = ca.cumsum(q)
+    tip = tip_expression(phi, b)
+    J = ca.jacobian(tip, q)
+    A_tip = ca.reshape(ctl[0:4], 2, 2).T
+    A_F = ca.reshape(ctl[4:8], 2, 2).T
+    c, tip_ref, F_ref = ctl[8:10], ctl[10:12], ctl[12:14]
+    R = ca.vertcat(ca.gradient(E, q) - J.T @ F, A_tip @ (tip - tip_ref) + A_F @ (F - F_ref) - t * c)
+    Rx = ca.jacobian(R, x)
+    H = ca.hessian(E - ca.dot(F, tip), q)[0]
+    path = ca.Function("path", [x, p, dp, dp2, ctl], [R, ca.densify(Rx), ca.densify(H), ca.densify(J), E, tip])
+    v = ca.SX.sym("v", n + 2)
+    z = x[:n + 2]
+    Rzv = ca.jtimes(R, z, v)
+    second = ca.Function("second", [x, v, p, dp, dp2, ctl],
+                         [Rzv, ca.densify(ca.jacobian(Rzv, x)), ca.jtimes(Rzv, z, v)])
+    return path, second
+
+
+class PathSystem:
+    """This thread's evaluators of the path system for chains of ``n`` segments."""
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        path, second = _graphs(n)
+        self._path = Fast(path)
+        self._second = Fast(second)
+
+    def evaluate(self, x, p, dp, dp2, ctl):
+        """``(R, R_x, H, J, E, tip)`` at ``x = (q, F, t, s)`` (copies: safe to keep)."""
+        f = self._path
+        out = f(x, p, dp, dp2, ctl)
+        return (out[0].copy(), f.dense(1).copy(), f.dense(2).copy(), f.dense(3).copy(), float(out[4][0]),
+                out[5].copy())
+
+    def second(self, x, v, p, dp, dp2, ctl):
+        """``(R_z v, d(R_z v)/dx, (R_zz v) v)`` at ``x`` for the direction ``v`` in ``z = (q, F)``."""
+        f = self._second
+        out = f(x, v, p, dp, dp2, ctl)
+        return out[0].copy(), f.dense(1).copy(), out[2].copy()
+
+
+_local = threading.local()
+
+
+def path_system(n: int) -> PathSystem:
+    """This thread's :class:`PathSystem` for ``n`` segments (built once per thread and ``n``)."""
+    cache = getattr(_local, "cache", None)
+    if cache is None:
+        cache = _local.cache = {}
+    ps = cache.get(n)
+    if ps is None:
+        ps = cache[n] = PathSystem(n)
+    return ps
+
+
+def control_vector(A_tip, A_F, c, tip_ref, F_ref) -> np.ndarray:
+    """The 14 control numbers in the order the functions read them."""
+    return np.concatenate([np.asarray(A_tip, float).ravel(), np.asarray(A_F, float).ravel(),
+                           np.asarray(c, float), np.asarray(tip_ref, float), np.asarray(F_ref, float)])
