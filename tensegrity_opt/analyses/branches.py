@@ -430,13 +430,13 @@ class _Problem:
             g = float(aw @ x - b)
             if not (math.isfinite(r) and math.isfinite(g)):
                 return None, it
-            if r <= NEWTON_TOL and abs(g) <= 1e-12 * max(1.0, abs(b)) and it > 1:
+            if r <= NEWTON_TOL and abs(g) <= 1e-12 * max(1.0, abs(b)):
                 return x, it
             M = np.vstack([Rx, aw])
             try:
                 dx = np.linalg.solve(M, -np.concatenate([R, [g]]))
-            except np.linalg.LinAlgError:
-                return None, it
+            except np.linalg.LinAlgError:       # exactly at a branch point the bordered matrix is singular
+                dx = np.linalg.lstsq(M, -np.concatenate([R, [g]]), rcond=None)[0]
             x = x + dx
             step = float(np.abs(dx * self.w).max())
             if it > 4 and step > last * 0.9 and step > 1e-8:
