@@ -401,7 +401,6 @@ def _boundary(m, control, parameter, start, p_min, p_max, max_points, t_max, ste
 
 def _branch_point_curve(m, ctl, name, dp2, ev, br, p_min, p_max, max_points, t_bound):
     """Natural-parameter continuation in ``p`` of a branch point kept by symmetry (module docstring)."""
-    n = m.n
     span = p_max - p_min
     num = max(3, min(int(max_points), 41))
     out = {0.0: ev}

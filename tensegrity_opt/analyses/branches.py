@@ -52,9 +52,15 @@ __all__ = ["Control", "Branch", "BranchEvent", "trace_branch", "switch_branch", 
 EVENT_KINDS = ("fold", "branch_point", "joint_limit")
 #: How a :class:`Branch` ended.
 STATUSES = ("t_max", "t_min", "joint_limit", "max_points", "stability_loss", "event", "closed_loop",
-            "step_too_small", "time_limit", "corrector_failed")
+            "workspace_boundary", "force_bound", "step_too_small", "time_limit", "corrector_failed")
 #: Statuses of a branch traced to a regular end (``Branch.success``).
-REGULAR_ENDS = ("t_max", "t_min", "joint_limit", "max_points", "stability_loss", "event", "closed_loop")
+REGULAR_ENDS = ("t_max", "t_min", "joint_limit", "max_points", "stability_loss", "event", "closed_loop",
+                "workspace_boundary", "force_bound")
+#: The branch ends where the held tip reaches the edge of its workspace: the smallest singular value of the
+#: held rows of the tip Jacobian below this fraction of its largest (the holding force then diverges).
+SINGULAR_TIP = 1e-3
+#: ... or where ``|F|`` exceeds this many force units ``k c^2 / (2 b)``.
+FORCE_BOUND = 1e4
 
 #: A point is on a joint limit at ``|q_i| >= (1 - LIMIT_MARGIN) (pi - 2 beta_i)``: the branch ends there.
 LIMIT_MARGIN = 1e-6
@@ -853,9 +859,22 @@ def _continue(prob: _Problem, first: _Point, *, t_max, t_min, max_points, step, 
         if stop_at == "stability_loss" and any(e.stability == "lost" for e in new):
             status, message = "stability_loss", "stopped where the branch first loses stability"
             break
-        if len(pts) > 10 and float(np.linalg.norm(prob.w * b.x - X0)) < 0.5 * h and s[-1] > 10 * h:
+        Xa, Xb = prob.w * a.x, prob.w * b.x
+        seg = Xb - Xa
+        theta = min(1.0, max(0.0, float((X0 - Xa) @ seg) / max(float(seg @ seg), 1e-300)))
+        if len(pts) > 10 and s[-1] > 5 * max_step and float(np.linalg.norm(Xa + theta * seg - X0)) < 0.1 * h:
             status, message = "closed_loop", "the branch closed on its start"
             break
+        if float(np.linalg.norm(b.x[prob.n:prob.n + 2])) > FORCE_BOUND * prob.Fs:
+            status, message = "force_bound", f"|F| exceeded {FORCE_BOUND:g} force units k c^2/(2b)"
+            break
+        if prob.held_rows.shape[0] == 2:
+            sv = np.linalg.svd(prob.held_rows @ prob.m.jacobian(b.x[:prob.n]), compute_uv=False)
+            if sv[-1] < SINGULAR_TIP * sv[0]:
+                status = "workspace_boundary"
+                message = ("the held tip reached the edge of its workspace (the chain straightens, the tip Jacobian "
+                           "loses rank): the holding force grows without bound")
+                break
         h = min(max_step, h * (1.4 if iters <= 3 else 1.0 if iters <= 6 else 0.6))
     else:
         message = f"max_points = {max_points} reached"
