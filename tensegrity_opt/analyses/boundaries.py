@@ -315,7 +315,10 @@ def stability_boundary(m: Manipulator, control: Control | str = "guided", parame
         The chain at ``p = 0``.
     control : Control or str
         The one-parameter control whose branch loses stability (:class:`~.branches.Control`; default the
-        guided compression of the paper). Keywords of its constructor in ``control_kw``.
+        guided compression of the paper). Keywords of its constructor in ``control_kw``. Its references
+        stay where they are at ``p = 0`` while ``p`` moves: a guide or wall through the start's tip (``y = 0``
+        for the straight chain: the imperfection sensitivity of a column in a fixed guide), a held tip at
+        the start's position.
     parameter : str or array_like (6n,)
         ``"asymmetry"`` (``L1_0 = L0 + p``, ``L2_0 = L0 - p`` on every segment: a pre-bend), ``"L0"``
         (both rest lengths ``+ p``), ``"a"``, ``"b"``, ``"k"`` (both springs), or a direction in the

@@ -321,6 +321,12 @@ class Branch:
         return np.column_stack([self.straight_length - self.tip[:, 0], self.tip[:, 1]])
 
     @property
+    def displacement(self) -> np.ndarray:
+        """The tip's displacement from the start point, ``tip - tip[0]`` (from the rest configuration when the
+        branch starts there, the default): the deflection measured from the rest shape, not from straight."""
+        return self.tip - self.tip[:1]
+
+    @property
     def folds(self) -> list:
         return [e for e in self.events if e.kind == "fold"]
 
@@ -336,13 +342,15 @@ class Branch:
         return int(self.t.size)
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: per point ``t, q, force, tip, deflection, energy, morse_index, stable, s``;
+        """JSON form: per point ``t, q, force, tip, deflection`` (from straight), ``displacement`` (from the
+        start), ``energy, morse_index, stable, s``;
         ``events``; ``status``, ``success``, ``message``, ``control``."""
         d = {"control": self.control.to_dict(), "status": self.status, "success": self.success,
              "message": self.message, "points": int(self.t.size),
              "t": numbers(self.t), "q": [numbers(r) for r in self.q],
              "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
              "tip": [numbers(r) for r in self.tip], "deflection": [numbers(r) for r in self.deflection],
+             "displacement": [numbers(r) for r in self.displacement],
              "energy": numbers(self.energy), "morse_index": [int(v) for v in self.morse_index],
              "stable": [bool(v) for v in self.stable], "s": numbers(self.s),
              "events": [e.to_dict() for e in self.events]}
@@ -703,7 +711,7 @@ def _start_of(m: Manipulator, start, control: Control):
 
 def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *, t_max: float | None = None,
                  t_min: float | None = None, max_points: int = 1000, step: float = 0.02, max_step: float = 0.1,
-                 min_step: float = 1e-7, stop_at: str | None = None, direction: int = 1,
+                 min_step: float = 1e-7, stop_at: str | None = None, orientation: int = 1,
                  timeout: float | None = None, **control_kw) -> Branch:
     """Follow the equilibrium branch through ``start`` by pseudo-arclength continuation in ``t``.
 
@@ -727,8 +735,8 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
         Initial, largest and smallest arclength steps (scaled units, see :class:`Branch`).
     stop_at : {None, "stability_loss", "event"}
         Stop after the first event where stability is lost, or after any event.
-    direction : {1, -1}
-        Leave the start with ``t`` increasing (1) or decreasing.
+    orientation : {1, -1}
+        Leave the start with ``t`` increasing (1) or decreasing (-1).
     timeout : float, optional
         Seconds; on expiry the points so far are returned with ``status="time_limit"``.
 
@@ -749,14 +757,14 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
     if timeout is not None:
         with time_limit(timeout):
             return trace_branch(m, start, control, t_max=t_max, t_min=t_min, max_points=max_points, step=step,
-                                max_step=max_step, min_step=min_step, stop_at=stop_at, direction=direction,
+                                max_step=max_step, min_step=min_step, stop_at=stop_at, orientation=orientation,
                                 **control_kw)
     ctl = as_control(m, control, control_kw)
     if stop_at not in (None, "stability_loss", "event"):
         raise InvalidParameterError(f"stop_at must be None, 'stability_loss' or 'event', got {stop_at!r}",
                                     field="stop_at")
-    if direction not in (1, -1):
-        raise InvalidParameterError(f"direction must be 1 or -1, got {direction!r}", field="direction")
+    if orientation not in (1, -1):
+        raise InvalidParameterError(f"orientation must be 1 or -1, got {orientation!r}", field="orientation")
     if isinstance(max_points, bool) or not isinstance(max_points, (int, np.integer)) or max_points < 2:
         raise InvalidParameterError(f"max_points must be an integer >= 2, got {max_points!r}", field="max_points")
     for name, v in (("step", step), ("max_step", max_step), ("min_step", min_step)):
@@ -767,7 +775,7 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
             raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
     q0, F0 = _start_of(m, start, ctl)
     prob = _Problem(m, ctl, q0, F0)
-    first = _start_point(m, prob, float(direction))
+    first = _start_point(m, prob, float(orientation))
     return _continue(prob, first, t_max=t_max, t_min=t_min, max_points=int(max_points), step=step,
                      max_step=max_step, min_step=min_step, stop_at=stop_at)
 
@@ -965,10 +973,10 @@ def bifurcation_diagram(m: Manipulator, start=None, control: Control | str = "lo
         raise InvalidParameterError(f"depth must be an integer >= 0, got {depth!r}", field="depth")
     trace_kw = {k: kw.pop(k) for k in ("t_max", "t_min", "max_points", "step", "max_step", "min_step") if k in kw}
     with time_limit(timeout):
-        up = trace_branch(m, start, control, direction=1, **trace_kw, **kw)
+        up = trace_branch(m, start, control, orientation=1, **trace_kw, **kw)
         branches = [up]
         try:
-            branches.append(trace_branch(m, start, control, direction=-1, **trace_kw, **kw))
+            branches.append(trace_branch(m, start, control, orientation=-1, **trace_kw, **kw))
         except TensegrityError:
             pass
         seen: list[np.ndarray] = []
