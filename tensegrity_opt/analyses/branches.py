@@ -416,18 +416,29 @@ class _Problem:
         if start_F is None:
             start_F = m.force_from_torques(start_q) if k in ("displacement",) or control.held[0] else F_ref
         self.x0_guess = np.concatenate([start_q, start_F, [0.0]])
+        self._last = None
+        # the held rows scaled to torque units: the bordered Hessian's entries are then of one size
+        self.kkt_scale = m.torque_scale / self.Ls
 
     # -------------------------------------------------------------- evaluation
     def _full(self, x: np.ndarray, s: float = 0.0) -> np.ndarray:
         return np.concatenate([x, [s]])
 
+    def eval_all(self, x: np.ndarray, s: float = 0.0):
+        """``(R, R_x, H, J, E, tip)`` at ``x`` (the last evaluation is kept: the corrector's final check
+        serves the tangent and the classification of the same point)."""
+        c = self._last
+        if c is not None and s == 0.0 and np.array_equal(c[0], x):
+            return c[1]
+        out = self.ps.evaluate(self._full(x, s), self.p, self.dp, self.dp2, self.ctl)
+        if s == 0.0:
+            self._last = (x.copy(), out)
+        return out
+
     def eval(self, x: np.ndarray, s: float = 0.0):
         """``(R, R_x)`` with ``R_x`` the ``N x (N + 1)`` Jacobian in ``(z, t)``."""
-        R, Rx, *_ = self.ps.evaluate(self._full(x, s), self.p, self.dp, self.dp2, self.ctl)
-        return R, Rx[:, :self.N + 1]
-
-    def eval_all(self, x: np.ndarray, s: float = 0.0):
-        return self.ps.evaluate(self._full(x, s), self.p, self.dp, self.dp2, self.ctl)
+        out = self.eval_all(x, s)
+        return out[0], out[1][:, :self.N + 1]
 
     def residual(self, R: np.ndarray) -> float:
         return float(np.abs(R * self.rs).max())
@@ -494,21 +505,30 @@ class _Problem:
 
     # -------------------------------------------------------------- classification
     def reduced(self, x: np.ndarray, s: float = 0.0):
-        """Eigenvalues of the reduced Hessian (ascending) and the tip Jacobian, energy, tip."""
+        """Stability data at ``x``: ``(w, J, E, tip)`` with ``w`` the ascending eigenvalues of the Hessian
+        ``H`` of ``E - F . tip`` (tip free) or of the bordered matrix ``[[H, C^T], [C, 0]]`` (``C`` the held
+        rows of ``J``, scaled to torque units), whose inertia is that of the reduced Hessian ``Z^T H Z``
+        plus ``k`` negative and ``k`` positive eigenvalues (``k`` held rows): :meth:`morse` subtracts them,
+        and the reduced eigenvalue ``j`` crosses zero where ``w[k + j]`` does."""
         _, _, H, J, E, tip = self.eval_all(x, s)
-        if self.held_rows.shape[0]:
-            C = self.held_rows @ J
-            Q, _ = np.linalg.qr(C.T, mode="complete")
-            Z = Q[:, C.shape[0]:]
-            H = Z.T @ H @ Z
+        k = self.held_rows.shape[0]
+        if k:
+            C = (self.held_rows @ J) * self.kkt_scale
+            K = np.zeros((self.n + k, self.n + k))
+            K[:self.n, :self.n] = H
+            K[:self.n, self.n:] = C.T
+            K[self.n:, :self.n] = C
+            H = K
         w = np.linalg.eigvalsh(H) if H.shape[0] else np.zeros(0)
         return w, J, E, tip
 
     def morse(self, w: np.ndarray) -> tuple[int, bool]:
-        if w.size == 0:
+        """``(Morse index, stable)`` from :meth:`reduced`'s eigenvalues."""
+        k = self.held_rows.shape[0]
+        if w.size <= 2 * k:
             return 0, True
         tol = EIG_REL_TOL * max(self.m.torque_scale, float(np.abs(w).max()))
-        idx = int(np.sum(w < -tol))
+        idx = int(np.sum(w < -tol)) - k
         return idx, idx == 0 and not bool(np.any(np.abs(w) <= tol))
 
     def limit_ratio(self, x: np.ndarray) -> tuple[float, int]:
@@ -526,12 +546,13 @@ class _Point:
     stable: bool
     E: float
     tip: np.ndarray
+    J: np.ndarray
 
 
 def _point(prob: _Problem, x: np.ndarray, tau: np.ndarray) -> _Point:
-    w, _, E, tip = prob.reduced(x)
+    w, J, E, tip = prob.reduced(x)
     idx, st = prob.morse(w)
-    return _Point(x, tau, w, idx, st, E, tip)
+    return _Point(x, tau, w, idx, st, E, tip, J)
 
 
 def _start_point(m: Manipulator, prob: _Problem, sign: float) -> _Point:
@@ -571,9 +592,10 @@ def _locate_eigen(prob: _Problem, a: _Point, b: _Point, h: float, j: int) -> np.
         if y is None:
             raise _Unlocatable
         w = prob.reduced(y)[0]
-        return float(w[j]) / prob.m.torque_scale
+        return float(w[j + k]) / prob.m.torque_scale
 
-    ga, gb = float(a.w[j]) / prob.m.torque_scale, float(b.w[j]) / prob.m.torque_scale
+    k = prob.held_rows.shape[0]
+    ga, gb = float(a.w[j + k]) / prob.m.torque_scale, float(b.w[j + k]) / prob.m.torque_scale
     if ga * gb > 0:
         raise _Unlocatable
     sig = _brent(g, 0.0, h, ga, gb)
@@ -877,8 +899,10 @@ def _continue(prob: _Problem, first: _Point, *, t_max, t_min, max_points, step, 
             status, message = "force_bound", f"|F| exceeded {FORCE_BOUND:g} force units k c^2/(2b)"
             break
         if prob.held_rows.shape[0] == 2:
-            sv = np.linalg.svd(prob.held_rows @ prob.m.jacobian(b.x[:prob.n]), compute_uv=False)
-            if sv[-1] < SINGULAR_TIP * sv[0]:
+            JJ = b.J @ b.J.T                 # singular values of J: the square roots of JJ^T's eigenvalues
+            tr, det = float(JJ[0, 0] + JJ[1, 1]), float(JJ[0, 0] * JJ[1, 1] - JJ[0, 1] * JJ[1, 0])
+            big = 0.5 * tr + math.sqrt(max(0.25 * tr * tr - det, 0.0))
+            if det <= (SINGULAR_TIP ** 2) * big * big:
                 status = "workspace_boundary"
                 message = ("the held tip reached the edge of its workspace (the chain straightens, the tip Jacobian "
                            "loses rank): the holding force grows without bound")

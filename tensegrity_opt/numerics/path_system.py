@@ -24,17 +24,23 @@ Functions (inputs ``x = (q, F, t, s)``, ``p``, ``dp``, ``dp2``, ``ctl`` — the 
   derivatives for the extended systems (Moore-Spence fold system, the cusp test).
 
 Relative angles throughout (the joint range is a box in them); dense, so built for
-``n <= DENSE_MAX`` only. Per thread, like every CasADi function here.
+``n <= DENSE_MAX`` only. Per thread, like every CasADi function here. For ``n <= KERNEL_MAX`` the two
+functions are generated to C and compiled once per machine like the Newton kernels (:mod:`.kernels`:
+the same cache, compiler and ``TENSEGRITY_COMPILE=0`` switch; without a compiler they run in CasADi's
+virtual machine, about ten times slower, same results).
 """
 
 from __future__ import annotations
 
+import os
+import subprocess
 import threading
 from functools import lru_cache
 
 import casadi as ca
 import numpy as np
 
+from . import kernels as _kernels
 from ._fast import Fast
 from .expressions import segment_energy, tip_expression
 
@@ -71,12 +77,40 @@ def _graphs(n: int):
     return path, second
 
 
+_compiled: dict[int, str] = {}
+_lock = threading.Lock()
+
+
+def _functions(n: int) -> tuple[ca.Function, ca.Function, str]:
+    """This thread's ``path`` and ``second`` Functions and how they run (``"compiled"`` / ``"virtual machine"``)."""
+    if 2 <= n <= _kernels.KERNEL_MAX and os.environ.get("TENSEGRITY_COMPILE", "1") != "0":
+        with _lock:
+            lib = _compiled.get(n)
+            if lib is None:
+                path, second = _graphs(n)
+                lib = ""
+                cc = _kernels.compiler()
+                if cc is not None:
+                    try:
+                        lib = _kernels._compile_with(cc, f"tensegrity_paths_n{n}", {"path": path, "second": second})
+                    except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
+                        _kernels._warn(f"compiling the path functions with {cc} failed ({exc})")
+                _compiled[n] = lib
+        if lib:
+            try:
+                return ca.external("path", lib), ca.external("second", lib), "compiled"
+            except RuntimeError as exc:
+                _kernels._warn(f"loading {lib} failed ({exc})")
+    path, second = _graphs(n)
+    return path, second, "virtual machine"
+
+
 class PathSystem:
     """This thread's evaluators of the path system for chains of ``n`` segments."""
 
     def __init__(self, n: int) -> None:
         self.n = n
-        path, second = _graphs(n)
+        path, second, self.mode = _functions(n)
         self._path = Fast(path)
         self._second = Fast(second)
 
@@ -86,6 +120,12 @@ class PathSystem:
         out = f(x, p, dp, dp2, ctl)
         return (out[0].copy(), f.dense(1).copy(), f.dense(2).copy(), f.dense(3).copy(), float(out[4][0]),
                 out[5].copy())
+
+    def residual(self, x, p, dp, dp2, ctl):
+        """``(R, R_x)`` only (copies)."""
+        f = self._path
+        out = f(x, p, dp, dp2, ctl)
+        return out[0].copy(), f.dense(1).copy()
 
     def second(self, x, v, p, dp, dp2, ctl):
         """``(R_z v, d(R_z v)/dx, (R_zz v) v)`` at ``x`` for the direction ``v`` in ``z = (q, F)``."""
