@@ -802,6 +802,19 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
                      max_step=max_step, min_step=min_step, stop_at=stop_at)
 
 
+def _compiled_step(prob: _Problem, a: _Point, h: float, Xa: np.ndarray):
+    """The compiled predictor-corrector step (:mod:`tensegrity_opt.numerics.path_system`): ``(y, tau, iters)``
+    when it converged (its evaluation at ``y`` kept for the classification), else ``(None, None, 0)``."""
+    y, res, iters, tau, out = prob.ps.step(a.x, a.tau, h, prob.w, prob.rs, NEWTON_TOL, prob.p, prob.dp, prob.dp2,
+                                           prob.ctl)
+    b = float(a.tau @ Xa) + h
+    if not (res <= NEWTON_TOL and abs(float(a.tau @ (prob.w * y)) - b) <= 1e-10 * max(1.0, abs(b))
+            and np.all(np.isfinite(tau))):
+        return None, None, 0
+    prob._last = (y.copy(), out)
+    return y, tau, max(iters, 1)
+
+
 def _continue(prob: _Problem, first: _Point, *, t_max, t_min, max_points, step, max_step, min_step, stop_at,
               prefix: list[_Point] | None = None) -> Branch:
     pts = [first] if prefix is None else list(prefix)
@@ -819,10 +832,13 @@ def _continue(prob: _Problem, first: _Point, *, t_max, t_min, max_points, step, 
         a = pts[-1]
         Xa = prob.w * a.x
         pred = a.x + h * a.tau / prob.w
-        y, iters = prob.correct(pred, a.tau, float(a.tau @ Xa) + h)
+        y, tau, iters = _compiled_step(prob, a, h, Xa)
+        if y is None:
+            y, iters = prob.correct(pred, a.tau, float(a.tau @ Xa) + h)
+            tau = None
         ok = y is not None
         if ok:
-            tau = prob.tangent(y, a.tau)
+            tau = prob.tangent(y, a.tau) if tau is None else tau
             turn = math.acos(max(-1.0, min(1.0, float(tau @ a.tau))))
             moved = float(np.linalg.norm(prob.w * y - (Xa + h * a.tau)))
             ok = turn <= MAX_TURN and moved <= max(0.5 * h, 1e-9)

@@ -48,6 +48,9 @@ __all__ = ["PathSystem", "path_system", "CONTROL_SIZE"]
 
 #: Numbers describing a control: ``A_tip`` (4), ``A_F`` (4), ``c`` (2), ``tip_ref`` (2), ``F_ref`` (2).
 CONTROL_SIZE = 14
+#: Newton iterations of the compiled corrector step (the Python corrector takes over when they do not
+#: converge).
+STEP_ITER = 5
 
 
 @lru_cache(maxsize=None)
@@ -74,35 +77,73 @@ def _graphs(n: int):
     Rzv = ca.jtimes(R, z, v)
     second = ca.Function("second", [x, v, p, dp, dp2, ctl],
                          [Rzv, ca.densify(ca.jacobian(Rzv, x)), ca.jtimes(Rzv, z, v)])
-    return path, second
+    return path, second, _step(n, path)
+
+
+def _step(n: int, path: ca.Function) -> ca.Function:
+    """One whole predictor-corrector step (module docstring of :mod:`tensegrity_opt.analyses.branches`):
+    ``(x_a, tau, h, w, rs, tol, p, dp, dp2, ctl) -> (x, res, iterations, tau_b, R, R_x, H, J, E, tip)``.
+
+    From ``x_a`` and its unit tangent ``tau`` (scaled coordinates ``w x``), the predictor
+    ``x_a + h tau / w``, then ``STEP_ITER`` Newton iterations on ``[R(x); (w tau) . x - b] = 0``
+    (``b = tau . (w x_a) + h``), each kept once the scaled residual ``max |rs R|`` and the arclength
+    condition are below ``tol`` (the iterate then stays); at the last iterate its residual, the number of
+    iterations that moved (the caller checks the arclength condition), the tangent there (``[R_x / w; tau] v = e``, normalised) and the path outputs.
+    The caller checks ``res`` and falls back to the Python corrector."""
+    N = n + 2
+    xa, tau, w = ca.SX.sym("xa", N + 1), ca.SX.sym("tau", N + 1), ca.SX.sym("w", N + 1)
+    h, tol, rs = ca.SX.sym("h"), ca.SX.sym("tol"), ca.SX.sym("rs", N)
+    p, dp, dp2, ctl = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n), ca.SX.sym("ctl", CONTROL_SIZE)
+    aw = tau * w
+    b = ca.dot(tau, w * xa) + h
+    x = xa + h * tau / w
+    moved = 0
+    for _ in range(STEP_ITER):
+        R, Rx = path(ca.vertcat(x, 0), p, dp, dp2, ctl)[:2]
+        g = ca.dot(aw, x) - b
+        done = ca.logic_and(ca.mmax(ca.fabs(R * rs)) <= tol, ca.fabs(g) <= 1e-12 * ca.fmax(1, ca.fabs(b)))
+        d = ca.solve(ca.vertcat(Rx[:, :N + 1], aw.T), -ca.vertcat(R, g))
+        x = ca.if_else(done, x, x + d)
+        moved = moved + ca.if_else(done, 0, 1)
+    R, Rx, H, J, E, tip = path(ca.vertcat(x, 0), p, dp, dp2, ctl)
+    res = ca.mmax(ca.fabs(R * rs))
+    e = ca.DM.zeros(N + 1)
+    e[N] = 1.0
+    A = Rx[:, :N + 1] / ca.repmat(w.T, N, 1)
+    v = ca.solve(ca.vertcat(A, tau.T), e)
+    v = v / ca.norm_2(v)
+    return ca.Function("step", [xa, tau, h, w, rs, tol, p, dp, dp2, ctl],
+                       [x, res, moved, v, R, Rx, H, J, E, tip])
 
 
 _compiled: dict[int, str] = {}
 _lock = threading.Lock()
 
 
-def _functions(n: int) -> tuple[ca.Function, ca.Function, str]:
-    """This thread's ``path`` and ``second`` Functions and how they run (``"compiled"`` / ``"virtual machine"``)."""
+def _functions(n: int) -> tuple[ca.Function, ca.Function, ca.Function, str]:
+    """This thread's ``path``, ``second`` and ``step`` Functions and how they run (``"compiled"`` /
+    ``"virtual machine"``)."""
     if 2 <= n <= _kernels.KERNEL_MAX and os.environ.get("TENSEGRITY_COMPILE", "1") != "0":
         with _lock:
             lib = _compiled.get(n)
             if lib is None:
-                path, second = _graphs(n)
+                path, second, step = _graphs(n)
                 lib = ""
                 cc = _kernels.compiler()
                 if cc is not None:
                     try:
-                        lib = _kernels._compile_with(cc, f"tensegrity_paths_n{n}", {"path": path, "second": second})
+                        lib = _kernels._compile_with(cc, f"tensegrity_paths_n{n}",
+                                                     {"path": path, "second": second, "step": step})
                     except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
                         _kernels._warn(f"compiling the path functions with {cc} failed ({exc})")
                 _compiled[n] = lib
         if lib:
             try:
-                return ca.external("path", lib), ca.external("second", lib), "compiled"
+                return ca.external("path", lib), ca.external("second", lib), ca.external("step", lib), "compiled"
             except RuntimeError as exc:
                 _kernels._warn(f"loading {lib} failed ({exc})")
-    path, second = _graphs(n)
-    return path, second, "virtual machine"
+    path, second, step = _graphs(n)
+    return path, second, step, "virtual machine"
 
 
 class PathSystem:
@@ -110,9 +151,10 @@ class PathSystem:
 
     def __init__(self, n: int) -> None:
         self.n = n
-        path, second, self.mode = _functions(n)
+        path, second, step, self.mode = _functions(n)
         self._path = Fast(path)
         self._second = Fast(second)
+        self._step = Fast(step)
 
     def evaluate(self, x, p, dp, dp2, ctl):
         """``(R, R_x, H, J, E, tip)`` at ``x = (q, F, t, s)`` (copies: safe to keep)."""
@@ -120,6 +162,15 @@ class PathSystem:
         out = f(x, p, dp, dp2, ctl)
         return (out[0].copy(), f.dense(1).copy(), f.dense(2).copy(), f.dense(3).copy(), float(out[4][0]),
                 out[5].copy())
+
+    def step(self, xa, tau, h, w, rs, tol, p, dp, dp2, ctl):
+        """The compiled predictor-corrector step (:func:`_step`): ``(x, res, iterations, tau_b, path outputs)``,
+        the path outputs as :meth:`evaluate` gives them. Copies."""
+        f = self._step
+        out = f(xa, tau, h, w, rs, tol, p, dp, dp2, ctl)
+        return (out[0].copy(), float(out[1][0]), int(out[2][0]), out[3].copy(),
+                (out[4].copy(), f.dense(5).copy(), f.dense(6).copy(), f.dense(7).copy(), float(out[8][0]),
+                 out[9].copy()))
 
     def residual(self, x, p, dp, dp2, ctl):
         """``(R, R_x)`` only (copies)."""
