@@ -32,7 +32,20 @@ Routes used here (independent of any continuation code):
   displacement-controlled path, by both routes above;
 * :func:`buckling_modes` -- critical loads and modes of the straight chain from the analytic
   second derivatives (generalised symmetric eigenproblem; reference_model's bordered
-  determinant is the other route).
+  determinant is the other route);
+* :func:`coordinate_path`, :func:`post_buckling` -- a path parametrised by one joint angle
+  (through folds), the branch born at a critical load;
+* :func:`single_segment_curve` / :func:`single_segment_folds` -- ``n = 1`` in closed form;
+* :func:`energy_integral` -- ``int F . dtip`` along a displacement branch, refined on the
+  reference between the given points.
+
+Findings (see tests/test_reference_paths.py): the paper chain's pitchforks are supercritical
+both guided and free (the bent branch carries more load and is stable); a pre-bent arm
+(every L1_0 0.1 shorter) under free compression has a smooth path, stable up to the joint
+range (quasi-buckling), while guided it snaps at a fold (n = 3: t = 0.825957) at large
+rotations; with the pre-bend in segment 1 only, the guided path keeps segments 2..n
+exactly straight and meets a genuine branch point (t = 0.561844 for n = 4), numerically
+fragile. Uniform free chains: ``P_j = (K / b) (1 - cos((2j - 1) pi / (2n)))``.
 """
 
 from __future__ import annotations
@@ -458,8 +471,8 @@ def limit_load_reference(chain: Chain, q_start, direction=(-1.0, 0.0), boundary=
     if reason == "joint_limit":
         return LimitResult(t, q, F, "none", "joint_limit", z=z, lam_min=system.lam_min(z, t),
                            t_bisect=t, path=path)
-    kind0, _, phi0 = classify_singular_point(system, z, t, rel_tol)
-    ze, te, phie, ok = solve_extended(system, z, t, phi0)
+    _, _, phi0 = classify_singular_point(system, z, t, rel_tol)
+    ze, te, _, ok = solve_extended(system, z, t, phi0)
     if ok and abs(te - t) <= 1e-6 * max(1.0, abs(t)) and np.max(np.abs(ze - z)) < 1e-2:
         z, t, ext = ze, te, True
     else:
@@ -477,7 +490,7 @@ def fold_by_coordinate(system: PathSystem, z_near, t_near, k=None, half_width=0.
     ``q_k``, and find the extremum of ``t(q_k)`` with ``minimize_scalar`` (bounded) on
     ``[q_k - half_width, q_k + half_width]`` around ``z_near``. ``k`` defaults to the largest
     q-component of the null vector. Returns (t, z)."""
-    n, m = system.n, system.m
+    n = system.n
     if k is None:
         phi = np.linalg.svd(system.jac_z(z_near, t_near))[2][-1]
         k = int(np.argmax(np.abs(phi[:n])))
@@ -519,10 +532,10 @@ def coordinate_path(system: PathSystem, z_start, t_start, k, qk_grid):
     ts, zs, lams = [], [], []
     status = "done"
     for p in qk_grid:
-        def f(x):
+        def f(x, p=p):
             return system.residual(np.insert(x[:-1], k, p), x[-1])
 
-        def jac(x):
+        def jac(x, p=p):
             zz = np.insert(x[:-1], k, p)
             A = system.jac_z(zz, x[-1])
             return np.column_stack([np.delete(A, k, axis=1), system.jac_t(zz, x[-1])])
@@ -749,59 +762,81 @@ def morse_index(chain: Chain, q, F, boundary="free", rel_tol=1e-8):
     return int(np.sum(w < -rel_tol * max(1.0, np.abs(w).max() if w.size else 1.0)))
 
 
-def energy_integral(chain: Chain, q, F, tip, w, nodes=4):
-    """``int F . d tip`` along a displacement branch given by its points (the tip moves on the
-    line of unit direction ``w``), by a reference refinement independent of the step sizes:
-    each interval between consecutive points is re-solved at the Gauss-Legendre nodes of its
-    secant in ``q`` -- unknowns ``(q, F, tau)`` with ``grad E = J^T F``, ``tip(q) = tip_i +
-    tau w`` and ``(q - q_i - theta dq) . dq = 0`` (a pseudo-arclength, fine through folds) --
-    and ``F . w dtau/dtheta`` integrated (``dtau/dtheta`` by implicit differentiation).
-    Returns ``(integral, trapezoid)``, the latter the plain trapezoid rule
-    ``sum (F_i + F_{i+1})/2 . (tip_{i+1} - tip_i)`` for comparison."""
+def energy_integral(chain: Chain, q, F, w, nodes=6, max_depth=8):
+    """``int F . d tip`` along a displacement branch given by its points ``q`` (P, n) and
+    forces ``F`` (P, 2) (the tip moves on a line of unit direction ``w``), by a reference
+    refinement independent of the step sizes: each interval between consecutive points is
+    re-solved at the Gauss-Legendre nodes of its secant in ``q`` -- unknowns ``(q, F, tau)``
+    with ``grad E = J^T F``, ``tip(q) = tip_i + tau w`` and ``(q - q_i - theta dq) . dq = 0``
+    (a pseudo-arclength, fine through folds) -- and ``F . w dtau/dtheta`` integrated
+    (``dtau/dtheta`` by implicit differentiation). An interval whose nodes do not converge
+    close to the secant is split at its (re-solved) midpoint. Returns ``(integral,
+    trapezoid)``, the latter the plain trapezoid rule ``sum (F_i + F_{i+1})/2 . (tip_{i+1} -
+    tip_i)`` for comparison."""
     q = np.asarray(q, float)
     F = np.asarray(F, float)
-    tip = np.asarray(tip, float)
     w = unit(w)
     n = chain.n
-    trap = float(np.sum(0.5 * (F[1:] + F[:-1]) * (tip[1:] - tip[:-1])))
+    tips = np.array([chain.tip(x) for x in q])
+    trap = float(np.sum(0.5 * (F[1:] + F[:-1]) * (tips[1:] - tips[:-1])))
     xg, wg = np.polynomial.legendre.leggauss(nodes)
-    total = 0.0
-    for i in range(q.shape[0] - 1):
-        dq = q[i + 1] - q[i]
-        dtau = float((tip[i + 1] - tip[i]) @ w)
-        if float(dq @ dq) < 1e-28:
-            total += float(0.5 * (F[i] + F[i + 1]) @ w) * dtau
-            continue
-        acc = 0.0
-        for xi, wi in zip(xg, wg):
-            theta = 0.5 * (xi + 1.0)
-            x = np.concatenate([q[i] + theta * dq, F[i] + theta * (F[i + 1] - F[i]), [theta * dtau]])
 
-            def G(x):
-                qq, FF, tau = x[:n], x[n:n + 2], x[n + 2]
-                return np.concatenate([chain.lagrangian_grad(qq, FF), chain.tip(qq) - tip[i] - tau * w,
-                                       [(qq - q[i] - theta * dq) @ dq]])
+    def solve_node(qa, Fa, tipa, qb, Fb, theta):
+        dq = qb - qa
+        dtau = float((chain.tip(qb) - tipa) @ w)
+        x = np.concatenate([qa + theta * dq, Fa + theta * (Fb - Fa), [theta * dtau]])
 
-            def DG(x):
-                qq, FF = x[:n], x[n:n + 2]
-                J = chain.jac(qq)
-                A = np.zeros((n + 3, n + 3))
-                A[:n, :n] = lagrangian_hess(chain, qq, FF)
-                A[:n, n:n + 2] = -J.T
-                A[n:n + 2, :n] = J
-                A[n:n + 2, n + 2] = -w
-                A[n + 2, :n] = dq
-                return A
+        def G(x):
+            qq, FF, tau = x[:n], x[n:n + 2], x[n + 2]
+            return np.concatenate([chain.lagrangian_grad(qq, FF), chain.tip(qq) - tipa - tau * w,
+                                   [(qq - qa - theta * dq) @ dq]])
+
+        def DG(x):
+            qq, FF = x[:n], x[n:n + 2]
+            J = chain.jac(qq)
+            A = np.zeros((n + 3, n + 3))
+            A[:n, :n] = lagrangian_hess(chain, qq, FF)
+            A[:n, n:n + 2] = -J.T
+            A[n:n + 2, :n] = J
+            A[n:n + 2, n + 2] = -w
+            A[n + 2, :n] = dq
+            return A
+        try:
             for _ in range(30):
                 r = G(x)
                 if np.max(np.abs(r)) < 1e-14:
                     break
                 x = x - np.linalg.solve(DG(x), r)
-            if np.max(np.abs(G(x))) > 1e-11 or np.max(np.abs(x[:n] - q[i] - theta * dq)) > 0.2:
-                raise RuntimeError(f"refinement failed on interval {i}")
+            ok = bool(np.max(np.abs(G(x))) < 1e-11
+                      and np.max(np.abs(x[:n] - qa - theta * dq)) <= max(0.05, 0.5 * np.max(np.abs(dq))))
             rhs = np.zeros(n + 3)
             rhs[n + 2] = float(dq @ dq)
             dx = np.linalg.solve(DG(x), rhs)
-            acc += wi * float(x[n:n + 2] @ w) * dx[n + 2]
-        total += 0.5 * acc
+        except np.linalg.LinAlgError:
+            return None
+        return (x, dx[n + 2]) if ok else None
+
+    def interval(qa, Fa, qb, Fb, depth):
+        dq = qb - qa
+        tipa = chain.tip(qa)
+        if float(dq @ dq) < 1e-28:
+            return float(0.5 * (Fa + Fb) @ (chain.tip(qb) - tipa))
+        acc = 0.0
+        for xi, wi in zip(xg, wg):
+            r = solve_node(qa, Fa, tipa, qb, Fb, 0.5 * (xi + 1.0))
+            if r is None:
+                break
+            x, dtau_dtheta = r
+            acc += wi * float(x[n:n + 2] @ w) * dtau_dtheta
+        else:
+            return 0.5 * acc
+        if depth >= max_depth:
+            raise RuntimeError("energy_integral: refinement failed")
+        mid = solve_node(qa, Fa, tipa, qb, Fb, 0.5)
+        if mid is None:
+            raise RuntimeError("energy_integral: refinement failed at a midpoint")
+        qm, Fm = mid[0][:n], mid[0][n:n + 2]
+        return interval(qa, Fa, qm, Fm, depth + 1) + interval(qm, Fm, qb, Fb, depth + 1)
+
+    total = sum(interval(q[i], F[i], q[i + 1], F[i + 1], 0) for i in range(q.shape[0] - 1))
     return total, trap
