@@ -30,6 +30,7 @@ from .analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
 from .analyses.landscape import Landscape, energy_landscape
 from .analyses.least_energy import solve_equilibrium
 from .analyses.limit_load import LimitLoad, limit_load
+from .analyses.rest import find_equilibria_under_force, rest_configuration
 from .analyses.stiffness import cartesian_stiffness
 from .applications.sweeps import SweepResult, sweep
 from .errors import (
@@ -56,6 +57,7 @@ __version__ = "0.1.0"
 __all__ = [
     "Segment", "Manipulator",
     "Equilibrium", "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria", "EquilibriumSet",
+    "find_equilibria_under_force", "rest_configuration",
     "solve_equilibria_batch", "Tracker",
     "Buckling", "Mode", "critical_force",
     "Curve", "Jump", "force_deflection",

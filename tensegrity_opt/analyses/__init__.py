@@ -4,6 +4,8 @@
 * :mod:`.equilibrium` - one equilibrium: the result type, local solves, the equilibrium under a tip force;
 * :mod:`.least_energy` - the least-energy stable equilibrium for a tip target (the global search);
 * :mod:`.all_equilibria` - every equilibrium for a tip target (search, or the certified homotopy);
+* :mod:`.rest` - rest configurations (the exact unloaded equilibria, the least-energy well) and every
+  equilibrium under a dead tip load (search, or the certified homotopy);
 * :mod:`.stability` - classification by the reduced Hessian's inertia (Morse index);
 * :mod:`.buckling` - the straight chain's critical loads and modes (the paper's eigenproblem);
 * :mod:`.seeds` - starting points for the global search (modes, mirrors, wells, random projections);

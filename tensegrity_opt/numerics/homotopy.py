@@ -66,7 +66,8 @@ from ..errors import HomotopyUnavailableError, SolverError
 from ..model.manipulator import Manipulator
 
 __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "solve_homotopy", "phc_path",
-           "homotopy_available", "real_configurations", "residuals", "unloaded_critical_angles", "rest_points_at"]
+           "homotopy_available", "real_configurations", "residuals", "unloaded_critical_angles", "rest_points_at",
+           "force_polynomial_system", "solve_force_homotopy", "real_force_configurations", "force_residuals"]
 
 #: Coefficients smaller than this relative to the largest one of their equation are zero.
 CLEAN_TOL = 1e-14
@@ -95,8 +96,9 @@ class HomotopySolve:
 
     Attributes
     ----------
-    roots : ndarray (r, n + 2) complex
-        Every finite root returned (``z_1..z_n, g, h``).
+    roots : ndarray (r, n + 2) or (r, n) complex
+        Every finite root returned: ``z_1..z_n, g, h`` for the displacement system (:func:`solve_homotopy`),
+        ``z_1..z_n`` for the force-controlled one (:func:`solve_force_homotopy`).
     regular : ndarray (r,) bool
         PHCpack classified the root as regular (non-singular Jacobian).
     paths : int
@@ -184,6 +186,48 @@ def _laurent_terms(m: Manipulator, target) -> list[dict[tuple[int, ...], complex
     return [_clean(p) for p in eqs]
 
 
+def _force_laurent_terms(m: Manipulator, force) -> list[dict[tuple[int, ...], complex]]:
+    """The ``n`` Laurent polynomials of the force-controlled equilibrium, unknowns ``z_1..z_n`` only.
+
+    The stationarity rows of :func:`_laurent_terms` with ``g = Fx + i Fy`` and ``h = conj(g)`` given
+    numbers instead of unknowns, and no tip equations: ``E_j' - E_{j+1}' - l_j Im(e^{-i phi_j} G) = 0``
+    (``j < n``), ``E_n' - l_n Im(e^{-i phi_n} G) = 0``, with
+    ``Im(e^{-i phi} G) = (e^{-i phi} g - e^{i phi} h) / (2i)`` and ``e^{i phi_j} = prod_{i <= j} z_i^2``.
+    """
+    n = m.n
+    l = m.link_lengths
+    g = complex(float(force[0]), float(force[1]))
+    h = g.conjugate()
+
+    def add(poly: dict, e: tuple[int, ...], c: complex) -> None:
+        poly[e] = poly.get(e, 0.0) + c
+
+    def dE(j: int) -> dict:
+        poly: dict = {}
+        for p, coef in _dE_coefficients(m, j).items():
+            e = [0] * n
+            e[j] = p
+            add(poly, tuple(e), coef)
+        return poly
+
+    def direction(j: int, sign: int) -> tuple[int, ...]:
+        return tuple([2 * sign] * (j + 1) + [0] * (n - j - 1))
+
+    dEs = [dE(j) for j in range(n)]
+    eqs = []
+    for j in range(n):
+        poly = dict(dEs[j])
+        if j < n - 1:
+            for e, c in dEs[j + 1].items():
+                add(poly, e, -c)
+        # - l_j (e^{-i phi_j} g - e^{i phi_j} h) / (2i)
+        if g != 0.0:
+            add(poly, direction(j, -1), -float(l[j]) * g / 2j)
+            add(poly, direction(j, 1), float(l[j]) * h / 2j)
+        eqs.append(poly)
+    return [_clean(p) for p in eqs]
+
+
 def _dE_coefficients(m: Manipulator, j: int) -> dict[int, complex]:
     """Segment ``j``'s ``E'(q)`` as a Laurent polynomial in ``z = exp(i q/2)``: ``{power: coefficient}``.
 
@@ -220,9 +264,13 @@ def _names(n: int) -> list[str]:
 
 def polynomial_system(m: Manipulator, target) -> str:
     """The KKT system for the tip at ``target`` in PHCpack's input format (Laurent, complex coefficients)."""
-    names = _names(m.n)
-    lines = [str(m.n + 2)]
-    for poly in _laurent_terms(m, target):
+    return _system_text(_laurent_terms(m, target), _names(m.n))
+
+
+def _system_text(polys: list[dict], names: list[str]) -> str:
+    """Laurent polynomials (dicts exponent tuple -> coefficient) in PHCpack's input format."""
+    lines = [str(len(names))]
+    for poly in polys:
         parts = []
         for e, c in sorted(poly.items()):
             mono = "*".join(names[i] + (f"**({p})" if p < 0 else (f"**{p}" if p > 1 else ""))
@@ -232,11 +280,26 @@ def polynomial_system(m: Manipulator, target) -> str:
     return "\n".join(lines) + "\n"
 
 
+def force_polynomial_system(m: Manipulator, force) -> str:
+    """The force-controlled equilibrium ``grad E = J^T F`` for the tip force ``force = (Fx, Fy)`` in
+    PHCpack's input format: ``n`` Laurent equations in ``z_1..z_n`` (:func:`_force_laurent_terms`)."""
+    return _system_text(_force_laurent_terms(m, force), _names(m.n)[:m.n])
+
+
+def force_residuals(m: Manipulator, force, roots: np.ndarray) -> np.ndarray:
+    """As :func:`residuals`, for the force-controlled system (rows of ``roots``: ``z_1..z_n``)."""
+    return _residuals(_force_laurent_terms(m, force), roots)
+
+
 def residuals(m: Manipulator, target, roots: np.ndarray) -> np.ndarray:
     """Max-norm residual of the polynomial system at each root (rows of ``roots``: ``z_1..z_n, g, h`` with
     ``g = Fx + i Fy``, ``h = Fx - i Fy``, as :func:`solve_homotopy` returns them), relative to the
     largest coefficient of each equation: an independent check of what PHCpack returned."""
-    polys = _laurent_terms(m, target)
+    return _residuals(_laurent_terms(m, target), roots)
+
+
+def _residuals(polys: list[dict], roots: np.ndarray) -> np.ndarray:
+    """Max-norm residual (relative to each equation's largest coefficient) of ``polys`` at each row of ``roots``."""
     roots = np.asarray(roots, dtype=complex)
     out = np.zeros(roots.shape[0])
     logs = None
@@ -282,6 +345,23 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
     SolverError
         (``RuntimeError``) when ``phc`` fails, times out or writes no solutions.
     """
+    return _solve(polynomial_system(m, target), _names(m.n), m.n, threads, timeout, attempts)
+
+
+def solve_force_homotopy(m: Manipulator, force, *, threads: int | None = None, timeout: float | None = None,
+                         attempts: int = ATTEMPTS) -> HomotopySolve:
+    """Every isolated complex root of :func:`force_polynomial_system` (the equilibria under the dead tip
+    load ``force``) by ``phc -b``, with the repeats, parameters and errors of :func:`solve_homotopy`.
+
+    The roots are rows ``z_1..z_n``. ``force`` must not be zero: the unloaded system decouples into the
+    segments' own torques (:func:`unloaded_critical_angles` gives its real roots exactly).
+    """
+    return _solve(force_polynomial_system(m, force), _names(m.n)[:m.n], m.n, threads, timeout, attempts)
+
+
+def _solve(text: str, names: list[str], n: int, threads: int | None, timeout: float | None,
+           attempts: int) -> HomotopySolve:
+    """``phc -b`` on the system ``text`` (unknowns ``names``), repeated while paths fail (:func:`solve_homotopy`)."""
     exe = phc_path()
     if exe is None:
         raise HomotopyUnavailableError(
@@ -289,7 +369,6 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
             "(apt-get install phcpack) or set TENSEGRITY_PHC to the executable", field="method")
     if threads is None:
         threads = max(1, min(8, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1))
-    text = polynomial_system(m, target)
     deadline = None if timeout is None else time.monotonic() + float(timeout)
     best: HomotopySolve | None = None
     spent = 0.0
@@ -298,9 +377,9 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
         if left is not None and left <= 0.0:
             if best is not None:
                 break                   # out of time for another try: the best run so far
-            raise SolverError(f"phc did not finish within {timeout:g} s (n = {m.n})", status="phc_timeout")
+            raise SolverError(f"phc did not finish within {timeout:g} s (n = {n})", status="phc_timeout")
         try:
-            run = _run_phc(exe, text, m.n, int(threads), left)
+            run = _run_phc(exe, text, names, n, int(threads), left)
         except SolverError:
             if best is None:
                 raise
@@ -315,7 +394,7 @@ def solve_homotopy(m: Manipulator, target, *, threads: int | None = None, timeou
     return HomotopySolve(**{**best.__dict__, "seconds": spent})
 
 
-def _run_phc(exe: str, text: str, n: int, threads: int, timeout: float | None) -> HomotopySolve:
+def _run_phc(exe: str, text: str, names: list[str], n: int, threads: int, timeout: float | None) -> HomotopySolve:
     """One ``phc -b`` run on the system ``text``."""
     with tempfile.TemporaryDirectory(prefix="tensegrity_phc_") as tmp:
         src, out = os.path.join(tmp, "system.phc"), os.path.join(tmp, "system.out")
@@ -333,7 +412,7 @@ def _run_phc(exe: str, text: str, n: int, threads: int, timeout: float | None) -
                               f"{proc.stderr.decode(errors='replace')[-300:]}", status="phc_failed")
         with open(out, errors="replace") as f:
             report = f.read()
-    return _parse(report, _names(n), seconds, threads, proc.returncode)
+    return _parse(report, names, seconds, threads, proc.returncode)
 
 
 def _parse(report: str, names: list[str], seconds: float, threads: int, returncode: int = 0) -> HomotopySolve:
@@ -436,3 +515,21 @@ def real_configurations(m: Manipulator, solve: HomotopySolve, *, tol: float = RE
     F = np.column_stack([G.real, G.imag])
     inside = np.all(np.abs(q) < m.joint_limits, axis=1)
     return q, F, inside, solve.regular[real]
+
+
+def real_force_configurations(m: Manipulator, solve: HomotopySolve, *, tol: float = REAL_TOL,
+                              singular_tol: float = SINGULAR_REAL_TOL
+                              ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The real roots of :func:`solve_force_homotopy` as ``(q (k, n), inside (k,) bool, regular (k,) bool)``:
+    ``q_j = 2 arg z_j`` of the roots with ``| |z_j| - 1 |`` below ``tol`` (regular) or ``singular_tol``
+    (singular), as :func:`real_configurations`; ``inside`` marks those in the open physical range."""
+    n = m.n
+    R = solve.roots
+    if R.size == 0:
+        return np.zeros((0, n)), np.zeros(0, dtype=bool), np.zeros(0, dtype=bool)
+    z = R[:, :n]
+    dist = np.abs(np.abs(z) - 1.0).max(axis=1)
+    real = dist < np.where(solve.regular, tol, singular_tol)
+    q = 2.0 * np.angle(z[real])
+    inside = np.all(np.abs(q) < m.joint_limits, axis=1)
+    return q, inside, solve.regular[real]
