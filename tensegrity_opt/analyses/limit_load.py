@@ -86,11 +86,11 @@ class LimitLoad:
         return self.kind != "none" or self.reason in ("joint_limit", "max_load")
 
     def to_dict(self, *, include_branch: bool = False) -> dict[str, Any]:
-        d = {"load": nullable(self.load), "kind": self.kind, "reason": self.reason,
+        d = {"load": None if self.load is None else nullable(self.load), "kind": self.kind, "reason": self.reason,
              "force": None if self.force is None else {"fx": number(self.force[0]), "fy": number(self.force[1])},
              "q": None if self.q is None else numbers(self.q),
              "null_vector": None if self.null_vector is None else numbers(self.null_vector),
-             "quasi_buckling_load": nullable(self.quasi_buckling_load),
+             "quasi_buckling_load": None if self.quasi_buckling_load is None else nullable(self.quasi_buckling_load),
              "quasi_buckling_force": None if self.quasi_buckling_force is None else
              {"fx": number(self.quasi_buckling_force[0]), "fy": number(self.quasi_buckling_force[1])},
              "end_load": number(self.end_load), "direction": numbers(self.direction), "boundary": self.boundary,
