@@ -10,8 +10,6 @@ them through :mod:`service.errors` (batch items are mapped here, one error per t
 
 from __future__ import annotations
 
-import importlib
-import importlib.util
 import time
 from functools import lru_cache
 from typing import Any
@@ -281,18 +279,6 @@ BRANCH_ALIASES = (("q0", "start.q"), ("dx", "start.dx"), ("dy", "start.dy"), ("d
 LIMIT_LOAD_ALIASES = (("q0", "start.q"),)
 
 
-def _analysis(module: str, name: str) -> Any:
-    """``tensegrity_opt.analyses.<module>.<name>``, or :class:`~tensegrity_opt.UnsupportedError` (422
-    ``unsupported``) when this build of the library does not have it yet."""
-    full = f"tensegrity_opt.analyses.{module}"
-    fn = None
-    if importlib.util.find_spec(full) is not None:
-        fn = getattr(importlib.import_module(full), name, None)
-    if fn is None:
-        raise to.UnsupportedError(f"{full}.{name} is not available in this build of the library")
-    return fn
-
-
 def _continuable(m: to.Manipulator) -> None:
     """The continuation's own limit, before anything is solved (a rest configuration of a long chain)."""
     if m.n > DENSE_MAX:
@@ -326,7 +312,6 @@ def control_kwargs(c: Any) -> tuple[str, dict[str, Any]]:
 def _start(m: to.Manipulator, start: Any, control: Any) -> Any:
     """The library's ``start`` of a start request (``schemas.StartIn`` or None: the rest configuration)."""
     if start is None:
-        _analysis("rest", "rest_configuration")       # trace_branch imports it itself
         return None
     if isinstance(start, s.StartQ):
         return np.asarray(start.q, dtype=float)
@@ -342,7 +327,7 @@ def rest_configurations_task(req: s.RestConfigurationsRequest, timeout: float | 
     """Every equilibrium under the dead load ``(fx, fy)`` (``analyses.rest.find_equilibria_under_force``);
     ``timeout`` bounds the homotopy's external solver."""
     m = build_manipulator(req.manipulator)
-    fn = _analysis("rest", "find_equilibria_under_force")
+    fn = to.find_equilibria_under_force
     return fn(m, req.fx, req.fy, method=req.method, stable_only=req.stable_only, timeout=timeout).to_dict()
 
 
@@ -356,11 +341,11 @@ def trace_branches(req: Any, deadline: float) -> to.Branch | list[to.Branch]:
     depth = getattr(req, "depth", None)
     if depth is None:
         return to.trace_branch(m, start, ctl, t_max=req.t_max, t_min=req.t_min, max_points=req.max_points,
-                               stop_at=req.stop_at, direction=req.direction, timeout=_seconds_left(deadline))
-    if getattr(req, "stop_at", None) is not None or getattr(req, "direction", 1) != 1:
-        raise to.InvalidParameterError("stop_at and direction belong to one branch: a bifurcation diagram (depth) "
+                               stop_at=req.stop_at, orientation=req.orientation, timeout=_seconds_left(deadline))
+    if getattr(req, "stop_at", None) is not None or getattr(req, "orientation", 1) != 1:
+        raise to.InvalidParameterError("stop_at and orientation belong to one branch: a bifurcation diagram (depth) "
                                        "follows every branch both ways", field="stop_at"
-                                       if getattr(req, "stop_at", None) is not None else "direction")
+                                       if getattr(req, "stop_at", None) is not None else "orientation")
     return to.bifurcation_diagram(m, start, ctl, depth=req.depth, max_branches=req.max_branches,
                                   timeout=_seconds_left(deadline), t_max=req.t_max, t_min=req.t_min,
                                   max_points=req.max_points)
@@ -377,8 +362,6 @@ def bifurcation_diagram_task(req: s.BifurcationDiagramRequest, deadline: float) 
 def find_limit_load(req: Any, deadline: float) -> to.LimitLoad:
     m = build_manipulator(req.manipulator)
     _continuable(m)
-    if req.start is None:
-        _analysis("rest", "rest_configuration")       # limit_load imports it itself
     start = None if req.start is None else np.asarray(req.start.q, dtype=float)
     return to.limit_load(m, req.direction, req.boundary, req.max_load, start, max_points=req.max_points,
                          timeout=_seconds_left(deadline))
@@ -391,7 +374,7 @@ def limit_load_task(req: s.LimitLoadRequest, deadline: float) -> dict[str, Any]:
 def find_stability_boundary(req: Any, deadline: float) -> Any:
     m = build_manipulator(req.manipulator)
     _continuable(m)
-    fn = _analysis("boundaries", "stability_boundary")
+    fn = to.stability_boundary
     kind, kw = control_kwargs(req.control)
     return fn(m, kind, req.parameter, p_min=req.p_min, p_max=req.p_max, max_points=req.max_points,
               timeout=_seconds_left(deadline), **kw)

@@ -8,7 +8,6 @@ run once those are merged; before, they exit 2 with one line saying so (checked)
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import json
 
 import numpy as np
@@ -20,8 +19,6 @@ from tensegrity_opt.applications.cli import build_parser, main
 M = to.Manipulator.uniform(4)
 STRAIGHT = ["--start-q", "0", "0", "0", "0"]
 GUIDED_LOADS = (0.572793, 1.362906, 1.921444)
-HAS_REST = importlib.util.find_spec("tensegrity_opt.analyses.rest") is not None
-HAS_BOUNDARIES = importlib.util.find_spec("tensegrity_opt.analyses.boundaries") is not None
 
 
 def run_json(capsys, argv):
@@ -99,16 +96,9 @@ def test_errors_are_one_line_and_exit_2(capsys):
         assert "expected" in capsys.readouterr().err
 
 
-@pytest.mark.skipif(HAS_REST and HAS_BOUNDARIES, reason="both analyses are merged")
-def test_missing_analyses_are_one_line_errors(capsys, tmp_path):
-    argvs = ([] if HAS_REST else [["rest"], ["branch", "--control", "guided"], ["limit-load"]]) + \
-        ([] if HAS_BOUNDARIES else [["boundary"], ["plot", "boundary", "-o", str(tmp_path / "b.png")]])
-    for argv in argvs:
-        assert main(argv) == 2
-        assert "is not available in this build" in capsys.readouterr().err
 
 
-@pytest.mark.skipif(not HAS_REST, reason="tensegrity_opt.analyses.rest is not merged yet")
+
 def test_rest_and_the_default_start(capsys):
     from tensegrity_opt.analyses.rest import find_equilibria_under_force
 
@@ -120,7 +110,6 @@ def test_rest_and_the_default_start(capsys):
     assert got == json.loads(json.dumps(to.trace_branch(M, None, to.Control.guided(), t_max=1.0).to_dict()))
 
 
-@pytest.mark.skipif(not HAS_BOUNDARIES, reason="tensegrity_opt.analyses.boundaries is not merged yet")
 def test_boundary_command(capsys, tmp_path):
     argv = ["boundary", "--parameter", "asymmetry", "--p-min", "-0.02", "--p-max", "0.02", "--max-points", "40"]
     assert main(argv) == 0

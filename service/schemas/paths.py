@@ -185,7 +185,7 @@ class BranchRequest(_BranchFields):
 
     stop_at: Literal["stability_loss", "event"] | None = Field(
         None, description="stop after the first event where stability is lost, or after any event")
-    direction: Annotated[Literal[1, -1], BeforeValidator(integral)] = Field(
+    orientation: Annotated[Literal[1, -1], BeforeValidator(integral)] = Field(
         1, description="leave the start with t increasing (1) or decreasing (-1)")
 
 

@@ -169,7 +169,7 @@ class PlotBranchRequest(_PlotRequest, _BranchFields):
 
     stop_at: Literal["stability_loss", "event"] | None = Field(
         None, description="one branch only: stop after the first event where stability is lost, or any event")
-    direction: Annotated[Literal[1, -1], BeforeValidator(s.integral)] = Field(
+    orientation: Annotated[Literal[1, -1], BeforeValidator(s.integral)] = Field(
         1, description="one branch only: leave the start with t increasing (1) or decreasing (-1)")
     depth: Annotated[int, Field(ge=0, le=MAX_DEPTH), BeforeValidator(s.integral)] | None = Field(
         None, description=f"null: one branch; a number: the bifurcation diagram to this many switches (0..{MAX_DEPTH})")

@@ -19,22 +19,22 @@ Examples::
 from __future__ import annotations
 
 import argparse
-import importlib
-import importlib.util
 from typing import Any
 
 import numpy as np
 
+from ...analyses.boundaries import stability_boundary
 from ...analyses.branches import Branch, Control, bifurcation_diagram, trace_branch
 from ...analyses.least_energy import solve_equilibrium
 from ...analyses.limit_load import limit_load
-from ...errors import InvalidParameterError, UnsupportedError
+from ...analyses.rest import find_equilibria_under_force
+from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float, fmt_q, positive_int
 
 __all__ = ["add_path_parsers", "add_control_options", "add_start_options", "add_limit_load_options",
            "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args",
-           "limit_load_from_args", "boundary_from_args", "analysis", "CONTROL_KINDS"]
+           "limit_load_from_args", "boundary_from_args", "CONTROL_KINDS"]
 
 CONTROL_KINDS = ("displacement", "load", "guided", "wall", "preload")
 
@@ -62,15 +62,6 @@ def positive_float(text: str) -> float:
     if v <= 0:
         raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}")
     return v
-
-
-def analysis(module: str, name: str) -> Any:
-    """``tensegrity_opt.analyses.<module>.<name>``, or :class:`UnsupportedError` when this build lacks it."""
-    full = f"tensegrity_opt.analyses.{module}"
-    fn = getattr(importlib.import_module(full), name, None) if importlib.util.find_spec(full) is not None else None
-    if fn is None:
-        raise UnsupportedError(f"{full}.{name} is not available in this build of the library")
-    return fn
 
 
 # ---------------------------------------------------------------------------- shared options
@@ -178,7 +169,6 @@ def start_from_args(m: Manipulator, args: argparse.Namespace) -> Any:
             raise InvalidParameterError("--start-dx needs a control that holds the tip (displacement, or preload "
                                         "with --tip held)", field="start")
         return solve_equilibrium(m, args.start_dx, args.start_dy)
-    analysis("rest", "rest_configuration")          # the library imports it itself
     return None
 
 
@@ -187,7 +177,7 @@ def branches_from_args(args: argparse.Namespace, m: Manipulator) -> Branch | lis
     start = start_from_args(m, args)
     if args.depth is None:
         return trace_branch(m, start, ctl, t_max=args.t_max, t_min=args.t_min, max_points=args.max_points,
-                            stop_at=args.stop_at, direction=-1 if args.backward else 1, timeout=args.timeout)
+                            stop_at=args.stop_at, orientation=-1 if args.backward else 1, timeout=args.timeout)
     if args.stop_at is not None or args.backward:
         raise InvalidParameterError("--stop-at and --backward belong to one branch: --depth follows every branch "
                                     "both ways", field="depth")
@@ -197,14 +187,12 @@ def branches_from_args(args: argparse.Namespace, m: Manipulator) -> Branch | lis
 
 def limit_load_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
     start = None if args.start_q is None else np.asarray(args.start_q, dtype=float)
-    if start is None:
-        analysis("rest", "rest_configuration")
     return limit_load(m, args.direction, args.boundary, args.max_load, start, max_points=args.max_points,
                       timeout=args.timeout)
 
 
 def boundary_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
-    fn = analysis("boundaries", "stability_boundary")
+    fn = stability_boundary
     kw = _control_kw(args)
     kw.setdefault("direction", [1.0, 0.0] if args.control == "displacement" else [-1.0, 0.0])
     return fn(m, args.control, args.parameter, p_min=args.p_min, p_max=args.p_max, max_points=args.max_points,
@@ -213,7 +201,7 @@ def boundary_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
 
 # ---------------------------------------------------------------------------- the commands
 def _cmd_rest(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
-    fn = analysis("rest", "find_equilibria_under_force")
+    fn = find_equilibria_under_force
     eqs = fn(m, args.fx, args.fy, method=args.method, stable_only=args.stable_only)
     head = ("Rest configurations (F = 0)" if args.fx == 0.0 and args.fy == 0.0 else
             f"Equilibria under the dead tip load ({args.fx:g}, {args.fy:g})")
