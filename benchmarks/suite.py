@@ -20,6 +20,9 @@ Cases (the issue's targets):
 9. multistable (bistable, K < 0) chains: global solve n = 4 and n = 8 (goal <= 20 ms for n = 8) vs a
    64-start SLSQP; ``find_equilibria`` n = 4 and n = 8 (goal <= 1 s for n = 8); the certified homotopy
    (PHCpack) per n with its path count, vs the search on the same target.
+10. paths: a 1000-point arclength branch of the paper's chain vs natural-parameter loops of the same points
+   (the Tracker, the compiled batch); ``limit_load`` per call (branch point, smooth path, fold) vs force
+   steps with bisection on stability.
 """
 
 from __future__ import annotations
@@ -764,8 +767,97 @@ def case9(cfg: Config) -> list[Row]:
     return rows
 
 
+def _natural_limit_load(m, direction, t_step: float, tol: float = 1e-8):
+    """What a user would write without continuation: dead-load steps from the rest configuration
+    (``solve_equilibrium_under_force`` warm-started), then bisection on stability; a fold or branch
+    point is met as the first unstable (or failed) step."""
+    d = np.asarray(direction, float) / np.linalg.norm(direction)
+    q, t, lo, hi = to.rest_configuration(m).q, 0.0, 0.0, None
+    while t < 50.0:
+        t += t_step
+        try:
+            eq = to.solve_equilibrium_under_force(m, *(t * d), q0=q)
+        except to.TensegrityError:
+            eq = None
+        if eq is None or not eq.stable or np.abs(eq.q - q).max() > 0.5:
+            hi = t
+            break
+        lo, q = t, eq.q
+    if hi is None:
+        return None
+    qlo = q
+    while hi - lo > tol:
+        mid = 0.5 * (lo + hi)
+        try:
+            eq = to.solve_equilibrium_under_force(m, *(mid * d), q0=qlo)
+            ok = eq.stable and np.abs(eq.q - qlo).max() < 0.5
+        except to.TensegrityError:
+            ok = False
+        if ok:
+            lo, qlo = mid, eq.q
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def case10(cfg: Config) -> list[Row]:
+    """Paths: a 1000-point arclength branch vs natural-parameter loops of the same points; limit loads."""
+    rows: list[Row] = []
+    reps = 3 if cfg.quick else 7
+    m = to.Manipulator.uniform(4, **{k: v for k, v in PAPER.items() if k != "n"})
+    start = to.solve_equilibrium(m, 0.01)
+    branch = lambda: to.trace_branch(m, start, "displacement", direction=(1.0, 0.0), max_points=1000,  # noqa: E731
+                                     step=0.002, max_step=0.002, t_max=2.9)
+    br = branch()
+    ours = repeat(branch, reps)
+    targets = br.deflection
+    tr = to.Tracker(m, start, jump=False)
+
+    def tracker_loop():
+        tr.reset(start)
+        return [tr.solve(dx, dy) for dx, dy in targets]
+
+    track = repeat(tracker_loop, reps)
+    batch = repeat(lambda: to.solve_equilibria_batch(m, targets, q0=start.q), reps)
+    same = max(float(np.abs(e.q - q).max()) for e, q in zip(tracker_loop(), br.q))
+    note = (f"paper chain n=4, U branch from dx=0.01: {len(br)} points to dx={targets[-1, 0]:.3f} (status {br.status}, "
+            f"{len(br.events)} events); the natural-parameter loops solve the same {len(targets)} targets, largest "
+            f"|q| difference {same:.1e} rad")
+    o = median_ms(ours)
+    rows.append(Row("10", "arclength branch, 1000 points", 4, o, "ms", "Tracker loop, same points", median_ms(track),
+                    ratio=median_ms(track) / o, target="(info)", samples=ours, baseline_samples=track, notes=[note]))
+    rows.append(Row("10", "arclength branch, 1000 points", 4, o, "ms", "solve_equilibria_batch (compiled kernel)",
+                    median_ms(batch), ratio=median_ms(batch) / o, target="(info)", samples=ours,
+                    baseline_samples=batch, notes=["the compiled natural-parameter kernel: no events, no folds"]))
+    cases = (("straight, guided (branch point)", m, (-1.0, 0.0), "guided", 0.02),
+             ("pre-bent, free (smooth)", to.Manipulator([to.Segment(1, 1, 1, (1.02, 0.98))] * 4), (-1.0, 0.0), "free",
+              0.01),
+             ("bistable, free (fold)", to.Manipulator.uniform(3, **BISTABLE), (0.0, 1.0), "free", 0.01))
+    for name, mm, d, bd, dt in cases:
+        res = to.limit_load(mm, d, bd)
+        ts = repeat(lambda mm=mm, d=d, bd=bd: to.limit_load(mm, d, bd), reps)
+        base_val, base_t = None, None
+        if bd == "free":
+            t0 = time.perf_counter()
+            base_val = _natural_limit_load(mm, d, dt)
+            base_t = [time.perf_counter() - t0]
+        val = res.load if res.load is not None else res.end_load
+        rows.append(Row("10", f"limit_load: {name}", mm.n, median_ms(ts), "ms",
+                        "force steps + bisection (solve_equilibrium_under_force)" if base_t else "-",
+                        median_ms(base_t) if base_t else None,
+                        ratio=(median_ms(base_t) / median_ms(ts)) if base_t else None, target="(info)", samples=ts,
+                        baseline_samples=base_t,
+                        notes=[f"{name}: kind {res.kind}, load {val:.6g}" + (f" ({res.reason})" if res.reason else "")
+                               + (f"; quasi-buckling load {res.quasi_buckling_load:.6g}"
+                                  if res.quasi_buckling_load is not None else "")
+                               + (f"; the step-and-bisect loop: {base_val:.6g}" if base_t and base_val is not None
+                                  else "; the step-and-bisect loop finds no limit" if base_t else "")]))
+    return rows
+
+
 CASES: list[tuple[str, Callable[[Config], list[Row]]]] = [
     ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8), ("9", case9),
+    ("10", case10),
 ]
 
 

@@ -10,6 +10,9 @@ them through :mod:`service.errors` (batch items are mapped here, one error per t
 
 from __future__ import annotations
 
+import importlib
+import importlib.util
+import time
 from functools import lru_cache
 from typing import Any
 
@@ -18,6 +21,7 @@ import numpy as np
 import tensegrity_opt as to
 from tensegrity_opt.analyses.equilibrium import Equilibrium
 from tensegrity_opt.errors import NonFiniteResult
+from tensegrity_opt.numerics import DENSE_MAX
 from tensegrity_opt.serialize import number, numbers
 
 from . import schemas as s
@@ -28,6 +32,9 @@ __all__ = [
     "equilibrium_newton_task", "equilibrium_newton_args", "force_equilibrium_task", "equilibria_task", "buckling_task",
     "force_deflection_task", "stiffness_task",
     "segment_torque_task", "energy_landscape_task", "batch_task", "warmup_task",
+    "rest_configurations_task", "branch_task", "bifurcation_diagram_task", "limit_load_task",
+    "stability_boundary_task", "trace_branches", "find_limit_load", "find_stability_boundary", "build_control",
+    "control_kwargs", "BRANCH_ALIASES", "LIMIT_LOAD_ALIASES",
 ]
 
 
@@ -264,3 +271,131 @@ def preloads_task(req: s.PreloadsRequest) -> dict[str, Any]:
     except to.InfeasibleDesignError as exc:
         raise _best_as_json(exc) from None
     return r.to_dict()
+
+
+# ---------------------------------------------------------------------------- loading paths
+#: Library field -> request path, for the path requests (``FieldContext.aliases``).
+BRANCH_ALIASES = (("q0", "start.q"), ("dx", "start.dx"), ("dy", "start.dy"), ("direction", "control.direction"),
+                  ("base", "control.base"), ("normal", "control.normal"), ("load", "control.load"),
+                  ("tip", "control.tip"))
+LIMIT_LOAD_ALIASES = (("q0", "start.q"),)
+
+
+def _analysis(module: str, name: str) -> Any:
+    """``tensegrity_opt.analyses.<module>.<name>``, or :class:`~tensegrity_opt.UnsupportedError` (422
+    ``unsupported``) when this build of the library does not have it yet."""
+    full = f"tensegrity_opt.analyses.{module}"
+    fn = None
+    if importlib.util.find_spec(full) is not None:
+        fn = getattr(importlib.import_module(full), name, None)
+    if fn is None:
+        raise to.UnsupportedError(f"{full}.{name} is not available in this build of the library")
+    return fn
+
+
+def _continuable(m: to.Manipulator) -> None:
+    """The continuation's own limit, before anything is solved (a rest configuration of a long chain)."""
+    if m.n > DENSE_MAX:
+        raise to.InvalidParameterError(f"arclength continuation handles chains of up to {DENSE_MAX} segments, "
+                                       f"got n = {m.n}", field="n")
+
+
+def _seconds_left(deadline: float) -> float:
+    """The library ``timeout`` of a path computation with the soft ``deadline`` (``deps.path_deadline``)."""
+    return max(deadline - time.monotonic(), 1e-3)
+
+
+def build_control(c: Any) -> to.Control:
+    """The :class:`tensegrity_opt.Control` of a control request (``schemas.ControlIn``)."""
+    if c.kind == "displacement":
+        return to.Control.displacement(c.direction)
+    if c.kind == "load":
+        return to.Control.load(c.direction, c.base)
+    if c.kind == "guided":
+        return to.Control.guided(c.direction, c.base)
+    if c.kind == "wall":
+        return to.Control.wall(c.normal, c.direction, c.base)
+    return to.Control.preload(c.direction, tip=c.tip, load=c.load)
+
+
+def control_kwargs(c: Any) -> tuple[str, dict[str, Any]]:
+    """A control request as the kind and the constructor keywords (the ``control, **control_kw`` of the analyses)."""
+    return c.kind, c.model_dump(exclude={"kind"})
+
+
+def _start(m: to.Manipulator, start: Any, control: Any) -> Any:
+    """The library's ``start`` of a start request (``schemas.StartIn`` or None: the rest configuration)."""
+    if start is None:
+        _analysis("rest", "rest_configuration")       # trace_branch imports it itself
+        return None
+    if isinstance(start, s.StartQ):
+        return np.asarray(start.q, dtype=float)
+    if not (control.kind == "displacement" or (control.kind == "preload" and control.tip == "held")):
+        raise to.InvalidParameterError(
+            "a start {dx, dy} (the least-energy equilibrium with the tip held there) needs a control that holds the "
+            f"tip (displacement, or preload with tip 'held'); the {control.kind} control starts from joint angles "
+            "{q} or the rest configuration (null)", field="start")
+    return to.solve_equilibrium(m, start.dx, start.dy)
+
+
+def rest_configurations_task(req: s.RestConfigurationsRequest, timeout: float | None = None) -> dict[str, Any]:
+    """Every equilibrium under the dead load ``(fx, fy)`` (``analyses.rest.find_equilibria_under_force``);
+    ``timeout`` bounds the homotopy's external solver."""
+    m = build_manipulator(req.manipulator)
+    fn = _analysis("rest", "find_equilibria_under_force")
+    return fn(m, req.fx, req.fy, method=req.method, stable_only=req.stable_only, timeout=timeout).to_dict()
+
+
+def trace_branches(req: Any, deadline: float) -> to.Branch | list[to.Branch]:
+    """The branch of a branch request (``trace_branch``), or the bifurcation diagram (a list) of a request
+    with ``depth`` (``bifurcation_diagram``), within the soft ``deadline``."""
+    m = build_manipulator(req.manipulator)
+    _continuable(m)
+    ctl = build_control(req.control)
+    start = _start(m, req.start, req.control)
+    depth = getattr(req, "depth", None)
+    if depth is None:
+        return to.trace_branch(m, start, ctl, t_max=req.t_max, t_min=req.t_min, max_points=req.max_points,
+                               stop_at=req.stop_at, direction=req.direction, timeout=_seconds_left(deadline))
+    if getattr(req, "stop_at", None) is not None or getattr(req, "direction", 1) != 1:
+        raise to.InvalidParameterError("stop_at and direction belong to one branch: a bifurcation diagram (depth) "
+                                       "follows every branch both ways", field="stop_at"
+                                       if getattr(req, "stop_at", None) is not None else "direction")
+    return to.bifurcation_diagram(m, start, ctl, depth=req.depth, max_branches=req.max_branches,
+                                  timeout=_seconds_left(deadline), t_max=req.t_max, t_min=req.t_min,
+                                  max_points=req.max_points)
+
+
+def branch_task(req: s.BranchRequest, deadline: float) -> dict[str, Any]:
+    return trace_branches(req, deadline).to_dict()
+
+
+def bifurcation_diagram_task(req: s.BifurcationDiagramRequest, deadline: float) -> dict[str, Any]:
+    return {"branches": [b.to_dict() for b in trace_branches(req, deadline)]}
+
+
+def find_limit_load(req: Any, deadline: float) -> to.LimitLoad:
+    m = build_manipulator(req.manipulator)
+    _continuable(m)
+    if req.start is None:
+        _analysis("rest", "rest_configuration")       # limit_load imports it itself
+    start = None if req.start is None else np.asarray(req.start.q, dtype=float)
+    return to.limit_load(m, req.direction, req.boundary, req.max_load, start, max_points=req.max_points,
+                         timeout=_seconds_left(deadline))
+
+
+def limit_load_task(req: s.LimitLoadRequest, deadline: float) -> dict[str, Any]:
+    return find_limit_load(req, deadline).to_dict(include_branch=req.include_branch)
+
+
+def find_stability_boundary(req: Any, deadline: float) -> Any:
+    m = build_manipulator(req.manipulator)
+    _continuable(m)
+    fn = _analysis("boundaries", "stability_boundary")
+    kind, kw = control_kwargs(req.control)
+    return fn(m, kind, req.parameter, p_min=req.p_min, p_max=req.p_max, max_points=req.max_points,
+              timeout=_seconds_left(deadline), **kw)
+
+
+def stability_boundary_task(req: s.StabilityBoundaryRequest, deadline: float) -> dict[str, Any]:
+    return find_stability_boundary(req, deadline).to_dict()

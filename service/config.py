@@ -10,6 +10,7 @@ variable                               default    meaning
 ``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may run (504; its computation is stopped)
 ``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (``too_many_segments`` on ``method``)
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
+``TENSEGRITY_MAX_PATH_POINTS``         5000       most points of one branch (``max_points`` of the path endpoints)
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
 ``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: none, the solver threads)
@@ -68,6 +69,7 @@ from pydantic_settings import BaseSettings, NoDecode, SettingsConfigDict
 #: ``too_many_segments`` / ``batch_too_large`` answer what the document allows and the server not).
 HARD_MAX_SEGMENTS = 200
 HARD_MAX_BATCH = 1000
+HARD_MAX_PATH_POINTS = 5000
 
 
 def _split(value: Any) -> Any:
@@ -94,6 +96,11 @@ class Settings(BaseSettings):
         description="longest chain for which /v1/equilibria accepts method=homotopy (PHCpack; n = 4 takes "
                     "4-8 s, n = 5 one to two minutes: raise solve_timeout with it); 0: refused")
     batch_timeout: float = Field(60.0, gt=0, description="seconds one batch may run")
+    max_path_points: int = Field(
+        HARD_MAX_PATH_POINTS, ge=2, le=HARD_MAX_PATH_POINTS,
+        description="most points of one branch the path endpoints (/v1/branch, /v1/bifurcation-diagram, "
+                    "/v1/limit-load, /v1/stability-boundary and their figures) follow (max_points above: "
+                    "422 too_many_points)")
     workers: int = Field(2, ge=1, le=64, description="solver worker threads")
     inline_max_segments: int = Field(
         8, ge=0, le=64,

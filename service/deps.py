@@ -22,7 +22,7 @@ from .pool import SolveTimeout
 from .responses import JSONBody, ResponseTooLarge, render_task
 
 __all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch",
-           "check_curve_size", "solve", "solve_heavy", "is_heavy"]
+           "check_curve_size", "check_path_points", "path_deadline", "solve", "solve_heavy", "is_heavy"]
 
 api_key_header = APIKeyHeader(
     name="X-API-Key", auto_error=False, scheme_name="ApiKey",
@@ -94,6 +94,30 @@ def check_batch(req: s.BatchEquilibriumRequest, settings: Settings) -> None:
                            f"the batch has {len(req.targets)} targets; this server accepts at most "
                            f"{settings.max_batch}", field="targets",
                            details={"targets": len(req.targets), "max_batch": settings.max_batch})
+
+
+def check_path_points(max_points: int, settings: Settings) -> None:
+    """Refuse a branch of more points than ``settings.max_path_points`` (422 ``too_many_points``)."""
+    if max_points > settings.max_path_points:
+        raise ServiceError(422, "too_many_points",
+                           f"max_points = {max_points}; this server follows at most {settings.max_path_points} "
+                           "points per branch", field="max_points",
+                           details={"max_points": max_points, "max_path_points": settings.max_path_points})
+
+
+#: Seconds of the time limit a path computation leaves for its answer (rendering, the hand-off back):
+#: ``max(PATH_MARGIN, PATH_MARGIN_FRACTION * solve_timeout)``, at most half the limit.
+PATH_MARGIN = 0.5
+PATH_MARGIN_FRACTION = 0.1
+
+
+def path_deadline(settings: Settings) -> float:
+    """The ``time.monotonic()`` deadline of a continuation (``tensegrity_opt.trace_branch`` and the analyses
+    on it take ``timeout`` and answer the points computed so far, ``status: "time_limit"``): before the
+    request's time limit, so that the partial answer is sent instead of a 504. The task turns it into the
+    seconds left when it starts (time spent queued counts)."""
+    t = settings.solve_timeout
+    return time.monotonic() + max(t - max(PATH_MARGIN, PATH_MARGIN_FRACTION * t), 0.5 * t)
 
 
 async def solve(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext,

@@ -16,6 +16,7 @@ numerical failure outside the library's own checks     500     ``numerical_failu
                                                                the traceback; the library validates its
                                                                inputs first, so none is known)
 chain or batch over the configured limit               422     ``too_many_segments`` / ``batch_too_large``
+branch longer than the configured limit                422     ``too_many_points`` (``field``: ``max_points``)
 answer over ``max_response_bytes`` (estimated before   422     ``response_too_large`` (``field``: the input
 solving where possible, else counted while rendering)          setting the size, ``details.max_response_bytes``)
 missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
@@ -79,12 +80,16 @@ class FieldContext:
 
     ``manipulator``: ``"uniform"`` or ``"segments"`` (the request's form), or ``None``;
     ``segment``: the request has one ``segment`` (the torque endpoint);
-    ``index``: position of the target in a batch.
+    ``index``: position of the target in a batch;
+    ``aliases``: ``(library field, request path)`` pairs of a request whose inputs the library names
+    differently (the path endpoints: ``"q0"`` is ``"start.q"``, a control's ``"direction"`` is
+    ``"control.direction"``).
     """
 
     manipulator: str | None = None
     segment: bool = False
     index: int | None = None
+    aliases: tuple[tuple[str, str], ...] = ()
 
 
 _SEG = re.compile(r"^segments\[(\d+)\](.*)$")
@@ -97,6 +102,9 @@ def request_field(field: str | None, ctx: FieldContext) -> str | None:
         return None
     if field == "eq":
         return None
+    for name, path in ctx.aliases:
+        if field == name:
+            return path
     if ctx.segment and field.split("[")[0] in _PARAMS:
         return f"segment.{field}"
     if field == "n":

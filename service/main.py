@@ -30,11 +30,12 @@ from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware, MethodsMiddleware
 from .pool import SolverPool
 from .responses import SafeJSONResponse
-from .routes import batch, buckling, curves, design, equilibrium, landscape, ops, plots, segment, stiffness, web
+from .routes import (batch, buckling, curves, design, equilibrium, landscape, ops, paths, plots, segment, stiffness,
+                     web)
 from .routes import jobs as jobs_routes
 
 #: Routers behind the API key (when keys are configured) and the open ones (health, version, page).
-API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, plots, jobs_routes)
+API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, plots, jobs_routes)
 OPEN_ROUTERS = (ops, web)
 #: Seconds the job runner and the solver threads each get to stop at shutdown.
 SHUTDOWN_JOIN = 0.5
@@ -72,8 +73,11 @@ TAGS = [
     {"name": "landscape", "description": "Energy landscape of the 4-segment chain."},
     {"name": "batch", "description": "Many targets in one request (trajectories)."},
     {"name": "design", "description": "Design and control: strongest chain, preloads for a pose or a load."},
+    {"name": "paths", "description": "Loading paths: rest configurations, equilibrium branches by arclength "
+                                     "continuation, bifurcation diagrams, limit loads, stability boundaries."},
     {"name": "plots", "description": "Figures (PNG or SVG): force-deflection curves, energy landscapes, equilibrium "
-                                     "shapes, torque curves, critical-load maps."},
+                                     "shapes, torque curves, critical-load maps, branch diagrams, limit loads, "
+                                     "stability boundaries."},
     {"name": "jobs", "description": "Sweeps as background jobs, stored in SQLite and resumed after a restart."},
     {"name": "ops", "description": "Health, readiness, version and Prometheus metrics."},
 ]

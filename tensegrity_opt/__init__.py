@@ -13,6 +13,7 @@ Quick start::
 """
 
 from .analyses.all_equilibria import EquilibriumSet, find_equilibria
+from .analyses.branches import Branch, BranchEvent, Control, bifurcation_diagram, switch_branch, trace_branch
 from .analyses.buckling import Buckling, Mode, critical_force
 from .analyses.continuation import Tracker, solve_equilibria_batch
 from .analyses.curves import Curve, Jump, force_deflection
@@ -28,6 +29,7 @@ from .analyses.design import (
 from .analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
 from .analyses.landscape import Landscape, energy_landscape
 from .analyses.least_energy import solve_equilibrium
+from .analyses.limit_load import LimitLoad, limit_load
 from .analyses.rest import find_equilibria_under_force, rest_configuration
 from .analyses.stiffness import cartesian_stiffness
 from .applications.sweeps import SweepResult, sweep
@@ -59,6 +61,8 @@ __all__ = [
     "solve_equilibria_batch", "Tracker",
     "Buckling", "Mode", "critical_force",
     "Curve", "Jump", "force_deflection",
+    "Control", "Branch", "BranchEvent", "trace_branch", "switch_branch", "bifurcation_diagram",
+    "LimitLoad", "limit_load",
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "sweep", "SweepResult",

@@ -42,7 +42,10 @@ def test_every_operation_is_documented():
                 ("/healthz", "get"), ("/readyz", "get"), ("/version", "get"), ("/metrics", "get"),
                 ("/v1/design/critical-force", "post"), ("/v1/design/preloads", "post"),
                 ("/v1/design/preloads-for-load", "post"),
-                *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map")),
+                ("/v1/rest-configurations", "post"), ("/v1/branch", "post"), ("/v1/bifurcation-diagram", "post"),
+                ("/v1/limit-load", "post"), ("/v1/stability-boundary", "post"),
+                *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map", "branch",
+                                                             "limit-load", "boundary")),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
                 ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/cancel", "post"),
                 ("/v1/jobs/{job_id}/results", "get")}

@@ -1,4 +1,4 @@
-"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map}`` answering PNG or SVG.
+"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,boundary}`` answering PNG or SVG.
 
 Each route validates its request, then draws the figure in the solver pool (the library call
 and matplotlib's rendering are both CPU-bound) and answers the bytes: ``image/png`` by
@@ -10,6 +10,7 @@ Drawing uses :mod:`tensegrity_opt.applications.plots` (matplotlib objects only, 
 from __future__ import annotations
 
 import copy
+from dataclasses import replace
 from typing import Annotated, Any
 
 import numpy as np
@@ -17,15 +18,16 @@ from fastapi import APIRouter, Body, Depends, Request
 from starlette.responses import Response
 
 from .. import examples as ex
-from ..compute import build_manipulator, build_segment, deflections
+from ..compute import (BRANCH_ALIASES, LIMIT_LOAD_ALIASES, build_manipulator, build_segment, deflections,
+                       find_limit_load, find_stability_boundary, trace_branches)
 from ..config import Settings
-from ..deps import check_manipulator, get_settings_dep, is_heavy, solve
+from ..deps import check_manipulator, check_path_points, get_settings_dep, is_heavy, path_deadline, solve
 from ..errors import FieldContext
 from ..schemas import plots as ps
 from . import SOLVE_ERRORS, error_responses
 
 __all__ = ["router", "negotiate", "plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task",
-           "plot_map_task"]
+           "plot_map_task", "plot_branch_task", "plot_limit_load_task", "plot_boundary_task"]
 
 router = APIRouter(prefix="/v1/plots", tags=["plots"])
 
@@ -128,6 +130,27 @@ def plot_map_task(req: ps.PlotMapRequest, fmt: str) -> bytes:
     m = build_manipulator(req.manipulator)
     fig = plots.plot_map(m, req.param_x, _values(req.values_x), req.param_y, _values(req.values_y), req.boundary)
     return _image(fig, fmt, req.dpi)
+
+
+def plot_branch_task(req: ps.PlotBranchRequest, fmt: str, deadline: float) -> bytes:
+    from tensegrity_opt.applications import plots
+
+    m = build_manipulator(req.manipulator)
+    return _image(plots.plot_branches(trace_branches(req, deadline), x=req.x, y=req.y, m=m), fmt, req.dpi)
+
+
+def plot_limit_load_task(req: ps.PlotLimitLoadRequest, fmt: str, deadline: float) -> bytes:
+    from tensegrity_opt.applications import plots
+
+    return _image(plots.plot_limit_load(find_limit_load(req, deadline)), fmt, req.dpi)
+
+
+def plot_boundary_task(req: ps.PlotBoundaryRequest, fmt: str, deadline: float) -> bytes:
+    from tensegrity_opt.applications import plots
+
+    m = build_manipulator(req.manipulator)
+    b = find_stability_boundary(req, deadline)
+    return _image(plots.plot_boundary(b, m=m, control=req.control.kind), fmt, req.dpi)
 
 
 # ---------------------------------------------------------------------------- documentation
@@ -264,3 +287,77 @@ async def plot_map(
     ctx = check_manipulator(req.manipulator, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
     return _reply(await solve(request, plot_map_task, req, fmt, ctx=ctx), fmt, "map")
+
+
+_STRAIGHT = {"q": [0.0, 0.0, 0.0, 0.0]}
+_GUIDED = {"kind": "guided", "direction": [-1.0, 0.0]}
+_PARTIAL = ("The continuation stops shortly before the server's time limit and draws what it has (the title says "
+            "so). ")
+
+
+@router.post(
+    "/branch", operation_id="plot_branch", response_class=Response, response_model=None,
+    summary="Figure: branch diagram, coloured by Morse index, events marked",
+    description="`y` against `x` along the branch of `/v1/branch` (or, with `depth`, every branch of "
+                "`/v1/bifurcation-diagram`; `stop_at` and `direction` are for one branch only): stable pieces "
+                "solid, unstable ones dashed and coloured by their Morse index, folds, branch points and joint "
+                "limits marked, the legend beside the axes, the axes in the caller's units. " + _PARTIAL + _FORMATS,
+    responses=image_responses("continuation_too_long", "bad_start", "too_many_points", "no_equilibrium"))
+async def plot_branch(
+    request: Request,
+    req: Annotated[ps.PlotBranchRequest, Body(openapi_examples={
+        "guided": {"summary": "the paper's chain, guided: Fy against t with the three branch points", "value": {
+            "manipulator": ex.PAPER_CHAIN, "start": _STRAIGHT, "control": _GUIDED, "t_max": 2.0, "x": "t",
+            "y": "fy"}},
+        "diagram": {"summary": "the bifurcation diagram, t against q1, as SVG", "value": {
+            "manipulator": ex.PAPER_CHAIN, "start": _STRAIGHT, "control": _GUIDED, "t_max": 2.0, "t_min": -0.2,
+            "depth": 1, "max_points": 200, "x": "q1", "y": "t", "format": "svg"}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Response:
+    ctx = replace(check_manipulator(req.manipulator, settings), aliases=BRANCH_ALIASES)
+    check_path_points(req.max_points, settings)
+    fmt = negotiate(req.format, request.headers.get("accept"))
+    return _reply(await solve(request, plot_branch_task, req, fmt, path_deadline(settings), ctx=ctx, heavy=True),
+                  fmt, "branch")
+
+
+@router.post(
+    "/limit-load", operation_id="plot_limit_load", response_class=Response, response_model=None,
+    summary="Figure: the load path of a limit load, the limit point and quasi-buckling load marked",
+    description="The load `t` against the tip displacement along it on the path of `/v1/limit-load`, in pieces of "
+                "constant Morse index, with the limit point (fold or bifurcation) or the path's end, and the "
+                "quasi-buckling load as a dotted level. " + _PARTIAL + _FORMATS,
+    responses=image_responses("continuation_too_long", "bad_start", "too_many_points"))
+async def plot_limit_load(
+    request: Request,
+    req: Annotated[ps.PlotLimitLoadRequest, Body(openapi_examples={
+        "guided": {"summary": "the paper's chain, guided: the bifurcation at 0.572793", "value": {
+            "manipulator": ex.PAPER_CHAIN, "direction": [-1.0, 0.0], "boundary": "guided", "start": _STRAIGHT}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Response:
+    ctx = replace(check_manipulator(req.manipulator, settings), aliases=LIMIT_LOAD_ALIASES)
+    check_path_points(req.max_points, settings)
+    fmt = negotiate(req.format, request.headers.get("accept"))
+    return _reply(await solve(request, plot_limit_load_task, req, fmt, path_deadline(settings), ctx=ctx,
+                              heavy=True), fmt, "limit-load")
+
+
+@router.post(
+    "/boundary", operation_id="plot_boundary", response_class=Response, response_model=None,
+    summary="Figure: a stability boundary, critical t against the second parameter, cusps marked",
+    description="The boundary of `/v1/stability-boundary` drawn as `t` against `p`, its cusps marked. " + _PARTIAL
+                + _FORMATS,
+    responses=image_responses("continuation_too_long", "too_many_points"))
+async def plot_boundary(
+    request: Request,
+    req: Annotated[ps.PlotBoundaryRequest, Body(openapi_examples={
+        "guided": {"summary": "the paper's chain, guided, over the asymmetry", "value": {
+            "manipulator": ex.PAPER_CHAIN, "control": _GUIDED, "parameter": "asymmetry", "p_min": -0.1,
+            "p_max": 0.1}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Response:
+    ctx = replace(check_manipulator(req.manipulator, settings), aliases=BRANCH_ALIASES)
+    check_path_points(req.max_points, settings)
+    fmt = negotiate(req.format, request.headers.get("accept"))
+    return _reply(await solve(request, plot_boundary_task, req, fmt, path_deadline(settings), ctx=ctx, heavy=True),
+                  fmt, "boundary")

@@ -31,6 +31,7 @@ class Limits(BaseModel):
     max_body_bytes: int
     max_response_bytes: int = Field(description="largest JSON answer (422 response_too_large above)")
     max_curve_points: int
+    max_path_points: int = Field(description="most points per branch of the path endpoints (422 too_many_points)")
     max_grid: int
     max_torque_points: int
 

@@ -12,6 +12,7 @@ from typing import Annotated, Any, Literal, Union
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 from . import common as s
+from .paths import MAX_BRANCHES, MAX_DEPTH, StabilityBoundaryRequest, _BranchFields, _LimitLoadFields
 
 #: Most points per axis of a critical-load map (each point is one eigen-solve).
 MAX_MAP_AXIS = 41
@@ -150,3 +151,46 @@ class PlotMapRequest(_PlotRequest):
     values_y: DesignValues
     boundary: Literal["guided", "free"] = Field(
         "guided", description='"guided": tip held at dy = 0 (the paper); "free": cantilever')
+
+
+# ---------------------------------------------------------------------------- loading paths
+#: Quantities a branch diagram puts on an axis (``tensegrity_opt.applications.plots.BRANCH_QUANTITIES``)
+#: and ``q1``, ``q2``, ... (a joint angle, 1-based).
+BranchQuantity = Annotated[str, Field(pattern=r"^(t|fx|fy|dx|dy|x|y|u|energy|s|q[1-9][0-9]{0,2})$")]
+
+
+class PlotBranchRequest(_PlotRequest, _BranchFields):
+    """A branch diagram: one branch (`/v1/branch`), or with `depth` the bifurcation diagram
+    (`/v1/bifurcation-diagram`), drawn `y` against `x` in pieces of constant Morse index."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "start": {"q": [0.0, 0.0, 0.0, 0.0]},
+                      "control": {"kind": "guided", "direction": [-1.0, 0.0]}, "t_max": 2.0, "x": "t", "y": "fy"}]})
+
+    stop_at: Literal["stability_loss", "event"] | None = Field(
+        None, description="one branch only: stop after the first event where stability is lost, or any event")
+    direction: Annotated[Literal[1, -1], BeforeValidator(s.integral)] = Field(
+        1, description="one branch only: leave the start with t increasing (1) or decreasing (-1)")
+    depth: Annotated[int, Field(ge=0, le=MAX_DEPTH), BeforeValidator(s.integral)] | None = Field(
+        None, description=f"null: one branch; a number: the bifurcation diagram to this many switches (0..{MAX_DEPTH})")
+    max_branches: s.Int = Field(24, ge=1, le=MAX_BRANCHES, description="with depth: at most this many branches")
+    x: BranchQuantity = Field("t", description="horizontal axis: t, fx, fy, dx, dy, x, y (tip), u (tip displacement "
+                                               "along the control direction), energy, s (arclength) or q1..qn")
+    y: BranchQuantity = Field("fx", description="vertical axis, as x")
+
+
+class PlotLimitLoadRequest(_PlotRequest, _LimitLoadFields):
+    """The load path of `/v1/limit-load`: load against the tip displacement along it, the limit point and the
+    quasi-buckling load marked."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "direction": [-1.0, 0.0], "boundary": "guided",
+                      "start": {"q": [0.0, 0.0, 0.0, 0.0]}}]})
+
+
+class PlotBoundaryRequest(_PlotRequest, StabilityBoundaryRequest):
+    """The stability boundary of `/v1/stability-boundary`: critical t against p, cusps marked."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "control": {"kind": "guided", "direction": [-1.0, 0.0]},
+                      "parameter": "asymmetry", "p_min": -0.1, "p_max": 0.1}]})

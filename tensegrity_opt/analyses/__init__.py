@@ -11,6 +11,11 @@
 * :mod:`.seeds` - starting points for the global search (modes, mirrors, wells, random projections);
 * :mod:`.continuation` - equilibria followed along a sequence of targets (batches, the Tracker, curve branches);
 * :mod:`.curves` - force-deflection curves, jumps, branches;
+* :mod:`.branches` - equilibrium branches by pseudo-arclength continuation under a control (a tip
+  displacement, a dead or guided load, a wall, preloads): events (folds, branch points, joint limits),
+  branch switching, bifurcation diagrams;
+* :mod:`.limit_load` - the load at which the dead-load path from a rest configuration loses stability
+  (fold or bifurcation), the quasi-buckling load of a smooth path;
 * :mod:`.stiffness` - the Cartesian tangent stiffness;
 * :mod:`.landscape` - the energy over two joint angles;
 * :mod:`.design` - optimal designs and preloads (maximise the critical load, choose preloads).

@@ -1,4 +1,5 @@
-"""Figures (matplotlib, Agg canvas): curves, landscapes, shapes, torque curves and critical-load maps.
+"""Figures (matplotlib, Agg canvas): curves, landscapes, shapes, torque curves, critical-load maps and the
+loading paths (branch diagrams, limit loads, stability boundaries).
 
 Every ``plot_*`` function computes its data with the library and returns a
 :class:`matplotlib.figure.Figure` on an Agg canvas; :func:`save` writes it as PNG or SVG
@@ -21,7 +22,19 @@ function                  figure
 :func:`plot_torque`       torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2)
 :func:`plot_map`          critical load ``P = -Fx0`` over two design parameters (blank where
                           :func:`~tensegrity_opt.critical_force` raises)
+:func:`plot_branches`     branch diagrams of :func:`~tensegrity_opt.trace_branch` /
+                          :func:`~tensegrity_opt.bifurcation_diagram`: pieces coloured by Morse index
+                          (stable solid, unstable dashed), folds / branch points / joint limits marked
+:func:`plot_limit_load`   the load path of :func:`~tensegrity_opt.limit_load` (load against the tip
+                          displacement along it), the limit point and the quasi-buckling load marked
+:func:`plot_boundary`     a stability boundary (critical ``t`` against the second parameter ``p``),
+                          cusps marked
 ========================  ===================================================================
+
+Every figure is drawn in the caller's units (forces ``stiffness x length``, energies
+``stiffness x length^2``, lengths, angles in rad), and the axes say so; the loading-path figures put
+their legend beside the axes (a figure legend: it never covers the data) and the chain's
+parameters in the title (:func:`chain_label`).
 
 The plotted data are the library's numbers, unchanged. Artists carry stable ``gid`` values so
 that they can be found again (tests read the data back from them):
@@ -36,7 +49,11 @@ that they can be found again (tests read the data back from them):
 * shapes: per panel ``"triangle-<i>-<0|1>"`` (proximal/distal triangle of segment ``i``),
   ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``;
   the axes' gid is ``"equilibrium-<k>"``;
-* torque: ``"torque-<k>"``; map: ``"critical-load"`` (QuadMesh, array ``P[iy, ix]``).
+* torque: ``"torque-<k>"``; map: ``"critical-load"`` (QuadMesh, array ``P[iy, ix]``);
+* branches: ``"branch-<b>-morse<k>-<j>"`` (branch ``b``'s ``j``-th piece, of Morse index ``k``),
+  ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"``; limit load:
+  ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"``, ``"quasi-buckling-level"``,
+  ``"path-end"``; boundary: ``"boundary"``, ``"cusps"``.
 """
 
 from __future__ import annotations
@@ -60,7 +77,9 @@ from ..model.segment import Segment
 
 __all__ = ["chain_geometry", "plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "save",
            "render", "landscape_span", "critical_load_grid", "curve_breaks", "physical_range",
-           "segment_label", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS"]
+           "segment_label", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS", "plot_branches", "plot_limit_load",
+           "plot_boundary", "chain_label", "branch_quantity_label", "morse_color", "BRANCH_QUANTITIES",
+           "MORSE_COLORS", "EVENT_STYLES"]
 
 #: File suffix / format name -> MIME type.
 FORMATS = {"png": "image/png", "svg": "image/svg+xml"}
@@ -616,4 +635,424 @@ def plot_map(m: Manipulator, param_x: str, values_x: Any, param_y: str, values_y
     blank = int(np.count_nonzero(~np.isfinite(P)))
     ax.set_title(f"Critical load, n = {m.n}" + (f" (blank: {blank} points where the straight chain is not a "
                                                 "stable equilibrium)" if blank else ""), fontsize=9)
+    return fig
+
+
+# ---------------------------------------------------------------------------- loading paths
+#: Quantities :func:`plot_branches` puts on an axis (and ``"q<i>"``, the 1-based joint angle ``q_i``).
+BRANCH_QUANTITIES = ("t", "fx", "fy", "dx", "dy", "x", "y", "u", "energy", "s")
+
+#: Colour of a branch piece by its Morse index (index 0, stable: solid; the others dashed); beyond: the last.
+MORSE_COLORS = ("tab:blue", "tab:orange", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:gray")
+
+#: Marker style of each kind of branch event.
+EVENT_STYLES = {
+    "fold": {"marker": "D", "ms": 6.5, "mfc": "tab:red", "mec": "black", "label": "fold (limit point)"},
+    "branch_point": {"marker": "o", "ms": 7.0, "mfc": "white", "mec": "black", "mew": 1.4,
+                     "label": "branch point (bifurcation)"},
+    "joint_limit": {"marker": "X", "ms": 7.5, "mfc": "0.35", "mec": "black", "label": "joint limit (end)"},
+}
+
+#: Axis label units: forces are stiffness x length, energies stiffness x length^2 (the caller's units).
+FORCE_UNIT = "stiffness × length"
+ENERGY_UNIT = "stiffness × length²"
+
+
+def morse_color(index: int) -> str:
+    """:data:`MORSE_COLORS` entry of a Morse index."""
+    return MORSE_COLORS[min(max(int(index), 0), len(MORSE_COLORS) - 1)]
+
+
+def chain_label(m: Manipulator) -> str:
+    """``"n = 4, a = 1, b = 1, k = 1, L0 = 1"``: the chain's parameters for a title; a parameter that
+    differs between segments is given as its range (``"k = 0.5..2"``)."""
+    parts = [f"n = {m.n}"]
+    for p in MAP_PARAMS:
+        vals = [getattr(s, p) for s in m.segments]
+        if all(v == vals[0] for v in vals):
+            parts.append(f"{p} = {_fmt(vals[0])}")
+        else:
+            flat = [float(x) for v in vals for x in (v if isinstance(v, tuple) else (v,))]
+            parts.append(f"{p} = {min(flat):g}..{max(flat):g}")
+    return ", ".join(parts)
+
+
+def _control_text(control: Any) -> str:
+    """A control (a :class:`~tensegrity_opt.Control` or its kind) in words, for a title."""
+    kind = control if isinstance(control, str) else getattr(control, "kind", str(control))
+    d = getattr(control, "direction", None)
+    vec = "" if d is None or np.size(d) != 2 else f" along ({float(d[0]):.3g}, {float(d[1]):.3g})"
+    if kind == "displacement":
+        return f"tip displacement{vec}"
+    if kind == "load":
+        return f"dead tip load{vec}"
+    if kind == "guided":
+        return f"guided tip (y held), load{vec}"
+    if kind == "wall":
+        nu = getattr(control, "normal", None)
+        where = "" if nu is None else f" of normal ({float(nu[0]):.3g}, {float(nu[1]):.3g})"
+        return f"tip on a wall{where}, load{vec}"
+    if kind == "preload":
+        return f"rest lengths moved (tip {getattr(control, 'tip', 'free')})"
+    return str(kind)
+
+
+def _t_label(control: Any) -> str:
+    kind = control if isinstance(control, str) else getattr(control, "kind", None)
+    if kind == "displacement":
+        return "t: tip displacement along the control direction (length)"
+    if kind == "preload":
+        return "t: rest-length change along the preload direction (length)"
+    if kind in ("load", "guided", "wall"):
+        return f"t: load magnitude (force, {FORCE_UNIT})"
+    return "t: control parameter (a force for a load control, a length for a displacement)"
+
+
+def branch_quantity_label(name: str, control: Any = None) -> str:
+    """The axis label (quantity and unit) of a :data:`BRANCH_QUANTITIES` name or ``"q<i>"``."""
+    guided = getattr(control, "kind", None) in ("guided", "wall")
+    labels = {
+        "t": _t_label(control),
+        "fx": f"tip force $F_x$ ({FORCE_UNIT})",
+        "fy": f"tip force $F_y${' (reaction of the guide)' if guided else ''} ({FORCE_UNIT})",
+        "dx": "tip deflection $\\delta_x$ (length)",
+        "dy": "tip deflection $\\delta_y$ (length)",
+        "x": "tip $x$ (length)",
+        "y": "tip $y$ (length)",
+        "u": "tip displacement along the control direction $u$ (length)",
+        "energy": f"elastic energy $E$ ({ENERGY_UNIT})",
+        "s": "arclength $s$ (normalised: rad, $F / (k c^2 / 2b)$, length / $2b$)",
+    }
+    if name in labels:
+        return labels[name]
+    return f"joint angle $q_{{{name[1:]}}}$ (rad)"
+
+
+def _check_quantity(name: Any, n: int, field: str) -> str:
+    if isinstance(name, str) and name in BRANCH_QUANTITIES:
+        return name
+    if isinstance(name, str) and name.startswith("q") and name[1:].isdigit() and 1 <= int(name[1:]) <= n:
+        return name
+    raise InvalidParameterError(f"{field} must be one of {', '.join(BRANCH_QUANTITIES)} or q1..q{n}, got {name!r}",
+                                field=field)
+
+
+def _direction_of_u(control: Any) -> tuple[np.ndarray, bool]:
+    """The unit vector ``u`` is measured along, and whether it is in deflection ``(dx, dy)`` space."""
+    kind = getattr(control, "kind", None)
+    if kind == "displacement":
+        return np.asarray(control.direction, float), True
+    if kind in ("load", "guided", "wall"):
+        return np.asarray(control.direction, float), False
+    if kind == "preload":
+        load = np.asarray(control.base, float)
+        nrm = float(np.linalg.norm(load))
+        if nrm > 0.0:
+            return load / nrm, False
+    raise InvalidParameterError("u (the tip displacement along the control direction) needs a displacement or load "
+                                "control, or a preload control under a tip load", field="x")
+
+
+def _quantity(name: str, br: Any, t: np.ndarray, q: np.ndarray, force: np.ndarray, tip: np.ndarray,
+              energy: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """``name`` at the points ``(t, q, force, tip, energy, s)`` of branch ``br`` (arrays over points)."""
+    L = float(br.straight_length)
+    if name == "t":
+        return t
+    if name == "fx":
+        return force[:, 0]
+    if name == "fy":
+        return force[:, 1]
+    if name == "dx":
+        return L - tip[:, 0]
+    if name == "dy":
+        return tip[:, 1]
+    if name == "x":
+        return tip[:, 0]
+    if name == "y":
+        return tip[:, 1]
+    if name == "energy":
+        return energy
+    if name == "s":
+        return s
+    if name == "u":
+        d, deflection = _direction_of_u(br.control)
+        tip0 = br.tip[0]
+        if deflection:
+            return (np.column_stack([L - tip[:, 0], tip[:, 1]]) - np.array([L - tip0[0], tip0[1]])) @ d
+        return (tip - tip0) @ d
+    return q[:, int(name[1:]) - 1]
+
+
+def _branch_xy(br: Any, name: str) -> np.ndarray:
+    return _quantity(name, br, br.t, br.q, br.force, br.tip, br.energy, br.s)
+
+
+def _event_xy(br: Any, e: Any, name: str) -> float:
+    if name == "s":
+        i = min(int(e.index), len(br) - 1)
+        j = min(i + 1, len(br) - 1)
+        da, db = float(np.linalg.norm(e.q - br.q[i])), float(np.linalg.norm(br.q[j] - e.q))
+        frac = da / (da + db) if da + db > 0 else 0.0
+        return float(br.s[i] + frac * (br.s[j] - br.s[i]))
+    return float(_quantity(name, br, np.array([e.t]), e.q[None, :], np.asarray(e.force)[None, :],
+                           np.asarray(e.tip)[None, :], np.array([e.energy]), np.array([np.nan]))[0])
+
+
+def _morse_runs(br: Any, xname: str, yname: str) -> list[tuple[int, np.ndarray, np.ndarray]]:
+    """The pieces of constant Morse index of a branch: ``(index, x, y)``. Neighbouring pieces meet at the
+    event located between them (or, where none was located, at the next piece's first point)."""
+    X, Y = _branch_xy(br, xname), _branch_xy(br, yname)
+    idx = np.asarray(br.morse_index, dtype=int)
+    P = idx.size
+    if P == 0:
+        return []
+    starts = [0, *(np.flatnonzero(idx[1:] != idx[:-1]) + 1).tolist()]
+    ends = [s - 1 for s in starts[1:]] + [P - 1]
+    located = [e for e in br.events if e.kind != "joint_limit"]
+    out = []
+    for a, b in zip(starts, ends):
+        xs, ys = list(X[a:b + 1]), list(Y[a:b + 1])
+        before = [e for e in located if e.index == a - 1 and e.morse_after == idx[a]]
+        if before:
+            xs.insert(0, _event_xy(br, before[-1], xname))
+            ys.insert(0, _event_xy(br, before[-1], yname))
+        if b + 1 < P:
+            after = [e for e in located if e.index == b and e.morse_before == idx[b]]
+            if after:
+                xs.append(_event_xy(br, after[0], xname))
+                ys.append(_event_xy(br, after[0], yname))
+            else:
+                xs.append(float(X[b + 1]))
+                ys.append(float(Y[b + 1]))
+        out.append((int(idx[a]), np.asarray(xs, float), np.asarray(ys, float)))
+    return out
+
+
+def _as_branches(branches: Any) -> list:
+    from ..analyses.branches import Branch
+
+    items = [branches] if isinstance(branches, Branch) else list(branches)
+    if not items:
+        raise InvalidParameterError("plot_branches needs at least one branch", field="branches")
+    for i, b in enumerate(items):
+        if not isinstance(b, Branch):
+            raise InvalidParameterError(f"branches[{i}] must be a Branch, got {type(b).__name__}",
+                                        field=f"branches[{i}]")
+    return items
+
+
+def _manipulator_of(obj: Any) -> Manipulator | None:
+    prob = getattr(obj, "_problem", None)
+    m = getattr(prob, "m", None)
+    if isinstance(m, Manipulator):
+        return m
+    for name in ("manipulator", "m"):
+        m = getattr(obj, name, None)
+        if isinstance(m, Manipulator):
+            return m
+    return None
+
+
+def _outside_legend(ax: Any, handles: list, labels: list) -> None:
+    """The figure's legend beside the axes (right, outside: constrained layout makes room), so that it
+    never covers the data."""
+    if handles:
+        ax.figure.legend(handles, labels, fontsize=7, loc="outside right upper", frameon=False)
+
+
+def _draw_runs(ax: Any, runs: list, gid: str, zorder: float = 3.0) -> set[int]:
+    seen: set[int] = set()
+    for j, (k, xs, ys) in enumerate(runs):
+        line, = ax.plot(xs, ys, color=morse_color(k), lw=1.8 if k == 0 else 1.4, ls="-" if k == 0 else "--",
+                        zorder=zorder)
+        line.set_gid(f"{gid}-morse{k}-{j}")
+        seen.add(k)
+    return seen
+
+
+def _morse_handles(indices: set[int]) -> tuple[list, list]:
+    from matplotlib.lines import Line2D
+
+    hs, ls = [], []
+    for k in sorted(indices):
+        hs.append(Line2D([], [], color=morse_color(k), lw=1.8 if k == 0 else 1.4, ls="-" if k == 0 else "--"))
+        ls.append("stable (Morse index 0)" if k == 0 else f"unstable, Morse index {k}")
+    return hs, ls
+
+
+def plot_branches(branches: Any, *, x: str = "t", y: str = "fx", m: Manipulator | None = None,
+                  title: str | None = None, figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
+    """Branch diagram of :func:`~tensegrity_opt.trace_branch` / :func:`~tensegrity_opt.bifurcation_diagram`.
+
+    Each branch is drawn ``y`` against ``x`` in pieces of constant Morse index: stable (index 0) solid
+    blue, unstable dashed and coloured by the index (:data:`MORSE_COLORS`); neighbouring pieces meet at
+    the event located between them. Events are marked on top: folds (filled diamonds), branch points
+    (open circles), joint limits (crosses). The legend sits beside the axes (it never covers data);
+    the axes say the quantity and its unit in the caller's units (forces ``stiffness x length``,
+    lengths, energies ``stiffness x length^2``, angles rad; nothing is normalised but the arclength
+    ``s``); the title names the control and the chain's parameters.
+
+    Parameters
+    ----------
+    branches : Branch or iterable of Branch
+    x, y : str
+        :data:`BRANCH_QUANTITIES` (``t`` the control parameter, ``fx``/``fy`` the tip force, ``dx``/``dy``
+        the deflection, ``x``/``y`` the tip, ``u`` the tip displacement along the control direction
+        from the start, ``energy``, ``s``) or ``"q<i>"`` (joint ``i``, 1-based).
+    m : Manipulator, optional
+        For the title; default the branches' own chain.
+
+    Artists (``gid``): ``"branch-<b>-morse<k>-<j>"`` (branch ``b``, its ``j``-th piece, Morse index
+    ``k``), ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"`` (every event of that
+    kind over all branches, in order).
+    """
+    items = _as_branches(branches)
+    n = items[0].q.shape[1]
+    x = _check_quantity(x, n, "x")
+    y = _check_quantity(y, n, "y")
+    m = m if m is not None else _manipulator_of(items[0])
+    from matplotlib.lines import Line2D
+
+    fig = _new_figure(figsize)
+    ax = fig.subplots()
+    if y in ("t", "fx", "fy", "energy") or x in ("fx", "fy"):
+        ax.axhline(0.0, color="0.85", lw=0.8, zorder=0)
+    indices: set[int] = set()
+    for b, br in enumerate(items):
+        indices |= _draw_runs(ax, _morse_runs(br, x, y), f"branch-{b}")
+    handles, labels = _morse_handles(indices)
+    counts = {}
+    for kind, style in EVENT_STYLES.items():
+        pts = [(_event_xy(br, e, x), _event_xy(br, e, y)) for br in items for e in br.events if e.kind == kind]
+        counts[kind] = len(pts)
+        if not pts:
+            continue
+        arr = np.array(pts, dtype=float)
+        kw = {k: v for k, v in style.items() if k != "label"}
+        line, = ax.plot(arr[:, 0], arr[:, 1], ls="none", zorder=6, **kw)
+        line.set_gid(f"events-{kind}")
+        handles.append(Line2D([], [], ls="none", **kw))
+        labels.append(f"{style['label']} ({len(pts)})")
+    ax.set_xlabel(branch_quantity_label(x, items[0].control))
+    ax.set_ylabel(branch_quantity_label(y, items[0].control))
+    ax.grid(True, lw=0.4, alpha=0.5)
+    _outside_legend(ax, handles, labels)
+    if title is None:
+        what = f"{len(items)} branches" if len(items) > 1 else "Equilibrium branch"
+        title = f"{what}: {_control_text(items[0].control)}" + (f"\n{chain_label(m)}" if m is not None else "")
+    ax.set_title(title, fontsize=9)
+    return fig
+
+
+def plot_limit_load(result: Any, *, m: Manipulator | None = None, figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
+    """The load path of :func:`~tensegrity_opt.limit_load`: the load ``t`` against the tip displacement along
+    the load ``u = d . (tip - tip_0)`` (guided: ``y`` is held, so ``u = d_x (x - x_0)``), in pieces of constant Morse
+    index as :func:`plot_branches`, with the limit point marked (a fold: snap-through; a bifurcation: the
+    branch point) and the quasi-buckling load (the least tangent stiffness along the load) as a dotted
+    level with its point; a path that ends without a limit marks its end (a joint limit, ``max_load``).
+
+    Artists (``gid``): ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"`` (the point),
+    ``"quasi-buckling-level"`` (the horizontal line), ``"path-end"``.
+    """
+    from ..analyses.limit_load import LimitLoad
+
+    if not isinstance(result, LimitLoad):
+        raise InvalidParameterError(f"plot_limit_load needs a LimitLoad, got {type(result).__name__}", field="result")
+    br = result.branch
+    m = m if m is not None else _manipulator_of(br)
+    d = np.asarray(result.direction, float)
+    fig = _new_figure(figsize)
+    ax = fig.subplots()
+    ax.axhline(0.0, color="0.85", lw=0.8, zorder=0)
+    U, T = _branch_xy(br, "u"), br.t
+    lost = next((e for e in br.events if e.stability == "lost"), None)
+    runs = _morse_runs(br, "u", "t")
+    indices = _draw_runs(ax, [r for r in runs if r[1].size], "path")
+    from matplotlib.lines import Line2D
+
+    handles, labels = _morse_handles(indices)
+    if result.kind != "none" and result.load is not None:
+        ue = _event_xy(br, lost, "u") if lost is not None else float(U[-1])
+        style = EVENT_STYLES["fold" if result.kind == "fold" else "branch_point"]
+        kw = {k: v for k, v in style.items() if k != "label"}
+        pt, = ax.plot([ue], [result.load], ls="none", zorder=7, **kw)
+        pt.set_gid("limit-point")
+        handles.append(Line2D([], [], ls="none", **kw))
+        labels.append(f"limit load P = {result.load:.6g} ({'fold: snap-through' if result.kind == 'fold' else 'bifurcation'})")
+    else:
+        pt, = ax.plot([float(U[-1])], [float(T[-1])], ls="none", marker="s", ms=6, mfc="white", mec="black", zorder=7)
+        pt.set_gid("path-end")
+        handles.append(Line2D([], [], ls="none", marker="s", ms=6, mfc="white", mec="black"))
+        labels.append(f"end of the path ({result.reason})")
+    if result.quasi_buckling_load is not None:
+        qb = float(result.quasi_buckling_load)
+        lev = ax.axhline(qb, color="tab:green", ls=":", lw=1.2, zorder=1)
+        lev.set_gid("quasi-buckling-level")
+        stable = np.asarray(br.stable, bool)
+        ok = stable & np.isfinite(U) & np.isfinite(T)
+        order = np.argsort(T[ok])
+        uq = float(np.interp(qb, T[ok][order], U[ok][order])) if ok.sum() >= 2 else float("nan")
+        pt, = ax.plot([uq], [qb], ls="none", marker="*", ms=11, mfc="tab:green", mec="black", zorder=7)
+        pt.set_gid("quasi-buckling")
+        handles.append(Line2D([], [], ls=":", color="tab:green", marker="*", ms=9, mfc="tab:green", mec="black"))
+        labels.append(f"quasi-buckling load {qb:.6g} (least tangent stiffness)")
+    ax.set_xlabel("tip displacement along the load $u = d \\cdot (\\mathrm{tip} - \\mathrm{tip}_0)$ (length)")
+    ax.set_ylabel(f"load $t = |F|$ along $d$ (force, {FORCE_UNIT})")
+    ax.grid(True, lw=0.4, alpha=0.5)
+    _outside_legend(ax, handles, labels)
+    head = (f"Limit load: {result.kind}" + (f" at P = {result.load:.6g}" if result.load is not None else
+                                             f" ({result.reason})")
+            + f"; {result.boundary} tip, load along ({d[0]:.3g}, {d[1]:.3g})")
+    ax.set_title(head + (f"\n{chain_label(m)}" if m is not None else ""), fontsize=9)
+    return fig
+
+
+def plot_boundary(boundary: Any, *, m: Manipulator | None = None, control: Any = None,
+                  figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
+    """A stability boundary (:func:`tensegrity_opt.analyses.boundaries.stability_boundary`): the critical ``t``
+    (a fold or a branch point of the one-parameter branches) against the second parameter ``p``, with the
+    cusps marked. Takes any object with the attributes ``kind``, ``parameter``, ``p``, ``t`` and ``cusps``
+    (each with ``.p``, ``.t``), ``status``, ``success``. ``m`` (the chain) and ``control`` (a
+    :class:`~tensegrity_opt.Control` or its kind: the unit of ``t``) are for the labels; by default the
+    boundary's own ``manipulator`` / ``control`` attributes when it has them.
+
+    Artists (``gid``): ``"boundary"`` (the curve ``(p, t)``), ``"cusps"`` (the cusp points).
+    """
+    for name in ("kind", "parameter", "p", "t", "cusps"):
+        if not hasattr(boundary, name):
+            raise InvalidParameterError(f"plot_boundary needs a stability boundary (no attribute {name!r})",
+                                        field="boundary")
+    m = m if m is not None else _manipulator_of(boundary)
+    p = np.asarray(boundary.p, dtype=float).ravel()
+    t = np.asarray(boundary.t, dtype=float).ravel()
+    if p.shape != t.shape:
+        raise InvalidParameterError("the boundary's p and t differ in length", field="boundary")
+    kind = str(boundary.kind)
+    control = control if control is not None else getattr(boundary, "control", None)
+    from matplotlib.lines import Line2D
+
+    fig = _new_figure(figsize)
+    ax = fig.subplots()
+    color = "tab:red" if kind == "fold" else "tab:purple"
+    line, = ax.plot(p, t, color=color, lw=1.8, marker="o", ms=2.0, zorder=3)
+    line.set_gid("boundary")
+    handles = [Line2D([], [], color=color, lw=1.8)]
+    labels = ["fold curve (limit points)" if kind == "fold" else "branch-point curve (bifurcations)"]
+    cusps = list(boundary.cusps or [])
+    if cusps:
+        cp = np.array([[float(c.p), float(c.t)] for c in cusps], dtype=float)
+        pt, = ax.plot(cp[:, 0], cp[:, 1], ls="none", marker="^", ms=9, mfc="gold", mec="black", zorder=6)
+        pt.set_gid("cusps")
+        handles.append(Line2D([], [], ls="none", marker="^", ms=9, mfc="gold", mec="black"))
+        labels.append(f"cusp ({len(cusps)})")
+    ax.set_xlabel(f"second parameter $p$: {boundary.parameter}")
+    ax.set_ylabel("critical " + _t_label(control))
+    ax.grid(True, lw=0.4, alpha=0.5)
+    _outside_legend(ax, handles, labels)
+    status = getattr(boundary, "status", None)
+    incomplete = "" if getattr(boundary, "success", True) else f" (incomplete: {status})"
+    head = f"Stability boundary ({kind}) over {boundary.parameter}" + (
+        f", {_control_text(control)}" if control is not None else "") + incomplete
+    ax.set_title(head + (f"\n{chain_label(m)}" if m is not None else ""), fontsize=9)
     return fig

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import casadi as ca
 
-__all__ = ["segment_energy", "chain_expressions", "kkt_graph", "banded_functions"]
+__all__ = ["segment_energy", "tip_expression", "chain_expressions", "kkt_graph", "banded_functions"]
 
 
 def _q_of_phi(phi):
@@ -40,6 +40,13 @@ def segment_energy(q, a, b, k1, k2, L10, L20, *, beta=None, c=None):
     return L1, L2, E
 
 
+def tip_expression(phi, b):
+    """Tip position at absolute link angles ``phi`` (eq. 5 with per-segment ``b``): the base half-link
+    ``b_1`` along +x, then links ``b_j + b_{j+1}`` and the last ``b_n``."""
+    links = b + ca.vertcat(b[1:], 0) if phi.shape[0] > 1 else b
+    return ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
+
+
 def chain_expressions(phi, a, b, k1, k2, L10, L20, *, beta=None, c=None):
     """The chain's model in absolute angles as CasADi expressions (SX or MX).
 
@@ -49,9 +56,7 @@ def chain_expressions(phi, a, b, k1, k2, L10, L20, *, beta=None, c=None):
     """
     q = _q_of_phi(phi)
     L1, L2, E = segment_energy(q, a, b, k1, k2, L10, L20, beta=beta, c=c)
-    links = b + ca.vertcat(b[1:], 0) if phi.shape[0] > 1 else b
-    tip = ca.vertcat(b[0] + ca.dot(links, ca.cos(phi)), ca.dot(links, ca.sin(phi)))
-    return q, L1, L2, E, tip
+    return q, L1, L2, E, tip_expression(phi, b)
 
 
 def kkt_graph(n: int, *, extended: bool = False):

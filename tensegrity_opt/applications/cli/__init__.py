@@ -1,4 +1,4 @@
-"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|plot|sweep ...``.
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|plot|sweep ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
@@ -25,9 +25,10 @@ from ... import __version__
 from ...analyses.all_equilibria import find_equilibria
 from ...analyses.buckling import critical_force
 from ...analyses.curves import force_deflection
-from ...analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
+from ...analyses.equilibrium import solve_equilibrium_under_force
 from ...analyses.least_energy import solve_equilibrium
-from .common import HELP_FORMAT, add_manipulator_options, finite_float, positive_int, run_command
+from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float, fmt_q, positive_int, run_command
+from .paths import add_path_parsers
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser
 
@@ -35,10 +36,6 @@ __all__ = ["main", "build_parser", "add_manipulator_options", "SERVICE_COMMANDS"
 
 #: The service's commands (``service.cli``): named here only to point a caller of this module there.
 SERVICE_COMMANDS = ("serve", "openapi")
-
-
-def _fmt_q(q: np.ndarray) -> str:
-    return "[" + ", ".join(f"{v:+.5f}" for v in q) + "]"
 
 
 def _cmd_buckling(args, m) -> tuple[Any, str]:
@@ -51,16 +48,8 @@ def _cmd_buckling(args, m) -> tuple[Any, str]:
     for i, md in enumerate(bk.modes, 1):
         lines.append(f"{i:>2} {md.load:>10.6f} {-1 / md.load:>10.5f} {md.energy_factor:>9.6f} {md.mu_x:>9.6f} "
                      f"{md.fy_coefficient:>12.6f} {md.shape:>5} {md.signs:>{max(5, m.n)}} "
-                     f"{'yes' if md.stable else 'no':>6}  {_fmt_q(md.q)}")
+                     f"{'yes' if md.stable else 'no':>6}  {fmt_q(md.q)}")
     return data, "\n".join(lines)
-
-
-def _eq_table(eqs: list[Equilibrium]) -> list[str]:
-    lines = [f"{'#':>2} {'energy':>12} {'Fx':>10} {'Fy':>10} {'morse':>5} {'stable':>6} {'shape':>5}  q (rad)"]
-    for i, e in enumerate(eqs, 1):
-        lines.append(f"{i:>2} {e.energy:>12.6f} {e.fx:>10.6f} {e.fy:>10.6f} {e.morse_index:>5} "
-                     f"{'yes' if e.stable else 'no':>6} {e.shape:>5}  {_fmt_q(e.q)}")
-    return lines
 
 
 def _cmd_equilibrium(args, m):
@@ -70,7 +59,7 @@ def _cmd_equilibrium(args, m):
     else:
         eq = solve_equilibrium(m, args.dx, args.dy)
         head = f"Least-energy stable equilibrium at dx = {args.dx:g}, dy = {args.dy:g}"
-    return eq.to_dict, "\n".join([head, *(_eq_table([eq])), f"solver: {eq.status}, {eq.iterations} iterations"])
+    return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.status}, {eq.iterations} iterations"])
 
 
 def _cmd_equilibria(args, m):
@@ -80,7 +69,7 @@ def _cmd_equilibria(args, m):
         how += f" ({eqs.paths} homotopy paths, {eqs.failed_paths} failed)"
     return (eqs.to_dict,
             "\n".join([f"All equilibria at dx = {args.dx:g}, dy = {args.dy:g}: {len(eqs)} ({how})",
-                       *_eq_table(eqs)]))
+                       *eq_table(eqs)]))
 
 
 def _cmd_curve(args, m):
@@ -93,7 +82,7 @@ def _cmd_curve(args, m):
               for i in range(c.dx.size)]
     for j in c.jumps:
         lines.append(f"jump ({j.kind}) between dx = {j.dx_before:g} and {j.dx_after:g}: "
-                     f"F {_fmt_q(j.force_before)} -> {_fmt_q(j.force_after)}")
+                     f"F {fmt_q(j.force_before)} -> {fmt_q(j.force_after)}")
     return data, "\n".join(lines)
 
 
@@ -141,6 +130,7 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
     sp.add_argument("--num", type=positive_int, default=11, help="number of deflections, evenly spaced")
     sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
     sp.set_defaults(func=_cmd_curve)
+    add_path_parsers(sub)
     add_plot_parser(sub)
     add_sweep_parser(sub)
 

@@ -16,7 +16,8 @@ import sys
 from ...errors import NonFiniteResult, TensegrityError
 from ...model.manipulator import Manipulator
 
-__all__ = ["add_manipulator_options", "run_command", "positive_int", "finite_float", "HELP_FORMAT"]
+__all__ = ["add_manipulator_options", "run_command", "positive_int", "finite_float", "HELP_FORMAT", "fmt_q",
+           "eq_table"]
 
 #: Every command's help shows each option's default.
 HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
@@ -42,6 +43,20 @@ def finite_float(text: str) -> float:
     if not math.isfinite(v):
         raise argparse.ArgumentTypeError(f"expected a finite number, got {text!r}")
     return v
+
+
+def fmt_q(q) -> str:
+    """``[+0.10000, -0.20000]``: angles (or any short vector) for a table."""
+    return "[" + ", ".join(f"{v:+.5f}" for v in q) + "]"
+
+
+def eq_table(eqs) -> list[str]:
+    """The table of equilibria (energy, force, Morse index, stability, shape, q) the commands print."""
+    lines = [f"{'#':>2} {'energy':>12} {'Fx':>10} {'Fy':>10} {'morse':>5} {'stable':>6} {'shape':>5}  q (rad)"]
+    for i, e in enumerate(eqs, 1):
+        lines.append(f"{i:>2} {e.energy:>12.6f} {e.fx:>10.6f} {e.fy:>10.6f} {e.morse_index:>5} "
+                     f"{'yes' if e.stable else 'no':>6} {e.shape:>5}  {fmt_q(e.q)}")
+    return lines
 
 
 def add_manipulator_options(sp: argparse.ArgumentParser) -> None:

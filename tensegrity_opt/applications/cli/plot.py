@@ -1,4 +1,5 @@
-"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map ... -o fig.png|fig.svg``.
+"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map|branch|limit-load|boundary ...
+-o fig.png|fig.svg``.
 
 :func:`add_plot_parser` adds the ``plot`` subcommand to the ``tensegrity-opt`` parser
 (:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
@@ -17,6 +18,13 @@ Examples::
     tensegrity-opt plot shapes --dx 0.1 -o shapes.svg
     tensegrity-opt plot torque --vary L0 --values 0.5 1 1.5 2 -o torque.png
     tensegrity-opt plot map --x k 0.5 2 16 --y L0 0.5 2.5 21 -o map.png
+    tensegrity-opt plot branch --control guided --t-max 2 --start-q 0 0 0 0 --y fy -o branch.png
+    tensegrity-opt plot branch --control guided --t-max 2 --start-q 0 0 0 0 --depth 1 --x q1 --y t -o diagram.svg
+    tensegrity-opt plot limit-load --boundary guided --start-q 0 0 0 0 -o limit.png
+    tensegrity-opt plot boundary --parameter asymmetry -o boundary.png
+
+The loading-path kinds take the options of the ``branch``, ``limit-load`` and ``boundary`` commands
+(:mod:`.paths`).
 """
 
 from __future__ import annotations
@@ -30,11 +38,16 @@ import numpy as np
 
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
-from .common import add_manipulator_options, positive_int, run_command
+from .common import HELP_FORMAT, add_manipulator_options, positive_int, run_command
+from .paths import (add_boundary_options, add_branch_options, add_limit_load_options, boundary_from_args,
+                    branches_from_args, limit_load_from_args)
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
-KINDS = ("curve", "landscape", "shapes", "torque", "map")
+KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "boundary")
+#: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
+_QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
+                  "direction), energy, s (arclength) or q1..qn (a joint angle)")
 _PARAMS = ("a", "b", "k", "L0")
 
 
@@ -145,6 +158,32 @@ def _cmd_map(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], 
                                       "y": {"param": py, "values": ys.tolist()}, "boundary": args.boundary})
 
 
+def _cmd_branch(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    res = branches_from_args(args, m)
+    fig = plots.plot_branches(res, x=args.x, y=args.y, m=m)
+    brs = [res] if not isinstance(res, list) else res
+    return _render(args, fig, "branch", {"branches": len(brs), "points": [len(b) for b in brs],
+                                         "status": [b.status for b in brs],
+                                         "events": [[e.kind for e in b.events] for b in brs]})
+
+
+def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    r = limit_load_from_args(args, m)
+    fig = plots.plot_limit_load(r, m=m)
+    return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load, "reason": r.reason,
+                                             "quasi_buckling_load": r.quasi_buckling_load})
+
+
+def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    b = boundary_from_args(args, m)
+    fig = plots.plot_boundary(b, m=m, control=args.control)
+    return _render(args, fig, "boundary", {"boundary": str(b.kind), "points": int(np.size(b.p)),
+                                           "cusps": len(list(b.cusps or [])), "status": b.status})
+
+
 def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     """Add ``plot {curve,landscape,shapes,torque,map}`` to ``subparsers`` (``add_subparsers()``'s result).
 
@@ -202,6 +241,27 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
                    help="vertical axis, e.g. --y L0 0.5 2.5 21")
     k.add_argument("--boundary", choices=("guided", "free"), default="guided")
     k.set_defaults(func=_cmd_map)
+
+    k = kinds.add_parser("branch", formatter_class=HELP_FORMAT,
+                         help="branch diagram: one branch (or --depth: the bifurcation diagram) by Morse index, "
+                              "events marked")
+    _common(k)
+    add_branch_options(k)
+    k.add_argument("--x", default="t", help=f"horizontal axis: {_QUANTITY_HELP}")
+    k.add_argument("--y", default="fx", help="vertical axis, as --x")
+    k.set_defaults(func=_cmd_branch)
+
+    k = kinds.add_parser("limit-load", formatter_class=HELP_FORMAT,
+                         help="the load path of a limit load, the limit point and quasi-buckling load marked")
+    _common(k)
+    add_limit_load_options(k)
+    k.set_defaults(func=_cmd_limit_load)
+
+    k = kinds.add_parser("boundary", formatter_class=HELP_FORMAT,
+                         help="a stability boundary: critical t against the second parameter, cusps marked")
+    _common(k)
+    add_boundary_options(k)
+    k.set_defaults(func=_cmd_boundary)
     return sp
 
 

@@ -1,0 +1,329 @@
+"""Command line loading paths: ``tensegrity-opt rest|branch|limit-load|boundary ...``.
+
+:func:`add_path_parsers` adds the four commands to the ``tensegrity-opt`` parser; each sets
+``func(args, m) -> (data, text)`` like the other analysis commands (a table, or with ``--json`` the
+result's ``to_dict()``: the body of ``/v1/rest-configurations``, ``/v1/branch`` (``/v1/bifurcation-diagram``
+with ``--depth``), ``/v1/limit-load``, ``/v1/stability-boundary``). The control and start options
+(:func:`add_control_options`, :func:`add_start_options`) are shared with ``plot branch|limit-load|boundary``
+(:mod:`.plot`).
+
+Examples::
+
+    tensegrity-opt rest --fx -0.3 --stable-only
+    tensegrity-opt branch --control guided --t-max 2 --start-q 0 0 0 0
+    tensegrity-opt branch --control guided --t-max 2 --t-min -0.2 --start-q 0 0 0 0 --depth 1 --json
+    tensegrity-opt limit-load --boundary free --direction -1 0
+    tensegrity-opt boundary --parameter asymmetry --p-min -0.05 --p-max 0.05
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import importlib.util
+from typing import Any
+
+import numpy as np
+
+from ...analyses.branches import Branch, Control, bifurcation_diagram, trace_branch
+from ...analyses.least_energy import solve_equilibrium
+from ...analyses.limit_load import limit_load
+from ...errors import InvalidParameterError, UnsupportedError
+from ...model.manipulator import Manipulator
+from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float, fmt_q, positive_int
+
+__all__ = ["add_path_parsers", "add_control_options", "add_start_options", "add_limit_load_options",
+           "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args",
+           "limit_load_from_args", "boundary_from_args", "analysis", "CONTROL_KINDS"]
+
+CONTROL_KINDS = ("displacement", "load", "guided", "wall", "preload")
+
+
+def at_least_two(text: str) -> int:
+    """An argparse type: an integer >= 2 (a branch's points, the start included)."""
+    v = positive_int(text)
+    if v < 2:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 2, got {v}")
+    return v
+
+
+def non_negative_int(text: str) -> int:
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 0, got {text!r}") from None
+    if v < 0:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 0, got {v}")
+    return v
+
+
+def positive_float(text: str) -> float:
+    v = finite_float(text)
+    if v <= 0:
+        raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}")
+    return v
+
+
+def analysis(module: str, name: str) -> Any:
+    """``tensegrity_opt.analyses.<module>.<name>``, or :class:`UnsupportedError` when this build lacks it."""
+    full = f"tensegrity_opt.analyses.{module}"
+    fn = getattr(importlib.import_module(full), name, None) if importlib.util.find_spec(full) is not None else None
+    if fn is None:
+        raise UnsupportedError(f"{full}.{name} is not available in this build of the library")
+    return fn
+
+
+# ---------------------------------------------------------------------------- shared options
+def add_control_options(sp: argparse.ArgumentParser, default: str = "guided") -> None:
+    g = sp.add_argument_group("control (what the continuation parameter t moves)")
+    g.add_argument("--control", choices=CONTROL_KINDS, default=default,
+                   help="displacement: the tip along --direction in (dx, dy), t a length; load: a dead tip load "
+                        "base + t d, t a force; guided: the tip's y held, Fx = base_x + t d_x (the paper's case); "
+                        "wall: the tip on a frictionless wall of --normal; preload: the rest lengths along "
+                        "--direction (2n numbers), t a length")
+    g.add_argument("--direction", type=finite_float, nargs="+", default=None, metavar="D",
+                   help="the control's direction, normalised: 2 numbers (dx, dy) or a load's (Fx, Fy), 2n for "
+                        "preload (L1_0, L2_0 per segment); default: (1, 0) for displacement, (-1, 0) for loads")
+    g.add_argument("--base", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
+                   help="load at t = 0 (force) for load, guided, wall")
+    g.add_argument("--normal", type=finite_float, nargs=2, default=[0.0, 1.0], metavar=("NX", "NY"),
+                   help="the wall's normal (wall only)")
+    g.add_argument("--tip", choices=("free", "held"), default="free",
+                   help="preload only: the tip free under --load, or held where the start has it")
+    g.add_argument("--load", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
+                   help="preload only: the fixed tip load (force)")
+
+
+def add_start_options(sp: argparse.ArgumentParser, deflection: bool = True) -> None:
+    g = sp.add_argument_group("start (default: the least-energy rest configuration)")
+    g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
+                   help="start from these joint angles (rad, n of them)")
+    if deflection:
+        g.add_argument("--start-dx", type=finite_float, default=None,
+                       help="start from the least-energy equilibrium with the tip held at this deflection (length; "
+                            "displacement and held-tip preload controls)")
+        g.add_argument("--start-dy", type=finite_float, default=0.0, help="sideways deflection of that start (length)")
+
+
+def add_branch_options(sp: argparse.ArgumentParser) -> None:
+    add_control_options(sp)
+    add_start_options(sp)
+    g = sp.add_argument_group("continuation")
+    g.add_argument("--t-max", type=finite_float, default=None, help="stop where t reaches this (the control's unit)")
+    g.add_argument("--t-min", type=finite_float, default=None, help="stop where t falls to this (the control's unit)")
+    g.add_argument("--max-points", type=at_least_two, default=1000, help="at most this many points per branch")
+    g.add_argument("--stop-at", choices=("stability_loss", "event"), default=None,
+                   help="stop after the first event where stability is lost, or after any event (one branch)")
+    g.add_argument("--backward", action="store_true", help="leave the start with t decreasing (one branch)")
+    g.add_argument("--depth", type=non_negative_int, default=None,
+                   help="the bifurcation diagram to this many branch switches instead of one branch")
+    g.add_argument("--max-branches", type=positive_int, default=24, help="with --depth: at most this many branches")
+    g.add_argument("--timeout", type=positive_float, default=None,
+                   help="seconds; then the points computed so far (status time_limit)")
+
+
+def add_limit_load_options(sp: argparse.ArgumentParser) -> None:
+    sp.add_argument("--boundary", choices=("free", "guided"), default="free",
+                    help="free: the tip free under F = t d; guided: the tip's y held, Fx = t d_x")
+    sp.add_argument("--direction", type=finite_float, nargs=2, default=[-1.0, 0.0], metavar=("DX", "DY"),
+                    help="the load's direction (normalised; -1 0 compresses)")
+    sp.add_argument("--max-load", type=positive_float, default=None,
+                    help="stop at this load (force); default 100 k c^2 / (2b)")
+    add_start_options(sp, deflection=False)
+    sp.add_argument("--max-points", type=at_least_two, default=4000, help="at most this many points on the path")
+    sp.add_argument("--timeout", type=positive_float, default=None,
+                    help="seconds; then the path so far (reason time_limit)")
+
+
+def add_boundary_options(sp: argparse.ArgumentParser) -> None:
+    add_control_options(sp)
+    sp.add_argument("--parameter", default="asymmetry",
+                    help="the second parameter p the boundary is followed in (the library's names)")
+    sp.add_argument("--p-min", type=finite_float, default=-0.1, help="lower end of p (the parameter's unit)")
+    sp.add_argument("--p-max", type=finite_float, default=0.1, help="upper end of p (the parameter's unit)")
+    sp.add_argument("--max-points", type=at_least_two, default=400, help="at most this many points on the boundary")
+    sp.add_argument("--timeout", type=positive_float, default=None, help="seconds; then the boundary so far")
+
+
+def _control_kw(args: argparse.Namespace) -> dict[str, Any]:
+    kw: dict[str, Any] = {}
+    if args.direction is not None:
+        kw["direction"] = list(args.direction)
+    if args.control in ("load", "guided", "wall"):
+        kw["base"] = list(args.base)
+    if args.control == "wall":
+        kw["normal"] = list(args.normal)
+    if args.control == "preload":
+        if args.direction is None:
+            raise InvalidParameterError("a preload control needs --direction with 2n numbers", field="direction")
+        kw["tip"], kw["load"] = args.tip, list(args.load)
+    return kw
+
+
+def control_from_args(args: argparse.Namespace) -> Control:
+    kw = _control_kw(args)
+    if args.control != "preload" and "direction" in kw and len(kw["direction"]) != 2:
+        raise InvalidParameterError(f"--direction takes 2 numbers for a {args.control} control, got "
+                                    f"{len(kw['direction'])}", field="direction")
+    return getattr(Control, args.control)(**kw)
+
+
+def start_from_args(m: Manipulator, args: argparse.Namespace) -> Any:
+    if getattr(args, "start_q", None) is not None:
+        if getattr(args, "start_dx", None) is not None:
+            raise InvalidParameterError("give --start-q or --start-dx, not both", field="start")
+        return np.asarray(args.start_q, dtype=float)
+    if getattr(args, "start_dx", None) is not None:
+        if not (args.control == "displacement" or (args.control == "preload" and args.tip == "held")):
+            raise InvalidParameterError("--start-dx needs a control that holds the tip (displacement, or preload "
+                                        "with --tip held)", field="start")
+        return solve_equilibrium(m, args.start_dx, args.start_dy)
+    analysis("rest", "rest_configuration")          # the library imports it itself
+    return None
+
+
+def branches_from_args(args: argparse.Namespace, m: Manipulator) -> Branch | list[Branch]:
+    ctl = control_from_args(args)
+    start = start_from_args(m, args)
+    if args.depth is None:
+        return trace_branch(m, start, ctl, t_max=args.t_max, t_min=args.t_min, max_points=args.max_points,
+                            stop_at=args.stop_at, direction=-1 if args.backward else 1, timeout=args.timeout)
+    if args.stop_at is not None or args.backward:
+        raise InvalidParameterError("--stop-at and --backward belong to one branch: --depth follows every branch "
+                                    "both ways", field="depth")
+    return bifurcation_diagram(m, start, ctl, depth=args.depth, max_branches=args.max_branches,
+                               timeout=args.timeout, t_max=args.t_max, t_min=args.t_min, max_points=args.max_points)
+
+
+def limit_load_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
+    start = None if args.start_q is None else np.asarray(args.start_q, dtype=float)
+    if start is None:
+        analysis("rest", "rest_configuration")
+    return limit_load(m, args.direction, args.boundary, args.max_load, start, max_points=args.max_points,
+                      timeout=args.timeout)
+
+
+def boundary_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
+    fn = analysis("boundaries", "stability_boundary")
+    kw = _control_kw(args)
+    kw.setdefault("direction", [1.0, 0.0] if args.control == "displacement" else [-1.0, 0.0])
+    return fn(m, args.control, args.parameter, p_min=args.p_min, p_max=args.p_max, max_points=args.max_points,
+              timeout=args.timeout, **kw)
+
+
+# ---------------------------------------------------------------------------- the commands
+def _cmd_rest(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    fn = analysis("rest", "find_equilibria_under_force")
+    eqs = fn(m, args.fx, args.fy, method=args.method, stable_only=args.stable_only)
+    head = ("Rest configurations (F = 0)" if args.fx == 0.0 and args.fy == 0.0 else
+            f"Equilibria under the dead tip load ({args.fx:g}, {args.fy:g})")
+    how = f"method {eqs.method}, " + ("certified complete" if eqs.certified else "not certified")
+    return eqs.to_dict, "\n".join([f"{head}: {len(eqs)} ({how})", *eq_table(list(eqs))])
+
+
+def _event_lines(br: Branch) -> list[str]:
+    if not br.events:
+        return ["events: none"]
+    out = [f"events ({len(br.events)}):",
+           f"  {'kind':<13} {'between':>9} {'t':>12} {'Fx':>11} {'Fy':>11} {'morse':>6} {'stability':>9}  "
+           "method / mode"]
+    for e in br.events:
+        mode = e.method + ("" if e.null_vector is None else f", mode {fmt_q(e.null_vector)}")
+        if e.kind == "joint_limit":
+            mode += f", joint {e.joint + 1}"
+        out.append(f"  {e.kind:<13} {e.index:>4}-{e.index + 1:<4} {e.t:>12.7f} {e.force[0]:>11.6f} {e.force[1]:>11.6f} "
+                   f"{e.morse_before:>2}->{e.morse_after:<2} {e.stability:>9}  {mode}")
+    return out
+
+
+def _branch_head(br: Branch, k: int | None = None) -> str:
+    which = "" if k is None else f"branch {k}: "
+    return (f"{which}{len(br)} points, t from {br.t[0]:.6g} to {br.t[-1]:.6g}, status {br.status}"
+            + ("" if br.success else " (incomplete)") + f": {br.message}")
+
+
+def _points_table(br: Branch) -> list[str]:
+    d = br.deflection
+    lines = [f"{'#':>4} {'t':>12} {'Fx':>11} {'Fy':>11} {'dx':>10} {'dy':>10} {'energy':>11} {'morse':>5}  q (rad)"]
+    for i in range(len(br)):
+        lines.append(f"{i:>4} {br.t[i]:>12.7f} {br.force[i, 0]:>11.6f} {br.force[i, 1]:>11.6f} {d[i, 0]:>10.5f} "
+                     f"{d[i, 1]:>10.5f} {br.energy[i]:>11.6f} {int(br.morse_index[i]):>5}  {fmt_q(br.q[i])}")
+    return lines
+
+
+def _cmd_branch(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    res = branches_from_args(args, m)
+    if isinstance(res, Branch):
+        text = [f"Equilibrium branch, {args.control} control {fmt_q(res.control.direction)}, n = {m.n}",
+                _branch_head(res), *_points_table(res), *_event_lines(res)]
+        return res.to_dict, "\n".join(text)
+    text = [f"Bifurcation diagram, {args.control} control, n = {m.n}: {len(res)} branches (depth {args.depth})"]
+    for k, br in enumerate(res):
+        text += [_branch_head(br, k), *("  " + line for line in _event_lines(br))]
+    return (lambda: {"branches": [b.to_dict() for b in res]}), "\n".join(text)
+
+
+def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    r = limit_load_from_args(args, m)
+    lines = [f"Limit load, {r.boundary} tip, load along {fmt_q(r.direction)}, n = {m.n}"]
+    if r.kind != "none":
+        lines += [f"{r.kind} at load P = {r.load:.7f} (force), F = {fmt_q(r.force)}",
+                  f"configuration q = {fmt_q(r.q)}", f"mode {fmt_q(r.null_vector)}"]
+    else:
+        lines.append(f"no limit point: the path stays stable to its end ({r.reason}) at load {r.end_load:.7f}")
+    lines.append("quasi-buckling load (least tangent stiffness): "
+                 + ("none" if r.quasi_buckling_load is None else f"{r.quasi_buckling_load:.7f}"))
+    lines.append(f"start q = {fmt_q(r.start.q)}; path: {len(r.branch)} points, status {r.branch.status}")
+    return (lambda: r.to_dict(include_branch=args.include_branch)), "\n".join(lines)
+
+
+def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    b = boundary_from_args(args, m)
+    p, t = np.asarray(b.p, float), np.asarray(b.t, float)
+    F = np.asarray(b.force, float).reshape(-1, 2) if np.size(b.force) else np.full((p.size, 2), np.nan)
+    lines = [f"Stability boundary ({b.kind}) over {b.parameter}, {args.control} control, n = {m.n}: {p.size} points, "
+             f"status {b.status}" + ("" if b.success else " (incomplete)"),
+             f"{'#':>4} {'p':>12} {'t':>12} {'Fx':>11} {'Fy':>11}"]
+    lines += [f"{i:>4} {p[i]:>12.7f} {t[i]:>12.7f} {F[i, 0]:>11.6f} {F[i, 1]:>11.6f}" for i in range(p.size)]
+    cusps = list(b.cusps or [])
+    lines.append(f"cusps ({len(cusps)}): " + (", ".join(f"p = {c.p:.7g}, t = {c.t:.7g}" for c in cusps) or "none"))
+    return b.to_dict, "\n".join(lines)
+
+
+def add_path_parsers(subparsers: Any) -> None:
+    """Add ``rest``, ``branch``, ``limit-load`` and ``boundary`` to ``subparsers`` (``add_subparsers()``'s result)."""
+
+    def common(sp: argparse.ArgumentParser) -> None:
+        add_manipulator_options(sp)
+        sp.add_argument("--json", action="store_true", help="print the API body (JSON) instead of a table")
+
+    sp = subparsers.add_parser("rest", formatter_class=HELP_FORMAT,
+                               help="rest configurations, or every equilibrium under a dead tip load")
+    common(sp)
+    sp.add_argument("--fx", type=finite_float, default=0.0, help="dead tip load along x (force; < 0 compresses)")
+    sp.add_argument("--fy", type=finite_float, default=0.0, help="dead tip load along y (force)")
+    sp.add_argument("--method", choices=("search", "homotopy"), default="search",
+                    help="for a nonzero load: multi-start Newton, or PHCpack's certified homotopy (n <= 6); "
+                         "F = 0 is exact either way")
+    sp.add_argument("--stable-only", action="store_true", help="only the stable equilibria")
+    sp.set_defaults(func=_cmd_rest)
+
+    sp = subparsers.add_parser("branch", formatter_class=HELP_FORMAT,
+                               help="an equilibrium branch by arclength continuation (or --depth: the bifurcation "
+                                    "diagram), with its folds, branch points and joint limits")
+    common(sp)
+    add_branch_options(sp)
+    sp.set_defaults(func=_cmd_branch)
+
+    sp = subparsers.add_parser("limit-load", formatter_class=HELP_FORMAT,
+                               help="the dead load at which the path from a rest configuration loses stability")
+    common(sp)
+    add_limit_load_options(sp)
+    sp.add_argument("--include-branch", action="store_true", help="with --json: also the traced path")
+    sp.set_defaults(func=_cmd_limit_load)
+
+    sp = subparsers.add_parser("boundary", formatter_class=HELP_FORMAT,
+                               help="a stability boundary: the folds or branch points over a second parameter")
+    common(sp)
+    add_boundary_options(sp)
+    sp.set_defaults(func=_cmd_boundary)

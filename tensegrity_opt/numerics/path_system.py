@@ -1,0 +1,205 @@
+"""The equilibrium path system ``R(z, t) = 0`` of every control, as CasADi functions (one per ``n``).
+
+An equilibrium branch in one control parameter ``t`` is the solution curve of ``n + 2`` equations in
+``z = (q, F)`` (relative joint angles and the tip force)::
+
+    R1 = grad E(q; p(t)) - J(q)^T F                                  (n: stationarity)
+    R2 = A_tip (tip(q) - tip_ref) + A_F (F - F_ref) - t c            (2: the control)
+
+with ``p(t) = p + t dp + s dp2`` (the 6n chain parameters ``a, b, k1, k2, L1_0, L2_0`` moved along
+``dp`` by the control parameter — a preload control — and along ``dp2`` by a second parameter ``s``,
+for two-parameter continuation). The two control rows say what is prescribed: ``A_tip = I`` holds the
+tip (a displacement control, ``c`` its direction), ``A_F = I`` prescribes the force (a dead load ``c``),
+one row of each is a guide or a frictionless wall (the tip held along the wall's normal, the load
+prescribed along it). The analyses (:mod:`tensegrity_opt.analyses.branches`) set these matrices;
+this module only evaluates.
+
+Functions (inputs ``x = (q, F, t, s)``, ``p``, ``dp``, ``dp2``, ``ctl`` — the 14 numbers
+``A_tip, A_F`` (row-major), ``c, tip_ref, F_ref``):
+
+* ``path(x, p, dp, dp2, ctl) -> (R, R_x, H, J, E, tip)``: the residual, its Jacobian in all of ``x``
+  (``(n + 2) x (n + 4)``: the ``t`` and ``s`` columns are ``dR/dt``, ``dR/ds``), the Hessian of the
+  potential ``E - F . tip`` in ``q``, the tip Jacobian, the elastic energy and the tip;
+* ``second(x, v, p, dp, dp2, ctl) -> (R_z v, d(R_z v)/dx, (R_zz v) v)``: directional second
+  derivatives for the extended systems (Moore-Spence fold system, the cusp test).
+
+Relative angles throughout (the joint range is a box in them); dense, so built for
+``n <= DENSE_MAX`` only. Per thread, like every CasADi function here. For ``n <= KERNEL_MAX`` the two
+functions are generated to C and compiled once per machine like the Newton kernels (:mod:`.kernels`:
+the same cache, compiler and ``TENSEGRITY_COMPILE=0`` switch; without a compiler they run in CasADi's
+virtual machine, about ten times slower, same results).
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import threading
+from functools import lru_cache
+
+import casadi as ca
+import numpy as np
+
+from . import kernels as _kernels
+from ._fast import Fast
+from .expressions import segment_energy, tip_expression
+
+__all__ = ["PathSystem", "path_system", "CONTROL_SIZE"]
+
+#: Numbers describing a control: ``A_tip`` (4), ``A_F`` (4), ``c`` (2), ``tip_ref`` (2), ``F_ref`` (2).
+CONTROL_SIZE = 14
+#: Newton iterations of the compiled corrector step (the Python corrector takes over when they do not
+#: converge).
+STEP_ITER = 5
+
+
+@lru_cache(maxsize=None)
+def _graphs(n: int):
+    x = ca.SX.sym("x", n + 4)
+    q, F, t, s = x[:n], x[n:n + 2], x[n + 2], x[n + 3]
+    p, dp, dp2 = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n)
+    ctl = ca.SX.sym("ctl", CONTROL_SIZE)
+    pe = p + t * dp + s * dp2
+    a, b, k1, k2, L10, L20 = (pe[i * n:(i + 1) * n] for i in range(6))
+    _, _, E = segment_energy(q, a, b, k1, k2, L10, L20)
+    phi = ca.cumsum(q)
+    tip = tip_expression(phi, b)
+    J = ca.jacobian(tip, q)
+    A_tip = ca.reshape(ctl[0:4], 2, 2).T
+    A_F = ca.reshape(ctl[4:8], 2, 2).T
+    c, tip_ref, F_ref = ctl[8:10], ctl[10:12], ctl[12:14]
+    R = ca.vertcat(ca.gradient(E, q) - J.T @ F, A_tip @ (tip - tip_ref) + A_F @ (F - F_ref) - t * c)
+    Rx = ca.jacobian(R, x)
+    H = ca.hessian(E - ca.dot(F, tip), q)[0]
+    path = ca.Function("path", [x, p, dp, dp2, ctl], [R, ca.densify(Rx), ca.densify(H), ca.densify(J), E, tip])
+    v = ca.SX.sym("v", n + 2)
+    z = x[:n + 2]
+    Rzv = ca.jtimes(R, z, v)
+    second = ca.Function("second", [x, v, p, dp, dp2, ctl],
+                         [Rzv, ca.densify(ca.jacobian(Rzv, x)), ca.jtimes(Rzv, z, v)])
+    return path, second, _step(n, path)
+
+
+def _step(n: int, path: ca.Function) -> ca.Function:
+    """One whole predictor-corrector step (module docstring of :mod:`tensegrity_opt.analyses.branches`):
+    ``(x_a, tau, h, w, rs, tol, p, dp, dp2, ctl) -> (x, res, iterations, tau_b, R, R_x, H, J, E, tip)``.
+
+    From ``x_a`` and its unit tangent ``tau`` (scaled coordinates ``w x``), the predictor
+    ``x_a + h tau / w``, then ``STEP_ITER`` Newton iterations on ``[R(x); (w tau) . x - b] = 0``
+    (``b = tau . (w x_a) + h``), each kept once the scaled residual ``max |rs R|`` and the arclength
+    condition are below ``tol`` (the iterate then stays); at the last iterate its residual, the number of
+    iterations that moved (the caller checks the arclength condition), the tangent there (``[R_x / w; tau] v = e``, normalised) and the path outputs.
+    The caller checks ``res`` and falls back to the Python corrector."""
+    N = n + 2
+    xa, tau, w = ca.SX.sym("xa", N + 1), ca.SX.sym("tau", N + 1), ca.SX.sym("w", N + 1)
+    h, tol, rs = ca.SX.sym("h"), ca.SX.sym("tol"), ca.SX.sym("rs", N)
+    p, dp, dp2, ctl = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n), ca.SX.sym("ctl", CONTROL_SIZE)
+    aw = tau * w
+    b = ca.dot(tau, w * xa) + h
+    x = xa + h * tau / w
+    moved = 0
+    for _ in range(STEP_ITER):
+        R, Rx = path(ca.vertcat(x, 0), p, dp, dp2, ctl)[:2]
+        g = ca.dot(aw, x) - b
+        done = ca.logic_and(ca.mmax(ca.fabs(R * rs)) <= tol, ca.fabs(g) <= 1e-12 * ca.fmax(1, ca.fabs(b)))
+        d = ca.solve(ca.vertcat(Rx[:, :N + 1], aw.T), -ca.vertcat(R, g))
+        x = ca.if_else(done, x, x + d)
+        moved = moved + ca.if_else(done, 0, 1)
+    R, Rx, H, J, E, tip = path(ca.vertcat(x, 0), p, dp, dp2, ctl)
+    res = ca.mmax(ca.fabs(R * rs))
+    e = ca.DM.zeros(N + 1)
+    e[N] = 1.0
+    A = Rx[:, :N + 1] / ca.repmat(w.T, N, 1)
+    v = ca.solve(ca.vertcat(A, tau.T), e)
+    v = v / ca.norm_2(v)
+    return ca.Function("step", [xa, tau, h, w, rs, tol, p, dp, dp2, ctl],
+                       [x, res, moved, v, R, Rx, H, J, E, tip])
+
+
+_compiled: dict[int, str] = {}
+_lock = threading.Lock()
+
+
+def _functions(n: int) -> tuple[ca.Function, ca.Function, ca.Function, str]:
+    """This thread's ``path``, ``second`` and ``step`` Functions and how they run (``"compiled"`` /
+    ``"virtual machine"``)."""
+    if 2 <= n <= _kernels.KERNEL_MAX and os.environ.get("TENSEGRITY_COMPILE", "1") != "0":
+        with _lock:
+            lib = _compiled.get(n)
+            if lib is None:
+                path, second, step = _graphs(n)
+                lib = ""
+                cc = _kernels.compiler()
+                if cc is not None:
+                    try:
+                        lib = _kernels._compile_with(cc, f"tensegrity_paths_n{n}",
+                                                     {"path": path, "second": second, "step": step})
+                    except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
+                        _kernels._warn(f"compiling the path functions with {cc} failed ({exc})")
+                _compiled[n] = lib
+        if lib:
+            try:
+                return ca.external("path", lib), ca.external("second", lib), ca.external("step", lib), "compiled"
+            except RuntimeError as exc:
+                _kernels._warn(f"loading {lib} failed ({exc})")
+    path, second, step = _graphs(n)
+    return path, second, step, "virtual machine"
+
+
+class PathSystem:
+    """This thread's evaluators of the path system for chains of ``n`` segments."""
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        path, second, step, self.mode = _functions(n)
+        self._path = Fast(path)
+        self._second = Fast(second)
+        self._step = Fast(step)
+
+    def evaluate(self, x, p, dp, dp2, ctl):
+        """``(R, R_x, H, J, E, tip)`` at ``x = (q, F, t, s)`` (copies: safe to keep)."""
+        f = self._path
+        out = f(x, p, dp, dp2, ctl)
+        return (out[0].copy(), f.dense(1).copy(), f.dense(2).copy(), f.dense(3).copy(), float(out[4][0]),
+                out[5].copy())
+
+    def step(self, xa, tau, h, w, rs, tol, p, dp, dp2, ctl):
+        """The compiled predictor-corrector step (:func:`_step`): ``(x, res, iterations, tau_b, path outputs)``,
+        the path outputs as :meth:`evaluate` gives them. Copies."""
+        f = self._step
+        out = f(xa, tau, h, w, rs, tol, p, dp, dp2, ctl)
+        return (out[0].copy(), float(out[1][0]), int(out[2][0]), out[3].copy(),
+                (out[4].copy(), f.dense(5).copy(), f.dense(6).copy(), f.dense(7).copy(), float(out[8][0]),
+                 out[9].copy()))
+
+    def residual(self, x, p, dp, dp2, ctl):
+        """``(R, R_x)`` only (copies)."""
+        f = self._path
+        out = f(x, p, dp, dp2, ctl)
+        return out[0].copy(), f.dense(1).copy()
+
+    def second(self, x, v, p, dp, dp2, ctl):
+        """``(R_z v, d(R_z v)/dx, (R_zz v) v)`` at ``x`` for the direction ``v`` in ``z = (q, F)``."""
+        f = self._second
+        out = f(x, v, p, dp, dp2, ctl)
+        return out[0].copy(), f.dense(1).copy(), out[2].copy()
+
+
+_local = threading.local()
+
+
+def path_system(n: int) -> PathSystem:
+    """This thread's :class:`PathSystem` for ``n`` segments (built once per thread and ``n``)."""
+    cache = getattr(_local, "cache", None)
+    if cache is None:
+        cache = _local.cache = {}
+    ps = cache.get(n)
+    if ps is None:
+        ps = cache[n] = PathSystem(n)
+    return ps
+
+
+def control_vector(A_tip, A_F, c, tip_ref, F_ref) -> np.ndarray:
+    """The 14 control numbers in the order the functions read them."""
+    return np.concatenate([np.asarray(A_tip, float).ravel(), np.asarray(A_F, float).ravel(),
+                           np.asarray(c, float), np.asarray(tip_ref, float), np.asarray(F_ref, float)])
