@@ -377,10 +377,11 @@ def test_tie_rule_is_global_not_per_segment(other, expected_sign):
     assert np.array_equal(to.find_equilibria_under_force(m, stable_only=True)[0].q, best.q)
 
 
-def test_near_ties_adding_up_past_the_tolerance_are_enumerated():
+def test_near_ties_adding_up_past_the_tolerance():
     """Two copies of the tuned segment detuned so that the larger well lies 0.6 tolerance above the other:
     each alone ties, both together do not. Next to deep wells (max|q| fixed by them) the rule wants the
-    larger wells, but only one segment may take its larger one: (+2.01, -1.41, +2.47), not (+, +, +)."""
+    larger wells, but only one segment may take its larger one: (+2.01, -1.41, +2.47), not (+, +, +) (what
+    taking every segment's tied wells as a product would give)."""
     near = to.Segment(0.5, 1.0, (1.0, 1.6), (1.0 + TUNED_D + 3.3e-10, 1.0 - TUNED_D - 3.3e-10))
     m = to.Manipulator([near, near, to.Segment(0.3, 1.0, 1.0, 0.6)])
     chain = _chain(m)
