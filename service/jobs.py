@@ -1027,7 +1027,8 @@ class _TooManySegments(InvalidParameterError):
 
 
 def _segment_counts(norm: Mapping[str, Any]) -> list[tuple[str, int]]:
-    out = [("manipulator.n", int(norm["manipulator"]["n"]))]
+    base = norm["manipulator"]
+    out = [("manipulator.segments", len(base["segments"])) if "segments" in base else ("manipulator.n", int(base["n"]))]
     if "grid" in norm:
         out += [(f"grid.n[{i}]", int(n)) for i, n in enumerate(norm["grid"].get("n", []))]
     else:

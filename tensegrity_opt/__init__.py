@@ -13,6 +13,7 @@ Quick start::
 """
 
 from .analyses.all_equilibria import EquilibriumSet, find_equilibria
+from .analyses.atlas import StabilityAtlas, stability_atlas
 from .analyses.branches import Branch, BranchEvent, Control, bifurcation_diagram, switch_branch, trace_branch
 from .analyses.boundaries import StabilityBoundary, stability_boundary
 from .analyses.buckling import Buckling, Mode, critical_force
@@ -63,7 +64,7 @@ __all__ = [
     "Buckling", "Mode", "critical_force",
     "Curve", "Jump", "force_deflection",
     "Control", "Branch", "BranchEvent", "trace_branch", "switch_branch", "bifurcation_diagram",
-    "LimitLoad", "limit_load", "StabilityBoundary", "stability_boundary",
+    "LimitLoad", "limit_load", "StabilityBoundary", "stability_boundary", "StabilityAtlas", "stability_atlas",
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "sweep", "SweepResult",

@@ -16,6 +16,10 @@
   branch switching, bifurcation diagrams;
 * :mod:`.limit_load` - the load at which the dead-load path from a rest configuration loses stability
   (fold or bifurcation), the quasi-buckling load of a smooth path;
+* :mod:`.boundaries` - two-parameter continuation of folds and branch points (limit loads against a
+  design or control parameter, cusps);
+* :mod:`.atlas` - the workspace stability atlas of the held tip: stable equilibria per target, where the
+  least-energy branch switches and where stable branches end;
 * :mod:`.stiffness` - the Cartesian tangent stiffness;
 * :mod:`.landscape` - the energy over two joint angles;
 * :mod:`.design` - optimal designs and preloads (maximise the critical load, choose preloads).

@@ -3,7 +3,7 @@
 A sweep spec (JSON-friendly dict)::
 
     {"analysis": "buckling",                       # buckling | equilibrium | equilibria_count
-                                                   # | stiffness | design
+                                                   # | stiffness | design | atlas
      "manipulator": {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1},   # uniform base chain (defaults shown)
      "grid": {"n": [3, 4, 5], "k": [0.5, 1, 2]},   # cartesian product, first key varies slowest
      # or "points": [{"n": 4, "dx": 0.1}, {"n": 5, "dx": 0.2}],   # an explicit list
@@ -19,14 +19,20 @@ name       value                        used by
 ``b``      number > 0                   every analysis (triangle half-length)
 ``k``      number > 0                   every analysis (both springs' stiffness)
 ``L0``     number > 0                   every analysis (both springs' rest length)
-``dx``     number (default 0)           equilibrium, stiffness, equilibria_count
-``dy``     number (default 0)           equilibrium, stiffness, equilibria_count
+``dx``     number (default 0)           equilibrium, stiffness, equilibria_count, atlas
+``dy``     number (default 0)           equilibrium, stiffness, equilibria_count, atlas
 ``load``   ``[fx, fy]``                 equilibrium, stiffness (tip force instead of dx/dy)
 =========  ===========================  ===================================================
 
 A constant is a one-value list (``"dx": [0.1]``). A point gives either a tip deflection
 (``dx``/``dy``) or a tip force (``load``), never both. Parameters the analysis does not use
-are refused. ``options``: ``boundary`` (``"guided"`` | ``"free"``; buckling and design),
+are refused. The base chain may instead be given segment by segment (pre-bent, heterogeneous):
+``"manipulator": {"segments": [{"a": 1, "b": 1, "k": 1, "L0": [1.05, 0.95]}, ...]}`` (``k``, ``L0`` a number
+or the two springs' pair); its points then vary only ``dx``, ``dy``, ``load``.
+``"atlas"`` (over a grid in ``dx`` and ``dy``) computes every equilibrium of each target;
+:func:`atlas_from_rows` then makes the :class:`~tensegrity_opt.StabilityAtlas` (its edges analysed);
+its option ``method`` is ``"search"`` (default) or ``"homotopy"`` (certified counts).
+``options``: ``boundary`` (``"guided"`` | ``"free"``; buckling and design),
 and for ``design`` the arguments of :func:`tensegrity_opt.maximize_critical_force`:
 ``vary`` (default ``["k"]``), ``bounds`` (``{name: [lo, hi]}``), ``budget``
 (``{name: total}``), ``total_length``, ``tension`` (``[T_min, T_max]``), ``K_min``.
@@ -54,6 +60,7 @@ row), :mod:`.results` (:class:`SweepResult`, CSV / JSON / Parquet) and :mod:`.sc
 
 from __future__ import annotations
 
+from .atlas import atlas_from_rows
 from .evaluate import error_row, evaluate_point, format_error, solve_chunk
 from .plan import column_types, columns, expand, plan
 from .results import SweepResult, read_results, write_csv
@@ -69,4 +76,4 @@ from .spec import (
 
 __all__ = ["ANALYSES", "PARAMETERS", "RESULT_COLUMNS", "MAX_POINTS", "SweepResult", "validate_spec", "expand",
            "count_points", "columns", "column_types", "evaluate_point", "solve_chunk", "sweep", "format_error",
-           "read_results", "write_csv", "plan", "error_row"]
+           "read_results", "write_csv", "plan", "error_row", "atlas_from_rows"]

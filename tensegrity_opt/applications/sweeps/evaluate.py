@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from ...analyses.all_equilibria import find_equilibria
+from ...analyses.atlas import atlas_target
 from ...analyses.buckling import critical_force
 from ...analyses.design import maximize_critical_force
 from ...analyses.equilibrium import solve_equilibrium_under_force
@@ -28,8 +29,19 @@ from .spec import MANIPULATOR_PARAMETERS, _header, _point
 __all__ = ["evaluate_point", "format_error", "solve_chunk", "error_row"]
 
 def _manipulator(header: Mapping[str, Any], point: Mapping[str, Any]) -> Manipulator:
+    if "segments" in header["manipulator"]:
+        return _chain_of(header["manipulator"])
     p = {**header["manipulator"], **{k: v for k, v in point.items() if k in MANIPULATOR_PARAMETERS}}
     return Manipulator.uniform(p["n"], p["a"], p["b"], p["k"], p["L0"])
+
+
+def _chain_of(base: Mapping[str, Any]) -> Manipulator:
+    from ...model.segment import Segment
+
+    def pair(v):
+        return tuple(v) if isinstance(v, list) else v
+
+    return Manipulator(Segment(s["a"], s["b"], pair(s["k"]), pair(s["L0"])) for s in base["segments"])
 
 
 def _equilibrium(m: Manipulator, point: Mapping[str, Any]):
@@ -70,6 +82,16 @@ def _equilibria_count(m: Manipulator, point: Mapping[str, Any], opts: Mapping[st
             "min_energy": nullable(min(e.energy for e in eqs)) if eqs else None}
 
 
+def _atlas(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -> dict[str, Any]:
+    t = atlas_target(m, point.get("dx", 0.0), point.get("dy", 0.0), method=opts.get("method", "search"),
+                     strict=True)
+    return {"reachable": t.reachable, "count": t.count, "n_stable": t.n_stable, "n_saddle": t.n_saddle,
+            "n_maximum": t.n_maximum, "least_energy": nullable(t.least_energy), "least_signs": t.least_signs,
+            "tie": t.tie, "stable_energy": nullables([e.energy for e in t.stable]),
+            "stable_q": nullables(np.concatenate([e.q for e in t.stable])) if t.stable else [],
+            "certified": t.certified, "method": t.method}
+
+
 def _design(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -> dict[str, Any]:
     kw = {k: v for k, v in opts.items() if k in ("total_length", "K_min")}
     if "tension" in opts:
@@ -90,7 +112,7 @@ def _design(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -
 
 #: The result columns of a point, per analysis (the keys of :data:`.spec.RESULT_COLUMNS`).
 EVALUATORS = {"buckling": _buckling, "equilibrium": _equilibrium_row, "stiffness": _stiffness,
-              "equilibria_count": _equilibria_count, "design": _design}
+              "equilibria_count": _equilibria_count, "design": _design, "atlas": _atlas}
 
 
 def _evaluate(header: Mapping[str, Any], point: Mapping[str, Any]) -> dict[str, Any]:

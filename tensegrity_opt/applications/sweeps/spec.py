@@ -20,7 +20,7 @@ from ...errors import InvalidParameterError
 __all__ = ["ANALYSES", "PARAMETERS", "MANIPULATOR_PARAMETERS", "DEFAULT_MANIPULATOR", "DESIGN_VARIABLES",
            "MAX_POINTS", "USES", "OPTIONS", "PARAMETER_TYPES", "RESULT_COLUMNS", "count_points", "validate_spec"]
 
-ANALYSES = ("buckling", "equilibrium", "equilibria_count", "stiffness", "design")
+ANALYSES = ("buckling", "equilibrium", "equilibria_count", "stiffness", "design", "atlas")
 MANIPULATOR_PARAMETERS = ("n", "a", "b", "k", "L0")
 PARAMETERS = (*MANIPULATOR_PARAMETERS, "dx", "dy", "load")
 DEFAULT_MANIPULATOR: dict[str, Any] = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
@@ -35,12 +35,14 @@ USES: dict[str, tuple[str, ...]] = {
     "equilibrium": PARAMETERS,
     "stiffness": PARAMETERS,
     "equilibria_count": (*MANIPULATOR_PARAMETERS, "dx", "dy"),
+    "atlas": (*MANIPULATOR_PARAMETERS, "dx", "dy"),
 }
 #: Options and the analyses that use them.
 OPTIONS: dict[str, tuple[str, ...]] = {
     "boundary": ("buckling", "design"),
     "vary": ("design",), "bounds": ("design",), "budget": ("design",),
     "total_length": ("design",), "tension": ("design",), "K_min": ("design",),
+    "method": ("atlas",),
 }
 
 #: Column types: ``int``, ``float``, ``bool``, ``str``, ``floats`` (list of numbers), ``strs``.
@@ -59,6 +61,9 @@ RESULT_COLUMNS: dict[str, dict[str, str]] = {
                          "min_energy": "float"},
     "stiffness": {"kxx": "float", "kxy": "float", "kyy": "float", "fx": "float", "fy": "float",
                   "energy": "float", "stable": "bool", "shape": "str"},
+    "atlas": {"reachable": "bool", "count": "int", "n_stable": "int", "n_saddle": "int", "n_maximum": "int",
+              "least_energy": "float", "least_signs": "str", "tie": "bool", "stable_energy": "floats",
+              "stable_q": "floats", "certified": "bool", "method": "str"},
     "design": {"critical_force": "float", "multiplicity": "int", "initial_critical_force": "float",
                "loads": "floats", "active": "strs", "status": "str", "success": "bool", "iterations": "int"},
 }
@@ -129,6 +134,11 @@ def _options(analysis: str, raw: Any) -> dict[str, Any]:
         if boundary not in ("guided", "free"):
             _fail("options.boundary", f"must be 'guided' or 'free', got {boundary!r}")
         out["boundary"] = boundary
+    if analysis == "atlas":
+        method = raw.get("method", "search")
+        if method not in ("search", "homotopy"):
+            _fail("options.method", f"must be 'search' or 'homotopy', got {method!r}")
+        out["method"] = method
     if analysis != "design":
         return out
     vary = raw.get("vary", ["k"])
@@ -198,13 +208,61 @@ def _header(spec: Any) -> dict[str, Any]:
     raw_m = spec.get("manipulator")
     raw_m = {} if raw_m is None else raw_m
     if not isinstance(raw_m, Mapping):
-        _fail("manipulator", "must be an object {n, a, b, k, L0}")
-    base = dict(DEFAULT_MANIPULATOR)
-    for key, v in raw_m.items():
-        if key not in MANIPULATOR_PARAMETERS:
-            _fail(f"manipulator.{key}", "unknown key; the base chain is uniform: {n, a, b, k, L0}")
-        base[key] = _value(key, v, f"manipulator.{key}")
+        _fail("manipulator", "must be an object {n, a, b, k, L0} or {segments: [...]}")
+    if "segments" in raw_m:
+        base = _segments(raw_m)
+    else:
+        base = dict(DEFAULT_MANIPULATOR)
+        for key, v in raw_m.items():
+            if key not in MANIPULATOR_PARAMETERS:
+                _fail(f"manipulator.{key}", "unknown key; the base chain is {n, a, b, k, L0} (uniform) or "
+                      "{segments: [{a, b, k, L0}, ...]}")
+            base[key] = _value(key, v, f"manipulator.{key}")
     return {"analysis": analysis, "manipulator": base, "options": _options(analysis, spec.get("options"))}
+
+
+def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
+    """A base chain given segment by segment (pre-bent, heterogeneous): ``{"segments": [{a, b, k, L0}]}``, ``k`` and
+    ``L0`` a number or the pair of the two springs. Its segments are fixed: no point varies n, a, b, k, L0."""
+    from ...model.segment import Segment
+
+    extra = [k for k in raw_m if k != "segments"]
+    if extra:
+        _fail(f"manipulator.{extra[0]}", "a chain given by its segments takes no other key")
+    segs = raw_m["segments"]
+    if not isinstance(segs, (list, tuple)) or not segs:
+        _fail("manipulator.segments", "must be a non-empty list of {a, b, k, L0}")
+    out = []
+    for i, sd in enumerate(segs):
+        fld = f"manipulator.segments[{i}]"
+        if not isinstance(sd, Mapping):
+            _fail(fld, "must be an object {a, b, k, L0}")
+        for key in sd:
+            if key not in ("a", "b", "k", "L0"):
+                _fail(f"{fld}.{key}", "unknown key; a segment has a, b, k, L0")
+        norm: dict[str, Any] = {}
+        for key in ("a", "b", "k", "L0"):
+            v = sd.get(key, 1.0)
+            if isinstance(v, (list, tuple)):
+                if len(v) != 2:
+                    _fail(f"{fld}.{key}", "must be a number or the pair of the two springs")
+                norm[key] = [_value("a", x, f"{fld}.{key}[{j}]") for j, x in enumerate(v)]
+            else:
+                norm[key] = _value("a" if key != "k" else "k", v, f"{fld}.{key}")
+        try:
+            Segment(norm["a"], norm["b"], tuple(norm["k"]) if isinstance(norm["k"], list) else norm["k"],
+                    tuple(norm["L0"]) if isinstance(norm["L0"], list) else norm["L0"])
+        except InvalidParameterError as exc:
+            _fail(f"{fld}.{exc.field}" if exc.field else fld, exc.message)
+        out.append(norm)
+    return {"segments": out}
+
+
+def _fixed_chain(head: Mapping[str, Any], names: Iterable[str], fld: str) -> None:
+    if "segments" in head["manipulator"]:
+        for name in names:
+            if name in MANIPULATOR_PARAMETERS:
+                _fail(f"{fld}.{name}", "the base chain is given by its segments: a point cannot vary n, a, b, k, L0")
 
 
 def _shape(spec: Mapping[str, Any], analysis: str) -> tuple[str, Any]:
@@ -250,6 +308,12 @@ def validate_spec(spec: Any) -> dict[str, Any]:
     if total > MAX_POINTS:
         _fail(kind, f"{total} points; a sweep has at most {MAX_POINTS}")
     out: dict[str, Any] = {"analysis": analysis, "manipulator": head["manipulator"]}
+    if kind == "grid":
+        _fixed_chain(head, body, "grid")
+    else:
+        for i, p in enumerate(body):
+            if isinstance(p, Mapping):
+                _fixed_chain(head, p, f"points[{i}]")
     if kind == "grid":
         out["grid"] = {name: [_value(name, v, f"grid.{name}[{i}]") for i, v in enumerate(values)]
                        for name, values in body.items()}
