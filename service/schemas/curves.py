@@ -29,6 +29,9 @@ class ForceDeflectionRequest(BaseModel):
     dy: Deflection = Field(0.0, description="tip deflection along y, the same at every point")
     branch: Literal["stable", "all"] = Field(
         "stable", description='"all" also returns every branch found at the first deflected point')
+    reference: Literal["straight", "rest"] = Field(
+        "straight", description='what dx, dy are measured from: the straight tip (the paper\'s) or "rest", the tip '
+                                'of the least-energy rest configuration (a pre-bent arm unloaded: force 0 at dx = dy = 0)')
 
 
 class CurvePoint(BaseModel):
@@ -78,3 +81,6 @@ class ForceDeflectionOut(BaseModel):
     points: list[CurvePoint]
     jumps: list[JumpOut]
     branches: list[BranchOut] = Field(description='branch = "all" only (else empty)')
+    reference: Literal["straight", "rest"] = Field("straight", description="what dx, dy are measured from")
+    origin: list[float] = Field([0.0, 0.0], description="the reference tip's deflection from the straight tip "
+                                                        "(add it to dx, dy for the deflection from straight)")

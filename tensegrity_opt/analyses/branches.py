@@ -815,6 +815,12 @@ def _compiled_step(prob: _Problem, a: _Point, h: float, Xa: np.ndarray):
     return y, tau, max(iters, 1)
 
 
+def _tip_rank(p: _Point) -> float:
+    """Smallest over largest singular value of the tip Jacobian at ``p``."""
+    sv = np.linalg.svd(p.J, compute_uv=False)
+    return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
+
+
 def _continue(prob: _Problem, first: _Point, *, t_max, t_min, max_points, step, max_step, min_step, stop_at,
               prefix: list[_Point] | None = None) -> Branch:
     pts = [first] if prefix is None else list(prefix)
@@ -891,8 +897,16 @@ def _continue(prob: _Problem, first: _Point, *, t_max, t_min, max_points, step, 
                 break
         else:
             name = None
-        new = _singular_events(prob, len(pts) - 1, a, b, h) if (b.morse != a.morse or a.tau[-1] * b.tau[-1] < 0) \
-            else []
+        turned = a.tau[-1] * b.tau[-1] < 0
+        new = _singular_events(prob, len(pts) - 1, a, b, h) if (b.morse != a.morse or turned) else []
+        if turned and not new and prob.held_rows.shape[0] == 2 and min(_tip_rank(a), _tip_rank(b)) < 0.1:
+            # t turned with no fold of the reduced Hessian: the held tip passed the edge of its workspace (J loses
+            # rank between the points: the chain straightens) and the branch would come back on the other side
+            status = "workspace_boundary"
+            message = ("the held tip reached the edge of its workspace at t = {:.6g} (the tip Jacobian loses rank: "
+                       "the chain straightens); the branch ends there".format(max(a.x[-1], b.x[-1])
+                                                                            if a.tau[-1] > 0 else min(a.x[-1], b.x[-1])))
+            break
         events.extend(new)
         pts.append(b)
         s.append(s[-1] + float(np.linalg.norm((b.x - a.x) * prob.w)))

@@ -98,6 +98,7 @@ class Curve:
     Attributes
     ----------
     dx, dy : ndarray (m,)
+        The deflections, from the straight tip or (``reference="rest"``) from the rest configuration's tip.
     q : ndarray (m, n)
     fx, fy, energy : ndarray (m,)
     stable : ndarray (m,) of bool
@@ -110,6 +111,11 @@ class Curve:
     jumps : list of Jump
     branches : list of Curve
         ``branch="all"`` only: each branch followed separately.
+    reference : str
+        ``"straight"`` or ``"rest"``: what ``dx``, ``dy`` (and the jumps' ``dx_before`` ...) are measured from.
+    origin : ndarray (2,)
+        The reference tip's deflection from the straight tip (zero for ``"straight"``): add it to ``(dx, dy)``
+        to get the deflection from straight.
     """
 
     dx: np.ndarray
@@ -125,6 +131,8 @@ class Curve:
     status: list[str]
     jumps: list[Jump] = field(default_factory=list)
     branches: list["Curve"] = field(default_factory=list, repr=False)
+    reference: str = "straight"
+    origin: np.ndarray = field(default_factory=lambda: np.zeros(2))
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/force-deflection``): ``points`` (``dx``, ``dy``, ``fx``, ``fy``,
@@ -136,7 +144,8 @@ class Curve:
                    "stable": bool(self.stable[i]), "morse_index": int(self.morse_index[i]), "shape": self.shape[i],
                    "branch": int(self.branch[i])} for i in range(self.dx.size)]
         return {"points": points, "jumps": [j.to_dict() for j in self.jumps],
-                "branches": [br._branch_dict(bi) for bi, br in enumerate(self.branches)]}
+                "branches": [br._branch_dict(bi) for bi, br in enumerate(self.branches)],
+                "reference": self.reference, "origin": numbers(self.origin)}
 
     def _branch_dict(self, position: int) -> dict[str, Any]:
         """This curve as the ``position``-th item of ``branches``: its id and nullable points."""
@@ -193,7 +202,7 @@ def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
 
 
 def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"] = "stable", *,
-                     recheck_every: int = 250) -> Curve:
+                     recheck_every: int = 250, reference: Literal["straight", "rest"] = "straight") -> Curve:
     """Force-deflection relation ``F(dx, dy)`` along the least-energy stable branch.
 
     Parameters
@@ -208,6 +217,11 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         n <= 6, much more for long bistable chains with hundreds of equilibria).
     recheck_every : int
         A global solve every this many points guards against missed lower branches (0: never).
+    reference : {"straight", "rest"}
+        What ``(dx, dy)`` are measured from: the straight chain's tip ``(2 sum b, 0)`` (the paper's), or the tip
+        of the least-energy rest configuration (:func:`~tensegrity_opt.analyses.rest.rest_configuration`: a
+        pre-bent arm's unloaded shape), so that ``dx = dy = 0`` is the unloaded arm and the force there is 0.
+        The returned curve keeps the caller's values and says which (``Curve.reference``, ``Curve.origin``).
 
     Returns
     -------
@@ -222,6 +236,10 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     """
     if branch not in ("stable", "all"):
         raise InvalidParameterError(f"branch must be 'stable' or 'all', got {branch!r}", field="branch")
+    if reference not in ("straight", "rest"):
+        raise InvalidParameterError(f"reference must be 'straight' or 'rest', got {reference!r}", field="reference")
+    if reference == "rest":
+        return _from_rest(m, dx, dy, branch, recheck_every)
     dxs, dys = _points(m, dx, dy)
     npts, n = dxs.size, m.n
     targets = np.column_stack([m.straight_length - dxs, dys])
@@ -288,6 +306,32 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     if branch == "all":
         curve = Curve(**{**curve.__dict__, "branches": [_branch_curve(dxs, dys, br) for br in branches]})
     return curve
+
+
+def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve:
+    """The curve with ``(dx, dy)`` measured from the rest configuration's tip (``reference="rest"``)."""
+    from .rest import rest_configuration
+
+    rest = rest_configuration(m)
+    origin = np.array([m.straight_length - rest.tip[0], rest.tip[1]])
+    if np.max(np.abs(origin)) <= 1e-12 * m.straight_length:
+        origin = np.zeros(2)
+    rel_x = np.atleast_1d(np.asarray(dx, dtype=float))
+    rel_y = np.asarray(dy, dtype=float)
+    try:
+        c = force_deflection(m, rel_x + origin[0], rel_y + origin[1], branch, recheck_every=recheck_every)
+    except InvalidParameterError as exc:
+        raise InvalidParameterError(exc.message, field=exc.field, **exc.details) from None
+
+    def shift(cv: Curve) -> Curve:
+        return Curve(**{**cv.__dict__, "dx": cv.dx - origin[0], "dy": cv.dy - origin[1], "reference": "rest",
+                        "origin": origin.copy(),
+                        "jumps": [Jump(j.kind, j.dx_before - origin[0], j.dx_after - origin[0], j.force_before,
+                                       j.force_after, j.branch_before, j.branch_after, j.dy_before - origin[1],
+                                       j.dy_after - origin[1]) for j in cv.jumps],
+                        "branches": [shift(b) for b in cv.branches]})
+
+    return shift(c)
 
 
 def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free: bool) -> list[Equilibrium]:

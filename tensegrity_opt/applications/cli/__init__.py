@@ -74,7 +74,7 @@ def _cmd_equilibria(args, m):
 
 def _cmd_curve(args, m):
     dx = np.linspace(args.start, args.stop, args.num)
-    c = force_deflection(m, dx, args.dy, branch="stable")
+    c = force_deflection(m, dx, args.dy, branch="stable", reference=args.reference)
     data = c.to_dict
     lines = [f"Force-deflection (stable branch), dy = {args.dy:g}",
              f"{'dx':>10} {'Fx':>10} {'Fy':>10} {'energy':>12} {'shape':>5}"]
@@ -129,6 +129,8 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
     sp.add_argument("--stop", type=finite_float, default=1.0, help="last tip deflection dx (length)")
     sp.add_argument("--num", type=positive_int, default=11, help="number of deflections, evenly spaced")
     sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
+    sp.add_argument("--reference", choices=("straight", "rest"), default="straight",
+                    help="measure dx, dy from the straight tip or from the rest configuration's tip (pre-bent arms)")
     sp.set_defaults(func=_cmd_curve)
     add_path_parsers(sub)
     add_plot_parser(sub)
