@@ -210,7 +210,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
                 results.append(res)
     if not results:
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
-                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
+                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())), found=0)
     eqs = _sorted(m, _unique(results, dedupe_tol))
     return EquilibriumSet(eqs, method="search", certified=False,
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))

@@ -39,12 +39,13 @@ from typing import Any
 import numpy as np
 import scipy.optimize as so
 
-from ..errors import InvalidParameterError, TensegrityError, TimeLimitError, UnreachableTargetError
+from ..errors import InvalidParameterError, SolverError, TensegrityError, TimeLimitError, UnreachableTargetError
 from ..model.manipulator import Manipulator
 from ..numerics import DENSE_MAX, chain_solver
 from ..serialize import nullable, number, numbers
 from ..timelimit import expired, time_limit
-from .all_equilibria import HOMOTOPY_MAX_N, find_equilibria
+from ..numerics.homotopy import homotopy_available
+from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, find_equilibria
 from .branches import Branch, Control, trace_branch
 from .equilibrium import Equilibrium, make_equilibrium
 
@@ -58,6 +59,8 @@ CROSSING_KINDS = ("switch", "branch_end")
 #: Two stable equilibria of one target whose energies differ by less than this (relative to the
 #: energy scale ``k (sum of rest lengths)^2``) tie for the least energy.
 TIE_TOL = 1e-9
+#: Chains up to this long get the homotopy's certified answer where the search finds no equilibrium.
+HOMOTOPY_NONE_N = 4
 #: Two configurations closer than this (max-norm, rad) are the same equilibrium.
 SAME_Q = 1e-5
 
@@ -318,7 +321,12 @@ def atlas_target(m: Manipulator, dx: float, dy: float, *, method: str = "search"
     recorded in :attr:`AtlasTarget.error` (``strict=True``: raised); an unreachable target has every count 0."""
     t = AtlasTarget(float(dx), float(dy), method=method)
     try:
-        eqs = find_equilibria(m, dx, dy, method=method, timeout=timeout)
+        try:
+            eqs = find_equilibria(m, dx, dy, method=method, timeout=timeout)
+        except SolverError as exc:
+            if method != "search" or exc.details.get("found") != 0:
+                raise
+            eqs = _none_found(m, dx, dy, timeout)
     except UnreachableTargetError:
         t.reachable, t.count, t.n_stable, t.n_saddle, t.n_maximum, t.certified = False, 0, 0, 0, 0, True
         return t
@@ -338,6 +346,15 @@ def atlas_target(m: Manipulator, dx: float, dy: float, *, method: str = "search"
         t.least_energy, t.least_signs = float(t.stable[0].energy), t.stable[0].signs
         t.tie = len(t.stable) > 1 and t.stable[1].energy - t.stable[0].energy <= TIE_TOL * _energy_scale(m)
     return t
+
+
+def _none_found(m: Manipulator, dx: float, dy: float, timeout: float | None) -> EquilibriumSet:
+    """The search found no equilibrium inside the range (near the edge of the joint range's workspace): the
+    homotopy decides where it is cheap (``n <= HOMOTOPY_NONE_N`` and PHCpack installed; certified), else the
+    search's empty answer stands (measured)."""
+    if m.n <= HOMOTOPY_NONE_N and homotopy_available():
+        return find_equilibria(m, dx, dy, method="homotopy", timeout=timeout)
+    return EquilibriumSet([], method="search", certified=False)
 
 
 def _grid_values(v, name: str) -> np.ndarray:
@@ -614,6 +631,8 @@ def _switch(m: Manipulator, P: _Path, Q: _Path, a: np.ndarray, unit: np.ndarray,
                                     rtol=1e-14)
                 ep, eq = _solve_on(m, P, us0, a, unit), _solve_on(m, Q, us0, a, unit)
                 if ep is not None and eq is not None:
+                    if np.max(np.abs(ep.q - eq.q)) < SAME_Q:
+                        return None          # one branch seen from both ends: no switch
                     return crossing(us0, "equal_energy", ep, eq)
     # no equal-energy point shared: the least branch at A ends first (or starts late at B's side)
     if P.u.max() < length - 1e-12:

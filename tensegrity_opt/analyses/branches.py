@@ -815,6 +815,20 @@ def _compiled_step(prob: _Problem, a: _Point, h: float, Xa: np.ndarray):
     return y, tau, max(iters, 1)
 
 
+def _bound_before_limit(prob: _Problem, a: _Point, y: np.ndarray, t_max, t_min) -> bool:
+    """Whether the step ``a -> y`` that crosses a joint limit crosses t_max / t_min first: the point solved at
+    that bound is inside the range."""
+    for bound in (t_max, t_min):
+        if bound is None:
+            continue
+        if (y[-1] - bound) * (a.x[-1] - bound) < 0.0:
+            frac = (bound - a.x[-1]) / (y[-1] - a.x[-1])
+            ye, _ = prob.correct_t(a.x + frac * (y - a.x), float(bound))
+            if ye is not None and prob.limit_ratio(ye)[0] < 1.0 - LIMIT_MARGIN:
+                return True
+    return False
+
+
 def _tip_rank(p: _Point) -> float:
     """Smallest over largest singular value of the tip Jacobian at ``p``."""
     sv = np.linalg.svd(p.J, compute_uv=False)
@@ -858,8 +872,10 @@ def _continue(prob: _Problem, first: _Point, *, t_max, t_min, max_points, step, 
             continue
         b = _point(prob, y, tau)
         lim, joint = prob.limit_ratio(y)
-        # joint limit: the point where the largest |q_i| / limit reaches 1 - LIMIT_MARGIN ends the branch
-        if lim >= 1.0 - LIMIT_MARGIN:
+        # joint limit: the point where the largest |q_i| / limit reaches 1 - LIMIT_MARGIN ends the branch, unless
+        # t_max / t_min comes first on this step (the end point there is inside the range: the t bounds below)
+        bound_first = lim >= 1.0 - LIMIT_MARGIN and _bound_before_limit(prob, a, y, t_max, t_min)
+        if lim >= 1.0 - LIMIT_MARGIN and not bound_first:
             target = 1.0 - LIMIT_MARGIN
 
             def g(sig, a=a, b=b, h=h):
