@@ -18,6 +18,7 @@ import numpy as np
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.equilibrium import Equilibrium
+from tensegrity_opt.applications.sweeps import atlas_from_rows
 from tensegrity_opt.errors import NonFiniteResult
 from tensegrity_opt.numerics import DENSE_MAX
 from tensegrity_opt.serialize import number, numbers
@@ -32,7 +33,8 @@ __all__ = [
     "segment_torque_task", "energy_landscape_task", "batch_task", "warmup_task",
     "rest_configurations_task", "branch_task", "bifurcation_diagram_task", "limit_load_task",
     "stability_boundary_task", "trace_branches", "find_limit_load", "find_stability_boundary", "build_control",
-    "control_kwargs", "BRANCH_ALIASES", "LIMIT_LOAD_ALIASES",
+    "control_kwargs", "BRANCH_ALIASES", "LIMIT_LOAD_ALIASES", "atlas_values", "find_atlas", "atlas_task",
+    "find_job_atlas", "job_atlas_task", "JOB_ATLAS_ALIASES",
 ]
 
 
@@ -147,7 +149,7 @@ def deflections(dx: list[float] | s.RangeIn) -> np.ndarray:
 
 def force_deflection_task(req: s.ForceDeflectionRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
-    c = to.force_deflection(m, deflections(req.dx), req.dy, branch=req.branch)
+    c = to.force_deflection(m, deflections(req.dx), req.dy, branch=req.branch, reference=req.reference)
     return c.to_dict()
 
 
@@ -382,3 +384,42 @@ def find_stability_boundary(req: Any, deadline: float) -> Any:
 
 def stability_boundary_task(req: s.StabilityBoundaryRequest, deadline: float) -> dict[str, Any]:
     return find_stability_boundary(req, deadline).to_dict()
+
+
+# ---------------------------------------------------------------------------- stability atlas
+#: Library field -> request path for the atlas of a job (the inputs are the job's stored spec and rows).
+JOB_ATLAS_ALIASES = (("analysis", "spec.analysis"), ("grid", "spec.grid"), ("dx", "spec.grid.dx"),
+                     ("dy", "spec.grid.dy"), ("targets", "spec.grid"), ("rows", "id"), ("method", "spec.options.method"))
+
+
+def atlas_values(v: list[float] | s.RangeIn) -> np.ndarray:
+    """The grid values of an atlas axis: a list, or ``{start, stop, num}`` as ``numpy.linspace``."""
+    if isinstance(v, s.RangeIn):
+        return np.linspace(v.start, v.stop, v.num)
+    return np.asarray(v, dtype=float)
+
+
+def find_atlas(req: Any, deadline: float) -> to.StabilityAtlas:
+    """The atlas of an atlas request (``/v1/atlas``, ``/v1/plots/atlas``) within the soft ``deadline``: what is
+    done by then is answered with ``status: "time_limit"`` (``deps.path_deadline``)."""
+    m = build_manipulator(req.manipulator)
+    return to.stability_atlas(m, atlas_values(req.dx), atlas_values(req.dy), method=req.method, edges=req.edges,
+                              timeout=_seconds_left(deadline))
+
+
+def atlas_task(req: Any, deadline: float) -> dict[str, Any]:
+    return find_atlas(req, deadline).to_dict()
+
+
+def find_job_atlas(spec: dict[str, Any], rows: list[dict[str, Any]], edges: bool,
+                   deadline: float) -> to.StabilityAtlas:
+    """The atlas of a finished atlas job from its stored rows (``sweeps.atlas_from_rows``: each stored stable
+    equilibrium re-solved, then the edges analysed), within the soft ``deadline`` (the re-solves count: the limit
+    is around the whole call)."""
+    left = _seconds_left(deadline)
+    with to.time_limit(left):
+        return atlas_from_rows(spec, rows, edges=edges, timeout=left)
+
+
+def job_atlas_task(spec: dict[str, Any], rows: list[dict[str, Any]], edges: bool, deadline: float) -> dict[str, Any]:
+    return find_job_atlas(spec, rows, edges, deadline).to_dict()

@@ -11,6 +11,7 @@ variable                               default    meaning
 ``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (``too_many_segments`` on ``method``)
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_MAX_PATH_POINTS``         5000       most points of one branch (``max_points`` of the path endpoints)
+``TENSEGRITY_MAX_ATLAS_TARGETS``       400        most targets of ``/v1/atlas`` (``atlas_too_large`` above: a job)
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
 ``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: none, the solver threads)
@@ -70,6 +71,10 @@ from pydantic_settings import BaseSettings, NoDecode, SettingsConfigDict
 HARD_MAX_SEGMENTS = 200
 HARD_MAX_BATCH = 1000
 HARD_MAX_PATH_POINTS = 5000
+#: Most targets (dx values x dy values) of one inline atlas (``/v1/atlas``, ``/v1/plots/atlas``); larger grids
+#: are jobs (``/v1/jobs`` with ``analysis: atlas``). The schema bounds each axis by it; the product is the
+#: setting's to check (JSON Schema cannot bound a product).
+HARD_MAX_ATLAS_TARGETS = 400
 
 
 def _split(value: Any) -> Any:
@@ -101,6 +106,10 @@ class Settings(BaseSettings):
         description="most points of one branch the path endpoints (/v1/branch, /v1/bifurcation-diagram, "
                     "/v1/limit-load, /v1/stability-boundary and their figures) follow (max_points above: "
                     "422 too_many_points)")
+    max_atlas_targets: int = Field(
+        HARD_MAX_ATLAS_TARGETS, ge=1, le=HARD_MAX_ATLAS_TARGETS,
+        description="most targets (dx values x dy values) of one /v1/atlas or /v1/plots/atlas request (above: 422 "
+                    "atlas_too_large; larger grids run as a job, POST /v1/jobs with analysis atlas)")
     workers: int = Field(2, ge=1, le=64, description="solver worker threads")
     inline_max_segments: int = Field(
         8, ge=0, le=64,

@@ -22,7 +22,8 @@ from .pool import SolveTimeout
 from .responses import JSONBody, ResponseTooLarge, render_task
 
 __all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch",
-           "check_curve_size", "check_path_points", "path_deadline", "solve", "solve_heavy", "is_heavy"]
+           "check_curve_size", "check_path_points", "check_atlas_targets", "path_deadline", "solve", "solve_heavy",
+           "is_heavy"]
 
 api_key_header = APIKeyHeader(
     name="X-API-Key", auto_error=False, scheme_name="ApiKey",
@@ -103,6 +104,23 @@ def check_path_points(max_points: int, settings: Settings) -> None:
                            f"max_points = {max_points}; this server follows at most {settings.max_path_points} "
                            "points per branch", field="max_points",
                            details={"max_points": max_points, "max_path_points": settings.max_path_points})
+
+
+def _axis_size(v: Any) -> int:
+    return int(v.num) if isinstance(v, s.RangeIn) else len(v)
+
+
+def check_atlas_targets(req: Any, settings: Settings) -> None:
+    """Refuse an inline atlas of more targets (dx values x dy values) than ``settings.max_atlas_targets`` (422
+    ``atlas_too_large`` on ``dx``): a larger grid is a job (``POST /v1/jobs`` with ``analysis: atlas``)."""
+    nx, ny = _axis_size(req.dx), _axis_size(req.dy)
+    if nx * ny > settings.max_atlas_targets:
+        raise ServiceError(422, "atlas_too_large",
+                           f"the atlas has {nx * ny} targets ({nx} dx x {ny} dy); this server computes at most "
+                           f"{settings.max_atlas_targets} in one request: submit it as a job, POST /v1/jobs with "
+                           '{"analysis": "atlas", "grid": {"dx": [...], "dy": [...]}}, then GET /v1/jobs/{id}/atlas',
+                           field="dx", details={"targets": nx * ny, "nx": nx, "ny": ny,
+                                                "max_atlas_targets": settings.max_atlas_targets})
 
 
 #: Seconds of the time limit a path computation leaves for its answer (rendering, the hand-off back):

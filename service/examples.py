@@ -266,6 +266,31 @@ STABILITY_BOUNDARY = {
     "q": [[0.3, -0.13, -0.41, -0.22], [0.35, -0.15, -0.48, -0.26]],
     "force": [{"fx": -0.55, "fy": 0.0}, {"fx": -0.54, "fy": 0.0}], "cusps": [], "status": "p_max", "success": True}
 
+#: ``/v1/atlas`` of the bistable chain n = 3, a = 0.5 on dx [0.2, 0.8] x dy [0.3] (rounded): two folds on the edge.
+ATLAS = {
+    "dx": [0.2, 0.8], "dy": [0.3], "status": "complete", "success": True, "method": "search", "seconds": 0.42,
+    "count": [[4, 8]], "n_stable": [[2, 4]], "n_saddle": [[0, 0]], "n_maximum": [[2, 4]],
+    "least_energy": [[2.828188, 2.438335]], "least_signs": [["+-+", "+-+"]], "certified": [[False, False]],
+    "targets": [[
+        {"dx": 0.2, "dy": 0.3, "reachable": True, "count": 4, "n_stable": 2, "n_saddle": 0, "n_maximum": 2,
+         "least_energy": 2.828188, "least_signs": "+-+", "tie": False,
+         "stable_q": [[0.247659, -0.522279, 0.634424], [-0.094876, 0.487538, -0.672113]],
+         "stable_energy": [2.828188, 2.838758], "certified": False, "method": "search", "error": None},
+        {"dx": 0.8, "dy": 0.3, "reachable": True, "count": 8, "n_stable": 4, "n_saddle": 0, "n_maximum": 4,
+         "least_energy": 2.438335, "least_signs": "+-+", "tie": False,
+         "stable_q": [[0.509477, -1.151775, 1.192233], [-0.349738, 1.133449, -1.224354],
+                      [0.652228, -0.714746, -0.846602], [-0.454423, 0.590352, 0.999857]],
+         "stable_energy": [2.438335, 2.466582, 2.635382, 2.669858], "certified": False, "method": "search",
+         "error": None}]],
+    "crossings": [
+        {"kind": "branch_end", "dx": 0.648693, "dy": 0.3, "edge": [[0, 0], [1, 0]], "fraction": 0.747822,
+         "energy": 2.697568, "q": [0.468242, -0.361337, -1.061428], "force": [0.380393, -0.022725], "event": "fold",
+         "method": "moore_spence", "q_other": None, "force_other": None, "null_vector": [-0.46885, 1.0, -0.910853]},
+        {"kind": "branch_end", "dx": 0.735642, "dy": 0.3, "edge": [[0, 0], [1, 0]], "fraction": 0.892736,
+         "energy": 2.693019, "q": [-0.336504, 0.35355, 1.167391], "force": [0.324016, 0.060401], "event": "fold",
+         "method": "moore_spence", "q_other": None, "force_other": None, "null_vector": [-0.479404, 1.0, -0.881537]}],
+    "curves": {"switch": [], "branch_end": []}, "unresolved": []}
+
 ERRORS: dict[int, dict[str, dict[str, Any]]] = {
     401: {"unauthorized": {"summary": "missing or wrong API key",
                            "value": {"code": "unauthorized", "message": "missing API key: send the X-API-Key header",
@@ -321,6 +346,14 @@ ERRORS: dict[int, dict[str, dict[str, Any]]] = {
             "status": "Solve_Succeeded",
             "best": {"critical_force": -1.145586, "feasible": False, "multiplicity": 1,
                      "active": ["L0[0] <= 2", "L0[1] <= 2", "L0[2] <= 2", "L0[3] <= 2"]}}},
+        "atlas_too_large": {"summary": "more targets than the server computes in one request (a job then)", "value": {
+            "code": "atlas_too_large",
+            "message": "the atlas has 441 targets (21 dx x 21 dy); this server computes at most 400 in one request: "
+                       'submit it as a job, POST /v1/jobs with {"analysis": "atlas", "grid": {"dx": [...], '
+                       '"dy": [...]}}, then GET /v1/jobs/{id}/atlas',
+            "field": "dx", "details": {"targets": 441, "nx": 21, "ny": 21, "max_atlas_targets": 400}}},
+        "bad_grid": {"summary": "grid values not strictly increasing", "value": {
+            "code": "invalid_parameter", "message": "dx must be strictly increasing", "field": "dx"}},
         "no_equilibrium": {"summary": "no equilibrium inside the physical range", "value": {
             "code": "no_equilibrium",
             "message": "no equilibrium inside the physical range for the tip force (-0.6, 0): the minimiser "

@@ -603,6 +603,7 @@ class JobRunner:
         self.lease_seconds = float(pick(lease_seconds, "jobs_lease_seconds"))
         self.results_max_limit = int(_setting(settings, "jobs_results_max_limit", js.jobs_results_max_limit))
         self.max_segments = _setting(settings, "max_segments", None)
+        self.homotopy_max_segments = _setting(settings, "homotopy_max_segments", None)
         self.store = JobStore(self.db_path, synchronous or _setting(settings, "jobs_synchronous", js.jobs_synchronous))
         #: This runner's identity in the leases (one per server process).
         self.host = socket.gethostname()
@@ -706,6 +707,14 @@ class JobRunner:
                 if n > self.max_segments:
                     raise _TooManySegments(f"{fld}: the chain has {n} segments; this server accepts at most "
                                            f"{self.max_segments}", field=fld, n=n, max_segments=self.max_segments)
+        if norm["options"].get("method") == "homotopy" and self.homotopy_max_segments is not None:
+            # the server's limit of the homotopy (as /v1/equilibria's): its path count grows ~8x a segment
+            for fld, n in _segment_counts(norm):
+                if n > self.homotopy_max_segments:
+                    raise _TooManySegments(f"options.method: method 'homotopy' is accepted for chains of up to "
+                                           f"{self.homotopy_max_segments} segments; {fld} has {n}: use 'search'",
+                                           field="options.method", n=n,
+                                           homotopy_max_segments=self.homotopy_max_segments)
         return norm, total, sweep_columns(norm)
 
     @_storage_guard

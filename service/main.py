@@ -30,12 +30,13 @@ from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware, MethodsMiddleware
 from .pool import SolverPool
 from .responses import SafeJSONResponse
-from .routes import (batch, buckling, curves, design, equilibrium, landscape, ops, paths, plots, segment, stiffness,
-                     web)
+from .routes import (atlas, batch, buckling, curves, design, equilibrium, landscape, ops, paths, plots, segment,
+                     stiffness, web)
 from .routes import jobs as jobs_routes
 
 #: Routers behind the API key (when keys are configured) and the open ones (health, version, page).
-API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, plots, jobs_routes)
+API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, atlas, plots,
+               jobs_routes)
 OPEN_ROUTERS = (ops, web)
 #: Seconds the job runner and the solver threads each get to stop at shutdown.
 SHUTDOWN_JOIN = 0.5
@@ -75,9 +76,12 @@ TAGS = [
     {"name": "design", "description": "Design and control: strongest chain, preloads for a pose or a load."},
     {"name": "paths", "description": "Loading paths: rest configurations, equilibrium branches by arclength "
                                      "continuation, bifurcation diagrams, limit loads, stability boundaries."},
+    {"name": "atlas", "description": "The workspace stability atlas of the held tip: stable equilibria over a grid "
+                                     "of deflections, where the least-energy branch switches and where stable "
+                                     "branches end (large grids: a job with analysis atlas)."},
     {"name": "plots", "description": "Figures (PNG or SVG): force-deflection curves, energy landscapes, equilibrium "
                                      "shapes, torque curves, critical-load maps, branch diagrams, limit loads, "
-                                     "stability boundaries."},
+                                     "stability boundaries, stability atlases."},
     {"name": "jobs", "description": "Sweeps as background jobs, stored in SQLite and resumed after a restart."},
     {"name": "ops", "description": "Health, readiness, version and Prometheus metrics."},
 ]
@@ -187,7 +191,7 @@ def openapi_document() -> dict[str, Any]:
     created = doc["paths"]["/v1/jobs"]["post"]["responses"]["202"]
     created["links"] = {op: {"operationId": op, "parameters": {"job_id": "$response.body#/id"},
                              "description": f"{op.replace('_', ' ')} of the job just submitted"}
-                        for op in ("get_job", "get_job_results", "cancel_job", "delete_job")}
+                        for op in ("get_job", "get_job_results", "get_job_atlas", "cancel_job", "delete_job")}
     # The key is required only by servers that have keys: ``{}`` (no requirement) is the alternative.
     for item in doc["paths"].values():
         for op in item.values():

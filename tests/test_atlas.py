@@ -140,6 +140,10 @@ def test_sweep_spec_with_segments_refuses_varying_the_chain():
     with pytest.raises(to.InvalidParameterError) as e:
         sweeps.validate_spec({"analysis": "atlas", "manipulator": {**base, "n": 3}, "grid": {"dx": [0.1]}})
     assert e.value.field == "manipulator.n"
+    for spec, fld in (({"manipulator": {"n": 1}}, "manipulator.n"), ({"grid": {"dx": [0.1], "n": [3, 65]}}, "grid.n[1]")):
+        with pytest.raises(to.InvalidParameterError) as e:
+            sweeps.validate_spec({"analysis": "atlas", "grid": {"dx": [0.1]}, **spec})
+        assert e.value.field == fld
     with pytest.raises(to.InvalidParameterError) as e:
         sweeps.validate_spec({"analysis": "atlas", "grid": {"dx": [0.1]}, "options": {"method": "guess"}})
     assert e.value.field == "options.method"
@@ -157,6 +161,8 @@ def test_unreachable_targets_and_failed_targets_are_kept():
     # (the straight chain, dx = 0, is the edge of the workspace: the branches end there, no stability event)
     assert all(c.kind == "branch_end" and 0.0 < c.dx < 0.5 for c in to_far)
     assert atlas_target(BISTABLE, -1.0, 0.0).reachable is False
+    d = at.to_dict()                            # targets without a stable equilibrium: nulls, not a TypeError
+    assert d["targets"][0][0]["least_energy"] is None and d["least_energy"][0][0] is None
 
 
 def test_atlas_time_limit_keeps_what_is_done_and_validates_input():

@@ -44,11 +44,12 @@ def test_every_operation_is_documented():
                 ("/v1/design/preloads-for-load", "post"),
                 ("/v1/rest-configurations", "post"), ("/v1/branch", "post"), ("/v1/bifurcation-diagram", "post"),
                 ("/v1/limit-load", "post"), ("/v1/stability-boundary", "post"),
+                ("/v1/atlas", "post"),
                 *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map", "branch",
-                                                             "limit-load", "boundary")),
+                                                             "limit-load", "boundary", "atlas")),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
                 ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/cancel", "post"),
-                ("/v1/jobs/{job_id}/results", "get")}
+                ("/v1/jobs/{job_id}/results", "get"), ("/v1/jobs/{job_id}/atlas", "get")}
     assert set(ops) == expected
     ids = [op["operationId"] for op in ops.values()]
     assert len(ids) == len(set(ids))

@@ -3,7 +3,8 @@ delete it.
 
 Handlers are plain functions (FastAPI runs them in its thread pool): they only touch the
 SQLite job store; the sweeps themselves run in the job runner's background threads
-(:mod:`service.jobs`). With API keys configured a job belongs to the key that submitted it
+(:mod:`service.jobs`). The one exception, ``GET /v1/jobs/{id}/atlas``, reads the job's rows in a thread and
+assembles its stability atlas in the solver pool (:func:`service.deps.solve`, under the time limit). With API keys configured a job belongs to the key that submitted it
 (the store keeps the key's SHA-256): every other key gets 404 for it, as for an unknown id.
 Storage faults raise ``JobsUnavailable``, answered 503 ``jobs_unavailable`` by :mod:`service.errors`.
 """
@@ -16,19 +17,22 @@ from collections.abc import Iterator
 from typing import Annotated, Any, Literal
 
 from fastapi import APIRouter, Body, Depends, Query, Request, Response
+from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response as PlainResponse
 from starlette.responses import StreamingResponse
 
 from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.applications.sweeps import write_csv
 
+from .. import examples as ex
+from ..compute import JOB_ATLAS_ALIASES, job_atlas_task
 from ..config import Settings
-from ..deps import get_settings_dep
-from ..errors import ServiceError
+from ..deps import get_settings_dep, path_deadline, solve
+from ..errors import FieldContext, ServiceError
 from ..examples import ERRORS
 from ..jobs import JobFinished, JobNotFound, JobRunner, owner_hash, summary
 from ..responses import render_json_bounded
-from ..schemas import ErrorOut
+from ..schemas import AtlasOut, ErrorOut
 from ..schemas import jobs as js
 
 router = APIRouter(prefix="/v1/jobs", tags=["jobs"])
@@ -117,7 +121,12 @@ def _job(runner: JobRunner, job_id: str, owner: str | None) -> dict[str, Any]:
     "", operation_id="submit_job", status_code=202, response_model=js.JobCreated,
     summary="Submit a sweep as a background job",
     description="Body: a sweep spec (`analysis`, `manipulator`, `grid` | `points`, `options`; see "
-                "`tensegrity_opt.applications.sweeps`). Answers 202 at once with the job `id` and its number of points. A "
+                "`tensegrity_opt.applications.sweeps`). The base chain is uniform (`{n, a, b, k, L0}`, which the "
+                "points may vary) or given by its segments (`{\"segments\": [{a, b, k, L0}, ...]}`, `k` and `L0` a "
+                "number or the two springs' pair: pre-bent, heterogeneous; the points then vary only dx, dy, load). "
+                "`analysis: atlas` over a grid in `dx` and `dy` (option `method`: search | homotopy) computes every "
+                "equilibrium of each target; `GET /v1/jobs/{id}/atlas` then gives the stability atlas. Answers 202 "
+                "at once with the job `id` and its number of points. A "
                 "server runs at most `TENSEGRITY_JOBS_MAX_RUNNING` jobs at a time; jobs take turns of "
                 "`TENSEGRITY_JOBS_SLICE_SECONDS` (round-robin in order of arrival), so a huge job does not hold "
                 "later ones `queued`. A point longer than `TENSEGRITY_JOBS_POINT_TIMEOUT` becomes an error row "
@@ -133,7 +142,8 @@ def _job(runner: JobRunner, job_id: str, owner: str | None) -> dict[str, Any]:
         413: _err(413, "Request body larger than the server's limit (`TENSEGRITY_MAX_BODY_BYTES`).", ERRORS[413]),
         422: _err(422, "Invalid spec: a schema violation (`validation_error`) or a spec that does not fit its "
                        "analysis (`invalid_parameter`), more points than the server runs (`sweep_too_large`), "
-                       "a chain over the server's limit (`too_many_segments`); `field` names the culprit.",
+                       "a chain over the server's limit (`too_many_segments`; on `options.method`: an atlas by "
+                       "the homotopy on a chain over `homotopy_max_segments`); `field` names the culprit.",
                   _INVALID),
         503: _503,
     })
@@ -264,6 +274,82 @@ def _csv_response(runner: JobRunner, job: dict[str, Any], offset: int, limit: in
     if limit is not None and offset + limit < job["done"]:
         headers["X-Next-Offset"] = str(offset + limit)
     return StreamingResponse(body(), media_type="text/csv; charset=utf-8", headers=headers)
+
+
+def finished_atlas_job(runner: JobRunner, owner: str | None, job_id: str,
+                       field: str = "id") -> tuple[dict[str, Any], list[dict[str, Any]], FieldContext]:
+    """The normalised spec and every row of a finished atlas job, with the field context of its errors (a plain
+    function: it reads the store, so a route on the event loop calls it in a thread). 404 for an unknown job
+    (or someone else's), 422 ``invalid_parameter`` when it is not an atlas over a grid in ``dx`` and ``dy``
+    (``spec.analysis`` / ``spec.grid``; ``field`` when given otherwise), 409 ``job_not_done`` unless it is done."""
+    try:
+        job = runner.get(job_id, owner)
+    except JobNotFound:
+        raise ServiceError(404, "not_found", f"no job with id {job_id!r}", field=field) from None
+    spec = job["spec"]
+    on = (lambda name: f"spec.{name}") if field == "id" else (lambda name: field)
+    if spec.get("analysis") != "atlas":
+        raise ServiceError(422, "invalid_parameter", f"job {job_id!r} is a {spec.get('analysis')!r} sweep, not an "
+                           "atlas (analysis 'atlas' over a grid in dx and dy)", field=on("analysis"))
+    grid = spec.get("grid")
+    if grid is None or set(grid) != {"dx", "dy"}:
+        over = "a list of points" if grid is None else "a grid in " + ", ".join(grid)
+        raise ServiceError(422, "invalid_parameter", f"job {job_id!r} is an atlas sweep over {over}: an atlas needs "
+                           "a grid over exactly dx and dy", field=on("grid"))
+    if job["status"] != "done":
+        raise ServiceError(409, "job_not_done", f"job {job_id!r} is {job['status']} ({job['done']} of {job['total']} "
+                           "points): its atlas is made from the rows of a done job", field=field,
+                           details={"status": job["status"], "done": job["done"], "total": job["total"]})
+    uniform = "segments" not in spec["manipulator"]
+    aliases = JOB_ATLAS_ALIASES if field == "id" else tuple((name, field) for name, _ in JOB_ATLAS_ALIASES)
+    n_field = ("spec.manipulator.n" if uniform else "spec.manipulator.segments") if field == "id" else field
+    ctx = FieldContext(manipulator="uniform" if uniform else "segments", aliases=(("n", n_field), *aliases))
+    return spec, runner.rows(job_id), ctx
+
+
+_ATLAS_409 = _err(409, "The job is not done (`job_not_done`, `details.status` says what it is): its atlas is made "
+                       "from the rows of a done job.", {"job_not_done": {"summary": "the job still runs", "value": {
+                           "code": "job_not_done", "field": "id",
+                           "message": "job '3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910' is running (4 of 9 points): its atlas "
+                                      "is made from the rows of a done job",
+                           "details": {"status": "running", "done": 4, "total": 9}}}})
+_ATLAS_422 = _err(422, "Not an atlas job (`invalid_parameter` on `spec.analysis`, or on `spec.grid` for an atlas "
+                       "not over a grid in exactly dx and dy), or a bad query parameter (`validation_error`).",
+                  {**_422_ID["content"]["application/json"]["examples"],
+                   "not_an_atlas": {"summary": "the job is another analysis", "value": {
+                       "code": "invalid_parameter", "field": "spec.analysis",
+                       "message": "job '3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910' is a 'buckling' sweep, not an atlas "
+                                  "(analysis 'atlas' over a grid in dx and dy)"}},
+                   "response_too_large": ERRORS[422]["response_too_large"]})
+_ATLAS_503 = _err(503, "The job store cannot be used (`jobs_unavailable`), or the solver pool is saturated "
+                       "(`overloaded`).", {**_503["content"]["application/json"]["examples"], **ERRORS[503]})
+_ATLAS_503["headers"] = _503["headers"]
+
+
+@router.get(
+    "/{job_id}/atlas", operation_id="get_job_atlas", response_model=AtlasOut,
+    summary="The stability atlas of a finished atlas job",
+    description="For a job with `analysis: atlas` over a grid in `dx` and `dy` that is `done`: the atlas "
+                "(`tensegrity_opt.applications.sweeps.atlas_from_rows`: each stored stable equilibrium re-solved, "
+                "then the grid edges analysed for the least-energy switches and the branch ends), the body of "
+                "`POST /v1/atlas` for the same grid. Targets whose point failed are in it with their `error` "
+                "(`status: partial`). `edges=false`: the counts only. The edge analysis stops shortly before the "
+                "server's time limit and answers what it has (`status: \"time_limit\"`) instead of a 504. A job "
+                "not done yet: 409 `job_not_done`; another analysis, or an atlas not over dx x dy: 422 "
+                "`invalid_parameter` on `spec.analysis` / `spec.grid`. Someone else's job (API keys configured) "
+                "is 404.",
+    responses={200: {"description": "the atlas", "content": {"application/json": {"example": ex.ATLAS}}},
+               401: _401, 404: _404, 409: _ATLAS_409, 422: _ATLAS_422, 503: _ATLAS_503,
+               504: _err(504, "The re-solve of the stored equilibria did not finish within the server's time limit.",
+                         ERRORS[504])})
+async def get_job_atlas(
+    request: Request, runner: Runner, owner: Owner, job_id: str,
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+    edges: Annotated[bool, Query(description="locate the switches and branch ends on the grid edges")] = True,
+) -> Any:
+    spec, rows, ctx = await run_in_threadpool(finished_atlas_job, runner, owner, job_id)
+    return await solve(request, job_atlas_task, spec, rows, edges, path_deadline(settings), ctx=ctx, heavy=True,
+                       size_field="id")
 
 
 @router.post(

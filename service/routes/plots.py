@@ -1,4 +1,5 @@
-"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,boundary}`` answering PNG or SVG.
+"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,boundary,atlas}`` answering PNG
+or SVG.
 
 Each route validates its request, then draws the figure in the solver pool (the library call
 and matplotlib's rendering are both CPU-bound) and answers the bytes: ``image/png`` by
@@ -15,19 +16,26 @@ from typing import Annotated, Any
 
 import numpy as np
 from fastapi import APIRouter, Body, Depends, Request
+from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
 from .. import examples as ex
-from ..compute import (BRANCH_ALIASES, LIMIT_LOAD_ALIASES, build_manipulator, build_segment, deflections,
-                       find_limit_load, find_stability_boundary, trace_branches)
+from ..compute import (BRANCH_ALIASES, LIMIT_LOAD_ALIASES, build_manipulator, build_segment, deflections, find_atlas,
+                       find_job_atlas, find_limit_load, find_stability_boundary, trace_branches)
 from ..config import Settings
-from ..deps import check_manipulator, check_path_points, get_settings_dep, is_heavy, path_deadline, solve
+from ..deps import (check_atlas_targets, check_homotopy, check_manipulator, check_path_points, get_settings_dep,
+                    is_heavy, path_deadline, solve)
 from ..errors import FieldContext
+from ..schemas import ErrorOut
 from ..schemas import plots as ps
+from ..schemas.atlas import ATLAS_REQUEST_EXAMPLE
 from . import SOLVE_ERRORS, error_responses
+from .atlas import ATLAS_LIMITS
+from .jobs import Owner, Runner, finished_atlas_job
 
 __all__ = ["router", "negotiate", "plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task",
-           "plot_map_task", "plot_branch_task", "plot_limit_load_task", "plot_boundary_task"]
+           "plot_map_task", "plot_branch_task", "plot_limit_load_task", "plot_boundary_task", "plot_atlas_task",
+           "plot_job_atlas_task"]
 
 router = APIRouter(prefix="/v1/plots", tags=["plots"])
 
@@ -43,6 +51,12 @@ _EXTRA_422 = {
     "invalid_parameter": {"summary": "map values not strictly monotonic", "value": {
         "code": "invalid_parameter", "message": "values_x must be strictly increasing or strictly decreasing",
         "field": "values_x"}},
+    "atlas_too_large": ex.ERRORS[422]["atlas_too_large"],
+    "bad_grid": ex.ERRORS[422]["bad_grid"],
+    "not_an_atlas": {"summary": "the job is not a done atlas job", "value": {
+        "code": "invalid_parameter", "field": "job",
+        "message": "job '3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910' is a 'buckling' sweep, not an atlas (analysis 'atlas' "
+                   "over a grid in dx and dy)"}},
 }
 
 
@@ -151,6 +165,24 @@ def plot_boundary_task(req: ps.PlotBoundaryRequest, fmt: str, deadline: float) -
     m = build_manipulator(req.manipulator)
     b = find_stability_boundary(req, deadline)
     return _image(plots.plot_boundary(b, m=m, control=req.control.kind), fmt, req.dpi)
+
+
+def _atlas_image(at: Any, m: Any, fmt: str, dpi: int) -> bytes:
+    from tensegrity_opt.applications import plots
+
+    return _image(plots.plot_atlas(at, m=m), fmt, dpi)
+
+
+def plot_atlas_task(req: ps.PlotAtlasGridRequest, fmt: str, deadline: float) -> bytes:
+    return _atlas_image(find_atlas(req, deadline), build_manipulator(req.manipulator), fmt, req.dpi)
+
+
+def plot_job_atlas_task(spec: dict[str, Any], rows: list[dict[str, Any]], req: ps.PlotAtlasJobRequest, fmt: str,
+                        deadline: float) -> bytes:
+    from tensegrity_opt import Manipulator
+
+    at = find_job_atlas(spec, rows, req.edges, deadline)
+    return _atlas_image(at, Manipulator.from_dict(spec["manipulator"]), fmt, req.dpi)
 
 
 # ---------------------------------------------------------------------------- documentation
@@ -361,3 +393,47 @@ async def plot_boundary(
     fmt = negotiate(req.format, request.headers.get("accept"))
     return _reply(await solve(request, plot_boundary_task, req, fmt, path_deadline(settings), ctx=ctx, heavy=True),
                   fmt, "boundary")
+
+
+@router.post(
+    "/atlas", operation_id="plot_atlas", response_class=Response, response_model=None,
+    summary="Figure: the stability atlas, stable equilibria over (dx, dy) with the switch and branch-end curves",
+    description="The number of stable equilibria of the held tip as a map over the deflection (one cell per "
+                "target, one colour per count, unreachable targets hatched light grey, failed ones dark), the "
+                "curves where the least-energy branch switches (solid) and where stable branches end (dashed) with "
+                "their crossings marked, the legend beside the axes. Body: that of `/v1/atlas` (the atlas computed "
+                "for the figure), or `{\"job\": id}` for a finished atlas job (`GET /v1/jobs/{id}/atlas`: 404 for "
+                "an unknown job, 409 `job_not_done`, 422 `invalid_parameter` on `job` for another analysis). "
+                + ATLAS_LIMITS + " " + _FORMATS,
+    responses={**image_responses("atlas_too_large", "bad_grid", "not_an_atlas"),
+               404: {"model": ErrorOut, "description": "`job`: no job with this id (or someone else's).",
+                     "content": {"application/json": {"examples": {"not_found": {
+                         "summary": "unknown job id", "value": {
+                             "code": "not_found", "message": "no job with id '0123456789abcdef0123456789abcdef'",
+                             "field": "job"}}}}}},
+               409: {"model": ErrorOut, "description": "`job`: the job is not done (`job_not_done`).",
+                     "content": {"application/json": {"examples": {"job_not_done": {
+                         "summary": "the job still runs", "value": {
+                             "code": "job_not_done", "field": "job", "details": {"status": "running", "done": 4,
+                                                                                 "total": 9},
+                             "message": "job '3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910' is running (4 of 9 points): its "
+                                        "atlas is made from the rows of a done job"}}}}}}})
+async def plot_atlas(
+    request: Request, runner: Runner, owner: Owner,
+    req: Annotated[ps.PlotAtlasRequest, Body(openapi_examples={
+        "bistable": {"summary": "a bistable chain (a = 0.5), 3 x 3 targets", "value": ATLAS_REQUEST_EXAMPLE},
+        "job": {"summary": "the atlas of a finished atlas job, as SVG", "value": {
+            "job": "3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910", "format": "svg"}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Response:
+    fmt = negotiate(req.format, request.headers.get("accept"))
+    if isinstance(req, ps.PlotAtlasJobRequest):
+        spec, rows, ctx = await run_in_threadpool(finished_atlas_job, runner, owner, req.job, "job")
+        data = await solve(request, plot_job_atlas_task, spec, rows, req, fmt, path_deadline(settings), ctx=ctx,
+                           heavy=True)
+    else:
+        ctx = check_manipulator(req.manipulator, settings)
+        check_homotopy(req, settings)
+        check_atlas_targets(req, settings)
+        data = await solve(request, plot_atlas_task, req, fmt, path_deadline(settings), ctx=ctx, heavy=True)
+    return _reply(data, fmt, "atlas")

@@ -13,11 +13,20 @@ One module per resource, named after it: :mod:`.common` (the bounds and number t
 segment inputs, ranges, the tip force, the solver report, the error body; it imports none of its
 siblings), :mod:`.equilibrium`, :mod:`.buckling`, :mod:`.curves`, :mod:`.stiffness`, :mod:`.segment`,
 :mod:`.landscape`, :mod:`.batch`, :mod:`.design`, :mod:`.paths` (rest configurations, branches, bifurcation
-diagrams, limit loads, stability boundaries), :mod:`.ops` (health, readiness, version), :mod:`.plots`
+diagrams, limit loads, stability boundaries), :mod:`.atlas` (the workspace stability atlas), :mod:`.ops` (health, readiness, version), :mod:`.plots`
 (the figure requests) and :mod:`.jobs` (the sweep jobs). Every public model is re-exported here, so
 ``from service import schemas as s; s.EquilibriumRequest`` names any of them.
 """
 
+from .atlas import (
+    AtlasCrossingOut,
+    AtlasCurvesOut,
+    AtlasOut,
+    AtlasRange,
+    AtlasRequest,
+    AtlasTargetOut,
+    AtlasUnresolvedOut,
+)
 from .batch import BatchEquilibriumRequest, BatchItem, BatchOut, Target
 from .buckling import BucklingOut, BucklingRequest, ModeOut
 from .common import (
@@ -98,6 +107,8 @@ from .jobs import (
     SweepManipulator,
     SweepOptions,
     SweepPoint,
+    SweepSegmentedManipulator,
+    SweepUniformManipulator,
 )
 from .landscape import EnergyLandscapeOut, EnergyLandscapeRequest
 from .ops import Health, KernelsOut, Limits, Ready, VersionOut
@@ -127,6 +138,9 @@ from .paths import (
 from .plots import (
     MapValuesRange,
     PlotAngleRange,
+    PlotAtlasGridRequest,
+    PlotAtlasJobRequest,
+    PlotAtlasRequest,
     PlotBoundaryRequest,
     PlotBranchRequest,
     PlotCurveRequest,
@@ -142,6 +156,13 @@ from .stiffness import StiffnessOut, StiffnessRequest
 __all__ = [
     "Angle",
     "AngleRange",
+    "AtlasCrossingOut",
+    "AtlasCurvesOut",
+    "AtlasOut",
+    "AtlasRange",
+    "AtlasRequest",
+    "AtlasTargetOut",
+    "AtlasUnresolvedOut",
     "BatchEquilibriumRequest",
     "BatchItem",
     "BatchOut",
@@ -216,6 +237,9 @@ __all__ = [
     "ModeOut",
     "PAPER_CHAIN",
     "PlotAngleRange",
+    "PlotAtlasGridRequest",
+    "PlotAtlasJobRequest",
+    "PlotAtlasRequest",
     "PlotBoundaryRequest",
     "PlotBranchRequest",
     "PlotCurveRequest",
@@ -252,6 +276,8 @@ __all__ = [
     "SweepManipulator",
     "SweepOptions",
     "SweepPoint",
+    "SweepSegmentedManipulator",
+    "SweepUniformManipulator",
     "Target",
     "TracedBranchOut",
     "UniformManipulatorIn",

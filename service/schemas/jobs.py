@@ -5,19 +5,23 @@ The request mirrors :mod:`tensegrity_opt.applications.sweeps`'s spec (``analysis
 depends on the analysis (which parameters it uses, dx/dy and load never together, ...) and the
 server its limits. Every refusal names the field (``grid.dx[2]``, ``points[3].load``, ...).
 The order of the ``grid`` keys is kept: it is the nesting order of the cartesian product
-(first key slowest).
+(first key slowest). The base chain is uniform (``{n, a, b, k, L0}``, which the points may vary) or given
+segment by segment (``{"segments": [...]}``, pre-bent or heterogeneous; the points then vary only ``dx``,
+``dy``, ``load``), never both.
 """
 
 from __future__ import annotations
 
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Field, PrivateAttr, model_validator
+from pydantic import (BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, PrivateAttr, RootModel, Tag,
+                      model_validator)
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import Deflection, ForceValue, Length, Stiff, integral
+from .common import Deflection, ForceValue, Length, SegmentIn, Stiff, integral
 
-__all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "JobCreated", "JobSummary", "JobOut", "JobResults",
+__all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "SweepManipulator", "SweepUniformManipulator",
+           "SweepSegmentedManipulator", "JobCreated", "JobSummary", "JobOut", "JobResults",
            "JobList", "JobStatus", "SPEC_EXAMPLES", "JOB_EXAMPLE", "RESULTS_EXAMPLE", "CSV_EXAMPLE"]
 
 #: Schema caps (the server's ``TENSEGRITY_JOBS_MAX_POINTS`` can only be tighter).
@@ -26,7 +30,7 @@ MAX_GRID_VALUES = 10_000
 
 _STRICT = ConfigDict(strict=True, extra="forbid")
 
-Analysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design"]
+Analysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design", "atlas"]
 JobStatus = Literal["queued", "running", "done", "failed", "cancelled", "interrupted"]
 DesignVariable = Literal["a", "b", "k", "L0"]
 Segments = Annotated[int, Field(ge=1, le=HARD_MAX_SEGMENTS), BeforeValidator(integral)]
@@ -37,7 +41,7 @@ def _values(item: Any, what: str) -> Any:
     return Annotated[list[item], Field(min_length=1, max_length=MAX_GRID_VALUES, description=what)]
 
 
-class SweepManipulator(BaseModel):
+class SweepUniformManipulator(BaseModel):
     """The uniform base chain; a point's own n, a, b, k, L0 replace these."""
 
     model_config = _STRICT
@@ -47,6 +51,38 @@ class SweepManipulator(BaseModel):
     b: Length = Field(1.0, description="triangle half-length")
     k: Stiff = Field(1.0, description="spring stiffness (both springs)")
     L0: Length = Field(1.0, description="spring rest length (both springs)")
+
+
+class SweepSegmentedManipulator(BaseModel):
+    """The base chain segment by segment, base to tip (pre-bent: `L0` the pair `[L1_0, L2_0]`; heterogeneous):
+    fixed, so the points vary only dx, dy, load."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [{"segments": [
+        {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.05, 0.95]}, {"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]}]})
+
+    segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
+                                      description="segments from base to tip ({a, b, k, L0}; k and L0 a number or "
+                                                  "the pair of the two springs)")
+
+
+def _sweep_manipulator_kind(v: Any) -> str:
+    if isinstance(v, SweepSegmentedManipulator) or (isinstance(v, dict) and "segments" in v):
+        return "<segments>"
+    return "<uniform>"
+
+
+class SweepManipulator(RootModel[Annotated[
+        Union[Annotated[SweepUniformManipulator, Tag("<uniform>")],
+              Annotated[SweepSegmentedManipulator, Tag("<segments>")]],
+        Discriminator(_sweep_manipulator_kind)]]):
+    """The base chain: `{n, a, b, k, L0}` (uniform; the points may vary these) or `{"segments": [...]}` (given
+    segment by segment; the points vary only dx, dy, load), not both."""
+
+    model_config = ConfigDict(strict=True)
+
+    def to_spec(self) -> dict[str, Any]:
+        """The library's ``manipulator`` of the spec: the five uniform keys, or ``{"segments": [...]}`` only."""
+        return self.root.model_dump()
 
 
 class SweepGrid(BaseModel):
@@ -59,8 +95,8 @@ class SweepGrid(BaseModel):
     b: _values(Length, "triangle half-lengths") = None  # type: ignore[assignment]
     k: _values(Stiff, "spring stiffnesses") = None  # type: ignore[assignment]
     L0: _values(Length, "spring rest lengths") = None  # type: ignore[assignment]
-    dx: _values(Deflection, "tip deflections along x (equilibrium, stiffness, equilibria_count)") = None  # type: ignore[assignment]
-    dy: _values(Deflection, "tip deflections along y (equilibrium, stiffness, equilibria_count)") = None  # type: ignore[assignment]
+    dx: _values(Deflection, "tip deflections along x (equilibrium, stiffness, equilibria_count, atlas)") = None  # type: ignore[assignment]
+    dy: _values(Deflection, "tip deflections along y (equilibrium, stiffness, equilibria_count, atlas)") = None  # type: ignore[assignment]
     load: _values(Load, "tip forces [fx, fy] (equilibrium, stiffness; not with dx/dy)") = None  # type: ignore[assignment]
 
     _order: list[str] = PrivateAttr(default_factory=list)
@@ -99,11 +135,15 @@ BoundValue = Union[Finite, Annotated[list[Finite], Field(min_length=1, max_lengt
 
 
 class SweepOptions(BaseModel):
-    """``boundary`` for buckling and design; the rest are ``maximize_critical_force``'s (design only)."""
+    """``boundary`` for buckling and design; ``method`` for atlas; the rest are ``maximize_critical_force``'s
+    (design only)."""
 
     model_config = _STRICT
 
     boundary: Literal["guided", "free"] = Field(None, description="tip boundary condition (default guided)")  # type: ignore[assignment]
+    method: Literal["search", "homotopy"] = Field(  # type: ignore[assignment]
+        None, description="atlas only: how each target's equilibria are found, search (default) or homotopy "
+                          "(certified counts; chains up to the server's homotopy_max_segments)")
     vary: list[DesignVariable] = Field(None, min_length=1, max_length=4,  # type: ignore[assignment]
                                        description="design: per-segment variables to optimise (default [k])")
     bounds: dict[DesignVariable, Annotated[list[BoundValue], Field(min_length=2, max_length=2)]] = Field(  # type: ignore[assignment]
@@ -124,7 +164,9 @@ class JobSpec(BaseModel):
     model_config = _STRICT
 
     analysis: Analysis = Field(description="what to compute at each point")
-    manipulator: SweepManipulator = Field(default_factory=SweepManipulator, description="the uniform base chain")
+    manipulator: SweepManipulator = Field(
+        default_factory=lambda: SweepManipulator(SweepUniformManipulator()),
+        description="the base chain: uniform {n, a, b, k, L0} or {segments: [...]}")
     grid: SweepGrid = Field(None, description="cartesian product {parameter: [values]}")  # type: ignore[assignment]
     points: Annotated[list[SweepPoint], Field(min_length=1, max_length=HARD_MAX_JOB_POINTS)] = Field(  # type: ignore[assignment]
         None, description="explicit list of points")
@@ -132,7 +174,7 @@ class JobSpec(BaseModel):
 
     def to_spec(self) -> dict[str, Any]:
         """The library's spec (``tensegrity_opt.applications.sweeps``), grid order kept."""
-        out: dict[str, Any] = {"analysis": self.analysis, "manipulator": self.manipulator.model_dump()}
+        out: dict[str, Any] = {"analysis": self.analysis, "manipulator": self.manipulator.to_spec()}
         if self.grid is not None:
             out["grid"] = self.grid.ordered()
         if self.points is not None:
@@ -202,6 +244,14 @@ SPEC_EXAMPLES = {
     "design": {"summary": "strongest chain per n (design)", "value": {
         "analysis": "design", "grid": {"n": [3, 4]},
         "options": {"vary": ["k"], "bounds": {"k": [0.2, 5.0]}, "budget": {"k": 4.0}}}},
+    "atlas": {"summary": "stability atlas of a bistable chain over dx x dy (then GET /v1/jobs/{id}/atlas)", "value": {
+        "analysis": "atlas", "manipulator": {"n": 3, "a": 0.5, "b": 1.0, "k": 1.0, "L0": 1.0},
+        "grid": {"dx": [0.2, 0.8, 1.4], "dy": [-0.6, 0.0, 0.6]}, "options": {"method": "search"}}},
+    "atlas_pre_bent": {"summary": "atlas of a pre-bent chain given by its segments", "value": {
+        "analysis": "atlas", "manipulator": {"segments": [
+            {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.05, 0.95]}, {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.05, 0.95]},
+            {"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]},
+        "grid": {"dx": [0.2, 0.8], "dy": [0.0, 0.4]}}},
 }
 
 _ROW = {"index": 0, "n": 3, "k": 0.5, "critical_force": -0.470871, "load2": 0.929129, "loads": [0.470871, 0.929129],

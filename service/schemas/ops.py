@@ -32,6 +32,8 @@ class Limits(BaseModel):
     max_response_bytes: int = Field(description="largest JSON answer (422 response_too_large above)")
     max_curve_points: int
     max_path_points: int = Field(description="most points per branch of the path endpoints (422 too_many_points)")
+    max_atlas_targets: int = Field(description="most targets of one /v1/atlas or /v1/plots/atlas (422 "
+                                               "atlas_too_large; larger grids: a job with analysis atlas)")
     max_grid: int
     max_torque_points: int
 

@@ -12,6 +12,7 @@ from typing import Annotated, Any, Literal, Union
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 from . import common as s
+from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
 from .paths import MAX_BRANCHES, MAX_DEPTH, StabilityBoundaryRequest, _BranchFields, _LimitLoadFields
 
 #: Most points per axis of a critical-load map (each point is one eigen-solve).
@@ -194,3 +195,33 @@ class PlotBoundaryRequest(_PlotRequest, StabilityBoundaryRequest):
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": s.PAPER_CHAIN, "control": {"kind": "guided", "direction": [-1.0, 0.0]},
                       "parameter": "asymmetry", "p_min": -0.1, "p_max": 0.1}]})
+
+
+# ---------------------------------------------------------------------------- stability atlas
+class PlotAtlasGridRequest(_PlotRequest, _AtlasFields):
+    """The atlas of `/v1/atlas` computed for the figure (the same body)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [ATLAS_REQUEST_EXAMPLE]})
+
+
+class PlotAtlasJobRequest(_PlotRequest):
+    """The atlas of a finished atlas job (`GET /v1/jobs/{id}/atlas`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"job": "3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910"}]})
+
+    job: str = Field(min_length=1, max_length=64, description="the id of a finished job with analysis atlas over a "
+                                                              "grid in dx and dy")
+    edges: bool = Field(True, description="locate the switches and branch ends on the grid edges (false: the "
+                                          "counts only)")
+
+
+def _atlas_form(v: Any) -> str:
+    return "<job>" if isinstance(v, PlotAtlasJobRequest) or (isinstance(v, dict) and "job" in v) else "<grid>"
+
+
+PlotAtlasRequest = Annotated[
+    Union[Annotated[PlotAtlasGridRequest, Tag("<grid>")], Annotated[PlotAtlasJobRequest, Tag("<job>")]],
+    Discriminator(_atlas_form),
+    Field(description='the body of /v1/atlas (plus format, dpi), or {"job": id} for a finished atlas job'),
+]

@@ -114,7 +114,7 @@ class AtlasTarget:
     def to_dict(self) -> dict[str, Any]:
         return {"dx": number(self.dx), "dy": number(self.dy), "reachable": self.reachable, "count": self.count,
                 "n_stable": self.n_stable, "n_saddle": self.n_saddle, "n_maximum": self.n_maximum,
-                "least_energy": nullable(self.least_energy), "least_signs": self.least_signs, "tie": self.tie,
+                "least_energy": None if self.least_energy is None else nullable(self.least_energy), "least_signs": self.least_signs, "tie": self.tie,
                 "stable_q": [numbers(e.q) for e in self.stable],
                 "stable_energy": [number(e.energy) for e in self.stable],
                 "certified": self.certified, "method": self.method, "error": self.error}
@@ -256,8 +256,14 @@ class StabilityAtlas:
         return [c for c in self.crossings if c.kind == "branch_end"]
 
     def curves(self, kind: str) -> list[np.ndarray]:
-        """Segments ``[[dx0, dy0], [dx1, dy1]]`` joining the crossings of ``kind`` inside each grid cell
-        (two in a cell: one segment; more: nearest pairs; one: none)."""
+        """Segments ``[[dx0, dy0], [dx1, dy1]]`` joining the crossings of ``kind`` inside each grid cell.
+
+        A curve enters a cell through one edge and leaves through another: crossings on two different edges of
+        the cell are joined, the pairs whose configurations are closest first (one fold curve is one family of
+        fold shapes; two fold curves crossing one cell are told apart by their shapes, not by where they cross).
+        Crossings at one point (mirror-image branches ending together) count once; an unpaired crossing (a
+        curve ending inside the cell) draws no segment.
+        """
         if kind not in CROSSING_KINDS:
             raise InvalidParameterError(f"kind must be one of {CROSSING_KINDS}, got {kind!r}", field="kind")
         cells: dict[tuple[int, int], list] = {}
@@ -266,15 +272,20 @@ class StabilityAtlas:
                 continue
             (ia, ja), (ib, jb) = c.edge
             for cell in _cells_of(ia, ja, ib, jb, self.dx.size, self.dy.size):
-                cells.setdefault(cell, []).append(np.array([c.dx, c.dy]))
+                cells.setdefault(cell, []).append((np.array([c.dx, c.dy]), c.q, c.edge))
         segs = []
-        for pts in cells.values():
-            pts = list(pts)
-            while len(pts) >= 2:
-                p = pts.pop(0)
-                d = [np.linalg.norm(p - r) for r in pts]
-                k = int(np.argmin(d))
-                segs.append(np.array([p, pts.pop(k)]))
+        for items in cells.values():
+            uniq: list = []
+            for it in items:
+                if not any(np.max(np.abs(it[0] - u[0])) <= 1e-9 * (1.0 + np.max(np.abs(u[0]))) for u in uniq):
+                    uniq.append(it)
+            pairs = sorted((float(np.max(np.abs(uniq[a][1] - uniq[b][1]))), a, b)
+                           for a in range(len(uniq)) for b in range(a + 1, len(uniq)) if uniq[a][2] != uniq[b][2])
+            used: set[int] = set()
+            for _, a, b in pairs:
+                if a not in used and b not in used:
+                    used.update((a, b))
+                    segs.append(np.array([uniq[a][0], uniq[b][0]]))
         seen, out = set(), []
         for sg in segs:     # a segment between two grid points belongs to two cells: once
             key = tuple(sorted((tuple(np.round(sg[0], 12)), tuple(np.round(sg[1], 12)))))

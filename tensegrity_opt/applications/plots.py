@@ -1,5 +1,5 @@
-"""Figures (matplotlib, Agg canvas): curves, landscapes, shapes, torque curves, critical-load maps and the
-loading paths (branch diagrams, limit loads, stability boundaries).
+"""Figures (matplotlib, Agg canvas): curves, landscapes, shapes, torque curves, critical-load maps, the
+loading paths (branch diagrams, limit loads, stability boundaries) and the workspace stability atlas.
 
 Every ``plot_*`` function computes its data with the library and returns a
 :class:`matplotlib.figure.Figure` on an Agg canvas; :func:`save` writes it as PNG or SVG
@@ -29,12 +29,15 @@ function                  figure
                           displacement along it), the limit point and the quasi-buckling load marked
 :func:`plot_boundary`     a stability boundary (critical ``t`` against the second parameter ``p``),
                           cusps marked
+:func:`plot_atlas`        the stability atlas of :func:`~tensegrity_opt.stability_atlas`: the number of
+                          stable equilibria over ``(dx, dy)`` (discrete colours), the switch and
+                          branch-end curves with their crossings
 ========================  ===================================================================
 
 Every figure is drawn in the caller's units (forces ``stiffness x length``, energies
 ``stiffness x length^2``, lengths, angles in rad), and the axes say so; the loading-path figures put
 their legend beside the axes (a figure legend: it never covers the data) and the chain's
-parameters in the title (:func:`chain_label`).
+parameters in the title (:func:`chain_label`); so does the atlas.
 
 The plotted data are the library's numbers, unchanged. Artists carry stable ``gid`` values so
 that they can be found again (tests read the data back from them):
@@ -53,7 +56,10 @@ that they can be found again (tests read the data back from them):
 * branches: ``"branch-<b>-morse<k>-<j>"`` (branch ``b``'s ``j``-th piece, of Morse index ``k``),
   ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"``; limit load:
   ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"``, ``"quasi-buckling-level"``,
-  ``"path-end"``; boundary: ``"boundary"``, ``"cusps"``.
+  ``"path-end"``; boundary: ``"boundary"``, ``"cusps"``;
+* atlas: ``"n_stable"`` (QuadMesh, masked ``n_stable[j, i]``), ``"unreachable"``, ``"failed"`` (cells),
+  ``"switch"``, ``"branch_end"`` (line collections of the curves), ``"switch-points"``,
+  ``"branch_end-points"`` (the crossings).
 """
 
 from __future__ import annotations
@@ -79,7 +85,7 @@ __all__ = ["chain_geometry", "plot_curve", "plot_landscape", "plot_shapes", "plo
            "render", "landscape_span", "critical_load_grid", "curve_breaks", "physical_range",
            "segment_label", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS", "plot_branches", "plot_limit_load",
            "plot_boundary", "chain_label", "branch_quantity_label", "morse_color", "BRANCH_QUANTITIES",
-           "MORSE_COLORS", "EVENT_STYLES"]
+           "MORSE_COLORS", "EVENT_STYLES", "plot_atlas", "ATLAS_STYLES"]
 
 #: File suffix / format name -> MIME type.
 FORMATS = {"png": "image/png", "svg": "image/svg+xml"}
@@ -1055,4 +1061,114 @@ def plot_boundary(boundary: Any, *, m: Manipulator | None = None, control: Any =
     head = f"Stability boundary ({kind}) over {boundary.parameter}" + (
         f", {_control_text(control)}" if control is not None else "") + incomplete
     ax.set_title(head + (f"\n{chain_label(m)}" if m is not None else ""), fontsize=9)
+    return fig
+
+
+# ---------------------------------------------------------------------------- stability atlas
+#: Styles of the atlas's crossing curves and points (:func:`plot_atlas`).
+ATLAS_STYLES = {
+    "switch": {"color": "black", "lw": 2.2, "ls": "-", "marker": "o", "ms": 5.0, "mfc": "white", "mec": "black",
+               "label": "least-energy branch switches (equal energy)"},
+    "branch_end": {"color": "tab:red", "lw": 1.8, "ls": "--", "marker": "D", "ms": 4.5, "mfc": "tab:red",
+                   "mec": "black", "label": "stable branch ends (fold: the arm snaps)"},
+}
+#: Fill of the cells without a count: beyond the chain's reach, and failed (an error or the time limit).
+ATLAS_UNREACHABLE = {"facecolor": "0.93", "edgecolor": "0.65", "hatch": "////"}
+ATLAS_FAILED = {"facecolor": "0.2", "edgecolor": "white", "hatch": "xx"}
+
+
+def _cell_edges(v: np.ndarray, other: np.ndarray) -> np.ndarray:
+    """Edges of the cells centred on the grid values ``v`` (midpoints; the outer cells as wide as their
+    neighbour); one value: a cell as wide as the other axis's step (or 0.1)."""
+    v = np.asarray(v, dtype=float)
+    if v.size == 1:
+        step = float(np.min(np.diff(other))) if other.size > 1 else 0.1
+        return np.array([v[0] - step / 2, v[0] + step / 2])
+    mid = (v[1:] + v[:-1]) / 2
+    return np.concatenate([[v[0] - (mid[0] - v[0])], mid, [v[-1] + (v[-1] - mid[-1])]])
+
+
+def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = None,
+               figsize: tuple[float, float] = (8.8, 5.6)) -> Any:
+    """The workspace stability atlas of :func:`~tensegrity_opt.stability_atlas` (or
+    :func:`~tensegrity_opt.applications.sweeps.atlas_from_rows`): the number of stable equilibria of the held
+    tip as a map over the deflection ``(dx, dy)``, one cell centred on each target, one colour per count (a
+    discrete colour bar with integer ticks); the targets beyond the chain's reach hatched light grey and the
+    failed ones (an error, or not computed within the time limit) dark and cross-hatched. On top: the curves
+    where the least-energy branch switches (``atlas.curves("switch")``, solid) and where stable branches end
+    (``atlas.curves("branch_end")``, dashed), each crossing located on a grid edge marked. The legend sits
+    beside the axes (it never covers data); the axes are the deflections in the caller's length unit; the title
+    names the method, the grid, the status when incomplete and (``m``) the chain's parameters.
+
+    Artists (``gid``): ``"n_stable"`` (QuadMesh, masked array ``n_stable[j, i]``, masked where unreachable or
+    failed), ``"unreachable"``, ``"failed"`` (the cells, patch collections), ``"switch"``, ``"branch_end"`` (line
+    collections of the curves' segments), ``"switch-points"``, ``"branch_end-points"`` (the crossings).
+    """
+    from ..analyses.atlas import StabilityAtlas
+
+    if not isinstance(atlas, StabilityAtlas):
+        raise InvalidParameterError(f"plot_atlas needs a StabilityAtlas, got {type(atlas).__name__}", field="atlas")
+    import matplotlib
+    from matplotlib import patheffects
+    from matplotlib.collections import LineCollection, PatchCollection
+    from matplotlib.colors import BoundaryNorm, ListedColormap
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch, Rectangle
+
+    X, Y = np.asarray(atlas.dx, float), np.asarray(atlas.dy, float)
+    ns = atlas.n_stable
+    ok = np.array([[t.ok for t in row] for row in atlas.targets], dtype=bool).reshape(ns.shape)
+    reach = np.array([[t.reachable for t in row] for row in atlas.targets], dtype=bool).reshape(ns.shape)
+    good = ok & reach & (ns >= 0)
+    kmax = int(ns[good].max()) if good.any() else 0
+    base = matplotlib.colormaps["viridis"]
+    colors = base(np.linspace(0.0, 1.0, kmax + 1)) if kmax > 0 else base([0.55])
+    cmap = ListedColormap(colors).with_extremes(bad=(1.0, 1.0, 1.0, 0.0))
+    norm = BoundaryNorm(np.arange(-0.5, kmax + 1.5), cmap.N)
+    xe, ye = _cell_edges(X, Y), _cell_edges(Y, X)
+
+    fig = _new_figure(figsize)
+    ax = fig.subplots()
+    mesh = ax.pcolormesh(xe, ye, np.ma.masked_array(ns, mask=~good), cmap=cmap, norm=norm, shading="flat")
+    mesh.set_gid("n_stable")
+    step = max(1, math.ceil((kmax + 1) / 12))
+    fig.colorbar(mesh, ax=ax, ticks=list(range(0, kmax + 1, step)),
+                 label="stable equilibria (minima) with the tip held there")
+    handles: list = []
+    labels: list = []
+    for name, style, mask, what in (("unreachable", ATLAS_UNREACHABLE, ok & ~reach, "beyond the chain's reach"),
+                                    ("failed", ATLAS_FAILED, ~ok, "failed (an error, or the time limit)")):
+        cells = [Rectangle((xe[i], ye[j]), xe[i + 1] - xe[i], ye[j + 1] - ye[j]) for j, i in np.argwhere(mask)]
+        coll = PatchCollection(cells, lw=0.4, **style)
+        coll.set_gid(name)
+        ax.add_collection(coll)
+        if cells:
+            handles.append(Patch(**style, lw=0.4))
+            labels.append(f"{what} ({len(cells)})")
+    halo = [patheffects.withStroke(linewidth=4.0, foreground="white")]
+    for kind, style in ATLAS_STYLES.items():
+        segs = [np.asarray(s, float) for s in atlas.curves(kind)]
+        lc = LineCollection(segs, colors=style["color"], linewidths=style["lw"], linestyles=style["ls"], zorder=4)
+        lc.set_path_effects(halo)
+        lc.set_gid(kind)
+        ax.add_collection(lc)
+        pts = np.array([[c.dx, c.dy] for c in atlas.crossings if c.kind == kind], dtype=float).reshape(-1, 2)
+        line, = ax.plot(pts[:, 0], pts[:, 1], ls="none", marker=style["marker"], ms=style["ms"], mfc=style["mfc"],
+                        mec=style["mec"], zorder=5)
+        line.set_gid(f"{kind}-points")
+        handles.append(Line2D([], [], color=style["color"], lw=style["lw"], ls=style["ls"], marker=style["marker"],
+                              ms=style["ms"], mfc=style["mfc"], mec=style["mec"]))
+        labels.append(f"{style['label']}: {len(segs)} segments, {len(pts)} crossings")
+    ax.set_xlim(float(xe[0]), float(xe[-1]))
+    ax.set_ylim(float(ye[0]), float(ye[-1]))
+    ax.set_xlabel(branch_quantity_label("dx") + ", > 0 shortens the chain")
+    ax.set_ylabel(branch_quantity_label("dy"))
+    _outside_legend(ax, handles, labels)
+    if title is None:
+        certified = bool(np.all(atlas.certified[good])) and good.any()
+        title = (f"Stability atlas of the held tip: {X.size} x {Y.size} targets, method {atlas.method}"
+                 + (" (certified counts)" if certified else "")
+                 + ("" if atlas.status == "complete" else f" - {atlas.status}")
+                 + (f"\n{chain_label(m)}" if m is not None else ""))
+    ax.set_title(title, fontsize=9)
     return fig

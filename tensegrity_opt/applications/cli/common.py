@@ -63,8 +63,8 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     """The manipulator options every analysis command takes (uniform chain or a JSON file)."""
     g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
     g.add_argument("--n", type=positive_int, default=4, help="number of identical segments")
-    g.add_argument("--a", type=finite_float, default=1.0, help="half base of a segment's triangles (length)")
-    g.add_argument("--b", type=finite_float, default=1.0, help="height of a segment's triangles (length)")
+    g.add_argument("--a", type=finite_float, default=1.0, help="triangle half-height a (length)")
+    g.add_argument("--b", type=finite_float, default=1.0, help="triangle half-length b (length; a segment is 2 b long straight)")
     g.add_argument("--k", type=finite_float, default=1.0, help="spring stiffness (force / length)")
     g.add_argument("--L0", type=finite_float, default=1.0, help="spring rest length (length)")
     g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')

@@ -1,11 +1,11 @@
-"""Command line loading paths: ``tensegrity-opt rest|branch|limit-load|boundary ...``.
+"""Command line loading paths and the stability atlas: ``tensegrity-opt rest|branch|limit-load|boundary|atlas ...``.
 
-:func:`add_path_parsers` adds the four commands to the ``tensegrity-opt`` parser; each sets
+:func:`add_path_parsers` adds the five commands to the ``tensegrity-opt`` parser; each sets
 ``func(args, m) -> (data, text)`` like the other analysis commands (a table, or with ``--json`` the
 result's ``to_dict()``: the body of ``/v1/rest-configurations``, ``/v1/branch`` (``/v1/bifurcation-diagram``
-with ``--depth``), ``/v1/limit-load``, ``/v1/stability-boundary``). The control and start options
-(:func:`add_control_options`, :func:`add_start_options`) are shared with ``plot branch|limit-load|boundary``
-(:mod:`.plot`).
+with ``--depth``), ``/v1/limit-load``, ``/v1/stability-boundary``, ``/v1/atlas``). The control, start and
+atlas options (:func:`add_control_options`, :func:`add_start_options`, :func:`add_atlas_options`) are shared
+with ``plot branch|limit-load|boundary|atlas`` (:mod:`.plot`).
 
 Examples::
 
@@ -14,6 +14,8 @@ Examples::
     tensegrity-opt branch --control guided --t-max 2 --t-min -0.2 --start-q 0 0 0 0 --depth 1 --json
     tensegrity-opt limit-load --boundary free --direction -1 0
     tensegrity-opt boundary --parameter asymmetry --p-min -0.05 --p-max 0.05
+    tensegrity-opt atlas --n 3 --a 0.5 --dx 0.2 1.4 7 --dy -0.6 0.6 7
+    tensegrity-opt atlas --n 3 --a 0.5 --dx 0.2 1.4 3 --dy 0 0.6 3 --method homotopy --no-edges --json
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from typing import Any
 
 import numpy as np
 
+from ...analyses.atlas import StabilityAtlas, stability_atlas
 from ...analyses.boundaries import stability_boundary
 from ...analyses.branches import Branch, Control, bifurcation_diagram, trace_branch
 from ...analyses.least_energy import solve_equilibrium
@@ -34,7 +37,7 @@ from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float
 
 __all__ = ["add_path_parsers", "add_control_options", "add_start_options", "add_limit_load_options",
            "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args",
-           "limit_load_from_args", "boundary_from_args", "CONTROL_KINDS"]
+           "limit_load_from_args", "boundary_from_args", "add_atlas_options", "atlas_from_args", "CONTROL_KINDS"]
 
 CONTROL_KINDS = ("displacement", "load", "guided", "wall", "preload")
 
@@ -134,6 +137,32 @@ def add_boundary_options(sp: argparse.ArgumentParser) -> None:
     sp.add_argument("--p-max", type=finite_float, default=0.1, help="upper end of p (the parameter's unit)")
     sp.add_argument("--max-points", type=at_least_two, default=400, help="at most this many points on the boundary")
     sp.add_argument("--timeout", type=positive_float, default=None, help="seconds; then the boundary so far")
+
+
+def add_atlas_options(sp: argparse.ArgumentParser) -> None:
+    g = sp.add_argument_group("atlas (the grid of tip targets)")
+    g.add_argument("--dx", type=finite_float, nargs=3, default=[0.1, 1.3, 5], metavar=("START", "STOP", "NUM"),
+                   help="the dx values (length; > 0 shortens the chain): NUM evenly spaced from START to STOP")
+    g.add_argument("--dy", type=finite_float, nargs=3, default=[-0.6, 0.6, 5], metavar=("START", "STOP", "NUM"),
+                   help="the dy values (sideways, length): NUM evenly spaced from START to STOP")
+    g.add_argument("--method", choices=("search", "homotopy"), default="search",
+                   help="each target's equilibria: multi-start Newton, or PHCpack's certified homotopy (n <= 6)")
+    g.add_argument("--no-edges", action="store_true",
+                   help="the counts only: do not locate the switches and branch ends on the grid edges")
+    g.add_argument("--timeout", type=positive_float, default=None,
+                   help="seconds; then the targets and edges done so far (status time_limit)")
+
+
+def _grid_axis(spec: list[float], name: str) -> np.ndarray:
+    start, stop, num = spec
+    if num != int(num) or num < 1:
+        raise InvalidParameterError(f"--{name} START STOP NUM: NUM must be an integer >= 1, got {num:g}", field=name)
+    return np.linspace(start, stop, int(num))
+
+
+def atlas_from_args(args: argparse.Namespace, m: Manipulator) -> StabilityAtlas:
+    return stability_atlas(m, _grid_axis(args.dx, "dx"), _grid_axis(args.dy, "dy"), method=args.method,
+                           edges=not args.no_edges, timeout=args.timeout)
 
 
 def _control_kw(args: argparse.Namespace) -> dict[str, Any]:
@@ -278,8 +307,33 @@ def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     return b.to_dict, "\n".join(lines)
 
 
+def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    at = atlas_from_args(args, m)
+    ns = at.n_stable
+    lines = [f"Stability atlas of the held tip, n = {m.n}, method {at.method}: {at.dx.size} x {at.dy.size} targets, "
+             f"status {at.status} ({at.seconds:.1f} s)",
+             "stable equilibria per target (rows dy from the top down, columns dx; '-' beyond reach, '!' failed):",
+             f"{'dy / dx':>10} " + " ".join(f"{x:>7.3g}" for x in at.dx)]
+    for j in range(at.dy.size - 1, -1, -1):
+        cells = []
+        for i in range(at.dx.size):
+            t = at.targets[j][i]
+            cells.append("!" if not t.ok else "-" if not t.reachable else str(int(ns[j, i])))
+        lines.append(f"{at.dy[j]:>10.4g} " + " ".join(f"{c:>7}" for c in cells))
+    lines.append(f"crossings: {len(at.switches)} switches, {len(at.branch_ends)} branch ends"
+                 + (f"; {len(at.unresolved)} edges unresolved" if at.unresolved else ""))
+    if at.crossings:
+        lines.append(f"  {'kind':<10} {'dx':>10} {'dy':>10} {'energy':>11} {'event':<12} method")
+        lines += [f"  {c.kind:<10} {c.dx:>10.6f} {c.dy:>10.6f} {c.energy:>11.6f} {c.event:<12} {c.method}"
+                  for c in at.crossings]
+    for (a, b), reason in at.unresolved:
+        lines.append(f"  unresolved edge {list(a)}-{list(b)}: {reason}")
+    return at.to_dict, "\n".join(lines)
+
+
 def add_path_parsers(subparsers: Any) -> None:
-    """Add ``rest``, ``branch``, ``limit-load`` and ``boundary`` to ``subparsers`` (``add_subparsers()``'s result)."""
+    """Add ``rest``, ``branch``, ``limit-load``, ``boundary`` and ``atlas`` to ``subparsers`` (``add_subparsers()``'s
+    result)."""
 
     def common(sp: argparse.ArgumentParser) -> None:
         add_manipulator_options(sp)
@@ -315,3 +369,10 @@ def add_path_parsers(subparsers: Any) -> None:
     common(sp)
     add_boundary_options(sp)
     sp.set_defaults(func=_cmd_boundary)
+
+    sp = subparsers.add_parser("atlas", formatter_class=HELP_FORMAT,
+                               help="the stability atlas of the held tip: stable equilibria over a grid of "
+                                    "deflections, the least-energy switches and the branch ends")
+    common(sp)
+    add_atlas_options(sp)
+    sp.set_defaults(func=_cmd_atlas)

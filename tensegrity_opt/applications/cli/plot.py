@@ -1,5 +1,5 @@
-"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map|branch|limit-load|boundary ...
--o fig.png|fig.svg``.
+"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map|branch|limit-load|boundary|atlas
+... -o fig.png|fig.svg``.
 
 :func:`add_plot_parser` adds the ``plot`` subcommand to the ``tensegrity-opt`` parser
 (:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
@@ -22,9 +22,10 @@ Examples::
     tensegrity-opt plot branch --control guided --t-max 2 --start-q 0 0 0 0 --depth 1 --x q1 --y t -o diagram.svg
     tensegrity-opt plot limit-load --boundary guided --start-q 0 0 0 0 -o limit.png
     tensegrity-opt plot boundary --parameter asymmetry -o boundary.png
+    tensegrity-opt plot atlas --n 3 --a 0.5 --dx 0.2 1.4 7 --dy -0.6 0.6 7 -o atlas.png
 
-The loading-path kinds take the options of the ``branch``, ``limit-load`` and ``boundary`` commands
-(:mod:`.paths`).
+The loading-path kinds take the options of the ``branch``, ``limit-load`` and ``boundary`` commands,
+``atlas`` those of the ``atlas`` command (:mod:`.paths`).
 """
 
 from __future__ import annotations
@@ -39,12 +40,12 @@ import numpy as np
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
 from .common import HELP_FORMAT, add_manipulator_options, positive_int, run_command
-from .paths import (add_boundary_options, add_branch_options, add_limit_load_options, boundary_from_args,
-                    branches_from_args, limit_load_from_args)
+from .paths import (add_atlas_options, add_boundary_options, add_branch_options, add_limit_load_options,
+                    atlas_from_args, boundary_from_args, branches_from_args, limit_load_from_args)
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
-KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "boundary")
+KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "boundary", "atlas")
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
                   "direction), energy, s (arclength) or q1..qn (a joint angle)")
@@ -184,6 +185,15 @@ def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, A
                                            "cusps": len(list(b.cusps or [])), "status": b.status})
 
 
+def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    at = atlas_from_args(args, m)
+    fig = plots.plot_atlas(at, m=m)
+    return _render(args, fig, "atlas", {"targets": int(at.dx.size * at.dy.size), "status": at.status,
+                                        "max_stable": int(at.n_stable.max()), "switches": len(at.switches),
+                                        "branch_ends": len(at.branch_ends)})
+
+
 def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     """Add ``plot {curve,landscape,shapes,torque,map}`` to ``subparsers`` (``add_subparsers()``'s result).
 
@@ -192,7 +202,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     """
     sp = subparsers.add_parser(
         "plot", help="figures (PNG/SVG): force-deflection curve, energy landscape, equilibrium shapes, "
-                     "torque curves, critical-load map",
+                     "torque curves, critical-load map, loading paths, stability atlas",
         description="Draw a figure with matplotlib and write it to -o FILE (.png or .svg).")
     kinds = sp.add_subparsers(dest="kind", required=True, metavar="KIND")
 
@@ -262,6 +272,12 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     _common(k)
     add_boundary_options(k)
     k.set_defaults(func=_cmd_boundary)
+
+    k = kinds.add_parser("atlas", formatter_class=HELP_FORMAT,
+                         help="the stability atlas: stable equilibria over (dx, dy), switch and branch-end curves")
+    _common(k)
+    add_atlas_options(k)
+    k.set_defaults(func=_cmd_atlas)
     return sp
 
 

@@ -9,6 +9,7 @@ its stored angles, so the atlas's crossings start from exact points) and analyse
 
 from __future__ import annotations
 
+import time
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -18,6 +19,7 @@ from ...analyses.atlas import AtlasTarget, StabilityAtlas, assemble_atlas
 from ...analyses.equilibrium import make_equilibrium
 from ...errors import InvalidParameterError
 from ...numerics import chain_solver
+from ...timelimit import expired, time_limit
 from .evaluate import _manipulator
 from .spec import validate_spec
 
@@ -43,8 +45,22 @@ def atlas_from_rows(spec: Any, rows: Sequence[Mapping[str, Any]], *, edges: bool
     want = len(grid["dx"]) * len(grid["dy"])
     if len(rows) != want:
         raise InvalidParameterError(f"{len(rows)} rows for a grid of {want} targets", field="rows")
-    targets = [_target(m, r, norm["options"].get("method", "search")) for r in rows]
-    return assemble_atlas(m, targets, edges=edges, timeout=timeout)
+    method = norm["options"].get("method", "search")
+    t0 = time.perf_counter()
+    with time_limit(timeout):
+        targets = []
+        for r in rows:
+            if expired():       # the rest kept as failed targets: the atlas says time_limit
+                t = AtlasTarget(float(r["dx"]), float(r["dy"]), method=method,
+                                error="time_limit: not re-solved before the time limit")
+            else:
+                t = _target(m, r, method)
+            targets.append(t)
+    left = None if timeout is None else max(timeout - (time.perf_counter() - t0), 1e-3)
+    at = assemble_atlas(m, targets, edges=edges, timeout=left)
+    if any(t.error and t.error.startswith("time_limit") for t in targets):
+        at.status = "time_limit"
+    return at
 
 
 def _target(m, row: Mapping[str, Any], method: str) -> AtlasTarget:

@@ -320,7 +320,24 @@ def validate_spec(spec: Any) -> dict[str, Any]:
     else:
         out["points"] = [_point(p, analysis, f"points[{i}]") for i, p in enumerate(body)]
     out["options"] = head["options"]
+    if analysis == "atlas":
+        _atlas_chains(out)
     return out
+
+
+def _atlas_chains(norm: Mapping[str, Any]) -> None:
+    """The atlas's edges follow branches by the dense path system: 2 <= n <= DENSE_MAX."""
+    from ...numerics import DENSE_MAX
+
+    base = norm["manipulator"]
+    found = [("manipulator.segments", len(base["segments"])) if "segments" in base else ("manipulator.n", base["n"])]
+    if "grid" in norm:
+        found += [(f"grid.n[{i}]", n) for i, n in enumerate(norm["grid"].get("n", []))]
+    else:
+        found += [(f"points[{i}].n", p["n"]) for i, p in enumerate(norm["points"]) if "n" in p]
+    for fld, n in found:
+        if not 2 <= int(n) <= DENSE_MAX:
+            _fail(fld, f"the atlas needs 2 <= n <= {DENSE_MAX} segments, got {n}")
 
 
 def _point(p: Any, analysis: str, fld: str) -> dict[str, Any]:
