@@ -79,7 +79,8 @@ def curve_out(c) -> dict[str, Any]:
                         "q": [_f(v) for v in br.q[i]], "stable": bool(br.stable[i]),
                         "morse_index": int(br.morse_index[i]), "shape": br.shape[i]})
         branches.append({"id": bid, "points": pts})
-    return {"points": points, "jumps": jumps, "branches": branches}
+    return {"points": points, "jumps": jumps, "branches": branches,
+            "reference": c.reference, "origin": [float(v) for v in c.origin]}
 
 
 def landscape_out(land) -> dict[str, Any]:
