@@ -531,7 +531,8 @@ def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "n
     taut : bool
         Keep every spring in tension (``L >= L0``).
     bounds : (lo, hi), optional
-        Bounds on every rest length; default ``(0.1 b_min, 4 b_max)``.
+        Bounds on every rest length, each a number or ``2 n`` values (``L1_0`` of every segment, then every
+        ``L2_0``); default ``(0.1 b_min, 4 b_max)``.
     end_angle : float, optional
         Also prescribe the absolute angle of the last link (rad).
     q0 : array_like, optional
@@ -584,7 +585,14 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
     except UnreachableTargetError as exc:        # the caller gave a tip position, not a deflection
         raise UnreachableTargetError(exc.message, field="target", **exc.details) from None
     lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
-    if not (0 < lo < hi):
+    try:
+        lo = np.broadcast_to(np.asarray(lo, dtype=float), (2 * n)).copy() if np.ndim(lo) else float(lo)
+        hi = np.broadcast_to(np.asarray(hi, dtype=float), (2 * n)).copy() if np.ndim(hi) else float(hi)
+    except ValueError:
+        raise InvalidParameterError("bounds: lo and hi are numbers or 2n values (L1_0 of every segment, then "
+                                    "L2_0)", field="bounds") from None
+    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(0 < np.asarray(lo))
+            and np.all(np.asarray(lo) < np.asarray(hi))):
         raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
     if q0 is None:
         try:
@@ -606,8 +614,8 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
     Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
     lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
     x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
-    lbx = np.concatenate([np.full(n, -_INF), np.full(2 * n, lo), [margin], np.full(lv0.size, -_INF)])
-    ubx = np.concatenate([np.full(n, _INF), np.full(2 * n, hi), [margin if objective != "margin" else _INF],
+    lbx = np.concatenate([np.full(n, -_INF), np.broadcast_to(lo, (2 * n)), [margin], np.full(lv0.size, -_INF)])
+    ubx = np.concatenate([np.full(n, _INF), np.broadcast_to(hi, (2 * n)), [margin if objective != "margin" else _INF],
                           np.full(lv0.size, _INF)])
     for k_ in nlp.diag:
         lbx[3 * n + 1 + k_] = 0.0
@@ -621,8 +629,9 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
     res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
     phi = res.x[:n]
     q = np.diff(np.concatenate([[0.0], phi]))
-    L10 = np.clip(res.x[n:2 * n], lo, hi)
-    L20 = np.clip(res.x[2 * n:3 * n], lo, hi)
+    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
+    L10 = np.clip(res.x[n:2 * n], lo2[:n], hi2[:n])
+    L20 = np.clip(res.x[2 * n:3 * n], lo2[n:], hi2[n:])
     best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[3 * n])}
     if not res.success:
         raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,

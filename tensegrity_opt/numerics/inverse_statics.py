@@ -1,0 +1,141 @@
+"""The inverse-statics problem (rest lengths for a tip pose under a load) as one compiled Newton step.
+
+Unknowns ``y = (q, l, mu)``: relative joint angles ``q`` (n), the rest lengths ``l = (L1_0, L2_0)`` per
+segment (2n, segment by segment: ``l[2i], l[2i+1]``) and the multipliers ``mu`` of the task rows. The
+least-change problem of a control step::
+
+    min  1/2 sum_j w_j (l_j - l_prev_j)^2 + 1/2 eps |q - q_prev|^2
+    s.t. grad E(q; l) - J(q)^T F = 0          (n: the arm in equilibrium under the dead tip load F)
+         tip(q) = target                       (2)
+         sum(q) = end_angle                    (1, the variant with the last link's angle)
+
+Its KKT system ``r(y) = [grad_q L; grad_l L; g] = 0`` (``L = f + mu . g``) is solved by Newton's method:
+the compiled function gives ``r`` and its Jacobian, the linear solves are numpy's (an unrolled symbolic
+solve compiles for tens of seconds); ``step`` iterates from a warm start and returns the
+iterate, its residual, the iterations that moved, the Hessian of ``E - F . tip`` in ``q`` there (the
+stability of the free arm: positive definite) and the KKT matrix (a strict local minimum of the
+least-change problem has ``3 n`` positive and ``rows`` negative eigenvalues: Newton can also converge to
+a saddle of it). Built once per ``(n, angle)`` and thread; generated to C
+and compiled like the other kernels for ``n <= KERNEL_MAX`` (the same cache, compiler and
+``TENSEGRITY_COMPILE=0`` switch), CasADi's virtual machine otherwise. Bounds, rate limits and the
+stability margin are the caller's (:mod:`tensegrity_opt.analyses.preload_control`): it checks them on
+the result and falls back to IPOPT where one is active.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import threading
+from functools import lru_cache
+
+import casadi as ca
+import numpy as np
+
+from . import kernels as _kernels
+from ._fast import Fast
+from .expressions import segment_energy, tip_expression
+
+__all__ = ["InverseStatics", "inverse_statics", "ITER"]
+
+#: Newton iterations of one step at most.
+ITER = 25
+
+
+@lru_cache(maxsize=None)
+def _graph(n: int, angle: bool) -> ca.Function:
+    m = n + 2 + (1 if angle else 0)
+    N = 3 * n + m
+    y = ca.SX.sym("y", N)
+    q, ell, mu = y[:n], y[n:3 * n], y[3 * n:]
+    geo = ca.SX.sym("geo", 4 * n)                    # a, b, k1, k2
+    a, b, k1, k2 = (geo[i * n:(i + 1) * n] for i in range(4))
+    F, target = ca.SX.sym("F", 2), ca.SX.sym("target", 3)
+    ell_prev, w, q_prev = ca.SX.sym("ell_prev", 2 * n), ca.SX.sym("w", 2 * n), ca.SX.sym("q_prev", n)
+    eps = ca.SX.sym("eps")
+    L10, L20 = ell[0::2], ell[1::2]
+    _, _, E = segment_energy(q, a, b, k1, k2, L10, L20)
+    tip = tip_expression(ca.cumsum(q), b)
+    J = ca.jacobian(tip, q)
+    g = [ca.gradient(E, q) - J.T @ F, tip - target[:2]]
+    if angle:
+        g.append(ca.sum1(q) - target[2])
+    g = ca.vertcat(*g)
+    f = 0.5 * ca.sum1(w * (ell - ell_prev) ** 2) + 0.5 * eps * ca.sumsqr(q - q_prev)
+    Lag = f + ca.dot(mu, g)
+    r = ca.vertcat(ca.gradient(Lag, ca.vertcat(q, ell)), g)
+    K = ca.jacobian(r, y)
+    H = ca.hessian(E - ca.dot(F, tip), q)[0]
+    return ca.Function("inverse_kkt", [y, geo, F, target, ell_prev, w, q_prev, eps],
+                       [r, ca.densify(K), ca.densify(H), E, tip])
+
+
+_compiled: dict[tuple[int, bool], str] = {}
+_lock = threading.Lock()
+
+
+def _function(n: int, angle: bool) -> tuple[ca.Function, str]:
+    if 2 <= n <= _kernels.KERNEL_MAX and os.environ.get("TENSEGRITY_COMPILE", "1") != "0":
+        with _lock:
+            lib = _compiled.get((n, angle))
+            if lib is None:
+                lib = ""
+                cc = _kernels.compiler()
+                if cc is not None:
+                    try:
+                        lib = _kernels._compile_with(cc, f"tensegrity_inverse_n{n}{'a' if angle else ''}",
+                                                     {"inverse_kkt": _graph(n, angle)})
+                    except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
+                        _kernels._warn(f"compiling the inverse-statics step with {cc} failed ({exc})")
+                _compiled[(n, angle)] = lib
+        if lib:
+            try:
+                return ca.external("inverse_kkt", lib), "compiled"
+            except RuntimeError as exc:
+                _kernels._warn(f"loading {lib} failed ({exc})")
+    return _graph(n, angle), "virtual machine"
+
+
+class InverseStatics:
+    """This thread's compiled inverse-statics step for ``n`` segments (``angle``: with the end-angle row)."""
+
+    def __init__(self, n: int, angle: bool) -> None:
+        self.n, self.angle = n, angle
+        self.rows = n + 2 + (1 if angle else 0)
+        f, self.mode = _function(n, angle)
+        self._f = Fast(f)
+
+    def step(self, y0, geo, F, target, ell_prev, w, q_prev, eps, tol, max_iter: int = ITER):
+        """Newton's method on the KKT system from ``y0``: ``(y, residual, iterations, H, E, tip, K)`` with ``K``
+        the KKT matrix at ``y`` (its inertia says whether ``y`` is a strict local minimum; copies). Stops when
+        ``max |r| <= tol`` or after ``max_iter`` iterations (or where the matrix is singular)."""
+        f = self._f
+        y = np.array(y0, dtype=float)
+        it = 0
+        while True:
+            out = f(y, geo, F, target, ell_prev, w, q_prev, eps)
+            r = out[0]
+            res = float(np.max(np.abs(r)))
+            if res <= tol or it >= max_iter or not np.isfinite(res):
+                break
+            try:
+                y = y - np.linalg.solve(f.dense(1), r)
+            except np.linalg.LinAlgError:
+                break
+            it += 1
+        return y, res, it, f.dense(2).copy(), float(out[3][0]), out[4].copy(), f.dense(1).copy()
+
+
+_local = threading.local()
+
+
+def inverse_statics(n: int, angle: bool = False) -> InverseStatics:
+    """This thread's :class:`InverseStatics` (built once per thread, ``n`` and ``angle``)."""
+    cache = getattr(_local, "cache", None)
+    if cache is None:
+        cache = _local.cache = {}
+    key = (n, bool(angle))
+    obj = cache.get(key)
+    if obj is None:
+        obj = cache[key] = InverseStatics(n, bool(angle))
+    return obj
