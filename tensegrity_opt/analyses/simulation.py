@@ -612,7 +612,8 @@ class _Run:
         cands = {}
         for sign in (1, -1):
             qs = q_ev + sign * self.eps * phi
-            cands[sign] = (d.potential(d.onto(qs) if self.held else qs), d.onto(qs) if self.held else qs)
+            qs = d.onto(qs) if self.held else qs
+            cands[sign] = (d.potential(qs), qs)
         if fold:
             # the unstable side: where the traced branch goes on past the fold (V decreases along it at the fold)
             side = float(phi @ (br.q[-1] - ev.q))
