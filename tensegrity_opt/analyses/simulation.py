@@ -695,11 +695,15 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
 
     Examples
     --------
-    A load cycle along ``y`` on three bistable segments: two snaps at different loads (hysteresis)::
+    A load cycle along ``y`` on three bistable segments: two snaps at different loads (hysteresis).
 
-        m = Manipulator.uniform(3, a=0.5, b=1.0, k=1.0, L0=1.0)
-        t = np.concatenate([np.linspace(0, 0.3, 31), np.linspace(0.3, -0.3, 61)[1:], np.linspace(-0.3, 0, 31)[1:]])
-        sim = simulate(m, loads=np.column_stack([0 * t, t]))
+    >>> import numpy as np, tensegrity_opt as to
+    >>> m = to.Manipulator.uniform(3, a=0.5, b=1.0, k=1.0, L0=1.0)
+    >>> up = np.linspace(0, 0.3, 31)
+    >>> fy = np.concatenate([up, np.linspace(0.3, -0.3, 61)[1:], np.linspace(-0.3, 0, 31)[1:]])
+    >>> sim = to.simulate(m, loads=np.column_stack([0 * fy, fy]))
+    >>> sim.status, [(e.kind, e.step, round(float(e.load[1]), 6)) for e in sim.snaps]
+    ('complete', [('snap', 15, 0.153111), ('snap', 69, -0.097754)])
     """
     held = tip == "held"
     P, L, T = _inputs(m, preloads, loads, tip, targets)
