@@ -33,6 +33,7 @@ from .analyses.landscape import Landscape, energy_landscape
 from .analyses.least_energy import solve_equilibrium
 from .analyses.limit_load import LimitLoad, limit_load
 from .analyses.rest import find_equilibria_under_force, rest_configuration
+from .analyses.simulation import Simulation, SimulationEvent, simulate
 from .analyses.stiffness import cartesian_stiffness
 from .applications.sweeps import SweepResult, sweep
 from .errors import (
@@ -65,6 +66,7 @@ __all__ = [
     "Curve", "Jump", "force_deflection",
     "Control", "Branch", "BranchEvent", "trace_branch", "switch_branch", "bifurcation_diagram",
     "LimitLoad", "limit_load", "StabilityBoundary", "stability_boundary", "StabilityAtlas", "stability_atlas",
+    "Simulation", "SimulationEvent", "simulate",
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "sweep", "SweepResult",

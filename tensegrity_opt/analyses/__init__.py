@@ -20,6 +20,8 @@
   design or control parameter, cusps);
 * :mod:`.atlas` - the workspace stability atlas of the held tip: stable equilibria per target, where the
   least-energy branch switches and where stable branches end;
+* :mod:`.simulation` - forward quasi-static simulation under sampled preloads and loads (or tip targets):
+  the branch followed, snaps at its folds by descent, hysteresis;
 * :mod:`.stiffness` - the Cartesian tangent stiffness;
 * :mod:`.landscape` - the energy over two joint angles;
 * :mod:`.design` - optimal designs and preloads (maximise the critical load, choose preloads).

@@ -8,7 +8,8 @@ One concept in one place (the natural-parameter followers — batches of targets
   (:meth:`Control.displacement`), a dead tip load ``base + t d`` (:meth:`Control.load`), the paper's
   guided tip (``y`` held, the load along ``x``, ``Fy`` the reaction: :meth:`Control.guided`), a
   frictionless wall (:meth:`Control.wall`), or rest lengths along a direction in preload space with
-  the tip free under a load or held (:meth:`Control.preload`);
+  the tip free under a load or held (:meth:`Control.preload`), or rest lengths and the load (or the held
+  tip) together along a segment, ``t`` its fraction (:meth:`Control.move`);
 * :func:`trace_branch` follows the branch through a start: tangent predictor, Newton corrector on the
   bordered system ``[R(z, t); tau . (x - x_pred)] = 0``, adaptive step (iterations, tangent angle), in
   the units of :class:`_Problem` (angles in rad, forces in ``k c^2 / (2 b)``, lengths in ``2 b``);
@@ -75,7 +76,7 @@ EIG_REL_TOL = 1e-9
 #: ``|u . R_t| / |R_t|`` below which a singular point is a branch point rather than a fold.
 BP_TOL = 1e-6
 
-KINDS = ("displacement", "load", "guided", "wall", "preload")
+KINDS = ("displacement", "load", "guided", "wall", "preload", "move")
 
 
 def _unit(v, field: str, size: int | None = None) -> np.ndarray:
@@ -93,6 +94,16 @@ def _unit(v, field: str, size: int | None = None) -> np.ndarray:
     return d / norm
 
 
+def _finite(v, field: str, size: int) -> np.ndarray:
+    try:
+        d = np.asarray(v, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"{field} must be numbers, got {v!r}", field=field) from None
+    if d.size != size or not np.all(np.isfinite(d)):
+        raise InvalidParameterError(f"{field} must be {size} finite numbers, got {v!r}", field=field)
+    return d
+
+
 def _vec2(v, field: str) -> np.ndarray:
     try:
         d = np.asarray(v, dtype=float).ravel()
@@ -108,8 +119,9 @@ class Control:
     """What the continuation parameter ``t`` moves (``t = 0`` at the start point).
 
     Build it with a constructor: :meth:`displacement`, :meth:`load`, :meth:`guided`, :meth:`wall`,
-    :meth:`preload`. Directions are normalised: ``t`` is the distance moved (length units for the
-    tip and the rest lengths, force units for a load).
+    :meth:`preload`, :meth:`move`. Directions are normalised: ``t`` is the distance moved (length units
+    for the tip and the rest lengths, force units for a load); for :meth:`move` (rest lengths and the
+    load or the held tip together) ``t`` is the fraction of the move.
     """
 
     kind: str
@@ -160,6 +172,38 @@ class Control:
         return cls("preload", _unit(direction, "direction"), _vec2(load, "load"), None, tip)
 
     @classmethod
+    def move(cls, n: int, *, preload=None, load=None, displacement=None, tip: str = "free",
+             base=(0.0, 0.0)) -> "Control":
+        """Every input moved at once along a straight segment, ``t`` the fraction of the move (0 at the
+        start, 1 at its end; not normalised, unlike the other controls).
+
+        ``preload`` (``(n, 2)`` or ``2n`` numbers, default none): the change of the rest lengths
+        ``(L1_0, L2_0)`` of each segment over the whole move. ``tip="free"``: the dead tip load is
+        ``F = base + t load`` (``load`` its change, default none). ``tip="held"``: the tip deflection
+        ``(dx, dy)`` is the start's plus ``t displacement`` (``dx > 0`` shortens), ``F`` the holding force.
+        A combined preload and load (or tip) move in one parameter, as the quasi-static simulation
+        (:func:`~tensegrity_opt.analyses.simulation.simulate`) needs between two samples of its inputs.
+        """
+        if tip not in ("free", "held"):
+            raise InvalidParameterError(f"tip must be 'free' or 'held', got {tip!r}", field="tip")
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
+            raise InvalidParameterError(f"n must be an integer >= 1, got {n!r}", field="n")
+        dl = np.zeros(2 * int(n)) if preload is None else _finite(preload, "preload", 2 * int(n))
+        if tip == "free":
+            if displacement is not None:
+                raise InvalidParameterError("a free tip takes a load change, not a displacement",
+                                            field="displacement")
+            last = np.zeros(2) if load is None else _vec2(load, "load")
+        else:
+            if load is not None:
+                raise InvalidParameterError("a held tip takes a displacement, not a load change", field="load")
+            last = np.zeros(2) if displacement is None else _vec2(displacement, "displacement")
+        d = np.concatenate([dl, last])
+        if not np.any(d != 0.0):
+            raise InvalidParameterError("the move must change at least one input", field="preload")
+        return cls("move", d, _vec2(base, "base") if tip == "free" else np.zeros(2), None, tip)
+
+    @classmethod
     def spring(cls, n: int, segment: int, spring: int = 1, *, tip: str = "free", load=(0.0, 0.0)) -> "Control":
         """One spring's rest length (``segment`` 0-based, ``spring`` 1 or 2) as the parameter."""
         if not (0 <= int(segment) < n):
@@ -171,6 +215,15 @@ class Control:
         return cls.preload(d, tip=tip, load=load)
 
     def to_dict(self) -> dict[str, Any]:
+        if self.kind == "move":
+            n = (self.direction.size - 2) // 2
+            d = {"kind": "move", "tip": self.tip,
+                 "preload": [numbers(r) for r in self.direction[:2 * n].reshape(n, 2)]}
+            if self.tip == "free":
+                d["load"], d["base"] = numbers(self.direction[2 * n:]), numbers(self.base)
+            else:
+                d["displacement"] = numbers(self.direction[2 * n:])
+            return d
         d = {"kind": self.kind, "direction": numbers(self.direction)}
         if self.kind != "displacement":
             d["load" if self.kind == "preload" else "base"] = numbers(self.base)
@@ -183,7 +236,7 @@ class Control:
     @property
     def held(self) -> tuple[bool, bool]:
         """Which of the two control rows hold the tip (the rest prescribe a force)."""
-        if self.kind == "displacement" or (self.kind == "preload" and self.tip == "held"):
+        if self.kind == "displacement" or (self.kind in ("preload", "move") and self.tip == "held"):
             return (True, True)
         if self.kind in ("guided", "wall"):
             return (True, False)
@@ -199,9 +252,14 @@ def as_control(m: Manipulator, control, kw: dict) -> Control:
         if control.kind == "preload" and control.direction.size != 2 * m.n:
             raise InvalidParameterError(f"a preload direction has 2n = {2 * m.n} components, got "
                                         f"{control.direction.size}", field="direction")
+        if control.kind == "move" and control.direction.size != 2 * m.n + 2:
+            raise InvalidParameterError(f"a move has 2n + 2 = {2 * m.n + 2} components, got "
+                                        f"{control.direction.size}", field="preload")
         return control
     if control not in KINDS:
         raise InvalidParameterError(f"control must be a Control or one of {KINDS}, got {control!r}", field="control")
+    if control == "move":
+        kw = {"n": m.n, **kw}
     try:
         c = getattr(Control, control)(**kw)
     except TypeError as e:
@@ -291,7 +349,7 @@ class Branch:
     status : str
         How it ended (:data:`STATUSES`).
     rest_lengths : ndarray (P, n, 2) or None
-        The rest lengths at each point, for a preload control.
+        The rest lengths at each point, for a preload or move control.
     """
 
     control: Control
@@ -397,6 +455,19 @@ class _Problem:
             c = np.array([0.0, float(tau @ control.direction)])
             F_ref = control.base
             t_scale = self.Fs
+        elif k == "move":                                # every input along a segment, t in [0, 1]
+            dl = control.direction[:2 * n].reshape(n, 2)
+            self.dp[4 * n:5 * n] = dl[:, 0]
+            self.dp[5 * n:6 * n] = dl[:, 1]
+            last = control.direction[2 * n:]
+            if control.tip == "held":
+                A_tip, A_F, c, F_ref = eye, zero, np.array([-last[0], last[1]]), np.zeros(2)
+                size = math.sqrt(float(dl.ravel() @ dl.ravel()) + float(last @ last)) / self.Ls
+            else:
+                A_tip, A_F, c, F_ref = zero, eye, last, control.base
+                size = math.hypot(math.sqrt(float(dl.ravel() @ dl.ravel())) / self.Ls,
+                                  math.sqrt(float(last @ last)) / self.Fs)
+            t_scale = 1.0 / size                         # the arclength in t: the scaled distance moved
         else:                                            # preload
             dl = control.direction.reshape(n, 2)
             self.dp[4 * n:5 * n] = dl[:, 0]
@@ -704,9 +775,9 @@ def _branch_from(prob: _Problem, pts: list[_Point], s: list[float], events: list
     X = np.array([p.x for p in pts])
     n = prob.n
     rest = None
-    if prob.control.kind == "preload":
+    if prob.control.kind in ("preload", "move"):
         base = np.column_stack([m.L1_0, m.L2_0])
-        dl = prob.control.direction.reshape(n, 2)
+        dl = prob.control.direction[:2 * n].reshape(n, 2)
         rest = base[None, :, :] + X[:, -1][:, None, None] * dl[None, :, :]
     return Branch(control=prob.control, t=X[:, -1].copy(), q=X[:, :n].copy(), force=X[:, n:n + 2].copy(),
                   tip=np.array([p.tip for p in pts]), energy=np.array([p.E for p in pts]),
@@ -748,7 +819,7 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
         the start's tip; a guide or wall passes through it.
     control : Control or str
         A :class:`Control`, or its kind (``"displacement"``, ``"load"``, ``"guided"``, ``"wall"``,
-        ``"preload"``) with the constructor's keywords in ``control_kw``.
+        ``"preload"``, ``"move"``) with the constructor's keywords in ``control_kw``.
     t_max, t_min : float, optional
         Stop where ``t`` reaches these (the end point is solved at exactly that ``t``).
     max_points : int
