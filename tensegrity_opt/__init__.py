@@ -29,6 +29,7 @@ from .analyses.design import (
                      preloads_for_critical_force,
 )
 from .analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
+from .analyses.force_sensor import ForceEstimate, estimate_tip_force
 from .analyses.landscape import Landscape, energy_landscape
 from .analyses.least_energy import solve_equilibrium
 from .analyses.limit_load import LimitLoad, limit_load
@@ -68,7 +69,8 @@ __all__ = [
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "sweep", "SweepResult",
-    "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
+    "cartesian_stiffness", "ForceEstimate", "estimate_tip_force",
+    "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",
     "InfeasibleDesignError", "HomotopyUnavailableError", "TimeLimitError", "NonFiniteResult", "time_limit",

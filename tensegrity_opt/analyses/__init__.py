@@ -21,6 +21,8 @@
 * :mod:`.atlas` - the workspace stability atlas of the held tip: stable equilibria per target, where the
   least-energy branch switches and where stable branches end;
 * :mod:`.stiffness` - the Cartesian tangent stiffness;
+* :mod:`.force_sensor` - the arm as a force sensor: the tip force from measured joint angles, its
+  covariance and a chi-square test for loads elsewhere;
 * :mod:`.landscape` - the energy over two joint angles;
 * :mod:`.design` - optimal designs and preloads (maximise the critical load, choose preloads).
 """
