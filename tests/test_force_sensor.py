@@ -315,6 +315,29 @@ def test_fewer_equations_than_unknowns_is_refused(n, meas):
     assert e.value.field == "measured"
 
 
+@pytest.mark.parametrize("measured", [None, [0, 1, 2, 3], [1, 2, 4]])
+def test_angles_of_no_equilibrium_are_rejected_and_never_leave_the_range(measured):
+    """Random angles (no tip force holds them): an answer keeps every angle inside the physical range and
+    fails the test; a refusal is a SolverError (no configuration in the range explains them)."""
+    m = Manipulator.uniform(5, a=0.8)
+    rng = np.random.default_rng(11)
+    idx = list(range(5)) if measured is None else measured
+    answered = 0
+    for _ in range(20):
+        q = rng.uniform(-0.9, 0.9, 5) * m.joint_limits
+        try:
+            e = to.estimate_tip_force(m, q[idx], sigma_q=1e-3, measured=measured)
+        except to.SolverError:
+            assert measured is not None               # every joint measured: always an answer
+            continue
+        answered += 1
+        assert m.in_range(e.q) and np.array_equal(e.q[idx], q[idx])
+        assert e.p_value < 1e-6
+        assert e.success or e.status == "reweighting_not_converged"
+        json.dumps(e.to_dict(), allow_nan=False)
+    assert answered >= 10
+
+
 # ------------------------------------------------------------------------------------------- validation
 GOOD = np.array([0.3, 0.2, 0.1, 0.05, 0.02])
 

@@ -42,7 +42,12 @@ LOOSE_TOL = 1e-7
 RANK_TOL = 1e-10
 #: Iteration caps: the unweighted Gauss-Newton solve, then the re-weighting (the weight at the estimate).
 MAX_ITER = 100
-MAX_REWEIGHT = 30
+MAX_REWEIGHT = 100
+#: The re-weighting has settled when its next step is below this fraction of every unknown's standard
+#: deviation (or below ``STEP_TOL``): a change of the weight that moves the estimate by a millionth of its
+#: uncertainty is immaterial. Under the null hypothesis it takes one or two steps; data far from any
+#: equilibrium (a huge ``chi2``) converge linearly.
+REWEIGHT_TOL = 1e-6
 #: A hidden angle never steps more than this fraction of the way to its joint limit, nor more than
 #: ``MAX_STEP`` rad, in one iteration.
 TO_LIMIT = 0.9
@@ -86,8 +91,10 @@ class ForceEstimate:
         Covariance of the estimated unmeasured angles (rad^2; ``(0, 0)`` when every joint is measured;
         ``None`` without ``sigma_q``).
     success : bool
-        False only when the re-weighting did not settle (``status == "reweighting_not_converged"``): the
-        estimate is then a generalised least-squares one with the weight of the last iterate.
+        False only when the re-weighting did not settle (``status == "reweighting_not_converged"``), which
+        happens for angles far from any equilibrium under a tip force (``chi2`` far beyond ``dof``, the
+        weight swinging with the estimate): the estimate is then the one-step one, generalised least
+        squares with the weight at the unweighted estimate, its covariance and ``chi2`` at that point.
     status : str
         ``"least_squares"``, ``"gauss_newton"`` (unmeasured joints), ``"generalized_least_squares"``,
         ``"weighted_gauss_newton"`` (with ``sigma_q``), or ``"reweighting_not_converged"``.
@@ -436,8 +443,14 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
             if converged:
                 break
         if not converged:
+            near = hid[np.abs(q[hid]) > 0.99 * m.joint_limits[hid]]
+            if near.size:
+                raise NoEquilibriumError(
+                    f"no configuration inside the physical range explains these angles: the unmeasured angle "
+                    f"q[{int(near[0])}] runs into its joint limit (|r| = {np.linalg.norm(r):.3g})", status="joint_limit")
             raise SolverError(f"Gauss-Newton for the {u} unmeasured angle(s) did not converge in {MAX_ITER} "
-                              "iterations", status="max_iterations")
+                              f"iterations (|r| = {np.linalg.norm(r):.3g}: these angles are far from any "
+                              "equilibrium under a tip force)", status="max_iterations")
         if not m.in_range(q):
             raise NoEquilibriumError("the unmeasured angles left the physical range", status="out_of_range")
         if not _rank_ok(np.hstack([-J.T, A[:, hid]])):
@@ -458,14 +471,15 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
     if Sigma is not None:
         s0 = float(np.abs(Sigma).max())
         Sig = Sigma / s0
-        settled = False
+        settled, first = False, None
         for it in range(MAX_REWEIGHT + 1):
             Am = A[:, idx]
             B = np.hstack([-J.T, A[:, hid]])
             Minv, alpha, D = _bordered(Am @ Sig @ Am.T, B)
             dx = -(Minv[n:, :n] @ r) / D
-            if np.abs(B @ dx).max() <= tol:      # the weight at the estimate reproduces the estimate
-                settled = True
+            sd = np.sqrt(np.maximum(-(s0 * alpha) * np.diag(Minv[n:, n:]), 0.0)) / D
+            if np.abs(B @ dx).max() <= tol or np.all(np.abs(dx) <= REWEIGHT_TOL * sd):
+                settled = True                   # the weight at the estimate reproduces the estimate
                 break
             if it == MAX_REWEIGHT:
                 break
@@ -476,6 +490,14 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
             tau, J, A = _derivatives(m, q, F)
             r = tau - J.T @ F
             iterations += 1
+            if first is None:
+                first = (q, F, tau, J, A, r)
+        if not settled:
+            # no fixed point reached (data far from any equilibrium under a tip force: the weight swings
+            # with the estimate): report the one-step estimate, the weight at the unweighted one
+            q, F, tau, J, A, r = first
+            Am = A[:, idx]
+            Minv, alpha, D = _bordered(Am @ Sig @ Am.T, np.hstack([-J.T, A[:, hid]]))
         if not m.in_range(q):
             raise NoEquilibriumError("the unmeasured angles left the physical range", status="out_of_range")
         C = -(s0 * alpha) * Minv[n:, n:] / np.outer(D, D)
