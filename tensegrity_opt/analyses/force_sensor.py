@@ -307,8 +307,8 @@ def _bordered(S: np.ndarray, B: np.ndarray):
 def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) -> ForceEstimate:
     """The tip force ``F`` from joint angles, by least squares on the equilibrium ``grad E = J^T F``.
 
-    With ``r(q, F) = grad E(q) - J(q)^T F`` (the residual torque; ``grad E`` are the spring torques
-    with the sign of conventions.md) and every joint measured:
+    With ``r(q, F) = grad E(q) - J(q)^T F`` (the residual torque; ``tau = grad E`` is the torque the
+    springs take from outside, ``-M`` of eq. 1, conventions.md) and every joint measured:
 
     * ``sigma_q=None``: ``F = argmin |r(q, F)|^2`` (eq. 8: ``F = (J J^T)^-1 J grad E``), the residual
       and its norm; no statistics.
@@ -316,8 +316,12 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
       ``A dq`` with ``A = dr/dq = Hess_q(E - F . tip)`` (the spring Hessian minus ``sum_k F_k Hess tip_k``),
       so ``r`` has the covariance ``S = A Sigma_q A^T``. ``F`` is the generalised least-squares estimate
       ``argmin r^T W r``, ``W = S^-1``, with ``S`` evaluated at the estimate (iterated: from the plain
-      estimate, ``S`` at the current ``(q, F)``, one GLS step, repeat until the step is below
-      ``STEP_TOL``; ``r`` is linear in ``F``, so each step is exact for its weight). Its covariance
+      estimate, ``S`` at the current ``(q, F)``, one GLS step, repeat until the next step is below
+      ``REWEIGHT_TOL`` = 1e-6 of every unknown's standard deviation or below ``STEP_TOL``; ``r`` is
+      linear in ``F``, so each step is exact for its weight; one or two steps under the null
+      hypothesis). When it does not settle in ``MAX_REWEIGHT`` steps (angles far from any equilibrium,
+      the weight swinging with the estimate) the one-step estimate is returned with ``success=False``.
+      Its covariance
       is ``(J W J^T)^-1`` (linearised: exact to first order in ``Sigma_q``) and
       ``chi2 = r^T W r`` has ``n - 2`` degrees of freedom under the null hypothesis (tip force only).
 
@@ -334,7 +338,8 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
 
     With unmeasured joints (``measured``), their angles ``q_u`` are unknowns too: ``x = (F, q_u)``,
     ``2 + u`` unknowns from the ``n`` equations ``r = 0`` (``B = [-J^T, A[:, u]]``). They are found by
-    Gauss-Newton on ``|r|^2`` (damped: a hidden angle stays inside its range), then, with ``sigma_q``,
+    Gauss-Newton on ``|r|^2`` (damped: a hidden angle stays inside its range, and backtracking; to
+    ``STEP_TOL``, or only to ``LOOSE_TOL`` when the weighted steps follow), then, with ``sigma_q``,
     re-weighted as above with ``S = A_m Sigma_m A_m^T`` (``A_m`` the columns of the measured joints,
     ``Sigma_m`` their noise). ``n == 2 + u`` is a square system (Newton; ``dof = 0``, residual zero).
     The solution found is the one the iteration reaches from the start (the entries of ``q_measured``
