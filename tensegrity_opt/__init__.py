@@ -29,10 +29,12 @@ from .analyses.design import (
                      preloads_for_critical_force,
 )
 from .analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
+from .analyses.force_sensor import ForceEstimate, estimate_tip_force
 from .analyses.landscape import Landscape, energy_landscape
 from .analyses.least_energy import solve_equilibrium
 from .analyses.limit_load import LimitLoad, limit_load
 from .analyses.rest import find_equilibria_under_force, rest_configuration
+from .analyses.preload_control import PreloadController, PreloadPlan, PreloadStep, plan_preloads
 from .analyses.simulation import Simulation, SimulationEvent, simulate
 from .analyses.stiffness import cartesian_stiffness
 from .applications.sweeps import SweepResult, sweep
@@ -67,10 +69,12 @@ __all__ = [
     "Control", "Branch", "BranchEvent", "trace_branch", "switch_branch", "bifurcation_diagram",
     "LimitLoad", "limit_load", "StabilityBoundary", "stability_boundary", "StabilityAtlas", "stability_atlas",
     "Simulation", "SimulationEvent", "simulate",
+    "PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads",
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "sweep", "SweepResult",
-    "cartesian_stiffness", "Landscape", "energy_landscape", "shape_label", "sign_string",
+    "cartesian_stiffness", "ForceEstimate", "estimate_tip_force",
+    "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",
     "InfeasibleDesignError", "HomotopyUnavailableError", "TimeLimitError", "NonFiniteResult", "time_limit",

@@ -6,11 +6,12 @@ import pytest
 
 import tensegrity_opt
 import tensegrity_opt.analyses.continuation
+import tensegrity_opt.analyses.force_sensor
 import tensegrity_opt.analyses.simulation
 
 
 @pytest.mark.parametrize("module", [tensegrity_opt, tensegrity_opt.analyses.continuation,
-                                    tensegrity_opt.analyses.simulation])
+                                    tensegrity_opt.analyses.simulation, tensegrity_opt.analyses.force_sensor])
 def test_docstring_examples(module):
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.attempted > 0 and result.failed == 0

@@ -22,7 +22,11 @@
   least-energy branch switches and where stable branches end;
 * :mod:`.simulation` - forward quasi-static simulation under sampled preloads and loads (or tip targets):
   the branch followed, snaps at its folds by descent, hysteresis;
+* :mod:`.preload_control` - control in actuation space: rest lengths for tip poses step by step (the
+  compiled least-change Newton step, IPOPT where a bound is active) and over trajectories;
 * :mod:`.stiffness` - the Cartesian tangent stiffness;
+* :mod:`.force_sensor` - the arm as a force sensor: the tip force from measured joint angles, its
+  covariance and a chi-square test for loads elsewhere;
 * :mod:`.landscape` - the energy over two joint angles;
 * :mod:`.design` - optimal designs and preloads (maximise the critical load, choose preloads).
 """
