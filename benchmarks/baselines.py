@@ -341,6 +341,35 @@ def slsqp_force_deflection(m, dxs, dy: float = 0.0, tol: float = 1e-10) -> list[
     return out
 
 
+def slsqp_preload_step(m, ell_prev, q_prev, target, F, tol: float = 1e-12, maxiter: int = 300):
+    """What a user would write for one inverse-statics control step: SLSQP on ``(q, L1_0, L2_0)``,
+    ``min 1/2 |l - l_prev|^2`` subject to the equilibrium under the dead load ``F`` and the tip at ``target``
+    (numpy model, analytic objective gradient, constraint Jacobian by scipy's finite differences), warm-started
+    from the previous step. ``ell`` is segment-major (``L1_0, L2_0`` of segment 1, then 2, ...)."""
+    ch = Chain(m)
+    n = ch.n
+    F = np.asarray(F, float)
+    ell_prev = np.asarray(ell_prev, float)
+
+    def cons(x):
+        q, ell = x[:n], x[n:]
+        L1, L2 = ch._springs(q)
+        g = (-ch.k1 * (L1 - ell[0::2]) * ch.c * np.sin(ch.beta + q / 2.0)
+             + ch.k2 * (L2 - ell[1::2]) * ch.c * np.sin(ch.beta - q / 2.0))
+        return np.concatenate([g - ch.jacobian(q).T @ F, ch.tip(q) - target])
+
+    def f(x):
+        d = x[n:] - ell_prev
+        return 0.5 * float(d @ d)
+
+    def df(x):
+        return np.concatenate([np.zeros(n), x[n:] - ell_prev])
+
+    res = minimize(f, np.concatenate([q_prev, ell_prev]), jac=df, method="SLSQP",
+                      constraints=[{"type": "eq", "fun": cons}], options={"ftol": tol, "maxiter": maxiter})
+    return res
+
+
 def timed(fn, *args, **kw):
     """``(result, seconds)`` of one call."""
     t0 = time.perf_counter()

@@ -24,6 +24,8 @@ Cases (the issue's targets):
    (the Tracker, the compiled batch); ``limit_load`` per call (branch point, smooth path, fold) vs force
    steps with bisection on stability; the stability atlas per target vs a ``find_equilibria`` loop, and
    per crossing vs bisecting the stable count along the edge.
+11. control in actuation space: a warm preload step of ``PreloadController`` (goal <= 0.2 ms for n = 4) vs
+   ``choose_preloads`` per step and scipy SLSQP on the same problem; ``plan_preloads`` per step.
 """
 
 from __future__ import annotations
@@ -919,9 +921,65 @@ def _atlas_rows(cfg: Config) -> list[Row]:
     return rows
 
 
+def case11(cfg: Config) -> list[Row]:
+    """Control in actuation space: one warm preload step (the compiled least-change Newton step) vs
+    ``choose_preloads`` per step and SLSQP on the same problem; ``plan_preloads`` per step with verification."""
+    from tensegrity_opt.analyses.preload_control import PreloadController
+
+    rows: list[Row] = []
+    m = to.Manipulator.uniform(4, **{k: v for k, v in PAPER.items() if k != "n"})
+    F = np.array([-0.02, 0.01])
+    K = 200 if cfg.quick else 1000
+    ctl = PreloadController(m, load=F)
+    tip0 = m.tip(ctl.q)
+    traj = np.array([tip0 + np.array([-0.3, 0.6]) * np.sin(np.pi * k / (K - 1)) for k in range(K)])
+    ctl.step(traj[0])                                          # warm-up (the kernel built)
+    ts, methods = [], []
+    for k in range(1, K):
+        t0 = time.perf_counter()
+        st = ctl.step(traj[k])
+        ts.append(time.perf_counter() - t0)
+        methods.append(st.method)
+    # the alternatives on the same steps (a subset: they are slow), each from the controller's previous state
+    ctl2 = PreloadController(m, load=F)
+    sub = list(range(1, K, max(1, K // 20)))
+    base_c, base_s, agree = [], [], []
+    for k in range(1, K):
+        if k in sub:
+            ell_prev, q_prev = ctl2.ell.copy(), ctl2.q.copy()
+            t0 = time.perf_counter()
+            d = to.choose_preloads(ctl2.manipulator(), traj[k], F, q0=q_prev)
+            base_c.append(time.perf_counter() - t0)
+            t0 = time.perf_counter()
+            r = bl.slsqp_preload_step(m, ell_prev, q_prev, traj[k], F)
+            base_s.append(time.perf_counter() - t0)
+        st = ctl2.step(traj[k])
+        if k in sub:
+            agree.append(max(float(np.abs(d.preloads.ravel() - st.rest_lengths.ravel()).max()),
+                             float(np.abs(r.x[m.n:] - st.rest_lengths.ravel()).max())))
+    o = median_ms(ts)
+    note = (f"paper chain n=4 under F = {F.tolist()}, {K} tip poses on an arc (0.3 x 0.6): {methods.count('newton')} "
+            f"steps by the compiled Newton step, {methods.count('ipopt')} by IPOPT, {methods.count('none')} "
+            f"infeasible; p99 {float(np.percentile(ts, 99)) * 1e3:.3f} ms; on {len(sub)} sampled steps the three "
+            f"methods' rest lengths agree to {max(agree):.1e}")
+    rows.append(Row("11", "preload controller, warm step", 4, o, "ms", "choose_preloads per step (IPOPT)",
+                    median_ms(base_c), ratio=median_ms(base_c) / o, target="<= 0.2 ms (goal)", met=o <= 0.2,
+                    samples=ts, baseline_samples=base_c, notes=[note]))
+    rows.append(Row("11", "preload controller, warm step", 4, o, "ms", "scipy SLSQP on the same problem (warm)",
+                    median_ms(base_s), ratio=median_ms(base_s) / o, target="(info)", samples=ts,
+                    baseline_samples=base_s))
+    t0 = time.perf_counter()
+    plan = to.plan_preloads(m, traj[:200], F)
+    tp = (time.perf_counter() - t0) / 200
+    rows.append(Row("11", "plan_preloads per step (verified by the forward solve)", 4, tp * 1e3, "ms",
+                    target="(info)", samples=[tp],
+                    notes=[f"plan_preloads over 200 steps: status {plan.status}, verified {int(plan.verified.sum())}/200"]))
+    return rows
+
+
 CASES: list[tuple[str, Callable[[Config], list[Row]]]] = [
     ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8), ("9", case9),
-    ("10", case10),
+    ("10", case10), ("11", case11),
 ]
 
 
