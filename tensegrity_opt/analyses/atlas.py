@@ -43,7 +43,7 @@ from ..errors import InvalidParameterError, SolverError, TensegrityError, TimeLi
 from ..model.manipulator import Manipulator
 from ..numerics import DENSE_MAX, chain_solver
 from ..serialize import nullable, number, numbers
-from ..timelimit import expired, time_limit
+from ..timelimit import expired, remaining, time_limit
 from ..numerics.homotopy import homotopy_available
 from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, find_equilibria
 from .branches import Branch, Control, trace_branch
@@ -363,8 +363,17 @@ def _none_found(m: Manipulator, dx: float, dy: float, timeout: float | None) -> 
     """The search found no equilibrium inside the range (near the edge of the joint range's workspace): the
     homotopy decides where it is cheap (``n <= HOMOTOPY_NONE_N`` and PHCpack installed; certified), else the
     search's empty answer stands (measured)."""
-    if m.n <= HOMOTOPY_NONE_N and homotopy_available():
-        return find_equilibria(m, dx, dy, method="homotopy", timeout=timeout)
+    left = remaining()
+    if left is not None:
+        timeout = left if timeout is None else min(timeout, left)
+    if m.n <= HOMOTOPY_NONE_N and homotopy_available() and (timeout is None or timeout > 0.05):
+        try:
+            return find_equilibria(m, dx, dy, method="homotopy", timeout=timeout)
+        except SolverError as exc:
+            if exc.status != "phc_timeout":
+                raise
+            if expired():
+                raise TimeLimitError("time limit reached in the atlas's homotopy") from None
     return EquilibriumSet([], method="search", certified=False)
 
 
