@@ -124,7 +124,7 @@ def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
         return None, None
     X = np.column_stack([br.q, br.force, br.t])[:P]
     c = np.array([_compliance(prob, X[i], d, guided) for i in range(P)])
-    ok = np.isfinite(c) & br.stable[:P]
+    ok = np.isfinite(c) & (c > 0.0) & br.stable[:P]     # c = 0: no compliance along the load (straight, guided)
     if ok.sum() < 3:
         return None, None
     i = int(np.argmax(np.where(ok, c, -np.inf)))

@@ -158,7 +158,7 @@ def _check_stiffness_args(K_desired, bounds_K, eig_bounds):
         if Kd.shape != (2, 2) or not np.all(np.isfinite(Kd)):
             raise InvalidParameterError(f"K_desired must be a finite 2 x 2 matrix, got shape {Kd.shape}",
                                         field="K_desired")
-        if abs(Kd[0, 1] - Kd[1, 0]) > 1e-9 * max(1e-300, float(np.abs(Kd).max())):
+        if abs(Kd[0, 1] - Kd[1, 0]) > 1e-6 * max(1e-300, float(np.abs(Kd).max())):
             raise InvalidParameterError("K_desired must be symmetric: the tangent stiffness is (it is the Hessian "
                                         "of the equilibrium energy in the tip position)", field="K_desired")
         if not np.any(Kd != 0.0):
@@ -225,7 +225,7 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     target : (float, float)
         Tip position ``(x, y)``.
     K_desired : 2 x 2 array_like, optional
-        The stiffness wanted (symmetric, force / length). First held exactly (``K = K_desired`` as constraints,
+        The stiffness wanted (symmetric to ``1e-6`` relative, its symmetric part is used; force / length). First held exactly (``K = K_desired`` as constraints,
         the least change of the preloads as objective); where that fails, the least-squares fit on its entries,
         ``min |K - K_desired|_F^2 / |K_desired|_F^2`` (plus ``FIT_REG`` times the relative change of the
         preloads, to pick one of its minimisers), and, where the fit comes within ``EXACT_TRY``, the exact
