@@ -18,6 +18,18 @@ along the equilibria, ``F`` the tip force holding the chain (``grad E = J^T F``,
 free under a dead load, at an equilibrium where ``H``, the Hessian of ``E - F . tip`` in the joint angles, is
 positive definite, ``K = (J H^-1 J^T)^-1`` (the inverse of the tip compliance), which is how the NLP writes it.
 Formulations and measured numbers: ``docs/design.md``, "Stiffness shaping and load capacity".
+
+Example (the paper's chain, tip at ``(7, 1)``: both eigenvalues of the tip stiffness pushed to bounds; the
+straight chain's capacity under compression is its free critical load)::
+
+    >>> import tensegrity_opt as to
+    >>> m = to.Manipulator.uniform(4)
+    >>> d = to.preloads_for_stiffness(m, (7.0, 1.0), eig_bounds=[0.04, 0.6])
+    >>> [round(float(w), 6) for w in d.eigenvalues], bool(d.equilibrium.stable)
+    ([0.04, 0.6], True)
+    >>> cap = to.load_capacity(m, directions=[3.141592653589793], max_load=1.0)
+    >>> cap.kinds, round(float(cap.loads[0]), 6)
+    (['bifurcation'], 0.07612)
 """
 
 from __future__ import annotations
