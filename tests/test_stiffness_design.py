@@ -291,3 +291,10 @@ def test_load_capacity_validation():
     with pytest.raises(InvalidParameterError) as ei:
         to.load_capacity(m, [0.0, 0.0], directions=[np.pi])
     assert ei.value.field == "pose"
+
+
+def test_time_limits():
+    with pytest.raises(to.TimeLimitError):
+        to.preloads_for_stiffness(PAPER, TARGET, eig_bounds=[0.04, 0.6], time_limit=1e-4)
+    cap = to.load_capacity(PAPER, directions=36, timeout=0.2)      # ~5 s without a limit
+    assert "time_limit" in cap.reasons and not cap.success

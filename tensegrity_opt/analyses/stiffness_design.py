@@ -468,7 +468,8 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
         raise InvalidParameterError("target must be two finite numbers (x, y)", field="target")
     sh = None
     pose_error = None
-    results = []                                    # (key, result, shaper's best, exact)
+    verify_error = None
+    fits = []                                       # inexact least-squares fits: (misfit, result)
     elastic_best = None
     for qs in _starts(m, tgt, q0, max_starts):
         # the pose: a stable equilibrium at the target from this start (validates target, load, margin, bounds)
@@ -483,37 +484,44 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
         x0 = sh.start(pose)
         if Kd is None:
             res, el = sh.feasible(x0)
-            if res is not None:
-                results.append(((0.0,), res, True))
-                break
             if el is not None and (elastic_best is None or el.x[-1] < elastic_best.x[-1]):
                 elastic_best = el
         else:
             res, exact = sh.fit(x0)
-            if res is not None:
-                results.append(((0.0 if exact else sh.misfit(res.x),), res, exact))
-                if exact:
-                    break
+            if res is not None and not exact:
+                fits.append((sh.misfit(res.x), res))
+                res = None
+        if res is not None:                         # the requirement met from this start: verified, or the next
+            try:
+                return _verified(sh, res)
+            except InfeasibleDesignError as exc:
+                verify_error = verify_error or exc
     if sh is None:
         raise pose_error
-    if not results:
-        if elastic_best is not None:
-            best = sh.best(elastic_best.x)
-            best["least_violation"] = float(elastic_best.x[-1] * sh.Ks)
-            why = "; ".join(best["violations"])
-            msg = (f"no rest lengths within their bounds give this stiffness at a stable pose: the least violation "
-                   f"of the stiffness bounds found is {best['least_violation']:.6g} (force / length), at "
-                   f"rest lengths where {why}")
-            raise InfeasibleDesignError(msg, status=elastic_best.status, best=best)
-        raise InfeasibleDesignError("IPOPT found no rest lengths meeting the stiffness requirement from any start",
-                                    status="no_start_converged", best=None)
-    results.sort(key=lambda r: r[0])
-    _, res, _ = results[0]
-    return _verified(m, res, n, sh.lo2, sh.hi2, sh.load, tgt, kb, eb, Kd, sh.Ks, sh.T, sh.best(res.x))
+    for _, res in sorted(fits, key=lambda f: f[0]):
+        try:
+            return _verified(sh, res)
+        except InfeasibleDesignError as exc:
+            verify_error = verify_error or exc
+    if verify_error is not None:
+        raise verify_error
+    if elastic_best is not None:
+        best = sh.best(elastic_best.x)
+        best["least_violation"] = float(elastic_best.x[-1] * sh.Ks)
+        why = "; ".join(best["violations"])
+        msg = (f"no rest lengths within their bounds give this stiffness at a stable pose: the least violation "
+               f"of the stiffness bounds found is {best['least_violation']:.6g} (force / length), at "
+               f"rest lengths where {why}")
+        raise InfeasibleDesignError(msg, status=elastic_best.status, best=best)
+    raise InfeasibleDesignError("IPOPT found no rest lengths meeting the stiffness requirement from any start",
+                                status="no_start_converged", best=None)
 
 
-def _verified(m, res, n, lo2, hi2, load, target, kb, eb, Kd, Ks, T, best) -> StiffnessDesign:
+def _verified(sh: _Shaper, res) -> StiffnessDesign:
     """The forward check of an NLP solution, and the result built from the recomputed numbers."""
+    m, n, lo2, hi2, load, target = sh.m, sh.n, sh.lo2, sh.hi2, sh.load, sh.target
+    kb, eb, Kd, Ks, T = sh.kb, sh.eb, sh.Kd, sh.Ks, sh.T
+    best = sh.best(res.x)
     x = res.x
     L10 = np.clip(x[n:2 * n], lo2[:n], hi2[:n])
     L20 = np.clip(x[2 * n:3 * n], lo2[n:], hi2[n:])
