@@ -37,6 +37,7 @@ from .analyses.rest import find_equilibria_under_force, rest_configuration
 from .analyses.preload_control import PreloadController, PreloadPlan, PreloadStep, plan_preloads
 from .analyses.simulation import Simulation, SimulationEvent, simulate
 from .analyses.stiffness import cartesian_stiffness
+from .analyses.stiffness_design import LoadCapacity, StiffnessDesign, load_capacity, preloads_for_stiffness
 from .applications.sweeps import SweepResult, sweep
 from .errors import (
                      HomotopyUnavailableError,
@@ -73,7 +74,8 @@ __all__ = [
     "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "sweep", "SweepResult",
-    "cartesian_stiffness", "ForceEstimate", "estimate_tip_force",
+    "cartesian_stiffness", "StiffnessDesign", "preloads_for_stiffness", "LoadCapacity", "load_capacity",
+    "ForceEstimate", "estimate_tip_force",
     "Landscape", "energy_landscape", "shape_label", "sign_string",
     "TensegrityError", "InvalidParameterError", "UnreachableTargetError", "StraightNotEquilibriumError",
     "UnstableStraightError", "UnsupportedError", "SolverError", "NoEquilibriumError",

@@ -25,6 +25,9 @@
 * :mod:`.preload_control` - control in actuation space: rest lengths for tip poses step by step (the
   compiled least-change Newton step, IPOPT where a bound is active) and over trajectories;
 * :mod:`.stiffness` - the Cartesian tangent stiffness;
+* :mod:`.stiffness_design` - stiffness shaping (rest lengths for a tip pose with a desired or bounded
+  Cartesian stiffness, an IPOPT NLP verified forward) and the load capacity of a pose (the limit load of the
+  dead-load path from it in each direction: a polar curve);
 * :mod:`.force_sensor` - the arm as a force sensor: the tip force from measured joint angles, its
   covariance and a chi-square test for loads elsewhere;
 * :mod:`.landscape` - the energy over two joint angles;

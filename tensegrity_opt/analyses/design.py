@@ -584,16 +584,7 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
         m.check_reachable(dx, dy)
     except UnreachableTargetError as exc:        # the caller gave a tip position, not a deflection
         raise UnreachableTargetError(exc.message, field="target", **exc.details) from None
-    lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
-    try:
-        lo = np.broadcast_to(np.asarray(lo, dtype=float), (2 * n)).copy() if np.ndim(lo) else float(lo)
-        hi = np.broadcast_to(np.asarray(hi, dtype=float), (2 * n)).copy() if np.ndim(hi) else float(hi)
-    except ValueError:
-        raise InvalidParameterError("bounds: lo and hi are numbers or 2n values (L1_0 of every segment, then "
-                                    "L2_0)", field="bounds") from None
-    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(0 < np.asarray(lo))
-            and np.all(np.asarray(lo) < np.asarray(hi))):
-        raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
+    lo, hi = rest_length_bounds(m, bounds)
     if q0 is None:
         try:
             q0 = solve_equilibrium(m, dx, dy).q
@@ -653,6 +644,23 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
     return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q, margin=achieved,
                          tip=eq.tip, energy=eq.energy, status=res.status, success=res.success,
                          iterations=res.iterations, equilibrium=eq)
+
+
+def rest_length_bounds(m: Manipulator, bounds) -> tuple[Any, Any]:
+    """``(lo, hi)`` of :func:`choose_preloads`'s ``bounds`` (each a number or ``2 n`` values: ``L1_0`` of every
+    segment, then every ``L2_0``; default ``(0.1 b_min, 4 b_max)``), checked (``field="bounds"``)."""
+    n = m.n
+    try:
+        lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
+        lo = np.broadcast_to(np.asarray(lo, dtype=float), (2 * n)).copy() if np.ndim(lo) else float(lo)
+        hi = np.broadcast_to(np.asarray(hi, dtype=float), (2 * n)).copy() if np.ndim(hi) else float(hi)
+    except (TypeError, ValueError):
+        raise InvalidParameterError("bounds: lo and hi are numbers or 2n values (L1_0 of every segment, then "
+                                    "L2_0)", field="bounds") from None
+    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(0 < np.asarray(lo))
+            and np.all(np.asarray(lo) < np.asarray(hi))):
+        raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
+    return lo, hi
 
 
 def _reach_guess(m: Manipulator, target: np.ndarray) -> np.ndarray:

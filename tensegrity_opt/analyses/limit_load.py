@@ -1,7 +1,8 @@
 """Limit loads: how far a dead tip load can grow before the branch from a rest configuration loses stability.
 
-:func:`limit_load` traces the dead-load path ``F = t d`` (``t >= 0``, ``d`` a unit direction) from a rest
-configuration by arclength continuation (:func:`~tensegrity_opt.analyses.branches.trace_branch`) and stops
+:func:`limit_load` traces the dead-load path ``F = base + t d`` (``t >= 0``, ``d`` a unit direction; ``base``
+a load the start is in equilibrium under, zero by default: the start is then a rest configuration) by
+arclength continuation (:func:`~tensegrity_opt.analyses.branches.trace_branch`) and stops
 at the first event where stability is lost: a **fold** (the load passes a maximum along the branch: the
 arm snaps through) or a **bifurcation** (a branch point: the straight symmetric chain buckles at its
 critical load, :func:`~tensegrity_opt.analyses.buckling.critical_force`). Where neither happens — a pre-bent
@@ -18,7 +19,7 @@ grows along the path.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
@@ -62,9 +63,11 @@ class LimitLoad:
     direction : ndarray (2,)
     boundary : str
     start : Equilibrium
-        The rest configuration the path starts from.
+        The configuration the path starts from (a rest configuration when ``base`` is zero).
     branch : Branch
         The traced path (up to the limit).
+    base : ndarray (2,)
+        The base load: the tip force is ``base + t d`` (guided: ``Fx = base_x + t d_x``).
     """
 
     load: float | None
@@ -80,6 +83,7 @@ class LimitLoad:
     boundary: str
     start: Equilibrium
     branch: Branch
+    base: np.ndarray = field(default_factory=lambda: np.zeros(2))
 
     @property
     def success(self) -> bool:
@@ -94,6 +98,7 @@ class LimitLoad:
              "quasi_buckling_force": None if self.quasi_buckling_force is None else
              {"fx": number(self.quasi_buckling_force[0]), "fy": number(self.quasi_buckling_force[1])},
              "end_load": number(self.end_load), "direction": numbers(self.direction), "boundary": self.boundary,
+             "base": numbers(self.base),
              "start": self.start.to_dict(), "success": self.success,
              "branch_status": self.branch.status, "branch_points": len(self.branch)}
         if include_branch:
@@ -119,7 +124,7 @@ def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
         return None, None
     X = np.column_stack([br.q, br.force, br.t])[:P]
     c = np.array([_compliance(prob, X[i], d, guided) for i in range(P)])
-    ok = np.isfinite(c) & br.stable[:P]
+    ok = np.isfinite(c) & (c > 0.0) & br.stable[:P]     # c = 0: no compliance along the load (straight, guided)
     if ok.sum() < 3:
         return None, None
     i = int(np.argmax(np.where(ok, c, -np.inf)))
@@ -136,8 +141,9 @@ def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
 
 
 def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", max_load: float | None = None,
-               start=None, *, max_points: int = 4000, timeout: float | None = None) -> LimitLoad:
-    """The dead tip load ``t d`` at which the branch from a rest configuration first loses stability.
+               start=None, *, base=(0.0, 0.0), max_points: int = 4000, timeout: float | None = None) -> LimitLoad:
+    """The dead tip load ``base + t d`` at which the branch from a start (a rest configuration by default)
+    first loses stability; ``t`` is the load added to ``base``.
 
     Parameters
     ----------
@@ -151,10 +157,16 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
     max_load : float, optional
         Stop there (``reason="max_load"``). Default ``DEFAULT_MAX_LOAD`` force units ``k c^2 / (2 b)``.
     start : Equilibrium or array_like (n,), optional
-        A configuration at zero load (a rest configuration; Newton puts it on the rest set). Default
-        the least-energy stable rest configuration
+        A configuration at the base load (with ``base`` zero a rest configuration; Newton under ``base``
+        puts it on the equilibrium set). Default the least-energy stable rest configuration
         (:func:`~tensegrity_opt.analyses.rest.rest_configuration`: equal-energy wells are separated by
-        its documented rule — the one closest to straight, then the largest ``q_1``, ...).
+        its documented rule — the one closest to straight, then the largest ``q_1``, ...); with a non-zero
+        ``base`` the equilibrium under it from the default start of
+        :func:`~tensegrity_opt.analyses.equilibrium.solve_equilibrium_under_force`.
+    base : (float, float)
+        A dead tip load already applied at the start (default none): the path is ``F = base + t d``,
+        ``t >= 0`` the load added (guided: ``Fx = base_x + t d_x``, the guide's reaction at the start is
+        the start's ``Fy``).
     max_points, timeout
         As :func:`~tensegrity_opt.analyses.branches.trace_branch`.
 
@@ -169,12 +181,14 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
     Raises
     ------
     InvalidParameterError
-        (``ValueError``) for a bad direction, boundary, ``max_load``, or a start that is not a stable
-        rest configuration.
+        (``ValueError``) for a bad direction, boundary, ``base``, ``max_load``, or a start that is not a
+        stable equilibrium under ``base`` (a rest configuration when it is zero).
     """
     if boundary not in ("free", "guided"):
         raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")
-    control = Control.load(direction) if boundary == "free" else Control.guided(direction)
+    control = Control.load(direction, base) if boundary == "free" else Control.guided(direction, base)
+    F0 = control.base
+    loaded = bool(np.any(F0 != 0.0))
     d = control.direction
     if max_load is not None:
         try:
@@ -183,19 +197,22 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
             raise InvalidParameterError(f"max_load must be a number, got {max_load!r}", field="max_load") from None
         if not math.isfinite(max_load) or max_load <= 0:
             raise InvalidParameterError(f"max_load must be finite and > 0, got {max_load!r}", field="max_load")
-    if start is None:
+    from .equilibrium import solve_equilibrium_under_force
+
+    if start is None and not loaded:
         from .rest import rest_configuration
 
         eq0 = rest_configuration(m)
+    elif start is None:
+        eq0 = solve_equilibrium_under_force(m, F0[0], F0[1])
     else:
         q0 = start.q if isinstance(start, Equilibrium) else check_q0(m, start)
         if q0 is None:
             raise InvalidParameterError("start must be an Equilibrium or n joint angles", field="start")
-        from .equilibrium import solve_equilibrium_under_force
-
-        eq0 = solve_equilibrium_under_force(m, 0.0, 0.0, q0=q0)
+        eq0 = solve_equilibrium_under_force(m, F0[0], F0[1], q0=q0)
         if np.abs(eq0.q - q0).max() > 1e-3:
-            raise InvalidParameterError("start is not (near) a rest configuration: Newton under zero load moved it "
+            what = "an equilibrium under the base load" if loaded else "a rest configuration"
+            raise InvalidParameterError(f"start is not (near) {what}: Newton under that load moved it "
                                         f"by {np.abs(eq0.q - q0).max():.3g} rad", field="start")
     bound = max_load
     br0 = trace_branch(m, eq0.q, control, t_max=1.0, max_points=3)        # its problem gives the force scale
@@ -204,8 +221,8 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
     br = trace_branch(m, eq0.q, control, t_max=bound, max_points=max_points, stop_at="stability_loss",
                       timeout=timeout)
     if not br.stable[0]:
-        raise InvalidParameterError("the start is not a stable rest configuration under this boundary condition "
-                                    f"(Morse index {int(br.morse_index[0])} at zero load)", field="start")
+        raise InvalidParameterError("the start is not a stable equilibrium under this boundary condition "
+                                    f"(Morse index {int(br.morse_index[0])} at the base load)", field="start")
     lost = [e for e in br.events if e.stability == "lost"]
     qb_upto = len(br) - 1
     if lost:
@@ -214,8 +231,9 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
         kind = "fold" if e.kind == "fold" else "bifurcation"
         qb, qbf = _quasi_buckling(br, d, boundary == "guided", qb_upto)
         return LimitLoad(e.t, e.force.copy(), e.q.copy(), kind, None, e.null_vector, qb, qbf, e.t, d, boundary,
-                         eq0, br)
+                         eq0, br, F0.copy())
     reason = {"t_max": "max_load", "joint_limit": "joint_limit"}.get(br.status, br.status)
     stable_end = int(np.flatnonzero(br.stable)[-1]) if br.stable.any() else 0
     qb, qbf = _quasi_buckling(br, d, boundary == "guided", min(qb_upto, stable_end))
-    return LimitLoad(None, None, None, "none", reason, None, qb, qbf, float(br.t[stable_end]), d, boundary, eq0, br)
+    return LimitLoad(None, None, None, "none", reason, None, qb, qbf, float(br.t[stable_end]), d, boundary, eq0, br,
+                     F0.copy())

@@ -11,7 +11,8 @@ The analyses (:mod:`tensegrity_opt.analyses`) talk to it through three doors, ne
   (:meth:`~BoundSolver.evaluate`, :meth:`~BoundSolver.tangent_stiffness`,
   :meth:`~BoundSolver.kkt_parameter_jacobian`); results are numpy only (:class:`LocalResult`,
   :class:`SeedResults`, :class:`Continuation`);
-* the design NLP builders :func:`buckling_design_nlp` and :func:`preload_nlp` (:mod:`.design_nlp`);
+* the design NLP builders :func:`buckling_design_nlp`, :func:`preload_nlp` and :func:`stiffness_nlp`
+  (:mod:`.design_nlp`);
 * the polynomial homotopy (:mod:`.homotopy`, PHCpack; no CasADi).
 
 Inside: :mod:`.expressions` (the one symbolic model), :mod:`.chain_solver` (the solver per chain length),
@@ -26,12 +27,13 @@ from .kernels import KERNEL_MAX
 from .results import Continuation, LocalResult, SeedResults
 
 __all__ = ["ChainSolver", "BoundSolver", "chain_solver", "LocalResult", "SeedResults", "Continuation",
-           "DENSE_MAX", "KERNEL_MAX", "RANGE_SHRINK", "NLPResult", "buckling_design_nlp", "preload_nlp"]
+           "DENSE_MAX", "KERNEL_MAX", "RANGE_SHRINK", "NLPResult", "buckling_design_nlp", "preload_nlp",
+           "stiffness_nlp"]
 
 
 def __getattr__(name: str):
     # the design problems are built by few calls: their module is imported on first use
-    if name in ("NLPResult", "buckling_design_nlp", "preload_nlp"):
+    if name in ("NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp"):
         from . import design_nlp
 
         return getattr(design_nlp, name)

@@ -16,6 +16,15 @@ repeated), plus budget, total-length, preload-tension and joint-stiffness rows. 
 optional last-link angle, ``H_q - mu I = L L^T`` (``H_q``: Hessian of ``E - F.tip`` in joint
 angles), spring lengths ``L_i - L_i0`` (for tautness) and joint angles (physical range).
 Objective ``w_nom |L0 - L0_nom|^2 / |L0_nom|^2 - w_mu mu + w_E E``.
+
+``StiffnessNLP`` — the variables of ``PreloadNLP`` and the compliance columns ``Y = H^-1 J^T``
+(``H`` the Hessian of ``E - F.tip`` in the absolute angles, ``n x 2``, scaled); the rows of
+``PreloadNLP`` and ``H Y = J^T``, so that ``C = J Y = J H^-1 J^T`` (the free tip's compliance) and
+``K = C^-1`` (its Cartesian tangent stiffness, the 2 x 2 inverse written out) are smooth functions of
+the variables; rows ``K`` (its three entries, for bounds or equalities) and, for eigenvalue bounds
+``lo <= eig(K) <= hi``, the trace and determinant of ``K - lo I`` and of ``hi I - K`` (a 2 x 2
+symmetric matrix is positive semidefinite iff both are >= 0). Objective
+``w_K |K - K_d|_F^2 + w_nom |L0 - L0_nom|^2 / |L0_nom|^2``.
 """
 
 from __future__ import annotations
@@ -33,7 +42,10 @@ from .chain_solver import CACHE_SIZE
 from .expressions import chain_expressions
 from .ipopt import IPOPT_OPTIONS
 
-__all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "tril_size"]
+__all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp", "tril_size"]
+
+#: IPOPT iterations of one stiffness-shaping solve at most.
+STIFFNESS_MAX_ITER = 400
 
 _DESIGN_OPTIONS = {**IPOPT_OPTIONS, "ipopt.max_iter": 3000, "ipopt.tol": 1e-9, "ipopt.constr_viol_tol": 1e-9,
                    "ipopt.max_wall_time": 60.0}
@@ -109,10 +121,11 @@ class _DeadlineCallback(ca.Callback):
         return [1 if expired() else 0]
 
 
-def _nlpsol(name: str, nlp: dict) -> tuple[ca.Function, _DeadlineCallback]:
-    """``nlpsol`` with the design options and a deadline callback (kept alive by the caller)."""
+def _nlpsol(name: str, nlp: dict, **options) -> tuple[ca.Function, _DeadlineCallback]:
+    """``nlpsol`` with the design options (``options`` override them) and a deadline callback (kept alive by
+    the caller)."""
     cb = _DeadlineCallback(f"{name}_deadline", nlp["x"].numel(), nlp["g"].numel(), nlp["p"].numel())
-    return ca.nlpsol(name, "ipopt", nlp, {**_DESIGN_OPTIONS, "iteration_callback": cb}), cb
+    return ca.nlpsol(name, "ipopt", nlp, {**_DESIGN_OPTIONS, **options, "iteration_callback": cb}), cb
 
 
 def _run(solver, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
@@ -203,6 +216,80 @@ class PreloadNLP:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
 
 
+class StiffnessNLP:
+    """Rest lengths and configuration for a stable equilibrium at a target under a tip load with a
+    prescribed (or bounded) Cartesian tangent stiffness of the free tip.
+
+    Variables ``x = (phi, L10, L20, mu, L, Yhat, s)``: ``phi`` absolute angles (n), the rest lengths (2n),
+    the margin ``mu`` and the lower-triangular ``L`` of ``H_q - mu I = L L^T`` (as :class:`PreloadNLP`),
+    ``Yhat`` (2n, column by column) with ``Y = Yhat Ls / Ts`` the compliance columns ``H^-1 J^T``
+    (``Ts`` the torque scale, ``Ls`` the length scale: ``Yhat`` and ``Khat = K Ls^2 / Ts`` are O(1)), and
+    the slack ``s`` of the elastic mode (fixed at 0 otherwise): every stiffness bound relaxed by ``s``.
+    Parameters ``p = (a, b, k1, k2, F, L0nom, Kd (3), w (3), eig (2), scales (2))``; objective
+    ``w0 |Khat - Kd|_F^2 + w1 |L0 - L0nom|^2 / |L0nom|^2 + w2 s``.
+
+    Rows ``g``: ``grad E - J^T F`` (n), ``tip`` (2), ``phi_n`` (1), the margin's factorisation
+    (``tril(n)``), ``H Yhat / Ts - J^T / Ls`` (2n), ``q`` (n), ``Khat + s`` and ``Khat - s`` (3 each:
+    ``kxx, kxy, kyy``, for lower and upper bounds), ``tr, det`` of ``Khat - (lo - s) I`` and of
+    ``(hi + s) I - Khat`` (4; ``lo, hi`` scaled, in ``p``).
+    """
+
+    def __init__(self, n: int) -> None:
+        self.n = n
+        phi = ca.SX.sym("phi", n)
+        L10 = ca.SX.sym("L10", n)
+        L20 = ca.SX.sym("L20", n)
+        mu = ca.SX.sym("mu")
+        lv = ca.SX.sym("L", tril_size(n))
+        yv = ca.SX.sym("Y", 2 * n)
+        slack = ca.SX.sym("s")                   # elastic mode: the stiffness bounds relaxed by s >= 0
+        Lc, self.diag = _tril(lv, n)
+        a, b, k1, k2 = (ca.SX.sym(s, n) for s in ("a", "b", "k1", "k2"))
+        F = ca.SX.sym("F", 2)
+        L0nom = ca.SX.sym("L0nom", 2 * n)
+        Kd = ca.SX.sym("Kd", 3)
+        w = ca.SX.sym("w", 3)
+        eig = ca.SX.sym("eig", 2)
+        sc = ca.SX.sym("scales", 2)              # torque scale Ts, length scale Ls
+        q, L1, L2, E, tip = chain_expressions(phi, a, b, k1, k2, L10, L20)
+        J = ca.jacobian(tip, phi)
+        grad = ca.gradient(E, phi) - J.T @ F
+        Hphi = ca.hessian(E - ca.dot(F, tip), phi)[0]
+        T = ca.DM(np.tril(np.ones((n, n))))
+        Hq = T.T @ Hphi @ T
+        psd = _lower(Hq - mu * ca.SX.eye(n) - Lc @ Lc.T, n)
+        Y = ca.horzcat(yv[:n], yv[n:])
+        comp = ca.vec(Hphi @ Y / sc[0] - J.T / sc[1])
+        C = J @ Y / sc[1]                        # C Ts / Ls^2: the scaled compliance
+        c11, c22, c12 = C[0, 0], C[1, 1], 0.5 * (C[0, 1] + C[1, 0])
+        det = c11 * c22 - c12 * c12
+        K = ca.vertcat(c22 / det, -c12 / det, c11 / det)       # kxx, kxy, kyy (scaled)
+        lo, hi = eig[0] - slack, eig[1] + slack
+        eig_rows = ca.vertcat(K[0] + K[2] - 2 * lo, (K[0] - lo) * (K[2] - lo) - K[1] * K[1],
+                              2 * hi - K[0] - K[2], (hi - K[0]) * (hi - K[2]) - K[1] * K[1])
+        L0 = ca.vertcat(L10, L20)
+        dK = K - Kd
+        fit = dK[0] * dK[0] + 2 * dK[1] * dK[1] + dK[2] * dK[2]          # |K - Kd|_F^2 (kxy twice)
+        f = w[0] * fit + w[1] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom) + w[2] * slack
+        rows = ca.vertcat(grad, tip, phi[n - 1], psd, comp, q, K + slack, K - slack, eig_rows)
+        self.x = ca.vertcat(phi, L10, L20, mu, lv, yv, slack)
+        self.row_sizes = {"grad": n, "tip": 2, "angle": 1, "psd": tril_size(n), "compliance": 2 * n, "q": n,
+                          "K_lo": 3, "K_hi": 3, "eig": 4}
+        p = ca.vertcat(a, b, k1, k2, F, L0nom, Kd, w, eig, sc)
+        # a solve that has not converged in STIFFNESS_MAX_ITER iterations is not going to (the caller tries
+        # another start or formulation instead of waiting for the design problems' 3000)
+        self.solver, self._deadline = _nlpsol("design_stiffness", {"x": self.x, "p": p, "f": f, "g": rows},
+                                              **{"ipopt.max_iter": STIFFNESS_MAX_ITER})
+        self._rows = ca.Function("stiffness_rows", [self.x, p], [rows])
+
+    def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
+        return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
+
+    def rows(self, x: np.ndarray, p: np.ndarray) -> np.ndarray:
+        """The constraint rows ``g(x)`` (numpy), for the report of an infeasible point."""
+        return np.asarray(self._rows(x, p)).ravel()
+
+
 _local = threading.local()
 
 
@@ -227,3 +314,7 @@ def buckling_design_nlp(n: int, guided: bool) -> BucklingDesignNLP:
 
 def preload_nlp(n: int) -> PreloadNLP:
     return _cached(("preload", n), lambda: PreloadNLP(n))
+
+
+def stiffness_nlp(n: int) -> StiffnessNLP:
+    return _cached(("stiffness", n), lambda: StiffnessNLP(n))
