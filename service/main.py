@@ -67,6 +67,9 @@ Every refusal has the body `{"code", "message", "field", ...}`: 422 for schema v
 keys, 413 for an oversized body, 422 `response_too_large` for an answer over the server's response size
 limit (`field` names what to ask less of), 503 (`Retry-After`) when the solver pool is saturated, 504 when a
 solve exceeds the time limit. The server's limits are at `GET /version`.
+
+Control loops may use the WebSocket `/v1/control/stream` instead (one connection per chain, a step per
+message, the same validation and error codes; OpenAPI does not describe WebSockets: see `docs/stream.md`).
 """
 
 TAGS = [
