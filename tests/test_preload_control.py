@@ -130,6 +130,8 @@ def test_an_unreachable_step_is_reported_with_the_best_pose_and_the_plan_goes_on
     np.testing.assert_allclose(plan.tip[1], plan.tip[0], atol=1e-9)      # stayed at the last feasible pose
     d = plan.to_dict()
     assert d["feasible"] == [True, False, True] and d["margin"][1] is None
+    s = plan.steps[1].to_dict()             # one infeasible step (the control stream sends it): no NaN
+    assert s["feasible"] is False and s["margin"] is None and s["energy"] is None
 
 
 def test_validation_names_the_field():
