@@ -106,7 +106,7 @@ class PreloadStep:
         return {"rest_lengths": [numbers(r) for r in self.rest_lengths], "q": numbers(self.q),
                 "tip": numbers(self.tip), "end_angle": number(self.end_angle), "margin": nullable(self.margin),
                 "energy": nullable(self.energy), "feasible": self.feasible, "method": self.method,
-                "status": self.status, "iterations": int(self.iterations), "residual": nullable(self.residual),
+                "status": self.status, "iterations": int(self.iterations), "residual": None if self.residual is None else nullable(self.residual),
                 "target": numbers(self.target)}
 
 
