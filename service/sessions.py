@@ -182,11 +182,14 @@ class StreamSlots:
         return len(self._all) - len(self._free)
 
     def acquire(self) -> SolverPool | None:
-        """A slot, or ``None`` when ``size`` streams hold one."""
-        if self._free:
-            return self._free.pop()
+        """A slot, or ``None`` when ``size`` streams hold one. An idle thread first: a stream that closed
+        after a step past its time limit may have left its thread still finishing that call (a CasADi call
+        is not cut), and a new stream must not wait behind it."""
+        for i in range(len(self._free) - 1, -1, -1):
+            if self._free[i].in_flight == 0:
+                return self._free.pop(i)
         if len(self._all) >= self.size:
-            return None
+            return self._free.pop() if self._free else None
         # one worker, one queued call: a call past its time limit may still be finishing when the next
         # step arrives; that step waits behind it on the same thread (a stream's state is never used by
         # two threads at once)

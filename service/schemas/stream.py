@@ -17,6 +17,7 @@ from pydantic import BaseModel, ConfigDict, Field
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import _STRICT, MAX_ANGLE, MAX_STIFFNESS, Angle, Deflection, ForceValue, Length, ManipulatorIn
+from .design import DesignManipulatorIn
 
 #: The modes of a stream.
 MODES = ("track", "preloads", "inverse")
@@ -76,9 +77,11 @@ class PreloadsOpen(_Open):
 
 
 class InverseOpen(_Open):
-    """Tip poses: the rest lengths step by step (``tensegrity_opt.analyses.preload_control.PreloadController``)."""
+    """Tip poses: the rest lengths step by step (``tensegrity_opt.analyses.preload_control.PreloadController``).
+    Chains of at most 60 segments, as ``/v1/design/preloads`` (its IPOPT fallback is that design NLP)."""
 
     mode: Literal["inverse"]
+    manipulator: DesignManipulatorIn
     load: Pair = Field([0.0, 0.0], description="dead tip load [fx, fy] (force units); a step may give its own")
     start: list[Angle] | None = Field(
         None, max_length=HARD_MAX_SEGMENTS,
