@@ -33,6 +33,8 @@ variable                               default    meaning
 ``TENSEGRITY_MAX_RESPONSE_BYTES``      8388608    JSON answers above this: 422 ``response_too_large``
 ``TENSEGRITY_WARMUP``                  true       build each thread's solvers (n = 4) at start-up
 ``TENSEGRITY_SHUTDOWN_TIMEOUT``        1          seconds requests in flight get at SIGTERM, then cancelled
+``TENSEGRITY_MAX_STREAM_CONNECTIONS``  16         open ``/v1/control/stream`` WebSockets (beyond: closed with 1013)
+``TENSEGRITY_STREAM_IDLE_TIMEOUT``     60         seconds a stream may stay silent (then closed with 1001)
 ``TENSEGRITY_JOBS_DB``                 (file)     SQLite job store, ``tensegrity_jobs.sqlite3`` in the working dir
 ``TENSEGRITY_JOBS_SCHEDULER``          (unset)    jobs: unset/``serial`` runner thread; ``local``/``tcp://..`` Dask
 ``TENSEGRITY_JOBS_MAX_POINTS``         100000     most points in one job (422 above)
@@ -158,6 +160,14 @@ class Settings(BaseSettings):
         1.0, ge=0, le=600,
         description="seconds requests in flight get to finish at SIGTERM/SIGINT before they are cancelled "
                     "(uvicorn's timeout_graceful_shutdown; tensegrity-opt serve)")
+    max_stream_connections: int = Field(
+        16, ge=1, le=1024,
+        description="control streams (/v1/control/stream) open at once, each with its own solver thread; a "
+                    "stream beyond it gets an error message and is closed with 1013 (try again later)")
+    stream_idle_timeout: float = Field(
+        60.0, gt=0, le=86400,
+        description="seconds a control stream may send nothing; then it gets an error message (idle_timeout) "
+                    "and is closed with 1001 (going away)")
     jobs_db: str = Field("tensegrity_jobs.sqlite3", min_length=1, description="SQLite file of the job store")
     jobs_scheduler: str | None = Field(None, description="None/serial: in-process thread; local; tcp://host:port")
     jobs_max_points: int = Field(100_000, ge=1, le=1_000_000, description="most points in one job")

@@ -21,7 +21,7 @@ from .lane import LaneUnavailable, SolverLane
 from .pool import SolveTimeout
 from .responses import JSONBody, ResponseTooLarge, render_task
 
-__all__ = ["api_key_header", "require_api_key", "get_settings_dep", "check_manipulator", "check_batch",
+__all__ = ["api_key_header", "require_api_key", "api_key_valid", "get_settings_dep", "check_manipulator", "check_batch",
            "check_curve_size", "check_path_points", "check_atlas_targets", "path_deadline", "solve", "solve_heavy",
            "is_heavy"]
 
@@ -39,15 +39,19 @@ async def get_settings_dep(request: Request) -> Settings:
 async def require_api_key(request: Request, key: str | None = Security(api_key_header)) -> None:
     """401 unless auth is off or ``X-API-Key`` is one of the configured keys (constant-time compare)."""
     settings: Settings = request.app.state.settings
-    if not settings.api_keys:
+    if not settings.api_keys or api_key_valid(key, settings):
         return
-    if key:
-        given = key.encode("utf-8", "surrogateescape")
-        if any(secrets.compare_digest(given, k.encode("utf-8", "surrogateescape")) for k in settings.api_keys):
-            return
     raise ServiceError(401, "unauthorized",
                        "missing API key: send the X-API-Key header" if not key else "invalid API key",
                        field="X-API-Key", headers={"WWW-Authenticate": "ApiKey"})
+
+
+def api_key_valid(key: str | None, settings: Settings) -> bool:
+    """``key`` is one of the configured API keys (constant-time compare; the REST routes and the stream)."""
+    if not key:
+        return False
+    given = key.encode("utf-8", "surrogateescape")
+    return any(secrets.compare_digest(given, k.encode("utf-8", "surrogateescape")) for k in settings.api_keys)
 
 
 def check_manipulator(m: Any, settings: Settings) -> FieldContext:

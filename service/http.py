@@ -14,6 +14,9 @@ new ``/healthz`` failed). :func:`protocol_class` returns uvicorn's httptools pro
   closed to make room; when every connection has a request in progress the new one is closed.
   So half-open sockets cannot lock out new clients: ``/healthz`` still answers.
 
+* **WebSockets** (``/v1/control/stream``): an upgraded connection leaves the request timeout and is
+  never the one closed to make room (the stream has its own idle timeout and bound); it still counts
+  towards the cap.
 * **JSON 400s**: a request uvicorn cannot parse (request line, headers, ``Content-Length``) is
   refused in the service's error shape (``{"code": "bad_request", "message"}``), not uvicorn's
   plain text.
@@ -80,6 +83,13 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
             incomplete.pop(self, None)
             super().connection_lost(exc)
 
+        def handle_websocket_upgrade(self) -> None:
+            # a WebSocket from here on (/v1/control/stream, which has its own idle timeout and connection
+            # bound): no request timeout, and never closed to make room for a new connection
+            waiting.pop(self, None)
+            incomplete.pop(self, None)
+            super().handle_websocket_upgrade()
+
         def on_message_begin(self) -> None:
             super().on_message_begin()
             if self not in incomplete:
@@ -129,7 +139,11 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
 def uvicorn_options(settings: Any) -> dict[str, Any]:
     """The keyword arguments of ``uvicorn.run`` for the connection limits of ``settings``."""
     opts: dict[str, Any] = {"timeout_keep_alive": settings.keep_alive, "backlog": settings.backlog,
-                            "limit_concurrency": settings.concurrency_cap}
+                            "limit_concurrency": settings.concurrency_cap,
+                            # WebSocket messages (the control stream): bounded like request bodies (a larger
+                            # one closes the stream with 1009), and not compressed: a stream's messages are
+                            # a few hundred bytes and its point is latency
+                            "ws_max_size": settings.max_body_bytes, "ws_per_message_deflate": False}
     proto = protocol_class(settings.request_timeout, settings.connection_cap)
     if proto is not None:
         opts["http"] = proto

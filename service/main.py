@@ -29,15 +29,19 @@ from .lane import SolverLane
 from .metrics import Metrics, MetricsMiddleware
 from .middleware import BodyLimitMiddleware, MethodsMiddleware
 from .pool import SolverPool
+from .sessions import StreamSlots
 from .responses import SafeJSONResponse
 from .routes import (atlas, batch, buckling, curves, design, equilibrium, landscape, ops, paths, plots, segment,
-                     stiffness, web)
+                     stiffness, stream, web)
 from .routes import jobs as jobs_routes
 
 #: Routers behind the API key (when keys are configured) and the open ones (health, version, page).
 API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, atlas, plots,
                jobs_routes)
 OPEN_ROUTERS = (ops, web)
+#: The WebSocket routes: they check the API key themselves (a FastAPI dependency on ``Request`` does not
+#: apply to a WebSocket; the key may also come as ``?api_key=``, which browsers can send).
+STREAM_ROUTERS = (stream,)
 #: Seconds the job runner and the solver threads each get to stop at shutdown.
 SHUTDOWN_JOIN = 0.5
 #: Methods a browser page may use across origins (DELETE: remove a job).
@@ -63,6 +67,9 @@ Every refusal has the body `{"code", "message", "field", ...}`: 422 for schema v
 keys, 413 for an oversized body, 422 `response_too_large` for an answer over the server's response size
 limit (`field` names what to ask less of), 503 (`Retry-After`) when the solver pool is saturated, 504 when a
 solve exceeds the time limit. The server's limits are at `GET /version`.
+
+Control loops may use the WebSocket `/v1/control/stream` instead (one connection per chain, a step per
+message, the same validation and error codes; OpenAPI does not describe WebSockets: see `docs/stream.md`).
 """
 
 TAGS = [
@@ -93,7 +100,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     pool = SolverPool(settings.workers, settings.queue_size, heavy_limit=settings.heavy_threads)
     heavy = (ProcessLane(settings.heavy_workers, settings.heavy_queue_size, grace=settings.heavy_grace)
              if settings.heavy_workers else None)
-    metrics = Metrics(pool, heavy)
+    streams = StreamSlots(settings.max_stream_connections)
+    metrics = Metrics(pool, heavy, streams)
     runner = jobs.JobRunner(settings)
     lanes = [SolverLane(max_in_flight=max(settings.queue_size, 1))
              for _ in range(settings.inline_processes if settings.inline_max_segments else 0)]
@@ -138,6 +146,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
                 lane.close()
             if heavy is not None:
                 heavy.close()
+            streams.shutdown(SHUTDOWN_JOIN)
             pool.shutdown(wait=True, timeout=SHUTDOWN_JOIN)
 
     app = FastAPI(
@@ -155,6 +164,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app.state.heavy = heavy
     app.state.metrics = metrics
     app.state.jobs = runner
+    app.state.stream_slots = streams
     app.state.ready = False
 
     errors.install(app)
@@ -163,7 +173,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     auth = [Depends(require_api_key)] if settings.auth_enabled else []
     for module in API_ROUTERS:
         app.include_router(module.router, dependencies=auth)
-    for module in OPEN_ROUTERS:
+    for module in OPEN_ROUTERS + STREAM_ROUTERS:
         app.include_router(module.router)
     docs.install(app)
     # Every server serves the same document (the committed openapi/openapi.json): the API as

@@ -13,6 +13,8 @@ Exposed at ``GET /metrics`` in the Prometheus text format:
 * ``tensegrity_design_processes_in_flight`` (gauge: design requests queued or running in the
   killable processes of :mod:`service.heavy`), ``tensegrity_design_processes_killed`` (gauge: processes
   killed because they could not stop at a deadline)
+* ``tensegrity_stream_connections`` (gauge: control streams open, ``/v1/control/stream``); the
+  streams' refusals count in ``tensegrity_errors_total`` too
 
 ``route`` is the route template (``/v1/equilibrium``), never the raw path, so the label set
 stays bounded; unmatched paths are ``route="<unmatched>"``.
@@ -45,7 +47,7 @@ _METHODS = frozenset({"GET", "HEAD", "POST", "PUT", "PATCH", "DELETE", "OPTIONS"
 
 
 class Metrics:
-    def __init__(self, pool: Any = None, heavy: Any = None) -> None:
+    def __init__(self, pool: Any = None, heavy: Any = None, streams: Any = None) -> None:
         self.registry = CollectorRegistry(auto_describe=True)
         self.requests = Counter("tensegrity_http_requests", "HTTP requests answered",
                                 ["method", "route", "status"], registry=self.registry)
@@ -70,6 +72,10 @@ class Metrics:
             g = Gauge("tensegrity_design_processes_killed", "Design processes killed at a deadline",
                       registry=self.registry)
             g.set_function(lambda: heavy.killed)
+        if streams is not None:
+            g = Gauge("tensegrity_stream_connections", "Control streams (/v1/control/stream) open",
+                      registry=self.registry)
+            g.set_function(lambda: streams.in_use)
 
     def failure(self, code: str) -> None:
         self.errors.labels(code).inc()

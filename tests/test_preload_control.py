@@ -111,6 +111,7 @@ def test_bounds_rate_and_margin_hold_and_the_margin_keeps_the_branch():
     plan = plan_preloads(m, traj, F, margin=need, rate_limit=0.08, bounds=(0.5, 1.6))
     assert plan.feasible.all() and plan.verified.all()
     assert "ipopt" in plan.method                          # where the least-change step was not stable enough
+    assert all(st.to_dict()["residual"] is None for st in plan.steps if st.method == "ipopt")     # no residual
     assert np.all(plan.margin >= need - 1e-7)
     assert np.all(plan.rest_lengths >= 0.5 - 1e-9) and np.all(plan.rest_lengths <= 1.6 + 1e-9)
     assert np.abs(np.diff(plan.rest_lengths, axis=0)).max() <= 0.08 + 1e-9
@@ -130,6 +131,8 @@ def test_an_unreachable_step_is_reported_with_the_best_pose_and_the_plan_goes_on
     np.testing.assert_allclose(plan.tip[1], plan.tip[0], atol=1e-9)      # stayed at the last feasible pose
     d = plan.to_dict()
     assert d["feasible"] == [True, False, True] and d["margin"][1] is None
+    s = plan.steps[1].to_dict()             # one infeasible step (the control stream sends it): no NaN
+    assert s["feasible"] is False and s["margin"] is None and s["energy"] is None
 
 
 def test_validation_names_the_field():

@@ -54,7 +54,8 @@ async def readyz(request: Request) -> Any:
                    "max_body_bytes": 1048576, "max_response_bytes": 8388608,
                    "max_curve_points": s.MAX_CURVE_POINTS, "max_path_points": 5000, "max_atlas_targets": 400,
                    "max_grid": s.MAX_GRID,
-                   "max_torque_points": s.MAX_TORQUE_POINTS},
+                   "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
+                   "stream_idle_timeout": 60.0},
         "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
 async def version(request: Request) -> Any:
     st = request.app.state.settings
@@ -68,7 +69,9 @@ async def version(request: Request) -> Any:
                        "max_body_bytes": st.max_body_bytes, "max_response_bytes": st.max_response_bytes,
                        "max_curve_points": s.MAX_CURVE_POINTS, "max_path_points": st.max_path_points,
                        "max_atlas_targets": st.max_atlas_targets,
-                       "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS},
+                       "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
+                       "max_stream_connections": st.max_stream_connections,
+                       "stream_idle_timeout": st.stream_idle_timeout},
             "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine")}}
 
 

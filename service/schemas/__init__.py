@@ -12,7 +12,7 @@ and are then answered with a domain code (`too_many_segments`, `batch_too_large`
 One module per resource, named after it: :mod:`.common` (the bounds and number types, the chain and
 segment inputs, ranges, the tip force, the solver report, the error body; it imports none of its
 siblings), :mod:`.equilibrium`, :mod:`.buckling`, :mod:`.curves`, :mod:`.stiffness`, :mod:`.segment`,
-:mod:`.landscape`, :mod:`.batch`, :mod:`.design`, :mod:`.paths` (rest configurations, branches, bifurcation
+:mod:`.landscape`, :mod:`.batch`, :mod:`.design`, :mod:`.stream` (the control stream's messages), :mod:`.paths` (rest configurations, branches, bifurcation
 diagrams, limit loads, stability boundaries), :mod:`.atlas` (the workspace stability atlas), :mod:`.ops` (health, readiness, version), :mod:`.plots`
 (the figure requests) and :mod:`.jobs` (the sweep jobs). Every public model is re-exported here, so
 ``from service import schemas as s; s.EquilibriumRequest`` names any of them.
@@ -152,6 +152,19 @@ from .plots import (
 )
 from .segment import SegmentTorqueOut, SegmentTorqueRequest
 from .stiffness import StiffnessOut, StiffnessRequest
+from .stream import (
+    MODES,
+    OPEN_MODELS,
+    STEP_MODELS,
+    Envelope,
+    InverseOpen,
+    InverseStep,
+    OpenEnvelope,
+    PreloadsOpen,
+    PreloadsStep,
+    TrackOpen,
+    TrackStep,
+)
 
 __all__ = [
     "Angle",
@@ -190,6 +203,7 @@ __all__ = [
     "DisplacementControlIn",
     "EnergyLandscapeOut",
     "EnergyLandscapeRequest",
+    "Envelope",
     "EquilibriaOut",
     "EquilibriaRequest",
     "EquilibriumOut",
@@ -204,6 +218,8 @@ __all__ = [
     "GuidedControlIn",
     "Health",
     "Int",
+    "InverseOpen",
+    "InverseStep",
     "JobCreated",
     "JobList",
     "JobOut",
@@ -231,10 +247,13 @@ __all__ = [
     "MAX_TORQUE_POINTS",
     "MIN_LENGTH",
     "MIN_STIFFNESS",
+    "MODES",
     "ManipulatorIn",
     "ManipulatorOut",
     "MapValuesRange",
     "ModeOut",
+    "OPEN_MODELS",
+    "OpenEnvelope",
     "PAPER_CHAIN",
     "PlotAngleRange",
     "PlotAtlasGridRequest",
@@ -252,11 +271,14 @@ __all__ = [
     "Positive",
     "PreloadControlIn",
     "PreloadsForLoadRequest",
+    "PreloadsOpen",
     "PreloadsOut",
     "PreloadsRequest",
+    "PreloadsStep",
     "RangeIn",
     "Ready",
     "RestConfigurationsRequest",
+    "STEP_MODELS",
     "SegmentIn",
     "SegmentOut",
     "SegmentTorqueOut",
@@ -280,6 +302,8 @@ __all__ = [
     "SweepUniformManipulator",
     "Target",
     "TracedBranchOut",
+    "TrackOpen",
+    "TrackStep",
     "UniformManipulatorIn",
     "VersionOut",
     "WallControlIn",

@@ -36,6 +36,10 @@ class Limits(BaseModel):
                                                "atlas_too_large; larger grids: a job with analysis atlas)")
     max_grid: int
     max_torque_points: int
+    max_stream_connections: int = Field(description="control streams (WebSocket /v1/control/stream) open at once; "
+                                                    "beyond, closed with 1013")
+    stream_idle_timeout: float = Field(description="seconds a control stream may send nothing before it is "
+                                                   "closed with 1001")
 
 
 class KernelsOut(BaseModel):

@@ -74,8 +74,10 @@ class PreloadStep:
     end_angle : float
         The last link's absolute angle ``sum(q)``.
     margin : float
-        Smallest eigenvalue of the Hessian of ``E - F . tip`` in ``q`` (torque / rad).
+        Smallest eigenvalue of the Hessian of ``E - F . tip`` in ``q`` (torque / rad); NaN for an infeasible
+        step (``null`` in :meth:`to_dict`).
     energy : float
+        NaN for an infeasible step (``null`` in :meth:`to_dict`).
     feasible : bool
         Rest lengths satisfying every requirement were found (False: ``q``, ``tip`` are the best reachable
         pose, ``rest_lengths`` what reaches it).
@@ -103,8 +105,8 @@ class PreloadStep:
     def to_dict(self) -> dict[str, Any]:
         return {"rest_lengths": [numbers(r) for r in self.rest_lengths], "q": numbers(self.q),
                 "tip": numbers(self.tip), "end_angle": number(self.end_angle), "margin": nullable(self.margin),
-                "energy": number(self.energy), "feasible": self.feasible, "method": self.method,
-                "status": self.status, "iterations": int(self.iterations), "residual": nullable(self.residual),
+                "energy": nullable(self.energy), "feasible": self.feasible, "method": self.method,
+                "status": self.status, "iterations": int(self.iterations), "residual": None if self.residual is None else nullable(self.residual),
                 "target": numbers(self.target)}
 
 

@@ -1,0 +1,139 @@
+"""Messages of the control stream (``/v1/control/stream``, a WebSocket; ``docs/stream.md``).
+
+The client's messages are JSON objects with a ``type``: one ``open`` (the chain, the ``mode`` and its
+options), then any number of ``step`` messages whose fields depend on the mode. They are validated as
+strictly as the REST requests (numbers must be JSON numbers, NaN/Infinity refused, unknown fields
+refused) with the same bounds, and refused with the same ``validation_error`` body naming the field.
+
+The WebSocket is not in the OpenAPI document (OpenAPI does not describe WebSockets); these models are
+the protocol's schema.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Literal
+
+from pydantic import BaseModel, ConfigDict, Field
+
+from ..config import HARD_MAX_SEGMENTS
+from .common import _STRICT, MAX_ANGLE, MAX_STIFFNESS, Angle, Deflection, ForceValue, Length, ManipulatorIn
+from .design import DesignManipulatorIn
+
+#: The modes of a stream.
+MODES = ("track", "preloads", "inverse")
+
+Pair = Annotated[list[ForceValue], Field(min_length=2, max_length=2)]
+Point = Annotated[list[Deflection], Field(min_length=2, max_length=2)]
+RestPair = Annotated[list[Length], Field(min_length=2, max_length=2)]
+Positive = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
+
+
+# ---------------------------------------------------------------------------- dispatch
+class Envelope(BaseModel):
+    """What every client message has: its ``type`` (the rest is read by the model of that type)."""
+
+    model_config = ConfigDict(strict=True, extra="ignore")
+    type: Literal["open", "step"] = Field(description="`open` (first message) or `step`")
+
+
+class OpenEnvelope(BaseModel):
+    """What every ``open`` has: its ``mode`` (the rest is read by the model of that mode)."""
+
+    model_config = ConfigDict(strict=True, extra="ignore")
+    type: Literal["open"]
+    mode: Literal["track", "preloads", "inverse"] = Field(
+        description="`track`: tip deflection targets (Tracker); `preloads`: rest-length commands, the forward "
+                    "equilibrium under the load; `inverse`: tip poses, the rest lengths (PreloadController)")
+
+
+# ---------------------------------------------------------------------------- open
+class _Open(BaseModel):
+    model_config = _STRICT
+    type: Literal["open"]
+    manipulator: ManipulatorIn
+
+
+class TrackOpen(_Open):
+    """Follow the equilibrium as the held tip moves (``tensegrity_opt.analyses.continuation.Tracker``)."""
+
+    mode: Literal["track"]
+    jump: bool = Field(True, description="where the followed branch ends or turns unstable, re-solve globally "
+                                         "(what the chain does: a `jump` event); false: stay on the branch "
+                                         "while it exists (then `solver_failed`, status `branch_ended`)")
+
+
+class PreloadsOpen(_Open):
+    """Rest-length commands: the forward equilibrium under the dead load, warm-started from the last one."""
+
+    mode: Literal["preloads"]
+    load: Pair = Field([0.0, 0.0], description="dead tip load [fx, fy] (force units); a step may give its own")
+    start: list[Angle] | None = Field(
+        None, max_length=HARD_MAX_SEGMENTS,
+        description="the configuration the first step starts from (rad, n angles); default: the equilibrium "
+                    "under `load` reached from the least-energy rest configuration of `manipulator`")
+    snap_distance: Annotated[float, Field(gt=0, le=2 * MAX_ANGLE, allow_inf_nan=False)] = Field(
+        0.2, description="a step whose joint angles move by more than this (rad, largest joint) from the last "
+                         "is reported as a `snap` event (so is an unstable result)")
+
+
+class InverseOpen(_Open):
+    """Tip poses: the rest lengths step by step (``tensegrity_opt.analyses.preload_control.PreloadController``).
+    Chains of at most 60 segments, as ``/v1/design/preloads`` (its IPOPT fallback is that design NLP)."""
+
+    mode: Literal["inverse"]
+    manipulator: DesignManipulatorIn
+    load: Pair = Field([0.0, 0.0], description="dead tip load [fx, fy] (force units); a step may give its own")
+    start: list[Angle] | None = Field(
+        None, max_length=HARD_MAX_SEGMENTS,
+        description="the start configuration (rad, n angles) with `manipulator`'s rest lengths under `load`; "
+                    "default: reached from the least-energy rest configuration")
+    bounds: Annotated[list[Positive], Field(min_length=2, max_length=2)] | None = Field(
+        None, description="actuator bounds [lo, hi] on every rest length; default [0.1 b_min, 4 b_max]")
+    rate_limit: Positive | None = Field(None, description="largest change of each rest length per step")
+    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
+        1e-3, description="required stability margin: smallest eigenvalue of the Hessian of E - F . tip "
+                          "(torque / rad)")
+    objective: Literal["change", "margin", "energy"] = Field(
+        "change", description="`change`: least change from the last step (Newton, IPOPT where a bound is "
+                              "active); `margin`: largest margin; `energy`: least spring energy (IPOPT)")
+    weights: list[Annotated[list[Positive], Field(min_length=2, max_length=2)]] | None = Field(
+        None, max_length=HARD_MAX_SEGMENTS, description="weights [w1, w2] per segment of each rest length's "
+                                                        "change (objective change; default 1)")
+
+
+#: The open model of each mode.
+OPEN_MODELS: dict[str, type[_Open]] = {"track": TrackOpen, "preloads": PreloadsOpen, "inverse": InverseOpen}
+
+
+# ---------------------------------------------------------------------------- steps
+class TrackStep(BaseModel):
+    """The tip held at ``(2 sum(b) - dx, dy)``."""
+
+    model_config = _STRICT
+    type: Literal["step"]
+    dx: Deflection = Field(description="tip deflection along x (length units); dx > 0 shortens the chain")
+    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+
+
+class PreloadsStep(BaseModel):
+    """A rest-length command."""
+
+    model_config = _STRICT
+    type: Literal["step"]
+    rest_lengths: list[RestPair] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
+                                         description="[L1_0, L2_0] per segment, base to tip (n pairs)")
+    load: Pair | None = Field(None, description="dead tip load [fx, fy]; default the open's")
+
+
+class InverseStep(BaseModel):
+    """A tip pose."""
+
+    model_config = _STRICT
+    type: Literal["step"]
+    target: Point = Field(description="tip position [x, y] (length units)")
+    end_angle: Angle | None = Field(None, description="absolute angle of the last link (rad), optional")
+    load: Pair | None = Field(None, description="dead tip load [fx, fy]; default the open's")
+
+
+#: The step model of each mode.
+STEP_MODELS: dict[str, type[BaseModel]] = {"track": TrackStep, "preloads": PreloadsStep, "inverse": InverseStep}

@@ -1,0 +1,208 @@
+"""The state of a control stream (``/v1/control/stream``) and the solver threads streams run in.
+
+A stream is a connection for one chain in one mode; its session keeps what the next step continues
+from (the library's own state objects) and answers each step with the library's ``to_dict()`` plus
+the stream's events:
+
+* ``track`` (:class:`TrackSession`): a :class:`tensegrity_opt.analyses.continuation.Tracker`; each step
+  ``(dx, dy)`` is ``Tracker.solve(dx, dy)``; a ``jump`` event when the tracker left its branch (the
+  branch ended or turned unstable: a global re-solve from the last configuration, what the chain does).
+* ``preloads`` (:class:`PreloadsSession`): each step's rest lengths are commanded and the answer is the
+  forward quasi-static equilibrium under the dead load,
+  ``solve_equilibrium_under_force(m with those rest lengths, fx, fy, q0=last q)``; a ``snap`` event when
+  the configuration moves by more than ``snap_distance`` (rad, largest joint) or the result is unstable.
+* ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.analyses.preload_control.PreloadController`;
+  each step is ``PreloadController.step(target, load, end_angle)``.
+
+Every method here runs in the stream's solver thread (:class:`StreamSlots`), never on the event loop;
+:meth:`Session.step` returns the answer already rendered (``service.responses.render_json``). Library
+exceptions propagate unchanged (the route maps them through :mod:`service.errors`); a session keeps
+its state when a step raises.
+
+:class:`StreamSlots` bounds the streams of a server (``max_stream_connections``): each stream holds one
+slot for its lifetime, a one-thread :class:`service.pool.SolverPool` (the time limit, the cancel of a
+call past it), so a stream's steps run in order on one thread whose CasADi instances stay warm, and one
+slow stream never delays another (nor the REST requests, which have their own pool).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+import tensegrity_opt as to
+from tensegrity_opt.analyses.continuation import Tracker
+from tensegrity_opt.analyses.preload_control import PreloadController
+from tensegrity_opt.analyses.rest import rest_configuration
+from tensegrity_opt.errors import InvalidParameterError
+from tensegrity_opt.serialize import number, numbers
+
+from . import schemas as s
+from .compute import build_manipulator
+from .pool import SolverPool
+from .responses import render_json
+
+__all__ = ["Session", "TrackSession", "PreloadsSession", "InverseSession", "open_session", "StreamSlots",
+           "step_task", "SESSIONS"]
+
+
+def _max_change(a: np.ndarray, b: np.ndarray) -> float:
+    return float(np.max(np.abs(np.asarray(a) - np.asarray(b)))) if len(a) else 0.0
+
+
+class Session:
+    """One stream's state: ``opened()`` (the answer to the open), ``step(msg)`` (the answer to a step)."""
+
+    mode = ""
+
+    def __init__(self, m: to.Manipulator) -> None:
+        self.m = m
+
+    def opened(self) -> dict[str, Any]:
+        return {"n": self.m.n}
+
+    def step(self, msg: Any) -> dict[str, Any]:  # pragma: no cover - every mode has its own
+        raise NotImplementedError
+
+
+class TrackSession(Session):
+    mode = "track"
+
+    def __init__(self, m: to.Manipulator, req: s.TrackOpen) -> None:
+        super().__init__(m)
+        self.tracker = Tracker(m, jump=req.jump)
+
+    def step(self, msg: s.TrackStep) -> dict[str, Any]:
+        tr = self.tracker
+        prev, jumps = tr.current, tr.jumps
+        eq = tr.solve(msg.dx, msg.dy)
+        events: list[dict[str, Any]] = []
+        if tr.jumps != jumps and prev is not None:
+            events.append({"kind": "jump", "distance": number(_max_change(eq.q, prev.q)),
+                           "q_before": numbers(prev.q), "energy_before": number(prev.energy),
+                           "stable_before": bool(prev.stable)})
+        return {**eq.to_dict(), "events": events, "jumps": tr.jumps}
+
+
+class PreloadsSession(Session):
+    mode = "preloads"
+
+    def __init__(self, m: to.Manipulator, req: s.PreloadsOpen) -> None:
+        super().__init__(m)
+        self.load = np.asarray(req.load, dtype=float)
+        self.snap = float(req.snap_distance)
+        if req.start is not None:
+            if len(req.start) != m.n:
+                raise InvalidParameterError(f"start must be {m.n} joint angles, got {len(req.start)}", field="start")
+            self.q = np.asarray(req.start, dtype=float)
+        else:       # as PreloadController's default start: the rest configuration, then the load applied
+            rest = rest_configuration(m)
+            self.q = rest.q.copy() if not np.any(self.load) else \
+                to.solve_equilibrium_under_force(m, *self.load, q0=rest.q).q.copy()
+
+    def opened(self) -> dict[str, Any]:
+        return {"n": self.m.n, "q": numbers(self.q), "load": numbers(self.load)}
+
+    def manipulator(self, rest_lengths: list[list[float]]) -> to.Manipulator:
+        """The chain with the commanded rest lengths (``[L1_0, L2_0]`` per segment)."""
+        n = self.m.n
+        if len(rest_lengths) != n:
+            raise InvalidParameterError(f"rest_lengths must be {n} pairs [L1_0, L2_0], got {len(rest_lengths)}",
+                                        field="rest_lengths")
+        segments = []
+        for i, (seg, (l1, l2)) in enumerate(zip(self.m.segments, rest_lengths)):
+            try:
+                segments.append(seg.replace(L0=(float(l1), float(l2))))
+            except InvalidParameterError as exc:
+                raise InvalidParameterError(exc.message, field=f"rest_lengths[{i}]") from None
+        return to.Manipulator(segments)
+
+    def step(self, msg: s.PreloadsStep) -> dict[str, Any]:
+        m = self.manipulator(msg.rest_lengths)
+        F = self.load if msg.load is None else np.asarray(msg.load, dtype=float)
+        eq = to.solve_equilibrium_under_force(m, float(F[0]), float(F[1]), q0=self.q)
+        distance = _max_change(eq.q, self.q)
+        events: list[dict[str, Any]] = []
+        if distance > self.snap or not eq.stable:
+            events.append({"kind": "snap", "cause": "unstable" if not eq.stable else "distance",
+                           "distance": number(distance), "q_before": numbers(self.q)})
+        self.q = eq.q.copy()
+        return {**eq.to_dict(), "rest_lengths": [numbers(p) for p in msg.rest_lengths], "load": numbers(F),
+                "events": events}
+
+
+class InverseSession(Session):
+    mode = "inverse"
+
+    def __init__(self, m: to.Manipulator, req: s.InverseOpen) -> None:
+        super().__init__(m)
+        self.controller = PreloadController(
+            m, req.start, load=tuple(req.load), bounds=None if req.bounds is None else tuple(req.bounds),
+            rate_limit=req.rate_limit, margin=req.margin, objective=req.objective, weights=req.weights)
+
+    def opened(self) -> dict[str, Any]:
+        c = self.controller
+        return {"n": self.m.n, "q": numbers(c.q), "rest_lengths": [numbers(p) for p in c.ell.reshape(c.n, 2)],
+                "load": numbers(c.load)}
+
+    def step(self, msg: s.InverseStep) -> dict[str, Any]:
+        return self.controller.step(msg.target, load=msg.load, end_angle=msg.end_angle).to_dict()
+
+
+#: The session class of each mode.
+SESSIONS: dict[str, type[Session]] = {"track": TrackSession, "preloads": PreloadsSession,
+                                      "inverse": InverseSession}
+
+
+def open_session(req: Any) -> tuple[Session, dict[str, Any]]:
+    """The session an ``open`` message asks for and its ``opened`` fields (runs in the stream's thread:
+    the preloads and inverse modes solve their start configuration)."""
+    session = SESSIONS[req.mode](build_manipulator(req.manipulator), req)
+    return session, session.opened()
+
+
+def step_task(session: Session, msg: Any, seq: int) -> bytes:
+    """One step's ``result`` message, rendered (in the stream's thread)."""
+    return render_json({"type": "result", "seq": seq, "mode": session.mode, **session.step(msg)})
+
+
+class StreamSlots:
+    """At most ``size`` streams at once, each holding one solver thread (a one-thread ``SolverPool``) for
+    its lifetime. Threads are made on demand and kept (their CasADi instances stay built); a free slot
+    is reused most-recent first. Used from the event loop only."""
+
+    def __init__(self, size: int) -> None:
+        self.size = size
+        self._all: list[SolverPool] = []
+        self._free: list[SolverPool] = []
+
+    @property
+    def in_use(self) -> int:
+        return len(self._all) - len(self._free)
+
+    def acquire(self) -> SolverPool | None:
+        """A slot, or ``None`` when ``size`` streams hold one. An idle thread first: a stream that closed
+        after a step past its time limit may have left its thread still finishing that call (a CasADi call
+        is not cut), and a new stream must not wait behind it."""
+        for i in range(len(self._free) - 1, -1, -1):
+            if self._free[i].in_flight == 0:
+                return self._free.pop(i)
+        if len(self._all) >= self.size:
+            return self._free.pop() if self._free else None
+        # one worker, one queued call: a call past its time limit may still be finishing when the next
+        # step arrives; that step waits behind it on the same thread (a stream's state is never used by
+        # two threads at once)
+        pool = SolverPool(1, 1, name=f"stream-{len(self._all)}")
+        pool.start()
+        self._all.append(pool)
+        return pool
+
+    def release(self, pool: SolverPool) -> None:
+        self._free.append(pool)
+
+    def shutdown(self, timeout: float = 0.5) -> None:
+        for pool in self._all:
+            pool.shutdown(wait=False)
+        for pool in self._all:
+            pool.shutdown(wait=True, timeout=timeout / max(len(self._all), 1))
