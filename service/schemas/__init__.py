@@ -14,7 +14,8 @@ segment inputs, ranges, the tip force, the solver report, the error body; it imp
 siblings), :mod:`.equilibrium`, :mod:`.buckling`, :mod:`.curves`, :mod:`.stiffness`, :mod:`.segment`,
 :mod:`.landscape`, :mod:`.batch`, :mod:`.design`, :mod:`.paths` (rest configurations, branches, bifurcation
 diagrams, limit loads, stability boundaries), :mod:`.atlas` (the workspace stability atlas), :mod:`.ops` (health, readiness, version), :mod:`.plots`
-(the figure requests) and :mod:`.jobs` (the sweep jobs). Every public model is re-exported here, so
+(the figure requests), :mod:`.jobs` (the sweep jobs) and :mod:`.control` (rest-length plans, simulation,
+force estimates). Every public model is re-exported here, so
 ``from service import schemas as s; s.EquilibriumRequest`` names any of them.
 """
 
@@ -61,6 +62,19 @@ from .common import (
     StiffPair,
     UniformManipulatorIn,
     integral,
+)
+from .control import (
+    BISTABLE_CHAIN,
+    PLAN_REQUEST_EXAMPLE,
+    SIMULATION_REQUEST_EXAMPLE,
+    ForceEstimateOut,
+    ForceEstimateRequest,
+    PlanOut,
+    PlanRequest,
+    RestLengthBoundsIn,
+    SimulationEventOut,
+    SimulationOut,
+    SimulationRequest,
 )
 from .curves import (
     BranchOut,
@@ -147,7 +161,9 @@ from .plots import (
     PlotLandscapeRequest,
     PlotLimitLoadRequest,
     PlotMapRequest,
+    PlotPlanRequest,
     PlotShapesRequest,
+    PlotSimulationRequest,
     PlotTorqueRequest,
 )
 from .segment import SegmentTorqueOut, SegmentTorqueRequest
@@ -163,6 +179,7 @@ __all__ = [
     "AtlasRequest",
     "AtlasTargetOut",
     "AtlasUnresolvedOut",
+    "BISTABLE_CHAIN",
     "BatchEquilibriumRequest",
     "BatchItem",
     "BatchOut",
@@ -200,6 +217,8 @@ __all__ = [
     "ForceDeflectionOut",
     "ForceDeflectionRequest",
     "ForceEquilibriumRequest",
+    "ForceEstimateOut",
+    "ForceEstimateRequest",
     "ForceValue",
     "GuidedControlIn",
     "Health",
@@ -236,6 +255,9 @@ __all__ = [
     "MapValuesRange",
     "ModeOut",
     "PAPER_CHAIN",
+    "PLAN_REQUEST_EXAMPLE",
+    "PlanOut",
+    "PlanRequest",
     "PlotAngleRange",
     "PlotAtlasGridRequest",
     "PlotAtlasJobRequest",
@@ -246,7 +268,9 @@ __all__ = [
     "PlotLandscapeRequest",
     "PlotLimitLoadRequest",
     "PlotMapRequest",
+    "PlotPlanRequest",
     "PlotShapesRequest",
+    "PlotSimulationRequest",
     "PlotTorqueRequest",
     "Point",
     "Positive",
@@ -257,11 +281,16 @@ __all__ = [
     "RangeIn",
     "Ready",
     "RestConfigurationsRequest",
+    "RestLengthBoundsIn",
+    "SIMULATION_REQUEST_EXAMPLE",
     "SegmentIn",
     "SegmentOut",
     "SegmentTorqueOut",
     "SegmentTorqueRequest",
     "SegmentedManipulatorIn",
+    "SimulationEventOut",
+    "SimulationOut",
+    "SimulationRequest",
     "SolverInfo",
     "StabilityBoundaryOut",
     "StabilityBoundaryRequest",
