@@ -1324,6 +1324,9 @@ def plot_preload_plan(plan: Any, m: Manipulator | None = None, *, margin: float 
     ax_r.set_ylabel("rest length (length)")
     ax_m.set_ylabel(f"margin ({MARGIN_UNIT})")
     ax_m.set_xlabel("step $k$")
+    from matplotlib.ticker import MaxNLocator
+
+    ax_m.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax_r.tick_params(labelbottom=False)
     ax_t.set_xlabel("tip $x$ (length)")
     ax_t.set_ylabel("tip $y$ (length)")
