@@ -136,7 +136,8 @@ class PlanOut(BaseModel):
     margin: list[float | None] = Field(description="stability margin per step (torque / rad; null: infeasible)")
     feasible: list[bool] = Field(description="rest lengths meeting every requirement were found (false: the "
                                              "controller stays where it was, q and tip the best reachable pose)")
-    verified: list[bool] = Field(description="the forward solve from the previous step lands on the target, stable")
+    verified: list[bool] = Field(description="the forward solve from the previous step lands on the target, stable "
+                                             "(with `verify: false` no solve runs and this repeats `feasible`)")
     method: list[Literal["newton", "ipopt", "none"]] = Field(description="how each step was solved")
     targets: list[list[float]] = Field(description="the targets of the steps done")
 
