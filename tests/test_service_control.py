@@ -305,3 +305,22 @@ def test_the_new_operations_are_documented(client):
     for path in ("/v1/control/plan", "/v1/control/simulate", "/v1/control/force-estimate"):
         for name, ex in doc["paths"][path]["post"]["requestBody"]["content"]["application/json"]["examples"].items():
             assert client.post(path, json=ex["value"]).status_code == 200, (path, name)
+
+
+def test_the_plan_process_carries_large_calls_and_replies_on_uvloop():
+    """``tensegrity-opt serve`` runs on uvloop, whose ``add_reader`` makes the solver process's pipe non-blocking: a
+    plan of many targets (the call) or its figure (the reply) over the socket buffer once failed half-way
+    (``BlockingIOError``: 503 ``overloaded``). Both ways, 3 MB."""
+    uvloop = pytest.importorskip("uvloop")
+    from service.heavy import ProcessLane
+
+    async def main():
+        lane = ProcessLane(1, 2)
+        lane.start()
+        try:
+            assert len(await lane.run(bytes, 3_000_000, timeout=60)) == 3_000_000
+            assert await lane.run(len, b"x" * 3_000_000, timeout=60) == 3_000_000
+        finally:
+            lane.close()
+
+    uvloop.run(main())

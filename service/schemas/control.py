@@ -183,7 +183,7 @@ def _load_cycle(amplitude: float, steps: int) -> list[list[float]]:
 
 #: A load cycle on three bistable segments (a = 0.5): a snap up and a snap down (hysteresis).
 BISTABLE_CHAIN = {"n": 3, "a": 0.5, "b": 1.0, "k": 1.0, "L0": 1.0}
-SIMULATION_REQUEST_EXAMPLE = {"manipulator": BISTABLE_CHAIN, "loads": _load_cycle(0.3, 25)}
+SIMULATION_REQUEST_EXAMPLE = {"manipulator": BISTABLE_CHAIN, "loads": _load_cycle(0.3, 13)}
 
 
 class SimulationRequest(_SimulationFields):
