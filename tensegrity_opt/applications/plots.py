@@ -1406,7 +1406,7 @@ def plot_simulation(sim: Any, m: Manipulator | None = None, *, component: int | 
     chain's parameters.
 
     Artists (``gid``): ``"path"`` (the line, NaN-broken at the snaps), ``"samples"`` (the states at the samples
-    done), ``"start"``, ``"end"`` (the last sample done), ``"snap-<j>"`` (the ``j``-th snap's arrow, an annotation), ``"snap-folds"``,
+    done), ``"start"``, ``"end"`` (the last sample done), ``"snap-<j>"`` (the ``j``-th snap's arrow, a ``FancyArrowPatch``), ``"snap-folds"``,
     ``"snap-landings"`` (the points of every snap with a landing, in time order), ``"joint-limit"``.
     """
     from ..analyses.simulation import Simulation
@@ -1416,6 +1416,7 @@ def plot_simulation(sim: Any, m: Manipulator | None = None, *, component: int | 
     if component not in (None, 0, 1):
         raise InvalidParameterError(f"component must be 0 (x), 1 (y) or None, got {component!r}", field="component")
     from matplotlib.lines import Line2D
+    from matplotlib.patches import FancyArrowPatch
 
     L = float(sim.straight_length)
     k = len(sim)
@@ -1476,10 +1477,10 @@ def plot_simulation(sim: Any, m: Manipulator | None = None, *, component: int | 
         a, b = at_event(e, False), at_event(e, True)
         fold_pts.append(a)
         land_pts.append(b)
-        arr = ax.annotate("", xy=b, xytext=a, zorder=5,
-                          arrowprops={"arrowstyle": "-|>", "shrinkA": 3.0, "shrinkB": 3.0, "mutation_scale": 14,
-                                      **CONTROL_STYLES["snap"]})
+        arr = FancyArrowPatch(a, b, arrowstyle="-|>", shrinkA=3.0, shrinkB=3.0, mutation_scale=14, zorder=5,
+                              **CONTROL_STYLES["snap"])
         arr.set_gid(f"snap-{j}")
+        ax.add_patch(arr)
     style_fold = {k_: v for k_, v in CONTROL_STYLES["fold"].items()}
     F = np.array(fold_pts, dtype=float).reshape(-1, 2)
     G = np.array(land_pts, dtype=float).reshape(-1, 2)
