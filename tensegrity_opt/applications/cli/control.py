@@ -230,13 +230,13 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
                      help="NUM tip positions evenly spaced from (X0, Y0) to (X1, Y1) (length)")
     g = sp.add_argument_group("the plan")
     g.add_argument("--load", type=finite_float, nargs=2, default=None, metavar=("FX", "FY"),
-                   help="the dead tip load of every step (force; default: none, or the file's)")
+                   help="the dead tip load of every step (force; None: none, or the file's)")
     g.add_argument("--end-angle", type=finite_float, default=None,
-                   help="the last link's absolute angle at every step (rad; default: free)")
+                   help="the last link's absolute angle at every step (rad; None: free)")
     g.add_argument("--bounds", type=_positive_float, nargs=2, default=None, metavar=("LO", "HI"),
-                   help="actuator bounds on every rest length (length; default: 0.1 b_min, 4 b_max)")
+                   help="actuator bounds on every rest length (length; None: 0.1 b_min, 4 b_max)")
     g.add_argument("--rate-limit", type=_positive_float, default=None,
-                   help="largest change of each rest length per step (length; default: none)")
+                   help="largest change of each rest length per step (length; None: no limit)")
     g.add_argument("--margin", type=_non_negative_float, default=1e-3,
                    help="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip "
                         "(torque / rad)")
@@ -245,7 +245,7 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
                         "margin: largest margin; energy: least spring energy (IPOPT)")
     g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
                    help="the start configuration (rad, n angles) with the chain's rest lengths under the first "
-                        "load; default: reached from the least-energy rest configuration")
+                        "load; None: reached from the least-energy rest configuration")
     g.add_argument("--no-verify", action="store_true",
                    help="skip the forward quasi-static solve that verifies each step")
     g.add_argument("--timeout", type=_positive_float, default=None,
@@ -258,19 +258,19 @@ def add_simulate_options(sp: argparse.ArgumentParser) -> None:
                    help="a dead tip load along --load-direction from 0 up to F_MAX, down to -F_MAX and back to 0 "
                         "(force; tip free)")
     g.add_argument("--steps", type=_at_least_two, default=None,
-                   help="samples of the load cycle (default: 121, or the preloads' count)")
+                   help="samples of the load cycle (None: 121, or the preloads' count)")
     g.add_argument("--load-direction", type=finite_float, nargs=2, default=[0.0, 1.0], metavar=("DX", "DY"),
                    help="direction of the load cycle (normalised)")
     g.add_argument("--preloads", metavar="FILE", default=None,
                    help="rest lengths per sample: JSON (K, n, 2) or CSV rows of 2n numbers (L1_0, L2_0 per segment; "
-                        "length); default: the chain's own")
+                        "length); None: the chain's own")
     g.add_argument("--tip", choices=("free", "held"), default="free",
                    help="free: loaded by the load cycle (or unloaded); held: at --targets")
     g.add_argument("--targets", metavar="FILE", default=None,
                    help="held tip: the deflections per sample, JSON (K, 2) or CSV rows dx, dy (length)")
     g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
                    help="the state at sample 0 (rad, n angles; a stable equilibrium under the first inputs); "
-                        "default: the least-energy one")
+                        "None: the least-energy one")
     g.add_argument("--perturbation", type=_positive_float, default=1e-4,
                    help="a snap's descent starts this far from the fold along its null vector (rad, < 0.1)")
     g.add_argument("--timeout", type=_positive_float, default=None,
@@ -389,7 +389,7 @@ def add_control_parsers(subparsers: Any) -> None:
                          "in joint order")
     sp.add_argument("--sigma", type=finite_float, nargs="+", default=None, metavar="S",
                     help="angle noise: one standard deviation (rad), one per joint, or a covariance matrix row by "
-                         "row (rad^2); default: none (no statistics)")
+                         "row (rad^2); None: no noise model, no statistics")
     sp.add_argument("--measured", type=_joint_index, nargs="+", default=None, metavar="J",
-                    help="the measured joints (0-based); default: all")
+                    help="the measured joints (0-based); None: all")
     sp.set_defaults(func=_cmd_force_estimate)
