@@ -1,4 +1,4 @@
-"""Killable solver processes for the heavy request classes (``/v1/design/*``).
+"""Killable solver processes for the heavy request classes (``/v1/design/*``, ``/v1/control/plan``).
 
 Why processes for these
 -----------------------
