@@ -12,6 +12,7 @@ variable                               default    meaning
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_MAX_PATH_POINTS``         5000       most points of one branch (``max_points`` of the path endpoints)
 ``TENSEGRITY_MAX_ATLAS_TARGETS``       400        most targets of ``/v1/atlas`` (``atlas_too_large`` above: a job)
+``TENSEGRITY_MAX_TRAJECTORY_STEPS``    2000       most steps of ``/v1/control/plan`` and ``/v1/control/simulate`` (``too_many_steps``)
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
 ``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: none, the solver threads)
@@ -77,6 +78,9 @@ HARD_MAX_PATH_POINTS = 5000
 #: are jobs (``/v1/jobs`` with ``analysis: atlas``). The schema bounds each axis by it; the product is the
 #: setting's to check (JSON Schema cannot bound a product).
 HARD_MAX_ATLAS_TARGETS = 400
+#: Most steps (samples) of one trajectory of the control endpoints (``/v1/control/plan``: targets,
+#: ``/v1/control/simulate``: preloads, loads, targets; their figures).
+HARD_MAX_TRAJECTORY_STEPS = 2000
 
 
 def _split(value: Any) -> Any:
@@ -112,6 +116,10 @@ class Settings(BaseSettings):
         HARD_MAX_ATLAS_TARGETS, ge=1, le=HARD_MAX_ATLAS_TARGETS,
         description="most targets (dx values x dy values) of one /v1/atlas or /v1/plots/atlas request (above: 422 "
                     "atlas_too_large; larger grids run as a job, POST /v1/jobs with analysis atlas)")
+    max_trajectory_steps: int = Field(
+        HARD_MAX_TRAJECTORY_STEPS, ge=1, le=HARD_MAX_TRAJECTORY_STEPS,
+        description="most steps of one trajectory of /v1/control/plan (targets) and /v1/control/simulate "
+                    "(preloads, loads, targets) and their figures (above: 422 too_many_steps naming the field)")
     workers: int = Field(2, ge=1, le=64, description="solver worker threads")
     inline_max_segments: int = Field(
         8, ge=0, le=64,

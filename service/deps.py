@@ -22,7 +22,8 @@ from .pool import SolveTimeout
 from .responses import JSONBody, ResponseTooLarge, render_task
 
 __all__ = ["api_key_header", "require_api_key", "api_key_valid", "get_settings_dep", "check_manipulator", "check_batch",
-           "check_curve_size", "check_path_points", "check_atlas_targets", "path_deadline", "solve", "solve_heavy",
+           "check_curve_size", "check_path_points", "check_atlas_targets", "check_trajectory_steps", "path_deadline",
+           "solve", "solve_heavy",
            "is_heavy"]
 
 api_key_header = APIKeyHeader(
@@ -127,6 +128,18 @@ def check_atlas_targets(req: Any, settings: Settings) -> None:
                                                 "max_atlas_targets": settings.max_atlas_targets})
 
 
+def check_trajectory_steps(settings: Settings, **series: Any) -> None:
+    """Refuse a trajectory of more steps than ``settings.max_trajectory_steps`` (422 ``too_many_steps`` naming the
+    first series over it): ``series`` are the request's per-step lists by field name (``None``: not given)."""
+    limit = settings.max_trajectory_steps
+    for field, values in series.items():
+        if values is not None and len(values) > limit:
+            raise ServiceError(422, "too_many_steps",
+                               f"{field} holds {len(values)} steps; this server computes at most {limit} steps of a "
+                               "trajectory in one request", field=field,
+                               details={"steps": len(values), "max_trajectory_steps": limit})
+
+
 #: Seconds of the time limit a path computation leaves for its answer (rendering, the hand-off back):
 #: ``max(PATH_MARGIN, PATH_MARGIN_FRACTION * solve_timeout)``, at most half the limit.
 PATH_MARGIN = 0.5
@@ -198,16 +211,26 @@ def is_heavy(settings: Settings, m: Any, *, branch_all: bool = False, homotopy: 
     return branch_all or homotopy or segment_count(m) > settings.heavy_segments
 
 
-async def solve_heavy(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext) -> Any:
-    """:func:`solve` for the heavy request classes (``/v1/design/*``): in a killable solver process
-    (:mod:`service.heavy`) under the time limit, so a 504 frees its capacity and these requests never
-    hold a solver thread; in the solver threads when ``heavy_workers`` is 0."""
+async def solve_heavy(request: Request, fn: Callable[..., Any], *args: Any, ctx: FieldContext,
+                      size_field: str | None = None) -> Any:
+    """:func:`solve` for the heavy request classes (``/v1/design/*``, ``/v1/control/plan``): in a killable solver
+    process (:mod:`service.heavy`) under the time limit, so a 504 frees its capacity and these requests never
+    hold a solver thread; in the solver threads when ``heavy_workers`` is 0. With ``size_field`` the result is
+    rendered where it was computed (:func:`service.responses.render_task`, within ``max_response_bytes``,
+    ``response_too_large`` naming ``size_field``) and answered as those bytes (a figure's bytes come back as
+    they are either way)."""
     heavy = request.app.state.heavy
     if heavy is None:
-        return await solve(request, fn, *args, ctx=ctx, heavy=True)
+        return await solve(request, fn, *args, ctx=ctx, heavy=True, size_field=size_field)
     request.state.field_context = ctx
     settings: Settings = request.app.state.settings
-    return await heavy.run(fn, *args, timeout=settings.solve_timeout)
+    if size_field is None:
+        return await heavy.run(fn, *args, timeout=settings.solve_timeout)
+    body = await heavy.run(render_task, fn, args, settings.max_response_bytes, size_field,
+                           timeout=settings.solve_timeout)
+    if isinstance(body, JSONBody):
+        return Response(bytes(body), media_type="application/json")
+    return body
 
 
 def _pick_lane(lanes: list[SolverLane]) -> SolverLane | None:

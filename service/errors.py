@@ -17,6 +17,8 @@ numerical failure outside the library's own checks     500     ``numerical_failu
                                                                inputs first, so none is known)
 chain or batch over the configured limit               422     ``too_many_segments`` / ``batch_too_large``
 branch longer than the configured limit                422     ``too_many_points`` (``field``: ``max_points``)
+control trajectory over ``max_trajectory_steps``       422     ``too_many_steps`` (``field``: ``targets``, ``loads``,
+                                                               ``end_angles`` or ``preloads``)
 inline atlas over ``max_atlas_targets`` targets        422     ``atlas_too_large`` (``field``: ``dx``; a job then)
 atlas of a job that is not done                        409     ``job_not_done`` (``details.status``)
 answer over ``max_response_bytes`` (estimated before   422     ``response_too_large`` (``field``: the input

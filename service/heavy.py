@@ -1,4 +1,4 @@
-"""Killable solver processes for the heavy request classes (``/v1/design/*``).
+"""Killable solver processes for the heavy request classes (``/v1/design/*``, ``/v1/control/plan``).
 
 Why processes for these
 -----------------------
@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import os
 import socket
 import subprocess
 import sys
@@ -65,6 +66,22 @@ def _child_main(conn: Any) -> None:
             conn.send(reply)
         except Exception as exc:  # noqa: BLE001 - an unpicklable result or exception
             conn.send((False, UnreadableReply(f"unpicklable reply: {type(exc).__name__}: {exc}")))
+
+
+def _blocking(conn: Connection, op: Callable[..., Any], *args: Any) -> Any:
+    """``op(*args)`` (``conn.send`` / ``conn.recv``) with the descriptor in blocking mode. uvloop's ``add_reader``
+    (``tensegrity-opt serve`` runs on uvloop) makes it non-blocking, and ``Connection`` reads and writes whole frames:
+    a call or a reply over the socket buffer (a plan's targets, a figure) raised ``BlockingIOError`` half-way. The
+    child reads a call (sends its reply) in one go, so the wait here is the copy."""
+    fd = conn.fileno()
+    was = os.get_blocking(fd)
+    if not was:
+        os.set_blocking(fd, True)
+    try:
+        return op(*args)
+    finally:
+        if not was:
+            os.set_blocking(fd, False)
 
 
 class UnreadableReply(Exception):
@@ -162,7 +179,7 @@ class ProcessLane:
         child.future = fut
         try:
             self._start_reading(loop, child)
-            child.conn.send((fn, args, deadline))
+            _blocking(child.conn, child.conn.send, (fn, args, deadline))
         except (OSError, ValueError) as exc:            # the child is gone: replace it
             self._replace(child)
             raise PoolSaturated(f"the design solver process stopped ({exc})") from None
@@ -262,7 +279,7 @@ class ProcessLane:
     def _readable(self, child: _Child) -> None:
         fut = child.future
         try:
-            reply = child.conn.recv()
+            reply = _blocking(child.conn, child.conn.recv)
         except (EOFError, OSError) as exc:
             self._stop_reading(child)
             if not child.ready:                 # died while starting (cannot import?): not retried in a loop

@@ -31,13 +31,13 @@ from .middleware import BodyLimitMiddleware, MethodsMiddleware
 from .pool import SolverPool
 from .sessions import StreamSlots
 from .responses import SafeJSONResponse
-from .routes import (atlas, batch, buckling, curves, design, equilibrium, landscape, ops, paths, plots, segment,
-                     stiffness, stream, web)
+from .routes import (atlas, batch, buckling, control, curves, design, equilibrium, landscape, ops, paths, plots,
+                     segment, stiffness, stream, web)
 from .routes import jobs as jobs_routes
 
 #: Routers behind the API key (when keys are configured) and the open ones (health, version, page).
-API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, atlas, plots,
-               jobs_routes)
+API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, atlas, control,
+               plots, jobs_routes)
 OPEN_ROUTERS = (ops, web)
 #: The WebSocket routes: they check the API key themselves (a FastAPI dependency on ``Request`` does not
 #: apply to a WebSocket; the key may also come as ``?api_key=``, which browsers can send).
@@ -86,9 +86,12 @@ TAGS = [
     {"name": "atlas", "description": "The workspace stability atlas of the held tip: stable equilibria over a grid "
                                      "of deflections, where the least-energy branch switches and where stable "
                                      "branches end (large grids: a job with analysis atlas)."},
+    {"name": "control", "description": "Control: rest-length plans for tip trajectories (inverse statics per step), "
+                                       "quasi-static simulation under sampled inputs with the snaps at folds, the "
+                                       "tip force estimated from measured joint angles."},
     {"name": "plots", "description": "Figures (PNG or SVG): force-deflection curves, energy landscapes, equilibrium "
                                      "shapes, torque curves, critical-load maps, branch diagrams, limit loads, "
-                                     "stability boundaries, stability atlases."},
+                                     "stability boundaries, stability atlases, rest-length plans, simulations."},
     {"name": "jobs", "description": "Sweeps as background jobs, stored in SQLite and resumed after a restart."},
     {"name": "ops", "description": "Health, readiness, version and Prometheus metrics."},
 ]

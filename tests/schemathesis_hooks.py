@@ -5,7 +5,8 @@ what these hooks bound is the *cost* of the generated requests, not what is vali
 
 * ``map_case`` shrinks sizes inside the valid range (chains to 6 segments, 2 for the homotopy,
   curves to 21 points, grids to 21 per axis, batches to 10 targets, job sweeps to 3 values per
-  key and 3 points, inline atlases to 3 x 3 targets), so that no generated input runs into the 10 s
+  key and 3 points, inline atlases to 3 x 3 targets, the control trajectories -- plan targets, simulation
+  preloads, loads and targets -- to 4 steps), so that no generated input runs into the 10 s
   solve time limit (a 504, which ``not_a_server_error`` counts) or keeps the job runner busy for the
   rest of the run. A positive
   case stays positive; a negative case keeps its violation (only values valid for every operation
@@ -33,6 +34,11 @@ MAX_JOB_VALUES = 3
 #: The inline atlas (~0.1 s a target, its edges as much again): 3 values per axis.
 ATLAS_PATHS = ("/v1/atlas", "/v1/plots/atlas")
 MAX_ATLAS_AXIS = 3
+#: The control trajectories (a plan step: ~1 ms by Newton, up to ~0.1 s by IPOPT; a simulation step up to ~0.5 s when
+#: a wild load makes its branch long): 4 steps of each per-step list.
+CONTROL_PATHS = ("/v1/control/plan", "/v1/control/simulate", "/v1/plots/plan", "/v1/plots/simulation")
+CONTROL_SERIES = ("targets", "loads", "preloads", "end_angles")
+MAX_CONTROL_STEPS = 4
 
 
 def _small_n(v: Any, cap: int, positive: bool) -> Any:
@@ -84,6 +90,16 @@ def map_case(ctx, case):
                     case.body[key] = v[:MAX_ATLAS_AXIS]
                 elif isinstance(v, dict) and isinstance(v.get("num"), int) and v["num"] > MAX_ATLAS_AXIS:
                     case.body[key] = {**v, "num": MAX_ATLAS_AXIS}
+        if case.operation.path in CONTROL_PATHS:
+            # a sample's preloads: as many pairs as the (shrunk) chain has segments; valid either way (1..200), so
+            # shrunk in negative cases too (a sample count over the cap then stays under the body size limit)
+            v = case.body.get("preloads")
+            if isinstance(v, list):
+                case.body["preloads"] = [p[:MAX_N] if isinstance(p, list) and MAX_N < len(p) <= 200 else p for p in v]
+            for key in CONTROL_SERIES if positive else ():
+                v = case.body.get(key)
+                if isinstance(v, list) and len(v) > MAX_CONTROL_STEPS and (key != "loads" or isinstance(v[0], list)):
+                    case.body[key] = v[:MAX_CONTROL_STEPS]
     return case
 
 

@@ -45,8 +45,9 @@ def test_every_operation_is_documented():
                 ("/v1/rest-configurations", "post"), ("/v1/branch", "post"), ("/v1/bifurcation-diagram", "post"),
                 ("/v1/limit-load", "post"), ("/v1/stability-boundary", "post"),
                 ("/v1/atlas", "post"),
+                ("/v1/control/plan", "post"), ("/v1/control/simulate", "post"), ("/v1/control/force-estimate", "post"),
                 *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map", "branch",
-                                                             "limit-load", "boundary", "atlas")),
+                                                             "limit-load", "boundary", "atlas", "plan", "simulation")),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
                 ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/cancel", "post"),
                 ("/v1/jobs/{job_id}/results", "get"), ("/v1/jobs/{job_id}/atlas", "get")}

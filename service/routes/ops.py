@@ -53,7 +53,7 @@ async def readyz(request: Request) -> Any:
                    "workers": 2, "queue_size": 64, "inline_max_segments": 8, "inline_processes": 1,
                    "max_body_bytes": 1048576, "max_response_bytes": 8388608,
                    "max_curve_points": s.MAX_CURVE_POINTS, "max_path_points": 5000, "max_atlas_targets": 400,
-                   "max_grid": s.MAX_GRID,
+                   "max_trajectory_steps": 2000, "max_grid": s.MAX_GRID,
                    "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
                    "stream_idle_timeout": 60.0},
         "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
@@ -68,7 +68,7 @@ async def version(request: Request) -> Any:
                        "inline_processes": len(request.app.state.lanes),
                        "max_body_bytes": st.max_body_bytes, "max_response_bytes": st.max_response_bytes,
                        "max_curve_points": s.MAX_CURVE_POINTS, "max_path_points": st.max_path_points,
-                       "max_atlas_targets": st.max_atlas_targets,
+                       "max_atlas_targets": st.max_atlas_targets, "max_trajectory_steps": st.max_trajectory_steps,
                        "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
                        "max_stream_connections": st.max_stream_connections,
                        "stream_idle_timeout": st.stream_idle_timeout},

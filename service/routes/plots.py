@@ -1,5 +1,5 @@
-"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,boundary,atlas}`` answering PNG
-or SVG.
+"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,boundary,atlas,plan,simulation}``
+answering PNG or SVG.
 
 Each route validates its request, then draws the figure in the solver pool (the library call
 and matplotlib's rendering are both CPU-bound) and answers the bytes: ``image/png`` by
@@ -23,19 +23,22 @@ from .. import examples as ex
 from ..compute import (BRANCH_ALIASES, LIMIT_LOAD_ALIASES, build_manipulator, build_segment, deflections, find_atlas,
                        find_job_atlas, find_limit_load, find_stability_boundary, trace_branches)
 from ..config import Settings
+from ..control_compute import find_plan, find_simulation
 from ..deps import (check_atlas_targets, check_homotopy, check_manipulator, check_path_points, get_settings_dep,
-                    is_heavy, path_deadline, solve)
+                    is_heavy, path_deadline, solve, solve_heavy)
 from ..errors import FieldContext
 from ..schemas import ErrorOut
 from ..schemas import plots as ps
 from ..schemas.atlas import ATLAS_REQUEST_EXAMPLE
+from ..schemas.control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE
 from . import SOLVE_ERRORS, error_responses
 from .atlas import ATLAS_LIMITS
+from .control import PLAN_LIMITS, SIMULATION_LIMITS, check_plan, check_simulation
 from .jobs import Owner, Runner, finished_atlas_job
 
 __all__ = ["router", "negotiate", "plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task",
            "plot_map_task", "plot_branch_task", "plot_limit_load_task", "plot_boundary_task", "plot_atlas_task",
-           "plot_job_atlas_task"]
+           "plot_job_atlas_task", "plot_plan_task", "plot_simulation_task"]
 
 router = APIRouter(prefix="/v1/plots", tags=["plots"])
 
@@ -183,6 +186,20 @@ def plot_job_atlas_task(spec: dict[str, Any], rows: list[dict[str, Any]], req: p
 
     at = find_job_atlas(spec, rows, req.edges, deadline)
     return _atlas_image(at, Manipulator.from_dict(spec["manipulator"]), fmt, req.dpi)
+
+
+def plot_plan_task(req: ps.PlotPlanRequest, fmt: str, deadline: float) -> bytes:
+    from tensegrity_opt.applications import plots
+
+    fig = plots.plot_preload_plan(find_plan(req, deadline), build_manipulator(req.manipulator), margin=req.margin)
+    return _image(fig, fmt, req.dpi)
+
+
+def plot_simulation_task(req: ps.PlotSimulationRequest, fmt: str, deadline: float) -> bytes:
+    from tensegrity_opt.applications import plots
+
+    fig = plots.plot_simulation(find_simulation(req, deadline), build_manipulator(req.manipulator))
+    return _image(fig, fmt, req.dpi)
 
 
 # ---------------------------------------------------------------------------- documentation
@@ -437,3 +454,58 @@ async def plot_atlas(
         check_atlas_targets(req, settings)
         data = await solve(request, plot_atlas_task, req, fmt, path_deadline(settings), ctx=ctx, heavy=True)
     return _reply(data, fmt, "atlas")
+
+
+_PLAN = ex.PAPER_CHAIN
+
+
+@router.post(
+    "/plan", operation_id="plot_plan", response_class=Response, response_model=None,
+    summary="Figure: a rest-length plan, per step the rest lengths, the margin and the tip path with the targets",
+    description="The plan of `/v1/control/plan` (the same body, computed for the figure): the rest lengths of every "
+                "spring per step (spring 1 solid, spring 2 dashed, one colour per segment), the stability margin "
+                "per step with the required one dotted, and the tip path with the targets; infeasible steps are "
+                "shaded and their best reachable tips marked, the legend below the panels. " + PLAN_LIMITS + " "
+                + _FORMATS,
+    responses=image_responses("too_many_steps"))
+async def plot_plan(
+    request: Request,
+    req: Annotated[ps.PlotPlanRequest, Body(openapi_examples={
+        "arc": {"summary": "the paper's chain, the tip along a short arc under a small load",
+                "value": PLAN_REQUEST_EXAMPLE},
+        "rate_limited": {"summary": "a bending arc, its third target out of reach of the rate limit, as SVG", "value": {
+            "manipulator": _PLAN, "targets": [[7.997, 0.2], [7.986, 0.4], [7.369, 1.399], [7.945, 0.797],
+                                                 [7.914, 0.994]],
+            "rate_limit": 0.05, "margin": 0.3, "format": "svg"}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Response:
+    ctx = check_plan(req, settings)
+    fmt = negotiate(req.format, request.headers.get("accept"))
+    return _reply(await solve_heavy(request, plot_plan_task, req, fmt, path_deadline(settings), ctx=ctx), fmt,
+                  "plan")
+
+
+@router.post(
+    "/simulation", operation_id="plot_simulation", response_class=Response, response_model=None,
+    summary="Figure: the hysteresis loop of a quasi-static simulation, the snaps as arrows from fold to landing",
+    description="The simulation of `/v1/control/simulate` (the same body, computed for the figure): the driving "
+                "input against the tip's response sample by sample (a free tip under varying loads: the load "
+                "component that varies most against the deflection along it; varying preloads: the preload "
+                "parameter `p = d . (L0 - L0(0))` against the deflection that varies most; a held tip: the holding "
+                "force against the held deflection), each snap an arrow from its fold to its landing, a joint-limit "
+                "end marked, the legend beside the axes. " + SIMULATION_LIMITS + " " + _FORMATS,
+    responses=image_responses("too_many_steps", "continuation_too_long", "bad_start", "unreachable_target"))
+async def plot_simulation(
+    request: Request,
+    req: Annotated[ps.PlotSimulationRequest, Body(openapi_examples={
+        "load_cycle": {"summary": "a load cycle along y on three bistable segments: two snaps (hysteresis)",
+                       "value": SIMULATION_REQUEST_EXAMPLE},
+        "held": {"summary": "the tip of the paper's chain held and pushed in along x, as SVG", "value": {
+            "manipulator": _PLAN, "tip": "held", "targets": [[0.1, 0.0], [0.3, 0.0], [0.5, 0.0], [0.7, 0.0]],
+            "format": "svg"}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Response:
+    ctx = check_simulation(req, settings)
+    fmt = negotiate(req.format, request.headers.get("accept"))
+    return _reply(await solve(request, plot_simulation_task, req, fmt, path_deadline(settings), ctx=ctx, heavy=True),
+                  fmt, "simulation")

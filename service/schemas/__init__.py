@@ -14,7 +14,8 @@ segment inputs, ranges, the tip force, the solver report, the error body; it imp
 siblings), :mod:`.equilibrium`, :mod:`.buckling`, :mod:`.curves`, :mod:`.stiffness`, :mod:`.segment`,
 :mod:`.landscape`, :mod:`.batch`, :mod:`.design`, :mod:`.stream` (the control stream's messages), :mod:`.paths` (rest configurations, branches, bifurcation
 diagrams, limit loads, stability boundaries), :mod:`.atlas` (the workspace stability atlas), :mod:`.ops` (health, readiness, version), :mod:`.plots`
-(the figure requests) and :mod:`.jobs` (the sweep jobs). Every public model is re-exported here, so
+(the figure requests), :mod:`.jobs` (the sweep jobs) and :mod:`.control` (rest-length plans, simulation,
+force estimates). Every public model is re-exported here, so
 ``from service import schemas as s; s.EquilibriumRequest`` names any of them.
 """
 
@@ -61,6 +62,19 @@ from .common import (
     StiffPair,
     UniformManipulatorIn,
     integral,
+)
+from .control import (
+    BISTABLE_CHAIN,
+    PLAN_REQUEST_EXAMPLE,
+    SIMULATION_REQUEST_EXAMPLE,
+    ForceEstimateOut,
+    ForceEstimateRequest,
+    PlanOut,
+    PlanRequest,
+    RestLengthBoundsIn,
+    SimulationEventOut,
+    SimulationOut,
+    SimulationRequest,
 )
 from .curves import (
     BranchOut,
@@ -147,7 +161,9 @@ from .plots import (
     PlotLandscapeRequest,
     PlotLimitLoadRequest,
     PlotMapRequest,
+    PlotPlanRequest,
     PlotShapesRequest,
+    PlotSimulationRequest,
     PlotTorqueRequest,
 )
 from .segment import SegmentTorqueOut, SegmentTorqueRequest
@@ -176,6 +192,7 @@ __all__ = [
     "AtlasRequest",
     "AtlasTargetOut",
     "AtlasUnresolvedOut",
+    "BISTABLE_CHAIN",
     "BatchEquilibriumRequest",
     "BatchItem",
     "BatchOut",
@@ -214,6 +231,8 @@ __all__ = [
     "ForceDeflectionOut",
     "ForceDeflectionRequest",
     "ForceEquilibriumRequest",
+    "ForceEstimateOut",
+    "ForceEstimateRequest",
     "ForceValue",
     "GuidedControlIn",
     "Health",
@@ -255,6 +274,9 @@ __all__ = [
     "OPEN_MODELS",
     "OpenEnvelope",
     "PAPER_CHAIN",
+    "PLAN_REQUEST_EXAMPLE",
+    "PlanOut",
+    "PlanRequest",
     "PlotAngleRange",
     "PlotAtlasGridRequest",
     "PlotAtlasJobRequest",
@@ -265,7 +287,9 @@ __all__ = [
     "PlotLandscapeRequest",
     "PlotLimitLoadRequest",
     "PlotMapRequest",
+    "PlotPlanRequest",
     "PlotShapesRequest",
+    "PlotSimulationRequest",
     "PlotTorqueRequest",
     "Point",
     "Positive",
@@ -279,11 +303,16 @@ __all__ = [
     "Ready",
     "RestConfigurationsRequest",
     "STEP_MODELS",
+    "RestLengthBoundsIn",
+    "SIMULATION_REQUEST_EXAMPLE",
     "SegmentIn",
     "SegmentOut",
     "SegmentTorqueOut",
     "SegmentTorqueRequest",
     "SegmentedManipulatorIn",
+    "SimulationEventOut",
+    "SimulationOut",
+    "SimulationRequest",
     "SolverInfo",
     "StabilityBoundaryOut",
     "StabilityBoundaryRequest",

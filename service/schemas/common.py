@@ -185,8 +185,8 @@ class ErrorOut(BaseModel):
 
     code: str = Field(description="machine-readable reason, e.g. validation_error, unreachable_target, "
                                   "straight_not_equilibrium, straight_unstable, too_many_segments, "
-                                  "too_many_points, solver_failed, no_equilibrium, timeout, overloaded, body_too_large, "
-                                  "unauthorized")
+                                  "too_many_points, too_many_steps, solver_failed, no_equilibrium, timeout, "
+                                  "overloaded, body_too_large, unauthorized")
     message: str = Field(description="human-readable explanation")
     field: str | None = Field(None, description="the input to blame, when there is one")
     status: str | None = Field(None, description="solver return status(es), for solver failures")

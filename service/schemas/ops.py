@@ -34,6 +34,8 @@ class Limits(BaseModel):
     max_path_points: int = Field(description="most points per branch of the path endpoints (422 too_many_points)")
     max_atlas_targets: int = Field(description="most targets of one /v1/atlas or /v1/plots/atlas (422 "
                                                "atlas_too_large; larger grids: a job with analysis atlas)")
+    max_trajectory_steps: int = Field(description="most steps of one /v1/control/plan or /v1/control/simulate "
+                                                  "trajectory (422 too_many_steps)")
     max_grid: int
     max_torque_points: int
     max_stream_connections: int = Field(description="control streams (WebSocket /v1/control/stream) open at once; "

@@ -13,6 +13,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Fiel
 
 from . import common as s
 from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
+from .control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE, _PlanFields, _SimulationFields
 from .paths import MAX_BRANCHES, MAX_DEPTH, StabilityBoundaryRequest, _BranchFields, _LimitLoadFields
 
 #: Most points per axis of a critical-load map (each point is one eigen-solve).
@@ -195,6 +196,20 @@ class PlotBoundaryRequest(_PlotRequest, StabilityBoundaryRequest):
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": s.PAPER_CHAIN, "control": {"kind": "guided", "direction": [-1.0, 0.0]},
                       "parameter": "asymmetry", "p_min": -0.1, "p_max": 0.1}]})
+
+
+# ---------------------------------------------------------------------------- control
+class PlotPlanRequest(_PlotRequest, _PlanFields):
+    """The plan of `/v1/control/plan` computed for the figure (the same body): rest lengths, tip path, margin."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [PLAN_REQUEST_EXAMPLE]})
+
+
+class PlotSimulationRequest(_PlotRequest, _SimulationFields):
+    """The simulation of `/v1/control/simulate` computed for the figure (the same body): the hysteresis loop."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [SIMULATION_REQUEST_EXAMPLE]})
 
 
 # ---------------------------------------------------------------------------- stability atlas

@@ -1,4 +1,4 @@
-"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|atlas|plot|sweep ...``.
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|atlas|plan|simulate|force-estimate|plot|sweep ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
@@ -28,6 +28,7 @@ from ...analyses.curves import force_deflection
 from ...analyses.equilibrium import solve_equilibrium_under_force
 from ...analyses.least_energy import solve_equilibrium
 from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float, fmt_q, positive_int, run_command
+from .control import add_control_parsers
 from .paths import add_path_parsers
 from .plot import add_plot_parser
 from .sweep import add_sweep_parser
@@ -133,6 +134,7 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
                     help="measure dx, dy from the straight tip or from the rest configuration's tip (pre-bent arms)")
     sp.set_defaults(func=_cmd_curve)
     add_path_parsers(sub)
+    add_control_parsers(sub)
     add_plot_parser(sub)
     add_sweep_parser(sub)
 

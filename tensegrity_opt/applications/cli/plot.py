@@ -1,5 +1,5 @@
-"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map|branch|limit-load|boundary|atlas
-... -o fig.png|fig.svg``.
+"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map|branch|limit-load|boundary|atlas|
+plan|simulation ... -o fig.png|fig.svg``.
 
 :func:`add_plot_parser` adds the ``plot`` subcommand to the ``tensegrity-opt`` parser
 (:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
@@ -23,9 +23,12 @@ Examples::
     tensegrity-opt plot limit-load --boundary guided --start-q 0 0 0 0 -o limit.png
     tensegrity-opt plot boundary --parameter asymmetry -o boundary.png
     tensegrity-opt plot atlas --n 3 --a 0.5 --dx 0.2 1.4 7 --dy -0.6 0.6 7 -o atlas.png
+    tensegrity-opt plot plan --line 7.9 0.2 7.3 1.4 13 --margin 0.05 -o plan.png
+    tensegrity-opt plot simulation --n 3 --a 0.5 --load-cycle 0.3 --steps 121 -o loop.svg
 
 The loading-path kinds take the options of the ``branch``, ``limit-load`` and ``boundary`` commands,
-``atlas`` those of the ``atlas`` command (:mod:`.paths`).
+``atlas`` those of the ``atlas`` command (:mod:`.paths`), ``plan`` and ``simulation`` those of the ``plan`` and
+``simulate`` commands (:mod:`.control`).
 """
 
 from __future__ import annotations
@@ -40,12 +43,14 @@ import numpy as np
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
 from .common import HELP_FORMAT, add_manipulator_options, positive_int, run_command
+from .control import add_plan_options, add_simulate_options, plan_from_args, simulation_from_args
 from .paths import (add_atlas_options, add_boundary_options, add_branch_options, add_limit_load_options,
                     atlas_from_args, boundary_from_args, branches_from_args, limit_load_from_args)
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
-KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "boundary", "atlas")
+KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "boundary", "atlas", "plan",
+         "simulation")
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
                   "direction), energy, s (arclength) or q1..qn (a joint angle)")
@@ -194,6 +199,22 @@ def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
                                         "branch_ends": len(at.branch_ends)})
 
 
+def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    p = plan_from_args(args, m)
+    fig = plots.plot_preload_plan(p, m, margin=args.margin)
+    return _render(args, fig, "plan", {"steps": len(p.method), "status": p.status,
+                                       "feasible": int(np.sum(p.feasible)), "verified": int(np.sum(p.verified))})
+
+
+def _cmd_simulation(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    sim = simulation_from_args(args, m)
+    fig = plots.plot_simulation(sim, m)
+    return _render(args, fig, "simulation", {"samples": sim.steps, "done": len(sim), "status": sim.status,
+                                             "snaps": len(sim.snaps), "events": [e.kind for e in sim.events]})
+
+
 def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     """Add ``plot {curve,landscape,shapes,torque,map}`` to ``subparsers`` (``add_subparsers()``'s result).
 
@@ -202,7 +223,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     """
     sp = subparsers.add_parser(
         "plot", help="figures (PNG/SVG): force-deflection curve, energy landscape, equilibrium shapes, "
-                     "torque curves, critical-load map, loading paths, stability atlas",
+                     "torque curves, critical-load map, loading paths, stability atlas, rest-length plan, simulation",
         description="Draw a figure with matplotlib and write it to -o FILE (.png or .svg).")
     kinds = sp.add_subparsers(dest="kind", required=True, metavar="KIND")
 
@@ -278,6 +299,18 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     _common(k)
     add_atlas_options(k)
     k.set_defaults(func=_cmd_atlas)
+
+    k = kinds.add_parser("plan", formatter_class=HELP_FORMAT,
+                         help="a rest-length plan: rest lengths, margin and tip path per step, infeasible steps shaded")
+    _common(k)
+    add_plan_options(k)
+    k.set_defaults(func=_cmd_plan)
+
+    k = kinds.add_parser("simulation", formatter_class=HELP_FORMAT,
+                         help="the hysteresis loop of a quasi-static simulation, the snaps as arrows")
+    _common(k)
+    add_simulate_options(k)
+    k.set_defaults(func=_cmd_simulation)
     return sp
 
 

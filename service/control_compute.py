@@ -1,0 +1,75 @@
+"""Library calls of the control endpoints (``/v1/control/*`` and their figures) and their JSON bodies.
+
+The tasks of :mod:`service.compute`, for the control layer of the library: :func:`plan_task`
+(``plan_preloads``, run in a killable solver process like ``/v1/design/preloads``: its IPOPT fallback is
+``choose_preloads``), :func:`simulate_task` (``simulate``, in the solver threads like the path endpoints) and
+:func:`force_estimate_task` (``estimate_tip_force``). Each returns the result's own ``to_dict()``; library
+exceptions propagate unchanged and are mapped by :mod:`service.errors`. ``deadline`` is the soft
+``time.monotonic()`` deadline of :func:`service.deps.path_deadline`: the plan and the simulation stop there and
+answer the steps done (``status: "time_limit"``) instead of a 504.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+import tensegrity_opt as to
+from tensegrity_opt.analyses.preload_control import PreloadPlan, plan_preloads
+
+from .compute import _seconds_left, build_manipulator
+
+__all__ = ["PLAN_ALIASES", "SIMULATION_ALIASES", "find_plan", "plan_task", "find_simulation", "simulate_task",
+           "force_estimate_task"]
+
+#: Library field -> request path (``FieldContext.aliases``): the start is given as ``{"q": [...]}``.
+PLAN_ALIASES = (("start", "start.q"), ("q0", "start.q"))
+SIMULATION_ALIASES = (("start", "start.q"), ("q0", "start.q"))
+
+
+def _per_spring(v: Any) -> Any:
+    """A number or a list of 2n numbers, as the library takes it."""
+    return None if v is None else (np.asarray(v, dtype=float) if isinstance(v, list) else float(v))
+
+
+def find_plan(req: Any, deadline: float) -> PreloadPlan:
+    """The plan of a plan request (``/v1/control/plan``, ``/v1/plots/plan``) within the soft ``deadline``."""
+    m = build_manipulator(req.manipulator)
+    end_angles = None if req.end_angles is None else [np.nan if a is None else a for a in req.end_angles]
+    bounds = None if req.bounds is None else (_per_spring(req.bounds.lo), _per_spring(req.bounds.hi))
+    return plan_preloads(m, np.asarray(req.targets, dtype=float), None if req.loads is None else req.loads,
+                         end_angles=end_angles, bounds=bounds, rate_limit=_per_spring(req.rate_limit),
+                         margin=req.margin, objective=req.objective, weights=req.weights,
+                         start=None if req.start is None else np.asarray(req.start.q, dtype=float),
+                         verify=req.verify, timeout=_seconds_left(deadline))
+
+
+def plan_task(req: Any, deadline: float) -> dict[str, Any]:
+    return find_plan(req, deadline).to_dict()
+
+
+def find_simulation(req: Any, deadline: float) -> to.Simulation:
+    """The simulation of a simulate request (``/v1/control/simulate``, ``/v1/plots/simulation``) within the soft
+    ``deadline``."""
+    m = build_manipulator(req.manipulator)
+    return to.simulate(m, req.preloads, req.loads, tip=req.tip, targets=req.targets,
+                       start=None if req.start is None else np.asarray(req.start.q, dtype=float),
+                       perturbation=req.perturbation, timeout=_seconds_left(deadline))
+
+
+def simulate_task(req: Any, deadline: float) -> dict[str, Any]:
+    return find_simulation(req, deadline).to_dict()
+
+
+def _sigma(v: Any) -> Any:
+    return None if v is None else (np.asarray(v, dtype=float) if isinstance(v, list) else float(v))
+
+
+def force_estimate_task(req: Any) -> dict[str, Any]:
+    m = build_manipulator(req.manipulator)
+    q = np.array([np.nan if v is None else v for v in req.q_measured], dtype=float)
+    measured = None if req.measured is None else (np.asarray(req.measured, dtype=bool)
+                                                   if req.measured and isinstance(req.measured[0], bool)
+                                                   else np.asarray(req.measured, dtype=int))
+    return to.estimate_tip_force(m, q, sigma_q=_sigma(req.sigma_q), measured=measured).to_dict()

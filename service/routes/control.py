@@ -1,0 +1,156 @@
+"""Control: rest-length plans for tip trajectories, quasi-static simulation with snaps, the arm as a force sensor.
+
+``POST /v1/control/plan`` (``plan_preloads``; in a killable solver process, as ``/v1/design/preloads``: its IPOPT
+fallback is ``choose_preloads``), ``POST /v1/control/simulate`` (``simulate``; in the solver threads, as the path
+endpoints) and ``POST /v1/control/force-estimate`` (``estimate_tip_force``). The figures of the first two are
+``POST /v1/plots/plan`` and ``POST /v1/plots/simulation`` (:mod:`.plots`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import Annotated, Any
+
+from fastapi import APIRouter, Body, Depends, Request
+
+from .. import examples as ex
+from .. import schemas as s
+from ..config import Settings
+from ..control_compute import (PLAN_ALIASES, SIMULATION_ALIASES, force_estimate_task, plan_task,
+                               simulate_task)
+from ..deps import (check_manipulator, check_trajectory_steps, get_settings_dep, is_heavy, path_deadline, solve,
+                    solve_heavy)
+from . import solve_responses
+
+__all__ = ["router", "PLAN_LIMITS", "SIMULATION_LIMITS", "check_plan", "check_simulation", "steps_field"]
+
+router = APIRouter(prefix="/v1/control", tags=["control"])
+
+_M = ex.PAPER_CHAIN
+
+#: What every plan answer says about its bounds and the time limit (also the figure's).
+PLAN_LIMITS = ("At most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 "
+               "`too_many_steps` naming `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT "
+               "fallback is the same problem). The plan runs in a solver process and stops shortly before the "
+               "server's time limit, answering the steps done (200, `status: \"time_limit\"`, `success: false`) "
+               "instead of a 504. A step costs ~4 ms by Newton with its verification (n = 4), tens of milliseconds by "
+               "IPOPT; the first plan for a chain length builds its IPOPT problem in one call nothing interrupts "
+               "(n = 40: ~1.5 s; n = 60: ~40 s, a 504, and the process is replaced).")
+SIMULATION_LIMITS = ("At most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` samples (default 2000; above: 422 "
+                     "`too_many_steps` naming the field), chains of up to 64 segments (longer: 422 "
+                     "`invalid_parameter` on `manipulator.n`). The simulation stops shortly before the server's "
+                     "time limit and answers the samples done (200, `status: \"time_limit\"`, `success: false`) "
+                     "instead of a 504. About 1 ms a sample without a snap (n = 3), tens of milliseconds a snap.")
+
+
+def _per_step(v: Any) -> Any:
+    """A per-step list of pairs (its length is the step count), or None for one load for every step."""
+    return v if isinstance(v, list) and v and isinstance(v[0], list) else None
+
+
+def check_plan(req: Any, settings: Settings) -> Any:
+    """The limits of a plan request (the endpoint's and the figure's): its field context."""
+    ctx = replace(check_manipulator(req.manipulator, settings), aliases=PLAN_ALIASES)
+    check_trajectory_steps(settings, targets=req.targets, loads=_per_step(req.loads), end_angles=req.end_angles)
+    return ctx
+
+
+def steps_field(req: Any) -> str:
+    """The input setting a simulation's size (what to ask less of)."""
+    return next((f for f in ("preloads", "loads", "targets") if getattr(req, f) is not None), "preloads")
+
+
+def check_simulation(req: Any, settings: Settings) -> Any:
+    """The limits of a simulate request (the endpoint's and the figure's): its field context."""
+    ctx = replace(check_manipulator(req.manipulator, settings), aliases=SIMULATION_ALIASES)
+    check_trajectory_steps(settings, preloads=req.preloads, loads=req.loads, targets=req.targets)
+    return ctx
+
+
+@router.post(
+    "/plan", operation_id="control_plan", response_model=s.PlanOut,
+    summary="Rest lengths for a trajectory of tip positions, on one stable branch",
+    description="Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with "
+                "`margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step "
+                "(`tensegrity_opt.analyses.preload_control.plan_preloads`): `objective: change` is the least change "
+                "from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound "
+                "is active), `margin` / `energy` IPOPT (`choose_preloads`). A step no admissible rest lengths reach "
+                "is `feasible: false` with the best reachable pose, and the next step starts from the last feasible "
+                "state (`status: \"infeasible_steps\"`). `verified`: the forward quasi-static solve from the "
+                "previous step's configuration with the step's rest lengths lands on the target, stable. "
+                "`end_angles` (optional, null entries free) fix the last link's absolute angle. " + PLAN_LIMITS,
+    responses=solve_responses(ex.PLAN, "too_many_steps", "response_too_large"))
+async def control_plan(
+    request: Request,
+    req: Annotated[s.PlanRequest, Body(openapi_examples={
+        "arc": {"summary": "the paper's chain, the tip along a short arc under a small load",
+                "value": s.PLAN_REQUEST_EXAMPLE},
+        "rate_limited": {"summary": "a line of targets with a rate limit, a margin and bounds", "value": {
+            "manipulator": _M, "targets": [[7.9, 0.2], [7.85, 0.4], [7.8, 0.6], [7.7, 0.8]], "rate_limit": 0.1,
+            "bounds": {"lo": 0.5, "hi": 2.0}, "margin": 0.05}},
+        "end_angles": {"summary": "the last link kept level (end angle 0) along a vertical line", "value": {
+            "manipulator": _M, "targets": [[7.8, 0.3], [7.8, 0.6], [7.8, 0.9]], "end_angles": [0.0, 0.0, None]}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_plan(req, settings)
+    return await solve_heavy(request, plan_task, req, path_deadline(settings), ctx=ctx, size_field="targets")
+
+
+@router.post(
+    "/simulate", operation_id="control_simulate", response_model=s.SimulationOut,
+    summary="Quasi-static simulation under sampled inputs, with the snaps at folds",
+    description="The chain driven by time series of its inputs over samples `k = 0 .. K-1` "
+                "(`tensegrity_opt.simulate`): the rest lengths `preloads` (K, n, 2) (default the chain's own), and "
+                "a dead tip load `loads` (K, 2) (`tip: free`, default zero) or a tip deflection `targets` (K, 2) "
+                "(`tip: held`, required). Between samples the inputs move linearly and the configuration follows "
+                "its branch by continuation; where the branch loses stability (a fold, or a branch point) the arm "
+                "snaps: the new state is reached by the gradient flow from there (an overdamped arm), each snap an "
+                "event with the fold and landing configurations and the energy released. It ends early at a joint's "
+                "range bound (`joint_limit`) or the workspace edge, keeping the samples done. " + SIMULATION_LIMITS,
+    responses=solve_responses(ex.SIMULATION, "too_many_steps", "continuation_too_long", "bad_start",
+                              "unreachable_target", "response_too_large"))
+async def control_simulate(
+    request: Request,
+    req: Annotated[s.SimulationRequest, Body(openapi_examples={
+        "load_cycle": {"summary": "a load cycle along y on three bistable segments: two snaps (hysteresis)",
+                       "value": s.SIMULATION_REQUEST_EXAMPLE},
+        "held": {"summary": "the tip of the paper's chain held and pushed in along x", "value": {
+            "manipulator": _M, "tip": "held", "targets": [[0.1, 0.0], [0.3, 0.0], [0.5, 0.0], [0.7, 0.0]]}},
+        "preloads": {"summary": "the rest lengths of the first bistable segment tilted (1 + d, 1 - d), no load",
+                     "value": {"manipulator": s.BISTABLE_CHAIN, "preloads": [
+                         [[1.0 + d, 1.0 - d], [1.0, 1.0], [1.0, 1.0]] for d in (0.0, 0.1, 0.2, 0.3, 0.4)]}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_simulation(req, settings)
+    return await solve(request, simulate_task, req, path_deadline(settings), ctx=ctx, heavy=True,
+                       size_field=steps_field(req))
+
+
+@router.post(
+    "/force-estimate", operation_id="control_force_estimate", response_model=s.ForceEstimateOut,
+    summary="The tip force from measured joint angles (the arm as a force sensor)",
+    description="At a static equilibrium under a tip force only, the spring torques balance it: `grad E(q) = J(q)^T "
+                "F` (`tensegrity_opt.estimate_tip_force`). `F` by least squares on these `n` equations; with "
+                "`sigma_q` (the angle noise: one standard deviation, one per joint, or a covariance) by generalised "
+                "least squares with the residual's covariance at the estimate, with the force's `covariance`, the "
+                "chi-square test of the `n - 2` spare equations (`chi2`, `dof`, `p_value`: small when the arm is "
+                "loaded elsewhere too) and `joint_chi2` (where such a load is). With `measured` the unmeasured "
+                "angles are estimated too (`hidden_covariance`). Refused: angles outside the physical range or a "
+                "configuration where the torques do not determine the force (collinear links: `q_measured`), a "
+                "noise that is not positive or not a covariance (`sigma_q`), fewer equations than unknowns "
+                "(`measured`).",
+    responses=solve_responses(ex.FORCE_ESTIMATE, "no_equilibrium"))
+async def control_force_estimate(
+    request: Request,
+    req: Annotated[s.ForceEstimateRequest, Body(openapi_examples={
+        "noise": {"summary": "the paper's chain under (-0.1, 0.05), angles read with a noise of 1e-3 rad",
+                  "value": {"manipulator": _M, "q_measured": ex.FORCE_ESTIMATE_Q, "sigma_q": 0.001}},
+        "plain": {"summary": "no noise model: the least-squares force and the residual torque", "value": {
+            "manipulator": _M, "q_measured": ex.FORCE_ESTIMATE_Q}},
+        "hidden": {"summary": "joint 3 (0-based 2) not measured, per-joint noise", "value": {
+            "manipulator": _M, "q_measured": [ex.FORCE_ESTIMATE_Q[i] for i in (0, 1, 3)],
+            "sigma_q": [0.001, 0.001, 0.002], "measured": [0, 1, 3]}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_manipulator(req.manipulator, settings)
+    return await solve(request, force_estimate_task, req, ctx=ctx, heavy=is_heavy(settings, req.manipulator))

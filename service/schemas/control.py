@@ -1,0 +1,328 @@
+"""Models of the control endpoints: ``/v1/control/plan``, ``/v1/control/simulate``, ``/v1/control/force-estimate``.
+
+* *plan*: rest lengths for a trajectory of tip positions (``tensegrity_opt.analyses.preload_control.plan_preloads``);
+* *simulate*: the quasi-static forward simulation under sampled inputs, snapping at folds
+  (``tensegrity_opt.simulate``);
+* *force-estimate*: the tip force from measured joint angles (``tensegrity_opt.estimate_tip_force``).
+
+Same conventions as :mod:`service.schemas` (strict, no NaN, unknown fields refused). A trajectory holds at most
+``HARD_MAX_TRAJECTORY_STEPS`` steps (the default of ``TENSEGRITY_MAX_TRAJECTORY_STEPS``; a server with a lower
+setting answers 422 ``too_many_steps`` naming the field). What JSON Schema cannot say (``loads`` of the wrong
+count, ``2 n`` bounds, a ``sigma_q`` that is not a covariance, ``measured`` indices out of range ...) is
+refused by the library with a domain code naming the field.
+"""
+
+from __future__ import annotations
+
+from typing import Annotated, Any, Literal, Union
+
+from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
+
+from tensegrity_opt.analyses.preload_control import OBJECTIVES
+from tensegrity_opt.analyses.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
+from tensegrity_opt.analyses.simulation import STATUSES as SIMULATION_STATUSES
+
+from ..config import HARD_MAX_SEGMENTS, HARD_MAX_TRAJECTORY_STEPS
+from .common import (_STRICT, MAX_ANGLE, MAX_STIFFNESS, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Length,
+                     ManipulatorIn, integral)
+from .design import MAX_DESIGN_SEGMENTS, DesignManipulatorIn
+from .paths import StartQ
+
+#: Most steps of a trajectory (the schema's cap; the server's setting may be lower).
+MAX_STEPS = HARD_MAX_TRAJECTORY_STEPS
+#: Largest angle standard deviation (rad) and |covariance entry| (rad^2) of a force estimate.
+MAX_SIGMA = MAX_ANGLE
+MAX_COVARIANCE = MAX_ANGLE ** 2
+
+Vec2 = Annotated[list[ForceValue], Field(min_length=2, max_length=2)]
+Position = Annotated[list[Deflection], Field(min_length=2, max_length=2)]
+PositiveLength = Annotated[float, Field(gt=0.0, le=1.0e6, allow_inf_nan=False)]
+Weight = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
+
+_TIME = ("Computed within the server's time limit: when it runs out, the steps done so far are answered (200, "
+         "`status: \"time_limit\"`, `success: false`).")
+
+
+def _one_or_steps(v: Any) -> str:
+    return "<steps>" if isinstance(v, list) and v and isinstance(v[0], list) else "<one>"
+
+
+def _number_or_list(v: Any) -> str:
+    return "<list>" if isinstance(v, list) else "<number>"
+
+
+def _per_spring(item: Any, what: str) -> Any:
+    return Annotated[
+        Union[Annotated[item, Tag("<number>")],
+              Annotated[list[item], Field(min_length=2, max_length=2 * MAX_DESIGN_SEGMENTS), Tag("<list>")]],
+        Discriminator(_number_or_list),
+        Field(description=f"{what}: one number for every spring, or 2n numbers (L1_0 of every segment, then L2_0)"),
+    ]
+
+
+# ---------------------------------------------------------------------------- plan
+class RestLengthBoundsIn(BaseModel):
+    """Actuator bounds on every rest length (length units)."""
+
+    model_config = _STRICT
+    lo: _per_spring(PositiveLength, "lower bound") = Field(description="lower bound (> 0): a number or 2n numbers")
+    hi: _per_spring(PositiveLength, "upper bound") = Field(description="upper bound (> lo): a number or 2n numbers")
+
+
+PlanLoads = Annotated[
+    Union[Annotated[Vec2, Tag("<one>")],
+          Annotated[list[Vec2], Field(min_length=1, max_length=MAX_STEPS), Tag("<steps>")]],
+    Discriminator(_one_or_steps),
+    Field(description="the dead tip load (force units): one [fx, fy] for every step, or one per step (as many as "
+                      "targets)"),
+]
+
+
+class _PlanFields(BaseModel):
+    model_config = ConfigDict(strict=True, extra="forbid")
+
+    manipulator: DesignManipulatorIn
+    targets: list[Position] = Field(min_length=1, max_length=MAX_STEPS,
+                                    description=f"tip positions [x, y] per step (length units; 1..{MAX_STEPS}, server "
+                                                "limit TENSEGRITY_MAX_TRAJECTORY_STEPS)")
+    loads: PlanLoads | None = Field(None, description="dead tip load: one [fx, fy] or one per step; default none")
+    end_angles: list[Angle | None] | None = Field(
+        None, max_length=MAX_STEPS, description="the last link's absolute angle per step (rad; null: free), as many "
+                                                "as targets; default free")
+    bounds: RestLengthBoundsIn | None = Field(None, description="actuator bounds on the rest lengths; default "
+                                                                "(0.1 b_min, 4 b_max)")
+    rate_limit: _per_spring(PositiveLength, "largest change of a rest length per step (length units, > 0)") | None = \
+        Field(None, description="largest change of each rest length per step (length units): a number or 2n "
+                                "numbers; default none")
+    margin: Annotated[float, Field(ge=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
+        1e-3, description="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the "
+                          "joint angles (torque / rad)")
+    objective: Literal[OBJECTIVES] = Field(
+        "change", description="change: least change from the previous step (compiled Newton, IPOPT where a bound "
+                              "is active); margin: largest margin; energy: least spring energy (IPOPT)")
+    weights: list[Annotated[list[Weight], Field(min_length=2, max_length=2)]] | None = Field(
+        None, min_length=1, max_length=MAX_DESIGN_SEGMENTS,
+        description="weights [w1, w2] of each segment's rest-length changes in the least-change objective "
+                    "(n pairs, > 0); default 1")
+    start: StartQ | None = Field(None, description='{"q": [...]}: the configuration with the chain\'s rest lengths '
+                                                   "under the first load; null: the equilibrium under it reached from "
+                                                   "the least-energy rest configuration")
+    verify: bool = Field(True, description="verify every step by the forward quasi-static solve from the previous "
+                                           "step's configuration (`verified`)")
+
+
+PLAN_REQUEST_EXAMPLE = {"manipulator": PAPER_CHAIN, "targets": [[7.6, 0.5], [7.5, 0.75], [7.4, 1.0], [7.3, 1.25]],
+                        "loads": [0.0, -0.02], "margin": 0.01}
+
+
+class PlanRequest(_PlanFields):
+    """Rest lengths for a trajectory of tip positions, on one stable branch (`plan_preloads`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [PLAN_REQUEST_EXAMPLE]})
+
+
+class PlanOut(BaseModel):
+    """`PreloadPlan.to_dict()`: per step done (`K` rows, fewer when the time limit cut the plan)."""
+
+    status: Literal["complete", "infeasible_steps", "time_limit"] = Field(
+        description="complete; infeasible_steps (see feasible); time_limit (the steps done so far)")
+    success: bool = Field(description="status is complete")
+    seconds: float = Field(description="wall time of the plan (s)")
+    rest_lengths: list[list[list[float]]] = Field(description="[L1_0, L2_0] per segment per step (what to command)")
+    q: list[list[float]] = Field(description="the equilibrium configuration per step (rad)")
+    tip: list[list[float]] = Field(description="the tip per step (the target when feasible; else the best reachable "
+                                               "pose)")
+    end_angle: list[float] = Field(description="the last link's absolute angle sum(q) per step (rad)")
+    margin: list[float | None] = Field(description="stability margin per step (torque / rad; null: infeasible)")
+    feasible: list[bool] = Field(description="rest lengths meeting every requirement were found (false: the "
+                                             "controller stays where it was, q and tip the best reachable pose)")
+    verified: list[bool] = Field(description="the forward solve from the previous step lands on the target, stable "
+                                             "(with `verify: false` no solve runs and this repeats `feasible`)")
+    method: list[Literal["newton", "ipopt", "none"]] = Field(description="how each step was solved")
+    targets: list[list[float]] = Field(description="the targets of the steps done")
+
+
+# ---------------------------------------------------------------------------- simulate
+class _SimulationFields(BaseModel):
+    model_config = ConfigDict(strict=True, extra="forbid")
+
+    manipulator: ManipulatorIn
+    preloads: list[Annotated[list[Annotated[list[Length], Field(min_length=2, max_length=2)]],
+                             Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]] | None = Field(
+        None, min_length=1, max_length=MAX_STEPS,
+        description="the rest lengths [L1_0, L2_0] of every segment at each sample, (K, n, 2) (length units); "
+                    "default the chain's own, constant")
+    loads: list[Vec2] | None = Field(None, min_length=1, max_length=MAX_STEPS,
+                                     description="the dead tip load [fx, fy] at each sample (tip free; force units; "
+                                                 "default zero); fx < 0 compresses")
+    tip: Literal["free", "held"] = Field("free", description="free: the tip is loaded by `loads`; held: the tip is "
+                                                             "held at `targets`")
+    targets: list[Position] | None = Field(None, min_length=1, max_length=MAX_STEPS,
+                                           description="the tip deflection [dx, dy] at each sample (tip held; length "
+                                                       "units; the tip at (2 sum b - dx, dy))")
+    start: StartQ | None = Field(None, description='{"q": [...]}: the state at sample 0 (must be a stable '
+                                                   "equilibrium under the first inputs); null: free, the least-energy "
+                                                   "rest configuration (under a non-zero first load the least-potential "
+                                                   "stable equilibrium); held, the least-energy stable equilibrium at "
+                                                   "the first target")
+    perturbation: Annotated[float, Field(gt=0.0, lt=0.1, allow_inf_nan=False)] = Field(
+        1e-4, description="where a snap's descent starts: this far (rad, the largest joint) from the fold along its "
+                          "null vector")
+
+
+def _load_cycle(amplitude: float, steps: int) -> list[list[float]]:
+    """Loads [0, fy] from 0 up to +amplitude, down to -amplitude and back to 0 in ``steps`` samples (piecewise
+    linear, as ``tensegrity-opt simulate --load-cycle``)."""
+    out = []
+    for i in range(steps):
+        t = 4.0 * i / (steps - 1)
+        f = t if t <= 1.0 else 2.0 - t if t <= 3.0 else t - 4.0
+        out.append([0.0, round(amplitude * f, 6)])
+    return out
+
+
+#: A load cycle on three bistable segments (a = 0.5): a snap up and a snap down (hysteresis).
+BISTABLE_CHAIN = {"n": 3, "a": 0.5, "b": 1.0, "k": 1.0, "L0": 1.0}
+SIMULATION_REQUEST_EXAMPLE = {"manipulator": BISTABLE_CHAIN, "loads": _load_cycle(0.3, 13)}
+
+
+class SimulationRequest(_SimulationFields):
+    """Quasi-static simulation under sampled preloads and a tip load or deflection (`tensegrity_opt.simulate`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [SIMULATION_REQUEST_EXAMPLE]})
+
+
+class SimulationEventOut(BaseModel):
+    """Something that happened between sample `step` and `step + 1`, at `time = step + fraction`."""
+
+    kind: Literal[SIMULATION_EVENT_KINDS] = Field(
+        description="snap (the followed branch folded: the arm jumps), bifurcation (lost stability at a branch "
+                    "point), joint_limit (a joint reached its range bound: the end)")
+    step: int
+    fraction: float = Field(description="where in the step (0 at sample step, 1 at step + 1)")
+    time: float = Field(description="step + fraction")
+    preloads: list[list[float]] = Field(description="the rest lengths [L1_0, L2_0] per segment there")
+    load: list[float] | None = Field(description="the dead tip load there (tip free)")
+    target: list[float] | None = Field(description="the tip deflection there (tip held)")
+    q_before: list[float] = Field(description="the configuration at the fold (branch point, joint limit)")
+    q_after: list[float] | None = Field(description="the landing configuration (null: a joint limit, or the descent "
+                                                    "ran into a joint's bound)")
+    force_before: list[float] | None
+    force_after: list[float] | None
+    tip_before: list[float] | None
+    tip_after: list[float] | None
+    energy_before: float | None
+    energy_after: float | None
+    potential_before: float | None = Field(description="E - F . tip (free) or E (held) at the fold")
+    potential_after: float | None
+    energy_released: float | None = Field(description="potential_before - potential_after (> 0 for a snap)")
+    null_vector: list[float] | None = Field(description="the snapping mode (largest entry +1)")
+    direction: int = Field(description="the sign of null_vector the descent left along (0: joint limit)")
+    method: str = Field(description="moore_spence, test_function or limit")
+    message: str
+
+
+class SimulationOut(BaseModel):
+    """`Simulation.to_dict()`: the state at each sample done (`done` of `steps`) and the events."""
+
+    mode: Literal["free", "held"]
+    status: Literal[SIMULATION_STATUSES] = Field(description="how it ended (time_limit: cut by the server's time "
+                                                             "limit; the samples done are kept)")
+    success: bool = Field(description="every sample simulated")
+    message: str
+    steps: int = Field(description="samples asked for (K)")
+    done: int = Field(description="samples simulated")
+    q: list[list[float]] = Field(description="joint angles (rad) per sample done")
+    force: list[Force] = Field(description="the load (free) or the holding force (held) per sample done")
+    tip: list[list[float]]
+    deflection: list[list[float]] = Field(description="(dx, dy) = (2 sum b - x, y) per sample done")
+    energy: list[float] = Field(description="elastic energy (force x length)")
+    potential: list[float] = Field(description="E - F . tip (free) or E (held)")
+    stable: list[bool]
+    morse_index: list[int]
+    events: list[SimulationEventOut] = Field(description="snaps, bifurcations and the joint-limit end, in time order")
+    preloads: list[list[list[float]]] = Field(description="the rest lengths at every sample (the input)")
+    loads: list[list[float]] | None = Field(None, description="the dead tip loads (free)")
+    targets: list[list[float]] | None = Field(None, description="the tip deflections (held)")
+
+
+# ---------------------------------------------------------------------------- force estimate
+Sigma = Annotated[float, Field(gt=0.0, le=MAX_SIGMA, allow_inf_nan=False)]
+CovarianceEntry = Annotated[float, Field(ge=-MAX_COVARIANCE, le=MAX_COVARIANCE, allow_inf_nan=False)]
+JointIndex = Annotated[int, Field(ge=0, le=HARD_MAX_SEGMENTS - 1), BeforeValidator(integral)]
+
+
+def _sigma_form(v: Any) -> str:
+    if not isinstance(v, list):
+        return "<number>"
+    return "<matrix>" if v and isinstance(v[0], list) else "<vector>"
+
+
+SigmaIn = Annotated[
+    Union[Annotated[Sigma, Tag("<number>")],
+          Annotated[list[Sigma], Field(min_length=1, max_length=HARD_MAX_SEGMENTS), Tag("<vector>")],
+          Annotated[list[Annotated[list[CovarianceEntry], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]],
+                    Field(min_length=1, max_length=HARD_MAX_SEGMENTS), Tag("<matrix>")]],
+    Discriminator(_sigma_form),
+    Field(description="angle noise: one standard deviation for every joint (rad, > 0), one per joint (n, or k: the "
+                      "measured ones), or a covariance matrix (rad^2; n x n or k x k, symmetric positive "
+                      "semidefinite with positive variances)"),
+]
+
+
+def _measured_form(v: Any) -> str:
+    return "<mask>" if isinstance(v, list) and v and isinstance(v[0], bool) else "<indices>"
+
+
+MeasuredIn = Annotated[
+    Union[Annotated[list[bool], Field(min_length=1, max_length=HARD_MAX_SEGMENTS), Tag("<mask>")],
+          Annotated[list[JointIndex], Field(max_length=HARD_MAX_SEGMENTS), Tag("<indices>")]],
+    Discriminator(_measured_form),
+    Field(description="which joints are measured: a mask of n booleans, or 0-based joint indices; default all"),
+]
+
+
+class ForceEstimateRequest(BaseModel):
+    """The tip force from measured joint angles (`tensegrity_opt.estimate_tip_force`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [
+        {"manipulator": PAPER_CHAIN, "q_measured": [0.742754, 0.522806, 0.297158, 0.0953], "sigma_q": 0.001}]})
+
+    manipulator: ManipulatorIn
+    q_measured: list[Angle | None] = Field(
+        min_length=1, max_length=HARD_MAX_SEGMENTS,
+        description="joint angles (rad): all n (entries at unmeasured joints only start the solver; null there: 0), "
+                    "or the k measured ones in joint order; each inside the physical range |q_i| < pi - 2 beta_i")
+    sigma_q: SigmaIn | None = Field(None, description="the angle noise (see the schema); null: the plain least-squares "
+                                                      "estimate, no statistics")
+    measured: MeasuredIn | None = None
+
+
+class ForceEstimateOut(BaseModel):
+    """`ForceEstimate.to_dict()`."""
+
+    force: Force = Field(description="the estimated tip force (force units)")
+    covariance: list[list[float]] | None = Field(description="2 x 2 covariance of the force (null without sigma_q)")
+    residual_torque: list[float] = Field(description="grad E - J^T F at the estimate: the joint torques no tip "
+                                                     "force explains (torque units)")
+    residual_norm: float
+    chi2: float | None = Field(description="r^T W r (null without sigma_q)")
+    dof: int = Field(description="degrees of freedom: n - 2 - unmeasured joints")
+    p_value: float | None = Field(description="P(chi2_dof >= chi2): small when the angles are not those of an "
+                                              "equilibrium under a tip force only (null without sigma_q or dof 0)")
+    joint_chi2: list[float] | None = Field(description="per joint: the decrease of chi2 an extra torque there "
+                                                       "would give (where the load not at the tip is)")
+    q: list[float] = Field(description="the configuration used: measured angles as given, unmeasured estimated")
+    measured: list[int] = Field(description="the measured joints (0-based)")
+    hidden_covariance: list[list[float]] | None = Field(description="covariance of the estimated unmeasured angles "
+                                                                    "(rad^2)")
+    success: bool
+    status: str = Field(description="least_squares, gauss_newton, generalized_least_squares, weighted_gauss_newton "
+                                    "or reweighting_not_converged")
+    iterations: int
+
+
+__all__ = ["PlanRequest", "PlanOut", "RestLengthBoundsIn", "SimulationRequest", "SimulationOut",
+           "SimulationEventOut", "ForceEstimateRequest", "ForceEstimateOut", "PLAN_REQUEST_EXAMPLE",
+           "SIMULATION_REQUEST_EXAMPLE", "BISTABLE_CHAIN", "MAX_STEPS"]

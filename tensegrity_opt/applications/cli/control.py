@@ -1,0 +1,395 @@
+"""Command line control: ``tensegrity-opt plan|simulate|force-estimate ...``.
+
+:func:`add_control_parsers` adds the three commands to the ``tensegrity-opt`` parser; each sets
+``func(args, m) -> (data, text)`` like the other analysis commands (a table, or with ``--json`` the result's
+``to_dict()``: the body of ``/v1/control/plan``, ``/v1/control/simulate``, ``/v1/control/force-estimate``). The
+plan and simulation options (:func:`add_plan_options`, :func:`add_simulate_options`) are shared with
+``plot plan|simulation`` (:mod:`.plot`).
+
+Files: ``--targets`` (plan) is JSON, a list ``[[x, y], ...]`` or an object ``{"targets": [...], "loads": [...],
+"end_angles": [...]}`` (the body of ``/v1/control/plan`` minus the chain), or CSV with the columns ``x, y`` (then
+optionally ``fx, fy`` and ``end_angle``, ``nan`` for free; a header row is skipped). ``--preloads`` (simulate) is
+JSON ``(K, n, 2)`` (or ``{"preloads": ...}``) or CSV, one row of ``2n`` rest lengths per sample (``L1_0, L2_0`` of
+segment 1, then of segment 2, ...); ``--targets`` (simulate, held tip) JSON ``(K, 2)`` or CSV ``dx, dy``.
+
+Examples::
+
+    tensegrity-opt plan --line 7.9 0.2 7.3 1.4 13 --margin 0.05
+    tensegrity-opt plan --targets path.csv --load 0 -0.02 --rate-limit 0.05 --json
+    tensegrity-opt simulate --n 3 --a 0.5 --load-cycle 0.3 --steps 121
+    tensegrity-opt simulate --n 2 --preloads preloads.json
+    tensegrity-opt simulate --tip held --targets targets.csv
+    tensegrity-opt force-estimate --q 0.742754 0.522806 0.297158 0.0953 --sigma 1e-3
+    tensegrity-opt force-estimate --q 0.742754 0.522806 0.0953 --measured 0 1 3 --sigma 1e-3
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import json
+import math
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from ...analyses.force_sensor import estimate_tip_force
+from ...analyses.preload_control import OBJECTIVES, PreloadPlan, plan_preloads
+from ...analyses.simulation import Simulation, simulate
+from ...errors import InvalidParameterError
+from ...model.manipulator import Manipulator
+from .common import HELP_FORMAT, add_manipulator_options, finite_float, fmt_q, positive_int
+
+__all__ = ["add_control_parsers", "add_plan_options", "add_simulate_options", "plan_from_args",
+           "simulation_from_args", "load_cycle", "read_rows"]
+
+
+def _positive_float(text: str) -> float:
+    v = finite_float(text)
+    if v <= 0:
+        raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}")
+    return v
+
+
+def _non_negative_float(text: str) -> float:
+    v = finite_float(text)
+    if v < 0:
+        raise argparse.ArgumentTypeError(f"expected a number >= 0, got {text!r}")
+    return v
+
+
+def _at_least_two(text: str) -> int:
+    v = positive_int(text)
+    if v < 2:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 2, got {v}")
+    return v
+
+
+def _angle_or_nan(text: str) -> float:
+    """A joint angle, or ``nan`` (an unmeasured joint: only the solver's start)."""
+    try:
+        v = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number (or nan), got {text!r}") from None
+    if math.isinf(v):
+        raise argparse.ArgumentTypeError(f"expected a finite number (or nan), got {text!r}")
+    return v
+
+
+def _joint_index(text: str) -> int:
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a joint index (an integer >= 0), got {text!r}") from None
+    if v < 0:
+        raise argparse.ArgumentTypeError(f"expected a joint index (an integer >= 0), got {v}")
+    return v
+
+
+# ---------------------------------------------------------------------------- files
+def read_rows(path: str, field: str) -> Any:
+    """The numbers of a JSON file (any nesting, or an object) or the rows of a CSV file (a header row skipped)."""
+    p = Path(path)
+    text = p.read_text(encoding="utf-8")
+    if p.suffix.lower() == ".json" or text.lstrip()[:1] in ("[", "{"):
+        try:
+            return json.loads(text)
+        except json.JSONDecodeError as exc:
+            raise InvalidParameterError(f"--{field}: {path} is not valid JSON ({exc})", field=field) from None
+    rows = []
+    for i, row in enumerate(csv.reader(text.splitlines())):
+        cells = [c.strip() for c in row if c.strip()]
+        if not cells or cells[0].startswith("#"):
+            continue
+        try:
+            rows.append([float(c) for c in cells])
+        except ValueError:
+            if i == 0 and not rows:
+                continue                        # a header
+            raise InvalidParameterError(f"--{field}: {path} line {i + 1} is not a row of numbers: {row!r}",
+                                        field=field) from None
+    if not rows:
+        raise InvalidParameterError(f"--{field}: {path} holds no rows of numbers", field=field)
+    if len({len(r) for r in rows}) != 1:
+        raise InvalidParameterError(f"--{field}: the rows of {path} differ in length", field=field)
+    return rows
+
+
+def _array(v: Any, field: str) -> np.ndarray:
+    try:
+        return np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"--{field}: expected arrays of numbers", field=field) from None
+
+
+def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any]:
+    """``(targets, loads, end_angles)`` from ``--targets FILE`` or ``--line``, ``--load`` and ``--end-angle``."""
+    loads: Any = None
+    angles: Any = None
+    if args.line is not None:
+        x0, y0, x1, y1, num = args.line
+        if num != int(num) or num < 1:
+            raise InvalidParameterError(f"--line X0 Y0 X1 Y1 NUM: NUM must be an integer >= 1, got {num:g}",
+                                        field="line")
+        T = np.column_stack([np.linspace(x0, x1, int(num)), np.linspace(y0, y1, int(num))])
+    else:
+        data = read_rows(args.targets, "targets")
+        if isinstance(data, dict):
+            unknown = set(data) - {"targets", "loads", "end_angles"}
+            if unknown or "targets" not in data:
+                raise InvalidParameterError(f"--targets: a JSON object holds 'targets' (and optionally 'loads', "
+                                            f"'end_angles'), got {sorted(data)}", field="targets")
+            T = _array(data["targets"], "targets")
+            loads = data.get("loads")
+            angles = data.get("end_angles")
+            angles = None if angles is None else [math.nan if a is None else a for a in angles]
+        else:
+            A = _array(data, "targets")
+            if A.ndim != 2 or A.shape[1] not in (2, 4, 5):
+                raise InvalidParameterError(f"--targets: expected rows x, y [, fx, fy [, end_angle]], got shape "
+                                            f"{A.shape}", field="targets")
+            T = A[:, :2]
+            if A.shape[1] >= 4:
+                loads = A[:, 2:4]
+            if A.shape[1] == 5:
+                angles = A[:, 4]
+    if args.load is not None:
+        if loads is not None:
+            raise InvalidParameterError("give the load by --load or in the --targets file, not both", field="load")
+        loads = list(args.load)
+    if args.end_angle is not None:
+        if angles is not None:
+            raise InvalidParameterError("give the end angle by --end-angle or in the --targets file, not both",
+                                        field="end_angle")
+        angles = np.full(len(T), args.end_angle)
+    return T, loads, angles
+
+
+def plan_from_args(args: argparse.Namespace, m: Manipulator) -> PreloadPlan:
+    T, loads, angles = _plan_inputs(args)
+    return plan_preloads(m, T, loads, end_angles=angles, bounds=None if args.bounds is None else tuple(args.bounds),
+                         rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
+                         start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
+                         verify=not args.no_verify, timeout=args.timeout)
+
+
+def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
+    """``steps`` loads ``f d`` with ``f`` from 0 up to ``amplitude``, down to ``-amplitude`` and back to 0 (piecewise
+    linear in the sample index), ``d`` the unit ``direction``."""
+    d = np.asarray(direction, dtype=float)
+    nrm = float(np.linalg.norm(d))
+    if not nrm > 0.0 or not math.isfinite(nrm):
+        raise InvalidParameterError("--load-direction must be a nonzero vector", field="load_direction")
+    t = np.linspace(0.0, 4.0, steps)
+    f = amplitude * np.interp(t, [0.0, 1.0, 3.0, 4.0], [0.0, 1.0, -1.0, 0.0])
+    return np.outer(f, d / nrm)
+
+
+def _preloads(path: str, m: Manipulator) -> np.ndarray:
+    data = read_rows(path, "preloads")
+    if isinstance(data, dict):
+        if set(data) != {"preloads"}:
+            raise InvalidParameterError(f"--preloads: a JSON object holds 'preloads' only, got {sorted(data)}",
+                                        field="preloads")
+        data = data["preloads"]
+    P = _array(data, "preloads")
+    if P.ndim == 2 and P.shape[1] == 2 * m.n:            # CSV: one row of 2n numbers per sample
+        P = P.reshape(P.shape[0], m.n, 2)
+    return P
+
+
+def simulation_from_args(args: argparse.Namespace, m: Manipulator) -> Simulation:
+    P = None if args.preloads is None else _preloads(args.preloads, m)
+    loads = None
+    if args.load_cycle is not None:
+        if args.tip == "held":
+            raise InvalidParameterError("--load-cycle loads a free tip; a held tip takes --targets", field="load_cycle")
+        steps = args.steps if args.steps is not None else (P.shape[0] if P is not None and P.ndim == 3 else 121)
+        loads = load_cycle(args.load_cycle, steps, args.load_direction)
+    elif args.steps is not None:
+        raise InvalidParameterError("--steps is the length of a --load-cycle", field="steps")
+    targets = None if args.targets is None else _array(read_rows(args.targets, "targets"), "targets")
+    if args.tip == "free" and targets is not None:
+        raise InvalidParameterError("--targets are for a held tip (--tip held)", field="targets")
+    if P is None and loads is None and targets is None:
+        raise InvalidParameterError("give --load-cycle, --preloads or (with --tip held) --targets", field="load_cycle")
+    return simulate(m, P, loads, tip=args.tip, targets=targets,
+                    start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
+                    perturbation=args.perturbation, timeout=args.timeout)
+
+
+# ---------------------------------------------------------------------------- shared options
+def add_plan_options(sp: argparse.ArgumentParser) -> None:
+    g = sp.add_argument_group("targets (one of)")
+    one = g.add_mutually_exclusive_group(required=True)
+    one.add_argument("--targets", metavar="FILE", default=None,
+                     help="tip positions per step: JSON [[x, y], ...] or {\"targets\", \"loads\", \"end_angles\"}, or "
+                          "CSV rows x, y [, fx, fy [, end_angle]] (length, force, rad)")
+    one.add_argument("--line", type=finite_float, nargs=5, default=None, metavar=("X0", "Y0", "X1", "Y1", "NUM"),
+                     help="NUM tip positions evenly spaced from (X0, Y0) to (X1, Y1) (length)")
+    g = sp.add_argument_group("the plan")
+    g.add_argument("--load", type=finite_float, nargs=2, default=None, metavar=("FX", "FY"),
+                   help="the dead tip load of every step (force; None: none, or the file's)")
+    g.add_argument("--end-angle", type=finite_float, default=None,
+                   help="the last link's absolute angle at every step (rad; None: free)")
+    g.add_argument("--bounds", type=_positive_float, nargs=2, default=None, metavar=("LO", "HI"),
+                   help="actuator bounds on every rest length (length; None: 0.1 b_min, 4 b_max)")
+    g.add_argument("--rate-limit", type=_positive_float, default=None,
+                   help="largest change of each rest length per step (length; None: no limit)")
+    g.add_argument("--margin", type=_non_negative_float, default=1e-3,
+                   help="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip "
+                        "(torque / rad)")
+    g.add_argument("--objective", choices=OBJECTIVES, default="change",
+                   help="change: least change from the previous step (Newton, IPOPT where a bound is active); "
+                        "margin: largest margin; energy: least spring energy (IPOPT)")
+    g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
+                   help="the start configuration (rad, n angles) with the chain's rest lengths under the first "
+                        "load; None: reached from the least-energy rest configuration")
+    g.add_argument("--no-verify", action="store_true",
+                   help="skip the forward quasi-static solve that verifies each step")
+    g.add_argument("--timeout", type=_positive_float, default=None,
+                   help="seconds; then the steps done so far (status time_limit)")
+
+
+def add_simulate_options(sp: argparse.ArgumentParser) -> None:
+    g = sp.add_argument_group("inputs (a load cycle, preloads from a file, or the targets of a held tip)")
+    g.add_argument("--load-cycle", type=finite_float, default=None, metavar="F_MAX",
+                   help="a dead tip load along --load-direction from 0 up to F_MAX, down to -F_MAX and back to 0 "
+                        "(force; tip free)")
+    g.add_argument("--steps", type=_at_least_two, default=None,
+                   help="samples of the load cycle (None: 121, or the preloads' count)")
+    g.add_argument("--load-direction", type=finite_float, nargs=2, default=[0.0, 1.0], metavar=("DX", "DY"),
+                   help="direction of the load cycle (normalised)")
+    g.add_argument("--preloads", metavar="FILE", default=None,
+                   help="rest lengths per sample: JSON (K, n, 2) or CSV rows of 2n numbers (L1_0, L2_0 per segment; "
+                        "length); None: the chain's own")
+    g.add_argument("--tip", choices=("free", "held"), default="free",
+                   help="free: loaded by the load cycle (or unloaded); held: at --targets")
+    g.add_argument("--targets", metavar="FILE", default=None,
+                   help="held tip: the deflections per sample, JSON (K, 2) or CSV rows dx, dy (length)")
+    g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
+                   help="the state at sample 0 (rad, n angles; a stable equilibrium under the first inputs); "
+                        "None: the least-energy one")
+    g.add_argument("--perturbation", type=_positive_float, default=1e-4,
+                   help="a snap's descent starts this far from the fold along its null vector (rad, < 0.1)")
+    g.add_argument("--timeout", type=_positive_float, default=None,
+                   help="seconds; then the samples done so far (status time_limit)")
+
+
+# ---------------------------------------------------------------------------- the commands
+def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    p = plan_from_args(args, m)
+    K = len(p.method)
+    lines = [f"Preload plan, n = {m.n}, objective {args.objective}: {K} steps, {int(np.sum(p.feasible))} feasible, "
+             f"{int(np.sum(p.verified))} verified, status {p.status} ({p.seconds:.2f} s)",
+             f"{'#':>4} {'target x':>9} {'target y':>9} {'tip x':>9} {'tip y':>9} {'margin':>9} {'feas.':>5} "
+             f"{'verif.':>6} {'method':>6}  rest lengths [L1_0, L2_0] per segment"]
+    for k in range(K):
+        mg = "-" if not math.isfinite(p.margin[k]) else f"{p.margin[k]:.5f}"
+        rl = " ".join(f"[{a:.4f}, {b:.4f}]" for a, b in p.rest_lengths[k])
+        lines.append(f"{k:>4} {p.targets[k, 0]:>9.5f} {p.targets[k, 1]:>9.5f} {p.tip[k, 0]:>9.5f} {p.tip[k, 1]:>9.5f} "
+                     f"{mg:>9} {'yes' if p.feasible[k] else 'no':>5} {'yes' if p.verified[k] else 'no':>6} "
+                     f"{p.method[k]:>6}  {rl}")
+    return p.to_dict, "\n".join(lines)
+
+
+def _cmd_simulate(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    sim = simulation_from_args(args, m)
+    held = sim.mode == "held"
+    D = sim.deflection
+    lines = [f"Quasi-static simulation, {sim.mode} tip, n = {m.n}: {len(sim)} of {sim.steps} samples, "
+             f"status {sim.status}: {sim.message}",
+             f"{'#':>4} {'Fx':>10} {'Fy':>10} {'dx':>10} {'dy':>10} {'energy':>11} {'morse':>5}  q (rad)"
+             + ("   (F: the holding force)" if held else "")]
+    for i in range(len(sim)):
+        lines.append(f"{i:>4} {sim.force[i, 0]:>10.6f} {sim.force[i, 1]:>10.6f} {D[i, 0]:>10.5f} {D[i, 1]:>10.5f} "
+                     f"{sim.energy[i]:>11.6f} {int(sim.morse_index[i]):>5}  {fmt_q(sim.q[i])}")
+    if not sim.events:
+        lines.append("events: none")
+    else:
+        lines.append(f"events ({len(sim.events)}):")
+        for e in sim.events:
+            where = e.target if held else e.load
+            rel = "" if e.energy_released is None else f", energy released {e.energy_released:.6g}"
+            lines.append(f"  {e.kind:<11} at {e.time:.6f} (step {e.step} + {e.fraction:.6f}), "
+                         f"{'target' if held else 'load'} {fmt_q(where)}{rel}"
+                         + ("" if e.q_after is None else f": {fmt_q(e.q_before)} -> {fmt_q(e.q_after)}")
+                         + (f" ({e.message})" if e.message else ""))
+    return sim.to_dict, "\n".join(lines)
+
+
+def _fmt_g(v: Any) -> str:
+    """``[1.2e-07, -3.4e-07]``: small numbers (torques, chi-square parts) for a table."""
+    return "[" + ", ".join(f"{x:.4g}" for x in np.asarray(v, float).ravel()) + "]"
+
+
+def _sigma(values: list[float] | None, n: int, k: int) -> Any:
+    """``--sigma``: one number, one per joint (n or k), or a covariance (n x n or k x k, row by row)."""
+    if values is None:
+        return None
+    if len(values) == 1:
+        return values[0]
+    if len(values) in (n, k):
+        return np.asarray(values)
+    for size in (k, n):
+        if len(values) == size * size:
+            return np.asarray(values).reshape(size, size)
+    raise InvalidParameterError(f"--sigma takes 1, {k if k != n else n}{f' or {n}' if k != n else ''} standard "
+                                f"deviations or a covariance of {k * k}{f' or {n * n}' if k != n else ''} numbers, "
+                                f"got {len(values)}", field="sigma_q")
+
+
+def _cmd_force_estimate(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    k = m.n if args.measured is None else len(args.measured)
+    est = estimate_tip_force(m, np.asarray(args.q, dtype=float), sigma_q=_sigma(args.sigma, m.n, k),
+                             measured=None if args.measured is None else np.asarray(args.measured, dtype=int))
+    lines = [f"Tip force from the joint angles, n = {m.n}, joints measured {list(est.measured)}: "
+             f"F = ({est.fx:.9g}, {est.fy:.9g}) ({est.status}, {est.iterations} iterations"
+             + ("" if est.success else ", NOT settled") + ")"]
+    if est.covariance is not None:
+        sd = est.std
+        rho = est.covariance[0, 1] / (sd[0] * sd[1]) if sd[0] > 0 and sd[1] > 0 else float("nan")
+        lines.append(f"std (Fx, Fy) = ({sd[0]:.4g}, {sd[1]:.4g}), correlation {rho:.3f}")
+        pv = "-" if est.p_value is None else f"{est.p_value:.4g}"
+        lines.append(f"chi2 = {est.chi2:.6g} on {est.dof} degrees of freedom, p = {pv}")
+        lines.append(f"joint chi2 (an extra torque at each joint) {_fmt_g(est.joint_chi2)}")
+    lines.append(f"residual torque {_fmt_g(est.residual_torque)} (norm {est.residual_norm:.4g})")
+    lines.append(f"configuration q = {fmt_q(est.q)}")
+    if est.hidden_covariance is not None and est.hidden_covariance.size:
+        lines.append(f"std of the unmeasured angles {_fmt_g(np.sqrt(np.diag(est.hidden_covariance)))}")
+    return est.to_dict, "\n".join(lines)
+
+
+def add_control_parsers(subparsers: Any) -> None:
+    """Add ``plan``, ``simulate`` and ``force-estimate`` to ``subparsers`` (``add_subparsers()``'s result)."""
+
+    def common(sp: argparse.ArgumentParser) -> None:
+        add_manipulator_options(sp)
+        sp.add_argument("--json", action="store_true", help="print the API body (JSON) instead of a table")
+
+    sp = subparsers.add_parser("plan", formatter_class=HELP_FORMAT,
+                               help="rest lengths for a trajectory of tip positions, on one stable branch")
+    common(sp)
+    add_plan_options(sp)
+    sp.set_defaults(func=_cmd_plan)
+
+    sp = subparsers.add_parser("simulate", formatter_class=HELP_FORMAT,
+                               help="quasi-static simulation under a load cycle, preloads or held-tip targets, with "
+                                    "the snaps at folds")
+    common(sp)
+    add_simulate_options(sp)
+    sp.set_defaults(func=_cmd_simulate)
+
+    sp = subparsers.add_parser("force-estimate", formatter_class=HELP_FORMAT,
+                               help="the tip force from measured joint angles (the arm as a force sensor)")
+    common(sp)
+    sp.add_argument("--q", type=_angle_or_nan, nargs="+", required=True, metavar="Q",
+                    help="joint angles (rad): all n (nan at an unmeasured joint: start at 0), or the measured ones "
+                         "in joint order")
+    sp.add_argument("--sigma", type=finite_float, nargs="+", default=None, metavar="S",
+                    help="angle noise: one standard deviation (rad), one per joint, or a covariance matrix row by "
+                         "row (rad^2); None: no noise model, no statistics")
+    sp.add_argument("--measured", type=_joint_index, nargs="+", default=None, metavar="J",
+                    help="the measured joints (0-based); None: all")
+    sp.set_defaults(func=_cmd_force_estimate)

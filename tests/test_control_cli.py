@@ -1,0 +1,169 @@
+"""The control commands: ``plan``, ``simulate``, ``force-estimate`` and ``plot plan|simulation``.
+
+``--json`` prints the library's ``to_dict()`` (the body of the HTTP API for the same request); errors are one
+line on stderr and exit status 2; every option has its help with the default.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+import numpy as np
+import pytest
+
+import tensegrity_opt as to
+from tensegrity_opt.applications.cli import build_parser, main
+from tensegrity_opt.applications.cli.control import load_cycle
+
+M = to.Manipulator.uniform(4)
+M3 = to.Manipulator.uniform(3, a=0.5)
+BISTABLE = ["--n", "3", "--a", "0.5"]
+EQ_Q = [0.742754, 0.522806, 0.297158, 0.0953]
+
+
+def run_json(capsys, argv):
+    assert main([*argv, "--json"]) == 0, capsys.readouterr().err
+    return json.loads(capsys.readouterr().out)
+
+
+def same(a: dict, b: dict, skip=("seconds",)) -> bool:
+    return {k: v for k, v in a.items() if k not in skip} == {k: v for k, v in b.items() if k not in skip}
+
+
+def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
+    argv = ["plan", "--line", "7.9", "0.2", "7.3", "1.4", "7", "--margin", "0.05"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "7 steps, 7 feasible, 7 verified, status complete" in out and "newton" in out
+    got = run_json(capsys, argv)
+    T = np.column_stack([np.linspace(7.9, 7.3, 7), np.linspace(0.2, 1.4, 7)])
+    assert same(got, json.loads(json.dumps(to.plan_preloads(M, T, margin=0.05).to_dict())))
+
+    csv = tmp_path / "path.csv"
+    csv.write_text("x,y,fx,fy\n7.9,0.2,0,-0.01\n7.8,0.4,0,-0.01\n7.7,0.6,0,-0.02\n", encoding="utf-8")
+    got = run_json(capsys, ["plan", "--targets", str(csv), "--rate-limit", "0.2", "--bounds", "0.5", "2"])
+    want = to.plan_preloads(M, [[7.9, 0.2], [7.8, 0.4], [7.7, 0.6]], [[0, -0.01], [0, -0.01], [0, -0.02]],
+                            rate_limit=0.2, bounds=(0.5, 2.0))
+    assert same(got, json.loads(json.dumps(want.to_dict())))
+    js = tmp_path / "path.json"
+    js.write_text(json.dumps({"targets": [[7.8, 0.3], [7.8, 0.6]], "end_angles": [0.0, None]}), encoding="utf-8")
+    got = run_json(capsys, ["plan", "--targets", str(js), "--objective", "change", "--no-verify"])
+    want = to.plan_preloads(M, [[7.8, 0.3], [7.8, 0.6]], end_angles=[0.0, np.nan], verify=False)
+    assert same(got, json.loads(json.dumps(want.to_dict())))
+
+
+def test_simulate_a_load_cycle_preloads_and_a_held_tip(capsys, tmp_path):
+    argv = ["simulate", *BISTABLE, "--load-cycle", "0.3", "--steps", "25"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "25 of 25 samples, status complete" in out and out.count("  snap ") == 2 and "0.15311" in out
+    got = run_json(capsys, argv)
+    assert got == json.loads(json.dumps(to.simulate(M3, loads=load_cycle(0.3, 25)).to_dict()))
+    assert load_cycle(0.3, 5).tolist() == [[0.0, 0.0], [0.0, 0.3], [0.0, 0.0], [0.0, -0.3], [0.0, 0.0]]
+
+    P = [[[1.0 + d, 1.0 - d], [1.0, 1.0], [1.0, 1.0]] for d in (0.0, 0.2, 0.4)]
+    js = tmp_path / "pre.json"
+    js.write_text(json.dumps(P), encoding="utf-8")
+    csv = tmp_path / "pre.csv"
+    csv.write_text("\n".join(",".join(str(v) for pair in p for v in pair) for p in P) + "\n", encoding="utf-8")
+    want = json.loads(json.dumps(to.simulate(M3, P).to_dict()))
+    assert run_json(capsys, ["simulate", *BISTABLE, "--preloads", str(js)]) == want
+    assert run_json(capsys, ["simulate", *BISTABLE, "--preloads", str(csv)]) == want
+
+    tg = tmp_path / "targets.csv"
+    tg.write_text("dx,dy\n0.1,0\n0.3,0\n0.5,0\n", encoding="utf-8")
+    got = run_json(capsys, ["simulate", "--tip", "held", "--targets", str(tg)])
+    assert got == json.loads(json.dumps(to.simulate(M, tip="held", targets=[[0.1, 0], [0.3, 0], [0.5, 0]]).to_dict()))
+
+
+def test_force_estimate(capsys):
+    argv = ["force-estimate", "--q", *map(str, EQ_Q), "--sigma", "1e-3"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "F = (-0.0999999" in out and "chi2 = " in out and "2 degrees of freedom" in out
+    assert run_json(capsys, argv) == json.loads(json.dumps(to.estimate_tip_force(M, EQ_Q, sigma_q=1e-3).to_dict()))
+    q3 = [EQ_Q[i] for i in (0, 1, 3)]
+    got = run_json(capsys, ["force-estimate", "--q", *map(str, q3), "--measured", "0", "1", "3", "--sigma", "1e-3",
+                            "1e-3", "2e-3"])
+    want = to.estimate_tip_force(M, q3, sigma_q=np.array([1e-3, 1e-3, 2e-3]), measured=[0, 1, 3])
+    assert got == json.loads(json.dumps(want.to_dict())) and got["hidden_covariance"]
+    cov = ["1e-6", "0", "0", "0", "1e-6", "0", "0", "0", "4e-6"]           # 3 x 3, row by row
+    got = run_json(capsys, ["force-estimate", "--q", str(EQ_Q[0]), "nan", *map(str, EQ_Q[2:]), "--measured", "0",
+                            "2", "3", "--sigma", *cov])
+    want = to.estimate_tip_force(M, [EQ_Q[0], np.nan, *EQ_Q[2:]], sigma_q=np.array(cov, float).reshape(3, 3),
+                                 measured=[0, 2, 3])
+    assert got == json.loads(json.dumps(want.to_dict()))
+    assert run_json(capsys, ["force-estimate", "--q", *map(str, EQ_Q)])["chi2"] is None
+
+
+def test_plot_plan_and_simulation_write_png_and_svg(tmp_path, capsys):
+    for argv in (["plot", "plan", "--line", "7.9", "0.2", "7.3", "1.4", "5"],
+                 ["plot", "simulation", *BISTABLE, "--load-cycle", "0.3", "--steps", "13"]):
+        for suffix in ("png", "svg"):
+            out = tmp_path / f"fig.{suffix}"
+            assert main([*argv, "-o", str(out), "--dpi", "40"]) == 0, capsys.readouterr().err
+            assert f"wrote {out}" in capsys.readouterr().out
+            data = out.read_bytes()
+            assert data[:4] == b"\x89PNG" if suffix == "png" else b"<svg" in data[:400]
+    info = run_json(capsys, ["plot", "simulation", *BISTABLE, "--load-cycle", "0.3", "--steps", "13", "-o",
+                             str(tmp_path / "s.png")])
+    assert info["snaps"] == 2 and info["status"] == "complete"
+
+
+def test_errors_are_one_line_and_exit_2(capsys, tmp_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("x,y\n7.9,0.2\n7.8,oops\n", encoding="utf-8")
+    three = tmp_path / "three.csv"
+    three.write_text("7.9,0.2,1\n", encoding="utf-8")
+    for argv, text in [
+        (["plan", "--targets", str(bad)], "line 3 is not a row of numbers"),
+        (["plan", "--targets", str(three)], "expected rows x, y"),
+        (["plan", "--targets", str(tmp_path / "missing.csv")], "No such file"),
+        (["plan", "--line", "7.9", "0.2", "7.3", "1.4", "2.5"], "NUM must be an integer"),
+        (["plan", "--n", "1", "--line", "1.9", "0.1", "1.8", "0.2", "2"], "n >= 2"),
+        (["plan", "--line", "7.9", "0.2", "7.3", "1.4", "3", "--bounds", "2", "1"], "0 < lo < hi"),
+        (["plan", "--line", "7.9", "0.2", "7.3", "1.4", "3", "--start-q", "0", "0"], "start must hold 4"),
+        (["simulate"], "give --load-cycle, --preloads"),
+        (["simulate", "--steps", "5"], "--steps is the length of a --load-cycle"),
+        (["simulate", "--tip", "held", "--load-cycle", "0.1"], "a held tip takes --targets"),
+        (["simulate", "--tip", "held"], "(with --tip held) --targets"),
+        (["simulate", "--n", "65", "--load-cycle", "0.1", "--steps", "3"], "up to 64 segments"),
+        (["simulate", "--load-cycle", "0.1", "--load-direction", "0", "0"], "nonzero vector"),
+        (["force-estimate", "--q", "0", "0", "0", "0"], "do not determine the tip force"),
+        (["force-estimate", "--q", "0.1", "0.2", "0.3", "0.4", "--sigma", "1", "2", "3"], "--sigma takes 1, 4"),
+        (["force-estimate", "--q", "0.1", "0.2", "0.3", "0.4", "--measured", "7"], "must lie in 0..3"),
+        (["plot", "plan", "--line", "7.9", "0.2", "7.3", "1.4", "3", "--start-q", "9", "0", "0", "0", "-o", "x.png"],
+         "outside the physical joint range"),
+    ]:
+        assert main(argv) == 2, argv
+        err = capsys.readouterr().err
+        assert err.startswith("tensegrity-opt: error:") and text in err and "Traceback" not in err, (argv, err)
+        assert err.count("\n") == 1, err
+    for argv in (["plan"], ["plan", "--line", "1", "2"], ["plan", "--line", "7", "0", "7", "1", "3", "--margin", "-1"],
+                 ["simulate", "--steps", "1"], ["force-estimate"], ["force-estimate", "--q", "inf"],
+                 ["force-estimate", "--q", "0.1", "--measured", "-1"]):
+        with pytest.raises(SystemExit) as exc:
+            main(argv)
+        assert exc.value.code == 2
+        assert "error" in capsys.readouterr().err
+
+
+def test_every_option_of_the_control_commands_has_help_and_its_default(capsys):
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    plot = next(a for a in sub.choices["plot"]._actions if isinstance(a, argparse._SubParsersAction))
+    parsers = {cmd: sub.choices[cmd] for cmd in ("plan", "simulate", "force-estimate")}
+    parsers.update({f"plot {k}": plot.choices[k] for k in ("plan", "simulation")})
+    for name, p in parsers.items():
+        opts = [a for a in p._actions if a.option_strings and a.dest != "help"]
+        assert [a.dest for a in opts if not a.help] == [], name
+        text = p.format_help()
+        assert isinstance(p.formatter_class, type) and "(default:" in text, name
+    with pytest.raises(SystemExit):
+        main(["plan", "--help"])
+    out = " ".join(capsys.readouterr().out.split())
+    assert "(default: change)" in out and "(default: 0.001)" in out and "(length" in out and "(force" in out
+    with pytest.raises(SystemExit):
+        main(["simulate", "--help"])
+    out = " ".join(capsys.readouterr().out.split())
+    assert "(default: free)" in out and "(default: [0.0, 1.0])" in out and "(default: 0.0001)" in out
