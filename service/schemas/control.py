@@ -121,6 +121,23 @@ class PlanRequest(_PlanFields):
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [PLAN_REQUEST_EXAMPLE]})
 
 
+class PlanStepOut(BaseModel):
+    """One step of a plan (`PreloadStep.to_dict()`)."""
+
+    rest_lengths: list[list[float]] = Field(description="[L1_0, L2_0] per segment")
+    q: list[float]
+    tip: list[float]
+    end_angle: float
+    margin: float | None = Field(description="null: infeasible")
+    energy: float | None = Field(description="null: infeasible")
+    feasible: bool
+    method: Literal["newton", "ipopt", "none"]
+    status: str = Field(description="the solver's status, or why the step is infeasible")
+    iterations: int
+    residual: float | None = Field(description="max-norm of the equilibrium and pose equations (Newton steps)")
+    target: list[float]
+
+
 class PlanOut(BaseModel):
     """`PreloadPlan.to_dict()`: per step done (`K` rows, fewer when the time limit cut the plan)."""
 
@@ -137,9 +154,12 @@ class PlanOut(BaseModel):
     feasible: list[bool] = Field(description="rest lengths meeting every requirement were found (false: the "
                                              "controller stays where it was, q and tip the best reachable pose)")
     verified: list[bool] = Field(description="the forward solve from the previous step lands on the target, stable "
-                                             "(with `verify: false` no solve runs and this repeats `feasible`)")
+                                             "(with `verify: false` no solve runs: false everywhere)")
     method: list[Literal["newton", "ipopt", "none"]] = Field(description="how each step was solved")
     targets: list[list[float]] = Field(description="the targets of the steps done")
+    margin_required: float = Field(description="the stability margin asked for (torque / rad)")
+    objective: Literal["change", "margin", "energy"] = Field(description="how the redundancy was resolved")
+    steps: list[PlanStepOut] = Field(description="every step in full (why an infeasible step failed: `status`)")
 
 
 # ---------------------------------------------------------------------------- simulate

@@ -39,7 +39,7 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError
+from ..errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ..model.manipulator import Manipulator
 from ..numerics.inverse_statics import inverse_statics
 from ..serialize import nullable, number, numbers
@@ -209,7 +209,15 @@ class PreloadController:
         rest = rest_configuration(self.m)
         if not np.any(self.load):
             return rest.q.copy()
-        return solve_equilibrium_under_force(self.m, *self.load, q0=rest.q).q.copy()
+        try:
+            eq = solve_equilibrium_under_force(self.m, *self.load, q0=rest.q)
+        except NoEquilibriumError as exc:
+            raise NoEquilibriumError(f"no equilibrium under the load from the rest configuration: {exc.message}; "
+                                     "give a start", field="load") from None
+        if not eq.stable:
+            raise InvalidParameterError("the equilibrium under the load reached from the rest configuration is "
+                                        "unstable: give a stable start", field="load")
+        return eq.q.copy()
 
     def manipulator(self, ell: np.ndarray | None = None) -> Manipulator:
         """The chain with rest lengths ``ell`` (segment-major 2n; default the current ones)."""
@@ -287,7 +295,7 @@ class PreloadController:
         """The best reachable pose of an infeasible step: the forward equilibrium with the IPOPT's best rest
         lengths (when it has them and they hold the arm), else the current state."""
         n = self.n
-        best = exc.details.get("best") if hasattr(exc, "details") else None
+        best = getattr(exc, "best", None)
         ell, q = self.ell, self.q
         if isinstance(best, dict) and "preloads" in best:
             cand = np.clip(np.asarray(best["preloads"], float).ravel(), self.lo, self.hi)
@@ -317,7 +325,7 @@ class PreloadPlan:
     feasible : ndarray (K,) of bool
     verified : ndarray (K,) of bool
         The forward quasi-static solve from the previous step's configuration with this step's rest lengths
-        lands on the target (``LAND_TOL max b``), stable.
+        lands on the target (``LAND_TOL max b``), stable (False everywhere with ``verify=False``: not checked).
     method : list of str
         Per step ``"newton"``, ``"ipopt"`` or ``"none"``.
     status : str
@@ -339,6 +347,8 @@ class PreloadPlan:
     steps: list
     seconds: float
     targets: np.ndarray
+    margin_required: float = 0.0
+    objective: str = "change"
 
     @property
     def success(self) -> bool:
@@ -350,7 +360,9 @@ class PreloadPlan:
                 "q": [numbers(r) for r in self.q], "tip": [numbers(r) for r in self.tip],
                 "end_angle": numbers(self.end_angle), "margin": [nullable(v) for v in self.margin],
                 "feasible": [bool(v) for v in self.feasible], "verified": [bool(v) for v in self.verified],
-                "method": list(self.method), "targets": [numbers(r) for r in self.targets]}
+                "method": list(self.method), "targets": [numbers(r) for r in self.targets],
+                "margin_required": number(self.margin_required), "objective": self.objective,
+                "steps": [s.to_dict() for s in self.steps]}
 
 
 def plan_preloads(m: Manipulator, targets, loads=None, *, end_angles=None, bounds=None, rate_limit=None,
@@ -412,7 +424,7 @@ def plan_preloads(m: Manipulator, targets, loads=None, *, end_angles=None, bound
                 status = "time_limit"
                 break
             steps.append(st)
-            verified.append(bool(st.feasible) and (not verify or _lands(ctl, st, Ls[k], q_prev)))
+            verified.append(bool(verify) and bool(st.feasible) and _lands(ctl, st, Ls[k], q_prev))
     n = m.n
     if status == "complete" and not all(s.feasible for s in steps):
         status = "infeasible_steps"
@@ -424,7 +436,8 @@ def plan_preloads(m: Manipulator, targets, loads=None, *, end_angles=None, bound
     return PreloadPlan(arr(lambda s: s.rest_lengths, (n, 2)), arr(lambda s: s.q, (n,)), arr(lambda s: s.tip, (2,)),
                        arr(lambda s: s.end_angle, ()), arr(lambda s: s.margin, ()),
                        np.array([s.feasible for s in steps], dtype=bool), np.array(verified, dtype=bool),
-                       [s.method for s in steps], status, steps, time.perf_counter() - t0, T[:P].copy())
+                       [s.method for s in steps], status, steps, time.perf_counter() - t0, T[:P].copy(),
+                       float(margin), objective)
 
 
 def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:
