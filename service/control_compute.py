@@ -18,10 +18,10 @@ import numpy as np
 import tensegrity_opt as to
 from tensegrity_opt.analyses.preload_control import PreloadPlan, plan_preloads
 
-from .compute import _seconds_left, build_manipulator
+from .compute import _best_as_json, _seconds_left, build_manipulator
 
 __all__ = ["PLAN_ALIASES", "SIMULATION_ALIASES", "find_plan", "plan_task", "find_simulation", "simulate_task",
-           "force_estimate_task"]
+           "force_estimate_task", "stiffness_task", "load_capacity_task"]
 
 #: Library field -> request path (``FieldContext.aliases``): the start is given as ``{"q": [...]}``.
 PLAN_ALIASES = (("start", "start.q"), ("q0", "start.q"))
@@ -73,3 +73,28 @@ def force_estimate_task(req: Any) -> dict[str, Any]:
                                                    if req.measured and isinstance(req.measured[0], bool)
                                                    else np.asarray(req.measured, dtype=int))
     return to.estimate_tip_force(m, q, sigma_q=_sigma(req.sigma_q), measured=measured).to_dict()
+
+
+def stiffness_task(req: Any) -> dict[str, Any]:
+    """``preloads_for_stiffness`` (``/v1/control/stiffness``; the killable solver process, like the design NLPs)."""
+    m = build_manipulator(req.manipulator)
+    bounds_K = None
+    if req.bounds_K is not None:
+        bounds_K = {k: tuple(v) for k, v in req.bounds_K.model_dump(exclude_none=True).items()}
+    bounds = None if req.bounds is None else (_per_spring(req.bounds.lo), _per_spring(req.bounds.hi))
+    try:
+        d = to.preloads_for_stiffness(m, req.target, K_desired=req.K_desired, bounds_K=bounds_K,
+                                      eig_bounds=None if req.eig_bounds is None else tuple(req.eig_bounds),
+                                      load=req.load, end_angle=req.end_angle, margin=req.margin, bounds=bounds,
+                                      max_starts=req.max_starts)
+    except to.InfeasibleDesignError as exc:
+        raise _best_as_json(exc) from None
+    return d.to_dict()
+
+
+def load_capacity_task(req: Any, deadline: float) -> dict[str, Any]:
+    """``load_capacity`` (``/v1/control/load-capacity``) within the soft ``deadline``."""
+    m = build_manipulator(req.manipulator)
+    pose = None if req.start is None else np.asarray(req.start.q, dtype=float)
+    return to.load_capacity(m, pose, base=req.base, directions=req.directions, boundary=req.boundary,
+                            max_load=req.max_load, timeout=_seconds_left(deadline)).to_dict()

@@ -39,6 +39,9 @@ MAX_ATLAS_AXIS = 3
 CONTROL_PATHS = ("/v1/control/plan", "/v1/control/simulate", "/v1/plots/plan", "/v1/plots/simulation")
 CONTROL_SERIES = ("targets", "loads", "preloads", "end_angles")
 MAX_CONTROL_STEPS = 4
+#: Stiffness shaping (an IPOPT solve per arm shape tried) and load capacity (a limit-load path per direction).
+COST_CAPS = {"/v1/control/stiffness": {"max_starts": 1},
+             "/v1/control/load-capacity": {"directions": 4, "max_load": 2.0}}
 
 
 def _small_n(v: Any, cap: int, positive: bool) -> Any:
@@ -90,6 +93,10 @@ def map_case(ctx, case):
                     case.body[key] = v[:MAX_ATLAS_AXIS]
                 elif isinstance(v, dict) and isinstance(v.get("num"), int) and v["num"] > MAX_ATLAS_AXIS:
                     case.body[key] = {**v, "num": MAX_ATLAS_AXIS}
+        for key, cap in COST_CAPS.get(case.operation.path, {}).items() if positive else ():
+            v = case.body.get(key)
+            if isinstance(v, (int, float)) and not isinstance(v, bool) and v > cap:
+                case.body[key] = type(v)(cap)
         if case.operation.path in CONTROL_PATHS:
             # a sample's preloads: as many pairs as the (shrunk) chain has segments; valid either way (1..200), so
             # shrunk in negative cases too (a sample count over the cap then stays under the body size limit)

@@ -324,3 +324,29 @@ def test_the_plan_process_carries_large_calls_and_replies_on_uvloop():
             lane.close()
 
     uvloop.run(main())
+
+
+# ---------------------------------------------------------------------------- stiffness shaping, load capacity
+def test_stiffness_and_load_capacity_are_the_library_calls(client):
+    body = {"manipulator": PAPER, "target": [7.0, 1.0], "eig_bounds": [0.04, 0.6]}
+    got = post_ok(client, "/v1/control/stiffness", body)
+    want = to.preloads_for_stiffness(M, (7.0, 1.0), eig_bounds=(0.04, 0.6))
+    np.testing.assert_allclose(got["rest_lengths"], want.rest_lengths, atol=1e-9)
+    np.testing.assert_allclose(got["K"], want.K, atol=1e-9)
+    assert min(got["eigenvalues"]) >= 0.04 - 1e-6 and max(got["eigenvalues"]) <= 0.6 + 1e-6
+    got = post_ok(client, "/v1/control/load-capacity", {"manipulator": PAPER, "directions": 4, "max_load": 2.0})
+    # the straight chain compressed along -x buckles at the free critical load; the other directions have no limit
+    assert got["kinds"] == ["none", "none", "bifurcation", "none"]
+    assert got["loads"][2] == pytest.approx(abs(to.critical_force(M, "free").force), rel=1e-9)
+
+
+def test_stiffness_and_load_capacity_refusals_name_the_field(client):
+    r = client.post("/v1/control/stiffness", json={"manipulator": PAPER, "target": [7.0, 1.0],
+                                                   "bounds_K": {"kxx": [None, 0.1], "kyy": [0.08, None]}})
+    assert r.status_code == 422 and r.json()["code"] == "design_infeasible"
+    r = client.post("/v1/control/stiffness", json={"manipulator": PAPER, "target": [7.0, 1.0], "eig_bounds": [1.0]})
+    assert r.status_code == 422 and r.json()["errors"][0]["field"] == "eig_bounds"
+    r = client.post("/v1/control/load-capacity", json={"manipulator": PAPER, "start": {"q": [3.0, 0.0, 0.0, 0.0]}})
+    assert r.status_code == 422 and r.json()["field"] == "start.q"
+    r = client.post("/v1/control/load-capacity", json={"manipulator": PAPER, "directions": 0})
+    assert r.status_code == 422 and r.json()["errors"][0]["field"] == "directions"

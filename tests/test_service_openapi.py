@@ -46,6 +46,7 @@ def test_every_operation_is_documented():
                 ("/v1/limit-load", "post"), ("/v1/stability-boundary", "post"),
                 ("/v1/atlas", "post"),
                 ("/v1/control/plan", "post"), ("/v1/control/simulate", "post"), ("/v1/control/force-estimate", "post"),
+                ("/v1/control/stiffness", "post"), ("/v1/control/load-capacity", "post"),
                 *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map", "branch",
                                                              "limit-load", "boundary", "atlas", "plan", "simulation")),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),

@@ -16,8 +16,8 @@ from fastapi import APIRouter, Body, Depends, Request
 from .. import examples as ex
 from .. import schemas as s
 from ..config import Settings
-from ..control_compute import (PLAN_ALIASES, SIMULATION_ALIASES, force_estimate_task, plan_task,
-                               simulate_task)
+from ..control_compute import (PLAN_ALIASES, SIMULATION_ALIASES, force_estimate_task, load_capacity_task, plan_task,
+                               simulate_task, stiffness_task)
 from ..deps import (check_manipulator, check_trajectory_steps, get_settings_dep, is_heavy, path_deadline, solve,
                     solve_heavy)
 from . import solve_responses
@@ -154,3 +154,47 @@ async def control_force_estimate(
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     return await solve(request, force_estimate_task, req, ctx=ctx, heavy=is_heavy(settings, req.manipulator))
+
+
+@router.post(
+    "/stiffness", operation_id="control_stiffness", response_model=s.StiffnessDesignOut,
+    summary="Rest lengths for a stable pose with a shaped tip stiffness (variable stiffness)",
+    description="Rest lengths putting the tip at `target`, stable under the dead `load`, with the Cartesian tangent "
+                "stiffness of the free tip (`K = (J H^-1 J^T)^-1`, as `/v1/stiffness`) equal to `K_desired` (the "
+                "closest where it cannot be reached: `exact`, `residual`), or inside `bounds_K` (per entry) and "
+                "`eig_bounds` (both eigenvalues) (`tensegrity_opt.preloads_for_stiffness`: IPOPT from the target's "
+                "equilibria, `max_starts` shapes). Verified by the forward solve and `cartesian_stiffness`. Bounds "
+                "that cannot be met: 422 `design_infeasible` with the least-violation point in `best`.",
+    responses=solve_responses(ex.PRELOADS, "design_infeasible", "unreachable_target"))
+async def control_stiffness(
+    request: Request,
+    req: Annotated[s.StiffnessDesignRequest, Body(openapi_examples={
+        "eigenvalues": {"summary": "the paper's chain, tip at (7, 1), both stiffness eigenvalues in [0.04, 0.6]",
+                        "value": {"manipulator": _M, "target": [7.0, 1.0], "eig_bounds": [0.04, 0.6]}},
+        "exact": {"summary": "a decoupled stiffness diag(0.4, 0.03)", "value": {
+            "manipulator": _M, "target": [7.0, 1.0], "K_desired": [[0.4, 0.0], [0.0, 0.03]]}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = check_manipulator(req.manipulator, settings)
+    return await solve_heavy(request, stiffness_task, req, ctx=ctx)
+
+
+@router.post(
+    "/load-capacity", operation_id="control_load_capacity", response_model=s.LoadCapacityOut,
+    summary="How much more tip load a stable pose carries, per direction (a polar curve)",
+    description="For each of `directions` evenly spaced unit directions `d`, the dead-load path `F = base + t d` "
+                "from the pose (`start`, a stable equilibrium under `base`; default the least-energy rest "
+                "configuration) followed by arclength continuation until it first loses stability: a fold (snap) "
+                "or a bifurcation (buckling) (`tensegrity_opt.load_capacity`). `loads` is null where the path stays "
+                "stable up to a joint's range bound or `max_load` (`reasons`). Computed within the server's time limit: "
+                "directions not reached answer `reasons: \"time_limit\"`.",
+    responses=solve_responses(ex.PRELOADS, "no_equilibrium"))
+async def control_load_capacity(
+    request: Request,
+    req: Annotated[s.LoadCapacityRequest, Body(openapi_examples={
+        "paper": {"summary": "the straight paper chain: buckles at 0.0761 under compression", "value": {
+            "manipulator": _M, "directions": 8, "max_load": 2.0}}})],
+    settings: Annotated[Settings, Depends(get_settings_dep)],
+) -> Any:
+    ctx = replace(check_manipulator(req.manipulator, settings), aliases=(("pose", "start.q"), *PLAN_ALIASES))
+    return await solve(request, load_capacity_task, req, path_deadline(settings), ctx=ctx, heavy=True)

@@ -346,3 +346,97 @@ class ForceEstimateOut(BaseModel):
 __all__ = ["PlanRequest", "PlanOut", "RestLengthBoundsIn", "SimulationRequest", "SimulationOut",
            "SimulationEventOut", "ForceEstimateRequest", "ForceEstimateOut", "PLAN_REQUEST_EXAMPLE",
            "SIMULATION_REQUEST_EXAMPLE", "BISTABLE_CHAIN", "MAX_STEPS"]
+
+
+# ---------------------------------------------------------------------------- stiffness shaping, load capacity
+Stiffness = Annotated[float, Field(ge=-MAX_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan=False)]
+StiffnessBound = Annotated[list[Stiffness | None], Field(min_length=2, max_length=2,
+                                                         description="[lo, hi]; null for an open side")]
+
+
+class StiffnessBoundsIn(BaseModel):
+    """Bounds on the entries of the tip's Cartesian stiffness (force / length)."""
+
+    model_config = _STRICT
+    kxx: StiffnessBound | None = None
+    kxy: StiffnessBound | None = None
+    kyy: StiffnessBound | None = None
+
+
+class StiffnessDesignRequest(BaseModel):
+    """Rest lengths for a stable pose at `target` with a shaped tip stiffness (`preloads_for_stiffness`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [
+        {"manipulator": PAPER_CHAIN, "target": [7.0, 1.0], "eig_bounds": [0.04, 0.6]}]})
+
+    manipulator: DesignManipulatorIn
+    target: Position = Field(description="tip position [x, y] (length units)")
+    K_desired: Annotated[list[Annotated[list[Stiffness], Field(min_length=2, max_length=2)]],
+                         Field(min_length=2, max_length=2)] | None = Field(
+        None, description="the wanted 2 x 2 stiffness (symmetric; met exactly where reachable, else the closest in "
+                          "the Frobenius norm: `exact`, `residual`)")
+    bounds_K: StiffnessBoundsIn | None = Field(None, description="bounds on kxx, kxy, kyy")
+    eig_bounds: StiffnessBound | None = Field(None, description="bounds [lo, hi] on both eigenvalues of K")
+    load: Vec2 = Field([0.0, 0.0], description="the dead tip load [fx, fy] (force units)")
+    end_angle: Angle | None = Field(None, description="the last link's absolute angle (rad), optional")
+    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
+        1e-3, description="required smallest eigenvalue of the joint-space Hessian (torque / rad)")
+    bounds: RestLengthBoundsIn | None = Field(None, description="bounds on the rest lengths; default "
+                                                                "(0.1 b_min, 4 b_max)")
+    max_starts: Annotated[int, Field(ge=1, le=16), BeforeValidator(integral)] = Field(
+        4, description="arm shapes tried (the target's equilibria, stable first)")
+
+
+class StiffnessDesignOut(BaseModel):
+    """`StiffnessDesign.to_dict()`: verified by the forward solve and `cartesian_stiffness`."""
+
+    manipulator: dict[str, Any]
+    rest_lengths: list[list[float]] = Field(description="[L1_0, L2_0] per segment")
+    q: list[float]
+    tip: list[float]
+    K: list[list[float]] = Field(description="the verified Cartesian stiffness (force / length)")
+    eigenvalues: list[float]
+    margin: float
+    residual: float = Field(description="|K - K_desired|_F / |K_desired|_F, or the largest bound violation (0)")
+    exact: bool
+    load: list[float]
+    K_desired: list[list[float]] | None
+    bounds_K: dict[str, list[float | None]]
+    eig_bounds: list[float | None] | None
+    solver: dict[str, Any]
+
+
+class LoadCapacityRequest(BaseModel):
+    """The largest extra tip load per direction before a stable pose loses stability (`load_capacity`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [
+        {"manipulator": PAPER_CHAIN, "directions": 8, "max_load": 2.0}]})
+
+    manipulator: ManipulatorIn
+    start: StartQ | None = Field(None, description='{"q": [...]}: the pose (a stable equilibrium under `base`); null: '
+                                                   "the least-energy rest configuration")
+    base: Vec2 = Field([0.0, 0.0], description="the load the pose carries [fx, fy] (force units)")
+    directions: Annotated[int, Field(ge=1, le=360), BeforeValidator(integral)] = Field(
+        36, description="how many evenly spaced directions")
+    boundary: Literal["free", "guided"] = "free"
+    max_load: Annotated[float, Field(gt=0, le=1e4, allow_inf_nan=False)] = Field(
+        10.0, description="each path is followed up to this extra load (force units)")
+
+
+class LoadCapacityOut(BaseModel):
+    """`LoadCapacity.to_dict()`: a polar curve of the pose's load capacity."""
+
+    angles: list[float] = Field(description="direction angles (rad)")
+    directions: list[list[float]]
+    loads: list[float | None] = Field(description="the extra load at the first loss of stability (null: none)")
+    forces: list[list[float | None]] = Field(description="the total tip force there")
+    kinds: list[str] = Field(description="fold, bifurcation or none")
+    reasons: list[str | None]
+    end_loads: list[float]
+    base: list[float]
+    boundary: str
+    max_load: float
+    weakest: dict[str, float] | None
+    start: dict[str, Any]
+    manipulator: dict[str, Any]
+    success: bool
