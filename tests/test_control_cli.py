@@ -152,7 +152,8 @@ def test_errors_are_one_line_and_exit_2(capsys, tmp_path):
 def test_every_option_of_the_control_commands_has_help_and_its_default(capsys):
     sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
     plot = next(a for a in sub.choices["plot"]._actions if isinstance(a, argparse._SubParsersAction))
-    parsers = {cmd: sub.choices[cmd] for cmd in ("plan", "simulate", "force-estimate")}
+    parsers = {cmd: sub.choices[cmd] for cmd in ("plan", "simulate", "force-estimate", "stiffness-design",
+                                                 "load-capacity")}
     parsers.update({f"plot {k}": plot.choices[k] for k in ("plan", "simulation")})
     for name, p in parsers.items():
         opts = [a for a in p._actions if a.option_strings and a.dest != "help"]
@@ -167,3 +168,15 @@ def test_every_option_of_the_control_commands_has_help_and_its_default(capsys):
         main(["simulate", "--help"])
     out = " ".join(capsys.readouterr().out.split())
     assert "(default: free)" in out and "(default: [0.0, 1.0])" in out and "(default: 0.0001)" in out
+
+
+def test_stiffness_design_and_load_capacity(capsys):
+    got = run_json(capsys, ["stiffness-design", "--target", "7", "1", "--eig-bounds", "0.04", "0.6"])
+    want = to.preloads_for_stiffness(M, (7.0, 1.0), eig_bounds=(0.04, 0.6))
+    np.testing.assert_allclose(got["rest_lengths"], want.rest_lengths, atol=1e-9)
+    got = run_json(capsys, ["load-capacity", "--directions", "4", "--max-load", "2"])
+    assert got["kinds"] == ["none", "none", "bifurcation", "none"]
+    assert got["loads"][2] == pytest.approx(abs(to.critical_force(M, "free").force), rel=1e-9)
+    with pytest.raises(SystemExit) as e:
+        main(["load-capacity", "--directions", "0"])
+    assert e.value.code == 2 and "--directions" in capsys.readouterr().err

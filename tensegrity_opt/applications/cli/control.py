@@ -37,6 +37,7 @@ import numpy as np
 from ...analyses.force_sensor import estimate_tip_force
 from ...analyses.preload_control import OBJECTIVES, PreloadPlan, plan_preloads
 from ...analyses.simulation import Simulation, simulate
+from ...analyses.stiffness_design import load_capacity, preloads_for_stiffness
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .common import HELP_FORMAT, add_manipulator_options, finite_float, fmt_q, positive_int
@@ -361,8 +362,33 @@ def _cmd_force_estimate(args: argparse.Namespace, m: Manipulator) -> tuple[Any, 
     return est.to_dict, "\n".join(lines)
 
 
+def _cmd_stiffness(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    K = None if args.K is None else np.array([[args.K[0], args.K[1]], [args.K[1], args.K[2]]])
+    d = preloads_for_stiffness(m, tuple(args.target), K_desired=K,
+                               eig_bounds=None if args.eig_bounds is None else tuple(args.eig_bounds),
+                               load=tuple(args.load), margin=args.margin)
+    lines = [f"Rest lengths for the tip at ({args.target[0]:g}, {args.target[1]:g}) under {tuple(args.load)}, n = {m.n}: "
+             f"{d.status}" + ("" if d.exact or K is None else f", not exact (residual {d.residual:.3g})"),
+             f"K = [[{d.K[0, 0]:.6g}, {d.K[0, 1]:.6g}], [{d.K[1, 0]:.6g}, {d.K[1, 1]:.6g}]] (force / length), "
+             f"eigenvalues {_fmt_g(d.eigenvalues)}, margin {d.margin:.4g}",
+             "rest lengths (L1_0, L2_0) per segment: " + "; ".join(f"{a:.6g}, {b:.6g}" for a, b in d.rest_lengths),
+             f"configuration q = {fmt_q(d.q)}"]
+    return d.to_dict, "\n".join(lines)
+
+
+def _cmd_load_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    cap = load_capacity(m, None, base=tuple(args.base), directions=args.directions, boundary=args.boundary,
+                        max_load=args.max_load)
+    lines = [f"Load capacity of the rest pose (n = {m.n}, {args.boundary} tip, base load {tuple(args.base)}), "
+             f"up to {args.max_load:g} more:", "  angle (deg)    load        kind          why"]
+    for a, ld, k, r in zip(cap.angles, cap.loads, cap.kinds, cap.reasons):
+        lines.append(f"  {math.degrees(a):9.2f}   {'-' if not math.isfinite(ld) else f'{ld:.6g}':>10}  {k:12}  {r or ''}")
+    return cap.to_dict, "\n".join(lines)
+
+
 def add_control_parsers(subparsers: Any) -> None:
-    """Add ``plan``, ``simulate`` and ``force-estimate`` to ``subparsers`` (``add_subparsers()``'s result)."""
+    """Add ``plan``, ``simulate``, ``force-estimate``, ``stiffness-design`` and ``load-capacity`` to ``subparsers``
+    (``add_subparsers()``'s result)."""
 
     def common(sp: argparse.ArgumentParser) -> None:
         add_manipulator_options(sp)
@@ -393,3 +419,28 @@ def add_control_parsers(subparsers: Any) -> None:
     sp.add_argument("--measured", type=_joint_index, nargs="+", default=None, metavar="J",
                     help="the measured joints (0-based); None: all")
     sp.set_defaults(func=_cmd_force_estimate)
+
+    sp = subparsers.add_parser("stiffness-design", formatter_class=HELP_FORMAT,
+                               help="rest lengths for a stable pose with a shaped tip stiffness")
+    common(sp)
+    sp.add_argument("--target", type=finite_float, nargs=2, required=True, metavar=("X", "Y"),
+                    help="tip position (length)")
+    sp.add_argument("--K", type=finite_float, nargs=3, default=None, metavar=("KXX", "KXY", "KYY"),
+                    help="the wanted stiffness (force / length); None: only --eig-bounds")
+    sp.add_argument("--eig-bounds", type=finite_float, nargs=2, default=None, metavar=("LO", "HI"),
+                    help="bounds on both stiffness eigenvalues (force / length)")
+    sp.add_argument("--load", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
+                    help="dead tip load (force)")
+    sp.add_argument("--margin", type=_non_negative_float, default=1e-3,
+                    help="required smallest eigenvalue of the joint-space Hessian (torque / rad)")
+    sp.set_defaults(func=_cmd_stiffness)
+
+    sp = subparsers.add_parser("load-capacity", formatter_class=HELP_FORMAT,
+                               help="how much more tip load the rest pose carries, per direction")
+    common(sp)
+    sp.add_argument("--directions", type=positive_int, default=8, help="evenly spaced directions")
+    sp.add_argument("--base", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
+                    help="the load the pose already carries (force)")
+    sp.add_argument("--boundary", choices=("free", "guided"), default="free", help="tip boundary condition")
+    sp.add_argument("--max-load", type=_positive_float, default=10.0, help="follow each path up to this extra load")
+    sp.set_defaults(func=_cmd_load_capacity)
