@@ -151,3 +151,26 @@ def test_validation_names_the_field():
     with pytest.raises(to.InvalidParameterError) as e:
         PreloadController(PAPER).step([7.0, 0.5], end_angle=float("inf"))
     assert e.value.field == "end_angle"
+
+
+def test_where_the_least_change_rule_would_snap_the_plan_stays_stable_on_its_branch():
+    """A bistable chain's tip pushed along a line: the least-change rest lengths (SLSQP on the reference model,
+    step after step) lose stability on the way (the arm would snap); the plan keeps the margin, stable by the
+    reference Hessian at every step, on one continuous branch."""
+    m, F = BISTABLE, np.zeros(2)
+    ctl = PreloadController(m)
+    tip0 = m.tip(ctl.q)
+    K = 40
+    traj = np.array([tip0 + np.array([-1.0, 2.0]) * k / (K - 1) for k in range(K)])
+    q, ell, worst = ctl.q.copy(), ctl.ell.copy(), np.inf
+    for k in range(1, K):
+        q, ell = _slsqp_step(m, ell, q, traj[k], F)
+        worst = min(worst, float(np.linalg.eigvalsh(ref_chain(m, ell).lagrangian_hess(q, F))[0]))
+    assert worst < -0.05                                  # the least-change path loses stability
+    need = 0.05
+    plan = plan_preloads(m, traj, F, margin=need)
+    assert plan.feasible.all() and plan.verified.all() and "ipopt" in plan.method
+    for k in range(K):
+        w = np.linalg.eigvalsh(ref_chain(m, plan.rest_lengths[k]).lagrangian_hess(plan.q[k], F))
+        assert w[0] >= need - 1e-6
+    assert np.abs(np.diff(plan.q, axis=0)).max() < 0.2   # continuous: no jump to another well between steps

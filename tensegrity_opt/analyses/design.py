@@ -31,7 +31,7 @@ from ..numerics import RANGE_SHRINK, chain_solver
 from ..serialize import nullable, number, numbers
 from ..timelimit import time_limit as _time_limit
 from .buckling import critical_force, straight_matrices
-from .equilibrium import Equilibrium, solve_equilibrium_under_force
+from .equilibrium import Equilibrium, settle_under_force, solve_equilibrium_under_force
 from .least_energy import solve_equilibrium
 
 __all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
@@ -628,8 +628,11 @@ def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle
         raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
                                     best=best)
     m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
+    # the forward solve from the optimiser's q: Newton (IPOPT's own descent from an exact minimum near a joint
+    # bound can be pushed into another well by its barrier), IPOPT's descent where Newton does not settle
+    eq = settle_under_force(m_new, load, q)
     try:
-        eq = solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
+        eq = eq if eq is not None else solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
     except TimeLimitError:
         raise
     except TensegrityError as exc:

@@ -38,7 +38,7 @@ from ..serialize import number, numbers
 from .buckling import critical_force, tip_slope
 from .stability import analyse, inertia_of_reduced
 
-__all__ = ["Equilibrium", "solve_equilibrium_under_force", "make_equilibrium", "local_equilibrium",
+__all__ = ["settle_under_force", "Equilibrium", "solve_equilibrium_under_force", "make_equilibrium", "local_equilibrium",
            "is_equilibrium", "check_q0", "classify_result", "equilibrium_from", "straight_equilibrium", "one_segment_equilibrium", "RESIDUAL_TOL"]
 
 
@@ -237,6 +237,17 @@ def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np
         if res.status == "Solved_To_Acceptable_Level":
             res.success = False
     return res
+
+
+def settle_under_force(m: Manipulator, force, q0) -> Equilibrium | None:
+    """The stable equilibrium under the dead tip load ``force`` that Newton reaches from ``q0`` (the forward
+    quasi-static solve from a nearby state), or None when Newton does not converge inside the range onto a
+    stable point (the caller then descends, e.g. :func:`solve_equilibrium_under_force`)."""
+    res = chain_solver(m).newton_force(np.asarray(force, dtype=float), np.asarray(q0, dtype=float))
+    if not is_equilibrium(m, res):
+        return None
+    eq = make_equilibrium(m, res, constrained=False)
+    return eq if eq.stable else None
 
 
 def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=None) -> Equilibrium:

@@ -45,7 +45,7 @@ from ..numerics.inverse_statics import inverse_statics
 from ..serialize import nullable, number, numbers
 from ..timelimit import expired, time_limit
 from .design import choose_preloads
-from .equilibrium import Equilibrium, check_q0, solve_equilibrium_under_force
+from .equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 
 __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "OBJECTIVES"]
 
@@ -443,9 +443,12 @@ def plan_preloads(m: Manipulator, targets, loads=None, *, end_angles=None, bound
 def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:
     """The forward quasi-static solve from the previous configuration with the step's rest lengths lands on
     the target, stable."""
-    try:
-        eq = solve_equilibrium_under_force(ctl.manipulator(st.rest_lengths.ravel()), *F, q0=q_prev)
-    except TensegrityError:
-        return False
+    m = ctl.manipulator(st.rest_lengths.ravel())
+    eq = settle_under_force(m, F, q_prev)        # Newton from the previous state; IPOPT's descent if it fails
+    if eq is None:
+        try:
+            eq = solve_equilibrium_under_force(m, *F, q0=q_prev)
+        except TensegrityError:
+            return False
     return bool(eq.stable) and float(np.max(np.abs(eq.tip - st.target))) <= LAND_TOL * ctl.scale \
         and float(np.max(np.abs(eq.q - st.q))) <= 1e-6
