@@ -31,9 +31,11 @@ LIMITS = {"dx": 21, "q": 101, "targets": 10, "values_x": 6, "values_y": 6, "poin
 MAX_NUM = 21
 MAX_GRID = 21
 MAX_JOB_VALUES = 3
-#: The inline atlas (~0.1 s a target, its edges as much again): 3 values per axis.
+#: The inline atlas (~0.1 s a target, its edges as much again): 2 values per axis (3 x 3 took ~150 s of the run).
 ATLAS_PATHS = ("/v1/atlas", "/v1/plots/atlas")
-MAX_ATLAS_AXIS = 3
+MAX_ATLAS_AXIS = 2
+#: Figures: the PNG's resolution is most of a figure's cost (measured: the plot operations were ~60% of the run).
+MAX_DPI = 30
 #: The control trajectories (a plan step: ~1 ms by Newton, up to ~0.1 s by IPOPT; a simulation step up to ~0.5 s when
 #: a wild load makes its branch long): 4 steps of each per-step list.
 CONTROL_PATHS = ("/v1/control/plan", "/v1/control/simulate", "/v1/plots/plan", "/v1/plots/simulation")
@@ -86,6 +88,11 @@ def map_case(ctx, case):
         meta = case.meta
         positive = meta is None or not meta.generation.mode.is_negative
         case.body = _bound(body, positive, MAX_N)
+        if positive and case.operation.path.startswith("/v1/plots/") and isinstance(case.body.get("dpi"), (int, float)) \
+                and not isinstance(case.body["dpi"], bool) and case.body["dpi"] > MAX_DPI:
+            case.body["dpi"] = MAX_DPI
+        if positive and case.operation.path.startswith("/v1/plots/") and "dpi" not in case.body:
+            case.body["dpi"] = MAX_DPI
         if positive and case.operation.path in ATLAS_PATHS:
             for key in ("dx", "dy"):
                 v = case.body.get(key)
