@@ -438,22 +438,14 @@ def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bo
     (4, True)
     """
     X, Y = _check(m, dx, dy, method)
-    t0 = time.perf_counter()
     targets = [[AtlasTarget(float(x), float(y), error="time_limit: not computed") for x in X] for y in Y]
-    out = StabilityAtlas(X, Y, targets, [], [], "complete", 0.0, method)
-    try:
-        with time_limit(timeout):
-            for j, y in enumerate(Y):
-                for i, x in enumerate(X):
-                    targets[j][i] = atlas_target(m, x, y, method=method)
-            if edges:
-                _edges(m, out)
-    except TimeLimitError:
-        out.status = "time_limit"
-    if out.status == "complete" and (out.unresolved or any(not t.ok for row in targets for t in row)):
-        out.status = "partial"
-    out.seconds = time.perf_counter() - t0
-    return out
+
+    def fill() -> None:
+        for j, y in enumerate(Y):
+            for i, x in enumerate(X):
+                targets[j][i] = atlas_target(m, x, y, method=method)
+
+    return _run(m, StabilityAtlas(X, Y, targets, [], [], "complete", 0.0, method), fill, edges, timeout)
 
 
 def assemble_atlas(m: Manipulator, targets: list, *, edges: bool = True,
@@ -474,15 +466,22 @@ def assemble_atlas(m: Manipulator, targets: list, *, edges: bool = True,
         grid[int(np.searchsorted(Y, t.dy))][int(np.searchsorted(X, t.dx))] = t
     if any(v is None for row in grid for v in row):
         raise InvalidParameterError("targets repeat a grid point", field="targets")
+    return _run(m, StabilityAtlas(X, Y, grid, [], [], "complete", 0.0, targets[0].method or "search"), None, edges,
+                timeout)
+
+
+def _run(m: Manipulator, out: StabilityAtlas, fill, edges: bool, timeout: float | None) -> StabilityAtlas:
+    """Fill the targets (``fill``, or None when given), analyse the edges, within ``timeout``; the status."""
     t0 = time.perf_counter()
-    out = StabilityAtlas(X, Y, grid, [], [], "complete", 0.0, targets[0].method or "search")
     try:
         with time_limit(timeout):
+            if fill is not None:
+                fill()
             if edges:
                 _edges(m, out)
     except TimeLimitError:
         out.status = "time_limit"
-    if out.status == "complete" and (out.unresolved or any(not t.ok for row in grid for t in row)):
+    if out.status == "complete" and (out.unresolved or any(not t.ok for row in out.targets for t in row)):
         out.status = "partial"
     out.seconds = time.perf_counter() - t0
     return out
