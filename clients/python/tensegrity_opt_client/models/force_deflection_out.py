@@ -1,0 +1,143 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..models.force_deflection_out_reference import ForceDeflectionOutReference
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.branch_out import BranchOut
+    from ..models.curve_point import CurvePoint
+    from ..models.jump_out import JumpOut
+
+
+T = TypeVar("T", bound="ForceDeflectionOut")
+
+
+@_attrs_define
+class ForceDeflectionOut:
+    """
+    Attributes:
+        branches (list[BranchOut]): branch = "all" only (else empty)
+        jumps (list[JumpOut]):
+        points (list[CurvePoint]):
+        origin (list[float] | Unset): the reference tip's deflection from the straight tip (add it to dx, dy for the
+            deflection from straight)
+        reference (ForceDeflectionOutReference | Unset): what dx, dy are measured from Default:
+            ForceDeflectionOutReference.STRAIGHT.
+    """
+
+    branches: list[BranchOut]
+    jumps: list[JumpOut]
+    points: list[CurvePoint]
+    origin: list[float] | Unset = UNSET
+    reference: ForceDeflectionOutReference | Unset = ForceDeflectionOutReference.STRAIGHT
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        branches = []
+        for branches_item_data in self.branches:
+            branches_item = branches_item_data.to_dict()
+            branches.append(branches_item)
+
+        jumps = []
+        for jumps_item_data in self.jumps:
+            jumps_item = jumps_item_data.to_dict()
+            jumps.append(jumps_item)
+
+        points = []
+        for points_item_data in self.points:
+            points_item = points_item_data.to_dict()
+            points.append(points_item)
+
+        origin: list[float] | Unset = UNSET
+        if not isinstance(self.origin, Unset):
+            origin = self.origin
+
+        reference: str | Unset = UNSET
+        if not isinstance(self.reference, Unset):
+            reference = self.reference.value
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "branches": branches,
+                "jumps": jumps,
+                "points": points,
+            }
+        )
+        if origin is not UNSET:
+            field_dict["origin"] = origin
+        if reference is not UNSET:
+            field_dict["reference"] = reference
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.branch_out import BranchOut  # noqa: PLC0415
+        from ..models.curve_point import CurvePoint  # noqa: PLC0415
+        from ..models.jump_out import JumpOut  # noqa: PLC0415
+
+        d = dict(src_dict)
+        branches = []
+        _branches = d.pop("branches")
+        for branches_item_data in _branches:
+            branches_item = BranchOut.from_dict(branches_item_data)
+
+            branches.append(branches_item)
+
+        jumps = []
+        _jumps = d.pop("jumps")
+        for jumps_item_data in _jumps:
+            jumps_item = JumpOut.from_dict(jumps_item_data)
+
+            jumps.append(jumps_item)
+
+        points = []
+        _points = d.pop("points")
+        for points_item_data in _points:
+            points_item = CurvePoint.from_dict(points_item_data)
+
+            points.append(points_item)
+
+        origin = cast(list[float], d.pop("origin", UNSET))
+
+        _reference = d.pop("reference", UNSET)
+        reference: ForceDeflectionOutReference | Unset
+        if isinstance(_reference, Unset):
+            reference = UNSET
+        else:
+            reference = ForceDeflectionOutReference(_reference)
+
+        force_deflection_out = cls(
+            branches=branches,
+            jumps=jumps,
+            points=points,
+            origin=origin,
+            reference=reference,
+        )
+
+        force_deflection_out.additional_properties = d
+        return force_deflection_out
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties
