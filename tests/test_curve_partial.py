@@ -15,10 +15,10 @@ import reference_model as ref
 from fastapi.testclient import TestClient
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.equilibrium import straight_equilibrium
 from service import schemas as s
 from service.config import Settings
 from service.main import create_app
+from tensegrity_opt.analyses.equilibrium import straight_equilibrium
 
 PAPER = to.Manipulator.uniform(4)
 PAPER_REF = ref.Chain.uniform(4, 1.0, 1.0, 1.0, 1.0)
@@ -68,7 +68,7 @@ def test_partial_curve_ends_where_the_reference_model_finds_no_stable_equilibriu
     assert c.q.shape == (63, 4) and len(c.shape) == len(c.status) == 63
     assert c.stable.all() and c.status[0] == "straight" and set(c.status[1:]) == {"Newton_Converged"}
     # the last point: the reference model's many-start least-energy stable equilibrium, same energy and force
-    E_ref, q_ref, F_ref = PAPER_REF.global_min(c.dx[-1], 0.0, n_random=60)
+    E_ref, _, F_ref = PAPER_REF.global_min(c.dx[-1], 0.0, n_random=60)
     assert c.energy[-1] == pytest.approx(E_ref, rel=1e-9)
     np.testing.assert_allclose([c.fx[-1], c.fy[-1]], F_ref, atol=1e-7)
     # the end: neither the reference descent nor its random-start Newton search finds a stable equilibrium
@@ -132,9 +132,8 @@ def test_partial_curve_from_the_rest_configuration_speaks_of_the_callers_deflect
 
 
 def test_the_time_limit_still_raises():
-    with to.time_limit(1e-9):
-        with pytest.raises(to.TimeLimitError):
-            to.force_deflection(PAPER, np.linspace(0.05, 1.0, 20))
+    with to.time_limit(1e-9), pytest.raises(to.TimeLimitError):
+        to.force_deflection(PAPER, np.linspace(0.05, 1.0, 20))
 
 
 # ------------------------------------------------------------------------------------------ jump kinds
@@ -162,7 +161,7 @@ def test_leaving_an_unstable_straight_chain_is_no_buckling_and_tensile():
     assert [j.kind for j in c.jumps] == ["leave_straight"]
     j = c.jumps[0]
     # the force after is the first deflected point's, from the reference model: tensile (the bent wells pull in)
-    E_ref, q_ref, F_ref = ref.Chain.uniform(4, a, b, k, L0).global_min(0.1, 0.0, n_random=40)
+    E_ref, _, F_ref = ref.Chain.uniform(4, a, b, k, L0).global_min(0.1, 0.0, n_random=40)
     assert c.energy[1] == pytest.approx(E_ref, rel=1e-9)
     np.testing.assert_allclose(j.force_after, F_ref, atol=1e-7)
     assert F_ref[0] > 0.5
@@ -174,7 +173,7 @@ def test_leaving_an_unstable_straight_chain_is_no_buckling_and_tensile():
 def test_leaving_the_straight_chain_off_the_axis_is_no_buckling():
     c = to.force_deflection(PAPER, [0.0, 0.2], [0.0, 0.3])
     assert [j.kind for j in c.jumps] == ["leave_straight"]
-    E_ref, _, F_ref = PAPER_REF.global_min(0.2, 0.3, n_random=40)
+    _, _, F_ref = PAPER_REF.global_min(0.2, 0.3, n_random=40)
     np.testing.assert_allclose(c.jumps[0].force_after, F_ref, atol=1e-7)
     assert "dy = 0.3" in c.jumps[0].label
 

@@ -60,7 +60,7 @@ def test_all_branches():
         assert len(set(b.morse_index[ok])) == 1          # each branch keeps its stability here
 
 
-def test_branch_switch_is_reported():
+def test_switch_to_the_mirror_branch_is_reported():
     """Sweeping dy from one side to the other: the selected U branch has to flip to its mirror."""
     dy = np.linspace(-0.6, 0.6, 25)
     c = force_deflection(PAPER, np.full(dy.size, 0.3), dy)

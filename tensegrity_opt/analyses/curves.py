@@ -41,7 +41,7 @@ equilibrium there: such points carry ``status = "straight_not_equilibrium"`` and
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 import numpy as np
@@ -98,6 +98,7 @@ class Jump:
 
     ``branch_before`` / ``branch_after`` are the branch identifiers (``-1``: the straight chain). Forces are
     the tip force holding the chain: ``fx > 0`` tensile, ``fx < 0`` compressive (conventions.md).
+    ``cause`` (``"leave_straight"`` only) says why it is no buckling, for :attr:`label`.
     """
 
     kind: str
@@ -109,6 +110,7 @@ class Jump:
     branch_after: int
     dy_before: float = 0.0
     dy_after: float = 0.0
+    cause: str = ""
 
     @property
     def delta(self) -> np.ndarray:
@@ -129,7 +131,7 @@ class Jump:
                 what = "return to the straight chain (buckling reversed)" if returning else \
                     "buckling of the straight chain"
             else:
-                why = f"dy = {_fmt(dy)}" if dy != 0.0 else "unstable unloaded: K <= 0"
+                why = self.cause or (f"dy = {_fmt(dy)}" if dy != 0.0 else "not a stable unloaded equilibrium")
                 what = f"{'return to' if returning else 'leaving'} the straight chain ({why})"
             parts = [f"F_x {_fmt(f0[0])} -> {_fmt(f1[0])}" + ("" if returning else _word(f1[0]))]
             if _changes(f0[1], f1[1]):
@@ -520,9 +522,9 @@ def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve
         e = cv.ended_at
         return Curve(**{**cv.__dict__, "dx": cv.dx - origin[0], "dy": cv.dy - origin[1], "reference": "rest",
                         "origin": origin.copy(),
-                        "jumps": [Jump(j.kind, j.dx_before - origin[0], j.dx_after - origin[0], j.force_before,
-                                       j.force_after, j.branch_before, j.branch_after, j.dy_before - origin[1],
-                                       j.dy_after - origin[1]) for j in cv.jumps],
+                        "jumps": [replace(j, dx_before=j.dx_before - origin[0], dx_after=j.dx_after - origin[0],
+                                          dy_before=j.dy_before - origin[1], dy_after=j.dy_after - origin[1])
+                                  for j in cv.jumps],
                         "branches": [shift(b) for b in cv.branches],
                         "ended_at": None if e is None else CurveEnd(float(e.dx), float(e.dy), e.reason, e.message)})
 
@@ -594,19 +596,23 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
             if not s0_ok:
                 continue
             d = j if a else j - 1                       # the deflected one of the two points
+            cause = ""
             if fx0 is not None and dys[d] == 0.0:
                 kind, limit = "buckling", np.array([fx0, s0.force[1]])
             else:
                 kind, limit = "leave_straight", F[d].copy()
+                cause = (f"dy = {_fmt(dys[d])}" if dys[d] != 0.0 else "unstable unloaded: K <= 0"
+                         if np.any(m.stiffness <= 0.0) else "not a stable unloaded equilibrium")
             before, after = (F[j - 1].copy(), limit) if a else (limit, F[j].copy())
         elif sel[j] != sel[j - 1]:
+            cause = ""
             prev = branches[sel[j - 1]]
             kind = "switch" if (prev.valid[j] and prev.stable[j]) else "snap"
             before, after = F[j - 1].copy(), F[j].copy()
         else:
             continue
         jumps.append(Jump(kind, float(dxs[j - 1]), float(dxs[j]), before, after, int(sel[j - 1]), int(sel[j]),
-                          float(dys[j - 1]), float(dys[j])))
+                          float(dys[j - 1]), float(dys[j]), cause))
     return Curve(dx=dxs.copy(), dy=dys.copy(), q=q, fx=F[:, 0].copy(), fy=F[:, 1].copy(), energy=E,
                  stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), status=status, jumps=jumps)
 
