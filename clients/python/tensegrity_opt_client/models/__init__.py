@@ -32,6 +32,7 @@ from .buckling_request_boundary import BucklingRequestBoundary
 from .control_out import ControlOut
 from .control_out_kind import ControlOutKind
 from .control_out_tip_type_0 import ControlOutTipType0
+from .curve_end_out import CurveEndOut
 from .curve_point import CurvePoint
 from .cusp_out import CuspOut
 from .deflection_range import DeflectionRange
@@ -238,6 +239,7 @@ __all__ = (
     "ControlOut",
     "ControlOutKind",
     "ControlOutTipType0",
+    "CurveEndOut",
     "CurvePoint",
     "CuspOut",
     "DeflectionRange",

@@ -23,6 +23,8 @@ class CurvePoint:
         q (list[float]):
         shape (str):
         stable (bool):
+        status (str): solver status: "straight", "straight_not_equilibrium" (asymmetric preloads: the straight point is
+            no equilibrium, stable false), or the solver's status of a converged equilibrium (e.g. "Newton_Converged")
     """
 
     branch: int
@@ -35,6 +37,7 @@ class CurvePoint:
     q: list[float]
     shape: str
     stable: bool
+    status: str
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -58,6 +61,8 @@ class CurvePoint:
 
         stable = self.stable
 
+        status = self.status
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
@@ -72,6 +77,7 @@ class CurvePoint:
                 "q": q,
                 "shape": shape,
                 "stable": stable,
+                "status": status,
             }
         )
 
@@ -100,6 +106,8 @@ class CurvePoint:
 
         stable = d.pop("stable")
 
+        status = d.pop("status")
+
         curve_point = cls(
             branch=branch,
             dx=dx,
@@ -111,6 +119,7 @@ class CurvePoint:
             q=q,
             shape=shape,
             stable=stable,
+            status=status,
         )
 
         curve_point.additional_properties = d

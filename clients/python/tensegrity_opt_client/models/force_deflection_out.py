@@ -11,6 +11,7 @@ from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
     from ..models.branch_out import BranchOut
+    from ..models.curve_end_out import CurveEndOut
     from ..models.curve_point import CurvePoint
     from ..models.jump_out import JumpOut
 
@@ -23,8 +24,13 @@ class ForceDeflectionOut:
     """
     Attributes:
         branches (list[BranchOut]): branch = "all" only (else empty)
+        complete (bool): every requested point was computed (ended_at is null)
+        ended_at (CurveEndOut | None): null when complete; else the first requested point where no stable equilibrium is
+            found: points holds only the points before it (the later ones are not computed)
         jumps (list[JumpOut]):
+        note (str): "" when complete, else a sentence saying where the curve ends and how many points it holds
         points (list[CurvePoint]):
+        requested (int): how many points were asked for (len(points) when complete)
         origin (list[float] | Unset): the reference tip's deflection from the straight tip (add it to dx, dy for the
             deflection from straight)
         reference (ForceDeflectionOutReference | Unset): what dx, dy are measured from Default:
@@ -32,27 +38,45 @@ class ForceDeflectionOut:
     """
 
     branches: list[BranchOut]
+    complete: bool
+    ended_at: CurveEndOut | None
     jumps: list[JumpOut]
+    note: str
     points: list[CurvePoint]
+    requested: int
     origin: list[float] | Unset = UNSET
     reference: ForceDeflectionOutReference | Unset = ForceDeflectionOutReference.STRAIGHT
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        from ..models.curve_end_out import CurveEndOut  # noqa: PLC0415
+
         branches = []
         for branches_item_data in self.branches:
             branches_item = branches_item_data.to_dict()
             branches.append(branches_item)
+
+        complete = self.complete
+
+        ended_at: dict[str, Any] | None
+        if isinstance(self.ended_at, CurveEndOut):
+            ended_at = self.ended_at.to_dict()
+        else:
+            ended_at = self.ended_at
 
         jumps = []
         for jumps_item_data in self.jumps:
             jumps_item = jumps_item_data.to_dict()
             jumps.append(jumps_item)
 
+        note = self.note
+
         points = []
         for points_item_data in self.points:
             points_item = points_item_data.to_dict()
             points.append(points_item)
+
+        requested = self.requested
 
         origin: list[float] | Unset = UNSET
         if not isinstance(self.origin, Unset):
@@ -67,8 +91,12 @@ class ForceDeflectionOut:
         field_dict.update(
             {
                 "branches": branches,
+                "complete": complete,
+                "ended_at": ended_at,
                 "jumps": jumps,
+                "note": note,
                 "points": points,
+                "requested": requested,
             }
         )
         if origin is not UNSET:
@@ -81,6 +109,7 @@ class ForceDeflectionOut:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.branch_out import BranchOut  # noqa: PLC0415
+        from ..models.curve_end_out import CurveEndOut  # noqa: PLC0415
         from ..models.curve_point import CurvePoint  # noqa: PLC0415
         from ..models.jump_out import JumpOut  # noqa: PLC0415
 
@@ -92,6 +121,23 @@ class ForceDeflectionOut:
 
             branches.append(branches_item)
 
+        complete = d.pop("complete")
+
+        def _parse_ended_at(data: object) -> CurveEndOut | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                ended_at_type_0 = CurveEndOut.from_dict(data)
+
+                return ended_at_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(CurveEndOut | None, data)
+
+        ended_at = _parse_ended_at(d.pop("ended_at"))
+
         jumps = []
         _jumps = d.pop("jumps")
         for jumps_item_data in _jumps:
@@ -99,12 +145,16 @@ class ForceDeflectionOut:
 
             jumps.append(jumps_item)
 
+        note = d.pop("note")
+
         points = []
         _points = d.pop("points")
         for points_item_data in _points:
             points_item = CurvePoint.from_dict(points_item_data)
 
             points.append(points_item)
+
+        requested = d.pop("requested")
 
         origin = cast(list[float], d.pop("origin", UNSET))
 
@@ -117,8 +167,12 @@ class ForceDeflectionOut:
 
         force_deflection_out = cls(
             branches=branches,
+            complete=complete,
+            ended_at=ended_at,
             jumps=jumps,
+            note=note,
             points=points,
+            requested=requested,
             origin=origin,
             reference=reference,
         )

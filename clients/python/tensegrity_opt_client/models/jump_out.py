@@ -17,30 +17,42 @@ T = TypeVar("T", bound="JumpOut")
 
 @_attrs_define
 class JumpOut:
-    """
+    """A force discontinuity between two consecutive points (in the order followed).
+
     Attributes:
-        branch_after (int):
-        branch_before (int):
+        branch_after (int): branch identifier after (-1: straight)
+        branch_before (int): branch identifier before (-1: straight)
+        delta (Force):
         dx_after (float):
         dx_before (float):
         force_after (Force):
         force_before (Force):
-        kind (JumpOutKind):
+        kind (JumpOutKind): "buckling": leaving (or returning to) the stable straight chain at dx -> 0+, dy = 0, from 0
+            to the guided critical force; "leave_straight": leaving (returning to) a straight chain that is not stable
+            unloaded (K <= 0) or at dy != 0, from the straight force to the deflected point's; "snap": the selected stable
+            branch ends or loses stability and the chain jumps to another stable branch; "switch": the least-energy stable
+            branch changes while the previous one is still stable
+        label (str): a sentence naming the jump with sign and size, e.g. "buckling of the straight chain: F_x 0 ->
+            -0.573 (compressive)"
     """
 
     branch_after: int
     branch_before: int
+    delta: Force
     dx_after: float
     dx_before: float
     force_after: Force
     force_before: Force
     kind: JumpOutKind
+    label: str
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
         branch_after = self.branch_after
 
         branch_before = self.branch_before
+
+        delta = self.delta.to_dict()
 
         dx_after = self.dx_after
 
@@ -52,17 +64,21 @@ class JumpOut:
 
         kind = self.kind.value
 
+        label = self.label
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
             {
                 "branch_after": branch_after,
                 "branch_before": branch_before,
+                "delta": delta,
                 "dx_after": dx_after,
                 "dx_before": dx_before,
                 "force_after": force_after,
                 "force_before": force_before,
                 "kind": kind,
+                "label": label,
             }
         )
 
@@ -77,6 +93,8 @@ class JumpOut:
 
         branch_before = d.pop("branch_before")
 
+        delta = Force.from_dict(d.pop("delta"))
+
         dx_after = d.pop("dx_after")
 
         dx_before = d.pop("dx_before")
@@ -87,14 +105,18 @@ class JumpOut:
 
         kind = JumpOutKind(d.pop("kind"))
 
+        label = d.pop("label")
+
         jump_out = cls(
             branch_after=branch_after,
             branch_before=branch_before,
+            delta=delta,
             dx_after=dx_after,
             dx_before=dx_before,
             force_after=force_after,
             force_before=force_before,
             kind=kind,
+            label=label,
         )
 
         jump_out.additional_properties = d

@@ -2,8 +2,10 @@ from enum import StrEnum
 
 
 class JumpOutKind(StrEnum):
-    BRANCH_SWITCH = "branch_switch"
     BUCKLING = "buckling"
+    LEAVE_STRAIGHT = "leave_straight"
+    SNAP = "snap"
+    SWITCH = "switch"
 
     def __str__(self) -> str:
         return str(self.value)
