@@ -1,7 +1,7 @@
 """The figures of the analysis pages (docs/analyses.md) that docs/figures.py does not draw.
 
 Run from the repository root: ``python docs/make_analysis_figures.py`` (about half a minute). Writes
-``docs/img/{buckling,stiffness,rest,limit_load,boundary,design,plan,simulation,force_estimate,
+``docs/img/{equilibrium,buckling,stiffness,rest,limit_load,boundary,design,plan,simulation,force_estimate,
 stiffness_design,load_capacity}.png`` at a low resolution (each well under 100 kB; they are committed).
 Every figure is the library's numbers for the example of its section, drawn with
 ``tensegrity_opt.applications.plots`` where it has the figure, with plain matplotlib (its object API, no
@@ -34,16 +34,22 @@ def _chain(ax, m: to.Manipulator, q, **kw) -> None:
     ax.plot(*g["centerline"].T, "-o", ms=3, **kw)
 
 
+def equilibrium() -> None:
+    eqs = [to.solve_equilibrium(PAPER, 0.1), to.solve_equilibrium(PAPER, 1.0, 0.5)]
+    _save(plots.plot_shapes(PAPER, 0.1, equilibria=eqs, ncols=2, panel_width=3.4), "equilibrium")
+
+
 def buckling() -> None:
     bk = to.critical_force(PAPER)
-    fig = plots._new_figure((9.0, 2.8))
-    axes = fig.subplots(1, 3)
+    fig = plots._new_figure((6.4, 5.4))
+    axes = fig.subplots(3, 1, sharex=True)
     for ax, md in zip(axes, bk.modes):
         _chain(ax, PAPER, 0.35 * md.q / np.abs(md.q).max(), color="tab:green" if md.stable else "tab:red")
-        ax.set_title(f"{md.shape} {md.signs}: P = {md.load:.4f}, mu_eq = {md.energy_factor:.4f}", fontsize=9)
-        ax.set_aspect("equal")
-        ax.set_xlabel("x")
-    axes[0].set_ylabel("y")
+        ax.set_title(f"{md.shape} {md.signs} ({'stable' if md.stable else 'unstable'}): P = {md.load:.6f}, "
+                     f"mu_eq = {md.energy_factor:.6f}", fontsize=9)
+        ax.set_ylim(-1.2, 1.2)
+        ax.set_ylabel("y")
+    axes[-1].set_xlabel("x")
     fig.suptitle("Buckling modes of the guided paper chain (amplitude arbitrary)", fontsize=10)
     _save(fig, "buckling")
 
@@ -124,6 +130,7 @@ def force_estimate() -> None:
     ax.plot(F[:, 0], F[:, 1], ".", ms=3, alpha=0.6, label="estimates, sigma_q = 1e-3 rad")
     ax.plot(*ell.T, "k-", lw=1, label="2 sigma ellipse (reported covariance)")
     ax.plot([-0.1], [0.05], "r+", ms=12, mew=2, label="true force (-0.1, 0.05)")
+    ax.locator_params(nbins=5)
     ax.set_xlabel("fx")
     ax.set_ylabel("fy")
     ax.set_title("Tip force from joint angles (paper chain)", fontsize=10)
@@ -164,7 +171,7 @@ def load_capacity() -> None:
     _save(fig, "load_capacity")
 
 
-FIGURES = {f.__name__: f for f in (buckling, stiffness, rest, limit_load, boundary, design, plan, simulation,
+FIGURES = {f.__name__: f for f in (equilibrium, buckling, stiffness, rest, limit_load, boundary, design, plan, simulation,
                                    force_estimate, stiffness_design, load_capacity)}
 
 

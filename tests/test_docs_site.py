@@ -78,3 +78,12 @@ def test_offline_no_cdn(site):
     for page in ["index.html", "http-api.html", "reference/buckling.html"]:
         text = (site / page).read_text(encoding="utf-8")
         assert not re.search(r'<(script|link)[^>]+(src|href)="(https?:)?//', text), page
+
+
+def test_the_docs_packages_are_extras():
+    import tomllib
+    extras = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))["project"]["optional-dependencies"]
+    names = lambda reqs: {re.split(r"[<>=;\[ ]", r, maxsplit=1)[0] for r in reqs}  # noqa: E731
+    assert {"mkdocs", "mkdocs-material", "mkdocstrings"} <= names(extras["docs"]) <= names(extras["test"])
+    assert {"nbclient", "nbformat", "ipykernel"} <= names(extras["test"])
+    assert any(r.startswith("mkdocstrings[python]") for r in extras["docs"])       # the Python handler

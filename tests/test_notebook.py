@@ -12,12 +12,10 @@ import os
 import sys
 from pathlib import Path
 
-import pytest
+import nbclient
+import nbformat
 
-nbformat = pytest.importorskip("nbformat")
-nbclient = pytest.importorskip("nbclient")
-
-import tensegrity_opt  # noqa: E402
+import tensegrity_opt
 
 NOTEBOOK = Path(__file__).resolve().parents[1] / "docs" / "notebooks" / "paper.ipynb"
 
