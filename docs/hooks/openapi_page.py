@@ -113,6 +113,8 @@ def render(spec: dict[str, Any]) -> str:
              f"The running server serves the same document interactively at `/docs` (Swagger UI) and `/redoc`, "
              f"from installed packages.", "",
              info.get("description", "").strip(), "",
+             "OpenAPI does not describe the WebSocket `/v1/control/stream`: its protocol is the guide "
+             "[The control stream](stream.md).", "",
              "## Operations", "", "| method | path | summary |", "|---|---|---|"]
     for m, p, op in ops:
         lines.append(f"| {m.upper()} | [`{p}`](#{_anchor(m, p)}) | {_cell(op.get('summary', ''))} |")
