@@ -133,16 +133,23 @@ def _solve(drv, **values: str) -> None:
 
 
 def _download(drv, selector: str) -> dict:
-    """Click the download button ``selector``; what the page offered (name, type, size, first bytes, text)."""
-    return drv.execute_async_script("""
+    """Click the download button ``selector``; what the page offered (name, type, size, bytes, text)."""
+    import base64
+
+    got = drv.execute_async_script("""
         const done = arguments[arguments.length - 1];
         document.addEventListener("explorer-download", async (e) => {
           const b = e.detail.blob;
-          const head = Array.from(new Uint8Array(await b.slice(0, 32).arrayBuffer()));
-          done({name: e.detail.name, type: b.type, size: b.size, head,
+          const bytes = new Uint8Array(await b.arrayBuffer());
+          let bin = "";
+          for (let i = 0; i < bytes.length; i += 8192) bin += String.fromCharCode.apply(null, bytes.subarray(i, i + 8192));
+          done({name: e.detail.name, type: b.type, size: b.size, data: btoa(bin),
                 text: b.type.indexOf("png") >= 0 ? null : await b.text()});
         }, {once: true});
         document.querySelector(arguments[0]).click();""", selector)
+    got["bytes"] = base64.b64decode(got.pop("data"))
+    assert len(got["bytes"]) == got["size"]
+    return got
 
 
 def _screenshot(drv, path: Path) -> int:
@@ -246,6 +253,7 @@ def test_page_in_headless_chromium(browser, server, tmp_path):
     assert "key" not in data["inputs"]
     # SVG: a stand-alone copy of the figure (its style sheet inside), the same 60 + 60 points.
     got = _download(drv, 'button[data-figure="curve"][data-format="svg"]')
+    (tmp_path / got["name"]).write_bytes(got["bytes"])
     assert got["name"].endswith("_curve.svg") and got["type"] == "image/svg+xml"
     root = ET.fromstring(got["text"])
     ns = "{http://www.w3.org/2000/svg}"
@@ -256,12 +264,16 @@ def test_page_in_headless_chromium(browser, server, tmp_path):
     # PNG: a real PNG at twice the figure's size on screen.
     got = _download(drv, 'button[data-figure="chain"][data-format="png"]')
     assert got["name"].endswith("_chain.png") and got["type"] == "image/png" and got["size"] > 2000
-    head = bytes(got["head"])
+    head = got["bytes"]
+    (tmp_path / got["name"]).write_bytes(head)                     # to look at
     assert head[:8] == b"\x89PNG\r\n\x1a\n" and head[12:16] == b"IHDR"
     w, h = struct.unpack(">II", head[16:24])
     box = drv.execute_script("const r = document.getElementById('chain').getBoundingClientRect();"
                              "return [Math.round(r.width), Math.round(r.height)];")
     assert (w, h) == (2 * box[0], 2 * box[1])
+    got = _download(drv, 'button[data-figure="equilibria-shapes"][data-format="png"]')
+    assert got["bytes"][:8] == b"\x89PNG\r\n\x1a\n"
+    (tmp_path / got["name"]).write_bytes(got["bytes"])
 
     # While a request is in flight: the previous results dimmed and marked stale, a CSS spinner (no glyph).
     busy = drv.execute_script("""
@@ -401,3 +413,51 @@ def test_partial_curve_shows_points_and_note(browser, server, tmp_path):
     assert curve.find_elements(By.CSS_SELECTOR, "line.branch-end")
     assert 0 < out["ended_at"]["dx"] <= 4
     _screenshot(drv, tmp_path / "web_page_partial.png")
+
+
+def test_contract_partial_curve_is_drawn(browser, server):
+    """The page's side of the curves contract, before the service implements it: the curve request is answered
+    (in the browser, by a stand-in for ``fetch``) with the real points up to where the stable branch ends plus
+    ``complete: false``, ``ended_at``, ``note`` and jump ``label``s; the page draws those points, shows the note,
+    marks the end and lists the jumps by their labels. Also an error status whose body has ``points``."""
+    import httpx
+    from selenium.webdriver.common.by import By
+
+    drv = browser
+    _load(drv, server)
+    man = {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1}
+    dxs = [4 * i / 59 for i in range(60)]                    # the page's request: {start: 0, stop: 4, num: 60}
+    end = 3.18644                                            # where the service finds no stable equilibrium
+    kept = [d for d in dxs if d < 3.1]
+    r = httpx.post(server + "/v1/force-deflection", json={"manipulator": man, "dx": kept, "dy": 0}, timeout=60)
+    assert r.status_code == 200, r.text
+    real = r.json()
+    stop = next(d for d in dxs if d >= 3.1)
+    note = (f"The stable branch ends between dx = {kept[-1]:.4g} and dx = {stop:.4g} (dy = 0): no stable "
+            f"equilibrium at dx = {stop:.4g}; {len(kept)} of 60 points computed.")
+    label = "buckling of the straight chain: F_x 0 -> -0.573 (compressive)"
+    fake = dict(real, complete=False, requested=60, note=note,
+                ended_at={"dx": stop, "dy": 0, "reason": "no_stable_equilibrium", "message": note},
+                jumps=[dict(j, label=label) for j in real["jumps"]])
+    assert real["jumps"] and end > stop
+    for status in (200, 422):
+        drv.execute_script("""
+            const [fake, status] = arguments;
+            window.__fetch = window.__fetch || window.fetch;
+            window.fetch = (url, opts) => String(url).indexOf("force-deflection") >= 0
+              ? Promise.resolve(new Response(JSON.stringify(fake), {status, headers: {"Content-Type": "application/json"}}))
+              : window.__fetch(url, opts);""", fake, status)
+        try:
+            _solve(drv, dx="3")
+        finally:
+            drv.execute_script("window.fetch = window.__fetch;")
+        curve = drv.find_element(By.ID, "curve")
+        assert curve.get_attribute("data-complete") == "false", status
+        assert curve.get_attribute("data-points") == str(len(kept)), status
+        assert len(curve.find_elements(By.CSS_SELECTOR, ".series-fx circle.pt")) == len(kept)
+        shown = drv.find_element(By.ID, "curve-note")
+        assert shown.is_displayed() and note in shown.text, (status, shown.text)
+        assert len(curve.find_elements(By.CSS_SELECTOR, "line.branch-end")) == 2        # in the Fx and Fy panels
+        items = drv.find_elements(By.CSS_SELECTOR, "#jumps li.jump-item")
+        assert len(items) == len(real["jumps"]) and all(li.text.startswith(label) for li in items)
+        assert not drv.find_element(By.ID, "error").is_displayed(), drv.find_element(By.ID, "error").text

@@ -698,12 +698,12 @@
   function bucklingAnswer(err) {
     const why = err.message.replace(/\.$/, "");
     if (err.code === "straight_unstable") {
-      return "The straight chain is unstable unloaded (" + why + "): no buckling load; it snaps into a bent shape " +
-        "without any load.";
+      return "The straight chain is unstable unloaded (joint stiffness K <= 0): no buckling load; it snaps into a " +
+        "bent shape without any load. The service: " + why + ".";
     }
     if (err.code === "straight_not_equilibrium") {
-      return "The straight chain is not an equilibrium (" + why + "): no buckling load; the chain is bent even " +
-        "unloaded.";
+      return "The straight chain is not an equilibrium: no buckling load; the chain is bent even unloaded. " +
+        "The service: " + why + ".";
     }
     return "No buckling load: " + why + ".";
   }
@@ -810,7 +810,8 @@
     $("solve").disabled = true;
     for (const id of PANELS) {
       $(id).setAttribute("aria-busy", "true");
-      $(id).dataset.stale = "true";        // the previous answer stays visible, dimmed, until the new one
+      // The previous answer stays visible, dimmed and marked stale, until the new one arrives.
+      if ($(id).dataset.filled) $(id).dataset.stale = "true";
     }
     setStatus("Solving\u2026");
 
@@ -866,6 +867,7 @@
       }
       $(panel).removeAttribute("aria-busy");
       delete $(panel).dataset.stale;
+      $(panel).dataset.filled = "true";
     }));
     if (my !== runId) return;
     last = record;
