@@ -290,6 +290,22 @@ def test_page_in_headless_chromium(browser, server, tmp_path):
     assert drv.execute_script("return document.getElementById('shape-panel').dataset.stale") is None
     assert float(drv.execute_script("return getComputedStyle(document.getElementById('chain')).opacity")) == 1
 
+    # The free tip: only the buckling panel changes (the cantilever's loads), as the note says.
+    from selenium.webdriver.support.ui import Select
+
+    energy = drv.find_element(By.ID, "out-energy").get_attribute("data-value")
+    Select(drv.find_element(By.ID, "in-boundary")).select_by_value("free")
+    try:
+        _solve(drv, dx=str(dx))
+        free = to.critical_force(m, boundary="free")
+        rows = drv.find_elements(By.CSS_SELECTOR, "#modes tbody tr")
+        assert [float(r.find_elements(By.TAG_NAME, "td")[1].get_attribute("data-value")) for r in rows] == \
+            pytest.approx(list(free.loads), rel=1e-9)
+        assert "(free tip)" in drv.find_element(By.ID, "critical").text
+        assert drv.find_element(By.ID, "out-energy").get_attribute("data-value") == energy
+    finally:
+        Select(drv.find_element(By.ID, "in-boundary")).select_by_value("guided")
+
     # An API refusal is shown in the error box (the target is beyond the chain's reach).
     _solve(drv, dx="100")
     box = drv.find_element(By.ID, "error")
@@ -320,6 +336,14 @@ def test_long_chain_fits_the_window(browser, server, tmp_path):
     widths = drv.execute_script("return [document.documentElement.scrollWidth, window.innerWidth,"
                                 " document.body.scrollWidth];")
     assert widths[0] <= widths[1] and widths[2] <= widths[1], widths
+    # A narrower window (one column under 800 px): still no horizontal overflow.
+    size = drv.get_window_size()
+    try:
+        drv.set_window_size(760, size["height"])
+        narrow = drv.execute_script("return [document.documentElement.scrollWidth, window.innerWidth];")
+        assert narrow[1] < 800 and narrow[0] <= narrow[1], narrow
+    finally:
+        drv.set_window_size(size["width"], size["height"])
     assert _screenshot(drv, tmp_path / "web_page_n200.png") > 10_000
     assert not _severe_logs(drv)
 
