@@ -8,6 +8,7 @@ from __future__ import annotations
 import concurrent.futures
 import math
 import os
+import statistics
 import sys
 import time
 import uuid
@@ -20,18 +21,22 @@ from .plan import _parameter_columns, _result_types, column_types, expand
 from .results import SweepResult
 from .spec import validate_spec
 
-__all__ = ["sweep", "auto_scheduler", "AUTO_SERIAL_POINTS", "AUTO_PROBE_POINTS", "AUTO_CLUSTER_SECONDS", "SCHEDULERS"]
+__all__ = ["sweep", "auto_scheduler", "AUTO_SERIAL_POINTS", "AUTO_PROBE_POINTS", "AUTO_PROBE_SECONDS",
+           "AUTO_CLUSTER_SECONDS", "SCHEDULERS"]
 
 #: The scheduler names :func:`sweep` takes (besides a ``tcp://host:port`` address or a ``distributed.Client``).
 SCHEDULERS = ("auto", "serial", "threads", "local")
-#: ``"auto"``: a sweep of at most this many points runs serially, without a probe (benchmarks/RESULTS.md,
-#: "Sweep scheduler default": a local cluster's start alone costs more than such a sweep's points).
-AUTO_SERIAL_POINTS = 64
-#: ``"auto"``: points solved serially first, to time the analysis, when the sweep is larger.
+#: ``"auto"``: a sweep of at most this many points runs serially (benchmarks/RESULTS.md, "Sweep scheduler
+#: default": a local cluster's start, ~5 s on 2 cores, costs more than such a sweep's points).
+AUTO_SERIAL_POINTS = 16
+#: ``"auto"``, a larger sweep: its first points are solved serially, to time the analysis (the median time
+#: per point: a chain length's first point also builds its solvers), until this many are done or, after
+#: three at least, :data:`AUTO_PROBE_SECONDS` have passed.
 AUTO_PROBE_POINTS = 16
-#: ``"auto"``: the rest goes to a local cluster only when it would take longer than this serially
-#: (seconds; the cluster costs about 3 s to start and stop on 2 cores and halves the rest at best).
-AUTO_CLUSTER_SECONDS = 20.0
+AUTO_PROBE_SECONDS = 5.0
+#: ``"auto"``: the rest goes to a local cluster only when, at the probe's time per point, it would take
+#: longer than this serially (seconds; measured break-even on 2 cores: ~45 s of serial work).
+AUTO_CLUSTER_SECONDS = 60.0
 
 def _tty(stream: Any) -> bool:
     try:
@@ -75,10 +80,10 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
         time, so this gains little: benchmarks/RESULTS.md). ``"local"``: a new ``LocalCluster``
         (``workers`` single-threaded processes, default one per core), closed at the end.
         ``"auto"``: serially when the sweep has at most :data:`AUTO_SERIAL_POINTS` points to solve;
-        else its first :data:`AUTO_PROBE_POINTS` points serially, and the rest on a local cluster
-        only when, at the measured time per point, it would take more than
-        :data:`AUTO_CLUSTER_SECONDS` serially (``SweepResult.scheduler`` says what ran:
-        ``"serial"`` or ``"serial+local"``).
+        else its first points serially (:data:`AUTO_PROBE_POINTS`, at most :data:`AUTO_PROBE_SECONDS`),
+        and the rest on a local cluster only when, at the measured time per point, it would take
+        more than :data:`AUTO_CLUSTER_SECONDS` serially (:func:`auto_scheduler`;
+        ``SweepResult.scheduler`` says what ran: ``"serial"`` or ``"serial+local"``).
         An address: the Dask scheduler there (its workers need ``tensegrity_opt`` installed).
     progress : bool
         Show a tqdm bar on stderr, only when stderr is a terminal.
@@ -116,33 +121,41 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
         if on_result is not None:
             on_result(i, row)
 
-    def serial(items) -> bool:
-        for i, p in items:
+    def serial(items, seconds: float | None = None, times: list[float] | None = None) -> tuple[bool, int]:
+        """Solve ``items`` in order (with ``seconds``: until they have passed, at least three points), each
+        point's time appended to ``times``: ``(cancelled, how many were solved)``."""
+        t_start = time.perf_counter()
+        for k, (i, p) in enumerate(items):
             if stop():
-                return True
+                return True, k
+            if seconds is not None and k >= 3 and time.perf_counter() - t_start > seconds:
+                return False, k
+            t_point = time.perf_counter()
             deliver(i, _row(header, param_cols, result_cols, i, p))
+            if times is not None:
+                times.append(time.perf_counter() - t_point)
             bar.update(1, n_err)
-        return False
+        return False, len(items)
 
     label = "serial"
     try:
         if scheduler is None or scheduler == "serial":
-            cancelled = serial(todo)
+            cancelled = serial(todo)[0]
         elif scheduler == "auto":
-            choice = auto_scheduler(len(todo))
-            if choice == "serial":
-                cancelled = serial(todo)
+            if auto_scheduler(len(todo)) == "serial":
+                cancelled = serial(todo)[0]
             else:
-                probe, rest = todo[:AUTO_PROBE_POINTS], todo[AUTO_PROBE_POINTS:]
-                t_probe = time.perf_counter()
-                cancelled = serial(probe)
-                per_point = (time.perf_counter() - t_probe) / max(1, len(probe))
+                # the median, not the mean: a chain length's first point also builds its solvers (seconds)
+                times: list[float] = []
+                cancelled, done = serial(todo[:AUTO_PROBE_POINTS], AUTO_PROBE_SECONDS, times)
+                per_point = float(statistics.median(times)) if times else 0.0
+                rest = todo[done:]
                 if not cancelled and rest:
-                    if auto_scheduler(len(todo), per_point) == "serial":
-                        cancelled = serial(rest)
+                    if auto_scheduler(len(rest), per_point) == "serial":
+                        cancelled = serial(rest)[0]
                     else:
-                        label, cancelled = _run_dask("local", header, param_cols, result_cols, rest, deliver, bar,
-                                                     lambda: n_err, stop, chunk_size, workers)
+                        _, cancelled = _run_dask("local", header, param_cols, result_cols, rest, deliver, bar,
+                                                 lambda: n_err, stop, chunk_size, workers)
                         label = "serial+local"
         elif scheduler == "threads":
             label, cancelled = "threads", _run_threads(header, param_cols, result_cols, todo, deliver, bar,
@@ -158,19 +171,16 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
 
 
 def auto_scheduler(points: int, seconds_per_point: float | None = None) -> str:
-    """What ``scheduler="auto"`` runs ``points`` points on: ``"serial"`` or ``"local"``.
+    """What ``scheduler="auto"`` does with ``points`` points to solve.
 
-    Without a measured ``seconds_per_point``: ``"serial"`` up to :data:`AUTO_SERIAL_POINTS` points,
-    else ``"probe"`` (time the first :data:`AUTO_PROBE_POINTS` points serially, then ask again). With it:
-    ``"local"`` when the points left after the probe would take more than :data:`AUTO_CLUSTER_SECONDS`
-    serially, else ``"serial"``.
+    Without ``seconds_per_point``: ``"serial"`` up to :data:`AUTO_SERIAL_POINTS` points, else ``"probe"``
+    (solve the first points serially and time them). With the measured ``seconds_per_point``, for the
+    ``points`` left after the probe: ``"local"`` (a local Dask cluster) when they would take more than
+    :data:`AUTO_CLUSTER_SECONDS` serially, else ``"serial"``.
     """
-    if points <= AUTO_SERIAL_POINTS:
-        return "serial"
     if seconds_per_point is None:
-        return "probe"
-    rest = max(0, points - AUTO_PROBE_POINTS)
-    return "local" if rest * seconds_per_point > AUTO_CLUSTER_SECONDS else "serial"
+        return "serial" if points <= AUTO_SERIAL_POINTS else "probe"
+    return "local" if points * seconds_per_point > AUTO_CLUSTER_SECONDS else "serial"
 
 
 def _chunk_size(chunk_size: int | None, points: int, threads: int) -> int:
