@@ -42,10 +42,11 @@ def add_sweep_parser(subparsers: Any) -> argparse.ArgumentParser:
                     help="out.csv | out.json | out.parquet; None: CSV on stdout")
     sp.add_argument("--scheduler", default="auto", metavar="auto|serial|threads|local|tcp://HOST:PORT",
                     help=f"where to solve. auto: serially up to {AUTO_SERIAL_POINTS} points, else the first "
-                         f"{AUTO_PROBE_POINTS} serially and the rest on a local Dask cluster only if it would take "
-                         f"more than {AUTO_CLUSTER_SECONDS:g} s serially (a cluster costs ~3 s to start: on the "
-                         "README's 9-point buckling sweep it was 7x slower than serial; benchmarks/RESULTS.md); "
-                         "serial: this process; threads: a pool of threads of this process; local: a local Dask "
+                         f"points serially, timed, and the rest on a local Dask cluster only if it would take "
+                         f"more than {AUTO_CLUSTER_SECONDS:g} s serially (a cluster costs 5-8 s to start: the "
+                         "README's 9-point buckling sweep took 5.3 s on it against 0.007 s serially; "
+                         "benchmarks/RESULTS.md, 'Sweep scheduler default'); serial: this process; threads: a "
+                         "pool of threads of this process (no consistent gain measured); local: a local Dask "
                          "cluster; tcp://HOST:PORT: a running Dask scheduler")
     sp.add_argument("--workers", type=int, default=None, metavar="N",
                     help="threads (threads) or worker processes (local, auto) of this machine; None: one per core")

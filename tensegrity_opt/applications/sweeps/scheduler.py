@@ -35,8 +35,10 @@ AUTO_SERIAL_POINTS = 16
 AUTO_PROBE_POINTS = 16
 AUTO_PROBE_SECONDS = 5.0
 #: ``"auto"``: the rest goes to a local cluster only when, at the probe's time per point, it would take
-#: longer than this serially (seconds; measured break-even on 2 cores: ~45 s of serial work).
-AUTO_CLUSTER_SECONDS = 60.0
+#: longer than this serially (seconds). Measured on the project's shared 2-core machine, the cluster
+#: never won: 5-8 s to start, then at best a tie (270 points of 44 s serially) and 1.5x slower at 540
+#: points (82 s); so only sweeps of minutes, where more cores pay, go to it.
+AUTO_CLUSTER_SECONDS = 120.0
 
 def _tty(stream: Any) -> bool:
     try:
@@ -76,8 +78,8 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
     ----------
     scheduler : None | "serial" | "threads" | "local" | "auto" | "tcp://host:port" | distributed.Client
         ``None``/``"serial"``: in the calling thread. ``"threads"``: chunks in a pool of ``workers``
-        threads of this process (default one per core; the solvers hold the GIL for most of their
-        time, so this gains little: benchmarks/RESULTS.md). ``"local"``: a new ``LocalCluster``
+        threads of this process (default one per core; no consistent gain over serial measured on 2
+        cores: benchmarks/RESULTS.md, "Sweep scheduler default"). ``"local"``: a new ``LocalCluster``
         (``workers`` single-threaded processes, default one per core), closed at the end.
         ``"auto"``: serially when the sweep has at most :data:`AUTO_SERIAL_POINTS` points to solve;
         else its first points serially (:data:`AUTO_PROBE_POINTS`, at most :data:`AUTO_PROBE_SECONDS`),
