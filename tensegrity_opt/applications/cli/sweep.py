@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from ...errors import TensegrityError
-from ..sweeps.scheduler import AUTO_CLUSTER_SECONDS, AUTO_PROBE_POINTS, AUTO_SERIAL_POINTS, SCHEDULERS
+from ..sweeps.scheduler import AUTO_CLUSTER_SECONDS, AUTO_SERIAL_POINTS, SCHEDULERS
 
 __all__ = ["add_sweep_parser", "cmd_sweep"]
 
