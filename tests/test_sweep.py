@@ -291,8 +291,16 @@ def test_non_finite_values_become_none():
 
 
 # --------------------------------------------------------------------------- the default scheduler (issue 18)
-README_SPEC = {"analysis": "buckling", "manipulator": {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1},
-               "grid": {"n": [3, 4, 5], "k": [0.5, 1, 2]}, "options": {"boundary": "guided"}}
+def _readme_spec() -> dict:
+    """The sweep spec the README shows (its first JSON block with an ``analysis``)."""
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+    return next(json.loads(b) for b in re.findall(r"```json\n(.*?)```", text, re.S) if '"analysis"' in b)
+
+
+README_SPEC = _readme_spec()
 
 
 def test_auto_runs_the_readme_spec_serially_without_a_cluster(monkeypatch, tmp_path, capsys):
@@ -304,7 +312,7 @@ def test_auto_runs_the_readme_spec_serially_without_a_cluster(monkeypatch, tmp_p
         raise AssertionError("auto started Dask for a 9-point sweep")
 
     monkeypatch.setattr(sch, "_run_dask", no_dask)
-    assert sch.auto_scheduler(S.count_points(README_SPEC)) == "serial"
+    assert S.count_points(README_SPEC) == 9 and sch.auto_scheduler(9) == "serial"
     res = S.sweep(README_SPEC, scheduler="auto")
     assert res.scheduler == "serial" and res.rows == S.sweep(README_SPEC).rows
     spec_file = tmp_path / "spec.json"
