@@ -1039,5 +1039,14 @@ def main(argv: list[str] | None = None) -> int:
     if args.json:
         Path(args.json).write_text(json.dumps(_jsonable(data), indent=2) + "\n", encoding="utf-8")
     if args.md:
-        Path(args.md).write_text(markdown(rows, machine, cfg, total, skipped), encoding="utf-8")
+        md = Path(args.md)
+        # sections measured by other scripts (below KEEP_MARKER: e.g. "Sweep scheduler default",
+        # benchmarks/sweep_scheduler.py) survive a new run of the suite
+        old = md.read_text(encoding="utf-8") if md.exists() else ""
+        kept = old[old.index(KEEP_MARKER):] if KEEP_MARKER in old else ""
+        md.write_text(markdown(rows, machine, cfg, total, skipped) + ("\n" + kept if kept else ""), encoding="utf-8")
     return 0
+
+
+#: What follows this line in RESULTS.md is kept when the suite rewrites the file.
+KEEP_MARKER = "<!-- kept by benchmarks.suite: sections measured by other scripts -->"

@@ -62,12 +62,25 @@ def _cmd_openapi(args: argparse.Namespace) -> int:
     return 0
 
 
+def _port(text: str) -> int:
+    """An argparse type: a TCP port 1-65535, else a usage error (exit 2)."""
+    try:
+        v = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a TCP port 1-65535, got {text!r}") from None
+    if not 1 <= v <= 65535:
+        raise argparse.ArgumentTypeError(f"expected a TCP port 1-65535, got {v}")
+    return v
+
+
 def add_service_commands(sub: Any) -> None:
     """``serve`` and ``openapi`` on the subparsers ``sub`` of the library's parser."""
-    sp = sub.add_parser("serve", help="start the HTTP service (uvicorn, one process; TENSEGRITY_* settings)")
-    sp.add_argument("--host", default="127.0.0.1", help="interface to bind (default 127.0.0.1)")
-    sp.add_argument("--port", type=int, default=8000, help="TCP port (default 8000)")
-    sp.add_argument("--log-level", default="info", choices=("critical", "error", "warning", "info", "debug"))
+    sp = sub.add_parser("serve", help="start the HTTP service (uvicorn, one process; TENSEGRITY_* settings); "
+                                      "it runs until Ctrl-C, so start it in a second terminal or with &")
+    sp.add_argument("--host", default="127.0.0.1", help="interface to bind")
+    sp.add_argument("--port", type=_port, default=8000, help="TCP port (1-65535)")
+    sp.add_argument("--log-level", default="info", choices=("critical", "error", "warning", "info", "debug"),
+                    help="uvicorn's log level")
     sp.add_argument("--no-access-log", action="store_true", help="do not log every request")
     sp.set_defaults(run=_cmd_serve)
 
@@ -77,9 +90,7 @@ def add_service_commands(sub: Any) -> None:
 
 def build_parser() -> argparse.ArgumentParser:
     """The library's parser with the service's commands added."""
-    p = library_cli.build_parser(add_commands=add_service_commands)
-    p.description = "Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|plot|sweep|serve|openapi ...``."
-    return p
+    return library_cli.build_parser(add_commands=add_service_commands)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -224,6 +224,46 @@ def _loc_path(loc: tuple[Any, ...] | list[Any]) -> str:
     return out or "body"
 
 
+#: The request fields giving a chain's length (a uniform chain's ``n``, a segment list, a job's ``n`` values).
+_CHAIN_LENGTH_FIELD = re.compile(r"(^|\.)manipulator\.(n|segments)$|^grid\.n\[\d+\]$|^points\[\d+\]\.n$")
+
+
+def segments_over_limit(errors: list[dict[str, Any]], max_segments: int | None) -> dict[str, Any] | None:
+    """``too_many_segments`` for a chain longer than the server accepts, whatever its length.
+
+    The schema caps a chain at its own maximum (``HARD_MAX_SEGMENTS``, 60 for the design endpoints);
+    a server set lower (``TENSEGRITY_MAX_SEGMENTS``) refuses the lengths between its setting and that
+    cap itself, naming its setting. Above the cap the schema's refusal named the cap, not the real
+    limit (n = 150 on a server set to 100: "at most 100"; n = 500: "<= 200"). When every schema error
+    is a chain length over a cap above ``max_segments``, the answer is the server's own
+    (``too_many_segments``, ``details: {n, max_segments}``); else ``None`` (the schema's error names
+    the limit that applies).
+    """
+    if not errors or max_segments is None:
+        return None
+    first = None
+    for e in errors:
+        field = _loc_path(e.get("loc", ()))
+        ctx = e.get("ctx") or {}
+        kind = e.get("type")
+        cap = ctx.get("le") if kind == "less_than_equal" else ctx.get("max_length") if kind == "too_long" else None
+        if cap is None or not _CHAIN_LENGTH_FIELD.search(field) or not float(cap) > max_segments:
+            return None
+        if first is None:
+            value = ctx.get("actual_length") if kind == "too_long" else e.get("input")
+            first = (field, value)
+    field, value = first
+    try:
+        n: Any = int(value) if float(value) == int(float(value)) else value
+    except (TypeError, ValueError, OverflowError):
+        n = value
+    # the words of the server's own check (deps.check_manipulator; a job's: prefixed by its field)
+    where = "" if field.startswith("manipulator.") else f"{field}: "
+    return {"code": "too_many_segments", "field": field,
+            "message": f"{where}the chain has {n} segments; this server accepts at most {max_segments}",
+            "details": {"n": n, "max_segments": max_segments}}
+
+
 def validation_body(errors: list[dict[str, Any]]) -> dict[str, Any]:
     items = []
     for e in errors:
@@ -284,7 +324,13 @@ def install(app: FastAPI) -> None:
 
     async def _validation(request: Request, exc: Exception) -> JSONResponse:
         assert isinstance(exc, RequestValidationError)
-        body = validation_body(list(exc.errors()))
+        errors = list(exc.errors())
+        settings = getattr(request.app.state, "settings", None)
+        over = segments_over_limit(errors, getattr(settings, "max_segments", None))
+        if over is not None:
+            _record_failure(request, "too_many_segments")
+            return error_response(422, over)
+        body = validation_body(errors)
         _record_failure(request, "validation_error")
         ctype = request.headers.get("content-type", "")
         if body["field"] == "body" and "json" not in ctype.lower():

@@ -40,7 +40,7 @@ def equilibrium_out(eq) -> dict[str, Any]:
     return {"q": _nums(eq.q), "energy": _num(eq.energy), "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
             "morse_index": int(eq.morse_index), "stable": bool(eq.stable), "kind": eq.kind, "shape": eq.shape,
             "signs": eq.signs, "tip": _nums(eq.tip),
-            "solver": {"status": str(eq.status), "iterations": int(eq.iterations)}}
+            "solver": {"status": str(eq.status), "iterations": None if eq.iterations is None else int(eq.iterations)}}
 
 
 def equilibria_out(eqs) -> dict[str, Any]:

@@ -50,3 +50,30 @@ def test_branch_loss_falls_back_to_a_global_solve():
     assert all(r.stable for r in res)
     # continuation keeps the first branch (metastable beyond dy = 0), unlike the least-energy curve
     assert np.sign(res[-1].q[0]) == np.sign(res[0].q[0])
+
+
+def test_the_iterations_of_a_continued_point_are_counted_or_null_never_minus_one():
+    """Issue 18: batch points showed ``"iterations": -1``. A point of the compiled continuation (kernels,
+    n <= 8) reports the Newton iterations it took - the count of the Python damped Newton method from the
+    previous point, a second implementation of the same step - and a chain solved by CasADi's rootfinder
+    (n > 8), which does not count them, reports ``None`` (JSON null), as the schema says."""
+    from service.schemas.common import SolverInfo
+    from tensegrity_opt.numerics import chain_solver
+
+    tr = [(0.1 + 0.05 * i, 0.02 * i) for i in range(8)]
+    res = to.solve_equilibria_batch(PAPER, tr)
+    mdl = chain_solver(PAPER)
+    for i in range(1, len(tr)):
+        ref = mdl.newton_kkt(PAPER.target(*tr[i]), res[i - 1].q, res[i - 1].force)
+        assert ref.success and np.allclose(ref.q, res[i].q, atol=1e-12)
+        assert res[i].iterations == ref.iterations >= 1          # the target moved: at least one step
+        assert res[i].to_dict()["solver"]["iterations"] == ref.iterations
+    long = to.Manipulator.uniform(12)
+    res = to.solve_equilibria_batch(long, [(0.1 + 0.01 * i, 0.0) for i in range(4)])
+    assert all(isinstance(r, to.Equilibrium) for r in res)
+    assert all(r.iterations is None or r.iterations >= 0 for r in res)
+    continued = [r for r in res[1:] if r.iterations is None]
+    assert continued, "n = 12 continues by the rootfinder"
+    body = continued[0].to_dict()["solver"]
+    assert body["iterations"] is None and SolverInfo(**body).iterations is None
+    assert "null: not counted" in SolverInfo.model_fields["iterations"].description

@@ -432,6 +432,35 @@ def test_too_many_segments(client):
         assert r.status_code == 200
 
 
+@pytest.mark.parametrize("n", [150, 500, 10**9, 1e9])
+def test_too_many_segments_names_the_real_limit_for_every_n(n):
+    """Issue 18: on a server set below the schema's cap (TENSEGRITY_MAX_SEGMENTS=100), n = 150 was refused
+    with "at most 100" but n = 500 or 1e9 with the schema's "<= 200": every length over the setting is now
+    the server's own ``too_many_segments``, naming its limit; a job's n values too."""
+    with make_client(max_segments=100) as c:
+        r = c.post("/v1/equilibrium", json={"manipulator": {"n": n}, "dx": 0.1})
+        body = check_error(r, 422, "too_many_segments", "manipulator.n")
+        assert body["message"] == f"the chain has {int(n)} segments; this server accepts at most 100"
+        assert body["details"] == {"n": int(n), "max_segments": 100}
+        r = c.post("/v1/jobs", json={"analysis": "buckling", "grid": {"n": [4, n]}})
+        body = check_error(r, 422, "too_many_segments", "grid.n[1]")
+        assert body["message"].endswith("this server accepts at most 100") and body["details"]["n"] == int(n)
+        # a body with another error stays a validation_error; the design endpoints' own cap (60) is lower
+        r = c.post("/v1/equilibrium", json={"manipulator": {"n": n}, "dx": "far"})
+        check_error(r, 422, "validation_error")
+        r = c.post("/v1/design/critical-force", json={"manipulator": {"n": n}})
+        assert "less than or equal to 60" in check_error(r, 422, "validation_error", "manipulator.n")["message"]
+    segs = [{"a": 1, "b": 1}] * 300
+    with make_client(max_segments=100) as c:
+        body = check_error(c.post("/v1/buckling", json={"manipulator": {"segments": segs}}), 422,
+                           "too_many_segments", "manipulator.segments")
+        assert body["details"] == {"n": 300, "max_segments": 100}
+    with make_client() as c:                  # the default setting is the cap: the schema names it
+        r = c.post("/v1/equilibrium", json={"manipulator": {"n": n}, "dx": 0.1})
+        if n > 200:
+            assert "less than or equal to 200" in check_error(r, 422, "validation_error", "manipulator.n")["message"]
+
+
 def test_batch_too_large():
     with make_client(max_batch=2) as c:
         r = c.post("/v1/batch/equilibrium", json={"manipulator": PAPER, "targets": [{"dx": 0.1}] * 3})

@@ -288,3 +288,76 @@ def test_cli_sweep_errors_exit_2(tmp_path, capsys):
 def test_non_finite_values_become_none():
     # the sweep's cells follow the policy for nullable fields (tensegrity_opt.serialize)
     assert nullable(float("nan")) is None and nullable(math.inf) is None and nullable(np.float64(1.5)) == 1.5
+
+
+# --------------------------------------------------------------------------- the default scheduler (issue 18)
+def _readme_spec() -> dict:
+    """The sweep spec the README shows (its first JSON block with an ``analysis``)."""
+    import re
+    from pathlib import Path
+
+    text = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+    return next(json.loads(b) for b in re.findall(r"```json\n(.*?)```", text, re.S) if '"analysis"' in b)
+
+
+README_SPEC = _readme_spec()
+
+
+def test_auto_runs_the_readme_spec_serially_without_a_cluster(monkeypatch, tmp_path, capsys):
+    """The README's 9-point spec took 3.0 s on the local cluster against 0.43 s serially: ``auto`` (the CLI's
+    default) solves it in this process and never starts Dask."""
+    from tensegrity_opt.applications.sweeps import scheduler as sch
+
+    def no_dask(*a, **k):
+        raise AssertionError("auto started Dask for a 9-point sweep")
+
+    monkeypatch.setattr(sch, "_run_dask", no_dask)
+    assert S.count_points(README_SPEC) == 9 and sch.auto_scheduler(9) == "serial"
+    res = S.sweep(README_SPEC, scheduler="auto")
+    assert res.scheduler == "serial" and res.rows == S.sweep(README_SPEC).rows
+    spec_file = tmp_path / "spec.json"
+    spec_file.write_text(json.dumps(README_SPEC))
+    assert _cli(["sweep", str(spec_file), "--no-progress"]) == 0         # no --scheduler: auto
+    assert "9 points (buckling, serial)" in capsys.readouterr().err
+
+
+def test_auto_decides_by_size_then_by_the_measured_time_per_point():
+    from tensegrity_opt.applications.sweeps.scheduler import AUTO_CLUSTER_SECONDS, AUTO_SERIAL_POINTS, auto_scheduler
+
+    assert auto_scheduler(1) == auto_scheduler(AUTO_SERIAL_POINTS) == "serial"
+    assert auto_scheduler(AUTO_SERIAL_POINTS + 1) == "probe"
+    assert auto_scheduler(1000, 0.001) == "serial"                      # 1000 buckling points: ~1 s serially
+    assert auto_scheduler(1000, 1.01 * AUTO_CLUSTER_SECONDS / 1000) == "local"
+    assert auto_scheduler(1000, 0.99 * AUTO_CLUSTER_SECONDS / 1000) == "serial"
+
+
+def test_auto_hands_the_rest_after_its_probe_to_the_cluster_every_point_once(monkeypatch):
+    """When the probe says the rest is long, the points after it go to the local cluster (here a stand-in
+    solving the chunk in this process): every point delivered exactly once, rows as serial."""
+    from tensegrity_opt.applications.sweeps import scheduler as sch
+
+    spec = {"analysis": "buckling", "grid": {"n": [3, 4], "k": [float(v) for v in np.linspace(0.5, 2.0, 20)]}}
+    handed: list[list[int]] = []
+
+    def fake_dask(scheduler, header, pcols, rcols, todo, deliver, bar, n_err, stop, chunk_size, workers):
+        assert scheduler == "local"
+        handed.append([i for i, _ in todo])
+        for i, row in sch.solve_chunk(header, pcols, rcols, todo):
+            deliver(i, row)
+        return "local", False
+
+    monkeypatch.setattr(sch, "_run_dask", fake_dask)
+    monkeypatch.setattr(sch, "AUTO_CLUSTER_SECONDS", 0.0)               # any rest counts as long
+    monkeypatch.setattr(sch, "AUTO_PROBE_SECONDS", 1e9)                 # the probe ends by its count alone
+    arrived: list[int] = []
+    res = S.sweep(spec, scheduler="auto", on_result=lambda i, row: arrived.append(i))
+    assert res.scheduler == "serial+local"
+    assert len(handed) == 1 and handed[0] == list(range(sch.AUTO_PROBE_POINTS, 40))
+    assert sorted(arrived) == list(range(40)) and res.rows == S.sweep(spec).rows
+
+
+def test_threads_equal_serial():
+    spec = {"analysis": "equilibrium", "grid": {"n": [3, 4], "dx": [0.05, 0.1, 30.0, 0.2]}}
+    res = S.sweep(spec, scheduler="threads", workers=2, chunk_size=3)
+    assert res.scheduler == "threads" and res.rows == S.sweep(spec).rows
+    assert res.rows[2]["error"].startswith("unreachable_target")

@@ -170,7 +170,10 @@ class Force(BaseModel):
 
 class SolverInfo(BaseModel):
     status: str = Field(description="the solver's return status (IPOPT return_status, Newton status, or 'straight')")
-    iterations: int
+    iterations: int | None = Field(description="iterations of the final solve (0: none needed, e.g. the straight "
+                                               "chain); null: not counted - a point of the compiled continuation "
+                                               "of a chain of more than 8 segments (CasADi's rootfinder does not "
+                                               "report it)")
 
 
 # ---------------------------------------------------------------------------- errors

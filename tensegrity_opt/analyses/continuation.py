@@ -160,6 +160,7 @@ class Prefix:
     morse_index: np.ndarray   # (k,)
     stable: np.ndarray        # (k,) bool
     eigenvalues: np.ndarray   # (k, n-2) of the reduced Hessian, ascending
+    iterations: np.ndarray | None = None   # (k,) Newton iterations per point (kernels), None: not counted
 
 
 def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0: np.ndarray) -> Prefix:
@@ -177,10 +178,12 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
     ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
     k = int(np.argmin(ok)) if not ok.all() else ok.size
     Q, Fs = Q[:k], Z[:k, n:]
+    its = None if c.iterations is None else c.iterations[:k]
     if c.reduced_hessian is not None:
-        return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k], scale=m.torque_scale))
+        return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k], scale=m.torque_scale),
+                      iterations=its)
     E, H, J, T = mdl.batch_derivs(Q, Fs)
-    return Prefix(Q, Fs, E, T, *classify_batch(H, J, scale=m.torque_scale))
+    return Prefix(Q, Fs, E, T, *classify_batch(H, J, scale=m.torque_scale), iterations=its)
 
 
 def _global(m: Manipulator, dx: float, dy: float, q0) -> Equilibrium | TensegrityError:
@@ -201,7 +204,7 @@ def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) 
         return i
     targets = np.column_stack([m.straight_length - pts[i:stop, 0], pts[i:stop, 1]])
     pre = continuation_prefix(m, targets, prev.q, prev.force)
-    Q, Fs, E, T, stable, w = pre.q, pre.force, pre.energy, pre.tip, pre.stable, pre.eigenvalues
+    Q, Fs, E, T, stable, w, its = pre.q, pre.force, pre.energy, pre.tip, pre.stable, pre.eigenvalues, pre.iterations
     k = Q.shape[0]
     if k == 0:
         return i
@@ -210,7 +213,8 @@ def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) 
         q = Q[j]
         out[i + j] = Equilibrium(q=q.copy(), energy=float(E[j]), force=Fs[j].copy(), morse_index=0, stable=True,
                                  status="Newton_Converged",
-                                 iterations=-1, tip=T[j].copy(), control="displacement",
+                                 iterations=None if its is None else int(its[j]), tip=T[j].copy(),
+                                 control="displacement",
                                  hessian_eigenvalues=w[j].copy())
     return i + k_st
 

@@ -61,8 +61,10 @@ class Equilibrium:
         Strict local minimum (Morse index 0, non-degenerate).
     status : str
         The solver's return status (IPOPT ``return_status``, or the Newton status).
-    iterations : int
-        Solver iterations of the final solve.
+    iterations : int or None
+        Solver iterations of the final solve (0: none needed, e.g. the straight chain or an exact
+        solution). ``None``: not counted - a point of the compiled continuation of a chain longer than
+        ``kernels.KERNEL_MAX`` segments, solved by CasADi's ``rootfinder``, which does not report it.
     tip : ndarray (2,)
         Tip position.
     control : str
@@ -77,7 +79,7 @@ class Equilibrium:
     morse_index: int
     stable: bool
     status: str
-    iterations: int
+    iterations: int | None
     tip: np.ndarray
     control: str = "displacement"
     hessian_eigenvalues: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
@@ -113,12 +115,14 @@ class Equilibrium:
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/equilibrium``): ``q``, ``energy``, ``force`` ``{fx, fy}``,
         ``morse_index``, ``stable``, ``kind``, ``shape``, ``signs``, ``tip``, ``solver`` ``{status,
-        iterations}``; every number finite (:mod:`tensegrity_opt.serialize`)."""
+        iterations}`` (``iterations`` ``null`` when not counted, see :attr:`iterations`); every number finite
+        (:mod:`tensegrity_opt.serialize`)."""
         return {"q": numbers(self.q), "energy": number(self.energy),
                 "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,
                 "shape": self.shape, "signs": self.signs, "tip": numbers(self.tip),
-                "solver": {"status": str(self.status), "iterations": int(self.iterations)}}
+                "solver": {"status": str(self.status),
+                           "iterations": None if self.iterations is None else int(self.iterations)}}
 
 
 def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:

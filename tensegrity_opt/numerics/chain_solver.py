@@ -445,7 +445,7 @@ class ChainSolver:
             Y[s:s + k] = out[1].reshape(B, 5 + m * m)[:k]
             z = Z[s + k - 1]
         return Continuation(Z, Y[:, 0], Y[:, 2], Y[:, 3:5], Y[:, 5:].reshape(N, m, m).transpose(0, 2, 1),
-                            torque_scale(params, n))
+                            torque_scale(params, n), iterations=np.rint(Y[:, 1]).astype(int))
 
     def _batch_derivs(self, params: np.ndarray, Q: np.ndarray, Fs: np.ndarray):
         _, derivs = self._batch

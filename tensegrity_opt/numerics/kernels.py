@@ -41,7 +41,8 @@ Into ``TENSEGRITY_CACHE_DIR`` (default ``$XDG_CACHE_HOME/tensegrity_opt`` or
 generated code and the compiler command, so an upgrade never loads stale code. The
 compiler is ``$CC`` or the first of ``cc``, ``gcc``, ``clang`` on the ``PATH``. Without a
 compiler (or with ``TENSEGRITY_COMPILE=0``) the same graphs run in CasADi's SX virtual
-machine: about four times slower, same results.
+machine: about four times slower, same results; one ``RuntimeWarning`` per process says so and why
+(the variable set, or no compiler found: install ``gcc``).
 """
 
 from __future__ import annotations
@@ -129,9 +130,15 @@ def cache_dir() -> Path:
     return Path(base) / "tensegrity_opt"
 
 
+def _switched_off() -> str | None:
+    """The value of ``TENSEGRITY_COMPILE`` when it switches compilation off (``0``, ``false``, ``no``, ``off``)."""
+    value = os.environ.get("TENSEGRITY_COMPILE", "1")
+    return value if value.strip().lower() in ("0", "false", "no", "off") else None
+
+
 def compiler() -> str | None:
     """The C compiler used (``$CC`` or ``cc``/``gcc``/``clang``), or ``None`` (then no compilation)."""
-    if os.environ.get("TENSEGRITY_COMPILE", "1").strip().lower() in ("0", "false", "no", "off"):
+    if _switched_off() is not None:
         return None
     cc = os.environ.get("CC")
     if cc:
@@ -313,6 +320,9 @@ def _compile(n: int, funcs: dict[str, ca.Function]) -> str | None:
     ``None`` (with one warning) when anything on the way fails — never an error for the caller."""
     cc = compiler()
     if cc is None:
+        off = _switched_off()
+        _warn(f"TENSEGRITY_COMPILE={off} switches compilation off" if off is not None else
+              "no C compiler was found (CC, cc, gcc, clang; e.g. apt-get install gcc)")
         return None
     try:
         return _compile_with(cc, f"tensegrity_kernels_n{n}", funcs)

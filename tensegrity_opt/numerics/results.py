@@ -50,9 +50,10 @@ class Continuation:
     """Points of a compiled continuation (:meth:`BoundSolver.batch_continue`), N of them.
 
     ``Z`` (N, n+2) the iterates ``(phi, F)``, ``residual`` (N,) the KKT residual norm there (large
-    where Newton failed); from the kernels also ``energy`` (N,), ``tip`` (N, 2) and
-    ``reduced_hessian`` (N, n-2, n-2), else ``None``; ``residual`` is in the solver's units, whose
-    torque scale is ``torque_scale``.
+    where Newton failed); from the kernels also ``energy`` (N,), ``tip`` (N, 2),
+    ``reduced_hessian`` (N, n-2, n-2) and ``iterations`` (N,) (the Newton iterations each point took,
+    0 for a point converged at its start), else ``None`` (CasADi's ``rootfinder`` of a longer chain
+    does not report them); ``residual`` is in the solver's units, whose torque scale is ``torque_scale``.
     """
 
     Z: np.ndarray
@@ -62,6 +63,7 @@ class Continuation:
     reduced_hessian: np.ndarray | None = None
     #: ``max k c^2`` in the units ``residual`` is measured in (the solver's, see :mod:`.units`)
     torque_scale: float = 1.0
+    iterations: np.ndarray | None = None
 
 
 @dataclass

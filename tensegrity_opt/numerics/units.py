@@ -75,4 +75,4 @@ def unscale_continuation(c: Continuation, n: int, lam: float, kap: float) -> Con
     return Continuation(c.Z, c.residual, None if c.energy is None else c.energy / (kap * lam * lam),
                         None if c.tip is None else c.tip / lam,
                         None if c.reduced_hessian is None else c.reduced_hessian / (kap * lam * lam),
-                        c.torque_scale)
+                        c.torque_scale, c.iterations)

@@ -27,7 +27,8 @@ from ...analyses.buckling import critical_force
 from ...analyses.curves import force_deflection
 from ...analyses.equilibrium import solve_equilibrium_under_force
 from ...analyses.least_energy import solve_equilibrium
-from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float, fmt_q, positive_int, run_command
+from .common import (HELP_FORMAT, Parser, add_manipulator_options, eq_table, finite_float, fmt_q, note, positive_int,
+                     run_command)
 from .control import add_control_parsers
 from .paths import add_path_parsers
 from .plot import add_plot_parser
@@ -60,7 +61,8 @@ def _cmd_equilibrium(args, m):
     else:
         eq = solve_equilibrium(m, args.dx, args.dy)
         head = f"Least-energy stable equilibrium at dx = {args.dx:g}, dy = {args.dy:g}"
-    return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.status}, {eq.iterations} iterations"])
+    its = "iterations not counted" if eq.iterations is None else f"{eq.iterations} iterations"
+    return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.status}, {its}"])
 
 
 def _cmd_equilibria(args, m):
@@ -84,15 +86,20 @@ def _cmd_curve(args, m):
     for j in c.jumps:
         lines.append(f"jump ({j.kind}) between dx = {j.dx_before:g} and {j.dx_after:g}: "
                      f"F {fmt_q(j.force_before)} -> {fmt_q(j.force_after)}")
+    if not getattr(c, "complete", True):
+        # A partial curve (the stable branch ends before --stop): its points are real equilibria, printed
+        # (table or JSON, exit 0); what is missing and why goes to stderr.
+        note(getattr(c, "note", "") or f"the curve is partial: {c.dx.size} of {dx.size} points computed")
     return data, "\n".join(lines)
 
 
 def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.ArgumentParser:
     """The parser of every library command; ``add_commands(subparsers)`` adds more (a command that
     handles its own arguments sets ``run=callable(args) -> exit status`` as its default)."""
-    p = argparse.ArgumentParser(prog="tensegrity-opt", description=__doc__.splitlines()[0])
+    p = Parser(prog="tensegrity-opt", epilog="Each command's options and their defaults: tensegrity-opt COMMAND "
+                                             "--help (plot: tensegrity-opt plot KIND --help).")
     p.add_argument("--version", action="version", version=f"tensegrity-opt {__version__}")
-    sub = p.add_subparsers(dest="command", required=True)
+    sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
     def common(sp: argparse.ArgumentParser) -> None:
         add_manipulator_options(sp)
@@ -140,7 +147,32 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
 
     if add_commands is not None:
         add_commands(sub)
+    p.description = describe(sub.choices)
     return p
+
+
+#: The command groups of the top help, in order; a command in none of them is listed under "more".
+GROUPS = (("equilibria", ("buckling", "equilibrium", "equilibria", "curve", "rest")),
+          ("loading paths", ("branch", "limit-load", "boundary", "atlas")),
+          ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "load-capacity")),
+          ("figures", ("plot",)), ("parameter sweeps", ("sweep",)), ("HTTP service", SERVICE_COMMANDS))
+
+
+def describe(commands) -> str:
+    """The top help's description: every command, by group (:data:`GROUPS`), of the parser's ``commands``."""
+    names = list(commands)
+    parts, seen = [], set()
+    for title, group in GROUPS:
+        here = [c for c in group if c in names]
+        seen.update(here)
+        if here:
+            parts.append(f"{title}: {', '.join(here)}")
+    rest = [c for c in names if c not in seen]
+    if rest:
+        parts.append(f"more: {', '.join(rest)}")
+    return ("The tensegrity manipulator's analyses from the command line - " + "; ".join(parts) + ". "
+            "Tables by default, --json for the HTTP API's body; a bad input is one line 'error: ...' on "
+            "stderr and exit status 2.")
 
 
 def main(argv: list[str] | None = None, parser: argparse.ArgumentParser | None = None) -> int:

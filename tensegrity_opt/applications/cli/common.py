@@ -13,14 +13,41 @@ import math
 import os
 import sys
 
-from ...errors import NonFiniteResult, TensegrityError
+from ...errors import InvalidParameterError, NonFiniteResult, TensegrityError
 from ...model.manipulator import Manipulator
 
 __all__ = ["add_manipulator_options", "run_command", "positive_int", "finite_float", "HELP_FORMAT", "fmt_q",
-           "eq_table"]
+           "eq_table", "Parser", "error", "note"]
 
 #: Every command's help shows each option's default.
 HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
+
+
+class Parser(argparse.ArgumentParser):
+    """An ``ArgumentParser`` whose usage errors are one line on stderr, ``PROG: error: MESSAGE (see PROG
+    --help)``, and exit status 2 (argparse's status; its usage block is left out: for the commands with
+    many options it buried the one line that matters). Subparsers inherit the class, and every
+    parser shows each option's default (:data:`HELP_FORMAT`) unless given another formatter."""
+
+    def __init__(self, *args, **kwargs) -> None:
+        kwargs.setdefault("formatter_class", HELP_FORMAT)
+        super().__init__(*args, **kwargs)
+
+    def error(self, message: str):  # noqa: D102  (argparse's hook)
+        self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def error(message: object) -> int:
+    """Print ``tensegrity-opt: error: MESSAGE`` (one line) on stderr; the exit status of a bad input, 2."""
+    text = " ".join(str(message).split()) or type(message).__name__
+    print(f"tensegrity-opt: error: {text}", file=sys.stderr)
+    return 2
+
+
+def note(message: object) -> None:
+    """Print ``tensegrity-opt: note: MESSAGE`` on stderr: something the result's reader must know (a partial
+    curve) that is not an error (the exit status stays 0)."""
+    print(f"tensegrity-opt: note: {message}", file=sys.stderr)
 
 
 def positive_int(text: str) -> int:
@@ -74,7 +101,11 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
 def _manipulator(args: argparse.Namespace) -> Manipulator:
     if args.manipulator:
         with open(args.manipulator, encoding="utf-8") as fh:
-            return Manipulator.from_dict(json.load(fh))
+            data = json.load(fh)
+        if not isinstance(data, dict) or not isinstance(data.get("segments"), list):
+            raise InvalidParameterError(f"--manipulator {args.manipulator}: expected a JSON object "
+                                        '{"segments": [{"a", "b", "k", "L0"}, ...]}', field="manipulator")
+        return Manipulator.from_dict(data)
     return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0)
 
 
@@ -83,7 +114,12 @@ def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:
 
     A command either handles its own arguments (``run=callable(args) -> status``) or is an analysis
     (``func=callable(args, manipulator) -> (data, text)``) printing ``text``, or with ``--json`` the
-    result's ``to_dict()`` (``data``, called only then) - the body the HTTP API answers."""
+    result's ``to_dict()`` (``data``, called only then) - the body the HTTP API answers.
+
+    Every bad input is one line ``tensegrity-opt: error: ...`` on stderr and exit status 2: argparse's
+    usage errors (:class:`Parser`), and what the command raises for its input - a domain error
+    (:class:`~tensegrity_opt.errors.TensegrityError`, a ``ValueError`` or ``RuntimeError`` naming the field),
+    any other ``ValueError``/``TypeError``, an unreadable file (``OSError``, bad JSON) - never a traceback."""
     args = parser.parse_args(argv)
     if getattr(args, "run", None) is not None:
         return args.run(args)
@@ -92,9 +128,8 @@ def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:
         data, text = args.func(args, m)
         if args.json:
             text = json.dumps(data() if callable(data) else data, indent=2)
-    except (TensegrityError, NonFiniteResult, OSError, json.JSONDecodeError, TypeError) as exc:
-        print(f"tensegrity-opt: error: {exc}", file=sys.stderr)
-        return 2
+    except (TensegrityError, NonFiniteResult, OSError, ValueError, TypeError) as exc:
+        return error(exc)
     try:
         print(text)
         sys.stdout.flush()

@@ -42,7 +42,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
-from .common import HELP_FORMAT, add_manipulator_options, positive_int, run_command
+from .common import HELP_FORMAT, Parser, add_manipulator_options, note, positive_int, run_command
 from .control import add_plan_options, add_simulate_options, plan_from_args, simulation_from_args
 from .paths import (add_atlas_options, add_boundary_options, add_branch_options, add_limit_load_options,
                     atlas_from_args, boundary_from_args, branches_from_args, limit_load_from_args)
@@ -69,7 +69,7 @@ def _common(sp: argparse.ArgumentParser) -> None:
     sp.add_argument("--json", action="store_true", help="print JSON instead of a line of text")
     sp.add_argument("-o", "--output", type=_output, required=True, metavar="FIG.png|FIG.svg",
                     help="figure file; PNG or SVG by its suffix")
-    sp.add_argument("--dpi", type=float, default=150.0, help="resolution of a PNG (default 150)")
+    sp.add_argument("--dpi", type=float, default=150.0, help="resolution of a PNG (dots per inch)")
 
 
 def _axis(spec: list[str], name: str) -> tuple[str, np.ndarray]:
@@ -113,8 +113,13 @@ def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
 
     c = force_deflection(m, dx, args.dy, branch=args.branch)
     fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
-    return _render(args, fig, "curve", {"points": int(c.dx.size), "jumps": [j.kind for j in c.jumps],
-                                        "branches": len(c.branches)})
+    complete = bool(getattr(c, "complete", True))
+    out = _render(args, fig, "curve", {"points": int(c.dx.size), "jumps": [j.kind for j in c.jumps],
+                                       "branches": len(c.branches), "complete": complete,
+                                       "note": "" if complete else str(getattr(c, "note", ""))})
+    if not complete:      # the figure holds the points computed; the reader is told where and why it ends
+        note(getattr(c, "note", "") or f"the curve is partial: {c.dx.size} of {dx.size} points computed")
+    return out
 
 
 def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
@@ -229,29 +234,29 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
     k = kinds.add_parser("curve", help="force-deflection curves Fx, Fy with their jumps (Fig. 6)")
     _common(k)
-    k.add_argument("--start", type=float, default=0.0)
-    k.add_argument("--stop", type=float, default=1.0)
-    k.add_argument("--num", type=positive_int, default=41)
-    k.add_argument("--dy", type=float, default=0.0)
+    k.add_argument("--start", type=float, default=0.0, help="first tip deflection dx (length)")
+    k.add_argument("--stop", type=float, default=1.0, help="last tip deflection dx (length)")
+    k.add_argument("--num", type=positive_int, default=41, help="number of deflections, evenly spaced")
+    k.add_argument("--dy", type=float, default=0.0, help="sideways tip deflection (length)")
     k.add_argument("--branch", choices=("stable", "all"), default="stable",
                    help="'all': every branch, unstable parts dashed")
     k.set_defaults(func=_cmd_curve)
 
     k = kinds.add_parser("landscape", help="energy contours E(q_i, q_j) with every equilibrium (n = 4, Figs. 4-5)")
     _common(k)
-    k.add_argument("--dx", type=float, default=0.1)
-    k.add_argument("--dy", type=float, default=0.0)
+    k.add_argument("--dx", type=float, default=0.1, help="tip deflection along the chain (length)")
+    k.add_argument("--dy", type=float, default=0.0, help="sideways tip deflection (length)")
     k.add_argument("--pair", type=int, nargs=2, default=[0, 3], metavar=("I", "J"),
-                   help="the two grid joints, 0-based (default 0 3: the paper's q1, q4)")
+                   help="the two grid joints, 0-based (0 3: the paper's q1, q4)")
     k.add_argument("--grid", type=positive_int, default=101, help="points per axis")
     k.add_argument("--span", type=float, default=None,
-                   help="half-width of the axes (rad); default: the reachable region; 0: the physical range")
+                   help="half-width of the axes (rad); None: the reachable region; 0: the physical range")
     k.set_defaults(func=_cmd_landscape)
 
     k = kinds.add_parser("shapes", help="the chain drawn in every equilibrium, coloured by stability")
     _common(k)
-    k.add_argument("--dx", type=float, default=0.1)
-    k.add_argument("--dy", type=float, default=0.0)
+    k.add_argument("--dx", type=float, default=0.1, help="tip deflection along the chain (length)")
+    k.add_argument("--dy", type=float, default=0.0, help="sideways tip deflection (length)")
     k.add_argument("--max-panels", type=positive_int, default=24, help="draw at most this many (lowest energies)")
     k.set_defaults(func=_cmd_shapes)
 
@@ -259,9 +264,11 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     _common(k)
     k.add_argument("--vary", choices=_PARAMS, help="one curve per value of this parameter (first segment)")
     k.add_argument("--values", type=float, nargs="+", metavar="V", help="the values for --vary")
-    k.add_argument("--qmin", type=float, default=None, help="default: the physical range")
-    k.add_argument("--qmax", type=float, default=None)
-    k.add_argument("--num", type=positive_int, default=401)
+    k.add_argument("--qmin", type=float, default=None,
+                   help="first joint angle (rad); None: the lower end of the physical range")
+    k.add_argument("--qmax", type=float, default=None,
+                   help="last joint angle (rad); None: the upper end of the physical range")
+    k.add_argument("--num", type=positive_int, default=401, help="number of angles, evenly spaced")
     k.set_defaults(func=_cmd_torque)
 
     k = kinds.add_parser("map", help="critical load over two design parameters (a, b, k, L0)")
@@ -270,7 +277,8 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
                    help="horizontal axis, e.g. --x k 0.5 2 16")
     k.add_argument("--y", nargs=4, required=True, metavar=("PARAM", "START", "STOP", "NUM"),
                    help="vertical axis, e.g. --y L0 0.5 2.5 21")
-    k.add_argument("--boundary", choices=("guided", "free"), default="guided")
+    k.add_argument("--boundary", choices=("guided", "free"), default="guided",
+                   help="tip guided (y held, the paper's case) or free")
     k.set_defaults(func=_cmd_map)
 
     k = kinds.add_parser("branch", formatter_class=HELP_FORMAT,
@@ -316,7 +324,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     """``python -m tensegrity_opt.applications.cli.plot KIND ...``: the ``plot`` command on its own."""
-    p = argparse.ArgumentParser(prog="tensegrity-opt")
+    p = Parser(prog="tensegrity-opt")
     add_plot_parser(p.add_subparsers(dest="command", required=True))
     return run_command(p, ["plot", *(sys.argv[1:] if argv is None else argv)])
 

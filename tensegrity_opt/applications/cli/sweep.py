@@ -2,9 +2,12 @@
 
 Wired into :mod:`tensegrity_opt.applications.cli` by :func:`add_sweep_parser` (the command handles
 its own arguments, so it registers as a ``run`` command returning the exit status).
-Without ``-o`` the rows go to stdout as CSV. The scheduler defaults to ``local`` (a
-``dask.distributed.LocalCluster``, one single-threaded worker process per core);
-``serial`` solves in this process; ``tcp://host:port`` uses a running Dask scheduler.
+Without ``-o`` the rows go to stdout as CSV. The scheduler defaults to ``auto``: serially in this
+process for a small sweep, a local Dask cluster only where its start pays off (measured:
+benchmarks/RESULTS.md, "Sweep scheduler default"; :func:`tensegrity_opt.applications.sweeps.scheduler.auto_scheduler`);
+``serial`` solves in this process, ``threads`` in a pool of threads of this process, ``local`` on a
+``dask.distributed.LocalCluster`` (one single-threaded worker process per core) and ``tcp://host:port``
+on a running Dask scheduler.
 A one-line summary goes to stderr. Errors (bad spec, unreadable file, unknown output type,
 unreachable scheduler) print one line to stderr and exit with status 2; points that fail
 are rows with an ``error`` and do not change the exit status.
@@ -21,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from ...errors import TensegrityError
+from ..sweeps.scheduler import AUTO_CLUSTER_SECONDS, AUTO_SERIAL_POINTS, SCHEDULERS
 
 __all__ = ["add_sweep_parser", "cmd_sweep"]
 
@@ -30,19 +34,24 @@ _SUFFIXES = (".csv", ".json", ".parquet", ".pq")
 def add_sweep_parser(subparsers: Any) -> argparse.ArgumentParser:
     """Add the ``sweep`` subcommand to ``subparsers`` (from ``ArgumentParser.add_subparsers``)."""
     sp = subparsers.add_parser(
-        "sweep", help="run one analysis over a grid or a list of design points (Dask or serial)",
+        "sweep", help="run one analysis over a grid or a list of design points (serial, threads or Dask)",
         description="Run a sweep spec (JSON: analysis, manipulator, grid | points, options; see "
                     "tensegrity_opt.applications.sweeps) and write one row per point.")
     sp.add_argument("spec", help="sweep spec, a JSON file ('-' reads stdin)")
     sp.add_argument("-o", "--output", metavar="FILE",
-                    help="out.csv | out.json | out.parquet (default: CSV on stdout)")
-    sp.add_argument("--scheduler", default="local", metavar="local|serial|tcp://HOST:PORT",
-                    help="where to solve: a local Dask cluster (default), this process, or a running "
-                         "Dask scheduler")
+                    help="out.csv | out.json | out.parquet; None: CSV on stdout")
+    sp.add_argument("--scheduler", default="auto", metavar="auto|serial|threads|local|tcp://HOST:PORT",
+                    help=f"where to solve. auto: serially up to {AUTO_SERIAL_POINTS} points, else the first "
+                         f"points serially, timed, and the rest on a local Dask cluster only if it would take "
+                         f"more than {AUTO_CLUSTER_SECONDS:g} s serially (a cluster costs 5-8 s to start: the "
+                         "README's 9-point buckling sweep took 5.3 s on it against 0.007 s serially; "
+                         "benchmarks/RESULTS.md, 'Sweep scheduler default'); serial: this process; threads: a "
+                         "pool of threads of this process (no consistent gain measured); local: a local Dask "
+                         "cluster; tcp://HOST:PORT: a running Dask scheduler")
     sp.add_argument("--workers", type=int, default=None, metavar="N",
-                    help="worker processes of the local cluster (default: one per core)")
+                    help="threads (threads) or worker processes (local, auto) of this machine; None: one per core")
     sp.add_argument("--chunk-size", type=int, default=None, metavar="N",
-                    help="points per Dask task (default: about four tasks per worker, at most 64)")
+                    help="points per task (threads, Dask); None: about four tasks per worker, at most 64")
     sp.add_argument("--no-progress", action="store_true", help="no progress bar (it is shown only on a terminal)")
     sp.set_defaults(run=cmd_sweep)
     return sp
@@ -63,8 +72,8 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         return 2
 
     scheduler = args.scheduler
-    if scheduler not in ("local", "serial") and "://" not in scheduler:
-        return fail(f"--scheduler: expected local, serial or tcp://host:port, got {scheduler!r}")
+    if scheduler not in SCHEDULERS and "://" not in scheduler:
+        return fail(f"--scheduler: expected {', '.join(SCHEDULERS)} or tcp://host:port, got {scheduler!r}")
     if args.output and Path(args.output).suffix.lower() not in _SUFFIXES:
         return fail(f"--output: unknown file type {Path(args.output).suffix or '(none)'!r}; "
                     "use .csv, .json or .parquet")
@@ -76,7 +85,7 @@ def cmd_sweep(args: argparse.Namespace) -> int:
         spec = validate_spec(_load_spec(args.spec))
     except (TensegrityError, OSError, json.JSONDecodeError) as exc:
         return fail(exc)
-    if scheduler != "serial":
+    if scheduler not in ("serial", "threads"):
         # Dask's INFO lines (cluster start and stop) would drown the summary.
         logging.getLogger("distributed").setLevel(logging.WARNING)
     try:

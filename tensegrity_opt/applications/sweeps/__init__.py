@@ -44,7 +44,9 @@ the point failed or a value does not exist) and ``error`` (``None`` or ``"code: 
 A failing point never stops the sweep.
 
 Execution: ``scheduler=None``/``"serial"`` solves in the calling thread (the library caches
-its CasADi solvers per thread); ``"local"`` starts a ``dask.distributed.LocalCluster``
+its CasADi solvers per thread); ``"threads"`` in a pool of threads of this process; ``"auto"`` (the
+command line's default) serially, unless a timed probe of the first points says the rest would take
+more than a minute, then on a local cluster (:func:`~.scheduler.auto_scheduler`); ``"local"`` starts a ``dask.distributed.LocalCluster``
 (one single-threaded worker process per core), ``"tcp://host:port"`` uses a running Dask
 scheduler (a :class:`distributed.Client` is accepted too). Each Dask task solves a chunk
 of points with :func:`solve_chunk` (module level, so it pickles); a worker thread builds

@@ -1,10 +1,14 @@
-"""Running a sweep: serially in the calling thread, or in chunks on Dask (a local cluster or a
-scheduler's address), with progress, resume (``skip``) and cancellation (``should_stop``)."""
+"""Running a sweep: serially in the calling thread, in a pool of threads of this process, or in chunks
+on Dask (a local cluster or a scheduler's address), with progress, resume (``skip``) and cancellation
+(``should_stop``); ``"auto"`` chooses between serial and a local cluster by the sweep's size and the
+measured time of its first points (:data:`AUTO_SERIAL_POINTS`, :data:`AUTO_CLUSTER_SECONDS`)."""
 
 from __future__ import annotations
 
+import concurrent.futures
 import math
 import os
+import statistics
 import sys
 import time
 import uuid
@@ -17,7 +21,24 @@ from .plan import _parameter_columns, _result_types, column_types, expand
 from .results import SweepResult
 from .spec import validate_spec
 
-__all__ = ["sweep"]
+__all__ = ["sweep", "auto_scheduler", "AUTO_SERIAL_POINTS", "AUTO_PROBE_POINTS", "AUTO_PROBE_SECONDS",
+           "AUTO_CLUSTER_SECONDS", "SCHEDULERS"]
+
+#: The scheduler names :func:`sweep` takes (besides a ``tcp://host:port`` address or a ``distributed.Client``).
+SCHEDULERS = ("auto", "serial", "threads", "local")
+#: ``"auto"``: a sweep of at most this many points runs serially (benchmarks/RESULTS.md, "Sweep scheduler
+#: default": a local cluster's start, ~5 s on 2 cores, costs more than such a sweep's points).
+AUTO_SERIAL_POINTS = 16
+#: ``"auto"``, a larger sweep: its first points are solved serially, to time the analysis (the median time
+#: per point: a chain length's first point also builds its solvers), until this many are done or, after
+#: three at least, :data:`AUTO_PROBE_SECONDS` have passed.
+AUTO_PROBE_POINTS = 16
+AUTO_PROBE_SECONDS = 5.0
+#: ``"auto"``: the rest goes to a local cluster only when, at the probe's time per point, it would take
+#: longer than this serially (seconds). Measured on the project's shared 2-core machine, the cluster
+#: never won: 5-8 s to start, then at best a tie (270 points of 44 s serially) and 1.5x slower at 540
+#: points (82 s); so only sweeps of minutes, where more cores pay, go to it.
+AUTO_CLUSTER_SECONDS = 120.0
 
 def _tty(stream: Any) -> bool:
     try:
@@ -55,9 +76,16 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
 
     Parameters
     ----------
-    scheduler : None | "serial" | "local" | "tcp://host:port" | distributed.Client
-        ``None``/``"serial"``: in the calling thread. ``"local"``: a new ``LocalCluster``
+    scheduler : None | "serial" | "threads" | "local" | "auto" | "tcp://host:port" | distributed.Client
+        ``None``/``"serial"``: in the calling thread. ``"threads"``: chunks in a pool of ``workers``
+        threads of this process (default one per core; no consistent gain over serial measured on 2
+        cores: benchmarks/RESULTS.md, "Sweep scheduler default"). ``"local"``: a new ``LocalCluster``
         (``workers`` single-threaded processes, default one per core), closed at the end.
+        ``"auto"``: serially when the sweep has at most :data:`AUTO_SERIAL_POINTS` points to solve;
+        else its first points serially (:data:`AUTO_PROBE_POINTS`, at most :data:`AUTO_PROBE_SECONDS`),
+        and the rest on a local cluster only when, at the measured time per point, it would take
+        more than :data:`AUTO_CLUSTER_SECONDS` serially (:func:`auto_scheduler`;
+        ``SweepResult.scheduler`` says what ran: ``"serial"`` or ``"serial+local"``).
         An address: the Dask scheduler there (its workers need ``tensegrity_opt`` installed).
     progress : bool
         Show a tqdm bar on stderr, only when stderr is a terminal.
@@ -95,15 +123,45 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
         if on_result is not None:
             on_result(i, row)
 
+    def serial(items, seconds: float | None = None, times: list[float] | None = None) -> tuple[bool, int]:
+        """Solve ``items`` in order (with ``seconds``: until they have passed, at least three points), each
+        point's time appended to ``times``: ``(cancelled, how many were solved)``."""
+        t_start = time.perf_counter()
+        for k, (i, p) in enumerate(items):
+            if stop():
+                return True, k
+            if seconds is not None and k >= 3 and time.perf_counter() - t_start > seconds:
+                return False, k
+            t_point = time.perf_counter()
+            deliver(i, _row(header, param_cols, result_cols, i, p))
+            if times is not None:
+                times.append(time.perf_counter() - t_point)
+            bar.update(1, n_err)
+        return False, len(items)
+
     label = "serial"
     try:
         if scheduler is None or scheduler == "serial":
-            for i, p in todo:
-                if stop():
-                    cancelled = True
-                    break
-                deliver(i, _row(header, param_cols, result_cols, i, p))
-                bar.update(1, n_err)
+            cancelled = serial(todo)[0]
+        elif scheduler == "auto":
+            if auto_scheduler(len(todo)) == "serial":
+                cancelled = serial(todo)[0]
+            else:
+                # the median, not the mean: a chain length's first point also builds its solvers (seconds)
+                times: list[float] = []
+                cancelled, done = serial(todo[:AUTO_PROBE_POINTS], AUTO_PROBE_SECONDS, times)
+                per_point = float(statistics.median(times)) if times else 0.0
+                rest = todo[done:]
+                if not cancelled and rest:
+                    if auto_scheduler(len(rest), per_point) == "serial":
+                        cancelled = serial(rest)[0]
+                    else:
+                        _, cancelled = _run_dask("local", header, param_cols, result_cols, rest, deliver, bar,
+                                                 lambda: n_err, stop, chunk_size, workers)
+                        label = "serial+local"
+        elif scheduler == "threads":
+            label, cancelled = "threads", _run_threads(header, param_cols, result_cols, todo, deliver, bar,
+                                                       lambda: n_err, stop, chunk_size, workers)
         else:
             label, cancelled = _run_dask(scheduler, header, param_cols, result_cols, todo, deliver, bar,
                                          lambda: n_err, stop, chunk_size, workers)
@@ -112,6 +170,47 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
     types = column_types(norm)
     return SweepResult(norm, cols, [rows[i] for i in sorted(rows)], total=len(points), skipped=len(points) - len(todo),
                        cancelled=cancelled, elapsed=time.perf_counter() - t0, scheduler=label, types=types)
+
+
+def auto_scheduler(points: int, seconds_per_point: float | None = None) -> str:
+    """What ``scheduler="auto"`` does with ``points`` points to solve.
+
+    Without ``seconds_per_point``: ``"serial"`` up to :data:`AUTO_SERIAL_POINTS` points, else ``"probe"``
+    (solve the first points serially and time them). With the measured ``seconds_per_point``, for the
+    ``points`` left after the probe: ``"local"`` (a local Dask cluster) when they would take more than
+    :data:`AUTO_CLUSTER_SECONDS` serially, else ``"serial"``.
+    """
+    if seconds_per_point is None:
+        return "serial" if points <= AUTO_SERIAL_POINTS else "probe"
+    return "local" if points * seconds_per_point > AUTO_CLUSTER_SECONDS else "serial"
+
+
+def _chunk_size(chunk_size: int | None, points: int, threads: int) -> int:
+    return chunk_size or max(1, min(64, math.ceil(points / (4 * threads))))
+
+
+def _run_threads(header, param_cols, result_cols, todo, deliver, bar, n_err, stop, chunk_size, workers) -> bool:
+    """Chunks of ``todo`` on a pool of ``workers`` threads of this process (each builds its solvers once:
+    the library caches them per thread); rows delivered in the calling thread. Returns ``cancelled``."""
+    if not todo:
+        return False
+    threads = workers or os.cpu_count() or 1
+    size = _chunk_size(chunk_size, len(todo), threads)
+    chunks = [todo[j:j + size] for j in range(0, len(todo), size)]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=threads, thread_name_prefix="tensegrity-sweep") as pool:
+        futures = [pool.submit(solve_chunk, header, param_cols, result_cols, c) for c in chunks]
+        try:
+            for fut in concurrent.futures.as_completed(futures):
+                results = fut.result()
+                for i, row in results:
+                    deliver(i, row)
+                bar.update(len(results), n_err())
+                if stop():
+                    return True
+        finally:
+            for f in futures:
+                f.cancel()
+    return False
 
 
 def _run_dask(scheduler: Any, header, param_cols, result_cols, todo, deliver, bar, n_err, stop, chunk_size,
@@ -132,14 +231,14 @@ def _run_dask(scheduler: Any, header, param_cols, result_cols, todo, deliver, ba
     elif isinstance(scheduler, str) and "://" in scheduler:
         client, label = Client(scheduler, timeout="30s"), scheduler
     else:
-        raise InvalidParameterError(f"scheduler: expected 'serial', 'local' or a Dask address like "
+        raise InvalidParameterError(f"scheduler: expected 'auto', 'serial', 'threads', 'local' or a Dask address like "
                                     f"tcp://host:8786, got {scheduler!r}", field="scheduler")
     cancelled = False
     try:
         if not todo:
             return label, False
         threads = max(1, sum(client.nthreads().values()))
-        size = chunk_size or max(1, min(64, math.ceil(len(todo) / (4 * threads))))
+        size = _chunk_size(chunk_size, len(todo), threads)
         chunks = [todo[j:j + size] for j in range(0, len(todo), size)]
         tag = uuid.uuid4().hex[:12]
         max_in_flight = 2 * threads + 2
