@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar
+from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
@@ -13,15 +13,18 @@ T = TypeVar("T", bound="SolverInfo")
 class SolverInfo:
     """
     Attributes:
-        iterations (int):
+        iterations (int | None): iterations of the final solve (0: none needed, e.g. the straight chain); null: not
+            counted - a point of the compiled continuation of a chain of more than 8 segments (CasADi's rootfinder does not
+            report it)
         status (str): the solver's return status (IPOPT return_status, Newton status, or 'straight')
     """
 
-    iterations: int
+    iterations: int | None
     status: str
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        iterations: int | None
         iterations = self.iterations
 
         status = self.status
@@ -40,7 +43,13 @@ class SolverInfo:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        iterations = d.pop("iterations")
+
+        def _parse_iterations(data: object) -> int | None:
+            if data is None:
+                return data
+            return cast(int | None, data)
+
+        iterations = _parse_iterations(d.pop("iterations"))
 
         status = d.pop("status")
 
