@@ -548,7 +548,7 @@ def landscape_region(m: Manipulator, target: Any, pair: tuple[int, int], qi: np.
 
 def plot_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, int] = (0, 3),
                    grid: Any = 101, *, span: float | str | None = "auto",
-                   equilibria: list[Equilibrium] | None = None, levels: int = 16,
+                   equilibria: list[Equilibrium] | None = None, levels: int = 24,
                    figsize: tuple[float, float] = (10.6, 5.0)) -> Any:
     """Energy landscape ``E(q_i, q_j)`` (Figs. 4-5, n = 4) with every equilibrium marked.
 
@@ -587,6 +587,7 @@ def plot_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, 
     import matplotlib
     from matplotlib.lines import Line2D
     from matplotlib.patches import PathPatch
+    from matplotlib.ticker import MaxNLocator
 
     from ..analyses.landscape import landscape_margin
 
@@ -633,11 +634,12 @@ def plot_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, 
         ax.set_xlim(float(np.min(land.qi)), float(np.max(land.qi)))
         ax.set_ylim(float(np.min(land.qj)), float(np.max(land.qj)))
         ax.set_aspect("equal", adjustable="box")
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=5))
         ax.grid(True, lw=0.3, alpha=0.4)
     axes[0].set_ylabel(f"joint angle $q_{pair[1] + 1}$ (rad)")
     if fill is not None:
-        fig.colorbar(fill, ax=list(axes), label=f"elastic energy $E$ ({ENERGY_UNIT})", shrink=0.9, ticks=lv[::2]
-                     if lv.size > 10 else lv)
+        fig.colorbar(fill, ax=list(axes), label=f"elastic energy $E$ ({ENERGY_UNIT})", shrink=0.9,
+                     ticks=lv[::max(1, math.ceil(lv.size / 8))])
     kinds = [k for k in STABILITY_COLORS if any(e.kind == k for e in eqs)]
     hs = [Line2D([], [], ls="none", marker="o", ms=7, mfc=STABILITY_COLORS[k], mec="black") for k in kinds]
     ls = [f"{_KIND_TEXT[k]} equilibrium" for k in kinds]
@@ -1391,7 +1393,7 @@ def _cell_edges(v: np.ndarray, other: np.ndarray) -> np.ndarray:
 
 
 def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = None,
-               figsize: tuple[float, float] = (8.8, 5.6)) -> Any:
+               figsize: tuple[float, float] = (7.6, 6.4)) -> Any:
     """The workspace stability atlas of :func:`~tensegrity_opt.stability_atlas` (or
     :func:`~tensegrity_opt.applications.sweeps.atlas_from_rows`): the number of stable equilibria of the held
     tip as a map over the deflection ``(dx, dy)``, one cell centred on each target, one colour per count (a
@@ -1399,7 +1401,7 @@ def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = 
     failed ones (an error, or not computed within the time limit) dark and cross-hatched. On top: the curves
     where the least-energy branch switches (``atlas.curves("switch")``, solid) and where stable branches end
     (``atlas.curves("branch_end")``, dashed), each crossing located on a grid edge marked. The legend sits
-    beside the axes (it never covers data); the axes are the deflections in the caller's length unit; the title
+    below the axes (it never covers data); the axes are the deflections in the caller's length unit; the title
     names the method, the grid, the status when incomplete and (``m``) the chain's parameters.
 
     Artists (``gid``): ``"n_stable"`` (QuadMesh, masked array ``n_stable[j, i]``, masked where unreachable or
@@ -1465,7 +1467,9 @@ def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = 
     ax.set_ylim(float(ye[0]), float(ye[-1]))
     ax.set_xlabel(branch_quantity_label("dx") + ", > 0 shortens the chain")
     ax.set_ylabel(branch_quantity_label("dy"))
-    _outside_legend(ax, handles, labels)
+    if handles:                     # below the map (beside it, the long entries squeeze the map)
+        fig.legend(handles, labels, fontsize=7, loc="outside lower center", ncols=2 if len(handles) > 2 else 1,
+                   frameon=False)
     if title is None:
         certified = bool(np.all(atlas.certified[good])) and good.any()
         title = (f"Stability atlas of the held tip: {X.size} x {Y.size} targets, method {atlas.method}"
