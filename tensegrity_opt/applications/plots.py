@@ -40,25 +40,31 @@ function                  figure
                           against the tip's response, each snap an arrow from its fold to its landing
 ========================  ===================================================================
 
-Every figure is drawn in the caller's units (forces ``stiffness x length``, energies
-``stiffness x length^2``, lengths, angles in rad), and the axes say so; the loading-path figures put
-their legend beside the axes (a figure legend: it never covers the data) and the chain's
-parameters in the title (:func:`chain_label`); so does the atlas.
+Every figure is drawn in the caller's units (the model has none of its own: lengths in the unit of
+``a``, ``b``, ``L0``, the paper's ``b = 1``; forces ``stiffness x length``, energies and torques
+``stiffness x length^2``, angles in rad), and every axis says its quantity and unit; every figure puts
+the chain's parameters in its title (:func:`chain_label`; a chain whose segments differ is
+"heterogeneous, n = ..." with ranges) and its legend outside the axes (a figure legend beside or
+below them: it never covers the data). Contour levels are evenly spaced round values.
 
 The plotted data are the library's numbers, unchanged. Artists carry stable ``gid`` values so
 that they can be found again (tests read the data back from them):
 
 * curve: ``"fx"``, ``"fy"`` (the selected least-energy stable curve, NaN-separated at every
-  jump), ``"jump-<k>-<kind>-fx"`` / ``"-fy"`` (the ``k``-th entry of ``Curve.jumps``; a buckling
-  jump is the vertical segment at the abscissa 0 from 0 to the critical force),
+  jump), ``"jump-<k>-<kind>-fx"`` / ``"-fy"`` (the ``k``-th entry of ``Curve.jumps``, ``kind`` as
+  :func:`jump_kind`; a buckling jump is the vertical segment at the abscissa 0 from 0 to the critical
+  force), ``"jump-<k>-number-fx"`` (its number), a partial curve's ``"end-marker-fx"`` / ``"-fy"`` (its last
+  point), ``"curve-end-fx"`` / ``"-fy"`` (the vertical at ``ended_at``), ``"curve-end-text"``,
   ``"branch-<id>-fx-stable"`` / ``"-unstable"`` (``branch="all"``; NaN where the branch does not
   exist or has the other stability);
-* landscape: ``"energy-elbow+1"`` / ``"energy-elbow-1"`` (QuadMesh, array = ``energy[e].T``),
-  ``"contour-elbow..."`` (contour set), ``"equilibria-elbow..."`` (scatter of ``(q_i, q_j)``);
+* landscape: ``"energy-elbow+1"`` / ``"energy-elbow-1"`` (QuadMesh, array = ``energy[e].T``, not drawn),
+  ``"energy-fill-elbow..."`` (filled contours, clipped to the region), ``"contour-elbow..."`` (contour lines),
+  ``"boundary-elbow..."`` (the region's outline), ``"equilibria-elbow..."`` (scatter of ``(q_i, q_j)``);
 * shapes: per panel ``"triangle-<i>-<0|1>"`` (proximal/distal triangle of segment ``i``),
   ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``;
   the axes' gid is ``"equilibrium-<k>"``;
-* torque: ``"torque-<k>"``; map: ``"critical-load"`` (QuadMesh, array ``P[iy, ix]``);
+* torque: ``"torque-<k>"``; map: ``"critical-load"`` (QuadMesh, array ``P[iy, ix]``), ``"critical-load-contours"``,
+  ``"condition4"`` (the line ``K = 0``), ``"design"``;
 * branches: ``"branch-<b>-morse<k>-<j>"`` (branch ``b``'s ``j``-th piece, of Morse index ``k``),
   ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"``; limit load:
   ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"``, ``"quasi-buckling-level"``,
@@ -97,7 +103,8 @@ __all__ = ["chain_geometry", "plot_curve", "plot_landscape", "plot_shapes", "plo
            "segment_label", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS", "plot_branches", "plot_limit_load",
            "plot_boundary", "chain_label", "branch_quantity_label", "morse_color", "BRANCH_QUANTITIES",
            "MORSE_COLORS", "EVENT_STYLES", "plot_atlas", "ATLAS_STYLES", "plot_preload_plan", "plot_simulation",
-           "CONTROL_STYLES"]
+           "CONTROL_STYLES", "jump_kind", "jump_label", "JUMP_STYLES", "landscape_region", "stiffness_text",
+           "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT"]
 
 #: File suffix / format name -> MIME type.
 FORMATS = {"png": "image/png", "svg": "image/svg+xml"}
@@ -399,7 +406,7 @@ def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *
                 xb = xa                          # vertical: from 0 to the critical force at dx -> 0+
             seg, = ax.plot([xa, xb], [f0, f1], color=st["color"], ls=st["ls"], lw=1.5, marker=st["marker"], ms=4,
                            zorder=5)
-            seg.set_gid(f"jump-{k}-{j.kind}-{name}")
+            seg.set_gid(f"jump-{k}-{kind}-{name}")
             ax.plot([xb], [f1], marker="o", mfc="white", mec=st["color"], ls="none", zorder=6)
             if comp == 0 or float(j.force_before[0]) == float(j.force_after[0]):
                 # beside a vertical jump, above (alternately below) a slanted one: clear of its end markers
