@@ -32,8 +32,8 @@ PAPER = to.Manipulator.uniform(4, a=1.0, b=1.0, k=1.0, L0=1.0)
 
 def fig2_torque():
     """Fig. 2: torque-angle curves, monotonic and two-mode. a/b = 0.5, so condition (4) reads L0 > 1.5 b:
-    K = k (b L0 - 2 (b^2 - a^2)) = -1, 0, +1 for L0 = 0.5, 1.5, 2.5."""
-    segs = [to.Segment(0.5, 1.0, 1.0, L0) for L0 in (0.5, 1.5, 2.5)]
+    K = k (b L0 - 2 (b^2 - a^2)) = -0.5, 0, +0.5 for L0 = 1, 1.5, 2 (L0 = 1: stable wells at q = +-1.682)."""
+    segs = [to.Segment(0.5, 1.0, 1.0, L0) for L0 in (1.0, 1.5, 2.0)]
     return plots.plot_torque(segs)
 
 

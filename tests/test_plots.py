@@ -711,3 +711,16 @@ def test_legends_do_not_cover_the_data(make):
         assert not fig.legends                    # no legend at all: the colours are in each panel's title
         return
     assert legend_boxes_clear(fig)
+
+
+def test_torque_marks_the_equilibria_of_the_unloaded_segment():
+    # two-mode (K = -0.5): wells where cos(q/2) = L0 cos(beta) / (2 c cos(2 beta)) (eq. 2 = 0), q = 0 unstable
+    two, mono = to.Segment(0.5, 1.0, 1.0, 1.0), to.Segment(0.5, 1.0, 1.0, 2.0)
+    c, beta = np.hypot(0.5, 1.0), np.arctan2(0.5, 1.0)
+    well = 2.0 * np.arccos(1.0 * np.cos(beta) / (2.0 * c * np.cos(2.0 * beta)))
+    assert well == pytest.approx(1.68214, abs=1e-5) and well < two.joint_limit
+    fig = plots.plot_torque([two, mono], num=401)
+    st = gid(fig, "torque-0-stable").get_xdata()
+    un = gid(fig, "torque-0-unstable").get_xdata()
+    assert np.allclose(np.sort(st), [-well, well], atol=1e-4) and np.allclose(un, [0.0], atol=1e-12)
+    assert np.allclose(gid(fig, "torque-1-stable").get_xdata(), [0.0]) and gid(fig, "torque-1-unstable").get_xdata().size == 0

@@ -103,7 +103,7 @@ __all__ = ["chain_geometry", "plot_curve", "plot_landscape", "plot_shapes", "plo
            "segment_label", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS", "plot_branches", "plot_limit_load",
            "plot_boundary", "chain_label", "branch_quantity_label", "morse_color", "BRANCH_QUANTITIES",
            "MORSE_COLORS", "EVENT_STYLES", "plot_atlas", "ATLAS_STYLES", "plot_preload_plan", "plot_simulation",
-           "CONTROL_STYLES", "jump_kind", "jump_label", "JUMP_STYLES", "landscape_region", "stiffness_text",
+           "CONTROL_STYLES", "jump_kind", "jump_label", "JUMP_STYLES", "landscape_region", "stiffness_text", "torque_zeros",
            "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT"]
 
 #: File suffix / format name -> MIME type.
@@ -783,6 +783,24 @@ def stiffness_text(seg: Segment) -> str:
     return f"K = {K:.3g}: {kind}"
 
 
+def torque_zeros(q: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The equilibria of an unloaded segment on a sampled torque curve: the angles where ``M`` is zero or
+    changes sign (linear interpolation between samples), and whether each is stable: ``M`` falls through
+    zero (positive before, negative after, so a deflection is pushed back; also at ``K = 0`` when the curve
+    is monotonic there)."""
+    q, M = np.asarray(q, float), np.asarray(M, float)
+    out_q, out_s = [], []
+    for i in range(q.size - 1):
+        a, b = M[i], M[i + 1]
+        if a == 0.0 and 0 < i:
+            out_q.append(q[i])
+            out_s.append(bool(M[i - 1] > 0.0 > b))
+        elif a * b < 0.0:
+            out_q.append(q[i] - a * (q[i + 1] - q[i]) / (b - a))
+            out_s.append(bool(a > 0.0))
+    return np.array(out_q, float), np.array(out_s, bool)
+
+
 def _common_label(segs: Sequence[Segment]) -> str:
     """The parameters every segment shares, ``"a = 0.5, b = 1, k = 1"`` (empty when none)."""
     same = [p for p in MAP_PARAMS if len({getattr(s, p) for s in segs}) == 1]
@@ -817,6 +835,14 @@ def plot_torque(segments: Segment | Manipulator | Iterable[Segment], q: Any = No
         lab = (f"{lab} ({stiffness_text(seg)})" if lab else stiffness_text(seg))
         line, = ax.plot(x, y, lw=1.6, label=lab)
         line.set_gid(f"torque-{k}")
+        qz, stable = torque_zeros(x, y)
+        for flag, gid_ in ((True, "stable"), (False, "unstable")):
+            sel = stable == flag
+            # unstable: a larger open ring on top, visible around the stable dots of other curves at q = 0
+            pts, = ax.plot(qz[sel], np.zeros(int(sel.sum())), ls="none", marker="o", ms=6.0 if flag else 10.0,
+                           zorder=5 if flag else 6, color=line.get_color(),
+                           mfc=line.get_color() if flag else "none", mec=line.get_color(), mew=1.6)
+            pts.set_gid(f"torque-{k}-{gid_}")
         lim = seg.joint_limit
         if not any(abs(lim - l) < 1e-12 for l in limits):
             limits.append(lim)
@@ -826,6 +852,11 @@ def plot_torque(segments: Segment | Manipulator | Iterable[Segment], q: Any = No
     ax.set_ylabel(f"spring torque $M(q) = -dE/dq$ ({ENERGY_UNIT})")
     ax.grid(True, lw=0.4, alpha=0.5)
     handles, labs = ax.get_legend_handles_labels()
+    from matplotlib.lines import Line2D
+
+    handles += [Line2D([], [], ls="none", marker="o", ms=6.0, mfc="0.3", mec="0.3"),
+                Line2D([], [], ls="none", marker="o", ms=9.0, mfc="none", mec="0.3", mew=1.6)]
+    labs += ["equilibrium of the unloaded segment, stable ($M$ falls through 0)", "equilibrium, unstable ($M$ rises)"]
     handles.append(_dotted_handle())
     labs.append("physical range $|q| < \\pi - 2\\beta$ (dotted)")
     fig.legend(handles, labs, fontsize=7, loc="outside lower center", ncols=1 if len(handles) > 3 else 2,
