@@ -54,8 +54,21 @@ def fig5_landscape():
 
 
 def fig6_curve():
-    """Fig. 6: the force-deflection curves Fx(dx, 0), Fy(dx, 0) of the paper's chain."""
-    return plots.plot_curve(PAPER, np.linspace(0.0, 1.0, 41), 0.0)
+    """Fig. 6: the force-deflection curves Fx(dx, 0), Fy(dx, 0) of the paper's chain, with the paper's
+    asymptotes after buckling (eq. 26, dotted): Fx ~ Fx0, Fy ~ alpha_5 / sqrt(b mu_x) sqrt(dx)."""
+    dx = np.linspace(0.0, 1.0, 41)
+    fig = plots.plot_curve(PAPER, dx, 0.0)
+    b = to.critical_force(PAPER)
+    coef = float(b.modes[0].fy_coefficient)
+    ax_fx, ax_fy = fig.axes[:2]
+    fine = np.linspace(0.0, 1.0, 201)
+    ax_fx.axhline(b.force, color="tab:green", ls=":", lw=1.4, zorder=2)
+    ax_fx.annotate(f"eq. (20): $F_x^0$ = {b.force:.4f}", (1.0, b.force), textcoords="offset points", xytext=(-4, 6),
+                   ha="right", fontsize=8, color="tab:green")
+    ax_fy.plot(fine, coef * np.sqrt(fine), color="tab:green", ls=":", lw=1.4, zorder=2)
+    ax_fy.annotate(f"eq. (26): $F_y \\approx {coef:.4f}\\sqrt{{\\delta_x}}$", (0.55, coef * np.sqrt(0.55)),
+                   textcoords="offset points", xytext=(6, -14), fontsize=8, color="tab:green")
+    return fig
 
 
 def shapes():

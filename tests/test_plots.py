@@ -724,3 +724,18 @@ def test_torque_marks_the_equilibria_of_the_unloaded_segment():
     un = gid(fig, "torque-0-unstable").get_xdata()
     assert np.allclose(np.sort(st), [-well, well], atol=1e-4) and np.allclose(un, [0.0], atol=1e-12)
     assert np.allclose(gid(fig, "torque-1-stable").get_xdata(), [0.0]) and gid(fig, "torque-1-unstable").get_xdata().size == 0
+
+
+def test_docs_figures_are_committed_small_and_referenced():
+    names = ["fig2_torque", "fig4_landscape", "fig5_landscape", "fig6_curve", "shapes", "branch", "atlas", "map"]
+    text = (ROOT / "docs" / "figures.md").read_text()
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("docs_figures", ROOT / "docs" / "figures.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)                  # importing draws nothing
+    for name in names:
+        png = ROOT / "docs" / "img" / f"{name}.png"
+        check_png(png.read_bytes())
+        assert png.stat().st_size <= 150_000, name
+        assert f"img/{name}.png" in text and name in mod.FIGURES, name
