@@ -1345,6 +1345,13 @@ def plot_limit_load(result: Any, *, m: Manipulator | None = None, figsize: tuple
         pt.set_gid("quasi-buckling")
         handles.append(Line2D([], [], ls=":", color="tab:green", marker="*", ms=9, mfc="tab:green", mec="black"))
         labels.append(f"quasi-buckling load {qb:.6g} (least tangent stiffness)")
+    finite_u = U[np.isfinite(U)]
+    if finite_u.size and float(np.ptp(finite_u)) <= 1e-9 * max(1.0, float(br.straight_length)):
+        # e.g. the straight chain under a guided load: it does not move until the limit point
+        note = ax.annotate("the tip does not move\nalong the load on this\npath ($u$ = 0)", (0.5, 0.5),
+                           xycoords="axes fraction", textcoords="offset points", xytext=(8, 0), ha="left",
+                           fontsize=8, color="0.3")
+        note.set_gid("no-displacement-note")
     ax.set_xlabel("tip displacement along the load $u = d \\cdot (\\mathrm{tip} - \\mathrm{tip}_0)$ (length)")
     ax.set_ylabel(f"load $t = |F|$ along $d$ (force, {FORCE_UNIT})")
     ax.grid(True, lw=0.4, alpha=0.5)
