@@ -298,8 +298,11 @@ def _sense(fx: float) -> str:
 def jump_label(j: Any) -> str:
     """``Jump.label`` when the library gives one, else a sentence of the same form naming the jump with its
     sign and size, e.g. ``"buckling of the straight chain: F_x 0 -> -0.573 (compressive)"``."""
-    label = getattr(j, "label", None)
     kind = jump_kind(j)
+    try:
+        label = getattr(j, "label", None) if j.kind in JUMP_STYLES else None   # not for the former kind
+    except (KeyError, ValueError, TypeError):
+        label = None
     if isinstance(label, str) and label and not (kind != "buckling" and label.startswith("buckling")):
         return label
     f0, f1 = float(j.force_before[0]), float(j.force_after[0])
