@@ -53,17 +53,21 @@ BUCKLING = {
 FORCE_DEFLECTION = {
     "points": [
         {"dx": 0.0, "dy": 0.0, "fx": 0.0, "fy": 0.0, "energy": 4.0, "q": [0.0, 0.0, 0.0, 0.0], "stable": True,
-         "morse_index": 0, "shape": "I", "branch": -1},
+         "morse_index": 0, "shape": "I", "branch": -1, "status": "straight"},
         {"dx": 0.05, "dy": 0.0, "fx": -0.57381, "fy": 0.018121, "energy": 4.028665,
          "q": [0.126027, -0.054267, -0.172908, -0.092902], "stable": True, "morse_index": 0, "shape": "U",
-         "branch": 0},
+         "branch": 0, "status": "Newton_Converged"},
         {"dx": 0.1, "dy": 0.0, "fx": -0.574823, "fy": 0.025785, "energy": 4.057381,
          "q": [0.178155, -0.076587, -0.245053, -0.131183], "stable": True, "morse_index": 0, "shape": "U",
-         "branch": 0},
+         "branch": 0, "status": "Newton_Converged"},
     ],
     "jumps": [{"kind": "buckling", "dx_before": 0.0, "dx_after": 0.05, "force_before": {"fx": 0.0, "fy": 0.0},
-               "force_after": {"fx": -0.572793, "fy": 0.0}, "branch_before": -1, "branch_after": 0}],
+               "force_after": {"fx": -0.572793, "fy": 0.0}, "branch_before": -1, "branch_after": 0,
+               "delta": {"fx": -0.572793, "fy": 0.0},
+               "label": "buckling of the straight chain: F_x 0 -> -0.573 (compressive)"}],
     "branches": [],
+    "reference": "straight", "origin": [0.0, 0.0],
+    "complete": True, "ended_at": None, "note": "", "requested": 3,
 }
 
 STIFFNESS = {"matrix": [[0.020242, -0.132106], [-0.132106, -0.06731]], "equilibrium": EQUILIBRIUM}

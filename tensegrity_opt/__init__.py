@@ -18,7 +18,7 @@ from .analyses.branches import Branch, BranchEvent, Control, bifurcation_diagram
 from .analyses.boundaries import StabilityBoundary, stability_boundary
 from .analyses.buckling import Buckling, Mode, critical_force
 from .analyses.continuation import Tracker, solve_equilibria_batch
-from .analyses.curves import Curve, Jump, force_deflection
+from .analyses.curves import Curve, CurveEnd, Jump, force_deflection
 from .analyses.design import (
                      Design,
                      PreloadDesign,
@@ -66,7 +66,7 @@ __all__ = [
     "find_equilibria_under_force", "rest_configuration",
     "solve_equilibria_batch", "Tracker",
     "Buckling", "Mode", "critical_force",
-    "Curve", "Jump", "force_deflection",
+    "Curve", "CurveEnd", "Jump", "force_deflection",
     "Control", "Branch", "BranchEvent", "trace_branch", "switch_branch", "bifurcation_diagram",
     "LimitLoad", "limit_load", "StabilityBoundary", "stability_boundary", "StabilityAtlas", "stability_atlas",
     "Simulation", "SimulationEvent", "simulate",

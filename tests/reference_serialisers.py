@@ -63,11 +63,14 @@ def _force(v: Any) -> dict[str, float]:
 def curve_out(c) -> dict[str, Any]:
     points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
                "energy": _num(c.energy[i]), "q": _nums(c.q[i]), "stable": bool(c.stable[i]),
-               "morse_index": int(c.morse_index[i]), "shape": c.shape[i], "branch": int(c.branch[i])}
+               "morse_index": int(c.morse_index[i]), "shape": c.shape[i], "branch": int(c.branch[i]),
+               "status": c.status[i]}
               for i in range(c.dx.size)]
     jumps = [{"kind": j.kind, "dx_before": _num(j.dx_before), "dx_after": _num(j.dx_after),
               "force_before": _force(j.force_before), "force_after": _force(j.force_after),
-              "branch_before": int(j.branch_before), "branch_after": int(j.branch_after)} for j in c.jumps]
+              "branch_before": int(j.branch_before), "branch_after": int(j.branch_after),
+              "delta": _force(np.asarray(j.force_after) - np.asarray(j.force_before)), "label": j.label}
+             for j in c.jumps]
     branches = []
     for bi, br in enumerate(c.branches):
         bid = int(br.branch[0]) if br.branch.size else bi
@@ -79,8 +82,12 @@ def curve_out(c) -> dict[str, Any]:
                         "q": [_f(v) for v in br.q[i]], "stable": bool(br.stable[i]),
                         "morse_index": int(br.morse_index[i]), "shape": br.shape[i]})
         branches.append({"id": bid, "points": pts})
+    end = c.ended_at
     return {"points": points, "jumps": jumps, "branches": branches,
-            "reference": c.reference, "origin": [float(v) for v in c.origin]}
+            "reference": c.reference, "origin": [float(v) for v in c.origin], "complete": end is None,
+            "ended_at": None if end is None else {"dx": _num(end.dx), "dy": _num(end.dy), "reason": end.reason,
+                                                  "message": end.message},
+            "note": c.note, "requested": int(c.requested)}
 
 
 def landscape_out(land) -> dict[str, Any]:

@@ -60,14 +60,13 @@ def test_all_branches():
         assert len(set(b.morse_index[ok])) == 1          # each branch keeps its stability here
 
 
-def test_branch_switch_is_reported():
+def test_switch_to_the_mirror_branch_is_reported():
     """Sweeping dy from one side to the other: the selected U branch has to flip to its mirror."""
     dy = np.linspace(-0.6, 0.6, 25)
     c = force_deflection(PAPER, np.full(dy.size, 0.3), dy)
     assert c.stable.all()
-    switches = [j for j in c.jumps if j.kind == "branch_switch"]
-    assert len(switches) == 1
-    j = switches[0]
+    assert [j.kind for j in c.jumps] == ["switch"]     # the old U stays stable past dy = 0: an exchange
+    j = c.jumps[0]
     # the mirror images tie at dy = 0; past it the other U is lower: switch between dy = 0 and 0.05
     assert j.dy_before == pytest.approx(0.0, abs=1e-12) and j.dy_after == pytest.approx(0.05)
     assert np.sign(j.force_before[1]) != np.sign(j.force_after[1])
@@ -93,16 +92,21 @@ def test_errors():
 
 def test_jump_when_the_straight_chain_is_unstable():
     """K < 0 (condition (4) fails): no critical load exists, but leaving the straight chain is still a
-    force discontinuity, from 0 to the force on the first deflected point."""
+    force discontinuity, from 0 to the force on the first deflected point: not a buckling."""
     m = Manipulator.uniform(4, a=0.5, b=1.5, k=1.0, L0=1.0)
     assert m.stiffness[0] < 0
     c = force_deflection(m, np.linspace(0.0, 1.0, 5))
-    assert len(c.jumps) == 1 and c.jumps[0].kind == "buckling"
+    assert len(c.jumps) == 1 and c.jumps[0].kind == "leave_straight"
     assert np.allclose(c.jumps[0].force_after, [c.fx[1], c.fy[1]])
     assert abs(c.fx[1]) > 1.0
 
 
 def test_every_return_to_straight_is_a_jump():
+    """Leaving the straight chain and coming back to it are both the buckling discontinuity, each between
+    the two consecutive points where it happens (the return from F_x0 back to 0)."""
     c = force_deflection(PAPER, [0.0, 0.5, 0.0, 0.6])
-    kinds = [(j.kind, j.dx_after) for j in c.jumps]
-    assert kinds == [("buckling", 0.5), ("buckling", 0.6)]
+    kinds = [(j.kind, j.dx_before, j.dx_after) for j in c.jumps]
+    assert kinds == [("buckling", 0.0, 0.5), ("buckling", 0.5, 0.0), ("buckling", 0.0, 0.6)]
+    back = c.jumps[1]
+    assert back.force_before[0] == pytest.approx(FX0, rel=1e-5) and np.all(back.force_after == 0.0)
+    assert (back.branch_before, back.branch_after) == (c.branch[1], -1)

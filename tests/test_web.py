@@ -146,7 +146,7 @@ def test_script_uses_only_elements_of_the_page():
     assert used and used <= ids, used - ids
     # The API paths the page calls exist in the service, relative to the page.
     paths = set(re.findall(r"api\(\"(v1/[\w/-]+)\"", js))
-    assert paths == {"v1/equilibrium", "v1/force-deflection", "v1/buckling"}
+    assert paths == {"v1/equilibrium", "v1/force-deflection", "v1/equilibria", "v1/buckling"}
     assert {"/" + p for p in paths} <= set(_app(True).openapi()["paths"])
 
 
@@ -159,3 +159,64 @@ def test_assets_are_package_data():
     globs = conf.get("package-data", {}).get("service.web", [])
     missing = [name for name in web.ASSETS if not any(fnmatch.fnmatch(name, g) for g in globs)]
     assert not missing, f"add to pyproject.toml [tool.setuptools.package-data] \"service.web\": {missing}"
+
+
+def _asset(name: str) -> str:
+    return resources.files("service.web").joinpath(name).read_text("utf-8")
+
+
+def test_assets_are_ascii_and_css_content_has_no_glyphs():
+    """Characters a system font may lack (the old busy glyph U+23F3 rendered as a box in Debian's Chromium) are
+    kept out: every asset is ASCII (HTML entities and JS escapes for punctuation), and a CSS ``content`` is
+    plain text without escapes; the busy indicator is a CSS animation."""
+    for name in web.ASSETS:
+        text = _asset(name)
+        bad = sorted({c for c in text if ord(c) > 127})
+        assert not bad, (name, bad)
+    css = _asset("app.css")
+    for value in re.findall(r"content:\s*([^;}]+)", css):
+        assert "\\" not in value and re.fullmatch(r'"[ -~]*"', value.strip()), value
+    spinner = re.search(r'body\[data-state="busy"\] \.spinner \{([^}]*)\}', css)
+    assert spinner and "animation: spin" in spinner.group(1) and "@keyframes spin" in css
+
+
+def test_no_inline_style_attributes():
+    """The page's CSP (``style-src 'self'``) blocks style attributes: the script sets styles through the CSSOM
+    (``el.style.x = ...``) and the HTML has none."""
+    assert "style-src 'self'" in web.CSP and "unsafe-inline" not in web.CSP
+    assert not re.search(r"setAttribute\(\s*[\"']style[\"']", _asset("app.js"))
+    assert not re.search(r"<[^>]+\sstyle=", _asset("index.html"))
+
+
+def _js_set(js: str, name: str) -> set[str]:
+    m = re.search(r"const " + name + r" = new Set\(\[([^\]]*)\]\)", js)
+    assert m, name
+    return set(re.findall(r'"(\w+)"', m.group(1)))
+
+
+def test_error_codes_the_page_classifies_are_the_services():
+    """The codes the page shows as physical answers (results) and as refusals are codes the service documents
+    (service/errors.py's table, the OpenAPI examples); a physical answer is never also a refusal."""
+    from service import examples as ex
+
+    documented = {v["value"]["code"] for d in ex.ERRORS.values() for v in d.values() if "code" in v["value"]}
+    errors_py = (Path(__file__).resolve().parents[1] / "service" / "errors.py")
+    if errors_py.is_file():
+        documented |= set(re.findall(r"``(\w+)``", errors_py.read_text("utf-8")))
+    js = _asset("app.js")
+    physical, refusals = _js_set(js, "PHYSICAL"), _js_set(js, "REFUSALS")
+    assert physical == {"straight_unstable", "straight_not_equilibrium", "no_equilibrium"}
+    assert physical <= documented and refusals <= documented, (physical | refusals) - documented
+    assert not physical & refusals
+    # Failures of the service (not the input's fault, not physics) stay errors.
+    assert not {"solver_failed", "timeout", "overloaded", "numerical_failure"} & (physical | refusals)
+
+
+def test_figure_downloads_name_figures_of_the_page():
+    html = _asset("index.html")
+    figures = re.findall(r'data-figure="([\w-]+)"\s+data-format="(svg|png)"', html)
+    assert {f for f, _ in figures} == {"chain", "curve", "equilibria-shapes"}
+    assert {(f, fmt) for f, fmt in figures} == {(f, fmt) for f, _ in figures for fmt in ("svg", "png")}
+    for f, _ in figures:
+        assert re.search(r'<svg id="' + f + r'"', html), f
+    assert 'id="dl-json"' in html and 'id="boundary-note"' in html

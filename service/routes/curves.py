@@ -21,8 +21,13 @@ router = APIRouter(prefix="/v1", tags=["curves"])
     summary="Force-deflection curve along the least-energy stable branch",
     description="Continuation over the deflections `dx` (a list, or `{start, stop, num}`; at most "
                 f"{s.MAX_CURVE_POINTS} points) at fixed `dy` (`tensegrity_opt.force_deflection`). `jumps` lists the "
-                "force discontinuities (buckling at dx -> 0+, branch switches); `branch = \"all\"` also returns every "
-                "branch found at the first deflected point, with null where it no longer exists. An answer over the "
+                "force discontinuities (`kind`: `buckling` at dx -> 0+ from the stable straight chain, `leave_straight` "
+                "from a straight chain that is not stable unloaded or at dy != 0, `snap` where the selected stable "
+                "branch ends, `switch` where the least-energy stable branch changes while the old one stays stable; "
+                "each with `delta` and a `label`); `branch = \"all\"` also returns every "
+                "branch found at the first deflected point, with null where it no longer exists. Where a point has "
+                "no stable equilibrium (a fold, the joint range) the curve stops: the answer is still 200, with the "
+                "points before it, `complete = false`, `ended_at` (that point and why) and a `note`. An answer over the "
                 "server's `TENSEGRITY_MAX_RESPONSE_BYTES` (default 8 MiB; n = 200 with 301 points and `branch = "
                 "\"all\"` is ~40 MB) is refused with 422 `response_too_large` on `dx`: ask for fewer points or "
                 "`branch = \"stable\"`.",

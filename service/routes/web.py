@@ -2,8 +2,11 @@
 
 Plain HTML, JavaScript and CSS shipped inside the ``service.web`` package (no build step, no CDN,
 no external fonts): the page works without internet. It calls the JSON API with ``fetch()``
-(``/v1/equilibrium``, ``/v1/force-deflection``, ``/v1/buckling``) using URLs relative to the page,
-so it also works behind a path prefix. Neither route is part of the OpenAPI document.
+(``/v1/equilibrium``, ``/v1/force-deflection``, ``/v1/equilibria``, ``/v1/buckling``) using URLs relative
+to the page, so it also works behind a path prefix. Neither route is part of the OpenAPI document.
+Its downloads (the results as JSON, the figures as SVG or PNG) are made in the browser from what it
+already has (no further request). Styles are set through the CSSOM, never as style attributes, which
+the policy below (``style-src 'self'``) blocks.
 
 Only the files listed in :data:`ASSETS` are served (a fixed table, never a path built from the
 request), so no other file can be reached: ``/web/../main.py`` and the like answer 404.

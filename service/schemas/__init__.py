@@ -83,6 +83,7 @@ from .control import (
 from .curves import (
     BranchOut,
     BranchPoint,
+    CurveEndOut,
     CurvePoint,
     ForceDeflectionOut,
     ForceDeflectionRequest,
@@ -211,6 +212,7 @@ __all__ = [
     "BucklingRequest",
     "ControlIn",
     "ControlOut",
+    "CurveEndOut",
     "CurvePoint",
     "CuspOut",
     "Deflection",

@@ -45,16 +45,40 @@ class CurvePoint(BaseModel):
     morse_index: int
     shape: str
     branch: int = Field(description="branch identifier (-1: straight)")
+    status: str = Field(description='solver status: "straight", "straight_not_equilibrium" (asymmetric preloads: the '
+                                    'straight point is no equilibrium, stable false), or the solver\'s status of a '
+                                    'converged equilibrium (e.g. "Newton_Converged")')
 
 
 class JumpOut(BaseModel):
-    kind: Literal["buckling", "branch_switch"]
+    """A force discontinuity between two consecutive points (in the order followed)."""
+
+    kind: Literal["buckling", "leave_straight", "snap", "switch"] = Field(
+        description='"buckling": leaving (or returning to) the stable straight chain at dx -> 0+, dy = 0, from 0 to '
+                    'the guided critical force; "leave_straight": leaving (returning to) a straight chain that is not '
+                    'stable unloaded (K <= 0) or at dy != 0, from the straight force to the deflected point\'s; "snap": '
+                    'the selected stable branch ends or loses stability and the chain jumps to another stable branch; '
+                    '"switch": the least-energy stable branch changes while the previous one is still stable')
     dx_before: float
     dx_after: float
     force_before: Force
     force_after: Force
-    branch_before: int
-    branch_after: int
+    branch_before: int = Field(description="branch identifier before (-1: straight)")
+    branch_after: int = Field(description="branch identifier after (-1: straight)")
+    delta: Force = Field(description="force_after - force_before (fx > 0 tensile, fx < 0 compressive)")
+    label: str = Field(description='a sentence naming the jump with sign and size, e.g. "buckling of the straight '
+                                   'chain: F_x 0 -> -0.573 (compressive)"')
+
+
+class CurveEndOut(BaseModel):
+    """Where a partial curve stopped: the first requested point it could not compute."""
+
+    dx: float
+    dy: float
+    reason: Literal["no_stable_equilibrium"] = Field(
+        description='"no_stable_equilibrium": no stable equilibrium is found there (the stable branches end at a '
+                    'fold or the joint range and the global search finds no other)')
+    message: str
 
 
 class BranchPoint(BaseModel):
@@ -84,3 +108,10 @@ class ForceDeflectionOut(BaseModel):
     reference: Literal["straight", "rest"] = Field("straight", description="what dx, dy are measured from")
     origin: list[float] = Field([0.0, 0.0], description="the reference tip's deflection from the straight tip "
                                                         "(add it to dx, dy for the deflection from straight)")
+    complete: bool = Field(description="every requested point was computed (ended_at is null)")
+    ended_at: CurveEndOut | None = Field(
+        description="null when complete; else the first requested point where no stable equilibrium is found: "
+                    "points holds only the points before it (the later ones are not computed)")
+    note: str = Field(description='"" when complete, else a sentence saying where the curve ends and how many '
+                                  'points it holds')
+    requested: int = Field(description="how many points were asked for (len(points) when complete)")

@@ -1,7 +1,10 @@
 /* tensegrity-opt chain explorer: plain JavaScript, no dependencies, no network beyond this server.
  *
- * Calls POST v1/equilibrium, v1/force-deflection and v1/buckling (URLs relative to the page) and
- * draws the results in SVG. Geometry (docs: conventions.md): the base half-link b_1 runs along +x
+ * Calls POST v1/equilibrium, v1/force-deflection, v1/equilibria and v1/buckling (URLs relative to the
+ * page) and draws the results in SVG. Each panel shows its answer as soon as it arrives; until then the
+ * previous answer stays, dimmed and marked stale. Physical answers the service gives as 422 (the
+ * straight chain unstable or no equilibrium, no stable equilibrium) are shown as results in their
+ * panel; only refusals and failures go to the error box. Geometry (docs: conventions.md): the base half-link b_1 runs along +x
  * from the origin to joint 1 at (b_1, 0); absolute link angles phi_j = q_1 + ... + q_j; the link
  * after joint j has length b_j + b_{j+1} (the last one b_n). Each segment is two rigid triangles
  * (half-height a, half-length b) with their apexes at the joint; spring 1 joins their outer
@@ -11,7 +14,12 @@
 
 (function () {
   const CURVE_POINTS = 60;
+  const MAX_ROWS = 24;                       // table rows shown (the JSON download has them all)
+  const MAX_MODE_ROWS = 12;
+  const DETAIL_MAX_N = 40;                   // longer chains: small drawings show the centre line only
+  const PANELS = ["shape-panel", "curve-panel", "equilibria-panel", "buckling-panel"];
   let runId = 0;
+  let last = null;                           // the last solve: inputs, requests and answers (JSON download)
 
   const $ = (id) => document.getElementById(id);
   // The SVG namespace, taken from an inline <svg> of the page (no URL string in this file).
@@ -82,8 +90,16 @@
       this.code = (body && body.code) || "http_error";
       this.field = (body && body.field) || null;
       this.solverStatus = (body && body.status) || null;
+      this.body = body || null;
     }
   }
+
+  /** Codes that say something about the chain, not about the request: shown as results. */
+  const PHYSICAL = new Set(["straight_unstable", "straight_not_equilibrium", "no_equilibrium"]);
+  /** Codes of a request the service will not take (bad input, limits, auth). */
+  const REFUSALS = new Set(["validation_error", "invalid_parameter", "unreachable_target", "unsupported",
+    "too_many_segments", "too_many_points", "too_many_steps", "response_too_large", "unauthorized",
+    "body_too_large", "batch_too_large", "atlas_too_large"]);
 
   async function api(path, body, key) {
     const headers = { "Content-Type": "application/json", "Accept": "application/json" };
@@ -114,6 +130,12 @@
     $("error").hidden = true;
   }
 
+  function errorTitle() {
+    const codes = Array.from($("error-list").children).map((li) => li.dataset.code);
+    $("error-title").textContent = codes.every((c) => REFUSALS.has(c)) ? "The service refused a request"
+      : "A request failed";
+  }
+
   function showError(what, err) {
     const li = document.createElement("li");
     li.className = "error-item";
@@ -130,11 +152,21 @@
     if (err.httpStatus) tail += " \u2014 HTTP " + err.httpStatus;
     li.appendChild(document.createTextNode(tail));
     $("error-list").appendChild(li);
+    errorTitle();
     $("error").hidden = false;
   }
 
   function setStatus(text) {
-    $("status").textContent = text;
+    $("status-text").textContent = text;
+  }
+
+  /** A neutral result sentence in a panel (text), or hide it (null). */
+  function setResult(id, text, kind) {
+    const el = $(id);
+    el.hidden = !text;
+    el.textContent = text || "";
+    if (text) el.dataset.kind = kind || "result";
+    else delete el.dataset.kind;
   }
 
   // ---------------------------------------------------------------- geometry
@@ -181,6 +213,7 @@
     opts = opts || {};
     clearSvg(svg);
     const g = chainGeometry(q, segs);
+    if (opts.small && segs.length > DETAIL_MAX_N) return drawCentreLines(svg, [{ g, stable: opts.stable }], segs);
     const amax = Math.max(...segs.map((s) => s.a));
     const bmin = Math.min(...segs.map((s) => s.b));
     const all = [[0, 0], [0, 1.3 * amax], [0, -1.3 * amax], g.tip];
@@ -232,6 +265,53 @@
     return g;
   }
 
+  /** Centre lines (base, joints, tip) of several chains in one drawing: [{g, stable, colour, label}]. */
+  function drawCentreLines(svg, chains, segs) {
+    const amax = Math.max(...segs.map((s) => s.a));
+    // Nearly flat shapes (long chains): y exaggerated by a round factor, written in the drawing.
+    const px = [], py = [];
+    for (const c of chains) for (const p of c.g.path) { px.push(p[0]); py.push(p[1]); }
+    const xspan = Math.max(...px) - Math.min(...px), yspan = Math.max(...py.map(Math.abs)) * 2;
+    let yx = 1;
+    if (yspan > 0 && yspan < 0.05 * xspan) yx = Math.pow(10, Math.floor(Math.log10(0.25 * xspan / yspan)));
+    if (yx > 1) {
+      chains = chains.map((c) => Object.assign({}, c, { g: Object.assign({}, c.g, {
+        path: c.g.path.map((p) => [p[0], yx * p[1]]), joints: c.g.joints.map((p) => [p[0], yx * p[1]]),
+        tip: [c.g.tip[0], yx * c.g.tip[1]] }) }));
+    }
+    const all = [[0, 1.3 * amax], [0, -1.3 * amax]];
+    for (const c of chains) all.push(...c.g.path);
+    const xs = all.map((p) => p[0]), ys = all.map((p) => p[1]);
+    const span = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
+    const pad = 0.04 * span;
+    const x0 = Math.min(...xs) - pad, x1 = Math.max(...xs) + pad;
+    const y0 = Math.min(...ys) - pad, y1 = Math.max(...ys) + pad;
+    svg.setAttribute("viewBox", [x0, -y1, x1 - x0, y1 - y0].map((v) => v.toFixed(6)).join(" "));
+    const root = svgEl("g", { class: "chain centre-lines" }, svg);
+    const ground = svgEl("g", { class: "ground" }, root);
+    svgEl("line", { x1: 0, y1: -1.3 * amax, x2: 0, y2: 1.3 * amax }, ground);
+    const r = 0.012 * span;
+    chains.forEach((c, i) => {
+      const g = svgEl("g", { class: "centre " + (c.stable === false ? "unstable" : "stable"), "data-index": i }, root);
+      if (c.colour) {                      // CSSOM, not a style attribute (the page's CSP: style-src 'self')
+        g.style.stroke = c.colour;
+        g.style.fill = c.colour;
+      }
+      const line = svgEl("polyline", { class: "centre-line", points: c.g.path.map(pt).join(" ") }, g);
+      if (c.label) svgEl("title", {}, line).textContent = c.label;
+      if (segs.length <= DETAIL_MAX_N) {
+        for (const p of c.g.joints) svgEl("circle", { class: "centre-joint", cx: p[0], cy: -p[1], r }, g);
+      }
+      svgEl("circle", { class: "centre-tip", cx: c.g.tip[0], cy: -c.g.tip[1], r: 1.3 * r }, g);
+    });
+    svg.dataset.yScale = String(yx);
+    if (yx > 1) {
+      svgEl("text", { class: "exaggeration", x: x0 + pad, y: -y1 + pad + 0.025 * span, "font-size": 0.025 * span },
+        root).textContent = "y exaggerated " + yx + " times";
+    }
+    return chains.length ? chains[0].g : null;
+  }
+
   // ---------------------------------------------------------------- equilibrium
 
   function renderEquilibrium(eq, inp) {
@@ -239,6 +319,7 @@
     const segs = segmentsOf(inp.manipulator, n);
     const L = 2 * segs.reduce((s, x) => s + x.b, 0);
     const svg = $("chain");
+    setResult("eq-result", null);
     drawChain(svg, eq.q, segs, { target: [L - inp.dx, inp.dy], stable: eq.stable });
     svg.dataset.dx = String(inp.dx);
     svg.dataset.dy = String(inp.dy);
@@ -248,6 +329,7 @@
     setNumber("out-fx", eq.force.fx);
     setNumber("out-fy", eq.force.fy);
     $("out-shape").textContent = eq.shape + " (signs " + eq.signs + ")";
+    $("out-shape").title = eq.signs;
     $("out-shape").dataset.value = eq.shape;
     const st = $("out-stable");
     st.textContent = (eq.stable ? "stable" : "unstable") + " \u2014 " + eq.kind + ", Morse index " + eq.morse_index;
@@ -259,9 +341,11 @@
     $("out-solver").textContent = eq.solver.status + ", " + eq.solver.iterations + " iterations";
   }
 
-  function clearEquilibrium() {
+  function clearEquilibrium(err) {
     const svg = $("chain");
-    clearSvg(svg, "no equilibrium to draw (see the message above)");
+    const physical = err && PHYSICAL.has(err.code);
+    setResult("eq-result", physical ? "No stable equilibrium at this deflection: " + err.message + "." : null);
+    clearSvg(svg, physical ? "no stable equilibrium to draw" : "no equilibrium to draw (see the message above)");
     delete svg.dataset.dx;
     $("chain-desc").textContent = "No equilibrium.";
     for (const id of ["out-energy", "out-fx", "out-fy", "out-shape", "out-stable", "out-q", "out-tip", "out-solver"]) {
@@ -278,6 +362,14 @@
     const mag = Math.pow(10, Math.floor(Math.log10(raw)));
     const r = raw / mag;
     return (r <= 1 ? 1 : r <= 2 ? 2 : r <= 2.5 ? 2.5 : r <= 5 ? 5 : 10) * mag;
+  }
+
+  /** A power of ten to divide the tick labels by (none for values between 0.001 and 10000). */
+  function axisExponent(values) {
+    const m = Math.max(...values.map(Math.abs));
+    if (!(m > 0)) return 0;
+    const e = Math.floor(Math.log10(m));
+    return e < -2 || e > 3 ? e : 0;
   }
 
   function ticks(lo, hi, count) {
@@ -306,80 +398,134 @@
     return { manipulator: inp.manipulator, dx, dy: inp.dy, branch: "stable" };
   }
 
-  function renderCurve(out, inp) {
-    const svg = $("curve");
-    clearSvg(svg);
-    const W = 640, H = 360, ml = 64, mr = 16, mt = 16, mb = 48;
+  // Jumps: the service's label when it gives one; else the kind and the sign of the force change
+  // (fx > 0 tensile, fx < 0 compressive). Only a compressive jump off the straight chain is buckling.
+  const KIND_WORDS = {
+    buckling: "jump off the straight chain", leave_straight: "leaving the straight chain",
+    snap: "snap to another stable branch", switch: "switch of the least-energy branch",
+    branch_switch: "branch switch",
+  };
+
+  function signed(v) {
+    return (v > 0 ? "+" : "") + fmt(v, 3);
+  }
+
+  function sense(v) {
+    return v > 0 ? "tensile" : v < 0 ? "compressive" : "no change in Fx";
+  }
+
+  function jumpLabel(j) {
+    if (j.label) return j.label;
+    const d = j.delta ? j.delta.fx : j.force_after.fx - j.force_before.fx;
+    if (j.kind === "buckling" && d < 0) {
+      return "buckling of the straight chain: Fx " + fmt(j.force_before.fx, 3) + " \u2192 " +
+        fmt(j.force_after.fx, 3) + " (compressive)";
+    }
+    return (KIND_WORDS[j.kind] || String(j.kind).replace(/_/g, " ")) + ": dFx = " + signed(d) + " (" + sense(d) + ")";
+  }
+
+  /** One plot area of the curve chart: axes for comp ("fx" or "fy") in the box [top, top + h]. */
+  function curvePanel(svg, out, inp, comp, box, X, xlo, xhi, showX) {
     const pts = out.points;
-    svg.dataset.points = String(pts.length);
-    svg.dataset.jumps = String(out.jumps.length);
-    svg.dataset.dx = String(inp.dx);
-    const dxs = pts.map((p) => p.dx).concat([inp.dx]);
+    const { ml, mr, W, top, h } = box;
     const fs = [0];
-    for (const p of pts) fs.push(p.fx, p.fy);
-    for (const j of out.jumps) fs.push(j.force_before.fx, j.force_before.fy, j.force_after.fx, j.force_after.fy);
+    for (const p of pts) fs.push(p[comp]);
+    for (const j of out.jumps) fs.push(j.force_before[comp], j.force_after[comp]);
     const finite = (v) => Number.isFinite(v);
-    let xlo = Math.min(0, ...dxs.filter(finite)), xhi = Math.max(0, ...dxs.filter(finite));
     let ylo = Math.min(...fs.filter(finite)), yhi = Math.max(...fs.filter(finite));
-    if (xhi - xlo < 1e-12) { xlo -= 0.5; xhi += 0.5; }
     if (yhi - ylo < 1e-12) { ylo -= 0.5; yhi += 0.5; }
     const ypad = 0.06 * (yhi - ylo);
     ylo -= ypad; yhi += ypad;
-    const X = (v) => ml + (v - xlo) / (xhi - xlo) * (W - ml - mr);
-    const Y = (v) => mt + (yhi - v) / (yhi - ylo) * (H - mt - mb);
+    const Y = (v) => top + (yhi - v) / (yhi - ylo) * h;
 
-    const axes = svgEl("g", { class: "axes" }, svg);
+    const axes = svgEl("g", { class: "axes axes-" + comp }, svg);
     for (const t of ticks(xlo, xhi, 6)) {
-      svgEl("line", { class: "grid", x1: X(t), y1: mt, x2: X(t), y2: H - mb }, axes);
-      svgEl("text", { x: X(t), y: H - mb + 16, "text-anchor": "middle" }, axes).textContent = fmt(t, 4);
+      svgEl("line", { class: "grid", x1: X(t), y1: top, x2: X(t), y2: top + h }, axes);
+      if (showX) svgEl("text", { x: X(t), y: top + h + 16, "text-anchor": "middle" }, axes).textContent = fmt(t, 4);
     }
-    for (const t of ticks(ylo, yhi, 6)) {
+    const yt = ticks(ylo, yhi, 5);
+    const ye = axisExponent(yt);
+    for (const t of yt) {
       svgEl("line", { class: "grid", x1: ml, y1: Y(t), x2: W - mr, y2: Y(t) }, axes);
-      svgEl("text", { x: ml - 6, y: Y(t) + 4, "text-anchor": "end" }, axes).textContent = fmt(t, 4);
+      svgEl("text", { x: ml - 6, y: Y(t) + 4, "text-anchor": "end" }, axes).textContent = fmt(t / Math.pow(10, ye), 4);
     }
     if (ylo < 0 && yhi > 0) svgEl("line", { class: "zero", x1: ml, y1: Y(0), x2: W - mr, y2: Y(0) }, axes);
-    svgEl("rect", { class: "frame", x: ml, y: mt, width: W - ml - mr, height: H - mt - mb }, axes);
-    svgEl("text", { class: "label", x: (ml + W - mr) / 2, y: H - 10, "text-anchor": "middle" }, axes).textContent =
-      "tip deflection dx" + (inp.dy ? " (dy = " + fmt(inp.dy) + ")" : "");
-    svgEl("text", { class: "label", x: 14, y: (mt + H - mb) / 2, "text-anchor": "middle",
-      transform: "rotate(-90 14 " + (mt + H - mb) / 2 + ")" }, axes).textContent = "tip force";
+    svgEl("rect", { class: "frame", x: ml, y: top, width: W - ml - mr, height: h }, axes);
+    const yl = top + h / 2;
+    svgEl("text", { class: "label label-" + comp, x: 14, y: yl, "text-anchor": "middle",
+      transform: "rotate(-90 14 " + yl + ")" }, axes).textContent = "tip force " + (comp === "fx" ? "Fx" : "Fy") +
+      (ye ? " (units of 1e" + ye + ")" : "");
 
-    // The chosen dx.
-    svgEl("line", { class: "selected", x1: X(inp.dx), y1: mt, x2: X(inp.dx), y2: H - mb }, svg);
-
-    // Curves: a polyline per run of points on the same branch (a jump breaks the line).
-    const jumpAt = new Set(out.jumps.map((j) => j.dx_after));
-    for (const comp of ["fx", "fy"]) {
-      const g = svgEl("g", { class: "series series-" + comp }, svg);
-      let run = [];
-      const flush = () => {
-        if (run.length > 1) svgEl("polyline", { points: run.join(" ") }, g);
-        run = [];
-      };
-      pts.forEach((p, i) => {
-        if (i > 0 && (p.branch !== pts[i - 1].branch || jumpAt.has(p.dx))) flush();
-        if (finite(p[comp])) run.push(X(p.dx).toFixed(2) + "," + Y(p[comp]).toFixed(2));
-      });
-      flush();
-      for (const p of pts) {
-        if (!finite(p[comp])) continue;
-        const c = svgEl("circle", { class: "pt" + (p.stable ? "" : " pt-unstable"), cx: X(p.dx), cy: Y(p[comp]), r: 2.2 }, g);
-        svgEl("title", {}, c).textContent = comp + " = " + fmt(p[comp]) + " at dx = " + fmt(p.dx) + " (" + p.shape + ")";
+    svgEl("line", { class: "selected", x1: X(inp.dx), y1: top, x2: X(inp.dx), y2: top + h }, svg);
+    if (out.ended_at && finite(out.ended_at.dx)) {
+      const xe = X(out.ended_at.dx);
+      svgEl("line", { class: "branch-end", x1: xe, y1: top, x2: xe, y2: top + h }, svg);
+      if (comp === "fx") {
+        svgEl("text", { class: "branch-end-label", x: xe - 4, y: top + 14, "text-anchor": "end" }, svg).textContent =
+          "stable branch ends";
       }
+    }
+
+    // A polyline per run of points on the same branch (a jump breaks the line).
+    const jumpAt = new Set(out.jumps.map((j) => j.dx_after));
+    const g = svgEl("g", { class: "series series-" + comp }, svg);
+    let run = [];
+    const flush = () => {
+      if (run.length > 1) svgEl("polyline", { points: run.join(" ") }, g);
+      run = [];
+    };
+    pts.forEach((p, i) => {
+      if (i > 0 && (p.branch !== pts[i - 1].branch || jumpAt.has(p.dx))) flush();
+      if (finite(p[comp])) run.push(X(p.dx).toFixed(2) + "," + Y(p[comp]).toFixed(2));
+    });
+    flush();
+    for (const p of pts) {
+      if (!finite(p[comp])) continue;
+      const c = svgEl("circle", { class: "pt" + (p.stable ? "" : " pt-unstable"), cx: X(p.dx), cy: Y(p[comp]), r: 2.2 }, g);
+      svgEl("title", {}, c).textContent = comp + " = " + fmt(p[comp]) + " at dx = " + fmt(p.dx) + " (" + p.shape + ")";
     }
     // Jumps: dashed connectors from the force before to the force after, with a marker.
     const jg = svgEl("g", { class: "jumps" }, svg);
     for (const j of out.jumps) {
-      for (const comp of ["fx", "fy"]) {
-        const xa = X(j.dx_before), ya = Y(j.force_before[comp]), xb = X(j.dx_after), yb = Y(j.force_after[comp]);
-        if (Math.abs(ya - yb) < 0.5 && Math.abs(xa - xb) < 0.5) continue;
+      const xa = X(j.dx_before), ya = Y(j.force_before[comp]), xb = X(j.dx_after), yb = Y(j.force_after[comp]);
+      if (!(Math.abs(ya - yb) < 0.5 && Math.abs(xa - xb) < 0.5)) {
         svgEl("line", { class: "jump-line", x1: xa, y1: ya, x2: xb, y2: yb }, jg);
       }
-      const m = svgEl("circle", { class: "jump", cx: X(j.dx_after), cy: Y(j.force_after.fx), r: 5 }, jg);
-      svgEl("title", {}, m).textContent = j.kind + " between dx = " + fmt(j.dx_before) + " and " + fmt(j.dx_after);
+      const m = svgEl("circle", { class: "jump", cx: xb, cy: yb, r: 5 }, jg);
+      svgEl("title", {}, m).textContent = jumpLabel(j) + " (between dx = " + fmt(j.dx_before) + " and " +
+        fmt(j.dx_after) + ")";
     }
-    $("curve-desc").textContent = "Fx and Fy against dx from " + fmt(pts.length ? pts[0].dx : 0) + " to " +
-      fmt(inp.dx) + ", " + pts.length + " points, " + out.jumps.length + " jump(s).";
+  }
+
+  function renderCurve(out, inp) {
+    const svg = $("curve");
+    clearSvg(svg);
+    const W = 640, H = 520, ml = 64, mr = 16, mt = 12, gap = 22, mb = 44;
+    const h = (H - mt - gap - mb) / 2;
+    svg.setAttribute("viewBox", "0 0 " + W + " " + H);
+    const pts = out.points || [];
+    out = Object.assign({ jumps: [] }, out, { points: pts });
+    svg.dataset.points = String(pts.length);
+    svg.dataset.jumps = String(out.jumps.length);
+    svg.dataset.dx = String(inp.dx);
+    svg.dataset.complete = String(out.complete !== false);
+    const finite = (v) => Number.isFinite(v);
+    const dxs = pts.map((p) => p.dx).concat([inp.dx]);
+    let xlo = Math.min(0, ...dxs.filter(finite)), xhi = Math.max(0, ...dxs.filter(finite));
+    if (xhi - xlo < 1e-12) { xlo -= 0.5; xhi += 0.5; }
+    const X = (v) => ml + (v - xlo) / (xhi - xlo) * (W - ml - mr);
+    curvePanel(svg, out, inp, "fx", { ml, mr, W, top: mt, h }, X, xlo, xhi, false);
+    curvePanel(svg, out, inp, "fy", { ml, mr, W, top: mt + h + gap, h }, X, xlo, xhi, true);
+    svgEl("text", { class: "label", x: (ml + W - mr) / 2, y: H - 8, "text-anchor": "middle" }, svg).textContent =
+      "tip deflection dx" + (inp.dy ? " (dy = " + fmt(inp.dy) + ")" : "");
+
+    const partial = out.complete === false || (out.ended_at !== undefined && out.ended_at !== null);
+    let note = partial ? (out.note || (out.ended_at && out.ended_at.message) || "The curve ends early.") : null;
+    if (partial && out.source_code) note += " (the service answered " + out.source_code + ")";
+    setResult("curve-note", note, "partial");
+    $("curve-desc").textContent = "Fx (top) and Fy (bottom) against dx from " + fmt(pts.length ? pts[0].dx : 0) +
+      " to " + fmt(inp.dx) + ", " + pts.length + " points, " + out.jumps.length + " jump(s)." +
+      (note ? " " + note : "");
 
     const ul = $("jumps");
     ul.textContent = "";
@@ -391,9 +537,10 @@
     for (const j of out.jumps) {
       const li = document.createElement("li");
       li.className = "jump-item";
-      li.textContent = j.kind.replace("_", " ") + " between dx = " + fmt(j.dx_before) + " and " + fmt(j.dx_after) +
-        ": Fx " + fmt(j.force_before.fx) + " \u2192 " + fmt(j.force_after.fx) + ", Fy " + fmt(j.force_before.fy) +
-        " \u2192 " + fmt(j.force_after.fy) + " (branch " + j.branch_before + " \u2192 " + j.branch_after + ")";
+      li.dataset.kind = j.kind;
+      li.textContent = jumpLabel(j) + ", between dx = " + fmt(j.dx_before) + " and " + fmt(j.dx_after) +
+        " (Fx " + fmt(j.force_before.fx) + " \u2192 " + fmt(j.force_after.fx) + ", Fy " + fmt(j.force_before.fy) +
+        " \u2192 " + fmt(j.force_after.fy) + "; branch " + j.branch_before + " \u2192 " + j.branch_after + ")";
       ul.appendChild(li);
     }
     const body = $("curve-table").tBodies[0];
@@ -406,27 +553,114 @@
     }
   }
 
-  function clearCurve() {
+  function clearCurve(err) {
     const svg = $("curve");
-    clearSvg(svg, "no curve to plot (see the message above)");
+    const physical = err && PHYSICAL.has(err.code);
+    clearSvg(svg, physical ? "no stable curve to plot" : "no curve to plot (see the message above)");
     delete svg.dataset.dx;
     delete svg.dataset.points;
     delete svg.dataset.jumps;
+    delete svg.dataset.complete;
+    setResult("curve-note", physical ? "The stable branch ends before the chosen dx: " + err.message +
+      " (no points were returned)." : null, "partial");
     $("curve-desc").textContent = "No curve.";
     $("jumps").textContent = "";
     $("curve-table").tBodies[0].textContent = "";
   }
 
+  // ---------------------------------------------------------------- every equilibrium
+
+  /** A colour per equilibrium (hue steps of the golden angle). */
+  function colour(i) {
+    return "hsl(" + Math.round((i * 137.508 + 210) % 360) + ", 65%, 42%)";
+  }
+
+  function renderEquilibria(out, inp) {
+    const eqs = out.equilibria;
+    const n = inp.manipulator.n;
+    const segs = segmentsOf(inp.manipulator, n);
+    const stable = eqs.filter((e) => e.stable).length;
+    const summary = $("equilibria-summary");
+    summary.textContent = eqs.length + " equilibri" + (eqs.length === 1 ? "um" : "a") + " (" + stable + " stable) at dx = " +
+      fmt(inp.dx) + ", dy = " + fmt(inp.dy) + "; method " + out.method +
+      (out.certified ? ", certified complete" : ", complete in practice, not certified") +
+      (eqs.length > MAX_ROWS ? "; the first " + MAX_ROWS + " are listed and drawn (the JSON download has all)" : "") + ".";
+    summary.dataset.count = String(eqs.length);
+    summary.dataset.stable = String(stable);
+    const shown = eqs.slice(0, MAX_ROWS);
+    const svg = $("equilibria-shapes");
+    clearSvg(svg);
+    if (shown.length) {
+      drawCentreLines(svg, shown.map((e, i) => ({
+        g: chainGeometry(e.q, segs), stable: e.stable, colour: colour(i),
+        label: "#" + (i + 1) + ": " + e.shape + ", energy " + fmt(e.energy) + (e.stable ? ", stable" : ", unstable"),
+      })), segs);
+    } else {
+      clearSvg(svg, "no equilibrium found");
+    }
+    svg.dataset.count = String(shown.length);
+    $("equilibria-desc").textContent = "Centre lines of " + shown.length + " equilibria (solid: stable, dashed: unstable).";
+    const body = $("equilibria").tBodies[0];
+    body.textContent = "";
+    shown.forEach((e, i) => {
+      const tr = body.insertRow();
+      tr.className = "eq-row";
+      const num = tr.insertCell();
+      const sw = document.createElement("span");
+      sw.className = "swatch";
+      sw.style.background = colour(i);
+      num.append(sw, String(i + 1));
+      const en = tr.insertCell();
+      en.textContent = fmt(e.energy);
+      en.dataset.value = String(e.energy);
+      tr.insertCell().textContent = String(e.morse_index);
+      tr.insertCell().textContent = e.kind;
+      const st = tr.insertCell();
+      st.textContent = e.stable ? "yes" : "no";
+      st.className = e.stable ? "ok" : "bad";
+      tr.insertCell().textContent = e.shape;
+      const sg = tr.insertCell();
+      sg.className = "signs";
+      sg.textContent = e.signs;
+      sg.title = e.signs;
+      tr.insertCell().textContent = fmt(e.force.fx);
+      tr.insertCell().textContent = fmt(e.force.fy);
+    });
+  }
+
+  function clearEquilibria(err) {
+    // A search that converged to no equilibrium at all is an answer too (details.found = 0).
+    const none = err && (PHYSICAL.has(err.code) || (err.code === "solver_failed" && err.body && err.body.details &&
+      err.body.details.found === 0));
+    const summary = $("equilibria-summary");
+    summary.textContent = none ? "No equilibrium found inside the physical joint range: " + err.message + "."
+      : "No result (see the message above).";
+    summary.dataset.count = none ? "0" : "";
+    delete summary.dataset.stable;
+    clearSvg($("equilibria-shapes"), none ? "no equilibrium found" : "nothing to draw");
+    $("equilibria-desc").textContent = "No equilibria.";
+    $("equilibria").tBodies[0].textContent = "";
+    return none;
+  }
+
   // ---------------------------------------------------------------- buckling
 
   function renderBuckling(out, inp) {
-    $("critical").textContent = "Critical force Fx0 = " + fmt(out.critical_force) + " (" + out.boundary + " tip)";
-    $("critical").dataset.value = String(out.critical_force);
+    const cr = $("critical");
+    cr.textContent = "Critical force Fx0 = " + fmt(out.critical_force) + " (" + out.boundary + " tip)";
+    cr.dataset.value = String(out.critical_force);
+    cr.dataset.kind = "load";
     const body = $("modes").tBodies[0];
     body.textContent = "";
     const beta = Math.atan2(inp.manipulator.a, inp.manipulator.b);
     const qAmp = Math.min(0.35, 0.45 * (Math.PI - 2 * beta));
-    out.modes.forEach((m, i) => {
+    const shown = out.modes.slice(0, MAX_MODE_ROWS);
+    const note = $("modes-note");
+    note.hidden = shown.length === out.modes.length;
+    note.textContent = note.hidden ? "" : "The " + shown.length + " lowest of " + out.modes.length +
+      " modes are listed (the JSON download has all).";
+    $("modes").hidden = false;
+    shown.forEach((m, i) => {
       const tr = body.insertRow();
       tr.className = "mode-row";
       tr.insertCell().textContent = String(i + 1);
@@ -434,14 +668,24 @@
       load.textContent = fmt(m.load);
       load.dataset.value = String(m.load);
       tr.insertCell().textContent = m.shape;
-      tr.insertCell().textContent = m.signs;
+      const sg = tr.insertCell();
+      sg.className = "signs";
+      sg.textContent = m.signs;
+      sg.title = m.signs;
       const st = tr.insertCell();
       st.textContent = m.stable ? "yes" : "no";
       st.className = m.stable ? "ok" : "bad";
       tr.insertCell().textContent = fmt(m.energy_factor);
       const cell = tr.insertCell();
       const qmax = Math.max(...m.q.map(Math.abs));
-      if (qmax > 0) {
+      if (qmax > 0 && m.q.length > DETAIL_MAX_N) {
+        const svg = svgEl("svg", { class: "mode-drawing profile-drawing" + (m.stable ? "" : " unstable"), role: "img",
+          viewBox: "0 -1.1 " + (m.q.length - 1) + " 2.2", preserveAspectRatio: "none" }, cell);
+        svgEl("title", {}, svg).textContent = "mode " + (i + 1) + ": joint angles q_i against the joint index i";
+        svgEl("line", { class: "profile-zero", x1: 0, y1: 0, x2: m.q.length - 1, y2: 0 }, svg);
+        svgEl("polyline", { class: "profile", points: m.q.map((v, j) => j + "," + (-v / qmax).toFixed(4)).join(" ") },
+          svg);
+      } else if (qmax > 0) {
         const q = m.q.map((v) => v * qAmp / qmax);
         const svg = svgEl("svg", { class: "mode-drawing", role: "img", preserveAspectRatio: "xMidYMid meet" }, cell);
         svgEl("title", {}, svg).textContent = "mode " + (i + 1) + ": shape " + m.shape + " (signs " + m.signs + ")";
@@ -450,10 +694,109 @@
     });
   }
 
-  function clearBuckling() {
-    $("critical").textContent = "No buckling result (see the message above).";
-    delete $("critical").dataset.value;
+  /** The sentence for a physical answer of v1/buckling (a result, not an error). */
+  function bucklingAnswer(err) {
+    const why = err.message.replace(/\.$/, "");
+    if (err.code === "straight_unstable") {
+      return "The straight chain is unstable unloaded (joint stiffness K <= 0): no buckling load; it snaps into a " +
+        "bent shape without any load. The service: " + why + ".";
+    }
+    if (err.code === "straight_not_equilibrium") {
+      return "The straight chain is not an equilibrium: no buckling load; the chain is bent even unloaded. " +
+        "The service: " + why + ".";
+    }
+    return "No buckling load: " + why + ".";
+  }
+
+  function clearBuckling(err) {
+    const cr = $("critical");
+    const physical = err && PHYSICAL.has(err.code);
+    cr.textContent = physical ? bucklingAnswer(err) : "No buckling result (see the message above).";
+    cr.dataset.kind = physical ? "result" : "none";
+    if (physical) cr.dataset.code = err.code;
+    else delete cr.dataset.code;
+    delete cr.dataset.value;
     $("modes").tBodies[0].textContent = "";
+    $("modes").hidden = physical;
+    $("modes-note").hidden = true;
+    return physical;
+  }
+
+  // ---------------------------------------------------------------- exports
+
+  function download(name, blob) {
+    const url = URL.createObjectURL(blob);
+    const a = document.createElement("a");
+    a.href = url;
+    a.download = name;
+    document.body.appendChild(a);
+    a.click();
+    a.remove();
+    setTimeout(() => URL.revokeObjectURL(url), 60000);
+    // For tests and embedding pages: what was offered for download.
+    document.dispatchEvent(new CustomEvent("explorer-download", { detail: { name, blob } }));
+  }
+
+  function baseName() {
+    const m = last ? last.inputs.manipulator : readInputs().manipulator;
+    const d = last ? last.inputs : readInputs();
+    return "chain_n" + m.n + "_dx" + d.dx + "_dy" + d.dy;
+  }
+
+  function downloadJson() {
+    if (!last) return;
+    const text = JSON.stringify(last, null, 2) + "\n";
+    download(baseName() + ".json", new Blob([text], { type: "application/json" }));
+  }
+
+  /** A stand-alone copy of one of the page's figures: the page's style sheet inlined, white background. */
+  function figureSvg(id) {
+    const svg = $(id);
+    const clone = svg.cloneNode(true);
+    const box = svg.getBoundingClientRect();
+    const w = Math.max(1, Math.round(box.width)), h = Math.max(1, Math.round(box.height));
+    clone.setAttribute("xmlns", SVGNS);
+    clone.setAttribute("width", String(w));
+    clone.setAttribute("height", String(h));
+    clone.style.background = "#ffffff";
+    let css = "";
+    for (const sheet of Array.from(document.styleSheets)) {
+      try {
+        for (const rule of Array.from(sheet.cssRules)) css += rule.cssText + "\n";
+      } catch (err) { /* not readable: skip */ }
+    }
+    const style = document.createElementNS(SVGNS, "style");
+    style.textContent = css;
+    clone.insertBefore(style, clone.firstChild);
+    const text = '<?xml version="1.0" encoding="utf-8"?>\n' + new XMLSerializer().serializeToString(clone) + "\n";
+    return { text, w, h };
+  }
+
+  function downloadFigure(id, format) {
+    const { text, w, h } = figureSvg(id);
+    const name = baseName() + "_" + id + "." + format;
+    if (format === "svg") {
+      download(name, new Blob([text], { type: "image/svg+xml" }));
+      return;
+    }
+    const img = new Image();
+    img.onload = () => {
+      const scale = 2;
+      const canvas = document.createElement("canvas");
+      canvas.width = w * scale;
+      canvas.height = h * scale;
+      const ctx = canvas.getContext("2d");
+      ctx.fillStyle = "#ffffff";
+      ctx.fillRect(0, 0, canvas.width, canvas.height);
+      ctx.drawImage(img, 0, 0, canvas.width, canvas.height);
+      canvas.toBlob((blob) => {
+        if (blob) download(name, blob);
+        else showError("Download PNG", new ApiError(0, { code: "display_error", message: "the browser made no PNG" }));
+      }, "image/png");
+    };
+    img.onerror = () => showError("Download PNG", new ApiError(0, { code: "display_error",
+      message: "the browser could not draw the figure" }));
+    img.src = "data:image/svg+xml;charset=utf-8," + encodeURIComponent(text);
   }
 
   // ---------------------------------------------------------------- solve
@@ -465,43 +808,82 @@
     clearErrors();
     document.body.dataset.state = "busy";
     $("solve").disabled = true;
-    for (const id of ["shape-panel", "curve-panel", "buckling-panel"]) $(id).setAttribute("aria-busy", "true");
+    for (const id of PANELS) {
+      $(id).setAttribute("aria-busy", "true");
+      // The previous answer stays visible, dimmed and marked stale, until the new one arrives.
+      if ($(id).dataset.filled) $(id).dataset.stale = "true";
+    }
     setStatus("Solving\u2026");
 
     const man = inp.manipulator;
+    const eqBody = { manipulator: man, dx: inp.dx, dy: inp.dy };
+    const requests = {
+      equilibrium: ["v1/equilibrium", eqBody],
+      curve: ["v1/force-deflection", curveRequest(inp)],
+      equilibria: ["v1/equilibria", eqBody],
+      buckling: ["v1/buckling", { manipulator: man, boundary: inp.boundary }],
+    };
+    const record = { inputs: Object.assign({}, inp, { key: undefined }), requests: {}, answers: {}, errors: {} };
     const tasks = [
-      ["Equilibrium", api("v1/equilibrium", { manipulator: man, dx: inp.dx, dy: inp.dy }, inp.key),
-        renderEquilibrium, clearEquilibrium],
-      ["Force\u2013deflection curve", api("v1/force-deflection", curveRequest(inp), inp.key), renderCurve, clearCurve],
-      ["Buckling", api("v1/buckling", { manipulator: man, boundary: inp.boundary }, inp.key),
-        renderBuckling, clearBuckling],
+      ["equilibrium", "Equilibrium", "shape-panel", api("v1/equilibrium", eqBody, inp.key), renderEquilibrium,
+        clearEquilibrium],
+      ["curve", "Force\u2013deflection curve", "curve-panel", api("v1/force-deflection", requests.curve[1], inp.key),
+        renderCurve, clearCurve],
+      ["equilibria", "Every equilibrium", "equilibria-panel", api("v1/equilibria", eqBody, inp.key),
+        renderEquilibria, clearEquilibria],
+      ["buckling", "Buckling", "buckling-panel", api("v1/buckling", requests.buckling[1], inp.key), renderBuckling,
+        clearBuckling],
     ];
-    const results = await Promise.allSettled(tasks.map((t) => t[1]));
-    if (my !== runId) return;               // a newer solve started meanwhile
+    for (const [name, [path, body]] of Object.entries(requests)) record.requests[name] = { path, body };
     let failed = 0;
-    results.forEach((res, i) => {
-      const [what, , render, clear] = tasks[i];
-      if (res.status === "fulfilled") {
+    await Promise.all(tasks.map(async ([name, what, panel, promise, render, clear]) => {
+      let value = null, reason = null;
+      try {
+        value = await promise;
+      } catch (err) {
+        reason = err;
+      }
+      if (my !== runId) return;              // a newer solve started meanwhile
+      // A curve refused with the points computed before it ended (older services): draw them.
+      if (reason && name === "curve" && reason.body && Array.isArray(reason.body.points)) {
+        value = Object.assign({ complete: false, source_code: reason.httpStatus }, reason.body);
+        reason = null;
+      }
+      if (!reason) {
         try {
-          render(res.value, inp);
-          return;
+          render(value, inp);
+          record.answers[name] = value;
         } catch (err) {
-          res = { reason: new ApiError(0, { code: "display_error", message: String(err && err.message || err) }) };
+          reason = new ApiError(0, { code: "display_error", message: String(err && err.message || err) });
         }
       }
-      failed += 1;
-      clear();
-      showError(what, res.reason);
-    });
-    for (const id of ["shape-panel", "curve-panel", "buckling-panel"]) $(id).removeAttribute("aria-busy");
+      if (reason) {
+        record.errors[name] = reason.body || { code: reason.code, message: reason.message };
+        const answered = clear(reason) || PHYSICAL.has(reason.code);   // a physical answer: a result
+        if (!answered) {
+          failed += 1;
+          showError(what, reason);
+        }
+      }
+      $(panel).removeAttribute("aria-busy");
+      delete $(panel).dataset.stale;
+      $(panel).dataset.filled = "true";
+    }));
+    if (my !== runId) return;
+    last = record;
+    $("dl-json").disabled = false;
     $("solve").disabled = false;
-    setStatus(failed ? failed + " of 3 requests failed: see the messages above." : "Done.");
+    setStatus(failed ? failed + " of " + tasks.length + " requests failed: see the messages above." : "Done.");
     document.body.dataset.state = "done";
   }
 
   function init() {
     SVGNS = $("chain").namespaceURI;
     $("controls").addEventListener("submit", solve);
+    $("dl-json").addEventListener("click", downloadJson);
+    for (const b of document.querySelectorAll("button[data-figure]")) {
+      b.addEventListener("click", () => downloadFigure(b.dataset.figure, b.dataset.format));
+    }
     solve();
   }
 

@@ -10,8 +10,19 @@ the damped Newton method. At each point the
 least-energy stable branch is selected. When every tracked stable branch has ended (a fold,
 a joint limit) a global :func:`solve_equilibrium` starts a new one, and every
 ``recheck_every`` points a global solve checks that no lower stable branch appeared.
-``jumps`` lists where the force is discontinuous: the buckling jump at ``dx -> 0+`` (from 0
-to the critical force, ``dy = 0``) and every switch of the selected branch.
+``jumps`` lists where the force is discontinuous, between two consecutive points, in the order
+followed: ``"buckling"`` where the curve leaves (or returns to) the stable straight chain at ``dy = 0``
+(from 0 to the guided critical force), ``"leave_straight"`` where it leaves (returns to) a straight
+chain that is not a stable unloaded equilibrium (``K <= 0``) or at ``dy != 0`` (from the straight
+force to the first deflected point's), ``"snap"`` where the selected branch ends or loses stability
+and the chain jumps to another stable branch, ``"switch"`` where the least-energy stable branch
+changes while the previous one is still stable (an exchange of the global minimum).
+
+Where a point has no stable equilibrium (the stable branches end at a fold or the joint range and
+the global search finds no other), the curve stops: it holds the points computed before that one,
+and ``Curve.ended_at`` says where and why (``Curve.complete`` is ``False``, ``Curve.note`` a sentence);
+the points after it are not computed (the followed branch is gone, and a curve with a gap would
+hide that the chain has nowhere stable to go).
 
 On chains with bistable segments new branches are born inside the range (folds): there a search
 from the global seeds and every combination of the segments' wells runs at *every* point, and
@@ -30,14 +41,14 @@ equilibrium there: such points carry ``status = "straight_not_equilibrium"`` and
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Literal
 
 import numpy as np
 
 from ..errors import (
     InvalidParameterError,
-    NoEquilibriumError,
+    SolverError,
     StraightNotEquilibriumError,
     TensegrityError,
     TimeLimitError,
@@ -53,7 +64,7 @@ from .equilibrium import Equilibrium, straight_equilibrium
 from .least_energy import WELLS_MAX, search_stable, solve_equilibrium
 from .seeds import seed_starts, well_seeds
 
-__all__ = ["Curve", "Jump", "force_deflection"]
+__all__ = ["Curve", "CurveEnd", "Jump", "force_deflection"]
 
 #: Projected random starts per joint of the search for branches born at a point of a ``branch="all"``
 #: curve on a multistable chain (the first point gets find_equilibria's default): the branches already
@@ -61,12 +72,33 @@ __all__ = ["Curve", "Jump", "force_deflection"]
 BIRTH_PROJECTED = 50
 
 
+#: The kinds of :class:`Jump`, in the JSON form's ``kind``.
+JUMP_KINDS = ("buckling", "leave_straight", "snap", "switch")
+
+#: Why a curve stopped early (:class:`CurveEnd` ``reason``).
+END_REASONS = ("no_stable_equilibrium",)
+
+
 @dataclass(frozen=True)
 class Jump:
-    """A force discontinuity between the points ``(dx_before, dy_before)`` and ``(dx_after, dy_after)``.
+    """A force discontinuity between the consecutive points ``(dx_before, dy_before)`` and ``(dx_after, dy_after)``.
 
-    ``kind`` is ``"buckling"`` (at ``dx -> 0+``: from 0 to the critical force) or
-    ``"branch_switch"`` (the least-energy stable branch changes).
+    ``kind`` is one of :data:`JUMP_KINDS`:
+
+    * ``"buckling"``: leaving the stable straight chain (every ``K > 0``) at ``dx -> 0+``, ``dy = 0``: the
+      force goes from the straight value (0) to the guided critical force (compressive, ``fx < 0``), or
+      back when the curve returns to the straight point;
+    * ``"leave_straight"``: leaving (or returning to) the straight chain when it is no stable unloaded
+      equilibrium (``K <= 0`` somewhere) or the deflected point has ``dy != 0``: from the straight force
+      to the force at the deflected point;
+    * ``"snap"``: the selected stable branch ends or loses stability (a fold, the joint range) and the
+      chain jumps to another stable branch;
+    * ``"switch"``: the least-energy stable branch changes while the previous one still exists and is
+      stable there (an exchange of the global minimum, not a loss of stability).
+
+    ``branch_before`` / ``branch_after`` are the branch identifiers (``-1``: the straight chain). Forces are
+    the tip force holding the chain: ``fx > 0`` tensile, ``fx < 0`` compressive (conventions.md).
+    ``cause`` (``"leave_straight"`` only) says why it is no buckling, for :attr:`label`.
     """
 
     kind: str
@@ -78,13 +110,66 @@ class Jump:
     branch_after: int
     dy_before: float = 0.0
     dy_after: float = 0.0
+    cause: str = ""
+
+    @property
+    def delta(self) -> np.ndarray:
+        """``force_after - force_before``, ndarray (2,)."""
+        return np.asarray(self.force_after, dtype=float) - np.asarray(self.force_before, dtype=float)
+
+    @property
+    def label(self) -> str:
+        """A sentence naming the jump, with sign and size, e.g.
+        ``"buckling of the straight chain: F_x 0 -> -0.573 (compressive)"``,
+        ``"snap to another stable branch: dF_x = +1.91 (tensile)"``."""
+        f0 = np.asarray(self.force_before, dtype=float)
+        f1 = np.asarray(self.force_after, dtype=float)
+        if self.kind in ("buckling", "leave_straight"):
+            returning = self.branch_after == -1 and self.branch_before != -1
+            dy = self.dy_before if returning else self.dy_after
+            if self.kind == "buckling":
+                what = "return to the straight chain (buckling reversed)" if returning else \
+                    "buckling of the straight chain"
+            else:
+                why = self.cause or (f"dy = {_fmt(dy)}" if dy != 0.0 else "not a stable unloaded equilibrium")
+                what = f"{'return to' if returning else 'leaving'} the straight chain ({why})"
+            parts = [f"F_x {_fmt(f0[0])} -> {_fmt(f1[0])}" + ("" if returning else _word(f1[0]))]
+            if _changes(f0[1], f1[1]):
+                parts.append(f"F_y {_fmt(f0[1])} -> {_fmt(f1[1])}")
+            return f"{what}: " + ", ".join(parts)
+        what = {"snap": "snap to another stable branch",
+                "switch": "switch of the least-energy stable branch (the previous one stays stable)"}.get(
+                    self.kind, self.kind)
+        d = self.delta
+        parts = []
+        if _changes(f0[0], f1[0]):
+            parts.append(f"dF_x = {_fmt(d[0], '+')}" + _word(d[0]))
+        if _changes(f0[1], f1[1]):
+            parts.append(f"dF_y = {_fmt(d[1], '+')}")
+        return f"{what}: " + (", ".join(parts) if parts else "no change of the force")
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (an item of ``jumps`` in ``POST /v1/force-deflection``): ``kind``, ``dx_before``,
-        ``dx_after``, ``force_before`` / ``force_after`` ``{fx, fy}``, ``branch_before``, ``branch_after``."""
+        ``dx_after``, ``force_before`` / ``force_after`` / ``delta`` ``{fx, fy}``, ``branch_before``,
+        ``branch_after``, ``label``."""
         return {"kind": self.kind, "dx_before": number(self.dx_before), "dx_after": number(self.dx_after),
                 "force_before": _force(self.force_before), "force_after": _force(self.force_after),
-                "branch_before": int(self.branch_before), "branch_after": int(self.branch_after)}
+                "branch_before": int(self.branch_before), "branch_after": int(self.branch_after),
+                "delta": _force(self.delta), "label": self.label}
+
+
+def _fmt(v: float, sign: str = "") -> str:
+    """3 significant digits, no ``-0``."""
+    v = float(v) + 0.0
+    return f"{v:{sign}.3g}" if v != 0.0 else "0"
+
+
+def _word(fx: float) -> str:
+    return " (tensile)" if fx > 0.0 else (" (compressive)" if fx < 0.0 else "")
+
+
+def _changes(a: float, b: float) -> bool:
+    return abs(float(b) - float(a)) > 1e-12 * max(1.0, abs(float(a)), abs(float(b)))
 
 
 def _force(v: Any) -> dict[str, float]:
@@ -92,8 +177,33 @@ def _force(v: Any) -> dict[str, float]:
 
 
 @dataclass(frozen=True)
+class CurveEnd:
+    """Where and why a curve stopped before its last requested point.
+
+    Attributes
+    ----------
+    dx, dy : float
+        The first requested point where the curve could not go on (same reference as the curve's points).
+    reason : str
+        One of :data:`END_REASONS`: ``"no_stable_equilibrium"`` (no stable equilibrium is found there: the
+        stable branches end, e.g. at a fold or the joint range).
+    message : str
+        A sentence.
+    """
+
+    dx: float
+    dy: float
+    reason: str
+    message: str
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form: ``{dx, dy, reason, message}``."""
+        return {"dx": number(self.dx), "dy": number(self.dy), "reason": self.reason, "message": self.message}
+
+
+@dataclass(frozen=True)
 class Curve:
-    """Per-point results of :func:`force_deflection` (arrays of length ``m`` = number of points).
+    """Per-point results of :func:`force_deflection` (arrays of length ``m`` = number of points computed).
 
     Attributes
     ----------
@@ -107,7 +217,8 @@ class Curve:
     branch : ndarray (m,) of int
         Identifier of the branch each point lies on (-1: straight).
     status : list of str
-        Solver status per point (``"nan"`` where a followed branch does not exist).
+        Solver status per point (``"straight"``, ``"straight_not_equilibrium"``, the solver's status;
+        ``"nan"`` where a followed branch of ``branches`` does not exist).
     jumps : list of Jump
     branches : list of Curve
         ``branch="all"`` only: each branch followed separately.
@@ -116,6 +227,11 @@ class Curve:
     origin : ndarray (2,)
         The reference tip's deflection from the straight tip (zero for ``"straight"``): add it to ``(dx, dy)``
         to get the deflection from straight.
+    ended_at : CurveEnd or None
+        ``None`` when every requested point was computed; else the first point where the curve could not go
+        on (the arrays hold the ``m < requested`` points before it).
+    requested : int
+        How many points were asked for (``m`` when complete).
     """
 
     dx: np.ndarray
@@ -133,19 +249,56 @@ class Curve:
     branches: list["Curve"] = field(default_factory=list, repr=False)
     reference: str = "straight"
     origin: np.ndarray = field(default_factory=lambda: np.zeros(2))
+    ended_at: CurveEnd | None = None
+    requested: int = -1
+
+    def __post_init__(self) -> None:
+        if self.requested < 0:
+            object.__setattr__(self, "requested", int(self.dx.size))
+
+    @property
+    def complete(self) -> bool:
+        """Every requested point was computed (``ended_at is None``)."""
+        return self.ended_at is None
+
+    @property
+    def note(self) -> str:
+        """``""`` when complete, else a sentence saying where the curve ends and how many points it holds,
+        e.g. "The stable branch ends between dx = 3.1 and dx = 3.15 (dy = 0): no stable equilibrium at
+        dx = 3.15; 63 of 81 points computed."."""
+        e = self.ended_at
+        if e is None:
+            return ""
+        m = int(self.dx.size)
+        why = {"no_stable_equilibrium": "no stable equilibrium"}.get(e.reason, e.reason.replace("_", " "))
+        if m == 0:
+            where = f"at the first point, dx = {e.dx:g} (dy = {e.dy:g})"
+            at = f"dx = {e.dx:g}"
+        elif float(self.dy[-1]) == e.dy:
+            where = f"between dx = {float(self.dx[-1]):g} and dx = {e.dx:g} (dy = {e.dy:g})"
+            at = f"dx = {e.dx:g}"
+        else:
+            where = (f"between (dx, dy) = ({float(self.dx[-1]):g}, {float(self.dy[-1]):g}) and "
+                     f"({e.dx:g}, {e.dy:g})")
+            at = f"(dx, dy) = ({e.dx:g}, {e.dy:g})"
+        return f"The stable branch ends {where}: {why} at {at}; {m} of {self.requested} points computed."
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/force-deflection``): ``points`` (``dx``, ``dy``, ``fx``, ``fy``,
-        ``energy``, ``q``, ``stable``, ``morse_index``, ``shape``, ``branch``), ``jumps`` (each
-        :meth:`Jump.to_dict`) and ``branches`` (``branch="all"``: ``{id, points}`` per followed branch,
-        a point with ``exists`` and ``null`` numbers where the branch does not reach)."""
+        ``energy``, ``q``, ``stable``, ``morse_index``, ``shape``, ``branch``, ``status``), ``jumps`` (each
+        :meth:`Jump.to_dict`), ``branches`` (``branch="all"``: ``{id, points}`` per followed branch,
+        a point with ``exists`` and ``null`` numbers where the branch does not reach), ``reference``,
+        ``origin``, ``complete``, ``ended_at`` (:meth:`CurveEnd.to_dict` or ``null``), ``note`` and
+        ``requested``."""
         points = [{"dx": number(self.dx[i]), "dy": number(self.dy[i]), "fx": number(self.fx[i]),
                    "fy": number(self.fy[i]), "energy": number(self.energy[i]), "q": numbers(self.q[i]),
                    "stable": bool(self.stable[i]), "morse_index": int(self.morse_index[i]), "shape": self.shape[i],
-                   "branch": int(self.branch[i])} for i in range(self.dx.size)]
+                   "branch": int(self.branch[i]), "status": self.status[i]} for i in range(self.dx.size)]
         return {"points": points, "jumps": [j.to_dict() for j in self.jumps],
                 "branches": [br._branch_dict(bi) for bi, br in enumerate(self.branches)],
-                "reference": self.reference, "origin": numbers(self.origin)}
+                "reference": self.reference, "origin": numbers(self.origin), "complete": self.complete,
+                "ended_at": None if self.ended_at is None else self.ended_at.to_dict(), "note": self.note,
+                "requested": int(self.requested)}
 
     def _branch_dict(self, position: int) -> dict[str, Any]:
         """This curve as the ``position``-th item of ``branches``: its id and nullable points."""
@@ -196,7 +349,7 @@ def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
     if not stable:
         try:
             stable = [solve_equilibrium(m, dx, dy)]
-        except NoEquilibriumError:
+        except SolverError:                  # NoEquilibriumError included; TimeLimitError is no SolverError
             stable = []
     return stable
 
@@ -209,7 +362,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     ----------
     m : Manipulator
     dx : array_like (m,)
-        Deflections (length units), in the order to follow (usually increasing).
+        Deflections (length units), in the order to follow (increasing or decreasing, or any path).
     dy : float or array_like (m,)
     branch : {"stable", "all"}
         ``"all"`` also follows every branch found at the first deflected point and, on multistable
@@ -226,13 +379,23 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     Returns
     -------
     Curve
+        Every point up to the first one where no stable equilibrium is found. When the curve stops
+        there (the stable branches end at a fold or the joint range and the global search finds no
+        other), it holds only the points before it, ``Curve.ended_at`` is that point
+        (``reason = "no_stable_equilibrium"``), ``Curve.complete`` is ``False`` and ``Curve.note`` says
+        so; the later points are not computed. Every point returned is a converged equilibrium or the
+        straight chain.
 
     Raises
     ------
     UnreachableTargetError, InvalidParameterError
         (``ValueError``) for a point beyond reach or malformed input, before any solve.
+    TimeLimitError
+        (``RuntimeError``) when the time limit of :func:`~tensegrity_opt.time_limit` is reached (no
+        partial curve: what it would hold would depend on the machine's speed).
     NoEquilibriumError
-        (``RuntimeError``) when some point has no stable equilibrium at all.
+        (``RuntimeError``) ``reference="rest"`` only: when the chain has no stable rest configuration
+        (nothing to measure from). A point without a stable equilibrium ends the curve instead.
     """
     if branch not in ("stable", "all"):
         raise InvalidParameterError(f"branch must be 'stable' or 'all', got {branch!r}", field="branch")
@@ -240,6 +403,12 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         raise InvalidParameterError(f"reference must be 'straight' or 'rest', got {reference!r}", field="reference")
     if reference == "rest":
         return _from_rest(m, dx, dy, branch, recheck_every)
+    return _curve(m, dx, dy, branch, recheck_every, np.zeros(2))
+
+
+def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.ndarray) -> Curve:
+    """:func:`force_deflection` from the straight tip; ``origin`` only shifts the numbers in the messages
+    (``reference="rest"``: they speak of the caller's deflections)."""
     dxs, dys = _points(m, dx, dy)
     npts, n = dxs.size, m.n
     targets = np.column_stack([m.straight_length - dxs, dys])
@@ -248,6 +417,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     sel = np.full(npts, -1, dtype=int)
     mirror_free = m == m.mirrored() and np.all(dys == 0.0)
     multistable = not m.monotonic and n >= 2
+    end, ended = npts, None
 
     def new_branch(i: int, eq: Equilibrium, stop: int) -> BranchPoints:
         br = BranchPoints(len(branches), npts, n)
@@ -257,7 +427,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         return br
 
     i = 0
-    while i < npts:
+    while i < npts and ended is None:
         if straight[i]:
             i += 1
             continue
@@ -293,7 +463,10 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
                 if g is not None and not any(np.max(np.abs(br.q[j] - g.q)) < 1e-7 for br in live):
                     live.append(new_branch(j, g, stop))
             if not live:
-                raise NoEquilibriumError(f"no stable equilibrium at dx={dxs[j]:g}, dy={dys[j]:g}")
+                # the stable branches end here and the global search finds no other: the curve stops
+                end = j
+                ended = _end(m, dxs, dys, j, None if current is None else branches[current], origin)
+                break
             e_min = min(br.E[j] for br in live)
             tol = 1e-9 * max(m.torque_scale, abs(e_min))
             best = [br for br in live if br.E[j] <= e_min + tol]
@@ -302,10 +475,32 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
             sel[j] = pick.id
         i = stop
 
-    curve = _assemble(m, dxs, dys, branches, sel, straight)
+    curve = _assemble(m, dxs[:end], dys[:end], branches, sel[:end], straight[:end])
+    extra: dict[str, Any] = {"ended_at": ended, "requested": npts}
     if branch == "all":
-        curve = Curve(**{**curve.__dict__, "branches": [_branch_curve(dxs, dys, br) for br in branches]})
-    return curve
+        # a branch born at the end point has no point on the curve: left out
+        extra["branches"] = [_branch_curve(dxs[:end], dys[:end], br, end) for br in branches
+                             if br.valid[:end].any()]
+    return Curve(**{**curve.__dict__, **extra})
+
+
+def _end(m: Manipulator, dxs, dys, j: int, followed: BranchPoints | None, origin: np.ndarray) -> CurveEnd:
+    """The :class:`CurveEnd` at point ``j`` (no stable equilibrium found), saying what the followed branch did."""
+    dx, dy = float(dxs[j] - origin[0]), float(dys[j] - origin[1])
+    if followed is None:
+        what = "the global search finds none"
+    elif followed.valid[j]:
+        what = (f"the followed branch is unstable there (Morse index {int(followed.morse[j])}: a fold or branch "
+                f"point since the last point) and the global search finds no other stable equilibrium")
+    else:
+        q = followed.q[j - 1]
+        margin = m.joint_limits - np.abs(q)
+        k = int(np.argmin(margin))
+        what = (f"the followed branch ends (no converged point inside the physical range from the last point, "
+                f"where joint {k + 1} is {margin[k]:.3g} rad from its limit {m.joint_limits[k]:.4g}) and the "
+                f"global search finds no other stable equilibrium")
+    return CurveEnd(dx, dy, "no_stable_equilibrium",
+                    f"No stable equilibrium at dx = {dx:g}, dy = {dy:g}: {what}.")
 
 
 def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve:
@@ -319,24 +514,29 @@ def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve
     rel_x = np.atleast_1d(np.asarray(dx, dtype=float))
     rel_y = np.asarray(dy, dtype=float)
     try:
-        c = force_deflection(m, rel_x + origin[0], rel_y + origin[1], branch, recheck_every=recheck_every)
+        c = _curve(m, rel_x + origin[0], rel_y + origin[1], branch, recheck_every, origin)
     except InvalidParameterError as exc:
         raise InvalidParameterError(exc.message, field=exc.field, **exc.details) from None
 
     def shift(cv: Curve) -> Curve:
+        e = cv.ended_at
         return Curve(**{**cv.__dict__, "dx": cv.dx - origin[0], "dy": cv.dy - origin[1], "reference": "rest",
                         "origin": origin.copy(),
-                        "jumps": [Jump(j.kind, j.dx_before - origin[0], j.dx_after - origin[0], j.force_before,
-                                       j.force_after, j.branch_before, j.branch_after, j.dy_before - origin[1],
-                                       j.dy_after - origin[1]) for j in cv.jumps],
-                        "branches": [shift(b) for b in cv.branches]})
+                        "jumps": [replace(j, dx_before=j.dx_before - origin[0], dx_after=j.dx_after - origin[0],
+                                          dy_before=j.dy_before - origin[1], dy_after=j.dy_after - origin[1])
+                                  for j in cv.jumps],
+                        "branches": [shift(b) for b in cv.branches],
+                        "ended_at": None if e is None else CurveEnd(float(e.dx), float(e.dy), e.reason, e.message)})
 
     return shift(c)
 
 
 def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free: bool) -> list[Equilibrium]:
     if m.n == 1:
-        return [solve_equilibrium(m, dx, dy)]
+        try:
+            return [solve_equilibrium(m, dx, dy)]
+        except SolverError:                  # no equilibrium here: the curve ends (TimeLimitError still raises)
+            return []
     if branch == "all":
         return find_equilibria(m, dx, dy)
     eqs = _stable_at(m, dx, dy)
@@ -352,6 +552,7 @@ def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free
 
 
 def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
+    """The selected points (the first ``dxs.size`` of the run) and their jumps."""
     npts, n = dxs.size, m.n
     q = np.zeros((npts, n))
     F = np.zeros((npts, 2))
@@ -376,32 +577,50 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
             br.stable[j], br.status[j]
     shapes = shape_labels(q)
     jumps: list[Jump] = []
-    # Leaving the straight chain: the force jumps from the straight value to the branch's limit
-    # as dx -> 0+ — the critical force when the straight chain is a stable equilibrium and dy = 0,
-    # else (K <= 0, asymmetric preloads, dy != 0) the force at the first deflected point.
-    try:
-        fx0 = critical_force(m, "guided").force if m.n >= 2 else None
-    except TensegrityError:
-        fx0 = None
-    for j in range(npts):
-        if straight[j] or (j > 0 and not straight[j - 1]):
-            continue                    # not the first deflected point after the straight chain
-        if j == 0 and dys[0] != 0.0:
-            continue                    # a curve starting off the dx axis does not leave the straight chain
-        limit = np.array([fx0, 0.0]) if (fx0 is not None and dys[j] == 0.0) else F[j].copy()
-        before = float(dxs[j - 1]) if j > 0 else 0.0
-        jumps.append(Jump("buckling", before, float(dxs[j]), F[j - 1].copy() if j > 0 else np.zeros(2), limit,
-                          -1, int(sel[j]), float(dys[j - 1]) if j > 0 else 0.0, float(dys[j])))
+    # Leaving (or returning to) the straight chain: the force jumps between the straight value and the
+    # branch's limit as dx -> 0+ — the guided critical force when the straight chain is a stable
+    # equilibrium (every K > 0: critical_force refuses otherwise) and dy = 0 ("buckling"), else (K <= 0,
+    # dy != 0) the force at the deflected point ("leave_straight"). No jump when the straight chain is
+    # no equilibrium (asymmetric preloads): the straight point has no force to jump from.
+    fx0 = None
+    if s0_ok and m.n >= 2 and straight.any():
+        try:
+            fx0 = critical_force(m, "guided").force
+        except TensegrityError:
+            fx0 = None
     for j in range(1, npts):
-        if sel[j] != sel[j - 1] and sel[j] >= 0 and sel[j - 1] >= 0:
-            jumps.append(Jump("branch_switch", float(dxs[j - 1]), float(dxs[j]), F[j - 1].copy(), F[j].copy(),
-                              int(sel[j - 1]), int(sel[j]), float(dys[j - 1]), float(dys[j])))
+        a, b = bool(straight[j - 1]), bool(straight[j])
+        if a and b:
+            continue
+        if a != b:
+            if not s0_ok:
+                continue
+            d = j if a else j - 1                       # the deflected one of the two points
+            cause = ""
+            if fx0 is not None and dys[d] == 0.0:
+                kind, limit = "buckling", np.array([fx0, s0.force[1]])
+            else:
+                kind, limit = "leave_straight", F[d].copy()
+                cause = (f"dy = {_fmt(dys[d])}" if dys[d] != 0.0 else "unstable unloaded: K <= 0"
+                         if np.any(m.stiffness <= 0.0) else "not a stable unloaded equilibrium")
+            before, after = (F[j - 1].copy(), limit) if a else (limit, F[j].copy())
+        elif sel[j] != sel[j - 1]:
+            cause = ""
+            prev = branches[sel[j - 1]]
+            kind = "switch" if (prev.valid[j] and prev.stable[j]) else "snap"
+            before, after = F[j - 1].copy(), F[j].copy()
+        else:
+            continue
+        jumps.append(Jump(kind, float(dxs[j - 1]), float(dxs[j]), before, after, int(sel[j - 1]), int(sel[j]),
+                          float(dys[j - 1]), float(dys[j]), cause))
     return Curve(dx=dxs.copy(), dy=dys.copy(), q=q, fx=F[:, 0].copy(), fy=F[:, 1].copy(), energy=E,
                  stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), status=status, jumps=jumps)
 
 
-def _branch_curve(dxs, dys, br: BranchPoints) -> Curve:
-    return Curve(dx=dxs.copy(), dy=dys.copy(), q=br.q.copy(), fx=br.F[:, 0].copy(), fy=br.F[:, 1].copy(),
-                 energy=br.E.copy(), stable=br.stable.copy(), morse_index=br.morse.copy(),
-                 shape=[shape_label(q) if v else "" for q, v in zip(br.q, br.valid)],
-                 branch=np.full(dxs.size, br.id), status=list(br.status))
+def _branch_curve(dxs, dys, br: BranchPoints, end: int) -> Curve:
+    """One followed branch over the first ``end`` points."""
+    return Curve(dx=dxs.copy(), dy=dys.copy(), q=br.q[:end].copy(), fx=br.F[:end, 0].copy(),
+                 fy=br.F[:end, 1].copy(), energy=br.E[:end].copy(), stable=br.stable[:end].copy(),
+                 morse_index=br.morse[:end].copy(),
+                 shape=[shape_label(q) if v else "" for q, v in zip(br.q[:end], br.valid[:end])],
+                 branch=np.full(end, br.id), status=list(br.status[:end]))

@@ -1254,6 +1254,8 @@ def plot_branches(branches: Any, *, x: str = "t", y: str = "fx", m: Manipulator 
     m : Manipulator, optional
         For the title; default the branches' own chain.
 
+    Notes
+    -----
     Artists (``gid``): ``"branch-<b>-morse<k>-<j>"`` (branch ``b``, its ``j``-th piece, Morse index
     ``k``), ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"`` (every event of that
     kind over all branches, in order).

@@ -1,0 +1,238 @@
+from http import HTTPStatus
+from io import BytesIO
+from typing import Any
+
+import httpx
+
+from ... import errors
+from ...client import AuthenticatedClient, Client
+from ...models.error_out import ErrorOut
+from ...models.plot_simulation_request import PlotSimulationRequest
+from ...types import File, Response
+
+
+def _get_kwargs(
+    *,
+    body: PlotSimulationRequest,
+) -> dict[str, Any]:
+    headers: dict[str, Any] = {}
+
+    _kwargs: dict[str, Any] = {
+        "method": "post",
+        "url": "/v1/plots/simulation",
+    }
+
+    _kwargs["json"] = body.to_dict()
+
+    headers["Content-Type"] = "application/json"
+
+    _kwargs["headers"] = headers
+    return _kwargs
+
+
+def _parse_response(*, client: AuthenticatedClient | Client, response: httpx.Response) -> ErrorOut | File | None:
+    if response.status_code == 200:
+        response_200 = File(payload=BytesIO(response.content))
+
+        return response_200
+
+    if response.status_code == 401:
+        response_401 = ErrorOut.from_dict(response.json())
+
+        return response_401
+
+    if response.status_code == 413:
+        response_413 = ErrorOut.from_dict(response.json())
+
+        return response_413
+
+    if response.status_code == 422:
+        response_422 = ErrorOut.from_dict(response.json())
+
+        return response_422
+
+    if response.status_code == 503:
+        response_503 = ErrorOut.from_dict(response.json())
+
+        return response_503
+
+    if response.status_code == 504:
+        response_504 = ErrorOut.from_dict(response.json())
+
+        return response_504
+
+    if client.raise_on_unexpected_status:
+        raise errors.UnexpectedStatus(response.status_code, response.content)
+    else:
+        return None
+
+
+def _build_response(*, client: AuthenticatedClient | Client, response: httpx.Response) -> Response[ErrorOut | File]:
+    return Response(
+        status_code=HTTPStatus(response.status_code),
+        content=response.content,
+        headers=response.headers,
+        parsed=_parse_response(client=client, response=response),
+    )
+
+
+def sync_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+    body: PlotSimulationRequest,
+) -> Response[ErrorOut | File]:
+    """Figure: the hysteresis loop of a quasi-static simulation, the snaps as arrows from fold to landing
+
+     The simulation of `/v1/control/simulate` (the same body, computed for the figure): the driving input
+    against the tip's response sample by sample (a free tip under varying loads: the load component that
+    varies most against the deflection along it; varying preloads: the preload parameter `p = d . (L0 -
+    L0(0))` against the deflection that varies most; a held tip: the holding force against the held
+    deflection), each snap an arrow from its fold to its landing, a joint-limit end marked, the legend
+    beside the axes. At most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` samples (default 2000;
+    above: 422 `too_many_steps` naming the field), chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`). The simulation stops shortly before the server's time limit
+    and answers the samples done (200, `status: "time_limit"`, `success: false`) instead of a 504. About
+    1 ms a sample without a snap (n = 3), tens of milliseconds a snap. Answers `image/png`, or
+    `image/svg+xml` with `"format": "svg"` (or, without `format`, an `Accept` header preferring
+    `image/svg+xml`); `dpi` sets the PNG resolution.
+
+    Args:
+        body (PlotSimulationRequest): The simulation of `/v1/control/simulate` computed for the
+            figure (the same body): the hysteresis loop.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ErrorOut | File]
+    """
+
+    kwargs = _get_kwargs(
+        body=body,
+    )
+
+    response = client.get_httpx_client().request(
+        **kwargs,
+    )
+
+    return _build_response(client=client, response=response)
+
+
+def sync(
+    *,
+    client: AuthenticatedClient | Client,
+    body: PlotSimulationRequest,
+) -> ErrorOut | File | None:
+    """Figure: the hysteresis loop of a quasi-static simulation, the snaps as arrows from fold to landing
+
+     The simulation of `/v1/control/simulate` (the same body, computed for the figure): the driving input
+    against the tip's response sample by sample (a free tip under varying loads: the load component that
+    varies most against the deflection along it; varying preloads: the preload parameter `p = d . (L0 -
+    L0(0))` against the deflection that varies most; a held tip: the holding force against the held
+    deflection), each snap an arrow from its fold to its landing, a joint-limit end marked, the legend
+    beside the axes. At most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` samples (default 2000;
+    above: 422 `too_many_steps` naming the field), chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`). The simulation stops shortly before the server's time limit
+    and answers the samples done (200, `status: "time_limit"`, `success: false`) instead of a 504. About
+    1 ms a sample without a snap (n = 3), tens of milliseconds a snap. Answers `image/png`, or
+    `image/svg+xml` with `"format": "svg"` (or, without `format`, an `Accept` header preferring
+    `image/svg+xml`); `dpi` sets the PNG resolution.
+
+    Args:
+        body (PlotSimulationRequest): The simulation of `/v1/control/simulate` computed for the
+            figure (the same body): the hysteresis loop.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ErrorOut | File
+    """
+
+    return sync_detailed(
+        client=client,
+        body=body,
+    ).parsed
+
+
+async def asyncio_detailed(
+    *,
+    client: AuthenticatedClient | Client,
+    body: PlotSimulationRequest,
+) -> Response[ErrorOut | File]:
+    """Figure: the hysteresis loop of a quasi-static simulation, the snaps as arrows from fold to landing
+
+     The simulation of `/v1/control/simulate` (the same body, computed for the figure): the driving input
+    against the tip's response sample by sample (a free tip under varying loads: the load component that
+    varies most against the deflection along it; varying preloads: the preload parameter `p = d . (L0 -
+    L0(0))` against the deflection that varies most; a held tip: the holding force against the held
+    deflection), each snap an arrow from its fold to its landing, a joint-limit end marked, the legend
+    beside the axes. At most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` samples (default 2000;
+    above: 422 `too_many_steps` naming the field), chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`). The simulation stops shortly before the server's time limit
+    and answers the samples done (200, `status: "time_limit"`, `success: false`) instead of a 504. About
+    1 ms a sample without a snap (n = 3), tens of milliseconds a snap. Answers `image/png`, or
+    `image/svg+xml` with `"format": "svg"` (or, without `format`, an `Accept` header preferring
+    `image/svg+xml`); `dpi` sets the PNG resolution.
+
+    Args:
+        body (PlotSimulationRequest): The simulation of `/v1/control/simulate` computed for the
+            figure (the same body): the hysteresis loop.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        Response[ErrorOut | File]
+    """
+
+    kwargs = _get_kwargs(
+        body=body,
+    )
+
+    response = await client.get_async_httpx_client().request(**kwargs)
+
+    return _build_response(client=client, response=response)
+
+
+async def asyncio(
+    *,
+    client: AuthenticatedClient | Client,
+    body: PlotSimulationRequest,
+) -> ErrorOut | File | None:
+    """Figure: the hysteresis loop of a quasi-static simulation, the snaps as arrows from fold to landing
+
+     The simulation of `/v1/control/simulate` (the same body, computed for the figure): the driving input
+    against the tip's response sample by sample (a free tip under varying loads: the load component that
+    varies most against the deflection along it; varying preloads: the preload parameter `p = d . (L0 -
+    L0(0))` against the deflection that varies most; a held tip: the holding force against the held
+    deflection), each snap an arrow from its fold to its landing, a joint-limit end marked, the legend
+    beside the axes. At most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` samples (default 2000;
+    above: 422 `too_many_steps` naming the field), chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`). The simulation stops shortly before the server's time limit
+    and answers the samples done (200, `status: "time_limit"`, `success: false`) instead of a 504. About
+    1 ms a sample without a snap (n = 3), tens of milliseconds a snap. Answers `image/png`, or
+    `image/svg+xml` with `"format": "svg"` (or, without `format`, an `Accept` header preferring
+    `image/svg+xml`); `dpi` sets the PNG resolution.
+
+    Args:
+        body (PlotSimulationRequest): The simulation of `/v1/control/simulate` computed for the
+            figure (the same body): the hysteresis loop.
+
+    Raises:
+        errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
+        httpx.TimeoutException: If the request takes longer than Client.timeout.
+
+    Returns:
+        ErrorOut | File
+    """
+
+    return (
+        await asyncio_detailed(
+            client=client,
+            body=body,
+        )
+    ).parsed

@@ -1,0 +1,58 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any, TypeVar
+
+from attrs import define as _attrs_define
+
+T = TypeVar("T", bound="AngleRange")
+
+
+@_attrs_define
+class AngleRange:
+    """
+    Attributes:
+        num (int): number of points (at most 10001)
+        start (float):
+        stop (float):
+    """
+
+    num: int
+    start: float
+    stop: float
+
+    def to_dict(self) -> dict[str, Any]:
+        num = self.num
+
+        start = self.start
+
+        stop = self.stop
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "num": num,
+                "start": start,
+                "stop": stop,
+            }
+        )
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        d = dict(src_dict)
+        num = d.pop("num")
+
+        start = d.pop("start")
+
+        stop = d.pop("stop")
+
+        angle_range = cls(
+            num=num,
+            start=start,
+            stop=stop,
+        )
+
+        return angle_range

@@ -1,0 +1,206 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..models.branch_event_out_kind import BranchEventOutKind
+from ..models.branch_event_out_stability import BranchEventOutStability
+
+if TYPE_CHECKING:
+    from ..models.force import Force
+
+
+T = TypeVar("T", bound="BranchEventOut")
+
+
+@_attrs_define
+class BranchEventOut:
+    """A special point, located between points `index` and `index + 1`.
+
+    Attributes:
+        energy (float):
+        force (Force):
+        index (int):
+        joint (int | None): the joint at its limit (0-based), joint_limit only
+        kind (BranchEventOutKind): fold (t turns back: snap-through under this control), branch_point (another branch
+            crosses), joint_limit (the end)
+        method (str): moore_spence, test_function or limit
+        morse_after (int):
+        morse_before (int):
+        null_vector (list[float] | None): the buckling or snapping mode (largest entry +1)
+        q (list[float]):
+        residual (float | None):
+        stability (BranchEventOutStability):
+        t (float):
+        tip (list[float]):
+    """
+
+    energy: float
+    force: Force
+    index: int
+    joint: int | None
+    kind: BranchEventOutKind
+    method: str
+    morse_after: int
+    morse_before: int
+    null_vector: list[float] | None
+    q: list[float]
+    residual: float | None
+    stability: BranchEventOutStability
+    t: float
+    tip: list[float]
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        energy = self.energy
+
+        force = self.force.to_dict()
+
+        index = self.index
+
+        joint: int | None
+        joint = self.joint
+
+        kind = self.kind.value
+
+        method = self.method
+
+        morse_after = self.morse_after
+
+        morse_before = self.morse_before
+
+        null_vector: list[float] | None
+        if isinstance(self.null_vector, list):
+            null_vector = self.null_vector
+
+        else:
+            null_vector = self.null_vector
+
+        q = self.q
+
+        residual: float | None
+        residual = self.residual
+
+        stability = self.stability.value
+
+        t = self.t
+
+        tip = self.tip
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "energy": energy,
+                "force": force,
+                "index": index,
+                "joint": joint,
+                "kind": kind,
+                "method": method,
+                "morse_after": morse_after,
+                "morse_before": morse_before,
+                "null_vector": null_vector,
+                "q": q,
+                "residual": residual,
+                "stability": stability,
+                "t": t,
+                "tip": tip,
+            }
+        )
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.force import Force  # noqa: PLC0415
+
+        d = dict(src_dict)
+        energy = d.pop("energy")
+
+        force = Force.from_dict(d.pop("force"))
+
+        index = d.pop("index")
+
+        def _parse_joint(data: object) -> int | None:
+            if data is None:
+                return data
+            return cast(int | None, data)
+
+        joint = _parse_joint(d.pop("joint"))
+
+        kind = BranchEventOutKind(d.pop("kind"))
+
+        method = d.pop("method")
+
+        morse_after = d.pop("morse_after")
+
+        morse_before = d.pop("morse_before")
+
+        def _parse_null_vector(data: object) -> list[float] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                null_vector_type_0 = cast(list[float], data)
+
+                return null_vector_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None, data)
+
+        null_vector = _parse_null_vector(d.pop("null_vector"))
+
+        q = cast(list[float], d.pop("q"))
+
+        def _parse_residual(data: object) -> float | None:
+            if data is None:
+                return data
+            return cast(float | None, data)
+
+        residual = _parse_residual(d.pop("residual"))
+
+        stability = BranchEventOutStability(d.pop("stability"))
+
+        t = d.pop("t")
+
+        tip = cast(list[float], d.pop("tip"))
+
+        branch_event_out = cls(
+            energy=energy,
+            force=force,
+            index=index,
+            joint=joint,
+            kind=kind,
+            method=method,
+            morse_after=morse_after,
+            morse_before=morse_before,
+            null_vector=null_vector,
+            q=q,
+            residual=residual,
+            stability=stability,
+            t=t,
+            tip=tip,
+        )
+
+        branch_event_out.additional_properties = d
+        return branch_event_out
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

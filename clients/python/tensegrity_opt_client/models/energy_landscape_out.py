@@ -1,0 +1,119 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+T = TypeVar("T", bound="EnergyLandscapeOut")
+
+
+@_attrs_define
+class EnergyLandscapeOut:
+    """
+    Attributes:
+        energy (list[list[list[float | None]]]): energy[elbow][i][j], elbow 0: +1, 1: -1; null where unreachable or out
+            of range
+        pair (list[int]):
+        qi (list[float]): grid axis of joint pair[0] (rad)
+        qj (list[float]): grid axis of joint pair[1] (rad)
+    """
+
+    energy: list[list[list[float | None]]]
+    pair: list[int]
+    qi: list[float]
+    qj: list[float]
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        energy = []
+        for energy_item_data in self.energy:
+            energy_item = []
+            for energy_item_item_data in energy_item_data:
+                energy_item_item = []
+                for energy_item_item_item_data in energy_item_item_data:
+                    energy_item_item_item: float | None
+                    energy_item_item_item = energy_item_item_item_data
+                    energy_item_item.append(energy_item_item_item)
+
+                energy_item.append(energy_item_item)
+
+            energy.append(energy_item)
+
+        pair = self.pair
+
+        qi = self.qi
+
+        qj = self.qj
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "energy": energy,
+                "pair": pair,
+                "qi": qi,
+                "qj": qj,
+            }
+        )
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        d = dict(src_dict)
+        energy = []
+        _energy = d.pop("energy")
+        for energy_item_data in _energy:
+            energy_item = []
+            _energy_item = energy_item_data
+            for energy_item_item_data in _energy_item:
+                energy_item_item = []
+                _energy_item_item = energy_item_item_data
+                for energy_item_item_item_data in _energy_item_item:
+
+                    def _parse_energy_item_item_item(data: object) -> float | None:
+                        if data is None:
+                            return data
+                        return cast(float | None, data)
+
+                    energy_item_item_item = _parse_energy_item_item_item(energy_item_item_item_data)
+
+                    energy_item_item.append(energy_item_item_item)
+
+                energy_item.append(energy_item_item)
+
+            energy.append(energy_item)
+
+        pair = cast(list[int], d.pop("pair"))
+
+        qi = cast(list[float], d.pop("qi"))
+
+        qj = cast(list[float], d.pop("qj"))
+
+        energy_landscape_out = cls(
+            energy=energy,
+            pair=pair,
+            qi=qi,
+            qj=qj,
+        )
+
+        energy_landscape_out.additional_properties = d
+        return energy_landscape_out
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

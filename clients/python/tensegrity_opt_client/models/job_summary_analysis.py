@@ -1,0 +1,13 @@
+from enum import StrEnum
+
+
+class JobSummaryAnalysis(StrEnum):
+    ATLAS = "atlas"
+    BUCKLING = "buckling"
+    DESIGN = "design"
+    EQUILIBRIA_COUNT = "equilibria_count"
+    EQUILIBRIUM = "equilibrium"
+    STIFFNESS = "stiffness"
+
+    def __str__(self) -> str:
+        return str(self.value)

@@ -1,0 +1,308 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..models.limit_load_out_boundary import LimitLoadOutBoundary
+from ..models.limit_load_out_kind import LimitLoadOutKind
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.equilibrium_out import EquilibriumOut
+    from ..models.force import Force
+    from ..models.traced_branch_out import TracedBranchOut
+
+
+T = TypeVar("T", bound="LimitLoadOut")
+
+
+@_attrs_define
+class LimitLoadOut:
+    """
+    Attributes:
+        boundary (LimitLoadOutBoundary):
+        branch_points (int):
+        branch_status (str):
+        direction (list[float]):
+        end_load (float): the last load reached on the stable path
+        force (Force | None):
+        kind (LimitLoadOutKind):
+        load (float | None): the load where stability is first lost (null for kind none)
+        null_vector (list[float] | None):
+        q (list[float] | None):
+        quasi_buckling_force (Force | None):
+        quasi_buckling_load (float | None): the load of least tangent stiffness along the load
+        reason (None | str): kind none: joint_limit, max_load, or the branch's status (time_limit ...)
+        start (EquilibriumOut): An equilibrium configuration.
+        success (bool):
+        branch (None | TracedBranchOut | Unset): include_branch only: the traced path
+    """
+
+    boundary: LimitLoadOutBoundary
+    branch_points: int
+    branch_status: str
+    direction: list[float]
+    end_load: float
+    force: Force | None
+    kind: LimitLoadOutKind
+    load: float | None
+    null_vector: list[float] | None
+    q: list[float] | None
+    quasi_buckling_force: Force | None
+    quasi_buckling_load: float | None
+    reason: None | str
+    start: EquilibriumOut
+    success: bool
+    branch: None | TracedBranchOut | Unset = UNSET
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        from ..models.force import Force  # noqa: PLC0415
+        from ..models.traced_branch_out import TracedBranchOut  # noqa: PLC0415
+
+        boundary = self.boundary.value
+
+        branch_points = self.branch_points
+
+        branch_status = self.branch_status
+
+        direction = self.direction
+
+        end_load = self.end_load
+
+        force: dict[str, Any] | None
+        if isinstance(self.force, Force):
+            force = self.force.to_dict()
+        else:
+            force = self.force
+
+        kind = self.kind.value
+
+        load: float | None
+        load = self.load
+
+        null_vector: list[float] | None
+        if isinstance(self.null_vector, list):
+            null_vector = self.null_vector
+
+        else:
+            null_vector = self.null_vector
+
+        q: list[float] | None
+        if isinstance(self.q, list):
+            q = self.q
+
+        else:
+            q = self.q
+
+        quasi_buckling_force: dict[str, Any] | None
+        if isinstance(self.quasi_buckling_force, Force):
+            quasi_buckling_force = self.quasi_buckling_force.to_dict()
+        else:
+            quasi_buckling_force = self.quasi_buckling_force
+
+        quasi_buckling_load: float | None
+        quasi_buckling_load = self.quasi_buckling_load
+
+        reason: None | str
+        reason = self.reason
+
+        start = self.start.to_dict()
+
+        success = self.success
+
+        branch: dict[str, Any] | None | Unset
+        if isinstance(self.branch, Unset):
+            branch = UNSET
+        elif isinstance(self.branch, TracedBranchOut):
+            branch = self.branch.to_dict()
+        else:
+            branch = self.branch
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "boundary": boundary,
+                "branch_points": branch_points,
+                "branch_status": branch_status,
+                "direction": direction,
+                "end_load": end_load,
+                "force": force,
+                "kind": kind,
+                "load": load,
+                "null_vector": null_vector,
+                "q": q,
+                "quasi_buckling_force": quasi_buckling_force,
+                "quasi_buckling_load": quasi_buckling_load,
+                "reason": reason,
+                "start": start,
+                "success": success,
+            }
+        )
+        if branch is not UNSET:
+            field_dict["branch"] = branch
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.equilibrium_out import EquilibriumOut  # noqa: PLC0415
+        from ..models.force import Force  # noqa: PLC0415
+        from ..models.traced_branch_out import TracedBranchOut  # noqa: PLC0415
+
+        d = dict(src_dict)
+        boundary = LimitLoadOutBoundary(d.pop("boundary"))
+
+        branch_points = d.pop("branch_points")
+
+        branch_status = d.pop("branch_status")
+
+        direction = cast(list[float], d.pop("direction"))
+
+        end_load = d.pop("end_load")
+
+        def _parse_force(data: object) -> Force | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                force_type_0 = Force.from_dict(data)
+
+                return force_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(Force | None, data)
+
+        force = _parse_force(d.pop("force"))
+
+        kind = LimitLoadOutKind(d.pop("kind"))
+
+        def _parse_load(data: object) -> float | None:
+            if data is None:
+                return data
+            return cast(float | None, data)
+
+        load = _parse_load(d.pop("load"))
+
+        def _parse_null_vector(data: object) -> list[float] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                null_vector_type_0 = cast(list[float], data)
+
+                return null_vector_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None, data)
+
+        null_vector = _parse_null_vector(d.pop("null_vector"))
+
+        def _parse_q(data: object) -> list[float] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                q_type_0 = cast(list[float], data)
+
+                return q_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None, data)
+
+        q = _parse_q(d.pop("q"))
+
+        def _parse_quasi_buckling_force(data: object) -> Force | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                quasi_buckling_force_type_0 = Force.from_dict(data)
+
+                return quasi_buckling_force_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(Force | None, data)
+
+        quasi_buckling_force = _parse_quasi_buckling_force(d.pop("quasi_buckling_force"))
+
+        def _parse_quasi_buckling_load(data: object) -> float | None:
+            if data is None:
+                return data
+            return cast(float | None, data)
+
+        quasi_buckling_load = _parse_quasi_buckling_load(d.pop("quasi_buckling_load"))
+
+        def _parse_reason(data: object) -> None | str:
+            if data is None:
+                return data
+            return cast(None | str, data)
+
+        reason = _parse_reason(d.pop("reason"))
+
+        start = EquilibriumOut.from_dict(d.pop("start"))
+
+        success = d.pop("success")
+
+        def _parse_branch(data: object) -> None | TracedBranchOut | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                branch_type_0 = TracedBranchOut.from_dict(data)
+
+                return branch_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(None | TracedBranchOut | Unset, data)
+
+        branch = _parse_branch(d.pop("branch", UNSET))
+
+        limit_load_out = cls(
+            boundary=boundary,
+            branch_points=branch_points,
+            branch_status=branch_status,
+            direction=direction,
+            end_load=end_load,
+            force=force,
+            kind=kind,
+            load=load,
+            null_vector=null_vector,
+            q=q,
+            quasi_buckling_force=quasi_buckling_force,
+            quasi_buckling_load=quasi_buckling_load,
+            reason=reason,
+            start=start,
+            success=success,
+            branch=branch,
+        )
+
+        limit_load_out.additional_properties = d
+        return limit_load_out
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

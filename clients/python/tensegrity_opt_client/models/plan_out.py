@@ -1,0 +1,262 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+from ..models.plan_out_method_item import PlanOutMethodItem
+from ..models.plan_out_objective import PlanOutObjective
+from ..models.plan_out_status import PlanOutStatus
+
+if TYPE_CHECKING:
+    from ..models.plan_step_out import PlanStepOut
+
+
+T = TypeVar("T", bound="PlanOut")
+
+
+@_attrs_define
+class PlanOut:
+    """`PreloadPlan.to_dict()`: per step done (`K` rows, fewer when the time limit cut the plan).
+
+    Attributes:
+        end_angle (list[float]): the last link's absolute angle sum(q) per step (rad)
+        feasible (list[bool]): rest lengths meeting every requirement were found (false: the controller stays where it
+            was, q and tip the best reachable pose)
+        margin (list[float | None]): stability margin per step (torque / rad; null: infeasible)
+        margin_required (float): the stability margin asked for (torque / rad)
+        method (list[PlanOutMethodItem]): how each step was solved
+        objective (PlanOutObjective): how the redundancy was resolved
+        q (list[list[float]]): the equilibrium configuration per step (rad)
+        rest_lengths (list[list[list[float]]]): [L1_0, L2_0] per segment per step (what to command)
+        seconds (float): wall time of the plan (s)
+        status (PlanOutStatus): complete; infeasible_steps (see feasible); time_limit (the steps done so far)
+        steps (list[PlanStepOut]): every step in full (why an infeasible step failed: `status`)
+        success (bool): status is complete
+        targets (list[list[float]]): the targets of the steps done
+        tip (list[list[float]]): the tip per step (the target when feasible; else the best reachable pose)
+        verified (list[bool]): the forward solve from the previous step lands on the target, stable (with `verify:
+            false` no solve runs: false everywhere)
+    """
+
+    end_angle: list[float]
+    feasible: list[bool]
+    margin: list[float | None]
+    margin_required: float
+    method: list[PlanOutMethodItem]
+    objective: PlanOutObjective
+    q: list[list[float]]
+    rest_lengths: list[list[list[float]]]
+    seconds: float
+    status: PlanOutStatus
+    steps: list[PlanStepOut]
+    success: bool
+    targets: list[list[float]]
+    tip: list[list[float]]
+    verified: list[bool]
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        end_angle = self.end_angle
+
+        feasible = self.feasible
+
+        margin = []
+        for margin_item_data in self.margin:
+            margin_item: float | None
+            margin_item = margin_item_data
+            margin.append(margin_item)
+
+        margin_required = self.margin_required
+
+        method = []
+        for method_item_data in self.method:
+            method_item = method_item_data.value
+            method.append(method_item)
+
+        objective = self.objective.value
+
+        q = []
+        for q_item_data in self.q:
+            q_item = q_item_data
+
+            q.append(q_item)
+
+        rest_lengths = []
+        for rest_lengths_item_data in self.rest_lengths:
+            rest_lengths_item = []
+            for rest_lengths_item_item_data in rest_lengths_item_data:
+                rest_lengths_item_item = rest_lengths_item_item_data
+
+                rest_lengths_item.append(rest_lengths_item_item)
+
+            rest_lengths.append(rest_lengths_item)
+
+        seconds = self.seconds
+
+        status = self.status.value
+
+        steps = []
+        for steps_item_data in self.steps:
+            steps_item = steps_item_data.to_dict()
+            steps.append(steps_item)
+
+        success = self.success
+
+        targets = []
+        for targets_item_data in self.targets:
+            targets_item = targets_item_data
+
+            targets.append(targets_item)
+
+        tip = []
+        for tip_item_data in self.tip:
+            tip_item = tip_item_data
+
+            tip.append(tip_item)
+
+        verified = self.verified
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "end_angle": end_angle,
+                "feasible": feasible,
+                "margin": margin,
+                "margin_required": margin_required,
+                "method": method,
+                "objective": objective,
+                "q": q,
+                "rest_lengths": rest_lengths,
+                "seconds": seconds,
+                "status": status,
+                "steps": steps,
+                "success": success,
+                "targets": targets,
+                "tip": tip,
+                "verified": verified,
+            }
+        )
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.plan_step_out import PlanStepOut  # noqa: PLC0415
+
+        d = dict(src_dict)
+        end_angle = cast(list[float], d.pop("end_angle"))
+
+        feasible = cast(list[bool], d.pop("feasible"))
+
+        margin = []
+        _margin = d.pop("margin")
+        for margin_item_data in _margin:
+
+            def _parse_margin_item(data: object) -> float | None:
+                if data is None:
+                    return data
+                return cast(float | None, data)
+
+            margin_item = _parse_margin_item(margin_item_data)
+
+            margin.append(margin_item)
+
+        margin_required = d.pop("margin_required")
+
+        method = []
+        _method = d.pop("method")
+        for method_item_data in _method:
+            method_item = PlanOutMethodItem(method_item_data)
+
+            method.append(method_item)
+
+        objective = PlanOutObjective(d.pop("objective"))
+
+        q = []
+        _q = d.pop("q")
+        for q_item_data in _q:
+            q_item = cast(list[float], q_item_data)
+
+            q.append(q_item)
+
+        rest_lengths = []
+        _rest_lengths = d.pop("rest_lengths")
+        for rest_lengths_item_data in _rest_lengths:
+            rest_lengths_item = []
+            _rest_lengths_item = rest_lengths_item_data
+            for rest_lengths_item_item_data in _rest_lengths_item:
+                rest_lengths_item_item = cast(list[float], rest_lengths_item_item_data)
+
+                rest_lengths_item.append(rest_lengths_item_item)
+
+            rest_lengths.append(rest_lengths_item)
+
+        seconds = d.pop("seconds")
+
+        status = PlanOutStatus(d.pop("status"))
+
+        steps = []
+        _steps = d.pop("steps")
+        for steps_item_data in _steps:
+            steps_item = PlanStepOut.from_dict(steps_item_data)
+
+            steps.append(steps_item)
+
+        success = d.pop("success")
+
+        targets = []
+        _targets = d.pop("targets")
+        for targets_item_data in _targets:
+            targets_item = cast(list[float], targets_item_data)
+
+            targets.append(targets_item)
+
+        tip = []
+        _tip = d.pop("tip")
+        for tip_item_data in _tip:
+            tip_item = cast(list[float], tip_item_data)
+
+            tip.append(tip_item)
+
+        verified = cast(list[bool], d.pop("verified"))
+
+        plan_out = cls(
+            end_angle=end_angle,
+            feasible=feasible,
+            margin=margin,
+            margin_required=margin_required,
+            method=method,
+            objective=objective,
+            q=q,
+            rest_lengths=rest_lengths,
+            seconds=seconds,
+            status=status,
+            steps=steps,
+            success=success,
+            targets=targets,
+            tip=tip,
+            verified=verified,
+        )
+
+        plan_out.additional_properties = d
+        return plan_out
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

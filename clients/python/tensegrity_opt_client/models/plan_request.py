@@ -1,0 +1,372 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+
+from ..models.plan_request_objective import PlanRequestObjective
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn
+    from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn
+    from ..models.rest_length_bounds_in import RestLengthBoundsIn
+    from ..models.start_q import StartQ
+
+
+T = TypeVar("T", bound="PlanRequest")
+
+
+@_attrs_define
+class PlanRequest:
+    """Rest lengths for a trajectory of tip positions, on one stable branch (`plan_preloads`).
+
+    Attributes:
+        manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
+            "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
+        targets (list[list[float]]): tip positions [x, y] per step (length units; 1..2000, server limit
+            TENSEGRITY_MAX_TRAJECTORY_STEPS)
+        bounds (None | RestLengthBoundsIn | Unset): actuator bounds on the rest lengths; default (0.1 b_min, 4 b_max)
+        end_angles (list[float | None] | None | Unset): the last link's absolute angle per step (rad; null: free), as
+            many as targets; default free
+        loads (list[float] | list[list[float]] | None | Unset): dead tip load: one [fx, fy] or one per step; default
+            none
+        margin (float | Unset): required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the
+            joint angles (torque / rad) Default: 0.001.
+        objective (PlanRequestObjective | Unset): change: least change from the previous step (compiled Newton, IPOPT
+            where a bound is active); margin: largest margin; energy: least spring energy (IPOPT) Default:
+            PlanRequestObjective.CHANGE.
+        rate_limit (float | list[float] | None | Unset): largest change of each rest length per step (length units): a
+            number or 2n numbers; default none
+        start (None | StartQ | Unset): {"q": [...]}: the configuration with the chain's rest lengths under the first
+            load; null: the equilibrium under it reached from the least-energy rest configuration
+        verify (bool | Unset): verify every step by the forward quasi-static solve from the previous step's
+            configuration (`verified`) Default: True.
+        weights (list[list[float]] | None | Unset): weights [w1, w2] of each segment's rest-length changes in the least-
+            change objective (n pairs, > 0); default 1
+    """
+
+    manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
+    targets: list[list[float]]
+    bounds: None | RestLengthBoundsIn | Unset = UNSET
+    end_angles: list[float | None] | None | Unset = UNSET
+    loads: list[float] | list[list[float]] | None | Unset = UNSET
+    margin: float | Unset = 0.001
+    objective: PlanRequestObjective | Unset = PlanRequestObjective.CHANGE
+    rate_limit: float | list[float] | None | Unset = UNSET
+    start: None | StartQ | Unset = UNSET
+    verify: bool | Unset = True
+    weights: list[list[float]] | None | Unset = UNSET
+
+    def to_dict(self) -> dict[str, Any]:
+        from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
+        from ..models.rest_length_bounds_in import RestLengthBoundsIn  # noqa: PLC0415
+        from ..models.start_q import StartQ  # noqa: PLC0415
+
+        manipulator: dict[str, Any]
+        if isinstance(self.manipulator, DesignUniformManipulatorIn):
+            manipulator = self.manipulator.to_dict()
+        else:
+            manipulator = self.manipulator.to_dict()
+
+        targets = []
+        for targets_item_data in self.targets:
+            targets_item = targets_item_data
+
+            targets.append(targets_item)
+
+        bounds: dict[str, Any] | None | Unset
+        if isinstance(self.bounds, Unset):
+            bounds = UNSET
+        elif isinstance(self.bounds, RestLengthBoundsIn):
+            bounds = self.bounds.to_dict()
+        else:
+            bounds = self.bounds
+
+        end_angles: list[float | None] | None | Unset
+        if isinstance(self.end_angles, Unset):
+            end_angles = UNSET
+        elif isinstance(self.end_angles, list):
+            end_angles = []
+            for end_angles_type_0_item_data in self.end_angles:
+                end_angles_type_0_item: float | None
+                end_angles_type_0_item = end_angles_type_0_item_data
+                end_angles.append(end_angles_type_0_item)
+
+        else:
+            end_angles = self.end_angles
+
+        loads: list[float] | list[list[float]] | None | Unset
+        if isinstance(self.loads, Unset):
+            loads = UNSET
+        elif isinstance(self.loads, list):
+            loads = self.loads
+
+        elif isinstance(self.loads, list):
+            loads = []
+            for loads_type_0_type_1_item_data in self.loads:
+                loads_type_0_type_1_item = loads_type_0_type_1_item_data
+
+                loads.append(loads_type_0_type_1_item)
+
+        else:
+            loads = self.loads
+
+        margin = self.margin
+
+        objective: str | Unset = UNSET
+        if not isinstance(self.objective, Unset):
+            objective = self.objective.value
+
+        rate_limit: float | list[float] | None | Unset
+        if isinstance(self.rate_limit, Unset):
+            rate_limit = UNSET
+        elif isinstance(self.rate_limit, list):
+            rate_limit = self.rate_limit
+
+        else:
+            rate_limit = self.rate_limit
+
+        start: dict[str, Any] | None | Unset
+        if isinstance(self.start, Unset):
+            start = UNSET
+        elif isinstance(self.start, StartQ):
+            start = self.start.to_dict()
+        else:
+            start = self.start
+
+        verify = self.verify
+
+        weights: list[list[float]] | None | Unset
+        if isinstance(self.weights, Unset):
+            weights = UNSET
+        elif isinstance(self.weights, list):
+            weights = []
+            for weights_type_0_item_data in self.weights:
+                weights_type_0_item = weights_type_0_item_data
+
+                weights.append(weights_type_0_item)
+
+        else:
+            weights = self.weights
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "manipulator": manipulator,
+                "targets": targets,
+            }
+        )
+        if bounds is not UNSET:
+            field_dict["bounds"] = bounds
+        if end_angles is not UNSET:
+            field_dict["end_angles"] = end_angles
+        if loads is not UNSET:
+            field_dict["loads"] = loads
+        if margin is not UNSET:
+            field_dict["margin"] = margin
+        if objective is not UNSET:
+            field_dict["objective"] = objective
+        if rate_limit is not UNSET:
+            field_dict["rate_limit"] = rate_limit
+        if start is not UNSET:
+            field_dict["start"] = start
+        if verify is not UNSET:
+            field_dict["verify"] = verify
+        if weights is not UNSET:
+            field_dict["weights"] = weights
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn  # noqa: PLC0415
+        from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
+        from ..models.rest_length_bounds_in import RestLengthBoundsIn  # noqa: PLC0415
+        from ..models.start_q import StartQ  # noqa: PLC0415
+
+        d = dict(src_dict)
+
+        def _parse_manipulator(data: object) -> DesignSegmentedManipulatorIn | DesignUniformManipulatorIn:
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                manipulator_type_0 = DesignUniformManipulatorIn.from_dict(data)
+
+                return manipulator_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            if not isinstance(data, dict):
+                raise TypeError()
+            manipulator_type_1 = DesignSegmentedManipulatorIn.from_dict(data)
+
+            return manipulator_type_1
+
+        manipulator = _parse_manipulator(d.pop("manipulator"))
+
+        targets = []
+        _targets = d.pop("targets")
+        for targets_item_data in _targets:
+            targets_item = cast(list[float], targets_item_data)
+
+            targets.append(targets_item)
+
+        def _parse_bounds(data: object) -> None | RestLengthBoundsIn | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                bounds_type_0 = RestLengthBoundsIn.from_dict(data)
+
+                return bounds_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(None | RestLengthBoundsIn | Unset, data)
+
+        bounds = _parse_bounds(d.pop("bounds", UNSET))
+
+        def _parse_end_angles(data: object) -> list[float | None] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                end_angles_type_0 = []
+                _end_angles_type_0 = data
+                for end_angles_type_0_item_data in _end_angles_type_0:
+
+                    def _parse_end_angles_type_0_item(data: object) -> float | None:
+                        if data is None:
+                            return data
+                        return cast(float | None, data)
+
+                    end_angles_type_0_item = _parse_end_angles_type_0_item(end_angles_type_0_item_data)
+
+                    end_angles_type_0.append(end_angles_type_0_item)
+
+                return end_angles_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float | None] | None | Unset, data)
+
+        end_angles = _parse_end_angles(d.pop("end_angles", UNSET))
+
+        def _parse_loads(data: object) -> list[float] | list[list[float]] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                loads_type_0_type_0 = cast(list[float], data)
+
+                return loads_type_0_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                loads_type_0_type_1 = []
+                _loads_type_0_type_1 = data
+                for loads_type_0_type_1_item_data in _loads_type_0_type_1:
+                    loads_type_0_type_1_item = cast(list[float], loads_type_0_type_1_item_data)
+
+                    loads_type_0_type_1.append(loads_type_0_type_1_item)
+
+                return loads_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | list[list[float]] | None | Unset, data)
+
+        loads = _parse_loads(d.pop("loads", UNSET))
+
+        margin = d.pop("margin", UNSET)
+
+        _objective = d.pop("objective", UNSET)
+        objective: PlanRequestObjective | Unset
+        if isinstance(_objective, Unset):
+            objective = UNSET
+        else:
+            objective = PlanRequestObjective(_objective)
+
+        def _parse_rate_limit(data: object) -> float | list[float] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                rate_limit_type_0_type_1 = cast(list[float], data)
+
+                return rate_limit_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float] | None | Unset, data)
+
+        rate_limit = _parse_rate_limit(d.pop("rate_limit", UNSET))
+
+        def _parse_start(data: object) -> None | StartQ | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                start_type_0 = StartQ.from_dict(data)
+
+                return start_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(None | StartQ | Unset, data)
+
+        start = _parse_start(d.pop("start", UNSET))
+
+        verify = d.pop("verify", UNSET)
+
+        def _parse_weights(data: object) -> list[list[float]] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                weights_type_0 = []
+                _weights_type_0 = data
+                for weights_type_0_item_data in _weights_type_0:
+                    weights_type_0_item = cast(list[float], weights_type_0_item_data)
+
+                    weights_type_0.append(weights_type_0_item)
+
+                return weights_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[float]] | None | Unset, data)
+
+        weights = _parse_weights(d.pop("weights", UNSET))
+
+        plan_request = cls(
+            manipulator=manipulator,
+            targets=targets,
+            bounds=bounds,
+            end_angles=end_angles,
+            loads=loads,
+            margin=margin,
+            objective=objective,
+            rate_limit=rate_limit,
+            start=start,
+            verify=verify,
+            weights=weights,
+        )
+
+        return plan_request

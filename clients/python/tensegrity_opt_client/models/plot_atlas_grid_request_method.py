@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class PlotAtlasGridRequestMethod(StrEnum):
+    HOMOTOPY = "homotopy"
+    SEARCH = "search"
+
+    def __str__(self) -> str:
+        return str(self.value)

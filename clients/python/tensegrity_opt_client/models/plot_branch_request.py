@@ -1,0 +1,388 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+
+from ..models.plot_branch_request_format_type_0 import PlotBranchRequestFormatType0
+from ..models.plot_branch_request_orientation import PlotBranchRequestOrientation
+from ..models.plot_branch_request_stop_at_type_0 import PlotBranchRequestStopAtType0
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.displacement_control_in import DisplacementControlIn
+    from ..models.guided_control_in import GuidedControlIn
+    from ..models.load_control_in import LoadControlIn
+    from ..models.preload_control_in import PreloadControlIn
+    from ..models.segmented_manipulator_in import SegmentedManipulatorIn
+    from ..models.start_deflection import StartDeflection
+    from ..models.start_q import StartQ
+    from ..models.uniform_manipulator_in import UniformManipulatorIn
+    from ..models.wall_control_in import WallControlIn
+
+
+T = TypeVar("T", bound="PlotBranchRequest")
+
+
+@_attrs_define
+class PlotBranchRequest:
+    """A branch diagram: one branch (`/v1/branch`), or with `depth` the bifurcation diagram
+    (`/v1/bifurcation-diagram`), drawn `y` against `x` in pieces of constant Morse index.
+
+        Attributes:
+            control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | WallControlIn): what the
+                continuation parameter t moves: {"kind": displacement | load | guided | wall | preload, ...}
+                (tensegrity_opt.Control)
+            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
+                {"segments": [...]}
+            depth (int | None | Unset): null: one branch; a number: the bifurcation diagram to this many switches (0..6)
+            dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+            format_ (None | PlotBranchRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
+                (image/svg+xml or image/png), PNG by default
+            max_branches (int | Unset): with depth: at most this many branches Default: 24.
+            max_points (int | Unset): at most this many points per branch, the start included (2..5000; server limit
+                TENSEGRITY_MAX_PATH_POINTS) Default: 1000.
+            orientation (PlotBranchRequestOrientation | Unset): one branch only: leave the start with t increasing (1) or
+                decreasing (-1) Default: PlotBranchRequestOrientation.VALUE_1.
+            start (None | StartDeflection | StartQ | Unset): where t = 0 is: null (default) the least-energy rest
+                configuration, {"q"} or {"dx", "dy"}
+            stop_at (None | PlotBranchRequestStopAtType0 | Unset): one branch only: stop after the first event where
+                stability is lost, or any event
+            t_max (float | None | Unset): stop where t reaches this (the control's unit)
+            t_min (float | None | Unset): stop where t falls to this
+            x (str | Unset): horizontal axis: t, fx, fy, dx, dy, x, y (tip), u (tip displacement along the control
+                direction), energy, s (arclength) or q1..qn Default: 't'.
+            y (str | Unset): vertical axis, as x Default: 'fx'.
+    """
+
+    control: DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | WallControlIn
+    manipulator: SegmentedManipulatorIn | UniformManipulatorIn
+    depth: int | None | Unset = UNSET
+    dpi: int | Unset = 100
+    format_: None | PlotBranchRequestFormatType0 | Unset = UNSET
+    max_branches: int | Unset = 24
+    max_points: int | Unset = 1000
+    orientation: PlotBranchRequestOrientation | Unset = PlotBranchRequestOrientation.VALUE_1
+    start: None | StartDeflection | StartQ | Unset = UNSET
+    stop_at: None | PlotBranchRequestStopAtType0 | Unset = UNSET
+    t_max: float | None | Unset = UNSET
+    t_min: float | None | Unset = UNSET
+    x: str | Unset = "t"
+    y: str | Unset = "fx"
+
+    def to_dict(self) -> dict[str, Any]:
+        from ..models.displacement_control_in import DisplacementControlIn  # noqa: PLC0415
+        from ..models.guided_control_in import GuidedControlIn  # noqa: PLC0415
+        from ..models.load_control_in import LoadControlIn  # noqa: PLC0415
+        from ..models.start_deflection import StartDeflection  # noqa: PLC0415
+        from ..models.start_q import StartQ  # noqa: PLC0415
+        from ..models.uniform_manipulator_in import UniformManipulatorIn  # noqa: PLC0415
+        from ..models.wall_control_in import WallControlIn  # noqa: PLC0415
+
+        control: dict[str, Any]
+        if isinstance(self.control, DisplacementControlIn):
+            control = self.control.to_dict()
+        elif isinstance(self.control, LoadControlIn):
+            control = self.control.to_dict()
+        elif isinstance(self.control, GuidedControlIn):
+            control = self.control.to_dict()
+        elif isinstance(self.control, WallControlIn):
+            control = self.control.to_dict()
+        else:
+            control = self.control.to_dict()
+
+        manipulator: dict[str, Any]
+        if isinstance(self.manipulator, UniformManipulatorIn):
+            manipulator = self.manipulator.to_dict()
+        else:
+            manipulator = self.manipulator.to_dict()
+
+        depth: int | None | Unset
+        if isinstance(self.depth, Unset):
+            depth = UNSET
+        else:
+            depth = self.depth
+
+        dpi = self.dpi
+
+        format_: None | str | Unset
+        if isinstance(self.format_, Unset):
+            format_ = UNSET
+        elif isinstance(self.format_, PlotBranchRequestFormatType0):
+            format_ = self.format_.value
+        else:
+            format_ = self.format_
+
+        max_branches = self.max_branches
+
+        max_points = self.max_points
+
+        orientation: int | Unset = UNSET
+        if not isinstance(self.orientation, Unset):
+            orientation = self.orientation.value
+
+        start: dict[str, Any] | None | Unset
+        if isinstance(self.start, Unset):
+            start = UNSET
+        elif isinstance(self.start, StartQ):
+            start = self.start.to_dict()
+        elif isinstance(self.start, StartDeflection):
+            start = self.start.to_dict()
+        else:
+            start = self.start
+
+        stop_at: None | str | Unset
+        if isinstance(self.stop_at, Unset):
+            stop_at = UNSET
+        elif isinstance(self.stop_at, PlotBranchRequestStopAtType0):
+            stop_at = self.stop_at.value
+        else:
+            stop_at = self.stop_at
+
+        t_max: float | None | Unset
+        if isinstance(self.t_max, Unset):
+            t_max = UNSET
+        else:
+            t_max = self.t_max
+
+        t_min: float | None | Unset
+        if isinstance(self.t_min, Unset):
+            t_min = UNSET
+        else:
+            t_min = self.t_min
+
+        x = self.x
+
+        y = self.y
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "control": control,
+                "manipulator": manipulator,
+            }
+        )
+        if depth is not UNSET:
+            field_dict["depth"] = depth
+        if dpi is not UNSET:
+            field_dict["dpi"] = dpi
+        if format_ is not UNSET:
+            field_dict["format"] = format_
+        if max_branches is not UNSET:
+            field_dict["max_branches"] = max_branches
+        if max_points is not UNSET:
+            field_dict["max_points"] = max_points
+        if orientation is not UNSET:
+            field_dict["orientation"] = orientation
+        if start is not UNSET:
+            field_dict["start"] = start
+        if stop_at is not UNSET:
+            field_dict["stop_at"] = stop_at
+        if t_max is not UNSET:
+            field_dict["t_max"] = t_max
+        if t_min is not UNSET:
+            field_dict["t_min"] = t_min
+        if x is not UNSET:
+            field_dict["x"] = x
+        if y is not UNSET:
+            field_dict["y"] = y
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.displacement_control_in import DisplacementControlIn  # noqa: PLC0415
+        from ..models.guided_control_in import GuidedControlIn  # noqa: PLC0415
+        from ..models.load_control_in import LoadControlIn  # noqa: PLC0415
+        from ..models.preload_control_in import PreloadControlIn  # noqa: PLC0415
+        from ..models.segmented_manipulator_in import SegmentedManipulatorIn  # noqa: PLC0415
+        from ..models.start_deflection import StartDeflection  # noqa: PLC0415
+        from ..models.start_q import StartQ  # noqa: PLC0415
+        from ..models.uniform_manipulator_in import UniformManipulatorIn  # noqa: PLC0415
+        from ..models.wall_control_in import WallControlIn  # noqa: PLC0415
+
+        d = dict(src_dict)
+
+        def _parse_control(
+            data: object,
+        ) -> DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | WallControlIn:
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                control_type_0 = DisplacementControlIn.from_dict(data)
+
+                return control_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                control_type_1 = LoadControlIn.from_dict(data)
+
+                return control_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                control_type_2 = GuidedControlIn.from_dict(data)
+
+                return control_type_2
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                control_type_3 = WallControlIn.from_dict(data)
+
+                return control_type_3
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            if not isinstance(data, dict):
+                raise TypeError()
+            control_type_4 = PreloadControlIn.from_dict(data)
+
+            return control_type_4
+
+        control = _parse_control(d.pop("control"))
+
+        def _parse_manipulator(data: object) -> SegmentedManipulatorIn | UniformManipulatorIn:
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                manipulator_type_0 = UniformManipulatorIn.from_dict(data)
+
+                return manipulator_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            if not isinstance(data, dict):
+                raise TypeError()
+            manipulator_type_1 = SegmentedManipulatorIn.from_dict(data)
+
+            return manipulator_type_1
+
+        manipulator = _parse_manipulator(d.pop("manipulator"))
+
+        def _parse_depth(data: object) -> int | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(int | None | Unset, data)
+
+        depth = _parse_depth(d.pop("depth", UNSET))
+
+        dpi = d.pop("dpi", UNSET)
+
+        def _parse_format_(data: object) -> None | PlotBranchRequestFormatType0 | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                format_type_0 = PlotBranchRequestFormatType0(data)
+
+                return format_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(None | PlotBranchRequestFormatType0 | Unset, data)
+
+        format_ = _parse_format_(d.pop("format", UNSET))
+
+        max_branches = d.pop("max_branches", UNSET)
+
+        max_points = d.pop("max_points", UNSET)
+
+        _orientation = d.pop("orientation", UNSET)
+        orientation: PlotBranchRequestOrientation | Unset
+        if isinstance(_orientation, Unset):
+            orientation = UNSET
+        else:
+            orientation = PlotBranchRequestOrientation(_orientation)
+
+        def _parse_start(data: object) -> None | StartDeflection | StartQ | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                start_type_0_type_0 = StartQ.from_dict(data)
+
+                return start_type_0_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                start_type_0_type_1 = StartDeflection.from_dict(data)
+
+                return start_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(None | StartDeflection | StartQ | Unset, data)
+
+        start = _parse_start(d.pop("start", UNSET))
+
+        def _parse_stop_at(data: object) -> None | PlotBranchRequestStopAtType0 | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, str):
+                    raise TypeError()
+                stop_at_type_0 = PlotBranchRequestStopAtType0(data)
+
+                return stop_at_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(None | PlotBranchRequestStopAtType0 | Unset, data)
+
+        stop_at = _parse_stop_at(d.pop("stop_at", UNSET))
+
+        def _parse_t_max(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        t_max = _parse_t_max(d.pop("t_max", UNSET))
+
+        def _parse_t_min(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        t_min = _parse_t_min(d.pop("t_min", UNSET))
+
+        x = d.pop("x", UNSET)
+
+        y = d.pop("y", UNSET)
+
+        plot_branch_request = cls(
+            control=control,
+            manipulator=manipulator,
+            depth=depth,
+            dpi=dpi,
+            format_=format_,
+            max_branches=max_branches,
+            max_points=max_points,
+            orientation=orientation,
+            start=start,
+            stop_at=stop_at,
+            t_max=t_max,
+            t_min=t_min,
+            x=x,
+            y=y,
+        )
+
+        return plot_branch_request

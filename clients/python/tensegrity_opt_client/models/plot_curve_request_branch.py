@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class PlotCurveRequestBranch(StrEnum):
+    ALL = "all"
+    STABLE = "stable"
+
+    def __str__(self) -> str:
+        return str(self.value)

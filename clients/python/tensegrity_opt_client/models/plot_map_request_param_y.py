@@ -1,0 +1,11 @@
+from enum import StrEnum
+
+
+class PlotMapRequestParamY(StrEnum):
+    A = "a"
+    B = "b"
+    K = "k"
+    L0 = "L0"
+
+    def __str__(self) -> str:
+        return str(self.value)

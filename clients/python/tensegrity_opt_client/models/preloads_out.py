@@ -1,0 +1,126 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+if TYPE_CHECKING:
+    from ..models.manipulator_out import ManipulatorOut
+    from ..models.solver_info import SolverInfo
+
+
+T = TypeVar("T", bound="PreloadsOut")
+
+
+@_attrs_define
+class PreloadsOut:
+    """
+    Attributes:
+        energy (float):
+        manipulator (ManipulatorOut):
+        margin (float): achieved stability margin (recomputed)
+        preloads (list[list[float]]): rest lengths [L1_0, L2_0] per segment
+        q (list[float]): verified equilibrium configuration (rad)
+        solver (SolverInfo):
+        tip (list[float]):
+    """
+
+    energy: float
+    manipulator: ManipulatorOut
+    margin: float
+    preloads: list[list[float]]
+    q: list[float]
+    solver: SolverInfo
+    tip: list[float]
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        energy = self.energy
+
+        manipulator = self.manipulator.to_dict()
+
+        margin = self.margin
+
+        preloads = []
+        for preloads_item_data in self.preloads:
+            preloads_item = preloads_item_data
+
+            preloads.append(preloads_item)
+
+        q = self.q
+
+        solver = self.solver.to_dict()
+
+        tip = self.tip
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "energy": energy,
+                "manipulator": manipulator,
+                "margin": margin,
+                "preloads": preloads,
+                "q": q,
+                "solver": solver,
+                "tip": tip,
+            }
+        )
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.manipulator_out import ManipulatorOut  # noqa: PLC0415
+        from ..models.solver_info import SolverInfo  # noqa: PLC0415
+
+        d = dict(src_dict)
+        energy = d.pop("energy")
+
+        manipulator = ManipulatorOut.from_dict(d.pop("manipulator"))
+
+        margin = d.pop("margin")
+
+        preloads = []
+        _preloads = d.pop("preloads")
+        for preloads_item_data in _preloads:
+            preloads_item = cast(list[float], preloads_item_data)
+
+            preloads.append(preloads_item)
+
+        q = cast(list[float], d.pop("q"))
+
+        solver = SolverInfo.from_dict(d.pop("solver"))
+
+        tip = cast(list[float], d.pop("tip"))
+
+        preloads_out = cls(
+            energy=energy,
+            manipulator=manipulator,
+            margin=margin,
+            preloads=preloads,
+            q=q,
+            solver=solver,
+            tip=tip,
+        )
+
+        preloads_out.additional_properties = d
+        return preloads_out
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

@@ -1,0 +1,113 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+
+from ..types import UNSET, Unset
+
+T = TypeVar("T", bound="SegmentIn")
+
+
+@_attrs_define
+class SegmentIn:
+    """One dual-triangle segment.
+
+    Attributes:
+        a (float): triangle half-height (length units)
+        b (float): triangle half-length (length units); the segment is 2b long
+        l0 (float | list[float] | Unset): spring rest length L0 (length units): one number for both springs or the pair
+            [spring 1, spring 2] Default: 1.0.
+        k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
+            [spring 1, spring 2] Default: 1.0.
+    """
+
+    a: float
+    b: float
+    l0: float | list[float] | Unset = 1.0
+    k: float | list[float] | Unset = 1.0
+
+    def to_dict(self) -> dict[str, Any]:
+        a = self.a
+
+        b = self.b
+
+        l0: float | list[float] | Unset
+        if isinstance(self.l0, Unset):
+            l0 = UNSET
+        elif isinstance(self.l0, list):
+            l0 = self.l0
+
+        else:
+            l0 = self.l0
+
+        k: float | list[float] | Unset
+        if isinstance(self.k, Unset):
+            k = UNSET
+        elif isinstance(self.k, list):
+            k = self.k
+
+        else:
+            k = self.k
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "a": a,
+                "b": b,
+            }
+        )
+        if l0 is not UNSET:
+            field_dict["L0"] = l0
+        if k is not UNSET:
+            field_dict["k"] = k
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        d = dict(src_dict)
+        a = d.pop("a")
+
+        b = d.pop("b")
+
+        def _parse_l0(data: object) -> float | list[float] | Unset:
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                l0_type_1 = cast(list[float], data)
+
+                return l0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float] | Unset, data)
+
+        l0 = _parse_l0(d.pop("L0", UNSET))
+
+        def _parse_k(data: object) -> float | list[float] | Unset:
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                k_type_1 = cast(list[float], data)
+
+                return k_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float] | Unset, data)
+
+        k = _parse_k(d.pop("k", UNSET))
+
+        segment_in = cls(
+            a=a,
+            b=b,
+            l0=l0,
+            k=k,
+        )
+
+        return segment_in

@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class SimulationRequestTip(StrEnum):
+    FREE = "free"
+    HELD = "held"
+
+    def __str__(self) -> str:
+        return str(self.value)

@@ -1,0 +1,254 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+from attrs import field as _attrs_field
+
+if TYPE_CHECKING:
+    from ..models.stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK
+    from ..models.stiffness_design_out_manipulator import StiffnessDesignOutManipulator
+    from ..models.stiffness_design_out_solver import StiffnessDesignOutSolver
+
+
+T = TypeVar("T", bound="StiffnessDesignOut")
+
+
+@_attrs_define
+class StiffnessDesignOut:
+    """`StiffnessDesign.to_dict()`: verified by the forward solve and `cartesian_stiffness`.
+
+    Attributes:
+        k (list[list[float]]): the verified Cartesian stiffness (force / length)
+        k_desired (list[list[float]] | None):
+        bounds_k (StiffnessDesignOutBoundsK):
+        eig_bounds (list[float | None] | None):
+        eigenvalues (list[float]):
+        exact (bool):
+        load (list[float]):
+        manipulator (StiffnessDesignOutManipulator):
+        margin (float):
+        q (list[float]):
+        residual (float): |K - K_desired|_F / |K_desired|_F, or the largest bound violation (0)
+        rest_lengths (list[list[float]]): [L1_0, L2_0] per segment
+        solver (StiffnessDesignOutSolver):
+        tip (list[float]):
+    """
+
+    k: list[list[float]]
+    k_desired: list[list[float]] | None
+    bounds_k: StiffnessDesignOutBoundsK
+    eig_bounds: list[float | None] | None
+    eigenvalues: list[float]
+    exact: bool
+    load: list[float]
+    manipulator: StiffnessDesignOutManipulator
+    margin: float
+    q: list[float]
+    residual: float
+    rest_lengths: list[list[float]]
+    solver: StiffnessDesignOutSolver
+    tip: list[float]
+    additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        k = []
+        for k_item_data in self.k:
+            k_item = k_item_data
+
+            k.append(k_item)
+
+        k_desired: list[list[float]] | None
+        if isinstance(self.k_desired, list):
+            k_desired = []
+            for k_desired_type_0_item_data in self.k_desired:
+                k_desired_type_0_item = k_desired_type_0_item_data
+
+                k_desired.append(k_desired_type_0_item)
+
+        else:
+            k_desired = self.k_desired
+
+        bounds_k = self.bounds_k.to_dict()
+
+        eig_bounds: list[float | None] | None
+        if isinstance(self.eig_bounds, list):
+            eig_bounds = []
+            for eig_bounds_type_0_item_data in self.eig_bounds:
+                eig_bounds_type_0_item: float | None
+                eig_bounds_type_0_item = eig_bounds_type_0_item_data
+                eig_bounds.append(eig_bounds_type_0_item)
+
+        else:
+            eig_bounds = self.eig_bounds
+
+        eigenvalues = self.eigenvalues
+
+        exact = self.exact
+
+        load = self.load
+
+        manipulator = self.manipulator.to_dict()
+
+        margin = self.margin
+
+        q = self.q
+
+        residual = self.residual
+
+        rest_lengths = []
+        for rest_lengths_item_data in self.rest_lengths:
+            rest_lengths_item = rest_lengths_item_data
+
+            rest_lengths.append(rest_lengths_item)
+
+        solver = self.solver.to_dict()
+
+        tip = self.tip
+
+        field_dict: dict[str, Any] = {}
+        field_dict.update(self.additional_properties)
+        field_dict.update(
+            {
+                "K": k,
+                "K_desired": k_desired,
+                "bounds_K": bounds_k,
+                "eig_bounds": eig_bounds,
+                "eigenvalues": eigenvalues,
+                "exact": exact,
+                "load": load,
+                "manipulator": manipulator,
+                "margin": margin,
+                "q": q,
+                "residual": residual,
+                "rest_lengths": rest_lengths,
+                "solver": solver,
+                "tip": tip,
+            }
+        )
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK  # noqa: PLC0415
+        from ..models.stiffness_design_out_manipulator import StiffnessDesignOutManipulator  # noqa: PLC0415
+        from ..models.stiffness_design_out_solver import StiffnessDesignOutSolver  # noqa: PLC0415
+
+        d = dict(src_dict)
+        k = []
+        _k = d.pop("K")
+        for k_item_data in _k:
+            k_item = cast(list[float], k_item_data)
+
+            k.append(k_item)
+
+        def _parse_k_desired(data: object) -> list[list[float]] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                k_desired_type_0 = []
+                _k_desired_type_0 = data
+                for k_desired_type_0_item_data in _k_desired_type_0:
+                    k_desired_type_0_item = cast(list[float], k_desired_type_0_item_data)
+
+                    k_desired_type_0.append(k_desired_type_0_item)
+
+                return k_desired_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[float]] | None, data)
+
+        k_desired = _parse_k_desired(d.pop("K_desired"))
+
+        bounds_k = StiffnessDesignOutBoundsK.from_dict(d.pop("bounds_K"))
+
+        def _parse_eig_bounds(data: object) -> list[float | None] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                eig_bounds_type_0 = []
+                _eig_bounds_type_0 = data
+                for eig_bounds_type_0_item_data in _eig_bounds_type_0:
+
+                    def _parse_eig_bounds_type_0_item(data: object) -> float | None:
+                        if data is None:
+                            return data
+                        return cast(float | None, data)
+
+                    eig_bounds_type_0_item = _parse_eig_bounds_type_0_item(eig_bounds_type_0_item_data)
+
+                    eig_bounds_type_0.append(eig_bounds_type_0_item)
+
+                return eig_bounds_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float | None] | None, data)
+
+        eig_bounds = _parse_eig_bounds(d.pop("eig_bounds"))
+
+        eigenvalues = cast(list[float], d.pop("eigenvalues"))
+
+        exact = d.pop("exact")
+
+        load = cast(list[float], d.pop("load"))
+
+        manipulator = StiffnessDesignOutManipulator.from_dict(d.pop("manipulator"))
+
+        margin = d.pop("margin")
+
+        q = cast(list[float], d.pop("q"))
+
+        residual = d.pop("residual")
+
+        rest_lengths = []
+        _rest_lengths = d.pop("rest_lengths")
+        for rest_lengths_item_data in _rest_lengths:
+            rest_lengths_item = cast(list[float], rest_lengths_item_data)
+
+            rest_lengths.append(rest_lengths_item)
+
+        solver = StiffnessDesignOutSolver.from_dict(d.pop("solver"))
+
+        tip = cast(list[float], d.pop("tip"))
+
+        stiffness_design_out = cls(
+            k=k,
+            k_desired=k_desired,
+            bounds_k=bounds_k,
+            eig_bounds=eig_bounds,
+            eigenvalues=eigenvalues,
+            exact=exact,
+            load=load,
+            manipulator=manipulator,
+            margin=margin,
+            q=q,
+            residual=residual,
+            rest_lengths=rest_lengths,
+            solver=solver,
+            tip=tip,
+        )
+
+        stiffness_design_out.additional_properties = d
+        return stiffness_design_out
+
+    @property
+    def additional_keys(self) -> list[str]:
+        return list(self.additional_properties.keys())
+
+    def __getitem__(self, key: str) -> Any:
+        return self.additional_properties[key]
+
+    def __setitem__(self, key: str, value: Any) -> None:
+        self.additional_properties[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        del self.additional_properties[key]
+
+    def __contains__(self, key: str) -> bool:
+        return key in self.additional_properties

@@ -1,0 +1,59 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar
+
+from attrs import define as _attrs_define
+
+if TYPE_CHECKING:
+    from ..models.segment_in import SegmentIn
+
+
+T = TypeVar("T", bound="SweepSegmentedManipulator")
+
+
+@_attrs_define
+class SweepSegmentedManipulator:
+    """The base chain segment by segment, base to tip (pre-bent: `L0` the pair `[L1_0, L2_0]`; heterogeneous):
+    fixed, so the points vary only dx, dy, load.
+
+        Attributes:
+            segments (list[SegmentIn]): segments from base to tip ({a, b, k, L0}; k and L0 a number or the pair of the two
+                springs)
+    """
+
+    segments: list[SegmentIn]
+
+    def to_dict(self) -> dict[str, Any]:
+        segments = []
+        for segments_item_data in self.segments:
+            segments_item = segments_item_data.to_dict()
+            segments.append(segments_item)
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "segments": segments,
+            }
+        )
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.segment_in import SegmentIn  # noqa: PLC0415
+
+        d = dict(src_dict)
+        segments = []
+        _segments = d.pop("segments")
+        for segments_item_data in _segments:
+            segments_item = SegmentIn.from_dict(segments_item_data)
+
+            segments.append(segments_item)
+
+        sweep_segmented_manipulator = cls(
+            segments=segments,
+        )
+
+        return sweep_segmented_manipulator

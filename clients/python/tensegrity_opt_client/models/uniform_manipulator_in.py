@@ -1,0 +1,123 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+
+from ..types import UNSET, Unset
+
+T = TypeVar("T", bound="UniformManipulatorIn")
+
+
+@_attrs_define
+class UniformManipulatorIn:
+    """`n` identical segments.
+
+    Attributes:
+        n (int): number of segments (server limit TENSEGRITY_MAX_SEGMENTS, at most 200)
+        l0 (float | list[float] | Unset): spring rest length L0 (length units): one number for both springs or the pair
+            [spring 1, spring 2] Default: 1.0.
+        a (float | Unset): triangle half-height (length units) Default: 1.0.
+        b (float | Unset): triangle half-length (length units) Default: 1.0.
+        k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
+            [spring 1, spring 2] Default: 1.0.
+    """
+
+    n: int
+    l0: float | list[float] | Unset = 1.0
+    a: float | Unset = 1.0
+    b: float | Unset = 1.0
+    k: float | list[float] | Unset = 1.0
+
+    def to_dict(self) -> dict[str, Any]:
+        n = self.n
+
+        l0: float | list[float] | Unset
+        if isinstance(self.l0, Unset):
+            l0 = UNSET
+        elif isinstance(self.l0, list):
+            l0 = self.l0
+
+        else:
+            l0 = self.l0
+
+        a = self.a
+
+        b = self.b
+
+        k: float | list[float] | Unset
+        if isinstance(self.k, Unset):
+            k = UNSET
+        elif isinstance(self.k, list):
+            k = self.k
+
+        else:
+            k = self.k
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "n": n,
+            }
+        )
+        if l0 is not UNSET:
+            field_dict["L0"] = l0
+        if a is not UNSET:
+            field_dict["a"] = a
+        if b is not UNSET:
+            field_dict["b"] = b
+        if k is not UNSET:
+            field_dict["k"] = k
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        d = dict(src_dict)
+        n = d.pop("n")
+
+        def _parse_l0(data: object) -> float | list[float] | Unset:
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                l0_type_1 = cast(list[float], data)
+
+                return l0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float] | Unset, data)
+
+        l0 = _parse_l0(d.pop("L0", UNSET))
+
+        a = d.pop("a", UNSET)
+
+        b = d.pop("b", UNSET)
+
+        def _parse_k(data: object) -> float | list[float] | Unset:
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                k_type_1 = cast(list[float], data)
+
+                return k_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float] | Unset, data)
+
+        k = _parse_k(d.pop("k", UNSET))
+
+        uniform_manipulator_in = cls(
+            n=n,
+            l0=l0,
+            a=a,
+            b=b,
+            k=k,
+        )
+
+        return uniform_manipulator_in
