@@ -72,8 +72,8 @@ def fig6_curve():
 
 
 def shapes():
-    """Table 2: the chain in each of the six equilibria at dx = 0.3."""
-    return plots.plot_shapes(PAPER, 0.3, 0.0)
+    """Table 2: the chain in each of the six equilibria at dx = 0.1."""
+    return plots.plot_shapes(PAPER, 0.1, 0.0)
 
 
 def branch():

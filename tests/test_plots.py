@@ -741,3 +741,19 @@ def test_docs_figures_are_committed_small_and_referenced():
         check_png(png.read_bytes())
         assert png.stat().st_size <= 150_000, name
         assert f"img/{name}.png" in text and name in mod.FIGURES, name
+
+
+def test_a_partial_curve_of_the_library_draws_its_end():
+    m = to.Manipulator.uniform(3, a=0.5)
+    dx = np.linspace(0.0, 5.5, 23)
+    c = to.force_deflection(m, dx)
+    if getattr(c, "ended_at", None) is None:
+        pytest.skip("this library computes the whole curve (or raises): no partial curve to draw")
+    assert c.dx.size < dx.size
+    fig = plots.plot_curve(m, dx, curve=c)
+    assert np.array_equal(rows(gid(fig, "fx")), np.column_stack([c.dx, c.fx]))
+    assert np.allclose(gid(fig, "end-marker-fx").get_xydata(), [[c.dx[-1], c.fx[-1]]])
+    assert gid(fig, "curve-end-text").get_text() == f"stable branch ends at $\\delta_x$ = {c.ended_at.dx:.4g}"
+    kinds = [plots.jump_kind(j) for j in c.jumps]
+    assert kinds[0] == "leave_straight" and "buckling" not in kinds          # K = -0.5: nothing buckles
+    assert legend_boxes_clear(fig)

@@ -457,14 +457,19 @@ def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *
         axes[1].set_xlim(min(xs) - pad, max(xs) + pad)
     axes[1].set_xlabel(f"tip deflection ${sym}$ (length)" + (", > 0 shortens the chain" if xname == "dx" else ""))
     axes[0].tick_params(labelbottom=False)
-    fig.legend(list(handles.values()), list(handles.keys()), fontsize=7, loc="outside lower center",
-               ncols=1 if len(handles) > 4 else 2, frameon=False)
+    import textwrap
+
+    width = max(40, int(figsize[0] * 14))          # characters of a 7-point line across the figure
+    long = any(len(t) > width // 2 - 4 for t in handles)
+    fig.legend(list(handles.values()), [textwrap.fill(t, width, subsequent_indent="    ") for t in handles],
+               fontsize=7, loc="outside lower center", ncols=1 if long or len(handles) > 4 else 2, frameon=False)
     other = f"$\\delta_y$ = {float(c.dy[0]):g}" if xname == "dx" and c.dy.size and np.ptp(c.dy) == 0 else (
         f"$\\delta_x$ = {float(c.dx[0]):g}" if xname == "dy" and c.dx.size else "")
     ref = " (from the rest configuration)" if getattr(c, "reference", "straight") == "rest" else ""
     head = ("Force-deflection curves" + (" (all branches)" if c.branches else " (least-energy stable)")
             + (f", {other}" if other else "") + ref + "; $F_x$ < 0 compressive")
     note = getattr(c, "note", "") if end is not None else ""
+    note = textwrap.fill(note, max(40, int(figsize[0] * 12))) if note else ""
     fig.suptitle(head + f"\n{chain_label(m)}" + (f"\n{note}" if note else ""), fontsize=9)
     return fig
 
