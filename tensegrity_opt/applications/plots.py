@@ -12,15 +12,16 @@ lazily: ``import tensegrity_opt`` (and even ``import tensegrity_opt.applications
 ========================  ===================================================================
 function                  figure
 ========================  ===================================================================
-:func:`plot_curve`        ``Fx`` and ``Fy`` against the deflection (Fig. 6) with the jumps of
-                          :func:`~tensegrity_opt.force_deflection`; ``branch="all"``: every branch,
-                          unstable parts dashed
-:func:`plot_landscape`    energy contours of :func:`~tensegrity_opt.energy_landscape` on both elbow
-                          branches, every equilibrium of :func:`~tensegrity_opt.find_equilibria`
-                          marked and labelled (Figs. 4-5, n = 4)
+:func:`plot_curve`        ``Fx`` above ``Fy`` against the deflection (Fig. 6) with the jumps of
+                          :func:`~tensegrity_opt.force_deflection` by kind, a partial curve's end;
+                          ``branch="all"``: every branch, unstable parts dashed
+:func:`plot_landscape`    energy contours (even levels) of :func:`~tensegrity_opt.energy_landscape` on both
+                          elbow branches, cut at the exact edge of the reachable set, every equilibrium of
+                          :func:`~tensegrity_opt.find_equilibria` marked and labelled (Figs. 4-5, n = 4)
 :func:`plot_shapes`       the chain in each equilibrium: triangles, joints, both springs, coloured
                           by stability, titled with Table 2's label
-:func:`plot_torque`       torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2)
+:func:`plot_torque`       torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2), their
+                          equilibria marked, ``K`` and the curve's kind in the legend
 :func:`plot_map`          critical load ``P = -Fx0`` over two design parameters (blank where
                           :func:`~tensegrity_opt.critical_force` raises)
 :func:`plot_branches`     branch diagrams of :func:`~tensegrity_opt.trace_branch` /
