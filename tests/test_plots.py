@@ -139,13 +139,15 @@ def test_curve_marks_a_branch_switch_against_dy():
     dx = np.full(dy.size, 0.3)
     fig = plots.plot_curve(PAPER, dx, dy)
     c = to.force_deflection(PAPER, dx, dy)
-    switches = [(k, j) for k, j in enumerate(c.jumps) if j.kind == "branch_switch"]
+    switches = [(k, j) for k, j in enumerate(c.jumps) if j.kind in ("branch_switch", "snap", "switch")]
     assert len(switches) == 1
     k, j = switches[0]
+    kind = plots.jump_kind(j)
+    assert kind in ("snap", "switch")              # the former "branch_switch" is drawn as a snap
     # abscissa is dy (dx is constant)
     assert np.array_equal(rows(gid(fig, "fx")), np.column_stack([c.dy, c.fx]))
     assert np.array_equal(rows(gid(fig, "fy")), np.column_stack([c.dy, c.fy]))
-    seg = gid(fig, f"jump-{k}-branch_switch-fy")
+    seg = gid(fig, f"jump-{k}-{kind}-fy")
     assert np.allclose(seg.get_xydata(), [[j.dy_before, j.force_before[1]], [j.dy_after, j.force_after[1]]])
     assert np.sign(j.force_before[1]) != np.sign(j.force_after[1])
     # the line is broken exactly where Fy jumps
@@ -490,3 +492,268 @@ def test_api_is_documented(client):
     assert ids == {k: f"plot_{k}" for k in BODIES}
     assert "unsupported" in doc["paths"]["/v1/plots/landscape"]["post"]["responses"]["422"]["content"][
         "application/json"]["examples"]
+
+
+# ---------------------------------------------------------------------------- what a reviewer checks (issue 18)
+def fig_texts(fig) -> str:
+    """Every title, suptitle, axis label, colour-bar label and legend entry of ``fig``, one string."""
+    out = [fig._suptitle.get_text() if fig._suptitle is not None else ""]
+    for ax in fig.axes:
+        out += [ax.get_title(), ax.get_xlabel(), ax.get_ylabel()]
+        if ax.get_legend() is not None:
+            out += [t.get_text() for t in ax.get_legend().get_texts()]
+    for leg in fig.legends:
+        out += [t.get_text() for t in leg.get_texts()]
+    return "\n".join(out)
+
+
+def legend_boxes_clear(fig) -> list[str]:
+    """Every legend of ``fig`` is a figure legend whose box meets no data axes' box; returns its texts."""
+    assert fig.legends and all(ax.get_legend() is None for ax in fig.axes if ax.get_label() != "<colorbar>")
+    fig.canvas.draw()
+    r = fig.canvas.get_renderer()
+    texts = []
+    for leg in fig.legends:
+        lb = leg.get_window_extent(r)
+        for ax in fig.axes:
+            ab = ax.get_window_extent(r)
+            assert not lb.overlaps(ab), (lb, ab, ax.get_label())
+        texts += [t.get_text() for t in leg.get_texts()]
+    return texts
+
+
+PAPER_LABEL = "n = 4, a = 1, b = 1, k = 1, L0 = 1"
+
+
+def test_axes_say_quantity_and_unit_and_titles_the_parameters():
+    fig = plots.plot_curve(PAPER, np.linspace(0.0, 0.5, 6))
+    top, bottom = fig.axes[:2]
+    assert "$F_x$" in top.get_ylabel() and "(stiffness × length)" in top.get_ylabel()
+    assert "$F_y$" in bottom.get_ylabel() and "(stiffness × length)" in bottom.get_ylabel()
+    assert "deflection $\\delta_x$ (length)" in bottom.get_xlabel()
+    assert PAPER_LABEL in fig._suptitle.get_text()
+    # Fx and Fy on two stacked panels sharing the abscissa, each on its own scale
+    assert top.get_shared_x_axes().joined(top, bottom)
+    assert top.get_position().y0 > bottom.get_position().y1 - 1e-9
+    fig = plots.plot_landscape(PAPER, 0.1, grid=41)
+    for ax in fig.axes[:2]:
+        assert "(rad)" in ax.get_xlabel()
+    assert "(rad)" in fig.axes[0].get_ylabel()
+    cbar = [ax for ax in fig.axes if ax.get_label() == "<colorbar>"]
+    assert len(cbar) == 1 and "energy $E$ (stiffness × length²)" in cbar[0].get_ylabel()
+    assert PAPER_LABEL in fig._suptitle.get_text()
+    fig = plots.plot_shapes(PAPER, 0.1)
+    assert PAPER_LABEL in fig._suptitle.get_text() and "stiffness × length" in fig._suptitle.get_text()
+    assert "(length)" in fig.axes[0].get_ylabel() and any("(length)" in ax.get_xlabel() for ax in fig.axes)
+    segs = [to.Segment(0.5, 1.0, 1.0, L0) for L0 in (0.5, 2.5)]
+    fig = plots.plot_torque(segs)
+    ax = fig.axes[0]
+    assert "(rad)" in ax.get_xlabel() and "(stiffness × length²)" in ax.get_ylabel()
+    assert "a = 0.5, b = 1, k = 1" in ax.get_title()             # shared; L0 differs: in each legend entry
+    fig = plots.plot_map(PAPER, "k", [0.5, 1.0, 2.0], "L0", [0.5, 1.0, 2.0])
+    ax = fig.axes[0]
+    assert "$k$ (stiffness)" in ax.get_xlabel() and "$L_0$ (length)" in ax.get_ylabel()
+    assert "n = 4, a = 1, b = 1" in ax.get_title() and "L0 =" not in ax.get_title()
+    assert "(stiffness × length)" in fig.axes[1].get_ylabel()      # the colour bar
+
+
+def test_chain_label_of_a_heterogeneous_chain():
+    m = to.Manipulator([to.Segment(1.0, 1.0, k, 1.0) for k in (0.5, 1.0, 2.0, 1.0, 1.5)])
+    assert plots.chain_label(m) == "heterogeneous, n = 5, a = 1, b = 1, k = 0.5..2, L0 = 1"
+    assert plots.chain_label(PAPER) == PAPER_LABEL
+    fig = plots.plot_curve(m, np.linspace(0.0, 0.2, 3))
+    assert "heterogeneous, n = 5" in fig._suptitle.get_text() and "k = 0.5..2" in fig._suptitle.get_text()
+
+
+def test_contour_levels_are_evenly_spaced():
+    fig = plots.plot_landscape(PAPER, 0.1, pair=(0, 1), grid=41)
+    land = to.energy_landscape(PAPER, 0.1, pair=(0, 1), grid=41, span=plots.landscape_span(PAPER, 0.1, 0.0, (0, 1)))
+    finite = land.energy[np.isfinite(land.energy)]
+    for elbow in ("+1", "-1"):
+        for name in (f"contour-elbow{elbow}", f"energy-fill-elbow{elbow}"):
+            lv = np.asarray(gid(fig, name).levels, float)
+            d = np.diff(lv)
+            assert lv.size >= 8 and np.allclose(d, d[0], rtol=1e-9, atol=0), (name, lv)
+            assert finite.min() <= lv[0] and lv[-1] <= finite.max()
+    # percentile levels (the former _levels) were not evenly spaced on this landscape
+    pct = np.unique(np.percentile(finite, np.linspace(0.0, 100.0, 25)))
+    assert not np.allclose(np.diff(pct), np.diff(pct)[0], rtol=1e-3)
+    fig = plots.plot_map(PAPER, "a", np.linspace(0.4, 1.4, 6), "L0", np.linspace(0.5, 2.5, 5))
+    lv = np.asarray(gid(fig, "critical-load-contours").levels, float)
+    assert lv.size >= 3 and np.allclose(np.diff(lv), np.diff(lv)[0], rtol=1e-9, atol=0)
+
+
+@pytest.mark.parametrize("pair", [(0, 1), (0, 3)])
+def test_landscape_region_is_the_exact_boundary_and_holds_every_equilibrium(pair, equilibria):
+    from tensegrity_opt.analyses.landscape import landscape_margin
+
+    fig = plots.plot_landscape(PAPER, 0.1, 0.0, pair=pair, grid=41, equilibria=equilibria)
+    target = PAPER.target(0.1, 0.0)
+    marked = 0
+    for b, elbow in enumerate(("+1", "-1")):
+        edge = gid(fig, f"boundary-elbow{elbow}")
+        path = edge.get_path()
+        fill = gid(fig, f"energy-fill-elbow{elbow}")
+        assert fill.get_clip_path() is not None                  # the fill is cut at the outline
+        offs = np.asarray(gid(fig, f"equilibria-elbow{elbow}").get_offsets(), float).reshape(-1, 2)
+        for qi, qj in offs:
+            # inside the drawn region, and (independently) a configuration in the physical range
+            assert path.contains_point((qi, qj)), (pair, elbow, qi, qj)
+            full = complete_configuration(PAPER, target, pair, qi, qj, 1 if b == 0 else -1)
+            assert np.all(np.isfinite(full)) and np.all(np.abs(full) < PAPER.joint_limits)
+            marked += 1
+        # the outline lies on the exact boundary (margin 0), not on the grid's cell edges
+        verts = path.vertices[path.codes != path.CLOSEPOLY] if path.codes is not None else path.vertices
+        mg, _ = landscape_margin(PAPER, target, pair, verts[:, 0], verts[:, 1], 1 if b == 0 else -1)
+        land = to.energy_landscape(PAPER, 0.1, 0.0, pair=pair, grid=41,
+                                   span=plots.landscape_span(PAPER, 0.1, 0.0, pair))
+        QI, QJ = np.meshgrid(land.qi, land.qj, indexing="ij")
+        grid_mg, _ = landscape_margin(PAPER, target, pair, QI, QJ, 1 if b == 0 else -1)
+        inside = np.isfinite(land.energy[b])
+        # the margin is positive exactly on the landscape's finite cells (brute force: the library's NaN)
+        assert np.array_equal(inside, grid_mg > 0)
+        # cells next to the boundary have margins up to ~1e-2; the outline's vertices are 100 x closer
+        step = np.max(np.abs(np.diff(grid_mg, axis=0))[np.isfinite(np.diff(grid_mg, axis=0))])
+        assert np.max(np.abs(mg)) < 0.02 * step, (np.max(np.abs(mg)), step)
+    assert marked == len(equilibria) == 6
+
+
+def test_torque_label_prints_zero_for_a_zero_stiffness():
+    seg = to.Segment(0.5, 1.0, 1.0, 1.5)           # K = k (b L0 - 2 (b^2 - a^2)) = 1.5 - 1.5 = 0
+    assert seg.stiffness != 0.0 and abs(seg.stiffness) < 1e-12     # rounding noise in the library's K
+    assert plots.stiffness_text(seg) == "K = 0: degenerate"
+    segs = [to.Segment(0.5, 1.0, 1.0, L0) for L0 in (0.5, 1.5, 2.5)]
+    texts = legend_boxes_clear(plots.plot_torque(segs))
+    assert "L0=0.5 (K = -1: two-mode)" in texts                   # K = 0.5 - 1.5
+    assert "L0=1.5 (K = 0: degenerate)" in texts
+    assert "L0=2.5 (K = 1: monotonic)" in texts
+    assert not any("e-" in t for t in texts)
+
+
+def _partial(c, k: int):
+    """``c`` cut after ``k`` points, ended at point ``k`` (the curves contract's ``Curve.ended_at``)."""
+    import dataclasses
+
+    names = {f.name for f in dataclasses.fields(c)}
+    fields = {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
+    for nm in ("dx", "dy", "q", "fx", "fy", "energy", "stable", "morse_index", "branch", "shape", "status"):
+        fields[nm] = fields[nm][:k]
+    from tensegrity_opt.analyses import curves
+
+    end_cls = getattr(curves, "CurveEnd", None)
+    end_kw = {"dx": float(c.dx[k]), "dy": float(c.dy[k]), "reason": "no_stable_equilibrium",
+              "message": f"no stable equilibrium at dx = {float(c.dx[k]):g}"}
+    end = end_cls(**end_kw) if end_cls is not None else __import__("types").SimpleNamespace(**end_kw)
+    if "ended_at" in names:
+        fields["ended_at"] = end
+        if "requested" in names:
+            fields["requested"] = int(c.dx.size)
+        return type(c)(**fields)
+    cut = type(c)(**fields)
+    object.__setattr__(cut, "ended_at", end)
+    return cut
+
+
+def test_a_partial_curve_draws_its_end():
+    dx = np.linspace(0.0, 1.0, 11)
+    c = _partial(to.force_deflection(PAPER, dx), 7)
+    fig = plots.plot_curve(PAPER, dx, curve=c)
+    assert np.array_equal(rows(gid(fig, "fx")), np.column_stack([c.dx, c.fx]))     # only the points returned
+    for name, v in (("fx", c.fx), ("fy", c.fy)):
+        assert np.allclose(gid(fig, f"end-marker-{name}").get_xydata(), [[c.dx[-1], v[-1]]])
+        assert np.allclose(gid(fig, f"curve-end-{name}").get_xdata(), [dx[7], dx[7]])
+    text = gid(fig, "curve-end-text").get_text()
+    assert text == "stable branch ends at $\\delta_x$ = 0.7"
+    done = plots.plot_curve(PAPER, dx)
+    assert maybe_gid(done, "end-marker-fx") is None and maybe_gid(done, "curve-end-text") is None
+
+
+def test_a_tensile_jump_off_the_straight_chain_is_not_called_buckling():
+    bistable = to.Manipulator.uniform(4, a=0.5, L0=1.0)          # K = 1 - 1.5 < 0: straight is unstable
+    assert bistable.segments[0].stiffness < 0
+    c = to.force_deflection(bistable, np.linspace(0.0, 0.6, 7))
+    first = c.jumps[0]
+    assert first.force_before[0] == 0.0 and first.force_after[0] > 0.0          # tensile
+    assert plots.jump_kind(first) == "leave_straight"
+    assert "buckling" not in plots.jump_label(first)
+    if not hasattr(first, "label"):                # the figure's own sentence (the library's once it has one)
+        assert plots.jump_label(first) == f"leaves the straight chain: F_x 0 -> {first.force_after[0]:.3g} (tensile)"
+    fig = plots.plot_curve(bistable, None, curve=c)
+    assert maybe_gid(fig, "jump-0-buckling-fx") is None
+    assert gid(fig, "jump-0-leave_straight-fx") is not None
+    texts = legend_boxes_clear(fig)
+    entry = next(t for t in texts if t.startswith("jump 1:"))
+    assert "buckling" not in entry and "straight" in entry
+    # the paper's chain buckles: compressive, and called so
+    p = to.force_deflection(PAPER, np.linspace(0.0, 0.2, 3))
+    assert plots.jump_kind(p.jumps[0]) == "buckling"
+    assert plots.jump_label(p.jumps[0]).startswith("buckling") and "compressive" in plots.jump_label(p.jumps[0])
+
+
+def test_former_branch_switch_is_a_snap():
+    from tensegrity_opt.analyses.curves import Jump
+
+    j = Jump("branch_switch", 0.3, 0.35, np.array([-0.5, 0.1]), np.array([-0.4, -0.1]), 0, 1)
+    assert plots.jump_kind(j) == "snap" and plots.jump_label(j).startswith("snap to another stable branch")
+    assert "dF_x = +0.1" in plots.jump_label(j)
+
+
+@pytest.mark.parametrize("make", ["curve", "curve-all", "landscape", "torque", "shapes"])
+def test_legends_do_not_cover_the_data(make):
+    if make == "curve":
+        fig = plots.plot_curve(PAPER, np.linspace(0.0, 0.5, 6))
+    elif make == "curve-all":
+        fig = plots.plot_curve(PAPER, np.linspace(0.0, 0.5, 6), branch="all")
+    elif make == "landscape":
+        fig = plots.plot_landscape(PAPER, 0.1, grid=31)
+    elif make == "torque":
+        fig = plots.plot_torque([to.Segment(1.0, 1.0, 1.0, L0) for L0 in (0.5, 1.0)])
+    else:
+        fig = plots.plot_shapes(PAPER, 0.1)
+        assert not fig.legends                    # no legend at all: the colours are in each panel's title
+        return
+    assert legend_boxes_clear(fig)
+
+
+def test_torque_marks_the_equilibria_of_the_unloaded_segment():
+    # two-mode (K = -0.5): wells where cos(q/2) = L0 cos(beta) / (2 c cos(2 beta)) (eq. 2 = 0), q = 0 unstable
+    two, mono = to.Segment(0.5, 1.0, 1.0, 1.0), to.Segment(0.5, 1.0, 1.0, 2.0)
+    c, beta = np.hypot(0.5, 1.0), np.arctan2(0.5, 1.0)
+    well = 2.0 * np.arccos(1.0 * np.cos(beta) / (2.0 * c * np.cos(2.0 * beta)))
+    assert well == pytest.approx(1.68214, abs=1e-5) and well < two.joint_limit
+    fig = plots.plot_torque([two, mono], num=401)
+    st = gid(fig, "torque-0-stable").get_xdata()
+    un = gid(fig, "torque-0-unstable").get_xdata()
+    assert np.allclose(np.sort(st), [-well, well], atol=1e-4) and np.allclose(un, [0.0], atol=1e-12)
+    assert np.allclose(gid(fig, "torque-1-stable").get_xdata(), [0.0]) and gid(fig, "torque-1-unstable").get_xdata().size == 0
+
+
+def test_docs_figures_are_committed_small_and_referenced():
+    names = ["fig2_torque", "fig4_landscape", "fig5_landscape", "fig6_curve", "shapes", "branch", "atlas", "map"]
+    text = (ROOT / "docs" / "figures.md").read_text()
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("docs_figures", ROOT / "docs" / "figures.py")
+    mod = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(mod)                  # importing draws nothing
+    for name in names:
+        png = ROOT / "docs" / "img" / f"{name}.png"
+        check_png(png.read_bytes())
+        assert png.stat().st_size <= 150_000, name
+        assert f"img/{name}.png" in text and name in mod.FIGURES, name
+
+
+def test_a_partial_curve_of_the_library_draws_its_end():
+    m = to.Manipulator.uniform(3, a=0.5)
+    dx = np.linspace(0.0, 5.5, 23)
+    c = to.force_deflection(m, dx)
+    if getattr(c, "ended_at", None) is None:
+        pytest.skip("this library computes the whole curve (or raises): no partial curve to draw")
+    assert c.dx.size < dx.size
+    fig = plots.plot_curve(m, dx, curve=c)
+    assert np.array_equal(rows(gid(fig, "fx")), np.column_stack([c.dx, c.fx]))
+    assert np.allclose(gid(fig, "end-marker-fx").get_xydata(), [[c.dx[-1], c.fx[-1]]])
+    assert gid(fig, "curve-end-text").get_text() == f"stable branch ends at $\\delta_x$ = {c.ended_at.dx:.4g}"
+    kinds = [plots.jump_kind(j) for j in c.jumps]
+    assert kinds[0] == "leave_straight" and "buckling" not in kinds          # K = -0.5: nothing buckles
+    assert legend_boxes_clear(fig)

@@ -21,7 +21,7 @@ from ..errors import InvalidParameterError, UnsupportedError
 from ..model.manipulator import Manipulator
 from ..serialize import nullables, numbers
 
-__all__ = ["Landscape", "energy_landscape", "complete_configuration"]
+__all__ = ["Landscape", "energy_landscape", "complete_configuration", "landscape_margin"]
 
 
 @dataclass(frozen=True)
@@ -61,6 +61,38 @@ def complete_configuration(m: Manipulator, target, pair: tuple[int, int], qi, qj
     and joint ``v`` form one rigid arm, those after joint ``v`` another. ``elbow`` is ``+1``
     or ``-1``. NaN where the target is out of reach for the two arms.
     """
+    q, cos_g = _two_link(m, target, pair, qi, qj, elbow)
+    u, v = [k for k in range(m.n) if k not in pair]
+    ok = np.abs(cos_g) <= 1.0
+    q[..., u] = np.where(ok, q[..., u], np.nan)
+    q[..., v] = np.where(ok, q[..., v], np.nan)
+    return q
+
+
+def landscape_margin(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int) -> tuple[np.ndarray,
+                                                                                                 np.ndarray]:
+    """A continuous margin of the landscape's domain and the configuration extended beyond it.
+
+    Returns ``(margin, q)``: ``margin`` is positive exactly where :func:`complete_configuration`
+    gives a configuration inside the open physical range, zero on the boundary of that set and
+    negative outside, and it is a smooth function of ``(qi, qj)`` across the boundary, so that its
+    zero contour (linear interpolation on a grid) is the exact boundary up to the grid's second
+    order, not the staircase of the grid cells. It is the least of ``1 - |cos gamma|`` (the two-link
+    reach: ``gamma`` the angle at the arms' common joint, unclipped) and ``1 - |q_k| / q_max_k`` over
+    the joints (the physical range). ``q`` is the configuration with ``cos gamma`` clipped to
+    ``[-1, 1]``: equal to :func:`complete_configuration` inside the reach, the nearest reachable
+    arm (both arms aligned) outside it, finite everywhere.
+    """
+    q, cos_g = _two_link(m, target, pair, qi, qj, elbow)
+    lim = np.asarray(m.joint_limits, float)
+    with np.errstate(invalid="ignore"):
+        joint = np.min(1.0 - np.abs(q) / lim, axis=-1)
+    return np.minimum(1.0 - np.abs(cos_g), joint), q
+
+
+def _two_link(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int) -> tuple[np.ndarray, np.ndarray]:
+    """The configuration of :func:`complete_configuration` with ``cos gamma`` clipped (finite everywhere),
+    and the unclipped ``cos gamma`` (reachable where ``|cos gamma| <= 1``)."""
     n = m.n
     i, j = pair
     free = [k for k in range(n) if k not in (i, j)]
@@ -109,7 +141,6 @@ def complete_configuration(m: Manipulator, target, pair: tuple[int, int], qi, qj
     D = np.hypot(d[..., 0], d[..., 1])
     with np.errstate(invalid="ignore", divide="ignore"):
         cos_g = (D * D + r1 * r1 - r2 * r2) / (2.0 * D * r1)
-        ok = np.abs(cos_g) <= 1.0
         gam = np.arccos(np.clip(cos_g, -1.0, 1.0))
         ang_d = np.arctan2(d[..., 1], d[..., 0])
         a1 = ang_d + elbow * gam            # direction of arm 1 (absolute)
@@ -126,9 +157,9 @@ def complete_configuration(m: Manipulator, target, pair: tuple[int, int], qi, qj
     qu = _angle_between(phi_before_u, abs_u)
     before_v = abs_u + rel1[..., v - 1] if v - 1 >= u else abs_u
     qv = _angle_between(before_v, abs_v)
-    q[..., u] = np.where(ok, qu, np.nan)
-    q[..., v] = np.where(ok, qv, np.nan)
-    return q
+    q[..., u] = qu
+    q[..., v] = qv
+    return q, cos_g
 
 
 def energy_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, int] = (0, 3),

@@ -12,15 +12,16 @@ lazily: ``import tensegrity_opt`` (and even ``import tensegrity_opt.applications
 ========================  ===================================================================
 function                  figure
 ========================  ===================================================================
-:func:`plot_curve`        ``Fx`` and ``Fy`` against the deflection (Fig. 6) with the jumps of
-                          :func:`~tensegrity_opt.force_deflection`; ``branch="all"``: every branch,
-                          unstable parts dashed
-:func:`plot_landscape`    energy contours of :func:`~tensegrity_opt.energy_landscape` on both elbow
-                          branches, every equilibrium of :func:`~tensegrity_opt.find_equilibria`
-                          marked and labelled (Figs. 4-5, n = 4)
+:func:`plot_curve`        ``Fx`` above ``Fy`` against the deflection (Fig. 6) with the jumps of
+                          :func:`~tensegrity_opt.force_deflection` by kind, a partial curve's end;
+                          ``branch="all"``: every branch, unstable parts dashed
+:func:`plot_landscape`    energy contours (even levels) of :func:`~tensegrity_opt.energy_landscape` on both
+                          elbow branches, cut at the exact edge of the reachable set, every equilibrium of
+                          :func:`~tensegrity_opt.find_equilibria` marked and labelled (Figs. 4-5, n = 4)
 :func:`plot_shapes`       the chain in each equilibrium: triangles, joints, both springs, coloured
                           by stability, titled with Table 2's label
-:func:`plot_torque`       torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2)
+:func:`plot_torque`       torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2), their
+                          equilibria marked, ``K`` and the curve's kind in the legend
 :func:`plot_map`          critical load ``P = -Fx0`` over two design parameters (blank where
                           :func:`~tensegrity_opt.critical_force` raises)
 :func:`plot_branches`     branch diagrams of :func:`~tensegrity_opt.trace_branch` /
@@ -40,25 +41,31 @@ function                  figure
                           against the tip's response, each snap an arrow from its fold to its landing
 ========================  ===================================================================
 
-Every figure is drawn in the caller's units (forces ``stiffness x length``, energies
-``stiffness x length^2``, lengths, angles in rad), and the axes say so; the loading-path figures put
-their legend beside the axes (a figure legend: it never covers the data) and the chain's
-parameters in the title (:func:`chain_label`); so does the atlas.
+Every figure is drawn in the caller's units (the model has none of its own: lengths in the unit of
+``a``, ``b``, ``L0``, the paper's ``b = 1``; forces ``stiffness x length``, energies and torques
+``stiffness x length^2``, angles in rad), and every axis says its quantity and unit; every figure puts
+the chain's parameters in its title (:func:`chain_label`; a chain whose segments differ is
+"heterogeneous, n = ..." with ranges) and its legend outside the axes (a figure legend beside or
+below them: it never covers the data). Contour levels are evenly spaced round values.
 
 The plotted data are the library's numbers, unchanged. Artists carry stable ``gid`` values so
 that they can be found again (tests read the data back from them):
 
 * curve: ``"fx"``, ``"fy"`` (the selected least-energy stable curve, NaN-separated at every
-  jump), ``"jump-<k>-<kind>-fx"`` / ``"-fy"`` (the ``k``-th entry of ``Curve.jumps``; a buckling
-  jump is the vertical segment at the abscissa 0 from 0 to the critical force),
+  jump), ``"jump-<k>-<kind>-fx"`` / ``"-fy"`` (the ``k``-th entry of ``Curve.jumps``, ``kind`` as
+  :func:`jump_kind`; a buckling jump is the vertical segment at the abscissa 0 from 0 to the critical
+  force), ``"jump-<k>-number-fx"`` (its number), a partial curve's ``"end-marker-fx"`` / ``"-fy"`` (its last
+  point), ``"curve-end-fx"`` / ``"-fy"`` (the vertical at ``ended_at``), ``"curve-end-text"``,
   ``"branch-<id>-fx-stable"`` / ``"-unstable"`` (``branch="all"``; NaN where the branch does not
   exist or has the other stability);
-* landscape: ``"energy-elbow+1"`` / ``"energy-elbow-1"`` (QuadMesh, array = ``energy[e].T``),
-  ``"contour-elbow..."`` (contour set), ``"equilibria-elbow..."`` (scatter of ``(q_i, q_j)``);
+* landscape: ``"energy-elbow+1"`` / ``"energy-elbow-1"`` (QuadMesh, array = ``energy[e].T``, not drawn),
+  ``"energy-fill-elbow..."`` (filled contours, clipped to the region), ``"contour-elbow..."`` (contour lines),
+  ``"boundary-elbow..."`` (the region's outline), ``"equilibria-elbow..."`` (scatter of ``(q_i, q_j)``);
 * shapes: per panel ``"triangle-<i>-<0|1>"`` (proximal/distal triangle of segment ``i``),
   ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``;
   the axes' gid is ``"equilibrium-<k>"``;
-* torque: ``"torque-<k>"``; map: ``"critical-load"`` (QuadMesh, array ``P[iy, ix]``);
+* torque: ``"torque-<k>"``; map: ``"critical-load"`` (QuadMesh, array ``P[iy, ix]``), ``"critical-load-contours"``,
+  ``"condition4"`` (the line ``K = 0``), ``"design"``;
 * branches: ``"branch-<b>-morse<k>-<j>"`` (branch ``b``'s ``j``-th piece, of Morse index ``k``),
   ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"``; limit load:
   ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"``, ``"quasi-buckling-level"``,
@@ -76,6 +83,7 @@ from __future__ import annotations
 
 import math
 import threading
+from collections import Counter
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Any
@@ -96,7 +104,8 @@ __all__ = ["chain_geometry", "plot_curve", "plot_landscape", "plot_shapes", "plo
            "segment_label", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS", "plot_branches", "plot_limit_load",
            "plot_boundary", "chain_label", "branch_quantity_label", "morse_color", "BRANCH_QUANTITIES",
            "MORSE_COLORS", "EVENT_STYLES", "plot_atlas", "ATLAS_STYLES", "plot_preload_plan", "plot_simulation",
-           "CONTROL_STYLES"]
+           "CONTROL_STYLES", "jump_kind", "jump_label", "JUMP_STYLES", "landscape_region", "stiffness_text", "torque_zeros",
+           "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT"]
 
 #: File suffix / format name -> MIME type.
 FORMATS = {"png": "image/png", "svg": "image/svg+xml"}
@@ -107,6 +116,12 @@ STABILITY_COLORS = {"minimum": "tab:green", "saddle": "tab:orange", "maximum": "
 
 #: Design parameters :func:`plot_map` can vary (applied to every segment with ``Segment.replace``).
 MAP_PARAMS = ("a", "b", "k", "L0")
+
+#: Axis label units. The model has no units of its own: lengths are in the unit the caller gives ``a``, ``b``,
+#: ``L0`` in (the paper: ``b = 1``), stiffnesses in that of ``k``; forces are then stiffness x length, energies
+#: and torques stiffness x length^2, angles rad.
+FORCE_UNIT = "stiffness × length"
+ENERGY_UNIT = "stiffness × length²"
 
 _KIND_TEXT = {"minimum": "stable", "saddle": "saddle", "maximum": "maximum", "degenerate": "degenerate"}
 
@@ -254,15 +269,89 @@ def curve_breaks(c: Curve, component: int) -> np.ndarray:
     return np.array(out, dtype=int)
 
 
+#: How :func:`plot_curve` draws each kind of jump (``Jump.kind``; the old ``"branch_switch"`` is drawn as a snap).
+JUMP_STYLES = {
+    "buckling": {"color": "tab:red", "ls": "--", "marker": None, "name": "buckling of the straight chain"},
+    "leave_straight": {"color": "tab:orange", "ls": "--", "marker": None, "name": "leaves the straight chain"},
+    "snap": {"color": "tab:red", "ls": ":", "marker": "D", "name": "snap: the stable branch ends"},
+    "switch": {"color": "tab:purple", "ls": ":", "marker": "s", "name": "switch of the least-energy branch"},
+}
+#: Jumps listed one by one in the legend of :func:`plot_curve` (the others are counted).
+_MAX_JUMP_LEGEND = 6
+
+
+def jump_kind(j: Any) -> str:
+    """The kind :func:`plot_curve` draws a jump as: ``Jump.kind``, with the library's former ``"branch_switch"``
+    as ``"snap"``, and a ``"buckling"`` whose force after the jump is not compressive (``F_x >= 0``) as
+    ``"leave_straight"``: a tensile jump is never called buckling."""
+    kind = str(j.kind)
+    if kind == "branch_switch":
+        return "snap"
+    if kind == "buckling" and not float(j.force_after[0]) < 0.0:
+        return "leave_straight"
+    return kind if kind in JUMP_STYLES else "snap"
+
+
+def _sense(fx: float) -> str:
+    return "tensile" if fx > 0 else ("compressive" if fx < 0 else "zero")
+
+
+def jump_label(j: Any) -> str:
+    """``Jump.label`` when the library gives one, else a sentence of the same form naming the jump with its
+    sign and size, e.g. ``"buckling of the straight chain: F_x 0 -> -0.573 (compressive)"``."""
+    kind = jump_kind(j)
+    try:
+        label = getattr(j, "label", None) if j.kind in JUMP_STYLES else None   # not for the former kind
+    except (KeyError, ValueError, TypeError):
+        label = None
+    if isinstance(label, str) and label and not (kind != "buckling" and label.startswith("buckling")):
+        return label
+    f0, f1 = float(j.force_before[0]), float(j.force_after[0])
+    g0, g1 = float(j.force_before[1]), float(j.force_after[1])
+    if kind in ("buckling", "leave_straight"):
+        what = JUMP_STYLES[kind]["name"]
+        return f"{what}: F_x {_num(f0, f1)} -> {_num(f1, f0)} ({_sense(f1)})"
+    d = f1 - f0 if f1 != f0 else g1 - g0
+    comp = "x" if f1 != f0 else "y"
+    what = "snap to another stable branch" if kind == "snap" else "switch of the least-energy stable branch"
+    return f"{what}: dF_{comp} = {d:+.3g}" + (f" ({_sense(f1)})" if comp == "x" else "")
+
+
+def _num(v: float, other: float = 0.0, digits: int = 3) -> str:
+    """``v`` in a label: ``"0"`` when it is zero to rounding relative to the scale ``max(|v|, |other|)``."""
+    scale = max(abs(v), abs(other))
+    if v == 0.0 or abs(v) <= 1e-9 * scale:
+        return "0"
+    return f"{v:.{digits}g}"
+
+
+def _curve_end(c: Curve, xname: str) -> tuple[float, str] | None:
+    """Where a partial curve (``Curve.ended_at``, the curves contract) ends on the abscissa, and why."""
+    end = getattr(c, "ended_at", None)
+    if end is None:
+        return None
+    x = float(getattr(end, "dx" if xname == "dx" else "dy", np.nan))
+    reason = str(getattr(end, "reason", "") or "")
+    return x, reason
+
+
 def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *, curve: Curve | None = None,
-               figsize: tuple[float, float] = (10.0, 4.2)) -> Any:
+               figsize: tuple[float, float] = (8.0, 7.0)) -> Any:
     """Force-deflection curves ``Fx`` and ``Fy`` (Fig. 6) from :func:`~tensegrity_opt.force_deflection`.
 
-    Two panels, ``Fx`` and ``Fy`` against ``dx`` (against ``dy`` when only ``dy`` varies). The
-    selected least-energy stable curve is drawn solid and broken at every jump; the buckling jump
-    at ``dx -> 0+`` is the vertical dashed segment from 0 to the critical force, a branch switch the
-    dotted segment between the forces before and after. ``branch="all"`` also draws every branch
-    followed (``Curve.branches``): solid where stable, dashed where unstable.
+    Two stacked panels sharing the abscissa, ``Fx`` above and ``Fy`` below (each on its own scale, so that
+    the shape of ``Fy``, e.g. ``~ sqrt(dx)`` after buckling, is visible), against ``dx`` (against ``dy`` when
+    only ``dy`` varies). The selected least-energy stable curve is drawn solid and broken at every jump. Each
+    jump (``Curve.jumps``) is drawn by its kind (:func:`jump_kind`, :data:`JUMP_STYLES`): the buckling of the
+    stable straight chain (vertical dashed, from 0 to the critical force), leaving an unstable straight chain,
+    a snap (the followed stable branch ends), a switch of the least-energy branch (dotted, between the forces
+    before and after); jumps are numbered on the ``Fx`` panel and listed with their label
+    (:func:`jump_label`) in the legend, which sits below the panels (never over the data). A partial curve
+    (``Curve.ended_at`` set: no stable equilibrium from some point on) is drawn as far as it goes, its last
+    point marked and the end drawn as a dotted vertical with the text "stable branch ends at dx = ...".
+    ``branch="all"`` also draws every branch followed (``Curve.branches``): solid where stable, dashed where
+    unstable. The axes are in the caller's units (lengths, forces ``stiffness x length``); the title gives
+    the chain's parameters.
 
     Parameters
     ----------
@@ -274,62 +363,115 @@ def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *
     """
     c = curve if curve is not None else force_deflection(m, dx, dy, branch=branch)
     x, xname = _abscissa(c)
+    from matplotlib.lines import Line2D
+
     fig = _new_figure(figsize)
-    axes = fig.subplots(1, 2)
+    axes = fig.subplots(2, 1, sharex=True)
     comps = (("fx", c.fx, "$F_x$"), ("fy", c.fy, "$F_y$"))
     colors = ["tab:blue", "tab:purple", "tab:brown", "tab:pink", "tab:olive", "tab:cyan", "tab:gray"]
+    handles: dict[str, Any] = {}
+    end = _curve_end(c, xname)
+    sym = "\\delta_x" if xname == "dx" else "\\delta_y"
     for comp, (ax, (name, vals, tex)) in enumerate(zip(axes, comps)):
         breaks = curve_breaks(c, comp)
         ax.axhline(0.0, color="0.75", lw=0.8, zorder=0)
         if c.branches:
-            ax.plot(*_broken(x, vals, breaks), color="0.8", lw=5.0, solid_capstyle="round", zorder=1,
-                    label="least-energy stable")
+            ax.plot(*_broken(x, vals, breaks), color="0.8", lw=5.0, solid_capstyle="round", zorder=1)
+            handles.setdefault("least-energy stable (selected)",
+                               Line2D([], [], color="0.8", lw=5.0, solid_capstyle="round"))
             for k, br in enumerate(c.branches):
                 bid = int(br.branch[0]) if br.branch.size else k
                 v = getattr(br, name)
                 ok = np.isfinite(v)
                 shape = next((s for s, good in zip(br.shape, ok) if good and s), "")
                 col = colors[k % len(colors)]
-                line, = ax.plot(x, np.where(ok & br.stable, v, np.nan), color=col, lw=1.5, zorder=3,
-                                label=f"branch {bid} {shape}".rstrip())
+                bx = br.dx if xname == "dx" else br.dy
+                line, = ax.plot(bx, np.where(ok & br.stable, v, np.nan), color=col, lw=1.5, zorder=3)
                 line.set_gid(f"branch-{bid}-{name}-stable")
-                line, = ax.plot(x, np.where(ok & ~br.stable, v, np.nan), color=col, lw=1.2, ls="--", zorder=2)
+                line, = ax.plot(bx, np.where(ok & ~br.stable, v, np.nan), color=col, lw=1.2, ls="--", zorder=2)
                 line.set_gid(f"branch-{bid}-{name}-unstable")
+                handles.setdefault(f"branch {bid} {shape}".rstrip(), Line2D([], [], color=col, lw=1.5))
+            handles.setdefault("unstable part (dashed)", Line2D([], [], color="0.4", lw=1.2, ls="--"))
         line, = ax.plot(*_broken(x, vals, breaks), color="black" if c.branches else "tab:blue",
-                        lw=1.0 if c.branches else 1.8, marker="o", ms=2.5, zorder=4,
-                        label=None if c.branches else "least-energy stable")
+                        lw=1.0 if c.branches else 1.8, marker="o", ms=2.5, zorder=4)
         line.set_gid(name)
+        if not c.branches:
+            handles.setdefault("least-energy stable equilibrium", Line2D([], [], color="tab:blue", lw=1.8,
+                                                                         marker="o", ms=2.5))
         for k, j in enumerate(c.jumps):
             f0, f1 = float(j.force_before[comp]), float(j.force_after[comp])
             if f0 == f1:
                 continue                        # this component is continuous there
-            if j.kind == "buckling":
-                x0 = float(j.dx_before if xname == "dx" else j.dy_before)
-                seg, = ax.plot([x0, x0], [f0, f1], color="tab:red", ls="--", lw=1.5, zorder=5,
-                               label="buckling jump")
-                ax.plot([x0], [f1], marker="o", mfc="white", mec="tab:red", ls="none", zorder=6)
-                ax.annotate(f"{tex}$_0$ = {f1:.4g}" if name == "fx" else f"{f1:.4g}", (x0, f1),
-                            textcoords="offset points", xytext=(6, -4 if f1 < f0 else 4), fontsize=8,
-                            color="tab:red", va="top" if f1 < f0 else "bottom")
-            else:
-                xa = float(j.dx_before if xname == "dx" else j.dy_before)
-                xb = float(j.dx_after if xname == "dx" else j.dy_after)
-                seg, = ax.plot([xa, xb], [f0, f1], color="tab:red", ls=":", lw=1.5, marker="D", ms=4,
-                               zorder=5, label="branch switch")
-            seg.set_gid(f"jump-{k}-{j.kind}-{name}")
-        ax.set_xlabel("$\\delta_x$" if xname == "dx" else "$\\delta_y$")
-        ax.set_ylabel(tex)
+            kind = jump_kind(j)
+            st = JUMP_STYLES[kind]
+            xa = float(j.dx_before if xname == "dx" else j.dy_before)
+            xb = float(j.dx_after if xname == "dx" else j.dy_after)
+            if kind == "buckling":
+                xb = xa                          # vertical: from 0 to the critical force at dx -> 0+
+            seg, = ax.plot([xa, xb], [f0, f1], color=st["color"], ls=st["ls"], lw=1.5, marker=st["marker"], ms=4,
+                           zorder=5)
+            seg.set_gid(f"jump-{k}-{kind}-{name}")
+            ax.plot([xb], [f1], marker="o", mfc="white", mec=st["color"], ls="none", zorder=6)
+            if comp == 0 or float(j.force_before[0]) == float(j.force_after[0]):
+                # beside a vertical jump, above (alternately below) a slanted one: clear of its end markers
+                side = 1 if k % 2 == 0 else -1
+                off, ha, va = (((8 * side, 0), "left" if side > 0 else "right", "center") if xa == xb else
+                               ((0, 10 * side), "center", "bottom" if side > 0 else "top"))
+                anchor = ((xa + xb) / 2, (max(f0, f1) if side > 0 else min(f0, f1)) if xa != xb else (f0 + f1) / 2)
+                num = ax.annotate(f"{k + 1}", anchor, textcoords="offset points", xytext=off, ha=ha, va=va,
+                                  fontsize=7, color=st["color"], fontweight="bold",
+                                  bbox={"boxstyle": "circle,pad=0.15", "fc": "white", "ec": st["color"], "lw": 0.6})
+                num.set_gid(f"jump-{k}-number-{name}")
+        if end is not None and math.isfinite(end[0]):
+            xe = end[0]
+            vline = ax.axvline(xe, color="0.35", ls=":", lw=1.2, zorder=2)
+            vline.set_gid(f"curve-end-{name}")
+            ok = np.isfinite(vals)
+            if ok.any():
+                last = int(np.flatnonzero(ok)[-1])
+                mk, = ax.plot([x[last]], [vals[last]], ls="none", marker="X", ms=8, mfc="tab:red", mec="black",
+                              zorder=7)
+                mk.set_gid(f"end-marker-{name}")
+            if comp == 0:
+                what = "stable branch ends" if end[1] in ("", "no_stable_equilibrium") else f"curve stops ({end[1]})"
+                txt = ax.annotate(f"{what} at ${sym}$ = {xe:.4g}", (xe, 1.0), xycoords=("data", "axes fraction"),
+                                  textcoords="offset points", xytext=(-4, -4), ha="right", va="top", fontsize=8,
+                                  color="0.2", bbox={"boxstyle": "round,pad=0.2", "fc": "white", "ec": "0.6",
+                                                     "alpha": 0.9})
+                txt.set_gid("curve-end-text")
+        ax.set_ylabel(f"tip force {tex} ({FORCE_UNIT})")
         ax.grid(True, lw=0.4, alpha=0.5)
-        handles, labels = ax.get_legend_handles_labels()
-        seen: dict[str, Any] = {}
-        for h, lab in zip(handles, labels):
-            seen.setdefault(lab, h)
-        if seen:
-            ax.legend(seen.values(), seen.keys(), fontsize=7, loc="best")
-    other = f"$\\delta_y$ = {float(c.dy[0]):g}" if xname == "dx" and np.ptp(c.dy) == 0 else (
-        f"$\\delta_x$ = {float(c.dx[0]):g}" if xname == "dy" else "")
-    fig.suptitle(f"Force-deflection, n = {m.n}" + (f", {other}" if other else "")
-                 + (" (all branches)" if c.branches else ""), fontsize=11)
+    if end is not None:
+        handles.setdefault("last point computed (the stable branch ends after it)",
+                           Line2D([], [], ls="none", marker="X", ms=8, mfc="tab:red", mec="black"))
+    for k, j in enumerate(c.jumps[:_MAX_JUMP_LEGEND]):
+        st = JUMP_STYLES[jump_kind(j)]
+        handles[f"jump {k + 1}: {jump_label(j)}"] = Line2D([], [], color=st["color"], ls=st["ls"], lw=1.5,
+                                                           marker=st["marker"], ms=4)
+    if len(c.jumps) > _MAX_JUMP_LEGEND:
+        rest = Counter(jump_kind(j) for j in c.jumps[_MAX_JUMP_LEGEND:])
+        handles["... and " + ", ".join(f"{v} {k}" for k, v in sorted(rest.items()))] = Line2D([], [], ls="none")
+    xs = [float(v) for v in x if math.isfinite(float(v))] + ([end[0]] if end is not None and math.isfinite(end[0])
+                                                              else [])
+    if xs and max(xs) > min(xs):
+        pad = 0.03 * (max(xs) - min(xs))                # a jump at the first abscissa stays off the spine
+        axes[1].set_xlim(min(xs) - pad, max(xs) + pad)
+    axes[1].set_xlabel(f"tip deflection ${sym}$ (length)" + (", > 0 shortens the chain" if xname == "dx" else ""))
+    axes[0].tick_params(labelbottom=False)
+    import textwrap
+
+    width = max(40, int(figsize[0] * 14))          # characters of a 7-point line across the figure
+    long = any(len(t) > width // 2 - 4 for t in handles)
+    fig.legend(list(handles.values()), [textwrap.fill(t, width, subsequent_indent="    ") for t in handles],
+               fontsize=7, loc="outside lower center", ncols=1 if long or len(handles) > 4 else 2, frameon=False)
+    other = f"$\\delta_y$ = {float(c.dy[0]):g}" if xname == "dx" and c.dy.size and np.ptp(c.dy) == 0 else (
+        f"$\\delta_x$ = {float(c.dx[0]):g}" if xname == "dy" and c.dx.size else "")
+    ref = " (from the rest configuration)" if getattr(c, "reference", "straight") == "rest" else ""
+    head = ("Force-deflection curves" + (" (all branches)" if c.branches else " (least-energy stable)")
+            + (f", {other}" if other else "") + ref + "; $F_x$ < 0 compressive")
+    note = getattr(c, "note", "") if end is not None else ""
+    note = textwrap.fill(note, max(40, int(figsize[0] * 12))) if note else ""
+    fig.suptitle(head + f"\n{chain_label(m)}" + (f"\n{note}" if note else ""), fontsize=9)
     return fig
 
 
@@ -342,14 +484,6 @@ def _elbow_of(m: Manipulator, target: np.ndarray, pair: tuple[int, int], q: np.n
         err = float(np.max(np.abs(full - q)))
         errs.append(err if math.isfinite(err) else math.inf)
     return int(np.argmin(errs))
-
-
-def _levels(values: np.ndarray, num: int) -> np.ndarray:
-    finite = values[np.isfinite(values)]
-    if finite.size == 0:
-        return np.array([])
-    lv = np.unique(np.percentile(finite, np.linspace(0.0, 100.0, num)))
-    return lv
 
 
 def landscape_span(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, int] = (0, 3),
@@ -371,20 +505,87 @@ def landscape_span(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, 
     return float(min(default, ext + 2.0 * cell))
 
 
+def _levels(values: np.ndarray, num: int) -> np.ndarray:
+    """About ``num`` evenly spaced contour levels at round values over the finite ``values``
+    (:class:`matplotlib.ticker.MaxNLocator`), kept within their range."""
+    from matplotlib.ticker import MaxNLocator
+
+    finite = values[np.isfinite(values)]
+    if finite.size == 0:
+        return np.array([])
+    lo, hi = float(finite.min()), float(finite.max())
+    if not hi > lo:
+        return np.array([lo])
+    lv = MaxNLocator(nbins=max(int(num), 2), steps=[1, 2, 2.5, 5, 10]).tick_values(lo, hi)
+    step = float(lv[1] - lv[0])
+    lv = lv[(lv >= lo - 1e-9 * step) & (lv <= hi + 1e-9 * step)]
+    # whole multiples of the step (no rounding noise: np.diff is constant)
+    return np.round(lv / step) * step
+
+
+def _energy_of(m: Manipulator, q: np.ndarray) -> np.ndarray:
+    """``E(q)`` over the last axis of ``q`` (any finite ``q``, also beyond the physical range)."""
+    c = np.hypot(m.a, m.b)
+    beta = np.arctan2(m.a, m.b)
+    L1, L2 = 2 * c * np.cos(beta + q / 2), 2 * c * np.cos(beta - q / 2)
+    return 0.5 * ((m.k1 * (L1 - m.L1_0) ** 2).sum(-1) + (m.k2 * (L2 - m.L2_0) ** 2).sum(-1))
+
+
+def landscape_region(m: Manipulator, target: Any, pair: tuple[int, int], qi: np.ndarray, qj: np.ndarray,
+                     elbow: int, refine: int = 4) -> Any:
+    """The drawn region of one elbow branch of the landscape as a :class:`matplotlib.path.Path`: where
+    :func:`~tensegrity_opt.analyses.landscape.landscape_margin` is positive (reachable and inside the
+    physical range) within the axes ``qi x qj``; its outline is the margin's zero contour on a grid
+    ``refine`` times finer than the axes', i.e. the exact boundary (a smooth curve), not the grid's cells.
+    ``None`` when the region is empty."""
+    import contourpy
+    from matplotlib.path import Path as MPath
+
+    from ..analyses.landscape import landscape_margin
+
+    qi, qj = np.asarray(qi, float), np.asarray(qj, float)
+    fi = np.linspace(qi[0], qi[-1], max(2, (qi.size - 1) * int(refine) + 1))
+    fj = np.linspace(qj[0], qj[-1], max(2, (qj.size - 1) * int(refine) + 1))
+    FI, FJ = np.meshgrid(fi, fj, indexing="xy")
+    margin, _ = landscape_margin(m, target, pair, FI, FJ, elbow)
+    # the axes' box as a second constraint, so that the region closes along the axes when it is cut there
+    hx, hy = (fi[-1] - fi[0]) / 2, (fj[-1] - fj[0]) / 2
+    box = np.minimum((hx - np.abs(FI - (fi[0] + hx))) / max(hx, 1e-300),
+                     (hy - np.abs(FJ - (fj[0] + hy))) / max(hy, 1e-300))
+    z = np.where(np.isfinite(margin), np.minimum(margin, box), -1.0)
+    if not (z > 0).any():
+        return None
+    gen = contourpy.contour_generator(fi, fj, z, fill_type=contourpy.FillType.OuterCode)
+    polys, codes = gen.filled(0.0, np.inf)
+    if not polys:
+        return None
+    return MPath(np.vstack(polys), np.concatenate(codes))
+
+
 def plot_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, int] = (0, 3),
                    grid: Any = 101, *, span: float | str | None = "auto",
-                   equilibria: list[Equilibrium] | None = None, levels: int = 25,
-                   figsize: tuple[float, float] = (11.0, 4.8)) -> Any:
+                   equilibria: list[Equilibrium] | None = None, levels: int = 24,
+                   figsize: tuple[float, float] = (10.6, 5.0)) -> Any:
     """Energy landscape ``E(q_i, q_j)`` (Figs. 4-5, n = 4) with every equilibrium marked.
 
-    One panel per elbow branch of :func:`~tensegrity_opt.energy_landscape` (colour = energy,
-    contour lines at energy percentiles, blank where unreachable or outside the physical range).
-    Every equilibrium of :func:`~tensegrity_opt.find_equilibria` (or ``equilibria``) is marked at
-    its ``(q_i, q_j)`` on the branch it lies on, coloured by stability and labelled with its shape.
+    One panel per elbow branch of :func:`~tensegrity_opt.energy_landscape`: the energy (the other two joints
+    solved for the tip target) as filled contours at evenly spaced levels (:class:`~matplotlib.ticker.MaxNLocator`,
+    about ``levels`` of them) with contour lines, a colour bar with the quantity and unit. The drawn region
+    is the reachable set inside the physical range, cut at its exact boundary (:func:`landscape_region`: the
+    zero contour of a continuous margin, drawn as a black line), not at the grid's cells. Every equilibrium
+    of :func:`~tensegrity_opt.find_equilibria` (or ``equilibria``) is marked at its ``(q_i, q_j)`` on the
+    branch it lies on, coloured by stability and labelled with its shape; each lies inside the drawn region
+    (an equilibrium is reachable and in range). The legend sits below the panels; the title gives the
+    chain's parameters, the deflection and the count.
 
     ``grid``, ``span`` go to :func:`~tensegrity_opt.energy_landscape`; ``span="auto"`` (default)
     uses :func:`landscape_span` (the reachable region), ``None`` the library's default (the
     physical range).
+
+    Artists (``gid``): ``"energy-elbow+1"`` / ``"-1"`` (the grid's values, a QuadMesh with the array
+    ``energy[e].T``, not drawn: the filled contours show them), ``"energy-fill-elbow..."`` (filled contour set,
+    clipped to the region), ``"contour-elbow..."`` (contour lines), ``"boundary-elbow..."`` (the region's
+    outline, a PathPatch whose path is :func:`landscape_region`), ``"equilibria-elbow..."`` (scatter).
 
     Raises
     ------
@@ -400,46 +601,71 @@ def plot_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, 
     pair = land.pair
     target = m.target(dx, dy)
     import matplotlib
-    from matplotlib.colors import BoundaryNorm, Normalize
     from matplotlib.lines import Line2D
+    from matplotlib.patches import PathPatch
+    from matplotlib.ticker import MaxNLocator
+
+    from ..analyses.landscape import landscape_margin
 
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad=(1.0, 1.0, 1.0, 0.0))
     lv = _levels(land.energy, levels)
-    norm = BoundaryNorm(lv, ncolors=cmap.N, extend="neither") if lv.size >= 2 else Normalize()
     fig = _new_figure(figsize)
     axes = fig.subplots(1, 2, sharex=True, sharey=True)
     where = [_elbow_of(m, target, pair, e.q) for e in eqs]
-    mesh = None
+    QI, QJ = np.meshgrid(land.qi, land.qj, indexing="xy")        # (len(qj), len(qi)): matplotlib's order
+    fill = None
     for b, (ax, elbow) in enumerate(zip(axes, ("+1", "-1"))):
         E = np.ma.masked_invalid(land.energy[b].T)
-        mesh = ax.pcolormesh(land.qi, land.qj, E, shading="nearest", cmap=cmap, norm=norm, rasterized=True)
+        mesh = ax.pcolormesh(land.qi, land.qj, E, shading="nearest", cmap=cmap, rasterized=True, visible=False)
         mesh.set_gid(f"energy-elbow{elbow}")
-        if lv.size >= 2 and E.count() > 3:
-            cs = ax.contour(land.qi, land.qj, E, levels=lv, colors="k", linewidths=0.4, alpha=0.6)
+        region = landscape_region(m, target, pair, land.qi, land.qj, 1 if b == 0 else -1)
+        if region is not None and lv.size >= 2:
+            margin, qext = landscape_margin(m, target, pair, QI, QJ, 1 if b == 0 else -1)
+            Eext = _energy_of(m, qext)                           # continued beyond the boundary, then clipped
+            fill = ax.contourf(land.qi, land.qj, Eext, levels=lv, cmap=cmap, extend="both")
+            fill.set_gid(f"energy-fill-elbow{elbow}")
+            fill.set_clip_path(region, ax.transData)
+            cs = ax.contour(land.qi, land.qj, Eext, levels=lv, colors="k", linewidths=0.4, alpha=0.6)
             cs.set_gid(f"contour-elbow{elbow}")
+            cs.set_clip_path(region, ax.transData)
+        if region is not None:
+            edge = PathPatch(region, facecolor="none", edgecolor="black", lw=1.0, zorder=4)
+            edge.set_gid(f"boundary-elbow{elbow}")
+            ax.add_patch(edge)
         mine = [e for e, w in zip(eqs, where) if w == b]
         pts = np.array([[e.q[pair[0]], e.q[pair[1]]] for e in mine]).reshape(-1, 2)
         sc = ax.scatter(pts[:, 0], pts[:, 1], c=[STABILITY_COLORS.get(e.kind, "k") for e in mine] or None,
                         s=60, edgecolors="black", linewidths=0.8, zorder=5)
         sc.set_gid(f"equilibria-elbow{elbow}")
         for e, (x, y) in zip(mine, pts):
-            ax.annotate(f"{e.shape}", (x, y), textcoords="offset points", xytext=(5, 5), fontsize=8,
-                        fontweight="bold", color="black",
-                        bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.7})
-        ax.set_title(f"elbow {elbow}", fontsize=10)
-        ax.set_xlabel(f"$q_{pair[0] + 1}$ (rad)")
+            # the label on the side away from the panel's centre (inside the region's hull, not over the edge)
+            cx = 0.5 * (land.qi[0] + land.qi[-1])
+            right = x <= cx
+            ax.annotate(f"{e.shape}", (x, y), textcoords="offset points", xytext=(7 if right else -7, 5),
+                        ha="left" if right else "right", fontsize=8, fontweight="bold", color="black", zorder=6,
+                        bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8})
+        u, v = (k + 1 for k in range(4) if k not in pair)
+        ax.set_title(f"elbow {elbow} (of the two-link solution for $q_{u}, q_{v}$)", fontsize=9)
+        ax.set_xlabel(f"joint angle $q_{pair[0] + 1}$ (rad)")
         ax.set_xlim(float(np.min(land.qi)), float(np.max(land.qi)))
         ax.set_ylim(float(np.min(land.qj)), float(np.max(land.qj)))
         ax.set_aspect("equal", adjustable="box")
-    axes[0].set_ylabel(f"$q_{pair[1] + 1}$ (rad)")
-    if mesh is not None:
-        fig.colorbar(mesh, ax=list(axes), label="energy E", shrink=0.9)
+        ax.xaxis.set_major_locator(MaxNLocator(nbins=5))
+        ax.grid(True, lw=0.3, alpha=0.4)
+    axes[0].set_ylabel(f"joint angle $q_{pair[1] + 1}$ (rad)")
+    if fill is not None:
+        fig.colorbar(fill, ax=list(axes), label=f"elastic energy $E$ ({ENERGY_UNIT})", shrink=0.9,
+                     ticks=lv[::max(1, math.ceil(lv.size / 8))])
     kinds = [k for k in STABILITY_COLORS if any(e.kind == k for e in eqs)]
-    if kinds:
-        axes[1].legend([Line2D([], [], ls="none", marker="o", mfc=STABILITY_COLORS[k], mec="black") for k in kinds],
-                       [_KIND_TEXT[k] for k in kinds], fontsize=7, loc="upper right")
-    fig.suptitle(f"Energy landscape E(q{pair[0] + 1}, q{pair[1] + 1}), n = {m.n}, "
-                 f"$\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}: {len(eqs)} equilibria", fontsize=11)
+    hs = [Line2D([], [], ls="none", marker="o", ms=7, mfc=STABILITY_COLORS[k], mec="black") for k in kinds]
+    ls = [f"{_KIND_TEXT[k]} equilibrium" for k in kinds]
+    hs.append(Line2D([], [], color="black", lw=1.0))
+    ls.append("boundary: tip unreachable or a joint at its range bound beyond")
+    fig.legend(hs, ls, fontsize=7, loc="outside lower center", ncols=len(hs), frameon=False)
+    others = [k + 1 for k in range(4) if k not in pair]
+    fig.suptitle(f"Energy landscape $E(q_{pair[0] + 1}, q_{pair[1] + 1})$, $q_{others[0]}, q_{others[1]}$ solved "
+                 f"for the tip at $\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}: {len(eqs)} equilibria\n{chain_label(m)}",
+                 fontsize=9)
     return fig
 
 
@@ -491,16 +717,21 @@ def plot_shapes(m: Manipulator, dx: float, dy: float = 0.0, *, equilibria: list[
         line, = ax.plot([g["tip"][0]], [g["tip"][1]], marker="x", color="black", ms=6, zorder=5)
         line.set_gid("tip")
         ax.set_title(f"{e.shape} ({e.signs}): {_KIND_TEXT.get(e.kind, e.kind)}\n"
-                     f"E = {e.energy:.4g}, F = ({e.fx:.3g}, {e.fy:.3g})", fontsize=8, color=col)
+                     f"E = {e.energy:.4g}, F = ({_num(e.fx, e.fy)}, {_num(e.fy, e.fx)})", fontsize=8, color=col)
         ax.set_xlim(lo[0], hi[0])
         ax.set_ylim(lo[1], hi[1])
         ax.set_aspect("equal", adjustable="box")
         ax.tick_params(labelsize=7)
+        if idx % cols == 0:
+            ax.set_ylabel("$y$ (length)", fontsize=8)
+        if idx + cols >= k:
+            ax.set_xlabel("$x$ (length)", fontsize=8)
     for ax in axes[k:]:
         ax.set_visible(False)
     more = f" (the {k} lowest of {len(eqs)})" if len(eqs) > k else ""
-    fig.suptitle(f"Equilibria at $\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}, n = {m.n}: {len(eqs)}{more}; "
-                 "spring 1 solid, spring 2 dashed", fontsize=10)
+    fig.suptitle(f"Equilibria with the tip held at $\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}: {len(eqs)}{more}\n"
+                 f"{chain_label(m)}; spring 1 solid, spring 2 dashed; energy $E$ in {ENERGY_UNIT}, "
+                 f"tip force $F$ in {FORCE_UNIT}", fontsize=9)
     return fig
 
 
@@ -540,13 +771,62 @@ def physical_range(seg: Segment, num: int = 401) -> np.ndarray:
     return np.linspace(-lim, lim, int(num) + 2)[1:-1]
 
 
+def _clean(v: float, scale: float, rel: float = 1e-9) -> float:
+    """``v`` with rounding noise removed: ``0.0`` when ``|v| <= rel * scale`` (e.g. ``K = 1.1e-16`` for ``K = 0``)."""
+    return 0.0 if abs(v) <= rel * abs(scale) else float(v)
+
+
+def stiffness_text(seg: Segment) -> str:
+    """``"K = -1: two-mode"``: the joint stiffness ``K = E''(0)`` of a segment, zero to rounding printed as 0
+    (relative to the scale ``k (b L0 + 2 (a^2 + b^2))`` of its terms), and the shape of its torque curve
+    (``monotonic``, ``two-mode`` when ``K < 0``, ``degenerate`` at ``K = 0``, else ``non-monotonic``)."""
+    kmax = max(seg.k1, seg.k2)
+    scale = kmax * (seg.b * max(seg.L1_0, seg.L2_0) + 2.0 * (seg.a ** 2 + seg.b ** 2))
+    K = _clean(seg.stiffness, scale)
+    if K == 0.0:
+        kind = "degenerate"
+    elif K < 0.0:
+        kind = "two-mode"
+    else:
+        kind = "monotonic" if seg.monotonic() else "non-monotonic"
+    return f"K = {K:.3g}: {kind}"
+
+
+def torque_zeros(q: np.ndarray, M: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The equilibria of an unloaded segment on a sampled torque curve: the angles where ``M`` is zero or
+    changes sign (linear interpolation between samples), and whether each is stable: ``M`` falls through
+    zero (positive before, negative after, so a deflection is pushed back; also at ``K = 0`` when the curve
+    is monotonic there)."""
+    q, M = np.asarray(q, float), np.asarray(M, float)
+    out_q, out_s = [], []
+    for i in range(q.size - 1):
+        a, b = M[i], M[i + 1]
+        if a == 0.0 and 0 < i:
+            out_q.append(q[i])
+            out_s.append(bool(M[i - 1] > 0.0 > b))
+        elif a * b < 0.0:
+            out_q.append(q[i] - a * (q[i + 1] - q[i]) / (b - a))
+            out_s.append(bool(a > 0.0))
+    return np.array(out_q, float), np.array(out_s, bool)
+
+
+def _common_label(segs: Sequence[Segment]) -> str:
+    """The parameters every segment shares, ``"a = 0.5, b = 1, k = 1"`` (empty when none)."""
+    same = [p for p in MAP_PARAMS if len({getattr(s, p) for s in segs}) == 1]
+    return ", ".join(f"{p} = {_fmt(getattr(segs[0], p))}" for p in same)
+
+
 def plot_torque(segments: Segment | Manipulator | Iterable[Segment], q: Any = None, *, num: int = 401,
-                labels: Sequence[str] | None = None, figsize: tuple[float, float] = (6.4, 4.6)) -> Any:
+                labels: Sequence[str] | None = None, figsize: tuple[float, float] = (7.0, 5.4)) -> Any:
     """Torque-angle curves ``M(q)`` (Fig. 2) of one or several segments from :meth:`Segment.torque`.
 
     ``q``: the angles (rad) for every curve; default ``num`` angles across each segment's own
     open physical range ``|q| < pi - 2 beta`` (:func:`physical_range`), whose bounds are drawn
-    as dotted verticals. A Manipulator contributes its distinct segments.
+    as dotted verticals. A Manipulator contributes its distinct segments. Each curve's legend entry
+    gives the parameters that differ between the segments and the joint stiffness
+    (:func:`stiffness_text`: ``K > 0`` monotonic, ``K < 0`` two-mode, i.e. the straight joint unstable);
+    the parameters they share are in the title. The legend sits below the axes (never over the data);
+    the torque is in ``stiffness x length^2``, the angle in rad.
     """
     segs = _segments(segments)
     if labels is not None and len(labels) != len(segs):
@@ -560,21 +840,45 @@ def plot_torque(segments: Segment | Manipulator | Iterable[Segment], q: Any = No
     for k, seg in enumerate(segs):
         x = physical_range(seg, num) if qs is None else qs
         y = seg.torque(x)
-        lab = labels[k] if labels is not None else segment_label(seg, segs)
-        lab += f" (K = {seg.stiffness:.3g}{'' if seg.monotonic() else ', non-monotonic'})"
+        lab = labels[k] if labels is not None else (segment_label(seg, segs) if len(segs) > 1 else "")
+        lab = (f"{lab} ({stiffness_text(seg)})" if lab else stiffness_text(seg))
         line, = ax.plot(x, y, lw=1.6, label=lab)
         line.set_gid(f"torque-{k}")
+        qz, stable = torque_zeros(x, y)
+        for flag, gid_ in ((True, "stable"), (False, "unstable")):
+            sel = stable == flag
+            # unstable: a larger open ring on top, visible around the stable dots of other curves at q = 0
+            pts, = ax.plot(qz[sel], np.zeros(int(sel.sum())), ls="none", marker="o", ms=6.0 if flag else 10.0,
+                           zorder=5 if flag else 6, color=line.get_color(),
+                           mfc=line.get_color() if flag else "none", mec=line.get_color(), mew=1.6)
+            pts.set_gid(f"torque-{k}-{gid_}")
         lim = seg.joint_limit
         if not any(abs(lim - l) < 1e-12 for l in limits):
             limits.append(lim)
             for sgn in (-1, 1):
                 ax.axvline(sgn * lim, color=line.get_color(), ls=":", lw=1.0)
-    ax.set_xlabel("joint angle q (rad)")
-    ax.set_ylabel("spring torque M(q)")
+    ax.set_xlabel("joint angle $q$ (rad)")
+    ax.set_ylabel(f"spring torque $M(q) = -dE/dq$ ({ENERGY_UNIT})")
     ax.grid(True, lw=0.4, alpha=0.5)
-    ax.legend(fontsize=7, loc="best")
-    ax.set_title("Torque-angle curves (dotted: physical range |q| < $\\pi$ - 2$\\beta$)", fontsize=10)
+    handles, labs = ax.get_legend_handles_labels()
+    from matplotlib.lines import Line2D
+
+    handles += [Line2D([], [], ls="none", marker="o", ms=6.0, mfc="0.3", mec="0.3"),
+                Line2D([], [], ls="none", marker="o", ms=9.0, mfc="none", mec="0.3", mew=1.6)]
+    labs += ["equilibrium of the unloaded segment, stable ($M$ falls through 0)", "equilibrium, unstable ($M$ rises)"]
+    handles.append(_dotted_handle())
+    labs.append("physical range $|q| < \\pi - 2\\beta$ (dotted)")
+    fig.legend(handles, labs, fontsize=7, loc="outside lower center", ncols=1 if len(handles) > 3 else 2,
+               frameon=False)
+    common = _common_label(segs)
+    ax.set_title("Torque-angle curves of a segment (Fig. 2)" + (f"\n{common}" if common else ""), fontsize=9)
     return fig
+
+
+def _dotted_handle() -> Any:
+    from matplotlib.lines import Line2D
+
+    return Line2D([], [], color="0.4", ls=":", lw=1.0)
 
 
 # ---------------------------------------------------------------------------- critical-load map
@@ -617,14 +921,21 @@ def critical_load_grid(m: Manipulator, param_x: str, values_x: Any, param_y: str
     return xs, ys, P
 
 
+#: Axis labels of the design parameters (:func:`plot_map`).
+PARAM_LABELS = {"a": "triangle half-base $a$ (length)", "b": "triangle height $b$ (length)",
+                "k": "spring stiffness $k$ (stiffness)", "L0": "spring rest length $L_0$ (length)"}
+
+
 def plot_map(m: Manipulator, param_x: str, values_x: Any, param_y: str, values_y: Any, boundary: str = "guided",
-             *, figsize: tuple[float, float] = (6.6, 5.0)) -> Any:
+             *, levels: int = 8, figsize: tuple[float, float] = (6.8, 5.4)) -> Any:
     """Critical load ``P = -Fx0`` of :func:`~tensegrity_opt.critical_force` over two design parameters.
 
     ``param_x``, ``param_y``: two of ``a``, ``b``, ``k``, ``L0``, set to the same value in every
     segment (``Segment.replace``; ``k``/``L0`` set both springs). Cells where ``critical_force``
-    raises (the straight chain is unstable or not an equilibrium) are blank. The manipulator's
-    own design is starred when it is uniform in both parameters.
+    raises (the straight chain is unstable or not an equilibrium) are blank. Contour lines at about
+    ``levels`` evenly spaced round values (:class:`~matplotlib.ticker.MaxNLocator`), labelled; a colour bar
+    with the quantity and unit; the other parameters in the title. The manipulator's own design is starred
+    (and labelled "design") when it is uniform in both parameters.
     """
     xs, ys, P = critical_load_grid(m, param_x, values_x, param_y, values_y, boundary)
     import matplotlib
@@ -635,23 +946,50 @@ def plot_map(m: Manipulator, param_x: str, values_x: Any, param_y: str, values_y
     Pm = np.ma.masked_invalid(P)
     mesh = ax.pcolormesh(xs, ys, Pm, shading="nearest", cmap=cmap)
     mesh.set_gid("critical-load")
-    if Pm.count() >= 4 and xs.size >= 2 and ys.size >= 2 and np.nanmax(P) > np.nanmin(P):
-        cs = ax.contour(xs, ys, Pm, levels=8, colors="white", linewidths=0.6)
+    lv = _levels(P, levels)
+    if Pm.count() >= 4 and xs.size >= 2 and ys.size >= 2 and lv.size >= 2:
+        cs = ax.contour(xs, ys, Pm, levels=lv, colors="white", linewidths=0.6)
+        cs.set_gid("critical-load-contours")
         ax.clabel(cs, fontsize=7, fmt="%.3g")
-    fig.colorbar(mesh, ax=ax, label=f"critical load P = -Fx0 ({boundary} tip)")
+    fig.colorbar(mesh, ax=ax, label=f"critical load $P = -F_{{x0}}$ ({FORCE_UNIT}), {boundary} tip")
+    # condition (4), K = k (b L0 - 2 (b^2 - a^2)) = 0, from the formula on a fine grid: the exact edge of the
+    # stable designs (symmetric segments all alike apart from the two parameters)
+    seg0 = m.segments[0]
+    alike = all(s.replace(**{param_x: getattr(seg0, param_x), param_y: getattr(seg0, param_y)}) == seg0
+                for s in m.segments)
+    if alike and seg0.symmetric:
+        fx_ = np.linspace(float(xs.min()), float(xs.max()), 201)
+        fy_ = np.linspace(float(ys.min()), float(ys.max()), 201)
+        FX, FY = np.meshgrid(fx_, fy_)
+        par = {p: np.full(FX.shape, float(getattr(seg0, p))) for p in ("a", "b", "L0")}
+        for p, V in ((param_x, FX), (param_y, FY)):
+            if p in par:
+                par[p] = V
+        K4 = par["b"] * par["L0"] - 2.0 * (par["b"] ** 2 - par["a"] ** 2)
+        if K4.min() < 0.0 < K4.max():
+            c4 = ax.contour(fx_, fy_, K4, levels=[0.0], colors="black", linewidths=1.2, linestyles="--")
+            c4.set_gid("condition4")
+            from matplotlib.lines import Line2D
+
+            ax.legend([Line2D([], [], color="black", lw=1.2, ls="--")],
+                      ["$K = 0$: $b L_0 = 2(b^2 - a^2)$ (condition 4)"], fontsize=7, loc="upper center",
+                      bbox_to_anchor=(0.5, -0.12), frameon=False)
     base_x = {getattr(s, param_x) for s in m.segments}
     base_y = {getattr(s, param_y) for s in m.segments}
     if len(base_x) == 1 and len(base_y) == 1:
         bx, by = next(iter(base_x)), next(iter(base_y))
         if not isinstance(bx, tuple) and not isinstance(by, tuple):
-            star, = ax.plot([bx], [by], marker="*", ms=12, color="white", mec="black", ls="none", label="design")
+            star, = ax.plot([bx], [by], marker="*", ms=12, color="white", mec="black", ls="none")
             star.set_gid("design")
-            ax.legend(fontsize=7, loc="best")
-    ax.set_xlabel(param_x)
-    ax.set_ylabel(param_y)
+            ax.annotate("design", (bx, by), textcoords="offset points", xytext=(7, 5), fontsize=7,
+                        bbox={"boxstyle": "round,pad=0.15", "fc": "white", "ec": "none", "alpha": 0.8})
+    ax.set_xlabel(PARAM_LABELS[param_x])
+    ax.set_ylabel(PARAM_LABELS[param_y])
     blank = int(np.count_nonzero(~np.isfinite(P)))
-    ax.set_title(f"Critical load, n = {m.n}" + (f" (blank: {blank} points where the straight chain is not a "
-                                                "stable equilibrium)" if blank else ""), fontsize=9)
+    fixed = chain_label(m, exclude=(param_x, param_y))
+    ax.set_title(f"Critical buckling load over {param_x} and {param_y}; {fixed}"
+                 + (f"\nblank: {blank} designs where the straight chain is not a stable equilibrium" if blank else ""),
+                 fontsize=9)
     return fig
 
 
@@ -670,9 +1008,6 @@ EVENT_STYLES = {
     "joint_limit": {"marker": "X", "ms": 7.5, "mfc": "0.35", "mec": "black", "label": "joint limit (end)"},
 }
 
-#: Axis label units: forces are stiffness x length, energies stiffness x length^2 (the caller's units).
-FORCE_UNIT = "stiffness × length"
-ENERGY_UNIT = "stiffness × length²"
 
 
 def morse_color(index: int) -> str:
@@ -680,18 +1015,23 @@ def morse_color(index: int) -> str:
     return MORSE_COLORS[min(max(int(index), 0), len(MORSE_COLORS) - 1)]
 
 
-def chain_label(m: Manipulator) -> str:
-    """``"n = 4, a = 1, b = 1, k = 1, L0 = 1"``: the chain's parameters for a title; a parameter that
-    differs between segments is given as its range (``"k = 0.5..2"``)."""
+def chain_label(m: Manipulator, exclude: Sequence[str] = ()) -> str:
+    """``"n = 4, a = 1, b = 1, k = 1, L0 = 1"``: the chain's parameters for a title; a chain whose segments
+    differ is ``"heterogeneous, n = 5, ..."`` with each parameter that differs given as its range
+    (``"k = 0.5..2"``). ``exclude``: parameters left out (e.g. the axes of a map)."""
     parts = [f"n = {m.n}"]
+    mixed = False
     for p in MAP_PARAMS:
         vals = [getattr(s, p) for s in m.segments]
+        if p in exclude:
+            continue
         if all(v == vals[0] for v in vals):
             parts.append(f"{p} = {_fmt(vals[0])}")
         else:
+            mixed = True
             flat = [float(x) for v in vals for x in (v if isinstance(v, tuple) else (v,))]
             parts.append(f"{p} = {min(flat):g}..{max(flat):g}")
-    return ", ".join(parts)
+    return ("heterogeneous, " if mixed else "") + ", ".join(parts)
 
 
 def _control_text(control: Any) -> str:
@@ -1016,6 +1356,13 @@ def plot_limit_load(result: Any, *, m: Manipulator | None = None, figsize: tuple
         pt.set_gid("quasi-buckling")
         handles.append(Line2D([], [], ls=":", color="tab:green", marker="*", ms=9, mfc="tab:green", mec="black"))
         labels.append(f"quasi-buckling load {qb:.6g} (least tangent stiffness)")
+    finite_u = U[np.isfinite(U)]
+    if finite_u.size and float(np.ptp(finite_u)) <= 1e-9 * max(1.0, float(br.straight_length)):
+        # e.g. the straight chain under a guided load: it does not move until the limit point
+        note = ax.annotate("the tip does not move\nalong the load on this\npath ($u$ = 0)", (0.5, 0.5),
+                           xycoords="axes fraction", textcoords="offset points", xytext=(8, 0), ha="left",
+                           fontsize=8, color="0.3")
+        note.set_gid("no-displacement-note")
     ax.set_xlabel("tip displacement along the load $u = d \\cdot (\\mathrm{tip} - \\mathrm{tip}_0)$ (length)")
     ax.set_ylabel(f"load $t = |F|$ along $d$ (force, {FORCE_UNIT})")
     ax.grid(True, lw=0.4, alpha=0.5)
@@ -1102,7 +1449,7 @@ def _cell_edges(v: np.ndarray, other: np.ndarray) -> np.ndarray:
 
 
 def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = None,
-               figsize: tuple[float, float] = (8.8, 5.6)) -> Any:
+               figsize: tuple[float, float] = (7.6, 6.4)) -> Any:
     """The workspace stability atlas of :func:`~tensegrity_opt.stability_atlas` (or
     :func:`~tensegrity_opt.applications.sweeps.atlas_from_rows`): the number of stable equilibria of the held
     tip as a map over the deflection ``(dx, dy)``, one cell centred on each target, one colour per count (a
@@ -1110,7 +1457,7 @@ def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = 
     failed ones (an error, or not computed within the time limit) dark and cross-hatched. On top: the curves
     where the least-energy branch switches (``atlas.curves("switch")``, solid) and where stable branches end
     (``atlas.curves("branch_end")``, dashed), each crossing located on a grid edge marked. The legend sits
-    beside the axes (it never covers data); the axes are the deflections in the caller's length unit; the title
+    below the axes (it never covers data); the axes are the deflections in the caller's length unit; the title
     names the method, the grid, the status when incomplete and (``m``) the chain's parameters.
 
     Artists (``gid``): ``"n_stable"`` (QuadMesh, masked array ``n_stable[j, i]``, masked where unreachable or
@@ -1176,7 +1523,9 @@ def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = 
     ax.set_ylim(float(ye[0]), float(ye[-1]))
     ax.set_xlabel(branch_quantity_label("dx") + ", > 0 shortens the chain")
     ax.set_ylabel(branch_quantity_label("dy"))
-    _outside_legend(ax, handles, labels)
+    if handles:                     # below the map (beside it, the long entries squeeze the map)
+        fig.legend(handles, labels, fontsize=7, loc="outside lower center", ncols=2 if len(handles) > 2 else 1,
+                   frameon=False)
     if title is None:
         certified = bool(np.all(atlas.certified[good])) and good.any()
         title = (f"Stability atlas of the held tip: {X.size} x {Y.size} targets, method {atlas.method}"
@@ -1188,8 +1537,8 @@ def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = 
 
 
 # ---------------------------------------------------------------------------- control: plans and simulations
-#: Margin (torque per radian) label unit.
-MARGIN_UNIT = "stiffness × length² / rad"
+#: Margin label unit (an eigenvalue of a Hessian of the energy in the joint angles).
+MARGIN_UNIT = "stiffness × length² / rad²"
 #: Colours of the control figures: infeasible steps, snaps (arrow, fold), landings, targets.
 CONTROL_STYLES = {
     "infeasible": {"facecolor": "tab:red", "alpha": 0.16, "edgecolor": "none"},

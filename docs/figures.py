@@ -1,0 +1,127 @@
+"""The figures of ``docs/figures.md``: our versions of the paper's Figs. 2, 4, 5 and 6, and a few beyond it.
+
+Run from the repository root::
+
+    python docs/figures.py            # writes docs/img/<name>.png (110 dpi, a 256-colour palette, each <= 150 kB)
+    python docs/figures.py fig6_curve map     # only these
+
+Every figure is computed by the library (``tensegrity_opt``) and drawn by
+``tensegrity_opt.applications.plots``; the parameters are the paper's (n = 4, a/b = 1, L0/b = 1,
+k = 1, lengths in units of b) unless a figure says otherwise in its title.
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import numpy as np
+
+ROOT = Path(__file__).resolve().parents[1]
+if str(ROOT) not in sys.path:
+    sys.path.insert(0, str(ROOT))
+
+import tensegrity_opt as to  # noqa: E402
+from tensegrity_opt.applications import plots  # noqa: E402
+
+OUT = ROOT / "docs" / "img"
+DPI = 110
+MAX_BYTES = 150_000
+PAPER = to.Manipulator.uniform(4, a=1.0, b=1.0, k=1.0, L0=1.0)
+
+
+def fig2_torque():
+    """Fig. 2: torque-angle curves, monotonic and two-mode. a/b = 0.5, so condition (4) reads L0 > 1.5 b:
+    K = k (b L0 - 2 (b^2 - a^2)) = -0.5, 0, +0.5 for L0 = 1, 1.5, 2 (L0 = 1: stable wells at q = +-1.682)."""
+    segs = [to.Segment(0.5, 1.0, 1.0, L0) for L0 in (1.0, 1.5, 2.0)]
+    return plots.plot_torque(segs)
+
+
+def fig4_landscape():
+    """Fig. 4: the energy E(q1, q4) of the paper's chain, q2, q3 solved, at dx = 0.1 (dy = 0): six equilibria."""
+    return plots.plot_landscape(PAPER, 0.1, 0.0, pair=(0, 3), grid=121)
+
+
+def fig4_landscape_q1q2():
+    """Fig. 4, its second landscape: E(q1, q2), q3, q4 solved, same chain and deflection."""
+    return plots.plot_landscape(PAPER, 0.1, 0.0, pair=(0, 1), grid=121)
+
+
+def fig5_landscape():
+    """Fig. 5: contours of E(q1, q4) for another configuration: the tip also moved sideways (dx = 0.3,
+    dy = 0.2); the symmetry of Fig. 4 is broken."""
+    return plots.plot_landscape(PAPER, 0.3, 0.2, pair=(0, 3), grid=121)
+
+
+def fig6_curve():
+    """Fig. 6: the force-deflection curves Fx(dx, 0), Fy(dx, 0) of the paper's chain, with the paper's
+    asymptotes after buckling (eq. 26, dotted): Fx ~ Fx0, Fy ~ alpha_5 / sqrt(b mu_x) sqrt(dx)."""
+    dx = np.linspace(0.0, 1.0, 41)
+    fig = plots.plot_curve(PAPER, dx, 0.0)
+    b = to.critical_force(PAPER)
+    coef = float(b.modes[0].fy_coefficient)
+    ax_fx, ax_fy = fig.axes[:2]
+    fine = np.linspace(0.0, 1.0, 201)
+    ax_fx.axhline(b.force, color="tab:green", ls=":", lw=1.4, zorder=2)
+    ax_fx.annotate(f"eq. (20): $F_x^0$ = {b.force:.4f}", (1.0, b.force), textcoords="offset points", xytext=(-4, 6),
+                   ha="right", fontsize=8, color="tab:green")
+    ax_fy.plot(fine, coef * np.sqrt(fine), color="tab:green", ls=":", lw=1.4, zorder=2)
+    ax_fy.annotate(f"eq. (26): $F_y \\approx {coef:.4f}\\sqrt{{\\delta_x}}$", (0.55, coef * np.sqrt(0.55)),
+                   textcoords="offset points", xytext=(6, -14), fontsize=8, color="tab:green")
+    return fig
+
+
+def shapes():
+    """Table 2: the chain in each of the six equilibria at dx = 0.1."""
+    return plots.plot_shapes(PAPER, 0.1, 0.0)
+
+
+def branch():
+    """The guided straight chain under compression and the branches born at its critical loads."""
+    brs = to.bifurcation_diagram(PAPER, np.zeros(4), "guided", depth=1, t_max=2.2, t_min=-0.2, max_points=400)
+    return plots.plot_branches(brs, x="t", y="q1", m=PAPER)
+
+
+def atlas():
+    """The number of stable equilibria of the held tip over (dx, dy), n = 3, a = 0.5 (bistable segments)."""
+    m = to.Manipulator.uniform(3, a=0.5)
+    at = to.stability_atlas(m, np.linspace(0.2, 1.4, 13), np.linspace(-0.6, 0.6, 13))
+    return plots.plot_atlas(at, m=m)
+
+
+def map():  # noqa: A001 - the figure's name
+    """The critical load over a and L0 (guided tip), the edge K = 0 of condition (4) drawn from the formula."""
+    return plots.plot_map(PAPER, "a", np.linspace(0.3, 1.5, 25), "L0", np.linspace(0.2, 2.5, 24))
+
+
+FIGURES = {f.__name__: f for f in (fig2_torque, fig4_landscape, fig4_landscape_q1q2, fig5_landscape, fig6_curve,
+                                    shapes, branch, atlas, map)}
+
+
+def _palette(path: Path) -> None:
+    """Rewrite the PNG with a 256-colour palette (a third of the bytes; the figures have few colours)."""
+    from PIL import Image
+
+    with Image.open(path) as im:
+        rgb = im.convert("RGB")
+    rgb.quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE).save(path, optimize=True)
+
+
+def main(names: list[str]) -> int:
+    OUT.mkdir(parents=True, exist_ok=True)
+    for name in names or list(FIGURES):
+        if name not in FIGURES:
+            print(f"unknown figure {name!r}; one of {', '.join(FIGURES)}", file=sys.stderr)
+            return 2
+        path = plots.save(FIGURES[name](), OUT / f"{name}.png", dpi=DPI)
+        _palette(path)
+        size = path.stat().st_size
+        print(f"wrote {path.relative_to(ROOT)} ({size} bytes)")
+        if size > MAX_BYTES:
+            print(f"  {name}.png is larger than {MAX_BYTES} bytes", file=sys.stderr)
+            return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
