@@ -173,6 +173,8 @@ def _one_error_line(err: str) -> str:
     (["buckling", "--n", "-2"], "--n"), (["plot", "torque", "--num", "0", "-o", "t.png"], "--num"),
     (["sweep", "spec.json", "--workers", "x"], "--workers"), (["curve", "--frobnicate"], "frobnicate"),
     ([], "COMMAND"), (["plot"], "KIND"), (["serve", "--port", "-5"], "--port"),
+    # a chain too long to build answers at once instead of hanging (it allocated n x n matrices for n = 1e9)
+    (["buckling", "--n", "1000000000"], "at most 10000 segments"), (["curve", "--n", "10001"], "at most"),
 ])
 def test_a_usage_error_is_one_line_and_exit_2(argv, says, capsys):
     """Issue 18: every bad option is one line ``error: ...`` on stderr (argparse's usage block left out) and

@@ -61,6 +61,20 @@ def positive_int(text: str) -> int:
     return v
 
 
+#: Longest uniform chain the command line builds (``--n``): beyond it the dense solvers' n x n matrices alone
+#: take gigabytes and a command would run for hours or exhaust memory instead of answering (``--n 1e9`` hung).
+MAX_SEGMENTS = 10_000
+
+
+def segment_count(text: str) -> int:
+    """An argparse type: a number of segments, 1 ..  :data:`MAX_SEGMENTS`, else a usage error (exit 2)."""
+    v = positive_int(text)
+    if v > MAX_SEGMENTS:
+        raise argparse.ArgumentTypeError(f"expected at most {MAX_SEGMENTS} segments (the command line's limit: "
+                                         f"the solvers' n x n matrices), got {v}")
+    return v
+
+
 def finite_float(text: str) -> float:
     """An argparse type: a finite number, else a usage error (exit 2)."""
     try:
@@ -89,7 +103,7 @@ def eq_table(eqs) -> list[str]:
 def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     """The manipulator options every analysis command takes (uniform chain or a JSON file)."""
     g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
-    g.add_argument("--n", type=positive_int, default=4, help="number of identical segments")
+    g.add_argument("--n", type=segment_count, default=4, help=f"number of identical segments (1 to {MAX_SEGMENTS})")
     g.add_argument("--a", type=finite_float, default=1.0, help="triangle half-height a (length)")
     g.add_argument("--b", type=finite_float, default=1.0, help="triangle half-length b (length; a segment is 2 b long straight)")
     g.add_argument("--k", type=finite_float, default=1.0, help="spring stiffness (force / length)")
