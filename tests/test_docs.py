@@ -51,7 +51,7 @@ def test_the_readme_set_up_names_the_prerequisites():
     assert setup.index("python3 -m venv") < setup.index("pip install '.[service]'")      # before installing
     assert "gcc" in setup and "virtual machine" in setup                              # the compiler, and without it
     assert "apt-get install chromium chromium-driver" in setup
-    assert "708 s" in setup and "second terminal" in setup and "serve &" in setup
+    assert "minutes on 2 cores" in setup and "second terminal" in setup and "serve &" in setup
 
 
 def test_the_readme_figure_examples_are_valid_bodies():
