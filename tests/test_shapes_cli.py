@@ -47,7 +47,7 @@ def test_cli_json_outputs(capsys):
 def test_cli_errors(capsys, tmp_path):
     assert main(["equilibrium", "--dx", "-1"]) == 2
     assert "beyond the chain's reach" in capsys.readouterr().err
-    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 2
+    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 1          # unstable straight chain: an answer, not a usage error
     bad = tmp_path / "m.json"
     bad.write_text('{"segments": [{"a": 1, "b": -1}]}')
     assert main(["buckling", "--manipulator", str(bad)]) == 2
@@ -271,3 +271,12 @@ def test_plot_curve_of_a_partial_curve_writes_the_figure_and_prints_the_note(cap
     assert out_file.stat().st_size > 1000 and out_file.read_bytes()[:4] == b"\x89PNG"
     assert data["points"] == 3 and data["complete"] is False and data["note"] == _Partial.note
     assert err.strip() == f"tensegrity-opt: note: {_Partial.note}"
+
+
+@pytest.mark.parametrize("argv", [["buckling", "--a", "0.5", "--L0", "0.5"], ["buckling", "--a", "0.5", "--L0", "0.5", "--json"]])
+def test_a_physical_answer_is_no_usage_error(argv, capsys):
+    """Issue 18: the straight chain being unstable unloaded (K = k (b L0 - 2 (b^2 - a^2)) = 0.5 - 1.5 = -1 here,
+    by hand) is a fact about the chain: one line ``answer:`` naming K, status 1, not the usage error's 2."""
+    assert main(argv) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("tensegrity-opt: answer: ") and "K = " in err[0] and "= -1 <= 0" in err[0]

@@ -4,7 +4,9 @@ Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
 prints a readable table, or JSON with ``--json``: the result's ``to_dict()``, the body the
 HTTP API answers for the same request (one serialiser, one NaN policy: :mod:`tensegrity_opt.serialize`).
-Errors print one line to stderr and exit with status 2.
+Errors print one line to stderr and exit with status 2; a physical answer that leaves nothing to print (the
+straight chain unstable unloaded, or no equilibrium there: ``buckling`` of such a chain) prints one line
+``tensegrity-opt: answer: ...`` and exits with status 1.
 
 The library's commands only: the HTTP service's ``serve`` and ``openapi`` belong to the service
 (:mod:`service.cli`, the ``tensegrity-opt`` console script, which hands every other command to

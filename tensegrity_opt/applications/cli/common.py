@@ -13,7 +13,8 @@ import math
 import os
 import sys
 
-from ...errors import InvalidParameterError, NonFiniteResult, TensegrityError
+from ...errors import (InvalidParameterError, NonFiniteResult, StraightNotEquilibriumError, TensegrityError,
+                      UnstableStraightError)
 from ...model.manipulator import Manipulator
 
 __all__ = ["add_manipulator_options", "run_command", "positive_int", "finite_float", "HELP_FORMAT", "fmt_q",
@@ -35,6 +36,15 @@ class Parser(argparse.ArgumentParser):
 
     def error(self, message: str):  # noqa: D102  (argparse's hook)
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def answer(exc: Exception) -> int:
+    """A physical answer that leaves nothing to print (``buckling`` of a chain whose straight shape is unstable
+    unloaded, or no equilibrium at all): one line ``tensegrity-opt: answer: ...`` on stderr, exit status 1 -
+    a fact about the chain, not a bad input (2). The HTTP API answers the same with 422 and its ``code``."""
+    text = " ".join(str(exc).split()) or type(exc).__name__
+    print(f"tensegrity-opt: answer: {text}", file=sys.stderr)
+    return 1
 
 
 def error(message: object) -> int:
@@ -142,6 +152,8 @@ def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:
         data, text = args.func(args, m)
         if args.json:
             text = json.dumps(data() if callable(data) else data, indent=2)
+    except (StraightNotEquilibriumError, UnstableStraightError) as exc:
+        return answer(exc)
     except (TensegrityError, NonFiniteResult, OSError, ValueError, TypeError) as exc:
         return error(exc)
     try:
