@@ -631,27 +631,18 @@ def test_torque_label_prints_zero_for_a_zero_stiffness():
 
 
 def _partial(c, k: int):
-    """``c`` cut after ``k`` points, ended at point ``k`` (the curves contract's ``Curve.ended_at``)."""
+    """``c`` cut after ``k`` points, ended at point ``k`` (``Curve.ended_at``)."""
     import dataclasses
 
-    names = {f.name for f in dataclasses.fields(c)}
+    from tensegrity_opt.analyses.curves import CurveEnd
+
     fields = {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
     for nm in ("dx", "dy", "q", "fx", "fy", "energy", "stable", "morse_index", "branch", "shape", "status"):
         fields[nm] = fields[nm][:k]
-    from tensegrity_opt.analyses import curves
-
-    end_cls = getattr(curves, "CurveEnd", None)
-    end_kw = {"dx": float(c.dx[k]), "dy": float(c.dy[k]), "reason": "no_stable_equilibrium",
-              "message": f"no stable equilibrium at dx = {float(c.dx[k]):g}"}
-    end = end_cls(**end_kw) if end_cls is not None else __import__("types").SimpleNamespace(**end_kw)
-    if "ended_at" in names:
-        fields["ended_at"] = end
-        if "requested" in names:
-            fields["requested"] = int(c.dx.size)
-        return type(c)(**fields)
-    cut = type(c)(**fields)
-    object.__setattr__(cut, "ended_at", end)
-    return cut
+    fields["ended_at"] = CurveEnd(float(c.dx[k]), float(c.dy[k]), "no_stable_equilibrium",
+                                  f"no stable equilibrium at dx = {float(c.dx[k]):g}")
+    fields["requested"] = int(c.dx.size)
+    return type(c)(**fields)
 
 
 def test_a_partial_curve_draws_its_end():
@@ -747,9 +738,7 @@ def test_a_partial_curve_of_the_library_draws_its_end():
     m = to.Manipulator.uniform(3, a=0.5)
     dx = np.linspace(0.0, 5.5, 23)
     c = to.force_deflection(m, dx)
-    if getattr(c, "ended_at", None) is None:
-        pytest.skip("this library computes the whole curve (or raises): no partial curve to draw")
-    assert c.dx.size < dx.size
+    assert c.ended_at is not None and c.dx.size < dx.size          # K = -0.5: the stable branch ends
     fig = plots.plot_curve(m, dx, curve=c)
     assert np.array_equal(rows(gid(fig, "fx")), np.column_stack([c.dx, c.fx]))
     assert np.allclose(gid(fig, "end-marker-fx").get_xydata(), [[c.dx[-1], c.fx[-1]]])

@@ -479,7 +479,7 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
     extra: dict[str, Any] = {"ended_at": ended, "requested": npts}
     if branch == "all":
         # a branch born at the end point has no point on the curve: left out
-        extra["branches"] = [_branch_curve(dxs[:end], dys[:end], br, end) for br in branches
+        extra["branches"] = [_branch_curve(dxs[:end], dys[:end], br) for br in branches
                              if br.valid[:end].any()]
     return Curve(**{**curve.__dict__, **extra})
 
@@ -518,15 +518,13 @@ def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve
     except InvalidParameterError as exc:
         raise InvalidParameterError(exc.message, field=exc.field, **exc.details) from None
 
-    def shift(cv: Curve) -> Curve:
-        e = cv.ended_at
+    def shift(cv: Curve) -> Curve:           # ended_at speaks of the caller's deflections already (origin)
         return Curve(**{**cv.__dict__, "dx": cv.dx - origin[0], "dy": cv.dy - origin[1], "reference": "rest",
                         "origin": origin.copy(),
                         "jumps": [replace(j, dx_before=j.dx_before - origin[0], dx_after=j.dx_after - origin[0],
                                           dy_before=j.dy_before - origin[1], dy_after=j.dy_after - origin[1])
                                   for j in cv.jumps],
-                        "branches": [shift(b) for b in cv.branches],
-                        "ended_at": None if e is None else CurveEnd(float(e.dx), float(e.dy), e.reason, e.message)})
+                        "branches": [shift(b) for b in cv.branches]})
 
     return shift(c)
 
@@ -617,8 +615,9 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
                  stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), status=status, jumps=jumps)
 
 
-def _branch_curve(dxs, dys, br: BranchPoints, end: int) -> Curve:
-    """One followed branch over the first ``end`` points."""
+def _branch_curve(dxs, dys, br: BranchPoints) -> Curve:
+    """One followed branch over the points ``dxs``, ``dys`` (the first ``dxs.size`` of the run)."""
+    end = dxs.size
     return Curve(dx=dxs.copy(), dy=dys.copy(), q=br.q[:end].copy(), fx=br.F[:end, 0].copy(),
                  fy=br.F[:end, 1].copy(), energy=br.E[:end].copy(), stable=br.stable[:end].copy(),
                  morse_index=br.morse[:end].copy(),

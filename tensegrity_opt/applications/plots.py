@@ -327,12 +327,10 @@ def _num(v: float, other: float = 0.0, digits: int = 3) -> str:
 
 def _curve_end(c: Curve, xname: str) -> tuple[float, str] | None:
     """Where a partial curve (``Curve.ended_at``, the curves contract) ends on the abscissa, and why."""
-    end = getattr(c, "ended_at", None)
+    end = c.ended_at
     if end is None:
         return None
-    x = float(getattr(end, "dx" if xname == "dx" else "dy", np.nan))
-    reason = str(getattr(end, "reason", "") or "")
-    return x, reason
+    return float(end.dx if xname == "dx" else end.dy), end.reason
 
 
 def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *, curve: Curve | None = None,
@@ -466,10 +464,10 @@ def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *
                fontsize=7, loc="outside lower center", ncols=1 if long or len(handles) > 4 else 2, frameon=False)
     other = f"$\\delta_y$ = {float(c.dy[0]):g}" if xname == "dx" and c.dy.size and np.ptp(c.dy) == 0 else (
         f"$\\delta_x$ = {float(c.dx[0]):g}" if xname == "dy" and c.dx.size else "")
-    ref = " (from the rest configuration)" if getattr(c, "reference", "straight") == "rest" else ""
+    ref = " (from the rest configuration)" if c.reference == "rest" else ""
     head = ("Force-deflection curves" + (" (all branches)" if c.branches else " (least-energy stable)")
             + (f", {other}" if other else "") + ref + "; $F_x$ < 0 compressive")
-    note = getattr(c, "note", "") if end is not None else ""
+    note = c.note
     note = textwrap.fill(note, max(40, int(figsize[0] * 12))) if note else ""
     fig.suptitle(head + f"\n{chain_label(m)}" + (f"\n{note}" if note else ""), fontsize=9)
     return fig

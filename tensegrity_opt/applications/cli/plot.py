@@ -113,12 +113,10 @@ def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
 
     c = force_deflection(m, dx, args.dy, branch=args.branch)
     fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
-    complete = bool(getattr(c, "complete", True))
     out = _render(args, fig, "curve", {"points": int(c.dx.size), "jumps": [j.kind for j in c.jumps],
-                                       "branches": len(c.branches), "complete": complete,
-                                       "note": "" if complete else str(getattr(c, "note", ""))})
-    if not complete:      # the figure holds the points computed; the reader is told where and why it ends
-        note(getattr(c, "note", "") or f"the curve is partial: {c.dx.size} of {dx.size} points computed")
+                                       "branches": len(c.branches), "complete": c.complete, "note": c.note})
+    if not c.complete:    # the figure holds the points computed; the reader is told where and why it ends
+        note(c.note)
     return out
 
 
