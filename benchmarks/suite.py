@@ -242,7 +242,7 @@ def case1(cfg: Config) -> list[Row]:
         dx2, dy2 = dx + 1e-3 * math.cos(ang), dy + 1e-3 * math.sin(ang)
         q0 = prev.q.copy()
         eq = to.solve_equilibrium(m, dx2, dy2, q0=q0, local=True)
-        ours_status.add(eq.status)
+        ours_status.add(eq.solver.status)
         ours += repeat(lambda: to.solve_equilibrium(m, dx2, dy2, q0=q0, local=True), cfg.c1_reps)
         tracker = to.Tracker(m, prev)
 
@@ -366,7 +366,7 @@ _FIRST_CALL = textwrap.dedent("""
     t1 = time.perf_counter()
     eq2 = to.solve_equilibrium(to.Manipulator.uniform(n), dx * 1.001)
     t2 = time.perf_counter()
-    print(json.dumps({"first_s": t1 - t0, "second_s": t2 - t1, "energy": eq.energy, "status": eq.status}))
+    print(json.dumps({"first_s": t1 - t0, "second_s": t2 - t1, "energy": eq.energy, "status": eq.solver.status}))
 """)
 
 _SLSQP_CHILD = textwrap.dedent("""
@@ -462,10 +462,10 @@ def case4_5(cfg: Config) -> list[Row]:
             e = to.solve_equilibrium(m, 0.05 * Ln * (1 + 1e-3 * (i + 1)))
             ts.append(time.perf_counter() - t0)
             cpu.append(time.process_time() - c0)
-            its.append(e.iterations)
+            its.append(e.solver.iterations)
         sweep[n] = {"first_in_process_s": build, "cached_s": ts, "cached_median_ms": median_ms(ts),
                     "cached_cpu_s": cpu, "cached_cpu_median_ms": median_ms(cpu), "final_newton_iterations": its,
-                    "energy": eq.energy, "status": eq.status}
+                    "energy": eq.energy, "status": eq.solver.status}
         log(f"  n={n}: cached median {median_ms(ts):.1f} ms (cpu {median_ms(cpu):.1f} ms)")
     ns = np.array(cfg.c5_ns, float)
     tm = np.array([sweep[n]["cached_median_ms"] for n in cfg.c5_ns])
@@ -883,7 +883,7 @@ def _atlas_rows(cfg: Config) -> list[Row]:
              np.linspace(-0.6, 0.6, size)),
             ("pre-bent n=4", to.Manipulator([to.Segment(1, 1, 1, (1.05, 0.95))] * 2 + [to.Segment(1, 1, 1, 1)] * 2),
              np.linspace(0.2, 1.4, size), np.linspace(-0.9, 0.9, size))):
-        from tensegrity_opt.analyses.atlas import assemble_atlas
+        from tensegrity_opt.analyses.paths.atlas import assemble_atlas
 
         to.stability_atlas(m, X[:2], Y[:2])                             # warm-up (kernels built)
         t0 = time.perf_counter()
@@ -926,7 +926,7 @@ def _atlas_rows(cfg: Config) -> list[Row]:
 def case11(cfg: Config) -> list[Row]:
     """Control in actuation space: one warm preload step (the compiled least-change Newton step) vs
     ``choose_preloads`` per step and SLSQP on the same problem; ``plan_preloads`` per step with verification."""
-    from tensegrity_opt.analyses.preload_control import PreloadController
+    from tensegrity_opt.analyses.design.preload_control import PreloadController
 
     rows: list[Row] = []
     m = to.Manipulator.uniform(4, **{k: v for k, v in PAPER.items() if k != "n"})

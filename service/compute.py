@@ -17,7 +17,7 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.equilibrium import Equilibrium
+from tensegrity_opt.analyses.equilibria.equilibrium import Equilibrium
 from tensegrity_opt.applications.sweeps import atlas_from_rows
 from tensegrity_opt.errors import NonFiniteResult
 from tensegrity_opt.numerics import DENSE_MAX

@@ -7,12 +7,14 @@ from typing import Any
 PAPER_CHAIN = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 
 EQUILIBRIUM = {
+    "success": True, "status": "converged", "message": "converged (Newton_Converged, 3 iterations)",
     "q": [0.178155, -0.076587, -0.245053, -0.131183], "energy": 4.057381,
     "force": {"fx": -0.574823, "fy": 0.025785}, "morse_index": 0, "stable": True, "kind": "minimum",
     "shape": "U", "signs": "+---", "tip": [7.9, 0.0],
     "solver": {"status": "Newton_Converged", "iterations": 3},
 }
 FORCE_EQUILIBRIUM = {
+    "success": True, "status": "converged", "message": "converged (Solve_Succeeded, 10 iterations)",
     "q": [-1.532346, -0.809098, -0.358652, -0.100399], "energy": 5.509784,
     "force": {"fx": -0.3, "fy": 0.0}, "morse_index": 0, "stable": True, "kind": "minimum",
     "shape": "C", "signs": "----", "tip": [-3.066931, -4.62255],
@@ -21,7 +23,8 @@ FORCE_EQUILIBRIUM = {
 
 
 def _eq(q, energy, fx, fy, mi, kind, shape, signs) -> dict[str, Any]:
-    return {"q": q, "energy": energy, "force": {"fx": fx, "fy": fy}, "morse_index": mi, "stable": mi == 0,
+    return {"success": True, "status": "converged", "message": "converged (Newton_Converged, 5 iterations)",
+            "q": q, "energy": energy, "force": {"fx": fx, "fy": fy}, "morse_index": mi, "stable": mi == 0,
             "kind": kind, "shape": shape, "signs": signs, "tip": [7.9, 0.0],
             "solver": {"status": "converged", "iterations": 5}}
 

@@ -4,14 +4,14 @@ A stream is a connection for one chain in one mode; its session keeps what the n
 from (the library's own state objects) and answers each step with the library's ``to_dict()`` plus
 the stream's events:
 
-* ``track`` (:class:`TrackSession`): a :class:`tensegrity_opt.analyses.continuation.Tracker`; each step
+* ``track`` (:class:`TrackSession`): a :class:`tensegrity_opt.analyses.paths.continuation.Tracker`; each step
   ``(dx, dy)`` is ``Tracker.solve(dx, dy)``; a ``jump`` event when the tracker left its branch (the
   branch ended or turned unstable: a global re-solve from the last configuration, what the chain does).
 * ``preloads`` (:class:`PreloadsSession`): each step's rest lengths are commanded and the answer is the
   forward quasi-static equilibrium under the dead load,
   ``solve_equilibrium_under_force(m with those rest lengths, fx, fy, q0=last q)``; a ``snap`` event when
   the configuration moves by more than ``snap_distance`` (rad, largest joint) or the result is unstable.
-* ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.analyses.preload_control.PreloadController`;
+* ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.analyses.design.preload_control.PreloadController`;
   each step is ``PreloadController.step(target, load, end_angle)``.
 
 Every method here runs in the stream's solver thread (:class:`StreamSlots`), never on the event loop;
@@ -32,9 +32,9 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.continuation import Tracker
-from tensegrity_opt.analyses.preload_control import PreloadController
-from tensegrity_opt.analyses.rest import rest_configuration
+from tensegrity_opt.analyses.paths.continuation import Tracker
+from tensegrity_opt.analyses.design.preload_control import PreloadController
+from tensegrity_opt.analyses.equilibria.rest import rest_configuration
 from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.serialize import number, numbers
 

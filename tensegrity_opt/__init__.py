@@ -12,14 +12,14 @@ Quick start::
     ('U', True)
 """
 
-from .analyses.all_equilibria import EquilibriumSet, find_equilibria
-from .analyses.atlas import StabilityAtlas, stability_atlas
-from .analyses.branches import Branch, BranchEvent, Control, bifurcation_diagram, switch_branch, trace_branch
-from .analyses.boundaries import StabilityBoundary, stability_boundary
-from .analyses.buckling import Buckling, Mode, critical_force
-from .analyses.continuation import Tracker, solve_equilibria_batch
-from .analyses.curves import Curve, CurveEnd, Jump, force_deflection
-from .analyses.design import (
+from .analyses.equilibria.all_equilibria import EquilibriumSet, find_equilibria
+from .analyses.paths.atlas import StabilityAtlas, stability_atlas
+from .analyses.paths.branches import Branch, BranchEvent, Control, bifurcation_diagram, switch_branch, trace_branch
+from .analyses.paths.boundaries import StabilityBoundary, stability_boundary
+from .analyses.equilibria.buckling import Buckling, Mode, critical_force
+from .analyses.paths.continuation import Tracker, solve_equilibria_batch
+from .analyses.paths.curves import Curve, CurveEnd, Jump, force_deflection
+from .analyses.design.optimal import (
                      Design,
                      PreloadDesign,
                      choose_preloads,
@@ -28,16 +28,16 @@ from .analyses.design import (
                      maximize_critical_force,
                      preloads_for_critical_force,
 )
-from .analyses.equilibrium import Equilibrium, solve_equilibrium_under_force
-from .analyses.force_sensor import ForceEstimate, estimate_tip_force
-from .analyses.landscape import Landscape, energy_landscape
-from .analyses.least_energy import solve_equilibrium
-from .analyses.limit_load import LimitLoad, limit_load
-from .analyses.rest import find_equilibria_under_force, rest_configuration
-from .analyses.preload_control import PreloadController, PreloadPlan, PreloadStep, plan_preloads
-from .analyses.simulation import Simulation, SimulationEvent, simulate
-from .analyses.stiffness import cartesian_stiffness
-from .analyses.stiffness_design import LoadCapacity, StiffnessDesign, load_capacity, preloads_for_stiffness
+from .analyses.equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
+from .analyses.design.force_sensor import ForceEstimate, estimate_tip_force
+from .analyses.equilibria.landscape import Landscape, energy_landscape
+from .analyses.equilibria.least_energy import solve_equilibrium
+from .analyses.paths.limit_load import LimitLoad, limit_load
+from .analyses.equilibria.rest import find_equilibria_under_force, rest_configuration
+from .analyses.design.preload_control import PreloadController, PreloadPlan, PreloadStep, plan_preloads
+from .analyses.paths.simulation import Simulation, SimulationEvent, simulate
+from .analyses.equilibria.stiffness import cartesian_stiffness
+from .analyses.design.stiffness_design import LoadCapacity, StiffnessDesign, load_capacity, preloads_for_stiffness
 from .applications.sweeps import SweepResult, sweep
 from .errors import (
                      HomotopyUnavailableError,

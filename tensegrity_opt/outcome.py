@@ -25,7 +25,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-__all__ = ["Outcome", "freeze", "outcome_classes"]
+__all__ = ["Outcome", "SolverInfo", "freeze", "outcome_classes"]
 
 _REGISTRY: list[type[Outcome]] = []
 
@@ -71,17 +71,32 @@ class Outcome:
             raise ValueError(f"{type(self).__name__}.status {status!r} is not one of {sorted(self.STATUSES)}")
 
 
-def freeze(obj: Any) -> None:
-    """Make a (frozen) dataclass result immutable all the way: its numpy arrays become read-only, its
-    lists tuples; then check its status against its vocabulary. Call it from ``__post_init__``."""
+@dataclasses.dataclass(frozen=True, slots=True)
+class SolverInfo:
+    """The solver detail of a result: the solver's own status string (IPOPT's ``return_status``, the Newton
+    status, ``"straight"`` ...) and its iteration count (``None``: not counted)."""
+
+    status: str
+    iterations: int | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"status", "iterations"}``."""
+        return {"status": str(self.status), "iterations": None if self.iterations is None else int(self.iterations)}
+
+
+def freeze(obj: Any, *, copy: bool = True) -> None:
+    """Make a (frozen) dataclass result immutable all the way: its numpy arrays become read-only (a private
+    copy of each writeable one, unless ``copy=False``: the builder passed arrays it owns), its lists tuples;
+    then check its status against its vocabulary. Call it from ``__post_init__``."""
     if dataclasses.is_dataclass(obj):
         for f in dataclasses.fields(obj):
             v = getattr(obj, f.name)
             if isinstance(v, np.ndarray):
-                if v.flags.writeable:          # a private read-only copy: the caller's array stays theirs
-                    v = v.copy()
+                if v.flags.writeable:
+                    if copy:                       # a private copy: the caller's array stays theirs
+                        v = v.copy()
+                        object.__setattr__(obj, f.name, v)
                     v.flags.writeable = False
-                    object.__setattr__(obj, f.name, v)
             elif isinstance(v, list):
                 object.__setattr__(obj, f.name, tuple(v))
     if isinstance(obj, Outcome):

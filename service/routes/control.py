@@ -72,7 +72,7 @@ def check_simulation(req: Any, settings: Settings) -> Any:
     summary="Rest lengths for a trajectory of tip positions, on one stable branch",
     description="Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with "
                 "`margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step "
-                "(`tensegrity_opt.analyses.preload_control.plan_preloads`): `objective: change` is the least change "
+                "(`tensegrity_opt.analyses.design.preload_control.plan_preloads`): `objective: change` is the least change "
                 "from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound "
                 "is active), `margin` / `energy` IPOPT (`choose_preloads`). A step no admissible rest lengths reach "
                 "is `feasible: false` with the best reachable pose, and the next step starts from the last feasible "

@@ -16,7 +16,7 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
-from tensegrity_opt.analyses.atlas import CROSSING_KINDS
+from tensegrity_opt.analyses.paths.atlas import CROSSING_KINDS
 
 from ..config import HARD_MAX_ATLAS_TARGETS
 from .common import Deflection, Int, ManipulatorIn, RangeIn

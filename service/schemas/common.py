@@ -168,6 +168,24 @@ class Force(BaseModel):
     fy: float = Field(description="tip force along y (force units)")
 
 
+def outcome_model(result: type, name: str | None = None) -> type[BaseModel]:
+    """The contract's three fields for the library result class ``result`` (a subclass of
+    :class:`tensegrity_opt.outcome.Outcome`): ``success``, ``status`` (its closed vocabulary, each value
+    described) and ``message``. A response model derives from it, so they come first, as in ``to_dict()``."""
+    from typing import Literal
+
+    from pydantic import create_model
+
+    vocab = result.STATUSES
+    ok = sorted(result.SUCCESS)
+    return create_model(
+        name or f"{result.__name__}Outcome",
+        success=(bool, Field(description=f"whether it worked: `status` is one of {', '.join(ok)}")),
+        status=(Literal[tuple(vocab)], Field(description="; ".join(f"`{k}`: {v}" for k, v in vocab.items()))),
+        message=(str, Field(description="what happened, in a sentence")),
+    )
+
+
 class SolverInfo(BaseModel):
     status: str = Field(description="the solver's return status (IPOPT return_status, Newton status, or 'straight')")
     iterations: int | None = Field(description="iterations of the final solve (0: none needed, e.g. the straight "

@@ -1,6 +1,6 @@
 """Models of the control endpoints: ``/v1/control/plan``, ``/v1/control/simulate``, ``/v1/control/force-estimate``.
 
-* *plan*: rest lengths for a trajectory of tip positions (``tensegrity_opt.analyses.preload_control.plan_preloads``);
+* *plan*: rest lengths for a trajectory of tip positions (``tensegrity_opt.analyses.design.preload_control.plan_preloads``);
 * *simulate*: the quasi-static forward simulation under sampled inputs, snapping at folds
   (``tensegrity_opt.simulate``);
 * *force-estimate*: the tip force from measured joint angles (``tensegrity_opt.estimate_tip_force``).
@@ -18,9 +18,9 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
-from tensegrity_opt.analyses.preload_control import OBJECTIVES
-from tensegrity_opt.analyses.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
-from tensegrity_opt.analyses.simulation import STATUSES as SIMULATION_STATUSES
+from tensegrity_opt.analyses.design.preload_control import OBJECTIVES
+from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
+from tensegrity_opt.analyses.paths.simulation import STATUSES as SIMULATION_STATUSES
 
 from ..config import HARD_MAX_SEGMENTS, HARD_MAX_TRAJECTORY_STEPS
 from .common import (_STRICT, MAX_ANGLE, MAX_STIFFNESS, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Length,

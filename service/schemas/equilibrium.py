@@ -6,8 +6,10 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+import tensegrity_opt as to
+
 from ..config import HARD_MAX_SEGMENTS
-from .common import PAPER_CHAIN, Angle, Deflection, Force, ForceValue, ManipulatorIn, SolverInfo
+from .common import PAPER_CHAIN, Angle, Deflection, Force, ForceValue, ManipulatorIn, SolverInfo, outcome_model
 
 
 # ---------------------------------------------------------------------------- requests
@@ -58,7 +60,7 @@ class EquilibriaRequest(BaseModel):
 
 
 # ---------------------------------------------------------------------------- responses
-class EquilibriumOut(BaseModel):
+class EquilibriumOut(outcome_model(to.Equilibrium)):
     """An equilibrium configuration."""
 
     q: list[float] = Field(description="relative joint angles (rad)")

@@ -17,7 +17,7 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
-from tensegrity_opt.analyses.branches import EVENT_KINDS, STATUSES
+from tensegrity_opt.analyses.paths.branches import EVENT_KINDS, STATUSES
 
 from ..config import HARD_MAX_PATH_POINTS, HARD_MAX_SEGMENTS
 from .common import (_STRICT, MAX_FORCE, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Int, ManipulatorIn,
@@ -226,7 +226,7 @@ class LimitLoadRequest(_LimitLoadFields):
 
 
 class StabilityBoundaryRequest(BaseModel):
-    """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.analyses.boundaries.stability_boundary`)."""
+    """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": PAPER_CHAIN, "control": {"kind": "guided", "direction": [-1.0, 0.0]},
@@ -328,7 +328,7 @@ class CuspOut(BaseModel):
 
 
 class StabilityBoundaryOut(BaseModel):
-    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.boundaries`)."""
+    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.paths.boundaries`)."""
 
     model_config = ConfigDict(extra="allow")
     kind: Literal["fold", "branch_point"] | None = None

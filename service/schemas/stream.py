@@ -54,7 +54,7 @@ class _Open(BaseModel):
 
 
 class TrackOpen(_Open):
-    """Follow the equilibrium as the held tip moves (``tensegrity_opt.analyses.continuation.Tracker``)."""
+    """Follow the equilibrium as the held tip moves (``tensegrity_opt.analyses.paths.continuation.Tracker``)."""
 
     mode: Literal["track"]
     jump: bool = Field(True, description="where the followed branch ends or turns unstable, re-solve globally "
@@ -77,7 +77,7 @@ class PreloadsOpen(_Open):
 
 
 class InverseOpen(_Open):
-    """Tip poses: the rest lengths step by step (``tensegrity_opt.analyses.preload_control.PreloadController``).
+    """Tip poses: the rest lengths step by step (``tensegrity_opt.analyses.design.preload_control.PreloadController``).
     Chains of at most 60 segments, as ``/v1/design/preloads`` (its IPOPT fallback is that design NLP)."""
 
     mode: Literal["inverse"]

@@ -90,11 +90,11 @@ from typing import Any
 
 import numpy as np
 
-from ..analyses.all_equilibria import find_equilibria
-from ..analyses.buckling import critical_force
-from ..analyses.curves import Curve, force_deflection
-from ..analyses.equilibrium import Equilibrium
-from ..analyses.landscape import complete_configuration, energy_landscape
+from ..analyses.equilibria.all_equilibria import find_equilibria
+from ..analyses.equilibria.buckling import critical_force
+from ..analyses.paths.curves import Curve, force_deflection
+from ..analyses.equilibria.equilibrium import Equilibrium
+from ..analyses.equilibria.landscape import complete_configuration, energy_landscape
 from ..errors import InvalidParameterError, TensegrityError
 from ..model.manipulator import Manipulator
 from ..model.segment import Segment
@@ -532,14 +532,14 @@ def _energy_of(m: Manipulator, q: np.ndarray) -> np.ndarray:
 def landscape_region(m: Manipulator, target: Any, pair: tuple[int, int], qi: np.ndarray, qj: np.ndarray,
                      elbow: int, refine: int = 4) -> Any:
     """The drawn region of one elbow branch of the landscape as a :class:`matplotlib.path.Path`: where
-    :func:`~tensegrity_opt.analyses.landscape.landscape_margin` is positive (reachable and inside the
+    :func:`~tensegrity_opt.analyses.equilibria.landscape.landscape_margin` is positive (reachable and inside the
     physical range) within the axes ``qi x qj``; its outline is the margin's zero contour on a grid
     ``refine`` times finer than the axes', i.e. the exact boundary (a smooth curve), not the grid's cells.
     ``None`` when the region is empty."""
     import contourpy
     from matplotlib.path import Path as MPath
 
-    from ..analyses.landscape import landscape_margin
+    from ..analyses.equilibria.landscape import landscape_margin
 
     qi, qj = np.asarray(qi, float), np.asarray(qj, float)
     fi = np.linspace(qi[0], qi[-1], max(2, (qi.size - 1) * int(refine) + 1))
@@ -603,7 +603,7 @@ def plot_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, 
     from matplotlib.patches import PathPatch
     from matplotlib.ticker import MaxNLocator
 
-    from ..analyses.landscape import landscape_margin
+    from ..analyses.equilibria.landscape import landscape_margin
 
     cmap = matplotlib.colormaps["viridis"].with_extremes(bad=(1.0, 1.0, 1.0, 0.0))
     lv = _levels(land.energy, levels)
@@ -1185,7 +1185,7 @@ def _morse_runs(br: Any, xname: str, yname: str) -> list[tuple[int, np.ndarray, 
 
 
 def _as_branches(branches: Any) -> list:
-    from ..analyses.branches import Branch
+    from ..analyses.paths.branches import Branch
 
     items = [branches] if isinstance(branches, Branch) else list(branches)
     if not items:
@@ -1312,7 +1312,7 @@ def plot_limit_load(result: Any, *, m: Manipulator | None = None, figsize: tuple
     Artists (``gid``): ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"`` (the point),
     ``"quasi-buckling-level"`` (the horizontal line), ``"path-end"``.
     """
-    from ..analyses.limit_load import LimitLoad
+    from ..analyses.paths.limit_load import LimitLoad
 
     if not isinstance(result, LimitLoad):
         raise InvalidParameterError(f"plot_limit_load needs a LimitLoad, got {type(result).__name__}", field="result")
@@ -1374,7 +1374,7 @@ def plot_limit_load(result: Any, *, m: Manipulator | None = None, figsize: tuple
 
 def plot_boundary(boundary: Any, *, m: Manipulator | None = None, control: Any = None,
                   figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
-    """A stability boundary (:func:`tensegrity_opt.analyses.boundaries.stability_boundary`): the critical ``t``
+    """A stability boundary (:func:`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the critical ``t``
     (a fold or a branch point of the one-parameter branches) against the second parameter ``p``, with the
     cusps marked. Takes any object with the attributes ``kind``, ``parameter``, ``p``, ``t`` and ``cusps``
     (each with ``.p``, ``.t``), ``status``, ``success``. ``m`` (the chain) and ``control`` (a
@@ -1462,7 +1462,7 @@ def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = 
     failed), ``"unreachable"``, ``"failed"`` (the cells, patch collections), ``"switch"``, ``"branch_end"`` (line
     collections of the curves' segments), ``"switch-points"``, ``"branch_end-points"`` (the crossings).
     """
-    from ..analyses.atlas import StabilityAtlas
+    from ..analyses.paths.atlas import StabilityAtlas
 
     if not isinstance(atlas, StabilityAtlas):
         raise InvalidParameterError(f"plot_atlas needs a StabilityAtlas, got {type(atlas).__name__}", field="atlas")
@@ -1587,7 +1587,7 @@ def plot_preload_plan(plan: Any, m: Manipulator | None = None, *, margin: float 
     ``"infeasible-rest"``, ``"infeasible-margin"`` (the bands), ``"targets"``, ``"tip-path"``,
     ``"infeasible-tips"``.
     """
-    from ..analyses.preload_control import PreloadPlan
+    from ..analyses.design.preload_control import PreloadPlan
 
     if not isinstance(plan, PreloadPlan):
         raise InvalidParameterError(f"plot_preload_plan needs a PreloadPlan, got {type(plan).__name__}", field="plan")
@@ -1758,7 +1758,7 @@ def plot_simulation(sim: Any, m: Manipulator | None = None, *, component: int | 
     done), ``"start"``, ``"end"`` (the last sample done), ``"snap-<j>"`` (the ``j``-th snap's arrow, a ``FancyArrowPatch``), ``"snap-folds"``,
     ``"snap-landings"`` (the points of every snap with a landing, in time order), ``"joint-limit"``.
     """
-    from ..analyses.simulation import Simulation
+    from ..analyses.paths.simulation import Simulation
 
     if not isinstance(sim, Simulation):
         raise InvalidParameterError(f"plot_simulation needs a Simulation, got {type(sim).__name__}", field="sim")

@@ -18,7 +18,7 @@ least-change problem has ``3 n`` positive and ``rows`` negative eigenvalues: New
 a saddle of it). Built once per ``(n, angle)`` and thread; generated to C
 and compiled like the other kernels for ``n <= KERNEL_MAX`` (the same cache, compiler and
 ``TENSEGRITY_COMPILE=0`` switch), CasADi's virtual machine otherwise. Bounds, rate limits and the
-stability margin are the caller's (:mod:`tensegrity_opt.analyses.preload_control`): it checks them on
+stability margin are the caller's (:mod:`tensegrity_opt.analyses.design.preload_control`): it checks them on
 the result and falls back to IPOPT where one is active.
 """
 

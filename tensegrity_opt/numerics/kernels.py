@@ -18,7 +18,7 @@ Kernels (``n <= KERNEL_MAX`` segments)
 ``seeds``
     ``newton`` with ``SEED_ITER`` iterations over the starts of a global search at once
     (``seed_columns(n)`` columns, idle ones skipped), and which of the converged points are
-    distinct (the comparison of :func:`tensegrity_opt.analyses.least_energy.distinct_rows`, done here so the
+    distinct (the comparison of :func:`tensegrity_opt.analyses.equilibria.least_energy.distinct_rows`, done here so the
     search need not compare ``k^2`` rows in numpy).
 ``continuation``
     ``BATCH`` targets in order, each solved by ``CONT_ITER`` iterations from the previous
@@ -91,7 +91,7 @@ def seed_row(n: int) -> dict[str, slice | int]:
     length): ``q`` (n), ``F`` (2), ``norm``, ``iters``, ``E``, ``tip`` (2), ``R`` ((n-2)^2, column-major),
     ``margin`` (max |q_i| - limit_i: >= 0 means on or beyond the physical range), ``distinct`` (1 when the
     start converged inside the range to a point differing by at least ``same`` in some joint angle from
-    every earlier such start's; :func:`tensegrity_opt.analyses.least_energy.distinct_rows` over the call's rows)."""
+    every earlier such start's; :func:`tensegrity_opt.analyses.equilibria.least_energy.distinct_rows` over the call's rows)."""
     m2 = (n - 2) ** 2
     return {"q": slice(0, n), "F": slice(n, n + 2), "norm": n + 2, "iters": n + 3, "E": n + 4,
             "tip": slice(n + 5, n + 7), "R": slice(n + 7, n + 7 + m2), "margin": n + 7 + m2,
@@ -172,7 +172,7 @@ def _householder_null_basis(A: ca.SX) -> ca.SX:
 def _distinct(n: int, cols: int) -> ca.Function:
     """``(rows, active, thresh, same) -> distinct (1 x cols)``: a column is distinct when it is active, its
     start converged (``norm <= thresh``) inside the range (``margin < 0``) and no earlier such column's
-    joint angles all lie within ``same`` of its own (:func:`tensegrity_opt.analyses.least_energy.distinct_rows`, the
+    joint angles all lie within ``same`` of its own (:func:`tensegrity_opt.analyses.equilibria.least_energy.distinct_rows`, the
     same comparisons). The pairs are compared by one small function mapped over them (a loop in the C
     code, not one comparison per pair written out: the generated code stays small)."""
     at = seed_row(n)

@@ -11,7 +11,7 @@ with ``p(t) = p + t dp + s dp2`` (the 6n chain parameters ``a, b, k1, k2, L1_0, 
 for two-parameter continuation). The two control rows say what is prescribed: ``A_tip = I`` holds the
 tip (a displacement control, ``c`` its direction), ``A_F = I`` prescribes the force (a dead load ``c``),
 one row of each is a guide or a frictionless wall (the tip held along the wall's normal, the load
-prescribed along it). The analyses (:mod:`tensegrity_opt.analyses.branches`) set these matrices;
+prescribed along it). The analyses (:mod:`tensegrity_opt.analyses.paths.branches`) set these matrices;
 this module only evaluates.
 
 Functions (inputs ``x = (q, F, t, s)``, ``p``, ``dp``, ``dp2``, ``ctl`` — the 14 numbers
@@ -81,7 +81,7 @@ def _graphs(n: int):
 
 
 def _step(n: int, path: ca.Function) -> ca.Function:
-    """One whole predictor-corrector step (module docstring of :mod:`tensegrity_opt.analyses.branches`):
+    """One whole predictor-corrector step (module docstring of :mod:`tensegrity_opt.analyses.paths.branches`):
     ``(x_a, tau, h, w, rs, tol, p, dp, dp2, ctl) -> (x, res, iterations, tau_b, R, R_x, H, J, E, tip)``.
 
     From ``x_a`` and its unit tangent ``tau`` (scaled coordinates ``w x``), the predictor

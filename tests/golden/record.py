@@ -168,7 +168,7 @@ def _http(requests: list[tuple[str, str, dict]]) -> list[dict]:
                 jid = r.json()["id"]
                 for _ in range(600):
                     j = client.get(f"/v1/jobs/{jid}").json()
-                    if j.get("state") in ("done", "failed", "cancelled", "succeeded", "completed"):
+                    if j.get("status") in ("done", "failed", "cancelled", "interrupted"):
                         break
                     time.sleep(0.2)
                 res = client.get(f"/v1/jobs/{jid}/results")

@@ -24,11 +24,11 @@ from typing import Any
 import numpy as np
 
 from ... import __version__
-from ...analyses.all_equilibria import find_equilibria
-from ...analyses.buckling import critical_force
-from ...analyses.curves import force_deflection
-from ...analyses.equilibrium import solve_equilibrium_under_force
-from ...analyses.least_energy import solve_equilibrium
+from ...analyses.equilibria.all_equilibria import find_equilibria
+from ...analyses.equilibria.buckling import critical_force
+from ...analyses.paths.curves import force_deflection
+from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
+from ...analyses.equilibria.least_energy import solve_equilibrium
 from .common import (HELP_FORMAT, Parser, add_manipulator_options, eq_table, finite_float, fmt_q, note, positive_int,
                      run_command)
 from .control import add_control_parsers
@@ -63,8 +63,8 @@ def _cmd_equilibrium(args, m):
     else:
         eq = solve_equilibrium(m, args.dx, args.dy)
         head = f"Least-energy stable equilibrium at dx = {args.dx:g}, dy = {args.dy:g}"
-    its = "iterations not counted" if eq.iterations is None else f"{eq.iterations} iterations"
-    return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.status}, {its}"])
+    its = "iterations not counted" if eq.solver.iterations is None else f"{eq.solver.iterations} iterations"
+    return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.solver.status}, {its}"])
 
 
 def _cmd_equilibria(args, m):

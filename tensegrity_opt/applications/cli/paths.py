@@ -25,12 +25,12 @@ from typing import Any
 
 import numpy as np
 
-from ...analyses.atlas import StabilityAtlas, stability_atlas
-from ...analyses.boundaries import stability_boundary
-from ...analyses.branches import Branch, Control, bifurcation_diagram, trace_branch
-from ...analyses.least_energy import solve_equilibrium
-from ...analyses.limit_load import limit_load
-from ...analyses.rest import find_equilibria_under_force
+from ...analyses.paths.atlas import StabilityAtlas, stability_atlas
+from ...analyses.paths.boundaries import stability_boundary
+from ...analyses.paths.branches import Branch, Control, bifurcation_diagram, trace_branch
+from ...analyses.equilibria.least_energy import solve_equilibrium
+from ...analyses.paths.limit_load import limit_load
+from ...analyses.equilibria.rest import find_equilibria_under_force
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float, fmt_q, positive_int

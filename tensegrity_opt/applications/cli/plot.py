@@ -109,7 +109,7 @@ def _plots():
 def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     dx = np.linspace(args.start, args.stop, args.num)
-    from ...analyses.curves import force_deflection
+    from ...analyses.paths.curves import force_deflection
 
     c = force_deflection(m, dx, args.dy, branch=args.branch)
     fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
@@ -122,7 +122,7 @@ def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
 
 def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from ...analyses.all_equilibria import find_equilibria
+    from ...analyses.equilibria.all_equilibria import find_equilibria
 
     eqs = find_equilibria(m, args.dx, args.dy) if m.n == 4 else None
     span: float | str | None = "auto" if args.span is None else (None if args.span <= 0 else args.span)
@@ -133,7 +133,7 @@ def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, 
 
 def _cmd_shapes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from ...analyses.all_equilibria import find_equilibria
+    from ...analyses.equilibria.all_equilibria import find_equilibria
 
     eqs = find_equilibria(m, args.dx, args.dy)
     fig = plots.plot_shapes(m, args.dx, args.dy, equilibria=eqs, max_panels=args.max_panels)

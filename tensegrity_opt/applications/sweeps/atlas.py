@@ -1,10 +1,10 @@
-"""An atlas sweep's rows as a :class:`~tensegrity_opt.analyses.atlas.StabilityAtlas`.
+"""An atlas sweep's rows as a :class:`~tensegrity_opt.analyses.paths.atlas.StabilityAtlas`.
 
 A sweep (or a job) with ``"analysis": "atlas"`` over a grid in ``dx`` and ``dy`` computes the expensive part,
 every equilibrium of every target, point by point (serially, on Dask, resumable in the service's jobs);
 :func:`atlas_from_rows` rebuilds the targets from the rows (each stable equilibrium re-solved by Newton from
 its stored angles, so the atlas's crossings start from exact points) and analyses the grid's edges
-(:func:`tensegrity_opt.analyses.atlas.assemble_atlas`).
+(:func:`tensegrity_opt.analyses.paths.atlas.assemble_atlas`).
 """
 
 from __future__ import annotations
@@ -15,8 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from ...analyses.atlas import AtlasTarget, StabilityAtlas, assemble_atlas
-from ...analyses.equilibrium import make_equilibrium
+from ...analyses.paths.atlas import AtlasTarget, StabilityAtlas, assemble_atlas
+from ...analyses.equilibria.equilibrium import make_equilibrium
 from ...errors import InvalidParameterError
 from ...numerics import chain_solver
 from ...timelimit import expired, time_limit

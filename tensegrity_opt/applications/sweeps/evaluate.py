@@ -14,13 +14,13 @@ from typing import Any
 
 import numpy as np
 
-from ...analyses.all_equilibria import find_equilibria
-from ...analyses.atlas import atlas_target
-from ...analyses.buckling import critical_force
-from ...analyses.design import maximize_critical_force
-from ...analyses.equilibrium import solve_equilibrium_under_force
-from ...analyses.least_energy import solve_equilibrium
-from ...analyses.stiffness import cartesian_stiffness
+from ...analyses.equilibria.all_equilibria import find_equilibria
+from ...analyses.paths.atlas import atlas_target
+from ...analyses.equilibria.buckling import critical_force
+from ...analyses.design.optimal import maximize_critical_force
+from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
+from ...analyses.equilibria.least_energy import solve_equilibrium
+from ...analyses.equilibria.stiffness import cartesian_stiffness
 from ...errors import TensegrityError
 from ...model.manipulator import Manipulator
 from ...serialize import nullable, nullables
@@ -64,7 +64,7 @@ def _equilibrium_row(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str
     return {"energy": nullable(eq.energy), "fx": nullable(eq.fx), "fy": nullable(eq.fy), "stable": bool(eq.stable),
             "morse_index": int(eq.morse_index), "kind": eq.kind, "shape": eq.shape, "signs": eq.signs,
             "q": nullables(eq.q), "tip_x": nullable(eq.tip[0]), "tip_y": nullable(eq.tip[1]),
-            "status": str(eq.status), "iterations": int(eq.iterations)}
+            "status": str(eq.solver.status), "iterations": int(eq.solver.iterations)}
 
 
 def _stiffness(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -> dict[str, Any]:

@@ -52,6 +52,7 @@ from .equilibria_request import EquilibriaRequest
 from .equilibria_request_method import EquilibriaRequestMethod
 from .equilibrium_out import EquilibriumOut
 from .equilibrium_out_kind import EquilibriumOutKind
+from .equilibrium_out_status import EquilibriumOutStatus
 from .equilibrium_request import EquilibriumRequest
 from .error_out import ErrorOut
 from .error_out_best_type_0 import ErrorOutBestType0
@@ -259,6 +260,7 @@ __all__ = (
     "EquilibriaRequestMethod",
     "EquilibriumOut",
     "EquilibriumOutKind",
+    "EquilibriumOutStatus",
     "EquilibriumRequest",
     "ErrorOut",
     "ErrorOutBestType0",

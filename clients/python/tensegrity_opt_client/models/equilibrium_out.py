@@ -7,6 +7,7 @@ from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 from ..models.equilibrium_out_kind import EquilibriumOutKind
+from ..models.equilibrium_out_status import EquilibriumOutStatus
 
 if TYPE_CHECKING:
     from ..models.force import Force
@@ -24,24 +25,34 @@ class EquilibriumOut:
         energy (float): elastic energy (force x length)
         force (Force):
         kind (EquilibriumOutKind):
+        message (str): what happened, in a sentence
         morse_index (int): negative eigenvalues of the reduced Hessian (0: stable)
         q (list[float]): relative joint angles (rad)
         shape (str): shape label: I, C, U, ZU, Z or W<s>
         signs (str): sign of each joint angle: +, - or 0
         solver (SolverInfo):
         stable (bool):
+        status (EquilibriumOutStatus): `converged`: a numerical solve converged to it (Newton on the KKT system, IPOPT,
+            a continuation step; the solver's own status is in solver) and the equilibrium equations hold; `exact`: known in
+            closed form: the straight chain, a single segment, or an unloaded chain (a product of its segments' critical
+            points); `certified`: the least-energy stable member of a set of equilibria proven complete by the polynomial
+            homotopy (method='homotopy')
+        success (bool): whether it worked: `status` is one of certified, converged, exact
         tip (list[float]): tip position [x, y]
     """
 
     energy: float
     force: Force
     kind: EquilibriumOutKind
+    message: str
     morse_index: int
     q: list[float]
     shape: str
     signs: str
     solver: SolverInfo
     stable: bool
+    status: EquilibriumOutStatus
+    success: bool
     tip: list[float]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -51,6 +62,8 @@ class EquilibriumOut:
         force = self.force.to_dict()
 
         kind = self.kind.value
+
+        message = self.message
 
         morse_index = self.morse_index
 
@@ -64,6 +77,10 @@ class EquilibriumOut:
 
         stable = self.stable
 
+        status = self.status.value
+
+        success = self.success
+
         tip = self.tip
 
         field_dict: dict[str, Any] = {}
@@ -73,12 +90,15 @@ class EquilibriumOut:
                 "energy": energy,
                 "force": force,
                 "kind": kind,
+                "message": message,
                 "morse_index": morse_index,
                 "q": q,
                 "shape": shape,
                 "signs": signs,
                 "solver": solver,
                 "stable": stable,
+                "status": status,
+                "success": success,
                 "tip": tip,
             }
         )
@@ -97,6 +117,8 @@ class EquilibriumOut:
 
         kind = EquilibriumOutKind(d.pop("kind"))
 
+        message = d.pop("message")
+
         morse_index = d.pop("morse_index")
 
         q = cast(list[float], d.pop("q"))
@@ -109,18 +131,25 @@ class EquilibriumOut:
 
         stable = d.pop("stable")
 
+        status = EquilibriumOutStatus(d.pop("status"))
+
+        success = d.pop("success")
+
         tip = cast(list[float], d.pop("tip"))
 
         equilibrium_out = cls(
             energy=energy,
             force=force,
             kind=kind,
+            message=message,
             morse_index=morse_index,
             q=q,
             shape=shape,
             signs=signs,
             solver=solver,
             stable=stable,
+            status=status,
+            success=success,
             tip=tip,
         )
 

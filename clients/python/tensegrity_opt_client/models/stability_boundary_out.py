@@ -18,7 +18,7 @@ T = TypeVar("T", bound="StabilityBoundaryOut")
 
 @_attrs_define
 class StabilityBoundaryOut:
-    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.boundaries`).
+    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.paths.boundaries`).
 
     Attributes:
         cusps (list[CuspOut] | None | Unset):

@@ -96,11 +96,12 @@ def sync_detailed(
     along `direction`, 2n numbers, the tip `free` under `load` or `held`). `start`: `{"q"}` joint
     angles, `{"dx", "dy"}` the least-energy equilibrium with the tip held there (displacement and held-
     tip preload controls), or null: the least-energy rest configuration. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504. An answer over
-    `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with 422 `response_too_large` on `max_points`.
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504. An answer over `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with
+    422 `response_too_large` on `max_points`.
 
     Args:
         body (BifurcationDiagramRequest): Every branch reached from the start through branch
@@ -141,11 +142,12 @@ def sync(
     along `direction`, 2n numbers, the tip `free` under `load` or `held`). `start`: `{"q"}` joint
     angles, `{"dx", "dy"}` the least-energy equilibrium with the tip held there (displacement and held-
     tip preload controls), or null: the least-energy rest configuration. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504. An answer over
-    `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with 422 `response_too_large` on `max_points`.
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504. An answer over `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with
+    422 `response_too_large` on `max_points`.
 
     Args:
         body (BifurcationDiagramRequest): Every branch reached from the start through branch
@@ -181,11 +183,12 @@ async def asyncio_detailed(
     along `direction`, 2n numbers, the tip `free` under `load` or `held`). `start`: `{"q"}` joint
     angles, `{"dx", "dy"}` the least-energy equilibrium with the tip held there (displacement and held-
     tip preload controls), or null: the least-energy rest configuration. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504. An answer over
-    `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with 422 `response_too_large` on `max_points`.
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504. An answer over `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with
+    422 `response_too_large` on `max_points`.
 
     Args:
         body (BifurcationDiagramRequest): Every branch reached from the start through branch
@@ -224,11 +227,12 @@ async def asyncio(
     along `direction`, 2n numbers, the tip `free` under `load` or `held`). `start`: `{"q"}` joint
     angles, `{"dx", "dy"}` the least-energy equilibrium with the tip held there (displacement and held-
     tip preload controls), or null: the least-energy rest configuration. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504. An answer over
-    `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with 422 `response_too_large` on `max_points`.
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504. An answer over `TENSEGRITY_MAX_RESPONSE_BYTES` is refused with
+    422 `response_too_large` on `max_points`.
 
     Args:
         body (BifurcationDiagramRequest): Every branch reached from the start through branch

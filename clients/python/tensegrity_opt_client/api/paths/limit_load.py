@@ -93,8 +93,8 @@ def sync_detailed(
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
     `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
-    Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`): chains of up to 64 segments
-    (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
+    segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
     shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
     `success: false`) instead of a 504.
@@ -135,8 +135,8 @@ def sync(
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
     `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
-    Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`): chains of up to 64 segments
-    (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
+    segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
     shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
     `success: false`) instead of a 504.
@@ -172,8 +172,8 @@ async def asyncio_detailed(
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
     `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
-    Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`): chains of up to 64 segments
-    (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
+    segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
     shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
     `success: false`) instead of a 504.
@@ -212,8 +212,8 @@ async def asyncio(
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
     `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
-    Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`): chains of up to 64 segments
-    (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
+    segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
     shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
     `success: false`) instead of a 504.

@@ -88,11 +88,11 @@ def sync_detailed(
     """Every equilibrium under a dead tip load (F = 0: the rest configurations)
 
      All equilibria inside the physical range under the tip force `F = (fx, fy)` held fixed
-    (`tensegrity_opt.analyses.rest.find_equilibria_under_force`), each classified by the full Hessian of
-    `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified): the
-    product of the segments' unloaded critical points; a bistable segment gives two wells. `stable_only`
-    keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the server's
-    `homotopy_max_segments`.
+    (`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full
+    Hessian of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified):
+    the product of the segments' unloaded critical points; a bistable segment gives two wells.
+    `stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the
+    server's `homotopy_max_segments`.
 
     Args:
         body (RestConfigurationsRequest): Every equilibrium under a dead tip load `F = (fx, fy)`;
@@ -125,11 +125,11 @@ def sync(
     """Every equilibrium under a dead tip load (F = 0: the rest configurations)
 
      All equilibria inside the physical range under the tip force `F = (fx, fy)` held fixed
-    (`tensegrity_opt.analyses.rest.find_equilibria_under_force`), each classified by the full Hessian of
-    `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified): the
-    product of the segments' unloaded critical points; a bistable segment gives two wells. `stable_only`
-    keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the server's
-    `homotopy_max_segments`.
+    (`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full
+    Hessian of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified):
+    the product of the segments' unloaded critical points; a bistable segment gives two wells.
+    `stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the
+    server's `homotopy_max_segments`.
 
     Args:
         body (RestConfigurationsRequest): Every equilibrium under a dead tip load `F = (fx, fy)`;
@@ -157,11 +157,11 @@ async def asyncio_detailed(
     """Every equilibrium under a dead tip load (F = 0: the rest configurations)
 
      All equilibria inside the physical range under the tip force `F = (fx, fy)` held fixed
-    (`tensegrity_opt.analyses.rest.find_equilibria_under_force`), each classified by the full Hessian of
-    `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified): the
-    product of the segments' unloaded critical points; a bistable segment gives two wells. `stable_only`
-    keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the server's
-    `homotopy_max_segments`.
+    (`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full
+    Hessian of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified):
+    the product of the segments' unloaded critical points; a bistable segment gives two wells.
+    `stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the
+    server's `homotopy_max_segments`.
 
     Args:
         body (RestConfigurationsRequest): Every equilibrium under a dead tip load `F = (fx, fy)`;
@@ -192,11 +192,11 @@ async def asyncio(
     """Every equilibrium under a dead tip load (F = 0: the rest configurations)
 
      All equilibria inside the physical range under the tip force `F = (fx, fy)` held fixed
-    (`tensegrity_opt.analyses.rest.find_equilibria_under_force`), each classified by the full Hessian of
-    `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified): the
-    product of the segments' unloaded critical points; a bistable segment gives two wells. `stable_only`
-    keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the server's
-    `homotopy_max_segments`.
+    (`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full
+    Hessian of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: "exact"`, certified):
+    the product of the segments' unloaded critical points; a bistable segment gives two wells.
+    `stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the
+    server's `homotopy_max_segments`.
 
     Args:
         body (RestConfigurationsRequest): Every equilibrium under a dead tip load `F = (fx, fy)`;

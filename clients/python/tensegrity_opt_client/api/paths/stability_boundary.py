@@ -87,17 +87,18 @@ def sync_detailed(
 ) -> Response[ErrorOut | StabilityBoundaryOut]:
     """The curve of folds or branch points over a second parameter
 
-     Two-parameter continuation (`tensegrity_opt.analyses.boundaries.stability_boundary`): the critical
-    `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) followed as
-    `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504.
+     Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
+    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.boundaries.stability_boundary`).
+            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -125,17 +126,18 @@ def sync(
 ) -> ErrorOut | StabilityBoundaryOut | None:
     """The curve of folds or branch points over a second parameter
 
-     Two-parameter continuation (`tensegrity_opt.analyses.boundaries.stability_boundary`): the critical
-    `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) followed as
-    `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504.
+     Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
+    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.boundaries.stability_boundary`).
+            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -158,17 +160,18 @@ async def asyncio_detailed(
 ) -> Response[ErrorOut | StabilityBoundaryOut]:
     """The curve of folds or branch points over a second parameter
 
-     Two-parameter continuation (`tensegrity_opt.analyses.boundaries.stability_boundary`): the critical
-    `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) followed as
-    `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504.
+     Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
+    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.boundaries.stability_boundary`).
+            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -194,17 +197,18 @@ async def asyncio(
 ) -> ErrorOut | StabilityBoundaryOut | None:
     """The curve of folds or branch points over a second parameter
 
-     Two-parameter continuation (`tensegrity_opt.analyses.boundaries.stability_boundary`): the critical
-    `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) followed as
-    `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
-    (`tensegrity_opt.analyses.branches`): chains of up to 64 segments (longer: 422 `invalid_parameter`
-    on `manipulator.n`); `max_points` up to the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000;
-    above: 422 `too_many_points`). The computation stops shortly before the server's time limit and
-    answers what it has (200, `status: "time_limit"`, `success: false`) instead of a 504.
+     Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
+    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.boundaries.stability_boundary`).
+            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

@@ -98,11 +98,12 @@ def sync_detailed(
     frictionless wall of `normal`), `preload` (the rest lengths along `direction`, 2n numbers, the tip
     `free` under `load` or `held`). `start`: `{"q"}` joint angles, `{"dx", "dy"}` the least-energy
     equilibrium with the tip held there (displacement and held-tip preload controls), or null: the
-    least-energy rest configuration. Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`):
-    chains of up to 64 segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to
-    the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The
-    computation stops shortly before the server's time limit and answers what it has (200, `status:
-    "time_limit"`, `success: false`) instead of a 504.
+    least-energy rest configuration. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (BranchRequest): One equilibrium branch by pseudo-arclength continuation
@@ -145,11 +146,12 @@ def sync(
     frictionless wall of `normal`), `preload` (the rest lengths along `direction`, 2n numbers, the tip
     `free` under `load` or `held`). `start`: `{"q"}` joint angles, `{"dx", "dy"}` the least-energy
     equilibrium with the tip held there (displacement and held-tip preload controls), or null: the
-    least-energy rest configuration. Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`):
-    chains of up to 64 segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to
-    the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The
-    computation stops shortly before the server's time limit and answers what it has (200, `status:
-    "time_limit"`, `success: false`) instead of a 504.
+    least-energy rest configuration. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (BranchRequest): One equilibrium branch by pseudo-arclength continuation
@@ -187,11 +189,12 @@ async def asyncio_detailed(
     frictionless wall of `normal`), `preload` (the rest lengths along `direction`, 2n numbers, the tip
     `free` under `load` or `held`). `start`: `{"q"}` joint angles, `{"dx", "dy"}` the least-energy
     equilibrium with the tip held there (displacement and held-tip preload controls), or null: the
-    least-energy rest configuration. Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`):
-    chains of up to 64 segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to
-    the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The
-    computation stops shortly before the server's time limit and answers what it has (200, `status:
-    "time_limit"`, `success: false`) instead of a 504.
+    least-energy rest configuration. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (BranchRequest): One equilibrium branch by pseudo-arclength continuation
@@ -232,11 +235,12 @@ async def asyncio(
     frictionless wall of `normal`), `preload` (the rest lengths along `direction`, 2n numbers, the tip
     `free` under `load` or `held`). `start`: `{"q"}` joint angles, `{"dx", "dy"}` the least-energy
     equilibrium with the tip held there (displacement and held-tip preload controls), or null: the
-    least-energy rest configuration. Pseudo-arclength continuation (`tensegrity_opt.analyses.branches`):
-    chains of up to 64 segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to
-    the server's `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The
-    computation stops shortly before the server's time limit and answers what it has (200, `status:
-    "time_limit"`, `success: false`) instead of a 504.
+    least-energy rest configuration. Pseudo-arclength continuation
+    (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
+    `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
+    `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
+    shortly before the server's time limit and answers what it has (200, `status: "time_limit"`,
+    `success: false`) instead of a 504.
 
     Args:
         body (BranchRequest): One equilibrium branch by pseudo-arclength continuation

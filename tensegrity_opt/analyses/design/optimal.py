@@ -1,0 +1,753 @@
+"""Design and control: the strongest chain, preloads for a pose or a load, sensitivities.
+
+Every problem is a CasADi NLP solved by IPOPT with exact derivatives
+(:mod:`tensegrity_opt.numerics.design_nlp`); every result is verified by an independent forward computation
+(:func:`critical_force` or :func:`solve_equilibrium_under_force`) before it is returned.
+Formulations and worked examples: ``docs/design.md``.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import scipy.linalg as sla
+
+from ...errors import (
+    InfeasibleDesignError,
+    InvalidParameterError,
+    SolverError,
+    StraightNotEquilibriumError,
+    TensegrityError,
+    TimeLimitError,
+    UnreachableTargetError,
+)
+from ...model.manipulator import Manipulator
+from ...model.segment import Segment
+from ...numerics import RANGE_SHRINK, chain_solver
+from ...serialize import nullable, number, numbers
+from ...timelimit import time_limit as _time_limit
+from ..equilibria.buckling import critical_force, straight_matrices
+from ..equilibria.equilibrium import Equilibrium, settle_under_force, solve_equilibrium_under_force
+from ..equilibria.least_energy import solve_equilibrium
+
+__all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
+           "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES",
+           "K_FLOOR_REL"]
+
+#: Per-segment design variables of the buckling design problem (symmetric segments).
+DESIGN_VARIABLES = ("a", "b", "k", "L0")
+#: Default floor on every joint stiffness in the buckling design problems, relative to the initial
+#: chain's stiffness scale ``max_i k_i (a_i^2 + b_i^2)``: condition (4) is ``K_i > 0`` (strict), so
+#: the design problem imposes ``K_i >= K_FLOOR_REL * scale``. An optimum that wants ``K_i -> 0+``
+#: is returned with that segment on the floor.
+K_FLOOR_REL = 1e-9
+_INF = float("inf")
+
+
+@dataclass(frozen=True)
+class Design:
+    """Result of :func:`maximize_critical_force` / :func:`preloads_for_critical_force`.
+
+    Attributes
+    ----------
+    manipulator : Manipulator
+        The optimised chain.
+    critical_force : float
+        Signed critical force ``-min(loads)``, recomputed by :func:`critical_force` on it.
+    loads : ndarray
+        All its critical loads (ascending), recomputed.
+    multiplicity : int
+        How many critical loads coincide with the smallest (relative gap < 1e-4).
+    active : list of str
+        Active constraints at the optimum (bounds, budgets, tension, stiffness rows).
+    status : str
+        IPOPT's return status; ``success`` its success flag; ``iterations``.
+    initial_critical_force : float
+        The starting design's critical force (NaN when undefined there).
+    feasible : bool
+        ``preloads_for_critical_force``: whether the required load is reached.
+    K_min : float
+        The joint-stiffness floor the design was held to: ``max(K_min, K_FLOOR_REL * scale)``
+        with ``scale = max_i k_i (a_i^2 + b_i^2)`` of the initial chain (the default floor when
+        no ``K_min`` was given). Every returned segment has ``K_i > 0`` and ``K_i >= K_min``
+        (exactly: a segment the optimiser stopped a roundoff below is lifted onto it by a varied
+        ``L0``, ``k``, ``a`` or ``b``; otherwise to the solver's tolerance).
+    """
+
+    manipulator: Manipulator
+    critical_force: float
+    loads: np.ndarray
+    multiplicity: int
+    active: list[str]
+    status: str
+    success: bool
+    iterations: int
+    boundary: str
+    initial_critical_force: float
+    feasible: bool = True
+    K_min: float = math.nan
+
+    @property
+    def load(self) -> float:
+        """The critical compressive load ``-critical_force``."""
+        return -self.critical_force
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/design/critical-force`` and ``/v1/design/preloads-for-load``):
+        ``manipulator`` (:meth:`Manipulator.to_dict`), ``critical_force``, ``loads``, ``multiplicity``,
+        ``active``, ``initial_critical_force`` (``null`` when undefined), ``feasible``, ``solver``."""
+        return {"manipulator": self.manipulator.to_dict(), "critical_force": number(self.critical_force),
+                "loads": numbers(self.loads), "multiplicity": int(self.multiplicity), "active": list(self.active),
+                "initial_critical_force": nullable(self.initial_critical_force), "feasible": bool(self.feasible),
+                "solver": {"status": self.status, "iterations": int(self.iterations)}}
+
+
+@dataclass(frozen=True)
+class PreloadDesign:
+    """Result of :func:`choose_preloads`.
+
+    Attributes
+    ----------
+    manipulator : Manipulator
+        The chain with the chosen rest lengths ``(L1_0, L2_0)`` per segment.
+    preloads : ndarray (n, 2)
+        The chosen rest lengths.
+    q : ndarray (n,)
+        The verified equilibrium configuration (force control from the optimiser's ``q``).
+    margin : float
+        Smallest eigenvalue of the Hessian of ``E - F.tip`` in joint angles at ``q``
+        (torque per radian), recomputed.
+    tip : ndarray (2,)
+        The verified tip position; ``equilibrium`` the full verified :class:`Equilibrium`.
+    """
+
+    manipulator: Manipulator
+    preloads: np.ndarray
+    q: np.ndarray
+    margin: float
+    tip: np.ndarray
+    energy: float
+    status: str
+    success: bool
+    iterations: int
+    equilibrium: Equilibrium = field(repr=False)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/design/preloads``): ``manipulator``, ``preloads``, ``q``,
+        ``margin``, ``tip``, ``energy``, ``solver`` ``{status, iterations}``."""
+        return {"manipulator": self.manipulator.to_dict(), "preloads": numbers(self.preloads), "q": numbers(self.q),
+                "margin": number(self.margin), "tip": numbers(self.tip), "energy": number(self.energy),
+                "solver": {"status": self.status, "iterations": int(self.iterations)}}
+
+
+# --------------------------------------------------------------------------- helpers
+def _per_segment(value, n: int, field_name: str) -> np.ndarray:
+    arr = np.asarray(value, dtype=float)
+    if arr.ndim == 0:
+        arr = np.full(n, float(arr))
+    if arr.shape != (n,) or not np.all(np.isfinite(arr)):
+        raise InvalidParameterError(f"{field_name} must be a number or {n} finite numbers", field=field_name)
+    return arr
+
+
+def _symmetric_columns(m: Manipulator) -> dict[str, np.ndarray]:
+    bad = [i for i, s in enumerate(m.segments) if not s.symmetric]
+    if bad:
+        raise StraightNotEquilibriumError(
+            f"buckling design needs symmetric segments (k1 == k2, L1_0 == L2_0); segment {bad[0]} is not",
+            field=f"segments[{bad[0]}]")
+    return {"a": m.a.copy(), "b": m.b.copy(), "k": m.k1.copy(), "L0": m.L1_0.copy()}
+
+
+def _build(cols: Mapping[str, np.ndarray]) -> Manipulator:
+    return Manipulator(Segment(a, b, k, L0) for a, b, k, L0 in zip(cols["a"], cols["b"], cols["k"], cols["L0"]))
+
+
+def _multiplicity(loads: np.ndarray, rel: float = 1e-4) -> int:
+    return int(np.sum(loads <= loads[0] * (1.0 + rel)))
+
+
+def _safe_critical(m: Manipulator, boundary: str) -> float:
+    try:
+        return critical_force(m, boundary).force
+    except TensegrityError:
+        return float("nan")
+
+
+# --------------------------------------------------------------------------- 1. strongest chain
+def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
+                            bounds: Mapping[str, tuple] | None = None,
+                            budget: Mapping[str, float] | None = None, boundary: str = "guided", *,
+                            time_limit: float | None = None, **constraints) -> Design:
+    """Maximise the critical load of the straight chain over per-segment design variables.
+
+    Parameters
+    ----------
+    m : Manipulator
+        The initial design (symmetric segments); what is not varied stays fixed.
+    vary : iterable of {"a", "b", "k", "L0"}
+        The per-segment variables to optimise.
+    bounds : dict, optional
+        ``{name: (lo, hi)}`` with numbers or per-segment arrays. Default for a varied
+        variable: ``(x0 / 10, 10 x0)``.
+    budget : dict, optional
+        ``{name: total}``: ``sum(name) <= total`` over the segments.
+    boundary : {"guided", "free"}
+    **constraints
+        ``total_length`` (float, or ``True`` to keep the initial ``2 sum(b)``),
+        ``tension=(T_min, T_max)`` bounds on the spring preload ``k (2b - L0)`` at straight,
+        ``K_min`` a lower bound on every joint stiffness ``K_i = k (b L0 - 2 (b^2 - a^2))``.
+        Condition (4), ``K_i > 0``, is always imposed: as ``K_i >= K_min`` with ``K_min`` raised
+        to at least the floor ``K_FLOOR_REL * max_i k_i (a_i^2 + b_i^2)`` (``1e-9`` times the
+        initial chain's stiffness scale); without ``K_min`` the floor alone. An optimum at
+        ``K_i -> 0+`` (stiffness and preload moved off a segment) is returned with ``K_i`` on the
+        floor; the bound used is recorded in ``Design.K_min`` and listed in ``active`` when it holds.
+    time_limit : float, optional
+        Seconds this call may take (see :func:`tensegrity_opt.time_limit`, which bounds any block of
+        calls): checked before and, once per IPOPT iteration, during each solve.
+
+    Returns
+    -------
+    Design
+        Verified: ``critical_force`` is recomputed by :func:`critical_force` on the returned
+        chain. A segment the optimiser left below ``K_min`` by roundoff is lifted onto it
+        (the smallest change of one varied variable) before that check.
+
+    Raises
+    ------
+    InvalidParameterError
+        Unknown variable/constraint, bad bounds.
+    InfeasibleDesignError
+        (``RuntimeError``) IPOPT found no feasible design; ``best`` holds its last point
+        (a :class:`Design`, lifted onto ``K_i >= K_min``) when that is a valid chain.
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
+    """
+    with _time_limit(time_limit):
+        return _buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
+
+
+def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: str = "guided",
+                                bounds: tuple | None = None, time_limit: float | None = None) -> Design:
+    """The smallest change of the rest lengths ``L0`` (symmetric) giving a critical load ``>= required``.
+
+    Minimises ``sum((L0 - L0_nom)^2) / sum(L0_nom^2)`` subject to
+    ``Z^T (K(L0) - required G) Z`` positive semidefinite and ``L0`` within ``bounds``
+    (default ``(0.05 * 2b, 2b)``: springs in tension at straight). ``time_limit`` (seconds) bounds
+    the whole call, both solves, as in :func:`maximize_critical_force`.
+
+    Returns
+    -------
+    Design
+        ``feasible=True`` with the minimal change; or, when no rest lengths within the
+        bounds reach ``required``, ``feasible=False`` with the strongest achievable design.
+
+    Raises
+    ------
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
+    """
+    required = float(required)
+    if not math.isfinite(required) or required <= 0:
+        raise InvalidParameterError("required must be a positive finite load", field="required")
+    b = m.b
+    bnds = {"L0": bounds if bounds is not None else (0.05 * 2 * b, 2 * b)}
+    with _time_limit(time_limit):
+        try:
+            return _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
+        except InfeasibleDesignError:
+            best = _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=None)
+            return Design(**{**best.__dict__, "feasible": False})
+
+
+def _tension_bounds(tension) -> tuple[float, float]:
+    """``(T_min, T_max)`` from the ``tension`` constraint (``None``: unbounded), checked before any solve."""
+    if tension is None:
+        return -_INF, _INF
+    try:
+        tmin, tmax = (float(v) for v in tension)
+    except (TypeError, ValueError):
+        raise InvalidParameterError("tension must be a pair (T_min, T_max) of numbers", field="tension") from None
+    if math.isnan(tmin) or math.isnan(tmax) or tmin > tmax or tmin == _INF or tmax == -_INF:
+        raise InvalidParameterError(f"tension bounds need T_min <= T_max (got {tmin:g}, {tmax:g})", field="tension")
+    return tmin, tmax
+
+
+def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
+    from ...numerics import buckling_design_nlp
+
+    if boundary not in ("guided", "free"):
+        raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
+    if boundary == "guided" and m.n < 2:
+        raise InvalidParameterError("a guided tip needs n >= 2 segments", field="n")
+    vary = tuple(vary)
+    for v in vary:
+        if v not in DESIGN_VARIABLES:
+            raise InvalidParameterError(f"cannot vary {v!r}: choose from {DESIGN_VARIABLES}", field="vary")
+    unknown = set(constraints) - {"total_length", "tension", "K_min"}
+    if unknown:
+        raise InvalidParameterError(f"unknown constraint(s) {sorted(unknown)}: use total_length, tension, K_min",
+                                    field=sorted(unknown)[0])
+    _tension_bounds(constraints.get("tension"))
+    bounds = dict(bounds or {})
+    budget = dict(budget or {})
+    for name in list(bounds) + list(budget):
+        if name not in DESIGN_VARIABLES:
+            raise InvalidParameterError(f"unknown design variable {name!r}", field=name)
+    n = m.n
+    x0 = _symmetric_columns(m)
+    lo, hi = {}, {}
+    for name in DESIGN_VARIABLES:
+        if name in vary:
+            blo, bhi = bounds.get(name, (x0[name] / 10.0, x0[name] * 10.0))
+            lo[name] = _per_segment(blo, n, f"bounds.{name}")
+            hi[name] = _per_segment(bhi, n, f"bounds.{name}")
+            if np.any(lo[name] <= 0) or np.any(hi[name] < lo[name]):
+                raise InvalidParameterError(f"bounds for {name} need 0 < lo <= hi", field=f"bounds.{name}")
+        else:
+            lo[name] = hi[name] = x0[name]
+    start = {name: np.clip(x0[name], lo[name], hi[name]) for name in DESIGN_VARIABLES}
+    # Start inside the budgets: scale a varied variable down to its budget.
+    for name, total in budget.items():
+        total = float(total)
+        if not math.isfinite(total) or total <= 0:
+            raise InvalidParameterError(f"budget for {name} must be positive and finite", field=f"budget.{name}")
+        if start[name].sum() > total:
+            start[name] = np.maximum(start[name] * total / start[name].sum(), lo[name])
+    nlp = buckling_design_nlp(n, boundary == "guided")
+    d = nlp.d
+    # Initial load and Cholesky factor.
+    m_start = _build(start)
+    K, G, S0 = straight_matrices(m_start)
+    Z = _basis(S0, boundary == "guided", n)
+    if required is None:
+        try:
+            P0 = 0.5 * float(sla.eigh(Z.T @ np.diag(K) @ Z, Z.T @ G @ Z, eigvals_only=True)[0])
+        except (np.linalg.LinAlgError, ValueError):
+            P0 = 0.0
+        P0 = max(P0, 0.0)
+    else:
+        P0 = required
+    Mz = Z.T @ (np.diag(K) - P0 * G) @ Z
+    w_, V_ = np.linalg.eigh(Mz)
+    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, abs(w_).max()))) @ V_.T)
+    lv0 = np.array([Lc[i, j] for i in range(d) for j in range(i + 1)])
+    xv0 = np.concatenate([start["a"], start["b"], start["k"], start["L0"], [P0], lv0])
+    lbx = np.concatenate([lo["a"], lo["b"], lo["k"], lo["L0"], [required if required is not None else 0.0],
+                          np.full(lv0.size, -_INF)])
+    ubx = np.concatenate([hi["a"], hi["b"], hi["k"], hi["L0"], [_INF], np.full(lv0.size, _INF)])
+    for k_ in nlp.diag:
+        lbx[4 * n + 1 + k_] = 0.0
+    # Rows: psd (=0), budgets a,b,k,L0, total length, tension (n), K (n).
+    lbg = [np.zeros(nlp.n_psd)]
+    ubg = [np.zeros(nlp.n_psd)]
+    for name in DESIGN_VARIABLES:
+        lbg.append([-_INF])
+        ubg.append([float(budget[name]) if name in budget else _INF])
+    tl = constraints.get("total_length")
+    if tl is True:
+        tl = m.straight_length
+    lbg.append([float(tl) if tl is not None else -_INF])
+    ubg.append([float(tl) if tl is not None else _INF])
+    tmin, tmax = _tension_bounds(constraints.get("tension"))
+    lbg.append(np.full(n, float(tmin)))
+    ubg.append(np.full(n, float(tmax)))
+    kmin = _stiffness_floor(x0, constraints.get("K_min"))
+    lbg.append(np.full(n, kmin))
+    ubg.append(np.full(n, _INF))
+    lbg_a, ubg_a = np.concatenate(lbg), np.concatenate(ubg)
+    weights = [1.0, 0.0] if required is None else [0.0, 1.0]
+    p = np.concatenate([x0["L0"], weights])
+    res = nlp.solve(xv0, lbx, ubx, lbg_a, ubg_a, p)
+    cols = {name: res.x[i * n:(i + 1) * n].copy() for i, name in enumerate(DESIGN_VARIABLES)}
+    for name in DESIGN_VARIABLES:          # IPOPT may step 1e-8 outside a bound: snap back
+        cols[name] = np.clip(cols[name], lo[name], hi[name])
+    # IPOPT honours the K rows only to its (relaxed) tolerance: K_i = K_min - 1e-9 is a normal
+    # answer when the optimum sits on the floor. Lift such segments onto K_i = K_min (a roundoff-
+    # sized change of one varied variable), then re-check every row and recompute the load there.
+    # After a failed solve any lift is allowed: it makes the reported ``best`` a valid chain.
+    _lift_stiffness(cols, lo, hi, vary, kmin, max_rel=1e-6 if res.success else _INF)
+    xv = res.x.copy()
+    xv[:4 * n] = np.concatenate([cols[name] for name in DESIGN_VARIABLES])
+    P_opt = float(res.x[4 * n])
+    try:
+        m_opt = _build(cols)
+        bk = critical_force(m_opt, boundary)
+    except TensegrityError as exc:
+        raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
+    rows = nlp.rows(xv)
+    viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
+    design = Design(manipulator=m_opt, critical_force=bk.force, loads=bk.loads,
+                    multiplicity=_multiplicity(bk.loads),
+                    active=_active(cols, lo, hi, vary, budget, rows, nlp.n_psd, n, tl, tmin, tmax, kmin),
+                    status=res.status, success=res.success, iterations=res.iterations, boundary=boundary,
+                    initial_critical_force=_safe_critical(m, boundary),
+                    feasible=required is None or bk.loads[0] >= required * (1 - 1e-6), K_min=kmin)
+    if not res.success or viol > 1e-6:
+        raise InfeasibleDesignError(
+            f"IPOPT did not find a feasible design ({res.status}); constraint violation {viol:.3g}",
+            status=res.status, best=design)
+    # Independent check: the recomputed critical load is the optimiser's P (to its tolerance).
+    if required is None and abs(bk.loads[0] - P_opt) > 1e-5 * max(1.0, P_opt):
+        raise SolverError(f"verification failed: optimiser's load {P_opt:.8g} but critical_force gives "
+                          f"{bk.loads[0]:.8g}", status=res.status)
+    if required is not None and not design.feasible:
+        raise InfeasibleDesignError(f"the design reaches only {bk.loads[0]:.6g} < required {required:.6g}",
+                                    status=res.status, best=design)
+    return design
+
+
+def _stiffness_floor(x0: Mapping[str, np.ndarray], K_min) -> float:
+    """The joint-stiffness bound of the design problem: ``K_min`` raised to the floor (condition (4))."""
+    scale = float(np.max(x0["k"] * (x0["a"] ** 2 + x0["b"] ** 2)))
+    floor = K_FLOOR_REL * scale
+    if K_min is None:
+        return floor
+    try:
+        K_min = float(K_min)
+    except (TypeError, ValueError):
+        raise InvalidParameterError("K_min must be a finite number", field="K_min") from None
+    if not math.isfinite(K_min):
+        raise InvalidParameterError("K_min must be a finite number", field="K_min")
+    return max(K_min, floor)
+
+
+def _joint_stiffness(a, b, k, L0) -> float:
+    """``K = E''(0)`` evaluated as the library does (:attr:`Segment.stiffness`, the quantity
+    :func:`critical_force` checks), not the closed form: the two differ by roundoff."""
+    return Segment(a, b, k, L0).stiffness
+
+
+def _lift_stiffness(cols: dict[str, np.ndarray], lo, hi, vary, kmin: float, max_rel: float = _INF) -> list[int]:
+    """Put every segment with ``K_i < kmin`` onto ``K_i = kmin`` (in place) by changing one varied
+    variable: the smallest relative change among ``L0``, ``k``, ``a`` that stays within its bounds
+    and ``max_rel``, else ``b`` (which also moves the chain's geometry; the caller re-checks every
+    row). Returns the segments changed. A segment no single variable can lift so is left as it is."""
+    changed = []
+    for i in range(cols["k"].size):
+        a, b, k, L0 = (float(cols[nm][i]) for nm in DESIGN_VARIABLES)
+        if _joint_stiffness(a, b, k, L0) >= kmin:
+            continue
+        cands = []
+        if "L0" in vary:
+            cands.append(("L0", (kmin / k + 2.0 * (b * b - a * a)) / b))
+        if "k" in vary and b * L0 - 2.0 * (b * b - a * a) > 0:
+            cands.append(("k", kmin / (b * L0 - 2.0 * (b * b - a * a))))
+        if "a" in vary:
+            s = b * b - (b * L0 - kmin / k) / 2.0
+            if s > 0:
+                cands.append(("a", math.sqrt(s)))
+        if "b" in vary:                         # K >= kmin  <=>  2 b^2 - L0 b - (2 a^2 - kmin / k) <= 0
+            disc = L0 * L0 + 8.0 * (2.0 * a * a - kmin / k)
+            if disc >= 0:
+                ends = ((L0 - math.sqrt(disc)) / 4.0, (L0 + math.sqrt(disc)) / 4.0)
+                cands.append(("b", min((e for e in ends if e > 0), key=lambda e: abs(e - b), default=-1.0)))
+        best = None
+        for name, x in cands:
+            if not x > 0:
+                continue
+            vals = {"a": a, "b": b, "k": k, "L0": L0}
+            step = _INF if name != "b" or x >= b else -_INF     # the side on which K grows
+            for _ in range(64):                 # nudge until K >= kmin holds in floating point
+                vals[name] = x
+                if _joint_stiffness(vals["a"], vals["b"], vals["k"], vals["L0"]) >= kmin:
+                    break
+                x = float(np.nextafter(x, step))
+            else:
+                continue
+            if not lo[name][i] <= x <= hi[name][i]:
+                continue
+            rel = abs(x - float(cols[name][i])) / abs(float(cols[name][i]))
+            if rel > max_rel:
+                continue
+            key = (name == "b", rel)
+            if best is None or key < best[0]:
+                best = (key, name, x)
+        if best is not None:
+            cols[best[1]][i] = best[2]
+            changed.append(i)
+    return changed
+
+
+def _basis(S0: np.ndarray, guided: bool, n: int) -> np.ndarray:
+    if not guided:
+        return np.eye(n)
+    return np.vstack([np.eye(n - 1), -S0[None, : n - 1] / S0[n - 1]])
+
+
+def _active(cols, lo, hi, vary, budget, rows, n_psd, n, tl, tmin, tmax, kmin, tol=1e-6) -> list[str]:
+    act = []
+    for name in vary:
+        for i in range(n):
+            x = cols[name][i]
+            scale = max(1.0, abs(x))
+            if x <= lo[name][i] + tol * scale:
+                act.append(f"{name}[{i}] >= {lo[name][i]:.6g}")
+            elif x >= hi[name][i] - tol * scale:
+                act.append(f"{name}[{i}] <= {hi[name][i]:.6g}")
+    r = n_psd
+    for j, name in enumerate(DESIGN_VARIABLES):
+        if name in budget and rows[r + j] >= float(budget[name]) - tol * max(1.0, abs(float(budget[name]))):
+            act.append(f"sum({name}) <= {float(budget[name]):.6g}")
+    if tl is not None:
+        act.append(f"2 sum(b) == {float(tl):.6g}")
+    ten = rows[r + 5: r + 5 + n]
+    K = rows[r + 5 + n: r + 5 + 2 * n]
+    for i in range(n):
+        if math.isfinite(tmin) and ten[i] <= tmin + tol * max(1.0, abs(tmin)):
+            act.append(f"tension[{i}] >= {tmin:.6g}")
+        if math.isfinite(tmax) and ten[i] >= tmax - tol * max(1.0, abs(tmax)):
+            act.append(f"tension[{i}] <= {tmax:.6g}")
+        if K[i] <= kmin + tol * max(1.0, abs(kmin)):
+            act.append(f"K[{i}] >= {kmin:.6g}")
+    return act
+
+
+# --------------------------------------------------------------------------- 2. preloads for a pose
+def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "nominal", *,
+                    margin: float = 1e-3, taut: bool = False, bounds: tuple | None = None,
+                    end_angle: float | None = None, q0=None, time_limit: float | None = None) -> PreloadDesign:
+    """Rest lengths ``(L1_0, L2_0)`` per segment putting the tip at ``target`` stably under ``load``.
+
+    Parameters
+    ----------
+    m : Manipulator
+        Geometry and stiffness (kept); its rest lengths are the nominal preloads.
+    target : (float, float)
+        Tip position ``(x, y)`` (length units).
+    load : (float, float)
+        Tip force ``(fx, fy)`` (a dead load).
+    objective : {"nominal", "margin", "energy"}
+        Least change from the nominal preloads; largest stability margin; least spring energy.
+    margin : float
+        Required smallest eigenvalue of the joint-space Hessian of ``E - F.tip`` (torque/rad);
+        the lower bound of the margin for ``objective="margin"``.
+    taut : bool
+        Keep every spring in tension (``L >= L0``).
+    bounds : (lo, hi), optional
+        Bounds on every rest length, each a number or ``2 n`` values (``L1_0`` of every segment, then every
+        ``L2_0``); default ``(0.1 b_min, 4 b_max)``.
+    end_angle : float, optional
+        Also prescribe the absolute angle of the last link (rad).
+    q0 : array_like, optional
+        Initial configuration; default the least-energy equilibrium at the target with the
+        nominal preloads (or a straight-line guess when there is none).
+    time_limit : float, optional
+        Seconds this call may take, as in :func:`maximize_critical_force`.
+
+    Returns
+    -------
+    PreloadDesign
+        Verified: the force-controlled equilibrium with these preloads, started from the
+        optimiser's ``q``, lands on the target within ``1e-6 max(b)`` with Morse index 0.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        (``RuntimeError``) IPOPT found no feasible preloads (``best`` holds its last point as a
+        dict), or the verification failed.
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
+    """
+    with _time_limit(time_limit):
+        return _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0)
+
+
+def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0) -> PreloadDesign:
+    from ...numerics import preload_nlp
+
+    if objective not in ("nominal", "margin", "energy"):
+        raise InvalidParameterError(f"objective must be 'nominal', 'margin' or 'energy', got {objective!r}",
+                                    field="objective")
+    target = np.asarray(target, dtype=float)
+    load = np.asarray(load, dtype=float)
+    if target.shape != (2,) or not np.all(np.isfinite(target)):
+        raise InvalidParameterError("target must be two finite numbers (x, y)", field="target")
+    if load.shape != (2,) or not np.all(np.isfinite(load)):
+        raise InvalidParameterError("load must be two finite numbers (fx, fy)", field="load")
+    if not math.isfinite(margin) or margin < 0:
+        raise InvalidParameterError("margin must be finite and >= 0", field="margin")
+    n = m.n
+    if n < 2:
+        # one segment: the target alone fixes its angle (a point of a circle) and two rest lengths hold it;
+        # the NLP is written for chains (its rows assume n >= 2)
+        raise InvalidParameterError("choose_preloads needs a chain of n >= 2 segments", field="n")
+    dx, dy = m.straight_length - target[0], target[1]
+    try:
+        m.check_reachable(dx, dy)
+    except UnreachableTargetError as exc:        # the caller gave a tip position, not a deflection
+        raise UnreachableTargetError(exc.message, field="target", **exc.details) from None
+    lo, hi = rest_length_bounds(m, bounds)
+    if q0 is None:
+        try:
+            q0 = solve_equilibrium(m, dx, dy).q
+        except TensegrityError:
+            q0 = _reach_guess(m, target)
+    q0 = np.asarray(q0, dtype=float)
+    nlp = preload_nlp(n)
+    L0nom = np.concatenate([m.L1_0, m.L2_0])
+    L0start = np.clip(L0nom, lo, hi)
+    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start[:n], L0start[n:]))
+    _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
+    T = np.tril(np.ones((n, n)))
+    Hq = T.T @ Hphi @ T
+    mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
+    w_, V_ = np.linalg.eigh(Hq - mu0 * np.eye(n))
+    # a start for the margin's Cholesky factor; the floor relative to the Hessian's size (loads of 1e12
+    # give entries of 1e12, where an absolute 1e-6 is below roundoff and the factorisation fails)
+    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
+    lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
+    x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
+    lbx = np.concatenate([np.full(n, -_INF), np.broadcast_to(lo, (2 * n)), [margin], np.full(lv0.size, -_INF)])
+    ubx = np.concatenate([np.full(n, _INF), np.broadcast_to(hi, (2 * n)), [margin if objective != "margin" else _INF],
+                          np.full(lv0.size, _INF)])
+    for k_ in nlp.diag:
+        lbx[3 * n + 1 + k_] = 0.0
+    lim = m.joint_limits * (1 - RANGE_SHRINK)
+    ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
+    lbg = np.concatenate([np.zeros(n), target, [ea[0]], np.zeros(lv0.size),
+                          np.full(2 * n, 0.0 if taut else -_INF), -lim])
+    ubg = np.concatenate([np.zeros(n), target, [ea[1]], np.zeros(lv0.size), np.full(2 * n, _INF), lim])
+    weights = {"nominal": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
+    p = np.concatenate([m.a, m.b, m.k1, m.k2, load, L0nom, weights])
+    res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
+    phi = res.x[:n]
+    q = np.diff(np.concatenate([[0.0], phi]))
+    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
+    L10 = np.clip(res.x[n:2 * n], lo2[:n], hi2[:n])
+    L20 = np.clip(res.x[2 * n:3 * n], lo2[n:], hi2[n:])
+    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[3 * n])}
+    if not res.success:
+        raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
+                                    best=best)
+    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
+    # the forward solve from the optimiser's q: Newton (IPOPT's own descent from an exact minimum near a joint
+    # bound can be pushed into another well by its barrier), IPOPT's descent where Newton does not settle
+    eq = settle_under_force(m_new, load, q)
+    try:
+        eq = eq if eq is not None else solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
+    except TimeLimitError:
+        raise
+    except TensegrityError as exc:
+        raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
+                                    f"({exc})", status=res.status, best=best) from exc
+    if not eq.stable or np.max(np.abs(eq.tip - target)) > 1e-6 * float(m.b.max()):     # in the chain's units
+        raise InfeasibleDesignError(
+            f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
+            f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
+    _, _, Hphi, _, _ = chain_solver(m_new).evaluate(eq.q, load)
+    achieved = float(np.linalg.eigvalsh(T.T @ Hphi @ T)[0])
+    return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q, margin=achieved,
+                         tip=eq.tip, energy=eq.energy, status=res.status, success=res.success,
+                         iterations=res.iterations, equilibrium=eq)
+
+
+def rest_length_bounds(m: Manipulator, bounds) -> tuple[Any, Any]:
+    """``(lo, hi)`` of :func:`choose_preloads`'s ``bounds`` (each a number or ``2 n`` values: ``L1_0`` of every
+    segment, then every ``L2_0``; default ``(0.1 b_min, 4 b_max)``), checked (``field="bounds"``)."""
+    n = m.n
+    try:
+        lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
+        lo = np.broadcast_to(np.asarray(lo, dtype=float), (2 * n)).copy() if np.ndim(lo) else float(lo)
+        hi = np.broadcast_to(np.asarray(hi, dtype=float), (2 * n)).copy() if np.ndim(hi) else float(hi)
+    except (TypeError, ValueError):
+        raise InvalidParameterError("bounds: lo and hi are numbers or 2n values (L1_0 of every segment, then "
+                                    "L2_0)", field="bounds") from None
+    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(0 < np.asarray(lo))
+            and np.all(np.asarray(lo) < np.asarray(hi))):
+        raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
+    return lo, hi
+
+
+def _reach_guess(m: Manipulator, target: np.ndarray) -> np.ndarray:
+    """A configuration bending every joint equally toward the target (a start, not a solution)."""
+    ang = math.atan2(target[1], target[0] - m.base_length)
+    return np.concatenate([[ang], np.zeros(m.n - 1)]) * 0.5
+
+
+# --------------------------------------------------------------------------- 4. sensitivities
+def critical_load_sensitivity(m: Manipulator, boundary: str = "guided", mode: int = 0) -> dict[str, np.ndarray]:
+    """``d(load)/d(parameter)`` of a critical load, per segment, for ``a``, ``b``, ``k``, ``L0``.
+
+    Symmetric segments; ``k`` and ``L0`` change both springs together. From the bordered
+    eigenproblem ``A(P) w = 0``, ``A = [[K - P G, S0], [S0^T, 0]]`` (guided) or
+    ``A = K - P G`` (free): ``dP/dp = w^T (dA/dp) w / (q^T G q)``.
+
+    Returns
+    -------
+    dict
+        ``{"a", "b", "k", "L0"}`` -> ndarray (n,), and ``"load"`` the load itself.
+
+    Raises
+    ------
+    InvalidParameterError
+        When the load is repeated (not differentiable there; use the design NLP instead).
+    """
+    bk = critical_force(m, boundary)
+    if mode < 0 or mode >= bk.loads.size:
+        raise InvalidParameterError(f"mode must be in 0..{bk.loads.size - 1}", field="mode")
+    P = bk.loads[mode]
+    gaps = np.abs(np.delete(bk.loads, mode) - P)
+    if gaps.size and gaps.min() < 1e-6 * P:
+        raise InvalidParameterError("the critical load is repeated: it has no derivative there", field="mode")
+    K, G, S0 = straight_matrices(m)
+    qv = bk.modes[mode].q
+    guided = boundary == "guided"
+    f = -float(S0 @ ((K - 0) * qv - P * (G @ qv))) / float(S0 @ S0) if guided else 0.0
+    denom = float(qv @ G @ qv)
+    n = m.n
+    a, b, k, L0 = m.a, m.b, m.k1, m.L1_0
+    T = np.tril(np.ones((n, n)))
+    dK = {"a": 4 * k * a, "b": k * (L0 - 4 * b), "k": b * L0 - 2 * (b * b - a * a), "L0": k * b}
+    out = {name: dK[name] * qv ** 2 / denom for name in ("a", "k", "L0")}
+    db = np.zeros(n)
+    Tq = T @ qv
+    for i in range(n):
+        dl = np.zeros(n)
+        dl[i] = 1.0
+        if i > 0:
+            dl[i - 1] = 1.0
+        dG_qq = float(dl @ Tq ** 2)                 # q^T T^T diag(dl) T q
+        dS0_q = float(dl @ Tq)                      # (T^T dl)^T q
+        db[i] = (dK["b"][i] * qv[i] ** 2 - P * dG_qq + (2 * f * dS0_q if guided else 0.0)) / denom
+    out["b"] = db
+    out["load"] = np.array(P)
+    return out
+
+
+def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.ndarray]:
+    """``d(q, F)/d(parameters)`` at a displacement-controlled equilibrium (tip held fixed).
+
+    Implicit differentiation of the KKT system with respect to the per-segment parameters
+    ``a, b, k1, k2, L1_0, L2_0``.
+
+    Returns
+    -------
+    dict
+        ``"dq"``: ndarray (n, 6n) and ``"dF"``: ndarray (2, 6n), columns ordered as
+        ``names`` (``"a[0]", ..., "L2_0[n-1]"``); and per-parameter blocks
+        ``"dq/<name>"`` (n, n) and ``"dF/<name>"`` (2, n).
+    """
+    n = m.n
+    Jz, Jp = chain_solver(m).kkt_parameter_jacobian(np.asarray(eq.q, float), np.asarray(eq.force, float),
+                                                    np.asarray(eq.tip, float))
+    try:
+        dz = -np.linalg.solve(Jz, Jp)
+    except np.linalg.LinAlgError:
+        raise InvalidParameterError("the KKT system is singular at this equilibrium", field="eq") from None
+    D = np.eye(n) - np.eye(n, k=-1)
+    dq = D @ dz[:n]
+    dF = dz[n:n + 2]
+    names = [f"{p}[{i}]" for p in ("a", "b", "k1", "k2", "L1_0", "L2_0") for i in range(n)]
+    out: dict[str, np.ndarray] = {"dq": dq, "dF": dF, "names": np.array(names)}
+    for j, p in enumerate(("a", "b", "k1", "k2", "L1_0", "L2_0")):
+        out[f"dq/{p}"] = dq[:, j * n:(j + 1) * n]
+        out[f"dF/{p}"] = dF[:, j * n:(j + 1) * n]
+    return out

@@ -1,0 +1,2 @@
+"""Equilibria: one equilibrium, the least-energy one, every one, rest shapes, stability, buckling, stiffness,
+the energy landscape."""

@@ -1,0 +1,281 @@
+"""Every equilibrium for a prescribed tip displacement: minima, saddles and maxima.
+
+Two methods, one result type (:class:`EquilibriumSet`, a sorted ``list`` of
+:class:`~tensegrity_opt.Equilibrium` that also says how it was obtained):
+
+``method="search"`` (default, any ``n``)
+    The KKT system ``grad E(q) = J(q)^T F``, ``tip(q) = target`` (n + 2 equations in ``q, F``) is
+    solved by damped Newton (CasADi residual and exact Jacobian) from many seeds: every buckling
+    mode with both signs at several amplitudes, random starts, the wells of bistable segments
+    (:func:`tensegrity_opt.analyses.equilibria.seeds.well_seeds`), uniform random configurations projected onto the tip
+    constraint, mirror images, and IPOPT's minima. Complete *in practice* for n <= 5: measured against
+    the homotopy on 104 random multistable chains (``tests/test_completeness.py``); for n >= 6 against
+    an independent brute force (``benchmarks/search_check.py``), where it misses some; never certified
+    (``certified=False``).
+``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
+    Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
+    (:mod:`tensegrity_opt.numerics.homotopy`); the real roots inside the physical range, polished by Newton.
+    ``certified=True`` when every path ended and every real root polished.
+
+Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest
+classified by the Morse index of the reduced Hessian and sorted by energy.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
+from ...model.manipulator import Manipulator
+from ...numerics import KERNEL_MAX, chain_solver
+from .equilibrium import (
+    RESIDUAL_TOL,
+    Equilibrium,
+    check_q0,
+    is_equilibrium,
+    local_equilibrium,
+    make_equilibrium,
+    one_segment_equilibrium,
+    straight_equilibrium,
+)
+from .seeds import projected_sample, seeds, well_seeds
+
+__all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
+
+#: Uniform random configurations projected onto the tip constraint per joint (default of ``n_projected``),
+#: and their generator's seed.
+#: Measured on the 104 oracle chains (n = 2..5): 60 n missed 1 equilibrium, 100 n and 150 n none;
+#: running the Python Newton again from the starts the kernels did not converge found nothing more
+#: and doubled the time. A start not converged in the kernels is dropped. Multistable chains of up to
+#: SHORT_N segments (equilibria multiply; compiled kernels: microseconds a start) SHORT_PER_JOINT: an
+#: n = 6 chain whose homotopy set has 9 equilibria showed 8 with 100 n and 1200 starts, 9 with 3000.
+#: Chains beyond the compiled kernels (n > KERNEL_MAX: the Python Newton, ~1 ms a start) take
+#: LONG_PER_JOINT (uniform n = 20 at dx = 0.3: 24 equilibria without the sample, 36 with 20 n in
+#: 0.28 s, 38 with 100 n in 0.9 s).
+PROJECTED_PER_JOINT = 100
+LONG_PER_JOINT = 20
+SHORT_N = 6
+SHORT_PER_JOINT = 500
+PROJECTED_SEED = 4242
+
+#: Longest chain the homotopy method accepts (paths on general chains: 8, 96, 832, 6272, 43648 for
+#: n = 2..6; n = 6 takes ~12 min on 2 cores).
+HOMOTOPY_MAX_N = 6
+
+
+class EquilibriumSet(list):
+    """The equilibria of :func:`find_equilibria` (a ``list``, sorted by energy) and how they were found.
+
+    Attributes
+    ----------
+    method : str
+        ``"search"``, ``"homotopy"``, or ``"straight"`` / ``"closed_form"`` for the trivial cases.
+    certified : bool
+        True only when the set is proven complete: the homotopy tracked every path to an end and
+        every real root inside the range polished onto an equilibrium (or the case is trivial).
+    paths, failed_paths : int
+        Homotopy paths tracked and failed (0 for the search).
+    seconds : float
+        Wall time of the homotopy solver (0 for the search).
+    status : str
+        What happened, e.g. ``"phc: 456 paths, 0 failed, 0 at infinity"`` or the search's statuses.
+    """
+
+    def __init__(self, items=(), *, method: str, certified: bool, paths: int = 0, failed_paths: int = 0,
+                 seconds: float = 0.0, status: str = "") -> None:
+        super().__init__(items)
+        self.method = method
+        self.certified = bool(certified)
+        self.paths = int(paths)
+        self.failed_paths = int(failed_paths)
+        self.seconds = float(seconds)
+        self.status = status
+
+    def __repr__(self) -> str:
+        return (f"EquilibriumSet({len(self)} equilibria, method={self.method!r}, certified={self.certified}, "
+                f"paths={self.paths}, failed_paths={self.failed_paths})")
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/equilibria``): ``equilibria`` (each
+        :meth:`Equilibrium.to_dict`), ``method``, ``certified``, ``paths``, ``failed_paths``."""
+        return {"equilibria": [e.to_dict() for e in self], "method": self.method, "certified": self.certified,
+                "paths": self.paths, "failed_paths": self.failed_paths}
+
+
+def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
+                    amplitudes=(0.6, 1.0, 1.6), max_modes: int = 12, extra_seeds=None,
+                    dedupe_tol: float = 1e-6, n_projected: int | None = None,
+                    timeout: float | None = None) -> EquilibriumSet:
+    """All equilibria inside the physical range for the tip at ``(2 sum(b) - dx, dy)``.
+
+    Parameters
+    ----------
+    m : Manipulator
+    dx, dy : float
+        Tip deflection (length units).
+    method : {"search", "homotopy"}
+        ``"search"``: multi-start Newton (fast, any ``n``, complete in practice but not certified).
+        ``"homotopy"``: PHCpack's polyhedral homotopy on the polynomial KKT system, certified
+        (``n <= 6``; on 2 cores ~0.5 s for n = 3, 4-8 s for n = 4, 1-2.5 min for n = 5, ~12 min for
+        n = 6; pass ``timeout``).
+    n_random : int
+        Random Newton starts (fixed seed: the answer is reproducible). Search only.
+    amplitudes : sequence of float
+        Multiples of the eq.-23 amplitude at which each mode seeds Newton. Search only.
+    max_modes : int
+        At most this many buckling modes are used as seeds (all ``n - 1`` for ``n <= 13``). Search only.
+    extra_seeds : iterable of array_like, optional
+        More starting configurations (e.g. a previous solution). Search only.
+    n_projected : int, optional
+        Uniform random configurations (fixed seed) projected onto the tip constraint, Newton from each.
+        Default ``500 n`` for multistable chains of up to 6 segments, ``100 n`` for other chains of up
+        to 8 (a bistable n = 8 chain: ~0.7 s, some 870 equilibria of more than 1100), ``20 n`` up to 64,
+        else 0. Search only.
+    dedupe_tol : float
+        Two solutions closer than this (max-norm of ``q``, rad) are one.
+    timeout : float, optional
+        Homotopy only: seconds before PHCpack is stopped (:class:`SolverError`).
+
+    Returns
+    -------
+    EquilibriumSet
+        A list without duplicates, sorted by energy (ties: ``q_1`` descending), with ``method``,
+        ``certified``, ``paths``, ``failed_paths``. For the paper's chain at small ``dx > 0, dy = 0``:
+        2 stable U, 2 saddles ZU, 2 maxima Z.
+
+    Raises
+    ------
+    UnreachableTargetError
+        (``ValueError``) beyond the chain's reach.
+    InvalidParameterError
+        (``ValueError``, ``field="method"``) for an unknown method or a chain too long for the homotopy.
+    HomotopyUnavailableError
+        (``RuntimeError``) for ``method="homotopy"`` without PHCpack (Debian package ``phcpack``).
+    SolverError
+        (``RuntimeError``) when no Newton start converged at all, or PHCpack failed.
+    """
+    if method not in ("search", "homotopy"):
+        raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
+    target = m.check_reachable(dx, dy)
+    if dx == 0.0 and dy == 0.0:
+        try:
+            return EquilibriumSet([straight_equilibrium(m)], method="straight", certified=True, status="straight")
+        except StraightNotEquilibriumError:
+            # full extension: the straight chain is the only configuration, and not an equilibrium
+            return EquilibriumSet([], method="straight", certified=True, status="straight_not_equilibrium")
+    if m.n == 1:
+        return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", certified=True,
+                              status="closed_form")
+    if method == "homotopy":
+        return _homotopy(m, target, dedupe_tol, timeout)
+    results = []
+    statuses: dict[str, int] = {}
+    starts = [(s.q, s.force) for s in seeds(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes,
+                                              n_random=n_random)]
+    for q in extra_seeds or ():
+        starts.append((check_q0(m, q), None))
+    for q, F in starts:
+        res = local_equilibrium(m, target, q, F)
+        statuses[res.status] = statuses.get(res.status, 0) + 1
+        if is_equilibrium(m, res, target):
+            results.append(res)
+    # the wells of multistable chains and uniform random configurations, each projected onto the tip
+    # constraint (a sample of the whole configuration manifold): Newton from all of them at once
+    if n_projected is None:
+        if m.n <= SHORT_N and not m.monotonic:
+            per = SHORT_PER_JOINT
+        else:
+            per = PROJECTED_PER_JOINT if m.n <= KERNEL_MAX else LONG_PER_JOINT
+        n_projected = per * m.n if m.n <= 64 else 0
+    more = np.vstack([well_seeds(m, dx, dy), projected_sample(m, target, int(n_projected), PROJECTED_SEED)])
+    if more.shape[0]:
+        batch = chain_solver(m).newton_kkt_seeds(target, more, python_fallback=False)
+        for j in np.flatnonzero(batch.success & ~batch.on_bound).tolist():
+            res = batch.result(j)
+            if is_equilibrium(m, res, target):
+                results.append(res)
+        statuses["Newton (projected starts)"] = more.shape[0]
+    # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present.
+    for s in seeds(m, dx, dy, max_modes=2, n_random=0):
+        res = local_equilibrium(m, target, s.q, minimize=True)
+        if is_equilibrium(m, res, target):
+            results.append(res)
+    if dy == 0.0 and results and m == m.mirrored():
+        # a mirror-symmetric chain at dy = 0: -q is an equilibrium whenever q is (force (Fx, -Fy))
+        for r in _unique(results, dedupe_tol):
+            res = local_equilibrium(m, target, -r.q, r.force * np.array([1.0, -1.0]))
+            if is_equilibrium(m, res, target):
+                results.append(res)
+    if not results:
+        raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
+                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())), found=0)
+    eqs = _sorted(m, _unique(results, dedupe_tol))
+    return EquilibriumSet(eqs, method="search", certified=False,
+                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
+
+
+def _unique(results, tol: float) -> list:
+    """The first of each group of results whose angles agree within ``tol`` (max-norm), in order."""
+    if not results:
+        return []
+    Q = np.array([r.q for r in results])
+    kept = [0]
+    for i in range(1, Q.shape[0]):
+        if np.abs(Q[kept] - Q[i]).max(axis=1).min() >= tol:
+            kept.append(i)
+    return [results[i] for i in kept]
+
+
+def _sorted(m: Manipulator, results) -> list[Equilibrium]:
+    eqs = [make_equilibrium(m, r, constrained=True) for r in results]
+    eqs.sort(key=lambda e: (round(e.energy, 10), -e.q[0]))
+    return eqs
+
+
+def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
+    from ...numerics import LocalResult
+    from ...numerics.homotopy import real_configurations, rest_points_at, solve_homotopy
+
+    if m.n > HOMOTOPY_MAX_N:
+        raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
+                                    f"(its path count grows ~8x a segment), got n = {m.n}", field="method")
+    sol = solve_homotopy(m, target, timeout=timeout)
+    q, F, inside, regular = real_configurations(m, sol)
+    # F = 0 equilibria (g = h = 0) lie outside the torus the mixed volume counts: added from the
+    # segments' unloaded critical points (all of them, from each torque's quartic)
+    rest = rest_points_at(m, target)
+    q = np.vstack([q, rest])
+    F = np.vstack([F, np.zeros((rest.shape[0], 2))])
+    inside = np.concatenate([inside, np.ones(rest.shape[0], dtype=bool)])
+    regular = np.concatenate([regular, np.ones(rest.shape[0], dtype=bool)])
+    polished, lost, singular = [], 0, []
+    for qi, Fi, reg in zip(q[inside], F[inside], regular[inside]):
+        res = local_equilibrium(m, target, qi, Fi)
+        near = 1e-6 if reg else 1e-3            # a singular root comes to ~sqrt(eps) or worse
+        if is_equilibrium(m, res, target) and np.max(np.abs(res.q - qi)) < near:
+            (polished if reg else singular).append(res)
+        elif m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL and m.in_range(qi):
+            # a root Newton cannot improve (its residual checked here)
+            (polished if reg else singular).append(LocalResult(qi, Fi, True, "phc_root", 0))
+        else:
+            lost += 1
+    regular_set = _unique(polished, 1e-9)
+    # distinct regular roots closer than dedupe_tol would be merged below: a near-degenerate pair the
+    # certificate does not separate
+    close = len(regular_set) - len(_unique(regular_set, dedupe_tol))
+    found = _unique(regular_set + singular, dedupe_tol if not singular else max(dedupe_tol, 1e-4))
+    certified = sol.complete and lost == 0 and close == 0
+    why = []
+    if not sol.consistent:
+        why.append("phc's report did not check out")
+    if lost:
+        why.append(f"{lost} real roots did not polish")
+    if close:
+        why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
+    status = (f"phc ({sol.attempts} run{'s' if sol.attempts > 1 else ''}): {sol.paths} paths, {sol.failures} failed, "
+              f"{sol.at_infinity} at infinity, {sol.singular} singular; {int(inside.sum())} real roots in range"
+              + (f" ({rest.shape[0]} with F = 0)" if rest.shape[0] else "") + "".join(f"; {w}" for w in why))
+    return EquilibriumSet(_sorted(m, found), method="homotopy", certified=certified,
+                          paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=status)

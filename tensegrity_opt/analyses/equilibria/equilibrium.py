@@ -1,0 +1,339 @@
+"""One equilibrium: the :class:`Equilibrium` result, and what every analysis builds it from.
+
+* :class:`Equilibrium` - ``q``, energy, the tip force holding it, its Morse index (stability) and the
+  solver status; ``to_dict()`` is its JSON form (the API's body);
+* building and checking one from a local solve (:func:`make_equilibrium`, :func:`is_equilibrium`),
+  the exact special cases (the straight chain, one segment) and the local solve from a start
+  (:func:`local_equilibrium`: Newton on the KKT system, IPOPT as the fallback);
+* :func:`solve_equilibrium_under_force`: a local minimiser of ``E(q) - F . tip(q)`` for a dead tip
+  load (IPOPT, polished by Newton).
+
+The *least-energy stable* equilibrium for a tip displacement (the global search) is
+:func:`tensegrity_opt.analyses.equilibria.least_energy.solve_equilibrium`; every equilibrium is
+:func:`tensegrity_opt.analyses.equilibria.all_equilibria.find_equilibria`. Both build on this module, which
+imports neither. Thread-safe (solvers are cached per thread, :mod:`tensegrity_opt.numerics`).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Any, ClassVar
+
+import numpy as np
+
+from ...errors import (
+    InvalidParameterError,
+    NoEquilibriumError,
+    SolverError,
+    StraightNotEquilibriumError,
+    TensegrityError,
+    UnreachableTargetError,
+)
+from ...model.manipulator import Manipulator
+from ...model.shapes import shape_label, sign_string
+from ...numerics import LocalResult, chain_solver
+from ...outcome import Outcome, SolverInfo
+from ...serialize import number, numbers
+from .buckling import critical_force, tip_slope
+from .stability import analyse, inertia_of_reduced
+
+__all__ = ["settle_under_force", "Equilibrium", "solve_equilibrium_under_force", "make_equilibrium", "local_equilibrium",
+           "is_equilibrium", "check_q0", "classify_result", "equilibrium_from", "straight_equilibrium", "one_segment_equilibrium", "RESIDUAL_TOL"]
+
+
+@dataclass(frozen=True)
+class Equilibrium(Outcome):
+    """An equilibrium configuration of the chain.
+
+    Attributes
+    ----------
+    q : ndarray (n,)
+        Relative joint angles (rad), inside the physical range.
+    energy : float
+        Elastic energy (force x length).
+    force : ndarray (2,)
+        Tip force ``[Fx, Fy]`` holding the equilibrium (``grad E = J^T F``); for the
+        displacement problem it comes from the constraint multipliers.
+    morse_index : int
+        Number of negative eigenvalues of the reduced Hessian (0: stable).
+    stable : bool
+        Strict local minimum (Morse index 0, non-degenerate).
+    solver : SolverInfo
+        The solver's own status (IPOPT ``return_status``, the Newton status, ``"straight"``,
+        ``"closed_form"``, ``"exact"``) and its iterations of the final solve (0: none needed, e.g. the
+        straight chain; ``None``: not counted - a point of the compiled continuation of a chain longer than
+        ``kernels.KERNEL_MAX`` segments, solved by CasADi's ``rootfinder``, which does not report it).
+    tip : ndarray (2,)
+        Tip position.
+    control : str
+        ``"displacement"`` or ``"force"``.
+    hessian_eigenvalues : ndarray
+        Eigenvalues of the reduced Hessian (absolute-angle coordinates).
+    status : str
+        How it was obtained (:attr:`STATUSES`); every status is a success: an unconverged solve is never
+        returned as an equilibrium.
+    message : str
+        The same in a sentence.
+    """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "converged": "a numerical solve converged to it (Newton on the KKT system, IPOPT, a continuation step; "
+                     "the solver's own status is in solver) and the equilibrium equations hold",
+        "exact": "known in closed form: the straight chain, a single segment, or an unloaded chain (a product of "
+                 "its segments' critical points)",
+        "certified": "the least-energy stable member of a set of equilibria proven complete by the polynomial "
+                     "homotopy (method='homotopy')",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset(STATUSES)
+
+    q: np.ndarray
+    energy: float
+    force: np.ndarray
+    morse_index: int
+    stable: bool
+    solver: SolverInfo
+    tip: np.ndarray
+    control: str = "displacement"
+    hessian_eigenvalues: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
+    status: str = "converged"
+
+    def __post_init__(self) -> None:
+        # the builders pass arrays they own: read-only in place (this is on the control loop's path)
+        self.q.flags.writeable = False
+        self.force.flags.writeable = False
+        self.tip.flags.writeable = False
+        self.hessian_eigenvalues.flags.writeable = False
+        if self.status not in self.STATUSES:
+            self._check_outcome()
+
+    @property
+    def message(self) -> str:
+        """A sentence: how the equilibrium was obtained."""
+        if self.status == "exact":
+            return f"exact ({self.solver.status.replace('_', ' ')})"
+        if self.status == "certified":
+            return ("the least-energy stable equilibrium of the complete set certified by the homotopy "
+                    f"({self.solver.status})")
+        its = "iterations not counted" if self.solver.iterations is None else f"{self.solver.iterations} iterations"
+        return f"converged ({self.solver.status}, {its})"
+
+    @cached_property
+    def shape(self) -> str:
+        """Shape label of ``q`` (:func:`tensegrity_opt.model.shapes.shape_label`)."""
+        return shape_label(self.q)
+
+    @cached_property
+    def signs(self) -> str:
+        """Sign string of ``q`` (:func:`tensegrity_opt.model.shapes.sign_string`)."""
+        return sign_string(self.q)
+
+    @property
+    def fx(self) -> float:
+        return float(self.force[0])
+
+    @property
+    def fy(self) -> float:
+        return float(self.force[1])
+
+    @property
+    def kind(self) -> str:
+        """``"minimum"``, ``"maximum"`` or ``"saddle"`` (``"degenerate"`` on a zero eigenvalue)."""
+        dim = self.q.size - 2 if self.control == "displacement" else self.q.size
+        if self.stable:
+            return "minimum"
+        if self.morse_index == 0:
+            return "degenerate"
+        return "maximum" if self.morse_index == dim else "saddle"
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/equilibrium``): ``success``, ``status``, ``message``, ``q``,
+        ``energy``, ``force`` ``{fx, fy}``, ``morse_index``, ``stable``, ``kind``, ``shape``, ``signs``, ``tip``,
+        ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted); every number finite
+        (:mod:`tensegrity_opt.serialize`)."""
+        return {**self.outcome(), "q": numbers(self.q), "energy": number(self.energy),
+                "force": {"fx": number(self.fx), "fy": number(self.fy)},
+                "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,
+                "shape": self.shape, "signs": self.signs, "tip": numbers(self.tip),
+                "solver": self.solver.to_dict()}
+
+
+def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:
+    """Classify a converged local solution into an :class:`Equilibrium`."""
+    return equilibrium_from(res, *classify_result(m, res, constrained), constrained)
+
+
+def classify_result(m: Manipulator, res: LocalResult, constrained: bool):
+    """``(inertia, energy, tip)`` of a converged local solution: from the compiled kernels' reduced
+    Hessian when it came with one, else evaluated from the model (:func:`.stability.analyse`)."""
+    if constrained and res.reduced_hessian is not None:        # the compiled kernels' outputs
+        return inertia_of_reduced(res.reduced_hessian, scale=m.torque_scale), res.energy, res.tip
+    return analyse(m, res.q, res.force, constrained=constrained)
+
+
+def equilibrium_from(res: LocalResult, inertia, energy, tip, constrained: bool) -> Equilibrium:
+    """The :class:`Equilibrium` of a local solution and its classification (:func:`classify_result`)."""
+    return Equilibrium(q=res.q.copy(), energy=energy, force=np.asarray(res.force, float).copy(),
+                       morse_index=inertia.morse_index, stable=inertia.stable,
+                       solver=SolverInfo(res.status, res.iterations),
+                       tip=np.array(tip, dtype=float), control="displacement" if constrained else "force",
+                       hessian_eigenvalues=inertia.eigenvalues)
+
+
+#: Largest accepted scaled residual of the equilibrium equations (checked in numpy, independently
+#: of the solver that produced the point).
+RESIDUAL_TOL = 1e-9
+
+
+def is_equilibrium(m: Manipulator, res: LocalResult, target: np.ndarray | None = None, *,
+           check_residual: bool = True) -> bool:
+    """A converged solve inside the open physical range that really is an equilibrium.
+
+    ``check_residual`` re-evaluates the equilibrium equations in numpy (independently of
+    CasADi); Newton results, whose convergence test *is* the residual, may skip it.
+    """
+    if res.energy is not None and not check_residual:
+        return res.success and not res.on_bound     # a converged kernel result: finite, range checked
+    if not (res.success and not res.on_bound and math.isfinite(float(res.force.sum()))
+            and m.in_range(res.q)):         # in_range is False for a NaN angle
+        return False
+    return not check_residual or m.equilibrium_residual(res.q, res.force, target) <= RESIDUAL_TOL
+
+
+def check_q0(m: Manipulator, q0) -> np.ndarray | None:
+    if q0 is None:
+        return None
+    q0 = np.asarray(q0, dtype=float)
+    if q0.shape == (m.n,) and m.in_range(q0):          # the common case first (NaN is not in range)
+        return q0
+    if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
+        raise InvalidParameterError(f"q0 must hold {m.n} finite joint angles, got shape {q0.shape}", field="q0")
+    raise InvalidParameterError("q0 lies outside the physical joint range |q_i| < pi - 2 beta_i", field="q0")
+
+
+def straight_equilibrium(m: Manipulator, *, check: bool = True) -> Equilibrium:
+    """The fully extended chain (the only configuration reaching ``dx = dy = 0``).
+
+    It is an equilibrium only when its spring torques are balanced by a tip force, which at full
+    extension can only be ``Fy`` times each joint's lever arm: always so for symmetric segments
+    (no torque), in general not with asymmetric preloads (a pre-bent chain pulled straight needs an
+    unbounded tension). Then :class:`StraightNotEquilibriumError` (``check=False``: the straight
+    chain with the least-squares force, for callers that mark the point themselves).
+    """
+    q = np.zeros(m.n)
+    S0 = tip_slope(m)
+    s2 = float(S0 @ S0)
+    fy = float(S0 @ m.gradient(q) / s2) if s2 > 0.0 else 0.0
+    if check:
+        r = m.equilibrium_residual(q, (0.0, fy))
+        if r > RESIDUAL_TOL:
+            raise StraightNotEquilibriumError(
+                f"dx = dy = 0 holds the tip at full extension, which only the straight chain reaches, and the "
+                f"straight chain is not an equilibrium of this chain under any finite tip force (its spring "
+                f"torques are not proportional to the lever arms: residual {r:.3g} of k c^2; asymmetric "
+                f"preloads bend it); choose dx > 0", field="dx")
+    return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
+                       solver=SolverInfo("straight", 0), tip=m.tip(q), control="displacement", status="exact")
+
+
+def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
+    """A single segment: the target fixes the joint angle; the force is the least-norm one.
+
+    With one joint the tip constraint leaves no freedom (the configuration manifold is a
+    point) and the force along the link is not determined by equilibrium: eq. (8) gives the
+    component normal to the link, the least-norm force.
+    """
+    q = np.array([math.atan2(target[1], target[0] - m.base_length)])
+    if not m.in_range(q):
+        raise UnreachableTargetError(
+            f"reaching the target needs q = {q[0]:.6g}, outside the joint range |q| < {m.joint_limits[0]:.6g}",
+            field="dx")
+    J = m.jacobian(q)
+    force = J[:, 0] * (m.gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
+    return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True,
+                       solver=SolverInfo("closed_form", 0), tip=m.tip(q), control="displacement", status="exact")
+
+
+def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None,
+                      *, minimize: bool = False) -> LocalResult:
+    """One local solve for the displacement problem: Newton on the KKT system from ``(q0, F0)``,
+    or IPOPT (``minimize=True``) followed by a Newton polish. Returns the raw result."""
+    mdl = chain_solver(m)
+    if not minimize:
+        return mdl.newton_kkt(target, q0, F0)
+    res = mdl.minimize_displacement(target, q0)
+    if not res.on_bound and np.all(np.isfinite(res.q)):
+        # Newton polish to machine precision; IPOPT's status is kept (its solve is the result).
+        pol = mdl.newton_kkt(target, res.q, res.force)
+        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-4:
+            pol.status = res.status
+            pol.iterations = res.iterations
+            pol.success = res.success or res.status == "Solved_To_Acceptable_Level"
+            return pol
+        if res.status == "Solved_To_Acceptable_Level":
+            res.success = False
+    return res
+
+
+def settle_under_force(m: Manipulator, force, q0) -> Equilibrium | None:
+    """The stable equilibrium under the dead tip load ``force`` that Newton reaches from ``q0`` (the forward
+    quasi-static solve from a nearby state), or None when Newton does not converge inside the range onto a
+    stable point (the caller then descends, e.g. :func:`solve_equilibrium_under_force`)."""
+    res = chain_solver(m).newton_force(np.asarray(force, dtype=float), np.asarray(q0, dtype=float))
+    if not is_equilibrium(m, res):
+        return None
+    eq = make_equilibrium(m, res, constrained=False)
+    return eq if eq.stable else None
+
+
+def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=None) -> Equilibrium:
+    """A local minimiser of ``E(q) - F . tip(q)`` for the tip force ``F = (fx, fy)`` (dead load).
+
+    Parameters
+    ----------
+    fx, fy : float
+        Tip force (force units); ``fx < 0`` compresses.
+    q0 : array_like (n,), optional
+        Start. Default: straight, perturbed along the first free buckling mode when
+        straight is unstable under this load (``K + fx G`` not positive definite).
+
+    Returns
+    -------
+    Equilibrium
+        ``control == "force"``, classified with ``Z = I``; may be unstable only when
+        IPOPT stops at a degenerate point, which ``stable`` reports.
+
+    Raises
+    ------
+    NoEquilibriumError, SolverError
+        (``RuntimeError``) when IPOPT does not converge or only finds a point on a joint limit.
+    """
+    for name, v in (("fx", fx), ("fy", fy)):
+        if not math.isfinite(float(v)):
+            raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
+    force = np.array([float(fx), float(fy)])
+    q0 = check_q0(m, q0)
+    if q0 is None:
+        q0 = np.zeros(m.n)
+        try:
+            # straight is unstable under a compressive load beyond the first free-tip critical load
+            first = critical_force(m, "free", n_modes=1).modes[0]
+            if -force[0] >= first.load:
+                q0 = 0.05 * first.q / np.abs(first.q).max() * float(np.min(m.joint_limits))
+        except TensegrityError:
+            pass                    # straight is not an equilibrium: IPOPT leaves it anyway
+    mdl = chain_solver(m)
+    res = mdl.minimize_force(force, q0)
+    if res.success and not res.on_bound:
+        pol = mdl.newton_force(force, res.q)
+        if pol.success and np.max(np.abs(pol.q - res.q)) < 1e-4:
+            pol.status, pol.iterations = res.status, res.iterations
+            res = pol
+    if not res.success:
+        raise SolverError(f"IPOPT did not converge for the tip force ({fx:g}, {fy:g})", status=res.status)
+    if not is_equilibrium(m, res):
+        raise NoEquilibriumError(
+            f"no equilibrium inside the physical range for the tip force ({fx:g}, {fy:g}): the minimiser "
+            "presses a joint against its limit", status=res.status)
+    return make_equilibrium(m, res, constrained=False)

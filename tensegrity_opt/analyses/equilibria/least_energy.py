@@ -1,0 +1,404 @@
+"""The least-energy stable equilibrium for a tip displacement (the paper's problem): the global search.
+
+``solve_equilibrium(m, dx, dy)`` holds the tip at ``(2 sum(b) - dx, dy)`` and returns the stable
+equilibrium of least energy among those found: damped Newton on the KKT system from every seed
+(buckling modes with both signs, mirrors, arcs, random starts, the caller's ``q0``; on chains of
+bistable segments also every combination of the segments' wells and uniform random configurations
+projected onto the tip constraint), each classified by the inertia of the reduced Hessian; IPOPT
+(``min E`` s.t. ``tip = target``) from every seed when Newton finds no stable one or a segment is
+bistable; or, with ``method="homotopy"``, the least-energy stable member of the certified complete
+set (:func:`tensegrity_opt.analyses.equilibria.all_equilibria.find_equilibria`). Measured complete on random
+multistable chains against the homotopy (``tests/test_completeness.py``); certified only with
+``method="homotopy"``.
+
+The pieces (the :class:`~.equilibrium.Equilibrium` result, local solves, the exact special cases)
+are in :mod:`.equilibrium`. Thread-safe (solvers are cached per thread).
+"""
+
+from __future__ import annotations
+
+import math
+from collections import Counter
+from functools import lru_cache
+
+import numpy as np
+
+from ...errors import (
+    InvalidParameterError,
+    NoEquilibriumError,
+    SolverError,
+    UnreachableTargetError,
+)
+from ...model.manipulator import Manipulator
+from ...numerics import KERNEL_MAX, LocalResult, chain_solver
+from ...outcome import SolverInfo
+from .equilibrium import (
+    Equilibrium,
+    check_q0,
+    classify_result,
+    equilibrium_from,
+    is_equilibrium,
+    local_equilibrium,
+    make_equilibrium,
+    one_segment_equilibrium,
+    straight_equilibrium,
+)
+from .seeds import projected_sample, seed_starts, well_seeds
+from .stability import inertia_of_reduced
+
+__all__ = ["solve_equilibrium", "search_stable", "WELLS_MAX", "SAME_Q", "distinct", "distinct_rows"]
+
+
+def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
+                      method: str = "auto", n_random: int | None = None,
+                      max_modes: int | None = None) -> Equilibrium:
+    """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
+
+    Parameters
+    ----------
+    m : Manipulator
+    dx, dy : float
+        Tip deflection (length units); ``dx > 0`` shortens the chain.
+    q0 : array_like (n,), optional
+        A nearby configuration (continuation, control loops): a local solve from it
+        is tried first and its solution competes with the global search.
+    local : bool
+        Only the local solve from ``q0`` (Newton on the KKT system, IPOPT as the fallback):
+        the equilibrium on the branch through ``q0``, whatever its stability (read
+        ``stable``). For control loops and finite differences along a branch.
+    method : {"auto", "ipopt", "newton"}
+        ``"auto"``: damped Newton on the KKT system from every seed, classified, the least-energy
+        stable one kept — enough when every segment is monotonic (condition (4)); otherwise, or when
+        Newton finds no stable equilibrium, IPOPT (``min E`` s.t. ``tip = target``) from every seed
+        too, and the least-energy stable one of both. ``"ipopt"``: IPOPT from every seed only
+        (slower; the methods are compared in the tests). ``"newton"``: the Newton part of
+        ``"auto"`` alone — its work is bounded (at most 50 iterations per seed) and it raises
+        :class:`NoEquilibriumError` where ``"auto"`` would go on with IPOPT; for monotonic chains
+        it returns what ``"auto"`` returns whenever it returns. With ``local=True`` the methods
+        differ only in the fallback: ``"newton"`` raises :class:`SolverError` where the others
+        run IPOPT from ``q0``. ``"homotopy"``: the least-energy stable one of
+        ``find_equilibria(method="homotopy")`` — *certified* (every equilibrium is known) when its
+        ``status`` reads ``"homotopy (certified)"``; ``n <= 6``, seconds to minutes, needs PHCpack.
+
+        On chains with bistable segments the search also starts from every combination of the
+        segments' unloaded wells (up to ``WELLS_MAX``, projected onto the tip constraint); measured
+        against the certified homotopy on 97 random multistable chains n = 2..5 it returned the
+        least-energy stable equilibrium every time (``tests/test_completeness.py``), and against an
+        independent brute force for n = 6..10 (``benchmarks/search_check.py``). It is not certified.
+    n_random, max_modes : int, optional
+        Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
+        for chains of up to 64 segments, plus the two arc seeds of large deflections
+        (:func:`tensegrity_opt.analyses.equilibria.seeds.arc_seeds`); 0 and 2 (no arcs) for longer ones, whose
+        least-energy equilibria lie on the lowest modes' branches (each seed costs O(n) per iteration).
+
+    Returns
+    -------
+    Equilibrium
+        Stable (``morse_index == 0``) and of least energy among those found. When two
+        mirror images tie (``dy = 0``) the one nearer ``q0`` wins, else the one with
+        ``q_1 > 0``.
+
+    Raises
+    ------
+    UnreachableTargetError
+        (``ValueError``) when the target lies beyond the chain's reach (checked before any
+        solve), or when IPOPT proves it infeasible within the joint range from every start.
+    NoEquilibriumError, SolverError
+        (``RuntimeError``) when no solve converged to a stable equilibrium inside the
+        physical range; ``status`` lists the solver statuses met.
+    """
+    target = m.check_reachable(dx, dy)
+    q0 = check_q0(m, q0)
+    if local and q0 is None:
+        raise InvalidParameterError("local=True needs a starting configuration q0", field="q0")
+    if dx == 0.0 and dy == 0.0:
+        return straight_equilibrium(m)
+    if m.n == 1:
+        return one_segment_equilibrium(m, target)
+    if method not in ("auto", "ipopt", "newton", "homotopy"):
+        raise InvalidParameterError(f"method must be 'auto', 'ipopt', 'newton' or 'homotopy', got {method!r}",
+                                    field="method")
+    if method == "homotopy" and not local:
+        return _least_certified(m, dx, dy, q0)
+    if local:
+        res = local_equilibrium(m, target, q0)
+        if not is_equilibrium(m, res, target, check_residual=False):
+            if method == "newton":
+                raise SolverError(f"Newton from q0 did not converge for dx={dx:g}, dy={dy:g}; method='auto' "
+                                  "adds IPOPT", status=res.status)
+            fallback = local_equilibrium(m, target, q0, minimize=True)
+            if not is_equilibrium(m, fallback, target):
+                raise SolverError(f"the local solve from q0 did not converge for dx={dx:g}, dy={dy:g}",
+                                  status=f"newton: {res.status}; ipopt: {fallback.status}")
+            res = fallback
+        return make_equilibrium(m, res, constrained=True)
+    short = m.n <= 64
+    n_random = (8 if short else 0) if n_random is None else int(n_random)
+    max_modes = (6 if short else 2) if max_modes is None else int(max_modes)
+    starts = seed_starts(m, dx, dy, max_modes=max_modes, n_random=n_random, arcs=short)
+    if q0 is not None:
+        starts = np.vstack([q0, starts])
+    descents = starts                   # where IPOPT starts (multistable chains)
+    if not m.monotonic and short:
+        # the wells of the bistable segments (one per segment, every combination up to WELLS_MAX),
+        # projected onto the tip constraint: Newton from each; IPOPT's descent from the lowest ones
+        wells = well_seeds(m, dx, dy, hilltops=False, cap=WELLS_MAX)
+        if wells.shape[0]:
+            starts = np.vstack([starts, wells])
+            order = np.argsort([m.energy(q) for q in wells], kind="stable")[:WELL_DESCENTS]
+            descents = np.vstack([descents, wells[order]])
+        if m.n <= KERNEL_MAX and LEAST_PROJECTED_PER_JOINT and method != "newton":
+            # uniform random configurations projected onto the tip constraint (the compiled Newton:
+            # microseconds a start): minima close to the joint limits that no well pattern reaches
+            starts = np.vstack([starts, projected_sample(m, target, LEAST_PROJECTED_PER_JOINT * m.n,
+                                                         LEAST_PROJECTED_SEED)])
+    statuses: dict[str, int] = {}
+    found: list[Equilibrium] = []
+    if method == "auto":
+        # Newton on the KKT system from every seed (every stationary point nearby, ~0.1 ms each).
+        # With monotonic segments that finds the least-energy stable equilibrium (checked against
+        # IPOPT from the same seeds on grids of targets, tests/test_equilibrium.py); with
+        # bistable segments (K <= 0) it often lands on saddles only, so IPOPT's descent from every
+        # seed is added and the union decides.
+        found, _ = search_stable(m, target, starts, statuses, minimize=False, least=True)
+        if found and m.monotonic:
+            return _pick(found, q0, m.torque_scale)
+    if method == "newton":
+        found, n_unstable = search_stable(m, target, starts, statuses, minimize=False, least=True, fallback=True)
+        if found:
+            return _pick(found, q0, m.torque_scale)
+        raise NoEquilibriumError(f"Newton found no stable equilibrium for dx={dx:g}, dy={dy:g} from "
+                                 f"{len(starts)} starts ({n_unstable} unstable ones); method='auto' adds IPOPT",
+                                 status=_summary(statuses))
+    stable, n_unstable = search_stable(m, target, descents, statuses, minimize=True)
+    stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < SAME_Q for f in found)]
+    if stable:
+        return _pick(stable, q0, m.torque_scale)
+    if n_unstable:
+        raise NoEquilibriumError(
+            f"no stable equilibrium found for dx={dx:g}, dy={dy:g} ({n_unstable} unstable ones)",
+            status=_summary(statuses))
+    ipopt = {k: v for k, v in statuses.items() if not k.startswith("Newton")}
+    if ipopt and all(k.startswith("Infeasible_Problem_Detected") for k in ipopt):
+        raise UnreachableTargetError(
+            f"the target for dx={dx:g}, dy={dy:g} lies within the chain's length but outside the workspace "
+            f"of the physical joint range |q| < pi - 2 beta: IPOPT found it infeasible from all "
+            f"{sum(ipopt.values())} starts", field="dx", status=_summary(statuses))
+    if any(k.endswith("(on joint limit)") and not k.startswith("Infeasible") for k in ipopt):
+        raise NoEquilibriumError(
+            f"no equilibrium inside the physical range for dx={dx:g}, dy={dy:g}: the least-energy "
+            "configurations press a joint against its range limit |q| = pi - 2 beta (a spring "
+            "length reaches zero)", status=_summary(statuses))
+    raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
+                      status=_summary(statuses))
+
+
+#: Well patterns of a multistable chain tried by Newton (every combination of the segments' wells
+#: while there are at most this many), and how many of them (lowest projected energy first) IPOPT
+#: also descends from.
+WELLS_MAX = 256
+WELL_DESCENTS = 8
+#: Multistable chains with compiled kernels (n <= KERNEL_MAX) also start Newton from this many uniform
+#: random configurations per joint, projected onto the tip constraint (methods "auto" and "ipopt"; the
+#: bounded "newton" method keeps the seeds and wells only) (an n = 7 chain's least-energy
+#: minimum, at 99.8 % of a joint's range, was reached by none of 128 well descents, found from ~3000
+#: random projected starts).
+LEAST_PROJECTED_PER_JOINT = 500
+LEAST_PROJECTED_SEED = 9090
+
+
+def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None) -> Equilibrium:
+    """The least-energy stable equilibrium of the homotopy's complete set (``status`` says whether
+    that set is certified)."""
+    from dataclasses import replace
+
+    from .all_equilibria import find_equilibria
+
+    eqs = find_equilibria(m, dx, dy, method="homotopy")
+    stable = [e for e in eqs if e.stable]
+    label = "homotopy (certified)" if eqs.certified else f"homotopy (NOT certified: {eqs.status})"
+    if not stable:
+        raise NoEquilibriumError(f"no stable equilibrium exists for dx={dx:g}, dy={dy:g} ({len(eqs)} unstable ones"
+                                 f"{'' if eqs.certified else ' found'}; {eqs.status})", status=label)
+    best = _pick(stable, q0, m.torque_scale)
+    return replace(best, solver=SolverInfo(label, best.solver.iterations),
+                   status="certified" if eqs.certified else "converged")
+
+
+def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], statuses: dict[str, int], *,
+            minimize: bool, least: bool = False, fallback: bool | None = None) -> tuple[list[Equilibrium], int]:
+    """Local solves from every start; the distinct stable equilibria and the count of unstable ones.
+
+    ``least`` (Newton only): just the stable ones of least energy (within the tie tolerance of
+    :func:`_pick`), found by classifying the converged points in order of energy until the first
+    stable one; the unstable count then covers only the points classified (all of them when none
+    is stable).
+    """
+    if not minimize:
+        return _search_stable_newton(m, target, starts, statuses, least,
+                                     m.monotonic if fallback is None else fallback)
+    candidates: list[LocalResult] = []
+    for res in (local_equilibrium(m, target, q, minimize=True) for q in starts):
+        ok = is_equilibrium(m, res, target, check_residual=True)
+        _count(statuses, res.status, res.on_bound, ok)
+        if ok:
+            candidates.append(res)
+    stable: list[Equilibrium] = []
+    n_unstable = 0
+    for res in distinct(candidates):
+        inertia, energy, tip = classify_result(m, res, True)
+        if inertia.stable:
+            stable.append(equilibrium_from(res, inertia, energy, tip, True))
+        else:
+            n_unstable += 1
+    return stable, n_unstable
+
+
+def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: dict[str, int], least: bool,
+                          fallback: bool = True) -> tuple[list[Equilibrium], int]:
+    """:func:`search_stable` by Newton from every start: only converged points are looked at, only
+    the distinct ones are classified (the first of each group of coinciding points, in the order of
+    the starts), only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
+    # ``fallback=False`` (multistable chains under method "auto": hundreds of well starts, IPOPT's
+    # descents after): a start the compiled Newton did not settle is dropped rather than run again by
+    # the Python method (~3 ms each)
+    b = chain_solver(m).newton_kkt_seeds(target, starts, SAME_Q, python_fallback=fallback)
+    energy = b.energy.tolist()
+    if b.distinct is not None:
+        # one kernel call settled every start (all converged, no Python-method row) and compared the
+        # converged points inside the range (the test of distinct_rows)
+        idx = np.flatnonzero(b.distinct).tolist()
+        bound = int(np.count_nonzero(b.on_bound))
+        _count(statuses, "Newton_Converged", False, True, len(energy) - bound)
+        _count(statuses, "Newton_Converged", True, False, bound)
+    else:
+        on_bound = b.on_bound.tolist()
+        inside = b.success & ~b.on_bound
+        good = inside.tolist()
+        for j in np.flatnonzero(inside & np.isnan(b.energy)).tolist():
+            good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
+        for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
+            _count(statuses, status, bound, ok, count)
+        idx = _distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
+    known = {}                                      # Python-method rows: classified from the model
+    for j in idx:
+        if energy[j] != energy[j]:
+            known[j] = classify_result(m, b.result(j), True)
+            energy[j] = known[j][1]
+    stable: list[tuple[int, Equilibrium]] = []
+    n_unstable = 0
+    e_max = math.inf
+    ts = m.torque_scale
+    for j in (sorted(idx, key=energy.__getitem__) if least else idx):
+        if energy[j] > e_max:
+            break                                   # beyond the least stable energy and its ties
+        inertia, e, tip = (known[j] if j in known else
+                           (inertia_of_reduced(b.reduced_hessian[j], scale=ts), energy[j], b.tip[j]))
+        if inertia.stable:
+            if least and e_max == math.inf:
+                e_max = e + _TIE * max(ts, abs(e))
+            stable.append((j, Equilibrium(q=b.q[j].copy(), energy=e, force=b.force[j].copy(),
+                                          morse_index=inertia.morse_index, stable=True,
+                                          solver=SolverInfo(b.status[j], int(b.iterations[j])),
+                                          tip=np.array(tip, dtype=float),
+                                          hessian_eigenvalues=inertia.eigenvalues)))
+        else:
+            n_unstable += 1
+    if least:                                       # the ties in the order of the starts
+        stable.sort(key=lambda item: item[0])
+    return [e for _, e in stable], n_unstable
+
+
+def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
+    """The indices in ``idx`` whose rows of ``Q`` are distinct (:func:`distinct_rows`), in order.
+
+    Beyond 64 rows (the thousands of starts of a multistable chain) the same test without the k x k
+    comparison: each row is compared with the earlier rows whose first angle lies within ``SAME_Q``
+    (a sorted list of all earlier rows, bisected), as :func:`distinct_rows` compares it with every
+    earlier row."""
+    if len(idx) < 2:
+        return list(idx)
+    if len(idx) <= 64:
+        return [j for j, keep in zip(idx, distinct_rows(Q[idx]).tolist()) if keep]
+    import bisect
+
+    keys: list[float] = []
+    rows: list[int] = []
+    out = []
+    first = Q[:, 0].tolist()
+    for j in idx:
+        x = first[j]
+        lo, hi = bisect.bisect_left(keys, x - SAME_Q), bisect.bisect_right(keys, x + SAME_Q)
+        if not (lo < hi and np.min(np.abs(Q[rows[lo:hi]] - Q[j]).max(axis=1)) < SAME_Q):
+            out.append(j)
+        pos = bisect.bisect_left(keys, x)
+        keys.insert(pos, x)
+        rows.insert(pos, j)
+    return out
+
+
+def _count(statuses: dict[str, int], status: str, on_bound: bool, ok: bool, times: int = 1) -> None:
+    """Tally ``times`` local solves' outcome under their status (with why they were rejected)."""
+    if times <= 0:
+        return
+    key = status if ok else (status + (" (on joint limit)" if on_bound else " (rejected)"))
+    statuses[key] = statuses.get(key, 0) + times
+
+
+#: Two configurations closer than this in every joint angle (rad) are the same equilibrium.
+SAME_Q = 1e-7
+
+
+def distinct(results: list[LocalResult]) -> list[LocalResult]:
+    """The results whose ``q`` differs (by more than ``SAME_Q`` in some joint) from every earlier one's
+    (the first of each group of coinciding results is kept)."""
+    if len(results) < 2:
+        return list(results)
+    keep = distinct_rows(np.array([r.q for r in results]))
+    return [r for r, k in zip(results, keep.tolist()) if k]
+
+
+def distinct_rows(Q: np.ndarray) -> np.ndarray:
+    """Boolean mask of the rows of ``Q`` (k, n) that differ by more than ``SAME_Q`` in some entry from
+    every earlier row (the first of each group of coinciding rows is kept)."""
+    k = Q.shape[0]
+    if k < 2:
+        return np.ones(k, dtype=bool)
+    same = np.abs(Q[:, None, :] - Q[None, :, :]).max(axis=2) < SAME_Q
+    return ~(same & _earlier(k)).any(axis=1)
+
+
+@lru_cache(maxsize=64)
+def _earlier(k: int) -> np.ndarray:
+    """``[i, j]`` true where ``j < i`` (k x k), read only."""
+    lower = np.tri(k, k, -1, dtype=bool)
+    lower.setflags(write=False)
+    return lower
+
+
+#: Energies within this relative distance of the least one tie (mirror images; the same point twice),
+#: relative to the larger of the energy and the chain's torque scale ``k c^2`` (an energy).
+_TIE = 1e-9
+
+
+def _pick(stable: list[Equilibrium], q0: np.ndarray | None, scale: float) -> Equilibrium:
+    e_min = min(e.energy for e in stable)
+    tol = _TIE * max(scale, abs(e_min))
+    best = [e for e in stable if e.energy <= e_min + tol]
+    if q0 is not None:
+        return min(best, key=lambda e: float(np.linalg.norm(e.q - q0)))
+    pos = [e for e in best if _first_sign(e.q) > 0]
+    return (pos or best)[0]
+
+
+def _first_sign(q: np.ndarray) -> float:
+    vals = q.tolist()
+    if vals and math.isfinite(sum(vals)):           # plain floats: the common (finite) case
+        t = 1e-9 * max(1e-300, max(abs(v) for v in vals))
+        return next((1.0 if v > 0 else -1.0 for v in vals if abs(v) > t), 0.0)
+    nz = q[np.abs(q) > 1e-9 * max(1e-300, float(np.abs(q).max()))]
+    return float(np.sign(nz[0])) if nz.size else 0.0
+
+
+def _summary(statuses: dict[str, int]) -> str:
+    return ", ".join(f"{k} x{v}" for k, v in sorted(statuses.items()))

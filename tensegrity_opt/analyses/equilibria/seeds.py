@@ -1,0 +1,318 @@
+"""Starting points for the global searches: buckling modes, their mirrors, random starts, arcs.
+
+A seed is a configuration ``q`` (and a guess of the tip force) near which a
+local solver is started. For a deflection ``(dx, dy)`` a mode ``alpha`` is
+scaled by eq. 23 (``dx ~ 1/2 t^2 alpha^T G alpha``) and shifted by the smallest
+``q`` giving ``dy`` to first order; every seed is shrunk into the physical range.
+Random starts use a fixed-seed generator: the same call gives the same answer.
+
+The modes describe small deflections. Under large ones the least-energy shape can be a
+C curled close to the joint limits, which neither the scaled modes nor the random starts
+reach (measured: 1 of 114 random monotonic chains and targets missed it; Newton from the
+seeds stopped on the U branch, 2.1 energy units higher); two *arc* seeds cover it: every
+joint bent the same way, the same fraction of its range, ``q = ±t * limit`` with ``t <= 0.9``
+chosen so the tip lands nearest the target, used when that arc is curled (``t >= 0.25``; at
+small deflections the nearest arc is nearly straight and adds nothing). They come last, so they
+only change an answer when they find a lower minimum.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from ...errors import TensegrityError
+from ...model.manipulator import Manipulator
+from ...model.segment import Segment
+from .buckling import critical_force, quad_G, tip_slope
+
+__all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds", "well_seeds", "project_to_target",
+           "projected_sample", "segment_critical_points"]
+
+
+@dataclass(frozen=True)
+class Seed:
+    q: np.ndarray
+    force: np.ndarray | None
+    origin: str
+
+
+@lru_cache(maxsize=64)
+def _directions(m: Manipulator, max_modes: int) -> list[tuple[np.ndarray, float | None, float | None]]:
+    """Mode shapes with their predicted ``(Fx, Fy per t)``.
+
+    The guided buckling modes when they exist; otherwise (asymmetric preloads, ``K <= 0``) the
+    modes of the same geometry with stiff symmetric springs, which only serve as directions.
+    Cached per manipulator (``Manipulator`` is immutable and hashable): continuation and
+    repeated solves on one chain do not recompute its modes."""
+    if m.n < 2:
+        return [(np.ones(1), None, None)]
+    k = min(max_modes, m.n - 1)
+    try:
+        bk = critical_force(m, "guided", n_modes=k)
+        return [(md.q, -md.load, md.fy) for md in bk.modes]
+    except (TensegrityError, np.linalg.LinAlgError):
+        pass
+    # K_i = 1 + max(0, 2 (a^2 - b^2)) keeps the rest lengths positive
+    K = 1.0 + np.maximum(0.0, 2.0 * (m.a ** 2 - m.b ** 2))
+    proxy = Manipulator(Segment(a, b, 1.0, (Ki + 2.0 * (b * b - a * a)) / b) for a, b, Ki in zip(m.a, m.b, K))
+    bk = critical_force(proxy, "guided", n_modes=k)
+    return [(md.q, None, None) for md in bk.modes]
+
+
+@lru_cache(maxsize=256)
+def _basis(m: Manipulator, max_modes: int, amplitudes: tuple[float, ...], n_random: int, rng_seed: int):
+    """Seed directions scaled for ``dx = 1`` (rows), their force guesses and origins; cached per call pattern.
+
+    A seed for ``dx`` is ``sqrt(dx) * row + qy``, shrunk into the range: ``t0 = sqrt(2 dx / alpha^T G alpha)``
+    (eq. 23) scales as ``sqrt(dx)``, and the random directions come from a fixed-seed generator.
+    """
+    S0 = tip_slope(m)
+    rows, fxs, fys, origins = [], [], [], []
+    for alpha, fx, fy in _directions(m, max_modes):
+        s1 = np.sqrt(2.0 / quad_G(m, alpha))
+        for amp in amplitudes:
+            for sign in (1.0, -1.0):
+                t = sign * amp * s1
+                rows.append(t * alpha)
+                fxs.append(np.nan if fx is None else fx)
+                fys.append(np.nan if fx is None else fy * t)
+                origins.append(f"mode{'+' if sign > 0 else '-'}")
+    rng = np.random.default_rng(rng_seed + m.n)
+    for _ in range(n_random):
+        v = rng.standard_normal(m.n)
+        v -= S0 * (S0 @ v) / (S0 @ S0)
+        rows.append(np.sqrt(2.0 / quad_G(m, v)) * rng.uniform(0.5, 2.0) * v)
+        fxs.append(np.nan)
+        fys.append(np.nan)
+        origins.append("random")
+    D = np.array(rows).reshape(len(rows), m.n)
+    for a in (D, S0):
+        a.setflags(write=False)
+    return D, np.array(fxs), np.array(fys), tuple(origins), S0
+
+
+def seed_matrix(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
+                n_random: int = 8, rng_seed: int = 20201, arcs: bool = True
+                ) -> tuple[np.ndarray, np.ndarray, tuple[str, ...]]:
+    """The seeds of :func:`seeds` as arrays: ``(Q (S, n), F (S, 2) with NaN rows where no guess, origins)``."""
+    amplitudes = tuple(float(a) for a in amplitudes)
+    _, fx, fy, origins, _ = _basis(m, int(max_modes), amplitudes, int(n_random), int(rng_seed))
+    Q, arc_signs = _starts(m, dx, dy, max_modes, amplitudes, n_random, rng_seed, arcs)
+    F = np.column_stack([fx, fy * np.sqrt(max(float(dx), 1e-12))])
+    if arc_signs:                                    # the arc seeds used for this target
+        F = np.vstack([F, np.full((len(arc_signs), 2), np.nan)])
+        origins = origins + tuple("arc+" if s > 0 else "arc-" for s in arc_signs)
+    return Q, F, origins
+
+
+def seed_starts(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
+                n_random: int = 8, rng_seed: int = 20201, arcs: bool = True) -> np.ndarray:
+    """The configurations of :func:`seed_matrix` alone, ``(S, n)`` (what a global search starts from)."""
+    return _starts(m, dx, dy, max_modes, amplitudes, n_random, rng_seed, arcs)[0]
+
+
+def _starts(m: Manipulator, dx: float, dy: float, max_modes: int, amplitudes, n_random: int, rng_seed: int,
+            arcs: bool) -> tuple[np.ndarray, list[float]]:
+    """The seed configurations and the signs of the arc seeds among them (the last rows)."""
+    D, _, _, _, S0 = _basis(m, int(max_modes), tuple(float(a) for a in amplitudes), int(n_random), int(rng_seed))
+    Q = math.sqrt(max(float(dx), 1e-12)) * D
+    if dy:
+        Q += S0 * (float(dy) / float(S0 @ S0))            # plus the least-norm q with S0^T q = dy
+    r = np.max(np.abs(Q) / _room(m), axis=1)
+    Q /= np.maximum(r, 1.0)[:, None]
+    fractions = _arc_fractions(m, dx, dy) if arcs and m.n >= 2 else []
+    if fractions:
+        shape = _arcs(m)[0]
+        Q = np.vstack([Q] + [s * t * shape for s, t in fractions])
+    return Q, [s for s, _ in fractions]
+
+
+def arc_seeds(m: Manipulator, dx: float, dy: float) -> np.ndarray:
+    """The arc seeds ``(k, n)``, ``k <= 2``: ``q = s * t * limit`` (the joint range ``|q| < limit``)
+    for ``s = +1, -1``, each with the fraction ``t`` of a grid over ``(0, 0.9]`` whose tip lands
+    nearest the target, kept when curled (``t >= ARC_MIN``): nearly straight arcs are the small
+    deflections the mode seeds already cover (and Newton from them converges slowly)."""
+    return np.array([s * t * _arcs(m)[0] for s, t in _arc_fractions(m, dx, dy)]).reshape(-1, m.n)
+
+
+def _arc_fractions(m: Manipulator, dx: float, dy: float) -> list[tuple[float, float]]:
+    _, thetas, tips = _arcs(m)
+    tx, ty = m.target(dx, dy)
+    # q -> -q mirrors the tip: (x, y) -> (x, -y); rows: s = +1, -1. At ty = 0 both rows are the same
+    # distances ((y - 0)^2 is y^2 exactly): one row, from the grid's y^2 computed once per chain.
+    if ty == 0.0:
+        near = [int(np.argmin((tips[0] - tx) ** 2 + tips[2]))] * 2
+    else:
+        near = np.argmin((tips[0] - tx) ** 2 + (tips[1] - np.array([[ty], [-ty]])) ** 2, axis=1).tolist()
+    return [(s, t) for s, t in zip((1.0, -1.0), thetas[near].tolist()) if t >= ARC_MIN]
+
+
+#: Points of the grid over the arc family's fraction of the range, and the least fraction used.
+ARC_GRID = 128
+ARC_MIN = 0.25
+
+
+@lru_cache(maxsize=256)
+def _arcs(m: Manipulator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The arc family of a chain: its shape (the joint limits), the grid of fractions and the tips there
+    (rows: x, y, y^2)."""
+    shape = np.array(m.joint_limits, dtype=float)
+    thetas = np.linspace(0.9 / ARC_GRID, 0.9, ARC_GRID)
+    xy = np.array([m.tip(t * shape) for t in thetas]).T
+    tips = np.vstack([xy, xy[1] ** 2])
+    for a in (shape, thetas, tips):
+        a.setflags(write=False)
+    return shape, thetas, tips
+
+
+@lru_cache(maxsize=256)
+def _room(m: Manipulator) -> np.ndarray:
+    """``0.9 * joint limit`` per joint: seeds stay within 90 % of the range."""
+    room = m.joint_limits * 0.9
+    room.setflags(write=False)
+    return room
+
+
+def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitudes=(1.0,),
+          n_random: int = 8, rng_seed: int = 20201, arcs: bool = True) -> list[Seed]:
+    """Seeds for the deflection ``(dx, dy)``: ``±`` each mode at each amplitude factor, then random,
+    then (``arcs``) the two arcs."""
+    Q, F, origins = seed_matrix(m, dx, dy, max_modes=max_modes, amplitudes=amplitudes, n_random=n_random,
+                                rng_seed=rng_seed, arcs=arcs)
+    return [Seed(q, None if np.isnan(f[0]) else f, o) for q, f, o in zip(Q, F, origins)]
+
+
+# ----------------------------------------------------------------------------- wells of multistable chains
+#: Most sign patterns tried exhaustively; beyond, a fixed-seed sample of this many (plus the uniform ones).
+WELL_PATTERNS = 729
+
+
+@lru_cache(maxsize=512)
+def segment_critical_points(seg: Segment, num: int = 801) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The unloaded segment's wells (minima of ``E(q)``) and hilltops (maxima) inside its range.
+
+    A monotonic segment has one well (``q = 0`` when symmetric, its rest angle when pre-bent) and no
+    hilltop; a bistable one (``K < 0``) two wells around a hilltop. Found as the sign changes of the
+    torque on a grid over the range, refined by bisection (plain numpy: the model layer)."""
+    lim = seg.joint_limit
+    qs = np.linspace(-lim, lim, num)[1:-1]
+    qs = qs + 0.5 * (qs[1] - qs[0]) * (np.abs(qs) < 1e-12)   # no grid point exactly on q = 0 (M(0) = 0 there)
+    M = seg.torque(qs)
+    wells, tops = [], []
+    for i in np.flatnonzero((M[:-1] > 0) != (M[1:] > 0)).tolist():
+        lo, hi = float(qs[i]), float(qs[i + 1])
+        flo = float(M[i])
+        for _ in range(60):
+            mid = 0.5 * (lo + hi)
+            fm = float(seg.torque(mid))
+            if (fm > 0) == (flo > 0):
+                lo, flo = mid, fm
+            else:
+                hi = mid
+        root = 0.5 * (lo + hi)
+        (wells if M[i] > 0 else tops).append(root)    # M = -E': + -> - is a minimum of E
+    return _merged(wells), _merged(tops)
+
+
+def _merged(roots: list[float], tol: float = 1e-9) -> tuple[float, ...]:
+    """The roots with near-duplicates (closer than ``tol``) merged."""
+    out: list[float] = []
+    for r in sorted(roots):
+        if not out or r - out[-1] > tol:
+            out.append(r)
+    return tuple(out)
+
+
+def _pattern_matrix(m: Manipulator, hilltops: bool, cap: int, rng_seed: int) -> np.ndarray:
+    """Configurations built from one unloaded critical point per segment: every combination while
+    there are at most ``cap``, else the combinations with all segments in the same well plus a
+    fixed-seed random sample."""
+    choices = []
+    for s in m.segments:
+        wells, tops = segment_critical_points(s)
+        pts = list(wells) + (list(tops) if hilltops else [])
+        choices.append(pts or [0.0])
+    total = 1
+    for c in choices:
+        total *= len(c)
+    if total <= cap:
+        grids = np.meshgrid(*choices, indexing="ij")
+        return np.stack([g.ravel() for g in grids], axis=1)
+    rng = np.random.default_rng(rng_seed + m.n)
+    rows = [[c[0] for c in choices], [c[-1] for c in choices]]
+    for _ in range(cap - 2):
+        rows.append([c[int(rng.integers(len(c)))] for c in choices])
+    return np.array(rows)
+
+
+def project_to_target(m: Manipulator, Q: np.ndarray, target: np.ndarray, *, iters: int = 30,
+                      tol: float = 1e-11) -> np.ndarray:
+    """Each row of ``Q`` moved onto ``tip(q) = target`` by minimum-norm Gauss-Newton steps
+    (``q <- q + J^T (J J^T)^-1 (target - tip)``), all rows at once; rows that do not converge or
+    leave the physical range are dropped."""
+    Q = np.array(Q, dtype=float, copy=True)
+    if Q.size == 0:
+        return Q.reshape(0, m.n)
+    l = m.link_lengths
+    lim = m.joint_limits
+    scale = float(m.b.sum())
+    ok = np.ones(Q.shape[0], dtype=bool)
+    for _ in range(iters):
+        phi = np.cumsum(Q, axis=1)
+        c, s = np.cos(phi) * l, np.sin(phi) * l
+        r = np.column_stack([target[0] - m.base_length - c.sum(axis=1), target[1] - s.sum(axis=1)])
+        err = np.abs(r).max(axis=1)
+        if np.all(err[ok] < tol * scale):
+            break
+        Jx = -np.cumsum(s[:, ::-1], axis=1)[:, ::-1]
+        Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
+        a11 = (Jx * Jx).sum(axis=1)
+        a12 = (Jx * Jy).sum(axis=1)
+        a22 = (Jy * Jy).sum(axis=1)
+        det = a11 * a22 - a12 * a12
+        bad = det <= 1e-14 * np.maximum(a11 * a22, 1e-300)
+        det = np.where(bad, 1.0, det)
+        w1 = (a22 * r[:, 0] - a12 * r[:, 1]) / det
+        w2 = (a11 * r[:, 1] - a12 * r[:, 0]) / det
+        step = Jx * w1[:, None] + Jy * w2[:, None]
+        big = np.abs(step).max(axis=1)
+        step *= np.minimum(1.0, 0.5 / np.maximum(big, 1e-300))[:, None]      # at most 0.5 rad a step
+        Q += step
+        ok &= ~bad & np.all(np.isfinite(Q), axis=1)
+    phi = np.cumsum(Q, axis=1)
+    r = np.column_stack([target[0] - m.base_length - (np.cos(phi) * l).sum(axis=1),
+                         target[1] - (np.sin(phi) * l).sum(axis=1)])
+    ok &= np.abs(r).max(axis=1) < 1e-8 * scale
+    ok &= np.all(np.abs(Q) < lim, axis=1)
+    return Q[ok]
+
+
+def projected_sample(m: Manipulator, target: np.ndarray, count: int, rng_seed: int) -> np.ndarray:
+    """``count`` uniform random configurations in 95 % of the joint range (generator seeded with
+    ``rng_seed + n``: reproducible), projected onto ``tip(q) = target`` (:func:`project_to_target`)."""
+    rng = np.random.default_rng(rng_seed + m.n)
+    return project_to_target(m, rng.uniform(-0.95, 0.95, (int(count), m.n)) * m.joint_limits, target)
+
+
+def well_seeds(m: Manipulator, dx: float, dy: float, *, hilltops: bool = True, cap: int = WELL_PATTERNS,
+               rng_seed: int = 7, dedupe: float = 1e-3) -> np.ndarray:
+    """Seeds of a multistable chain: one unloaded critical point per segment (its wells and, with
+    ``hilltops``, its hilltop), combined over the segments (the ``3^k`` critical points of the
+    unloaded energy, ``k`` bistable segments; exhaustive up to ``cap``, sampled beyond), each projected
+    onto the tip constraint. Empty for chains whose segments are all monotonic (one pattern: the
+    rest shape, which the mode seeds cover)."""
+    if m.n < 2 or m.monotonic:
+        return np.zeros((0, m.n))
+    P = _pattern_matrix(m, hilltops, cap, rng_seed)
+    Q = project_to_target(m, P, m.target(dx, dy))
+    if Q.shape[0] < 2:
+        return Q
+    keep = [0]
+    for i in range(1, Q.shape[0]):
+        if np.min(np.abs(Q[keep] - Q[i]).max(axis=1)) >= dedupe:
+            keep.append(i)
+    return Q[keep]

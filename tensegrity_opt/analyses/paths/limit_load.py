@@ -1,0 +1,239 @@
+"""Limit loads: how far a dead tip load can grow before the branch from a rest configuration loses stability.
+
+:func:`limit_load` traces the dead-load path ``F = base + t d`` (``t >= 0``, ``d`` a unit direction; ``base``
+a load the start is in equilibrium under, zero by default: the start is then a rest configuration) by
+arclength continuation (:func:`~tensegrity_opt.analyses.paths.branches.trace_branch`) and stops
+at the first event where stability is lost: a **fold** (the load passes a maximum along the branch: the
+arm snaps through) or a **bifurcation** (a branch point: the straight symmetric chain buckles at its
+critical load, :func:`~tensegrity_opt.analyses.equilibria.buckling.critical_force`). Where neither happens — a pre-bent
+arm under compression bends smoothly ("quasi-buckling") until a joint reaches its range bound, or the
+load reaches ``max_load`` — ``kind == "none"`` says why, and :attr:`LimitLoad.quasi_buckling_load` is the
+load at which the arm is softest along the load: the interior minimum along the path of the tangent
+stiffness ``k(t) = 1 / (d . C(t) d)``, ``C = J H^-1 J^T`` the tip compliance (guided: the compliance in
+``x`` with ``y`` held, ``C_xx - C_xy^2 / C_yy``), located by a parabola through the three path points
+about the smallest ``k`` and re-solved there. For an imperfect (pre-bent) column this tends to the
+critical load as the imperfection vanishes (Southwell); it is None where ``k`` only decreases or only
+grows along the path.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ...errors import InvalidParameterError
+from ...model.manipulator import Manipulator
+from ...serialize import nullable, number, numbers
+from .branches import Branch, Control, trace_branch
+from ..equilibria.equilibrium import Equilibrium, check_q0
+
+__all__ = ["LimitLoad", "limit_load", "DEFAULT_MAX_LOAD"]
+
+#: Without ``max_load`` the path is followed up to this many force units ``k c^2 / (2 b)``.
+DEFAULT_MAX_LOAD = 100.0
+
+
+@dataclass(frozen=True)
+class LimitLoad:
+    """The result of :func:`limit_load`.
+
+    Attributes
+    ----------
+    load : float or None
+        The load magnitude ``t >= 0`` where the branch first loses stability (None for ``kind == "none"``).
+    force : ndarray (2,) or None
+        The tip force there (guided: ``Fy`` the guide's reaction).
+    q : ndarray (n,) or None
+        The configuration there.
+    kind : str
+        ``"fold"``, ``"bifurcation"`` or ``"none"``.
+    reason : str or None
+        For ``"none"``: ``"joint_limit"`` (the path ends at a joint's range bound), ``"max_load"``, or the
+        branch's status when it could not be followed (``"time_limit"``, ``"corrector_failed"`` ...).
+    null_vector : ndarray (n,) or None
+        The mode of the instability (largest entry +1).
+    quasi_buckling_load : float or None
+        The load of least tangent stiffness along the load on the stable path (module docstring).
+    quasi_buckling_force : ndarray (2,) or None
+    end_load : float
+        The last load reached on the stable path.
+    direction : ndarray (2,)
+    boundary : str
+    start : Equilibrium
+        The configuration the path starts from (a rest configuration when ``base`` is zero).
+    branch : Branch
+        The traced path (up to the limit).
+    base : ndarray (2,)
+        The base load: the tip force is ``base + t d`` (guided: ``Fx = base_x + t d_x``).
+    """
+
+    load: float | None
+    force: np.ndarray | None
+    q: np.ndarray | None
+    kind: str
+    reason: str | None
+    null_vector: np.ndarray | None
+    quasi_buckling_load: float | None
+    quasi_buckling_force: np.ndarray | None
+    end_load: float
+    direction: np.ndarray
+    boundary: str
+    start: Equilibrium
+    branch: Branch
+    base: np.ndarray = field(default_factory=lambda: np.zeros(2))
+
+    @property
+    def success(self) -> bool:
+        return self.kind != "none" or self.reason in ("joint_limit", "max_load")
+
+    def to_dict(self, *, include_branch: bool = False) -> dict[str, Any]:
+        d = {"load": None if self.load is None else nullable(self.load), "kind": self.kind, "reason": self.reason,
+             "force": None if self.force is None else {"fx": number(self.force[0]), "fy": number(self.force[1])},
+             "q": None if self.q is None else numbers(self.q),
+             "null_vector": None if self.null_vector is None else numbers(self.null_vector),
+             "quasi_buckling_load": None if self.quasi_buckling_load is None else nullable(self.quasi_buckling_load),
+             "quasi_buckling_force": None if self.quasi_buckling_force is None else
+             {"fx": number(self.quasi_buckling_force[0]), "fy": number(self.quasi_buckling_force[1])},
+             "end_load": number(self.end_load), "direction": numbers(self.direction), "boundary": self.boundary,
+             "base": numbers(self.base),
+             "start": self.start.to_dict(), "success": self.success,
+             "branch_status": self.branch.status, "branch_points": len(self.branch)}
+        if include_branch:
+            d["branch"] = self.branch.to_dict()
+        return d
+
+
+def _compliance(prob, x: np.ndarray, d: np.ndarray, guided: bool) -> float:
+    _, _, H, J, _, _ = prob.eval_all(x)
+    try:
+        C = J @ np.linalg.solve(H, J.T)
+    except np.linalg.LinAlgError:
+        return math.inf
+    if guided:
+        return float(d[0] ** 2 * (C[0, 0] - C[0, 1] ** 2 / C[1, 1])) if C[1, 1] != 0.0 else math.inf
+    return float(d @ C @ d)
+
+
+def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
+    prob = br._problem
+    P = min(upto + 1, len(br))
+    if P < 3:
+        return None, None
+    X = np.column_stack([br.q, br.force, br.t])[:P]
+    c = np.array([_compliance(prob, X[i], d, guided) for i in range(P)])
+    ok = np.isfinite(c) & (c > 0.0) & br.stable[:P]     # c = 0: no compliance along the load (straight, guided)
+    if ok.sum() < 3:
+        return None, None
+    i = int(np.argmax(np.where(ok, c, -np.inf)))
+    if i == 0 or i == P - 1 or not (ok[i - 1] and ok[i + 1]):
+        return None, None
+    t3, c3 = br.t[i - 1:i + 2], 1.0 / c[i - 1:i + 2]      # stiffness k = 1/c, a minimum at i
+    A = np.polyfit(t3, c3, 2)
+    ts = float(-A[1] / (2 * A[0])) if A[0] > 0 else float(br.t[i])
+    ts = min(max(ts, float(t3[0])), float(t3[2]))
+    y, _ = prob.correct_t(X[i], ts)
+    if y is None:
+        return float(br.t[i]), br.force[i].copy()
+    return float(y[-1]), y[prob.n:prob.n + 2].copy()
+
+
+def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", max_load: float | None = None,
+               start=None, *, base=(0.0, 0.0), max_points: int = 4000, timeout: float | None = None) -> LimitLoad:
+    """The dead tip load ``base + t d`` at which the branch from a start (a rest configuration by default)
+    first loses stability; ``t`` is the load added to ``base``.
+
+    Parameters
+    ----------
+    m : Manipulator
+    direction : (float, float)
+        The load's direction (normalised); ``(-1, 0)`` compresses the straight chain.
+    boundary : {"free", "guided"}
+        ``"free"``: the tip free, ``F = t d`` prescribed, stability from the full Hessian of
+        ``E - F . tip``. ``"guided"``: the tip's ``y`` held at its rest value, ``Fx = t d_x``, ``Fy`` the
+        guide's reaction, stability reduced to ``dy/dq . v = 0`` (the paper's case).
+    max_load : float, optional
+        Stop there (``reason="max_load"``). Default ``DEFAULT_MAX_LOAD`` force units ``k c^2 / (2 b)``.
+    start : Equilibrium or array_like (n,), optional
+        A configuration at the base load (with ``base`` zero a rest configuration; Newton under ``base``
+        puts it on the equilibrium set). Default the least-energy stable rest configuration
+        (:func:`~tensegrity_opt.analyses.equilibria.rest.rest_configuration`: equal-energy wells are separated by
+        its documented rule — the one closest to straight, then the largest ``q_1``, ...); with a non-zero
+        ``base`` the equilibrium under it from the default start of
+        :func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force`.
+    base : (float, float)
+        A dead tip load already applied at the start (default none): the path is ``F = base + t d``,
+        ``t >= 0`` the load added (guided: ``Fx = base_x + t d_x``, the guide's reaction at the start is
+        the start's ``Fy``).
+    max_points, timeout
+        As :func:`~tensegrity_opt.analyses.paths.branches.trace_branch`.
+
+    Returns
+    -------
+    LimitLoad
+        For a straight symmetric chain under ``(-1, 0)``: ``kind="bifurcation"``, ``load`` equal to
+        ``-critical_force(m, boundary).force``; a bistable segment snaps at a fold; a pre-bent chain under
+        free compression is typically smooth (``kind="none"``, ``quasi_buckling_load`` near the straight
+        chain's critical load).
+
+    Raises
+    ------
+    InvalidParameterError
+        (``ValueError``) for a bad direction, boundary, ``base``, ``max_load``, or a start that is not a
+        stable equilibrium under ``base`` (a rest configuration when it is zero).
+    """
+    if boundary not in ("free", "guided"):
+        raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")
+    control = Control.load(direction, base) if boundary == "free" else Control.guided(direction, base)
+    F0 = control.base
+    loaded = bool(np.any(F0 != 0.0))
+    d = control.direction
+    if max_load is not None:
+        try:
+            max_load = float(max_load)
+        except (TypeError, ValueError):
+            raise InvalidParameterError(f"max_load must be a number, got {max_load!r}", field="max_load") from None
+        if not math.isfinite(max_load) or max_load <= 0:
+            raise InvalidParameterError(f"max_load must be finite and > 0, got {max_load!r}", field="max_load")
+    from ..equilibria.equilibrium import solve_equilibrium_under_force
+
+    if start is None and not loaded:
+        from ..equilibria.rest import rest_configuration
+
+        eq0 = rest_configuration(m)
+    elif start is None:
+        eq0 = solve_equilibrium_under_force(m, F0[0], F0[1])
+    else:
+        q0 = start.q if isinstance(start, Equilibrium) else check_q0(m, start)
+        if q0 is None:
+            raise InvalidParameterError("start must be an Equilibrium or n joint angles", field="start")
+        eq0 = solve_equilibrium_under_force(m, F0[0], F0[1], q0=q0)
+        if np.abs(eq0.q - q0).max() > 1e-3:
+            what = "an equilibrium under the base load" if loaded else "a rest configuration"
+            raise InvalidParameterError(f"start is not (near) {what}: Newton under that load moved it "
+                                        f"by {np.abs(eq0.q - q0).max():.3g} rad", field="start")
+    bound = max_load
+    br0 = trace_branch(m, eq0.q, control, t_max=1.0, max_points=3)        # its problem gives the force scale
+    if bound is None:
+        bound = DEFAULT_MAX_LOAD * br0._problem.Fs
+    br = trace_branch(m, eq0.q, control, t_max=bound, max_points=max_points, stop_at="stability_loss",
+                      timeout=timeout)
+    if not br.stable[0]:
+        raise InvalidParameterError("the start is not a stable equilibrium under this boundary condition "
+                                    f"(Morse index {int(br.morse_index[0])} at the base load)", field="start")
+    lost = [e for e in br.events if e.stability == "lost"]
+    qb_upto = len(br) - 1
+    if lost:
+        e = lost[0]
+        qb_upto = e.index
+        kind = "fold" if e.kind == "fold" else "bifurcation"
+        qb, qbf = _quasi_buckling(br, d, boundary == "guided", qb_upto)
+        return LimitLoad(e.t, e.force.copy(), e.q.copy(), kind, None, e.null_vector, qb, qbf, e.t, d, boundary,
+                         eq0, br, F0.copy())
+    reason = {"t_max": "max_load", "joint_limit": "joint_limit"}.get(br.status, br.status)
+    stable_end = int(np.flatnonzero(br.stable)[-1]) if br.stable.any() else 0
+    qb, qbf = _quasi_buckling(br, d, boundary == "guided", min(qb_upto, stable_end))
+    return LimitLoad(None, None, None, "none", reason, None, qb, qbf, float(br.t[stable_end]), d, boundary, eq0, br,
+                     F0.copy())

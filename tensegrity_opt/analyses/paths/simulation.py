@@ -1,0 +1,755 @@
+"""Forward quasi-static simulation: the chain driven by sampled inputs, snapping where its branch ends.
+
+:func:`simulate` takes time series of the inputs over steps ``k = 0 .. K-1`` -- the rest lengths
+``(L1_0, L2_0)`` of every segment (the preloads, the control inputs of the paper), and either a dead tip
+load (tip ``"free"``) or a tip deflection (tip ``"held"``) -- and answers what the arm does, in the
+quasi-static limit (inputs slow against the dynamics, the dynamics overdamped):
+
+* between two samples the inputs move linearly; the configuration follows the equilibrium branch it is
+  on, continuously, by pseudo-arclength continuation in the fraction of the step
+  (:func:`~tensegrity_opt.analyses.paths.branches.trace_branch` with a
+  :meth:`~tensegrity_opt.analyses.paths.branches.Control.move`: preloads and load, or preloads and tip, in one
+  parameter);
+* where that branch loses stability -- a fold (located by the Moore-Spence system: the step fraction
+  and the configuration at the fold to about ``1e-12``) or, for symmetric chains, a branch point -- the
+  arm **snaps**: the new state is the equilibrium reached by *descent* from there, the gradient flow
+  ``dq/dtau = -grad V(q)`` of the potential ``V = E - F . tip`` (free tip; the load held at its value at
+  the fold) or of ``E`` on the tip constraint ``tip(q) = target`` (held tip; the projected flow), with
+  the inputs frozen at the fold. The flow starts at the fold configuration moved by ``perturbation``
+  (rad, largest joint) along the fold's null vector, on the side the branch continues to (the unstable
+  side, where ``V`` decreases); it is integrated by scipy's BDF (tolerances ``1e-8`` relative, ``1e-10``
+  absolute) until the point is a strict minimum's neighbour (the Hessian of ``V``, reduced to the
+  constraint when held, positive definite there and Newton converging close by), then polished by
+  Newton. This is the minimum whose basin the fold point drains into -- the state an overdamped arm
+  with equal joint dampers reaches -- not the least-energy one. A branch point that loses stability is
+  left the same way at ``BRANCH_POINT_OFFSET`` past it (at the branch point itself the flow leaves
+  only algebraically slowly), on the side of the null vector where ``V`` is lower (``+`` on a tie:
+  the mirror image is not chosen by the model);
+* the simulation goes on from the landing state for the rest of the step; each snap is a
+  :class:`SimulationEvent` (step, fraction, the fold and the landing configurations, the energy
+  released, the inputs there).
+
+It stops, keeping the steps done, where a joint reaches its range bound (on the followed branch or
+during a snap: the model has no equilibrium beyond), where the held tip reaches the edge of its
+workspace, or when the time limit runs out (:attr:`Simulation.status`). Every reported state is a
+converged equilibrium inside the physical range, classified by its Morse index.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+import scipy.optimize as so
+from scipy.integrate import BDF
+
+from ...errors import (
+    InvalidParameterError,
+    NoEquilibriumError,
+    TensegrityError,
+    TimeLimitError,
+    UnreachableTargetError,
+)
+from ...model.manipulator import Manipulator
+from ...numerics import DENSE_MAX, chain_solver
+from ...outcome import SolverInfo
+from ...serialize import number, numbers
+from ...timelimit import expired, time_limit
+from .branches import LIMIT_MARGIN, Control, trace_branch
+from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
+
+__all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "STATUSES", "PERTURBATION",
+           "BRANCH_POINT_OFFSET"]
+
+#: Kinds of :class:`SimulationEvent`: a snap at a fold, a snap (or a continuous buckling, then with
+#: ``energy_released`` near 0) at a branch point, the end at a joint's range bound.
+EVENT_KINDS = ("snap", "bifurcation", "joint_limit")
+#: How a simulation ended (:attr:`Simulation.status`); only ``"complete"`` is a success.
+STATUSES = ("complete", "joint_limit", "workspace_boundary", "force_bound", "time_limit", "failed")
+#: The descent after a fold starts this far (rad, the largest joint) from the fold along its null vector.
+PERTURBATION = 1e-4
+#: A branch point is left by descent at this scaled arclength past it (in the units of
+#: :func:`~tensegrity_opt.analyses.paths.branches.trace_branch`).
+BRANCH_POINT_OFFSET = 1e-5
+#: At most this many snaps within one step (a longer cascade ends the simulation, ``"failed"``).
+MAX_EVENTS_PER_STEP = 32
+#: Integration steps of one descent before it is given up.
+MAX_DESCENT_STEPS = 20000
+#: Newton from a descent point is accepted when it lands within this distance (rad, largest joint).
+POLISH_RADIUS = 0.05
+
+
+@dataclass(frozen=True)
+class SimulationEvent:
+    """Something that happened between step ``step`` and ``step + 1``, at ``time = step + fraction``.
+
+    Attributes
+    ----------
+    kind : str
+        ``"snap"`` (the followed branch folded: the arm jumps), ``"bifurcation"`` (it lost stability at
+        a branch point: a snap, or a continuous buckling onto a stable bifurcating branch when
+        ``energy_released`` is near 0), ``"joint_limit"`` (a joint reached its range bound: the end).
+    step : int
+    fraction : float
+        Where in the step (0 at sample ``step``, 1 at ``step + 1``); the inputs there are the linear
+        interpolation of the two samples.
+    preloads : ndarray (n, 2)
+        The rest lengths ``(L1_0, L2_0)`` of each segment there.
+    load : ndarray (2,) or None
+        The dead tip load there (tip free).
+    target : ndarray (2,) or None
+        The tip deflection ``(dx, dy)`` there (tip held).
+    q_before : ndarray (n,)
+        The configuration at the fold (branch point, joint limit).
+    q_after : ndarray (n,) or None
+        The landing configuration: a stable equilibrium under the same inputs (None for a joint limit,
+        or when the descent ran into a joint's bound: then ``message`` says so).
+    force_before, force_after : ndarray (2,) or None
+        The tip force (the load when free; the holding force when held).
+    tip_before, tip_after : ndarray (2,) or None
+    energy_before, energy_after : float or None
+        Elastic energy ``E``.
+    potential_before, potential_after : float or None
+        The potential that the descent decreases: ``E - F . tip`` (free) or ``E`` (held).
+    energy_released : float or None
+        ``potential_before - potential_after`` (> 0 for a snap).
+    null_vector : ndarray (n,) or None
+        The joint-angle part of the fold's null vector (largest entry +1), the snapping mode.
+    direction : int
+        The sign of ``null_vector`` the descent left along (0 for a joint limit).
+    method : str
+        How the point was located (``"moore_spence"``, ``"test_function"``, ``"limit"``).
+    message : str
+    """
+
+    kind: str
+    step: int
+    fraction: float
+    preloads: np.ndarray
+    load: np.ndarray | None
+    target: np.ndarray | None
+    q_before: np.ndarray
+    q_after: np.ndarray | None
+    force_before: np.ndarray | None
+    force_after: np.ndarray | None
+    tip_before: np.ndarray | None
+    tip_after: np.ndarray | None
+    energy_before: float | None
+    energy_after: float | None
+    potential_before: float | None
+    potential_after: float | None
+    energy_released: float | None
+    null_vector: np.ndarray | None
+    direction: int
+    method: str
+    message: str = ""
+
+    @property
+    def time(self) -> float:
+        """``step + fraction``."""
+        return self.step + self.fraction
+
+    def to_dict(self) -> dict[str, Any]:
+        def opt(v, f=numbers):
+            return None if v is None else f(v)
+
+        return {"kind": self.kind, "step": int(self.step), "fraction": number(self.fraction),
+                "time": number(self.time), "preloads": [numbers(r) for r in self.preloads],
+                "load": opt(self.load), "target": opt(self.target), "q_before": numbers(self.q_before),
+                "q_after": opt(self.q_after), "force_before": opt(self.force_before),
+                "force_after": opt(self.force_after), "tip_before": opt(self.tip_before),
+                "tip_after": opt(self.tip_after), "energy_before": opt(self.energy_before, number),
+                "energy_after": opt(self.energy_after, number),
+                "potential_before": opt(self.potential_before, number),
+                "potential_after": opt(self.potential_after, number),
+                "energy_released": opt(self.energy_released, number), "null_vector": opt(self.null_vector),
+                "direction": int(self.direction), "method": self.method, "message": self.message}
+
+
+@dataclass
+class Simulation:
+    """The result of :func:`simulate`: the state at each step done, and the events.
+
+    The arrays hold the ``k <= K`` steps done (``k = K`` when ``status == "complete"``); each row is a
+    converged equilibrium inside the physical range at that step's inputs.
+
+    Attributes
+    ----------
+    mode : str
+        ``"free"`` (dead tip load) or ``"held"`` (tip deflection prescribed).
+    preloads : ndarray (K, n, 2)
+        The rest lengths at every sample (the input).
+    loads : ndarray (K, 2) or None
+        The dead tip loads (free).
+    targets : ndarray (K, 2) or None
+        The tip deflections ``(dx, dy)`` (held).
+    q : ndarray (k, n)
+    force : ndarray (k, 2)
+        The load (free) or the holding force (held), ``grad E = J^T F``.
+    tip : ndarray (k, 2)
+    energy : ndarray (k,)
+        Elastic energy.
+    potential : ndarray (k,)
+        ``E - F . tip`` (free) or ``E`` (held).
+    stable : ndarray (k,) of bool
+    morse_index : ndarray (k,) of int
+    events : list of SimulationEvent
+    status : str
+        :data:`STATUSES`.
+    message : str
+    straight_length : float
+    """
+
+    mode: str
+    preloads: np.ndarray
+    loads: np.ndarray | None
+    targets: np.ndarray | None
+    q: np.ndarray
+    force: np.ndarray
+    tip: np.ndarray
+    energy: np.ndarray
+    potential: np.ndarray
+    stable: np.ndarray
+    morse_index: np.ndarray
+    events: list
+    status: str
+    message: str
+    straight_length: float
+
+    @property
+    def success(self) -> bool:
+        """Every step simulated."""
+        return self.status == "complete"
+
+    @property
+    def steps(self) -> int:
+        """The number of samples ``K`` asked for."""
+        return int(self.preloads.shape[0])
+
+    @property
+    def snaps(self) -> list:
+        """The snap and bifurcation events, in time order."""
+        return [e for e in self.events if e.kind in ("snap", "bifurcation")]
+
+    @property
+    def deflection(self) -> np.ndarray:
+        """``(dx, dy) = (2 sum b - x, y)`` of the tip at each step done."""
+        return np.column_stack([self.straight_length - self.tip[:, 0], self.tip[:, 1]])
+
+    def __len__(self) -> int:
+        return int(self.q.shape[0])
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form: ``mode, status, success, message, steps, done``; per step done ``q, force``
+        ``{fx, fy}``, ``tip, deflection, energy, potential, stable, morse_index``; ``events``; the inputs
+        ``preloads`` and ``loads`` or ``targets``."""
+        d = {"mode": self.mode, "status": self.status, "success": self.success, "message": self.message,
+             "steps": self.steps, "done": len(self), "q": [numbers(r) for r in self.q],
+             "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
+             "tip": [numbers(r) for r in self.tip], "deflection": [numbers(r) for r in self.deflection],
+             "energy": numbers(self.energy), "potential": numbers(self.potential),
+             "stable": [bool(v) for v in self.stable], "morse_index": [int(v) for v in self.morse_index],
+             "events": [e.to_dict() for e in self.events],
+             "preloads": [[numbers(r) for r in p] for p in self.preloads]}
+        if self.loads is not None:
+            d["loads"] = [numbers(r) for r in self.loads]
+        if self.targets is not None:
+            d["targets"] = [numbers(r) for r in self.targets]
+        return d
+
+
+# ---------------------------------------------------------------------------- inputs
+def _series(v, name: str, shape_tail: tuple[int, ...]) -> np.ndarray:
+    try:
+        arr = np.asarray(v, dtype=float)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"{name} must be an array of numbers", field=name) from None
+    if arr.ndim != 1 + len(shape_tail) or arr.shape[1:] != shape_tail or arr.shape[0] < 1:
+        want = "(K, " + ", ".join(str(s) for s in shape_tail) + ")"
+        raise InvalidParameterError(f"{name} must have shape {want} with K >= 1, got {arr.shape}", field=name)
+    if not np.all(np.isfinite(arr)):
+        raise InvalidParameterError(f"{name} must be finite", field=name)
+    return arr
+
+
+def _inputs(m: Manipulator, preloads, loads, tip, targets):
+    if tip not in ("free", "held"):
+        raise InvalidParameterError(f"tip must be 'free' or 'held', got {tip!r}", field="tip")
+    if m.n > DENSE_MAX:
+        raise InvalidParameterError(f"the simulation handles chains of up to {DENSE_MAX} segments, got n = {m.n}",
+                                    field="n")
+    P = None if preloads is None else _series(preloads, "preloads", (m.n, 2))
+    if P is not None and not np.all(P > 0.0):
+        raise InvalidParameterError("preloads (rest lengths) must be > 0", field="preloads")
+    if tip == "free":
+        if targets is not None:
+            raise InvalidParameterError("targets are for a held tip (tip='held'); a free tip takes loads",
+                                        field="targets")
+        L = None if loads is None else _series(loads, "loads", (2,))
+        T = None
+        if P is None and L is None:
+            raise InvalidParameterError("give loads or preloads (a time series of K samples)", field="loads")
+    else:
+        if loads is not None:
+            raise InvalidParameterError("loads are for a free tip (tip='free'); a held tip takes targets",
+                                        field="loads")
+        if targets is None:
+            raise InvalidParameterError("a held tip needs targets (K, 2): the tip deflections (dx, dy)",
+                                        field="targets")
+        if m.n < 2:
+            raise InvalidParameterError("a held tip needs n >= 2 segments (one segment's tip fixes its angle)",
+                                        field="tip")
+        T = _series(targets, "targets", (2,))
+        L = None
+        for i, (dx, dy) in enumerate(T):
+            try:
+                m.check_reachable(dx, dy)
+            except UnreachableTargetError as exc:
+                raise UnreachableTargetError(f"targets[{i}]: {exc.message}", field="targets") from None
+    K = [a.shape[0] for a in (P, L, T) if a is not None]
+    if len(set(K)) > 1:
+        other = "targets" if T is not None else "loads"
+        raise InvalidParameterError(f"preloads and {other} must have the same number of samples K, got "
+                                    f"{P.shape[0]} and {K[-1]}", field=other)
+    K = K[0]
+    if P is None:
+        P = np.repeat(np.column_stack([m.L1_0, m.L2_0])[None, :, :], K, axis=0)
+    if tip == "free" and L is None:
+        L = np.zeros((K, 2))
+    return P, L, T
+
+
+def _chain(m: Manipulator, P: np.ndarray) -> Manipulator:
+    """``m`` with the rest lengths ``P`` (n, 2)."""
+    if np.array_equal(P[:, 0], m.L1_0) and np.array_equal(P[:, 1], m.L2_0):
+        return m
+    return Manipulator(s.replace(L0=(float(P[i, 0]), float(P[i, 1]))) for i, s in enumerate(m.segments))
+
+
+# ---------------------------------------------------------------------------- the state
+@dataclass
+class _State:
+    q: np.ndarray
+    force: np.ndarray
+    tip: np.ndarray
+    energy: float
+    morse: int
+    stable: bool
+
+    def potential(self, held: bool) -> float:
+        return self.energy if held else self.energy - float(self.force @ self.tip)
+
+    def equilibrium(self, held: bool) -> Equilibrium:
+        return Equilibrium(q=self.q.copy(), energy=self.energy, force=self.force.copy(), morse_index=self.morse,
+                           stable=self.stable, solver=SolverInfo("simulation", 0), tip=self.tip.copy(),
+                           control="displacement" if held else "force")
+
+
+def _state_of(prob, x: np.ndarray) -> _State:
+    w, _, E, tip = prob.reduced(x)
+    idx, st = prob.morse(w)
+    n = prob.n
+    return _State(x[:n].copy(), x[n:n + 2].copy(), np.asarray(tip, float).copy(), float(E), int(idx), bool(st))
+
+
+def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> _State:
+    if start is None:
+        if held:
+            eq = _least_energy_held(m0, T0)
+        elif not np.any(F0 != 0.0):
+            from ..equilibria.rest import rest_configuration
+
+            eq = rest_configuration(m0)
+        else:
+            from ..equilibria.rest import find_equilibria_under_force
+
+            eqs = [e for e in find_equilibria_under_force(m0, float(F0[0]), float(F0[1]), stable_only=True)]
+            if not eqs:
+                raise NoEquilibriumError("no stable equilibrium under the first load", status="no_start")
+            eq = min(eqs, key=lambda e: e.energy - float(F0 @ e.tip))
+        q0 = eq.q
+    else:
+        q0 = start.q if isinstance(start, Equilibrium) else _start_q(m0, start)
+        if q0.shape != (m0.n,):
+            raise InvalidParameterError(f"start must hold {m0.n} joint angles", field="start")
+    if held:
+        target = m0.target(*T0)
+        F = start.force if isinstance(start, Equilibrium) and start.control == "displacement" else None
+        res = local_equilibrium(m0, target, np.asarray(q0, float), F)
+        ok = is_equilibrium(m0, res, target)
+    else:
+        res = chain_solver(m0).newton_force(np.asarray(F0, float), np.asarray(q0, float))
+        ok = is_equilibrium(m0, res)
+    if not ok:
+        raise InvalidParameterError("start is not (near) an equilibrium under the first inputs: Newton did not "
+                                    "converge from it inside the joint range", field="start")
+    eq = make_equilibrium(m0, res, constrained=held)
+    if start is not None and np.abs(eq.q - q0).max() > 1e-3:
+        raise InvalidParameterError("start is not (near) an equilibrium under the first inputs: Newton moved it "
+                                    f"by {np.abs(eq.q - q0).max():.3g} rad", field="start")
+    if not eq.stable:
+        raise InvalidParameterError(f"start is not a stable equilibrium under the first inputs (Morse index "
+                                    f"{eq.morse_index})", field="start")
+    return _State(eq.q.copy(), np.asarray(F0, float).copy() if not held else eq.force.copy(), eq.tip.copy(),
+                  float(eq.energy), 0, True)
+
+
+def _start_q(m: Manipulator, start) -> np.ndarray:
+    try:
+        q = check_q0(m, start)
+    except InvalidParameterError as exc:
+        raise InvalidParameterError(exc.message.replace("q0", "start"), field="start") from None
+    if q is None:
+        raise InvalidParameterError("start must be an Equilibrium or n joint angles", field="start")
+    return q
+
+
+def _least_energy_held(m0: Manipulator, T0) -> Equilibrium:
+    from ..equilibria.least_energy import solve_equilibrium
+
+    return solve_equilibrium(m0, float(T0[0]), float(T0[1]))
+
+
+# ---------------------------------------------------------------------------- descent
+class _Descent:
+    """The gradient flow of the potential at fixed inputs (``t`` of ``prob``), and its landing."""
+
+    def __init__(self, prob, t: float, held: bool, F: np.ndarray) -> None:
+        self.prob, self.t, self.held, self.F = prob, float(t), held, np.asarray(F, float)
+        self.n = prob.n
+        self.Ts = float(prob.m.torque_scale)
+
+    def x(self, q: np.ndarray, F: np.ndarray | None = None) -> np.ndarray:
+        return np.concatenate([q, self.F if F is None else F, [self.t]])
+
+    def multiplier(self, q: np.ndarray):
+        """``(grad E, J, tip residual, F)`` for the held tip: ``F`` the least-squares multiplier."""
+        R, _, _, J, _, _ = self.prob.eval_all(self.x(q, np.zeros(2)))
+        g = R[:self.n]
+        F = np.linalg.lstsq(J.T, g, rcond=None)[0]
+        return g, J, R[self.n:self.n + 2], F
+
+    def field(self, _tau: float, q: np.ndarray) -> np.ndarray:
+        if not self.held:
+            R = self.prob.eval_all(self.x(q))[0]
+            return -R[:self.n] / self.Ts
+        g, J, r, F = self.multiplier(q)
+        back = np.linalg.lstsq(J, r, rcond=None)[0]             # pulls the drift back onto tip(q) = target
+        return -(g - J.T @ F) / self.Ts - back
+
+    def jac(self, _tau: float, q: np.ndarray) -> np.ndarray:
+        return -self.prob.eval_all(self.x(q))[2] / self.Ts
+
+    def onto(self, q: np.ndarray) -> np.ndarray:
+        """``q`` moved onto the tip constraint (Gauss-Newton, least-norm)."""
+        for _ in range(8):
+            _, J, r, _ = self.multiplier(q)
+            if float(np.abs(r).max()) <= 1e-13 * self.prob.Ls:
+                break
+            q = q - np.linalg.lstsq(J, r, rcond=None)[0]
+        return q
+
+    def potential(self, q: np.ndarray) -> float:
+        _, _, _, _, E, tip = self.prob.eval_all(self.x(q, np.zeros(2) if self.held else None))
+        return float(E) if self.held else float(E) - float(self.F @ tip)
+
+    def point(self, q: np.ndarray) -> np.ndarray:
+        """The full ``x`` at ``q`` (held: with its least-squares multiplier)."""
+        return self.x(q, self.multiplier(q)[3] if self.held else None)
+
+    def landing(self, q: np.ndarray):
+        """The polished minimum near ``q`` when ``q`` is in its Newton neighbourhood, else None."""
+        prob = self.prob
+        x = self.point(q)
+        idx, st = prob.morse(prob.reduced(x)[0])
+        if not st:
+            return None
+        y, _ = prob.correct_t(x, self.t)
+        if y is None or float(np.abs(y[:self.n] - q).max()) > POLISH_RADIUS:
+            return None
+        if prob.limit_ratio(y)[0] >= 1.0 - LIMIT_MARGIN:
+            return None
+        s = _state_of(prob, y)
+        if not s.stable or s.potential(self.held) > self.potential(q) + 1e-12 * self.Ts:
+            return None
+        return s
+
+    def run(self, q0: np.ndarray):
+        """``("landed", state)``, ``("joint_limit", q at the bound)``, ``("time_limit", q)`` or ``("failed", q)``."""
+        prob = self.prob
+        q0 = self.onto(q0) if self.held else q0
+        solver = BDF(self.field, 0.0, q0, 1e12, rtol=1e-8, atol=1e-10,
+                     jac=None if self.held else self.jac)
+        q = q0
+        for _ in range(MAX_DESCENT_STEPS):
+            if expired():
+                return "time_limit", q
+            tau_a, qa = solver.t, solver.y.copy()
+            msg = solver.step()
+            if msg is not None or solver.status == "failed":
+                return "failed", qa
+            q = solver.y.copy()
+            lim, _ = prob.limit_ratio(q)
+            if lim >= 1.0 - LIMIT_MARGIN:
+                dense = solver.dense_output()
+                target = 1.0 - LIMIT_MARGIN
+                try:
+                    tau = so.brentq(lambda s: prob.limit_ratio(dense(s))[0] - target, tau_a, solver.t, xtol=1e-14)
+                    ql = dense(tau)
+                    if prob.limit_ratio(ql)[0] > target:
+                        ql = qa
+                except ValueError:
+                    ql = qa
+                return "joint_limit", ql
+            s = self.landing(q)
+            if s is not None:
+                return "landed", s
+            if solver.status == "finished":
+                break
+        return "failed", q
+
+
+# ---------------------------------------------------------------------------- one step
+class _Run:
+    def __init__(self, m: Manipulator, P, L, T, held: bool, perturbation: float) -> None:
+        self.m, self.P, self.L, self.T, self.held, self.eps = m, P, L, T, held, perturbation
+        self.events: list[SimulationEvent] = []
+
+    def inputs(self, k: int, s: float):
+        P = self.P[k] + s * (self.P[k + 1] - self.P[k])
+        if self.held:
+            return P, None, self.T[k] + s * (self.T[k + 1] - self.T[k])
+        return P, self.L[k] + s * (self.L[k + 1] - self.L[k]), None
+
+    def step(self, k: int, state: _State):
+        """The state at sample ``k + 1`` from ``state`` at sample ``k``: ``(state, status, message)``; on an
+        irregular end ``state`` is None."""
+        s0 = 0.0
+        n = self.m.n
+        for _ in range(MAX_EVENTS_PER_STEP + 1):
+            P0, F0, T0 = self.inputs(k, s0)
+            r = 1.0 - s0
+            dP = r * (self.P[k + 1] - self.P[k])
+            d2 = r * ((self.T[k + 1] - self.T[k]) if self.held else (self.L[k + 1] - self.L[k]))
+            if not (np.any(dP != 0.0) or np.any(d2 != 0.0)):
+                return state, "complete", ""
+            mk = _chain(self.m, P0)
+            ctl = (Control.move(n, preload=dP, displacement=d2, tip="held") if self.held
+                   else Control.move(n, preload=dP, load=d2, base=F0))
+            br = trace_branch(mk, state.equilibrium(self.held), ctl, t_max=1.0, stop_at="stability_loss",
+                              max_points=5000)
+            prob = br._problem
+            # (a stability loss on the last step to t = 1 ends the branch as "t_max": the events decide)
+            lost = [e for e in br.events if e.stability == "lost" and e.kind in ("fold", "branch_point")]
+            if not lost and br.status == "t_max":
+                end = _state_of(prob, np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]]))
+                if end.stable:
+                    return end, "complete", ""
+                return None, "failed", (f"step {k}: the followed branch became unstable without a located fold or "
+                                        "branch point")
+            if lost:
+                landed, s_d, status, msg = self.snap(k, s0, r, prob, br, lost[0])
+                if landed is None:
+                    return None, status, msg
+                state, s0 = landed, s_d
+                continue
+            if br.status == "joint_limit":
+                ev = next((e for e in br.events if e.kind == "joint_limit"), None)
+                if ev is not None:
+                    s_ev = s0 + r * ev.t
+                    self.events.append(self._event("joint_limit", k, s_ev, ev.q, None, ev.force, None, ev.tip, None,
+                                                   ev.energy, None, None, None, 0, "limit",
+                                                   f"joint {ev.joint + 1} reached its range bound"))
+                return None, "joint_limit", (f"a joint reached its range bound in step {k} (at fraction "
+                                             f"{s0 + r * (ev.t if ev else br.t[-1]):.6g}): no equilibrium "
+                                             "beyond inside the physical range")
+            if br.status in ("workspace_boundary", "force_bound", "time_limit"):
+                return None, br.status, f"step {k}: {br.message}"
+            return None, "failed", f"step {k}: the branch could not be followed ({br.status}: {br.message})"
+        return None, "failed", f"more than {MAX_EVENTS_PER_STEP} snaps in step {k}"
+
+    def _event(self, kind, k, s, qb, qa, Fb, Fa, tb, ta, Eb, Ea, Vb, Va, sign, method, msg, nv=None):
+        P, F, T = self.inputs(k, s)
+        return SimulationEvent(kind, int(k), float(s), P.copy(), None if F is None else F.copy(),
+                               None if T is None else T.copy(), np.asarray(qb, float).copy(),
+                               None if qa is None else np.asarray(qa, float).copy(),
+                               None if Fb is None else np.asarray(Fb, float).copy(),
+                               None if Fa is None else np.asarray(Fa, float).copy(),
+                               None if tb is None else np.asarray(tb, float).copy(),
+                               None if ta is None else np.asarray(ta, float).copy(),
+                               None if Eb is None else float(Eb), None if Ea is None else float(Ea),
+                               None if Vb is None else float(Vb), None if Va is None else float(Va),
+                               None if (Vb is None or Va is None) else float(Vb - Va),
+                               None if nv is None else np.asarray(nv, float).copy(), int(sign), method, msg)
+
+    def snap(self, k: int, s0: float, r: float, prob, br, ev):
+        """Descent from the fold (branch point) ``ev`` of ``br`` (the sub-step from fraction ``s0``, of length
+        ``r``): ``(state, fraction, "landed", "")`` with the event recorded, or ``(None, fraction, status,
+        message)``."""
+        n = self.m.n
+        fold = ev.kind == "fold"
+        x_ev = ev.x.copy()
+        phi = np.asarray(ev.null_vector, float)
+        phi = phi / max(float(np.abs(phi).max()), 1e-300)
+        note = ""
+        if not fold:
+            # just past the branch point along the traced (now unstable) branch: at the branch point itself the
+            # flow would leave only algebraically slowly
+            after = np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]])
+            t_d = min(float(x_ev[-1]) + BRANCH_POINT_OFFSET / float(prob.w[-1]), float(after[-1]))
+            frac = (t_d - x_ev[-1]) / max(after[-1] - x_ev[-1], 1e-300)
+            y, _ = prob.correct_t(x_ev + (after - x_ev) * frac, t_d)
+            if y is None:
+                return None, s0 + r * ev.t, "failed", f"step {k}: no point on the branch just past its branch point"
+            note = f"the branch point is at fraction {s0 + r * ev.t:.12g}; the arm leaves it just past, here"
+            x_ev = y
+        t_d = float(x_ev[-1])
+        s_d = s0 + r * t_d
+        d = _Descent(prob, t_d, self.held, x_ev[n:n + 2].copy())
+        q_ev = x_ev[:n].copy()
+        V_ev = d.potential(q_ev)
+        cands = {}
+        for sign in (1, -1):
+            qs = q_ev + sign * self.eps * phi
+            qs = d.onto(qs) if self.held else qs
+            cands[sign] = (d.potential(qs), qs)
+        if fold:
+            # the unstable side: where the traced branch goes on past the fold (V decreases along it at the fold)
+            side = float(phi @ (br.q[-1] - ev.q))
+            sign = 1 if side > 0 else -1 if side < 0 else (1 if cands[1][0] <= cands[-1][0] else -1)
+            if cands[sign][0] > V_ev and cands[-sign][0] < V_ev:
+                sign = -sign
+        else:
+            sign = 1 if cands[1][0] <= cands[-1][0] + 1e-15 * max(1.0, abs(V_ev)) else -1
+        before = _state_of(prob, x_ev)
+        outcome, res = d.run(cands[sign][1])
+        kind = "snap" if fold else "bifurcation"
+        if outcome == "landed":
+            s = res
+            if fold and float(np.abs(s.q - q_ev).max()) < 10 * self.eps:
+                return None, s_d, "failed", f"step {k}: the descent from the fold came back to it"
+            self.events.append(self._event(kind, k, s_d, q_ev, s.q, before.force, s.force, before.tip, s.tip,
+                                           before.energy, s.energy, before.potential(self.held),
+                                           s.potential(self.held), sign, ev.method, note, ev.null_vector))
+            return s, s_d, "landed", ""
+        if outcome == "joint_limit":
+            msg = (f"the snap at step {k} + {s_d:.6g} runs into a joint's range bound (no equilibrium inside the "
+                   "physical range on the way)")
+            self.events.append(self._event(kind, k, s_d, q_ev, None, before.force, None, before.tip, None,
+                                           before.energy, None, before.potential(self.held), None, sign, ev.method,
+                                           msg, ev.null_vector))
+            return None, s_d, "joint_limit", msg
+        if outcome == "time_limit":
+            return None, s_d, "time_limit", "the time limit ran out during a snap"
+        return None, s_d, "failed", f"step {k}: the descent from the fold at fraction {s_d:.6g} did not land"
+
+
+# ---------------------------------------------------------------------------- the function
+def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", targets=None, start=None,
+             perturbation: float = PERTURBATION, timeout: float | None = None) -> Simulation:
+    """Quasi-static forward simulation of the chain under sampled inputs, with snap-through (module docstring).
+
+    Parameters
+    ----------
+    m : Manipulator
+        The chain (up to ``numerics.DENSE_MAX`` segments); its rest lengths are the default preloads.
+    preloads : array_like (K, n, 2), optional
+        The rest lengths ``(L1_0, L2_0)`` of every segment at each sample (> 0). Default: the chain's own,
+        constant.
+    loads : array_like (K, 2), optional
+        The dead tip load ``(Fx, Fy)`` at each sample (tip ``"free"``; default zero). ``Fx < 0`` compresses.
+    tip : {"free", "held"}
+        ``"free"``: the tip is loaded by ``loads``. ``"held"``: the tip is held at ``targets``.
+    targets : array_like (K, 2)
+        The tip deflection ``(dx, dy)`` at each sample (tip ``"held"``; the tip at ``(2 sum b - dx, dy)``).
+    start : Equilibrium or array_like (n,), optional
+        The state at sample 0 (Newton puts it on the first inputs' equilibrium; it must be stable).
+        Default: free, the least-energy rest configuration under the first preloads
+        (:func:`~tensegrity_opt.analyses.equilibria.rest.rest_configuration`; under a non-zero first load the
+        least-potential stable equilibrium); held, the least-energy stable equilibrium at the first target
+        (:func:`~tensegrity_opt.analyses.equilibria.least_energy.solve_equilibrium`).
+    perturbation : float
+        The distance (rad, the largest joint) from the fold along its null vector where a snap's descent
+        starts.
+    timeout : float, optional
+        Seconds; on expiry the steps done are kept, ``status="time_limit"``.
+
+    Returns
+    -------
+    Simulation
+        The state at each sample done and the events (snaps, the joint-limit end). ``status`` is
+        ``"complete"`` when every sample was reached.
+
+    Raises
+    ------
+    InvalidParameterError
+        (``ValueError``) naming the field: an array of the wrong shape or not finite, rest lengths not
+        positive, ``tip`` not ``"free"``/``"held"``, loads with a held tip or targets with a free one,
+        sample counts that differ, a start that is not a stable equilibrium under the first inputs,
+        ``n > DENSE_MAX``.
+    UnreachableTargetError
+        (``ValueError``, ``field="targets"``) for a target beyond the chain's reach.
+    NoEquilibriumError
+        (``RuntimeError``) when the default start finds no stable equilibrium.
+
+    Examples
+    --------
+    A load cycle along ``y`` on three bistable segments: two snaps at different loads (hysteresis).
+
+    >>> import numpy as np, tensegrity_opt as to
+    >>> m = to.Manipulator.uniform(3, a=0.5, b=1.0, k=1.0, L0=1.0)
+    >>> up = np.linspace(0, 0.3, 31)
+    >>> fy = np.concatenate([up, np.linspace(0.3, -0.3, 61)[1:], np.linspace(-0.3, 0, 31)[1:]])
+    >>> sim = to.simulate(m, loads=np.column_stack([0 * fy, fy]))
+    >>> sim.status, [(e.kind, e.step, round(float(e.load[1]), 6)) for e in sim.snaps]
+    ('complete', [('snap', 15, 0.153111), ('snap', 69, -0.097754)])
+    """
+    held = tip == "held"
+    P, L, T = _inputs(m, preloads, loads, tip, targets)
+    if not (isinstance(perturbation, (int, float)) and math.isfinite(perturbation) and 0 < perturbation < 0.1):
+        raise InvalidParameterError(f"perturbation must be in (0, 0.1) rad, got {perturbation!r}",
+                                    field="perturbation")
+    with time_limit(timeout):
+        return _simulate(m, P, L, T, held, start, float(perturbation))
+
+
+def _simulate(m, P, L, T, held, start, eps) -> Simulation:
+    K, n = P.shape[0], m.n
+    run = _Run(m, P, L, T, held, eps)
+    rows: list[_State] = []
+    status, message = "complete", ""
+    try:
+        state = _start_state(_chain(m, P[0]), held, None if held else L[0], T[0] if held else None, start)
+    except TimeLimitError:
+        state, status, message = None, "time_limit", "the time limit ran out before the start was found"
+    if state is not None:
+        rows.append(state)
+        for k in range(K - 1):
+            if expired():
+                status, message = "time_limit", f"the time limit ran out after {len(rows)} of {K} samples"
+                break
+            try:
+                new, st, msg = run.step(k, state)
+            except TimeLimitError:
+                new, st, msg = None, "time_limit", "the time limit ran out"
+            except TensegrityError as exc:
+                new, st, msg = None, "failed", f"step {k}: {exc}"
+            if new is None:
+                status, message = st, msg
+                break
+            state = new
+            rows.append(state)
+    if status == "complete":
+        message = f"all {K} samples simulated, {len([e for e in run.events if e.kind != 'joint_limit'])} snap(s)"
+    k = len(rows)
+    q = np.array([s.q for s in rows]).reshape(k, n)
+    force = np.array([s.force for s in rows]).reshape(k, 2)
+    tips = np.array([s.tip for s in rows]).reshape(k, 2)
+    return Simulation(mode="held" if held else "free", preloads=P, loads=L, targets=T, q=q, force=force, tip=tips,
+                      energy=np.array([s.energy for s in rows], float),
+                      potential=np.array([s.potential(held) for s in rows], float),
+                      stable=np.array([s.stable for s in rows], bool),
+                      morse_index=np.array([s.morse for s in rows], int), events=run.events, status=status,
+                      message=message, straight_length=m.straight_length)

@@ -1,0 +1,133 @@
+"""The loading-path commands: ``rest``, ``branch``, ``limit-load``, ``boundary`` and ``plot branch|limit-load|boundary``.
+
+``--json`` prints the library's ``to_dict()`` (the body of the HTTP API for the same request). The
+commands that need ``analyses/rest.py`` (the default start, ``rest``) or ``analyses/boundaries.py``
+run once those are merged; before, they exit 2 with one line saying so (checked).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+import numpy as np
+import pytest
+
+import tensegrity_opt as to
+from tensegrity_opt.applications.cli import build_parser, main
+
+M = to.Manipulator.uniform(4)
+STRAIGHT = ["--start-q", "0", "0", "0", "0"]
+GUIDED_LOADS = (0.572793, 1.362906, 1.921444)
+
+
+def run_json(capsys, argv):
+    assert main([*argv, "--json"]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def test_branch_table_and_json(capsys):
+    assert main(["branch", "--control", "guided", "--t-max", "2", *STRAIGHT]) == 0
+    out = capsys.readouterr().out
+    assert "status t_max" in out and "events (3):" in out
+    assert out.count("branch_point") == 3 and "0.5727928" in out and "1.3629065" in out and "1.9214436" in out
+    got = run_json(capsys, ["branch", "--control", "guided", "--t-max", "2", *STRAIGHT])
+    want = to.trace_branch(M, np.zeros(4), to.Control.guided(), t_max=2.0)
+    assert got == json.loads(json.dumps(want.to_dict()))
+    got = run_json(capsys, ["branch", "--control", "load", "--direction", "1", "0", "--backward", "--stop-at", "event",
+                            "--max-points", "300", *STRAIGHT])
+    assert got["status"] == "event" and got["events"][0]["t"] == pytest.approx(-0.0761205, rel=1e-5)
+
+
+def test_bifurcation_diagram_json_is_the_api_body(capsys):
+    argv = ["branch", "--control", "guided", "--t-max", "2", "--t-min", "-0.2", "--depth", "1", "--max-points", "120",
+            *STRAIGHT]
+    got = run_json(capsys, argv)
+    want = to.bifurcation_diagram(M, np.zeros(4), to.Control.guided(), depth=1, t_max=2.0, t_min=-0.2, max_points=120)
+    assert got == json.loads(json.dumps({"branches": [b.to_dict() for b in want]}))
+    assert main(argv) == 0
+    assert f"{len(want)} branches (depth 1)" in capsys.readouterr().out
+
+
+def test_limit_load_table_and_json(capsys):
+    argv = ["limit-load", "--boundary", "guided", "--direction", "-1", "0", *STRAIGHT]
+    assert main(argv) == 0
+    assert "bifurcation at load P = 0.5727928" in capsys.readouterr().out
+    got = run_json(capsys, [*argv, "--include-branch"])
+    want = to.limit_load(M, (-1.0, 0.0), "guided", start=np.zeros(4))
+    assert got == json.loads(json.dumps(want.to_dict(include_branch=True)))
+
+
+def test_plot_kinds_write_png_and_svg(tmp_path, capsys):
+    for argv in (["plot", "branch", "--control", "guided", "--t-max", "2", *STRAIGHT, "--y", "fy"],
+                 ["plot", "branch", "--control", "guided", "--t-max", "2", *STRAIGHT, "--depth", "1", "--max-points",
+                  "80", "--x", "q1", "--y", "t"],
+                 ["plot", "limit-load", "--boundary", "guided", *STRAIGHT]):
+        for suffix in ("png", "svg"):
+            out = tmp_path / f"fig.{suffix}"
+            assert main([*argv, "-o", str(out), "--dpi", "40"]) == 0, capsys.readouterr().err
+            assert f"wrote {out}" in capsys.readouterr().out
+            data = out.read_bytes()
+            assert data[:4] == b"\x89PNG" if suffix == "png" else b"<svg" in data[:400]
+    info = run_json(capsys, ["plot", "limit-load", "--boundary", "guided", *STRAIGHT, "-o", str(tmp_path / "l.png")])
+    assert info["limit"] == "bifurcation" and info["load"] == pytest.approx(GUIDED_LOADS[0], abs=1e-6)
+
+
+def test_errors_are_one_line_and_exit_2(capsys):
+    for argv, text in [
+        (["branch", "--control", "guided", "--start-q", "0", "0", "0"], "q0 must hold 4"),
+        (["branch", "--control", "guided", "--start-q", "3", "0", "0", "0"], "outside the physical joint range"),
+        (["branch", "--control", "guided", "--direction", "0", "1", *STRAIGHT], "needs an x component"),
+        (["branch", "--control", "guided", "--direction", "1", "0", "0", *STRAIGHT], "takes 2 numbers"),
+        (["branch", "--control", "preload", *STRAIGHT], "needs --direction with 2n"),
+        (["branch", "--control", "guided", "--start-dx", "0.1"], "--start-dx needs a control that holds the tip"),
+        (["branch", "--n", "65", "--control", "guided", "--start-q", *["0"] * 65], "up to 64 segments"),
+        (["branch", "--depth", "1", "--backward", *STRAIGHT], "belong to one branch"),
+        (["plot", "branch", *STRAIGHT, "--y", "q9", "-o", "x.png"], "q1..q4"),
+    ]:
+        assert main(argv) == 2, argv
+        err = capsys.readouterr().err
+        assert err.startswith("tensegrity-opt: error:") and text in err and "Traceback" not in err, (argv, err)
+    for argv in (["branch", "--max-points", "1"], ["branch", "--t-max", "nan"], ["limit-load", "--max-load", "0"],
+                 ["branch", "--depth", "-1"]):
+        with pytest.raises(SystemExit) as exc:
+            main(argv)
+        assert exc.value.code == 2
+        assert "expected" in capsys.readouterr().err
+
+
+
+
+
+def test_rest_and_the_default_start(capsys):
+    from tensegrity_opt.analyses.equilibria.rest import find_equilibria_under_force
+
+    got = run_json(capsys, ["rest"])
+    assert got == json.loads(json.dumps(find_equilibria_under_force(M).to_dict()))
+    assert main(["rest", "--fx", "-0.3", "--stable-only"]) == 0
+    assert "dead tip load (-0.3, 0)" in capsys.readouterr().out
+    got = run_json(capsys, ["branch", "--control", "guided", "--t-max", "1"])
+    assert got == json.loads(json.dumps(to.trace_branch(M, None, to.Control.guided(), t_max=1.0).to_dict()))
+
+
+def test_boundary_command(capsys, tmp_path):
+    argv = ["boundary", "--parameter", "asymmetry", "--p-min", "-0.02", "--p-max", "0.02", "--max-points", "40"]
+    assert main(argv) == 0
+    assert "Stability boundary" in capsys.readouterr().out
+    assert run_json(capsys, argv)["parameter"] == "asymmetry"
+    assert main(["plot", *argv, "-o", str(tmp_path / "b.png")]) == 0
+
+
+def test_every_option_of_the_path_commands_has_help_and_its_default(capsys):
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    plot = next(a for a in sub.choices["plot"]._actions if isinstance(a, argparse._SubParsersAction))
+    parsers = {cmd: sub.choices[cmd] for cmd in ("rest", "branch", "limit-load", "boundary")}
+    parsers.update({f"plot {k}": plot.choices[k] for k in ("branch", "limit-load", "boundary")})
+    for name, p in parsers.items():
+        opts = [a for a in p._actions if a.option_strings and a.dest != "help"]
+        assert [a.dest for a in opts if not a.help] == [], name
+        assert isinstance(p.formatter_class, type) and "(default:" in p.format_help(), name
+    with pytest.raises(SystemExit):
+        main(["branch", "--help"])
+    out = capsys.readouterr().out
+    assert "(default: guided)" in out and "(default: 1000)" in out and "(length)" in out and "(force)" in out

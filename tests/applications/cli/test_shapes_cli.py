@@ -1,0 +1,282 @@
+"""Shape labels and the command line."""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from tensegrity_opt import shape_label, sign_string
+from tensegrity_opt.applications.cli import main
+
+
+@pytest.mark.parametrize("q,label,signs", [
+    ([-1, 2, 3, 4], "U", "-+++"), ([1, -2, -3, -4], "U", "+---"),
+    ([-1, 2, -3, 4], "Z", "-+-+"), ([1, -2, 3, -4], "Z", "+-+-"),
+    ([-1, 2, -3, -4], "ZU", "-+--"), ([1, -2, 3, 4], "ZU", "+-++"),
+    ([0, 0, 0, 0], "I", "0000"), ([1, 2, 3, 1e-9], "C", "+++0"),
+    ([1, -1, 1, -1, 1], "W4", "+-+-+"),
+])
+def test_table2_labels(q, label, signs):
+    assert shape_label(q) == label
+    assert sign_string(q) == signs
+
+
+def test_cli_buckling_table(capsys):
+    assert main(["buckling"]) == 0
+    out = capsys.readouterr().out
+    assert "-0.572793" in out and "1.145586" in out and "2.725813" in out and "3.842887" in out
+
+
+def test_cli_json_outputs(capsys):
+    assert main(["buckling", "--json", "--boundary", "free"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["critical_force"] == pytest.approx(-0.0761205, rel=1e-4)
+    assert main(["equilibria", "--dx", "0.05", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert [e["shape"] for e in data["equilibria"]] == ["U", "U", "ZU", "ZU", "Z", "Z"]
+    assert main(["equilibrium", "--dx", "0.1", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert abs(data["force"]["fy"]) == pytest.approx(0.02579, rel=1e-3)
+    assert main(["curve", "--start", "0", "--stop", "0.5", "--num", "3", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert len(data["points"]) == 3 and data["jumps"][0]["kind"] == "buckling"
+
+
+def test_cli_errors(capsys, tmp_path):
+    assert main(["equilibrium", "--dx", "-1"]) == 2
+    assert "beyond the chain's reach" in capsys.readouterr().err
+    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 1          # unstable straight chain: an answer, not a usage error
+    bad = tmp_path / "m.json"
+    bad.write_text('{"segments": [{"a": 1, "b": -1}]}')
+    assert main(["buckling", "--manipulator", str(bad)]) == 2
+    assert "b must be finite and > 0" in capsys.readouterr().err
+
+
+def test_console_script_runs():
+    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"], capture_output=True, text=True,
+                       check=True)
+    assert "critical force Fx0 = -0.572793" in r.stdout
+
+
+def test_vectorised_shape_labels_equal_the_row_by_row_labels():
+    import numpy as np
+
+    from tensegrity_opt.model.shapes import shape_label, shape_labels
+
+    rng = np.random.default_rng(0)
+    Q = rng.standard_normal((3000, 7)) * (rng.random((3000, 7)) > 0.3)
+    Q[::11] = 0.0
+    Q[5] = [0.0, 0.0, 1e-9, 0.0, 2.0, -1.0, 0.0]          # a tiny angle counts as zero
+    assert shape_labels(Q) == [shape_label(q) for q in Q]
+    assert shape_labels(np.zeros((0, 4))) == []
+
+
+# ---------------------------------------------------------------------------- usage errors, help, pipes
+@pytest.mark.parametrize("argv", [["curve", "--num", "-1"], ["curve", "--num", "0"], ["equilibrium", "--dx", "nan"],
+                                  ["buckling", "--n", "0"], ["plot", "curve", "--num", "-3", "-o", "x.png"]])
+def test_a_bad_option_is_one_usage_line_and_exit_2(argv, capsys):
+    """A count must be >= 1 and a number finite: argparse's usage error, never a traceback (was a
+    numpy ValueError traceback for --num -1)."""
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert "Traceback" not in err and err.strip().splitlines()[-1].startswith("tensegrity-opt")
+    assert "expected" in err.strip().splitlines()[-1]
+
+
+def test_every_option_of_the_analysis_commands_has_help_and_its_default(capsys):
+    import argparse
+
+    from tensegrity_opt.applications.cli import build_parser
+
+    sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
+    for cmd in ("buckling", "equilibrium", "equilibria", "curve"):
+        opts = [a for a in sub.choices[cmd]._actions if a.option_strings and a.dest != "help"]
+        assert opts, cmd
+        assert [a.dest for a in opts if not a.help] == [], cmd        # every option says what it is
+        with pytest.raises(SystemExit):
+            main([cmd, "--help"])
+        out = capsys.readouterr().out
+        assert "(default: 0" in out or "(default: guided)" in out, cmd    # and its default
+
+
+def test_a_closed_pipe_is_not_an_error():
+    """``tensegrity-opt buckling | head -1``: the reader leaves early; no BrokenPipeError traceback."""
+    p = subprocess.Popen([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"],
+                         stdout=subprocess.PIPE, stderr=subprocess.PIPE, cwd=str(Path(__file__).resolve().parents[3]))
+    p.stdout.close()                      # nobody reads: the first write fails with EPIPE
+    err = p.stderr.read().decode()
+    assert p.wait(timeout=120) == 0
+    assert "Traceback" not in err and "BrokenPipe" not in err
+
+
+# ---------------------------------------------------------------------------- issue 18: help, errors, partial curves
+def _parsers(parser, path=("tensegrity-opt",)):
+    """Every parser of ``parser``'s tree (the top one, each command, each ``plot`` kind), with its path."""
+    import argparse
+
+    yield path, parser
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for name, sub in action.choices.items():
+                yield from _parsers(sub, (*path, name))
+
+
+def test_every_option_of_every_command_has_help_and_shows_its_default():
+    """``tensegrity-opt --help`` and each ``COMMAND --help``: no option without a help text (was: most
+    ``plot`` kinds, ``serve --log-level``), and every help shows the defaults (argparse's
+    ``ArgumentDefaultsHelpFormatter`` or ``%(default)s``); walked over the parser, not a snapshot."""
+    import argparse
+
+    from service.cli import build_parser
+
+    seen = 0
+    for path, p in _parsers(build_parser()):
+        shows_defaults = issubclass(p.formatter_class, argparse.ArgumentDefaultsHelpFormatter)
+        for a in p._actions:
+            if not a.option_strings or a.dest == "help":
+                continue
+            seen += 1
+            assert a.help and a.help.strip(), (" ".join(path), a.option_strings)
+            has_default = a.default not in (None, argparse.SUPPRESS) and a.nargs != 0
+            if has_default:
+                assert shows_defaults or "%(default)" in a.help, (" ".join(path), a.option_strings)
+                text = p.format_help()
+                assert "(default: " in text, " ".join(path)
+    assert seen > 150          # the walk reached the commands and the plot kinds
+
+
+def test_the_top_help_lists_every_command_group():
+    from service.cli import build_parser
+
+    top = build_parser()
+    text = " ".join(top.format_help().split())
+    for word in ("plot", "sweep", "serve", "openapi", "buckling", "curve", "branch", "atlas", "plan", "simulate",
+                 "load-capacity", "figures", "parameter sweeps"):
+        assert word in text.split("positional arguments")[0], word     # in the description itself
+    sub = next(iter(p for path, p in _parsers(top) if path[1:] == ("plot",)))
+    assert "shapes" in sub.format_help() and "torque" in sub.format_help()
+
+
+def _one_error_line(err: str) -> str:
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "Traceback" not in err, err
+    assert lines[0].startswith("tensegrity-opt") and "error: " in lines[0], err
+    return lines[0]
+
+
+@pytest.mark.parametrize("argv,says", [
+    (["curve", "--num", "-1"], "--num"), (["curve", "--num", "0"], "--num"), (["curve", "--n", "0"], "--n"),
+    (["buckling", "--n", "-2"], "--n"), (["plot", "torque", "--num", "0", "-o", "t.png"], "--num"),
+    (["sweep", "spec.json", "--workers", "x"], "--workers"), (["curve", "--frobnicate"], "frobnicate"),
+    ([], "COMMAND"), (["plot"], "KIND"), (["serve", "--port", "-5"], "--port"),
+    # a chain too long to build answers at once instead of hanging (it allocated n x n matrices for n = 1e9)
+    (["buckling", "--n", "1000000000"], "at most 10000 segments"), (["curve", "--n", "10001"], "at most"),
+])
+def test_a_usage_error_is_one_line_and_exit_2(argv, says, capsys):
+    """Issue 18: every bad option is one line ``error: ...`` on stderr (argparse's usage block left out) and
+    status 2 - through the console script's parser too."""
+    from service.cli import main as console
+
+    for run in (main, console):
+        if run is main and argv[:1] == ["serve"]:
+            continue
+        with pytest.raises(SystemExit) as exc:
+            run(argv)
+        assert exc.value.code == 2
+        line = _one_error_line(capsys.readouterr().err)
+        assert says in line and "--help" in line
+
+
+@pytest.mark.parametrize("argv,says", [
+    (["curve", "--k", "-1"], "k must be finite and > 0"), (["curve", "--a", "0"], "a must be"),
+    (["equilibrium", "--L0", "-0.5"], "L0"), (["curve", "--start", "0", "--stop", "50", "--num", "3"], "reach"),
+    (["plot", "map", "--x", "k", "0.5", "2", "-1", "--y", "L0", "0.5", "2.5", "3", "-o", "m.png"], "-1"),
+    (["plot", "map", "--x", "q", "0.5", "2", "3", "--y", "L0", "0.5", "2.5", "3", "-o", "m.png"], "--x"),
+])
+def test_a_domain_error_inside_a_command_is_one_line_and_exit_2(argv, says, capsys, tmp_path, monkeypatch):
+    """A negative stiffness, a zero size, an unreachable deflection, a negative count that only the library
+    checks (numpy's ``linspace`` raised a ``ValueError`` traceback for ``plot map ... -1``): one line, 2."""
+    monkeypatch.chdir(tmp_path)
+    assert main(argv) == 2
+    assert says in _one_error_line(capsys.readouterr().err)
+
+
+@pytest.mark.parametrize("text,says", [("[1, 2]", "expected a JSON object"), ('{"segments": []}', "n >= 1"),
+                                       ("{not json", "Expecting"), ('{"segments": [{"a": 1, "b": -1}]}', "b must")])
+def test_a_bad_manipulator_file_is_one_line_and_exit_2(text, says, capsys, tmp_path):
+    """n = 0 by file (no segments), a JSON list (was an AttributeError traceback), broken JSON."""
+    f = tmp_path / "m.json"
+    f.write_text(text)
+    assert main(["curve", "--manipulator", str(f), "--num", "3"]) == 2
+    assert says in _one_error_line(capsys.readouterr().err)
+
+
+class _Partial:
+    """A curve as the curves contract returns it when the stable branch ends early (``complete`` False,
+    ``note`` the sentence), around the real curve of the points before the end."""
+
+    complete = False
+    note = "The stable branch ends between dx = 0.25 and dx = 0.5 (dy = 0): test; 2 of 5 points computed."
+
+    def __init__(self, curve):
+        self._curve = curve
+
+    def __getattr__(self, name):
+        return getattr(self._curve, name)
+
+    def to_dict(self):
+        return {**self._curve.to_dict(), "complete": False, "note": self.note}
+
+
+def test_a_partial_curve_prints_its_points_and_the_note_and_exits_0(capsys, monkeypatch):
+    """The contract: a Curve with ``complete`` False is a result (its points are real equilibria): the
+    table (or JSON) on stdout, ``curve.note`` on stderr, status 0; a complete curve prints no note."""
+    import tensegrity_opt.applications.cli as cli
+    from tensegrity_opt.analyses.paths.curves import force_deflection
+
+    def partial(m, dx, dy=0.0, **kw):
+        return _Partial(force_deflection(m, dx[:2], dy, **kw))
+
+    assert main(["curve", "--start", "0", "--stop", "1", "--num", "5"]) == 0
+    assert "note" not in capsys.readouterr().err
+    monkeypatch.setattr(cli, "force_deflection", partial)
+    assert main(["curve", "--start", "0", "--stop", "1", "--num", "5"]) == 0
+    out, err = capsys.readouterr()
+    rows = [ln for ln in out.splitlines() if ln.strip()[:1].isdigit()]
+    assert len(rows) == 2 and rows[1].split()[0] == "0.25000"
+    assert err.strip() == f"tensegrity-opt: note: {_Partial.note}"
+    assert main(["curve", "--start", "0", "--stop", "1", "--num", "5", "--json"]) == 0
+    out, err = capsys.readouterr()
+    data = json.loads(out)
+    assert len(data["points"]) == 2 and data["complete"] is False and _Partial.note in err
+
+
+def test_plot_curve_of_a_partial_curve_writes_the_figure_and_prints_the_note(capsys, monkeypatch, tmp_path):
+    import tensegrity_opt.analyses.paths.curves as curves
+
+    real = curves.force_deflection
+
+    def partial(m, dx, dy=0.0, **kw):
+        return _Partial(real(m, dx[:3], dy, **kw))
+
+    monkeypatch.setattr(curves, "force_deflection", partial)
+    out_file = tmp_path / "c.png"
+    assert main(["plot", "curve", "--start", "0", "--stop", "1", "--num", "5", "-o", str(out_file), "--json"]) == 0
+    out, err = capsys.readouterr()
+    data = json.loads(out)
+    assert out_file.stat().st_size > 1000 and out_file.read_bytes()[:4] == b"\x89PNG"
+    assert data["points"] == 3 and data["complete"] is False and data["note"] == _Partial.note
+    assert err.strip() == f"tensegrity-opt: note: {_Partial.note}"
+
+
+@pytest.mark.parametrize("argv", [["buckling", "--a", "0.5", "--L0", "0.5"], ["buckling", "--a", "0.5", "--L0", "0.5", "--json"]])
+def test_a_physical_answer_is_no_usage_error(argv, capsys):
+    """Issue 18: the straight chain being unstable unloaded (K = k (b L0 - 2 (b^2 - a^2)) = 0.5 - 1.5 = -1 here,
+    by hand) is a fact about the chain: one line ``answer:`` naming K, status 1, not the usage error's 2."""
+    assert main(argv) == 1
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("tensegrity-opt: answer: ") and "K = " in err[0] and "= -1 <= 0" in err[0]

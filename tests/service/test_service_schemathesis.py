@@ -1,0 +1,76 @@
+"""schemathesis against the committed openapi/openapi.json and a real server at its default limits.
+
+Every check (``--checks all``: server errors, status codes, content types, headers and bodies
+against the document, positive data accepted, negative data refused, Allow headers, auth, use after
+free ...) and every phase (examples, coverage, fuzzing, stateful), bounded (``--max-examples``)
+with a fixed seed (hypothesis' health checks, about generation speed, are off). The server runs at its *default* settings (only the job store is moved to a
+temporary file): the document says exactly what it accepts. ``schemathesis_hooks`` bounds the cost
+of the generated requests within the valid range (see there) and adds a check that a request the
+document calls valid is never refused as a schema violation or over an undocumented limit.
+
+``positive_data_acceptance`` also accepts 422: a valid request may still be refused for a domain
+reason the schema cannot say (an unreachable target, an unstable straight chain, ...), answered as
+a documented ``ErrorOut`` with its code; the added check makes sure that is never ``validation_error``.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from servers import clean_env, free_port, running_server, serve_command
+
+pytest.importorskip("httpx")
+ROOT = Path(__file__).resolve().parents[2]
+HERE = ROOT / "tests" / "support"   # schemathesis_hooks.py
+
+CONFIG = """\
+[checks.positive_data_acceptance]
+expected-statuses = ["2xx", "401", "403", "404", "409", "422", "429"]
+
+# Figures and design NLPs are the expensive operations (matplotlib, IPOPT): fewer examples there.
+[[operations]]
+include-path-regex = "^/v1/(plots|design)/"
+generation.max-examples = 10
+
+# A figure's body is its JSON operation's (plus format and dpi), whose boundary cases the coverage phase runs
+# there: the figures keep the examples, fuzzing and stateful phases (the figures' coverage cases were ~40% of
+# the run, ~150 s of the CI budget).
+[[operations]]
+include-path-regex = "^/v1/plots/"
+phases.coverage.enabled = false
+"""
+
+
+def schemathesis_command() -> list[str] | None:
+    exe = shutil.which("schemathesis") or str(Path(sys.executable).with_name("schemathesis"))
+    return [exe] if Path(exe).exists() else None
+
+
+@pytest.mark.skipif(schemathesis_command() is None, reason="schemathesis is not installed (pip install '.[test]')")
+def test_schemathesis_all_checks_and_phases_at_the_default_limits(tmp_path):
+    env = clean_env(TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"))
+    config = tmp_path / "schemathesis.toml"
+    config.write_text(CONFIG, encoding="utf-8")
+    hooks_env = {**env, "SCHEMATHESIS_HOOKS": "schemathesis_hooks",
+                 "PYTHONPATH": os.pathsep.join([str(HERE), env.get("PYTHONPATH", "")]).rstrip(os.pathsep)}
+    with running_server(serve_command(free_port()), env, ready="/readyz", stdout=subprocess.DEVNULL) as (_, base):
+        start = time.monotonic()
+        run = subprocess.run(
+            [*schemathesis_command(), "--config-file", str(config), "run", str(ROOT / "openapi" / "openapi.json"),
+             "--url", base, "--checks", "all",
+             "--phases", "examples,coverage,fuzzing,stateful", "--suppress-health-check", "all",
+             "--max-examples", "20", "--seed", "1", "--generation-database", "none", "--request-timeout", "60"],
+            cwd=tmp_path, env=hooks_env, capture_output=True, text=True, timeout=900)
+        took = time.monotonic() - start
+    print(f"schemathesis: {took:.0f} s")
+    (tmp_path / "schemathesis.out").write_text(run.stdout + run.stderr, encoding="utf-8")
+    assert run.returncode == 0, run.stdout[:3000] + "\n...\n" + run.stdout[-9000:] + run.stderr[-2000:]
+    for phase in ("Examples", "Coverage", "Fuzzing", "Stateful"):     # each ran and passed (not skipped)
+        assert f"✅ {phase}" in run.stdout, run.stdout[-3000:]

@@ -1,0 +1,398 @@
+"""The control stream (``/v1/control/stream``) over a real server process and a real WebSocket client.
+
+* every mode's answers equal the library called directly on the same inputs, step by step: the
+  ``Tracker`` (track), ``solve_equilibrium_under_force`` from the last configuration (preloads), the
+  ``PreloadController`` (inverse), events included (a tracker jump, a preload snap);
+* bad messages (not JSON, an unknown type, a bad field, a step before the open, a second open) get the
+  REST API's errors and the stream goes on; a refused open is answered, then closed with 1008;
+* the API key (header or query) on a server with keys: refused with 4401 without it;
+* the idle timeout (1001), the per-step time limit (``timeout``, the stream goes on), the connection bound
+  (1013), and a client killed mid-step: the server survives and its slot is free again.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import json
+import math
+import time
+
+import numpy as np
+import pytest
+
+import tensegrity_opt as to
+from servers import clean_env, free_port, running_server, serve_command
+from tensegrity_opt.analyses.paths.continuation import Tracker
+from tensegrity_opt.analyses.design.preload_control import PreloadController
+from tensegrity_opt.analyses.equilibria.rest import rest_configuration
+
+websockets = pytest.importorskip("websockets")
+httpx = pytest.importorskip("httpx")
+pytest.importorskip("uvicorn")
+
+KEY = "stream-test-key"
+PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+#: Lean servers: no warm-up, no solver processes (a stream has its own solver thread).
+LEAN = dict(TENSEGRITY_WORKERS="1", TENSEGRITY_WARMUP="false", TENSEGRITY_INLINE_PROCESSES="0",
+            TENSEGRITY_HEAVY_WORKERS="0")
+
+
+@pytest.fixture(scope="module")
+def server(tmp_path_factory):
+    """Keys, at most 2 streams, chains up to 50 segments."""
+    env = clean_env(**LEAN, TENSEGRITY_API_KEYS=KEY, TENSEGRITY_MAX_STREAM_CONNECTIONS="2",
+                    TENSEGRITY_MAX_SEGMENTS="50",
+                    TENSEGRITY_JOBS_DB=str(tmp_path_factory.mktemp("jobs") / "jobs.sqlite3"))
+    with running_server(serve_command(free_port()), env) as (proc, base):
+        yield proc, base
+
+
+@pytest.fixture(scope="module")
+def quick(tmp_path_factory):
+    """No keys, a short idle timeout and a short solve time limit."""
+    env = clean_env(**LEAN, TENSEGRITY_STREAM_IDLE_TIMEOUT="0.5", TENSEGRITY_SOLVE_TIMEOUT="0.5",
+                    TENSEGRITY_JOBS_DB=str(tmp_path_factory.mktemp("jobs") / "jobs.sqlite3"))
+    with running_server(serve_command(free_port()), env) as (proc, base):
+        yield proc, base
+
+
+def ws_url(base: str, query: str = "") -> str:
+    return base.replace("http://", "ws://") + "/v1/control/stream" + query
+
+
+def connect(base: str, key: str | None = KEY, query: str = ""):
+    headers = {"X-API-Key": key} if key else {}
+    return websockets.connect(ws_url(base, query), additional_headers=headers, compression=None, open_timeout=10)
+
+
+async def ask(ws, msg) -> dict:
+    await ws.send(msg if isinstance(msg, (str, bytes)) else json.dumps(msg))
+    return json.loads(await asyncio.wait_for(ws.recv(), 30))
+
+
+async def closed(ws) -> tuple[int, str]:
+    """The close code and reason the server sent (after anything still queued)."""
+    with pytest.raises(websockets.ConnectionClosed) as info:
+        while True:
+            await asyncio.wait_for(ws.recv(), 10)
+    return info.value.rcvd.code, info.value.rcvd.reason
+
+
+def run(coro):
+    return asyncio.run(coro)
+
+
+def assert_same(got, want, path="") -> None:
+    """``got`` (decoded JSON) equals the library's ``to_dict()`` ``want``: numbers to 1e-9."""
+    if isinstance(want, dict):
+        assert set(want) <= set(got), (path, set(want) - set(got))
+        for k, v in want.items():
+            assert_same(got[k], v, f"{path}.{k}")
+    elif isinstance(want, (list, tuple)):
+        assert isinstance(got, list) and len(got) == len(want), path
+        for i, (g, w) in enumerate(zip(got, want)):
+            assert_same(g, w, f"{path}[{i}]")
+    elif isinstance(want, float) and not isinstance(want, bool):
+        assert got == pytest.approx(want, rel=1e-9, abs=1e-12), path
+    else:
+        assert got == want, path
+
+
+# ---------------------------------------------------------------------------- the three modes
+def test_track_mode_is_the_tracker_with_its_jumps(server):
+    _, base = server
+    chain = {"n": 3, "a": 0.5, "b": 1.0, "k": 1.0, "L0": 1.0}          # bistable segments: a snap on the way
+    m = to.Manipulator.uniform(3, 0.5, 1.0, 1.0, 1.0)
+    path = [(dx, 0.0) for dx in np.linspace(0.02, 2.6, 40)] + [(1.0, 0.3), (1.0, -0.3)]
+    tr = Tracker(m)
+    want, jumps_at = [], []
+    for i, (dx, dy) in enumerate(path):
+        j = tr.jumps
+        want.append(tr.solve(dx, dy).to_dict())
+        if tr.jumps != j:
+            jumps_at.append(i)
+    assert jumps_at, "the path should make the tracker jump"
+
+    async def go():
+        async with connect(base) as ws:
+            opened = await ask(ws, {"type": "open", "manipulator": chain, "mode": "track"})
+            assert opened["type"] == "opened" and opened["seq"] == 0 and opened["mode"] == "track"
+            assert opened["n"] == 3 and opened["step_timeout"] == 10.0 and opened["idle_timeout"] == 60.0
+            out = []
+            for dx, dy in path:
+                out.append(await ask(ws, {"type": "step", "dx": float(dx), "dy": float(dy)}))
+            return out
+
+    got = run(go())
+    for i, (g, w) in enumerate(zip(got, want)):
+        assert g["type"] == "result" and g["seq"] == i + 1 and g["mode"] == "track"
+        assert_same(g, w)
+        assert bool(g["events"]) == (i in jumps_at), i
+    for i in jumps_at:
+        (ev,) = got[i]["events"]
+        assert ev["kind"] == "jump" and ev["q_before"] == got[i - 1]["q"]
+        assert ev["distance"] == pytest.approx(np.max(np.abs(np.subtract(got[i]["q"], got[i - 1]["q"]))), rel=1e-12)
+    assert got[-1]["jumps"] == tr.jumps == len(jumps_at)
+
+
+def test_preloads_mode_is_the_forward_solve_from_the_last_state_with_its_snap(server):
+    _, base = server
+    # a bistable segment in front of a straight one; tilting its double well (1 + d, 1 - d) ends its well:
+    # one snap into the other
+    chain = {"segments": [{"a": 0.5, "b": 1.0, "k": 1.0, "L0": 1.0}, {"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]}
+    m = to.Manipulator.from_dict(chain)
+    ds = np.linspace(0.0, 0.5, 26)
+    commands = [[[1 + d, 1 - d], [1.0, 1.0]] for d in ds]
+    loads = [None] * len(ds)
+    loads[-1] = [0.0, 0.01]                     # a step's own load
+    q = rest_configuration(m).q
+    start = q.copy()
+    want, snaps = [], []
+    for i, (rl, F) in enumerate(zip(commands, loads)):
+        mm = to.Manipulator([to.Segment(s.a, s.b, (s.k1, s.k2), tuple(p)) for s, p in zip(m.segments, rl)])
+        eq = to.solve_equilibrium_under_force(mm, *(F or (0.0, 0.0)), q0=q)
+        if np.max(np.abs(eq.q - q)) > 0.2 or not eq.stable:
+            snaps.append(i)
+        want.append(eq.to_dict())
+        q = eq.q
+    assert len(snaps) == 1
+
+    async def go():
+        async with connect(base) as ws:
+            opened = await ask(ws, {"type": "open", "manipulator": chain, "mode": "preloads"})
+            assert opened["type"] == "opened" and opened["load"] == [0.0, 0.0]
+            assert_same(opened["q"], start.tolist())
+            out = []
+            for rl, F in zip(commands, loads):
+                out.append(await ask(ws, {"type": "step", "rest_lengths": rl, **({"load": F} if F else {})}))
+            return out
+
+    got = run(go())
+    for i, (g, w) in enumerate(zip(got, want)):
+        assert g["type"] == "result" and g["seq"] == i + 1 and g["mode"] == "preloads", g
+        assert_same(g, w)
+        assert g["rest_lengths"] == commands[i] and g["load"] == (loads[i] or [0.0, 0.0])
+        assert bool(g["events"]) == (i in snaps)
+    (ev,) = got[snaps[0]]["events"]
+    assert ev["kind"] == "snap" and ev["cause"] == "distance" and ev["distance"] > 1.0
+    assert ev["q_before"] == got[snaps[0] - 1]["q"]
+
+
+def test_inverse_mode_is_the_preload_controller(server):
+    _, base = server
+    F = (-0.02, 0.01)
+    m = to.Manipulator.uniform(4)
+    ctl = PreloadController(m, load=F, rate_limit=0.1)
+    tip0 = m.tip(ctl.q)
+    steps = [{"target": (tip0 + np.array([-0.15, 0.3]) * math.sin(math.pi * k / 11)).tolist()} for k in range(12)]
+    steps[5]["end_angle"] = 0.55                        # beyond the rate limit's Newton step: IPOPT
+    steps[7]["load"] = [-0.03, 0.0]
+    steps.insert(9, {"target": [10.0, 0.0]})            # out of reach: infeasible, the controller stays
+    opened_want = {"q": ctl.q.tolist(), "rest_lengths": ctl.ell.reshape(4, 2).tolist(), "load": list(F)}
+    want = [ctl.step(st["target"], load=st.get("load"), end_angle=st.get("end_angle")).to_dict() for st in steps]
+    assert not want[9]["feasible"] and all(w["feasible"] for i, w in enumerate(want) if i != 9)
+    assert want[5]["method"] == "ipopt" and want[5]["residual"] is None and want[9]["energy"] is None
+
+    async def go():
+        async with connect(base) as ws:
+            opened = await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "inverse", "load": list(F),
+                                    "rate_limit": 0.1})
+            assert opened["type"] == "opened" and opened["mode"] == "inverse"
+            assert_same(opened, opened_want)
+            return [await ask(ws, {"type": "step", **st}) for st in steps]
+
+    got = run(go())
+    for i, (g, w) in enumerate(zip(got, want)):
+        assert g["type"] == "result" and g["seq"] == i + 1 and g["mode"] == "inverse", g
+        assert_same(g, w)
+
+
+# ---------------------------------------------------------------------------- refusals
+def test_bad_messages_are_answered_and_the_stream_goes_on(server):
+    _, base = server
+
+    async def go():
+        async with connect(base) as ws:
+            e = await ask(ws, "not json")
+            assert e["type"] == "error" and e["seq"] == 0 and e["code"] == "validation_error"
+            assert e["field"] == "body" and e["errors"][0]["type"] == "json_invalid"
+            e = await ask(ws, {"type": "step", "dx": 0.1})
+            assert (e["code"], e["field"], e["seq"]) == ("not_open", "type", 1)
+            e = await ask(ws, {"type": "steer"})
+            assert (e["code"], e["field"]) == ("validation_error", "type")
+            e = await ask(ws, [1, 2])
+            assert (e["code"], e["field"]) == ("validation_error", "body")
+            assert (await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "track"}))["type"] == "opened"
+            ok = await ask(ws, {"type": "step", "dx": 0.1})
+            assert ok["type"] == "result" and ok["seq"] == 5
+            e = await ask(ws, {"type": "step", "dx": "0.1"})
+            assert (e["code"], e["field"], e["seq"]) == ("validation_error", "dx", 6)
+            e = await ask(ws, {"type": "step", "dx": 0.1, "dz": 1})
+            assert (e["code"], e["field"]) == ("validation_error", "dz")
+            e = await ask(ws, {"type": "step"})
+            assert (e["code"], e["field"]) == ("validation_error", "dx")
+            e = await ask(ws, '{"type": "step", "dx": NaN}')
+            assert (e["code"], e["field"]) == ("validation_error", "dx")
+            e = await ask(ws, {"type": "step", "dx": 50.0})            # the library's refusal
+            assert (e["code"], e["field"]) == ("unreachable_target", "dx") and e["details"]["reach"] == 7.0
+            e = await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "track"})
+            assert (e["code"], e["field"]) == ("already_open", "type")
+            e = await ask(ws, "{")
+            assert (e["code"], e["field"]) == ("validation_error", "body")
+            ok2 = await ask(ws, json.dumps({"type": "step", "dx": 0.11}).encode())   # a binary frame
+            assert ok2["type"] == "result" and ok2["seq"] == 13 and ok2["events"] == []
+            # the stream still continues from the last good step: the Tracker's answer for 0.1 then 0.11
+            tr = Tracker(to.Manipulator.uniform(4))
+            tr.solve(0.1)
+            assert_same(ok2, tr.solve(0.11).to_dict())
+        # a preloads step with the wrong number of segments: the library's refusal names the message field
+        async with connect(base) as ws:
+            await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "preloads"})
+            e = await ask(ws, {"type": "step", "rest_lengths": [[1.0, 1.0]] * 3})
+            assert (e["code"], e["field"]) == ("invalid_parameter", "rest_lengths")
+            e = await ask(ws, {"type": "step", "rest_lengths": [[1.0, 1.0]] * 3 + [[1.0, -1.0]]})
+            assert (e["code"], e["field"]) == ("validation_error", "rest_lengths[3][1]")
+            assert (await ask(ws, {"type": "step", "rest_lengths": [[1.0, 1.0]] * 4}))["type"] == "result"
+        r = httpx.get(base + "/v1/control/stream", headers={"X-API-Key": KEY})
+        assert r.status_code == 426 and r.json()["code"] == "upgrade_required"
+
+    run(go())
+
+
+@pytest.mark.parametrize("open_msg,code,field", [
+    ({"type": "open", "manipulator": {"n": 0}, "mode": "track"}, "validation_error", "manipulator.n"),
+    ({"type": "open", "manipulator": PAPER, "mode": "steer"}, "validation_error", "mode"),
+    ({"type": "open", "manipulator": PAPER}, "validation_error", "mode"),
+    ({"type": "open", "manipulator": PAPER, "mode": "track", "load": [0.0, 1.0]}, "validation_error", "load"),
+    ({"type": "open", "manipulator": {"n": 51}, "mode": "track"}, "too_many_segments", "manipulator.n"),
+    ({"type": "open", "manipulator": {"n": 1}, "mode": "inverse"}, "invalid_parameter", "manipulator.n"),
+    ({"type": "open", "manipulator": {"n": 61}, "mode": "inverse"}, "validation_error", "manipulator.n"),
+    ({"type": "open", "manipulator": PAPER, "mode": "inverse", "start": [0.0] * 3}, "invalid_parameter", "start"),
+])
+def test_a_refused_open_is_answered_then_closed_with_1008(server, open_msg, code, field):
+    _, base = server
+
+    async def go():
+        async with connect(base) as ws:
+            e = await ask(ws, open_msg)
+            assert (e["type"], e["seq"], e["code"], e["field"]) == ("error", 0, code, field), e
+            assert (await closed(ws))[0] == 1008
+
+    run(go())
+
+
+def test_the_api_key_in_the_header_or_the_query(server):
+    _, base = server
+
+    async def refused(key, query=""):
+        async with connect(base, key, query) as ws:
+            e = json.loads(await asyncio.wait_for(ws.recv(), 10))
+            assert (e["type"], e["seq"], e["code"], e["field"]) == ("error", None, "unauthorized", "X-API-Key")
+            assert (await closed(ws)) == (4401, "unauthorized")
+
+    async def accepted(key, query=""):
+        async with connect(base, key, query) as ws:
+            assert (await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "track"}))["type"] == "opened"
+
+    async def go():
+        await refused(None)
+        await refused("wrong")
+        await refused(None, "?api_key=wrong")
+        await accepted(KEY)
+        await accepted(None, f"?api_key={KEY}")
+
+    run(go())
+    assert httpx.get(base + "/version").json()["limits"]["max_stream_connections"] == 2
+
+
+# ---------------------------------------------------------------------------- limits
+def test_an_idle_stream_is_closed_with_1001(quick):
+    _, base = quick
+
+    async def go():
+        async with connect(base, None) as ws:
+            opened = await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "track"})
+            assert opened["idle_timeout"] == 0.5
+            t0 = time.monotonic()
+            e = json.loads(await asyncio.wait_for(ws.recv(), 10))
+            assert (e["type"], e["seq"], e["code"]) == ("error", None, "idle_timeout")
+            code, reason = await closed(ws)
+            assert code == 1001 and "idle" in reason
+            assert 0.4 < time.monotonic() - t0 < 5
+        async with connect(base, None) as ws:           # silent from the start
+            e = json.loads(await asyncio.wait_for(ws.recv(), 10))
+            assert e["code"] == "idle_timeout" and (await closed(ws))[0] == 1001
+
+    run(go())
+
+
+def test_a_step_over_the_time_limit_is_a_timeout_and_the_stream_goes_on(quick):
+    _, base = quick
+    m = to.Manipulator.uniform(30)
+    target = (m.tip(rest_configuration(m).q) + [-0.1, 0.3]).tolist()
+
+    async def go():
+        async with connect(base, None) as ws:
+            # the largest-margin objective: IPOPT on the design NLP, built on first use (~4 s for n = 30)
+            await ask(ws, {"type": "open", "manipulator": {"n": 30}, "mode": "inverse", "objective": "margin"})
+            t0 = time.monotonic()
+            e = await ask(ws, {"type": "step", "target": target})
+            assert (e["type"], e["seq"], e["code"]) == ("error", 1, "timeout") and time.monotonic() - t0 < 2.5
+            e = await ask(ws, {"type": "step", "target": "x"})
+            assert (e["seq"], e["code"], e["field"]) == (2, "validation_error", "target")
+        async with connect(base, None) as ws:           # and the server serves other streams meanwhile
+            await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "track"})
+            r = await ask(ws, {"type": "step", "dx": 0.1})
+            assert r["type"] == "result", r
+
+    run(go())
+
+
+def test_the_stream_bound_and_a_killed_client_frees_its_slot(server):
+    proc, base = server
+    opn = {"type": "open", "manipulator": PAPER, "mode": "track"}
+
+    async def opened_stream():
+        """A new open stream; retried while the slots of the previous tests' streams are being released."""
+        deadline = time.monotonic() + 5
+        while True:
+            ws = await connect(base)
+            try:
+                ans = await ask(ws, opn)
+            except websockets.ConnectionClosed:
+                ans = None
+            if ans is not None and ans["type"] == "opened":
+                return ws
+            await ws.close()
+            assert time.monotonic() < deadline, ans
+            await asyncio.sleep(0.05)
+
+    async def go():
+        a = await opened_stream()
+        b = await opened_stream()
+        async with connect(base) as c:                  # a third: refused (2 streams at most)
+            e = json.loads(await asyncio.wait_for(c.recv(), 10))
+            assert (e["type"], e["seq"], e["code"]) == ("error", None, "overloaded")
+            assert (await closed(c))[0] == 1013
+        await a.send(json.dumps({"type": "step", "dx": 0.2}))
+        a.transport.abort()                             # killed mid-step: no close frame, the socket dropped
+        deadline = time.monotonic() + 5
+        while True:                                     # its slot is free again as soon as the server notices
+            async with connect(base) as d:
+                try:
+                    ans = await ask(d, opn)
+                except websockets.ConnectionClosed:
+                    ans = {"type": "error", "code": "overloaded"}     # refused before the open was read
+                if ans["type"] == "opened":
+                    assert (await ask(d, {"type": "step", "dx": 0.1}))["type"] == "result"
+                    break
+                assert ans["code"] == "overloaded" and time.monotonic() < deadline
+            await asyncio.sleep(0.05)
+        assert (await ask(b, {"type": "step", "dx": 0.1}))["type"] == "result"      # b never noticed
+        await b.close()
+
+    run(go())
+    assert proc.poll() is None
+    assert httpx.get(base + "/healthz").status_code == 200
+    metrics = httpx.get(base + "/metrics", headers={"X-API-Key": KEY}).text
+    assert "tensegrity_stream_connections" in metrics

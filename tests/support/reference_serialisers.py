@@ -1,0 +1,122 @@
+"""The service's serialisers as they were before every result got its ``to_dict()`` (issue 15),
+frozen here as the independent reference: ``tests/test_serialisation.py`` checks each ``to_dict``
+against these hand-written dicts (same keys, order, types), so the switch of ``service/compute.py``
+to ``to_dict`` cannot change an API body unnoticed. Copied verbatim from ``service/compute.py`` at
+4cab790 (the dict-building bodies of its ``*_job`` functions become functions of the result here).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+
+class NonFiniteResult(ArithmeticError):
+    pass
+
+
+def _num(x: Any) -> float:
+    v = float(x)
+    if not math.isfinite(v):
+        raise NonFiniteResult("not finite")
+    return v
+
+
+def _nums(a: Any) -> list[Any]:
+    arr = np.asarray(a, dtype=float)
+    if not bool(np.all(np.isfinite(arr))):
+        raise NonFiniteResult("not finite")
+    return arr.tolist()
+
+
+def _f(x: Any) -> float | None:
+    v = float(x)
+    return v if math.isfinite(v) else None
+
+
+def outcome(r) -> dict[str, Any]:
+    """The result contract's three fields (added to every body after this reference was frozen)."""
+    return {"success": bool(r.success), "status": str(r.status), "message": str(r.message)}
+
+
+def equilibrium_out(eq) -> dict[str, Any]:
+    return {**outcome(eq), "q": _nums(eq.q), "energy": _num(eq.energy), "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
+            "morse_index": int(eq.morse_index), "stable": bool(eq.stable), "kind": eq.kind, "shape": eq.shape,
+            "signs": eq.signs, "tip": _nums(eq.tip),
+            "solver": {"status": str(eq.solver.status),
+                       "iterations": None if eq.solver.iterations is None else int(eq.solver.iterations)}}
+
+
+def equilibria_out(eqs) -> dict[str, Any]:
+    return {"equilibria": [equilibrium_out(e) for e in eqs], "method": eqs.method, "certified": eqs.certified,
+            "paths": eqs.paths, "failed_paths": eqs.failed_paths}
+
+
+def buckling_out(bk) -> dict[str, Any]:
+    return {"boundary": bk.boundary, "critical_force": _num(bk.force), "loads": _nums(bk.loads),
+            "modes": [{"load": _num(md.load), "q": _nums(md.q), "fy": _num(md.fy),
+                       "energy_factor": _num(md.energy_factor), "mu_x": _num(md.mu_x),
+                       "fy_coefficient": _num(md.fy_coefficient), "shape": md.shape, "signs": md.signs,
+                       "stable": bool(md.stable)} for md in bk.modes]}
+
+
+def _force(v: Any) -> dict[str, float]:
+    return {"fx": _num(v[0]), "fy": _num(v[1])}
+
+
+def curve_out(c) -> dict[str, Any]:
+    points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
+               "energy": _num(c.energy[i]), "q": _nums(c.q[i]), "stable": bool(c.stable[i]),
+               "morse_index": int(c.morse_index[i]), "shape": c.shape[i], "branch": int(c.branch[i]),
+               "status": c.status[i]}
+              for i in range(c.dx.size)]
+    jumps = [{"kind": j.kind, "dx_before": _num(j.dx_before), "dx_after": _num(j.dx_after),
+              "force_before": _force(j.force_before), "force_after": _force(j.force_after),
+              "branch_before": int(j.branch_before), "branch_after": int(j.branch_after),
+              "delta": _force(np.asarray(j.force_after) - np.asarray(j.force_before)), "label": j.label}
+             for j in c.jumps]
+    branches = []
+    for bi, br in enumerate(c.branches):
+        bid = int(br.branch[0]) if br.branch.size else bi
+        pts = []
+        for i in range(br.dx.size):
+            exists = bool(np.isfinite(br.energy[i]))
+            pts.append({"dx": _num(br.dx[i]), "dy": _num(br.dy[i]), "exists": exists, "fx": _f(br.fx[i]),
+                        "fy": _f(br.fy[i]), "energy": _f(br.energy[i]),
+                        "q": [_f(v) for v in br.q[i]], "stable": bool(br.stable[i]),
+                        "morse_index": int(br.morse_index[i]), "shape": br.shape[i]})
+        branches.append({"id": bid, "points": pts})
+    end = c.ended_at
+    return {"points": points, "jumps": jumps, "branches": branches,
+            "reference": c.reference, "origin": [float(v) for v in c.origin], "complete": end is None,
+            "ended_at": None if end is None else {"dx": _num(end.dx), "dy": _num(end.dy), "reason": end.reason,
+                                                  "message": end.message},
+            "note": c.note, "requested": int(c.requested)}
+
+
+def landscape_out(land) -> dict[str, Any]:
+    E = land.energy
+    energy = [[[None if not math.isfinite(v) else v for v in row] for row in plane] for plane in E.tolist()]
+    return {"pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj), "energy": energy}
+
+
+def manipulator_out(m) -> dict[str, Any]:
+    return {"segments": [{"a": _num(sg.a), "b": _num(sg.b),
+                          "k": _num(sg.k1) if sg.k1 == sg.k2 else [_num(sg.k1), _num(sg.k2)],
+                          "L0": _num(sg.L1_0) if sg.L1_0 == sg.L2_0 else [_num(sg.L1_0), _num(sg.L2_0)]}
+                         for sg in m.segments]}
+
+
+def design_out(d) -> dict[str, Any]:
+    return {"manipulator": manipulator_out(d.manipulator), "critical_force": _num(d.critical_force),
+            "loads": _nums(d.loads), "multiplicity": int(d.multiplicity), "active": list(d.active),
+            "initial_critical_force": _f(d.initial_critical_force), "feasible": bool(d.feasible),
+            "solver": {"status": d.status, "iterations": int(d.iterations)}}
+
+
+def preload_design_out(r) -> dict[str, Any]:
+    return {"manipulator": manipulator_out(r.manipulator), "preloads": _nums(r.preloads), "q": _nums(r.q),
+            "margin": _num(r.margin), "tip": _nums(r.tip), "energy": _num(r.energy),
+            "solver": {"status": r.status, "iterations": int(r.iterations)}}
