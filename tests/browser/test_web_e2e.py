@@ -90,6 +90,8 @@ def browser(tmp_path_factory):
 def server(browser):   # the browser first: skip before starting a server
     pytest.importorskip("httpx")
     env = clean_env(TENSEGRITY_WORKERS="2", TENSEGRITY_WARMUP="false")
+    # the app factory is this module, which imports the shared helpers of tests/support
+    env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(HERE.parent / "support"), env.get("PYTHONPATH")]))
     cmd = uvicorn_factory_command("test_web_e2e:create_web_test_app", free_port(), "--app-dir", str(HERE))
     with running_server(cmd, env, ready="/readyz", timeout=30) as (_, base):
         yield base
