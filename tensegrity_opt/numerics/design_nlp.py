@@ -1,9 +1,10 @@
 """CasADi formulations of the design and control problems (the only design module touching CasADi).
 
-Two problem kinds, each built once per ``(n, boundary)`` / ``n`` and cached per thread (see
-:mod:`.chain_solver` for why per thread); every number that varies between calls (fixed
-parameters, bounds, budgets, nominal values, loads, targets, objective weights) enters
-through the parameter vector or the bounds.
+Three problem kinds, each built once per ``(n, boundary)`` / ``n`` and cached per thread
+(:mod:`.per_thread`); every number that varies between calls (fixed parameters, bounds, budgets,
+nominal values, loads, targets, objective weights) enters through the parameter vector or the
+bounds. Each problem names the blocks of its variables, rows and parameters (:class:`.layout.Layout`:
+``variables``, ``constraints``, ``parameters``): callers pack and unpack them by name.
 
 ``BucklingDesignNLP`` — variables ``a, b, k, L0`` (per segment, symmetric springs), the load
 ``P`` and a lower-triangular ``L``; constraint ``Z^T (K - P G) Z = L L^T`` with
@@ -29,8 +30,6 @@ symmetric matrix is positive semidefinite iff both are >= 0). Objective
 
 from __future__ import annotations
 
-import threading
-from collections import OrderedDict
 from dataclasses import dataclass
 
 import casadi as ca
@@ -38,11 +37,12 @@ import numpy as np
 
 from ..errors import TimeLimitError
 from ..timelimit import TIMEOUT_STATUSES, check_time, expired
-from .chain_solver import CACHE_SIZE
 from .expressions import chain_expressions
 from .ipopt import IPOPT_OPTIONS
+from .layout import Layout
+from .per_thread import per_thread
 
-__all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp", "tril_size"]
+__all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp", "tril_size", "tril_vector"]
 
 #: IPOPT iterations of one stiffness-shaping solve at most.
 STIFFNESS_MAX_ITER = 400
@@ -62,7 +62,22 @@ class NLPResult:
 
 
 def tril_size(d: int) -> int:
+    """Entries of a ``d x d`` lower-triangular matrix."""
     return d * (d + 1) // 2
+
+
+def tril_vector(L: np.ndarray) -> np.ndarray:
+    """The lower triangle of the square matrix ``L``, row by row (the order of a factor's block)."""
+    d = L.shape[0]
+    return np.array([L[i, j] for i in range(d) for j in range(i + 1)])
+
+
+def _factor_floor(d: int, diag: list[int]) -> np.ndarray:
+    """Lower bounds of a factor's block: ``0`` on its diagonal (``diag(L) >= 0``), ``-inf`` elsewhere."""
+    lo = np.full(tril_size(d), -np.inf)
+    lo[diag] = 0.0
+    lo.setflags(write=False)
+    return lo
 
 
 def _tril(v, d):
@@ -169,11 +184,19 @@ class BucklingDesignNLP:
                           2 * ca.sum1(b),                        # total length
                           k * (2 * b - L0),                      # preload tension at straight (n)
                           K)                                     # joint stiffness (n)
-        self.x = ca.vertcat(a, b, k, L0, P, lv)
+        x = ca.vertcat(a, b, k, L0, P, lv)
         self.n_psd = tril_size(d)
+        #: ``a, b, k, L0`` (n each), the load ``P``, the factor ``L`` (row by row)
+        self.variables = Layout(a=n, b=n, k=n, L0=n, P=(), L=self.n_psd)
+        #: ``psd`` (= 0), the budgets of ``a, b, k, L0``, the total ``length``, ``tension`` and joint stiffness ``K``
+        self.constraints = Layout(psd=self.n_psd, budget_a=(), budget_b=(), budget_k=(), budget_L0=(), length=(),
+                                  tension=n, K=n)
+        self.parameters = Layout(L0nom=n, w=2)
+        #: lower bounds of the factor's block (``diag(L) >= 0``)
+        self.factor_floor = _factor_floor(d, self.diag)
         self.solver, self._deadline = _nlpsol("design_buckling",
-                                              {"x": self.x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows})
-        self._rows = ca.Function("rows", [self.x], [rows])
+                                              {"x": x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows})
+        self._rows = ca.Function("rows", [x], [rows])
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
@@ -208,9 +231,16 @@ class PreloadNLP:
         L0 = ca.vertcat(L10, L20)
         f = (w[0] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom) - w[1] * mu + w[2] * E)
         rows = ca.vertcat(grad, tip, phi[n - 1], psd, L1 - L10, L2 - L20, q)
-        self.x = ca.vertcat(phi, L10, L20, mu, lv)
+        x = ca.vertcat(phi, L10, L20, mu, lv)
+        #: absolute angles ``phi``, rest lengths ``L10, L20``, margin ``mu``, the factor ``L`` (row by row)
+        self.variables = Layout(phi=n, L10=n, L20=n, mu=(), L=tril_size(n))
+        #: ``grad E - J^T F``, ``tip``, the last link's ``angle``, ``psd`` (= 0), the springs' ``stretch1``,
+        #: ``stretch2`` (``L_i - L_i0``), the joint angles ``q``
+        self.constraints = Layout(grad=n, tip=2, angle=(), psd=tril_size(n), stretch1=n, stretch2=n, q=n)
+        self.parameters = Layout(a=n, b=n, k1=n, k2=n, F=2, L0nom=2 * n, w=3)
+        self.factor_floor = _factor_floor(n, self.diag)
         self.solver, self._deadline = _nlpsol(
-            "design_preload", {"x": self.x, "p": ca.vertcat(a, b, k1, k2, F, L0nom, w), "f": f, "g": rows})
+            "design_preload", {"x": x, "p": ca.vertcat(a, b, k1, k2, F, L0nom, w), "f": f, "g": rows})
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
@@ -220,15 +250,15 @@ class StiffnessNLP:
     """Rest lengths and configuration for a stable equilibrium at a target under a tip load with a
     prescribed (or bounded) Cartesian tangent stiffness of the free tip.
 
-    Variables ``x = (phi, L10, L20, mu, L, Yhat, s)``: ``phi`` absolute angles (n), the rest lengths (2n),
+    Variables ``x = (phi, L10, L20, mu, L, Y, s)`` (:attr:`variables`): ``phi`` absolute angles (n), the rest lengths (2n),
     the margin ``mu`` and the lower-triangular ``L`` of ``H_q - mu I = L L^T`` (as :class:`PreloadNLP`),
     ``Yhat`` (2n, column by column) with ``Y = Yhat Ls / Ts`` the compliance columns ``H^-1 J^T``
     (``Ts`` the torque scale, ``Ls`` the length scale: ``Yhat`` and ``Khat = K Ls^2 / Ts`` are O(1)), and
     the slack ``s`` of the elastic mode (fixed at 0 otherwise): every stiffness bound relaxed by ``s``.
-    Parameters ``p = (a, b, k1, k2, F, L0nom, Kd (3), w (3), eig (2), scales (2))``; objective
+    Parameters ``p = (a, b, k1, k2, F, L0nom, Kd (3), w (3), eig (2), scales (2))`` (:attr:`parameters`); objective
     ``w0 |Khat - Kd|_F^2 + w1 |L0 - L0nom|^2 / |L0nom|^2 + w2 s``.
 
-    Rows ``g``: ``grad E - J^T F`` (n), ``tip`` (2), ``phi_n`` (1), the margin's factorisation
+    Rows ``g`` (:attr:`constraints`): ``grad E - J^T F`` (n), ``tip`` (2), ``phi_n`` (1), the margin's factorisation
     (``tril(n)``), ``H Yhat / Ts - J^T / Ls`` (2n), ``q`` (n), ``Khat + s`` and ``Khat - s`` (3 each:
     ``kxx, kxy, kyy``, for lower and upper bounds), ``tr, det`` of ``Khat - (lo - s) I`` and of
     ``(hi + s) I - Khat`` (4; ``lo, hi`` scaled, in ``p``).
@@ -272,15 +302,18 @@ class StiffnessNLP:
         fit = dK[0] * dK[0] + 2 * dK[1] * dK[1] + dK[2] * dK[2]          # |K - Kd|_F^2 (kxy twice)
         f = w[0] * fit + w[1] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom) + w[2] * slack
         rows = ca.vertcat(grad, tip, phi[n - 1], psd, comp, q, K + slack, K - slack, eig_rows)
-        self.x = ca.vertcat(phi, L10, L20, mu, lv, yv, slack)
-        self.row_sizes = {"grad": n, "tip": 2, "angle": 1, "psd": tril_size(n), "compliance": 2 * n, "q": n,
-                          "K_lo": 3, "K_hi": 3, "eig": 4}
+        x = ca.vertcat(phi, L10, L20, mu, lv, yv, slack)
+        self.variables = Layout(phi=n, L10=n, L20=n, mu=(), L=tril_size(n), Y=2 * n, s=())
+        self.constraints = Layout(grad=n, tip=2, angle=(), psd=tril_size(n), compliance=2 * n, q=n, K_lo=3, K_hi=3,
+                                  eig=4)
+        self.parameters = Layout(a=n, b=n, k1=n, k2=n, F=2, L0nom=2 * n, Kd=3, w=3, eig=2, scales=2)
+        self.factor_floor = _factor_floor(n, self.diag)
         p = ca.vertcat(a, b, k1, k2, F, L0nom, Kd, w, eig, sc)
         # a solve that has not converged in STIFFNESS_MAX_ITER iterations is not going to (the caller tries
         # another start or formulation instead of waiting for the design problems' 3000)
-        self.solver, self._deadline = _nlpsol("design_stiffness", {"x": self.x, "p": p, "f": f, "g": rows},
+        self.solver, self._deadline = _nlpsol("design_stiffness", {"x": x, "p": p, "f": f, "g": rows},
                                               **{"ipopt.max_iter": STIFFNESS_MAX_ITER})
-        self._rows = ca.Function("stiffness_rows", [self.x, p], [rows])
+        self._rows = ca.Function("stiffness_rows", [x, p], [rows])
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
@@ -290,31 +323,26 @@ class StiffnessNLP:
         return np.asarray(self._rows(x, p)).ravel()
 
 
-_local = threading.local()
-
-
-def _cached(key, build):
-    """Per-thread LRU cache of built problems (``CACHE_SIZE`` entries, as for the equilibrium models)."""
-    c = getattr(_local, "cache", None)
-    if c is None:
-        c = _local.cache = OrderedDict()
-    if key in c:
-        c.move_to_end(key)
-        return c[key]
-    obj = c[key] = build()
+def _deadline_after_build(problem) -> None:
     check_time("building the design problem")     # the build (nlpsol) itself cannot be cut
-    while len(c) > CACHE_SIZE:
-        c.popitem(last=False)
-    return obj
+
+
+@per_thread(built=_deadline_after_build)
+def _problem(kind: type, *args):
+    """This thread's problem of ``kind`` for ``args`` (:mod:`.per_thread`)."""
+    return kind(*args)
 
 
 def buckling_design_nlp(n: int, guided: bool) -> BucklingDesignNLP:
-    return _cached(("buckling", n, guided), lambda: BucklingDesignNLP(n, guided))
+    """This thread's :class:`BucklingDesignNLP` for ``n`` segments (``guided``: the guided tip)."""
+    return _problem(BucklingDesignNLP, n, bool(guided))
 
 
 def preload_nlp(n: int) -> PreloadNLP:
-    return _cached(("preload", n), lambda: PreloadNLP(n))
+    """This thread's :class:`PreloadNLP` for ``n`` segments."""
+    return _problem(PreloadNLP, n)
 
 
 def stiffness_nlp(n: int) -> StiffnessNLP:
-    return _cached(("stiffness", n), lambda: StiffnessNLP(n))
+    """This thread's :class:`StiffnessNLP` for ``n`` segments."""
+    return _problem(StiffnessNLP, n)
