@@ -26,7 +26,7 @@ kernels), :mod:`.build` (generated C: compiled once, the virtual machine otherwi
 """
 
 from .chain_solver import DENSE_MAX, ChainFunctions, ChainSolver, chain_functions, chain_solver
-from .distinct import SAME_Q, distinct, distinct_rows, same
+from .distinct import SAME_Q, distinct, distinct_indices, distinct_rows, same
 from .ipopt import RANGE_SHRINK
 from .kernels import KERNEL_MAX
 from .layout import Layout
@@ -34,6 +34,7 @@ from .results import Continuation, LocalResult, SeedResults
 
 __all__ = ["ChainSolver", "ChainFunctions", "chain_solver", "chain_functions", "LocalResult", "SeedResults",
            "Continuation", "DENSE_MAX", "KERNEL_MAX", "RANGE_SHRINK", "SAME_Q", "same", "distinct", "distinct_rows",
+           "distinct_indices",
            "Layout", "NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp"]
 
 

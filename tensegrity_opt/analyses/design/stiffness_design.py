@@ -393,6 +393,14 @@ class _Shaper:
         return {"q": q.tolist(), "rest_lengths": np.column_stack([L10, L20]).tolist(), "K": K.tolist(),
                 "violations": [v for v, _ in _violations(K, self.kb, self.eb, self.Ks)]}
 
+    def slack_needed(self, x) -> float:
+        """The relaxation (scaled) that makes ``x``'s stiffness meet every bound."""
+        K = self.K_of(x) / self.Ks
+        kv = np.array([K[0, 0], K[0, 1], K[1, 1]])
+        w = np.linalg.eigvalsh(K)
+        need = [0.0, *(self.kb_lo - kv), *(kv - self.kb_hi), self.elo - w[0], w[1] - self.ehi]
+        return max(v for v in need if math.isfinite(v))
+
     # ------------------------------------------------------------------ solves
     def solve(self, x, *, elastic=False, exact=False, w=None):
         k_lo, k_hi = self.kb_lo, self.kb_hi
