@@ -25,7 +25,7 @@ Kernels (``n <= KERNEL_MAX`` segments)
     ``BATCH`` targets in order, each solved by ``CONT_ITER`` iterations from the previous
     target's solution (``mapaccum``), with the same per-point outputs.
 
-The damped step is the one of :meth:`.chain_solver.BoundSolver.newton_kkt` (:mod:`.newton`): the Newton
+The damped step is the one of :meth:`.chain_solver.ChainSolver.newton_kkt` (:mod:`.newton`): the Newton
 direction, its angle part capped at ``MAX_STEP`` rad, then the first of ``TRIALS`` halved
 step lengths that decreases the residual norm (Armijo); when none does the iterate stays.
 As there, an iterate whose residual norm is at most the threshold is final: the remaining

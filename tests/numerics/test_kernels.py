@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt.numerics import SAME_Q, build, chain_solver, distinct_rows, kernels
+from tensegrity_opt.numerics import SAME_Q, build, chain_solver, kernels
 from tensegrity_opt.analyses.equilibria.seeds import seed_starts, seeds
 from tensegrity_opt.analyses.equilibria.stability import inertia_of_reduced, reduced_hessian
 

@@ -22,7 +22,7 @@ Within ~1e-9 of the torque scale of a pitchfork (``K ~ 0``) the critical points 
 double precision and come out ``"degenerate"``.
 
 ``F != 0`` couples the joints. ``method="search"`` runs damped Newton on the force equations
-(:meth:`~tensegrity_opt.numerics.BoundSolver.newton_force`) from many starts and is complete in
+(:meth:`~tensegrity_opt.numerics.ChainSolver.newton_force`) from many starts and is complete in
 practice, not certified; ``method="homotopy"`` (``n <= 6``, PHCpack) finds every isolated complex
 root of the polynomial force system (:func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy`)
 and is certified when every path ended and every real root inside the range polished.
