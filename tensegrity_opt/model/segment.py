@@ -209,7 +209,8 @@ class Segment:
         D = k1 * L10 * aj - k2 * L20 * aj
         Es = k1 * L10 * bj + k2 * L20 * bj
         return {2: complex(A / 4 - B / 4 - 1j * C / 4), 0: complex(A / 2 + B / 2),
-                -2: complex(A / 4 - B / 4 + 1j * C / 4), 1: complex(D / 2 - 1j * Es / 2), -1: complex(D / 2 + 1j * Es / 2)}
+                -2: complex(A / 4 - B / 4 + 1j * C / 4), 1: complex(D / 2 - 1j * Es / 2),
+                -1: complex(D / 2 + 1j * Es / 2)}
 
     def critical_points(self) -> np.ndarray:
         """Every angle inside the open range where the unloaded torque vanishes (``E'(q) = 0``), ascending

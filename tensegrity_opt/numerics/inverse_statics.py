@@ -16,9 +16,10 @@ iterate, its residual, the iterations that moved, the Hessian of ``E - F . tip``
 stability of the free arm: positive definite) and the KKT matrix (a strict local minimum of the
 least-change problem has ``3 n`` positive and ``rows`` negative eigenvalues: Newton can also converge to
 a saddle of it). Built once per ``(n, angle)`` and thread (:mod:`.per_thread`); generated to C and compiled
-like the other kernels for ``n <= KERNEL_MAX`` (:func:`.build.load`), CasADi's virtual machine otherwise. Bounds, rate limits and the
-stability margin are the caller's (:mod:`tensegrity_opt.analyses.design.preload_control`): it checks them on
-the result and falls back to IPOPT where one is active.
+like the other kernels for ``n <= KERNEL_MAX`` (:func:`.build.load`), CasADi's virtual machine otherwise.
+Bounds, rate limits and the stability margin are the caller's
+(:mod:`tensegrity_opt.analyses.design.preload_control`): it checks them on the result and falls back to IPOPT
+where one is active.
 """
 
 from __future__ import annotations

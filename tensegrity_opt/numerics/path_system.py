@@ -87,12 +87,14 @@ def _step(n: int, path: ca.Function) -> ca.Function:
     ``x_a + h tau / w``, then ``STEP_ITER`` Newton iterations on ``[R(x); (w tau) . x - b] = 0``
     (``b = tau . (w x_a) + h``), each kept once the scaled residual ``max |rs R|`` and the arclength
     condition are below ``tol`` (the iterate then stays); at the last iterate its residual, the number of
-    iterations that moved (the caller checks the arclength condition), the tangent there (``[R_x / w; tau] v = e``, normalised) and the path outputs.
+    iterations that moved (the caller checks the arclength condition), the tangent there
+    (``[R_x / w; tau] v = e``, normalised) and the path outputs.
     The caller checks ``res`` and falls back to the Python corrector."""
     N = n + 2
     xa, tau, w = ca.SX.sym("xa", N + 1), ca.SX.sym("tau", N + 1), ca.SX.sym("w", N + 1)
     h, tol, rs = ca.SX.sym("h"), ca.SX.sym("tol"), ca.SX.sym("rs", N)
-    p, dp, dp2, ctl = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n), ca.SX.sym("ctl", CONTROL_SIZE)
+    p, dp, dp2 = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n)
+    ctl = ca.SX.sym("ctl", CONTROL_SIZE)
     aw = tau * w
     b = ca.dot(tau, w * xa) + h
     x = xa + h * tau / w

@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from tensegrity_opt import InvalidParameterError, Manipulator, Segment, UnreachableTargetError
 
@@ -163,22 +164,15 @@ def test_roundtrip_dict():
 # ----------------------------------------------------------------------------- unloaded critical angles
 def _critical_by_grid(seg, num=400001):
     """Wells and hilltops of the unloaded segment by an independent route: the torque on a fine grid (shifted
-    off q = 0), each sign change bisected to the last bit; + to - is a well (M = -E')."""
+    off q = 0), each sign change refined by scipy's brentq to the last bits; + to - is a well (M = -E')."""
     lim = seg.joint_limit
     qs = np.linspace(-lim, lim, num)[1:-1] + 0.37 * (2 * lim / (num - 1))
     qs = qs[np.abs(qs) < lim]
     M = seg.torque(qs)
     wells, tops = [], []
     for i in np.flatnonzero(np.sign(M[:-1]) != np.sign(M[1:])):
-        lo, hi, flo = float(qs[i]), float(qs[i + 1]), float(M[i])
-        while hi - lo > 1e-15 * max(1.0, abs(lo)):
-            mid = 0.5 * (lo + hi)
-            fm = float(seg.torque(mid))
-            if (fm > 0) == (flo > 0):
-                lo, flo = mid, fm
-            else:
-                hi = mid
-        (wells if M[i] > 0 else tops).append(0.5 * (lo + hi))
+        root = brentq(lambda q: float(seg.torque(q)), float(qs[i]), float(qs[i + 1]), xtol=1e-15, rtol=1e-15)
+        (wells if M[i] > 0 else tops).append(root)
     return np.array(wells), np.array(tops)
 
 
