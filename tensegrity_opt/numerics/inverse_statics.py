@@ -33,6 +33,7 @@ from ._fast import Fast
 from .build import VIRTUAL_MACHINE, load
 from .expressions import segment_energy, tip_expression
 from .kernels import KERNEL_MAX
+from .layout import Layout
 from .per_thread import per_thread
 
 __all__ = ["InverseStatics", "inverse_statics", "ITER"]
@@ -83,6 +84,8 @@ class InverseStatics:
     def __init__(self, n: int, angle: bool) -> None:
         self.n, self.angle = n, angle
         self.rows = n + 2 + (1 if angle else 0)
+        #: the unknowns ``y``: joint angles ``q``, rest lengths ``ell`` (segment by segment), multipliers ``mu``
+        self.unknowns = Layout(q=n, ell=2 * n, mu=self.rows)
         f, self.mode = _function(n, angle)
         self._f = Fast(f)
 

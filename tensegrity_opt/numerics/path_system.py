@@ -41,6 +41,7 @@ from ._fast import Fast
 from .build import VIRTUAL_MACHINE, load
 from .expressions import segment_energy, tip_expression
 from .kernels import KERNEL_MAX
+from .layout import Layout
 from .per_thread import per_thread
 
 __all__ = ["PathSystem", "path_system", "CONTROL_SIZE"]
@@ -133,6 +134,8 @@ class PathSystem:
 
     def __init__(self, n: int) -> None:
         self.n = n
+        #: the point ``x = (q, F, t, s)`` of the functions (the control parameter ``t``, the second one ``s``)
+        self.point = Layout(q=n, F=2, t=(), s=())
         path, second, step, self.mode = _functions(n)
         self._path = Fast(path)
         self._second = Fast(second)
