@@ -216,6 +216,9 @@ class ChainSolver:
     functions : ChainFunctions
     m : Manipulator
         The chain (``m.n == functions.n``).
+    params : ndarray, optional
+        The chain's parameters already in the units the Newton methods work in (:func:`.units.rescaled`; the
+        solver then solves in them as they are); default ``m.params``, rescaled where needed.
     """
 
     __slots__ = ("functions", "manipulator", "params", "limits", "_scaled", "_scale")
@@ -469,18 +472,19 @@ class ChainSolver:
                 Z[s:s + k], R[s:s + k] = Zc[:k], Rc[:k]
                 z = Zc[k - 1]
             return Continuation(Z, R, torque_scale=torque_scale(params, n))
-        fast, B, m = kern.continuation, _kernels.BATCH, n - 2
-        Y = np.empty((N, 5 + m * m))
+        fast, B, m, layout = kern.continuation, _kernels.BATCH, n - 2, _kernels.point_layout(n)
+        Y = np.empty((N, layout.size))
         for s in range(0, N, B):
             chunk = targets[s:s + B]
             k = chunk.shape[0]
             pad = np.vstack([chunk, np.repeat(chunk[-1:], B - k, axis=0)]) if k < B else chunk
             out = fast(z, pad.ravel(), params, 1e-12 * self.scale)
             Z[s:s + k] = out[0].reshape(B, n + 2)[:k]
-            Y[s:s + k] = out[1].reshape(B, 5 + m * m)[:k]
+            Y[s:s + k] = out[1].reshape(B, layout.size)[:k]
             z = Z[s + k - 1]
-        return Continuation(Z, Y[:, 0], Y[:, 2], Y[:, 3:5], Y[:, 5:].reshape(N, m, m).transpose(0, 2, 1),
-                            torque_scale(params, n), iterations=np.rint(Y[:, 1]).astype(int))
+        y = layout.unpack(Y)
+        return Continuation(Z, y["norm"], y["E"], y["tip"], y["R"].reshape(N, m, m).transpose(0, 2, 1),
+                            torque_scale(params, n), iterations=np.rint(y["iters"]).astype(int))
 
     def batch_derivs(self, Q: np.ndarray, Fs: np.ndarray):
         """Energy (N,), Lagrangian Hessian (N, n, n), tip Jacobian (N, 2, n), tip (N, 2) in phi, at the

@@ -56,7 +56,7 @@ from .expressions import kkt_graph
 from .layout import Layout
 
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "BATCH", "Kernels", "build", "cache_dir",
-           "compiler", "seed_columns", "seed_layout", "distinct_function", "status"]
+           "compiler", "seed_columns", "seed_layout", "point_layout", "distinct_function", "status"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3 and is
 #: no faster than LAPACK driven from Python; benchmarks/RESULTS.md, "Measurement notes").
@@ -84,6 +84,14 @@ def seed_layout(n: int) -> Layout:
     on or beyond the physical range), ``distinct`` (1 when the start converged inside the range to a point
     that is not the same (:mod:`.distinct`, tolerance ``same``) as any earlier such start's kept one)."""
     return Layout(q=n, F=2, norm=(), iters=(), E=(), tip=2, R=(n - 2) ** 2, margin=(), distinct=())
+
+
+@functools.lru_cache(maxsize=None)
+def point_layout(n: int) -> Layout:
+    """The outputs at each target of the ``continuation`` kernel (its ``Y``, one column per target): the
+    residual ``norm``, the ``iters`` that moved, the energy ``E``, the ``tip`` (2) and ``R`` ((n-2)^2,
+    column-major)."""
+    return Layout(norm=(), iters=(), E=(), tip=2, R=(n - 2) ** 2)
 
 
 def seed_columns(n: int) -> int:
