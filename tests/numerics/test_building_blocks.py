@@ -117,6 +117,7 @@ def test_every_compiled_part_falls_back_with_one_warning_per_process(tmp_path):
     assert got["libraries"] == ["tensegrity_inverse_n3a", "tensegrity_kernels_n3", "tensegrity_paths_n3"]
 
 
+@pytest.mark.slow                                       # three libraries compiled from scratch (~20 s)
 @pytest.mark.skipif(build.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
 def test_every_compiled_part_is_compiled_once_into_the_cache(tmp_path):
     got = _child(tmp_path, TENSEGRITY_COMPILE="1")
