@@ -26,9 +26,6 @@ from .segment import Segment
 
 __all__ = ["Manipulator"]
 
-#: Order of the per-segment parameters in :meth:`Manipulator.params`.
-PARAM_NAMES = ("a", "b", "k1", "k2", "L1_0", "L2_0")
-
 
 @dataclass(frozen=True)
 class Manipulator:

@@ -1,24 +1,37 @@
 """One dual-triangle tensegrity segment: geometry, springs, torque and stiffness.
 
-Conventions (``shared/spec/conventions.md``): ``c = hypot(a, b)``,
+Conventions (``docs/model.md``): ``c = hypot(a, b)``,
 ``beta = atan2(a, b)``, spring lengths ``L1 = 2c cos(beta + q/2)`` and
 ``L2 = 2c cos(beta - q/2)``, energy ``E = k1/2 (L1 - L1_0)^2 + k2/2 (L2 - L2_0)^2``,
 spring torque ``M(q) = -dE/dq`` (eq. 1-2), joint stiffness ``K = E''(0)``.
 Angles are in radians, lengths in the caller's length unit, stiffnesses in
 force per length; torques are then force x length.
+
+The unloaded segment's critical angles (the zeros of its torque inside the range: wells, hilltops) are
+found here once (:meth:`Segment.critical_points`, :meth:`Segment.critical_angles`), for every analysis
+that needs them.
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from functools import cached_property
 from typing import Any
 
 import numpy as np
 
 from ..errors import InvalidParameterError
 
-__all__ = ["Segment"]
+__all__ = ["Segment", "clean_coefficients", "CLEAN_TOL", "MERGE_TOL"]
+
+#: Polynomial coefficients smaller than this relative to the largest one are zero (:func:`clean_coefficients`).
+CLEAN_TOL = 1e-14
+#: Critical angles of one segment closer than this (rad) are one: below it two zeros of the torque are not
+#: resolved in double precision (near a pitchfork, ``K ~ 0``, the zeros spread as ``sqrt(-K)``).
+MERGE_TOL = 1e-7
+#: Grid points over the range on which the torque's sign changes are looked for (then bisected).
+CRITICAL_GRID = 801
 
 
 def _positive(value: Any, field: str) -> float:
@@ -179,3 +192,151 @@ class Segment:
         lim = self.joint_limit
         qs = np.linspace(-lim, lim, num)[1:-1]
         return bool(np.all(self.dtorque(qs) < 0.0))
+
+    # ------------------------------------------------------------------ unloaded critical angles
+    def torque_polynomial(self) -> dict[int, complex]:
+        """``E'(q) = -M(q)`` as a Laurent polynomial in ``z = exp(i q/2)``: ``{power: coefficient}``, powers -2..2.
+
+        ``c = cos(q/2) = (z + 1/z)/2``, ``s = sin(q/2) = -i (z - 1/z)/2``;
+        ``E' = -k1 (L1 - L10)(b s + a c) + k2 (L2 - L20)(a c - b s)`` with ``L1 = 2 b c - 2 a s``,
+        ``L2 = 2 b c + 2 a s``, i.e. ``E' = A c^2 + B s^2 + C c s + D c + Es s``, and
+        ``c^2 = (z^2 + 2 + z^-2)/4``, ``s^2 = -(z^2 - 2 + z^-2)/4``, ``c s = -i (z^2 - z^-2)/4``.
+        """
+        aj, bj, k1, k2, L10, L20 = self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0
+        A = -2.0 * aj * bj * k1 + 2.0 * aj * bj * k2
+        B = 2.0 * aj * bj * k1 - 2.0 * aj * bj * k2
+        C = (2.0 * aj * aj - 2.0 * bj * bj) * (k1 + k2)
+        D = k1 * L10 * aj - k2 * L20 * aj
+        Es = k1 * L10 * bj + k2 * L20 * bj
+        return {2: complex(A / 4 - B / 4 - 1j * C / 4), 0: complex(A / 2 + B / 2),
+                -2: complex(A / 4 - B / 4 + 1j * C / 4), 1: complex(D / 2 - 1j * Es / 2),
+                -1: complex(D / 2 + 1j * Es / 2)}
+
+    def critical_points(self) -> np.ndarray:
+        """Every angle inside the open range where the unloaded torque vanishes (``E'(q) = 0``), ascending
+        (read only; computed once per segment).
+
+        Two routes, united: the roots of the torque's quartic ``z^2 E'(z) = 0`` on the unit circle (companion
+        matrix eigenvalues: every root, also a close pair no grid separates, but ill-conditioned near a
+        multiple root) and the sign changes of the torque on a grid of ``CRITICAL_GRID`` points refined by
+        bisection (accurate to the last bit for simple roots). Each is polished by up to three Newton steps on
+        the torque (kept when they lower ``|M|`` and move it by less than ``1e-6`` rad), then points closer than
+        ``MERGE_TOL`` are merged (the one with the least ``|M|`` kept). A symmetric segment's set is made exactly
+        symmetric (``0`` and ``+-w``): the mirror images of a mirror-symmetric chain come out exact.
+        """
+        return self._critical[0]
+
+    def critical_angles(self) -> tuple[np.ndarray, np.ndarray]:
+        """The unloaded segment's wells (minima of ``E(q)``) and hilltops (maxima) inside its range, ascending.
+
+        A monotonic segment has one well (``q = 0`` when symmetric, its rest angle when pre-bent) and no
+        hilltop; a bistable one (``K < 0``) two wells around a hilltop. The points of :meth:`critical_points`
+        classified by the sign of ``E''`` (beyond ``1e-9`` of the torque scale ``max(k1, k2) c^2``), a degenerate
+        one (``E'' ~ 0``, a pitchfork) by the torque's sign on either side; an inflection is neither.
+        """
+        return self._critical[1], self._critical[2]
+
+    @cached_property
+    def _critical(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        lim = self.joint_limit
+        cand = np.concatenate([self._quartic_roots(), *self._sign_changes()]).astype(float)
+        pts: list[tuple[float, float]] = []          # (q, |M(q)|)
+        for q0 in cand.tolist():
+            x, r = q0, abs(float(self.torque(q0)))
+            for _ in range(3):
+                d = float(self.dtorque(x))
+                if d == 0.0:
+                    break
+                y = x - float(self.torque(x)) / d
+                ry = abs(float(self.torque(y))) if abs(y) < lim else math.inf
+                if not ry < r or abs(y - q0) >= 1e-6:
+                    break
+                x, r = y, ry
+            pts.append((x, r))
+        pts.sort()
+        merged: list[tuple[float, float]] = []
+        for x, r in pts:
+            if merged and x - merged[-1][0] < MERGE_TOL:
+                if r < merged[-1][1]:
+                    merged[-1] = (x, r)
+            else:
+                merged.append((x, r))
+        q = np.array([x for x, _ in merged if abs(x) < lim], dtype=float)
+        if self.symmetric:                           # M(0) = 0 exactly; the roots pair as +-w
+            keep: list[float] = []
+            for v in sorted(x for x in np.abs(q).tolist() if x >= MERGE_TOL):
+                if not keep or v - keep[-1] >= MERGE_TOL:
+                    keep.append(v)
+            q = np.concatenate([-np.array(keep[::-1]), [0.0], np.array(keep)])
+        q = np.sort(q)
+        kind = self._kinds(q)
+        out = (q, q[kind > 0], q[kind < 0])
+        for a in out:
+            a.setflags(write=False)
+        return out
+
+    def _kinds(self, q: np.ndarray) -> np.ndarray:
+        """``+1`` minimum, ``-1`` maximum, ``0`` inflection at the critical angles ``q`` (ascending)."""
+        d2 = -np.asarray(self.dtorque(q), dtype=float).reshape(-1)
+        tol = 1e-9 * max(self.k1, self.k2) * self.c ** 2
+        kind = np.where(d2 > tol, 1, np.where(d2 < -tol, -1, 0))
+        lim = self.joint_limit
+        for i in np.flatnonzero(kind == 0).tolist():  # degenerate: the torque's sign on either side
+            lo = q[i - 1] if i > 0 else -lim
+            hi = q[i + 1] if i + 1 < q.size else lim
+            h = min(1e-3 * lim, 0.5 * (q[i] - lo), 0.5 * (hi - q[i]))
+            left, right = float(self.torque(q[i] - h)), float(self.torque(q[i] + h))
+            kind[i] = 1 if left > 0 > right else (-1 if left < 0 < right else 0)   # M = -E'
+        return kind
+
+    def _quartic_roots(self) -> np.ndarray:
+        """The angles inside the range of the roots on the unit circle of ``z^2 E'(z) = 0`` (rounded to 13
+        decimals, distinct)."""
+        c = clean_coefficients(self.torque_polynomial())
+        roots = np.roots([c.get(p, 0.0) for p in (2, 1, 0, -1, -2)])      # leading zeros are dropped by np.roots
+        roots = roots[np.abs(np.abs(roots) - 1.0) < 1e-8]
+        q = 2.0 * np.angle(roots)
+        return np.unique(np.round(q[np.abs(q) < self.joint_limit], 13))
+
+    def _sign_changes(self) -> tuple[list[float], list[float]]:
+        """The torque's sign changes on the grid, refined by bisection: ``(+ to -, - to +)`` (wells, hilltops)."""
+        lim = self.joint_limit
+        qs = np.linspace(-lim, lim, CRITICAL_GRID)[1:-1]
+        qs = qs + 0.5 * (qs[1] - qs[0]) * (np.abs(qs) < 1e-12)   # no grid point exactly on q = 0 (M(0) = 0 there)
+        M = self.torque(qs)
+        wells, tops = [], []
+        for i in np.flatnonzero((M[:-1] > 0) != (M[1:] > 0)).tolist():
+            lo, hi = float(qs[i]), float(qs[i + 1])
+            flo = float(M[i])
+            for _ in range(60):
+                mid = 0.5 * (lo + hi)
+                fm = float(self.torque(mid))
+                if (fm > 0) == (flo > 0):
+                    lo, flo = mid, fm
+                else:
+                    hi = mid
+            (wells if M[i] > 0 else tops).append(0.5 * (lo + hi))    # M = -E': + -> - is a minimum of E
+        return _merged(wells), _merged(tops)
+
+
+def _merged(roots: list[float], tol: float = 1e-9) -> list[float]:
+    """The roots with near-duplicates (closer than ``tol``) merged."""
+    out: list[float] = []
+    for r in sorted(roots):
+        if not out or r - out[-1] > tol:
+            out.append(r)
+    return out
+
+
+def clean_coefficients(poly: dict, tol: float = CLEAN_TOL) -> dict:
+    """A polynomial's coefficients (``{exponent: complex}``) with the real and imaginary parts smaller than
+    ``tol`` times the largest coefficient set to zero (and the terms left zero dropped): coefficients that
+    vanish analytically come out of floating point as roundoff."""
+    scale = max(abs(c) for c in poly.values())
+    out = {}
+    for e, c in poly.items():
+        re_ = c.real if abs(c.real) > tol * scale else 0.0
+        im_ = c.imag if abs(c.imag) > tol * scale else 0.0
+        if re_ or im_:
+            out[e] = complex(re_, im_)
+    return out

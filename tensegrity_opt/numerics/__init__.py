@@ -3,32 +3,39 @@
 
 The analyses (:mod:`tensegrity_opt.analyses`) talk to it through three doors, never to CasADi itself:
 
-* :func:`chain_solver` ``(m)`` -> :class:`BoundSolver`: this thread's :class:`ChainSolver` for ``m.n``
-  segments bound to the manipulator — local Newton solves (:meth:`~BoundSolver.newton_kkt`,
-  :meth:`~BoundSolver.newton_kkt_seeds`, :meth:`~BoundSolver.newton_force`), IPOPT
-  (:meth:`~BoundSolver.minimize_displacement`, :meth:`~BoundSolver.minimize_force`), compiled
-  continuation (:meth:`~BoundSolver.batch_continue`, :meth:`~BoundSolver.batch_derivs`) and derivatives
-  (:meth:`~BoundSolver.evaluate`, :meth:`~BoundSolver.tangent_stiffness`,
-  :meth:`~BoundSolver.kkt_parameter_jacobian`); results are numpy only (:class:`LocalResult`,
-  :class:`SeedResults`, :class:`Continuation`);
+* :func:`chain_solver` ``(m)`` -> this thread's :class:`ChainSolver` for the manipulator — local Newton
+  solves (:meth:`~ChainSolver.newton_kkt`, :meth:`~ChainSolver.newton_kkt_seeds`,
+  :meth:`~ChainSolver.newton_force`), IPOPT (:meth:`~ChainSolver.minimize_displacement`,
+  :meth:`~ChainSolver.minimize_force`), compiled continuation (:meth:`~ChainSolver.batch_continue`,
+  :meth:`~ChainSolver.batch_derivs`) and derivatives (:meth:`~ChainSolver.evaluate`,
+  :meth:`~ChainSolver.tangent_stiffness`, :meth:`~ChainSolver.kkt_parameter_jacobian`); results are numpy
+  only (:class:`LocalResult`, :class:`SeedResults`, :class:`Continuation`);
 * the design NLP builders :func:`buckling_design_nlp`, :func:`preload_nlp` and :func:`stiffness_nlp`
-  (:mod:`.design_nlp`);
-* the polynomial homotopy (:mod:`.homotopy`, PHCpack; no CasADi).
+  (:mod:`.design_nlp`), each NLP with named layouts of its variables, rows and parameters (:class:`Layout`);
+* when two configurations are the same equilibrium (:mod:`.distinct`: :data:`SAME_Q`, :func:`same`,
+  :func:`distinct`, :func:`distinct_rows`);
+* the polynomial homotopy (:mod:`.homotopy`, PHCpack; no CasADi), with the polish of its roots
+  (:func:`.homotopy.polish_roots`).
 
 Inside: :mod:`.expressions` (the one symbolic model), :mod:`.chain_solver` (the solver per chain length),
 :mod:`.newton` (the damped Newton loop and BLAS control), :mod:`.ipopt` (the equilibrium NLPs),
 :mod:`.units` (rescaled units), :mod:`.results` (result types), :mod:`.kernels` (compiled C Newton
-kernels), :mod:`._fast` (buffered CasADi calls).
+kernels), :mod:`.build` (generated C: compiled once, the virtual machine otherwise), :mod:`.per_thread`
+(the per-thread cache of built CasADi objects), :mod:`.layout` (named blocks of flat vectors),
+:mod:`._fast` (buffered CasADi calls).
 """
 
-from .chain_solver import DENSE_MAX, BoundSolver, ChainSolver, chain_solver
+from .chain_solver import DENSE_MAX, ChainFunctions, ChainSolver, chain_functions, chain_solver
+from .distinct import SAME_Q, distinct, distinct_indices, distinct_rows, same
 from .ipopt import RANGE_SHRINK
 from .kernels import KERNEL_MAX
+from .layout import Layout
 from .results import Continuation, LocalResult, SeedResults
 
-__all__ = ["ChainSolver", "BoundSolver", "chain_solver", "LocalResult", "SeedResults", "Continuation",
-           "DENSE_MAX", "KERNEL_MAX", "RANGE_SHRINK", "NLPResult", "buckling_design_nlp", "preload_nlp",
-           "stiffness_nlp"]
+__all__ = ["ChainSolver", "ChainFunctions", "chain_solver", "chain_functions", "LocalResult", "SeedResults",
+           "Continuation", "DENSE_MAX", "KERNEL_MAX", "RANGE_SHRINK", "SAME_Q", "same", "distinct", "distinct_rows",
+           "distinct_indices",
+           "Layout", "NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp"]
 
 
 def __getattr__(name: str):

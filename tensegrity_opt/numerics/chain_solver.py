@@ -10,33 +10,33 @@ the derivatives for stiffness and sensitivities.
 
 Use
 ---
-``chain_solver(m)`` returns a :class:`BoundSolver`: this thread's :class:`ChainSolver` for ``m.n``
-bound to the manipulator ``m``, whose methods take targets, forces and configurations only::
+``chain_solver(m)`` returns this thread's :class:`ChainSolver` for the manipulator ``m``, whose methods
+take targets, forces and configurations only::
 
     s = chain_solver(m)
     res = s.newton_kkt(m.target(dx, dy), q0)         # a LocalResult
 
-A :class:`ChainSolver` is built once per chain length ``n`` with all numbers (geometry, stiffness,
-preloads, loads) passed as parameters, then cached. Its *kind* says how the chain is represented:
-``"dense"`` (``n <= DENSE_MAX``: one SX graph, dense KKT matrices, LAPACK; the compiled kernels for
-``2 <= n <= KERNEL_MAX`` on top) or ``"banded"`` (longer chains: MX whole-vector graphs, tridiagonal
-Hessians, O(n) solves). ``n`` alone chooses the kind, so the cache is keyed by ``n``; another kind
-for the same ``n`` is built on request (``ChainSolver(n, kind)``, uncached: for comparing the two).
+The CasADi side, :class:`ChainFunctions`, is built once per chain length ``n`` with all numbers
+(geometry, stiffness, preloads, loads) as parameters, and cached per thread (:mod:`.per_thread`); a
+:class:`ChainSolver` is those functions with one chain's parameter vector, cheap to make. The functions'
+*kind* says how the chain is represented: ``"dense"`` (``n <= DENSE_MAX``: one SX graph, dense KKT
+matrices, LAPACK; the compiled kernels for ``2 <= n <= KERNEL_MAX`` on top) or ``"banded"`` (longer
+chains: MX whole-vector graphs, tridiagonal Hessians, O(n) solves). ``n`` alone chooses the kind, so the
+cache is keyed by ``n``; another kind for the same ``n`` is built on request (``ChainFunctions(n, kind)``,
+uncached: for comparing the two).
 
 Thread safety
 -------------
 A CasADi ``Function``/``nlpsol`` instance must never be called by two threads at once (it evaluates
-in one shared memory slot). The cache here is *per thread* (``threading.local``): each thread builds
-and owns its solvers, so every public function of the library may be called from several threads at
-once. Parts needed only by some calls (IPOPT, sensitivities, kernels) are built on first use
-(:class:`_built`); no lock is needed since an instance never leaves its thread.
+in one shared memory slot). The functions are cached *per thread*: each thread builds and owns its
+own, so every public function of the library may be called from several threads at once. Parts needed
+only by some calls (IPOPT, sensitivities, kernels) are built on first use (:class:`_built`); no lock is
+needed since an instance never leaves its thread.
 """
 
 from __future__ import annotations
 
 import math
-import threading
-from collections import OrderedDict
 from functools import lru_cache
 from typing import NamedTuple
 
@@ -49,6 +49,7 @@ from . import kernels as _kernels
 from ._fast import Fast
 from .expressions import banded_functions, kkt_graph
 from .newton import damped_newton, one_blas_thread
+from .per_thread import per_thread
 from .results import Continuation, LocalResult, SeedResults, seed_results, set_row
 from .units import (
     rescaled,
@@ -58,7 +59,7 @@ from .units import (
     unscale_seeds,
 )
 
-__all__ = ["ChainSolver", "BoundSolver", "chain_solver", "DENSE_MAX", "BATCH", "SAMPLE_ROUNDS", "CACHE_SIZE"]
+__all__ = ["ChainSolver", "ChainFunctions", "chain_solver", "chain_functions", "DENSE_MAX", "BATCH", "SAMPLE_ROUNDS"]
 
 #: Chains up to this many segments use dense linear algebra; longer ones sparse (O(n)) paths.
 DENSE_MAX = 64
@@ -67,9 +68,6 @@ BATCH = 128
 #: Further batched calls of the seeds kernel for the starts of a large sample not converged in the
 #: first (``newton_kkt_seeds(python_fallback=False)``); each call is ``kernels.SEED_ITER`` iterations.
 SAMPLE_ROUNDS = 5
-#: Solvers kept per thread (least recently used evicted): each costs ~1-2 MB for short chains.
-CACHE_SIZE = 16
-
 KINDS = ("dense", "banded")
 
 
@@ -105,18 +103,15 @@ class _KernelSet(NamedTuple):
     continuation: Fast
 
 
-class ChainSolver:
-    """All CasADi functions and solvers for chains of ``n`` segments of one ``kind`` (one thread).
+class ChainFunctions:
+    """Every CasADi function and solver for chains of ``n`` segments of one ``kind`` (one thread's).
 
-    Obtain it through :func:`chain_solver` (which binds it to a manipulator) or
-    :meth:`ChainSolver.cached`; its methods with a leading underscore take the parameter vector
-    ``m.params`` and the joint limits, and are the implementation of :class:`BoundSolver`'s.
-
-    ``"dense"`` (default for ``n <= DENSE_MAX``): one SX graph in absolute angles gives the KKT
-    residual and its dense Jacobian, the Hessian and the IPOPT problems. ``"banded"`` (longer chains):
-    the functions used by Newton and the classification are the MX graphs of
-    :func:`.expressions.banded_functions`, returning the tridiagonal Hessian as two diagonals; the SX
-    graph (IPOPT fallback, parameter sensitivities) is built only when first needed.
+    Obtain it through :func:`chain_functions` (this thread's, cached); a :class:`ChainSolver` evaluates it
+    for one chain's parameters. ``"dense"`` (default for ``n <= DENSE_MAX``): one SX graph in absolute
+    angles gives the KKT residual and its dense Jacobian, the Hessian and the IPOPT problems. ``"banded"``
+    (longer chains): the functions used by Newton and the classification are the MX graphs of
+    :func:`.expressions.banded_functions`, returning the tridiagonal Hessian as two diagonals; the SX graph
+    (IPOPT fallback, parameter sensitivities) is built only when first needed.
     """
 
     def __init__(self, n: int, kind: str | None = None) -> None:
@@ -127,45 +122,25 @@ class ChainSolver:
         self.n = n
         self.kind = kind
         self.dense = kind == "dense"
-        self._units_params = self._units_scaled = self._scale_params = None
-        self._last_bound: BoundSolver | None = None     # chain_solver's last binding (reused for the same m)
+        self.last: ChainSolver | None = None        # chain_solver's last solver (reused for the same m)
         if self.dense:
             D = ca.densify
             phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = self._sym
             self.force_res = ca.Function("force_res", [phi, p, F], [gradE - J.T @ F, D(H)])
             self.derivs = ca.Function("derivs", [phi, p, F], [E, gradE, D(H), D(J), tip])
-            self._fast_kkt = Fast(self.kkt)
-            self._fast_force = Fast(self.force_res)
-            self._fast_derivs = Fast(self.derivs)
+            self.fast_kkt = Fast(self.kkt)
+            self.fast_force = Fast(self.force_res)
+            self.fast_derivs = Fast(self.derivs)
         else:
             f = banded_functions(n)
             self.kkt_banded, self.kkt_res_banded = f["kkt_banded"], f["kkt_res_banded"]
             self.force_res_banded, self.force_banded = f["force_res_banded"], f["force_banded"]
             self.derivs_banded = f["derivs_banded"]
-            self._fast_kkt_b = Fast(self.kkt_banded)
-            self._fast_force_b = Fast(self.force_banded)
-            self._fast_kkt_rb = Fast(self.kkt_res_banded)
-            self._fast_force_rb = Fast(self.force_res_banded)
-            self._fast_derivs_b = Fast(self.derivs_banded)
-
-    @classmethod
-    def cached(cls, n: int) -> ChainSolver:
-        """The calling thread's solver for ``n`` segments (built on first use; LRU, ``CACHE_SIZE``)."""
-        cache = getattr(_local, "cache", None)
-        if cache is None:
-            cache = _local.cache = OrderedDict()
-        s = cache.get(n)
-        if s is None:
-            s = cache[n] = cls(n)
-            while len(cache) > CACHE_SIZE:
-                cache.popitem(last=False)
-        else:
-            cache.move_to_end(n)
-        return s
-
-    def bind(self, m) -> BoundSolver:
-        """This solver bound to the manipulator ``m`` (``m.n`` segments)."""
-        return BoundSolver(self, m)
+            self.fast_kkt = Fast(self.kkt_banded)
+            self.fast_force = Fast(self.force_banded)
+            self.fast_kkt_res = Fast(self.kkt_res_banded)
+            self.fast_force_res = Fast(self.force_res_banded)
+            self.fast_derivs = Fast(self.derivs_banded)
 
     # ---------------------------------------------------------------- parts built on first use
     @_built
@@ -181,13 +156,6 @@ class ChainSolver:
             k = _kernels.build(self.n)
             return _KernelSet(k, Fast(k.newton), Fast(k.seeds), Fast(k.continuation))
         return None
-
-    @property
-    def kernel_mode(self) -> str | None:
-        """How the compiled kernels run: ``"compiled"``, ``"virtual machine"``, or ``None`` (no kernels
-        for this ``n``). Builds them on first use."""
-        k = self.kernel
-        return None if k is None else k.kernels.mode
 
     @_built
     def kkt(self):
@@ -214,7 +182,7 @@ class ChainSolver:
         return _ipopt.force_nlp(self._sym)
 
     @_built
-    def _batch(self):
+    def batch(self):
         """CasADi's ``rootfinder`` under ``mapaccum`` (continuation without kernels) and the derivatives
         mapped over ``BATCH`` points (dense solvers)."""
         n, N = self.n, BATCH
@@ -227,53 +195,111 @@ class ChainSolver:
         step = ca.Function("step", [zp, tm, pm], [zn, ca.norm_inf(resf(zn, ca.vertcat(pm, tm)))])
         return step.mapaccum("continuation", N), self.derivs.map(N)
 
+
+@per_thread
+def chain_functions(n: int) -> ChainFunctions:
+    """This thread's :class:`ChainFunctions` for ``n`` segments (built on first use: :mod:`.per_thread`)."""
+    return ChainFunctions(n)
+
+
+class ChainSolver:
+    """The numerics of one chain: its :class:`ChainFunctions` evaluated at its parameters.
+
+    Every method reads the chain's parameters and joint limits itself; angles are relative joint angles
+    ``q`` (rad) unless a method says ``phi`` (absolute), targets are tip positions (``m.target(dx, dy)``),
+    forces tip forces ``[Fx, Fy]``. Results are numpy only (:class:`LocalResult`, :class:`SeedResults`,
+    :class:`Continuation`, arrays). Owned by the thread that made it, like its functions; cheap to make
+    (:func:`chain_solver` keeps the last one per thread and chain length).
+
+    Parameters
+    ----------
+    functions : ChainFunctions
+    m : Manipulator
+        The chain (``m.n == functions.n``).
+    params : ndarray, optional
+        The chain's parameters already in the units the Newton methods work in (:func:`.units.rescaled`; the
+        solver then solves in them as they are); default ``m.params``, rescaled where needed.
+    """
+
+    __slots__ = ("functions", "manipulator", "params", "limits", "_scaled", "_scale")
+
+    def __init__(self, functions: ChainFunctions, m, *, params: np.ndarray | None = None) -> None:
+        self.functions = functions
+        self.manipulator = m
+        self.params = m.params if params is None else params
+        self.limits = m.joint_limits
+        self._scaled = None if params is None else (1.0, 1.0, self)
+        self._scale = None
+
+    @property
+    def n(self) -> int:
+        return self.functions.n
+
+    @property
+    def kind(self) -> str:
+        """``"dense"`` or ``"banded"`` (:class:`ChainFunctions`)."""
+        return self.functions.kind
+
+    @property
+    def dense(self) -> bool:
+        """Dense linear algebra (``n <= DENSE_MAX``): compiled continuation and batched derivatives exist."""
+        return self.functions.dense
+
+    @property
+    def kernel_mode(self) -> str | None:
+        """How the compiled kernels run: ``"compiled"``, ``"virtual machine"``, or ``None`` (no kernels
+        for this ``n``). Builds them on first use."""
+        k = self.functions.kernel
+        return None if k is None else k.kernels.mode
+
     # ---------------------------------------------------------------- units and tolerances
-    def _units(self, params: np.ndarray) -> tuple[float, float, np.ndarray]:
-        """``(lam, kap, params')``: the units the Newton methods work in (:func:`.units.rescaled`),
-        remembered for the last parameter vector (the same read-only ``m.params`` on every call)."""
-        if params is self._units_params:
-            return self._units_val
-        if params is self._units_scaled:     # the rescaled vector itself (nested calls)
-            return 1.0, 1.0, params
-        val = rescaled(params, self.n)
-        if val[2] is not params:
-            self._units_scaled = val[2]
-        self._units_params, self._units_val = params, val
-        return val
+    def _units(self) -> tuple[float, float, ChainSolver]:
+        """``(lam, kap, solver)``: the units the Newton methods work in (:func:`.units.rescaled`) and this
+        chain's solver in them (itself when no rescaling is needed)."""
+        if self._scaled is None:
+            lam, kap, scaled = rescaled(self.params, self.n)
+            self._scaled = (1.0, 1.0, self) if scaled is self.params else \
+                (lam, kap, ChainSolver(self.functions, self.manipulator, params=scaled))
+        return self._scaled
 
-    def _set_scale(self, params: np.ndarray) -> None:
-        # Residuals are torques: the stopping test is scaled by k * c^2 of the stiffest segment. The test
-        # is on the 2-norm of n + 2 entries, whose roundoff floor grows as sqrt(n): beyond DENSE_MAX
-        # segments it is scaled by sqrt(n / DENSE_MAX), the same accuracy per entry as at 64.
-        if params is self._scale_params:
-            return
-        self._scale_params = params
-        n = self.n
-        self._scale = max(1.0, torque_scale(params, n)) * max(1.0, math.sqrt(n / DENSE_MAX))
+    @property
+    def scale(self) -> float:
+        """The torque scale of the stopping tests: residuals are torques, so the test is scaled by ``k c^2``
+        of the stiffest segment; the test is on the 2-norm of ``n + 2`` entries, whose roundoff floor grows as
+        ``sqrt(n)``: beyond ``DENSE_MAX`` segments it is scaled by ``sqrt(n / DENSE_MAX)``, the same accuracy
+        per entry as at 64."""
+        if self._scale is None:
+            n = self.n
+            self._scale = max(1.0, torque_scale(self.params, n)) * max(1.0, math.sqrt(n / DENSE_MAX))
+        return self._scale
 
-    # ---------------------------------------------------------------- Newton
-    def _newton_kkt(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray, q0: np.ndarray,
-                    F0: np.ndarray | None = None, tol: float = 1e-12, max_iter: int = 50,
-                    max_step: float = 0.5) -> LocalResult:
-        lam, kap, scaled = self._units(params)
-        if scaled is not params:
-            res = self._newton_kkt(scaled, limits, lam * np.asarray(target, float), q0,
-                                   None if F0 is None else kap * lam * np.asarray(F0, float), tol, max_iter, max_step)
+    # ---------------------------------------------------------------- local solves
+    def newton_kkt(self, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None, *, tol: float = 1e-12,
+                   max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
+        """Damped Newton on the KKT system of the displacement problem (any stationary point).
+
+        Converged when the residual's 2-norm is at most ``tol`` times the torque scale ``k c^2`` of the
+        stiffest segment (times ``sqrt(n / DENSE_MAX)`` for longer chains: the norm's roundoff floor
+        grows as ``sqrt(n)``), in the solver's units (:mod:`.units`). ``F0`` defaults to the
+        least-squares force of eq. (8) at ``q0``. Chains with compiled kernels (:mod:`.kernels`) run the
+        method there first (same step rule), and in Python only when it did not converge.
+        """
+        lam, kap, s = self._units()
+        if s is not self:
+            res = s.newton_kkt(lam * np.asarray(target, float), q0,
+                               None if F0 is None else kap * lam * np.asarray(F0, float), tol=tol, max_iter=max_iter,
+                               max_step=max_step)
             return unscale_result(res, lam, kap)
-        self._set_scale(params)
-        if max_step == _kernels.MAX_STEP and self.kernel is not None:
-            res = self._kernel_newton(params, limits, target, q0, F0, tol * self._scale, max_iter)
+        f, params = self.functions, self.params
+        if max_step == _kernels.MAX_STEP and f.kernel is not None:
+            res = self._kernel_newton(target, q0, F0, tol * self.scale, max_iter)
             if res is not None:
                 return res
         phi = np.cumsum(np.asarray(q0, dtype=float))
         if F0 is None:
             # eq. (8): F = (J J^T)^-1 J grad E, a 2 x 2 system solved by hand (a start only)
-            if self.dense:
-                out = self._fast_derivs(phi, params, np.zeros(2))
-                g, J = out[1], self._fast_derivs.dense(3)
-            else:
-                out = self._fast_derivs_b(phi, params, np.zeros(2))
-                g, J = out[1], self._fast_derivs_b.dense(4)
+            out = f.fast_derivs(phi, params, np.zeros(2))
+            g, J = out[1], f.fast_derivs.dense(3 if f.dense else 4)
             A = J @ J.T
             bvec = J @ g
             det = A[0, 0] * A[1, 1] - A[0, 1] * A[1, 0]
@@ -282,14 +308,13 @@ class ChainSolver:
             else:
                 F0 = np.array([0.0, bvec[1] / A[1, 1] if A[1, 1] > 0 else 0.0])
         z = np.concatenate([phi, np.asarray(F0, dtype=float)])
-        return self._dispatch(self._fast_kkt if self.dense else self._fast_kkt_b,
-                              None if self.dense else self._fast_kkt_rb, (params, target), z, limits, tol,
-                              max_iter, max_step, None)
+        return self._newton(f.fast_kkt, None if f.dense else f.fast_kkt_res, (params, target), z, tol, max_iter,
+                            max_step, None)
 
-    def _kernel_newton(self, params, limits, target, q0, F0, thresh, max_iter) -> LocalResult | None:
+    def _kernel_newton(self, target, q0, F0, thresh, max_iter) -> LocalResult | None:
         """The compiled damped Newton method from ``(q0, F0)``; ``None`` when it did not converge."""
-        fast = self.kernel.newton
-        n = self.n
+        fast = self.functions.kernel.newton
+        n, params = self.n, self.params
         use = F0 is not None
         out = fast(q0, F0 if use else _ZERO2, 1.0 if use else 0.0, params, target, thresh)
         its, calls = int(out[2][0]), 1
@@ -303,25 +328,34 @@ class ChainSolver:
         return LocalResult(out[6].copy(), out[0][n:].copy(), True, "Newton_Converged", its, bool(out[7][0] >= 0.0),
                            float(out[3][0]), out[4].copy(), out[5].reshape(m, m).copy())
 
-    def _newton_kkt_seeds(self, params: np.ndarray, limits: np.ndarray, target: np.ndarray,
-                          starts: np.ndarray | list[np.ndarray], same: float = 0.0,
-                          python_fallback: bool = True) -> SeedResults:
-        lam, kap, scaled = self._units(params)
-        if scaled is not params:
-            out = self._newton_kkt_seeds(scaled, limits, lam * np.asarray(target, float), starts, same,
-                                         python_fallback)
+    def newton_kkt_seeds(self, target: np.ndarray, starts: np.ndarray | list[np.ndarray], same: float = 0.0, *,
+                         python_fallback: bool = True) -> SeedResults:
+        """:meth:`newton_kkt` from each start (force from eq. (8)); the seeds of a global search.
+
+        With kernels, up to ``kernels.seed_columns(n)`` starts per compiled call (``kernels.SEED_ITER``
+        iterations); a start not converged there goes on from its iterate with the ``newton`` kernel and,
+        if that fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
+        ``same`` > 0 (rad): the result's ``distinct`` marks the distinct converged rows inside the range (the
+        rule of :mod:`.distinct` with tolerance ``same``), when one kernel call settled every start (else
+        ``distinct`` is ``None``: compare the rows yourself). ``python_fallback=False`` (large samples
+        of starts, where a few failures cost nothing): the starts not converged in the first call go on
+        from their iterates in up to ``SAMPLE_ROUNDS`` more batched calls of the same kernel (instead of one
+        ``newton`` kernel call each), and what is still not converged is left so (no Python method).
+        """
+        lam, kap, s = self._units()
+        if s is not self:
+            out = s.newton_kkt_seeds(lam * np.asarray(target, float), starts, same, python_fallback=python_fallback)
             return unscale_seeds(out, lam, kap)
-        n, m = self.n, self.n - 2
+        n, m, params, limits = self.n, self.n - 2, self.params, self.limits
         Q0 = np.asarray(starts, dtype=float).reshape(-1, n)
         k_all = Q0.shape[0]
-        kern = self.kernel
+        kern = self.functions.kernel
         if kern is None or k_all == 0:
-            return seed_results([self._newton_kkt(params, limits, target, q) for q in Q0], n)
-        self._set_scale(params)
-        thresh = 1e-12 * self._scale
-        fast, S, at = kern.seeds, _kernels.seed_columns(n), _kernels.seed_row(n)
+            return seed_results([self.newton_kkt(target, q) for q in Q0], n)
+        thresh = 1e-12 * self.scale
+        fast, S, layout = kern.seeds, _kernels.seed_columns(n), _kernels.seed_layout(n)
 
-        def call(Q: np.ndarray) -> tuple[np.ndarray, int]:
+        def call(Q: np.ndarray) -> tuple[dict[str, np.ndarray], int]:
             k = Q.shape[0]
             chunks = -(-k // S)
             src = np.zeros((chunks * S, n))
@@ -329,14 +363,14 @@ class ChainSolver:
             # a start's outputs are one column of the kernel's, one row here (copied: the buffer is reused)
             parts = [fast(src[c * S:(c + 1) * S].ravel(), _active(S, min(S, k - c * S)), params, target, thresh,
                           same)[0].reshape(S, -1).copy() for c in range(chunks)]
-            return (parts[0] if chunks == 1 else np.vstack(parts))[:k], chunks
+            return layout.unpack((parts[0] if chunks == 1 else np.vstack(parts))[:k]), chunks
 
         Y, chunks = call(Q0)
         # R is Z^T H Z (symmetric): the kernel's column-major nonzeros, transposed back
-        out_b = SeedResults(Y[:, at["q"]], Y[:, at["F"]], Y[:, at["norm"]] <= thresh, Y[:, at["margin"]] >= 0.0,
-                            Y[:, at["iters"]].astype(int), ["Newton_Converged"] * k_all, Y[:, at["E"]],
-                            Y[:, at["tip"]], Y[:, at["R"]].reshape(k_all, m, m).transpose(0, 2, 1),
-                            Y[:, at["distinct"]] > 0.5 if chunks == 1 and same > 0.0 else None)
+        out_b = SeedResults(Y["q"], Y["F"], Y["norm"] <= thresh, Y["margin"] >= 0.0, Y["iters"].astype(int),
+                            ["Newton_Converged"] * k_all, Y["E"], Y["tip"],
+                            Y["R"].reshape(k_all, m, m).transpose(0, 2, 1),
+                            Y["distinct"] > 0.5 if chunks == 1 and same > 0.0 else None)
         if not python_fallback:
             rows = np.flatnonzero(~out_b.success)
             if rows.size:
@@ -347,11 +381,11 @@ class ChainSolver:
                 if rows.size == 0:
                     break
                 Yr, _ = call(out_b.q[rows])
-                out_b.q[rows], out_b.force[rows] = Yr[:, at["q"]], Yr[:, at["F"]]
-                out_b.success[rows], out_b.on_bound[rows] = Yr[:, at["norm"]] <= thresh, Yr[:, at["margin"]] >= 0.0
-                out_b.iterations[rows] += Yr[:, at["iters"]].astype(int)
-                out_b.energy[rows], out_b.tip[rows] = Yr[:, at["E"]], Yr[:, at["tip"]]
-                out_b.reduced_hessian[rows] = Yr[:, at["R"]].reshape(rows.size, m, m).transpose(0, 2, 1)
+                out_b.q[rows], out_b.force[rows] = Yr["q"], Yr["F"]
+                out_b.success[rows], out_b.on_bound[rows] = Yr["norm"] <= thresh, Yr["margin"] >= 0.0
+                out_b.iterations[rows] += Yr["iters"].astype(int)
+                out_b.energy[rows], out_b.tip[rows] = Yr["E"], Yr["tip"]
+                out_b.reduced_hessian[rows] = Yr["R"].reshape(rows.size, m, m).transpose(0, 2, 1)
                 rows = rows[~out_b.success[rows]]
             for j in np.flatnonzero(~out_b.success).tolist():
                 out_b.status[j] = "Newton_Max_Iterations"
@@ -360,69 +394,74 @@ class ChainSolver:
             # go on from the iterate; failing that, everything again from the start
             out_b.distinct = None             # the kernel's comparison did not see this row's final point
             r = None
-            if np.all(np.isfinite(Y[j, :n + 2])):
-                r = self._kernel_newton(params, limits, target, out_b.q[j], out_b.force[j], thresh,
-                                        50 - _kernels.SEED_ITER)
+            if np.all(np.isfinite(Y["q"][j])) and np.all(np.isfinite(Y["F"][j])):
+                r = self._kernel_newton(target, out_b.q[j], out_b.force[j], thresh, 50 - _kernels.SEED_ITER)
                 if r is not None:
                     r.iterations += _kernels.SEED_ITER
-            set_row(out_b, j, r if r is not None else self._newton_kkt(params, limits, target, Q0[j]))
+            set_row(out_b, j, r if r is not None else self.newton_kkt(target, Q0[j]))
         return out_b
 
-    def _newton_force(self, params: np.ndarray, limits: np.ndarray, force: np.ndarray, q0: np.ndarray,
-                      tol: float = 1e-12, max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
-        lam, kap, scaled = self._units(params)
-        if scaled is not params:
-            res = self._newton_force(scaled, limits, kap * lam * np.asarray(force, float), q0, tol, max_iter, max_step)
+    def newton_force(self, force: np.ndarray, q0: np.ndarray, *, tol: float = 1e-12, max_iter: int = 50,
+                     max_step: float = 0.5) -> LocalResult:
+        """Damped Newton on ``grad E = J^T F`` for a prescribed tip force (any stationary point)."""
+        lam, kap, s = self._units()
+        if s is not self:
+            res = s.newton_force(kap * lam * np.asarray(force, float), q0, tol=tol, max_iter=max_iter,
+                                 max_step=max_step)
             return unscale_result(res, lam, kap)
-        self._set_scale(params)
+        f = self.functions
         force = np.asarray(force, dtype=float)
         z = np.cumsum(np.asarray(q0, dtype=float))
-        return self._dispatch(self._fast_force if self.dense else self._fast_force_b,
-                              None if self.dense else self._fast_force_rb, (params, force), z, limits, tol,
-                              max_iter, max_step, force)
+        return self._newton(f.fast_force, None if f.dense else f.fast_force_res, (self.params, force), z, tol,
+                            max_iter, max_step, force)
 
-    def _dispatch(self, full: Fast, resid: Fast | None, args: tuple, z, limits, tol, max_iter, max_step,
-                  force_fixed) -> LocalResult:
-        """Newton with ``full`` (residual and Jacobian); long chains add the residual-only ``resid`` for
-        the line search and hold BLAS to one thread."""
+    def _newton(self, full: Fast, resid: Fast | None, args: tuple, z, tol, max_iter, max_step,
+                force_fixed) -> LocalResult:
+        """:func:`.newton.damped_newton` with ``full`` (residual and Jacobian) at this solver's tolerance
+        (``tol`` times :attr:`scale`); long chains add the residual-only ``resid`` for the line search and
+        hold BLAS to one thread."""
         def call(zz):
             return full(zz, *args)
 
+        f = self.functions
         if resid is None:
-            return self._newton(call, full, z, limits, tol, max_iter, max_step, force_fixed)
+            return damped_newton(call, full, z, self.limits, tol * self.scale, max_iter, max_step, force_fixed,
+                                 n=f.n, dense=f.dense)
         with one_blas_thread():
-            return self._newton(call, full, z, limits, tol, max_iter, max_step, force_fixed,
-                                residual_only=lambda zz: resid(zz, *args))
+            return damped_newton(call, full, z, self.limits, tol * self.scale, max_iter, max_step, force_fixed,
+                                 n=f.n, dense=f.dense, residual_only=lambda zz: resid(zz, *args))
 
-    def _newton(self, call, fast: Fast, z, limits, tol, max_iter, max_step, force_fixed,
-                residual_only=None) -> LocalResult:
-        """:func:`.newton.damped_newton` at this solver's tolerance (``tol`` times the torque scale of the
-        parameters last passed to :meth:`_set_scale`)."""
-        return damped_newton(call, fast, z, limits, tol * self._scale, max_iter, max_step, force_fixed,
-                             n=self.n, dense=self.dense, residual_only=residual_only)
+    def minimize_displacement(self, target: np.ndarray, q0: np.ndarray) -> LocalResult:
+        """IPOPT: ``min E(q)`` s.t. ``tip(q) = target``, ``|q| < limits``, from ``q0``."""
+        return _ipopt.minimize_displacement(self.functions.nlp_disp, self.params, self.limits, target, q0)
 
-    # ---------------------------------------------------------------- IPOPT
-    def _minimize_displacement(self, params, limits, target, q0) -> LocalResult:
-        return _ipopt.minimize_displacement(self.nlp_disp, params, limits, target, q0)
-
-    def _minimize_force(self, params, limits, force, q0) -> LocalResult:
-        return _ipopt.minimize_force(self.nlp_force, params, limits, force, q0)
+    def minimize_force(self, force: np.ndarray, q0: np.ndarray) -> LocalResult:
+        """IPOPT: ``min E(q) - F.tip(q)`` s.t. ``|q| < limits``, from ``q0``."""
+        return _ipopt.minimize_force(self.functions.nlp_force, self.params, self.limits, force, q0)
 
     # ---------------------------------------------------------------- continuation (dense solvers)
-    def _batch_continue(self, params: np.ndarray, targets: np.ndarray, z0: np.ndarray) -> Continuation:
-        lam, kap, scaled = self._units(params)
-        if scaled is not params:
+    def batch_continue(self, targets: np.ndarray, z0: np.ndarray) -> Continuation:
+        """Newton continuation along ``targets`` (N x 2 tip positions) from ``z0 = (phi, F)``, in compiled code.
+
+        Each point starts from the previous point's solution. Chains with kernels
+        (``n <= kernels.KERNEL_MAX``) run ``kernels.CONT_ITER`` damped Newton iterations per point
+        and also return the energy, tip and reduced Hessian there; longer dense chains run CasADi's
+        undamped ``rootfinder``. Dense solvers only (``n <= DENSE_MAX``).
+        """
+        lam, kap, s = self._units()
+        if s is not self:
             z0 = np.array(z0, dtype=float)
             z0[self.n:] *= kap * lam
-            c = self._batch_continue(scaled, lam * np.asarray(targets, float), z0)
+            c = s.batch_continue(lam * np.asarray(targets, float), z0)
             return unscale_continuation(c, self.n, lam, kap)
-        kern = self.kernel
+        params = self.params
+        kern = self.functions.kernel
         N, n = targets.shape[0], self.n
         Z = np.empty((N, n + 2))
         R = np.empty(N)
         z = np.asarray(z0, dtype=float)
         if kern is None:
-            cont, _ = self._batch
+            cont, _ = self.functions.batch
             P = np.repeat(params[:, None], BATCH, axis=1)
             for s in range(0, N, BATCH):
                 chunk = targets[s:s + BATCH]
@@ -433,25 +472,27 @@ class ChainSolver:
                 Z[s:s + k], R[s:s + k] = Zc[:k], Rc[:k]
                 z = Zc[k - 1]
             return Continuation(Z, R, torque_scale=torque_scale(params, n))
-        self._set_scale(params)
-        fast, B, m = kern.continuation, _kernels.BATCH, n - 2
-        Y = np.empty((N, 5 + m * m))
+        fast, B, m, layout = kern.continuation, _kernels.BATCH, n - 2, _kernels.point_layout(n)
+        Y = np.empty((N, layout.size))
         for s in range(0, N, B):
             chunk = targets[s:s + B]
             k = chunk.shape[0]
             pad = np.vstack([chunk, np.repeat(chunk[-1:], B - k, axis=0)]) if k < B else chunk
-            out = fast(z, pad.ravel(), params, 1e-12 * self._scale)
+            out = fast(z, pad.ravel(), params, 1e-12 * self.scale)
             Z[s:s + k] = out[0].reshape(B, n + 2)[:k]
-            Y[s:s + k] = out[1].reshape(B, 5 + m * m)[:k]
+            Y[s:s + k] = out[1].reshape(B, layout.size)[:k]
             z = Z[s + k - 1]
-        return Continuation(Z, Y[:, 0], Y[:, 2], Y[:, 3:5], Y[:, 5:].reshape(N, m, m).transpose(0, 2, 1),
-                            torque_scale(params, n), iterations=np.rint(Y[:, 1]).astype(int))
+        y = layout.unpack(Y)
+        return Continuation(Z, y["norm"], y["E"], y["tip"], y["R"].reshape(N, m, m).transpose(0, 2, 1),
+                            torque_scale(params, n), iterations=np.rint(y["iters"]).astype(int))
 
-    def _batch_derivs(self, params: np.ndarray, Q: np.ndarray, Fs: np.ndarray):
-        _, derivs = self._batch
+    def batch_derivs(self, Q: np.ndarray, Fs: np.ndarray):
+        """Energy (N,), Lagrangian Hessian (N, n, n), tip Jacobian (N, 2, n), tip (N, 2) in phi, at the
+        configurations ``Q`` (N, n) under the forces ``Fs`` (N, 2). Dense solvers only."""
+        _, derivs = self.functions.batch
         n, N = self.n, Q.shape[0]
         E, H, J, T = np.empty(N), np.empty((N, n, n)), np.empty((N, 2, n)), np.empty((N, 2))
-        P = np.repeat(params[:, None], BATCH, axis=1)
+        P = np.repeat(self.params[:, None], BATCH, axis=1)
         for s in range(0, N, BATCH):
             k = min(BATCH, N - s)
             phi = np.zeros((n, BATCH))
@@ -466,34 +507,44 @@ class ChainSolver:
         return E, H, J, T
 
     # ---------------------------------------------------------------- derivatives
-    def _evaluate(self, params: np.ndarray, q: np.ndarray, force: np.ndarray):
-        if self.dense:
-            fast = self._fast_derivs
-            out = fast(np.cumsum(q), params, force)
+    def evaluate(self, q: np.ndarray, force: np.ndarray):
+        """Energy, gradient, Lagrangian Hessian ``Hess(E - F.tip)``, tip Jacobian, tip (all in phi).
+
+        The Hessian is dense for dense solvers, else a scipy CSC matrix (tridiagonal).
+        """
+        fast = self.functions.fast_derivs
+        if self.functions.dense:
+            out = fast(np.cumsum(q), self.params, force)
             return float(out[0][0]), out[1].copy(), fast.dense(2).copy(), fast.dense(3).copy(), out[4].copy()
         import scipy.sparse as sp_  # long chains only (not imported with the library)
 
-        fast = self._fast_derivs_b
-        E, g, hd, ho, J, tip = fast(np.cumsum(q), params, force)
+        E, g, hd, ho, J, tip = fast(np.cumsum(q), self.params, force)
         H = sp_.diags([ho, hd, ho], [-1, 0, 1], format="csc")
         return float(E[0]), g.copy(), H, fast.dense(4).copy(), tip.copy()
 
-    def _tangent_stiffness(self, params: np.ndarray, q: np.ndarray, force: np.ndarray) -> np.ndarray:
-        lam, kap, scaled = self._units(params)
-        if scaled is not params:           # dF/d(tip) scales as kap (force / length)
-            return self._tangent_stiffness(scaled, q, kap * lam * np.asarray(force, float)) / kap
-        n = self.n
-        if self.dense:
-            fast = self._fast_kkt
-            fast(np.concatenate([np.cumsum(q), force]), params, np.zeros(2))
+    def tangent_stiffness(self, q: np.ndarray, force: np.ndarray) -> np.ndarray:
+        """``dF/d(tip)`` by implicit differentiation of the KKT system: ``(J H^-1 J^T)^-1``.
+
+        Dense solvers solve the whole KKT system (valid even where ``H`` is singular); banded ones
+        use one banded solve. Raises ``numpy.linalg.LinAlgError`` when singular. Computed in the
+        solver's units (:mod:`.units`): the KKT matrix mixes torque and length rows, so its condition
+        number, tested here, grows as ``k^2`` in the caller's.
+        """
+        lam, kap, s = self._units()
+        if s is not self:                  # dF/d(tip) scales as kap (force / length)
+            return s.tangent_stiffness(q, kap * lam * np.asarray(force, float)) / kap
+        n, f = self.n, self.functions
+        if f.dense:
+            fast = f.fast_kkt
+            fast(np.concatenate([np.cumsum(q), force]), self.params, np.zeros(2))
             Jz = fast.dense(1)
             if np.linalg.cond(Jz) > 1e13:
                 raise np.linalg.LinAlgError("singular KKT matrix")
             rhs = np.zeros((n + 2, 2))
             rhs[n:] = np.eye(2)
             return np.linalg.solve(Jz, rhs)[n:]
-        fast = self._fast_derivs_b
-        _, _, hd, ho, _, _ = fast(np.cumsum(q), params, force)
+        fast = f.fast_derivs
+        _, _, hd, ho, _, _ = fast(np.cumsum(q), self.params, force)
         J = fast.dense(4)
         ab = np.zeros((3, n))
         ab[0, 1:] = ho
@@ -504,142 +555,19 @@ class ChainSolver:
             raise np.linalg.LinAlgError("singular KKT matrix")
         return np.linalg.inv(S)
 
-    def _kkt(self, params: np.ndarray, z: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        r, Jz = self.kkt(z, params, target)
-        return np.asarray(r).ravel(), np.asarray(ca.densify(Jz))
-
-    def _kkt_parameter_jacobian(self, params: np.ndarray, q: np.ndarray, force: np.ndarray,
-                                target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        z = np.concatenate([np.cumsum(q), force])
-        _, Jz = self.kkt(z, params, target)
-        Jp = self.kkt_dp(z, params, target)
-        return np.asarray(ca.densify(Jz)), np.asarray(ca.densify(Jp))
-
-
-class BoundSolver:
-    """A :class:`ChainSolver` bound to one manipulator: the public interface of the numerics.
-
-    Every method reads the manipulator's parameters and joint limits itself; angles are relative
-    joint angles ``q`` (rad) unless a method says ``phi`` (absolute), targets are tip positions
-    (``m.target(dx, dy)``), forces tip forces ``[Fx, Fy]``. Results are numpy only (:class:`LocalResult`,
-    :class:`SeedResults`, :class:`Continuation`, arrays). Owned by the thread that made it, like its
-    solver; cheap to make (one per call is fine).
-    """
-
-    __slots__ = ("solver", "manipulator")
-
-    def __init__(self, solver: ChainSolver, m) -> None:
-        self.solver = solver
-        self.manipulator = m
-
-    @property
-    def n(self) -> int:
-        return self.solver.n
-
-    @property
-    def kind(self) -> str:
-        """``"dense"`` or ``"banded"`` (:class:`ChainSolver`)."""
-        return self.solver.kind
-
-    @property
-    def dense(self) -> bool:
-        """Dense linear algebra (``n <= DENSE_MAX``): compiled continuation and batched derivatives exist."""
-        return self.solver.dense
-
-    @property
-    def kernel_mode(self) -> str | None:
-        """``"compiled"``, ``"virtual machine"`` or ``None`` (no kernels for this chain)."""
-        return self.solver.kernel_mode
-
-    # ---------------------------------------------------------------- local solves
-    def newton_kkt(self, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None, *, tol: float = 1e-12,
-                   max_iter: int = 50, max_step: float = 0.5) -> LocalResult:
-        """Damped Newton on the KKT system of the displacement problem (any stationary point).
-
-        Converged when the residual's 2-norm is at most ``tol`` times the torque scale ``k c^2`` of the
-        stiffest segment (times ``sqrt(n / DENSE_MAX)`` for longer chains: the norm's roundoff floor
-        grows as ``sqrt(n)``), in the solver's units (:mod:`.units`). ``F0`` defaults to the
-        least-squares force of eq. (8) at ``q0``. Chains with compiled kernels (:mod:`.kernels`) run the
-        method there first (same step rule), and in Python only when it did not converge.
-        """
-        m = self.manipulator
-        return self.solver._newton_kkt(m.params, m.joint_limits, target, q0, F0, tol, max_iter, max_step)
-
-    def newton_kkt_seeds(self, target: np.ndarray, starts: np.ndarray | list[np.ndarray], same: float = 0.0, *,
-                         python_fallback: bool = True) -> SeedResults:
-        """:meth:`newton_kkt` from each start (force from eq. (8)); the seeds of a global search.
-
-        With kernels, up to ``kernels.seed_columns(n)`` starts per compiled call (``kernels.SEED_ITER``
-        iterations); a start not converged there goes on from its iterate with the ``newton`` kernel and,
-        if that fails too, is run again from the start by :meth:`newton_kkt` (down to the Python method).
-        ``same`` > 0 (rad): the result's ``distinct`` marks the converged rows inside the range whose angles
-        differ by at least ``same`` from every earlier such row's, when one kernel call settled every start
-        (else ``distinct`` is ``None``: compare the rows yourself). ``python_fallback=False`` (large samples
-        of starts, where a few failures cost nothing): the starts not converged in the first call go on
-        from their iterates in up to ``SAMPLE_ROUNDS`` more batched calls of the same kernel (instead of one
-        ``newton`` kernel call each), and what is still not converged is left so (no Python method).
-        """
-        m = self.manipulator
-        return self.solver._newton_kkt_seeds(m.params, m.joint_limits, target, starts, same, python_fallback)
-
-    def newton_force(self, force: np.ndarray, q0: np.ndarray, *, tol: float = 1e-12, max_iter: int = 50,
-                     max_step: float = 0.5) -> LocalResult:
-        """Damped Newton on ``grad E = J^T F`` for a prescribed tip force (any stationary point)."""
-        m = self.manipulator
-        return self.solver._newton_force(m.params, m.joint_limits, force, q0, tol, max_iter, max_step)
-
-    def minimize_displacement(self, target: np.ndarray, q0: np.ndarray) -> LocalResult:
-        """IPOPT: ``min E(q)`` s.t. ``tip(q) = target``, ``|q| < limits``, from ``q0``."""
-        m = self.manipulator
-        return self.solver._minimize_displacement(m.params, m.joint_limits, target, q0)
-
-    def minimize_force(self, force: np.ndarray, q0: np.ndarray) -> LocalResult:
-        """IPOPT: ``min E(q) - F.tip(q)`` s.t. ``|q| < limits``, from ``q0``."""
-        m = self.manipulator
-        return self.solver._minimize_force(m.params, m.joint_limits, force, q0)
-
-    # ---------------------------------------------------------------- continuation
-    def batch_continue(self, targets: np.ndarray, z0: np.ndarray) -> Continuation:
-        """Newton continuation along ``targets`` (N x 2 tip positions) from ``z0 = (phi, F)``, in compiled code.
-
-        Each point starts from the previous point's solution. Chains with kernels
-        (``n <= kernels.KERNEL_MAX``) run ``kernels.CONT_ITER`` damped Newton iterations per point
-        and also return the energy, tip and reduced Hessian there; longer dense chains run CasADi's
-        undamped ``rootfinder``. Dense solvers only (``n <= DENSE_MAX``).
-        """
-        return self.solver._batch_continue(self.manipulator.params, targets, z0)
-
-    def batch_derivs(self, Q: np.ndarray, Fs: np.ndarray):
-        """Energy (N,), Lagrangian Hessian (N, n, n), tip Jacobian (N, 2, n), tip (N, 2) in phi, at the
-        configurations ``Q`` (N, n) under the forces ``Fs`` (N, 2). Dense solvers only."""
-        return self.solver._batch_derivs(self.manipulator.params, Q, Fs)
-
-    # ---------------------------------------------------------------- derivatives
-    def evaluate(self, q: np.ndarray, force: np.ndarray):
-        """Energy, gradient, Lagrangian Hessian ``Hess(E - F.tip)``, tip Jacobian, tip (all in phi).
-
-        The Hessian is dense for dense solvers, else a scipy CSC matrix (tridiagonal).
-        """
-        return self.solver._evaluate(self.manipulator.params, q, force)
-
-    def tangent_stiffness(self, q: np.ndarray, force: np.ndarray) -> np.ndarray:
-        """``dF/d(tip)`` by implicit differentiation of the KKT system: ``(J H^-1 J^T)^-1``.
-
-        Dense solvers solve the whole KKT system (valid even where ``H`` is singular); banded ones
-        use one banded solve. Raises ``numpy.linalg.LinAlgError`` when singular. Computed in the
-        solver's units (:mod:`.units`): the KKT matrix mixes torque and length rows, so its condition
-        number, tested here, grows as ``k^2`` in the caller's.
-        """
-        return self.solver._tangent_stiffness(self.manipulator.params, q, force)
-
     def kkt(self, z: np.ndarray, target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """The KKT residual (n+2,) and its Jacobian (n+2, n+2, dense) at ``z = (phi, F)``."""
-        return self.solver._kkt(self.manipulator.params, z, target)
+        r, Jz = self.functions.kkt(z, self.params, target)
+        return np.asarray(r).ravel(), np.asarray(ca.densify(Jz))
 
     def kkt_parameter_jacobian(self, q: np.ndarray, force: np.ndarray,
                                target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """KKT Jacobian w.r.t. ``(phi, F)`` and w.r.t. the parameters (``m.params`` order), at a solution."""
-        return self.solver._kkt_parameter_jacobian(self.manipulator.params, q, force, target)
+        f = self.functions
+        z = np.concatenate([np.cumsum(q), force])
+        _, Jz = f.kkt(z, self.params, target)
+        Jp = f.kkt_dp(z, self.params, target)
+        return np.asarray(ca.densify(Jz)), np.asarray(ca.densify(Jp))
 
 
 _ZERO2 = np.zeros(2)
@@ -653,23 +581,15 @@ def _active(columns: int, k: int) -> np.ndarray:
     return a
 
 
-_local = threading.local()
-
-
-def chain_solver(m) -> BoundSolver:
-    """This thread's :class:`ChainSolver` for ``m.n`` segments (built on first use, cached), bound to ``m``.
+def chain_solver(m) -> ChainSolver:
+    """This thread's :class:`ChainSolver` for the manipulator ``m`` (its :class:`ChainFunctions` built on
+    first use, cached per thread).
 
     On the hot paths (a control step is tens of microseconds) this is one dictionary look-up: the
-    solver keeps the last binding it made and returns it again for the same manipulator object.
+    functions keep the last solver made and return it again for the same manipulator object.
     """
-    n = m.n
-    cache = getattr(_local, "cache", None)
-    s = None if cache is None else cache.get(n)
-    if s is None:
-        s = ChainSolver.cached(n)
-    else:
-        cache.move_to_end(n)
-    b = s._last_bound
-    if b is None or b.manipulator is not m:
-        b = s._last_bound = BoundSolver(s, m)
-    return b
+    f = chain_functions(m.n)
+    s = f.last
+    if s is None or s.manipulator is not m:
+        s = f.last = ChainSolver(f, m)
+    return s

@@ -1,9 +1,10 @@
 """CasADi formulations of the design and control problems (the only design module touching CasADi).
 
-Two problem kinds, each built once per ``(n, boundary)`` / ``n`` and cached per thread (see
-:mod:`.chain_solver` for why per thread); every number that varies between calls (fixed
-parameters, bounds, budgets, nominal values, loads, targets, objective weights) enters
-through the parameter vector or the bounds.
+Three problem kinds, each built once per ``(n, boundary)`` / ``n`` and cached per thread
+(:mod:`.per_thread`); every number that varies between calls (fixed parameters, bounds, budgets,
+nominal values, loads, targets, objective weights) enters through the parameter vector or the
+bounds. Each problem names the blocks of its variables, rows and parameters (:class:`.layout.Layout`:
+``variables``, ``constraints``, ``parameters``): callers pack and unpack them by name.
 
 ``BucklingDesignNLP`` — variables ``a, b, k, L0`` (per segment, symmetric springs), the load
 ``P`` and a lower-triangular ``L``; constraint ``Z^T (K - P G) Z = L L^T`` with
@@ -29,8 +30,6 @@ symmetric matrix is positive semidefinite iff both are >= 0). Objective
 
 from __future__ import annotations
 
-import threading
-from collections import OrderedDict
 from dataclasses import dataclass
 
 import casadi as ca
@@ -38,11 +37,12 @@ import numpy as np
 
 from ..errors import TimeLimitError
 from ..timelimit import TIMEOUT_STATUSES, check_time, expired
-from .chain_solver import CACHE_SIZE
 from .expressions import chain_expressions
 from .ipopt import IPOPT_OPTIONS
+from .layout import Layout
+from .per_thread import per_thread
 
-__all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp", "tril_size"]
+__all__ = ["NLPResult", "buckling_design_nlp", "preload_nlp", "stiffness_nlp", "tril_size", "tril_vector"]
 
 #: IPOPT iterations of one stiffness-shaping solve at most.
 STIFFNESS_MAX_ITER = 400
@@ -62,7 +62,22 @@ class NLPResult:
 
 
 def tril_size(d: int) -> int:
+    """Entries of a ``d x d`` lower-triangular matrix."""
     return d * (d + 1) // 2
+
+
+def tril_vector(L: np.ndarray) -> np.ndarray:
+    """The lower triangle of the square matrix ``L``, row by row (the order of a factor's block)."""
+    d = L.shape[0]
+    return np.array([L[i, j] for i in range(d) for j in range(i + 1)])
+
+
+def _factor_floor(d: int, diag: list[int]) -> np.ndarray:
+    """Lower bounds of a factor's block: ``0`` on its diagonal (``diag(L) >= 0``), ``-inf`` elsewhere."""
+    lo = np.full(tril_size(d), -np.inf)
+    lo[diag] = 0.0
+    lo.setflags(write=False)
+    return lo
 
 
 def _tril(v, d):
@@ -169,11 +184,19 @@ class BucklingDesignNLP:
                           2 * ca.sum1(b),                        # total length
                           k * (2 * b - L0),                      # preload tension at straight (n)
                           K)                                     # joint stiffness (n)
-        self.x = ca.vertcat(a, b, k, L0, P, lv)
+        x = ca.vertcat(a, b, k, L0, P, lv)
         self.n_psd = tril_size(d)
+        #: ``a, b, k, L0`` (n each), the load ``P``, the factor ``L`` (row by row)
+        self.variables = Layout(a=n, b=n, k=n, L0=n, P=(), L=self.n_psd)
+        #: ``psd`` (= 0), the budgets of ``a, b, k, L0``, the total ``length``, ``tension`` and joint stiffness ``K``
+        self.constraints = Layout(psd=self.n_psd, budget_a=(), budget_b=(), budget_k=(), budget_L0=(), length=(),
+                                  tension=n, K=n)
+        self.parameters = Layout(L0nom=n, w=2)
+        #: lower bounds of the factor's block (``diag(L) >= 0``)
+        self.factor_floor = _factor_floor(d, self.diag)
         self.solver, self._deadline = _nlpsol("design_buckling",
-                                              {"x": self.x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows})
-        self._rows = ca.Function("rows", [self.x], [rows])
+                                              {"x": x, "p": ca.vertcat(L0nom, w), "f": f, "g": rows})
+        self._rows = ca.Function("rows", [x], [rows])
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
@@ -183,34 +206,61 @@ class BucklingDesignNLP:
         return np.asarray(self._rows(x)).ravel()
 
 
+class _Pose:
+    """What :class:`PreloadNLP` and :class:`StiffnessNLP` share: a stable equilibrium at a target under a tip load.
+
+    The variables ``x = (phi, L10, L20, mu, L)`` (absolute angles, rest lengths, the margin and the factor of
+    ``H_q - mu I = L L^T``), the parameters ``p = (a, b, k1, k2, F, L0nom)``, the model there and the rows
+    ``(grad E - J^T F, tip, phi_n, psd)``.
+    """
+
+    def __init__(self, n: int) -> None:
+        phi = self.phi = ca.SX.sym("phi", n)
+        L10 = self.L10 = ca.SX.sym("L10", n)
+        L20 = self.L20 = ca.SX.sym("L20", n)
+        mu = self.mu = ca.SX.sym("mu")
+        lv = ca.SX.sym("L", tril_size(n))
+        Lc, self.diag = _tril(lv, n)
+        a, b, k1, k2 = (ca.SX.sym(s, n) for s in ("a", "b", "k1", "k2"))
+        F = ca.SX.sym("F", 2)
+        self.L0nom = ca.SX.sym("L0nom", 2 * n)
+        self.x = (phi, L10, L20, mu, lv)
+        self.p = ca.vertcat(a, b, k1, k2, F, self.L0nom)
+        self.q, self.L1, self.L2, self.E, tip = chain_expressions(phi, a, b, k1, k2, L10, L20)
+        J = self.J = ca.jacobian(tip, phi)
+        grad = ca.gradient(self.E, phi) - J.T @ F
+        Hphi = self.Hphi = ca.hessian(self.E - ca.dot(F, tip), phi)[0]
+        T = ca.DM(np.tril(np.ones((n, n))))          # dphi/dq
+        Hq = T.T @ Hphi @ T
+        psd = _lower(Hq - mu * ca.SX.eye(n) - Lc @ Lc.T, n)
+        self.rows = ca.vertcat(grad, tip, phi[n - 1], psd)
+        self.L0 = ca.vertcat(L10, L20)
+        # the blocks of x, p and the rows, for the problems' layouts
+        self.x_blocks = {"phi": n, "L10": n, "L20": n, "mu": (), "L": tril_size(n)}
+        self.p_blocks = {"a": n, "b": n, "k1": n, "k2": n, "F": 2, "L0nom": 2 * n}
+        self.row_blocks = {"grad": n, "tip": 2, "angle": (), "psd": tril_size(n)}
+        self.factor_floor = _factor_floor(n, self.diag)
+
+
 class PreloadNLP:
     """Rest lengths and configuration for a stable equilibrium at a target under a tip load."""
 
     def __init__(self, n: int) -> None:
         self.n = n
-        phi = ca.SX.sym("phi", n)
-        L10 = ca.SX.sym("L10", n)
-        L20 = ca.SX.sym("L20", n)
-        mu = ca.SX.sym("mu")
-        lv = ca.SX.sym("L", tril_size(n))
-        Lc, self.diag = _tril(lv, n)
-        a, b, k1, k2 = (ca.SX.sym(s, n) for s in ("a", "b", "k1", "k2"))
-        F = ca.SX.sym("F", 2)
-        L0nom = ca.SX.sym("L0nom", 2 * n)
+        pose = _Pose(n)
+        self.diag = pose.diag
         w = ca.SX.sym("w", 3)
-        q, L1, L2, E, tip = chain_expressions(phi, a, b, k1, k2, L10, L20)
-        J = ca.jacobian(tip, phi)
-        grad = ca.gradient(E, phi) - J.T @ F
-        Hphi = ca.hessian(E - ca.dot(F, tip), phi)[0]
-        T = ca.DM(np.tril(np.ones((n, n))))          # dphi/dq
-        Hq = T.T @ Hphi @ T
-        psd = _lower(Hq - mu * ca.SX.eye(n) - Lc @ Lc.T, n)
-        L0 = ca.vertcat(L10, L20)
-        f = (w[0] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom) - w[1] * mu + w[2] * E)
-        rows = ca.vertcat(grad, tip, phi[n - 1], psd, L1 - L10, L2 - L20, q)
-        self.x = ca.vertcat(phi, L10, L20, mu, lv)
-        self.solver, self._deadline = _nlpsol(
-            "design_preload", {"x": self.x, "p": ca.vertcat(a, b, k1, k2, F, L0nom, w), "f": f, "g": rows})
+        f = (w[0] * ca.sumsqr(pose.L0 - pose.L0nom) / ca.sumsqr(pose.L0nom) - w[1] * pose.mu + w[2] * pose.E)
+        rows = ca.vertcat(pose.rows, pose.L1 - pose.L10, pose.L2 - pose.L20, pose.q)
+        x = ca.vertcat(*pose.x)
+        #: absolute angles ``phi``, rest lengths ``L10, L20``, margin ``mu``, the factor ``L`` (row by row)
+        self.variables = Layout(**pose.x_blocks)
+        #: ``grad E - J^T F``, ``tip``, the last link's ``angle``, ``psd`` (= 0), the springs' ``stretch1``,
+        #: ``stretch2`` (``L_i - L_i0``), the joint angles ``q``
+        self.constraints = Layout(**pose.row_blocks, stretch1=n, stretch2=n, q=n)
+        self.parameters = Layout(**pose.p_blocks, w=3)
+        self.factor_floor = pose.factor_floor
+        self.solver, self._deadline = _nlpsol("design_preload", {"x": x, "p": ca.vertcat(pose.p, w), "f": f, "g": rows})
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
@@ -220,15 +270,16 @@ class StiffnessNLP:
     """Rest lengths and configuration for a stable equilibrium at a target under a tip load with a
     prescribed (or bounded) Cartesian tangent stiffness of the free tip.
 
-    Variables ``x = (phi, L10, L20, mu, L, Yhat, s)``: ``phi`` absolute angles (n), the rest lengths (2n),
+    Variables ``x = (phi, L10, L20, mu, L, Y, s)`` (:attr:`variables`): ``phi`` absolute angles (n), the rest
+    lengths (2n),
     the margin ``mu`` and the lower-triangular ``L`` of ``H_q - mu I = L L^T`` (as :class:`PreloadNLP`),
     ``Yhat`` (2n, column by column) with ``Y = Yhat Ls / Ts`` the compliance columns ``H^-1 J^T``
     (``Ts`` the torque scale, ``Ls`` the length scale: ``Yhat`` and ``Khat = K Ls^2 / Ts`` are O(1)), and
     the slack ``s`` of the elastic mode (fixed at 0 otherwise): every stiffness bound relaxed by ``s``.
-    Parameters ``p = (a, b, k1, k2, F, L0nom, Kd (3), w (3), eig (2), scales (2))``; objective
+    Parameters ``p = (a, b, k1, k2, F, L0nom, Kd (3), w (3), eig (2), scales (2))`` (:attr:`parameters`); objective
     ``w0 |Khat - Kd|_F^2 + w1 |L0 - L0nom|^2 / |L0nom|^2 + w2 s``.
 
-    Rows ``g``: ``grad E - J^T F`` (n), ``tip`` (2), ``phi_n`` (1), the margin's factorisation
+    Rows ``g`` (:attr:`constraints`): ``grad E - J^T F`` (n), ``tip`` (2), ``phi_n`` (1), the margin's factorisation
     (``tril(n)``), ``H Yhat / Ts - J^T / Ls`` (2n), ``q`` (n), ``Khat + s`` and ``Khat - s`` (3 each:
     ``kxx, kxy, kyy``, for lower and upper bounds), ``tr, det`` of ``Khat - (lo - s) I`` and of
     ``(hi + s) I - Khat`` (4; ``lo, hi`` scaled, in ``p``).
@@ -236,28 +287,15 @@ class StiffnessNLP:
 
     def __init__(self, n: int) -> None:
         self.n = n
-        phi = ca.SX.sym("phi", n)
-        L10 = ca.SX.sym("L10", n)
-        L20 = ca.SX.sym("L20", n)
-        mu = ca.SX.sym("mu")
-        lv = ca.SX.sym("L", tril_size(n))
+        pose = _Pose(n)
+        self.diag = pose.diag
         yv = ca.SX.sym("Y", 2 * n)
         slack = ca.SX.sym("s")                   # elastic mode: the stiffness bounds relaxed by s >= 0
-        Lc, self.diag = _tril(lv, n)
-        a, b, k1, k2 = (ca.SX.sym(s, n) for s in ("a", "b", "k1", "k2"))
-        F = ca.SX.sym("F", 2)
-        L0nom = ca.SX.sym("L0nom", 2 * n)
         Kd = ca.SX.sym("Kd", 3)
         w = ca.SX.sym("w", 3)
         eig = ca.SX.sym("eig", 2)
         sc = ca.SX.sym("scales", 2)              # torque scale Ts, length scale Ls
-        q, L1, L2, E, tip = chain_expressions(phi, a, b, k1, k2, L10, L20)
-        J = ca.jacobian(tip, phi)
-        grad = ca.gradient(E, phi) - J.T @ F
-        Hphi = ca.hessian(E - ca.dot(F, tip), phi)[0]
-        T = ca.DM(np.tril(np.ones((n, n))))
-        Hq = T.T @ Hphi @ T
-        psd = _lower(Hq - mu * ca.SX.eye(n) - Lc @ Lc.T, n)
+        Hphi, J = pose.Hphi, pose.J
         Y = ca.horzcat(yv[:n], yv[n:])
         comp = ca.vec(Hphi @ Y / sc[0] - J.T / sc[1])
         C = J @ Y / sc[1]                        # C Ts / Ls^2: the scaled compliance
@@ -267,20 +305,21 @@ class StiffnessNLP:
         lo, hi = eig[0] - slack, eig[1] + slack
         eig_rows = ca.vertcat(K[0] + K[2] - 2 * lo, (K[0] - lo) * (K[2] - lo) - K[1] * K[1],
                               2 * hi - K[0] - K[2], (hi - K[0]) * (hi - K[2]) - K[1] * K[1])
-        L0 = ca.vertcat(L10, L20)
         dK = K - Kd
         fit = dK[0] * dK[0] + 2 * dK[1] * dK[1] + dK[2] * dK[2]          # |K - Kd|_F^2 (kxy twice)
-        f = w[0] * fit + w[1] * ca.sumsqr(L0 - L0nom) / ca.sumsqr(L0nom) + w[2] * slack
-        rows = ca.vertcat(grad, tip, phi[n - 1], psd, comp, q, K + slack, K - slack, eig_rows)
-        self.x = ca.vertcat(phi, L10, L20, mu, lv, yv, slack)
-        self.row_sizes = {"grad": n, "tip": 2, "angle": 1, "psd": tril_size(n), "compliance": 2 * n, "q": n,
-                          "K_lo": 3, "K_hi": 3, "eig": 4}
-        p = ca.vertcat(a, b, k1, k2, F, L0nom, Kd, w, eig, sc)
+        f = w[0] * fit + w[1] * ca.sumsqr(pose.L0 - pose.L0nom) / ca.sumsqr(pose.L0nom) + w[2] * slack
+        rows = ca.vertcat(pose.rows, comp, pose.q, K + slack, K - slack, eig_rows)
+        x = ca.vertcat(*pose.x, yv, slack)
+        self.variables = Layout(**pose.x_blocks, Y=2 * n, s=())
+        self.constraints = Layout(**pose.row_blocks, compliance=2 * n, q=n, K_lo=3, K_hi=3, eig=4)
+        self.parameters = Layout(**pose.p_blocks, Kd=3, w=3, eig=2, scales=2)
+        self.factor_floor = pose.factor_floor
+        p = ca.vertcat(pose.p, Kd, w, eig, sc)
         # a solve that has not converged in STIFFNESS_MAX_ITER iterations is not going to (the caller tries
         # another start or formulation instead of waiting for the design problems' 3000)
-        self.solver, self._deadline = _nlpsol("design_stiffness", {"x": self.x, "p": p, "f": f, "g": rows},
+        self.solver, self._deadline = _nlpsol("design_stiffness", {"x": x, "p": p, "f": f, "g": rows},
                                               **{"ipopt.max_iter": STIFFNESS_MAX_ITER})
-        self._rows = ca.Function("stiffness_rows", [self.x, p], [rows])
+        self._rows = ca.Function("stiffness_rows", [x, p], [rows])
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
@@ -290,31 +329,26 @@ class StiffnessNLP:
         return np.asarray(self._rows(x, p)).ravel()
 
 
-_local = threading.local()
-
-
-def _cached(key, build):
-    """Per-thread LRU cache of built problems (``CACHE_SIZE`` entries, as for the equilibrium models)."""
-    c = getattr(_local, "cache", None)
-    if c is None:
-        c = _local.cache = OrderedDict()
-    if key in c:
-        c.move_to_end(key)
-        return c[key]
-    obj = c[key] = build()
+def _deadline_after_build(problem) -> None:
     check_time("building the design problem")     # the build (nlpsol) itself cannot be cut
-    while len(c) > CACHE_SIZE:
-        c.popitem(last=False)
-    return obj
+
+
+@per_thread(built=_deadline_after_build)
+def _problem(kind: type, *args):
+    """This thread's problem of ``kind`` for ``args`` (:mod:`.per_thread`)."""
+    return kind(*args)
 
 
 def buckling_design_nlp(n: int, guided: bool) -> BucklingDesignNLP:
-    return _cached(("buckling", n, guided), lambda: BucklingDesignNLP(n, guided))
+    """This thread's :class:`BucklingDesignNLP` for ``n`` segments (``guided``: the guided tip)."""
+    return _problem(BucklingDesignNLP, n, bool(guided))
 
 
 def preload_nlp(n: int) -> PreloadNLP:
-    return _cached(("preload", n), lambda: PreloadNLP(n))
+    """This thread's :class:`PreloadNLP` for ``n`` segments."""
+    return _problem(PreloadNLP, n)
 
 
 def stiffness_nlp(n: int) -> StiffnessNLP:
-    return _cached(("stiffness", n), lambda: StiffnessNLP(n))
+    """This thread's :class:`StiffnessNLP` for ``n`` segments."""
+    return _problem(StiffnessNLP, n)

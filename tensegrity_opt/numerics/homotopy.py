@@ -41,7 +41,7 @@ unknowns ``z_j`` alone, no tip equations. Mixed volume 4, 24, 128, 704, 3840 for
 chains; 2 cores: n = 3 ~0.3 s, n = 4 ~2-4 s, n = 5 ~15-70 s. Uniform chains of n = 5 measured with 128
 failed paths in every run (uncertified), like the displacement system's uniform bistable chains. The
 real roots are read by :func:`real_force_configurations`; ``F = 0`` needs no homotopy (the rows decouple:
-:func:`unloaded_critical_angles`).
+each segment's :meth:`~tensegrity_opt.model.segment.Segment.critical_points`).
 
 Certification
 -------------
@@ -54,7 +54,7 @@ and polished). A run with failed paths is repeated with new random constants. Eq
 ``F = 0`` (``g = h = 0``) lie outside the torus the mixed volume counts; they are added exactly from
 the segments' unloaded critical points (:func:`rest_points_at`). Anything else (a failed path, a phc
 error, a root whose polish fails, two distinct roots too close to separate) makes it false, never
-silently true.
+silently true. :func:`polish_roots` does this polish and judges the certificate for both systems.
 
 PHCpack is a system package: ``apt-get install phcpack`` (Debian/Ubuntu) puts ``phc`` on the
 ``PATH``; :class:`HomotopyUnavailableError` names it where it is absent.
@@ -68,19 +68,20 @@ import shutil
 import subprocess
 import tempfile
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..errors import HomotopyUnavailableError, SolverError
 from ..model.manipulator import Manipulator
+from ..model.segment import clean_coefficients
+from .distinct import distinct
+from .results import LocalResult
 
 __all__ = ["HomotopySolve", "HomotopyUnavailableError", "polynomial_system", "solve_homotopy", "phc_path",
-           "homotopy_available", "real_configurations", "residuals", "unloaded_critical_angles", "rest_points_at",
-           "force_polynomial_system", "solve_force_homotopy", "real_force_configurations", "force_residuals"]
-
-#: Coefficients smaller than this relative to the largest one of their equation are zero.
-CLEAN_TOL = 1e-14
+           "homotopy_available", "real_configurations", "residuals", "rest_points_at", "force_polynomial_system",
+           "solve_force_homotopy", "real_force_configurations", "PolishedRoots", "polish_roots"]
 #: Most ``phc`` runs when paths fail (each run draws new random constants).
 ATTEMPTS = 3
 #: A regular root is real when ``| |z_j| - 1 |`` and ``|g - conj(h)|`` (relative) are below this;
@@ -163,7 +164,7 @@ def _laurent_terms(m: Manipulator, target) -> list[dict[tuple[int, ...], complex
 
     def dE(j: int) -> dict:
         poly: dict = {}
-        for p, coef in _dE_coefficients(m, j).items():
+        for p, coef in m.segments[j].torque_polynomial().items():
             add(poly, unit(j, p), coef)
         return poly
 
@@ -193,7 +194,7 @@ def _laurent_terms(m: Manipulator, target) -> list[dict[tuple[int, ...], complex
         add(poly, direction(j, -1, n), -float(l[j]) / 2j)
         add(poly, direction(j, 1, n + 1), float(l[j]) / 2j)
         eqs.append(poly)
-    return [_clean(p) for p in eqs]
+    return [clean_coefficients(p) for p in eqs]
 
 
 def _force_laurent_terms(m: Manipulator, force) -> list[dict[tuple[int, ...], complex]]:
@@ -214,7 +215,7 @@ def _force_laurent_terms(m: Manipulator, force) -> list[dict[tuple[int, ...], co
 
     def dE(j: int) -> dict:
         poly: dict = {}
-        for p, coef in _dE_coefficients(m, j).items():
+        for p, coef in m.segments[j].torque_polynomial().items():
             e = [0] * n
             e[j] = p
             add(poly, tuple(e), coef)
@@ -235,37 +236,7 @@ def _force_laurent_terms(m: Manipulator, force) -> list[dict[tuple[int, ...], co
             add(poly, direction(j, -1), -float(l[j]) * g / 2j)
             add(poly, direction(j, 1), float(l[j]) * h / 2j)
         eqs.append(poly)
-    return [_clean(p) for p in eqs]
-
-
-def _dE_coefficients(m: Manipulator, j: int) -> dict[int, complex]:
-    """Segment ``j``'s ``E'(q)`` as a Laurent polynomial in ``z = exp(i q/2)``: ``{power: coefficient}``.
-
-    ``c = cos(q/2) = (z + 1/z)/2``, ``s = sin(q/2) = -i (z - 1/z)/2``;
-    ``E' = -k1 (L1 - L10)(b s + a c) + k2 (L2 - L20)(a c - b s)`` with ``L1 = 2 b c - 2 a s``,
-    ``L2 = 2 b c + 2 a s``, i.e. ``E' = A c^2 + B s^2 + C c s + D c + Es s``, and
-    ``c^2 = (z^2 + 2 + z^-2)/4``, ``s^2 = -(z^2 - 2 + z^-2)/4``, ``c s = -i (z^2 - z^-2)/4``.
-    """
-    aj, bj = float(m.a[j]), float(m.b[j])
-    k1, k2, L10, L20 = float(m.k1[j]), float(m.k2[j]), float(m.L1_0[j]), float(m.L2_0[j])
-    A = -2.0 * aj * bj * k1 + 2.0 * aj * bj * k2
-    B = 2.0 * aj * bj * k1 - 2.0 * aj * bj * k2
-    C = (2.0 * aj * aj - 2.0 * bj * bj) * (k1 + k2)
-    D = k1 * L10 * aj - k2 * L20 * aj
-    Es = k1 * L10 * bj + k2 * L20 * bj
-    return {2: complex(A / 4 - B / 4 - 1j * C / 4), 0: complex(A / 2 + B / 2), -2: complex(A / 4 - B / 4 + 1j * C / 4),
-            1: complex(D / 2 - 1j * Es / 2), -1: complex(D / 2 + 1j * Es / 2)}
-
-
-def _clean(poly: dict) -> dict:
-    scale = max(abs(c) for c in poly.values())
-    out = {}
-    for e, c in poly.items():
-        re_ = c.real if abs(c.real) > CLEAN_TOL * scale else 0.0
-        im_ = c.imag if abs(c.imag) > CLEAN_TOL * scale else 0.0
-        if re_ or im_:
-            out[e] = complex(re_, im_)
-    return out
+    return [clean_coefficients(p) for p in eqs]
 
 
 def _names(n: int) -> list[str]:
@@ -294,11 +265,6 @@ def force_polynomial_system(m: Manipulator, force) -> str:
     """The force-controlled equilibrium ``grad E = J^T F`` for the tip force ``force = (Fx, Fy)`` in
     PHCpack's input format: ``n`` Laurent equations in ``z_1..z_n`` (:func:`_force_laurent_terms`)."""
     return _system_text(_force_laurent_terms(m, force), _names(m.n)[:m.n])
-
-
-def force_residuals(m: Manipulator, force, roots: np.ndarray) -> np.ndarray:
-    """As :func:`residuals`, for the force-controlled system (rows of ``roots``: ``z_1..z_n``)."""
-    return _residuals(_force_laurent_terms(m, force), roots)
 
 
 def residuals(m: Manipulator, target, roots: np.ndarray) -> np.ndarray:
@@ -364,7 +330,7 @@ def solve_force_homotopy(m: Manipulator, force, *, threads: int | None = None, t
     load ``force``) by ``phc -b``, with the repeats, parameters and errors of :func:`solve_homotopy`.
 
     The roots are rows ``z_1..z_n``. ``force`` must not be zero: the unloaded system decouples into the
-    segments' own torques (:func:`unloaded_critical_angles` gives its real roots exactly).
+    segments' own torques (each segment's ``critical_points()`` are its real roots).
     """
     return _solve(force_polynomial_system(m, force), _names(m.n)[:m.n], m.n, threads, timeout, attempts)
 
@@ -475,23 +441,12 @@ def _parse(report: str, names: list[str], seconds: float, threads: int, returnco
                          consistent=consistent)
 
 
-def unloaded_critical_angles(m: Manipulator, j: int) -> np.ndarray:
-    """Every joint angle inside the range where segment ``j``'s torque vanishes (``E_j'(q) = 0``): the real
-    roots on the unit circle of the quartic ``z^2 E_j'(z) = 0`` (``z = exp(i q/2)``), all of them (companion
-    matrix eigenvalues), not a grid search."""
-    c = _clean(_dE_coefficients(m, j))
-    roots = np.roots([c.get(p, 0.0) for p in (2, 1, 0, -1, -2)])      # leading zeros are dropped by np.roots
-    roots = roots[np.abs(np.abs(roots) - 1.0) < 1e-8]
-    q = 2.0 * np.angle(roots)
-    return np.unique(np.round(q[np.abs(q) < m.joint_limits[j]], 13))
-
-
 def rest_points_at(m: Manipulator, target, *, tol: float = 1e-9) -> np.ndarray:
     """The configurations with every joint at a zero of its own torque (``F = 0`` equilibria) whose tip is
     ``target`` (rows; usually none). They have ``g = h = 0``, outside the torus where the mixed volume
     counts roots, so :func:`solve_homotopy` cannot see them: the caller adds them (a finite product of the
-    segments' :func:`unloaded_critical_angles`)."""
-    angles = [unloaded_critical_angles(m, j) for j in range(m.n)]
+    segments' unloaded critical points, :meth:`~tensegrity_opt.model.segment.Segment.critical_points`)."""
+    angles = [seg.critical_points() for seg in m.segments]
     if any(a.size == 0 for a in angles):
         return np.zeros((0, m.n))
     grids = np.meshgrid(*angles, indexing="ij")
@@ -543,3 +498,66 @@ def real_force_configurations(m: Manipulator, solve: HomotopySolve, *, tol: floa
     q = 2.0 * np.angle(z[real])
     inside = np.all(np.abs(q) < m.joint_limits, axis=1)
     return q, inside, solve.regular[real]
+
+
+@dataclass(frozen=True)
+class PolishedRoots:
+    """The equilibria from the real roots of a homotopy (:func:`polish_roots`).
+
+    Attributes
+    ----------
+    found : list of LocalResult
+        The distinct equilibria, in the order of the roots.
+    certified : bool
+        Every path ended (:attr:`HomotopySolve.complete`), every real root in range polished onto an
+        equilibrium, and no two distinct regular roots closer than the tolerance.
+    status : str
+        What happened: phc's runs and paths, the real roots in range, and why the set is not certified.
+    """
+
+    found: list
+    certified: bool
+    status: str
+
+
+def polish_roots(solve: HomotopySolve, q: np.ndarray, F: np.ndarray, regular: np.ndarray, *,
+                 polish: Callable[[np.ndarray, np.ndarray], LocalResult], accept: Callable[[LocalResult], bool],
+                 root_is_equilibrium: Callable[[np.ndarray, np.ndarray], bool], dedupe_tol: float,
+                 note: str = "") -> PolishedRoots:
+    """The real roots in range (``q`` (k, n), ``F`` (k, 2), ``regular`` (k,)) polished by Newton, and the
+    certificate.
+
+    Each root is polished (``polish(q, F)``); the result counts when ``accept(result)`` and it stays within
+    ``1e-6`` of the root (``1e-3`` for a singular root, computed to ~sqrt(eps) or worse); else the root
+    itself counts when ``root_is_equilibrium(q, F)`` (a root Newton cannot improve; status ``"phc_root"``);
+    else it is lost. The regular ones are made distinct (:mod:`.distinct`, ``1e-9``), then with the singular
+    ones at ``dedupe_tol`` (at least ``1e-4`` when there are singular ones). Distinct regular roots closer
+    than ``dedupe_tol`` (merged so) or a lost root make the set uncertified. ``note`` follows the count of
+    real roots in the status.
+    """
+    polished, lost, singular = [], 0, []
+    for qi, Fi, reg in zip(q, F, regular):
+        res = polish(qi, Fi)
+        near = 1e-6 if reg else 1e-3            # a singular root comes to ~sqrt(eps) or worse
+        if accept(res) and np.max(np.abs(res.q - qi)) < near:
+            (polished if reg else singular).append(res)
+        elif root_is_equilibrium(qi, Fi):
+            (polished if reg else singular).append(LocalResult(qi, Fi, True, "phc_root", 0))
+        else:
+            lost += 1
+    regular_set = distinct(polished, 1e-9)
+    # distinct regular roots closer than dedupe_tol would be merged below: a near-degenerate pair the
+    # certificate does not separate
+    close = len(regular_set) - len(distinct(regular_set, dedupe_tol))
+    found = distinct(regular_set + singular, dedupe_tol if not singular else max(dedupe_tol, 1e-4))
+    why = []
+    if not solve.consistent:
+        why.append("phc's report did not check out")
+    if lost:
+        why.append(f"{lost} real roots did not polish")
+    if close:
+        why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
+    runs = f"{solve.attempts} run{'s' if solve.attempts > 1 else ''}"
+    status = (f"phc ({runs}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at infinity, "
+              f"{solve.singular} singular; {len(q)} real roots in range" + note + "".join(f"; {w}" for w in why))
+    return PolishedRoots(found, solve.complete and lost == 0 and close == 0, status)

@@ -15,26 +15,26 @@ solve compiles for tens of seconds); ``step`` iterates from a warm start and ret
 iterate, its residual, the iterations that moved, the Hessian of ``E - F . tip`` in ``q`` there (the
 stability of the free arm: positive definite) and the KKT matrix (a strict local minimum of the
 least-change problem has ``3 n`` positive and ``rows`` negative eigenvalues: Newton can also converge to
-a saddle of it). Built once per ``(n, angle)`` and thread; generated to C
-and compiled like the other kernels for ``n <= KERNEL_MAX`` (the same cache, compiler and
-``TENSEGRITY_COMPILE=0`` switch), CasADi's virtual machine otherwise. Bounds, rate limits and the
-stability margin are the caller's (:mod:`tensegrity_opt.analyses.design.preload_control`): it checks them on
-the result and falls back to IPOPT where one is active.
+a saddle of it). Built once per ``(n, angle)`` and thread (:mod:`.per_thread`); generated to C and compiled
+like the other kernels for ``n <= KERNEL_MAX`` (:func:`.build.load`), CasADi's virtual machine otherwise.
+Bounds, rate limits and the stability margin are the caller's
+(:mod:`tensegrity_opt.analyses.design.preload_control`): it checks them on the result and falls back to IPOPT
+where one is active.
 """
 
 from __future__ import annotations
 
-import os
-import subprocess
-import threading
 from functools import lru_cache
 
 import casadi as ca
 import numpy as np
 
-from . import kernels as _kernels
 from ._fast import Fast
+from .build import VIRTUAL_MACHINE, load
 from .expressions import segment_energy, tip_expression
+from .kernels import KERNEL_MAX
+from .layout import Layout
+from .per_thread import per_thread
 
 __all__ = ["InverseStatics", "inverse_statics", "ITER"]
 
@@ -70,30 +70,12 @@ def _graph(n: int, angle: bool) -> ca.Function:
                        [r, ca.densify(K), ca.densify(H), E, tip])
 
 
-_compiled: dict[tuple[int, bool], str] = {}
-_lock = threading.Lock()
-
-
 def _function(n: int, angle: bool) -> tuple[ca.Function, str]:
-    if 2 <= n <= _kernels.KERNEL_MAX and os.environ.get("TENSEGRITY_COMPILE", "1") != "0":
-        with _lock:
-            lib = _compiled.get((n, angle))
-            if lib is None:
-                lib = ""
-                cc = _kernels.compiler()
-                if cc is not None:
-                    try:
-                        lib = _kernels._compile_with(cc, f"tensegrity_inverse_n{n}{'a' if angle else ''}",
-                                                     {"inverse_kkt": _graph(n, angle)})
-                    except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
-                        _kernels._warn(f"compiling the inverse-statics step with {cc} failed ({exc})")
-                _compiled[(n, angle)] = lib
-        if lib:
-            try:
-                return ca.external("inverse_kkt", lib), "compiled"
-            except RuntimeError as exc:
-                _kernels._warn(f"loading {lib} failed ({exc})")
-    return _graph(n, angle), "virtual machine"
+    if 2 <= n <= KERNEL_MAX:
+        loaded = load(f"tensegrity_inverse_n{n}{'a' if angle else ''}", "the inverse-statics step",
+                      lambda: {"inverse_kkt": _graph(n, angle)})
+        return loaded.functions["inverse_kkt"], loaded.mode
+    return _graph(n, angle), VIRTUAL_MACHINE
 
 
 class InverseStatics:
@@ -102,6 +84,8 @@ class InverseStatics:
     def __init__(self, n: int, angle: bool) -> None:
         self.n, self.angle = n, angle
         self.rows = n + 2 + (1 if angle else 0)
+        #: the unknowns ``y``: joint angles ``q``, rest lengths ``ell`` (segment by segment), multipliers ``mu``
+        self.unknowns = Layout(q=n, ell=2 * n, mu=self.rows)
         f, self.mode = _function(n, angle)
         self._f = Fast(f)
 
@@ -126,16 +110,9 @@ class InverseStatics:
         return y, res, it, f.dense(2).copy(), float(out[3][0]), out[4].copy(), f.dense(1).copy()
 
 
-_local = threading.local()
-
-
 def inverse_statics(n: int, angle: bool = False) -> InverseStatics:
-    """This thread's :class:`InverseStatics` (built once per thread, ``n`` and ``angle``)."""
-    cache = getattr(_local, "cache", None)
-    if cache is None:
-        cache = _local.cache = {}
-    key = (n, bool(angle))
-    obj = cache.get(key)
-    if obj is None:
-        obj = cache[key] = InverseStatics(n, bool(angle))
-    return obj
+    """This thread's :class:`InverseStatics` (built once per thread, ``n`` and ``angle``: :mod:`.per_thread`)."""
+    return _inverse_statics(n, bool(angle))
+
+
+_inverse_statics = per_thread(InverseStatics)

@@ -18,13 +18,14 @@ Kernels (``n <= KERNEL_MAX`` segments)
 ``seeds``
     ``newton`` with ``SEED_ITER`` iterations over the starts of a global search at once
     (``seed_columns(n)`` columns, idle ones skipped), and which of the converged points are
-    distinct (the comparison of :func:`tensegrity_opt.analyses.equilibria.least_energy.distinct_rows`, done here so the
-    search need not compare ``k^2`` rows in numpy).
+    distinct (the rule of :mod:`.distinct`, done here so the search need not compare ``k^2`` rows in numpy).
+``distinct``
+    That comparison alone, on given rows (:func:`distinct_function`).
 ``continuation``
     ``BATCH`` targets in order, each solved by ``CONT_ITER`` iterations from the previous
     target's solution (``mapaccum``), with the same per-point outputs.
 
-The damped step is the one of :meth:`.chain_solver.BoundSolver.newton_kkt` (:mod:`.newton`): the Newton
+The damped step is the one of :meth:`.chain_solver.ChainSolver.newton_kkt` (:mod:`.newton`): the Newton
 direction, its angle part capped at ``MAX_STEP`` rad, then the first of ``TRIALS`` halved
 step lengths that decreases the residual norm (Armijo); when none does the iterate stays.
 As there, an iterate whose residual norm is at most the threshold is final: the remaining
@@ -34,37 +35,28 @@ A converged start thus costs its own iterations, not ``SEED_ITER``.
 The kernels only propose: the caller checks the residual against its tolerance, the range
 and the stability, and falls back to the Python Newton method (and IPOPT) otherwise.
 
-Where the C code goes
----------------------
-Into ``TENSEGRITY_CACHE_DIR`` (default ``$XDG_CACHE_HOME/tensegrity_opt`` or
-``~/.cache/tensegrity_opt``), one shared library per ``n``, named by a hash of the
-generated code and the compiler command, so an upgrade never loads stale code. The
-compiler is ``$CC`` or the first of ``cc``, ``gcc``, ``clang`` on the ``PATH``. Without a
-compiler (or with ``TENSEGRITY_COMPILE=0``) the same graphs run in CasADi's SX virtual
-machine: about four times slower, same results; one ``RuntimeWarning`` per process says so and why
-(the variable set, or no compiler found: install ``gcc``).
+How they are built
+------------------
+By :func:`.build.load`: generated to C and compiled once per machine (one shared library per ``n``),
+CasADi's virtual machine when no compiler is found or ``TENSEGRITY_COMPILE=0`` (about four times slower,
+same results; one ``RuntimeWarning`` per process says so and why).
 """
 
 from __future__ import annotations
 
 import functools
-import hashlib
-import os
-import shutil
-import subprocess
-import tempfile
-import threading
-import warnings
 from dataclasses import dataclass
-from pathlib import Path
 
 import casadi as ca
 import numpy as np
 
+from .build import COMPILED, cache_dir, compiler, libraries, load
+from .distinct import same
 from .expressions import kkt_graph
+from .layout import Layout
 
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "BATCH", "Kernels", "build", "cache_dir",
-           "compiler", "seed_columns", "seed_row", "status"]
+           "compiler", "seed_columns", "seed_layout", "point_layout", "distinct_function", "status"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3 and is
 #: no faster than LAPACK driven from Python; benchmarks/RESULTS.md, "Measurement notes").
@@ -86,16 +78,20 @@ MAX_STEP = 0.5
 
 
 @functools.lru_cache(maxsize=None)
-def seed_row(n: int) -> dict[str, slice | int]:
-    """Where each output of a start sits in its row of the ``seeds`` kernel's output (``width``: the row
-    length): ``q`` (n), ``F`` (2), ``norm``, ``iters``, ``E``, ``tip`` (2), ``R`` ((n-2)^2, column-major),
-    ``margin`` (max |q_i| - limit_i: >= 0 means on or beyond the physical range), ``distinct`` (1 when the
-    start converged inside the range to a point differing by at least ``same`` in some joint angle from
-    every earlier such start's; :func:`tensegrity_opt.analyses.equilibria.least_energy.distinct_rows` over the call's rows)."""
-    m2 = (n - 2) ** 2
-    return {"q": slice(0, n), "F": slice(n, n + 2), "norm": n + 2, "iters": n + 3, "E": n + 4,
-            "tip": slice(n + 5, n + 7), "R": slice(n + 7, n + 7 + m2), "margin": n + 7 + m2,
-            "distinct": n + 8 + m2, "width": n + 9 + m2}
+def seed_layout(n: int) -> Layout:
+    """The outputs of one start, its row of the ``seeds`` kernel's output: ``q`` (n), ``F`` (2), ``norm``,
+    ``iters``, ``E``, ``tip`` (2), ``R`` ((n-2)^2, column-major), ``margin`` (max |q_i| - limit_i: >= 0 means
+    on or beyond the physical range), ``distinct`` (1 when the start converged inside the range to a point
+    that is not the same (:mod:`.distinct`, tolerance ``same``) as any earlier such start's kept one)."""
+    return Layout(q=n, F=2, norm=(), iters=(), E=(), tip=2, R=(n - 2) ** 2, margin=(), distinct=())
+
+
+@functools.lru_cache(maxsize=None)
+def point_layout(n: int) -> Layout:
+    """The outputs at each target of the ``continuation`` kernel (its ``Y``, one column per target): the
+    residual ``norm``, the ``iters`` that moved, the energy ``E``, the ``tip`` (2) and ``R`` ((n-2)^2,
+    column-major)."""
+    return Layout(norm=(), iters=(), E=(), tip=2, R=(n - 2) ** 2)
 
 
 def seed_columns(n: int) -> int:
@@ -106,52 +102,6 @@ def seed_columns(n: int) -> int:
 
 #: Targets per ``continuation`` call.
 BATCH = 128
-
-_FLAGS = ["-O2", "-fPIC", "-shared"]
-_lock = threading.Lock()
-_warned = False
-
-
-def _warn(why: str) -> None:
-    """One warning per process: the kernels run in CasADi's virtual machine, and why."""
-    global _warned
-    if not _warned:
-        _warned = True
-        warnings.warn(f"tensegrity_opt: {why}; the Newton kernels run in CasADi's virtual machine instead "
-                      "(about 4x slower, same results)", RuntimeWarning, stacklevel=5)
-
-
-def cache_dir() -> Path:
-    """Directory of the compiled kernels (``TENSEGRITY_CACHE_DIR`` or the user's cache directory)."""
-    env = os.environ.get("TENSEGRITY_CACHE_DIR")
-    if env:
-        return Path(env)
-    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-    return Path(base) / "tensegrity_opt"
-
-
-def _switched_off() -> str | None:
-    """The value of ``TENSEGRITY_COMPILE`` when it switches compilation off (``0``, ``false``, ``no``, ``off``)."""
-    value = os.environ.get("TENSEGRITY_COMPILE", "1")
-    return value if value.strip().lower() in ("0", "false", "no", "off") else None
-
-
-def compiler() -> str | None:
-    """The C compiler used (``$CC`` or ``cc``/``gcc``/``clang``), or ``None`` (then no compilation)."""
-    if _switched_off() is not None:
-        return None
-    cc = os.environ.get("CC")
-    if cc:
-        path = shutil.which(cc)
-        if path is None:
-            _warn(f"the C compiler CC={cc!r} was not found")
-        return path
-    for name in ("cc", "gcc", "clang"):
-        path = shutil.which(name)
-        if path:
-            return path
-    return None
-
 
 # ----------------------------------------------------------------------------- the graphs
 def _householder_null_basis(A: ca.SX) -> ca.SX:
@@ -169,28 +119,34 @@ def _householder_null_basis(A: ca.SX) -> ca.SX:
     return (Q1 @ Q2)[:, 2:n]
 
 
-def _distinct(n: int, cols: int) -> ca.Function:
-    """``(rows, active, thresh, same) -> distinct (1 x cols)``: a column is distinct when it is active, its
-    start converged (``norm <= thresh``) inside the range (``margin < 0``) and no earlier such column's
-    joint angles all lie within ``same`` of its own (:func:`tensegrity_opt.analyses.equilibria.least_energy.distinct_rows`, the
-    same comparisons). The pairs are compared by one small function mapped over them (a loop in the C
-    code, not one comparison per pair written out: the generated code stays small)."""
-    at = seed_row(n)
-    qi, qj, same = ca.SX.sym("qi", n), ca.SX.sym("qj", n), ca.SX.sym("same")
-    near = ca.Function("near", [qi, qj, same], [ca.mmax(ca.fabs(qi - qj)) < same])
+def distinct_function(n: int, cols: int) -> ca.Function:
+    """``(rows, active, thresh, same) -> distinct (1 x cols)``: a column (a start's outputs, :func:`seed_layout`
+    without ``distinct``) is distinct when it is active, converged (``norm <= thresh``) inside the range
+    (``margin < 0``) and not the same (:func:`.distinct.same`, tolerance ``same``) as any earlier column kept so
+    (the rule of :func:`.distinct.distinct_rows`). The pairs are compared by one small function mapped over
+    them (a loop in the C code, not one comparison per pair written out: the generated code stays small)."""
+    at = seed_layout(n)
+    qi, qj, tol = ca.SX.sym("qi", n), ca.SX.sym("qj", n), ca.SX.sym("same")
+    near = ca.Function("near", [qi, qj, tol], [same(qi, qj, tol, fabs=ca.fabs, largest=ca.mmax)])
     pairs = [(i, j) for i in range(cols) for j in range(i)]
-    Y, act, th, sm = ca.MX.sym("rows", at["width"] - 1, cols), ca.MX.sym("active", 1, cols), ca.MX.sym("th"), \
+    Y, act, th, sm = ca.MX.sym("rows", at.size - 1, cols), ca.MX.sym("active", 1, cols), ca.MX.sym("th"), \
         ca.MX.sym("same")
     Q = Y[at["q"], :]
     close = near.map(len(pairs))(Q[:, [i for i, _ in pairs]], Q[:, [j for _, j in pairs]], ca.repmat(sm, 1, len(pairs)))
-    # the logic over the pairs' results: straight-line SX (a few hundred operations)
+    # the logic over the pairs' results: straight-line SX (a few hundred operations), column by column
     c, g = ca.SX.sym("close", 1, len(pairs)), ca.SX.sym("good", 1, cols)
-    seen = [ca.SX(0)] * cols
-    for p, (i, j) in enumerate(pairs):
-        seen[i] = ca.logic_or(seen[i], ca.logic_and(g[j], c[p]))
-    keep = ca.Function("keep", [c, g], [ca.horzcat(*[ca.logic_and(g[i], ca.logic_not(seen[i])) for i in range(cols)])])
+    keep: list[ca.SX] = []
+    p = 0
+    for i in range(cols):
+        taken = ca.SX(0)
+        for j in range(i):                              # pairs (i, 0), (i, 1), ... in order
+            taken = ca.logic_or(taken, ca.logic_and(keep[j], c[p]))
+            p += 1
+        keep.append(ca.logic_and(g[i], ca.logic_not(taken)))
+    kept = ca.Function("keep", [c, g], [ca.horzcat(*keep)])
     good = ca.logic_and(act != 0, ca.logic_and(Y[at["norm"], :] <= th, Y[at["margin"], :] < 0))
-    return ca.Function("distinct", [Y, act, th, sm], [keep(close, good)])
+    return ca.Function("distinct", [Y, act, th, sm], [kept(close, good)], ["rows", "active", "thresh", "same"],
+                       ["distinct"])
 
 
 def _extended(p):
@@ -284,22 +240,23 @@ def _graphs(n: int) -> dict[str, ca.Function]:
 
     # the starts of a global search, one per column (relative angles; force from eq. (8)); a column whose
     # `active` flag is 0 is not solved (padding: Switch) -> one column per start, [q; F; norm; iters; E; tip;
-    # R; margin; distinct] (seed_row), read by Python as rows
+    # R; margin; distinct] (seed_layout), read by Python as rows
     solve_s = run(SEED_ITER)
     pes = ca.MX.sym("pe", P)                            # one column's inputs: the extended parameters
     phi_s = ca.cumsum(q0)
     zs, ns, its_s, Es, ts, Rs = solve_s(ca.vertcat(phi_s, ls(phi_s, pes)), pes, tm, th)
     q_s = zs[:n] - ca.vertcat(0, zs[:n - 1])
-    width = seed_row(n)["width"] - 1
+    width = seed_layout(n).size - 1
     one = ca.Function("seed", [q0, pes, tm, th], [ca.vertcat(q_s, zs[n:], ns, its_s, Es, ts, Rs,
                                                              ca.mmax(ca.fabs(q_s) - (np.pi - 2 * pes[6 * n:7 * n])))])
     idle = ca.Function("idle", [q0, pes, tm, th], [ca.DM.zeros(width)])
     col = ca.Function.if_else("column", one, idle)
     cols = seed_columns(n)
-    Q0s, act, same = ca.MX.sym("q0", n, cols), ca.MX.sym("active", 1, cols), ca.MX.sym("same")
+    Q0s, act, same_q = ca.MX.sym("q0", n, cols), ca.MX.sym("active", 1, cols), ca.MX.sym("same")
     rows = col.map(cols)(act, Q0s, ca.repmat(pe, 1, cols), ca.repmat(tm, 1, cols), ca.repmat(th, 1, cols))
-    seeds = ca.Function("seeds", [Q0s, act, pm, tm, th, same],
-                        [ca.vertcat(rows, _distinct(n, cols)(rows, act, th, same))],
+    distinct = distinct_function(n, cols)
+    seeds = ca.Function("seeds", [Q0s, act, pm, tm, th, same_q],
+                        [ca.vertcat(rows, distinct(rows, act, th, same_q))],
                         ["q0", "active", "p", "target", "thresh", "same"], ["rows"])
 
     solve_c = run(CONT_ITER)
@@ -311,53 +268,19 @@ def _graphs(n: int) -> dict[str, ca.Function]:
     Zc, Yc = cont(z0, ca.vertcat(ca.repmat(pe, 1, BATCH), T, ca.repmat(th, 1, BATCH)))
     continuation = ca.Function("continuation", [z0, T, pm, th], [Zc, Yc],
                                ["z0", "targets", "p", "thresh"], ["Z", "Y"])
-    return {"newton": newton, "seeds": seeds, "continuation": continuation}
+    return {"newton": newton, "seeds": seeds, "continuation": continuation, "distinct": distinct}
 
 
-# ----------------------------------------------------------------------------- compile and load
-def _compile(n: int, funcs: dict[str, ca.Function]) -> str | None:
-    """Generate C for ``funcs``, compile it into the cache (once per machine); the library's path, or
-    ``None`` (with one warning) when anything on the way fails — never an error for the caller."""
-    cc = compiler()
-    if cc is None:
-        off = _switched_off()
-        _warn(f"TENSEGRITY_COMPILE={off} switches compilation off" if off is not None else
-              "no C compiler was found (CC, cc, gcc, clang; e.g. apt-get install gcc)")
-        return None
-    try:
-        return _compile_with(cc, f"tensegrity_kernels_n{n}", funcs)
-    except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
-        detail = (getattr(exc, "stderr", None) or b"").decode(errors="replace")[:300]
-        _warn(f"compiling the Newton kernels with {cc} failed ({exc} {detail})")
-        return None
-
-
-def _compile_with(cc: str, name: str, funcs: dict[str, ca.Function]) -> str:
-    with tempfile.TemporaryDirectory(prefix="tensegrity-kernels-") as tmp:
-        cg = ca.CodeGenerator(f"{name}.c", {"with_header": False})
-        for f in funcs.values():
-            cg.add(f)
-        src_path = Path(cg.generate(tmp + os.sep))
-        key = hashlib.sha256(src_path.read_bytes() + " ".join([cc, *_FLAGS, ca.__version__]).encode()).hexdigest()
-        target = cache_dir() / f"{name}_{key[:16]}.so"
-        if target.exists():
-            return str(target)
-        target.parent.mkdir(parents=True, exist_ok=True)
-        tmp_so = Path(tmp) / "out.so"
-        subprocess.run([cc, *_FLAGS, str(src_path), "-o", str(tmp_so), "-lm"], check=True, capture_output=True,
-                       timeout=300)
-        # atomic: concurrent processes may each compile; readers never see half a file
-        staged = target.with_name(f"{target.name}.{os.getpid()}.{threading.get_ident()}.tmp")
-        shutil.copyfile(tmp_so, staged)
-        os.replace(staged, target)
-        return str(target)
+# ----------------------------------------------------------------------------- build
+def _library(n: int) -> str:
+    return f"tensegrity_kernels_n{n}"
 
 
 def status() -> dict[str, object]:
     """How the kernels run in this process: the compiler, the cache directory, and the chain lengths
     loaded so far as compiled code or in the virtual machine."""
-    with _lock:
-        loaded = dict(_loaded)
+    libs = libraries()
+    loaded = {n: libs[_library(n)] for n in range(2, KERNEL_MAX + 1) if _library(n) in libs}
     return {"compiler": compiler(), "cache_dir": str(cache_dir()), "max_segments": KERNEL_MAX,
             "compiled": sorted(n for n, path in loaded.items() if path),
             "virtual_machine": sorted(n for n, path in loaded.items() if not path)}
@@ -371,35 +294,16 @@ class Kernels:
     newton: ca.Function
     seeds: ca.Function
     continuation: ca.Function
+    distinct: ca.Function
     mode: str
 
 
-_NAMES = ("newton", "seeds", "continuation")
-#: Per process and ``n``: the compiled library's path, or ``""`` when the kernels run in the VM.
-_loaded: dict[int, str] = {}
-
-
 def build(n: int) -> Kernels:
-    """Kernels for ``n`` segments (graphs from :func:`.expressions.kkt_graph`).
-
-    The library is compiled once per machine and its path found once per process; every call
-    returns new ``Function`` instances, for the calling thread's model (a CasADi Function
-    evaluates in its own memory and must not be called by two threads at once).
-    """
+    """Kernels for ``n`` segments (graphs from :func:`.expressions.kkt_graph`), for the calling thread
+    (:func:`.build.load`: compiled once per machine, loaded once per process)."""
     if not 2 <= n <= KERNEL_MAX:
         raise ValueError(f"kernels exist for 2 <= n <= {KERNEL_MAX}, got n={n}")
-    funcs = None
-    with _lock:
-        path = _loaded.get(n)
-        if path is None:
-            funcs = _graphs(n)
-            path = _loaded[n] = _compile(n, funcs) or ""
-    if path:
-        try:
-            return Kernels(n, *(ca.external(k, path) for k in _NAMES), "compiled")
-        except RuntimeError as exc:                 # an unloadable library: never fatal
-            _warn(f"loading {path} failed ({exc})")
-            with _lock:
-                _loaded[n] = ""
-    funcs = funcs or _graphs(n)                      # this thread's own instances
-    return Kernels(n, funcs["newton"].expand(), funcs["seeds"], funcs["continuation"], "virtual machine")
+    loaded = load(_library(n), "the Newton kernels", lambda: _graphs(n))
+    f = loaded.functions
+    newton = f["newton"] if loaded.mode == COMPILED else f["newton"].expand()
+    return Kernels(n, newton, f["seeds"], f["continuation"], f["distinct"], loaded.mode)

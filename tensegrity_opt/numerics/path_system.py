@@ -24,25 +24,25 @@ Functions (inputs ``x = (q, F, t, s)``, ``p``, ``dp``, ``dp2``, ``ctl`` — the 
   derivatives for the extended systems (Moore-Spence fold system, the cusp test).
 
 Relative angles throughout (the joint range is a box in them); dense, so built for
-``n <= DENSE_MAX`` only. Per thread, like every CasADi function here. For ``n <= KERNEL_MAX`` the two
-functions are generated to C and compiled once per machine like the Newton kernels (:mod:`.kernels`:
-the same cache, compiler and ``TENSEGRITY_COMPILE=0`` switch; without a compiler they run in CasADi's
-virtual machine, about ten times slower, same results).
+``n <= DENSE_MAX`` only. Per thread (:mod:`.per_thread`), like every CasADi function here. For
+``n <= KERNEL_MAX`` the functions are generated to C and compiled once per machine like the Newton kernels
+(:func:`.build.load`; without a compiler they run in CasADi's virtual machine, about ten times slower, same
+results).
 """
 
 from __future__ import annotations
 
-import os
-import subprocess
-import threading
 from functools import lru_cache
 
 import casadi as ca
 import numpy as np
 
-from . import kernels as _kernels
 from ._fast import Fast
+from .build import VIRTUAL_MACHINE, load
 from .expressions import segment_energy, tip_expression
+from .kernels import KERNEL_MAX
+from .layout import Layout
+from .per_thread import per_thread
 
 __all__ = ["PathSystem", "path_system", "CONTROL_SIZE"]
 
@@ -88,12 +88,14 @@ def _step(n: int, path: ca.Function) -> ca.Function:
     ``x_a + h tau / w``, then ``STEP_ITER`` Newton iterations on ``[R(x); (w tau) . x - b] = 0``
     (``b = tau . (w x_a) + h``), each kept once the scaled residual ``max |rs R|`` and the arclength
     condition are below ``tol`` (the iterate then stays); at the last iterate its residual, the number of
-    iterations that moved (the caller checks the arclength condition), the tangent there (``[R_x / w; tau] v = e``, normalised) and the path outputs.
+    iterations that moved (the caller checks the arclength condition), the tangent there
+    (``[R_x / w; tau] v = e``, normalised) and the path outputs.
     The caller checks ``res`` and falls back to the Python corrector."""
     N = n + 2
     xa, tau, w = ca.SX.sym("xa", N + 1), ca.SX.sym("tau", N + 1), ca.SX.sym("w", N + 1)
     h, tol, rs = ca.SX.sym("h"), ca.SX.sym("tol"), ca.SX.sym("rs", N)
-    p, dp, dp2, ctl = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n), ca.SX.sym("ctl", CONTROL_SIZE)
+    p, dp, dp2 = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n)
+    ctl = ca.SX.sym("ctl", CONTROL_SIZE)
     aw = tau * w
     b = ca.dot(tau, w * xa) + h
     x = xa + h * tau / w
@@ -116,34 +118,15 @@ def _step(n: int, path: ca.Function) -> ca.Function:
                        [x, res, moved, v, R, Rx, H, J, E, tip])
 
 
-_compiled: dict[int, str] = {}
-_lock = threading.Lock()
-
-
 def _functions(n: int) -> tuple[ca.Function, ca.Function, ca.Function, str]:
     """This thread's ``path``, ``second`` and ``step`` Functions and how they run (``"compiled"`` /
     ``"virtual machine"``)."""
-    if 2 <= n <= _kernels.KERNEL_MAX and os.environ.get("TENSEGRITY_COMPILE", "1") != "0":
-        with _lock:
-            lib = _compiled.get(n)
-            if lib is None:
-                path, second, step = _graphs(n)
-                lib = ""
-                cc = _kernels.compiler()
-                if cc is not None:
-                    try:
-                        lib = _kernels._compile_with(cc, f"tensegrity_paths_n{n}",
-                                                     {"path": path, "second": second, "step": step})
-                    except (OSError, RuntimeError, subprocess.SubprocessError) as exc:
-                        _kernels._warn(f"compiling the path functions with {cc} failed ({exc})")
-                _compiled[n] = lib
-        if lib:
-            try:
-                return ca.external("path", lib), ca.external("second", lib), ca.external("step", lib), "compiled"
-            except RuntimeError as exc:
-                _kernels._warn(f"loading {lib} failed ({exc})")
-    path, second, step = _graphs(n)
-    return path, second, step, "virtual machine"
+    if 2 <= n <= KERNEL_MAX:
+        loaded = load(f"tensegrity_paths_n{n}", "the path functions",
+                      lambda: dict(zip(("path", "second", "step"), _graphs(n))))
+        f = loaded.functions
+        return f["path"], f["second"], f["step"], loaded.mode
+    return (*_graphs(n), VIRTUAL_MACHINE)
 
 
 class PathSystem:
@@ -151,6 +134,8 @@ class PathSystem:
 
     def __init__(self, n: int) -> None:
         self.n = n
+        #: the point ``x = (q, F, t, s)`` of the functions (the control parameter ``t``, the second one ``s``)
+        self.point = Layout(q=n, F=2, t=(), s=())
         path, second, step, self.mode = _functions(n)
         self._path = Fast(path)
         self._second = Fast(second)
@@ -185,18 +170,10 @@ class PathSystem:
         return out[0].copy(), f.dense(1).copy(), out[2].copy()
 
 
-_local = threading.local()
-
-
+@per_thread
 def path_system(n: int) -> PathSystem:
-    """This thread's :class:`PathSystem` for ``n`` segments (built once per thread and ``n``)."""
-    cache = getattr(_local, "cache", None)
-    if cache is None:
-        cache = _local.cache = {}
-    ps = cache.get(n)
-    if ps is None:
-        ps = cache[n] = PathSystem(n)
-    return ps
+    """This thread's :class:`PathSystem` for ``n`` segments (:func:`.per_thread.per_thread`)."""
+    return PathSystem(n)
 
 
 def control_vector(A_tip, A_F, c, tip_ref, F_ref) -> np.ndarray:

@@ -47,7 +47,7 @@ class LocalResult:
 
 @dataclass
 class Continuation:
-    """Points of a compiled continuation (:meth:`BoundSolver.batch_continue`), N of them.
+    """Points of a compiled continuation (:meth:`ChainSolver.batch_continue`), N of them.
 
     ``Z`` (N, n+2) the iterates ``(phi, F)``, ``residual`` (N,) the KKT residual norm there (large
     where Newton failed); from the kernels also ``energy`` (N,), ``tip`` (N, 2),
@@ -68,14 +68,14 @@ class Continuation:
 
 @dataclass
 class SeedResults:
-    """Local solves from k starts as arrays (:meth:`BoundSolver.newton_kkt_seeds`; numpy only).
+    """Local solves from k starts as arrays (:meth:`ChainSolver.newton_kkt_seeds`; numpy only).
 
     ``q`` (k, n), ``force`` (k, 2), ``success``/``on_bound`` (k,) bool, ``iterations`` (k,),
     ``status`` (k statuses), and the kernels' ``energy`` (k,), ``tip`` (k, 2) and
     ``reduced_hessian`` (k, n-2, n-2) at each point: NaN in the rows that came from the Python
     Newton method (classify those from the model); ``reduced_hessian`` is ``None`` when no row has
     one (chains without kernels). ``distinct`` (k,) bool when the kernel compared the rows
-    (:meth:`BoundSolver.newton_kkt_seeds`), else ``None``.
+    (:meth:`ChainSolver.newton_kkt_seeds`), else ``None``.
     """
 
     q: np.ndarray

@@ -4,6 +4,7 @@ import math
 
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from tensegrity_opt import InvalidParameterError, Manipulator, Segment, UnreachableTargetError
 
@@ -158,3 +159,72 @@ def test_roundtrip_dict():
     m = Manipulator([Segment(1, 1, (1, 2), 1.0), Segment(0.5, 2.0, 3.0, (1.0, 1.5))])
     assert Manipulator.from_dict(m.to_dict()) == m
     assert Manipulator.from_dict({"n": 3, "a": 1, "b": 2, "k": 1, "L0": 3}) == Manipulator.uniform(3, 1, 2, 1, 3)
+
+
+# ----------------------------------------------------------------------------- unloaded critical angles
+def _critical_by_grid(seg, num=400001):
+    """Wells and hilltops of the unloaded segment by an independent route: the torque on a fine grid (shifted
+    off q = 0), each sign change refined by scipy's brentq to the last bits; + to - is a well (M = -E')."""
+    lim = seg.joint_limit
+    qs = np.linspace(-lim, lim, num)[1:-1] + 0.37 * (2 * lim / (num - 1))
+    qs = qs[np.abs(qs) < lim]
+    M = seg.torque(qs)
+    wells, tops = [], []
+    for i in np.flatnonzero(np.sign(M[:-1]) != np.sign(M[1:])):
+        root = brentq(lambda q: float(seg.torque(q)), float(qs[i]), float(qs[i + 1]), xtol=1e-15, rtol=1e-15)
+        (wells if M[i] > 0 else tops).append(root)
+    return np.array(wells), np.array(tops)
+
+
+def _random_segment(rng, family):
+    if family == "monotonic":
+        a, b, k = rng.uniform(0.3, 1.2), rng.uniform(0.8, 1.5), rng.uniform(0.3, 3.0)
+        K = k * rng.uniform(0.2, 2.0)
+        return Segment(a, b, k, (2 * (b * b - a * a) + K / k) / b)
+    if family == "bistable":
+        a, b, k = rng.uniform(0.3, 0.6), rng.uniform(0.9, 1.4), rng.uniform(0.3, 3.0)
+        K = -k * rng.uniform(0.05, 0.8) * (b * b - a * a)
+        return Segment(a, b, k, (2 * (b * b - a * a) + K / k) / b)
+    if family == "asymmetric":
+        a, b = rng.uniform(0.3, 0.8), rng.uniform(0.9, 1.4)
+        L = 2 * (b * b - a * a) / b
+        return Segment(a, b, tuple(rng.uniform(0.3, 3.0, 2)), tuple(L * rng.uniform(0.6, 1.5, 2)))
+    if family == "a > b":
+        a, b = rng.uniform(1.1, 1.6), rng.uniform(0.5, 1.0)
+        return Segment(a, b, rng.uniform(0.3, 3.0), rng.uniform(0.2, 3.0))
+    if family == "K ~ 0":
+        a, b, k = rng.uniform(0.3, 0.6), rng.uniform(0.9, 1.4), rng.uniform(0.3, 3.0)
+        K = k * rng.choice([-1.0, 1.0]) * rng.uniform(1e-7, 1e-5) * (a * a + b * b)
+        return Segment(a, b, k, (2 * (b * b - a * a) + K / k) / b)
+    raise ValueError(family)
+
+
+@pytest.mark.parametrize("family", ["monotonic", "bistable", "asymmetric", "a > b", "K ~ 0"])
+def test_critical_angles_match_an_independent_grid_and_bisection(family):
+    rng = np.random.default_rng(sum(map(ord, family)))
+    kinds = set()
+    for _ in range(25):
+        seg = _random_segment(rng, family)
+        wells, tops = seg.critical_angles()
+        ref_wells, ref_tops = _critical_by_grid(seg)
+        assert wells.shape == ref_wells.shape and tops.shape == ref_tops.shape, (seg, wells, ref_wells, tops, ref_tops)
+        np.testing.assert_allclose(wells, ref_wells, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(tops, ref_tops, rtol=0, atol=1e-9)
+        np.testing.assert_array_equal(seg.critical_points(), np.sort(np.concatenate([wells, tops])))
+        assert np.all(np.abs(seg.critical_points()) < seg.joint_limit)
+        assert np.all(np.abs(seg.torque(seg.critical_points())) <= 1e-12 * max(seg.k1, seg.k2) * seg.c ** 2)
+        if seg.symmetric:
+            np.testing.assert_array_equal(seg.critical_points(), -seg.critical_points()[::-1])
+        kinds.add((wells.size, tops.size))
+    if family in ("bistable", "K ~ 0"):
+        assert (2, 1) in kinds                          # both wells and the hilltop between them
+    if family == "monotonic":
+        assert kinds == {(1, 0)}
+
+
+def test_torque_polynomial_is_the_torque_on_the_unit_circle():
+    seg = Segment(0.7, 1.1, (1.3, 0.6), (1.4, 0.9))
+    coef = seg.torque_polynomial()
+    for q in (-1.2, -0.3, 0.0, 0.5, 1.4):
+        z = np.exp(0.5j * q)
+        assert sum(c * z ** p for p, c in coef.items()) == pytest.approx(-float(seg.torque(q)), abs=1e-13)

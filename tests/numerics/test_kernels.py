@@ -15,9 +15,8 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt.numerics import kernels
+from tensegrity_opt.numerics import SAME_Q, build, chain_solver, kernels
 from tensegrity_opt.analyses.equilibria.seeds import seed_starts, seeds
-from tensegrity_opt.numerics import chain_solver
 from tensegrity_opt.analyses.equilibria.stability import inertia_of_reduced, reduced_hessian
 
 from reference_model import Chain
@@ -33,14 +32,12 @@ CHAINS = {
 
 def _python_newton(m, target, q0, F0=None):
     """The damped Newton method in Python (the kernels' step rule, driven from numpy/LAPACK)."""
-    mdl = chain_solver(m).solver
-    mdl._set_scale(m.params)
+    mdl = chain_solver(m)
     phi = np.cumsum(q0)
     if F0 is None:
         F0 = m.force_from_torques(q0)
     z = np.concatenate([phi, F0])
-    return mdl._newton(lambda zz: mdl._fast_kkt(zz, m.params, target), mdl._fast_kkt, z, m.joint_limits, 1e-12,
-                       50, kernels.MAX_STEP, None)
+    return mdl._newton(mdl.functions.fast_kkt, None, (m.params, target), z, 1e-12, 50, kernels.MAX_STEP, None)
 
 
 @pytest.mark.parametrize("name", CHAINS)
@@ -48,7 +45,7 @@ def test_kernel_solutions_are_equilibria_with_their_energy_tip_and_reduced_hessi
     m = CHAINS[name]
     mdl = chain_solver(m)
     assert mdl.kernel_mode is not None
-    assert mdl.kernel_mode == ("compiled" if kernels.compiler() else "virtual machine")
+    assert mdl.kernel_mode == ("compiled" if build.compiler() else "virtual machine")
     checked = 0
     for dx, dy in [(0.05, 0.0), (0.4, 0.2), (1.2, -0.5)]:
         target = m.target(dx, dy)
@@ -115,10 +112,10 @@ def test_seed_batch_equals_single_starts():
 
 
 def _distinct_by_hand(q, good, same):
-    """Rows kept by a plain double loop: good, and no earlier good row within ``same`` in every angle."""
+    """Rows kept by a plain double loop: good, and no earlier kept row within ``same`` in every angle."""
     keep = []
     for i in range(len(q)):
-        keep.append(bool(good[i]) and not any(good[j] and max(abs(a - b) for a, b in zip(q[i], q[j])) < same
+        keep.append(bool(good[i]) and not any(keep[j] and max(abs(a - b) for a, b in zip(q[i], q[j])) < same
                                               for j in range(i)))
     return np.array(keep)
 
@@ -128,10 +125,9 @@ def test_seed_call_marks_the_distinct_converged_rows(name):
     # the kernel's marks against a double loop over the rows it returned (many starts coincide: each
     # search below has duplicates), whether or not every start converged in the call
     m = CHAINS[name]
-    mdl = chain_solver(m).solver
-    mdl._set_scale(m.params)
-    thresh = 1e-12 * mdl._scale
-    fast, cols, at = mdl.kernel[2], kernels.seed_columns(m.n), kernels.seed_row(m.n)
+    mdl = chain_solver(m)
+    thresh = 1e-12 * mdl.scale
+    fast, cols, at = mdl.functions.kernel.seeds, kernels.seed_columns(m.n), kernels.seed_layout(m.n)
     reach = 2 * float(np.sum(m.b))
     dup = 0
     for dx, dy in [(0.02 * reach, 0.0), (0.1 * reach, 0.03 * reach), (0.3 * reach, 0.0)]:
@@ -141,10 +137,10 @@ def test_seed_call_marks_the_distinct_converged_rows(name):
         src[:k] = starts
         src[k] = starts[0]                      # one start twice: the same point, never distinct the second time
         active = (np.arange(cols) <= k).astype(float)
-        Y = fast(src.ravel(), active, m.params, m.target(dx, dy), thresh, 1e-7)[0].reshape(cols, -1).copy()
-        good = (active > 0) & (Y[:, at["norm"]] <= thresh) & (Y[:, at["margin"]] < 0)
-        expected = _distinct_by_hand(Y[:, at["q"]].tolist(), good.tolist(), 1e-7)
-        np.testing.assert_array_equal(Y[:, at["distinct"]] > 0.5, expected)
+        Y = at.unpack(fast(src.ravel(), active, m.params, m.target(dx, dy), thresh, SAME_Q)[0].reshape(cols, -1))
+        good = (active > 0) & (Y["norm"] <= thresh) & (Y["margin"] < 0)
+        expected = _distinct_by_hand(Y["q"].tolist(), good.tolist(), SAME_Q)
+        np.testing.assert_array_equal(Y["distinct"] > 0.5, expected)
         assert not expected[k]
         dup += int(good.sum() - expected.sum())
     assert dup > 3
@@ -155,10 +151,10 @@ def test_search_rows_carry_the_distinct_marks_only_when_one_call_settled_every_s
     mdl = chain_solver(m)
     target = m.target(0.1, 0.0)
     starts = seed_starts(m, 0.1, 0.0)
-    b = mdl.newton_kkt_seeds(target, starts, 1e-7)
+    b = mdl.newton_kkt_seeds(target, starts, SAME_Q)
     assert b.distinct is not None and bool(b.success.all())
     good = b.success & ~b.on_bound
-    np.testing.assert_array_equal(b.distinct, _distinct_by_hand(b.q.tolist(), good.tolist(), 1e-7))
+    np.testing.assert_array_equal(b.distinct, _distinct_by_hand(b.q.tolist(), good.tolist(), SAME_Q))
     assert mdl.newton_kkt_seeds(target, starts).distinct is None     # not asked for
 
 
@@ -167,7 +163,7 @@ def test_more_starts_than_one_call_takes_leave_the_comparison_to_the_caller():
     mdl = chain_solver(m)
     starts = np.vstack([seed_starts(m, 0.4, 0.0)] * 2)
     assert starts.shape[0] > kernels.seed_columns(4)
-    b = mdl.newton_kkt_seeds(m.target(0.4, 0.0), starts, 1e-7)
+    b = mdl.newton_kkt_seeds(m.target(0.4, 0.0), starts, SAME_Q)
     assert b.distinct is None
     half = starts.shape[0] // 2
     np.testing.assert_array_equal(b.q[:half], b.q[half:])       # the same starts give the same points
@@ -225,7 +221,7 @@ def _child(tmp_path, **env):
     return json.loads(r.stdout.strip().splitlines()[-1])
 
 
-@pytest.mark.skipif(kernels.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
+@pytest.mark.skipif(build.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
 def test_compiled_cached_and_virtual_machine_give_the_same_answers(tmp_path):
     first = _child(tmp_path)
     assert first["mode"] == "compiled" and not first["warnings"]
@@ -236,7 +232,7 @@ def test_compiled_cached_and_virtual_machine_give_the_same_answers(tmp_path):
     assert second["mode"] == "compiled"
     assert sorted((tmp_path / "cache").glob("*")) == libs and libs[0].stat().st_mtime_ns == stamp
     vm = _child(tmp_path, TENSEGRITY_COMPILE="0")
-    # issue 18: the README promised a warning here and none came; one, naming the variable
+    # one warning, naming the variable
     assert vm["mode"] == "virtual machine"
     assert [w for w in vm["warnings"] if "TENSEGRITY_COMPILE=0" in w and "virtual machine" in w] == vm["warnings"]
     assert len(vm["warnings"]) == 1
@@ -275,7 +271,7 @@ def test_kernels_exist_only_for_short_chains():
         kernels.build(1)
 
 
-@pytest.mark.skipif(kernels.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
+@pytest.mark.skipif(build.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
 def test_a_corrupt_cached_library_warns_and_falls_back(tmp_path):
     _child(tmp_path)
     (lib,) = (tmp_path / "cache").glob("*.so")
@@ -287,7 +283,7 @@ def test_a_corrupt_cached_library_warns_and_falls_back(tmp_path):
     np.testing.assert_allclose(np.array(again["q"]), np.array(reference), atol=1e-10)
 
 
-@pytest.mark.skipif(kernels.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
+@pytest.mark.skipif(build.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
 def test_an_unwritable_cache_directory_warns_and_falls_back(tmp_path):
     blocker = tmp_path / "file"
     blocker.write_text("a file where the cache directory should be")

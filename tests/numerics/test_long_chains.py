@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt.numerics import ChainSolver, chain_solver
+from tensegrity_opt.numerics import ChainFunctions, ChainSolver, chain_solver
 from tensegrity_opt.analyses.equilibria.stability import inertia_of
 
 
@@ -35,8 +35,8 @@ def test_uniform_chain_loads_scale_like_a_column():
 def both_models():
     n = 80
     m = wavy_chain(n)
-    dense_model = ChainSolver(n, "dense").bind(m)       # the dense route beyond DENSE_MAX, for comparison
-    banded_model = ChainSolver(n).bind(m)
+    dense_model = ChainSolver(ChainFunctions(n, "dense"), m)     # the dense route beyond DENSE_MAX, for comparison
+    banded_model = ChainSolver(ChainFunctions(n), m)
     assert dense_model.dense and not banded_model.dense
     return m, dense_model, banded_model
 

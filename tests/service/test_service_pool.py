@@ -112,7 +112,7 @@ def test_no_stray_cancellation_hits_later_calls():
 
 def test_each_call_runs_on_one_worker_thread_with_its_own_solvers():
     """Library calls in the pool agree with the main thread's; each worker owns its CasADi model."""
-    from tensegrity_opt.numerics import ChainSolver
+    from tensegrity_opt.numerics import chain_functions
 
     pool = SolverPool(2, 64)
     m = to.Manipulator.uniform(4)
@@ -121,7 +121,7 @@ def test_each_call_runs_on_one_worker_thread_with_its_own_solvers():
     lock = threading.Lock()
 
     def job():
-        mdl = ChainSolver.cached(4)
+        mdl = chain_functions(4)
         with lock:
             seen.setdefault(threading.get_ident(), id(mdl))
             assert seen[threading.get_ident()] == id(mdl)
@@ -134,7 +134,7 @@ def test_each_call_runs_on_one_worker_thread_with_its_own_solvers():
         for eq in asyncio.run(main()):
             assert eq.q.tolist() == pytest.approx(expected.q.tolist(), rel=1e-9, abs=1e-12)
         assert len(set(seen.values())) == len(seen)      # one model object per thread, never shared
-        assert id(ChainSolver.cached(4)) not in seen.values()
+        assert id(chain_functions(4)) not in seen.values()
     finally:
         pool.shutdown()
 

@@ -301,7 +301,7 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
 
 
 class _Shaper:
-    """One call's stiffness NLP: the variable and row layout, bounds, parameters and the solves."""
+    """One call's stiffness NLP: its bounds, rows and parameters (packed by the NLP's layouts) and the solves."""
 
     def __init__(self, m, target, Kd, kb, eb, load, end_angle, margin, lo, hi) -> None:
         from ...numerics import stiffness_nlp
@@ -313,8 +313,7 @@ class _Shaper:
         self.Ls = float(m.straight_length / n)
         self.Ks = self.Ts / self.Ls ** 2                # the stiffness scale: the NLP's K is K / Ks
         self.nlp = stiffness_nlp(n)
-        self.nL = n * (n + 1) // 2
-        self.r_K = n + 3 + self.nL + 2 * n + n          # first row of K + s
+        self.x, self.g, self.p = self.nlp.variables, self.nlp.constraints, self.nlp.parameters
         self.lim = m.joint_limits * (1 - RANGE_SHRINK)
         self.ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
         Ks = self.Ks
@@ -332,54 +331,66 @@ class _Shaper:
     # ------------------------------------------------------------------ layout
     def start(self, pose: PreloadDesign) -> np.ndarray:
         """``x`` at a verified pose: its angles and rest lengths, the compliance columns, the margin's factor."""
+        from ...numerics.design_nlp import tril_vector
+
         n = self.n
         _, _, Hphi, J, _ = chain_solver(pose.manipulator).evaluate(pose.q, self.load)
         Hq = self.T.T @ Hphi @ self.T
         Y = np.linalg.solve(Hphi, J.T) * self.Ts / self.Ls
         w_, V_ = np.linalg.eigh(Hq - self.margin * np.eye(n))
         Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
-        lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
-        return np.concatenate([np.cumsum(pose.q), pose.preloads[:, 0], pose.preloads[:, 1], [self.margin], lv0,
-                               Y[:, 0], Y[:, 1], [0.0]])
+        return self.x.pack(phi=np.cumsum(pose.q), L10=pose.preloads[:, 0], L20=pose.preloads[:, 1], mu=self.margin,
+                           L=tril_vector(Lc), Y=Y.ravel(order="F"), s=0.0)
 
     def box(self, elastic: bool):
-        n, nL = self.n, self.nL
-        lbx = np.concatenate([np.full(n, -_INF), self.lo2, [self.margin], np.full(nL, -_INF), np.full(2 * n, -_INF),
-                              [0.0]])
-        ubx = np.concatenate([np.full(n, _INF), self.hi2, [self.margin], np.full(nL, _INF), np.full(2 * n, _INF),
-                              [_INF if elastic else 0.0]])
-        for k_ in self.nlp.diag:
-            lbx[3 * n + 1 + k_] = 0.0
+        n, floor = self.n, self.nlp.factor_floor
+        lbx = self.x.pack(phi=-_INF, L10=self.lo2[:n], L20=self.lo2[n:], mu=self.margin, L=floor, Y=-_INF, s=0.0)
+        ubx = self.x.pack(phi=_INF, L10=self.hi2[:n], L20=self.hi2[n:], mu=self.margin, L=_INF, Y=_INF,
+                          s=_INF if elastic else 0.0)
         return lbx, ubx
 
     def rows(self, k_lo, k_hi):
-        n, nL = self.n, self.nL
-        lbg = np.concatenate([np.zeros(n), self.target, [self.ea[0]], np.zeros(nL), np.zeros(2 * n), -self.lim,
-                              k_lo, np.full(3, -_INF), self.e_lb])
-        ubg = np.concatenate([np.zeros(n), self.target, [self.ea[1]], np.zeros(nL), np.zeros(2 * n), self.lim,
-                              np.full(3, _INF), k_hi, np.full(4, _INF)])
+        lbg = self.g.pack(grad=0.0, tip=self.target, angle=self.ea[0], psd=0.0, compliance=0.0, q=-self.lim,
+                          K_lo=k_lo, K_hi=-_INF, eig=self.e_lb)
+        ubg = self.g.pack(grad=0.0, tip=self.target, angle=self.ea[1], psd=0.0, compliance=0.0, q=self.lim,
+                          K_lo=_INF, K_hi=k_hi, eig=_INF)
         return lbg, ubg
 
     def params(self, w):
         m = self.m
-        return np.concatenate([m.a, m.b, m.k1, m.k2, self.load, self.L0nom, self.Kd_s, w, self.e_p, [self.Ts, self.Ls]])
+        return self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=self.load, L0nom=self.L0nom, Kd=self.Kd_s, w=w,
+                           eig=self.e_p, scales=[self.Ts, self.Ls])
+
+    def slack(self, x) -> float:
+        """The relaxation ``s`` of the stiffness bounds at ``x`` (scaled; 0 outside the elastic mode)."""
+        return float(x[self.x["s"]])
+
+    def with_slack(self, x, s: float) -> np.ndarray:
+        """A copy of ``x`` with the relaxation ``s``."""
+        out = x.copy()
+        out[self.x["s"]] = s
+        return out
+
+    def pose(self, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(q, L10, L20)`` of the NLP's point ``x``: relative joint angles and the rest lengths, clipped
+        into their bounds (IPOPT may step 1e-8 outside)."""
+        v, n = self.x.unpack(x), self.n
+        return (np.diff(np.concatenate([[0.0], v["phi"]])), np.clip(v["L10"], self.lo2[:n], self.hi2[:n]),
+                np.clip(v["L20"], self.lo2[n:], self.hi2[n:]))
 
     def K_of(self, x) -> np.ndarray:
         """The stiffness (force / length) of the NLP's point ``x`` (its ``K`` rows)."""
         g = self.nlp.rows(x, self.params([0.0, 0.0, 0.0]))
-        kxx, kxy, kyy = (g[self.r_K:self.r_K + 3] - x[-1]) * self.Ks
+        kxx, kxy, kyy = (self.g.unpack(g)["K_lo"] - self.slack(x)) * self.Ks
         return np.array([[kxx, kxy], [kxy, kyy]])
 
     def misfit(self, x) -> float:
         return float(np.linalg.norm(self.K_of(x) - self.Kd) / np.linalg.norm(self.Kd))
 
     def best(self, x) -> dict[str, Any]:
-        n = self.n
-        L10 = np.clip(x[n:2 * n], self.lo2[:n], self.hi2[:n])
-        L20 = np.clip(x[2 * n:3 * n], self.lo2[n:], self.hi2[n:])
+        q, L10, L20 = self.pose(x)
         K = self.K_of(x)
-        return {"q": np.diff(np.concatenate([[0.0], x[:n]])).tolist(),
-                "rest_lengths": np.column_stack([L10, L20]).tolist(), "K": K.tolist(),
+        return {"q": q.tolist(), "rest_lengths": np.column_stack([L10, L20]).tolist(), "K": K.tolist(),
                 "violations": [v for v, _ in _violations(K, self.kb, self.eb, self.Ks)]}
 
     def slack_needed(self, x) -> float:
@@ -406,13 +417,10 @@ class _Shaper:
         res = self.solve(x)
         if res.success:
             return res, None
-        xe = x.copy()
-        xe[-1] = self.slack_needed(x) + 0.1
+        xe = self.with_slack(x, self.slack_needed(x) + 0.1)
         el = self.solve(xe, elastic=True, w=[0.0, 1e-6, 1.0])
-        if el.success and el.x[-1] <= 1e-8:
-            xs = el.x.copy()
-            xs[-1] = 0.0
-            res = self.solve(xs)
+        if el.success and self.slack(el.x) <= 1e-8:
+            res = self.solve(self.with_slack(el.x, 0.0))
             if res.success:
                 return res, el
         return None, el if el.success else None
@@ -484,7 +492,7 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
         x0 = sh.start(pose)
         if Kd is None:
             res, el = sh.feasible(x0)
-            if el is not None and (elastic_best is None or el.x[-1] < elastic_best.x[-1]):
+            if el is not None and (elastic_best is None or sh.slack(el.x) < sh.slack(elastic_best.x)):
                 elastic_best = el
         else:
             res, exact = sh.fit(x0)
@@ -507,7 +515,7 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
         raise verify_error
     if elastic_best is not None:
         best = sh.best(elastic_best.x)
-        best["least_violation"] = float(elastic_best.x[-1] * sh.Ks)
+        best["least_violation"] = float(sh.slack(elastic_best.x) * sh.Ks)
         why = "; ".join(best["violations"])
         msg = (f"no rest lengths within their bounds give this stiffness at a stable pose: the least violation "
                f"of the stiffness bounds found is {best['least_violation']:.6g} (force / length), at "
@@ -519,13 +527,10 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
 
 def _verified(sh: _Shaper, res) -> StiffnessDesign:
     """The forward check of an NLP solution, and the result built from the recomputed numbers."""
-    m, n, lo2, hi2, load, target = sh.m, sh.n, sh.lo2, sh.hi2, sh.load, sh.target
+    m, load, target = sh.m, sh.load, sh.target
     kb, eb, Kd, Ks, T = sh.kb, sh.eb, sh.Kd, sh.Ks, sh.T
     best = sh.best(res.x)
-    x = res.x
-    L10 = np.clip(x[n:2 * n], lo2[:n], hi2[:n])
-    L20 = np.clip(x[2 * n:3 * n], lo2[n:], hi2[n:])
-    q = np.diff(np.concatenate([[0.0], x[:n]]))
+    q, L10, L20 = sh.pose(res.x)
     m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
     try:
         eq = solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)

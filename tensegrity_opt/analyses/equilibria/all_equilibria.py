@@ -29,7 +29,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
 from ...model.manipulator import Manipulator
-from ...numerics import KERNEL_MAX, chain_solver
+from ...numerics import KERNEL_MAX, chain_solver, distinct
 from .equilibrium import (
     RESIDUAL_TOL,
     Equilibrium,
@@ -204,28 +204,16 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
             results.append(res)
     if dy == 0.0 and results and m == m.mirrored():
         # a mirror-symmetric chain at dy = 0: -q is an equilibrium whenever q is (force (Fx, -Fy))
-        for r in _unique(results, dedupe_tol):
+        for r in distinct(results, dedupe_tol):
             res = local_equilibrium(m, target, -r.q, r.force * np.array([1.0, -1.0]))
             if is_equilibrium(m, res, target):
                 results.append(res)
     if not results:
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())), found=0)
-    eqs = _sorted(m, _unique(results, dedupe_tol))
+    eqs = _sorted(m, distinct(results, dedupe_tol))
     return EquilibriumSet(eqs, method="search", certified=False,
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
-
-
-def _unique(results, tol: float) -> list:
-    """The first of each group of results whose angles agree within ``tol`` (max-norm), in order."""
-    if not results:
-        return []
-    Q = np.array([r.q for r in results])
-    kept = [0]
-    for i in range(1, Q.shape[0]):
-        if np.abs(Q[kept] - Q[i]).max(axis=1).min() >= tol:
-            kept.append(i)
-    return [results[i] for i in kept]
 
 
 def _sorted(m: Manipulator, results) -> list[Equilibrium]:
@@ -235,8 +223,7 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from ...numerics import LocalResult
-    from ...numerics.homotopy import real_configurations, rest_points_at, solve_homotopy
+    from ...numerics.homotopy import polish_roots, real_configurations, rest_points_at, solve_homotopy
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
@@ -250,32 +237,11 @@ def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: fl
     F = np.vstack([F, np.zeros((rest.shape[0], 2))])
     inside = np.concatenate([inside, np.ones(rest.shape[0], dtype=bool)])
     regular = np.concatenate([regular, np.ones(rest.shape[0], dtype=bool)])
-    polished, lost, singular = [], 0, []
-    for qi, Fi, reg in zip(q[inside], F[inside], regular[inside]):
-        res = local_equilibrium(m, target, qi, Fi)
-        near = 1e-6 if reg else 1e-3            # a singular root comes to ~sqrt(eps) or worse
-        if is_equilibrium(m, res, target) and np.max(np.abs(res.q - qi)) < near:
-            (polished if reg else singular).append(res)
-        elif m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL and m.in_range(qi):
-            # a root Newton cannot improve (its residual checked here)
-            (polished if reg else singular).append(LocalResult(qi, Fi, True, "phc_root", 0))
-        else:
-            lost += 1
-    regular_set = _unique(polished, 1e-9)
-    # distinct regular roots closer than dedupe_tol would be merged below: a near-degenerate pair the
-    # certificate does not separate
-    close = len(regular_set) - len(_unique(regular_set, dedupe_tol))
-    found = _unique(regular_set + singular, dedupe_tol if not singular else max(dedupe_tol, 1e-4))
-    certified = sol.complete and lost == 0 and close == 0
-    why = []
-    if not sol.consistent:
-        why.append("phc's report did not check out")
-    if lost:
-        why.append(f"{lost} real roots did not polish")
-    if close:
-        why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
-    status = (f"phc ({sol.attempts} run{'s' if sol.attempts > 1 else ''}): {sol.paths} paths, {sol.failures} failed, "
-              f"{sol.at_infinity} at infinity, {sol.singular} singular; {int(inside.sum())} real roots in range"
-              + (f" ({rest.shape[0]} with F = 0)" if rest.shape[0] else "") + "".join(f"; {w}" for w in why))
-    return EquilibriumSet(_sorted(m, found), method="homotopy", certified=certified,
-                          paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=status)
+    out = polish_roots(sol, q[inside], F[inside], regular[inside],
+                       polish=lambda qi, Fi: local_equilibrium(m, target, qi, Fi),
+                       accept=lambda res: is_equilibrium(m, res, target),
+                       root_is_equilibrium=lambda qi, Fi: (m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL
+                                                           and m.in_range(qi)),
+                       dedupe_tol=dedupe_tol, note=f" ({rest.shape[0]} with F = 0)" if rest.shape[0] else "")
+    return EquilibriumSet(_sorted(m, out.found), method="homotopy", certified=out.certified,
+                          paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=out.status)

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import math
 from collections import Counter
-from functools import lru_cache
 
 import numpy as np
 
@@ -30,7 +29,7 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
-from ...numerics import KERNEL_MAX, LocalResult, chain_solver
+from ...numerics import KERNEL_MAX, SAME_Q, LocalResult, chain_solver, distinct, distinct_indices, same
 from ...outcome import SolverInfo
 from .equilibrium import (
     Equilibrium,
@@ -46,7 +45,7 @@ from .equilibrium import (
 from .seeds import projected_sample, seed_starts, well_seeds
 from .stability import inertia_of_reduced
 
-__all__ = ["solve_equilibrium", "search_stable", "WELLS_MAX", "SAME_Q", "distinct", "distinct_rows"]
+__all__ = ["solve_equilibrium", "search_stable", "WELLS_MAX"]
 
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
@@ -171,7 +170,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
                                  f"{len(starts)} starts ({n_unstable} unstable ones); method='auto' adds IPOPT",
                                  status=_summary(statuses))
     stable, n_unstable = search_stable(m, target, descents, statuses, minimize=True)
-    stable = found + [e for e in stable if not any(np.max(np.abs(e.q - f.q)) < SAME_Q for f in found)]
+    stable = found + [e for e in stable if not any(same(e.q, f.q) for f in found)]
     if stable:
         return _pick(stable, q0, m.torque_scale)
     if n_unstable:
@@ -266,7 +265,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     energy = b.energy.tolist()
     if b.distinct is not None:
         # one kernel call settled every start (all converged, no Python-method row) and compared the
-        # converged points inside the range (the test of distinct_rows)
+        # converged points inside the range (the rule of tensegrity_opt.numerics.distinct)
         idx = np.flatnonzero(b.distinct).tolist()
         bound = int(np.count_nonzero(b.on_bound))
         _count(statuses, "Newton_Converged", False, True, len(energy) - bound)
@@ -279,7 +278,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
             good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
         for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
             _count(statuses, status, bound, ok, count)
-        idx = _distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
+        idx = distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
     known = {}                                      # Python-method rows: classified from the model
     for j in idx:
         if energy[j] != energy[j]:
@@ -309,71 +308,12 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     return [e for _, e in stable], n_unstable
 
 
-def _distinct_indices(Q: np.ndarray, idx: list[int]) -> list[int]:
-    """The indices in ``idx`` whose rows of ``Q`` are distinct (:func:`distinct_rows`), in order.
-
-    Beyond 64 rows (the thousands of starts of a multistable chain) the same test without the k x k
-    comparison: each row is compared with the earlier rows whose first angle lies within ``SAME_Q``
-    (a sorted list of all earlier rows, bisected), as :func:`distinct_rows` compares it with every
-    earlier row."""
-    if len(idx) < 2:
-        return list(idx)
-    if len(idx) <= 64:
-        return [j for j, keep in zip(idx, distinct_rows(Q[idx]).tolist()) if keep]
-    import bisect
-
-    keys: list[float] = []
-    rows: list[int] = []
-    out = []
-    first = Q[:, 0].tolist()
-    for j in idx:
-        x = first[j]
-        lo, hi = bisect.bisect_left(keys, x - SAME_Q), bisect.bisect_right(keys, x + SAME_Q)
-        if not (lo < hi and np.min(np.abs(Q[rows[lo:hi]] - Q[j]).max(axis=1)) < SAME_Q):
-            out.append(j)
-        pos = bisect.bisect_left(keys, x)
-        keys.insert(pos, x)
-        rows.insert(pos, j)
-    return out
-
-
 def _count(statuses: dict[str, int], status: str, on_bound: bool, ok: bool, times: int = 1) -> None:
     """Tally ``times`` local solves' outcome under their status (with why they were rejected)."""
     if times <= 0:
         return
     key = status if ok else (status + (" (on joint limit)" if on_bound else " (rejected)"))
     statuses[key] = statuses.get(key, 0) + times
-
-
-#: Two configurations closer than this in every joint angle (rad) are the same equilibrium.
-SAME_Q = 1e-7
-
-
-def distinct(results: list[LocalResult]) -> list[LocalResult]:
-    """The results whose ``q`` differs (by more than ``SAME_Q`` in some joint) from every earlier one's
-    (the first of each group of coinciding results is kept)."""
-    if len(results) < 2:
-        return list(results)
-    keep = distinct_rows(np.array([r.q for r in results]))
-    return [r for r, k in zip(results, keep.tolist()) if k]
-
-
-def distinct_rows(Q: np.ndarray) -> np.ndarray:
-    """Boolean mask of the rows of ``Q`` (k, n) that differ by more than ``SAME_Q`` in some entry from
-    every earlier row (the first of each group of coinciding rows is kept)."""
-    k = Q.shape[0]
-    if k < 2:
-        return np.ones(k, dtype=bool)
-    same = np.abs(Q[:, None, :] - Q[None, :, :]).max(axis=2) < SAME_Q
-    return ~(same & _earlier(k)).any(axis=1)
-
-
-@lru_cache(maxsize=64)
-def _earlier(k: int) -> np.ndarray:
-    """``[i, j]`` true where ``j < i`` (k x k), read only."""
-    lower = np.tri(k, k, -1, dtype=bool)
-    lower.setflags(write=False)
-    return lower
 
 
 #: Energies within this relative distance of the least one tie (mirror images; the same point twice),

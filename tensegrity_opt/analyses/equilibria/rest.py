@@ -7,10 +7,10 @@
 * :func:`rest_configuration` - the least-energy stable configuration of the unloaded chain.
 
 ``F = 0`` is exact: the energy is a sum of one-joint terms ``E(q) = sum_j E_j(q_j)``, so ``grad E = 0``
-splits into the segments' own torque equations. Each segment's unloaded critical points are the real
-roots of a quartic (:func:`tensegrity_opt.numerics.homotopy.unloaded_critical_angles`, companion
-matrix eigenvalues), united with the torque's sign changes on a grid refined by bisection and polished
-by Newton on the segment's torque, and the chain's equilibria are exactly their Cartesian product,
+splits into the segments' own torque equations. Each segment's unloaded critical points
+(:meth:`tensegrity_opt.model.segment.Segment.critical_points`: the real roots of a quartic united with
+the torque's sign changes on a grid, polished by Newton) are found once, in the model, and the chain's
+equilibria are exactly their Cartesian product,
 certified. The Hessian in the relative angles is ``diag(E_j''(q_j))``, so a product point's Morse index
 is the number of its factors that are maxima, and it is a minimum iff every factor is (Sylvester's law
 of inertia carries this to the absolute-angle Hessian the other analyses report). A monotonic segment
@@ -22,7 +22,7 @@ Within ~1e-9 of the torque scale of a pitchfork (``K ~ 0``) the critical points 
 double precision and come out ``"degenerate"``.
 
 ``F != 0`` couples the joints. ``method="search"`` runs damped Newton on the force equations
-(:meth:`~tensegrity_opt.numerics.BoundSolver.newton_force`) from many starts and is complete in
+(:meth:`~tensegrity_opt.numerics.ChainSolver.newton_force`) from many starts and is complete in
 practice, not certified; ``method="homotopy"`` (``n <= 6``, PHCpack) finds every isolated complex
 root of the polynomial force system (:func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy`)
 and is certified when every path ended and every real root inside the range polished.
@@ -38,14 +38,12 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from ...model.manipulator import Manipulator
-from ...numerics import LocalResult, chain_solver
+from ...numerics import LocalResult, chain_solver, distinct
 from ...outcome import SolverInfo
-from ...numerics.homotopy import unloaded_critical_angles
 from ...timelimit import check_time
-from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, _unique
+from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet
 from .buckling import critical_force
 from .equilibrium import RESIDUAL_TOL, Equilibrium, is_equilibrium, make_equilibrium
-from .seeds import segment_critical_points
 
 __all__ = ["ANGLE_DIGITS", "ENERGY_TIE", "MAX_PRODUCT", "find_equilibria_under_force", "rest_configuration",
            "rest_points"]
@@ -78,62 +76,17 @@ MAX_MODES = 12
 
 
 # ----------------------------------------------------------------------------- the unloaded segments
-#: Unloaded critical points of one segment closer than this (rad) are one: below it two roots of the torque
-#: are not resolved in double precision (near a pitchfork, ``K ~ 0``, the roots spread as ``sqrt(-K)``).
-MERGE_TOL = 1e-7
-
-
 @lru_cache(maxsize=256)
 def _segment_points(m: Manipulator) -> tuple[tuple[np.ndarray, np.ndarray, np.ndarray], ...]:
     """Per segment ``(angles, E_j'' there, E_j there)``: every unloaded critical point inside the range,
-    ascending (read-only arrays; cached per chain).
-
-    Two routes, united: the roots of the torque's quartic (:func:`unloaded_critical_angles`: every root,
-    also a close pair no grid separates, but ill-conditioned near a multiple root) and the sign changes of
-    the torque on a grid refined by bisection (:func:`.seeds.segment_critical_points`: accurate to the last
-    bit for simple roots). Each is polished by up to three Newton steps on the torque ``M(q) = -E'(q)``
-    (kept when they lower ``|M|`` and move it by less than ``1e-6`` rad), then points closer than
-    ``MERGE_TOL`` are merged (the one with the least ``|M|`` kept). A symmetric segment's set is made exactly
-    symmetric (``0`` and ``+-w``), so the mirror images of a mirror-symmetric chain come out exact.
-    """
+    ascending (:meth:`~tensegrity_opt.model.segment.Segment.critical_points`; read-only arrays, cached per
+    chain)."""
     out = []
-    for j, seg in enumerate(m.segments):
-        lim = seg.joint_limit
-        wells, tops = segment_critical_points(seg)
-        cand = np.concatenate([unloaded_critical_angles(m, j), wells, tops]).astype(float)
-        pts: list[tuple[float, float]] = []          # (q, |M(q)|)
-        for q0 in cand.tolist():
-            x, r = q0, abs(float(seg.torque(q0)))
-            for _ in range(3):
-                d = float(seg.dtorque(x))
-                if d == 0.0:
-                    break
-                y = x - float(seg.torque(x)) / d
-                ry = abs(float(seg.torque(y))) if abs(y) < lim else math.inf
-                if not ry < r or abs(y - q0) >= 1e-6:
-                    break
-                x, r = y, ry
-            pts.append((x, r))
-        pts.sort()
-        merged: list[tuple[float, float]] = []
-        for x, r in pts:
-            if merged and x - merged[-1][0] < MERGE_TOL:
-                if r < merged[-1][1]:
-                    merged[-1] = (x, r)
-            else:
-                merged.append((x, r))
-        q = np.array([x for x, _ in merged if abs(x) < lim], dtype=float)
-        if seg.symmetric:                            # M(0) = 0 exactly; the roots pair as +-w
-            pos = [x for x in np.abs(q).tolist() if x >= MERGE_TOL]
-            keep: list[float] = []
-            for v in sorted(pos):
-                if not keep or v - keep[-1] >= MERGE_TOL:
-                    keep.append(v)
-            q = np.concatenate([-np.array(keep[::-1]), [0.0], np.array(keep)])
-        q = np.sort(q)
+    for seg in m.segments:
+        q = seg.critical_points()
         d2 = -np.asarray(seg.dtorque(q), dtype=float).reshape(-1)
         e = np.asarray(seg.energy(q), dtype=float).reshape(-1)
-        for a in (q, d2, e):
+        for a in (d2, e):
             a.setflags(write=False)
         out.append((q, d2, e))
     return tuple(out)
@@ -343,9 +296,9 @@ def _search(m: Manipulator, force: np.ndarray, n_random: int, dedupe_tol: float)
                 keep(pol)
     # mirror images: -q is an equilibrium of a mirror-symmetric chain under (fx, -fy), so of this one when
     # fy = 0; elsewhere a start near another basin
-    for r in _unique(found, dedupe_tol):
+    for r in distinct(found, dedupe_tol):
         keep(newton(-r.q))
-    unique = _unique(found, dedupe_tol)
+    unique = distinct(found, dedupe_tol)
     eqs = [make_equilibrium(m, r, constrained=False) for r in unique]
     return EquilibriumSet(_sorted(m, eqs, force), method="search", certified=False,
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
@@ -360,7 +313,7 @@ def _sorted(m: Manipulator, eqs: list[Equilibrium], force: np.ndarray) -> list[E
 
 # ----------------------------------------------------------------------------- F != 0: the homotopy
 def _homotopy(m: Manipulator, force: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from ...numerics.homotopy import real_force_configurations, solve_force_homotopy
+    from ...numerics.homotopy import polish_roots, real_force_configurations, solve_force_homotopy
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
@@ -368,33 +321,13 @@ def _homotopy(m: Manipulator, force: np.ndarray, dedupe_tol: float, timeout: flo
     sol = solve_force_homotopy(m, force, timeout=timeout)
     q, inside, regular = real_force_configurations(m, sol)
     mdl = chain_solver(m)
-    polished, lost, singular = [], 0, []
-    for qi, reg in zip(q[inside], regular[inside]):
-        res = mdl.newton_force(force, qi)
-        near = 1e-6 if reg else 1e-3            # a singular root comes to ~sqrt(eps) or worse
-        if is_equilibrium(m, res) and np.max(np.abs(res.q - qi)) < near:
-            (polished if reg else singular).append(res)
-        elif m.equilibrium_residual(qi, force) <= RESIDUAL_TOL and m.in_range(qi):
-            # a root Newton cannot improve (its residual checked here)
-            (polished if reg else singular).append(LocalResult(qi, force.copy(), True, "phc_root", 0))
-        else:
-            lost += 1
-    regular_set = _unique(polished, 1e-9)
-    # distinct regular roots closer than dedupe_tol would be merged below: a near-degenerate pair the
-    # certificate does not separate
-    close = len(regular_set) - len(_unique(regular_set, dedupe_tol))
-    found = _unique(regular_set + singular, dedupe_tol if not singular else max(dedupe_tol, 1e-4))
-    certified = sol.complete and lost == 0 and close == 0
-    why = []
-    if not sol.consistent:
-        why.append("phc's report did not check out")
-    if lost:
-        why.append(f"{lost} real roots did not polish")
-    if close:
-        why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
-    status = (f"phc ({sol.attempts} run{'s' if sol.attempts > 1 else ''}): {sol.paths} paths, {sol.failures} failed, "
-              f"{sol.at_infinity} at infinity, {sol.singular} singular; {int(inside.sum())} real roots in range"
-              + "".join(f"; {w}" for w in why))
+    q = q[inside]
+    out = polish_roots(sol, q, np.tile(force, (q.shape[0], 1)), regular[inside],
+                       polish=lambda qi, Fi: mdl.newton_force(force, qi), accept=lambda res: is_equilibrium(m, res),
+                       root_is_equilibrium=lambda qi, Fi: (m.equilibrium_residual(qi, force) <= RESIDUAL_TOL
+                                                           and m.in_range(qi)),
+                       dedupe_tol=dedupe_tol)
+    found, certified, status = out.found, out.certified, out.status
     eqs = [make_equilibrium(m, r, constrained=False) for r in found]
     return EquilibriumSet(_sorted(m, eqs, force), method="homotopy", certified=certified,
                           paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=status)

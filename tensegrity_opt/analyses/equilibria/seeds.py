@@ -27,10 +27,11 @@ import numpy as np
 from ...errors import TensegrityError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
+from ...numerics import distinct_rows
 from .buckling import critical_force, quad_G, tip_slope
 
 __all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds", "well_seeds", "project_to_target",
-           "projected_sample", "segment_critical_points"]
+           "projected_sample"]
 
 
 @dataclass(frozen=True)
@@ -191,49 +192,13 @@ def seeds(m: Manipulator, dx: float, dy: float, *, max_modes: int = 6, amplitude
 WELL_PATTERNS = 729
 
 
-@lru_cache(maxsize=512)
-def segment_critical_points(seg: Segment, num: int = 801) -> tuple[tuple[float, ...], tuple[float, ...]]:
-    """The unloaded segment's wells (minima of ``E(q)``) and hilltops (maxima) inside its range.
-
-    A monotonic segment has one well (``q = 0`` when symmetric, its rest angle when pre-bent) and no
-    hilltop; a bistable one (``K < 0``) two wells around a hilltop. Found as the sign changes of the
-    torque on a grid over the range, refined by bisection (plain numpy: the model layer)."""
-    lim = seg.joint_limit
-    qs = np.linspace(-lim, lim, num)[1:-1]
-    qs = qs + 0.5 * (qs[1] - qs[0]) * (np.abs(qs) < 1e-12)   # no grid point exactly on q = 0 (M(0) = 0 there)
-    M = seg.torque(qs)
-    wells, tops = [], []
-    for i in np.flatnonzero((M[:-1] > 0) != (M[1:] > 0)).tolist():
-        lo, hi = float(qs[i]), float(qs[i + 1])
-        flo = float(M[i])
-        for _ in range(60):
-            mid = 0.5 * (lo + hi)
-            fm = float(seg.torque(mid))
-            if (fm > 0) == (flo > 0):
-                lo, flo = mid, fm
-            else:
-                hi = mid
-        root = 0.5 * (lo + hi)
-        (wells if M[i] > 0 else tops).append(root)    # M = -E': + -> - is a minimum of E
-    return _merged(wells), _merged(tops)
-
-
-def _merged(roots: list[float], tol: float = 1e-9) -> tuple[float, ...]:
-    """The roots with near-duplicates (closer than ``tol``) merged."""
-    out: list[float] = []
-    for r in sorted(roots):
-        if not out or r - out[-1] > tol:
-            out.append(r)
-    return tuple(out)
-
-
 def _pattern_matrix(m: Manipulator, hilltops: bool, cap: int, rng_seed: int) -> np.ndarray:
     """Configurations built from one unloaded critical point per segment: every combination while
     there are at most ``cap``, else the combinations with all segments in the same well plus a
     fixed-seed random sample."""
     choices = []
     for s in m.segments:
-        wells, tops = segment_critical_points(s)
+        wells, tops = s.critical_angles()
         pts = list(wells) + (list(tops) if hilltops else [])
         choices.append(pts or [0.0])
     total = 1
@@ -309,10 +274,4 @@ def well_seeds(m: Manipulator, dx: float, dy: float, *, hilltops: bool = True, c
         return np.zeros((0, m.n))
     P = _pattern_matrix(m, hilltops, cap, rng_seed)
     Q = project_to_target(m, P, m.target(dx, dy))
-    if Q.shape[0] < 2:
-        return Q
-    keep = [0]
-    for i in range(1, Q.shape[0]):
-        if np.min(np.abs(Q[keep] - Q[i]).max(axis=1)) >= dedupe:
-            keep.append(i)
-    return Q[keep]
+    return Q[distinct_rows(Q, dedupe)]

@@ -462,20 +462,3 @@ def test_sampled_starts_rows_are_true_equilibria():
     for j in ok:
         assert m.in_range(b.q[j]) and m.equilibrium_residual(b.q[j], b.force[j], target) < 1e-9
         assert b.energy[j] == pytest.approx(m.energy(b.q[j]), rel=1e-12)
-
-
-def test_distinct_rows_of_large_samples_match_the_pairwise_test():
-    """The bisected comparison used beyond 64 rows keeps exactly the rows distinct_rows keeps (the
-    k x k pairwise test), also where near-coincident rows chain (noise ~ SAME_Q / 2)."""
-    from tensegrity_opt.analyses.equilibria.least_energy import (
-        SAME_Q,
-        _distinct_indices,
-        distinct_rows,
-    )
-
-    rng = np.random.default_rng(0)
-    base = rng.uniform(-1, 1, (100, 5))
-    Q = base[rng.integers(0, 100, 2000)] + rng.normal(0, 0.4 * SAME_Q, (2000, 5))
-    idx = sorted(rng.choice(2000, 1500, replace=False).tolist())
-    expected = [j for j, keep in zip(idx, distinct_rows(Q[idx]).tolist()) if keep]
-    assert _distinct_indices(Q, idx) == expected
