@@ -41,7 +41,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
-from ...outcome import Outcome, freeze
+from ...outcome import Outcome
 from ...serialize import number, numbers
 
 __all__ = ["Mode", "Buckling", "critical_force", "straight_matrices"]
@@ -88,7 +88,9 @@ class Mode:
     stable: bool
 
     def __post_init__(self) -> None:
-        freeze(self, copy=False)            # critical_force builds the arrays for it
+        # critical_force builds the arrays for it: read-only in place (as freeze(copy=False), without its loop)
+        self.q.flags.writeable = False
+        self.vector.flags.writeable = False
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (an item of ``modes`` in ``POST /v1/buckling``): ``load``, ``q``, ``fy``,
@@ -136,7 +138,12 @@ class Buckling(Outcome):
     message: str = ""
 
     def __post_init__(self) -> None:
-        freeze(self, copy=False)            # critical_force builds the arrays for it
+        # critical_force builds the arrays for it: read-only in place (as freeze(copy=False), without its loop)
+        self.loads.flags.writeable = False
+        if not isinstance(self.modes, tuple):
+            object.__setattr__(self, "modes", tuple(self.modes))
+        if self.status not in self.STATUSES:
+            self._check_outcome()
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/buckling``): ``success``, ``status``, ``message``, ``boundary``,
