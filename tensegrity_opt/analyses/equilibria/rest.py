@@ -225,7 +225,7 @@ def _exact_set(m: Manipulator, stable_only: bool) -> EquilibriumSet:
                 "pass stable_only=True for the minima only, or ask rest_configuration(m) for the least-energy one")
         raise InvalidParameterError(f"this chain of n = {m.n} segments has {count} {what}, more than the "
                                     f"{MAX_PRODUCT} returned at once: {hint}", field="n", count=count)
-    product = "the product of the segments' unloaded critical points" + (": their wells" if stable_only else "")
+    product = "the product of the segments' unloaded critical points" + (" (their wells only)" if stable_only else "")
     if count == 0:
         return EquilibriumSet([], method="exact", status="exact",
                               message=f"{product}, empty: a segment has none inside its range")
