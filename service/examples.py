@@ -29,16 +29,21 @@ def _eq(q, energy, fx, fy, mi, kind, shape, signs) -> dict[str, Any]:
             "solver": {"status": "converged", "iterations": 5}}
 
 
-EQUILIBRIA = {"equilibria": [
-    _eq([0.178155, -0.076587, -0.245053, -0.131183], 4.057381, -0.574823, 0.025785, 0, "minimum", "U", "+---"),
-    _eq([-0.178155, 0.076587, 0.245053, 0.131183], 4.057381, -0.574823, -0.025785, 0, "minimum", "U", "-+++"),
-    _eq([0.183914, -0.370084, 0.085087, 0.308833], 4.1364, -1.365098, 0.026617, 1, "saddle", "ZU", "+-++"),
-    _eq([-0.183914, 0.370084, -0.085087, -0.308833], 4.1364, -1.365098, -0.026617, 1, "saddle", "ZU", "-+--"),
-    _eq([0.076358, -0.239509, 0.365593, -0.434349], 4.192165, -1.921865, 0.011064, 2, "maximum", "Z", "+-+-"),
-    _eq([-0.076358, 0.239509, -0.365593, 0.434349], 4.192165, -1.921865, -0.011064, 2, "maximum", "Z", "-+-+"),
-], "method": "homotopy", "certified": True, "paths": 456, "failed_paths": 0}
+EQUILIBRIA = {
+    "success": True, "status": "certified",
+    "message": "phc (1 run): 456 paths, 0 failed, 0 at infinity, 0 singular; 6 real roots in range",
+    "equilibria": [
+        _eq([0.178155, -0.076587, -0.245053, -0.131183], 4.057381, -0.574823, 0.025785, 0, "minimum", "U", "+---"),
+        _eq([-0.178155, 0.076587, 0.245053, 0.131183], 4.057381, -0.574823, -0.025785, 0, "minimum", "U", "-+++"),
+        _eq([0.183914, -0.370084, 0.085087, 0.308833], 4.1364, -1.365098, 0.026617, 1, "saddle", "ZU", "+-++"),
+        _eq([-0.183914, 0.370084, -0.085087, -0.308833], 4.1364, -1.365098, -0.026617, 1, "saddle", "ZU", "-+--"),
+        _eq([0.076358, -0.239509, 0.365593, -0.434349], 4.192165, -1.921865, 0.011064, 2, "maximum", "Z", "+-+-"),
+        _eq([-0.076358, 0.239509, -0.365593, 0.434349], 4.192165, -1.921865, -0.011064, 2, "maximum", "Z", "-+-+"),
+    ], "method": "homotopy", "certified": True, "paths": 456, "failed_paths": 0}
 
 BUCKLING = {
+    "success": True, "status": "solved",
+    "message": "all 3 critical loads of the straight chain, tip guided (reduced eigenproblem)",
     "boundary": "guided", "critical_force": -0.572793, "loads": [0.572793, 1.362906, 1.921444],
     "modes": [
         {"load": 0.572793, "q": [0.525309, -0.226566, -0.71889, -0.387664], "fy": 0.075044,
@@ -79,7 +84,10 @@ SEGMENT_TORQUE = {"q": [-0.5, 0.0, 0.5], "torque": [0.494808, 0.0, -0.494808],
                   "dtorque": [-0.968912, -1.0, -0.968912], "energy": [1.12435, 1.0, 1.12435],
                   "stiffness": 1.0, "monotonic": True, "joint_limit": 1.570796}
 
-ENERGY_LANDSCAPE = {"pair": [0, 3], "qi": [-1.569226, 0.0, 1.569226], "qj": [-1.569226, 0.0, 1.569226],
+ENERGY_LANDSCAPE = {"success": True, "status": "evaluated",
+                    "message": "the energy on a 3 x 3 grid of (q1, q4), both elbow branches: 2 of 18 points "
+                               "inside the reach and the physical range",
+                    "pair": [0, 3], "qi": [-1.569226, 0.0, 1.569226], "qj": [-1.569226, 0.0, 1.569226],
                     "energy": [[[None, None, None], [None, 4.113585, None], [None, None, None]],
                                [[None, None, None], [None, 4.113585, None], [None, None, None]]]}
 
@@ -110,10 +118,14 @@ PRELOADS = {
 
 # ---------------------------------------------------------------------------- loading paths
 #: ``/v1/rest-configurations`` of the paper's chain unloaded: the straight chain, exactly.
-REST_CONFIGURATIONS = {"equilibria": [
-    {"q": [0.0, 0.0, 0.0, 0.0], "energy": 4.0, "force": {"fx": 0.0, "fy": 0.0}, "morse_index": 0, "stable": True,
-     "kind": "minimum", "shape": "I", "signs": "0000", "tip": [8.0, 0.0],
-     "solver": {"status": "exact", "iterations": 0}}],
+REST_CONFIGURATIONS = {
+    "success": True, "status": "exact", "message": "the product of the segments' unloaded critical points: 1 point",
+    "equilibria": [
+        {"success": True, "status": "exact",
+         "message": "exact: the unloaded chain, a product of its segments' critical points",
+         "q": [0.0, 0.0, 0.0, 0.0], "energy": 4.0, "force": {"fx": 0.0, "fy": 0.0}, "morse_index": 0, "stable": True,
+         "kind": "minimum", "shape": "I", "signs": "0000", "tip": [8.0, 0.0],
+         "solver": {"status": "exact", "iterations": 0}}],
     "method": "exact", "certified": True, "paths": 0, "failed_paths": 0}
 
 #: ``/v1/branch``, ``/v1/bifurcation-diagram``, ``/v1/limit-load``: the paper's chain under a guided load from

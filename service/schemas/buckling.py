@@ -6,7 +6,9 @@ from typing import Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from .common import PAPER_CHAIN, ManipulatorIn
+import tensegrity_opt as to
+
+from .common import PAPER_CHAIN, ManipulatorIn, outcome_model
 
 
 class BucklingRequest(BaseModel):
@@ -32,7 +34,9 @@ class ModeOut(BaseModel):
     stable: bool
 
 
-class BucklingOut(BaseModel):
+class BucklingOut(outcome_model(to.Buckling)):
+    """Critical loads and modes of the straight chain (`tensegrity_opt.Buckling`)."""
+
     boundary: Literal["guided", "free"]
     critical_force: float = Field(description="signed critical Fx0 = -min(loads) (negative: compressive)")
     loads: list[float] = Field(description="all critical loads, ascending")

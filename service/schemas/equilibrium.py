@@ -75,11 +75,14 @@ class EquilibriumOut(outcome_model(to.Equilibrium)):
     solver: SolverInfo
 
 
-class EquilibriaOut(BaseModel):
-    equilibria: list[EquilibriumOut] = Field(description="every equilibrium found, sorted by energy")
-    method: str = Field(description="how they were found: `search`, `homotopy`, or `straight` / `closed_form` "
-                                    "for the trivial cases")
-    certified: bool = Field(description="true only when the set is proven complete (the homotopy tracked every "
-                                        "path to an end and every real root polished; or a trivial case)")
+class EquilibriaOut(outcome_model(to.EquilibriumSet)):
+    """Every equilibrium found and what the set claims (`tensegrity_opt.EquilibriumSet`)."""
+
+    equilibria: list[EquilibriumOut] = Field(description="every equilibrium found, sorted by energy (under a dead "
+                                                         "load: by the total potential E - F . tip)")
+    method: str = Field(description="how they were found: `search`, `homotopy`, `exact` (the unloaded chain), or "
+                                    "`straight` / `closed_form` for the trivial cases")
+    certified: bool = Field(description="true only when the set is proven complete (`status` `certified` or "
+                                        "`exact`)")
     paths: int = Field(description="homotopy paths tracked (0 for the search)")
     failed_paths: int = Field(description="homotopy paths that failed (any makes `certified` false)")

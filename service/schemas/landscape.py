@@ -6,7 +6,9 @@ from typing import Annotated
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
 
-from .common import MAX_ANGLE, MAX_GRID, PAPER_CHAIN, Deflection, Int, ManipulatorIn, integral
+import tensegrity_opt as to
+
+from .common import MAX_ANGLE, MAX_GRID, PAPER_CHAIN, Deflection, Int, ManipulatorIn, integral, outcome_model
 
 
 class EnergyLandscapeRequest(BaseModel):
@@ -25,7 +27,9 @@ class EnergyLandscapeRequest(BaseModel):
         None, description="half-width of both axes (rad); default: the smaller joint limit of the pair")
 
 
-class EnergyLandscapeOut(BaseModel):
+class EnergyLandscapeOut(outcome_model(to.Landscape)):
+    """Energy over a grid of two joint angles (`tensegrity_opt.Landscape`)."""
+
     pair: list[int]
     qi: list[float] = Field(description="grid axis of joint pair[0] (rad)")
     qj: list[float] = Field(description="grid axis of joint pair[1] (rad)")

@@ -511,13 +511,14 @@ class PolishedRoots:
     certified : bool
         Every path ended (:attr:`HomotopySolve.complete`), every real root in range polished onto an
         equilibrium, and no two distinct regular roots closer than the tolerance.
-    status : str
-        What happened: phc's runs and paths, the real roots in range, and why the set is not certified.
+    report : str
+        What happened, in words: phc's runs and paths, the real roots in range, and why the set is not
+        certified.
     """
 
     found: list
     certified: bool
-    status: str
+    report: str
 
 
 def polish_roots(solve: HomotopySolve, q: np.ndarray, F: np.ndarray, regular: np.ndarray, *,
@@ -529,11 +530,11 @@ def polish_roots(solve: HomotopySolve, q: np.ndarray, F: np.ndarray, regular: np
 
     Each root is polished (``polish(q, F)``); the result counts when ``accept(result)`` and it stays within
     ``1e-6`` of the root (``1e-3`` for a singular root, computed to ~sqrt(eps) or worse); else the root
-    itself counts when ``root_is_equilibrium(q, F)`` (a root Newton cannot improve; status ``"phc_root"``);
+    itself counts when ``root_is_equilibrium(q, F)`` (a root Newton cannot improve; solver status ``"phc_root"``);
     else it is lost. The regular ones are made distinct (:mod:`.distinct`, ``1e-9``), then with the singular
     ones at ``dedupe_tol`` (at least ``1e-4`` when there are singular ones). Distinct regular roots closer
     than ``dedupe_tol`` (merged so) or a lost root make the set uncertified. ``note`` follows the count of
-    real roots in the status.
+    real roots in the report.
     """
     polished, lost, singular = [], 0, []
     for qi, Fi, reg in zip(q, F, regular):
@@ -558,6 +559,6 @@ def polish_roots(solve: HomotopySolve, q: np.ndarray, F: np.ndarray, regular: np
     if close:
         why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
     runs = f"{solve.attempts} run{'s' if solve.attempts > 1 else ''}"
-    status = (f"phc ({runs}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at infinity, "
+    report = (f"phc ({runs}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at infinity, "
               f"{solve.singular} singular; {len(q)} real roots in range" + note + "".join(f"; {w}" for w in why))
-    return PolishedRoots(found, solve.complete and lost == 0 and close == 0, status)
+    return PolishedRoots(found, solve.complete and lost == 0 and close == 0, report)

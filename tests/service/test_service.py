@@ -115,6 +115,8 @@ def test_equilibria(client):
     assert all(b >= a - 1e-12 * abs(a) for a, b in zip(energies, energies[1:]))
     assert [g["kind"] for g in got] == ["minimum", "minimum", "saddle", "saddle", "maximum", "maximum"]
     assert r.json()["method"] == "search" and r.json()["certified"] is False
+    assert list(r.json())[:3] == ["success", "status", "message"]
+    assert (r.json()["success"], r.json()["status"]) == (True, "searched") and r.json()["message"] == expected.message
 
 
 @pytest.mark.skipif(not homotopy_available() and os.environ.get("TENSEGRITY_REQUIRE_PHC") != "1",
@@ -125,6 +127,7 @@ def test_equilibria_homotopy_is_certified(client):
     assert r.status_code == 200, r.text
     body = r.json()
     assert body["method"] == "homotopy" and body["certified"] is True and body["failed_paths"] == 0
+    assert (body["success"], body["status"]) == (True, "certified") and body["message"].startswith("phc (")
     assert body["paths"] == 96
     search = to.find_equilibria(to.Manipulator.uniform(3, a=0.6, L0=0.8), 0.5, 0.2)
     assert len(body["equilibria"]) == len(search) > 0
@@ -147,6 +150,8 @@ def test_buckling(client, boundary):
     assert r.status_code == 200, r.text
     bk = to.critical_force(to.Manipulator.uniform(4), boundary)
     got = r.json()
+    assert list(got)[:3] == ["success", "status", "message"] and (got["success"], got["status"]) == (True, "solved")
+    assert got["message"] == bk.message
     assert got["boundary"] == boundary
     assert got["critical_force"] == approx(bk.force)
     assert got["loads"] == approx(bk.loads.tolist())
@@ -248,6 +253,7 @@ def test_energy_landscape(client):
     assert r.status_code == 200, r.text
     land = to.energy_landscape(to.Manipulator.uniform(4), 0.1, 0.0, pair=(0, 3), grid=15)
     got = r.json()
+    assert (got["success"], got["status"], got["message"]) == (True, "evaluated", land.message)
     assert got["pair"] == [0, 3]
     assert got["qi"] == approx(land.qi.tolist()) and got["qj"] == approx(land.qj.tolist())
     E = np.array([[[np.nan if v is None else v for v in row] for row in plane] for plane in got["energy"]])

@@ -135,6 +135,8 @@ def test_rest_configurations_and_the_rest_start(client):
     got = post_ok(client, "/v1/rest-configurations", {"manipulator": PAPER})
     assert got == body_of(find_equilibria_under_force(M).to_dict())
     assert [e["q"] for e in got["equilibria"]] == [[0.0, 0.0, 0.0, 0.0]]
+    assert (got["success"], got["status"], got["method"]) == (True, "exact", "exact")
+    assert got["equilibria"][0]["status"] == "exact"
     s.EquilibriaOut.model_validate(got)
     got = post_ok(client, "/v1/rest-configurations", {"manipulator": PAPER, "fx": -0.3, "stable_only": True})
     assert got == body_of(find_equilibria_under_force(M, -0.3, 0.0, stable_only=True).to_dict())

@@ -50,12 +50,13 @@ def equilibrium_out(eq) -> dict[str, Any]:
 
 
 def equilibria_out(eqs) -> dict[str, Any]:
-    return {"equilibria": [equilibrium_out(e) for e in eqs], "method": eqs.method, "certified": eqs.certified,
+    return {**outcome(eqs), "equilibria": [equilibrium_out(e) for e in eqs], "method": eqs.method,
+            "certified": eqs.certified,
             "paths": eqs.paths, "failed_paths": eqs.failed_paths}
 
 
 def buckling_out(bk) -> dict[str, Any]:
-    return {"boundary": bk.boundary, "critical_force": _num(bk.force), "loads": _nums(bk.loads),
+    return {**outcome(bk), "boundary": bk.boundary, "critical_force": _num(bk.force), "loads": _nums(bk.loads),
             "modes": [{"load": _num(md.load), "q": _nums(md.q), "fy": _num(md.fy),
                        "energy_factor": _num(md.energy_factor), "mu_x": _num(md.mu_x),
                        "fy_coefficient": _num(md.fy_coefficient), "shape": md.shape, "signs": md.signs,
@@ -99,7 +100,8 @@ def curve_out(c) -> dict[str, Any]:
 def landscape_out(land) -> dict[str, Any]:
     E = land.energy
     energy = [[[None if not math.isfinite(v) else v for v in row] for row in plane] for plane in E.tolist()]
-    return {"pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj), "energy": energy}
+    return {**outcome(land), "pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj),
+            "energy": energy}
 
 
 def manipulator_out(m) -> dict[str, Any]:

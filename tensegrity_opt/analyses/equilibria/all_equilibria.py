@@ -1,21 +1,21 @@
 """Every equilibrium for a prescribed tip displacement: minima, saddles and maxima.
 
-Two methods, one result type (:class:`EquilibriumSet`, a sorted ``list`` of
-:class:`~tensegrity_opt.Equilibrium` that also says how it was obtained):
+Two methods, one result type (:class:`EquilibriumSet`, a sorted read-only sequence of
+:class:`~tensegrity_opt.Equilibrium` that also says what it claims):
 
 ``method="search"`` (default, any ``n``)
     The KKT system ``grad E(q) = J(q)^T F``, ``tip(q) = target`` (n + 2 equations in ``q, F``) is
     solved by damped Newton (CasADi residual and exact Jacobian) from many seeds: every buckling
     mode with both signs at several amplitudes, random starts, the wells of bistable segments
-    (:func:`tensegrity_opt.analyses.equilibria.seeds.well_seeds`), uniform random configurations projected onto the tip
-    constraint, mirror images, and IPOPT's minima. Complete *in practice* for n <= 5: measured against
-    the homotopy on 104 random multistable chains (``tests/test_completeness.py``); for n >= 6 against
-    an independent brute force (``benchmarks/search_check.py``), where it misses some; never certified
-    (``certified=False``).
+    (:func:`tensegrity_opt.analyses.equilibria.seeds.well_seeds`), uniform random configurations projected
+    onto the tip constraint, mirror images, and IPOPT's minima. Complete *in practice* for n <= 5: measured
+    against the homotopy on 104 random multistable chains (``tests/analyses/equilibria/test_completeness.py``);
+    for n >= 6 against an independent brute force (``benchmarks/search_check.py``), where it misses some;
+    never certified (``status="searched"``).
 ``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
     Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
     (:mod:`tensegrity_opt.numerics.homotopy`); the real roots inside the physical range, polished by Newton.
-    ``certified=True`` when every path ended and every real root polished.
+    ``status="certified"`` when every path ended and every real root polished, else ``"uncertified"``.
 
 Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest
 classified by the Morse index of the reduced Hessian and sorted by energy.
@@ -23,13 +23,16 @@ classified by the Morse index of the reduced Hessian and sorted by energy.
 
 from __future__ import annotations
 
-from typing import Any
+from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
 from ...model.manipulator import Manipulator
 from ...numerics import KERNEL_MAX, chain_solver, distinct
+from ...outcome import Outcome, freeze
 from .equilibrium import (
     RESIDUAL_TOL,
     Equilibrium,
@@ -42,7 +45,7 @@ from .equilibrium import (
 )
 from .seeds import projected_sample, seeds, well_seeds
 
-__all__ = ["find_equilibria", "EquilibriumSet", "HOMOTOPY_MAX_N"]
+__all__ = ["find_equilibria", "EquilibriumSet", "searched_set", "homotopy_set", "HOMOTOPY_MAX_N"]
 
 #: Uniform random configurations projected onto the tip constraint per joint (default of ``n_projected``),
 #: and their generator's seed.
@@ -65,43 +68,102 @@ PROJECTED_SEED = 4242
 HOMOTOPY_MAX_N = 6
 
 
-class EquilibriumSet(list):
-    """The equilibria of :func:`find_equilibria` (a ``list``, sorted by energy) and how they were found.
+@dataclass(frozen=True)
+class EquilibriumSet(Outcome, Sequence):
+    """Every equilibrium an analysis found, sorted, and what the set claims: a read-only sequence of
+    :class:`~tensegrity_opt.Equilibrium` (``len``, iteration, indexing, slicing give a tuple, ``bool``).
+
+    An empty set is an answer, not a failure: no equilibrium lies inside the physical range (proven when
+    ``certified``). Its ``status`` is the one its method gives a non-empty set.
 
     Attributes
     ----------
+    equilibria : tuple of Equilibrium
+        The equilibria, without duplicates, sorted (by energy, or the total potential under a dead load).
     method : str
-        ``"search"``, ``"homotopy"``, or ``"straight"`` / ``"closed_form"`` for the trivial cases.
-    certified : bool
-        True only when the set is proven complete: the homotopy tracked every path to an end and
-        every real root inside the range polished onto an equilibrium (or the case is trivial).
-    paths, failed_paths : int
-        Homotopy paths tracked and failed (0 for the search).
-    seconds : float
-        Wall time of the homotopy solver (0 for the search).
+        How they were found: ``"search"``, ``"homotopy"``, ``"exact"`` (the unloaded product of
+        :func:`~tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), or ``"straight"`` /
+        ``"closed_form"`` for the trivial cases.
     status : str
-        What happened, e.g. ``"phc: 456 paths, 0 failed, 0 at infinity"`` or the search's statuses.
+        What the set claims (:attr:`STATUSES`): ``certified``, ``uncertified``, ``searched`` or ``exact``;
+        every one but ``uncertified`` is a success.
+    message : str
+        The same in a sentence: the homotopy's report (its paths, failures and real roots, and why it is not
+        certified), the search's local solves, or the exact case.
+    paths, failed_paths : int
+        Homotopy paths tracked and failed (0 for the other methods).
+    seconds : float
+        Wall time of the homotopy solver (0 for the other methods).
+    certified : bool
+        The set is proven complete: ``status`` is ``certified`` or ``exact``.
     """
 
-    def __init__(self, items=(), *, method: str, certified: bool, paths: int = 0, failed_paths: int = 0,
-                 seconds: float = 0.0, status: str = "") -> None:
-        super().__init__(items)
-        self.method = method
-        self.certified = bool(certified)
-        self.paths = int(paths)
-        self.failed_paths = int(failed_paths)
-        self.seconds = float(seconds)
-        self.status = status
+    STATUSES: ClassVar[dict[str, str]] = {
+        "certified": "the polynomial homotopy proved the set complete: every path ended, every real root inside the "
+                     "range polished onto an equilibrium, no two distinct roots merged",
+        "uncertified": "the polynomial homotopy ran but did not prove the set complete (a path failed, its report "
+                       "did not check out, a real root did not polish, or two distinct roots lay closer than the "
+                       "merge tolerance: the message says which); every equilibrium listed is one, others may exist",
+        "searched": "the multi-start search: complete in practice (measured against the homotopy), never proven",
+        "exact": "known exactly: the straight chain at full extension, a single segment, or the unloaded chain "
+                 "(the product of its segments' critical points)",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"certified", "searched", "exact"})
+
+    equilibria: tuple[Equilibrium, ...]
+    method: str
+    status: str
+    message: str
+    paths: int = 0
+    failed_paths: int = 0
+    seconds: float = 0.0
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "equilibria", tuple(self.equilibria))
+        freeze(self)
+
+    @property
+    def certified(self) -> bool:
+        """True only when the set is proven complete: the homotopy certified it, or the case is exact."""
+        return self.status in ("certified", "exact")
+
+    def __len__(self) -> int:
+        return len(self.equilibria)
+
+    def __getitem__(self, i):
+        return self.equilibria[i]
+
+    def __iter__(self) -> Iterator[Equilibrium]:
+        return iter(self.equilibria)
 
     def __repr__(self) -> str:
-        return (f"EquilibriumSet({len(self)} equilibria, method={self.method!r}, certified={self.certified}, "
+        return (f"EquilibriumSet({len(self)} equilibria, method={self.method!r}, status={self.status!r}, "
                 f"paths={self.paths}, failed_paths={self.failed_paths})")
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form (the body of ``POST /v1/equilibria``): ``equilibria`` (each
-        :meth:`Equilibrium.to_dict`), ``method``, ``certified``, ``paths``, ``failed_paths``."""
-        return {"equilibria": [e.to_dict() for e in self], "method": self.method, "certified": self.certified,
-                "paths": self.paths, "failed_paths": self.failed_paths}
+        """JSON form (the body of ``POST /v1/equilibria`` and ``POST /v1/rest-configurations``): ``success``,
+        ``status``, ``message``, ``equilibria`` (each :meth:`Equilibrium.to_dict`), ``method``, ``certified``,
+        ``paths``, ``failed_paths``."""
+        return {**self.outcome(), "equilibria": [e.to_dict() for e in self.equilibria], "method": self.method,
+                "certified": self.certified, "paths": int(self.paths), "failed_paths": int(self.failed_paths)}
+
+
+def searched_set(eqs, statuses: Mapping[str, int]) -> EquilibriumSet:
+    """The :class:`EquilibriumSet` of a multi-start search: ``eqs`` (sorted) and the tally of its local
+    solves' statuses (the message)."""
+    tally = ", ".join(f"{k} x{v}" for k, v in sorted(statuses.items()))
+    return EquilibriumSet(eqs, method="search", status="searched",
+                          message=f"the multi-start search (complete in practice, not proven); local solves: {tally}")
+
+
+def homotopy_set(eqs, sol, polished) -> EquilibriumSet:
+    """The :class:`EquilibriumSet` of a homotopy solve ``sol``
+    (:class:`~tensegrity_opt.numerics.homotopy.HomotopySolve`) whose real roots gave ``polished``
+    (:class:`~tensegrity_opt.numerics.homotopy.PolishedRoots`): ``eqs`` (sorted), ``certified`` when the
+    polished roots are (every path ended, the report checked out, no root lost, none too close), else
+    ``uncertified``; the message is the polish's report (phc's runs and paths, and why not certified)."""
+    return EquilibriumSet(eqs, method="homotopy", status="certified" if polished.certified else "uncertified",
+                          message=polished.report, paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds)
 
 
 def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
@@ -141,9 +203,11 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     Returns
     -------
     EquilibriumSet
-        A list without duplicates, sorted by energy (ties: ``q_1`` descending), with ``method``,
-        ``certified``, ``paths``, ``failed_paths``. For the paper's chain at small ``dx > 0, dy = 0``:
-        2 stable U, 2 saddles ZU, 2 maxima Z.
+        A read-only sequence without duplicates, sorted by energy (ties: ``q_1`` descending), with
+        ``status`` (``searched``; ``certified`` or ``uncertified`` for the homotopy; ``exact`` for the
+        straight chain and a single segment), ``message``, ``method``, ``certified``, ``paths``,
+        ``failed_paths``. For the paper's chain at small ``dx > 0, dy = 0``: 2 stable U, 2 saddles ZU,
+        2 maxima Z. Empty at full extension when the straight chain is not an equilibrium.
 
     Raises
     ------
@@ -161,13 +225,16 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     target = m.check_reachable(dx, dy)
     if dx == 0.0 and dy == 0.0:
         try:
-            return EquilibriumSet([straight_equilibrium(m)], method="straight", certified=True, status="straight")
+            return EquilibriumSet([straight_equilibrium(m)], method="straight", status="exact",
+                                  message="full extension: the straight chain, the only configuration reaching it")
         except StraightNotEquilibriumError:
             # full extension: the straight chain is the only configuration, and not an equilibrium
-            return EquilibriumSet([], method="straight", certified=True, status="straight_not_equilibrium")
+            return EquilibriumSet([], method="straight", status="exact",
+                                  message="full extension: the straight chain is the only configuration reaching it "
+                                          "and not an equilibrium of this chain, so none exists")
     if m.n == 1:
-        return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", certified=True,
-                              status="closed_form")
+        return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", status="exact",
+                              message="a single segment: the target fixes its joint angle")
     if method == "homotopy":
         return _homotopy(m, target, dedupe_tol, timeout)
     results = []
@@ -211,9 +278,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     if not results:
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())), found=0)
-    eqs = _sorted(m, distinct(results, dedupe_tol))
-    return EquilibriumSet(eqs, method="search", certified=False,
-                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
+    return searched_set(_sorted(m, distinct(results, dedupe_tol)), statuses)
 
 
 def _sorted(m: Manipulator, results) -> list[Equilibrium]:
@@ -243,5 +308,4 @@ def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: fl
                        root_is_equilibrium=lambda qi, Fi: (m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL
                                                            and m.in_range(qi)),
                        dedupe_tol=dedupe_tol, note=f" ({rest.shape[0]} with F = 0)" if rest.shape[0] else "")
-    return EquilibriumSet(_sorted(m, out.found), method="homotopy", certified=out.certified,
-                          paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=out.status)
+    return homotopy_set(_sorted(m, out.found), sol, out)

@@ -29,7 +29,7 @@ so for equal segments ``E ~ energy_factor * K * dx / (2 b)`` (eq. 24).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Any, ClassVar, Literal
 
 import numpy as np
 import scipy.linalg as sla
@@ -41,6 +41,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
+from ...outcome import Outcome
 from ...serialize import number, numbers
 
 __all__ = ["Mode", "Buckling", "critical_force", "straight_matrices"]
@@ -50,7 +51,7 @@ Boundary = Literal["guided", "free"]
 
 @dataclass(frozen=True)
 class Mode:
-    """One buckling mode.
+    """One buckling mode: a record of :class:`Buckling` (no outcome of its own), immutable (arrays read-only).
 
     Attributes
     ----------
@@ -86,6 +87,11 @@ class Mode:
     signs: str
     stable: bool
 
+    def __post_init__(self) -> None:
+        # critical_force builds the arrays for it: read-only in place (as freeze(copy=False), without its loop)
+        self.q.flags.writeable = False
+        self.vector.flags.writeable = False
+
     def to_dict(self) -> dict[str, Any]:
         """JSON form (an item of ``modes`` in ``POST /v1/buckling``): ``load``, ``q``, ``fy``,
         ``energy_factor``, ``mu_x``, ``fy_coefficient``, ``shape``, ``signs``, ``stable``."""
@@ -96,8 +102,8 @@ class Mode:
 
 
 @dataclass(frozen=True)
-class Buckling:
-    """Result of :func:`critical_force`.
+class Buckling(Outcome):
+    """Result of :func:`critical_force`: the critical loads and modes of the straight chain.
 
     Attributes
     ----------
@@ -105,25 +111,45 @@ class Buckling:
         Signed critical ``Fx0 = -min(loads)`` (negative: compressive).
     loads : ndarray
         All critical compressive loads, ascending.
-    modes : list of Mode
+    modes : tuple of Mode
         One per load, same order.
     boundary : str
         ``"guided"`` or ``"free"``.
     method : str
-        ``"reduced"`` or ``"paper"``.
+        ``"reduced"``, ``"paper"`` or ``"sparse"``.
+    status : str
+        ``"solved"`` (:attr:`STATUSES`): the eigenproblem is solved or :func:`critical_force` raises.
+    message : str
+        The same in a sentence: how many loads, of which problem.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "solved": "the linearised eigenproblem of the straight chain was solved: every critical load asked for "
+                  "(all of them, or the lowest n_modes) with its mode",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset(STATUSES)
 
     force: float
     loads: np.ndarray
-    modes: list[Mode] = field(repr=False)
+    modes: tuple[Mode, ...] = field(repr=False)
     boundary: str = "guided"
     method: str = "reduced"
+    status: str = "solved"
+    message: str = ""
+
+    def __post_init__(self) -> None:
+        # critical_force builds the arrays for it: read-only in place (as freeze(copy=False), without its loop)
+        self.loads.flags.writeable = False
+        if not isinstance(self.modes, tuple):
+            object.__setattr__(self, "modes", tuple(self.modes))
+        if self.status not in self.STATUSES:
+            self._check_outcome()
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form (the body of ``POST /v1/buckling``): ``boundary``, ``critical_force``, ``loads``,
-        ``modes`` (each :meth:`Mode.to_dict`)."""
-        return {"boundary": self.boundary, "critical_force": number(self.force), "loads": numbers(self.loads),
-                "modes": [md.to_dict() for md in self.modes]}
+        """JSON form (the body of ``POST /v1/buckling``): ``success``, ``status``, ``message``, ``boundary``,
+        ``critical_force``, ``loads``, ``modes`` (each :meth:`Mode.to_dict`)."""
+        return {**self.outcome(), "boundary": self.boundary, "critical_force": number(self.force),
+                "loads": numbers(self.loads), "modes": [md.to_dict() for md in self.modes]}
 
 
 def straight_matrices(m: Manipulator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -250,8 +276,10 @@ def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
                           energy_factor=float(alpha @ alpha) / mu_x,
                           fy_coefficient=float(fy) / np.sqrt(b_mean * mu_x),
                           shape=shape_label(alpha), signs=sign_string(alpha), stable=(j == 0)))
-    return Buckling(force=-float(loads[0]), loads=np.asarray(loads, float), modes=modes,
-                    boundary=boundary, method=method)
+    which = f"all {len(modes)}" if len(modes) == total else f"the lowest {len(modes)} of {total}"
+    return Buckling(force=-float(loads[0]), loads=np.asarray(loads, float), modes=tuple(modes),
+                    boundary=boundary, method=method,
+                    message=f"{which} critical loads of the straight chain, tip {boundary} ({method} eigenproblem)")
 
 
 def _G_times(m: Manipulator, q: np.ndarray) -> np.ndarray:

@@ -39,8 +39,9 @@ from ...serialize import number, numbers
 from .buckling import critical_force, tip_slope
 from .stability import analyse, inertia_of_reduced
 
-__all__ = ["settle_under_force", "Equilibrium", "solve_equilibrium_under_force", "make_equilibrium", "local_equilibrium",
-           "is_equilibrium", "check_q0", "classify_result", "equilibrium_from", "straight_equilibrium", "one_segment_equilibrium", "RESIDUAL_TOL"]
+__all__ = ["settle_under_force", "Equilibrium", "solve_equilibrium_under_force", "make_equilibrium",
+           "local_equilibrium", "is_equilibrium", "check_q0", "classify_result", "equilibrium_from",
+           "straight_equilibrium", "one_segment_equilibrium", "RESIDUAL_TOL"]
 
 
 @dataclass(frozen=True)
@@ -112,7 +113,7 @@ class Equilibrium(Outcome):
     def message(self) -> str:
         """A sentence: how the equilibrium was obtained."""
         if self.status == "exact":
-            return f"exact ({self.solver.status.replace('_', ' ')})"
+            return "exact: " + _EXACT.get(self.solver.status, self.solver.status.replace("_", " "))
         if self.status == "certified":
             return ("the least-energy stable equilibrium of the complete set certified by the homotopy "
                     f"({self.solver.status})")
@@ -159,9 +160,16 @@ class Equilibrium(Outcome):
                 "solver": self.solver.to_dict()}
 
 
-def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool) -> Equilibrium:
-    """Classify a converged local solution into an :class:`Equilibrium`."""
-    return equilibrium_from(res, *classify_result(m, res, constrained), constrained)
+#: What each exact case is (the sentence of :attr:`Equilibrium.message`), by its ``solver.status``.
+_EXACT = {"straight": "the straight chain, the only configuration at full extension",
+          "closed_form": "a single segment, its angle fixed by the target",
+          "exact": "the unloaded chain, a product of its segments' critical points"}
+
+
+def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool, status: str = "converged") -> Equilibrium:
+    """Classify a converged local solution into an :class:`Equilibrium` (``status``: how it was obtained,
+    :attr:`Equilibrium.STATUSES`)."""
+    return equilibrium_from(res, *classify_result(m, res, constrained), constrained, status=status)
 
 
 def classify_result(m: Manipulator, res: LocalResult, constrained: bool):
@@ -172,13 +180,14 @@ def classify_result(m: Manipulator, res: LocalResult, constrained: bool):
     return analyse(m, res.q, res.force, constrained=constrained)
 
 
-def equilibrium_from(res: LocalResult, inertia, energy, tip, constrained: bool) -> Equilibrium:
+def equilibrium_from(res: LocalResult, inertia, energy, tip, constrained: bool, *,
+                     status: str = "converged") -> Equilibrium:
     """The :class:`Equilibrium` of a local solution and its classification (:func:`classify_result`)."""
     return Equilibrium(q=res.q.copy(), energy=energy, force=np.asarray(res.force, float).copy(),
                        morse_index=inertia.morse_index, stable=inertia.stable,
                        solver=SolverInfo(res.status, res.iterations),
                        tip=np.array(tip, dtype=float), control="displacement" if constrained else "force",
-                       hessian_eigenvalues=inertia.eigenvalues)
+                       hessian_eigenvalues=inertia.eigenvalues, status=status)
 
 
 #: Largest accepted scaled residual of the equilibrium equations (checked in numpy, independently

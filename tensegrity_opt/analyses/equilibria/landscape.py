@@ -13,20 +13,21 @@ which makes it an independent check of them.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
+from ...outcome import Outcome, freeze
 from ...serialize import nullables, numbers
 
 __all__ = ["Landscape", "energy_landscape", "complete_configuration", "landscape_margin"]
 
 
 @dataclass(frozen=True)
-class Landscape:
-    """Energy over a grid of two joint angles.
+class Landscape(Outcome):
+    """Energy over a grid of two joint angles (immutable: arrays read-only).
 
     Attributes
     ----------
@@ -39,19 +40,43 @@ class Landscape:
         unreachable or outside the physical range.
     q : ndarray (2, len(qi), len(qj), 4)
         The completed configurations.
+    status : str
+        ``"evaluated"`` (:attr:`STATUSES`): the grid is evaluated or :func:`energy_landscape` raises; a grid
+        with no point inside the range is an answer too.
+    message : str
+        The same in a sentence: the grid and how many of its points lie inside the range.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "evaluated": "the energy was evaluated at every grid point on both elbow branches (NaN, null in JSON, "
+                     "where the tip is out of the two arms' reach or the configuration leaves the physical range)",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset(STATUSES)
 
     pair: tuple[int, int]
     qi: np.ndarray
     qj: np.ndarray
     energy: np.ndarray
     q: np.ndarray
+    status: str = "evaluated"
+
+    def __post_init__(self) -> None:
+        freeze(self)
+
+    @property
+    def message(self) -> str:
+        """A sentence: the grid and how many of its points lie inside the range."""
+        i, j = self.pair
+        inside = int(np.count_nonzero(np.isfinite(self.energy)))
+        return (f"the energy on a {self.qi.size} x {self.qj.size} grid of (q{i + 1}, q{j + 1}), both elbow "
+                f"branches: {inside} of {self.energy.size} points inside the reach and the physical range")
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form (the body of ``POST /v1/energy-landscape``): ``pair``, ``qi``, ``qj`` and ``energy``
-        (``[elbow][i][j]``, ``null`` outside the reachable set or the physical range)."""
-        return {"pair": [int(p) for p in self.pair], "qi": numbers(self.qi), "qj": numbers(self.qj),
-                "energy": nullables(self.energy)}
+        """JSON form (the body of ``POST /v1/energy-landscape``): ``success``, ``status``, ``message``, ``pair``,
+        ``qi``, ``qj`` and ``energy`` (``[elbow][i][j]``, ``null`` outside the reachable set or the physical
+        range)."""
+        return {**self.outcome(), "pair": [int(p) for p in self.pair], "qi": numbers(self.qi),
+                "qj": numbers(self.qj), "energy": nullables(self.energy)}
 
 
 def complete_configuration(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int) -> np.ndarray:

@@ -8,8 +8,8 @@ projected onto the tip constraint), each classified by the inertia of the reduce
 (``min E`` s.t. ``tip = target``) from every seed when Newton finds no stable one or a segment is
 bistable; or, with ``method="homotopy"``, the least-energy stable member of the certified complete
 set (:func:`tensegrity_opt.analyses.equilibria.all_equilibria.find_equilibria`). Measured complete on random
-multistable chains against the homotopy (``tests/test_completeness.py``); certified only with
-``method="homotopy"``.
+multistable chains against the homotopy (``tests/analyses/equilibria/test_completeness.py``);
+certified only with ``method="homotopy"``.
 
 The pieces (the :class:`~.equilibrium.Equilibrium` result, local solves, the exact special cases)
 are in :mod:`.equilibrium`. Thread-safe (solvers are cached per thread).
@@ -77,12 +77,13 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         differ only in the fallback: ``"newton"`` raises :class:`SolverError` where the others
         run IPOPT from ``q0``. ``"homotopy"``: the least-energy stable one of
         ``find_equilibria(method="homotopy")`` — *certified* (every equilibrium is known) when its
-        ``status`` reads ``"homotopy (certified)"``; ``n <= 6``, seconds to minutes, needs PHCpack.
+        ``status`` is ``"certified"`` (``solver.status`` ``"homotopy (certified)"``), else ``"converged"``
+        (``solver.status`` says why the set is not certified); ``n <= 6``, seconds to minutes, needs PHCpack.
 
         On chains with bistable segments the search also starts from every combination of the
         segments' unloaded wells (up to ``WELLS_MAX``, projected onto the tip constraint); measured
         against the certified homotopy on 97 random multistable chains n = 2..5 it returned the
-        least-energy stable equilibrium every time (``tests/test_completeness.py``), and against an
+        least-energy stable equilibrium every time (``tests/analyses/equilibria/test_completeness.py``), and against an
         independent brute force for n = 6..10 (``benchmarks/search_check.py``). It is not certified.
     n_random, max_modes : int, optional
         Random starts and buckling-mode seeds (each used with both signs). Defaults: 8 and 6
@@ -156,7 +157,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     if method == "auto":
         # Newton on the KKT system from every seed (every stationary point nearby, ~0.1 ms each).
         # With monotonic segments that finds the least-energy stable equilibrium (checked against
-        # IPOPT from the same seeds on grids of targets, tests/test_equilibrium.py); with
+        # IPOPT from the same seeds on grids of targets, tests/analyses/equilibria/test_equilibrium.py); with
         # bistable segments (K <= 0) it often lands on saddles only, so IPOPT's descent from every
         # seed is added and the union decides.
         found, _ = search_stable(m, target, starts, statuses, minimize=False, least=True)
@@ -215,10 +216,10 @@ def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None
 
     eqs = find_equilibria(m, dx, dy, method="homotopy")
     stable = [e for e in eqs if e.stable]
-    label = "homotopy (certified)" if eqs.certified else f"homotopy (NOT certified: {eqs.status})"
+    label = "homotopy (certified)" if eqs.certified else f"homotopy (NOT certified: {eqs.message})"
     if not stable:
         raise NoEquilibriumError(f"no stable equilibrium exists for dx={dx:g}, dy={dy:g} ({len(eqs)} unstable ones"
-                                 f"{'' if eqs.certified else ' found'}; {eqs.status})", status=label)
+                                 f"{'' if eqs.certified else ' found'}; {eqs.message})", status=label)
     best = _pick(stable, q0, m.torque_scale)
     return replace(best, solver=SolverInfo(label, best.solver.iterations),
                    status="certified" if eqs.certified else "converged")

@@ -1,9 +1,9 @@
-"""Rest configurations and every equilibrium under a dead tip load (issue 16, "Rest configurations").
+"""Rest configurations and every equilibrium under a dead tip load.
 
 * :func:`find_equilibria_under_force` - every equilibrium of the chain under the tip force
   ``F = (fx, fy)`` held fixed in direction and size (a dead load): the solutions of
   ``grad E(q) = J(q)^T F`` inside the open physical range, each classified by the full Hessian of
-  ``E - F . tip`` (``Z = I``, conventions.md) and sorted by that total potential;
+  ``E - F . tip`` (``Z = I``, ``docs/model.md``) and sorted by that total potential;
 * :func:`rest_configuration` - the least-energy stable configuration of the unloaded chain.
 
 ``F = 0`` is exact: the energy is a sum of one-joint terms ``E(q) = sum_j E_j(q_j)``, so ``grad E = 0``
@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter
+from dataclasses import replace
 from functools import lru_cache
 
 import numpy as np
@@ -41,7 +42,7 @@ from ...model.manipulator import Manipulator
 from ...numerics import LocalResult, chain_solver, distinct
 from ...outcome import SolverInfo
 from ...timelimit import check_time
-from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet
+from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, homotopy_set, searched_set
 from .buckling import critical_force
 from .equilibrium import RESIDUAL_TOL, Equilibrium, is_equilibrium, make_equilibrium
 
@@ -177,9 +178,10 @@ def _exact_set(m: Manipulator, stable_only: bool) -> EquilibriumSet:
                 "pass stable_only=True for the minima only, or ask rest_configuration(m) for the least-energy one")
         raise InvalidParameterError(f"this chain of n = {m.n} segments has {count} {what}, more than the "
                                     f"{MAX_PRODUCT} returned at once: {hint}", field="n", count=count)
-    status = "exact: product of the segments' unloaded critical points"
+    product = "the product of the segments' unloaded critical points" + (" (their wells only)" if stable_only else "")
     if count == 0:
-        return EquilibriumSet([], method="exact", certified=True, status=status + " (a segment has none)")
+        return EquilibriumSet([], method="exact", status="exact",
+                              message=f"{product}, empty: a segment has none inside its range")
     sel = _index_product([p.size for p in pick])                   # (count, n) indices into pick
     idx = np.column_stack([pick[j][sel[:, j]] for j in range(m.n)])
     cols = range(m.n)
@@ -200,8 +202,11 @@ def _exact_set(m: Manipulator, stable_only: bool) -> EquilibriumSet:
                        status="exact",
                        hessian_eigenvalues=w)
            for i, w in zip(order.tolist(), eigs)]
-    return EquilibriumSet(eqs, method="exact", certified=True,
-                          status=f"{status}: {count} {'minima' if stable_only else 'points'}")
+    return EquilibriumSet(eqs, method="exact", status="exact",
+                          message=f"{product}: {count} {_PLURAL[stable_only, count == 1]}")
+
+
+_PLURAL = {(True, True): "minimum", (True, False): "minima", (False, True): "point", (False, False): "points"}
 
 
 def _phi_hessian_eigenvalues(D2: np.ndarray, chunk: int = 4096) -> list[np.ndarray]:
@@ -300,8 +305,7 @@ def _search(m: Manipulator, force: np.ndarray, n_random: int, dedupe_tol: float)
         keep(newton(-r.q))
     unique = distinct(found, dedupe_tol)
     eqs = [make_equilibrium(m, r, constrained=False) for r in unique]
-    return EquilibriumSet(_sorted(m, eqs, force), method="search", certified=False,
-                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())))
+    return searched_set(_sorted(m, eqs, force), statuses)
 
 
 def _sorted(m: Manipulator, eqs: list[Equilibrium], force: np.ndarray) -> list[Equilibrium]:
@@ -327,10 +331,8 @@ def _homotopy(m: Manipulator, force: np.ndarray, dedupe_tol: float, timeout: flo
                        root_is_equilibrium=lambda qi, Fi: (m.equilibrium_residual(qi, force) <= RESIDUAL_TOL
                                                            and m.in_range(qi)),
                        dedupe_tol=dedupe_tol)
-    found, certified, status = out.found, out.certified, out.status
-    eqs = [make_equilibrium(m, r, constrained=False) for r in found]
-    return EquilibriumSet(_sorted(m, eqs, force), method="homotopy", certified=certified,
-                          paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds, status=status)
+    eqs = [make_equilibrium(m, r, constrained=False) for r in out.found]
+    return homotopy_set(_sorted(m, eqs, force), sol, out)
 
 
 # ----------------------------------------------------------------------------- the public functions
@@ -351,7 +353,7 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
                                 timeout: float | None = None) -> EquilibriumSet:
     """Every equilibrium inside the open physical range under the dead tip load ``F = (fx, fy)``.
 
-    The solutions of ``grad E(q) = J(q)^T F`` (conventions.md), each an :class:`Equilibrium` with
+    The solutions of ``grad E(q) = J(q)^T F`` (``docs/model.md``), each an :class:`Equilibrium` with
     ``control="force"``, ``force = (fx, fy)`` and its classification by the full Hessian of ``E - F . tip``
     (Morse index, ``stable``, ``kind``).
 
@@ -369,7 +371,8 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
         minima followed to the load in ``LOAD_STEPS``, IPOPT's minima of ``E - F . tip`` and the mirror
         images of everything found; never certified. Measured complete (every equilibrium of the certified
         homotopy found, nothing else) on 232 random chains of every family under random loads, n = 2..5
-        (662 equilibria; ``tests/test_rest.py`` repeats a few, also against the reference model's Newton). ``"homotopy"``: every isolated complex root of the polynomial force system by PHCpack
+        (662 equilibria; ``tests/analyses/equilibria/test_rest.py`` repeats a few, also against the reference
+        model's Newton). ``"homotopy"``: every isolated complex root of the polynomial force system by PHCpack
         (:func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy`; ``n <= 6``; paths 4, 24, 128, 704,
         3840 for n = 1..5 on general chains; 2 cores: n = 4 ~2-4 s, n = 5 ~15-70 s), the real roots
         inside the range polished by Newton; certified when every path ended and every real root polished
@@ -387,16 +390,17 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
     Returns
     -------
     EquilibriumSet
-        A list of :class:`Equilibrium` without duplicates, sorted by the *total potential*
+        A read-only sequence of :class:`Equilibrium` without duplicates, sorted by the *total potential*
         ``E(q) - F . tip(q)`` (the quantity a dead load makes stationary; with ``F = 0`` the elastic
         energy, which ``Equilibrium.energy`` always holds); equal potentials (within ``ENERGY_TIE *
         m.torque_scale`` of the lowest of their group) nearest to straight first (smallest
         ``max |q_i|``), then larger ``q_1`` first, then larger ``q_2`` ... (angles rounded to
-        ``ANGLE_DIGITS`` decimals). ``method``: ``"exact"`` for ``F = 0`` (``certified=True``: the
-        product of every segment's unloaded critical points; a product point is a minimum iff each
-        factor is, its Morse index the number of factors that are maxima), ``"search"``
-        (``certified=False``) or ``"homotopy"``. Empty when nothing was found inside the range (a load
-        pressing every configuration against a joint limit; certified so only by the homotopy).
+        ``ANGLE_DIGITS`` decimals). ``method`` and ``status``: ``"exact"`` for ``F = 0`` (the product of
+        every segment's unloaded critical points; a product point is a minimum iff each factor is, its Morse
+        index the number of factors that are maxima), ``"search"`` (status ``searched``) or ``"homotopy"``
+        (``certified`` or ``uncertified``). Empty when nothing was found inside the range (a load pressing
+        every configuration against a joint limit; proven so only by a certified homotopy): an answer, a
+        success.
 
     Raises
     ------
@@ -434,7 +438,7 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
     else:
         out = _search(m, force, int(n_random), tol)
     if stable_only:
-        out[:] = [e for e in out if e.stable]
+        out = replace(out, equilibria=[e for e in out if e.stable])
     return out
 
 
@@ -461,13 +465,13 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
     ``|q_j| <= M``). It is *not* "each segment
     its own well nearest to straight": a segment takes a well farther from straight than its nearest one
     when another segment's wells fix ``max |q_i|`` anyway and the farther one has the larger ``q_j``
-    (``tests/test_rest.py`` has such a chain, and one whose near-ties add up past the tolerance).
+    (``tests/analyses/equilibria/test_rest.py`` has such a chain, and one whose near-ties add up past the tolerance).
 
     Parameters
     ----------
     m : Manipulator
     which : {"least_energy"}
-        The only rule so far.
+        The only rule.
 
     Returns
     -------
@@ -487,7 +491,7 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
         raise InvalidParameterError(f"which must be 'least_energy', got {which!r}", field="which")
     q = _least_energy_well(m)
     res = LocalResult(q, np.zeros(2), True, "exact", 0)
-    return make_equilibrium(m, res, constrained=False)
+    return make_equilibrium(m, res, constrained=False, status="exact")
 
 
 def _least_energy_well(m: Manipulator) -> np.ndarray:

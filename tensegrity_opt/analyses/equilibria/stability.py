@@ -3,7 +3,7 @@
 Under a prescribed tip displacement the configuration lives on the manifold
 ``tip(q) = target`` of dimension ``n - 2``; the equilibrium is classified by the
 inertia of ``Z^T H Z`` with ``H = Hess E - Fx Hess x - Fy Hess y`` and ``Z`` a basis
-of the null space of the tip Jacobian (conventions.md). Under a prescribed force
+of the null space of the tip Jacobian (``docs/model.md``). Under a prescribed force
 ``Z = I``. The Morse index is the number of negative eigenvalues: 0 for a
 minimum (stable), the full dimension for a maximum, anything between for a saddle.
 

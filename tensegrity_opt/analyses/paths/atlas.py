@@ -375,7 +375,8 @@ def _none_found(m: Manipulator, dx: float, dy: float, timeout: float | None) -> 
                 raise
             if expired():
                 raise TimeLimitError("time limit reached in the atlas's homotopy") from None
-    return EquilibriumSet([], method="search", certified=False)
+    return EquilibriumSet([], method="search", status="searched",
+                          message="the multi-start search found no equilibrium inside the physical range")
 
 
 def _grid_values(v, name: str) -> np.ndarray:

@@ -1,4 +1,4 @@
-"""Critical loads and modes against the paper (Table 1, eq. 19-26) and conventions.md."""
+"""Critical loads and modes against the paper (Table 1, eq. 19-26) and ``docs/model.md``."""
 
 import numpy as np
 import pytest
@@ -9,7 +9,7 @@ from tensegrity_opt import (InvalidParameterError, Manipulator, Segment, Straigh
 PAPER = Manipulator.uniform(4, a=1, b=1, k=1, L0=1)
 RTOL = 1e-4
 
-# conventions.md, "Figures checked here" (unrounded values)
+# docs/model.md, "Figures checked" (unrounded values)
 EIG_B_INV_A = [-1.74583, -0.73373, -0.52044]
 LOADS = [0.572793, 1.362906, 1.921444]
 MU_EQ = [1.145586, 2.725813, 3.842887]
@@ -58,7 +58,7 @@ def test_energy_factor_equals_twice_load_over_K():
 
 def test_eq26_fy_coefficient_matches_conventions_figure():
     mode = critical_force(PAPER).modes[0]
-    # |Fy| = 0.00806 at dx = 0.01 on the U branch (conventions.md); eq. 26 is the leading term
+    # |Fy| = 0.00806 at dx = 0.01 on the U branch (docs/model.md); eq. 26 is the leading term
     assert abs(mode.fy_coefficient) * np.sqrt(0.01) == pytest.approx(0.00806, rel=1e-2)
     assert mode.fy_coefficient == pytest.approx(0.075044 / np.sqrt(0.868), rel=1e-4)
 

@@ -1,4 +1,4 @@
-"""Completeness of the global searches on multistable chains (issue 13), against the homotopy.
+"""Completeness of the global searches on multistable chains, against the homotopy.
 
 The reference sets in ``tests/data/homotopy_oracle.json`` were written by
 ``python -m benchmarks.homotopy_oracle``: PHCpack's polyhedral homotopy on the polynomial KKT
@@ -94,9 +94,9 @@ def test_solve_equilibrium_is_the_least_energy_stable_one(case):
     assert eq.energy == pytest.approx(e_min, rel=1e-9, abs=1e-12)
 
 
-# ----------------------------------------------------------------------------- regressions named in issue 13
+# ----------------------------------------------------------------------------- chains where a search fell short
 def test_bistable_n8_least_energy():
-    """Issue 13: 5.04349 was returned, 5.04003 exists (independent brute force)."""
+    """The least-energy stable equilibrium has E = 5.04003 (independent brute force), not a higher one (5.04349)."""
     m = to.Manipulator.uniform(8, a=0.6, b=1, k=1, L0=1.2)
     eq = to.solve_equilibrium(m, 2.0, 0.0)
     assert eq.energy == pytest.approx(5.04003, abs=6e-6)
@@ -126,7 +126,7 @@ def _verified_morse(chain: ref.Chain, target, e) -> int:
 
 
 def test_bistable_n5_every_equilibrium():
-    """Issue 13: 22 returned where at least 52 exist. A Morse-3 maximum an independent brute force (4000
+    """At least 52 equilibria exist (a short search finds 22). A Morse-3 maximum an independent brute force (4000
     reference-model starts) found at q = [0.147852, 0.355537, -0.960061, 0.309796, 0.061975] is among them."""
     m = to.Manipulator.uniform(5, 0.6, 1, 1, 1.2)
     eqs = to.find_equilibria(m, 0.5)
@@ -142,7 +142,7 @@ def test_bistable_n5_every_equilibrium():
 
 
 def test_monotonic_n6_maxima_are_found():
-    """Issue 13: a Morse-4 maximum and its mirror were missed on a monotonic chain."""
+    """A Morse-4 maximum and its mirror on a monotonic chain (easily missed) are found."""
     m = to.Manipulator.uniform(6, a=0.7, b=1.25, k=2.2, L0=2.1)
     eqs = to.find_equilibria(m, 0.5)
     chain = _chain(m)
@@ -154,7 +154,7 @@ def test_monotonic_n6_maxima_are_found():
 
 @needs_phc
 def test_bistable_n4_least_energy_vs_homotopy():
-    """Issue 13: E = 3.21975 was returned while a stable 3.21362 exists."""
+    """The least-energy stable equilibrium has E = 3.21362, not a higher stable one (3.21975)."""
     m = to.Manipulator.uniform(4, a=0.55, b=1, k=1.5, L0=1.25)
     hom = to.find_equilibria(m, 1.0, 0.3, method="homotopy")
     assert hom.certified
@@ -162,11 +162,12 @@ def test_bistable_n4_least_energy_vs_homotopy():
     assert e_min == pytest.approx(3.21362, abs=6e-6)
     assert to.solve_equilibrium(m, 1.0, 0.3).energy == pytest.approx(e_min, rel=1e-10)
     cert = to.solve_equilibrium(m, 1.0, 0.3, method="homotopy")
-    assert cert.status == "certified" and cert.solver.status == "homotopy (certified)" and cert.energy == pytest.approx(e_min, rel=1e-12)
+    assert cert.status == "certified" and cert.solver.status == "homotopy (certified)"
+    assert cert.energy == pytest.approx(e_min, rel=1e-12)
 
 
 def test_bistable_curve_stays_on_the_least_energy_branch():
-    """Issue 13: the curve left the least-energy branch (24 points on a higher one). At every point the
+    """The curve stays on the least-energy branch (not on a higher one, as 24 points could). At every point the
     curve's energy equals the least stable energy of the reference model's descent from all well patterns."""
     m = to.Manipulator.uniform(5, 0.6, 1, 1, 1.2)
     dxs = np.linspace(0.02, 4, 40)
@@ -187,11 +188,11 @@ def test_bistable_curve_stays_on_the_least_energy_branch():
 def test_homotopy_paper_chain_six_equilibria_certified():
     m = to.Manipulator.uniform(4)
     eqs = to.find_equilibria(m, 0.1, method="homotopy")
-    assert eqs.method == "homotopy" and eqs.certified and eqs.failed_paths == 0
+    assert eqs.method == "homotopy" and eqs.certified and eqs.failed_paths == 0 and eqs.status == "certified"
     assert eqs.paths == 456                    # mixed volume of the Laurent system for a = b
     assert [e.kind for e in eqs] == ["minimum", "minimum", "saddle", "saddle", "maximum", "maximum"]
     assert [e.shape for e in eqs] == ["U", "U", "ZU", "ZU", "Z", "Z"]
-    assert abs(eqs[0].fy) == pytest.approx(0.02579, abs=1e-5)          # conventions.md
+    assert abs(eqs[0].fy) == pytest.approx(0.02579, abs=1e-5)          # docs/model.md
     search = to.find_equilibria(m, 0.1)
     assert len(search) == 6
     for e in eqs:
@@ -293,7 +294,8 @@ def test_failed_paths_make_the_result_uncertified(tmp_path, monkeypatch):
     m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 0.6), to.Segment(0.7, 1.1, 1.0, 0.8)])
     monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, _report(m, 0.5, 0.2, failures=3)))
     eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
-    assert eqs.failed_paths == 3 and not eqs.certified
+    assert eqs.failed_paths == 3 and not eqs.certified and (eqs.status, eqs.success) == ("uncertified", False)
+    assert "3 failed" in eqs.message
     assert len(eqs) == len(to.find_equilibria(m, 0.5, 0.2))       # the roots found are still reported
     monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, _report(m, 0.5, 0.2, failures=0)))
     assert to.find_equilibria(m, 0.5, 0.2, method="homotopy").certified
@@ -312,7 +314,7 @@ def test_a_run_with_failed_paths_is_repeated(tmp_path, monkeypatch):
     exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
     monkeypatch.setenv("TENSEGRITY_PHC", str(exe))
     eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
-    assert eqs.certified and eqs.failed_paths == 0 and "2 runs" in eqs.status
+    assert eqs.certified and eqs.failed_paths == 0 and "2 runs" in eqs.message and eqs.status == "certified"
 
 
 @pytest.mark.parametrize("defect", ["clustered", "short", "no_solution"])

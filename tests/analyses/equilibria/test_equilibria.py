@@ -6,7 +6,7 @@ import pytest
 from tensegrity_opt import Manipulator, Segment, critical_force, find_equilibria, solve_equilibrium
 
 PAPER = Manipulator.uniform(4)
-LOADS = [0.572793, 1.362906, 1.921444]      # conventions.md
+LOADS = [0.572793, 1.362906, 1.921444]      # docs/model.md
 
 
 @pytest.mark.parametrize("dx", [1e-3, 0.05, 0.3])
@@ -40,7 +40,7 @@ def test_least_energy_stable_one_is_solve_equilibrium():
 
 @pytest.mark.parametrize("dx", [1e-6, 1e-5])
 def test_branch_forces_tend_to_critical_loads(dx):
-    """conventions.md: on branch m the force as dx -> 0+ tends to the m-th critical load."""
+    """docs/model.md: on branch m the force as dx -> 0+ tends to the m-th critical load."""
     eqs = find_equilibria(PAPER, dx)
     for j, P in enumerate(LOADS):
         for e in eqs[2 * j:2 * j + 2]:

@@ -1,7 +1,7 @@
-"""No wrong answer labelled converged, on extreme but valid geometry (issue 14, item 1).
+"""No wrong answer labelled converged, on extreme but valid geometry.
 
 Every equilibrium the library or the service returns is checked here against the independent
-reference model (``tests/reference_model.py``, which does not import the library): the equilibrium
+reference model (``tests/support/reference_model.py``, which does not import the library): the equilibrium
 equations ``grad E = J^T F`` relative to the torque scale ``k c^2``, the tip on its target relative
 to the chain's length, the angles inside the physical range, the reported tip and energy, and the
 stability label against the reference reduced Hessian. Chains are drawn by hypothesis over the
@@ -9,9 +9,9 @@ request schema's whole range (lengths 1e-6..1e6, stiffnesses 1e-6..1e9): slender
 very stiff, very soft, tiny and huge, heterogeneous, with asymmetric preloads, bistable ones. A
 refusal (unreachable target, no equilibrium) is an allowed answer; anything else is not.
 
-Before the fix (numerics.units.UNIT_RATIO), ``a = 1e6`` returned the unmoved straight chain as
-``Newton_Converged`` 0.1 away from its target and ``k = 1e9`` accepted tips 0.02 off; tiny chains
-(``a = b = L0 = 1e-6``) classified every minimum as degenerate and failed.
+What the checks catch: without the rescaling of ``numerics.units.UNIT_RATIO``, ``a = 1e6`` would return the
+unmoved straight chain as ``Newton_Converged`` 0.1 away from its target, ``k = 1e9`` would accept tips 0.02 off,
+and tiny chains (``a = b = L0 = 1e-6``) would classify every minimum as degenerate.
 """
 
 from __future__ import annotations

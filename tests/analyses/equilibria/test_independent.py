@@ -1,7 +1,7 @@
 """Verification of tensegrity_opt against an independent reference model.
 
-Every expected number comes from ``tests/reference_model.py`` (plain numpy/scipy in
-relative joint angles, written from shared/spec/conventions.md, no import of the
+Every expected number comes from ``tests/support/reference_model.py`` (plain numpy/scipy in
+relative joint angles, written from the model's conventions, ``docs/model.md``, no import of the
 library): SLSQP multistart for the least-energy equilibria, a bordered determinant with
 brentq for the critical loads (finite-difference K, G, S0), finite differences of the
 re-solved reference for the Cartesian stiffness, finite-difference Hessians for the Morse

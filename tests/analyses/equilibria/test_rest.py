@@ -1,4 +1,4 @@
-"""Rest configurations and every equilibrium under a dead tip load (issue 16 item 1).
+"""Rest configurations and every equilibrium under a dead tip load.
 
 Independent routes only: the reference model (``reference_model.py``, which does not import the
 library) finds each segment's unloaded critical points by a grid and bisection on its own gradient,

@@ -48,6 +48,7 @@ from .displacement_control_in import DisplacementControlIn
 from .energy_landscape_out import EnergyLandscapeOut
 from .energy_landscape_request import EnergyLandscapeRequest
 from .equilibria_out import EquilibriaOut
+from .equilibria_out_status import EquilibriaOutStatus
 from .equilibria_request import EquilibriaRequest
 from .equilibria_request_method import EquilibriaRequestMethod
 from .equilibrium_out import EquilibriumOut
@@ -256,6 +257,7 @@ __all__ = (
     "EnergyLandscapeOut",
     "EnergyLandscapeRequest",
     "EquilibriaOut",
+    "EquilibriaOutStatus",
     "EquilibriaRequest",
     "EquilibriaRequestMethod",
     "EquilibriumOut",

@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
@@ -17,18 +17,26 @@ T = TypeVar("T", bound="BucklingOut")
 
 @_attrs_define
 class BucklingOut:
-    """
+    """Critical loads and modes of the straight chain (`tensegrity_opt.Buckling`).
+
     Attributes:
         boundary (BucklingOutBoundary):
         critical_force (float): signed critical Fx0 = -min(loads) (negative: compressive)
         loads (list[float]): all critical loads, ascending
+        message (str): what happened, in a sentence
         modes (list[ModeOut]):
+        status (Literal['solved']): `solved`: the linearised eigenproblem of the straight chain was solved: every
+            critical load asked for (all of them, or the lowest n_modes) with its mode
+        success (bool): whether it worked: `status` is one of solved
     """
 
     boundary: BucklingOutBoundary
     critical_force: float
     loads: list[float]
+    message: str
     modes: list[ModeOut]
+    status: Literal["solved"]
+    success: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -38,10 +46,16 @@ class BucklingOut:
 
         loads = self.loads
 
+        message = self.message
+
         modes = []
         for modes_item_data in self.modes:
             modes_item = modes_item_data.to_dict()
             modes.append(modes_item)
+
+        status = self.status
+
+        success = self.success
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
@@ -50,7 +64,10 @@ class BucklingOut:
                 "boundary": boundary,
                 "critical_force": critical_force,
                 "loads": loads,
+                "message": message,
                 "modes": modes,
+                "status": status,
+                "success": success,
             }
         )
 
@@ -67,6 +84,8 @@ class BucklingOut:
 
         loads = cast(list[float], d.pop("loads"))
 
+        message = d.pop("message")
+
         modes = []
         _modes = d.pop("modes")
         for modes_item_data in _modes:
@@ -74,11 +93,20 @@ class BucklingOut:
 
             modes.append(modes_item)
 
+        status = cast(Literal["solved"], d.pop("status"))
+        if status != "solved":
+            raise ValueError(f"status must match const 'solved', got '{status}'")
+
+        success = d.pop("success")
+
         buckling_out = cls(
             boundary=boundary,
             critical_force=critical_force,
             loads=loads,
+            message=message,
             modes=modes,
+            status=status,
+            success=success,
         )
 
         buckling_out.additional_properties = d

@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar, cast
+from typing import Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
@@ -11,19 +11,27 @@ T = TypeVar("T", bound="EnergyLandscapeOut")
 
 @_attrs_define
 class EnergyLandscapeOut:
-    """
+    """Energy over a grid of two joint angles (`tensegrity_opt.Landscape`).
+
     Attributes:
         energy (list[list[list[float | None]]]): energy[elbow][i][j], elbow 0: +1, 1: -1; null where unreachable or out
             of range
+        message (str): what happened, in a sentence
         pair (list[int]):
         qi (list[float]): grid axis of joint pair[0] (rad)
         qj (list[float]): grid axis of joint pair[1] (rad)
+        status (Literal['evaluated']): `evaluated`: the energy was evaluated at every grid point on both elbow branches
+            (NaN, null in JSON, where the tip is out of the two arms' reach or the configuration leaves the physical range)
+        success (bool): whether it worked: `status` is one of evaluated
     """
 
     energy: list[list[list[float | None]]]
+    message: str
     pair: list[int]
     qi: list[float]
     qj: list[float]
+    status: Literal["evaluated"]
+    success: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -41,20 +49,29 @@ class EnergyLandscapeOut:
 
             energy.append(energy_item)
 
+        message = self.message
+
         pair = self.pair
 
         qi = self.qi
 
         qj = self.qj
 
+        status = self.status
+
+        success = self.success
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
             {
                 "energy": energy,
+                "message": message,
                 "pair": pair,
                 "qi": qi,
                 "qj": qj,
+                "status": status,
+                "success": success,
             }
         )
 
@@ -86,17 +103,28 @@ class EnergyLandscapeOut:
 
             energy.append(energy_item)
 
+        message = d.pop("message")
+
         pair = cast(list[int], d.pop("pair"))
 
         qi = cast(list[float], d.pop("qi"))
 
         qj = cast(list[float], d.pop("qj"))
 
+        status = cast(Literal["evaluated"], d.pop("status"))
+        if status != "evaluated":
+            raise ValueError(f"status must match const 'evaluated', got '{status}'")
+
+        success = d.pop("success")
+
         energy_landscape_out = cls(
             energy=energy,
+            message=message,
             pair=pair,
             qi=qi,
             qj=qj,
+            status=status,
+            success=success,
         )
 
         energy_landscape_out.additional_properties = d

@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.equilibria_out_status import EquilibriaOutStatus
+
 if TYPE_CHECKING:
     from ..models.equilibrium_out import EquilibriumOut
 
@@ -15,21 +17,35 @@ T = TypeVar("T", bound="EquilibriaOut")
 
 @_attrs_define
 class EquilibriaOut:
-    """
+    """Every equilibrium found and what the set claims (`tensegrity_opt.EquilibriumSet`).
+
     Attributes:
-        certified (bool): true only when the set is proven complete (the homotopy tracked every path to an end and every
-            real root polished; or a trivial case)
-        equilibria (list[EquilibriumOut]): every equilibrium found, sorted by energy
+        certified (bool): true only when the set is proven complete (`status` `certified` or `exact`)
+        equilibria (list[EquilibriumOut]): every equilibrium found, sorted by energy (under a dead load: by the total
+            potential E - F . tip)
         failed_paths (int): homotopy paths that failed (any makes `certified` false)
-        method (str): how they were found: `search`, `homotopy`, or `straight` / `closed_form` for the trivial cases
+        message (str): what happened, in a sentence
+        method (str): how they were found: `search`, `homotopy`, `exact` (the unloaded chain), or `straight` /
+            `closed_form` for the trivial cases
         paths (int): homotopy paths tracked (0 for the search)
+        status (EquilibriaOutStatus): `certified`: the polynomial homotopy proved the set complete: every path ended,
+            every real root inside the range polished onto an equilibrium, no two distinct roots merged; `uncertified`: the
+            polynomial homotopy ran but did not prove the set complete (a path failed, its report did not check out, a real
+            root did not polish, or two distinct roots lay closer than the merge tolerance: the message says which); every
+            equilibrium listed is one, others may exist; `searched`: the multi-start search: complete in practice (measured
+            against the homotopy), never proven; `exact`: known exactly: the straight chain at full extension, a single
+            segment, or the unloaded chain (the product of its segments' critical points)
+        success (bool): whether it worked: `status` is one of certified, exact, searched
     """
 
     certified: bool
     equilibria: list[EquilibriumOut]
     failed_paths: int
+    message: str
     method: str
     paths: int
+    status: EquilibriaOutStatus
+    success: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -42,9 +58,15 @@ class EquilibriaOut:
 
         failed_paths = self.failed_paths
 
+        message = self.message
+
         method = self.method
 
         paths = self.paths
+
+        status = self.status.value
+
+        success = self.success
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
@@ -53,8 +75,11 @@ class EquilibriaOut:
                 "certified": certified,
                 "equilibria": equilibria,
                 "failed_paths": failed_paths,
+                "message": message,
                 "method": method,
                 "paths": paths,
+                "status": status,
+                "success": success,
             }
         )
 
@@ -76,16 +101,25 @@ class EquilibriaOut:
 
         failed_paths = d.pop("failed_paths")
 
+        message = d.pop("message")
+
         method = d.pop("method")
 
         paths = d.pop("paths")
+
+        status = EquilibriaOutStatus(d.pop("status"))
+
+        success = d.pop("success")
 
         equilibria_out = cls(
             certified=certified,
             equilibria=equilibria,
             failed_paths=failed_paths,
+            message=message,
             method=method,
             paths=paths,
+            status=status,
+            success=success,
         )
 
         equilibria_out.additional_properties = d
