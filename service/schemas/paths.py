@@ -17,7 +17,8 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
-from tensegrity_opt.analyses.paths.branches import EVENT_KINDS, STATUSES
+from tensegrity_opt.analyses.paths.branches import STATUSES
+from tensegrity_opt.analyses.paths.events import EVENT_KINDS
 
 from ..config import HARD_MAX_PATH_POINTS, HARD_MAX_SEGMENTS
 from .common import (_STRICT, MAX_FORCE, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Int, ManipulatorIn,

@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import scipy.optimize as so
@@ -54,20 +54,19 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX, chain_solver
-from ...outcome import SolverInfo
+from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
-from .branches import LIMIT_MARGIN, Control, trace_branch
+from .branches import trace_branch
+from .control import Control
+from .problem import LIMIT_MARGIN
 from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
 
-__all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "STATUSES", "PERTURBATION",
-           "BRANCH_POINT_OFFSET"]
+__all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "BRANCH_POINT_OFFSET"]
 
 #: Kinds of :class:`SimulationEvent`: a snap at a fold, a snap (or a continuous buckling, then with
 #: ``energy_released`` near 0) at a branch point, the end at a joint's range bound.
 EVENT_KINDS = ("snap", "bifurcation", "joint_limit")
-#: How a simulation ended (:attr:`Simulation.status`); only ``"complete"`` is a success.
-STATUSES = ("complete", "joint_limit", "workspace_boundary", "force_bound", "time_limit", "failed")
 #: The descent after a fold starts this far (rad, the largest joint) from the fold along its null vector.
 PERTURBATION = 1e-4
 #: A branch point is left by descent at this scaled arclength past it (in the units of
@@ -82,11 +81,16 @@ POLISH_RADIUS = 0.05
 
 
 @dataclass(frozen=True)
-class SimulationEvent:
+class SimulationEvent(Outcome):
     """Something that happened between step ``step`` and ``step + 1``, at ``time = step + fraction``.
 
     Attributes
     ----------
+    status : str
+        Where the arm went (:attr:`STATUSES`): ``"landed"`` on a stable equilibrium under the same inputs
+        (``q_after``), or ``"joint_limit"``: a joint reached its range bound (the end of the simulation).
+    message : str
+        The same in a sentence.
     kind : str
         ``"snap"`` (the followed branch folded: the arm jumps), ``"bifurcation"`` (it lost stability at
         a branch point: a snap, or a continuous buckling onto a stable bifurcating branch when
@@ -121,9 +125,17 @@ class SimulationEvent:
         The sign of ``null_vector`` the descent left along (0 for a joint limit).
     method : str
         How the point was located (``"moore_spence"``, ``"test_function"``, ``"limit"``).
-    message : str
     """
 
+    STATUSES: ClassVar[dict[str, str]] = {
+        "landed": "the arm left the lost branch and landed on a stable equilibrium under the same inputs",
+        "joint_limit": "a joint reached its range bound (on the followed branch, or during the snap's descent): "
+                       "no equilibrium beyond inside the physical range; the simulation ends",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"landed"})
+
+    status: str
+    message: str
     kind: str
     step: int
     fraction: float
@@ -144,7 +156,9 @@ class SimulationEvent:
     null_vector: np.ndarray | None
     direction: int
     method: str
-    message: str = ""
+
+    def __post_init__(self) -> None:
+        freeze(self, copy=False)            # the builder passes arrays it owns
 
     @property
     def time(self) -> float:
@@ -155,7 +169,7 @@ class SimulationEvent:
         def opt(v, f=numbers):
             return None if v is None else f(v)
 
-        return {"kind": self.kind, "step": int(self.step), "fraction": number(self.fraction),
+        return {**self.outcome(), "kind": self.kind, "step": int(self.step), "fraction": number(self.fraction),
                 "time": number(self.time), "preloads": [numbers(r) for r in self.preloads],
                 "load": opt(self.load), "target": opt(self.target), "q_before": numbers(self.q_before),
                 "q_after": opt(self.q_after), "force_before": opt(self.force_before),
@@ -165,11 +179,11 @@ class SimulationEvent:
                 "potential_before": opt(self.potential_before, number),
                 "potential_after": opt(self.potential_after, number),
                 "energy_released": opt(self.energy_released, number), "null_vector": opt(self.null_vector),
-                "direction": int(self.direction), "method": self.method, "message": self.message}
+                "direction": int(self.direction), "method": self.method}
 
 
-@dataclass
-class Simulation:
+@dataclass(frozen=True)
+class Simulation(Outcome):
     """The result of :func:`simulate`: the state at each step done, and the events.
 
     The arrays hold the ``k <= K`` steps done (``k = K`` when ``status == "complete"``); each row is a
@@ -195,12 +209,24 @@ class Simulation:
         ``E - F . tip`` (free) or ``E`` (held).
     stable : ndarray (k,) of bool
     morse_index : ndarray (k,) of int
-    events : list of SimulationEvent
+    events : tuple of SimulationEvent
     status : str
-        :data:`STATUSES`.
+        How it ended (:attr:`STATUSES`); only ``"complete"`` is a success (the steps done are kept).
     message : str
+        The same in a sentence.
     straight_length : float
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every sample simulated",
+        "joint_limit": "a joint reached its range bound (on the followed branch or during a snap): no equilibrium "
+                       "beyond inside the physical range",
+        "workspace_boundary": "the held tip reached the edge of its workspace",
+        "force_bound": "the tip force grew beyond the continuation's bound",
+        "time_limit": "the time limit ran out",
+        "failed": "the followed branch or a snap could not be computed (message says where)",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
 
     mode: str
     preloads: np.ndarray
@@ -218,10 +244,8 @@ class Simulation:
     message: str
     straight_length: float
 
-    @property
-    def success(self) -> bool:
-        """Every step simulated."""
-        return self.status == "complete"
+    def __post_init__(self) -> None:
+        freeze(self)
 
     @property
     def steps(self) -> int:
@@ -245,8 +269,7 @@ class Simulation:
         """JSON form: ``mode, status, success, message, steps, done``; per step done ``q, force``
         ``{fx, fy}``, ``tip, deflection, energy, potential, stable, morse_index``; ``events``; the inputs
         ``preloads`` and ``loads`` or ``targets``."""
-        d = {"mode": self.mode, "status": self.status, "success": self.success, "message": self.message,
-             "steps": self.steps, "done": len(self), "q": [numbers(r) for r in self.q],
+        d = {**self.outcome(), "mode": self.mode, "steps": self.steps, "done": len(self), "q": [numbers(r) for r in self.q],
              "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
              "tip": [numbers(r) for r in self.tip], "deflection": [numbers(r) for r in self.deflection],
              "energy": numbers(self.energy), "potential": numbers(self.potential),
@@ -540,7 +563,7 @@ class _Run:
                    else Control.move(n, preload=dP, load=d2, base=F0))
             br = trace_branch(mk, state.equilibrium(self.held), ctl, t_max=1.0, stop_at="stability_loss",
                               max_points=5000)
-            prob = br._problem
+            prob = br.problem
             # (a stability loss on the last step to t = 1 ends the branch as "t_max": the events decide)
             lost = [e for e in br.events if e.stability == "lost" and e.kind in ("fold", "branch_point")]
             if not lost and br.status == "t_max":
@@ -559,7 +582,7 @@ class _Run:
                 ev = next((e for e in br.events if e.kind == "joint_limit"), None)
                 if ev is not None:
                     s_ev = s0 + r * ev.t
-                    self.events.append(self._event("joint_limit", k, s_ev, ev.q, None, ev.force, None, ev.tip, None,
+                    self.events.append(self._event("joint_limit", "joint_limit", k, s_ev, ev.q, None, ev.force, None, ev.tip, None,
                                                    ev.energy, None, None, None, 0, "limit",
                                                    f"joint {ev.joint + 1} reached its range bound"))
                 return None, "joint_limit", (f"a joint reached its range bound in step {k} (at fraction "
@@ -570,9 +593,9 @@ class _Run:
             return None, "failed", f"step {k}: the branch could not be followed ({br.status}: {br.message})"
         return None, "failed", f"more than {MAX_EVENTS_PER_STEP} snaps in step {k}"
 
-    def _event(self, kind, k, s, qb, qa, Fb, Fa, tb, ta, Eb, Ea, Vb, Va, sign, method, msg, nv=None):
+    def _event(self, status, kind, k, s, qb, qa, Fb, Fa, tb, ta, Eb, Ea, Vb, Va, sign, method, msg, nv=None):
         P, F, T = self.inputs(k, s)
-        return SimulationEvent(kind, int(k), float(s), P.copy(), None if F is None else F.copy(),
+        return SimulationEvent(status, msg, kind, int(k), float(s), P.copy(), None if F is None else F.copy(),
                                None if T is None else T.copy(), np.asarray(qb, float).copy(),
                                None if qa is None else np.asarray(qa, float).copy(),
                                None if Fb is None else np.asarray(Fb, float).copy(),
@@ -582,7 +605,7 @@ class _Run:
                                None if Eb is None else float(Eb), None if Ea is None else float(Ea),
                                None if Vb is None else float(Vb), None if Va is None else float(Va),
                                None if (Vb is None or Va is None) else float(Vb - Va),
-                               None if nv is None else np.asarray(nv, float).copy(), int(sign), method, msg)
+                               None if nv is None else np.asarray(nv, float).copy(), int(sign), method)
 
     def snap(self, k: int, s0: float, r: float, prob, br, ev):
         """Descent from the fold (branch point) ``ev`` of ``br`` (the sub-step from fraction ``s0``, of length
@@ -630,14 +653,17 @@ class _Run:
             s = res
             if fold and float(np.abs(s.q - q_ev).max()) < 10 * self.eps:
                 return None, s_d, "failed", f"step {k}: the descent from the fold came back to it"
-            self.events.append(self._event(kind, k, s_d, q_ev, s.q, before.force, s.force, before.tip, s.tip,
-                                           before.energy, s.energy, before.potential(self.held),
+            released = before.potential(self.held) - s.potential(self.held)
+            note = note or (f"snap at fraction {s_d:.6g} of step {k}: landed on a stable equilibrium (potential "
+                            f"released {released:.6g})")
+            self.events.append(self._event("landed", kind, k, s_d, q_ev, s.q, before.force, s.force, before.tip,
+                                           s.tip, before.energy, s.energy, before.potential(self.held),
                                            s.potential(self.held), sign, ev.method, note, ev.null_vector))
             return s, s_d, "landed", ""
         if outcome == "joint_limit":
             msg = (f"the snap at step {k} + {s_d:.6g} runs into a joint's range bound (no equilibrium inside the "
                    "physical range on the way)")
-            self.events.append(self._event(kind, k, s_d, q_ev, None, before.force, None, before.tip, None,
+            self.events.append(self._event("joint_limit", kind, k, s_d, q_ev, None, before.force, None, before.tip, None,
                                            before.energy, None, before.potential(self.held), None, sign, ev.method,
                                            msg, ev.null_vector))
             return None, s_d, "joint_limit", msg

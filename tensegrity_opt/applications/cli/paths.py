@@ -27,7 +27,9 @@ import numpy as np
 
 from ...analyses.paths.atlas import StabilityAtlas, stability_atlas
 from ...analyses.paths.boundaries import stability_boundary
-from ...analyses.paths.branches import Branch, Control, bifurcation_diagram, trace_branch
+from ...analyses.paths.branches import Branch, trace_branch
+from ...analyses.paths.control import Control
+from ...analyses.paths.diagram import bifurcation_diagram
 from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.paths.limit_load import limit_load
 from ...analyses.equilibria.rest import find_equilibria_under_force

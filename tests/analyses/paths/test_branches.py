@@ -17,7 +17,8 @@ import pytest
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.boundaries import _chain_at, parameter_direction, stability_boundary
-from tensegrity_opt.analyses.paths.branches import Control, trace_branch
+from tensegrity_opt.analyses.paths.branches import trace_branch
+from tensegrity_opt.analyses.paths.control import Control
 
 import reference_model as ref  # noqa: E402
 
