@@ -6,7 +6,11 @@ from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
-from .common import MAX_CURVE_POINTS, PAPER_CHAIN, Deflection, DeflectionRange, Force, ManipulatorIn, _list_or_range
+import tensegrity_opt as to
+from tensegrity_opt.analyses.paths.curves import POINT_STATUSES
+
+from .common import (MAX_CURVE_POINTS, PAPER_CHAIN, Deflection, DeflectionRange, Force, ManipulatorIn, SolverInfo,
+                     _list_or_range, outcome_model)
 
 
 class ForceDeflectionRequest(BaseModel):
@@ -45,9 +49,10 @@ class CurvePoint(BaseModel):
     morse_index: int
     shape: str
     branch: int = Field(description="branch identifier (-1: straight)")
-    status: str = Field(description='solver status: "straight", "straight_not_equilibrium" (asymmetric preloads: the '
-                                    'straight point is no equilibrium, stable false), or the solver\'s status of a '
-                                    'converged equilibrium (e.g. "Newton_Converged")')
+    status: Literal[tuple(POINT_STATUSES)] = Field(
+        description="what the point is: " + "; ".join(f"`{k}`: {v}" for k, v in POINT_STATUSES.items()))
+    solver: SolverInfo = Field(description='the solver\'s own status and iterations (e.g. "Newton_Converged"; '
+                                           '"straight" for the straight chain)')
 
 
 class JumpOut(BaseModel):
@@ -70,15 +75,12 @@ class JumpOut(BaseModel):
                                    'chain: F_x 0 -> -0.573 (compressive)"')
 
 
-class CurveEndOut(BaseModel):
+class CurveEndOut(outcome_model(to.CurveEnd)):
     """Where a partial curve stopped: the first requested point it could not compute."""
 
+    success: bool = Field(description="always false: the curve could not go on there")
     dx: float
     dy: float
-    reason: Literal["no_stable_equilibrium"] = Field(
-        description='"no_stable_equilibrium": no stable equilibrium is found there (the stable branches end at a '
-                    'fold or the joint range and the global search finds no other)')
-    message: str
 
 
 class BranchPoint(BaseModel):
@@ -101,17 +103,17 @@ class BranchOut(BaseModel):
     points: list[BranchPoint]
 
 
-class ForceDeflectionOut(BaseModel):
+class ForceDeflectionOut(outcome_model(to.Curve)):
+    """A force-deflection curve: `success` when every requested point was computed; else `ended_at` says where it
+    stops and `message` why."""
+
     points: list[CurvePoint]
     jumps: list[JumpOut]
     branches: list[BranchOut] = Field(description='branch = "all" only (else empty)')
     reference: Literal["straight", "rest"] = Field("straight", description="what dx, dy are measured from")
     origin: list[float] = Field([0.0, 0.0], description="the reference tip's deflection from the straight tip "
                                                         "(add it to dx, dy for the deflection from straight)")
-    complete: bool = Field(description="every requested point was computed (ended_at is null)")
     ended_at: CurveEndOut | None = Field(
         description="null when complete; else the first requested point where no stable equilibrium is found: "
                     "points holds only the points before it (the later ones are not computed)")
-    note: str = Field(description='"" when complete, else a sentence saying where the curve ends and how many '
-                                  'points it holds')
     requested: int = Field(description="how many points were asked for (len(points) when complete)")

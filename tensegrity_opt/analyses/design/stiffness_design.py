@@ -805,7 +805,7 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
             if r is None:
                 continue
             kinds.append(r.kind)
-            reasons.append(r.reason)
+            reasons.append(None if r.kind != "none" else r.status)
             end_loads[i] = r.end_load
             if r.kind != "none":
                 loads[i] = r.load

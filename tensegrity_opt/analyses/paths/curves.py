@@ -302,7 +302,7 @@ class Curve(Outcome):
         e = self.ended_at
         m = int(self.dx.size)
         if e is None:
-            return f"every requested point computed ({m} of {self.requested})."
+            return f"all {m} requested points computed"
         why = {"no_stable_equilibrium": "no stable equilibrium"}.get(e.status, e.status.replace("_", " "))
         if m == 0:
             where = f"at the first point, dx = {e.dx:g} (dy = {e.dy:g})"

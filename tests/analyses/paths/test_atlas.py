@@ -168,9 +168,9 @@ def test_unreachable_targets_and_failed_targets_are_kept():
 def test_atlas_time_limit_keeps_what_is_done_and_validates_input():
     at = stability_atlas(BISTABLE, np.linspace(0.2, 1.2, 12), np.linspace(-0.5, 0.5, 12), timeout=0.3)
     assert at.status == "time_limit" and not at.success
-    done = [t for row in at.targets for t in row if t.ok]
+    done = [t for row in at.targets for t in row if t.success]
     assert 0 < len(done) < 144
-    assert all(t.error.startswith("time_limit") for row in at.targets for t in row if not t.ok)
+    assert all(t.error.startswith("time_limit") for row in at.targets for t in row if not t.success)
     for kw, fld in (({"dx": [0.2, 0.1], "dy": [0.0]}, "dx"), ({"dx": [0.1], "dy": [np.nan]}, "dy"),
                     ({"dx": np.zeros(101) + np.arange(101), "dy": np.arange(101.0)}, "dx"),
                     ({"dx": [0.1], "dy": [0.0], "method": "exact"}, "method")):

@@ -278,7 +278,7 @@ def test_held_tip_with_changing_preloads_follows_the_reference_branch():
     P[:, 0, 0] += 0.2 * s
     P[:, 2, 1] -= 0.1 * s
     sim = simulate(m, P, tip="held", targets=T)
-    assert sim.success and sim.events == []
+    assert sim.success and sim.events == ()
     check_rows(sim, lambda k: _chain_with(c0, P[k]), held=True)
     q, F = sim.q[0], sim.force[0]
     for k in range(K):
@@ -412,7 +412,7 @@ def test_time_limit_keeps_the_steps_done_and_constant_inputs_stay_put():
     check_rows(sim, lambda k: ref_bistable3())
     q0 = np.full(3, bistable_well())
     sim = simulate(m, loads=np.zeros((3, 2)), start=q0)
-    assert sim.success and len(sim) == 3 and sim.events == []
+    assert sim.success and len(sim) == 3 and sim.events == ()
     np.testing.assert_allclose(sim.q, np.repeat(q0[None, :], 3, 0), atol=1e-9)
     one = simulate(m, loads=np.zeros((1, 2)))
     assert one.success and len(one) == 1 and one.steps == 1
