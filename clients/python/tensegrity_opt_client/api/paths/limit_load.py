@@ -91,7 +91,7 @@ def sync_detailed(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
@@ -133,7 +133,7 @@ def sync(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
@@ -170,7 +170,7 @@ async def asyncio_detailed(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
@@ -210,7 +210,7 @@ async def asyncio(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
