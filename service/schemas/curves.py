@@ -35,7 +35,8 @@ class ForceDeflectionRequest(BaseModel):
         "stable", description='"all" also returns every branch found at the first deflected point')
     reference: Literal["straight", "rest"] = Field(
         "straight", description='what dx, dy are measured from: the straight tip (the paper\'s) or "rest", the tip '
-                                'of the least-energy rest configuration (a pre-bent arm unloaded: force 0 at dx = dy = 0)')
+                                'of the least-energy rest configuration (a pre-bent arm unloaded: force 0 at '
+                                'dx = dy = 0)')
 
 
 class CurvePoint(BaseModel):
@@ -61,7 +62,8 @@ class JumpOut(BaseModel):
     kind: Literal["buckling", "leave_straight", "snap", "switch"] = Field(
         description='"buckling": leaving (or returning to) the stable straight chain at dx -> 0+, dy = 0, from 0 to '
                     'the guided critical force; "leave_straight": leaving (returning to) a straight chain that is not '
-                    'stable unloaded (K <= 0) or at dy != 0, from the straight force to the deflected point\'s; "snap": '
+                    'stable unloaded (K <= 0) or at dy != 0, from the straight force to the deflected point\'s; '
+                    '"snap": '
                     'the selected stable branch ends or loses stability and the chain jumps to another stable branch; '
                     '"switch": the least-energy stable branch changes while the previous one is still stable')
     dx_before: float

@@ -29,7 +29,7 @@ from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0
 from .control import Control, as_control
-from .events import events_between, joint_limit_events, locate_joint_limit
+from .events import BranchEvent, events_between, joint_limit_events, locate_joint_limit
 from .problem import LIMIT_MARGIN, NEWTON_TOL, PathPoint, PathProblem, path_point
 
 __all__ = ["Branch", "trace_branch", "continue_branch", "FORCE_BOUND", "SINGULAR_TIP", "MAX_TURN"]
@@ -388,9 +388,9 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             # t turned with no fold of the reduced Hessian: the held tip passed the edge of its workspace (J loses
             # rank between the points: the chain straightens) and the branch would come back on the other side
             status = "workspace_boundary"
-            message = ("the held tip reached the edge of its workspace at t = {:.6g} (the tip Jacobian loses rank: "
-                       "the chain straightens); the branch ends there".format(max(a.x[-1], b.x[-1])
-                                                                            if a.tau[-1] > 0 else min(a.x[-1], b.x[-1])))
+            t_edge = max(a.x[-1], b.x[-1]) if a.tau[-1] > 0 else min(a.x[-1], b.x[-1])
+            message = (f"the held tip reached the edge of its workspace at t = {t_edge:.6g} (the tip Jacobian loses "
+                       "rank: the chain straightens); the branch ends there")
             break
         events.extend(new)
         pts.append(b)

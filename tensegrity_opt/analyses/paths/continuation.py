@@ -18,8 +18,9 @@ the global least-energy stable equilibrium (:func:`solve_equilibrium`); with
 what a manipulator driven along a trajectory actually does — by Newton corrections run
 in compiled code for short chains (the C kernels of :mod:`.kernels` up to ``KERNEL_MAX``
 segments, CasADi's ``rootfinder`` under ``mapaccum`` up to ``numerics.DENSE_MAX``), classified
-in one batch. For one target at a time (a control loop) see :class:`tensegrity_opt.Tracker`. A point where the branch ends or loses stability is re-solved globally
-(warm-started from the previous configuration) and the continuation goes on from there.
+in one batch. For one target at a time (a control loop) see :class:`tensegrity_opt.Tracker`. A point where the
+branch ends or loses stability is re-solved globally (warm-started from the previous configuration) and the
+continuation goes on from there.
 With ``continuation=False`` every target is solved globally on its own.
 
 Each target yields an :class:`Equilibrium` or the exception explaining why it has none

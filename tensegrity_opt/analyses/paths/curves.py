@@ -366,8 +366,8 @@ def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _newton_stable(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
-    """Every stable equilibrium Newton finds from the global search's seeds and, on a multistable
-    chain, from every combination of the segments' wells (:func:`~tensegrity_opt.analyses.equilibria.seeds.well_seeds`)."""
+    """Every stable equilibrium Newton finds from the global search's seeds and, on a multistable chain, from every
+    combination of the segments' wells (:func:`~tensegrity_opt.analyses.equilibria.seeds.well_seeds`)."""
     target = m.target(dx, dy)
     starts = seed_starts(m, dx, dy)
     if not m.monotonic:

@@ -42,8 +42,6 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
-import scipy.optimize as so
-from scipy.integrate import BDF
 
 from ...errors import (
     InvalidParameterError,
@@ -54,12 +52,12 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX, chain_solver
-from ...outcome import Outcome, SolverInfo, freeze
+from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
 from .branches import trace_branch
 from .control import Control
-from .problem import LIMIT_MARGIN
+from .descent import ArmState, Descent, state_at
 from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
 
 __all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "BRANCH_POINT_OFFSET"]
@@ -74,10 +72,6 @@ PERTURBATION = 1e-4
 BRANCH_POINT_OFFSET = 1e-5
 #: At most this many snaps within one step (a longer cascade ends the simulation, ``"failed"``).
 MAX_EVENTS_PER_STEP = 32
-#: Integration steps of one descent before it is given up.
-MAX_DESCENT_STEPS = 20000
-#: Newton from a descent point is accepted when it lands within this distance (rad, largest joint).
-POLISH_RADIUS = 0.05
 
 
 @dataclass(frozen=True)
@@ -269,7 +263,8 @@ class Simulation(Outcome):
         """JSON form: ``mode, status, success, message, steps, done``; per step done ``q, force``
         ``{fx, fy}``, ``tip, deflection, energy, potential, stable, morse_index``; ``events``; the inputs
         ``preloads`` and ``loads`` or ``targets``."""
-        d = {**self.outcome(), "mode": self.mode, "steps": self.steps, "done": len(self), "q": [numbers(r) for r in self.q],
+        d = {**self.outcome(), "mode": self.mode, "steps": self.steps, "done": len(self),
+             "q": [numbers(r) for r in self.q],
              "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
              "tip": [numbers(r) for r in self.tip], "deflection": [numbers(r) for r in self.deflection],
              "energy": numbers(self.energy), "potential": numbers(self.potential),
@@ -351,33 +346,8 @@ def _chain(m: Manipulator, P: np.ndarray) -> Manipulator:
     return Manipulator(s.replace(L0=(float(P[i, 0]), float(P[i, 1]))) for i, s in enumerate(m.segments))
 
 
-# ---------------------------------------------------------------------------- the state
-@dataclass
-class _State:
-    q: np.ndarray
-    force: np.ndarray
-    tip: np.ndarray
-    energy: float
-    morse: int
-    stable: bool
-
-    def potential(self, held: bool) -> float:
-        return self.energy if held else self.energy - float(self.force @ self.tip)
-
-    def equilibrium(self, held: bool) -> Equilibrium:
-        return Equilibrium(q=self.q.copy(), energy=self.energy, force=self.force.copy(), morse_index=self.morse,
-                           stable=self.stable, solver=SolverInfo("simulation", 0), tip=self.tip.copy(),
-                           control="displacement" if held else "force")
-
-
-def _state_of(prob, x: np.ndarray) -> _State:
-    w, _, E, tip = prob.reduced(x)
-    idx, st = prob.morse(w)
-    n = prob.n
-    return _State(x[:n].copy(), x[n:n + 2].copy(), np.asarray(tip, float).copy(), float(E), int(idx), bool(st))
-
-
-def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> _State:
+# ---------------------------------------------------------------------------- the start
+def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> ArmState:
     if start is None:
         if held:
             eq = _least_energy_held(m0, T0)
@@ -415,7 +385,7 @@ def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> _State:
     if not eq.stable:
         raise InvalidParameterError(f"start is not a stable equilibrium under the first inputs (Morse index "
                                     f"{eq.morse_index})", field="start")
-    return _State(eq.q.copy(), np.asarray(F0, float).copy() if not held else eq.force.copy(), eq.tip.copy(),
+    return ArmState(eq.q.copy(), np.asarray(F0, float).copy() if not held else eq.force.copy(), eq.tip.copy(),
                   float(eq.energy), 0, True)
 
 
@@ -435,105 +405,6 @@ def _least_energy_held(m0: Manipulator, T0) -> Equilibrium:
     return solve_equilibrium(m0, float(T0[0]), float(T0[1]))
 
 
-# ---------------------------------------------------------------------------- descent
-class _Descent:
-    """The gradient flow of the potential at fixed inputs (``t`` of ``prob``), and its landing."""
-
-    def __init__(self, prob, t: float, held: bool, F: np.ndarray) -> None:
-        self.prob, self.t, self.held, self.F = prob, float(t), held, np.asarray(F, float)
-        self.n = prob.n
-        self.Ts = float(prob.m.torque_scale)
-
-    def x(self, q: np.ndarray, F: np.ndarray | None = None) -> np.ndarray:
-        return np.concatenate([q, self.F if F is None else F, [self.t]])
-
-    def multiplier(self, q: np.ndarray):
-        """``(grad E, J, tip residual, F)`` for the held tip: ``F`` the least-squares multiplier."""
-        R, _, _, J, _, _ = self.prob.eval_all(self.x(q, np.zeros(2)))
-        g = R[:self.n]
-        F = np.linalg.lstsq(J.T, g, rcond=None)[0]
-        return g, J, R[self.n:self.n + 2], F
-
-    def field(self, _tau: float, q: np.ndarray) -> np.ndarray:
-        if not self.held:
-            R = self.prob.eval_all(self.x(q))[0]
-            return -R[:self.n] / self.Ts
-        g, J, r, F = self.multiplier(q)
-        back = np.linalg.lstsq(J, r, rcond=None)[0]             # pulls the drift back onto tip(q) = target
-        return -(g - J.T @ F) / self.Ts - back
-
-    def jac(self, _tau: float, q: np.ndarray) -> np.ndarray:
-        return -self.prob.eval_all(self.x(q))[2] / self.Ts
-
-    def onto(self, q: np.ndarray) -> np.ndarray:
-        """``q`` moved onto the tip constraint (Gauss-Newton, least-norm)."""
-        for _ in range(8):
-            _, J, r, _ = self.multiplier(q)
-            if float(np.abs(r).max()) <= 1e-13 * self.prob.Ls:
-                break
-            q = q - np.linalg.lstsq(J, r, rcond=None)[0]
-        return q
-
-    def potential(self, q: np.ndarray) -> float:
-        _, _, _, _, E, tip = self.prob.eval_all(self.x(q, np.zeros(2) if self.held else None))
-        return float(E) if self.held else float(E) - float(self.F @ tip)
-
-    def point(self, q: np.ndarray) -> np.ndarray:
-        """The full ``x`` at ``q`` (held: with its least-squares multiplier)."""
-        return self.x(q, self.multiplier(q)[3] if self.held else None)
-
-    def landing(self, q: np.ndarray):
-        """The polished minimum near ``q`` when ``q`` is in its Newton neighbourhood, else None."""
-        prob = self.prob
-        x = self.point(q)
-        idx, st = prob.morse(prob.reduced(x)[0])
-        if not st:
-            return None
-        y, _ = prob.correct_t(x, self.t)
-        if y is None or float(np.abs(y[:self.n] - q).max()) > POLISH_RADIUS:
-            return None
-        if prob.limit_ratio(y)[0] >= 1.0 - LIMIT_MARGIN:
-            return None
-        s = _state_of(prob, y)
-        if not s.stable or s.potential(self.held) > self.potential(q) + 1e-12 * self.Ts:
-            return None
-        return s
-
-    def run(self, q0: np.ndarray):
-        """``("landed", state)``, ``("joint_limit", q at the bound)``, ``("time_limit", q)`` or ``("failed", q)``."""
-        prob = self.prob
-        q0 = self.onto(q0) if self.held else q0
-        solver = BDF(self.field, 0.0, q0, 1e12, rtol=1e-8, atol=1e-10,
-                     jac=None if self.held else self.jac)
-        q = q0
-        for _ in range(MAX_DESCENT_STEPS):
-            if expired():
-                return "time_limit", q
-            tau_a, qa = solver.t, solver.y.copy()
-            msg = solver.step()
-            if msg is not None or solver.status == "failed":
-                return "failed", qa
-            q = solver.y.copy()
-            lim, _ = prob.limit_ratio(q)
-            if lim >= 1.0 - LIMIT_MARGIN:
-                dense = solver.dense_output()
-                target = 1.0 - LIMIT_MARGIN
-                try:
-                    tau = so.brentq(lambda s: prob.limit_ratio(dense(s))[0] - target, tau_a, solver.t, xtol=1e-14)
-                    ql = dense(tau)
-                    if prob.limit_ratio(ql)[0] > target:
-                        ql = qa
-                except ValueError:
-                    ql = qa
-                return "joint_limit", ql
-            s = self.landing(q)
-            if s is not None:
-                return "landed", s
-            if solver.status == "finished":
-                break
-        return "failed", q
-
-
 # ---------------------------------------------------------------------------- one step
 class _Run:
     def __init__(self, m: Manipulator, P, L, T, held: bool, perturbation: float) -> None:
@@ -546,7 +417,7 @@ class _Run:
             return P, None, self.T[k] + s * (self.T[k + 1] - self.T[k])
         return P, self.L[k] + s * (self.L[k + 1] - self.L[k]), None
 
-    def step(self, k: int, state: _State):
+    def step(self, k: int, state: ArmState):
         """The state at sample ``k + 1`` from ``state`` at sample ``k``: ``(state, status, message)``; on an
         irregular end ``state`` is None."""
         s0 = 0.0
@@ -567,7 +438,7 @@ class _Run:
             # (a stability loss on the last step to t = 1 ends the branch as "t_max": the events decide)
             lost = [e for e in br.events if e.stability == "lost" and e.kind in ("fold", "branch_point")]
             if not lost and br.status == "t_max":
-                end = _state_of(prob, np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]]))
+                end = state_at(prob, np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]]))
                 if end.stable:
                     return end, "complete", ""
                 return None, "failed", (f"step {k}: the followed branch became unstable without a located fold or "
@@ -582,8 +453,8 @@ class _Run:
                 ev = next((e for e in br.events if e.kind == "joint_limit"), None)
                 if ev is not None:
                     s_ev = s0 + r * ev.t
-                    self.events.append(self._event("joint_limit", "joint_limit", k, s_ev, ev.q, None, ev.force, None, ev.tip, None,
-                                                   ev.energy, None, None, None, 0, "limit",
+                    self.events.append(self._event("joint_limit", "joint_limit", k, s_ev, ev.q, None, ev.force, None,
+                                                   ev.tip, None, ev.energy, None, None, None, 0, "limit",
                                                    f"joint {ev.joint + 1} reached its range bound"))
                 return None, "joint_limit", (f"a joint reached its range bound in step {k} (at fraction "
                                              f"{s0 + r * (ev.t if ev else br.t[-1]):.6g}): no equilibrium "
@@ -618,7 +489,7 @@ class _Run:
         phi = phi / max(float(np.abs(phi).max()), 1e-300)
         note = ""
         if not fold:
-            # just past the branch point along the traced (now unstable) branch: at the branch point itself the
+            # just past the branch point along the traced branch (unstable there): at the branch point itself the
             # flow would leave only algebraically slowly
             after = np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]])
             t_d = min(float(x_ev[-1]) + BRANCH_POINT_OFFSET / float(prob.w[-1]), float(after[-1]))
@@ -630,7 +501,7 @@ class _Run:
             x_ev = y
         t_d = float(x_ev[-1])
         s_d = s0 + r * t_d
-        d = _Descent(prob, t_d, self.held, x_ev[n:n + 2].copy())
+        d = Descent(prob, t_d, self.held, x_ev[n:n + 2].copy())
         q_ev = x_ev[:n].copy()
         V_ev = d.potential(q_ev)
         cands = {}
@@ -646,7 +517,7 @@ class _Run:
                 sign = -sign
         else:
             sign = 1 if cands[1][0] <= cands[-1][0] + 1e-15 * max(1.0, abs(V_ev)) else -1
-        before = _state_of(prob, x_ev)
+        before = state_at(prob, x_ev)
         outcome, res = d.run(cands[sign][1])
         kind = "snap" if fold else "bifurcation"
         if outcome == "landed":
@@ -663,9 +534,9 @@ class _Run:
         if outcome == "joint_limit":
             msg = (f"the snap at step {k} + {s_d:.6g} runs into a joint's range bound (no equilibrium inside the "
                    "physical range on the way)")
-            self.events.append(self._event("joint_limit", kind, k, s_d, q_ev, None, before.force, None, before.tip, None,
-                                           before.energy, None, before.potential(self.held), None, sign, ev.method,
-                                           msg, ev.null_vector))
+            self.events.append(self._event("joint_limit", kind, k, s_d, q_ev, None, before.force, None, before.tip,
+                                           None, before.energy, None, before.potential(self.held), None, sign,
+                                           ev.method, msg, ev.null_vector))
             return None, s_d, "joint_limit", msg
         if outcome == "time_limit":
             return None, s_d, "time_limit", "the time limit ran out during a snap"
@@ -744,7 +615,7 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
 def _simulate(m, P, L, T, held, start, eps) -> Simulation:
     K, n = P.shape[0], m.n
     run = _Run(m, P, L, T, held, eps)
-    rows: list[_State] = []
+    rows: list[ArmState] = []
     status, message = "complete", ""
     try:
         state = _start_state(_chain(m, P[0]), held, None if held else L[0], T[0] if held else None, start)

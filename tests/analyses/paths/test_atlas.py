@@ -140,7 +140,8 @@ def test_sweep_spec_with_segments_refuses_varying_the_chain():
     with pytest.raises(to.InvalidParameterError) as e:
         sweeps.validate_spec({"analysis": "atlas", "manipulator": {**base, "n": 3}, "grid": {"dx": [0.1]}})
     assert e.value.field == "manipulator.n"
-    for spec, fld in (({"manipulator": {"n": 1}}, "manipulator.n"), ({"grid": {"dx": [0.1], "n": [3, 65]}}, "grid.n[1]")):
+    for spec, fld in (({"manipulator": {"n": 1}}, "manipulator.n"),
+                      ({"grid": {"dx": [0.1], "n": [3, 65]}}, "grid.n[1]")):
         with pytest.raises(to.InvalidParameterError) as e:
             sweeps.validate_spec({"analysis": "atlas", "grid": {"dx": [0.1]}, **spec})
         assert e.value.field == fld

@@ -38,8 +38,6 @@ from __future__ import annotations
 
 import dataclasses
 import functools
-import os
-import sys
 
 import numpy as np
 import pytest

@@ -9,8 +9,6 @@ critical loads, folds, limit loads vs a separate computation, the energy identit
 
 from __future__ import annotations
 
-import os
-import sys
 
 import numpy as np
 import pytest

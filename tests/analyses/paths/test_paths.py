@@ -19,8 +19,6 @@ from __future__ import annotations
 import functools
 import json
 import math
-import os
-import sys
 
 import numpy as np
 import pytest

@@ -9,8 +9,6 @@ Fast: a few seconds in all.
 from __future__ import annotations
 
 import functools
-import os
-import sys
 
 import numpy as np
 import pytest

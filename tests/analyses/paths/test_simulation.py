@@ -16,8 +16,6 @@ from __future__ import annotations
 
 import functools
 import json
-import os
-import sys
 
 import numpy as np
 import pytest
@@ -261,7 +259,8 @@ def test_a_preload_trajectory_drives_a_bistable_segment_through_its_fold():
     assert e.energy_released > 0
     assert e.energy_released == pytest.approx(cf.energy(e.q_before) - cf.energy(e.q_after), abs=1e-9)
     np.testing.assert_allclose(sim.q[:, 1], 0.0, atol=1e-9)
-    assert np.all(np.sign(sim.q[:e.step + 1, 0]) == np.sign(qf)) and np.all(np.sign(sim.q[e.step + 1:, 0]) != np.sign(qf))
+    assert np.all(np.sign(sim.q[:e.step + 1, 0]) == np.sign(qf))
+    assert np.all(np.sign(sim.q[e.step + 1:, 0]) != np.sign(qf))
 
 
 # --------------------------------------------------------------------------- held tip
