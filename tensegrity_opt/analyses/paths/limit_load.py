@@ -32,7 +32,7 @@ from .branches import Branch, trace_branch
 from .control import Control
 from ..equilibria.equilibrium import Equilibrium, check_q0
 
-__all__ = ["LimitLoad", "limit_load", "DEFAULT_MAX_LOAD"]
+__all__ = ["LimitLoad", "limit_load", "check_max_load", "DEFAULT_MAX_LOAD"]
 
 #: Without ``max_load`` the path is followed up to this many force units ``k c^2 / (2 b)``.
 DEFAULT_MAX_LOAD = 100.0
@@ -127,6 +127,19 @@ class LimitLoad(Outcome):
         return d
 
 
+def check_max_load(max_load) -> float | None:
+    """``max_load`` as a float (None stays None), or :class:`InvalidParameterError` unless finite and > 0."""
+    if max_load is None:
+        return None
+    try:
+        max_load = float(max_load)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"max_load must be a number, got {max_load!r}", field="max_load") from None
+    if not math.isfinite(max_load) or max_load <= 0:
+        raise InvalidParameterError(f"max_load must be finite and > 0, got {max_load!r}", field="max_load")
+    return max_load
+
+
 def _compliance(prob, x: np.ndarray, d: np.ndarray, guided: bool) -> float:
     _, _, H, J, _, _ = prob.eval_all(x)
     try:
@@ -211,13 +224,7 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
     F0 = control.base
     loaded = bool(np.any(F0 != 0.0))
     d = control.direction
-    if max_load is not None:
-        try:
-            max_load = float(max_load)
-        except (TypeError, ValueError):
-            raise InvalidParameterError(f"max_load must be a number, got {max_load!r}", field="max_load") from None
-        if not math.isfinite(max_load) or max_load <= 0:
-            raise InvalidParameterError(f"max_load must be finite and > 0, got {max_load!r}", field="max_load")
+    max_load = check_max_load(max_load)
     from ..equilibria.equilibrium import solve_equilibrium_under_force
 
     if start is None and not loaded:
