@@ -1,8 +1,8 @@
 """The workspace stability atlas (analyses/atlas.py), its sweep form, and curves measured from the rest shape.
 
-Independent numbers: tests/reference_model.py (numpy: the energy, the held-tip Newton and a many-start
-global minimum) and the exact rest configurations of tests/reference_paths.py; the brute-force atlas
-comparison (counts, Maxwell points, folds on the edges) is tests/test_atlas_reference.py.
+Independent numbers: tests/support/reference_model.py (numpy: the energy, the held-tip Newton and a many-start
+global minimum) and the exact rest configurations of tests/support/reference_paths.py; the brute-force atlas
+comparison (counts, Maxwell points, folds on the edges) is tests/analyses/paths/test_atlas_reference.py.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """The stability atlas (``tensegrity_opt.analyses.paths.atlas``) against independent references.
 
-The references (``tests/reference_atlas.py``, on ``reference_model`` / ``reference_paths``; no
+The references (``tests/support/reference_atlas.py``, on ``reference_model`` / ``reference_paths``; no
 ``tensegrity_opt``) are: a brute-force set of the stable equilibria at every grid target (several hundred
 starts run downhill on the tip constraint, SLSQP with the tip equality, Newton polish, reduced Hessian);
 every stable branch at either end of every grid edge followed along it by natural-parameter steps (scipy

@@ -3,7 +3,7 @@
 The expected numbers come from other solvers of the library that share nothing with the path system
 but the model (IPOPT/Newton under force or displacement on a chain with changed preloads, the straight
 chain's eigenproblem in ``critical_force``), from closed forms (``t`` at the end point), or from
-tests/reference_model.py (independent numpy model). The acceptance tests of issue 16 (branch points =
+tests/support/reference_model.py (independent numpy model). The acceptance tests of the paths (branch points =
 critical loads, folds, limit loads vs a separate computation, the energy identity) are in test_paths.py.
 """
 

@@ -1,7 +1,7 @@
-"""Partial force-deflection curves (the stable branch ends) and the kinds of their jumps (issue 18).
+"""Partial force-deflection curves (the stable branch ends) and the kinds of their jumps.
 
 Expected values are independent of the library: the end of a curve and the energies and forces at its
-points come from the reference model (``tests/reference_model.py``: its own many-start SLSQP descent and
+points come from the reference model (``tests/support/reference_model.py``: its own many-start SLSQP descent and
 random-start Newton search), the critical force from conventions.md's table, the joint stiffness from
 the closed form ``K = k (b L0 - 2 (b^2 - a^2))``, and whether a branch survives a grid step from the
 reference model's own Newton continuation of it in small steps.

@@ -1,7 +1,7 @@
-"""Acceptance tests of equilibrium paths and limit points (issue 16) against independent
+"""Acceptance tests of equilibrium paths and limit points against independent
 references.
 
-Every expected number comes from ``tests/reference_paths.py`` / ``tests/reference_model.py``
+Every expected number comes from ``tests/support/reference_paths.py`` / ``tests/support/reference_model.py``
 (numpy + scipy, relative joint angles, no import of the library) or from a closed form; the
 library is only called to produce the values under test.
 

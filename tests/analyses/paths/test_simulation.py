@@ -1,7 +1,7 @@
-"""Quasi-static simulation with snap-through (issue 17, item 2) against independent references.
+"""Quasi-static simulation with snap-through against independent references.
 
-Every expected number comes from ``tests/reference_paths.py`` / ``tests/reference_model.py`` (numpy + scipy,
-no import of the library) or from the small scipy routines below: the folds from
+Every expected number comes from ``tests/support/reference_paths.py`` / ``tests/support/reference_model.py``
+(numpy + scipy, no import of the library) or from the small scipy routines below: the folds from
 ``limit_load_reference`` / ``fold_in_displacement`` (natural paths and the extended system), the landing
 states from a gradient flow of the reference potential integrated by scipy's LSODA from the reference fold
 (perturbed along its null vector to the side where the potential is lower), the global minima from the
