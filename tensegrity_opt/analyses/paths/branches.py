@@ -176,7 +176,6 @@ def _start_point(m: Manipulator, prob: PathProblem, sign: float) -> PathPoint:
     return path_point(prob, x, tau)
 
 
-
 def _branch_from(prob: PathProblem, pts: list[PathPoint], s: list[float], events: list, status: str,
                  message: str) -> Branch:
     m = prob.m

@@ -166,6 +166,7 @@ class Control:
         return cls.preload(d, tip=tip, load=load)
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON form (a branch's ``control``): ``kind`` and the constructor's arguments."""
         if self.kind == "move":
             n = (self.direction.size - 2) // 2
             d = {"kind": "move", "tip": self.tip,

@@ -88,6 +88,7 @@ class BranchEvent:
         freeze(self, copy=False)            # the builder passes arrays it owns
 
     def to_dict(self) -> dict[str, Any]:
+        """JSON form (an item of a branch's ``events``)."""
         return {"kind": self.kind, "index": int(self.index), "t": number(self.t), "q": numbers(self.q),
                 "force": {"fx": number(self.force[0]), "fy": number(self.force[1])}, "tip": numbers(self.tip),
                 "energy": number(self.energy),
@@ -95,7 +96,6 @@ class BranchEvent:
                 "morse_before": int(self.morse_before), "morse_after": int(self.morse_after),
                 "stability": self.stability, "method": self.method, "residual": nullable(self.residual),
                 "joint": self.joint}
-
 
 
 def _on_step(prob: PathProblem, a: PathPoint, b: PathPoint, sigma: float, h: float) -> np.ndarray | None:
