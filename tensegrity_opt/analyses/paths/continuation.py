@@ -340,9 +340,8 @@ def follow(m: Manipulator, br: BranchPoints, start: int, stop: int, targets: np.
                 idx = np.arange(s + 1, s + 1 + good)
                 br.q[idx], br.F[idx], br.E[idx] = pre.q, pre.force, pre.energy
                 br.morse[idx], br.stable[idx], br.valid[idx] = pre.morse_index, pre.stable, True
-                its = pre.iterations
-                for j, i in enumerate(idx):
-                    br.solver[i] = _newton_info(None if its is None else int(its[j]))
+                its = [None] * good if pre.iterations is None else pre.iterations.tolist()
+                br.solver[s + 1:s + 1 + good] = [_newton_info(k) for k in its]
                 s += good
         if s + 1 >= stop:
             break
