@@ -217,8 +217,7 @@ class _LimitLoadFields(BaseModel):
 
 
 class LimitLoadRequest(_LimitLoadFields):
-    """The dead load at which the branch from a rest configuration first loses stability
-    (`tensegrity_opt.limit_load`)."""
+    """The dead load where the branch from a rest configuration first loses stability (`tensegrity_opt.limit_load`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": PAPER_CHAIN, "direction": [-1.0, 0.0], "boundary": "guided",
@@ -228,8 +227,7 @@ class LimitLoadRequest(_LimitLoadFields):
 
 
 class StabilityBoundaryRequest(BaseModel):
-    """The curve of folds or branch points in (parameter, t)
-    (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`)."""
+    """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.stability_boundary`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": PAPER_CHAIN, "control": {"kind": "guided", "direction": [-1.0, 0.0]},

@@ -100,7 +100,7 @@ def sync_detailed(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:
@@ -142,7 +142,7 @@ def sync(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:
@@ -179,7 +179,7 @@ async def asyncio_detailed(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:
@@ -219,7 +219,7 @@ async def asyncio(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:
