@@ -24,7 +24,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError
 from ...model.manipulator import Manipulator
-from ...outcome import Outcome, freeze
+from ...outcome import Outcome
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0
@@ -112,7 +112,15 @@ class Branch(Outcome):
     problem: Any = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
-        freeze(self, copy=False)
+        # the engine passes arrays it owns: read-only in place (a simulation traces a branch per step)
+        for a in (self.t, self.q, self.force, self.tip, self.energy, self.morse_index, self.stable, self.s,
+                  self.rest_lengths):
+            if a is not None:
+                a.setflags(write=False)
+        if not isinstance(self.events, tuple):
+            object.__setattr__(self, "events", tuple(self.events))
+        if self.status not in self.STATUSES:
+            self._check_outcome()
 
     @property
     def manipulator(self) -> Manipulator | None:

@@ -341,7 +341,7 @@ def follow(m: Manipulator, br: BranchPoints, start: int, stop: int, targets: np.
                 br.q[idx], br.F[idx], br.E[idx] = pre.q, pre.force, pre.energy
                 br.morse[idx], br.stable[idx], br.valid[idx] = pre.morse_index, pre.stable, True
                 its = [None] * good if pre.iterations is None else pre.iterations.tolist()
-                br.solver[s + 1:s + 1 + good] = [_newton_info(k) for k in its]
+                br.solver[s + 1:s + 1 + good] = map(_newton_info, its)
                 s += good
         if s + 1 >= stop:
             break

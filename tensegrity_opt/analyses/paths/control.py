@@ -18,7 +18,6 @@ import numpy as np
 
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from ...outcome import freeze
 from ...serialize import numbers
 
 __all__ = ["Control", "as_control", "KINDS"]
@@ -79,7 +78,12 @@ class Control:
     tip: str = "free"
 
     def __post_init__(self) -> None:
-        freeze(self)                        # read-only arrays (a private copy of the caller's)
+        for name in ("direction", "base", "normal"):         # read-only arrays (a private copy of the caller's)
+            v = getattr(self, name)
+            if v is not None and v.flags.writeable:
+                v = v.copy()
+                v.setflags(write=False)
+                object.__setattr__(self, name, v)
 
     @classmethod
     def displacement(cls, direction=(1.0, 0.0)) -> "Control":

@@ -289,7 +289,13 @@ class Curve(Outcome):
     def __post_init__(self) -> None:
         if self.requested < 0:
             object.__setattr__(self, "requested", int(self.dx.size))
-        freeze(self)
+        for a in (self.dx, self.dy, self.q, self.fx, self.fy, self.energy, self.stable, self.morse_index,
+                  self.branch, self.origin):
+            a.setflags(write=False)                 # the builders' own arrays, read-only in place
+        for name in ("shape", "point_status", "solver", "jumps", "branches"):
+            v = getattr(self, name)
+            if not isinstance(v, tuple):
+                object.__setattr__(self, name, tuple(v))
 
     @property
     def status(self) -> str:

@@ -22,7 +22,6 @@ from typing import Any
 import numpy as np
 import scipy.optimize as so
 
-from ...outcome import freeze
 from ...serialize import nullable, number, numbers
 from .problem import LIMIT_MARGIN, NEWTON_TOL, PathPoint, PathProblem
 
@@ -85,7 +84,9 @@ class BranchEvent:
     null_x: np.ndarray | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
-        freeze(self, copy=False)            # the builder passes arrays it owns
+        for a in (self.q, self.force, self.tip, self.null_vector, self.x, self.null_x):   # the builder's own arrays
+            if a is not None:
+                a.setflags(write=False)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (an item of a branch's ``events``)."""

@@ -26,7 +26,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from ...outcome import Outcome, freeze
+from ...outcome import Outcome
 from ...serialize import nullable, number, numbers
 from .branches import Branch, trace_branch
 from .control import Control
@@ -105,7 +105,11 @@ class LimitLoad(Outcome):
     base: np.ndarray = field(default_factory=lambda: np.zeros(2))
 
     def __post_init__(self) -> None:
-        freeze(self)
+        for a in (self.force, self.q, self.null_vector, self.quasi_buckling_force, self.direction, self.base):
+            if a is not None:
+                a.setflags(write=False)             # the builder's own arrays, read-only in place
+        if self.status not in self.STATUSES:
+            self._check_outcome()
 
     def to_dict(self, *, include_branch: bool = False) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/limit-load``): ``success``, ``status``, ``message``, ``load``,
