@@ -850,7 +850,7 @@ def case10(cfg: Config) -> list[Row]:
                         median_ms(base_t) if base_t else None,
                         ratio=(median_ms(base_t) / median_ms(ts)) if base_t else None, target="(info)", samples=ts,
                         baseline_samples=base_t,
-                        notes=[f"{name}: kind {res.kind}, load {val:.6g}" + (f" ({res.reason})" if res.reason else "")
+                        notes=[f"{name}: kind {res.kind}, load {val:.6g}" + (f" ({res.status})" if res.kind == "none" else "")
                                + (f"; quasi-buckling load {res.quasi_buckling_load:.6g}"
                                   if res.quasi_buckling_load is not None else "")
                                + (f"; the step-and-bisect loop: {base_val:.6g}" if base_t and base_val is not None

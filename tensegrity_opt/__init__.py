@@ -14,7 +14,10 @@ Quick start::
 
 from .analyses.equilibria.all_equilibria import EquilibriumSet, find_equilibria
 from .analyses.paths.atlas import StabilityAtlas, stability_atlas
-from .analyses.paths.branches import Branch, BranchEvent, Control, bifurcation_diagram, switch_branch, trace_branch
+from .analyses.paths.branches import Branch, trace_branch
+from .analyses.paths.control import Control
+from .analyses.paths.diagram import bifurcation_diagram, switch_branch
+from .analyses.paths.events import BranchEvent
 from .analyses.paths.boundaries import StabilityBoundary, stability_boundary
 from .analyses.equilibria.buckling import Buckling, Mode, critical_force
 from .analyses.paths.continuation import Tracker, solve_equilibria_batch

@@ -27,8 +27,8 @@ router = APIRouter(prefix="/v1", tags=["curves"])
                 "each with `delta` and a `label`); `branch = \"all\"` also returns every "
                 "branch found at the first deflected point, with null where it no longer exists. Where a point has "
                 "no stable equilibrium (a fold, the joint range) the curve stops: the answer is still 200, with the "
-                "points before it, `complete = false`, `ended_at` (that point and why) and a `note`. An answer over the "
-                "server's `TENSEGRITY_MAX_RESPONSE_BYTES` (default 8 MiB; n = 200 with 301 points and `branch = "
+                "points before it, `success = false`, `ended_at` (that point and why) and a `message`. An answer over "
+                "the server's `TENSEGRITY_MAX_RESPONSE_BYTES` (default 8 MiB; n = 200 with 301 points and `branch = "
                 "\"all\"` is ~40 MB) is refused with 422 `response_too_large` on `dx`: ask for fewer points or "
                 "`branch = \"stable\"`.",
     responses=solve_responses(ex.FORCE_DEFLECTION, "unreachable_target", "no_equilibrium", "response_too_large"))

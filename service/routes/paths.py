@@ -123,7 +123,7 @@ async def bifurcation_diagram(
                 "followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through) "
                 "or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with "
                 "`load`, the configuration and the mode there; `none` when the path stays stable to a joint limit "
-                "or `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along "
+                "or `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along "
                 "the load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path. "
                 + _CONTINUATION,
     responses=solve_responses(ex.LIMIT_LOAD, "continuation_too_long", "bad_start", "too_many_points",

@@ -16,16 +16,14 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
-from tensegrity_opt.analyses.paths.atlas import CROSSING_KINDS
+import tensegrity_opt as to
+from tensegrity_opt.analyses.paths.atlas import CROSSING_KINDS, AtlasTarget
 
 from ..config import HARD_MAX_ATLAS_TARGETS
-from .common import Deflection, Int, ManipulatorIn, RangeIn
+from .common import Deflection, Int, ManipulatorIn, RangeIn, outcome_model
 
 __all__ = ["AtlasRange", "AtlasValues", "AtlasRequest", "AtlasOut", "AtlasTargetOut", "AtlasCrossingOut",
-           "AtlasCurvesOut", "AtlasUnresolvedOut", "ATLAS_STATUSES", "ATLAS_REQUEST_EXAMPLE"]
-
-#: ``StabilityAtlas.status``.
-ATLAS_STATUSES = ("complete", "partial", "time_limit")
+           "AtlasCurvesOut", "AtlasUnresolvedOut", "ATLAS_REQUEST_EXAMPLE"]
 
 #: A bistable chain (a = 0.5: every segment has two wells), 3 x 3 targets: the example of every atlas request.
 ATLAS_CHAIN = {"n": 3, "a": 0.5, "b": 1.0, "k": 1.0, "L0": 1.0}
@@ -85,7 +83,7 @@ class AtlasRequest(_AtlasFields):
 
 
 # ---------------------------------------------------------------------------- answers
-class AtlasTargetOut(BaseModel):
+class AtlasTargetOut(outcome_model(AtlasTarget)):
     """The equilibria with the tip held at one target (`AtlasTarget.to_dict()`)."""
 
     dx: float
@@ -140,15 +138,11 @@ class AtlasUnresolvedOut(BaseModel):
     reason: str
 
 
-class AtlasOut(BaseModel):
+class AtlasOut(outcome_model(to.StabilityAtlas)):
     """`StabilityAtlas.to_dict()`: the per-target arrays are `[dy index][dx index]`, `null` where absent."""
 
     dx: list[float]
     dy: list[float]
-    status: Literal[ATLAS_STATUSES] = Field(description="complete, partial (some targets or edges failed) or "
-                                                        "time_limit (cut by the server's time limit: the rest not "
-                                                        "done)")
-    success: bool = Field(description="status is complete")
     method: str
     seconds: float
     count: list[list[int]] = Field(description="equilibria per target (-1: failed)")

@@ -20,11 +20,11 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Fiel
 
 from tensegrity_opt.analyses.design.preload_control import OBJECTIVES
 from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
-from tensegrity_opt.analyses.paths.simulation import STATUSES as SIMULATION_STATUSES
+from tensegrity_opt.analyses.paths.simulation import Simulation, SimulationEvent
 
 from ..config import HARD_MAX_SEGMENTS, HARD_MAX_TRAJECTORY_STEPS
 from .common import (_STRICT, MAX_ANGLE, MAX_STIFFNESS, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Length,
-                     ManipulatorIn, integral)
+                     ManipulatorIn, integral, outcome_model)
 from .design import MAX_DESIGN_SEGMENTS, DesignManipulatorIn
 from .paths import StartQ
 
@@ -213,8 +213,9 @@ class SimulationRequest(_SimulationFields):
         "examples": [SIMULATION_REQUEST_EXAMPLE]})
 
 
-class SimulationEventOut(BaseModel):
-    """Something that happened between sample `step` and `step + 1`, at `time = step + fraction`."""
+class SimulationEventOut(outcome_model(SimulationEvent)):
+    """Something that happened between sample `step` and `step + 1`, at `time = step + fraction`: where the arm
+    went (`status`) and what it did there."""
 
     kind: Literal[SIMULATION_EVENT_KINDS] = Field(
         description="snap (the followed branch folded: the arm jumps), bifurcation (lost stability at a branch "
@@ -240,17 +241,13 @@ class SimulationEventOut(BaseModel):
     null_vector: list[float] | None = Field(description="the snapping mode (largest entry +1)")
     direction: int = Field(description="the sign of null_vector the descent left along (0: joint limit)")
     method: str = Field(description="moore_spence, test_function or limit")
-    message: str
 
 
-class SimulationOut(BaseModel):
-    """`Simulation.to_dict()`: the state at each sample done (`done` of `steps`) and the events."""
+class SimulationOut(outcome_model(Simulation)):
+    """`Simulation.to_dict()`: the state at each sample done (`done` of `steps`) and the events; `status` says how
+    it ended (time_limit: cut by the server's time limit; the samples done are kept)."""
 
     mode: Literal["free", "held"]
-    status: Literal[SIMULATION_STATUSES] = Field(description="how it ended (time_limit: cut by the server's time "
-                                                             "limit; the samples done are kept)")
-    success: bool = Field(description="every sample simulated")
-    message: str
     steps: int = Field(description="samples asked for (K)")
     done: int = Field(description="samples simulated")
     q: list[list[float]] = Field(description="joint angles (rad) per sample done")

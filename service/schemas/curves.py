@@ -6,7 +6,11 @@ from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
 
-from .common import MAX_CURVE_POINTS, PAPER_CHAIN, Deflection, DeflectionRange, Force, ManipulatorIn, _list_or_range
+import tensegrity_opt as to
+from tensegrity_opt.analyses.paths.curves import POINT_STATUSES
+
+from .common import (MAX_CURVE_POINTS, PAPER_CHAIN, Deflection, DeflectionRange, Force, ManipulatorIn, SolverInfo,
+                     _list_or_range, outcome_model)
 
 
 class ForceDeflectionRequest(BaseModel):
@@ -31,7 +35,8 @@ class ForceDeflectionRequest(BaseModel):
         "stable", description='"all" also returns every branch found at the first deflected point')
     reference: Literal["straight", "rest"] = Field(
         "straight", description='what dx, dy are measured from: the straight tip (the paper\'s) or "rest", the tip '
-                                'of the least-energy rest configuration (a pre-bent arm unloaded: force 0 at dx = dy = 0)')
+                                'of the least-energy rest configuration (a pre-bent arm unloaded: force 0 at '
+                                'dx = dy = 0)')
 
 
 class CurvePoint(BaseModel):
@@ -45,9 +50,10 @@ class CurvePoint(BaseModel):
     morse_index: int
     shape: str
     branch: int = Field(description="branch identifier (-1: straight)")
-    status: str = Field(description='solver status: "straight", "straight_not_equilibrium" (asymmetric preloads: the '
-                                    'straight point is no equilibrium, stable false), or the solver\'s status of a '
-                                    'converged equilibrium (e.g. "Newton_Converged")')
+    status: Literal[tuple(POINT_STATUSES)] = Field(
+        description="what the point is: " + "; ".join(f"`{k}`: {v}" for k, v in POINT_STATUSES.items()))
+    solver: SolverInfo = Field(description='the solver\'s own status and iterations (e.g. "Newton_Converged"; '
+                                           '"straight" for the straight chain)')
 
 
 class JumpOut(BaseModel):
@@ -56,7 +62,8 @@ class JumpOut(BaseModel):
     kind: Literal["buckling", "leave_straight", "snap", "switch"] = Field(
         description='"buckling": leaving (or returning to) the stable straight chain at dx -> 0+, dy = 0, from 0 to '
                     'the guided critical force; "leave_straight": leaving (returning to) a straight chain that is not '
-                    'stable unloaded (K <= 0) or at dy != 0, from the straight force to the deflected point\'s; "snap": '
+                    'stable unloaded (K <= 0) or at dy != 0, from the straight force to the deflected point\'s; '
+                    '"snap": '
                     'the selected stable branch ends or loses stability and the chain jumps to another stable branch; '
                     '"switch": the least-energy stable branch changes while the previous one is still stable')
     dx_before: float
@@ -70,15 +77,12 @@ class JumpOut(BaseModel):
                                    'chain: F_x 0 -> -0.573 (compressive)"')
 
 
-class CurveEndOut(BaseModel):
+class CurveEndOut(outcome_model(to.CurveEnd)):
     """Where a partial curve stopped: the first requested point it could not compute."""
 
+    success: bool = Field(description="always false: the curve could not go on there")
     dx: float
     dy: float
-    reason: Literal["no_stable_equilibrium"] = Field(
-        description='"no_stable_equilibrium": no stable equilibrium is found there (the stable branches end at a '
-                    'fold or the joint range and the global search finds no other)')
-    message: str
 
 
 class BranchPoint(BaseModel):
@@ -101,17 +105,17 @@ class BranchOut(BaseModel):
     points: list[BranchPoint]
 
 
-class ForceDeflectionOut(BaseModel):
+class ForceDeflectionOut(outcome_model(to.Curve)):
+    """A force-deflection curve: `success` when every requested point was computed; else `ended_at` says where it
+    stops and `message` why."""
+
     points: list[CurvePoint]
     jumps: list[JumpOut]
     branches: list[BranchOut] = Field(description='branch = "all" only (else empty)')
     reference: Literal["straight", "rest"] = Field("straight", description="what dx, dy are measured from")
     origin: list[float] = Field([0.0, 0.0], description="the reference tip's deflection from the straight tip "
                                                         "(add it to dx, dy for the deflection from straight)")
-    complete: bool = Field(description="every requested point was computed (ended_at is null)")
     ended_at: CurveEndOut | None = Field(
         description="null when complete; else the first requested point where no stable equilibrium is found: "
                     "points holds only the points before it (the later ones are not computed)")
-    note: str = Field(description='"" when complete, else a sentence saying where the curve ends and how many '
-                                  'points it holds')
     requested: int = Field(description="how many points were asked for (len(points) when complete)")

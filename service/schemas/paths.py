@@ -17,11 +17,12 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
-from tensegrity_opt.analyses.paths.branches import EVENT_KINDS, STATUSES
+import tensegrity_opt as to
+from tensegrity_opt.analyses.paths.events import EVENT_KINDS
 
 from ..config import HARD_MAX_PATH_POINTS, HARD_MAX_SEGMENTS
 from .common import (_STRICT, MAX_FORCE, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Int, ManipulatorIn,
-                     integral)
+                     integral, outcome_model)
 from .equilibrium import EquilibriumOut
 
 #: Most bifurcation switches (depth) and branches of one diagram.
@@ -216,7 +217,7 @@ class _LimitLoadFields(BaseModel):
 
 
 class LimitLoadRequest(_LimitLoadFields):
-    """The dead load at which the branch from a rest configuration first loses stability (`tensegrity_opt.limit_load`)."""
+    """The dead load where the branch from a rest configuration first loses stability (`tensegrity_opt.limit_load`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": PAPER_CHAIN, "direction": [-1.0, 0.0], "boundary": "guided",
@@ -226,7 +227,7 @@ class LimitLoadRequest(_LimitLoadFields):
 
 
 class StabilityBoundaryRequest(BaseModel):
-    """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`)."""
+    """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.stability_boundary`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": PAPER_CHAIN, "control": {"kind": "guided", "direction": [-1.0, 0.0]},
@@ -273,14 +274,11 @@ class BranchEventOut(BaseModel):
     joint: int | None = Field(description="the joint at its limit (0-based), joint_limit only")
 
 
-class TracedBranchOut(BaseModel):
-    """An equilibrium branch: per point the parameter, configuration, force, tip, energy and stability."""
+class TracedBranchOut(outcome_model(to.Branch)):
+    """An equilibrium branch: per point the parameter, configuration, force, tip, energy and stability; `status`
+    says how it ended (`success` false: the corrector failed or time ran out, the points computed are kept)."""
 
     control: ControlOut
-    status: Literal[STATUSES] = Field(description="how it ended (time_limit: cut by the server's time limit)")
-    success: bool = Field(description="traced to a regular end (false: the corrector failed or time ran out; the "
-                                      "points computed are kept)")
-    message: str
     points: int
     t: list[float] = Field(description="the control parameter (0 at the start)")
     q: list[list[float]] = Field(description="joint angles (rad) per point")
@@ -301,10 +299,11 @@ class BifurcationDiagramOut(BaseModel):
                                                         "the switched branches breadth-first")
 
 
-class LimitLoadOut(BaseModel):
+class LimitLoadOut(outcome_model(to.LimitLoad)):
+    """The limit load: `status` stability_lost (`kind` fold or bifurcation), or why the path has none."""
+
     load: float | None = Field(description="the load where stability is first lost (null for kind none)")
     kind: Literal["fold", "bifurcation", "none"]
-    reason: str | None = Field(description="kind none: joint_limit, max_load, or the branch's status (time_limit ...)")
     force: Force | None
     q: list[float] | None
     null_vector: list[float] | None
@@ -314,29 +313,32 @@ class LimitLoadOut(BaseModel):
     direction: list[float]
     boundary: Literal["free", "guided"]
     start: EquilibriumOut = Field(description="the rest configuration the path starts from")
-    success: bool
-    branch_status: str
+    branch_status: Literal[tuple(to.Branch.STATUSES)] = Field(description="how the traced path ended (its status)")
     branch_points: int
     branch: TracedBranchOut | None = Field(None, description="include_branch only: the traced path")
 
 
 class CuspOut(BaseModel):
-    model_config = ConfigDict(extra="allow")
+    """A cusp of a fold curve: where the fold's quadratic coefficient changes sign."""
+
+    kind: Literal["cusp"]
     p: float
     t: float
-    q: list[float] | None = None
+    q: list[float]
+    force: Force
 
 
-class StabilityBoundaryOut(BaseModel):
-    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.paths.boundaries`)."""
+class StabilityBoundaryOut(outcome_model(to.StabilityBoundary)):
+    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.paths.boundaries`): the first
+    stability-losing fold or branch point against the parameter `p`."""
 
-    model_config = ConfigDict(extra="allow")
-    kind: Literal["fold", "branch_point"] | None = None
-    parameter: str | None = None
-    p: list[float | None] | None = None
-    t: list[float | None] | None = None
-    q: list[Any] | None = None
-    force: list[Any] | None = None
-    cusps: list[CuspOut] | None = None
-    status: str | None = None
-    success: bool | None = None
+    kind: Literal["fold", "branch_point"]
+    parameter: str = Field(description="the parameter's name (or `direction`)")
+    control: ControlOut
+    points: int
+    p: list[float] = Field(description="the parameter along the curve (0: the given chain)")
+    t: list[float] = Field(description="the limit or critical load (the control's parameter) at each p")
+    q: list[list[float]] = Field(description="joint angles (rad) per point")
+    force: list[Force]
+    null_vectors: list[list[float]] = Field(description="the mode at each point (largest entry +1)")
+    cusps: list[CuspOut]

@@ -508,7 +508,7 @@
     svg.dataset.points = String(pts.length);
     svg.dataset.jumps = String(out.jumps.length);
     svg.dataset.dx = String(inp.dx);
-    svg.dataset.complete = String(out.complete !== false);
+    svg.dataset.complete = String(out.success !== false);
     const finite = (v) => Number.isFinite(v);
     const dxs = pts.map((p) => p.dx).concat([inp.dx]);
     let xlo = Math.min(0, ...dxs.filter(finite)), xhi = Math.max(0, ...dxs.filter(finite));
@@ -519,8 +519,8 @@
     svgEl("text", { class: "label", x: (ml + W - mr) / 2, y: H - 8, "text-anchor": "middle" }, svg).textContent =
       "tip deflection dx" + (inp.dy ? " (dy = " + fmt(inp.dy) + ")" : "");
 
-    const partial = out.complete === false || (out.ended_at !== undefined && out.ended_at !== null);
-    let note = partial ? (out.note || (out.ended_at && out.ended_at.message) || "The curve ends early.") : null;
+    const partial = out.success === false || (out.ended_at !== undefined && out.ended_at !== null);
+    let note = partial ? (out.message || (out.ended_at && out.ended_at.message) || "The curve ends early.") : null;
     if (partial && out.source_code) note += " (the service answered " + out.source_code + ")";
     setResult("curve-note", note, "partial");
     $("curve-desc").textContent = "Fx (top) and Fy (bottom) against dx from " + fmt(pts.length ? pts[0].dx : 0) +
@@ -846,7 +846,7 @@
       if (my !== runId) return;              // a newer solve started meanwhile
       // A curve refused with the points computed before it ended (older services): draw them.
       if (reason && name === "curve" && reason.body && Array.isArray(reason.body.points)) {
-        value = Object.assign({ complete: false, source_code: reason.httpStatus }, reason.body);
+        value = Object.assign({ success: false, source_code: reason.httpStatus }, reason.body);
         reason = null;
       }
       if (!reason) {

@@ -330,7 +330,7 @@ def _curve_end(c: Curve, xname: str) -> tuple[float, str] | None:
     end = c.ended_at
     if end is None:
         return None
-    return float(end.dx if xname == "dx" else end.dy), end.reason
+    return float(end.dx if xname == "dx" else end.dy), end.status
 
 
 def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *, curve: Curve | None = None,
@@ -467,7 +467,7 @@ def plot_curve(m: Manipulator, dx: Any, dy: Any = 0.0, branch: str = "stable", *
     ref = " (from the rest configuration)" if c.reference == "rest" else ""
     head = ("Force-deflection curves" + (" (all branches)" if c.branches else " (least-energy stable)")
             + (f", {other}" if other else "") + ref + "; $F_x$ < 0 compressive")
-    note = c.note
+    note = "" if c.success else c.message
     note = textwrap.fill(note, max(40, int(figsize[0] * 12))) if note else ""
     fig.suptitle(head + f"\n{chain_label(m)}" + (f"\n{note}" if note else ""), fontsize=9)
     return fig
@@ -1341,7 +1341,7 @@ def plot_limit_load(result: Any, *, m: Manipulator | None = None, figsize: tuple
         pt, = ax.plot([float(U[-1])], [float(T[-1])], ls="none", marker="s", ms=6, mfc="white", mec="black", zorder=7)
         pt.set_gid("path-end")
         handles.append(Line2D([], [], ls="none", marker="s", ms=6, mfc="white", mec="black"))
-        labels.append(f"end of the path ({result.reason})")
+        labels.append(f"end of the path ({result.status})")
     if result.quasi_buckling_load is not None:
         qb = float(result.quasi_buckling_load)
         lev = ax.axhline(qb, color="tab:green", ls=":", lw=1.2, zorder=1)
@@ -1366,7 +1366,7 @@ def plot_limit_load(result: Any, *, m: Manipulator | None = None, figsize: tuple
     ax.grid(True, lw=0.4, alpha=0.5)
     _outside_legend(ax, handles, labels)
     head = (f"Limit load: {result.kind}" + (f" at P = {result.load:.6g}" if result.load is not None else
-                                             f" ({result.reason})")
+                                             f" ({result.status})")
             + f"; {result.boundary} tip, load along ({d[0]:.3g}, {d[1]:.3g})")
     ax.set_title(head + (f"\n{chain_label(m)}" if m is not None else ""), fontsize=9)
     return fig
@@ -1475,7 +1475,7 @@ def plot_atlas(atlas: Any, *, m: Manipulator | None = None, title: str | None = 
 
     X, Y = np.asarray(atlas.dx, float), np.asarray(atlas.dy, float)
     ns = atlas.n_stable
-    ok = np.array([[t.ok for t in row] for row in atlas.targets], dtype=bool).reshape(ns.shape)
+    ok = np.array([[t.success for t in row] for row in atlas.targets], dtype=bool).reshape(ns.shape)
     reach = np.array([[t.reachable for t in row] for row in atlas.targets], dtype=bool).reshape(ns.shape)
     good = ok & reach & (ns >= 0)
     kmax = int(ns[good].max()) if good.any() else 0

@@ -425,14 +425,14 @@ def test_partial_curve_shows_points_and_note(browser, server, tmp_path):
     body = {"manipulator": {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1}, "dx": {"start": 0, "stop": 4, "num": 60},
             "dy": 0, "branch": "stable"}
     r = httpx.post(server + "/v1/force-deflection", json=body, timeout=60)
-    assert r.status_code == 200, r.text          # a partial curve is a result (complete: false), no refusal
+    assert r.status_code == 200, r.text          # a partial curve is a result (success: false), no refusal
     out = r.json()
-    assert out["complete"] is False and 1 <= len(out["points"]) < 60
+    assert out["success"] is False and 1 <= len(out["points"]) < 60
     curve = drv.find_element(By.ID, "curve")
     assert curve.get_attribute("data-complete") == "false"
     assert curve.get_attribute("data-points") == str(len(out["points"]))
     assert len(curve.find_elements(By.CSS_SELECTOR, ".series-fx circle.pt")) == len(out["points"])
-    assert out["note"] and out["note"] in note.text
+    assert out["message"] and out["message"] in note.text
     # The branch's end is marked where the service says it is.
     assert curve.find_elements(By.CSS_SELECTOR, "line.branch-end")
     assert 0 < out["ended_at"]["dx"] <= 4
@@ -442,7 +442,7 @@ def test_partial_curve_shows_points_and_note(browser, server, tmp_path):
 def test_contract_partial_curve_is_drawn(browser, server):
     """The page's side of the curves contract, before the service implements it: the curve request is answered
     (in the browser, by a stand-in for ``fetch``) with the real points up to where the stable branch ends plus
-    ``complete: false``, ``ended_at``, ``note`` and jump ``label``s; the page draws those points, shows the note,
+    ``success: false``, ``ended_at``, ``message`` and jump ``label``s; the page draws those points, shows the note,
     marks the end and lists the jumps by their labels. Also an error status whose body has ``points``."""
     import httpx
     from selenium.webdriver.common.by import By
@@ -460,8 +460,8 @@ def test_contract_partial_curve_is_drawn(browser, server):
     note = (f"The stable branch ends between dx = {kept[-1]:.4g} and dx = {stop:.4g} (dy = 0): no stable "
             f"equilibrium at dx = {stop:.4g}; {len(kept)} of 60 points computed.")
     label = "buckling of the straight chain: F_x 0 -> -0.573 (compressive)"
-    fake = dict(real, complete=False, requested=60, note=note,
-                ended_at={"dx": stop, "dy": 0, "reason": "no_stable_equilibrium", "message": note},
+    fake = dict(real, success=False, status="no_stable_equilibrium", requested=60, message=note,
+                ended_at={"success": False, "status": "no_stable_equilibrium", "message": note, "dx": stop, "dy": 0},
                 jumps=[dict(j, label=label) for j in real["jumps"]])
     assert real["jumps"] and end > stop
     for status in (200, 422):

@@ -71,7 +71,9 @@ def curve_out(c) -> dict[str, Any]:
     points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
                "energy": _num(c.energy[i]), "q": _nums(c.q[i]), "stable": bool(c.stable[i]),
                "morse_index": int(c.morse_index[i]), "shape": c.shape[i], "branch": int(c.branch[i]),
-               "status": c.status[i]}
+               "status": c.point_status[i],
+               "solver": {"status": str(c.solver[i].status),
+                          "iterations": None if c.solver[i].iterations is None else int(c.solver[i].iterations)}}
               for i in range(c.dx.size)]
     jumps = [{"kind": j.kind, "dx_before": _num(j.dx_before), "dx_after": _num(j.dx_after),
               "force_before": _force(j.force_before), "force_after": _force(j.force_after),
@@ -90,11 +92,10 @@ def curve_out(c) -> dict[str, Any]:
                         "morse_index": int(br.morse_index[i]), "shape": br.shape[i]})
         branches.append({"id": bid, "points": pts})
     end = c.ended_at
-    return {"points": points, "jumps": jumps, "branches": branches,
-            "reference": c.reference, "origin": [float(v) for v in c.origin], "complete": end is None,
-            "ended_at": None if end is None else {"dx": _num(end.dx), "dy": _num(end.dy), "reason": end.reason,
-                                                  "message": end.message},
-            "note": c.note, "requested": int(c.requested)}
+    return {**outcome(c), "points": points, "jumps": jumps, "branches": branches,
+            "reference": c.reference, "origin": [float(v) for v in c.origin],
+            "ended_at": None if end is None else {**outcome(end), "dx": _num(end.dx), "dy": _num(end.dy)},
+            "requested": int(c.requested)}
 
 
 def landscape_out(land) -> dict[str, Any]:

@@ -48,7 +48,7 @@ from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from .optimal import PreloadDesign, choose_preloads, rest_length_bounds
 from ..equilibria.equilibrium import Equilibrium, check_q0, solve_equilibrium_under_force
-from ..paths.limit_load import DEFAULT_MAX_LOAD, limit_load
+from ..paths.limit_load import DEFAULT_MAX_LOAD, check_max_load, limit_load
 from ..equilibria.stiffness import cartesian_stiffness
 
 __all__ = ["StiffnessDesign", "preloads_for_stiffness", "LoadCapacity", "load_capacity", "STIFFNESS_KEYS",
@@ -776,15 +776,9 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
             raise InvalidParameterError("base must be two finite numbers (fx, fy)", field="base")
     mm, q0, base = _pose(m, pose, base)
     base = np.zeros(2) if base is None else np.asarray(base, dtype=float)
+    max_load = check_max_load(max_load)
     if max_load is None:
         max_load = DEFAULT_MAX_LOAD * mm.torque_scale / (mm.straight_length / mm.n)
-    else:
-        try:
-            max_load = float(max_load)
-        except (TypeError, ValueError):
-            raise InvalidParameterError(f"max_load must be a number, got {max_load!r}", field="max_load") from None
-        if not math.isfinite(max_load) or max_load <= 0:
-            raise InvalidParameterError(f"max_load must be finite and > 0, got {max_load!r}", field="max_load")
     with _time_limit(timeout):
         start = _start_equilibrium(mm, q0, base)
         K = D.shape[0]
@@ -810,7 +804,7 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
             if r is None:
                 continue
             kinds.append(r.kind)
-            reasons.append(r.reason)
+            reasons.append(None if r.kind != "none" else r.status)
             end_loads[i] = r.end_load
             if r.kind != "none":
                 loads[i] = r.load

@@ -34,7 +34,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import scipy.optimize as so
@@ -45,8 +45,10 @@ from ...numerics import DENSE_MAX, chain_solver
 from ...serialize import nullable, number, numbers
 from ...timelimit import expired, remaining, time_limit
 from ...numerics.homotopy import homotopy_available
+from ...outcome import Outcome, freeze
 from ..equilibria.all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, find_equilibria
-from .branches import Branch, Control, trace_branch
+from .branches import Branch, trace_branch
+from .control import Control
 from ..equilibria.equilibrium import Equilibrium, make_equilibrium
 
 __all__ = ["StabilityAtlas", "AtlasTarget", "AtlasCrossing", "stability_atlas", "atlas_target", "assemble_atlas",
@@ -66,8 +68,8 @@ HOMOTOPY_NONE_N = 3
 SAME_Q = 1e-5
 
 
-@dataclass
-class AtlasTarget:
+@dataclass(frozen=True)
+class AtlasTarget(Outcome):
     """The equilibria at one grid target (the tip held at ``(dx, dy)``).
 
     Attributes
@@ -84,14 +86,27 @@ class AtlasTarget:
     tie : bool
         Two stable equilibria share the least energy (within :data:`TIE_TOL`; e.g. mirror images on
         ``dy = 0``): ``least`` is the first by the set's order.
-    stable : list of Equilibrium
+    stable : tuple of Equilibrium
         The stable equilibria, least energy first.
     certified : bool
         The set is proven complete (the homotopy, or a trivial case).
     method : str
     error : str or None
-        ``"code: message"`` where the solve failed (the counts are then -1).
+        ``"code: message"`` where the solve failed (the counts are then -1; ``"time_limit: ..."``: not
+        computed before the time limit).
+    status : str
+        Derived (:attr:`STATUSES`): ``"solved"``, ``"unreachable"``, ``"failed"`` or ``"time_limit"``.
+    message : str
+        Derived: the counts, or why there are none.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "solved": "every equilibrium found (the search, or certified by the homotopy) and classified",
+        "unreachable": "the target is beyond the chain's reach: every count 0",
+        "failed": "the solve failed (error says why): the counts are -1",
+        "time_limit": "not computed before the time limit: the counts are -1",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"solved", "unreachable"})
 
     dx: float
     dy: float
@@ -103,27 +118,49 @@ class AtlasTarget:
     least_energy: float | None = None
     least_signs: str | None = None
     tie: bool = False
-    stable: list = field(default_factory=list, repr=False)
+    stable: tuple = field(default=(), repr=False)
     certified: bool = False
     method: str = ""
     error: str | None = None
 
+    def __post_init__(self) -> None:
+        freeze(self)
+
     @property
-    def ok(self) -> bool:
-        return self.error is None
+    def status(self) -> str:
+        """How the target was computed (:attr:`STATUSES`)."""
+        if self.error is not None:
+            return "time_limit" if self.error.startswith("time_limit") else "failed"
+        return "solved" if self.reachable else "unreachable"
+
+    @property
+    def message(self) -> str:
+        """The counts in a sentence, or why there are none."""
+        if self.error is not None:
+            return self.error
+        if not self.reachable:
+            return "beyond the chain's reach"
+        return (f"{self.count} equilibria ({self.n_stable} stable, {self.n_saddle} saddles, {self.n_maximum} "
+                f"maxima), {'certified' if self.certified else 'measured'}")
 
     def to_dict(self) -> dict[str, Any]:
-        return {"dx": number(self.dx), "dy": number(self.dy), "reachable": self.reachable, "count": self.count,
-                "n_stable": self.n_stable, "n_saddle": self.n_saddle, "n_maximum": self.n_maximum,
-                "least_energy": None if self.least_energy is None else nullable(self.least_energy), "least_signs": self.least_signs, "tie": self.tie,
+        """JSON form (an item of the atlas's ``targets``): ``success``, ``status``, ``message``, ``dx``, ``dy``,
+        ``reachable``, the counts, ``least_energy``, ``least_signs``, ``tie``, ``stable_q``, ``stable_energy``,
+        ``certified``, ``method``, ``error``."""
+        return {**self.outcome(), "dx": number(self.dx), "dy": number(self.dy), "reachable": self.reachable,
+                "count": self.count, "n_stable": self.n_stable, "n_saddle": self.n_saddle,
+                "n_maximum": self.n_maximum,
+                "least_energy": None if self.least_energy is None else nullable(self.least_energy),
+                "least_signs": self.least_signs, "tie": self.tie,
                 "stable_q": [numbers(e.q) for e in self.stable],
                 "stable_energy": [number(e.energy) for e in self.stable],
                 "certified": self.certified, "method": self.method, "error": self.error}
 
 
-@dataclass
+@dataclass(frozen=True)
 class AtlasCrossing:
-    """A point on a grid edge where the least-energy branch switches or a stable branch ends.
+    """A point on a grid edge where the least-energy branch switches or a stable branch ends (a fact about the
+    atlas, not an outcome).
 
     Attributes
     ----------
@@ -165,7 +202,11 @@ class AtlasCrossing:
     force_other: np.ndarray | None = None
     null_vector: np.ndarray | None = None
 
+    def __post_init__(self) -> None:
+        freeze(self)
+
     def to_dict(self) -> dict[str, Any]:
+        """JSON form (an item of the atlas's ``crossings``)."""
         return {"kind": self.kind, "dx": number(self.dx), "dy": number(self.dy),
                 "edge": [list(map(int, self.edge[0])), list(map(int, self.edge[1]))],
                 "fraction": number(self.fraction), "energy": number(self.energy), "q": numbers(self.q),
@@ -175,15 +216,15 @@ class AtlasCrossing:
                 "null_vector": None if self.null_vector is None else numbers(self.null_vector)}
 
 
-@dataclass
-class StabilityAtlas:
+@dataclass(frozen=True)
+class StabilityAtlas(Outcome):
     """The result of :func:`stability_atlas`.
 
     Attributes
     ----------
     dx : ndarray (nx,)
     dy : ndarray (ny,)
-    targets : list of list of AtlasTarget
+    targets : tuple of tuple of AtlasTarget
         ``targets[j][i]`` at ``(dx[i], dy[j])``.
     count, n_stable, n_saddle, n_maximum : ndarray (ny, nx) of int
         -1 where the target failed.
@@ -191,22 +232,37 @@ class StabilityAtlas:
         NaN where no stable equilibrium.
     least_signs : ndarray (ny, nx) of object
     certified : ndarray (ny, nx) of bool
-    crossings : list of AtlasCrossing
-    unresolved : list of tuple
+    crossings : tuple of AtlasCrossing
+    unresolved : tuple of tuple
         Edges whose analysis failed (a continuation that could not be followed), with the reason.
     status : str
-        ``"complete"``, ``"partial"`` (some targets or edges failed) or ``"time_limit"`` (the rest not done).
+        :attr:`STATUSES`.
+    message : str
+        The same in a sentence, with the counts of failures.
     seconds : float
+    method : str
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every target computed and every edge analysed",
+        "partial": "some targets failed or some edges could not be analysed (the rest is complete)",
+        "time_limit": "the time limit ran out: targets or edges not reached are missing",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
 
     dx: np.ndarray
     dy: np.ndarray
-    targets: list
-    crossings: list
-    unresolved: list
+    targets: tuple
+    crossings: tuple
+    unresolved: tuple
     status: str
+    message: str
     seconds: float
     method: str
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "targets", tuple(tuple(row) for row in self.targets))
+        freeze(self)
 
     def _grid(self, attr: str, dtype, missing) -> np.ndarray:
         out = np.full((self.dy.size, self.dx.size), missing, dtype=dtype)
@@ -243,10 +299,6 @@ class StabilityAtlas:
     @property
     def certified(self) -> np.ndarray:
         return self._grid("certified", bool, False)
-
-    @property
-    def success(self) -> bool:
-        return self.status == "complete"
 
     @property
     def switches(self) -> list:
@@ -302,7 +354,7 @@ class StabilityAtlas:
             return [[None if (v is None or (isinstance(v, float) and not math.isfinite(v))) else
                      (v.item() if hasattr(v, "item") else v) for v in row] for row in a]
 
-        return {"dx": numbers(self.dx), "dy": numbers(self.dy), "status": self.status, "success": self.success,
+        return {**self.outcome(), "dx": numbers(self.dx), "dy": numbers(self.dy),
                 "method": self.method, "seconds": number(self.seconds),
                 "count": grid(self.count), "n_stable": grid(self.n_stable), "n_saddle": grid(self.n_saddle),
                 "n_maximum": grid(self.n_maximum), "least_energy": grid(self.least_energy),
@@ -331,7 +383,6 @@ def atlas_target(m: Manipulator, dx: float, dy: float, *, method: str = "search"
                  timeout: float | None = None, strict: bool = False) -> AtlasTarget:
     """Every equilibrium with the tip held at ``(dx, dy)``, counted and classified. A failed solve is
     recorded in :attr:`AtlasTarget.error` (``strict=True``: raised); an unreachable target has every count 0."""
-    t = AtlasTarget(float(dx), float(dy), method=method)
     try:
         try:
             eqs = find_equilibria(m, dx, dy, method=method, timeout=timeout)
@@ -340,24 +391,21 @@ def atlas_target(m: Manipulator, dx: float, dy: float, *, method: str = "search"
                 raise
             eqs = _none_found(m, dx, dy, timeout)
     except UnreachableTargetError:
-        t.reachable, t.count, t.n_stable, t.n_saddle, t.n_maximum, t.certified = False, 0, 0, 0, 0, True
-        return t
+        return AtlasTarget(float(dx), float(dy), False, 0, 0, 0, 0, certified=True, method=method)
     except TimeLimitError:
         raise
     except TensegrityError as exc:
         if strict:
             raise
-        t.error = f"{exc.code}: {exc.message}"
-        return t
+        return AtlasTarget(float(dx), float(dy), method=method, error=f"{exc.code}: {exc.message}")
     kinds = [e.kind for e in eqs]
-    t.count, t.n_saddle, t.n_maximum = len(eqs), kinds.count("saddle"), kinds.count("maximum")
-    t.stable = sorted((e for e in eqs if e.stable), key=lambda e: e.energy)
-    t.n_stable = len(t.stable)
-    t.certified, t.method = bool(eqs.certified), eqs.method
-    if t.stable:
-        t.least_energy, t.least_signs = float(t.stable[0].energy), t.stable[0].signs
-        t.tie = len(t.stable) > 1 and t.stable[1].energy - t.stable[0].energy <= TIE_TOL * _energy_scale(m)
-    return t
+    stable = sorted((e for e in eqs if e.stable), key=lambda e: e.energy)
+    least = {}
+    if stable:
+        least = {"least_energy": float(stable[0].energy), "least_signs": stable[0].signs,
+                 "tie": len(stable) > 1 and stable[1].energy - stable[0].energy <= TIE_TOL * _energy_scale(m)}
+    return AtlasTarget(float(dx), float(dy), True, len(eqs), len(stable), kinds.count("saddle"), kinds.count("maximum"),
+                       stable=tuple(stable), certified=bool(eqs.certified), method=eqs.method, **least)
 
 
 def _none_found(m: Manipulator, dx: float, dy: float, timeout: float | None) -> EquilibriumSet:
@@ -446,7 +494,7 @@ def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bo
             for i, x in enumerate(X):
                 targets[j][i] = atlas_target(m, x, y, method=method)
 
-    return _run(m, StabilityAtlas(X, Y, targets, [], [], "complete", 0.0, method), fill, edges, timeout)
+    return _run(m, X, Y, targets, method, fill, edges, timeout)
 
 
 def assemble_atlas(m: Manipulator, targets: list, *, edges: bool = True,
@@ -467,34 +515,52 @@ def assemble_atlas(m: Manipulator, targets: list, *, edges: bool = True,
         grid[int(np.searchsorted(Y, t.dy))][int(np.searchsorted(X, t.dx))] = t
     if any(v is None for row in grid for v in row):
         raise InvalidParameterError("targets repeat a grid point", field="targets")
-    return _run(m, StabilityAtlas(X, Y, grid, [], [], "complete", 0.0, targets[0].method or "search"), None, edges,
-                timeout)
+    return _run(m, X, Y, grid, targets[0].method or "search", None, edges, timeout)
 
 
-def _run(m: Manipulator, out: StabilityAtlas, fill, edges: bool, timeout: float | None) -> StabilityAtlas:
-    """Fill the targets (``fill``, or None when given), analyse the edges, within ``timeout``; the status."""
+def _run(m: Manipulator, X: np.ndarray, Y: np.ndarray, targets: list, method: str, fill, edges: bool,
+         timeout: float | None) -> StabilityAtlas:
+    """Fill the grid of ``targets`` (``fill``, or None when given), analyse the edges, within ``timeout``; the
+    status: ``"time_limit"`` when time ran out or a target was not computed in time, ``"partial"`` when a target
+    failed or an edge is unresolved."""
     t0 = time.perf_counter()
+    crossings: list[AtlasCrossing] = []
+    unresolved: list[tuple] = []
+    status = "complete"
     try:
         with time_limit(timeout):
             if fill is not None:
                 fill()
             if edges:
-                _edges(m, out)
+                _edges(m, X, Y, targets, crossings, unresolved)
     except TimeLimitError:
-        out.status = "time_limit"
-    if out.status == "complete" and (out.unresolved or any(not t.ok for row in out.targets for t in row)):
-        out.status = "partial"
-    out.seconds = time.perf_counter() - t0
-    return out
+        status = "time_limit"
+    statuses = [t.status for row in targets for t in row]
+    failed = sum(st == "failed" for st in statuses)
+    late = sum(st == "time_limit" for st in statuses)
+    if late:
+        status = "time_limit"
+    elif status == "complete" and (unresolved or failed):
+        status = "partial"
+    if status == "complete":
+        message = f"all {len(statuses)} targets computed" + (" and every edge analysed" if edges else "")
+    else:
+        done = [f"{failed} target(s) failed"] if failed else []
+        done += [f"{len(unresolved)} edge(s) unresolved"] if unresolved else []
+        done += [f"{late} target(s) not computed"] if late else []
+        message = ("the time limit ran out" if status == "time_limit" else "incomplete") + (
+            ": " + ", ".join(done) if done else "")
+    return StabilityAtlas(X, Y, targets, crossings, unresolved, status, message, time.perf_counter() - t0, method)
 
 
 # ---------------------------------------------------------------------------------------------------
 # the edges
 
 
-def _edges(m: Manipulator, atlas: StabilityAtlas) -> None:
-    X, Y, T = atlas.dx, atlas.dy, atlas.targets
-    _ties(m, atlas)
+def _edges(m: Manipulator, X: np.ndarray, Y: np.ndarray, T: list, crossings: list, unresolved: list) -> None:
+    """The crossings on every grid edge into ``crossings`` (as they are found), the edges that failed into
+    ``unresolved``."""
+    crossings.extend(_ties(m, T))
     for j in range(Y.size):
         for i in range(X.size):
             for (i2, j2) in ((i + 1, j), (i, j + 1)):
@@ -503,12 +569,12 @@ def _edges(m: Manipulator, atlas: StabilityAtlas) -> None:
                 if expired():
                     raise TimeLimitError("time limit reached in the atlas's edges")
                 A, B = T[j][i], T[j2][i2]
-                if not (A.ok and B.ok) or not (A.stable or B.stable):
+                if not (A.success and B.success) or not (A.stable or B.stable):
                     continue
                 try:
-                    atlas.crossings.extend(_edge(m, A, B, ((i, j), (i2, j2))))
+                    crossings.extend(_edge(m, A, B, ((i, j), (i2, j2))))
                 except _EdgeFailed as exc:
-                    atlas.unresolved.append((((i, j), (i2, j2)), str(exc)))
+                    unresolved.append((((i, j), (i2, j2)), str(exc)))
 
 
 class _EdgeFailed(Exception):
@@ -590,15 +656,16 @@ def _least_set(m: Manipulator, t: AtlasTarget) -> set[int]:
     return {k for k, e in enumerate(t.stable) if e.energy - t.stable[0].energy <= tol}
 
 
-def _ties(m: Manipulator, atlas: StabilityAtlas) -> None:
+def _ties(m: Manipulator, targets: list) -> list[AtlasCrossing]:
     """A target where two stable equilibria tie for the least energy is on a switch curve: a crossing there."""
-    for j, row in enumerate(atlas.targets):
+    out = []
+    for j, row in enumerate(targets):
         for i, t in enumerate(row):
-            if t.ok and t.tie:
+            if t.success and t.tie:
                 a, b = t.stable[0], t.stable[1]
-                atlas.crossings.append(AtlasCrossing("switch", t.dx, t.dy, ((i, j), (i, j)), 0.0, float(a.energy),
-                                                     a.q.copy(), a.force.copy(), "maxwell", "tie",
-                                                     b.q.copy(), b.force.copy()))
+                out.append(AtlasCrossing("switch", t.dx, t.dy, ((i, j), (i, j)), 0.0, float(a.energy), a.q.copy(),
+                                         a.force.copy(), "maxwell", "tie", b.q.copy(), b.force.copy()))
+    return out
 
 
 def _solve_on(m: Manipulator, p: _Path, u: float, a: np.ndarray, unit: np.ndarray):

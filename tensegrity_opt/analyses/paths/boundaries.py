@@ -29,7 +29,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import scipy.optimize as so
@@ -37,17 +37,13 @@ import scipy.optimize as so
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
+from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
-from .branches import (
-    NEWTON_TOL,
-    Branch,
-    BranchEvent,
-    Control,
-    _Problem,
-    as_control,
-    trace_branch,
-)
+from .branches import Branch, trace_branch
+from .control import Control, as_control
+from .events import BranchEvent
+from .problem import NEWTON_TOL, PathProblem
 
 __all__ = ["StabilityBoundary", "BoundaryPoint", "stability_boundary", "parameter_direction", "PARAMETERS"]
 
@@ -95,7 +91,8 @@ def _chain_at(m: Manipulator, dp: np.ndarray, p: float) -> Manipulator:
 
 @dataclass(frozen=True)
 class BoundaryPoint:
-    """A special point of a boundary (a cusp): the parameter, the load, the configuration."""
+    """A special point of a boundary (a cusp): the parameter, the load, the configuration. A fact about the
+    boundary, not an outcome."""
 
     kind: str
     p: float
@@ -103,13 +100,17 @@ class BoundaryPoint:
     q: np.ndarray
     force: np.ndarray
 
+    def __post_init__(self) -> None:
+        freeze(self)
+
     def to_dict(self) -> dict[str, Any]:
+        """``{kind, p, t, q, force {fx, fy}}``."""
         return {"kind": self.kind, "p": number(self.p), "t": number(self.t), "q": numbers(self.q),
                 "force": {"fx": number(self.force[0]), "fy": number(self.force[1])}}
 
 
-@dataclass
-class StabilityBoundary:
+@dataclass(frozen=True)
+class StabilityBoundary(Outcome):
     """The limit (fold) or critical (branch-point) load ``t`` against the parameter ``p``.
 
     Attributes
@@ -124,10 +125,24 @@ class StabilityBoundary:
     force : ndarray (P, 2)
     null_vectors : ndarray (P, n)
         The mode at each point (largest entry +1).
-    cusps : list of BoundaryPoint
-    status, message : str
+    cusps : tuple of BoundaryPoint
+    status : str
+        How the curve ended (:attr:`STATUSES`; a fold curve: the end on the ``p_max`` side unless that is
+        ``"p_range"``, then the other side's).
+    message : str
+        How each side ended, in words.
     control : Control
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "p_range": "p left [p_min, p_max]",
+        "max_points": "max_points points were computed on a side",
+        "joint_limit": "the fold configuration reached a joint limit",
+        "ended": "the branch point of the symmetric chain is not found beyond the last p (it ends there)",
+        "step_too_small": "the fold curve could not be continued (the step fell below its minimum)",
+        "time_limit": "the time limit ran out (the points computed are kept)",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"p_range", "max_points", "joint_limit", "ended"})
 
     kind: str
     parameter: str
@@ -137,30 +152,31 @@ class StabilityBoundary:
     q: np.ndarray
     force: np.ndarray
     null_vectors: np.ndarray
-    cusps: list
+    cusps: tuple
     status: str
     message: str
     control: Control
     start: BranchEvent | None = field(default=None, repr=False)
 
-    @property
-    def success(self) -> bool:
-        return self.status in ("p_range", "max_points", "joint_limit", "ended")
+    def __post_init__(self) -> None:
+        freeze(self)
 
     def to_dict(self) -> dict[str, Any]:
-        return {"kind": self.kind, "parameter": self.parameter, "control": self.control.to_dict(),
+        """JSON form (the body of ``POST /v1/stability-boundary``): ``success``, ``status``, ``message``,
+        ``kind``, ``parameter``, ``control``, ``points``, ``p``, ``t``, ``q``, ``force``, ``null_vectors``,
+        ``cusps``."""
+        return {**self.outcome(), "kind": self.kind, "parameter": self.parameter, "control": self.control.to_dict(),
                 "points": int(self.p.size), "p": numbers(self.p), "t": numbers(self.t),
                 "q": [numbers(r) for r in self.q],
                 "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
                 "null_vectors": [numbers(r) for r in self.null_vectors],
-                "cusps": [c.to_dict() for c in self.cusps], "status": self.status, "success": self.success,
-                "message": self.message}
+                "cusps": [c.to_dict() for c in self.cusps]}
 
 
 class _Fold:
     """The Moore-Spence system of one problem in ``Y = (z, t, phi, p)``."""
 
-    def __init__(self, prob: _Problem, ell: np.ndarray, p_scale: float) -> None:
+    def __init__(self, prob: PathProblem, ell: np.ndarray, p_scale: float) -> None:
         self.prob, self.ell = prob, ell
         N = prob.N
         self.N = N
@@ -173,8 +189,8 @@ class _Fold:
     def G(self, Y):
         prob, N = self.prob, self.N
         x, ph, p = self.split(Y)
-        R, Rx, *_ = prob.ps.evaluate(prob._full(x, p), prob.p, prob.dp, prob.dp2, prob.ctl)
-        Rzv, dRzv, _ = prob.ps.second(prob._full(x, p), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
+        R, Rx, *_ = prob.ps.evaluate(prob.full(x, p), prob.p, prob.dp, prob.dp2, prob.ctl)
+        Rzv, dRzv, _ = prob.ps.second(prob.full(x, p), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
         G = np.concatenate([R, Rzv, [self.ell @ ph - 1.0]])
         M = np.zeros((2 * N + 1, 2 * N + 2))
         M[:N, :N + 1] = Rx[:, :N + 1]
@@ -226,12 +242,12 @@ class _Fold:
         """``u . R_zz[phi, phi]`` (normalised), ``u`` the left null vector of ``R_z`` oriented along ``u_ref``."""
         prob = self.prob
         x, ph, p = self.split(Y)
-        _, Rx, *_ = prob.ps.evaluate(prob._full(x, p), prob.p, prob.dp, prob.dp2, prob.ctl)
+        _, Rx, *_ = prob.ps.evaluate(prob.full(x, p), prob.p, prob.dp, prob.dp2, prob.ctl)
         U = np.linalg.svd(Rx[:, :self.N])[0]
         u = U[:, -1]
         if u_ref is not None and u @ u_ref < 0:
             u = -u
-        _, _, Rzz = prob.ps.second(prob._full(x, p), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
+        _, _, Rzz = prob.ps.second(prob.full(x, p), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
         return float(u @ (Rzz * prob.rs)) / max(float(np.linalg.norm(ph * np.concatenate(
             [np.ones(prob.n), np.full(2, 1.0 / prob.Fs)]))) ** 2, 1e-300), u
 
@@ -361,14 +377,14 @@ def _boundary(m, control, parameter, start, p_min, p_max, max_points, t_max, ste
         raise InvalidParameterError(f"max_points must be an integer >= 2, got {max_points!r}", field="max_points")
     ctl = as_control(m, control, control_kw)
     name, dp2 = parameter_direction(m, parameter)
-    probe = _Problem(m, ctl, np.zeros(m.n), None)
+    probe = PathProblem(m, ctl, np.zeros(m.n), None)
     t_bound = 20.0 * (probe.Fs if ctl.kind in ("load", "guided", "wall") else probe.Ls) if t_max is None else t_max
     br = trace_branch(m, start, ctl, t_max=t_bound, stop_at="stability_loss")
     ev = _first_loss(br)
     if ev is None:
         raise NoEquilibriumError(f"the branch does not lose stability up to t = {t_bound:g} ({br.status}): no "
                                  "boundary to follow", status=br.status)
-    prob: _Problem = br._problem
+    prob: PathProblem = br.problem
     prob.dp2 = dp2
     p_scale = 1.0 if name == "k" else prob.Ls
     if name == "k":

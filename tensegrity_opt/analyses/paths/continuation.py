@@ -18,8 +18,9 @@ the global least-energy stable equilibrium (:func:`solve_equilibrium`); with
 what a manipulator driven along a trajectory actually does — by Newton corrections run
 in compiled code for short chains (the C kernels of :mod:`.kernels` up to ``KERNEL_MAX``
 segments, CasADi's ``rootfinder`` under ``mapaccum`` up to ``numerics.DENSE_MAX``), classified
-in one batch. For one target at a time (a control loop) see :class:`tensegrity_opt.Tracker`. A point where the branch ends or loses stability is re-solved globally
-(warm-started from the previous configuration) and the continuation goes on from there.
+in one batch. For one target at a time (a control loop) see :class:`tensegrity_opt.Tracker`. A point where the
+branch ends or loses stability is re-solved globally (warm-started from the previous configuration) and the
+continuation goes on from there.
 With ``continuation=False`` every target is solved globally on its own.
 
 Each target yields an :class:`Equilibrium` or the exception explaining why it has none
@@ -53,6 +54,7 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 
@@ -290,6 +292,12 @@ class Tracker:
 
 
 # ---------------------------------------------------------------------------- curve branches
+@lru_cache(maxsize=64)
+def _newton_info(iterations: int | None) -> SolverInfo:
+    """The (shared, immutable) solver detail of a compiled continuation point."""
+    return SolverInfo("Newton_Converged", iterations)
+
+
 class BranchPoints:
     """One branch followed over the points of a run (arrays over all points of the curve)."""
 
@@ -301,11 +309,11 @@ class BranchPoints:
         self.morse = np.full(npts, -1, dtype=int)
         self.stable = np.zeros(npts, dtype=bool)
         self.valid = np.zeros(npts, dtype=bool)
-        self.status = ["nan"] * npts
+        self.solver: list[SolverInfo | None] = [None] * npts
 
     def set(self, i: int, eq: Equilibrium) -> None:
         self.q[i], self.F[i], self.E[i] = eq.q, eq.force, eq.energy
-        self.morse[i], self.stable[i], self.valid[i], self.status[i] = eq.morse_index, eq.stable, True, eq.solver.status
+        self.morse[i], self.stable[i], self.valid[i], self.solver[i] = eq.morse_index, eq.stable, True, eq.solver
 
 
 def follow(m: Manipulator, br: BranchPoints, start: int, stop: int, targets: np.ndarray, dxs, dys) -> None:
@@ -332,8 +340,8 @@ def follow(m: Manipulator, br: BranchPoints, start: int, stop: int, targets: np.
                 idx = np.arange(s + 1, s + 1 + good)
                 br.q[idx], br.F[idx], br.E[idx] = pre.q, pre.force, pre.energy
                 br.morse[idx], br.stable[idx], br.valid[idx] = pre.morse_index, pre.stable, True
-                for i in idx:
-                    br.status[i] = "Newton_Converged"
+                its = [None] * good if pre.iterations is None else pre.iterations.tolist()
+                br.solver[s + 1:s + 1 + good] = map(_newton_info, its)
                 s += good
         if s + 1 >= stop:
             break

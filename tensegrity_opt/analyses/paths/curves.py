@@ -20,7 +20,7 @@ changes while the previous one is still stable (an exchange of the global minimu
 
 Where a point has no stable equilibrium (the stable branches end at a fold or the joint range and
 the global search finds no other), the curve stops: it holds the points computed before that one,
-and ``Curve.ended_at`` says where and why (``Curve.complete`` is ``False``, ``Curve.note`` a sentence);
+and ``Curve.ended_at`` says where and why (``Curve.success`` is ``False``, ``Curve.message`` a sentence);
 the points after it are not computed (the followed branch is gone, and a curve with a gap would
 hide that the chain has nowhere stable to go).
 
@@ -28,7 +28,7 @@ On chains with bistable segments new branches are born inside the range (folds):
 from the global seeds and every combination of the segments' wells runs at *every* point, and
 each stable equilibrium on no followed branch starts a new one, so the selected branch is the
 least-energy stable one at every point (checked against the reference model's descent from all
-well patterns, ``tests/test_completeness.py``), each switch a jump located within one grid step.
+well patterns, ``tests/analyses/equilibria/test_completeness.py``), each switch a jump located within one grid step.
 
 ``branch="all"``: additionally every branch found at the first point (:func:`find_equilibria`)
 is followed and returned in ``Curve.branches`` (NaN where it no longer exists); on multistable
@@ -36,13 +36,13 @@ chains also every branch born inside the range.
 
 Points with ``dx = dy = 0`` are the straight chain (force 0 for symmetric segments); they split the
 path into runs that are followed independently. With asymmetric preloads the straight chain is no
-equilibrium there: such points carry ``status = "straight_not_equilibrium"`` and ``stable = False``.
+equilibrium there: such points carry ``point_status = "straight_not_equilibrium"`` and ``stable = False``.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Any, Literal
+from typing import Any, ClassVar, Literal
 
 import numpy as np
 
@@ -55,6 +55,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, shape_labels
+from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import check_time
 from ..equilibria.all_equilibria import find_equilibria
@@ -75,8 +76,14 @@ BIRTH_PROJECTED = 50
 #: The kinds of :class:`Jump`, in the JSON form's ``kind``.
 JUMP_KINDS = ("buckling", "leave_straight", "snap", "switch")
 
-#: Why a curve stopped early (:class:`CurveEnd` ``reason``).
-END_REASONS = ("no_stable_equilibrium",)
+#: The status of each point of a :class:`Curve` (``Curve.point_status``, ``status`` of a point in the JSON form).
+POINT_STATUSES = {
+    "converged": "a converged equilibrium (the solver's own status and iterations in the point's solver)",
+    "straight": "the straight chain at dx = dy = 0, an equilibrium known exactly",
+    "straight_not_equilibrium": "the straight chain at dx = dy = 0 where it is no equilibrium (asymmetric preloads: "
+                                "an unbounded tension would be needed): kept, marked, stable false",
+    "absent": "a followed branch (Curve.branches) does not reach this point: its numbers are NaN",
+}
 
 
 @dataclass(frozen=True)
@@ -97,8 +104,9 @@ class Jump:
       stable there (an exchange of the global minimum, not a loss of stability).
 
     ``branch_before`` / ``branch_after`` are the branch identifiers (``-1``: the straight chain). Forces are
-    the tip force holding the chain: ``fx > 0`` tensile, ``fx < 0`` compressive (conventions.md).
-    ``cause`` (``"leave_straight"`` only) says why it is no buckling, for :attr:`label`.
+    the tip force holding the chain: ``fx > 0`` tensile, ``fx < 0`` compressive (``docs/model.md``).
+    ``cause`` (``"leave_straight"`` only) says why it is no buckling, for :attr:`label`. A jump is a fact about
+    the curve, not an outcome.
     """
 
     kind: str
@@ -111,6 +119,9 @@ class Jump:
     dy_before: float = 0.0
     dy_after: float = 0.0
     cause: str = ""
+
+    def __post_init__(self) -> None:
+        freeze(self)
 
     @property
     def delta(self) -> np.ndarray:
@@ -177,32 +188,40 @@ def _force(v: Any) -> dict[str, float]:
 
 
 @dataclass(frozen=True)
-class CurveEnd:
+class CurveEnd(Outcome):
     """Where and why a curve stopped before its last requested point.
 
     Attributes
     ----------
     dx, dy : float
         The first requested point where the curve could not go on (same reference as the curve's points).
-    reason : str
-        One of :data:`END_REASONS`: ``"no_stable_equilibrium"`` (no stable equilibrium is found there: the
-        stable branches end, e.g. at a fold or the joint range).
+    status : str
+        Why (:attr:`STATUSES`); never a success: the curve could not go on.
     message : str
-        A sentence.
+        A sentence, with what the followed branch did.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "no_stable_equilibrium": "no stable equilibrium is found there: the stable branches end (a fold, the joint "
+                                 "range) and the global search finds no other",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset()
 
     dx: float
     dy: float
-    reason: str
+    status: str
     message: str
 
+    def __post_init__(self) -> None:
+        freeze(self)
+
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``{dx, dy, reason, message}``."""
-        return {"dx": number(self.dx), "dy": number(self.dy), "reason": self.reason, "message": self.message}
+        """JSON form: ``{success, status, message, dx, dy}``."""
+        return {**self.outcome(), "dx": number(self.dx), "dy": number(self.dy)}
 
 
 @dataclass(frozen=True)
-class Curve:
+class Curve(Outcome):
     """Per-point results of :func:`force_deflection` (arrays of length ``m`` = number of points computed).
 
     Attributes
@@ -213,14 +232,17 @@ class Curve:
     fx, fy, energy : ndarray (m,)
     stable : ndarray (m,) of bool
     morse_index : ndarray (m,) of int
-    shape : list of str
+    shape : tuple of str
     branch : ndarray (m,) of int
         Identifier of the branch each point lies on (-1: straight).
-    status : list of str
-        Solver status per point (``"straight"``, ``"straight_not_equilibrium"``, the solver's status;
-        ``"nan"`` where a followed branch of ``branches`` does not exist).
-    jumps : list of Jump
-    branches : list of Curve
+    point_status : tuple of str
+        What each point is (:data:`POINT_STATUSES`): ``"converged"``, ``"straight"``,
+        ``"straight_not_equilibrium"``, ``"absent"`` (a followed branch of ``branches`` that does not exist there).
+    solver : tuple of SolverInfo or None
+        The solver's own status and iterations per point (``"straight"`` for the straight chain; None where
+        ``"absent"``).
+    jumps : tuple of Jump
+    branches : tuple of Curve
         ``branch="all"`` only: each branch followed separately.
     reference : str
         ``"straight"`` or ``"rest"``: what ``dx``, ``dy`` (and the jumps' ``dx_before`` ...) are measured from.
@@ -232,7 +254,18 @@ class Curve:
         on (the arrays hold the ``m < requested`` points before it).
     requested : int
         How many points were asked for (``m`` when complete).
+    status : str
+        Derived (:attr:`STATUSES`): ``"complete"``, or ``ended_at.status`` where the curve stops early.
+    message : str
+        Derived: how many points, and for a partial curve where it ends and why, e.g. "The stable branch ends
+        between dx = 3.1 and dx = 3.15 (dy = 0): no stable equilibrium at dx = 3.15; 63 of 81 points computed.".
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every requested point was computed",
+        **CurveEnd.STATUSES,
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
 
     dx: np.ndarray
     dy: np.ndarray
@@ -242,11 +275,12 @@ class Curve:
     energy: np.ndarray
     stable: np.ndarray
     morse_index: np.ndarray
-    shape: list[str]
+    shape: tuple[str, ...]
     branch: np.ndarray
-    status: list[str]
-    jumps: list[Jump] = field(default_factory=list)
-    branches: list["Curve"] = field(default_factory=list, repr=False)
+    point_status: tuple[str, ...]
+    solver: tuple[SolverInfo | None, ...]
+    jumps: tuple[Jump, ...] = ()
+    branches: tuple["Curve", ...] = field(default=(), repr=False)
     reference: str = "straight"
     origin: np.ndarray = field(default_factory=lambda: np.zeros(2))
     ended_at: CurveEnd | None = None
@@ -255,22 +289,27 @@ class Curve:
     def __post_init__(self) -> None:
         if self.requested < 0:
             object.__setattr__(self, "requested", int(self.dx.size))
+        for a in (self.dx, self.dy, self.q, self.fx, self.fy, self.energy, self.stable, self.morse_index,
+                  self.branch, self.origin):
+            a.setflags(write=False)                 # the builders' own arrays, read-only in place
+        for name in ("shape", "point_status", "solver", "jumps", "branches"):
+            v = getattr(self, name)
+            if not isinstance(v, tuple):
+                object.__setattr__(self, name, tuple(v))
 
     @property
-    def complete(self) -> bool:
-        """Every requested point was computed (``ended_at is None``)."""
-        return self.ended_at is None
+    def status(self) -> str:
+        """``"complete"``, or why the curve stopped early (``ended_at.status``)."""
+        return "complete" if self.ended_at is None else self.ended_at.status
 
     @property
-    def note(self) -> str:
-        """``""`` when complete, else a sentence saying where the curve ends and how many points it holds,
-        e.g. "The stable branch ends between dx = 3.1 and dx = 3.15 (dy = 0): no stable equilibrium at
-        dx = 3.15; 63 of 81 points computed."."""
+    def message(self) -> str:
+        """How many points were computed; for a partial curve where it ends and why."""
         e = self.ended_at
-        if e is None:
-            return ""
         m = int(self.dx.size)
-        why = {"no_stable_equilibrium": "no stable equilibrium"}.get(e.reason, e.reason.replace("_", " "))
+        if e is None:
+            return f"all {m} requested points computed"
+        why = {"no_stable_equilibrium": "no stable equilibrium"}.get(e.status, e.status.replace("_", " "))
         if m == 0:
             where = f"at the first point, dx = {e.dx:g} (dy = {e.dy:g})"
             at = f"dx = {e.dx:g}"
@@ -284,20 +323,21 @@ class Curve:
         return f"The stable branch ends {where}: {why} at {at}; {m} of {self.requested} points computed."
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form (the body of ``POST /v1/force-deflection``): ``points`` (``dx``, ``dy``, ``fx``, ``fy``,
-        ``energy``, ``q``, ``stable``, ``morse_index``, ``shape``, ``branch``, ``status``), ``jumps`` (each
-        :meth:`Jump.to_dict`), ``branches`` (``branch="all"``: ``{id, points}`` per followed branch,
-        a point with ``exists`` and ``null`` numbers where the branch does not reach), ``reference``,
-        ``origin``, ``complete``, ``ended_at`` (:meth:`CurveEnd.to_dict` or ``null``), ``note`` and
-        ``requested``."""
+        """JSON form (the body of ``POST /v1/force-deflection``): ``success``, ``status``, ``message``, ``points``
+        (``dx``, ``dy``, ``fx``, ``fy``, ``energy``, ``q``, ``stable``, ``morse_index``, ``shape``, ``branch``,
+        ``status`` (:data:`POINT_STATUSES`), ``solver`` ``{status, iterations}``), ``jumps`` (each
+        :meth:`Jump.to_dict`), ``branches`` (``branch="all"``: ``{id, points}`` per followed branch, a point with
+        ``exists`` and ``null`` numbers where the branch does not reach), ``reference``, ``origin``, ``ended_at``
+        (:meth:`CurveEnd.to_dict` or ``null``) and ``requested``."""
         points = [{"dx": number(self.dx[i]), "dy": number(self.dy[i]), "fx": number(self.fx[i]),
                    "fy": number(self.fy[i]), "energy": number(self.energy[i]), "q": numbers(self.q[i]),
                    "stable": bool(self.stable[i]), "morse_index": int(self.morse_index[i]), "shape": self.shape[i],
-                   "branch": int(self.branch[i]), "status": self.status[i]} for i in range(self.dx.size)]
-        return {"points": points, "jumps": [j.to_dict() for j in self.jumps],
+                   "branch": int(self.branch[i]), "status": self.point_status[i],
+                   "solver": None if self.solver[i] is None else self.solver[i].to_dict()} for i in range(self.dx.size)]
+        return {**self.outcome(), "points": points, "jumps": [j.to_dict() for j in self.jumps],
                 "branches": [br._branch_dict(bi) for bi, br in enumerate(self.branches)],
-                "reference": self.reference, "origin": numbers(self.origin), "complete": self.complete,
-                "ended_at": None if self.ended_at is None else self.ended_at.to_dict(), "note": self.note,
+                "reference": self.reference, "origin": numbers(self.origin),
+                "ended_at": None if self.ended_at is None else self.ended_at.to_dict(),
                 "requested": int(self.requested)}
 
     def _branch_dict(self, position: int) -> dict[str, Any]:
@@ -332,8 +372,8 @@ def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _newton_stable(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
-    """Every stable equilibrium Newton finds from the global search's seeds and, on a multistable
-    chain, from every combination of the segments' wells (:func:`~tensegrity_opt.analyses.equilibria.seeds.well_seeds`)."""
+    """Every stable equilibrium Newton finds from the global search's seeds and, on a multistable chain, from every
+    combination of the segments' wells (:func:`~tensegrity_opt.analyses.equilibria.seeds.well_seeds`)."""
     target = m.target(dx, dy)
     starts = seed_starts(m, dx, dy)
     if not m.monotonic:
@@ -481,7 +521,7 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
         # a branch born at the end point has no point on the curve: left out
         extra["branches"] = [_branch_curve(dxs[:end], dys[:end], br) for br in branches
                              if br.valid[:end].any()]
-    return Curve(**{**curve.__dict__, **extra})
+    return replace(curve, **extra)
 
 
 def _end(m: Manipulator, dxs, dys, j: int, followed: BranchPoints | None, origin: np.ndarray) -> CurveEnd:
@@ -519,7 +559,7 @@ def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve
         raise InvalidParameterError(exc.message, field=exc.field, **exc.details) from None
 
     def shift(cv: Curve) -> Curve:           # ended_at speaks of the caller's deflections already (origin)
-        return Curve(**{**cv.__dict__, "dx": cv.dx - origin[0], "dy": cv.dy - origin[1], "reference": "rest",
+        return replace(cv, **{"dx": cv.dx - origin[0], "dy": cv.dy - origin[1], "reference": "rest",
                         "origin": origin.copy(),
                         "jumps": [replace(j, dx_before=j.dx_before - origin[0], dx_after=j.dx_after - origin[0],
                                           dy_before=j.dy_before - origin[1], dy_after=j.dy_after - origin[1])
@@ -558,6 +598,7 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
     morse = np.zeros(npts, dtype=int)
     stable = np.ones(npts, dtype=bool)
     status = ["straight"] * npts
+    solver: list[SolverInfo | None] = [None] * npts
     try:
         s0, s0_ok = straight_equilibrium(m), True
     except StraightNotEquilibriumError:
@@ -566,13 +607,13 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
         s0, s0_ok = straight_equilibrium(m, check=False), False
     for j in range(npts):
         if straight[j]:
-            q[j], F[j], E[j] = s0.q, s0.force, s0.energy
+            q[j], F[j], E[j], solver[j] = s0.q, s0.force, s0.energy, s0.solver
             if not s0_ok:
                 stable[j], status[j] = False, "straight_not_equilibrium"
             continue
         br = branches[sel[j]]
-        q[j], F[j], E[j], morse[j], stable[j], status[j] = br.q[j], br.F[j], br.E[j], br.morse[j], \
-            br.stable[j], br.status[j]
+        q[j], F[j], E[j], morse[j], stable[j] = br.q[j], br.F[j], br.E[j], br.morse[j], br.stable[j]
+        status[j], solver[j] = "converged", br.solver[j]
     shapes = shape_labels(q)
     jumps: list[Jump] = []
     # Leaving (or returning to) the straight chain: the force jumps between the straight value and the
@@ -612,7 +653,8 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
         jumps.append(Jump(kind, float(dxs[j - 1]), float(dxs[j]), before, after, int(sel[j - 1]), int(sel[j]),
                           float(dys[j - 1]), float(dys[j]), cause))
     return Curve(dx=dxs.copy(), dy=dys.copy(), q=q, fx=F[:, 0].copy(), fy=F[:, 1].copy(), energy=E,
-                 stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), status=status, jumps=jumps)
+                 stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), point_status=status,
+                 solver=solver, jumps=jumps)
 
 
 def _branch_curve(dxs, dys, br: BranchPoints) -> Curve:
@@ -622,4 +664,5 @@ def _branch_curve(dxs, dys, br: BranchPoints) -> Curve:
                  fy=br.F[:end, 1].copy(), energy=br.E[:end].copy(), stable=br.stable[:end].copy(),
                  morse_index=br.morse[:end].copy(),
                  shape=[shape_label(q) if v else "" for q, v in zip(br.q[:end], br.valid[:end])],
-                 branch=np.full(end, br.id), status=list(br.status[:end]))
+                 branch=np.full(end, br.id), point_status=["converged" if v else "absent" for v in br.valid[:end]],
+                 solver=br.solver[:end])

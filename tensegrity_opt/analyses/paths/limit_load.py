@@ -7,7 +7,7 @@ at the first event where stability is lost: a **fold** (the load passes a maximu
 arm snaps through) or a **bifurcation** (a branch point: the straight symmetric chain buckles at its
 critical load, :func:`~tensegrity_opt.analyses.equilibria.buckling.critical_force`). Where neither happens — a pre-bent
 arm under compression bends smoothly ("quasi-buckling") until a joint reaches its range bound, or the
-load reaches ``max_load`` — ``kind == "none"`` says why, and :attr:`LimitLoad.quasi_buckling_load` is the
+load reaches ``max_load`` — ``kind == "none"`` and ``status`` says why, and :attr:`LimitLoad.quasi_buckling_load` is the
 load at which the arm is softest along the load: the interior minimum along the path of the tangent
 stiffness ``k(t) = 1 / (d . C(t) d)``, ``C = J H^-1 J^T`` the tip compliance (guided: the compliance in
 ``x`` with ``y`` held, ``C_xx - C_xy^2 / C_yy``), located by a parabola through the three path points
@@ -20,28 +20,36 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
+from ...outcome import Outcome
 from ...serialize import nullable, number, numbers
-from .branches import Branch, Control, trace_branch
+from .branches import Branch, trace_branch
+from .control import Control
 from ..equilibria.equilibrium import Equilibrium, check_q0
 
-__all__ = ["LimitLoad", "limit_load", "DEFAULT_MAX_LOAD"]
+__all__ = ["LimitLoad", "limit_load", "check_max_load", "DEFAULT_MAX_LOAD"]
 
 #: Without ``max_load`` the path is followed up to this many force units ``k c^2 / (2 b)``.
 DEFAULT_MAX_LOAD = 100.0
 
 
 @dataclass(frozen=True)
-class LimitLoad:
+class LimitLoad(Outcome):
     """The result of :func:`limit_load`.
 
     Attributes
     ----------
+    status : str
+        How the path ended (:attr:`STATUSES`): ``"stability_lost"`` at a limit point (``kind`` says which),
+        ``"joint_limit"`` or ``"max_load"`` where it stays stable to its end (``kind == "none"``), else how the
+        continuation was cut (the branch's status: not a success).
+    message : str
+        The same in a sentence.
     load : float or None
         The load magnitude ``t >= 0`` where the branch first loses stability (None for ``kind == "none"``).
     force : ndarray (2,) or None
@@ -50,9 +58,6 @@ class LimitLoad:
         The configuration there.
     kind : str
         ``"fold"``, ``"bifurcation"`` or ``"none"``.
-    reason : str or None
-        For ``"none"``: ``"joint_limit"`` (the path ends at a joint's range bound), ``"max_load"``, or the
-        branch's status when it could not be followed (``"time_limit"``, ``"corrector_failed"`` ...).
     null_vector : ndarray (n,) or None
         The mode of the instability (largest entry +1).
     quasi_buckling_load : float or None
@@ -70,11 +75,25 @@ class LimitLoad:
         The base load: the tip force is ``base + t d`` (guided: ``Fx = base_x + t d_x``).
     """
 
+    STATUSES: ClassVar[dict[str, str]] = {
+        "stability_lost": "the path loses stability at load: a fold or a bifurcation (kind)",
+        "joint_limit": "no limit point: the path stays stable until a joint reaches its range bound",
+        "max_load": "no limit point up to max_load",
+        "max_points": "no limit point within max_points points of the path",
+        "closed_loop": "the path closed on its start without losing stability",
+        "force_bound": "the tip force exceeded the continuation's force bound without a limit point",
+        "step_too_small": "the path could not be continued (the step fell below its minimum)",
+        "corrector_failed": "the path could not be continued (the corrector failed)",
+        "time_limit": "the time limit ran out before a limit point was found",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"stability_lost", "joint_limit", "max_load"})
+
+    status: str
+    message: str
     load: float | None
     force: np.ndarray | None
     q: np.ndarray | None
     kind: str
-    reason: str | None
     null_vector: np.ndarray | None
     quasi_buckling_load: float | None
     quasi_buckling_force: np.ndarray | None
@@ -85,12 +104,19 @@ class LimitLoad:
     branch: Branch
     base: np.ndarray = field(default_factory=lambda: np.zeros(2))
 
-    @property
-    def success(self) -> bool:
-        return self.kind != "none" or self.reason in ("joint_limit", "max_load")
+    def __post_init__(self) -> None:
+        for a in (self.force, self.q, self.null_vector, self.quasi_buckling_force, self.direction, self.base):
+            if a is not None:
+                a.setflags(write=False)             # the builder's own arrays, read-only in place
+        if self.status not in self.STATUSES:
+            self._check_outcome()
 
     def to_dict(self, *, include_branch: bool = False) -> dict[str, Any]:
-        d = {"load": None if self.load is None else nullable(self.load), "kind": self.kind, "reason": self.reason,
+        """JSON form (the body of ``POST /v1/limit-load``): ``success``, ``status``, ``message``, ``load``,
+        ``kind``, ``force``, ``q``, ``null_vector``, ``quasi_buckling_load``, ``quasi_buckling_force``,
+        ``end_load``, ``direction``, ``boundary``, ``base``, ``start`` (:meth:`Equilibrium.to_dict`),
+        ``branch_status``, ``branch_points``, and with ``include_branch`` the ``branch``."""
+        d = {**self.outcome(), "load": None if self.load is None else nullable(self.load), "kind": self.kind,
              "force": None if self.force is None else {"fx": number(self.force[0]), "fy": number(self.force[1])},
              "q": None if self.q is None else numbers(self.q),
              "null_vector": None if self.null_vector is None else numbers(self.null_vector),
@@ -98,12 +124,24 @@ class LimitLoad:
              "quasi_buckling_force": None if self.quasi_buckling_force is None else
              {"fx": number(self.quasi_buckling_force[0]), "fy": number(self.quasi_buckling_force[1])},
              "end_load": number(self.end_load), "direction": numbers(self.direction), "boundary": self.boundary,
-             "base": numbers(self.base),
-             "start": self.start.to_dict(), "success": self.success,
+             "base": numbers(self.base), "start": self.start.to_dict(),
              "branch_status": self.branch.status, "branch_points": len(self.branch)}
         if include_branch:
             d["branch"] = self.branch.to_dict()
         return d
+
+
+def check_max_load(max_load) -> float | None:
+    """``max_load`` as a float (None stays None), or :class:`InvalidParameterError` unless finite and > 0."""
+    if max_load is None:
+        return None
+    try:
+        max_load = float(max_load)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"max_load must be a number, got {max_load!r}", field="max_load") from None
+    if not math.isfinite(max_load) or max_load <= 0:
+        raise InvalidParameterError(f"max_load must be finite and > 0, got {max_load!r}", field="max_load")
+    return max_load
 
 
 def _compliance(prob, x: np.ndarray, d: np.ndarray, guided: bool) -> float:
@@ -118,7 +156,7 @@ def _compliance(prob, x: np.ndarray, d: np.ndarray, guided: bool) -> float:
 
 
 def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
-    prob = br._problem
+    prob = br.problem
     P = min(upto + 1, len(br))
     if P < 3:
         return None, None
@@ -155,7 +193,7 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
         ``E - F . tip``. ``"guided"``: the tip's ``y`` held at its rest value, ``Fx = t d_x``, ``Fy`` the
         guide's reaction, stability reduced to ``dy/dq . v = 0`` (the paper's case).
     max_load : float, optional
-        Stop there (``reason="max_load"``). Default ``DEFAULT_MAX_LOAD`` force units ``k c^2 / (2 b)``.
+        Stop there (``status="max_load"``). Default ``DEFAULT_MAX_LOAD`` force units ``k c^2 / (2 b)``.
     start : Equilibrium or array_like (n,), optional
         A configuration at the base load (with ``base`` zero a rest configuration; Newton under ``base``
         puts it on the equilibrium set). Default the least-energy stable rest configuration
@@ -190,13 +228,7 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
     F0 = control.base
     loaded = bool(np.any(F0 != 0.0))
     d = control.direction
-    if max_load is not None:
-        try:
-            max_load = float(max_load)
-        except (TypeError, ValueError):
-            raise InvalidParameterError(f"max_load must be a number, got {max_load!r}", field="max_load") from None
-        if not math.isfinite(max_load) or max_load <= 0:
-            raise InvalidParameterError(f"max_load must be finite and > 0, got {max_load!r}", field="max_load")
+    max_load = check_max_load(max_load)
     from ..equilibria.equilibrium import solve_equilibrium_under_force
 
     if start is None and not loaded:
@@ -217,7 +249,7 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
     bound = max_load
     br0 = trace_branch(m, eq0.q, control, t_max=1.0, max_points=3)        # its problem gives the force scale
     if bound is None:
-        bound = DEFAULT_MAX_LOAD * br0._problem.Fs
+        bound = DEFAULT_MAX_LOAD * br0.problem.Fs
     br = trace_branch(m, eq0.q, control, t_max=bound, max_points=max_points, stop_at="stability_loss",
                       timeout=timeout)
     if not br.stable[0]:
@@ -230,10 +262,15 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
         qb_upto = e.index
         kind = "fold" if e.kind == "fold" else "bifurcation"
         qb, qbf = _quasi_buckling(br, d, boundary == "guided", qb_upto)
-        return LimitLoad(e.t, e.force.copy(), e.q.copy(), kind, None, e.null_vector, qb, qbf, e.t, d, boundary,
-                         eq0, br, F0.copy())
-    reason = {"t_max": "max_load", "joint_limit": "joint_limit"}.get(br.status, br.status)
+        return LimitLoad("stability_lost", f"stability is lost at a {kind} at load {e.t:.7g}", e.t, e.force.copy(),
+                         e.q.copy(), kind, e.null_vector, qb, qbf, e.t, d, boundary, eq0, br, F0.copy())
+    status = {"t_max": "max_load"}.get(br.status, br.status)
     stable_end = int(np.flatnonzero(br.stable)[-1]) if br.stable.any() else 0
     qb, qbf = _quasi_buckling(br, d, boundary == "guided", min(qb_upto, stable_end))
-    return LimitLoad(None, None, None, "none", reason, None, qb, qbf, float(br.t[stable_end]), d, boundary, eq0, br,
+    end_load = float(br.t[stable_end])
+    if status in LimitLoad.SUCCESS:
+        message = f"no limit point: the path stays stable to its end ({status}) at load {end_load:.7g}"
+    else:
+        message = f"no limit point found before the path was cut: {br.message}"
+    return LimitLoad(status, message, None, None, None, "none", None, qb, qbf, end_load, d, boundary, eq0, br,
                      F0.copy())

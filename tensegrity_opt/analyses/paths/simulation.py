@@ -39,11 +39,9 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
-import scipy.optimize as so
-from scipy.integrate import BDF
 
 from ...errors import (
     InvalidParameterError,
@@ -54,20 +52,19 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX, chain_solver
-from ...outcome import SolverInfo
+from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
-from .branches import LIMIT_MARGIN, Control, trace_branch
+from .branches import trace_branch
+from .control import Control
+from .descent import ArmState, Descent, state_at
 from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
 
-__all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "STATUSES", "PERTURBATION",
-           "BRANCH_POINT_OFFSET"]
+__all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "BRANCH_POINT_OFFSET"]
 
 #: Kinds of :class:`SimulationEvent`: a snap at a fold, a snap (or a continuous buckling, then with
 #: ``energy_released`` near 0) at a branch point, the end at a joint's range bound.
 EVENT_KINDS = ("snap", "bifurcation", "joint_limit")
-#: How a simulation ended (:attr:`Simulation.status`); only ``"complete"`` is a success.
-STATUSES = ("complete", "joint_limit", "workspace_boundary", "force_bound", "time_limit", "failed")
 #: The descent after a fold starts this far (rad, the largest joint) from the fold along its null vector.
 PERTURBATION = 1e-4
 #: A branch point is left by descent at this scaled arclength past it (in the units of
@@ -75,18 +72,19 @@ PERTURBATION = 1e-4
 BRANCH_POINT_OFFSET = 1e-5
 #: At most this many snaps within one step (a longer cascade ends the simulation, ``"failed"``).
 MAX_EVENTS_PER_STEP = 32
-#: Integration steps of one descent before it is given up.
-MAX_DESCENT_STEPS = 20000
-#: Newton from a descent point is accepted when it lands within this distance (rad, largest joint).
-POLISH_RADIUS = 0.05
 
 
 @dataclass(frozen=True)
-class SimulationEvent:
+class SimulationEvent(Outcome):
     """Something that happened between step ``step`` and ``step + 1``, at ``time = step + fraction``.
 
     Attributes
     ----------
+    status : str
+        Where the arm went (:attr:`STATUSES`): ``"landed"`` on a stable equilibrium under the same inputs
+        (``q_after``), or ``"joint_limit"``: a joint reached its range bound (the end of the simulation).
+    message : str
+        The same in a sentence.
     kind : str
         ``"snap"`` (the followed branch folded: the arm jumps), ``"bifurcation"`` (it lost stability at
         a branch point: a snap, or a continuous buckling onto a stable bifurcating branch when
@@ -121,9 +119,17 @@ class SimulationEvent:
         The sign of ``null_vector`` the descent left along (0 for a joint limit).
     method : str
         How the point was located (``"moore_spence"``, ``"test_function"``, ``"limit"``).
-    message : str
     """
 
+    STATUSES: ClassVar[dict[str, str]] = {
+        "landed": "the arm left the lost branch and landed on a stable equilibrium under the same inputs",
+        "joint_limit": "a joint reached its range bound (on the followed branch, or during the snap's descent): "
+                       "no equilibrium beyond inside the physical range; the simulation ends",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"landed"})
+
+    status: str
+    message: str
     kind: str
     step: int
     fraction: float
@@ -144,7 +150,9 @@ class SimulationEvent:
     null_vector: np.ndarray | None
     direction: int
     method: str
-    message: str = ""
+
+    def __post_init__(self) -> None:
+        freeze(self, copy=False)            # the builder passes arrays it owns
 
     @property
     def time(self) -> float:
@@ -155,7 +163,7 @@ class SimulationEvent:
         def opt(v, f=numbers):
             return None if v is None else f(v)
 
-        return {"kind": self.kind, "step": int(self.step), "fraction": number(self.fraction),
+        return {**self.outcome(), "kind": self.kind, "step": int(self.step), "fraction": number(self.fraction),
                 "time": number(self.time), "preloads": [numbers(r) for r in self.preloads],
                 "load": opt(self.load), "target": opt(self.target), "q_before": numbers(self.q_before),
                 "q_after": opt(self.q_after), "force_before": opt(self.force_before),
@@ -165,11 +173,11 @@ class SimulationEvent:
                 "potential_before": opt(self.potential_before, number),
                 "potential_after": opt(self.potential_after, number),
                 "energy_released": opt(self.energy_released, number), "null_vector": opt(self.null_vector),
-                "direction": int(self.direction), "method": self.method, "message": self.message}
+                "direction": int(self.direction), "method": self.method}
 
 
-@dataclass
-class Simulation:
+@dataclass(frozen=True)
+class Simulation(Outcome):
     """The result of :func:`simulate`: the state at each step done, and the events.
 
     The arrays hold the ``k <= K`` steps done (``k = K`` when ``status == "complete"``); each row is a
@@ -195,12 +203,24 @@ class Simulation:
         ``E - F . tip`` (free) or ``E`` (held).
     stable : ndarray (k,) of bool
     morse_index : ndarray (k,) of int
-    events : list of SimulationEvent
+    events : tuple of SimulationEvent
     status : str
-        :data:`STATUSES`.
+        How it ended (:attr:`STATUSES`); only ``"complete"`` is a success (the steps done are kept).
     message : str
+        The same in a sentence.
     straight_length : float
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every sample simulated",
+        "joint_limit": "a joint reached its range bound (on the followed branch or during a snap): no equilibrium "
+                       "beyond inside the physical range",
+        "workspace_boundary": "the held tip reached the edge of its workspace",
+        "force_bound": "the tip force grew beyond the continuation's bound",
+        "time_limit": "the time limit ran out",
+        "failed": "the followed branch or a snap could not be computed (message says where)",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
 
     mode: str
     preloads: np.ndarray
@@ -218,10 +238,8 @@ class Simulation:
     message: str
     straight_length: float
 
-    @property
-    def success(self) -> bool:
-        """Every step simulated."""
-        return self.status == "complete"
+    def __post_init__(self) -> None:
+        freeze(self)
 
     @property
     def steps(self) -> int:
@@ -245,8 +263,8 @@ class Simulation:
         """JSON form: ``mode, status, success, message, steps, done``; per step done ``q, force``
         ``{fx, fy}``, ``tip, deflection, energy, potential, stable, morse_index``; ``events``; the inputs
         ``preloads`` and ``loads`` or ``targets``."""
-        d = {"mode": self.mode, "status": self.status, "success": self.success, "message": self.message,
-             "steps": self.steps, "done": len(self), "q": [numbers(r) for r in self.q],
+        d = {**self.outcome(), "mode": self.mode, "steps": self.steps, "done": len(self),
+             "q": [numbers(r) for r in self.q],
              "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
              "tip": [numbers(r) for r in self.tip], "deflection": [numbers(r) for r in self.deflection],
              "energy": numbers(self.energy), "potential": numbers(self.potential),
@@ -328,33 +346,8 @@ def _chain(m: Manipulator, P: np.ndarray) -> Manipulator:
     return Manipulator(s.replace(L0=(float(P[i, 0]), float(P[i, 1]))) for i, s in enumerate(m.segments))
 
 
-# ---------------------------------------------------------------------------- the state
-@dataclass
-class _State:
-    q: np.ndarray
-    force: np.ndarray
-    tip: np.ndarray
-    energy: float
-    morse: int
-    stable: bool
-
-    def potential(self, held: bool) -> float:
-        return self.energy if held else self.energy - float(self.force @ self.tip)
-
-    def equilibrium(self, held: bool) -> Equilibrium:
-        return Equilibrium(q=self.q.copy(), energy=self.energy, force=self.force.copy(), morse_index=self.morse,
-                           stable=self.stable, solver=SolverInfo("simulation", 0), tip=self.tip.copy(),
-                           control="displacement" if held else "force")
-
-
-def _state_of(prob, x: np.ndarray) -> _State:
-    w, _, E, tip = prob.reduced(x)
-    idx, st = prob.morse(w)
-    n = prob.n
-    return _State(x[:n].copy(), x[n:n + 2].copy(), np.asarray(tip, float).copy(), float(E), int(idx), bool(st))
-
-
-def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> _State:
+# ---------------------------------------------------------------------------- the start
+def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> ArmState:
     if start is None:
         if held:
             eq = _least_energy_held(m0, T0)
@@ -392,7 +385,7 @@ def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> _State:
     if not eq.stable:
         raise InvalidParameterError(f"start is not a stable equilibrium under the first inputs (Morse index "
                                     f"{eq.morse_index})", field="start")
-    return _State(eq.q.copy(), np.asarray(F0, float).copy() if not held else eq.force.copy(), eq.tip.copy(),
+    return ArmState(eq.q.copy(), np.asarray(F0, float).copy() if not held else eq.force.copy(), eq.tip.copy(),
                   float(eq.energy), 0, True)
 
 
@@ -412,105 +405,6 @@ def _least_energy_held(m0: Manipulator, T0) -> Equilibrium:
     return solve_equilibrium(m0, float(T0[0]), float(T0[1]))
 
 
-# ---------------------------------------------------------------------------- descent
-class _Descent:
-    """The gradient flow of the potential at fixed inputs (``t`` of ``prob``), and its landing."""
-
-    def __init__(self, prob, t: float, held: bool, F: np.ndarray) -> None:
-        self.prob, self.t, self.held, self.F = prob, float(t), held, np.asarray(F, float)
-        self.n = prob.n
-        self.Ts = float(prob.m.torque_scale)
-
-    def x(self, q: np.ndarray, F: np.ndarray | None = None) -> np.ndarray:
-        return np.concatenate([q, self.F if F is None else F, [self.t]])
-
-    def multiplier(self, q: np.ndarray):
-        """``(grad E, J, tip residual, F)`` for the held tip: ``F`` the least-squares multiplier."""
-        R, _, _, J, _, _ = self.prob.eval_all(self.x(q, np.zeros(2)))
-        g = R[:self.n]
-        F = np.linalg.lstsq(J.T, g, rcond=None)[0]
-        return g, J, R[self.n:self.n + 2], F
-
-    def field(self, _tau: float, q: np.ndarray) -> np.ndarray:
-        if not self.held:
-            R = self.prob.eval_all(self.x(q))[0]
-            return -R[:self.n] / self.Ts
-        g, J, r, F = self.multiplier(q)
-        back = np.linalg.lstsq(J, r, rcond=None)[0]             # pulls the drift back onto tip(q) = target
-        return -(g - J.T @ F) / self.Ts - back
-
-    def jac(self, _tau: float, q: np.ndarray) -> np.ndarray:
-        return -self.prob.eval_all(self.x(q))[2] / self.Ts
-
-    def onto(self, q: np.ndarray) -> np.ndarray:
-        """``q`` moved onto the tip constraint (Gauss-Newton, least-norm)."""
-        for _ in range(8):
-            _, J, r, _ = self.multiplier(q)
-            if float(np.abs(r).max()) <= 1e-13 * self.prob.Ls:
-                break
-            q = q - np.linalg.lstsq(J, r, rcond=None)[0]
-        return q
-
-    def potential(self, q: np.ndarray) -> float:
-        _, _, _, _, E, tip = self.prob.eval_all(self.x(q, np.zeros(2) if self.held else None))
-        return float(E) if self.held else float(E) - float(self.F @ tip)
-
-    def point(self, q: np.ndarray) -> np.ndarray:
-        """The full ``x`` at ``q`` (held: with its least-squares multiplier)."""
-        return self.x(q, self.multiplier(q)[3] if self.held else None)
-
-    def landing(self, q: np.ndarray):
-        """The polished minimum near ``q`` when ``q`` is in its Newton neighbourhood, else None."""
-        prob = self.prob
-        x = self.point(q)
-        idx, st = prob.morse(prob.reduced(x)[0])
-        if not st:
-            return None
-        y, _ = prob.correct_t(x, self.t)
-        if y is None or float(np.abs(y[:self.n] - q).max()) > POLISH_RADIUS:
-            return None
-        if prob.limit_ratio(y)[0] >= 1.0 - LIMIT_MARGIN:
-            return None
-        s = _state_of(prob, y)
-        if not s.stable or s.potential(self.held) > self.potential(q) + 1e-12 * self.Ts:
-            return None
-        return s
-
-    def run(self, q0: np.ndarray):
-        """``("landed", state)``, ``("joint_limit", q at the bound)``, ``("time_limit", q)`` or ``("failed", q)``."""
-        prob = self.prob
-        q0 = self.onto(q0) if self.held else q0
-        solver = BDF(self.field, 0.0, q0, 1e12, rtol=1e-8, atol=1e-10,
-                     jac=None if self.held else self.jac)
-        q = q0
-        for _ in range(MAX_DESCENT_STEPS):
-            if expired():
-                return "time_limit", q
-            tau_a, qa = solver.t, solver.y.copy()
-            msg = solver.step()
-            if msg is not None or solver.status == "failed":
-                return "failed", qa
-            q = solver.y.copy()
-            lim, _ = prob.limit_ratio(q)
-            if lim >= 1.0 - LIMIT_MARGIN:
-                dense = solver.dense_output()
-                target = 1.0 - LIMIT_MARGIN
-                try:
-                    tau = so.brentq(lambda s: prob.limit_ratio(dense(s))[0] - target, tau_a, solver.t, xtol=1e-14)
-                    ql = dense(tau)
-                    if prob.limit_ratio(ql)[0] > target:
-                        ql = qa
-                except ValueError:
-                    ql = qa
-                return "joint_limit", ql
-            s = self.landing(q)
-            if s is not None:
-                return "landed", s
-            if solver.status == "finished":
-                break
-        return "failed", q
-
-
 # ---------------------------------------------------------------------------- one step
 class _Run:
     def __init__(self, m: Manipulator, P, L, T, held: bool, perturbation: float) -> None:
@@ -523,7 +417,7 @@ class _Run:
             return P, None, self.T[k] + s * (self.T[k + 1] - self.T[k])
         return P, self.L[k] + s * (self.L[k + 1] - self.L[k]), None
 
-    def step(self, k: int, state: _State):
+    def step(self, k: int, state: ArmState):
         """The state at sample ``k + 1`` from ``state`` at sample ``k``: ``(state, status, message)``; on an
         irregular end ``state`` is None."""
         s0 = 0.0
@@ -540,11 +434,11 @@ class _Run:
                    else Control.move(n, preload=dP, load=d2, base=F0))
             br = trace_branch(mk, state.equilibrium(self.held), ctl, t_max=1.0, stop_at="stability_loss",
                               max_points=5000)
-            prob = br._problem
+            prob = br.problem
             # (a stability loss on the last step to t = 1 ends the branch as "t_max": the events decide)
             lost = [e for e in br.events if e.stability == "lost" and e.kind in ("fold", "branch_point")]
             if not lost and br.status == "t_max":
-                end = _state_of(prob, np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]]))
+                end = state_at(prob, np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]]))
                 if end.stable:
                     return end, "complete", ""
                 return None, "failed", (f"step {k}: the followed branch became unstable without a located fold or "
@@ -559,8 +453,8 @@ class _Run:
                 ev = next((e for e in br.events if e.kind == "joint_limit"), None)
                 if ev is not None:
                     s_ev = s0 + r * ev.t
-                    self.events.append(self._event("joint_limit", k, s_ev, ev.q, None, ev.force, None, ev.tip, None,
-                                                   ev.energy, None, None, None, 0, "limit",
+                    self.events.append(self._event("joint_limit", "joint_limit", k, s_ev, ev.q, None, ev.force, None,
+                                                   ev.tip, None, ev.energy, None, None, None, 0, "limit",
                                                    f"joint {ev.joint + 1} reached its range bound"))
                 return None, "joint_limit", (f"a joint reached its range bound in step {k} (at fraction "
                                              f"{s0 + r * (ev.t if ev else br.t[-1]):.6g}): no equilibrium "
@@ -570,9 +464,9 @@ class _Run:
             return None, "failed", f"step {k}: the branch could not be followed ({br.status}: {br.message})"
         return None, "failed", f"more than {MAX_EVENTS_PER_STEP} snaps in step {k}"
 
-    def _event(self, kind, k, s, qb, qa, Fb, Fa, tb, ta, Eb, Ea, Vb, Va, sign, method, msg, nv=None):
+    def _event(self, status, kind, k, s, qb, qa, Fb, Fa, tb, ta, Eb, Ea, Vb, Va, sign, method, msg, nv=None):
         P, F, T = self.inputs(k, s)
-        return SimulationEvent(kind, int(k), float(s), P.copy(), None if F is None else F.copy(),
+        return SimulationEvent(status, msg, kind, int(k), float(s), P.copy(), None if F is None else F.copy(),
                                None if T is None else T.copy(), np.asarray(qb, float).copy(),
                                None if qa is None else np.asarray(qa, float).copy(),
                                None if Fb is None else np.asarray(Fb, float).copy(),
@@ -582,7 +476,7 @@ class _Run:
                                None if Eb is None else float(Eb), None if Ea is None else float(Ea),
                                None if Vb is None else float(Vb), None if Va is None else float(Va),
                                None if (Vb is None or Va is None) else float(Vb - Va),
-                               None if nv is None else np.asarray(nv, float).copy(), int(sign), method, msg)
+                               None if nv is None else np.asarray(nv, float).copy(), int(sign), method)
 
     def snap(self, k: int, s0: float, r: float, prob, br, ev):
         """Descent from the fold (branch point) ``ev`` of ``br`` (the sub-step from fraction ``s0``, of length
@@ -595,7 +489,7 @@ class _Run:
         phi = phi / max(float(np.abs(phi).max()), 1e-300)
         note = ""
         if not fold:
-            # just past the branch point along the traced (now unstable) branch: at the branch point itself the
+            # just past the branch point along the traced branch (unstable there): at the branch point itself the
             # flow would leave only algebraically slowly
             after = np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]])
             t_d = min(float(x_ev[-1]) + BRANCH_POINT_OFFSET / float(prob.w[-1]), float(after[-1]))
@@ -607,7 +501,7 @@ class _Run:
             x_ev = y
         t_d = float(x_ev[-1])
         s_d = s0 + r * t_d
-        d = _Descent(prob, t_d, self.held, x_ev[n:n + 2].copy())
+        d = Descent(prob, t_d, self.held, x_ev[n:n + 2].copy())
         q_ev = x_ev[:n].copy()
         V_ev = d.potential(q_ev)
         cands = {}
@@ -623,23 +517,26 @@ class _Run:
                 sign = -sign
         else:
             sign = 1 if cands[1][0] <= cands[-1][0] + 1e-15 * max(1.0, abs(V_ev)) else -1
-        before = _state_of(prob, x_ev)
+        before = state_at(prob, x_ev)
         outcome, res = d.run(cands[sign][1])
         kind = "snap" if fold else "bifurcation"
         if outcome == "landed":
             s = res
             if fold and float(np.abs(s.q - q_ev).max()) < 10 * self.eps:
                 return None, s_d, "failed", f"step {k}: the descent from the fold came back to it"
-            self.events.append(self._event(kind, k, s_d, q_ev, s.q, before.force, s.force, before.tip, s.tip,
-                                           before.energy, s.energy, before.potential(self.held),
+            released = before.potential(self.held) - s.potential(self.held)
+            note = note or (f"snap at fraction {s_d:.6g} of step {k}: landed on a stable equilibrium (potential "
+                            f"released {released:.6g})")
+            self.events.append(self._event("landed", kind, k, s_d, q_ev, s.q, before.force, s.force, before.tip,
+                                           s.tip, before.energy, s.energy, before.potential(self.held),
                                            s.potential(self.held), sign, ev.method, note, ev.null_vector))
             return s, s_d, "landed", ""
         if outcome == "joint_limit":
             msg = (f"the snap at step {k} + {s_d:.6g} runs into a joint's range bound (no equilibrium inside the "
                    "physical range on the way)")
-            self.events.append(self._event(kind, k, s_d, q_ev, None, before.force, None, before.tip, None,
-                                           before.energy, None, before.potential(self.held), None, sign, ev.method,
-                                           msg, ev.null_vector))
+            self.events.append(self._event("joint_limit", kind, k, s_d, q_ev, None, before.force, None, before.tip,
+                                           None, before.energy, None, before.potential(self.held), None, sign,
+                                           ev.method, msg, ev.null_vector))
             return None, s_d, "joint_limit", msg
         if outcome == "time_limit":
             return None, s_d, "time_limit", "the time limit ran out during a snap"
@@ -718,7 +615,7 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
 def _simulate(m, P, L, T, held, start, eps) -> Simulation:
     K, n = P.shape[0], m.n
     run = _Run(m, P, L, T, held, eps)
-    rows: list[_State] = []
+    rows: list[ArmState] = []
     status, message = "complete", ""
     try:
         state = _start_state(_chain(m, P[0]), held, None if held else L[0], T[0] if held else None, start)

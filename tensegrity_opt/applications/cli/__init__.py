@@ -88,10 +88,10 @@ def _cmd_curve(args, m):
     for j in c.jumps:
         lines.append(f"jump ({j.kind}) between dx = {j.dx_before:g} and {j.dx_after:g}: "
                      f"F {fmt_q(j.force_before)} -> {fmt_q(j.force_after)}")
-    if not c.complete:
+    if not c.success:
         # A partial curve (the stable branch ends before --stop): its points are real equilibria, printed
         # (table or JSON, exit 0); what is missing and why goes to stderr.
-        note(c.note)
+        note(c.message)
     return data, "\n".join(lines)
 
 

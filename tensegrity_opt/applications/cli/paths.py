@@ -27,7 +27,9 @@ import numpy as np
 
 from ...analyses.paths.atlas import StabilityAtlas, stability_atlas
 from ...analyses.paths.boundaries import stability_boundary
-from ...analyses.paths.branches import Branch, Control, bifurcation_diagram, trace_branch
+from ...analyses.paths.branches import Branch, trace_branch
+from ...analyses.paths.control import Control
+from ...analyses.paths.diagram import bifurcation_diagram
 from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.paths.limit_load import limit_load
 from ...analyses.equilibria.rest import find_equilibria_under_force
@@ -287,7 +289,7 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]
         lines += [f"{r.kind} at load P = {r.load:.7f} (force), F = {fmt_q(r.force)}",
                   f"configuration q = {fmt_q(r.q)}", f"mode {fmt_q(r.null_vector)}"]
     else:
-        lines.append(f"no limit point: the path stays stable to its end ({r.reason}) at load {r.end_load:.7f}")
+        lines.append(f"no limit point: the path stays stable to its end ({r.status}) at load {r.end_load:.7f}")
     lines.append("quasi-buckling load (least tangent stiffness): "
                  + ("none" if r.quasi_buckling_load is None else f"{r.quasi_buckling_load:.7f}"))
     lines.append(f"start q = {fmt_q(r.start.q)}; path: {len(r.branch)} points, status {r.branch.status}")
@@ -318,7 +320,7 @@ def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
         cells = []
         for i in range(at.dx.size):
             t = at.targets[j][i]
-            cells.append("!" if not t.ok else "-" if not t.reachable else str(int(ns[j, i])))
+            cells.append("!" if not t.success else "-" if not t.reachable else str(int(ns[j, i])))
         lines.append(f"{at.dy[j]:>10.4g} " + " ".join(f"{c:>7}" for c in cells))
     lines.append(f"crossings: {len(at.switches)} switches, {len(at.branch_ends)} branch ends"
                  + (f"; {len(at.unresolved)} edges unresolved" if at.unresolved else ""))

@@ -114,9 +114,10 @@ def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
     c = force_deflection(m, dx, args.dy, branch=args.branch)
     fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
     out = _render(args, fig, "curve", {"points": int(c.dx.size), "jumps": [j.kind for j in c.jumps],
-                                       "branches": len(c.branches), "complete": c.complete, "note": c.note})
-    if not c.complete:    # the figure holds the points computed; the reader is told where and why it ends
-        note(c.note)
+                                       "branches": len(c.branches), "complete": c.success,
+                                       "note": "" if c.success else c.message})
+    if not c.success:    # the figure holds the points computed; the reader is told where and why it ends
+        note(c.message)
     return out
 
 
@@ -181,7 +182,7 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
     plots = _plots()
     r = limit_load_from_args(args, m)
     fig = plots.plot_limit_load(r, m=m)
-    return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load, "reason": r.reason,
+    return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load, "reason": None if r.kind != "none" else r.status,
                                              "quasi_buckling_load": r.quasi_buckling_load})
 
 

@@ -57,30 +57,25 @@ def atlas_from_rows(spec: Any, rows: Sequence[Mapping[str, Any]], *, edges: bool
                 t = _target(m, r, method)
             targets.append(t)
     left = None if timeout is None else max(timeout - (time.perf_counter() - t0), 1e-3)
-    at = assemble_atlas(m, targets, edges=edges, timeout=left)
-    if any(t.error and t.error.startswith("time_limit") for t in targets):
-        at.status = "time_limit"
-    return at
+    return assemble_atlas(m, targets, edges=edges, timeout=left)     # a target not re-solved in time: time_limit
 
 
 def _target(m, row: Mapping[str, Any], method: str) -> AtlasTarget:
-    t = AtlasTarget(float(row["dx"]), float(row["dy"]), method=method)
+    dx, dy = float(row["dx"]), float(row["dy"])
     if row.get("error"):
-        t.error = str(row["error"])
-        return t
-    t.reachable = bool(row["reachable"])
-    t.count, t.n_stable = int(row["count"]), int(row["n_stable"])
-    t.n_saddle, t.n_maximum = int(row["n_saddle"]), int(row["n_maximum"])
-    t.least_energy, t.least_signs, t.tie = row["least_energy"], row["least_signs"], bool(row["tie"])
-    t.certified, t.method = bool(row["certified"]), str(row["method"])
+        return AtlasTarget(dx, dy, method=method, error=str(row["error"]))
+    stored = {"reachable": bool(row["reachable"]), "count": int(row["count"]), "n_stable": int(row["n_stable"]),
+              "n_saddle": int(row["n_saddle"]), "n_maximum": int(row["n_maximum"]),
+              "least_energy": row["least_energy"], "least_signs": row["least_signs"], "tie": bool(row["tie"]),
+              "certified": bool(row["certified"]), "method": str(row["method"])}
     Q = np.asarray(row["stable_q"] or [], dtype=float).reshape(-1, m.n)
-    target = m.target(t.dx, t.dy)
+    target = m.target(dx, dy)
     mdl = chain_solver(m)
+    stable = []
     for q in Q:
         res = mdl.newton_kkt(target, q)
         if not res.success:
-            t.error = f"solver_failed: stored equilibrium {np.round(q, 6).tolist()} did not re-solve ({res.status})"
-            t.stable = []
-            return t
-        t.stable.append(make_equilibrium(m, res, constrained=True))
-    return t
+            return AtlasTarget(dx, dy, **stored, error=f"solver_failed: stored equilibrium "
+                               f"{np.round(q, 6).tolist()} did not re-solve ({res.status})")
+        stable.append(make_equilibrium(m, res, constrained=True))
+    return AtlasTarget(dx, dy, **stored, stable=tuple(stable))

@@ -173,7 +173,7 @@ def test_bistable_curve_stays_on_the_least_energy_branch():
     dxs = np.linspace(0.02, 4, 40)
     c = to.force_deflection(m, dxs)
     switches = [j for j in c.jumps if j.kind in ("snap", "switch")]
-    assert len(switches) == 5 and len(c.jumps) == 5 and c.complete
+    assert len(switches) == 5 and len(c.jumps) == 5 and c.success
     assert switches[0].dx_before > 0.6 and switches[-1].dx_after < 2.3     # "5 times between 0.63 and 2.27"
     chain = _chain(m)
     w = _well(0.6, 1, 1, 1.2)

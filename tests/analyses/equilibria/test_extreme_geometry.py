@@ -258,7 +258,7 @@ def test_a_curve_from_dx_0_on_a_pre_bent_chain_marks_the_straight_point():
     # the straight chain at dx = dy = 0 is no equilibrium with asymmetric preloads: not a stable point
     m = to.Manipulator([to.Segment(a=1.0, b=1.0, k=1.0, L0=(1.0, 1.3))] * 4)
     c = to.force_deflection(m, [0.0, 0.1, 0.2])
-    assert c.status[0] == "straight_not_equilibrium" and not c.stable[0]
+    assert c.point_status[0] == "straight_not_equilibrium" and not c.stable[0]
     for j in (1, 2):
         check(m, to.Equilibrium(q=c.q[j], energy=float(c.energy[j]), force=np.array([c.fx[j], c.fy[j]]),
                                 morse_index=0, stable=bool(c.stable[j]), solver=to.outcome.SolverInfo("", 0), tip=m.tip(c.q[j])),

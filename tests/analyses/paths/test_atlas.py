@@ -1,8 +1,8 @@
 """The workspace stability atlas (analyses/atlas.py), its sweep form, and curves measured from the rest shape.
 
-Independent numbers: tests/reference_model.py (numpy: the energy, the held-tip Newton and a many-start
-global minimum) and the exact rest configurations of tests/reference_paths.py; the brute-force atlas
-comparison (counts, Maxwell points, folds on the edges) is tests/test_atlas_reference.py.
+Independent numbers: tests/support/reference_model.py (numpy: the energy, the held-tip Newton and a many-start
+global minimum) and the exact rest configurations of tests/support/reference_paths.py; the brute-force atlas
+comparison (counts, Maxwell points, folds on the edges) is tests/analyses/paths/test_atlas_reference.py.
 """
 
 from __future__ import annotations
@@ -140,7 +140,8 @@ def test_sweep_spec_with_segments_refuses_varying_the_chain():
     with pytest.raises(to.InvalidParameterError) as e:
         sweeps.validate_spec({"analysis": "atlas", "manipulator": {**base, "n": 3}, "grid": {"dx": [0.1]}})
     assert e.value.field == "manipulator.n"
-    for spec, fld in (({"manipulator": {"n": 1}}, "manipulator.n"), ({"grid": {"dx": [0.1], "n": [3, 65]}}, "grid.n[1]")):
+    for spec, fld in (({"manipulator": {"n": 1}}, "manipulator.n"),
+                      ({"grid": {"dx": [0.1], "n": [3, 65]}}, "grid.n[1]")):
         with pytest.raises(to.InvalidParameterError) as e:
             sweeps.validate_spec({"analysis": "atlas", "grid": {"dx": [0.1]}, **spec})
         assert e.value.field == fld
@@ -168,9 +169,9 @@ def test_unreachable_targets_and_failed_targets_are_kept():
 def test_atlas_time_limit_keeps_what_is_done_and_validates_input():
     at = stability_atlas(BISTABLE, np.linspace(0.2, 1.2, 12), np.linspace(-0.5, 0.5, 12), timeout=0.3)
     assert at.status == "time_limit" and not at.success
-    done = [t for row in at.targets for t in row if t.ok]
+    done = [t for row in at.targets for t in row if t.success]
     assert 0 < len(done) < 144
-    assert all(t.error.startswith("time_limit") for row in at.targets for t in row if not t.ok)
+    assert all(t.error.startswith("time_limit") for row in at.targets for t in row if not t.success)
     for kw, fld in (({"dx": [0.2, 0.1], "dy": [0.0]}, "dx"), ({"dx": [0.1], "dy": [np.nan]}, "dy"),
                     ({"dx": np.zeros(101) + np.arange(101), "dy": np.arange(101.0)}, "dx"),
                     ({"dx": [0.1], "dy": [0.0], "method": "exact"}, "method")):

@@ -1,6 +1,6 @@
 """The stability atlas (``tensegrity_opt.analyses.paths.atlas``) against independent references.
 
-The references (``tests/reference_atlas.py``, on ``reference_model`` / ``reference_paths``; no
+The references (``tests/support/reference_atlas.py``, on ``reference_model`` / ``reference_paths``; no
 ``tensegrity_opt``) are: a brute-force set of the stable equilibria at every grid target (several hundred
 starts run downhill on the tip constraint, SLSQP with the tip equality, Newton polish, reduced Hessian);
 every stable branch at either end of every grid edge followed along it by natural-parameter steps (scipy
@@ -36,10 +36,8 @@ Checked per chain, on a small grid (edges = every pair of neighbouring targets):
 
 from __future__ import annotations
 
-import copy
+import dataclasses
 import functools
-import os
-import sys
 
 import numpy as np
 import pytest
@@ -149,7 +147,7 @@ def check_targets(at, chain, S):
     for (i, j), ref in S.items():
         t = at.targets[j][i]
         where = f"target (i={i}, j={j}) = (dx={t.dx}, dy={t.dy})"
-        if not t.ok:
+        if not t.success:
             problems.append(f"{where}: atlas error {t.error}")
             continue
         if at.n_stable[j, i] != len(ref):
@@ -409,34 +407,38 @@ def test_checkers_flag_planted_errors():
     assert at.switches and at.branch_ends
 
     def mutated(fn):
-        a2 = copy.deepcopy(at)
-        fn(a2)
-        return all_checks(name, a2)[0]
+        return all_checks(name, fn(at))[0]
+
+    def with_crossing(a2, c, new):
+        """``a2`` with the crossing ``c`` replaced by ``new`` (None: dropped); results are immutable."""
+        k = next(i for i, x in enumerate(a2.crossings) if x is c)
+        rest = a2.crossings[:k] + a2.crossings[k + 1:]
+        return dataclasses.replace(a2, crossings=rest if new is None else rest[:k] + (new,) + rest[k:])
 
     def move_switch(a2):
         c = a2.switches[0]
         (ia, ja), (ib, jb) = c.edge
         step = 1e-6 * (_point(a2, (ib, jb)) - _point(a2, (ia, ja)))
-        c.dx += step[0]
-        c.dy += step[1]
+        return with_crossing(a2, c, dataclasses.replace(c, dx=c.dx + step[0], dy=c.dy + step[1]))
 
     def drop(kind):
         def f(a2):
-            k = next(i for i, c in enumerate(a2.crossings) if c.kind == kind)
-            del a2.crossings[k]
+            return with_crossing(a2, next(c for c in a2.crossings if c.kind == kind), None)
         return f
 
     def move_fold(a2):
         c = a2.branch_ends[0]
-        c.dx += 1e-5
+        return with_crossing(a2, c, dataclasses.replace(c, dx=c.dx + 1e-5))
 
     def invent_fold(a2):
-        c = copy.deepcopy(a2.branch_ends[0])
-        c.edge = ((0, 0), (1, 0)) if tuple(map(tuple, c.edge)) != ((0, 0), (1, 0)) else ((0, 0), (0, 1))
-        a2.crossings.append(c)
+        c = a2.branch_ends[0]
+        edge = ((0, 0), (1, 0)) if tuple(map(tuple, c.edge)) != ((0, 0), (1, 0)) else ((0, 0), (0, 1))
+        return dataclasses.replace(a2, crossings=a2.crossings + (dataclasses.replace(c, edge=edge),))
 
     def change_count(a2):
-        a2.targets[1][2].n_stable += 1
+        t = a2.targets[1][2]
+        row = a2.targets[1][:2] + (dataclasses.replace(t, n_stable=t.n_stable + 1),) + a2.targets[1][3:]
+        return dataclasses.replace(a2, targets=a2.targets[:1] + (row,) + a2.targets[2:])
 
     for fn in (move_switch, drop("switch"), drop("branch_end"), move_fold, invent_fold, change_count):
         assert mutated(fn), fn

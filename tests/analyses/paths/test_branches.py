@@ -3,21 +3,20 @@
 The expected numbers come from other solvers of the library that share nothing with the path system
 but the model (IPOPT/Newton under force or displacement on a chain with changed preloads, the straight
 chain's eigenproblem in ``critical_force``), from closed forms (``t`` at the end point), or from
-tests/reference_model.py (independent numpy model). The acceptance tests of issue 16 (branch points =
+tests/support/reference_model.py (independent numpy model). The acceptance tests of the paths (branch points =
 critical loads, folds, limit loads vs a separate computation, the energy identity) are in test_paths.py.
 """
 
 from __future__ import annotations
 
-import os
-import sys
 
 import numpy as np
 import pytest
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.boundaries import _chain_at, parameter_direction, stability_boundary
-from tensegrity_opt.analyses.paths.branches import Control, trace_branch
+from tensegrity_opt.analyses.paths.branches import trace_branch
+from tensegrity_opt.analyses.paths.control import Control
 
 import reference_model as ref  # noqa: E402
 

@@ -1,7 +1,7 @@
-"""Partial force-deflection curves (the stable branch ends) and the kinds of their jumps (issue 18).
+"""Partial force-deflection curves (the stable branch ends) and the kinds of their jumps.
 
 Expected values are independent of the library: the end of a curve and the energies and forces at its
-points come from the reference model (``tests/reference_model.py``: its own many-start SLSQP descent and
+points come from the reference model (``tests/support/reference_model.py``: its own many-start SLSQP descent and
 random-start Newton search), the critical force from conventions.md's table, the joint stiffness from
 the closed form ``K = k (b L0 - 2 (b^2 - a^2))``, and whether a branch survives a grid step from the
 reference model's own Newton continuation of it in small steps.
@@ -56,17 +56,18 @@ def _branch_survives(chain: ref.Chain, q, F, d0: float, d1: float, dy: float = 0
 # ------------------------------------------------------------------------------------------ partial curves
 def test_partial_curve_ends_where_the_reference_model_finds_no_stable_equilibrium():
     c = to.force_deflection(PAPER, FAILING)
-    assert not c.complete and c.requested == 81 and c.dx.size == 63
+    assert not c.success and c.status == "no_stable_equilibrium" and c.requested == 81 and c.dx.size == 63
     e = c.ended_at
-    assert e.reason == "no_stable_equilibrium" and e.dx == FAILING[63] and e.dy == 0.0
+    assert e.status == "no_stable_equilibrium" and not e.success and e.dx == FAILING[63] and e.dy == 0.0
     assert "dx = 3.15" in e.message
-    assert c.note == ("The stable branch ends between dx = 3.1 and dx = 3.15 (dy = 0): no stable equilibrium at "
+    assert c.message == ("The stable branch ends between dx = 3.1 and dx = 3.15 (dy = 0): no stable equilibrium at "
                       "dx = 3.15; 63 of 81 points computed.")
     np.testing.assert_array_equal(c.dx, FAILING[:63])
     for arr in (c.dy, c.fx, c.fy, c.energy, c.stable, c.morse_index, c.branch):
         assert arr.shape == (63,)
-    assert c.q.shape == (63, 4) and len(c.shape) == len(c.status) == 63
-    assert c.stable.all() and c.status[0] == "straight" and set(c.status[1:]) == {"Newton_Converged"}
+    assert c.q.shape == (63, 4) and len(c.shape) == len(c.point_status) == len(c.solver) == 63
+    assert c.stable.all() and c.point_status[0] == "straight" and set(c.point_status[1:]) == {"converged"}
+    assert c.solver[0].status == "straight" and {v.status for v in c.solver[1:]} == {"Newton_Converged"}
     # the last point: the reference model's many-start least-energy stable equilibrium, same energy and force
     E_ref, _, F_ref = PAPER_REF.global_min(c.dx[-1], 0.0, n_random=60)
     assert c.energy[-1] == pytest.approx(E_ref, rel=1e-9)
@@ -81,9 +82,11 @@ def test_partial_curve_ends_where_the_reference_model_finds_no_stable_equilibriu
 
 def test_a_complete_curve_says_so():
     c = to.force_deflection(PAPER, FAILING[:63])
-    assert c.complete and c.ended_at is None and c.note == "" and c.requested == 63 == c.dx.size
+    assert c.success and c.status == "complete" and c.ended_at is None and c.requested == 63 == c.dx.size
+    assert c.message == "all 63 requested points computed"
     d = c.to_dict()
-    assert d["complete"] is True and d["ended_at"] is None and d["note"] == "" and d["requested"] == 63
+    assert list(d)[:3] == ["success", "status", "message"] and "complete" not in d and "note" not in d
+    assert d["success"] is True and d["status"] == "complete" and d["ended_at"] is None and d["requested"] == 63
 
 
 def test_points_after_the_end_are_dropped():
@@ -91,14 +94,14 @@ def test_points_after_the_end_are_dropped():
     c = to.force_deflection(PAPER, [0.5, 1.0, 3.15, 1.0, 0.5])
     assert c.dx.tolist() == [0.5, 1.0] and c.requested == 5
     assert (c.ended_at.dx, c.ended_at.dy) == (3.15, 0.0)
-    assert c.note.endswith("2 of 5 points computed.")
+    assert c.message.endswith("2 of 5 points computed.")
 
 
 def test_a_curve_without_any_stable_point_is_empty():
     c = to.force_deflection(PAPER, [3.15, 3.2])
-    assert c.dx.size == 0 and c.q.shape == (0, 4) and c.jumps == [] and c.requested == 2
+    assert c.dx.size == 0 and c.q.shape == (0, 4) and c.jumps == () and c.requested == 2
     assert c.ended_at.dx == 3.15
-    assert c.note == ("The stable branch ends at the first point, dx = 3.15 (dy = 0): no stable equilibrium at "
+    assert c.message == ("The stable branch ends at the first point, dx = 3.15 (dy = 0): no stable equilibrium at "
                       "dx = 3.15; 0 of 2 points computed.")
     assert c.to_dict()["points"] == []
 
@@ -106,7 +109,7 @@ def test_a_curve_without_any_stable_point_is_empty():
 def test_partial_curve_with_every_branch_is_truncated_too():
     dxs = np.linspace(0.05, 3.3, 14)         # 3.05 has a stable equilibrium, 3.3 none (reference model above)
     c = to.force_deflection(PAPER, dxs, branch="all")
-    assert not c.complete and c.ended_at.dx == dxs[13] and c.dx.size == 13
+    assert not c.success and c.ended_at.dx == dxs[13] and c.dx.size == 13
     assert c.branches and all(b.dx.size == 13 and b.q.shape == (13, 4) for b in c.branches)
     d = c.to_dict()
     assert all(len(b["points"]) == 13 for b in d["branches"])
@@ -118,7 +121,7 @@ def test_partial_curve_from_the_rest_configuration_speaks_of_the_callers_deflect
     c = to.force_deflection(m, rel, 0.0, reference="rest")
     assert c.reference == "rest" and np.max(np.abs(c.origin)) > 0.1
     k = c.dx.size
-    assert not c.complete and 0 < k < 61
+    assert not c.success and 0 < k < 61
     np.testing.assert_allclose(c.dx, rel[:k], atol=1e-12)
     assert c.ended_at.dx == pytest.approx(rel[k], abs=1e-12) and c.ended_at.dy == pytest.approx(0.0, abs=1e-12)
     assert f"dx = {rel[k]:g}, dy = 0:" in c.ended_at.message
@@ -183,8 +186,8 @@ def test_no_jump_when_the_straight_chain_is_no_equilibrium():
     with pytest.raises(to.StraightNotEquilibriumError):
         straight_equilibrium(m)
     c = to.force_deflection(m, [0.0, 0.1, 0.2, 0.0, 0.3])
-    assert c.complete and c.jumps == []
-    assert c.status[0] == c.status[3] == "straight_not_equilibrium"
+    assert c.success and c.jumps == ()
+    assert c.point_status[0] == c.point_status[3] == "straight_not_equilibrium"
 
 
 def test_a_descending_grid_reports_its_jump_between_the_last_two_points():
@@ -199,8 +202,8 @@ def test_a_descending_grid_reports_its_jump_between_the_last_two_points():
     assert np.all(j.force_after == 0.0)
     assert j.label == "return to the straight chain (buckling reversed): F_x -0.573 -> 0"
     # a curve that does not contain the straight point has no jump from it
-    assert to.force_deflection(PAPER, dxs[:-1]).jumps == []
-    assert to.force_deflection(PAPER, dxs[::-1][1:]).jumps == []
+    assert to.force_deflection(PAPER, dxs[:-1]).jumps == ()
+    assert to.force_deflection(PAPER, dxs[::-1][1:]).jumps == ()
 
 
 # a chain of bistable segments (K = -0.28): the least-energy branch changes once near dx = 1.3, while the old
@@ -258,7 +261,7 @@ def test_a_descending_grid_finds_the_same_switch_reversed():
     m = to.Manipulator.uniform(n, a, b, k, L0)
     up = to.force_deflection(m, GRID[:35])
     down = to.force_deflection(m, GRID[:35][::-1])
-    assert up.complete and down.complete
+    assert up.success and down.success
     assert [(j.kind, j.dx_before, j.dx_after) for j in down.jumps] == \
         [(j.kind, j.dx_after, j.dx_before) for j in reversed(up.jumps)]
     for ju, jd in zip(reversed(up.jumps), down.jumps):
@@ -282,11 +285,14 @@ def test_force_deflection_answers_a_partial_curve_with_200(client):
     assert r.status_code == 200, r.text
     got = r.json()
     s.ForceDeflectionOut.model_validate(got)
-    assert got["complete"] is False and got["requested"] == 81 and len(got["points"]) == 63
+    assert got["success"] is False and got["status"] == "no_stable_equilibrium"
+    assert got["requested"] == 81 and len(got["points"]) == 63
     assert got["ended_at"]["dx"] == pytest.approx(3.15) and got["ended_at"]["dy"] == 0.0
-    assert got["ended_at"]["reason"] == "no_stable_equilibrium" and got["ended_at"]["message"]
-    assert got["note"].endswith("63 of 81 points computed.")
-    assert got["points"][0]["status"] == "straight" and got["points"][-1]["status"] == "Newton_Converged"
+    assert got["ended_at"]["status"] == "no_stable_equilibrium" and got["ended_at"]["message"]
+    assert got["ended_at"]["success"] is False
+    assert got["message"].endswith("63 of 81 points computed.")
+    assert got["points"][0]["status"] == "straight" and got["points"][-1]["status"] == "converged"
+    assert got["points"][-1]["solver"]["status"] == "Newton_Converged"
     assert [j["kind"] for j in got["jumps"]] == ["buckling"]
     jd = got["jumps"][0]
     assert jd["delta"]["fx"] == pytest.approx(FX0, abs=1e-6) and jd["label"].startswith("buckling")

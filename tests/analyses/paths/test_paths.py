@@ -1,7 +1,7 @@
-"""Acceptance tests of equilibrium paths and limit points (issue 16) against independent
+"""Acceptance tests of equilibrium paths and limit points against independent
 references.
 
-Every expected number comes from ``tests/reference_paths.py`` / ``tests/reference_model.py``
+Every expected number comes from ``tests/support/reference_paths.py`` / ``tests/support/reference_model.py``
 (numpy + scipy, relative joint angles, no import of the library) or from a closed form; the
 library is only called to produce the values under test.
 
@@ -19,8 +19,6 @@ from __future__ import annotations
 import functools
 import json
 import math
-import os
-import sys
 
 import numpy as np
 import pytest
@@ -300,7 +298,7 @@ def test_paper_chain_free_critical_loads_closed_form():
 def test_limit_load_of_straight_chain_is_a_bifurcation(name, boundary):
     P, _ = modes(name, boundary)
     lim = limit_load(lib(name), direction=(-1.0, 0.0), boundary=boundary)
-    assert lim.kind == "bifurcation" and lim.reason is None
+    assert lim.kind == "bifurcation" and lim.status == "stability_lost" and lim.success
     assert lim.load == pytest.approx(P[0], rel=1e-6)
     np.testing.assert_allclose(lim.force, [-P[0], 0.0], atol=1e-6 * P[0])
     np.testing.assert_allclose(lim.q, 0.0, atol=1e-8)
@@ -423,7 +421,7 @@ def test_limit_load_pre_bent_chain():
     r_free = ref_limit("pre_bent3", "free")
     assert r_free.kind == "none" and r_free.reason == "joint_limit"
     lim = limit_load(m, direction=(-1.0, 0.0), boundary="free")
-    assert lim.kind == "none" and lim.reason == "joint_limit"
+    assert lim.kind == "none" and lim.status == "joint_limit"
     assert lim.load is None or lim.load == pytest.approx(r_free.t, rel=1e-3)
     assert lim.quasi_buckling_load is None or 0.0 < lim.quasi_buckling_load <= r_free.t + 1e-9
     check_branch(c, lim.branch, "load", direction=(-1.0, 0.0))
@@ -432,11 +430,11 @@ def test_limit_load_pre_bent_chain():
     assert np.max(lim.branch.t) > P_straight
 
     lim = limit_load(m, direction=(-1.0, 0.0), boundary="free", max_load=0.2)
-    assert lim.kind == "none" and lim.reason == "max_load"
+    assert lim.kind == "none" and lim.status == "max_load"
 
     r = ref_limit("pre_bent3", "guided")
     lim = limit_load(m, direction=(-1.0, 0.0), boundary="guided")
-    assert lim.kind == "fold" and lim.reason is None
+    assert lim.kind == "fold" and lim.status == "stability_lost"
     assert lim.load == pytest.approx(r.t, rel=1e-6)
     np.testing.assert_allclose(lim.force, r.force, atol=1e-5)
     np.testing.assert_allclose(lim.q, r.q, atol=1e-4)
@@ -449,7 +447,7 @@ def test_limit_load_bistable_chain(boundary):
     r = ref_limit("bistable3", boundary)
     assert r.kind == "fold"
     lim = limit_load(lib("bistable3"), direction=(-1.0, 0.0), boundary=boundary, start=bistable_rest())
-    assert lim.kind == "fold" and lim.reason is None
+    assert lim.kind == "fold" and lim.status == "stability_lost"
     assert lim.load == pytest.approx(r.t, rel=1e-6)
     np.testing.assert_allclose(lim.force, r.force, atol=1e-5)
     np.testing.assert_allclose(lim.q, r.q, atol=1e-4)

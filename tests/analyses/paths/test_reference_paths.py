@@ -1,4 +1,4 @@
-"""Self-tests of tests/reference_paths.py (the independent path / limit-point references).
+"""Self-tests of tests/support/reference_paths.py (the independent path / limit-point references).
 
 No import of ``tensegrity_opt``: these check the references against closed forms, against
 reference_model (bordered determinant with brentq for the critical loads) and against each
@@ -9,8 +9,6 @@ Fast: a few seconds in all.
 from __future__ import annotations
 
 import functools
-import os
-import sys
 
 import numpy as np
 import pytest

@@ -1,7 +1,7 @@
-"""Quasi-static simulation with snap-through (issue 17, item 2) against independent references.
+"""Quasi-static simulation with snap-through against independent references.
 
-Every expected number comes from ``tests/reference_paths.py`` / ``tests/reference_model.py`` (numpy + scipy,
-no import of the library) or from the small scipy routines below: the folds from
+Every expected number comes from ``tests/support/reference_paths.py`` / ``tests/support/reference_model.py``
+(numpy + scipy, no import of the library) or from the small scipy routines below: the folds from
 ``limit_load_reference`` / ``fold_in_displacement`` (natural paths and the extended system), the landing
 states from a gradient flow of the reference potential integrated by scipy's LSODA from the reference fold
 (perturbed along its null vector to the side where the potential is lower), the global minima from the
@@ -16,8 +16,6 @@ from __future__ import annotations
 
 import functools
 import json
-import os
-import sys
 
 import numpy as np
 import pytest
@@ -261,7 +259,8 @@ def test_a_preload_trajectory_drives_a_bistable_segment_through_its_fold():
     assert e.energy_released > 0
     assert e.energy_released == pytest.approx(cf.energy(e.q_before) - cf.energy(e.q_after), abs=1e-9)
     np.testing.assert_allclose(sim.q[:, 1], 0.0, atol=1e-9)
-    assert np.all(np.sign(sim.q[:e.step + 1, 0]) == np.sign(qf)) and np.all(np.sign(sim.q[e.step + 1:, 0]) != np.sign(qf))
+    assert np.all(np.sign(sim.q[:e.step + 1, 0]) == np.sign(qf))
+    assert np.all(np.sign(sim.q[e.step + 1:, 0]) != np.sign(qf))
 
 
 # --------------------------------------------------------------------------- held tip
@@ -278,7 +277,7 @@ def test_held_tip_with_changing_preloads_follows_the_reference_branch():
     P[:, 0, 0] += 0.2 * s
     P[:, 2, 1] -= 0.1 * s
     sim = simulate(m, P, tip="held", targets=T)
-    assert sim.success and sim.events == []
+    assert sim.success and sim.events == ()
     check_rows(sim, lambda k: _chain_with(c0, P[k]), held=True)
     q, F = sim.q[0], sim.force[0]
     for k in range(K):
@@ -412,7 +411,7 @@ def test_time_limit_keeps_the_steps_done_and_constant_inputs_stay_put():
     check_rows(sim, lambda k: ref_bistable3())
     q0 = np.full(3, bistable_well())
     sim = simulate(m, loads=np.zeros((3, 2)), start=q0)
-    assert sim.success and len(sim) == 3 and sim.events == []
+    assert sim.success and len(sim) == 3 and sim.events == ()
     np.testing.assert_allclose(sim.q, np.repeat(q0[None, :], 3, 0), atol=1e-9)
     one = simulate(m, loads=np.zeros((1, 2)))
     assert one.success and len(one) == 1 and one.steps == 1

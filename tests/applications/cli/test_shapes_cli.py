@@ -216,11 +216,12 @@ def test_a_bad_manipulator_file_is_one_line_and_exit_2(text, says, capsys, tmp_p
 
 
 class _Partial:
-    """A curve as the curves contract returns it when the stable branch ends early (``complete`` False,
-    ``note`` the sentence), around the real curve of the points before the end."""
+    """A curve as the curves contract returns it when the stable branch ends early (``success`` False,
+    ``message`` the sentence), around the real curve of the points before the end."""
 
-    complete = False
-    note = "The stable branch ends between dx = 0.25 and dx = 0.5 (dy = 0): test; 2 of 5 points computed."
+    success = False
+    status = "no_stable_equilibrium"
+    message = "The stable branch ends between dx = 0.25 and dx = 0.5 (dy = 0): test; 2 of 5 points computed."
 
     def __init__(self, curve):
         self._curve = curve
@@ -229,12 +230,12 @@ class _Partial:
         return getattr(self._curve, name)
 
     def to_dict(self):
-        return {**self._curve.to_dict(), "complete": False, "note": self.note}
+        return {**self._curve.to_dict(), "success": False, "status": self.status, "message": self.message}
 
 
 def test_a_partial_curve_prints_its_points_and_the_note_and_exits_0(capsys, monkeypatch):
-    """The contract: a Curve with ``complete`` False is a result (its points are real equilibria): the
-    table (or JSON) on stdout, ``curve.note`` on stderr, status 0; a complete curve prints no note."""
+    """The contract: a Curve with ``success`` False is a result (its points are real equilibria): the
+    table (or JSON) on stdout, ``curve.message`` on stderr, status 0; a complete curve prints no note."""
     import tensegrity_opt.applications.cli as cli
     from tensegrity_opt.analyses.paths.curves import force_deflection
 
@@ -248,11 +249,11 @@ def test_a_partial_curve_prints_its_points_and_the_note_and_exits_0(capsys, monk
     out, err = capsys.readouterr()
     rows = [ln for ln in out.splitlines() if ln.strip()[:1].isdigit()]
     assert len(rows) == 2 and rows[1].split()[0] == "0.25000"
-    assert err.strip() == f"tensegrity-opt: note: {_Partial.note}"
+    assert err.strip() == f"tensegrity-opt: note: {_Partial.message}"
     assert main(["curve", "--start", "0", "--stop", "1", "--num", "5", "--json"]) == 0
     out, err = capsys.readouterr()
     data = json.loads(out)
-    assert len(data["points"]) == 2 and data["complete"] is False and _Partial.note in err
+    assert len(data["points"]) == 2 and data["success"] is False and _Partial.message in err
 
 
 def test_plot_curve_of_a_partial_curve_writes_the_figure_and_prints_the_note(capsys, monkeypatch, tmp_path):
@@ -269,8 +270,8 @@ def test_plot_curve_of_a_partial_curve_writes_the_figure_and_prints_the_note(cap
     out, err = capsys.readouterr()
     data = json.loads(out)
     assert out_file.stat().st_size > 1000 and out_file.read_bytes()[:4] == b"\x89PNG"
-    assert data["points"] == 3 and data["complete"] is False and data["note"] == _Partial.note
-    assert err.strip() == f"tensegrity-opt: note: {_Partial.note}"
+    assert data["points"] == 3 and data["complete"] is False and data["note"] == _Partial.message
+    assert err.strip() == f"tensegrity-opt: note: {_Partial.message}"
 
 
 @pytest.mark.parametrize("argv", [["buckling", "--a", "0.5", "--L0", "0.5"], ["buckling", "--a", "0.5", "--L0", "0.5", "--json"]])

@@ -637,7 +637,8 @@ def _partial(c, k: int):
     from tensegrity_opt.analyses.paths.curves import CurveEnd
 
     fields = {f.name: getattr(c, f.name) for f in dataclasses.fields(c)}
-    for nm in ("dx", "dy", "q", "fx", "fy", "energy", "stable", "morse_index", "branch", "shape", "status"):
+    for nm in ("dx", "dy", "q", "fx", "fy", "energy", "stable", "morse_index", "branch", "shape", "point_status",
+               "solver"):
         fields[nm] = fields[nm][:k]
     fields["ended_at"] = CurveEnd(float(c.dx[k]), float(c.dy[k]), "no_stable_equilibrium",
                                   f"no stable equilibrium at dx = {float(c.dx[k]):g}")

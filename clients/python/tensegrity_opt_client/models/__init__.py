@@ -10,6 +10,7 @@ from .atlas_range import AtlasRange
 from .atlas_request import AtlasRequest
 from .atlas_request_method import AtlasRequestMethod
 from .atlas_target_out import AtlasTargetOut
+from .atlas_target_out_status import AtlasTargetOutStatus
 from .atlas_unresolved_out import AtlasUnresolvedOut
 from .batch_equilibrium_request import BatchEquilibriumRequest
 from .batch_item import BatchItem
@@ -34,6 +35,7 @@ from .control_out_kind import ControlOutKind
 from .control_out_tip_type_0 import ControlOutTipType0
 from .curve_end_out import CurveEndOut
 from .curve_point import CurvePoint
+from .curve_point_status import CurvePointStatus
 from .cusp_out import CuspOut
 from .deflection_range import DeflectionRange
 from .design_critical_force_request import DesignCriticalForceRequest
@@ -62,6 +64,7 @@ from .field_error import FieldError
 from .force import Force
 from .force_deflection_out import ForceDeflectionOut
 from .force_deflection_out_reference import ForceDeflectionOutReference
+from .force_deflection_out_status import ForceDeflectionOutStatus
 from .force_deflection_request import ForceDeflectionRequest
 from .force_deflection_request_branch import ForceDeflectionRequestBranch
 from .force_deflection_request_reference import ForceDeflectionRequestReference
@@ -93,7 +96,9 @@ from .jump_out_kind import JumpOutKind
 from .kernels_out import KernelsOut
 from .limit_load_out import LimitLoadOut
 from .limit_load_out_boundary import LimitLoadOutBoundary
+from .limit_load_out_branch_status import LimitLoadOutBranchStatus
 from .limit_load_out_kind import LimitLoadOutKind
+from .limit_load_out_status import LimitLoadOutStatus
 from .limit_load_request import LimitLoadRequest
 from .limit_load_request_boundary import LimitLoadRequestBoundary
 from .limits import Limits
@@ -172,6 +177,7 @@ from .segment_torque_request import SegmentTorqueRequest
 from .segmented_manipulator_in import SegmentedManipulatorIn
 from .simulation_event_out import SimulationEventOut
 from .simulation_event_out_kind import SimulationEventOutKind
+from .simulation_event_out_status import SimulationEventOutStatus
 from .simulation_out import SimulationOut
 from .simulation_out_mode import SimulationOutMode
 from .simulation_out_status import SimulationOutStatus
@@ -179,7 +185,8 @@ from .simulation_request import SimulationRequest
 from .simulation_request_tip import SimulationRequestTip
 from .solver_info import SolverInfo
 from .stability_boundary_out import StabilityBoundaryOut
-from .stability_boundary_out_kind_type_0 import StabilityBoundaryOutKindType0
+from .stability_boundary_out_kind import StabilityBoundaryOutKind
+from .stability_boundary_out_status import StabilityBoundaryOutStatus
 from .stability_boundary_request import StabilityBoundaryRequest
 from .start_deflection import StartDeflection
 from .start_q import StartQ
@@ -219,6 +226,7 @@ __all__ = (
     "AtlasRequest",
     "AtlasRequestMethod",
     "AtlasTargetOut",
+    "AtlasTargetOutStatus",
     "AtlasUnresolvedOut",
     "BatchEquilibriumRequest",
     "BatchItem",
@@ -243,6 +251,7 @@ __all__ = (
     "ControlOutTipType0",
     "CurveEndOut",
     "CurvePoint",
+    "CurvePointStatus",
     "CuspOut",
     "DeflectionRange",
     "DesignCriticalForceRequest",
@@ -271,6 +280,7 @@ __all__ = (
     "Force",
     "ForceDeflectionOut",
     "ForceDeflectionOutReference",
+    "ForceDeflectionOutStatus",
     "ForceDeflectionRequest",
     "ForceDeflectionRequestBranch",
     "ForceDeflectionRequestReference",
@@ -302,7 +312,9 @@ __all__ = (
     "KernelsOut",
     "LimitLoadOut",
     "LimitLoadOutBoundary",
+    "LimitLoadOutBranchStatus",
     "LimitLoadOutKind",
+    "LimitLoadOutStatus",
     "LimitLoadRequest",
     "LimitLoadRequestBoundary",
     "Limits",
@@ -381,6 +393,7 @@ __all__ = (
     "SegmentTorqueRequest",
     "SimulationEventOut",
     "SimulationEventOutKind",
+    "SimulationEventOutStatus",
     "SimulationOut",
     "SimulationOutMode",
     "SimulationOutStatus",
@@ -388,7 +401,8 @@ __all__ = (
     "SimulationRequestTip",
     "SolverInfo",
     "StabilityBoundaryOut",
-    "StabilityBoundaryOutKindType0",
+    "StabilityBoundaryOutKind",
+    "StabilityBoundaryOutStatus",
     "StabilityBoundaryRequest",
     "StartDeflection",
     "StartQ",

@@ -32,14 +32,16 @@ class AtlasOut:
         dy (list[float]):
         least_energy (list[list[float | None]]):
         least_signs (list[list[None | str]]):
+        message (str): what happened, in a sentence
         method (str):
         n_maximum (list[list[int]]):
         n_saddle (list[list[int]]):
         n_stable (list[list[int]]): stable equilibria per target (-1: failed)
         seconds (float):
-        status (AtlasOutStatus): complete, partial (some targets or edges failed) or time_limit (cut by the server's
-            time limit: the rest not done)
-        success (bool): status is complete
+        status (AtlasOutStatus): `complete`: every target computed and every edge analysed; `partial`: some targets
+            failed or some edges could not be analysed (the rest is complete); `time_limit`: the time limit ran out: targets
+            or edges not reached are missing
+        success (bool): whether it worked: `status` is one of complete
         targets (list[list[AtlasTargetOut]]):
         unresolved (list[AtlasUnresolvedOut]): edges whose analysis failed, with the reason
     """
@@ -52,6 +54,7 @@ class AtlasOut:
     dy: list[float]
     least_energy: list[list[float | None]]
     least_signs: list[list[None | str]]
+    message: str
     method: str
     n_maximum: list[list[int]]
     n_saddle: list[list[int]]
@@ -107,6 +110,8 @@ class AtlasOut:
 
             least_signs.append(least_signs_item)
 
+        message = self.message
+
         method = self.method
 
         n_maximum = []
@@ -159,6 +164,7 @@ class AtlasOut:
                 "dy": dy,
                 "least_energy": least_energy,
                 "least_signs": least_signs,
+                "message": message,
                 "method": method,
                 "n_maximum": n_maximum,
                 "n_saddle": n_saddle,
@@ -244,6 +250,8 @@ class AtlasOut:
 
             least_signs.append(least_signs_item)
 
+        message = d.pop("message")
+
         method = d.pop("method")
 
         n_maximum = []
@@ -301,6 +309,7 @@ class AtlasOut:
             dy=dy,
             least_energy=least_energy,
             least_signs=least_signs,
+            message=message,
             method=method,
             n_maximum=n_maximum,
             n_saddle=n_saddle,

@@ -6,6 +6,8 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.atlas_target_out_status import AtlasTargetOutStatus
+
 T = TypeVar("T", bound="AtlasTargetOut")
 
 
@@ -21,6 +23,7 @@ class AtlasTargetOut:
         error (None | str): `code: message` where the target failed (counts -1), e.g. time_limit
         least_energy (float | None): energy of the least-energy stable equilibrium (force x length)
         least_signs (None | str): its sign string (+/- per joint)
+        message (str): what happened, in a sentence
         method (str):
         n_maximum (int):
         n_saddle (int):
@@ -28,6 +31,10 @@ class AtlasTargetOut:
         reachable (bool): false beyond the chain's reach (every count 0)
         stable_energy (list[float]):
         stable_q (list[list[float]]): joint angles (rad) of each stable equilibrium, least energy first
+        status (AtlasTargetOutStatus): `solved`: every equilibrium found (the search, or certified by the homotopy) and
+            classified; `unreachable`: the target is beyond the chain's reach: every count 0; `failed`: the solve failed
+            (error says why): the counts are -1; `time_limit`: not computed before the time limit: the counts are -1
+        success (bool): whether it worked: `status` is one of solved, unreachable
         tie (bool): two stable equilibria share the least energy (e.g. mirror images on dy = 0)
     """
 
@@ -38,6 +45,7 @@ class AtlasTargetOut:
     error: None | str
     least_energy: float | None
     least_signs: None | str
+    message: str
     method: str
     n_maximum: int
     n_saddle: int
@@ -45,6 +53,8 @@ class AtlasTargetOut:
     reachable: bool
     stable_energy: list[float]
     stable_q: list[list[float]]
+    status: AtlasTargetOutStatus
+    success: bool
     tie: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -66,6 +76,8 @@ class AtlasTargetOut:
         least_signs: None | str
         least_signs = self.least_signs
 
+        message = self.message
+
         method = self.method
 
         n_maximum = self.n_maximum
@@ -84,6 +96,10 @@ class AtlasTargetOut:
 
             stable_q.append(stable_q_item)
 
+        status = self.status.value
+
+        success = self.success
+
         tie = self.tie
 
         field_dict: dict[str, Any] = {}
@@ -97,6 +113,7 @@ class AtlasTargetOut:
                 "error": error,
                 "least_energy": least_energy,
                 "least_signs": least_signs,
+                "message": message,
                 "method": method,
                 "n_maximum": n_maximum,
                 "n_saddle": n_saddle,
@@ -104,6 +121,8 @@ class AtlasTargetOut:
                 "reachable": reachable,
                 "stable_energy": stable_energy,
                 "stable_q": stable_q,
+                "status": status,
+                "success": success,
                 "tie": tie,
             }
         )
@@ -142,6 +161,8 @@ class AtlasTargetOut:
 
         least_signs = _parse_least_signs(d.pop("least_signs"))
 
+        message = d.pop("message")
+
         method = d.pop("method")
 
         n_maximum = d.pop("n_maximum")
@@ -161,6 +182,10 @@ class AtlasTargetOut:
 
             stable_q.append(stable_q_item)
 
+        status = AtlasTargetOutStatus(d.pop("status"))
+
+        success = d.pop("success")
+
         tie = d.pop("tie")
 
         atlas_target_out = cls(
@@ -171,6 +196,7 @@ class AtlasTargetOut:
             error=error,
             least_energy=least_energy,
             least_signs=least_signs,
+            message=message,
             method=method,
             n_maximum=n_maximum,
             n_saddle=n_saddle,
@@ -178,6 +204,8 @@ class AtlasTargetOut:
             reachable=reachable,
             stable_energy=stable_energy,
             stable_q=stable_q,
+            status=status,
+            success=success,
             tie=tie,
         )
 

@@ -16,15 +16,17 @@ class CurveEndOut:
     Attributes:
         dx (float):
         dy (float):
-        message (str):
-        reason (Literal['no_stable_equilibrium']): "no_stable_equilibrium": no stable equilibrium is found there (the
-            stable branches end at a fold or the joint range and the global search finds no other)
+        message (str): what happened, in a sentence
+        status (Literal['no_stable_equilibrium']): `no_stable_equilibrium`: no stable equilibrium is found there: the
+            stable branches end (a fold, the joint range) and the global search finds no other
+        success (bool): always false: the curve could not go on there
     """
 
     dx: float
     dy: float
     message: str
-    reason: Literal["no_stable_equilibrium"]
+    status: Literal["no_stable_equilibrium"]
+    success: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -34,7 +36,9 @@ class CurveEndOut:
 
         message = self.message
 
-        reason = self.reason
+        status = self.status
+
+        success = self.success
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
@@ -43,7 +47,8 @@ class CurveEndOut:
                 "dx": dx,
                 "dy": dy,
                 "message": message,
-                "reason": reason,
+                "status": status,
+                "success": success,
             }
         )
 
@@ -58,15 +63,18 @@ class CurveEndOut:
 
         message = d.pop("message")
 
-        reason = cast(Literal["no_stable_equilibrium"], d.pop("reason"))
-        if reason != "no_stable_equilibrium":
-            raise ValueError(f"reason must match const 'no_stable_equilibrium', got '{reason}'")
+        status = cast(Literal["no_stable_equilibrium"], d.pop("status"))
+        if status != "no_stable_equilibrium":
+            raise ValueError(f"status must match const 'no_stable_equilibrium', got '{status}'")
+
+        success = d.pop("success")
 
         curve_end_out = cls(
             dx=dx,
             dy=dy,
             message=message,
-            reason=reason,
+            status=status,
+            success=success,
         )
 
         curve_end_out.additional_properties = d

@@ -1,10 +1,16 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
+
+from ..models.curve_point_status import CurvePointStatus
+
+if TYPE_CHECKING:
+    from ..models.solver_info import SolverInfo
+
 
 T = TypeVar("T", bound="CurvePoint")
 
@@ -22,9 +28,13 @@ class CurvePoint:
         morse_index (int):
         q (list[float]):
         shape (str):
+        solver (SolverInfo):
         stable (bool):
-        status (str): solver status: "straight", "straight_not_equilibrium" (asymmetric preloads: the straight point is
-            no equilibrium, stable false), or the solver's status of a converged equilibrium (e.g. "Newton_Converged")
+        status (CurvePointStatus): what the point is: `converged`: a converged equilibrium (the solver's own status and
+            iterations in the point's solver); `straight`: the straight chain at dx = dy = 0, an equilibrium known exactly;
+            `straight_not_equilibrium`: the straight chain at dx = dy = 0 where it is no equilibrium (asymmetric preloads:
+            an unbounded tension would be needed): kept, marked, stable false; `absent`: a followed branch (Curve.branches)
+            does not reach this point: its numbers are NaN
     """
 
     branch: int
@@ -36,8 +46,9 @@ class CurvePoint:
     morse_index: int
     q: list[float]
     shape: str
+    solver: SolverInfo
     stable: bool
-    status: str
+    status: CurvePointStatus
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -59,9 +70,11 @@ class CurvePoint:
 
         shape = self.shape
 
+        solver = self.solver.to_dict()
+
         stable = self.stable
 
-        status = self.status
+        status = self.status.value
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
@@ -76,6 +89,7 @@ class CurvePoint:
                 "morse_index": morse_index,
                 "q": q,
                 "shape": shape,
+                "solver": solver,
                 "stable": stable,
                 "status": status,
             }
@@ -85,6 +99,8 @@ class CurvePoint:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.solver_info import SolverInfo  # noqa: PLC0415
+
         d = dict(src_dict)
         branch = d.pop("branch")
 
@@ -104,9 +120,11 @@ class CurvePoint:
 
         shape = d.pop("shape")
 
+        solver = SolverInfo.from_dict(d.pop("solver"))
+
         stable = d.pop("stable")
 
-        status = d.pop("status")
+        status = CurvePointStatus(d.pop("status"))
 
         curve_point = cls(
             branch=branch,
@@ -118,6 +136,7 @@ class CurvePoint:
             morse_index=morse_index,
             q=q,
             shape=shape,
+            solver=solver,
             stable=stable,
             status=status,
         )

@@ -1,85 +1,85 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..types import UNSET, Unset
+if TYPE_CHECKING:
+    from ..models.force import Force
+
 
 T = TypeVar("T", bound="CuspOut")
 
 
 @_attrs_define
 class CuspOut:
-    """
+    """A cusp of a fold curve: where the fold's quadratic coefficient changes sign.
+
     Attributes:
+        force (Force):
+        kind (Literal['cusp']):
         p (float):
+        q (list[float]):
         t (float):
-        q (list[float] | None | Unset):
     """
 
+    force: Force
+    kind: Literal["cusp"]
     p: float
+    q: list[float]
     t: float
-    q: list[float] | None | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        force = self.force.to_dict()
+
+        kind = self.kind
+
         p = self.p
 
+        q = self.q
+
         t = self.t
-
-        q: list[float] | None | Unset
-        if isinstance(self.q, Unset):
-            q = UNSET
-        elif isinstance(self.q, list):
-            q = self.q
-
-        else:
-            q = self.q
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
             {
+                "force": force,
+                "kind": kind,
                 "p": p,
+                "q": q,
                 "t": t,
             }
         )
-        if q is not UNSET:
-            field_dict["q"] = q
 
         return field_dict
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.force import Force  # noqa: PLC0415
+
         d = dict(src_dict)
+        force = Force.from_dict(d.pop("force"))
+
+        kind = cast(Literal["cusp"], d.pop("kind"))
+        if kind != "cusp":
+            raise ValueError(f"kind must match const 'cusp', got '{kind}'")
+
         p = d.pop("p")
+
+        q = cast(list[float], d.pop("q"))
 
         t = d.pop("t")
 
-        def _parse_q(data: object) -> list[float] | None | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            try:
-                if not isinstance(data, list):
-                    raise TypeError()
-                q_type_0 = cast(list[float], data)
-
-                return q_type_0
-            except (TypeError, ValueError, AttributeError, KeyError):
-                pass
-            return cast(list[float] | None | Unset, data)
-
-        q = _parse_q(d.pop("q", UNSET))
-
         cusp_out = cls(
+            force=force,
+            kind=kind,
             p=p,
-            t=t,
             q=q,
+            t=t,
         )
 
         cusp_out.additional_properties = d

@@ -7,6 +7,7 @@ from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 from ..models.force_deflection_out_reference import ForceDeflectionOutReference
+from ..models.force_deflection_out_status import ForceDeflectionOutStatus
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -21,29 +22,35 @@ T = TypeVar("T", bound="ForceDeflectionOut")
 
 @_attrs_define
 class ForceDeflectionOut:
-    """
-    Attributes:
-        branches (list[BranchOut]): branch = "all" only (else empty)
-        complete (bool): every requested point was computed (ended_at is null)
-        ended_at (CurveEndOut | None): null when complete; else the first requested point where no stable equilibrium is
-            found: points holds only the points before it (the later ones are not computed)
-        jumps (list[JumpOut]):
-        note (str): "" when complete, else a sentence saying where the curve ends and how many points it holds
-        points (list[CurvePoint]):
-        requested (int): how many points were asked for (len(points) when complete)
-        origin (list[float] | Unset): the reference tip's deflection from the straight tip (add it to dx, dy for the
-            deflection from straight)
-        reference (ForceDeflectionOutReference | Unset): what dx, dy are measured from Default:
-            ForceDeflectionOutReference.STRAIGHT.
+    """A force-deflection curve: `success` when every requested point was computed; else `ended_at` says where it
+    stops and `message` why.
+
+        Attributes:
+            branches (list[BranchOut]): branch = "all" only (else empty)
+            ended_at (CurveEndOut | None): null when complete; else the first requested point where no stable equilibrium is
+                found: points holds only the points before it (the later ones are not computed)
+            jumps (list[JumpOut]):
+            message (str): what happened, in a sentence
+            points (list[CurvePoint]):
+            requested (int): how many points were asked for (len(points) when complete)
+            status (ForceDeflectionOutStatus): `complete`: every requested point was computed; `no_stable_equilibrium`: no
+                stable equilibrium is found there: the stable branches end (a fold, the joint range) and the global search finds
+                no other
+            success (bool): whether it worked: `status` is one of complete
+            origin (list[float] | Unset): the reference tip's deflection from the straight tip (add it to dx, dy for the
+                deflection from straight)
+            reference (ForceDeflectionOutReference | Unset): what dx, dy are measured from Default:
+                ForceDeflectionOutReference.STRAIGHT.
     """
 
     branches: list[BranchOut]
-    complete: bool
     ended_at: CurveEndOut | None
     jumps: list[JumpOut]
-    note: str
+    message: str
     points: list[CurvePoint]
     requested: int
+    status: ForceDeflectionOutStatus
+    success: bool
     origin: list[float] | Unset = UNSET
     reference: ForceDeflectionOutReference | Unset = ForceDeflectionOutReference.STRAIGHT
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
@@ -56,8 +63,6 @@ class ForceDeflectionOut:
             branches_item = branches_item_data.to_dict()
             branches.append(branches_item)
 
-        complete = self.complete
-
         ended_at: dict[str, Any] | None
         if isinstance(self.ended_at, CurveEndOut):
             ended_at = self.ended_at.to_dict()
@@ -69,7 +74,7 @@ class ForceDeflectionOut:
             jumps_item = jumps_item_data.to_dict()
             jumps.append(jumps_item)
 
-        note = self.note
+        message = self.message
 
         points = []
         for points_item_data in self.points:
@@ -77,6 +82,10 @@ class ForceDeflectionOut:
             points.append(points_item)
 
         requested = self.requested
+
+        status = self.status.value
+
+        success = self.success
 
         origin: list[float] | Unset = UNSET
         if not isinstance(self.origin, Unset):
@@ -91,12 +100,13 @@ class ForceDeflectionOut:
         field_dict.update(
             {
                 "branches": branches,
-                "complete": complete,
                 "ended_at": ended_at,
                 "jumps": jumps,
-                "note": note,
+                "message": message,
                 "points": points,
                 "requested": requested,
+                "status": status,
+                "success": success,
             }
         )
         if origin is not UNSET:
@@ -121,8 +131,6 @@ class ForceDeflectionOut:
 
             branches.append(branches_item)
 
-        complete = d.pop("complete")
-
         def _parse_ended_at(data: object) -> CurveEndOut | None:
             if data is None:
                 return data
@@ -145,7 +153,7 @@ class ForceDeflectionOut:
 
             jumps.append(jumps_item)
 
-        note = d.pop("note")
+        message = d.pop("message")
 
         points = []
         _points = d.pop("points")
@@ -155,6 +163,10 @@ class ForceDeflectionOut:
             points.append(points_item)
 
         requested = d.pop("requested")
+
+        status = ForceDeflectionOutStatus(d.pop("status"))
+
+        success = d.pop("success")
 
         origin = cast(list[float], d.pop("origin", UNSET))
 
@@ -167,12 +179,13 @@ class ForceDeflectionOut:
 
         force_deflection_out = cls(
             branches=branches,
-            complete=complete,
             ended_at=ended_at,
             jumps=jumps,
-            note=note,
+            message=message,
             points=points,
             requested=requested,
+            status=status,
+            success=success,
             origin=origin,
             reference=reference,
         )

@@ -7,7 +7,9 @@ from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 from ..models.limit_load_out_boundary import LimitLoadOutBoundary
+from ..models.limit_load_out_branch_status import LimitLoadOutBranchStatus
 from ..models.limit_load_out_kind import LimitLoadOutKind
+from ..models.limit_load_out_status import LimitLoadOutStatus
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -21,40 +23,49 @@ T = TypeVar("T", bound="LimitLoadOut")
 
 @_attrs_define
 class LimitLoadOut:
-    """
+    """The limit load: `status` stability_lost (`kind` fold or bifurcation), or why the path has none.
+
     Attributes:
         boundary (LimitLoadOutBoundary):
         branch_points (int):
-        branch_status (str):
+        branch_status (LimitLoadOutBranchStatus): how the traced path ended (its status)
         direction (list[float]):
         end_load (float): the last load reached on the stable path
         force (Force | None):
         kind (LimitLoadOutKind):
         load (float | None): the load where stability is first lost (null for kind none)
+        message (str): what happened, in a sentence
         null_vector (list[float] | None):
         q (list[float] | None):
         quasi_buckling_force (Force | None):
         quasi_buckling_load (float | None): the load of least tangent stiffness along the load
-        reason (None | str): kind none: joint_limit, max_load, or the branch's status (time_limit ...)
         start (EquilibriumOut): An equilibrium configuration.
-        success (bool):
+        status (LimitLoadOutStatus): `stability_lost`: the path loses stability at load: a fold or a bifurcation (kind);
+            `joint_limit`: no limit point: the path stays stable until a joint reaches its range bound; `max_load`: no limit
+            point up to max_load; `max_points`: no limit point within max_points points of the path; `closed_loop`: the path
+            closed on its start without losing stability; `force_bound`: the tip force exceeded the continuation's force
+            bound without a limit point; `step_too_small`: the path could not be continued (the step fell below its
+            minimum); `corrector_failed`: the path could not be continued (the corrector failed); `time_limit`: the time
+            limit ran out before a limit point was found
+        success (bool): whether it worked: `status` is one of joint_limit, max_load, stability_lost
         branch (None | TracedBranchOut | Unset): include_branch only: the traced path
     """
 
     boundary: LimitLoadOutBoundary
     branch_points: int
-    branch_status: str
+    branch_status: LimitLoadOutBranchStatus
     direction: list[float]
     end_load: float
     force: Force | None
     kind: LimitLoadOutKind
     load: float | None
+    message: str
     null_vector: list[float] | None
     q: list[float] | None
     quasi_buckling_force: Force | None
     quasi_buckling_load: float | None
-    reason: None | str
     start: EquilibriumOut
+    status: LimitLoadOutStatus
     success: bool
     branch: None | TracedBranchOut | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
@@ -67,7 +78,7 @@ class LimitLoadOut:
 
         branch_points = self.branch_points
 
-        branch_status = self.branch_status
+        branch_status = self.branch_status.value
 
         direction = self.direction
 
@@ -83,6 +94,8 @@ class LimitLoadOut:
 
         load: float | None
         load = self.load
+
+        message = self.message
 
         null_vector: list[float] | None
         if isinstance(self.null_vector, list):
@@ -107,10 +120,9 @@ class LimitLoadOut:
         quasi_buckling_load: float | None
         quasi_buckling_load = self.quasi_buckling_load
 
-        reason: None | str
-        reason = self.reason
-
         start = self.start.to_dict()
+
+        status = self.status.value
 
         success = self.success
 
@@ -134,12 +146,13 @@ class LimitLoadOut:
                 "force": force,
                 "kind": kind,
                 "load": load,
+                "message": message,
                 "null_vector": null_vector,
                 "q": q,
                 "quasi_buckling_force": quasi_buckling_force,
                 "quasi_buckling_load": quasi_buckling_load,
-                "reason": reason,
                 "start": start,
+                "status": status,
                 "success": success,
             }
         )
@@ -159,7 +172,7 @@ class LimitLoadOut:
 
         branch_points = d.pop("branch_points")
 
-        branch_status = d.pop("branch_status")
+        branch_status = LimitLoadOutBranchStatus(d.pop("branch_status"))
 
         direction = cast(list[float], d.pop("direction"))
 
@@ -188,6 +201,8 @@ class LimitLoadOut:
             return cast(float | None, data)
 
         load = _parse_load(d.pop("load"))
+
+        message = d.pop("message")
 
         def _parse_null_vector(data: object) -> list[float] | None:
             if data is None:
@@ -241,14 +256,9 @@ class LimitLoadOut:
 
         quasi_buckling_load = _parse_quasi_buckling_load(d.pop("quasi_buckling_load"))
 
-        def _parse_reason(data: object) -> None | str:
-            if data is None:
-                return data
-            return cast(None | str, data)
-
-        reason = _parse_reason(d.pop("reason"))
-
         start = EquilibriumOut.from_dict(d.pop("start"))
+
+        status = LimitLoadOutStatus(d.pop("status"))
 
         success = d.pop("success")
 
@@ -278,12 +288,13 @@ class LimitLoadOut:
             force=force,
             kind=kind,
             load=load,
+            message=message,
             null_vector=null_vector,
             q=q,
             quasi_buckling_force=quasi_buckling_force,
             quasi_buckling_load=quasi_buckling_load,
-            reason=reason,
             start=start,
+            status=status,
             success=success,
             branch=branch,
         )

@@ -19,7 +19,7 @@ T = TypeVar("T", bound="LimitLoadRequest")
 
 @_attrs_define
 class LimitLoadRequest:
-    """The dead load at which the branch from a rest configuration first loses stability (`tensegrity_opt.limit_load`).
+    """The dead load where the branch from a rest configuration first loses stability (`tensegrity_opt.limit_load`).
 
     Attributes:
         manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or

@@ -7,39 +7,45 @@ from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 from ..models.simulation_event_out_kind import SimulationEventOutKind
+from ..models.simulation_event_out_status import SimulationEventOutStatus
 
 T = TypeVar("T", bound="SimulationEventOut")
 
 
 @_attrs_define
 class SimulationEventOut:
-    """Something that happened between sample `step` and `step + 1`, at `time = step + fraction`.
+    """Something that happened between sample `step` and `step + 1`, at `time = step + fraction`: where the arm
+    went (`status`) and what it did there.
 
-    Attributes:
-        direction (int): the sign of null_vector the descent left along (0: joint limit)
-        energy_after (float | None):
-        energy_before (float | None):
-        energy_released (float | None): potential_before - potential_after (> 0 for a snap)
-        force_after (list[float] | None):
-        force_before (list[float] | None):
-        fraction (float): where in the step (0 at sample step, 1 at step + 1)
-        kind (SimulationEventOutKind): snap (the followed branch folded: the arm jumps), bifurcation (lost stability at
-            a branch point), joint_limit (a joint reached its range bound: the end)
-        load (list[float] | None): the dead tip load there (tip free)
-        message (str):
-        method (str): moore_spence, test_function or limit
-        null_vector (list[float] | None): the snapping mode (largest entry +1)
-        potential_after (float | None):
-        potential_before (float | None): E - F . tip (free) or E (held) at the fold
-        preloads (list[list[float]]): the rest lengths [L1_0, L2_0] per segment there
-        q_after (list[float] | None): the landing configuration (null: a joint limit, or the descent ran into a joint's
-            bound)
-        q_before (list[float]): the configuration at the fold (branch point, joint limit)
-        step (int):
-        target (list[float] | None): the tip deflection there (tip held)
-        time (float): step + fraction
-        tip_after (list[float] | None):
-        tip_before (list[float] | None):
+        Attributes:
+            direction (int): the sign of null_vector the descent left along (0: joint limit)
+            energy_after (float | None):
+            energy_before (float | None):
+            energy_released (float | None): potential_before - potential_after (> 0 for a snap)
+            force_after (list[float] | None):
+            force_before (list[float] | None):
+            fraction (float): where in the step (0 at sample step, 1 at step + 1)
+            kind (SimulationEventOutKind): snap (the followed branch folded: the arm jumps), bifurcation (lost stability at
+                a branch point), joint_limit (a joint reached its range bound: the end)
+            load (list[float] | None): the dead tip load there (tip free)
+            message (str): what happened, in a sentence
+            method (str): moore_spence, test_function or limit
+            null_vector (list[float] | None): the snapping mode (largest entry +1)
+            potential_after (float | None):
+            potential_before (float | None): E - F . tip (free) or E (held) at the fold
+            preloads (list[list[float]]): the rest lengths [L1_0, L2_0] per segment there
+            q_after (list[float] | None): the landing configuration (null: a joint limit, or the descent ran into a joint's
+                bound)
+            q_before (list[float]): the configuration at the fold (branch point, joint limit)
+            status (SimulationEventOutStatus): `landed`: the arm left the lost branch and landed on a stable equilibrium
+                under the same inputs; `joint_limit`: a joint reached its range bound (on the followed branch, or during the
+                snap's descent): no equilibrium beyond inside the physical range; the simulation ends
+            step (int):
+            success (bool): whether it worked: `status` is one of landed
+            target (list[float] | None): the tip deflection there (tip held)
+            time (float): step + fraction
+            tip_after (list[float] | None):
+            tip_before (list[float] | None):
     """
 
     direction: int
@@ -59,7 +65,9 @@ class SimulationEventOut:
     preloads: list[list[float]]
     q_after: list[float] | None
     q_before: list[float]
+    status: SimulationEventOutStatus
     step: int
+    success: bool
     target: list[float] | None
     time: float
     tip_after: list[float] | None
@@ -135,7 +143,11 @@ class SimulationEventOut:
 
         q_before = self.q_before
 
+        status = self.status.value
+
         step = self.step
+
+        success = self.success
 
         target: list[float] | None
         if isinstance(self.target, list):
@@ -181,7 +193,9 @@ class SimulationEventOut:
                 "preloads": preloads,
                 "q_after": q_after,
                 "q_before": q_before,
+                "status": status,
                 "step": step,
+                "success": success,
                 "target": target,
                 "time": time,
                 "tip_after": tip_after,
@@ -323,7 +337,11 @@ class SimulationEventOut:
 
         q_before = cast(list[float], d.pop("q_before"))
 
+        status = SimulationEventOutStatus(d.pop("status"))
+
         step = d.pop("step")
+
+        success = d.pop("success")
 
         def _parse_target(data: object) -> list[float] | None:
             if data is None:
@@ -390,7 +408,9 @@ class SimulationEventOut:
             preloads=preloads,
             q_after=q_after,
             q_before=q_before,
+            status=status,
             step=step,
+            success=success,
             target=target,
             time=time,
             tip_after=tip_after,

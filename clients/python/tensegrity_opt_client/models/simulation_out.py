@@ -20,28 +20,32 @@ T = TypeVar("T", bound="SimulationOut")
 
 @_attrs_define
 class SimulationOut:
-    """`Simulation.to_dict()`: the state at each sample done (`done` of `steps`) and the events.
+    """`Simulation.to_dict()`: the state at each sample done (`done` of `steps`) and the events; `status` says how
+    it ended (time_limit: cut by the server's time limit; the samples done are kept).
 
-    Attributes:
-        deflection (list[list[float]]): (dx, dy) = (2 sum b - x, y) per sample done
-        done (int): samples simulated
-        energy (list[float]): elastic energy (force x length)
-        events (list[SimulationEventOut]): snaps, bifurcations and the joint-limit end, in time order
-        force (list[Force]): the load (free) or the holding force (held) per sample done
-        message (str):
-        mode (SimulationOutMode):
-        morse_index (list[int]):
-        potential (list[float]): E - F . tip (free) or E (held)
-        preloads (list[list[list[float]]]): the rest lengths at every sample (the input)
-        q (list[list[float]]): joint angles (rad) per sample done
-        stable (list[bool]):
-        status (SimulationOutStatus): how it ended (time_limit: cut by the server's time limit; the samples done are
-            kept)
-        steps (int): samples asked for (K)
-        success (bool): every sample simulated
-        tip (list[list[float]]):
-        loads (list[list[float]] | None | Unset): the dead tip loads (free)
-        targets (list[list[float]] | None | Unset): the tip deflections (held)
+        Attributes:
+            deflection (list[list[float]]): (dx, dy) = (2 sum b - x, y) per sample done
+            done (int): samples simulated
+            energy (list[float]): elastic energy (force x length)
+            events (list[SimulationEventOut]): snaps, bifurcations and the joint-limit end, in time order
+            force (list[Force]): the load (free) or the holding force (held) per sample done
+            message (str): what happened, in a sentence
+            mode (SimulationOutMode):
+            morse_index (list[int]):
+            potential (list[float]): E - F . tip (free) or E (held)
+            preloads (list[list[list[float]]]): the rest lengths at every sample (the input)
+            q (list[list[float]]): joint angles (rad) per sample done
+            stable (list[bool]):
+            status (SimulationOutStatus): `complete`: every sample simulated; `joint_limit`: a joint reached its range bound
+                (on the followed branch or during a snap): no equilibrium beyond inside the physical range;
+                `workspace_boundary`: the held tip reached the edge of its workspace; `force_bound`: the tip force grew beyond
+                the continuation's bound; `time_limit`: the time limit ran out; `failed`: the followed branch or a snap could
+                not be computed (message says where)
+            steps (int): samples asked for (K)
+            success (bool): whether it worked: `status` is one of complete
+            tip (list[list[float]]):
+            loads (list[list[float]] | None | Unset): the dead tip loads (free)
+            targets (list[list[float]] | None | Unset): the tip deflections (held)
     """
 
     deflection: list[list[float]]

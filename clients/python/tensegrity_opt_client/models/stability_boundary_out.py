@@ -6,11 +6,13 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.stability_boundary_out_kind_type_0 import StabilityBoundaryOutKindType0
-from ..types import UNSET, Unset
+from ..models.stability_boundary_out_kind import StabilityBoundaryOutKind
+from ..models.stability_boundary_out_status import StabilityBoundaryOutStatus
 
 if TYPE_CHECKING:
+    from ..models.control_out import ControlOut
     from ..models.cusp_out import CuspOut
+    from ..models.force import Force
 
 
 T = TypeVar("T", bound="StabilityBoundaryOut")
@@ -18,306 +20,170 @@ T = TypeVar("T", bound="StabilityBoundaryOut")
 
 @_attrs_define
 class StabilityBoundaryOut:
-    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.paths.boundaries`).
+    """`StabilityBoundary.to_dict()` of the library (`tensegrity_opt.analyses.paths.boundaries`): the first
+    stability-losing fold or branch point against the parameter `p`.
 
-    Attributes:
-        cusps (list[CuspOut] | None | Unset):
-        force (list[Any] | None | Unset):
-        kind (None | StabilityBoundaryOutKindType0 | Unset):
-        p (list[float | None] | None | Unset):
-        parameter (None | str | Unset):
-        q (list[Any] | None | Unset):
-        status (None | str | Unset):
-        success (bool | None | Unset):
-        t (list[float | None] | None | Unset):
+        Attributes:
+            control (ControlOut):
+            cusps (list[CuspOut]):
+            force (list[Force]):
+            kind (StabilityBoundaryOutKind):
+            message (str): what happened, in a sentence
+            null_vectors (list[list[float]]): the mode at each point (largest entry +1)
+            p (list[float]): the parameter along the curve (0: the given chain)
+            parameter (str): the parameter's name (or `direction`)
+            points (int):
+            q (list[list[float]]): joint angles (rad) per point
+            status (StabilityBoundaryOutStatus): `p_range`: p left [p_min, p_max]; `max_points`: max_points points were
+                computed on a side; `joint_limit`: the fold configuration reached a joint limit; `ended`: the branch point of
+                the symmetric chain is not found beyond the last p (it ends there); `step_too_small`: the fold curve could not
+                be continued (the step fell below its minimum); `time_limit`: the time limit ran out (the points computed are
+                kept)
+            success (bool): whether it worked: `status` is one of ended, joint_limit, max_points, p_range
+            t (list[float]): the limit or critical load (the control's parameter) at each p
     """
 
-    cusps: list[CuspOut] | None | Unset = UNSET
-    force: list[Any] | None | Unset = UNSET
-    kind: None | StabilityBoundaryOutKindType0 | Unset = UNSET
-    p: list[float | None] | None | Unset = UNSET
-    parameter: None | str | Unset = UNSET
-    q: list[Any] | None | Unset = UNSET
-    status: None | str | Unset = UNSET
-    success: bool | None | Unset = UNSET
-    t: list[float | None] | None | Unset = UNSET
+    control: ControlOut
+    cusps: list[CuspOut]
+    force: list[Force]
+    kind: StabilityBoundaryOutKind
+    message: str
+    null_vectors: list[list[float]]
+    p: list[float]
+    parameter: str
+    points: int
+    q: list[list[float]]
+    status: StabilityBoundaryOutStatus
+    success: bool
+    t: list[float]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
-        cusps: list[dict[str, Any]] | None | Unset
-        if isinstance(self.cusps, Unset):
-            cusps = UNSET
-        elif isinstance(self.cusps, list):
-            cusps = []
-            for cusps_type_0_item_data in self.cusps:
-                cusps_type_0_item = cusps_type_0_item_data.to_dict()
-                cusps.append(cusps_type_0_item)
+        control = self.control.to_dict()
 
-        else:
-            cusps = self.cusps
+        cusps = []
+        for cusps_item_data in self.cusps:
+            cusps_item = cusps_item_data.to_dict()
+            cusps.append(cusps_item)
 
-        force: list[Any] | None | Unset
-        if isinstance(self.force, Unset):
-            force = UNSET
-        elif isinstance(self.force, list):
-            force = self.force
+        force = []
+        for force_item_data in self.force:
+            force_item = force_item_data.to_dict()
+            force.append(force_item)
 
-        else:
-            force = self.force
+        kind = self.kind.value
 
-        kind: None | str | Unset
-        if isinstance(self.kind, Unset):
-            kind = UNSET
-        elif isinstance(self.kind, StabilityBoundaryOutKindType0):
-            kind = self.kind.value
-        else:
-            kind = self.kind
+        message = self.message
 
-        p: list[float | None] | None | Unset
-        if isinstance(self.p, Unset):
-            p = UNSET
-        elif isinstance(self.p, list):
-            p = []
-            for p_type_0_item_data in self.p:
-                p_type_0_item: float | None
-                p_type_0_item = p_type_0_item_data
-                p.append(p_type_0_item)
+        null_vectors = []
+        for null_vectors_item_data in self.null_vectors:
+            null_vectors_item = null_vectors_item_data
 
-        else:
-            p = self.p
+            null_vectors.append(null_vectors_item)
 
-        parameter: None | str | Unset
-        if isinstance(self.parameter, Unset):
-            parameter = UNSET
-        else:
-            parameter = self.parameter
+        p = self.p
 
-        q: list[Any] | None | Unset
-        if isinstance(self.q, Unset):
-            q = UNSET
-        elif isinstance(self.q, list):
-            q = self.q
+        parameter = self.parameter
 
-        else:
-            q = self.q
+        points = self.points
 
-        status: None | str | Unset
-        if isinstance(self.status, Unset):
-            status = UNSET
-        else:
-            status = self.status
+        q = []
+        for q_item_data in self.q:
+            q_item = q_item_data
 
-        success: bool | None | Unset
-        if isinstance(self.success, Unset):
-            success = UNSET
-        else:
-            success = self.success
+            q.append(q_item)
 
-        t: list[float | None] | None | Unset
-        if isinstance(self.t, Unset):
-            t = UNSET
-        elif isinstance(self.t, list):
-            t = []
-            for t_type_0_item_data in self.t:
-                t_type_0_item: float | None
-                t_type_0_item = t_type_0_item_data
-                t.append(t_type_0_item)
+        status = self.status.value
 
-        else:
-            t = self.t
+        success = self.success
+
+        t = self.t
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
-        field_dict.update({})
-        if cusps is not UNSET:
-            field_dict["cusps"] = cusps
-        if force is not UNSET:
-            field_dict["force"] = force
-        if kind is not UNSET:
-            field_dict["kind"] = kind
-        if p is not UNSET:
-            field_dict["p"] = p
-        if parameter is not UNSET:
-            field_dict["parameter"] = parameter
-        if q is not UNSET:
-            field_dict["q"] = q
-        if status is not UNSET:
-            field_dict["status"] = status
-        if success is not UNSET:
-            field_dict["success"] = success
-        if t is not UNSET:
-            field_dict["t"] = t
+        field_dict.update(
+            {
+                "control": control,
+                "cusps": cusps,
+                "force": force,
+                "kind": kind,
+                "message": message,
+                "null_vectors": null_vectors,
+                "p": p,
+                "parameter": parameter,
+                "points": points,
+                "q": q,
+                "status": status,
+                "success": success,
+                "t": t,
+            }
+        )
 
         return field_dict
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.control_out import ControlOut  # noqa: PLC0415
         from ..models.cusp_out import CuspOut  # noqa: PLC0415
+        from ..models.force import Force  # noqa: PLC0415
 
         d = dict(src_dict)
+        control = ControlOut.from_dict(d.pop("control"))
 
-        def _parse_cusps(data: object) -> list[CuspOut] | None | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            try:
-                if not isinstance(data, list):
-                    raise TypeError()
-                cusps_type_0 = []
-                _cusps_type_0 = data
-                for cusps_type_0_item_data in _cusps_type_0:
-                    cusps_type_0_item = CuspOut.from_dict(cusps_type_0_item_data)
+        cusps = []
+        _cusps = d.pop("cusps")
+        for cusps_item_data in _cusps:
+            cusps_item = CuspOut.from_dict(cusps_item_data)
 
-                    cusps_type_0.append(cusps_type_0_item)
+            cusps.append(cusps_item)
 
-                return cusps_type_0
-            except (TypeError, ValueError, AttributeError, KeyError):
-                pass
-            return cast(list[CuspOut] | None | Unset, data)
+        force = []
+        _force = d.pop("force")
+        for force_item_data in _force:
+            force_item = Force.from_dict(force_item_data)
 
-        cusps = _parse_cusps(d.pop("cusps", UNSET))
+            force.append(force_item)
 
-        def _parse_force(data: object) -> list[Any] | None | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            try:
-                if not isinstance(data, list):
-                    raise TypeError()
-                force_type_0 = cast(list[Any], data)
+        kind = StabilityBoundaryOutKind(d.pop("kind"))
 
-                return force_type_0
-            except (TypeError, ValueError, AttributeError, KeyError):
-                pass
-            return cast(list[Any] | None | Unset, data)
+        message = d.pop("message")
 
-        force = _parse_force(d.pop("force", UNSET))
+        null_vectors = []
+        _null_vectors = d.pop("null_vectors")
+        for null_vectors_item_data in _null_vectors:
+            null_vectors_item = cast(list[float], null_vectors_item_data)
 
-        def _parse_kind(data: object) -> None | StabilityBoundaryOutKindType0 | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            try:
-                if not isinstance(data, str):
-                    raise TypeError()
-                kind_type_0 = StabilityBoundaryOutKindType0(data)
+            null_vectors.append(null_vectors_item)
 
-                return kind_type_0
-            except (TypeError, ValueError, AttributeError, KeyError):
-                pass
-            return cast(None | StabilityBoundaryOutKindType0 | Unset, data)
+        p = cast(list[float], d.pop("p"))
 
-        kind = _parse_kind(d.pop("kind", UNSET))
+        parameter = d.pop("parameter")
 
-        def _parse_p(data: object) -> list[float | None] | None | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            try:
-                if not isinstance(data, list):
-                    raise TypeError()
-                p_type_0 = []
-                _p_type_0 = data
-                for p_type_0_item_data in _p_type_0:
+        points = d.pop("points")
 
-                    def _parse_p_type_0_item(data: object) -> float | None:
-                        if data is None:
-                            return data
-                        return cast(float | None, data)
+        q = []
+        _q = d.pop("q")
+        for q_item_data in _q:
+            q_item = cast(list[float], q_item_data)
 
-                    p_type_0_item = _parse_p_type_0_item(p_type_0_item_data)
+            q.append(q_item)
 
-                    p_type_0.append(p_type_0_item)
+        status = StabilityBoundaryOutStatus(d.pop("status"))
 
-                return p_type_0
-            except (TypeError, ValueError, AttributeError, KeyError):
-                pass
-            return cast(list[float | None] | None | Unset, data)
+        success = d.pop("success")
 
-        p = _parse_p(d.pop("p", UNSET))
-
-        def _parse_parameter(data: object) -> None | str | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            return cast(None | str | Unset, data)
-
-        parameter = _parse_parameter(d.pop("parameter", UNSET))
-
-        def _parse_q(data: object) -> list[Any] | None | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            try:
-                if not isinstance(data, list):
-                    raise TypeError()
-                q_type_0 = cast(list[Any], data)
-
-                return q_type_0
-            except (TypeError, ValueError, AttributeError, KeyError):
-                pass
-            return cast(list[Any] | None | Unset, data)
-
-        q = _parse_q(d.pop("q", UNSET))
-
-        def _parse_status(data: object) -> None | str | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            return cast(None | str | Unset, data)
-
-        status = _parse_status(d.pop("status", UNSET))
-
-        def _parse_success(data: object) -> bool | None | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            return cast(bool | None | Unset, data)
-
-        success = _parse_success(d.pop("success", UNSET))
-
-        def _parse_t(data: object) -> list[float | None] | None | Unset:
-            if data is None:
-                return data
-            if isinstance(data, Unset):
-                return data
-            try:
-                if not isinstance(data, list):
-                    raise TypeError()
-                t_type_0 = []
-                _t_type_0 = data
-                for t_type_0_item_data in _t_type_0:
-
-                    def _parse_t_type_0_item(data: object) -> float | None:
-                        if data is None:
-                            return data
-                        return cast(float | None, data)
-
-                    t_type_0_item = _parse_t_type_0_item(t_type_0_item_data)
-
-                    t_type_0.append(t_type_0_item)
-
-                return t_type_0
-            except (TypeError, ValueError, AttributeError, KeyError):
-                pass
-            return cast(list[float | None] | None | Unset, data)
-
-        t = _parse_t(d.pop("t", UNSET))
+        t = cast(list[float], d.pop("t"))
 
         stability_boundary_out = cls(
+            control=control,
             cusps=cusps,
             force=force,
             kind=kind,
+            message=message,
+            null_vectors=null_vectors,
             p=p,
             parameter=parameter,
+            points=points,
             q=q,
             status=status,
             success=success,

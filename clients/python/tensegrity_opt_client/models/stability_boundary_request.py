@@ -22,20 +22,19 @@ T = TypeVar("T", bound="StabilityBoundaryRequest")
 
 @_attrs_define
 class StabilityBoundaryRequest:
-    """The curve of folds or branch points in (parameter, t)
-    (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
+    """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.stability_boundary`).
 
-        Attributes:
-            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-                {"segments": [...]}
-            control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | Unset | WallControlIn):
-                the control of the one-parameter branches (default guided)
-            max_points (int | Unset): at most this many points per branch, the start included (2..5000; server limit
-                TENSEGRITY_MAX_PATH_POINTS) Default: 400.
-            p_max (float | Unset): upper end of p Default: 0.1.
-            p_min (float | Unset): the boundary is followed for p_min <= p <= p_max Default: -0.1.
-            parameter (str | Unset): the second parameter p the boundary is followed in (the library's names; an unknown one
-                is refused with invalid_parameter on `parameter`) Default: 'asymmetry'.
+    Attributes:
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
+            {"segments": [...]}
+        control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | Unset | WallControlIn):
+            the control of the one-parameter branches (default guided)
+        max_points (int | Unset): at most this many points per branch, the start included (2..5000; server limit
+            TENSEGRITY_MAX_PATH_POINTS) Default: 400.
+        p_max (float | Unset): upper end of p Default: 0.1.
+        p_min (float | Unset): the boundary is followed for p_min <= p <= p_max Default: -0.1.
+        parameter (str | Unset): the second parameter p the boundary is followed in (the library's names; an unknown one
+            is refused with invalid_parameter on `parameter`) Default: 'asymmetry'.
     """
 
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn

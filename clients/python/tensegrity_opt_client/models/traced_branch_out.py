@@ -20,26 +20,34 @@ T = TypeVar("T", bound="TracedBranchOut")
 
 @_attrs_define
 class TracedBranchOut:
-    """An equilibrium branch: per point the parameter, configuration, force, tip, energy and stability.
+    """An equilibrium branch: per point the parameter, configuration, force, tip, energy and stability; `status`
+    says how it ended (`success` false: the corrector failed or time ran out, the points computed are kept).
 
-    Attributes:
-        control (ControlOut):
-        deflection (list[list[float]]): (dx, dy) = (2 sum b - x, y) per point
-        energy (list[float]): elastic energy per point (force x length)
-        events (list[BranchEventOut]):
-        force (list[Force]): tip force per point (a reaction where the tip is held)
-        message (str):
-        morse_index (list[int]): negative eigenvalues of the reduced Hessian (0: stable)
-        points (int):
-        q (list[list[float]]): joint angles (rad) per point
-        s (list[float]): arclength (normalised: rad, F / (k c^2 / 2b), length / 2b)
-        stable (list[bool]):
-        status (TracedBranchOutStatus): how it ended (time_limit: cut by the server's time limit)
-        success (bool): traced to a regular end (false: the corrector failed or time ran out; the points computed are
-            kept)
-        t (list[float]): the control parameter (0 at the start)
-        tip (list[list[float]]):
-        rest_lengths (list[list[list[float]]] | None | Unset): preload only: [L1_0, L2_0] per segment per point
+        Attributes:
+            control (ControlOut):
+            deflection (list[list[float]]): (dx, dy) = (2 sum b - x, y) per point
+            energy (list[float]): elastic energy per point (force x length)
+            events (list[BranchEventOut]):
+            force (list[Force]): tip force per point (a reaction where the tip is held)
+            message (str): what happened, in a sentence
+            morse_index (list[int]): negative eigenvalues of the reduced Hessian (0: stable)
+            points (int):
+            q (list[list[float]]): joint angles (rad) per point
+            s (list[float]): arclength (normalised: rad, F / (k c^2 / 2b), length / 2b)
+            stable (list[bool]):
+            status (TracedBranchOutStatus): `t_max`: t reached t_max (the end point is solved there); `t_min`: t reached
+                t_min (the end point is solved there); `joint_limit`: a joint reached its range bound (the end point is located
+                on it); `max_points`: max_points points were computed; `stability_loss`: stopped after the first event where
+                stability is lost (stop_at='stability_loss'); `event`: stopped after the first event (stop_at='event');
+                `closed_loop`: the branch closed on its start; `workspace_boundary`: the held tip reached the edge of its
+                workspace (the tip Jacobian loses rank); `force_bound`: the tip force exceeded FORCE_BOUND force units;
+                `step_too_small`: the step fell below min_step: the corrector cannot pass a singular point or a cusp;
+                `corrector_failed`: the corrector did not converge down to min_step; `time_limit`: the time limit ran out
+            success (bool): whether it worked: `status` is one of closed_loop, event, force_bound, joint_limit, max_points,
+                stability_loss, t_max, t_min, workspace_boundary
+            t (list[float]): the control parameter (0 at the start)
+            tip (list[list[float]]):
+            rest_lengths (list[list[list[float]]] | None | Unset): preload only: [L1_0, L2_0] per segment per point
     """
 
     control: ControlOut

@@ -91,7 +91,7 @@ def sync_detailed(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
@@ -100,7 +100,7 @@ def sync_detailed(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:
@@ -133,7 +133,7 @@ def sync(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
@@ -142,7 +142,7 @@ def sync(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:
@@ -170,7 +170,7 @@ async def asyncio_detailed(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
@@ -179,7 +179,7 @@ async def asyncio_detailed(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:
@@ -210,7 +210,7 @@ async def asyncio(
     followed until stability is first lost (`tensegrity_opt.limit_load`): `kind` `fold` (snap-through)
     or `bifurcation` (the straight symmetric chain buckles at its critical load, `/v1/buckling`), with
     `load`, the configuration and the mode there; `none` when the path stays stable to a joint limit or
-    `max_load` (`reason`), with `quasi_buckling_load`, the load of least tangent stiffness along the
+    `max_load` (`status`), with `quasi_buckling_load`, the load of least tangent stiffness along the
     load. `boundary: guided` holds the tip's y (the paper's case). `include_branch` adds the path.
     Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64
     segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
@@ -219,7 +219,7 @@ async def asyncio(
     `success: false`) instead of a 504.
 
     Args:
-        body (LimitLoadRequest): The dead load at which the branch from a rest configuration first
+        body (LimitLoadRequest): The dead load where the branch from a rest configuration first
             loses stability (`tensegrity_opt.limit_load`).
 
     Raises:

@@ -98,7 +98,7 @@ def sync_detailed(
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
+            (`tensegrity_opt.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -137,7 +137,7 @@ def sync(
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
+            (`tensegrity_opt.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -171,7 +171,7 @@ async def asyncio_detailed(
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
+            (`tensegrity_opt.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -208,7 +208,7 @@ async def asyncio(
 
     Args:
         body (StabilityBoundaryRequest): The curve of folds or branch points in (parameter, t)
-            (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`).
+            (`tensegrity_opt.stability_boundary`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

@@ -1,7 +1,7 @@
 from enum import StrEnum
 
 
-class StabilityBoundaryOutKindType0(StrEnum):
+class StabilityBoundaryOutKind(StrEnum):
     BRANCH_POINT = "branch_point"
     FOLD = "fold"
 

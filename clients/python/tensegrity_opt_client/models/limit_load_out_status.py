@@ -1,0 +1,16 @@
+from enum import StrEnum
+
+
+class LimitLoadOutStatus(StrEnum):
+    CLOSED_LOOP = "closed_loop"
+    CORRECTOR_FAILED = "corrector_failed"
+    FORCE_BOUND = "force_bound"
+    JOINT_LIMIT = "joint_limit"
+    MAX_LOAD = "max_load"
+    MAX_POINTS = "max_points"
+    STABILITY_LOST = "stability_lost"
+    STEP_TOO_SMALL = "step_too_small"
+    TIME_LIMIT = "time_limit"
+
+    def __str__(self) -> str:
+        return str(self.value)

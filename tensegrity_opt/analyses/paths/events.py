@@ -1,0 +1,267 @@
+"""Events of a branch: :class:`BranchEvent`, their detection between two accepted points and their location.
+
+Between two accepted points ``a`` and ``b`` of a branch (:mod:`.branches`) an event is detected by a change
+of a test function's sign and located precisely on the branch:
+
+* a change of the Morse index (stability) is located at the zero of the reduced Hessian's eigenvalue that
+  changes sign; a **fold** (the tangent's ``t`` component changes sign) without one at the zero of that
+  component; both by Brent's method on the arclength, the corrector solving each trial point;
+* the point is a **branch point** when the left null vector ``u`` of ``R_z`` is orthogonal to ``R_t``
+  (``|u . R_t| / |R_t| < BP_TOL``: another branch crosses), else a fold, which is then refined by Newton on
+  the Moore-Spence system ``R = 0, R_z phi = 0, l . phi = 1`` (:func:`moore_spence`, regular at a quadratic
+  fold);
+* a **joint limit** (``|q_i| = (1 - LIMIT_MARGIN)(pi - 2 beta_i)``) is located at the zero of the largest
+  ``|q_i| / limit_i - (1 - LIMIT_MARGIN)``; the branch ends there.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import scipy.optimize as so
+
+from ...serialize import nullable, number, numbers
+from .problem import LIMIT_MARGIN, NEWTON_TOL, PathPoint, PathProblem
+
+__all__ = ["BranchEvent", "EVENT_KINDS", "BP_TOL", "events_between", "locate_joint_limit", "joint_limit_events",
+           "moore_spence"]
+
+#: Kinds of :class:`BranchEvent`.
+EVENT_KINDS = ("fold", "branch_point", "joint_limit")
+#: ``|u . R_t| / |R_t|`` below which a singular point is a branch point rather than a fold.
+BP_TOL = 1e-6
+
+
+@dataclass(frozen=True)
+class BranchEvent:
+    """A special point of a branch, located between points ``index`` and ``index + 1``.
+
+    An event is a fact about the branch, not an outcome: an event that cannot be located is not reported.
+
+    Attributes
+    ----------
+    kind : str
+        ``"fold"`` (a limit point: ``t`` turns back; snap-through under this control),
+        ``"branch_point"`` (a simple bifurcation: another branch crosses; :func:`~.diagram.switch_branch`),
+        ``"joint_limit"`` (a joint reaches its range bound, ``|q_i| = (1 - LIMIT_MARGIN)(pi - 2 beta_i)``:
+        the branch ends).
+    index : int
+    t, q, force, tip, energy
+        The point itself (inside the open range).
+    null_vector : ndarray (n,) or None
+        The joint-angle part of the right null vector of ``R_z`` (largest entry +1), the buckling or
+        snapping mode; None for a joint limit.
+    morse_before, morse_after : int
+        Morse index at points ``index`` and ``index + 1``.
+    stability : str
+        ``"lost"`` (stable before, not after), ``"gained"`` or ``"unchanged"``.
+    method : str
+        How it was located: ``"moore_spence"`` (the fold's extended system), ``"test_function"`` (the
+        root of the eigenvalue along the branch), ``"limit"``.
+    residual : float
+        Scaled residual of the equilibrium equations at the point.
+    joint : int or None
+        The joint at its limit (0-based), for ``"joint_limit"``.
+    """
+
+    kind: str
+    index: int
+    t: float
+    q: np.ndarray
+    force: np.ndarray
+    tip: np.ndarray
+    energy: float
+    null_vector: np.ndarray | None
+    morse_before: int
+    morse_after: int
+    stability: str
+    method: str
+    residual: float
+    joint: int | None = None
+    x: np.ndarray | None = field(default=None, repr=False)
+    null_x: np.ndarray | None = field(default=None, repr=False)
+
+    def __post_init__(self) -> None:
+        for a in (self.q, self.force, self.tip, self.null_vector, self.x, self.null_x):   # the builder's own arrays
+            if a is not None:
+                a.setflags(write=False)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (an item of a branch's ``events``)."""
+        return {"kind": self.kind, "index": int(self.index), "t": number(self.t), "q": numbers(self.q),
+                "force": {"fx": number(self.force[0]), "fy": number(self.force[1])}, "tip": numbers(self.tip),
+                "energy": number(self.energy),
+                "null_vector": None if self.null_vector is None else numbers(self.null_vector),
+                "morse_before": int(self.morse_before), "morse_after": int(self.morse_after),
+                "stability": self.stability, "method": self.method, "residual": nullable(self.residual),
+                "joint": self.joint}
+
+
+def _on_step(prob: PathProblem, a: PathPoint, b: PathPoint, sigma: float, h: float) -> np.ndarray | None:
+    """The branch point at scaled arclength ``sigma`` beyond ``a`` (secant-guided)."""
+    guess = a.x + (b.x - a.x) * (sigma / h if h > 0 else 0.0)
+    y, _ = prob.correct(guess, a.tau, float(a.tau @ (prob.w * a.x)) + sigma)
+    return y
+
+
+def _brent(f, lo: float, hi: float, flo: float, fhi: float) -> float:
+    if flo == 0.0:
+        return lo
+    if fhi == 0.0:
+        return hi
+    return so.brentq(f, lo, hi, xtol=1e-14 * max(1.0, hi), rtol=4 * np.finfo(float).eps, maxiter=80)
+
+
+class _Unlocatable(Exception):
+    pass
+
+
+def _locate_eigen(prob: PathProblem, a: PathPoint, b: PathPoint, h: float, j: int) -> np.ndarray:
+    """The point between ``a`` and ``b`` where the ``j``-th smallest reduced eigenvalue vanishes."""
+    def g(sig: float) -> float:
+        y = a.x if sig == 0.0 else (b.x if sig == h else _on_step(prob, a, b, sig, h))
+        if y is None:
+            raise _Unlocatable
+        w = prob.reduced(y)[0]
+        return float(w[j + k]) / prob.m.torque_scale
+
+    k = prob.held_rows.shape[0]
+    ga, gb = float(a.w[j + k]) / prob.m.torque_scale, float(b.w[j + k]) / prob.m.torque_scale
+    if ga * gb > 0:
+        raise _Unlocatable
+    sig = _brent(g, 0.0, h, ga, gb)
+    y = _on_step(prob, a, b, sig, h) if 0.0 < sig < h else (a.x if sig == 0.0 else b.x)
+    if y is None:
+        raise _Unlocatable
+    return y
+
+
+def _locate_turn(prob: PathProblem, a: PathPoint, b: PathPoint, h: float) -> np.ndarray:
+    """The point between ``a`` and ``b`` where the tangent's ``t`` component vanishes."""
+    def g(sig: float) -> float:
+        y = _on_step(prob, a, b, sig, h) if 0.0 < sig < h else (a.x if sig == 0.0 else b.x)
+        if y is None:
+            raise _Unlocatable
+        return float(prob.tangent(y, a.tau)[-1])
+
+    return _on_step(prob, a, b, _brent(g, 0.0, h, float(a.tau[-1]), float(b.tau[-1])), h) \
+        if a.tau[-1] * b.tau[-1] < 0 else b.x
+
+
+def _null(prob: PathProblem, x: np.ndarray):
+    """Right and left null vectors of ``R_z`` (smallest singular pair) and ``R_t``, at ``x``."""
+    _, Rx = prob.eval(x)
+    Rz = Rx[:, :prob.N]
+    U, S, Vt = np.linalg.svd(Rz)
+    return Vt[-1], U[:, -1], Rx[:, -1], S
+
+
+def moore_spence(prob: PathProblem, x: np.ndarray, phi: np.ndarray, *, s: float = 0.0, iters: int = 20):
+    """Newton on the fold system ``R(z, t) = 0, R_z phi = 0, l . phi = 1`` (``l`` the start's ``phi``).
+
+    Returns ``(x, phi)`` converged, or ``None``. Regular at a quadratic fold (not at a branch point).
+    """
+    N = prob.N
+    ell = phi / float(phi @ phi)
+    y = np.concatenate([x, phi / float(ell @ phi)])
+    for _ in range(iters):
+        xs, ph = y[:N + 1], y[N + 1:]
+        R, Rx = prob.eval(xs, s)
+        Rzv, dRzv, _ = prob.ps.second(prob.full(xs, s), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
+        G = np.concatenate([R, Rzv, [ell @ ph - 1.0]])
+        if prob.residual(R) <= NEWTON_TOL and float(np.abs(Rzv * prob.rs).max()) <= 1e-10:
+            return xs, ph
+        M = np.zeros((2 * N + 1, 2 * N + 1))
+        M[:N, :N + 1] = Rx
+        M[N:2 * N, :N + 1] = dRzv[:, :N + 1]
+        M[N:2 * N, N + 1:] = Rx[:, :N]
+        M[2 * N, N + 1:] = ell
+        try:
+            dy = np.linalg.solve(M, -G)
+        except np.linalg.LinAlgError:
+            return None
+        y = y + dy
+        if not np.all(np.isfinite(y)):
+            return None
+    return None
+
+
+def _make_event(prob: PathProblem, kind: str, index: int, x: np.ndarray, a: PathPoint, b: PathPoint, method: str,
+                null: np.ndarray | None, joint: int | None = None, null_x: np.ndarray | None = None) -> BranchEvent:
+    R, _ = prob.eval(x)
+    _, _, E, tip = prob.reduced(x)
+    nv = None
+    if null is not None:
+        nq = null[:prob.n]
+        big = int(np.argmax(np.abs(nq)))
+        nv = nq / nq[big] if nq[big] != 0.0 else nq.copy()
+    stab = ("lost" if a.stable and not b.stable else "gained" if b.stable and not a.stable else "unchanged")
+    return BranchEvent(kind, index, float(x[-1]), x[:prob.n].copy(), x[prob.n:prob.n + 2].copy(), tip.copy(),
+                       float(E), nv, a.morse, b.morse, stab, method, prob.residual(R), joint, x.copy(),
+                       None if null_x is None else null_x.copy())
+
+
+def _singular_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h: float) -> list[BranchEvent]:
+    """Folds and branch points between two accepted points (located; see the module docstring)."""
+    out = []
+    turned = a.tau[-1] * b.tau[-1] < 0
+    lo, hi = sorted((a.morse, b.morse))
+    crossings = list(range(lo, hi))
+    if not crossings and turned:
+        crossings = [None]
+    for j in crossings:
+        try:
+            x = _locate_eigen(prob, a, b, h, j) if j is not None else _locate_turn(prob, a, b, h)
+        except (_Unlocatable, ValueError, RuntimeError):
+            x = None
+        if x is None:
+            continue
+        phi, u, Rt, _ = _null(prob, x)
+        ratio = abs(float(u @ Rt)) / max(float(np.linalg.norm(Rt)), 1e-300)
+        kind = "fold" if (turned and ratio > BP_TOL) or (not turned and ratio > 1e-3) else "branch_point"
+        method = "test_function"
+        if kind == "fold":
+            ms = moore_spence(prob, x, phi)
+            if ms is not None and np.abs((ms[0] - x) * prob.w).max() < 1e-4:
+                x, phi = ms
+                method = "moore_spence"
+        out.append(_make_event(prob, kind, index, x, a, b, method, phi, null_x=phi))
+    return out
+
+
+def events_between(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h: float) -> list[BranchEvent]:
+    """The folds and branch points between the accepted points ``a`` (number ``index``) and ``b``, ``h`` apart in
+    scaled arclength: none unless the Morse index changes or ``t`` turns back (located; module docstring)."""
+    if b.morse != a.morse or a.tau[-1] * b.tau[-1] < 0:
+        return _singular_events(prob, index, a, b, h)
+    return []
+
+
+def locate_joint_limit(prob: PathProblem, a: PathPoint, b: PathPoint, h: float) -> tuple[np.ndarray, float] | None:
+    """``(x, sigma)``: the point between ``a`` and ``b`` (``h`` apart) where the largest ``|q_i| / limit_i``
+    reaches ``1 - LIMIT_MARGIN``, at scaled arclength ``sigma`` from ``a``; None when it cannot be located."""
+    target = 1.0 - LIMIT_MARGIN
+
+    def g(sig: float) -> float:
+        yy = _on_step(prob, a, b, sig, h)
+        if yy is None:
+            raise _Unlocatable
+        return prob.limit_ratio(yy)[0] - target
+
+    try:
+        sig = _brent(g, 0.0, h, prob.limit_ratio(a.x)[0] - target, prob.limit_ratio(b.x)[0] - target)
+        y = _on_step(prob, a, b, sig, h)
+    except (_Unlocatable, ValueError, RuntimeError):
+        return None
+    return None if y is None else (y, sig)
+
+
+def joint_limit_events(prob: PathProblem, index: int, a: PathPoint, end: PathPoint, sigma: float) -> list[BranchEvent]:
+    """The events from ``a`` (number ``index``) to ``end``, the point at a joint limit ``sigma`` beyond it
+    (:func:`locate_joint_limit`): the folds and branch points on the way, then the joint limit."""
+    out = events_between(prob, index, a, end, sigma)
+    out.append(_make_event(prob, "joint_limit", index, end.x, a, end, "limit", None,
+                           joint=prob.limit_ratio(end.x)[1]))
+    return out

@@ -1,0 +1,260 @@
+"""The path problem of one chain under one control: :class:`PathProblem` and its points.
+
+``x = (q, F, t)`` (``n + 3`` numbers) solves the ``n + 2`` equations ``R(z, t) = 0`` of
+:mod:`tensegrity_opt.numerics.path_system` (``z = (q, F)``; the control sets which rows hold the tip and
+which prescribe the force, :mod:`.control`). :class:`PathProblem` evaluates them, corrects a guess onto the
+solution set (Newton on the bordered system ``[R(x); a . (w x) = b]``), gives the unit tangent and
+classifies a point: its stability is the inertia of the Hessian of ``E - F . tip`` reduced to the tip motions
+the control leaves free (``docs/model.md``): ``Z = I`` under a dead load, the null space of ``dy/dq`` when
+guided, of ``J`` when the tip is held. The scaled coordinates ``X = w * x`` balance radians, forces (in
+``k c^2 / (2 b)``) and lengths (in ``2 b``) in the arclength. Chains up to ``numerics.DENSE_MAX`` segments.
+
+The arclength engine (:mod:`.branches`), the event location (:mod:`.events`), branch switching
+(:mod:`.diagram`), the stability boundaries, the limit loads and the simulation all work on it.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ...errors import InvalidParameterError
+from ...model.manipulator import Manipulator
+from ...numerics import DENSE_MAX
+from ...numerics.path_system import control_vector, path_system
+from .control import Control
+
+__all__ = ["PathProblem", "PathPoint", "path_point", "LIMIT_MARGIN", "NEWTON_TOL", "NEWTON_ITER", "EIG_REL_TOL"]
+
+#: A point is on a joint limit at ``|q_i| >= (1 - LIMIT_MARGIN) (pi - 2 beta_i)``: the branch ends there.
+LIMIT_MARGIN = 1e-6
+#: Scaled residual below which the corrector has converged.
+NEWTON_TOL = 1e-11
+#: Corrector iterations allowed per step.
+NEWTON_ITER = 12
+#: Relative eigenvalue tolerance of the stability classification (as :mod:`.stability`).
+EIG_REL_TOL = 1e-9
+
+
+class PathProblem:
+    """The path system of one chain and control: evaluation, corrector, tangent, classification.
+
+    ``x = (q, F, t)`` (``N + 1 = n + 3`` numbers); the scaled coordinates ``X = w * x`` balance
+    radians, forces (``Fs = k c^2 / (2 b)``) and lengths (``Ls = 2 b``) in the arclength.
+    """
+
+    def __init__(self, m: Manipulator, control: Control, start_q: np.ndarray, start_F: np.ndarray | None,
+                 dp2: np.ndarray | None = None) -> None:
+        if m.n > DENSE_MAX:
+            raise InvalidParameterError(f"arclength continuation handles chains of up to {DENSE_MAX} segments, "
+                                        f"got n = {m.n}", field="n")
+        self.m, self.control, self.n = m, control, m.n
+        n = m.n
+        self.N = n + 2
+        self.ps = path_system(n)
+        self.p = np.array(m.params, dtype=float)
+        self.dp = np.zeros(6 * n)
+        self.dp2 = np.zeros(6 * n) if dp2 is None else np.asarray(dp2, float)
+        self.Ls = float(m.straight_length / n)
+        self.Fs = float(m.torque_scale / self.Ls)
+        tip0 = m.tip(start_q)
+        eye, zero = np.eye(2), np.zeros((2, 2))
+        k = control.kind
+        if k == "displacement":
+            A_tip, A_F, c, F_ref = eye, zero, np.array([-control.direction[0], control.direction[1]]), np.zeros(2)
+            t_scale = self.Ls
+        elif k == "load":
+            A_tip, A_F, c, F_ref = zero, eye, control.direction, control.base
+            t_scale = self.Fs
+        elif k in ("guided", "wall"):
+            nu = control.normal
+            tau = np.array([nu[1], -nu[0]])
+            A_tip = np.array([nu, [0.0, 0.0]])
+            A_F = np.array([[0.0, 0.0], tau])
+            c = np.array([0.0, float(tau @ control.direction)])
+            F_ref = control.base
+            t_scale = self.Fs
+        elif k == "move":                                # every input along a segment, t in [0, 1]
+            dl = control.direction[:2 * n].reshape(n, 2)
+            self.dp[4 * n:5 * n] = dl[:, 0]
+            self.dp[5 * n:6 * n] = dl[:, 1]
+            last = control.direction[2 * n:]
+            if control.tip == "held":
+                A_tip, A_F, c, F_ref = eye, zero, np.array([-last[0], last[1]]), np.zeros(2)
+                size = math.sqrt(float(dl.ravel() @ dl.ravel()) + float(last @ last)) / self.Ls
+            else:
+                A_tip, A_F, c, F_ref = zero, eye, last, control.base
+                size = math.hypot(math.sqrt(float(dl.ravel() @ dl.ravel())) / self.Ls,
+                                  math.sqrt(float(last @ last)) / self.Fs)
+            t_scale = 1.0 / size                         # the arclength in t: the scaled distance moved
+        else:                                            # preload
+            dl = control.direction.reshape(n, 2)
+            self.dp[4 * n:5 * n] = dl[:, 0]
+            self.dp[5 * n:6 * n] = dl[:, 1]
+            if control.tip == "held":
+                A_tip, A_F, c, F_ref = eye, zero, np.zeros(2), np.zeros(2)
+            else:
+                A_tip, A_F, c, F_ref = zero, eye, np.zeros(2), control.base
+            t_scale = self.Ls
+        self.A_tip = A_tip
+        self.held_rows = A_tip[[i for i in range(2) if np.any(A_tip[i] != 0.0)]]
+        self.ctl = control_vector(A_tip, A_F, c, tip0, F_ref)
+        self.w = np.concatenate([np.ones(n), np.full(2, 1.0 / self.Fs), [1.0 / t_scale]])
+        rows = [1.0 / (self.Ls if np.any(A_tip[i] != 0.0) else self.Fs) for i in range(2)]
+        self.rs = np.concatenate([np.full(n, 1.0 / m.torque_scale), rows])
+        self.limits = m.joint_limits
+        if start_F is None:
+            start_F = m.force_from_torques(start_q) if k in ("displacement",) or control.held[0] else F_ref
+        self.x0_guess = np.concatenate([start_q, start_F, [0.0]])
+        self._last = None
+        # the held rows scaled to torque units: the bordered Hessian's entries are then of one size
+        self.kkt_scale = m.torque_scale / self.Ls
+
+    # -------------------------------------------------------------- evaluation
+    def full(self, x: np.ndarray, s: float = 0.0) -> np.ndarray:
+        """``x`` with the second parameter ``s`` appended (the path system's argument; ``s = 0``: the chain
+        itself, else moved along ``dp2``, as the stability boundaries do)."""
+        return np.concatenate([x, [s]])
+
+    def keep(self, x: np.ndarray, out) -> None:
+        """Remember ``out``, the evaluation at ``x`` (a compiled step's last one), for :meth:`eval_all`."""
+        self._last = (x.copy(), out)
+
+    def eval_all(self, x: np.ndarray, s: float = 0.0):
+        """``(R, R_x, H, J, E, tip)`` at ``x`` (the last evaluation is kept: the corrector's final check
+        serves the tangent and the classification of the same point)."""
+        c = self._last
+        if c is not None and s == 0.0 and np.array_equal(c[0], x):
+            return c[1]
+        out = self.ps.evaluate(self.full(x, s), self.p, self.dp, self.dp2, self.ctl)
+        if s == 0.0:
+            self._last = (x.copy(), out)
+        return out
+
+    def eval(self, x: np.ndarray, s: float = 0.0):
+        """``(R, R_x)`` with ``R_x`` the ``N x (N + 1)`` Jacobian in ``(z, t)``."""
+        out = self.eval_all(x, s)
+        return out[0], out[1][:, :self.N + 1]
+
+    def residual(self, R: np.ndarray) -> float:
+        return float(np.abs(R * self.rs).max())
+
+    # -------------------------------------------------------------- corrector and tangent
+    def correct(self, x_guess: np.ndarray, a: np.ndarray, b: float, *, iters: int = NEWTON_ITER):
+        """Newton on ``[R(x); a . (w x) = b]``; returns ``(x, iterations)`` or ``(None, iterations)``."""
+        x = x_guess.copy()
+        aw = a * self.w
+        last = math.inf
+        for it in range(1, iters + 1):
+            R, Rx = self.eval(x)
+            r = self.residual(R)
+            g = float(aw @ x - b)
+            if not (math.isfinite(r) and math.isfinite(g)):
+                return None, it
+            if r <= NEWTON_TOL and abs(g) <= 1e-12 * max(1.0, abs(b)):
+                return x, it
+            M = np.vstack([Rx, aw])
+            try:
+                dx = np.linalg.solve(M, -np.concatenate([R, [g]]))
+            except np.linalg.LinAlgError:       # exactly at a branch point the bordered matrix is singular
+                dx = np.linalg.lstsq(M, -np.concatenate([R, [g]]), rcond=None)[0]
+            x = x + dx
+            step = float(np.abs(dx * self.w).max())
+            if it > 4 and step > last * 0.9 and step > 1e-8:
+                return None, it              # not contracting
+            last = step
+            if step < 1e-14 and r <= NEWTON_TOL * 10:
+                R, _ = self.eval(x)
+                if self.residual(R) <= NEWTON_TOL:
+                    return x, it
+        R, _ = self.eval(x)
+        return (x, iters) if self.residual(R) <= NEWTON_TOL else (None, iters)
+
+    def correct_t(self, x_guess: np.ndarray, t: float):
+        """The point at a given ``t`` (a natural-parameter solve)."""
+        a = np.zeros(self.N + 1)
+        a[-1] = 1.0 / self.w[-1]
+        return self.correct(x_guess, a, t)
+
+    def tangent(self, x: np.ndarray, prev: np.ndarray | None, sign: float = 1.0) -> np.ndarray:
+        """Unit tangent in scaled coordinates, oriented along ``prev`` (or with ``t`` growing by ``sign``)."""
+        _, Rx = self.eval(x)
+        A = Rx / self.w
+        if prev is not None:
+            M = np.vstack([A, prev])
+            rhs = np.zeros(self.N + 1)
+            rhs[-1] = 1.0
+            try:
+                v = np.linalg.solve(M, rhs)
+                return v / np.linalg.norm(v)
+            except np.linalg.LinAlgError:
+                pass
+        _, _, Vt = np.linalg.svd(A)
+        v = Vt[-1]
+        if prev is not None:
+            return v if v @ prev >= 0 else -v
+        if abs(v[-1]) < 1e-10:
+            raise InvalidParameterError("the start is a singular point of the branch (a fold or a branch point): "
+                                        "the direction of increasing t is not defined; start nearby",
+                                        field="start")
+        return v if v[-1] * sign > 0 else -v
+
+    # -------------------------------------------------------------- classification
+    def reduced(self, x: np.ndarray, s: float = 0.0):
+        """Stability data at ``x``: ``(w, J, E, tip)`` with ``w`` the ascending eigenvalues of the Hessian
+        ``H`` of ``E - F . tip`` (tip free) or of the bordered matrix ``[[H, C^T], [C, 0]]`` (``C`` the held
+        rows of ``J``, scaled to torque units), whose inertia is that of the reduced Hessian ``Z^T H Z``
+        plus ``k`` negative and ``k`` positive eigenvalues (``k`` held rows): :meth:`morse` subtracts them,
+        and the reduced eigenvalue ``j`` crosses zero where ``w[k + j]`` does."""
+        _, _, H, J, E, tip = self.eval_all(x, s)
+        k = self.held_rows.shape[0]
+        if k:
+            C = (self.held_rows @ J) * self.kkt_scale
+            K = np.zeros((self.n + k, self.n + k))
+            K[:self.n, :self.n] = H
+            K[:self.n, self.n:] = C.T
+            K[self.n:, :self.n] = C
+            H = K
+        w = np.linalg.eigvalsh(H) if H.shape[0] else np.zeros(0)
+        return w, J, E, tip
+
+    def morse(self, w: np.ndarray) -> tuple[int, bool]:
+        """``(Morse index, stable)`` from :meth:`reduced`'s eigenvalues."""
+        k = self.held_rows.shape[0]
+        if w.size <= 2 * k:
+            return 0, True
+        tol = EIG_REL_TOL * max(self.m.torque_scale, float(np.abs(w).max()))
+        idx = int(np.sum(w < -tol)) - k
+        return idx, idx == 0 and not bool(np.any(np.abs(w) <= tol))
+
+    def limit_ratio(self, x: np.ndarray) -> tuple[float, int]:
+        """``(max_i |q_i| / limit_i, i)``: how close the point is to a joint's range bound, and which joint."""
+        r = np.abs(x[:self.n]) / self.limits
+        j = int(np.argmax(r))
+        return float(r[j]), j
+
+
+@dataclass
+class PathPoint:
+    """An accepted point of a branch: ``x``, the unit tangent ``tau`` (scaled coordinates), the eigenvalues
+    ``w`` of :meth:`PathProblem.reduced`, the Morse index and stability, the energy ``E``, the tip and the tip
+    Jacobian ``J``."""
+
+    x: np.ndarray
+    tau: np.ndarray
+    w: np.ndarray
+    morse: int
+    stable: bool
+    E: float
+    tip: np.ndarray
+    J: np.ndarray
+
+
+def path_point(prob: PathProblem, x: np.ndarray, tau: np.ndarray) -> PathPoint:
+    """The :class:`PathPoint` at ``x`` with tangent ``tau``, classified."""
+    w, J, E, tip = prob.reduced(x)
+    idx, st = prob.morse(w)
+    return PathPoint(x, tau, w, idx, st, E, tip, J)
+
