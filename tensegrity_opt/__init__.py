@@ -19,15 +19,9 @@ from .analyses.paths.boundaries import StabilityBoundary, stability_boundary
 from .analyses.equilibria.buckling import Buckling, Mode, critical_force
 from .analyses.paths.continuation import Tracker, solve_equilibria_batch
 from .analyses.paths.curves import Curve, CurveEnd, Jump, force_deflection
-from .analyses.design.optimal import (
-                     Design,
-                     PreloadDesign,
-                     choose_preloads,
-                     critical_load_sensitivity,
-                     equilibrium_sensitivity,
-                     maximize_critical_force,
-                     preloads_for_critical_force,
-)
+from .analyses.design.strongest import Design, maximize_critical_force
+from .analyses.design.preloads import PreloadDesign, choose_preloads, preloads_for_critical_force
+from .analyses.design.sensitivity import critical_load_sensitivity, equilibrium_sensitivity
 from .analyses.equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
 from .analyses.design.force_sensor import ForceEstimate, estimate_tip_force
 from .analyses.equilibria.landscape import Landscape, energy_landscape
@@ -37,7 +31,8 @@ from .analyses.equilibria.rest import find_equilibria_under_force, rest_configur
 from .analyses.design.preload_control import PreloadController, PreloadPlan, PreloadStep, plan_preloads
 from .analyses.paths.simulation import Simulation, SimulationEvent, simulate
 from .analyses.equilibria.stiffness import cartesian_stiffness
-from .analyses.design.stiffness_design import LoadCapacity, StiffnessDesign, load_capacity, preloads_for_stiffness
+from .analyses.design.load_capacity import LoadCapacity, load_capacity
+from .analyses.design.stiffness_shaping import StiffnessDesign, preloads_for_stiffness
 from .applications.sweeps import SweepResult, sweep
 from .errors import (
                      HomotopyUnavailableError,

@@ -15,7 +15,7 @@ bounds and a per-step rate limit, with a stability margin (the smallest eigenval
    converges to a strict local minimum (the inertia of the KKT matrix) and its solution satisfies
    everything: the bounds, the rate box, the range, the margin.
 2. **IPOPT** otherwise, or for ``objective="margin"`` (largest margin) and ``"energy"`` (least spring
-   energy): :func:`~tensegrity_opt.analyses.design.optimal.choose_preloads` with the previous rest lengths as
+   energy): :func:`~tensegrity_opt.analyses.design.preloads.choose_preloads` with the previous rest lengths as
    the nominal ones, the bounds intersected with the rate box, warm-started from the previous
    configuration.
 3. Where neither finds admissible rest lengths the step is **infeasible**: reported with the best
@@ -44,7 +44,7 @@ from ...model.manipulator import Manipulator
 from ...numerics.inverse_statics import inverse_statics
 from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit
-from .optimal import choose_preloads
+from .preloads import choose_preloads
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 
 __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "OBJECTIVES"]

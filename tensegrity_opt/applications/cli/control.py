@@ -37,7 +37,8 @@ import numpy as np
 from ...analyses.design.force_sensor import estimate_tip_force
 from ...analyses.design.preload_control import OBJECTIVES, PreloadPlan, plan_preloads
 from ...analyses.paths.simulation import Simulation, simulate
-from ...analyses.design.stiffness_design import load_capacity, preloads_for_stiffness
+from ...analyses.design.load_capacity import load_capacity
+from ...analyses.design.stiffness_shaping import preloads_for_stiffness
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .common import HELP_FORMAT, add_manipulator_options, finite_float, fmt_q, positive_int

@@ -9,9 +9,10 @@ import scipy.linalg as sla
 import scipy.optimize as so
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design.optimal import (K_FLOOR_REL, InfeasibleDesignError, choose_preloads, critical_load_sensitivity,
-                                   equilibrium_sensitivity, maximize_critical_force,
-                                   preloads_for_critical_force)
+from tensegrity_opt.analyses.design.preloads import choose_preloads, preloads_for_critical_force
+from tensegrity_opt.analyses.design.sensitivity import critical_load_sensitivity, equilibrium_sensitivity
+from tensegrity_opt.analyses.design.strongest import K_FLOOR_REL, maximize_critical_force
+from tensegrity_opt.errors import InfeasibleDesignError
 
 import reference_model as R  # noqa: E402
 

@@ -1,42 +1,32 @@
-"""Design and control: the strongest chain, preloads for a pose or a load, sensitivities.
+"""The strongest chain: per-segment design variables maximising the critical load of the straight chain.
 
-Every problem is a CasADi NLP solved by IPOPT with exact derivatives
-(:mod:`tensegrity_opt.numerics.design_nlp`); every result is verified by an independent forward computation
-(:func:`critical_force` or :func:`solve_equilibrium_under_force`) before it is returned.
-Formulations and worked examples: ``docs/design.md``.
+:func:`maximize_critical_force` is a CasADi NLP solved by IPOPT with exact derivatives
+(:func:`tensegrity_opt.numerics.buckling_design_nlp`): the critical load ``P`` as a variable, the
+positive semidefiniteness of ``Z^T (K - P G) Z`` by a Cholesky factor. :func:`buckling_design` is the problem
+behind it, shared with :func:`~tensegrity_opt.analyses.design.preloads.preloads_for_critical_force` (the least
+change of the rest lengths reaching a required load). Every :class:`Design` is verified by an independent
+forward computation (:func:`~tensegrity_opt.analyses.equilibria.buckling.critical_force` on the returned chain)
+before it is returned. Formulations and worked examples: ``docs/design.md``.
 """
 
 from __future__ import annotations
 
 import math
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 import scipy.linalg as sla
 
-from ...errors import (
-    InfeasibleDesignError,
-    InvalidParameterError,
-    SolverError,
-    StraightNotEquilibriumError,
-    TensegrityError,
-    TimeLimitError,
-    UnreachableTargetError,
-)
+from ...errors import InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
-from ...numerics import RANGE_SHRINK, chain_solver
 from ...serialize import nullable, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.buckling import critical_force, straight_matrices
-from ..equilibria.equilibrium import Equilibrium, settle_under_force, solve_equilibrium_under_force
-from ..equilibria.least_energy import solve_equilibrium
 
-__all__ = ["Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force",
-           "choose_preloads", "critical_load_sensitivity", "equilibrium_sensitivity", "DESIGN_VARIABLES",
-           "K_FLOOR_REL"]
+__all__ = ["Design", "maximize_critical_force", "buckling_design", "DESIGN_VARIABLES", "K_FLOOR_REL"]
 
 #: Per-segment design variables of the buckling design problem (symmetric segments).
 DESIGN_VARIABLES = ("a", "b", "k", "L0")
@@ -103,44 +93,6 @@ class Design:
         return {"manipulator": self.manipulator.to_dict(), "critical_force": number(self.critical_force),
                 "loads": numbers(self.loads), "multiplicity": int(self.multiplicity), "active": list(self.active),
                 "initial_critical_force": nullable(self.initial_critical_force), "feasible": bool(self.feasible),
-                "solver": {"status": self.status, "iterations": int(self.iterations)}}
-
-
-@dataclass(frozen=True)
-class PreloadDesign:
-    """Result of :func:`choose_preloads`.
-
-    Attributes
-    ----------
-    manipulator : Manipulator
-        The chain with the chosen rest lengths ``(L1_0, L2_0)`` per segment.
-    preloads : ndarray (n, 2)
-        The chosen rest lengths.
-    q : ndarray (n,)
-        The verified equilibrium configuration (force control from the optimiser's ``q``).
-    margin : float
-        Smallest eigenvalue of the Hessian of ``E - F.tip`` in joint angles at ``q``
-        (torque per radian), recomputed.
-    tip : ndarray (2,)
-        The verified tip position; ``equilibrium`` the full verified :class:`Equilibrium`.
-    """
-
-    manipulator: Manipulator
-    preloads: np.ndarray
-    q: np.ndarray
-    margin: float
-    tip: np.ndarray
-    energy: float
-    status: str
-    success: bool
-    iterations: int
-    equilibrium: Equilibrium = field(repr=False)
-
-    def to_dict(self) -> dict[str, Any]:
-        """JSON form (the body of ``POST /v1/design/preloads``): ``manipulator``, ``preloads``, ``q``,
-        ``margin``, ``tip``, ``energy``, ``solver`` ``{status, iterations}``."""
-        return {"manipulator": self.manipulator.to_dict(), "preloads": numbers(self.preloads), "q": numbers(self.q),
-                "margin": number(self.margin), "tip": numbers(self.tip), "energy": number(self.energy),
                 "solver": {"status": self.status, "iterations": int(self.iterations)}}
 
 
@@ -229,41 +181,7 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
     with _time_limit(time_limit):
-        return _buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
-
-
-def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: str = "guided",
-                                bounds: tuple | None = None, time_limit: float | None = None) -> Design:
-    """The smallest change of the rest lengths ``L0`` (symmetric) giving a critical load ``>= required``.
-
-    Minimises ``sum((L0 - L0_nom)^2) / sum(L0_nom^2)`` subject to
-    ``Z^T (K(L0) - required G) Z`` positive semidefinite and ``L0`` within ``bounds``
-    (default ``(0.05 * 2b, 2b)``: springs in tension at straight). ``time_limit`` (seconds) bounds
-    the whole call, both solves, as in :func:`maximize_critical_force`.
-
-    Returns
-    -------
-    Design
-        ``feasible=True`` with the minimal change; or, when no rest lengths within the
-        bounds reach ``required``, ``feasible=False`` with the strongest achievable design.
-
-    Raises
-    ------
-    TimeLimitError
-        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
-        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
-    """
-    required = float(required)
-    if not math.isfinite(required) or required <= 0:
-        raise InvalidParameterError("required must be a positive finite load", field="required")
-    b = m.b
-    bnds = {"L0": bounds if bounds is not None else (0.05 * 2 * b, 2 * b)}
-    with _time_limit(time_limit):
-        try:
-            return _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
-        except InfeasibleDesignError:
-            best = _buckling_design(m, ("L0",), bnds, None, boundary, {}, required=None)
-            return Design(**{**best.__dict__, "feasible": False})
+        return buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
 
 
 def _tension_bounds(tension) -> tuple[float, float]:
@@ -279,7 +197,7 @@ def _tension_bounds(tension) -> tuple[float, float]:
     return tmin, tmax
 
 
-def _buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
+def buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
     from ...numerics import buckling_design_nlp
 
     if boundary not in ("guided", "free"):
@@ -507,247 +425,3 @@ def _active(cols, lo, hi, vary, budget, rows, n_psd, n, tl, tmin, tmax, kmin, to
         if K[i] <= kmin + tol * max(1.0, abs(kmin)):
             act.append(f"K[{i}] >= {kmin:.6g}")
     return act
-
-
-# --------------------------------------------------------------------------- 2. preloads for a pose
-def choose_preloads(m: Manipulator, target, load=(0.0, 0.0), objective: str = "nominal", *,
-                    margin: float = 1e-3, taut: bool = False, bounds: tuple | None = None,
-                    end_angle: float | None = None, q0=None, time_limit: float | None = None) -> PreloadDesign:
-    """Rest lengths ``(L1_0, L2_0)`` per segment putting the tip at ``target`` stably under ``load``.
-
-    Parameters
-    ----------
-    m : Manipulator
-        Geometry and stiffness (kept); its rest lengths are the nominal preloads.
-    target : (float, float)
-        Tip position ``(x, y)`` (length units).
-    load : (float, float)
-        Tip force ``(fx, fy)`` (a dead load).
-    objective : {"nominal", "margin", "energy"}
-        Least change from the nominal preloads; largest stability margin; least spring energy.
-    margin : float
-        Required smallest eigenvalue of the joint-space Hessian of ``E - F.tip`` (torque/rad);
-        the lower bound of the margin for ``objective="margin"``.
-    taut : bool
-        Keep every spring in tension (``L >= L0``).
-    bounds : (lo, hi), optional
-        Bounds on every rest length, each a number or ``2 n`` values (``L1_0`` of every segment, then every
-        ``L2_0``); default ``(0.1 b_min, 4 b_max)``.
-    end_angle : float, optional
-        Also prescribe the absolute angle of the last link (rad).
-    q0 : array_like, optional
-        Initial configuration; default the least-energy equilibrium at the target with the
-        nominal preloads (or a straight-line guess when there is none).
-    time_limit : float, optional
-        Seconds this call may take, as in :func:`maximize_critical_force`.
-
-    Returns
-    -------
-    PreloadDesign
-        Verified: the force-controlled equilibrium with these preloads, started from the
-        optimiser's ``q``, lands on the target within ``1e-6 max(b)`` with Morse index 0.
-
-    Raises
-    ------
-    InfeasibleDesignError
-        (``RuntimeError``) IPOPT found no feasible preloads (``best`` holds its last point as a
-        dict), or the verification failed.
-    TimeLimitError
-        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
-        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
-    """
-    with _time_limit(time_limit):
-        return _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0)
-
-
-def _choose_preloads(m, target, load, objective, margin, taut, bounds, end_angle, q0) -> PreloadDesign:
-    from ...numerics import preload_nlp
-
-    if objective not in ("nominal", "margin", "energy"):
-        raise InvalidParameterError(f"objective must be 'nominal', 'margin' or 'energy', got {objective!r}",
-                                    field="objective")
-    target = np.asarray(target, dtype=float)
-    load = np.asarray(load, dtype=float)
-    if target.shape != (2,) or not np.all(np.isfinite(target)):
-        raise InvalidParameterError("target must be two finite numbers (x, y)", field="target")
-    if load.shape != (2,) or not np.all(np.isfinite(load)):
-        raise InvalidParameterError("load must be two finite numbers (fx, fy)", field="load")
-    if not math.isfinite(margin) or margin < 0:
-        raise InvalidParameterError("margin must be finite and >= 0", field="margin")
-    n = m.n
-    if n < 2:
-        # one segment: the target alone fixes its angle (a point of a circle) and two rest lengths hold it;
-        # the NLP is written for chains (its rows assume n >= 2)
-        raise InvalidParameterError("choose_preloads needs a chain of n >= 2 segments", field="n")
-    dx, dy = m.straight_length - target[0], target[1]
-    try:
-        m.check_reachable(dx, dy)
-    except UnreachableTargetError as exc:        # the caller gave a tip position, not a deflection
-        raise UnreachableTargetError(exc.message, field="target", **exc.details) from None
-    lo, hi = rest_length_bounds(m, bounds)
-    if q0 is None:
-        try:
-            q0 = solve_equilibrium(m, dx, dy).q
-        except TensegrityError:
-            q0 = _reach_guess(m, target)
-    q0 = np.asarray(q0, dtype=float)
-    nlp = preload_nlp(n)
-    L0nom = np.concatenate([m.L1_0, m.L2_0])
-    L0start = np.clip(L0nom, lo, hi)
-    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start[:n], L0start[n:]))
-    _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
-    T = np.tril(np.ones((n, n)))
-    Hq = T.T @ Hphi @ T
-    mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
-    w_, V_ = np.linalg.eigh(Hq - mu0 * np.eye(n))
-    # a start for the margin's Cholesky factor; the floor relative to the Hessian's size (loads of 1e12
-    # give entries of 1e12, where an absolute 1e-6 is below roundoff and the factorisation fails)
-    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
-    lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
-    x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
-    lbx = np.concatenate([np.full(n, -_INF), np.broadcast_to(lo, (2 * n)), [margin], np.full(lv0.size, -_INF)])
-    ubx = np.concatenate([np.full(n, _INF), np.broadcast_to(hi, (2 * n)), [margin if objective != "margin" else _INF],
-                          np.full(lv0.size, _INF)])
-    for k_ in nlp.diag:
-        lbx[3 * n + 1 + k_] = 0.0
-    lim = m.joint_limits * (1 - RANGE_SHRINK)
-    ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
-    lbg = np.concatenate([np.zeros(n), target, [ea[0]], np.zeros(lv0.size),
-                          np.full(2 * n, 0.0 if taut else -_INF), -lim])
-    ubg = np.concatenate([np.zeros(n), target, [ea[1]], np.zeros(lv0.size), np.full(2 * n, _INF), lim])
-    weights = {"nominal": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
-    p = np.concatenate([m.a, m.b, m.k1, m.k2, load, L0nom, weights])
-    res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
-    phi = res.x[:n]
-    q = np.diff(np.concatenate([[0.0], phi]))
-    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
-    L10 = np.clip(res.x[n:2 * n], lo2[:n], hi2[:n])
-    L20 = np.clip(res.x[2 * n:3 * n], lo2[n:], hi2[n:])
-    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[3 * n])}
-    if not res.success:
-        raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
-                                    best=best)
-    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
-    # the forward solve from the optimiser's q: Newton (IPOPT's own descent from an exact minimum near a joint
-    # bound can be pushed into another well by its barrier), IPOPT's descent where Newton does not settle
-    eq = settle_under_force(m_new, load, q)
-    try:
-        eq = eq if eq is not None else solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
-    except TimeLimitError:
-        raise
-    except TensegrityError as exc:
-        raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
-                                    f"({exc})", status=res.status, best=best) from exc
-    if not eq.stable or np.max(np.abs(eq.tip - target)) > 1e-6 * float(m.b.max()):     # in the chain's units
-        raise InfeasibleDesignError(
-            f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
-            f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
-    _, _, Hphi, _, _ = chain_solver(m_new).evaluate(eq.q, load)
-    achieved = float(np.linalg.eigvalsh(T.T @ Hphi @ T)[0])
-    return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q, margin=achieved,
-                         tip=eq.tip, energy=eq.energy, status=res.status, success=res.success,
-                         iterations=res.iterations, equilibrium=eq)
-
-
-def rest_length_bounds(m: Manipulator, bounds) -> tuple[Any, Any]:
-    """``(lo, hi)`` of :func:`choose_preloads`'s ``bounds`` (each a number or ``2 n`` values: ``L1_0`` of every
-    segment, then every ``L2_0``; default ``(0.1 b_min, 4 b_max)``), checked (``field="bounds"``)."""
-    n = m.n
-    try:
-        lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
-        lo = np.broadcast_to(np.asarray(lo, dtype=float), (2 * n)).copy() if np.ndim(lo) else float(lo)
-        hi = np.broadcast_to(np.asarray(hi, dtype=float), (2 * n)).copy() if np.ndim(hi) else float(hi)
-    except (TypeError, ValueError):
-        raise InvalidParameterError("bounds: lo and hi are numbers or 2n values (L1_0 of every segment, then "
-                                    "L2_0)", field="bounds") from None
-    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(0 < np.asarray(lo))
-            and np.all(np.asarray(lo) < np.asarray(hi))):
-        raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
-    return lo, hi
-
-
-def _reach_guess(m: Manipulator, target: np.ndarray) -> np.ndarray:
-    """A configuration bending every joint equally toward the target (a start, not a solution)."""
-    ang = math.atan2(target[1], target[0] - m.base_length)
-    return np.concatenate([[ang], np.zeros(m.n - 1)]) * 0.5
-
-
-# --------------------------------------------------------------------------- 4. sensitivities
-def critical_load_sensitivity(m: Manipulator, boundary: str = "guided", mode: int = 0) -> dict[str, np.ndarray]:
-    """``d(load)/d(parameter)`` of a critical load, per segment, for ``a``, ``b``, ``k``, ``L0``.
-
-    Symmetric segments; ``k`` and ``L0`` change both springs together. From the bordered
-    eigenproblem ``A(P) w = 0``, ``A = [[K - P G, S0], [S0^T, 0]]`` (guided) or
-    ``A = K - P G`` (free): ``dP/dp = w^T (dA/dp) w / (q^T G q)``.
-
-    Returns
-    -------
-    dict
-        ``{"a", "b", "k", "L0"}`` -> ndarray (n,), and ``"load"`` the load itself.
-
-    Raises
-    ------
-    InvalidParameterError
-        When the load is repeated (not differentiable there; use the design NLP instead).
-    """
-    bk = critical_force(m, boundary)
-    if mode < 0 or mode >= bk.loads.size:
-        raise InvalidParameterError(f"mode must be in 0..{bk.loads.size - 1}", field="mode")
-    P = bk.loads[mode]
-    gaps = np.abs(np.delete(bk.loads, mode) - P)
-    if gaps.size and gaps.min() < 1e-6 * P:
-        raise InvalidParameterError("the critical load is repeated: it has no derivative there", field="mode")
-    K, G, S0 = straight_matrices(m)
-    qv = bk.modes[mode].q
-    guided = boundary == "guided"
-    f = -float(S0 @ ((K - 0) * qv - P * (G @ qv))) / float(S0 @ S0) if guided else 0.0
-    denom = float(qv @ G @ qv)
-    n = m.n
-    a, b, k, L0 = m.a, m.b, m.k1, m.L1_0
-    T = np.tril(np.ones((n, n)))
-    dK = {"a": 4 * k * a, "b": k * (L0 - 4 * b), "k": b * L0 - 2 * (b * b - a * a), "L0": k * b}
-    out = {name: dK[name] * qv ** 2 / denom for name in ("a", "k", "L0")}
-    db = np.zeros(n)
-    Tq = T @ qv
-    for i in range(n):
-        dl = np.zeros(n)
-        dl[i] = 1.0
-        if i > 0:
-            dl[i - 1] = 1.0
-        dG_qq = float(dl @ Tq ** 2)                 # q^T T^T diag(dl) T q
-        dS0_q = float(dl @ Tq)                      # (T^T dl)^T q
-        db[i] = (dK["b"][i] * qv[i] ** 2 - P * dG_qq + (2 * f * dS0_q if guided else 0.0)) / denom
-    out["b"] = db
-    out["load"] = np.array(P)
-    return out
-
-
-def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.ndarray]:
-    """``d(q, F)/d(parameters)`` at a displacement-controlled equilibrium (tip held fixed).
-
-    Implicit differentiation of the KKT system with respect to the per-segment parameters
-    ``a, b, k1, k2, L1_0, L2_0``.
-
-    Returns
-    -------
-    dict
-        ``"dq"``: ndarray (n, 6n) and ``"dF"``: ndarray (2, 6n), columns ordered as
-        ``names`` (``"a[0]", ..., "L2_0[n-1]"``); and per-parameter blocks
-        ``"dq/<name>"`` (n, n) and ``"dF/<name>"`` (2, n).
-    """
-    n = m.n
-    Jz, Jp = chain_solver(m).kkt_parameter_jacobian(np.asarray(eq.q, float), np.asarray(eq.force, float),
-                                                    np.asarray(eq.tip, float))
-    try:
-        dz = -np.linalg.solve(Jz, Jp)
-    except np.linalg.LinAlgError:
-        raise InvalidParameterError("the KKT system is singular at this equilibrium", field="eq") from None
-    D = np.eye(n) - np.eye(n, k=-1)
-    dq = D @ dz[:n]
-    dF = dz[n:n + 2]
-    names = [f"{p}[{i}]" for p in ("a", "b", "k1", "k2", "L1_0", "L2_0") for i in range(n)]
-    out: dict[str, np.ndarray] = {"dq": dq, "dF": dF, "names": np.array(names)}
-    for j, p in enumerate(("a", "b", "k1", "k2", "L1_0", "L2_0")):
-        out[f"dq/{p}"] = dq[:, j * n:(j + 1) * n]
-        out[f"dF/{p}"] = dF[:, j * n:(j + 1) * n]
-    return out
