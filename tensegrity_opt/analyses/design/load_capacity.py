@@ -9,20 +9,21 @@ Example (the straight paper chain under compression: its capacity is its free cr
 
     >>> import tensegrity_opt as to
     >>> cap = to.load_capacity(to.Manipulator.uniform(4), directions=[3.141592653589793], max_load=1.0)
-    >>> cap.kinds, round(float(cap.loads[0]), 6)
-    (['bifurcation'], 0.07612)
+    >>> cap.status, cap.kinds, round(float(cap.loads[0]), 6)
+    ('complete', ('bifurcation',), 0.07612)
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
+from ...outcome import Outcome, freeze
 from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, solve_equilibrium_under_force
@@ -32,7 +33,7 @@ __all__ = ["LoadCapacity", "load_capacity"]
 
 
 @dataclass(frozen=True)
-class LoadCapacity:
+class LoadCapacity(Outcome):
     """Result of :func:`load_capacity`: per direction ``d_i`` (``K`` of them), the largest additional dead tip
     load ``t_i`` along ``d_i`` the pose carries before its equilibrium loses stability.
 
@@ -48,9 +49,9 @@ class LoadCapacity:
     forces : ndarray (K, 2)
         The total tip force at the limit, ``base + t_i d_i`` (guided: ``Fy`` the guide's reaction); NaN rows for
         ``"none"``.
-    kinds : list of str
+    kinds : tuple of str
         ``"fold"`` (snap-through), ``"bifurcation"`` (a branch point: buckling) or ``"none"``.
-    reasons : list of str or None
+    reasons : tuple of (str or None)
         For ``"none"``: ``"joint_limit"`` (a joint reaches its range bound on the stable path), ``"max_load"``
         (stable up to ``max_load``), or why the path could not be followed (``"time_limit"``, the branch's
         status, an error code); None otherwise.
@@ -67,17 +68,30 @@ class LoadCapacity:
         The pose (under ``base``).
     manipulator : Manipulator
         The chain (with the pose's rest lengths).
-    results : list of LimitLoad
+    results : tuple of LimitLoad
         The per-direction results of :func:`~tensegrity_opt.analyses.paths.limit_load.limit_load` (None where it
         failed).
+    status : str
+        :attr:`STATUSES`, from ``reasons``: ``"complete"``, ``"time_limit"`` or ``"path_failed"``.
+    message : str
+        The same in a sentence: how many directions end in a fold, a bifurcation, or no limit.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every direction was followed to its first loss of stability, a joint's range bound or "
+                    "max_load",
+        "time_limit": "the time limit ran out before every direction was followed (reasons: time_limit)",
+        "path_failed": "the path of some direction could not be followed (reasons: the branch's status or the "
+                       "error's code)",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
 
     angles: np.ndarray
     directions: np.ndarray
     loads: np.ndarray
     forces: np.ndarray
-    kinds: list
-    reasons: list
+    kinds: tuple[str, ...]
+    reasons: tuple[str | None, ...]
     end_loads: np.ndarray
     q: np.ndarray
     base: np.ndarray
@@ -85,12 +99,34 @@ class LoadCapacity:
     max_load: float
     start: Equilibrium
     manipulator: Manipulator
-    results: list = field(repr=False, default_factory=list)
+    results: tuple = field(repr=False, default=())
+
+    def __post_init__(self) -> None:
+        freeze(self)
 
     @property
-    def success(self) -> bool:
-        """Every direction followed to a limit, the joint range or ``max_load``."""
-        return all(k != "none" or r in ("joint_limit", "max_load") for k, r in zip(self.kinds, self.reasons))
+    def unfinished(self) -> list[str]:
+        """The reasons of the directions not followed to a limit, a joint's range bound or ``max_load``."""
+        return [str(r) for k, r in zip(self.kinds, self.reasons) if k == "none" and r not in ("joint_limit", "max_load")]
+
+    @property
+    def status(self) -> str:
+        """``"complete"``, ``"time_limit"`` or ``"path_failed"`` (:attr:`STATUSES`)."""
+        failed = self.unfinished
+        if not failed:
+            return "complete"
+        return "time_limit" if "time_limit" in failed else "path_failed"
+
+    @property
+    def message(self) -> str:
+        """A sentence: what the directions end in."""
+        count = {k: sum(1 for x in self.kinds if x == k) for k in ("fold", "bifurcation", "none")}
+        text = (f"{len(self.kinds)} directions: {count['fold']} fold(s), {count['bifurcation']} bifurcation(s), "
+                f"{count['none']} without a limit")
+        failed = self.unfinished
+        if failed:
+            text += f"; {len(failed)} not followed to the end ({', '.join(sorted(set(failed)))})"
+        return text
 
     @property
     def weakest(self) -> tuple[float, float] | None:
@@ -102,17 +138,16 @@ class LoadCapacity:
         return float(self.angles[i]), float(self.loads[i])
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``angles``, ``directions``, ``loads`` and ``forces`` (null where ``kind`` is none),
-        ``kinds``, ``reasons``, ``end_loads``, ``base``, ``boundary``, ``max_load``, ``weakest``
-        (``{angle, load}`` or null), ``start``, ``manipulator``, ``success``."""
+        """JSON form: ``success``, ``status``, ``message``, ``angles``, ``directions``, ``loads`` and ``forces``
+        (null where ``kind`` is none), ``kinds``, ``reasons``, ``end_loads``, ``base``, ``boundary``, ``max_load``,
+        ``weakest`` (``{angle, load}`` or null), ``start``, ``manipulator``."""
         wk = self.weakest
-        return {"angles": numbers(self.angles), "directions": numbers(self.directions),
+        return {**self.outcome(), "angles": numbers(self.angles), "directions": numbers(self.directions),
                 "loads": nullables(self.loads), "forces": nullables(self.forces), "kinds": list(self.kinds),
                 "reasons": list(self.reasons), "end_loads": numbers(self.end_loads), "base": numbers(self.base),
                 "boundary": self.boundary, "max_load": number(self.max_load),
                 "weakest": None if wk is None else {"angle": wk[0], "load": wk[1]},
-                "start": self.start.to_dict(), "manipulator": self.manipulator.to_dict(),
-                "success": self.success}
+                "start": self.start.to_dict(), "manipulator": self.manipulator.to_dict()}
 
 
 def _directions(directions, boundary: str) -> np.ndarray:
@@ -198,7 +233,7 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
     pose : optional
         The stable pose: None (the least-energy rest configuration of ``m``; with a non-zero ``base`` the
         equilibrium under it), an :class:`Equilibrium` (its ``q``; ``base`` defaults to its force), a design result
-        with ``manipulator`` and ``equilibrium`` (:class:`StiffnessDesign`,
+        with ``manipulator`` and ``equilibrium`` (:class:`~tensegrity_opt.analyses.design.stiffness_shaping.StiffnessDesign`,
         :class:`~tensegrity_opt.analyses.design.preloads.PreloadDesign`: that chain, that pose, its load), ``n`` joint angles
         (put on the equilibrium under ``base`` by Newton), or ``(n, 2)`` rest lengths (``m`` with them, at its
         least-energy rest configuration or the equilibrium under ``base``).

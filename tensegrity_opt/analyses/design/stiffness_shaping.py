@@ -5,7 +5,7 @@ tip at a target under a dead tip load **and** a prescribed Cartesian tangent sti
 2 x 2 matrix (least squares on its entries; exact, with the least change of the preloads, when it is
 reachable), bounds on its entries, or bounds on its eigenvalues. An IPOPT NLP
 (:class:`~tensegrity_opt.numerics.design_nlp.StiffnessNLP`) started from
-:func:`~tensegrity_opt.analyses.design.preloads.choose_preloads`' pose; the result is verified by the forward
+:func:`~tensegrity_opt.analyses.design.preloads.preloads_for_pose`' pose; the result is verified by the forward
 equilibrium (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` with the found
 rest lengths, from the found ``q``) and :func:`~tensegrity_opt.analyses.equilibria.stiffness.cartesian_stiffness`
 there.
@@ -31,18 +31,20 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError
+from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
+from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
-from ..equilibria.equilibrium import Equilibrium, check_q0, solve_equilibrium_under_force
+from ..equilibria.equilibrium import Equilibrium
 from ..equilibria.stiffness import cartesian_stiffness
-from .preloads import PreloadDesign, choose_preloads, rest_length_bounds
+from .preloads import (PreloadDesign, checked_start, forward_check, preloads_for_pose, rest_length_bounds,
+                       stability_margin)
 
 __all__ = ["StiffnessDesign", "preloads_for_stiffness", "STIFFNESS_KEYS", "EXACT_TOL", "K_TOL"]
 
@@ -64,7 +66,7 @@ _ENTRY = {"kxx": 0, "kxy": 1, "kyx": 1, "kyy": 2}
 
 
 @dataclass(frozen=True)
-class StiffnessDesign:
+class StiffnessDesign(Outcome):
     """Result of :func:`preloads_for_stiffness`.
 
     Attributes
@@ -89,8 +91,8 @@ class StiffnessDesign:
     exact : bool
         ``K_desired``: ``residual <= EXACT_TOL`` (then the preloads are the least change from the nominal ones
         holding ``K = K_desired``; otherwise the least-squares fit). Bounds: they hold (always, when returned).
-    status, success, iterations
-        IPOPT's (of the final solve).
+    solver : SolverInfo
+        IPOPT's return status and iterations (of the final solve).
     load : ndarray (2,)
         The dead tip load.
     K_desired : ndarray (2, 2) or None
@@ -99,7 +101,22 @@ class StiffnessDesign:
     eig_bounds : tuple or None
     equilibrium : Equilibrium
         The verified forward equilibrium.
+    status : str
+        :attr:`STATUSES`, from ``K_desired`` and ``exact``: ``"exact"``, ``"closest"`` (not a success: the wanted
+        stiffness is out of reach) or ``"within_bounds"``.
+    message : str
+        The same in a sentence, with the residual.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "exact": "K = K_desired holds at the verified pose (residual <= EXACT_TOL), with the least change of the "
+                 "preloads (within the bounds, where some are given)",
+        "closest": "K_desired is not reachable from any start: the least-squares fit with the smallest misfit "
+                   "(residual, relative), within the bounds where some are given",
+        "within_bounds": "the bounds on the entries and eigenvalues of K hold at the verified pose, with the least "
+                         "change of the preloads",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"exact", "within_bounds"})
 
     manipulator: Manipulator
     rest_lengths: np.ndarray
@@ -110,28 +127,47 @@ class StiffnessDesign:
     margin: float
     residual: float
     exact: bool
-    status: str
-    success: bool
-    iterations: int
+    solver: SolverInfo
     load: np.ndarray
     K_desired: np.ndarray | None
     bounds_K: dict
     eig_bounds: tuple | None
     equilibrium: Equilibrium = field(repr=False)
 
+    def __post_init__(self) -> None:
+        freeze(self)
+
+    @property
+    def status(self) -> str:
+        """``"exact"``, ``"closest"`` or ``"within_bounds"`` (:attr:`STATUSES`)."""
+        if self.K_desired is None:
+            return "within_bounds"
+        return "exact" if self.exact else "closest"
+
+    @property
+    def message(self) -> str:
+        """A sentence: what the stiffness reaches."""
+        if self.status == "exact":
+            return f"K = K_desired reached (relative misfit {self.residual:.3g})"
+        if self.status == "closest":
+            return (f"K_desired is not reachable: the closest stiffness found misses it by {self.residual:.6g} "
+                    "(relative, Frobenius norm)")
+        return (f"the stiffness bounds hold: eigenvalues {self.eigenvalues[0]:.6g}, {self.eigenvalues[1]:.6g} "
+                "(force / length)")
+
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``manipulator``, ``rest_lengths``, ``q``, ``tip``, ``K``, ``eigenvalues``, ``margin``,
-        ``residual``, ``exact``, ``load``, ``K_desired`` (or null), ``bounds_K`` (``[lo, hi]`` per entry, null
-        for an open side), ``eig_bounds`` (the same, or null), ``solver`` ``{status, success, iterations}``."""
-        return {"manipulator": self.manipulator.to_dict(), "rest_lengths": numbers(self.rest_lengths),
+        """JSON form: ``success``, ``status``, ``message``, ``manipulator``, ``rest_lengths``, ``q``, ``tip``,
+        ``K``, ``eigenvalues``, ``margin``, ``residual``, ``exact``, ``load``, ``K_desired`` (or null), ``bounds_K``
+        (``[lo, hi]`` per entry, null for an open side), ``eig_bounds`` (the same, or null), ``solver``
+        ``{status, iterations}``."""
+        return {**self.outcome(), "manipulator": self.manipulator.to_dict(), "rest_lengths": numbers(self.rest_lengths),
                 "q": numbers(self.q), "tip": numbers(self.tip), "K": numbers(self.K),
                 "eigenvalues": numbers(self.eigenvalues), "margin": number(self.margin),
                 "residual": number(self.residual), "exact": bool(self.exact), "load": numbers(self.load),
                 "K_desired": None if self.K_desired is None else numbers(self.K_desired),
                 "bounds_K": {k: nullables(v) for k, v in self.bounds_K.items()},
                 "eig_bounds": None if self.eig_bounds is None else nullables(self.eig_bounds),
-                "solver": {"status": self.status, "success": bool(self.success),
-                           "iterations": int(self.iterations)}}
+                "solver": self.solver.to_dict()}
 
 
 def _pair(v, name: str) -> tuple[float, float]:
@@ -217,8 +253,8 @@ def _violations(K: np.ndarray, kb: dict, eb, Ks: float) -> list[tuple[str, float
 
 def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: Mapping | None = None,
                            eig_bounds=None, load=(0.0, 0.0), end_angle: float | None = None, margin: float = 1e-3,
-                           bounds: tuple | None = None, q0=None, max_starts: int = 4,
-                           time_limit: float | None = None) -> StiffnessDesign:
+                           bounds: tuple | None = None, start=None, max_starts: int = 4,
+                           timeout: float | None = None) -> StiffnessDesign:
     """Rest lengths putting the tip at ``target``, stable under ``load``, with a shaped Cartesian stiffness.
 
     Parameters
@@ -228,19 +264,20 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     target : (float, float)
         Tip position ``(x, y)``.
     K_desired : 2 x 2 array_like, optional
-        The stiffness wanted (symmetric to ``1e-6`` relative, its symmetric part is used; force / length). First held exactly (``K = K_desired`` as constraints,
-        the least change of the preloads as objective); where that fails, the least-squares fit on its entries,
+        The stiffness wanted (symmetric to ``1e-6`` relative, its symmetric part is used; force / length). First
+        held exactly (``K = K_desired`` as constraints, the least change of the preloads as objective); where that fails, the least-squares fit on its entries,
         ``min |K - K_desired|_F^2 / |K_desired|_F^2`` (plus ``FIT_REG`` times the relative change of the
         preloads, to pick one of its minimisers), and, where the fit comes within ``EXACT_TRY``, the exact
         problem again from it. Reached: ``exact=True``, ``residual`` ~1e-9. Not reachable from any start: the
-        fit with the smallest misfit, ``exact=False``, ``residual`` its relative misfit (no error).
+        fit with the smallest misfit, ``exact=False``, ``status="closest"``, ``residual`` its relative misfit
+        (no error).
     bounds_K : dict, optional
         ``{"kxx": [lo, hi], "kxy": [lo, hi], "kyy": [lo, hi]}`` (``kyx`` = ``kxy``; ``None`` an open side):
         bounds on the entries of ``K``.
     eig_bounds : [lo, hi], optional
         Bounds on both eigenvalues of ``K`` (``None`` an open side; ``hi > 0``).
         With bounds only, the objective is the least change from the nominal preloads
-        (``|L0 - L0_nom|^2 / |L0_nom|^2``, as :func:`choose_preloads`). Bounds and ``K_desired`` combine
+        (``|L0 - L0_nom|^2 / |L0_nom|^2``, as :func:`preloads_for_pose`). Bounds and ``K_desired`` combine
         (the fit within the bounds). At least one of the three is needed.
     load : (float, float)
         The dead tip load ``(fx, fy)``.
@@ -250,16 +287,16 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
         Required smallest eigenvalue of the joint-space Hessian of ``E - F . tip`` (torque / rad; > 0 makes
         the pose stable with the tip free, and ``K`` positive definite).
     bounds : (lo, hi), optional
-        Bounds on every rest length, as :func:`choose_preloads` (default ``(0.1 b_min, 4 b_max)``).
-    q0 : array_like (n,), optional
-        The configuration to start from (:func:`choose_preloads`' ``q0``): the result is then sought in its
+        Bounds on every rest length, as :func:`preloads_for_pose` (default ``(0.1 b_min, 4 b_max)``).
+    start : array_like (n,), optional
+        The configuration to start from (:func:`preloads_for_pose`' ``start``): the result is then sought in its
         family of shapes only. Default: the equilibria of the nominal chain at the target
-        (:func:`~tensegrity_opt.analyses.equilibria.all_equilibria.find_equilibria`; stable ones first, by energy), each
-        a start in turn (different shapes reach different stiffnesses), until one meets the requirement
+        (:func:`~tensegrity_opt.analyses.equilibria.all_equilibria.find_equilibria`; stable ones first, by energy),
+        each a start in turn (different shapes reach different stiffnesses), until one meets the requirement
         (an exact ``K_desired``, or the bounds); an inexact fit keeps the smallest residual over the starts.
     max_starts : int
         At most this many of those starts (default 4).
-    time_limit : float, optional
+    timeout : float, optional
         Seconds this call may take (:func:`tensegrity_opt.time_limit`).
 
     Returns
@@ -276,7 +313,7 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     UnreachableTargetError
         (``ValueError``) the target is beyond the chain's reach (``field="target"``).
     InfeasibleDesignError
-        (``RuntimeError``) no stable pose at the target (from :func:`choose_preloads`), or no rest lengths
+        (``RuntimeError``) no stable pose at the target (from :func:`preloads_for_pose`), or no rest lengths
         meet the stiffness bounds: ``best`` holds the best point found — the least relaxation of the bounds
         that a stable pose reaches (elastic mode): ``q``, ``rest_lengths``, ``K``, ``violations`` (the bounds
         violated there, also named in the message) and ``least_violation`` (force / length); or the
@@ -287,8 +324,9 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     Kd, kb, eb = _check_stiffness_args(K_desired, bounds_K, eig_bounds)
     if isinstance(max_starts, bool) or not isinstance(max_starts, (int, np.integer)) or max_starts < 1:
         raise InvalidParameterError(f"max_starts must be an integer >= 1, got {max_starts!r}", field="max_starts")
-    with _time_limit(time_limit):
-        return _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, q0, int(max_starts))
+    with _time_limit(timeout):
+        return _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, start,
+                                       int(max_starts))
 
 
 class _Shaper:
@@ -429,11 +467,11 @@ class _Shaper:
         return r, False
 
 
-def _starts(m: Manipulator, target: np.ndarray, q0, max_starts: int) -> list[np.ndarray | None]:
-    """Configurations to start the pose from: ``q0``; else the equilibria of the nominal chain at the target
+def _starts(m: Manipulator, target: np.ndarray, start, max_starts: int) -> list[np.ndarray | None]:
+    """Configurations to start the pose from: ``start``; else the equilibria of the nominal chain at the target
     (:func:`find_equilibria`: stable ones first, by energy), at most ``max_starts``, or None (the default)."""
-    if q0 is not None:
-        return [q0]
+    if start is not None:
+        return [start]
     from ..equilibria.all_equilibria import find_equilibria
 
     try:
@@ -445,14 +483,14 @@ def _starts(m: Manipulator, target: np.ndarray, q0, max_starts: int) -> list[np.
     return out or [None]
 
 
-def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, q0,
+def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, start,
                             max_starts) -> StiffnessDesign:
     n = m.n
     if n < 2:
         raise InvalidParameterError("preloads_for_stiffness needs a chain of n >= 2 segments", field="n")
     if end_angle is not None and not math.isfinite(float(end_angle)):
         raise InvalidParameterError("end_angle must be finite", field="end_angle")
-    q0 = check_q0(m, q0)
+    start = checked_start(m, start)
     lo, hi = rest_length_bounds(m, bounds)
     tgt = np.asarray(target, dtype=float)
     if tgt.shape != (2,) or not np.all(np.isfinite(tgt)):
@@ -462,11 +500,11 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
     verify_error = None
     fits = []                                       # inexact least-squares fits: (misfit, result)
     elastic_best = None
-    for qs in _starts(m, tgt, q0, max_starts):
+    for qs in _starts(m, tgt, start, max_starts):
         # the pose: a stable equilibrium at the target from this start (validates target, load, margin, bounds)
         try:
-            pose = choose_preloads(m, target, load, "nominal", margin=margin, bounds=bounds, end_angle=end_angle,
-                                   q0=qs)
+            pose = preloads_for_pose(m, target, load=load, objective="change", margin=margin, bounds=bounds,
+                                     end_angle=end_angle, start=qs)
         except InfeasibleDesignError as exc:
             pose_error = pose_error or exc
             continue
@@ -511,24 +549,14 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
 def _verified(sh: _Shaper, res) -> StiffnessDesign:
     """The forward check of an NLP solution, and the result built from the recomputed numbers."""
     m, n, lo2, hi2, load, target = sh.m, sh.n, sh.lo2, sh.hi2, sh.load, sh.target
-    kb, eb, Kd, Ks, T = sh.kb, sh.eb, sh.Kd, sh.Ks, sh.T
+    kb, eb, Kd, Ks = sh.kb, sh.eb, sh.Kd, sh.Ks
     best = sh.best(res.x)
     x = res.x
     L10 = np.clip(x[n:2 * n], lo2[:n], hi2[:n])
     L20 = np.clip(x[2 * n:3 * n], lo2[n:], hi2[n:])
     q = np.diff(np.concatenate([[0.0], x[:n]]))
     m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
-    try:
-        eq = solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
-    except TimeLimitError:
-        raise
-    except TensegrityError as exc:
-        raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
-                                    f"({exc})", status=res.status, best=best) from exc
-    if not eq.stable or np.max(np.abs(eq.tip - target)) > 1e-6 * float(m.b.max()):
-        raise InfeasibleDesignError(
-            f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
-            f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
+    eq = forward_check(m_new, load, q, target, settle=False, status=res.status, best=best)
     try:
         K = cartesian_stiffness(m_new, eq)
     except InvalidParameterError as exc:
@@ -538,8 +566,7 @@ def _verified(sh: _Shaper, res) -> StiffnessDesign:
     if viol:
         raise InfeasibleDesignError("verification failed: at the forward equilibrium " +
                                     "; ".join(v for v, _ in viol), status=res.status, best=best)
-    _, _, Hphi, _, _ = chain_solver(m_new).evaluate(eq.q, load)
-    achieved = float(np.linalg.eigvalsh(T.T @ Hphi @ T)[0])
+    achieved = stability_margin(m_new, eq.q, load)
     if Kd is not None:
         residual = float(np.linalg.norm(K - Kd) / np.linalg.norm(Kd))
         exact = residual <= EXACT_TOL
@@ -548,8 +575,7 @@ def _verified(sh: _Shaper, res) -> StiffnessDesign:
         exact = True
     return StiffnessDesign(manipulator=m_new, rest_lengths=np.column_stack([L10, L20]), q=eq.q, tip=eq.tip, K=K,
                            eigenvalues=np.linalg.eigvalsh(K), margin=achieved, residual=residual, exact=exact,
-                           status=res.status, success=res.success, iterations=res.iterations,
-                           load=load.copy(), K_desired=None if Kd is None else Kd.copy(),
+                           solver=SolverInfo(res.status, res.iterations), load=load.copy(), K_desired=None if Kd is None else Kd.copy(),
                            bounds_K={k: (float(a), float(b)) for k, (a, b) in kb.items()
                                      if math.isfinite(a) or math.isfinite(b)},
                            eig_bounds=None if eb is None else (float(eb[0]), float(eb[1])), equilibrium=eq)

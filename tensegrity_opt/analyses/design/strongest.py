@@ -14,7 +14,7 @@ from __future__ import annotations
 import math
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 import scipy.linalg as sla
@@ -22,6 +22,7 @@ import scipy.linalg as sla
 from ...errors import InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
+from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.buckling import critical_force, straight_matrices
@@ -39,8 +40,9 @@ _INF = float("inf")
 
 
 @dataclass(frozen=True)
-class Design:
-    """Result of :func:`maximize_critical_force` / :func:`preloads_for_critical_force`.
+class Design(Outcome):
+    """Result of :func:`maximize_critical_force` and
+    :func:`~tensegrity_opt.analyses.design.preloads.preloads_for_critical_force`.
 
     Attributes
     ----------
@@ -52,10 +54,12 @@ class Design:
         All its critical loads (ascending), recomputed.
     multiplicity : int
         How many critical loads coincide with the smallest (relative gap < 1e-4).
-    active : list of str
+    active : tuple of str
         Active constraints at the optimum (bounds, budgets, tension, stiffness rows).
-    status : str
-        IPOPT's return status; ``success`` its success flag; ``iterations``.
+    solver : SolverInfo
+        IPOPT's return status and iterations.
+    boundary : str
+        ``"guided"`` or ``"free"``.
     initial_critical_force : float
         The starting design's critical force (NaN when undefined there).
     feasible : bool
@@ -66,34 +70,63 @@ class Design:
         no ``K_min`` was given). Every returned segment has ``K_i > 0`` and ``K_i >= K_min``
         (exactly: a segment the optimiser stopped a roundoff below is lifted onto it by a varied
         ``L0``, ``k``, ``a`` or ``b``; otherwise to the solver's tolerance).
+    status : str
+        One of :attr:`STATUSES`: ``"optimal"`` for every design returned by :func:`maximize_critical_force`;
+        ``"below_required"`` for the strongest design returned when no rest lengths reach the required load;
+        ``"infeasible"`` only for the last point of a failed solve (``InfeasibleDesignError.best``).
+    message : str
+        The same in a sentence, with the critical load.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "optimal": "IPOPT converged to a design meeting every constraint (and the required load, where one is "
+                   "asked); its critical load is recomputed by critical_force",
+        "below_required": "the strongest design within the bounds, whose critical load stays below the required one",
+        "infeasible": "IPOPT found no feasible design: its last point, lifted onto the joint-stiffness floor",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"optimal"})
 
     manipulator: Manipulator
     critical_force: float
     loads: np.ndarray
     multiplicity: int
-    active: list[str]
-    status: str
-    success: bool
-    iterations: int
+    active: tuple[str, ...]
+    solver: SolverInfo
     boundary: str
     initial_critical_force: float
     feasible: bool = True
     K_min: float = math.nan
+    status: str = "optimal"
+
+    def __post_init__(self) -> None:
+        freeze(self)
 
     @property
     def load(self) -> float:
         """The critical compressive load ``-critical_force``."""
         return -self.critical_force
 
+    @property
+    def message(self) -> str:
+        """A sentence: what the design reaches and how IPOPT ended."""
+        ipopt = f"IPOPT {self.solver.status}, {self.solver.iterations} iterations"
+        if self.status == "optimal":
+            return f"optimal design: critical load {self.load:.6g}, recomputed by critical_force ({ipopt})"
+        if self.status == "below_required":
+            return (f"no design within the bounds reaches the required load: the strongest has a critical load of "
+                    f"{self.load:.6g} ({ipopt})")
+        return f"no feasible design found: the last point has a critical load of {self.load:.6g} ({ipopt})"
+
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/design/critical-force`` and ``/v1/design/preloads-for-load``):
-        ``manipulator`` (:meth:`Manipulator.to_dict`), ``critical_force``, ``loads``, ``multiplicity``,
-        ``active``, ``initial_critical_force`` (``null`` when undefined), ``feasible``, ``solver``."""
-        return {"manipulator": self.manipulator.to_dict(), "critical_force": number(self.critical_force),
-                "loads": numbers(self.loads), "multiplicity": int(self.multiplicity), "active": list(self.active),
+        ``success``, ``status``, ``message``, ``manipulator`` (:meth:`Manipulator.to_dict`), ``critical_force``,
+        ``loads``, ``multiplicity``, ``active``, ``initial_critical_force`` (``null`` when undefined), ``feasible``,
+        ``solver`` ``{status, iterations}``."""
+        return {**self.outcome(), "manipulator": self.manipulator.to_dict(),
+                "critical_force": number(self.critical_force), "loads": numbers(self.loads),
+                "multiplicity": int(self.multiplicity), "active": list(self.active),
                 "initial_critical_force": nullable(self.initial_critical_force), "feasible": bool(self.feasible),
-                "solver": {"status": self.status, "iterations": int(self.iterations)}}
+                "solver": self.solver.to_dict()}
 
 
 # --------------------------------------------------------------------------- helpers
@@ -130,11 +163,11 @@ def _safe_critical(m: Manipulator, boundary: str) -> float:
         return float("nan")
 
 
-# --------------------------------------------------------------------------- 1. strongest chain
+# --------------------------------------------------------------------------- the strongest chain
 def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
                             bounds: Mapping[str, tuple] | None = None,
                             budget: Mapping[str, float] | None = None, boundary: str = "guided", *,
-                            time_limit: float | None = None, **constraints) -> Design:
+                            timeout: float | None = None, **constraints) -> Design:
     """Maximise the critical load of the straight chain over per-segment design variables.
 
     Parameters
@@ -158,14 +191,14 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
         initial chain's stiffness scale); without ``K_min`` the floor alone. An optimum at
         ``K_i -> 0+`` (stiffness and preload moved off a segment) is returned with ``K_i`` on the
         floor; the bound used is recorded in ``Design.K_min`` and listed in ``active`` when it holds.
-    time_limit : float, optional
+    timeout : float, optional
         Seconds this call may take (see :func:`tensegrity_opt.time_limit`, which bounds any block of
         calls): checked before and, once per IPOPT iteration, during each solve.
 
     Returns
     -------
     Design
-        Verified: ``critical_force`` is recomputed by :func:`critical_force` on the returned
+        ``status="optimal"``. Verified: ``critical_force`` is recomputed by :func:`critical_force` on the returned
         chain. A segment the optimiser left below ``K_min`` by roundoff is lifted onto it
         (the smallest change of one varied variable) before that check.
 
@@ -175,12 +208,12 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
         Unknown variable/constraint, bad bounds.
     InfeasibleDesignError
         (``RuntimeError``) IPOPT found no feasible design; ``best`` holds its last point
-        (a :class:`Design`, lifted onto ``K_i >= K_min``) when that is a valid chain.
+        (a :class:`Design` with ``status="infeasible"``, lifted onto ``K_i >= K_min``) when that is a valid chain.
     TimeLimitError
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
-    with _time_limit(time_limit):
+    with _time_limit(timeout):
         return buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
 
 
@@ -197,7 +230,14 @@ def _tension_bounds(tension) -> tuple[float, float]:
     return tmin, tmax
 
 
-def buckling_design(m, vary, bounds, budget, boundary, constraints, required) -> Design:
+def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None, budget: Mapping | None,
+                    boundary: str, constraints: Mapping[str, Any], required: float | None) -> Design:
+    """The buckling design problem behind :func:`maximize_critical_force` (``required=None``: maximise the
+    critical load) and :func:`~tensegrity_opt.analyses.design.preloads.preloads_for_critical_force`
+    (``required``: the least change of the varied rest lengths with a critical load of at least ``required``).
+    Arguments as :func:`maximize_critical_force` (``constraints`` its keyword constraints); raises as it does,
+    and :class:`InfeasibleDesignError` (``best`` the design, ``status="below_required"``) when the verified load
+    stays below ``required``. Runs under the caller's time limit."""
     from ...numerics import buckling_design_nlp
 
     if boundary not in ("guided", "free"):
@@ -301,13 +341,15 @@ def buckling_design(m, vary, bounds, budget, boundary, constraints, required) ->
         raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
     rows = nlp.rows(xv)
     viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
+    solved = res.success and viol <= 1e-6
+    feasible = required is None or bk.loads[0] >= required * (1 - 1e-6)
     design = Design(manipulator=m_opt, critical_force=bk.force, loads=bk.loads,
                     multiplicity=_multiplicity(bk.loads),
                     active=_active(cols, lo, hi, vary, budget, rows, nlp.n_psd, n, tl, tmin, tmax, kmin),
-                    status=res.status, success=res.success, iterations=res.iterations, boundary=boundary,
-                    initial_critical_force=_safe_critical(m, boundary),
-                    feasible=required is None or bk.loads[0] >= required * (1 - 1e-6), K_min=kmin)
-    if not res.success or viol > 1e-6:
+                    solver=SolverInfo(res.status, res.iterations), boundary=boundary,
+                    initial_critical_force=_safe_critical(m, boundary), feasible=feasible, K_min=kmin,
+                    status="infeasible" if not solved else "optimal" if feasible else "below_required")
+    if not solved:
         raise InfeasibleDesignError(
             f"IPOPT did not find a feasible design ({res.status}); constraint violation {viol:.3g}",
             status=res.status, best=design)
