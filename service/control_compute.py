@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design import PreloadPlan, preloads_for_trajectory
+from tensegrity_opt.analyses.design.preload_control import PreloadPlan, preloads_for_trajectory
 
 from .compute import _best_as_json, _seconds_left, build_manipulator
 

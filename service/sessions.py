@@ -32,7 +32,8 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design import PreloadController, PreloadFollower
+from tensegrity_opt.analyses.design.follower import PreloadFollower
+from tensegrity_opt.analyses.design.preload_control import PreloadController
 from tensegrity_opt.analyses.paths.continuation import Tracker
 from tensegrity_opt.serialize import number, numbers
 

@@ -19,28 +19,14 @@ from .analyses.paths.boundaries import StabilityBoundary, stability_boundary
 from .analyses.equilibria.buckling import Buckling, Mode, critical_force
 from .analyses.paths.continuation import Tracker, solve_equilibria_batch
 from .analyses.paths.curves import Curve, CurveEnd, Jump, force_deflection
-from .analyses.design import (
-                     Design,
-                     FollowerStep,
-                     ForceEstimate,
-                     LoadCapacity,
-                     PreloadController,
-                     PreloadDesign,
-                     PreloadFollower,
-                     PreloadPlan,
-                     PreloadStep,
-                     Snap,
-                     StiffnessDesign,
-                     critical_load_sensitivity,
-                     equilibrium_sensitivity,
-                     estimate_tip_force,
-                     load_capacity,
-                     maximize_critical_force,
-                     preloads_for_critical_force,
-                     preloads_for_pose,
-                     preloads_for_stiffness,
-                     preloads_for_trajectory,
-)
+from .analyses.design.follower import FollowerStep, PreloadFollower, Snap
+from .analyses.design.force_sensor import ForceEstimate, estimate_tip_force
+from .analyses.design.load_capacity import LoadCapacity, load_capacity
+from .analyses.design.preload_control import PreloadController, PreloadPlan, PreloadStep, preloads_for_trajectory
+from .analyses.design.preloads import PreloadDesign, preloads_for_critical_force, preloads_for_pose
+from .analyses.design.sensitivity import critical_load_sensitivity, equilibrium_sensitivity
+from .analyses.design.stiffness_shaping import StiffnessDesign, preloads_for_stiffness
+from .analyses.design.strongest import Design, maximize_critical_force
 from .analyses.equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
 from .analyses.equilibria.landscape import Landscape, energy_landscape
 from .analyses.equilibria.least_energy import solve_equilibrium

@@ -19,7 +19,7 @@ from typing import Annotated, Any, Literal, Union
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design import OBJECTIVES
+from tensegrity_opt.analyses.design.preloads import OBJECTIVES
 from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
 from tensegrity_opt.analyses.paths.simulation import STATUSES as SIMULATION_STATUSES
 

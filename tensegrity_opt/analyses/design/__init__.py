@@ -14,18 +14,3 @@ One module per concept:
 * :mod:`.follower` - :class:`PreloadFollower` (:class:`FollowerStep`, :class:`Snap`);
 * :mod:`.force_sensor` - :func:`estimate_tip_force`, :class:`ForceEstimate`.
 """
-
-from .follower import FollowerStep, PreloadFollower, Snap
-from .force_sensor import ForceEstimate, estimate_tip_force
-from .load_capacity import LoadCapacity, load_capacity
-from .preload_control import PreloadController, PreloadPlan, PreloadStep, preloads_for_trajectory
-from .preloads import OBJECTIVES, PreloadDesign, preloads_for_critical_force, preloads_for_pose, rest_length_bounds
-from .sensitivity import critical_load_sensitivity, equilibrium_sensitivity
-from .stiffness_shaping import StiffnessDesign, preloads_for_stiffness
-from .strongest import Design, maximize_critical_force
-
-__all__ = ["Design", "maximize_critical_force", "PreloadDesign", "preloads_for_pose", "preloads_for_critical_force",
-           "rest_length_bounds", "OBJECTIVES", "critical_load_sensitivity", "equilibrium_sensitivity",
-           "StiffnessDesign", "preloads_for_stiffness", "LoadCapacity", "load_capacity", "PreloadController",
-           "PreloadStep", "PreloadPlan", "preloads_for_trajectory", "PreloadFollower", "FollowerStep", "Snap",
-           "ForceEstimate", "estimate_tip_force"]
