@@ -493,7 +493,8 @@ ERRORS: dict[int, dict[str, dict[str, Any]]] = {
             "code": "too_many_segments", "message": "the chain has 150 segments; this server accepts at most 100",
             "field": "manipulator.n", "details": {"n": 150, "max_segments": 100}}},
         "too_many_points": {"summary": "max_points over this server's TENSEGRITY_MAX_PATH_POINTS", "value": {
-            "code": "too_many_points", "message": "max_points = 5000; this server follows at most 2000 points per branch",
+            "code": "too_many_points",
+            "message": "max_points = 5000; this server follows at most 2000 points per branch",
             "field": "max_points", "details": {"max_points": 5000, "max_path_points": 2000}}},
         "too_many_steps": {"summary": "a trajectory longer than this server's TENSEGRITY_MAX_TRAJECTORY_STEPS",
                            "value": {"code": "too_many_steps",

@@ -480,7 +480,8 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
             if near.size:
                 raise NoEquilibriumError(
                     f"no configuration inside the physical range explains these angles: the unmeasured angle "
-                    f"q[{int(near[0])}] runs into its joint limit (|r| = {np.linalg.norm(r):.3g})", status="joint_limit")
+                    f"q[{int(near[0])}] runs into its joint limit (|r| = {np.linalg.norm(r):.3g})",
+                    status="joint_limit")
             raise SolverError(f"Gauss-Newton for the {u} unmeasured angle(s) did not converge in {MAX_ITER} "
                               f"iterations (|r| = {np.linalg.norm(r):.3g}: these angles are far from any "
                               "equilibrium under a tip force)", status="max_iterations")

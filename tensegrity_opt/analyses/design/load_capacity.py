@@ -107,7 +107,8 @@ class LoadCapacity(Outcome):
     @property
     def unfinished(self) -> list[str]:
         """The reasons of the directions not followed to a limit, a joint's range bound or ``max_load``."""
-        return [str(r) for k, r in zip(self.kinds, self.reasons) if k == "none" and r not in ("joint_limit", "max_load")]
+        return [str(r) for k, r in zip(self.kinds, self.reasons)
+                if k == "none" and r not in ("joint_limit", "max_load")]
 
     @property
     def status(self) -> str:
@@ -233,10 +234,11 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
     pose : optional
         The stable pose: None (the least-energy rest configuration of ``m``; with a non-zero ``base`` the
         equilibrium under it), an :class:`Equilibrium` (its ``q``; ``base`` defaults to its force), a design result
-        with ``manipulator`` and ``equilibrium`` (:class:`~tensegrity_opt.analyses.design.stiffness_shaping.StiffnessDesign`,
-        :class:`~tensegrity_opt.analyses.design.preloads.PreloadDesign`: that chain, that pose, its load), ``n`` joint angles
-        (put on the equilibrium under ``base`` by Newton), or ``(n, 2)`` rest lengths (``m`` with them, at its
-        least-energy rest configuration or the equilibrium under ``base``).
+        with ``manipulator`` and ``equilibrium``
+        (:class:`~tensegrity_opt.analyses.design.stiffness_shaping.StiffnessDesign`,
+        :class:`~tensegrity_opt.analyses.design.preloads.PreloadDesign`: that chain, that pose, its load), ``n``
+        joint angles (put on the equilibrium under ``base`` by Newton), or ``(n, 2)`` rest lengths (``m`` with
+        them, at its least-energy rest configuration or the equilibrium under ``base``).
     base : (float, float), optional
         The dead tip load the pose is in equilibrium under (default: the pose's own load, else zero).
     directions : int or sequence

@@ -25,7 +25,8 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError, UnreachableTargetError
+from ...errors import (InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError,
+                       UnreachableTargetError)
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...outcome import Outcome, SolverInfo, freeze
@@ -183,8 +184,9 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
     Returns
     -------
     PreloadDesign
-        ``status="optimal"``. Verified (:func:`forward_check`): the force-controlled equilibrium with these preloads, started from the
-        optimiser's ``q``, lands on the target within ``1e-6 max(b)`` with Morse index 0.
+        ``status="optimal"``. Verified (:func:`forward_check`): the force-controlled equilibrium with these
+        preloads, started from the optimiser's ``q``, lands on the target within ``1e-6 max(b)`` with Morse
+        index 0.
 
     Raises
     ------

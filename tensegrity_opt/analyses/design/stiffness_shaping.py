@@ -265,12 +265,12 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
         Tip position ``(x, y)``.
     K_desired : 2 x 2 array_like, optional
         The stiffness wanted (symmetric to ``1e-6`` relative, its symmetric part is used; force / length). First
-        held exactly (``K = K_desired`` as constraints, the least change of the preloads as objective); where that fails, the least-squares fit on its entries,
-        ``min |K - K_desired|_F^2 / |K_desired|_F^2`` (plus ``FIT_REG`` times the relative change of the
-        preloads, to pick one of its minimisers), and, where the fit comes within ``EXACT_TRY``, the exact
-        problem again from it. Reached: ``exact=True``, ``residual`` ~1e-9. Not reachable from any start: the
-        fit with the smallest misfit, ``exact=False``, ``status="closest"``, ``residual`` its relative misfit
-        (no error).
+        held exactly (``K = K_desired`` as constraints, the least change of the preloads as objective); where
+        that fails, the least-squares fit on its entries, ``min |K - K_desired|_F^2 / |K_desired|_F^2`` (plus
+        ``FIT_REG`` times the relative change of the preloads, to pick one of its minimisers), and, where the
+        fit comes within ``EXACT_TRY``, the exact problem again from it. Reached: ``exact=True``, ``residual``
+        ~1e-9. Not reachable from any start: the fit with the smallest misfit, ``exact=False``,
+        ``status="closest"``, ``residual`` its relative misfit (no error).
     bounds_K : dict, optional
         ``{"kxx": [lo, hi], "kxy": [lo, hi], "kyy": [lo, hi]}`` (``kyx`` = ``kxy``; ``None`` an open side):
         bounds on the entries of ``K``.
@@ -575,7 +575,8 @@ def _verified(sh: _Shaper, res) -> StiffnessDesign:
         exact = True
     return StiffnessDesign(manipulator=m_new, rest_lengths=np.column_stack([L10, L20]), q=eq.q, tip=eq.tip, K=K,
                            eigenvalues=np.linalg.eigvalsh(K), margin=achieved, residual=residual, exact=exact,
-                           solver=SolverInfo(res.status, res.iterations), load=load.copy(), K_desired=None if Kd is None else Kd.copy(),
+                           solver=SolverInfo(res.status, res.iterations), load=load.copy(),
+                           K_desired=None if Kd is None else Kd.copy(),
                            bounds_K={k: (float(a), float(b)) for k, (a, b) in kb.items()
                                      if math.isfinite(a) or math.isfinite(b)},
                            eig_bounds=None if eb is None else (float(eb[0]), float(eb[1])), equilibrium=eq)
