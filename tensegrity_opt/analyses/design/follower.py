@@ -35,6 +35,7 @@ from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ..equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
+from .preloads import checked_vector
 
 __all__ = ["PreloadFollower", "FollowerStep", "Snap", "SNAP_DISTANCE", "loaded_rest"]
 
@@ -136,13 +137,6 @@ def loaded_rest(m: Manipulator, load) -> Equilibrium:
     return solve_equilibrium_under_force(m, *load, q0=rest.q)
 
 
-def _pair(v, name: str) -> np.ndarray:
-    a = np.asarray(v, dtype=float)
-    if a.shape != (2,) or not np.all(np.isfinite(a)):
-        raise InvalidParameterError(f"{name} must be two finite numbers (fx, fy), got {v!r}", field=name)
-    return a
-
-
 class PreloadFollower:
     """The arm under commanded rest lengths, step by step (module docstring).
 
@@ -170,7 +164,7 @@ class PreloadFollower:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
         self.m = m
-        self.load = _pair(load, "load")
+        self.load = checked_vector(load, 2, "load")
         if not snap_distance > 0:
             raise InvalidParameterError(f"snap_distance must be > 0, got {snap_distance!r}", field="snap_distance")
         self.snap_distance = float(snap_distance)
@@ -209,7 +203,7 @@ class PreloadFollower:
             No equilibrium reached inside the physical range; the state stays where it was.
         """
         m = self.manipulator(rest_lengths)
-        F = self.load if load is None else _pair(load, "load")
+        F = self.load if load is None else checked_vector(load, 2, "load")
         eq = solve_equilibrium_under_force(m, float(F[0]), float(F[1]), q0=self.q)
         distance = float(np.max(np.abs(eq.q - self.q)))
         snap = None

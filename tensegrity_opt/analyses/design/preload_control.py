@@ -47,7 +47,7 @@ from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 from .follower import loaded_rest
-from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose
+from .preloads import LAND_TOL, OBJECTIVES, checked_vector, preloads_for_pose
 
 __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "preloads_for_trajectory"]
 
@@ -131,16 +131,6 @@ class PreloadStep(Outcome):
                 "target": numbers(self.target)}
 
 
-def _vec(v, size: int, name: str) -> np.ndarray:
-    try:
-        a = np.asarray(v, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be {size} numbers, got {v!r}", field=name) from None
-    if a.size != size or not np.all(np.isfinite(a)):
-        raise InvalidParameterError(f"{name} must be {size} finite numbers, got {v!r}", field=name)
-    return a
-
-
 class PreloadController:
     """Rest lengths step by step, warm-started from the last step (module docstring).
 
@@ -179,7 +169,7 @@ class PreloadController:
         if not (isinstance(margin, (int, float)) and math.isfinite(margin) and margin >= 0):
             raise InvalidParameterError(f"margin must be finite and >= 0, got {margin!r}", field="margin")
         self.m, self.n, self.objective, self.margin = m, n, objective, float(margin)
-        self.load = _vec(load, 2, "load")
+        self.load = checked_vector(load, 2, "load")
         lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
         self.lo = self._per_spring(lo, "bounds")
         self.hi = self._per_spring(hi, "bounds")
@@ -246,8 +236,8 @@ class PreloadController:
         """Rest lengths for the tip at ``target = (x, y)`` (and the last link at ``end_angle``, rad) under
         ``load`` (default the controller's), from the current state; the state moves there when the step
         is feasible."""
-        target = _vec(target, 2, "target")
-        F = self.load if load is None else _vec(load, 2, "load")
+        target = checked_vector(target, 2, "target")
+        F = self.load if load is None else checked_vector(load, 2, "load")
         if end_angle is not None and not math.isfinite(float(end_angle)):
             raise InvalidParameterError("end_angle must be finite", field="end_angle")
         lo, hi = self.lo, self.hi
