@@ -55,6 +55,8 @@ __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "preloads_for_traj
 NEWTON_TOL = 1e-10
 #: Weight of ``|q - q_prev|^2`` in the least-change objective (regularises the joint angles' null space).
 Q_WEIGHT = 1e-8
+#: The solver detail of a Newton step, per iteration count (immutable, so shared).
+_NEWTON: dict[int, SolverInfo] = {}
 
 
 @dataclass(frozen=True)
@@ -114,7 +116,20 @@ class PreloadStep(Outcome):
     message: str
 
     def __post_init__(self) -> None:
-        freeze(self)
+        # the controller passes arrays it owns: read-only in place (this is on the control loop's path)
+        self.rest_lengths.setflags(write=False)
+        self.q.setflags(write=False)
+        self.tip.setflags(write=False)
+        self.target.setflags(write=False)
+
+    @classmethod
+    def _of(cls, **fields: Any) -> PreloadStep:
+        """The controller's constructor, every field by keyword: the frozen dataclass's ``__init__`` sets each
+        field through ``object.__setattr__``, which costs a twentieth of a warm step."""
+        step = object.__new__(cls)
+        step.__dict__.update(fields)
+        step.__post_init__()
+        return step
 
     @property
     def status(self) -> str:
@@ -276,10 +291,11 @@ class PreloadController:
         if int(np.sum(kk > 0)) != 3 * n or int(np.sum(kk < 0)) != inv.rows:
             return None                     # a KKT point that is not a local minimum of the least change
         self.mu[angle] = y[3 * n:].copy()
-        return PreloadStep(rest_lengths=ell.reshape(n, 2).copy(), q=q.copy(), tip=tip, end_angle=float(np.sum(q)),
-                           margin=margin, energy=E, feasible=True, method="newton",
-                           solver=SolverInfo("Newton_Converged", iters), residual=resid, target=target.copy(),
-                           message=f"the least-change Newton step converged (KKT residual {resid:.3g})")
+        solver = _NEWTON.get(iters) or _NEWTON.setdefault(iters, SolverInfo("Newton_Converged", iters))
+        # q and ell are views of the step's own iterate y: no copy needed before they turn read-only
+        return PreloadStep._of(rest_lengths=ell.reshape(n, 2), q=q, tip=tip, end_angle=float(np.sum(q)),
+                               margin=margin, energy=E, feasible=True, method="newton", solver=solver,
+                               residual=resid, target=target.copy(), message="the least-change Newton step converged")
 
     def _ipopt(self, target, F, end_angle, lo, hi) -> PreloadStep:
         nominal = self.manipulator()
@@ -295,10 +311,10 @@ class PreloadController:
             return self._best(target, F, exc)
         self.mu.clear()                     # the multipliers of the least-change problem start again
         q = d.q
-        return PreloadStep(rest_lengths=d.preloads.copy(), q=q.copy(), tip=d.tip.copy(), end_angle=float(np.sum(q)),
-                           margin=float(d.margin), energy=float(d.energy), feasible=True, method="ipopt",
-                           solver=d.solver, residual=None, target=target.copy(),
-                           message=f"IPOPT ({self.objective}) converged, verified by the forward solve")
+        return PreloadStep._of(rest_lengths=d.preloads.copy(), q=q.copy(), tip=d.tip.copy(),
+                               end_angle=float(np.sum(q)), margin=float(d.margin), energy=float(d.energy),
+                               feasible=True, method="ipopt", solver=d.solver, residual=None, target=target.copy(),
+                               message=f"IPOPT ({self.objective}) converged, verified by the forward solve")
 
     def _best(self, target, F, exc: TensegrityError) -> PreloadStep:
         """The best reachable pose of an infeasible step: the forward equilibrium with the IPOPT's best rest
@@ -316,10 +332,10 @@ class PreloadController:
                 pass
         m = self.manipulator(ell)
         tip = m.tip(q)
-        return PreloadStep(rest_lengths=ell.reshape(n, 2).copy(), q=q.copy(), tip=tip, end_angle=float(np.sum(q)),
-                           margin=math.nan, energy=math.nan, feasible=False, method="none",
-                           solver=SolverInfo(str(exc.status) if exc.status else "none", 0), residual=None,
-                           target=np.asarray(target, float).copy(), message=exc.message)
+        return PreloadStep._of(rest_lengths=ell.reshape(n, 2).copy(), q=q.copy(), tip=tip,
+                               end_angle=float(np.sum(q)), margin=math.nan, energy=math.nan, feasible=False,
+                               method="none", solver=SolverInfo(str(exc.status) if exc.status else "none", 0),
+                               residual=None, target=np.asarray(target, float).copy(), message=exc.message)
 
 
 @dataclass(frozen=True)
