@@ -37,7 +37,7 @@ from .http_load import _Connection, _host_port, json_body, own_server
 
 __all__ = ["track_path", "inverse_path", "stream_steps", "rest_local_steps", "library_steps", "run", "table", "main"]
 
-#: Dead tip load of the inverse mode (the paper's chain, as in tests/test_preload_control.py).
+#: Dead tip load of the inverse mode (the paper's chain, as in tests/analyses/design/test_preload_control.py).
 LOAD = (-0.02, 0.01)
 #: Steps before the timed ones (first builds, caches).
 WARMUP = 50
@@ -53,7 +53,7 @@ def track_path(steps: int, n: int) -> list[tuple[float, float]]:
 
 def inverse_path(steps: int, n: int) -> list[list[float]]:
     """Tip poses from the start pose under ``LOAD`` out along an arc and back (every step a Newton step for
-    n = 4; the trajectory of tests/test_preload_control.py, finer)."""
+    n = 4; the trajectory of tests/analyses/design/test_preload_control.py, finer)."""
     m = to.Manipulator.uniform(n)
     tip0 = m.tip(PreloadController(m, load=LOAD).q)
     s = np.arange(steps) / max(steps, 1)

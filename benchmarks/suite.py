@@ -25,7 +25,7 @@ Cases (the issue's targets):
    steps with bisection on stability; the stability atlas per target vs a ``find_equilibria`` loop, and
    per crossing vs bisecting the stable count along the edge.
 11. control in actuation space: a warm preload step of ``PreloadController`` (goal <= 0.2 ms for n = 4) vs
-   ``choose_preloads`` per step and scipy SLSQP on the same problem; ``plan_preloads`` per step.
+   ``preloads_for_pose`` per step and scipy SLSQP on the same problem; ``preloads_for_trajectory`` per step.
 """
 
 from __future__ import annotations
@@ -925,7 +925,8 @@ def _atlas_rows(cfg: Config) -> list[Row]:
 
 def case11(cfg: Config) -> list[Row]:
     """Control in actuation space: one warm preload step (the compiled least-change Newton step) vs
-    ``choose_preloads`` per step and SLSQP on the same problem; ``plan_preloads`` per step with verification."""
+    ``preloads_for_pose`` per step and SLSQP on the same problem; ``preloads_for_trajectory`` per step with
+    verification."""
     from tensegrity_opt.analyses.design.preload_control import PreloadController
 
     rows: list[Row] = []
@@ -950,7 +951,7 @@ def case11(cfg: Config) -> list[Row]:
         if k in sub:
             ell_prev, q_prev = ctl2.ell.copy(), ctl2.q.copy()
             t0 = time.perf_counter()
-            d = to.choose_preloads(ctl2.manipulator(), traj[k], F, q0=q_prev)
+            d = to.preloads_for_pose(ctl2.manipulator(), traj[k], load=F, start=q_prev)
             base_c.append(time.perf_counter() - t0)
             t0 = time.perf_counter()
             r = bl.slsqp_preload_step(m, ell_prev, q_prev, traj[k], F)
@@ -964,18 +965,19 @@ def case11(cfg: Config) -> list[Row]:
             f"steps by the compiled Newton step, {methods.count('ipopt')} by IPOPT, {methods.count('none')} "
             f"infeasible; p99 {float(np.percentile(ts, 99)) * 1e3:.3f} ms; on {len(sub)} sampled steps the three "
             f"methods' rest lengths agree to {max(agree):.1e}")
-    rows.append(Row("11", "preload controller, warm step", 4, o, "ms", "choose_preloads per step (IPOPT)",
+    rows.append(Row("11", "preload controller, warm step", 4, o, "ms", "preloads_for_pose per step (IPOPT)",
                     median_ms(base_c), ratio=median_ms(base_c) / o, target="<= 0.2 ms (goal)", met=o <= 0.2,
                     samples=ts, baseline_samples=base_c, notes=[note]))
     rows.append(Row("11", "preload controller, warm step", 4, o, "ms", "scipy SLSQP on the same problem (warm)",
                     median_ms(base_s), ratio=median_ms(base_s) / o, target="(info)", samples=ts,
                     baseline_samples=base_s))
     t0 = time.perf_counter()
-    plan = to.plan_preloads(m, traj[:200], F)
+    plan = to.preloads_for_trajectory(m, traj[:200], loads=F)
     tp = (time.perf_counter() - t0) / 200
-    rows.append(Row("11", "plan_preloads per step (verified by the forward solve)", 4, tp * 1e3, "ms",
+    rows.append(Row("11", "preloads_for_trajectory per step (verified by the forward solve)", 4, tp * 1e3, "ms",
                     target="(info)", samples=[tp],
-                    notes=[f"plan_preloads over 200 steps: status {plan.status}, verified {int(plan.verified.sum())}/200"]))
+                    notes=[f"preloads_for_trajectory over 200 steps: status {plan.status}, "
+                           f"verified {int(plan.verified.sum())}/200"]))
     return rows
 
 

@@ -257,17 +257,21 @@ def preloads_for_load_task(req: s.PreloadsForLoadRequest) -> dict[str, Any]:
     if not d.feasible:
         raise _best_as_json(to.InfeasibleDesignError(
             f"no rest lengths within the bounds give a critical load of {req.required:g}: the best achievable "
-            f"is {d.load:.6g}", status=d.status, best=d))
+            f"is {d.load:.6g}", status=d.solver.status, best=d))
     return d.to_dict()
+
+
+#: The request's ``objective`` -> the library's (``"nominal"``: the least change from the chain's own rest lengths).
+PRELOADS_OBJECTIVES = {"nominal": "change", "margin": "margin", "energy": "energy"}
 
 
 def preloads_task(req: s.PreloadsRequest) -> dict[str, Any]:
     m = build_manipulator(req.manipulator)
     try:
-        r = to.choose_preloads(m, (req.target.x, req.target.y), (req.load.fx, req.load.fy), req.objective,
-                               margin=req.margin, taut=req.taut,
-                               bounds=(req.bounds.lo, req.bounds.hi) if req.bounds else None,
-                               end_angle=req.end_angle)
+        r = to.preloads_for_pose(m, (req.target.x, req.target.y), load=(req.load.fx, req.load.fy),
+                                 objective=PRELOADS_OBJECTIVES[req.objective], margin=req.margin, taut=req.taut,
+                                 bounds=(req.bounds.lo, req.bounds.hi) if req.bounds else None,
+                                 end_angle=req.end_angle)
     except to.InfeasibleDesignError as exc:
         raise _best_as_json(exc) from None
     return r.to_dict()

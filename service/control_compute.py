@@ -1,8 +1,8 @@
 """Library calls of the control endpoints (``/v1/control/*`` and their figures) and their JSON bodies.
 
 The tasks of :mod:`service.compute`, for the control layer of the library: :func:`plan_task`
-(``plan_preloads``, run in a killable solver process like ``/v1/design/preloads``: its IPOPT fallback is
-``choose_preloads``), :func:`simulate_task` (``simulate``, in the solver threads like the path endpoints) and
+(``preloads_for_trajectory``, run in a killable solver process like ``/v1/design/preloads``: its IPOPT fallback
+is ``preloads_for_pose``), :func:`simulate_task` (``simulate``, in the solver threads like the path endpoints) and
 :func:`force_estimate_task` (``estimate_tip_force``). Each returns the result's own ``to_dict()``; library
 exceptions propagate unchanged and are mapped by :mod:`service.errors`. ``deadline`` is the soft
 ``time.monotonic()`` deadline of :func:`service.deps.path_deadline`: the plan and the simulation stop there and
@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design.preload_control import PreloadPlan, plan_preloads
+from tensegrity_opt.analyses.design.preload_control import PreloadPlan, preloads_for_trajectory
 
 from .compute import _best_as_json, _seconds_left, build_manipulator
 
@@ -38,11 +38,11 @@ def find_plan(req: Any, deadline: float) -> PreloadPlan:
     m = build_manipulator(req.manipulator)
     end_angles = None if req.end_angles is None else [np.nan if a is None else a for a in req.end_angles]
     bounds = None if req.bounds is None else (_per_spring(req.bounds.lo), _per_spring(req.bounds.hi))
-    return plan_preloads(m, np.asarray(req.targets, dtype=float), None if req.loads is None else req.loads,
-                         end_angles=end_angles, bounds=bounds, rate_limit=_per_spring(req.rate_limit),
-                         margin=req.margin, objective=req.objective, weights=req.weights,
-                         start=None if req.start is None else np.asarray(req.start.q, dtype=float),
-                         verify=req.verify, timeout=_seconds_left(deadline))
+    return preloads_for_trajectory(m, np.asarray(req.targets, dtype=float), loads=req.loads, end_angles=end_angles,
+                                   bounds=bounds, rate_limit=_per_spring(req.rate_limit), margin=req.margin,
+                                   objective=req.objective, weights=req.weights,
+                                   start=None if req.start is None else np.asarray(req.start.q, dtype=float),
+                                   verify=req.verify, timeout=_seconds_left(deadline))
 
 
 def plan_task(req: Any, deadline: float) -> dict[str, Any]:

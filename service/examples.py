@@ -102,6 +102,9 @@ BATCH = {"results": [
 ], "succeeded": 1, "failed": 1}
 
 DESIGN = {
+    "success": True, "status": "optimal",
+    "message": "optimal design: critical load 0.691429, recomputed by critical_force (IPOPT Solve_Succeeded, 17 "
+               "iterations)",
     "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.768, "L0": 1.0}, {"a": 1.0, "b": 1.0, "k": 0.2, "L0": 1.0},
                                  {"a": 1.0, "b": 1.0, "k": 1.178286, "L0": 1.0},
                                  {"a": 1.0, "b": 1.0, "k": 0.853714, "L0": 1.0}]},
@@ -110,6 +113,9 @@ DESIGN = {
     "solver": {"status": "Solve_Succeeded", "iterations": 17}}
 
 PRELOADS = {
+    "success": True, "status": "optimal",
+    "message": "optimal rest lengths: the tip on the target, stable with margin 0.977663 (IPOPT Solve_Succeeded, 5 "
+               "iterations)",
     "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.041489, 0.944056]},
                                  {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [0.736705, 1.198028]},
                                  {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [0.468097, 1.248362]},
@@ -324,8 +330,9 @@ ATLAS = {
 
 # ---------------------------------------------------------------------------- control (/v1/control/*)
 #: The plan of PLAN_REQUEST_EXAMPLE (service.schemas.control), rounded.
-PLAN = {'status': 'complete',
- 'success': True,
+PLAN = {'success': True,
+ 'status': 'complete',
+ 'message': '4 step(s), 4 feasible, 4 verified',
  'seconds': 0.05,
  'rest_lengths': [[[0.685134, 1.20777], [1.00651, 0.992736], [1.15883, 0.73099], [1.10476, 0.863456]],
                   [[0.6478, 1.23069], [1.00698, 0.992219], [1.17654, 0.699084], [1.11677, 0.847328]],
@@ -432,7 +439,10 @@ SIMULATION = {'success': True,
 
 #: The equilibrium of the paper's chain under (-0.1, 0.05) (rounded angles) and its force estimate.
 FORCE_ESTIMATE_Q = [0.742754, 0.522806, 0.297158, 0.0953]
-FORCE_ESTIMATE = {'force': {'fx': -0.0999999, 'fy': 0.0500004},
+FORCE_ESTIMATE = {'success': True,
+ 'status': 'generalized_least_squares',
+ 'message': 'generalised least-squares estimate, residual torque 6.18e-07, chi2 3.8e-07 on 2 degrees of freedom',
+ 'force': {'fx': -0.0999999, 'fy': 0.0500004},
  'covariance': [[7.47495e-08, 1.89726e-07], [1.89726e-07, 7.33302e-07]],
  'residual_torque': [8.28877e-08, -2.88129e-07, 4.62923e-07, -2.78041e-07],
  'residual_norm': 6.17652e-07,
@@ -443,9 +453,42 @@ FORCE_ESTIMATE = {'force': {'fx': -0.0999999, 'fy': 0.0500004},
  'q': [0.742754, 0.522806, 0.297158, 0.0953],
  'measured': [0, 1, 2, 3],
  'hidden_covariance': [],
- 'success': True,
- 'status': 'generalized_least_squares',
  'iterations': 1}
+
+#: ``/v1/control/stiffness`` of the paper's chain, tip at (7, 1), both stiffness eigenvalues in [0.04, 0.6], rounded.
+STIFFNESS_DESIGN = {
+    "success": True, "status": "within_bounds",
+    "message": "the stiffness bounds hold: eigenvalues 0.04, 0.6 (force / length)",
+    "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": [2.622024, 2.694867]},
+                                 {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [2.358032, 1.93644]},
+                                 {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.342645, 1.838989]},
+                                 {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [0.1, 1.048735]}]},
+    "rest_lengths": [[2.622024, 2.694867], [2.358032, 1.93644], [1.342645, 1.838989], [0.1, 1.048735]],
+    "q": [0.027399, -0.195715, 0.309511, 1.380665], "tip": [7.0, 1.0],
+    "K": [[0.564462, 0.136522], [0.136522, 0.075538]], "eigenvalues": [0.04, 0.6], "margin": 0.744931,
+    "residual": 0.0, "exact": True, "load": [0.0, 0.0], "K_desired": None, "bounds_K": {}, "eig_bounds": [0.04, 0.6],
+    "solver": {"status": "Solve_Succeeded", "iterations": 7}}
+
+#: ``/v1/control/load-capacity`` of the straight paper chain, 8 directions up to 2 more (rounded): it buckles under
+#: compression at its free critical load.
+LOAD_CAPACITY = {
+    "success": True, "status": "complete",
+    "message": "8 directions: 0 fold(s), 1 bifurcation(s), 7 without a limit",
+    "angles": [0.0, 0.785398, 1.570796, 2.356194, 3.141593, -2.356194, -1.570796, -0.785398],
+    "directions": [[1.0, 0.0], [0.707107, 0.707107], [0.0, 1.0], [-0.707107, 0.707107], [-1.0, 0.0],
+                   [-0.707107, -0.707107], [0.0, -1.0], [0.707107, -0.707107]],
+    "loads": [None, None, None, None, 0.07612, None, None, None],
+    "forces": [[None, None], [None, None], [None, None], [None, None], [-0.07612, 0.0], [None, None], [None, None],
+               [None, None]],
+    "kinds": ["none", "none", "none", "none", "bifurcation", "none", "none", "none"],
+    "reasons": ["max_load", "max_load", "max_load", "joint_limit", None, "joint_limit", "max_load", "max_load"],
+    "end_loads": [2.0, 2.0, 2.0, 0.639553, 0.07612, 0.639553, 2.0, 2.0], "base": [0.0, 0.0], "boundary": "free",
+    "max_load": 2.0, "weakest": {"angle": 3.141593, "load": 0.07612},
+    "start": {"success": True, "status": "converged", "message": "converged (exact, 0 iterations)",
+              "q": [0.0, 0.0, 0.0, 0.0], "energy": 4.0, "force": {"fx": 0.0, "fy": 0.0}, "morse_index": 0,
+              "stable": True, "kind": "minimum", "shape": "I", "signs": "0000", "tip": [8.0, 0.0],
+              "solver": {"status": "exact", "iterations": 0}},
+    "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}] * 4}}
 
 
 ERRORS: dict[int, dict[str, dict[str, Any]]] = {
@@ -480,7 +523,8 @@ ERRORS: dict[int, dict[str, dict[str, Any]]] = {
             "code": "too_many_segments", "message": "the chain has 150 segments; this server accepts at most 100",
             "field": "manipulator.n", "details": {"n": 150, "max_segments": 100}}},
         "too_many_points": {"summary": "max_points over this server's TENSEGRITY_MAX_PATH_POINTS", "value": {
-            "code": "too_many_points", "message": "max_points = 5000; this server follows at most 2000 points per branch",
+            "code": "too_many_points",
+            "message": "max_points = 5000; this server follows at most 2000 points per branch",
             "field": "max_points", "details": {"max_points": 5000, "max_path_points": 2000}}},
         "too_many_steps": {"summary": "a trajectory longer than this server's TENSEGRITY_MAX_TRAJECTORY_STEPS",
                            "value": {"code": "too_many_steps",

@@ -7,12 +7,12 @@ the stream's events:
 * ``track`` (:class:`TrackSession`): a :class:`tensegrity_opt.analyses.paths.continuation.Tracker`; each step
   ``(dx, dy)`` is ``Tracker.solve(dx, dy)``; a ``jump`` event when the tracker left its branch (the
   branch ended or turned unstable: a global re-solve from the last configuration, what the chain does).
-* ``preloads`` (:class:`PreloadsSession`): each step's rest lengths are commanded and the answer is the
-  forward quasi-static equilibrium under the dead load,
-  ``solve_equilibrium_under_force(m with those rest lengths, fx, fy, q0=last q)``; a ``snap`` event when
-  the configuration moves by more than ``snap_distance`` (rad, largest joint) or the result is unstable.
-* ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.analyses.design.preload_control.PreloadController`;
-  each step is ``PreloadController.step(target, load, end_angle)``.
+* ``preloads`` (:class:`PreloadsSession`): a :class:`tensegrity_opt.PreloadFollower`; each step's rest lengths
+  are commanded, ``PreloadFollower.step(rest_lengths, load)``: the forward quasi-static equilibrium under the
+  dead load from the last state, a ``snap`` event when the configuration moves by more than ``snap_distance``
+  (rad, largest joint) or the result is unstable.
+* ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.PreloadController`; each step is
+  ``PreloadController.step(target, load, end_angle)``.
 
 Every method here runs in the stream's solver thread (:class:`StreamSlots`), never on the event loop;
 :meth:`Session.step` returns the answer already rendered (``service.responses.render_json``). Library
@@ -32,10 +32,9 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.paths.continuation import Tracker
+from tensegrity_opt.analyses.design.follower import PreloadFollower
 from tensegrity_opt.analyses.design.preload_control import PreloadController
-from tensegrity_opt.analyses.equilibria.rest import rest_configuration
-from tensegrity_opt.errors import InvalidParameterError
+from tensegrity_opt.analyses.paths.continuation import Tracker
 from tensegrity_opt.serialize import number, numbers
 
 from . import schemas as s
@@ -90,46 +89,14 @@ class PreloadsSession(Session):
 
     def __init__(self, m: to.Manipulator, req: s.PreloadsOpen) -> None:
         super().__init__(m)
-        self.load = np.asarray(req.load, dtype=float)
-        self.snap = float(req.snap_distance)
-        if req.start is not None:
-            if len(req.start) != m.n:
-                raise InvalidParameterError(f"start must be {m.n} joint angles, got {len(req.start)}", field="start")
-            self.q = np.asarray(req.start, dtype=float)
-        else:       # as PreloadController's default start: the rest configuration, then the load applied
-            rest = rest_configuration(m)
-            self.q = rest.q.copy() if not np.any(self.load) else \
-                to.solve_equilibrium_under_force(m, *self.load, q0=rest.q).q.copy()
+        self.follower = PreloadFollower(m, req.start, load=req.load, snap_distance=req.snap_distance)
 
     def opened(self) -> dict[str, Any]:
-        return {"n": self.m.n, "q": numbers(self.q), "load": numbers(self.load)}
-
-    def manipulator(self, rest_lengths: list[list[float]]) -> to.Manipulator:
-        """The chain with the commanded rest lengths (``[L1_0, L2_0]`` per segment)."""
-        n = self.m.n
-        if len(rest_lengths) != n:
-            raise InvalidParameterError(f"rest_lengths must be {n} pairs [L1_0, L2_0], got {len(rest_lengths)}",
-                                        field="rest_lengths")
-        segments = []
-        for i, (seg, (l1, l2)) in enumerate(zip(self.m.segments, rest_lengths)):
-            try:
-                segments.append(seg.replace(L0=(float(l1), float(l2))))
-            except InvalidParameterError as exc:
-                raise InvalidParameterError(exc.message, field=f"rest_lengths[{i}]") from None
-        return to.Manipulator(segments)
+        f = self.follower
+        return {"n": self.m.n, "q": numbers(f.q), "load": numbers(f.load)}
 
     def step(self, msg: s.PreloadsStep) -> dict[str, Any]:
-        m = self.manipulator(msg.rest_lengths)
-        F = self.load if msg.load is None else np.asarray(msg.load, dtype=float)
-        eq = to.solve_equilibrium_under_force(m, float(F[0]), float(F[1]), q0=self.q)
-        distance = _max_change(eq.q, self.q)
-        events: list[dict[str, Any]] = []
-        if distance > self.snap or not eq.stable:
-            events.append({"kind": "snap", "cause": "unstable" if not eq.stable else "distance",
-                           "distance": number(distance), "q_before": numbers(self.q)})
-        self.q = eq.q.copy()
-        return {**eq.to_dict(), "rest_lengths": [numbers(p) for p in msg.rest_lengths], "load": numbers(F),
-                "events": events}
+        return self.follower.step(msg.rest_lengths, load=msg.load).to_dict()
 
 
 class InverseSession(Session):

@@ -22,25 +22,21 @@ from .analyses.paths.boundaries import StabilityBoundary, stability_boundary
 from .analyses.equilibria.buckling import Buckling, Mode, critical_force
 from .analyses.paths.continuation import Tracker, solve_equilibria_batch
 from .analyses.paths.curves import Curve, CurveEnd, Jump, force_deflection
-from .analyses.design.optimal import (
-                     Design,
-                     PreloadDesign,
-                     choose_preloads,
-                     critical_load_sensitivity,
-                     equilibrium_sensitivity,
-                     maximize_critical_force,
-                     preloads_for_critical_force,
-)
-from .analyses.equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
+from .analyses.design.follower import FollowerStep, PreloadFollower, Snap
 from .analyses.design.force_sensor import ForceEstimate, estimate_tip_force
+from .analyses.design.load_capacity import LoadCapacity, load_capacity
+from .analyses.design.preload_control import PreloadController, PreloadPlan, PreloadStep, preloads_for_trajectory
+from .analyses.design.preloads import PreloadDesign, preloads_for_critical_force, preloads_for_pose
+from .analyses.design.sensitivity import critical_load_sensitivity, equilibrium_sensitivity
+from .analyses.design.stiffness_shaping import StiffnessDesign, preloads_for_stiffness
+from .analyses.design.strongest import Design, maximize_critical_force
+from .analyses.equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
 from .analyses.equilibria.landscape import Landscape, energy_landscape
 from .analyses.equilibria.least_energy import solve_equilibrium
 from .analyses.paths.limit_load import LimitLoad, limit_load
 from .analyses.equilibria.rest import find_equilibria_under_force, rest_configuration
-from .analyses.design.preload_control import PreloadController, PreloadPlan, PreloadStep, plan_preloads
 from .analyses.paths.simulation import Simulation, SimulationEvent, simulate
 from .analyses.equilibria.stiffness import cartesian_stiffness
-from .analyses.design.stiffness_design import LoadCapacity, StiffnessDesign, load_capacity, preloads_for_stiffness
 from .applications.sweeps import SweepResult, sweep
 from .errors import (
                      HomotopyUnavailableError,
@@ -73,8 +69,9 @@ __all__ = [
     "Control", "Branch", "BranchEvent", "trace_branch", "switch_branch", "bifurcation_diagram",
     "LimitLoad", "limit_load", "StabilityBoundary", "stability_boundary", "StabilityAtlas", "stability_atlas",
     "Simulation", "SimulationEvent", "simulate",
-    "PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads",
-    "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "choose_preloads",
+    "PreloadController", "PreloadStep", "PreloadPlan", "preloads_for_trajectory",
+    "PreloadFollower", "FollowerStep", "Snap",
+    "Design", "PreloadDesign", "maximize_critical_force", "preloads_for_critical_force", "preloads_for_pose",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "sweep", "SweepResult",
     "cartesian_stiffness", "StiffnessDesign", "preloads_for_stiffness", "LoadCapacity", "load_capacity",

@@ -106,7 +106,7 @@ class InfeasibleDesignError(SolverError):
 
 
 class TimeLimitError(TensegrityError, RuntimeError):
-    """A time limit given by the caller was reached (:func:`tensegrity_opt.time_limit`, ``time_limit=``, a
+    """A time limit given by the caller was reached (:func:`tensegrity_opt.time_limit`, ``timeout=``, a
     batch deadline), or IPOPT stopped at its own wall/CPU time limit; ``status`` says which. Never a result."""
 
     code = "timeout"

@@ -1,8 +1,8 @@
 """Control: rest-length plans for tip trajectories, quasi-static simulation with snaps, the arm as a force sensor.
 
-``POST /v1/control/plan`` (``plan_preloads``; in a killable solver process, as ``/v1/design/preloads``: its IPOPT
-fallback is ``choose_preloads``), ``POST /v1/control/simulate`` (``simulate``; in the solver threads, as the path
-endpoints) and ``POST /v1/control/force-estimate`` (``estimate_tip_force``). The figures of the first two are
+``POST /v1/control/plan`` (``preloads_for_trajectory``; in a killable solver process, as ``/v1/design/preloads``:
+its IPOPT fallback is ``preloads_for_pose``), ``POST /v1/control/simulate`` (``simulate``; in the solver threads, as
+the path endpoints) and ``POST /v1/control/force-estimate`` (``estimate_tip_force``). The figures of the first two are
 ``POST /v1/plots/plan`` and ``POST /v1/plots/simulation`` (:mod:`.plots`).
 """
 
@@ -72,9 +72,9 @@ def check_simulation(req: Any, settings: Settings) -> Any:
     summary="Rest lengths for a trajectory of tip positions, on one stable branch",
     description="Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with "
                 "`margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step "
-                "(`tensegrity_opt.analyses.design.preload_control.plan_preloads`): `objective: change` is the least change "
+                "(`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change "
                 "from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound "
-                "is active), `margin` / `energy` IPOPT (`choose_preloads`). A step no admissible rest lengths reach "
+                "is active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach "
                 "is `feasible: false` with the best reachable pose, and the next step starts from the last feasible "
                 "state (`status: \"infeasible_steps\"`). `verified`: the forward quasi-static solve from the "
                 "previous step's configuration with the step's rest lengths lands on the target, stable. "
@@ -165,7 +165,7 @@ async def control_force_estimate(
                 "`eig_bounds` (both eigenvalues) (`tensegrity_opt.preloads_for_stiffness`: IPOPT from the target's "
                 "equilibria, `max_starts` shapes). Verified by the forward solve and `cartesian_stiffness`. Bounds "
                 "that cannot be met: 422 `design_infeasible` with the least-violation point in `best`.",
-    responses=solve_responses(ex.PRELOADS, "design_infeasible", "unreachable_target"))
+    responses=solve_responses(ex.STIFFNESS_DESIGN, "design_infeasible", "unreachable_target"))
 async def control_stiffness(
     request: Request,
     req: Annotated[s.StiffnessDesignRequest, Body(openapi_examples={
@@ -188,7 +188,7 @@ async def control_stiffness(
                 "or a bifurcation (buckling) (`tensegrity_opt.load_capacity`). `loads` is null where the path stays "
                 "stable up to a joint's range bound or `max_load` (`reasons`). Computed within the server's time limit: "
                 "directions not reached answer `reasons: \"time_limit\"`.",
-    responses=solve_responses(ex.PRELOADS, "no_equilibrium"))
+    responses=solve_responses(ex.LOAD_CAPACITY, "no_equilibrium"))
 async def control_load_capacity(
     request: Request,
     req: Annotated[s.LoadCapacityRequest, Body(openapi_examples={

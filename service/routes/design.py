@@ -74,7 +74,7 @@ async def design_preloads_for_load(
 @router.post(
     "/preloads", operation_id="design_preloads", response_model=s.PreloadsOut,
     summary="Rest lengths (control inputs) for a stable pose under a tip load",
-    description="`tensegrity_opt.choose_preloads`: rest lengths (L1_0, L2_0) per segment such that under the "
+    description="`tensegrity_opt.preloads_for_pose`: rest lengths (L1_0, L2_0) per segment such that under the "
                 "tip load the chain has a stable equilibrium with the tip at `target` (optionally the last "
                 "link's angle), with the joint-space Hessian >= `margin`; objectives: least change from the "
                 "nominal preloads, largest margin, least energy. Verified by re-solving the force-controlled "

@@ -1,6 +1,6 @@
 """Models of the control endpoints: ``/v1/control/plan``, ``/v1/control/simulate``, ``/v1/control/force-estimate``.
 
-* *plan*: rest lengths for a trajectory of tip positions (``tensegrity_opt.analyses.design.preload_control.plan_preloads``);
+* *plan*: rest lengths for a trajectory of tip positions (``tensegrity_opt.preloads_for_trajectory``);
 * *simulate*: the quasi-static forward simulation under sampled inputs, snapping at folds
   (``tensegrity_opt.simulate``);
 * *force-estimate*: the tip force from measured joint angles (``tensegrity_opt.estimate_tip_force``).
@@ -18,13 +18,14 @@ from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
-from tensegrity_opt.analyses.design.preload_control import OBJECTIVES
+import tensegrity_opt as to
+from tensegrity_opt.analyses.design.preloads import OBJECTIVES
 from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
 from tensegrity_opt.analyses.paths.simulation import Simulation, SimulationEvent
 
 from ..config import HARD_MAX_SEGMENTS, HARD_MAX_TRAJECTORY_STEPS
 from .common import (_STRICT, MAX_ANGLE, MAX_STIFFNESS, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Length,
-                     ManipulatorIn, integral, outcome_model)
+                     ManipulatorIn, SolverInfo, integral, outcome_model)
 from .design import MAX_DESIGN_SEGMENTS, DesignManipulatorIn
 from .paths import StartQ
 
@@ -116,12 +117,12 @@ PLAN_REQUEST_EXAMPLE = {"manipulator": PAPER_CHAIN, "targets": [[7.6, 0.5], [7.5
 
 
 class PlanRequest(_PlanFields):
-    """Rest lengths for a trajectory of tip positions, on one stable branch (`plan_preloads`)."""
+    """Rest lengths for a trajectory of tip positions, on one stable branch (`preloads_for_trajectory`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [PLAN_REQUEST_EXAMPLE]})
 
 
-class PlanStepOut(BaseModel):
+class PlanStepOut(outcome_model(to.PreloadStep)):
     """One step of a plan (`PreloadStep.to_dict()`)."""
 
     rest_lengths: list[list[float]] = Field(description="[L1_0, L2_0] per segment")
@@ -132,18 +133,15 @@ class PlanStepOut(BaseModel):
     energy: float | None = Field(description="null: infeasible")
     feasible: bool
     method: Literal["newton", "ipopt", "none"]
-    status: str = Field(description="the solver's status, or why the step is infeasible")
-    iterations: int
+    solver: SolverInfo = Field(description="the solver's status (Newton_Converged, IPOPT's; for an infeasible step "
+                                           "the failed solve's, or none) and iterations")
     residual: float | None = Field(description="max-norm of the equilibrium and pose equations (Newton steps)")
     target: list[float]
 
 
-class PlanOut(BaseModel):
+class PlanOut(outcome_model(to.PreloadPlan)):
     """`PreloadPlan.to_dict()`: per step done (`K` rows, fewer when the time limit cut the plan)."""
 
-    status: Literal["complete", "infeasible_steps", "time_limit"] = Field(
-        description="complete; infeasible_steps (see feasible); time_limit (the steps done so far)")
-    success: bool = Field(description="status is complete")
     seconds: float = Field(description="wall time of the plan (s)")
     rest_lengths: list[list[list[float]]] = Field(description="[L1_0, L2_0] per segment per step (what to command)")
     q: list[list[float]] = Field(description="the equilibrium configuration per step (rad)")
@@ -159,7 +157,7 @@ class PlanOut(BaseModel):
     targets: list[list[float]] = Field(description="the targets of the steps done")
     margin_required: float = Field(description="the stability margin asked for (torque / rad)")
     objective: Literal["change", "margin", "energy"] = Field(description="how the redundancy was resolved")
-    steps: list[PlanStepOut] = Field(description="every step in full (why an infeasible step failed: `status`)")
+    steps: list[PlanStepOut] = Field(description="every step in full (why an infeasible step failed: `message`)")
 
 
 # ---------------------------------------------------------------------------- simulate
@@ -316,7 +314,7 @@ class ForceEstimateRequest(BaseModel):
     measured: MeasuredIn | None = None
 
 
-class ForceEstimateOut(BaseModel):
+class ForceEstimateOut(outcome_model(to.ForceEstimate)):
     """`ForceEstimate.to_dict()`."""
 
     force: Force = Field(description="the estimated tip force (force units)")
@@ -334,10 +332,7 @@ class ForceEstimateOut(BaseModel):
     measured: list[int] = Field(description="the measured joints (0-based)")
     hidden_covariance: list[list[float]] | None = Field(description="covariance of the estimated unmeasured angles "
                                                                     "(rad^2)")
-    success: bool
-    status: str = Field(description="least_squares, gauss_newton, generalized_least_squares, weighted_gauss_newton "
-                                    "or reweighting_not_converged")
-    iterations: int
+    iterations: int = Field(description="Gauss-Newton and re-weighting iterations made")
 
 
 __all__ = ["PlanRequest", "PlanOut", "RestLengthBoundsIn", "SimulationRequest", "SimulationOut",
@@ -384,7 +379,7 @@ class StiffnessDesignRequest(BaseModel):
         4, description="arm shapes tried (the target's equilibria, stable first)")
 
 
-class StiffnessDesignOut(BaseModel):
+class StiffnessDesignOut(outcome_model(to.StiffnessDesign)):
     """`StiffnessDesign.to_dict()`: verified by the forward solve and `cartesian_stiffness`."""
 
     manipulator: dict[str, Any]
@@ -400,7 +395,7 @@ class StiffnessDesignOut(BaseModel):
     K_desired: list[list[float]] | None
     bounds_K: dict[str, list[float | None]]
     eig_bounds: list[float | None] | None
-    solver: dict[str, Any]
+    solver: SolverInfo
 
 
 class LoadCapacityRequest(BaseModel):
@@ -420,7 +415,7 @@ class LoadCapacityRequest(BaseModel):
         10.0, description="each path is followed up to this extra load (force units)")
 
 
-class LoadCapacityOut(BaseModel):
+class LoadCapacityOut(outcome_model(to.LoadCapacity)):
     """`LoadCapacity.to_dict()`: a polar curve of the pose's load capacity."""
 
     angles: list[float] = Field(description="direction angles (rad)")
@@ -436,4 +431,3 @@ class LoadCapacityOut(BaseModel):
     weakest: dict[str, float] | None
     start: dict[str, Any]
     manipulator: dict[str, Any]
-    success: bool

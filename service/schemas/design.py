@@ -7,8 +7,10 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, Field
 
+import tensegrity_opt as to
+
 from .common import (_STRICT, MAX_LENGTH, MAX_STIFFNESS, Angle, Deflection, ForceValue, Int, SegmentedManipulatorIn,
-                     SegmentIn, SolverInfo, UniformManipulatorIn, _manipulator_union)
+                     SegmentIn, SolverInfo, UniformManipulatorIn, _manipulator_union, outcome_model)
 
 # ---------------------------------------------------------------------------- the design chain
 #: Chains accepted by the design endpoints (their NLPs carry a dense n x n Cholesky factor).
@@ -90,7 +92,9 @@ class PreloadsRequest(BaseModel):
     manipulator: DesignManipulatorIn
     target: Point = Field(description="tip position (length units)")
     load: LoadIn = Field(default_factory=lambda: LoadIn(), description="tip force (dead load)")
-    objective: Literal["nominal", "margin", "energy"] = "nominal"
+    objective: Literal["nominal", "margin", "energy"] = Field(
+        "nominal", description="nominal: least change from the chain's own rest lengths (the library's "
+                               "objective `change`); margin: largest stability margin; energy: least spring energy")
     margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
         1e-3, description="required smallest eigenvalue of the joint-space Hessian (torque / rad)")
     taut: bool = Field(False, description="keep every spring in tension (L >= L0)")
@@ -110,7 +114,9 @@ class ManipulatorOut(BaseModel):
     segments: list[SegmentOut]
 
 
-class DesignOut(BaseModel):
+class DesignOut(outcome_model(to.Design)):
+    """`Design.to_dict()`: the designed chain, its critical loads recomputed by `critical_force`."""
+
     manipulator: ManipulatorOut
     critical_force: float = Field(description="signed critical force, recomputed by critical_force on the design")
     loads: list[float] = Field(description="all critical loads of the design, ascending (recomputed)")
@@ -121,7 +127,9 @@ class DesignOut(BaseModel):
     solver: SolverInfo
 
 
-class PreloadsOut(BaseModel):
+class PreloadsOut(outcome_model(to.PreloadDesign)):
+    """`PreloadDesign.to_dict()`: rest lengths for a pose, verified by the forward equilibrium."""
+
     manipulator: ManipulatorOut
     preloads: list[list[float]] = Field(description="rest lengths [L1_0, L2_0] per segment")
     q: list[float] = Field(description="verified equilibrium configuration (rad)")

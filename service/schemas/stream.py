@@ -15,6 +15,8 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
+from tensegrity_opt.analyses.design.follower import SNAP_DISTANCE
+
 from ..config import HARD_MAX_SEGMENTS
 from .common import _STRICT, MAX_ANGLE, MAX_STIFFNESS, Angle, Deflection, ForceValue, Length, ManipulatorIn
 from .design import DesignManipulatorIn
@@ -43,7 +45,8 @@ class OpenEnvelope(BaseModel):
     type: Literal["open"]
     mode: Literal["track", "preloads", "inverse"] = Field(
         description="`track`: tip deflection targets (Tracker); `preloads`: rest-length commands, the forward "
-                    "equilibrium under the load; `inverse`: tip poses, the rest lengths (PreloadController)")
+                    "equilibrium under the load (PreloadFollower); `inverse`: tip poses, the rest lengths "
+                    "(PreloadController)")
 
 
 # ---------------------------------------------------------------------------- open
@@ -63,7 +66,8 @@ class TrackOpen(_Open):
 
 
 class PreloadsOpen(_Open):
-    """Rest-length commands: the forward equilibrium under the dead load, warm-started from the last one."""
+    """Rest-length commands: the forward equilibrium under the dead load, warm-started from the last one
+    (``tensegrity_opt.PreloadFollower``)."""
 
     mode: Literal["preloads"]
     load: Pair = Field([0.0, 0.0], description="dead tip load [fx, fy] (force units); a step may give its own")
@@ -72,13 +76,13 @@ class PreloadsOpen(_Open):
         description="the configuration the first step starts from (rad, n angles); default: the equilibrium "
                     "under `load` reached from the least-energy rest configuration of `manipulator`")
     snap_distance: Annotated[float, Field(gt=0, le=2 * MAX_ANGLE, allow_inf_nan=False)] = Field(
-        0.2, description="a step whose joint angles move by more than this (rad, largest joint) from the last "
+        SNAP_DISTANCE, description="a step whose joint angles move by more than this (rad, largest joint) from the last "
                          "is reported as a `snap` event (so is an unstable result)")
 
 
 class InverseOpen(_Open):
-    """Tip poses: the rest lengths step by step (``tensegrity_opt.analyses.design.preload_control.PreloadController``).
-    Chains of at most 60 segments, as ``/v1/design/preloads`` (its IPOPT fallback is that design NLP)."""
+    """Tip poses: the rest lengths step by step (``tensegrity_opt.PreloadController``). Chains of at most 60
+    segments, as ``/v1/design/preloads`` (its IPOPT fallback is that design NLP)."""
 
     mode: Literal["inverse"]
     manipulator: DesignManipulatorIn

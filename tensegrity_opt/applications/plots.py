@@ -34,7 +34,7 @@ function                  figure
 :func:`plot_atlas`        the stability atlas of :func:`~tensegrity_opt.stability_atlas`: the number of
                           stable equilibria over ``(dx, dy)`` (discrete colours), the switch and
                           branch-end curves with their crossings
-:func:`plot_preload_plan` a rest-length plan of :func:`~tensegrity_opt.plan_preloads`: the rest lengths of
+:func:`plot_preload_plan` a rest-length plan of :func:`~tensegrity_opt.preloads_for_trajectory`: the rest lengths of
                           every spring and the margin per step, the tip path with the targets,
                           infeasible steps shaded
 :func:`plot_simulation`   the hysteresis loop of :func:`~tensegrity_opt.simulate`: the driving input
@@ -1573,7 +1573,7 @@ def _step_spans(ax: Any, steps: np.ndarray, gid: str) -> Any:
 
 def plot_preload_plan(plan: Any, m: Manipulator | None = None, *, margin: float | None = None,
                       title: str | None = None, figsize: tuple[float, float] = (11.0, 6.4)) -> Any:
-    """A rest-length plan of :func:`~tensegrity_opt.plan_preloads`, per step ``k``: the rest lengths of every
+    """A rest-length plan of :func:`~tensegrity_opt.preloads_for_trajectory`, per step ``k``: the rest lengths of every
     spring (left, top; spring 1 ``L1_0`` solid, spring 2 ``L2_0`` dashed, one colour per segment), the stability
     margin (left, bottom; ``margin``: the required one as a dotted level), and the tip path with the targets
     (right, equal axes; each step's tip joined to the next, the targets as crosses). Infeasible steps (no

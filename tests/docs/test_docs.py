@@ -8,12 +8,16 @@ import tensegrity_opt
 import tensegrity_opt.analyses.paths.continuation
 import tensegrity_opt.analyses.design.force_sensor
 import tensegrity_opt.analyses.paths.simulation
-import tensegrity_opt.analyses.design.stiffness_design
+import tensegrity_opt.analyses.design.follower
+import tensegrity_opt.analyses.design.load_capacity
+import tensegrity_opt.analyses.design.stiffness_shaping
 
 
 @pytest.mark.parametrize("module", [tensegrity_opt, tensegrity_opt.analyses.paths.continuation,
                                     tensegrity_opt.analyses.paths.simulation, tensegrity_opt.analyses.design.force_sensor,
-                                    tensegrity_opt.analyses.design.stiffness_design])
+                                    tensegrity_opt.analyses.design.stiffness_shaping,
+                                    tensegrity_opt.analyses.design.load_capacity,
+                                    tensegrity_opt.analyses.design.follower])
 def test_docstring_examples(module):
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.attempted > 0 and result.failed == 0

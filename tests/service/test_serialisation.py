@@ -141,7 +141,7 @@ def test_design_to_dict_equals_the_service_serialiser():
         s.DesignCriticalForceRequest, m, vary=["k"], bounds={"k": {"lo": 0.5, "hi": 2.0}}, budget={"k": 4.0})))
     pl = to.preloads_for_critical_force(m, 0.8)
     _same(pl.to_dict(), compute.preloads_for_load_task(_req(s.PreloadsForLoadRequest, m, required=0.8)))
-    p = to.choose_preloads(m, (7.5, 0.5), (0.0, 0.0), "energy")
+    p = to.preloads_for_pose(m, (7.5, 0.5), load=(0.0, 0.0), objective="energy")
     _same(p.to_dict(), refs.preload_design_out(p))
     _same(p.to_dict(), compute.preloads_task(_req(s.PreloadsRequest, m, target={"x": 7.5, "y": 0.5},
                                                  objective="energy")))

@@ -29,9 +29,10 @@ def test_critical_force_design_equals_library(client):
                                    budget={"k": 4.0})
     assert got["critical_force"] == approx(d.critical_force, rel=1e-9)
     assert got["loads"] == approx(d.loads.tolist(), rel=1e-9)
-    assert got["multiplicity"] == d.multiplicity and got["active"] == d.active
+    assert got["multiplicity"] == d.multiplicity and got["active"] == list(d.active)
     assert [sg["k"] for sg in got["manipulator"]["segments"]] == approx(d.manipulator.k1.tolist(), rel=1e-9)
     assert got["solver"]["status"] == "Solve_Succeeded" and got["feasible"] is True
+    assert (got["success"], got["status"], got["message"]) == (True, "optimal", d.message)
     # independent forward check of the returned design
     m = to.Manipulator.from_dict(got["manipulator"])
     assert to.critical_force(m).force == approx(got["critical_force"], rel=1e-9)
@@ -57,8 +58,9 @@ def test_preloads_for_load_infeasible_answers_422_with_best(client):
     r = client.post("/v1/design/preloads-for-load", json={"manipulator": PAPER, "required": 10.0})
     assert r.status_code == 422
     got = r.json()
-    assert got["code"] == "design_infeasible" and got["status"]
+    assert got["code"] == "design_infeasible" and got["status"] == got["best"]["solver"]["status"]
     assert got["best"]["feasible"] is False
+    assert (got["best"]["success"], got["best"]["status"]) == (False, "below_required")
     assert -got["best"]["critical_force"] == approx(2 * 0.5727928357, rel=1e-5)
 
 
@@ -75,7 +77,8 @@ def test_preloads_pose_equals_library_and_verifies(client):
     r = client.post("/v1/design/preloads", json=body)
     assert r.status_code == 200, r.text
     got = r.json()
-    lib = to.choose_preloads(to.Manipulator.uniform(4), (7.0, 1.5), (0.05, -0.02), "nominal", margin=0.05)
+    lib = to.preloads_for_pose(to.Manipulator.uniform(4), (7.0, 1.5), load=(0.05, -0.02), objective="change",
+                               margin=0.05)
     assert np.allclose(got["preloads"], lib.preloads, rtol=1e-9)
     assert got["q"] == approx(lib.q.tolist(), abs=1e-9)
     assert got["margin"] == approx(lib.margin, rel=1e-9)

@@ -1,4 +1,4 @@
-"""Library time limits: ``to.time_limit`` / ``time_limit=`` stop a computation with ``TimeLimitError``,
+"""Library time limits: ``to.time_limit`` / ``timeout=`` stop a computation with ``TimeLimitError``,
 never with a result, and IPOPT's own wall-time stop is reported the same way."""
 
 from __future__ import annotations
@@ -41,12 +41,12 @@ def test_design_solve_stops_inside_ipopt_at_the_limit():
     design_solvers.buckling_design_nlp(16, True)   # build first: the build itself is not cut
     t0 = time.monotonic()
     with pytest.raises(to.TimeLimitError) as err:
-        to.maximize_critical_force(m, vary=ALL, time_limit=0.2)
+        to.maximize_critical_force(m, vary=ALL, timeout=0.2)
     assert time.monotonic() - t0 < 1.0
     assert err.value.status == "User_Requested_Stop"          # stopped by the callback inside IPOPT
     # the same solve without a limit is a verified design (the limit left nothing behind)
     d = to.maximize_critical_force(to.Manipulator.uniform(4), vary=("k",), bounds={"k": (0.2, 5.0)},
-                                   budget={"k": 4.0}, time_limit=30)
+                                   budget={"k": 4.0}, timeout=30)
     assert d.success and d.critical_force == pytest.approx(to.critical_force(d.manipulator).force)
 
 

@@ -29,7 +29,7 @@ def test_preloads_for_one_segment_is_refused_before_the_nlp(client):
     # was: 422 numerical_failure "Input 4 (lbg) has mismatching shape" (CasADi), for a reachable target
     x, y = 1 + np.cos(0.3), np.sin(0.3)
     with pytest.raises(InvalidParameterError) as e:
-        to.choose_preloads(to.Manipulator.uniform(1), (x, y))
+        to.preloads_for_pose(to.Manipulator.uniform(1), (x, y))
     assert e.value.field == "n"
     r = client.post("/v1/design/preloads", json={"manipulator": {"n": 1}, "target": {"x": x, "y": y}})
     assert r.status_code == 422 and r.json()["code"] == "invalid_parameter", r.text
@@ -58,7 +58,7 @@ def test_huge_loads_on_preloads_are_answered(client, load):
 def test_unreachable_preload_target_names_the_target(client):
     # the request has a tip position `target`, not a deflection `dx`
     with pytest.raises(UnreachableTargetError) as e:
-        to.choose_preloads(to.Manipulator.uniform(4), (9.0, 1.5))
+        to.preloads_for_pose(to.Manipulator.uniform(4), (9.0, 1.5))
     assert e.value.field == "target"
     r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 9.0, "y": 1.5}})
     assert r.status_code == 422 and r.json()["code"] == "unreachable_target", r.text

@@ -41,8 +41,6 @@ from __future__ import annotations
 
 import itertools
 import math
-import os
-import sys
 from dataclasses import dataclass, field
 
 import numpy as np

@@ -51,8 +51,6 @@ fragile. Uniform free chains: ``P_j = (K / b) (1 - cos((2j - 1) pi / (2n)))``.
 from __future__ import annotations
 
 import math
-import os
-import sys
 from dataclasses import dataclass, field
 
 import numpy as np

@@ -113,13 +113,13 @@ def manipulator_out(m) -> dict[str, Any]:
 
 
 def design_out(d) -> dict[str, Any]:
-    return {"manipulator": manipulator_out(d.manipulator), "critical_force": _num(d.critical_force),
+    return {**outcome(d), "manipulator": manipulator_out(d.manipulator), "critical_force": _num(d.critical_force),
             "loads": _nums(d.loads), "multiplicity": int(d.multiplicity), "active": list(d.active),
             "initial_critical_force": _f(d.initial_critical_force), "feasible": bool(d.feasible),
-            "solver": {"status": d.status, "iterations": int(d.iterations)}}
+            "solver": {"status": d.solver.status, "iterations": int(d.solver.iterations)}}
 
 
 def preload_design_out(r) -> dict[str, Any]:
-    return {"manipulator": manipulator_out(r.manipulator), "preloads": _nums(r.preloads), "q": _nums(r.q),
+    return {**outcome(r), "manipulator": manipulator_out(r.manipulator), "preloads": _nums(r.preloads), "q": _nums(r.q),
             "margin": _num(r.margin), "tip": _nums(r.tip), "energy": _num(r.energy),
-            "solver": {"status": r.status, "iterations": int(r.iterations)}}
+            "solver": {"status": r.solver.status, "iterations": int(r.solver.iterations)}}

@@ -1,2 +1,16 @@
 """Design and control: the strongest chain, preloads (for a pose, a critical load, a stiffness, a trajectory),
-load capacity, the arm as a force sensor."""
+sensitivities, load capacity, the preload follower and the arm as a force sensor.
+
+One module per concept:
+
+* :mod:`.strongest` - :func:`maximize_critical_force`, :class:`Design`;
+* :mod:`.preloads` - :func:`preloads_for_pose` (:class:`PreloadDesign`), :func:`preloads_for_critical_force`,
+  :func:`rest_length_bounds` and the keywords every preload problem shares;
+* :mod:`.sensitivity` - :func:`critical_load_sensitivity`, :func:`equilibrium_sensitivity`;
+* :mod:`.stiffness_shaping` - :func:`preloads_for_stiffness`, :class:`StiffnessDesign`;
+* :mod:`.load_capacity` - :func:`load_capacity`, :class:`LoadCapacity`;
+* :mod:`.preload_control` - :class:`PreloadController` (:class:`PreloadStep`) and :func:`preloads_for_trajectory`
+  (:class:`PreloadPlan`);
+* :mod:`.follower` - :class:`PreloadFollower` (:class:`FollowerStep`, :class:`Snap`);
+* :mod:`.force_sensor` - :func:`estimate_tip_force`, :class:`ForceEstimate`.
+"""

@@ -1,7 +1,7 @@
-"""The arm as a force sensor: the tip force from measured joint angles (issue 17, item 3).
+"""The arm as a force sensor: the tip force from measured joint angles.
 
 At a static equilibrium under a tip force ``F`` and nothing else, the spring torques balance it
-(eq. 6 / 8, conventions.md)::
+(eq. 6 / 8, ``docs/model.md``)::
 
     tau(q) = grad E(q) = J(q)^T F          (n equations, 2 unknowns)
 
@@ -21,13 +21,14 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
 from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
+from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 
 __all__ = ["ForceEstimate", "estimate_tip_force"]
@@ -55,13 +56,13 @@ MAX_STEP = 0.5
 
 
 @dataclass(frozen=True)
-class ForceEstimate:
+class ForceEstimate(Outcome):
     """The tip force estimated from joint angles (:func:`estimate_tip_force`).
 
     Attributes
     ----------
     force : ndarray (2,)
-        The estimate ``[Fx, Fy]`` (force units; the tip force holding the equilibrium, conventions.md).
+        The estimate ``[Fx, Fy]`` (force units; the tip force holding the equilibrium, ``docs/model.md``).
     covariance : ndarray (2, 2) or None
         Covariance of ``force`` propagated from the joint-angle noise (linearised; ``None`` without
         ``sigma_q``).
@@ -90,17 +91,29 @@ class ForceEstimate:
     hidden_covariance : ndarray (u, u) or None
         Covariance of the estimated unmeasured angles (rad^2; ``(0, 0)`` when every joint is measured;
         ``None`` without ``sigma_q``).
-    success : bool
-        False only when the re-weighting did not settle (``status == "reweighting_not_converged"``), which
-        happens for angles far from any equilibrium under a tip force (``chi2`` far beyond ``dof``, the
-        weight swinging with the estimate): the estimate is then the one-step one, generalised least
-        squares with the weight at the unweighted estimate, its covariance and ``chi2`` at that point.
     status : str
-        ``"least_squares"``, ``"gauss_newton"`` (unmeasured joints), ``"generalized_least_squares"``,
-        ``"weighted_gauss_newton"`` (with ``sigma_q``), or ``"reweighting_not_converged"``.
+        How the estimate was obtained (:attr:`STATUSES`): ``"least_squares"``, ``"gauss_newton"`` (unmeasured
+        joints), ``"generalized_least_squares"``, ``"weighted_gauss_newton"`` (with ``sigma_q``), or
+        ``"reweighting_not_converged"``, the one status that is not a success: the re-weighting did not settle,
+        which happens for angles far from any equilibrium under a tip force (``chi2`` far beyond ``dof``, the
+        weight swinging with the estimate); the estimate is then the one-step one, generalised least squares
+        with the weight at the unweighted estimate, its covariance and ``chi2`` at that point.
     iterations : int
         Gauss-Newton / re-weighting iterations made.
+    message : str
+        The status in a sentence, with the residual (and ``chi2`` with ``sigma_q``).
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "least_squares": "every joint measured, no noise model: the least-squares force (eq. 8)",
+        "gauss_newton": "unmeasured joints, no noise model: the force and the unmeasured angles by Gauss-Newton",
+        "generalized_least_squares": "every joint measured, with sigma_q: generalised least squares with the "
+                                     "residual's covariance at the estimate",
+        "weighted_gauss_newton": "unmeasured joints, with sigma_q: the re-weighted Gauss-Newton estimate",
+        "reweighting_not_converged": "the re-weighting did not settle (angles far from any equilibrium under a tip "
+                                     "force): the one-step estimate",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset(set(STATUSES) - {"reweighting_not_converged"})
 
     force: np.ndarray
     covariance: np.ndarray | None
@@ -113,9 +126,23 @@ class ForceEstimate:
     q: np.ndarray
     measured: tuple[int, ...]
     hidden_covariance: np.ndarray | None
-    success: bool
     status: str
     iterations: int
+
+    def __post_init__(self) -> None:
+        freeze(self, copy=False)
+
+    @property
+    def message(self) -> str:
+        """A sentence: how the force was estimated, and how well the angles fit."""
+        how = {"least_squares": "least-squares estimate", "gauss_newton": "Gauss-Newton estimate",
+               "generalized_least_squares": "generalised least-squares estimate",
+               "weighted_gauss_newton": "weighted Gauss-Newton estimate",
+               "reweighting_not_converged": "the re-weighting did not settle: one-step estimate"}[self.status]
+        text = f"{how}, residual torque {self.residual_norm:.3g}"
+        if self.chi2 is not None:
+            text += f", chi2 {self.chi2:.3g} on {self.dof} degrees of freedom"
+        return text
 
     @property
     def fx(self) -> float:
@@ -131,10 +158,10 @@ class ForceEstimate:
         return None if self.covariance is None else np.sqrt(np.diag(self.covariance))
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``force`` ``{fx, fy}``, ``covariance`` (2 x 2 lists or null), ``residual_torque``,
-        ``residual_norm``, ``chi2``, ``dof``, ``p_value``, ``joint_chi2``, ``q``, ``measured``, ``hidden_covariance``,
-        ``success``, ``status``, ``iterations``; every number finite (:mod:`tensegrity_opt.serialize`)."""
-        return {"force": {"fx": number(self.fx), "fy": number(self.fy)},
+        """JSON form: ``success``, ``status``, ``message``, ``force`` ``{fx, fy}``, ``covariance`` (2 x 2 lists or
+        null), ``residual_torque``, ``residual_norm``, ``chi2``, ``dof``, ``p_value``, ``joint_chi2``, ``q``,
+        ``measured``, ``hidden_covariance``, ``iterations``; every number finite (:mod:`tensegrity_opt.serialize`)."""
+        return {**self.outcome(), "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "covariance": None if self.covariance is None else numbers(self.covariance),
                 "residual_torque": numbers(self.residual_torque), "residual_norm": number(self.residual_norm),
                 "chi2": None if self.chi2 is None else number(self.chi2), "dof": int(self.dof),
@@ -142,7 +169,7 @@ class ForceEstimate:
                 "joint_chi2": None if self.joint_chi2 is None else numbers(self.joint_chi2),
                 "q": numbers(self.q), "measured": [int(i) for i in self.measured],
                 "hidden_covariance": None if self.hidden_covariance is None else numbers(self.hidden_covariance),
-                "success": bool(self.success), "status": str(self.status), "iterations": int(self.iterations)}
+                "iterations": int(self.iterations)}
 
 
 # ---------------------------------------------------------------------------------------------- inputs
@@ -308,7 +335,7 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
     """The tip force ``F`` from joint angles, by least squares on the equilibrium ``grad E = J^T F``.
 
     With ``r(q, F) = grad E(q) - J(q)^T F`` (the residual torque; ``tau = grad E`` is the torque the
-    springs take from outside, ``-M`` of eq. 1, conventions.md) and every joint measured:
+    springs take from outside, ``-M`` of eq. 1, ``docs/model.md``) and every joint measured:
 
     * ``sigma_q=None``: ``F = argmin |r(q, F)|^2`` (eq. 8: ``F = (J J^T)^-1 J grad E``), the residual
       and its norm; no statistics.
@@ -320,7 +347,8 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
       ``REWEIGHT_TOL`` = 1e-6 of every unknown's standard deviation or below ``STEP_TOL``; ``r`` is
       linear in ``F``, so each step is exact for its weight; one or two steps under the null
       hypothesis). When it does not settle in ``MAX_REWEIGHT`` steps (angles far from any equilibrium,
-      the weight swinging with the estimate) the one-step estimate is returned with ``success=False``.
+      the weight swinging with the estimate) the one-step estimate is returned with
+      ``status="reweighting_not_converged"`` (``success=False``).
       Its covariance
       is ``(J W J^T)^-1`` (linearised: exact to first order in ``Sigma_q``) and
       ``chi2 = r^T W r`` has ``n - 2`` degrees of freedom under the null hypothesis (tip force only).
@@ -452,7 +480,8 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
             if near.size:
                 raise NoEquilibriumError(
                     f"no configuration inside the physical range explains these angles: the unmeasured angle "
-                    f"q[{int(near[0])}] runs into its joint limit (|r| = {np.linalg.norm(r):.3g})", status="joint_limit")
+                    f"q[{int(near[0])}] runs into its joint limit (|r| = {np.linalg.norm(r):.3g})",
+                    status="joint_limit")
             raise SolverError(f"Gauss-Newton for the {u} unmeasured angle(s) did not converge in {MAX_ITER} "
                               f"iterations (|r| = {np.linalg.norm(r):.3g}: these angles are far from any "
                               "equilibrium under a tip force)", status="max_iterations")
@@ -470,7 +499,6 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
     r = tau - J.T @ F
     dof = n - 2 - u
     cov = hcov = chi2 = p_value = joint = None
-    success = True
 
     # ---- generalised least squares, the residual covariance at the estimate
     if Sigma is not None:
@@ -521,9 +549,9 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
             p_value = float(chdtrc(dof, chi2))
         status = "generalized_least_squares" if u == 0 else "weighted_gauss_newton"
         if not settled:
-            success, status = False, "reweighting_not_converged"
+            status = "reweighting_not_converged"
 
     return ForceEstimate(force=np.asarray(F, float).copy(), covariance=cov, residual_torque=r.copy(),
                          residual_norm=float(np.linalg.norm(r)), chi2=chi2, dof=dof, p_value=p_value, joint_chi2=joint,
                          q=q.copy(), measured=tuple(int(i) for i in idx), hidden_covariance=hcov,
-                         success=success, status=status, iterations=iterations)
+                         status=status, iterations=iterations)

@@ -15,7 +15,7 @@ bounds and a per-step rate limit, with a stability margin (the smallest eigenval
    converges to a strict local minimum (the inertia of the KKT matrix) and its solution satisfies
    everything: the bounds, the rate box, the range, the margin.
 2. **IPOPT** otherwise, or for ``objective="margin"`` (largest margin) and ``"energy"`` (least spring
-   energy): :func:`~tensegrity_opt.analyses.design.optimal.choose_preloads` with the previous rest lengths as
+   energy): :func:`~tensegrity_opt.analyses.design.preloads.preloads_for_pose` with the previous rest lengths as
    the nominal ones, the bounds intersected with the rate box, warm-started from the previous
    configuration.
 3. Where neither finds admissible rest lengths the step is **infeasible**: reported with the best
@@ -24,7 +24,7 @@ bounds and a per-step rate limit, with a stability margin (the smallest eigenval
 
 A step's result is the equilibrium itself: ``q``, the rest lengths, the tip and the margin, with
 ``residual`` the scaled KKT residual; every accepted step is an equilibrium of the chain with those rest
-lengths at the target (the residual), stable with the margin. :func:`plan_preloads` runs a controller
+lengths at the target (the residual), stable with the margin. :func:`preloads_for_trajectory` runs a controller
 over a trajectory and verifies each step by the forward quasi-static solve
 (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` from the previous step's
 configuration: it must land on the target, stable).
@@ -34,35 +34,34 @@ from __future__ import annotations
 
 import math
 import time
-from dataclasses import dataclass, field
-from typing import Any
+from dataclasses import dataclass
+from typing import Any, ClassVar
 
 import numpy as np
 
 from ...errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics.inverse_statics import inverse_statics
+from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit
-from .optimal import choose_preloads
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
+from .follower import loaded_rest
+from .preloads import LAND_TOL, OBJECTIVES, checked_vector, preloads_for_pose
 
-__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "OBJECTIVES"]
+__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "preloads_for_trajectory"]
 
-#: Objectives: least change from the previous step (Newton, IPOPT where a bound is active), largest
-#: stability margin, least spring energy (IPOPT).
-OBJECTIVES = ("change", "margin", "energy")
 #: KKT residual (max-norm, force and length units) below which the Newton step has converged.
 NEWTON_TOL = 1e-10
 #: Weight of ``|q - q_prev|^2`` in the least-change objective (regularises the joint angles' null space).
 Q_WEIGHT = 1e-8
-#: Tip error (times ``max b``) within which a forward solve lands on the target.
-LAND_TOL = 1e-6
+#: The solver detail of a Newton step, per iteration count (immutable, so shared).
+_NEWTON: dict[int, SolverInfo] = {}
 
 
-@dataclass
-class PreloadStep:
-    """One control step.
+@dataclass(frozen=True)
+class PreloadStep(Outcome):
+    """One control step (:meth:`PreloadController.step`).
 
     Attributes
     ----------
@@ -83,11 +82,25 @@ class PreloadStep:
         pose, ``rest_lengths`` what reaches it).
     method : str
         ``"newton"`` (the compiled KKT step), ``"ipopt"`` (the fallback or the objective), ``"none"``.
-    status : str
-    iterations : int
+    solver : SolverInfo
+        The solver's status (``"Newton_Converged"``, IPOPT's return status; for an infeasible step the status
+        of the failed solve, ``"none"`` when there is none) and its iterations.
     residual : float or None
-        Max-norm of the equilibrium and pose equations at the result.
+        Max-norm of the equilibrium and pose equations at the result (Newton steps).
+    target : ndarray (2,)
+    message : str
+        How the step was solved, or why it is infeasible.
+    status : str
+        ``"feasible"`` or ``"infeasible"`` (:attr:`STATUSES`, from ``feasible``).
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "feasible": "rest lengths meeting every requirement were found: the tip on the target, stable with the "
+                    "margin, inside the bounds and the rate limit",
+        "infeasible": "no admissible rest lengths: q and tip are the best reachable pose (rest_lengths what reaches "
+                      "it); the controller stays where it was",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"feasible"})
 
     rest_lengths: np.ndarray
     q: np.ndarray
@@ -97,27 +110,40 @@ class PreloadStep:
     energy: float
     feasible: bool
     method: str
-    status: str
-    iterations: int
+    solver: SolverInfo
     residual: float | None
-    target: np.ndarray = field(default_factory=lambda: np.zeros(2))
+    target: np.ndarray
+    message: str
+
+    def __post_init__(self) -> None:
+        # the controller passes arrays it owns: read-only in place (this is on the control loop's path)
+        self.rest_lengths.setflags(write=False)
+        self.q.setflags(write=False)
+        self.tip.setflags(write=False)
+        self.target.setflags(write=False)
+
+    @classmethod
+    def _of(cls, **fields: Any) -> PreloadStep:
+        """The controller's constructor, every field by keyword: the frozen dataclass's ``__init__`` sets each
+        field through ``object.__setattr__``, which costs a twentieth of a warm step."""
+        step = object.__new__(cls)
+        step.__dict__.update(fields)
+        step.__post_init__()
+        return step
+
+    @property
+    def status(self) -> str:
+        return "feasible" if self.feasible else "infeasible"
 
     def to_dict(self) -> dict[str, Any]:
-        return {"rest_lengths": [numbers(r) for r in self.rest_lengths], "q": numbers(self.q),
+        """JSON form: ``success``, ``status``, ``message``, ``rest_lengths``, ``q``, ``tip``, ``end_angle``,
+        ``margin`` and ``energy`` (null: infeasible), ``feasible``, ``method``, ``solver`` ``{status,
+        iterations}``, ``residual`` (null: not a Newton step), ``target``."""
+        return {**self.outcome(), "rest_lengths": [numbers(r) for r in self.rest_lengths], "q": numbers(self.q),
                 "tip": numbers(self.tip), "end_angle": number(self.end_angle), "margin": nullable(self.margin),
                 "energy": nullable(self.energy), "feasible": self.feasible, "method": self.method,
-                "status": self.status, "iterations": int(self.iterations), "residual": None if self.residual is None else nullable(self.residual),
+                "solver": self.solver.to_dict(), "residual": None if self.residual is None else nullable(self.residual),
                 "target": numbers(self.target)}
-
-
-def _vec(v, size: int, name: str) -> np.ndarray:
-    try:
-        a = np.asarray(v, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be {size} numbers, got {v!r}", field=name) from None
-    if a.size != size or not np.all(np.isfinite(a)):
-        raise InvalidParameterError(f"{name} must be {size} finite numbers, got {v!r}", field=name)
-    return a
 
 
 class PreloadController:
@@ -158,7 +184,7 @@ class PreloadController:
         if not (isinstance(margin, (int, float)) and math.isfinite(margin) and margin >= 0):
             raise InvalidParameterError(f"margin must be finite and >= 0, got {margin!r}", field="margin")
         self.m, self.n, self.objective, self.margin = m, n, objective, float(margin)
-        self.load = _vec(load, 2, "load")
+        self.load = checked_vector(load, 2, "load")
         lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
         self.lo = self._per_spring(lo, "bounds")
         self.hi = self._per_spring(hi, "bounds")
@@ -204,13 +230,8 @@ class PreloadController:
             if q is None:
                 raise InvalidParameterError("start must be an Equilibrium or n joint angles", field="start")
             return q
-        from ..equilibria.rest import rest_configuration
-
-        rest = rest_configuration(self.m)
-        if not np.any(self.load):
-            return rest.q.copy()
         try:
-            eq = solve_equilibrium_under_force(self.m, *self.load, q0=rest.q)
+            eq = loaded_rest(self.m, self.load)
         except NoEquilibriumError as exc:
             raise NoEquilibriumError(f"no equilibrium under the load from the rest configuration: {exc.message}; "
                                      "give a start", field="load") from None
@@ -230,8 +251,8 @@ class PreloadController:
         """Rest lengths for the tip at ``target = (x, y)`` (and the last link at ``end_angle``, rad) under
         ``load`` (default the controller's), from the current state; the state moves there when the step
         is feasible."""
-        target = _vec(target, 2, "target")
-        F = self.load if load is None else _vec(load, 2, "load")
+        target = checked_vector(target, 2, "target")
+        F = self.load if load is None else checked_vector(load, 2, "load")
         if end_angle is not None and not math.isfinite(float(end_angle)):
             raise InvalidParameterError("end_angle must be finite", field="end_angle")
         lo, hi = self.lo, self.hi
@@ -270,16 +291,18 @@ class PreloadController:
         if int(np.sum(kk > 0)) != 3 * n or int(np.sum(kk < 0)) != inv.rows:
             return None                     # a KKT point that is not a local minimum of the least change
         self.mu[angle] = y[3 * n:].copy()
-        return PreloadStep(ell.reshape(n, 2).copy(), q.copy(), tip, float(np.sum(q)), margin, E, True, "newton",
-                           "Newton_Converged", iters, resid, target.copy())
+        solver = _NEWTON.get(iters) or _NEWTON.setdefault(iters, SolverInfo("Newton_Converged", iters))
+        # q and ell are views of the step's own iterate y: no copy needed before they turn read-only
+        return PreloadStep._of(rest_lengths=ell.reshape(n, 2), q=q, tip=tip, end_angle=float(np.sum(q)),
+                               margin=margin, energy=E, feasible=True, method="newton", solver=solver,
+                               residual=resid, target=target.copy(), message="the least-change Newton step converged")
 
     def _ipopt(self, target, F, end_angle, lo, hi) -> PreloadStep:
         nominal = self.manipulator()
         to_spec = lambda v: np.concatenate([v[0::2], v[1::2]])   # noqa: E731  segment-major -> L1 block, L2 block
-        objective = "nominal" if self.objective == "change" else self.objective
         try:
-            d = choose_preloads(nominal, target, F, objective, margin=self.margin, bounds=(to_spec(lo), to_spec(hi)),
-                                end_angle=end_angle, q0=self.q)
+            d = preloads_for_pose(nominal, target, load=F, objective=self.objective, margin=self.margin,
+                                  bounds=(to_spec(lo), to_spec(hi)), end_angle=end_angle, start=self.q)
         except TimeLimitError:
             raise
         except InfeasibleDesignError as exc:
@@ -288,8 +311,10 @@ class PreloadController:
             return self._best(target, F, exc)
         self.mu.clear()                     # the multipliers of the least-change problem start again
         q = d.q
-        return PreloadStep(d.preloads.copy(), q.copy(), d.tip.copy(), float(np.sum(q)), float(d.margin),
-                           float(d.energy), True, "ipopt", str(d.status), int(d.iterations), None, target.copy())
+        return PreloadStep._of(rest_lengths=d.preloads.copy(), q=q.copy(), tip=d.tip.copy(),
+                               end_angle=float(np.sum(q)), margin=float(d.margin), energy=float(d.energy),
+                               feasible=True, method="ipopt", solver=d.solver, residual=None, target=target.copy(),
+                               message=f"IPOPT ({self.objective}) converged, verified by the forward solve")
 
     def _best(self, target, F, exc: TensegrityError) -> PreloadStep:
         """The best reachable pose of an infeasible step: the forward equilibrium with the IPOPT's best rest
@@ -307,13 +332,15 @@ class PreloadController:
                 pass
         m = self.manipulator(ell)
         tip = m.tip(q)
-        return PreloadStep(ell.reshape(n, 2).copy(), q.copy(), tip, float(np.sum(q)), math.nan, math.nan,
-                           False, "none", f"infeasible: {exc.message}", 0, None, np.asarray(target, float).copy())
+        return PreloadStep._of(rest_lengths=ell.reshape(n, 2).copy(), q=q.copy(), tip=tip,
+                               end_angle=float(np.sum(q)), margin=math.nan, energy=math.nan, feasible=False,
+                               method="none", solver=SolverInfo(str(exc.status) if exc.status else "none", 0),
+                               residual=None, target=np.asarray(target, float).copy(), message=exc.message)
 
 
-@dataclass
-class PreloadPlan:
-    """The result of :func:`plan_preloads` (``K`` steps).
+@dataclass(frozen=True)
+class PreloadPlan(Outcome):
+    """The result of :func:`preloads_for_trajectory` (``K`` steps done).
 
     Attributes
     ----------
@@ -326,14 +353,28 @@ class PreloadPlan:
     verified : ndarray (K,) of bool
         The forward quasi-static solve from the previous step's configuration with this step's rest lengths
         lands on the target (``LAND_TOL max b``), stable (False everywhere with ``verify=False``: not checked).
-    method : list of str
+    method : tuple of str
         Per step ``"newton"``, ``"ipopt"`` or ``"none"``.
     status : str
         ``"complete"``, ``"infeasible_steps"`` (some steps infeasible: see ``feasible``), ``"time_limit"``
-        (the steps done so far).
-    steps : list of PreloadStep
+        (the steps done so far) (:attr:`STATUSES`).
+    steps : tuple of PreloadStep
     seconds : float
+    targets : ndarray (K, 2)
+        The targets of the steps done.
+    margin_required : float
+    objective : str
+    message : str
+        The status in a sentence.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every step is feasible",
+        "infeasible_steps": "some steps are infeasible (see feasible): each answered with the best reachable pose, "
+                            "the next starting from the last feasible state",
+        "time_limit": "the time limit ran out: the steps done so far",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
 
     rest_lengths: np.ndarray
     q: np.ndarray
@@ -342,20 +383,31 @@ class PreloadPlan:
     margin: np.ndarray
     feasible: np.ndarray
     verified: np.ndarray
-    method: list
+    method: tuple[str, ...]
     status: str
-    steps: list
+    steps: tuple[PreloadStep, ...]
     seconds: float
     targets: np.ndarray
     margin_required: float = 0.0
     objective: str = "change"
 
+    def __post_init__(self) -> None:
+        freeze(self, copy=False)
+
     @property
-    def success(self) -> bool:
-        return self.status == "complete"
+    def message(self) -> str:
+        """A sentence: how many steps, feasible and verified."""
+        K = len(self.steps)
+        done = f"{K} step(s), {int(np.sum(self.feasible))} feasible, {int(np.sum(self.verified))} verified"
+        if self.status == "time_limit":
+            return f"the time limit ran out after {done}"
+        return done
 
     def to_dict(self) -> dict[str, Any]:
-        return {"status": self.status, "success": self.success, "seconds": number(self.seconds),
+        """JSON form: ``success``, ``status``, ``message``, ``seconds``, the per-step arrays (``rest_lengths``,
+        ``q``, ``tip``, ``end_angle``, ``margin`` (null: infeasible), ``feasible``, ``verified``, ``method``),
+        ``targets``, ``margin_required``, ``objective`` and ``steps`` (:meth:`PreloadStep.to_dict`)."""
+        return {**self.outcome(), "seconds": number(self.seconds),
                 "rest_lengths": [[numbers(r) for r in s] for s in self.rest_lengths],
                 "q": [numbers(r) for r in self.q], "tip": [numbers(r) for r in self.tip],
                 "end_angle": numbers(self.end_angle), "margin": [nullable(v) for v in self.margin],
@@ -365,9 +417,9 @@ class PreloadPlan:
                 "steps": [s.to_dict() for s in self.steps]}
 
 
-def plan_preloads(m: Manipulator, targets, loads=None, *, end_angles=None, bounds=None, rate_limit=None,
-                  margin: float = 1e-3, objective: str = "change", weights=None, start=None,
-                  verify: bool = True, timeout: float | None = None) -> PreloadPlan:
+def preloads_for_trajectory(m: Manipulator, targets, *, loads=None, end_angles=None, bounds=None, rate_limit=None,
+                            margin: float = 1e-3, objective: str = "change", weights=None, start=None,
+                            verify: bool = True, timeout: float | None = None) -> PreloadPlan:
     """Rest lengths for a trajectory of tip poses, on one stable branch (module docstring).
 
     Parameters
@@ -433,11 +485,12 @@ def plan_preloads(m: Manipulator, targets, loads=None, *, end_angles=None, bound
     def arr(get, shape):
         return np.array([get(s) for s in steps], dtype=float).reshape((P, *shape))
 
-    return PreloadPlan(arr(lambda s: s.rest_lengths, (n, 2)), arr(lambda s: s.q, (n,)), arr(lambda s: s.tip, (2,)),
-                       arr(lambda s: s.end_angle, ()), arr(lambda s: s.margin, ()),
-                       np.array([s.feasible for s in steps], dtype=bool), np.array(verified, dtype=bool),
-                       [s.method for s in steps], status, steps, time.perf_counter() - t0, T[:P].copy(),
-                       float(margin), objective)
+    return PreloadPlan(rest_lengths=arr(lambda s: s.rest_lengths, (n, 2)), q=arr(lambda s: s.q, (n,)),
+                       tip=arr(lambda s: s.tip, (2,)), end_angle=arr(lambda s: s.end_angle, ()),
+                       margin=arr(lambda s: s.margin, ()), feasible=np.array([s.feasible for s in steps], dtype=bool),
+                       verified=np.array(verified, dtype=bool), method=tuple(s.method for s in steps), status=status,
+                       steps=tuple(steps), seconds=time.perf_counter() - t0, targets=T[:P].copy(),
+                       margin_required=float(margin), objective=objective)
 
 
 def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:

@@ -35,9 +35,11 @@ from typing import Any
 import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
-from ...analyses.design.preload_control import OBJECTIVES, PreloadPlan, plan_preloads
+from ...analyses.design.preload_control import PreloadPlan, preloads_for_trajectory
+from ...analyses.design.preloads import OBJECTIVES
 from ...analyses.paths.simulation import Simulation, simulate
-from ...analyses.design.stiffness_design import load_capacity, preloads_for_stiffness
+from ...analyses.design.load_capacity import load_capacity
+from ...analyses.design.stiffness_shaping import preloads_for_stiffness
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .common import HELP_FORMAT, add_manipulator_options, finite_float, fmt_q, positive_int
@@ -169,10 +171,11 @@ def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any]:
 
 def plan_from_args(args: argparse.Namespace, m: Manipulator) -> PreloadPlan:
     T, loads, angles = _plan_inputs(args)
-    return plan_preloads(m, T, loads, end_angles=angles, bounds=None if args.bounds is None else tuple(args.bounds),
-                         rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
-                         start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
-                         verify=not args.no_verify, timeout=args.timeout)
+    return preloads_for_trajectory(m, T, loads=loads, end_angles=angles,
+                                   bounds=None if args.bounds is None else tuple(args.bounds),
+                                   rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
+                                   start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
+                                   verify=not args.no_verify, timeout=args.timeout)
 
 
 def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
@@ -368,7 +371,7 @@ def _cmd_stiffness(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
                                eig_bounds=None if args.eig_bounds is None else tuple(args.eig_bounds),
                                load=tuple(args.load), margin=args.margin)
     lines = [f"Rest lengths for the tip at ({args.target[0]:g}, {args.target[1]:g}) under {tuple(args.load)}, n = {m.n}: "
-             f"{d.status}" + ("" if d.exact or K is None else f", not exact (residual {d.residual:.3g})"),
+             f"{d.solver.status}" + ("" if d.exact or K is None else f", not exact (residual {d.residual:.3g})"),
              f"K = [[{d.K[0, 0]:.6g}, {d.K[0, 1]:.6g}], [{d.K[1, 0]:.6g}, {d.K[1, 1]:.6g}]] (force / length), "
              f"eigenvalues {_fmt_g(d.eigenvalues)}, margin {d.margin:.4g}",
              "rest lengths (L1_0, L2_0) per segment: " + "; ".join(f"{a:.6g}, {b:.6g}" for a, b in d.rest_lengths),

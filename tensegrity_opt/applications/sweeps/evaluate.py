@@ -17,7 +17,7 @@ import numpy as np
 from ...analyses.equilibria.all_equilibria import find_equilibria
 from ...analyses.paths.atlas import atlas_target
 from ...analyses.equilibria.buckling import critical_force
-from ...analyses.design.optimal import maximize_critical_force
+from ...analyses.design.strongest import maximize_critical_force
 from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
 from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.equilibria.stiffness import cartesian_stiffness
@@ -104,8 +104,8 @@ def _design(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -
     values = {"a": dm.a, "b": dm.b, "k": dm.k1, "L0": dm.L1_0}
     out = {"critical_force": nullable(d.critical_force), "multiplicity": int(d.multiplicity),
            "initial_critical_force": nullable(d.initial_critical_force), "loads": nullables(d.loads),
-           "active": [str(a) for a in d.active], "status": str(d.status), "success": bool(d.success),
-           "iterations": int(d.iterations)}
+           "active": [str(a) for a in d.active], "status": str(d.solver.status), "success": bool(d.success),
+           "iterations": int(d.solver.iterations)}
     out.update({f"{v}_opt": nullables(values[v]) for v in opts["vary"]})
     return out
 

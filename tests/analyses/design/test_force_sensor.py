@@ -1,6 +1,6 @@
-"""The arm as a force sensor (issue 17, item 3): :func:`tensegrity_opt.estimate_tip_force`.
+"""The arm as a force sensor: :func:`tensegrity_opt.estimate_tip_force`.
 
-Every expected number comes from the independent numpy model ``tests/reference_model.py`` (analytic
+Every expected number comes from the independent numpy model ``tests/support/reference_model.py`` (analytic
 gradient, tip Jacobian and Hessian in relative angles; no ``tensegrity_opt``), never from the code
 under test: the equilibria are found by the library's own solvers (IPOPT / the displacement search, a
 code path the estimator does not use) and then re-polished by the reference's Newton method, the
@@ -13,8 +13,6 @@ from __future__ import annotations
 
 import json
 import math
-import os
-import sys
 
 import numpy as np
 import pytest
@@ -401,7 +399,9 @@ def test_to_dict_is_json():
     q = equilibrium_under(PAPER5, (-0.15, 0.25))
     d = to.estimate_tip_force(PAPER5, q[[0, 1, 3, 4]], sigma_q=1e-3, measured=[0, 1, 3, 4]).to_dict()
     json.dumps(d, allow_nan=False)
+    assert list(d)[:3] == ["success", "status", "message"]
     assert set(d) == {"force", "covariance", "residual_torque", "residual_norm", "chi2", "dof", "p_value",
-                      "joint_chi2", "q", "measured", "hidden_covariance", "success", "status", "iterations"}
+                      "joint_chi2", "q", "measured", "hidden_covariance", "success", "status", "message",
+                      "iterations"}
     assert d["measured"] == [0, 1, 3, 4] and len(d["q"]) == 5 and len(d["hidden_covariance"]) == 1
     assert d["status"] == "weighted_gauss_newton" and d["dof"] == 2

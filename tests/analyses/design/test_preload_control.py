@@ -1,6 +1,6 @@
-"""Preload trajectories (analyses/preload_control.py) against independent routes.
+"""Preload trajectories (analyses/design/preload_control.py) against independent routes.
 
-* every planned step is re-solved forward by the numpy reference model (tests/reference_model.py: its own
+* every planned step is re-solved forward by the numpy reference model (tests/support/reference_model.py: its own
   energy, Newton under the dead load from the previous step's configuration) and must land on the target,
   stable by its own Hessian;
 * the least-change step equals scipy SLSQP on the same problem written with the reference model;
@@ -15,7 +15,7 @@ import pytest
 import scipy.optimize as so
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
+from tensegrity_opt.analyses.design.preload_control import PreloadController, preloads_for_trajectory
 
 from reference_model import Chain
 
@@ -40,7 +40,7 @@ def arc(m, F, K=30, amp=(-0.15, 0.3)):
 @pytest.mark.parametrize("name,m,F", CHAINS, ids=[c[0] for c in CHAINS])
 def test_every_step_lands_on_its_target_stable_in_the_reference_model(name, m, F):
     traj = arc(m, F)
-    plan = plan_preloads(m, traj, F, rate_limit=0.1)
+    plan = preloads_for_trajectory(m, traj, loads=F, rate_limit=0.1)
     assert plan.status == "complete" and plan.feasible.all() and plan.verified.all()
     q_prev = PreloadController(m, load=F).q
     for k in range(len(traj)):
@@ -106,9 +106,9 @@ def test_a_least_change_step_is_the_slsqp_optimum(name, m, F):
 def test_bounds_rate_and_margin_hold_and_the_margin_keeps_the_branch():
     m, F = PAPER, (-0.02, 0.01)
     traj = arc(m, F, K=25, amp=(-0.4, 0.8))
-    free = plan_preloads(m, traj, F)
+    free = preloads_for_trajectory(m, traj, loads=F)
     need = float(np.percentile(free.margin, 60))          # above the least-change solution's margin somewhere
-    plan = plan_preloads(m, traj, F, margin=need, rate_limit=0.08, bounds=(0.5, 1.6))
+    plan = preloads_for_trajectory(m, traj, loads=F, margin=need, rate_limit=0.08, bounds=(0.5, 1.6))
     assert plan.feasible.all() and plan.verified.all()
     assert "ipopt" in plan.method                          # where the least-change step was not stable enough
     assert all(st.to_dict()["residual"] is None for st in plan.steps if st.method == "ipopt")     # no residual
@@ -124,10 +124,12 @@ def test_an_unreachable_step_is_reported_with_the_best_pose_and_the_plan_goes_on
     ctl = PreloadController(m)
     tip0 = m.tip(ctl.q)
     traj = np.array([tip0 + [-0.05, 0.1], [10.0, 0.0], tip0 + [-0.1, 0.2]])
-    plan = plan_preloads(m, traj, F)
+    plan = preloads_for_trajectory(m, traj, loads=F)
     assert plan.status == "infeasible_steps"
     assert plan.feasible.tolist() == [True, False, True] and plan.verified.tolist() == [True, False, True]
-    assert plan.method[1] == "none" and "reach" in plan.steps[1].status
+    assert plan.method[1] == "none" and "reach" in plan.steps[1].message
+    assert plan.steps[1].status == "infeasible" and not plan.steps[1].success and plan.steps[0].success
+    assert not plan.success and "2 feasible" in plan.message
     np.testing.assert_allclose(plan.tip[1], plan.tip[0], atol=1e-9)      # stayed at the last feasible pose
     d = plan.to_dict()
     assert d["feasible"] == [True, False, True] and d["margin"][1] is None
@@ -143,10 +145,10 @@ def test_validation_names_the_field():
             PreloadController(PAPER, **kw)
         assert e.value.field == fld
     with pytest.raises(to.InvalidParameterError) as e:
-        plan_preloads(PAPER, [[1.0, np.nan]])
+        preloads_for_trajectory(PAPER, [[1.0, np.nan]])
     assert e.value.field == "targets"
     with pytest.raises(to.InvalidParameterError) as e:
-        plan_preloads(PAPER, [[7.0, 0.5]], loads=[[0.0, 0.0], [1.0, 0.0]])
+        preloads_for_trajectory(PAPER, [[7.0, 0.5]], loads=[[0.0, 0.0], [1.0, 0.0]])
     assert e.value.field == "loads"
     with pytest.raises(to.InvalidParameterError) as e:
         PreloadController(PAPER).step([7.0, 0.5], end_angle=float("inf"))
@@ -168,9 +170,31 @@ def test_where_the_least_change_rule_would_snap_the_plan_stays_stable_on_its_bra
         worst = min(worst, float(np.linalg.eigvalsh(ref_chain(m, ell).lagrangian_hess(q, F))[0]))
     assert worst < -0.05                                  # the least-change path loses stability
     need = 0.05
-    plan = plan_preloads(m, traj, F, margin=need)
+    plan = preloads_for_trajectory(m, traj, loads=F, margin=need)
     assert plan.feasible.all() and plan.verified.all() and "ipopt" in plan.method
     for k in range(K):
         w = np.linalg.eigvalsh(ref_chain(m, plan.rest_lengths[k]).lagrangian_hess(plan.q[k], F))
         assert w[0] >= need - 1e-6
     assert np.abs(np.diff(plan.q, axis=0)).max() < 0.2   # continuous: no jump to another well between steps
+
+
+def test_a_plan_and_its_steps_follow_the_result_contract():
+    """The plan's status from its steps; the solver's own status in the step's solver detail; frozen."""
+    F = (-0.02, 0.01)
+    tip0 = PAPER.tip(PreloadController(PAPER, load=F).q)
+    plan = preloads_for_trajectory(PAPER, [tip0 + [-0.03, 0.05], [10.0, 0.0]], loads=F)
+    assert (plan.status, plan.success) == ("infeasible_steps", False)
+    ok, bad = plan.steps
+    assert (ok.status, ok.success, ok.method) == ("feasible", True, "newton")
+    assert ok.solver.status == "Newton_Converged" and ok.solver.iterations >= 1
+    assert (bad.status, bad.success, bad.solver.iterations) == ("infeasible", False, 0)
+    d = plan.to_dict()
+    assert list(d)[:3] == ["success", "status", "message"] and d["steps"][0]["solver"]["status"] == "Newton_Converged"
+    assert list(d["steps"][1])[:3] == ["success", "status", "message"] and d["steps"][1]["success"] is False
+    with pytest.raises(AttributeError):
+        plan.status = "complete"
+    with pytest.raises(ValueError):
+        plan.q[0, 0] = 1.0
+    with pytest.raises(ValueError):
+        ok.rest_lengths[0, 0] = 1.0
+    assert isinstance(plan.steps, tuple) and isinstance(plan.method, tuple)

@@ -12,8 +12,6 @@ The library is only called to produce the values under test.
 from __future__ import annotations
 
 import functools
-import os
-import sys
 
 import numpy as np
 import pytest

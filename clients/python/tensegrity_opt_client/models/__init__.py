@@ -44,6 +44,7 @@ from .design_critical_force_request_bounds import DesignCriticalForceRequestBoun
 from .design_critical_force_request_budget import DesignCriticalForceRequestBudget
 from .design_critical_force_request_vary_item import DesignCriticalForceRequestVaryItem
 from .design_out import DesignOut
+from .design_out_status import DesignOutStatus
 from .design_segmented_manipulator_in import DesignSegmentedManipulatorIn
 from .design_uniform_manipulator_in import DesignUniformManipulatorIn
 from .displacement_control_in import DisplacementControlIn
@@ -70,6 +71,7 @@ from .force_deflection_request_branch import ForceDeflectionRequestBranch
 from .force_deflection_request_reference import ForceDeflectionRequestReference
 from .force_equilibrium_request import ForceEquilibriumRequest
 from .force_estimate_out import ForceEstimateOut
+from .force_estimate_out_status import ForceEstimateOutStatus
 from .force_estimate_request import ForceEstimateRequest
 from .get_job_results_format_type_0 import GetJobResultsFormatType0
 from .guided_control_in import GuidedControlIn
@@ -106,6 +108,7 @@ from .list_jobs_status_type_0 import ListJobsStatusType0
 from .load_capacity_out import LoadCapacityOut
 from .load_capacity_out_manipulator import LoadCapacityOutManipulator
 from .load_capacity_out_start import LoadCapacityOutStart
+from .load_capacity_out_status import LoadCapacityOutStatus
 from .load_capacity_out_weakest_type_0 import LoadCapacityOutWeakestType0
 from .load_capacity_request import LoadCapacityRequest
 from .load_capacity_request_boundary import LoadCapacityRequestBoundary
@@ -122,6 +125,7 @@ from .plan_request import PlanRequest
 from .plan_request_objective import PlanRequestObjective
 from .plan_step_out import PlanStepOut
 from .plan_step_out_method import PlanStepOutMethod
+from .plan_step_out_status import PlanStepOutStatus
 from .plot_angle_range import PlotAngleRange
 from .plot_atlas_grid_request import PlotAtlasGridRequest
 from .plot_atlas_grid_request_format_type_0 import PlotAtlasGridRequestFormatType0
@@ -194,7 +198,7 @@ from .stiffness_bounds_in import StiffnessBoundsIn
 from .stiffness_design_out import StiffnessDesignOut
 from .stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK
 from .stiffness_design_out_manipulator import StiffnessDesignOutManipulator
-from .stiffness_design_out_solver import StiffnessDesignOutSolver
+from .stiffness_design_out_status import StiffnessDesignOutStatus
 from .stiffness_design_request import StiffnessDesignRequest
 from .stiffness_out import StiffnessOut
 from .stiffness_request import StiffnessRequest
@@ -260,6 +264,7 @@ __all__ = (
     "DesignCriticalForceRequestBudget",
     "DesignCriticalForceRequestVaryItem",
     "DesignOut",
+    "DesignOutStatus",
     "DesignSegmentedManipulatorIn",
     "DesignUniformManipulatorIn",
     "DisplacementControlIn",
@@ -286,6 +291,7 @@ __all__ = (
     "ForceDeflectionRequestReference",
     "ForceEquilibriumRequest",
     "ForceEstimateOut",
+    "ForceEstimateOutStatus",
     "ForceEstimateRequest",
     "GetJobResultsFormatType0",
     "GuidedControlIn",
@@ -322,6 +328,7 @@ __all__ = (
     "LoadCapacityOut",
     "LoadCapacityOutManipulator",
     "LoadCapacityOutStart",
+    "LoadCapacityOutStatus",
     "LoadCapacityOutWeakestType0",
     "LoadCapacityRequest",
     "LoadCapacityRequestBoundary",
@@ -338,6 +345,7 @@ __all__ = (
     "PlanRequestObjective",
     "PlanStepOut",
     "PlanStepOutMethod",
+    "PlanStepOutStatus",
     "PlotAngleRange",
     "PlotAtlasGridRequest",
     "PlotAtlasGridRequestFormatType0",
@@ -410,7 +418,7 @@ __all__ = (
     "StiffnessDesignOut",
     "StiffnessDesignOutBoundsK",
     "StiffnessDesignOutManipulator",
-    "StiffnessDesignOutSolver",
+    "StiffnessDesignOutStatus",
     "StiffnessDesignRequest",
     "StiffnessOut",
     "StiffnessRequest",

@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.design_out_status import DesignOutStatus
+
 if TYPE_CHECKING:
     from ..models.manipulator_out import ManipulatorOut
     from ..models.solver_info import SolverInfo
@@ -16,7 +18,8 @@ T = TypeVar("T", bound="DesignOut")
 
 @_attrs_define
 class DesignOut:
-    """
+    """`Design.to_dict()`: the designed chain, its critical loads recomputed by `critical_force`.
+
     Attributes:
         active (list[str]): active constraints at the optimum
         critical_force (float): signed critical force, recomputed by critical_force on the design
@@ -24,8 +27,14 @@ class DesignOut:
         initial_critical_force (float | None): the starting design's critical force
         loads (list[float]): all critical loads of the design, ascending (recomputed)
         manipulator (ManipulatorOut):
+        message (str): what happened, in a sentence
         multiplicity (int): how many critical loads coincide with the smallest
         solver (SolverInfo):
+        status (DesignOutStatus): `optimal`: IPOPT converged to a design meeting every constraint (and the required
+            load, where one is asked); its critical load is recomputed by critical_force; `below_required`: the strongest
+            design within the bounds, whose critical load stays below the required one; `infeasible`: IPOPT found no
+            feasible design: its last point, lifted onto the joint-stiffness floor
+        success (bool): whether it worked: `status` is one of optimal
     """
 
     active: list[str]
@@ -34,8 +43,11 @@ class DesignOut:
     initial_critical_force: float | None
     loads: list[float]
     manipulator: ManipulatorOut
+    message: str
     multiplicity: int
     solver: SolverInfo
+    status: DesignOutStatus
+    success: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -52,9 +64,15 @@ class DesignOut:
 
         manipulator = self.manipulator.to_dict()
 
+        message = self.message
+
         multiplicity = self.multiplicity
 
         solver = self.solver.to_dict()
+
+        status = self.status.value
+
+        success = self.success
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
@@ -66,8 +84,11 @@ class DesignOut:
                 "initial_critical_force": initial_critical_force,
                 "loads": loads,
                 "manipulator": manipulator,
+                "message": message,
                 "multiplicity": multiplicity,
                 "solver": solver,
+                "status": status,
+                "success": success,
             }
         )
 
@@ -96,9 +117,15 @@ class DesignOut:
 
         manipulator = ManipulatorOut.from_dict(d.pop("manipulator"))
 
+        message = d.pop("message")
+
         multiplicity = d.pop("multiplicity")
 
         solver = SolverInfo.from_dict(d.pop("solver"))
+
+        status = DesignOutStatus(d.pop("status"))
+
+        success = d.pop("success")
 
         design_out = cls(
             active=active,
@@ -107,8 +134,11 @@ class DesignOut:
             initial_critical_force=initial_critical_force,
             loads=loads,
             manipulator=manipulator,
+            message=message,
             multiplicity=multiplicity,
             solver=solver,
+            status=status,
+            success=success,
         )
 
         design_out.additional_properties = d

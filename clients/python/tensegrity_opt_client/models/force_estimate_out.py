@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.force_estimate_out_status import ForceEstimateOutStatus
+
 if TYPE_CHECKING:
     from ..models.force import Force
 
@@ -23,19 +25,25 @@ class ForceEstimateOut:
         dof (int): degrees of freedom: n - 2 - unmeasured joints
         force (Force):
         hidden_covariance (list[list[float]] | None): covariance of the estimated unmeasured angles (rad^2)
-        iterations (int):
+        iterations (int): Gauss-Newton and re-weighting iterations made
         joint_chi2 (list[float] | None): per joint: the decrease of chi2 an extra torque there would give (where the
             load not at the tip is)
         measured (list[int]): the measured joints (0-based)
+        message (str): what happened, in a sentence
         p_value (float | None): P(chi2_dof >= chi2): small when the angles are not those of an equilibrium under a tip
             force only (null without sigma_q or dof 0)
         q (list[float]): the configuration used: measured angles as given, unmeasured estimated
         residual_norm (float):
         residual_torque (list[float]): grad E - J^T F at the estimate: the joint torques no tip force explains (torque
             units)
-        status (str): least_squares, gauss_newton, generalized_least_squares, weighted_gauss_newton or
-            reweighting_not_converged
-        success (bool):
+        status (ForceEstimateOutStatus): `least_squares`: every joint measured, no noise model: the least-squares force
+            (eq. 8); `gauss_newton`: unmeasured joints, no noise model: the force and the unmeasured angles by Gauss-Newton;
+            `generalized_least_squares`: every joint measured, with sigma_q: generalised least squares with the residual's
+            covariance at the estimate; `weighted_gauss_newton`: unmeasured joints, with sigma_q: the re-weighted Gauss-
+            Newton estimate; `reweighting_not_converged`: the re-weighting did not settle (angles far from any equilibrium
+            under a tip force): the one-step estimate
+        success (bool): whether it worked: `status` is one of gauss_newton, generalized_least_squares, least_squares,
+            weighted_gauss_newton
     """
 
     chi2: float | None
@@ -46,11 +54,12 @@ class ForceEstimateOut:
     iterations: int
     joint_chi2: list[float] | None
     measured: list[int]
+    message: str
     p_value: float | None
     q: list[float]
     residual_norm: float
     residual_torque: list[float]
-    status: str
+    status: ForceEstimateOutStatus
     success: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -95,6 +104,8 @@ class ForceEstimateOut:
 
         measured = self.measured
 
+        message = self.message
+
         p_value: float | None
         p_value = self.p_value
 
@@ -104,7 +115,7 @@ class ForceEstimateOut:
 
         residual_torque = self.residual_torque
 
-        status = self.status
+        status = self.status.value
 
         success = self.success
 
@@ -120,6 +131,7 @@ class ForceEstimateOut:
                 "iterations": iterations,
                 "joint_chi2": joint_chi2,
                 "measured": measured,
+                "message": message,
                 "p_value": p_value,
                 "q": q,
                 "residual_norm": residual_norm,
@@ -207,6 +219,8 @@ class ForceEstimateOut:
 
         measured = cast(list[int], d.pop("measured"))
 
+        message = d.pop("message")
+
         def _parse_p_value(data: object) -> float | None:
             if data is None:
                 return data
@@ -220,7 +234,7 @@ class ForceEstimateOut:
 
         residual_torque = cast(list[float], d.pop("residual_torque"))
 
-        status = d.pop("status")
+        status = ForceEstimateOutStatus(d.pop("status"))
 
         success = d.pop("success")
 
@@ -233,6 +247,7 @@ class ForceEstimateOut:
             iterations=iterations,
             joint_chi2=joint_chi2,
             measured=measured,
+            message=message,
             p_value=p_value,
             q=q,
             residual_norm=residual_norm,

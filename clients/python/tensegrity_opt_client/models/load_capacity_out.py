@@ -6,6 +6,8 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.load_capacity_out_status import LoadCapacityOutStatus
+
 if TYPE_CHECKING:
     from ..models.load_capacity_out_manipulator import LoadCapacityOutManipulator
     from ..models.load_capacity_out_start import LoadCapacityOutStart
@@ -30,9 +32,14 @@ class LoadCapacityOut:
         loads (list[float | None]): the extra load at the first loss of stability (null: none)
         manipulator (LoadCapacityOutManipulator):
         max_load (float):
+        message (str): what happened, in a sentence
         reasons (list[None | str]):
         start (LoadCapacityOutStart):
-        success (bool):
+        status (LoadCapacityOutStatus): `complete`: every direction was followed to its first loss of stability, a
+            joint's range bound or max_load; `time_limit`: the time limit ran out before every direction was followed
+            (reasons: time_limit); `path_failed`: the path of some direction could not be followed (reasons: the branch's
+            status or the error's code)
+        success (bool): whether it worked: `status` is one of complete
         weakest (LoadCapacityOutWeakestType0 | None):
     """
 
@@ -46,8 +53,10 @@ class LoadCapacityOut:
     loads: list[float | None]
     manipulator: LoadCapacityOutManipulator
     max_load: float
+    message: str
     reasons: list[None | str]
     start: LoadCapacityOutStart
+    status: LoadCapacityOutStatus
     success: bool
     weakest: LoadCapacityOutWeakestType0 | None
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
@@ -91,6 +100,8 @@ class LoadCapacityOut:
 
         max_load = self.max_load
 
+        message = self.message
+
         reasons = []
         for reasons_item_data in self.reasons:
             reasons_item: None | str
@@ -98,6 +109,8 @@ class LoadCapacityOut:
             reasons.append(reasons_item)
 
         start = self.start.to_dict()
+
+        status = self.status.value
 
         success = self.success
 
@@ -121,8 +134,10 @@ class LoadCapacityOut:
                 "loads": loads,
                 "manipulator": manipulator,
                 "max_load": max_load,
+                "message": message,
                 "reasons": reasons,
                 "start": start,
+                "status": status,
                 "success": success,
                 "weakest": weakest,
             }
@@ -189,6 +204,8 @@ class LoadCapacityOut:
 
         max_load = d.pop("max_load")
 
+        message = d.pop("message")
+
         reasons = []
         _reasons = d.pop("reasons")
         for reasons_item_data in _reasons:
@@ -203,6 +220,8 @@ class LoadCapacityOut:
             reasons.append(reasons_item)
 
         start = LoadCapacityOutStart.from_dict(d.pop("start"))
+
+        status = LoadCapacityOutStatus(d.pop("status"))
 
         success = d.pop("success")
 
@@ -232,8 +251,10 @@ class LoadCapacityOut:
             loads=loads,
             manipulator=manipulator,
             max_load=max_load,
+            message=message,
             reasons=reasons,
             start=start,
+            status=status,
             success=success,
             weakest=weakest,
         )

@@ -27,14 +27,17 @@ class PlanOut:
             was, q and tip the best reachable pose)
         margin (list[float | None]): stability margin per step (torque / rad; null: infeasible)
         margin_required (float): the stability margin asked for (torque / rad)
+        message (str): what happened, in a sentence
         method (list[PlanOutMethodItem]): how each step was solved
         objective (PlanOutObjective): how the redundancy was resolved
         q (list[list[float]]): the equilibrium configuration per step (rad)
         rest_lengths (list[list[list[float]]]): [L1_0, L2_0] per segment per step (what to command)
         seconds (float): wall time of the plan (s)
-        status (PlanOutStatus): complete; infeasible_steps (see feasible); time_limit (the steps done so far)
-        steps (list[PlanStepOut]): every step in full (why an infeasible step failed: `status`)
-        success (bool): status is complete
+        status (PlanOutStatus): `complete`: every step is feasible; `infeasible_steps`: some steps are infeasible (see
+            feasible): each answered with the best reachable pose, the next starting from the last feasible state;
+            `time_limit`: the time limit ran out: the steps done so far
+        steps (list[PlanStepOut]): every step in full (why an infeasible step failed: `message`)
+        success (bool): whether it worked: `status` is one of complete
         targets (list[list[float]]): the targets of the steps done
         tip (list[list[float]]): the tip per step (the target when feasible; else the best reachable pose)
         verified (list[bool]): the forward solve from the previous step lands on the target, stable (with `verify:
@@ -45,6 +48,7 @@ class PlanOut:
     feasible: list[bool]
     margin: list[float | None]
     margin_required: float
+    message: str
     method: list[PlanOutMethodItem]
     objective: PlanOutObjective
     q: list[list[float]]
@@ -70,6 +74,8 @@ class PlanOut:
             margin.append(margin_item)
 
         margin_required = self.margin_required
+
+        message = self.message
 
         method = []
         for method_item_data in self.method:
@@ -127,6 +133,7 @@ class PlanOut:
                 "feasible": feasible,
                 "margin": margin,
                 "margin_required": margin_required,
+                "message": message,
                 "method": method,
                 "objective": objective,
                 "q": q,
@@ -166,6 +173,8 @@ class PlanOut:
             margin.append(margin_item)
 
         margin_required = d.pop("margin_required")
+
+        message = d.pop("message")
 
         method = []
         _method = d.pop("method")
@@ -229,6 +238,7 @@ class PlanOut:
             feasible=feasible,
             margin=margin,
             margin_required=margin_required,
+            message=message,
             method=method,
             objective=objective,
             q=q,

@@ -1,12 +1,17 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 from ..models.plan_step_out_method import PlanStepOutMethod
+from ..models.plan_step_out_status import PlanStepOutStatus
+
+if TYPE_CHECKING:
+    from ..models.solver_info import SolverInfo
+
 
 T = TypeVar("T", bound="PlanStepOut")
 
@@ -19,13 +24,17 @@ class PlanStepOut:
         end_angle (float):
         energy (float | None): null: infeasible
         feasible (bool):
-        iterations (int):
         margin (float | None): null: infeasible
+        message (str): what happened, in a sentence
         method (PlanStepOutMethod):
         q (list[float]):
         residual (float | None): max-norm of the equilibrium and pose equations (Newton steps)
         rest_lengths (list[list[float]]): [L1_0, L2_0] per segment
-        status (str): the solver's status, or why the step is infeasible
+        solver (SolverInfo):
+        status (PlanStepOutStatus): `feasible`: rest lengths meeting every requirement were found: the tip on the
+            target, stable with the margin, inside the bounds and the rate limit; `infeasible`: no admissible rest lengths:
+            q and tip are the best reachable pose (rest_lengths what reaches it); the controller stays where it was
+        success (bool): whether it worked: `status` is one of feasible
         target (list[float]):
         tip (list[float]):
     """
@@ -33,13 +42,15 @@ class PlanStepOut:
     end_angle: float
     energy: float | None
     feasible: bool
-    iterations: int
     margin: float | None
+    message: str
     method: PlanStepOutMethod
     q: list[float]
     residual: float | None
     rest_lengths: list[list[float]]
-    status: str
+    solver: SolverInfo
+    status: PlanStepOutStatus
+    success: bool
     target: list[float]
     tip: list[float]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
@@ -52,10 +63,10 @@ class PlanStepOut:
 
         feasible = self.feasible
 
-        iterations = self.iterations
-
         margin: float | None
         margin = self.margin
+
+        message = self.message
 
         method = self.method.value
 
@@ -70,7 +81,11 @@ class PlanStepOut:
 
             rest_lengths.append(rest_lengths_item)
 
-        status = self.status
+        solver = self.solver.to_dict()
+
+        status = self.status.value
+
+        success = self.success
 
         target = self.target
 
@@ -83,13 +98,15 @@ class PlanStepOut:
                 "end_angle": end_angle,
                 "energy": energy,
                 "feasible": feasible,
-                "iterations": iterations,
                 "margin": margin,
+                "message": message,
                 "method": method,
                 "q": q,
                 "residual": residual,
                 "rest_lengths": rest_lengths,
+                "solver": solver,
                 "status": status,
+                "success": success,
                 "target": target,
                 "tip": tip,
             }
@@ -99,6 +116,8 @@ class PlanStepOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.solver_info import SolverInfo  # noqa: PLC0415
+
         d = dict(src_dict)
         end_angle = d.pop("end_angle")
 
@@ -111,14 +130,14 @@ class PlanStepOut:
 
         feasible = d.pop("feasible")
 
-        iterations = d.pop("iterations")
-
         def _parse_margin(data: object) -> float | None:
             if data is None:
                 return data
             return cast(float | None, data)
 
         margin = _parse_margin(d.pop("margin"))
+
+        message = d.pop("message")
 
         method = PlanStepOutMethod(d.pop("method"))
 
@@ -138,7 +157,11 @@ class PlanStepOut:
 
             rest_lengths.append(rest_lengths_item)
 
-        status = d.pop("status")
+        solver = SolverInfo.from_dict(d.pop("solver"))
+
+        status = PlanStepOutStatus(d.pop("status"))
+
+        success = d.pop("success")
 
         target = cast(list[float], d.pop("target"))
 
@@ -148,13 +171,15 @@ class PlanStepOut:
             end_angle=end_angle,
             energy=energy,
             feasible=feasible,
-            iterations=iterations,
             margin=margin,
+            message=message,
             method=method,
             q=q,
             residual=residual,
             rest_lengths=rest_lengths,
+            solver=solver,
             status=status,
+            success=success,
             target=target,
             tip=tip,
         )

@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
@@ -16,23 +16,31 @@ T = TypeVar("T", bound="PreloadsOut")
 
 @_attrs_define
 class PreloadsOut:
-    """
+    """`PreloadDesign.to_dict()`: rest lengths for a pose, verified by the forward equilibrium.
+
     Attributes:
         energy (float):
         manipulator (ManipulatorOut):
         margin (float): achieved stability margin (recomputed)
+        message (str): what happened, in a sentence
         preloads (list[list[float]]): rest lengths [L1_0, L2_0] per segment
         q (list[float]): verified equilibrium configuration (rad)
         solver (SolverInfo):
+        status (Literal['optimal']): `optimal`: IPOPT converged to rest lengths meeting every requirement, and the
+            forward equilibrium with them, from the optimiser's configuration, lands on the target, stable
+        success (bool): whether it worked: `status` is one of optimal
         tip (list[float]):
     """
 
     energy: float
     manipulator: ManipulatorOut
     margin: float
+    message: str
     preloads: list[list[float]]
     q: list[float]
     solver: SolverInfo
+    status: Literal["optimal"]
+    success: bool
     tip: list[float]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -42,6 +50,8 @@ class PreloadsOut:
         manipulator = self.manipulator.to_dict()
 
         margin = self.margin
+
+        message = self.message
 
         preloads = []
         for preloads_item_data in self.preloads:
@@ -53,6 +63,10 @@ class PreloadsOut:
 
         solver = self.solver.to_dict()
 
+        status = self.status
+
+        success = self.success
+
         tip = self.tip
 
         field_dict: dict[str, Any] = {}
@@ -62,9 +76,12 @@ class PreloadsOut:
                 "energy": energy,
                 "manipulator": manipulator,
                 "margin": margin,
+                "message": message,
                 "preloads": preloads,
                 "q": q,
                 "solver": solver,
+                "status": status,
+                "success": success,
                 "tip": tip,
             }
         )
@@ -83,6 +100,8 @@ class PreloadsOut:
 
         margin = d.pop("margin")
 
+        message = d.pop("message")
+
         preloads = []
         _preloads = d.pop("preloads")
         for preloads_item_data in _preloads:
@@ -94,15 +113,24 @@ class PreloadsOut:
 
         solver = SolverInfo.from_dict(d.pop("solver"))
 
+        status = cast(Literal["optimal"], d.pop("status"))
+        if status != "optimal":
+            raise ValueError(f"status must match const 'optimal', got '{status}'")
+
+        success = d.pop("success")
+
         tip = cast(list[float], d.pop("tip"))
 
         preloads_out = cls(
             energy=energy,
             manipulator=manipulator,
             margin=margin,
+            message=message,
             preloads=preloads,
             q=q,
             solver=solver,
+            status=status,
+            success=success,
             tip=tip,
         )
 

@@ -31,7 +31,9 @@ class PreloadsRequest:
         end_angle (float | None | Unset): absolute angle of the last link (rad), optional
         load (LoadIn | Unset):
         margin (float | Unset): required smallest eigenvalue of the joint-space Hessian (torque / rad) Default: 0.001.
-        objective (PreloadsRequestObjective | Unset):  Default: PreloadsRequestObjective.NOMINAL.
+        objective (PreloadsRequestObjective | Unset): nominal: least change from the chain's own rest lengths (the
+            library's objective `change`); margin: largest stability margin; energy: least spring energy Default:
+            PreloadsRequestObjective.NOMINAL.
         taut (bool | Unset): keep every spring in tension (L >= L0) Default: False.
     """
 

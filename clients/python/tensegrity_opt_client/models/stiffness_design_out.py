@@ -6,10 +6,12 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..models.stiffness_design_out_status import StiffnessDesignOutStatus
+
 if TYPE_CHECKING:
+    from ..models.solver_info import SolverInfo
     from ..models.stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK
     from ..models.stiffness_design_out_manipulator import StiffnessDesignOutManipulator
-    from ..models.stiffness_design_out_solver import StiffnessDesignOutSolver
 
 
 T = TypeVar("T", bound="StiffnessDesignOut")
@@ -29,10 +31,17 @@ class StiffnessDesignOut:
         load (list[float]):
         manipulator (StiffnessDesignOutManipulator):
         margin (float):
+        message (str): what happened, in a sentence
         q (list[float]):
         residual (float): |K - K_desired|_F / |K_desired|_F, or the largest bound violation (0)
         rest_lengths (list[list[float]]): [L1_0, L2_0] per segment
-        solver (StiffnessDesignOutSolver):
+        solver (SolverInfo):
+        status (StiffnessDesignOutStatus): `exact`: K = K_desired holds at the verified pose (residual <= EXACT_TOL),
+            with the least change of the preloads (within the bounds, where some are given); `closest`: K_desired is not
+            reachable from any start: the least-squares fit with the smallest misfit (residual, relative), within the bounds
+            where some are given; `within_bounds`: the bounds on the entries and eigenvalues of K hold at the verified pose,
+            with the least change of the preloads
+        success (bool): whether it worked: `status` is one of exact, within_bounds
         tip (list[float]):
     """
 
@@ -45,10 +54,13 @@ class StiffnessDesignOut:
     load: list[float]
     manipulator: StiffnessDesignOutManipulator
     margin: float
+    message: str
     q: list[float]
     residual: float
     rest_lengths: list[list[float]]
-    solver: StiffnessDesignOutSolver
+    solver: SolverInfo
+    status: StiffnessDesignOutStatus
+    success: bool
     tip: list[float]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -93,6 +105,8 @@ class StiffnessDesignOut:
 
         margin = self.margin
 
+        message = self.message
+
         q = self.q
 
         residual = self.residual
@@ -104,6 +118,10 @@ class StiffnessDesignOut:
             rest_lengths.append(rest_lengths_item)
 
         solver = self.solver.to_dict()
+
+        status = self.status.value
+
+        success = self.success
 
         tip = self.tip
 
@@ -120,10 +138,13 @@ class StiffnessDesignOut:
                 "load": load,
                 "manipulator": manipulator,
                 "margin": margin,
+                "message": message,
                 "q": q,
                 "residual": residual,
                 "rest_lengths": rest_lengths,
                 "solver": solver,
+                "status": status,
+                "success": success,
                 "tip": tip,
             }
         )
@@ -132,9 +153,9 @@ class StiffnessDesignOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.solver_info import SolverInfo  # noqa: PLC0415
         from ..models.stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK  # noqa: PLC0415
         from ..models.stiffness_design_out_manipulator import StiffnessDesignOutManipulator  # noqa: PLC0415
-        from ..models.stiffness_design_out_solver import StiffnessDesignOutSolver  # noqa: PLC0415
 
         d = dict(src_dict)
         k = []
@@ -202,6 +223,8 @@ class StiffnessDesignOut:
 
         margin = d.pop("margin")
 
+        message = d.pop("message")
+
         q = cast(list[float], d.pop("q"))
 
         residual = d.pop("residual")
@@ -213,7 +236,11 @@ class StiffnessDesignOut:
 
             rest_lengths.append(rest_lengths_item)
 
-        solver = StiffnessDesignOutSolver.from_dict(d.pop("solver"))
+        solver = SolverInfo.from_dict(d.pop("solver"))
+
+        status = StiffnessDesignOutStatus(d.pop("status"))
+
+        success = d.pop("success")
 
         tip = cast(list[float], d.pop("tip"))
 
@@ -227,10 +254,13 @@ class StiffnessDesignOut:
             load=load,
             manipulator=manipulator,
             margin=margin,
+            message=message,
             q=q,
             residual=residual,
             rest_lengths=rest_lengths,
             solver=solver,
+            status=status,
+            success=success,
             tip=tip,
         )
 

@@ -85,12 +85,12 @@ def sync_detailed(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.analyses.design.preload_control.plan_preloads`): `objective: change` is the least
-    change from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a
-    bound is active), `margin` / `energy` IPOPT (`choose_preloads`). A step no admissible rest lengths
-    reach is `feasible: false` with the best reachable pose, and the next step starts from the last
-    feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the
-    previous step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
+    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
+    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
+    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
+    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
+    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
+    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
     (optional, null entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
@@ -102,7 +102,7 @@ def sync_detailed(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`plan_preloads`).
+            (`preloads_for_trajectory`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -132,12 +132,12 @@ def sync(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.analyses.design.preload_control.plan_preloads`): `objective: change` is the least
-    change from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a
-    bound is active), `margin` / `energy` IPOPT (`choose_preloads`). A step no admissible rest lengths
-    reach is `feasible: false` with the best reachable pose, and the next step starts from the last
-    feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the
-    previous step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
+    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
+    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
+    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
+    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
+    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
+    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
     (optional, null entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
@@ -149,7 +149,7 @@ def sync(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`plan_preloads`).
+            (`preloads_for_trajectory`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -174,12 +174,12 @@ async def asyncio_detailed(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.analyses.design.preload_control.plan_preloads`): `objective: change` is the least
-    change from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a
-    bound is active), `margin` / `energy` IPOPT (`choose_preloads`). A step no admissible rest lengths
-    reach is `feasible: false` with the best reachable pose, and the next step starts from the last
-    feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the
-    previous step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
+    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
+    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
+    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
+    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
+    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
+    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
     (optional, null entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
@@ -191,7 +191,7 @@ async def asyncio_detailed(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`plan_preloads`).
+            (`preloads_for_trajectory`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -219,12 +219,12 @@ async def asyncio(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.analyses.design.preload_control.plan_preloads`): `objective: change` is the least
-    change from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a
-    bound is active), `margin` / `energy` IPOPT (`choose_preloads`). A step no admissible rest lengths
-    reach is `feasible: false` with the best reachable pose, and the next step starts from the last
-    feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the
-    previous step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
+    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
+    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
+    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
+    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
+    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
+    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
     (optional, null entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
@@ -236,7 +236,7 @@ async def asyncio(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`plan_preloads`).
+            (`preloads_for_trajectory`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

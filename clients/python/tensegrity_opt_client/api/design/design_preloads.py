@@ -85,11 +85,11 @@ def sync_detailed(
 ) -> Response[ErrorOut | PreloadsOut]:
     """Rest lengths (control inputs) for a stable pose under a tip load
 
-     `tensegrity_opt.choose_preloads`: rest lengths (L1_0, L2_0) per segment such that under the tip load
-    the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle), with
-    the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads, largest
-    margin, least energy. Verified by re-solving the force-controlled equilibrium before answering.
-    Infeasible: 422 `design_infeasible` with `best`.
+     `tensegrity_opt.preloads_for_pose`: rest lengths (L1_0, L2_0) per segment such that under the tip
+    load the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle),
+    with the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads,
+    largest margin, least energy. Verified by re-solving the force-controlled equilibrium before
+    answering. Infeasible: 422 `design_infeasible` with `best`.
 
     Args:
         body (PreloadsRequest): Rest lengths putting the tip at a target, stably, under a tip
@@ -121,11 +121,11 @@ def sync(
 ) -> ErrorOut | PreloadsOut | None:
     """Rest lengths (control inputs) for a stable pose under a tip load
 
-     `tensegrity_opt.choose_preloads`: rest lengths (L1_0, L2_0) per segment such that under the tip load
-    the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle), with
-    the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads, largest
-    margin, least energy. Verified by re-solving the force-controlled equilibrium before answering.
-    Infeasible: 422 `design_infeasible` with `best`.
+     `tensegrity_opt.preloads_for_pose`: rest lengths (L1_0, L2_0) per segment such that under the tip
+    load the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle),
+    with the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads,
+    largest margin, least energy. Verified by re-solving the force-controlled equilibrium before
+    answering. Infeasible: 422 `design_infeasible` with `best`.
 
     Args:
         body (PreloadsRequest): Rest lengths putting the tip at a target, stably, under a tip
@@ -152,11 +152,11 @@ async def asyncio_detailed(
 ) -> Response[ErrorOut | PreloadsOut]:
     """Rest lengths (control inputs) for a stable pose under a tip load
 
-     `tensegrity_opt.choose_preloads`: rest lengths (L1_0, L2_0) per segment such that under the tip load
-    the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle), with
-    the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads, largest
-    margin, least energy. Verified by re-solving the force-controlled equilibrium before answering.
-    Infeasible: 422 `design_infeasible` with `best`.
+     `tensegrity_opt.preloads_for_pose`: rest lengths (L1_0, L2_0) per segment such that under the tip
+    load the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle),
+    with the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads,
+    largest margin, least energy. Verified by re-solving the force-controlled equilibrium before
+    answering. Infeasible: 422 `design_infeasible` with `best`.
 
     Args:
         body (PreloadsRequest): Rest lengths putting the tip at a target, stably, under a tip
@@ -186,11 +186,11 @@ async def asyncio(
 ) -> ErrorOut | PreloadsOut | None:
     """Rest lengths (control inputs) for a stable pose under a tip load
 
-     `tensegrity_opt.choose_preloads`: rest lengths (L1_0, L2_0) per segment such that under the tip load
-    the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle), with
-    the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads, largest
-    margin, least energy. Verified by re-solving the force-controlled equilibrium before answering.
-    Infeasible: 422 `design_infeasible` with `best`.
+     `tensegrity_opt.preloads_for_pose`: rest lengths (L1_0, L2_0) per segment such that under the tip
+    load the chain has a stable equilibrium with the tip at `target` (optionally the last link's angle),
+    with the joint-space Hessian >= `margin`; objectives: least change from the nominal preloads,
+    largest margin, least energy. Verified by re-solving the force-controlled equilibrium before
+    answering. Infeasible: 422 `design_infeasible` with `best`.
 
     Args:
         body (PreloadsRequest): Rest lengths putting the tip at a target, stably, under a tip

@@ -1,7 +1,5 @@
-"""Design and control problems, each checked by an independent forward computation."""
-
-import os
-import sys
+"""The strongest chain (analyses/design/strongest.py), each design checked by an independent computation: the
+paper's numbers, closed forms, the reference model's critical loads, SLSQP on the same problem."""
 
 import numpy as np
 import pytest
@@ -9,16 +7,13 @@ import scipy.linalg as sla
 import scipy.optimize as so
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design.optimal import (K_FLOOR_REL, InfeasibleDesignError, choose_preloads, critical_load_sensitivity,
-                                   equilibrium_sensitivity, maximize_critical_force,
-                                   preloads_for_critical_force)
+from tensegrity_opt.analyses.design.strongest import K_FLOOR_REL, maximize_critical_force
+from tensegrity_opt.errors import InfeasibleDesignError
 
 import reference_model as R  # noqa: E402
 
 PAPER = to.Manipulator.uniform(4)
-P_UNIT = 0.572793          # conventions.md: critical load of the paper's chain with K = 1
-NONUNIFORM = to.Manipulator([to.Segment(1, 1, 1, 1), to.Segment(0.9, 1.3, 2, 1.5), to.Segment(1.1, 0.8, 0.7, 0.9),
-                             to.Segment(1, 1.1, 1.5, 1.2)])
+P_UNIT = 0.572793          # docs/model.md: critical load of the paper's chain with K = 1
 
 
 def test_uniform_preload_optimum_is_analytic():
@@ -28,7 +23,7 @@ def test_uniform_preload_optimum_is_analytic():
     assert np.allclose(d.manipulator.L1_0, 1.5, atol=1e-7)
     assert d.load == pytest.approx(1.5 * P_UNIT, rel=1e-5)
     assert -to.critical_force(d.manipulator).force == pytest.approx(1.5 * P_UNIT, rel=1e-5)
-    assert d.multiplicity == 1 and d.success
+    assert d.multiplicity == 1 and d.success and d.status == "optimal" and d.feasible
     assert sorted(d.active) == sorted(f"L0[{i}] <= 1.5" for i in range(4))
 
 
@@ -72,11 +67,10 @@ def test_constraints_tension_and_joint_stiffness():
     assert -to.critical_force(m, method="paper").force == pytest.approx(d.load, rel=1e-9)
 
 
-# Issue 13 item 4: an optimum at K_i -> 0+. a = 0.8, b = 1: K = k (L0 - 0.72). With both budgets
-# binding, the strongest guided chain takes the stiffness and the preload off segment 1 (k_1 to its
-# bound 0.2, L0_1 to 0.72, K_1 = 0: a guided chain keeps a positive load with one K_i = 0) and gives
-# them to the others. Without a K floor the optimiser stopped at K_1 = -1e-10 and the call raised
-# "not a valid chain" with best = None.
+# An optimum at K_i -> 0+. a = 0.8, b = 1: K = k (L0 - 0.72). With both budgets binding, the strongest
+# guided chain takes the stiffness and the preload off segment 1 (k_1 to its bound 0.2, L0_1 to 0.72,
+# K_1 = 0: a guided chain keeps a positive load with one K_i = 0) and gives them to the others. Without
+# a K floor the optimiser would stop at K_1 = -1e-10, not a valid chain.
 K0_CHAIN = to.Manipulator.uniform(5, a=0.8, b=1.0, k=1.0, L0=1.0)
 K0_CALL = dict(vary=("k", "L0"), budget={"k": 5.0, "L0": 5.0}, bounds={"k": (0.2, 5.0), "L0": (0.2, 2.0)})
 K0_LOAD = 0.1702862        # this case's optimum (the SLSQP scan below finds it independently)
@@ -134,7 +128,8 @@ def _slsqp_optimum(a, b, n, k_bounds, L0_bounds, k_budget, L0_budget, K_lower, s
 def test_optimum_at_zero_joint_stiffness_is_returned():
     d = maximize_critical_force(K0_CHAIN, **K0_CALL)
     m = d.manipulator
-    assert d.success and d.status == "Solve_Succeeded"
+    assert d.success and d.status == "optimal" and d.solver.status == "Solve_Succeeded"
+    assert "critical load" in d.message and d.to_dict()["solver"] == d.solver.to_dict()
     # the default floor on K (condition (4) as a constraint), recorded in the result
     assert d.K_min == pytest.approx(K_FLOOR_REL * 1.0 * (0.8 ** 2 + 1.0 ** 2), rel=1e-12)
     K = m.stiffness
@@ -179,68 +174,6 @@ def test_free_boundary_design():
     assert d.manipulator.k1[0] > d.manipulator.k1[-1]
 
 
-def test_preloads_for_required_load():
-    d = preloads_for_critical_force(PAPER, 0.7)
-    assert d.feasible
-    assert -to.critical_force(d.manipulator).force >= 0.7 * (1 - 1e-6)
-    change = np.linalg.norm(d.manipulator.L1_0 - 1.0)
-    # uniform scaling of K by 0.7/0.5728 (K = b L0 - 2(b^2 - a^2) = L0 here) is feasible, so the
-    # minimal change cannot exceed it
-    uniform_change = np.linalg.norm(np.full(4, 0.7 / P_UNIT - 1.0))
-    assert change <= uniform_change + 1e-8
-    infeasible = preloads_for_critical_force(PAPER, 10.0)
-    assert not infeasible.feasible
-    # best achievable with L0 <= 2b: K = 2 a^2 = 2, P = 2 * 0.572793
-    assert infeasible.load == pytest.approx(2 * P_UNIT, rel=1e-5)
-
-
-@pytest.mark.parametrize("objective", ["nominal", "margin", "energy"])
-def test_choose_preloads_verified_independently(objective):
-    target, load = np.array([7.0, 1.5]), np.array([0.05, -0.02])
-    r = choose_preloads(PAPER, target, load, objective, margin=0.05)
-    m = r.manipulator
-    eq = to.solve_equilibrium_under_force(m, *load, q0=r.q)
-    assert np.allclose(eq.tip, target, atol=1e-6) and eq.morse_index == 0
-    # numpy check of the equilibrium and of the margin (Hessian by finite differences of torques)
-    assert np.allclose(m.gradient(r.q), m.jacobian(r.q).T @ load, atol=1e-8)
-    h = 1e-6
-    H = np.column_stack([((m.gradient(r.q + h * e) - m.jacobian(r.q + h * e).T @ load)
-                          - (m.gradient(r.q - h * e) - m.jacobian(r.q - h * e).T @ load)) / (2 * h)
-                         for e in np.eye(4)])
-    assert np.linalg.eigvalsh((H + H.T) / 2)[0] == pytest.approx(r.margin, abs=1e-5)
-    assert r.margin >= 0.05 - 1e-6
-
-
-def test_choose_preloads_objectives_do_what_they_say():
-    target, load = (7.0, 1.5), (0.05, -0.02)
-    nominal = choose_preloads(PAPER, target, load, "nominal", margin=0.05)
-    margin = choose_preloads(PAPER, target, load, "margin", margin=0.05)
-    energy = choose_preloads(PAPER, target, load, "energy", margin=0.05)
-    assert margin.margin > nominal.margin
-    assert energy.energy <= nominal.energy + 1e-9
-    change = lambda r: np.linalg.norm(r.preloads - 1.0)       # noqa: E731
-    assert change(nominal) <= change(margin) and change(nominal) <= change(energy)
-
-
-def test_choose_preloads_taut_and_end_angle():
-    r = choose_preloads(PAPER, (6.5, 2.0), (0.0, 0.0), "nominal", taut=True, end_angle=0.6, margin=0.01)
-    L1, L2 = r.manipulator.spring_lengths(r.q)
-    assert np.all(L1 >= r.preloads[:, 0] - 1e-7) and np.all(L2 >= r.preloads[:, 1] - 1e-7)
-    assert r.q.sum() == pytest.approx(0.6, abs=1e-7)
-    assert np.allclose(r.manipulator.tip(r.q), [6.5, 2.0], atol=1e-6)
-
-
-def test_choose_preloads_errors():
-    with pytest.raises(to.InvalidParameterError) as ei:
-        choose_preloads(PAPER, (7.0, 0.5), objective="fast")
-    assert ei.value.field == "objective"
-    with pytest.raises(to.UnreachableTargetError):
-        choose_preloads(PAPER, (9.0, 0.0))
-    with pytest.raises(InfeasibleDesignError) as ei:       # impossible margin within the bounds
-        choose_preloads(PAPER, (7.0, 1.0), margin=1e3)
-    assert isinstance(ei.value, RuntimeError) and ei.value.status and ei.value.best is not None
-
-
 def test_design_errors():
     with pytest.raises(to.InvalidParameterError) as ei:
         maximize_critical_force(PAPER, vary=("c",))
@@ -251,48 +184,17 @@ def test_design_errors():
         maximize_critical_force(to.Manipulator.uniform(3, k=(1, 2)), vary=("k",))
     with pytest.raises(InfeasibleDesignError) as ei:          # K_min beyond what the bounds allow
         maximize_critical_force(PAPER, vary=("k",), bounds={"k": (0.5, 1.0)}, K_min=5.0)
-    assert ei.value.status
+    assert ei.value.status                                    # IPOPT's status: the error body's
+    best = ei.value.best
+    assert best.status == "infeasible" and not best.success and best.solver.status == ei.value.status
+    with pytest.raises(to.TimeLimitError):
+        maximize_critical_force(PAPER, vary=("k",), timeout=1e-6)
 
 
-@pytest.mark.parametrize("boundary", ["guided", "free"])
-def test_critical_load_sensitivity_by_finite_differences(boundary):
-    s = critical_load_sensitivity(NONUNIFORM, boundary)
-    h = 1e-6
-    for name in ("a", "b", "k", "L0"):
-        for i in range(NONUNIFORM.n):
-            segs = list(NONUNIFORM.segments)
-            val = getattr(segs[i], name)
-            up = to.Manipulator(segs[:i] + [segs[i].replace(**{name: val + h})] + segs[i + 1:])
-            dn = to.Manipulator(segs[:i] + [segs[i].replace(**{name: val - h})] + segs[i + 1:])
-            fd = (to.critical_force(up, boundary).loads[0] - to.critical_force(dn, boundary).loads[0]) / (2 * h)
-            assert s[name][i] == pytest.approx(fd, rel=1e-5, abs=1e-8)
-
-
-def test_equilibrium_sensitivity_by_finite_differences():
-    m = to.Manipulator([to.Segment(1, 1, (1, 1.2), (1, 0.9)), to.Segment(0.9, 1.3, 2, 1.5),
-                        to.Segment(1.1, 0.8, 0.7, (0.9, 1.0))])
-    eq = to.solve_equilibrium(m, 0.4, 0.3)
-    s = equilibrium_sensitivity(m, eq)
-    h = 1e-6
-    for j, pname in enumerate(("a", "b", "k1", "k2", "L1_0", "L2_0")):
-        for i in range(m.n):
-            def perturbed(delta):
-                seg = m.segments[i]
-                if pname in ("a", "b"):
-                    new = seg.replace(**{pname: getattr(seg, pname) + delta})
-                elif pname in ("k1", "k2"):
-                    k = [seg.k1, seg.k2]
-                    k[pname == "k2"] += delta
-                    new = seg.replace(k=tuple(k))
-                else:
-                    L0 = [seg.L1_0, seg.L2_0]
-                    L0[pname == "L2_0"] += delta
-                    new = seg.replace(L0=tuple(L0))
-                mm = to.Manipulator(list(m.segments[:i]) + [new] + list(m.segments[i + 1:]))
-                # the tip stays where it is (same absolute target)
-                dx = mm.straight_length - eq.tip[0]
-                return to.solve_equilibrium(mm, dx, eq.tip[1], q0=eq.q, local=True)
-            up, dn = perturbed(h), perturbed(-h)
-            col = j * m.n + i
-            assert np.allclose(s["dq"][:, col], (up.q - dn.q) / (2 * h), rtol=1e-5, atol=1e-7), (pname, i)
-            assert np.allclose(s["dF"][:, col], (up.force - dn.force) / (2 * h), rtol=1e-5, atol=1e-7)
+def test_a_design_is_immutable():
+    d = maximize_critical_force(PAPER, vary=("k",), bounds={"k": (0.5, 2.0)})
+    with pytest.raises(AttributeError):
+        d.status = "infeasible"
+    with pytest.raises(ValueError):
+        d.loads[0] = 0.0
+    assert isinstance(d.active, tuple)

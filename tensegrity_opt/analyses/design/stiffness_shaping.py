@@ -1,35 +1,29 @@
-"""Stiffness shaping and load capacity: what the tip feels, designed and measured.
+"""Stiffness shaping: rest lengths for a pose with a desired or bounded Cartesian stiffness of the tip.
 
-* :func:`preloads_for_stiffness` — rest lengths ``(L1_0, L2_0)`` per segment giving a stable pose with the tip
-  at a target under a dead tip load **and** a prescribed Cartesian tangent stiffness of the free tip: a
-  desired 2 x 2 matrix (least squares on its entries; exact, with the least change of the preloads, when it
-  is reachable), bounds on its entries, or bounds on its eigenvalues. An IPOPT NLP
-  (:class:`~tensegrity_opt.numerics.design_nlp.StiffnessNLP`) started from
-  :func:`~tensegrity_opt.analyses.design.optimal.choose_preloads`' pose; the result is verified by the forward
-  equilibrium (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` with the found rest
-  lengths, from the found ``q``) and :func:`~tensegrity_opt.analyses.equilibria.stiffness.cartesian_stiffness` there.
-* :func:`load_capacity` — for a stable pose, the largest additional dead tip load in each of a set of
-  directions before the equilibrium loses stability (a fold or a bifurcation of the path
-  ``F = F0 + t d`` from the pose; :func:`~tensegrity_opt.analyses.paths.limit_load.limit_load` with its ``base``):
-  a polar curve of the pose's capacity.
+:func:`preloads_for_stiffness` finds rest lengths ``(L1_0, L2_0)`` per segment giving a stable pose with the
+tip at a target under a dead tip load **and** a prescribed Cartesian tangent stiffness of the free tip: a desired
+2 x 2 matrix (least squares on its entries; exact, with the least change of the preloads, when it is
+reachable), bounds on its entries, or bounds on its eigenvalues. An IPOPT NLP
+(:class:`~tensegrity_opt.numerics.design_nlp.StiffnessNLP`) started from
+:func:`~tensegrity_opt.analyses.design.preloads.preloads_for_pose`' pose; the result is verified by the forward
+equilibrium (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` with the found
+rest lengths, from the found ``q``) and :func:`~tensegrity_opt.analyses.equilibria.stiffness.cartesian_stiffness`
+there.
 
-The stiffness is the one of :func:`~tensegrity_opt.analyses.equilibria.stiffness.cartesian_stiffness`: ``K = dF/d(tip)``
-along the equilibria, ``F`` the tip force holding the chain (``grad E = J^T F``, conventions.md). With the tip
-free under a dead load, at an equilibrium where ``H``, the Hessian of ``E - F . tip`` in the joint angles, is
-positive definite, ``K = (J H^-1 J^T)^-1`` (the inverse of the tip compliance), which is how the NLP writes it.
-Formulations and measured numbers: ``docs/design.md``, "Stiffness shaping and load capacity".
+The stiffness is the one of :func:`~tensegrity_opt.analyses.equilibria.stiffness.cartesian_stiffness`:
+``K = dF/d(tip)`` along the equilibria, ``F`` the tip force holding the chain (``grad E = J^T F``,
+``docs/model.md``). With the tip free under a dead load, at an equilibrium where ``H``, the Hessian of
+``E - F . tip`` in the joint angles, is positive definite, ``K = (J H^-1 J^T)^-1`` (the inverse of the tip
+compliance), which is how the NLP writes it. Formulations and measured numbers: ``docs/design.md``, "Stiffness
+shaping and load capacity".
 
-Example (the paper's chain, tip at ``(7, 1)``: both eigenvalues of the tip stiffness pushed to bounds; the
-straight chain's capacity under compression is its free critical load)::
+Example (the paper's chain, tip at ``(7, 1)``: both eigenvalues of the tip stiffness pushed to bounds)::
 
     >>> import tensegrity_opt as to
     >>> m = to.Manipulator.uniform(4)
     >>> d = to.preloads_for_stiffness(m, (7.0, 1.0), eig_bounds=[0.04, 0.6])
     >>> [round(float(w), 6) for w in d.eigenvalues], bool(d.equilibrium.stable)
     ([0.04, 0.6], True)
-    >>> cap = to.load_capacity(m, directions=[3.141592653589793], max_load=1.0)
-    >>> cap.kinds, round(float(cap.loads[0]), 6)
-    (['bifurcation'], 0.07612)
 """
 
 from __future__ import annotations
@@ -37,22 +31,22 @@ from __future__ import annotations
 import math
 from collections.abc import Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError
+from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
+from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
-from .optimal import PreloadDesign, choose_preloads, rest_length_bounds
-from ..equilibria.equilibrium import Equilibrium, check_q0, solve_equilibrium_under_force
-from ..paths.limit_load import DEFAULT_MAX_LOAD, check_max_load, limit_load
+from ..equilibria.equilibrium import Equilibrium
 from ..equilibria.stiffness import cartesian_stiffness
+from .preloads import (PreloadDesign, checked_start, forward_check, preloads_for_pose, rest_length_bounds,
+                       stability_margin)
 
-__all__ = ["StiffnessDesign", "preloads_for_stiffness", "LoadCapacity", "load_capacity", "STIFFNESS_KEYS",
-           "EXACT_TOL", "K_TOL"]
+__all__ = ["StiffnessDesign", "preloads_for_stiffness", "STIFFNESS_KEYS", "EXACT_TOL", "K_TOL"]
 
 #: The entries of the 2 x 2 stiffness ``bounds_K`` may bound (``kxy`` and ``kyx`` are the same entry: ``K`` is
 #: symmetric).
@@ -71,9 +65,8 @@ _INF = float("inf")
 _ENTRY = {"kxx": 0, "kxy": 1, "kyx": 1, "kyy": 2}
 
 
-# =========================================================================== 1. stiffness shaping
 @dataclass(frozen=True)
-class StiffnessDesign:
+class StiffnessDesign(Outcome):
     """Result of :func:`preloads_for_stiffness`.
 
     Attributes
@@ -98,8 +91,8 @@ class StiffnessDesign:
     exact : bool
         ``K_desired``: ``residual <= EXACT_TOL`` (then the preloads are the least change from the nominal ones
         holding ``K = K_desired``; otherwise the least-squares fit). Bounds: they hold (always, when returned).
-    status, success, iterations
-        IPOPT's (of the final solve).
+    solver : SolverInfo
+        IPOPT's return status and iterations (of the final solve).
     load : ndarray (2,)
         The dead tip load.
     K_desired : ndarray (2, 2) or None
@@ -108,7 +101,22 @@ class StiffnessDesign:
     eig_bounds : tuple or None
     equilibrium : Equilibrium
         The verified forward equilibrium.
+    status : str
+        :attr:`STATUSES`, from ``K_desired`` and ``exact``: ``"exact"``, ``"closest"`` (not a success: the wanted
+        stiffness is out of reach) or ``"within_bounds"``.
+    message : str
+        The same in a sentence, with the residual.
     """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "exact": "K = K_desired holds at the verified pose (residual <= EXACT_TOL), with the least change of the "
+                 "preloads (within the bounds, where some are given)",
+        "closest": "K_desired is not reachable from any start: the least-squares fit with the smallest misfit "
+                   "(residual, relative), within the bounds where some are given",
+        "within_bounds": "the bounds on the entries and eigenvalues of K hold at the verified pose, with the least "
+                         "change of the preloads",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"exact", "within_bounds"})
 
     manipulator: Manipulator
     rest_lengths: np.ndarray
@@ -119,28 +127,47 @@ class StiffnessDesign:
     margin: float
     residual: float
     exact: bool
-    status: str
-    success: bool
-    iterations: int
+    solver: SolverInfo
     load: np.ndarray
     K_desired: np.ndarray | None
     bounds_K: dict
     eig_bounds: tuple | None
     equilibrium: Equilibrium = field(repr=False)
 
+    def __post_init__(self) -> None:
+        freeze(self)
+
+    @property
+    def status(self) -> str:
+        """``"exact"``, ``"closest"`` or ``"within_bounds"`` (:attr:`STATUSES`)."""
+        if self.K_desired is None:
+            return "within_bounds"
+        return "exact" if self.exact else "closest"
+
+    @property
+    def message(self) -> str:
+        """A sentence: what the stiffness reaches."""
+        if self.status == "exact":
+            return f"K = K_desired reached (relative misfit {self.residual:.3g})"
+        if self.status == "closest":
+            return (f"K_desired is not reachable: the closest stiffness found misses it by {self.residual:.6g} "
+                    "(relative, Frobenius norm)")
+        return (f"the stiffness bounds hold: eigenvalues {self.eigenvalues[0]:.6g}, {self.eigenvalues[1]:.6g} "
+                "(force / length)")
+
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``manipulator``, ``rest_lengths``, ``q``, ``tip``, ``K``, ``eigenvalues``, ``margin``,
-        ``residual``, ``exact``, ``load``, ``K_desired`` (or null), ``bounds_K`` (``[lo, hi]`` per entry, null
-        for an open side), ``eig_bounds`` (the same, or null), ``solver`` ``{status, success, iterations}``."""
-        return {"manipulator": self.manipulator.to_dict(), "rest_lengths": numbers(self.rest_lengths),
+        """JSON form: ``success``, ``status``, ``message``, ``manipulator``, ``rest_lengths``, ``q``, ``tip``,
+        ``K``, ``eigenvalues``, ``margin``, ``residual``, ``exact``, ``load``, ``K_desired`` (or null), ``bounds_K``
+        (``[lo, hi]`` per entry, null for an open side), ``eig_bounds`` (the same, or null), ``solver``
+        ``{status, iterations}``."""
+        return {**self.outcome(), "manipulator": self.manipulator.to_dict(), "rest_lengths": numbers(self.rest_lengths),
                 "q": numbers(self.q), "tip": numbers(self.tip), "K": numbers(self.K),
                 "eigenvalues": numbers(self.eigenvalues), "margin": number(self.margin),
                 "residual": number(self.residual), "exact": bool(self.exact), "load": numbers(self.load),
                 "K_desired": None if self.K_desired is None else numbers(self.K_desired),
                 "bounds_K": {k: nullables(v) for k, v in self.bounds_K.items()},
                 "eig_bounds": None if self.eig_bounds is None else nullables(self.eig_bounds),
-                "solver": {"status": self.status, "success": bool(self.success),
-                           "iterations": int(self.iterations)}}
+                "solver": self.solver.to_dict()}
 
 
 def _pair(v, name: str) -> tuple[float, float]:
@@ -226,8 +253,8 @@ def _violations(K: np.ndarray, kb: dict, eb, Ks: float) -> list[tuple[str, float
 
 def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: Mapping | None = None,
                            eig_bounds=None, load=(0.0, 0.0), end_angle: float | None = None, margin: float = 1e-3,
-                           bounds: tuple | None = None, q0=None, max_starts: int = 4,
-                           time_limit: float | None = None) -> StiffnessDesign:
+                           bounds: tuple | None = None, start=None, max_starts: int = 4,
+                           timeout: float | None = None) -> StiffnessDesign:
     """Rest lengths putting the tip at ``target``, stable under ``load``, with a shaped Cartesian stiffness.
 
     Parameters
@@ -237,19 +264,20 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     target : (float, float)
         Tip position ``(x, y)``.
     K_desired : 2 x 2 array_like, optional
-        The stiffness wanted (symmetric to ``1e-6`` relative, its symmetric part is used; force / length). First held exactly (``K = K_desired`` as constraints,
-        the least change of the preloads as objective); where that fails, the least-squares fit on its entries,
-        ``min |K - K_desired|_F^2 / |K_desired|_F^2`` (plus ``FIT_REG`` times the relative change of the
-        preloads, to pick one of its minimisers), and, where the fit comes within ``EXACT_TRY``, the exact
-        problem again from it. Reached: ``exact=True``, ``residual`` ~1e-9. Not reachable from any start: the
-        fit with the smallest misfit, ``exact=False``, ``residual`` its relative misfit (no error).
+        The stiffness wanted (symmetric to ``1e-6`` relative, its symmetric part is used; force / length). First
+        held exactly (``K = K_desired`` as constraints, the least change of the preloads as objective); where
+        that fails, the least-squares fit on its entries, ``min |K - K_desired|_F^2 / |K_desired|_F^2`` (plus
+        ``FIT_REG`` times the relative change of the preloads, to pick one of its minimisers), and, where the
+        fit comes within ``EXACT_TRY``, the exact problem again from it. Reached: ``exact=True``, ``residual``
+        ~1e-9. Not reachable from any start: the fit with the smallest misfit, ``exact=False``,
+        ``status="closest"``, ``residual`` its relative misfit (no error).
     bounds_K : dict, optional
         ``{"kxx": [lo, hi], "kxy": [lo, hi], "kyy": [lo, hi]}`` (``kyx`` = ``kxy``; ``None`` an open side):
         bounds on the entries of ``K``.
     eig_bounds : [lo, hi], optional
         Bounds on both eigenvalues of ``K`` (``None`` an open side; ``hi > 0``).
         With bounds only, the objective is the least change from the nominal preloads
-        (``|L0 - L0_nom|^2 / |L0_nom|^2``, as :func:`choose_preloads`). Bounds and ``K_desired`` combine
+        (``|L0 - L0_nom|^2 / |L0_nom|^2``, as :func:`preloads_for_pose`). Bounds and ``K_desired`` combine
         (the fit within the bounds). At least one of the three is needed.
     load : (float, float)
         The dead tip load ``(fx, fy)``.
@@ -259,16 +287,16 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
         Required smallest eigenvalue of the joint-space Hessian of ``E - F . tip`` (torque / rad; > 0 makes
         the pose stable with the tip free, and ``K`` positive definite).
     bounds : (lo, hi), optional
-        Bounds on every rest length, as :func:`choose_preloads` (default ``(0.1 b_min, 4 b_max)``).
-    q0 : array_like (n,), optional
-        The configuration to start from (:func:`choose_preloads`' ``q0``): the result is then sought in its
+        Bounds on every rest length, as :func:`preloads_for_pose` (default ``(0.1 b_min, 4 b_max)``).
+    start : array_like (n,), optional
+        The configuration to start from (:func:`preloads_for_pose`' ``start``): the result is then sought in its
         family of shapes only. Default: the equilibria of the nominal chain at the target
-        (:func:`~tensegrity_opt.analyses.equilibria.all_equilibria.find_equilibria`; stable ones first, by energy), each
-        a start in turn (different shapes reach different stiffnesses), until one meets the requirement
+        (:func:`~tensegrity_opt.analyses.equilibria.all_equilibria.find_equilibria`; stable ones first, by energy),
+        each a start in turn (different shapes reach different stiffnesses), until one meets the requirement
         (an exact ``K_desired``, or the bounds); an inexact fit keeps the smallest residual over the starts.
     max_starts : int
         At most this many of those starts (default 4).
-    time_limit : float, optional
+    timeout : float, optional
         Seconds this call may take (:func:`tensegrity_opt.time_limit`).
 
     Returns
@@ -285,7 +313,7 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     UnreachableTargetError
         (``ValueError``) the target is beyond the chain's reach (``field="target"``).
     InfeasibleDesignError
-        (``RuntimeError``) no stable pose at the target (from :func:`choose_preloads`), or no rest lengths
+        (``RuntimeError``) no stable pose at the target (from :func:`preloads_for_pose`), or no rest lengths
         meet the stiffness bounds: ``best`` holds the best point found — the least relaxation of the bounds
         that a stable pose reaches (elastic mode): ``q``, ``rest_lengths``, ``K``, ``violations`` (the bounds
         violated there, also named in the message) and ``least_violation`` (force / length); or the
@@ -296,8 +324,9 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     Kd, kb, eb = _check_stiffness_args(K_desired, bounds_K, eig_bounds)
     if isinstance(max_starts, bool) or not isinstance(max_starts, (int, np.integer)) or max_starts < 1:
         raise InvalidParameterError(f"max_starts must be an integer >= 1, got {max_starts!r}", field="max_starts")
-    with _time_limit(time_limit):
-        return _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, q0, int(max_starts))
+    with _time_limit(timeout):
+        return _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, start,
+                                       int(max_starts))
 
 
 class _Shaper:
@@ -446,11 +475,11 @@ class _Shaper:
         return r, False
 
 
-def _starts(m: Manipulator, target: np.ndarray, q0, max_starts: int) -> list[np.ndarray | None]:
-    """Configurations to start the pose from: ``q0``; else the equilibria of the nominal chain at the target
+def _starts(m: Manipulator, target: np.ndarray, start, max_starts: int) -> list[np.ndarray | None]:
+    """Configurations to start the pose from: ``start``; else the equilibria of the nominal chain at the target
     (:func:`find_equilibria`: stable ones first, by energy), at most ``max_starts``, or None (the default)."""
-    if q0 is not None:
-        return [q0]
+    if start is not None:
+        return [start]
     from ..equilibria.all_equilibria import find_equilibria
 
     try:
@@ -462,14 +491,14 @@ def _starts(m: Manipulator, target: np.ndarray, q0, max_starts: int) -> list[np.
     return out or [None]
 
 
-def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, q0,
+def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, bounds, start,
                             max_starts) -> StiffnessDesign:
     n = m.n
     if n < 2:
         raise InvalidParameterError("preloads_for_stiffness needs a chain of n >= 2 segments", field="n")
     if end_angle is not None and not math.isfinite(float(end_angle)):
         raise InvalidParameterError("end_angle must be finite", field="end_angle")
-    q0 = check_q0(m, q0)
+    start = checked_start(m, start)
     lo, hi = rest_length_bounds(m, bounds)
     tgt = np.asarray(target, dtype=float)
     if tgt.shape != (2,) or not np.all(np.isfinite(tgt)):
@@ -479,11 +508,11 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
     verify_error = None
     fits = []                                       # inexact least-squares fits: (misfit, result)
     elastic_best = None
-    for qs in _starts(m, tgt, q0, max_starts):
+    for qs in _starts(m, tgt, start, max_starts):
         # the pose: a stable equilibrium at the target from this start (validates target, load, margin, bounds)
         try:
-            pose = choose_preloads(m, target, load, "nominal", margin=margin, bounds=bounds, end_angle=end_angle,
-                                   q0=qs)
+            pose = preloads_for_pose(m, target, load=load, objective="change", margin=margin, bounds=bounds,
+                                     end_angle=end_angle, start=qs)
         except InfeasibleDesignError as exc:
             pose_error = pose_error or exc
             continue
@@ -528,21 +557,11 @@ def _preloads_for_stiffness(m, target, Kd, kb, eb, load, end_angle, margin, boun
 def _verified(sh: _Shaper, res) -> StiffnessDesign:
     """The forward check of an NLP solution, and the result built from the recomputed numbers."""
     m, load, target = sh.m, sh.load, sh.target
-    kb, eb, Kd, Ks, T = sh.kb, sh.eb, sh.Kd, sh.Ks, sh.T
+    kb, eb, Kd, Ks = sh.kb, sh.eb, sh.Kd, sh.Ks
     best = sh.best(res.x)
     q, L10, L20 = sh.pose(res.x)
     m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
-    try:
-        eq = solve_equilibrium_under_force(m_new, load[0], load[1], q0=q)
-    except TimeLimitError:
-        raise
-    except TensegrityError as exc:
-        raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
-                                    f"({exc})", status=res.status, best=best) from exc
-    if not eq.stable or np.max(np.abs(eq.tip - target)) > 1e-6 * float(m.b.max()):
-        raise InfeasibleDesignError(
-            f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
-            f"(target {target.tolist()}), Morse index {eq.morse_index}", status=res.status, best=best)
+    eq = forward_check(m_new, load, q, target, settle=False, status=res.status, best=best)
     try:
         K = cartesian_stiffness(m_new, eq)
     except InvalidParameterError as exc:
@@ -552,8 +571,7 @@ def _verified(sh: _Shaper, res) -> StiffnessDesign:
     if viol:
         raise InfeasibleDesignError("verification failed: at the forward equilibrium " +
                                     "; ".join(v for v, _ in viol), status=res.status, best=best)
-    _, _, Hphi, _, _ = chain_solver(m_new).evaluate(eq.q, load)
-    achieved = float(np.linalg.eigvalsh(T.T @ Hphi @ T)[0])
+    achieved = stability_margin(m_new, eq.q, load)
     if Kd is not None:
         residual = float(np.linalg.norm(K - Kd) / np.linalg.norm(Kd))
         exact = residual <= EXACT_TOL
@@ -562,271 +580,8 @@ def _verified(sh: _Shaper, res) -> StiffnessDesign:
         exact = True
     return StiffnessDesign(manipulator=m_new, rest_lengths=np.column_stack([L10, L20]), q=eq.q, tip=eq.tip, K=K,
                            eigenvalues=np.linalg.eigvalsh(K), margin=achieved, residual=residual, exact=exact,
-                           status=res.status, success=res.success, iterations=res.iterations,
-                           load=load.copy(), K_desired=None if Kd is None else Kd.copy(),
+                           solver=SolverInfo(res.status, res.iterations), load=load.copy(),
+                           K_desired=None if Kd is None else Kd.copy(),
                            bounds_K={k: (float(a), float(b)) for k, (a, b) in kb.items()
                                      if math.isfinite(a) or math.isfinite(b)},
                            eig_bounds=None if eb is None else (float(eb[0]), float(eb[1])), equilibrium=eq)
-
-
-# =========================================================================== 2. load capacity
-@dataclass(frozen=True)
-class LoadCapacity:
-    """Result of :func:`load_capacity`: per direction ``d_i`` (``K`` of them), the largest additional dead tip
-    load ``t_i`` along ``d_i`` the pose carries before its equilibrium loses stability.
-
-    Attributes
-    ----------
-    angles : ndarray (K,)
-        The directions' angles ``atan2(d_y, d_x)`` (rad).
-    directions : ndarray (K, 2)
-        The unit directions.
-    loads : ndarray (K,)
-        The limit load ``t_i`` (force units; the magnitude of the load added to ``base``), NaN where the path
-        does not lose stability (``kinds[i] == "none"``).
-    forces : ndarray (K, 2)
-        The total tip force at the limit, ``base + t_i d_i`` (guided: ``Fy`` the guide's reaction); NaN rows for
-        ``"none"``.
-    kinds : list of str
-        ``"fold"`` (snap-through), ``"bifurcation"`` (a branch point: buckling) or ``"none"``.
-    reasons : list of str or None
-        For ``"none"``: ``"joint_limit"`` (a joint reaches its range bound on the stable path), ``"max_load"``
-        (stable up to ``max_load``), or why the path could not be followed (``"time_limit"``, the branch's
-        status, an error code); None otherwise.
-    end_loads : ndarray (K,)
-        The last load reached on the stable path (``loads`` where there is a limit).
-    q : ndarray (K, n)
-        The configuration at the limit (NaN rows for ``"none"``).
-    base : ndarray (2,)
-        The load the pose is in equilibrium under (``F = base + t d``).
-    boundary : str
-    max_load : float
-        The largest ``t`` followed.
-    start : Equilibrium
-        The pose (under ``base``).
-    manipulator : Manipulator
-        The chain (with the pose's rest lengths).
-    results : list of LimitLoad
-        The per-direction results of :func:`~tensegrity_opt.analyses.paths.limit_load.limit_load` (None where it
-        failed).
-    """
-
-    angles: np.ndarray
-    directions: np.ndarray
-    loads: np.ndarray
-    forces: np.ndarray
-    kinds: list
-    reasons: list
-    end_loads: np.ndarray
-    q: np.ndarray
-    base: np.ndarray
-    boundary: str
-    max_load: float
-    start: Equilibrium
-    manipulator: Manipulator
-    results: list = field(repr=False, default_factory=list)
-
-    @property
-    def success(self) -> bool:
-        """Every direction followed to a limit, the joint range or ``max_load``."""
-        return all(k != "none" or r in ("joint_limit", "max_load") for k, r in zip(self.kinds, self.reasons))
-
-    @property
-    def weakest(self) -> tuple[float, float] | None:
-        """``(angle, load)`` of the smallest limit load over the directions (None when no direction has one)."""
-        ok = np.isfinite(self.loads)
-        if not ok.any():
-            return None
-        i = int(np.nanargmin(np.where(ok, self.loads, np.nan)))
-        return float(self.angles[i]), float(self.loads[i])
-
-    def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``angles``, ``directions``, ``loads`` and ``forces`` (null where ``kind`` is none),
-        ``kinds``, ``reasons``, ``end_loads``, ``base``, ``boundary``, ``max_load``, ``weakest``
-        (``{angle, load}`` or null), ``start``, ``manipulator``, ``success``."""
-        wk = self.weakest
-        return {"angles": numbers(self.angles), "directions": numbers(self.directions),
-                "loads": nullables(self.loads), "forces": nullables(self.forces), "kinds": list(self.kinds),
-                "reasons": list(self.reasons), "end_loads": numbers(self.end_loads), "base": numbers(self.base),
-                "boundary": self.boundary, "max_load": number(self.max_load),
-                "weakest": None if wk is None else {"angle": wk[0], "load": wk[1]},
-                "start": self.start.to_dict(), "manipulator": self.manipulator.to_dict(),
-                "success": self.success}
-
-
-def _directions(directions, boundary: str) -> np.ndarray:
-    if isinstance(directions, (int, np.integer)) and not isinstance(directions, bool):
-        if directions < 1:
-            raise InvalidParameterError(f"directions must be >= 1, got {directions}", field="directions")
-        ang = 2.0 * math.pi * np.arange(int(directions)) / int(directions)
-        D = np.column_stack([np.cos(ang), np.sin(ang)])
-        D[np.abs(D) < 1e-15] = 0.0                  # cos(pi / 2) is 6e-17: make the axes exact
-    else:
-        try:
-            arr = np.asarray(directions, dtype=float)
-        except (TypeError, ValueError):
-            raise InvalidParameterError("directions must be a count, a list of angles (rad) or of (dx, dy) vectors",
-                                        field="directions") from None
-        if arr.ndim == 1 and arr.size >= 1:
-            D = np.column_stack([np.cos(arr), np.sin(arr)])
-        elif arr.ndim == 2 and arr.shape[1] == 2 and arr.shape[0] >= 1:
-            D = arr.copy()
-        else:
-            raise InvalidParameterError(f"directions must be a count, a list of angles (rad) or a (K, 2) array of "
-                                        f"vectors, got shape {arr.shape}", field="directions")
-        if not np.all(np.isfinite(D)):
-            raise InvalidParameterError("directions must be finite", field="directions")
-        nrm = np.linalg.norm(D, axis=1)
-        if np.any(nrm == 0.0):
-            raise InvalidParameterError("a direction vector is zero", field="directions")
-        D = D / nrm[:, None]
-    if boundary == "guided":
-        bad = np.flatnonzero(np.abs(D[:, 0]) < 1e-12)
-        if bad.size:
-            raise InvalidParameterError(f"a guided tip takes loads with an x component (the guide takes y); direction "
-                                        f"{int(bad[0])} is {D[bad[0]].tolist()}", field="directions")
-    return D
-
-
-def _pose(m: Manipulator, pose, base):
-    """``(chain, start q or None, base)`` from :func:`load_capacity`'s ``pose``."""
-    if pose is None:
-        return m, None, base
-    if isinstance(pose, Equilibrium):
-        return m, pose.q, (pose.force.copy() if base is None else base)
-    if hasattr(pose, "manipulator") and isinstance(getattr(pose, "equilibrium", None), Equilibrium):
-        mm = pose.manipulator
-        if not isinstance(mm, Manipulator) or mm.n != m.n:
-            raise InvalidParameterError("pose's manipulator does not match m", field="pose")
-        return mm, pose.equilibrium.q, (pose.equilibrium.force.copy() if base is None else base)
-    try:
-        arr = np.asarray(pose, dtype=float)
-    except (TypeError, ValueError):
-        raise InvalidParameterError("pose must be None, an Equilibrium, a design result, n joint angles or (n, 2) "
-                                    "rest lengths", field="pose") from None
-    if arr.shape == (m.n, 2):
-        if not np.all(np.isfinite(arr)) or np.any(arr <= 0):
-            raise InvalidParameterError("rest lengths must be finite and > 0", field="pose")
-        mm = Manipulator(s.replace(L0=(float(l1), float(l2))) for s, (l1, l2) in zip(m.segments, arr))
-        return mm, None, base
-    if arr.shape == (m.n,):
-        try:
-            q = check_q0(m, arr)
-        except InvalidParameterError as exc:
-            raise InvalidParameterError(exc.message, field="pose") from None
-        return m, q, base
-    raise InvalidParameterError(f"pose must be None, an Equilibrium, a design result, {m.n} joint angles or "
-                                f"({m.n}, 2) rest lengths; got shape {arr.shape}", field="pose")
-
-
-def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, boundary: str = "free",
-                  max_load: float | None = None, max_points: int = 4000,
-                  timeout: float | None = None) -> LoadCapacity:
-    """The largest additional dead tip load, in each direction, that a stable pose carries before it loses
-    stability: a polar curve of the pose's load capacity.
-
-    For each unit direction ``d`` the dead-load path ``F = base + t d`` (``t >= 0``) is followed from the pose by
-    arclength continuation until the equilibrium first loses stability — a fold (the arm snaps through) or a
-    bifurcation (it buckles) — with :func:`~tensegrity_opt.analyses.paths.limit_load.limit_load` (``start`` the pose,
-    ``base`` its load). Where the path stays stable up to a joint's range bound or ``max_load``, there is no
-    limit (``kind "none"``, ``loads`` NaN, ``reasons`` says which).
-
-    Parameters
-    ----------
-    m : Manipulator
-    pose : optional
-        The stable pose: None (the least-energy rest configuration of ``m``; with a non-zero ``base`` the
-        equilibrium under it), an :class:`Equilibrium` (its ``q``; ``base`` defaults to its force), a design result
-        with ``manipulator`` and ``equilibrium`` (:class:`StiffnessDesign`,
-        :class:`~tensegrity_opt.analyses.design.optimal.PreloadDesign`: that chain, that pose, its load), ``n`` joint angles
-        (put on the equilibrium under ``base`` by Newton), or ``(n, 2)`` rest lengths (``m`` with them, at its
-        least-energy rest configuration or the equilibrium under ``base``).
-    base : (float, float), optional
-        The dead tip load the pose is in equilibrium under (default: the pose's own load, else zero).
-    directions : int or sequence
-        ``K``: the angles ``2 pi i / K``; or a list of angles (rad); or a ``(K, 2)`` array of vectors.
-    boundary : {"free", "guided"}
-        As :func:`~tensegrity_opt.analyses.paths.limit_load.limit_load` (guided: only directions with an x component).
-    max_load : float, optional
-        Follow ``t`` at most this far (default ``DEFAULT_MAX_LOAD`` force units ``k c^2 / (2 b)``).
-    max_points : int
-        Continuation points per direction at most.
-    timeout : float, optional
-        Seconds for the whole call; directions not finished in time have ``reasons "time_limit"``.
-
-    Returns
-    -------
-    LoadCapacity
-
-    Raises
-    ------
-    InvalidParameterError
-        (``ValueError``) bad arguments (``field`` names one), or a pose that is not a stable equilibrium under
-        ``base`` (``field="pose"``).
-    """
-    if boundary not in ("free", "guided"):
-        raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")
-    D = _directions(directions, boundary)
-    if base is not None:
-        try:
-            base = np.asarray(base, dtype=float)
-        except (TypeError, ValueError):
-            raise InvalidParameterError("base must be two finite numbers (fx, fy)", field="base") from None
-        if base.shape != (2,) or not np.all(np.isfinite(base)):
-            raise InvalidParameterError("base must be two finite numbers (fx, fy)", field="base")
-    mm, q0, base = _pose(m, pose, base)
-    base = np.zeros(2) if base is None else np.asarray(base, dtype=float)
-    max_load = check_max_load(max_load)
-    if max_load is None:
-        max_load = DEFAULT_MAX_LOAD * mm.torque_scale / (mm.straight_length / mm.n)
-    with _time_limit(timeout):
-        start = _start_equilibrium(mm, q0, base)
-        K = D.shape[0]
-        loads, end_loads = np.full(K, np.nan), np.zeros(K)
-        forces, qs = np.full((K, 2), np.nan), np.full((K, mm.n), np.nan)
-        kinds, reasons, results = [], [], []
-        for i, d in enumerate(D):
-            try:
-                r = limit_load(mm, d, boundary, max_load, start, base=base, max_points=max_points)
-            except TimeLimitError:
-                r = None
-                kinds.append("none")
-                reasons.append("time_limit")
-            except InvalidParameterError as exc:
-                if exc.field == "start":             # the same pose for every direction: refuse it
-                    raise InvalidParameterError(exc.message, field="pose") from None
-                raise
-            except TensegrityError as exc:
-                r = None
-                kinds.append("none")
-                reasons.append(exc.code)
-            results.append(r)
-            if r is None:
-                continue
-            kinds.append(r.kind)
-            reasons.append(None if r.kind != "none" else r.status)
-            end_loads[i] = r.end_load
-            if r.kind != "none":
-                loads[i] = r.load
-                forces[i] = r.force
-                qs[i] = r.q
-    return LoadCapacity(angles=np.arctan2(D[:, 1], D[:, 0]), directions=D, loads=loads, forces=forces,
-                        kinds=kinds, reasons=reasons, end_loads=end_loads, q=qs, base=base.copy(),
-                        boundary=boundary, max_load=float(max_load), start=start, manipulator=mm, results=results)
-
-
-def _start_equilibrium(m: Manipulator, q0, base: np.ndarray) -> Equilibrium:
-    """The pose as an equilibrium under ``base``: from ``q0`` (it must be one: Newton moves it by < 1e-3 rad),
-    else the least-energy rest configuration (zero ``base``) or the equilibrium under ``base``."""
-    if q0 is None:
-        if not np.any(base != 0.0):
-            from ..equilibria.rest import rest_configuration
-
-            return rest_configuration(m)
-        return solve_equilibrium_under_force(m, base[0], base[1])
-    eq = solve_equilibrium_under_force(m, base[0], base[1], q0=q0)
-    moved = float(np.abs(eq.q - q0).max())
-    if moved > 1e-3:
-        raise InvalidParameterError(f"pose is not (near) an equilibrium under the base load {base.tolist()}: Newton "
-                                    f"moved it by {moved:.3g} rad", field="pose")
-    return eq

@@ -1,0 +1,365 @@
+"""Preloads: the springs' rest lengths for a pose, or for a required critical load.
+
+Every preload problem of the package (this module's two, :func:`~.stiffness_shaping.preloads_for_stiffness` and
+:func:`~.preload_control.preloads_for_trajectory`) is a function ``preloads_for_<requirement>(m, <requirement>,
+*, ...)`` with the same keywords for the same things: ``load`` (the dead tip load ``(fx, fy)``; ``loads`` per
+step of a trajectory), ``bounds`` (the actuator bounds on the rest lengths, :func:`rest_length_bounds`),
+``margin`` (the required stability margin), ``end_angle`` (the last link's absolute angle; ``end_angles`` per
+step), ``start`` (the configuration to start from), ``objective`` (:data:`OBJECTIVES`) and ``timeout`` (seconds).
+
+* :func:`preloads_for_pose` - rest lengths ``(L1_0, L2_0)`` per segment putting the tip at a target, stably,
+  under a dead tip load (:func:`tensegrity_opt.numerics.preload_nlp`); the result, :class:`PreloadDesign`, is
+  verified by the forward equilibrium with those rest lengths (:func:`forward_check`);
+* :func:`preloads_for_critical_force` - the least change of the (symmetric) rest lengths giving the straight
+  chain a required critical load (the buckling design problem of
+  :func:`~tensegrity_opt.analyses.design.strongest.buckling_design`, returning its :class:`Design`).
+
+Formulations and worked examples: ``docs/design.md``.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, replace
+from typing import Any, ClassVar
+
+import numpy as np
+
+from ...errors import (InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError,
+                       UnreachableTargetError)
+from ...model.manipulator import Manipulator
+from ...numerics import RANGE_SHRINK, chain_solver
+from ...outcome import Outcome, SolverInfo, freeze
+from ...serialize import number, numbers
+from ...timelimit import time_limit as _time_limit
+from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
+from ..equilibria.least_energy import solve_equilibrium
+from .strongest import Design, buckling_design
+
+__all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
+           "forward_check", "stability_margin", "checked_start", "checked_vector"]
+
+#: What a preload problem minimises: ``"change"`` the (weighted) change of the rest lengths from the reference
+#: ones (the chain's own for a pose, the previous step's along a trajectory), ``"margin"`` minus the stability
+#: margin, ``"energy"`` the spring energy.
+OBJECTIVES = ("change", "margin", "energy")
+#: Tip error (times ``max b``) within which a forward solve lands on the target.
+LAND_TOL = 1e-6
+_INF = float("inf")
+
+
+@dataclass(frozen=True)
+class PreloadDesign(Outcome):
+    """Result of :func:`preloads_for_pose`.
+
+    Attributes
+    ----------
+    manipulator : Manipulator
+        The chain with the chosen rest lengths ``(L1_0, L2_0)`` per segment.
+    preloads : ndarray (n, 2)
+        The chosen rest lengths.
+    q : ndarray (n,)
+        The verified equilibrium configuration (force control from the optimiser's ``q``).
+    margin : float
+        Smallest eigenvalue of the Hessian of ``E - F.tip`` in joint angles at ``q``
+        (torque per radian), recomputed.
+    tip : ndarray (2,)
+        The verified tip position.
+    energy : float
+        The spring energy there.
+    solver : SolverInfo
+        IPOPT's return status and iterations.
+    equilibrium : Equilibrium
+        The full verified equilibrium.
+    status : str
+        ``"optimal"`` (:attr:`STATUSES`): a result is returned only when the solve converged and the forward
+        check holds; otherwise :func:`preloads_for_pose` raises.
+    message : str
+        The same in a sentence.
+    """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "optimal": "IPOPT converged to rest lengths meeting every requirement, and the forward equilibrium with "
+                   "them, from the optimiser's configuration, lands on the target, stable",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset(STATUSES)
+
+    manipulator: Manipulator
+    preloads: np.ndarray
+    q: np.ndarray
+    margin: float
+    tip: np.ndarray
+    energy: float
+    solver: SolverInfo
+    equilibrium: Equilibrium = field(repr=False)
+    status: str = "optimal"
+
+    def __post_init__(self) -> None:
+        freeze(self)
+
+    @property
+    def message(self) -> str:
+        """A sentence: the verified pose and how IPOPT ended."""
+        return (f"optimal rest lengths: the tip on the target, stable with margin {self.margin:.6g} "
+                f"(IPOPT {self.solver.status}, {self.solver.iterations} iterations)")
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/design/preloads``): ``success``, ``status``, ``message``,
+        ``manipulator``, ``preloads``, ``q``, ``margin``, ``tip``, ``energy``, ``solver`` ``{status, iterations}``."""
+        return {**self.outcome(), "manipulator": self.manipulator.to_dict(), "preloads": numbers(self.preloads),
+                "q": numbers(self.q), "margin": number(self.margin), "tip": numbers(self.tip),
+                "energy": number(self.energy), "solver": self.solver.to_dict()}
+
+
+def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: str = "guided",
+                                bounds: tuple | None = None, timeout: float | None = None) -> Design:
+    """The smallest change of the rest lengths ``L0`` (symmetric) giving a critical load ``>= required``.
+
+    Minimises ``sum((L0 - L0_nom)^2) / sum(L0_nom^2)`` subject to
+    ``Z^T (K(L0) - required G) Z`` positive semidefinite and ``L0`` within ``bounds``
+    (default ``(0.05 * 2b, 2b)``: springs in tension at straight; each a number or ``n`` values, one per
+    segment: both springs of a segment keep one rest length). ``timeout`` (seconds) bounds the whole call,
+    both solves, as in :func:`~tensegrity_opt.analyses.design.strongest.maximize_critical_force`.
+
+    Returns
+    -------
+    Design
+        ``status="optimal"``, ``feasible=True`` with the minimal change; or, when no rest lengths within the
+        bounds reach ``required``, ``status="below_required"``, ``feasible=False`` with the strongest achievable
+        design.
+
+    Raises
+    ------
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
+    """
+    required = float(required)
+    if not math.isfinite(required) or required <= 0:
+        raise InvalidParameterError("required must be a positive finite load", field="required")
+    b = m.b
+    bnds = {"L0": bounds if bounds is not None else (0.05 * 2 * b, 2 * b)}
+    with _time_limit(timeout):
+        try:
+            return buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
+        except InfeasibleDesignError:
+            best = buckling_design(m, ("L0",), bnds, None, boundary, {}, required=None)
+            return replace(best, feasible=False, status="below_required")
+
+
+
+def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str = "change", margin: float = 1e-3,
+                      taut: bool = False, bounds: tuple | None = None, end_angle: float | None = None, start=None,
+                      timeout: float | None = None) -> PreloadDesign:
+    """Rest lengths ``(L1_0, L2_0)`` per segment putting the tip at ``target`` stably under ``load``.
+
+    Parameters
+    ----------
+    m : Manipulator
+        Geometry and stiffness (kept); its rest lengths are the nominal preloads.
+    target : (float, float)
+        Tip position ``(x, y)`` (length units).
+    load : (float, float)
+        Tip force ``(fx, fy)`` (a dead load).
+    objective : {"change", "margin", "energy"}
+        Least change from the nominal preloads (``m``'s rest lengths); largest stability margin; least spring
+        energy (:data:`OBJECTIVES`).
+    margin : float
+        Required smallest eigenvalue of the joint-space Hessian of ``E - F.tip`` (torque/rad);
+        the lower bound of the margin for ``objective="margin"``.
+    taut : bool
+        Keep every spring in tension (``L >= L0``).
+    bounds : (lo, hi), optional
+        Bounds on every rest length, each a number or ``2 n`` values (``L1_0`` of every segment, then every
+        ``L2_0``); default ``(0.1 b_min, 4 b_max)`` (:func:`rest_length_bounds`).
+    end_angle : float, optional
+        Also prescribe the absolute angle of the last link (rad).
+    start : array_like (n,), optional
+        The configuration to start from (the result is sought in its family of shapes); default the
+        least-energy equilibrium at the target with the nominal preloads (or a straight-line guess when there
+        is none).
+    timeout : float, optional
+        Seconds this call may take, as in :func:`~tensegrity_opt.analyses.design.strongest.maximize_critical_force`.
+
+    Returns
+    -------
+    PreloadDesign
+        ``status="optimal"``. Verified (:func:`forward_check`): the force-controlled equilibrium with these
+        preloads, started from the optimiser's ``q``, lands on the target within ``1e-6 max(b)`` with Morse
+        index 0.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        (``RuntimeError``) IPOPT found no feasible preloads (``best`` holds its last point as a
+        dict), or the verification failed.
+    TimeLimitError
+        (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
+        own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
+    """
+    with _time_limit(timeout):
+        return _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start)
+
+
+def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start) -> PreloadDesign:
+    from ...numerics import preload_nlp
+
+    if objective not in OBJECTIVES:
+        raise InvalidParameterError(f"objective must be one of {OBJECTIVES}, got {objective!r}", field="objective")
+    target = np.asarray(target, dtype=float)
+    load = np.asarray(load, dtype=float)
+    if target.shape != (2,) or not np.all(np.isfinite(target)):
+        raise InvalidParameterError("target must be two finite numbers (x, y)", field="target")
+    if load.shape != (2,) or not np.all(np.isfinite(load)):
+        raise InvalidParameterError("load must be two finite numbers (fx, fy)", field="load")
+    if not math.isfinite(margin) or margin < 0:
+        raise InvalidParameterError("margin must be finite and >= 0", field="margin")
+    n = m.n
+    if n < 2:
+        # one segment: the target alone fixes its angle (a point of a circle) and two rest lengths hold it;
+        # the NLP is written for chains (its rows assume n >= 2)
+        raise InvalidParameterError("preloads_for_pose needs a chain of n >= 2 segments", field="n")
+    dx, dy = m.straight_length - target[0], target[1]
+    try:
+        m.check_reachable(dx, dy)
+    except UnreachableTargetError as exc:        # the caller gave a tip position, not a deflection
+        raise UnreachableTargetError(exc.message, field="target", **exc.details) from None
+    lo, hi = rest_length_bounds(m, bounds)
+    q0 = checked_start(m, start)
+    if q0 is None:
+        try:
+            q0 = solve_equilibrium(m, dx, dy).q
+        except TensegrityError:
+            q0 = _reach_guess(m, target)
+    nlp = preload_nlp(n)
+    L0nom = np.concatenate([m.L1_0, m.L2_0])
+    L0start = np.clip(L0nom, lo, hi)
+    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start[:n], L0start[n:]))
+    _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
+    Hq = _relative(Hphi)
+    mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
+    w_, V_ = np.linalg.eigh(Hq - mu0 * np.eye(n))
+    # a start for the margin's Cholesky factor; the floor relative to the Hessian's size (loads of 1e12
+    # give entries of 1e12, where an absolute 1e-6 is below roundoff and the factorisation fails)
+    Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
+    lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
+    x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
+    lbx = np.concatenate([np.full(n, -_INF), np.broadcast_to(lo, (2 * n)), [margin], np.full(lv0.size, -_INF)])
+    ubx = np.concatenate([np.full(n, _INF), np.broadcast_to(hi, (2 * n)), [margin if objective != "margin" else _INF],
+                          np.full(lv0.size, _INF)])
+    for k_ in nlp.diag:
+        lbx[3 * n + 1 + k_] = 0.0
+    lim = m.joint_limits * (1 - RANGE_SHRINK)
+    ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
+    lbg = np.concatenate([np.zeros(n), target, [ea[0]], np.zeros(lv0.size),
+                          np.full(2 * n, 0.0 if taut else -_INF), -lim])
+    ubg = np.concatenate([np.zeros(n), target, [ea[1]], np.zeros(lv0.size), np.full(2 * n, _INF), lim])
+    weights = {"change": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
+    p = np.concatenate([m.a, m.b, m.k1, m.k2, load, L0nom, weights])
+    res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
+    phi = res.x[:n]
+    q = np.diff(np.concatenate([[0.0], phi]))
+    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
+    L10 = np.clip(res.x[n:2 * n], lo2[:n], hi2[:n])
+    L20 = np.clip(res.x[2 * n:3 * n], lo2[n:], hi2[n:])
+    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[3 * n])}
+    if not res.success:
+        raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
+                                    best=best)
+    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
+    # the forward solve from the optimiser's q: Newton (IPOPT's own descent from an exact minimum near a joint
+    # bound can be pushed into another well by its barrier), IPOPT's descent where Newton does not settle
+    eq = forward_check(m_new, load, q, target, settle=True, status=res.status, best=best)
+    return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q,
+                         margin=stability_margin(m_new, eq.q, load), tip=eq.tip, energy=eq.energy,
+                         solver=SolverInfo(res.status, res.iterations), equilibrium=eq)
+
+
+def forward_check(m: Manipulator, load: np.ndarray, q: np.ndarray, target: np.ndarray, *, settle: bool,
+                  status: str, best: Any) -> Equilibrium:
+    """The verification of a preload design: the forward equilibrium of ``m`` (the chain with the found rest
+    lengths) under the dead ``load`` from the optimiser's ``q`` must land on ``target`` (within ``LAND_TOL``
+    times ``max b``), stable. ``settle``: Newton from ``q`` first (:func:`settle_under_force`), IPOPT's descent
+    (:func:`solve_equilibrium_under_force`) where Newton does not settle; otherwise the descent alone.
+
+    Returns
+    -------
+    Equilibrium
+        The verified equilibrium.
+
+    Raises
+    ------
+    InfeasibleDesignError
+        The check fails (``status`` and ``best`` passed on).
+    TimeLimitError
+        The time limit ran out.
+    """
+    eq = settle_under_force(m, load, q) if settle else None
+    try:
+        eq = eq if eq is not None else solve_equilibrium_under_force(m, load[0], load[1], q0=q)
+    except TimeLimitError:
+        raise
+    except TensegrityError as exc:
+        raise InfeasibleDesignError(f"verification failed: no force-controlled equilibrium from the returned q "
+                                    f"({exc})", status=status, best=best) from exc
+    if not eq.stable or np.max(np.abs(eq.tip - target)) > LAND_TOL * float(m.b.max()):     # in the chain's units
+        raise InfeasibleDesignError(
+            f"verification failed: the force-controlled equilibrium lands at {eq.tip.tolist()} "
+            f"(target {target.tolist()}), Morse index {eq.morse_index}", status=status, best=best)
+    return eq
+
+
+def _relative(H_phi: np.ndarray) -> np.ndarray:
+    """A Hessian in the absolute angles ``phi = T q`` as one in the relative angles: ``T^T H T``."""
+    T = np.tril(np.ones(H_phi.shape))
+    return T.T @ H_phi @ T
+
+
+def stability_margin(m: Manipulator, q: np.ndarray, load) -> float:
+    """The smallest eigenvalue of the Hessian of ``E - F . tip`` in the joint angles at ``q`` under the dead
+    ``load`` (torque / rad): the stability margin every preload problem requires and reports."""
+    _, _, H_phi, _, _ = chain_solver(m).evaluate(q, load)
+    return float(np.linalg.eigvalsh(_relative(H_phi))[0])
+
+
+def checked_vector(v, size: int, name: str) -> np.ndarray:
+    """``size`` finite numbers (a target, a load), flattened, checked (``field=name``)."""
+    try:
+        a = np.asarray(v, dtype=float).ravel()
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"{name} must be {size} numbers, got {v!r}", field=name) from None
+    if a.size != size or not np.all(np.isfinite(a)):
+        raise InvalidParameterError(f"{name} must be {size} finite numbers, got {v!r}", field=name)
+    return a
+
+
+def checked_start(m: Manipulator, start) -> np.ndarray | None:
+    """A preload problem's ``start`` (None, or ``n`` joint angles inside the physical range), checked
+    (``field="start"``)."""
+    try:
+        return check_q0(m, start)
+    except InvalidParameterError as exc:
+        raise InvalidParameterError(exc.message.replace("q0", "start"), field="start") from None
+
+
+def rest_length_bounds(m: Manipulator, bounds) -> tuple[Any, Any]:
+    """``(lo, hi)`` of a preload problem's ``bounds`` (each a number or ``2 n`` values: ``L1_0`` of every
+    segment, then every ``L2_0``; default ``(0.1 b_min, 4 b_max)``), checked (``field="bounds"``)."""
+    n = m.n
+    try:
+        lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
+        lo = np.broadcast_to(np.asarray(lo, dtype=float), (2 * n)).copy() if np.ndim(lo) else float(lo)
+        hi = np.broadcast_to(np.asarray(hi, dtype=float), (2 * n)).copy() if np.ndim(hi) else float(hi)
+    except (TypeError, ValueError):
+        raise InvalidParameterError("bounds: lo and hi are numbers or 2n values (L1_0 of every segment, then "
+                                    "L2_0)", field="bounds") from None
+    if not (np.all(np.isfinite(lo)) and np.all(np.isfinite(hi)) and np.all(0 < np.asarray(lo))
+            and np.all(np.asarray(lo) < np.asarray(hi))):
+        raise InvalidParameterError("bounds need 0 < lo < hi", field="bounds")
+    return lo, hi
+
+
+def _reach_guess(m: Manipulator, target: np.ndarray) -> np.ndarray:
+    """A configuration bending every joint equally toward the target (a start, not a solution)."""
+    ang = math.atan2(target[1], target[0] - m.base_length)
+    return np.concatenate([[ang], np.zeros(m.n - 1)]) * 0.5
