@@ -5,8 +5,9 @@ plan|simulation ... -o fig.png|fig.svg``.
 (:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
 other commands (``--n --a --b --k --L0`` uniform, the paper's chain by default, or
 ``--manipulator FILE.json``), ``--json`` and ``-o/--output`` (the format follows the suffix);
-its ``func(args, m)`` returns ``(data, text)`` as the other commands do, so ``cli.main``
-prints one line (or JSON) and maps errors to one line on stderr and exit status 2.
+its ``func(args, m)`` computes the result with the library, draws it with
+:mod:`tensegrity_opt.applications.plots` and returns ``(data, text)`` as the other commands do, so
+``cli.main`` prints one line (or JSON) and maps errors to one line on stderr and exit status 2.
 
 ``python -m tensegrity_opt.applications.cli.plot KIND ...`` runs the same command on its own.
 
@@ -40,8 +41,13 @@ from typing import Any
 
 import numpy as np
 
+from ...analyses.equilibria.all_equilibria import find_equilibria
+from ...analyses.equilibria.landscape import energy_landscape, landscape_span
+from ...analyses.paths.curves import force_deflection
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
+from ..sweeps.critical_map import critical_load_map
+from ..sweeps.spec import DESIGN_VARIABLES
 from .common import HELP_FORMAT, Parser, add_manipulator_options, note, positive_int, run_command
 from .control import add_plan_options, add_simulate_options, plan_from_args, simulation_from_args
 from .paths import (add_atlas_options, add_boundary_options, add_branch_options, add_limit_load_options,
@@ -54,7 +60,6 @@ KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load"
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
                   "direction), energy, s (arclength) or q1..qn (a joint angle)")
-_PARAMS = ("a", "b", "k", "L0")
 
 
 def _output(value: str) -> str:
@@ -74,9 +79,9 @@ def _common(sp: argparse.ArgumentParser) -> None:
 
 def _axis(spec: list[str], name: str) -> tuple[str, np.ndarray]:
     param = spec[0]
-    if param not in _PARAMS:
-        raise InvalidParameterError(f"--{name}: the parameter must be one of {', '.join(_PARAMS)}, got {param!r}",
-                                    field=name)
+    if param not in DESIGN_VARIABLES:
+        raise InvalidParameterError(f"--{name}: the parameter must be one of {', '.join(DESIGN_VARIABLES)}, "
+                                    f"got {param!r}", field=name)
     try:
         start, stop, num = float(spec[1]), float(spec[2]), int(spec[3])
     except ValueError:
@@ -108,11 +113,8 @@ def _plots():
 
 def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    dx = np.linspace(args.start, args.stop, args.num)
-    from ...analyses.paths.curves import force_deflection
-
-    c = force_deflection(m, dx, args.dy, branch=args.branch)
-    fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
+    c = force_deflection(m, np.linspace(args.start, args.stop, args.num), args.dy, branch=args.branch)
+    fig = plots.plot_curve(c, m)
     out = _render(args, fig, "curve", {"points": int(c.dx.size), "jumps": [j.kind for j in c.jumps],
                                        "branches": len(c.branches), "complete": c.complete, "note": c.note})
     if not c.complete:    # the figure holds the points computed; the reader is told where and why it ends
@@ -122,21 +124,19 @@ def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
 
 def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from ...analyses.equilibria.all_equilibria import find_equilibria
-
-    eqs = find_equilibria(m, args.dx, args.dy) if m.n == 4 else None
-    span: float | str | None = "auto" if args.span is None else (None if args.span <= 0 else args.span)
-    fig = plots.plot_landscape(m, args.dx, args.dy, tuple(args.pair), args.grid, span=span, equilibria=eqs)
+    eqs = find_equilibria(m, args.dx, args.dy) if m.n == 4 else None      # n != 4: the landscape refuses it
+    pair = tuple(args.pair)
+    span = landscape_span(m, args.dx, args.dy, pair) if args.span is None else (None if args.span <= 0 else args.span)
+    land = energy_landscape(m, args.dx, args.dy, pair=pair, grid=args.grid, span=span)
+    fig = plots.plot_landscape(land, eqs, m, args.dx, args.dy)
     return _render(args, fig, "landscape", {"equilibria": [{"shape": e.shape, "kind": e.kind,
-                                                            "q": e.q.tolist()} for e in eqs or []]})
+                                                            "q": e.q.tolist()} for e in eqs]})
 
 
 def _cmd_shapes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from ...analyses.equilibria.all_equilibria import find_equilibria
-
     eqs = find_equilibria(m, args.dx, args.dy)
-    fig = plots.plot_shapes(m, args.dx, args.dy, equilibria=eqs, max_panels=args.max_panels)
+    fig = plots.plot_shapes(eqs, m, args.dx, args.dy, max_panels=args.max_panels)
     return _render(args, fig, "shapes", {"equilibria": [{"shape": e.shape, "kind": e.kind, "q": e.q.tolist()}
                                                         for e in eqs]})
 
@@ -155,14 +155,14 @@ def _cmd_torque(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any
         lim = min(s.joint_limit for s in segs)
         q = np.linspace(-lim if args.qmin is None else args.qmin, lim if args.qmax is None else args.qmax, args.num)
     fig = plots.plot_torque(segs, q, num=args.num)
-    return _render(args, fig, "torque", {"segments": [s.to_dict() for s in plots._segments(segs)]})
+    return _render(args, fig, "torque", {"segments": [s.to_dict() for s in plots.distinct_segments(segs)]})
 
 
 def _cmd_map(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     px, xs = _axis(args.x, "x")
     py, ys = _axis(args.y, "y")
-    fig = plots.plot_map(m, px, xs, py, ys, args.boundary)
+    fig = plots.plot_map(critical_load_map(m, px, xs, py, ys, args.boundary), m)
     return _render(args, fig, "map", {"x": {"param": px, "values": xs.tolist()},
                                       "y": {"param": py, "values": ys.tolist()}, "boundary": args.boundary})
 
@@ -170,7 +170,7 @@ def _cmd_map(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], 
 def _cmd_branch(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     res = branches_from_args(args, m)
-    fig = plots.plot_branches(res, x=args.x, y=args.y, m=m)
+    fig = plots.plot_branches(res, m, x=args.x, y=args.y)
     brs = [res] if not isinstance(res, list) else res
     return _render(args, fig, "branch", {"branches": len(brs), "points": [len(b) for b in brs],
                                          "status": [b.status for b in brs],
@@ -180,7 +180,7 @@ def _cmd_branch(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any
 def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     r = limit_load_from_args(args, m)
-    fig = plots.plot_limit_load(r, m=m)
+    fig = plots.plot_limit_load(r, m)
     return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load, "reason": r.reason,
                                              "quasi_buckling_load": r.quasi_buckling_load})
 
@@ -188,7 +188,7 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
 def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     b = boundary_from_args(args, m)
-    fig = plots.plot_boundary(b, m=m, control=args.control)
+    fig = plots.plot_boundary(b, m, control=args.control)
     return _render(args, fig, "boundary", {"boundary": str(b.kind), "points": int(np.size(b.p)),
                                            "cusps": len(list(b.cusps or [])), "status": b.status})
 
@@ -196,7 +196,7 @@ def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, A
 def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     at = atlas_from_args(args, m)
-    fig = plots.plot_atlas(at, m=m)
+    fig = plots.plot_atlas(at, m)
     return _render(args, fig, "atlas", {"targets": int(at.dx.size * at.dy.size), "status": at.status,
                                         "max_stable": int(at.n_stable.max()), "switches": len(at.switches),
                                         "branch_ends": len(at.branch_ends)})
