@@ -7,6 +7,7 @@ from typing import Any
 
 import numpy as np
 
+from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ..sweeps.critical_map import CriticalLoadMap
 from .style import FORCE_UNIT, chain_label, contour_levels, new_figure
@@ -34,6 +35,9 @@ def plot_map(critical_map: CriticalLoadMap, m: Manipulator, *, levels: int = 8,
     Artists (``gid``): ``"critical-load"`` (QuadMesh, array ``load[iy, ix]``), ``"critical-load-contours"``,
     ``"condition4"`` (the line ``K = 0``), ``"design"``.
     """
+    if not isinstance(critical_map, CriticalLoadMap):
+        raise InvalidParameterError(f"plot_map needs a CriticalLoadMap, got {type(critical_map).__name__}",
+                                    field="critical_map")
     param_x, param_y, boundary = critical_map.param_x, critical_map.param_y, critical_map.boundary
     xs, ys, P = np.asarray(critical_map.values_x), np.asarray(critical_map.values_y), np.asarray(critical_map.load)
     import matplotlib
