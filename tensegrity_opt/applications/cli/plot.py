@@ -260,7 +260,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
     k = kinds.add_parser("torque", help="torque-angle curves M(q) of the segments (Fig. 2)")
     _common(k)
-    k.add_argument("--vary", choices=_PARAMS, help="one curve per value of this parameter (first segment)")
+    k.add_argument("--vary", choices=DESIGN_VARIABLES, help="one curve per value of this parameter (first segment)")
     k.add_argument("--values", type=float, nargs="+", metavar="V", help="the values for --vary")
     k.add_argument("--qmin", type=float, default=None,
                    help="first joint angle (rad); None: the lower end of the physical range")

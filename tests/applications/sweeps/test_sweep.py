@@ -204,8 +204,9 @@ def test_skip_resumes_and_on_result_streams_every_point():
     assert (part.total, part.skipped) == (6, 3)
     rest = S.sweep(MIXED, skip=[1, 3, 4])
     assert tuple(sorted(part.rows + rest.rows, key=lambda r: r["index"])) == full.rows
-    assert (full.status, part.status, rest.status) == ("point_errors", "complete", "point_errors")
-    assert part.message == "3 of 6 points solved, 0 failed, 3 skipped (done before)"
+    # points 1 and 4 (dx = 30) fail, and both are in the part
+    assert (full.status, part.status, rest.status) == ("point_errors", "point_errors", "complete")
+    assert part.message == "3 of 6 points solved, 2 failed, 3 skipped (done before)"
 
 
 def test_should_stop_stops_between_points():
@@ -213,7 +214,7 @@ def test_should_stop_stops_between_points():
     res = S.sweep(MIXED, on_result=lambda i, row: calls.append(i), should_stop=lambda: len(calls) >= 2)
     assert res.cancelled and calls == [0, 1] and len(res.rows) == 2
     assert (res.status, res.success) == ("cancelled", False)
-    assert res.message == "stopped early: 2 of 6 points solved, 0 failed"
+    assert res.message == "stopped early: 2 of 6 points solved, 1 failed"          # point 1: dx = 30
 
 
 def test_progress_bar_only_on_a_terminal(capsys):
