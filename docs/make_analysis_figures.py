@@ -171,8 +171,8 @@ def load_capacity() -> None:
     _save(fig, "load_capacity")
 
 
-FIGURES = {f.__name__: f for f in (equilibrium, buckling, stiffness, rest, limit_load, boundary, design, plan, simulation,
-                                   force_estimate, stiffness_design, load_capacity)}
+FIGURES = {f.__name__: f for f in (equilibrium, buckling, stiffness, rest, limit_load, boundary, design, plan,
+                                   simulation, force_estimate, stiffness_design, load_capacity)}
 
 
 def main(names: list[str]) -> int:

@@ -79,7 +79,8 @@ that they can be found again (tests read the data back from them):
   ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``;
   the axes' gid is ``"equilibrium-<k>"``;
 * torque: ``"torque-<k>"``, ``"torque-<k>-stable"`` / ``"-unstable"`` (the unloaded equilibria); map:
-  ``"critical-load"`` (QuadMesh, array ``load[iy, ix]``), ``"critical-load-contours"``, ``"condition4"`` (the line ``K = 0``), ``"design"``;
+  ``"critical-load"`` (QuadMesh, array ``load[iy, ix]``), ``"critical-load-contours"``, ``"condition4"``
+  (the line ``K = 0``), ``"design"``;
 * branches: ``"branch-<b>-morse<k>-<j>"`` (branch ``b``'s ``j``-th piece, of Morse index ``k``),
   ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"``; limit load:
   ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"``, ``"quasi-buckling-level"``,
@@ -97,8 +98,8 @@ from __future__ import annotations
 
 from .control import CONTROL_STYLES, MARGIN_UNIT, plot_preload_plan, plot_simulation
 from .curves import JUMP_STYLES, curve_breaks, jump_kind, jump_label, plot_curve
-from .equilibria import (distinct_segments, landscape_region, physical_range, plot_landscape, plot_shapes,
-                         plot_torque, segment_label, stiffness_text, torque_zeros)
+from .equilibria import (distinct_segments, landscape_region, physical_range, plot_landscape, plot_shapes, plot_torque,
+                         segment_label, stiffness_text, torque_zeros)
 from .geometry import chain_geometry
 from .maps import PARAM_LABELS, plot_map
 from .paths import (ATLAS_STYLES, BRANCH_QUANTITIES, EVENT_STYLES, MORSE_COLORS, branch_quantity_label, morse_color,

@@ -63,8 +63,8 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     (right, equal axes; each step's tip joined to the next, the targets as crosses). Infeasible steps (no
     admissible rest lengths: the controller stayed) are shaded in both step panels and their best reachable
     tips marked; feasible steps the forward solve did not verify are marked on the margin. The legend sits
-    below the panels (outside the data); the axes are in the caller's units; the title gives the counts, the status and (``m``) the
-    chain's parameters.
+    below the panels (outside the data); the axes are in the caller's units; the title gives the counts, the
+    status and (``m``) the chain's parameters.
 
     Artists (``gid``): ``"rest-length-<i>-<1|2>"`` (segment ``i``, 0-based: its spring's rest length per step),
     ``"margin"``, ``"margin-required"``, ``"unverified"`` (margins of the feasible steps not verified),
@@ -237,8 +237,9 @@ def plot_simulation(sim: Simulation, m: Manipulator | None = None, *, component:
     chain's parameters.
 
     Artists (``gid``): ``"path"`` (the line, NaN-broken at the snaps), ``"samples"`` (the states at the samples
-    done), ``"start"``, ``"end"`` (the last sample done), ``"snap-<j>"`` (the ``j``-th snap's arrow, a ``FancyArrowPatch``), ``"snap-folds"``,
-    ``"snap-landings"`` (the points of every snap with a landing, in time order), ``"joint-limit"``.
+    done), ``"start"``, ``"end"`` (the last sample done), ``"snap-<j>"`` (the ``j``-th snap's arrow, a
+    ``FancyArrowPatch``), ``"snap-folds"``, ``"snap-landings"`` (the points of every snap with a landing, in time
+    order), ``"joint-limit"``.
     """
     if not isinstance(sim, Simulation):
         raise InvalidParameterError(f"plot_simulation needs a Simulation, got {type(sim).__name__}", field="sim")

@@ -230,7 +230,8 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
         line, = ax.plot([g["tip"][0]], [g["tip"][1]], marker="x", color="black", ms=6, zorder=5)
         line.set_gid("tip")
         ax.set_title(f"{e.shape} ({e.signs}): {_KIND_TEXT.get(e.kind, e.kind)}\n"
-                     f"E = {e.energy:.4g}, F = ({number_text(e.fx, e.fy)}, {number_text(e.fy, e.fx)})", fontsize=8, color=col)
+                     f"E = {e.energy:.4g}, F = ({number_text(e.fx, e.fy)}, {number_text(e.fy, e.fx)})",
+                     fontsize=8, color=col)
         ax.set_xlim(lo[0], hi[0])
         ax.set_ylim(lo[1], hi[1])
         ax.set_aspect("equal", adjustable="box")

@@ -321,7 +321,8 @@ def plot_limit_load(result: LimitLoad, m: Manipulator, *, figsize: tuple[float, 
         pt, = ax.plot([ue], [result.load], ls="none", zorder=7, **kw)
         pt.set_gid("limit-point")
         handles.append(Line2D([], [], ls="none", **kw))
-        labels.append(f"limit load P = {result.load:.6g} ({'fold: snap-through' if result.kind == 'fold' else 'bifurcation'})")
+        what = "fold: snap-through" if result.kind == "fold" else "bifurcation"
+        labels.append(f"limit load P = {result.load:.6g} ({what})")
     else:
         pt, = ax.plot([float(U[-1])], [float(T[-1])], ls="none", marker="s", ms=6, mfc="white", mec="black", zorder=7)
         pt.set_gid("path-end")

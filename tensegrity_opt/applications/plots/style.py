@@ -46,7 +46,8 @@ def new_figure(figsize: tuple[float, float]) -> Any:
         from matplotlib.backends.backend_agg import FigureCanvasAgg
         from matplotlib.figure import Figure
     except ImportError as exc:  # pragma: no cover - depends on the environment
-        raise ImportError("tensegrity_opt.applications.plots needs matplotlib: python3 -m pip install matplotlib") from exc
+        raise ImportError("tensegrity_opt.applications.plots needs matplotlib: "
+                          "python3 -m pip install matplotlib") from exc
     fig = Figure(figsize=figsize, layout="constrained")
     FigureCanvasAgg(fig)
     return fig

@@ -46,9 +46,9 @@ A failing point never stops the sweep.
 Execution: ``scheduler=None``/``"serial"`` solves in the calling thread (the library caches
 its CasADi solvers per thread); ``"threads"`` in a pool of threads of this process; ``"auto"`` (the
 command line's default) serially, unless a timed probe of the first points says the rest would take
-more than a minute, then on a local cluster (:func:`~.scheduler.auto_scheduler`); ``"local"`` starts a ``dask.distributed.LocalCluster``
-(one single-threaded worker process per core), ``"tcp://host:port"`` uses a running Dask
-scheduler (a :class:`distributed.Client` is accepted too). Each Dask task solves a chunk
+more than a minute, then on a local cluster (:func:`~.scheduler.auto_scheduler`); ``"local"`` starts a
+``dask.distributed.LocalCluster`` (one single-threaded worker process per core), ``"tcp://host:port"`` uses a
+running Dask scheduler (a :class:`distributed.Client` is accepted too). Each Dask task solves a chunk
 of points with :func:`solve_chunk` (module level, so it pickles); a worker thread builds
 its solvers once and reuses them for every later chunk. Chunks stream back with
 ``as_completed``; ``on_result(index, row)`` runs in the calling process as each point

@@ -217,4 +217,5 @@ def test_torque_marks_the_equilibria_of_the_unloaded_segment():
     st = gid(fig, "torque-0-stable").get_xdata()
     un = gid(fig, "torque-0-unstable").get_xdata()
     assert np.allclose(np.sort(st), [-well, well], atol=1e-4) and np.allclose(un, [0.0], atol=1e-12)
-    assert np.allclose(gid(fig, "torque-1-stable").get_xdata(), [0.0]) and gid(fig, "torque-1-unstable").get_xdata().size == 0
+    assert np.allclose(gid(fig, "torque-1-stable").get_xdata(), [0.0])
+    assert gid(fig, "torque-1-unstable").get_xdata().size == 0
