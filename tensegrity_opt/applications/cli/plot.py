@@ -218,8 +218,32 @@ def _cmd_simulation(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
                                              "snaps": len(sim.snaps), "events": [e.kind for e in sim.events]})
 
 
+def _add_branch_plot_options(k: argparse.ArgumentParser) -> None:
+    """The ``branch`` command's options and the diagram's axes."""
+    add_branch_options(k)
+    k.add_argument("--x", default="t", help=f"horizontal axis: {_QUANTITY_HELP}")
+    k.add_argument("--y", default="fx", help="vertical axis, as --x")
+
+
+#: The kinds that draw the result of another command, with that command's options: ``(kind, help, options, func)``.
+_RESULT_KINDS = (
+    ("branch", "branch diagram: one branch (or --depth: the bifurcation diagram) by Morse index, events marked",
+     _add_branch_plot_options, _cmd_branch),
+    ("limit-load", "the load path of a limit load, the limit point and quasi-buckling load marked",
+     add_limit_load_options, _cmd_limit_load),
+    ("boundary", "a stability boundary: critical t against the second parameter, cusps marked", add_boundary_options,
+     _cmd_boundary),
+    ("atlas", "the stability atlas: stable equilibria over (dx, dy), switch and branch-end curves", add_atlas_options,
+     _cmd_atlas),
+    ("plan", "a rest-length plan: rest lengths, margin and tip path per step, infeasible steps shaded",
+     add_plan_options, _cmd_plan),
+    ("simulation", "the hysteresis loop of a quasi-static simulation, the snaps as arrows", add_simulate_options,
+     _cmd_simulation),
+)
+
+
 def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
-    """Add ``plot {curve,landscape,shapes,torque,map}`` to ``subparsers`` (``add_subparsers()``'s result).
+    """Add ``plot KIND`` (:data:`KINDS`) to ``subparsers`` (``add_subparsers()``'s result).
 
     Each kind sets ``func(args, m) -> (data, text)`` like the other commands of ``cli.py``.
     Returns the ``plot`` parser.
@@ -279,44 +303,11 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
                    help="tip guided (y held, the paper's case) or free")
     k.set_defaults(func=_cmd_map)
 
-    k = kinds.add_parser("branch", formatter_class=HELP_FORMAT,
-                         help="branch diagram: one branch (or --depth: the bifurcation diagram) by Morse index, "
-                              "events marked")
-    _common(k)
-    add_branch_options(k)
-    k.add_argument("--x", default="t", help=f"horizontal axis: {_QUANTITY_HELP}")
-    k.add_argument("--y", default="fx", help="vertical axis, as --x")
-    k.set_defaults(func=_cmd_branch)
-
-    k = kinds.add_parser("limit-load", formatter_class=HELP_FORMAT,
-                         help="the load path of a limit load, the limit point and quasi-buckling load marked")
-    _common(k)
-    add_limit_load_options(k)
-    k.set_defaults(func=_cmd_limit_load)
-
-    k = kinds.add_parser("boundary", formatter_class=HELP_FORMAT,
-                         help="a stability boundary: critical t against the second parameter, cusps marked")
-    _common(k)
-    add_boundary_options(k)
-    k.set_defaults(func=_cmd_boundary)
-
-    k = kinds.add_parser("atlas", formatter_class=HELP_FORMAT,
-                         help="the stability atlas: stable equilibria over (dx, dy), switch and branch-end curves")
-    _common(k)
-    add_atlas_options(k)
-    k.set_defaults(func=_cmd_atlas)
-
-    k = kinds.add_parser("plan", formatter_class=HELP_FORMAT,
-                         help="a rest-length plan: rest lengths, margin and tip path per step, infeasible steps shaded")
-    _common(k)
-    add_plan_options(k)
-    k.set_defaults(func=_cmd_plan)
-
-    k = kinds.add_parser("simulation", formatter_class=HELP_FORMAT,
-                         help="the hysteresis loop of a quasi-static simulation, the snaps as arrows")
-    _common(k)
-    add_simulate_options(k)
-    k.set_defaults(func=_cmd_simulation)
+    for name, help_, add_options, func in _RESULT_KINDS:
+        k = kinds.add_parser(name, formatter_class=HELP_FORMAT, help=help_)
+        _common(k)
+        add_options(k)
+        k.set_defaults(func=func)
     return sp
 
 
