@@ -115,17 +115,19 @@ def plot_curve(curve: Curve, m: Manipulator, *, figsize: tuple[float, float] = (
     where stable, dashed where unstable. The axes are in the caller's units (lengths, forces
     ``stiffness x length``); the title gives the chain's parameters.
 
+    Artists (``gid``): ``"fx"``, ``"fy"`` (the selected curve, NaN-separated at every jump),
+    ``"jump-<k>-<kind>-fx"`` / ``"-fy"``, ``"jump-<k>-number-fx"``, a partial curve's ``"end-marker-fx"`` /
+    ``"-fy"``, ``"curve-end-fx"`` / ``"-fy"``, ``"curve-end-text"``, ``"branch-<id>-fx-stable"`` /
+    ``"-unstable"`` (the package's docstring says what each holds).
+
     Parameters
     ----------
     curve : Curve
         The curve to draw.
     m : Manipulator
         Its chain (for the title).
-
-    Artists (``gid``): ``"fx"``, ``"fy"`` (the selected curve, NaN-separated at every jump),
-    ``"jump-<k>-<kind>-fx"`` / ``"-fy"``, ``"jump-<k>-number-fx"``, a partial curve's ``"end-marker-fx"`` /
-    ``"-fy"``, ``"curve-end-fx"`` / ``"-fy"``, ``"curve-end-text"``, ``"branch-<id>-fx-stable"`` /
-    ``"-unstable"`` (the package's docstring says what each holds).
+    figsize : (float, float)
+        The figure's size (inches).
     """
     c = curve
     x, xname = _abscissa(c)

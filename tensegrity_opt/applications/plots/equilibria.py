@@ -87,6 +87,11 @@ def plot_landscape(landscape: Landscape, equilibria: Sequence[Equilibrium], m: M
     (an equilibrium is reachable and in range). The legend sits below the panels; the title gives the
     chain's parameters, the deflection and the count.
 
+    Artists (``gid``): ``"energy-elbow+1"`` / ``"-1"`` (the grid's values, a QuadMesh with the array
+    ``energy[e].T``, not drawn: the filled contours show them), ``"energy-fill-elbow..."`` (filled contour set,
+    clipped to the region), ``"contour-elbow..."`` (contour lines), ``"boundary-elbow..."`` (the region's
+    outline, a PathPatch whose path is :func:`landscape_region`), ``"equilibria-elbow..."`` (scatter).
+
     Parameters
     ----------
     landscape : Landscape
@@ -97,11 +102,10 @@ def plot_landscape(landscape: Landscape, equilibria: Sequence[Equilibrium], m: M
         The chain of the landscape (4 segments).
     dx, dy : float
         The tip deflection the landscape was computed for.
-
-    Artists (``gid``): ``"energy-elbow+1"`` / ``"-1"`` (the grid's values, a QuadMesh with the array
-    ``energy[e].T``, not drawn: the filled contours show them), ``"energy-fill-elbow..."`` (filled contour set,
-    clipped to the region), ``"contour-elbow..."`` (contour lines), ``"boundary-elbow..."`` (the region's
-    outline, a PathPatch whose path is :func:`landscape_region`), ``"equilibria-elbow..."`` (scatter).
+    levels : int
+        About how many contour levels.
+    figsize : (float, float)
+        The figure's size (inches).
     """
     land = landscape
     eqs = list(equilibria)
