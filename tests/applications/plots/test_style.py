@@ -3,6 +3,8 @@ package importable without matplotlib, and the documentation's figures committed
 
 from __future__ import annotations
 
+import importlib
+import inspect
 import os
 import subprocess
 import sys
@@ -79,3 +81,18 @@ def test_docs_figures_are_committed_small_and_referenced():
         check_png(png.read_bytes())
         assert png.stat().st_size <= 150_000, name
         assert f"img/{name}.png" in text and name in mod.FIGURES, name
+
+
+#: The library functions a figure may call: closed-form geometry that draws (the landscape's reachable region
+#: and the elbow branch an equilibrium lies on), no solve.
+DRAWING_GEOMETRY = {"complete_configuration", "landscape_margin"}
+
+
+@pytest.mark.parametrize("family", ["style", "geometry", "curves", "equilibria", "maps", "paths", "control"])
+def test_figures_draw_results_and_call_no_analysis(family):
+    mod = importlib.import_module(f"tensegrity_opt.applications.plots.{family}")
+    for name, obj in vars(mod).items():
+        origin = getattr(obj, "__module__", "") or ""
+        if origin.startswith(("tensegrity_opt.analyses", "tensegrity_opt.applications.sweeps",
+                              "tensegrity_opt.numerics")):
+            assert inspect.isclass(obj) or name in DRAWING_GEOMETRY, (family, name)
