@@ -1,9 +1,9 @@
 """Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,boundary,atlas,plan,simulation}``
 answering PNG or SVG.
 
-Each route validates its request, then runs its task in the solver pool: the task computes the result
-with the library and draws it with :mod:`tensegrity_opt.applications.plots` (both CPU-bound), and the
-route answers the bytes: ``image/png`` by default, ``image/svg+xml`` when the body says ``"format": "svg"`` or, without ``format``, when
+Each route validates its request, then draws the figure in the solver pool (the library call
+and matplotlib's rendering are both CPU-bound) and answers the bytes: ``image/png`` by
+default, ``image/svg+xml`` when the body says ``"format": "svg"`` or, without ``format``, when
 the ``Accept`` header prefers ``image/svg+xml``. Refusals are the usual JSON ``ErrorOut``.
 Drawing uses :mod:`tensegrity_opt.applications.plots` (matplotlib objects only, no pyplot: thread-safe).
 """
@@ -162,7 +162,7 @@ def plot_branch_task(req: ps.PlotBranchRequest, fmt: str, deadline: float) -> by
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
-    return _image(plots.plot_branches(trace_branches(req, deadline), m, x=req.x, y=req.y), fmt, req.dpi)
+    return _image(plots.plot_branches(trace_branches(req, deadline), x=req.x, y=req.y, m=m), fmt, req.dpi)
 
 
 def plot_limit_load_task(req: ps.PlotLimitLoadRequest, fmt: str, deadline: float) -> bytes:
@@ -177,13 +177,13 @@ def plot_boundary_task(req: ps.PlotBoundaryRequest, fmt: str, deadline: float) -
 
     m = build_manipulator(req.manipulator)
     b = find_stability_boundary(req, deadline)
-    return _image(plots.plot_boundary(b, m, control=req.control.kind), fmt, req.dpi)
+    return _image(plots.plot_boundary(b, m=m, control=req.control.kind), fmt, req.dpi)
 
 
 def _atlas_image(at: Any, m: Any, fmt: str, dpi: int) -> bytes:
     from tensegrity_opt.applications import plots
 
-    return _image(plots.plot_atlas(at, m), fmt, dpi)
+    return _image(plots.plot_atlas(at, m=m), fmt, dpi)
 
 
 def plot_atlas_task(req: ps.PlotAtlasGridRequest, fmt: str, deadline: float) -> bytes:

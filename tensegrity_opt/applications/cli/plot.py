@@ -170,7 +170,7 @@ def _cmd_map(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], 
 def _cmd_branch(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     res = branches_from_args(args, m)
-    fig = plots.plot_branches(res, m, x=args.x, y=args.y)
+    fig = plots.plot_branches(res, x=args.x, y=args.y, m=m)
     brs = [res] if not isinstance(res, list) else res
     return _render(args, fig, "branch", {"branches": len(brs), "points": [len(b) for b in brs],
                                          "status": [b.status for b in brs],
@@ -180,7 +180,7 @@ def _cmd_branch(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any
 def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     r = limit_load_from_args(args, m)
-    fig = plots.plot_limit_load(r, m)
+    fig = plots.plot_limit_load(r, m=m)
     return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load, "reason": r.reason,
                                              "quasi_buckling_load": r.quasi_buckling_load})
 
@@ -188,7 +188,7 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
 def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     b = boundary_from_args(args, m)
-    fig = plots.plot_boundary(b, m, control=args.control)
+    fig = plots.plot_boundary(b, m=m, control=args.control)
     return _render(args, fig, "boundary", {"boundary": str(b.kind), "points": int(np.size(b.p)),
                                            "cusps": len(list(b.cusps or [])), "status": b.status})
 
@@ -196,7 +196,7 @@ def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, A
 def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     at = atlas_from_args(args, m)
-    fig = plots.plot_atlas(at, m)
+    fig = plots.plot_atlas(at, m=m)
     return _render(args, fig, "atlas", {"targets": int(at.dx.size * at.dy.size), "status": at.status,
                                         "max_stable": int(at.n_stable.max()), "switches": len(at.switches),
                                         "branch_ends": len(at.branch_ends)})
