@@ -5,7 +5,7 @@ Run from the repository root::
     python docs/figures.py            # writes docs/img/<name>.png (110 dpi, a 256-colour palette, each <= 150 kB)
     python docs/figures.py fig6_curve map     # only these
 
-Every figure is computed by the library (``tensegrity_opt``) and drawn by
+Every figure's result is computed by the library (``tensegrity_opt``) and drawn by
 ``tensegrity_opt.applications.plots``; the parameters are the paper's (n = 4, a/b = 1, L0/b = 1,
 k = 1, lengths in units of b) unless a figure says otherwise in its title.
 """
@@ -22,7 +22,9 @@ if str(ROOT) not in sys.path:
     sys.path.insert(0, str(ROOT))
 
 import tensegrity_opt as to  # noqa: E402
+from tensegrity_opt.analyses.equilibria.landscape import landscape_span  # noqa: E402
 from tensegrity_opt.applications import plots  # noqa: E402
+from tensegrity_opt.applications.sweeps import critical_load_map  # noqa: E402
 
 OUT = ROOT / "docs" / "img"
 DPI = 110
@@ -37,27 +39,32 @@ def fig2_torque():
     return plots.plot_torque(segs)
 
 
+def _landscape(dx: float, dy: float, pair: tuple[int, int]):
+    """The landscape of the paper's chain over its reachable region (121 x 121) with every equilibrium."""
+    land = to.energy_landscape(PAPER, dx, dy, pair=pair, grid=121, span=landscape_span(PAPER, dx, dy, pair))
+    return plots.plot_landscape(land, to.find_equilibria(PAPER, dx, dy), PAPER, dx, dy)
+
+
 def fig4_landscape():
     """Fig. 4: the energy E(q1, q4) of the paper's chain, q2, q3 solved, at dx = 0.1 (dy = 0): six equilibria."""
-    return plots.plot_landscape(PAPER, 0.1, 0.0, pair=(0, 3), grid=121)
+    return _landscape(0.1, 0.0, (0, 3))
 
 
 def fig4_landscape_q1q2():
     """Fig. 4, its second landscape: E(q1, q2), q3, q4 solved, same chain and deflection."""
-    return plots.plot_landscape(PAPER, 0.1, 0.0, pair=(0, 1), grid=121)
+    return _landscape(0.1, 0.0, (0, 1))
 
 
 def fig5_landscape():
     """Fig. 5: contours of E(q1, q4) for another configuration: the tip also moved sideways (dx = 0.3,
     dy = 0.2); the symmetry of Fig. 4 is broken."""
-    return plots.plot_landscape(PAPER, 0.3, 0.2, pair=(0, 3), grid=121)
+    return _landscape(0.3, 0.2, (0, 3))
 
 
 def fig6_curve():
     """Fig. 6: the force-deflection curves Fx(dx, 0), Fy(dx, 0) of the paper's chain, with the paper's
     asymptotes after buckling (eq. 26, dotted): Fx ~ Fx0, Fy ~ alpha_5 / sqrt(b mu_x) sqrt(dx)."""
-    dx = np.linspace(0.0, 1.0, 41)
-    fig = plots.plot_curve(PAPER, dx, 0.0)
+    fig = plots.plot_curve(to.force_deflection(PAPER, np.linspace(0.0, 1.0, 41)), PAPER)
     b = to.critical_force(PAPER)
     coef = float(b.modes[0].fy_coefficient)
     ax_fx, ax_fy = fig.axes[:2]
@@ -73,25 +80,26 @@ def fig6_curve():
 
 def shapes():
     """Table 2: the chain in each of the six equilibria at dx = 0.1."""
-    return plots.plot_shapes(PAPER, 0.1, 0.0)
+    return plots.plot_shapes(to.find_equilibria(PAPER, 0.1), PAPER, 0.1)
 
 
 def branch():
     """The guided straight chain under compression and the branches born at its critical loads."""
     brs = to.bifurcation_diagram(PAPER, np.zeros(4), "guided", depth=1, t_max=2.2, t_min=-0.2, max_points=400)
-    return plots.plot_branches(brs, x="t", y="q1", m=PAPER)
+    return plots.plot_branches(brs, PAPER, x="t", y="q1")
 
 
 def atlas():
     """The number of stable equilibria of the held tip over (dx, dy), n = 3, a = 0.5 (bistable segments)."""
     m = to.Manipulator.uniform(3, a=0.5)
     at = to.stability_atlas(m, np.linspace(0.2, 1.4, 13), np.linspace(-0.6, 0.6, 13))
-    return plots.plot_atlas(at, m=m)
+    return plots.plot_atlas(at, m)
 
 
 def map():  # noqa: A001 - the figure's name
     """The critical load over a and L0 (guided tip), the edge K = 0 of condition (4) drawn from the formula."""
-    return plots.plot_map(PAPER, "a", np.linspace(0.3, 1.5, 25), "L0", np.linspace(0.2, 2.5, 24))
+    return plots.plot_map(critical_load_map(PAPER, "a", np.linspace(0.3, 1.5, 25), "L0", np.linspace(0.2, 2.5, 24)),
+                          PAPER)
 
 
 FIGURES = {f.__name__: f for f in (fig2_torque, fig4_landscape, fig4_landscape_q1q2, fig5_landscape, fig6_curve,

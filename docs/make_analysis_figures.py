@@ -5,7 +5,7 @@ Run from the repository root: ``python docs/make_analysis_figures.py`` (about ha
 stiffness_design,load_capacity}.png`` at a low resolution (each well under 100 kB; they are committed).
 Every figure is the library's numbers for the example of its section, drawn with
 ``tensegrity_opt.applications.plots`` where it has the figure, with plain matplotlib (its object API, no
-pyplot) otherwise.
+pyplot, on ``plots.new_figure``) otherwise.
 """
 
 from __future__ import annotations
@@ -36,12 +36,12 @@ def _chain(ax, m: to.Manipulator, q, **kw) -> None:
 
 def equilibrium() -> None:
     eqs = [to.solve_equilibrium(PAPER, 0.1), to.solve_equilibrium(PAPER, 1.0, 0.5)]
-    _save(plots.plot_shapes(PAPER, 0.1, equilibria=eqs, ncols=2, panel_width=3.4), "equilibrium")
+    _save(plots.plot_shapes(eqs, PAPER, 0.1, ncols=2, panel_width=3.4), "equilibrium")
 
 
 def buckling() -> None:
     bk = to.critical_force(PAPER)
-    fig = plots._new_figure((6.4, 5.4))
+    fig = plots.new_figure((6.4, 5.4))
     axes = fig.subplots(3, 1, sharex=True)
     for ax, md in zip(axes, bk.modes):
         _chain(ax, PAPER, 0.35 * md.q / np.abs(md.q).max(), color="tab:green" if md.stable else "tab:red")
@@ -58,7 +58,7 @@ def stiffness() -> None:
     dx = np.linspace(0.02, 1.5, 30)
     eqs = to.solve_equilibria_batch(PAPER, [(d, 0.0) for d in dx])
     K = np.array([to.cartesian_stiffness(PAPER, e) for e in eqs])
-    fig = plots._new_figure((6.4, 3.6))
+    fig = plots.new_figure((6.4, 3.6))
     ax = fig.subplots()
     for (i, j), name in zip([(0, 0), (0, 1), (1, 1)], ["Kxx", "Kxy", "Kyy"]):
         ax.plot(dx, K[:, i, j], label=name)
@@ -72,25 +72,25 @@ def stiffness() -> None:
 
 def rest() -> None:
     wells = to.find_equilibria_under_force(BISTABLE, stable_only=True)
-    _save(plots.plot_shapes(BISTABLE, 0.0, equilibria=list(wells), ncols=4, panel_width=2.6), "rest")
+    _save(plots.plot_shapes(wells, BISTABLE, 0.0, ncols=4, panel_width=2.6), "rest")
 
 
 def limit_load() -> None:
     bent = to.Manipulator([to.Segment(1, 1, 1, (1.0, 1.02))] + [to.Segment(1, 1, 1, 1.0)] * 3)
     ll = to.limit_load(bent, direction=(-1.0, 0.0), boundary="free", max_load=0.2)
-    _save(plots.plot_limit_load(ll, m=bent), "limit_load")
+    _save(plots.plot_limit_load(ll, bent), "limit_load")
 
 
 def boundary() -> None:
     sb = to.stability_boundary(PAPER, "guided", "asymmetry", direction=(-1.0, 0.0), p_min=-0.1, p_max=0.1)
-    _save(plots.plot_boundary(sb, m=PAPER, control="guided"), "boundary")
+    _save(plots.plot_boundary(sb, PAPER, control="guided"), "boundary")
 
 
 def design() -> None:
     d = to.maximize_critical_force(PAPER, vary=("k",), bounds={"k": (0.2, 5.0)}, budget={"k": 4.0})
     k0 = [s.k1 for s in PAPER.segments]
     k1 = [s.k1 for s in d.manipulator.segments]
-    fig = plots._new_figure((6.0, 3.4))
+    fig = plots.new_figure((6.0, 3.4))
     ax = fig.subplots()
     idx = np.arange(1, PAPER.n + 1)
     ax.bar(idx - 0.18, k0, 0.36, label=f"uniform: P = {-d.initial_critical_force:.4f}")
@@ -125,7 +125,7 @@ def force_estimate() -> None:
     w, v = np.linalg.eigh(cov)
     t = np.linspace(0, 2 * np.pi, 200)
     ell = (v @ (np.sqrt(w)[:, None] * 2.0 * np.vstack([np.cos(t), np.sin(t)]))).T + [-0.1, 0.05]
-    fig = plots._new_figure((5.2, 4.0))
+    fig = plots.new_figure((5.2, 4.0))
     ax = fig.subplots()
     ax.plot(F[:, 0], F[:, 1], ".", ms=3, alpha=0.6, label="estimates, sigma_q = 1e-3 rad")
     ax.plot(*ell.T, "k-", lw=1, label="2 sigma ellipse (reported covariance)")
@@ -140,7 +140,7 @@ def force_estimate() -> None:
 
 def stiffness_design() -> None:
     sd = to.preloads_for_stiffness(PAPER, (7.0, 1.0), eig_bounds=[0.04, 0.6])
-    fig = plots._new_figure((8.4, 3.4))
+    fig = plots.new_figure((8.4, 3.4))
     ax, bx = fig.subplots(1, 2)
     _chain(ax, sd.manipulator, sd.q, color="tab:green")
     ax.plot([7.0], [1.0], "kx", ms=8)
@@ -160,7 +160,7 @@ def stiffness_design() -> None:
 
 def load_capacity() -> None:
     cap = to.load_capacity(BISTABLE, directions=24, max_load=1.0)
-    fig = plots._new_figure((4.8, 4.8))
+    fig = plots.new_figure((4.8, 4.8))
     ax = fig.add_subplot(projection="polar")
     lost = np.isfinite(cap.loads)
     ax.plot(cap.angles[lost], cap.loads[lost], "o-", ms=4, label="stability lost (fold)")
@@ -171,8 +171,8 @@ def load_capacity() -> None:
     _save(fig, "load_capacity")
 
 
-FIGURES = {f.__name__: f for f in (equilibrium, buckling, stiffness, rest, limit_load, boundary, design, plan, simulation,
-                                   force_estimate, stiffness_design, load_capacity)}
+FIGURES = {f.__name__: f for f in (equilibrium, buckling, stiffness, rest, limit_load, boundary, design, plan,
+                                   simulation, force_estimate, stiffness_design, load_capacity)}
 
 
 def main(names: list[str]) -> int:

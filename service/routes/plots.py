@@ -105,26 +105,34 @@ def _image(fig: Any, fmt: str, dpi: int) -> bytes:
 
 
 def plot_curve_task(req: ps.PlotCurveRequest, fmt: str) -> bytes:
+    from tensegrity_opt import force_deflection
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
-    return _image(plots.plot_curve(m, deflections(req.dx), req.dy, req.branch), fmt, req.dpi)
+    c = force_deflection(m, deflections(req.dx), req.dy, branch=req.branch)
+    return _image(plots.plot_curve(c, m), fmt, req.dpi)
 
 
 def plot_landscape_task(req: ps.PlotLandscapeRequest, fmt: str) -> bytes:
+    from tensegrity_opt import energy_landscape, find_equilibria
+    from tensegrity_opt.analyses.equilibria.landscape import landscape_span
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
-    span: float | str = "auto" if req.span is None else req.span
-    fig = plots.plot_landscape(m, req.dx, req.dy, pair=(req.pair[0], req.pair[1]), grid=req.grid, span=span)
-    return _image(fig, fmt, req.dpi)
+    pair = (req.pair[0], req.pair[1])
+    span = landscape_span(m, req.dx, req.dy, pair) if req.span is None else req.span
+    land = energy_landscape(m, req.dx, req.dy, pair=pair, grid=req.grid, span=span)
+    eqs = find_equilibria(m, req.dx, req.dy)
+    return _image(plots.plot_landscape(land, eqs, m, req.dx, req.dy), fmt, req.dpi)
 
 
 def plot_shapes_task(req: ps.PlotShapesRequest, fmt: str) -> bytes:
+    from tensegrity_opt import find_equilibria
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
-    return _image(plots.plot_shapes(m, req.dx, req.dy, max_panels=req.max_panels), fmt, req.dpi)
+    eqs = find_equilibria(m, req.dx, req.dy)
+    return _image(plots.plot_shapes(eqs, m, req.dx, req.dy, max_panels=req.max_panels), fmt, req.dpi)
 
 
 def plot_torque_task(req: ps.PlotTorqueRequest, fmt: str) -> bytes:
@@ -143,10 +151,11 @@ def _values(v: list[float] | ps.MapValuesRange) -> np.ndarray:
 
 def plot_map_task(req: ps.PlotMapRequest, fmt: str) -> bytes:
     from tensegrity_opt.applications import plots
+    from tensegrity_opt.applications.sweeps import critical_load_map
 
     m = build_manipulator(req.manipulator)
-    fig = plots.plot_map(m, req.param_x, _values(req.values_x), req.param_y, _values(req.values_y), req.boundary)
-    return _image(fig, fmt, req.dpi)
+    cmap = critical_load_map(m, req.param_x, _values(req.values_x), req.param_y, _values(req.values_y), req.boundary)
+    return _image(plots.plot_map(cmap, m), fmt, req.dpi)
 
 
 def plot_branch_task(req: ps.PlotBranchRequest, fmt: str, deadline: float) -> bytes:
@@ -159,7 +168,8 @@ def plot_branch_task(req: ps.PlotBranchRequest, fmt: str, deadline: float) -> by
 def plot_limit_load_task(req: ps.PlotLimitLoadRequest, fmt: str, deadline: float) -> bytes:
     from tensegrity_opt.applications import plots
 
-    return _image(plots.plot_limit_load(find_limit_load(req, deadline)), fmt, req.dpi)
+    m = build_manipulator(req.manipulator)
+    return _image(plots.plot_limit_load(find_limit_load(req, deadline), m), fmt, req.dpi)
 
 
 def plot_boundary_task(req: ps.PlotBoundaryRequest, fmt: str, deadline: float) -> bytes:

@@ -22,7 +22,7 @@ from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
 from ...serialize import nullables, numbers
 
-__all__ = ["Landscape", "energy_landscape", "complete_configuration", "landscape_margin"]
+__all__ = ["Landscape", "energy_landscape", "complete_configuration", "landscape_margin", "landscape_span"]
 
 
 @dataclass(frozen=True)
@@ -233,6 +233,26 @@ def energy_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int
         configs.append(q)
     return Landscape(pair=pair, qi=qi, qj=qj, energy=np.stack(energies), q=np.stack(configs))
 
+
+
+def landscape_span(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int, int] = (0, 3),
+                   probe: int = 201) -> float:
+    """Half-width of the square ``[-s, s]^2`` holding every finite point of the landscape.
+
+    A ``probe`` x ``probe`` landscape over the default axes (the physical range) locates the
+    reachable region; the answer adds two probe cells and never exceeds the default span.
+    For small deflections the region is a small patch around the origin, so a landscape over it
+    (``energy_landscape(..., span=landscape_span(...))``) instead of the whole physical range resolves the
+    equilibria.
+    """
+    full = energy_landscape(m, dx, dy, pair=pair, grid=probe)
+    finite = np.isfinite(full.energy).any(axis=0)
+    default = float(np.max(np.abs(full.qi)))
+    if not finite.any():
+        return default
+    cell = 2.0 * default / (probe - 1)
+    ext = max(float(np.max(np.abs(full.qi[finite.any(axis=1)]))), float(np.max(np.abs(full.qj[finite.any(axis=0)]))))
+    return float(min(default, ext + 2.0 * cell))
 
 def _angle_between(a, b):
     """Signed angle from direction ``a`` to direction ``b`` (rad, in (-pi, pi])."""

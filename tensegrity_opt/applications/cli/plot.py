@@ -5,8 +5,9 @@ plan|simulation ... -o fig.png|fig.svg``.
 (:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
 other commands (``--n --a --b --k --L0`` uniform, the paper's chain by default, or
 ``--manipulator FILE.json``), ``--json`` and ``-o/--output`` (the format follows the suffix);
-its ``func(args, m)`` returns ``(data, text)`` as the other commands do, so ``cli.main``
-prints one line (or JSON) and maps errors to one line on stderr and exit status 2.
+its ``func(args, m)`` computes the result with the library, draws it with
+:mod:`tensegrity_opt.applications.plots` and returns ``(data, text)`` as the other commands do, so
+``cli.main`` prints one line (or JSON) and maps errors to one line on stderr and exit status 2.
 
 ``python -m tensegrity_opt.applications.cli.plot KIND ...`` runs the same command on its own.
 
@@ -40,8 +41,13 @@ from typing import Any
 
 import numpy as np
 
+from ...analyses.equilibria.all_equilibria import find_equilibria
+from ...analyses.equilibria.landscape import energy_landscape, landscape_span
+from ...analyses.paths.curves import force_deflection
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
+from ..sweeps.critical_map import critical_load_map
+from ..sweeps.spec import DESIGN_VARIABLES
 from .common import HELP_FORMAT, Parser, add_manipulator_options, note, positive_int, run_command
 from .control import add_plan_options, add_simulate_options, plan_from_args, simulation_from_args
 from .paths import (add_atlas_options, add_boundary_options, add_branch_options, add_limit_load_options,
@@ -54,7 +60,6 @@ KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load"
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
                   "direction), energy, s (arclength) or q1..qn (a joint angle)")
-_PARAMS = ("a", "b", "k", "L0")
 
 
 def _output(value: str) -> str:
@@ -74,9 +79,9 @@ def _common(sp: argparse.ArgumentParser) -> None:
 
 def _axis(spec: list[str], name: str) -> tuple[str, np.ndarray]:
     param = spec[0]
-    if param not in _PARAMS:
-        raise InvalidParameterError(f"--{name}: the parameter must be one of {', '.join(_PARAMS)}, got {param!r}",
-                                    field=name)
+    if param not in DESIGN_VARIABLES:
+        raise InvalidParameterError(f"--{name}: the parameter must be one of {', '.join(DESIGN_VARIABLES)}, "
+                                    f"got {param!r}", field=name)
     try:
         start, stop, num = float(spec[1]), float(spec[2]), int(spec[3])
     except ValueError:
@@ -108,11 +113,8 @@ def _plots():
 
 def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    dx = np.linspace(args.start, args.stop, args.num)
-    from ...analyses.paths.curves import force_deflection
-
-    c = force_deflection(m, dx, args.dy, branch=args.branch)
-    fig = plots.plot_curve(m, dx, args.dy, args.branch, curve=c)
+    c = force_deflection(m, np.linspace(args.start, args.stop, args.num), args.dy, branch=args.branch)
+    fig = plots.plot_curve(c, m)
     out = _render(args, fig, "curve", {"points": int(c.dx.size), "jumps": [j.kind for j in c.jumps],
                                        "branches": len(c.branches), "complete": c.success,
                                        "note": "" if c.success else c.message})
@@ -123,21 +125,19 @@ def _cmd_curve(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
 
 def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from ...analyses.equilibria.all_equilibria import find_equilibria
-
-    eqs = find_equilibria(m, args.dx, args.dy) if m.n == 4 else None
-    span: float | str | None = "auto" if args.span is None else (None if args.span <= 0 else args.span)
-    fig = plots.plot_landscape(m, args.dx, args.dy, tuple(args.pair), args.grid, span=span, equilibria=eqs)
+    eqs = find_equilibria(m, args.dx, args.dy) if m.n == 4 else None      # n != 4: the landscape refuses it
+    pair = tuple(args.pair)
+    span = landscape_span(m, args.dx, args.dy, pair) if args.span is None else (None if args.span <= 0 else args.span)
+    land = energy_landscape(m, args.dx, args.dy, pair=pair, grid=args.grid, span=span)
+    fig = plots.plot_landscape(land, eqs, m, args.dx, args.dy)
     return _render(args, fig, "landscape", {"equilibria": [{"shape": e.shape, "kind": e.kind,
-                                                            "q": e.q.tolist()} for e in eqs or []]})
+                                                            "q": e.q.tolist()} for e in eqs]})
 
 
 def _cmd_shapes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
-    from ...analyses.equilibria.all_equilibria import find_equilibria
-
     eqs = find_equilibria(m, args.dx, args.dy)
-    fig = plots.plot_shapes(m, args.dx, args.dy, equilibria=eqs, max_panels=args.max_panels)
+    fig = plots.plot_shapes(eqs, m, args.dx, args.dy, max_panels=args.max_panels)
     return _render(args, fig, "shapes", {"equilibria": [{"shape": e.shape, "kind": e.kind, "q": e.q.tolist()}
                                                         for e in eqs]})
 
@@ -156,14 +156,14 @@ def _cmd_torque(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any
         lim = min(s.joint_limit for s in segs)
         q = np.linspace(-lim if args.qmin is None else args.qmin, lim if args.qmax is None else args.qmax, args.num)
     fig = plots.plot_torque(segs, q, num=args.num)
-    return _render(args, fig, "torque", {"segments": [s.to_dict() for s in plots._segments(segs)]})
+    return _render(args, fig, "torque", {"segments": [s.to_dict() for s in plots.distinct_segments(segs)]})
 
 
 def _cmd_map(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     px, xs = _axis(args.x, "x")
     py, ys = _axis(args.y, "y")
-    fig = plots.plot_map(m, px, xs, py, ys, args.boundary)
+    fig = plots.plot_map(critical_load_map(m, px, xs, py, ys, args.boundary), m)
     return _render(args, fig, "map", {"x": {"param": px, "values": xs.tolist()},
                                       "y": {"param": py, "values": ys.tolist()}, "boundary": args.boundary})
 
@@ -219,8 +219,32 @@ def _cmd_simulation(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
                                              "snaps": len(sim.snaps), "events": [e.kind for e in sim.events]})
 
 
+def _add_branch_plot_options(k: argparse.ArgumentParser) -> None:
+    """The ``branch`` command's options and the diagram's axes."""
+    add_branch_options(k)
+    k.add_argument("--x", default="t", help=f"horizontal axis: {_QUANTITY_HELP}")
+    k.add_argument("--y", default="fx", help="vertical axis, as --x")
+
+
+#: The kinds that draw the result of another command, with that command's options: ``(kind, help, options, func)``.
+_RESULT_KINDS = (
+    ("branch", "branch diagram: one branch (or --depth: the bifurcation diagram) by Morse index, events marked",
+     _add_branch_plot_options, _cmd_branch),
+    ("limit-load", "the load path of a limit load, the limit point and quasi-buckling load marked",
+     add_limit_load_options, _cmd_limit_load),
+    ("boundary", "a stability boundary: critical t against the second parameter, cusps marked", add_boundary_options,
+     _cmd_boundary),
+    ("atlas", "the stability atlas: stable equilibria over (dx, dy), switch and branch-end curves", add_atlas_options,
+     _cmd_atlas),
+    ("plan", "a rest-length plan: rest lengths, margin and tip path per step, infeasible steps shaded",
+     add_plan_options, _cmd_plan),
+    ("simulation", "the hysteresis loop of a quasi-static simulation, the snaps as arrows", add_simulate_options,
+     _cmd_simulation),
+)
+
+
 def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
-    """Add ``plot {curve,landscape,shapes,torque,map}`` to ``subparsers`` (``add_subparsers()``'s result).
+    """Add ``plot KIND`` (:data:`KINDS`) to ``subparsers`` (``add_subparsers()``'s result).
 
     Each kind sets ``func(args, m) -> (data, text)`` like the other commands of ``cli.py``.
     Returns the ``plot`` parser.
@@ -261,7 +285,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
     k = kinds.add_parser("torque", help="torque-angle curves M(q) of the segments (Fig. 2)")
     _common(k)
-    k.add_argument("--vary", choices=_PARAMS, help="one curve per value of this parameter (first segment)")
+    k.add_argument("--vary", choices=DESIGN_VARIABLES, help="one curve per value of this parameter (first segment)")
     k.add_argument("--values", type=float, nargs="+", metavar="V", help="the values for --vary")
     k.add_argument("--qmin", type=float, default=None,
                    help="first joint angle (rad); None: the lower end of the physical range")
@@ -280,44 +304,11 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
                    help="tip guided (y held, the paper's case) or free")
     k.set_defaults(func=_cmd_map)
 
-    k = kinds.add_parser("branch", formatter_class=HELP_FORMAT,
-                         help="branch diagram: one branch (or --depth: the bifurcation diagram) by Morse index, "
-                              "events marked")
-    _common(k)
-    add_branch_options(k)
-    k.add_argument("--x", default="t", help=f"horizontal axis: {_QUANTITY_HELP}")
-    k.add_argument("--y", default="fx", help="vertical axis, as --x")
-    k.set_defaults(func=_cmd_branch)
-
-    k = kinds.add_parser("limit-load", formatter_class=HELP_FORMAT,
-                         help="the load path of a limit load, the limit point and quasi-buckling load marked")
-    _common(k)
-    add_limit_load_options(k)
-    k.set_defaults(func=_cmd_limit_load)
-
-    k = kinds.add_parser("boundary", formatter_class=HELP_FORMAT,
-                         help="a stability boundary: critical t against the second parameter, cusps marked")
-    _common(k)
-    add_boundary_options(k)
-    k.set_defaults(func=_cmd_boundary)
-
-    k = kinds.add_parser("atlas", formatter_class=HELP_FORMAT,
-                         help="the stability atlas: stable equilibria over (dx, dy), switch and branch-end curves")
-    _common(k)
-    add_atlas_options(k)
-    k.set_defaults(func=_cmd_atlas)
-
-    k = kinds.add_parser("plan", formatter_class=HELP_FORMAT,
-                         help="a rest-length plan: rest lengths, margin and tip path per step, infeasible steps shaded")
-    _common(k)
-    add_plan_options(k)
-    k.set_defaults(func=_cmd_plan)
-
-    k = kinds.add_parser("simulation", formatter_class=HELP_FORMAT,
-                         help="the hysteresis loop of a quasi-static simulation, the snaps as arrows")
-    _common(k)
-    add_simulate_options(k)
-    k.set_defaults(func=_cmd_simulation)
+    for name, help_, add_options, func in _RESULT_KINDS:
+        k = kinds.add_parser(name, formatter_class=HELP_FORMAT, help=help_)
+        _common(k)
+        add_options(k)
+        k.set_defaults(func=func)
     return sp
 
 

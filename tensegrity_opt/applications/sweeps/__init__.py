@@ -46,23 +46,34 @@ A failing point never stops the sweep.
 Execution: ``scheduler=None``/``"serial"`` solves in the calling thread (the library caches
 its CasADi solvers per thread); ``"threads"`` in a pool of threads of this process; ``"auto"`` (the
 command line's default) serially, unless a timed probe of the first points says the rest would take
-more than a minute, then on a local cluster (:func:`~.scheduler.auto_scheduler`); ``"local"`` starts a ``dask.distributed.LocalCluster``
-(one single-threaded worker process per core), ``"tcp://host:port"`` uses a running Dask
-scheduler (a :class:`distributed.Client` is accepted too). Each Dask task solves a chunk
+more than a minute, then on a local cluster (:func:`~.scheduler.auto_scheduler`); ``"local"`` starts a
+``dask.distributed.LocalCluster`` (one single-threaded worker process per core), ``"tcp://host:port"`` uses a
+running Dask scheduler (a :class:`distributed.Client` is accepted too). Each Dask task solves a chunk
 of points with :func:`solve_chunk` (module level, so it pickles); a worker thread builds
 its solvers once and reuses them for every later chunk. Chunks stream back with
 ``as_completed``; ``on_result(index, row)`` runs in the calling process as each point
 (Dask: each chunk) arrives.
 
+A :class:`SweepResult` follows the result contract: ``status`` ``"complete"`` (every point solved),
+``"point_errors"`` (every point has its row, some carry an error; a success too) or ``"cancelled"`` (stopped
+early: not a success), ``success`` and ``message``; it is immutable (its ``rows`` and ``columns`` tuples). The rows
+themselves are table lines (the point's parameters, the analysis's numbers, ``error``) and keep their columns.
+
+:func:`critical_load_map` is the buckling analysis over a grid of two design parameters of any chain (a
+heterogeneous one included), answered as a typed grid, :class:`CriticalLoadMap` (what the critical-load figure
+draws).
+
 The package, by what its modules do: :mod:`.spec` (what a spec may say, its validation),
 :mod:`.plan` (the points and columns of a spec), :mod:`.evaluate` (one point: the analysis and its
-row), :mod:`.results` (:class:`SweepResult`, CSV / JSON / Parquet) and :mod:`.scheduler`
-(:func:`sweep`: serial or Dask). The names below are the public interface.
+row), :mod:`.results` (:class:`SweepResult`, CSV / JSON / Parquet), :mod:`.scheduler`
+(:func:`sweep`: serial or Dask), :mod:`.atlas` (an atlas sweep's rows as a stability atlas) and
+:mod:`.critical_map` (the critical-load map). The names below are the public interface.
 """
 
 from __future__ import annotations
 
 from .atlas import atlas_from_rows
+from .critical_map import CriticalLoadMap, critical_load_map
 from .evaluate import error_row, evaluate_point, format_error, solve_chunk
 from .plan import column_types, columns, expand, plan
 from .results import SweepResult, read_results, write_csv
@@ -78,4 +89,5 @@ from .spec import (
 
 __all__ = ["ANALYSES", "PARAMETERS", "RESULT_COLUMNS", "MAX_POINTS", "SweepResult", "validate_spec", "expand",
            "count_points", "columns", "column_types", "evaluate_point", "solve_chunk", "sweep", "format_error",
-           "read_results", "write_csv", "plan", "error_row", "atlas_from_rows"]
+           "read_results", "write_csv", "plan", "error_row", "atlas_from_rows", "CriticalLoadMap",
+           "critical_load_map"]

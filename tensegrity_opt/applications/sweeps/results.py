@@ -1,4 +1,5 @@
-"""The rows of a sweep as a :class:`SweepResult` and its files: CSV, JSON, Parquet (write and read back)."""
+"""The rows of a sweep as a :class:`SweepResult` (the result contract: ``success``, ``status``, ``message``) and
+its files: CSV, JSON, Parquet (write and read back)."""
 
 from __future__ import annotations
 
@@ -9,12 +10,14 @@ import os
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 from ...errors import InvalidParameterError
+from ...outcome import Outcome, freeze
 from .spec import _BASE_TYPES, RESULT_COLUMNS
 
 __all__ = ["SweepResult", "write_csv", "read_results"]
+
 
 def _cell_csv(v: Any, kind: str) -> str:
     if v is None:
@@ -53,13 +56,45 @@ def _type_of(col: str) -> str:
     return "str"
 
 
-@dataclass
-class SweepResult:
-    """Rows of a sweep (sorted by ``index``; skipped points are absent) and how it ran."""
+@dataclass(frozen=True)
+class SweepResult(Outcome):
+    """Rows of a sweep (sorted by ``index``; skipped points are absent) and how it ran.
+
+    Attributes
+    ----------
+    spec : dict or None
+        The validated spec (``None`` for rows read back from a CSV file).
+    columns : tuple of str
+        ``index``, the swept parameters, the analysis's result columns, ``error``.
+    rows : tuple of dict
+        One ``{column: value}`` per point solved, by ``index``; a failed point's row has its ``error``
+        (``"code: message"``) and empty results.
+    total, skipped : int
+        Points of the sweep, and those skipped (``skip``: done before, not in :attr:`rows`).
+    cancelled : bool
+        The sweep stopped early (``should_stop``): some points have no row.
+    elapsed : float
+        Wall time (s).
+    scheduler : str
+        What ran it (``"serial"``, ``"serial+local"``, ``"threads"``, a Dask address ...).
+    types : dict
+        Column -> type (``int``, ``float``, ``bool``, ``str``, ``floats``, ``strs``).
+    status : str
+        :attr:`STATUSES`, derived from :attr:`cancelled` and the rows' errors.
+    message : str
+        The same in a sentence, with the counts.
+    """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every point to solve has its row and none failed",
+        "point_errors": "every point to solve has its row; some points failed (their rows carry the error)",
+        "cancelled": "the sweep stopped early: some points have no row",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete", "point_errors"})
 
     spec: dict[str, Any] | None
-    columns: list[str]
-    rows: list[dict[str, Any]]
+    columns: tuple[str, ...]
+    rows: tuple[dict[str, Any], ...]
     total: int = 0
     skipped: int = 0
     cancelled: bool = False
@@ -69,10 +104,26 @@ class SweepResult:
 
     def __post_init__(self) -> None:
         if not self.types:
-            self.types = {c: _type_of(c) for c in self.columns}
+            object.__setattr__(self, "types", {c: _type_of(c) for c in self.columns})
+        freeze(self)
 
     def __len__(self) -> int:
         return len(self.rows)
+
+    @property
+    def status(self) -> str:
+        """``"complete"``, ``"point_errors"`` or ``"cancelled"`` (:attr:`STATUSES`)."""
+        if self.cancelled:
+            return "cancelled"
+        return "point_errors" if self.errors else "complete"
+
+    @property
+    def message(self) -> str:
+        """A sentence: the points solved, failed and skipped."""
+        failed = len(self.errors)
+        skipped = f", {self.skipped} skipped (done before)" if self.skipped else ""
+        head = "stopped early: " if self.cancelled else ""
+        return f"{head}{len(self.rows)} of {self.total} points solved, {failed} failed{skipped}"
 
     @property
     def errors(self) -> list[dict[str, Any]]:
@@ -96,9 +147,9 @@ class SweepResult:
         return path
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form, the document :meth:`to_json` writes: ``{"format", "spec", "columns", "rows":
-        [{column: value}, ...]}`` (no NaN: a missing value is ``None``)."""
-        return {"format": "tensegrity-sweep/1", "spec": self.spec, "columns": self.columns,
+        """JSON form, the document :meth:`to_json` writes: ``{"success", "status", "message", "format", "spec",
+        "columns", "rows": [{column: value}, ...]}`` (no NaN: a missing value is ``None``)."""
+        return {**self.outcome(), "format": "tensegrity-sweep/1", "spec": self.spec, "columns": list(self.columns),
                 "rows": [{c: r.get(c) for c in self.columns} for r in self.rows]}
 
     def to_json(self, path: str | os.PathLike[str]) -> Path:
@@ -144,7 +195,8 @@ class SweepResult:
         if suffix == ".json":
             with open(path, encoding="utf-8") as fh:
                 doc = json.load(fh)
-            return cls(doc.get("spec"), list(doc["columns"]), list(doc["rows"]), total=len(doc["rows"]))
+            return cls(doc.get("spec"), list(doc["columns"]), list(doc["rows"]), total=len(doc["rows"]),
+                       cancelled=doc.get("status") == "cancelled")
         if suffix in (".parquet", ".pq"):
             import pyarrow.parquet as pq
 

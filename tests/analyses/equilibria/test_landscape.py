@@ -74,3 +74,15 @@ def test_errors():
         energy_landscape(PAPER, 0.1, pair=(1, 1))
     with pytest.raises(ValueError):
         energy_landscape(PAPER, -0.1)
+
+
+def test_landscape_span_covers_the_reachable_region():
+    from tensegrity_opt.analyses.equilibria.landscape import landscape_span
+
+    span = landscape_span(PAPER, 0.1, 0.0, (0, 3))
+    full = energy_landscape(PAPER, 0.1, 0.0, pair=(0, 3), grid=201)
+    QI, QJ = np.meshgrid(full.qi, full.qj, indexing="ij")
+    ok = np.isfinite(full.energy).any(axis=0)
+    assert span < 0.5 * full.qi.max()                     # a small patch around the origin at dx = 0.1
+    assert np.all(np.abs(QI[ok]) <= span) and np.all(np.abs(QJ[ok]) <= span)
+    assert landscape_span(PAPER, 4.0, 0.0, (0, 3)) <= full.qi.max()        # never beyond the default axes

@@ -257,14 +257,14 @@ def test_a_partial_curve_prints_its_points_and_the_note_and_exits_0(capsys, monk
 
 
 def test_plot_curve_of_a_partial_curve_writes_the_figure_and_prints_the_note(capsys, monkeypatch, tmp_path):
-    import tensegrity_opt.analyses.paths.curves as curves
+    import tensegrity_opt.applications.cli.plot as plot_cli
 
-    real = curves.force_deflection
+    real = plot_cli.force_deflection
 
     def partial(m, dx, dy=0.0, **kw):
         return _Partial(real(m, dx[:3], dy, **kw))
 
-    monkeypatch.setattr(curves, "force_deflection", partial)
+    monkeypatch.setattr(plot_cli, "force_deflection", partial)       # the curve the command computes
     out_file = tmp_path / "c.png"
     assert main(["plot", "curve", "--start", "0", "--stop", "1", "--num", "5", "-o", str(out_file), "--json"]) == 0
     out, err = capsys.readouterr()

@@ -8,6 +8,7 @@ own functions for the same point (the physics is tested elsewhere).
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import math
 
@@ -18,6 +19,7 @@ import tensegrity_opt as to
 from tensegrity_opt.applications import sweeps as S
 from tensegrity_opt.applications.cli.sweep import add_sweep_parser
 from tensegrity_opt.errors import InvalidParameterError
+from tensegrity_opt.outcome import Outcome
 from tensegrity_opt.serialize import nullable
 
 EXACT = {"rel": 1e-12, "abs": 1e-12}
@@ -163,12 +165,12 @@ def test_design_columns_equal_maximize_critical_force():
     opts = {"vary": ["k"], "bounds": {"k": [0.2, 5.0]}, "budget": {"k": 4.0}}
     res = S.sweep({"analysis": "design", "grid": {"n": [3, 4]}, "options": opts})
     assert not res.errors
-    assert res.columns[-2:] == ["k_opt", "error"]
+    assert res.columns[-2:] == ("k_opt", "error")
     for r in res.rows:
         d = to.maximize_critical_force(to.Manipulator.uniform(r["n"]), vary=("k",), bounds={"k": (0.2, 5.0)},
                                        budget={"k": 4.0})
         assert r["critical_force"] == pytest.approx(d.critical_force, **EXACT)
-        assert r["multiplicity"] == d.multiplicity and r["status"] == d.status and r["active"] == d.active
+        assert r["multiplicity"] == d.multiplicity and r["status"] == d.solver.status and r["active"] == list(d.active)
         assert r["k_opt"] == pytest.approx(d.manipulator.k1.tolist(), **EXACT)
         assert r["initial_critical_force"] == pytest.approx(d.initial_critical_force, **EXACT)
 
@@ -182,6 +184,8 @@ def test_a_failing_point_gets_an_error_and_the_others_succeed():
     assert len(res.rows) == 6
     bad = [r for r in res.rows if r["dx"] == 30.0]
     assert len(bad) == 2 and len(res.errors) == 2
+    assert (res.status, res.success) == ("point_errors", True)       # every point ran: the sweep worked
+    assert res.message == "6 of 6 points solved, 2 failed"
     for r in bad:
         assert r["error"].startswith("unreachable_target: ")
         assert all(r[c] is None for c in S.RESULT_COLUMNS["equilibrium"])
@@ -199,13 +203,18 @@ def test_skip_resumes_and_on_result_streams_every_point():
     assert seen == [1, 3, 4] and [r["index"] for r in part.rows] == [1, 3, 4]
     assert (part.total, part.skipped) == (6, 3)
     rest = S.sweep(MIXED, skip=[1, 3, 4])
-    assert sorted(part.rows + rest.rows, key=lambda r: r["index"]) == full.rows
+    assert tuple(sorted(part.rows + rest.rows, key=lambda r: r["index"])) == full.rows
+    # points 1 and 4 (dx = 30) fail, and both are in the part
+    assert (full.status, part.status, rest.status) == ("point_errors", "point_errors", "complete")
+    assert part.message == "3 of 6 points solved, 2 failed, 3 skipped (done before)"
 
 
 def test_should_stop_stops_between_points():
     calls = []
     res = S.sweep(MIXED, on_result=lambda i, row: calls.append(i), should_stop=lambda: len(calls) >= 2)
     assert res.cancelled and calls == [0, 1] and len(res.rows) == 2
+    assert (res.status, res.success) == ("cancelled", False)
+    assert res.message == "stopped early: 2 of 6 points solved, 1 failed"          # point 1: dx = 30
 
 
 def test_progress_bar_only_on_a_terminal(capsys):
@@ -227,7 +236,10 @@ def test_files_round_trip(tmp_path, suffix):
     if suffix != ".csv":
         assert back.spec == res.spec
     if suffix == ".json":
-        assert json.loads(path.read_text())["rows"][1]["error"].startswith("unreachable_target")
+        doc = json.loads(path.read_text())
+        assert doc["rows"][1]["error"].startswith("unreachable_target")
+        assert list(doc)[:4] == ["success", "status", "message", "format"]
+        assert (doc["success"], doc["status"]) == (True, "point_errors")
     if suffix == ".csv":
         lines = path.read_text().splitlines()
         assert lines[0] == ",".join(res.columns) and len(lines) == 5
@@ -290,7 +302,7 @@ def test_non_finite_values_become_none():
     assert nullable(float("nan")) is None and nullable(math.inf) is None and nullable(np.float64(1.5)) == 1.5
 
 
-# --------------------------------------------------------------------------- the default scheduler (issue 18)
+# --------------------------------------------------------------------------- the default scheduler
 def _readme_spec() -> dict:
     """The sweep spec the README shows (its first JSON block with an ``analysis``)."""
     import re
@@ -361,3 +373,19 @@ def test_threads_equal_serial():
     res = S.sweep(spec, scheduler="threads", workers=2, chunk_size=3)
     assert res.scheduler == "threads" and res.rows == S.sweep(spec).rows
     assert res.rows[2]["error"].startswith("unreachable_target")
+
+
+# --------------------------------------------------------------------------- the result contract
+def test_a_sweep_result_follows_the_contract_and_is_immutable(tmp_path):
+    res = S.sweep({"analysis": "buckling", "grid": {"n": [3, 4]}})
+    assert isinstance(res, Outcome) and set(S.SweepResult.STATUSES) == {"complete", "point_errors", "cancelled"}
+    assert (res.success, res.status, res.message) == (True, "complete", "2 of 2 points solved, 0 failed")
+    assert list(res.to_dict())[:3] == ["success", "status", "message"]
+    assert isinstance(res.rows, tuple) and isinstance(res.columns, tuple)
+    assert res.to_dict()["columns"] == list(res.columns)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        res.cancelled = True
+    stopped = S.SweepResult(res.spec, list(res.columns), [res.rows[0]], total=2, cancelled=True)
+    assert (stopped.status, stopped.success) == ("cancelled", False)
+    back = S.read_results(stopped.save(tmp_path / "stopped.json"))
+    assert back.status == "cancelled" and back.rows == stopped.rows

@@ -6,46 +6,19 @@ PNG and SVG (not compared pixel by pixel); the legend sits outside the data.
 
 from __future__ import annotations
 
-import xml.etree.ElementTree as ET
-
 import numpy as np
 import pytest
 
 pytest.importorskip("matplotlib")
 
-import tensegrity_opt as to
-from tensegrity_opt.applications import plots
-from tensegrity_opt.errors import InvalidParameterError
+from figures import check_renders, gid, legend_texts  # noqa: E402
+
+import tensegrity_opt as to  # noqa: E402
+from tensegrity_opt.applications import plots  # noqa: E402
+from tensegrity_opt.errors import InvalidParameterError  # noqa: E402
 
 PAPER = to.Manipulator.uniform(4)
 M3 = to.Manipulator.uniform(3, a=0.5)
-
-
-def gid(fig, name):
-    found = fig.findobj(lambda a: a.get_gid() == name)
-    assert len(found) == 1, (name, len(found))
-    return found[0]
-
-
-def check_renders(fig, tmp_path, name):
-    png = plots.save(fig, tmp_path / f"{name}.png", dpi=40)
-    svg = plots.save(fig, tmp_path / f"{name}.svg")
-    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    root = ET.fromstring(svg.read_bytes())
-    assert root.tag == "{http://www.w3.org/2000/svg}svg"
-    return {el.get("id") for el in root.iter() if el.get("id")}
-
-
-def legend_outside(fig):
-    """The figure's legend does not meet any axes' box (beside or below them)."""
-    assert len(fig.legends) == 1 and all(ax.get_legend() is None for ax in fig.axes)
-    fig.canvas.draw()
-    r = fig.canvas.get_renderer()
-    lb = fig.legends[0].get_window_extent(r)
-    for ax in fig.axes:
-        ab = ax.get_window_extent(r)
-        assert lb.x0 >= ab.x1 - 1e-6 or lb.y1 <= ab.y0 + 1e-6, (lb, ab)
-    return [t.get_text() for t in fig.legends[0].get_texts()]
 
 
 @pytest.fixture(scope="module")
@@ -76,7 +49,7 @@ def test_plan_figure_draws_the_library_plan(plan, tmp_path):
     for name in ("infeasible-rest", "infeasible-margin"):
         bands = gid(fig, name).get_paths()
         assert len(bands) == 1 and bands[0].get_extents().x0 == pytest.approx(2.5)
-    labels = legend_outside(fig)
+    labels = legend_texts(fig, count=1)
     assert "segment 4" in labels and any("infeasible step" in t for t in labels)
     assert any("required margin 0.3" in t for t in labels)
     axes_labels = " ".join(ax.get_xlabel() + " " + ax.get_ylabel() for ax in fig.axes)
@@ -91,7 +64,7 @@ def test_plan_figure_of_a_long_chain_and_of_no_step(tmp_path):
     p = to.preloads_for_trajectory(m, [[m.straight_length - 0.01, 0.3]])
     fig = plots.plot_preload_plan(p, m)
     assert len(fig.axes) == 4            # the three panels and a colour bar of the segments
-    assert not any(t.startswith("segment") for t in legend_outside(fig))
+    assert not any(t.startswith("segment") for t in legend_texts(fig, count=1))
     gid(fig, "rest-length-11-2")
     empty = to.preloads_for_trajectory(PAPER, [[7.9, 0.1]], timeout=1e-9)
     assert empty.status == "time_limit" and len(empty.method) == 0
@@ -129,7 +102,7 @@ def test_simulation_figure_is_the_hysteresis_loop(tmp_path):
     assert _points(fig, "joint-limit").shape == (0, 2)
     assert "load $F_y$" in ax.get_ylabel() and "deflection $\\delta_y$ (length)" in ax.get_xlabel()
     assert "2 snap(s)" in ax.get_title() and "n = 3, a = 0.5" in ax.get_title()
-    labels = legend_outside(fig)
+    labels = legend_texts(fig, count=1)
     assert any(t.startswith("fold") for t in labels) and any("energy released" in t for t in labels)
     ids = check_renders(fig, tmp_path, "loop")
     assert {"path", "samples", "snap-0", "snap-1", "snap-folds", "snap-landings"} <= ids

@@ -1,0 +1,114 @@
+"""``POST /v1/plots/*``: PNG and SVG answers, reproducible SVG bytes, content negotiation, refusals as JSON, the
+operations documented."""
+
+from __future__ import annotations
+
+import warnings
+
+import pytest
+
+pytest.importorskip("matplotlib")
+
+from figures import check_png, check_svg  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def client():
+    pytest.importorskip("fastapi")
+    pytest.importorskip("httpx")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        from fastapi.testclient import TestClient
+    from service.config import Settings
+    from service.main import create_app
+
+    app = create_app(Settings(warmup=False))        # service.main registers the plot routes
+    assert app.url_path_for("plot_curve") == "/v1/plots/curve"
+    with TestClient(app) as c:
+        yield c
+
+
+M4 = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+BODIES = {
+    "curve": {"manipulator": M4, "dx": {"start": 0.0, "stop": 0.5, "num": 6}},
+    "landscape": {"manipulator": M4, "dx": 0.1, "grid": 31},
+    "shapes": {"manipulator": {"n": 3}, "dx": 0.1},
+    "torque": {"segments": [{"a": 1.0, "b": 1.0, "L0": 0.5}, {"a": 1.0, "b": 1.0, "k": [1.0, 2.0]}], "num": 51},
+    "map": {"manipulator": M4, "param_x": "k", "values_x": {"start": 0.5, "stop": 2.0, "num": 4},
+            "param_y": "L0", "values_y": [0.5, 1.0, 1.5]},
+}
+
+
+@pytest.mark.parametrize("kind", list(BODIES))
+def test_api_answers_png_and_svg(client, kind):
+    r = client.post(f"/v1/plots/{kind}", json={**BODIES[kind], "dpi": 40})
+    assert r.status_code == 200, r.text
+    assert r.headers["content-type"] == "image/png"
+    check_png(r.content)
+    r = client.post(f"/v1/plots/{kind}", json={**BODIES[kind], "format": "svg"})
+    assert r.status_code == 200 and r.headers["content-type"].startswith("image/svg+xml")
+    check_svg(r.content)
+
+
+@pytest.mark.parametrize("kind", ["curve", "torque"])
+def test_api_svg_is_byte_identical_between_identical_requests(client, kind):
+    # matplotlib salts clip-path ids with a random UUID unless svg.hashsalt is set
+    body = {**BODIES[kind], "format": "svg"}
+    first, second = client.post(f"/v1/plots/{kind}", json=body), client.post(f"/v1/plots/{kind}", json=body)
+    assert first.status_code == second.status_code == 200
+    assert b"clip-path" in first.content or b"<use " in first.content
+    assert first.content == second.content
+
+
+def test_api_content_negotiation(client):
+    body = BODIES["torque"]
+    r = client.post("/v1/plots/torque", json=body, headers={"Accept": "image/svg+xml"})
+    assert r.headers["content-type"].startswith("image/svg+xml")
+    check_svg(r.content)
+    r = client.post("/v1/plots/torque", json=body, headers={"Accept": "image/png;q=0.5, image/svg+xml;q=0.9"})
+    assert r.headers["content-type"].startswith("image/svg+xml")
+    r = client.post("/v1/plots/torque", json=body, headers={"Accept": "image/svg+xml;q=0.2, image/png"})
+    assert r.headers["content-type"] == "image/png"
+    r = client.post("/v1/plots/torque", json={**body, "format": "png"}, headers={"Accept": "image/svg+xml"})
+    assert r.headers["content-type"] == "image/png"                 # the body's format wins
+    r = client.post("/v1/plots/torque", json=body, headers={"Accept": "*/*"})
+    assert r.headers["content-type"] == "image/png"
+
+
+def test_api_refusals(client):
+    r = client.post("/v1/plots/landscape", json={"manipulator": {"n": 5}, "dx": 0.1})
+    assert r.status_code == 422 and r.json()["code"] == "unsupported" and r.json()["field"] == "manipulator.n"
+    for kind in ("landscape", "shapes"):
+        r = client.post(f"/v1/plots/{kind}", json={"manipulator": M4, "dx": 20.0})
+        assert r.status_code == 422 and r.json()["code"] == "unreachable_target", kind
+    r = client.post("/v1/plots/curve", json={"manipulator": M4, "dx": [0.1, -2.0]})
+    assert r.status_code == 422 and r.json()["code"] == "unreachable_target"
+    r = client.post("/v1/plots/curve", json={**BODIES["curve"], "format": "gif"})
+    assert r.status_code == 422 and r.json()["code"] == "validation_error" and r.json()["field"] == "format"
+    r = client.post("/v1/plots/map", json={**BODIES["map"], "param_y": "k"})
+    assert r.status_code == 422 and r.json()["code"] == "invalid_parameter" and r.json()["field"] == "param_y"
+    r = client.post("/v1/plots/map", json={**BODIES["map"], "values_y": [1.0, 0.5, 2.0]})
+    assert r.status_code == 422 and r.json()["field"] == "values_y"
+    r = client.post("/v1/plots/shapes", json={"manipulator": {"n": 5000}, "dx": 0.1})
+    assert r.status_code == 422 and r.json()["code"] == "validation_error"
+    r = client.post("/v1/plots/shapes", json={"manipulator": {"n": 300}, "dx": 0.1})
+    assert r.status_code == 422 and r.json()["code"] == "validation_error"      # above the default limit: schema
+
+
+def test_api_is_documented(client):
+    doc = client.app.openapi()
+    ids = {}
+    for kind in BODIES:
+        op = doc["paths"][f"/v1/plots/{kind}"]["post"]
+        ids[kind] = op["operationId"]
+        assert op["tags"] == ["plots"] and op["summary"]
+        ok = op["responses"]["200"]["content"]
+        assert set(ok) == {"image/png", "image/svg+xml"}
+        assert op["requestBody"]["content"]["application/json"].get("examples")
+        assert op.get("security") == [{"ApiKey": []}, {}]
+        for status in ("401", "413", "422", "503", "504"):
+            content = op["responses"][status]["content"]["application/json"]
+            assert content["schema"]["$ref"] == "#/components/schemas/ErrorOut" and content.get("examples")
+    assert ids == {k: f"plot_{k}" for k in BODIES}
+    assert "unsupported" in doc["paths"]["/v1/plots/landscape"]["post"]["responses"]["422"]["content"][
+        "application/json"]["examples"]
