@@ -53,7 +53,7 @@ variable                               default    meaning
 (auto): ``MAX_CONNECTIONS`` is the process's descriptor limit (``RLIMIT_NOFILE``) minus 64 for the
 server's own files, at most 1024; ``LIMIT_CONCURRENCY`` that plus 8 (the cap, which makes room by closing
 idle or half-sent connections, decides first). The request timeout and the
-connection cap are enforced by ``tensegrity-opt serve`` (:mod:`service.http`); an app started by a
+connection cap are enforced by ``tensegrity-opt serve`` (:mod:`service.api.connections`); an app started by a
 bare ``uvicorn service.main:app`` has only what uvicorn's own options give.
 """
 
@@ -129,8 +129,8 @@ class Settings(BaseSettings):
                     "0: always the workers")
     inline_processes: int = Field(
         1, ge=0, le=64,
-        description="solver processes for that bounded search (service.lane): the event loop hands the request "
-                    "over and goes on with HTTP meanwhile; while none is ready the workers solve it. 0: no "
+        description="solver processes for that bounded search (service.execution): the event loop hands the "
+                    "request over and goes on with HTTP meanwhile; while none is ready the workers solve it. 0: no "
                     "process, the workers solve every request")
     queue_size: int = Field(64, ge=0, le=100000, description="requests waiting for a worker before 503")
     heavy_threads: int | None = Field(
@@ -142,9 +142,9 @@ class Settings(BaseSettings):
                                 description="curves/equilibria requests on longer chains count as heavy")
     heavy_workers: int = Field(
         1, ge=0, le=64,
-        description="solver processes for the design endpoints (service.heavy): killed at the deadline when a "
-                    "solve cannot stop by itself, so a 504 frees its capacity; these requests never hold a "
-                    "solver thread. 0: design requests run in the solver threads")
+        description="killable solver processes for the design endpoints (service.execution): killed after the "
+                    "deadline when a solve cannot stop by itself, so a 504 frees its capacity; these requests never "
+                    "hold a solver thread. 0: design requests run in the solver threads")
     heavy_queue_size: int = Field(4, ge=0, le=10000, description="design requests waiting for a process before 503")
     heavy_grace: float = Field(0.5, ge=0, le=60, description="seconds after a design 504 before a busy process is killed")
     request_timeout: float = Field(10.0, gt=0, le=3600,

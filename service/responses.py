@@ -125,14 +125,17 @@ class JSONBody(bytes):
 
 
 def render_task(fn: Callable[..., Any], args: tuple[Any, ...], limit: int, field: str | None = None) -> Any:
-    """``fn(*args)`` (a task of :mod:`service.compute` or a figure), its JSON-ready result rendered
-    here within ``limit`` bytes (:func:`render_json_bounded`: :class:`ResponseTooLarge` naming
-    ``field`` over it) as a :class:`JSONBody`. The one way a task's result becomes a body, wherever
-    the task runs (a solver thread, a solver process). ``None`` (a fast path that did not settle the
-    request) and bytes (a figure) are returned as they are."""
+    """``fn(*args)`` (a task of :mod:`service.tasks` or a figure), its result rendered here within ``limit``
+    bytes (:func:`render_json_bounded`: :class:`ResponseTooLarge` naming ``field`` over it) as a
+    :class:`JSONBody`: a library result by its own ``to_dict()`` (the one serialiser per result type), a dict
+    as it is. The one way a task's result becomes a body, wherever the task runs (a solver thread, a solver
+    process). ``None`` (a bounded first try that did not settle the request) and bytes (a figure) are returned
+    as they are."""
     result = fn(*args)
     if result is None or isinstance(result, bytes):
         return result
+    if not isinstance(result, dict):
+        result = result.to_dict()
     return JSONBody(render_json_bounded(result, limit, field))
 
 
