@@ -75,7 +75,10 @@ def serve(fd: int) -> None:
             frame = encode(call_id, reply)
         except Exception as exc:  # noqa: BLE001 - an unpicklable result or exception
             frame = encode(call_id, (False, UnreadableReply(f"unpicklable reply: {type(exc).__name__}: {exc}")))
-        sock.sendall(frame)
+        try:
+            sock.sendall(frame)
+        except OSError:                 # the server closed the socket (it stops): nobody waits for the answer
+            return
         if call_id == WARMUP and reply[0]:
             # as the server does after its warm-up: full collections skip what start-up built
             gc.collect()

@@ -27,6 +27,8 @@ with warnings.catch_warnings():
     from fastapi.testclient import TestClient
 
 from service import jobs
+from service.jobs import runner as jobs_runner
+from service.jobs import store as jobs_store
 from service.config import Settings
 from service.main import create_app
 from servers import clean_env, free_port, stop, uvicorn_factory_command, wait_ready
@@ -368,10 +370,10 @@ def _runner(db, **kw):
 
 
 def test_a_point_over_the_time_limit_is_a_timeout_row_and_the_job_goes_on(tmp_path, monkeypatch):
-    """Point 1 would run forever (a Python loop inside the solve): the watchdog cuts it at the limit, its row
+    """Point 1 would run forever (a Python loop inside the solve): it is interrupted at the limit, its row
     is the error ``timeout: ...`` and points 0 and 2 are computed as usual."""
     spec = {"analysis": "equilibrium", "grid": {"dx": [0.1, 0.2, 0.3]}}
-    real = jobs.solve_chunk
+    real = jobs_runner.solve_chunk
     stuck = []
 
     def solve(header, pcols, rcols, items):
@@ -381,7 +383,7 @@ def test_a_point_over_the_time_limit_is_a_timeout_row_and_the_job_goes_on(tmp_pa
                 time.sleep(0.005)
         return real(header, pcols, rcols, items)
 
-    monkeypatch.setattr(jobs, "solve_chunk", solve)
+    monkeypatch.setattr(jobs_runner, "solve_chunk", solve)
     runner = _runner(tmp_path / "jobs.sqlite3", point_timeout=0.3)
     try:
         job_id = runner.submit(spec)["id"]
@@ -571,7 +573,7 @@ def test_every_storage_fault_is_503_jobs_unavailable(api, monkeypatch, fault):
     else:
         runner.store.close()
         runner.store._closed = False
-        monkeypatch.setattr(jobs, "_connect", lambda path: sqlite3.connect(
+        monkeypatch.setattr(jobs_store, "_connect", lambda path: sqlite3.connect(
             f"file:{path}?mode=ro", uri=True, timeout=1.0, isolation_level=None, check_same_thread=False))
     calls = [("POST", "/v1/jobs", MIXED), ("DELETE", f"/v1/jobs/{job_id}", None)]
     if fault != "read-only":                  # reading a read-only file works
@@ -588,7 +590,7 @@ def test_every_storage_fault_is_503_jobs_unavailable(api, monkeypatch, fault):
 
 @pytest.mark.parametrize("api", [{"jobs_results_max_limit": 4}], indirect=True)
 def test_results_are_paged_and_csv_is_streamed_in_batches(api, monkeypatch):
-    from service.routes import jobs as routes
+    from service.api.routes import jobs as routes
     job_id = api.post("/v1/jobs", json=MIXED).json()["id"]
     wait_for(api, job_id, done)
     expected = S.sweep(MIXED)
@@ -681,7 +683,7 @@ def test_a_cancel_or_a_shutdown_frees_the_thread_of_a_long_point_at_once(tmp_pat
     """A point that would run for minutes is abandoned by a cancel (nothing stored for it) and by a
     shutdown (the job goes back to queued and computes that point again on resume)."""
     stuck = threading.Event()
-    real = jobs.solve_chunk
+    real = jobs_runner.solve_chunk
 
     def solve(header, pcols, rcols, items):
         if items[0][0] == 1:
@@ -690,7 +692,7 @@ def test_a_cancel_or_a_shutdown_frees_the_thread_of_a_long_point_at_once(tmp_pat
                 time.sleep(0.005)
         return real(header, pcols, rcols, items)
 
-    monkeypatch.setattr(jobs, "solve_chunk", solve)
+    monkeypatch.setattr(jobs_runner, "solve_chunk", solve)
     db = tmp_path / "jobs.sqlite3"
     runner = _runner(db, point_timeout=120, max_running=1)
     spec = {"analysis": "equilibrium", "grid": {"dx": [0.1, 0.2, 0.3]}}
