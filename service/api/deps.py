@@ -12,7 +12,7 @@ from fastapi import Depends, Request, Security
 from fastapi.security import APIKeyHeader
 
 from .. import schemas as s
-from ..adapters.fields import JOB_ATLAS_ALIASES, PLAN_ALIASES, SIMULATION_ALIASES, FieldContext
+from ..adapters.fields import BRANCH_ALIASES, JOB_ATLAS_ALIASES, PLAN_ALIASES, SIMULATION_ALIASES, FieldContext
 from ..adapters.inputs import manipulator_form, segment_count
 from ..config import Settings
 from ..jobs import JobNotFound, JobRunner, owner_hash
@@ -22,7 +22,7 @@ from .errors import ServiceError
 
 __all__ = ["api_key_header", "require_api_key", "api_key_valid", "get_settings_dep", "get_runner", "get_owner",
            "Runner", "Owner", "check_manipulator", "check_homotopy", "check_batch", "check_curve_size",
-           "check_path_points", "check_atlas_targets", "check_trajectory_steps", "check_plan", "check_simulation",
+           "check_path_points", "check_path", "check_atlas_targets", "check_trajectory_steps", "check_plan", "check_simulation",
            "steps_field", "path_deadline", "placement", "finished_atlas_job"]
 
 api_key_header = APIKeyHeader(
@@ -108,6 +108,14 @@ def check_path_points(max_points: int, settings: Settings) -> None:
                            f"max_points = {max_points}; this server follows at most {settings.max_path_points} "
                            "points per branch", field="max_points",
                            details={"max_points": max_points, "max_path_points": settings.max_path_points})
+
+
+def check_path(req: Any, settings: Settings, aliases: tuple[tuple[str, str], ...] = BRANCH_ALIASES) -> FieldContext:
+    """The limits of a continuation request (a branch, a bifurcation diagram, a limit load, a stability boundary,
+    their figures): its field context, with the library's names of its inputs (``aliases``)."""
+    ctx = replace(check_manipulator(req.manipulator, settings), aliases=aliases)
+    check_path_points(req.max_points, settings)
+    return ctx
 
 
 def _axis_size(v: Any) -> int:

@@ -21,12 +21,15 @@ router = APIRouter(prefix="/v1/design", tags=["design"])
 _INFEASIBLE = ("design_infeasible",)
 
 
-def _check_design_size(m: Any) -> None:
-    n = segment_count(m)
+async def _design(request: Request, task: Any, req: Any, settings: Settings) -> Any:
+    """A design request: the server's limits, the design endpoints' own, then ``task`` in a killable process."""
+    ctx = check_manipulator(req.manipulator, settings)
+    n = segment_count(req.manipulator)
     if n > s.MAX_DESIGN_SEGMENTS:
         raise ServiceError(422, "too_many_segments",
                            f"the design endpoints accept at most {s.MAX_DESIGN_SEGMENTS} segments (got {n})",
                            field="manipulator", details={"n": n, "max_segments": s.MAX_DESIGN_SEGMENTS})
+    return await run_task(request, task, req, fields=ctx, placement=Placement.KILLABLE)
 
 
 @router.post(
@@ -49,9 +52,7 @@ async def design_critical_force(
             "bounds": {"b": {"lo": 0.3, "hi": 3.0}}, "total_length": True}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = check_manipulator(req.manipulator, settings)
-    _check_design_size(req.manipulator)
-    return await run_task(request, design_critical_force_task, req, fields=ctx, placement=Placement.KILLABLE)
+    return await _design(request, design_critical_force_task, req, settings)
 
 
 @router.post(
@@ -68,9 +69,7 @@ async def design_preloads_for_load(
             "manipulator": ex.PAPER_CHAIN, "required": 0.7}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = check_manipulator(req.manipulator, settings)
-    _check_design_size(req.manipulator)
-    return await run_task(request, preloads_for_load_task, req, fields=ctx, placement=Placement.KILLABLE)
+    return await _design(request, preloads_for_load_task, req, settings)
 
 
 @router.post(
@@ -90,6 +89,4 @@ async def design_preloads(
             "objective": "nominal", "margin": 0.05}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = check_manipulator(req.manipulator, settings)
-    _check_design_size(req.manipulator)
-    return await run_task(request, preloads_task, req, fields=ctx, placement=Placement.KILLABLE)
+    return await _design(request, preloads_task, req, settings)

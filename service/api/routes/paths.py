@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request
@@ -13,7 +12,7 @@ from ...adapters.fields import BRANCH_ALIASES, LIMIT_LOAD_ALIASES
 from ...config import Settings
 from ...tasks.paths import (bifurcation_diagram_task, find_stability_boundary, limit_load_task,
                             rest_configurations_task, trace_branches)
-from ..deps import check_homotopy, check_manipulator, check_path_points, get_settings_dep, path_deadline, placement
+from ..deps import check_homotopy, check_manipulator, check_path, get_settings_dep, path_deadline, placement
 from ..dispatch import Placement, run_task
 from ..openapi import solve_responses
 
@@ -88,10 +87,7 @@ async def trace_branch(
             "control": {"kind": "displacement", "direction": [1.0, 0.0]}, "t_max": 1.0}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=BRANCH_ALIASES)
-    check_path_points(req.max_points, settings)
-    return await run_task(request, trace_branches, req, path_deadline(settings), fields=ctx,
-                          placement=Placement.HEAVY, size_field="max_points")
+    return await _follow(request, trace_branches, req, settings)
 
 
 @router.post(
@@ -112,10 +108,7 @@ async def bifurcation_diagram(
                              "t_min": -0.2, "depth": 1, "max_points": 200}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=BRANCH_ALIASES)
-    check_path_points(req.max_points, settings)
-    return await run_task(request, bifurcation_diagram_task, req, path_deadline(settings), fields=ctx,
-                          placement=Placement.HEAVY, size_field="max_points")
+    return await _follow(request, bifurcation_diagram_task, req, settings)
 
 
 @router.post(
@@ -141,10 +134,7 @@ async def limit_load(
             "direction": [-1.0, 0.0], "boundary": "free", "max_load": 0.2, "include_branch": True}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=LIMIT_LOAD_ALIASES)
-    check_path_points(req.max_points, settings)
-    return await run_task(request, limit_load_task, req, path_deadline(settings), fields=ctx,
-                          placement=Placement.HEAVY, size_field="max_points")
+    return await _follow(request, limit_load_task, req, settings, LIMIT_LOAD_ALIASES)
 
 
 @router.post(
@@ -163,8 +153,12 @@ async def stability_boundary(
             "max_points": 400}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Any:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=BRANCH_ALIASES)
-    check_path_points(req.max_points, settings)
-    return await run_task(request, find_stability_boundary, req, path_deadline(settings), fields=ctx,
-                          placement=Placement.HEAVY, size_field="max_points")
+    return await _follow(request, find_stability_boundary, req, settings)
 
+
+async def _follow(request: Request, task: Any, req: Any, settings: Settings,
+                  aliases: tuple[tuple[str, str], ...] = BRANCH_ALIASES) -> Any:
+    """A continuation request: its limits, then ``task`` in the heavy solver threads within the soft deadline."""
+    ctx = check_path(req, settings, aliases)
+    return await run_task(request, task, req, path_deadline(settings), fields=ctx, placement=Placement.HEAVY,
+                          size_field="max_points")

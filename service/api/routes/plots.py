@@ -11,7 +11,6 @@ Drawing uses :mod:`tensegrity_opt.applications.plots` (matplotlib objects only, 
 from __future__ import annotations
 
 import copy
-from dataclasses import replace
 from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Depends, Request
@@ -19,7 +18,7 @@ from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response
 
 from ... import examples as ex
-from ...adapters.fields import BRANCH_ALIASES, LIMIT_LOAD_ALIASES, FieldContext
+from ...adapters.fields import LIMIT_LOAD_ALIASES, FieldContext
 from ...adapters.inputs import build_manipulator, build_segment, values
 from ...config import Settings
 from ...schemas import ErrorOut
@@ -28,8 +27,8 @@ from ...schemas.atlas import ATLAS_REQUEST_EXAMPLE
 from ...schemas.control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE
 from ...tasks.control import find_plan, find_simulation
 from ...tasks.paths import find_atlas, find_job_atlas, find_limit_load, find_stability_boundary, trace_branches
-from ..deps import (Owner, Runner, check_atlas_targets, check_homotopy, check_manipulator, check_path_points,
-                    check_plan, check_simulation, finished_atlas_job, get_settings_dep, path_deadline, placement)
+from ..deps import (Owner, Runner, check_atlas_targets, check_homotopy, check_manipulator, check_path, check_plan,
+                    check_simulation, finished_atlas_job, get_settings_dep, path_deadline, placement)
 from ..dispatch import Placement, run_task
 from ..openapi import ATLAS_LIMITS, PLAN_LIMITS, SIMULATION_LIMITS, SOLVE_ERRORS, error_responses
 
@@ -354,8 +353,7 @@ async def plot_branch(
             "depth": 1, "max_points": 200, "x": "q1", "y": "t", "format": "svg"}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Response:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=BRANCH_ALIASES)
-    check_path_points(req.max_points, settings)
+    ctx = check_path(req, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
     return _reply(await run_task(request, plot_branch_task, req, fmt, path_deadline(settings), fields=ctx,
                                  placement=Placement.HEAVY),
@@ -376,8 +374,7 @@ async def plot_limit_load(
             "manipulator": ex.PAPER_CHAIN, "direction": [-1.0, 0.0], "boundary": "guided", "start": _STRAIGHT}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Response:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=LIMIT_LOAD_ALIASES)
-    check_path_points(req.max_points, settings)
+    ctx = check_path(req, settings, LIMIT_LOAD_ALIASES)
     fmt = negotiate(req.format, request.headers.get("accept"))
     return _reply(await run_task(request, plot_limit_load_task, req, fmt, path_deadline(settings), fields=ctx,
                                  placement=Placement.HEAVY), fmt, "limit-load")
@@ -397,8 +394,7 @@ async def plot_boundary(
             "p_max": 0.1}}})],
     settings: Annotated[Settings, Depends(get_settings_dep)],
 ) -> Response:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=BRANCH_ALIASES)
-    check_path_points(req.max_points, settings)
+    ctx = check_path(req, settings)
     fmt = negotiate(req.format, request.headers.get("accept"))
     return _reply(await run_task(request, plot_boundary_task, req, fmt, path_deadline(settings), fields=ctx,
                                  placement=Placement.HEAVY),
