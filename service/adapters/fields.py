@@ -41,7 +41,8 @@ BRANCH_ALIASES = (("q0", "start.q"), ("dx", "start.dx"), ("dy", "start.dy"), ("d
 LIMIT_LOAD_ALIASES = (("q0", "start.q"),)
 #: The atlas of a job (the inputs are the job's stored spec and rows).
 JOB_ATLAS_ALIASES = (("analysis", "spec.analysis"), ("grid", "spec.grid"), ("dx", "spec.grid.dx"),
-                     ("dy", "spec.grid.dy"), ("targets", "spec.grid"), ("rows", "id"), ("method", "spec.options.method"))
+                     ("dy", "spec.grid.dy"), ("targets", "spec.grid"), ("rows", "id"),
+                     ("method", "spec.options.method"))
 #: Rest-length plans and simulations: the start is given as ``{"q": [...]}``.
 PLAN_ALIASES = (("start", "start.q"), ("q0", "start.q"))
 SIMULATION_ALIASES = PLAN_ALIASES

@@ -22,7 +22,8 @@ from .errors import ServiceError
 
 __all__ = ["api_key_header", "require_api_key", "api_key_valid", "get_settings_dep", "get_runner", "get_owner",
            "Runner", "Owner", "check_manipulator", "check_homotopy", "check_batch", "check_curve_size",
-           "check_path_points", "check_path", "check_atlas_targets", "check_trajectory_steps", "check_plan", "check_simulation",
+           "check_path_points", "check_path", "check_atlas_targets", "check_trajectory_steps", "check_plan",
+           "check_simulation",
            "steps_field", "path_deadline", "placement", "finished_atlas_job"]
 
 api_key_header = APIKeyHeader(

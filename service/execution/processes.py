@@ -187,6 +187,9 @@ class ProcessExecutor(Executor):
             self._lost(c)
             return
         assert c.transport is not None
+        if self._closing:                               # shut down while connecting
+            c.transport.close()
+            return
         c.transport.write(encode(WARMUP, (self.warmup, (), None)))
 
     async def wait_ready(self, timeout: float) -> bool:

@@ -1,18 +1,13 @@
 """The executors of one server, as its settings say, started and stopped together.
 
-============================  =====================================================  ==============================
-executor                      runs                                                   settings
-============================  =====================================================  ==============================
-``threads``                   every request that is not sent elsewhere; ``heavy``    ``TENSEGRITY_WORKERS``,
-(:class:`ThreadExecutor`)     request classes hold at most ``heavy_threads``          ``QUEUE_SIZE``, ``HEAVY_THREADS``
-``fast``                      the bounded first try of a short request (the          ``TENSEGRITY_INLINE_PROCESSES``,
-(:class:`ProcessExecutor`)    Newton-only equilibrium search): a miss or a failure   ``INLINE_MAX_SEGMENTS``
-                              goes to ``threads``
-``killable``                  the requests whose first call may be an uncuttable     ``TENSEGRITY_HEAVY_WORKERS``,
-(:class:`ProcessExecutor`)    build (design, plans, stiffness shaping)               ``HEAVY_QUEUE_SIZE``, ``HEAVY_GRACE``
-``streams``                   one thread per open control stream                     ``MAX_STREAM_CONNECTIONS``
-(:class:`StreamSlots`)
-============================  =====================================================  ==============================
+* ``threads`` (:class:`ThreadExecutor`; ``TENSEGRITY_WORKERS``, ``QUEUE_SIZE``, ``HEAVY_THREADS``): every request
+  that is not sent elsewhere; the ``heavy`` request classes hold at most ``heavy_threads`` of them;
+* ``fast`` (:class:`ProcessExecutor`; ``TENSEGRITY_INLINE_PROCESSES``, ``INLINE_MAX_SEGMENTS``): the bounded first
+  try of a short request (the Newton-only equilibrium search), many calls outstanding per child; a miss or a
+  failure goes to ``threads``;
+* ``killable`` (:class:`ProcessExecutor`; ``TENSEGRITY_HEAVY_WORKERS``, ``HEAVY_QUEUE_SIZE``, ``HEAVY_GRACE``): the
+  requests whose first call may be an uncuttable build (design, plans, stiffness shaping), one call per child;
+* ``streams`` (:class:`StreamSlots`; ``TENSEGRITY_MAX_STREAM_CONNECTIONS``): one thread per open control stream.
 
 The job runner has threads of its own (:mod:`service.jobs.runner`), so sweeps never take the requests' capacity.
 """

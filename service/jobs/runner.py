@@ -303,7 +303,8 @@ class JobRunner:
         """Cancel a queued or running job (its finished points are kept). ``JobFinished`` when it ended.
 
         A job running here stops at once (its point in progress is abandoned); one running in another
-        server sharing the file stops at that server's next lease renewal (a third of ``TENSEGRITY_JOBS_LEASE_SECONDS``).
+        server sharing the file stops at that server's next lease renewal (a third of
+        ``TENSEGRITY_JOBS_LEASE_SECONDS``).
         """
         store = self._store()
         store.get(job_id, owner)                      # JobNotFound for someone else's job

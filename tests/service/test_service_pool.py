@@ -194,7 +194,8 @@ def test_a_thread_waits_for_its_call_and_a_late_call_is_interrupted():
 
 
 def _stubborn() -> str:
-    """Swallows the first interrupt (as a finaliser run by the garbage collector in that thread would), then works on."""
+    """Swallows the first interrupt (as a finaliser run by the garbage collector in that thread would), then
+    works on."""
     try:
         busy(30.0)
     except BaseException:  # noqa: BLE001 - the point of the test
