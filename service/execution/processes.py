@@ -269,6 +269,8 @@ class ProcessExecutor(Executor):
         if child is None:
             child = await self._acquire(loop, deadline, timeout)
             child.reserved -= 1
+            if child not in self._children:             # it stopped between the hand-over and now
+                raise Unavailable(f"the {self.label} stopped")
             left = max(deadline - time.monotonic(), 0.0)
         fut: asyncio.Future[Any] = loop.create_future()
         child.calls[call_id] = fut

@@ -83,8 +83,12 @@ def test_only_requests_the_bounded_search_may_settle_are_sent_to_the_solver_proc
         assert lane.completed == before, body["manipulator"]
 
 
-@pytest.mark.parametrize("body", [*BODIES, BISTABLE, LONG], ids=lambda b: f"n{b['manipulator'].get('n')}-"
-                         f"dx{b['dx']}-dy{b.get('dy', 0)}-{'local' if b.get('local') else 'q0' if 'q0' in b else 'search'}")
+def _case(b: dict) -> str:
+    how = "local" if b.get("local") else "q0" if "q0" in b else "search"
+    return f"n{b['manipulator'].get('n')}-dx{b['dx']}-dy{b.get('dy', 0)}-{how}"
+
+
+@pytest.mark.parametrize("body", [*BODIES, BISTABLE, LONG], ids=_case)
 def test_the_response_schema_is_the_contract_of_every_path(clients, body):
     """The body of the solver process (rendered there, no response-model pass) validates against
     ``EquilibriumOut`` and is byte for byte what the solver threads send for the same request,
