@@ -36,7 +36,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         import uvicorn
 
         from .config import Settings
-        from .http import uvicorn_options
+        from .api.connections import uvicorn_options
         from .main import create_app
     except ImportError as exc:
         return _missing_extra(exc)
@@ -45,8 +45,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     except ValueError as exc:
         print(f"tensegrity-opt: error: invalid TENSEGRITY_* setting: {exc}", file=sys.stderr)
         return 2
-    # One process: the solver pool inside it supplies the parallelism (see service/pool.py).
-    # Connection limits (request timeout, connection cap, keep-alive, concurrency): service/http.py.
+    # One process: its executors (solver threads and processes) supply the parallelism (service/execution/).
+    # Connection limits (request timeout, connection cap, keep-alive, concurrency): service/api/connections.py.
     uvicorn.run(create_app(settings), host=args.host, port=args.port, log_level=args.log_level,
                 access_log=not args.no_access_log, workers=1,
                 timeout_graceful_shutdown=settings.shutdown_timeout, **uvicorn_options(settings))

@@ -8,11 +8,11 @@ variable                               default    meaning
 ``TENSEGRITY_MAX_SEGMENTS``            200        largest chain accepted (``too_many_segments`` above)
 ``TENSEGRITY_MAX_BATCH``               1000       most targets in one ``/v1/batch/equilibrium``
 ``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may run (504; its computation is stopped)
-``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (``too_many_segments`` on ``method``)
+``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (``too_many_segments``)
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_MAX_PATH_POINTS``         5000       most points of one branch (``max_points`` of the path endpoints)
 ``TENSEGRITY_MAX_ATLAS_TARGETS``       400        most targets of ``/v1/atlas`` (``atlas_too_large`` above: a job)
-``TENSEGRITY_MAX_TRAJECTORY_STEPS``    2000       most steps of ``/v1/control/plan`` and ``/v1/control/simulate`` (``too_many_steps``)
+``TENSEGRITY_MAX_TRAJECTORY_STEPS``    2000       most steps of ``/v1/control/plan``, ``/v1/control/simulate``
 ``TENSEGRITY_WORKERS``                 2          solver threads (each owns its CasADi instances)
 ``TENSEGRITY_INLINE_MAX_SEGMENTS``     8          short monotonic chains: bounded Newton-only search first
 ``TENSEGRITY_INLINE_PROCESSES``        1          solver processes for that search (0: none, the solver threads)
@@ -53,7 +53,7 @@ variable                               default    meaning
 (auto): ``MAX_CONNECTIONS`` is the process's descriptor limit (``RLIMIT_NOFILE``) minus 64 for the
 server's own files, at most 1024; ``LIMIT_CONCURRENCY`` that plus 8 (the cap, which makes room by closing
 idle or half-sent connections, decides first). The request timeout and the
-connection cap are enforced by ``tensegrity-opt serve`` (:mod:`service.http`); an app started by a
+connection cap are enforced by ``tensegrity-opt serve`` (:mod:`service.api.connections`); an app started by a
 bare ``uvicorn service.main:app`` has only what uvicorn's own options give.
 """
 
@@ -129,8 +129,8 @@ class Settings(BaseSettings):
                     "0: always the workers")
     inline_processes: int = Field(
         1, ge=0, le=64,
-        description="solver processes for that bounded search (service.lane): the event loop hands the request "
-                    "over and goes on with HTTP meanwhile; while none is ready the workers solve it. 0: no "
+        description="solver processes for that bounded search (service.execution): the event loop hands the "
+                    "request over and goes on with HTTP meanwhile; while none is ready the workers solve it. 0: no "
                     "process, the workers solve every request")
     queue_size: int = Field(64, ge=0, le=100000, description="requests waiting for a worker before 503")
     heavy_threads: int | None = Field(
@@ -142,11 +142,12 @@ class Settings(BaseSettings):
                                 description="curves/equilibria requests on longer chains count as heavy")
     heavy_workers: int = Field(
         1, ge=0, le=64,
-        description="solver processes for the design endpoints (service.heavy): killed at the deadline when a "
-                    "solve cannot stop by itself, so a 504 frees its capacity; these requests never hold a "
-                    "solver thread. 0: design requests run in the solver threads")
+        description="killable solver processes for the design endpoints (service.execution): killed after the "
+                    "deadline when a solve cannot stop by itself, so a 504 frees its capacity; these requests never "
+                    "hold a solver thread. 0: design requests run in the solver threads")
     heavy_queue_size: int = Field(4, ge=0, le=10000, description="design requests waiting for a process before 503")
-    heavy_grace: float = Field(0.5, ge=0, le=60, description="seconds after a design 504 before a busy process is killed")
+    heavy_grace: float = Field(0.5, ge=0, le=60,
+                               description="seconds after a design 504 before a busy process is killed")
     request_timeout: float = Field(10.0, gt=0, le=3600,
                                    description="seconds to receive a whole request (408 / connection closed)")
     max_connections: int | None = Field(None, ge=1, le=1_000_000,

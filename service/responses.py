@@ -1,10 +1,10 @@
 """JSON bodies: the one renderer of every JSON answer, and the response class that uses it.
 
 Solver results are rendered where they were computed, in the solver thread or the solver process,
-by :func:`render_task` (:func:`render_json_bounded`; never on the event loop): piece by piece, so the GIL changes hands between pieces and the loop keeps
-answering (one ``json.dumps`` of a 40 MB body held it ~0.5 s), and counted as it goes, so a
-body over the server's ``max_response_bytes`` is refused (:class:`ResponseTooLarge`) as soon as
-the limit is crossed instead of after the whole body is built.
+by :func:`render_task` (:func:`render_json_bounded`; never on the event loop): piece by piece, so the GIL
+changes hands between pieces and the loop keeps answering (one ``json.dumps`` of a 40 MB body held it
+~0.5 s), and counted as it goes, so a body over the server's ``max_response_bytes`` is refused
+(:class:`ResponseTooLarge`) as soon as the limit is crossed instead of after the whole body is built.
 """
 
 from __future__ import annotations
@@ -17,8 +17,8 @@ from typing import Any
 import numpy as np
 from starlette.responses import JSONResponse
 
-__all__ = ["render_json", "render_json_bounded", "render_task", "JSONBody", "json_safe", "SafeJSONResponse",
-           "ResponseTooLarge"]
+__all__ = ["render_json", "render_json_bounded", "render_task", "json_ready", "JSONBody", "json_safe",
+           "SafeJSONResponse", "ResponseTooLarge"]
 
 
 class ResponseTooLarge(ValueError):
@@ -125,15 +125,21 @@ class JSONBody(bytes):
 
 
 def render_task(fn: Callable[..., Any], args: tuple[Any, ...], limit: int, field: str | None = None) -> Any:
-    """``fn(*args)`` (a task of :mod:`service.compute` or a figure), its JSON-ready result rendered
-    here within ``limit`` bytes (:func:`render_json_bounded`: :class:`ResponseTooLarge` naming
-    ``field`` over it) as a :class:`JSONBody`. The one way a task's result becomes a body, wherever
-    the task runs (a solver thread, a solver process). ``None`` (a fast path that did not settle the
-    request) and bytes (a figure) are returned as they are."""
+    """``fn(*args)`` (a task of :mod:`service.tasks` or a figure), its result rendered here within ``limit``
+    bytes (:func:`render_json_bounded`: :class:`ResponseTooLarge` naming ``field`` over it) as a
+    :class:`JSONBody`: a library result by its own ``to_dict()`` (the one serialiser per result type), a dict
+    as it is. The one way a task's result becomes a body, wherever the task runs (a solver thread, a solver
+    process). ``None`` (a bounded first try that did not settle the request) and bytes (a figure) are returned
+    as they are."""
     result = fn(*args)
     if result is None or isinstance(result, bytes):
         return result
-    return JSONBody(render_json_bounded(result, limit, field))
+    return JSONBody(render_json_bounded(json_ready(result), limit, field))
+
+
+def json_ready(result: Any) -> Any:
+    """A task's result as the body's content: a library result by its ``to_dict()``, a dict as it is."""
+    return result if isinstance(result, dict) else result.to_dict()
 
 
 class SafeJSONResponse(JSONResponse):

@@ -14,15 +14,10 @@ the stream's events:
 * ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.PreloadController`; each step is
   ``PreloadController.step(target, load, end_angle)``.
 
-Every method here runs in the stream's solver thread (:class:`StreamSlots`), never on the event loop;
-:meth:`Session.step` returns the answer already rendered (``service.responses.render_json``). Library
-exceptions propagate unchanged (the route maps them through :mod:`service.errors`); a session keeps
-its state when a step raises.
-
-:class:`StreamSlots` bounds the streams of a server (``max_stream_connections``): each stream holds one
-slot for its lifetime, a one-thread :class:`service.pool.SolverPool` (the time limit, the cancel of a
-call past it), so a stream's steps run in order on one thread whose CasADi instances stay warm, and one
-slow stream never delays another (nor the REST requests, which have their own pool).
+Every function here runs in the stream's solver thread (:class:`service.execution.slots.StreamSlots`), never
+on the event loop; :func:`step_task` returns the answer already rendered (``service.responses.render_json``).
+Library exceptions propagate unchanged (the route maps them through :mod:`service.api.errors`); a session
+keeps its state when a step raises.
 """
 
 from __future__ import annotations
@@ -38,12 +33,10 @@ from tensegrity_opt.analyses.paths.continuation import Tracker
 from tensegrity_opt.serialize import number, numbers
 
 from . import schemas as s
-from .compute import build_manipulator
-from .pool import SolverPool
+from .adapters.inputs import build_manipulator
 from .responses import render_json
 
-__all__ = ["Session", "TrackSession", "PreloadsSession", "InverseSession", "open_session", "StreamSlots",
-           "step_task", "SESSIONS"]
+__all__ = ["Session", "TrackSession", "PreloadsSession", "InverseSession", "open_session", "step_task", "SESSIONS"]
 
 
 def _max_change(a: np.ndarray, b: np.ndarray) -> float:
@@ -132,44 +125,3 @@ def open_session(req: Any) -> tuple[Session, dict[str, Any]]:
 def step_task(session: Session, msg: Any, seq: int) -> bytes:
     """One step's ``result`` message, rendered (in the stream's thread)."""
     return render_json({"type": "result", "seq": seq, "mode": session.mode, **session.step(msg)})
-
-
-class StreamSlots:
-    """At most ``size`` streams at once, each holding one solver thread (a one-thread ``SolverPool``) for
-    its lifetime. Threads are made on demand and kept (their CasADi instances stay built); a free slot
-    is reused most-recent first. Used from the event loop only."""
-
-    def __init__(self, size: int) -> None:
-        self.size = size
-        self._all: list[SolverPool] = []
-        self._free: list[SolverPool] = []
-
-    @property
-    def in_use(self) -> int:
-        return len(self._all) - len(self._free)
-
-    def acquire(self) -> SolverPool | None:
-        """A slot, or ``None`` when ``size`` streams hold one. An idle thread first: a stream that closed
-        after a step past its time limit may have left its thread still finishing that call (a CasADi call
-        is not cut), and a new stream must not wait behind it."""
-        for i in range(len(self._free) - 1, -1, -1):
-            if self._free[i].in_flight == 0:
-                return self._free.pop(i)
-        if len(self._all) >= self.size:
-            return self._free.pop() if self._free else None
-        # one worker, one queued call: a call past its time limit may still be finishing when the next
-        # step arrives; that step waits behind it on the same thread (a stream's state is never used by
-        # two threads at once)
-        pool = SolverPool(1, 1, name=f"stream-{len(self._all)}")
-        pool.start()
-        self._all.append(pool)
-        return pool
-
-    def release(self, pool: SolverPool) -> None:
-        self._free.append(pool)
-
-    def shutdown(self, timeout: float = 0.5) -> None:
-        for pool in self._all:
-            pool.shutdown(wait=False)
-        for pool in self._all:
-            pool.shutdown(wait=True, timeout=timeout / max(len(self._all), 1))

@@ -27,7 +27,7 @@ class Limits(BaseModel):
     queue_size: int
     inline_max_segments: int
     inline_processes: int = Field(description="solver processes running the short chains' bounded search "
-                                              "(service.lane); 0: the solver threads run it")
+                                              "(service.execution); 0: the solver threads run it")
     max_body_bytes: int
     max_response_bytes: int = Field(description="largest JSON answer (422 response_too_large above)")
     max_curve_points: int

@@ -26,11 +26,11 @@ HERE = Path(__file__).resolve().parent
 
 
 def create_web_test_app():
-    """uvicorn factory: the service's app with the page (``service.routes.web``) registered."""
+    """uvicorn factory: the service's app with the page (``service.api.routes.web``) registered."""
     from starlette.routing import NoMatchFound
 
     from service.main import create_app
-    from service.routes import web
+    from service.api.routes import web
 
     app = create_app()
     try:

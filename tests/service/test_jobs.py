@@ -27,6 +27,8 @@ with warnings.catch_warnings():
     from fastapi.testclient import TestClient
 
 from service import jobs
+from service.jobs import runner as jobs_runner
+from service.jobs import store as jobs_store
 from service.config import Settings
 from service.main import create_app
 from servers import clean_env, free_port, stop, uvicorn_factory_command, wait_ready
@@ -86,14 +88,14 @@ def test_submit_poll_and_results_as_json_and_csv(api):
 
     expected = S.sweep(MIXED)
     full = api.get(f"/v1/jobs/{body['id']}").json()
-    assert full["columns"] == expected.columns and full["columns"][1:3] == ["dx", "n"]     # grid order kept
-    assert full["results"] == expected.rows and full["next_offset"] is None
+    assert full["columns"] == list(expected.columns) and full["columns"][1:3] == ["dx", "n"]     # grid order kept
+    assert full["results"] == list(expected.rows) and full["next_offset"] is None
     assert full["spec"] == S.validate_spec(MIXED)
     page = api.get(f"/v1/jobs/{body['id']}", params={"offset": 2, "limit": 3}).json()
     assert [r["index"] for r in page["results"]] == [2, 3, 4] and page["next_offset"] == 5
 
     res = api.get(f"/v1/jobs/{body['id']}/results").json()
-    assert res["complete"] and res["rows"] == expected.rows and res["columns"] == expected.columns
+    assert res["complete"] and res["rows"] == list(expected.rows) and res["columns"] == list(expected.columns)
     assert res["rows"][2]["error"].startswith("unreachable_target: ")
 
     as_csv = api.get(f"/v1/jobs/{body['id']}/results", params={"format": "csv"})
@@ -277,7 +279,7 @@ def test_a_job_on_a_dask_cluster_stores_the_serial_rows(tmp_path):
                 assert time.monotonic() < deadline
                 time.sleep(0.05)
             assert runner.get(job_id)["status"] == "done"
-            assert runner.rows(job_id) == S.sweep(MIXED).rows
+            assert runner.rows(job_id) == list(S.sweep(MIXED).rows)
         finally:
             runner.stop()
 
@@ -329,7 +331,7 @@ def test_sigkill_mid_job_loses_no_point_and_the_restart_resumes(tmp_path):
 
     proc, base = start_server(db, log)
     try:
-        deadline = time.monotonic() + 90
+        deadline = time.monotonic() + 600          # generous: ~150 points of ~0.4 s on a loaded machine
         while True:
             job = httpx.get(f"{base}/v1/jobs/{job_id}", params={"limit": 0}, timeout=30).json()
             if job["status"] in jobs.TERMINAL:
@@ -368,10 +370,10 @@ def _runner(db, **kw):
 
 
 def test_a_point_over_the_time_limit_is_a_timeout_row_and_the_job_goes_on(tmp_path, monkeypatch):
-    """Point 1 would run forever (a Python loop inside the solve): the watchdog cuts it at the limit, its row
+    """Point 1 would run forever (a Python loop inside the solve): it is interrupted at the limit, its row
     is the error ``timeout: ...`` and points 0 and 2 are computed as usual."""
     spec = {"analysis": "equilibrium", "grid": {"dx": [0.1, 0.2, 0.3]}}
-    real = jobs.solve_chunk
+    real = jobs_runner.solve_chunk
     stuck = []
 
     def solve(header, pcols, rcols, items):
@@ -381,7 +383,7 @@ def test_a_point_over_the_time_limit_is_a_timeout_row_and_the_job_goes_on(tmp_pa
                 time.sleep(0.005)
         return real(header, pcols, rcols, items)
 
-    monkeypatch.setattr(jobs, "solve_chunk", solve)
+    monkeypatch.setattr(jobs_runner, "solve_chunk", solve)
     runner = _runner(tmp_path / "jobs.sqlite3", point_timeout=0.3)
     try:
         job_id = runner.submit(spec)["id"]
@@ -437,7 +439,7 @@ def test_at_most_max_running_jobs_and_a_huge_job_does_not_hold_a_small_one(tmp_p
             progress.append(job["done"])
             runner.cancel(j)
         assert max(progress) > 0
-        assert runner.rows(small) == S.sweep(MIXED).rows
+        assert runner.rows(small) == list(S.sweep(MIXED).rows)
         assert runner.get(small)["runs"] == 1
     finally:
         runner.stop()
@@ -458,7 +460,7 @@ def test_jobs_belong_to_the_api_key_that_submitted_them(api):
         assert r.json() == {"code": "not_found", "message": f"no job with id {job_id!r}", "field": "id"}
     assert api.get(f"/v1/jobs/{job_id}").status_code == 401
     _wait(lambda: api.get(f"/v1/jobs/{job_id}", headers=one).json()["status"] == "done", 30)
-    assert api.get(f"/v1/jobs/{job_id}/results", headers=one).json()["rows"] == S.sweep(MIXED).rows
+    assert api.get(f"/v1/jobs/{job_id}/results", headers=one).json()["rows"] == list(S.sweep(MIXED).rows)
     with sqlite3.connect(api.db) as con:
         owners = dict(con.execute("SELECT id, owner FROM jobs"))
     assert owners == {job_id: jobs.owner_hash("key-one"), other: jobs.owner_hash("key-two")}
@@ -571,7 +573,7 @@ def test_every_storage_fault_is_503_jobs_unavailable(api, monkeypatch, fault):
     else:
         runner.store.close()
         runner.store._closed = False
-        monkeypatch.setattr(jobs, "_connect", lambda path: sqlite3.connect(
+        monkeypatch.setattr(jobs_store, "_connect", lambda path: sqlite3.connect(
             f"file:{path}?mode=ro", uri=True, timeout=1.0, isolation_level=None, check_same_thread=False))
     calls = [("POST", "/v1/jobs", MIXED), ("DELETE", f"/v1/jobs/{job_id}", None)]
     if fault != "read-only":                  # reading a read-only file works
@@ -588,15 +590,15 @@ def test_every_storage_fault_is_503_jobs_unavailable(api, monkeypatch, fault):
 
 @pytest.mark.parametrize("api", [{"jobs_results_max_limit": 4}], indirect=True)
 def test_results_are_paged_and_csv_is_streamed_in_batches(api, monkeypatch):
-    from service.routes import jobs as routes
+    from service.api.routes import jobs as routes
     job_id = api.post("/v1/jobs", json=MIXED).json()["id"]
     wait_for(api, job_id, done)
     expected = S.sweep(MIXED)
     first = api.get(f"/v1/jobs/{job_id}/results").json()          # default limit: min(1000, the maximum)
     assert (first["offset"], first["limit"], first["next_offset"], first["done"]) == (0, 4, 4, 6)
-    assert first["rows"] == expected.rows[:4]
+    assert first["rows"] == list(expected.rows[:4])
     last = api.get(f"/v1/jobs/{job_id}/results", params={"offset": first["next_offset"]}).json()
-    assert last["rows"] == expected.rows[4:] and last["next_offset"] is None
+    assert last["rows"] == list(expected.rows[4:]) and last["next_offset"] is None
     page = api.get(f"/v1/jobs/{job_id}/results", params={"offset": 1, "limit": 2}).json()
     assert [r["index"] for r in page["rows"]] == [1, 2] and page["next_offset"] == 3
     cut = api.get(f"/v1/jobs/{job_id}/results", params={"limit": 10_000, "offset": 1}).json()   # to the maximum
@@ -681,7 +683,7 @@ def test_a_cancel_or_a_shutdown_frees_the_thread_of_a_long_point_at_once(tmp_pat
     """A point that would run for minutes is abandoned by a cancel (nothing stored for it) and by a
     shutdown (the job goes back to queued and computes that point again on resume)."""
     stuck = threading.Event()
-    real = jobs.solve_chunk
+    real = jobs_runner.solve_chunk
 
     def solve(header, pcols, rcols, items):
         if items[0][0] == 1:
@@ -690,7 +692,7 @@ def test_a_cancel_or_a_shutdown_frees_the_thread_of_a_long_point_at_once(tmp_pat
                 time.sleep(0.005)
         return real(header, pcols, rcols, items)
 
-    monkeypatch.setattr(jobs, "solve_chunk", solve)
+    monkeypatch.setattr(jobs_runner, "solve_chunk", solve)
     db = tmp_path / "jobs.sqlite3"
     runner = _runner(db, point_timeout=120, max_running=1)
     spec = {"analysis": "equilibrium", "grid": {"dx": [0.1, 0.2, 0.3]}}

@@ -20,8 +20,10 @@ from tensegrity_opt.serialize import nullable, nullables, number, numbers
 pytest.importorskip("fastapi")
 
 import reference_serialisers as refs  # noqa: E402  (the pre-to_dict serialisers: the reference)
-from service import compute  # noqa: E402  (the service's tasks: they must give the same bodies)
 from service import schemas as s  # noqa: E402
+from service.responses import json_ready  # noqa: E402  (a task's result as its body's content)
+from service.tasks import control as control_tasks  # noqa: E402  (the service's tasks: the same bodies)
+from service.tasks import equilibria as compute  # noqa: E402
 
 
 def _family(name: str, rng: np.random.Generator) -> tuple[to.Manipulator, float, float]:
@@ -70,6 +72,11 @@ def _req(model, m: to.Manipulator, **fields):
     return model.model_validate({"manipulator": m.to_dict(), **fields})
 
 
+def _body(task, *args):
+    """The content of the service's body for ``task(*args)`` (what :func:`service.responses.render_task` renders)."""
+    return json_ready(task(*args))
+
+
 def _or_error(f):
     try:
         return f()
@@ -95,15 +102,15 @@ def test_to_dict_equals_the_service_serialiser(family, seed):
 
     eqs = to.find_equilibria(m, dx, dy)
     _same(eqs.to_dict(), refs.equilibria_out(eqs))
-    _same(eqs.to_dict(), compute.equilibria_task(_req(s.EquilibriaRequest, m, dx=dx, dy=dy)))
+    _same(eqs.to_dict(), _body(compute.equilibria_task, _req(s.EquilibriaRequest, m, dx=dx, dy=dy)))
 
     K = to.cartesian_stiffness(m, eq)
     _same({"matrix": numbers(K), "equilibrium": eq.to_dict()},
-          compute.stiffness_task(_req(s.StiffnessRequest, m, dx=dx, dy=dy)))
+          _body(compute.stiffness_task, _req(s.StiffnessRequest, m, dx=dx, dy=dy)))
 
     for boundary in ("guided", "free"):
         bk = _or_error(lambda b=boundary: to.critical_force(m, b))
-        ref = _or_error(lambda b=boundary: compute.buckling_task(_req(s.BucklingRequest, m, boundary=b)))
+        ref = _or_error(lambda b=boundary: _body(compute.buckling_task, _req(s.BucklingRequest, m, boundary=b)))
         if isinstance(bk, type):
             assert ref is bk        # the same refusal (asymmetric preloads: straight is not an equilibrium)
             continue
@@ -115,7 +122,8 @@ def test_to_dict_equals_the_service_serialiser(family, seed):
     grid = np.linspace(0.0 if dy == 0 else dx, 2 * dx, 5)      # dx = 0 is out of reach when dy != 0
     for branch in ("stable", "all"):
         c = to.force_deflection(m, grid, dy, branch=branch)
-        ref = compute.force_deflection_task(_req(s.ForceDeflectionRequest, m, dx=grid.tolist(), dy=dy, branch=branch))
+        ref = _body(compute.force_deflection_task,
+                    _req(s.ForceDeflectionRequest, m, dx=grid.tolist(), dy=dy, branch=branch))
         _same(c.to_dict(), ref)
         _same(c.to_dict(), refs.curve_out(c))
         for j, ref_j in zip(c.jumps, ref["jumps"], strict=True):
@@ -127,7 +135,7 @@ def test_landscape_to_dict_equals_the_service_serialiser(family):
     m, dx, dy = _family(family, np.random.default_rng(3))
     m = to.Manipulator((list(m.segments) * 4)[:4])      # the landscape needs n = 4
     land = to.energy_landscape(m, dx, dy, pair=(0, 3), grid=9)
-    ref = compute.energy_landscape_task(_req(s.EnergyLandscapeRequest, m, dx=dx, dy=dy, pair=[0, 3], grid=9))
+    ref = _body(compute.energy_landscape_task, _req(s.EnergyLandscapeRequest, m, dx=dx, dy=dy, pair=[0, 3], grid=9))
     _same(land.to_dict(), ref)
     _same(land.to_dict(), refs.landscape_out(land))
     assert any(v is None for plane in ref["energy"] for row in plane for v in row)   # cells outside: null
@@ -137,13 +145,13 @@ def test_design_to_dict_equals_the_service_serialiser():
     m = to.Manipulator.uniform(4)
     d = to.maximize_critical_force(m, vary=("k",), bounds={"k": (0.5, 2.0)}, budget={"k": 4.0})
     _same(d.to_dict(), refs.design_out(d))
-    _same(d.to_dict(), compute.design_critical_force_task(_req(
+    _same(d.to_dict(), _body(control_tasks.design_critical_force_task, _req(
         s.DesignCriticalForceRequest, m, vary=["k"], bounds={"k": {"lo": 0.5, "hi": 2.0}}, budget={"k": 4.0})))
     pl = to.preloads_for_critical_force(m, 0.8)
-    _same(pl.to_dict(), compute.preloads_for_load_task(_req(s.PreloadsForLoadRequest, m, required=0.8)))
+    _same(pl.to_dict(), _body(control_tasks.preloads_for_load_task, _req(s.PreloadsForLoadRequest, m, required=0.8)))
     p = to.preloads_for_pose(m, (7.5, 0.5), load=(0.0, 0.0), objective="energy")
     _same(p.to_dict(), refs.preload_design_out(p))
-    _same(p.to_dict(), compute.preloads_task(_req(s.PreloadsRequest, m, target={"x": 7.5, "y": 0.5},
+    _same(p.to_dict(), _body(control_tasks.preloads_task, _req(s.PreloadsRequest, m, target={"x": 7.5, "y": 0.5},
                                                  objective="energy")))
     # nullable: a starting design without a critical force
     import dataclasses
@@ -178,7 +186,7 @@ def test_nan_policy():
 
 
 def test_a_non_finite_result_is_a_500_numerical_failure():
-    from service.errors import to_api_error
+    from service.api.errors import to_api_error
 
     err = to_api_error(NonFiniteResult("x"))
     assert err is not None and err.status_code == 500 and err.body["code"] == "numerical_failure"
@@ -252,7 +260,7 @@ def test_the_other_service_bodies_are_to_dict_too():
     # the uniform request form builds the same chain as Manipulator.from_dict of it
     assert to.Manipulator.from_dict({"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}) == m
     feq = to.solve_equilibrium_under_force(m, -0.3, 0.02)
-    _same(feq.to_dict(), compute.force_equilibrium_task(_req(s.ForceEquilibriumRequest, m, fx=-0.3, fy=0.02)))
+    _same(feq.to_dict(), _body(compute.force_equilibrium_task, _req(s.ForceEquilibriumRequest, m, fx=-0.3, fy=0.02)))
     targets = [{"dx": 0.1 * i, "dy": 0.0} for i in range(4)]
     batch = compute.batch_task(_req(s.BatchEquilibriumRequest, m, targets=targets), math.inf, "segments")
     solved = to.solve_equilibria_batch(m, [(0.1 * i, 0.0) for i in range(4)])

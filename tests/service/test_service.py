@@ -501,7 +501,7 @@ def test_timeout_504_and_recovery():
         # n = 150 takes seconds (building the solvers alone takes longer than the limit)
         r = c.post("/v1/equilibria", json={"manipulator": {"n": 150}, "dx": 0.1})
         check_error(r, 504, "timeout")
-        pool = c.app.state.pool
+        pool = c.app.state.executors.threads
         deadline = time.monotonic() + 10
         while pool.in_flight and time.monotonic() < deadline:
             time.sleep(0.01)
@@ -513,7 +513,7 @@ def test_timeout_504_and_recovery():
 
 def test_saturated_pool_503():
     with make_client(workers=1, queue_size=0, retry_after=3, inline_max_segments=0) as c:
-        pool = c.app.state.pool
+        pool = c.app.state.executors.threads
         gate = threading.Event()
         job = pool.submit(gate.wait, 10)      # occupies the only worker
         try:
@@ -605,7 +605,7 @@ def test_response_size_limit_is_counted_while_rendering():
 
 
 def test_json_answers_are_rendered_in_the_solver_thread(monkeypatch):
-    import service.responses as deps        # render_task, the renderer the dispatcher hands to the pool
+    import service.responses as deps        # render_task, the renderer the dispatcher hands to the threads
 
     threads = []
     real = deps.render_json_bounded
@@ -786,13 +786,13 @@ def test_inline_fast_path_answers_like_the_workers():
               {"manipulator": PAPER, "dx": 0.2, "dy": 0.05, "q0": [0.17, -0.07, -0.24, -0.13]},
               {"manipulator": bistable, "dx": 0.3, "dy": 0.1}]
     with make_client() as fast, make_client(inline_max_segments=0) as workers:
-        assert fast.portal.call(fast.app.state.lanes[0].wait_ready, 120.0)   # else the workers solve everything
+        assert fast.portal.call(fast.app.state.executors.fast.wait_ready, 120.0)   # else the workers solve all
         submitted = []
-        pool = fast.app.state.pool
+        pool = fast.app.state.executors.threads
         original = pool.submit
 
         def counting(fn, *args, **kwargs):        # kwargs: heavy=
-            submitted.append(args[1][0])        # render_task(task, (request, ...), limit, field)
+            submitted.append(args[1][0])        # render_task(task, (chain key, dx, dy, q0, local), limit, field)
             return original(fn, *args, **kwargs)
 
         pool.submit = counting
@@ -801,7 +801,7 @@ def test_inline_fast_path_answers_like_the_workers():
             assert a.status_code == b.status_code == 200, (a.text, b.text)
             # the fast path renders the body itself (no response-model pass): the same bytes
             assert a.content == b.content and a.headers["content-type"] == b.headers["content-type"]
-        assert [r.manipulator.a for r in submitted] == [0.6]      # only the bistable chain used a worker
+        assert [key[2] for key in submitted] == [0.6]      # only the bistable chain (a = 0.6) used a worker
 
 
 def test_local_equilibrium_follows_the_branch_through_q0(client):

@@ -313,16 +313,16 @@ def test_the_plan_process_carries_large_calls_and_replies_on_uvloop():
     plan of many targets (the call) or its figure (the reply) over the socket buffer once failed half-way
     (``BlockingIOError``: 503 ``overloaded``). Both ways, 3 MB."""
     uvloop = pytest.importorskip("uvloop")
-    from service.heavy import ProcessLane
+    from service.execution import ProcessExecutor
 
     async def main():
-        lane = ProcessLane(1, 2)
+        lane = ProcessExecutor(1, queue_size=2)
         lane.start()
         try:
             assert len(await lane.run(bytes, 3_000_000, timeout=60)) == 3_000_000
             assert await lane.run(len, b"x" * 3_000_000, timeout=60) == 3_000_000
         finally:
-            lane.close()
+            lane.shutdown()
 
     uvloop.run(main())
 

@@ -134,7 +134,7 @@ def test_a_design_solve_stops_itself_at_the_deadline_and_keeps_its_process():
     # n = 16 with every variable: the build takes ~0.2 s, the IPOPT solve ~3 s (cut at 1 s by the
     # library limit inside IPOPT): the process answers by itself, nothing is killed
     with TestClient(create_app(Settings(warmup=False, solve_timeout=1.0, heavy_grace=2.0))) as c:
-        heavy = c.app.state.heavy
+        heavy = c.app.state.executors.killable
         # the process has started (imported the library: it may take longer than 1 s) before the clock starts
         for _ in range(10):
             if c.post("/v1/design/critical-force", json={"manipulator": {"n": 3}, "vary": ["k"]}).status_code == 200:

@@ -1,4 +1,6 @@
-"""The solver pool: bounded queue, time limit, interruption of abandoned calls, one thread per call."""
+"""The executors: the solver threads (bounded queue, time limit, interruption of abandoned calls, one thread per
+call, the blocking wait of a thread) and the killable solver processes (the time limit inside the child, the
+exception with its type, the bounded queue, a stuck child killed after the grace and replaced)."""
 
 from __future__ import annotations
 
@@ -11,7 +13,9 @@ import pytest
 pytest.importorskip("fastapi")
 
 import tensegrity_opt as to
-from service.pool import PoolSaturated, SolverPool, SolveTimeout
+from service.execution import ProcessExecutor, Saturated, SolveTimeout, ThreadExecutor
+from service.execution import threads as threads_mod
+
 
 
 def busy(seconds: float) -> str:
@@ -22,7 +26,7 @@ def busy(seconds: float) -> str:
     return "done"
 
 
-def wait_idle(pool: SolverPool, timeout: float = 5.0) -> None:
+def wait_idle(pool: ThreadExecutor, timeout: float = 5.0) -> None:
     deadline = time.monotonic() + timeout
     while pool.in_flight and time.monotonic() < deadline:
         time.sleep(0.005)
@@ -30,7 +34,7 @@ def wait_idle(pool: SolverPool, timeout: float = 5.0) -> None:
 
 
 def test_run_result_and_exception():
-    pool = SolverPool(2, 2)
+    pool = ThreadExecutor(2, 2)
     try:
         assert asyncio.run(pool.run(lambda x: x * 2, 21, timeout=5)) == 42
         with pytest.raises(ZeroDivisionError):
@@ -41,12 +45,12 @@ def test_run_result_and_exception():
 
 
 def test_saturation_is_immediate():
-    pool = SolverPool(1, 1)
+    pool = ThreadExecutor(1, 1)
     gate = threading.Event()
     try:
         a = pool.submit(gate.wait, 5)
         b = pool.submit(gate.wait, 5)          # queued
-        with pytest.raises(PoolSaturated):
+        with pytest.raises(Saturated):
             pool.submit(gate.wait, 5)
         gate.set()
         a.future.result(5), b.future.result(5)
@@ -58,7 +62,7 @@ def test_saturation_is_immediate():
 
 
 def test_timeout_interrupts_running_call_and_frees_worker():
-    pool = SolverPool(1, 0)
+    pool = ThreadExecutor(1, 0)
     try:
         t0 = time.perf_counter()
         with pytest.raises(SolveTimeout):
@@ -72,7 +76,7 @@ def test_timeout_interrupts_running_call_and_frees_worker():
 
 
 def test_timeout_drops_queued_call():
-    pool = SolverPool(1, 1)
+    pool = ThreadExecutor(1, 1)
     gate = threading.Event()
     ran = []
     try:
@@ -95,7 +99,7 @@ def test_timeout_drops_queued_call():
 
 def test_no_stray_cancellation_hits_later_calls():
     """Timeouts racing with completion must never interrupt the next call of the worker."""
-    pool = SolverPool(2, 1000)
+    pool = ThreadExecutor(2, 1000)
 
     async def main():
         racing = [pool.run(busy, 0.0005 * (i % 7), timeout=0.0015) for i in range(300)]
@@ -114,7 +118,7 @@ def test_each_call_runs_on_one_worker_thread_with_its_own_solvers():
     """Library calls in the pool agree with the main thread's; each worker owns its CasADi model."""
     from tensegrity_opt.numerics import chain_functions
 
-    pool = SolverPool(2, 64)
+    pool = ThreadExecutor(2, 64)
     m = to.Manipulator.uniform(4)
     expected = to.solve_equilibrium(m, 0.1)
     seen: dict[int, int] = {}
@@ -140,7 +144,7 @@ def test_each_call_runs_on_one_worker_thread_with_its_own_solvers():
 
 
 def test_shutdown_cancels_queue():
-    pool = SolverPool(1, 5)
+    pool = ThreadExecutor(1, 5)
     gate = threading.Event()
     a = pool.submit(gate.wait, 5)
     queued = [pool.submit(lambda: 1) for _ in range(3)]
@@ -149,12 +153,12 @@ def test_shutdown_cancels_queue():
     assert a.future.done()
     for j in queued:
         assert j.future.done()
-    with pytest.raises(PoolSaturated):
+    with pytest.raises(Saturated):
         pool.submit(lambda: 1)
 
 
 def test_heavy_calls_hold_at_most_their_share_of_the_threads():
-    pool = SolverPool(2, 8)                   # heavy_limit: workers - 1 = 1
+    pool = ThreadExecutor(2, 8)                   # heavy_limit: workers - 1 = 1
     gate = threading.Event()
     try:
         heavy = [pool.submit(gate.wait, 5, heavy=True) for _ in range(3)]
@@ -170,3 +174,95 @@ def test_heavy_calls_hold_at_most_their_share_of_the_threads():
         gate.set()
         pool.shutdown()
 
+
+
+def test_a_thread_waits_for_its_call_and_a_late_call_is_interrupted():
+    """``wait`` (a thread's way to run, the job runner's): the result; past the timeout the call is interrupted at
+    its next bytecode (``SolveTimeout``) and the worker is free again."""
+    pool = ThreadExecutor(1, 0)
+    try:
+        assert pool.wait(pool.submit(busy, 0.001), 5) == "done"
+        call = pool.submit(busy, 30.0)
+        t0 = time.monotonic()
+        with pytest.raises(SolveTimeout):
+            pool.wait(call, 0.05)
+        assert time.monotonic() - t0 < 5.0
+        wait_idle(pool)
+        assert pool.wait(pool.submit(busy, 0.001), 5) == "done"
+    finally:
+        pool.shutdown()
+
+
+def _stubborn() -> str:
+    """Swallows the first interrupt (as a finaliser run by the garbage collector in that thread would), then
+    works on."""
+    try:
+        busy(30.0)
+    except BaseException:  # noqa: BLE001 - the point of the test
+        pass
+    return busy(30.0)
+
+
+def test_an_interrupt_swallowed_once_is_sent_again():
+    pool = ThreadExecutor(1, 0)
+    try:
+        t0 = time.monotonic()
+        with pytest.raises(SolveTimeout):
+            pool.wait(pool.submit(_stubborn), 0.05)
+        # the second busy(30) was interrupted too: by a repeat, REFIRE_SECONDS after the first interrupt
+        assert time.monotonic() - t0 < 10 * threads_mod.REFIRE_SECONDS + 5.0
+        wait_idle(pool)
+    finally:
+        pool.shutdown()
+
+
+# ---------------------------------------------------------------------------- killable processes
+def test_a_process_call_runs_under_its_time_limit_and_raises_with_its_type():
+    from tensegrity_opt.timelimit import remaining
+
+    async def main():
+        ex = ProcessExecutor(1, queue_size=2, grace=0.5)
+        ex.start()
+        try:
+            left = await ex.run(remaining, timeout=5.0)        # the library's limit is set in the child
+            assert 0.0 < left <= 5.0
+            with pytest.raises(to.InvalidParameterError) as err:    # the library's exception, fields included
+                await ex.run(to.Manipulator.uniform, 0, timeout=30.0)
+            assert err.value.field == "n"
+            assert await ex.run(pow, 2, 10, timeout=30.0) == 1024
+            assert ex.killed == 0 and ex.in_flight == 0
+        finally:
+            ex.shutdown()
+
+    asyncio.run(main())
+
+
+def test_a_stuck_process_is_killed_after_the_grace_and_its_queue_is_bounded():
+    """One child, one call waiting at most: a third call is refused (503); the stuck call answers 504 at its
+    deadline, its child is killed ``grace`` later and replaced, and the call that waited times out too (it never
+    got the child); the replacement answers."""
+
+    async def main():
+        ex = ProcessExecutor(1, queue_size=1, grace=0.3)
+        ex.start()
+        try:
+            assert await ex.wait_ready(60.0)
+            stuck = asyncio.ensure_future(ex.run(time.sleep, 30.0, timeout=0.5))
+            await asyncio.sleep(0.05)
+            waiting = asyncio.ensure_future(ex.run(pow, 2, 3, timeout=0.5))
+            await asyncio.sleep(0.05)
+            with pytest.raises(Saturated):
+                await ex.run(pow, 2, 4, timeout=5.0)
+            for fut in (stuck, waiting):
+                with pytest.raises(SolveTimeout):
+                    await fut
+            [old] = ex.pids
+            t0 = time.monotonic()
+            while old in ex.pids and time.monotonic() - t0 < 5.0:
+                await asyncio.sleep(0.02)
+            assert old not in ex.pids and ex.killed == 1 and ex.restarts == 1 and ex.in_flight == 0
+            assert await ex.run(pow, 2, 5, timeout=60.0) == 32          # the replacement, once it has started
+        finally:
+            ex.shutdown()
+
+    asyncio.run(main())

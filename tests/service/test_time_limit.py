@@ -64,7 +64,7 @@ def test_ipopt_wall_time_status_is_a_time_limit_error_not_a_result():
 
 
 def test_service_maps_time_limit_to_504_with_status():
-    from service.errors import error_body, status_for
+    from service.api.errors import error_body, status_for
 
     exc = to.TimeLimitError("stopped", status="User_Requested_Stop")
     assert status_for(exc) == 504

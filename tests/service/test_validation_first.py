@@ -11,7 +11,7 @@ import pytest
 from fastapi.testclient import TestClient
 
 import tensegrity_opt as to
-from service import compute
+from service.tasks import equilibria as compute
 from service.config import Settings
 from service.main import create_app
 from tensegrity_opt.errors import InvalidParameterError, UnreachableTargetError
@@ -70,7 +70,7 @@ def test_an_internal_numerical_failure_is_a_500(client, monkeypatch):
     def broken(req):
         raise np.linalg.LinAlgError("Matrix is not positive definite")
 
-    monkeypatch.setattr("service.routes.buckling.buckling_task", broken)
+    monkeypatch.setattr("service.api.routes.buckling.buckling_task", broken)
     r = client.post("/v1/buckling", json={"manipulator": PAPER})
     assert r.status_code == 500 and r.json()["code"] == "numerical_failure", r.text
     assert compute.buckling_task is not broken

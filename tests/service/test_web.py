@@ -23,7 +23,7 @@ from starlette.routing import NoMatchFound  # noqa: E402
 
 from service.config import Settings  # noqa: E402
 from service.main import create_app, openapi_document  # noqa: E402
-from service.routes import web  # noqa: E402
+from service.api.routes import web  # noqa: E402
 
 
 def _has_page(app) -> bool:
@@ -200,9 +200,8 @@ def test_error_codes_the_page_classifies_are_the_services():
     from service import examples as ex
 
     documented = {v["value"]["code"] for d in ex.ERRORS.values() for v in d.values() if "code" in v["value"]}
-    errors_py = (Path(__file__).resolve().parents[2] / "service" / "errors.py")
-    if errors_py.is_file():
-        documented |= set(re.findall(r"``(\w+)``", errors_py.read_text("utf-8")))
+    errors_py = (Path(__file__).resolve().parents[2] / "service" / "api" / "errors.py")
+    documented |= set(re.findall(r"``(\w+)``", errors_py.read_text("utf-8")))
     js = _asset("app.js")
     physical, refusals = _js_set(js, "PHYSICAL"), _js_set(js, "REFUSALS")
     assert physical == {"straight_unstable", "straight_not_equilibrium", "no_equilibrium"}

@@ -21,7 +21,8 @@ def free_port() -> int:
 def serve_command(port: int) -> list[str]:
     """``tensegrity-opt serve`` on ``port``, as ``python -m service serve`` (the console script's own
     code, :mod:`service.cli`, whatever the installed script points at)."""
-    return [sys.executable, "-m", "service", "serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log", "--log-level", "warning"]
+    return [sys.executable, "-m", "service", "serve", "--host", "127.0.0.1", "--port", str(port), "--no-access-log",
+            "--log-level", "warning"]
 
 
 def uvicorn_factory_command(factory: str, port: int, *extra: str) -> list[str]:

@@ -15,8 +15,8 @@ class Limits:
     Attributes:
         batch_timeout (float):
         inline_max_segments (int):
-        inline_processes (int): solver processes running the short chains' bounded search (service.lane); 0: the solver
-            threads run it
+        inline_processes (int): solver processes running the short chains' bounded search (service.execution); 0: the
+            solver threads run it
         max_atlas_targets (int): most targets of one /v1/atlas or /v1/plots/atlas (422 atlas_too_large; larger grids: a
             job with analysis atlas)
         max_batch (int):

@@ -1,0 +1,297 @@
+"""The one place where failures become HTTP answers.
+
+Every refusal has the body of :class:`service.schemas.ErrorOut`
+(``{"code", "message", "field", ...}``):
+
+=====================================================  ======  ==========================================
+failure                                                status  code
+=====================================================  ======  ==========================================
+request body violates the schema                       422     ``validation_error`` (+ ``errors`` list)
+library ``ValueError`` family (bad input, ill-posed)   422     the exception's ``code``: ``invalid_parameter``,
+                                                               ``unreachable_target``, ``straight_not_equilibrium``,
+                                                               ``straight_unstable``, ``unsupported``
+library ``SolverError`` / ``NoEquilibriumError``       422     ``solver_failed`` / ``no_equilibrium``, ``status``
+                                                               holds the solver (IPOPT) status
+numerical failure outside the library's own checks     500     ``numerical_failure`` (a server bug: logged with
+                                                               the traceback; the library validates its
+                                                               inputs first, so none is known)
+chain or batch over the configured limit               422     ``too_many_segments`` / ``batch_too_large``
+branch longer than the configured limit                422     ``too_many_points`` (``field``: ``max_points``)
+control trajectory over ``max_trajectory_steps``       422     ``too_many_steps`` (``field``: ``targets``, ``loads``,
+                                                               ``end_angles`` or ``preloads``)
+inline atlas over ``max_atlas_targets`` targets        422     ``atlas_too_large`` (``field``: ``dx``; a job then)
+atlas of a job that is not done                        409     ``job_not_done`` (``details.status``)
+answer over ``max_response_bytes`` (estimated before   422     ``response_too_large`` (``field``: the input
+solving where possible, else counted while rendering)          setting the size, ``details.max_response_bytes``)
+missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
+request body over ``max_body_bytes``                   413     ``body_too_large``
+solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
+``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``
+job store unusable (damaged, read-only, deleted ...)   503     ``jobs_unavailable`` (+ ``Retry-After``)
+solve time limit exceeded (also the library's          504     ``timeout``, ``status`` when the library
+``TimeLimitError``: IPOPT's ``max_wall_time``)                 stopped (``User_Requested_Stop``, ...)
+unknown path / method                                  404/405 ``not_found`` / ``method_not_allowed``
+=====================================================  ======  ==========================================
+
+Library fields (``"dx"``, ``"q0"``, ``"segments[2].L0"``, ``"n"`` ...) are rewritten into paths
+of the request (``"manipulator.segments[2].L0"``, ``"manipulator.n"``, ``"targets[3].dx"``) by the adapters
+(:mod:`service.adapters.fields`), with the field context the route gave its task
+(:func:`service.api.dispatch.run_task` maps a task's failure before it leaves the dispatcher).
+"""
+
+from __future__ import annotations
+
+import logging
+import re
+from typing import Any
+
+import numpy as np
+from fastapi import FastAPI, Request
+from fastapi.exceptions import RequestValidationError
+from starlette.exceptions import HTTPException as StarletteHTTPException
+from starlette.responses import JSONResponse
+
+from tensegrity_opt.errors import HomotopyUnavailableError, TensegrityError, TimeLimitError
+
+from ..adapters.fields import FieldContext
+from ..adapters.refusals import refusal_body
+from ..execution.executor import Saturated, SolveTimeout
+from ..jobs.store import JobsUnavailable
+from ..responses import ResponseTooLarge
+from .middleware import allowed_methods
+
+log = logging.getLogger("service.errors")
+
+__all__ = ["ApiError", "ServiceError", "error_body", "to_api_error", "status_for", "install", "error_response",
+           "validation_body"]
+
+
+class ServiceError(Exception):
+    """A refusal decided by the service itself (limits, auth, body size, pool, time)."""
+
+    def __init__(self, status_code: int, code: str, message: str, *, field: str | None = None,
+                 headers: dict[str, str] | None = None, details: dict[str, Any] | None = None) -> None:
+        super().__init__(message)
+        self.status_code = status_code
+        self.code = code
+        self.message = message
+        self.field = field
+        self.headers = headers
+        self.details = details
+
+
+def status_for(exc: BaseException) -> int:
+    if isinstance(exc, ServiceError):
+        return exc.status_code
+    if isinstance(exc, (Saturated, JobsUnavailable)):
+        return 503
+    if isinstance(exc, (SolveTimeout, TimeLimitError)):
+        return 504
+    if isinstance(exc, HomotopyUnavailableError):
+        return 503
+    return 422
+
+
+def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[str, Any] | None:
+    """``ErrorOut`` for an exception a solve may raise, or ``None`` when it is a server bug.
+
+    The service's own refusals here; the library's (their ``code``, the field as the request names it) and
+    numerical exceptions from numpy/scipy/CasADi (``numerical_failure``, answered with 500: see
+    :func:`to_api_error`) by :func:`service.adapters.refusals.refusal_body`.
+    """
+    if isinstance(exc, ServiceError):
+        out: dict[str, Any] = {"code": exc.code, "message": exc.message}
+        if exc.field:
+            out["field"] = exc.field
+        if exc.details:
+            out["details"] = exc.details
+        return out
+    if isinstance(exc, ResponseTooLarge):
+        out = {"code": "response_too_large", "message": str(exc),
+               "details": {"max_response_bytes": exc.limit,
+                           **({"estimated_bytes": exc.estimate} if exc.estimate is not None else {})}}
+        if exc.field:
+            out["field"] = exc.field
+        return out
+    if isinstance(exc, SolveTimeout):
+        return {"code": "timeout", "message": str(exc)}
+    if isinstance(exc, Saturated):
+        return {"code": "overloaded", "message": str(exc)}
+    if isinstance(exc, JobsUnavailable):
+        return {"code": "jobs_unavailable", "message": str(exc)}
+    return refusal_body(exc, ctx)
+
+
+def error_response(status_code: int, body: dict[str, Any], headers: dict[str, str] | None = None) -> JSONResponse:
+    return JSONResponse(status_code=status_code, content=body, headers=headers)
+
+
+def _loc_path(loc: tuple[Any, ...] | list[Any]) -> str:
+    parts = [p for p in loc if not (isinstance(p, str) and p.startswith("<") and p.endswith(">"))]
+    if parts and parts[0] == "body":
+        parts = parts[1:]
+    out = ""
+    for p in parts:
+        if isinstance(p, int):
+            out += f"[{p}]"
+        else:
+            out += ("." if out else "") + str(p)
+    return out or "body"
+
+
+#: The request fields giving a chain's length (a uniform chain's ``n``, a segment list, a job's ``n`` values).
+_CHAIN_LENGTH_FIELD = re.compile(r"(^|\.)manipulator\.(n|segments)$|^grid\.n\[\d+\]$|^points\[\d+\]\.n$")
+
+
+def segments_over_limit(errors: list[dict[str, Any]], max_segments: int | None) -> dict[str, Any] | None:
+    """``too_many_segments`` for a chain longer than the server accepts, whatever its length.
+
+    The schema caps a chain at its own maximum (``HARD_MAX_SEGMENTS``, 60 for the design endpoints);
+    a server set lower (``TENSEGRITY_MAX_SEGMENTS``) refuses the lengths between its setting and that
+    cap itself, naming its setting. Above the cap the schema's refusal named the cap, not the real
+    limit (n = 150 on a server set to 100: "at most 100"; n = 500: "<= 200"). When every schema error
+    is a chain length over a cap above ``max_segments``, the answer is the server's own
+    (``too_many_segments``, ``details: {n, max_segments}``); else ``None`` (the schema's error names
+    the limit that applies).
+    """
+    if not errors or max_segments is None:
+        return None
+    first = None
+    for e in errors:
+        field = _loc_path(e.get("loc", ()))
+        ctx = e.get("ctx") or {}
+        kind = e.get("type")
+        cap = ctx.get("le") if kind == "less_than_equal" else ctx.get("max_length") if kind == "too_long" else None
+        if cap is None or not _CHAIN_LENGTH_FIELD.search(field) or not float(cap) > max_segments:
+            return None
+        if first is None:
+            value = ctx.get("actual_length") if kind == "too_long" else e.get("input")
+            first = (field, value)
+    field, value = first
+    try:
+        n: Any = int(value) if float(value) == int(float(value)) else value
+    except (TypeError, ValueError, OverflowError):
+        n = value
+    # the words of the server's own check (deps.check_manipulator; a job's: prefixed by its field)
+    where = "" if field.startswith("manipulator.") else f"{field}: "
+    return {"code": "too_many_segments", "field": field,
+            "message": f"{where}the chain has {n} segments; this server accepts at most {max_segments}",
+            "details": {"n": n, "max_segments": max_segments}}
+
+
+def validation_body(errors: list[dict[str, Any]]) -> dict[str, Any]:
+    items = []
+    for e in errors:
+        kind = str(e.get("type", "value_error"))
+        if kind == "json_invalid":
+            reason = (e.get("ctx") or {}).get("error", "")
+            items.append({"field": "body", "message": f"invalid JSON: {reason}".rstrip(": "), "type": kind})
+            continue
+        items.append({"field": _loc_path(e.get("loc", ())), "message": str(e.get("msg", "invalid")), "type": kind})
+    if not items:
+        items = [{"field": "body", "message": "invalid request", "type": "value_error"}]
+    first = items[0]
+    more = f" (and {len(items) - 1} more)" if len(items) > 1 else ""
+    return {"code": "validation_error", "message": f"{first['field']}: {first['message']}{more}",
+            "field": first["field"], "errors": items}
+
+
+class ApiError(Exception):
+    """A fully decided HTTP refusal: status, ``ErrorOut`` body and headers."""
+
+    def __init__(self, status_code: int, body: dict[str, Any], headers: dict[str, str] | None = None) -> None:
+        super().__init__(body.get("message", ""))
+        self.status_code = status_code
+        self.body = body
+        self.headers = headers
+
+
+def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retry_after: int = 1) -> ApiError | None:
+    """The HTTP refusal for ``exc``, or ``None`` when it is a server bug (a 500)."""
+    if isinstance(exc, ApiError):
+        return exc
+    body = error_body(exc, ctx)
+    if body is None:
+        return None
+    # numpy/scipy/CasADi failed where the library did not refuse first: a bug to fix (500), not an answer
+    status = 500 if body["code"] == "numerical_failure" else status_for(exc)
+    headers = None
+    if isinstance(exc, ServiceError) and exc.headers:
+        headers = exc.headers
+    if status == 503:
+        headers = {**(headers or {}), "Retry-After": str(retry_after)}
+    return ApiError(status, body, headers)
+
+
+def _record_failure(request: Request, code: str) -> None:
+    metrics = getattr(request.app.state, "metrics", None)
+    if metrics is not None:
+        metrics.failure(code)
+
+
+#: Exceptions a solve may raise that are answers, not server bugs.
+ANSWERED = (ApiError, ServiceError, Saturated, SolveTimeout, JobsUnavailable, TensegrityError, ArithmeticError,
+            np.linalg.LinAlgError, ValueError, RuntimeError)
+
+
+def install(app: FastAPI) -> None:
+    """Register the exception handlers on ``app``."""
+
+    async def _validation(request: Request, exc: Exception) -> JSONResponse:
+        assert isinstance(exc, RequestValidationError)
+        errors = list(exc.errors())
+        settings = getattr(request.app.state, "settings", None)
+        over = segments_over_limit(errors, getattr(settings, "max_segments", None))
+        if over is not None:
+            _record_failure(request, "too_many_segments")
+            return error_response(422, over)
+        body = validation_body(errors)
+        _record_failure(request, "validation_error")
+        ctype = request.headers.get("content-type", "")
+        if body["field"] == "body" and "json" not in ctype.lower():
+            body["message"] += " (send the body as JSON with Content-Type: application/json)"
+        return error_response(422, body)
+
+    async def _answered(request: Request, exc: Exception) -> JSONResponse:
+        # a task's failure comes mapped already (an ApiError from service.api.dispatch, with the request's
+        # field names); what a route raised itself needs no field context
+        settings = getattr(request.app.state, "settings", None)
+        err = to_api_error(exc, retry_after=getattr(settings, "retry_after", 1))
+        if err is None:  # pragma: no cover - ANSWERED types always map
+            return await _other(request, exc)
+        _record_failure(request, err.body["code"])
+        if err.body["code"] == "numerical_failure":
+            # Not a library refusal: a bug (the input and the exception are in the log).
+            cause = exc.__cause__ if isinstance(exc, ApiError) and exc.__cause__ is not None else exc
+            log.error("numerical failure on %s %s: %s: %s", request.method, request.url.path,
+                      type(cause).__name__, cause, exc_info=cause)
+        return error_response(err.status_code, err.body, err.headers)
+
+    async def _http(request: Request, exc: Exception) -> JSONResponse:
+        assert isinstance(exc, StarletteHTTPException)
+        if exc.status_code == 400:
+            # FastAPI's "error parsing the body" (nesting too deep, integer too long...): a schema violation.
+            return error_response(422, {"code": "validation_error", "message": f"body: {exc.detail}",
+                                        "field": "body",
+                                        "errors": [{"field": "body", "message": str(exc.detail),
+                                                    "type": "body_parse_error"}]})
+        codes = {404: "not_found", 405: "method_not_allowed", 401: "unauthorized", 413: "body_too_large"}
+        code = codes.get(exc.status_code, "http_error")
+        headers = dict(exc.headers) if exc.headers else None
+        if exc.status_code == 405:
+            # Every method of the path, not just those of the first route routing found.
+            allow = allowed_methods(request.app.router.routes, request.scope)
+            headers = {**(headers or {}), "Allow": ", ".join(allow)}
+        return error_response(exc.status_code, {"code": code, "message": str(exc.detail)}, headers)
+
+    async def _other(request: Request, exc: Exception) -> JSONResponse:
+        log.error("unexpected error on %s %s", request.method, request.url.path, exc_info=exc)
+        _record_failure(request, "internal_error")
+        return error_response(500, {"code": "internal_error",
+                                    "message": f"unexpected server error ({type(exc).__name__})"})
+
+    app.add_exception_handler(RequestValidationError, _validation)
+    for cls in ANSWERED:
+        app.add_exception_handler(cls, _answered)
+    app.add_exception_handler(StarletteHTTPException, _http)
+    app.add_exception_handler(Exception, _other)

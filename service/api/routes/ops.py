@@ -1,0 +1,84 @@
+"""Operations: liveness, readiness, version and metrics (no API key needed)."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from fastapi import APIRouter, Request
+from starlette.responses import JSONResponse, Response
+
+import tensegrity_opt
+from tensegrity_opt.numerics import kernels
+
+from ... import schemas as s
+from ..metrics import CONTENT_TYPE_LATEST
+
+router = APIRouter(tags=["ops"])
+
+API_VERSION = "v1"
+METRICS_EXAMPLE = ("# HELP tensegrity_http_requests_total HTTP requests answered\n"
+                   "# TYPE tensegrity_http_requests_total counter\n")
+
+
+@router.get("/healthz", operation_id="healthz", response_model=s.Health, summary="Liveness: the process answers",
+            responses={200: {"description": "alive", "content": {"application/json": {"example": {"status": "ok"}}}}})
+async def healthz() -> Any:
+    return {"status": "ok"}
+
+
+@router.get(
+    "/readyz", operation_id="readyz", response_model=s.Ready,
+    summary="Readiness: the solver workers are started (and warmed up)",
+    responses={
+        200: {"description": "ready", "content": {"application/json": {"example": {
+            "status": "ready", "workers": 2, "queue_size": 64, "in_flight": 0}}}},
+        503: {"model": s.Ready, "description": "still starting", "content": {"application/json": {"example": {
+            "status": "starting", "workers": 2, "queue_size": 64, "in_flight": 0}}}}})
+async def readyz(request: Request) -> Any:
+    executors = request.app.state.executors
+    pool, heavy = executors.threads, executors.killable
+    ready = bool(getattr(request.app.state, "ready", False)) and pool.started
+    body = {"status": "ready" if ready else "starting", "workers": pool.workers, "queue_size": pool.queue_size,
+            "in_flight": pool.in_flight + (heavy.in_flight if heavy is not None else 0)}
+    return body if ready else JSONResponse(status_code=503, content=body)
+
+
+@router.get(
+    "/version", operation_id="version", response_model=s.VersionOut,
+    summary="Versions, the server's limits and how its Newton kernels run",
+    responses={200: {"description": "versions and limits", "content": {"application/json": {"example": {
+        "service": "tensegrity-opt", "version": tensegrity_opt.__version__,
+        "library_version": tensegrity_opt.__version__, "api": API_VERSION, "auth": False,
+        "limits": {"max_segments": 200, "max_batch": 1000, "solve_timeout": 10.0, "batch_timeout": 60.0,
+                   "workers": 2, "queue_size": 64, "inline_max_segments": 8, "inline_processes": 1,
+                   "max_body_bytes": 1048576, "max_response_bytes": 8388608,
+                   "max_curve_points": s.MAX_CURVE_POINTS, "max_path_points": 5000, "max_atlas_targets": 400,
+                   "max_trajectory_steps": 2000, "max_grid": s.MAX_GRID,
+                   "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
+                   "stream_idle_timeout": 60.0},
+        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
+async def version(request: Request) -> Any:
+    st = request.app.state.settings
+    k = kernels.status()
+    return {"service": "tensegrity-opt", "version": tensegrity_opt.__version__,
+            "library_version": tensegrity_opt.__version__, "api": API_VERSION, "auth": st.auth_enabled,
+            "limits": {"max_segments": st.max_segments, "max_batch": st.max_batch, "solve_timeout": st.solve_timeout,
+                       "batch_timeout": st.batch_timeout, "workers": st.workers, "queue_size": st.queue_size,
+                       "inline_max_segments": st.inline_max_segments,
+                       "inline_processes": fast.workers if (fast := request.app.state.executors.fast) else 0,
+                       "max_body_bytes": st.max_body_bytes, "max_response_bytes": st.max_response_bytes,
+                       "max_curve_points": s.MAX_CURVE_POINTS, "max_path_points": st.max_path_points,
+                       "max_atlas_targets": st.max_atlas_targets, "max_trajectory_steps": st.max_trajectory_steps,
+                       "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
+                       "max_stream_connections": st.max_stream_connections,
+                       "stream_idle_timeout": st.stream_idle_timeout},
+            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine")}}
+
+
+@router.get(
+    "/metrics", operation_id="metrics", summary="Prometheus metrics (text exposition format)",
+    response_class=Response,
+    responses={200: {"description": "request counts, latencies, solver failures, pool gauges",
+                     "content": {"text/plain": {"schema": {"type": "string"}, "example": METRICS_EXAMPLE}}}})
+async def metrics(request: Request) -> Response:
+    return Response(content=request.app.state.metrics.render(), media_type=CONTENT_TYPE_LATEST)

@@ -1,0 +1,411 @@
+"""Solver processes: the :class:`~service.execution.executor.Executor` whose workers are child processes.
+
+Why processes
+-------------
+Two kinds of work leave the server's process, as two instances of :class:`ProcessExecutor`:
+
+* **the fast lane** (short, bounded calls: the Newton-only equilibrium search of a short chain, ~0.3-0.5 ms):
+  a hand-off to a solver thread costs as much as the solve, and the solve would then hold the GIL the event
+  loop needs; a child process solves on the other core while the loop parses, validates and answers the next
+  requests. Many calls may be outstanding in one child (``depth``); it answers them in order.
+* **the killable processes** (``/v1/design/*``, rest-length plans, stiffness shaping): the first solve for a
+  chain length builds its CasADi problem in one call into compiled code (~2 s for n = 30, 20-40 s for n = 60)
+  that nothing inside a process can interrupt. In a child, a call runs under the library time limit of its
+  deadline, so it normally stops by itself (IPOPT checks it every iteration) and the child keeps its warm
+  caches; one call at a time per child (``depth`` 1), at most ``queue_size`` waiting (503 beyond).
+
+How a call is stopped
+---------------------
+At its deadline the caller gets :class:`SolveTimeout` (504) at once. A child that has not answered that call
+``grace`` seconds later (stuck in a build, or sleeping) is killed (SIGKILL) and replaced at once: its capacity is
+free again within ``grace`` plus a process start, whatever it was doing. Its other calls fail with
+:class:`Unavailable`.
+
+Children
+--------
+A child is ``python -m service.execution.child FD`` (a fresh interpreter, no fork of a threaded server) on one
+end of a socketpair, speaking :mod:`service.execution.ipc`; the loop's end is an asyncio protocol (no thread,
+no blocking read). Its first call is the warm-up (``warmup``: building the solvers, or importing the
+library); it takes calls once that is answered. A child that dies by itself is replaced, at most once every
+``RESTART_INTERVAL`` seconds; one that never got ready (it cannot import the service, its warm-up failed) is
+not: the executor then answers :class:`Unavailable`.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import collections
+import logging
+import os
+import pickle
+import socket
+import subprocess
+import sys
+import time
+from collections.abc import Callable
+from typing import Any
+
+from .executor import Executor, Saturated, SolveTimeout, Unavailable
+from .ipc import FRAME, WARMUP, UnreadableReply, encode, ready
+
+log = logging.getLogger("service.execution")
+
+__all__ = ["ProcessExecutor", "RESTART_INTERVAL"]
+
+#: Seconds between a child's start and the start of its replacement when it died by itself.
+RESTART_INTERVAL = 5.0
+
+
+def _expire(fut: asyncio.Future[Any]) -> None:
+    """A call's time limit: its caller gets ``TimeoutError`` (unless the answer came first)."""
+    if not fut.done():
+        fut.set_exception(asyncio.TimeoutError())
+
+
+class _Child(asyncio.Protocol):
+    """One child process and the loop's end of its socket: frames in, the calls' futures resolved."""
+
+    def __init__(self, owner: ProcessExecutor, proc: subprocess.Popen[bytes], sock: socket.socket) -> None:
+        self.owner = owner
+        self.proc = proc
+        self.sock = sock
+        self.transport: asyncio.Transport | None = None
+        self.buffer = bytearray()
+        self.calls: dict[int, asyncio.Future[Any]] = {}   # sent, not answered (timed-out ones included)
+        self.reserved = 0                                  # handed to a waiter that has not sent yet
+        self.ready = False
+        self.killed = False                                # by the executor (past the grace of a deadline)
+        self.started = time.monotonic()
+        self.done: asyncio.Future[bool] = asyncio.get_running_loop().create_future()   # ready, or never
+
+    @property
+    def load(self) -> int:
+        return len(self.calls) + self.reserved
+
+    def connection_made(self, transport: asyncio.BaseTransport) -> None:
+        self.transport = transport  # type: ignore[assignment]
+
+    def data_received(self, data: bytes) -> None:
+        buf = self.buffer
+        buf += data
+        start, end = 0, len(buf)
+        while end - start >= FRAME.size:
+            size, call_id = FRAME.unpack_from(buf, start)
+            if end - start - FRAME.size < size:
+                break
+            body = buf[start + FRAME.size:start + FRAME.size + size]
+            start += FRAME.size + size
+            try:
+                ok, value = pickle.loads(body)
+            except Exception as exc:  # noqa: BLE001 - a reply this process cannot unpickle: a server bug
+                ok, value = False, UnreadableReply(f"the {self.owner.label} sent an unreadable reply: {exc!r}")
+            self.owner._reply(self, call_id, ok, value)
+        if start:
+            del buf[:start]
+
+    def connection_lost(self, exc: Exception | None) -> None:
+        self.owner._lost(self)
+
+
+class ProcessExecutor(Executor):
+    """``workers`` child processes, each answering up to ``depth`` calls in order; at most ``queue_size`` calls
+    wait for room (:class:`Saturated` beyond; with no queue, a call that finds no ready child with room is
+    refused at once: :class:`Unavailable`, for a caller that has a fallback).
+
+    Parameters
+    ----------
+    workers : int
+        Child processes.
+    depth : int
+        Calls one child may hold at once (sent, not answered).
+    queue_size : int
+        Calls that may wait for room.
+    grace : float
+        Seconds after a call's deadline before its child, still busy with it, is killed.
+    warmup : callable, optional
+        A child's first call (importable by name); it takes calls once that is answered.
+    label : str
+        What the children are, for messages and logs (``"design solver process"``).
+    env : dict, optional
+        Extra environment of the children (the server's is inherited).
+    """
+
+    def __init__(self, workers: int, *, depth: int = 1, queue_size: int = 0, grace: float = 0.5,
+                 warmup: Callable[[], Any] | None = None, label: str = "solver process",
+                 env: dict[str, str] | None = None) -> None:
+        self.workers = workers
+        self.depth = depth
+        self.queue_size = queue_size
+        self.grace = grace
+        self.warmup = warmup if warmup is not None else ready
+        self.label = label
+        self.env = env
+        self._children: list[_Child] = []
+        self._waiters: collections.deque[asyncio.Future[_Child]] = collections.deque()
+        self._tasks: set[asyncio.Task[None]] = set()
+        self._next_id = 0
+        self._closing = False
+        self._broken = False        # a child never got ready: none is started again
+        self.completed = 0          # calls answered (statistics, tests)
+        self.restarts = 0           # children replaced
+        self.killed = 0             # children killed past the grace of a deadline
+
+    # ------------------------------------------------------------------ lifecycle
+    def start(self) -> None:
+        """Start the children (returns at once; :meth:`wait_ready` waits for their warm-up)."""
+        while len(self._children) < self.workers and not self._closing and not self._broken:
+            if not self._spawn():
+                return
+
+    def _spawn(self) -> bool:
+        parent, child = socket.socketpair()
+        try:
+            proc = subprocess.Popen([sys.executable, "-m", "service.execution.child", str(child.fileno())],
+                                    pass_fds=(child.fileno(),), stdin=subprocess.DEVNULL,
+                                    env={**os.environ, **self.env} if self.env else None)
+        except (OSError, ValueError) as exc:             # ValueError: no pass_fds on this platform
+            parent.close()
+            self._broken = True
+            log.warning("could not start a %s: %r", self.label, exc)
+            return False
+        finally:
+            child.close()
+        c = _Child(self, proc, parent)
+        self._children.append(c)
+        task = asyncio.get_running_loop().create_task(self._connect(c))
+        self._tasks.add(task)
+        task.add_done_callback(self._tasks.discard)
+        return True
+
+    async def _connect(self, c: _Child) -> None:
+        loop = asyncio.get_running_loop()
+        try:
+            await loop.create_unix_connection(lambda: c, sock=c.sock)
+        except OSError as exc:  # pragma: no cover - a fresh socketpair
+            log.warning("cannot connect to a %s: %r", self.label, exc)
+            c.proc.kill()
+            self._lost(c)
+            return
+        assert c.transport is not None
+        if self._closing:                               # shut down while connecting
+            c.transport.close()
+            return
+        c.transport.write(encode(WARMUP, (self.warmup, (), None)))
+
+    async def wait_ready(self, timeout: float) -> bool:
+        """Wait up to ``timeout`` seconds for the children's warm-up; ``True`` when every child is ready."""
+        children = list(self._children)
+        if not children:
+            return False
+        try:
+            await asyncio.wait_for(asyncio.gather(*[asyncio.shield(c.done) for c in children]), timeout)
+        except (asyncio.TimeoutError, TimeoutError):
+            return False
+        return all(c.ready for c in children)
+
+    def shutdown(self, timeout: float = 0.5) -> None:
+        """Stop the children (their sockets close; they exit) and fail the calls still outstanding."""
+        self._closing = True
+        while self._waiters:
+            w = self._waiters.popleft()
+            if not w.done():
+                w.set_exception(Saturated(f"the {self.label}es are shutting down"))
+        children, self._children = self._children, []
+        for c in children:
+            # the transport closes its socket only at the loop's next iteration, and the wait below blocks
+            # the loop: without the shutdown a child would see no end of file and be killed after the wait
+            try:
+                c.sock.shutdown(socket.SHUT_RDWR)
+            except OSError:
+                pass
+            if c.transport is not None:
+                c.transport.close()
+            self._fail(c, f"the {self.label} stopped")
+        deadline = time.monotonic() + timeout
+        for c in children:
+            try:
+                c.proc.wait(max(deadline - time.monotonic(), 0.0))
+            except subprocess.TimeoutExpired:       # busy with a call: nothing of it is kept
+                c.proc.kill()
+                c.proc.wait(2.0)
+
+    # ------------------------------------------------------------------ statistics
+    @property
+    def ready(self) -> bool:
+        """A child has finished its warm-up and runs."""
+        return any(c.ready for c in self._children)
+
+    @property
+    def pids(self) -> list[int]:
+        return [c.proc.pid for c in self._children]
+
+    @property
+    def in_flight(self) -> int:
+        """Calls waiting for room plus calls in the children (those past their deadline included)."""
+        return len(self._waiters) + sum(len(c.calls) for c in self._children)
+
+    # ------------------------------------------------------------------ calls
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
+        """``fn(*args)`` in a child (``fn`` importable by name, the arguments and the answer picklable)."""
+        if self._closing:
+            raise Saturated(f"the {self.label}es are shutting down")
+        child = self._pick()
+        if child is None:
+            if not self._children:
+                self.start()
+            if not self._children:
+                raise Unavailable(f"the {self.label} could not start")
+            if len(self._waiters) >= self.queue_size:
+                if self.queue_size == 0:
+                    raise Unavailable(f"no {self.label} is ready with room for the call")
+                raise Saturated(f"all {self.workers} {self.label}es are busy and {self.queue_size} requests are "
+                                "queued")
+        deadline = time.monotonic() + timeout
+        call_id = self._next_id
+        self._next_id += 1
+        frame = encode(call_id, (fn, args, deadline))     # not picklable: raised here, nothing sent
+        loop = asyncio.get_running_loop()
+        left = timeout
+        if child is None:
+            child = await self._acquire(loop, deadline, timeout)
+            child.reserved -= 1
+            if child not in self._children:             # it stopped between the hand-over and now
+                raise Unavailable(f"the {self.label} stopped")
+            left = max(deadline - time.monotonic(), 0.0)
+        fut: asyncio.Future[Any] = loop.create_future()
+        child.calls[call_id] = fut
+        assert child.transport is not None
+        child.transport.write(frame)
+        # one timer instead of asyncio.wait_for (which costs ~20 us of loop time per call)
+        timer = loop.call_later(left, _expire, fut)
+        try:
+            return await fut
+        except (asyncio.TimeoutError, TimeoutError):
+            self._overdue(loop, child, call_id)
+            raise SolveTimeout(timeout) from None
+        except asyncio.CancelledError:                   # the request itself went away
+            self._overdue(loop, child, call_id)
+            raise
+        finally:
+            timer.cancel()
+
+    def _pick(self) -> _Child | None:
+        """The ready child with the fewest calls that has room, or ``None``."""
+        if len(self._children) == 1:                    # the common case, on every call: no search
+            c = self._children[0]
+            return c if c.ready and len(c.calls) + c.reserved < self.depth else None
+        best = None
+        for c in self._children:
+            if c.ready and c.load < self.depth and (best is None or c.load < best.load):
+                best = c
+        return best
+
+    async def _acquire(self, loop: asyncio.AbstractEventLoop, deadline: float, timeout: float) -> _Child:
+        """Wait for room in a child (until ``deadline``); the child comes with one call reserved."""
+        w: asyncio.Future[_Child] = loop.create_future()
+        self._waiters.append(w)
+        try:
+            return await asyncio.wait_for(w, max(deadline - time.monotonic(), 0.0))
+        except BaseException as exc:                    # timed out, or the request went away
+            if w.done() and not w.cancelled() and w.exception() is None:
+                w.result().reserved -= 1                # handed over at the last moment: pass it on
+                self._wake()
+            if isinstance(exc, (asyncio.TimeoutError, TimeoutError)):
+                raise SolveTimeout(timeout) from None
+            raise
+        finally:
+            try:
+                self._waiters.remove(w)
+            except ValueError:
+                pass
+
+    def _wake(self) -> None:
+        """Room in a child: to the waiters, oldest first."""
+        while self._waiters:
+            child = self._pick()
+            if child is None:
+                return
+            w = self._waiters.popleft()
+            if not w.done():
+                child.reserved += 1
+                w.set_result(child)
+
+    def _overdue(self, loop: asyncio.AbstractEventLoop, child: _Child, call_id: int) -> None:
+        """A call past its deadline (or whose caller went away): its child gets ``grace`` seconds to answer it."""
+        if call_id in child.calls:
+            loop.call_later(self.grace, self._reap, child, call_id)
+
+    def _reap(self, child: _Child, call_id: int) -> None:
+        if call_id in child.calls and child in self._children and child.proc.poll() is None:
+            child.killed = True
+            self.killed += 1
+            log.warning("%s %s did not stop within %.1f s of a deadline; killing it", self.label, child.proc.pid,
+                        self.grace)
+            child.proc.kill()
+
+    # ------------------------------------------------------------------ replies
+    def _reply(self, child: _Child, call_id: int, ok: bool, value: Any) -> None:
+        if call_id == WARMUP:
+            if ok:
+                child.ready = True
+                if not child.done.done():
+                    child.done.set_result(True)
+                self._wake()
+            else:
+                self._broken = True
+                log.warning("a %s failed its warm-up (%s)", self.label, value)
+                child.proc.kill()
+            return
+        fut = child.calls.pop(call_id, None)
+        self.completed += 1
+        if fut is not None and not fut.done():
+            if ok:
+                fut.set_result(value)
+            else:
+                fut.set_exception(value)
+        if self._waiters:
+            self._wake()
+
+    def _fail(self, child: _Child, why: str) -> None:
+        calls, child.calls = child.calls, {}
+        for fut in calls.values():
+            if not fut.done():
+                fut.set_exception(Unavailable(why))
+        if not child.done.done():
+            child.done.set_result(False)
+
+    def _lost(self, child: _Child) -> None:
+        """The child's socket closed (it exited, or was killed): fail its calls, replace it."""
+        if child not in self._children:
+            return                                      # shut down, or already handled
+        self._children.remove(child)
+        self._fail(child, f"the {self.label} stopped")
+        proc = child.proc
+        try:
+            code = proc.wait(1.0)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            code = proc.wait(1.0)
+        if self._closing:
+            return
+        if not child.ready:             # it never got ready (cannot import the service, say): not restarted
+            self._broken = True
+            log.warning("a %s exited (status %s) before it was ready", self.label, code)
+            if not self._children:
+                while self._waiters:
+                    w = self._waiters.popleft()
+                    if not w.done():
+                        w.set_exception(Unavailable(f"the {self.label} could not start"))
+            return
+        if not child.killed:
+            log.warning("%s %s exited (status %s); it is replaced", self.label, proc.pid, code)
+        delay = 0.0 if child.killed else RESTART_INTERVAL - (time.monotonic() - child.started)
+        if delay > 0:
+            asyncio.get_running_loop().call_later(delay, self._replace)
+        else:
+            self._replace()
+
+    def _replace(self) -> None:
+        if not self._closing and not self._broken and len(self._children) < self.workers:
+            self.restarts += 1
+            self._spawn()
