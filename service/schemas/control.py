@@ -122,7 +122,7 @@ class PlanRequest(_PlanFields):
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [PLAN_REQUEST_EXAMPLE]})
 
 
-class PlanStepOut(outcome_model(to.PreloadStep)):
+class PlanStepOut(outcome_model(to.results.PreloadStep)):
     """One step of a plan (`PreloadStep.to_dict()`)."""
 
     rest_lengths: list[list[float]] = Field(description="[L1_0, L2_0] per segment")

@@ -77,7 +77,7 @@ class JumpOut(BaseModel):
                                    'chain: F_x 0 -> -0.573 (compressive)"')
 
 
-class CurveEndOut(outcome_model(to.CurveEnd)):
+class CurveEndOut(outcome_model(to.results.CurveEnd)):
     """Where a partial curve stopped: the first requested point it could not compute."""
 
     success: bool = Field(description="always false: the curve could not go on there")

@@ -32,7 +32,7 @@ def _broken(x: np.ndarray, y: np.ndarray, breaks: np.ndarray) -> tuple[np.ndarra
 def curve_breaks(c: Curve, component: int) -> np.ndarray:
     """Indices ``j`` where the plotted component (0: ``Fx``, 1: ``Fy``) of the selected curve is
     discontinuous between points ``j - 1`` and ``j``: the selected branch changes there and the
-    matching :class:`~tensegrity_opt.Jump` changes that component (a change without a recorded
+    matching :class:`~tensegrity_opt.results.Jump` changes that component (a change without a recorded
     jump also breaks). ``Fy`` stays continuous through the buckling jump (it is 0 on both sides)."""
     out = []
     for j in np.flatnonzero(c.branch[1:] != c.branch[:-1]) + 1:

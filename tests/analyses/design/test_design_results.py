@@ -8,8 +8,8 @@ import pytest
 import tensegrity_opt as to
 from tensegrity_opt.outcome import Outcome
 
-RESULTS = [to.Design, to.PreloadDesign, to.StiffnessDesign, to.LoadCapacity, to.PreloadStep, to.PreloadPlan,
-           to.FollowerStep, to.ForceEstimate]
+RESULTS = [to.Design, to.PreloadDesign, to.StiffnessDesign, to.LoadCapacity, to.results.PreloadStep, to.PreloadPlan,
+           to.results.FollowerStep, to.ForceEstimate]
 
 
 @pytest.mark.parametrize("cls", RESULTS, ids=lambda c: c.__name__)

@@ -214,7 +214,7 @@ SNAP_CHAIN = (3, 0.5, 1.0, 1.0, 0.5)
 GRID = np.linspace(0.02, 5.4, 60)
 
 
-def _jump_index(c: to.Curve, j: to.Jump) -> int:
+def _jump_index(c: to.Curve, j: to.results.Jump) -> int:
     return int(np.flatnonzero(c.dx == j.dx_before)[0])
 
 

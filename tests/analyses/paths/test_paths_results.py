@@ -22,8 +22,8 @@ from tensegrity_opt.outcome import Outcome
 PAPER = to.Manipulator.uniform(4, a=1.0, b=1.0, k=1.0, L0=1.0)
 BISTABLE = to.Manipulator.uniform(3, a=0.5, b=1.0, k=1.0, L0=1.0)
 RESULTS = (to.Curve, CurveEnd, to.Branch, to.LimitLoad, to.StabilityBoundary, to.StabilityAtlas, AtlasTarget,
-           to.Simulation, to.SimulationEvent)
-EVENTS = (to.BranchEvent, to.Jump)
+           to.Simulation, to.results.SimulationEvent)
+EVENTS = (to.results.BranchEvent, to.results.Jump)
 
 
 @pytest.mark.parametrize("cls", RESULTS, ids=lambda c: c.__name__)
@@ -163,7 +163,7 @@ def test_the_http_models_carry_the_vocabularies():
     for model, cls in ((s.ForceDeflectionOut, to.Curve), (s.TracedBranchOut, to.Branch),
                        (s.LimitLoadOut, to.LimitLoad), (s.StabilityBoundaryOut, to.StabilityBoundary),
                        (s.AtlasOut, to.StabilityAtlas), (s.AtlasTargetOut, AtlasTarget),
-                       (s.SimulationOut, to.Simulation), (s.SimulationEventOut, to.SimulationEvent),
+                       (s.SimulationOut, to.Simulation), (s.SimulationEventOut, to.results.SimulationEvent),
                        (s.CurveEndOut, CurveEnd)):
         assert list(model.model_fields)[:3] == ["success", "status", "message"], model
         assert set(model.model_fields["status"].annotation.__args__) == set(cls.STATUSES), model

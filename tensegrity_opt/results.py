@@ -1,0 +1,69 @@
+"""Every result type of the library in one place: the results the public functions return and the records
+inside them.
+
+The top-level namespace (``tensegrity_opt``) shows the main results next to the verbs that return them; the
+records they hold (a buckling :class:`Mode`, a curve's :class:`Jump` and :class:`CurveEnd`, a branch's
+:class:`BranchEvent`, a plan's :class:`PreloadStep` ...) live here. Every class that derives from
+:class:`Outcome` follows the result contract (:mod:`tensegrity_opt.outcome`): ``success``, ``status`` from its
+closed vocabulary ``STATUSES``, ``message``, and ``to_dict()`` carrying all three.
+
+==========================  ===============================================  ======================================
+result                      returned by                                      records inside
+==========================  ===============================================  ======================================
+:class:`Equilibrium`        ``solve_equilibrium``, ``..._under_force``,      :class:`SolverInfo`
+                            ``rest_configuration``, ``Tracker.solve``
+:class:`EquilibriumSet`     ``find_equilibria``, ``..._under_force``         :class:`Equilibrium`
+:class:`Buckling`           ``critical_force``                               :class:`Mode`
+:class:`Landscape`          ``energy_landscape``
+:class:`Curve`              ``force_deflection``                             :class:`Jump`, :class:`CurveEnd`
+:class:`Branch`             ``trace_branch``, ``switch_branch``,             :class:`BranchEvent`
+                            ``bifurcation_diagram`` (a list)
+:class:`LimitLoad`          ``limit_load``                                   :class:`Branch`
+:class:`StabilityBoundary`  ``stability_boundary``                           :class:`BoundaryPoint`
+:class:`StabilityAtlas`     ``stability_atlas``                              :class:`AtlasTarget`,
+                                                                             :class:`AtlasCrossing`
+:class:`Simulation`         ``simulate``                                     :class:`SimulationEvent`
+:class:`Design`             ``maximize_critical_force``,                     :class:`SolverInfo`
+                            ``preloads_for_critical_force``
+:class:`PreloadDesign`      ``preloads_for_pose``                            :class:`SolverInfo`
+:class:`StiffnessDesign`    ``preloads_for_stiffness``                       :class:`SolverInfo`
+:class:`PreloadPlan`        ``preloads_for_trajectory``                      :class:`PreloadStep`
+(``PreloadStep``)           ``PreloadController.step``
+(``FollowerStep``)          ``PreloadFollower.step``                         :class:`Snap`
+:class:`LoadCapacity`       ``load_capacity``                                :class:`LimitLoad`
+:class:`ForceEstimate`      ``estimate_tip_force``
+:class:`SweepResult`        ``sweep``
+:class:`CriticalLoadMap`    ``critical_load_map``
+==========================  ===============================================  ======================================
+"""
+
+from .analyses.design.follower import FollowerStep, Snap
+from .analyses.design.force_sensor import ForceEstimate
+from .analyses.design.load_capacity import LoadCapacity
+from .analyses.design.preload_control import PreloadPlan, PreloadStep
+from .analyses.design.preloads import PreloadDesign
+from .analyses.design.stiffness_shaping import StiffnessDesign
+from .analyses.design.strongest import Design
+from .analyses.equilibria.all_equilibria import EquilibriumSet
+from .analyses.equilibria.buckling import Buckling, Mode
+from .analyses.equilibria.equilibrium import Equilibrium
+from .analyses.equilibria.landscape import Landscape
+from .analyses.paths.atlas import AtlasCrossing, AtlasTarget, StabilityAtlas
+from .analyses.paths.boundaries import BoundaryPoint, StabilityBoundary
+from .analyses.paths.branches import Branch
+from .analyses.paths.curves import Curve, CurveEnd, Jump
+from .analyses.paths.events import BranchEvent
+from .analyses.paths.limit_load import LimitLoad
+from .analyses.paths.simulation import Simulation, SimulationEvent
+from .applications.sweeps.critical_map import CriticalLoadMap
+from .applications.sweeps.results import SweepResult
+from .outcome import Outcome, SolverInfo
+
+__all__ = [
+    "Outcome", "SolverInfo",
+    "Equilibrium", "EquilibriumSet", "Buckling", "Mode", "Landscape",
+    "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "StabilityBoundary", "BoundaryPoint",
+    "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent",
+    "Design", "PreloadDesign", "StiffnessDesign", "PreloadPlan", "PreloadStep", "FollowerStep", "Snap",
+    "LoadCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",
+]
