@@ -4,14 +4,13 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.inputs import segment_count
-from ...config import Settings
 from ...tasks.equilibria import force_deflection_task
-from ..deps import check_curve_size, check_manipulator, get_settings_dep, placement
+from ..deps import SettingsDep, check_curve_size, check_manipulator, placement
 from ..dispatch import run_task
 from ..openapi import solve_responses
 
@@ -42,7 +41,7 @@ async def force_deflection(
             "branch": "stable"}},
         "list": {"summary": "explicit deflections, every branch", "value": {
             "manipulator": ex.PAPER_CHAIN, "dx": [0.05, 0.1, 0.2], "dy": 0.0, "branch": "all"}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     points = req.dx.num if isinstance(req.dx, s.RangeIn) else len(req.dx)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
@@ -12,7 +12,7 @@ from ...adapters.fields import BRANCH_ALIASES, LIMIT_LOAD_ALIASES
 from ...config import Settings
 from ...tasks.paths import (bifurcation_diagram_task, find_stability_boundary, limit_load_task,
                             rest_configurations_task, trace_branches)
-from ..deps import check_homotopy, check_manipulator, check_path, get_settings_dep, path_deadline, placement
+from ..deps import SettingsDep, check_homotopy, check_manipulator, check_path, path_deadline, placement
 from ..dispatch import Placement, run_task
 from ..openapi import solve_responses
 
@@ -51,7 +51,7 @@ async def rest_configurations(
         "rest": {"summary": "the paper's chain unloaded: straight", "value": {"manipulator": _M}},
         "loaded": {"summary": "stable equilibria under a compressive load", "value": {
             "manipulator": _M, "fx": -0.3, "fy": 0.0, "stable_only": True}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     loaded = req.fx != 0.0 or req.fy != 0.0
@@ -85,7 +85,7 @@ async def trace_branch(
         "displacement": {"summary": "the tip pushed in from the equilibrium at dx = 0.1", "value": {
             "manipulator": _M, "start": {"dx": 0.1, "dy": 0.0},
             "control": {"kind": "displacement", "direction": [1.0, 0.0]}, "t_max": 1.0}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, trace_branches, req, settings)
 
@@ -106,7 +106,7 @@ async def bifurcation_diagram(
         "guided": {"summary": "the paper's chain, guided: the pitchfork branches of the first two critical loads",
                    "value": {"manipulator": _M, "start": _STRAIGHT, "control": _GUIDED, "t_max": 2.0,
                              "t_min": -0.2, "depth": 1, "max_points": 200}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, bifurcation_diagram_task, req, settings)
 
@@ -132,7 +132,7 @@ async def limit_load(
             "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.0, 1.02]}]
                             + [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}] * 3},
             "direction": [-1.0, 0.0], "boundary": "free", "max_load": 0.2, "include_branch": True}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, limit_load_task, req, settings, LIMIT_LOAD_ALIASES)
 
@@ -151,7 +151,7 @@ async def stability_boundary(
         "guided": {"summary": "the paper's chain, guided, over the asymmetry", "value": {
             "manipulator": _M, "control": _GUIDED, "parameter": "asymmetry", "p_min": -0.1, "p_max": 0.1,
             "max_points": 400}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, find_stability_boundary, req, settings)
 
