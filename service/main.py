@@ -84,7 +84,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app = FastAPI(
         title="tensegrity-opt service", version=tensegrity_opt.__version__, description=DESCRIPTION,
         openapi_tags=TAGS, docs_url=None, redoc_url=None, lifespan=lifespan,
-        # No trailing-slash redirect: it built an absolute Location from the request's Host header
+        # No trailing-slash redirect: it builds an absolute Location from the request's Host header
         # (an open redirect through a forged Host); "/healthz/" is a plain 404 instead.
         redirect_slashes=False,
         default_response_class=SafeJSONResponse,

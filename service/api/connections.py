@@ -3,7 +3,7 @@
 uvicorn (0.54) times out only *idle keep-alive* connections, and only after a first response:
 a client that opens a connection and sends half a request (or nothing, or a trickle of bytes)
 holds its socket for ever (3000 such sockets: 3000 descriptors; with a 256-descriptor limit every
-new ``/healthz`` failed). :func:`protocol_class` returns uvicorn's httptools protocol with
+new ``/healthz`` fails). :func:`protocol_class` returns uvicorn's httptools protocol with
 
 * **a request timeout** (``TENSEGRITY_REQUEST_TIMEOUT``): from the connection (or the first byte
   of the next request on a kept-alive connection) to the last byte of the request, headers and

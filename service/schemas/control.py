@@ -180,9 +180,9 @@ class _SimulationFields(BaseModel):
                                                        "units; the tip at (2 sum b - dx, dy))")
     start: StartQ | None = Field(None, description='{"q": [...]}: the state at sample 0 (must be a stable '
                                                    "equilibrium under the first inputs); null: free, the least-energy "
-                                                   "rest configuration (under a non-zero first load the least-potential "
-                                                   "stable equilibrium); held, the least-energy stable equilibrium at "
-                                                   "the first target")
+                                                   "rest configuration (under a non-zero first load the "
+                                                   "least-potential stable equilibrium); held, the least-energy "
+                                                   "stable equilibrium at the first target")
     perturbation: Annotated[float, Field(gt=0.0, lt=0.1, allow_inf_nan=False)] = Field(
         1e-4, description="where a snap's descent starts: this far (rad, the largest joint) from the fold along its "
                           "null vector")

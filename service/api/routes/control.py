@@ -147,8 +147,8 @@ async def control_stiffness(
                 "from the pose (`start`, a stable equilibrium under `base`; default the least-energy rest "
                 "configuration) followed by arclength continuation until it first loses stability: a fold (snap) "
                 "or a bifurcation (buckling) (`tensegrity_opt.load_capacity`). `loads` is null where the path stays "
-                "stable up to a joint's range bound or `max_load` (`reasons`). Computed within the server's time limit: "
-                "directions not reached answer `reasons: \"time_limit\"`.",
+                "stable up to a joint's range bound or `max_load` (`reasons`). Computed within the server's time "
+                "limit: directions not reached answer `reasons: \"time_limit\"`.",
     responses=solve_responses(ex.LOAD_CAPACITY, "no_equilibrium"))
 async def control_load_capacity(
     request: Request,

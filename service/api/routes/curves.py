@@ -22,8 +22,9 @@ router = APIRouter(prefix="/v1", tags=["curves"])
     summary="Force-deflection curve along the least-energy stable branch",
     description="Continuation over the deflections `dx` (a list, or `{start, stop, num}`; at most "
                 f"{s.MAX_CURVE_POINTS} points) at fixed `dy` (`tensegrity_opt.force_deflection`). `jumps` lists the "
-                "force discontinuities (`kind`: `buckling` at dx -> 0+ from the stable straight chain, `leave_straight` "
-                "from a straight chain that is not stable unloaded or at dy != 0, `snap` where the selected stable "
+                "force discontinuities (`kind`: `buckling` at dx -> 0+ from the stable straight chain, "
+                "`leave_straight` from a straight chain that is not stable unloaded or at dy != 0, `snap` where the "
+                "selected stable "
                 "branch ends, `switch` where the least-energy stable branch changes while the old one stays stable; "
                 "each with `delta` and a `label`); `branch = \"all\"` also returns every "
                 "branch found at the first deflected point, with null where it no longer exists. Where a point has "

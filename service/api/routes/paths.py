@@ -22,8 +22,8 @@ _M = ex.PAPER_CHAIN
 _STRAIGHT = {"q": [0.0, 0.0, 0.0, 0.0]}
 _GUIDED = {"kind": "guided", "direction": [-1.0, 0.0]}
 
-_CONTINUATION = ("Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments "
-                 "(longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's "
+_CONTINUATION = ("Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 "
+                 "segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's "
                  "`TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops "
                  "shortly before the server's time limit and answers what it has (200, `status: \"time_limit\"`, "
                  "`success: false`) instead of a 504.")
@@ -39,11 +39,11 @@ _CONTROL = ("`control` says what `t` moves: `displacement` (the tip along `direc
     "/rest-configurations", operation_id="rest_configurations", response_model=s.EquilibriaOut,
     summary="Every equilibrium under a dead tip load (F = 0: the rest configurations)",
     description="All equilibria inside the physical range under the tip force `F = (fx, fy)` held fixed "
-                "(`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full Hessian "
-                "of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: \"exact\"`, certified): the "
-                "product of the segments' unloaded critical points; a bistable segment gives two wells. "
-                "`stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the "
-                "server's `homotopy_max_segments`.",
+                "(`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full "
+                "Hessian of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: \"exact\"`, "
+                "certified): the product of the segments' unloaded critical points; a bistable segment gives two "
+                "wells. `stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to "
+                "the server's `homotopy_max_segments`.",
     responses=solve_responses(ex.REST_CONFIGURATIONS, "solver_failed", "response_too_large"))
 async def rest_configurations(
     request: Request,
@@ -140,9 +140,9 @@ async def limit_load(
 @router.post(
     "/stability-boundary", operation_id="stability_boundary", response_model=s.StabilityBoundaryOut,
     summary="The curve of folds or branch points over a second parameter",
-    description="Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the critical "
-                "`t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) followed as "
-                "`parameter` moves from `p_min` to `p_max`, with its cusps. " + _CONTINUATION,
+    description="Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the "
+                "critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) "
+                "followed as `parameter` moves from `p_min` to `p_max`, with its cusps. " + _CONTINUATION,
     responses=solve_responses(ex.STABILITY_BOUNDARY, "continuation_too_long", "too_many_points",
                               "response_too_large"))
 async def stability_boundary(
