@@ -28,8 +28,23 @@ from .api.deps import require_api_key
 from .api.metrics import Metrics, MetricsMiddleware
 from .api.middleware import BodyLimitMiddleware, MethodsMiddleware
 from .api.openapi import DESCRIPTION, TAGS, finish_document
-from .api.routes import (atlas, batch, buckling, control, curves, design, equilibrium, landscape, ops, paths, plots,
-                         segment, stiffness, stream, web)
+from .api.routes import (
+    atlas,
+    batch,
+    buckling,
+    control,
+    curves,
+    design,
+    equilibrium,
+    landscape,
+    ops,
+    paths,
+    plots,
+    segment,
+    stiffness,
+    stream,
+    web,
+)
 from .api.routes import jobs as jobs_routes
 from .config import Settings, get_settings
 from .execution import Executors

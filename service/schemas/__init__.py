@@ -72,14 +72,14 @@ from .control import (
     ForceEstimateRequest,
     LoadCapacityOut,
     LoadCapacityRequest,
-    StiffnessDesignOut,
-    StiffnessDesignRequest,
     PlanOut,
     PlanRequest,
     RestLengthBoundsIn,
     SimulationEventOut,
     SimulationOut,
     SimulationRequest,
+    StiffnessDesignOut,
+    StiffnessDesignRequest,
 )
 from .curves import (
     BranchOut,

@@ -24,8 +24,21 @@ from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_E
 from tensegrity_opt.analyses.paths.simulation import Simulation, SimulationEvent
 
 from ..config import HARD_MAX_SEGMENTS, HARD_MAX_TRAJECTORY_STEPS
-from .common import (_STRICT, MAX_ANGLE, MAX_STIFFNESS, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Length,
-                     ManipulatorIn, SolverInfo, integral, outcome_model)
+from .common import (
+    _STRICT,
+    MAX_ANGLE,
+    MAX_STIFFNESS,
+    PAPER_CHAIN,
+    Angle,
+    Deflection,
+    Force,
+    ForceValue,
+    Length,
+    ManipulatorIn,
+    SolverInfo,
+    integral,
+    outcome_model,
+)
 from .design import MAX_DESIGN_SEGMENTS, DesignManipulatorIn
 from .paths import StartQ
 

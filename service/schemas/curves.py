@@ -9,8 +9,17 @@ from pydantic import BaseModel, ConfigDict, Field
 import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.curves import POINT_STATUSES
 
-from .common import (MAX_CURVE_POINTS, PAPER_CHAIN, Deflection, DeflectionRange, Force, ManipulatorIn, SolverInfo,
-                     list_or_range, outcome_model)
+from .common import (
+    MAX_CURVE_POINTS,
+    PAPER_CHAIN,
+    Deflection,
+    DeflectionRange,
+    Force,
+    ManipulatorIn,
+    SolverInfo,
+    list_or_range,
+    outcome_model,
+)
 
 #: The deflections of a curve, in the order to follow (``/v1/force-deflection``, its figure).
 CurveDeflections = list_or_range(Deflection, DeflectionRange, 1, MAX_CURVE_POINTS,

@@ -9,8 +9,18 @@ from pydantic import BaseModel, ConfigDict, Field
 import tensegrity_opt as to
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import (PAPER_CHAIN, Angle, Deflection, Force, ForceValue, ManipulatorIn, SolverInfo, TipDx, TipDy,
-                     outcome_model)
+from .common import (
+    PAPER_CHAIN,
+    Angle,
+    Deflection,
+    Force,
+    ForceValue,
+    ManipulatorIn,
+    SolverInfo,
+    TipDx,
+    TipDy,
+    outcome_model,
+)
 
 
 # ---------------------------------------------------------------------------- requests

@@ -14,8 +14,17 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import (BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, PrivateAttr, RootModel, Tag,
-                      model_validator)
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Discriminator,
+    Field,
+    PrivateAttr,
+    RootModel,
+    Tag,
+    model_validator,
+)
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import Deflection, ForceValue, Length, SegmentIn, Stiff, integral

@@ -21,8 +21,20 @@ import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.events import EVENT_KINDS
 
 from ..config import HARD_MAX_PATH_POINTS, HARD_MAX_SEGMENTS
-from .common import (_STRICT, MAX_FORCE, PAPER_CHAIN, Angle, Force, ForceValue, Int, ManipulatorIn, TipDx, TipDy,
-                     integral, outcome_model)
+from .common import (
+    _STRICT,
+    MAX_FORCE,
+    PAPER_CHAIN,
+    Angle,
+    Force,
+    ForceValue,
+    Int,
+    ManipulatorIn,
+    TipDx,
+    TipDy,
+    integral,
+    outcome_model,
+)
 from .equilibrium import EquilibriumOut
 
 #: Most bifurcation switches (depth) and branches of one diagram.

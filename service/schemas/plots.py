@@ -13,8 +13,8 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Fiel
 
 from . import common as s
 from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
-from .curves import CurveDeflections
 from .control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE, _PlanFields, _SimulationFields
+from .curves import CurveDeflections
 from .paths import MAX_BRANCHES, MAX_DEPTH, StabilityBoundaryRequest, _BranchFields, _LimitLoadFields
 
 #: Most points per axis of a critical-load map (each point is one eigen-solve).

@@ -15,8 +15,7 @@ from fastapi import APIRouter, Body, Request
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.fields import LOAD_CAPACITY_ALIASES
-from ...tasks.control import (find_plan, find_simulation, force_estimate_task, load_capacity_task,
-                              stiffness_design_task)
+from ...tasks.control import find_plan, find_simulation, force_estimate_task, load_capacity_task, stiffness_design_task
 from ..deps import SettingsDep, check_manipulator, check_plan, check_simulation, path_deadline, placement, steps_field
 from ..dispatch import Placement, run_task
 from ..openapi import PLAN_LIMITS, SIMULATION_LIMITS, solve_responses

@@ -23,8 +23,8 @@ from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response as PlainResponse
 from starlette.responses import StreamingResponse
 
-from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.applications.sweeps import write_csv
+from tensegrity_opt.errors import InvalidParameterError
 
 from ... import examples as ex
 from ...config import Settings

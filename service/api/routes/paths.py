@@ -10,8 +10,13 @@ from ... import examples as ex
 from ... import schemas as s
 from ...adapters.fields import BRANCH_ALIASES, LIMIT_LOAD_ALIASES
 from ...config import Settings
-from ...tasks.paths import (bifurcation_diagram_task, find_stability_boundary, limit_load_task,
-                            rest_configurations_task, trace_branches)
+from ...tasks.paths import (
+    bifurcation_diagram_task,
+    find_stability_boundary,
+    limit_load_task,
+    rest_configurations_task,
+    trace_branches,
+)
 from ..deps import SettingsDep, check_homotopy, check_manipulator, check_path, path_deadline, placement
 from ..dispatch import Placement, run_task
 from ..openapi import solve_responses

@@ -29,8 +29,19 @@ from ...schemas import plots as ps
 from ...schemas.atlas import ATLAS_REQUEST_EXAMPLE
 from ...schemas.control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE
 from ...tasks import plots as tasks
-from ..deps import (check_atlas_targets, check_homotopy, check_manipulator, check_path, check_plan, check_simulation,
-                    finished_atlas_job, get_owner, get_runner, path_deadline, placement)
+from ..deps import (
+    check_atlas_targets,
+    check_homotopy,
+    check_manipulator,
+    check_path,
+    check_plan,
+    check_simulation,
+    finished_atlas_job,
+    get_owner,
+    get_runner,
+    path_deadline,
+    placement,
+)
 from ..dispatch import Placement, run_task
 from ..openapi import ATLAS_LIMITS, PLAN_LIMITS, SIMULATION_LIMITS, SOLVE_ERRORS, error_responses
 
