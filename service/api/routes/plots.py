@@ -159,6 +159,20 @@ def _curve_placement(req: Any, settings: Settings) -> Placement:
     return placement(settings, req.manipulator, branch_all=req.branch == "all")
 
 
+#: A figure's task on stored inputs, the inputs, and their field context.
+Stored = tuple[Callable[..., bytes], tuple[Any, ...], FieldContext]
+
+
+async def _atlas_job(request: Request, req: Any) -> Stored | None:
+    """The atlas figure's ``job`` form: its task, the task's stored inputs and their field context (the job is read
+    from the store in a thread); ``None`` for every other request."""
+    if not isinstance(req, ps.PlotAtlasJobRequest):
+        return None
+    runner, owner = await get_runner(request), await get_owner(request)
+    spec, rows, ctx = await run_in_threadpool(finished_atlas_job, runner, owner, req.job, "job")
+    return tasks.plot_job_atlas_task, (spec, rows), ctx
+
+
 @dataclass(frozen=True)
 class Figure:
     """One figure kind: ``POST /v1/plots/<kind>``, operation ``plot_<kind>`` (``-`` read as ``_``), answered as
@@ -168,7 +182,8 @@ class Figure:
     document the operation. ``limits(req, settings)`` applies the server's limits and gives the request's field
     context; ``task(req, fmt, *args)`` draws it (:mod:`service.tasks.plots`), with ``path_deadline`` as its one
     argument when ``continuation``; ``placement`` says where it runs (a :class:`Placement`, or
-    ``placement(req, settings)``).
+    ``placement(req, settings)``). ``stored(request, req)``, where given, may name another task instead, on
+    stored inputs, with their field context: ``(task, inputs, context)`` (the atlas of a job).
     """
 
     kind: str
@@ -181,6 +196,7 @@ class Figure:
     limits: Callable[[Any, Settings], FieldContext] = _chain
     continuation: bool = False
     placement: Placement | Callable[[Any, Settings], Placement] = Placement.LIGHT
+    stored: Callable[[Request, Any], Awaitable[Stored | None]] | None = None
 
     def where(self, req: Any, settings: Settings) -> Placement:
         return self.placement if isinstance(self.placement, Placement) else self.placement(req, settings)
@@ -290,8 +306,8 @@ FIGURES: tuple[Figure, ...] = (
             "guided": {"summary": "the paper's chain, guided, over the asymmetry", "value": {
                 "manipulator": _M, "control": _GUIDED, "parameter": "asymmetry", "p_min": -0.1, "p_max": 0.1}}}),
     Figure(
-        "atlas", ps.PlotAtlasRequest, task=tasks.plot_atlas_task, limits=_atlas_grid, continuation=True,
-        placement=Placement.HEAVY,
+        "atlas", ps.PlotAtlasRequest, task=tasks.plot_atlas_task, limits=_atlas_grid, stored=_atlas_job,
+        continuation=True, placement=Placement.HEAVY,
         summary="Figure: the stability atlas, stable equilibria over (dx, dy) with the switch and branch-end curves",
         description="The number of stable equilibria of the held tip as a map over the deflection (one cell per "
                     "target, one colour per count, unreachable targets hatched light grey, failed ones dark), the "
@@ -355,24 +371,12 @@ def _reply(data: bytes, fmt: str, kind: str) -> Response:
                     headers={"Content-Disposition": f'inline; filename="{kind}.{fmt}"', "Vary": "Accept"})
 
 
-async def _atlas_job(request: Request, req: Any) -> tuple[Callable[..., bytes], tuple[Any, ...], FieldContext] | None:
-    """The atlas figure's ``job`` form: its task, the task's stored inputs and their field context (the job is read
-    from the store in a thread); ``None`` for every other request."""
-    if not isinstance(req, ps.PlotAtlasJobRequest):
-        return None
-    runner, owner = await get_runner(request), await get_owner(request)
-    spec, rows, ctx = await run_in_threadpool(finished_atlas_job, runner, owner, req.job, "job")
-    return tasks.plot_job_atlas_task, (spec, rows), ctx
-
-
-def _endpoint(fig: Figure,
-              stored: Callable[[Request, Any], Awaitable[Any]] | None = None) -> Callable[..., Awaitable[Response]]:
-    """The route of ``fig``: the limits, the format, the task handed to the dispatcher, the bytes answered.
-    ``stored(request, req)``, where given, may instead name a task on stored inputs (the atlas of a job)."""
+def _endpoint(fig: Figure) -> Callable[..., Awaitable[Response]]:
+    """The route of ``fig``: the limits, the format, the task handed to the dispatcher, the bytes answered."""
 
     async def endpoint(request: Request, req: Any) -> Response:
         settings: Settings = request.app.state.settings
-        call = None if stored is None else await stored(request, req)
+        call = None if fig.stored is None else await fig.stored(request, req)
         if call is None:
             task, extra, ctx = fig.task, (), fig.limits(req, settings)
         else:
@@ -391,12 +395,12 @@ def _endpoint(fig: Figure,
     return endpoint
 
 
-def register(fig: Figure, stored: Callable[[Request, Any], Awaitable[Any]] | None = None) -> None:
-    """Add the route of ``fig`` to :data:`router` (see :func:`_endpoint` for ``stored``)."""
-    endpoint = _endpoint(fig, stored)
+def register(fig: Figure) -> None:
+    """Add the route of ``fig`` to :data:`router`."""
+    endpoint = _endpoint(fig)
     router.post(f"/{fig.kind}", operation_id=endpoint.__name__, response_class=Response, response_model=None,
                 summary=fig.summary, description=fig.description, responses=fig.responses)(endpoint)
 
 
 for _fig in FIGURES:
-    register(_fig, _atlas_job if _fig.kind == "atlas" else None)
+    register(_fig)
