@@ -35,8 +35,8 @@ def _cmd_serve(args: argparse.Namespace) -> int:
     try:
         import uvicorn
 
-        from .config import Settings
         from .api.connections import uvicorn_options
+        from .config import Settings
         from .main import create_app
     except ImportError as exc:
         return _missing_extra(exc)

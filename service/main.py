@@ -28,8 +28,23 @@ from .api.deps import require_api_key
 from .api.metrics import Metrics, MetricsMiddleware
 from .api.middleware import BodyLimitMiddleware, MethodsMiddleware
 from .api.openapi import DESCRIPTION, TAGS, finish_document
-from .api.routes import (atlas, batch, buckling, control, curves, design, equilibrium, landscape, ops, paths, plots,
-                         segment, stiffness, stream, web)
+from .api.routes import (
+    atlas,
+    batch,
+    buckling,
+    control,
+    curves,
+    design,
+    equilibrium,
+    landscape,
+    ops,
+    paths,
+    plots,
+    segment,
+    stiffness,
+    stream,
+    web,
+)
 from .api.routes import jobs as jobs_routes
 from .config import Settings, get_settings
 from .execution import Executors
@@ -84,7 +99,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     app = FastAPI(
         title="tensegrity-opt service", version=tensegrity_opt.__version__, description=DESCRIPTION,
         openapi_tags=TAGS, docs_url=None, redoc_url=None, lifespan=lifespan,
-        # No trailing-slash redirect: it built an absolute Location from the request's Host header
+        # No trailing-slash redirect: it builds an absolute Location from the request's Host header
         # (an open redirect through a forged Host); "/healthz/" is a plain 404 instead.
         redirect_slashes=False,
         default_response_class=SafeJSONResponse,

@@ -2,7 +2,7 @@
 
 Solver results are rendered where they were computed, in the solver thread or the solver process,
 by :func:`render_task` (:func:`render_json_bounded`; never on the event loop): piece by piece, so the GIL
-changes hands between pieces and the loop keeps answering (one ``json.dumps`` of a 40 MB body held it
+changes hands between pieces and the loop keeps answering (one ``json.dumps`` of a 40 MB body holds it
 ~0.5 s), and counted as it goes, so a body over the server's ``max_response_bytes`` is refused
 (:class:`ResponseTooLarge`) as soon as the limit is crossed instead of after the whole body is built.
 """

@@ -3,7 +3,7 @@
 uvicorn (0.54) times out only *idle keep-alive* connections, and only after a first response:
 a client that opens a connection and sends half a request (or nothing, or a trickle of bytes)
 holds its socket for ever (3000 such sockets: 3000 descriptors; with a 256-descriptor limit every
-new ``/healthz`` failed). :func:`protocol_class` returns uvicorn's httptools protocol with
+new ``/healthz`` fails). :func:`protocol_class` returns uvicorn's httptools protocol with
 
 * **a request timeout** (``TENSEGRITY_REQUEST_TIMEOUT``): from the connection (or the first byte
   of the next request on a kept-alive connection) to the last byte of the request, headers and
@@ -79,15 +79,13 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
             self._begin()                   # the first request must arrive within the timeout
 
         def connection_lost(self, exc: Exception | None) -> None:
-            waiting.pop(self, None)
-            incomplete.pop(self, None)
+            self._forget()
             super().connection_lost(exc)
 
         def handle_websocket_upgrade(self) -> None:
             # a WebSocket from here on (/v1/control/stream, which has its own idle timeout and connection
             # bound): no request timeout, and never closed to make room for a new connection
-            waiting.pop(self, None)
-            incomplete.pop(self, None)
+            self._forget()
             super().handle_websocket_upgrade()
 
         def on_message_begin(self) -> None:
@@ -96,8 +94,7 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
                 self._begin()
 
         def on_message_complete(self) -> None:
-            incomplete.pop(self, None)
-            waiting.pop(self, None)
+            self._forget()
             super().on_message_complete()
 
         def on_response_complete(self) -> None:
@@ -106,6 +103,11 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
                 waiting[self] = None        # idle between requests: may make room (keep-alive timer runs)
 
         # -------------------------------------------------------------- helpers
+        def _forget(self) -> None:
+            """Out of both tables: its request is in the app's hands, or the connection is gone or upgraded."""
+            waiting.pop(self, None)
+            incomplete.pop(self, None)
+
         def _begin(self) -> None:
             incomplete[self] = self.loop.time()
             if sweeper[0] is None:
@@ -128,8 +130,7 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
             self.transport.close()
 
         def _close_waiting(self) -> None:
-            waiting.pop(self, None)
-            incomplete.pop(self, None)
+            self._forget()
             if not self.transport.is_closing():
                 self.transport.close()
 

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import secrets
 import time
-from dataclasses import replace
 from typing import Annotated, Any
 
 from fastapi import Depends, Request, Security
@@ -20,7 +19,8 @@ from ..responses import ResponseTooLarge
 from .dispatch import Placement
 from .errors import ServiceError
 
-__all__ = ["api_key_header", "require_api_key", "api_key_valid", "get_settings_dep", "get_runner", "get_owner",
+__all__ = ["api_key_header", "require_api_key", "api_key_valid", "get_settings_dep", "SettingsDep", "get_runner",
+           "get_owner",
            "Runner", "Owner", "check_manipulator", "check_homotopy", "check_batch", "check_curve_size",
            "check_path_points", "check_path", "check_atlas_targets", "check_trajectory_steps", "check_plan",
            "check_simulation",
@@ -35,6 +35,10 @@ api_key_header = APIKeyHeader(
 async def get_settings_dep(request: Request) -> Settings:
     # async on purpose: FastAPI runs a plain ``def`` dependency in a worker thread, a ~0.1 ms hand-off
     return request.app.state.settings
+
+
+#: The server's settings as a route's parameter (``settings: SettingsDep``).
+SettingsDep = Annotated[Settings, Depends(get_settings_dep)]
 
 
 async def require_api_key(request: Request, key: str | None = Security(api_key_header)) -> None:
@@ -55,8 +59,9 @@ def api_key_valid(key: str | None, settings: Settings) -> bool:
     return any(secrets.compare_digest(given, k.encode("utf-8", "surrogateescape")) for k in settings.api_keys)
 
 
-def check_manipulator(m: Any, settings: Settings) -> FieldContext:
-    """Refuse chains longer than ``settings.max_segments`` (422 ``too_many_segments``)."""
+def check_manipulator(m: Any, settings: Settings, aliases: tuple[tuple[str, str], ...] = ()) -> FieldContext:
+    """Refuse chains longer than ``settings.max_segments`` (422 ``too_many_segments``); the request's field
+    context, with the library's names of its inputs (``aliases``)."""
     n = segment_count(m)
     form = manipulator_form(m)
     if n > settings.max_segments:
@@ -64,7 +69,7 @@ def check_manipulator(m: Any, settings: Settings) -> FieldContext:
                            f"the chain has {n} segments; this server accepts at most {settings.max_segments}",
                            field="manipulator.n" if form == "uniform" else "manipulator.segments",
                            details={"n": n, "max_segments": settings.max_segments})
-    return FieldContext(manipulator=form)
+    return FieldContext(manipulator=form, aliases=aliases)
 
 
 def check_homotopy(req: s.EquilibriaRequest, settings: Settings) -> None:
@@ -114,7 +119,7 @@ def check_path_points(max_points: int, settings: Settings) -> None:
 def check_path(req: Any, settings: Settings, aliases: tuple[tuple[str, str], ...] = BRANCH_ALIASES) -> FieldContext:
     """The limits of a continuation request (a branch, a bifurcation diagram, a limit load, a stability boundary,
     their figures): its field context, with the library's names of its inputs (``aliases``)."""
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=aliases)
+    ctx = check_manipulator(req.manipulator, settings, aliases)
     check_path_points(req.max_points, settings)
     return ctx
 
@@ -176,7 +181,7 @@ def _per_step(v: Any) -> Any:
 
 def check_plan(req: Any, settings: Settings) -> FieldContext:
     """The limits of a plan request (the endpoint's and the figure's): its field context."""
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=PLAN_ALIASES)
+    ctx = check_manipulator(req.manipulator, settings, PLAN_ALIASES)
     check_trajectory_steps(settings, targets=req.targets, loads=_per_step(req.loads), end_angles=req.end_angles)
     return ctx
 
@@ -188,7 +193,7 @@ def steps_field(req: Any) -> str:
 
 def check_simulation(req: Any, settings: Settings) -> FieldContext:
     """The limits of a simulate request (the endpoint's and the figure's): its field context."""
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=SIMULATION_ALIASES)
+    ctx = check_manipulator(req.manipulator, settings, SIMULATION_ALIASES)
     check_trajectory_steps(settings, preloads=req.preloads, loads=req.loads, targets=req.targets)
     return ctx
 

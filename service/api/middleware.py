@@ -24,8 +24,8 @@ def _flat(routes: Iterable[Any]) -> Iterator[Any]:
 
 def allowed_methods(routes: Iterable[Any], scope: Scope) -> list[str]:
     """Every method some route answers at ``scope``'s path (HEAD with GET, OPTIONS with any), sorted;
-    empty when no route has this path. Routing itself only knows the first route of a path, so a
-    405 used to list one method (``OPTIONS /v1/jobs`` -> ``Allow: POST``)."""
+    empty when no route has this path. Routing itself only knows the first route of a path, so its
+    405 would list one method (``OPTIONS /v1/jobs`` -> ``Allow: POST``)."""
     methods: set[str] = set()
     path = get_route_path(scope)
     for route in _flat(routes):

@@ -7,6 +7,6 @@ routes of ``/v1/jobs`` (:mod:`service.api.routes.jobs`) call it. This package im
 """
 
 from .runner import JobRunner
-from .store import TERMINAL, JobFinished, JobNotFound, JobsUnavailable, JobStore, owner_hash
+from .store import TERMINAL, JobFinished, JobNotFound, JobStore, JobsUnavailable, owner_hash
 
 __all__ = ["JobRunner", "JobStore", "JobNotFound", "JobFinished", "JobsUnavailable", "TERMINAL", "owner_hash"]

@@ -51,19 +51,17 @@ from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
+# Names, not the module: ``tensegrity_opt.applications.sweeps`` may be re-exported as the function.
+from tensegrity_opt.applications.sweeps import columns as sweep_columns
+from tensegrity_opt.applications.sweeps import count_points, error_row, format_error, solve_chunk, validate_spec
+from tensegrity_opt.applications.sweeps import plan as plan_sweep
+from tensegrity_opt.applications.sweeps import sweep as run_sweep
 from tensegrity_opt.errors import InvalidParameterError
 
 from ..config import Settings
 from ..execution.executor import SolveTimeout
 from ..execution.threads import Call, ThreadExecutor
-from .store import JobFinished, JobNotFound, JobsUnavailable, JobStore
-
-# Names, not the module: ``tensegrity_opt.applications.sweeps`` may be re-exported as the function.
-from tensegrity_opt.applications.sweeps import count_points, format_error, validate_spec  # noqa: I001
-from tensegrity_opt.applications.sweeps import columns as sweep_columns
-from tensegrity_opt.applications.sweeps import error_row, solve_chunk
-from tensegrity_opt.applications.sweeps import plan as plan_sweep
-from tensegrity_opt.applications.sweeps import sweep as run_sweep
+from .store import JobFinished, JobNotFound, JobStore, JobsUnavailable
 
 log = logging.getLogger("service.jobs")
 

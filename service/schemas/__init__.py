@@ -12,10 +12,11 @@ and are then answered with a domain code (`too_many_segments`, `batch_too_large`
 One module per resource, named after it: :mod:`.common` (the bounds and number types, the chain and
 segment inputs, ranges, the tip force, the solver report, the error body; it imports none of its
 siblings), :mod:`.equilibrium`, :mod:`.buckling`, :mod:`.curves`, :mod:`.stiffness`, :mod:`.segment`,
-:mod:`.landscape`, :mod:`.batch`, :mod:`.design`, :mod:`.stream` (the control stream's messages), :mod:`.paths` (rest configurations, branches, bifurcation
-diagrams, limit loads, stability boundaries), :mod:`.atlas` (the workspace stability atlas), :mod:`.ops` (health, readiness, version), :mod:`.plots`
-(the figure requests), :mod:`.jobs` (the sweep jobs) and :mod:`.control` (rest-length plans, simulation,
-force estimates). Every public model is re-exported here, so
+:mod:`.landscape`, :mod:`.batch`, :mod:`.design`, :mod:`.stream` (the control stream's messages), :mod:`.paths`
+(rest configurations, branches, bifurcation diagrams, limit loads, stability boundaries), :mod:`.atlas` (the
+workspace stability atlas), :mod:`.ops` (health, readiness, version), :mod:`.plots` (the figure requests),
+:mod:`.jobs` (the sweep jobs) and :mod:`.control` (rest-length plans, simulation, force estimates). Every public
+model is re-exported here, so
 ``from service import schemas as s; s.EquilibriumRequest`` names any of them.
 """
 
@@ -71,14 +72,14 @@ from .control import (
     ForceEstimateRequest,
     LoadCapacityOut,
     LoadCapacityRequest,
-    StiffnessDesignOut,
-    StiffnessDesignRequest,
     PlanOut,
     PlanRequest,
     RestLengthBoundsIn,
     SimulationEventOut,
     SimulationOut,
     SimulationRequest,
+    StiffnessDesignOut,
+    StiffnessDesignRequest,
 )
 from .curves import (
     BranchOut,

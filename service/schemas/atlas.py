@@ -12,15 +12,15 @@ a grid that is not strictly increasing is refused by the library (422 ``invalid_
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Literal, Union
+from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, ConfigDict, Field
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.atlas import CROSSING_KINDS, AtlasTarget
 
 from ..config import HARD_MAX_ATLAS_TARGETS
-from .common import Deflection, Int, ManipulatorIn, RangeIn, outcome_model
+from .common import Deflection, Int, ManipulatorIn, RangeIn, list_or_range, outcome_model
 
 __all__ = ["AtlasRange", "AtlasValues", "AtlasRequest", "AtlasOut", "AtlasTargetOut", "AtlasCrossingOut",
            "AtlasCurvesOut", "AtlasUnresolvedOut", "ATLAS_REQUEST_EXAMPLE"]
@@ -41,20 +41,10 @@ class AtlasRange(RangeIn):
                                  "num_dy, at most the server's TENSEGRITY_MAX_ATLAS_TARGETS)")
 
 
-def _list_or_range(v: Any) -> str:
-    return "<range>" if isinstance(v, (dict, RangeIn)) else "<list>"
-
-
 def _axis(name: str) -> Any:
-    return Annotated[
-        Union[
-            Annotated[list[Deflection], Field(min_length=1, max_length=HARD_MAX_ATLAS_TARGETS), Tag("<list>")],
-            Annotated[AtlasRange, Tag("<range>")],
-        ],
-        Discriminator(_list_or_range),
-        Field(description=f"the grid's {name} values (tip deflection, length units), strictly increasing: a list or "
-                          f"{{start, stop, num}} (1..{HARD_MAX_ATLAS_TARGETS} values)"),
-    ]
+    return list_or_range(Deflection, AtlasRange, 1, HARD_MAX_ATLAS_TARGETS,
+                         f"the grid's {name} values (tip deflection, length units), strictly increasing: a list or "
+                         f"{{start, stop, num}} (1..{HARD_MAX_ATLAS_TARGETS} values)")
 
 
 AtlasValues = _axis("dx")

@@ -55,6 +55,9 @@ Stiff = Annotated[float, Field(ge=MIN_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan
 Deflection = Annotated[float, Field(ge=-MAX_DEFLECTION, le=MAX_DEFLECTION, allow_inf_nan=False)]
 ForceValue = Annotated[float, Field(ge=-MAX_FORCE, le=MAX_FORCE, allow_inf_nan=False)]
 Angle = Annotated[float, Field(ge=-MAX_ANGLE, le=MAX_ANGLE, allow_inf_nan=False)]
+#: The held tip's deflection as most requests take it: ``dx: TipDx``, ``dy: TipDy = 0.0``.
+TipDx = Annotated[Deflection, Field(description="tip deflection along x (length units)")]
+TipDy = Annotated[Deflection, Field(description="tip deflection along y (length units)")]
 
 
 def _number_or_pair(v: Any) -> str:
@@ -148,6 +151,19 @@ class RangeIn(BaseModel):
 
 def _list_or_range(v: Any) -> str:
     return "<range>" if isinstance(v, (dict, RangeIn)) else "<list>"
+
+
+def list_or_range(item: Any, values: type[RangeIn], min_length: int, max_length: int, description: str) -> Any:
+    """Values given as a list of ``item`` (``min_length..max_length`` of them) or as ``{start, stop, num}``
+    (``values``, a :class:`RangeIn`), told apart by their form."""
+    return Annotated[
+        Union[
+            Annotated[list[item], Field(min_length=min_length, max_length=max_length), Tag("<list>")],
+            Annotated[values, Tag("<range>")],
+        ],
+        Discriminator(_list_or_range),
+        Field(description=description),
+    ]
 
 
 class DeflectionRange(RangeIn):

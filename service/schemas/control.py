@@ -24,8 +24,21 @@ from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_E
 from tensegrity_opt.analyses.paths.simulation import Simulation, SimulationEvent
 
 from ..config import HARD_MAX_SEGMENTS, HARD_MAX_TRAJECTORY_STEPS
-from .common import (_STRICT, MAX_ANGLE, MAX_STIFFNESS, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Length,
-                     ManipulatorIn, SolverInfo, integral, outcome_model)
+from .common import (
+    _STRICT,
+    MAX_ANGLE,
+    MAX_STIFFNESS,
+    PAPER_CHAIN,
+    Angle,
+    Deflection,
+    Force,
+    ForceValue,
+    Length,
+    ManipulatorIn,
+    SolverInfo,
+    integral,
+    outcome_model,
+)
 from .design import MAX_DESIGN_SEGMENTS, DesignManipulatorIn
 from .paths import StartQ
 
@@ -180,9 +193,9 @@ class _SimulationFields(BaseModel):
                                                        "units; the tip at (2 sum b - dx, dy))")
     start: StartQ | None = Field(None, description='{"q": [...]}: the state at sample 0 (must be a stable '
                                                    "equilibrium under the first inputs); null: free, the least-energy "
-                                                   "rest configuration (under a non-zero first load the least-potential "
-                                                   "stable equilibrium); held, the least-energy stable equilibrium at "
-                                                   "the first target")
+                                                   "rest configuration (under a non-zero first load the "
+                                                   "least-potential stable equilibrium); held, the least-energy "
+                                                   "stable equilibrium at the first target")
     perturbation: Annotated[float, Field(gt=0.0, lt=0.1, allow_inf_nan=False)] = Field(
         1e-4, description="where a snap's descent starts: this far (rad, the largest joint) from the fold along its "
                           "null vector")

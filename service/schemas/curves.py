@@ -2,15 +2,29 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Literal, Union
+from typing import Literal
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from pydantic import BaseModel, ConfigDict, Field
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.curves import POINT_STATUSES
 
-from .common import (MAX_CURVE_POINTS, PAPER_CHAIN, Deflection, DeflectionRange, Force, ManipulatorIn, SolverInfo,
-                     _list_or_range, outcome_model)
+from .common import (
+    MAX_CURVE_POINTS,
+    PAPER_CHAIN,
+    Deflection,
+    DeflectionRange,
+    Force,
+    ManipulatorIn,
+    SolverInfo,
+    list_or_range,
+    outcome_model,
+)
+
+#: The deflections of a curve, in the order to follow (``/v1/force-deflection``, its figure).
+CurveDeflections = list_or_range(Deflection, DeflectionRange, 1, MAX_CURVE_POINTS,
+                                 f"deflections in the order to follow: a list or {{start, stop, num}} "
+                                 f"(at most {MAX_CURVE_POINTS} points)")
 
 
 class ForceDeflectionRequest(BaseModel):
@@ -21,15 +35,7 @@ class ForceDeflectionRequest(BaseModel):
                       "branch": "stable"}]})
 
     manipulator: ManipulatorIn
-    dx: Annotated[
-        Union[
-            Annotated[list[Deflection], Field(min_length=1, max_length=MAX_CURVE_POINTS), Tag("<list>")],
-            Annotated[DeflectionRange, Tag("<range>")],
-        ],
-        Discriminator(_list_or_range),
-        Field(description=f"deflections in the order to follow: a list or {{start, stop, num}} "
-                          f"(at most {MAX_CURVE_POINTS} points)"),
-    ]
+    dx: CurveDeflections
     dy: Deflection = Field(0.0, description="tip deflection along y, the same at every point")
     branch: Literal["stable", "all"] = Field(
         "stable", description='"all" also returns every branch found at the first deflected point')

@@ -9,8 +9,21 @@ from pydantic import BaseModel, Field
 
 import tensegrity_opt as to
 
-from .common import (_STRICT, MAX_LENGTH, MAX_STIFFNESS, Angle, Deflection, ForceValue, Int, SegmentedManipulatorIn,
-                     SegmentIn, SolverInfo, UniformManipulatorIn, _manipulator_union, outcome_model)
+from .common import (
+    _STRICT,
+    MAX_LENGTH,
+    MAX_STIFFNESS,
+    Angle,
+    Deflection,
+    ForceValue,
+    Int,
+    SegmentedManipulatorIn,
+    SegmentIn,
+    SolverInfo,
+    UniformManipulatorIn,
+    _manipulator_union,
+    outcome_model,
+)
 
 # ---------------------------------------------------------------------------- the design chain
 #: Chains accepted by the design endpoints (their NLPs carry a dense n x n Cholesky factor).

@@ -9,7 +9,18 @@ from pydantic import BaseModel, ConfigDict, Field
 import tensegrity_opt as to
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import PAPER_CHAIN, Angle, Deflection, Force, ForceValue, ManipulatorIn, SolverInfo, outcome_model
+from .common import (
+    PAPER_CHAIN,
+    Angle,
+    Deflection,
+    Force,
+    ForceValue,
+    ManipulatorIn,
+    SolverInfo,
+    TipDx,
+    TipDy,
+    outcome_model,
+)
 
 
 # ---------------------------------------------------------------------------- requests
@@ -21,7 +32,7 @@ class EquilibriumRequest(BaseModel):
 
     manipulator: ManipulatorIn
     dx: Deflection = Field(description="tip deflection along x (length units); dx > 0 shortens the chain")
-    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    dy: TipDy = 0.0
     q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS,
                                    description="optional nearby configuration (rad, one angle per joint) "
                                                "for continuation; it competes with the global search")
@@ -50,8 +61,8 @@ class EquilibriaRequest(BaseModel):
         "examples": [{"manipulator": PAPER_CHAIN, "dx": 0.1, "dy": 0.0}]})
 
     manipulator: ManipulatorIn
-    dx: Deflection = Field(description="tip deflection along x (length units)")
-    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    dx: TipDx
+    dy: TipDy = 0.0
     method: Literal["search", "homotopy"] = Field(
         "search", description="`search`: multi-start Newton (any n; complete in practice, not certified); "
                               "`homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every "

@@ -14,8 +14,17 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Literal, Union
 
-from pydantic import (BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, PrivateAttr, RootModel, Tag,
-                      model_validator)
+from pydantic import (
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Discriminator,
+    Field,
+    PrivateAttr,
+    RootModel,
+    Tag,
+    model_validator,
+)
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import Deflection, ForceValue, Length, SegmentIn, Stiff, integral
@@ -35,6 +44,11 @@ JobStatus = Literal["queued", "running", "done", "failed", "cancelled", "interru
 DesignVariable = Literal["a", "b", "k", "L0"]
 Segments = Annotated[int, Field(ge=1, le=HARD_MAX_SEGMENTS), BeforeValidator(integral)]
 Load = Annotated[list[ForceValue], Field(min_length=2, max_length=2, description="tip force [fx, fy]")]
+
+
+#: The analyses that use a grid's tip deflections, and its tip forces.
+_DEFLECTED = "(equilibrium, stiffness, equilibria_count, atlas)"
+_LOADED = "(equilibrium, stiffness; not with dx/dy)"
 
 
 def _values(item: Any, what: str) -> Any:
@@ -95,9 +109,9 @@ class SweepGrid(BaseModel):
     b: _values(Length, "triangle half-lengths") = None  # type: ignore[assignment]
     k: _values(Stiff, "spring stiffnesses") = None  # type: ignore[assignment]
     L0: _values(Length, "spring rest lengths") = None  # type: ignore[assignment]
-    dx: _values(Deflection, "tip deflections along x (equilibrium, stiffness, equilibria_count, atlas)") = None  # type: ignore[assignment]
-    dy: _values(Deflection, "tip deflections along y (equilibrium, stiffness, equilibria_count, atlas)") = None  # type: ignore[assignment]
-    load: _values(Load, "tip forces [fx, fy] (equilibrium, stiffness; not with dx/dy)") = None  # type: ignore[assignment]
+    dx: _values(Deflection, f"tip deflections along x {_DEFLECTED}") = None  # type: ignore[assignment]
+    dy: _values(Deflection, f"tip deflections along y {_DEFLECTED}") = None  # type: ignore[assignment]
+    load: _values(Load, f"tip forces [fx, fy] {_LOADED}") = None  # type: ignore[assignment]
 
     _order: list[str] = PrivateAttr(default_factory=list)
 
@@ -132,6 +146,8 @@ class SweepPoint(BaseModel):
 
 Finite = Annotated[float, Field(allow_inf_nan=False)]
 BoundValue = Union[Finite, Annotated[list[Finite], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]]
+BoundPair = Annotated[list[BoundValue], Field(min_length=2, max_length=2)]
+TotalLength = Union[Literal[True], Annotated[float, Field(gt=0, allow_inf_nan=False)]]
 
 
 class SweepOptions(BaseModel):
@@ -140,17 +156,18 @@ class SweepOptions(BaseModel):
 
     model_config = _STRICT
 
-    boundary: Literal["guided", "free"] = Field(None, description="tip boundary condition (default guided)")  # type: ignore[assignment]
+    boundary: Literal["guided", "free"] = Field(  # type: ignore[assignment]
+        None, description="tip boundary condition (default guided)")
     method: Literal["search", "homotopy"] = Field(  # type: ignore[assignment]
         None, description="atlas only: how each target's equilibria are found, search (default) or homotopy "
                           "(certified counts; chains up to the server's homotopy_max_segments)")
     vary: list[DesignVariable] = Field(None, min_length=1, max_length=4,  # type: ignore[assignment]
                                        description="design: per-segment variables to optimise (default [k])")
-    bounds: dict[DesignVariable, Annotated[list[BoundValue], Field(min_length=2, max_length=2)]] = Field(  # type: ignore[assignment]
+    bounds: dict[DesignVariable, BoundPair] = Field(  # type: ignore[assignment]
         None, description="design: {name: [lo, hi]}, numbers or per-segment lists")
     budget: dict[DesignVariable, Finite] = Field(  # type: ignore[assignment]
         None, description="design: {name: total}, sum over the segments <= total")
-    total_length: Union[Literal[True], Annotated[float, Field(gt=0, allow_inf_nan=False)]] = Field(  # type: ignore[assignment]
+    total_length: TotalLength = Field(  # type: ignore[assignment]
         None, description="design: total length 2 sum(b) (true: keep the initial one)")
     tension: Annotated[list[Finite], Field(min_length=2, max_length=2)] = Field(  # type: ignore[assignment]
         None, description="design: [T_min, T_max] on the spring preloads at straight")
@@ -168,8 +185,8 @@ class JobSpec(BaseModel):
         default_factory=lambda: SweepManipulator(SweepUniformManipulator()),
         description="the base chain: uniform {n, a, b, k, L0} or {segments: [...]}")
     grid: SweepGrid = Field(None, description="cartesian product {parameter: [values]}")  # type: ignore[assignment]
-    points: Annotated[list[SweepPoint], Field(min_length=1, max_length=HARD_MAX_JOB_POINTS)] = Field(  # type: ignore[assignment]
-        None, description="explicit list of points")
+    points: list[SweepPoint] = Field(  # type: ignore[assignment]
+        None, min_length=1, max_length=HARD_MAX_JOB_POINTS, description="explicit list of points")
     options: SweepOptions = Field(None, description="analysis options")  # type: ignore[assignment]
 
     def to_spec(self) -> dict[str, Any]:

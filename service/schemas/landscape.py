@@ -8,7 +8,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
 
 import tensegrity_opt as to
 
-from .common import MAX_ANGLE, MAX_GRID, PAPER_CHAIN, Deflection, Int, ManipulatorIn, integral, outcome_model
+from .common import MAX_ANGLE, MAX_GRID, PAPER_CHAIN, Int, ManipulatorIn, TipDx, TipDy, integral, outcome_model
 
 
 class EnergyLandscapeRequest(BaseModel):
@@ -18,8 +18,8 @@ class EnergyLandscapeRequest(BaseModel):
         "examples": [{"manipulator": PAPER_CHAIN, "dx": 0.1, "dy": 0.0, "pair": [0, 3], "grid": 3}]})
 
     manipulator: ManipulatorIn
-    dx: Deflection = Field(description="tip deflection along x (length units)")
-    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    dx: TipDx
+    dy: TipDy = 0.0
     pair: list[Annotated[int, Field(ge=0, le=3), BeforeValidator(integral)]] = Field(
         [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
     grid: Int = Field(51, ge=2, le=MAX_GRID, description=f"points per axis (2..{MAX_GRID})")

@@ -21,8 +21,20 @@ import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.events import EVENT_KINDS
 
 from ..config import HARD_MAX_PATH_POINTS, HARD_MAX_SEGMENTS
-from .common import (_STRICT, MAX_FORCE, PAPER_CHAIN, Angle, Deflection, Force, ForceValue, Int, ManipulatorIn,
-                     integral, outcome_model)
+from .common import (
+    _STRICT,
+    MAX_FORCE,
+    PAPER_CHAIN,
+    Angle,
+    Force,
+    ForceValue,
+    Int,
+    ManipulatorIn,
+    TipDx,
+    TipDy,
+    integral,
+    outcome_model,
+)
 from .equilibrium import EquilibriumOut
 
 #: Most bifurcation switches (depth) and branches of one diagram.
@@ -130,8 +142,8 @@ class StartDeflection(BaseModel):
     """The least-energy stable equilibrium with the tip held at this deflection (`/v1/equilibrium`)."""
 
     model_config = _STRICT
-    dx: Deflection = Field(description="tip deflection along x (length units)")
-    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    dx: TipDx
+    dy: TipDy = 0.0
 
 
 def _start_kind(v: Any) -> str:

@@ -14,6 +14,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Fiel
 from . import common as s
 from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
 from .control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE, _PlanFields, _SimulationFields
+from .curves import CurveDeflections
 from .paths import MAX_BRANCHES, MAX_DEPTH, StabilityBoundaryRequest, _BranchFields, _LimitLoadFields
 
 #: Most points per axis of a critical-load map (each point is one eigen-solve).
@@ -35,10 +36,6 @@ DesignParam = Literal["a", "b", "k", "L0"]
 DesignValue = Annotated[float, Field(ge=MIN_DESIGN_VALUE, le=MAX_DESIGN_VALUE, allow_inf_nan=False)]
 
 
-def _list_or_range(v: Any) -> str:
-    return "<range>" if isinstance(v, (dict, s.RangeIn)) else "<list>"
-
-
 class _PlotRequest(BaseModel):
     format: ImageFormat | None = Field(
         None, description='"png" or "svg"; when absent the Accept header decides (image/svg+xml or image/png), '
@@ -52,25 +49,9 @@ class MapValuesRange(s.RangeIn):
     num: s.Int = Field(ge=2, le=MAX_MAP_AXIS, description=f"number of values (2..{MAX_MAP_AXIS})")
 
 
-DesignValues = Annotated[
-    Union[
-        Annotated[list[DesignValue], Field(min_length=2, max_length=MAX_MAP_AXIS), Tag("<list>")],
-        Annotated[MapValuesRange, Tag("<range>")],
-    ],
-    Discriminator(_list_or_range),
-    Field(description=f"values of the parameter (> 0, strictly increasing or decreasing): a list or "
-                      f"{{start, stop, num}} (2..{MAX_MAP_AXIS} values)"),
-]
-
-CurveDeflections = Annotated[
-    Union[
-        Annotated[list[s.Deflection], Field(min_length=1, max_length=s.MAX_CURVE_POINTS), Tag("<list>")],
-        Annotated[s.DeflectionRange, Tag("<range>")],
-    ],
-    Discriminator(_list_or_range),
-    Field(description=f"deflections in the order to follow: a list or {{start, stop, num}} "
-                      f"(at most {s.MAX_CURVE_POINTS} points)"),
-]
+DesignValues = s.list_or_range(DesignValue, MapValuesRange, 2, MAX_MAP_AXIS,
+                               f"values of the parameter (> 0, strictly increasing or decreasing): a list or "
+                               f"{{start, stop, num}} (2..{MAX_MAP_AXIS} values)")
 
 
 class PlotCurveRequest(_PlotRequest):
@@ -94,8 +75,8 @@ class PlotLandscapeRequest(_PlotRequest):
         "examples": [{"manipulator": s.PAPER_CHAIN, "dx": 0.1, "dy": 0.0, "pair": [0, 3], "grid": 101}]})
 
     manipulator: s.ManipulatorIn
-    dx: s.Deflection = Field(description="tip deflection along x (length units)")
-    dy: s.Deflection = Field(0.0, description="tip deflection along y (length units)")
+    dx: s.TipDx
+    dy: s.TipDy = 0.0
     pair: list[Annotated[int, Field(ge=0, le=3), BeforeValidator(s.integral)]] = Field(
         [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
     grid: s.Int = Field(101, ge=2, le=s.MAX_GRID, description=f"points per axis (2..{s.MAX_GRID})")
@@ -110,8 +91,8 @@ class PlotShapesRequest(_PlotRequest):
         "examples": [{"manipulator": s.PAPER_CHAIN, "dx": 0.1, "dy": 0.0}]})
 
     manipulator: s.ManipulatorIn
-    dx: s.Deflection = Field(description="tip deflection along x (length units)")
-    dy: s.Deflection = Field(0.0, description="tip deflection along y (length units)")
+    dx: s.TipDx
+    dy: s.TipDy = 0.0
     max_panels: s.Int = Field(MAX_PANELS, ge=1, le=MAX_PANELS,
                             description=f"draw at most this many equilibria, the lowest energies (1..{MAX_PANELS})")
 

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Union
+from pydantic import BaseModel, ConfigDict, Field
 
-from pydantic import BaseModel, ConfigDict, Discriminator, Field, Tag
+from .common import MAX_TORQUE_POINTS, Angle, AngleRange, SegmentIn, list_or_range
 
-from .common import MAX_TORQUE_POINTS, Angle, AngleRange, SegmentIn, _list_or_range
+#: The angles of a torque curve.
+TorqueAngles = list_or_range(Angle, AngleRange, 1, MAX_TORQUE_POINTS,
+                             f"joint angles (rad, |q| <= 2 pi): a list or {{start, stop, num}} "
+                             f"(at most {MAX_TORQUE_POINTS} points)")
 
 
 class SegmentTorqueRequest(BaseModel):
@@ -18,15 +21,7 @@ class SegmentTorqueRequest(BaseModel):
                       "q": {"start": -1.0, "stop": 1.0, "num": 5}}]})
 
     segment: SegmentIn
-    q: Annotated[
-        Union[
-            Annotated[list[Angle], Field(min_length=1, max_length=MAX_TORQUE_POINTS), Tag("<list>")],
-            Annotated[AngleRange, Tag("<range>")],
-        ],
-        Discriminator(_list_or_range),
-        Field(description=f"joint angles (rad, |q| <= 2 pi): a list or {{start, stop, num}} "
-                          f"(at most {MAX_TORQUE_POINTS} points)"),
-    ]
+    q: TorqueAngles
 
 
 class SegmentTorqueOut(BaseModel):

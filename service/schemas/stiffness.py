@@ -5,7 +5,7 @@ from __future__ import annotations
 from pydantic import BaseModel, ConfigDict, Field
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import PAPER_CHAIN, Angle, Deflection, ManipulatorIn
+from .common import PAPER_CHAIN, Angle, ManipulatorIn, TipDx, TipDy
 from .equilibrium import EquilibriumOut
 
 
@@ -16,8 +16,8 @@ class StiffnessRequest(BaseModel):
         "examples": [{"manipulator": PAPER_CHAIN, "dx": 0.1, "dy": 0.0}]})
 
     manipulator: ManipulatorIn
-    dx: Deflection = Field(description="tip deflection along x (length units)")
-    dy: Deflection = Field(0.0, description="tip deflection along y (length units)")
+    dx: TipDx
+    dy: TipDy = 0.0
     q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS, description="optional nearby configuration")
 
 

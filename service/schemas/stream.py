@@ -76,8 +76,8 @@ class PreloadsOpen(_Open):
         description="the configuration the first step starts from (rad, n angles); default: the equilibrium "
                     "under `load` reached from the least-energy rest configuration of `manipulator`")
     snap_distance: Annotated[float, Field(gt=0, le=2 * MAX_ANGLE, allow_inf_nan=False)] = Field(
-        SNAP_DISTANCE, description="a step whose joint angles move by more than this (rad, largest joint) from the last "
-                         "is reported as a `snap` event (so is an unstable result)")
+        SNAP_DISTANCE, description="a step whose joint angles move by more than this (rad, largest joint) from the "
+                                   "last is reported as a `snap` event (so is an unstable result)")
 
 
 class InverseOpen(_Open):

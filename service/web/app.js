@@ -4,8 +4,8 @@
  * page) and draws the results in SVG. Each panel shows its answer as soon as it arrives; until then the
  * previous answer stays, dimmed and marked stale. Physical answers the service gives as 422 (the
  * straight chain unstable or no equilibrium, no stable equilibrium) are shown as results in their
- * panel; only refusals and failures go to the error box. Geometry (docs: conventions.md): the base half-link b_1 runs along +x
- * from the origin to joint 1 at (b_1, 0); absolute link angles phi_j = q_1 + ... + q_j; the link
+ * panel; only refusals and failures go to the error box. Geometry (`docs/model.md`): the base half-link b_1
+ * runs along +x from the origin to joint 1 at (b_1, 0); absolute link angles phi_j = q_1 + ... + q_j; the link
  * after joint j has length b_j + b_{j+1} (the last one b_n). Each segment is two rigid triangles
  * (half-height a, half-length b) with their apexes at the joint; spring 1 joins their outer
  * vertices on the +a side (length 2c cos(beta + q/2)), spring 2 those on the -a side.
@@ -375,7 +375,9 @@
   function ticks(lo, hi, count) {
     const step = niceStep(hi - lo, count);
     const out = [];
-    for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step) out.push(Math.abs(v) < step * 1e-9 ? 0 : v);
+    for (let v = Math.ceil(lo / step - 1e-9) * step; v <= hi + step * 1e-9; v += step) {
+      out.push(Math.abs(v) < step * 1e-9 ? 0 : v);
+    }
     return out;
   }
 
@@ -481,7 +483,8 @@
     flush();
     for (const p of pts) {
       if (!finite(p[comp])) continue;
-      const c = svgEl("circle", { class: "pt" + (p.stable ? "" : " pt-unstable"), cx: X(p.dx), cy: Y(p[comp]), r: 2.2 }, g);
+      const c = svgEl("circle", { class: "pt" + (p.stable ? "" : " pt-unstable"), cx: X(p.dx), cy: Y(p[comp]),
+                                  r: 2.2 }, g);
       svgEl("title", {}, c).textContent = comp + " = " + fmt(p[comp]) + " at dx = " + fmt(p.dx) + " (" + p.shape + ")";
     }
     // Jumps: dashed connectors from the force before to the force after, with a marker.
@@ -581,10 +584,11 @@
     const segs = segmentsOf(inp.manipulator, n);
     const stable = eqs.filter((e) => e.stable).length;
     const summary = $("equilibria-summary");
-    summary.textContent = eqs.length + " equilibri" + (eqs.length === 1 ? "um" : "a") + " (" + stable + " stable) at dx = " +
-      fmt(inp.dx) + ", dy = " + fmt(inp.dy) + "; method " + out.method +
+    summary.textContent = eqs.length + " equilibri" + (eqs.length === 1 ? "um" : "a") + " (" + stable +
+      " stable) at dx = " + fmt(inp.dx) + ", dy = " + fmt(inp.dy) + "; method " + out.method +
       (out.certified ? ", certified complete" : ", complete in practice, not certified") +
-      (eqs.length > MAX_ROWS ? "; the first " + MAX_ROWS + " are listed and drawn (the JSON download has all)" : "") + ".";
+      (eqs.length > MAX_ROWS ? "; the first " + MAX_ROWS + " are listed and drawn (the JSON download has all)"
+                             : "") + ".";
     summary.dataset.count = String(eqs.length);
     summary.dataset.stable = String(stable);
     const shown = eqs.slice(0, MAX_ROWS);
@@ -599,7 +603,8 @@
       clearSvg(svg, "no equilibrium found");
     }
     svg.dataset.count = String(shown.length);
-    $("equilibria-desc").textContent = "Centre lines of " + shown.length + " equilibria (solid: stable, dashed: unstable).";
+    $("equilibria-desc").textContent = "Centre lines of " + shown.length +
+      " equilibria (solid: stable, dashed: unstable).";
     const body = $("equilibria").tBodies[0];
     body.textContent = "";
     shown.forEach((e, i) => {

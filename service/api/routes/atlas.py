@@ -8,14 +8,13 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
-from ...config import Settings
 from ...schemas.atlas import ATLAS_CHAIN, ATLAS_REQUEST_EXAMPLE
 from ...tasks.paths import find_atlas
-from ..deps import check_atlas_targets, check_homotopy, check_manipulator, get_settings_dep, path_deadline
+from ..deps import SettingsDep, check_atlas_targets, check_homotopy, check_manipulator, path_deadline
 from ..dispatch import Placement, run_task
 from ..openapi import ATLAS_LIMITS, solve_responses
 
@@ -43,7 +42,7 @@ async def stability_atlas(
             "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.05, 0.95]}] * 2
                             + [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]},
             "dx": [0.2, 0.8], "dy": [0.0, 0.4]}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     check_homotopy(req, settings)

@@ -5,13 +5,12 @@ from __future__ import annotations
 import time
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
-from ...config import Settings
 from ...tasks.equilibria import batch_task
-from ..deps import check_batch, check_manipulator, get_settings_dep
+from ..deps import SettingsDep, check_batch, check_manipulator
 from ..dispatch import Placement, run_task
 from ..openapi import solve_responses
 
@@ -34,7 +33,7 @@ async def batch_equilibrium(
         "trajectory": {"summary": "two targets by continuation", "value": {
             "manipulator": ex.PAPER_CHAIN, "targets": [{"dx": 0.05, "dy": 0.0}, {"dx": 0.1, "dy": 0.01}],
             "continuation": True}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     check_batch(req, settings)

@@ -8,19 +8,15 @@ the path endpoints) and ``POST /v1/control/force-estimate`` (``estimate_tip_forc
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.fields import LOAD_CAPACITY_ALIASES
-from ...config import Settings
-from ...tasks.control import (find_plan, find_simulation, force_estimate_task, load_capacity_task,
-                              stiffness_design_task)
-from ..deps import (check_manipulator, check_plan, check_simulation, get_settings_dep, path_deadline, placement,
-                    steps_field)
+from ...tasks.control import find_plan, find_simulation, force_estimate_task, load_capacity_task, stiffness_design_task
+from ..deps import SettingsDep, check_manipulator, check_plan, check_simulation, path_deadline, placement, steps_field
 from ..dispatch import Placement, run_task
 from ..openapi import PLAN_LIMITS, SIMULATION_LIMITS, solve_responses
 
@@ -53,7 +49,7 @@ async def control_plan(
             "bounds": {"lo": 0.5, "hi": 2.0}, "margin": 0.05}},
         "end_angles": {"summary": "the last link kept level (end angle 0) along a vertical line", "value": {
             "manipulator": _M, "targets": [[7.8, 0.3], [7.8, 0.6], [7.8, 0.9]], "end_angles": [0.0, 0.0, None]}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_plan(req, settings)
     return await run_task(request, find_plan, req, path_deadline(settings), fields=ctx, placement=Placement.KILLABLE,
@@ -83,7 +79,7 @@ async def control_simulate(
         "preloads": {"summary": "the rest lengths of the first bistable segment tilted (1 + d, 1 - d), no load",
                      "value": {"manipulator": s.BISTABLE_CHAIN, "preloads": [
                          [[1.0 + d, 1.0 - d], [1.0, 1.0], [1.0, 1.0]] for d in (0.0, 0.1, 0.2, 0.3, 0.4)]}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_simulation(req, settings)
     return await run_task(request, find_simulation, req, path_deadline(settings), fields=ctx,
@@ -114,7 +110,7 @@ async def control_force_estimate(
         "hidden": {"summary": "joint 3 (0-based 2) not measured, per-joint noise", "value": {
             "manipulator": _M, "q_measured": [ex.FORCE_ESTIMATE_Q[i] for i in (0, 1, 3)],
             "sigma_q": [0.001, 0.001, 0.002], "measured": [0, 1, 3]}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     return await run_task(request, force_estimate_task, req, fields=ctx, placement=placement(settings, req.manipulator))
@@ -137,7 +133,7 @@ async def control_stiffness(
                         "value": {"manipulator": _M, "target": [7.0, 1.0], "eig_bounds": [0.04, 0.6]}},
         "exact": {"summary": "a decoupled stiffness diag(0.4, 0.03)", "value": {
             "manipulator": _M, "target": [7.0, 1.0], "K_desired": [[0.4, 0.0], [0.0, 0.03]]}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     return await run_task(request, stiffness_design_task, req, fields=ctx, placement=Placement.KILLABLE)
@@ -150,16 +146,16 @@ async def control_stiffness(
                 "from the pose (`start`, a stable equilibrium under `base`; default the least-energy rest "
                 "configuration) followed by arclength continuation until it first loses stability: a fold (snap) "
                 "or a bifurcation (buckling) (`tensegrity_opt.load_capacity`). `loads` is null where the path stays "
-                "stable up to a joint's range bound or `max_load` (`reasons`). Computed within the server's time limit: "
-                "directions not reached answer `reasons: \"time_limit\"`.",
+                "stable up to a joint's range bound or `max_load` (`reasons`). Computed within the server's time "
+                "limit: directions not reached answer `reasons: \"time_limit\"`.",
     responses=solve_responses(ex.LOAD_CAPACITY, "no_equilibrium"))
 async def control_load_capacity(
     request: Request,
     req: Annotated[s.LoadCapacityRequest, Body(openapi_examples={
         "paper": {"summary": "the straight paper chain: buckles at 0.0761 under compression", "value": {
             "manipulator": _M, "directions": 8, "max_load": 2.0}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
-    ctx = replace(check_manipulator(req.manipulator, settings), aliases=LOAD_CAPACITY_ALIASES)
+    ctx = check_manipulator(req.manipulator, settings, LOAD_CAPACITY_ALIASES)
     return await run_task(request, load_capacity_task, req, path_deadline(settings), fields=ctx,
                           placement=Placement.HEAVY)

@@ -4,14 +4,13 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.inputs import segment_count
-from ...config import Settings
 from ...tasks.equilibria import force_deflection_task
-from ..deps import check_curve_size, check_manipulator, get_settings_dep, placement
+from ..deps import SettingsDep, check_curve_size, check_manipulator, placement
 from ..dispatch import run_task
 from ..openapi import solve_responses
 
@@ -23,8 +22,9 @@ router = APIRouter(prefix="/v1", tags=["curves"])
     summary="Force-deflection curve along the least-energy stable branch",
     description="Continuation over the deflections `dx` (a list, or `{start, stop, num}`; at most "
                 f"{s.MAX_CURVE_POINTS} points) at fixed `dy` (`tensegrity_opt.force_deflection`). `jumps` lists the "
-                "force discontinuities (`kind`: `buckling` at dx -> 0+ from the stable straight chain, `leave_straight` "
-                "from a straight chain that is not stable unloaded or at dy != 0, `snap` where the selected stable "
+                "force discontinuities (`kind`: `buckling` at dx -> 0+ from the stable straight chain, "
+                "`leave_straight` from a straight chain that is not stable unloaded or at dy != 0, `snap` where the "
+                "selected stable "
                 "branch ends, `switch` where the least-energy stable branch changes while the old one stays stable; "
                 "each with `delta` and a `label`); `branch = \"all\"` also returns every "
                 "branch found at the first deflected point, with null where it no longer exists. Where a point has "
@@ -42,7 +42,7 @@ async def force_deflection(
             "branch": "stable"}},
         "list": {"summary": "explicit deflections, every branch", "value": {
             "manipulator": ex.PAPER_CHAIN, "dx": [0.05, 0.1, 0.2], "dy": 0.0, "branch": "all"}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     points = req.dx.num if isinstance(req.dx, s.RangeIn) else len(req.dx)

@@ -4,14 +4,14 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.inputs import segment_count
 from ...config import Settings
 from ...tasks.control import design_critical_force_task, preloads_for_load_task, preloads_task
-from ..deps import check_manipulator, get_settings_dep
+from ..deps import SettingsDep, check_manipulator
 from ..dispatch import Placement, run_task
 from ..errors import ServiceError
 from ..openapi import solve_responses
@@ -50,7 +50,7 @@ async def design_critical_force(
         "lengths": {"summary": "segment lengths with the total length fixed (n = 6)", "value": {
             "manipulator": {"n": 6, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}, "vary": ["b"],
             "bounds": {"b": {"lo": 0.3, "hi": 3.0}}, "total_length": True}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _design(request, design_critical_force_task, req, settings)
 
@@ -67,7 +67,7 @@ async def design_preloads_for_load(
     req: Annotated[s.PreloadsForLoadRequest, Body(openapi_examples={
         "paper": {"summary": "the paper's chain to carry 0.7", "value": {
             "manipulator": ex.PAPER_CHAIN, "required": 0.7}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _design(request, preloads_for_load_task, req, settings)
 
@@ -87,6 +87,6 @@ async def design_preloads(
         "pose": {"summary": "tip at (7, 1.5) under a small load", "value": {
             "manipulator": ex.PAPER_CHAIN, "target": {"x": 7.0, "y": 1.5}, "load": {"fx": 0.05, "fy": -0.02},
             "objective": "nominal", "margin": 0.05}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _design(request, preloads_task, req, settings)

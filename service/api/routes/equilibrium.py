@@ -4,14 +4,14 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.inputs import bounded_search_may_settle, equilibrium_args
 from ...config import Settings
 from ...tasks.equilibria import equilibria_task, equilibrium_task, force_equilibrium_task
-from ..deps import check_homotopy, check_manipulator, get_settings_dep, placement
+from ..deps import SettingsDep, check_homotopy, check_manipulator, placement
 from ..dispatch import run_task
 from ..openapi import solve_responses
 
@@ -62,7 +62,7 @@ async def solve_equilibrium_under_force(
     req: Annotated[s.ForceEquilibriumRequest, Body(openapi_examples={
         "paper": {"summary": "the paper's chain under fx = -0.3",
                   "value": {"manipulator": _M, "fx": -0.3, "fy": 0.0}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     return await run_task(request, force_equilibrium_task, req, fields=ctx)
@@ -73,13 +73,14 @@ async def solve_equilibrium_under_force(
     summary="Every equilibrium for a tip deflection (minima, saddles, maxima)",
     description="All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy; "
                 "`morse_index`/`kind` classify each one. `method: homotopy` certifies the set (`certified`) "
-                "for chains up to the server's `homotopy_max_segments` (default 4); the default search is complete in practice, not certified.",
+                "for chains up to the server's `homotopy_max_segments` (default 4); the default search is complete in "
+                "practice, not certified.",
     responses=solve_responses(ex.EQUILIBRIA, "unreachable_target", "solver_failed"))
 async def find_equilibria(
     request: Request,
     req: Annotated[s.EquilibriaRequest, Body(openapi_examples={
         "paper": {"summary": "the paper's chain, dx = 0.1", "value": {"manipulator": _M, "dx": 0.1, "dy": 0.0}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     check_homotopy(req, settings)

@@ -18,13 +18,13 @@ from collections.abc import Iterator, Mapping
 from datetime import UTC, datetime
 from typing import Annotated, Any, Literal
 
-from fastapi import APIRouter, Body, Depends, Query, Request, Response
+from fastapi import APIRouter, Body, Query, Request, Response
 from starlette.concurrency import run_in_threadpool
 from starlette.responses import Response as PlainResponse
 from starlette.responses import StreamingResponse
 
-from tensegrity_opt.errors import InvalidParameterError
 from tensegrity_opt.applications.sweeps import write_csv
+from tensegrity_opt.errors import InvalidParameterError
 
 from ... import examples as ex
 from ...config import Settings
@@ -34,7 +34,7 @@ from ...responses import render_json_bounded
 from ...schemas import AtlasOut, ErrorOut
 from ...schemas import jobs as js
 from ...tasks.paths import find_job_atlas
-from ..deps import Owner, Runner, finished_atlas_job, get_settings_dep, path_deadline
+from ..deps import Owner, Runner, SettingsDep, finished_atlas_job, path_deadline
 from ..dispatch import Placement, run_task
 from ..errors import ServiceError
 
@@ -167,7 +167,7 @@ def list_jobs(
     responses={200: {"description": "the job", "content": {"application/json": {"example": js.JOB_EXAMPLE}}},
                401: _401, 404: _404, 422: _422_ID, 503: _503})
 def get_job(
-    runner: Runner, owner: Owner, job_id: str, settings: Annotated[Settings, Depends(get_settings_dep)],
+    runner: Runner, owner: Owner, job_id: str, settings: SettingsDep,
     offset: Annotated[int, Query(ge=0, le=10_000_000, description="rows to skip")] = 0,
     limit: Annotated[int, Query(ge=0, le=10_000, description="most rows returned")] = 100,
 ) -> Any:
@@ -204,7 +204,7 @@ def get_job(
         503: _503})
 def get_job_results(
     request: Request, runner: Runner, owner: Owner, job_id: str,
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
     format: Annotated[Literal["json", "csv"] | None, Query(
         description="json or csv (default: from the Accept header, else json)")] = None,
     offset: Annotated[int, Query(ge=0, le=10_000_000, description="rows to skip")] = 0,
@@ -296,7 +296,7 @@ _ATLAS_503["headers"] = _503["headers"]
                          ERRORS[504])})
 async def get_job_atlas(
     request: Request, runner: Runner, owner: Owner, job_id: str,
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
     edges: Annotated[bool, Query(description="locate the switches and branch ends on the grid edges")] = True,
 ) -> Any:
     spec, rows, ctx = await run_in_threadpool(finished_atlas_job, runner, owner, job_id)

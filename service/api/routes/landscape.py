@@ -4,13 +4,12 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
-from ...config import Settings
 from ...tasks.equilibria import energy_landscape_task
-from ..deps import check_manipulator, get_settings_dep
+from ..deps import SettingsDep, check_manipulator
 from ..dispatch import run_task
 from ..openapi import solve_responses
 
@@ -31,7 +30,7 @@ async def energy_landscape(
     req: Annotated[s.EnergyLandscapeRequest, Body(openapi_examples={
         "paper": {"summary": "Fig. 4 on a 3 x 3 grid", "value": {
             "manipulator": ex.PAPER_CHAIN, "dx": 0.1, "dy": 0.0, "pair": [0, 3], "grid": 3}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     return await run_task(request, energy_landscape_task, req, fields=ctx, size_field="grid")

@@ -4,15 +4,20 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.fields import BRANCH_ALIASES, LIMIT_LOAD_ALIASES
 from ...config import Settings
-from ...tasks.paths import (bifurcation_diagram_task, find_stability_boundary, limit_load_task,
-                            rest_configurations_task, trace_branches)
-from ..deps import check_homotopy, check_manipulator, check_path, get_settings_dep, path_deadline, placement
+from ...tasks.paths import (
+    bifurcation_diagram_task,
+    find_stability_boundary,
+    limit_load_task,
+    rest_configurations_task,
+    trace_branches,
+)
+from ..deps import SettingsDep, check_homotopy, check_manipulator, check_path, path_deadline, placement
 from ..dispatch import Placement, run_task
 from ..openapi import solve_responses
 
@@ -22,8 +27,8 @@ _M = ex.PAPER_CHAIN
 _STRAIGHT = {"q": [0.0, 0.0, 0.0, 0.0]}
 _GUIDED = {"kind": "guided", "direction": [-1.0, 0.0]}
 
-_CONTINUATION = ("Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments "
-                 "(longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's "
+_CONTINUATION = ("Pseudo-arclength continuation (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 "
+                 "segments (longer: 422 `invalid_parameter` on `manipulator.n`); `max_points` up to the server's "
                  "`TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops "
                  "shortly before the server's time limit and answers what it has (200, `status: \"time_limit\"`, "
                  "`success: false`) instead of a 504.")
@@ -39,11 +44,11 @@ _CONTROL = ("`control` says what `t` moves: `displacement` (the tip along `direc
     "/rest-configurations", operation_id="rest_configurations", response_model=s.EquilibriaOut,
     summary="Every equilibrium under a dead tip load (F = 0: the rest configurations)",
     description="All equilibria inside the physical range under the tip force `F = (fx, fy)` held fixed "
-                "(`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full Hessian "
-                "of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: \"exact\"`, certified): the "
-                "product of the segments' unloaded critical points; a bistable segment gives two wells. "
-                "`stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to the "
-                "server's `homotopy_max_segments`.",
+                "(`tensegrity_opt.analyses.equilibria.rest.find_equilibria_under_force`), each classified by the full "
+                "Hessian of `E - F . tip`, sorted by that potential. `F = 0` is exact (`method: \"exact\"`, "
+                "certified): the product of the segments' unloaded critical points; a bistable segment gives two "
+                "wells. `stable_only` keeps the minima. For `F != 0`, `method: homotopy` is accepted for chains up to "
+                "the server's `homotopy_max_segments`.",
     responses=solve_responses(ex.REST_CONFIGURATIONS, "solver_failed", "response_too_large"))
 async def rest_configurations(
     request: Request,
@@ -51,7 +56,7 @@ async def rest_configurations(
         "rest": {"summary": "the paper's chain unloaded: straight", "value": {"manipulator": _M}},
         "loaded": {"summary": "stable equilibria under a compressive load", "value": {
             "manipulator": _M, "fx": -0.3, "fy": 0.0, "stable_only": True}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     loaded = req.fx != 0.0 or req.fy != 0.0
@@ -85,7 +90,7 @@ async def trace_branch(
         "displacement": {"summary": "the tip pushed in from the equilibrium at dx = 0.1", "value": {
             "manipulator": _M, "start": {"dx": 0.1, "dy": 0.0},
             "control": {"kind": "displacement", "direction": [1.0, 0.0]}, "t_max": 1.0}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, trace_branches, req, settings)
 
@@ -106,7 +111,7 @@ async def bifurcation_diagram(
         "guided": {"summary": "the paper's chain, guided: the pitchfork branches of the first two critical loads",
                    "value": {"manipulator": _M, "start": _STRAIGHT, "control": _GUIDED, "t_max": 2.0,
                              "t_min": -0.2, "depth": 1, "max_points": 200}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, bifurcation_diagram_task, req, settings)
 
@@ -132,7 +137,7 @@ async def limit_load(
             "manipulator": {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.0, 1.02]}]
                             + [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}] * 3},
             "direction": [-1.0, 0.0], "boundary": "free", "max_load": 0.2, "include_branch": True}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, limit_load_task, req, settings, LIMIT_LOAD_ALIASES)
 
@@ -140,9 +145,9 @@ async def limit_load(
 @router.post(
     "/stability-boundary", operation_id="stability_boundary", response_model=s.StabilityBoundaryOut,
     summary="The curve of folds or branch points over a second parameter",
-    description="Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the critical "
-                "`t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) followed as "
-                "`parameter` moves from `p_min` to `p_max`, with its cusps. " + _CONTINUATION,
+    description="Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the "
+                "critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) "
+                "followed as `parameter` moves from `p_min` to `p_max`, with its cusps. " + _CONTINUATION,
     responses=solve_responses(ex.STABILITY_BOUNDARY, "continuation_too_long", "too_many_points",
                               "response_too_large"))
 async def stability_boundary(
@@ -151,7 +156,7 @@ async def stability_boundary(
         "guided": {"summary": "the paper's chain, guided, over the asymmetry", "value": {
             "manipulator": _M, "control": _GUIDED, "parameter": "asymmetry", "p_min": -0.1, "p_max": 0.1,
             "max_points": 400}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     return await _follow(request, find_stability_boundary, req, settings)
 

@@ -4,13 +4,12 @@ from __future__ import annotations
 
 from typing import Annotated, Any
 
-from fastapi import APIRouter, Body, Depends, Request
+from fastapi import APIRouter, Body, Request
 
 from ... import examples as ex
 from ... import schemas as s
-from ...config import Settings
 from ...tasks.equilibria import stiffness_task
-from ..deps import check_manipulator, get_settings_dep
+from ..deps import SettingsDep, check_manipulator
 from ..dispatch import run_task
 from ..openapi import solve_responses
 
@@ -29,7 +28,7 @@ async def cartesian_stiffness(
     req: Annotated[s.StiffnessRequest, Body(openapi_examples={
         "paper": {"summary": "the paper's chain, dx = 0.1", "value": {"manipulator": ex.PAPER_CHAIN, "dx": 0.1,
                                                                        "dy": 0.0}}})],
-    settings: Annotated[Settings, Depends(get_settings_dep)],
+    settings: SettingsDep,
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings)
     return await run_task(request, stiffness_task, req, fields=ctx)
