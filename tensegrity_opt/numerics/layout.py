@@ -56,9 +56,9 @@ class Layout:
 
     def pack(self, **values) -> np.ndarray:
         """The flat vector from every block by name (a number fills its block)."""
-        missing = self.places.keys() - values.keys()
-        unknown = values.keys() - self.places.keys()
-        if missing or unknown:
+        if values.keys() != self.places.keys():
+            missing = self.places.keys() - values.keys()
+            unknown = values.keys() - self.places.keys()
             raise ValueError(f"pack needs exactly the blocks {list(self.places)}: missing {sorted(missing)}, "
                              f"unknown {sorted(unknown)}")
         out = np.empty(self.size)

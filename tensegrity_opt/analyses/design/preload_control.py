@@ -42,6 +42,7 @@ import numpy as np
 from ...errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics.inverse_statics import inverse_statics
+from ...numerics.inverse_statics import layouts as step_layouts
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit
@@ -196,7 +197,7 @@ class PreloadController:
         self.w = np.ones(2 * n) if weights is None else self._per_spring_pairs(weights, "weights")
         if not np.all(self.w > 0):
             raise InvalidParameterError("weights must be > 0", field="weights")
-        self.geo = np.concatenate([m.a, m.b, m.k1, m.k2])
+        self.geo = step_layouts(n, False).geometry.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2)
         self.limits = m.joint_limits
         self.scale = float(np.max(m.b))
         self.ell = np.column_stack([m.L1_0, m.L2_0]).ravel()        # segment-major: l[2i], l[2i+1]
@@ -274,12 +275,13 @@ class PreloadController:
         mu = self.mu.get(angle)
         if mu is None or mu.size != inv.rows:
             mu = np.zeros(inv.rows)
-        y0 = np.concatenate([self.q, self.ell, mu])
-        tgt = np.array([target[0], target[1], float(end_angle) if angle else 0.0])
+        at = inv.unknowns
+        y0 = at.pack(q=self.q, ell=self.ell, mu=mu)
+        tgt = inv.target.pack(tip=target, angle=float(end_angle) if angle else 0.0)
         y, resid, iters, H, E, tip, KKT = inv.step(y0, self.geo, F, tgt, self.ell, self.w, self.q, Q_WEIGHT,
                                                    NEWTON_TOL)
         n = self.n
-        q, ell = y[:n], y[n:3 * n]
+        q, ell = y[at["q"]], y[at["ell"]]
         if not (resid <= 1e3 * NEWTON_TOL and np.all(np.isfinite(y))):
             return None
         if np.any(np.abs(q) >= self.limits * (1 - 1e-6)) or np.any(ell < lo - 1e-12) or np.any(ell > hi + 1e-12):
@@ -290,7 +292,7 @@ class PreloadController:
         kk = np.linalg.eigvalsh(KKT)
         if int(np.sum(kk > 0)) != 3 * n or int(np.sum(kk < 0)) != inv.rows:
             return None                     # a KKT point that is not a local minimum of the least change
-        self.mu[angle] = y[3 * n:].copy()
+        self.mu[angle] = y[at["mu"]].copy()
         solver = _NEWTON.get(iters) or _NEWTON.setdefault(iters, SolverInfo("Newton_Converged", iters))
         # q and ell are views of the step's own iterate y: no copy needed before they turn read-only
         return PreloadStep._of(rest_lengths=ell.reshape(n, 2), q=q, tip=tip, end_angle=float(np.sum(q)),

@@ -37,7 +37,7 @@ from ..equilibria.least_energy import solve_equilibrium
 from .strongest import Design, buckling_design
 
 __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
-           "forward_check", "stability_margin", "checked_start", "checked_vector"]
+           "forward_check", "stability_margin", "checked_start", "checked_vector", "nlp_pose"]
 
 #: What a preload problem minimises: ``"change"`` the (weighted) change of the rest lengths from the reference
 #: ones (the chain's own for a pose, the previous step's along a trajectory), ``"margin"`` minus the stability
@@ -203,6 +203,7 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
 
 def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start) -> PreloadDesign:
     from ...numerics import preload_nlp
+    from ...numerics.design_nlp import tril_vector
 
     if objective not in OBJECTIVES:
         raise InvalidParameterError(f"objective must be one of {OBJECTIVES}, got {objective!r}", field="objective")
@@ -242,27 +243,21 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     # a start for the margin's Cholesky factor; the floor relative to the Hessian's size (loads of 1e12
     # give entries of 1e12, where an absolute 1e-6 is below roundoff and the factorisation fails)
     Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
-    lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
-    x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
-    lbx = np.concatenate([np.full(n, -_INF), np.broadcast_to(lo, (2 * n)), [margin], np.full(lv0.size, -_INF)])
-    ubx = np.concatenate([np.full(n, _INF), np.broadcast_to(hi, (2 * n)), [margin if objective != "margin" else _INF],
-                          np.full(lv0.size, _INF)])
-    for k_ in nlp.diag:
-        lbx[3 * n + 1 + k_] = 0.0
+    x, g = nlp.variables, nlp.constraints
+    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
+    x0 = x.pack(phi=np.cumsum(q0), L10=L0start[:n], L20=L0start[n:], mu=mu0, L=tril_vector(Lc))
+    lbx = x.pack(phi=-_INF, L10=lo2[:n], L20=lo2[n:], mu=margin, L=nlp.factor_floor)
+    ubx = x.pack(phi=_INF, L10=hi2[:n], L20=hi2[n:], mu=margin if objective != "margin" else _INF, L=_INF)
     lim = m.joint_limits * (1 - RANGE_SHRINK)
     ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
-    lbg = np.concatenate([np.zeros(n), target, [ea[0]], np.zeros(lv0.size),
-                          np.full(2 * n, 0.0 if taut else -_INF), -lim])
-    ubg = np.concatenate([np.zeros(n), target, [ea[1]], np.zeros(lv0.size), np.full(2 * n, _INF), lim])
+    slack = 0.0 if taut else -_INF
+    lbg = g.pack(grad=0.0, tip=target, angle=ea[0], psd=0.0, stretch1=slack, stretch2=slack, q=-lim)
+    ubg = g.pack(grad=0.0, tip=target, angle=ea[1], psd=0.0, stretch1=_INF, stretch2=_INF, q=lim)
     weights = {"change": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
-    p = np.concatenate([m.a, m.b, m.k1, m.k2, load, L0nom, weights])
+    p = nlp.parameters.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=load, L0nom=L0nom, w=weights)
     res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
-    phi = res.x[:n]
-    q = np.diff(np.concatenate([[0.0], phi]))
-    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
-    L10 = np.clip(res.x[n:2 * n], lo2[:n], hi2[:n])
-    L20 = np.clip(res.x[2 * n:3 * n], lo2[n:], hi2[n:])
-    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[3 * n])}
+    q, L10, L20 = nlp_pose(x, res.x, lo2, hi2)
+    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[x["mu"]])}
     if not res.success:
         raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
                                     best=best)
@@ -273,6 +268,16 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q,
                          margin=stability_margin(m_new, eq.q, load), tip=eq.tip, energy=eq.energy,
                          solver=SolverInfo(res.status, res.iterations), equilibrium=eq)
+
+
+def nlp_pose(variables, x: np.ndarray, lo2: np.ndarray, hi2: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(q, L10, L20)`` at the point ``x`` of a preload NLP (its ``variables``' blocks ``phi``, ``L10``,
+    ``L20``): the relative joint angles and the rest lengths, clipped into their bounds ``lo2, hi2`` (``L1_0`` of
+    every segment, then every ``L2_0``; IPOPT may step 1e-8 outside)."""
+    v = variables.unpack(x)
+    n = v["phi"].size
+    return (np.diff(np.concatenate([[0.0], v["phi"]])), np.clip(v["L10"], lo2[:n], hi2[:n]),
+            np.clip(v["L20"], lo2[n:], hi2[n:]))
 
 
 def forward_check(m: Manipulator, load: np.ndarray, q: np.ndarray, target: np.ndarray, *, settle: bool,

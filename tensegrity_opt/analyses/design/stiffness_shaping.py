@@ -43,7 +43,7 @@ from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium
 from ..equilibria.stiffness import cartesian_stiffness
-from .preloads import (PreloadDesign, checked_start, forward_check, preloads_for_pose, rest_length_bounds,
+from .preloads import (PreloadDesign, checked_start, forward_check, nlp_pose, preloads_for_pose, rest_length_bounds,
                        stability_margin)
 
 __all__ = ["StiffnessDesign", "preloads_for_stiffness", "STIFFNESS_KEYS", "EXACT_TOL", "K_TOL"]
@@ -401,11 +401,8 @@ class _Shaper:
         return out
 
     def pose(self, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``(q, L10, L20)`` of the NLP's point ``x``: relative joint angles and the rest lengths, clipped
-        into their bounds (IPOPT may step 1e-8 outside)."""
-        v, n = self.x.unpack(x), self.n
-        return (np.diff(np.concatenate([[0.0], v["phi"]])), np.clip(v["L10"], self.lo2[:n], self.hi2[:n]),
-                np.clip(v["L20"], self.lo2[n:], self.hi2[n:]))
+        """``(q, L10, L20)`` of the NLP's point ``x`` (:func:`~.preloads.nlp_pose`)."""
+        return nlp_pose(self.x, x, self.lo2, self.hi2)
 
     def K_of(self, x) -> np.ndarray:
         """The stiffness (force / length) of the NLP's point ``x`` (its ``K`` rows)."""
