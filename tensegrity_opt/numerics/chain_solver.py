@@ -562,7 +562,8 @@ class ChainSolver:
 
     def kkt_parameter_jacobian(self, q: np.ndarray, force: np.ndarray,
                                target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """KKT Jacobian w.r.t. ``(phi, F)`` and w.r.t. the parameters (``m.params`` order), at a solution."""
+        """KKT Jacobian w.r.t. ``(phi, F)`` (:func:`.layout.equilibrium_unknowns`) and w.r.t. the parameters
+        (``m.params`` order, :func:`.layout.chain_parameters`), at a solution."""
         f = self.functions
         z = np.concatenate([np.cumsum(q), force])
         _, Jz = f.kkt(z, self.params, target)

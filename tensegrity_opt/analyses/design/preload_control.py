@@ -42,6 +42,7 @@ import numpy as np
 from ...errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics.inverse_statics import inverse_statics
+from ...numerics.layout import rest_lengths
 from ...numerics.inverse_statics import layouts as step_layouts
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
@@ -212,7 +213,8 @@ class PreloadController:
         a = np.asarray(v, dtype=float).ravel() if np.ndim(v) else np.full(2 * n, float(v))
         if a.size != 2 * n or not np.all(np.isfinite(a)):
             raise InvalidParameterError(f"{name} must be a number or {2 * n} finite values", field=name)
-        return np.column_stack([a[:n], a[n:]]).ravel()
+        springs = rest_lengths(n).unpack(a)
+        return np.column_stack([springs["L10"], springs["L20"]]).ravel()
 
     def _per_spring_pairs(self, v, name: str) -> np.ndarray:
         a = np.asarray(v, dtype=float)
@@ -301,7 +303,8 @@ class PreloadController:
 
     def _ipopt(self, target, F, end_angle, lo, hi) -> PreloadStep:
         nominal = self.manipulator()
-        to_spec = lambda v: np.concatenate([v[0::2], v[1::2]])   # noqa: E731  segment-major -> L1 block, L2 block
+        springs = rest_lengths(self.n)
+        to_spec = lambda v: springs.pack(L10=v[0::2], L20=v[1::2])   # noqa: E731  segment-major -> the L10, L20 blocks
         try:
             d = preloads_for_pose(nominal, target, load=F, objective=self.objective, margin=self.margin,
                                   bounds=(to_spec(lo), to_spec(hi)), end_angle=end_angle, start=self.q)

@@ -29,6 +29,7 @@ from ...errors import (InfeasibleDesignError, InvalidParameterError, TensegrityE
                        UnreachableTargetError)
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
+from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import number, numbers
 from ...timelimit import time_limit as _time_limit
@@ -37,7 +38,7 @@ from ..equilibria.least_energy import solve_equilibrium
 from .strongest import Design, buckling_design
 
 __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
-           "forward_check", "stability_margin", "checked_start", "checked_vector", "nlp_pose"]
+           "forward_check", "stability_margin", "checked_start", "checked_vector", "nlp_pose", "spring_bounds"]
 
 #: What a preload problem minimises: ``"change"`` the (weighted) change of the rest lengths from the reference
 #: ones (the chain's own for a pose, the previous step's along a trajectory), ``"margin"`` minus the stability
@@ -233,9 +234,10 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
         except TensegrityError:
             q0 = _reach_guess(m, target)
     nlp = preload_nlp(n)
-    L0nom = np.concatenate([m.L1_0, m.L2_0])
-    L0start = np.clip(L0nom, lo, hi)
-    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start[:n], L0start[n:]))
+    springs = rest_lengths(n)
+    L0nom = springs.pack(L10=m.L1_0, L20=m.L2_0)
+    L0start = springs.unpack(np.clip(L0nom, lo, hi))
+    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start["L10"], L0start["L20"]))
     _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
     Hq = _relative(Hphi)
     mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
@@ -244,10 +246,10 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     # give entries of 1e12, where an absolute 1e-6 is below roundoff and the factorisation fails)
     Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
     x, g = nlp.variables, nlp.constraints
-    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
-    x0 = x.pack(phi=np.cumsum(q0), L10=L0start[:n], L20=L0start[n:], mu=mu0, L=tril_vector(Lc))
-    lbx = x.pack(phi=-_INF, L10=lo2[:n], L20=lo2[n:], mu=margin, L=nlp.factor_floor)
-    ubx = x.pack(phi=_INF, L10=hi2[:n], L20=hi2[n:], mu=margin if objective != "margin" else _INF, L=_INF)
+    lo2, hi2 = spring_bounds(n, lo, hi)
+    x0 = x.pack(phi=np.cumsum(q0), **L0start, mu=mu0, L=tril_vector(Lc))
+    lbx = x.pack(phi=-_INF, **lo2, mu=margin, L=nlp.factor_floor)
+    ubx = x.pack(phi=_INF, **hi2, mu=margin if objective != "margin" else _INF, L=_INF)
     lim = m.joint_limits * (1 - RANGE_SHRINK)
     ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
     slack = 0.0 if taut else -_INF
@@ -270,14 +272,20 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
                          solver=SolverInfo(res.status, res.iterations), equilibrium=eq)
 
 
-def nlp_pose(variables, x: np.ndarray, lo2: np.ndarray, hi2: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def spring_bounds(n: int, lo, hi) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """The bounds ``(lo, hi)`` of :func:`rest_length_bounds` as the design problems' blocks ``L10``, ``L20``
+    (:func:`tensegrity_opt.numerics.layout.rest_lengths`)."""
+    springs = rest_lengths(n)
+    return springs.unpack(np.broadcast_to(lo, springs.size)), springs.unpack(np.broadcast_to(hi, springs.size))
+
+
+def nlp_pose(variables, x: np.ndarray, lo: dict, hi: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(q, L10, L20)`` at the point ``x`` of a preload NLP (its ``variables``' blocks ``phi``, ``L10``,
-    ``L20``): the relative joint angles and the rest lengths, clipped into their bounds ``lo2, hi2`` (``L1_0`` of
-    every segment, then every ``L2_0``; IPOPT may step 1e-8 outside)."""
+    ``L20``): the relative joint angles and the rest lengths, clipped into their bounds ``lo``, ``hi``
+    (:func:`spring_bounds`; IPOPT may step 1e-8 outside)."""
     v = variables.unpack(x)
-    n = v["phi"].size
-    return (np.diff(np.concatenate([[0.0], v["phi"]])), np.clip(v["L10"], lo2[:n], hi2[:n]),
-            np.clip(v["L20"], lo2[n:], hi2[n:]))
+    return (np.diff(np.concatenate([[0.0], v["phi"]])), np.clip(v["L10"], lo["L10"], hi["L10"]),
+            np.clip(v["L20"], lo["L20"], hi["L20"]))
 
 
 def forward_check(m: Manipulator, load: np.ndarray, q: np.ndarray, target: np.ndarray, *, settle: bool,

@@ -172,15 +172,13 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
     Returns the leading points where Newton converged (KKT residual within ``1e-9`` of the torque
     scale) inside the physical range — the first failure ends the prefix — classified.
     """
-    n = m.n
     mdl = chain_solver(m)
     c = mdl.batch_continue(targets, np.concatenate([np.cumsum(q0), F0]))
-    Z = c.Z
-    Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
+    Q = np.diff(np.hstack([np.zeros((c.Z.shape[0], 1)), c.phi]), axis=1)
     tol = 1e-9 * max(1.0, c.torque_scale)        # the residual is in the solver's units
-    ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
+    ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(c.Z), axis=1)
     k = int(np.argmin(ok)) if not ok.all() else ok.size
-    Q, Fs = Q[:k], Z[:k, n:]
+    Q, Fs = Q[:k], c.force[:k]
     its = None if c.iterations is None else c.iterations[:k]
     if c.reduced_hessian is not None:
         return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k], scale=m.torque_scale),

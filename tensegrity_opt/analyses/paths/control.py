@@ -169,16 +169,32 @@ class Control:
         d[2 * int(segment) + spring - 1] = 1.0
         return cls.preload(d, tip=tip, load=load)
 
+    @property
+    def preload_direction(self) -> np.ndarray | None:
+        """The rest lengths' change per unit ``t``, ``(n, 2)`` (``L1_0, L2_0`` per segment): a preload's
+        direction, a move's preload part; None for the other kinds."""
+        if self.kind == "preload":
+            return self.direction.reshape(-1, 2)
+        if self.kind == "move":
+            return self.direction[:-2].reshape(-1, 2)
+        return None
+
+    @property
+    def tip_direction(self) -> np.ndarray | None:
+        """What ``t`` moves at the tip per unit ``t`` (2 numbers): the displacement's or the load's direction, a
+        move's load change (free tip) or displacement (held tip); None for a preload control."""
+        if self.kind == "preload":
+            return None
+        return self.direction[-2:] if self.kind == "move" else self.direction
+
     def to_dict(self) -> dict[str, Any]:
         """JSON form (a branch's ``control``): ``kind`` and the constructor's arguments."""
         if self.kind == "move":
-            n = (self.direction.size - 2) // 2
-            d = {"kind": "move", "tip": self.tip,
-                 "preload": [numbers(r) for r in self.direction[:2 * n].reshape(n, 2)]}
+            d = {"kind": "move", "tip": self.tip, "preload": [numbers(r) for r in self.preload_direction]}
             if self.tip == "free":
-                d["load"], d["base"] = numbers(self.direction[2 * n:]), numbers(self.base)
+                d["load"], d["base"] = numbers(self.tip_direction), numbers(self.base)
             else:
-                d["displacement"] = numbers(self.direction[2 * n:])
+                d["displacement"] = numbers(self.tip_direction)
             return d
         d = {"kind": self.kind, "direction": numbers(self.direction)}
         if self.kind != "displacement":
