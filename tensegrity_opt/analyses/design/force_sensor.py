@@ -30,6 +30,7 @@ from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
+from ..equilibria.equilibrium import TipForce
 
 __all__ = ["ForceEstimate", "estimate_tip_force"]
 
@@ -56,7 +57,7 @@ MAX_STEP = 0.5
 
 
 @dataclass(frozen=True)
-class ForceEstimate(Outcome):
+class ForceEstimate(Outcome, TipForce):
     """The tip force estimated from joint angles (:func:`estimate_tip_force`).
 
     Attributes
@@ -143,14 +144,6 @@ class ForceEstimate(Outcome):
         if self.chi2 is not None:
             text += f", chi2 {self.chi2:.3g} on {self.dof} degrees of freedom"
         return text
-
-    @property
-    def fx(self) -> float:
-        return float(self.force[0])
-
-    @property
-    def fy(self) -> float:
-        return float(self.force[1])
 
     @property
     def std(self) -> np.ndarray | None:

@@ -48,8 +48,9 @@ from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
+from ..paths.control import checked_vector
 from .follower import loaded_rest
-from .preloads import LAND_TOL, OBJECTIVES, checked_vector, preloads_for_pose
+from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose
 
 __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "preloads_for_trajectory"]
 

@@ -38,7 +38,7 @@ from ..equilibria.least_energy import solve_equilibrium
 from .strongest import Design, buckling_design
 
 __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
-           "forward_check", "stability_margin", "checked_start", "checked_vector", "nlp_pose", "spring_bounds"]
+           "forward_check", "stability_margin", "checked_start", "nlp_pose", "spring_bounds"]
 
 #: What a preload problem minimises: ``"change"`` the (weighted) change of the rest lengths from the reference
 #: ones (the chain's own for a pose, the previous step's along a trajectory), ``"margin"`` minus the stability
@@ -333,17 +333,6 @@ def stability_margin(m: Manipulator, q: np.ndarray, load) -> float:
     ``load`` (torque / rad): the stability margin every preload problem requires and reports."""
     _, _, H_phi, _, _ = chain_solver(m).evaluate(q, load)
     return float(np.linalg.eigvalsh(_relative(H_phi))[0])
-
-
-def checked_vector(v, size: int, name: str) -> np.ndarray:
-    """``size`` finite numbers (a target, a load), flattened, checked (``field=name``)."""
-    try:
-        a = np.asarray(v, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be {size} numbers, got {v!r}", field=name) from None
-    if a.size != size or not np.all(np.isfinite(a)):
-        raise InvalidParameterError(f"{name} must be {size} finite numbers, got {v!r}", field=name)
-    return a
 
 
 def checked_start(m: Manipulator, start) -> np.ndarray | None:
