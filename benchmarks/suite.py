@@ -6,7 +6,7 @@ target | met?) with numbered notes, and writes the same data as JSON (default
 machine information. Every time is a median over repeated runs after a warm-up
 (``time.perf_counter``); every baseline is measured in the same run.
 
-Cases (the issue's targets):
+Cases (each with its target):
 
 1. n = 4 local solve warm-started from the solution 0.001 away: <= 0.2 ms and >= 20x SLSQP.
 2. n = 4 global solve, not warm-started (solver built): <= 5 ms; vs the paper's energy method

@@ -12,7 +12,7 @@ joint) or a model error; with the angle noise known it is a chi-square statistic
 
 :func:`estimate_tip_force` is the one public function; :class:`ForceEstimate` its result. The
 derivatives (``grad E``, ``J``, ``Hess(E - F . tip)``) are the project's CasADi model through
-:meth:`tensegrity_opt.numerics.BoundSolver.evaluate` (the compiled SX graph of
+:meth:`tensegrity_opt.numerics.ChainSolver.evaluate` (the compiled SX graph of
 :mod:`tensegrity_opt.numerics.expressions`; long chains its banded form), transformed from absolute
 to relative joint angles here.
 """

@@ -1,7 +1,7 @@
 """Continuation: equilibria followed along a sequence of tip targets, in one home.
 
 Three users, one mechanism (warm-started Newton on the KKT system, the compiled continuation
-kernel of :meth:`BoundSolver.batch_continue <tensegrity_opt.numerics.BoundSolver.batch_continue>`
+kernel of :meth:`ChainSolver.batch_continue <tensegrity_opt.numerics.ChainSolver.batch_continue>`
 for short chains):
 
 * :func:`solve_equilibria_batch` - a whole trajectory of targets in one call;
@@ -16,7 +16,7 @@ A trajectory of tip targets solved in one call (control loops).
 the global least-energy stable equilibrium (:func:`solve_equilibrium`); with
 ``continuation=True`` every next one continues the branch through the previous solution —
 what a manipulator driven along a trajectory actually does — by Newton corrections run
-in compiled code for short chains (the C kernels of :mod:`.kernels` up to ``KERNEL_MAX``
+in compiled code for short chains (the C kernels of :mod:`tensegrity_opt.numerics.kernels` up to ``KERNEL_MAX``
 segments, CasADi's ``rootfinder`` under ``mapaccum`` up to ``numerics.DENSE_MAX``), classified
 in one batch. For one target at a time (a control loop) see :class:`tensegrity_opt.Tracker`. A point where the
 branch ends or loses stability is re-solved globally (warm-started from the previous configuration) and the

@@ -29,7 +29,7 @@ HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
 class Parser(argparse.ArgumentParser):
     """An ``ArgumentParser`` whose usage errors are one line on stderr, ``PROG: error: MESSAGE (see PROG
     --help)``, and exit status 2 (argparse's status; its usage block is left out: for the commands with
-    many options it buried the one line that matters). Subparsers inherit the class, and every
+    many options it buries the one line that matters). Subparsers inherit the class, and every
     parser shows each option's default (:data:`HELP_FORMAT`) unless given another formatter."""
 
     def __init__(self, *args, **kwargs) -> None:
@@ -97,7 +97,7 @@ def at_least_two(text: str) -> int:
 
 
 #: Longest uniform chain the command line builds (``--n``): beyond it the dense solvers' n x n matrices alone
-#: take gigabytes and a command would run for hours or exhaust memory instead of answering (``--n 1e9`` hung).
+#: take gigabytes and a command would run for hours or exhaust memory instead of answering.
 MAX_SEGMENTS = 10_000
 
 

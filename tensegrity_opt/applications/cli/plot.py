@@ -2,7 +2,7 @@
 plan|simulation ... -o fig.png|fig.svg``.
 
 :func:`add_plot_parser` adds the ``plot`` subcommand to the ``tensegrity-opt`` parser
-(:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
+(:func:`tensegrity_opt.applications.cli.build_parser`). Every kind takes the manipulator options of the
 other commands (``--n --a --b --k --L0`` uniform, the paper's chain by default, or
 ``--manipulator FILE.json``), ``--json`` and ``-o/--output`` (the format follows the suffix);
 its ``func(args, m)`` computes the result with the library, draws it with
