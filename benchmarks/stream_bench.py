@@ -30,8 +30,8 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.paths.continuation import Tracker
 from tensegrity_opt.analyses.design.preload_control import PreloadController
+from tensegrity_opt.analyses.paths.continuation import Tracker
 
 from .http_load import _Connection, _host_port, json_body, own_server
 

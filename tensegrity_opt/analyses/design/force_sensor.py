@@ -537,7 +537,7 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
         joint = np.zeros(n)
         joint[ok] = Pr[ok] ** 2 / d[ok]
         if dof > 0:
-            from scipy.special import chdtrc      # = scipy.stats.chi2.sf (its implementation), 50x cheaper
+            from scipy.special import chdtrc  # = scipy.stats.chi2.sf (its implementation), 50x cheaper
 
             p_value = float(chdtrc(dof, chi2))
         status = "generalized_least_squares" if u == 0 else "weighted_gauss_newton"

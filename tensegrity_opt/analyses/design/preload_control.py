@@ -42,8 +42,8 @@ import numpy as np
 from ...errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics.inverse_statics import inverse_statics
-from ...numerics.layout import rest_lengths
 from ...numerics.inverse_statics import layouts as step_layouts
+from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit

@@ -25,8 +25,13 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import (InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError,
-                       UnreachableTargetError)
+from ...errors import (
+    InfeasibleDesignError,
+    InvalidParameterError,
+    TensegrityError,
+    TimeLimitError,
+    UnreachableTargetError,
+)
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...numerics.layout import rest_lengths

@@ -44,8 +44,16 @@ from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium
 from ..equilibria.stiffness import cartesian_stiffness
-from .preloads import (PreloadDesign, checked_start, forward_check, nlp_pose, preloads_for_pose, rest_length_bounds,
-                       spring_bounds, stability_margin)
+from .preloads import (
+    PreloadDesign,
+    checked_start,
+    forward_check,
+    nlp_pose,
+    preloads_for_pose,
+    rest_length_bounds,
+    spring_bounds,
+    stability_margin,
+)
 
 __all__ = ["StiffnessDesign", "preloads_for_stiffness", "STIFFNESS_KEYS", "EXACT_TOL", "K_TOL"]
 

@@ -19,8 +19,13 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.linalg as sla
 
-from ...errors import (InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError,
-                       TensegrityError)
+from ...errors import (
+    InfeasibleDesignError,
+    InvalidParameterError,
+    SolverError,
+    StraightNotEquilibriumError,
+    TensegrityError,
+)
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from ...outcome import Outcome, SolverInfo, freeze

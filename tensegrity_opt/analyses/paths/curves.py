@@ -60,10 +60,10 @@ from ...serialize import nullable, number, numbers
 from ...timelimit import check_time
 from ..equilibria.all_equilibria import find_equilibria
 from ..equilibria.buckling import critical_force
-from .continuation import BranchPoints, follow
 from ..equilibria.equilibrium import Equilibrium, straight_equilibrium
 from ..equilibria.least_energy import WELLS_MAX, search_stable, solve_equilibrium
 from ..equilibria.seeds import seed_starts, well_seeds
+from .continuation import BranchPoints, follow
 
 __all__ = ["Curve", "CurveEnd", "Jump", "force_deflection"]
 

@@ -28,9 +28,9 @@ from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome
 from ...serialize import nullable, number, numbers
+from ..equilibria.equilibrium import Equilibrium, check_q0
 from .branches import Branch, trace_branch
 from .control import Control
-from ..equilibria.equilibrium import Equilibrium, check_q0
 
 __all__ = ["LimitLoad", "limit_load", "check_max_load", "DEFAULT_MAX_LOAD"]
 

@@ -34,7 +34,8 @@ LIMIT_MARGIN = 1e-6
 NEWTON_TOL = 1e-11
 #: Corrector iterations allowed per step.
 NEWTON_ITER = 12
-#: Relative eigenvalue tolerance of the stability classification (as :mod:`tensegrity_opt.analyses.equilibria.stability`).
+#: Relative eigenvalue tolerance of the stability classification (as
+#: :mod:`tensegrity_opt.analyses.equilibria.stability`).
 EIG_REL_TOL = 1e-9
 
 

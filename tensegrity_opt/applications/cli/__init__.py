@@ -1,4 +1,5 @@
-"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|atlas|plan|simulate|force-estimate|plot|sweep ...``.
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|atlas|plan|
+simulate|force-estimate|plot|sweep ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
@@ -26,11 +27,21 @@ import numpy as np
 from ... import __version__
 from ...analyses.equilibria.all_equilibria import find_equilibria
 from ...analyses.equilibria.buckling import critical_force
-from ...analyses.paths.curves import force_deflection
 from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
 from ...analyses.equilibria.least_energy import solve_equilibrium
-from .common import (Parser, add_command, add_curve_options, add_deflection_options, add_manipulator_options, eq_table,
-                     finite_float, fmt_q, note, run_command)
+from ...analyses.paths.curves import force_deflection
+from .common import (
+    Parser,
+    add_command,
+    add_curve_options,
+    add_deflection_options,
+    add_manipulator_options,
+    eq_table,
+    finite_float,
+    fmt_q,
+    note,
+    run_command,
+)
 from .control import add_control_parsers
 from .paths import add_path_parsers
 from .plot import add_plot_parser
@@ -112,12 +123,14 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
 
     sp = command("equilibrium", _cmd_equilibrium, "least-energy stable equilibrium for a tip deflection or force")
     sp.add_argument("--dx", type=finite_float, default=0.1,
-                    help="tip deflection along the chain (length; > 0 shortens it): the tip is held at (2 sum b - dx, dy)")
+                    help="tip deflection along the chain (length; > 0 shortens it): the tip is held at "
+                         "(2 sum b - dx, dy)")
     sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
     sp.add_argument("--fx", type=finite_float, default=None,
                     help="prescribe the tip force instead of the deflection (force; < 0 compresses; "
                          "0 when only --fy is given)")
-    sp.add_argument("--fy", type=finite_float, default=None, help="sideways tip force (force; 0 when only --fx is given)")
+    sp.add_argument("--fy", type=finite_float, default=None,
+                    help="sideways tip force (force; 0 when only --fx is given)")
 
     sp = command("equilibria", _cmd_equilibria, "every equilibrium (minima, saddles, maxima) for a tip deflection")
     add_deflection_options(sp)

@@ -13,8 +13,13 @@ import math
 import os
 import sys
 
-from ...errors import (InvalidParameterError, NonFiniteResult, StraightNotEquilibriumError, TensegrityError,
-                      UnstableStraightError)
+from ...errors import (
+    InvalidParameterError,
+    NonFiniteResult,
+    StraightNotEquilibriumError,
+    TensegrityError,
+    UnstableStraightError,
+)
 from ...model.manipulator import Manipulator
 
 __all__ = ["add_manipulator_options", "add_analysis_options", "add_command", "add_deflection_options",
@@ -156,7 +161,8 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
     g.add_argument("--n", type=segment_count, default=4, help=f"number of identical segments (1 to {MAX_SEGMENTS})")
     g.add_argument("--a", type=finite_float, default=1.0, help="triangle half-height a (length)")
-    g.add_argument("--b", type=finite_float, default=1.0, help="triangle half-length b (length; a segment is 2 b long straight)")
+    g.add_argument("--b", type=finite_float, default=1.0,
+                   help="triangle half-length b (length; a segment is 2 b long straight)")
     g.add_argument("--k", type=finite_float, default=1.0, help="spring stiffness (force / length)")
     g.add_argument("--L0", type=finite_float, default=1.0, help="spring rest length (length)")
     g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')

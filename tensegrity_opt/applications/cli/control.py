@@ -35,15 +35,23 @@ from typing import Any
 import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
+from ...analyses.design.load_capacity import load_capacity
 from ...analyses.design.preload_control import PreloadPlan, preloads_for_trajectory
 from ...analyses.design.preloads import OBJECTIVES
-from ...analyses.paths.simulation import Simulation, simulate
-from ...analyses.design.load_capacity import load_capacity
 from ...analyses.design.stiffness_shaping import preloads_for_stiffness
+from ...analyses.paths.simulation import Simulation, simulate
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from .common import (add_command, at_least_two, finite_float, fmt_q, joint_index,
-                     non_negative_float, positive_float, positive_int)
+from .common import (
+    add_command,
+    at_least_two,
+    finite_float,
+    fmt_q,
+    joint_index,
+    non_negative_float,
+    positive_float,
+    positive_int,
+)
 
 __all__ = ["add_control_parsers", "add_plan_options", "add_simulate_options", "plan_from_args",
            "simulation_from_args", "load_cycle", "read_rows"]
@@ -340,7 +348,8 @@ def _cmd_stiffness(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     d = preloads_for_stiffness(m, tuple(args.target), K_desired=K,
                                eig_bounds=None if args.eig_bounds is None else tuple(args.eig_bounds),
                                load=tuple(args.load), margin=args.margin)
-    lines = [f"Rest lengths for the tip at ({args.target[0]:g}, {args.target[1]:g}) under {tuple(args.load)}, n = {m.n}: "
+    lines = [f"Rest lengths for the tip at ({args.target[0]:g}, {args.target[1]:g}) under {tuple(args.load)}, "
+             f"n = {m.n}: "
              f"{d.solver.status}" + ("" if d.exact or K is None else f", not exact (residual {d.residual:.3g})"),
              f"K = [[{d.K[0, 0]:.6g}, {d.K[0, 1]:.6g}], [{d.K[1, 0]:.6g}, {d.K[1, 1]:.6g}]] (force / length), "
              f"eigenvalues {_fmt_g(d.eigenvalues)}, margin {d.margin:.4g}",
@@ -355,7 +364,8 @@ def _cmd_load_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, s
     lines = [f"Load capacity of the rest pose (n = {m.n}, {args.boundary} tip, base load {tuple(args.base)}), "
              f"up to {args.max_load:g} more:", "  angle (deg)    load        kind          why"]
     for a, ld, k, r in zip(cap.angles, cap.loads, cap.kinds, cap.reasons):
-        lines.append(f"  {math.degrees(a):9.2f}   {'-' if not math.isfinite(ld) else f'{ld:.6g}':>10}  {k:12}  {r or ''}")
+        load = "-" if not math.isfinite(ld) else f"{ld:.6g}"
+        lines.append(f"  {math.degrees(a):9.2f}   {load:>10}  {k:12}  {r or ''}")
     return cap.to_dict, "\n".join(lines)
 
 

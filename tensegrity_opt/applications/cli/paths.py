@@ -25,18 +25,26 @@ from typing import Any
 
 import numpy as np
 
+from ...analyses.equilibria.least_energy import solve_equilibrium
+from ...analyses.equilibria.rest import find_equilibria_under_force
 from ...analyses.paths.atlas import StabilityAtlas, stability_atlas
 from ...analyses.paths.boundaries import stability_boundary
 from ...analyses.paths.branches import Branch, trace_branch
 from ...analyses.paths.control import Control
 from ...analyses.paths.diagram import bifurcation_diagram
-from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.paths.limit_load import limit_load
-from ...analyses.equilibria.rest import find_equilibria_under_force
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from .common import (add_command, at_least_two, eq_table, finite_float, fmt_q, non_negative_int,
-                     positive_float, positive_int)
+from .common import (
+    add_command,
+    at_least_two,
+    eq_table,
+    finite_float,
+    fmt_q,
+    non_negative_int,
+    positive_float,
+    positive_int,
+)
 
 __all__ = ["add_path_parsers", "add_control_options", "add_start_options", "add_limit_load_options",
            "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args",

@@ -48,11 +48,27 @@ from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
 from ..sweeps.critical_map import critical_load_map
 from ..sweeps.spec import DESIGN_VARIABLES
-from .common import (HELP_FORMAT, Parser, add_analysis_options, add_curve_options, add_deflection_options, note,
-                     positive_int, run_command)
+from .common import (
+    HELP_FORMAT,
+    Parser,
+    add_analysis_options,
+    add_curve_options,
+    add_deflection_options,
+    note,
+    positive_int,
+    run_command,
+)
 from .control import add_plan_options, add_simulate_options, plan_from_args, simulation_from_args
-from .paths import (add_atlas_options, add_boundary_options, add_branch_options, add_limit_load_options,
-                    atlas_from_args, boundary_from_args, branches_from_args, limit_load_from_args)
+from .paths import (
+    add_atlas_options,
+    add_boundary_options,
+    add_branch_options,
+    add_limit_load_options,
+    atlas_from_args,
+    boundary_from_args,
+    branches_from_args,
+    limit_load_from_args,
+)
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
@@ -182,7 +198,8 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
     plots = _plots()
     r = limit_load_from_args(args, m)
     fig = plots.plot_limit_load(r, m=m)
-    return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load, "reason": None if r.kind != "none" else r.status,
+    return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load,
+                                             "reason": None if r.kind != "none" else r.status,
                                              "quasi_buckling_load": r.quasi_buckling_load})
 
 
