@@ -73,6 +73,8 @@ class PathLayouts(NamedTuple):
     fold: Layout
     #: the same continued in the second parameter: ``(q, F, t, phi, p)``
     fold_curve: Layout
+    #: the fold system's rows: ``R`` (n + 2), ``Rz_phi`` (``R_z phi``, n + 2) and ``norm`` (``l . phi - 1``)
+    fold_rows: Layout
 
 
 @lru_cache(maxsize=None)
@@ -80,7 +82,8 @@ def layouts(n: int) -> PathLayouts:
     """The layouts of the path system's vectors for ``n`` segments."""
     return PathLayouts(point=Layout(q=n, F=2, t=(), s=()), branch_point=Layout(q=n, F=2, t=()), z=Layout(q=n, F=2),
                        rows=Layout(grad=n, control=2), parameters=chain_parameters(n),
-                       fold=Layout(q=n, F=2, t=(), phi=n + 2), fold_curve=Layout(q=n, F=2, t=(), phi=n + 2, p=()))
+                       fold=Layout(q=n, F=2, t=(), phi=n + 2), fold_curve=Layout(q=n, F=2, t=(), phi=n + 2, p=()),
+                       fold_rows=Layout(R=n + 2, Rz_phi=n + 2, norm=()))
 
 
 @lru_cache(maxsize=None)

@@ -170,12 +170,11 @@ class StabilityBoundary(Outcome):
 
 class _Fold:
     """The Moore-Spence system of one problem in ``Y = (z, t, phi, p)`` (the blocks ``q, F, t, phi, p`` of
-    the path system's ``fold_curve`` layout); its rows ``R`` (N), ``R_z phi`` (N) and ``l . phi = 1``."""
+    the path system's ``fold_curve`` layout); its rows ``R``, ``R_z phi`` and ``l . phi = 1`` (``fold_rows``)."""
 
     def __init__(self, prob: PathProblem, ell: np.ndarray, p_scale: float) -> None:
         self.prob, self.ell = prob, ell
-        N = prob.N
-        self.N = N
+        self.rows = prob.ps.layouts.fold_rows
         self.at = at = prob.ps.layouts.fold_curve
         self.x_at = at.span("q", "t")
         pt = prob.ps.point                  # the columns of the path system's Jacobians
@@ -187,24 +186,24 @@ class _Fold:
         return Y[self.x_at], Y[self.at["phi"]], float(Y[self.at["p"]])
 
     def G(self, Y):
-        prob, N, at = self.prob, self.N, self.at
+        prob, at, rows = self.prob, self.at, self.rows
         x, ph, p = self.split(Y)
         R, Rx, *_ = prob.ps.evaluate(prob.full(x, p), prob.p, prob.dp, prob.dp2, prob.ctl)
         Rzv, dRzv, _ = prob.ps.second(prob.full(x, p), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
-        G = np.concatenate([R, Rzv, [self.ell @ ph - 1.0]])
-        M = np.zeros((2 * N + 1, at.size))
-        M[:N, self.x_at] = Rx[:, self.x_cols]
-        M[:N, at["p"]] = Rx[:, self.p_col]
-        M[N:2 * N, self.x_at] = dRzv[:, self.x_cols]
-        M[N:2 * N, at["p"]] = dRzv[:, self.p_col]
-        M[N:2 * N, at["phi"]] = Rx[:, self.z_cols]
-        M[2 * N, at["phi"]] = self.ell
+        G = rows.pack(R=R, Rz_phi=Rzv, norm=self.ell @ ph - 1.0)
+        M = np.zeros((rows.size, at.size))
+        M[rows["R"], self.x_at] = Rx[:, self.x_cols]
+        M[rows["R"], at["p"]] = Rx[:, self.p_col]
+        M[rows["Rz_phi"], self.x_at] = dRzv[:, self.x_cols]
+        M[rows["Rz_phi"], at["p"]] = dRzv[:, self.p_col]
+        M[rows["Rz_phi"], at["phi"]] = Rx[:, self.z_cols]
+        M[rows["norm"], at["phi"]] = self.ell
         return G, M
 
     def residual(self, G) -> float:
-        prob, N = self.prob, self.N
-        return max(float(np.abs(G[:N] * prob.rs).max()), float(np.abs(G[N:2 * N] * prob.rs).max()),
-                   abs(float(G[-1])))
+        prob, rows = self.prob, self.rows
+        return max(float(np.abs(G[rows["R"]] * prob.rs).max()), float(np.abs(G[rows["Rz_phi"]] * prob.rs).max()),
+                   abs(float(G[rows["norm"]])))
 
     def correct(self, Y, a, b, iters: int = 15):
         Y = Y.copy()

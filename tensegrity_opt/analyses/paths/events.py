@@ -164,8 +164,7 @@ def moore_spence(prob: PathProblem, x: np.ndarray, phi: np.ndarray, *, s: float 
 
     Returns ``(x, phi)`` converged, or ``None``. Regular at a quadratic fold (not at a branch point).
     """
-    N = prob.N
-    at, col = prob.ps.layouts.fold, prob.point
+    at, rows, col = prob.ps.layouts.fold, prob.ps.layouts.fold_rows, prob.point
     x_at, z_at = at.span("q", "t"), col.span("q", "F")
     ell = phi / float(phi @ phi)
     y = at.pack(**col.unpack(x), phi=phi / float(ell @ phi))
@@ -173,15 +172,14 @@ def moore_spence(prob: PathProblem, x: np.ndarray, phi: np.ndarray, *, s: float 
         xs, ph = y[x_at], y[at["phi"]]
         R, Rx = prob.eval(xs, s)
         Rzv, dRzv, _ = prob.ps.second(prob.full(xs, s), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
-        G = np.concatenate([R, Rzv, [ell @ ph - 1.0]])
+        G = rows.pack(R=R, Rz_phi=Rzv, norm=ell @ ph - 1.0)
         if prob.residual(R) <= NEWTON_TOL and float(np.abs(Rzv * prob.rs).max()) <= 1e-10:
             return xs, ph
-        # rows: R (N), R_z phi (N), l . phi = 1; columns: the blocks of the fold system's unknowns
-        M = np.zeros((2 * N + 1, at.size))
-        M[:N, x_at] = Rx
-        M[N:2 * N, x_at] = dRzv[:, prob.ps.point.span("q", "t")]
-        M[N:2 * N, at["phi"]] = Rx[:, z_at]
-        M[2 * N, at["phi"]] = ell
+        M = np.zeros((rows.size, at.size))
+        M[rows["R"], x_at] = Rx
+        M[rows["Rz_phi"], x_at] = dRzv[:, prob.ps.point.span("q", "t")]
+        M[rows["Rz_phi"], at["phi"]] = Rx[:, z_at]
+        M[rows["norm"], at["phi"]] = ell
         try:
             dy = np.linalg.solve(M, -G)
         except np.linalg.LinAlgError:
