@@ -441,7 +441,8 @@ class ChainSolver:
 
     # ---------------------------------------------------------------- continuation (dense solvers)
     def batch_continue(self, targets: np.ndarray, z0: np.ndarray) -> Continuation:
-        """Newton continuation along ``targets`` (N x 2 tip positions) from ``z0 = (phi, F)``, in compiled code.
+        """Newton continuation along ``targets`` (N x 2 tip positions) from ``z0 = (phi, F)``
+        (:func:`.layout.equilibrium_unknowns`), in compiled code.
 
         Each point starts from the previous point's solution. Chains with kernels
         (``n <= kernels.KERNEL_MAX``) run ``kernels.CONT_ITER`` damped Newton iterations per point

@@ -61,6 +61,7 @@ import numpy as np
 from ...errors import InvalidParameterError, SolverError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
+from ...numerics.layout import equilibrium_unknowns
 from ...outcome import SolverInfo
 from ...timelimit import check_time
 from ..equilibria.equilibrium import (
@@ -173,7 +174,7 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
     scale) inside the physical range — the first failure ends the prefix — classified.
     """
     mdl = chain_solver(m)
-    c = mdl.batch_continue(targets, np.concatenate([np.cumsum(q0), F0]))
+    c = mdl.batch_continue(targets, equilibrium_unknowns(m.n).pack(phi=np.cumsum(q0), F=F0))
     Q = np.diff(np.hstack([np.zeros((c.Z.shape[0], 1)), c.phi]), axis=1)
     tol = 1e-9 * max(1.0, c.torque_scale)        # the residual is in the solver's units
     ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(c.Z), axis=1)
