@@ -37,6 +37,8 @@ class Layout:
             self._ends[name] = (at, at + width)
             at += width
         self.size = at
+        self._names = self.places.keys()
+        self._items = tuple(self.places.items())        # packed and read on hot paths: no dict view per call
 
     def __len__(self) -> int:
         return self.size
@@ -61,31 +63,32 @@ class Layout:
         x = np.asarray(x)
         if x.shape[-1] != self.size:
             raise ValueError(f"expected {self.size} entries along the last axis, got {x.shape[-1]}")
-        return {name: x[..., place] for name, place in self.places.items()}
+        return {name: x[..., place] for name, place in self._items}
 
     def pack(self, **values) -> np.ndarray:
         """The flat vector from every block by name (a number fills its block)."""
-        self._check(values)
+        if values.keys() != self._names:
+            self._refuse(values)
         out = np.empty(self.size)
-        for name, place in self.places.items():
+        for name, place in self._items:
             out[place] = values[name]
         return out
 
     def stack(self, rows: int, **values) -> np.ndarray:
         """``rows`` flat vectors as the rows of a matrix, from every block's rows by name (``rows`` values of a
         scalar block, ``rows x size`` of a vector block; a number fills its block in every row)."""
-        self._check(values)
+        if values.keys() != self._names:
+            self._refuse(values)
         out = np.empty((rows, self.size))
-        for name, place in self.places.items():
+        for name, place in self._items:
             out[:, place] = values[name]
         return out
 
-    def _check(self, values: dict) -> None:
-        if values.keys() != self.places.keys():
-            missing = self.places.keys() - values.keys()
-            unknown = values.keys() - self.places.keys()
-            raise ValueError(f"pack needs exactly the blocks {list(self.places)}: missing {sorted(missing)}, "
-                             f"unknown {sorted(unknown)}")
+    def _refuse(self, values: dict) -> None:
+        missing = self._names - values.keys()
+        unknown = values.keys() - self._names
+        raise ValueError(f"pack needs exactly the blocks {list(self.places)}: missing {sorted(missing)}, "
+                         f"unknown {sorted(unknown)}")
 
 
 @lru_cache(maxsize=None)
