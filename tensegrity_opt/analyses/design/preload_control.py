@@ -278,9 +278,13 @@ class PreloadController:
         mu = self.mu.get(angle)
         if mu is None or mu.size != inv.rows:
             mu = np.zeros(inv.rows)
-        at = inv.unknowns
-        y0 = at.pack(q=self.q, ell=self.ell, mu=mu)
-        tgt = inv.target.pack(tip=target, angle=float(end_angle) if angle else 0.0)
+        # the step's vectors filled block by block at the layouts' places (on the control loop's path: no
+        # keyword packing)
+        at, tg = inv.unknowns.places, inv.target.places
+        y0 = np.empty(inv.unknowns.size)
+        y0[at["q"]], y0[at["ell"]], y0[at["mu"]] = self.q, self.ell, mu
+        tgt = np.empty(inv.target.size)
+        tgt[tg["tip"]], tgt[tg["angle"]] = target, float(end_angle) if angle else 0.0
         y, resid, iters, H, E, tip, KKT = inv.step(y0, self.geo, F, tgt, self.ell, self.w, self.q, Q_WEIGHT,
                                                    NEWTON_TOL)
         n = self.n
