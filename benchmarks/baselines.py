@@ -3,7 +3,7 @@
 Only :class:`tensegrity_opt.Manipulator` is used, for its *parameters* (``a, b, k1, k2, L1_0,
 L2_0`` per segment) and for the target ``(2 sum(b) - dx, dy)``. Energy, gradient, Hessian, tip
 and tip Jacobian are re-implemented here in relative angles ``q`` following
-``shared/spec/conventions.md``:
+the model's conventions (``docs/model.md``):
 
 * ``c = hypot(a, b)``, ``beta = atan2(a, b)``, ``L1 = 2c cos(beta + q/2)``,
   ``L2 = 2c cos(beta - q/2)``, ``E = sum k1/2 (L1 - L1_0)^2 + k2/2 (L2 - L2_0)^2``;

@@ -5,10 +5,10 @@ of every multistable family (bistable uniform, heterogeneous bistable, monotonic
 segments mixed, asymmetric preloads; ``n = 2..5``; targets over the workspace, ``dy != 0`` in most),
 solves each target's polynomial KKT system with PHCpack (:mod:`tensegrity_opt.numerics.homotopy`), keeps the
 real roots inside the physical range, polishes each with the *independent* reference model
-(``tests/reference_model.py``: its own Newton, its own Hessians; it does not import the library) and
+(``tests/support/reference_model.py``: its own Newton, its own Hessians; it does not import the library) and
 records ``q``, ``F``, the energy and the Morse index from the reference model's reduced Hessian.
 Only certified solves (every path ended) whose roots all polish are written. The library's search
-is then tested against this file (``tests/test_completeness.py``). Which equilibria exist comes from
+is then tested against this file (``tests/analyses/equilibria/test_completeness.py``). Which equilibria exist comes from
 a different method than the search (the homotopy, whose polynomial system is library code: it is
 checked independently by the n = 3 brute-force tests and the residual test there); every number
 (``q``, ``F``, energy, Morse index) comes from the reference model.
@@ -28,7 +28,7 @@ import tensegrity_opt as to
 from tensegrity_opt.numerics.homotopy import real_configurations, solve_homotopy
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tests"))
+sys.path.insert(0, str(ROOT / "tests" / "support"))
 import reference_model as ref  # noqa: E402
 
 FAMILIES = ("bistable", "heterogeneous", "mixed", "asymmetric")

@@ -2,7 +2,7 @@
 
 ``python -m benchmarks.search_check [--cases 48] [--seed 13] [--n 6 7 8 10] [--starts 300] [--eq-starts 2000]``
 
-Issue 13's "measured everywhere" for chains longer than the homotopy certifies in practical time
+The README's "measured" completeness claim for chains longer than the homotopy certifies in practical time
 (``n >= 6``: the homotopy tracks 43648 paths at n = 6, ~12 min here). Random
 chains that are *not* monotonic, the families in turn: ``bistable`` (uniform segments, ``K < 0``:
 a in [0.4, 0.8], b = 1, k in [0.5, 2], L0 = u 2 (b^2 - a^2) / b with u in [0.35, 0.9]),
@@ -12,7 +12,7 @@ segments, drawn at random, monotonic: L0 = 2 (b^2 - a^2) / b + [0.2, 1.0]) and `
 ``--n``. Targets: dx = U(0.02, 0.5) of the straight length, dy = U(-0.3, 0.3) of it in 2/3 of the
 cases, 0 otherwise; targets ``check_reachable`` rejects are redrawn.
 
-The reference never calls the library's solvers: it is ``tests/reference_model.py`` (which does not
+The reference never calls the library's solvers: it is ``tests/support/reference_model.py`` (which does not
 import ``tensegrity_opt``; only its O(n^2)-loop tip Hessian is replaced here by an equal vectorised
 one, checked at start-up) with SciPy:
 
@@ -43,7 +43,7 @@ genuine): ``missed`` and ``extra`` are lower bounds, only found points are ever 
 
 Cost: the reference dominates. ``--cases 24 --starts 200 --eq-starts 800`` took 337 s on one core
 (8-22 s of reference per case; the library ~0.2-0.6 s per call); the defaults (48 cases, 300 / 2000
-starts) cost roughly 4x that. That run (2026-12-01, seed 13, the library as it was that day): solve
+starts) cost roughly 4x that. That run (seed 13): solve
 21 same, 1 higher (n = 7 heterogeneous), 0 lower, 2 none (n = 10); find missed 207 stable and 373
 unstable of 1049 reference equilibria (no stable one missed at n = 6, some at every n >= 7), 844 extra,
 0 bogus.
@@ -66,7 +66,7 @@ import scipy.optimize as so
 import tensegrity_opt as to
 
 ROOT = Path(__file__).resolve().parents[1]
-sys.path.insert(0, str(ROOT / "tests"))
+sys.path.insert(0, str(ROOT / "tests" / "support"))
 import reference_model as ref  # noqa: E402  (independent of the library: never imports it)
 
 FAMILIES = ("bistable", "heterogeneous", "mixed", "asymmetric")

@@ -8,7 +8,7 @@ One client, one step at a time (a control loop: send, wait for the answer, send 
 * ``stream inverse``: mode ``inverse``, one ``{"type": "step", "target"}`` per step under a dead load
   (``PreloadController.step``: the compiled least-change Newton step);
 * ``REST local``: ``POST /v1/equilibrium`` with ``q0`` = the previous answer and ``"local": true`` per step,
-  the REST API's control step (the solver process of ``service/lane.py``), on the same trajectory as
+  the REST API's control step (the solver process of ``service/execution/processes.py``), on the same trajectory as
   ``stream track``, over one keep-alive connection (the minimal HTTP client of :mod:`benchmarks.http_load`);
 * ``library``: the same calls in this process (no transport): what the answer itself costs.
 
@@ -30,8 +30,8 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.paths.continuation import Tracker
 from tensegrity_opt.analyses.design.preload_control import PreloadController
+from tensegrity_opt.analyses.paths.continuation import Tracker
 
 from .http_load import _Connection, _host_port, json_body, own_server
 

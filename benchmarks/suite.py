@@ -6,7 +6,7 @@ target | met?) with numbered notes, and writes the same data as JSON (default
 machine information. Every time is a median over repeated runs after a warm-up
 (``time.perf_counter``); every baseline is measured in the same run.
 
-Cases (the issue's targets):
+Cases (each with its target):
 
 1. n = 4 local solve warm-started from the solution 0.001 away: <= 0.2 ms and >= 20x SLSQP.
 2. n = 4 global solve, not warm-started (solver built): <= 5 ms; vs the paper's energy method
@@ -559,7 +559,8 @@ def case6(cfg: Config) -> list[Row]:
         Row("6", "critical load (guided) - baseline row is n=2000", 2000, o2, "ms",
             "dense reduced eigh (null_space + eigh subset), n=2000", d, ratio=d / o2, target="(info)", met=None,
             samples=ours2, baseline_samples=dense,
-            notes=[f"n=2000, {nm} lowest loads; dense vs ours lowest load rel diff {rel(float(w[0]), float(bk2.loads[0])):.1e}"]),
+            notes=[f"n=2000, {nm} lowest loads; dense vs ours lowest load rel diff "
+                   f"{rel(float(w[0]), float(bk2.loads[0])):.1e}"]),
     ]
 
 
@@ -850,7 +851,8 @@ def case10(cfg: Config) -> list[Row]:
                         median_ms(base_t) if base_t else None,
                         ratio=(median_ms(base_t) / median_ms(ts)) if base_t else None, target="(info)", samples=ts,
                         baseline_samples=base_t,
-                        notes=[f"{name}: kind {res.kind}, load {val:.6g}" + (f" ({res.status})" if res.kind == "none" else "")
+                        notes=[f"{name}: kind {res.kind}, load {val:.6g}"
+                               + (f" ({res.status})" if res.kind == "none" else "")
                                + (f"; quasi-buckling load {res.quasi_buckling_load:.6g}"
                                   if res.quasi_buckling_load is not None else "")
                                + (f"; the step-and-bisect loop: {base_val:.6g}" if base_t and base_val is not None
@@ -917,7 +919,8 @@ def _atlas_rows(cfg: Config) -> list[Row]:
             rows.append(Row("10", f"atlas crossing located: {name}", m.n, per, "ms",
                             "bisection of the stable count to 1e-6 (find_equilibria per trial)", tb * 1e3,
                             ratio=tb * 1e3 / per, target="(info)", samples=[per / 1e3], baseline_samples=[tb],
-                            notes=[f"{name}: the fold on edge {c.edge} by the continuation at ({c.dx:.9f}, {c.dy:.9f}), "
+                            notes=[f"{name}: the fold on edge {c.edge} by the continuation at "
+                                   f"({c.dx:.9f}, {c.dy:.9f}), "
                                    f"by bisection at ({p[0]:.9f}, {p[1]:.9f}); ours is the edge time per crossing "
                                    "(every crossing of the grid located by the edge continuation)"]))
     return rows

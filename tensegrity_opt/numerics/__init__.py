@@ -1,7 +1,7 @@
 """The numerics: the only package importing CasADi (the fence is checked by import-linter,
 ``pyproject.toml`` ``[tool.importlinter]``).
 
-The analyses (:mod:`tensegrity_opt.analyses`) talk to it through three doors, never to CasADi itself:
+The analyses (:mod:`tensegrity_opt.analyses`) talk to it through these doors, never to CasADi itself:
 
 * :func:`chain_solver` ``(m)`` -> this thread's :class:`ChainSolver` for the manipulator — local Newton
   solves (:meth:`~ChainSolver.newton_kkt`, :meth:`~ChainSolver.newton_kkt_seeds`,
@@ -12,6 +12,9 @@ The analyses (:mod:`tensegrity_opt.analyses`) talk to it through three doors, ne
   only (:class:`LocalResult`, :class:`SeedResults`, :class:`Continuation`);
 * the design NLP builders :func:`buckling_design_nlp`, :func:`preload_nlp` and :func:`stiffness_nlp`
   (:mod:`.design_nlp`), each NLP with named layouts of its variables, rows and parameters (:class:`Layout`);
+* the compiled systems of the loading paths (:func:`.path_system.path_system`) and of the control step
+  (:func:`.inverse_statics.inverse_statics`), each with the named layouts of its vectors (:mod:`.layout`: the
+  analyses pack and read every solver vector by name, never by offset);
 * when two configurations are the same equilibrium (:mod:`.distinct`: :data:`SAME_Q`, :func:`same`,
   :func:`distinct`, :func:`distinct_rows`);
 * the polynomial homotopy (:mod:`.homotopy`, PHCpack; no CasADi), with the polish of its roots

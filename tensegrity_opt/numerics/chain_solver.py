@@ -441,7 +441,8 @@ class ChainSolver:
 
     # ---------------------------------------------------------------- continuation (dense solvers)
     def batch_continue(self, targets: np.ndarray, z0: np.ndarray) -> Continuation:
-        """Newton continuation along ``targets`` (N x 2 tip positions) from ``z0 = (phi, F)``, in compiled code.
+        """Newton continuation along ``targets`` (N x 2 tip positions) from ``z0 = (phi, F)``
+        (:func:`.layout.equilibrium_unknowns`), in compiled code.
 
         Each point starts from the previous point's solution. Chains with kernels
         (``n <= kernels.KERNEL_MAX``) run ``kernels.CONT_ITER`` damped Newton iterations per point
@@ -562,7 +563,8 @@ class ChainSolver:
 
     def kkt_parameter_jacobian(self, q: np.ndarray, force: np.ndarray,
                                target: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """KKT Jacobian w.r.t. ``(phi, F)`` and w.r.t. the parameters (``m.params`` order), at a solution."""
+        """KKT Jacobian w.r.t. ``(phi, F)`` (:func:`.layout.equilibrium_unknowns`) and w.r.t. the parameters
+        (``m.params`` order, :func:`.layout.chain_parameters`), at a solution."""
         f = self.functions
         z = np.concatenate([np.cumsum(q), force])
         _, Jz = f.kkt(z, self.params, target)

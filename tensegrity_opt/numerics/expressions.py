@@ -27,7 +27,7 @@ def _q_of_phi(phi):
 def segment_energy(q, a, b, k1, k2, L10, L20, *, beta=None, c=None):
     """Spring lengths and elastic energy of the segments at relative angles ``q`` (SX or MX columns).
 
-    Returns ``(L1, L2, E)`` (conventions.md): ``L1,2 = 2 c cos(beta +- q/2)`` per segment and
+    Returns ``(L1, L2, E)`` (``docs/model.md``): ``L1,2 = 2 c cos(beta +- q/2)`` per segment and
     ``E = 1/2 sum(k1 (L1 - L10)^2 + k2 (L2 - L20)^2)``. ``beta = atan2(a, b)`` and
     ``c = sqrt(a^2 + b^2)`` may be given (symbols computed once elsewhere) instead of being part
     of every evaluation.
@@ -51,7 +51,7 @@ def chain_expressions(phi, a, b, k1, k2, L10, L20, *, beta=None, c=None):
     """The chain's model in absolute angles as CasADi expressions (SX or MX).
 
     Returns ``(q, L1, L2, E, tip)``: relative angles, spring lengths, elastic energy and tip
-    position (conventions.md); every argument is a column of length ``n``. ``beta`` and ``c``
+    position (``docs/model.md``); every argument is a column of length ``n``. ``beta`` and ``c``
     as in :func:`segment_energy`.
     """
     q = _q_of_phi(phi)

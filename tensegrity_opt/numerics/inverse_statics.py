@@ -25,6 +25,7 @@ where one is active.
 from __future__ import annotations
 
 from functools import lru_cache
+from typing import NamedTuple
 
 import casadi as ca
 import numpy as np
@@ -36,30 +37,48 @@ from .kernels import KERNEL_MAX
 from .layout import Layout
 from .per_thread import per_thread
 
-__all__ = ["InverseStatics", "inverse_statics", "ITER"]
+__all__ = ["InverseStatics", "inverse_statics", "layouts", "StepLayouts", "ITER"]
 
 #: Newton iterations of one step at most.
 ITER = 25
 
 
+class StepLayouts(NamedTuple):
+    """The step's inputs by name (:func:`layouts`)."""
+
+    #: the unknowns ``y``: joint angles ``q``, rest lengths ``ell`` (segment by segment), multipliers ``mu`` of
+    #: the ``n + 2`` task rows (``n + 3`` with the angle row)
+    unknowns: Layout
+    #: the geometry ``geo``: ``a, b, k1, k2``
+    geometry: Layout
+    #: the ``target``: the ``tip`` and the last link's ``angle`` (read only with the angle row)
+    target: Layout
+
+
+@lru_cache(maxsize=None)
+def layouts(n: int, angle: bool) -> StepLayouts:
+    """The layouts of the step's inputs for ``n`` segments (``angle``: with the end-angle row)."""
+    return StepLayouts(Layout(q=n, ell=2 * n, mu=n + 2 + (1 if angle else 0)), Layout(a=n, b=n, k1=n, k2=n),
+                       Layout(tip=2, angle=()))
+
+
 @lru_cache(maxsize=None)
 def _graph(n: int, angle: bool) -> ca.Function:
-    m = n + 2 + (1 if angle else 0)
-    N = 3 * n + m
-    y = ca.SX.sym("y", N)
-    q, ell, mu = y[:n], y[n:3 * n], y[3 * n:]
-    geo = ca.SX.sym("geo", 4 * n)                    # a, b, k1, k2
-    a, b, k1, k2 = (geo[i * n:(i + 1) * n] for i in range(4))
-    F, target = ca.SX.sym("F", 2), ca.SX.sym("target", 3)
+    unknowns, geometry, target_at = layouts(n, angle)
+    y = ca.SX.sym("y", unknowns.size)
+    q, ell, mu = (y[unknowns[k]] for k in ("q", "ell", "mu"))
+    geo = ca.SX.sym("geo", geometry.size)
+    a, b, k1, k2 = (geo[geometry[k]] for k in ("a", "b", "k1", "k2"))
+    F, target = ca.SX.sym("F", 2), ca.SX.sym("target", target_at.size)
     ell_prev, w, q_prev = ca.SX.sym("ell_prev", 2 * n), ca.SX.sym("w", 2 * n), ca.SX.sym("q_prev", n)
     eps = ca.SX.sym("eps")
     L10, L20 = ell[0::2], ell[1::2]
     _, _, E = segment_energy(q, a, b, k1, k2, L10, L20)
     tip = tip_expression(ca.cumsum(q), b)
     J = ca.jacobian(tip, q)
-    g = [ca.gradient(E, q) - J.T @ F, tip - target[:2]]
+    g = [ca.gradient(E, q) - J.T @ F, tip - target[target_at["tip"]]]
     if angle:
-        g.append(ca.sum1(q) - target[2])
+        g.append(ca.sum1(q) - target[target_at["angle"]])
     g = ca.vertcat(*g)
     f = 0.5 * ca.sum1(w * (ell - ell_prev) ** 2) + 0.5 * eps * ca.sumsqr(q - q_prev)
     Lag = f + ca.dot(mu, g)
@@ -83,9 +102,10 @@ class InverseStatics:
 
     def __init__(self, n: int, angle: bool) -> None:
         self.n, self.angle = n, angle
+        #: the unknowns ``y``: joint angles ``q``, rest lengths ``ell`` (segment by segment), multipliers ``mu``;
+        #: the geometry ``geo`` (``a, b, k1, k2``); the ``target`` (``tip``, ``angle``) (:func:`layouts`)
+        self.unknowns, self.geometry, self.target = layouts(n, angle)
         self.rows = n + 2 + (1 if angle else 0)
-        #: the unknowns ``y``: joint angles ``q``, rest lengths ``ell`` (segment by segment), multipliers ``mu``
-        self.unknowns = Layout(q=n, ell=2 * n, mu=self.rows)
         f, self.mode = _function(n, angle)
         self._f = Fast(f)
 

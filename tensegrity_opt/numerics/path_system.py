@@ -33,6 +33,7 @@ results).
 from __future__ import annotations
 
 from functools import lru_cache
+from typing import NamedTuple
 
 import casadi as ca
 import numpy as np
@@ -41,39 +42,73 @@ from ._fast import Fast
 from .build import VIRTUAL_MACHINE, load
 from .expressions import segment_energy, tip_expression
 from .kernels import KERNEL_MAX
-from .layout import Layout
+from .layout import Layout, chain_parameters
 from .per_thread import per_thread
 
-__all__ = ["PathSystem", "path_system", "CONTROL_SIZE"]
+__all__ = ["PathSystem", "PathLayouts", "path_system", "layouts", "CONTROL"]
 
-#: Numbers describing a control: ``A_tip`` (4), ``A_F`` (4), ``c`` (2), ``tip_ref`` (2), ``F_ref`` (2).
-CONTROL_SIZE = 14
+#: The numbers describing a control: ``A_tip`` (4, row-major), ``A_F`` (4), ``c`` (2), ``tip_ref`` (2), ``F_ref`` (2).
+CONTROL = Layout(A_tip=4, A_F=4, c=2, tip_ref=2, F_ref=2)
 #: Newton iterations of the compiled corrector step (the Python corrector takes over when they do not
 #: converge).
 STEP_ITER = 5
 
 
+class PathLayouts(NamedTuple):
+    """The blocks of the path system's vectors for ``n`` segments (:func:`layouts`)."""
+
+    #: the functions' point ``x = (q, F, t, s)`` (the control parameter ``t``, the second parameter ``s``)
+    point: Layout
+    #: a point of a branch ``(q, F, t)``: the functions' point without ``s`` (each block in the same place); also
+    #: the blocks of a branch's tangent and of the columns of ``R_x`` in ``(z, t)``
+    branch_point: Layout
+    #: the unknowns ``z = (q, F)`` of ``R``, and the blocks of a null vector of ``R_z``
+    z: Layout
+    #: the residual ``R``: the stationarity rows ``grad`` (n) and the two ``control`` rows
+    rows: Layout
+    #: the chain's parameters ``p`` and the directions ``dp``, ``dp2`` (:func:`.layout.chain_parameters`)
+    parameters: Layout
+    #: the fold (Moore-Spence) system's unknowns: a branch point ``(q, F, t)`` and the null vector ``phi`` of
+    #: ``R_z`` (n + 2)
+    fold: Layout
+    #: the same continued in the second parameter: ``(q, F, t, phi, p)``
+    fold_curve: Layout
+    #: the fold system's rows: ``R`` (n + 2), ``Rz_phi`` (``R_z phi``, n + 2) and ``norm`` (``l . phi - 1``)
+    fold_rows: Layout
+
+
+@lru_cache(maxsize=None)
+def layouts(n: int) -> PathLayouts:
+    """The layouts of the path system's vectors for ``n`` segments."""
+    return PathLayouts(point=Layout(q=n, F=2, t=(), s=()), branch_point=Layout(q=n, F=2, t=()), z=Layout(q=n, F=2),
+                       rows=Layout(grad=n, control=2), parameters=chain_parameters(n),
+                       fold=Layout(q=n, F=2, t=(), phi=n + 2), fold_curve=Layout(q=n, F=2, t=(), phi=n + 2, p=()),
+                       fold_rows=Layout(R=n + 2, Rz_phi=n + 2, norm=()))
+
+
 @lru_cache(maxsize=None)
 def _graphs(n: int):
-    x = ca.SX.sym("x", n + 4)
-    q, F, t, s = x[:n], x[n:n + 2], x[n + 2], x[n + 3]
-    p, dp, dp2 = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n)
-    ctl = ca.SX.sym("ctl", CONTROL_SIZE)
+    at = layouts(n)
+    x = ca.SX.sym("x", at.point.size)
+    q, F, t, s = (x[at.point[k]] for k in ("q", "F", "t", "s"))
+    size = at.parameters.size
+    p, dp, dp2 = ca.SX.sym("p", size), ca.SX.sym("dp", size), ca.SX.sym("dp2", size)
+    ctl = ca.SX.sym("ctl", CONTROL.size)
     pe = p + t * dp + s * dp2
-    a, b, k1, k2, L10, L20 = (pe[i * n:(i + 1) * n] for i in range(6))
+    a, b, k1, k2, L10, L20 = (pe[at.parameters[k]] for k in ("a", "b", "k1", "k2", "L10", "L20"))
     _, _, E = segment_energy(q, a, b, k1, k2, L10, L20)
     phi = ca.cumsum(q)
     tip = tip_expression(phi, b)
     J = ca.jacobian(tip, q)
-    A_tip = ca.reshape(ctl[0:4], 2, 2).T
-    A_F = ca.reshape(ctl[4:8], 2, 2).T
-    c, tip_ref, F_ref = ctl[8:10], ctl[10:12], ctl[12:14]
+    A_tip = ca.reshape(ctl[CONTROL["A_tip"]], 2, 2).T
+    A_F = ca.reshape(ctl[CONTROL["A_F"]], 2, 2).T
+    c, tip_ref, F_ref = (ctl[CONTROL[k]] for k in ("c", "tip_ref", "F_ref"))
     R = ca.vertcat(ca.gradient(E, q) - J.T @ F, A_tip @ (tip - tip_ref) + A_F @ (F - F_ref) - t * c)
     Rx = ca.jacobian(R, x)
     H = ca.hessian(E - ca.dot(F, tip), q)[0]
     path = ca.Function("path", [x, p, dp, dp2, ctl], [R, ca.densify(Rx), ca.densify(H), ca.densify(J), E, tip])
     v = ca.SX.sym("v", n + 2)
-    z = x[:n + 2]
+    z = x[at.point.span("q", "F")]
     Rzv = ca.jtimes(R, z, v)
     second = ca.Function("second", [x, v, p, dp, dp2, ctl],
                          [Rzv, ca.densify(ca.jacobian(Rzv, x)), ca.jtimes(Rzv, z, v)])
@@ -94,8 +129,9 @@ def _step(n: int, path: ca.Function) -> ca.Function:
     N = n + 2
     xa, tau, w = ca.SX.sym("xa", N + 1), ca.SX.sym("tau", N + 1), ca.SX.sym("w", N + 1)
     h, tol, rs = ca.SX.sym("h"), ca.SX.sym("tol"), ca.SX.sym("rs", N)
-    p, dp, dp2 = ca.SX.sym("p", 6 * n), ca.SX.sym("dp", 6 * n), ca.SX.sym("dp2", 6 * n)
-    ctl = ca.SX.sym("ctl", CONTROL_SIZE)
+    size = layouts(n).parameters.size
+    p, dp, dp2 = ca.SX.sym("p", size), ca.SX.sym("dp", size), ca.SX.sym("dp2", size)
+    ctl = ca.SX.sym("ctl", CONTROL.size)
     aw = tau * w
     b = ca.dot(tau, w * xa) + h
     x = xa + h * tau / w
@@ -134,8 +170,10 @@ class PathSystem:
 
     def __init__(self, n: int) -> None:
         self.n = n
+        #: the blocks of the functions' vectors (:class:`PathLayouts`)
+        self.layouts = layouts(n)
         #: the point ``x = (q, F, t, s)`` of the functions (the control parameter ``t``, the second one ``s``)
-        self.point = Layout(q=n, F=2, t=(), s=())
+        self.point = self.layouts.point
         path, second, step, self.mode = _functions(n)
         self._path = Fast(path)
         self._second = Fast(second)
@@ -177,6 +215,6 @@ def path_system(n: int) -> PathSystem:
 
 
 def control_vector(A_tip, A_F, c, tip_ref, F_ref) -> np.ndarray:
-    """The 14 control numbers in the order the functions read them."""
-    return np.concatenate([np.asarray(A_tip, float).ravel(), np.asarray(A_F, float).ravel(),
-                           np.asarray(c, float), np.asarray(tip_ref, float), np.asarray(F_ref, float)])
+    """The 14 control numbers in the order the functions read them (:data:`CONTROL`)."""
+    return CONTROL.pack(A_tip=np.asarray(A_tip, float).ravel(), A_F=np.asarray(A_F, float).ravel(), c=c,
+                        tip_ref=tip_ref, F_ref=F_ref)

@@ -65,6 +65,16 @@ class Continuation:
     torque_scale: float = 1.0
     iterations: np.ndarray | None = None
 
+    @property
+    def phi(self) -> np.ndarray:
+        """The absolute angles of the iterates, (N, n) (a view of ``Z``)."""
+        return self.Z[:, :-2]
+
+    @property
+    def force(self) -> np.ndarray:
+        """The tip forces of the iterates, (N, 2) (a view of ``Z``)."""
+        return self.Z[:, -2:]
+
 
 @dataclass
 class SeedResults:

@@ -35,7 +35,7 @@ from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ..equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
-from .preloads import checked_vector
+from ..paths.control import checked_vector
 
 __all__ = ["PreloadFollower", "FollowerStep", "Snap", "SNAP_DISTANCE", "loaded_rest"]
 

@@ -12,7 +12,7 @@ joint) or a model error; with the angle noise known it is a chi-square statistic
 
 :func:`estimate_tip_force` is the one public function; :class:`ForceEstimate` its result. The
 derivatives (``grad E``, ``J``, ``Hess(E - F . tip)``) are the project's CasADi model through
-:meth:`tensegrity_opt.numerics.BoundSolver.evaluate` (the compiled SX graph of
+:meth:`tensegrity_opt.numerics.ChainSolver.evaluate` (the compiled SX graph of
 :mod:`tensegrity_opt.numerics.expressions`; long chains its banded form), transformed from absolute
 to relative joint angles here.
 """
@@ -30,6 +30,7 @@ from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
+from ..equilibria.equilibrium import TipForce
 
 __all__ = ["ForceEstimate", "estimate_tip_force"]
 
@@ -56,7 +57,7 @@ MAX_STEP = 0.5
 
 
 @dataclass(frozen=True)
-class ForceEstimate(Outcome):
+class ForceEstimate(Outcome, TipForce):
     """The tip force estimated from joint angles (:func:`estimate_tip_force`).
 
     Attributes
@@ -143,14 +144,6 @@ class ForceEstimate(Outcome):
         if self.chi2 is not None:
             text += f", chi2 {self.chi2:.3g} on {self.dof} degrees of freedom"
         return text
-
-    @property
-    def fx(self) -> float:
-        return float(self.force[0])
-
-    @property
-    def fy(self) -> float:
-        return float(self.force[1])
 
     @property
     def std(self) -> np.ndarray | None:
@@ -544,7 +537,7 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
         joint = np.zeros(n)
         joint[ok] = Pr[ok] ** 2 / d[ok]
         if dof > 0:
-            from scipy.special import chdtrc      # = scipy.stats.chi2.sf (its implementation), 50x cheaper
+            from scipy.special import chdtrc  # = scipy.stats.chi2.sf (its implementation), 50x cheaper
 
             p_value = float(chdtrc(dof, chi2))
         status = "generalized_least_squares" if u == 0 else "weighted_gauss_newton"

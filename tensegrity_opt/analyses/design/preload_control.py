@@ -42,12 +42,15 @@ import numpy as np
 from ...errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics.inverse_statics import inverse_statics
+from ...numerics.inverse_statics import layouts as step_layouts
+from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
+from ..paths.control import checked_vector
 from .follower import loaded_rest
-from .preloads import LAND_TOL, OBJECTIVES, checked_vector, preloads_for_pose
+from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose
 
 __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "preloads_for_trajectory"]
 
@@ -196,7 +199,7 @@ class PreloadController:
         self.w = np.ones(2 * n) if weights is None else self._per_spring_pairs(weights, "weights")
         if not np.all(self.w > 0):
             raise InvalidParameterError("weights must be > 0", field="weights")
-        self.geo = np.concatenate([m.a, m.b, m.k1, m.k2])
+        self.geo = step_layouts(n, False).geometry.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2)
         self.limits = m.joint_limits
         self.scale = float(np.max(m.b))
         self.ell = np.column_stack([m.L1_0, m.L2_0]).ravel()        # segment-major: l[2i], l[2i+1]
@@ -211,7 +214,8 @@ class PreloadController:
         a = np.asarray(v, dtype=float).ravel() if np.ndim(v) else np.full(2 * n, float(v))
         if a.size != 2 * n or not np.all(np.isfinite(a)):
             raise InvalidParameterError(f"{name} must be a number or {2 * n} finite values", field=name)
-        return np.column_stack([a[:n], a[n:]]).ravel()
+        springs = rest_lengths(n).unpack(a)
+        return np.column_stack([springs["L10"], springs["L20"]]).ravel()
 
     def _per_spring_pairs(self, v, name: str) -> np.ndarray:
         a = np.asarray(v, dtype=float)
@@ -274,12 +278,17 @@ class PreloadController:
         mu = self.mu.get(angle)
         if mu is None or mu.size != inv.rows:
             mu = np.zeros(inv.rows)
-        y0 = np.concatenate([self.q, self.ell, mu])
-        tgt = np.array([target[0], target[1], float(end_angle) if angle else 0.0])
+        # the step's vectors filled block by block at the layouts' places (on the control loop's path: no
+        # keyword packing)
+        at, tg = inv.unknowns.places, inv.target.places
+        y0 = np.empty(inv.unknowns.size)
+        y0[at["q"]], y0[at["ell"]], y0[at["mu"]] = self.q, self.ell, mu
+        tgt = np.empty(inv.target.size)
+        tgt[tg["tip"]], tgt[tg["angle"]] = target, float(end_angle) if angle else 0.0
         y, resid, iters, H, E, tip, KKT = inv.step(y0, self.geo, F, tgt, self.ell, self.w, self.q, Q_WEIGHT,
                                                    NEWTON_TOL)
         n = self.n
-        q, ell = y[:n], y[n:3 * n]
+        q, ell = y[at["q"]], y[at["ell"]]
         if not (resid <= 1e3 * NEWTON_TOL and np.all(np.isfinite(y))):
             return None
         if np.any(np.abs(q) >= self.limits * (1 - 1e-6)) or np.any(ell < lo - 1e-12) or np.any(ell > hi + 1e-12):
@@ -290,7 +299,7 @@ class PreloadController:
         kk = np.linalg.eigvalsh(KKT)
         if int(np.sum(kk > 0)) != 3 * n or int(np.sum(kk < 0)) != inv.rows:
             return None                     # a KKT point that is not a local minimum of the least change
-        self.mu[angle] = y[3 * n:].copy()
+        self.mu[angle] = y[at["mu"]].copy()
         solver = _NEWTON.get(iters) or _NEWTON.setdefault(iters, SolverInfo("Newton_Converged", iters))
         # q and ell are views of the step's own iterate y: no copy needed before they turn read-only
         return PreloadStep._of(rest_lengths=ell.reshape(n, 2), q=q, tip=tip, end_angle=float(np.sum(q)),
@@ -299,7 +308,8 @@ class PreloadController:
 
     def _ipopt(self, target, F, end_angle, lo, hi) -> PreloadStep:
         nominal = self.manipulator()
-        to_spec = lambda v: np.concatenate([v[0::2], v[1::2]])   # noqa: E731  segment-major -> L1 block, L2 block
+        springs = rest_lengths(self.n)
+        to_spec = lambda v: springs.pack(L10=v[0::2], L20=v[1::2])   # noqa: E731  segment-major -> the L10, L20 blocks
         try:
             d = preloads_for_pose(nominal, target, load=F, objective=self.objective, margin=self.margin,
                                   bounds=(to_spec(lo), to_spec(hi)), end_angle=end_angle, start=self.q)

@@ -25,10 +25,16 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import (InfeasibleDesignError, InvalidParameterError, TensegrityError, TimeLimitError,
-                       UnreachableTargetError)
+from ...errors import (
+    InfeasibleDesignError,
+    InvalidParameterError,
+    TensegrityError,
+    TimeLimitError,
+    UnreachableTargetError,
+)
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
+from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import number, numbers
 from ...timelimit import time_limit as _time_limit
@@ -37,7 +43,7 @@ from ..equilibria.least_energy import solve_equilibrium
 from .strongest import Design, buckling_design
 
 __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
-           "forward_check", "stability_margin", "checked_start", "checked_vector"]
+           "forward_check", "stability_margin", "checked_start", "nlp_pose", "spring_bounds"]
 
 #: What a preload problem minimises: ``"change"`` the (weighted) change of the rest lengths from the reference
 #: ones (the chain's own for a pose, the previous step's along a trajectory), ``"margin"`` minus the stability
@@ -203,6 +209,7 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
 
 def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start) -> PreloadDesign:
     from ...numerics import preload_nlp
+    from ...numerics.design_nlp import tril_vector
 
     if objective not in OBJECTIVES:
         raise InvalidParameterError(f"objective must be one of {OBJECTIVES}, got {objective!r}", field="objective")
@@ -232,9 +239,10 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
         except TensegrityError:
             q0 = _reach_guess(m, target)
     nlp = preload_nlp(n)
-    L0nom = np.concatenate([m.L1_0, m.L2_0])
-    L0start = np.clip(L0nom, lo, hi)
-    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start[:n], L0start[n:]))
+    springs = rest_lengths(n)
+    L0nom = springs.pack(L10=m.L1_0, L20=m.L2_0)
+    L0start = springs.unpack(np.clip(L0nom, lo, hi))
+    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start["L10"], L0start["L20"]))
     _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
     Hq = _relative(Hphi)
     mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))
@@ -242,27 +250,21 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     # a start for the margin's Cholesky factor; the floor relative to the Hessian's size (loads of 1e12
     # give entries of 1e12, where an absolute 1e-6 is below roundoff and the factorisation fails)
     Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, float(np.abs(w_).max())))) @ V_.T)
-    lv0 = np.array([Lc[i, j] for i in range(n) for j in range(i + 1)])
-    x0 = np.concatenate([np.cumsum(q0), L0start, [mu0], lv0])
-    lbx = np.concatenate([np.full(n, -_INF), np.broadcast_to(lo, (2 * n)), [margin], np.full(lv0.size, -_INF)])
-    ubx = np.concatenate([np.full(n, _INF), np.broadcast_to(hi, (2 * n)), [margin if objective != "margin" else _INF],
-                          np.full(lv0.size, _INF)])
-    for k_ in nlp.diag:
-        lbx[3 * n + 1 + k_] = 0.0
+    x, g = nlp.variables, nlp.constraints
+    lo2, hi2 = spring_bounds(n, lo, hi)
+    x0 = x.pack(phi=np.cumsum(q0), **L0start, mu=mu0, L=tril_vector(Lc))
+    lbx = x.pack(phi=-_INF, **lo2, mu=margin, L=nlp.factor_floor)
+    ubx = x.pack(phi=_INF, **hi2, mu=margin if objective != "margin" else _INF, L=_INF)
     lim = m.joint_limits * (1 - RANGE_SHRINK)
     ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
-    lbg = np.concatenate([np.zeros(n), target, [ea[0]], np.zeros(lv0.size),
-                          np.full(2 * n, 0.0 if taut else -_INF), -lim])
-    ubg = np.concatenate([np.zeros(n), target, [ea[1]], np.zeros(lv0.size), np.full(2 * n, _INF), lim])
+    slack = 0.0 if taut else -_INF
+    lbg = g.pack(grad=0.0, tip=target, angle=ea[0], psd=0.0, stretch1=slack, stretch2=slack, q=-lim)
+    ubg = g.pack(grad=0.0, tip=target, angle=ea[1], psd=0.0, stretch1=_INF, stretch2=_INF, q=lim)
     weights = {"change": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
-    p = np.concatenate([m.a, m.b, m.k1, m.k2, load, L0nom, weights])
+    p = nlp.parameters.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=load, L0nom=L0nom, w=weights)
     res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
-    phi = res.x[:n]
-    q = np.diff(np.concatenate([[0.0], phi]))
-    lo2, hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
-    L10 = np.clip(res.x[n:2 * n], lo2[:n], hi2[:n])
-    L20 = np.clip(res.x[2 * n:3 * n], lo2[n:], hi2[n:])
-    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[3 * n])}
+    q, L10, L20 = nlp_pose(x, res.x, lo2, hi2)
+    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[x["mu"]])}
     if not res.success:
         raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
                                     best=best)
@@ -273,6 +275,22 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q,
                          margin=stability_margin(m_new, eq.q, load), tip=eq.tip, energy=eq.energy,
                          solver=SolverInfo(res.status, res.iterations), equilibrium=eq)
+
+
+def spring_bounds(n: int, lo, hi) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """The bounds ``(lo, hi)`` of :func:`rest_length_bounds` as the design problems' blocks ``L10``, ``L20``
+    (:func:`tensegrity_opt.numerics.layout.rest_lengths`)."""
+    springs = rest_lengths(n)
+    return springs.unpack(np.broadcast_to(lo, springs.size)), springs.unpack(np.broadcast_to(hi, springs.size))
+
+
+def nlp_pose(variables, x: np.ndarray, lo: dict, hi: dict) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(q, L10, L20)`` at the point ``x`` of a preload NLP (its ``variables``' blocks ``phi``, ``L10``,
+    ``L20``): the relative joint angles and the rest lengths, clipped into their bounds ``lo``, ``hi``
+    (:func:`spring_bounds`; IPOPT may step 1e-8 outside)."""
+    v = variables.unpack(x)
+    return (np.diff(np.concatenate([[0.0], v["phi"]])), np.clip(v["L10"], lo["L10"], hi["L10"]),
+            np.clip(v["L20"], lo["L20"], hi["L20"]))
 
 
 def forward_check(m: Manipulator, load: np.ndarray, q: np.ndarray, target: np.ndarray, *, settle: bool,
@@ -320,17 +338,6 @@ def stability_margin(m: Manipulator, q: np.ndarray, load) -> float:
     ``load`` (torque / rad): the stability margin every preload problem requires and reports."""
     _, _, H_phi, _, _ = chain_solver(m).evaluate(q, load)
     return float(np.linalg.eigvalsh(_relative(H_phi))[0])
-
-
-def checked_vector(v, size: int, name: str) -> np.ndarray:
-    """``size`` finite numbers (a target, a load), flattened, checked (``field=name``)."""
-    try:
-        a = np.asarray(v, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be {size} numbers, got {v!r}", field=name) from None
-    if a.size != size or not np.all(np.isfinite(a)):
-        raise InvalidParameterError(f"{name} must be {size} finite numbers, got {v!r}", field=name)
-    return a
 
 
 def checked_start(m: Manipulator, start) -> np.ndarray | None:

@@ -7,10 +7,14 @@ import numpy as np
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
+from ...numerics.layout import chain_parameters, equilibrium_unknowns
 from ..equilibria.buckling import critical_force, straight_matrices
 from ..equilibria.equilibrium import Equilibrium
 
 __all__ = ["critical_load_sensitivity", "equilibrium_sensitivity"]
+
+#: The chain's parameters by their names in the result, with their blocks in the solvers' parameters.
+_PARAMETERS = {"a": "a", "b": "b", "k1": "k1", "k2": "k2", "L1_0": "L10", "L2_0": "L20"}
 
 
 def critical_load_sensitivity(m: Manipulator, boundary: str = "guided", mode: int = 0) -> dict[str, np.ndarray]:
@@ -82,12 +86,13 @@ def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.nda
         dz = -np.linalg.solve(Jz, Jp)
     except np.linalg.LinAlgError:
         raise InvalidParameterError("the KKT system is singular at this equilibrium", field="eq") from None
+    rows, cols = equilibrium_unknowns(n), chain_parameters(n)
     D = np.eye(n) - np.eye(n, k=-1)
-    dq = D @ dz[:n]
-    dF = dz[n:n + 2]
-    names = [f"{p}[{i}]" for p in ("a", "b", "k1", "k2", "L1_0", "L2_0") for i in range(n)]
+    dq = D @ dz[rows["phi"]]
+    dF = dz[rows["F"]]
+    names = [f"{p}[{i}]" for p in _PARAMETERS for i in range(n)]
     out: dict[str, np.ndarray] = {"dq": dq, "dF": dF, "names": np.array(names)}
-    for j, p in enumerate(("a", "b", "k1", "k2", "L1_0", "L2_0")):
-        out[f"dq/{p}"] = dq[:, j * n:(j + 1) * n]
-        out[f"dF/{p}"] = dF[:, j * n:(j + 1) * n]
+    for p, block in _PARAMETERS.items():
+        out[f"dq/{p}"] = dq[:, cols[block]]
+        out[f"dF/{p}"] = dF[:, cols[block]]
     return out

@@ -38,13 +38,22 @@ import numpy as np
 from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
+from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium
 from ..equilibria.stiffness import cartesian_stiffness
-from .preloads import (PreloadDesign, checked_start, forward_check, preloads_for_pose, rest_length_bounds,
-                       stability_margin)
+from .preloads import (
+    PreloadDesign,
+    checked_start,
+    forward_check,
+    nlp_pose,
+    preloads_for_pose,
+    rest_length_bounds,
+    spring_bounds,
+    stability_margin,
+)
 
 __all__ = ["StiffnessDesign", "preloads_for_stiffness", "STIFFNESS_KEYS", "EXACT_TOL", "K_TOL"]
 
@@ -337,7 +346,7 @@ class _Shaper:
 
         n = self.n = m.n
         self.m, self.target, self.Kd, self.kb, self.eb, self.load, self.margin = m, target, Kd, kb, eb, load, margin
-        self.lo2, self.hi2 = np.broadcast_to(lo, (2 * n)), np.broadcast_to(hi, (2 * n))
+        self.lo2, self.hi2 = spring_bounds(n, lo, hi)
         self.Ts = float(m.torque_scale)
         self.Ls = float(m.straight_length / n)
         self.Ks = self.Ts / self.Ls ** 2                # the stiffness scale: the NLP's K is K / Ks
@@ -352,7 +361,7 @@ class _Shaper:
         self.e_lb = np.array([0.0 if math.isfinite(self.elo) else -_INF] * 2
                              + [0.0 if math.isfinite(self.ehi) else -_INF] * 2)
         self.e_p = [self.elo if math.isfinite(self.elo) else 0.0, self.ehi if math.isfinite(self.ehi) else 0.0]
-        self.L0nom = np.concatenate([m.L1_0, m.L2_0])
+        self.L0nom = rest_lengths(n).pack(L10=m.L1_0, L20=m.L2_0)
         self.Kd_s = np.zeros(3) if Kd is None else np.array([Kd[0, 0], Kd[0, 1], Kd[1, 1]]) / Ks
         self.nd = float(self.Kd_s[0] ** 2 + 2 * self.Kd_s[1] ** 2 + self.Kd_s[2] ** 2) if Kd is not None else 1.0
         self.T = np.tril(np.ones((n, n)))
@@ -372,10 +381,9 @@ class _Shaper:
                            L=tril_vector(Lc), Y=Y.ravel(order="F"), s=0.0)
 
     def box(self, elastic: bool):
-        n, floor = self.n, self.nlp.factor_floor
-        lbx = self.x.pack(phi=-_INF, L10=self.lo2[:n], L20=self.lo2[n:], mu=self.margin, L=floor, Y=-_INF, s=0.0)
-        ubx = self.x.pack(phi=_INF, L10=self.hi2[:n], L20=self.hi2[n:], mu=self.margin, L=_INF, Y=_INF,
-                          s=_INF if elastic else 0.0)
+        floor = self.nlp.factor_floor
+        lbx = self.x.pack(phi=-_INF, **self.lo2, mu=self.margin, L=floor, Y=-_INF, s=0.0)
+        ubx = self.x.pack(phi=_INF, **self.hi2, mu=self.margin, L=_INF, Y=_INF, s=_INF if elastic else 0.0)
         return lbx, ubx
 
     def rows(self, k_lo, k_hi):
@@ -401,11 +409,8 @@ class _Shaper:
         return out
 
     def pose(self, x) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``(q, L10, L20)`` of the NLP's point ``x``: relative joint angles and the rest lengths, clipped
-        into their bounds (IPOPT may step 1e-8 outside)."""
-        v, n = self.x.unpack(x), self.n
-        return (np.diff(np.concatenate([[0.0], v["phi"]])), np.clip(v["L10"], self.lo2[:n], self.hi2[:n]),
-                np.clip(v["L20"], self.lo2[n:], self.hi2[n:]))
+        """``(q, L10, L20)`` of the NLP's point ``x`` (:func:`~.preloads.nlp_pose`)."""
+        return nlp_pose(self.x, x, self.lo2, self.hi2)
 
     def K_of(self, x) -> np.ndarray:
         """The stiffness (force / length) of the NLP's point ``x`` (its ``K`` rows)."""

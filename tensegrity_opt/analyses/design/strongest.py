@@ -19,8 +19,13 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.linalg as sla
 
-from ...errors import (InfeasibleDesignError, InvalidParameterError, SolverError, StraightNotEquilibriumError,
-                       TensegrityError)
+from ...errors import (
+    InfeasibleDesignError,
+    InvalidParameterError,
+    SolverError,
+    StraightNotEquilibriumError,
+    TensegrityError,
+)
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from ...outcome import Outcome, SolverInfo, freeze
@@ -240,6 +245,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
     and :class:`InfeasibleDesignError` (``best`` the design, ``status="below_required"``) when the verified load
     stays below ``required``. Runs under the caller's time limit."""
     from ...numerics import buckling_design_nlp
+    from ...numerics.design_nlp import tril_vector
 
     if boundary not in ("guided", "free"):
         raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
@@ -280,7 +286,6 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
         if start[name].sum() > total:
             start[name] = np.maximum(start[name] * total / start[name].sum(), lo[name])
     nlp = buckling_design_nlp(n, boundary == "guided")
-    d = nlp.d
     # Initial load and Cholesky factor.
     m_start = _build(start)
     K, G, S0 = straight_matrices(m_start)
@@ -296,35 +301,24 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
     Mz = Z.T @ (np.diag(K) - P0 * G) @ Z
     w_, V_ = np.linalg.eigh(Mz)
     Lc = np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, 1e-6 * max(1.0, abs(w_).max()))) @ V_.T)
-    lv0 = np.array([Lc[i, j] for i in range(d) for j in range(i + 1)])
-    xv0 = np.concatenate([start["a"], start["b"], start["k"], start["L0"], [P0], lv0])
-    lbx = np.concatenate([lo["a"], lo["b"], lo["k"], lo["L0"], [required if required is not None else 0.0],
-                          np.full(lv0.size, -_INF)])
-    ubx = np.concatenate([hi["a"], hi["b"], hi["k"], hi["L0"], [_INF], np.full(lv0.size, _INF)])
-    for k_ in nlp.diag:
-        lbx[4 * n + 1 + k_] = 0.0
-    # Rows: psd (=0), budgets a,b,k,L0, total length, tension (n), K (n).
-    lbg = [np.zeros(nlp.n_psd)]
-    ubg = [np.zeros(nlp.n_psd)]
-    for name in DESIGN_VARIABLES:
-        lbg.append([-_INF])
-        ubg.append([float(budget[name]) if name in budget else _INF])
+    x, g = nlp.variables, nlp.constraints
+    xv0 = x.pack(**start, P=P0, L=tril_vector(Lc))
+    lbx = x.pack(**lo, P=required if required is not None else 0.0, L=nlp.factor_floor)
+    ubx = x.pack(**hi, P=_INF, L=_INF)
     tl = constraints.get("total_length")
     if tl is True:
         tl = m.straight_length
-    lbg.append([float(tl) if tl is not None else -_INF])
-    ubg.append([float(tl) if tl is not None else _INF])
     tmin, tmax = _tension_bounds(constraints.get("tension"))
-    lbg.append(np.full(n, float(tmin)))
-    ubg.append(np.full(n, float(tmax)))
     kmin = _stiffness_floor(x0, constraints.get("K_min"))
-    lbg.append(np.full(n, kmin))
-    ubg.append(np.full(n, _INF))
-    lbg_a, ubg_a = np.concatenate(lbg), np.concatenate(ubg)
+    budgets = {f"budget_{name}": float(budget[name]) if name in budget else _INF for name in DESIGN_VARIABLES}
+    lbg_a = g.pack(psd=0.0, **dict.fromkeys(budgets, -_INF), length=float(tl) if tl is not None else -_INF,
+                   tension=float(tmin), K=kmin)
+    ubg_a = g.pack(psd=0.0, **budgets, length=float(tl) if tl is not None else _INF, tension=float(tmax), K=_INF)
     weights = [1.0, 0.0] if required is None else [0.0, 1.0]
-    p = np.concatenate([x0["L0"], weights])
+    p = nlp.parameters.pack(L0nom=x0["L0"], w=weights)
     res = nlp.solve(xv0, lbx, ubx, lbg_a, ubg_a, p)
-    cols = {name: res.x[i * n:(i + 1) * n].copy() for i, name in enumerate(DESIGN_VARIABLES)}
+    v = x.unpack(res.x)
+    cols = {name: v[name].copy() for name in DESIGN_VARIABLES}
     for name in DESIGN_VARIABLES:          # IPOPT may step 1e-8 outside a bound: snap back
         cols[name] = np.clip(cols[name], lo[name], hi[name])
     # IPOPT honours the K rows only to its (relaxed) tolerance: K_i = K_min - 1e-9 is a normal
@@ -333,8 +327,9 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
     # After a failed solve any lift is allowed: it makes the reported ``best`` a valid chain.
     _lift_stiffness(cols, lo, hi, vary, kmin, max_rel=1e-6 if res.success else _INF)
     xv = res.x.copy()
-    xv[:4 * n] = np.concatenate([cols[name] for name in DESIGN_VARIABLES])
-    P_opt = float(res.x[4 * n])
+    for name in DESIGN_VARIABLES:
+        xv[x[name]] = cols[name]
+    P_opt = float(v["P"])
     try:
         m_opt = _build(cols)
         bk = critical_force(m_opt, boundary)
@@ -346,7 +341,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
     feasible = required is None or bk.loads[0] >= required * (1 - 1e-6)
     design = Design(manipulator=m_opt, critical_force=bk.force, loads=bk.loads,
                     multiplicity=_multiplicity(bk.loads),
-                    active=_active(cols, lo, hi, vary, budget, rows, nlp.n_psd, n, tl, tmin, tmax, kmin),
+                    active=_active(cols, lo, hi, vary, budget, g.unpack(rows), n, tl, tmin, tmax, kmin),
                     solver=SolverInfo(res.status, res.iterations), boundary=boundary,
                     initial_critical_force=_safe_critical(m, boundary), feasible=feasible, K_min=kmin,
                     status="infeasible" if not solved else "optimal" if feasible else "below_required")
@@ -442,7 +437,9 @@ def _basis(S0: np.ndarray, guided: bool, n: int) -> np.ndarray:
     return np.vstack([np.eye(n - 1), -S0[None, : n - 1] / S0[n - 1]])
 
 
-def _active(cols, lo, hi, vary, budget, rows, n_psd, n, tl, tmin, tmax, kmin, tol=1e-6) -> list[str]:
+def _active(cols, lo, hi, vary, budget, rows, n, tl, tmin, tmax, kmin, tol=1e-6) -> list[str]:
+    """The active constraints at the design ``cols``: bounds, budgets, total length, tension and stiffness rows
+    (``rows`` the NLP's constraint rows by name)."""
     act = []
     for name in vary:
         for i in range(n):
@@ -452,14 +449,12 @@ def _active(cols, lo, hi, vary, budget, rows, n_psd, n, tl, tmin, tmax, kmin, to
                 act.append(f"{name}[{i}] >= {lo[name][i]:.6g}")
             elif x >= hi[name][i] - tol * scale:
                 act.append(f"{name}[{i}] <= {hi[name][i]:.6g}")
-    r = n_psd
-    for j, name in enumerate(DESIGN_VARIABLES):
-        if name in budget and rows[r + j] >= float(budget[name]) - tol * max(1.0, abs(float(budget[name]))):
+    for name in DESIGN_VARIABLES:
+        if name in budget and rows[f"budget_{name}"] >= float(budget[name]) - tol * max(1.0, abs(float(budget[name]))):
             act.append(f"sum({name}) <= {float(budget[name]):.6g}")
     if tl is not None:
         act.append(f"2 sum(b) == {float(tl):.6g}")
-    ten = rows[r + 5: r + 5 + n]
-    K = rows[r + 5 + n: r + 5 + 2 * n]
+    ten, K = rows["tension"], rows["K"]
     for i in range(n):
         if math.isfinite(tmin) and ten[i] <= tmin + tol * max(1.0, abs(tmin)):
             act.append(f"tension[{i}] >= {tmin:.6g}")

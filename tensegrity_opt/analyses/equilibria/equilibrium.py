@@ -41,11 +41,25 @@ from .stability import analyse, inertia_of_reduced
 
 __all__ = ["settle_under_force", "Equilibrium", "solve_equilibrium_under_force", "make_equilibrium",
            "local_equilibrium", "is_equilibrium", "check_q0", "classify_result", "equilibrium_from",
-           "straight_equilibrium", "one_segment_equilibrium", "RESIDUAL_TOL"]
+           "straight_equilibrium", "one_segment_equilibrium", "RESIDUAL_TOL", "TipForce"]
+
+
+class TipForce:
+    """``fx`` and ``fy``: the components of a result's tip force ``force`` (``[Fx, Fy]``)."""
+
+    @property
+    def fx(self) -> float:
+        """``Fx``, the tip force along ``x``."""
+        return float(self.force[0])
+
+    @property
+    def fy(self) -> float:
+        """``Fy``, the tip force along ``y``."""
+        return float(self.force[1])
 
 
 @dataclass(frozen=True)
-class Equilibrium(Outcome):
+class Equilibrium(Outcome, TipForce):
     """An equilibrium configuration of the chain.
 
     Attributes
@@ -129,14 +143,6 @@ class Equilibrium(Outcome):
     def signs(self) -> str:
         """Sign string of ``q`` (:func:`tensegrity_opt.model.shapes.sign_string`)."""
         return sign_string(self.q)
-
-    @property
-    def fx(self) -> float:
-        return float(self.force[0])
-
-    @property
-    def fy(self) -> float:
-        return float(self.force[1])
 
     @property
     def kind(self) -> str:

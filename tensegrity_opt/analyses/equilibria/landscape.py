@@ -138,28 +138,19 @@ def _two_link(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int)
         pu = pu + links[k] * np.stack([np.cos(phi[..., k]), np.sin(phi[..., k])], axis=-1)
     phi_before_u = phi[..., u - 1] if u > 0 else np.zeros(shape)
 
-    # Arm 1 (from joint u to joint v) in the frame of link u with q_u = 0.
-    def arm(start, stop, rel):
-        # rel[..., k] relative angle of link k w.r.t. the arm's own first link, for k in [start, stop)
+    def arm(start, stop):
+        """The links ``start`` to ``stop - 1`` as one vector in the frame of link ``start`` (its joint angle 0),
+        and the last link's angle relative to link ``start`` (each accumulates the joints between)."""
         w = np.zeros(shape + (2,))
+        rel = np.zeros(shape)
         for k in range(start, stop):
-            w = w + links[k] * np.stack([np.cos(rel[..., k]), np.sin(rel[..., k])], axis=-1)
-        return w
+            if k > start:
+                rel = rel + q[..., k]
+            w = w + links[k] * np.stack([np.cos(rel), np.sin(rel)], axis=-1)
+        return w, rel
 
-    rel1 = np.zeros(shape + (n,))
-    acc = np.zeros(shape)
-    for k in range(u, v):
-        if k > u:
-            acc = acc + q[..., k]
-        rel1[..., k] = acc
-    w1 = arm(u, v, rel1)                    # rotate by (phi_before_u + q_u)
-    rel2 = np.zeros(shape + (n,))
-    acc = np.zeros(shape)
-    for k in range(v, n):
-        if k > v:
-            acc = acc + q[..., k]
-        rel2[..., k] = acc
-    w2 = arm(v, n, rel2)                    # rotate by absolute angle of link v
+    w1, last_rel1 = arm(u, v)               # arm 1, joint u to joint v: rotate by (phi_before_u + q_u)
+    w2, _ = arm(v, n)                       # arm 2, joint v to the tip: rotate by the absolute angle of link v
     d = np.asarray(target, float) - pu
     r1 = np.hypot(w1[..., 0], w1[..., 1])
     r2 = np.hypot(w2[..., 0], w2[..., 1])
@@ -180,7 +171,7 @@ def _two_link(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int)
     # cross and dot products): IK yields directions, and in the physical range |q| < pi the
     # relative angle is the unique one in (-pi, pi]. No angle is reduced modulo 2 pi.
     qu = _angle_between(phi_before_u, abs_u)
-    before_v = abs_u + rel1[..., v - 1] if v - 1 >= u else abs_u
+    before_v = abs_u + last_rel1 if v - 1 >= u else abs_u
     qv = _angle_between(before_v, abs_v)
     q[..., u] = qu
     q[..., v] = qv

@@ -42,14 +42,14 @@ import scipy.optimize as so
 from ...errors import InvalidParameterError, SolverError, TensegrityError, TimeLimitError, UnreachableTargetError
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX, chain_solver
-from ...serialize import nullable, number, numbers
-from ...timelimit import expired, remaining, time_limit
 from ...numerics.homotopy import homotopy_available
 from ...outcome import Outcome, freeze
+from ...serialize import nullable, number, numbers
+from ...timelimit import expired, remaining, time_limit
 from ..equilibria.all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, find_equilibria
+from ..equilibria.equilibrium import Equilibrium, make_equilibrium
 from .branches import Branch, trace_branch
 from .control import Control
-from ..equilibria.equilibrium import Equilibrium, make_equilibrium
 
 __all__ = ["StabilityAtlas", "AtlasTarget", "AtlasCrossing", "stability_atlas", "atlas_target", "assemble_atlas",
            "MAX_TARGETS", "CROSSING_KINDS"]

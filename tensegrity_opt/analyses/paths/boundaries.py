@@ -37,6 +37,7 @@ import scipy.optimize as so
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
+from ...numerics.layout import chain_parameters
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
@@ -51,23 +52,18 @@ __all__ = ["StabilityBoundary", "BoundaryPoint", "stability_boundary", "paramete
 PARAMETERS = ("asymmetry", "L0", "a", "b", "k")
 #: Smallest singular value of the Moore-Spence Jacobian (relative to its largest) for the regular case.
 RANK_TOL = 1e-8
+#: The blocks of the chain's parameters (:func:`tensegrity_opt.numerics.layout.chain_parameters`) each named
+#: direction moves, and by how much per unit ``p``.
+_MOVES = {"asymmetry": {"L10": 1.0, "L20": -1.0},        # L1_0 = L0 + p, L2_0 = L0 - p
+          "L0": {"L10": 1.0, "L20": 1.0}, "a": {"a": 1.0}, "b": {"b": 1.0}, "k": {"k1": 1.0, "k2": 1.0}}
 
 
 def parameter_direction(m: Manipulator, parameter) -> tuple[str, np.ndarray]:
     """``(name, dp)``: the direction ``dp`` (6n, order ``a, b, k1, k2, L1_0, L2_0``) a parameter moves."""
-    n = m.n
-    d = np.zeros(6 * n)
+    at = chain_parameters(m.n)
     if isinstance(parameter, str):
-        if parameter == "asymmetry":
-            d[4 * n:5 * n], d[5 * n:] = 1.0, -1.0            # L1_0 = L0 + p, L2_0 = L0 - p
-        elif parameter == "L0":
-            d[4 * n:] = 1.0
-        elif parameter == "a":
-            d[:n] = 1.0
-        elif parameter == "b":
-            d[n:2 * n] = 1.0
-        elif parameter == "k":
-            d[2 * n:4 * n] = 1.0
+        if parameter in _MOVES:
+            d = at.pack(**{**dict.fromkeys(at.places, 0.0), **_MOVES[parameter]})
         else:
             raise InvalidParameterError(f"parameter must be one of {PARAMETERS} or a vector of 6n numbers, got "
                                         f"{parameter!r}", field="parameter")
@@ -76,17 +72,16 @@ def parameter_direction(m: Manipulator, parameter) -> tuple[str, np.ndarray]:
         d = np.asarray(parameter, dtype=float).ravel()
     except (TypeError, ValueError):
         raise InvalidParameterError("parameter must be a name or 6n numbers", field="parameter") from None
-    if d.size != 6 * n or not np.all(np.isfinite(d)) or not np.any(d):
-        raise InvalidParameterError(f"a parameter direction has 6n = {6 * n} finite numbers, not all zero",
+    if d.size != at.size or not np.all(np.isfinite(d)) or not np.any(d):
+        raise InvalidParameterError(f"a parameter direction has 6n = {at.size} finite numbers, not all zero",
                                     field="parameter")
     return "direction", d
 
 
 def _chain_at(m: Manipulator, dp: np.ndarray, p: float) -> Manipulator:
-    n = m.n
-    v = np.array(m.params) + p * dp
-    a, b, k1, k2, l1, l2 = (v[i * n:(i + 1) * n] for i in range(6))
-    return Manipulator(Segment(a[i], b[i], (k1[i], k2[i]), (l1[i], l2[i])) for i in range(n))
+    v = chain_parameters(m.n).unpack(np.array(m.params) + p * dp)
+    return Manipulator(Segment(a, b, (k1, k2), (l1, l2))
+                       for a, b, k1, k2, l1, l2 in zip(*(v[k] for k in ("a", "b", "k1", "k2", "L10", "L20"))))
 
 
 @dataclass(frozen=True)
@@ -174,37 +169,41 @@ class StabilityBoundary(Outcome):
 
 
 class _Fold:
-    """The Moore-Spence system of one problem in ``Y = (z, t, phi, p)``."""
+    """The Moore-Spence system of one problem in ``Y = (z, t, phi, p)`` (the blocks ``q, F, t, phi, p`` of
+    the path system's ``fold_curve`` layout); its rows ``R``, ``R_z phi`` and ``l . phi = 1`` (``fold_rows``)."""
 
     def __init__(self, prob: PathProblem, ell: np.ndarray, p_scale: float) -> None:
         self.prob, self.ell = prob, ell
-        N = prob.N
-        self.N = N
-        self.w = np.concatenate([prob.w, np.ones(N), [1.0 / p_scale]])
+        self.rows = prob.ps.layouts.fold_rows
+        self.at = at = prob.ps.layouts.fold_curve
+        self.x_at = at.span("q", "t")
+        pt = prob.ps.point                  # the columns of the path system's Jacobians
+        self.x_cols, self.z_cols, self.p_col = pt.span("q", "t"), pt.span("q", "F"), pt["s"]
+        self.w = at.pack(**prob.point.unpack(prob.w), phi=1.0, p=1.0 / p_scale)
 
     def split(self, Y):
-        N = self.N
-        return Y[:N + 1], Y[N + 1:2 * N + 1], float(Y[-1])
+        """``(x, phi, p)``: the branch point, the null vector, the parameter."""
+        return Y[self.x_at], Y[self.at["phi"]], float(Y[self.at["p"]])
 
     def G(self, Y):
-        prob, N = self.prob, self.N
+        prob, at, rows = self.prob, self.at, self.rows
         x, ph, p = self.split(Y)
         R, Rx, *_ = prob.ps.evaluate(prob.full(x, p), prob.p, prob.dp, prob.dp2, prob.ctl)
         Rzv, dRzv, _ = prob.ps.second(prob.full(x, p), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
-        G = np.concatenate([R, Rzv, [self.ell @ ph - 1.0]])
-        M = np.zeros((2 * N + 1, 2 * N + 2))
-        M[:N, :N + 1] = Rx[:, :N + 1]
-        M[:N, -1] = Rx[:, N + 1]
-        M[N:2 * N, :N + 1] = dRzv[:, :N + 1]
-        M[N:2 * N, -1] = dRzv[:, N + 1]
-        M[N:2 * N, N + 1:2 * N + 1] = Rx[:, :N]
-        M[2 * N, N + 1:2 * N + 1] = self.ell
+        G = rows.pack(R=R, Rz_phi=Rzv, norm=self.ell @ ph - 1.0)
+        M = np.zeros((rows.size, at.size))
+        M[rows["R"], self.x_at] = Rx[:, self.x_cols]
+        M[rows["R"], at["p"]] = Rx[:, self.p_col]
+        M[rows["Rz_phi"], self.x_at] = dRzv[:, self.x_cols]
+        M[rows["Rz_phi"], at["p"]] = dRzv[:, self.p_col]
+        M[rows["Rz_phi"], at["phi"]] = Rx[:, self.z_cols]
+        M[rows["norm"], at["phi"]] = self.ell
         return G, M
 
     def residual(self, G) -> float:
-        prob, N = self.prob, self.N
-        return max(float(np.abs(G[:N] * prob.rs).max()), float(np.abs(G[N:2 * N] * prob.rs).max()),
-                   abs(float(G[-1])))
+        prob, rows = self.prob, self.rows
+        return max(float(np.abs(G[rows["R"]] * prob.rs).max()), float(np.abs(G[rows["Rz_phi"]] * prob.rs).max()),
+                   abs(float(G[rows["norm"]])))
 
     def correct(self, Y, a, b, iters: int = 15):
         Y = Y.copy()
@@ -243,23 +242,23 @@ class _Fold:
         prob = self.prob
         x, ph, p = self.split(Y)
         _, Rx, *_ = prob.ps.evaluate(prob.full(x, p), prob.p, prob.dp, prob.dp2, prob.ctl)
-        U = np.linalg.svd(Rx[:, :self.N])[0]
+        U = np.linalg.svd(Rx[:, self.z_cols])[0]
         u = U[:, -1]
         if u_ref is not None and u @ u_ref < 0:
             u = -u
         _, _, Rzz = prob.ps.second(prob.full(x, p), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
-        return float(u @ (Rzz * prob.rs)) / max(float(np.linalg.norm(ph * np.concatenate(
-            [np.ones(prob.n), np.full(2, 1.0 / prob.Fs)]))) ** 2, 1e-300), u
+        return float(u @ (Rzz * prob.rs)) / max(float(np.linalg.norm(ph * prob.w[self.z_cols])) ** 2, 1e-300), u
 
 
-def _null_q(ph: np.ndarray, n: int) -> np.ndarray:
-    nq = ph[:n]
+def _null_q(ph: np.ndarray, at) -> np.ndarray:
+    """The joint-angle part of the null vector ``ph`` (its ``q`` block in the layout ``at``), largest entry +1."""
+    nq = ph[at["q"]]
     j = int(np.argmax(np.abs(nq)))
     return nq / nq[j] if nq[j] != 0 else nq.copy()
 
 
 def _fold_half(fs: _Fold, Y0, tau0, p_min, p_max, max_points, step, max_step):
-    prob, n = fs.prob, fs.prob.n
+    prob, at = fs.prob, fs.prob.point
     pts, taus = [Y0], [tau0]
     cus = []
     u_prev = fs.cusp_coefficient(Y0, None)[1]
@@ -284,7 +283,7 @@ def _fold_half(fs: _Fold, Y0, tau0, p_min, p_max, max_points, step, max_step):
                 break
             continue
         x, _, p = fs.split(Y)
-        if np.any(np.abs(x[:n]) >= prob.limits * (1 - 1e-6)):
+        if np.any(np.abs(x[at["q"]]) >= prob.limits * (1 - 1e-6)):
             status, message = "joint_limit", "the fold configuration reached a joint limit"
             break
         c, u = fs.cusp_coefficient(Y, u_prev)
@@ -301,7 +300,7 @@ def _fold_half(fs: _Fold, Y0, tau0, p_min, p_max, max_points, step, max_step):
                 yc = None
             if yc is not None:
                 xc, _, pc = fs.split(yc)
-                cus.append(BoundaryPoint("cusp", pc, float(xc[-1]), xc[:n].copy(), xc[n:n + 2].copy()))
+                cus.append(BoundaryPoint("cusp", pc, float(xc[at["t"]]), xc[at["q"]].copy(), xc[at["F"]].copy()))
         c_prev, u_prev = c, u
         pts.append(Y)
         taus.append(tb)
@@ -390,16 +389,19 @@ def _boundary(m, control, parameter, start, p_min, p_max, max_points, t_max, ste
     if name == "k":
         p_scale = float(max(np.max(m.k1), np.max(m.k2)))
     fs = _Fold(prob, ev.null_x / float(ev.null_x @ ev.null_x), p_scale)
-    Y0 = np.concatenate([ev.x, ev.null_x / float(fs.ell @ ev.null_x), [0.0]])
+    at = fs.at
+    Y0 = at.pack(**prob.point.unpack(ev.x), phi=ev.null_x / float(fs.ell @ ev.null_x), p=0.0)
     G, M = fs.G(Y0)
     sv = np.linalg.svd(M / fs.w, compute_uv=False)
     regular = sv[-1] > RANK_TOL * sv[0]
     if regular:
-        Yc, _ = fs.correct(Y0, np.eye(Y0.size)[-1] / fs.w[-1], 0.0)
+        fix_p = np.zeros(at.size)
+        fix_p[at["p"]] = 1.0 / fs.w[at["p"]]
+        Yc, _ = fs.correct(Y0, fix_p, 0.0)
         if Yc is not None:
             Y0 = Yc
         tau0 = fs.tangent(Y0, None)
-        if tau0[-1] < 0:
+        if tau0[at["p"]] < 0:
             tau0 = -tau0
         up, cu_up, st_up, msg_up = _fold_half(fs, Y0, tau0, p_min, p_max, max_points, step, max_step)
         dn, cu_dn, st_dn, msg_dn = _fold_half(fs, Y0, -tau0, p_min, p_max, max_points, step, max_step)
@@ -408,13 +410,12 @@ def _boundary(m, control, parameter, start, p_min, p_max, max_points, t_max, ste
         if ev.kind == "branch_point":
             # the start itself: a pitchfork the parameter unfolds is the cusp of the fold curve
             cusps.insert(len(cu_dn), BoundaryPoint("cusp", 0.0, ev.t, ev.q.copy(), ev.force.copy()))
-        n, N = m.n, prob.N
-        Y = np.array(pts)
+        Y = at.unpack(np.array(pts))
         status = st_up if st_up != "p_range" else st_dn
         message = "; ".join(s for s in (f"p up: {msg_up}", f"p down: {msg_dn}") if s)
-        return StabilityBoundary("fold", name, dp2, Y[:, -1].copy(), Y[:, N].copy(), Y[:, :n].copy(),
-                                 Y[:, n:n + 2].copy(), np.array([_null_q(y[N + 1:2 * N + 1], n) for y in Y]),
-                                 cusps, status, message, ctl, ev)
+        return StabilityBoundary("fold", name, dp2, Y["p"].copy(), Y["t"].copy(), Y["q"].copy(), Y["F"].copy(),
+                                 np.array([_null_q(ph, prob.ps.layouts.z) for ph in Y["phi"]]), cusps, status, message,
+                                 ctl, ev)
     return _branch_point_curve(m, ctl, name, dp2, ev, br, p_min, p_max, max_points, t_bound)
 
 

@@ -187,14 +187,13 @@ def _start_point(m: Manipulator, prob: PathProblem, sign: float) -> PathPoint:
 def _branch_from(prob: PathProblem, pts: list[PathPoint], s: list[float], events: list, status: str,
                  message: str) -> Branch:
     m = prob.m
-    X = np.array([p.x for p in pts])
-    n = prob.n
+    X = prob.point.unpack(np.array([p.x for p in pts]))
     rest = None
     if prob.control.kind in ("preload", "move"):
         base = np.column_stack([m.L1_0, m.L2_0])
-        dl = prob.control.direction[:2 * n].reshape(n, 2)
-        rest = base[None, :, :] + X[:, -1][:, None, None] * dl[None, :, :]
-    return Branch(control=prob.control, t=X[:, -1].copy(), q=X[:, :n].copy(), force=X[:, n:n + 2].copy(),
+        dl = prob.control.preload_direction
+        rest = base[None, :, :] + X["t"][:, None, None] * dl[None, :, :]
+    return Branch(control=prob.control, t=X["t"].copy(), q=X["q"].copy(), force=X["F"].copy(),
                   tip=np.array([p.tip for p in pts]), energy=np.array([p.E for p in pts]),
                   morse_index=np.array([p.morse for p in pts], dtype=int),
                   stable=np.array([p.stable for p in pts], dtype=bool), s=np.array(s), events=tuple(events),
@@ -304,11 +303,12 @@ def _compiled_step(prob: PathProblem, a: PathPoint, h: float, Xa: np.ndarray):
 def _bound_before_limit(prob: PathProblem, a: PathPoint, y: np.ndarray, t_max, t_min) -> bool:
     """Whether the step ``a -> y`` that crosses a joint limit crosses t_max / t_min first: the point solved at
     that bound is inside the range."""
+    at_t = prob.point["t"]
     for bound in (t_max, t_min):
         if bound is None:
             continue
-        if (y[-1] - bound) * (a.x[-1] - bound) < 0.0:
-            frac = (bound - a.x[-1]) / (y[-1] - a.x[-1])
+        if (y[at_t] - bound) * (a.x[at_t] - bound) < 0.0:
+            frac = (bound - a.x[at_t]) / (y[at_t] - a.x[at_t])
             ye, _ = prob.correct_t(a.x + frac * (y - a.x), float(bound))
             if ye is not None and prob.limit_ratio(ye)[0] < 1.0 - LIMIT_MARGIN:
                 return True
@@ -334,6 +334,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
     h = float(step)
     status, message = "max_points", ""
     X0 = pts[0].x * prob.w
+    at_t, at_F = prob.point["t"], prob.point["F"]
     while len(pts) < max_points:
         if expired():
             status, message = "time_limit", "the time limit ran out: the points computed so far"
@@ -355,7 +356,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             h *= 0.5
             if h < min_step:
                 status = "step_too_small" if y is not None else "corrector_failed"
-                message = (f"the step fell below min_step = {min_step:g} at t = {a.x[-1]:.6g}: the branch could not "
+                message = (f"the step fell below min_step = {min_step:g} at t = {a.x[at_t]:.6g}: the branch could not "
                            "be continued (a singular point the corrector cannot pass, or a cusp)")
                 break
             continue
@@ -375,12 +376,12 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             pts.append(bl)
             s.append(s[-1] + sig)
             status = "joint_limit"
-            message = f"joint {prob.limit_ratio(yl)[1] + 1} reached its range bound at t = {yl[-1]:.6g}"
+            message = f"joint {prob.limit_ratio(yl)[1] + 1} reached its range bound at t = {yl[at_t]:.6g}"
             break
         # t bounds: the end point at exactly t_max / t_min
         for bound, name, crossed in ((t_max, "t_max", lambda v, bd: v > bd), (t_min, "t_min", lambda v, bd: v < bd)):
-            if bound is not None and crossed(y[-1], bound) and not crossed(a.x[-1], bound):
-                frac = (bound - a.x[-1]) / (y[-1] - a.x[-1])
+            if bound is not None and crossed(y[at_t], bound) and not crossed(a.x[at_t], bound):
+                frac = (bound - a.x[at_t]) / (y[at_t] - a.x[at_t])
                 ye, _ = prob.correct_t(a.x + frac * (y - a.x), float(bound))
                 if ye is not None:
                     b = path_point(prob, ye, prob.tangent(ye, a.tau))
@@ -389,13 +390,13 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
                 break
         else:
             name = None
-        turned = a.tau[-1] * b.tau[-1] < 0
+        turned = a.tau[at_t] * b.tau[at_t] < 0
         new = events_between(prob, len(pts) - 1, a, b, h)
         if turned and not new and prob.held_rows.shape[0] == 2 and min(_tip_rank(a), _tip_rank(b)) < 0.1:
             # t turned with no fold of the reduced Hessian: the held tip passed the edge of its workspace (J loses
             # rank between the points: the chain straightens) and the branch would come back on the other side
             status = "workspace_boundary"
-            t_edge = max(a.x[-1], b.x[-1]) if a.tau[-1] > 0 else min(a.x[-1], b.x[-1])
+            t_edge = max(a.x[at_t], b.x[at_t]) if a.tau[at_t] > 0 else min(a.x[at_t], b.x[at_t])
             message = (f"the held tip reached the edge of its workspace at t = {t_edge:.6g} (the tip Jacobian loses "
                        "rank: the chain straightens); the branch ends there")
             break
@@ -403,7 +404,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         pts.append(b)
         s.append(s[-1] + float(np.linalg.norm((b.x - a.x) * prob.w)))
         if status in ("t_max", "t_min") and name is not None:
-            message = f"t reached {status} = {b.x[-1]:.6g}"
+            message = f"t reached {status} = {b.x[at_t]:.6g}"
             break
         if stop_at == "event" and new:
             status, message = "event", f"stopped at the first event ({new[0].kind})"
@@ -417,7 +418,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         if len(pts) > 10 and s[-1] > 5 * max_step and float(np.linalg.norm(Xa + theta * seg - X0)) < 0.1 * h:
             status, message = "closed_loop", "the branch closed on its start"
             break
-        if float(np.linalg.norm(b.x[prob.n:prob.n + 2])) > FORCE_BOUND * prob.Fs:
+        if float(np.linalg.norm(b.x[at_F])) > FORCE_BOUND * prob.Fs:
             status, message = "force_bound", f"|F| exceeded {FORCE_BOUND:g} force units k c^2/(2b)"
             break
         if prob.held_rows.shape[0] == 2:

@@ -1,7 +1,7 @@
 """Continuation: equilibria followed along a sequence of tip targets, in one home.
 
 Three users, one mechanism (warm-started Newton on the KKT system, the compiled continuation
-kernel of :meth:`BoundSolver.batch_continue <tensegrity_opt.numerics.BoundSolver.batch_continue>`
+kernel of :meth:`ChainSolver.batch_continue <tensegrity_opt.numerics.ChainSolver.batch_continue>`
 for short chains):
 
 * :func:`solve_equilibria_batch` - a whole trajectory of targets in one call;
@@ -16,7 +16,7 @@ A trajectory of tip targets solved in one call (control loops).
 the global least-energy stable equilibrium (:func:`solve_equilibrium`); with
 ``continuation=True`` every next one continues the branch through the previous solution —
 what a manipulator driven along a trajectory actually does — by Newton corrections run
-in compiled code for short chains (the C kernels of :mod:`.kernels` up to ``KERNEL_MAX``
+in compiled code for short chains (the C kernels of :mod:`tensegrity_opt.numerics.kernels` up to ``KERNEL_MAX``
 segments, CasADi's ``rootfinder`` under ``mapaccum`` up to ``numerics.DENSE_MAX``), classified
 in one batch. For one target at a time (a control loop) see :class:`tensegrity_opt.Tracker`. A point where the
 branch ends or loses stability is re-solved globally (warm-started from the previous configuration) and the
@@ -61,6 +61,7 @@ import numpy as np
 from ...errors import InvalidParameterError, SolverError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
+from ...numerics.layout import equilibrium_unknowns
 from ...outcome import SolverInfo
 from ...timelimit import check_time
 from ..equilibria.equilibrium import (
@@ -172,15 +173,13 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
     Returns the leading points where Newton converged (KKT residual within ``1e-9`` of the torque
     scale) inside the physical range — the first failure ends the prefix — classified.
     """
-    n = m.n
     mdl = chain_solver(m)
-    c = mdl.batch_continue(targets, np.concatenate([np.cumsum(q0), F0]))
-    Z = c.Z
-    Q = np.diff(np.hstack([np.zeros((Z.shape[0], 1)), Z[:, :n]]), axis=1)
+    c = mdl.batch_continue(targets, equilibrium_unknowns(m.n).pack(phi=np.cumsum(q0), F=F0))
+    Q = np.diff(np.hstack([np.zeros((c.Z.shape[0], 1)), c.phi]), axis=1)
     tol = 1e-9 * max(1.0, c.torque_scale)        # the residual is in the solver's units
-    ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(Z), axis=1)
+    ok = (c.residual <= tol) & np.all(np.abs(Q) < m.joint_limits, axis=1) & np.all(np.isfinite(c.Z), axis=1)
     k = int(np.argmin(ok)) if not ok.all() else ok.size
-    Q, Fs = Q[:k], Z[:k, n:]
+    Q, Fs = Q[:k], c.force[:k]
     its = None if c.iterations is None else c.iterations[:k]
     if c.reduced_hessian is not None:
         return Prefix(Q, Fs, c.energy[:k], c.tip[:k], *classify_reduced(c.reduced_hessian[:k], scale=m.torque_scale),

@@ -20,7 +20,7 @@ from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...serialize import numbers
 
-__all__ = ["Control", "as_control", "KINDS"]
+__all__ = ["Control", "as_control", "checked_vector", "KINDS"]
 
 #: The kinds of :class:`Control` (the names of its constructors).
 KINDS = ("displacement", "load", "guided", "wall", "preload", "move")
@@ -41,24 +41,15 @@ def _unit(v, field: str, size: int | None = None) -> np.ndarray:
     return d / norm
 
 
-def _finite(v, field: str, size: int) -> np.ndarray:
+def checked_vector(v, size: int, name: str) -> np.ndarray:
+    """``size`` finite numbers (a target, a load, a direction), flattened, checked (``field=name``)."""
     try:
-        d = np.asarray(v, dtype=float).ravel()
+        a = np.asarray(v, dtype=float).ravel()
     except (TypeError, ValueError):
-        raise InvalidParameterError(f"{field} must be numbers, got {v!r}", field=field) from None
-    if d.size != size or not np.all(np.isfinite(d)):
-        raise InvalidParameterError(f"{field} must be {size} finite numbers, got {v!r}", field=field)
-    return d
-
-
-def _vec2(v, field: str) -> np.ndarray:
-    try:
-        d = np.asarray(v, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{field} must be a pair of numbers, got {v!r}", field=field) from None
-    if d.size != 2 or not np.all(np.isfinite(d)):
-        raise InvalidParameterError(f"{field} must be two finite numbers, got {v!r}", field=field)
-    return d
+        raise InvalidParameterError(f"{name} must be {size} numbers, got {v!r}", field=name) from None
+    if a.size != size or not np.all(np.isfinite(a)):
+        raise InvalidParameterError(f"{name} must be {size} finite numbers, got {v!r}", field=name)
+    return a
 
 
 @dataclass(frozen=True)
@@ -95,7 +86,7 @@ class Control:
     def load(cls, direction=(-1.0, 0.0), base=(0.0, 0.0)) -> "Control":
         """A dead tip load ``F = base + t d`` (``d`` the unit ``direction``; ``(-1, 0)`` compresses),
         the tip free."""
-        return cls("load", _unit(direction, "direction", 2), _vec2(base, "base"))
+        return cls("load", _unit(direction, "direction", 2), checked_vector(base, 2, "base"))
 
     @classmethod
     def guided(cls, direction=(-1.0, 0.0), base=(0.0, 0.0)) -> "Control":
@@ -104,7 +95,7 @@ class Control:
         d = _unit(direction, "direction", 2)
         if abs(d[0]) < 1e-12:
             raise InvalidParameterError("a guided load needs an x component (the guide takes y)", field="direction")
-        return cls("guided", d, _vec2(base, "base"), np.array([0.0, 1.0]))
+        return cls("guided", d, checked_vector(base, 2, "base"), np.array([0.0, 1.0]))
 
     @classmethod
     def wall(cls, normal=(0.0, 1.0), direction=(-1.0, 0.0), base=(0.0, 0.0)) -> "Control":
@@ -115,7 +106,7 @@ class Control:
         d = _unit(direction, "direction", 2)
         if abs(nu[1] * d[0] - nu[0] * d[1]) < 1e-12:
             raise InvalidParameterError("the load must have a component along the wall", field="direction")
-        return cls("wall", d, _vec2(base, "base"), nu)
+        return cls("wall", d, checked_vector(base, 2, "base"), nu)
 
     @classmethod
     def preload(cls, direction, tip: str = "free", load=(0.0, 0.0)) -> "Control":
@@ -124,7 +115,7 @@ class Control:
         fixed tip ``load``; ``"held"``: the tip held where the start has it (``F`` the holding force)."""
         if tip not in ("free", "held"):
             raise InvalidParameterError(f"tip must be 'free' or 'held', got {tip!r}", field="tip")
-        return cls("preload", _unit(direction, "direction"), _vec2(load, "load"), None, tip)
+        return cls("preload", _unit(direction, "direction"), checked_vector(load, 2, "load"), None, tip)
 
     @classmethod
     def move(cls, n: int, *, preload=None, load=None, displacement=None, tip: str = "free",
@@ -143,20 +134,20 @@ class Control:
             raise InvalidParameterError(f"tip must be 'free' or 'held', got {tip!r}", field="tip")
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
             raise InvalidParameterError(f"n must be an integer >= 1, got {n!r}", field="n")
-        dl = np.zeros(2 * int(n)) if preload is None else _finite(preload, "preload", 2 * int(n))
+        dl = np.zeros(2 * int(n)) if preload is None else checked_vector(preload, 2 * int(n), "preload")
         if tip == "free":
             if displacement is not None:
                 raise InvalidParameterError("a free tip takes a load change, not a displacement",
                                             field="displacement")
-            last = np.zeros(2) if load is None else _vec2(load, "load")
+            last = np.zeros(2) if load is None else checked_vector(load, 2, "load")
         else:
             if load is not None:
                 raise InvalidParameterError("a held tip takes a displacement, not a load change", field="load")
-            last = np.zeros(2) if displacement is None else _vec2(displacement, "displacement")
+            last = np.zeros(2) if displacement is None else checked_vector(displacement, 2, "displacement")
         d = np.concatenate([dl, last])
         if not np.any(d != 0.0):
             raise InvalidParameterError("the move must change at least one input", field="preload")
-        return cls("move", d, _vec2(base, "base") if tip == "free" else np.zeros(2), None, tip)
+        return cls("move", d, checked_vector(base, 2, "base") if tip == "free" else np.zeros(2), None, tip)
 
     @classmethod
     def spring(cls, n: int, segment: int, spring: int = 1, *, tip: str = "free", load=(0.0, 0.0)) -> "Control":
@@ -169,16 +160,32 @@ class Control:
         d[2 * int(segment) + spring - 1] = 1.0
         return cls.preload(d, tip=tip, load=load)
 
+    @property
+    def preload_direction(self) -> np.ndarray | None:
+        """The rest lengths' change per unit ``t``, ``(n, 2)`` (``L1_0, L2_0`` per segment): a preload's
+        direction, a move's preload part; None for the other kinds."""
+        if self.kind == "preload":
+            return self.direction.reshape(-1, 2)
+        if self.kind == "move":
+            return self.direction[:-2].reshape(-1, 2)
+        return None
+
+    @property
+    def tip_direction(self) -> np.ndarray | None:
+        """What ``t`` moves at the tip per unit ``t`` (2 numbers): the displacement's or the load's direction, a
+        move's load change (free tip) or displacement (held tip); None for a preload control."""
+        if self.kind == "preload":
+            return None
+        return self.direction[-2:] if self.kind == "move" else self.direction
+
     def to_dict(self) -> dict[str, Any]:
         """JSON form (a branch's ``control``): ``kind`` and the constructor's arguments."""
         if self.kind == "move":
-            n = (self.direction.size - 2) // 2
-            d = {"kind": "move", "tip": self.tip,
-                 "preload": [numbers(r) for r in self.direction[:2 * n].reshape(n, 2)]}
+            d = {"kind": "move", "tip": self.tip, "preload": [numbers(r) for r in self.preload_direction]}
             if self.tip == "free":
-                d["load"], d["base"] = numbers(self.direction[2 * n:]), numbers(self.base)
+                d["load"], d["base"] = numbers(self.tip_direction), numbers(self.base)
             else:
-                d["displacement"] = numbers(self.direction[2 * n:])
+                d["displacement"] = numbers(self.tip_direction)
             return d
         d = {"kind": self.kind, "direction": numbers(self.direction)}
         if self.kind != "displacement":

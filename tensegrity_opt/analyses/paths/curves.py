@@ -4,7 +4,7 @@
 branches present at the first deflected point (a Newton-seeded global search) are followed
 point to point by Newton corrections, each started from the previous point's solution: for
 chains of up to ``numerics.DENSE_MAX`` segments the whole path runs in compiled code (the C
-kernels of :mod:`.kernels` up to ``KERNEL_MAX`` segments, CasADi ``rootfinder`` under
+kernels of :mod:`tensegrity_opt.numerics.kernels` up to ``KERNEL_MAX`` segments, CasADi ``rootfinder`` under
 ``mapaccum`` beyond) and is classified in one batch; a point where that fails is retried with
 the damped Newton method. At each point the
 least-energy stable branch is selected. When every tracked stable branch has ended (a fold,
@@ -60,10 +60,10 @@ from ...serialize import nullable, number, numbers
 from ...timelimit import check_time
 from ..equilibria.all_equilibria import find_equilibria
 from ..equilibria.buckling import critical_force
-from .continuation import BranchPoints, follow
 from ..equilibria.equilibrium import Equilibrium, straight_equilibrium
 from ..equilibria.least_energy import WELLS_MAX, search_stable, solve_equilibrium
 from ..equilibria.seeds import seed_starts, well_seeds
+from .continuation import BranchPoints, follow
 
 __all__ = ["Curve", "CurveEnd", "Jump", "force_deflection"]
 

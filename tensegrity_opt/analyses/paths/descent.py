@@ -56,8 +56,8 @@ def state_at(prob, x: np.ndarray) -> ArmState:
     """The :class:`ArmState` at the point ``x`` of the path problem ``prob``, classified."""
     w, _, E, tip = prob.reduced(x)
     idx, st = prob.morse(w)
-    n = prob.n
-    return ArmState(x[:n].copy(), x[n:n + 2].copy(), np.asarray(tip, float).copy(), float(E), int(idx), bool(st))
+    at = prob.point
+    return ArmState(x[at["q"]].copy(), x[at["F"]].copy(), np.asarray(tip, float).copy(), float(E), int(idx), bool(st))
 
 
 class Descent:
@@ -65,23 +65,26 @@ class Descent:
 
     def __init__(self, prob, t: float, held: bool, F: np.ndarray) -> None:
         self.prob, self.t, self.held, self.F = prob, float(t), held, np.asarray(F, float)
-        self.n = prob.n
         self.Ts = float(prob.m.torque_scale)
+        self.at = prob.point
+        rows = prob.ps.layouts.rows
+        self.grad, self.control = rows["grad"], rows["control"]
 
     def x(self, q: np.ndarray, F: np.ndarray | None = None) -> np.ndarray:
-        return np.concatenate([q, self.F if F is None else F, [self.t]])
+        """The path problem's point at ``q`` under ``F`` (default the descent's) at its ``t``."""
+        return self.at.pack(q=q, F=self.F if F is None else F, t=self.t)
 
     def multiplier(self, q: np.ndarray):
         """``(grad E, J, tip residual, F)`` for the held tip: ``F`` the least-squares multiplier."""
         R, _, _, J, _, _ = self.prob.eval_all(self.x(q, np.zeros(2)))
-        g = R[:self.n]
+        g = R[self.grad]
         F = np.linalg.lstsq(J.T, g, rcond=None)[0]
-        return g, J, R[self.n:self.n + 2], F
+        return g, J, R[self.control], F
 
     def field(self, _tau: float, q: np.ndarray) -> np.ndarray:
         if not self.held:
             R = self.prob.eval_all(self.x(q))[0]
-            return -R[:self.n] / self.Ts
+            return -R[self.grad] / self.Ts
         g, J, r, F = self.multiplier(q)
         back = np.linalg.lstsq(J, r, rcond=None)[0]             # pulls the drift back onto tip(q) = target
         return -(g - J.T @ F) / self.Ts - back
@@ -114,7 +117,7 @@ class Descent:
         if not st:
             return None
         y, _ = prob.correct_t(x, self.t)
-        if y is None or float(np.abs(y[:self.n] - q).max()) > POLISH_RADIUS:
+        if y is None or float(np.abs(y[self.at["q"]] - q).max()) > POLISH_RADIUS:
             return None
         if prob.limit_ratio(y)[0] >= 1.0 - LIMIT_MARGIN:
             return None

@@ -46,7 +46,7 @@ def switch_branch(branch: Branch, event: BranchEvent, side: int = 1, *, step: fl
     v = basis[0] * c[1] - basis[1] * c[0]
     v = v / np.linalg.norm(v)
     if event.null_x is not None:
-        nz = np.concatenate([event.null_x, [0.0]]) * prob.w
+        nz = prob.point.pack(**prob.ps.layouts.z.unpack(event.null_x), t=0.0) * prob.w
         if v @ nz < 0:
             v = -v
     v = side * v
@@ -77,9 +77,9 @@ def switch_branch(branch: Branch, event: BranchEvent, side: int = 1, *, step: fl
 def _tangent_near(branch: Branch, event: BranchEvent) -> np.ndarray:
     prob: PathProblem = branch.problem
     i = min(event.index, len(branch) - 1)
-    x = np.concatenate([branch.q[i], branch.force[i], [branch.t[i]]])
+    x = prob.point.pack(q=branch.q[i], F=branch.force[i], t=branch.t[i])
     j = min(i + 1, len(branch) - 1)
-    x2 = np.concatenate([branch.q[j], branch.force[j], [branch.t[j]]])
+    x2 = prob.point.pack(q=branch.q[j], F=branch.force[j], t=branch.t[j])
     d = (x2 - x) * prob.w
     nrm = np.linalg.norm(d)
     return d / nrm if nrm > 0 else prob.tangent(x, None)

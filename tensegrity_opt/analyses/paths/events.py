@@ -144,18 +144,19 @@ def _locate_turn(prob: PathProblem, a: PathPoint, b: PathPoint, h: float) -> np.
         y = _on_step(prob, a, b, sig, h) if 0.0 < sig < h else (a.x if sig == 0.0 else b.x)
         if y is None:
             raise _Unlocatable
-        return float(prob.tangent(y, a.tau)[-1])
+        return float(prob.tangent(y, a.tau)[at_t])
 
-    return _on_step(prob, a, b, _brent(g, 0.0, h, float(a.tau[-1]), float(b.tau[-1])), h) \
-        if a.tau[-1] * b.tau[-1] < 0 else b.x
+    at_t = prob.point["t"]
+    return _on_step(prob, a, b, _brent(g, 0.0, h, float(a.tau[at_t]), float(b.tau[at_t])), h) \
+        if a.tau[at_t] * b.tau[at_t] < 0 else b.x
 
 
 def _null(prob: PathProblem, x: np.ndarray):
     """Right and left null vectors of ``R_z`` (smallest singular pair) and ``R_t``, at ``x``."""
     _, Rx = prob.eval(x)
-    Rz = Rx[:, :prob.N]
+    Rz = Rx[:, prob.point.span("q", "F")]
     U, S, Vt = np.linalg.svd(Rz)
-    return Vt[-1], U[:, -1], Rx[:, -1], S
+    return Vt[-1], U[:, -1], Rx[:, prob.point["t"]], S
 
 
 def moore_spence(prob: PathProblem, x: np.ndarray, phi: np.ndarray, *, s: float = 0.0, iters: int = 20):
@@ -163,21 +164,22 @@ def moore_spence(prob: PathProblem, x: np.ndarray, phi: np.ndarray, *, s: float 
 
     Returns ``(x, phi)`` converged, or ``None``. Regular at a quadratic fold (not at a branch point).
     """
-    N = prob.N
+    at, rows, col = prob.ps.layouts.fold, prob.ps.layouts.fold_rows, prob.point
+    x_at, z_at = at.span("q", "t"), col.span("q", "F")
     ell = phi / float(phi @ phi)
-    y = np.concatenate([x, phi / float(ell @ phi)])
+    y = at.pack(**col.unpack(x), phi=phi / float(ell @ phi))
     for _ in range(iters):
-        xs, ph = y[:N + 1], y[N + 1:]
+        xs, ph = y[x_at], y[at["phi"]]
         R, Rx = prob.eval(xs, s)
         Rzv, dRzv, _ = prob.ps.second(prob.full(xs, s), ph, prob.p, prob.dp, prob.dp2, prob.ctl)
-        G = np.concatenate([R, Rzv, [ell @ ph - 1.0]])
+        G = rows.pack(R=R, Rz_phi=Rzv, norm=ell @ ph - 1.0)
         if prob.residual(R) <= NEWTON_TOL and float(np.abs(Rzv * prob.rs).max()) <= 1e-10:
             return xs, ph
-        M = np.zeros((2 * N + 1, 2 * N + 1))
-        M[:N, :N + 1] = Rx
-        M[N:2 * N, :N + 1] = dRzv[:, :N + 1]
-        M[N:2 * N, N + 1:] = Rx[:, :N]
-        M[2 * N, N + 1:] = ell
+        M = np.zeros((rows.size, at.size))
+        M[rows["R"], x_at] = Rx
+        M[rows["Rz_phi"], x_at] = dRzv[:, prob.ps.point.span("q", "t")]
+        M[rows["Rz_phi"], at["phi"]] = Rx[:, z_at]
+        M[rows["norm"], at["phi"]] = ell
         try:
             dy = np.linalg.solve(M, -G)
         except np.linalg.LinAlgError:
@@ -194,11 +196,12 @@ def _make_event(prob: PathProblem, kind: str, index: int, x: np.ndarray, a: Path
     _, _, E, tip = prob.reduced(x)
     nv = None
     if null is not None:
-        nq = null[:prob.n]
+        nq = null[prob.ps.layouts.z["q"]]
         big = int(np.argmax(np.abs(nq)))
         nv = nq / nq[big] if nq[big] != 0.0 else nq.copy()
     stab = ("lost" if a.stable and not b.stable else "gained" if b.stable and not a.stable else "unchanged")
-    return BranchEvent(kind, index, float(x[-1]), x[:prob.n].copy(), x[prob.n:prob.n + 2].copy(), tip.copy(),
+    at = prob.point
+    return BranchEvent(kind, index, float(x[at["t"]]), x[at["q"]].copy(), x[at["F"]].copy(), tip.copy(),
                        float(E), nv, a.morse, b.morse, stab, method, prob.residual(R), joint, x.copy(),
                        None if null_x is None else null_x.copy())
 
@@ -206,7 +209,8 @@ def _make_event(prob: PathProblem, kind: str, index: int, x: np.ndarray, a: Path
 def _singular_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h: float) -> list[BranchEvent]:
     """Folds and branch points between two accepted points (located; see the module docstring)."""
     out = []
-    turned = a.tau[-1] * b.tau[-1] < 0
+    at_t = prob.point["t"]
+    turned = a.tau[at_t] * b.tau[at_t] < 0
     lo, hi = sorted((a.morse, b.morse))
     crossings = list(range(lo, hi))
     if not crossings and turned:
@@ -234,7 +238,8 @@ def _singular_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, 
 def events_between(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h: float) -> list[BranchEvent]:
     """The folds and branch points between the accepted points ``a`` (number ``index``) and ``b``, ``h`` apart in
     scaled arclength: none unless the Morse index changes or ``t`` turns back (located; module docstring)."""
-    if b.morse != a.morse or a.tau[-1] * b.tau[-1] < 0:
+    at_t = prob.point["t"]
+    if b.morse != a.morse or a.tau[at_t] * b.tau[at_t] < 0:
         return _singular_events(prob, index, a, b, h)
     return []
 

@@ -28,9 +28,9 @@ from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome
 from ...serialize import nullable, number, numbers
+from ..equilibria.equilibrium import Equilibrium, check_q0
 from .branches import Branch, trace_branch
 from .control import Control
-from ..equilibria.equilibrium import Equilibrium, check_q0
 
 __all__ = ["LimitLoad", "limit_load", "check_max_load", "DEFAULT_MAX_LOAD"]
 
@@ -160,7 +160,7 @@ def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
     P = min(upto + 1, len(br))
     if P < 3:
         return None, None
-    X = np.column_stack([br.q, br.force, br.t])[:P]
+    X = prob.point.stack(P, q=br.q[:P], F=br.force[:P], t=br.t[:P])
     c = np.array([_compliance(prob, X[i], d, guided) for i in range(P)])
     ok = np.isfinite(c) & (c > 0.0) & br.stable[:P]     # c = 0: no compliance along the load (straight, guided)
     if ok.sum() < 3:
@@ -175,7 +175,7 @@ def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
     y, _ = prob.correct_t(X[i], ts)
     if y is None:
         return float(br.t[i]), br.force[i].copy()
-    return float(y[-1]), y[prob.n:prob.n + 2].copy()
+    return float(y[prob.point["t"]]), y[prob.point["F"]].copy()
 
 
 def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", max_load: float | None = None,

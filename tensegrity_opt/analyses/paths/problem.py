@@ -34,7 +34,8 @@ LIMIT_MARGIN = 1e-6
 NEWTON_TOL = 1e-11
 #: Corrector iterations allowed per step.
 NEWTON_ITER = 12
-#: Relative eigenvalue tolerance of the stability classification (as :mod:`.stability`).
+#: Relative eigenvalue tolerance of the stability classification (as
+#: :mod:`tensegrity_opt.analyses.equilibria.stability`).
 EIG_REL_TOL = 1e-9
 
 
@@ -54,9 +55,12 @@ class PathProblem:
         n = m.n
         self.N = n + 2
         self.ps = path_system(n)
+        #: the blocks of a point ``x = (q, F, t)``, of a tangent and of the columns of ``R_x`` in ``(z, t)``
+        self.point = self.ps.layouts.branch_point
         self.p = np.array(m.params, dtype=float)
-        self.dp = np.zeros(6 * n)
-        self.dp2 = np.zeros(6 * n) if dp2 is None else np.asarray(dp2, float)
+        self.dp = np.zeros(self.p.size)
+        self.dp2 = np.zeros(self.p.size) if dp2 is None else np.asarray(dp2, float)
+        at_p = self.ps.layouts.parameters
         self.Ls = float(m.straight_length / n)
         self.Fs = float(m.torque_scale / self.Ls)
         tip0 = m.tip(start_q)
@@ -77,10 +81,10 @@ class PathProblem:
             F_ref = control.base
             t_scale = self.Fs
         elif k == "move":                                # every input along a segment, t in [0, 1]
-            dl = control.direction[:2 * n].reshape(n, 2)
-            self.dp[4 * n:5 * n] = dl[:, 0]
-            self.dp[5 * n:6 * n] = dl[:, 1]
-            last = control.direction[2 * n:]
+            dl = control.preload_direction
+            self.dp[at_p["L10"]] = dl[:, 0]
+            self.dp[at_p["L20"]] = dl[:, 1]
+            last = control.tip_direction
             if control.tip == "held":
                 A_tip, A_F, c, F_ref = eye, zero, np.array([-last[0], last[1]]), np.zeros(2)
                 size = math.sqrt(float(dl.ravel() @ dl.ravel()) + float(last @ last)) / self.Ls
@@ -90,9 +94,9 @@ class PathProblem:
                                   math.sqrt(float(last @ last)) / self.Fs)
             t_scale = 1.0 / size                         # the arclength in t: the scaled distance moved
         else:                                            # preload
-            dl = control.direction.reshape(n, 2)
-            self.dp[4 * n:5 * n] = dl[:, 0]
-            self.dp[5 * n:6 * n] = dl[:, 1]
+            dl = control.preload_direction
+            self.dp[at_p["L10"]] = dl[:, 0]
+            self.dp[at_p["L20"]] = dl[:, 1]
             if control.tip == "held":
                 A_tip, A_F, c, F_ref = eye, zero, np.zeros(2), np.zeros(2)
             else:
@@ -101,13 +105,13 @@ class PathProblem:
         self.A_tip = A_tip
         self.held_rows = A_tip[[i for i in range(2) if np.any(A_tip[i] != 0.0)]]
         self.ctl = control_vector(A_tip, A_F, c, tip0, F_ref)
-        self.w = np.concatenate([np.ones(n), np.full(2, 1.0 / self.Fs), [1.0 / t_scale]])
+        self.w = self.point.pack(q=1.0, F=1.0 / self.Fs, t=1.0 / t_scale)
         rows = [1.0 / (self.Ls if np.any(A_tip[i] != 0.0) else self.Fs) for i in range(2)]
-        self.rs = np.concatenate([np.full(n, 1.0 / m.torque_scale), rows])
+        self.rs = self.ps.layouts.rows.pack(grad=1.0 / m.torque_scale, control=rows)
         self.limits = m.joint_limits
         if start_F is None:
             start_F = m.force_from_torques(start_q) if k in ("displacement",) or control.held[0] else F_ref
-        self.x0_guess = np.concatenate([start_q, start_F, [0.0]])
+        self.x0_guess = self.point.pack(q=start_q, F=start_F, t=0.0)
         self._last = None
         # the held rows scaled to torque units: the bordered Hessian's entries are then of one size
         self.kkt_scale = m.torque_scale / self.Ls
@@ -134,9 +138,10 @@ class PathProblem:
         return out
 
     def eval(self, x: np.ndarray, s: float = 0.0):
-        """``(R, R_x)`` with ``R_x`` the ``N x (N + 1)`` Jacobian in ``(z, t)``."""
+        """``(R, R_x)`` with ``R_x`` the ``N x (N + 1)`` Jacobian in ``(z, t)`` (its columns the blocks of
+        :attr:`point`)."""
         out = self.eval_all(x, s)
-        return out[0], out[1][:, :self.N + 1]
+        return out[0], out[1][:, :self.point.size]
 
     def residual(self, R: np.ndarray) -> float:
         return float(np.abs(R * self.rs).max())
@@ -174,8 +179,9 @@ class PathProblem:
 
     def correct_t(self, x_guess: np.ndarray, t: float):
         """The point at a given ``t`` (a natural-parameter solve)."""
-        a = np.zeros(self.N + 1)
-        a[-1] = 1.0 / self.w[-1]
+        a = np.zeros(self.point.size)
+        at_t = self.point["t"]
+        a[at_t] = 1.0 / self.w[at_t]
         return self.correct(x_guess, a, t)
 
     def tangent(self, x: np.ndarray, prev: np.ndarray | None, sign: float = 1.0) -> np.ndarray:
@@ -184,22 +190,23 @@ class PathProblem:
         A = Rx / self.w
         if prev is not None:
             M = np.vstack([A, prev])
-            rhs = np.zeros(self.N + 1)
-            rhs[-1] = 1.0
+            rhs = np.zeros(self.point.size)
+            rhs[-1] = 1.0                       # the last row: prev . v = 1
             try:
                 v = np.linalg.solve(M, rhs)
                 return v / np.linalg.norm(v)
             except np.linalg.LinAlgError:
                 pass
         _, _, Vt = np.linalg.svd(A)
-        v = Vt[-1]
+        v = Vt[-1]                              # the right singular vector of the smallest singular value
         if prev is not None:
             return v if v @ prev >= 0 else -v
-        if abs(v[-1]) < 1e-10:
+        at_t = self.point["t"]
+        if abs(v[at_t]) < 1e-10:
             raise InvalidParameterError("the start is a singular point of the branch (a fold or a branch point): "
                                         "the direction of increasing t is not defined; start nearby",
                                         field="start")
-        return v if v[-1] * sign > 0 else -v
+        return v if v[at_t] * sign > 0 else -v
 
     # -------------------------------------------------------------- classification
     def reduced(self, x: np.ndarray, s: float = 0.0):
@@ -231,7 +238,7 @@ class PathProblem:
 
     def limit_ratio(self, x: np.ndarray) -> tuple[float, int]:
         """``(max_i |q_i| / limit_i, i)``: how close the point is to a joint's range bound, and which joint."""
-        r = np.abs(x[:self.n]) / self.limits
+        r = np.abs(x[self.point["q"]]) / self.limits
         j = int(np.argmax(r))
         return float(r[j]), j
 

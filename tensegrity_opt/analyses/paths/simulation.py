@@ -55,10 +55,10 @@ from ...numerics import DENSE_MAX, chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
+from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
 from .branches import trace_branch
 from .control import Control
 from .descent import ArmState, Descent, state_at
-from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
 
 __all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "BRANCH_POINT_OFFSET"]
 
@@ -438,7 +438,7 @@ class _Run:
             # (a stability loss on the last step to t = 1 ends the branch as "t_max": the events decide)
             lost = [e for e in br.events if e.stability == "lost" and e.kind in ("fold", "branch_point")]
             if not lost and br.status == "t_max":
-                end = state_at(prob, np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]]))
+                end = state_at(prob, prob.point.pack(q=br.q[-1], F=br.force[-1], t=br.t[-1]))
                 if end.stable:
                     return end, "complete", ""
                 return None, "failed", (f"step {k}: the followed branch became unstable without a located fold or "
@@ -482,8 +482,8 @@ class _Run:
         """Descent from the fold (branch point) ``ev`` of ``br`` (the sub-step from fraction ``s0``, of length
         ``r``): ``(state, fraction, "landed", "")`` with the event recorded, or ``(None, fraction, status,
         message)``."""
-        n = self.m.n
         fold = ev.kind == "fold"
+        at = prob.point
         x_ev = ev.x.copy()
         phi = np.asarray(ev.null_vector, float)
         phi = phi / max(float(np.abs(phi).max()), 1e-300)
@@ -491,18 +491,19 @@ class _Run:
         if not fold:
             # just past the branch point along the traced branch (unstable there): at the branch point itself the
             # flow would leave only algebraically slowly
-            after = np.concatenate([br.q[-1], br.force[-1], [br.t[-1]]])
-            t_d = min(float(x_ev[-1]) + BRANCH_POINT_OFFSET / float(prob.w[-1]), float(after[-1]))
-            frac = (t_d - x_ev[-1]) / max(after[-1] - x_ev[-1], 1e-300)
+            after = at.pack(q=br.q[-1], F=br.force[-1], t=br.t[-1])
+            t_ev, t_after = x_ev[at["t"]], after[at["t"]]
+            t_d = min(float(t_ev) + BRANCH_POINT_OFFSET / float(prob.w[at["t"]]), float(t_after))
+            frac = (t_d - t_ev) / max(t_after - t_ev, 1e-300)
             y, _ = prob.correct_t(x_ev + (after - x_ev) * frac, t_d)
             if y is None:
                 return None, s0 + r * ev.t, "failed", f"step {k}: no point on the branch just past its branch point"
             note = f"the branch point is at fraction {s0 + r * ev.t:.12g}; the arm leaves it just past, here"
             x_ev = y
-        t_d = float(x_ev[-1])
+        t_d = float(x_ev[at["t"]])
         s_d = s0 + r * t_d
-        d = Descent(prob, t_d, self.held, x_ev[n:n + 2].copy())
-        q_ev = x_ev[:n].copy()
+        d = Descent(prob, t_d, self.held, x_ev[at["F"]].copy())
+        q_ev = x_ev[at["q"]].copy()
         V_ev = d.potential(q_ev)
         cands = {}
         for sign in (1, -1):

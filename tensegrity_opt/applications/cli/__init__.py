@@ -1,4 +1,5 @@
-"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|atlas|plan|simulate|force-estimate|plot|sweep ...``.
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|atlas|plan|
+simulate|force-estimate|plot|sweep ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
@@ -26,11 +27,21 @@ import numpy as np
 from ... import __version__
 from ...analyses.equilibria.all_equilibria import find_equilibria
 from ...analyses.equilibria.buckling import critical_force
-from ...analyses.paths.curves import force_deflection
 from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
 from ...analyses.equilibria.least_energy import solve_equilibrium
-from .common import (HELP_FORMAT, Parser, add_manipulator_options, eq_table, finite_float, fmt_q, note, positive_int,
-                     run_command)
+from ...analyses.paths.curves import force_deflection
+from .common import (
+    Parser,
+    add_command,
+    add_curve_options,
+    add_deflection_options,
+    add_manipulator_options,
+    eq_table,
+    finite_float,
+    fmt_q,
+    note,
+    run_command,
+)
 from .control import add_control_parsers
 from .paths import add_path_parsers
 from .plot import add_plot_parser
@@ -103,45 +114,34 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
     p.add_argument("--version", action="version", version=f"tensegrity-opt {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
-    def common(sp: argparse.ArgumentParser) -> None:
-        add_manipulator_options(sp)
-        sp.add_argument("--json", action="store_true", help="print JSON instead of a table")
+    def command(name: str, func, help: str) -> argparse.ArgumentParser:
+        return add_command(sub, name, func, help, json_help="print JSON instead of a table")
 
-    sp = sub.add_parser("buckling", formatter_class=HELP_FORMAT, help="critical force and buckling modes (the paper's Table 1)")
-    common(sp)
+    sp = command("buckling", _cmd_buckling, "critical force and buckling modes (the paper's Table 1)")
     sp.add_argument("--boundary", choices=("guided", "free"), default="guided",
                     help="tip guided (y held, the paper's case) or free")
-    sp.set_defaults(func=_cmd_buckling)
 
-    sp = sub.add_parser("equilibrium", formatter_class=HELP_FORMAT, help="least-energy stable equilibrium for a tip deflection or force")
-    common(sp)
+    sp = command("equilibrium", _cmd_equilibrium, "least-energy stable equilibrium for a tip deflection or force")
     sp.add_argument("--dx", type=finite_float, default=0.1,
-                    help="tip deflection along the chain (length; > 0 shortens it): the tip is held at (2 sum b - dx, dy)")
+                    help="tip deflection along the chain (length; > 0 shortens it): the tip is held at "
+                         "(2 sum b - dx, dy)")
     sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
     sp.add_argument("--fx", type=finite_float, default=None,
                     help="prescribe the tip force instead of the deflection (force; < 0 compresses; "
                          "0 when only --fy is given)")
-    sp.add_argument("--fy", type=finite_float, default=None, help="sideways tip force (force; 0 when only --fx is given)")
-    sp.set_defaults(func=_cmd_equilibrium)
+    sp.add_argument("--fy", type=finite_float, default=None,
+                    help="sideways tip force (force; 0 when only --fx is given)")
 
-    sp = sub.add_parser("equilibria", formatter_class=HELP_FORMAT, help="every equilibrium (minima, saddles, maxima) for a tip deflection")
-    common(sp)
-    sp.add_argument("--dx", type=finite_float, default=0.1, help="tip deflection along the chain (length)")
-    sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
+    sp = command("equilibria", _cmd_equilibria, "every equilibrium (minima, saddles, maxima) for a tip deflection")
+    add_deflection_options(sp)
     sp.add_argument("--method", choices=("search", "homotopy"), default="search",
                     help="search: multi-start Newton (any n, not certified); homotopy: PHCpack, certified, "
                          "n <= 6 (default: %(default)s)")
-    sp.set_defaults(func=_cmd_equilibria)
 
-    sp = sub.add_parser("curve", formatter_class=HELP_FORMAT, help="force-deflection curve along the stable branch (Fig. 6)")
-    common(sp)
-    sp.add_argument("--start", type=finite_float, default=0.0, help="first tip deflection dx (length)")
-    sp.add_argument("--stop", type=finite_float, default=1.0, help="last tip deflection dx (length)")
-    sp.add_argument("--num", type=positive_int, default=11, help="number of deflections, evenly spaced")
-    sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
+    sp = command("curve", _cmd_curve, "force-deflection curve along the stable branch (Fig. 6)")
+    add_curve_options(sp, num=11)
     sp.add_argument("--reference", choices=("straight", "rest"), default="straight",
                     help="measure dx, dy from the straight tip or from the rest configuration's tip (pre-bent arms)")
-    sp.set_defaults(func=_cmd_curve)
     add_path_parsers(sub)
     add_control_parsers(sub)
     add_plot_parser(sub)

@@ -13,12 +13,19 @@ import math
 import os
 import sys
 
-from ...errors import (InvalidParameterError, NonFiniteResult, StraightNotEquilibriumError, TensegrityError,
-                      UnstableStraightError)
+from ...errors import (
+    InvalidParameterError,
+    NonFiniteResult,
+    StraightNotEquilibriumError,
+    TensegrityError,
+    UnstableStraightError,
+)
 from ...model.manipulator import Manipulator
 
-__all__ = ["add_manipulator_options", "run_command", "positive_int", "finite_float", "HELP_FORMAT", "fmt_q",
-           "eq_table", "Parser", "error", "note"]
+__all__ = ["add_manipulator_options", "add_analysis_options", "add_command", "add_deflection_options",
+           "add_curve_options", "run_command", "positive_int", "non_negative_int",
+           "at_least_two", "joint_index", "finite_float", "positive_float", "non_negative_float", "HELP_FORMAT",
+           "fmt_q", "eq_table", "Parser", "error", "note"]
 
 #: Every command's help shows each option's default.
 HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
@@ -27,7 +34,7 @@ HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
 class Parser(argparse.ArgumentParser):
     """An ``ArgumentParser`` whose usage errors are one line on stderr, ``PROG: error: MESSAGE (see PROG
     --help)``, and exit status 2 (argparse's status; its usage block is left out: for the commands with
-    many options it buried the one line that matters). Subparsers inherit the class, and every
+    many options it buries the one line that matters). Subparsers inherit the class, and every
     parser shows each option's default (:data:`HELP_FORMAT`) unless given another formatter."""
 
     def __init__(self, *args, **kwargs) -> None:
@@ -60,19 +67,42 @@ def note(message: object) -> None:
     print(f"tensegrity-opt: note: {message}", file=sys.stderr)
 
 
-def positive_int(text: str) -> int:
-    """An argparse type: an integer >= 1 (a count: points, segments, panels), else a usage error (exit 2)."""
+def _integer(text: str, least: int, expected: str) -> int:
+    """``text`` as an integer ``>= least``, else a usage error ``expected EXPECTED, got ...`` (exit 2)."""
     try:
         v = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {text!r}") from None
-    if v < 1:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 1, got {v}")
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {text!r}") from None
+    if v < least:
+        raise argparse.ArgumentTypeError(f"expected {expected}, got {v}")
+    return v
+
+
+def positive_int(text: str) -> int:
+    """An argparse type: an integer >= 1 (a count: points, segments, panels), else a usage error (exit 2)."""
+    return _integer(text, 1, "an integer >= 1")
+
+
+def non_negative_int(text: str) -> int:
+    """An argparse type: an integer >= 0 (a depth), else a usage error (exit 2)."""
+    return _integer(text, 0, "an integer >= 0")
+
+
+def joint_index(text: str) -> int:
+    """An argparse type: a joint's index, 0-based, else a usage error (exit 2)."""
+    return _integer(text, 0, "a joint index (an integer >= 0)")
+
+
+def at_least_two(text: str) -> int:
+    """An argparse type: an integer >= 2 (a branch's points, the start included; samples), else a usage error."""
+    v = positive_int(text)
+    if v < 2:
+        raise argparse.ArgumentTypeError(f"expected an integer >= 2, got {v}")
     return v
 
 
 #: Longest uniform chain the command line builds (``--n``): beyond it the dense solvers' n x n matrices alone
-#: take gigabytes and a command would run for hours or exhaust memory instead of answering (``--n 1e9`` hung).
+#: take gigabytes and a command would run for hours or exhaust memory instead of answering.
 MAX_SEGMENTS = 10_000
 
 
@@ -96,6 +126,22 @@ def finite_float(text: str) -> float:
     return v
 
 
+def positive_float(text: str) -> float:
+    """An argparse type: a finite number > 0 (a bound, a rate, seconds), else a usage error (exit 2)."""
+    v = finite_float(text)
+    if v <= 0:
+        raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}")
+    return v
+
+
+def non_negative_float(text: str) -> float:
+    """An argparse type: a finite number >= 0 (a margin), else a usage error (exit 2)."""
+    v = finite_float(text)
+    if v < 0:
+        raise argparse.ArgumentTypeError(f"expected a number >= 0, got {text!r}")
+    return v
+
+
 def fmt_q(q) -> str:
     """``[+0.10000, -0.20000]``: angles (or any short vector) for a table."""
     return "[" + ", ".join(f"{v:+.5f}" for v in q) + "]"
@@ -115,11 +161,45 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     g = sp.add_argument_group("manipulator (default: the paper's chain n=4, a=b=k=L0=1)")
     g.add_argument("--n", type=segment_count, default=4, help=f"number of identical segments (1 to {MAX_SEGMENTS})")
     g.add_argument("--a", type=finite_float, default=1.0, help="triangle half-height a (length)")
-    g.add_argument("--b", type=finite_float, default=1.0, help="triangle half-length b (length; a segment is 2 b long straight)")
+    g.add_argument("--b", type=finite_float, default=1.0,
+                   help="triangle half-length b (length; a segment is 2 b long straight)")
     g.add_argument("--k", type=finite_float, default=1.0, help="spring stiffness (force / length)")
     g.add_argument("--L0", type=finite_float, default=1.0, help="spring rest length (length)")
     g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
 
+
+
+def add_deflection_options(sp: argparse.ArgumentParser, number=finite_float) -> None:
+    """``--dx``, ``--dy``: one tip deflection (``number`` parses each)."""
+    sp.add_argument("--dx", type=number, default=0.1, help="tip deflection along the chain (length)")
+    sp.add_argument("--dy", type=number, default=0.0, help="sideways tip deflection (length)")
+
+
+def add_curve_options(sp: argparse.ArgumentParser, num: int, number=finite_float) -> None:
+    """``--start``, ``--stop``, ``--num`` (default ``num``), ``--dy``: the deflections of a force-deflection curve
+    (``number`` parses each)."""
+    sp.add_argument("--start", type=number, default=0.0, help="first tip deflection dx (length)")
+    sp.add_argument("--stop", type=number, default=1.0, help="last tip deflection dx (length)")
+    sp.add_argument("--num", type=positive_int, default=num, help="number of deflections, evenly spaced")
+    sp.add_argument("--dy", type=number, default=0.0, help="sideways tip deflection (length)")
+
+
+def add_analysis_options(sp: argparse.ArgumentParser,
+                         json_help: str = "print the API body (JSON) instead of a table") -> None:
+    """An analysis command's options: the manipulator's (:func:`add_manipulator_options`) and ``--json``."""
+    add_manipulator_options(sp)
+    sp.add_argument("--json", action="store_true", help=json_help)
+
+
+def add_command(subparsers, name: str, func, help: str,
+                json_help: str = "print the API body (JSON) instead of a table") -> argparse.ArgumentParser:
+    """An analysis command ``name`` (``help`` its line in the list of commands) in ``subparsers``
+    (``add_subparsers()``'s result) running ``func(args, m) -> (data, text)`` (:func:`run_command`), with its
+    analysis options (:func:`add_analysis_options`); returns its parser for the command's own options."""
+    sp = subparsers.add_parser(name, formatter_class=HELP_FORMAT, help=help)
+    add_analysis_options(sp, json_help)
+    sp.set_defaults(func=func)
+    return sp
 
 
 def _manipulator(args: argparse.Namespace) -> Manipulator:

@@ -35,38 +35,26 @@ from typing import Any
 import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
+from ...analyses.design.load_capacity import load_capacity
 from ...analyses.design.preload_control import PreloadPlan, preloads_for_trajectory
 from ...analyses.design.preloads import OBJECTIVES
-from ...analyses.paths.simulation import Simulation, simulate
-from ...analyses.design.load_capacity import load_capacity
 from ...analyses.design.stiffness_shaping import preloads_for_stiffness
+from ...analyses.paths.simulation import Simulation, simulate
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from .common import HELP_FORMAT, add_manipulator_options, finite_float, fmt_q, positive_int
+from .common import (
+    add_command,
+    at_least_two,
+    finite_float,
+    fmt_q,
+    joint_index,
+    non_negative_float,
+    positive_float,
+    positive_int,
+)
 
 __all__ = ["add_control_parsers", "add_plan_options", "add_simulate_options", "plan_from_args",
            "simulation_from_args", "load_cycle", "read_rows"]
-
-
-def _positive_float(text: str) -> float:
-    v = finite_float(text)
-    if v <= 0:
-        raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}")
-    return v
-
-
-def _non_negative_float(text: str) -> float:
-    v = finite_float(text)
-    if v < 0:
-        raise argparse.ArgumentTypeError(f"expected a number >= 0, got {text!r}")
-    return v
-
-
-def _at_least_two(text: str) -> int:
-    v = positive_int(text)
-    if v < 2:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 2, got {v}")
-    return v
 
 
 def _angle_or_nan(text: str) -> float:
@@ -77,16 +65,6 @@ def _angle_or_nan(text: str) -> float:
         raise argparse.ArgumentTypeError(f"expected a number (or nan), got {text!r}") from None
     if math.isinf(v):
         raise argparse.ArgumentTypeError(f"expected a finite number (or nan), got {text!r}")
-    return v
-
-
-def _joint_index(text: str) -> int:
-    try:
-        v = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a joint index (an integer >= 0), got {text!r}") from None
-    if v < 0:
-        raise argparse.ArgumentTypeError(f"expected a joint index (an integer >= 0), got {v}")
     return v
 
 
@@ -237,11 +215,11 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
                    help="the dead tip load of every step (force; None: none, or the file's)")
     g.add_argument("--end-angle", type=finite_float, default=None,
                    help="the last link's absolute angle at every step (rad; None: free)")
-    g.add_argument("--bounds", type=_positive_float, nargs=2, default=None, metavar=("LO", "HI"),
+    g.add_argument("--bounds", type=positive_float, nargs=2, default=None, metavar=("LO", "HI"),
                    help="actuator bounds on every rest length (length; None: 0.1 b_min, 4 b_max)")
-    g.add_argument("--rate-limit", type=_positive_float, default=None,
+    g.add_argument("--rate-limit", type=positive_float, default=None,
                    help="largest change of each rest length per step (length; None: no limit)")
-    g.add_argument("--margin", type=_non_negative_float, default=1e-3,
+    g.add_argument("--margin", type=non_negative_float, default=1e-3,
                    help="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip "
                         "(torque / rad)")
     g.add_argument("--objective", choices=OBJECTIVES, default="change",
@@ -252,7 +230,7 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
                         "load; None: reached from the least-energy rest configuration")
     g.add_argument("--no-verify", action="store_true",
                    help="skip the forward quasi-static solve that verifies each step")
-    g.add_argument("--timeout", type=_positive_float, default=None,
+    g.add_argument("--timeout", type=positive_float, default=None,
                    help="seconds; then the steps done so far (status time_limit)")
 
 
@@ -261,7 +239,7 @@ def add_simulate_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--load-cycle", type=finite_float, default=None, metavar="F_MAX",
                    help="a dead tip load along --load-direction from 0 up to F_MAX, down to -F_MAX and back to 0 "
                         "(force; tip free)")
-    g.add_argument("--steps", type=_at_least_two, default=None,
+    g.add_argument("--steps", type=at_least_two, default=None,
                    help="samples of the load cycle (None: 121, or the preloads' count)")
     g.add_argument("--load-direction", type=finite_float, nargs=2, default=[0.0, 1.0], metavar=("DX", "DY"),
                    help="direction of the load cycle (normalised)")
@@ -275,9 +253,9 @@ def add_simulate_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
                    help="the state at sample 0 (rad, n angles; a stable equilibrium under the first inputs); "
                         "None: the least-energy one")
-    g.add_argument("--perturbation", type=_positive_float, default=1e-4,
+    g.add_argument("--perturbation", type=positive_float, default=1e-4,
                    help="a snap's descent starts this far from the fold along its null vector (rad, < 0.1)")
-    g.add_argument("--timeout", type=_positive_float, default=None,
+    g.add_argument("--timeout", type=positive_float, default=None,
                    help="seconds; then the samples done so far (status time_limit)")
 
 
@@ -370,7 +348,8 @@ def _cmd_stiffness(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     d = preloads_for_stiffness(m, tuple(args.target), K_desired=K,
                                eig_bounds=None if args.eig_bounds is None else tuple(args.eig_bounds),
                                load=tuple(args.load), margin=args.margin)
-    lines = [f"Rest lengths for the tip at ({args.target[0]:g}, {args.target[1]:g}) under {tuple(args.load)}, n = {m.n}: "
+    lines = [f"Rest lengths for the tip at ({args.target[0]:g}, {args.target[1]:g}) under {tuple(args.load)}, "
+             f"n = {m.n}: "
              f"{d.solver.status}" + ("" if d.exact or K is None else f", not exact (residual {d.residual:.3g})"),
              f"K = [[{d.K[0, 0]:.6g}, {d.K[0, 1]:.6g}], [{d.K[1, 0]:.6g}, {d.K[1, 1]:.6g}]] (force / length), "
              f"eigenvalues {_fmt_g(d.eigenvalues)}, margin {d.margin:.4g}",
@@ -385,7 +364,8 @@ def _cmd_load_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, s
     lines = [f"Load capacity of the rest pose (n = {m.n}, {args.boundary} tip, base load {tuple(args.base)}), "
              f"up to {args.max_load:g} more:", "  angle (deg)    load        kind          why"]
     for a, ld, k, r in zip(cap.angles, cap.loads, cap.kinds, cap.reasons):
-        lines.append(f"  {math.degrees(a):9.2f}   {'-' if not math.isfinite(ld) else f'{ld:.6g}':>10}  {k:12}  {r or ''}")
+        load = "-" if not math.isfinite(ld) else f"{ld:.6g}"
+        lines.append(f"  {math.degrees(a):9.2f}   {load:>10}  {k:12}  {r or ''}")
     return cap.to_dict, "\n".join(lines)
 
 
@@ -393,39 +373,28 @@ def add_control_parsers(subparsers: Any) -> None:
     """Add ``plan``, ``simulate``, ``force-estimate``, ``stiffness-design`` and ``load-capacity`` to ``subparsers``
     (``add_subparsers()``'s result)."""
 
-    def common(sp: argparse.ArgumentParser) -> None:
-        add_manipulator_options(sp)
-        sp.add_argument("--json", action="store_true", help="print the API body (JSON) instead of a table")
-
-    sp = subparsers.add_parser("plan", formatter_class=HELP_FORMAT,
-                               help="rest lengths for a trajectory of tip positions, on one stable branch")
-    common(sp)
+    sp = add_command(subparsers, "plan", _cmd_plan,
+                     "rest lengths for a trajectory of tip positions, on one stable branch")
     add_plan_options(sp)
-    sp.set_defaults(func=_cmd_plan)
 
-    sp = subparsers.add_parser("simulate", formatter_class=HELP_FORMAT,
-                               help="quasi-static simulation under a load cycle, preloads or held-tip targets, with "
-                                    "the snaps at folds")
-    common(sp)
+    sp = add_command(subparsers, "simulate", _cmd_simulate,
+                     "quasi-static simulation under a load cycle, preloads or held-tip targets, with the snaps at "
+                     "folds")
     add_simulate_options(sp)
-    sp.set_defaults(func=_cmd_simulate)
 
-    sp = subparsers.add_parser("force-estimate", formatter_class=HELP_FORMAT,
-                               help="the tip force from measured joint angles (the arm as a force sensor)")
-    common(sp)
+    sp = add_command(subparsers, "force-estimate", _cmd_force_estimate,
+                     "the tip force from measured joint angles (the arm as a force sensor)")
     sp.add_argument("--q", type=_angle_or_nan, nargs="+", required=True, metavar="Q",
                     help="joint angles (rad): all n (nan at an unmeasured joint: start at 0), or the measured ones "
                          "in joint order")
     sp.add_argument("--sigma", type=finite_float, nargs="+", default=None, metavar="S",
                     help="angle noise: one standard deviation (rad), one per joint, or a covariance matrix row by "
                          "row (rad^2); None: no noise model, no statistics")
-    sp.add_argument("--measured", type=_joint_index, nargs="+", default=None, metavar="J",
+    sp.add_argument("--measured", type=joint_index, nargs="+", default=None, metavar="J",
                     help="the measured joints (0-based); None: all")
-    sp.set_defaults(func=_cmd_force_estimate)
 
-    sp = subparsers.add_parser("stiffness-design", formatter_class=HELP_FORMAT,
-                               help="rest lengths for a stable pose with a shaped tip stiffness")
-    common(sp)
+    sp = add_command(subparsers, "stiffness-design", _cmd_stiffness,
+                     "rest lengths for a stable pose with a shaped tip stiffness")
     sp.add_argument("--target", type=finite_float, nargs=2, required=True, metavar=("X", "Y"),
                     help="tip position (length)")
     sp.add_argument("--K", type=finite_float, nargs=3, default=None, metavar=("KXX", "KXY", "KYY"),
@@ -434,16 +403,13 @@ def add_control_parsers(subparsers: Any) -> None:
                     help="bounds on both stiffness eigenvalues (force / length)")
     sp.add_argument("--load", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
                     help="dead tip load (force)")
-    sp.add_argument("--margin", type=_non_negative_float, default=1e-3,
+    sp.add_argument("--margin", type=non_negative_float, default=1e-3,
                     help="required smallest eigenvalue of the joint-space Hessian (torque / rad)")
-    sp.set_defaults(func=_cmd_stiffness)
 
-    sp = subparsers.add_parser("load-capacity", formatter_class=HELP_FORMAT,
-                               help="how much more tip load the rest pose carries, per direction")
-    common(sp)
+    sp = add_command(subparsers, "load-capacity", _cmd_load_capacity,
+                     "how much more tip load the rest pose carries, per direction")
     sp.add_argument("--directions", type=positive_int, default=8, help="evenly spaced directions")
     sp.add_argument("--base", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
                     help="the load the pose already carries (force)")
     sp.add_argument("--boundary", choices=("free", "guided"), default="free", help="tip boundary condition")
-    sp.add_argument("--max-load", type=_positive_float, default=10.0, help="follow each path up to this extra load")
-    sp.set_defaults(func=_cmd_load_capacity)
+    sp.add_argument("--max-load", type=positive_float, default=10.0, help="follow each path up to this extra load")

@@ -25,48 +25,32 @@ from typing import Any
 
 import numpy as np
 
+from ...analyses.equilibria.least_energy import solve_equilibrium
+from ...analyses.equilibria.rest import find_equilibria_under_force
 from ...analyses.paths.atlas import StabilityAtlas, stability_atlas
 from ...analyses.paths.boundaries import stability_boundary
 from ...analyses.paths.branches import Branch, trace_branch
 from ...analyses.paths.control import Control
 from ...analyses.paths.diagram import bifurcation_diagram
-from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.paths.limit_load import limit_load
-from ...analyses.equilibria.rest import find_equilibria_under_force
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from .common import HELP_FORMAT, add_manipulator_options, eq_table, finite_float, fmt_q, positive_int
+from .common import (
+    add_command,
+    at_least_two,
+    eq_table,
+    finite_float,
+    fmt_q,
+    non_negative_int,
+    positive_float,
+    positive_int,
+)
 
 __all__ = ["add_path_parsers", "add_control_options", "add_start_options", "add_limit_load_options",
            "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args",
            "limit_load_from_args", "boundary_from_args", "add_atlas_options", "atlas_from_args", "CONTROL_KINDS"]
 
 CONTROL_KINDS = ("displacement", "load", "guided", "wall", "preload")
-
-
-def at_least_two(text: str) -> int:
-    """An argparse type: an integer >= 2 (a branch's points, the start included)."""
-    v = positive_int(text)
-    if v < 2:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 2, got {v}")
-    return v
-
-
-def non_negative_int(text: str) -> int:
-    try:
-        v = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 0, got {text!r}") from None
-    if v < 0:
-        raise argparse.ArgumentTypeError(f"expected an integer >= 0, got {v}")
-    return v
-
-
-def positive_float(text: str) -> float:
-    v = finite_float(text)
-    if v <= 0:
-        raise argparse.ArgumentTypeError(f"expected a number > 0, got {text!r}")
-    return v
 
 
 # ---------------------------------------------------------------------------- shared options
@@ -337,44 +321,29 @@ def add_path_parsers(subparsers: Any) -> None:
     """Add ``rest``, ``branch``, ``limit-load``, ``boundary`` and ``atlas`` to ``subparsers`` (``add_subparsers()``'s
     result)."""
 
-    def common(sp: argparse.ArgumentParser) -> None:
-        add_manipulator_options(sp)
-        sp.add_argument("--json", action="store_true", help="print the API body (JSON) instead of a table")
-
-    sp = subparsers.add_parser("rest", formatter_class=HELP_FORMAT,
-                               help="rest configurations, or every equilibrium under a dead tip load")
-    common(sp)
+    sp = add_command(subparsers, "rest", _cmd_rest, "rest configurations, or every equilibrium under a dead tip load")
     sp.add_argument("--fx", type=finite_float, default=0.0, help="dead tip load along x (force; < 0 compresses)")
     sp.add_argument("--fy", type=finite_float, default=0.0, help="dead tip load along y (force)")
     sp.add_argument("--method", choices=("search", "homotopy"), default="search",
                     help="for a nonzero load: multi-start Newton, or PHCpack's certified homotopy (n <= 6); "
                          "F = 0 is exact either way")
     sp.add_argument("--stable-only", action="store_true", help="only the stable equilibria")
-    sp.set_defaults(func=_cmd_rest)
 
-    sp = subparsers.add_parser("branch", formatter_class=HELP_FORMAT,
-                               help="an equilibrium branch by arclength continuation (or --depth: the bifurcation "
-                                    "diagram), with its folds, branch points and joint limits")
-    common(sp)
+    sp = add_command(subparsers, "branch", _cmd_branch,
+                     "an equilibrium branch by arclength continuation (or --depth: the bifurcation diagram), with "
+                     "its folds, branch points and joint limits")
     add_branch_options(sp)
-    sp.set_defaults(func=_cmd_branch)
 
-    sp = subparsers.add_parser("limit-load", formatter_class=HELP_FORMAT,
-                               help="the dead load at which the path from a rest configuration loses stability")
-    common(sp)
+    sp = add_command(subparsers, "limit-load", _cmd_limit_load,
+                     "the dead load at which the path from a rest configuration loses stability")
     add_limit_load_options(sp)
     sp.add_argument("--include-branch", action="store_true", help="with --json: also the traced path")
-    sp.set_defaults(func=_cmd_limit_load)
 
-    sp = subparsers.add_parser("boundary", formatter_class=HELP_FORMAT,
-                               help="a stability boundary: the folds or branch points over a second parameter")
-    common(sp)
+    sp = add_command(subparsers, "boundary", _cmd_boundary,
+                     "a stability boundary: the folds or branch points over a second parameter")
     add_boundary_options(sp)
-    sp.set_defaults(func=_cmd_boundary)
 
-    sp = subparsers.add_parser("atlas", formatter_class=HELP_FORMAT,
-                               help="the stability atlas of the held tip: stable equilibria over a grid of "
-                                    "deflections, the least-energy switches and the branch ends")
-    common(sp)
+    sp = add_command(subparsers, "atlas", _cmd_atlas,
+                     "the stability atlas of the held tip: stable equilibria over a grid of deflections, the "
+                     "least-energy switches and the branch ends")
     add_atlas_options(sp)
-    sp.set_defaults(func=_cmd_atlas)

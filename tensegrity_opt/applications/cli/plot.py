@@ -2,7 +2,7 @@
 plan|simulation ... -o fig.png|fig.svg``.
 
 :func:`add_plot_parser` adds the ``plot`` subcommand to the ``tensegrity-opt`` parser
-(:func:`tensegrity_opt.cli.build_parser`). Every kind takes the manipulator options of the
+(:func:`tensegrity_opt.applications.cli.build_parser`). Every kind takes the manipulator options of the
 other commands (``--n --a --b --k --L0`` uniform, the paper's chain by default, or
 ``--manipulator FILE.json``), ``--json`` and ``-o/--output`` (the format follows the suffix);
 its ``func(args, m)`` computes the result with the library, draws it with
@@ -48,10 +48,27 @@ from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
 from ..sweeps.critical_map import critical_load_map
 from ..sweeps.spec import DESIGN_VARIABLES
-from .common import HELP_FORMAT, Parser, add_manipulator_options, note, positive_int, run_command
+from .common import (
+    HELP_FORMAT,
+    Parser,
+    add_analysis_options,
+    add_curve_options,
+    add_deflection_options,
+    note,
+    positive_int,
+    run_command,
+)
 from .control import add_plan_options, add_simulate_options, plan_from_args, simulation_from_args
-from .paths import (add_atlas_options, add_boundary_options, add_branch_options, add_limit_load_options,
-                    atlas_from_args, boundary_from_args, branches_from_args, limit_load_from_args)
+from .paths import (
+    add_atlas_options,
+    add_boundary_options,
+    add_branch_options,
+    add_limit_load_options,
+    atlas_from_args,
+    boundary_from_args,
+    branches_from_args,
+    limit_load_from_args,
+)
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
@@ -70,8 +87,7 @@ def _output(value: str) -> str:
 
 def _common(sp: argparse.ArgumentParser) -> None:
     """The manipulator options of the other commands, plus the figure's output options."""
-    add_manipulator_options(sp)
-    sp.add_argument("--json", action="store_true", help="print JSON instead of a line of text")
+    add_analysis_options(sp, "print JSON instead of a line of text")
     sp.add_argument("-o", "--output", type=_output, required=True, metavar="FIG.png|FIG.svg",
                     help="figure file; PNG or SVG by its suffix")
     sp.add_argument("--dpi", type=float, default=150.0, help="resolution of a PNG (dots per inch)")
@@ -182,7 +198,8 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
     plots = _plots()
     r = limit_load_from_args(args, m)
     fig = plots.plot_limit_load(r, m=m)
-    return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load, "reason": None if r.kind != "none" else r.status,
+    return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load,
+                                             "reason": None if r.kind != "none" else r.status,
                                              "quasi_buckling_load": r.quasi_buckling_load})
 
 
@@ -257,18 +274,14 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
     k = kinds.add_parser("curve", help="force-deflection curves Fx, Fy with their jumps (Fig. 6)")
     _common(k)
-    k.add_argument("--start", type=float, default=0.0, help="first tip deflection dx (length)")
-    k.add_argument("--stop", type=float, default=1.0, help="last tip deflection dx (length)")
-    k.add_argument("--num", type=positive_int, default=41, help="number of deflections, evenly spaced")
-    k.add_argument("--dy", type=float, default=0.0, help="sideways tip deflection (length)")
+    add_curve_options(k, num=41, number=float)
     k.add_argument("--branch", choices=("stable", "all"), default="stable",
                    help="'all': every branch, unstable parts dashed")
     k.set_defaults(func=_cmd_curve)
 
     k = kinds.add_parser("landscape", help="energy contours E(q_i, q_j) with every equilibrium (n = 4, Figs. 4-5)")
     _common(k)
-    k.add_argument("--dx", type=float, default=0.1, help="tip deflection along the chain (length)")
-    k.add_argument("--dy", type=float, default=0.0, help="sideways tip deflection (length)")
+    add_deflection_options(k, number=float)
     k.add_argument("--pair", type=int, nargs=2, default=[0, 3], metavar=("I", "J"),
                    help="the two grid joints, 0-based (0 3: the paper's q1, q4)")
     k.add_argument("--grid", type=positive_int, default=101, help="points per axis")
@@ -278,8 +291,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
 
     k = kinds.add_parser("shapes", help="the chain drawn in every equilibrium, coloured by stability")
     _common(k)
-    k.add_argument("--dx", type=float, default=0.1, help="tip deflection along the chain (length)")
-    k.add_argument("--dy", type=float, default=0.0, help="sideways tip deflection (length)")
+    add_deflection_options(k, number=float)
     k.add_argument("--max-panels", type=positive_int, default=24, help="draw at most this many (lowest energies)")
     k.set_defaults(func=_cmd_shapes)
 

@@ -98,12 +98,31 @@ from __future__ import annotations
 
 from .control import CONTROL_STYLES, MARGIN_UNIT, plot_preload_plan, plot_simulation
 from .curves import JUMP_STYLES, curve_breaks, jump_kind, jump_label, plot_curve
-from .equilibria import (distinct_segments, landscape_region, physical_range, plot_landscape, plot_shapes, plot_torque,
-                         segment_label, stiffness_text, torque_zeros)
+from .equilibria import (
+    distinct_segments,
+    landscape_region,
+    physical_range,
+    plot_landscape,
+    plot_shapes,
+    plot_torque,
+    segment_label,
+    stiffness_text,
+    torque_zeros,
+)
 from .geometry import chain_geometry
 from .maps import PARAM_LABELS, plot_map
-from .paths import (ATLAS_STYLES, BRANCH_QUANTITIES, EVENT_STYLES, MORSE_COLORS, branch_quantity_label, morse_color,
-                    plot_atlas, plot_boundary, plot_branches, plot_limit_load)
+from .paths import (
+    ATLAS_STYLES,
+    BRANCH_QUANTITIES,
+    EVENT_STYLES,
+    MORSE_COLORS,
+    branch_quantity_label,
+    morse_color,
+    plot_atlas,
+    plot_boundary,
+    plot_branches,
+    plot_limit_load,
+)
 from .style import ENERGY_UNIT, FORCE_UNIT, FORMATS, MAP_PARAMS, STABILITY_COLORS, chain_label, new_figure, render, save
 
 __all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "plot_branches",

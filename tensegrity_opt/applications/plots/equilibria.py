@@ -15,8 +15,17 @@ from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from .geometry import chain_geometry
-from .style import (ENERGY_UNIT, FORCE_UNIT, MAP_PARAMS, STABILITY_COLORS, chain_label, contour_levels, new_figure,
-                    number_text, param_text)
+from .style import (
+    ENERGY_UNIT,
+    FORCE_UNIT,
+    MAP_PARAMS,
+    STABILITY_COLORS,
+    chain_label,
+    contour_levels,
+    new_figure,
+    number_text,
+    param_text,
+)
 
 __all__ = ["plot_landscape", "plot_shapes", "plot_torque", "landscape_region", "segment_label", "physical_range",
            "stiffness_text", "torque_zeros", "distinct_segments"]

@@ -22,7 +22,8 @@ PARAM_LABELS = {"a": "triangle half-base $a$ (length)", "b": "triangle height $b
 
 def plot_map(critical_map: CriticalLoadMap, m: Manipulator, *, levels: int = 8,
              figsize: tuple[float, float] = (6.8, 5.4)) -> Any:
-    """The critical load ``P = -Fx0`` over two design parameters: a :class:`~.sweeps.CriticalLoadMap`
+    """The critical load ``P = -Fx0`` over two design parameters: a
+    :class:`~tensegrity_opt.applications.sweeps.CriticalLoadMap`
     (:func:`~tensegrity_opt.applications.sweeps.critical_load_map`) of the chain ``m``.
 
     The map's two parameters (two of ``a``, ``b``, ``k``, ``L0``, the same value in every segment) are the axes;

@@ -15,8 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from ...analyses.paths.atlas import AtlasTarget, StabilityAtlas, assemble_atlas
 from ...analyses.equilibria.equilibrium import make_equilibrium
+from ...analyses.paths.atlas import AtlasTarget, StabilityAtlas, assemble_atlas
 from ...errors import InvalidParameterError
 from ...numerics import chain_solver
 from ...timelimit import expired, time_limit

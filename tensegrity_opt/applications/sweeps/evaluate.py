@@ -14,13 +14,13 @@ from typing import Any
 
 import numpy as np
 
-from ...analyses.equilibria.all_equilibria import find_equilibria
-from ...analyses.paths.atlas import atlas_target
-from ...analyses.equilibria.buckling import critical_force
 from ...analyses.design.strongest import maximize_critical_force
+from ...analyses.equilibria.all_equilibria import find_equilibria
+from ...analyses.equilibria.buckling import critical_force
 from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
 from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.equilibria.stiffness import cartesian_stiffness
+from ...analyses.paths.atlas import atlas_target
 from ...errors import TensegrityError
 from ...model.manipulator import Manipulator
 from ...serialize import nullable, nullables
