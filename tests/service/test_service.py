@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import threading
 import time
 import warnings
@@ -211,6 +212,28 @@ def test_force_deflection_list_all_branches(client):
                 assert p["q"] == approx(br.q[i].tolist())
             else:
                 assert p["energy"] is None and p["fx"] is None and all(v is None for v in p["q"])
+
+
+def test_force_deflection_answers_a_partial_curve_with_200(client):
+    """The paper's chain has no stable equilibrium beyond dx = 3.15 (``tests/analyses/paths/test_curves.py``): the
+    points before, with the end and the buckling jump at the guided critical force, as the library's curve."""
+    body = {"manipulator": PAPER, "dx": {"start": 0.0, "stop": 4.0, "num": 81}, "dy": 0.0}
+    r = client.post("/v1/force-deflection", json=body)
+    assert r.status_code == 200, r.text
+    got = r.json()
+    s.ForceDeflectionOut.model_validate(got)
+    assert got["success"] is False and got["status"] == "no_stable_equilibrium"
+    assert got["requested"] == 81 and len(got["points"]) == 63
+    assert got["ended_at"]["dx"] == pytest.approx(3.15) and got["ended_at"]["dy"] == 0.0
+    assert got["ended_at"]["status"] == "no_stable_equilibrium" and got["ended_at"]["message"]
+    assert got["ended_at"]["success"] is False
+    assert got["message"].endswith("63 of 81 points computed.")
+    assert got["points"][0]["status"] == "straight" and got["points"][-1]["status"] == "converged"
+    assert got["points"][-1]["solver"]["status"] == "Newton_Converged"
+    assert [j["kind"] for j in got["jumps"]] == ["buckling"]
+    jd = got["jumps"][0]
+    assert jd["delta"]["fx"] == pytest.approx(-0.572793, abs=1e-6) and jd["label"].startswith("buckling")
+    assert got == to.force_deflection(to.Manipulator.uniform(4), np.linspace(0.0, 4.0, 81)).to_dict()
 
 
 def test_stiffness(client):
@@ -819,3 +842,31 @@ def test_local_equilibrium_follows_the_branch_through_q0(client):
     assert r.status_code == 200 and r.json()["kind"] == "saddle" and r.json()["stable"] is False
     check_error(client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.1, "local": True}),
                 422, "invalid_parameter", "q0")
+
+
+def test_service_maps_time_limit_to_504_with_status():
+    from service.api.errors import error_body, status_for
+
+    exc = to.TimeLimitError("stopped", status="User_Requested_Stop")
+    assert status_for(exc) == 504
+    body = error_body(exc)
+    assert body["code"] == "timeout" and body["status"] == "User_Requested_Stop"
+
+
+def test_config_docstring_lists_every_setting():
+    from service import config
+
+    documented = set(re.findall(r"``TENSEGRITY_([A-Z_]+)``", config.__doc__))
+    fields = {name.upper() for name in config.Settings.model_fields}
+    assert fields <= documented, f"undocumented settings: {sorted(fields - documented)}"
+
+
+def test_the_iterations_of_a_point_the_rootfinder_continued_are_null():
+    """``iterations`` is ``None`` (JSON null) where the solver did not count them (the rootfinder's continuation
+    of a chain of more than 8 segments), and the schema says so; never -1."""
+    from service.schemas.common import SolverInfo
+
+    res = to.solve_equilibria_batch(to.Manipulator.uniform(12), [(0.1 + 0.01 * i, 0.0) for i in range(4)])
+    body = next(r.to_dict()["solver"] for r in res[1:] if r.solver.iterations is None)
+    assert body["iterations"] is None and SolverInfo(**body).iterations is None
+    assert "null: not counted" in SolverInfo.model_fields["iterations"].description
