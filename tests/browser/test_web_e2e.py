@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 import tensegrity_opt as to
-from servers import clean_env, free_port, running_server, uvicorn_factory_command
+from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, uvicorn_factory_command
 
 HERE = Path(__file__).resolve().parent
 
@@ -78,8 +78,8 @@ def browser(tmp_path_factory):
                                            "download.prompt_for_download": False})
     opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     drv = webdriver.Chrome(service=Service(executable_path=driver_bin), options=opts)
-    drv.set_page_load_timeout(30)
-    drv.set_script_timeout(30)
+    drv.set_page_load_timeout(WAIT_SECONDS)
+    drv.set_script_timeout(WAIT_SECONDS)
     try:
         yield drv
     finally:
@@ -89,15 +89,15 @@ def browser(tmp_path_factory):
 @pytest.fixture(scope="module")
 def server(browser):   # the browser first: skip before starting a server
     pytest.importorskip("httpx")
-    env = clean_env(TENSEGRITY_WORKERS="2", TENSEGRITY_WARMUP="false")
+    env = clean_env(TENSEGRITY_WORKERS="2", TENSEGRITY_WARMUP="false", **GENEROUS_ENV)
     # the app factory is this module, which imports the shared helpers of tests/support
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(HERE.parent / "support"), env.get("PYTHONPATH")]))
     cmd = uvicorn_factory_command("test_web_e2e:create_web_test_app", free_port(), "--app-dir", str(HERE))
-    with running_server(cmd, env, ready="/readyz", timeout=30) as (_, base):
+    with running_server(cmd, env, ready="/readyz", timeout=WAIT_SECONDS) as (_, base):
         yield base
 
 
-def _wait(drv, predicate, what: str, timeout: float = 60.0):
+def _wait(drv, predicate, what: str, timeout: float = WAIT_SECONDS):
     from selenium.webdriver.support.ui import WebDriverWait
 
     return WebDriverWait(drv, timeout, poll_frequency=0.05).until(lambda d: predicate(d), message=what)
@@ -424,7 +424,7 @@ def test_partial_curve_shows_points_and_note(browser, server, tmp_path):
     _screenshot(drv, tmp_path / "web_page_dx4.png")
     body = {"manipulator": {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1}, "dx": {"start": 0, "stop": 4, "num": 60},
             "dy": 0, "branch": "stable"}
-    r = httpx.post(server + "/v1/force-deflection", json=body, timeout=60)
+    r = httpx.post(server + "/v1/force-deflection", json=body, timeout=WAIT_SECONDS)
     assert r.status_code == 200, r.text          # a partial curve is a result (success: false), no refusal
     out = r.json()
     assert out["success"] is False and 1 <= len(out["points"]) < 60
@@ -453,7 +453,8 @@ def test_contract_partial_curve_is_drawn(browser, server):
     dxs = [4 * i / 59 for i in range(60)]                    # the page's request: {start: 0, stop: 4, num: 60}
     end = 3.18644                                            # where the service finds no stable equilibrium
     kept = [d for d in dxs if d < 3.1]
-    r = httpx.post(server + "/v1/force-deflection", json={"manipulator": man, "dx": kept, "dy": 0}, timeout=60)
+    r = httpx.post(server + "/v1/force-deflection", json={"manipulator": man, "dx": kept, "dy": 0},
+                   timeout=WAIT_SECONDS)
     assert r.status_code == 200, r.text
     real = r.json()
     stop = next(d for d in dxs if d >= 3.1)

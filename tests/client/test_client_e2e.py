@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from servers import clean_env, free_port, running_server, serve_command
+from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, serve_command
 from tensegrity_opt.model.manipulator import Manipulator
 
 REPO = Path(__file__).resolve().parents[2]
@@ -41,14 +41,14 @@ README_BASE = "http://127.0.0.1:8000"
 
 @pytest.fixture(scope="module")
 def base():
-    env = clean_env(TENSEGRITY_WORKERS="1")
-    with running_server(serve_command(free_port()), env) as (_, url):
+    env = clean_env(TENSEGRITY_WORKERS="1", **GENEROUS_ENV)
+    with running_server(serve_command(free_port()), env, timeout=WAIT_SECONDS) as (_, url):
         yield url
 
 
 @pytest.fixture()
 def api(base):
-    with Client(base_url=base, timeout=httpx.Timeout(60.0), raise_on_unexpected_status=True) as client:
+    with Client(base_url=base, timeout=httpx.Timeout(WAIT_SECONDS), raise_on_unexpected_status=True) as client:
         yield client
 
 

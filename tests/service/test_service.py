@@ -26,8 +26,10 @@ with warnings.catch_warnings():
 
 import tensegrity_opt as to
 from tensegrity_opt.numerics.homotopy import homotopy_available
+from service import schemas
 from service.config import Settings
 from service.main import create_app
+from service_helpers import app_client
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 REL = 1e-9
@@ -39,13 +41,14 @@ def approx(x):
 
 @pytest.fixture(scope="module")
 def client():
-    app = create_app(Settings(warmup=False))
-    with TestClient(app) as c:
+    with app_client() as c:
         yield c
 
 
 def make_client(**overrides) -> TestClient:
-    return TestClient(create_app(Settings(**{"warmup": False, **overrides})))
+    """The app with the tests' settings (generous time limits, ``tests/support/service_helpers.py``) and
+    ``overrides``."""
+    return app_client(**overrides)
 
 
 def check_equilibrium(got: dict, eq: to.Equilibrium) -> None:
@@ -221,7 +224,7 @@ def test_force_deflection_answers_a_partial_curve_with_200(client):
     r = client.post("/v1/force-deflection", json=body)
     assert r.status_code == 200, r.text
     got = r.json()
-    s.ForceDeflectionOut.model_validate(got)
+    schemas.ForceDeflectionOut.model_validate(got)
     assert got["success"] is False and got["status"] == "no_stable_equilibrium"
     assert got["requested"] == 81 and len(got["points"]) == 63
     assert got["ended_at"]["dx"] == pytest.approx(3.15) and got["ended_at"]["dy"] == 0.0
@@ -519,18 +522,26 @@ def test_q0_of_wrong_length(client):
 
 
 # ---------------------------------------------------------------------------- 504, 503, 413, 401, CORS, 404
-def test_timeout_504_and_recovery():
-    with make_client(solve_timeout=0.05, workers=1) as c:
-        # n = 150 takes seconds (building the solvers alone takes longer than the limit)
-        r = c.post("/v1/equilibria", json={"manipulator": {"n": 150}, "dx": 0.1})
+def _works_for_ten_minutes(req, *args, **kwargs):
+    """A stand-in for a search that runs far beyond any limit: pure Python (interruptible between bytecodes)."""
+    end = time.monotonic() + 600.0
+    while time.monotonic() < end:
+        pass
+
+
+def test_timeout_504_and_recovery(monkeypatch):
+    from service.api.routes import equilibrium as routes
+
+    monkeypatch.setattr(routes, "equilibria_task", _works_for_ten_minutes)
+    with make_client(solve_timeout=0.5, workers=1) as c:
+        r = c.post("/v1/equilibria", json={"manipulator": {"n": 4}, "dx": 0.1})
         check_error(r, 504, "timeout")
         pool = c.app.state.executors.threads
-        deadline = time.monotonic() + 10
+        deadline = time.monotonic() + 300          # far less than the stand-in's ten minutes
         while pool.in_flight and time.monotonic() < deadline:
             time.sleep(0.01)
         assert pool.in_flight == 0            # the abandoned solve was interrupted, the worker is free
         assert 'tensegrity_solver_failures_total{code="timeout"} 1.0' in c.get("/metrics").text
-    with make_client(solve_timeout=30, workers=1) as c:   # a normal limit: the same request succeeds
         assert c.post("/v1/segment/torque", json={"segment": {"a": 1, "b": 1}, "q": [0.0]}).status_code == 200
 
 
@@ -774,7 +785,7 @@ def test_batch_bad_q0_refuses_the_request(client):
 
 
 def test_batch_time_limit_marks_remaining_targets():
-    with make_client(batch_timeout=0.001, solve_timeout=30) as c:
+    with make_client(batch_timeout=0.001) as c:           # the first target alone takes longer
         targets = [{"dx": 0.05 * (i + 1)} for i in range(5)]
         r = c.post("/v1/batch/equilibrium", json={"manipulator": PAPER, "targets": targets})
         assert r.status_code == 200, r.text

@@ -8,15 +8,15 @@ from fastapi.testclient import TestClient
 from pytest import approx
 
 import tensegrity_opt as to
-from service.config import Settings
 from service.main import create_app
+from service_helpers import service_settings
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 
 
 @pytest.fixture(scope="module")
 def client():
-    with TestClient(create_app(Settings(warmup=False))) as c:
+    with TestClient(create_app(service_settings())) as c:
         yield c
 
 

@@ -19,10 +19,10 @@ def client():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         from fastapi.testclient import TestClient
-    from service.config import Settings
     from service.main import create_app
+    from service_helpers import service_settings
 
-    app = create_app(Settings(warmup=False))        # service.main registers the plot routes
+    app = create_app(service_settings())        # service.main registers the plot routes
     assert app.url_path_for("plot_curve") == "/v1/plots/curve"
     with TestClient(app) as c:
         yield c

@@ -12,8 +12,8 @@ from fastapi.testclient import TestClient
 
 import tensegrity_opt as to
 from service.tasks import equilibria as compute
-from service.config import Settings
 from service.main import create_app
+from service_helpers import service_settings
 from tensegrity_opt.errors import InvalidParameterError, UnreachableTargetError
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
@@ -21,7 +21,7 @@ PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 
 @pytest.fixture(scope="module")
 def client():
-    with TestClient(create_app(Settings(warmup=False, inline_processes=0)), raise_server_exceptions=False) as c:
+    with TestClient(create_app(service_settings(inline_processes=0)), raise_server_exceptions=False) as c:
         yield c
 
 

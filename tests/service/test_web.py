@@ -21,7 +21,7 @@ from fastapi.testclient import TestClient  # noqa: E402
 from starlette.exceptions import HTTPException  # noqa: E402
 from starlette.routing import NoMatchFound  # noqa: E402
 
-from service.config import Settings  # noqa: E402
+from service_helpers import service_settings  # noqa: E402
 from service.main import create_app, openapi_document  # noqa: E402
 from service.api.routes import web  # noqa: E402
 
@@ -36,7 +36,7 @@ def _has_page(app) -> bool:
 
 def _app(include: bool = True):
     """The service's app (``service.main`` registers the page's router)."""
-    app = create_app(Settings(warmup=False))
+    app = create_app(service_settings())
     assert _has_page(app)
     return app
 

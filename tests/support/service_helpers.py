@@ -20,11 +20,7 @@ from service.config import Settings
 from service.main import create_app
 from service.responses import render_json
 
-#: The time limits of a test that expects its answer: far beyond what any request of the tests takes quiet (a few
-#: seconds), so that a machine many times slower still answers.
-GENEROUS_SECONDS = 300.0
-#: The same, as the environment of a real server process (``servers.clean_env(**GENEROUS_ENV)``).
-GENEROUS_ENV = {"TENSEGRITY_SOLVE_TIMEOUT": str(GENEROUS_SECONDS), "TENSEGRITY_BATCH_TIMEOUT": str(GENEROUS_SECONDS)}
+from servers import GENEROUS_ENV, GENEROUS_SECONDS, WAIT_SECONDS  # noqa: F401 - the tests' one set of bounds
 
 
 def service_settings(**overrides) -> Settings:

@@ -5,6 +5,7 @@ import json
 
 import numpy as np
 import pytest
+from clocks import tick_clock
 
 import tensegrity_opt as to
 from tensegrity_opt import InvalidParameterError
@@ -128,6 +129,9 @@ def test_load_capacity_validation():
     assert ei.value.field == "pose"
 
 
-def test_time_limit():
-    cap = to.load_capacity(PAPER, directions=36, timeout=0.2)      # ~5 s without a limit
+def test_time_limit(monkeypatch):
+    # the library's clock moves on 1 s at every reading (tests/support/clocks.py): the 36 directions read it some
+    # 27000 times, a limit of 2000 s runs out among the first directions on any machine
+    tick_clock(monkeypatch, step=1.0)
+    cap = to.load_capacity(PAPER, directions=36, timeout=2000.0)
     assert "time_limit" in cap.reasons and not cap.success and cap.status == "time_limit"

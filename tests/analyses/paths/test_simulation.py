@@ -19,6 +19,7 @@ import json
 
 import numpy as np
 import pytest
+from clocks import tick_clock
 import scipy.optimize as so
 from scipy.integrate import solve_ivp
 
@@ -403,11 +404,15 @@ def test_bad_inputs_name_the_field():
     assert exc.value.field == "targets"
 
 
-def test_time_limit_keeps_the_steps_done_and_constant_inputs_stay_put():
+def test_time_limit_keeps_the_steps_done_and_constant_inputs_stay_put(monkeypatch):
     m = lib_bistable3()
     t = np.linspace(0.0, 0.14, 20001)
-    sim = simulate(m, loads=np.column_stack([np.zeros_like(t), t]), timeout=0.3)
-    assert sim.status == "time_limit" and not sim.success and 1 <= len(sim) < t.size
+    # the library's clock moves on 1 s at every reading, about twice a step (tests/support/clocks.py): a limit of
+    # 100 s runs out after some 50 of the 20001 steps on any machine
+    with monkeypatch.context() as patched:
+        tick_clock(patched, step=1.0)
+        sim = simulate(m, loads=np.column_stack([np.zeros_like(t), t]), timeout=100.0)
+    assert sim.status == "time_limit" and not sim.success and 10 < len(sim) < 200
     check_rows(sim, lambda k: ref_bistable3())
     q0 = np.full(3, bistable_well())
     sim = simulate(m, loads=np.zeros((3, 2)), start=q0)
