@@ -63,6 +63,7 @@ def _summary(out: str) -> str:
     return lines[-1] if lines else ""
 
 
+@pytest.mark.slow
 def test_the_library_tests_collect_without_the_service_packages(tmp_path):
     r = _pytest_without_the_service(tmp_path, "--collect-only", "-q", *LIBRARY_TESTS)
     assert r.returncode == 0, r.stdout[-4000:] + r.stderr[-2000:]
@@ -72,6 +73,7 @@ def test_the_library_tests_collect_without_the_service_packages(tmp_path):
     assert collected == _library_test_files()                                       # every file, each with tests
 
 
+@pytest.mark.slow
 def test_the_blocker_stops_a_test_that_imports_the_service(tmp_path):
     """The control: the same finder makes a test module that imports the service fail to collect."""
     for name, line in (("test_uses_the_service.py", "from service.config import Settings"),

@@ -104,7 +104,8 @@ def _wait(drv, predicate, what: str, timeout: float = WAIT_SECONDS):
 
 
 def _done(drv) -> bool:
-    return drv.execute_script("return document.body.dataset.state === 'done' && !document.getElementById('solve').disabled")
+    return drv.execute_script("return document.body.dataset.state === 'done'"
+                              " && !document.getElementById('solve').disabled")
 
 
 def _load(drv, server: str) -> None:
@@ -144,7 +145,8 @@ def _download(drv, selector: str) -> dict:
           const b = e.detail.blob;
           const bytes = new Uint8Array(await b.arrayBuffer());
           let bin = "";
-          for (let i = 0; i < bytes.length; i += 8192) bin += String.fromCharCode.apply(null, bytes.subarray(i, i + 8192));
+          for (let i = 0; i < bytes.length; i += 8192)
+            bin += String.fromCharCode.apply(null, bytes.subarray(i, i + 8192));
           done({name: e.detail.name, type: b.type, size: b.size, data: btoa(bin),
                 text: b.type.indexOf("png") >= 0 ? null : await b.text()});
         }, {once: true});
@@ -283,8 +285,9 @@ def test_page_in_headless_chromium(browser, server, tmp_path):
         const p = document.getElementById("shape-panel");
         const after = getComputedStyle(p.querySelector("h2"), "::after").content;
         const sp = getComputedStyle(document.querySelector("#status .spinner"));
-        return [document.body.dataset.state, p.dataset.stale, getComputedStyle(document.getElementById("chain")).opacity,
-                after, sp.display, sp.animationName, getComputedStyle(document.getElementById("status"), "::before").content];""")
+        return [document.body.dataset.state, p.dataset.stale,
+                getComputedStyle(document.getElementById("chain")).opacity, after, sp.display, sp.animationName,
+                getComputedStyle(document.getElementById("status"), "::before").content];""")
     assert busy[:2] == ["busy", "true"]
     assert float(busy[2]) < 0.6 and "stale" in busy[3]
     assert busy[4] == "inline-block" and busy[5] == "spin" and busy[6] in ("none", "normal", "")
@@ -470,7 +473,8 @@ def test_contract_partial_curve_is_drawn(browser, server):
             const [fake, status] = arguments;
             window.__fetch = window.__fetch || window.fetch;
             window.fetch = (url, opts) => String(url).indexOf("force-deflection") >= 0
-              ? Promise.resolve(new Response(JSON.stringify(fake), {status, headers: {"Content-Type": "application/json"}}))
+              ? Promise.resolve(new Response(JSON.stringify(fake),
+                                             {status, headers: {"Content-Type": "application/json"}}))
               : window.__fetch(url, opts);""", fake, status)
         try:
             _solve(drv, dx="3")

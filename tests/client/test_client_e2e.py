@@ -52,6 +52,7 @@ def api(base):
         yield client
 
 
+@pytest.mark.slow
 def test_equilibrium(api):
     body = EquilibriumRequest(manipulator=UniformManipulatorIn(n=4, a=1, b=1, k=1, l0=1), dx=0.1, dy=0.0)
     r = solve_equilibrium.sync_detailed(client=api, body=body)
@@ -65,7 +66,7 @@ def test_equilibrium(api):
     # independently: the returned angles put the tip on its target (2 sum(b) - dx, dy) = (7.9, 0) ...
     assert Manipulator.uniform(4).tip(np.array(eq.q)) == pytest.approx([7.9, 0.0], abs=1e-9)
     assert eq.tip == pytest.approx([7.9, 0.0], abs=1e-9)
-    # ... on the U branch, whose |Fy| at dx = 0.1 is 0.02579 (conventions.md, eq. 26's branch)
+    # ... on the U branch, whose |Fy| at dx = 0.1 is 0.02579 (``docs/model.md``, eq. 26's branch)
     assert eq.stable and eq.shape == "U" and eq.morse_index == 0
     assert abs(eq.force.fy) == pytest.approx(0.02579, abs=1e-5)
 

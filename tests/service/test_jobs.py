@@ -137,6 +137,7 @@ def test_bad_spec_is_422_naming_the_field(api, spec, code, field):
     assert api.get("/v1/jobs/x", params={"limit": -1}).status_code == 422
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("api", [{"jobs_max_running": 1}], indirect=True)
 def test_cancel_keeps_finished_points_and_the_runner_goes_on(api):
     long_id = api.post("/v1/jobs", json=slow_spec(200)).json()["id"]
@@ -228,6 +229,7 @@ def test_restart_without_resume_marks_the_job_interrupted(tmp_path):
         runner.stop()
 
 
+@pytest.mark.slow
 def test_graceful_stop_requeues_and_the_next_start_finishes(tmp_path):
     db = tmp_path / "jobs.sqlite3"
     runner = jobs.JobRunner(db_path=db).start()
@@ -268,6 +270,7 @@ def test_no_database_file_until_the_first_job(tmp_path):
         runner.stop()
 
 
+@pytest.mark.slow
 def test_a_job_on_a_dask_cluster_stores_the_serial_rows(tmp_path):
     """TENSEGRITY_JOBS_SCHEDULER=tcp://...: points solved by Dask worker processes, rows stored by the runner."""
     distributed = pytest.importorskip("distributed")
@@ -302,6 +305,7 @@ def stored_points(db: Path, job_id: str) -> dict[int, str]:
         return dict(con.execute("SELECT idx, row FROM points WHERE job_id = ?", (job_id,)).fetchall())
 
 
+@pytest.mark.slow
 def test_sigkill_mid_job_loses_no_point_and_the_restart_resumes(tmp_path):
     db, log = tmp_path / "jobs.sqlite3", tmp_path / "server.log"
     total = 160
@@ -357,7 +361,7 @@ def test_sigkill_mid_job_loses_no_point_and_the_restart_resumes(tmp_path):
         assert {k: rows[i][k] for k in S.RESULT_COLUMNS["equilibria_count"]} == S.evaluate_point(spec, point)
 
 
-# --------------------------------------------------------------------------- issue 14: scheduling, limits, owners
+# --------------------------------------------------------------------------- scheduling, limits, owners
 def _wait(pred, timeout=WAIT_SECONDS, what=""):
     deadline = time.monotonic() + timeout
     while not pred():
@@ -383,6 +387,7 @@ def _runner(db, **kw):
     return jobs.JobRunner(db_path=db, **kw).start()
 
 
+@pytest.mark.slow
 def test_a_point_over_the_time_limit_is_a_timeout_row_and_the_job_goes_on(tmp_path, monkeypatch):
     """Point 1 would run forever (a Python loop inside the solve): it is interrupted at the limit, its row
     is the error ``timeout: ...`` and points 0 and 2 are computed as usual (well within the limit: a point of a
@@ -483,6 +488,7 @@ def test_jobs_belong_to_the_api_key_that_submitted_them(api):
     assert api.delete(f"/v1/jobs/{job_id}", headers=one).status_code == 204
 
 
+@pytest.mark.slow
 def test_delete_removes_a_finished_job_and_a_running_one(api):
     done_id = api.post("/v1/jobs", json=MIXED).json()["id"]
     wait_for(api, done_id, done)
@@ -531,6 +537,7 @@ def test_retention_deletes_old_finished_jobs_at_start(tmp_path):
         runner.stop()
 
 
+@pytest.mark.slow
 def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_path):
     """Two runners (as two servers) share the file: a job runs in one at a time; a cancel through the other
     stops it; a runner that stops renewing loses the job to the other, which finishes it, and the first
@@ -567,6 +574,7 @@ def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_pa
         b.stop()
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("fault", ["garbage", "deleted", "read-only"])
 def test_every_storage_fault_is_503_jobs_unavailable(api, monkeypatch, fault):
     job_id = api.post("/v1/jobs", json=MIXED).json()["id"]
@@ -642,6 +650,7 @@ def _lease_owner_pid(db: Path, job_id: str) -> int | None:
     return int(r[0].rpartition(":")[2].split("-")[0]) if r and r[0] else None
 
 
+@pytest.mark.slow
 def test_two_real_servers_share_one_file_cancel_crosses_and_a_killed_servers_job_moves(tmp_path):
     """Two server processes on one database (lease 1 s): a job runs in one of them only; a cancel through
     the other stops it; SIGKILL of the server running a job hands the job to the other after its lease,

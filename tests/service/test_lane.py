@@ -59,6 +59,7 @@ def clients():
         yield fast, plain
 
 
+@pytest.mark.slow
 def test_the_solver_process_answers_like_the_solver_threads(clients):
     fast, plain = clients
     lane = fast.app.state.executors.fast
@@ -89,6 +90,7 @@ def _case(b: dict) -> str:
     return f"n{b['manipulator'].get('n')}-dx{b['dx']}-dy{b.get('dy', 0)}-{how}"
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("body", [*BODIES, BISTABLE, LONG], ids=_case)
 def test_the_response_schema_is_the_contract_of_every_path(clients, body):
     """The body of the solver process (rendered there, no response-model pass) validates against
@@ -117,6 +119,7 @@ def test_an_error_raised_in_the_solver_process_is_answered_as_without_it(clients
     assert lane.completed == before + 1          # the process answered "failed"; the pool re-raised it
 
 
+@pytest.mark.slow
 def test_a_killed_solver_process_loses_no_request_and_is_restarted(monkeypatch):
     monkeypatch.setattr(processes_mod, "RESTART_INTERVAL", 0.0)
     with ready_client() as fast, ready_client(inline_processes=0) as plain:
@@ -175,6 +178,7 @@ def test_the_solver_process_survives_calls_it_cannot_take(clients):
     assert lane.ready and lane.pids == pids
 
 
+@pytest.mark.slow
 def test_a_stuck_solver_process_is_killed_and_restarted(monkeypatch):
     monkeypatch.setattr(processes_mod, "RESTART_INTERVAL", 0.0)
     with ready_client() as fast:
@@ -192,6 +196,7 @@ def test_a_stuck_solver_process_is_killed_and_restarted(monkeypatch):
         assert old not in lane.pids and lane.restarts == 1
 
 
+@pytest.mark.slow
 def test_a_call_over_the_time_limit_is_a_504():
     with ready_client(solve_timeout=0.5) as fast:
         lane = wait_ready(fast)

@@ -82,6 +82,7 @@ def test_equilibrium_uniform(client):
     assert r.json()["shape"] == "U" and r.json()["stable"] is True
 
 
+@pytest.mark.slow
 def test_equilibrium_segments_and_q0(client):
     segs = [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}, {"a": 0.8, "b": 1.2, "k": [1.0, 1.5], "L0": [1.1, 1.0]},
             {"a": 1.0, "b": 0.9, "k": 2.0, "L0": 1.2}]
@@ -106,6 +107,7 @@ def test_equilibrium_under_force(client):
     check_equilibrium(r.json(), to.solve_equilibrium_under_force(to.Manipulator.uniform(4), -0.3, 0.01))
 
 
+@pytest.mark.slow
 def test_equilibria(client):
     r = client.post("/v1/equilibria", json={"manipulator": PAPER, "dx": 0.1})
     assert r.status_code == 200, r.text
@@ -123,6 +125,7 @@ def test_equilibria(client):
     assert (r.json()["success"], r.json()["status"]) == (True, "searched") and r.json()["message"] == expected.message
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not homotopy_available() and os.environ.get("TENSEGRITY_REQUIRE_PHC") != "1",
                     reason="PHCpack's phc is not installed")
 def test_equilibria_homotopy_is_certified(client):
@@ -217,6 +220,7 @@ def test_force_deflection_list_all_branches(client):
                 assert p["energy"] is None and p["fx"] is None and all(v is None for v in p["q"])
 
 
+@pytest.mark.slow
 def test_force_deflection_answers_a_partial_curve_with_200(client):
     """The paper's chain has no stable equilibrium beyond dx = 3.15 (``tests/analyses/paths/test_curves.py``): the
     points before, with the end and the buckling jump at the guided critical force, as the library's curve."""
@@ -355,6 +359,7 @@ def test_readyz_before_startup():
     assert r.status_code == 503 and r.json()["status"] == "starting"
 
 
+@pytest.mark.slow
 def test_warmup_then_ready():
     with make_client(warmup=True, workers=1) as c:
         assert c.get("/readyz").json()["status"] == "ready"
@@ -373,6 +378,7 @@ def test_metrics(client):
     assert "tensegrity_solver_pool_in_flight" in text
 
 
+@pytest.mark.slow
 def test_docs_offline(client):
     r = client.get("/docs")
     assert r.status_code == 200
@@ -449,6 +455,7 @@ def test_straight_unstable(client):
     check_error(r, 422, "straight_unstable", "manipulator.segments[1].L0")
 
 
+@pytest.mark.slow
 def test_too_many_segments(client):
     # The schema's cap is the default limit (200): above it the document itself refuses the body.
     r = client.post("/v1/equilibrium", json={"manipulator": {"n": 201}, "dx": 0.1})
@@ -464,11 +471,12 @@ def test_too_many_segments(client):
         assert r.status_code == 200
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [150, 500, 10**9, 1e9])
 def test_too_many_segments_names_the_real_limit_for_every_n(n):
-    """Issue 18: on a server set below the schema's cap (TENSEGRITY_MAX_SEGMENTS=100), n = 150 was refused
-    with "at most 100" but n = 500 or 1e9 with the schema's "<= 200": every length over the setting is now
-    the server's own ``too_many_segments``, naming its limit; a job's n values too."""
+    """On a server set below the schema's cap (TENSEGRITY_MAX_SEGMENTS=100) every length over the setting (150,
+    500, 1e9: over the schema's "<= 200" too) is the server's own ``too_many_segments``, naming its limit, not the
+    schema's refusal; a job's n values too."""
     with make_client(max_segments=100) as c:
         r = c.post("/v1/equilibrium", json={"manipulator": {"n": n}, "dx": 0.1})
         body = check_error(r, 422, "too_many_segments", "manipulator.n")
@@ -499,6 +507,7 @@ def test_batch_too_large():
         check_error(r, 422, "batch_too_large", "targets")
 
 
+@pytest.mark.slow
 def test_solver_failure_carries_status(client):
     m = to.Manipulator.uniform(4)
     with pytest.raises(to.SolverError) as info:
@@ -529,6 +538,7 @@ def _works_for_ten_minutes(req, *args, **kwargs):
         pass
 
 
+@pytest.mark.slow
 def test_timeout_504_and_recovery(monkeypatch):
     from service.api.routes import equilibrium as routes
 
@@ -615,7 +625,7 @@ def test_unknown_path_and_method(client):
     check_error(client.get("/v1/equilibrium"), 405, "method_not_allowed")
 
 
-# ---------------------------------------------------------------------------- response size (issue 14 item 3)
+# ---------------------------------------------------------------------------- response size
 def test_response_size_limit_is_estimated_before_solving():
     with make_client(max_response_bytes=20000) as c:
         body = {"manipulator": PAPER, "dx": {"start": 0.0, "stop": 0.5, "num": 301}}
@@ -669,7 +679,7 @@ def test_bounded_rendering_gives_the_same_bytes():
     assert isinstance(info.value, ValueError) and info.value.field == "dx"
 
 
-# ---------------------------------------------------------------------------- the contract (issue 14 item 7)
+# ---------------------------------------------------------------------------- the contract
 def test_integral_floats_are_the_integers_the_schema_allows(client):
     # JSON Schema's "integer" is any number with a zero fractional part: 4.0 and 5.0 are valid
     r = client.post("/v1/equilibrium", json={"manipulator": {"n": 4.0}, "dx": 0.1})
@@ -811,6 +821,7 @@ def test_malformed_bodies_are_422(client, content, ctype):
     check_error(r, 422, "validation_error", "body")
 
 
+@pytest.mark.slow
 def test_inline_fast_path_answers_like_the_workers():
     """Short monotonic chains are solved in the solver process; the answer equals the worker path's, and
     what the fast path does not settle (bistable segments) goes to the workers."""
@@ -872,6 +883,7 @@ def test_config_docstring_lists_every_setting():
     assert fields <= documented, f"undocumented settings: {sorted(fields - documented)}"
 
 
+@pytest.mark.slow
 def test_the_iterations_of_a_point_the_rootfinder_continued_are_null():
     """``iterations`` is ``None`` (JSON null) where the solver did not count them (the rootfinder's continuation
     of a chain of more than 8 segments), and the schema says so; never -1."""

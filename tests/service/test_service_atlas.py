@@ -102,6 +102,7 @@ def same_atlas(got: dict, want: dict) -> None:
 
 
 # ---------------------------------------------------------------------------- jobs
+@pytest.mark.slow
 def test_an_atlas_job_gives_the_atlas_of_stability_atlas(client, atlas_job, direct):
     job = client.get(f"/v1/jobs/{atlas_job}").json()
     assert job["analysis"] == "atlas" and job["total"] == 9 and job["spec"]["options"] == {"method": "search"}
@@ -164,6 +165,7 @@ def test_the_atlas_of_a_job_not_done_or_not_an_atlas_is_refused(client):
 
 
 # ---------------------------------------------------------------------------- inline
+@pytest.mark.slow
 def test_the_inline_atlas_is_stability_atlas(client, direct):
     r = client.post("/v1/atlas", json={"manipulator": CHAIN, "dx": {"start": 0.2, "stop": 1.4, "num": 3},
                                        "dy": DY, "method": "search", "edges": True})
@@ -196,6 +198,7 @@ def test_inline_atlas_refusals_name_the_field(client, body, code, field):
         assert b["details"] == {"targets": 420, "nx": 21, "ny": 20, "max_atlas_targets": 400}
 
 
+@pytest.mark.slow
 def test_the_target_bound_is_a_setting_and_the_time_limit_answers_a_partial_atlas(monkeypatch):
     with app_client(inline_processes=0, max_atlas_targets=25) as c:
         assert c.get("/version").json()["limits"]["max_atlas_targets"] == 25
@@ -221,6 +224,7 @@ def test_the_target_bound_is_a_setting_and_the_time_limit_answers_a_partial_atla
 
 
 # ---------------------------------------------------------------------------- figure
+@pytest.mark.slow
 def test_the_figure_is_a_png_or_an_svg_with_its_gids(client, atlas_job):
     grid = {"manipulator": CHAIN, "dx": [0.2, 0.8], "dy": [0.0, 0.6, 5.0], "dpi": 40}      # 5.0: beyond reach
     r = client.post("/v1/plots/atlas", json=grid)

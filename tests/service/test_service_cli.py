@@ -20,6 +20,7 @@ def _python(code: str, *args: str) -> subprocess.CompletedProcess:
                           timeout=300)
 
 
+@pytest.mark.slow
 def test_the_library_and_its_applications_do_not_import_the_service():
     code = ("import sys\n"
             "import tensegrity_opt, tensegrity_opt.applications.cli, tensegrity_opt.applications.cli.plot\n"
@@ -32,6 +33,7 @@ def test_the_library_and_its_applications_do_not_import_the_service():
     assert r.stdout.strip() == "[]"
 
 
+@pytest.mark.slow
 def test_the_console_script_runs_the_library_commands_with_the_same_output():
     lib = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling", "--json"],
                          capture_output=True, text=True, cwd=ROOT, timeout=300, check=True).stdout
@@ -40,6 +42,7 @@ def test_the_console_script_runs_the_library_commands_with_the_same_output():
     assert svc == lib and '"critical_force": -0.5727' in svc
 
 
+@pytest.mark.slow
 def test_a_library_command_does_not_import_the_service_packages():
     code = ("import sys\nfrom service.cli import main\n"
             "assert main(['equilibrium', '--dx', '0.1']) == 0\n"
@@ -49,6 +52,7 @@ def test_a_library_command_does_not_import_the_service_packages():
     assert r.stdout.strip().splitlines()[-1] == "[]"
 
 
+@pytest.mark.slow
 def test_serve_and_openapi_without_the_service_extra_name_it():
     for cmd in ("serve", "openapi"):
         code = ("import sys\n"
@@ -108,8 +112,8 @@ def _parsers(parser, path=("tensegrity-opt",)):
 
 
 def test_every_option_of_every_command_has_help_and_shows_its_default():
-    """``tensegrity-opt --help`` and each ``COMMAND --help``: no option without a help text (was: most
-    ``plot`` kinds, ``serve --log-level``), and every help shows the defaults (argparse's
+    """``tensegrity-opt --help`` and each ``COMMAND --help``: no option without a help text (every ``plot``
+    kind, ``serve --log-level`` included), and every help shows the defaults (argparse's
     ``ArgumentDefaultsHelpFormatter`` or ``%(default)s``); walked over the parser, not a snapshot."""
     import argparse
 

@@ -40,6 +40,7 @@ def client():
 
 
 # ---------------------------------------------------------------------------- bodies = the library's
+@pytest.mark.slow
 def test_plan_is_the_library_plan(client):
     got = post_ok(client, "/v1/control/plan", s.PLAN_REQUEST_EXAMPLE)
     ex = s.PLAN_REQUEST_EXAMPLE
@@ -67,6 +68,7 @@ def test_plan_is_the_library_plan(client):
     assert got["verified"] == [False, False] and got["feasible"] == [True, True]   # verify: false checks nothing
 
 
+@pytest.mark.slow
 def test_simulation_is_the_library_simulation(client):
     got = post_ok(client, "/v1/control/simulate", s.SIMULATION_REQUEST_EXAMPLE)
     want = to.simulate(M3, loads=s.SIMULATION_REQUEST_EXAMPLE["loads"])
@@ -86,7 +88,8 @@ def test_simulation_is_the_library_simulation(client):
 def test_force_estimate_is_the_library_estimate(client):
     for body, kw in [({"q_measured": EQ_Q, "sigma_q": 1e-3}, {"sigma_q": 1e-3}),
                      ({"q_measured": EQ_Q}, {}),
-                     ({"q_measured": [EQ_Q[i] for i in (0, 1, 3)], "sigma_q": [1e-3, 1e-3, 2e-3], "measured": [0, 1, 3]},
+                     ({"q_measured": [EQ_Q[i] for i in (0, 1, 3)], "sigma_q": [1e-3, 1e-3, 2e-3],
+                       "measured": [0, 1, 3]},
                       {"sigma_q": np.array([1e-3, 1e-3, 2e-3]), "measured": [0, 1, 3]}),
                      ({"q_measured": [EQ_Q[0], None, EQ_Q[2], EQ_Q[3]], "measured": [True, False, True, True],
                        "sigma_q": [[1e-6, 0, 0], [0, 1e-6, 0], [0, 0, 4e-6]]},
@@ -95,7 +98,8 @@ def test_force_estimate_is_the_library_estimate(client):
         q = np.array([np.nan if v is None else v for v in body["q_measured"]])
         assert got == body_of(to.estimate_tip_force(M, q, **kw).to_dict()), body
         s.ForceEstimateOut.model_validate(got)
-        assert got["force"]["fx"] == pytest.approx(-0.1, abs=1e-5) and got["force"]["fy"] == pytest.approx(0.05, abs=1e-5)
+        assert got["force"]["fx"] == pytest.approx(-0.1, abs=1e-5)
+        assert got["force"]["fy"] == pytest.approx(0.05, abs=1e-5)
 
 
 # ---------------------------------------------------------------------------- refusals name the field
@@ -133,6 +137,7 @@ def test_schema_refusals_name_the_field(client):
         check_error(client.post(path, json=body), "validation_error", field)
 
 
+@pytest.mark.slow
 def test_domain_refusals_name_the_field(client):
     plan = {"manipulator": PAPER, "targets": [[7.9, 0.1]]}
     sim = {"manipulator": PAPER, "loads": [[0.0, 0.0], [0.0, 0.1]]}
@@ -173,6 +178,7 @@ def test_domain_refusals_name_the_field(client):
         check_error(client.post(path, json=body), code, field)
 
 
+@pytest.mark.slow
 def test_odd_inputs_are_answers_not_server_errors(client):
     X = {"n": 4, "a": 1e-6, "b": 1e6}
     Y = {"n": 4, "a": 1e6, "b": 1e-6, "k": 1e9}
@@ -205,6 +211,7 @@ def test_odd_inputs_are_answers_not_server_errors(client):
 
 
 # ---------------------------------------------------------------------------- limits
+@pytest.mark.slow
 def test_the_step_bound_and_the_response_size():
     assert Settings().max_trajectory_steps == 2000
     with app_client(max_trajectory_steps=30, max_response_bytes=2048) as c:
@@ -233,6 +240,7 @@ def test_the_step_bound_and_the_response_size():
         check_error(c.post("/v1/control/simulate", json=s.SIMULATION_REQUEST_EXAMPLE), "response_too_large", "loads")
 
 
+@pytest.mark.slow
 def test_a_time_limited_plan_answers_partial(monkeypatch):
     """A plan (a simulation) longer than the time limit allows: 200 with the steps done and status time_limit, not
     504. The library's clock moves on 1 s at every reading (tests/support/clocks.py), about once a plan step and
@@ -255,6 +263,7 @@ def test_a_time_limited_plan_answers_partial(monkeypatch):
 
 
 # ---------------------------------------------------------------------------- figures, documentation
+@pytest.mark.slow
 @pytest.mark.parametrize("path,body", [
     ("/v1/plots/plan", {"manipulator": PAPER, "targets": ARC, "rate_limit": 0.05, "margin": 0.3, "dpi": 40}),
     ("/v1/plots/simulation", {**s.SIMULATION_REQUEST_EXAMPLE, "dpi": 40}),
@@ -266,6 +275,7 @@ def test_control_figures_answer_png_and_svg(client, path, body):
     assert r.status_code == 200 and r.headers["content-type"] == "image/svg+xml" and b"<svg" in r.content[:500]
 
 
+@pytest.mark.slow
 def test_the_new_operations_are_documented(client):
     doc = client.get("/openapi.json").json()
     for path in ("/v1/control/plan", "/v1/control/simulate", "/v1/control/force-estimate"):
@@ -283,6 +293,7 @@ def test_the_new_operations_are_documented(client):
             assert client.post(path, json=ex["value"]).status_code == 200, (path, name)
 
 
+@pytest.mark.slow
 def test_the_plan_process_carries_large_calls_and_replies_on_uvloop():
     """``tensegrity-opt serve`` runs on uvloop, whose ``add_reader`` makes the solver process's pipe non-blocking: a
     plan of many targets (the call) or its figure (the reply) over the socket buffer once failed half-way
@@ -303,6 +314,7 @@ def test_the_plan_process_carries_large_calls_and_replies_on_uvloop():
 
 
 # ---------------------------------------------------------------------------- stiffness shaping, load capacity
+@pytest.mark.slow
 def test_stiffness_and_load_capacity_are_the_library_calls(client):
     body = {"manipulator": PAPER, "target": [7.0, 1.0], "eig_bounds": [0.04, 0.6]}
     got = post_ok(client, "/v1/control/stiffness", body)
@@ -316,6 +328,7 @@ def test_stiffness_and_load_capacity_are_the_library_calls(client):
     assert got["loads"][2] == pytest.approx(abs(to.critical_force(M, "free").force), rel=1e-9)
 
 
+@pytest.mark.slow
 def test_stiffness_and_load_capacity_refusals_name_the_field(client):
     r = client.post("/v1/control/stiffness", json={"manipulator": PAPER, "target": [7.0, 1.0],
                                                    "bounds_K": {"kxx": [None, 0.1], "kyy": [0.08, None]}})

@@ -20,6 +20,7 @@ def client():
         yield c
 
 
+@pytest.mark.slow
 def test_critical_force_design_equals_library(client):
     body = {"manipulator": PAPER, "vary": ["k"], "bounds": {"k": {"lo": 0.2, "hi": 5.0}}, "budget": {"k": 4.0}}
     r = client.post("/v1/design/critical-force", json=body)
@@ -38,6 +39,7 @@ def test_critical_force_design_equals_library(client):
     assert to.critical_force(m).force == approx(got["critical_force"], rel=1e-9)
 
 
+@pytest.mark.slow
 def test_total_length_design(client):
     body = {"manipulator": {"n": 6}, "vary": ["b"], "bounds": {"b": {"lo": 0.3, "hi": 3.0}}, "total_length": True}
     got = client.post("/v1/design/critical-force", json=body).json()
@@ -45,6 +47,7 @@ def test_total_length_design(client):
     assert 2 * sum(sg["b"] for sg in got["manipulator"]["segments"]) == approx(12.0, abs=1e-7)
 
 
+@pytest.mark.slow
 def test_preloads_for_load(client):
     r = client.post("/v1/design/preloads-for-load", json={"manipulator": PAPER, "required": 0.7})
     assert r.status_code == 200, r.text

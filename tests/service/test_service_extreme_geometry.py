@@ -31,6 +31,7 @@ def _body(m: to.Manipulator) -> dict:
                          for a, b, k1, k2, l1, l2 in zip(m.a, m.b, m.k1, m.k2, m.L1_0, m.L2_0)]}
 
 
+@pytest.mark.slow
 @settings(max_examples=15, deadline=None, derandomize=True, database=None,
           suppress_health_check=[HealthCheck.too_slow, HealthCheck.function_scoped_fixture])
 @given(m=chains(n_max=6), fx=st.floats(0.0, 0.5), fy=st.floats(-0.3, 0.3))

@@ -32,6 +32,7 @@ def _readyz_in_flight(base: str) -> int:
     return httpx.get(base + "/readyz", timeout=WAIT_SECONDS).json()["in_flight"]
 
 
+@pytest.mark.slow
 def test_timed_out_design_requests_free_capacity_and_do_not_block_light_ones():
     env = server_env(clean_env(TENSEGRITY_SOLVE_TIMEOUT=str(LIMIT), TENSEGRITY_WORKERS="2",
                                TENSEGRITY_WARMUP="false", TENSEGRITY_HEAVY_GRACE="0.5",
@@ -110,6 +111,7 @@ def _half_sent(port: int) -> socket.socket:
     return s
 
 
+@pytest.mark.slow
 def test_half_sent_requests_do_not_lock_out_new_clients():
     """A request timeout far away (600 s): the connection cap alone makes room for new clients, by closing the
     oldest half-sent requests; slow but complete requests are served; malformed HTTP gets the JSON error shape."""
@@ -145,6 +147,7 @@ def test_half_sent_requests_do_not_lock_out_new_clients():
             assert json.loads(body)["code"] == "bad_request", data
 
 
+@pytest.mark.slow
 def test_half_sent_requests_are_closed_by_the_request_timeout():
     env = clean_env(TENSEGRITY_WORKERS="1", TENSEGRITY_WARMUP="false", TENSEGRITY_INLINE_PROCESSES="0",
                     TENSEGRITY_HEAVY_WORKERS="0", TENSEGRITY_REQUEST_TIMEOUT="1.5", **GENEROUS_ENV)
@@ -159,6 +162,7 @@ def test_half_sent_requests_are_closed_by_the_request_timeout():
         assert httpx.get(base + "/healthz", timeout=60).status_code == 200
 
 
+@pytest.mark.slow
 def test_a_design_solve_stops_itself_at_the_deadline_and_keeps_its_process():
     from fastapi.testclient import TestClient
     from service_helpers import service_settings

@@ -3,9 +3,7 @@ stability boundaries and their figures.
 
 Every body is the library's ``to_dict()`` for the same input, rendered by the service's one renderer (the
 service calls the same functions in a solver thread); the refusals are 422 with the field named, never a
-500. The tests of ``/v1/rest-configurations``, of ``start: null`` (the rest configuration) and of
-``/v1/stability-boundary`` run once ``analyses/rest.py`` and ``analyses/boundaries.py`` are in the
-library; before, those endpoints answer 422 ``unsupported`` (checked).
+500.
 """
 
 from __future__ import annotations
@@ -171,6 +169,7 @@ def test_schema_refusals_name_the_field(client):
         check_error(client.post(path, json=body), "validation_error", field)
 
 
+@pytest.mark.slow
 def test_domain_refusals_name_the_field(client):
     base = {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED}
     long = {"manipulator": {"n": 100}, "start": {"q": [0.0] * 100}, "control": GUIDED}
@@ -207,6 +206,7 @@ def test_domain_refusals_name_the_field(client):
         check_error(client.post(path, json=body), code, field)
 
 
+@pytest.mark.slow
 def test_odd_inputs_are_answers_not_server_errors(client):
     base = {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED, "max_points": 60}
     for extra in [{"t_max": 0.0}, {"t_max": -1.0}, {"t_min": 1.0, "t_max": 0.5}, {"orientation": -1},
@@ -226,6 +226,7 @@ def test_odd_inputs_are_answers_not_server_errors(client):
         assert r.status_code in (200, 422), (body, r.text)
 
 
+@pytest.mark.slow
 def test_the_server_limits(client):
     limits = client.get("/version").json()["limits"]
     assert limits["max_path_points"] == 5000
@@ -240,6 +241,7 @@ def test_the_server_limits(client):
                                                "t_max": 2.0}), "response_too_large", "max_points")
 
 
+@pytest.mark.slow
 def test_the_time_limit_answers_the_points_so_far(monkeypatch):
     """A branch longer than the time limit allows: 200 with the points computed and status time_limit, not 504.
     The library's clock moves on 1 s at every reading, once a point (tests/support/clocks.py): the soft deadline
@@ -255,6 +257,7 @@ def test_the_time_limit_answers_the_points_so_far(monkeypatch):
 
 
 # ---------------------------------------------------------------------------- figures
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("path,body", [
     ("/v1/plots/branch", {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED, "t_max": 2.0, "y": "fy"}),
     ("/v1/plots/branch", {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED, "t_max": 2.0, "depth": 1,

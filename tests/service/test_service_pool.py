@@ -219,6 +219,7 @@ def test_an_interrupt_swallowed_once_is_sent_again():
 
 
 # ---------------------------------------------------------------------------- killable processes
+@pytest.mark.slow
 def test_a_process_call_runs_under_its_time_limit_and_raises_with_its_type():
     from tensegrity_opt.timelimit import remaining
 
@@ -240,6 +241,7 @@ def test_a_process_call_runs_under_its_time_limit_and_raises_with_its_type():
     asyncio.run(main())
 
 
+@pytest.mark.slow
 def test_a_stuck_process_is_killed_after_the_grace_and_its_queue_is_bounded():
     """One child, one call waiting at most: a third call is refused (503); the stuck call answers 504 at its
     deadline, its child is killed ``grace`` later and replaced, and the call that waited times out too (it never

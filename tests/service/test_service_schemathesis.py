@@ -76,6 +76,7 @@ def test_the_checks_are_every_check_of_schemathesis_but_the_response_time():
     assert "max_response_time" not in builtin and builtin == set(CHECKS) - {"positive_data_is_accepted_by_the_schema"}
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(schemathesis_command() is None, reason="schemathesis is not installed (pip install '.[test]')")
 def test_schemathesis_every_correctness_check_and_phase_at_the_default_limits(tmp_path):
     env = clean_env(TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"), **GENEROUS_ENV)

@@ -12,6 +12,7 @@ httpx = pytest.importorskip("httpx")
 pytest.importorskip("uvicorn")
 
 
+@pytest.mark.slow
 def test_serve_over_http():
     env = clean_env(TENSEGRITY_WORKERS="1", TENSEGRITY_MAX_SEGMENTS="50", **GENEROUS_ENV)
     with running_server(serve_command(free_port()), env, timeout=WAIT_SECONDS) as (proc, base):
@@ -29,6 +30,7 @@ def test_serve_over_http():
     assert proc.returncode is not None
 
 
+@pytest.mark.slow
 def test_sigterm_is_prompt_with_a_heavy_request_in_flight(tmp_path):
     """SIGTERM with a design request in flight (building its problem alone takes 20-40 s, then minutes of IPOPT)
     ends the server within the shutdown time limit (1 s) and the kill of the solver process: in well under 10 s,

@@ -105,6 +105,7 @@ def assert_same(got, want, path="") -> None:
 
 
 # ---------------------------------------------------------------------------- the three modes
+@pytest.mark.slow
 def test_track_mode_is_the_tracker_with_its_jumps(server):
     _, base = server
     chain = {"n": 3, "a": 0.5, "b": 1.0, "k": 1.0, "L0": 1.0}          # bistable segments: a snap on the way
@@ -141,6 +142,7 @@ def test_track_mode_is_the_tracker_with_its_jumps(server):
     assert got[-1]["jumps"] == tr.jumps == len(jumps_at)
 
 
+@pytest.mark.slow
 def test_preloads_mode_is_the_forward_solve_from_the_last_state_with_its_snap(server):
     _, base = server
     # a bistable segment in front of a straight one; tilting its double well (1 + d, 1 - d) ends its well:
@@ -184,6 +186,7 @@ def test_preloads_mode_is_the_forward_solve_from_the_last_state_with_its_snap(se
     assert ev["q_before"] == got[snaps[0] - 1]["q"]
 
 
+@pytest.mark.slow
 def test_inverse_mode_is_the_preload_controller(server):
     _, base = server
     F = (-0.02, 0.01)
@@ -214,6 +217,7 @@ def test_inverse_mode_is_the_preload_controller(server):
 
 
 # ---------------------------------------------------------------------------- refusals
+@pytest.mark.slow
 def test_bad_messages_are_answered_and_the_stream_goes_on(server):
     _, base = server
 
@@ -265,6 +269,7 @@ def test_bad_messages_are_answered_and_the_stream_goes_on(server):
     run(go())
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("open_msg,code,field", [
     ({"type": "open", "manipulator": {"n": 0}, "mode": "track"}, "validation_error", "manipulator.n"),
     ({"type": "open", "manipulator": PAPER, "mode": "steer"}, "validation_error", "mode"),
@@ -287,6 +292,7 @@ def test_a_refused_open_is_answered_then_closed_with_1008(server, open_msg, code
     run(go())
 
 
+@pytest.mark.slow
 def test_the_api_key_in_the_header_or_the_query(server):
     _, base = server
 
@@ -312,6 +318,7 @@ def test_the_api_key_in_the_header_or_the_query(server):
 
 
 # ---------------------------------------------------------------------------- limits
+@pytest.mark.slow
 def test_an_idle_stream_is_closed_with_1001(quick):
     _, base = quick
 
@@ -340,6 +347,7 @@ def _never_ends(session, msg, seq):
     raise AssertionError("the step was not interrupted")
 
 
+@pytest.mark.slow
 def test_a_step_over_the_time_limit_is_a_timeout_and_the_stream_goes_on(monkeypatch):
     """In process (a ``TestClient`` WebSocket): the inverse mode's steps are a stand-in that never ends, answered
     ``timeout`` at the step time limit (10 s; the opens and the real steps take a fraction of a second); the stream
@@ -372,6 +380,7 @@ def test_a_step_over_the_time_limit_is_a_timeout_and_the_stream_goes_on(monkeypa
             assert r["type"] == "result", r
 
 
+@pytest.mark.slow
 def test_the_stream_bound_and_a_killed_client_frees_its_slot(server):
     proc, base = server
     opn = {"type": "open", "manipulator": PAPER, "mode": "track"}

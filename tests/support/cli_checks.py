@@ -18,3 +18,14 @@ def one_error_line(err: str) -> str:
     assert len(lines) == 1 and "Traceback" not in err, err
     assert lines[0].startswith("tensegrity-opt") and "error: " in lines[0], err
     return lines[0]
+
+
+def writes_png_and_svg(main, argvs, tmp_path, capsys) -> None:
+    """Each command of ``argvs`` (run by ``main``) writes a PNG and an SVG, by the output's suffix, and says so."""
+    for argv in argvs:
+        for suffix in ("png", "svg"):
+            out = tmp_path / f"fig.{suffix}"
+            assert main([*argv, "-o", str(out), "--dpi", "40"]) == 0, capsys.readouterr().err
+            assert f"wrote {out}" in capsys.readouterr().out
+            data = out.read_bytes()
+            assert data[:4] == b"\x89PNG" if suffix == "png" else b"<svg" in data[:400]

@@ -87,8 +87,9 @@ def map_case(ctx, case):
         meta = case.meta
         positive = meta is None or not meta.generation.mode.is_negative
         case.body = _bound(body, positive, MAX_N)
-        if positive and case.operation.path.startswith("/v1/plots/") and isinstance(case.body.get("dpi"), (int, float)) \
-                and not isinstance(case.body["dpi"], bool) and case.body["dpi"] > MAX_DPI:
+        dpi = case.body.get("dpi")
+        if positive and case.operation.path.startswith("/v1/plots/") and isinstance(dpi, (int, float)) \
+                and not isinstance(dpi, bool) and dpi > MAX_DPI:
             case.body["dpi"] = MAX_DPI
         if positive and case.operation.path.startswith("/v1/plots/") and "dpi" not in case.body:
             case.body["dpi"] = MAX_DPI

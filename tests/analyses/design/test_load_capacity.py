@@ -36,6 +36,7 @@ CHAINS = {
 }
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("name, boundary, angles, base", [
     ("monotonic", "free", [np.pi, 0.75 * np.pi], (0.0, 0.0)),
     ("monotonic", "guided", [np.pi, 0.0], (0.0, 0.0)),
@@ -90,6 +91,7 @@ def test_straight_symmetric_chain_capacity_is_the_free_critical_load():
     assert cap.loads[0] == pytest.approx(R.critical_loads_free(ref_chain(PAPER))[0], rel=1e-6)
 
 
+@pytest.mark.slow
 def test_load_capacity_of_a_designed_pose_and_of_given_rest_lengths():
     """A design result as the pose: its chain, its configuration and its load (the base); (n, 2) rest lengths."""
     load = (0.02, -0.01)

@@ -32,6 +32,7 @@ def ref_chain(m: to.Manipulator) -> Chain:
 
 
 # ------------------------------------------------------------------------------------------ the atlas
+@pytest.mark.slow
 def test_atlas_targets_against_reference_model():
     at = stability_atlas(PRE_BENT, [0.2, 0.6], [-0.6, 0.2], edges=False)
     ch = ref_chain(PRE_BENT)
@@ -60,6 +61,7 @@ def test_switch_off_the_symmetry_line_on_a_pre_bent_chain():
     assert len(segs) == 1 and segs[0][0, 1] == pytest.approx(sw[0].dy)
 
 
+@pytest.mark.slow
 def test_mirror_chain_ties_on_the_axis_and_folds_are_branch_ends():
     at = stability_atlas(BISTABLE, [0.4, 0.9], [-0.3, 0.0, 0.3])
     ties = [c for c in at.switches if c.method == "tie"]
@@ -93,12 +95,12 @@ def test_unreachable_targets_and_failed_targets_are_kept():
 
 def test_atlas_time_limit_keeps_what_is_done_and_validates_input(monkeypatch):
     # the library's clock moves on 1 s at every reading (tests/support/clocks.py): a target takes about 4 readings,
-    # so a limit of 100 s runs out after some 25 of the 144 targets, on any machine
+    # so a limit of 30 s runs out after some 7 of the 144 targets, on any machine
     tick_clock(monkeypatch, step=1.0)
-    at = stability_atlas(BISTABLE, np.linspace(0.2, 1.2, 12), np.linspace(-0.5, 0.5, 12), timeout=100.0)
+    at = stability_atlas(BISTABLE, np.linspace(0.2, 1.2, 12), np.linspace(-0.5, 0.5, 12), timeout=30.0)
     assert at.status == "time_limit" and not at.success
     done = [t for row in at.targets for t in row if t.success]
-    assert 10 < len(done) < 50
+    assert 2 <= len(done) <= 20
     assert all(t.error.startswith("time_limit") for row in at.targets for t in row if not t.success)
     for kw, fld in (({"dx": [0.2, 0.1], "dy": [0.0]}, "dx"), ({"dx": [0.1], "dy": [np.nan]}, "dy"),
                     ({"dx": np.zeros(101) + np.arange(101), "dy": np.arange(101.0)}, "dx"),
@@ -113,6 +115,7 @@ def test_atlas_time_limit_keeps_what_is_done_and_validates_input(monkeypatch):
         assemble_atlas(BISTABLE, [atlas_target(BISTABLE, 0.2, 0.0)] * 2)
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(shutil.which("phc") is None, reason="PHCpack (phc) not installed")
 def test_certified_counts_agree_with_the_search():
     h = stability_atlas(BISTABLE, [0.3, 1.1], [0.1, 0.5], method="homotopy", edges=False)

@@ -20,6 +20,7 @@ PAPER = to.Manipulator.uniform(4)
 PREBENT = to.Manipulator([to.Segment(1.0, 1.0, 1.0, (1.02, 0.98))] * 4)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("parameter, boundary", [("L0", "guided"), ("a", "free")])
 def test_branch_point_boundary_is_the_critical_load_of_the_changed_chain(parameter, boundary):
     ctl = "guided" if boundary == "guided" else "load"

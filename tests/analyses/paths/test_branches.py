@@ -65,7 +65,7 @@ def test_straight_chain_branch_points_are_the_critical_loads(name, boundary):
 
 def test_paper_chain_free_critical_loads_closed_form():
     """The free-tip uniform chain: P_j = (K / b) (1 - cos((2j - 1) pi / (2n))); the paper chain's
-    first is 0.0761205 (conventions.md) and its guided one 0.572793."""
+    first is 0.0761205 (``docs/model.md``) and its guided one 0.572793."""
     br = straight_branch("paper4", "free")
     j = np.arange(1, 3)
     closed = 1.0 - np.cos((2 * j - 1) * math.pi / 8)
@@ -113,6 +113,7 @@ def pre_bent_guided_branch():
     return trace_branch(lib("pre_bent3"), None, Control.guided(direction=(-1.0, 0.0)), t_max=0.9, max_points=300)
 
 
+@pytest.mark.slow
 def test_pre_bent_guided_path_folds_at_the_reference_fold():
     """The pre-bent arm, tip guided: the load path turns at a fold, t = 0.825957 (extended
     system solved by scipy; the joint-angle parametrisation gives the same), where the reduced
@@ -142,6 +143,7 @@ def displacement_branch():
                         t_max=2.5, max_points=800)
 
 
+@pytest.mark.slow
 def test_displacement_branch_fold_and_joint_limit():
     """Displacement control (dx grows) of the bistable chain: a turning point in dx at
     dx = 1.973177 (stability lost); the unstable branch then runs back to dx = 0.660098 where

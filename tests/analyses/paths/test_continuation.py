@@ -73,6 +73,7 @@ def test_tracker_errors_keep_the_state():
     assert tr.current is None and tr.q is None
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("m", [PAPER, to.Manipulator([to.Segment(1.0, 0.9 + 0.1 * i, (1.0 + 0.3 * i, 1.2), 1.0)
                                                       for i in range(5)])])
 def test_method_newton_finds_the_least_energy_of_ipopt(m):

@@ -80,7 +80,7 @@ def test_switch_to_the_mirror_branch_is_reported():
     dy = np.linspace(-0.6, 0.6, 25)
     c = force_deflection(PAPER, np.full(dy.size, 0.3), dy)
     assert c.stable.all()
-    assert [j.kind for j in c.jumps] == ["switch"]     # the old U stays stable past dy = 0: an exchange
+    assert [j.kind for j in c.jumps] == ["switch"]     # the first U stays stable past dy = 0: an exchange
     j = c.jumps[0]
     # the mirror images tie at dy = 0; past it the other U is lower: switch between dy = 0 and 0.05
     assert j.dy_before == pytest.approx(0.0, abs=1e-12) and j.dy_after == pytest.approx(0.05)
@@ -161,6 +161,7 @@ def _branch_survives(chain: ref.Chain, q, F, d0: float, d1: float, dy: float = 0
 
 
 # ------------------------------------------------------------------------------------------ partial curves
+@pytest.mark.slow
 def test_partial_curve_ends_where_the_reference_model_finds_no_stable_equilibrium():
     c = to.force_deflection(PAPER, FAILING)
     assert not c.success and c.status == "no_stable_equilibrium" and c.requested == 81 and c.dx.size == 63
@@ -222,6 +223,7 @@ def test_partial_curve_with_every_branch_is_truncated_too():
     assert all(len(b["points"]) == 13 for b in d["branches"])
 
 
+@pytest.mark.slow
 def test_partial_curve_from_the_rest_configuration_speaks_of_the_callers_deflections():
     m = to.Manipulator([to.Segment(1.0, 1.0, 1.0, (1.05, 0.95))] * 2 + [to.Segment(1.0, 1.0, 1.0, 1.0)] * 2)
     rel = np.linspace(0.0, 6.0, 61)
@@ -260,10 +262,11 @@ def test_buckling_of_the_paper_chain():
     assert d["label"] == j.label and d["kind"] == "buckling"
 
 
+@pytest.mark.slow
 def test_leaving_an_unstable_straight_chain_is_no_buckling_and_tensile():
     a, b, k, L0 = 0.5, 1.0, 1.0, 0.5
     m = to.Manipulator.uniform(4, a, b, k, L0)
-    K = k * (b * L0 - 2 * (b * b - a * a))           # conventions.md: -1
+    K = k * (b * L0 - 2 * (b * b - a * a))           # docs/model.md: -1
     assert K == -1.0 and m.segments[0].stiffness == pytest.approx(K, abs=1e-12)
     with pytest.raises(to.UnstableStraightError):
         to.critical_force(m)
@@ -280,6 +283,7 @@ def test_leaving_an_unstable_straight_chain_is_no_buckling_and_tensile():
     assert "(tensile)" in j.label
 
 
+@pytest.mark.slow
 def test_leaving_the_straight_chain_off_the_axis_is_no_buckling():
     c = to.force_deflection(PAPER, [0.0, 0.2], [0.0, 0.3])
     assert [j.kind for j in c.jumps] == ["leave_straight"]
@@ -345,6 +349,7 @@ def test_a_snap_where_the_selected_branch_ends():
     assert j.label.startswith(f"snap to another stable branch: dF_x = {j.delta[0]:+.3g} (tensile)")
 
 
+@pytest.mark.slow
 def test_a_switch_where_the_least_energy_branch_is_exchanged():
     n, a, b, k, L0 = SWITCH_CHAIN
     c = to.force_deflection(to.Manipulator.uniform(n, a, b, k, L0), GRID)
@@ -381,6 +386,7 @@ def test_a_descending_grid_finds_the_same_switch_reversed():
 
 
 # -------------------------------------------------- measured from the rest configuration (reference="rest")
+@pytest.mark.slow
 def test_curve_from_rest_of_pre_bent_heterogeneous_chain():
     m = to.Manipulator([Segment(0.9, 1.0, 1.2, (1.08, 0.96)), Segment(1.1, 0.8, 0.9, (0.97, 1.01)),
                         Segment(1.0, 1.1, 1.0, 1.0)])

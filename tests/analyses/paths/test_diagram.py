@@ -36,6 +36,7 @@ def test_switch_branch_at_the_first_branch_point(boundary, side):
     assert np.all(np.asarray(sb.morse_index)[small & (amp > 1e-3)] == 0)
 
 
+@pytest.mark.slow
 def test_bifurcation_diagram_two_segment_guided():
     """n = 2, guided: one branch point at P = 5/3; the diagram holds the trivial branch and
     the branch(es) bifurcating there, every point a reference equilibrium."""

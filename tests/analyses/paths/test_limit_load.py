@@ -54,6 +54,7 @@ def test_limit_load_pre_bent_chain():
     np.testing.assert_allclose(lim.q, r.q, atol=1e-4)
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("boundary", ["free", "guided"])
 def test_limit_load_bistable_chain(boundary):
     """Three bistable segments from the (+, +, +) rest, compressed: a fold (snap-through), free

@@ -37,16 +37,17 @@ def test_cli_json_outputs(capsys):
 def test_cli_errors(capsys, tmp_path):
     assert main(["equilibrium", "--dx", "-1"]) == 2
     assert "beyond the chain's reach" in capsys.readouterr().err
-    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 1          # unstable straight chain: an answer, not a usage error
+    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 1    # an unstable straight chain: an answer
     bad = tmp_path / "m.json"
     bad.write_text('{"segments": [{"a": 1, "b": -1}]}')
     assert main(["buckling", "--manipulator", str(bad)]) == 2
     assert "b must be finite and > 0" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_console_script_runs():
-    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"], capture_output=True, text=True,
-                       check=True)
+    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"], capture_output=True,
+                       text=True, check=True)
     assert "critical force Fx0 = -0.572793" in r.stdout
 
 
@@ -54,8 +55,8 @@ def test_console_script_runs():
 @pytest.mark.parametrize("argv", [["curve", "--num", "-1"], ["curve", "--num", "0"], ["equilibrium", "--dx", "nan"],
                                   ["buckling", "--n", "0"], ["plot", "curve", "--num", "-3", "-o", "x.png"]])
 def test_a_bad_option_is_one_usage_line_and_exit_2(argv, capsys):
-    """A count must be >= 1 and a number finite: argparse's usage error, never a traceback (was a
-    numpy ValueError traceback for --num -1)."""
+    """A count must be >= 1 and a number finite: argparse's usage error, never a traceback (numpy's ValueError
+    for --num -1, say)."""
     with pytest.raises(SystemExit) as exc:
         main(argv)
     assert exc.value.code == 2
@@ -80,6 +81,7 @@ def test_every_option_of_the_analysis_commands_has_help_and_its_default(capsys):
         assert "(default: 0" in out or "(default: guided)" in out, cmd    # and its default
 
 
+@pytest.mark.slow
 def test_a_closed_pipe_is_not_an_error():
     """``tensegrity-opt buckling | head -1``: the reader leaves early; no BrokenPipeError traceback."""
     p = subprocess.Popen([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"],
@@ -90,7 +92,7 @@ def test_a_closed_pipe_is_not_an_error():
     assert "Traceback" not in err and "BrokenPipe" not in err
 
 
-# ---------------------------------------------------------------------------- issue 18: help, errors, partial curves
+# ---------------------------------------------------------------------------- help, errors, partial curves
 
 
 
@@ -123,7 +125,7 @@ def test_a_domain_error_inside_a_command_is_one_line_and_exit_2(argv, says, caps
 @pytest.mark.parametrize("text,says", [("[1, 2]", "expected a JSON object"), ('{"segments": []}', "n >= 1"),
                                        ("{not json", "Expecting"), ('{"segments": [{"a": 1, "b": -1}]}', "b must")])
 def test_a_bad_manipulator_file_is_one_line_and_exit_2(text, says, capsys, tmp_path):
-    """n = 0 by file (no segments), a JSON list (was an AttributeError traceback), broken JSON."""
+    """n = 0 by file (no segments), a JSON list, broken JSON: one line each, no traceback."""
     f = tmp_path / "m.json"
     f.write_text(text)
     assert main(["curve", "--manipulator", str(f), "--num", "3"]) == 2
@@ -189,10 +191,12 @@ def test_plot_curve_of_a_partial_curve_writes_the_figure_and_prints_the_note(cap
     assert err.strip() == f"tensegrity-opt: note: {_Partial.message}"
 
 
-@pytest.mark.parametrize("argv", [["buckling", "--a", "0.5", "--L0", "0.5"], ["buckling", "--a", "0.5", "--L0", "0.5", "--json"]])
+@pytest.mark.parametrize("argv", [["buckling", "--a", "0.5", "--L0", "0.5"],
+                                  ["buckling", "--a", "0.5", "--L0", "0.5", "--json"]])
 def test_a_physical_answer_is_no_usage_error(argv, capsys):
-    """Issue 18: the straight chain being unstable unloaded (K = k (b L0 - 2 (b^2 - a^2)) = 0.5 - 1.5 = -1 here,
+    """The straight chain being unstable unloaded (K = k (b L0 - 2 (b^2 - a^2)) = 0.5 - 1.5 = -1 here,
     by hand) is a fact about the chain: one line ``answer:`` naming K, status 1, not the usage error's 2."""
     assert main(argv) == 1
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and err[0].startswith("tensegrity-opt: answer: ") and "K = " in err[0] and "= -1 <= 0" in err[0]
+    assert len(err) == 1 and err[0].startswith("tensegrity-opt: answer: ")
+    assert "K = " in err[0] and "= -1 <= 0" in err[0]
