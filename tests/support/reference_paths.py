@@ -156,13 +156,16 @@ class PathSystem:
             return np.concatenate([g, [tip[1] - self.tip0[1]]])
         return np.concatenate([g, tip - (self.tip0 + t * self.w)])
 
-    def jac_z(self, z, t):
-        c = self.chain
+    def _hessian(self, z, t):
+        """The Hessian of ``E - F . tip`` at ``z`` and, for the held controls, the tip Jacobian (else ``None``)."""
         q, F = self.split(z, t)
-        H = lagrangian_hess(c, q, F)
-        if self.boundary == "free":
+        H = lagrangian_hess(self.chain, q, F)
+        return H, None if self.boundary == "free" else self.chain.jac(q)
+
+    def jac_z(self, z, t):
+        H, J = self._hessian(z, t)
+        if J is None:
             return H
-        J = c.jac(q)
         n = self.n
         A = np.zeros((self.m, self.m))
         A[:n, :n] = H
@@ -191,12 +194,9 @@ class PathSystem:
 
     # ---------------------------------------------------------------- stability
     def reduced_hessian(self, z, t):
-        c = self.chain
-        q, F = self.split(z, t)
-        H = lagrangian_hess(c, q, F)
-        if self.boundary == "free":
+        H, J = self._hessian(z, t)
+        if J is None:
             return H
-        J = c.jac(q)
         Z = sla.null_space(J[1][None, :]) if self.boundary == "guided" else sla.null_space(J)
         return Z.T @ H @ Z
 

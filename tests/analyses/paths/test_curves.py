@@ -317,7 +317,7 @@ def test_a_descending_grid_reports_its_jump_between_the_last_two_points():
     assert to.force_deflection(PAPER, dxs[::-1][1:]).jumps == ()
 
 
-# a chain of bistable segments (K = -0.28): the least-energy branch changes once near dx = 1.3, while the old
+# a chain of bistable segments (K = -0.28): the least-energy branch changes once near dx = 1.3, while the first
 # branch is still stable (a switch), and the stable branches end near dx = 3.8
 SWITCH_CHAIN = (3, 0.6, 1.0, 1.0, 1.0)
 # K = -1: the selected branch ends near dx = 2.5 (a snap)
@@ -325,18 +325,18 @@ SNAP_CHAIN = (3, 0.5, 1.0, 1.0, 0.5)
 GRID = np.linspace(0.02, 5.4, 60)
 
 
-def _jump_index(c: to.Curve, j: to.results.Jump) -> int:
-    return int(np.flatnonzero(c.dx == j.dx_before)[0])
+def _the_inner_jump(params, kind: str):
+    """The curve of the uniform chain ``params`` over ``GRID``, the reference chain, its one jump between two
+    stable branches (of ``kind``) and the index of the point before it."""
+    n, a, b, k, L0 = params
+    c = to.force_deflection(to.Manipulator.uniform(n, a, b, k, L0), GRID)
+    inner = [j for j in c.jumps if j.kind in ("snap", "switch")]
+    assert [j.kind for j in inner] == [kind]
+    return c, ref.Chain.uniform(n, a, b, k, L0), inner[0], int(np.flatnonzero(c.dx == inner[0].dx_before)[0])
 
 
 def test_a_snap_where_the_selected_branch_ends():
-    n, a, b, k, L0 = SNAP_CHAIN
-    c = to.force_deflection(to.Manipulator.uniform(n, a, b, k, L0), GRID)
-    chain = ref.Chain.uniform(n, a, b, k, L0)
-    inner = [j for j in c.jumps if j.kind in ("snap", "switch")]
-    assert [j.kind for j in inner] == ["snap"]
-    j = inner[0]
-    i = _jump_index(c, j)
+    c, chain, j, i = _the_inner_jump(SNAP_CHAIN, "snap")
     assert (j.dx_before, j.dx_after) == (GRID[i], GRID[i + 1]) and j.branch_before != j.branch_after
     # the reference model's continuation of the branch before loses it inside the step ...
     ok, where, _ = _branch_survives(chain, c.q[i], [c.fx[i], c.fy[i]], j.dx_before, j.dx_after)
@@ -351,18 +351,12 @@ def test_a_snap_where_the_selected_branch_ends():
 
 @pytest.mark.slow
 def test_a_switch_where_the_least_energy_branch_is_exchanged():
-    n, a, b, k, L0 = SWITCH_CHAIN
-    c = to.force_deflection(to.Manipulator.uniform(n, a, b, k, L0), GRID)
-    chain = ref.Chain.uniform(n, a, b, k, L0)
-    inner = [j for j in c.jumps if j.kind in ("snap", "switch")]
-    assert [j.kind for j in inner] == ["switch"]
-    j = inner[0]
-    i = _jump_index(c, j)
+    c, chain, j, i = _the_inner_jump(SWITCH_CHAIN, "switch")
     # both branches are stable over the whole step (reference continuation both ways) and exchange order
-    ok, q_old, _ = _branch_survives(chain, c.q[i], [c.fx[i], c.fy[i]], j.dx_before, j.dx_after)
-    assert ok and chain.energy(q_old) > c.energy[i + 1] + 1e-6
-    ok, q_new, _ = _branch_survives(chain, c.q[i + 1], [c.fx[i + 1], c.fy[i + 1]], j.dx_after, j.dx_before)
-    assert ok and chain.energy(q_new) > c.energy[i] + 1e-6
+    ok, q_before, _ = _branch_survives(chain, c.q[i], [c.fx[i], c.fy[i]], j.dx_before, j.dx_after)
+    assert ok and chain.energy(q_before) > c.energy[i + 1] + 1e-6
+    ok, q_after, _ = _branch_survives(chain, c.q[i + 1], [c.fx[i + 1], c.fy[i + 1]], j.dx_after, j.dx_before)
+    assert ok and chain.energy(q_after) > c.energy[i] + 1e-6
     for p in (i, i + 1):
         assert c.energy[p] == pytest.approx(chain.global_min(GRID[p], 0.0, n_random=40)[0], rel=1e-9)
     assert j.label.startswith("switch of the least-energy stable branch")
@@ -380,9 +374,6 @@ def test_a_descending_grid_finds_the_same_switch_reversed():
         np.testing.assert_allclose(jd.force_before, ju.force_after, atol=1e-9)
         np.testing.assert_allclose(jd.delta, -ju.delta, atol=1e-9)
     np.testing.assert_allclose(down.energy[::-1], up.energy, rtol=1e-10)
-
-
-# ------------------------------------------------------------------------------------------ HTTP
 
 
 # -------------------------------------------------- measured from the rest configuration (reference="rest")
