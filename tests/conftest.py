@@ -2,17 +2,21 @@
 
 The folders mirror the code (``tests/model``, ``tests/numerics``, ``tests/analyses/<package>``,
 ``tests/applications/<package>``, ``tests/service``) plus ``tests/browser`` (the page in Chromium),
-``tests/docs`` (the documentation site and the notebook) and ``tests/client`` (the generated typed client).
-Markers, set here by folder (``service``, ``browser``, ``docs``) or on the test (``slow``):
+``tests/docs`` (the documentation site and the notebook), ``tests/client`` (the generated typed client) and
+``tests/support`` (the shared helpers, the independent reference models and their own tests).
+Markers, set here by folder (``service``, ``browser``, ``docs``) or on the test (``slow``, ``slow_cases``):
 
 * ``slow`` - longer than the fast lane affords (``python -m pytest -m "not slow"``, the developer's check
-  after every change);
+  after every change; every test file keeps tests in it, so that the lane fails when any module breaks);
+* ``slow_cases(keep=k)`` - on a parametrized test: its first ``k`` cases stay in the fast lane, the others are
+  ``slow``;
 * ``service`` - needs the ``service`` extra (FastAPI, uvicorn ...): everything under ``tests/service``,
-  ``tests/browser`` and ``tests/client``;
+  ``tests/browser`` and ``tests/client`` (the client's tests are ``slow`` too: a real server, the generator);
 * ``browser`` - drives Chromium;
 * ``docs`` - builds the documentation site or runs the notebook.
 
-The service's job store never touches the working directory.
+The service's job store never touches the working directory. This file imports no part of the service: the
+library's tests run without the service extra (``tests/test_library_alone.py``).
 """
 
 from pathlib import Path
@@ -25,19 +29,27 @@ HERE = Path(__file__).resolve().parent
 FOLDER_MARKERS = {
     "service": ("service",),
     "browser": ("browser", "service", "slow"),
-    "client": ("service",),
+    "client": ("service", "slow"),
     "docs": ("docs", "slow"),
 }
 
 
+@pytest.hookimpl(tryfirst=True)       # before pytest deselects by marker (-m)
 def pytest_collection_modifyitems(config, items):
+    seen: dict[tuple[str, str], int] = {}
     for item in items:
         try:
             top = Path(str(item.fspath)).resolve().relative_to(HERE).parts[0]
         except ValueError:
-            continue
+            top = None
         for name in FOLDER_MARKERS.get(top, ()):
             item.add_marker(getattr(pytest.mark, name))
+        cases = item.get_closest_marker("slow_cases")
+        if cases is not None:
+            key = (str(item.fspath), item.originalname)
+            seen[key] = seen.get(key, 0) + 1
+            if seen[key] > cases.kwargs.get("keep", 1):
+                item.add_marker(pytest.mark.slow)
 
 
 @pytest.fixture(autouse=True)

@@ -1,9 +1,9 @@
-"""The house's rules, checked on the code's own imports (issue 15).
+"""The house's rules, checked on the code's own imports.
 
 * the layers: ``model`` (numpy) <- ``numerics`` (the only package importing CasADi) <- ``analyses``
   <- ``applications``; the foundation (``errors``, ``timelimit``) below all of them;
 * the library never imports the service (nor fastapi, uvicorn, starlette; that importing it loads
-  none of them is checked in ``tests/test_service_cli.py``);
+  none of them is checked in ``tests/service/test_service_cli.py``);
 * no import cycle among the project's modules, an import inside a function included.
 
 The import graph is grimp's (import-linter's engine: it reads every import statement, at any
@@ -20,6 +20,7 @@ import textwrap
 from pathlib import Path
 
 import grimp
+import pytest
 import numpy as np
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
@@ -120,6 +121,7 @@ def test_the_contracts_catch_a_broken_layer_and_a_casadi_import(tmp_path):
     assert "2 broken" in out.stdout, out.stdout + out.stderr
 
 
+@pytest.mark.slow
 def test_the_import_check_sees_the_service_when_it_is_loaded():
     """The control of ``test_service_cli``'s check that the library loads no web stack: the same
     ``sys.modules`` test sees fastapi once the service is imported."""

@@ -20,7 +20,7 @@ from pathlib import Path
 import pytest
 
 import tensegrity_opt as to
-from servers import clean_env, free_port, running_server, uvicorn_factory_command
+from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, uvicorn_factory_command
 
 HERE = Path(__file__).resolve().parent
 
@@ -78,8 +78,8 @@ def browser(tmp_path_factory):
                                            "download.prompt_for_download": False})
     opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
     drv = webdriver.Chrome(service=Service(executable_path=driver_bin), options=opts)
-    drv.set_page_load_timeout(30)
-    drv.set_script_timeout(30)
+    drv.set_page_load_timeout(WAIT_SECONDS)
+    drv.set_script_timeout(WAIT_SECONDS)
     try:
         yield drv
     finally:
@@ -89,22 +89,23 @@ def browser(tmp_path_factory):
 @pytest.fixture(scope="module")
 def server(browser):   # the browser first: skip before starting a server
     pytest.importorskip("httpx")
-    env = clean_env(TENSEGRITY_WORKERS="2", TENSEGRITY_WARMUP="false")
+    env = clean_env(TENSEGRITY_WORKERS="2", TENSEGRITY_WARMUP="false", **GENEROUS_ENV)
     # the app factory is this module, which imports the shared helpers of tests/support
     env["PYTHONPATH"] = os.pathsep.join(filter(None, [str(HERE.parent / "support"), env.get("PYTHONPATH")]))
     cmd = uvicorn_factory_command("test_web_e2e:create_web_test_app", free_port(), "--app-dir", str(HERE))
-    with running_server(cmd, env, ready="/readyz", timeout=30) as (_, base):
+    with running_server(cmd, env, ready="/readyz", timeout=WAIT_SECONDS) as (_, base):
         yield base
 
 
-def _wait(drv, predicate, what: str, timeout: float = 60.0):
+def _wait(drv, predicate, what: str, timeout: float = WAIT_SECONDS):
     from selenium.webdriver.support.ui import WebDriverWait
 
     return WebDriverWait(drv, timeout, poll_frequency=0.05).until(lambda d: predicate(d), message=what)
 
 
 def _done(drv) -> bool:
-    return drv.execute_script("return document.body.dataset.state === 'done' && !document.getElementById('solve').disabled")
+    return drv.execute_script("return document.body.dataset.state === 'done'"
+                              " && !document.getElementById('solve').disabled")
 
 
 def _load(drv, server: str) -> None:
@@ -144,7 +145,8 @@ def _download(drv, selector: str) -> dict:
           const b = e.detail.blob;
           const bytes = new Uint8Array(await b.arrayBuffer());
           let bin = "";
-          for (let i = 0; i < bytes.length; i += 8192) bin += String.fromCharCode.apply(null, bytes.subarray(i, i + 8192));
+          for (let i = 0; i < bytes.length; i += 8192)
+            bin += String.fromCharCode.apply(null, bytes.subarray(i, i + 8192));
           done({name: e.detail.name, type: b.type, size: b.size, data: btoa(bin),
                 text: b.type.indexOf("png") >= 0 ? null : await b.text()});
         }, {once: true});
@@ -283,8 +285,9 @@ def test_page_in_headless_chromium(browser, server, tmp_path):
         const p = document.getElementById("shape-panel");
         const after = getComputedStyle(p.querySelector("h2"), "::after").content;
         const sp = getComputedStyle(document.querySelector("#status .spinner"));
-        return [document.body.dataset.state, p.dataset.stale, getComputedStyle(document.getElementById("chain")).opacity,
-                after, sp.display, sp.animationName, getComputedStyle(document.getElementById("status"), "::before").content];""")
+        return [document.body.dataset.state, p.dataset.stale,
+                getComputedStyle(document.getElementById("chain")).opacity, after, sp.display, sp.animationName,
+                getComputedStyle(document.getElementById("status"), "::before").content];""")
     assert busy[:2] == ["busy", "true"]
     assert float(busy[2]) < 0.6 and "stale" in busy[3]
     assert busy[4] == "inline-block" and busy[5] == "spin" and busy[6] in ("none", "normal", "")
@@ -424,7 +427,7 @@ def test_partial_curve_shows_points_and_note(browser, server, tmp_path):
     _screenshot(drv, tmp_path / "web_page_dx4.png")
     body = {"manipulator": {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1}, "dx": {"start": 0, "stop": 4, "num": 60},
             "dy": 0, "branch": "stable"}
-    r = httpx.post(server + "/v1/force-deflection", json=body, timeout=60)
+    r = httpx.post(server + "/v1/force-deflection", json=body, timeout=WAIT_SECONDS)
     assert r.status_code == 200, r.text          # a partial curve is a result (success: false), no refusal
     out = r.json()
     assert out["success"] is False and 1 <= len(out["points"]) < 60
@@ -453,7 +456,8 @@ def test_contract_partial_curve_is_drawn(browser, server):
     dxs = [4 * i / 59 for i in range(60)]                    # the page's request: {start: 0, stop: 4, num: 60}
     end = 3.18644                                            # where the service finds no stable equilibrium
     kept = [d for d in dxs if d < 3.1]
-    r = httpx.post(server + "/v1/force-deflection", json={"manipulator": man, "dx": kept, "dy": 0}, timeout=60)
+    r = httpx.post(server + "/v1/force-deflection", json={"manipulator": man, "dx": kept, "dy": 0},
+                   timeout=WAIT_SECONDS)
     assert r.status_code == 200, r.text
     real = r.json()
     stop = next(d for d in dxs if d >= 3.1)
@@ -469,7 +473,8 @@ def test_contract_partial_curve_is_drawn(browser, server):
             const [fake, status] = arguments;
             window.__fetch = window.__fetch || window.fetch;
             window.fetch = (url, opts) => String(url).indexOf("force-deflection") >= 0
-              ? Promise.resolve(new Response(JSON.stringify(fake), {status, headers: {"Content-Type": "application/json"}}))
+              ? Promise.resolve(new Response(JSON.stringify(fake),
+                                             {status, headers: {"Content-Type": "application/json"}}))
               : window.__fetch(url, opts);""", fake, status)
         try:
             _solve(drv, dx="3")

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from servers import clean_env, free_port, running_server, serve_command
+from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, serve_command
 from tensegrity_opt.model.manipulator import Manipulator
 
 REPO = Path(__file__).resolve().parents[2]
@@ -41,17 +41,18 @@ README_BASE = "http://127.0.0.1:8000"
 
 @pytest.fixture(scope="module")
 def base():
-    env = clean_env(TENSEGRITY_WORKERS="1")
-    with running_server(serve_command(free_port()), env) as (_, url):
+    env = clean_env(TENSEGRITY_WORKERS="1", **GENEROUS_ENV)
+    with running_server(serve_command(free_port()), env, timeout=WAIT_SECONDS) as (_, url):
         yield url
 
 
 @pytest.fixture()
 def api(base):
-    with Client(base_url=base, timeout=httpx.Timeout(60.0), raise_on_unexpected_status=True) as client:
+    with Client(base_url=base, timeout=httpx.Timeout(WAIT_SECONDS), raise_on_unexpected_status=True) as client:
         yield client
 
 
+@pytest.mark.slow
 def test_equilibrium(api):
     body = EquilibriumRequest(manipulator=UniformManipulatorIn(n=4, a=1, b=1, k=1, l0=1), dx=0.1, dy=0.0)
     r = solve_equilibrium.sync_detailed(client=api, body=body)
@@ -65,7 +66,7 @@ def test_equilibrium(api):
     # independently: the returned angles put the tip on its target (2 sum(b) - dx, dy) = (7.9, 0) ...
     assert Manipulator.uniform(4).tip(np.array(eq.q)) == pytest.approx([7.9, 0.0], abs=1e-9)
     assert eq.tip == pytest.approx([7.9, 0.0], abs=1e-9)
-    # ... on the U branch, whose |Fy| at dx = 0.1 is 0.02579 (conventions.md, eq. 26's branch)
+    # ... on the U branch, whose |Fy| at dx = 0.1 is 0.02579 (``docs/model.md``, eq. 26's branch)
     assert eq.stable and eq.shape == "U" and eq.morse_index == 0
     assert abs(eq.force.fy) == pytest.approx(0.02579, abs=1e-5)
 

@@ -52,6 +52,7 @@ def fresh(tmp_path_factory) -> Path:
     return out
 
 
+@pytest.mark.slow
 def test_committed_client_is_up_to_date(fresh):
     fresh_files = tree(fresh)
     assert "tensegrity_opt_client/api/equilibrium/solve_equilibrium.py" in fresh_files

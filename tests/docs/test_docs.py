@@ -14,7 +14,8 @@ import tensegrity_opt.analyses.design.stiffness_shaping
 
 
 @pytest.mark.parametrize("module", [tensegrity_opt, tensegrity_opt.analyses.paths.continuation,
-                                    tensegrity_opt.analyses.paths.simulation, tensegrity_opt.analyses.design.force_sensor,
+                                    tensegrity_opt.analyses.paths.simulation,
+                                    tensegrity_opt.analyses.design.force_sensor,
                                     tensegrity_opt.analyses.design.stiffness_shaping,
                                     tensegrity_opt.analyses.design.load_capacity,
                                     tensegrity_opt.analyses.design.follower])
@@ -23,7 +24,7 @@ def test_docstring_examples(module):
     assert result.attempted > 0 and result.failed == 0
 
 
-# ---------------------------------------------------------------------------- the README (issue 18)
+# ---------------------------------------------------------------------------- the README
 import json  # noqa: E402
 import re  # noqa: E402
 from pathlib import Path  # noqa: E402

@@ -3,8 +3,9 @@ checks are ``assert`` statements in it, so executing it fails when the library d
 
 The kernel is ipykernel's ``python3`` kernel of this interpreter (a kernel spec of that name on
 ``JUPYTER_PATH`` for the test, so that a ``python3`` spec of another Python in the user's Jupyter
-directories is not the one started), with the environment of the test process and with ``PYTHONPATH`` led by the directory of the ``tensegrity_opt`` the test imports, so
-that the notebook checks that library: the worktree's source or the installed package alike.
+directories is not the one started), with the environment of the test process and with ``PYTHONPATH`` led by
+the directory of the ``tensegrity_opt`` the test imports, so that the notebook checks that library: the worktree's
+source or the installed package alike.
 """
 
 import json

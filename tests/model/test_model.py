@@ -199,6 +199,7 @@ def _random_segment(rng, family):
     raise ValueError(family)
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("family", ["monotonic", "bistable", "asymmetric", "a > b", "K ~ 0"])
 def test_critical_angles_match_an_independent_grid_and_bisection(family):
     rng = np.random.default_rng(sum(map(ord, family)))

@@ -2,7 +2,7 @@
 
 Expected values come from the numpy model of ``Manipulator`` (energy, tip, equilibrium residual),
 the library's QR route for the reduced Hessian (``stability.reduced_hessian``), the Python Newton
-method, the independent reference model of ``tests/reference_model.py`` — never from the kernels.
+method, the independent reference model of ``tests/support/reference_model.py`` — never from the kernels.
 """
 
 import json
@@ -221,6 +221,7 @@ def _child(tmp_path, **env):
     return json.loads(r.stdout.strip().splitlines()[-1])
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(build.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
 def test_compiled_cached_and_virtual_machine_give_the_same_answers(tmp_path):
     first = _child(tmp_path)
@@ -271,6 +272,7 @@ def test_kernels_exist_only_for_short_chains():
         kernels.build(1)
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(build.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
 def test_a_corrupt_cached_library_warns_and_falls_back(tmp_path):
     _child(tmp_path)

@@ -73,6 +73,7 @@ def test_unstable_equilibria_are_classified_alike(both_models):
         assert inertia_of(Hd, Jd, True, 1e-9, m.n - 2).morse_index == e.morse_index
 
 
+@pytest.mark.slow
 def test_long_chain_force_control_and_curve():
     m = to.Manipulator.uniform(200)
     free = to.critical_force(m, "free", n_modes=1).loads[0]

@@ -8,6 +8,8 @@ from pathlib import Path
 
 import tensegrity_opt as to
 from tensegrity_opt import results
+from tensegrity_opt.analyses.paths.atlas import AtlasTarget
+from tensegrity_opt.analyses.paths.curves import POINT_STATUSES, CurveEnd
 
 SPEC = json.loads((Path(__file__).resolve().parents[2] / "openapi" / "openapi.json").read_text())
 SCHEMAS = SPEC["components"]["schemas"]
@@ -23,7 +25,8 @@ BODIES = {
     "SimulationEventOut": results.SimulationEvent, "AtlasTargetOut": results.AtlasTarget,
 }
 #: 200 bodies of POST /v1 that are compositions, not one library result (their parts carry the contract: a batch's
-#: items, a diagram's branches, a stiffness answer's equilibrium) or a plain evaluation (the segment's torque table), or a job's record.
+#: items, a diagram's branches, a stiffness answer's equilibrium) or a plain evaluation (the segment's torque table),
+#: or a job's record.
 COMPOSITIONS = {"BatchOut", "BifurcationDiagramOut", "StiffnessOut", "SegmentTorqueOut", "JobCreated", "JobSummary"}
 
 
@@ -52,3 +55,16 @@ def test_every_json_answer_of_the_api_is_a_result_body_or_a_named_composition():
         ok = op["responses"].get("200") or op["responses"].get("202")
         ref = ok["content"]["application/json"]["schema"]["$ref"].rsplit("/", 1)[-1]
         assert ref in BODIES or ref in COMPOSITIONS, (path, ref)
+
+
+def test_the_http_models_carry_the_vocabularies():
+    from service import schemas as s
+
+    for model, cls in ((s.ForceDeflectionOut, to.Curve), (s.TracedBranchOut, to.Branch),
+                       (s.LimitLoadOut, to.LimitLoad), (s.StabilityBoundaryOut, to.StabilityBoundary),
+                       (s.AtlasOut, to.StabilityAtlas), (s.AtlasTargetOut, AtlasTarget),
+                       (s.SimulationOut, to.Simulation), (s.SimulationEventOut, to.results.SimulationEvent),
+                       (s.CurveEndOut, CurveEnd)):
+        assert list(model.model_fields)[:3] == ["success", "status", "message"], model
+        assert set(model.model_fields["status"].annotation.__args__) == set(cls.STATUSES), model
+    assert set(s.CurvePoint.model_fields["status"].annotation.__args__) == set(POINT_STATUSES)

@@ -24,7 +24,8 @@ with warnings.catch_warnings():
     warnings.simplefilter("ignore")
     from fastapi.testclient import TestClient
 
-from service.config import Settings
+from service_helpers import WAIT_SECONDS, service_settings
+
 from service.execution import ProcessExecutor, SolveTimeout, Unavailable
 from service.execution import processes as processes_mod
 from service.main import create_app
@@ -41,10 +42,10 @@ LONG = {"manipulator": {"n": 12, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}, "dx":
 
 
 def ready_client(**overrides) -> TestClient:
-    return TestClient(create_app(Settings(**{"warmup": False, **overrides})))
+    return TestClient(create_app(service_settings(**overrides)))
 
 
-def wait_ready(client: TestClient, timeout: float = 120.0) -> ProcessExecutor:
+def wait_ready(client: TestClient, timeout: float = WAIT_SECONDS) -> ProcessExecutor:
     lane = client.app.state.executors.fast
     assert client.portal.call(lane.wait_ready, timeout), "the solver process did not get ready"
     return lane
@@ -58,6 +59,7 @@ def clients():
         yield fast, plain
 
 
+@pytest.mark.slow
 def test_the_solver_process_answers_like_the_solver_threads(clients):
     fast, plain = clients
     lane = fast.app.state.executors.fast
@@ -88,6 +90,7 @@ def _case(b: dict) -> str:
     return f"n{b['manipulator'].get('n')}-dx{b['dx']}-dy{b.get('dy', 0)}-{how}"
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("body", [*BODIES, BISTABLE, LONG], ids=_case)
 def test_the_response_schema_is_the_contract_of_every_path(clients, body):
     """The body of the solver process (rendered there, no response-model pass) validates against
@@ -116,6 +119,7 @@ def test_an_error_raised_in_the_solver_process_is_answered_as_without_it(clients
     assert lane.completed == before + 1          # the process answered "failed"; the pool re-raised it
 
 
+@pytest.mark.slow
 def test_a_killed_solver_process_loses_no_request_and_is_restarted(monkeypatch):
     monkeypatch.setattr(processes_mod, "RESTART_INTERVAL", 0.0)
     with ready_client() as fast, ready_client(inline_processes=0) as plain:
@@ -123,7 +127,7 @@ def test_a_killed_solver_process_loses_no_request_and_is_restarted(monkeypatch):
         expected = plain.post("/v1/equilibrium", json=BODIES[1]).json()
         [old] = lane.pids
         os.kill(old, signal.SIGKILL)
-        deadline = time.monotonic() + 30
+        deadline = time.monotonic() + WAIT_SECONDS
         while lane.ready and time.monotonic() < deadline:     # the loop notices the closed socket
             time.sleep(0.01)
         assert not lane.ready
@@ -165,23 +169,24 @@ def test_the_solver_process_survives_calls_it_cannot_take(clients):
     lane = fast.app.state.executors.fast
     pids = lane.pids
     with pytest.raises((pickle.PicklingError, AttributeError, TypeError)):   # cannot be pickled: nothing sent
-        fast.portal.call(lambda: lane.run(operator.add, lambda: 0, 1, timeout=10))
+        fast.portal.call(lambda: lane.run(operator.add, lambda: 0, 1, timeout=120))
     with pytest.raises(ZeroDivisionError):               # cannot be unpickled there: its error comes back
-        fast.portal.call(lambda: lane.run(operator.add, _FailsToUnpickle(), 1, timeout=10))
+        fast.portal.call(lambda: lane.run(operator.add, _FailsToUnpickle(), 1, timeout=120))
     with pytest.raises(ZeroDivisionError):               # raises there: the exception comes back with its type
-        fast.portal.call(lambda: lane.run(operator.truediv, 1, 0, timeout=10))
-    assert fast.portal.call(lambda: lane.run(operator.add, 2, 3, timeout=10)) == 5
+        fast.portal.call(lambda: lane.run(operator.truediv, 1, 0, timeout=120))
+    assert fast.portal.call(lambda: lane.run(operator.add, 2, 3, timeout=120)) == 5
     assert lane.ready and lane.pids == pids
 
 
+@pytest.mark.slow
 def test_a_stuck_solver_process_is_killed_and_restarted(monkeypatch):
     monkeypatch.setattr(processes_mod, "RESTART_INTERVAL", 0.0)
     with ready_client() as fast:
         lane = wait_ready(fast)
         [old] = lane.pids
         with pytest.raises(SolveTimeout):                  # the child sleeps through the whole limit
-            fast.portal.call(lambda: lane.run(time.sleep, 30.0, timeout=0.5))
-        deadline = time.monotonic() + 30
+            fast.portal.call(lambda: lane.run(time.sleep, 600.0, timeout=0.5))
+        deadline = time.monotonic() + WAIT_SECONDS
         while lane.ready and time.monotonic() < deadline:
             time.sleep(0.01)
         assert not lane.ready and lane.killed == 1         # killed as stuck, after its grace
@@ -191,14 +196,16 @@ def test_a_stuck_solver_process_is_killed_and_restarted(monkeypatch):
         assert old not in lane.pids and lane.restarts == 1
 
 
+@pytest.mark.slow
 def test_a_call_over_the_time_limit_is_a_504():
     with ready_client(solve_timeout=0.5) as fast:
         lane = wait_ready(fast)
-        busy = fast.portal.start_task_soon(lambda: lane.run(time.sleep, 3.0, timeout=10))   # occupies the child
-        r = fast.post("/v1/equilibrium", json=BODIES[0])    # queued behind it: over the 0.5 s limit
+        # the child sleeps ten minutes: the request queued behind it is over its 0.5 s limit on any machine
+        busy = fast.portal.start_task_soon(lambda: lane.run(time.sleep, 600.0, timeout=900))
+        r = fast.post("/v1/equilibrium", json=BODIES[0])
         assert r.status_code == 504 and r.json()["code"] == "timeout"
         with pytest.raises(Unavailable):                     # no answer within the grace: killed as stuck
-            busy.result(30)
+            busy.result(WAIT_SECONDS)
 
 
 def test_a_solver_process_that_cannot_start_is_not_restarted(monkeypatch):
@@ -208,7 +215,7 @@ def test_a_solver_process_that_cannot_start_is_not_restarted(monkeypatch):
     monkeypatch.setattr(processes_mod.sys, "executable", "/bin/false")
     with ready_client() as fast:
         lane = fast.app.state.executors.fast
-        assert not fast.portal.call(lane.wait_ready, 30.0)
+        assert not fast.portal.call(lane.wait_ready, WAIT_SECONDS)        # returns at once: the child died
         for _ in range(3):
             r = fast.post("/v1/equilibrium", json=BODIES[0])
             assert r.status_code == 200

@@ -1,7 +1,7 @@
-"""One serialiser per result: each ``to_dict()`` equals the dict the service built for the same object
-before the switch to ``to_dict`` (frozen in ``tests/reference_serialisers.py``: the independent,
-pre-existing serialiser), the service's body is that dict, each passes ``json.dumps(allow_nan=False)``, and
-follows the one NaN policy (:mod:`tensegrity_opt.serialize`); the CLI's ``--json`` is the API's body.
+"""One serialiser per result: each ``to_dict()`` equals the dict the independent, hand-written serialiser builds
+for the same object (``tests/support/reference_serialisers.py``), the service's body is that dict, each passes
+``json.dumps(allow_nan=False)``, and follows the one NaN policy (:mod:`tensegrity_opt.serialize`); the CLI's
+``--json`` is the API's body.
 """
 
 from __future__ import annotations
@@ -84,6 +84,7 @@ def _or_error(f):
         return type(exc)
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("family,seed", CASES)
 def test_to_dict_equals_the_service_serialiser(family, seed):
     rng = np.random.default_rng(seed)
@@ -224,6 +225,7 @@ CHAINS = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("chain", list(CHAINS))
 def test_cli_json_is_the_api_body(chain, client, capsys, tmp_path):
     opts, man = CHAINS[chain]

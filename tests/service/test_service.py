@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import math
 import os
+import re
 import threading
 import time
 import warnings
@@ -25,8 +26,10 @@ with warnings.catch_warnings():
 
 import tensegrity_opt as to
 from tensegrity_opt.numerics.homotopy import homotopy_available
+from service import schemas
 from service.config import Settings
 from service.main import create_app
+from service_helpers import app_client
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 REL = 1e-9
@@ -38,13 +41,14 @@ def approx(x):
 
 @pytest.fixture(scope="module")
 def client():
-    app = create_app(Settings(warmup=False))
-    with TestClient(app) as c:
+    with app_client() as c:
         yield c
 
 
 def make_client(**overrides) -> TestClient:
-    return TestClient(create_app(Settings(**{"warmup": False, **overrides})))
+    """The app with the tests' settings (generous time limits, ``tests/support/service_helpers.py``) and
+    ``overrides``."""
+    return app_client(**overrides)
 
 
 def check_equilibrium(got: dict, eq: to.Equilibrium) -> None:
@@ -78,6 +82,7 @@ def test_equilibrium_uniform(client):
     assert r.json()["shape"] == "U" and r.json()["stable"] is True
 
 
+@pytest.mark.slow
 def test_equilibrium_segments_and_q0(client):
     segs = [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}, {"a": 0.8, "b": 1.2, "k": [1.0, 1.5], "L0": [1.1, 1.0]},
             {"a": 1.0, "b": 0.9, "k": 2.0, "L0": 1.2}]
@@ -102,6 +107,7 @@ def test_equilibrium_under_force(client):
     check_equilibrium(r.json(), to.solve_equilibrium_under_force(to.Manipulator.uniform(4), -0.3, 0.01))
 
 
+@pytest.mark.slow
 def test_equilibria(client):
     r = client.post("/v1/equilibria", json={"manipulator": PAPER, "dx": 0.1})
     assert r.status_code == 200, r.text
@@ -119,6 +125,7 @@ def test_equilibria(client):
     assert (r.json()["success"], r.json()["status"]) == (True, "searched") and r.json()["message"] == expected.message
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(not homotopy_available() and os.environ.get("TENSEGRITY_REQUIRE_PHC") != "1",
                     reason="PHCpack's phc is not installed")
 def test_equilibria_homotopy_is_certified(client):
@@ -211,6 +218,29 @@ def test_force_deflection_list_all_branches(client):
                 assert p["q"] == approx(br.q[i].tolist())
             else:
                 assert p["energy"] is None and p["fx"] is None and all(v is None for v in p["q"])
+
+
+@pytest.mark.slow
+def test_force_deflection_answers_a_partial_curve_with_200(client):
+    """The paper's chain has no stable equilibrium beyond dx = 3.15 (``tests/analyses/paths/test_curves.py``): the
+    points before, with the end and the buckling jump at the guided critical force, as the library's curve."""
+    body = {"manipulator": PAPER, "dx": {"start": 0.0, "stop": 4.0, "num": 81}, "dy": 0.0}
+    r = client.post("/v1/force-deflection", json=body)
+    assert r.status_code == 200, r.text
+    got = r.json()
+    schemas.ForceDeflectionOut.model_validate(got)
+    assert got["success"] is False and got["status"] == "no_stable_equilibrium"
+    assert got["requested"] == 81 and len(got["points"]) == 63
+    assert got["ended_at"]["dx"] == pytest.approx(3.15) and got["ended_at"]["dy"] == 0.0
+    assert got["ended_at"]["status"] == "no_stable_equilibrium" and got["ended_at"]["message"]
+    assert got["ended_at"]["success"] is False
+    assert got["message"].endswith("63 of 81 points computed.")
+    assert got["points"][0]["status"] == "straight" and got["points"][-1]["status"] == "converged"
+    assert got["points"][-1]["solver"]["status"] == "Newton_Converged"
+    assert [j["kind"] for j in got["jumps"]] == ["buckling"]
+    jd = got["jumps"][0]
+    assert jd["delta"]["fx"] == pytest.approx(-0.572793, abs=1e-6) and jd["label"].startswith("buckling")
+    assert got == to.force_deflection(to.Manipulator.uniform(4), np.linspace(0.0, 4.0, 81)).to_dict()
 
 
 def test_stiffness(client):
@@ -329,6 +359,7 @@ def test_readyz_before_startup():
     assert r.status_code == 503 and r.json()["status"] == "starting"
 
 
+@pytest.mark.slow
 def test_warmup_then_ready():
     with make_client(warmup=True, workers=1) as c:
         assert c.get("/readyz").json()["status"] == "ready"
@@ -347,6 +378,7 @@ def test_metrics(client):
     assert "tensegrity_solver_pool_in_flight" in text
 
 
+@pytest.mark.slow
 def test_docs_offline(client):
     r = client.get("/docs")
     assert r.status_code == 200
@@ -423,6 +455,7 @@ def test_straight_unstable(client):
     check_error(r, 422, "straight_unstable", "manipulator.segments[1].L0")
 
 
+@pytest.mark.slow
 def test_too_many_segments(client):
     # The schema's cap is the default limit (200): above it the document itself refuses the body.
     r = client.post("/v1/equilibrium", json={"manipulator": {"n": 201}, "dx": 0.1})
@@ -438,11 +471,12 @@ def test_too_many_segments(client):
         assert r.status_code == 200
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [150, 500, 10**9, 1e9])
 def test_too_many_segments_names_the_real_limit_for_every_n(n):
-    """Issue 18: on a server set below the schema's cap (TENSEGRITY_MAX_SEGMENTS=100), n = 150 was refused
-    with "at most 100" but n = 500 or 1e9 with the schema's "<= 200": every length over the setting is now
-    the server's own ``too_many_segments``, naming its limit; a job's n values too."""
+    """On a server set below the schema's cap (TENSEGRITY_MAX_SEGMENTS=100) every length over the setting (150,
+    500, 1e9: over the schema's "<= 200" too) is the server's own ``too_many_segments``, naming its limit, not the
+    schema's refusal; a job's n values too."""
     with make_client(max_segments=100) as c:
         r = c.post("/v1/equilibrium", json={"manipulator": {"n": n}, "dx": 0.1})
         body = check_error(r, 422, "too_many_segments", "manipulator.n")
@@ -473,6 +507,7 @@ def test_batch_too_large():
         check_error(r, 422, "batch_too_large", "targets")
 
 
+@pytest.mark.slow
 def test_solver_failure_carries_status(client):
     m = to.Manipulator.uniform(4)
     with pytest.raises(to.SolverError) as info:
@@ -496,18 +531,27 @@ def test_q0_of_wrong_length(client):
 
 
 # ---------------------------------------------------------------------------- 504, 503, 413, 401, CORS, 404
-def test_timeout_504_and_recovery():
-    with make_client(solve_timeout=0.05, workers=1) as c:
-        # n = 150 takes seconds (building the solvers alone takes longer than the limit)
-        r = c.post("/v1/equilibria", json={"manipulator": {"n": 150}, "dx": 0.1})
+def _works_for_ten_minutes(req, *args, **kwargs):
+    """A stand-in for a search that runs far beyond any limit: pure Python (interruptible between bytecodes)."""
+    end = time.monotonic() + 600.0
+    while time.monotonic() < end:
+        pass
+
+
+@pytest.mark.slow
+def test_timeout_504_and_recovery(monkeypatch):
+    from service.api.routes import equilibrium as routes
+
+    monkeypatch.setattr(routes, "equilibria_task", _works_for_ten_minutes)
+    with make_client(solve_timeout=0.5, workers=1) as c:
+        r = c.post("/v1/equilibria", json={"manipulator": {"n": 4}, "dx": 0.1})
         check_error(r, 504, "timeout")
         pool = c.app.state.executors.threads
-        deadline = time.monotonic() + 10
+        deadline = time.monotonic() + 300          # far less than the stand-in's ten minutes
         while pool.in_flight and time.monotonic() < deadline:
             time.sleep(0.01)
         assert pool.in_flight == 0            # the abandoned solve was interrupted, the worker is free
         assert 'tensegrity_solver_failures_total{code="timeout"} 1.0' in c.get("/metrics").text
-    with make_client(solve_timeout=30, workers=1) as c:   # a normal limit: the same request succeeds
         assert c.post("/v1/segment/torque", json={"segment": {"a": 1, "b": 1}, "q": [0.0]}).status_code == 200
 
 
@@ -581,7 +625,7 @@ def test_unknown_path_and_method(client):
     check_error(client.get("/v1/equilibrium"), 405, "method_not_allowed")
 
 
-# ---------------------------------------------------------------------------- response size (issue 14 item 3)
+# ---------------------------------------------------------------------------- response size
 def test_response_size_limit_is_estimated_before_solving():
     with make_client(max_response_bytes=20000) as c:
         body = {"manipulator": PAPER, "dx": {"start": 0.0, "stop": 0.5, "num": 301}}
@@ -635,7 +679,7 @@ def test_bounded_rendering_gives_the_same_bytes():
     assert isinstance(info.value, ValueError) and info.value.field == "dx"
 
 
-# ---------------------------------------------------------------------------- the contract (issue 14 item 7)
+# ---------------------------------------------------------------------------- the contract
 def test_integral_floats_are_the_integers_the_schema_allows(client):
     # JSON Schema's "integer" is any number with a zero fractional part: 4.0 and 5.0 are valid
     r = client.post("/v1/equilibrium", json={"manipulator": {"n": 4.0}, "dx": 0.1})
@@ -751,7 +795,7 @@ def test_batch_bad_q0_refuses_the_request(client):
 
 
 def test_batch_time_limit_marks_remaining_targets():
-    with make_client(batch_timeout=0.001, solve_timeout=30) as c:
+    with make_client(batch_timeout=0.001) as c:           # the first target alone takes longer
         targets = [{"dx": 0.05 * (i + 1)} for i in range(5)]
         r = c.post("/v1/batch/equilibrium", json={"manipulator": PAPER, "targets": targets})
         assert r.status_code == 200, r.text
@@ -777,6 +821,7 @@ def test_malformed_bodies_are_422(client, content, ctype):
     check_error(r, 422, "validation_error", "body")
 
 
+@pytest.mark.slow
 def test_inline_fast_path_answers_like_the_workers():
     """Short monotonic chains are solved in the solver process; the answer equals the worker path's, and
     what the fast path does not settle (bistable segments) goes to the workers."""
@@ -819,3 +864,32 @@ def test_local_equilibrium_follows_the_branch_through_q0(client):
     assert r.status_code == 200 and r.json()["kind"] == "saddle" and r.json()["stable"] is False
     check_error(client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.1, "local": True}),
                 422, "invalid_parameter", "q0")
+
+
+def test_service_maps_time_limit_to_504_with_status():
+    from service.api.errors import error_body, status_for
+
+    exc = to.TimeLimitError("stopped", status="User_Requested_Stop")
+    assert status_for(exc) == 504
+    body = error_body(exc)
+    assert body["code"] == "timeout" and body["status"] == "User_Requested_Stop"
+
+
+def test_config_docstring_lists_every_setting():
+    from service import config
+
+    documented = set(re.findall(r"``TENSEGRITY_([A-Z_]+)``", config.__doc__))
+    fields = {name.upper() for name in config.Settings.model_fields}
+    assert fields <= documented, f"undocumented settings: {sorted(fields - documented)}"
+
+
+@pytest.mark.slow
+def test_the_iterations_of_a_point_the_rootfinder_continued_are_null():
+    """``iterations`` is ``None`` (JSON null) where the solver did not count them (the rootfinder's continuation
+    of a chain of more than 8 segments), and the schema says so; never -1."""
+    from service.schemas.common import SolverInfo
+
+    res = to.solve_equilibria_batch(to.Manipulator.uniform(12), [(0.1 + 0.01 * i, 0.0) for i in range(4)])
+    body = next(r.to_dict()["solver"] for r in res[1:] if r.solver.iterations is None)
+    assert body["iterations"] is None and SolverInfo(**body).iterations is None
+    assert "null: not counted" in SolverInfo.model_fields["iterations"].description

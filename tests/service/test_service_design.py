@@ -8,18 +8,19 @@ from fastapi.testclient import TestClient
 from pytest import approx
 
 import tensegrity_opt as to
-from service.config import Settings
 from service.main import create_app
+from service_helpers import service_settings
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 
 
 @pytest.fixture(scope="module")
 def client():
-    with TestClient(create_app(Settings(warmup=False))) as c:
+    with TestClient(create_app(service_settings())) as c:
         yield c
 
 
+@pytest.mark.slow
 def test_critical_force_design_equals_library(client):
     body = {"manipulator": PAPER, "vary": ["k"], "bounds": {"k": {"lo": 0.2, "hi": 5.0}}, "budget": {"k": 4.0}}
     r = client.post("/v1/design/critical-force", json=body)
@@ -38,6 +39,7 @@ def test_critical_force_design_equals_library(client):
     assert to.critical_force(m).force == approx(got["critical_force"], rel=1e-9)
 
 
+@pytest.mark.slow
 def test_total_length_design(client):
     body = {"manipulator": {"n": 6}, "vary": ["b"], "bounds": {"b": {"lo": 0.3, "hi": 3.0}}, "total_length": True}
     got = client.post("/v1/design/critical-force", json=body).json()
@@ -45,6 +47,7 @@ def test_total_length_design(client):
     assert 2 * sum(sg["b"] for sg in got["manipulator"]["segments"]) == approx(12.0, abs=1e-7)
 
 
+@pytest.mark.slow
 def test_preloads_for_load(client):
     r = client.post("/v1/design/preloads-for-load", json={"manipulator": PAPER, "required": 0.7})
     assert r.status_code == 200, r.text

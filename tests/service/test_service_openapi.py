@@ -24,6 +24,7 @@ def test_committed_spec_is_current():
     assert SPEC.read_text(encoding="utf-8") == openapi_json(), f"openapi/openapi.json is stale; {REGENERATE}"
 
 
+@pytest.mark.slow
 def test_cli_prints_the_spec(monkeypatch):
     env = {k: v for k, v in os.environ.items() if not k.startswith("TENSEGRITY_")}
     env["TENSEGRITY_MAX_SEGMENTS"] = "7"          # settings never change the document

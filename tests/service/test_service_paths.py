@@ -3,15 +3,12 @@ stability boundaries and their figures.
 
 Every body is the library's ``to_dict()`` for the same input, rendered by the service's one renderer (the
 service calls the same functions in a solver thread); the refusals are 422 with the field named, never a
-500. The tests of ``/v1/rest-configurations``, of ``start: null`` (the rest configuration) and of
-``/v1/stability-boundary`` run once ``analyses/rest.py`` and ``analyses/boundaries.py`` are in the
-library; before, those endpoints answer 422 ``unsupported`` (checked).
+500.
 """
 
 from __future__ import annotations
 
 import json
-import warnings
 
 import numpy as np
 import pytest
@@ -19,21 +16,17 @@ import pytest
 pytest.importorskip("fastapi")
 pytest.importorskip("httpx")
 
-with warnings.catch_warnings():
-    warnings.simplefilter("ignore")
-    from fastapi.testclient import TestClient
+from clocks import tick_clock
+from service_helpers import app_client, body_of, check_error, post_ok
 
 import tensegrity_opt as to
 from service import schemas as s
-from service.config import Settings
-from service.main import create_app
-from service.responses import render_json
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 M = to.Manipulator.uniform(4, 1.0, 1.0, 1.0, 1.0)
 STRAIGHT = {"q": [0.0, 0.0, 0.0, 0.0]}
 GUIDED = {"kind": "guided", "direction": [-1.0, 0.0]}
-GUIDED_LOADS = (0.572793, 1.362906, 1.921444)           # conventions.md
+GUIDED_LOADS = (0.572793, 1.362906, 1.921444)           # docs/model.md
 PRE_BENT = {"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.0, 1.02]}] + [{"a": 1.0, "b": 1.0, "k": 1.0,
                                                                                   "L0": 1.0}] * 3}
 M_PRE_BENT = to.Manipulator.from_dict(PRE_BENT)
@@ -41,28 +34,8 @@ M_PRE_BENT = to.Manipulator.from_dict(PRE_BENT)
 
 @pytest.fixture(scope="module")
 def client():
-    with TestClient(create_app(Settings(warmup=False))) as c:
+    with app_client() as c:
         yield c
-
-
-def body_of(result) -> dict:
-    """The library's JSON form as the service renders it."""
-    return json.loads(render_json(result))
-
-
-def post_ok(client, path, body) -> dict:
-    r = client.post(path, json=body)
-    assert r.status_code == 200, r.text
-    return r.json()
-
-
-def check_error(r, code, field=None):
-    assert r.status_code == 422, r.text
-    b = r.json()
-    assert b["code"] == code, b
-    if field is not None:
-        assert b.get("field") == field, b
-    return b
 
 
 # ---------------------------------------------------------------------------- bodies = the library's
@@ -196,6 +169,7 @@ def test_schema_refusals_name_the_field(client):
         check_error(client.post(path, json=body), "validation_error", field)
 
 
+@pytest.mark.slow
 def test_domain_refusals_name_the_field(client):
     base = {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED}
     long = {"manipulator": {"n": 100}, "start": {"q": [0.0] * 100}, "control": GUIDED}
@@ -232,6 +206,7 @@ def test_domain_refusals_name_the_field(client):
         check_error(client.post(path, json=body), code, field)
 
 
+@pytest.mark.slow
 def test_odd_inputs_are_answers_not_server_errors(client):
     base = {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED, "max_points": 60}
     for extra in [{"t_max": 0.0}, {"t_max": -1.0}, {"t_min": 1.0, "t_max": 0.5}, {"orientation": -1},
@@ -251,24 +226,28 @@ def test_odd_inputs_are_answers_not_server_errors(client):
         assert r.status_code in (200, 422), (body, r.text)
 
 
+@pytest.mark.slow
 def test_the_server_limits(client):
     limits = client.get("/version").json()["limits"]
     assert limits["max_path_points"] == 5000
-    with TestClient(create_app(Settings(warmup=False, max_path_points=100))) as c:
+    with app_client(max_path_points=100) as c:
         b = check_error(c.post("/v1/branch", json={"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED,
                                                    "max_points": 101}), "too_many_points", "max_points")
         assert b["details"] == {"max_points": 101, "max_path_points": 100}
         check_error(c.post("/v1/plots/limit-load", json={"manipulator": PAPER}), "too_many_points", "max_points")
         assert c.get("/version").json()["limits"]["max_path_points"] == 100
-    with TestClient(create_app(Settings(warmup=False, max_response_bytes=4096))) as c:
+    with app_client(max_response_bytes=4096) as c:
         check_error(c.post("/v1/branch", json={"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED,
                                                "t_max": 2.0}), "response_too_large", "max_points")
 
 
-def test_the_time_limit_answers_the_points_so_far(client):
-    """A branch longer than the time limit allows: 200 with the points computed and status time_limit, not 504."""
-    with TestClient(create_app(Settings(warmup=False, solve_timeout=1.0))) as c:
-        # a chain beyond the C kernels (~1 ms a point: ~500 points fit in the limit, measured), never 5000
+@pytest.mark.slow
+def test_the_time_limit_answers_the_points_so_far(monkeypatch):
+    """A branch longer than the time limit allows: 200 with the points computed and status time_limit, not 504.
+    The library's clock moves on 1 s at every reading, once a point (tests/support/clocks.py): the soft deadline
+    (270 s of the 300 s limit) runs out some 270 points in, of 5000, on any machine."""
+    tick_clock(monkeypatch, step=1.0)
+    with app_client() as c:
         body = {"manipulator": {"n": 20}, "start": {"q": [0.0] * 20}, "control": GUIDED, "max_points": 5000}
         got = post_ok(c, "/v1/branch", body)
         assert got["status"] == "time_limit" and got["success"] is False and 2 <= got["points"] < 5000
@@ -278,6 +257,7 @@ def test_the_time_limit_answers_the_points_so_far(client):
 
 
 # ---------------------------------------------------------------------------- figures
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("path,body", [
     ("/v1/plots/branch", {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED, "t_max": 2.0, "y": "fy"}),
     ("/v1/plots/branch", {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED, "t_max": 2.0, "depth": 1,

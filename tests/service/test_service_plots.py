@@ -19,10 +19,10 @@ def client():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         from fastapi.testclient import TestClient
-    from service.config import Settings
     from service.main import create_app
+    from service_helpers import service_settings
 
-    app = create_app(Settings(warmup=False))        # service.main registers the plot routes
+    app = create_app(service_settings())        # service.main registers the plot routes
     assert app.url_path_for("plot_curve") == "/v1/plots/curve"
     with TestClient(app) as c:
         yield c
@@ -39,6 +39,7 @@ BODIES = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("kind", list(BODIES))
 def test_api_answers_png_and_svg(client, kind):
     r = client.post(f"/v1/plots/{kind}", json={**BODIES[kind], "dpi": 40})
@@ -50,6 +51,7 @@ def test_api_answers_png_and_svg(client, kind):
     check_svg(r.content)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("kind", ["curve", "torque"])
 def test_api_svg_is_byte_identical_between_identical_requests(client, kind):
     # matplotlib salts clip-path ids with a random UUID unless svg.hashsalt is set
@@ -60,6 +62,7 @@ def test_api_svg_is_byte_identical_between_identical_requests(client, kind):
     assert first.content == second.content
 
 
+@pytest.mark.slow
 def test_api_content_negotiation(client):
     body = BODIES["torque"]
     r = client.post("/v1/plots/torque", json=body, headers={"Accept": "image/svg+xml"})

@@ -1,7 +1,7 @@
-"""Validate before solving; an internal failure is a bug answered with 500, never a 422 (issue 14, item 6).
+"""Validate before solving; an internal failure is a bug answered with 500, never a 422.
 
-Each case below reached numpy, scipy or CasADi with an input the library should have refused, and
-came back as 422 ``numerical_failure`` carrying the solver's own message.
+Each case below is an input the library refuses before it reaches numpy, scipy or CasADi (whose own message,
+as a 422 ``numerical_failure``, would name no field).
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ from fastapi.testclient import TestClient
 
 import tensegrity_opt as to
 from service.tasks import equilibria as compute
-from service.config import Settings
 from service.main import create_app
+from service_helpers import service_settings
 from tensegrity_opt.errors import InvalidParameterError, UnreachableTargetError
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
@@ -21,12 +21,13 @@ PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 
 @pytest.fixture(scope="module")
 def client():
-    with TestClient(create_app(Settings(warmup=False, inline_processes=0)), raise_server_exceptions=False) as c:
+    with TestClient(create_app(service_settings(inline_processes=0)), raise_server_exceptions=False) as c:
         yield c
 
 
+@pytest.mark.slow
 def test_preloads_for_one_segment_is_refused_before_the_nlp(client):
-    # was: 422 numerical_failure "Input 4 (lbg) has mismatching shape" (CasADi), for a reachable target
+    # a reachable target; CasADi would stop at "Input 4 (lbg) has mismatching shape"
     x, y = 1 + np.cos(0.3), np.sin(0.3)
     with pytest.raises(InvalidParameterError) as e:
         to.preloads_for_pose(to.Manipulator.uniform(1), (x, y))
@@ -36,8 +37,9 @@ def test_preloads_for_one_segment_is_refused_before_the_nlp(client):
     assert r.json()["field"] == "manipulator.n"
 
 
+@pytest.mark.slow
 def test_tension_bounds_in_the_wrong_order_name_the_field(client):
-    # was: IPOPT's assertion "lb <= ub" as numerical_failure
+    # IPOPT would stop at its assertion "lb <= ub"
     with pytest.raises(InvalidParameterError) as e:
         to.maximize_critical_force(to.Manipulator.uniform(4), vary=("k",), tension=(5.0, 1.0))
     assert e.value.field == "tension"
@@ -46,9 +48,10 @@ def test_tension_bounds_in_the_wrong_order_name_the_field(client):
     assert r.status_code == 422 and r.json()["code"] == "invalid_parameter" and r.json()["field"] == "tension", r.text
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("load", [{"fx": 0.0, "fy": 1e12}, {"fx": 0.0, "fy": -1e12}, {"fx": 1e12, "fy": 1e12}])
 def test_huge_loads_on_preloads_are_answered(client, load):
-    # was: numpy LinAlgError "Matrix is not positive definite" (an absolute 1e-6 floor under 1e12 entries)
+    # an absolute floor (1e-6) under entries of 1e12 would make numpy raise "Matrix is not positive definite"
     r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 7.0, "y": 1.5}, "load": load})
     assert r.status_code in (200, 422), r.text
     if r.status_code == 422:

@@ -21,7 +21,7 @@ from fastapi.testclient import TestClient  # noqa: E402
 from starlette.exceptions import HTTPException  # noqa: E402
 from starlette.routing import NoMatchFound  # noqa: E402
 
-from service.config import Settings  # noqa: E402
+from service_helpers import service_settings  # noqa: E402
 from service.main import create_app, openapi_document  # noqa: E402
 from service.api.routes import web  # noqa: E402
 
@@ -36,7 +36,7 @@ def _has_page(app) -> bool:
 
 def _app(include: bool = True):
     """The service's app (``service.main`` registers the page's router)."""
-    app = create_app(Settings(warmup=False))
+    app = create_app(service_settings())
     assert _has_page(app)
     return app
 
@@ -131,6 +131,7 @@ def test_asset_route_refuses_paths_even_unnormalised(asset):
     assert exc.value.status_code == 404
 
 
+@pytest.mark.slow
 def test_page_routes_are_not_in_the_openapi_document():
     doc = _app(True).openapi()
     assert "/" not in doc["paths"] and not any(p.startswith("/web") for p in doc["paths"])
@@ -166,7 +167,7 @@ def _asset(name: str) -> str:
 
 
 def test_assets_are_ascii_and_css_content_has_no_glyphs():
-    """Characters a system font may lack (the old busy glyph U+23F3 rendered as a box in Debian's Chromium) are
+    """Characters a system font may lack (a busy glyph such as U+23F3 renders as a box in Debian's Chromium) are
     kept out: every asset is ASCII (HTML entities and JS escapes for punctuation), and a CSS ``content`` is
     plain text without escapes; the busy indicator is a CSS animation."""
     for name in web.ASSETS:

@@ -1,7 +1,7 @@
 """Independent references for the workspace stability atlas (held tip, displacement control).
 
-Imports numpy, scipy, ``tests/reference_model.py`` and ``tests/reference_paths.py`` only -- NOT
-``tensegrity_opt``. Conventions (shared/spec/conventions.md): relative joint angles ``q``; the tip held
+Imports numpy, scipy, ``tests/support/reference_model.py`` and ``tests/support/reference_paths.py`` only -- NOT
+``tensegrity_opt``. Conventions (``docs/model.md``): relative joint angles ``q``; the tip held
 at ``(2 sum b - dx, dy)``; an equilibrium solves ``grad E = J^T F``, ``tip(q) = target``; it is stable
 when the Hessian of ``E - F . tip`` reduced to the null space of ``J`` is positive definite; only
 configurations strictly inside the physical range ``|q_i| < pi - 2 beta_i`` count.
@@ -255,26 +255,7 @@ class _System(RP.PathSystem):
     ``xtol = 1e-9`` and leaves the last digits to the Newton polish (fewer residual evaluations; the same
     acceptance test, residual below ``tol`` of the torque scale)."""
 
-    def solve(self, z0, t, tol=1e-11):
-        f = lambda z: self.residual(z, t)
-        try:
-            z = so.root(f, np.asarray(z0, float), jac=lambda z: self.jac_z(z, t), method="hybr",
-                        options={"xtol": 1e-9, "maxfev": 400}).x
-        except (ValueError, np.linalg.LinAlgError, FloatingPointError):
-            return np.asarray(z0, float), False
-        for _ in range(4):
-            r = f(z)
-            if not np.all(np.isfinite(r)):
-                return z, False
-            if np.max(np.abs(r)) < 1e-14 * self.scale:
-                break
-            try:
-                z = z - np.linalg.solve(self.jac_z(z, t), r)
-            except np.linalg.LinAlgError:
-                break
-        r = f(z)
-        ok = bool(np.all(np.isfinite(z)) and np.all(np.isfinite(r)) and np.max(np.abs(r)) < tol * self.scale)
-        return z, ok
+    XTOL = 1e-9
 
 
 @dataclass
@@ -325,7 +306,8 @@ def follow_branch(chain: Chain, q0, a_point, b_point, side="A", steps=8, t_tol=1
     ``side="B"``) along the segment by natural-parameter steps (``reference_paths._step``: scipy root on
     the KKT system from a tangent predictor, rejecting jumps, kinks and points outside the range), a step
     also rejected when the smallest reduced eigenvalue is not positive; a rejected step is halved (a
-    bisection of the stability loss) until it is below ``t_tol`` of the length (the extended system does the rest), and the branch stops there."""
+    bisection of the stability loss) until it is below ``t_tol`` of the length (the extended system does the rest),
+    and the branch stops there."""
     a, b = np.asarray(a_point, float), np.asarray(b_point, float)
     vec = b - a
     L = float(np.linalg.norm(vec))
@@ -581,7 +563,8 @@ def edge_reference(chain: Chain, a_point, b_point, stable_A, stable_B, *, tie_to
     branch that does not arrive gives a fold (:func:`edge_fold`'s extended route); the least-energy branch's
     continuity and, when it does not continue, the switch: the Maxwell point of the least equilibria at
     both ends (:func:`maxwell_point`) or, when their energies are never equal while both are stable, the
-    end of A's least branch (else the end, seen from B, of B's least one). ``tie_tol`` is relative to the energy scale ``max k1 (sum rest lengths)^2``.
+    end of A's least branch (else the end, seen from B, of B's least one). ``tie_tol`` is relative to the energy
+    scale ``max k1 (sum rest lengths)^2``.
     Raises when a branch arrives stable at an end at no brute-force equilibrium (the brute force missed
     one). ``limit_margin``: the branches are followed in the range narrowed by this relative margin (a
     joint-limit end at ``|q_k| = (1 - margin)(pi - 2 beta_k)``)."""

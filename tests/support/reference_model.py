@@ -1,11 +1,11 @@
 """Independent reference model of a serial chain of dual-triangle tensegrity segments.
 
-Written from ``shared/spec/conventions.md`` only; it does NOT import ``tensegrity_opt``.
+Written from ``docs/model.md`` only; it does NOT import ``tensegrity_opt``.
 Everything is in the relative joint angles ``q`` (the library works in absolute
 angles with CasADi), with hand-derived analytic derivatives, plus finite
 differences where an extra independent route is wanted.
 
-Model (conventions.md):
+Model (``docs/model.md``):
   segment i: a_i, b_i, k1_i, k2_i, L1_0_i, L2_0_i; c = hypot(a, b), beta = atan2(a, b)
   L1 = 2c cos(beta + q/2), L2 = 2c cos(beta - q/2)
   E = sum k1/2 (L1 - L1_0)^2 + k2/2 (L2 - L2_0)^2
@@ -279,7 +279,8 @@ def fd_second_derivs(chain: Chain):
             return (-f(z + 2 * ei) + 16 * f(z + ei) - 30 * f(z) + 16 * f(z - ei) - f(z - 2 * ei)) / (12 * h * h)
         # central mixed difference D(h), Richardson-extrapolated: (4 D(h) - D(2h)) / 3 = O(h^4)
         def D(s):
-            return (f(z + s * (ei + ek)) - f(z + s * (ei - ek)) - f(z - s * (ei - ek)) + f(z - s * (ei + ek))) / (4 * h * h * s * s)
+            return ((f(z + s * (ei + ek)) - f(z + s * (ei - ek)) - f(z - s * (ei - ek)) + f(z - s * (ei + ek)))
+                    / (4 * h * h * s * s))
         return (4 * D(1) - D(2)) / 3
 
     K = np.array([d2(chain.energy, i, i) for i in range(n)])
@@ -400,6 +401,22 @@ def all_force_equilibria(chain: Chain, F, n_starts=500, seed=2, dedupe=1e-6):
     sols = []
     for _ in range(n_starts):
         q, ok = chain.newton_force(F, rng.uniform(-0.98, 0.98, chain.n) * chain.limits)
-        if ok and np.all(np.isfinite(q)) and chain.in_range(q) and not any(np.max(np.abs(q - s)) < dedupe for s in sols):
+        if ok and np.all(np.isfinite(q)) and chain.in_range(q) \
+                and not any(np.max(np.abs(q - s)) < dedupe for s in sols):
             sols.append(q)
     return sols
+
+
+def tip_stiffness_fd(chain: Chain, target, q, F, h: float, max_move: float) -> np.ndarray:
+    """``dF/d(tip)`` by central differences: the force holding the tip at ``target +- h e_j``, each found by
+    Newton from the equilibrium ``(q, F)`` at ``target``, which it must not leave by more than ``max_move``."""
+    target = np.asarray(target, float)
+    K = np.zeros((2, 2))
+    for j in range(2):
+        e = np.zeros(2)
+        e[j] = h
+        qp, Fp, okp = chain.newton_kkt(target + e, q, F)
+        qm, Fm, okm = chain.newton_kkt(target - e, q, F)
+        assert okp and okm and np.abs(qp - q).max() < max_move and np.abs(qm - q).max() < max_move
+        K[:, j] = (Fp - Fm) / (2 * h)
+    return K

@@ -1,7 +1,7 @@
-"""Independent reference computations for equilibrium paths and limit points (issue 16).
+"""Independent reference computations for equilibrium paths and limit points.
 
-Imports numpy, scipy and ``tests/reference_model.py`` only -- NOT ``tensegrity_opt``.
-Written from ``shared/spec/conventions.md`` ("Loading paths and limit points"):
+Imports numpy, scipy and ``tests/support/reference_model.py`` only -- NOT ``tensegrity_opt``.
+Written from ``docs/model.md`` ("Loading paths and limit points"):
 
 * relative joint angles ``q``; equilibrium ``grad E(q) = J(q)^T F`` with ``F`` the tip force
   that holds the chain; dead load ``F = base + t d`` (``d`` a unit vector, ``t`` the load).
@@ -39,7 +39,7 @@ Routes used here (independent of any continuation code):
 * :func:`energy_integral` -- ``int F . dtip`` along a displacement branch, refined on the
   reference between the given points.
 
-Findings (see tests/test_reference_paths.py): the paper chain's pitchforks are supercritical
+Findings (see tests/support/test_reference_paths.py): the paper chain's pitchforks are supercritical
 both guided and free (the bent branch carries more load and is stable); a pre-bent arm
 (every L1_0 0.1 shorter) under free compression has a smooth path, stable up to the joint
 range (quasi-buckling), while guided it snaps at a fold (n = 3: t = 0.825957) at large
@@ -65,7 +65,8 @@ __all__ = [
     "Chain", "lagrangian_hess", "PathSystem", "PathResult", "LimitResult", "unit",
     "load_path", "limit_load_reference", "solve_extended", "classify_singular_point",
     "fold_by_coordinate", "coordinate_path", "fold_in_displacement", "displacement_path",
-    "buckling_modes", "single_segment_curve", "single_segment_folds", "post_buckling", "rest_configuration", "segment_wells",
+    "buckling_modes", "single_segment_curve", "single_segment_folds", "post_buckling", "rest_configuration",
+    "segment_wells",
     "equilibrium_residual", "smallest_eigenvalue", "morse_index", "energy_integral",
     "bistable_segment", "pre_bent_chain", "bistable_chain",
 ]
@@ -98,6 +99,9 @@ def lagrangian_hess(chain: Chain, q, F):
 class PathSystem:
     """``R(z, t) = 0`` for one control of ``chain`` starting at ``q_start`` (``t = 0`` there
     for the displacement control; the load controls use ``F = base + t d`` absolutely)."""
+
+    #: scipy ``hybr``'s ``xtol`` before the Newton polish.
+    XTOL = 1e-14
 
     def __init__(self, chain: Chain, q_start, direction, boundary="free", base=(0.0, 0.0)):
         if boundary not in BOUNDARIES:
@@ -152,13 +156,16 @@ class PathSystem:
             return np.concatenate([g, [tip[1] - self.tip0[1]]])
         return np.concatenate([g, tip - (self.tip0 + t * self.w)])
 
-    def jac_z(self, z, t):
-        c = self.chain
+    def _hessian(self, z, t):
+        """The Hessian of ``E - F . tip`` at ``z`` and, for the held controls, the tip Jacobian (else ``None``)."""
         q, F = self.split(z, t)
-        H = lagrangian_hess(c, q, F)
-        if self.boundary == "free":
+        H = lagrangian_hess(self.chain, q, F)
+        return H, None if self.boundary == "free" else self.chain.jac(q)
+
+    def jac_z(self, z, t):
+        H, J = self._hessian(z, t)
+        if J is None:
             return H
-        J = c.jac(q)
         n = self.n
         A = np.zeros((self.m, self.m))
         A[:n, :n] = H
@@ -187,12 +194,9 @@ class PathSystem:
 
     # ---------------------------------------------------------------- stability
     def reduced_hessian(self, z, t):
-        c = self.chain
-        q, F = self.split(z, t)
-        H = lagrangian_hess(c, q, F)
-        if self.boundary == "free":
+        H, J = self._hessian(z, t)
+        if J is None:
             return H
-        J = c.jac(q)
         Z = sla.null_space(J[1][None, :]) if self.boundary == "guided" else sla.null_space(J)
         return Z.T @ H @ Z
 
@@ -213,7 +217,7 @@ class PathSystem:
         f = lambda z: self.residual(z, t)
         try:
             sol = so.root(f, np.asarray(z0, float), jac=lambda z: self.jac_z(z, t), method="hybr",
-                          options={"xtol": 1e-14, "maxfev": 400})
+                          options={"xtol": self.XTOL, "maxfev": 400})
             z = sol.x
         except (ValueError, np.linalg.LinAlgError, FloatingPointError):
             return np.asarray(z0, float), False
@@ -544,7 +548,8 @@ def coordinate_path(system: PathSystem, z_start, t_start, k, qk_grid):
             status = "no_convergence"
             break
         zz = np.insert(x_new[:-1], k, p)
-        if np.max(np.abs(f(x_new))) > 1e-10 * system.scale or np.max(np.abs(zz[:system.n] - np.insert(x[:-1], k, p)[:system.n])) > 0.25:
+        moved = np.max(np.abs(zz[:system.n] - np.insert(x[:-1], k, p)[:system.n]))
+        if np.max(np.abs(f(x_new))) > 1e-10 * system.scale or moved > 0.25:
             status = "no_convergence"
             break
         if not system.in_range(zz, x_new[-1]):

@@ -1,8 +1,6 @@
-"""The service's serialisers as they were before every result got its ``to_dict()`` (issue 15),
-frozen here as the independent reference: ``tests/test_serialisation.py`` checks each ``to_dict``
-against these hand-written dicts (same keys, order, types), so the switch of ``service/compute.py``
-to ``to_dict`` cannot change an API body unnoticed. Copied verbatim from ``service/compute.py`` at
-4cab790 (the dict-building bodies of its ``*_job`` functions become functions of the result here).
+"""Hand-written serialisers, one per result type: the independent reference the results' ``to_dict()`` are
+checked against (``tests/service/test_serialisation.py``: the same keys, order and types), so that no API body
+changes unnoticed. Each builds its dict key by key from the result's attributes.
 """
 
 from __future__ import annotations
@@ -37,7 +35,7 @@ def _f(x: Any) -> float | None:
 
 
 def outcome(r) -> dict[str, Any]:
-    """The result contract's three fields (added to every body after this reference was frozen)."""
+    """The result contract's three fields (every body carries them first)."""
     return {"success": bool(r.success), "status": str(r.status), "message": str(r.message)}
 
 

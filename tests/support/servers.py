@@ -11,6 +11,14 @@ import time
 from collections.abc import Iterator, Sequence
 from contextlib import contextmanager
 
+#: How long a test waits for what must happen (a server ready, an answer): the wait ends as soon as it happens, so
+#: only a machine many times slower than a quiet one comes near it.
+WAIT_SECONDS = 600.0
+#: The time limits of a server that is expected to answer: far beyond what any request of the tests takes quiet (a
+#: few seconds), so that a loaded machine answers too (at the default 10 s it answers 504).
+GENEROUS_SECONDS = 300.0
+GENEROUS_ENV = {"TENSEGRITY_SOLVE_TIMEOUT": str(GENEROUS_SECONDS), "TENSEGRITY_BATCH_TIMEOUT": str(GENEROUS_SECONDS)}
+
 
 def free_port() -> int:
     with socket.socket(socket.AF_INET, socket.SOCK_STREAM) as s:
@@ -38,7 +46,7 @@ def clean_env(**settings: str) -> dict[str, str]:
     return env
 
 
-def wait_ready(proc: subprocess.Popen, base: str, path: str = "/healthz", timeout: float = 60.0,
+def wait_ready(proc: subprocess.Popen, base: str, path: str = "/healthz", timeout: float = WAIT_SECONDS,
                log=None) -> None:
     """Poll ``base + path`` until it answers 200; fail with the server's output if it exits."""
     import httpx
@@ -49,7 +57,7 @@ def wait_ready(proc: subprocess.Popen, base: str, path: str = "/healthz", timeou
             out = log() if callable(log) else (proc.stdout.read().decode(errors="replace") if proc.stdout else "")
             raise AssertionError(f"server exited with {proc.returncode}: {out}")
         try:
-            if httpx.get(base + path, timeout=2).status_code == 200:
+            if httpx.get(base + path, timeout=10).status_code == 200:
                 return
         except httpx.TransportError:
             pass
@@ -70,7 +78,7 @@ def stop(proc: subprocess.Popen, grace: float = 15.0) -> None:
 
 
 @contextmanager
-def running_server(cmd: Sequence[str], env: dict[str, str], *, ready: str = "/healthz", timeout: float = 60.0,
+def running_server(cmd: Sequence[str], env: dict[str, str], *, ready: str = "/healthz", timeout: float = WAIT_SECONDS,
                    cwd=None, stdout=subprocess.PIPE) -> Iterator[tuple[subprocess.Popen, str]]:
     """Start ``cmd`` (its ``--port`` is the last port argument), wait until ready, stop it on exit."""
     port = cmd[list(cmd).index("--port") + 1]

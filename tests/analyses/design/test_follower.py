@@ -63,6 +63,7 @@ def reference_answers(segments, commands, loads, q_start, snap_distance=0.2):
     return out
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("name, segments, commands, loads", [
     ("bistable", BISTABLE_SEGMENTS, [[[1 + d, 1 - d], [1.0, 1.0]] for d in np.linspace(0.0, 0.5, 26)],
      [(0.0, 0.0)] * 25 + [(0.0, 0.01)]),

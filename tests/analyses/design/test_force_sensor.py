@@ -169,6 +169,7 @@ def _close_cov(emp, C, tol=0.1):
     return bool(np.all(np.abs(emp - C) <= tol * np.outer(s, s)))
 
 
+@pytest.mark.slow
 def test_coverage_of_the_stated_covariance_and_the_chi2_null_distribution():
     m, F = PAPER5, np.array([-0.15, 0.25])
     q = equilibrium_under(m, F)
@@ -183,6 +184,7 @@ def test_coverage_of_the_stated_covariance_and_the_chi2_null_distribution():
     assert np.all(np.abs(Fs.mean(axis=0) - F) < 0.1 * np.sqrt(np.diag(CF)))   # bias << noise
 
 
+@pytest.mark.slow
 def test_coverage_with_per_joint_and_correlated_noise():
     m, F = HETERO, np.array([0.1, -0.2])
     q = equilibrium_under(m, F)
@@ -198,6 +200,7 @@ def test_coverage_with_per_joint_and_correlated_noise():
         assert abs(chis.mean() - 3.0) < 0.3
 
 
+@pytest.mark.slow
 def test_coverage_with_a_hidden_joint():
     m, F = PAPER5, np.array([-0.15, 0.25])
     q = equilibrium_under(m, F)

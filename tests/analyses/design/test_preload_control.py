@@ -155,6 +155,7 @@ def test_validation_names_the_field():
     assert e.value.field == "end_angle"
 
 
+@pytest.mark.slow
 def test_where_the_least_change_rule_would_snap_the_plan_stays_stable_on_its_branch():
     """A bistable chain's tip pushed along a line: the least-change rest lengths (SLSQP on the reference model,
     step after step) lose stability on the way (the arm would snap); the plan keeps the margin, stable by the

@@ -37,18 +37,9 @@ def ref_chain(m: to.Manipulator, rest_lengths=None) -> R.Chain:
     return R.Chain(m.a.copy(), m.b.copy(), m.k1.copy(), m.k2.copy(), L[:, 0].copy(), L[:, 1].copy())
 
 
-def fd_stiffness(chain: R.Chain, q, F, h=1e-4) -> np.ndarray:
+def fd_stiffness(chain: R.Chain, q, F) -> np.ndarray:
     """``dF/d(tip)`` by central differences: the force holding the tip at ``tip +- h e_j`` (reference Newton)."""
-    tip = chain.tip(q)
-    K = np.zeros((2, 2))
-    for j in range(2):
-        e = np.zeros(2)
-        e[j] = h
-        qp, Fp, okp = chain.newton_kkt(tip + e, q, F)
-        qm, Fm, okm = chain.newton_kkt(tip - e, q, F)
-        assert okp and okm and np.abs(qp - q).max() < 0.01 and np.abs(qm - q).max() < 0.01
-        K[:, j] = (Fp - Fm) / (2 * h)
-    return K
+    return R.tip_stiffness_fd(chain, chain.tip(q), q, F, h=1e-4, max_move=0.01)
 
 
 def check_pose(m: to.Manipulator, d, target, load):

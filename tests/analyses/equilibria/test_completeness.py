@@ -27,7 +27,8 @@ import reference_model as ref
 import tensegrity_opt as to
 from tensegrity_opt.numerics.homotopy import homotopy_available
 
-DATA = json.loads((Path(__file__).resolve().parents[3] / "tests" / "data" / "homotopy_oracle.json").read_text())["cases"]
+ORACLE = Path(__file__).resolve().parents[3] / "tests" / "data" / "homotopy_oracle.json"
+DATA = json.loads(ORACLE.read_text())["cases"]
 SAME = 1e-6
 
 needs_phc = pytest.mark.skipif(not homotopy_available() and os.environ.get("TENSEGRITY_REQUIRE_PHC") != "1",
@@ -70,6 +71,7 @@ def test_oracle_covers_the_families():
         assert not to.Manipulator.from_dict(c["manipulator"]).monotonic
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("case", DATA, ids=_case_id)
 def test_search_finds_every_equilibrium_the_homotopy_finds(case):
     m = to.Manipulator.from_dict(case["manipulator"])
@@ -84,6 +86,7 @@ def test_search_finds_every_equilibrium_the_homotopy_finds(case):
     assert len(got) == len(case["equilibria"])
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("case", [c for c in DATA if any(e["morse_index"] == 0 for e in c["equilibria"])],
                          ids=_case_id)
 def test_solve_equilibrium_is_the_least_energy_stable_one(case):
@@ -107,6 +110,7 @@ def test_bistable_n8_least_energy():
     assert np.min(chain.reduced_eigs(q, F, fd=False)) > 1e-6
 
 
+@pytest.mark.slow
 def test_bistable_n8_least_energy_vs_reference_descent():
     """The reference model's SLSQP from every combination of the segments' wells finds nothing lower."""
     m = to.Manipulator.uniform(8, a=0.6, b=1, k=1, L0=1.2)
@@ -152,6 +156,7 @@ def test_monotonic_n6_maxima_are_found():
         assert _verified_morse(chain, chain.target(0.5), e) == 4
 
 
+@pytest.mark.slow
 @needs_phc
 def test_bistable_n4_least_energy_vs_homotopy():
     """The least-energy stable equilibrium has E = 3.21362, not a higher stable one (3.21975)."""
@@ -166,6 +171,7 @@ def test_bistable_n4_least_energy_vs_homotopy():
     assert cert.energy == pytest.approx(e_min, rel=1e-12)
 
 
+@pytest.mark.slow
 def test_bistable_curve_stays_on_the_least_energy_branch():
     """The curve stays on the least-energy branch (not on a higher one, as 24 points could). At every point the
     curve's energy equals the least stable energy of the reference model's descent from all well patterns."""
@@ -184,6 +190,7 @@ def test_bistable_curve_stays_on_the_least_energy_branch():
 
 
 # ----------------------------------------------------------------------------- the homotopy itself
+@pytest.mark.slow
 @needs_phc
 def test_homotopy_paper_chain_six_equilibria_certified():
     m = to.Manipulator.uniform(4)
@@ -199,6 +206,7 @@ def test_homotopy_paper_chain_six_equilibria_certified():
         assert min(np.max(np.abs(e.q - s.q)) for s in search) < 1e-9
 
 
+@pytest.mark.slow
 @needs_phc
 @pytest.mark.parametrize("seed", range(6))
 def test_homotopy_matches_independent_brute_force(seed):
@@ -394,6 +402,7 @@ def test_polynomial_system_vanishes_at_a_true_equilibrium():
     assert residuals(m, target, wrong[None, :])[0] > 1e-4
 
 
+@pytest.mark.slow
 @needs_phc
 def test_all_branches_include_those_born_inside_the_range():
     """branch="all" on a bistable chain: at sampled points every equilibrium of the certified homotopy
@@ -433,7 +442,7 @@ def test_heterogeneous_n6_every_equilibrium_of_the_homotopy_run():
 
 def test_heterogeneous_n7_least_energy_near_the_joint_limit():
     """benchmarks/search_check.py (independent brute force: SLSQP from 200 random and 64 well starts): the
-    least-energy minimum 7.91557851405 has one joint at 99.8 % of its range; 7.92389775903 was returned."""
+    least-energy minimum 7.91557851405 has one joint at 99.8 % of its range (the next minimum: 7.92389775903)."""
     segs = ((0.6305225993492213, 0.8119186559439603, 0.6118243720533708, 0.5414890527716383),
             (0.6527489530287989, 0.8704110024684791, 1.4277223921299376, 0.6004115568782297),
             (0.7302857171199216, 1.0589459409469888, 0.7118134680567862, 0.9076064103095218),

@@ -47,7 +47,8 @@ def test_conventions_figures_on_U_branch(dx, fy_abs):
     assert abs(eq.fy) == pytest.approx(fy_abs, rel=2e-3)      # printed to 3-4 digits
     assert eq.q[0] > 0                                         # documented tie-break
     assert np.allclose(eq.tip, PAPER.target(dx, 0.0), atol=1e-9)
-    assert eq.status == "converged" and eq.solver.status in ("Newton_Converged", "Solve_Succeeded") and eq.solver.iterations >= 0
+    assert eq.status == "converged" and eq.solver.status in ("Newton_Converged", "Solve_Succeeded")
+    assert eq.solver.iterations >= 0
 
 
 @pytest.mark.parametrize("dx,dy", [(0.05, 0.0), (0.5, 0.0), (0.3, 0.4), (1.5, -0.7)])
@@ -56,6 +57,7 @@ def test_force_from_multipliers_matches_eq8(dx, dy):
     assert np.allclose(eq.force, PAPER.force_from_torques(eq.q), rtol=1e-8, atol=1e-10)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("dx,dy", [(0.1, 0.0), (0.8, 0.3), (2.0, 0.0)])
 def test_global_minimum_matches_energy_method(dx, dy):
     eq = solve_equilibrium(PAPER, dx, dy)
@@ -99,6 +101,7 @@ def test_targets_outside_the_joint_range_workspace():
     assert isinstance(ei.value, RuntimeError) and "joint limit" in ei.value.status
 
 
+@pytest.mark.slow
 def test_nonuniform_chain_energy_method():
     m = Manipulator([Segment(1.0, 1.0, 1.0, 1.0), Segment(0.9, 1.3, 2.0, 1.5),
                      Segment(1.1, 0.8, 0.7, 0.9), Segment(1.0, 1.1, 1.5, (1.2, 1.3))])
@@ -165,6 +168,7 @@ def test_threads_share_nothing():
         assert np.allclose(a, b, atol=1e-10)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("m", [PAPER, Manipulator([Segment(1.0, 1.0, 1.0, 1.0), Segment(0.9, 1.3, 2.0, 1.5),
                                                    Segment(1.1, 0.8, 0.7, 0.9), Segment(1.0, 1.1, 1.5, 1.2),
                                                    Segment(0.8, 0.9, 1.2, 1.1)])])
@@ -187,6 +191,7 @@ def test_newton_seeded_search_agrees_with_ipopt_from_every_seed(m):
                 assert a.stable and b.stable
 
 
+@pytest.mark.slow
 def test_bistable_segments_use_ipopt_descent_too():
     """With K < 0 (condition (4) fails) each segment is bistable and Newton from the seeds often
     lands on saddles only: "auto" must still be at least as good as IPOPT from every seed."""
@@ -265,6 +270,7 @@ _LARGE_DEFLECTION = [
 ]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("rows, dx", _LARGE_DEFLECTION, ids=["n6", "n7"])
 def test_large_deflection_c_shape_is_found(rows, dx):
     """The least energy of the independent reference model (SLSQP from 260 starts) is what the global

@@ -93,6 +93,7 @@ def test_reference_model_self_consistency(name):
 CASES_A = [(g, dx, dy) for g in EXTRA for dx, dy in TARGETS] + [("paper", 0.1, 0.0)]
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name,dx,dy", CASES_A)
 def test_least_energy_equilibrium_matches_multistart_reference(name, dx, dy):
     E_ref, q_ref, F_ref = ref_min(name, dx, dy)
@@ -114,6 +115,7 @@ def test_least_energy_equilibrium_matches_multistart_reference(name, dx, dy):
 
 
 # --------------------------------------------------------------------------- 1b critical loads
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ALL)
 def test_guided_critical_loads_bordered_determinant(name):
     guided, _ = ref_loads(name)
@@ -150,6 +152,7 @@ def test_paper_critical_loads_match_spec_table():
     np.testing.assert_allclose(free[0], 0.0761205, atol=1e-6)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ALL)
 def test_critical_load_is_limit_of_reference_branch_force(name):
     """Second route: Fx of the reference least-energy equilibrium at dx = 1e-4 -> -P1."""
@@ -184,20 +187,11 @@ def test_branch_forces_tend_to_each_critical_load(name):
 
 
 # --------------------------------------------------------------------------- 1d Cartesian stiffness
-def ref_stiffness(c: R.Chain, dx, dy, q, F, h=1e-5):
-    target = c.target(dx, dy)
-    Kc = np.zeros((2, 2))
-    for j in range(2):
-        e = np.zeros(2)
-        e[j] = h
-        qp, Fp, okp = c.newton_kkt(target + e, q, F)
-        qm, Fm, okm = c.newton_kkt(target - e, q, F)
-        assert okp and okm
-        assert np.max(np.abs(qp - q)) < 1e-3 and np.max(np.abs(qm - q)) < 1e-3
-        Kc[:, j] = (Fp - Fm) / (2 * h)
-    return Kc
+def ref_stiffness(c: R.Chain, dx, dy, q, F):
+    return R.tip_stiffness_fd(c, c.target(dx, dy), q, F, h=1e-5, max_move=1e-3)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name,dx,dy", [(g, 0.05, 0.0) for g in EXTRA] + [(g, 0.4, 0.2) for g in EXTRA]
                          + [("paper", 0.1, 0.0)])
 def test_cartesian_stiffness_finite_differences_of_reference(name, dx, dy):
@@ -215,6 +209,7 @@ def test_cartesian_stiffness_finite_differences_of_reference(name, dx, dy):
 
 
 # --------------------------------------------------------------------------- 1e Morse index
+@pytest.mark.slow
 @pytest.mark.parametrize("name,dx,dy", [(g, dx, dy) for g in EXTRA for dx, dy in [(0.05, 0.0), (0.4, 0.2)]]
                          + [("paper", 0.1, 0.0)])
 def test_morse_index_of_every_equilibrium(name, dx, dy):
@@ -240,6 +235,7 @@ def test_morse_index_of_every_equilibrium(name, dx, dy):
     np.testing.assert_allclose(min(e.energy for e in stable), ref_min(name, dx, dy)[0], rtol=1e-7)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name,dx,dy", [("G2", 0.4, 0.2), ("paper", 1.0, 0.3)])
 def test_find_equilibria_is_complete_against_random_newton(name, dx, dy):
     """Every KKT point the reference finds by Newton from 400 random starts is listed, and
@@ -296,6 +292,7 @@ def test_force_control_balance_and_stability(name, fx_rel, fy):
         assert eq.stable
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", ["paper", "G2"])
 def test_force_control_without_stable_equilibrium_raises(name):
     """Dead load 0.9 x guided critical load, Fy = 0: the reference finds no stable equilibrium

@@ -223,6 +223,7 @@ def _loaded_id(c) -> str:
     return f"{c[0]}-n{c[1]}"
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("case", LOADED, ids=_loaded_id)
 def test_search_under_force_matches_the_reference(case):
     family, n, seed, F = case
@@ -243,6 +244,7 @@ def test_search_under_force_matches_the_reference(case):
     assert [e.q.tolist() for e in stable] == [e.q.tolist() for e in eqs if e.stable]
 
 
+@pytest.mark.slow
 def test_search_under_force_on_a_mirror_symmetric_chain_gives_mirror_pairs():
     m = to.Manipulator.uniform(3, a=0.5, b=1.0, k=1.0, L0=1.0)
     eqs = to.find_equilibria_under_force(m, -0.05, 0.0)
@@ -254,6 +256,7 @@ def test_search_under_force_on_a_mirror_symmetric_chain_gives_mirror_pairs():
     _same_sets(down, [-e.q for e in up])                  # (fx, fy) -> (fx, -fy) mirrors the set
 
 
+@pytest.mark.slow_cases(keep=1)
 @needs_phc
 @pytest.mark.parametrize("case", LOADED + [("bistable", 4, 16, (-0.04, 0.05))], ids=_loaded_id)
 def test_homotopy_under_force_agrees_with_the_search(case):
@@ -296,6 +299,7 @@ def _ref_least_energy(chain: ref.Chain, starts: int = 60, seed: int = 9) -> tupl
     return best
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("n,seed", [(2, 21), (3, 22), (4, 23)])
 def test_rest_configuration_is_the_least_energy_well(n, seed):
     rng = np.random.default_rng(seed)

@@ -327,30 +327,35 @@ def all_checks(name, at=None):
 
 
 # --------------------------------------------------------------------------- the tests
+@pytest.mark.slow
 @pytest.mark.parametrize("name", NAMES + LIMIT_NAMES)
 def test_atlas_complete(name):
     at = atlas(name)
     assert at.status == "complete", (at.status, at.unresolved, [t.error for row in at.targets for t in row])
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", NAMES + LIMIT_NAMES)
 def test_counts_and_least_energy_match_brute_force(name):
     problems, _ = check_targets(atlas(name), ref_chain(name), brute(name))
     assert not problems, "\n".join(problems)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", NAMES + LIMIT_NAMES)
 def test_switches_match_reference_maxwell_points(name):
     problems, _ = check_switches(atlas(name), ref_chain(name), brute(name), edge_refs(name))
     assert not problems, "\n".join(problems)
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", NAMES + LIMIT_NAMES)
 def test_branch_ends_match_reference_folds(name):
     problems, _ = check_branch_ends(atlas(name), ref_chain(name), brute(name), edge_refs(name))
     assert not problems, "\n".join(problems)
 
 
+@pytest.mark.slow
 def test_the_grids_exercise_switches_and_folds():
     """The chosen grids are not vacuous: switches everywhere, folds on the multistable chains, a switch
     line off dy = 0 on the pre-bent chains, and one chain with both a switch and a fold."""
@@ -363,6 +368,7 @@ def test_the_grids_exercise_switches_and_folds():
         assert ys and min(abs(y) for y in ys) > 0.02, (n, ys)
 
 
+@pytest.mark.slow
 def test_brute_force_sees_the_tie_at_reference_maxwell_points():
     """Third route to a switch: at the reference Maxwell point the brute force itself finds two stable
     equilibria of equal least energy -- the two branches' configurations."""
@@ -380,6 +386,7 @@ def test_brute_force_sees_the_tie_at_reference_maxwell_points():
             assert got[-1] < 1e-6
 
 
+@pytest.mark.slow
 def test_reference_fold_routes_agree():
     """The reference folds by two routes: the bracket + extended system used above, and
     reference_paths.fold_in_displacement (its own natural path, bisection to 1e-12, extended system and the
@@ -397,6 +404,7 @@ def test_reference_fold_routes_agree():
         assert g.u_coordinate == pytest.approx(f.u, abs=1e-7)
 
 
+@pytest.mark.slow
 def test_checkers_flag_planted_errors():
     """The comparison is sensitive: on copies of a real atlas (the pre-bent bistable chain, switches and
     folds both present) a switch moved by 1e-6 of its edge, a branch end dropped, one moved by 1e-5, one

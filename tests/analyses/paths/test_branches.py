@@ -1,36 +1,234 @@
-"""Arclength continuation in every control, and stability boundaries, against other routes.
+"""Branches (``trace_branch``) in every control, against independent references and other routes.
 
-The expected numbers come from other solvers of the library that share nothing with the path system
-but the model (IPOPT/Newton under force or displacement on a chain with changed preloads, the straight
-chain's eigenproblem in ``critical_force``), from closed forms (``t`` at the end point), or from
-tests/support/reference_model.py (independent numpy model). The acceptance tests of the paths (branch points =
-critical loads, folds, limit loads vs a separate computation, the energy identity) are in test_paths.py.
+Every expected number comes from ``tests/support/reference_paths.py`` / ``tests/support/reference_model.py``
+(numpy + scipy, relative joint angles, no import of the library, through ``tests/support/branch_checks.py``), from
+a closed form, or from other solvers of the library that share nothing with the path system but the model
+(IPOPT/Newton under force or displacement on a chain with changed preloads, the natural-parameter solver).
+The control's records (``Control.load / guided / displacement / preload``, ``Branch``, ``BranchEvent``) are checked
+on every point. Conventions: ``docs/model.md``.
 """
 
 from __future__ import annotations
 
+import functools
+import math
 
 import numpy as np
 import pytest
+from clocks import tick_clock
+import reference_model as R
+import reference_paths as RP
+from branch_checks import (STRAIGHT, bistable_rest, chain_of, check_branch, check_name, check_turning_point, events_of,
+                           lib, modes, ref, ref_limit, straight_branch, t_max_two_branch_points, wells)
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.paths.boundaries import _chain_at, parameter_direction, stability_boundary
-from tensegrity_opt.analyses.paths.branches import trace_branch
-from tensegrity_opt.analyses.paths.control import Control
-
-import reference_model as ref  # noqa: E402
+from tensegrity_opt import Control, trace_branch
 
 PAPER = to.Manipulator.uniform(4)
-PREBENT = to.Manipulator([to.Segment(1.0, 1.0, 1.0, (1.02, 0.98))] * 4)
+
+# --------------------------------------------------------------------------- chains
 
 
-def _chain(m: to.Manipulator) -> ref.Chain:
-    return ref.Chain(m.a, m.b, m.k1, m.k2, m.L1_0, m.L2_0)
+# --------------------------------------------------------------------------- generic checks
+
+
+# --------------------------------------------------------------------------- straight chains
+
+
+@pytest.mark.parametrize("name", STRAIGHT)
+@pytest.mark.parametrize("boundary", ["free", "guided"])
+def test_straight_chain_branch_points_are_the_critical_loads(name, boundary):
+    """On the straight chain under compression the trivial path meets a branch point at each
+    critical load (free: K v = P G v; guided: the same on dy = 0); the null vectors are the
+    buckling modes; stability is lost at the first and the Morse index grows by one at each."""
+    c = ref(name)
+    P, V = modes(name, boundary)
+    br = straight_branch(name, boundary)
+    check_branch(c, br, check_name(boundary), direction=(-1.0, 0.0), tip0=c.tip(np.zeros(c.n)))
+    np.testing.assert_allclose(br.q, 0.0, atol=1e-8)
+    t_max = t_max_two_branch_points(P)
+    bps = events_of(br, "branch_point")
+    expected = P[P < t_max]
+    assert [e.t for e in bps] == pytest.approx(list(expected), rel=1e-6)
+    assert not events_of(br, "fold")
+    for j, e in enumerate(bps):
+        assert (e.morse_before, e.morse_after) == (j, j + 1)
+        assert e.stability == ("lost" if j == 0 else "unchanged")
+        np.testing.assert_allclose(e.force, [-P[j], 0.0], atol=1e-6 * P[j])
+        np.testing.assert_allclose(e.q, 0.0, atol=1e-8)
+        v = np.asarray(e.null_vector, float)
+        assert v.shape == (c.n,)
+        v = v / np.linalg.norm(v)
+        sin = np.linalg.norm(v - (v @ V[:, j]) * V[:, j])
+        assert sin < 1e-4, f"null vector {v} not parallel to the mode {V[:, j]} (sin {sin:.1e})"
+
+
+def test_paper_chain_free_critical_loads_closed_form():
+    """The free-tip uniform chain: P_j = (K / b) (1 - cos((2j - 1) pi / (2n))); the paper chain's
+    first is 0.0761205 (``docs/model.md``) and its guided one 0.572793."""
+    br = straight_branch("paper4", "free")
+    j = np.arange(1, 3)
+    closed = 1.0 - np.cos((2 * j - 1) * math.pi / 8)
+    assert [e.t for e in events_of(br, "branch_point")] == pytest.approx(list(closed), rel=1e-6)
+    assert closed[0] == pytest.approx(0.0761205, abs=1e-7)
+    assert events_of(straight_branch("paper4", "guided"), "branch_point")[0].t == pytest.approx(0.572793, abs=1e-6)
+
+
+# --------------------------------------------------------------------------- folds
+@functools.lru_cache(maxsize=None)
+def one_segment_branch():
+    return trace_branch(lib("one_seg"), np.array([wells("one_seg")[0]]), Control.load(direction=(0.0, 1.0)),
+                        t_max=0.3, t_min=-0.5, max_points=600)
+
+
+def test_bistable_segment_snaps_through_and_returns_to_a_stable_branch():
+    """One bistable segment under a tip force along +y (a torque t b cos q), from its lower
+    well: t(q) = E'(q) / (b cos q) (closed form) has a maximum (fold, stability lost) at
+    q = -0.997415, t = 0.218830 and a minimum (fold, stability regained) at q = +0.997415,
+    t = -0.218830; continuation goes around both and ends stable beyond the upper well."""
+    c = ref("one_seg")
+    br = one_segment_branch()
+    check_branch(c, br, "load", direction=(0.0, 1.0))
+    (q1, t1), (q2, t2) = RP.single_segment_folds(c, (0.0, 1.0), -1.5, 1.5)
+    r = ref_limit("one_seg", "free", direction=(0.0, 1.0), max_load=1.0)
+    assert r.kind == "fold" and r.t == pytest.approx(t1, abs=1e-10)
+    folds = events_of(br, "fold")
+    assert len(folds) >= 2
+    f1, f2 = folds[0], folds[1]
+    assert f1.t == pytest.approx(t1, rel=1e-6) and f1.q[0] == pytest.approx(q1, abs=1e-4)
+    assert f1.stability == "lost" and (f1.morse_before, f1.morse_after) == (0, 1)
+    assert f2.t == pytest.approx(t2, rel=1e-6) and f2.q[0] == pytest.approx(q2, abs=1e-4)
+    assert f2.stability == "gained" and (f2.morse_before, f2.morse_after) == (1, 0)
+    for f in (f1, f2):
+        check_turning_point(br, f)
+        assert f.null_vector is None or abs(np.asarray(f.null_vector, float).ravel()[0]) > 0
+    # stable again later on the same branch, beyond the upper well
+    later = np.asarray(br.morse_index)[f2.index + 1:]
+    assert later.size > 0 and np.all(later == 0)
+    assert br.q[-1, 0] > wells("one_seg")[1] and br.t[-1] > 0.0
+
+
+@functools.lru_cache(maxsize=None)
+def pre_bent_guided_branch():
+    return trace_branch(lib("pre_bent3"), None, Control.guided(direction=(-1.0, 0.0)), t_max=0.9, max_points=300)
+
+
+@pytest.mark.slow
+def test_pre_bent_guided_path_folds_at_the_reference_fold():
+    """The pre-bent arm, tip guided: the load path turns at a fold, t = 0.825957 (extended
+    system solved by scipy; the joint-angle parametrisation gives the same), where the reduced
+    Hessian is singular; the library's fold is the turning point of its own branch."""
+    c = ref("pre_bent3")
+    r = ref_limit("pre_bent3", "guided")
+    assert r.kind == "fold"
+    br = pre_bent_guided_branch()
+    check_branch(c, br, "guided", direction=(-1.0, 0.0), tip0=c.tip(RP.rest_configuration(c)))
+    folds = events_of(br, "fold")
+    assert folds, f"no fold on the branch (status {br.status!r})"
+    f = folds[0]
+    assert f.t == pytest.approx(r.t, rel=1e-6)
+    np.testing.assert_allclose(f.q, r.q, atol=1e-4)
+    np.testing.assert_allclose(f.force, r.force, atol=1e-5)
+    assert f.stability == "lost"
+    check_turning_point(br, f)
+    # before the fold everything is stable, and no branch point comes first
+    assert np.all(np.asarray(br.morse_index)[:f.index + 1] == 0)
+    assert all(e.kind != "branch_point" for e in br.events if e.t < f.t and e.index <= f.index)
+
+
+# --------------------------------------------------------------------------- displacement control
+@functools.lru_cache(maxsize=None)
+def displacement_branch():
+    return trace_branch(lib("bistable3"), bistable_rest(), Control.displacement(direction=(1.0, 0.0)),
+                        t_max=2.5, max_points=800)
+
+
+@pytest.mark.slow
+def test_displacement_branch_fold_and_joint_limit():
+    """Displacement control (dx grows) of the bistable chain: a turning point in dx at
+    dx = 1.973177 (stability lost); the unstable branch then runs back to dx = 0.660098 where
+    joint 2 reaches its bound."""
+    c = ref("bistable3")
+    br = displacement_branch()
+    check_branch(c, br, "displacement", direction=(1.0, 0.0), tip0=c.tip(bistable_rest()))
+    r = RP.fold_in_displacement(c, bistable_rest(), (1.0, 0.0), t_max=3.0)
+    assert r.kind == "fold" and r.t_coordinate == pytest.approx(r.t, abs=1e-10)
+    folds = events_of(br, "fold")
+    assert folds
+    f = folds[0]
+    assert f.t == pytest.approx(r.t, rel=1e-6)
+    np.testing.assert_allclose(f.q, r.q, atol=1e-4)
+    np.testing.assert_allclose(f.force, r.force, atol=1e-5)
+    assert f.stability == "lost" and (f.morse_before, f.morse_after) == (0, 1)
+    check_turning_point(br, f)
+    assert np.all(np.asarray(br.morse_index)[:f.index + 1] == 0)
+    assert np.all(np.asarray(br.morse_index)[f.index + 1:] == 1)
+    # the end: the joint range (t decreasing after the fold, never below the reference bound)
+    assert np.min(np.asarray(br.t)[f.index + 1:]) >= 0.660098 - 1e-6
+    jl = events_of(br, "joint_limit")
+    if jl:
+        assert jl[-1].t == pytest.approx(0.6600981, abs=1e-3)
+        assert np.max(np.abs(jl[-1].q) / c.limits) > 0.999
+
+
+def test_energy_along_a_displacement_branch_integrates_the_force():
+    """grad E = J^T F, so along a displacement path dE = F . d(tip) (tip = (2 sum b - dx, dy)):
+    E(end) - E(start) equals int F . dtip over the branch (here through a fold). The integral is
+    refined on the reference between the branch's points (Gauss nodes on each secant, so the
+    step sizes do not matter); the plain trapezoid rule over the points agrees to its O(h^2)."""
+    c = ref("bistable3")
+    br = displacement_branch()
+    E = np.asarray(br.energy, float)
+    dE = E[-1] - E[0]
+    assert dE == pytest.approx(c.energy(br.q[-1]) - c.energy(br.q[0]), rel=1e-9)
+    integral, trap = RP.energy_integral(c, br.q, br.force, w=(-1.0, 0.0), nodes=4)
+    assert integral == pytest.approx(dE, rel=1e-6)
+    assert trap == pytest.approx(dE, rel=1e-3)
+    # pointwise: the library's tip moves as -dx, and F . dtip has the sign of the energy change
+    dtip = np.diff(np.asarray(br.tip, float), axis=0)
+    Fm = 0.5 * (np.asarray(br.force)[1:] + np.asarray(br.force)[:-1])
+    dEs = np.diff(E)
+    big = np.abs(dEs) > 1e-3 * np.max(np.abs(dEs))
+    assert np.all(np.sign(np.sum(Fm * dtip, axis=1)[big]) == np.sign(dEs[big]))
+
+
+# --------------------------------------------------------------------------- preload control
+def test_preload_free_tip_bends_one_segment():
+    """Unloaded free tip, L1_0 of segment 1 grows: segment 1 bends alone (its own E'(q1) = 0
+    with the new rest length), the others stay straight."""
+    c = ref("paper2")
+    d = np.array([1.0, 0.0, 0.0, 0.0])
+    br = trace_branch(lib("paper2"), None, Control.preload(direction=tuple(d), tip="free", load=(0.0, 0.0)),
+                      t_max=0.3, max_points=200)
+    chains = check_branch(c, br, "preload_free", preload=d)
+    np.testing.assert_allclose(br.force, 0.0, atol=1e-9)
+    np.testing.assert_allclose(br.q[:, 1], 0.0, atol=1e-9)
+    for ci, qi in zip(chains, br.q):
+        seg = R.Chain.from_segments([(ci.a[0], ci.b[0], ci.k1[0], ci.k2[0], ci.L10[0], ci.L20[0])])
+        q1, ok = seg.newton_force(np.zeros(2), np.array([qi[0]]))
+        assert ok and qi[0] == pytest.approx(q1[0], abs=1e-8)
+    assert np.max(br.t) >= 0.3 - 1e-6 and abs(br.q[-1, 0]) > 1e-3
+    assert np.all(np.asarray(br.morse_index) == 0)
+
+
+def test_preload_held_tip():
+    """Tip held where the pre-bent arm rests, L1_0 of segment 2 grows: every point is an
+    equilibrium of the re-preloaded reference chain with the tip in place, the force the
+    reaction."""
+    c = ref("pre_bent3")
+    d = np.zeros(6)
+    d[2] = 1.0
+    q_r = RP.rest_configuration(c)
+    br = trace_branch(lib("pre_bent3"), None, Control.preload(direction=tuple(d), tip="held", load=(0.0, 0.0)),
+                      t_max=0.2, max_points=200)
+    check_branch(c, br, "preload_held", preload=d, tip0=c.tip(q_r))
+    np.testing.assert_allclose(br.q[0], q_r, atol=1e-8)
+    assert np.max(np.abs(np.asarray(br.force)[-1])) > 1e-3
 
 
 def _assert_on_branch(m: to.Manipulator, br, *, tol: float = 1e-8) -> None:
     """Every point inside the range and an equilibrium of the independent model."""
-    ch = _chain(m)
+    ch = chain_of(m)
     assert np.all(np.abs(br.q) < m.joint_limits)
     for q, F in zip(br.q, br.force):
         r = np.abs(ch.grad(q) - ch.jac(q).T @ F).max() / m.torque_scale
@@ -131,49 +329,12 @@ def test_errors_name_the_field():
     assert e.value.field == "t_max"
 
 
-def test_partial_results_on_max_points_and_time_limit():
+def test_partial_results_on_max_points_and_time_limit(monkeypatch):
     br = trace_branch(PAPER, np.zeros(4), "guided", max_points=5)
     assert len(br) == 5 and br.status == "max_points" and br.success
-    br = trace_branch(PAPER, np.zeros(4), "guided", max_points=100000, step=1e-4, max_step=1e-4, timeout=0.05)
-    assert br.status == "time_limit" and not br.success and len(br) > 1
+    # the library's clock moves on 1 s at every reading, once a point (tests/support/clocks.py): a limit of 50 s
+    # runs out after some 50 points on any machine
+    tick_clock(monkeypatch, step=1.0)
+    br = trace_branch(PAPER, np.zeros(4), "guided", max_points=100000, step=1e-4, max_step=1e-4, timeout=50.0)
+    assert br.status == "time_limit" and not br.success and 10 < len(br) < 100
     _assert_on_branch(PAPER, br)
-
-
-@pytest.mark.parametrize("parameter, boundary", [("L0", "guided"), ("a", "free")])
-def test_branch_point_boundary_is_the_critical_load_of_the_changed_chain(parameter, boundary):
-    ctl = "guided" if boundary == "guided" else "load"
-    B = stability_boundary(PAPER, ctl, parameter, start=np.zeros(4), p_min=-0.1, p_max=0.1, max_points=5)
-    assert B.kind == "branch_point" and B.success
-    assert B.p.min() == pytest.approx(-0.1) and B.p.max() == pytest.approx(0.1)
-    for p, t in zip(B.p, B.t):
-        mp = _chain_at(PAPER, B.parameter_direction, p)
-        assert t == pytest.approx(ref.critical_loads_guided(_chain(mp))[0] if boundary == "guided"
-                                  else ref.critical_loads_free(_chain(mp))[0], rel=1e-6)
-
-
-def test_fold_boundary_through_the_cusp_of_the_unfolded_pitchfork():
-    """A preload asymmetry unfolds the straight chain's pitchfork: the fold curve passes through the
-    branch point (a cusp at p = 0, t = the critical load). Each point is checked on the independent model
-    (an equilibrium of the pre-bent chain with the guide at y = 0, a zero eigenvalue of the Hessian reduced
-    to dy = 0), and near the cusp the fold load grows like |p|^(2/3) (the imperfect pitchfork)."""
-    B = stability_boundary(PAPER, "guided", "asymmetry", start=np.zeros(4), p_min=-0.03, p_max=0.03)
-    assert B.kind == "fold" and B.p.min() < -0.03 and B.p.max() > 0.03
-    crit = -to.critical_force(PAPER, "guided").force
-    cusp0 = [c for c in B.cusps if abs(c.p) < 1e-9]
-    assert cusp0 and cusp0[0].t == pytest.approx(crit, rel=1e-9)
-    _, d = parameter_direction(PAPER, "asymmetry")
-    for i in range(0, len(B.p), 7):
-        ch = _chain(_chain_at(PAPER, d, float(B.p[i])))
-        q, F = B.q[i], B.force[i]
-        assert F[0] == pytest.approx(-B.t[i], abs=1e-12)
-        assert np.abs(ch.grad(q) - ch.jac(q).T @ F).max() < 1e-9 and abs(ch.tip(q)[1]) < 1e-10
-        H = ch.lagrangian_hess(q, F)
-        Q, _ = np.linalg.qr(ch.jac(q)[1:].T, mode="complete")
-        w = np.linalg.eigvalsh(Q[:, 1:].T @ H @ Q[:, 1:])
-        assert np.abs(w).min() < 1e-7 * np.abs(w).max()
-    # the imperfect pitchfork: t - t_cr ~ C |p|^(2/3) on each side
-    for side in (1, -1):
-        sel = np.flatnonzero((side * B.p > 1e-4) & (side * B.p < 3e-3))
-        assert sel.size >= 3
-        slope = np.polyfit(np.log(np.abs(B.p[sel])), np.log(B.t[sel] - crit), 1)[0]
-        assert slope == pytest.approx(2.0 / 3.0, abs=0.05)

@@ -13,6 +13,7 @@ import re
 
 import numpy as np
 import pytest
+from clocks import tick_clock
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.atlas import AtlasTarget, atlas_target
@@ -97,13 +98,15 @@ def test_a_partial_curve_is_no_success_and_says_where():
                                        "message": c.ended_at.message, "dx": 3.15, "dy": 0.0}
 
 
-def test_branches_and_their_events():
+def test_branches_and_their_events(monkeypatch):
     br = to.trace_branch(PAPER, np.zeros(4), "guided", t_max=1.0)
     _check(br)
     assert br.success and br.status == "t_max" and br.branch_points and br.manipulator is PAPER
-    cut = to.trace_branch(to.Manipulator.uniform(20), np.zeros(20), "guided", max_points=5000, timeout=0.05)
+    with monkeypatch.context() as patched:              # one reading of the library's clock a point: 20 points
+        tick_clock(patched, step=1.0)
+        cut = to.trace_branch(to.Manipulator.uniform(20), np.zeros(20), "guided", max_points=5000, timeout=20.0)
     _check(cut)
-    assert cut.status == "time_limit" and not cut.success and len(cut) >= 1
+    assert cut.status == "time_limit" and not cut.success and 1 <= len(cut) < 100
     for ev in br.events:
         assert not ev.q.flags.writeable
         with pytest.raises(dataclasses.FrozenInstanceError):
@@ -158,13 +161,3 @@ def test_the_batch_stays_a_list_of_outcomes():
     assert isinstance(out[1], to.UnreachableTargetError)
 
 
-def test_the_http_models_carry_the_vocabularies():
-    s = pytest.importorskip("service.schemas")
-    for model, cls in ((s.ForceDeflectionOut, to.Curve), (s.TracedBranchOut, to.Branch),
-                       (s.LimitLoadOut, to.LimitLoad), (s.StabilityBoundaryOut, to.StabilityBoundary),
-                       (s.AtlasOut, to.StabilityAtlas), (s.AtlasTargetOut, AtlasTarget),
-                       (s.SimulationOut, to.Simulation), (s.SimulationEventOut, to.results.SimulationEvent),
-                       (s.CurveEndOut, CurveEnd)):
-        assert list(model.model_fields)[:3] == ["success", "status", "message"], model
-        assert set(model.model_fields["status"].annotation.__args__) == set(cls.STATUSES), model
-    assert set(s.CurvePoint.model_fields["status"].annotation.__args__) == set(POINT_STATUSES)

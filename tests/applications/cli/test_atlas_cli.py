@@ -28,6 +28,7 @@ def without_seconds(d: dict) -> dict:
     return {k: v for k, v in d.items() if k != "seconds"}
 
 
+@pytest.mark.slow
 def test_atlas_json_is_the_library_body_and_the_table_reads_it(capsys):
     got = run_json(capsys, ["atlas", *CHAIN, *GRID])
     want = json.loads(json.dumps(to.stability_atlas(M, [0.2, 0.8], [0.0, 0.6]).to_dict()))
@@ -43,6 +44,7 @@ def test_atlas_json_is_the_library_body_and_the_table_reads_it(capsys):
     assert got["targets"][0][0]["reachable"] is False and got["least_energy"] == [[None]]
 
 
+@pytest.mark.slow
 def test_plot_atlas_writes_png_and_svg_with_the_gids(tmp_path, capsys):
     for suffix in ("png", "svg"):
         out = tmp_path / f"atlas.{suffix}"

@@ -11,6 +11,7 @@ import json
 
 import numpy as np
 import pytest
+from cli_checks import writes_png_and_svg
 
 import tensegrity_opt as to
 from tensegrity_opt.applications.cli import build_parser, main
@@ -53,6 +54,7 @@ def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
     assert same(got, json.loads(json.dumps(want.to_dict())))
 
 
+@pytest.mark.slow
 def test_simulate_a_load_cycle_preloads_and_a_held_tip(capsys, tmp_path):
     argv = ["simulate", *BISTABLE, "--load-cycle", "0.3", "--steps", "25"]
     assert main(argv) == 0
@@ -97,15 +99,11 @@ def test_force_estimate(capsys):
     assert run_json(capsys, ["force-estimate", "--q", *map(str, EQ_Q)])["chi2"] is None
 
 
+@pytest.mark.slow
 def test_plot_plan_and_simulation_write_png_and_svg(tmp_path, capsys):
-    for argv in (["plot", "plan", "--line", "7.9", "0.2", "7.3", "1.4", "5"],
-                 ["plot", "simulation", *BISTABLE, "--load-cycle", "0.3", "--steps", "13"]):
-        for suffix in ("png", "svg"):
-            out = tmp_path / f"fig.{suffix}"
-            assert main([*argv, "-o", str(out), "--dpi", "40"]) == 0, capsys.readouterr().err
-            assert f"wrote {out}" in capsys.readouterr().out
-            data = out.read_bytes()
-            assert data[:4] == b"\x89PNG" if suffix == "png" else b"<svg" in data[:400]
+    writes_png_and_svg(main, [["plot", "plan", "--line", "7.9", "0.2", "7.3", "1.4", "5"],
+                              ["plot", "simulation", *BISTABLE, "--load-cycle", "0.3", "--steps", "13"]],
+                       tmp_path, capsys)
     info = run_json(capsys, ["plot", "simulation", *BISTABLE, "--load-cycle", "0.3", "--steps", "13", "-o",
                              str(tmp_path / "s.png")])
     assert info["snaps"] == 2 and info["status"] == "complete"

@@ -29,6 +29,7 @@ def _run(argv: list[str]):
     return args.func(args, _manipulator(args))
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("argv", [
     ["plot", "curve", "--start", "0", "--stop", "0.5", "--num", "6"],
     ["plot", "landscape", "--dx", "0.1", "--grid", "31"],

@@ -59,6 +59,7 @@ def test_plan_figure_draws_the_library_plan(plan, tmp_path):
     assert {"rest-length-0-1", "tip-path", "targets", "margin", "infeasible-rest"} <= ids
 
 
+@pytest.mark.slow
 def test_plan_figure_of_a_long_chain_and_of_no_step(tmp_path):
     m = to.Manipulator.uniform(12)
     p = to.preloads_for_trajectory(m, [[m.straight_length - 0.01, 0.3]])
@@ -78,6 +79,7 @@ def _points(fig, name):
     return gid(fig, name).get_xydata()
 
 
+@pytest.mark.slow
 def test_simulation_figure_is_the_hysteresis_loop(tmp_path):
     fy = np.concatenate([np.linspace(0, 0.3, 16), np.linspace(0.3, -0.3, 31)[1:], np.linspace(-0.3, 0, 16)[1:]])
     sim = to.simulate(M3, loads=np.column_stack([0 * fy, fy]))
@@ -108,6 +110,7 @@ def test_simulation_figure_is_the_hysteresis_loop(tmp_path):
     assert {"path", "samples", "snap-0", "snap-1", "snap-folds", "snap-landings"} <= ids
 
 
+@pytest.mark.slow
 def test_simulation_figure_held_tip_preloads_and_the_joint_limit(tmp_path):
     from tensegrity_opt.analyses.equilibria.rest import rest_configuration
 

@@ -133,6 +133,7 @@ def test_a_partial_curve_draws_its_end():
     assert maybe_gid(done, "end-marker-fx") is None and maybe_gid(done, "curve-end-text") is None
 
 
+@pytest.mark.slow
 def test_a_partial_curve_of_the_library_draws_its_end():
     m = to.Manipulator.uniform(3, a=0.5)
     dx = np.linspace(0.0, 5.5, 23)

@@ -28,6 +28,7 @@ def equilibria():
 
 
 # ---------------------------------------------------------------------------- landscape
+@pytest.mark.slow
 def test_landscape_energy_and_equilibria(tmp_path, equilibria):
     fig, land = landscape_figure(PAPER, 0.1, 0.0, pair=(0, 3), grid=41, span=None, equilibria=equilibria)
     assert land.qi.max() == pytest.approx(0.999 * PAPER.joint_limits[0])          # the physical range
@@ -122,6 +123,7 @@ def test_landscape_axes_and_legend():
 
 
 # ---------------------------------------------------------------------------- shapes
+@pytest.mark.slow
 def test_shapes_draw_every_equilibrium(tmp_path, equilibria):
     fig = plots.plot_shapes(equilibria, PAPER, 0.1, 0.0)
     assert Counter((e.shape, e.kind) for e in equilibria) == Counter(

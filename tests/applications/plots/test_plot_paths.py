@@ -56,6 +56,7 @@ def test_branch_diagram_pieces_by_morse_index_and_branch_points(guided, tmp_path
     check_renders(fig, tmp_path, "branch")
 
 
+@pytest.mark.slow
 def test_bifurcation_diagram_marks_each_event_kind_distinctly(tmp_path):
     bs = to.bifurcation_diagram(PAPER, np.zeros(4), "guided", t_max=2.0, t_min=-0.2, depth=1, max_points=120)
     fig = plots.plot_branches(bs, PAPER, x="q1", y="t")
@@ -96,6 +97,7 @@ def test_branch_quantities_and_refusals(guided):
     assert e.value.field == "branches[1]"
 
 
+@pytest.mark.slow
 def test_limit_load_marks_the_bifurcation_of_the_straight_chain(tmp_path):
     res = to.limit_load(PAPER, (-1.0, 0.0), "guided", start=np.zeros(4))
     fig = plots.plot_limit_load(res, PAPER)

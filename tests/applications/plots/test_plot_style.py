@@ -52,6 +52,7 @@ def test_chain_label():
     assert plots.chain_label(pair) == "n = 2, a = 1, b = 1, k = (1, 2), L0 = 1"
 
 
+@pytest.mark.slow
 def test_library_imports_without_matplotlib(tmp_path):
     code = ("import sys; sys.modules['matplotlib'] = None\n"
             "import numpy as np, tensegrity_opt as to, tensegrity_opt.applications.plots as p\n"

@@ -248,6 +248,7 @@ def test_files_round_trip(tmp_path, suffix):
 
 
 # --------------------------------------------------------------------------- Dask
+@pytest.mark.slow
 def test_dask_local_cluster_equals_serial():
     """Two single-threaded worker *processes*: the realistic set-up (chunks and specs are pickled to
     other interpreters, each builds its own solvers, no shared GIL); it starts in ~2 s here."""

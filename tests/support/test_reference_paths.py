@@ -75,7 +75,7 @@ def test_path_system_jacobians_by_finite_differences(boundary):
 
 # --------------------------------------------------------------------------- straight chains
 def test_paper_chain_critical_loads():
-    """conventions.md: guided 0.572793 (1.362906, 1.921444), free 0.0761205."""
+    """``docs/model.md``: guided 0.572793 (1.362906, 1.921444), free 0.0761205."""
     c = chain("paper4")
     Pg, _ = RP.buckling_modes(c, "guided")
     Pf, _ = RP.buckling_modes(c, "free")
@@ -98,6 +98,7 @@ def test_free_critical_loads_closed_form(n, geom):
     np.testing.assert_allclose(RP.buckling_modes(c, "free")[0], closed, rtol=1e-12)
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("name", sorted(STRAIGHT))
 @pytest.mark.parametrize("boundary", ["free", "guided"])
 def test_limit_load_of_straight_chain_is_its_critical_load(name, boundary):

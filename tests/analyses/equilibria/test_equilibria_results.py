@@ -75,6 +75,7 @@ def test_equilibrium_set_statuses():
 
 
 # ----------------------------------------------------------------------------- every status reached
+@pytest.mark.slow
 def test_searched_sets():
     eqs = to.find_equilibria(PAPER, 0.1)
     assert (eqs.status, eqs.method, eqs.success, eqs.certified) == ("searched", "search", True, False)
@@ -113,6 +114,7 @@ def test_an_empty_set_is_an_answer():
     assert none.to_dict()["equilibria"] == [] and none.to_dict()["success"] is True
 
 
+@pytest.mark.slow
 def test_homotopy_certified_and_uncertified_through_a_stand_in(monkeypatch):
     cert = _homotopy_set(monkeypatch, failures=0)
     assert (cert.status, cert.success, cert.certified, cert.method) == ("certified", True, True, "homotopy")

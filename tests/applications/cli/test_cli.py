@@ -1,4 +1,5 @@
-"""Shape labels and the command line."""
+"""The library's command line (``tensegrity_opt.applications.cli``): the analysis commands' tables and JSON, their
+usage and domain errors (one line, status 2), help with every default, partial curves, a closed pipe."""
 
 import json
 import subprocess
@@ -7,20 +8,9 @@ from pathlib import Path
 
 import pytest
 
-from tensegrity_opt import shape_label, sign_string
+from cli_checks import USAGE_ERRORS, one_error_line
+
 from tensegrity_opt.applications.cli import main
-
-
-@pytest.mark.parametrize("q,label,signs", [
-    ([-1, 2, 3, 4], "U", "-+++"), ([1, -2, -3, -4], "U", "+---"),
-    ([-1, 2, -3, 4], "Z", "-+-+"), ([1, -2, 3, -4], "Z", "+-+-"),
-    ([-1, 2, -3, -4], "ZU", "-+--"), ([1, -2, 3, 4], "ZU", "+-++"),
-    ([0, 0, 0, 0], "I", "0000"), ([1, 2, 3, 1e-9], "C", "+++0"),
-    ([1, -1, 1, -1, 1], "W4", "+-+-+"),
-])
-def test_table2_labels(q, label, signs):
-    assert shape_label(q) == label
-    assert sign_string(q) == signs
 
 
 def test_cli_buckling_table(capsys):
@@ -47,38 +37,26 @@ def test_cli_json_outputs(capsys):
 def test_cli_errors(capsys, tmp_path):
     assert main(["equilibrium", "--dx", "-1"]) == 2
     assert "beyond the chain's reach" in capsys.readouterr().err
-    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 1          # unstable straight chain: an answer, not a usage error
+    assert main(["buckling", "--L0", "0.1", "--a", "0.5"]) == 1    # an unstable straight chain: an answer
     bad = tmp_path / "m.json"
     bad.write_text('{"segments": [{"a": 1, "b": -1}]}')
     assert main(["buckling", "--manipulator", str(bad)]) == 2
     assert "b must be finite and > 0" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_console_script_runs():
-    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"], capture_output=True, text=True,
-                       check=True)
+    r = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"], capture_output=True,
+                       text=True, check=True)
     assert "critical force Fx0 = -0.572793" in r.stdout
-
-
-def test_vectorised_shape_labels_equal_the_row_by_row_labels():
-    import numpy as np
-
-    from tensegrity_opt.model.shapes import shape_label, shape_labels
-
-    rng = np.random.default_rng(0)
-    Q = rng.standard_normal((3000, 7)) * (rng.random((3000, 7)) > 0.3)
-    Q[::11] = 0.0
-    Q[5] = [0.0, 0.0, 1e-9, 0.0, 2.0, -1.0, 0.0]          # a tiny angle counts as zero
-    assert shape_labels(Q) == [shape_label(q) for q in Q]
-    assert shape_labels(np.zeros((0, 4))) == []
 
 
 # ---------------------------------------------------------------------------- usage errors, help, pipes
 @pytest.mark.parametrize("argv", [["curve", "--num", "-1"], ["curve", "--num", "0"], ["equilibrium", "--dx", "nan"],
                                   ["buckling", "--n", "0"], ["plot", "curve", "--num", "-3", "-o", "x.png"]])
 def test_a_bad_option_is_one_usage_line_and_exit_2(argv, capsys):
-    """A count must be >= 1 and a number finite: argparse's usage error, never a traceback (was a
-    numpy ValueError traceback for --num -1)."""
+    """A count must be >= 1 and a number finite: argparse's usage error, never a traceback (numpy's ValueError
+    for --num -1, say)."""
     with pytest.raises(SystemExit) as exc:
         main(argv)
     assert exc.value.code == 2
@@ -103,6 +81,7 @@ def test_every_option_of_the_analysis_commands_has_help_and_its_default(capsys):
         assert "(default: 0" in out or "(default: guided)" in out, cmd    # and its default
 
 
+@pytest.mark.slow
 def test_a_closed_pipe_is_not_an_error():
     """``tensegrity-opt buckling | head -1``: the reader leaves early; no BrokenPipeError traceback."""
     p = subprocess.Popen([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"],
@@ -113,82 +92,20 @@ def test_a_closed_pipe_is_not_an_error():
     assert "Traceback" not in err and "BrokenPipe" not in err
 
 
-# ---------------------------------------------------------------------------- issue 18: help, errors, partial curves
-def _parsers(parser, path=("tensegrity-opt",)):
-    """Every parser of ``parser``'s tree (the top one, each command, each ``plot`` kind), with its path."""
-    import argparse
-
-    yield path, parser
-    for action in parser._actions:
-        if isinstance(action, argparse._SubParsersAction):
-            for name, sub in action.choices.items():
-                yield from _parsers(sub, (*path, name))
+# ---------------------------------------------------------------------------- help, errors, partial curves
 
 
-def test_every_option_of_every_command_has_help_and_shows_its_default():
-    """``tensegrity-opt --help`` and each ``COMMAND --help``: no option without a help text (was: most
-    ``plot`` kinds, ``serve --log-level``), and every help shows the defaults (argparse's
-    ``ArgumentDefaultsHelpFormatter`` or ``%(default)s``); walked over the parser, not a snapshot."""
-    import argparse
-
-    from service.cli import build_parser
-
-    seen = 0
-    for path, p in _parsers(build_parser()):
-        shows_defaults = issubclass(p.formatter_class, argparse.ArgumentDefaultsHelpFormatter)
-        for a in p._actions:
-            if not a.option_strings or a.dest == "help":
-                continue
-            seen += 1
-            assert a.help and a.help.strip(), (" ".join(path), a.option_strings)
-            has_default = a.default not in (None, argparse.SUPPRESS) and a.nargs != 0
-            if has_default:
-                assert shows_defaults or "%(default)" in a.help, (" ".join(path), a.option_strings)
-                text = p.format_help()
-                assert "(default: " in text, " ".join(path)
-    assert seen > 150          # the walk reached the commands and the plot kinds
 
 
-def test_the_top_help_lists_every_command_group():
-    from service.cli import build_parser
-
-    top = build_parser()
-    text = " ".join(top.format_help().split())
-    for word in ("plot", "sweep", "serve", "openapi", "buckling", "curve", "branch", "atlas", "plan", "simulate",
-                 "load-capacity", "figures", "parameter sweeps"):
-        assert word in text.split("positional arguments")[0], word     # in the description itself
-    sub = next(iter(p for path, p in _parsers(top) if path[1:] == ("plot",)))
-    assert "shapes" in sub.format_help() and "torque" in sub.format_help()
-
-
-def _one_error_line(err: str) -> str:
-    lines = err.strip().splitlines()
-    assert len(lines) == 1 and "Traceback" not in err, err
-    assert lines[0].startswith("tensegrity-opt") and "error: " in lines[0], err
-    return lines[0]
-
-
-@pytest.mark.parametrize("argv,says", [
-    (["curve", "--num", "-1"], "--num"), (["curve", "--num", "0"], "--num"), (["curve", "--n", "0"], "--n"),
-    (["buckling", "--n", "-2"], "--n"), (["plot", "torque", "--num", "0", "-o", "t.png"], "--num"),
-    (["sweep", "spec.json", "--workers", "x"], "--workers"), (["curve", "--frobnicate"], "frobnicate"),
-    ([], "COMMAND"), (["plot"], "KIND"), (["serve", "--port", "-5"], "--port"),
-    # a chain too long to build answers at once instead of hanging (it allocated n x n matrices for n = 1e9)
-    (["buckling", "--n", "1000000000"], "at most 10000 segments"), (["curve", "--n", "10001"], "at most"),
-])
+@pytest.mark.parametrize("argv,says", [(argv, says) for argv, says in USAGE_ERRORS if argv[:1] != ["serve"]])
 def test_a_usage_error_is_one_line_and_exit_2(argv, says, capsys):
-    """Issue 18: every bad option is one line ``error: ...`` on stderr (argparse's usage block left out) and
-    status 2 - through the console script's parser too."""
-    from service.cli import main as console
-
-    for run in (main, console):
-        if run is main and argv[:1] == ["serve"]:
-            continue
-        with pytest.raises(SystemExit) as exc:
-            run(argv)
-        assert exc.value.code == 2
-        line = _one_error_line(capsys.readouterr().err)
-        assert says in line and "--help" in line
+    """Every bad option is one line ``error: ...`` on stderr (argparse's usage block left out) and status 2 (the
+    console script's parser, with ``serve``: ``tests/service/test_service_cli.py``)."""
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    line = one_error_line(capsys.readouterr().err)
+    assert says in line and "--help" in line
 
 
 @pytest.mark.parametrize("argv,says", [
@@ -202,17 +119,17 @@ def test_a_domain_error_inside_a_command_is_one_line_and_exit_2(argv, says, caps
     checks (numpy's ``linspace`` raised a ``ValueError`` traceback for ``plot map ... -1``): one line, 2."""
     monkeypatch.chdir(tmp_path)
     assert main(argv) == 2
-    assert says in _one_error_line(capsys.readouterr().err)
+    assert says in one_error_line(capsys.readouterr().err)
 
 
 @pytest.mark.parametrize("text,says", [("[1, 2]", "expected a JSON object"), ('{"segments": []}', "n >= 1"),
                                        ("{not json", "Expecting"), ('{"segments": [{"a": 1, "b": -1}]}', "b must")])
 def test_a_bad_manipulator_file_is_one_line_and_exit_2(text, says, capsys, tmp_path):
-    """n = 0 by file (no segments), a JSON list (was an AttributeError traceback), broken JSON."""
+    """n = 0 by file (no segments), a JSON list, broken JSON: one line each, no traceback."""
     f = tmp_path / "m.json"
     f.write_text(text)
     assert main(["curve", "--manipulator", str(f), "--num", "3"]) == 2
-    assert says in _one_error_line(capsys.readouterr().err)
+    assert says in one_error_line(capsys.readouterr().err)
 
 
 class _Partial:
@@ -274,10 +191,12 @@ def test_plot_curve_of_a_partial_curve_writes_the_figure_and_prints_the_note(cap
     assert err.strip() == f"tensegrity-opt: note: {_Partial.message}"
 
 
-@pytest.mark.parametrize("argv", [["buckling", "--a", "0.5", "--L0", "0.5"], ["buckling", "--a", "0.5", "--L0", "0.5", "--json"]])
+@pytest.mark.parametrize("argv", [["buckling", "--a", "0.5", "--L0", "0.5"],
+                                  ["buckling", "--a", "0.5", "--L0", "0.5", "--json"]])
 def test_a_physical_answer_is_no_usage_error(argv, capsys):
-    """Issue 18: the straight chain being unstable unloaded (K = k (b L0 - 2 (b^2 - a^2)) = 0.5 - 1.5 = -1 here,
+    """The straight chain being unstable unloaded (K = k (b L0 - 2 (b^2 - a^2)) = 0.5 - 1.5 = -1 here,
     by hand) is a fact about the chain: one line ``answer:`` naming K, status 1, not the usage error's 2."""
     assert main(argv) == 1
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and err[0].startswith("tensegrity-opt: answer: ") and "K = " in err[0] and "= -1 <= 0" in err[0]
+    assert len(err) == 1 and err[0].startswith("tensegrity-opt: answer: ")
+    assert "K = " in err[0] and "= -1 <= 0" in err[0]

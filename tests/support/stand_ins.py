@@ -1,0 +1,42 @@
+"""Stand-ins for long computations in a real server process, so that a test of a time limit expires on any machine.
+
+A server started as ``uvicorn --factory stand_ins:app_with_designs_that_never_end`` (this folder on its
+``PYTHONPATH``: :func:`server_env`) is the service with one change: ``POST /v1/design/critical-force`` on a chain
+of :data:`NEVER_ENDING_SEGMENTS` segments or more never ends by itself (the killable solver process sleeps an
+hour), every other request is the real one. The task is sent to the solver process by name, so the process imports
+it from here too.
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from pathlib import Path
+
+#: Design requests on chains this long (or longer) never end by themselves.
+NEVER_ENDING_SEGMENTS = 60
+HERE = Path(__file__).resolve().parent
+
+
+def design_critical_force_or_never(req):
+    """The service's design task, except on long chains: those sleep an hour."""
+    from service.adapters.inputs import segment_count
+    from service.tasks.control import design_critical_force_task
+
+    if segment_count(req.manipulator) >= NEVER_ENDING_SEGMENTS:
+        time.sleep(3600.0)
+    return design_critical_force_task(req)
+
+
+def app_with_designs_that_never_end():
+    """The service's app (settings from the environment) with :func:`design_critical_force_or_never`."""
+    from service.api.routes import design
+    from service.main import create_app
+
+    design.design_critical_force_task = design_critical_force_or_never
+    return create_app()
+
+
+def server_env(env: dict[str, str]) -> dict[str, str]:
+    """``env`` with this folder first on ``PYTHONPATH`` (the server and its solver processes import from here)."""
+    return {**env, "PYTHONPATH": os.pathsep.join(p for p in (str(HERE), env.get("PYTHONPATH")) if p)}
