@@ -20,8 +20,8 @@ import textwrap
 from pathlib import Path
 
 import grimp
-import pytest
 import numpy as np
+import pytest
 from scipy.sparse import coo_matrix
 from scipy.sparse.csgraph import connected_components
 

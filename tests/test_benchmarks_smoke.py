@@ -10,9 +10,8 @@ import numpy as np
 import pytest
 
 sys.path.insert(0, os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-from benchmarks import baselines as bl  # noqa: E402
-
 import tensegrity_opt as to  # noqa: E402
+from benchmarks import baselines as bl  # noqa: E402
 
 REL = 1e-8
 

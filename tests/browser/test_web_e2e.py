@@ -18,9 +18,9 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, uvicorn_factory_command
 
 import tensegrity_opt as to
-from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, uvicorn_factory_command
 
 HERE = Path(__file__).resolve().parent
 
@@ -29,8 +29,8 @@ def create_web_test_app():
     """uvicorn factory: the service's app with the page (``service.api.routes.web``) registered."""
     from starlette.routing import NoMatchFound
 
-    from service.main import create_app
     from service.api.routes import web
+    from service.main import create_app
 
     app = create_app()
     try:

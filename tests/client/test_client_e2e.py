@@ -11,9 +11,9 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, serve_command
 
 import tensegrity_opt as to
-from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, serve_command
 from tensegrity_opt.model.manipulator import Manipulator
 
 REPO = Path(__file__).resolve().parents[2]

@@ -5,12 +5,12 @@ import doctest
 import pytest
 
 import tensegrity_opt
-import tensegrity_opt.analyses.paths.continuation
-import tensegrity_opt.analyses.design.force_sensor
-import tensegrity_opt.analyses.paths.simulation
 import tensegrity_opt.analyses.design.follower
+import tensegrity_opt.analyses.design.force_sensor
 import tensegrity_opt.analyses.design.load_capacity
 import tensegrity_opt.analyses.design.stiffness_shaping
+import tensegrity_opt.analyses.paths.continuation
+import tensegrity_opt.analyses.paths.simulation
 
 
 @pytest.mark.parametrize("module", [tensegrity_opt, tensegrity_opt.analyses.paths.continuation,

@@ -7,6 +7,7 @@ import pytest
 from tensegrity_opt import shape_label, sign_string
 from tensegrity_opt.model.shapes import shape_labels
 
+
 @pytest.mark.parametrize("q,label,signs", [
     ([-1, 2, 3, 4], "U", "-+++"), ([1, -2, -3, -4], "U", "+---"),
     ([-1, 2, -3, 4], "Z", "-+-+"), ([1, -2, 3, -4], "Z", "+-+-"),

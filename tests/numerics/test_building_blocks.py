@@ -10,7 +10,7 @@ import threading
 import numpy as np
 import pytest
 
-from tensegrity_opt.numerics import Layout, build, buckling_design_nlp, preload_nlp, stiffness_nlp
+from tensegrity_opt.numerics import Layout, buckling_design_nlp, build, preload_nlp, stiffness_nlp
 from tensegrity_opt.numerics.design_nlp import tril_size
 from tensegrity_opt.numerics.per_thread import per_thread
 

@@ -4,10 +4,9 @@ comparison: both against a plain double loop written here, on random rows near t
 import numpy as np
 import pytest
 
+import tensegrity_opt as to
 from tensegrity_opt.numerics import SAME_Q, chain_solver, distinct, distinct_indices, distinct_rows, kernels, same
 from tensegrity_opt.numerics.results import LocalResult
-
-import tensegrity_opt as to
 
 
 def by_hand(Q, good, tol):

@@ -13,13 +13,12 @@ import textwrap
 
 import numpy as np
 import pytest
+from reference_model import Chain
 
 import tensegrity_opt as to
-from tensegrity_opt.numerics import SAME_Q, build, chain_solver, kernels
 from tensegrity_opt.analyses.equilibria.seeds import seed_starts, seeds
 from tensegrity_opt.analyses.equilibria.stability import inertia_of_reduced, reduced_hessian
-
-from reference_model import Chain
+from tensegrity_opt.numerics import SAME_Q, build, chain_solver, kernels
 
 CHAINS = {
     "paper": to.Manipulator.uniform(4),

@@ -4,8 +4,8 @@ import numpy as np
 import pytest
 
 import tensegrity_opt as to
-from tensegrity_opt.numerics import ChainFunctions, ChainSolver, chain_solver
 from tensegrity_opt.analyses.equilibria.stability import inertia_of
+from tensegrity_opt.numerics import ChainFunctions, ChainSolver, chain_solver
 
 
 def wavy_chain(n):

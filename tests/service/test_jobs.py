@@ -26,12 +26,13 @@ with warnings.catch_warnings():
     warnings.simplefilter("ignore")
     from fastapi.testclient import TestClient
 
+from servers import clean_env, free_port, stop, uvicorn_factory_command, wait_ready
+from service_helpers import GENEROUS_ENV, WAIT_SECONDS, service_settings
+
 from service import jobs
 from service.jobs import runner as jobs_runner
 from service.jobs import store as jobs_store
 from service.main import create_app
-from servers import clean_env, free_port, stop, uvicorn_factory_command, wait_ready
-from service_helpers import GENEROUS_ENV, WAIT_SECONDS, service_settings
 from tensegrity_opt.applications import sweeps as S
 
 ROOT = Path(__file__).resolve().parents[2]

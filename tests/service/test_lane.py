@@ -10,8 +10,8 @@ failure of that process (killed, refusing, timing out, raising) still answers th
 from __future__ import annotations
 
 import operator
-import pickle
 import os
+import pickle
 import signal
 import time
 import warnings

@@ -20,6 +20,7 @@ from tensegrity_opt.serialize import nullable, nullables, number, numbers
 pytest.importorskip("fastapi")
 
 import reference_serialisers as refs  # noqa: E402  (the pre-to_dict serialisers: the reference)
+
 from service import schemas as s  # noqa: E402
 from service.responses import json_ready  # noqa: E402  (a task's result as its body's content)
 from service.tasks import control as control_tasks  # noqa: E402  (the service's tasks: the same bodies)

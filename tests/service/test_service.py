@@ -24,12 +24,13 @@ with warnings.catch_warnings():
     warnings.simplefilter("ignore")
     from fastapi.testclient import TestClient
 
+from service_helpers import app_client
+
 import tensegrity_opt as to
-from tensegrity_opt.numerics.homotopy import homotopy_available
 from service import schemas
 from service.config import Settings
 from service.main import create_app
-from service_helpers import app_client
+from tensegrity_opt.numerics.homotopy import homotopy_available
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 REL = 1e-9
@@ -649,7 +650,7 @@ def test_response_size_limit_is_counted_while_rendering():
 
 
 def test_json_answers_are_rendered_in_the_solver_thread(monkeypatch):
-    import service.responses as deps        # render_task, the renderer the dispatcher hands to the threads
+    import service.responses as deps  # render_task, the renderer the dispatcher hands to the threads
 
     threads = []
     real = deps.render_json_bounded

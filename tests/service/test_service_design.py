@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 from fastapi.testclient import TestClient
 from pytest import approx
+from service_helpers import service_settings
 
 import tensegrity_opt as to
 from service.main import create_app
-from service_helpers import service_settings
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
 

@@ -19,8 +19,9 @@ def client():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         from fastapi.testclient import TestClient
-    from service.main import create_app
     from service_helpers import service_settings
+
+    from service.main import create_app
 
     app = create_app(service_settings())        # service.main registers the plot routes
     assert app.url_path_for("plot_curve") == "/v1/plots/curve"

@@ -16,7 +16,6 @@ import tensegrity_opt as to
 from service.execution import ProcessExecutor, Saturated, SolveTimeout, ThreadExecutor
 
 
-
 def busy(seconds: float) -> str:
     """Pure-Python work (interruptible between bytecodes)."""
     end = time.perf_counter() + seconds

@@ -27,7 +27,6 @@ import time
 from pathlib import Path
 
 import pytest
-
 from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, serve_command
 
 pytest.importorskip("httpx")

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import pytest
-
-import tensegrity_opt as to
 from servers import clean_env, free_port, running_server, serve_command
 from service_helpers import GENEROUS_ENV, WAIT_SECONDS
+
+import tensegrity_opt as to
 
 httpx = pytest.importorskip("httpx")
 pytest.importorskip("uvicorn")

@@ -23,13 +23,13 @@ import time
 
 import numpy as np
 import pytest
-
-import tensegrity_opt as to
 from servers import clean_env, free_port, running_server, serve_command
 from service_helpers import GENEROUS_ENV, GENEROUS_SECONDS, WAIT_SECONDS
-from tensegrity_opt.analyses.paths.continuation import Tracker
+
+import tensegrity_opt as to
 from tensegrity_opt.analyses.design.preload_control import PreloadController
 from tensegrity_opt.analyses.equilibria.rest import rest_configuration
+from tensegrity_opt.analyses.paths.continuation import Tracker
 
 websockets = pytest.importorskip("websockets")
 httpx = pytest.importorskip("httpx")
@@ -352,8 +352,9 @@ def test_a_step_over_the_time_limit_is_a_timeout_and_the_stream_goes_on(monkeypa
     """In process (a ``TestClient`` WebSocket): the inverse mode's steps are a stand-in that never ends, answered
     ``timeout`` at the step time limit (10 s; the opens and the real steps take a fraction of a second); the stream
     answers its next message, and the server serves other streams."""
-    from service.api.routes import stream as routes
     from service_helpers import app_client
+
+    from service.api.routes import stream as routes
 
     real = routes.step_task
 

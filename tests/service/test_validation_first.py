@@ -9,11 +9,11 @@ from __future__ import annotations
 import numpy as np
 import pytest
 from fastapi.testclient import TestClient
+from service_helpers import service_settings
 
 import tensegrity_opt as to
-from service.tasks import equilibria as compute
 from service.main import create_app
-from service_helpers import service_settings
+from service.tasks import equilibria as compute
 from tensegrity_opt.errors import InvalidParameterError, UnreachableTargetError
 
 PAPER = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}

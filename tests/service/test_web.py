@@ -18,12 +18,12 @@ import pytest
 
 pytest.importorskip("httpx")
 from fastapi.testclient import TestClient  # noqa: E402
+from service_helpers import service_settings  # noqa: E402
 from starlette.exceptions import HTTPException  # noqa: E402
 from starlette.routing import NoMatchFound  # noqa: E402
 
-from service_helpers import service_settings  # noqa: E402
-from service.main import create_app, openapi_document  # noqa: E402
 from service.api.routes import web  # noqa: E402
+from service.main import create_app, openapi_document  # noqa: E402
 
 
 def _has_page(app) -> bool:

@@ -21,6 +21,7 @@ import reference_paths as RP
 import tensegrity_opt as to
 from tensegrity_opt import Control, trace_branch
 
+
 # (a, b, k1, k2, L1_0, L2_0) per segment
 def _sym(a, b, k, L0):
     return (a, b, k, k, L0, L0)

@@ -44,11 +44,10 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import scipy.linalg as sla
-import scipy.optimize as so
-
 import reference_model as R
 import reference_paths as RP
+import scipy.linalg as sla
+import scipy.optimize as so
 
 Chain = R.Chain
 
@@ -443,7 +442,8 @@ def _joint_limit_point(chain: Chain, br: Branch, z_good, t_good, t_bad):
     try:
         qb = sysm.split(solve(t_bad), t_bad)[0]
         k = int(np.argmax(np.abs(qb) - lim))
-        h = lambda t: abs(sysm.split(solve(t), t)[0][k]) - lim[k]
+        def h(t):
+            return abs(sysm.split(solve(t), t)[0][k]) - lim[k]
         if not (h(t_good) < 0 < h(t_bad)):
             return None
         te = so.brentq(h, t_good, t_bad, xtol=1e-15, rtol=1e-15, maxiter=200)

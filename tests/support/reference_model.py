@@ -284,8 +284,10 @@ def fd_second_derivs(chain: Chain):
         return (4 * D(1) - D(2)) / 3
 
     K = np.array([d2(chain.energy, i, i) for i in range(n)])
-    tipx = lambda q: chain.tip(q)[0]
-    tipy = lambda q: chain.tip(q)[1]
+    def tipx(q):
+        return chain.tip(q)[0]
+    def tipy(q):
+        return chain.tip(q)[1]
     G = np.array([[-d2(tipx, i, k) for k in range(n)] for i in range(n)])
     G = 0.5 * (G + G.T)
     S0 = np.zeros(n)

@@ -54,10 +54,9 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
+import reference_model as R  # noqa: E402
 import scipy.linalg as sla
 import scipy.optimize as so
-
-import reference_model as R  # noqa: E402
 
 Chain = R.Chain
 
@@ -214,7 +213,8 @@ class PathSystem:
     def solve(self, z0, t, tol=1e-11):
         """Equilibrium at load ``t`` from ``z0``: scipy ``root`` (hybr, analytic Jacobian) and a
         Newton polish. Returns ``(z, ok)``."""
-        f = lambda z: self.residual(z, t)
+        def f(z):
+            return self.residual(z, t)
         try:
             sol = so.root(f, np.asarray(z0, float), jac=lambda z: self.jac_z(z, t), method="hybr",
                           options={"xtol": self.XTOL, "maxfev": 400})

@@ -16,11 +16,11 @@ with warnings.catch_warnings():
     warnings.simplefilter("ignore")
     from fastapi.testclient import TestClient
 
+from servers import GENEROUS_ENV, GENEROUS_SECONDS, WAIT_SECONDS  # noqa: F401 - the tests' one set of bounds
+
 from service.config import Settings
 from service.main import create_app
 from service.responses import render_json
-
-from servers import GENEROUS_ENV, GENEROUS_SECONDS, WAIT_SECONDS  # noqa: F401 - the tests' one set of bounds
 
 
 def service_settings(**overrides) -> Settings:

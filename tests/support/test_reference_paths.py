@@ -12,7 +12,6 @@ import functools
 
 import numpy as np
 import pytest
-
 import reference_model as R  # noqa: E402
 import reference_paths as RP  # noqa: E402
 

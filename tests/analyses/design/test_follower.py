@@ -12,11 +12,10 @@ import json
 import numpy as np
 import pytest
 import scipy.integrate as si
+from reference_model import Chain
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.follower import FollowerStep, PreloadFollower, Snap
-
-from reference_model import Chain
 
 #: A bistable segment in front of a straight one: tilting its double well (1 + d, 1 - d) ends the well it
 #: sits in, and the arm snaps into the other one.

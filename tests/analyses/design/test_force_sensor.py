@@ -16,9 +16,8 @@ import math
 
 import numpy as np
 import pytest
-from scipy.stats import chi2 as chi2_dist
-
 import reference_model as R  # noqa: E402
+from scipy.stats import chi2 as chi2_dist
 
 import tensegrity_opt as to  # noqa: E402
 from tensegrity_opt import InvalidParameterError, Manipulator, Segment  # noqa: E402

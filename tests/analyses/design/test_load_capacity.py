@@ -5,14 +5,12 @@ import json
 
 import numpy as np
 import pytest
+import reference_model as R  # noqa: E402
+import reference_paths as RP  # noqa: E402
 from clocks import tick_clock
 
 import tensegrity_opt as to
 from tensegrity_opt import InvalidParameterError
-
-import reference_model as R  # noqa: E402
-import reference_paths as RP  # noqa: E402
-
 
 PAPER = to.Manipulator.uniform(4)
 

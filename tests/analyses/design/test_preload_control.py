@@ -13,11 +13,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.optimize as so
+from reference_model import Chain
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.preload_control import PreloadController, preloads_for_trajectory
-
-from reference_model import Chain
 
 PAPER = to.Manipulator.uniform(4)
 BISTABLE = to.Manipulator.uniform(4, 0.5, 1.0, 1.0, 1.0)

@@ -16,13 +16,11 @@ import json
 
 import numpy as np
 import pytest
-
-import tensegrity_opt as to
-from tensegrity_opt import InfeasibleDesignError, InvalidParameterError
-
 import reference_model as R  # noqa: E402
 import reference_paths as RP  # noqa: E402
 
+import tensegrity_opt as to
+from tensegrity_opt import InfeasibleDesignError, InvalidParameterError
 
 PAPER = to.Manipulator.uniform(4)
 

@@ -3,14 +3,13 @@ paper's numbers, closed forms, the reference model's critical loads, SLSQP on th
 
 import numpy as np
 import pytest
+import reference_model as R  # noqa: E402
 import scipy.linalg as sla
 import scipy.optimize as so
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.strongest import K_FLOOR_REL, maximize_critical_force
 from tensegrity_opt.errors import InfeasibleDesignError
-
-import reference_model as R  # noqa: E402
 
 PAPER = to.Manipulator.uniform(4)
 P_UNIT = 0.572793          # docs/model.md: critical load of the paper's chain with K = 1

@@ -3,8 +3,14 @@
 import numpy as np
 import pytest
 
-from tensegrity_opt import (InvalidParameterError, Manipulator, Segment, StraightNotEquilibriumError,
-                            UnstableStraightError, critical_force)
+from tensegrity_opt import (
+    InvalidParameterError,
+    Manipulator,
+    Segment,
+    StraightNotEquilibriumError,
+    UnstableStraightError,
+    critical_force,
+)
 
 PAPER = Manipulator.uniform(4, a=1, b=1, k=1, L0=1)
 RTOL = 1e-4

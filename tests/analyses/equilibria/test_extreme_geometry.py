@@ -18,14 +18,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from extreme_chains import chains, check_equilibrium, deflection
 from hypothesis import HealthCheck, given, note, settings
 from hypothesis import strategies as st
 
 import tensegrity_opt as to
-from tensegrity_opt.errors import (NoEquilibriumError, SolverError, StraightNotEquilibriumError,
-                                   UnreachableTargetError)
-
-from extreme_chains import chains, check_equilibrium, deflection
+from tensegrity_opt.errors import NoEquilibriumError, SolverError, StraightNotEquilibriumError, UnreachableTargetError
 
 REFUSALS = (UnreachableTargetError, NoEquilibriumError, SolverError, StraightNotEquilibriumError)
 

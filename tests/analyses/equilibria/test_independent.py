@@ -15,9 +15,8 @@ import functools
 
 import numpy as np
 import pytest
-import scipy.optimize as so
-
 import reference_model as R  # noqa: E402
+import scipy.optimize as so
 
 import tensegrity_opt as to  # noqa: E402
 

@@ -4,8 +4,7 @@ import numpy as np
 import pytest
 from scipy.optimize import minimize
 
-from tensegrity_opt import (InvalidParameterError, Manipulator, UnsupportedError, energy_landscape,
-                            find_equilibria)
+from tensegrity_opt import InvalidParameterError, Manipulator, UnsupportedError, energy_landscape, find_equilibria
 from tensegrity_opt.analyses.equilibria.landscape import complete_configuration
 
 PAPER = Manipulator.uniform(4)

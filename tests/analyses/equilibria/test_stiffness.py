@@ -3,8 +3,15 @@
 import numpy as np
 import pytest
 
-from tensegrity_opt import (InvalidParameterError, Manipulator, Segment, cartesian_stiffness, find_equilibria,
-                            solve_equilibrium, solve_equilibrium_under_force)
+from tensegrity_opt import (
+    InvalidParameterError,
+    Manipulator,
+    Segment,
+    cartesian_stiffness,
+    find_equilibria,
+    solve_equilibrium,
+    solve_equilibrium_under_force,
+)
 
 PAPER = Manipulator.uniform(4)
 NONUNIFORM = Manipulator([Segment(1.0, 1.0, 1.0, 1.0), Segment(0.9, 1.3, 2.0, 1.5),

@@ -12,13 +12,12 @@ import shutil
 
 import numpy as np
 import pytest
+from clocks import tick_clock
+from reference_model import Chain
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.atlas import assemble_atlas, atlas_target, stability_atlas
 from tensegrity_opt.model.segment import Segment
-
-from clocks import tick_clock
-from reference_model import Chain
 
 BISTABLE = to.Manipulator.uniform(3, 0.5, 1.0, 1.0, 1.0)
 PRE_BENT = to.Manipulator([Segment(1.0, 1.0, 1.0, (1.05, 0.95))] * 2 + [Segment(1.0, 1.0, 1.0, 1.0)] * 2)

@@ -41,7 +41,6 @@ import functools
 
 import numpy as np
 import pytest
-
 import reference_atlas as RA
 
 from tensegrity_opt import Manipulator, Segment

@@ -15,11 +15,25 @@ import math
 
 import numpy as np
 import pytest
-from clocks import tick_clock
 import reference_model as R
 import reference_paths as RP
-from branch_checks import (STRAIGHT, bistable_rest, chain_of, check_branch, check_name, check_turning_point, events_of,
-                           lib, modes, ref, ref_limit, straight_branch, t_max_two_branch_points, wells)
+from branch_checks import (
+    STRAIGHT,
+    bistable_rest,
+    chain_of,
+    check_branch,
+    check_name,
+    check_turning_point,
+    events_of,
+    lib,
+    modes,
+    ref,
+    ref_limit,
+    straight_branch,
+    t_max_two_branch_points,
+    wells,
+)
+from clocks import tick_clock
 
 import tensegrity_opt as to
 from tensegrity_opt import Control, trace_branch

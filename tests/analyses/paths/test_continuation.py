@@ -4,11 +4,10 @@ targets in one call)."""
 
 import numpy as np
 import pytest
+from reference_model import Chain
 
 import tensegrity_opt as to
 from tensegrity_opt import find_equilibria, solve_equilibrium
-
-from reference_model import Chain
 
 PAPER = to.Manipulator.uniform(4)
 

@@ -19,12 +19,11 @@ import json
 
 import numpy as np
 import pytest
-from clocks import tick_clock
-import scipy.optimize as so
-from scipy.integrate import solve_ivp
-
 import reference_model as R  # noqa: E402
 import reference_paths as RP  # noqa: E402
+import scipy.optimize as so
+from clocks import tick_clock
+from scipy.integrate import solve_ivp
 
 import tensegrity_opt as to  # noqa: E402
 from tensegrity_opt import simulate  # noqa: E402

@@ -7,7 +7,6 @@ import sys
 from pathlib import Path
 
 import pytest
-
 from cli_checks import USAGE_ERRORS, one_error_line
 
 from tensegrity_opt.applications.cli import main
