@@ -96,7 +96,7 @@ def freeze(obj: Any, *, copy: bool = True) -> None:
                     if copy:                       # a private copy: the caller's array stays theirs
                         v = v.copy()
                         object.__setattr__(obj, f.name, v)
-                    v.flags.writeable = False
+                    v.setflags(write=False)
             elif isinstance(v, list):
                 object.__setattr__(obj, f.name, tuple(v))
     if isinstance(obj, Outcome):

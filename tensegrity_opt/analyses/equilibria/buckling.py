@@ -89,8 +89,8 @@ class Mode:
 
     def __post_init__(self) -> None:
         # critical_force builds the arrays for it: read-only in place (as freeze(copy=False), without its loop)
-        self.q.flags.writeable = False
-        self.vector.flags.writeable = False
+        self.q.setflags(write=False)
+        self.vector.setflags(write=False)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (an item of ``modes`` in ``POST /v1/buckling``): ``load``, ``q``, ``fy``,
@@ -139,7 +139,7 @@ class Buckling(Outcome):
 
     def __post_init__(self) -> None:
         # critical_force builds the arrays for it: read-only in place (as freeze(copy=False), without its loop)
-        self.loads.flags.writeable = False
+        self.loads.setflags(write=False)
         if not isinstance(self.modes, tuple):
             object.__setattr__(self, "modes", tuple(self.modes))
         if self.status not in self.STATUSES:

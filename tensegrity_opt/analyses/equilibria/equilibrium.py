@@ -116,10 +116,10 @@ class Equilibrium(Outcome, TipForce):
 
     def __post_init__(self) -> None:
         # the builders pass arrays they own: read-only in place (this is on the control loop's path)
-        self.q.flags.writeable = False
-        self.force.flags.writeable = False
-        self.tip.flags.writeable = False
-        self.hessian_eigenvalues.flags.writeable = False
+        self.q.setflags(write=False)
+        self.force.setflags(write=False)
+        self.tip.setflags(write=False)
+        self.hessian_eigenvalues.setflags(write=False)
         if self.status not in self.STATUSES:
             self._check_outcome()
 
