@@ -48,6 +48,7 @@ variable                               default    meaning
 ``TENSEGRITY_JOBS_RETENTION_DAYS``     7          finished jobs older than this are deleted; 0: kept forever
 ``TENSEGRITY_JOBS_LEASE_SECONDS``      60         a server's claim on a running job, renewed every third of it
 ``TENSEGRITY_JOBS_RESULTS_MAX_LIMIT``  10000      most rows in one JSON page of ``/v1/jobs/{id}/results``
+``TENSEGRITY_JOBS_RETRY_SECONDS``      5          a failing job store is retried this often (``/readyz``: 503 till then)
 =====================================  =========  ==================================================
 
 (auto): ``MAX_CONNECTIONS`` is the process's descriptor limit (``RLIMIT_NOFILE``) minus 64 for the
@@ -198,6 +199,9 @@ class Settings(BaseSettings):
                                            "whose lease expired (its server died) is taken over by another server")
     jobs_results_max_limit: int = Field(10_000, ge=1, le=1_000_000,
                                         description="most rows in one JSON page of GET /v1/jobs/{id}/results")
+    jobs_retry_seconds: float = Field(
+        5.0, ge=0.05, le=3600, description="while the job store fails (a full disk, an unreadable file ...), it is "
+                                           "retried this often; /readyz answers 503 until a retry succeeds")
 
     @field_validator("jobs_scheduler", mode="before")
     @classmethod

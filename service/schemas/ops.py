@@ -11,11 +11,21 @@ class Health(BaseModel):
     status: Literal["ok"]
 
 
+class JobsHealth(BaseModel):
+    status: Literal["ok", "failing"] = Field(description="failing: the job store cannot be used now (the jobs "
+                                                         "API answers 503 jobs_unavailable); it is retried")
+    message: str | None = Field(None, description="what fails (never where on disk)")
+    since: float | None = Field(None, description="epoch seconds of the first failure")
+
+
 class Ready(BaseModel):
-    status: Literal["ready", "starting"]
+    status: Literal["ready", "starting", "degraded"] = Field(
+        description="ready (200); starting (503); degraded (503): the solvers answer but the job store fails "
+                    "(see jobs)")
     workers: int
     queue_size: int
     in_flight: int
+    jobs: JobsHealth
 
 
 class Limits(BaseModel):
