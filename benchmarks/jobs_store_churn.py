@@ -17,6 +17,7 @@ Prints, before the first burst and after the last one: the open connections to t
 from __future__ import annotations
 
 import argparse
+import http.client
 import json
 import os
 import socket
@@ -66,13 +67,18 @@ def burst(base: str, concurrency: int) -> list[int]:
     """``concurrency`` concurrent ``GET /v1/jobs?limit=1``, each on its own connection; their statuses."""
     statuses: list[int] = []
     gate = threading.Barrier(concurrency)
+    host, port = base.rsplit("/", 1)[1].split(":")
 
     def one() -> None:
         gate.wait()
+        con = http.client.HTTPConnection(host, port, timeout=120)
         try:
-            statuses.append(httpx.get(base + "/v1/jobs", params={"limit": 1}, timeout=120).status_code)
-        except httpx.HTTPError:
+            con.request("GET", "/v1/jobs?limit=1")
+            statuses.append(con.getresponse().status)
+        except OSError:
             statuses.append(0)
+        finally:
+            con.close()
 
     threads = [threading.Thread(target=one) for _ in range(concurrency)]
     for t in threads:

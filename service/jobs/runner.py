@@ -446,9 +446,10 @@ class JobRunner:
         except Exception as exc:
             if isinstance(exc, (sqlite3.Error, JobsUnavailable)):
                 raise
+            detail = exc.strerror if isinstance(exc, OSError) and exc.filename else exc   # the job names no file
             msg = format_error(exc) if not isinstance(exc, (OSError, TimeoutError)) else \
-                f"scheduler_unreachable: {type(exc).__name__}: {exc}"
-            log.warning("job %s failed: %s", job_id, msg)
+                f"scheduler_unreachable: {type(exc).__name__}: {detail}"
+            log.warning("job %s failed: %s (%r)", job_id, msg, exc)
             self.store.release(job_id, self.id, status="failed", message=msg[:2000], finished=True)
             return
         if slot.stop.is_set():

@@ -4,7 +4,8 @@ A server started as ``uvicorn --factory stand_ins:app_with_designs_that_never_en
 ``PYTHONPATH``: :func:`server_env`) is the service with one change: ``POST /v1/design/critical-force`` on a chain
 of :data:`NEVER_ENDING_SEGMENTS` segments or more never ends by itself (the killable solver process sleeps an
 hour), every other request is the real one. The task is sent to the solver process by name, so the process imports
-it from here too.
+it from here too. ``stand_ins:app_with_short_lived_request_threads`` is the service whose request threads exit
+after a fraction of a second idle (thread churn, fast).
 """
 
 from __future__ import annotations
@@ -40,3 +41,19 @@ def app_with_designs_that_never_end():
 def server_env(env: dict[str, str]) -> dict[str, str]:
     """``env`` with this folder first on ``PYTHONPATH`` (the server and its solver processes import from here)."""
     return {**env, "PYTHONPATH": os.pathsep.join(p for p in (str(HERE), env.get("PYTHONPATH")) if p)}
+
+
+#: Seconds an idle request thread lives in :func:`app_with_short_lived_request_threads` (AnyIO's default: 10).
+REQUEST_THREAD_IDLE_SECONDS = 0.05
+
+
+def app_with_short_lived_request_threads():
+    """The service's app (settings from the environment) whose request threads (AnyIO's worker threads, which run
+    the plain route functions) exit after :data:`REQUEST_THREAD_IDLE_SECONDS` idle instead of 10 s: bursts of
+    requests a fraction of a second apart each run on fresh threads (thread churn without the wait)."""
+    import anyio._backends._asyncio as anyio_asyncio
+
+    from service.main import create_app
+
+    anyio_asyncio.WorkerThread.MAX_IDLE_TIME = REQUEST_THREAD_IDLE_SECONDS
+    return create_app()

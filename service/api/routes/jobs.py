@@ -43,7 +43,7 @@ log = logging.getLogger("service.jobs")
 
 _NOT_FOUND = {"code": "not_found", "message": "no job with id '0123456789abcdef0123456789abcdef'", "field": "id"}
 _UNAVAILABLE = {"code": "jobs_unavailable",
-                "message": "cannot open the job store tensegrity_jobs.sqlite3: unable to open database file"}
+                "message": "the job store (TENSEGRITY_JOBS_DB) cannot be written: database or disk is full"}
 _INVALID = {
     "validation_error": ERRORS[422]["validation_error"],
     "invalid_parameter": {"summary": "the spec does not fit the analysis", "value": {
