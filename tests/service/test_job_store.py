@@ -284,3 +284,20 @@ def test_a_real_full_disk_under_a_real_server_clears_once_freed(tmp_path):
                     _job_done(client, client.post("/v1/jobs", json=SPEC))
         finally:
             stop(proc)
+
+
+def test_a_job_failed_by_an_os_error_names_no_file(tmp_path, monkeypatch):
+    """An OS error that ends a job (its message is in the job's body) says what failed, not which file."""
+    from service.jobs import runner as jobs_runner
+
+    secret = tmp_path / "somewhere" / "private"
+
+    def plan_fails(spec):
+        raise PermissionError(13, "Permission denied", str(secret))
+
+    monkeypatch.setattr(jobs_runner, "plan_sweep", plan_fails)
+    with TestClient(create_app(service_settings(jobs_db=str(tmp_path / "jobs.sqlite3")))) as client:
+        job_id = client.post("/v1/jobs", json=SPEC).json()["id"]
+        wait_until(lambda: client.get(f"/v1/jobs/{job_id}").json()["status"] == "failed", "the job fails")
+        r = client.get(f"/v1/jobs/{job_id}")
+        assert "Permission denied" in r.json()["message"] and str(tmp_path) not in r.text, r.text
