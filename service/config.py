@@ -33,7 +33,7 @@ variable                               default    meaning
 ``TENSEGRITY_MAX_BODY_BYTES``          1048576    request bodies above this get 413
 ``TENSEGRITY_MAX_RESPONSE_BYTES``      8388608    JSON answers above this: 422 ``response_too_large``
 ``TENSEGRITY_WARMUP``                  true       build each thread's solvers (n = 4) at start-up
-``TENSEGRITY_SHUTDOWN_TIMEOUT``        1          seconds requests in flight get at SIGTERM, then cancelled
+``TENSEGRITY_SHUTDOWN_TIMEOUT``        1          seconds requests in flight get at SIGTERM, then cancelled (503)
 ``TENSEGRITY_MAX_STREAM_CONNECTIONS``  16         open ``/v1/control/stream`` WebSockets (beyond: closed with 1013)
 ``TENSEGRITY_STREAM_IDLE_TIMEOUT``     60         seconds a stream may stay silent (then closed with 1001)
 ``TENSEGRITY_JOBS_DB``                 (file)     SQLite job store, ``tensegrity_jobs.sqlite3`` in the working dir
@@ -168,7 +168,8 @@ class Settings(BaseSettings):
     shutdown_timeout: float = Field(
         1.0, ge=0, le=600,
         description="seconds requests in flight get to finish at SIGTERM/SIGINT before they are cancelled "
-                    "(uvicorn's timeout_graceful_shutdown; tensegrity-opt serve)")
+                    "and answered 503 shutting_down with Retry-After (uvicorn's timeout_graceful_shutdown; "
+                    "tensegrity-opt serve)")
     max_stream_connections: int = Field(
         16, ge=1, le=1024,
         description="control streams (/v1/control/stream) open at once, each with its own solver thread; a "

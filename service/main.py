@@ -124,9 +124,11 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     # declared, X-API-Key included, whether or not this server has keys configured.
     app.openapi = openapi_document  # type: ignore[method-assign]
 
-    # Order (outermost first): metrics, CORS, body size limit, HEAD/OPTIONS, the app.
+    # Order (outermost first): metrics, CORS, the answer of a request cut by shutdown, body size limit,
+    # HEAD/OPTIONS, the app.
     app.add_middleware(MethodsMiddleware, routes=lambda: app.router.routes)
     app.add_middleware(BodyLimitMiddleware, max_bytes=settings.max_body_bytes)
+    app.add_middleware(errors.ShutdownAnswerMiddleware, retry_after=settings.retry_after)
     if settings.cors_origins:
         app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=CORS_METHODS,
                            allow_headers=["Content-Type", "X-API-Key"], expose_headers=["Retry-After"])
