@@ -24,6 +24,8 @@ variable                               default    meaning
 ``TENSEGRITY_HEAVY_GRACE``             0.5        seconds after a 504 before a design process still busy is killed
 ``TENSEGRITY_REQUEST_TIMEOUT``         10         seconds to receive a whole request (headers + body): 408/closed
 ``TENSEGRITY_MAX_CONNECTIONS``         (auto)     open connections; beyond, the oldest idle/half-sent one is closed
+``TENSEGRITY_MAX_HEADER_BYTES``        65536      bytes of a request's line and headers (431 above)
+``TENSEGRITY_MAX_HEADERS``             100        header fields of one request (431 above)
 ``TENSEGRITY_LIMIT_CONCURRENCY``       (auto)     uvicorn ``limit_concurrency``: 503 beyond this many requests
 ``TENSEGRITY_KEEP_ALIVE``              5          seconds an idle keep-alive connection stays open
 ``TENSEGRITY_BACKLOG``                 2048       listen backlog (connections not accepted yet)
@@ -52,9 +54,9 @@ variable                               default    meaning
 
 (auto): ``MAX_CONNECTIONS`` is the process's descriptor limit (``RLIMIT_NOFILE``) minus 64 for the
 server's own files, at most 1024; ``LIMIT_CONCURRENCY`` that plus 8 (the cap, which makes room by closing
-idle or half-sent connections, decides first). The request timeout and the
-connection cap are enforced by ``tensegrity-opt serve`` (:mod:`service.api.connections`); an app started by a
-bare ``uvicorn service.main:app`` has only what uvicorn's own options give.
+idle or half-sent connections, decides first). The request timeout, the
+connection cap and the header bounds are enforced by ``tensegrity-opt serve`` (:mod:`service.api.connections`);
+an app started by a bare ``uvicorn service.main:app`` has only what uvicorn's own options give.
 """
 
 from __future__ import annotations
@@ -154,6 +156,12 @@ class Settings(BaseSettings):
                                         description="open connections (default: descriptor limit - 64, <= 1024)")
     limit_concurrency: int | None = Field(None, ge=1, le=1_000_000,
                                           description="uvicorn limit_concurrency (default: max_connections + 8)")
+    max_header_bytes: int = Field(
+        65536, ge=1024, le=16 * 1024 * 1024,
+        description="bytes of a request's line and headers together (above: 431 headers_too_large and the "
+                    "connection closed; tensegrity-opt serve)")
+    max_headers: int = Field(100, ge=8, le=10000,
+                             description="header fields of one request (above: 431 headers_too_large)")
     keep_alive: int = Field(5, ge=1, le=3600, description="seconds an idle keep-alive connection stays open")
     backlog: int = Field(2048, ge=1, le=65535, description="listen backlog")
     retry_after: int = Field(1, ge=0, description="Retry-After seconds sent with 503")

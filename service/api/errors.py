@@ -28,6 +28,8 @@ request body over ``max_body_bytes``                   413     ``body_too_large`
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
 ``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``
 job store unusable (damaged, read-only, deleted ...)   503     ``jobs_unavailable`` (+ ``Retry-After``)
+request line and headers over ``max_header_bytes`` /  431     ``headers_too_large`` (``tensegrity-opt serve``:
+more than ``max_headers`` header fields                        :mod:`service.api.connections`, before the app)
 request cut by the server's shutdown (still running    503     ``shutting_down`` (+ ``Retry-After``;
 ``TENSEGRITY_SHUTDOWN_TIMEOUT`` s after SIGTERM)               :class:`ShutdownAnswerMiddleware`)
 solve time limit exceeded (also the library's          504     ``timeout``, ``status`` when the library
@@ -44,6 +46,7 @@ of the request (``"manipulator.segments[2].L0"``, ``"manipulator.n"``, ``"target
 from __future__ import annotations
 
 import asyncio
+import json
 import logging
 import re
 from typing import Any
@@ -67,7 +70,7 @@ from .middleware import allowed_methods
 log = logging.getLogger("service.errors")
 
 __all__ = ["ApiError", "ServiceError", "error_body", "to_api_error", "status_for", "install", "error_response",
-           "validation_body", "ShutdownAnswerMiddleware", "SHUTTING_DOWN"]
+           "validation_body", "ShutdownAnswerMiddleware", "SHUTTING_DOWN", "raw_error_response"]
 
 
 class ServiceError(Exception):
@@ -128,6 +131,16 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
 
 def error_response(status_code: int, body: dict[str, Any], headers: dict[str, str] | None = None) -> JSONResponse:
     return JSONResponse(status_code=status_code, content=body, headers=headers)
+
+
+def raw_error_response(status_code: int, body: dict[str, Any]) -> bytes:
+    """A whole HTTP/1.1 answer (``Connection: close``) with the error ``body``, for what the HTTP protocol refuses
+    before the application sees a request (:mod:`service.api.connections`: malformed or oversized heads, requests
+    not received in time)."""
+    content = json.dumps(body, separators=(",", ":")).encode()
+    reason = {400: b"Bad Request", 408: b"Request Timeout", 431: b"Request Header Fields Too Large"}
+    return (b"HTTP/1.1 %d %s\r\ncontent-type: application/json\r\nconnection: close\r\ncontent-length: %d\r\n\r\n"
+            % (status_code, reason.get(status_code, b""), len(content)) + content)
 
 
 def _loc_path(loc: tuple[Any, ...] | list[Any]) -> str:
