@@ -4,8 +4,8 @@
 Each reproducer starts its own server (``python -m service serve`` on a free loopback port, from the code on
 ``sys.path``: run it with ``PYTHONPATH=<a checkout>`` to measure another tree) and prints what it saw:
 
-* ``shutdown``: an n = 200 force-deflection curve (500 points) and an n = 150 ``/v1/equilibria`` in flight, SIGTERM after
-  1.5 s: the status, content type and ``Retry-After`` of each answer, and how long the server took to exit.
+* ``shutdown``: an n = 200 force-deflection curve (500 points) and an n = 150 ``/v1/equilibria`` in flight,
+  SIGTERM after 1.5 s: the status, content type and ``Retry-After`` of each answer, and the time to exit.
 * ``headers``: one request with an 8 MB header (its status), then 20 connections each sending 16 MB of headers
   that never end: the server's RSS before and after (``/proc/<pid>/status``).
 * ``pipelining``: 100 connections each pipelining 20 ``GET /openapi.json`` (read to the end), while a probe

@@ -314,7 +314,7 @@ def test_the_api_key_in_the_header_or_the_query(server):
         await accepted(None, f"?api_key={KEY}")
 
     run(go())
-    assert httpx.get(base + "/version").json()["limits"]["max_stream_connections"] == 2
+    assert httpx.get(base + "/version", headers={"X-API-Key": KEY}).json()["limits"]["max_stream_connections"] == 2
 
 
 # ---------------------------------------------------------------------------- limits
