@@ -31,7 +31,7 @@ variable                               default    meaning
 ``TENSEGRITY_BACKLOG``                 2048       listen backlog (connections not accepted yet)
 ``TENSEGRITY_RETRY_AFTER``             1          ``Retry-After`` seconds sent with 503
 ``TENSEGRITY_API_KEYS``                (empty)    comma-separated or JSON list; empty: auth off
-``TENSEGRITY_CORS_ORIGINS``            (empty)    comma-separated or JSON list; empty: CORS off
+``TENSEGRITY_CORS_ORIGINS``            (empty)    comma-separated or JSON list; empty: CORS off (also the stream's)
 ``TENSEGRITY_MAX_BODY_BYTES``          1048576    request bodies above this get 413
 ``TENSEGRITY_MAX_RESPONSE_BYTES``      8388608    JSON answers above this: 422 ``response_too_large``
 ``TENSEGRITY_WARMUP``                  true       build each thread's solvers (n = 4) at start-up
@@ -166,7 +166,9 @@ class Settings(BaseSettings):
     backlog: int = Field(2048, ge=1, le=65535, description="listen backlog")
     retry_after: int = Field(1, ge=0, description="Retry-After seconds sent with 503")
     api_keys: Annotated[list[str], NoDecode] = Field(default_factory=list, description="accepted X-API-Key values")
-    cors_origins: Annotated[list[str], NoDecode] = Field(default_factory=list, description="allowed CORS origins")
+    cors_origins: Annotated[list[str], NoDecode] = Field(
+        default_factory=list, description="allowed CORS origins; also the web pages' origins that may open the "
+                                          "control stream besides the server's own (others: 403 forbidden_origin)")
     max_body_bytes: int = Field(1024 * 1024, ge=1, description="largest request body (413 above)")
     max_response_bytes: int = Field(
         8 * 1024 * 1024, ge=1024,

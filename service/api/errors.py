@@ -24,6 +24,8 @@ atlas of a job that is not done                        409     ``job_not_done`` 
 answer over ``max_response_bytes`` (estimated before   422     ``response_too_large`` (``field``: the input
 solving where possible, else counted while rendering)          setting the size, ``details.max_response_bytes``)
 missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
+control stream handshake from another web origin      403     ``forbidden_origin`` (``field``: ``Origin``;
+                                                               before the upgrade)
 request body over ``max_body_bytes``                   413     ``body_too_large``
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
 ``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``

@@ -2,7 +2,7 @@
 
 ``/openapi.json`` is the application's document (:func:`service.main.openapi_document`), encoded the first time it
 is asked for (per ``root_path``, which FastAPI adds to ``servers``) and then answered from those bytes: encoding the
-~370 KB document per request held the event loop ~10 ms each, and 100 connections pipelining it kept ``/healthz``
+~390 KB document takes 10-30 ms of the event loop, and per request 100 connections pipelining it keep ``/healthz``
 waiting for tens of seconds. With API keys configured it needs a key like the API (``install(app, dependencies)``).
 
 ``/docs`` (Swagger UI) and ``/redoc`` load their JavaScript and CSS from this server,
