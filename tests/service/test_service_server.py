@@ -1,10 +1,17 @@
-"""The real server process: ``tensegrity-opt serve`` on a free loopback port, called over HTTP."""
+"""The real server process: ``tensegrity-opt serve`` on a free loopback port, called over HTTP; its shutdown."""
 
 from __future__ import annotations
 
+import asyncio
+import json
+import signal
+import threading
+import time
+
 import pytest
-from servers import clean_env, free_port, running_server, serve_command
+from servers import clean_env, free_port, running_server, serve_command, uvicorn_factory_command
 from service_helpers import GENEROUS_ENV, WAIT_SECONDS
+from stand_ins import NEVER_ENDING_SEGMENTS, server_env
 
 import tensegrity_opt as to
 
@@ -35,10 +42,6 @@ def test_sigterm_is_prompt_with_a_heavy_request_in_flight(tmp_path):
     """SIGTERM with a design request in flight (building its problem alone takes 20-40 s, then minutes of IPOPT)
     ends the server within the shutdown time limit (1 s) and the kill of the solver process: in well under 10 s,
     however loaded the machine, where waiting for the request would take minutes."""
-    import signal
-    import threading
-    import time
-
     env = clean_env(TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"))
     with running_server(serve_command(free_port()), env, ready="/readyz", timeout=WAIT_SECONDS) as (proc, base):
         heavy = {"manipulator": {"n": 60}, "vary": ["a", "b", "k", "L0"]}      # ~10 s and more of IPOPT
@@ -60,3 +63,73 @@ def test_sigterm_is_prompt_with_a_heavy_request_in_flight(tmp_path):
         proc.wait(WAIT_SECONDS)
         took = time.monotonic() - start
     assert took < 10.0, f"SIGTERM took {took:.2f} s"
+
+
+def test_a_cancelled_request_is_answered_503_shutting_down():
+    """The shutdown's answer without a server: a request whose task is cancelled before its answer started gets the
+    JSON 503 with Retry-After; one cancelled after its answer started is cut (the cancellation goes on)."""
+    from service.api.errors import ShutdownAnswerMiddleware
+
+    async def never_answers(scope, receive, send):
+        raise asyncio.CancelledError
+
+    async def half_answers(scope, receive, send):
+        await send({"type": "http.response.start", "status": 200, "headers": []})
+        raise asyncio.CancelledError
+
+    async def call(app) -> list[dict]:
+        sent: list[dict] = []
+
+        async def receive():
+            return {"type": "http.request", "body": b"", "more_body": False}
+
+        async def send(message):
+            sent.append(message)
+
+        await ShutdownAnswerMiddleware(app, retry_after=3)({"type": "http", "method": "POST", "path": "/v1/x",
+                                                             "headers": []}, receive, send)
+        return sent
+
+    start, body = asyncio.run(call(never_answers))
+    assert start["status"] == 503
+    headers = {k.decode(): v.decode() for k, v in start["headers"]}
+    assert headers["retry-after"] == "3" and headers["content-type"] == "application/json"
+    assert json.loads(body["body"])["code"] == "shutting_down"
+    with pytest.raises(asyncio.CancelledError):
+        asyncio.run(call(half_answers))
+
+
+@pytest.mark.slow
+def test_sigterm_answers_a_request_in_flight_503_shutting_down(tmp_path):
+    """SIGTERM with a request that never ends by itself (the stand-in design request): after the shutdown time limit
+    (1 s) the request gets the service's JSON 503 ``shutting_down`` with Retry-After, and the server exits."""
+    env = server_env(clean_env(TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"), TENSEGRITY_WARMUP="false",
+                               TENSEGRITY_INLINE_PROCESSES="0", TENSEGRITY_RETRY_AFTER="7",
+                               TENSEGRITY_SOLVE_TIMEOUT=str(WAIT_SECONDS)))
+    cmd = uvicorn_factory_command("stand_ins:app_with_designs_that_never_end", free_port(),
+                                  "--timeout-graceful-shutdown", "1")
+    heavy = {"manipulator": {"n": NEVER_ENDING_SEGMENTS}, "vary": ["a", "b", "k", "L0"]}
+    with running_server(cmd, env, ready="/readyz", timeout=WAIT_SECONDS) as (proc, base):
+        answers: list = []
+
+        def post() -> None:
+            try:
+                answers.append(httpx.post(base + "/v1/design/critical-force", json=heavy, timeout=WAIT_SECONDS))
+            except httpx.HTTPError as exc:
+                answers.append(exc)
+
+        thread = threading.Thread(target=post, daemon=True)
+        thread.start()
+        deadline = time.monotonic() + WAIT_SECONDS
+        while httpx.get(base + "/readyz", timeout=WAIT_SECONDS).json()["in_flight"] == 0:
+            assert time.monotonic() < deadline and thread.is_alive(), answers
+            time.sleep(0.05)
+        proc.send_signal(signal.SIGTERM)
+        proc.wait(WAIT_SECONDS)
+        thread.join(WAIT_SECONDS)
+    (r,) = answers
+    assert isinstance(r, httpx.Response), r
+    assert r.status_code == 503, r.text
+    assert r.headers["content-type"] == "application/json" and r.headers["retry-after"] == "7"
+    body = r.json()
+    assert body["code"] == "shutting_down" and body["message"]
