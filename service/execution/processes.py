@@ -47,6 +47,7 @@ from typing import Any
 
 from .executor import Executor, Saturated, SolveTimeout, Unavailable
 from .ipc import FRAME, WARMUP, UnreadableReply, encode, ready
+from .shedding import MARGIN, ServiceTimes, expected_wait, refusal, remaining
 
 log = logging.getLogger("service.execution")
 
@@ -72,6 +73,8 @@ class _Child(asyncio.Protocol):
         self.transport: asyncio.Transport | None = None
         self.buffer = bytearray()
         self.calls: dict[int, asyncio.Future[Any]] = {}   # sent, not answered (timed-out ones included)
+        self.sent: dict[int, float] = {}                   # when each was sent (the executor's clock)
+        self.kinds: dict[int, Any] = {}                    # what each is (for the estimates of service time)
         self.reserved = 0                                  # handed to a waiter that has not sent yet
         self.ready = False
         self.killed = False                                # by the executor (past the grace of a deadline)
@@ -142,10 +145,13 @@ class ProcessExecutor(Executor):
         self.env = env
         self._children: list[_Child] = []
         self._waiters: collections.deque[asyncio.Future[_Child]] = collections.deque()
+        self._waiting: dict[asyncio.Future[_Child], Any] = {}     # each waiter's kind of call
         self._tasks: set[asyncio.Task[None]] = set()
         self._next_id = 0
         self._closing = False
         self._broken = False        # a child never got ready: none is started again
+        self.service_times = ServiceTimes()   # the calls' service time, for load shedding (:mod:`.shedding`)
+        self.shed = 0               # calls refused by their expected wait
         self.completed = 0          # calls answered (statistics, tests)
         self.restarts = 0           # children replaced
         self.killed = 0             # children killed past the grace of a deadline
@@ -244,8 +250,19 @@ class ProcessExecutor(Executor):
         """Calls waiting for room plus calls in the children (those past their deadline included)."""
         return len(self._waiters) + sum(len(c.calls) for c in self._children)
 
+    def expected_wait(self) -> float:
+        """Seconds a new call would wait for room, by the running estimate of the service time (:mod:`.shedding`):
+        the calls in the children (in order in each) and those waiting, shared by the children."""
+        times = self.service_times
+        now = times.clock()
+        busy = [sum(remaining(sent, times.estimate(False, c.kinds.get(i)), now) for i, sent in c.sent.items())
+                for c in self._children]
+        return expected_wait(busy, [times.estimate(False, kind) for kind in self._waiting.values()],
+                             len(self._children) or self.workers)
+
     # ------------------------------------------------------------------ calls
-    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False,
+                  kind: Any = None) -> Any:
         """``fn(*args)`` in a child (``fn`` importable by name, the arguments and the answer picklable)."""
         if self._closing:
             raise Saturated(f"the {self.label}es are shutting down")
@@ -260,6 +277,10 @@ class ProcessExecutor(Executor):
                     raise Unavailable(f"no {self.label} is ready with room for the call")
                 raise Saturated(f"all {self.workers} {self.label}es are busy and {self.queue_size} requests are "
                                 "queued")
+            wait, own = self.expected_wait(), self.service_times.estimate(False, kind)
+            if wait > 0.0 and MARGIN * (wait + own) >= timeout:
+                self.shed += 1
+                raise refusal(f"all {self.workers} {self.label}es", wait, own, timeout)
         deadline = time.monotonic() + timeout
         call_id = self._next_id
         self._next_id += 1
@@ -267,13 +288,15 @@ class ProcessExecutor(Executor):
         loop = asyncio.get_running_loop()
         left = timeout
         if child is None:
-            child = await self._acquire(loop, deadline, timeout)
+            child = await self._acquire(loop, deadline, timeout, kind)
             child.reserved -= 1
             if child not in self._children:             # it stopped between the hand-over and now
                 raise Unavailable(f"the {self.label} stopped")
             left = max(deadline - time.monotonic(), 0.0)
         fut: asyncio.Future[Any] = loop.create_future()
         child.calls[call_id] = fut
+        child.sent[call_id] = self.service_times.clock()
+        child.kinds[call_id] = kind
         assert child.transport is not None
         child.transport.write(frame)
         # one timer instead of asyncio.wait_for (which costs ~20 us of loop time per call)
@@ -300,10 +323,11 @@ class ProcessExecutor(Executor):
                 best = c
         return best
 
-    async def _acquire(self, loop: asyncio.AbstractEventLoop, deadline: float, timeout: float) -> _Child:
+    async def _acquire(self, loop: asyncio.AbstractEventLoop, deadline: float, timeout: float, kind: Any) -> _Child:
         """Wait for room in a child (until ``deadline``); the child comes with one call reserved."""
         w: asyncio.Future[_Child] = loop.create_future()
         self._waiters.append(w)
+        self._waiting[w] = kind
         try:
             return await asyncio.wait_for(w, max(deadline - time.monotonic(), 0.0))
         except BaseException as exc:                    # timed out, or the request went away
@@ -314,6 +338,7 @@ class ProcessExecutor(Executor):
                 raise SolveTimeout(timeout) from None
             raise
         finally:
+            self._waiting.pop(w, None)
             try:
                 self._waiters.remove(w)
             except ValueError:
@@ -357,6 +382,9 @@ class ProcessExecutor(Executor):
                 child.proc.kill()
             return
         fut = child.calls.pop(call_id, None)
+        sent, kind = child.sent.pop(call_id, None), child.kinds.pop(call_id, None)
+        if sent is not None:
+            self.service_times.record(False, self.service_times.clock() - sent, kind)
         self.completed += 1
         if fut is not None and not fut.done():
             if ok:
