@@ -11,11 +11,32 @@ class Health(BaseModel):
     status: Literal["ok"]
 
 
+class ProcessesState(BaseModel):
+    """Solver processes of one kind and where they stand."""
+
+    state: Literal["up", "starting", "restarting", "down"] = Field(
+        description="up: every process ready; starting: warming up; restarting: processes were lost and are "
+                    "replaced (after a delay growing with each loss in a row, at most 30 s); down: stopped, or "
+                    "this platform cannot start them")
+    ready: int = Field(description="processes ready")
+    workers: int = Field(description="processes configured")
+    restarts: int = Field(description="processes started to replace lost ones since the server started")
+
+
 class Ready(BaseModel):
     status: Literal["ready", "starting"]
     workers: int
     queue_size: int
     in_flight: int
+    processes: dict[Literal["fast", "design"], ProcessesState] = Field(
+        default_factory=dict,
+        description="the solver processes: fast (the short chains' bounded first try; while it is not up the solver "
+                    "threads answer those requests, slower) and design (/v1/design/*, plans, stiffness shaping); "
+                    "absent when the server has none")
+    degraded: list[Literal["fast_path", "design_processes"]] = Field(
+        default_factory=list,
+        description="what works degraded while the server answers: fast_path (the fast solver process is not up), "
+                    "design_processes (the design processes are restarting or down: those requests get 503)")
 
 
 class Limits(BaseModel):

@@ -412,3 +412,42 @@ def test_a_process_call_that_could_not_finish_before_its_deadline_is_refused_at_
             pool.shutdown()
 
     asyncio.run(scenario())
+
+
+@pytest.mark.slow
+def test_the_losses_in_a_row_start_over_after_a_healthy_period(monkeypatch):
+    """Children killed from outside: each loss in a row counts (the delay grows with the count) until a child has
+    been ready for the healthy period; then the next loss is the first again."""
+    import os
+    import signal
+
+    from service.execution import processes
+
+    monkeypatch.setattr(processes, "RESTART_BASE", 0.0)
+
+    async def kill_and_wait(pool: ProcessExecutor, restarts: int) -> None:
+        [pid] = pool.pids
+        os.kill(pid, signal.SIGKILL)
+        deadline = time.monotonic() + WAIT
+        while not (pool.restarts == restarts and pool.ready) and time.monotonic() < deadline:
+            await asyncio.sleep(0.01)
+        assert pool.restarts == restarts and pool.ready and pool.state == "up"
+
+    async def scenario() -> None:
+        pool = ProcessExecutor(1)
+        pool.start()
+        assert await pool.wait_ready(WAIT) and pool.state == "up"
+        try:
+            monkeypatch.setattr(processes, "HEALTHY_SECONDS", 1e9)
+            await kill_and_wait(pool, 1)
+            assert pool.losses == 1
+            await kill_and_wait(pool, 2)
+            assert pool.losses == 2
+            monkeypatch.setattr(processes, "HEALTHY_SECONDS", 0.0)    # every child ready so far was healthy
+            await kill_and_wait(pool, 3)
+            assert pool.losses == 1
+        finally:
+            pool.shutdown()
+        assert pool.state == "down"
+
+    asyncio.run(scenario())

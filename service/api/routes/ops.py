@@ -30,16 +30,28 @@ async def healthz() -> Any:
     "/readyz", operation_id="readyz", response_model=s.Ready,
     summary="Readiness: the solver workers are started (and warmed up)",
     responses={
-        200: {"description": "ready", "content": {"application/json": {"example": {
-            "status": "ready", "workers": 2, "queue_size": 64, "in_flight": 0}}}},
+        200: {"description": "ready (the solver threads answer; `degraded` names what runs slower or refuses)",
+              "content": {"application/json": {"example": {
+                  "status": "ready", "workers": 2, "queue_size": 64, "in_flight": 0,
+                  "processes": {"fast": {"state": "restarting", "ready": 0, "workers": 1, "restarts": 2},
+                                "design": {"state": "up", "ready": 1, "workers": 1, "restarts": 0}},
+                  "degraded": ["fast_path"]}}}},
         503: {"model": s.Ready, "description": "still starting", "content": {"application/json": {"example": {
             "status": "starting", "workers": 2, "queue_size": 64, "in_flight": 0}}}}})
 async def readyz(request: Request) -> Any:
     executors = request.app.state.executors
     pool, heavy = executors.threads, executors.killable
     ready = bool(getattr(request.app.state, "ready", False)) and pool.started
+    processes = {name: {"state": ex.state, "ready": ex.ready_count, "workers": ex.workers, "restarts": ex.restarts}
+                 for name, ex in (("fast", executors.fast), ("design", heavy)) if ex is not None}
+    degraded = []
+    if ready and "fast" in processes and processes["fast"]["state"] != "up":
+        degraded.append("fast_path")            # the solver threads answer its requests meanwhile
+    if "design" in processes and processes["design"]["state"] in ("restarting", "down"):
+        degraded.append("design_processes")
     body = {"status": "ready" if ready else "starting", "workers": pool.workers, "queue_size": pool.queue_size,
-            "in_flight": pool.in_flight + (heavy.in_flight if heavy is not None else 0)}
+            "in_flight": pool.in_flight + (heavy.in_flight if heavy is not None else 0), "processes": processes,
+            "degraded": degraded}
     return body if ready else JSONResponse(status_code=503, content=body)
 
 
