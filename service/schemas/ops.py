@@ -73,6 +73,9 @@ class KernelsOut(BaseModel):
     compiled: list[int] = Field(description="chain lengths loaded as compiled code so far")
     virtual_machine: list[int] = Field(description="chain lengths running in CasADi's virtual machine "
                                                    "(no compiler, or compiling failed: about 4x slower)")
+    building: list[int] = Field(default_factory=list,
+                                description="chain lengths whose kernels compile in the background; their requests "
+                                            "are answered in the virtual machine meanwhile")
 
 
 class VersionOut(BaseModel):

@@ -68,7 +68,8 @@ async def readyz(request: Request) -> Any:
                    "max_trajectory_steps": 2000, "max_grid": s.MAX_GRID,
                    "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
                    "stream_idle_timeout": 60.0},
-        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
+        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": [],
+                    "building": [5, 6]}}}}}})
 async def version(request: Request) -> Any:
     st = request.app.state.settings
     k = kernels.status()
@@ -84,7 +85,8 @@ async def version(request: Request) -> Any:
                        "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
                        "max_stream_connections": st.max_stream_connections,
                        "stream_idle_timeout": st.stream_idle_timeout},
-            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine")}}
+            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine",
+                                                "building")}}
 
 
 @router.get(
