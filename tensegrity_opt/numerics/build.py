@@ -285,7 +285,8 @@ def _compile_with(cc: str, name: str, funcs: dict[str, ca.Function], build: bool
 
 @contextlib.contextmanager
 def _file_lock(path: Path) -> Iterator[None]:
-    """An exclusive lock on ``path`` between processes (none where ``fcntl`` is missing)."""
+    """An exclusive lock on ``path`` between processes (none where ``fcntl`` is missing); the file is removed
+    when the holder is done, so the cache holds libraries only."""
     try:
         import fcntl
     except ImportError:                             # pragma: no cover - not POSIX
@@ -296,4 +297,7 @@ def _file_lock(path: Path) -> Iterator[None]:
         try:
             yield
         finally:
+            # the library is in place (or failed): a later process finds it before it looks for the lock
+            with contextlib.suppress(OSError):
+                os.unlink(path)
             fcntl.flock(f, fcntl.LOCK_UN)
