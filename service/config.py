@@ -35,6 +35,7 @@ variable                               default    meaning
 ``TENSEGRITY_MAX_BODY_BYTES``          1048576    request bodies above this get 413
 ``TENSEGRITY_MAX_RESPONSE_BYTES``      8388608    JSON answers above this: 422 ``response_too_large``
 ``TENSEGRITY_WARMUP``                  true       build each thread's solvers (n = 4) at start-up
+``TENSEGRITY_KERNEL_BUILDS``           background compiled code built in the background (``request``: on first use)
 ``TENSEGRITY_SHUTDOWN_TIMEOUT``        1          seconds requests in flight get at SIGTERM, then cancelled (503)
 ``TENSEGRITY_MAX_STREAM_CONNECTIONS``  16         open ``/v1/control/stream`` WebSockets (beyond: closed with 1013)
 ``TENSEGRITY_STREAM_IDLE_TIMEOUT``     60         seconds a stream may stay silent (then closed with 1001)
@@ -176,6 +177,13 @@ class Settings(BaseSettings):
         description="largest JSON answer (422 response_too_large above: estimated before solving where the "
                     "request says enough, else counted while rendering in the solver thread)")
     warmup: bool = Field(True, description="build each worker's solvers at start-up")
+    kernel_builds: Literal["background", "request"] = Field(
+        "background",
+        description="background: the server compiles the short chains' Newton kernels in the background at start-up "
+                    "(and any other compiled function, or one whose file left the cache, when first needed), and a "
+                    "request arriving before its code is compiled is solved in CasADi's virtual machine (slower, the "
+                    "same answers) instead of waiting for the C compiler; request: the first request for a chain "
+                    "length waits for the compiler (the library's own default)")
     shutdown_timeout: float = Field(
         1.0, ge=0, le=600,
         description="seconds requests in flight get to finish at SIGTERM/SIGINT before they are cancelled "

@@ -79,6 +79,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        if settings.kernel_builds == "background":
+            tasks.equilibria.build_in_background()     # before the warm-up: it never waits for the compiler
         await executors.start()
         runner.start()
         # Everything built so far (modules, solvers, caches) lives as long as the process: move it

@@ -87,7 +87,7 @@ async def run_task(request: Request, fn: Callable[..., Any], *args: Any, fields:
         else:
             executor = executors.threads
         body = await executor.run(render_task, fn, args, limit, size_field, timeout=timeout,
-                                  heavy=placement is not Placement.LIGHT)
+                                  heavy=placement is not Placement.LIGHT, kind=getattr(fn, "__qualname__", None))
     except Exception as exc:
         err = to_api_error(exc, fields, retry_after=settings.retry_after)
         if err is None:

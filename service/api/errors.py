@@ -238,7 +238,9 @@ def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retr
     if isinstance(exc, ServiceError) and exc.headers:
         headers = exc.headers
     if status == 503:
-        headers = {**(headers or {}), "Retry-After": str(retry_after)}
+        # an executor that refused by its expected wait says when it expects room (at least the setting)
+        wait = getattr(exc, "retry_after", None)
+        headers = {**(headers or {}), "Retry-After": str(max(retry_after, int(wait)) if wait else retry_after)}
     return ApiError(status, body, headers)
 
 

@@ -131,7 +131,7 @@ from .jobs import (
     SweepUniformManipulator,
 )
 from .landscape import EnergyLandscapeOut, EnergyLandscapeRequest
-from .ops import Health, JobsHealth, KernelsOut, Limits, Ready, VersionOut
+from .ops import Health, JobsHealth, KernelsOut, Limits, ProcessesState, Ready, VersionOut
 from .paths import (
     BifurcationDiagramOut,
     BifurcationDiagramRequest,
@@ -313,6 +313,7 @@ __all__ = [
     "RangeIn",
     "Ready",
     "JobsHealth",
+    "ProcessesState",
     "RestConfigurationsRequest",
     "STEP_MODELS",
     "RestLengthBoundsIn",

@@ -133,3 +133,40 @@ def test_sigterm_answers_a_request_in_flight_503_shutting_down(tmp_path):
     assert r.headers["content-type"] == "application/json" and r.headers["retry-after"] == "7"
     body = r.json()
     assert body["code"] == "shutting_down" and body["message"]
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(to.numerics.build.compiler() is None, reason="no C compiler on this machine")
+def test_the_first_request_for_a_fresh_chain_length_does_not_wait_for_the_compiler(tmp_path):
+    """A real server with an empty kernel cache and a stand-in compiler held until the test releases it: the server
+    gets ready and answers the first requests (a fresh n = 6 too) in CasADi's virtual machine; once released, the
+    kernels compile in the background and /version reports them compiled."""
+    import time
+
+    release = tmp_path / "release"
+    cc = tmp_path / "held-cc"
+    real = to.numerics.build.compiler()
+    cc.write_text(f'#!/bin/sh\nwhile [ ! -e "{release}" ]; do sleep 0.01; done\nexec {real} "$@"\n')
+    cc.chmod(0o755)
+    env = clean_env(**GENEROUS_ENV, TENSEGRITY_CACHE_DIR=str(tmp_path / "cache"), CC=str(cc),
+                    TENSEGRITY_JOBS_DB=str(tmp_path / "jobs.sqlite3"))
+    body = {"manipulator": {"n": 6, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}, "dx": 0.3, "dy": 0.1}
+    try:
+        with running_server(serve_command(free_port()), env, ready="/readyz") as (_, base):
+            kernels = httpx.get(base + "/version", timeout=60).json()["kernels"]
+            assert 6 in kernels["building"] and kernels["compiled"] == []
+            first = httpx.post(base + "/v1/equilibrium", json=body, timeout=120)
+            assert first.status_code == 200 and first.json()["success"]
+            assert not list((tmp_path / "cache").glob("*.so"))               # nothing compiled yet
+            release.touch()
+            deadline = time.monotonic() + WAIT_SECONDS
+            while time.monotonic() < deadline:
+                kernels = httpx.get(base + "/version", timeout=60).json()["kernels"]
+                if not kernels["building"]:
+                    break
+                time.sleep(0.1)
+            assert kernels["building"] == [] and 6 in kernels["compiled"]
+            again = httpx.post(base + "/v1/equilibrium", json=body, timeout=120)
+            assert again.status_code == 200 and again.json()["q"] == pytest.approx(first.json()["q"], abs=1e-9)
+    finally:
+        release.touch()

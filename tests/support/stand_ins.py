@@ -57,3 +57,32 @@ def app_with_short_lived_request_threads():
 
     anyio_asyncio.WorkerThread.MAX_IDLE_TIME = REQUEST_THREAD_IDLE_SECONDS
     return create_app()
+
+
+#: The environment variable naming the file whose presence lets a fast solver process finish its warm-up
+#: (:func:`app_with_a_held_fast_process`).
+WARMUP_GATE = "STAND_IN_WARMUP_GATE"
+
+
+def held_warmup() -> None:
+    """The service's warm-up; in a solver process (its main thread) it first waits until the file named by
+    ``STAND_IN_WARMUP_GATE`` exists, so that a test decides when a restarted process gets ready."""
+    import threading
+
+    from service.tasks.equilibria import warmup
+
+    gate = os.environ.get(WARMUP_GATE)
+    if gate and threading.current_thread() is threading.main_thread():
+        while not os.path.exists(gate):
+            time.sleep(0.01)
+    warmup()
+
+
+def app_with_a_held_fast_process():
+    """The service's app (settings from the environment) whose solver processes warm up with
+    :func:`held_warmup`."""
+    from service import tasks
+    from service.main import create_app
+
+    tasks.equilibria.warmup = held_warmup
+    return create_app()

@@ -41,11 +41,12 @@ METRICS_EXAMPLE = ("# HELP tensegrity_http_requests_total HTTP requests answered
                    "max_trajectory_steps": 2000, "max_grid": s.MAX_GRID,
                    "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
                    "stream_idle_timeout": 60.0},
-        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}},
+        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": [],
+                    "building": [5, 6]}}}}},
                **error_responses(401)})
 async def version(request: Request) -> Response:
     state = request.app.state
-    loaded = kernels.libraries()
+    loaded = (kernels.libraries(), tuple(n for n in range(2, kernels.KERNEL_MAX + 1) if kernels.pending(n)))
     built = getattr(state, "version_bytes", None)
     if built is None or built[0] != loaded:
         built = state.version_bytes = (loaded, render_json(version_body(request)))
@@ -68,7 +69,8 @@ def version_body(request: Request) -> dict[str, Any]:
                        "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
                        "max_stream_connections": st.max_stream_connections,
                        "stream_idle_timeout": st.stream_idle_timeout},
-            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine")}}
+            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine",
+                                                "building")}}
 
 
 @router.get(
