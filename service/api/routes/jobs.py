@@ -331,7 +331,9 @@ _FIGURE_422 = _err(422, "Not a figure job (`invalid_parameter` on `id`), or a ba
                 "configured) is 404.",
     responses={200: {"description": "The figure.", "content": {
         "image/png": {"schema": {"type": "string", "format": "binary"}},
-        "image/svg+xml": {"schema": {"type": "string"}}}},
+        "image/svg+xml": {"schema": {"type": "string"}, "example": (
+            '<?xml version="1.0" encoding="utf-8" standalone="no"?>\n<svg xmlns="http://www.w3.org/2000/svg" '
+            'width="763pt" height="360pt" viewBox="0 0 763 360">...</svg>')}}},
                401: _401, 404: _404, 409: _FIGURE_409, 422: _FIGURE_422, 503: _503})
 def get_job_figure(runner: Runner, owner: Owner, job_id: str) -> Any:
     job = _job(runner, job_id, owner)
