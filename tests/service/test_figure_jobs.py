@@ -4,6 +4,7 @@ names the job route (a stand-in task that never ends by itself, so the limit exp
 
 from __future__ import annotations
 
+import json
 import threading
 import time
 import warnings
@@ -221,7 +222,7 @@ def test_every_figure_request_round_trips_through_the_job_store():
         for name, example in fig.examples.items():
             if name == "job":
                 continue
-            req = model.model_validate_json(__import__("json").dumps(example["value"]))
+            req = model.model_validate_json(json.dumps(example["value"]))
             assert plot_tasks.figure_request(fig.kind, req.model_dump(mode="json")) == req, (fig.kind, name)
 
 
