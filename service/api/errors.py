@@ -225,8 +225,10 @@ class ApiError(Exception):
         self.headers = headers
 
 
-def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retry_after: int = 1) -> ApiError | None:
-    """The HTTP refusal for ``exc``, or ``None`` when it is a server bug (a 500)."""
+def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retry_after: int = 1,
+                 timeout_hint: str | None = None) -> ApiError | None:
+    """The HTTP refusal for ``exc``, or ``None`` when it is a server bug (a 500). ``timeout_hint``: a sentence added
+    to a 504's message (what to do instead, e.g. a figure's job form)."""
     if isinstance(exc, ApiError):
         return exc
     body = error_body(exc, ctx)
@@ -234,6 +236,8 @@ def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retr
         return None
     # numpy/scipy/CasADi failed where the library did not refuse first: a bug to fix (500), not an answer
     status = 500 if body["code"] == "numerical_failure" else status_for(exc)
+    if status == 504 and timeout_hint:
+        body["message"] = f"{body['message']}; {timeout_hint}"
     headers = None
     if isinstance(exc, ServiceError) and exc.headers:
         headers = exc.headers

@@ -32,6 +32,15 @@ graceful shutdown stops the running jobs between two points and puts them back t
 finished points are kept); ``DELETE`` removes a job with its rows (cancelling it first). Finished jobs older than
 ``TENSEGRITY_JOBS_RETENTION_DAYS`` (0: never) are deleted at start-up and hourly.
 
+Figure jobs
+-----------
+A figure (``POST /v1/plots/<kind>/job``, analysis ``figure``) runs as one call on the same points' thread, under
+``TENSEGRITY_JOBS_POINT_TIMEOUT`` (a continuation's soft deadline at 90 % of it: it draws what it has by then);
+each step it reports is a row (``index``, ``stage``, ``error``: the targets of an atlas, the drawing), then the image
+is stored (:meth:`JobStore.put_figure`) with the last row and the job is ``done``. A failure is a row with its
+``error`` (``code: message``, ``timeout: ...`` past the limit) and the job ``failed`` with the same message. A
+resumed figure job starts its figure again (the rows of its steps are stored once).
+
 Every SQLite or OS error of an API call raises :class:`~service.jobs.store.JobsUnavailable` (503
 ``jobs_unavailable``, saying what failed, not where on disk). The database file is created on the first
 submitted job, so a server that never gets a job leaves no file behind.
@@ -70,11 +79,19 @@ from tensegrity_opt.errors import InvalidParameterError
 from ..config import Settings
 from ..execution.executor import SolveTimeout
 from ..execution.threads import Call, ThreadExecutor
+from ..tasks.plots import FIGURE_ANALYSIS, figure_job_task
 from .store import NAME, JobFinished, JobNotFound, JobStore, JobsUnavailable, fault_text
 
 log = logging.getLogger("service.jobs")
 
-__all__ = ["JobRunner"]
+__all__ = ["JobRunner", "FIGURE_COLUMNS", "FIGURE_MEDIA"]
+
+#: The rows of a figure job: one per step.
+FIGURE_COLUMNS = ["index", "stage", "error"]
+#: A figure job's image format -> media type.
+FIGURE_MEDIA = {"png": "image/png", "svg": "image/svg+xml"}
+#: The share of ``TENSEGRITY_JOBS_POINT_TIMEOUT`` a figure job's continuation may use (then it draws what it has).
+FIGURE_DEADLINE_SHARE = 0.9
 
 def _setting(settings: Any, name: str, fallback: Any) -> Any:
     value = getattr(settings, name, None) if settings is not None else None
@@ -272,16 +289,34 @@ class JobRunner:
     def submit(self, spec: Any, owner: str | None = None) -> dict[str, Any]:
         """Validate and store a new ``queued`` job (of ``owner``: an API key's hash); a runner thread picks it up."""
         norm, total, cols = self.validate(spec)
+        return self._create(norm, total, cols, owner)
+
+    @_storage_guard
+    def submit_figure(self, kind: str, fmt: str, request: Mapping[str, Any], total: int,
+                      owner: str | None = None) -> dict[str, Any]:
+        """Store a new ``queued`` figure job: the figure ``kind`` of ``request`` (its JSON form, checked by the route
+        against the server's limits) as ``fmt``, in ``total`` steps (:func:`service.tasks.plots.figure_steps`)."""
+        if self.error:
+            raise JobsUnavailable(self.error)
+        spec = {"analysis": FIGURE_ANALYSIS, "kind": kind, "format": fmt, "request": dict(request)}
+        return self._create(spec, int(total), list(FIGURE_COLUMNS), owner)
+
+    def _create(self, spec: dict[str, Any], total: int, cols: list[str], owner: str | None) -> dict[str, Any]:
         try:
             self._open()
         except Exception as exc:
             self._log_fault("cannot open the job store %s: %r", self.db_path, exc)
             raise
         self.store.check_file()
-        job = self.store.create(norm, total, cols, owner)
+        job = self.store.create(spec, total, cols, owner)
         with self._wake:
             self._wake.notify()
         return job
+
+    @_storage_guard
+    def figure(self, job_id: str) -> tuple[str, bytes] | None:
+        """The media type and bytes of a figure job's image (``None`` before it is stored)."""
+        return self._store().figure(job_id)
 
     @_storage_guard
     def get(self, job_id: str, owner: str | None = None) -> dict[str, Any]:
@@ -407,6 +442,9 @@ class JobRunner:
     def _run(self, slot: _Slot, job: dict[str, Any]) -> None:
         """Run ``job`` until it is done, cancelled, its lease lost, its slice over or the server stops."""
         job_id = job["id"]
+        if job["analysis"] == FIGURE_ANALYSIS:
+            self._run_figure(slot, job)
+            return
         done = self.store.done_indices(job_id)
         log.info("job %s: running (%d of %d points already stored)", job_id, len(done), job["total"])
         slice_end = time.monotonic() + self.slice_seconds
@@ -459,12 +497,7 @@ class JobRunner:
             self.store.release(job_id, self.id, status="done", finished=True)
             log.info("job %s: done (%d points, %.1f s in this run)", job_id, job["total"], time.perf_counter() - t0)
         elif self._stopping.is_set():
-            if self.resume:
-                self.store.release(job_id, self.id, status="queued",
-                                   message="stopped by a server shutdown; resumes when the server starts again")
-            else:
-                self.store.release(job_id, self.id, status="interrupted", finished=True,
-                                   message="stopped by a server shutdown; finished points are kept")
+            self._stopped(job_id)
         elif yielded:
             self.store.release(job_id, self.id, status="queued",
                                message=f"waiting for its next turn ({stored} of {job['total']} points done; "
@@ -472,6 +505,68 @@ class JobRunner:
         else:  # pragma: no cover - defensive
             self.store.release(job_id, self.id, status="failed", finished=True,
                                message=f"internal_error: {stored} of {job['total']} points stored")
+
+    def _stopped(self, job_id: str) -> None:
+        """A server shutdown stopped ``job_id``: back to ``queued`` (resumed at the next start), or interrupted."""
+        if self.resume:
+            self.store.release(job_id, self.id, status="queued",
+                               message="stopped by a server shutdown; resumes when the server starts again")
+        else:
+            self.store.release(job_id, self.id, status="interrupted", finished=True,
+                               message="stopped by a server shutdown; finished points are kept")
+
+    def _run_figure(self, slot: _Slot, job: dict[str, Any]) -> None:
+        """Draw a figure job on the points' thread (module docstring: Figure jobs)."""
+        job_id, spec, total = job["id"], job["spec"], int(job["total"])
+        last = total - 1                       # the last row is the stored image's
+        step = [0]
+        log.info("job %s: drawing the figure %s", job_id, spec.get("kind"))
+
+        def row(stage: str, error: str | None = None) -> None:
+            i = min(step[0], last)
+            step[0] += 1
+            self.store.add_point(job_id, i, {"index": i, "stage": stage, "error": error}, self.id)
+
+        def progress(stage: str) -> None:      # on the points' thread
+            if step[0] < last:
+                row(stage)
+
+        data: bytes | None = None
+        error: str | None = None
+        with self._point_lock:
+            if not (slot.stop.is_set() or self._stopping.is_set()):
+                slot.abandoned = False
+                deadline = time.monotonic() + FIGURE_DEADLINE_SHARE * self.point_timeout
+                slot.call = self.points.submit(figure_job_task, spec, deadline, progress, timeout=self.point_timeout)
+            call = slot.call
+        try:
+            if call is not None:
+                data = self.points.wait(call, self.point_timeout)
+        except SolveTimeout:
+            if not slot.abandoned:
+                error = (f"timeout: the figure did not finish within {self.point_timeout:g} s "
+                         "(TENSEGRITY_JOBS_POINT_TIMEOUT)")
+        except Exception as exc:  # the figure's own failure: a row, and the job failed
+            error = format_error(exc)
+        finally:
+            with self._point_lock:
+                slot.call = None
+        if slot.stop.is_set():
+            return                      # cancelled, or another server holds the job now
+        if error is not None:
+            log.warning("job %s failed: %s", job_id, error)
+            row("failed", error)
+            self.store.release(job_id, self.id, status="failed", message=error[:2000], finished=True)
+            return
+        if data is None:                # abandoned by a shutdown
+            self._stopped(job_id)
+            return
+        fmt = spec["format"]
+        self.store.put_figure(job_id, FIGURE_MEDIA[fmt], data, self.id)
+        self.store.add_point(job_id, last, {"index": last, "stage": f"stored: {fmt}, {len(data)} bytes",
+                                            "error": None}, self.id)
+        self.store.release(job_id, self.id, status="done", finished=True)
+        log.info("job %s: figure done (%d bytes)", job_id, len(data))
 
     def _timed_row(self, slot: _Slot, header: Mapping[str, Any], pcols: list[str], rcols: list[str], i: int,
                    p: Mapping[str, Any]) -> dict[str, Any] | None:

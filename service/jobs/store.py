@@ -24,6 +24,12 @@ With API keys configured a job belongs to the key that submitted it: the store k
 SHA-256 of the key, never the key. ``owner`` arguments: ``None`` sees every job (auth off); a hash sees only the
 jobs it created.
 
+Figure jobs
+-----------
+A figure computed as a job (analysis ``figure``) stores its steps as rows (``index``, ``stage``, ``error``) and its
+image, once, in the table ``figures`` (:meth:`JobStore.put_figure`, :meth:`JobStore.figure`); deleting the job
+deletes its image.
+
 Connections
 -----------
 The store keeps at most ``max_connections`` SQLite connections (default 8), shared by every thread: a call
@@ -38,6 +44,7 @@ Every storage fault (an SQLite or OS error: a full disk, a read-only or damaged 
 opened) is remembered as the store's health (:meth:`JobStore.health`: what failed, never where on disk) until a
 write succeeds again: a write that changed the file, or :meth:`JobStore.probe` (a small write plus a check of
 the free space of the file's device). Nothing is given up for good: the next call tries again.
+
 A database file deleted or replaced while the server runs (its device and inode are checked,
 :meth:`JobStore.check_file`) raises :class:`JobsUnavailable` (503 ``jobs_unavailable``) until the server is
 restarted; a deleted file is not recreated (that would silently start an empty store beside servers still
@@ -114,6 +121,11 @@ CREATE TABLE IF NOT EXISTS points (
     row     TEXT NOT NULL,
     PRIMARY KEY (job_id, idx)
 ) WITHOUT ROWID;
+CREATE TABLE IF NOT EXISTS figures (
+    job_id      TEXT PRIMARY KEY,
+    media_type  TEXT NOT NULL,
+    data        BLOB NOT NULL
+);
 """
 
 #: Columns added after the first release (``ALTER TABLE`` on an older file).
@@ -564,6 +576,7 @@ class JobStore:
             if con.execute(q, args).rowcount == 0:
                 return False
             con.execute("DELETE FROM points WHERE job_id = ?", (job_id,))
+            con.execute("DELETE FROM figures WHERE job_id = ?", (job_id,))
             return True
 
     def purge(self, older_than: float) -> int:
@@ -575,6 +588,7 @@ class JobStore:
                 (older_than,))]
             for i in ids:
                 con.execute("DELETE FROM points WHERE job_id = ?", (i,))
+                con.execute("DELETE FROM figures WHERE job_id = ?", (i,))
                 con.execute("DELETE FROM jobs WHERE id = ?", (i,))
         return len(ids)
 
@@ -592,6 +606,19 @@ class JobStore:
             "INSERT OR IGNORE INTO points (job_id, idx, failed, row) SELECT ?, ?, ?, ? WHERE EXISTS "
             "(SELECT 1 FROM jobs WHERE id = ? AND status = 'running' AND lease_owner = ?)",
             (*args, job_id, runner_id)) > 0
+
+    def put_figure(self, job_id: str, media_type: str, data: bytes, runner_id: str) -> bool:
+        """Store the image of a figure job, while ``runner_id`` holds its lease (as :meth:`add_point`). True when
+        stored."""
+        return self._write(
+            "INSERT OR REPLACE INTO figures (job_id, media_type, data) SELECT ?, ?, ? WHERE EXISTS "
+            "(SELECT 1 FROM jobs WHERE id = ? AND status = 'running' AND lease_owner = ?)",
+            (job_id, media_type, sqlite3.Binary(data), job_id, runner_id)) > 0
+
+    def figure(self, job_id: str) -> tuple[str, bytes] | None:
+        """The media type and bytes of a figure job's image; ``None`` before it is stored."""
+        rows = self._read("SELECT media_type, data FROM figures WHERE job_id = ?", (job_id,))
+        return None if not rows else (str(rows[0][0]), bytes(rows[0][1]))
 
     def done_indices(self, job_id: str) -> set[int]:
         return {r[0] for r in self._read("SELECT idx FROM points WHERE job_id = ?", (job_id,))}
