@@ -296,8 +296,6 @@ class JobRunner:
                       owner: str | None = None) -> dict[str, Any]:
         """Store a new ``queued`` figure job: the figure ``kind`` of ``request`` (its JSON form, checked by the route
         against the server's limits) as ``fmt``, in ``total`` steps (:func:`service.tasks.plots.figure_steps`)."""
-        if self.error:
-            raise JobsUnavailable(self.error)
         spec = {"analysis": FIGURE_ANALYSIS, "kind": kind, "format": fmt, "request": dict(request)}
         return self._create(spec, int(total), list(FIGURE_COLUMNS), owner)
 
