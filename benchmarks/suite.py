@@ -26,6 +26,9 @@ Cases (each with its target):
    per crossing vs bisecting the stable count along the edge.
 11. control in actuation space: a warm preload step of ``PreloadController`` (goal <= 0.2 ms for n = 4) vs
    ``preloads_for_pose`` per step and scipy SLSQP on the same problem; ``preloads_for_trajectory`` per step.
+12. figures: every figure route's default request on a server of default settings (``benchmarks/figures.py``):
+   seconds from the client (first answer, then the median) against the time limit; target: the median at most a
+   third of it. Its own table in RESULTS.md ("Figures").
 """
 
 from __future__ import annotations
@@ -706,6 +709,13 @@ def markdown(rows: list[Row], machine: dict[str, Any], cfg: Config, total: float
              "| " + " | ".join(HEAD) + " |", "|" + "---|" * len(HEAD)]
     for r in rows:
         lines.append("| " + " | ".join(esc(c) for c in _cells(r)) + " |")
+    figs = [r.extra["figure"] for r in rows if "figure" in r.extra]
+    if figs:
+        from .figures import table as figure_table
+
+        lines += ["", "## Figures", "", "Every figure route's default request (its first OpenAPI example) on a server "
+                  "of default settings, seconds from the client: the server's first answer, then the median.", ""]
+        lines += figure_table(figs)
     lines += ["", "## Notes", ""]
     lines += [f"* {esc(n)}" for n in notes_text(rows)]
     lines += [f"* {s}" for s in skipped]
@@ -984,9 +994,29 @@ def case11(cfg: Config) -> list[Row]:
     return rows
 
 
+def case12(cfg: Config) -> list[Row]:
+    """Every figure route's default request against the time limit (benchmarks/figures.py), on its own server."""
+    from . import figures as fg
+    from . import http_load as hl
+
+    limit = float(os.environ.get("TENSEGRITY_SOLVE_TIMEOUT", "10"))
+    with hl.own_server() as url:
+        log(f"  server at {url}")
+        measured = fg.measure(url, 1 if cfg.quick else 3, limit, explicit=not cfg.quick)
+    rows = []
+    for r in measured:
+        rows.append(Row("12", f"figure {r['route']} ({r['example']}"
+                        + (")" if r["default"] else ", explicit)"), r["request"].split(",")[0],
+                        r["median_s"] * 1e3, "ms", target=f"<= {r['target_s']:g} s (limit / {fg.MARGIN:g})"
+                        if r["default"] else "(info)", met=r["met"], samples=r["samples_s"],
+                        notes=[f"{r['route']} {r['example']}: first answer {r['first_s']:.2f} s, HTTP {r['status']}, "
+                               f"{r['bytes']} bytes"], extra={"figure": r}))
+    return rows
+
+
 CASES: list[tuple[str, Callable[[Config], list[Row]]]] = [
     ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8), ("9", case9),
-    ("10", case10), ("11", case11),
+    ("10", case10), ("11", case11), ("12", case12),
 ]
 
 
@@ -996,7 +1026,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--json", default=str(HERE / "results.json"), help="JSON output (default benchmarks/results.json)")
     p.add_argument("--md", default=str(HERE / "RESULTS.md"),
                    help="markdown output (default benchmarks/RESULTS.md; '' to skip)")
-    p.add_argument("--no-service", action="store_true", help="skip the HTTP service cases (7, 8)")
+    p.add_argument("--no-service", action="store_true", help="skip the HTTP service cases (7, 8, 12)")
     p.add_argument("--only", default=None, help="comma-separated case ids to run (e.g. 1,3,7-8)")
     args = p.parse_args(argv)
     cfg = Config.make(args.quick, not args.no_service)
@@ -1008,8 +1038,8 @@ def main(argv: list[str] | None = None) -> int:
     for cid, fn in CASES:
         if only is not None and cid not in only:
             continue
-        if cid == "7-8" and not cfg.service:
-            skipped.append("cases 7-8 (service) skipped: --no-service")
+        if cid in ("7-8", "12") and not cfg.service:
+            skipped.append(f"cases {cid} (service) skipped: --no-service")
             continue
         log(f"case {cid} ...")
         t0 = time.perf_counter()

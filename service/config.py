@@ -24,16 +24,19 @@ variable                               default    meaning
 ``TENSEGRITY_HEAVY_GRACE``             0.5        seconds after a 504 before a design process still busy is killed
 ``TENSEGRITY_REQUEST_TIMEOUT``         10         seconds to receive a whole request (headers + body): 408/closed
 ``TENSEGRITY_MAX_CONNECTIONS``         (auto)     open connections; beyond, the oldest idle/half-sent one is closed
+``TENSEGRITY_MAX_HEADER_BYTES``        65536      bytes of a request's line and headers (431 above)
+``TENSEGRITY_MAX_HEADERS``             100        header fields of one request (431 above)
 ``TENSEGRITY_LIMIT_CONCURRENCY``       (auto)     uvicorn ``limit_concurrency``: 503 beyond this many requests
 ``TENSEGRITY_KEEP_ALIVE``              5          seconds an idle keep-alive connection stays open
 ``TENSEGRITY_BACKLOG``                 2048       listen backlog (connections not accepted yet)
 ``TENSEGRITY_RETRY_AFTER``             1          ``Retry-After`` seconds sent with 503
 ``TENSEGRITY_API_KEYS``                (empty)    comma-separated or JSON list; empty: auth off
-``TENSEGRITY_CORS_ORIGINS``            (empty)    comma-separated or JSON list; empty: CORS off
+``TENSEGRITY_CORS_ORIGINS``            (empty)    comma-separated or JSON list; empty: CORS off (also the stream's)
 ``TENSEGRITY_MAX_BODY_BYTES``          1048576    request bodies above this get 413
 ``TENSEGRITY_MAX_RESPONSE_BYTES``      8388608    JSON answers above this: 422 ``response_too_large``
 ``TENSEGRITY_WARMUP``                  true       build each thread's solvers (n = 4) at start-up
-``TENSEGRITY_SHUTDOWN_TIMEOUT``        1          seconds requests in flight get at SIGTERM, then cancelled
+``TENSEGRITY_KERNEL_BUILDS``           background compiled code built in the background (``request``: on first use)
+``TENSEGRITY_SHUTDOWN_TIMEOUT``        1          seconds requests in flight get at SIGTERM, then cancelled (503)
 ``TENSEGRITY_MAX_STREAM_CONNECTIONS``  16         open ``/v1/control/stream`` WebSockets (beyond: closed with 1013)
 ``TENSEGRITY_STREAM_IDLE_TIMEOUT``     60         seconds a stream may stay silent (then closed with 1001)
 ``TENSEGRITY_JOBS_DB``                 (file)     SQLite job store, ``tensegrity_jobs.sqlite3`` in the working dir
@@ -48,13 +51,14 @@ variable                               default    meaning
 ``TENSEGRITY_JOBS_RETENTION_DAYS``     7          finished jobs older than this are deleted; 0: kept forever
 ``TENSEGRITY_JOBS_LEASE_SECONDS``      60         a server's claim on a running job, renewed every third of it
 ``TENSEGRITY_JOBS_RESULTS_MAX_LIMIT``  10000      most rows in one JSON page of ``/v1/jobs/{id}/results``
+``TENSEGRITY_JOBS_RETRY_SECONDS``      5          a failing job store is retried this often (``/readyz``: 503 till then)
 =====================================  =========  ==================================================
 
 (auto): ``MAX_CONNECTIONS`` is the process's descriptor limit (``RLIMIT_NOFILE``) minus 64 for the
 server's own files, at most 1024; ``LIMIT_CONCURRENCY`` that plus 8 (the cap, which makes room by closing
-idle or half-sent connections, decides first). The request timeout and the
-connection cap are enforced by ``tensegrity-opt serve`` (:mod:`service.api.connections`); an app started by a
-bare ``uvicorn service.main:app`` has only what uvicorn's own options give.
+idle or half-sent connections, decides first). The request timeout, the
+connection cap and the header bounds are enforced by ``tensegrity-opt serve`` (:mod:`service.api.connections`);
+an app started by a bare ``uvicorn service.main:app`` has only what uvicorn's own options give.
 """
 
 from __future__ import annotations
@@ -154,21 +158,37 @@ class Settings(BaseSettings):
                                         description="open connections (default: descriptor limit - 64, <= 1024)")
     limit_concurrency: int | None = Field(None, ge=1, le=1_000_000,
                                           description="uvicorn limit_concurrency (default: max_connections + 8)")
+    max_header_bytes: int = Field(
+        65536, ge=1024, le=16 * 1024 * 1024,
+        description="bytes of a request's line and headers together (above: 431 headers_too_large and the "
+                    "connection closed; tensegrity-opt serve)")
+    max_headers: int = Field(100, ge=8, le=10000,
+                             description="header fields of one request (above: 431 headers_too_large)")
     keep_alive: int = Field(5, ge=1, le=3600, description="seconds an idle keep-alive connection stays open")
     backlog: int = Field(2048, ge=1, le=65535, description="listen backlog")
     retry_after: int = Field(1, ge=0, description="Retry-After seconds sent with 503")
     api_keys: Annotated[list[str], NoDecode] = Field(default_factory=list, description="accepted X-API-Key values")
-    cors_origins: Annotated[list[str], NoDecode] = Field(default_factory=list, description="allowed CORS origins")
+    cors_origins: Annotated[list[str], NoDecode] = Field(
+        default_factory=list, description="allowed CORS origins; also the web pages' origins that may open the "
+                                          "control stream besides the server's own (others: 403 forbidden_origin)")
     max_body_bytes: int = Field(1024 * 1024, ge=1, description="largest request body (413 above)")
     max_response_bytes: int = Field(
         8 * 1024 * 1024, ge=1024,
         description="largest JSON answer (422 response_too_large above: estimated before solving where the "
                     "request says enough, else counted while rendering in the solver thread)")
     warmup: bool = Field(True, description="build each worker's solvers at start-up")
+    kernel_builds: Literal["background", "request"] = Field(
+        "background",
+        description="background: the server compiles the short chains' Newton kernels in the background at start-up "
+                    "(and any other compiled function, or one whose file left the cache, when first needed), and a "
+                    "request arriving before its code is compiled is solved in CasADi's virtual machine (slower, the "
+                    "same answers) instead of waiting for the C compiler; request: the first request for a chain "
+                    "length waits for the compiler (the library's own default)")
     shutdown_timeout: float = Field(
         1.0, ge=0, le=600,
         description="seconds requests in flight get to finish at SIGTERM/SIGINT before they are cancelled "
-                    "(uvicorn's timeout_graceful_shutdown; tensegrity-opt serve)")
+                    "and answered 503 shutting_down with Retry-After (uvicorn's timeout_graceful_shutdown; "
+                    "tensegrity-opt serve)")
     max_stream_connections: int = Field(
         16, ge=1, le=1024,
         description="control streams (/v1/control/stream) open at once, each with its own solver thread; a "
@@ -198,6 +218,9 @@ class Settings(BaseSettings):
                                            "whose lease expired (its server died) is taken over by another server")
     jobs_results_max_limit: int = Field(10_000, ge=1, le=1_000_000,
                                         description="most rows in one JSON page of GET /v1/jobs/{id}/results")
+    jobs_retry_seconds: float = Field(
+        5.0, ge=0.05, le=3600, description="while the job store fails (a full disk, an unreadable file ...), it is "
+                                           "retried this often; /readyz answers 503 until a retry succeeds")
 
     @field_validator("jobs_scheduler", mode="before")
     @classmethod

@@ -36,6 +36,7 @@ from .api.routes import (
     curves,
     design,
     equilibrium,
+    health,
     landscape,
     ops,
     paths,
@@ -51,10 +52,11 @@ from .execution import Executors
 from .jobs import JobRunner
 from .responses import SafeJSONResponse
 
-#: Routers behind the API key (when keys are configured) and the open ones (health, version, page).
+#: Routers behind the API key (when keys are configured: the API, its version and metrics; the OpenAPI document
+#: too, :mod:`service.api.swagger`) and the open ones (health, the page).
 API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, atlas, control,
-               plots, jobs_routes)
-OPEN_ROUTERS = (ops, web)
+               plots, jobs_routes, ops)
+OPEN_ROUTERS = (health, web)
 #: The WebSocket routes: they check the API key themselves (a FastAPI dependency on ``Request`` does not
 #: apply to a WebSocket; the key may also come as ``?api_key=``, which browsers can send).
 STREAM_ROUTERS = (stream,)
@@ -77,6 +79,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
     @asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
+        if settings.kernel_builds == "background":
+            tasks.equilibria.build_in_background()     # before the warm-up: it never waits for the compiler
         await executors.start()
         runner.start()
         # Everything built so far (modules, solvers, caches) lives as long as the process: move it
@@ -98,7 +102,8 @@ def create_app(settings: Settings | None = None) -> FastAPI:
 
     app = FastAPI(
         title="tensegrity-opt service", version=tensegrity_opt.__version__, description=DESCRIPTION,
-        openapi_tags=TAGS, docs_url=None, redoc_url=None, lifespan=lifespan,
+        # the document and the docs pages are service.api.swagger's (answered from bytes built once)
+        openapi_tags=TAGS, openapi_url=None, docs_url=None, redoc_url=None, lifespan=lifespan,
         # No trailing-slash redirect: it builds an absolute Location from the request's Host header
         # (an open redirect through a forged Host); "/healthz/" is a plain 404 instead.
         redirect_slashes=False,
@@ -119,14 +124,16 @@ def create_app(settings: Settings | None = None) -> FastAPI:
         app.include_router(module.router, dependencies=auth)
     for module in OPEN_ROUTERS + STREAM_ROUTERS:
         app.include_router(module.router)
-    swagger.install(app)
+    swagger.install(app, auth)
     # Every server serves the same document (the committed openapi/openapi.json): the API as
     # declared, X-API-Key included, whether or not this server has keys configured.
     app.openapi = openapi_document  # type: ignore[method-assign]
 
-    # Order (outermost first): metrics, CORS, body size limit, HEAD/OPTIONS, the app.
+    # Order (outermost first): metrics, CORS, the answer of a request cut by shutdown, body size limit,
+    # HEAD/OPTIONS, the app.
     app.add_middleware(MethodsMiddleware, routes=lambda: app.router.routes)
     app.add_middleware(BodyLimitMiddleware, max_bytes=settings.max_body_bytes)
+    app.add_middleware(errors.ShutdownAnswerMiddleware, retry_after=settings.retry_after)
     if settings.cors_origins:
         app.add_middleware(CORSMiddleware, allow_origins=list(settings.cors_origins), allow_methods=CORS_METHODS,
                            allow_headers=["Content-Type", "X-API-Key"], expose_headers=["Retry-After"])

@@ -20,6 +20,12 @@ new ``/healthz`` fails). :func:`protocol_class` returns uvicorn's httptools prot
 * **JSON 400s**: a request uvicorn cannot parse (request line, headers, ``Content-Length``) is
   refused in the service's error shape (``{"code": "bad_request", "message"}``), not uvicorn's
   plain text.
+* **bounded heads** (``TENSEGRITY_MAX_HEADER_BYTES``, ``TENSEGRITY_MAX_HEADERS``): the request line and headers of a
+  request may take at most ``max_header_bytes`` bytes and ``max_headers`` header fields; beyond, ``431``
+  ``headers_too_large`` and the socket is closed. httptools sets no limit of its own and keeps an unfinished
+  header in memory (20 connections sending 16 MB of unfinished headers: +340 MB), so the bytes of a head still
+  open are counted as they arrive (to within one read of the socket, at most 256 KiB) and those of finished
+  fields exactly.
 
 uvicorn's own ``limit_concurrency`` (503 beyond ``TENSEGRITY_LIMIT_CONCURRENCY`` requests and
 connections) and ``timeout_keep_alive`` (``TENSEGRITY_KEEP_ALIVE``) are set by ``tensegrity-opt serve``
@@ -29,19 +35,34 @@ too. A production deployment still puts a reverse proxy in front (see the README
 from __future__ import annotations
 
 import asyncio
-import json
 from typing import Any
 
-__all__ = ["protocol_class", "uvicorn_options"]
+from .errors import raw_error_response
 
-_TIMEOUT_BODY = b'{"code":"request_timeout","message":"the request was not received in time"}'
-_TIMEOUT_RESPONSE = (b"HTTP/1.1 408 Request Timeout\r\ncontent-type: application/json\r\nconnection: close\r\n"
-                     b"content-length: " + str(len(_TIMEOUT_BODY)).encode() + b"\r\n\r\n" + _TIMEOUT_BODY)
+__all__ = ["protocol_class", "uvicorn_options", "HeadTooLarge"]
+
+_TIMEOUT_RESPONSE = raw_error_response(408, {"code": "request_timeout",
+                                             "message": "the request was not received in time"})
 
 
-def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio.Protocol] | None:
-    """uvicorn's httptools protocol with the request timeout and the connection cap (``None``
-    without httptools: uvicorn's default protocol, with ``limit_concurrency`` and keep-alive only)."""
+#: Seconds a connection whose head was refused (431) is still read (and what arrives dropped) before it is closed.
+LINGER_SECONDS = 2.0
+
+
+class HeadTooLarge(Exception):
+    """A request's head over the server's limits (raised in a parser callback; answered 431)."""
+
+    def __init__(self, message: str, details: dict[str, int]) -> None:
+        super().__init__(message)
+        self.message = message
+        self.details = details
+
+
+def protocol_class(request_timeout: float, max_connections: int, max_header_bytes: int = 65536,
+                   max_headers: int = 100) -> type[asyncio.Protocol] | None:
+    """uvicorn's httptools protocol with the request timeout, the connection cap and the bounds of a request's
+    head (``None`` without httptools: uvicorn's default protocol, with ``limit_concurrency``, keep-alive and
+    h11's own bound on a head, ``h11_max_incomplete_event_size``)."""
     try:
         from uvicorn.protocols.http.httptools_impl import HttpToolsProtocol
     except ImportError:  # pragma: no cover - httptools is a dependency of uvicorn[standard]
@@ -66,7 +87,23 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
             proto._request_timed_out()
         sweeper[0] = loop.call_later(interval, sweep, loop) if incomplete else None
 
+    def too_large(what: str) -> HeadTooLarge:
+        return HeadTooLarge(f"the request's {what}: this server accepts at most {max_header_bytes} bytes of "
+                            f"request line and headers and {max_headers} header fields",
+                            {"max_header_bytes": max_header_bytes, "max_headers": max_headers})
+
     class BoundedHttpToolsProtocol(HttpToolsProtocol):
+        #: bytes of the head in progress (None: no head in progress: a body, or an upgraded connection)
+        _head: int | None = 0
+        #: header fields of the head in progress
+        _fields = 0
+        #: why the head was refused (set by a parser callback; answered 431 instead of uvicorn's 400)
+        _refused: HeadTooLarge | None = None
+        #: refused: what the client still sends is dropped until the socket closes
+        _lingering = False
+        #: a refused head whose 431 waits for the answers to the requests before it on the connection
+        _deferred: HeadTooLarge | None = None
+
         def connection_made(self, transport: asyncio.Transport) -> None:  # type: ignore[override]
             super().connection_made(transport)
             if len(self.connections) > max_connections:
@@ -88,17 +125,62 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
             self._forget()
             super().handle_websocket_upgrade()
 
+        def data_received(self, data: bytes) -> None:
+            if self._lingering:
+                return                                  # refused: dropped until the socket closes
+            head = self._head
+            if head is None or head + len(data) <= max_header_bytes:
+                if head is not None:
+                    self._head = head + len(data)       # settled when the head ends (on_headers_complete)
+                super().data_received(data)
+                return
+            # more than the head in progress may still take: feed what it may, then refuse it if still open
+            room = max_header_bytes - head
+            self._head = max_header_bytes
+            super().data_received(data[:room])
+            if self.transport.is_closing() or self.transport.get_protocol() is not self:
+                return                                  # refused, closed or upgraded meanwhile
+            if self._head == max_header_bytes:          # that head did not end (the next one would start at 0)
+                self._refuse_head(too_large(f"head is over {max_header_bytes} bytes"))
+                return
+            self.data_received(data[room:])
+
         def on_message_begin(self) -> None:
             super().on_message_begin()
+            self._fields = 0
             if self not in incomplete:
                 self._begin()
 
+        def on_url(self, url: bytes) -> None:
+            super().on_url(url)
+            if len(self.url) > max_header_bytes:
+                self._refuse_in_parser(f"target is over {max_header_bytes} bytes")
+
+        def on_header(self, name: bytes, value: bytes) -> None:
+            self._fields += 1
+            if self._fields > max_headers:
+                self._refuse_in_parser(f"head has more than {max_headers} header fields")
+            if len(name) + len(value) > max_header_bytes:
+                self._refuse_in_parser(f"header field {name[:64].decode('latin-1')!r} is over {max_header_bytes} "
+                                       "bytes")
+            super().on_header(name, value)
+
+        def on_headers_complete(self) -> None:
+            self._head = None
+            super().on_headers_complete()
+
         def on_message_complete(self) -> None:
             self._forget()
+            self._head = 0                          # the next request's head may follow
             super().on_message_complete()
 
         def on_response_complete(self) -> None:
             super().on_response_complete()
+            if self._deferred is not None:  # a refused head waits for the answers to the requests before it
+                if not self.pipeline and not self.transport.is_closing():
+                    refused, self._deferred = self._deferred, None
+                    self._answer_431(refused)
+                return
             if not self.transport.is_closing():
                 waiting[self] = None        # idle between requests: may make room (keep-alive timer runs)
 
@@ -122,12 +204,43 @@ def protocol_class(request_timeout: float, max_connections: int) -> type[asyncio
 
         def send_400_response(self, msg: str) -> None:
             # uvicorn answers an unparsable request line or header, or a bad Content-Length, before the
-            # application sees it, in plain text: here in the service's JSON error shape
-            body = json.dumps({"code": "bad_request", "message": f"malformed HTTP request: {msg}"}).encode()
-            self.transport.write(b"HTTP/1.1 400 Bad Request\r\ncontent-type: application/json\r\n"
-                                 b"connection: close\r\ncontent-length: " + str(len(body)).encode() + b"\r\n\r\n"
-                                 + body)
+            # application sees it, in plain text: here in the service's JSON error shape; a head over the limits
+            # (a parser callback raised HeadTooLarge) gets its 431
+            if self._refused is not None:
+                self._refuse_head(self._refused)
+                return
+            self.transport.write(raw_error_response(400, {"code": "bad_request",
+                                                          "message": f"malformed HTTP request: {msg}"}))
             self.transport.close()
+
+        def _refuse_in_parser(self, what: str) -> None:
+            """Stop the parser (it raises its own error, which uvicorn answers with send_400_response): 431."""
+            self._refused = too_large(what)
+            raise self._refused
+
+        def _refuse_head(self, exc: HeadTooLarge) -> None:
+            """431 (after the answers of the requests before it on this connection, if any are still due)."""
+            self._forget()
+            self._head = None
+            self._lingering = True
+            if (self.cycle is not None and not self.cycle.response_complete) or self.pipeline:
+                self._deferred = exc
+                return
+            self._answer_431(exc)
+
+        def _answer_431(self, exc: HeadTooLarge) -> None:
+            """431, then a lingering close: the answer is sent with the end of the server's side, what the client
+            still sends is read and dropped for at most LINGER_SECONDS (closing a socket with unread data resets
+            the connection, and the client would lose the answer), then the socket is closed."""
+            self._forget()
+            self.transport.write(raw_error_response(431, {"code": "headers_too_large", "message": exc.message,
+                                                          "details": exc.details}))
+            try:
+                self.transport.write_eof()
+            except (NotImplementedError, RuntimeError, OSError):
+                self.transport.close()
+                return
+            self.loop.call_later(LINGER_SECONDS, self.transport.close)
 
         def _close_waiting(self) -> None:
             self._forget()
@@ -144,8 +257,12 @@ def uvicorn_options(settings: Any) -> dict[str, Any]:
                             # WebSocket messages (the control stream): bounded like request bodies (a larger
                             # one closes the stream with 1009), and not compressed: a stream's messages are
                             # a few hundred bytes and its point is latency
-                            "ws_max_size": settings.max_body_bytes, "ws_per_message_deflate": False}
-    proto = protocol_class(settings.request_timeout, settings.connection_cap)
+                            "ws_max_size": settings.max_body_bytes, "ws_per_message_deflate": False,
+                            # the bound of a head when uvicorn runs h11 (no httptools); the protocol below bounds
+                            # it for httptools
+                            "h11_max_incomplete_event_size": settings.max_header_bytes}
+    proto = protocol_class(settings.request_timeout, settings.connection_cap, settings.max_header_bytes,
+                           settings.max_headers)
     if proto is not None:
         opts["http"] = proto
     return opts

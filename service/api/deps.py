@@ -6,6 +6,7 @@ from __future__ import annotations
 import secrets
 import time
 from typing import Annotated, Any
+from urllib.parse import urlsplit
 
 from fastapi import Depends, Request, Security
 from fastapi.security import APIKeyHeader
@@ -19,8 +20,8 @@ from ..responses import ResponseTooLarge
 from .dispatch import Placement
 from .errors import ServiceError
 
-__all__ = ["api_key_header", "require_api_key", "api_key_valid", "get_settings_dep", "SettingsDep", "get_runner",
-           "get_owner",
+__all__ = ["api_key_header", "require_api_key", "api_key_valid", "origin_allowed", "get_settings_dep", "SettingsDep",
+           "get_runner", "get_owner",
            "Runner", "Owner", "check_manipulator", "check_homotopy", "check_batch", "check_curve_size",
            "check_path_points", "check_path", "check_atlas_targets", "check_trajectory_steps", "check_plan",
            "check_simulation",
@@ -57,6 +58,44 @@ def api_key_valid(key: str | None, settings: Settings) -> bool:
         return False
     given = key.encode("utf-8", "surrogateescape")
     return any(secrets.compare_digest(given, k.encode("utf-8", "surrogateescape")) for k in settings.api_keys)
+
+
+_DEFAULT_PORTS = {"http": 80, "https": 443, "ws": 80, "wss": 443}
+
+
+def _host_port(netloc: str, scheme: str) -> tuple[str, int] | None:
+    """``(host, port)`` of ``netloc`` (``host[:port]``, IPv6 in brackets), the port defaulting by ``scheme``;
+    ``None`` when it does not parse."""
+    try:
+        parts = urlsplit(f"//{netloc}")
+        host, port = parts.hostname, parts.port
+    except ValueError:
+        return None
+    if not host:
+        return None
+    return host.lower(), port if port is not None else _DEFAULT_PORTS.get(scheme, 0)
+
+
+def origin_allowed(origin: str | None, host: str | None, settings: Settings) -> bool:
+    """Whether a WebSocket handshake with this ``Origin`` header may open a control stream: no ``Origin`` (a script,
+    not a browser page), the server's own origin (the ``Host`` the client connected to, same host and port), or one
+    of ``settings.cors_origins`` (``*``: any). Browsers apply no CORS to WebSockets, so without this check any page
+    the user opens could drive the streams of a server on ``127.0.0.1``."""
+    if origin is None:
+        return True
+    origin = origin.strip().rstrip("/").lower()
+    allowed = {o.strip().rstrip("/").lower() for o in settings.cors_origins}
+    if "*" in allowed or origin in allowed:
+        return True
+    try:
+        parts = urlsplit(origin)
+    except ValueError:
+        return False
+    if parts.scheme not in ("http", "https") or not parts.netloc or parts.path or parts.query:
+        return False                    # "null" (a sandboxed frame, a file), or not an origin at all
+    own = _host_port(parts.netloc, parts.scheme)
+    server = _host_port(host, parts.scheme) if host else None
+    return own is not None and own == server
 
 
 def check_manipulator(m: Any, settings: Settings, aliases: tuple[tuple[str, str], ...] = ()) -> FieldContext:

@@ -57,12 +57,13 @@ class Placement(enum.Enum):
 
 async def run_task(request: Request, fn: Callable[..., Any], *args: Any, fields: FieldContext = FieldContext(),
                    placement: Placement = Placement.LIGHT, size_field: str | None = None,
-                   timeout: float | None = None, bounded: bool = False) -> Any:
+                   timeout: float | None = None, bounded: bool = False, timeout_hint: str | None = None) -> Any:
     """``fn(*args)`` for ``request``: the rendered JSON answer (a ``Response``), or a figure's bytes.
 
     ``size_field`` names the input that sets the answer's size (``response_too_large`` over
     ``max_response_bytes``); ``timeout`` replaces the server's solve time limit; ``bounded`` tries the bounded
-    first run in a fast process (above). A failure raises :class:`~service.api.errors.ApiError` (with the field
+    first run in a fast process (above); ``timeout_hint`` is added to a 504's message (what to do instead). A
+    failure raises :class:`~service.api.errors.ApiError` (with the field
     names of ``fields``), or the exception itself when it is a server bug.
     """
     state = request.app.state
@@ -87,9 +88,9 @@ async def run_task(request: Request, fn: Callable[..., Any], *args: Any, fields:
         else:
             executor = executors.threads
         body = await executor.run(render_task, fn, args, limit, size_field, timeout=timeout,
-                                  heavy=placement is not Placement.LIGHT)
+                                  heavy=placement is not Placement.LIGHT, kind=getattr(fn, "__qualname__", None))
     except Exception as exc:
-        err = to_api_error(exc, fields, retry_after=settings.retry_after)
+        err = to_api_error(exc, fields, retry_after=settings.retry_after, timeout_hint=timeout_hint)
         if err is None:
             raise
         raise err from exc

@@ -24,10 +24,16 @@ atlas of a job that is not done                        409     ``job_not_done`` 
 answer over ``max_response_bytes`` (estimated before   422     ``response_too_large`` (``field``: the input
 solving where possible, else counted while rendering)          setting the size, ``details.max_response_bytes``)
 missing or wrong ``X-API-Key`` (auth configured)       401     ``unauthorized``
+control stream handshake from another web origin      403     ``forbidden_origin`` (``field``: ``Origin``;
+                                                               before the upgrade)
 request body over ``max_body_bytes``                   413     ``body_too_large``
 solver pool saturated                                  503     ``overloaded`` (+ ``Retry-After``)
 ``method: homotopy`` without PHCpack on the server     503     ``homotopy_unavailable``
 job store unusable (damaged, read-only, deleted ...)   503     ``jobs_unavailable`` (+ ``Retry-After``)
+request line and headers over ``max_header_bytes`` /  431     ``headers_too_large`` (``tensegrity-opt serve``:
+more than ``max_headers`` header fields                        :mod:`service.api.connections`, before the app)
+request cut by the server's shutdown (still running    503     ``shutting_down`` (+ ``Retry-After``;
+``TENSEGRITY_SHUTDOWN_TIMEOUT`` s after SIGTERM)               :class:`ShutdownAnswerMiddleware`)
 solve time limit exceeded (also the library's          504     ``timeout``, ``status`` when the library
 ``TimeLimitError``: IPOPT's ``max_wall_time``)                 stopped (``User_Requested_Stop``, ...)
 unknown path / method                                  404/405 ``not_found`` / ``method_not_allowed``
@@ -41,6 +47,8 @@ of the request (``"manipulator.segments[2].L0"``, ``"manipulator.n"``, ``"target
 
 from __future__ import annotations
 
+import asyncio
+import json
 import logging
 import re
 from typing import Any
@@ -50,6 +58,7 @@ from fastapi import FastAPI, Request
 from fastapi.exceptions import RequestValidationError
 from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.responses import JSONResponse
+from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from tensegrity_opt.errors import HomotopyUnavailableError, TensegrityError, TimeLimitError
 
@@ -63,7 +72,7 @@ from .middleware import allowed_methods
 log = logging.getLogger("service.errors")
 
 __all__ = ["ApiError", "ServiceError", "error_body", "to_api_error", "status_for", "install", "error_response",
-           "validation_body"]
+           "validation_body", "ShutdownAnswerMiddleware", "SHUTTING_DOWN", "raw_error_response"]
 
 
 class ServiceError(Exception):
@@ -124,6 +133,16 @@ def error_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict[s
 
 def error_response(status_code: int, body: dict[str, Any], headers: dict[str, str] | None = None) -> JSONResponse:
     return JSONResponse(status_code=status_code, content=body, headers=headers)
+
+
+def raw_error_response(status_code: int, body: dict[str, Any]) -> bytes:
+    """A whole HTTP/1.1 answer (``Connection: close``) with the error ``body``, for what the HTTP protocol refuses
+    before the application sees a request (:mod:`service.api.connections`: malformed or oversized heads, requests
+    not received in time)."""
+    content = json.dumps(body, separators=(",", ":")).encode()
+    reason = {400: b"Bad Request", 408: b"Request Timeout", 431: b"Request Header Fields Too Large"}
+    return (b"HTTP/1.1 %d %s\r\ncontent-type: application/json\r\nconnection: close\r\ncontent-length: %d\r\n\r\n"
+            % (status_code, reason.get(status_code, b""), len(content)) + content)
 
 
 def _loc_path(loc: tuple[Any, ...] | list[Any]) -> str:
@@ -206,8 +225,10 @@ class ApiError(Exception):
         self.headers = headers
 
 
-def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retry_after: int = 1) -> ApiError | None:
-    """The HTTP refusal for ``exc``, or ``None`` when it is a server bug (a 500)."""
+def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retry_after: int = 1,
+                 timeout_hint: str | None = None) -> ApiError | None:
+    """The HTTP refusal for ``exc``, or ``None`` when it is a server bug (a 500). ``timeout_hint``: a sentence added
+    to a 504's message (what to do instead, e.g. a figure's job form)."""
     if isinstance(exc, ApiError):
         return exc
     body = error_body(exc, ctx)
@@ -215,11 +236,15 @@ def to_api_error(exc: BaseException, ctx: FieldContext = FieldContext(), *, retr
         return None
     # numpy/scipy/CasADi failed where the library did not refuse first: a bug to fix (500), not an answer
     status = 500 if body["code"] == "numerical_failure" else status_for(exc)
+    if status == 504 and timeout_hint:
+        body["message"] = f"{body['message']}; {timeout_hint}"
     headers = None
     if isinstance(exc, ServiceError) and exc.headers:
         headers = exc.headers
     if status == 503:
-        headers = {**(headers or {}), "Retry-After": str(retry_after)}
+        # an executor that refused by its expected wait says when it expects room (at least the setting)
+        wait = getattr(exc, "retry_after", None)
+        headers = {**(headers or {}), "Retry-After": str(max(retry_after, int(wait)) if wait else retry_after)}
     return ApiError(status, body, headers)
 
 
@@ -295,3 +320,51 @@ def install(app: FastAPI) -> None:
         app.add_exception_handler(cls, _answered)
     app.add_exception_handler(StarletteHTTPException, _http)
     app.add_exception_handler(Exception, _other)
+
+
+#: The body of a request the server's shutdown cut.
+SHUTTING_DOWN = {"code": "shutting_down",
+                 "message": "the server is shutting down and stopped this request before it was answered; send it "
+                            "again (to this server once it is back, or to another)"}
+
+
+class ShutdownAnswerMiddleware:
+    """Pure ASGI middleware: a request cut by the server's shutdown is answered 503 ``shutting_down`` with
+    ``Retry-After``, in the service's error shape.
+
+    At SIGTERM uvicorn gives the requests in flight ``TENSEGRITY_SHUTDOWN_TIMEOUT`` seconds, then cancels their
+    tasks (which interrupts their solves). A cancelled request that has not started its answer gets this one
+    instead of uvicorn's plain-text 500; the connection is closed after it. One started already is cut as before.
+    """
+
+    def __init__(self, app: ASGIApp, retry_after: int = 1) -> None:
+        self.app = app
+        self.retry_after = retry_after
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        started = False
+
+        async def send_wrapper(message: Message) -> None:
+            nonlocal started
+            if message["type"] == "http.response.start":
+                started = True
+            await send(message)
+
+        try:
+            await self.app(scope, receive, send_wrapper)
+        except asyncio.CancelledError:
+            if started:
+                raise
+            log.warning("%s %s stopped by the server's shutdown: answered 503 shutting_down", scope.get("method"),
+                        scope.get("path"))
+            app = scope.get("app")
+            metrics = getattr(getattr(app, "state", None), "metrics", None)
+            if metrics is not None:
+                metrics.failure(SHUTTING_DOWN["code"])
+            response = error_response(503, dict(SHUTTING_DOWN), {"Retry-After": str(self.retry_after),
+                                                                  "Connection": "close"})
+            # answered, not re-raised: the task ends with this answer sent (uvicorn is closing the connection)
+            await response(scope, receive, send)

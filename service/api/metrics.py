@@ -13,6 +13,12 @@ Exposed at ``GET /metrics`` in the Prometheus text format:
 * ``tensegrity_design_processes_in_flight`` (gauge: design requests queued or running in the
   killable processes of :mod:`service.execution.processes`), ``tensegrity_design_processes_killed`` (gauge:
   processes killed because they could not stop at a deadline)
+* ``tensegrity_solver_pool_shed`` (gauge: calls refused at once because they could not finish within their time
+  limit by the expected wait, :mod:`service.execution.shedding`), ``tensegrity_solver_pool_expected_wait_seconds``
+  (gauge: that wait for a new light call)
+* ``tensegrity_solver_processes_state{pool, state}`` (gauge: 1 for the current state of the ``fast`` and ``design``
+  solver processes: ``up``, ``starting``, ``restarting``, ``down``), ``tensegrity_solver_processes_ready{pool}``,
+  ``tensegrity_solver_processes_restarts{pool}`` (processes started to replace lost ones)
 * ``tensegrity_stream_connections`` (gauge: control streams open, ``/v1/control/stream``); the
   streams' refusals count in ``tensegrity_errors_total`` too
 
@@ -35,6 +41,8 @@ from prometheus_client import (
     generate_latest,
 )
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
+
+from ..execution.processes import STATES
 
 # No ``*_created`` series: they double the output and carry nothing a scraper needs.
 disable_created_metrics()
@@ -70,6 +78,27 @@ class Metrics:
             g.set_function(lambda: pool.running)
             g = Gauge("tensegrity_solver_pool_capacity", "Solver workers + queue slots", registry=self.registry)
             g.set_function(lambda: pool.capacity)
+        if pool is not None and hasattr(pool, "shed"):
+            g = Gauge("tensegrity_solver_pool_shed", "Solver calls refused at once because they could not finish "
+                      "within their time limit by the expected wait", registry=self.registry)
+            g.set_function(lambda: pool.shed)
+            g = Gauge("tensegrity_solver_pool_expected_wait_seconds", "Expected wait of a new light call for a "
+                      "solver thread", registry=self.registry)
+            g.set_function(lambda: pool.expected_wait())
+        kinds = [(name, ex) for name, ex in (("fast", getattr(executors, "fast", None)), ("design", heavy))
+                 if ex is not None and hasattr(ex, "state")]
+        if kinds:
+            state = Gauge("tensegrity_solver_processes_state", "Solver processes by kind (pool): 1 for the "
+                          "current state (up, starting, restarting, down)", ["pool", "state"], registry=self.registry)
+            ready = Gauge("tensegrity_solver_processes_ready", "Solver processes ready, by kind", ["pool"],
+                          registry=self.registry)
+            restarts = Gauge("tensegrity_solver_processes_restarts", "Solver processes started to replace lost "
+                             "ones, by kind", ["pool"], registry=self.registry)
+            for name, ex in kinds:
+                for st in STATES:
+                    state.labels(name, st).set_function(lambda ex=ex, st=st: 1.0 if ex.state == st else 0.0)
+                ready.labels(name).set_function(lambda ex=ex: ex.ready_count)
+                restarts.labels(name).set_function(lambda ex=ex: ex.restarts)
         if heavy is not None:
             g = Gauge("tensegrity_design_processes_in_flight", "Design requests queued or running in the design "
                       "processes", registry=self.registry)

@@ -29,6 +29,22 @@ keys, 413 for an oversized body, 422 `response_too_large` for an answer over the
 limit (`field` names what to ask less of), 503 (`Retry-After`) when the solver pool is saturated, 504 when a
 solve exceeds the time limit. The server's limits are at `GET /version`.
 
+Figures (`POST /v1/plots/{kind}`) answer the image within the same time limit. A figure that needs longer
+(a large atlas grid, a long curve) runs as a job with the same body: `POST /v1/plots/{kind}/job` answers 202
+with the job's `id`, `GET /v1/jobs/{id}` shows its progress (`done` of `total` steps, one row per step: each
+target of an atlas, the drawing, the stored image; a failure is a row's `error` and the job's `message`), and
+`GET /v1/jobs/{id}/figure` serves the image once the job is `done` (409 `job_not_done` before). A figure's 504
+names its job route.
+
+```
+curl -s -X POST http://127.0.0.1:8000/v1/plots/atlas/job -H 'Content-Type: application/json' \\
+     -d '{"manipulator": {"n": 3, "a": 0.5}, "dx": {"start": 0.2, "stop": 1.4, "num": 7},
+          "dy": {"start": -0.6, "stop": 0.6, "num": 7}}'
+# 202 {"id": "3f0c...", "status": "queued", "total": 51, "analysis": "figure"}
+curl -s http://127.0.0.1:8000/v1/jobs/3f0c...?limit=0      # "status": "running", "done": 12, "progress": 0.235
+curl -s http://127.0.0.1:8000/v1/jobs/3f0c.../figure -o atlas.png
+```
+
 Control loops may use the WebSocket `/v1/control/stream` instead (one connection per chain, a step per
 message, the same validation and error codes; OpenAPI does not describe WebSockets: see `docs/stream.md`).
 """
@@ -52,8 +68,11 @@ TAGS = [
                                        "tip force estimated from measured joint angles."},
     {"name": "plots", "description": "Figures (PNG or SVG): force-deflection curves, energy landscapes, equilibrium "
                                      "shapes, torque curves, critical-load maps, branch diagrams, limit loads, "
-                                     "stability boundaries, stability atlases, rest-length plans, simulations."},
-    {"name": "jobs", "description": "Sweeps as background jobs, stored in SQLite and resumed after a restart."},
+                                     "stability boundaries, stability atlases, rest-length plans, simulations; "
+                                     "each also as a job (`POST /v1/plots/{kind}/job`, the image at "
+                                     "`GET /v1/jobs/{id}/figure`)."},
+    {"name": "jobs", "description": "Sweeps and figures as background jobs, stored in SQLite and resumed after a "
+                                    "restart."},
     {"name": "ops", "description": "Health, readiness, version and Prometheus metrics."},
 ]
 

@@ -18,7 +18,10 @@ __all__ = ["Executor", "Saturated", "Unavailable", "SolveTimeout"]
 
 
 class Saturated(Exception):
-    """Every worker is busy and the queue is full (503 ``overloaded``)."""
+    """Every worker is busy and the queue is full, or the call's expected wait reaches its time limit (503
+    ``overloaded``; ``retry_after``: the seconds after which the executor expects room, when it knows)."""
+
+    retry_after: float | None = None
 
 
 class Unavailable(Saturated):
@@ -54,9 +57,12 @@ class Executor(abc.ABC):
         """Start the workers (idempotent; a first :meth:`run` starts them too)."""
 
     @abc.abstractmethod
-    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False,
+                  kind: Any = None) -> Any:
         """``fn(*args)`` on a worker; ``heavy`` marks a long request class (a thread executor caps how many
-        of its threads those hold)."""
+        of its threads those hold); ``kind`` names what the call is (a task), for the running estimate of its
+        service time by which a call that could not finish in time is refused at once
+        (:mod:`service.execution.shedding`)."""
 
     @abc.abstractmethod
     def shutdown(self, timeout: float = 0.5) -> None:

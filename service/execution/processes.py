@@ -26,9 +26,19 @@ Children
 A child is ``python -m service.execution.child FD`` (a fresh interpreter, no fork of a threaded server) on one
 end of a socketpair, speaking :mod:`service.execution.ipc`; the loop's end is an asyncio protocol (no thread,
 no blocking read). Its first call is the warm-up (``warmup``: building the solvers, or importing the
-library); it takes calls once that is answered. A child that dies by itself is replaced, at most once every
-``RESTART_INTERVAL`` seconds; one that never got ready (it cannot import the service, its warm-up failed) is
-not: the executor then answers :class:`Unavailable`.
+library); it takes calls once that is answered.
+
+Restarts
+--------
+A child killed by the executor (stuck past a deadline) is replaced at once. A child lost otherwise (it died, was
+killed from outside, failed its warm-up, or exited before it was ready) is replaced after a delay that grows with
+each loss in a row: ``RESTART_BASE`` seconds, doubled each time,
+at most ``RESTART_MAX`` (bounded: a child that can never start is tried again every ``RESTART_MAX`` seconds, with
+one log line each time); the count of losses in a row starts over once a child has been ready for
+``HEALTHY_SECONDS``. Meanwhile :meth:`ProcessExecutor.run` answers :class:`Unavailable` (the fast path's caller
+falls back to the solver threads). :attr:`ProcessExecutor.state` says where it stands (``up``, ``starting``,
+``restarting``, ``down``); ``/readyz`` and ``/metrics`` show it. Only a platform that cannot start a child at all
+(no ``pass_fds``) leaves it ``down``.
 """
 
 from __future__ import annotations
@@ -47,13 +57,25 @@ from typing import Any
 
 from .executor import Executor, Saturated, SolveTimeout, Unavailable
 from .ipc import FRAME, WARMUP, UnreadableReply, encode, ready
+from .shedding import MARGIN, ServiceTimes, expected_wait, refusal, remaining
 
 log = logging.getLogger("service.execution")
 
-__all__ = ["ProcessExecutor", "RESTART_INTERVAL"]
+__all__ = ["ProcessExecutor", "RESTART_BASE", "RESTART_MAX", "HEALTHY_SECONDS", "STATES", "restart_delay"]
 
-#: Seconds between a child's start and the start of its replacement when it died by itself.
-RESTART_INTERVAL = 5.0
+#: Seconds before the replacement of the first child lost after a healthy period; doubled with each loss in a row.
+RESTART_BASE = 0.5
+#: The longest delay before a replacement (seconds).
+RESTART_MAX = 30.0
+#: Seconds a child must have been ready for the next loss to count as the first in a row again.
+HEALTHY_SECONDS = 60.0
+#: The executor's states (:attr:`ProcessExecutor.state`).
+STATES = ("up", "starting", "restarting", "down")
+
+
+def restart_delay(losses: int) -> float:
+    """Seconds before a replacement after ``losses`` children lost in a row (``losses`` >= 1)."""
+    return min(RESTART_BASE * 2.0 ** max(losses - 1, 0), RESTART_MAX)
 
 
 def _expire(fut: asyncio.Future[Any]) -> None:
@@ -72,8 +94,11 @@ class _Child(asyncio.Protocol):
         self.transport: asyncio.Transport | None = None
         self.buffer = bytearray()
         self.calls: dict[int, asyncio.Future[Any]] = {}   # sent, not answered (timed-out ones included)
+        self.sent: dict[int, float] = {}                   # when each was sent (the executor's clock)
+        self.kinds: dict[int, Any] = {}                    # what each is (for the estimates of service time)
         self.reserved = 0                                  # handed to a waiter that has not sent yet
         self.ready = False
+        self.ready_at = 0.0                                # time.monotonic() at the end of its warm-up
         self.killed = False                                # by the executor (past the grace of a deadline)
         self.started = time.monotonic()
         self.done: asyncio.Future[bool] = asyncio.get_running_loop().create_future()   # ready, or never
@@ -142,18 +167,25 @@ class ProcessExecutor(Executor):
         self.env = env
         self._children: list[_Child] = []
         self._waiters: collections.deque[asyncio.Future[_Child]] = collections.deque()
+        self._waiting: dict[asyncio.Future[_Child], Any] = {}     # each waiter's kind of call
         self._tasks: set[asyncio.Task[None]] = set()
         self._next_id = 0
         self._closing = False
-        self._broken = False        # a child never got ready: none is started again
+        self._broken = False        # this platform cannot start a child: none is started again
+        self._restart: asyncio.TimerHandle | None = None    # a replacement waiting for its delay
+        self.losses = 0             # children lost in a row (reset by a healthy period)
+        self.service_times = ServiceTimes()   # the calls' service time, for load shedding (:mod:`.shedding`)
+        self.shed = 0               # calls refused by their expected wait
         self.completed = 0          # calls answered (statistics, tests)
-        self.restarts = 0           # children replaced
+        self.restarts = 0           # children started to replace a lost one
         self.killed = 0             # children killed past the grace of a deadline
 
     # ------------------------------------------------------------------ lifecycle
     def start(self) -> None:
-        """Start the children (returns at once; :meth:`wait_ready` waits for their warm-up)."""
-        while len(self._children) < self.workers and not self._closing and not self._broken:
+        """Start the children (returns at once; :meth:`wait_ready` waits for their warm-up); nothing while a
+        replacement waits for its delay."""
+        while (len(self._children) < self.workers and not self._closing and not self._broken
+               and self._restart is None):
             if not self._spawn():
                 return
 
@@ -165,8 +197,12 @@ class ProcessExecutor(Executor):
                                     env={**os.environ, **self.env} if self.env else None)
         except (OSError, ValueError) as exc:             # ValueError: no pass_fds on this platform
             parent.close()
-            self._broken = True
             log.warning("could not start a %s: %r", self.label, exc)
+            if isinstance(exc, ValueError):
+                self._broken = True
+            else:                                        # out of processes or descriptors: try again later
+                self.losses += 1
+                self._schedule_restart()
             return False
         finally:
             child.close()
@@ -206,6 +242,9 @@ class ProcessExecutor(Executor):
     def shutdown(self, timeout: float = 0.5) -> None:
         """Stop the children (their sockets close; they exit) and fail the calls still outstanding."""
         self._closing = True
+        if self._restart is not None:
+            self._restart.cancel()
+            self._restart = None
         while self._waiters:
             w = self._waiters.popleft()
             if not w.done():
@@ -236,6 +275,21 @@ class ProcessExecutor(Executor):
         return any(c.ready for c in self._children)
 
     @property
+    def ready_count(self) -> int:
+        """Children that have finished their warm-up and run."""
+        return sum(1 for c in self._children if c.ready)
+
+    @property
+    def state(self) -> str:
+        """``up`` (every child ready), ``starting`` (not yet, and none lost so far), ``restarting`` (children were
+        lost: replacements wait for their delay or warm up), ``down`` (stopped, or no child can start here)."""
+        if self._closing or self._broken:
+            return "down"
+        if self.ready_count >= self.workers:
+            return "up"
+        return "restarting" if self.restarts or self.losses else "starting"
+
+    @property
     def pids(self) -> list[int]:
         return [c.proc.pid for c in self._children]
 
@@ -244,8 +298,19 @@ class ProcessExecutor(Executor):
         """Calls waiting for room plus calls in the children (those past their deadline included)."""
         return len(self._waiters) + sum(len(c.calls) for c in self._children)
 
+    def expected_wait(self) -> float:
+        """Seconds a new call would wait for room, by the running estimate of the service time (:mod:`.shedding`):
+        the calls in the children (in order in each) and those waiting, shared by the children."""
+        times = self.service_times
+        now = times.clock()
+        busy = [sum(remaining(sent, times.estimate(False, c.kinds.get(i)), now) for i, sent in c.sent.items())
+                for c in self._children]
+        return expected_wait(busy, [times.estimate(False, kind) for kind in self._waiting.values()],
+                             len(self._children) or self.workers)
+
     # ------------------------------------------------------------------ calls
-    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False,
+                  kind: Any = None) -> Any:
         """``fn(*args)`` in a child (``fn`` importable by name, the arguments and the answer picklable)."""
         if self._closing:
             raise Saturated(f"the {self.label}es are shutting down")
@@ -254,12 +319,16 @@ class ProcessExecutor(Executor):
             if not self._children:
                 self.start()
             if not self._children:
-                raise Unavailable(f"the {self.label} could not start")
+                raise Unavailable(f"the {self.label} is {'restarting' if self.state == 'restarting' else 'down'}")
             if len(self._waiters) >= self.queue_size:
                 if self.queue_size == 0:
                     raise Unavailable(f"no {self.label} is ready with room for the call")
                 raise Saturated(f"all {self.workers} {self.label}es are busy and {self.queue_size} requests are "
                                 "queued")
+            wait, own = self.expected_wait(), self.service_times.estimate(False, kind)
+            if wait > 0.0 and MARGIN * (wait + own) >= timeout:
+                self.shed += 1
+                raise refusal(f"all {self.workers} {self.label}es", wait, own, timeout)
         deadline = time.monotonic() + timeout
         call_id = self._next_id
         self._next_id += 1
@@ -267,13 +336,15 @@ class ProcessExecutor(Executor):
         loop = asyncio.get_running_loop()
         left = timeout
         if child is None:
-            child = await self._acquire(loop, deadline, timeout)
+            child = await self._acquire(loop, deadline, timeout, kind)
             child.reserved -= 1
             if child not in self._children:             # it stopped between the hand-over and now
                 raise Unavailable(f"the {self.label} stopped")
             left = max(deadline - time.monotonic(), 0.0)
         fut: asyncio.Future[Any] = loop.create_future()
         child.calls[call_id] = fut
+        child.sent[call_id] = self.service_times.clock()
+        child.kinds[call_id] = kind
         assert child.transport is not None
         child.transport.write(frame)
         # one timer instead of asyncio.wait_for (which costs ~20 us of loop time per call)
@@ -300,10 +371,11 @@ class ProcessExecutor(Executor):
                 best = c
         return best
 
-    async def _acquire(self, loop: asyncio.AbstractEventLoop, deadline: float, timeout: float) -> _Child:
+    async def _acquire(self, loop: asyncio.AbstractEventLoop, deadline: float, timeout: float, kind: Any) -> _Child:
         """Wait for room in a child (until ``deadline``); the child comes with one call reserved."""
         w: asyncio.Future[_Child] = loop.create_future()
         self._waiters.append(w)
+        self._waiting[w] = kind
         try:
             return await asyncio.wait_for(w, max(deadline - time.monotonic(), 0.0))
         except BaseException as exc:                    # timed out, or the request went away
@@ -314,6 +386,7 @@ class ProcessExecutor(Executor):
                 raise SolveTimeout(timeout) from None
             raise
         finally:
+            self._waiting.pop(w, None)
             try:
                 self._waiters.remove(w)
             except ValueError:
@@ -348,15 +421,18 @@ class ProcessExecutor(Executor):
         if call_id == WARMUP:
             if ok:
                 child.ready = True
+                child.ready_at = time.monotonic()
                 if not child.done.done():
                     child.done.set_result(True)
                 self._wake()
-            else:
-                self._broken = True
+            else:                                        # lost (and replaced after its delay)
                 log.warning("a %s failed its warm-up (%s)", self.label, value)
                 child.proc.kill()
             return
         fut = child.calls.pop(call_id, None)
+        sent, kind = child.sent.pop(call_id, None), child.kinds.pop(call_id, None)
+        if sent is not None:
+            self.service_times.record(False, self.service_times.clock() - sent, kind)
         self.completed += 1
         if fut is not None and not fut.done():
             if ok:
@@ -388,24 +464,33 @@ class ProcessExecutor(Executor):
             code = proc.wait(1.0)
         if self._closing:
             return
-        if not child.ready:             # it never got ready (cannot import the service, say): not restarted
-            self._broken = True
-            log.warning("a %s exited (status %s) before it was ready", self.label, code)
-            if not self._children:
-                while self._waiters:
-                    w = self._waiters.popleft()
-                    if not w.done():
-                        w.set_exception(Unavailable(f"the {self.label} could not start"))
+        if child.killed:                                # stuck in a call: its replacement starts at once
+            if self._restart is None:
+                self._replace()
             return
-        if not child.killed:
-            log.warning("%s %s exited (status %s); it is replaced", self.label, proc.pid, code)
-        delay = 0.0 if child.killed else RESTART_INTERVAL - (time.monotonic() - child.started)
-        if delay > 0:
-            asyncio.get_running_loop().call_later(delay, self._replace)
-        else:
-            self._replace()
+        if child.ready and time.monotonic() - child.ready_at >= HEALTHY_SECONDS:
+            self.losses = 0                             # after a healthy period: the first loss in a row again
+        self.losses += 1
+        log.warning("%s %s exited (status %s)%s; it is replaced in %.1f s", self.label, proc.pid, code,
+                    "" if child.ready else " before it was ready", restart_delay(self.losses))
+        if not child.ready and not self._children:
+            while self._waiters:                        # nothing will answer them before a replacement is ready
+                w = self._waiters.popleft()
+                if not w.done():
+                    w.set_exception(Unavailable(f"the {self.label} could not start; it is being restarted"))
+        self._schedule_restart()
+
+    def _schedule_restart(self) -> None:
+        """Replace the lost children after the delay of the losses in a row (one timer for all of them)."""
+        if self._closing or self._broken or self._restart is not None:
+            return
+        self._restart = asyncio.get_running_loop().call_later(restart_delay(max(self.losses, 1)), self._replace)
 
     def _replace(self) -> None:
-        if not self._closing and not self._broken and len(self._children) < self.workers:
+        self._restart = None
+        if self._closing or self._broken:
+            return
+        while len(self._children) < self.workers and self._restart is None:
             self.restarts += 1
-            self._spawn()
+            if not self._spawn():
+                return

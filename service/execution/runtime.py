@@ -16,6 +16,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import os
 from collections.abc import Callable
 from typing import Any
 
@@ -32,6 +33,15 @@ __all__ = ["Executors", "FAST_GRACE", "WARMUP_TIMEOUT"]
 FAST_GRACE = 1.0
 #: Seconds the start-up waits for the solver processes' warm-up (then the threads answer until they are ready).
 WARMUP_TIMEOUT = 60.0
+
+
+def child_env(settings: Settings) -> dict[str, str] | None:
+    """The solver processes' environment beyond the server's: with ``kernel_builds=background`` they compile in the
+    background too (``TENSEGRITY_COMPILE=background``), unless compilation is switched off."""
+    current = os.environ.get("TENSEGRITY_COMPILE", "1").strip().lower()
+    if settings.kernel_builds == "background" and current not in ("0", "false", "no", "off"):
+        return {"TENSEGRITY_COMPILE": "background"}
+    return None
 
 
 class Executors:
@@ -52,11 +62,13 @@ class Executors:
         self.settings = settings
         self.warmup = warmup
         self.threads = ThreadExecutor(settings.workers, settings.queue_size, heavy_limit=settings.heavy_threads)
+        env = child_env(settings)
         self.fast = (ProcessExecutor(settings.inline_processes, depth=max(settings.queue_size, 1), grace=FAST_GRACE,
-                                     warmup=warmup, label="solver process")
+                                     warmup=warmup, label="solver process", env=env)
                      if settings.inline_processes and settings.inline_max_segments else None)
         self.killable = (ProcessExecutor(settings.heavy_workers, queue_size=settings.heavy_queue_size,
-                                         grace=settings.heavy_grace, warmup=loaded, label="design solver process")
+                                         grace=settings.heavy_grace, warmup=loaded, label="design solver process",
+                                         env=env)
                          if settings.heavy_workers else None)
         self.streams = StreamSlots(settings.max_stream_connections)
 

@@ -23,6 +23,11 @@ Why threads, and how a call is stopped
   takes the same lock, marks the call done and clears any exception still pending for its thread, so an
   interrupt never hits the next call.
 
+Load shedding: a call that must wait for a thread and could not finish within its time limit (its expected wait,
+from the running calls' remaining time and the calls queued ahead of it, plus its own service time, by running
+estimates per kind of call: :mod:`.shedding`) is refused at once with :class:`Saturated` (503 + ``Retry-After``)
+instead of waiting for its 504.
+
 Fairness: calls submitted with ``heavy=True`` (long request classes) run on at most ``heavy_limit`` threads at
 once (default ``workers - 1``, at least 1); a free thread takes the oldest queued call it may run, so with two
 or more workers a light call never waits for heavy ones.
@@ -42,6 +47,7 @@ from typing import Any
 from tensegrity_opt.timelimit import time_limit
 
 from .executor import Executor, Saturated, SolveTimeout
+from .shedding import MARGIN, ServiceTimes, expected_wait, refusal, remaining
 
 __all__ = ["ThreadExecutor", "Call", "Interrupted", "REFIRE_SECONDS"]
 
@@ -68,17 +74,22 @@ _QUEUED, _RUNNING, _DONE = 0, 1, 2
 class Call:
     """One submitted call: its future (the result or the exception) and where it is."""
 
-    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "deadline", "heavy")
+    __slots__ = ("fn", "args", "future", "state", "thread_id", "cancel_sent", "abandoned", "deadline", "heavy",
+                 "kind", "estimate", "started")
 
-    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...], heavy: bool, timeout: float | None) -> None:
+    def __init__(self, fn: Callable[..., Any], args: tuple[Any, ...], heavy: bool, timeout: float | None,
+                 kind: Any = None, estimate: float = 0.0) -> None:
         self.fn = fn
         self.args = args
         self.heavy = heavy
+        self.kind = kind            # what the call is, for the estimate of its service time
+        self.estimate = estimate    # that estimate when it was submitted (seconds)
         self.future: concurrent.futures.Future[Any] = concurrent.futures.Future()
         self.state = _QUEUED
         self.thread_id = 0
         self.cancel_sent = False
         self.abandoned = False
+        self.started = 0.0          # on the executor's clock (its ServiceTimes'), once running
         # time.monotonic(): the library time limit of the call, set before any worker can see the call
         self.deadline: float | None = None if timeout is None else time.monotonic() + timeout
 
@@ -94,9 +105,12 @@ class ThreadExecutor(Executor):
         The threads' name prefix (``name-0``, ``name-1`` ...).
     heavy_limit : int, optional
         Threads the ``heavy`` calls may hold at once (default ``workers - 1``, at least 1).
+    service_times : ServiceTimes, optional
+        The running estimate of the calls' service time that load shedding uses (default: a new one).
     """
 
-    def __init__(self, workers: int, queue_size: int, name: str = "solver", heavy_limit: int | None = None) -> None:
+    def __init__(self, workers: int, queue_size: int, name: str = "solver", heavy_limit: int | None = None,
+                 service_times: ServiceTimes | None = None) -> None:
         if workers < 1 or queue_size < 0:
             raise ValueError("workers must be >= 1 and queue_size >= 0")
         self.heavy_limit = max(1, workers - 1) if heavy_limit is None else max(1, min(heavy_limit, workers))
@@ -114,6 +128,8 @@ class ThreadExecutor(Executor):
         self._stopping = False
         self._refiring = False
         self.cancelled_running = 0  # calls interrupted in a worker (statistics)
+        self.service_times = service_times if service_times is not None else ServiceTimes()
+        self.shed = 0               # calls refused by their expected wait (statistics)
 
     # ------------------------------------------------------------------ lifecycle
     def start(self) -> None:
@@ -166,16 +182,51 @@ class ThreadExecutor(Executor):
     def capacity(self) -> int:
         return self.workers + self.queue_size
 
+    def expected_wait(self, heavy: bool = False) -> float:
+        """Seconds a new call of the class ``heavy`` would wait for a thread, by the running estimates
+        (:mod:`.shedding`); 0 while a thread is free for it."""
+        with self._lock:
+            return self._expected_wait(heavy)
+
+    def _expected_wait(self, heavy: bool) -> float:
+        # under the lock
+        if self._pending < self.workers and (not heavy or self._running_heavy < self.heavy_limit):
+            return 0.0
+        now = self.service_times.clock()
+        running = [c for c in self._active if c.state == _RUNNING]
+        busy = [remaining(c.started, c.estimate, now) for c in running]
+        if heavy:       # a thread, and one of the heavy share
+            return max(expected_wait(busy, [c.estimate for c in self._queue], self.workers),
+                       expected_wait([remaining(c.started, c.estimate, now) for c in running if c.heavy],
+                                     [c.estimate for c in self._queue if c.heavy], self.heavy_limit))
+        # a light call passes the heavy calls that wait for the heavy share of the threads
+        room = max(self.heavy_limit - self._running_heavy, 0)
+        ahead = []
+        for c in self._queue:
+            if c.heavy:
+                if room == 0:
+                    continue
+                room -= 1
+            ahead.append(c.estimate)
+        return expected_wait(busy, ahead, self.workers)
+
     # ------------------------------------------------------------------ calls
-    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False, timeout: float | None = None) -> Call:
+    def submit(self, fn: Callable[..., Any], *args: Any, heavy: bool = False, timeout: float | None = None,
+               kind: Any = None) -> Call:
         """Queue ``fn(*args)`` (under the library time limit ``timeout``, if given); raise :class:`Saturated`
-        when ``workers + queue_size`` calls are pending."""
-        call = Call(fn, args, heavy, timeout)
+        when ``workers + queue_size`` calls are pending, or when the call would wait and could not finish within
+        ``timeout`` by the estimates of its ``kind`` and of the calls ahead (:mod:`.shedding`)."""
+        call = Call(fn, args, heavy, timeout, kind, self.service_times.estimate(heavy, kind))
         with self._cond:
             if self._stopping:
                 raise Saturated("the solver pool is shutting down")
             if self._pending >= self.capacity:
                 raise Saturated(f"all {self.workers} solver workers are busy and {self.queue_size} requests are queued")
+            if timeout is not None:
+                wait = self._expected_wait(heavy)
+                if wait > 0.0 and MARGIN * (wait + call.estimate) >= timeout:
+                    self.shed += 1
+                    raise refusal(f"all {self.workers} solver workers", wait, call.estimate, timeout)
             self._pending += 1
             self._queue.append(call)
             self._cond.notify()
@@ -183,9 +234,10 @@ class ThreadExecutor(Executor):
             self.start()
         return call
 
-    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False) -> Any:
+    async def run(self, fn: Callable[..., Any], *args: Any, timeout: float, heavy: bool = False,
+                  kind: Any = None) -> Any:
         """Run ``fn(*args)`` in a worker; raise :class:`SolveTimeout` after ``timeout`` seconds."""
-        call = self.submit(fn, *args, heavy=heavy, timeout=timeout)
+        call = self.submit(fn, *args, heavy=heavy, timeout=timeout, kind=kind)
         try:
             return await asyncio.wait_for(asyncio.wrap_future(call.future), timeout)
         except (asyncio.TimeoutError, TimeoutError):
@@ -310,6 +362,7 @@ class ThreadExecutor(Executor):
                 if call.abandoned:
                     return False, SolveTimeout(0.0)
                 call.thread_id = tid
+                call.started = self.service_times.clock()
                 call.state = _RUNNING
                 self._running += 1
                 self._active.add(call)
@@ -322,6 +375,7 @@ class ThreadExecutor(Executor):
             outcome = (False, SolveTimeout(0.0))
         except BaseException as exc:  # noqa: BLE001 - handed to the caller
             outcome = (False, exc)
+        self.service_times.record(call.heavy, self.service_times.clock() - call.started, call.kind)
         # Disarm: after this no interrupt can be sent for this call and none is pending.
         while True:
             try:

@@ -32,9 +32,27 @@ graceful shutdown stops the running jobs between two points and puts them back t
 finished points are kept); ``DELETE`` removes a job with its rows (cancelling it first). Finished jobs older than
 ``TENSEGRITY_JOBS_RETENTION_DAYS`` (0: never) are deleted at start-up and hourly.
 
+Figure jobs
+-----------
+A figure (``POST /v1/plots/<kind>/job``, analysis ``figure``) runs as one call on the same points' thread, under
+``TENSEGRITY_JOBS_POINT_TIMEOUT`` (a continuation's soft deadline at 90 % of it: it draws what it has by then);
+each step it reports is a row (``index``, ``stage``, ``error``: the targets of an atlas, the drawing), then the image
+is stored (:meth:`JobStore.put_figure`) with the last row and the job is ``done``. A failure is a row with its
+``error`` (``code: message``, ``timeout: ...`` past the limit) and the job ``failed`` with the same message. A
+resumed figure job starts its figure again (the rows of its steps are stored once).
+
 Every SQLite or OS error of an API call raises :class:`~service.jobs.store.JobsUnavailable` (503
-``jobs_unavailable``). The database file is created on the first submitted job, so a server that never gets a
-job leaves no file behind.
+``jobs_unavailable``, saying what failed, not where on disk). The database file is created on the first
+submitted job, so a server that never gets a job leaves no file behind.
+
+Storage faults clear
+--------------------
+No fault is final (but a file deleted or replaced while the server runs): every API call tries the store again,
+and while the store fails (:meth:`JobRunner.health`, shown by ``/readyz``) a watcher thread retries it every
+``TENSEGRITY_JOBS_RETRY_SECONDS``: it opens the file when it could not be opened, then probes it
+(:meth:`JobStore.probe <service.jobs.store.JobStore.probe>`: free space, a small write). Once a probe succeeds the
+store is healthy again, the runner threads take up the queue, and the jobs a storage fault cut off in this
+server go back to ``queued`` at once (rather than after their lease).
 """
 
 from __future__ import annotations
@@ -61,11 +79,19 @@ from tensegrity_opt.errors import InvalidParameterError
 from ..config import Settings
 from ..execution.executor import SolveTimeout
 from ..execution.threads import Call, ThreadExecutor
-from .store import JobFinished, JobNotFound, JobStore, JobsUnavailable
+from ..tasks.plots import FIGURE_ANALYSIS, figure_job_task
+from .store import NAME, JobFinished, JobNotFound, JobStore, JobsUnavailable, fault_text
 
 log = logging.getLogger("service.jobs")
 
-__all__ = ["JobRunner"]
+__all__ = ["JobRunner", "FIGURE_COLUMNS", "FIGURE_MEDIA"]
+
+#: The rows of a figure job: one per step.
+FIGURE_COLUMNS = ["index", "stage", "error"]
+#: A figure job's image format -> media type.
+FIGURE_MEDIA = {"png": "image/png", "svg": "image/svg+xml"}
+#: The share of ``TENSEGRITY_JOBS_POINT_TIMEOUT`` a figure job's continuation may use (then it draws what it has).
+FIGURE_DEADLINE_SHARE = 0.9
 
 def _setting(settings: Any, name: str, fallback: Any) -> Any:
     value = getattr(settings, name, None) if settings is not None else None
@@ -92,8 +118,7 @@ def _storage_guard(fn: Callable[..., Any]) -> Callable[..., Any]:
         try:
             return fn(self, *args, **kwargs)
         except (sqlite3.Error, OSError) as exc:
-            raise JobsUnavailable(f"the job store {self.db_path} cannot be used: {type(exc).__name__}: {exc}") \
-                from exc
+            raise JobsUnavailable(self._fault_message(exc)) from exc
 
     return wrapper
 
@@ -110,7 +135,8 @@ class JobRunner:
                  scheduler: str | None = None, resume: bool | None = None, max_points: int | None = None,
                  synchronous: str | None = None, chunk_size: int | None = None, point_timeout: float | None = None,
                  max_running: int | None = None, slice_seconds: float | None = None,
-                 retention_days: float | None = None, lease_seconds: float | None = None) -> None:
+                 retention_days: float | None = None, lease_seconds: float | None = None,
+                 retry_seconds: float | None = None) -> None:
         self.config_error: str | None = None
         try:
             js = settings if settings is not None else Settings()
@@ -133,6 +159,7 @@ class JobRunner:
         self.slice_seconds = float(pick(slice_seconds, "jobs_slice_seconds"))
         self.retention_days = float(pick(retention_days, "jobs_retention_days"))
         self.lease_seconds = float(pick(lease_seconds, "jobs_lease_seconds"))
+        self.retry_seconds = float(pick(retry_seconds, "jobs_retry_seconds"))
         self.results_max_limit = int(_setting(settings, "jobs_results_max_limit", js.jobs_results_max_limit))
         self.max_segments = _setting(settings, "max_segments", None)
         self.homotopy_max_segments = _setting(settings, "homotopy_max_segments", None)
@@ -140,7 +167,6 @@ class JobRunner:
         #: This runner's identity in the leases (one per server process).
         self.host = socket.gethostname()
         self.id = f"{self.host}:{os.getpid()}-{uuid.uuid4().hex[:12]}"
-        self.error: str | None = None
         self.points_computed = 0          # points this runner solved (tests, statistics)
         self._ready = False
         self._lock = threading.Lock()          # slots / opening the store
@@ -153,6 +179,7 @@ class JobRunner:
         self.points = ThreadExecutor(self.max_running, 0, name="sweep-points")
         self._purged = 0.0
         self._fault_logged = -1e9
+        self._stranded: set[str] = set()       # jobs a storage fault cut off here (released once it clears)
 
     # -------------------------------------------------------------- lifecycle
     def start(self) -> JobRunner:
@@ -170,16 +197,11 @@ class JobRunner:
         if self.store.exists():
             try:
                 self._open()
-                self.store.free_dead_leases(self.host)
-                n = self.store.recover(self.resume)
-                if n:
-                    log.warning("%d job(s) left running by a previous process marked interrupted", n)
-                self._purge()
-            except Exception as exc:  # the rest of the service keeps working
-                self.error = f"cannot open the job store {self.db_path}: {exc}"
-                log.error(self.error)
+            except Exception as exc:  # the rest of the service keeps working; the watcher retries
+                log.error("cannot open the job store %s (retried every %g s): %r", self.db_path, self.retry_seconds,
+                          exc)
         targets = [(f"sweep-jobs-{s.k}", functools.partial(self._loop, s)) for s in self._slots]
-        targets += [("sweep-jobs-lease", self._heartbeat)]
+        targets += [("sweep-jobs-lease", self._heartbeat), ("sweep-jobs-watch", self._watch)]
         self.points = ThreadExecutor(self.max_running, 0, name="sweep-points")
         self.points.start()
         for name, target in targets:
@@ -209,14 +231,29 @@ class JobRunner:
         self.store.close()
 
     def _open(self) -> None:
+        """Open the store once (creating it when missing): free the leases of dead runners of this host, resume
+        or interrupt the jobs a previous process left running, purge expired jobs. Raises (and stays closed, to
+        be tried again) when any of it fails."""
         with self._lock:
             if not self._ready:
                 self.store.open()
+                self.store.free_dead_leases(self.host)
+                n = self.store.recover(self.resume)
+                if n:
+                    log.warning("%d job(s) left running by a previous process marked interrupted", n)
+                self._purge()
                 self._ready = True
 
+    def _fault_message(self, exc: BaseException) -> str:
+        """What failed (the store's health, else the exception), never where on disk."""
+        return self.store.health()["message"] or f"{NAME} cannot be used: {fault_text(exc)}"
+
+    def health(self) -> dict[str, Any]:
+        """The job store's health: ``status`` ``ok`` or ``failing``, ``message`` (what fails, no path) and
+        ``since`` (epoch seconds). Reads no file (for ``/readyz``)."""
+        return self.store.health()
+
     def _store(self) -> JobStore:
-        if self.error:
-            raise JobsUnavailable(self.error)
         if not self._ready:
             if not self.store.exists():
                 raise JobNotFound("")
@@ -251,20 +288,33 @@ class JobRunner:
     @_storage_guard
     def submit(self, spec: Any, owner: str | None = None) -> dict[str, Any]:
         """Validate and store a new ``queued`` job (of ``owner``: an API key's hash); a runner thread picks it up."""
-        if self.error:
-            raise JobsUnavailable(self.error)
         norm, total, cols = self.validate(spec)
+        return self._create(norm, total, cols, owner)
+
+    @_storage_guard
+    def submit_figure(self, kind: str, fmt: str, request: Mapping[str, Any], total: int,
+                      owner: str | None = None) -> dict[str, Any]:
+        """Store a new ``queued`` figure job: the figure ``kind`` of ``request`` (its JSON form, checked by the route
+        against the server's limits) as ``fmt``, in ``total`` steps (:func:`service.tasks.plots.figure_steps`)."""
+        spec = {"analysis": FIGURE_ANALYSIS, "kind": kind, "format": fmt, "request": dict(request)}
+        return self._create(spec, int(total), list(FIGURE_COLUMNS), owner)
+
+    def _create(self, spec: dict[str, Any], total: int, cols: list[str], owner: str | None) -> dict[str, Any]:
         try:
             self._open()
         except Exception as exc:
-            self.error = f"cannot open the job store {self.db_path}: {exc}"
-            log.error(self.error)
-            raise JobsUnavailable(self.error) from exc
+            self._log_fault("cannot open the job store %s: %r", self.db_path, exc)
+            raise
         self.store.check_file()
-        job = self.store.create(norm, total, cols, owner)
+        job = self.store.create(spec, total, cols, owner)
         with self._wake:
             self._wake.notify()
         return job
+
+    @_storage_guard
+    def figure(self, job_id: str) -> tuple[str, bytes] | None:
+        """The media type and bytes of a figure job's image (``None`` before it is stored)."""
+        return self._store().figure(job_id)
 
     @_storage_guard
     def get(self, job_id: str, owner: str | None = None) -> dict[str, Any]:
@@ -287,12 +337,12 @@ class JobRunner:
             except StopIteration:
                 return
             except (sqlite3.Error, OSError) as exc:
-                raise JobsUnavailable(f"the job store {self.db_path} cannot be used: {exc}") from exc
+                raise JobsUnavailable(self._fault_message(exc)) from exc
             yield b
 
     @_storage_guard
     def list(self, limit: int = 50, status: str | None = None, owner: str | None = None) -> list[dict[str, Any]]:
-        if not self._ready and not self.store.exists() and not self.error:
+        if not self._ready and not self.store.exists():
             return []
         return self._store().list(limit, status, owner)
 
@@ -355,7 +405,7 @@ class JobRunner:
     def _loop(self, slot: _Slot) -> None:
         while not self._stopping.is_set():
             job = None
-            if self._ready and not self.error:
+            if self._ready:
                 try:
                     self.store.check_file()
                     self.store.free_dead_leases(self.host)
@@ -365,9 +415,7 @@ class JobRunner:
                         held = [s.job_id for s in self._slots if s.job_id]
                     job = self.store.claim(self.id, self.lease_seconds, exclude=held)
                 except Exception as exc:  # database trouble: retry later (logged once a minute)
-                    if time.monotonic() - self._fault_logged > 60:
-                        self._fault_logged = time.monotonic()
-                        log.error("job runner: cannot read the job queue of %s: %r", self.db_path, exc)
+                    self._log_fault("job runner: cannot read the job queue of %s: %r", self.db_path, exc)
             if job is None:
                 with self._wake:
                     if not self._stopping.is_set():
@@ -379,6 +427,10 @@ class JobRunner:
                 slot.renewed = time.monotonic()
             try:
                 self._run(slot, job)
+            except (sqlite3.Error, JobsUnavailable) as exc:  # released as soon as the store works again
+                with self._lock:
+                    self._stranded.add(job["id"])
+                self._log_fault("job %s: stopped by a fault of the job store %s: %r", job["id"], self.db_path, exc)
             except Exception:  # never let the runner die (the lease expires; the job is taken up again)
                 log.exception("job %s: unexpected runner error", job["id"])
             finally:
@@ -388,6 +440,9 @@ class JobRunner:
     def _run(self, slot: _Slot, job: dict[str, Any]) -> None:
         """Run ``job`` until it is done, cancelled, its lease lost, its slice over or the server stops."""
         job_id = job["id"]
+        if job["analysis"] == FIGURE_ANALYSIS:
+            self._run_figure(slot, job)
+            return
         done = self.store.done_indices(job_id)
         log.info("job %s: running (%d of %d points already stored)", job_id, len(done), job["total"])
         slice_end = time.monotonic() + self.slice_seconds
@@ -425,11 +480,12 @@ class JobRunner:
                           on_result=lambda i, row: self.store.add_point(job_id, i, row, self.id),
                           chunk_size=self.chunk_size)
         except Exception as exc:
-            if isinstance(exc, sqlite3.Error):
+            if isinstance(exc, (sqlite3.Error, JobsUnavailable)):
                 raise
+            detail = exc.strerror if isinstance(exc, OSError) and exc.filename else exc   # the job names no file
             msg = format_error(exc) if not isinstance(exc, (OSError, TimeoutError)) else \
-                f"scheduler_unreachable: {type(exc).__name__}: {exc}"
-            log.warning("job %s failed: %s", job_id, msg)
+                f"scheduler_unreachable: {type(exc).__name__}: {detail}"
+            log.warning("job %s failed: %s (%r)", job_id, msg, exc)
             self.store.release(job_id, self.id, status="failed", message=msg[:2000], finished=True)
             return
         if slot.stop.is_set():
@@ -439,12 +495,7 @@ class JobRunner:
             self.store.release(job_id, self.id, status="done", finished=True)
             log.info("job %s: done (%d points, %.1f s in this run)", job_id, job["total"], time.perf_counter() - t0)
         elif self._stopping.is_set():
-            if self.resume:
-                self.store.release(job_id, self.id, status="queued",
-                                   message="stopped by a server shutdown; resumes when the server starts again")
-            else:
-                self.store.release(job_id, self.id, status="interrupted", finished=True,
-                                   message="stopped by a server shutdown; finished points are kept")
+            self._stopped(job_id)
         elif yielded:
             self.store.release(job_id, self.id, status="queued",
                                message=f"waiting for its next turn ({stored} of {job['total']} points done; "
@@ -452,6 +503,68 @@ class JobRunner:
         else:  # pragma: no cover - defensive
             self.store.release(job_id, self.id, status="failed", finished=True,
                                message=f"internal_error: {stored} of {job['total']} points stored")
+
+    def _stopped(self, job_id: str) -> None:
+        """A server shutdown stopped ``job_id``: back to ``queued`` (resumed at the next start), or interrupted."""
+        if self.resume:
+            self.store.release(job_id, self.id, status="queued",
+                               message="stopped by a server shutdown; resumes when the server starts again")
+        else:
+            self.store.release(job_id, self.id, status="interrupted", finished=True,
+                               message="stopped by a server shutdown; finished points are kept")
+
+    def _run_figure(self, slot: _Slot, job: dict[str, Any]) -> None:
+        """Draw a figure job on the points' thread (module docstring: Figure jobs)."""
+        job_id, spec, total = job["id"], job["spec"], int(job["total"])
+        last = total - 1                       # the last row is the stored image's
+        step = [0]
+        log.info("job %s: drawing the figure %s", job_id, spec.get("kind"))
+
+        def row(stage: str, error: str | None = None) -> None:
+            i = min(step[0], last)
+            step[0] += 1
+            self.store.add_point(job_id, i, {"index": i, "stage": stage, "error": error}, self.id)
+
+        def progress(stage: str) -> None:      # on the points' thread
+            if step[0] < last:
+                row(stage)
+
+        data: bytes | None = None
+        error: str | None = None
+        with self._point_lock:
+            if not (slot.stop.is_set() or self._stopping.is_set()):
+                slot.abandoned = False
+                deadline = time.monotonic() + FIGURE_DEADLINE_SHARE * self.point_timeout
+                slot.call = self.points.submit(figure_job_task, spec, deadline, progress, timeout=self.point_timeout)
+            call = slot.call
+        try:
+            if call is not None:
+                data = self.points.wait(call, self.point_timeout)
+        except SolveTimeout:
+            if not slot.abandoned:
+                error = (f"timeout: the figure did not finish within {self.point_timeout:g} s "
+                         "(TENSEGRITY_JOBS_POINT_TIMEOUT)")
+        except Exception as exc:  # the figure's own failure: a row, and the job failed
+            error = format_error(exc)
+        finally:
+            with self._point_lock:
+                slot.call = None
+        if slot.stop.is_set():
+            return                      # cancelled, or another server holds the job now
+        if error is not None:
+            log.warning("job %s failed: %s", job_id, error)
+            row("failed", error)
+            self.store.release(job_id, self.id, status="failed", message=error[:2000], finished=True)
+            return
+        if data is None:                # abandoned by a shutdown
+            self._stopped(job_id)
+            return
+        fmt = spec["format"]
+        self.store.put_figure(job_id, FIGURE_MEDIA[fmt], data, self.id)
+        self.store.add_point(job_id, last, {"index": last, "stage": f"stored: {fmt}, {len(data)} bytes",
+                                            "error": None}, self.id)
+        self.store.release(job_id, self.id, status="done", finished=True)
+        log.info("job %s: figure done (%d bytes)", job_id, len(data))
 
     def _timed_row(self, slot: _Slot, header: Mapping[str, Any], pcols: list[str], rcols: list[str], i: int,
                    p: Mapping[str, Any]) -> dict[str, Any] | None:
@@ -508,11 +621,44 @@ class JobRunner:
                         slot.stop.set()
                         self._abandon(slot)
                     log.warning("job %s: cancelled elsewhere or lease lost; this server stops running it", job_id)
-            if self._ready and not self.error and time.monotonic() - self._purged > 3600:
+            if self._ready and time.monotonic() - self._purged > 3600:
                 try:
                     self._purge()
                 except Exception as exc:
                     log.warning("cannot purge expired jobs: %r", exc)
+
+    def _log_fault(self, msg: str, *args: Any) -> None:
+        """Log a storage fault, at most once a minute (a failing store is retried often)."""
+        if time.monotonic() - self._fault_logged > 60:
+            self._fault_logged = time.monotonic()
+            log.error(msg, *args)
+
+    def _watch(self) -> None:
+        """While the store fails, retry it every ``retry_seconds`` (:meth:`recover_store`)."""
+        while not self._stopping.wait(self.retry_seconds):
+            if self.store.health()["status"] != "ok":
+                self.recover_store()
+
+    def recover_store(self) -> bool:
+        """One retry of a failing store: open it if it is not open, probe it, then put back to ``queued`` the
+        jobs a storage fault cut off here and wake the runner threads. True when the store works."""
+        try:
+            self._open()
+            self.store.probe()
+            with self._lock:
+                stranded = sorted(self._stranded)
+            for job_id in stranded:
+                self.store.release(job_id, self.id, status="queued",
+                                   message="waiting for its next turn after a fault of the job store")
+                with self._lock:
+                    self._stranded.discard(job_id)
+        except Exception as exc:
+            self._log_fault("the job store %s still fails: %r", self.db_path, exc)
+            return False
+        log.warning("the job store %s works again", self.db_path)
+        with self._wake:
+            self._wake.notify_all()
+        return True
 
     def _purge(self) -> int:
         self._purged = time.monotonic()

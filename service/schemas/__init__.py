@@ -131,7 +131,7 @@ from .jobs import (
     SweepUniformManipulator,
 )
 from .landscape import EnergyLandscapeOut, EnergyLandscapeRequest
-from .ops import Health, KernelsOut, Limits, Ready, VersionOut
+from .ops import Health, JobsHealth, KernelsOut, Limits, ProcessesState, Ready, VersionOut
 from .paths import (
     BifurcationDiagramOut,
     BifurcationDiagramRequest,
@@ -312,6 +312,8 @@ __all__ = [
     "PreloadsStep",
     "RangeIn",
     "Ready",
+    "JobsHealth",
+    "ProcessesState",
     "RestConfigurationsRequest",
     "STEP_MODELS",
     "RestLengthBoundsIn",

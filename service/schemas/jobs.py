@@ -31,7 +31,7 @@ from .common import Deflection, ForceValue, Length, SegmentIn, Stiff, integral
 
 __all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "SweepManipulator", "SweepUniformManipulator",
            "SweepSegmentedManipulator", "JobCreated", "JobSummary", "JobOut", "JobResults",
-           "JobList", "JobStatus", "SPEC_EXAMPLES", "JOB_EXAMPLE", "RESULTS_EXAMPLE", "CSV_EXAMPLE"]
+           "JobList", "JobStatus", "JobAnalysis", "SPEC_EXAMPLES", "JOB_EXAMPLE", "RESULTS_EXAMPLE", "CSV_EXAMPLE"]
 
 #: Schema caps (the server's ``TENSEGRITY_JOBS_MAX_POINTS`` can only be tighter).
 HARD_MAX_JOB_POINTS = 100_000
@@ -40,6 +40,8 @@ MAX_GRID_VALUES = 10_000
 _STRICT = ConfigDict(strict=True, extra="forbid")
 
 Analysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design", "atlas"]
+#: What a job computes: a sweep's analysis, or ``figure`` (a figure as a job, ``POST /v1/plots/{kind}/job``).
+JobAnalysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design", "atlas", "figure"]
 JobStatus = Literal["queued", "running", "done", "failed", "cancelled", "interrupted"]
 DesignVariable = Literal["a", "b", "k", "L0"]
 Segments = Annotated[int, Field(ge=1, le=HARD_MAX_SEGMENTS), BeforeValidator(integral)]
@@ -205,15 +207,15 @@ class JobSpec(BaseModel):
 class JobCreated(BaseModel):
     id: str = Field(description="job id (use it in /v1/jobs/{id})")
     status: JobStatus
-    total: int = Field(description="number of points")
-    analysis: Analysis
+    total: int = Field(description="number of points (a figure job: its steps)")
+    analysis: JobAnalysis
 
 
 class JobSummary(BaseModel):
     id: str
     status: JobStatus = Field(description="queued | running | done | failed | cancelled | interrupted")
-    analysis: Analysis
-    total: int = Field(description="points in the sweep")
+    analysis: JobAnalysis = Field(description="the sweep's analysis, or figure (a figure as a job)")
+    total: int = Field(description="points in the sweep (a figure job: its steps)")
     done: int = Field(description="points finished and stored (failed points included)")
     failed: int = Field(description="finished points whose row has an error")
     progress: float = Field(description="done / total")
@@ -225,7 +227,8 @@ class JobSummary(BaseModel):
 
 
 class JobOut(JobSummary):
-    spec: dict[str, Any] = Field(description="the normalised sweep spec")
+    spec: dict[str, Any] = Field(description="the normalised sweep spec (a figure job: analysis, kind, format and "
+                                             "the figure's request)")
     columns: list[str] = Field(description="column order of the rows")
     results: list[dict[str, Any]] = Field(description="finished rows so far, by index (a page: offset, limit)")
     offset: int

@@ -11,11 +11,43 @@ class Health(BaseModel):
     status: Literal["ok"]
 
 
+class JobsHealth(BaseModel):
+    status: Literal["ok", "failing"] = Field(description="failing: the job store cannot be used now (the jobs "
+                                                         "API answers 503 jobs_unavailable); it is retried")
+    message: str | None = Field(None, description="what fails (never where on disk)")
+    since: float | None = Field(None, description="epoch seconds of the first failure")
+
+
+class ProcessesState(BaseModel):
+    """Solver processes of one kind and where they stand."""
+
+    state: Literal["up", "starting", "restarting", "down"] = Field(
+        description="up: every process ready; starting: warming up; restarting: processes were lost and are "
+                    "replaced (after a delay growing with each loss in a row, at most 30 s); down: stopped, or "
+                    "this platform cannot start them")
+    ready: int = Field(description="processes ready")
+    workers: int = Field(description="processes configured")
+    restarts: int = Field(description="processes started to replace lost ones since the server started")
+
+
 class Ready(BaseModel):
-    status: Literal["ready", "starting"]
+    status: Literal["ready", "starting", "degraded"] = Field(
+        description="ready (200); starting (503); degraded (503): the solvers answer but the job store fails "
+                    "(see jobs)")
     workers: int
     queue_size: int
     in_flight: int
+    jobs: JobsHealth
+    processes: dict[Literal["fast", "design"], ProcessesState] = Field(
+        default_factory=dict,
+        description="the solver processes: fast (the short chains' bounded first try; while it is not up the solver "
+                    "threads answer those requests, slower) and design (/v1/design/*, plans, stiffness shaping); "
+                    "absent when the server has none")
+    degraded: list[Literal["fast_path", "design_processes", "job_store"]] = Field(
+        default_factory=list,
+        description="what works degraded while the server answers: fast_path (the fast solver process is not up), "
+                    "design_processes (the design processes are restarting or down: those requests get 503), "
+                    "job_store (the job store fails: status degraded, the jobs API answers 503)")
 
 
 class Limits(BaseModel):
@@ -52,6 +84,9 @@ class KernelsOut(BaseModel):
     compiled: list[int] = Field(description="chain lengths loaded as compiled code so far")
     virtual_machine: list[int] = Field(description="chain lengths running in CasADi's virtual machine "
                                                    "(no compiler, or compiling failed: about 4x slower)")
+    building: list[int] = Field(default_factory=list,
+                                description="chain lengths whose kernels compile in the background; their requests "
+                                            "are answered in the virtual machine meanwhile")
 
 
 class VersionOut(BaseModel):

@@ -17,6 +17,8 @@ from .control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE, _PlanFiel
 from .curves import CurveDeflections
 from .paths import MAX_BRANCHES, MAX_DEPTH, StabilityBoundaryRequest, _BranchFields, _LimitLoadFields
 
+#: Points per axis of a landscape figure by default (the data endpoint /v1/energy-landscape: 101).
+LANDSCAPE_FIGURE_GRID = 61
 #: Most points per axis of a critical-load map (each point is one eigen-solve).
 MAX_MAP_AXIS = 41
 #: Most segments compared in one torque figure.
@@ -72,14 +74,17 @@ class PlotLandscapeRequest(_PlotRequest):
     """Energy contours E(q_i, q_j) with every equilibrium marked (n = 4, Figs. 4-5)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
-        "examples": [{"manipulator": s.PAPER_CHAIN, "dx": 0.1, "dy": 0.0, "pair": [0, 3], "grid": 101}]})
+        "examples": [{"manipulator": s.PAPER_CHAIN, "dx": 0.1, "dy": 0.0, "pair": [0, 3]}]})
 
     manipulator: s.ManipulatorIn
     dx: s.TipDx
     dy: s.TipDy = 0.0
     pair: list[Annotated[int, Field(ge=0, le=3), BeforeValidator(s.integral)]] = Field(
         [0, 3], min_length=2, max_length=2, description="the two grid joints, 0-based and different")
-    grid: s.Int = Field(101, ge=2, le=s.MAX_GRID, description=f"points per axis (2..{s.MAX_GRID})")
+    grid: s.Int = Field(LANDSCAPE_FIGURE_GRID, ge=2, le=s.MAX_GRID, description=(
+        f"points per axis (2..{s.MAX_GRID}); default {LANDSCAPE_FIGURE_GRID}: the contours of the smooth energy "
+        "at that many points and the region's boundary on a grid four times finer (a finer grid changes little "
+        "that shows and costs time)"))
     span: Annotated[float, Field(gt=0, le=s.MAX_ANGLE, allow_inf_nan=False)] | None = Field(
         None, description="half-width of both axes (rad); default: the reachable region of the landscape")
 

@@ -14,6 +14,7 @@ from typing import Any
 import tensegrity_opt as to
 from tensegrity_opt.analyses.equilibria.equilibrium import Equilibrium
 from tensegrity_opt.errors import NonFiniteResult
+from tensegrity_opt.numerics import build, kernels
 from tensegrity_opt.serialize import number, numbers
 
 from .. import schemas as s
@@ -22,12 +23,20 @@ from ..adapters.inputs import build_manipulator, build_segment, manipulator, opt
 from ..adapters.refusals import refusal_body
 
 __all__ = ["warmup", "equilibrium_task", "force_equilibrium_task", "equilibria_task", "buckling_task",
-           "force_deflection_task", "stiffness_task", "segment_torque_task", "energy_landscape_task", "batch_task"]
+           "force_deflection_task", "stiffness_task", "segment_torque_task", "energy_landscape_task", "batch_task",
+           "build_in_background"]
 
 
 def warmup() -> None:
     """Build this worker's CasADi instances for the paper's chain (first-request latency)."""
     to.solve_equilibrium(to.Manipulator.uniform(4), 0.1)
+
+
+def build_in_background() -> None:
+    """From now on this process compiles in the background (no request waits for the C compiler: what is not
+    compiled yet runs in CasADi's virtual machine meanwhile), starting with the short chains' Newton kernels."""
+    build.compile_in_background(True)
+    kernels.prebuild()
 
 
 def equilibrium_task(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None, local: bool,

@@ -9,6 +9,7 @@ library's result, which the endpoint renders (its ``to_dict()``) and the figure 
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from typing import Any
 
 import tensegrity_opt as to
@@ -86,12 +87,13 @@ def find_stability_boundary(req: Any, deadline: float) -> Any:
                                  timeout=seconds_left(deadline), **kw)
 
 
-def find_atlas(req: Any, deadline: float) -> to.StabilityAtlas:
+def find_atlas(req: Any, deadline: float, progress: Callable[[Any], Any] | None = None) -> to.StabilityAtlas:
     """The atlas of an atlas request (``/v1/atlas``, ``/v1/plots/atlas``) within the soft ``deadline``: what is
-    done by then is answered with ``status: "time_limit"``."""
+    done by then is answered with ``status: "time_limit"``. ``progress(target)`` after each target (a job's
+    progress)."""
     m = build_manipulator(req.manipulator)
     return to.stability_atlas(m, values(req.dx), values(req.dy), method=req.method, edges=req.edges,
-                              timeout=seconds_left(deadline))
+                              timeout=seconds_left(deadline), progress=progress)
 
 
 def find_job_atlas(spec: dict[str, Any], rows: list[dict[str, Any]], edges: bool,

@@ -6,12 +6,17 @@ A figure task is ``task(req, fmt, *args)``: it draws the request's figure with
 ``fmt`` (``"png"`` or ``"svg"``) at the request's ``dpi``. ``deadline``, where a task takes it, is the soft
 ``time.monotonic()`` deadline of :func:`service.api.deps.path_deadline` (the figure draws what the computation
 has by then). Matplotlib is imported on the first figure, not with the tasks.
+
+A figure may also run as a job (``POST /v1/plots/<kind>/job``): :data:`FIGURE_TASKS` names each kind's request
+and task, :func:`figure_steps` the job's steps (its ``total``) and :func:`figure_job_task` draws a stored request,
+reporting each step done (the atlas: each target, then the drawing).
 """
 
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable
+import json
+from collections.abc import Callable, Mapping
 from typing import Any
 
 from ..adapters.inputs import build_manipulator, build_segment, values
@@ -21,17 +26,18 @@ from .paths import find_atlas, find_job_atlas, find_limit_load, find_stability_b
 
 __all__ = ["plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task", "plot_map_task",
            "plot_branch_task", "plot_limit_load_task", "plot_boundary_task", "plot_atlas_task", "plot_job_atlas_task",
-           "plot_plan_task", "plot_simulation_task"]
+           "plot_plan_task", "plot_simulation_task", "FIGURE_TASKS", "FIGURE_ANALYSIS", "figure_steps",
+           "figure_job_task", "figure_request"]
 
 
 def _rendered(draw: Callable[..., Any]) -> Callable[..., bytes]:
     """The figure task of ``draw(req, *args)`` (a matplotlib figure): ``task(req, fmt, *args)``, its bytes."""
 
     @functools.wraps(draw)
-    def task(req: Any, fmt: str, *args: Any) -> bytes:
+    def task(req: Any, fmt: str, *args: Any, **kwargs: Any) -> bytes:
         from tensegrity_opt.applications import plots
 
-        return plots.render(draw(req, *args), fmt, dpi=req.dpi)
+        return plots.render(draw(req, *args, **kwargs), fmt, dpi=req.dpi)
 
     return task
 
@@ -112,10 +118,11 @@ def plot_boundary_task(req: ps.PlotBoundaryRequest, deadline: float) -> Any:
 
 
 @_rendered
-def plot_atlas_task(req: ps.PlotAtlasGridRequest, deadline: float) -> Any:
+def plot_atlas_task(req: ps.PlotAtlasGridRequest, deadline: float,
+                    progress: Callable[[Any], Any] | None = None) -> Any:
     from tensegrity_opt.applications import plots
 
-    return plots.plot_atlas(find_atlas(req, deadline), m=build_manipulator(req.manipulator))
+    return plots.plot_atlas(find_atlas(req, deadline, progress), m=build_manipulator(req.manipulator))
 
 
 @_rendered
@@ -141,3 +148,60 @@ def plot_simulation_task(req: ps.PlotSimulationRequest, deadline: float) -> Any:
     from tensegrity_opt.applications import plots
 
     return plots.plot_simulation(find_simulation(req, deadline), build_manipulator(req.manipulator))
+
+
+# ---------------------------------------------------------------------------- figures as jobs
+#: The ``analysis`` of a figure job.
+FIGURE_ANALYSIS = "figure"
+
+#: Each figure kind's job form: its request model, its task (``task(req, fmt, *args)``) and whether the task takes
+#: the soft deadline of a continuation. The atlas as a job takes the grid form only.
+FIGURE_TASKS: dict[str, tuple[Any, Callable[..., bytes], bool]] = {
+    "curve": (ps.PlotCurveRequest, plot_curve_task, False),
+    "landscape": (ps.PlotLandscapeRequest, plot_landscape_task, False),
+    "shapes": (ps.PlotShapesRequest, plot_shapes_task, False),
+    "torque": (ps.PlotTorqueRequest, plot_torque_task, False),
+    "map": (ps.PlotMapRequest, plot_map_task, False),
+    "branch": (ps.PlotBranchRequest, plot_branch_task, True),
+    "limit-load": (ps.PlotLimitLoadRequest, plot_limit_load_task, True),
+    "boundary": (ps.PlotBoundaryRequest, plot_boundary_task, True),
+    "atlas": (ps.PlotAtlasGridRequest, plot_atlas_task, True),
+    "plan": (ps.PlotPlanRequest, plot_plan_task, True),
+    "simulation": (ps.PlotSimulationRequest, plot_simulation_task, True),
+}
+
+
+def _axis_size(v: Any) -> int:
+    return len(values(v))
+
+
+def figure_steps(kind: str, req: Any) -> int:
+    """The steps of a figure job (its ``total``): each target of an atlas, then the drawing, then the stored
+    image."""
+    extra = _axis_size(req.dx) * _axis_size(req.dy) if kind == "atlas" else 0
+    return extra + 2
+
+
+def figure_request(kind: str, body: Mapping[str, Any]) -> Any:
+    """The request of a stored figure job (its JSON form, as :meth:`pydantic.BaseModel.model_dump` gave it)."""
+    return FIGURE_TASKS[kind][0].model_validate_json(json.dumps(body))
+
+
+def figure_job_task(spec: Mapping[str, Any], deadline: float, progress: Callable[[str], Any]) -> bytes:
+    """The image of a figure job's ``spec`` (``{"analysis": "figure", "kind", "format", "request"}``):
+    ``progress(stage)`` after each target of an atlas and after the drawing; ``deadline`` is the soft deadline of
+    a continuation (a figure that has no continuation ignores it)."""
+    from tensegrity_opt.applications import plots
+
+    kind = spec["kind"]
+    _, task, continuation = FIGURE_TASKS[kind]
+    req = figure_request(kind, spec["request"])
+    draw = task.__wrapped__                  # the figure before rendering (functools.wraps in _rendered)
+    args = (deadline,) if continuation else ()
+    kwargs: dict[str, Any] = {}
+    if kind == "atlas":
+        kwargs["progress"] = lambda t: progress(f"target dx = {t.dx:g}, dy = {t.dy:g}"
+                                                + (f" ({t.error})" if t.error else ""))
+    fig = draw(req, *args, **kwargs)
+    progress("drawn")
+    return plots.render(fig, spec["format"], dpi=req.dpi)

@@ -303,6 +303,24 @@ class Manipulator:
             r = max(r, float(np.abs(self.tip(q) - np.asarray(target, float)).max()) / float(self.b.sum()))
         return r
 
+    def equilibrium_residuals(self, Q: Any, F: Any, target: Any) -> np.ndarray:
+        """:meth:`equilibrium_residual` of every row of ``Q`` (k, n) with the forces ``F`` (k, 2) and the tip at
+        ``target``, at once (numpy over the rows: the thousands of solves of a global search). NaN rows give NaN."""
+        Q = np.asarray(Q, dtype=float).reshape(-1, self.n)
+        F = np.asarray(F, dtype=float).reshape(-1, 2)
+        c, beta = np.hypot(self.a, self.b), np.arctan2(self.a, self.b)
+        L1, L2 = 2.0 * c * np.cos(beta + Q / 2.0), 2.0 * c * np.cos(beta - Q / 2.0)
+        torques = c * (self.k1 * (L1 - self.L1_0) * np.sin(beta + Q / 2.0)
+                       - self.k2 * (L2 - self.L2_0) * np.sin(beta - Q / 2.0))
+        phi = np.cumsum(Q, axis=1)
+        l = self.link_lengths
+        # (J^T F)_i = sum over the links j >= i of d tip_j / d phi_j . F
+        work = -l * np.sin(phi) * F[:, :1] + l * np.cos(phi) * F[:, 1:]
+        jtf = np.cumsum(work[:, ::-1], axis=1)[:, ::-1]
+        r = np.abs(-torques - jtf).max(axis=1) / self.torque_scale
+        tip = np.stack([self.base_length + np.cos(phi) @ l, np.sin(phi) @ l], axis=1)
+        return np.maximum(r, np.abs(tip - np.asarray(target, float)).max(axis=1) / float(self.b.sum()))
+
     def mirrored(self) -> "Manipulator":
         """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""
         return Manipulator(s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments)

@@ -69,6 +69,7 @@ BATCH = 128
 #: first (``newton_kkt_seeds(python_fallback=False)``); each call is ``kernels.SEED_ITER`` iterations.
 SAMPLE_ROUNDS = 5
 KINDS = ("dense", "banded")
+_UNBUILT = object()
 
 
 class _built:
@@ -123,6 +124,7 @@ class ChainFunctions:
         self.kind = kind
         self.dense = kind == "dense"
         self.last: ChainSolver | None = None        # chain_solver's last solver (reused for the same m)
+        self._kernel: _KernelSet | None | object = _UNBUILT
         if self.dense:
             D = ca.densify
             phi, p, F, q, E, tip, res, z, tgt, gradE, J, H = self._sym
@@ -148,10 +150,17 @@ class ChainFunctions:
         """The SX graph: (phi, p, F, q, E, tip, KKT residual, z, target, grad E, J, H)."""
         return kkt_graph(self.n)
 
-    @_built
+    @property
     def kernel(self) -> _KernelSet | None:
         """The compiled Newton kernels (:mod:`.kernels`) with fast wrappers, for
-        ``2 <= n <= kernels.KERNEL_MAX`` (dense solvers); else ``None``."""
+        ``2 <= n <= kernels.KERNEL_MAX`` (dense solvers); else ``None``. Built on first use; kernels running in
+        the virtual machine while they compile in the background are replaced by the compiled ones when ready."""
+        k = self._kernel
+        if k is _UNBUILT or (k is not None and k.kernels.pending and not _kernels.pending(self.n)):
+            k = self._kernel = self._build_kernel()
+        return k
+
+    def _build_kernel(self) -> _KernelSet | None:
         if self.dense and 2 <= self.n <= _kernels.KERNEL_MAX:
             k = _kernels.build(self.n)
             return _KernelSet(k, Fast(k.newton), Fast(k.seeds), Fast(k.continuation))

@@ -10,7 +10,6 @@ distinct rows by this rule (:func:`.kernels.distinct_function`, from :func:`same
 
 from __future__ import annotations
 
-import bisect
 from collections.abc import Callable, Sequence
 from functools import lru_cache
 from typing import TypeVar
@@ -61,25 +60,20 @@ def distinct_indices(Q: np.ndarray, idx: Sequence[int], tol: float = SAME_Q) -> 
     """The indices in ``idx`` (in order) whose rows of ``Q`` are distinct among those rows (:func:`distinct_rows`).
 
     Beyond ``_PAIRWISE_MAX`` rows (the thousands of starts of a multistable chain) without the k x k
-    comparison: each row is compared with the kept rows whose first angle lies within ``tol`` of its own
-    (a sorted list, bisected); no other kept row can be the same.
+    comparison: the first row left is kept and every later row the same as it is dropped, all at once, until
+    no row is left (one pass over the rows left per kept row; a few passes for the few equilibria that
+    thousands of starts converge to).
     """
     idx = list(idx)
     if len(idx) <= _PAIRWISE_MAX:
         return [j for j, keep in zip(idx, distinct_rows(Q[idx], tol).tolist()) if keep] if len(idx) > 1 else idx
-    keys: list[float] = []
-    rows: list[int] = []
+    rest = np.asarray(idx, dtype=int)
+    rows = np.asarray(Q, dtype=float)[rest]
     out = []
-    first = Q[:, 0].tolist()
-    for j in idx:
-        x = first[j]
-        lo, hi = bisect.bisect_left(keys, x - tol), bisect.bisect_right(keys, x + tol)
-        if lo < hi and same(Q[rows[lo:hi]], Q[j], tol).any():
-            continue
-        out.append(j)
-        pos = bisect.bisect_left(keys, x)
-        keys.insert(pos, x)
-        rows.insert(pos, j)
+    while rest.size:
+        out.append(int(rest[0]))
+        other = ~same(rows[1:], rows[0], tol)
+        rest, rows = rest[1:][other], rows[1:][other]
     return out
 
 

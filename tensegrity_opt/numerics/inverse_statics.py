@@ -31,7 +31,7 @@ import casadi as ca
 import numpy as np
 
 from ._fast import Fast
-from .build import VIRTUAL_MACHINE, load
+from .build import VIRTUAL_MACHINE, load, pending
 from .expressions import segment_energy, tip_expression
 from .kernels import KERNEL_MAX
 from .layout import Layout
@@ -89,12 +89,15 @@ def _graph(n: int, angle: bool) -> ca.Function:
                        [r, ca.densify(K), ca.densify(H), E, tip])
 
 
-def _function(n: int, angle: bool) -> tuple[ca.Function, str]:
+def _library(n: int, angle: bool) -> str:
+    return f"tensegrity_inverse_n{n}{'a' if angle else ''}"
+
+
+def _function(n: int, angle: bool) -> tuple[ca.Function, str, bool]:
     if 2 <= n <= KERNEL_MAX:
-        loaded = load(f"tensegrity_inverse_n{n}{'a' if angle else ''}", "the inverse-statics step",
-                      lambda: {"inverse_kkt": _graph(n, angle)})
-        return loaded.functions["inverse_kkt"], loaded.mode
-    return _graph(n, angle), VIRTUAL_MACHINE
+        loaded = load(_library(n, angle), "the inverse-statics step", lambda: {"inverse_kkt": _graph(n, angle)})
+        return loaded.functions["inverse_kkt"], loaded.mode, loaded.pending
+    return _graph(n, angle), VIRTUAL_MACHINE, False
 
 
 class InverseStatics:
@@ -106,7 +109,7 @@ class InverseStatics:
         #: the geometry ``geo`` (``a, b, k1, k2``); the ``target`` (``tip``, ``angle``) (:func:`layouts`)
         self.unknowns, self.geometry, self.target = layouts(n, angle)
         self.rows = n + 2 + (1 if angle else 0)
-        f, self.mode = _function(n, angle)
+        f, self.mode, self.pending = _function(n, angle)
         self._f = Fast(f)
 
     def step(self, y0, geo, F, target, ell_prev, w, q_prev, eps, tol, max_iter: int = ITER):
@@ -135,4 +138,8 @@ def inverse_statics(n: int, angle: bool = False) -> InverseStatics:
     return _inverse_statics(n, bool(angle))
 
 
-_inverse_statics = per_thread(InverseStatics)
+def _compiled_meanwhile(step: InverseStatics) -> bool:
+    return step.pending and not pending(_library(step.n, step.angle))
+
+
+_inverse_statics = per_thread(InverseStatics, stale=_compiled_meanwhile)

@@ -39,7 +39,9 @@ How they are built
 ------------------
 By :func:`.build.load`: generated to C and compiled once per machine (one shared library per ``n``),
 CasADi's virtual machine when no compiler is found or ``TENSEGRITY_COMPILE=0`` (about four times slower,
-same results; one ``RuntimeWarning`` per process says so and why).
+same results; one ``RuntimeWarning`` per process says so and why). In background mode
+(:func:`.build.compile_in_background`) a chain length whose kernels are not compiled yet is solved in the
+virtual machine while they compile, then with them; :func:`prebuild` queues them ahead of the first request.
 """
 
 from __future__ import annotations
@@ -50,13 +52,15 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from .build import COMPILED, cache_dir, compiler, libraries, load
+from .build import COMPILED, cache_dir, compiler, libraries, load, schedule
+from .build import pending as _pending
 from .distinct import same
 from .expressions import kkt_graph
 from .layout import Layout
 
 __all__ = ["KERNEL_MAX", "ITER", "SEED_ITER", "CONT_ITER", "BATCH", "Kernels", "build", "cache_dir",
-           "compiler", "seed_columns", "seed_layout", "point_layout", "distinct_function", "status"]
+           "compiler", "seed_columns", "seed_layout", "point_layout", "distinct_function", "status", "prebuild",
+           "pending", "library"]
 
 #: Chains up to this many segments get kernels (beyond, the symbolic KKT solve grows as n^3 and is
 #: no faster than LAPACK driven from Python; benchmarks/RESULTS.md, "Measurement notes").
@@ -272,23 +276,44 @@ def _graphs(n: int) -> dict[str, ca.Function]:
 
 
 # ----------------------------------------------------------------------------- build
-def _library(n: int) -> str:
+def library(n: int) -> str:
+    """The name of the kernels' library for ``n`` segments (:mod:`.build`)."""
     return f"tensegrity_kernels_n{n}"
 
 
+_library = library
+
+
+def pending(n: int) -> bool:
+    """Whether the kernels for ``n`` segments are being compiled in the background (:func:`.build.pending`)."""
+    return _pending(_library(n))
+
+
+def prebuild(ns=None) -> list[int]:
+    """Queue the kernels of the chain lengths ``ns`` (default: 4 first, then every other ``2..KERNEL_MAX``) for
+    the background compiler (:func:`.build.schedule`): requests for them never wait for a compiler, and are
+    answered with compiled code as soon as it is there. The chain lengths queued."""
+    ns = [4, *(n for n in range(2, KERNEL_MAX + 1) if n != 4)] if ns is None else list(ns)
+    return [n for n in ns if 2 <= n <= KERNEL_MAX and schedule(_library(n), "the Newton kernels",
+                                                                functools.partial(_graphs, n))]
+
+
 def status() -> dict[str, object]:
-    """How the kernels run in this process: the compiler, the cache directory, and the chain lengths
-    loaded so far as compiled code or in the virtual machine."""
+    """How the kernels run in this process: the compiler, the cache directory, the chain lengths loaded so far
+    as compiled code or in the virtual machine, and those being compiled in the background (``building``)."""
     libs = libraries()
     loaded = {n: libs[_library(n)] for n in range(2, KERNEL_MAX + 1) if _library(n) in libs}
     return {"compiler": compiler(), "cache_dir": str(cache_dir()), "max_segments": KERNEL_MAX,
             "compiled": sorted(n for n, path in loaded.items() if path),
-            "virtual_machine": sorted(n for n, path in loaded.items() if not path)}
+            "virtual_machine": sorted(n for n, path in loaded.items() if not path),
+            "building": [n for n in range(2, KERNEL_MAX + 1) if _pending(_library(n))]}
 
 
 @dataclass
 class Kernels:
-    """The kernel Functions for one ``n`` and how they run (``"compiled"`` or ``"virtual machine"``)."""
+    """The kernel Functions for one ``n`` and how they run (``"compiled"`` or ``"virtual machine"``);
+    ``pending``: in the virtual machine while they compile in the background (build them again once
+    :func:`pending` is false)."""
 
     n: int
     newton: ca.Function
@@ -296,6 +321,7 @@ class Kernels:
     continuation: ca.Function
     distinct: ca.Function
     mode: str
+    pending: bool = False
 
 
 def build(n: int) -> Kernels:
@@ -306,4 +332,4 @@ def build(n: int) -> Kernels:
     loaded = load(_library(n), "the Newton kernels", lambda: _graphs(n))
     f = loaded.functions
     newton = f["newton"] if loaded.mode == COMPILED else f["newton"].expand()
-    return Kernels(n, newton, f["seeds"], f["continuation"], f["distinct"], loaded.mode)
+    return Kernels(n, newton, f["seeds"], f["continuation"], f["distinct"], loaded.mode, loaded.pending)

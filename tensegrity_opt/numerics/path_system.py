@@ -39,7 +39,7 @@ import casadi as ca
 import numpy as np
 
 from ._fast import Fast
-from .build import VIRTUAL_MACHINE, load
+from .build import VIRTUAL_MACHINE, load, pending
 from .expressions import segment_energy, tip_expression
 from .kernels import KERNEL_MAX
 from .layout import Layout, chain_parameters
@@ -154,15 +154,18 @@ def _step(n: int, path: ca.Function) -> ca.Function:
                        [x, res, moved, v, R, Rx, H, J, E, tip])
 
 
-def _functions(n: int) -> tuple[ca.Function, ca.Function, ca.Function, str]:
-    """This thread's ``path``, ``second`` and ``step`` Functions and how they run (``"compiled"`` /
-    ``"virtual machine"``)."""
+def _library(n: int) -> str:
+    return f"tensegrity_paths_n{n}"
+
+
+def _functions(n: int) -> tuple[ca.Function, ca.Function, ca.Function, str, bool]:
+    """This thread's ``path``, ``second`` and ``step`` Functions, how they run (``"compiled"`` /
+    ``"virtual machine"``) and whether they are compiled in the background meanwhile (:func:`.build.load`)."""
     if 2 <= n <= KERNEL_MAX:
-        loaded = load(f"tensegrity_paths_n{n}", "the path functions",
-                      lambda: dict(zip(("path", "second", "step"), _graphs(n))))
+        loaded = load(_library(n), "the path functions", lambda: dict(zip(("path", "second", "step"), _graphs(n))))
         f = loaded.functions
-        return f["path"], f["second"], f["step"], loaded.mode
-    return (*_graphs(n), VIRTUAL_MACHINE)
+        return f["path"], f["second"], f["step"], loaded.mode, loaded.pending
+    return (*_graphs(n), VIRTUAL_MACHINE, False)
 
 
 class PathSystem:
@@ -174,7 +177,7 @@ class PathSystem:
         self.layouts = layouts(n)
         #: the point ``x = (q, F, t, s)`` of the functions (the control parameter ``t``, the second one ``s``)
         self.point = self.layouts.point
-        path, second, step, self.mode = _functions(n)
+        path, second, step, self.mode, self.pending = _functions(n)
         self._path = Fast(path)
         self._second = Fast(second)
         self._step = Fast(step)
@@ -208,7 +211,11 @@ class PathSystem:
         return out[0].copy(), f.dense(1).copy(), out[2].copy()
 
 
-@per_thread
+def _compiled_meanwhile(ps: PathSystem) -> bool:
+    return ps.pending and not pending(_library(ps.n))
+
+
+@per_thread(stale=_compiled_meanwhile)
 def path_system(n: int) -> PathSystem:
     """This thread's :class:`PathSystem` for ``n`` segments (:func:`.per_thread.per_thread`)."""
     return PathSystem(n)

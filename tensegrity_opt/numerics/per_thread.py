@@ -24,11 +24,12 @@ T = TypeVar("T")
 
 
 def per_thread(build: Callable[..., T] | None = None, *, maxsize: int = CACHE_SIZE,
-               built: Callable[[T], None] | None = None):
+               built: Callable[[T], None] | None = None, stale: Callable[[T], bool] | None = None):
     """Decorator: ``build(*args)`` cached per thread and positional arguments (hashable), at most ``maxsize``
     entries per thread (LRU). ``built(value)``, when given, runs after a new value is cached (e.g. a deadline
-    check after a build that cannot be cut). The wrapped function has ``cache_clear()`` (the calling
-    thread's entries)."""
+    check after a build that cannot be cut); ``stale(value)``, when given, says a cached value must be built
+    again (one running in the virtual machine whose compiled code is ready). The wrapped function has
+    ``cache_clear()`` (the calling thread's entries)."""
 
     def wrap(build: Callable[..., T]) -> Callable[..., T]:
         local = threading.local()
@@ -39,6 +40,8 @@ def per_thread(build: Callable[..., T] | None = None, *, maxsize: int = CACHE_SI
             if cache is None:
                 cache = local.cache = OrderedDict()
             value = cache.get(args)
+            if value is not None and stale is not None and stale(value):
+                value = None
             if value is None:
                 value = cache[args] = build(*args)
                 while len(cache) > maxsize:

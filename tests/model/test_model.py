@@ -229,3 +229,18 @@ def test_torque_polynomial_is_the_torque_on_the_unit_circle():
     for q in (-1.2, -0.3, 0.0, 0.5, 1.4):
         z = np.exp(0.5j * q)
         assert sum(c * z ** p for p, c in coef.items()) == pytest.approx(-float(seg.torque(q)), abs=1e-13)
+
+
+def test_equilibrium_residuals_of_rows_equal_the_residual_of_each_row():
+    """The vectorised residual of a global search's batch is the one-row residual, row by row (NaN stays NaN)."""
+    rng = np.random.default_rng(7)
+    for m in (Manipulator.uniform(4), Manipulator.uniform(3, 0.5, 1.0, 1.0, 1.0),
+              Manipulator([Segment(1.0, 1.2, (1.0, 2.0), (1.05, 0.95)), Segment(0.8, 1.0, 1.5, 1.0)])):
+        Q = rng.uniform(-1.0, 1.0, size=(40, m.n)) * m.joint_limits
+        F = rng.normal(size=(40, 2))
+        target = m.target(0.3, 0.1)
+        got = m.equilibrium_residuals(Q, F, target)
+        want = [m.equilibrium_residual(q, f, target) for q, f in zip(Q, F)]
+        np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-15)
+        Q[3, 0] = np.nan
+        assert np.isnan(m.equilibrium_residuals(Q, F, target)[3])

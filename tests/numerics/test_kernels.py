@@ -5,6 +5,7 @@ the library's QR route for the reduced Hessian (``stability.reduced_hessian``), 
 method, the independent reference model of ``tests/support/reference_model.py`` — never from the kernels.
 """
 
+import concurrent.futures
 import json
 import os
 import subprocess
@@ -291,3 +292,81 @@ def test_an_unwritable_cache_directory_warns_and_falls_back(tmp_path):
     got = _child(tmp_path, TENSEGRITY_CACHE_DIR=str(blocker / "cache"), TENSEGRITY_COMPILE="1")
     assert got["mode"] == "virtual machine"
     assert any("compiling the Newton kernels" in w for w in got["warnings"])
+
+
+# ----------------------------------------------------------------------------- background builds
+@pytest.fixture
+def fresh_builds(tmp_path, monkeypatch):
+    """This process's build tables empty, background mode on, an empty cache directory, and a stand-in compiler
+    (``CC``) that waits until the test creates the file ``release`` and then runs ``then`` (the real compiler, or
+    ``false``: a compiler that fails) with its arguments."""
+    monkeypatch.setattr(build, "_libraries", {})
+    monkeypatch.setattr(build, "_names", {})
+    monkeypatch.setattr(build, "_name_locks", {})
+    monkeypatch.setattr(build, "_pending", set())
+    monkeypatch.setattr(build, "_warned", True)
+    monkeypatch.setattr(build, "_background", True)
+    monkeypatch.setenv("TENSEGRITY_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.delenv("TENSEGRITY_COMPILE", raising=False)
+    release = tmp_path / "release"
+
+    def held_compiler(then: str) -> None:
+        cc = tmp_path / "held-cc"
+        cc.write_text(f'#!/bin/sh\nwhile [ ! -e "{release}" ]; do sleep 0.01; done\nexec {then} "$@"\n')
+        cc.chmod(0o755)
+        monkeypatch.setenv("CC", str(cc))
+
+    yield held_compiler, release
+    release.touch()                                    # nothing left waiting for the stand-in
+    for name in list(build._pending):
+        assert build.wait_built(name, 600.0)
+
+
+def in_thread(fn, *args):
+    """``fn(*args)`` in a new thread (its own per-thread solvers), its result."""
+    with concurrent.futures.ThreadPoolExecutor(1) as pool:
+        return pool.submit(fn, *args).result(600.0)
+
+
+def test_in_background_mode_nobody_waits_for_the_compiler(fresh_builds):
+    """The compiler is held (it would wait forever): a fresh chain length is solved in the virtual machine at once,
+    its kernels queued; a compiler that then fails leaves them in the virtual machine, with the same answers."""
+    held_compiler, release = fresh_builds
+    held_compiler("false")
+    m = to.Manipulator.uniform(5)
+    res = in_thread(to.solve_equilibrium, m, 0.3, 0.1)
+    assert res.success
+    assert in_thread(lambda: chain_solver(m).kernel_mode) == build.VIRTUAL_MACHINE
+    assert kernels.pending(5) and kernels.status()["building"] == [5]
+    release.touch()
+    assert build.wait_built(kernels.library(5), 600.0)
+    assert not kernels.pending(5) and kernels.status()["virtual_machine"] == [5]
+    np.testing.assert_allclose(in_thread(to.solve_equilibrium, m, 0.3, 0.1).q, res.q, atol=1e-10)
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(build.compiler() is None, reason="no C compiler on this machine (or TENSEGRITY_COMPILE=0)")
+def test_in_background_mode_the_kernels_are_used_once_built_and_rebuilt_after_a_cache_wipe(fresh_builds, tmp_path):
+    held_compiler, release = fresh_builds
+    held_compiler(build.compiler())
+    m = to.Manipulator.uniform(6)
+    with concurrent.futures.ThreadPoolExecutor(1) as worker:           # one thread, its solvers kept
+        first = worker.submit(to.solve_equilibrium, m, 0.4, 0.2).result(600.0)
+        assert worker.submit(lambda: chain_solver(m).kernel_mode).result(600.0) == build.VIRTUAL_MACHINE
+        assert kernels.prebuild() == [4, 2, 3, 5, 7, 8]                   # 6 is queued already
+        release.touch()
+        for n in range(2, kernels.KERNEL_MAX + 1):
+            assert build.wait_built(kernels.library(n), 600.0)
+        assert kernels.status()["compiled"] == list(range(2, kernels.KERNEL_MAX + 1))
+        # the same thread's solver loads the compiled kernels at its next use
+        assert worker.submit(lambda: chain_solver(m).kernel_mode).result(600.0) == build.COMPILED
+        again = worker.submit(to.solve_equilibrium, m, 0.4, 0.2).result(600.0)
+        np.testing.assert_allclose(again.q, first.q, atol=1e-10)
+    release.unlink()                                   # held again
+    for lib in (tmp_path / "cache").glob("*.so"):      # the cache wiped under a running process
+        lib.unlink()
+    assert in_thread(lambda: chain_solver(m).kernel_mode) == build.VIRTUAL_MACHINE
+    assert kernels.pending(6)
+    release.touch()
+    assert build.wait_built(kernels.library(6), 600.0)
+    assert in_thread(lambda: chain_solver(m).kernel_mode) == build.COMPILED

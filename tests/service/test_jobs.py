@@ -606,6 +606,10 @@ def test_every_storage_fault_is_503_jobs_unavailable(api, monkeypatch, fault):
         r = api.request(method, path, json=body)
         assert r.status_code == 503, (method, path, r.text)
         assert r.json()["code"] == "jobs_unavailable" and r.headers["retry-after"], r.text
+        assert str(db.parent) not in r.text, r.text                      # what failed, not where on disk
+    ready = api.get("/readyz")
+    assert ready.status_code == 503 and ready.json()["jobs"]["status"] == "failing", ready.text
+    assert str(db.parent) not in ready.text, ready.text
     if fault == "deleted":
         assert "deleted" in r.json()["message"] and not db.exists()       # nothing silently recreated
     assert api.post("/v1/buckling", json={"manipulator": {"n": 4}}).status_code == 200

@@ -121,7 +121,7 @@ def test_an_error_raised_in_the_solver_process_is_answered_as_without_it(clients
 
 @pytest.mark.slow
 def test_a_killed_solver_process_loses_no_request_and_is_restarted(monkeypatch):
-    monkeypatch.setattr(processes_mod, "RESTART_INTERVAL", 0.0)
+    monkeypatch.setattr(processes_mod, "RESTART_BASE", 0.0)
     with ready_client() as fast, ready_client(inline_processes=0) as plain:
         lane = wait_ready(fast)
         expected = plain.post("/v1/equilibrium", json=BODIES[1]).json()
@@ -180,7 +180,7 @@ def test_the_solver_process_survives_calls_it_cannot_take(clients):
 
 @pytest.mark.slow
 def test_a_stuck_solver_process_is_killed_and_restarted(monkeypatch):
-    monkeypatch.setattr(processes_mod, "RESTART_INTERVAL", 0.0)
+    monkeypatch.setattr(processes_mod, "RESTART_BASE", 0.0)
     with ready_client() as fast:
         lane = wait_ready(fast)
         [old] = lane.pids
@@ -208,21 +208,114 @@ def test_a_call_over_the_time_limit_is_a_504():
             busy.result(WAIT_SECONDS)
 
 
-def test_a_solver_process_that_cannot_start_is_not_restarted(monkeypatch):
-    """A child that dies before it is ready (here: a Python that cannot import the service) leaves the
-    requests to the solver threads, once, instead of respawning every few seconds."""
-    monkeypatch.setattr(processes_mod, "RESTART_INTERVAL", 0.0)
+def test_a_solver_process_that_cannot_start_is_tried_again_with_growing_delays(monkeypatch):
+    """A child that dies before it is ready (here: a Python that cannot import the service) leaves the requests to
+    the solver threads and is tried again after a delay that doubles with each loss in a row, up to a bound."""
+    monkeypatch.setattr(processes_mod, "RESTART_BASE", 0.01)
+    monkeypatch.setattr(processes_mod, "RESTART_MAX", 0.04)
     monkeypatch.setattr(processes_mod.sys, "executable", "/bin/false")
+    assert [processes_mod.restart_delay(k) for k in (1, 2, 3, 4, 10)] == [0.01, 0.02, 0.04, 0.04, 0.04]
     with ready_client() as fast:
         lane = fast.app.state.executors.fast
         assert not fast.portal.call(lane.wait_ready, WAIT_SECONDS)        # returns at once: the child died
         for _ in range(3):
             r = fast.post("/v1/equilibrium", json=BODIES[0])
             assert r.status_code == 200
-        assert lane.restarts == 0 and not lane.ready and lane.completed == 0
+        deadline = time.monotonic() + WAIT_SECONDS
+        while lane.restarts < 3 and time.monotonic() < deadline:
+            time.sleep(0.01)
+        assert lane.restarts >= 3 and lane.losses >= 3 and not lane.ready and lane.completed == 0
+        body = fast.get("/readyz").json()
+        assert body["processes"]["fast"]["state"] == "restarting" and body["degraded"] == ["fast_path"]
 
 
 def test_version_reports_the_solver_processes(clients):
     fast, plain = clients
     assert fast.get("/version").json()["limits"]["inline_processes"] == 1
     assert plain.get("/version").json()["limits"]["inline_processes"] == 0
+
+
+def solver_children(server_pid: int) -> set[int]:
+    """The server's solver processes (``python -m service.execution.child``), from ``/proc``."""
+    found = set()
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                ppid = int(f.read().rsplit(")", 1)[1].split()[1])
+            with open(f"/proc/{entry}/cmdline", "rb") as f:
+                cmdline = f.read()
+        except (OSError, ValueError, IndexError):
+            continue
+        if ppid == server_pid and b"service.execution.child" in cmdline:
+            found.add(int(entry))
+    return found
+
+
+def wait_for(what, predicate, timeout: float = WAIT_SECONDS):
+    """Poll ``predicate()`` until it returns something true (returned); fail after ``timeout`` seconds."""
+    deadline = time.monotonic() + timeout
+    while True:
+        value = predicate()
+        if value:
+            return value
+        if time.monotonic() > deadline:
+            raise AssertionError(f"{what}: not within {timeout:g} s")
+        time.sleep(0.02)
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not os.path.isdir("/proc"), reason="finds the solver process in /proc")
+def test_a_solver_process_killed_while_restarting_comes_back_and_its_state_shows(tmp_path):
+    """A real server: its fast solver process is killed; the replacement is killed again before it is ready (its
+    warm-up waits for a file the test creates); a third one comes up. Meanwhile /readyz answers 200 and names the
+    degraded fast path, /metrics shows the state and the restarts, and requests are answered (by the threads)."""
+    import httpx
+    from servers import GENEROUS_ENV, clean_env, running_server, uvicorn_factory_command
+    from stand_ins import WARMUP_GATE, server_env
+
+    gate = tmp_path / "warm-up may finish"
+    gate.touch()
+    env = server_env(clean_env(**GENEROUS_ENV, TENSEGRITY_HEAVY_WORKERS="0", TENSEGRITY_JOBS_DB=str(tmp_path / "j.db"),
+                               **{WARMUP_GATE: str(gate)}))
+    cmd = uvicorn_factory_command("stand_ins:app_with_a_held_fast_process", free_port())
+    with running_server(cmd, env, ready="/readyz") as (proc, base):
+        def fast() -> dict:
+            return httpx.get(base + "/readyz", timeout=30).json()["processes"]["fast"]
+
+        def metric(name: str) -> float:
+            text = httpx.get(base + "/metrics", timeout=30).text
+            return float(next(line.rsplit(" ", 1)[1] for line in text.splitlines() if line.startswith(name)))
+
+        wait_for("the fast process up", lambda: fast()["state"] == "up")
+        [first] = solver_children(proc.pid)
+        gate.unlink()                                       # the replacements' warm-ups wait from now on
+        os.kill(first, signal.SIGKILL)
+        second = wait_for("a replacement", lambda: solver_children(proc.pid) - {first})
+        ready = httpx.get(base + "/readyz", timeout=30)
+        assert ready.status_code == 200 and ready.json()["processes"]["fast"]["state"] == "restarting"
+        assert ready.json()["degraded"] == ["fast_path"]
+        assert metric('tensegrity_solver_processes_state{pool="fast",state="restarting"}') == 1.0
+        r = httpx.post(base + "/v1/equilibrium", json=BODIES[0], timeout=60)
+        assert r.status_code == 200 and r.json()["success"]
+        [second] = second
+        os.kill(second, signal.SIGKILL)                     # before it is ready: its warm-up waits for the gate
+        third = wait_for("another replacement", lambda: solver_children(proc.pid) - {first, second})
+        assert fast()["state"] == "restarting"
+        gate.touch()
+        wait_for("the fast process up again", lambda: fast()["state"] == "up")
+        assert solver_children(proc.pid) == third
+        state = fast()
+        assert state["restarts"] == 2 and state["ready"] == 1
+        assert httpx.get(base + "/readyz", timeout=30).json()["degraded"] == []
+        assert metric('tensegrity_solver_processes_state{pool="fast",state="up"}') == 1.0
+        assert metric('tensegrity_solver_processes_restarts{pool="fast"}') == 2.0
+        r = httpx.post(base + "/v1/equilibrium", json=BODIES[0], timeout=60)
+        assert r.status_code == 200 and r.json()["success"]
+
+
+def free_port() -> int:
+    from servers import free_port as port
+
+    return port()

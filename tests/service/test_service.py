@@ -598,8 +598,59 @@ def test_api_key_401():
         check_error(r, 401, "unauthorized")
         r = c.post("/v1/buckling", json={"manipulator": PAPER}, headers={"X-API-Key": "s3cret"})
         assert r.status_code == 200
-        assert c.get("/healthz").status_code == 200          # ops endpoints stay open
-        assert c.get("/version").json()["auth"] is True
+        assert c.get("/healthz").status_code == 200          # the health routes stay open
+        assert c.get("/version", headers={"X-API-Key": "other"}).json()["auth"] is True
+
+
+@pytest.mark.parametrize("path", ["/openapi.json", "/version", "/metrics"])
+def test_the_documents_need_a_key_when_the_server_has_keys(path):
+    """With keys: the OpenAPI document, the version and the metrics are the API's (401 without a key); the health
+    routes, the page and the docs pages stay open. Without keys every one is open."""
+    with make_client(api_keys=["s3cret"]) as c:
+        r = c.get(path)
+        assert r.status_code == 401 and r.json()["code"] == "unauthorized", r.text[:200]
+        assert r.headers["www-authenticate"] == "ApiKey"
+        assert c.get(path, headers={"X-API-Key": "wrong"}).status_code == 401
+        assert c.get(path, headers={"X-API-Key": "s3cret"}).status_code == 200
+        for open_path in ("/healthz", "/readyz", "/", "/docs", "/redoc"):
+            assert c.get(open_path).status_code == 200, open_path
+    with make_client() as c:
+        assert c.get(path).status_code == 200
+
+
+def test_static_documents_are_built_once(monkeypatch):
+    """``/openapi.json`` is encoded once however often it is asked for; ``/version``'s body is built once, and again
+    only when the kernels loaded in the process change."""
+    from tensegrity_opt.numerics import kernels
+
+    encoded: list[int] = []
+    dumps = json.dumps
+
+    def counting_dumps(obj, *args, **kwargs):
+        out = dumps(obj, *args, **kwargs)
+        if len(out) > 100_000:                  # the document (~390 KB); nothing else these requests encode
+            encoded.append(len(out))
+        return out
+
+    built: list[int] = []
+    status = kernels.status
+
+    def counting_status():
+        built.append(1)
+        return status()
+
+    monkeypatch.setattr(json, "dumps", counting_dumps)
+    monkeypatch.setattr(kernels, "status", counting_status)
+    with make_client() as c:
+        docs = {c.get("/openapi.json").content for _ in range(30)}
+        assert len(docs) == 1 and len(encoded) == 1
+        assert json.loads(docs.pop())["info"]["title"] == "tensegrity-opt service"
+        versions = {c.get("/version").content for _ in range(30)}
+        assert len(versions) == 1 and len(built) == 1
+        loaded = kernels.libraries()
+        monkeypatch.setattr(kernels, "libraries", lambda: {**loaded, "another_kernel": ""})
+        again = {c.get("/version").content for _ in range(10)}
+        assert len(built) == 2 and len(again) == 1
 
 
 def test_api_keys_from_environment(monkeypatch):

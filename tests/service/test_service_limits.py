@@ -8,6 +8,7 @@ not a duration), and every wait ends as soon as what it waits for happens.
 
 from __future__ import annotations
 
+import asyncio
 import json
 import socket
 import sys
@@ -186,3 +187,147 @@ def test_a_design_solve_stops_itself_at_the_deadline_and_keeps_its_process():
             time.sleep(0.02)
         assert heavy.killed == 0
         assert "tensegrity_design_processes_killed 0.0" in c.get("/metrics").text
+
+
+# ------------------------------------------------------------------------------------------------ request heads
+#: The head bounds of the servers below (lower than the defaults, so the tests send little).
+HEAD_BYTES, HEAD_FIELDS = 8192, 20
+
+
+def _exchange(port: int, *parts: bytes) -> bytes:
+    """Send ``parts`` on a new connection; everything the server sends until it closes the connection."""
+    with socket.create_connection(("127.0.0.1", port), timeout=WAIT_SECONDS) as s:
+        try:
+            for part in parts:
+                s.sendall(part)
+        except OSError:
+            pass                            # refused before everything was sent: the answer is in the socket
+        data = b""
+        try:
+            while chunk := s.recv(65536):
+                data += chunk
+        except ConnectionResetError:
+            pass
+    return data
+
+
+def _get(*headers: bytes) -> bytes:
+    return b"GET /healthz HTTP/1.1\r\nHost: x\r\n" + b"".join(h + b"\r\n" for h in headers)
+
+
+class _Transport:
+    """Enough of an asyncio transport for uvicorn's protocol: what it writes, whether it closed."""
+
+    def __init__(self) -> None:
+        self.out, self.closed, self.eof, self.protocol = b"", False, False, None
+
+    def get_extra_info(self, name, default=None):
+        return {"sockname": ("127.0.0.1", 8000), "peername": ("127.0.0.1", 50000)}.get(name, default)
+
+    def write(self, data):
+        self.out += data
+
+    def write_eof(self):
+        self.eof = True
+
+    def close(self):
+        self.closed = True
+
+    def is_closing(self):
+        return self.closed
+
+    def get_protocol(self):
+        return self.protocol
+
+    def set_protocol(self, protocol):
+        self.protocol = protocol
+
+    def pause_reading(self):
+        pass
+
+    def resume_reading(self):
+        pass
+
+
+def test_a_head_over_the_bound_is_refused_while_it_arrives():
+    """The protocol of ``tensegrity-opt serve`` alone: a head that never ends is answered 431 once it passes the bound
+    (the application never called), the connection ends; a head of too many fields likewise; one within the bounds
+    reaches the application."""
+    from uvicorn.config import Config
+    from uvicorn.server import ServerState
+
+    from service.api.connections import protocol_class
+
+    called: list[str] = []
+
+    async def app(scope, receive, send):
+        called.append(scope["path"])
+        await send({"type": "http.response.start", "status": 200, "headers": [(b"content-length", b"0")]})
+        await send({"type": "http.response.body", "body": b""})
+
+    async def feed(*chunks: bytes) -> _Transport:
+        config = Config(app=app, lifespan="off")
+        config.load()
+        cls = protocol_class(600.0, 100, HEAD_BYTES, HEAD_FIELDS)
+        proto = cls(config=config, server_state=ServerState(), app_state={})
+        transport = _Transport()
+        transport.set_protocol(proto)
+        proto.connection_made(transport)
+        for chunk in chunks:
+            proto.data_received(chunk)
+        for _ in range(10):
+            await asyncio.sleep(0)          # the application's task, if one started
+        proto.connection_lost(None)
+        return transport
+
+    def status(t: _Transport) -> tuple[bytes, dict]:
+        head, _, body = t.out.partition(b"\r\n\r\n")
+        return head.split(b"\r\n", 1)[0], (json.loads(body) if body else {})
+
+    unfinished = [_get(b"X-Big: ")] + [b"a" * 1000] * 20         # never ends
+    t = asyncio.run(feed(*unfinished))
+    line, body = status(t)
+    assert line == b"HTTP/1.1 431 Request Header Fields Too Large", t.out
+    assert body["code"] == "headers_too_large" and body["details"] == {"max_header_bytes": HEAD_BYTES,
+                                                                       "max_headers": HEAD_FIELDS}
+    assert t.eof and not called
+    t = asyncio.run(feed(_get(*(b"X-%d: 1" % i for i in range(HEAD_FIELDS + 1))) + b"\r\n"))
+    assert status(t)[0].startswith(b"HTTP/1.1 431") and not called
+    t = asyncio.run(feed(_get(b"X-Big: " + b"a" * (HEAD_BYTES // 2), *(b"X-%d: 1" % i for i in range(10))) + b"\r\n"))
+    assert status(t)[0] == b"HTTP/1.1 200 OK" and called == ["/healthz"]
+
+
+@pytest.mark.slow
+def test_request_heads_are_bounded_on_a_real_server():
+    """Raw sockets against ``tensegrity-opt serve`` with the head bounds lowered: a header over the bound, too many
+    fields, a head that never ends, and the second request of a kept-alive connection over the bound are answered 431
+    ``headers_too_large`` in the JSON error shape; heads within the bounds are served."""
+    env = clean_env(TENSEGRITY_WORKERS="1", TENSEGRITY_WARMUP="false", TENSEGRITY_INLINE_PROCESSES="0",
+                    TENSEGRITY_HEAVY_WORKERS="0", TENSEGRITY_REQUEST_TIMEOUT="600",
+                    TENSEGRITY_MAX_HEADER_BYTES=str(HEAD_BYTES), TENSEGRITY_MAX_HEADERS=str(HEAD_FIELDS),
+                    **GENEROUS_ENV)
+    port = free_port()
+    with running_server(serve_command(port), env, timeout=WAIT_SECONDS) as (_, base):
+        ok = _get(b"X-Big: " + b"a" * (HEAD_BYTES // 2), *(b"X-%d: 1" % i for i in range(HEAD_FIELDS - 3)),
+                  b"Connection: close") + b"\r\n"
+        assert _exchange(port, ok).startswith(b"HTTP/1.1 200 OK")
+        refused = {
+            "one header over the bound": [_get(b"X-Big: " + b"a" * (1 << 20)) + b"\r\n"],
+            "too many fields": [_get(*(b"X-%d: 1" % i for i in range(HEAD_FIELDS + 1))) + b"\r\n"],
+            "a target over the bound": [b"GET /healthz?" + b"q" * (2 * HEAD_BYTES) + b" HTTP/1.1\r\nHost: x\r\n\r\n"],
+            # never ends: refused while it arrives, 600 s before the request timeout
+            "a head that never ends": [_get(b"X-Big: ")] + [b"a" * 4096] * (4 * HEAD_BYTES // 4096),
+            "the second request of a connection": [_get() + b"\r\n" + _get(b"X-Big: " + b"a" * (2 * HEAD_BYTES))
+                                                   + b"\r\n"],
+        }
+        for case, parts in refused.items():
+            data = _exchange(port, *parts)
+            if case == "the second request of a connection":
+                assert data.startswith(b"HTTP/1.1 200"), data
+                data = data[data.find(b"HTTP/1.1 4"):]
+            line, _, rest = data.partition(b"\r\n")
+            assert line == b"HTTP/1.1 431 Request Header Fields Too Large", (case, data[:300])
+            head, _, body = rest.partition(b"\r\n\r\n")
+            assert b"content-type: application/json" in head.lower(), (case, data[:300])
+            assert json.loads(body)["code"] == "headers_too_large", (case, body)
+        assert httpx.get(base + "/healthz", timeout=60).status_code == 200

@@ -52,7 +52,11 @@ def test_every_operation_is_documented():
                                                              "limit-load", "boundary", "atlas", "plan", "simulation")),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
                 ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/cancel", "post"),
-                ("/v1/jobs/{job_id}/results", "get"), ("/v1/jobs/{job_id}/atlas", "get")}
+                ("/v1/jobs/{job_id}/results", "get"), ("/v1/jobs/{job_id}/atlas", "get"),
+                ("/v1/jobs/{job_id}/figure", "get"),
+                *((f"/v1/plots/{kind}/job", "post") for kind in ("curve", "landscape", "shapes", "torque", "map",
+                                                                 "branch", "limit-load", "boundary", "atlas", "plan",
+                                                                 "simulation"))}
     assert set(ops) == expected
     ids = [op["operationId"] for op in ops.values()]
     assert len(ids) == len(set(ids))
@@ -72,6 +76,14 @@ def test_every_operation_is_documented():
                 assert c["schema"]["$ref"] == error_ref and c.get("examples"), (path, status)
             if (path, method) == ("/v1/jobs", "post"):
                 assert op["requestBody"]["content"]["application/json"].get("examples")
+            continue
+        if path.endswith("/job"):            # a figure as a job: 202 with the job, the figure's refusals, the store's
+            assert op["responses"]["202"]["content"]["application/json"].get("example"), path
+            assert op["requestBody"]["content"]["application/json"].get("examples"), path
+            assert op.get("security") == [{"ApiKey": []}, {}]
+            for status in ("401", "413", "422", "503"):
+                c = op["responses"][status]["content"]["application/json"]
+                assert c["schema"]["$ref"] == error_ref and c.get("examples"), (path, status)
             continue
         ok = op["responses"]["200"]["content"]
         assert any("example" in media or "examples" in media for media in ok.values()), path

@@ -14,6 +14,7 @@ pytest.importorskip("fastapi")
 
 import tensegrity_opt as to
 from service.execution import ProcessExecutor, Saturated, SolveTimeout, ThreadExecutor
+from service.execution.shedding import ServiceTimes
 
 
 def busy(seconds: float) -> str:
@@ -270,3 +271,183 @@ def test_a_stuck_process_is_killed_after_the_grace_and_its_queue_is_bounded():
             ex.shutdown()
 
     asyncio.run(main())
+
+
+class StandInClock:
+    """The executor's clock, moved by the test only."""
+
+    def __init__(self) -> None:
+        self.now = 1000.0
+
+    def __call__(self) -> float:
+        return self.now
+
+
+def wait_running(pool: ThreadExecutor, count: int, timeout: float = WAIT) -> None:
+    deadline = time.monotonic() + timeout
+    while pool.running < count and time.monotonic() < deadline:
+        time.sleep(0.005)
+    assert pool.running == count
+
+
+def test_a_call_that_could_not_finish_before_its_deadline_is_refused_at_once():
+    """Calls of a kind whose service time is estimated at 4 s (put in place, on a clock that only the test moves):
+    a call that would wait behind them is refused when wait plus its own time (times the margin) reaches its limit,
+    accepted otherwise; the refusal says when to come back."""
+    clock = StandInClock()
+    times = ServiceTimes(clock=clock)
+    times.set(False, 4.0, kind="solve")
+    pool = ThreadExecutor(1, 8, service_times=times)
+    gate = threading.Event()
+    try:
+        running = pool.submit(gate.wait, LONG, kind="solve", timeout=LONG)
+        wait_running(pool, 1)
+        assert pool.expected_wait() == 4.0                     # the running call's estimate, none of it run yet
+        queued = pool.submit(gate.wait, LONG, kind="solve", timeout=LONG)
+        assert pool.expected_wait() == 8.0                     # then the queued one's
+        with pytest.raises(Saturated) as refused:              # 1.25 x (8 + 4) = 15 s >= 14 s
+            pool.submit(gate.wait, LONG, kind="solve", timeout=14.0)
+        assert refused.value.retry_after == 1 and "expected wait" in str(refused.value)
+        assert pool.shed == 1 and pool.in_flight == 2
+        with pytest.raises(Saturated) as refused:
+            pool.submit(gate.wait, LONG, kind="solve", timeout=5.0)
+        assert refused.value.retry_after == 10                 # 15 s - 5 s
+        clock.now += 3.0                                       # the running call has 1 s left by its estimate
+        assert pool.expected_wait() == 5.0
+        third = pool.submit(gate.wait, LONG, kind="solve", timeout=14.0)    # 1.25 x (5 + 4) < 14
+        assert pool.shed == 2 and pool.in_flight == 3
+        gate.set()
+        for call in (running, queued, third):
+            call.future.result(WAIT)
+        wait_idle(pool)
+    finally:
+        gate.set()
+        pool.shutdown()
+
+
+def test_a_call_that_finds_a_free_thread_is_never_refused_by_an_estimate():
+    clock = StandInClock()
+    times = ServiceTimes(clock=clock)
+    times.set(False, 100.0, kind="solve")
+    pool = ThreadExecutor(2, 0, service_times=times)
+    gate = threading.Event()
+    try:
+        first = pool.submit(gate.wait, LONG, kind="solve", timeout=1.0)       # the estimate exceeds the limit
+        second = pool.submit(gate.wait, LONG, kind="solve", timeout=1.0)
+        assert pool.shed == 0 and pool.in_flight == 2
+        gate.set()
+        first.future.result(WAIT), second.future.result(WAIT)
+    finally:
+        gate.set()
+        pool.shutdown()
+
+
+def test_a_light_call_is_not_refused_for_heavy_calls_it_passes():
+    """Two threads, one for heavy calls: heavy calls of 100 s queued behind a running one do not delay a light
+    call (it takes the other thread when the light call there ends), so it is accepted; a heavy one is refused."""
+    clock = StandInClock()
+    times = ServiceTimes(clock=clock)
+    times.set(True, 100.0, kind="heavy")
+    times.set(False, 1.0, kind="light")
+    pool = ThreadExecutor(2, 8, heavy_limit=1, service_times=times)
+    gate = threading.Event()
+    try:
+        calls = [pool.submit(gate.wait, LONG, heavy=True, kind="heavy", timeout=LONG),
+                 pool.submit(gate.wait, LONG, kind="light", timeout=LONG)]
+        wait_running(pool, 2)
+        calls += [pool.submit(gate.wait, LONG, heavy=True, kind="heavy", timeout=LONG) for _ in range(3)]
+        assert pool.expected_wait(heavy=False) == 1.0
+        assert pool.expected_wait(heavy=True) == 400.0
+        calls.append(pool.submit(gate.wait, LONG, kind="light", timeout=10.0))
+        with pytest.raises(Saturated):
+            pool.submit(gate.wait, LONG, heavy=True, kind="heavy", timeout=300.0)
+        gate.set()
+        for call in calls:
+            call.future.result(WAIT)
+    finally:
+        gate.set()
+        pool.shutdown()
+
+
+def test_the_estimates_follow_the_calls_per_kind_and_class():
+    times = ServiceTimes(weight=0.5)
+    assert times.estimate(False, "a") == 0.0                   # nothing seen: nothing refused by an estimate
+    times.record(False, 2.0, "a")
+    times.record(False, 4.0, "a")
+    assert times.estimate(False, "a") == 3.0
+    assert times.estimate(False, "b") == 3.0                   # a kind not seen yet: its class's estimate
+    assert times.estimate(True, "b") == 0.0
+
+
+def test_a_refusal_by_the_expected_wait_is_a_503_with_retry_after():
+    from service.api.errors import to_api_error
+    from service.execution.shedding import refusal
+
+    err = to_api_error(refusal("all 2 solver workers", 12.0, 4.0, 10.0), retry_after=1)
+    assert err.status_code == 503 and err.body["code"] == "overloaded"
+    assert err.headers["Retry-After"] == "10"                  # 1.25 x 16 s - 10 s
+    err = to_api_error(Saturated("full"), retry_after=3)
+    assert err.headers["Retry-After"] == "3"
+
+
+@pytest.mark.slow
+def test_a_process_call_that_could_not_finish_before_its_deadline_is_refused_at_once():
+    async def scenario() -> None:
+        pool = ProcessExecutor(1, queue_size=4, grace=0.1)
+        clock = StandInClock()
+        pool.service_times = ServiceTimes(clock=clock)
+        pool.service_times.set(False, 4.0, kind="sleep")
+        pool.start()
+        assert await pool.wait_ready(WAIT)
+        try:
+            busy = asyncio.ensure_future(pool.run(time.sleep, LONG, timeout=LONG, kind="sleep"))
+            while not pool.expected_wait():
+                await asyncio.sleep(0.005)
+            assert pool.expected_wait() == 4.0
+            with pytest.raises(Saturated):                       # 1.25 x (4 + 4) >= 9
+                await pool.run(time.sleep, 0.0, timeout=9.0, kind="sleep")
+            assert pool.shed == 1
+            busy.cancel()
+        finally:
+            pool.shutdown()
+
+    asyncio.run(scenario())
+
+
+@pytest.mark.slow
+def test_the_losses_in_a_row_start_over_after_a_healthy_period(monkeypatch):
+    """Children killed from outside: each loss in a row counts (the delay grows with the count) until a child has
+    been ready for the healthy period; then the next loss is the first again."""
+    import os
+    import signal
+
+    from service.execution import processes
+
+    monkeypatch.setattr(processes, "RESTART_BASE", 0.0)
+
+    async def kill_and_wait(pool: ProcessExecutor, restarts: int) -> None:
+        [pid] = pool.pids
+        os.kill(pid, signal.SIGKILL)
+        deadline = time.monotonic() + WAIT
+        while not (pool.restarts == restarts and pool.ready) and time.monotonic() < deadline:
+            await asyncio.sleep(0.01)
+        assert pool.restarts == restarts and pool.ready and pool.state == "up"
+
+    async def scenario() -> None:
+        pool = ProcessExecutor(1)
+        pool.start()
+        assert await pool.wait_ready(WAIT) and pool.state == "up"
+        try:
+            monkeypatch.setattr(processes, "HEALTHY_SECONDS", 1e9)
+            await kill_and_wait(pool, 1)
+            assert pool.losses == 1
+            await kill_and_wait(pool, 2)
+            assert pool.losses == 2
+            monkeypatch.setattr(processes, "HEALTHY_SECONDS", 0.0)    # every child ready so far was healthy
+            await kill_and_wait(pool, 3)
+            assert pool.losses == 1
+        finally:
+            pool.shutdown()
+        assert pool.state == "down"
+
+    asyncio.run(scenario())

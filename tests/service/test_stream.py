@@ -6,6 +6,8 @@
 * bad messages (not JSON, an unknown type, a bad field, a step before the open, a second open) get the
   REST API's errors and the stream goes on; a refused open is answered, then closed with 1008;
 * the API key (header or query) on a server with keys: refused with 4401 without it;
+* the Origin: a page of another origin is refused before the upgrade (403 ``forbidden_origin``), the server's own
+  origin, the configured CORS origins and clients sending none are served;
 * the idle timeout (1001), the per-step time limit (``timeout``, the stream goes on; in process, where a step
   that never ends by itself can stand in for a long one), the connection bound (1013), and a client killed
   mid-step: the server survives and its slot is free again.
@@ -19,6 +21,7 @@ from __future__ import annotations
 import asyncio
 import json
 import math
+import socket
 import time
 
 import numpy as np
@@ -314,7 +317,94 @@ def test_the_api_key_in_the_header_or_the_query(server):
         await accepted(None, f"?api_key={KEY}")
 
     run(go())
-    assert httpx.get(base + "/version").json()["limits"]["max_stream_connections"] == 2
+    assert httpx.get(base + "/version", headers={"X-API-Key": KEY}).json()["limits"]["max_stream_connections"] == 2
+
+
+# ---------------------------------------------------------------------------- origins
+#: Origin header -> accepted, on an app whose CORS origins are ["https://app.example.org"] (the TestClient connects
+#: to the host "testserver").
+ORIGINS = {
+    None: True,                                     # a script: no Origin
+    "http://testserver": True,                      # the server's own origin
+    "https://testserver": True,                     # the same, behind TLS
+    "https://app.example.org": True,                # a configured CORS origin
+    "https://APP.example.org/": True,               # the same, written differently
+    "http://evil.example": False,                   # any other page
+    "http://testserver:8001": False,                # the same host, another port: another origin
+    "http://testserver.evil.example": False,
+    "null": False,                                  # a sandboxed frame, a file
+    "ws://testserver": False,                       # not a web origin
+}
+
+
+@pytest.mark.parametrize("origin,accepted", ORIGINS.items(), ids=[str(o) for o in ORIGINS])
+def test_a_stream_is_opened_only_from_the_servers_own_origin_the_cors_origins_or_no_origin(origin, accepted):
+    """In process: a handshake from another origin is refused before the upgrade, HTTP 403 ``forbidden_origin`` in the
+    error shape; the others are upgraded and served."""
+    from service_helpers import app_client
+    from starlette.testclient import WebSocketDenialResponse
+
+    headers = {"origin": origin} if origin is not None else {}
+    with app_client(cors_origins=["https://app.example.org"], inline_processes=0, heavy_workers=0) as client:
+        if accepted:
+            with client.websocket_connect("/v1/control/stream", headers=headers) as ws:
+                ws.send_json({"type": "step", "dx": 0.1})
+                assert ws.receive_json()["code"] == "not_open"
+            return
+        with pytest.raises(WebSocketDenialResponse) as info:
+            with client.websocket_connect("/v1/control/stream", headers=headers):
+                pass
+        r = info.value
+        assert r.status_code == 403 and r.headers["content-type"] == "application/json"
+        body = r.json()
+        assert (body["code"], body["field"]) == ("forbidden_origin", "Origin")
+        assert 'tensegrity_errors_total{code="forbidden_origin"} 1.0' in client.get("/metrics").text
+
+
+def test_without_cors_origins_only_the_servers_own_origin_is_accepted():
+    from service.api.deps import origin_allowed
+    from service.config import Settings
+
+    plain, anything = Settings(), Settings(cors_origins=["*"])
+    assert origin_allowed(None, "127.0.0.1:8000", plain)
+    assert origin_allowed("http://127.0.0.1:8000", "127.0.0.1:8000", plain)
+    assert origin_allowed("http://[::1]:8000", "[::1]:8000", plain)
+    assert origin_allowed("http://example.org", "example.org:80", plain)
+    assert not origin_allowed("http://localhost:8000", "127.0.0.1:8000", plain)     # another origin for a browser
+    assert not origin_allowed("http://127.0.0.1:8000", None, plain)
+    assert not origin_allowed("http://127.0.0.1:8000", "127.0.0.1:notaport", plain)
+    assert not origin_allowed("https://app.example.org", "127.0.0.1:8000", plain)
+    assert origin_allowed("https://app.example.org", "127.0.0.1:8000", anything)
+
+
+@pytest.mark.slow
+def test_a_page_of_another_origin_is_refused_before_the_upgrade(server):
+    """A real server with keys: the origin is checked before the upgrade and before the key (403, not 4401); a
+    client sending the server's own origin is served."""
+    _, base = server
+    port = int(base.rsplit(":", 1)[1])
+
+    with socket.create_connection(("127.0.0.1", port), timeout=WAIT_SECONDS) as sock:
+        sock.sendall(b"GET /v1/control/stream HTTP/1.1\r\nHost: 127.0.0.1:%d\r\nUpgrade: websocket\r\n"
+                     b"Connection: Upgrade\r\nSec-WebSocket-Key: dGhlIHNhbXBsZSBub25jZQ==\r\n"
+                     b"Sec-WebSocket-Version: 13\r\nOrigin: http://evil.example\r\nX-API-Key: %s\r\n\r\n"
+                     % (port, KEY.encode()))
+        data = b""
+        while b"\r\n\r\n" not in data or not data.rstrip().endswith(b"}"):
+            chunk = sock.recv(65536)
+            if not chunk:
+                break
+            data += chunk
+    head, _, body = data.partition(b"\r\n\r\n")
+    assert head.startswith(b"HTTP/1.1 403"), data
+    assert json.loads(body)["code"] == "forbidden_origin"
+
+    async def own_origin():
+        async with websockets.connect(ws_url(base), additional_headers={"X-API-Key": KEY}, compression=None,
+                                      origin=f"http://127.0.0.1:{port}", open_timeout=WAIT_SECONDS) as ws:
+            assert (await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "track"}))["type"] == "opened"
+
+    run(own_origin())
 
 
 # ---------------------------------------------------------------------------- limits

@@ -4,7 +4,8 @@ A server started as ``uvicorn --factory stand_ins:app_with_designs_that_never_en
 ``PYTHONPATH``: :func:`server_env`) is the service with one change: ``POST /v1/design/critical-force`` on a chain
 of :data:`NEVER_ENDING_SEGMENTS` segments or more never ends by itself (the killable solver process sleeps an
 hour), every other request is the real one. The task is sent to the solver process by name, so the process imports
-it from here too.
+it from here too. ``stand_ins:app_with_short_lived_request_threads`` is the service whose request threads exit
+after a fraction of a second idle (thread churn, fast).
 """
 
 from __future__ import annotations
@@ -40,3 +41,48 @@ def app_with_designs_that_never_end():
 def server_env(env: dict[str, str]) -> dict[str, str]:
     """``env`` with this folder first on ``PYTHONPATH`` (the server and its solver processes import from here)."""
     return {**env, "PYTHONPATH": os.pathsep.join(p for p in (str(HERE), env.get("PYTHONPATH")) if p)}
+
+
+#: Seconds an idle request thread lives in :func:`app_with_short_lived_request_threads` (AnyIO's default: 10).
+REQUEST_THREAD_IDLE_SECONDS = 0.05
+
+
+def app_with_short_lived_request_threads():
+    """The service's app (settings from the environment) whose request threads (AnyIO's worker threads, which run
+    the plain route functions) exit after :data:`REQUEST_THREAD_IDLE_SECONDS` idle instead of 10 s: bursts of
+    requests a fraction of a second apart each run on fresh threads (thread churn without the wait)."""
+    import anyio._backends._asyncio as anyio_asyncio
+
+    from service.main import create_app
+
+    anyio_asyncio.WorkerThread.MAX_IDLE_TIME = REQUEST_THREAD_IDLE_SECONDS
+    return create_app()
+
+
+#: The environment variable naming the file whose presence lets a fast solver process finish its warm-up
+#: (:func:`app_with_a_held_fast_process`).
+WARMUP_GATE = "STAND_IN_WARMUP_GATE"
+
+
+def held_warmup() -> None:
+    """The service's warm-up; in a solver process (its main thread) it first waits until the file named by
+    ``STAND_IN_WARMUP_GATE`` exists, so that a test decides when a restarted process gets ready."""
+    import threading
+
+    from service.tasks.equilibria import warmup
+
+    gate = os.environ.get(WARMUP_GATE)
+    if gate and threading.current_thread() is threading.main_thread():
+        while not os.path.exists(gate):
+            time.sleep(0.01)
+    warmup()
+
+
+def app_with_a_held_fast_process():
+    """The service's app (settings from the environment) whose solver processes warm up with
+    :func:`held_warmup`."""
+    from service import tasks
+    from service.main import create_app
+
+    tasks.equilibria.warmup = held_warmup
+    return create_app()

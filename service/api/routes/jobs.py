@@ -2,7 +2,8 @@
 delete it.
 
 Handlers are plain functions (FastAPI runs them in its thread pool): they only touch the
-SQLite job store; the sweeps themselves run in the job runner's threads (:mod:`service.jobs.runner`). The one
+SQLite job store; the sweeps (and the figures submitted as jobs, ``POST /v1/plots/{kind}/job``, whose image
+``GET /v1/jobs/{id}/figure`` serves) run in the job runner's threads (:mod:`service.jobs.runner`). The one
 exception, ``GET /v1/jobs/{id}/atlas``, reads the job's rows in a thread and assembles its stability atlas in the
 solver threads (:func:`service.api.dispatch.run_task`, under the time limit). With API keys configured a job
 belongs to the key that submitted it (the store keeps the key's SHA-256): every other key gets 404 for it, as for
@@ -34,6 +35,7 @@ from ...responses import render_json_bounded
 from ...schemas import AtlasOut, ErrorOut
 from ...schemas import jobs as js
 from ...tasks.paths import find_job_atlas
+from ...tasks.plots import FIGURE_ANALYSIS
 from ..deps import Owner, Runner, SettingsDep, finished_atlas_job, path_deadline
 from ..dispatch import Placement, run_task
 from ..errors import ServiceError
@@ -43,7 +45,7 @@ log = logging.getLogger("service.jobs")
 
 _NOT_FOUND = {"code": "not_found", "message": "no job with id '0123456789abcdef0123456789abcdef'", "field": "id"}
 _UNAVAILABLE = {"code": "jobs_unavailable",
-                "message": "cannot open the job store tensegrity_jobs.sqlite3: unable to open database file"}
+                "message": "the job store (TENSEGRITY_JOBS_DB) cannot be written: database or disk is full"}
 _INVALID = {
     "validation_error": ERRORS[422]["validation_error"],
     "invalid_parameter": {"summary": "the spec does not fit the analysis", "value": {
@@ -302,6 +304,53 @@ async def get_job_atlas(
     spec, rows, ctx = await run_in_threadpool(finished_atlas_job, runner, owner, job_id)
     return await run_task(request, find_job_atlas, spec, rows, edges, path_deadline(settings), fields=ctx,
                           placement=Placement.HEAVY, size_field="id")
+
+
+_FIGURE_409 = _err(409, "The figure job is not done (`job_not_done`; `details.status` says what it is, "
+                        "`details.message` why a failed job failed).", {"job_not_done": {
+                            "summary": "the figure is being drawn", "value": {
+                                "code": "job_not_done", "field": "id",
+                                "message": "job '3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910' is running (4 of 11 steps): its "
+                                           "figure is served once the job is done",
+                                "details": {"status": "running", "done": 4, "total": 11}}}})
+_FIGURE_422 = _err(422, "Not a figure job (`invalid_parameter` on `id`), or a bad path parameter.", {
+    **_422_ID["content"]["application/json"]["examples"],
+    "not_a_figure": {"summary": "the job is a sweep", "value": {
+        "code": "invalid_parameter", "field": "id",
+        "message": "job '3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910' is a 'buckling' sweep, not a figure job (POST "
+                   "/v1/plots/{kind}/job)"}}})
+
+
+@router.get(
+    "/{job_id}/figure", operation_id="get_job_figure", response_class=PlainResponse, response_model=None,
+    summary="The image of a done figure job",
+    description="For a job submitted with `POST /v1/plots/{kind}/job` that is `done`: its image, `image/png` or "
+                "`image/svg+xml` as the body's `format` asked. A job not done yet (or failed, cancelled, interrupted): "
+                "409 `job_not_done` with its status (and, when it failed, its message: the row with the `error` "
+                "says the same); a sweep job: 422 `invalid_parameter` on `id`. Someone else's job (API keys "
+                "configured) is 404.",
+    responses={200: {"description": "The figure.", "content": {
+        "image/png": {"schema": {"type": "string", "format": "binary"}},
+        "image/svg+xml": {"schema": {"type": "string"}, "example": (
+            '<?xml version="1.0" encoding="utf-8" standalone="no"?>\n<svg xmlns="http://www.w3.org/2000/svg" '
+            'width="763pt" height="360pt" viewBox="0 0 763 360">...</svg>')}}},
+               401: _401, 404: _404, 409: _FIGURE_409, 422: _FIGURE_422, 503: _503})
+def get_job_figure(runner: Runner, owner: Owner, job_id: str) -> Any:
+    job = _job(runner, job_id, owner)
+    if job["analysis"] != FIGURE_ANALYSIS:
+        raise ServiceError(422, "invalid_parameter", f"job {job_id!r} is a {job['analysis']!r} sweep, not a figure "
+                           "job (POST /v1/plots/{kind}/job)", field="id")
+    image = runner.figure(job_id) if job["status"] == "done" else None
+    if image is None:
+        details: dict[str, Any] = {"status": job["status"], "done": job["done"], "total": job["total"]}
+        if job["message"] and job["status"] != "done":
+            details["message"] = job["message"]
+        raise ServiceError(409, "job_not_done", f"job {job_id!r} is {job['status']} ({job['done']} of {job['total']} "
+                           "steps): its figure is served once the job is done", field="id", details=details)
+    media, data = image
+    kind, fmt = job["spec"].get("kind", "figure"), "svg" if media == "image/svg+xml" else "png"
+    return PlainResponse(data, media_type=media,
+                         headers={"Content-Disposition": f'inline; filename="{kind}.{fmt}"'})
 
 
 @router.post(

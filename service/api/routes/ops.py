@@ -1,46 +1,31 @@
-"""Operations: liveness, readiness, version and metrics (no API key needed)."""
+"""Operations: the server's version and limits, and its metrics (behind the API key when the server has keys; the
+health routes, always open, are :mod:`.health`).
+
+``/version`` is answered from bytes built once and built again only when the kernels loaded in the process change
+(its only part that changes while the server runs): answering it must not cost the event loop more than the
+bytes' hand-off, whatever a client pipelines.
+"""
 
 from __future__ import annotations
 
 from typing import Any
 
 from fastapi import APIRouter, Request
-from starlette.responses import JSONResponse, Response
+from starlette.responses import Response
 
 import tensegrity_opt
 from tensegrity_opt.numerics import kernels
 
 from ... import schemas as s
+from ...responses import render_json
 from ..metrics import CONTENT_TYPE_LATEST
+from ..openapi import error_responses
 
 router = APIRouter(tags=["ops"])
 
 API_VERSION = "v1"
 METRICS_EXAMPLE = ("# HELP tensegrity_http_requests_total HTTP requests answered\n"
                    "# TYPE tensegrity_http_requests_total counter\n")
-
-
-@router.get("/healthz", operation_id="healthz", response_model=s.Health, summary="Liveness: the process answers",
-            responses={200: {"description": "alive", "content": {"application/json": {"example": {"status": "ok"}}}}})
-async def healthz() -> Any:
-    return {"status": "ok"}
-
-
-@router.get(
-    "/readyz", operation_id="readyz", response_model=s.Ready,
-    summary="Readiness: the solver workers are started (and warmed up)",
-    responses={
-        200: {"description": "ready", "content": {"application/json": {"example": {
-            "status": "ready", "workers": 2, "queue_size": 64, "in_flight": 0}}}},
-        503: {"model": s.Ready, "description": "still starting", "content": {"application/json": {"example": {
-            "status": "starting", "workers": 2, "queue_size": 64, "in_flight": 0}}}}})
-async def readyz(request: Request) -> Any:
-    executors = request.app.state.executors
-    pool, heavy = executors.threads, executors.killable
-    ready = bool(getattr(request.app.state, "ready", False)) and pool.started
-    body = {"status": "ready" if ready else "starting", "workers": pool.workers, "queue_size": pool.queue_size,
-            "in_flight": pool.in_flight + (heavy.in_flight if heavy is not None else 0)}
-    return body if ready else JSONResponse(status_code=503, content=body)
 
 
 @router.get(
@@ -56,8 +41,20 @@ async def readyz(request: Request) -> Any:
                    "max_trajectory_steps": 2000, "max_grid": s.MAX_GRID,
                    "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
                    "stream_idle_timeout": 60.0},
-        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
-async def version(request: Request) -> Any:
+        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": [],
+                    "building": [5, 6]}}}}},
+               **error_responses(401)})
+async def version(request: Request) -> Response:
+    state = request.app.state
+    loaded = (kernels.libraries(), tuple(n for n in range(2, kernels.KERNEL_MAX + 1) if kernels.pending(n)))
+    built = getattr(state, "version_bytes", None)
+    if built is None or built[0] != loaded:
+        built = state.version_bytes = (loaded, render_json(version_body(request)))
+    return Response(built[1], media_type="application/json")
+
+
+def version_body(request: Request) -> dict[str, Any]:
+    """The body of ``/version`` (built when the kernels loaded in the process change: :func:`version`)."""
     st = request.app.state.settings
     k = kernels.status()
     return {"service": "tensegrity-opt", "version": tensegrity_opt.__version__,
@@ -72,13 +69,15 @@ async def version(request: Request) -> Any:
                        "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
                        "max_stream_connections": st.max_stream_connections,
                        "stream_idle_timeout": st.stream_idle_timeout},
-            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine")}}
+            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine",
+                                                "building")}}
 
 
 @router.get(
     "/metrics", operation_id="metrics", summary="Prometheus metrics (text exposition format)",
     response_class=Response,
     responses={200: {"description": "request counts, latencies, solver failures, pool gauges",
-                     "content": {"text/plain": {"schema": {"type": "string"}, "example": METRICS_EXAMPLE}}}})
+                     "content": {"text/plain": {"schema": {"type": "string"}, "example": METRICS_EXAMPLE}}},
+               **error_responses(401)})
 async def metrics(request: Request) -> Response:
     return Response(content=request.app.state.metrics.render(), media_type=CONTENT_TYPE_LATEST)

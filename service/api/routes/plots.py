@@ -7,6 +7,12 @@ figure's task (:mod:`service.tasks.plots`: the library call and matplotlib's ren
 dispatcher, then answers the bytes: ``image/png`` by default, ``image/svg+xml`` when the body says
 ``"format": "svg"`` or, without ``format``, when the ``Accept`` header prefers ``image/svg+xml``. Refusals are
 the usual JSON ``ErrorOut``.
+
+Every figure is also offered as a job, ``POST /v1/plots/{kind}/job`` (the same body; the atlas in its grid form):
+202 with the job's id at once, then ``GET /v1/jobs/{id}`` for its progress (one row per step) and
+``GET /v1/jobs/{id}/figure`` for the image. It runs in the job runner's threads (:mod:`service.jobs.runner`) under
+``TENSEGRITY_JOBS_POINT_TIMEOUT`` instead of the request's time limit; a synchronous figure that runs out of time
+answers a 504 naming its job route.
 """
 
 from __future__ import annotations
@@ -19,12 +25,13 @@ from typing import Annotated, Any
 
 from fastapi import APIRouter, Body, Request
 from starlette.concurrency import run_in_threadpool
-from starlette.responses import Response
+from starlette.responses import JSONResponse, Response
 
 from ... import examples as ex
 from ...adapters.fields import LIMIT_LOAD_ALIASES, FieldContext
 from ...config import Settings
 from ...schemas import ErrorOut
+from ...schemas import jobs as js
 from ...schemas import plots as ps
 from ...schemas.atlas import ATLAS_REQUEST_EXAMPLE
 from ...schemas.control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE
@@ -45,7 +52,7 @@ from ..deps import (
 from ..dispatch import Placement, run_task
 from ..openapi import ATLAS_LIMITS, PLAN_LIMITS, SIMULATION_LIMITS, SOLVE_ERRORS, error_responses
 
-__all__ = ["router", "negotiate", "image_responses", "Figure", "FIGURES", "register"]
+__all__ = ["router", "negotiate", "image_responses", "Figure", "FIGURES", "register", "job_route", "timeout_hint"]
 
 router = APIRouter(prefix="/v1/plots", tags=["plots"])
 
@@ -227,7 +234,7 @@ FIGURES: tuple[Figure, ...] = (
         responses=image_responses("unsupported", "unreachable_target", "solver_failed"),
         examples={
             "fig4": {"summary": "Fig. 4: E(q1, q4) at dx = 0.1", "value": {
-                "manipulator": _M, "dx": 0.1, "dy": 0.0, "pair": [0, 3], "grid": 101}},
+                "manipulator": _M, "dx": 0.1, "dy": 0.0, "pair": [0, 3]}},
             "q1q2": {"summary": "E(q1, q2) off-axis, as SVG", "value": {
                 "manipulator": _M, "dx": 1.0, "dy": 0.5, "pair": [0, 1], "grid": 81, "format": "svg"}}}),
     Figure(
@@ -366,6 +373,17 @@ FIGURES: tuple[Figure, ...] = (
 
 
 # ---------------------------------------------------------------------------- the routes
+def job_route(kind: str) -> str:
+    """The job form of the figure ``kind``."""
+    return f"/v1/plots/{kind}/job"
+
+
+def timeout_hint(kind: str) -> str:
+    """What a 504 of the figure ``kind`` adds to its message: the job form."""
+    return (f"a figure that needs longer runs as a job: POST {job_route(kind)} with the same body (202, its id), "
+            "follow GET /v1/jobs/{id}, then GET /v1/jobs/{id}/figure")
+
+
 def _reply(data: bytes, fmt: str, kind: str) -> Response:
     return Response(content=data, media_type=MEDIA[fmt],
                     headers={"Content-Disposition": f'inline; filename="{kind}.{fmt}"', "Vary": "Accept"})
@@ -383,7 +401,8 @@ def _endpoint(fig: Figure) -> Callable[..., Awaitable[Response]]:
             task, extra, ctx = call
         fmt = negotiate(req.format, request.headers.get("accept"))
         args = (req, fmt, path_deadline(settings), *extra) if fig.continuation else (req, fmt)
-        data = await run_task(request, task, *args, fields=ctx, placement=fig.where(req, settings))
+        data = await run_task(request, task, *args, fields=ctx, placement=fig.where(req, settings),
+                              timeout_hint=timeout_hint(fig.kind))
         return _reply(data, fmt, fig.kind)
 
     endpoint.__name__ = endpoint.__qualname__ = "plot_" + fig.kind.replace("-", "_")
@@ -395,11 +414,68 @@ def _endpoint(fig: Figure) -> Callable[..., Awaitable[Response]]:
     return endpoint
 
 
+def _job_endpoint(fig: Figure) -> Callable[..., Awaitable[Response]]:
+    """The job form of ``fig``: the limits, the job stored (202 with its id); the figure is drawn by the job runner."""
+    model = tasks.FIGURE_TASKS[fig.kind][0]
+
+    async def endpoint(request: Request, req: Any) -> Response:
+        settings: Settings = request.app.state.settings
+        fig.limits(req, settings)
+        runner, owner = await get_runner(request), await get_owner(request)
+        fmt = req.format or "png"
+        job = await run_in_threadpool(runner.submit_figure, fig.kind, fmt, req.model_dump(mode="json"),
+                                      tasks.figure_steps(fig.kind, req), owner)
+        return JSONResponse({"id": job["id"], "status": job["status"], "total": job["total"],
+                             "analysis": job["analysis"]}, status_code=202,
+                            headers={"Location": f"/v1/jobs/{job['id']}"})
+
+    endpoint.__name__ = endpoint.__qualname__ = "submit_plot_" + fig.kind.replace("-", "_") + "_job"
+    examples = {k: v for k, v in fig.examples.items() if k != "job"}
+    body = Annotated[model, Body(openapi_examples=examples)]
+    endpoint.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
+        [inspect.Parameter("request", inspect.Parameter.POSITIONAL_OR_KEYWORD, annotation=Request),
+         inspect.Parameter("req", inspect.Parameter.POSITIONAL_OR_KEYWORD, annotation=body)],
+        return_annotation=Response)
+    return endpoint
+
+
+def _job_responses(fig: Figure) -> dict[int | str, Any]:
+    """202 with the job, and the refusals of the figure's limits and of the job store."""
+    limits = {k: v for k, v in fig.responses.items() if k in (401, 413, 422)}
+    return {
+        202: {"description": "The figure job is stored (`queued`): follow `GET /v1/jobs/{id}` (`done` / `total` "
+                             "steps), then `GET /v1/jobs/{id}/figure`.", "model": js.JobCreated,
+              "headers": {"Location": {"description": "the job's URL", "schema": {"type": "string"}}},
+              "content": {"application/json": {"example": {"id": "3f0c9a4e1b7d4c2a9e8f6d5c4b3a2910",
+                                                           "status": "queued", "total": 2, "analysis": "figure"}}}},
+        **limits,
+        503: _job_error("The job store cannot be used (`jobs_unavailable`).", "jobs_unavailable",
+                        "job store unavailable", {"code": "jobs_unavailable",
+                                                  "message": "the job store cannot be used: disk I/O error"}),
+    }
+
+
 def register(fig: Figure) -> None:
-    """Add the route of ``fig`` to :data:`router`."""
+    """Add the routes of ``fig`` to :data:`router`: the figure, and its job form."""
     endpoint = _endpoint(fig)
     router.post(f"/{fig.kind}", operation_id=endpoint.__name__, response_class=Response, response_model=None,
                 summary=fig.summary, description=fig.description, responses=fig.responses)(endpoint)
+    job = _job_endpoint(fig)
+    router.post(f"/{fig.kind}/job", operation_id=job.__name__, status_code=202, response_class=JSONResponse,
+                response_model=None, summary=f"{fig.summary.split(':', 1)[0]} as a job: "
+                                             f"{fig.summary.split(':', 1)[-1].strip()}",
+                description=f"The figure of `POST /v1/plots/{fig.kind}` (the same body"
+                            + (", the grid form" if fig.kind == "atlas" else "") + ") computed as a background job: "
+                            "202 at once with the job's `id` (`analysis: figure`, `total`: its steps"
+                            + (": one per target, then the drawing and the image" if fig.kind == "atlas" else
+                               ": the drawing and the image") + "). Follow it with `GET /v1/jobs/{id}` (`done`, "
+                            "`progress`, one row per step, a failure as a row's `error` and the job's `message`), "
+                            "then fetch the image with `GET /v1/jobs/{id}/figure` (PNG, or SVG with "
+                            "`\"format\": \"svg\"` in the body). It runs under the server's "
+                            "`TENSEGRITY_JOBS_POINT_TIMEOUT` (300 s by default) instead of the request time limit; "
+                            "the server's limits on the request apply as to the figure. With API keys configured the "
+                            "job belongs to the key that submitted it.",
+                responses=_job_responses(fig))(job)
 
 
 for _fig in FIGURES:

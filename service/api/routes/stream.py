@@ -5,7 +5,9 @@ One connection is one chain in one mode: the client's first message ``open``s it
 (the library's answer, computed from the state the previous step left) or an ``error`` (the REST API's
 codes and fields: ``validation_error`` with the field paths, the library's refusals, ``timeout``). A
 bad message never closes the connection; a refused ``open`` does (1008), as do a server without a
-free stream slot (1013), a missing or wrong API key (4401) and silence (1001).
+free stream slot (1013), a missing or wrong API key (4401) and silence (1001). A handshake from a web page of another
+origin (its ``Origin`` neither the server's own nor one of ``TENSEGRITY_CORS_ORIGINS``) is refused before the upgrade:
+HTTP 403 ``forbidden_origin``.
 
 Each stream holds one solver thread for its lifetime (:class:`service.execution.slots.StreamSlots`): its
 steps run there under the server's solve time limit, never on the event loop, so one slow stream
@@ -29,8 +31,8 @@ from ...config import Settings
 from ...execution.threads import ThreadExecutor
 from ...responses import render_json
 from ...sessions import Session, open_session, step_task
-from ..deps import api_key_valid, check_manipulator
-from ..errors import error_body, validation_body
+from ..deps import api_key_valid, check_manipulator, origin_allowed
+from ..errors import ServiceError, error_body, error_response, validation_body
 
 __all__ = ["router", "CLOSE_NORMAL", "CLOSE_IDLE", "CLOSE_POLICY", "CLOSE_TRY_LATER", "CLOSE_UNAUTHORIZED",
            "PATH"]
@@ -170,11 +172,31 @@ async def _close(ws: WebSocket, code: int, reason: str) -> None:
         pass                                # the client is gone already
 
 
+async def _refuse_origin(ws: WebSocket, origin: str, metrics: Any) -> None:
+    """Refuse the handshake before the upgrade: 403 ``forbidden_origin`` (an HTTP answer, in the error shape)."""
+    exc = ServiceError(403, "forbidden_origin",
+                       f"a control stream from the origin {origin[:200]!r} is refused: this server accepts its own "
+                       "origin, those of TENSEGRITY_CORS_ORIGINS and clients that send no Origin", field="Origin")
+    if metrics is not None:
+        metrics.failure(exc.code)
+    body = error_body(exc)
+    assert body is not None
+    try:
+        await ws.send_denial_response(error_response(exc.status_code, body))
+    except RuntimeError:                    # a server without the denial extension: its own 403
+        await ws.close(CLOSE_POLICY)
+
+
 @router.websocket(PATH.removeprefix("/v1"), name="control_stream")
 async def control_stream(websocket: WebSocket) -> None:
     app = websocket.app
     settings: Settings = app.state.settings
     metrics = getattr(app.state, "metrics", None)
+    origin = websocket.headers.get("origin")
+    if not origin_allowed(origin, websocket.headers.get("host"), settings):
+        assert origin is not None
+        await _refuse_origin(websocket, origin, metrics)
+        return
     await websocket.accept()
     # the connection as one stream: auth, a slot, then messages until the client closes or goes silent
     refusal = _Stream(websocket, settings, None, metrics)     # answers only (no slot)

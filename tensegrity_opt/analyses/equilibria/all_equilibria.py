@@ -31,7 +31,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
 from ...model.manipulator import Manipulator
-from ...numerics import KERNEL_MAX, chain_solver, distinct
+from ...numerics import KERNEL_MAX, chain_solver, distinct, distinct_indices
 from ...outcome import Outcome, freeze
 from .equilibrium import (
     RESIDUAL_TOL,
@@ -259,10 +259,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     more = np.vstack([well_seeds(m, dx, dy), projected_sample(m, target, int(n_projected), PROJECTED_SEED)])
     if more.shape[0]:
         batch = chain_solver(m).newton_kkt_seeds(target, more, python_fallback=False)
-        for j in np.flatnonzero(batch.success & ~batch.on_bound).tolist():
-            res = batch.result(j)
-            if is_equilibrium(m, res, target):
-                results.append(res)
+        results += [batch.result(j) for j in _accepted_rows(m, batch, target, dedupe_tol)]
         statuses["Newton (projected starts)"] = more.shape[0]
     # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present.
     for s in seeds(m, dx, dy, max_modes=2, n_random=0):
@@ -279,6 +276,20 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
                           status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())), found=0)
     return searched_set(_sorted(m, distinct(results, dedupe_tol)), statuses)
+
+
+def _accepted_rows(m: Manipulator, batch, target: np.ndarray, dedupe_tol: float) -> list[int]:
+    """The rows of a batch of local solves that :func:`is_equilibrium` accepts (converged, off the bounds, inside
+    the open range, the residual re-checked in numpy), all rows at once, and of those the first of each group
+    of coinciding rows (:func:`distinct`'s rule): the thousands of projected starts of a multistable chain
+    converge to a few equilibria, each then built once."""
+    Q, F = batch.q, batch.force
+    with np.errstate(invalid="ignore", over="ignore"):
+        ok = (batch.success & ~batch.on_bound & np.all(np.isfinite(F), axis=1)
+              & np.all(np.abs(Q) < np.asarray(m.joint_limits, float), axis=1))
+        rows = np.flatnonzero(ok)
+        rows = rows[m.equilibrium_residuals(Q[rows], F[rows], target) <= RESIDUAL_TOL]
+    return distinct_indices(Q, rows.tolist(), dedupe_tol) if rows.size > 1 else rows.tolist()
 
 
 def _sorted(m: Manipulator, results) -> list[Equilibrium]:

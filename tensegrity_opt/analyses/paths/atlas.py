@@ -33,6 +33,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
@@ -456,7 +457,8 @@ def _check(m: Manipulator, dx, dy, method: str):
 
 
 def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bool = True,
-                    timeout: float | None = None) -> StabilityAtlas:
+                    timeout: float | None = None, progress: Callable[[AtlasTarget], Any] | None = None
+                    ) -> StabilityAtlas:
     """The stability atlas of the held tip over the grid ``dx x dy`` (module docstring).
 
     Parameters
@@ -473,6 +475,8 @@ def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bo
     timeout : float, optional
         Seconds; on expiry what is done is returned with ``status="time_limit"`` (targets not reached
         carry ``error="time_limit: ..."``).
+    progress : callable, optional
+        Called with each :class:`AtlasTarget` once it is computed (row by row: ``dx`` fastest), before the edges.
 
     Returns
     -------
@@ -493,6 +497,8 @@ def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bo
         for j, y in enumerate(Y):
             for i, x in enumerate(X):
                 targets[j][i] = atlas_target(m, x, y, method=method)
+                if progress is not None:
+                    progress(targets[j][i])
 
     return _run(m, X, Y, targets, method, fill, edges, timeout)
 

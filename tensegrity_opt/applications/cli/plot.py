@@ -284,7 +284,8 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     add_deflection_options(k, number=float)
     k.add_argument("--pair", type=int, nargs=2, default=[0, 3], metavar=("I", "J"),
                    help="the two grid joints, 0-based (0 3: the paper's q1, q4)")
-    k.add_argument("--grid", type=positive_int, default=101, help="points per axis")
+    k.add_argument("--grid", type=positive_int, default=61,
+                   help="points per axis (default 61; the region's boundary is drawn on a grid 4x finer)")
     k.add_argument("--span", type=float, default=None,
                    help="half-width of the axes (rad); None: the reachable region; 0: the physical range")
     k.set_defaults(func=_cmd_landscape)

@@ -92,6 +92,13 @@ def test_unreachable_targets_and_failed_targets_are_kept():
     assert d["targets"][0][0]["least_energy"] is None and d["least_energy"][0][0] is None
 
 
+def test_progress_sees_each_target_once_in_grid_order_before_the_edges():
+    seen = []
+    at = stability_atlas(BISTABLE, [0.2, 1.4], [-0.3, 0.3], edges=False, progress=seen.append)
+    assert [(t.dx, t.dy) for t in seen] == [(0.2, -0.3), (1.4, -0.3), (0.2, 0.3), (1.4, 0.3)]
+    assert seen == [t for row in at.targets for t in row]
+
+
 def test_atlas_time_limit_keeps_what_is_done_and_validates_input(monkeypatch):
     # the library's clock moves on 1 s at every reading (tests/support/clocks.py): a target takes about 4 readings,
     # so a limit of 30 s runs out after some 7 of the 144 targets, on any machine

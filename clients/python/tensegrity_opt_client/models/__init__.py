@@ -93,6 +93,8 @@ from .job_spec_analysis import JobSpecAnalysis
 from .job_summary import JobSummary
 from .job_summary_analysis import JobSummaryAnalysis
 from .job_summary_status import JobSummaryStatus
+from .jobs_health import JobsHealth
+from .jobs_health_status import JobsHealthStatus
 from .jump_out import JumpOut
 from .jump_out_kind import JumpOutKind
 from .kernels_out import KernelsOut
@@ -169,7 +171,11 @@ from .preloads_for_load_request_boundary import PreloadsForLoadRequestBoundary
 from .preloads_out import PreloadsOut
 from .preloads_request import PreloadsRequest
 from .preloads_request_objective import PreloadsRequestObjective
+from .processes_state import ProcessesState
+from .processes_state_state import ProcessesStateState
 from .ready import Ready
+from .ready_degraded_item import ReadyDegradedItem
+from .ready_processes import ReadyProcesses
 from .ready_status import ReadyStatus
 from .rest_configurations_request import RestConfigurationsRequest
 from .rest_configurations_request_method import RestConfigurationsRequestMethod
@@ -308,6 +314,8 @@ __all__ = (
     "JobResults",
     "JobResultsRowsItem",
     "JobResultsStatus",
+    "JobsHealth",
+    "JobsHealthStatus",
     "JobSpec",
     "JobSpecAnalysis",
     "JobSummary",
@@ -389,7 +397,11 @@ __all__ = (
     "PreloadsOut",
     "PreloadsRequest",
     "PreloadsRequestObjective",
+    "ProcessesState",
+    "ProcessesStateState",
     "Ready",
+    "ReadyDegradedItem",
+    "ReadyProcesses",
     "ReadyStatus",
     "RestConfigurationsRequest",
     "RestConfigurationsRequestMethod",

@@ -19,7 +19,7 @@ class JobCreated:
         analysis (JobCreatedAnalysis):
         id (str): job id (use it in /v1/jobs/{id})
         status (JobCreatedStatus):
-        total (int): number of points
+        total (int): number of points (a figure job: its steps)
     """
 
     analysis: JobCreatedAnalysis

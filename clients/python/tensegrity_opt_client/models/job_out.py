@@ -22,7 +22,7 @@ T = TypeVar("T", bound="JobOut")
 class JobOut:
     """
     Attributes:
-        analysis (JobOutAnalysis):
+        analysis (JobOutAnalysis): the sweep's analysis, or figure (a figure as a job)
         columns (list[str]): column order of the rows
         created_at (str): ISO 8601, UTC
         done (int): points finished and stored (failed points included)
@@ -32,9 +32,9 @@ class JobOut:
         progress (float): done / total
         results (list[JobOutResultsItem]): finished rows so far, by index (a page: offset, limit)
         runs (int): times the job was started (> 1: resumed after a server restart)
-        spec (JobOutSpec): the normalised sweep spec
+        spec (JobOutSpec): the normalised sweep spec (a figure job: analysis, kind, format and the figure's request)
         status (JobOutStatus): queued | running | done | failed | cancelled | interrupted
-        total (int): points in the sweep
+        total (int): points in the sweep (a figure job: its steps)
         finished_at (None | str | Unset):
         message (None | str | Unset): why the job failed, was cancelled or interrupted
         next_offset (int | None | Unset): offset of the next page of rows, when there is one

@@ -7,6 +7,7 @@ class JobOutAnalysis(StrEnum):
     DESIGN = "design"
     EQUILIBRIA_COUNT = "equilibria_count"
     EQUILIBRIUM = "equilibrium"
+    FIGURE = "figure"
     STIFFNESS = "stiffness"
 
     def __str__(self) -> str:

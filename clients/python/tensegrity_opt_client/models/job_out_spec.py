@@ -11,7 +11,7 @@ T = TypeVar("T", bound="JobOutSpec")
 
 @_attrs_define
 class JobOutSpec:
-    """the normalised sweep spec"""
+    """the normalised sweep spec (a figure job: analysis, kind, format and the figure's request)"""
 
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 

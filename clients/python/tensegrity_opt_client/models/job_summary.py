@@ -17,7 +17,7 @@ T = TypeVar("T", bound="JobSummary")
 class JobSummary:
     """
     Attributes:
-        analysis (JobSummaryAnalysis):
+        analysis (JobSummaryAnalysis): the sweep's analysis, or figure (a figure as a job)
         created_at (str): ISO 8601, UTC
         done (int): points finished and stored (failed points included)
         failed (int): finished points whose row has an error
@@ -25,7 +25,7 @@ class JobSummary:
         progress (float): done / total
         runs (int): times the job was started (> 1: resumed after a server restart)
         status (JobSummaryStatus): queued | running | done | failed | cancelled | interrupted
-        total (int): points in the sweep
+        total (int): points in the sweep (a figure job: its steps)
         finished_at (None | str | Unset):
         message (None | str | Unset): why the job failed, was cancelled or interrupted
         started_at (None | str | Unset):

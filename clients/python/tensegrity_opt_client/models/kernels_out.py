@@ -6,6 +6,8 @@ from typing import Any, TypeVar, cast
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
+from ..types import UNSET, Unset
+
 T = TypeVar("T", bound="KernelsOut")
 
 
@@ -19,12 +21,15 @@ class KernelsOut:
         max_segments (int): chains up to this long have kernels
         virtual_machine (list[int]): chain lengths running in CasADi's virtual machine (no compiler, or compiling
             failed: about 4x slower)
+        building (list[int] | Unset): chain lengths whose kernels compile in the background; their requests are answered
+            in the virtual machine meanwhile
     """
 
     compiled: list[int]
     compiler: None | str
     max_segments: int
     virtual_machine: list[int]
+    building: list[int] | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -37,6 +42,10 @@ class KernelsOut:
 
         virtual_machine = self.virtual_machine
 
+        building: list[int] | Unset = UNSET
+        if not isinstance(self.building, Unset):
+            building = self.building
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
@@ -47,6 +56,8 @@ class KernelsOut:
                 "virtual_machine": virtual_machine,
             }
         )
+        if building is not UNSET:
+            field_dict["building"] = building
 
         return field_dict
 
@@ -66,11 +77,14 @@ class KernelsOut:
 
         virtual_machine = cast(list[int], d.pop("virtual_machine"))
 
+        building = cast(list[int], d.pop("building", UNSET))
+
         kernels_out = cls(
             compiled=compiled,
             compiler=compiler,
             max_segments=max_segments,
             virtual_machine=virtual_machine,
+            building=building,
         )
 
         kernels_out.additional_properties = d

@@ -28,7 +28,9 @@ class PlotLandscapeRequest:
         dy (float | Unset): tip deflection along y (length units) Default: 0.0.
         format_ (None | PlotLandscapeRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
-        grid (int | Unset): points per axis (2..201) Default: 101.
+        grid (int | Unset): points per axis (2..201); default 61: the contours of the smooth energy at that many points
+            and the region's boundary on a grid four times finer (a finer grid changes little that shows and costs time)
+            Default: 61.
         pair (list[int] | Unset): the two grid joints, 0-based and different
         span (float | None | Unset): half-width of both axes (rad); default: the reachable region of the landscape
     """
@@ -38,7 +40,7 @@ class PlotLandscapeRequest:
     dpi: int | Unset = 100
     dy: float | Unset = 0.0
     format_: None | PlotLandscapeRequestFormatType0 | Unset = UNSET
-    grid: int | Unset = 101
+    grid: int | Unset = 61
     pair: list[int] | Unset = UNSET
     span: float | None | Unset = UNSET
 

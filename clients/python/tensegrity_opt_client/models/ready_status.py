@@ -2,6 +2,7 @@ from enum import StrEnum
 
 
 class ReadyStatus(StrEnum):
+    DEGRADED = "degraded"
     READY = "ready"
     STARTING = "starting"
 

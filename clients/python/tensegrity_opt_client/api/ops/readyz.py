@@ -49,7 +49,13 @@ def sync_detailed(
     *,
     client: AuthenticatedClient | Client,
 ) -> Response[Ready]:
-    """Readiness: the solver workers are started (and warmed up)
+    """Readiness: the solver workers are started (and warmed up) and the job store works
+
+     503 while the server starts (`starting`) and while its job store fails (`status: degraded`: a full
+    disk, an unreadable file ...; `jobs.message` says what fails). A failing store is retried every
+    `TENSEGRITY_JOBS_RETRY_SECONDS`; the answer is 200 again once a retry succeeds. While a solver
+    process is lost and restarted the answer stays 200 (the solver threads answer) and `degraded` names
+    what runs slower or refuses (`processes` says where each kind stands).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -72,7 +78,13 @@ def sync(
     *,
     client: AuthenticatedClient | Client,
 ) -> Ready | None:
-    """Readiness: the solver workers are started (and warmed up)
+    """Readiness: the solver workers are started (and warmed up) and the job store works
+
+     503 while the server starts (`starting`) and while its job store fails (`status: degraded`: a full
+    disk, an unreadable file ...; `jobs.message` says what fails). A failing store is retried every
+    `TENSEGRITY_JOBS_RETRY_SECONDS`; the answer is 200 again once a retry succeeds. While a solver
+    process is lost and restarted the answer stays 200 (the solver threads answer) and `degraded` names
+    what runs slower or refuses (`processes` says where each kind stands).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -91,7 +103,13 @@ async def asyncio_detailed(
     *,
     client: AuthenticatedClient | Client,
 ) -> Response[Ready]:
-    """Readiness: the solver workers are started (and warmed up)
+    """Readiness: the solver workers are started (and warmed up) and the job store works
+
+     503 while the server starts (`starting`) and while its job store fails (`status: degraded`: a full
+    disk, an unreadable file ...; `jobs.message` says what fails). A failing store is retried every
+    `TENSEGRITY_JOBS_RETRY_SECONDS`; the answer is 200 again once a retry succeeds. While a solver
+    process is lost and restarted the answer stays 200 (the solver threads answer) and `degraded` names
+    what runs slower or refuses (`processes` says where each kind stands).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -112,7 +130,13 @@ async def asyncio(
     *,
     client: AuthenticatedClient | Client,
 ) -> Ready | None:
-    """Readiness: the solver workers are started (and warmed up)
+    """Readiness: the solver workers are started (and warmed up) and the job store works
+
+     503 while the server starts (`starting`) and while its job store fails (`status: degraded`: a full
+    disk, an unreadable file ...; `jobs.message` says what fails). A failing store is retried every
+    `TENSEGRITY_JOBS_RETRY_SECONDS`; the answer is 200 again once a retry succeeds. While a solver
+    process is lost and restarted the answer stays 200 (the solver threads answer) and `degraded` names
+    what runs slower or refuses (`processes` says where each kind stands).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

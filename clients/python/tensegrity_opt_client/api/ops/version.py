@@ -5,6 +5,7 @@ import httpx
 
 from ... import errors
 from ...client import AuthenticatedClient, Client
+from ...models.error_out import ErrorOut
 from ...models.version_out import VersionOut
 from ...types import Response
 
@@ -19,11 +20,16 @@ def _get_kwargs() -> dict[str, Any]:
     return _kwargs
 
 
-def _parse_response(*, client: AuthenticatedClient | Client, response: httpx.Response) -> VersionOut | None:
+def _parse_response(*, client: AuthenticatedClient | Client, response: httpx.Response) -> ErrorOut | VersionOut | None:
     if response.status_code == 200:
         response_200 = VersionOut.from_dict(response.json())
 
         return response_200
+
+    if response.status_code == 401:
+        response_401 = ErrorOut.from_dict(response.json())
+
+        return response_401
 
     if client.raise_on_unexpected_status:
         raise errors.UnexpectedStatus(response.status_code, response.content)
@@ -31,7 +37,9 @@ def _parse_response(*, client: AuthenticatedClient | Client, response: httpx.Res
         return None
 
 
-def _build_response(*, client: AuthenticatedClient | Client, response: httpx.Response) -> Response[VersionOut]:
+def _build_response(
+    *, client: AuthenticatedClient | Client, response: httpx.Response
+) -> Response[ErrorOut | VersionOut]:
     return Response(
         status_code=HTTPStatus(response.status_code),
         content=response.content,
@@ -43,7 +51,7 @@ def _build_response(*, client: AuthenticatedClient | Client, response: httpx.Res
 def sync_detailed(
     *,
     client: AuthenticatedClient | Client,
-) -> Response[VersionOut]:
+) -> Response[ErrorOut | VersionOut]:
     """Versions, the server's limits and how its Newton kernels run
 
     Raises:
@@ -51,7 +59,7 @@ def sync_detailed(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Response[VersionOut]
+        Response[ErrorOut | VersionOut]
     """
 
     kwargs = _get_kwargs()
@@ -66,7 +74,7 @@ def sync_detailed(
 def sync(
     *,
     client: AuthenticatedClient | Client,
-) -> VersionOut | None:
+) -> ErrorOut | VersionOut | None:
     """Versions, the server's limits and how its Newton kernels run
 
     Raises:
@@ -74,7 +82,7 @@ def sync(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        VersionOut
+        ErrorOut | VersionOut
     """
 
     return sync_detailed(
@@ -85,7 +93,7 @@ def sync(
 async def asyncio_detailed(
     *,
     client: AuthenticatedClient | Client,
-) -> Response[VersionOut]:
+) -> Response[ErrorOut | VersionOut]:
     """Versions, the server's limits and how its Newton kernels run
 
     Raises:
@@ -93,7 +101,7 @@ async def asyncio_detailed(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        Response[VersionOut]
+        Response[ErrorOut | VersionOut]
     """
 
     kwargs = _get_kwargs()
@@ -106,7 +114,7 @@ async def asyncio_detailed(
 async def asyncio(
     *,
     client: AuthenticatedClient | Client,
-) -> VersionOut | None:
+) -> ErrorOut | VersionOut | None:
     """Versions, the server's limits and how its Newton kernels run
 
     Raises:
@@ -114,7 +122,7 @@ async def asyncio(
         httpx.TimeoutException: If the request takes longer than Client.timeout.
 
     Returns:
-        VersionOut
+        ErrorOut | VersionOut
     """
 
     return (
