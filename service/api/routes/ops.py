@@ -9,6 +9,7 @@ from starlette.responses import JSONResponse, Response
 
 import tensegrity_opt
 from tensegrity_opt.numerics import kernels
+from tensegrity_opt.numerics.build import compiler_name
 
 from ... import schemas as s
 from ..metrics import CONTENT_TYPE_LATEST
@@ -56,7 +57,7 @@ async def readyz(request: Request) -> Any:
                    "max_trajectory_steps": 2000, "max_grid": s.MAX_GRID,
                    "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
                    "stream_idle_timeout": 60.0},
-        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
+        "kernels": {"compiler": "cc 12.2.0", "max_segments": 8, "compiled": [4], "virtual_machine": []}}}}}})
 async def version(request: Request) -> Any:
     st = request.app.state.settings
     k = kernels.status()
@@ -72,7 +73,8 @@ async def version(request: Request) -> Any:
                        "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
                        "max_stream_connections": st.max_stream_connections,
                        "stream_idle_timeout": st.stream_idle_timeout},
-            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine")}}
+            "kernels": {"compiler": compiler_name(),
+                        **{key: k[key] for key in ("max_segments", "compiled", "virtual_machine")}}}
 
 
 @router.get(
