@@ -1,7 +1,7 @@
 """JSON bodies and stream messages: a key given twice in one object is refused (422 naming it), on every operation.
 
-``{"n": 4, "n": 200}`` was read last-wins (n = 200) while anything keeping the first key (a proxy, a log, a cache)
-saw n = 4. Every operation with a JSON body is checked (its example from the OpenAPI document with its first key
+``{"n": 4, "n": 200}`` read last-wins is n = 200, while anything keeping the first key (a proxy, a log, a cache)
+sees n = 4. Every operation with a JSON body is checked (its example from the OpenAPI document with its first key
 given twice), the key's path is the error's field (in a nested object, in a list), and a stream message the same.
 """
 

@@ -1,8 +1,8 @@
 """Chains longer than numpy's 32 array dimensions on every route that takes a chain: answered, never a 500.
 
 Two spring constants per segment (``"k": [1, 2]``) give each segment one well; the configurations built from one
-critical point per segment were a ``numpy.meshgrid`` of ``n`` dimensions, which numpy refuses beyond 32 (a 500
-``numerical_failure`` on every route that searched). The table below has a body for every operation whose request
+critical point per segment must never pass through an array of ``n`` dimensions, which numpy refuses beyond 32 (a
+500 ``numerical_failure`` on every route that searches). The table below has a body for every operation whose request
 takes a chain (checked against the OpenAPI document); each is posted for n = 33, 64 and 200. The routes of the
 equilibria must answer 200; the others 200 or a documented refusal (the schema's cap of 60 segments on the design
 routes, the continuation's 64, a time limit), never a server error.

@@ -1,7 +1,7 @@
 """Chains longer than numpy's 32 array dimensions: the analyses build their configurations row by row.
 
-A chain of two spring constants per segment (``k = (1, 2)``) has one well per segment; every configuration built
-from one critical point per segment was a ``numpy.meshgrid`` of ``n`` dimensions, refused by numpy beyond 32.
+A chain of two spring constants per segment (``k = (1, 2)``) has one well per segment; a configuration built from
+one critical point per segment through a ``numpy.meshgrid`` of ``n`` dimensions is refused by numpy beyond 32.
 """
 
 from __future__ import annotations

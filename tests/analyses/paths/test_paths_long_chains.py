@@ -1,5 +1,5 @@
 """Curves and batches of chains longer than numpy's 32 array dimensions (two spring constants per segment: one
-well each, whose configurations were built through an array of n dimensions)."""
+well each: their configurations never pass through an array of n dimensions)."""
 
 from __future__ import annotations
 
