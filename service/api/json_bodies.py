@@ -90,9 +90,10 @@ def duplicate_key_error(text: str | bytes) -> dict[str, Any] | None:
 
 
 def is_json(content_type: str | None) -> bool:
-    """The media types FastAPI decodes as JSON: none given, ``application/json`` or ``application/*+json``."""
+    """The media types FastAPI decodes as JSON: ``application/json`` or ``application/*+json`` (a body without a
+    ``Content-Type`` is not decoded: FastAPI's strict content type refuses it)."""
     if not content_type:
-        return True
+        return False
     media = content_type.split(";", 1)[0].strip().lower()
     return media == "application/json" or (media.startswith("application/") and media.endswith("+json"))
 
