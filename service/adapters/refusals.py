@@ -3,7 +3,8 @@
 Library exceptions keep their ``code`` (every one is a subclass of ``TensegrityError``, which is never raised
 itself), with the field as the request names it (:mod:`.fields`), the solver ``status`` of a solver failure or
 time limit, the ``best`` point of an infeasible design and the other details. A numerical exception of numpy,
-scipy or CasADi that the library did not turn into one of its refusals is ``numerical_failure`` (a server bug).
+scipy or CasADi that the library did not turn into one of its refusals is ``numerical_failure`` (a server bug),
+its message the same whatever the exception said (that goes to the server's log, not to the client).
 """
 
 from __future__ import annotations
@@ -17,10 +18,13 @@ from tensegrity_opt.errors import SolverError, TensegrityError, TimeLimitError
 
 from .fields import FieldContext, request_field
 
-__all__ = ["refusal_body", "plain", "NUMERICAL"]
+__all__ = ["refusal_body", "plain", "NUMERICAL", "NUMERICAL_FAILURE"]
 
 #: Failures of numpy, scipy or CasADi that the library did not turn into one of its refusals.
 NUMERICAL = (ArithmeticError, np.linalg.LinAlgError, ValueError, RuntimeError)
+#: Their message in an answer (the exception itself goes to the server's log).
+NUMERICAL_FAILURE = ("the computation failed numerically for this input: an internal error of the server, "
+                     "logged there with its details")
 
 
 def plain(v: Any) -> Any:
@@ -59,6 +63,6 @@ def refusal_body(exc: BaseException, ctx: FieldContext = FieldContext()) -> dict
             out["details"] = details
         return out
     if isinstance(exc, NUMERICAL):
-        return {"code": "numerical_failure",
-                "message": f"the computation failed numerically for this input: {type(exc).__name__}: {exc}"[:2000]}
+        # what failed, not the text of the numerical library inside (shapes, dimensions, paths): that is logged
+        return {"code": "numerical_failure", "message": NUMERICAL_FAILURE}
     return None

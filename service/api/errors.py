@@ -6,7 +6,9 @@ Every refusal has the body of :class:`service.schemas.ErrorOut`
 =====================================================  ======  ==========================================
 failure                                                status  code
 =====================================================  ======  ==========================================
-request body violates the schema                       422     ``validation_error`` (+ ``errors`` list)
+request body violates the schema                       422     ``validation_error`` (+ ``errors`` list; a key given
+                                                               twice in one object too: ``duplicate_key``)
+ragged list of lists (what JSON Schema cannot say)     422     ``invalid_parameter`` naming the field
 library ``ValueError`` family (bad input, ill-posed)   422     the exception's ``code``: ``invalid_parameter``,
                                                                ``unreachable_target``, ``straight_not_equilibrium``,
                                                                ``straight_unstable``, ``unsupported``
@@ -198,6 +200,12 @@ def segments_over_limit(errors: list[dict[str, Any]], max_segments: int | None) 
             "details": {"n": n, "max_segments": max_segments}}
 
 
+#: The request models' checks of what JSON Schema cannot state (nested lists of one length:
+#: :func:`service.schemas.common.same_lengths`): a body the document calls valid, so refused with the domain code of
+#: what the library refuses for the same reason, ``invalid_parameter`` on the field, not as a schema violation.
+UNSTATED = frozenset({"ragged"})
+
+
 def validation_body(errors: list[dict[str, Any]]) -> dict[str, Any]:
     items = []
     for e in errors:
@@ -210,6 +218,10 @@ def validation_body(errors: list[dict[str, Any]]) -> dict[str, Any]:
     if not items:
         items = [{"field": "body", "message": "invalid request", "type": "value_error"}]
     first = items[0]
+    if all(item["type"] in UNSTATED for item in items):
+        # valid by the document, refused as the library refuses what JSON Schema cannot say
+        return {"code": "invalid_parameter", "message": f"{first['field']}: {first['message']}",
+                "field": first["field"]}
     more = f" (and {len(items) - 1} more)" if len(items) > 1 else ""
     return {"code": "validation_error", "message": f"{first['field']}: {first['message']}{more}",
             "field": first["field"], "errors": items}

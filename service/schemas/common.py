@@ -1,5 +1,6 @@
-"""What every resource's models share: the input bounds, the strict integer and the bounded number types, the
-chain and segment inputs, ranges, the tip force, the solver report and the error body.
+"""What every resource's models share: the input bounds, the strict integer and the bounded number types, nested
+lists of one length (matrices, steps of per-segment values), the chain and segment inputs, ranges, the tip force, the
+solver report and the error body.
 
 Imports nothing from its sibling modules (they all import it).
 """
@@ -8,7 +9,8 @@ from __future__ import annotations
 
 from typing import Annotated, Any, Union
 
-from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
+from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
+from pydantic_core import PydanticCustomError
 
 from ..config import HARD_MAX_SEGMENTS
 
@@ -77,6 +79,34 @@ def _pair_of(item: Any, what: str) -> Any:
 
 StiffPair = _pair_of(Stiff, "spring stiffness k (force / length)")
 LengthPair = _pair_of(Length, "spring rest length L0 (length units)")
+
+
+# ---------------------------------------------------------------------------- nested lists
+def same_lengths(items: list[Any]) -> list[Any]:
+    """``items`` unchanged when every one of them that is a list has the length of the first such list: the rows
+    of a matrix, the per-segment lists of every step, the list bounds of a pair. JSON Schema cannot say it (a
+    ragged nested list reaches numpy as an "inhomogeneous shape"): refused here, naming the first odd row."""
+    first: tuple[int, int] | None = None
+    for i, item in enumerate(items):
+        if not isinstance(item, list):
+            continue
+        if first is None:
+            first = (i, len(item))
+        elif len(item) != first[1]:
+            raise PydanticCustomError(
+                "ragged", "the lists must all have one length: item {first} has {expected} entries, item {index} "
+                          "has {actual}", {"first": first[0], "expected": first[1], "index": i, "actual": len(item)})
+    return items
+
+
+#: A list of lists of one length (``Annotated[list[Row], Field(...), OneLength]``; ragged: 422 on the field).
+OneLength = AfterValidator(same_lengths)
+
+
+def rectangular(row: Any, **field: Any) -> Any:
+    """A list of ``row`` lists all of one length (a matrix, or one per-segment list per step); ``field``: the
+    outer list's ``Field`` arguments (``min_length``, ``max_length``, ``description`` ...)."""
+    return Annotated[list[row], Field(**field), OneLength]
 
 
 # ---------------------------------------------------------------------------- manipulator

@@ -38,6 +38,7 @@ from .common import (
     SolverInfo,
     integral,
     outcome_model,
+    rectangular,
 )
 from .design import MAX_DESIGN_SEGMENTS, DesignManipulatorIn
 from .paths import StartQ
@@ -178,8 +179,8 @@ class _SimulationFields(BaseModel):
     model_config = ConfigDict(strict=True, extra="forbid")
 
     manipulator: ManipulatorIn
-    preloads: list[Annotated[list[Annotated[list[Length], Field(min_length=2, max_length=2)]],
-                             Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]] | None = Field(
+    preloads: rectangular(Annotated[list[Annotated[list[Length], Field(min_length=2, max_length=2)]],
+                                    Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]) | None = Field(
         None, min_length=1, max_length=MAX_STEPS,
         description="the rest lengths [L1_0, L2_0] of every segment at each sample, (K, n, 2) (length units); "
                     "default the chain's own, constant")
@@ -290,8 +291,8 @@ def _sigma_form(v: Any) -> str:
 SigmaIn = Annotated[
     Union[Annotated[Sigma, Tag("<number>")],
           Annotated[list[Sigma], Field(min_length=1, max_length=HARD_MAX_SEGMENTS), Tag("<vector>")],
-          Annotated[list[Annotated[list[CovarianceEntry], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]],
-                    Field(min_length=1, max_length=HARD_MAX_SEGMENTS), Tag("<matrix>")]],
+          Annotated[rectangular(Annotated[list[CovarianceEntry], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)],
+                                min_length=1, max_length=HARD_MAX_SEGMENTS), Tag("<matrix>")]],
     Discriminator(_sigma_form),
     Field(description="angle noise: one standard deviation for every joint (rad, > 0), one per joint (n, or k: the "
                       "measured ones), or a covariance matrix (rad^2; n x n or k x k, symmetric positive "

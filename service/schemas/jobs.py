@@ -27,7 +27,7 @@ from pydantic import (
 )
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import Deflection, ForceValue, Length, SegmentIn, Stiff, integral
+from .common import Deflection, ForceValue, Length, OneLength, SegmentIn, Stiff, integral
 
 __all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "SweepManipulator", "SweepUniformManipulator",
            "SweepSegmentedManipulator", "JobCreated", "JobSummary", "JobOut", "JobResults",
@@ -148,7 +148,7 @@ class SweepPoint(BaseModel):
 
 Finite = Annotated[float, Field(allow_inf_nan=False)]
 BoundValue = Union[Finite, Annotated[list[Finite], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]]
-BoundPair = Annotated[list[BoundValue], Field(min_length=2, max_length=2)]
+BoundPair = Annotated[list[BoundValue], Field(min_length=2, max_length=2), OneLength]
 TotalLength = Union[Literal[True], Annotated[float, Field(gt=0, allow_inf_nan=False)]]
 
 

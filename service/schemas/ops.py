@@ -79,7 +79,8 @@ class Limits(BaseModel):
 class KernelsOut(BaseModel):
     """How the compiled Newton kernels run in this server process (`tensegrity_opt.numerics.kernels`)."""
 
-    compiler: str | None = Field(description="the C compiler used; null: none (kernels run in CasADi's VM)")
+    compiler: str | None = Field(description="the C compiler used, by name and version (e.g. cc 12.2.0); null: "
+                                             "none (kernels run in CasADi's VM)")
     max_segments: int = Field(description="chains up to this long have kernels")
     compiled: list[int] = Field(description="chain lengths loaded as compiled code so far")
     virtual_machine: list[int] = Field(description="chain lengths running in CasADi's virtual machine "

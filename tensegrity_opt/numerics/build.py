@@ -40,11 +40,12 @@ import threading
 import warnings
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from functools import lru_cache
 from pathlib import Path
 
 import casadi as ca
 
-__all__ = ["COMPILED", "VIRTUAL_MACHINE", "Loaded", "load", "libraries", "cache_dir", "compiler",
+__all__ = ["COMPILED", "VIRTUAL_MACHINE", "Loaded", "load", "libraries", "cache_dir", "compiler", "compiler_name",
            "compile_in_background", "in_background", "pending", "schedule", "wait_built"]
 
 #: How loaded Functions run.
@@ -170,6 +171,26 @@ def compiler() -> str | None:
         if path:
             return path
     return None
+
+
+def compiler_name() -> str | None:
+    """The C compiler used by name and version (``"cc 12.2.0"``), not where it is installed; ``None``: none."""
+    path = compiler()
+    return None if path is None else _name_and_version(path)
+
+
+@lru_cache(maxsize=8)
+def _name_and_version(path: str) -> str:
+    name = Path(path).name
+    for flag in ("-dumpfullversion", "-dumpversion"):          # gcc knows both, clang the second
+        try:
+            out = subprocess.run([path, flag], capture_output=True, text=True, timeout=10, check=False)
+        except (OSError, subprocess.SubprocessError):
+            break
+        version = out.stdout.strip().splitlines()[0] if out.returncode == 0 and out.stdout.strip() else ""
+        if version and len(version) <= 40 and "/" not in version:
+            return f"{name} {version}"
+    return name
 
 
 def libraries() -> dict[str, str]:

@@ -74,6 +74,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import HomotopyUnavailableError, SolverError
+from ..model.combinations import combinations
 from ..model.manipulator import Manipulator
 from ..model.segment import clean_coefficients
 from .distinct import distinct
@@ -449,8 +450,7 @@ def rest_points_at(m: Manipulator, target, *, tol: float = 1e-9) -> np.ndarray:
     angles = [seg.critical_points() for seg in m.segments]
     if any(a.size == 0 for a in angles):
         return np.zeros((0, m.n))
-    grids = np.meshgrid(*angles, indexing="ij")
-    Q = np.stack([g.ravel() for g in grids], axis=1)
+    Q = combinations(angles)
     phi = np.cumsum(Q, axis=1)
     l = m.link_lengths
     tips = np.column_stack([m.base_length + (np.cos(phi) * l).sum(axis=1), (np.sin(phi) * l).sum(axis=1)])

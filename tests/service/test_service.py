@@ -344,13 +344,26 @@ def test_health_ready_version(client):
     v = client.get("/version").json()
     assert v["version"] == to.__version__ and v["library_version"] == to.__version__
     from tensegrity_opt.numerics import kernels
+    from tensegrity_opt.numerics.build import compiler_name
     assert v["limits"]["inline_max_segments"] == 8
     client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.1})      # loads the n = 4 kernels
     k = client.get("/version").json()["kernels"]
-    assert k["compiler"] == kernels.compiler() and k["max_segments"] == kernels.KERNEL_MAX
+    assert k["compiler"] == compiler_name() and k["max_segments"] == kernels.KERNEL_MAX
     assert 4 in (k["compiled"] if kernels.compiler() else k["virtual_machine"])
     assert v["limits"]["max_segments"] == 200 and v["limits"]["max_batch"] == 1000
     assert v["auth"] is False
+
+
+def test_version_names_the_compiler_not_where_it_is(client, monkeypatch):
+    # a compiler installed under a private path: /version gives its name (and version), never the path
+    from tensegrity_opt.numerics import build, kernels
+    private = "/opt/private-toolchain/secret/bin/cc"
+    monkeypatch.setattr(build, "compiler", lambda: private)
+    monkeypatch.setattr(kernels, "compiler", lambda: private)
+    r = client.get("/version")
+    assert r.status_code == 200
+    assert "private-toolchain" not in r.text and "/bin/" not in r.text, r.text
+    assert r.json()["kernels"]["compiler"].split()[0] == "cc"
 
 
 def test_readyz_before_startup():

@@ -77,3 +77,22 @@ def test_an_internal_numerical_failure_is_a_500(client, monkeypatch):
     r = client.post("/v1/buckling", json={"manipulator": PAPER})
     assert r.status_code == 500 and r.json()["code"] == "numerical_failure", r.text
     assert compute.buckling_task is not broken
+
+
+def test_a_500_says_what_failed_not_the_numerical_library_text(client, monkeypatch, caplog):
+    # numpy's own words (shapes, dimensions) stay in the server's log; the body says what failed
+    inside = ("setting an array element with a sequence. The requested array has an inhomogeneous shape after 1 "
+              "dimensions. The detected shape was (4,) + inhomogeneous part.")
+
+    def broken(req):
+        raise ValueError(inside)
+
+    monkeypatch.setattr("service.api.routes.buckling.buckling_task", broken)
+    with caplog.at_level("ERROR", logger="service.errors"):
+        r = client.post("/v1/buckling", json={"manipulator": PAPER})
+    assert r.status_code == 500, r.text
+    body = r.json()
+    assert body["code"] == "numerical_failure" and "failed numerically" in body["message"], body
+    assert "inhomogeneous" not in r.text and "ValueError" not in r.text, r.text
+    assert set(body) <= {"code", "message", "field", "status", "errors", "details", "best"}
+    assert any("inhomogeneous" in rec.getMessage() for rec in caplog.records), "the detail goes to the log"

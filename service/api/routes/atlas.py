@@ -16,9 +16,10 @@ from ...schemas.atlas import ATLAS_CHAIN, ATLAS_REQUEST_EXAMPLE
 from ...tasks.paths import find_atlas
 from ..deps import SettingsDep, check_atlas_targets, check_homotopy, check_manipulator, path_deadline
 from ..dispatch import Placement, run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import ATLAS_LIMITS, solve_responses
 
-router = APIRouter(prefix="/v1", tags=["atlas"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1", tags=["atlas"])
 
 @router.post(
     "/atlas", operation_id="stability_atlas", response_model=s.AtlasOut,

@@ -12,9 +12,10 @@ from ... import schemas as s
 from ...tasks.equilibria import batch_task
 from ..deps import SettingsDep, check_batch, check_manipulator
 from ..dispatch import Placement, run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["batch"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1", tags=["batch"])
 
 
 @router.post(

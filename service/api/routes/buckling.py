@@ -11,9 +11,10 @@ from ... import schemas as s
 from ...tasks.equilibria import buckling_task
 from ..deps import SettingsDep, check_manipulator
 from ..dispatch import run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["buckling"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1", tags=["buckling"])
 
 
 @router.post(

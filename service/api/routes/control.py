@@ -18,11 +18,12 @@ from ...adapters.fields import LOAD_CAPACITY_ALIASES
 from ...tasks.control import find_plan, find_simulation, force_estimate_task, load_capacity_task, stiffness_design_task
 from ..deps import SettingsDep, check_manipulator, check_plan, check_simulation, path_deadline, placement, steps_field
 from ..dispatch import Placement, run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import PLAN_LIMITS, SIMULATION_LIMITS, solve_responses
 
 __all__ = ["router"]
 
-router = APIRouter(prefix="/v1/control", tags=["control"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1/control", tags=["control"])
 
 _M = ex.PAPER_CHAIN
 

@@ -12,9 +12,10 @@ from ...adapters.inputs import segment_count
 from ...tasks.equilibria import force_deflection_task
 from ..deps import SettingsDep, check_curve_size, check_manipulator, placement
 from ..dispatch import run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["curves"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1", tags=["curves"])
 
 
 @router.post(

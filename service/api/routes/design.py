@@ -14,9 +14,10 @@ from ...tasks.control import design_critical_force_task, preloads_for_load_task,
 from ..deps import SettingsDep, check_manipulator
 from ..dispatch import Placement, run_task
 from ..errors import ServiceError
+from ..json_bodies import JSONBodyRoute
 from ..openapi import solve_responses
 
-router = APIRouter(prefix="/v1/design", tags=["design"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1/design", tags=["design"])
 
 _INFEASIBLE = ("design_infeasible",)
 

@@ -13,9 +13,10 @@ from ...config import Settings
 from ...tasks.equilibria import equilibria_task, equilibrium_task, force_equilibrium_task
 from ..deps import SettingsDep, check_homotopy, check_manipulator, placement
 from ..dispatch import run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["equilibrium"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1", tags=["equilibrium"])
 
 _M = ex.PAPER_CHAIN
 

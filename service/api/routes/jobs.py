@@ -39,8 +39,9 @@ from ...tasks.plots import FIGURE_ANALYSIS
 from ..deps import Owner, Runner, SettingsDep, finished_atlas_job, path_deadline
 from ..dispatch import Placement, run_task
 from ..errors import ServiceError
+from ..json_bodies import JSONBodyRoute
 
-router = APIRouter(prefix="/v1/jobs", tags=["jobs"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1/jobs", tags=["jobs"])
 log = logging.getLogger("service.jobs")
 
 _NOT_FOUND = {"code": "not_found", "message": "no job with id '0123456789abcdef0123456789abcdef'", "field": "id"}

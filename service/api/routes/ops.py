@@ -15,6 +15,7 @@ from starlette.responses import Response
 
 import tensegrity_opt
 from tensegrity_opt.numerics import kernels
+from tensegrity_opt.numerics.build import compiler_name
 
 from ... import schemas as s
 from ...responses import render_json
@@ -41,7 +42,7 @@ METRICS_EXAMPLE = ("# HELP tensegrity_http_requests_total HTTP requests answered
                    "max_trajectory_steps": 2000, "max_grid": s.MAX_GRID,
                    "max_torque_points": s.MAX_TORQUE_POINTS, "max_stream_connections": 16,
                    "stream_idle_timeout": 60.0},
-        "kernels": {"compiler": "/usr/bin/cc", "max_segments": 8, "compiled": [4], "virtual_machine": [],
+        "kernels": {"compiler": "cc 12.2.0", "max_segments": 8, "compiled": [4], "virtual_machine": [],
                     "building": [5, 6]}}}}},
                **error_responses(401)})
 async def version(request: Request) -> Response:
@@ -69,8 +70,8 @@ def version_body(request: Request) -> dict[str, Any]:
                        "max_grid": s.MAX_GRID, "max_torque_points": s.MAX_TORQUE_POINTS,
                        "max_stream_connections": st.max_stream_connections,
                        "stream_idle_timeout": st.stream_idle_timeout},
-            "kernels": {key: k[key] for key in ("compiler", "max_segments", "compiled", "virtual_machine",
-                                                "building")}}
+            "kernels": {"compiler": compiler_name(),
+                        **{key: k[key] for key in ("max_segments", "compiled", "virtual_machine", "building")}}}
 
 
 @router.get(

@@ -19,9 +19,10 @@ from ...tasks.paths import (
 )
 from ..deps import SettingsDep, check_homotopy, check_manipulator, check_path, path_deadline, placement
 from ..dispatch import Placement, run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import solve_responses
 
-router = APIRouter(prefix="/v1", tags=["paths"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1", tags=["paths"])
 
 _M = ex.PAPER_CHAIN
 _STRAIGHT = {"q": [0.0, 0.0, 0.0, 0.0]}

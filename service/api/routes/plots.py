@@ -50,11 +50,12 @@ from ..deps import (
     placement,
 )
 from ..dispatch import Placement, run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import ATLAS_LIMITS, PLAN_LIMITS, SIMULATION_LIMITS, SOLVE_ERRORS, error_responses
 
 __all__ = ["router", "negotiate", "image_responses", "Figure", "FIGURES", "register", "job_route", "timeout_hint"]
 
-router = APIRouter(prefix="/v1/plots", tags=["plots"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1/plots", tags=["plots"])
 
 MEDIA = {"png": "image/png", "svg": "image/svg+xml"}
 

@@ -11,9 +11,10 @@ from ... import schemas as s
 from ...adapters.fields import FieldContext
 from ...tasks.equilibria import segment_torque_task
 from ..dispatch import run_task
+from ..json_bodies import JSONBodyRoute
 from ..openapi import error_responses, ok_response
 
-router = APIRouter(prefix="/v1", tags=["segment"])
+router = APIRouter(route_class=JSONBodyRoute, prefix="/v1", tags=["segment"])
 
 
 @router.post(

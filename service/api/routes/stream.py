@@ -33,6 +33,7 @@ from ...responses import render_json
 from ...sessions import Session, open_session, step_task
 from ..deps import api_key_valid, check_manipulator, origin_allowed
 from ..errors import ServiceError, error_body, error_response, validation_body
+from ..json_bodies import duplicate_key_error
 
 __all__ = ["router", "CLOSE_NORMAL", "CLOSE_IDLE", "CLOSE_POLICY", "CLOSE_TRY_LATER", "CLOSE_UNAUTHORIZED",
            "PATH"]
@@ -96,6 +97,10 @@ class _Stream:
         """Answer one client message; the close code and reason when the connection must end."""
         self.seq += 1
         seq = self.seq
+        duplicate = duplicate_key_error(data)
+        if duplicate is not None:               # a key twice: refused as in a REST body (an open: closed)
+            await self.send_error(validation_body([duplicate]), seq)
+            return None if self.session is not None else (CLOSE_POLICY, "open refused: validation_error")
         if self.session is not None:
             try:
                 msg = self.step_model.model_validate_json(data)

@@ -38,6 +38,7 @@ from functools import lru_cache
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
+from ...model.combinations import combination_count, combination_indices, combinations
 from ...model.manipulator import Manipulator
 from ...numerics import LocalResult, chain_solver, distinct
 from ...outcome import SolverInfo
@@ -147,25 +148,6 @@ def _order(V: np.ndarray, Q: np.ndarray, scale: float) -> np.ndarray:
 
 
 # ----------------------------------------------------------------------------- F = 0: the exact product
-def _product_count(pts: list[np.ndarray]) -> int:
-    return math.prod(len(p) for p in pts)
-
-
-def _index_product(sizes) -> np.ndarray:
-    """Every index combination ``(i_1, ..., i_n)``, ``0 <= i_j < sizes[j]``, as rows, the first index varying
-    slowest (``numpy.meshgrid(..., indexing="ij")`` raveled, without its limit of 64 dimensions)."""
-    idx = np.zeros((1, 0), dtype=np.intp)
-    for size in sizes:
-        idx = np.column_stack([np.repeat(idx, size, axis=0), np.tile(np.arange(size, dtype=np.intp), idx.shape[0])])
-    return idx
-
-
-def _product(pts: list[np.ndarray]) -> np.ndarray:
-    """The Cartesian product of the angle sets ``pts`` as rows ``(count, n)``."""
-    idx = _index_product([p.size for p in pts])
-    return np.column_stack([p[idx[:, j]] for j, p in enumerate(pts)]).reshape(idx.shape[0], len(pts))
-
-
 def _exact_set(m: Manipulator, stable_only: bool) -> EquilibriumSet:
     segs = _segment_points(m)
     kinds = [_factor_kind(m, d2) for _, d2, _ in segs]
@@ -182,7 +164,7 @@ def _exact_set(m: Manipulator, stable_only: bool) -> EquilibriumSet:
     if count == 0:
         return EquilibriumSet([], method="exact", status="exact",
                               message=f"{product}, empty: a segment has none inside its range")
-    sel = _index_product([p.size for p in pick])                   # (count, n) indices into pick
+    sel = combination_indices([p.size for p in pick])              # (count, n) indices into pick
     idx = np.column_stack([pick[j][sel[:, j]] for j in range(m.n)])
     cols = range(m.n)
     Q = np.column_stack([segs[j][0][idx[:, j]] for j in cols])
@@ -233,8 +215,8 @@ def _patterns(pts: list[np.ndarray], cap: int, seed: int) -> np.ndarray:
     the all-first, all-last and a fixed-seed random sample (``cap`` rows in all)."""
     if any(p.size == 0 for p in pts):
         return np.zeros((0, len(pts)))
-    if _product_count(pts) <= cap:
-        return _product(pts)
+    if combination_count(pts) <= cap:
+        return combinations(pts)
     rng = np.random.default_rng(seed + len(pts))
     rows = [[p[0] for p in pts], [p[-1] for p in pts]]
     rows += [[p[int(rng.integers(p.size))] for p in pts] for _ in range(cap - 2)]

@@ -25,6 +25,7 @@ from functools import lru_cache
 import numpy as np
 
 from ...errors import TensegrityError
+from ...model.combinations import combination_count, combinations
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from ...numerics import distinct_rows
@@ -201,12 +202,8 @@ def _pattern_matrix(m: Manipulator, hilltops: bool, cap: int, rng_seed: int) -> 
         wells, tops = s.critical_angles()
         pts = list(wells) + (list(tops) if hilltops else [])
         choices.append(pts or [0.0])
-    total = 1
-    for c in choices:
-        total *= len(c)
-    if total <= cap:
-        grids = np.meshgrid(*choices, indexing="ij")
-        return np.stack([g.ravel() for g in grids], axis=1)
+    if combination_count(choices) <= cap:
+        return combinations(choices)
     rng = np.random.default_rng(rng_seed + m.n)
     rows = [[c[0] for c in choices], [c[-1] for c in choices]]
     for _ in range(cap - 2):

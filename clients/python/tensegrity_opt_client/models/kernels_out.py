@@ -17,7 +17,8 @@ class KernelsOut:
 
     Attributes:
         compiled (list[int]): chain lengths loaded as compiled code so far
-        compiler (None | str): the C compiler used; null: none (kernels run in CasADi's VM)
+        compiler (None | str): the C compiler used, by name and version (e.g. cc 12.2.0); null: none (kernels run in
+            CasADi's VM)
         max_segments (int): chains up to this long have kernels
         virtual_machine (list[int]): chain lengths running in CasADi's virtual machine (no compiler, or compiling
             failed: about 4x slower)
