@@ -32,6 +32,8 @@ RAGGED: dict[tuple[str, str], tuple[dict[str, Any], str]] = {
         {"manipulator": CHAIN, "preloads": [[[1.0, 1.0]] * 4, [[1.1, 0.9]] * 3]}, "preloads"),
     ("/v1/plots/simulation", "preloads"): (
         {"manipulator": CHAIN, "preloads": [[[1.0, 1.0]] * 4, [[1.1, 0.9]] * 3]}, "preloads"),
+    ("/v1/plots/simulation/job", "preloads"): (
+        {"manipulator": CHAIN, "preloads": [[[1.0, 1.0]] * 4, [[1.1, 0.9]] * 3]}, "preloads"),
     ("/v1/jobs", "options.bounds.*"): (
         {"analysis": "design", "manipulator": CHAIN, "grid": {"k": [1.0]},
          "options": {"vary": ["k"], "bounds": {"k": [[0.2] * 4, [5.0] * 3]}}}, "options.bounds.k"),
