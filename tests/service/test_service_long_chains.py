@@ -107,7 +107,11 @@ def test_the_table_has_every_operation_taking_a_chain():
     taking = {path for path, ops in doc["paths"].items() for op in ops.values()
               if _takes_chain(op.get("requestBody", {}).get("content", {}).get("application/json", {})
                               .get("schema", {}), components)}
-    assert taking == set(_bodies(4, {"n": 4})), "add a body to _bodies for each new operation taking a chain"
+    # a figure's job form takes the figure's own body (tests/service/test_figure_jobs.py): the figure stands for it
+    figures_as_jobs = {path for path in taking if path.startswith("/v1/plots/") and path.endswith("/job")}
+    assert {path.removesuffix("/job") for path in figures_as_jobs} <= taking
+    assert taking - figures_as_jobs == set(_bodies(4, {"n": 4})), \
+        "add a body to _bodies for each new operation taking a chain"
 
 
 @pytest.fixture(scope="module")
