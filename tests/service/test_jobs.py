@@ -539,11 +539,20 @@ def test_retention_deletes_old_finished_jobs_at_start(tmp_path):
 
 
 @pytest.mark.slow
-def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_path):
+def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_path, monkeypatch):
     """Two runners (as two servers) share the file: a job runs in one at a time; a cancel through the other
     stops it; a runner that stops renewing loses the job to the other, which finishes it, and the first
-    stops once it sees the lost lease (storing nothing meanwhile)."""
+    stops once it sees the lost lease (storing nothing meanwhile). From its third point on, the second job waits
+    for the test's word (however fast the machine computes, the job cannot end before the takeover is seen)."""
     db = tmp_path / "jobs.sqlite3"
+    gate = threading.Event()
+    real = jobs_runner.solve_chunk
+
+    def solve(header, pcols, rcols, items):
+        if items[0][0] >= 2:                  # patched once the first job has stopped: the second job's points
+            gate.wait(WAIT_SECONDS)
+        return real(header, pcols, rcols, items)
+
     a = _runner(db)
     b = _runner(db)
     try:
@@ -557,6 +566,7 @@ def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_pa
         assert a.get(job_id)["done"] == n and b.points_computed == 0
 
         spec = quick_spec(20)
+        monkeypatch.setattr(jobs_runner, "solve_chunk", solve)
         job_id = a.submit(spec)["id"]
         _wait(lambda: job_id in a.running_here() + b.running_here() and a.get(job_id)["done"] >= 2)
         first, second = (a, b) if a.running_here() == [job_id] else (b, a)
@@ -564,6 +574,7 @@ def test_two_runners_on_one_file_one_runs_a_job_cancel_and_takeover_cross(tmp_pa
         renew = first.store.renew
         first.store.renew = lambda *args: True                # a hung server: no renewal
         _wait(lambda: second.running_here() == [job_id], what="the other runner takes the job over")
+        gate.set()
         first.store.renew = renew
         _wait(lambda: first.running_here() == [], what="the first runner stops")
         _wait(lambda: b.get(job_id)["status"] == "done")
