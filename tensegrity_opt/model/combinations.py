@@ -14,7 +14,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-__all__ = ["combination_count", "combination_indices", "combinations"]
+__all__ = ["combination_count", "combination_indices", "combinations", "sample_combinations"]
 
 
 def combination_count(choices: Sequence[Sequence[float] | np.ndarray]) -> int:
@@ -40,3 +40,17 @@ def combinations(choices: Sequence[Sequence[float] | np.ndarray]) -> np.ndarray:
     if not cols:
         return np.zeros((1, 0))
     return np.column_stack([c[idx[:, j]] for j, c in enumerate(cols)]).reshape(idx.shape[0], len(cols))
+
+
+def sample_combinations(choices: Sequence[Sequence[float] | np.ndarray], cap: int, seed: int) -> np.ndarray:
+    """Every combination (:func:`combinations`) while there are at most ``cap``, else ``cap`` rows: all joints at
+    their first choice, all at their last, and a random sample drawn with ``seed`` (the same rows for the same
+    seed); ``(0, n)`` when a joint has no choice."""
+    if any(len(c) == 0 for c in choices):
+        return np.zeros((0, len(choices)))
+    if combination_count(choices) <= cap:
+        return combinations(choices)
+    rng = np.random.default_rng(seed)
+    rows = [[c[0] for c in choices], [c[-1] for c in choices]]
+    rows += [[c[int(rng.integers(len(c)))] for c in choices] for _ in range(cap - 2)]
+    return np.array(rows, dtype=float)

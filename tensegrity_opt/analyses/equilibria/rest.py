@@ -38,7 +38,7 @@ from functools import lru_cache
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
-from ...model.combinations import combination_count, combination_indices, combinations
+from ...model.combinations import combination_indices, sample_combinations
 from ...model.manipulator import Manipulator
 from ...numerics import LocalResult, chain_solver, distinct
 from ...outcome import SolverInfo
@@ -211,16 +211,8 @@ def _phi_hessian_eigenvalues(D2: np.ndarray, chunk: int = 4096) -> list[np.ndarr
 
 # ----------------------------------------------------------------------------- F != 0: the search
 def _patterns(pts: list[np.ndarray], cap: int, seed: int) -> np.ndarray:
-    """Configurations of one unloaded critical point per segment: every combination up to ``cap``, else
-    the all-first, all-last and a fixed-seed random sample (``cap`` rows in all)."""
-    if any(p.size == 0 for p in pts):
-        return np.zeros((0, len(pts)))
-    if combination_count(pts) <= cap:
-        return combinations(pts)
-    rng = np.random.default_rng(seed + len(pts))
-    rows = [[p[0] for p in pts], [p[-1] for p in pts]]
-    rows += [[p[int(rng.integers(p.size))] for p in pts] for _ in range(cap - 2)]
-    return np.array(rows)
+    """Configurations of one unloaded critical point per segment (:func:`.combinations.sample_combinations`)."""
+    return sample_combinations(pts, cap, seed + len(pts))
 
 
 def _mode_starts(m: Manipulator) -> np.ndarray:

@@ -25,7 +25,7 @@ from functools import lru_cache
 import numpy as np
 
 from ...errors import TensegrityError
-from ...model.combinations import combination_count, combinations
+from ...model.combinations import sample_combinations
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from ...numerics import distinct_rows
@@ -202,13 +202,7 @@ def _pattern_matrix(m: Manipulator, hilltops: bool, cap: int, rng_seed: int) -> 
         wells, tops = s.critical_angles()
         pts = list(wells) + (list(tops) if hilltops else [])
         choices.append(pts or [0.0])
-    if combination_count(choices) <= cap:
-        return combinations(choices)
-    rng = np.random.default_rng(rng_seed + m.n)
-    rows = [[c[0] for c in choices], [c[-1] for c in choices]]
-    for _ in range(cap - 2):
-        rows.append([c[int(rng.integers(len(c)))] for c in choices])
-    return np.array(rows)
+    return sample_combinations(choices, cap, rng_seed + m.n)
 
 
 def project_to_target(m: Manipulator, Q: np.ndarray, target: np.ndarray, *, iters: int = 30,
