@@ -112,9 +112,9 @@ def render(spec: dict[str, Any]) -> str:
              f"{info.get('version', '')}, OpenAPI {spec.get('openapi', '')}; `tensegrity-opt openapi` prints it). "
              f"The running server serves the same document interactively at `/docs` (Swagger UI) and `/redoc`, "
              f"from installed packages.", "",
-             info.get("description", "").strip(), "",
-             "OpenAPI does not describe the WebSocket `/v1/control/stream`: its protocol is the guide "
-             "[The control stream](stream.md).", "",
+             # the description's own paragraph on the WebSocket, linked to its guide (said once)
+             info.get("description", "").strip().replace("`docs/stream.md`", "[The control stream](stream.md)"),
+             "",
              "## Operations", "", "| method | path | summary |", "|---|---|---|"]
     for m, p, op in ops:
         lines.append(f"| {m.upper()} | [`{p}`](#{_anchor(m, p)}) | {_cell(op.get('summary', ''))} |")

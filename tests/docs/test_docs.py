@@ -74,3 +74,11 @@ def test_the_readme_figure_examples_are_valid_bodies():
         formats.add(fmt)
         json.loads(body)
     assert formats == {"png", "svg"}
+
+
+def test_getting_started_code_lines_fit_the_page():
+    """The first page a user reads: its commands and examples fit a code block's width without wrapping."""
+    page = (ROOT / "docs" / "getting-started.md").read_text(encoding="utf-8")
+    long = [line for block in re.findall(r"```[a-z]*\n(.*?)```", page, re.S) for line in block.splitlines()
+            if len(line) > 88]
+    assert not long, long

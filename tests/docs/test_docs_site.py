@@ -67,6 +67,20 @@ def test_http_api_page_has_every_operation(site):
             assert f"{status}" in plain
 
 
+def test_http_api_page_says_its_websocket_paragraph_once_with_the_guide_linked(site):
+    page = (site / "http-api.html").read_text(encoding="utf-8")
+    intro = page[page.index("<h1"):page.index('id="operations"')]          # the page's text before its table
+    assert re.sub(r"<[^>]+>", "", html.unescape(intro)).count("/v1/control/stream") == 1
+    assert 'href="stream.html"' in intro
+
+
+def test_code_blocks_wrap_instead_of_scrolling_off_the_page(site):
+    page = (site / "getting-started.html").read_text(encoding="utf-8")
+    (css,) = re.findall(r'href="(stylesheets/[^"]+\.css)"', page)
+    rules = (site / css).read_text(encoding="utf-8")
+    assert re.search(r"pre\s*>\s*code\s*\{[^}]*white-space:\s*pre-wrap", rules)
+
+
 def test_analysis_pages_show_the_spec_examples_and_figures(site):
     text = html.unescape(re.sub(r"<[^>]+>", "", (site / "analyses.html").read_text(encoding="utf-8")))
     assert "<!-- http:" not in text

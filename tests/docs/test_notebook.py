@@ -38,7 +38,8 @@ def _page_commands() -> list[list[str]]:
     """The shell commands of the page's bash block, as argument lists (comments dropped)."""
     block = re.search(r"```bash\n(.*?)```", PAGE.read_text(), re.S)
     assert block, "docs/notebook.md has no bash block with the commands"
-    return [shlex.split(line, comments=True) for line in block.group(1).splitlines() if line.strip()]
+    lines = block.group(1).replace("\\\n", " ").splitlines()           # continuation lines joined
+    return [cmd for cmd in (shlex.split(line, comments=True) for line in lines) if cmd]
 
 
 def test_committed_without_outputs():
