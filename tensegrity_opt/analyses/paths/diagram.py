@@ -101,7 +101,8 @@ def bifurcation_diagram(m: Manipulator, start=None, control: Control | str = "lo
                         max_branches: int = 24, timeout: float | None = None, **kw) -> list[Branch]:
     """Every branch connected to the start through branch points, to ``depth`` switches.
 
-    The start's branch is traced both ways (``t`` increasing, then decreasing); at each branch point
+    The start's branch is traced both ways (``t`` increasing, then decreasing; at a singular start, the branches
+    through it, :func:`branches_from`); at each branch point
     both sides of the bifurcating branch are traced (:func:`switch_branch`), recursively. A branch
     point met again on a later branch (the same point, within ``1e-6`` scaled) is not switched twice.
     Keywords as :func:`trace_branch` (``t_max``, ``t_min``, ``max_points``, ...; the control's own).
@@ -109,19 +110,21 @@ def bifurcation_diagram(m: Manipulator, start=None, control: Control | str = "lo
     Returns
     -------
     list of Branch
-        The start's two halves first (``t`` up, ``t`` down), then the switched branches breadth-first;
+        The start's two halves first (``t`` up, ``t`` down; at the straight chain held at full reach its
+        buckled arms), then the switched branches breadth-first;
         at most ``max_branches``.
     """
     if isinstance(depth, bool) or not isinstance(depth, (int, np.integer)) or depth < 0:
         raise InvalidParameterError(f"depth must be an integer >= 0, got {depth!r}", field="depth")
     trace_kw = {k: kw.pop(k) for k in ("t_max", "t_min", "max_points", "step", "max_step", "min_step") if k in kw}
     with time_limit(timeout):
-        up = trace_branch(m, start, control, orientation=1, **trace_kw, **kw)
-        branches = [up]
+        branches = branches_from(m, start, control, orientation=1, **trace_kw, **kw)
         try:
-            branches.append(trace_branch(m, start, control, orientation=-1, **trace_kw, **kw))
+            branches += branches_from(m, start, control, orientation=-1, **trace_kw, **kw)
         except TensegrityError:
             pass
+        if not branches:
+            raise NoEquilibriumError("no branch leaves the start under this control", status="no_branch")
         seen: list[np.ndarray] = []
         frontier = [(b, 0) for b in branches]
         while frontier and len(branches) < max_branches:
