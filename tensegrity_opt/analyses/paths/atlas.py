@@ -20,6 +20,10 @@ is lost):
   branch at each trial. Where the two branches never share a point with equal energy, the least branch
   ended first: the switch is at that branch end (``method="branch_end"``).
 
+The straight chain held at full reach (``dx = dy = 0`` on a symmetric chain) is a branch point of the held tip
+(the buckling): its edges follow the buckled arms through it (:func:`~.diagram.branches_from`). An edge whose
+continuation fails is listed in ``unresolved`` with the reason in the atlas's words; the rest is kept.
+
 A crossing is a point on one grid edge; :meth:`StabilityAtlas.curves` joins the crossings of one kind
 inside each grid cell into segments (two per cell, or nearest pairs), the curves of the figure.
 
