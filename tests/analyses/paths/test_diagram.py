@@ -61,9 +61,9 @@ def test_bifurcation_diagram_two_segment_guided():
 def test_the_straight_chain_held_at_full_reach_leaves_by_its_buckled_arms():
     """The straight chain held at dx = dy = 0 is the held tip's branch point: its reaction along the chain is free
     and the tip moves in only once the chain buckles, at the guided critical load (the paper's buckling)."""
-    import tensegrity_opt as to
     from reference_model import Chain, critical_loads_guided
 
+    import tensegrity_opt as to
     from tensegrity_opt.analyses.paths.control import Control
     from tensegrity_opt.analyses.paths.diagram import branches_from
     from tensegrity_opt.errors import SingularStartError
