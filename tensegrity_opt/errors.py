@@ -16,6 +16,7 @@ from __future__ import annotations
 __all__ = [
     "TensegrityError",
     "InvalidParameterError",
+    "SingularStartError",
     "UnreachableTargetError",
     "StraightNotEquilibriumError",
     "UnstableStraightError",
@@ -54,6 +55,11 @@ class InvalidParameterError(TensegrityError, ValueError):
     """A model parameter or argument is invalid (non-finite, non-positive, wrong shape...)."""
 
     code = "invalid_parameter"
+
+
+class SingularStartError(InvalidParameterError):
+    """The start of a continuation is a singular point of its path (a fold or a branch point): the control
+    parameter has no single direction of increase there (``field="start"``, code ``invalid_parameter``)."""
 
 
 class UnreachableTargetError(TensegrityError, ValueError):

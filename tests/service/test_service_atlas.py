@@ -57,6 +57,15 @@ def test_targets_beyond_reach_are_in_the_answer_with_zero_counts(client):
     assert got["least_energy"][1] == [None] and got["n_stable"] == [[2], [0]] and got["status"] == "complete"
 
 
+
+def test_an_atlas_through_the_straight_chain_is_complete(client):
+    """The paper's chain held straight at dx = dy = 0 (where it buckles) is one target of the grid like any other."""
+    r = client.post("/v1/atlas", json={"manipulator": {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1},
+                                       "dx": {"start": 0, "stop": 1, "num": 3}, "dy": [0.0, 0.1, 0.2]})
+    assert r.status_code == 200, r.text
+    got = r.json()
+    assert got["status"] == "complete" and got["unresolved"] == [] and got["n_stable"][0] == [1, 2, 2], got["message"]
+
 def wait_done(client, job_id, timeout=WAIT_SECONDS):
     deadline = time.monotonic() + timeout
     while True:

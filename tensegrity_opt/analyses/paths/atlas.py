@@ -20,6 +20,10 @@ is lost):
   branch at each trial. Where the two branches never share a point with equal energy, the least branch
   ended first: the switch is at that branch end (``method="branch_end"``).
 
+The straight chain held at full reach (``dx = dy = 0`` on a symmetric chain) is a branch point of the held tip
+(the buckling): its edges follow the buckled arms through it (:func:`~.diagram.branches_from`). An edge whose
+continuation fails is listed in ``unresolved`` with the reason in the atlas's words; the rest is kept.
+
 A crossing is a point on one grid edge; :meth:`StabilityAtlas.curves` joins the crossings of one kind
 inside each grid cell into segments (two per cell, or nearest pairs), the curves of the figure.
 
@@ -40,7 +44,14 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.optimize as so
 
-from ...errors import InvalidParameterError, SolverError, TensegrityError, TimeLimitError, UnreachableTargetError
+from ...errors import (
+    InvalidParameterError,
+    SingularStartError,
+    SolverError,
+    TensegrityError,
+    TimeLimitError,
+    UnreachableTargetError,
+)
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX, chain_solver
 from ...numerics.homotopy import homotopy_available
@@ -49,8 +60,9 @@ from ...serialize import nullable, number, numbers
 from ...timelimit import expired, remaining, time_limit
 from ..equilibria.all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, find_equilibria
 from ..equilibria.equilibrium import Equilibrium, make_equilibrium
-from .branches import Branch, trace_branch
+from .branches import Branch
 from .control import Control
+from .diagram import branches_from
 
 __all__ = ["StabilityAtlas", "AtlasTarget", "AtlasCrossing", "stability_atlas", "atlas_target", "assemble_atlas",
            "MAX_TARGETS", "CROSSING_KINDS"]
@@ -579,6 +591,10 @@ def _edges(m: Manipulator, X: np.ndarray, Y: np.ndarray, T: list, crossings: lis
                     continue
                 try:
                     crossings.extend(_edge(m, A, B, ((i, j), (i2, j2))))
+                except TimeLimitError:
+                    raise
+                except TensegrityError as exc:               # an edge that fails costs that edge only
+                    unresolved.append((((i, j), (i2, j2)), f"the edge could not be analysed: {exc.message}"))
                 except _EdgeFailed as exc:
                     unresolved.append((((i, j), (i2, j2)), str(exc)))
 
@@ -597,17 +613,49 @@ class _Path:
     start_side: str        # "A" or "B"
 
 
-def _trace_edge(m: Manipulator, eq: Equilibrium, vec: np.ndarray, length: float, side: str) -> _Path:
+def _trace_edge(m: Manipulator, eq: Equilibrium, vec: np.ndarray, length: float, side: str,
+                where: tuple) -> list[_Path]:
+    """The stable branches leaving ``eq`` along the edge: one, or at the straight chain held at full reach (a
+    branch point, where the chain buckles) the arms crossing there (:func:`branches_from`); none when the tip
+    cannot move that way (the edge of the workspace)."""
     scale = 2.0 * float(np.mean(m.b))
     h = min(0.02, 0.25 * length / scale)
     direction = vec if side == "A" else -vec
-    br = trace_branch(m, eq, Control.displacement(direction), t_max=length, stop_at="stability_loss",
-                      step=h, max_step=max(h, 0.5 * length / scale), max_points=400)
-    if not br.success:
-        raise _EdgeFailed(f"continuation from {side} ended with {br.status}: {br.message}")
-    u = br.t if side == "A" else length - br.t
-    reached = br.status == "t_max" and bool(br.stable[-1])
-    return _Path(br, u, reached, side)
+    try:
+        brs = branches_from(m, eq, Control.displacement(direction), t_max=length, stop_at="stability_loss",
+                            step=h, max_step=max(h, 0.5 * length / scale), max_points=400)
+    except TimeLimitError:
+        raise
+    except TensegrityError as exc:
+        raise _EdgeFailed(f"{_follow(eq, where)}: {_plain(exc)}") from None
+    paths = []
+    for br in brs:
+        if not br.success:
+            raise _EdgeFailed(f"{_follow(eq, where)}: {_BRANCH_ENDS.get(br.status, br.message)}")
+        u = br.t if side == "A" else length - br.t
+        reached = br.status == "t_max" and bool(br.stable[-1])
+        paths.append(_Path(br, u, reached, side))
+    return paths
+
+
+#: The atlas's words for a continuation that ended without an answer (:attr:`Branch.STATUSES`).
+_BRANCH_ENDS = {
+    "step_too_small": "the branch could not be followed past a singular point on the edge (a finer grid may help)",
+    "corrector_failed": "the branch could not be followed along the edge (a finer grid may help)",
+    "time_limit": "the time limit ran out",
+}
+
+
+def _follow(eq: Equilibrium, where: tuple) -> str:
+    (dx, dy), (dx2, dy2) = where
+    return f"the stable equilibrium {eq.signs} at (dx, dy) = ({dx:g}, {dy:g}) could not be followed towards " \
+           f"({dx2:g}, {dy2:g})"
+
+
+def _plain(exc: TensegrityError) -> str:
+    if isinstance(exc, SingularStartError):
+        return "it is a fold or a branch point of the held tip's paths (a finer or shifted grid may help)"
+    return exc.message
 
 
 def _match(q: np.ndarray, stable: list) -> int | None:
@@ -623,15 +671,19 @@ def _edge(m: Manipulator, A: AtlasTarget, B: AtlasTarget, edge: tuple) -> list[A
     length = float(np.linalg.norm(vec))
     unit = vec / length
     out: list[AtlasCrossing] = []
-    fwd = [_trace_edge(m, e, unit, length, "A") for e in A.stable]
-    reached_B = {}
-    for k, p in enumerate(fwd):
-        if p.reached:
-            jb = _match(p.branch.q[-1], B.stable)
-            if jb is not None:
-                reached_B[jb] = k
-    back = {jb: _trace_edge(m, e, unit, length, "B") for jb, e in enumerate(B.stable) if jb not in reached_B}
-    for p in [*fwd, *back.values()]:
+    ab, ba = ((A.dx, A.dy), (B.dx, B.dy)), ((B.dx, B.dy), (A.dx, A.dy))
+    # every stable branch from A (the arms of a branch point count for their equilibrium: fwd[k] the first)
+    arms = {k: _trace_edge(m, e, unit, length, "A", ab) for k, e in enumerate(A.stable)}
+    reached_B, reaching = {}, {}
+    for k, ps in arms.items():
+        for p in ps:
+            if p.reached:
+                jb = _match(p.branch.q[-1], B.stable)
+                if jb is not None and jb not in reached_B:
+                    reached_B[jb], reaching[jb] = k, p
+    back = {jb: _trace_edge(m, e, unit, length, "B", ba) for jb, e in enumerate(B.stable) if jb not in reached_B}
+    fwd = [ps[0] if ps else None for ps in arms.values()]
+    for p in [*(p for ps in arms.values() for p in ps), *(p for ps in back.values() for p in ps)]:
         if p.reached:
             continue
         ev = next((e for e in p.branch.events if e.stability == "lost" or e.kind == "joint_limit"), None)
@@ -649,7 +701,9 @@ def _edge(m: Manipulator, A: AtlasTarget, B: AtlasTarget, edge: tuple) -> list[A
         if len(least_A) > 1 or len(least_B) > 1:
             return out                                   # a tie at an end: the switch is that target (_ties)
         P = fwd[0]                                       # A's least-energy branch
-        Q = fwd[reached_B[0]] if 0 in reached_B else back[0]
+        Q = reaching[0] if 0 in reaching else (back[0][0] if back[0] else None)
+        if P is None or Q is None:                       # a branch that cannot leave its end: no shared stretch
+            return out
         sw = _switch(m, P, Q, a, unit, length, edge)
         if sw is not None:
             out.append(sw)

@@ -355,6 +355,13 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         if not ok:
             h *= 0.5
             if h < min_step:
+                if len(pts) == 1 and prob.held_rows.shape[0] == 2 and _tip_rank(a) < SINGULAR_TIP:
+                    # the held tip starts on the edge of its workspace (the straight chain at full reach) and
+                    # cannot move this way: it would have to leave the workspace
+                    status = "workspace_boundary"
+                    message = ("the held tip starts at the edge of its workspace (the chain is straight) and cannot "
+                               "move in this direction")
+                    break
                 status = "step_too_small" if y is not None else "corrector_failed"
                 message = (f"the step fell below min_step = {min_step:g} at t = {a.x[at_t]:.6g}: the branch could not "
                            "be continued (a singular point the corrector cannot pass, or a cusp)")

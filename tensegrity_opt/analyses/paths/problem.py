@@ -20,13 +20,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...errors import InvalidParameterError
+from ...errors import InvalidParameterError, SingularStartError
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX
 from ...numerics.path_system import control_vector, path_system
 from .control import Control
 
-__all__ = ["PathProblem", "PathPoint", "path_point", "LIMIT_MARGIN", "NEWTON_TOL", "NEWTON_ITER", "EIG_REL_TOL"]
+__all__ = ["PathProblem", "PathPoint", "path_point", "LIMIT_MARGIN", "NEWTON_TOL", "NEWTON_ITER", "EIG_REL_TOL",
+           "SINGULAR_START"]
 
 #: A point is on a joint limit at ``|q_i| >= (1 - LIMIT_MARGIN) (pi - 2 beta_i)``: the branch ends there.
 LIMIT_MARGIN = 1e-6
@@ -37,6 +38,8 @@ NEWTON_ITER = 12
 #: Relative eigenvalue tolerance of the stability classification (as
 #: :mod:`tensegrity_opt.analyses.equilibria.stability`).
 EIG_REL_TOL = 1e-9
+#: A start whose unit tangent (scaled) has a ``t`` component below this is singular: t has no direction there.
+SINGULAR_START = 1e-10
 
 
 class PathProblem:
@@ -202,10 +205,12 @@ class PathProblem:
         if prev is not None:
             return v if v @ prev >= 0 else -v
         at_t = self.point["t"]
-        if abs(v[at_t]) < 1e-10:
-            raise InvalidParameterError("the start is a singular point of the branch (a fold or a branch point): "
-                                        "the direction of increasing t is not defined; start nearby",
-                                        field="start")
+        if abs(v[at_t]) < SINGULAR_START:
+            raise SingularStartError(
+                "start is a singular point of its path under this control (a fold or a branch point; "
+                "e.g. the straight chain with its tip held at full reach, where it buckles): the path has no single "
+                "direction in which t grows there. Start from an equilibrium nearby, or use the bifurcation diagram "
+                "(its branches through the point)", field="start")
         return v if v[at_t] * sign > 0 else -v
 
     # -------------------------------------------------------------- classification

@@ -86,7 +86,8 @@ def _atlas(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) ->
     t = atlas_target(m, point.get("dx", 0.0), point.get("dy", 0.0), method=opts.get("method", "search"),
                      strict=True)
     return {"reachable": t.reachable, "count": t.count, "n_stable": t.n_stable, "n_saddle": t.n_saddle,
-            "n_maximum": t.n_maximum, "least_energy": nullable(t.least_energy), "least_signs": t.least_signs,
+            "n_maximum": t.n_maximum, "least_energy": None if t.least_energy is None else nullable(t.least_energy),
+            "least_signs": t.least_signs,
             "tie": t.tie, "stable_energy": nullables([e.energy for e in t.stable]),
             "stable_q": nullables(np.concatenate([e.q for e in t.stable])) if t.stable else [],
             "certified": t.certified, "method": t.method}

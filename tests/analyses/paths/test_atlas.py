@@ -130,3 +130,80 @@ def test_certified_counts_agree_with_the_search():
     np.testing.assert_array_equal(h.count, s.count)
     np.testing.assert_array_equal(h.n_stable, s.n_stable)
     np.testing.assert_allclose(h.least_energy, s.least_energy, rtol=1e-10)
+
+
+# ------------------------------------------------------------------------------ the straight chain in the grid
+#: The paper's chain and a grid through the straight chain (dx = 0, dy = 0: held at full reach, where it buckles).
+PAPER = to.Manipulator.uniform(4, 1.0, 1.0, 1.0, 1.0)
+STRAIGHT_DX, STRAIGHT_DY = [0.0, 0.5, 1.0], [0.0, 0.1, 0.2]
+#: Words of the continuation engine that mean nothing to the atlas's user.
+INTERNAL_WORDS = ("increasing t", "start nearby", "min_step", "corrector", "singular point of the branch")
+
+
+def reference_minima(chain: Chain, dx: float, dy: float, n_starts: int) -> list[np.ndarray]:
+    """The distinct strict constrained local minima (scipy SLSQP from many starts, the reference model)."""
+    rng = np.random.default_rng(7)
+    target = chain.target(dx, dy)
+    found: list[np.ndarray] = []
+    for _ in range(n_starts):
+        r = chain.local_min(target, rng.uniform(-0.9, 0.9, chain.n) * chain.limits)
+        if r is not None and not any(np.max(np.abs(r[0] - q)) < 1e-6 for q in found):
+            found.append(r[0])
+    return found
+
+
+def same_configurations(got, want) -> bool:
+    return len(got) == len(want) and all(any(np.max(np.abs(g - w)) < 1e-6 for w in want) for g in got)
+
+
+def check_straight_column(at) -> None:
+    """dx = 0: the straight chain alone at dy = 0 (the only shape reaching that far), beyond reach above it."""
+    t00 = at.targets[0][0]
+    assert t00.status == "solved" and t00.n_stable == 1 and np.allclose(t00.stable[0].q, 0.0, atol=1e-12)
+    assert t00.stable[0].energy == pytest.approx(ref_chain(PAPER).energy(np.zeros(4)), rel=1e-12)
+    assert all(not row[0].reachable and row[0].status == "unreachable" for row in at.targets[1:])
+
+
+def test_an_atlas_through_the_straight_chain_is_complete_and_says_nothing_internal():
+    at = stability_atlas(PAPER, STRAIGHT_DX, STRAIGHT_DY)
+    assert at.status == "complete" and at.unresolved == () and at.success, at.message
+    text = str(at.to_dict())
+    assert not [w for w in INTERNAL_WORDS if w in text]
+    assert at.n_stable.tolist() == [[1, 2, 2], [0, 2, 2], [0, 2, 2]]
+    check_straight_column(at)
+    # the straight chain continues into both mirror-image buckled shapes at dx = 0.5: no switch on that edge,
+    # the tie at (0.5, 0) is the switch (the symmetry line)
+    assert not [c for c in at.crossings if c.edge == ((0, 0), (1, 0))]
+    assert any(c.edge == ((1, 0), (1, 0)) and c.method == "tie" for c in at.switches)
+    chain = ref_chain(PAPER)
+    t = at.targets[0][1]                                  # (0.5, 0): the two mirror-image buckled shapes
+    assert same_configurations([e.q for e in t.stable], reference_minima(chain, 0.5, 0.0, 40))
+
+
+@pytest.mark.slow
+def test_every_target_of_the_atlas_through_the_straight_chain_has_the_reference_minima():
+    at = stability_atlas(PAPER, STRAIGHT_DX, STRAIGHT_DY)
+    check_straight_column(at)
+    chain = ref_chain(PAPER)
+    for row in at.targets:
+        for t in row[1:]:
+            want = reference_minima(chain, t.dx, t.dy, 150)
+            assert same_configurations([e.q for e in t.stable], want), (t.dx, t.dy)
+            eqs = to.find_equilibria(PAPER, t.dx, t.dy)
+            assert same_configurations([e.q for e in t.stable], [e.q for e in eqs if e.stable])
+
+
+def test_an_edge_whose_continuation_fails_is_unresolved_in_the_atlas_words_and_the_rest_is_kept(monkeypatch):
+    import tensegrity_opt.analyses.paths.atlas as atlas_module
+    from tensegrity_opt.errors import SingularStartError
+
+    def singular(*args, **kwargs):
+        raise SingularStartError("start is a singular point of its path", field="start")
+
+    monkeypatch.setattr(atlas_module, "branches_from", singular)
+    at = stability_atlas(PAPER, [0.5, 1.0], [0.0, 0.1])
+    assert at.status == "partial" and len(at.unresolved) == 4
+    assert at.n_stable.tolist() == [[2, 2], [2, 2]] and len(at.switches) == 2      # the targets and the ties
+    for _, reason in at.unresolved:
+        assert reason.startswith("the stable equilibrium ") and "fold or a branch point" in reason, reason
+    assert "4 edge(s) unresolved" in at.message

@@ -55,3 +55,39 @@ def test_bifurcation_diagram_two_segment_guided():
             bent += 1
             assert br.t[0] == pytest.approx(P[0], abs=0.05) and np.max(np.abs(br.q[0])) < 0.1
     assert bent >= 1
+
+
+# ------------------------------------------------------------------------ a singular start: the straight chain
+def test_the_straight_chain_held_at_full_reach_leaves_by_its_buckled_arms():
+    """The straight chain held at dx = dy = 0 is the held tip's branch point: its reaction along the chain is free
+    and the tip moves in only once the chain buckles, at the guided critical load (the paper's buckling)."""
+    from reference_model import Chain, critical_loads_guided
+
+    import tensegrity_opt as to
+    from tensegrity_opt.analyses.paths.control import Control
+    from tensegrity_opt.analyses.paths.diagram import branches_from
+    from tensegrity_opt.errors import SingularStartError
+
+    m = to.Manipulator.uniform(4, 1.0, 1.0, 1.0, 1.0)
+    chain = Chain.uniform(4, 1.0, 1.0, 1.0, 1.0)
+    p_cr = critical_loads_guided(chain)[0]
+    assert p_cr == pytest.approx(0.572793, abs=1e-6)                # conventions.md, the paper's Fx0
+    straight, inward = np.zeros(4), Control.displacement((1.0, 0.0))
+    with pytest.raises(SingularStartError, match="singular point") as exc:
+        to.trace_branch(m, straight, inward, t_max=0.5)
+    assert isinstance(exc.value, ValueError) and exc.value.field == "start"
+    assert "start nearby" not in str(exc.value) and "not defined" not in str(exc.value)
+    arms = branches_from(m, straight, inward, t_max=0.5, stop_at="stability_loss")
+    assert len(arms) == 2
+    for arm in arms:
+        assert arm.status == "t_max" and arm.t[-1] == pytest.approx(0.5) and arm.stable[1:].all()
+        np.testing.assert_allclose(arm.force[0], [-p_cr, 0.0], atol=1e-7)
+        np.testing.assert_allclose(arm.q[0], 0.0, atol=1e-12)
+        ref = chain.local_min(chain.target(0.5, 0.0), arm.q[-1] + 0.01)          # the reference minimum there
+        np.testing.assert_allclose(arm.q[-1], ref[0], atol=1e-7)
+    np.testing.assert_allclose(arms[0].q[-1], -arms[1].q[-1], atol=1e-9)         # mirror images
+    assert branches_from(m, straight, inward, orientation=-1, t_max=0.5) == []   # outward: beyond reach
+    sideways = to.trace_branch(m, straight, Control.displacement((0.0, 1.0)), t_max=0.5)
+    assert sideways.status == "workspace_boundary" and sideways.success and len(sideways) == 1
+    diagram = bifurcation_diagram(m, straight, "displacement", t_max=0.5)
+    assert len(diagram) == 2 and all(b.force[0][0] == pytest.approx(-p_cr, abs=1e-7) for b in diagram)

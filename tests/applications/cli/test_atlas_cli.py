@@ -96,3 +96,10 @@ def test_every_atlas_option_has_help_and_its_default(capsys):
     out = " ".join(capsys.readouterr().out.split())
     assert "--dx START STOP NUM" in out and "(default: search)" in out and "--no-edges" in out
     assert "(default: [0.1, 1.3, 5])" in out and "(length" in out
+
+
+def test_an_atlas_grid_through_the_straight_chain_runs_to_the_end(capsys):
+    """The paper's chain (the default) on a grid whose corner holds it straight at full reach (a branch point)."""
+    assert main(["atlas", "--dx", "0", "1", "3", "--dy", "0", "0.2", "3"]) == 0, capsys.readouterr().err
+    out = capsys.readouterr().out
+    assert "status complete" in out and "increasing t" not in out and "start nearby" not in out

@@ -55,3 +55,16 @@ def test_sweep_spec_with_segments_refuses_varying_the_chain():
     with pytest.raises(to.InvalidParameterError) as e:
         sweeps.atlas_from_rows({"analysis": "atlas", "grid": {"dx": [0.1], "k": [1.0]}}, [])
     assert e.value.field == "grid"
+
+
+def test_an_atlas_sweep_through_the_straight_chain_keeps_the_targets_beyond_reach():
+    """dx = 0 holds the paper's chain straight at dy = 0 and is beyond reach above it: every row is computed (the
+    rows beyond reach have no least energy) and the rows assemble to the complete atlas."""
+    spec = {"analysis": "atlas", "manipulator": {"n": 4, "a": 1, "b": 1, "k": 1, "L0": 1},
+            "grid": {"dx": [0.0, 0.5], "dy": [0.0, 0.1]}}
+    res = sweeps.sweep(spec)
+    assert not res.errors
+    at = sweeps.atlas_from_rows(spec, res.rows)
+    assert at.status == "complete", at.message
+    direct = stability_atlas(to.Manipulator.uniform(4, 1.0, 1.0, 1.0, 1.0), [0.0, 0.5], [0.0, 0.1])
+    assert at.n_stable.tolist() == direct.n_stable.tolist() == [[1, 2], [0, 2]]
