@@ -19,6 +19,7 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.linalg as sla
 
+from ...bounds import bound_pair
 from ...errors import (
     InfeasibleDesignError,
     InvalidParameterError,
@@ -183,14 +184,14 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
     vary : iterable of {"a", "b", "k", "L0"}
         The per-segment variables to optimise.
     bounds : dict, optional
-        ``{name: (lo, hi)}`` with numbers or per-segment arrays. Default for a varied
-        variable: ``(x0 / 10, 10 x0)``.
+        ``{name: (lo, hi)}`` (or ``{name: {"lo": lo, "hi": hi}}``, :func:`tensegrity_opt.bounds.bound_pair`)
+        with numbers or per-segment arrays. Default for a varied variable: ``(x0 / 10, 10 x0)``.
     budget : dict, optional
         ``{name: total}``: ``sum(name) <= total`` over the segments.
     boundary : {"guided", "free"}
     **constraints
         ``total_length`` (float, or ``True`` to keep the initial ``2 sum(b)``),
-        ``tension=(T_min, T_max)`` bounds on the spring preload ``k (2b - L0)`` at straight,
+        ``tension=(T_min, T_max)`` (or ``{"lo", "hi"}``) bounds on the spring preload ``k (2b - L0)`` at straight,
         ``K_min`` a lower bound on every joint stiffness ``K_i = k (b L0 - 2 (b^2 - a^2))``.
         Condition (4), ``K_i > 0``, is always imposed: as ``K_i >= K_min`` with ``K_min`` raised
         to at least the floor ``K_FLOOR_REL * max_i k_i (a_i^2 + b_i^2)`` (``1e-9`` times the
@@ -228,7 +229,7 @@ def _tension_bounds(tension) -> tuple[float, float]:
     if tension is None:
         return -_INF, _INF
     try:
-        tmin, tmax = (float(v) for v in tension)
+        tmin, tmax = (float(v) for v in bound_pair(tension, "tension"))
     except (TypeError, ValueError):
         raise InvalidParameterError("tension must be a pair (T_min, T_max) of numbers", field="tension") from None
     if math.isnan(tmin) or math.isnan(tmax) or tmin > tmax or tmin == _INF or tmax == -_INF:
@@ -270,7 +271,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
     lo, hi = {}, {}
     for name in DESIGN_VARIABLES:
         if name in vary:
-            blo, bhi = bounds.get(name, (x0[name] / 10.0, x0[name] * 10.0))
+            blo, bhi = bound_pair(bounds.get(name, (x0[name] / 10.0, x0[name] * 10.0)), f"bounds.{name}")
             lo[name] = _per_segment(blo, n, f"bounds.{name}")
             hi[name] = _per_segment(bhi, n, f"bounds.{name}")
             if np.any(lo[name] <= 0) or np.any(hi[name] < lo[name]):

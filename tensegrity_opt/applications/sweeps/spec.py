@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from ...bounds import bound_pair
 from ...errors import InvalidParameterError
 
 __all__ = ["ANALYSES", "PARAMETERS", "MANIPULATOR_PARAMETERS", "DEFAULT_MANIPULATOR", "DESIGN_VARIABLES",
@@ -105,6 +106,13 @@ def _value(name: str, v: Any, fld: str) -> Any:
     _fail(fld, f"unknown parameter; expected one of {', '.join(PARAMETERS)}")  # pragma: no cover
 
 
+def _spring_pair(name: str, v: Any, fld: str) -> list[float]:
+    """``k`` or ``L0`` of the base chain as the pair of its two springs ``[spring 1, spring 2]``."""
+    if len(v) != 2:
+        _fail(fld, "must be a number or the pair of the two springs")
+    return [_value(name, x, f"{fld}[{j}]") for j, x in enumerate(v)]
+
+
 def _check_name(name: Any, analysis: str, fld: str) -> None:
     if name not in PARAMETERS:
         _fail(fld, f"unknown parameter {name!r}; a sweep varies {', '.join(PARAMETERS)}")
@@ -155,14 +163,13 @@ def _options(analysis: str, raw: Any) -> dict[str, Any]:
     if "bounds" in raw:
         bounds = raw["bounds"]
         if not isinstance(bounds, Mapping):
-            _fail("options.bounds", "must be an object {name: [lo, hi]}")
+            _fail("options.bounds", "must be an object {name: [lo, hi] or {lo, hi}}")
         nb: dict[str, list[Any]] = {}
-        for name, pair in bounds.items():
+        for name, given in bounds.items():
             fld = f"options.bounds.{name}"
             if name not in DESIGN_VARIABLES:
                 _fail(fld, f"unknown design variable; expected one of {', '.join(DESIGN_VARIABLES)}")
-            if not isinstance(pair, (list, tuple)) or len(pair) != 2:
-                _fail(fld, "must be [lo, hi]")
+            pair = bound_pair(given, fld)
             side = []
             for j, s in enumerate(pair):
                 if isinstance(s, (list, tuple)):
@@ -182,11 +189,10 @@ def _options(analysis: str, raw: Any) -> dict[str, Any]:
         out["budget"] = {name: _finite(v, f"options.budget.{name}") for name, v in budget.items()}
     if "total_length" in raw:
         tl = raw["total_length"]
-        out["total_length"] = True if tl is True else _finite(tl, "options.total_length")
+        if tl is not False:
+            out["total_length"] = True if tl is True else _finite(tl, "options.total_length")
     if "tension" in raw:
-        t = raw["tension"]
-        if not isinstance(t, (list, tuple)) or len(t) != 2:
-            _fail("options.tension", "must be [T_min, T_max]")
+        t = bound_pair(raw["tension"], "options.tension")
         out["tension"] = [_finite(t[0], "options.tension[0]"), _finite(t[1], "options.tension[1]")]
     if "K_min" in raw:
         out["K_min"] = _finite(raw["K_min"], "options.K_min")
@@ -217,7 +223,10 @@ def _header(spec: Any) -> dict[str, Any]:
             if key not in MANIPULATOR_PARAMETERS:
                 _fail(f"manipulator.{key}", "unknown key; the base chain is {n, a, b, k, L0} (uniform) or "
                       "{segments: [{a, b, k, L0}, ...]}")
-            base[key] = _value(key, v, f"manipulator.{key}")
+            if key in ("k", "L0") and isinstance(v, (list, tuple)):
+                base[key] = _spring_pair(key, v, f"manipulator.{key}")
+            else:
+                base[key] = _value(key, v, f"manipulator.{key}")
     return {"analysis": analysis, "manipulator": base, "options": _options(analysis, spec.get("options"))}
 
 
