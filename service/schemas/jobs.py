@@ -32,7 +32,6 @@ from .common import (
     ForceValue,
     Length,
     LengthPair,
-    OneLength,
     SegmentIn,
     Stiff,
     StiffPair,
@@ -160,9 +159,8 @@ class SweepPoint(BaseModel):
 
 Finite = Annotated[float, Field(allow_inf_nan=False)]
 BoundValue = Union[Finite, Annotated[list[Finite], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]]
-BoundPair = Annotated[bounds_of(BoundValue, "SweepBoundsIn", "bounds (each side a number, or one per segment)",
-                                object_doc="Bounds {lo, hi}, each a number or one per segment (the object form of "
-                                           "[lo, hi])."), OneLength]
+BoundPair = bounds_of(BoundValue, "SweepBoundsIn", "bounds (each side a number, or one per segment)",
+                      object_doc="Bounds {lo, hi}, each a number or one per segment (the object form of [lo, hi]).")
 TensionPair = bounds_of(Finite, "SweepTensionIn", "[T_min, T_max] on the spring preloads at straight")
 
 
