@@ -230,3 +230,77 @@ def test_the_client_spells_every_field_as_the_json_does():
     assert ("L0", "L0") in pairs
     renamed = sorted({(name, attr) for name, attr in pairs if name != attr and attr != f"{name}_"})
     assert not renamed, f"client attributes spelled unlike their JSON names: {renamed}"
+
+
+# ---------------------------------------------------------------------------- the same bounds on every interface
+_CHAIN = {"n": 3, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+#: The bounds of ``k`` in each documented form: the library's tuple, the JSON array, the JSON object.
+_FORMS = {"pair": [0.2, 1.5], "object": {"lo": 0.2, "hi": 1.5}}
+_TENSION = {"pair": [-10.0, 10.0], "object": {"lo": -10.0, "hi": 10.0}}
+
+
+def _spec(form: str) -> dict:
+    return {"analysis": "design", "manipulator": _CHAIN, "grid": {"n": [3]},
+            "options": {"vary": ["k"], "bounds": {"k": _FORMS[form]}, "budget": {"k": 3.6},
+                        "tension": _TENSION[form]}}
+
+
+@pytest.fixture(scope="module")
+def api(tmp_path_factory):
+    from fastapi.testclient import TestClient
+    from service_helpers import service_settings
+
+    from service.main import create_app
+
+    db = tmp_path_factory.mktemp("vocabulary") / "jobs.sqlite3"
+    with TestClient(create_app(service_settings(inline_processes=0, jobs_db=str(db)))) as client:
+        yield client
+
+
+def _job_force(api, spec: dict) -> float:
+    import time
+
+    from service_helpers import WAIT_SECONDS
+
+    r = api.post("/v1/jobs", json=spec)
+    assert r.status_code in (200, 201, 202), r.text
+    job_id = r.json()["id"]
+    deadline = time.monotonic() + WAIT_SECONDS
+    while (job := api.get(f"/v1/jobs/{job_id}").json())["status"] in ("queued", "running"):
+        assert time.monotonic() < deadline, job
+        time.sleep(0.05)
+    assert job["status"] == "done", job
+    (row,) = job["results"]
+    assert row["error"] is None, row
+    return row["critical_force"]
+
+
+@pytest.mark.slow
+def test_the_same_bounds_in_every_form_give_the_same_design_everywhere(api, tmp_path):
+    """``bounds.k`` and ``tension`` as ``[lo, hi]`` and as ``{"lo", "hi"}``: the library, the REST operation, a job,
+    a sweep spec and the command line's sweep all take both and find one design."""
+    import tensegrity_opt as to
+    from tensegrity_opt.applications import sweeps
+    from tensegrity_opt.applications.cli import main as cli_main
+
+    m = to.Manipulator.uniform(3)
+    want = to.maximize_critical_force(m, ["k"], {"k": (0.2, 1.5)}, {"k": 3.6}, tension=(-10.0, 10.0)).critical_force
+    got = {}
+    for form in _FORMS:
+        got[f"library {form}"] = to.maximize_critical_force(m, ["k"], {"k": _FORMS[form]}, {"k": 3.6},
+                                                            tension=_TENSION[form]).critical_force
+        r = api.post("/v1/design/critical-force", json={"manipulator": _CHAIN, "vary": ["k"],
+                                                         "bounds": {"k": _FORMS[form]}, "budget": {"k": 3.6},
+                                                         "tension": _TENSION[form]})
+        assert r.status_code == 200, r.text
+        got[f"REST {form}"] = r.json()["critical_force"]
+        got[f"job {form}"] = _job_force(api, _spec(form))
+        got[f"sweep {form}"] = float(sweeps.sweep(_spec(form), scheduler="serial").rows[0]["critical_force"])
+        path, out = tmp_path / f"{form}.json", tmp_path / f"{form}-rows.json"
+        path.write_text(json.dumps(_spec(form)), encoding="utf-8")
+        assert cli_main(["sweep", str(path), "-o", str(out), "--scheduler", "serial"]) == 0
+        rows = json.loads(out.read_text(encoding="utf-8"))
+        got[f"CLI {form}"] = (rows["rows"] if isinstance(rows, dict) else rows)[0]["critical_force"]
+    assert want < 0
+    for where, value in got.items():
+        assert value == pytest.approx(want, rel=1e-6), (where, got)
