@@ -159,6 +159,20 @@ def _build(cols: Mapping[str, np.ndarray]) -> Manipulator:
     return Manipulator(Segment(a, b, k, L0) for a, b, k, L0 in zip(cols["a"], cols["b"], cols["k"], cols["L0"]))
 
 
+def _invalid_design(m: Manipulator, boundary: str, vary: Iterable[str], exc: TensegrityError,
+                    status: str) -> InfeasibleDesignError:
+    """The refusal of a design that is not a valid chain, saying whose fault it is: the input chain's, when it is
+    not valid itself (then ``field`` names its culprit), else the optimiser's."""
+    try:
+        critical_force(m, boundary)
+    except TensegrityError as given:
+        return InfeasibleDesignError(
+            f"the input chain is not a valid chain, and varying {', '.join(vary)} within the bounds did not make "
+            f"it one: {given}", field=given.field, status=status)
+    return InfeasibleDesignError(f"the optimiser's design is not a valid chain (the input chain is): {exc}",
+                                 status=status)
+
+
 def _multiplicity(loads: np.ndarray, rel: float = 1e-4) -> int:
     return int(np.sum(loads <= loads[0] * (1.0 + rel)))
 
@@ -335,7 +349,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
         m_opt = _build(cols)
         bk = critical_force(m_opt, boundary)
     except TensegrityError as exc:
-        raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
+        raise _invalid_design(m, boundary, vary, exc, res.status) from exc
     rows = nlp.rows(xv)
     viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
     solved = res.success and viol <= 1e-6

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from ...bounds import bound_pair
-from ...errors import InvalidParameterError
+from ...errors import InvalidParameterError, unknown_name
 
 __all__ = ["ANALYSES", "PARAMETERS", "MANIPULATOR_PARAMETERS", "DEFAULT_MANIPULATOR", "DESIGN_VARIABLES",
            "MAX_POINTS", "USES", "OPTIONS", "PARAMETER_TYPES", "RESULT_COLUMNS", "count_points", "validate_spec"]
@@ -115,7 +115,7 @@ def _spring_pair(name: str, v: Any, fld: str) -> list[float]:
 
 def _check_name(name: Any, analysis: str, fld: str) -> None:
     if name not in PARAMETERS:
-        _fail(fld, f"unknown parameter {name!r}; a sweep varies {', '.join(PARAMETERS)}")
+        _fail(fld, unknown_name(name, PARAMETERS, "parameter") + f" (a sweep varies {', '.join(PARAMETERS)})")
     if name not in USES[analysis]:
         _fail(fld, f"{name!r} is not used by analysis {analysis!r} (it uses {', '.join(USES[analysis])})")
 
@@ -134,7 +134,7 @@ def _options(analysis: str, raw: Any) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for key in raw:
         if key not in OPTIONS:
-            _fail(f"options.{key}", f"unknown option; expected one of {', '.join(OPTIONS)}")
+            _fail(f"options.{key}", unknown_name(key, OPTIONS, "option"))
         if analysis not in OPTIONS[key]:
             _fail(f"options.{key}", f"not used by analysis {analysis!r} (only by {', '.join(OPTIONS[key])})")
     if analysis in ("buckling", "design"):
@@ -205,7 +205,7 @@ def _header(spec: Any) -> dict[str, Any]:
         _fail("spec", f"a sweep spec is a JSON object, got {type(spec).__name__}")
     for key in spec:
         if key not in _TOP_KEYS:
-            _fail(str(key), f"unknown key; a sweep spec has {', '.join(_TOP_KEYS)}")
+            _fail(str(key), unknown_name(key, _TOP_KEYS, "key") + f" (a sweep spec has {', '.join(_TOP_KEYS)})")
     analysis = spec.get("analysis")
     if analysis is None:
         _fail("analysis", f"missing; one of {', '.join(ANALYSES)}")
@@ -221,8 +221,8 @@ def _header(spec: Any) -> dict[str, Any]:
         base = dict(DEFAULT_MANIPULATOR)
         for key, v in raw_m.items():
             if key not in MANIPULATOR_PARAMETERS:
-                _fail(f"manipulator.{key}", "unknown key; the base chain is {n, a, b, k, L0} (uniform) or "
-                      "{segments: [{a, b, k, L0}, ...]}")
+                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "segments"), "key")
+                      + " (the base chain is {n, a, b, k, L0} (uniform) or {segments: [{a, b, k, L0}, ...]})")
             if key in ("k", "L0") and isinstance(v, (list, tuple)):
                 base[key] = _spring_pair(key, v, f"manipulator.{key}")
             else:
@@ -248,7 +248,7 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
             _fail(fld, "must be an object {a, b, k, L0}")
         for key in sd:
             if key not in ("a", "b", "k", "L0"):
-                _fail(f"{fld}.{key}", "unknown key; a segment has a, b, k, L0")
+                _fail(f"{fld}.{key}", unknown_name(key, ("a", "b", "k", "L0"), "key") + " (a segment has a, b, k, L0)")
         norm: dict[str, Any] = {}
         for key in ("a", "b", "k", "L0"):
             v = sd.get(key, 1.0)
