@@ -12,7 +12,7 @@ and collects each field's *forms* (its JSON shapes: ``number``,
   occurrence of a name takes the same forms, or the name is in :data:`HOMONYMS` (two concepts, one word) or
   :data:`NARROWER` (a documented subset, with its reason).
 
-Conventions of the walk (each a form the vocabulary has on purpose, documented in ``docs/api.md``):
+Conventions of the walk (the forms the vocabulary has on purpose, README "The HTTP service"):
 ``map[X]`` (one ``X`` per name: ``bounds: {"k": X}``) is compared as ``X``; the values of a parameter (a job
 grid's lists, ``dx: [..] | {start, stop, num}``) are compared as the parameter; the parts of a value (``lo``,
 ``hi`` of bounds, ``start``, ``stop``, ``num`` of a range) are compared under their parent's name.
