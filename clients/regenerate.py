@@ -14,6 +14,9 @@ is given without them. openapi-python-client treats any security requirement as 
 (openapi-generators/openapi-python-client#1372) and would type such operations as taking an
 ``AuthenticatedClient`` only; without it they take ``Client | AuthenticatedClient``. Operations that
 require a key keep their requirement.
+
+The generated models then keep the JSON names of their fields (``L0``, ``K_min``, ``bounds_K``; the
+generator would write ``l0``, ``k_min``, ``bounds_k``): :func:`keep_json_names`.
 """
 
 from __future__ import annotations
@@ -146,6 +149,43 @@ def generate(output: Path, spec: Path = SPEC) -> None:
                               "--fail-on-warning"], cwd=tmp, env=env, capture_output=True, text=True, check=False)
     if run.returncode != 0 or not (output / "pyproject.toml").is_file():
         raise RuntimeError(f"openapi-python-client failed ({run.returncode}):\n{run.stdout}\n{run.stderr}")
+    keep_json_names(output / "tensegrity_opt_client" / "models")
+
+
+#: A model's ``field_dict["L0"] = l0``: the JSON name and the attribute the generator gave it.
+_FIELD = re.compile(r'field_dict\["(\w+)"\] = (\w+)$', re.MULTILINE)
+
+
+def keep_json_names(models: Path) -> list[tuple[str, str]]:
+    """Give every model attribute its JSON name where the generator changed only its case (``l0`` -> ``L0``,
+    ``k_min`` -> ``K_min``, ``bounds_k`` -> ``bounds_K``): one name for a parameter in the JSON, the library
+    and the client.
+
+    openapi-python-client (0.29) writes every property as ``snake_case(name)`` (its ``PythonIdentifier``);
+    its configuration renames classes and modules (``class_overrides``), never a field, and the schema has no
+    keyword it reads for one. So the generated modules are rewritten here: the attribute, its keyword argument,
+    its local variable and its docstring line (the word ``l0`` alone; ``_parse_l0`` and the like stay).
+
+    Parameters
+    ----------
+    models : Path
+        The generated ``models`` package.
+
+    Returns
+    -------
+    list of (str, str)
+        ``(generated, JSON name)`` pairs renamed, sorted.
+    """
+    renamed = set()
+    for path in sorted(models.glob("*.py")):
+        text = path.read_text(encoding="utf-8")
+        pairs = {(attr, name) for name, attr in _FIELD.findall(text) if name != attr and name.lower() == attr}
+        for attr, name in sorted(pairs):
+            text = re.sub(rf"\b{re.escape(attr)}\b", name, text)
+            renamed.add((attr, name))
+        if pairs:
+            path.write_text(text, encoding="utf-8")
+    return sorted(renamed)
 
 
 def main() -> int:

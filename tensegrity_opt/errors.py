@@ -13,6 +13,9 @@ result that came out non-finite where its JSON form promises a number (a bug, ra
 
 from __future__ import annotations
 
+import difflib
+from collections.abc import Iterable
+
 __all__ = [
     "TensegrityError",
     "InvalidParameterError",
@@ -27,6 +30,8 @@ __all__ = [
     "TimeLimitError",
     "HomotopyUnavailableError",
     "NonFiniteResult",
+    "nearest_name",
+    "unknown_name",
 ]
 
 
@@ -133,3 +138,25 @@ class NonFiniteResult(ArithmeticError):
     """
 
     code = "numerical_failure"
+
+
+def nearest_name(name: str, choices: Iterable[str]) -> str | None:
+    """The valid name ``name`` was most likely meant to be: the one equal to it but for case first (``dX`` ->
+    ``dx``), else the closest (:func:`difflib.get_close_matches`, case-insensitive); ``None`` when none is close."""
+    choices = [str(c) for c in choices]
+    same = [c for c in choices if c.lower() == str(name).lower()]
+    if same:
+        return same[0]
+    lowered = {c.lower(): c for c in choices}
+    close = difflib.get_close_matches(str(name).lower(), list(lowered), n=1, cutoff=0.6)
+    return lowered[close[0]] if close else None
+
+
+def unknown_name(name: str, choices: Iterable[str], what: str = "field") -> str:
+    """``"unknown field; did you mean dx?"`` (or ``"unknown field; expected one of a, b"`` when none is close): the
+    words every interface uses for a name it does not know."""
+    choices = list(choices)
+    guess = nearest_name(name, choices)
+    if guess is not None:
+        return f"unknown {what}; did you mean {guess}?"
+    return f"unknown {what}; expected one of {', '.join(choices)}" if choices else f"unknown {what}"

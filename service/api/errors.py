@@ -62,7 +62,7 @@ from starlette.exceptions import HTTPException as StarletteHTTPException
 from starlette.responses import JSONResponse
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
-from tensegrity_opt.errors import HomotopyUnavailableError, TensegrityError, TimeLimitError
+from tensegrity_opt.errors import HomotopyUnavailableError, TensegrityError, TimeLimitError, unknown_name
 
 from ..adapters.fields import FieldContext
 from ..adapters.refusals import refusal_body
@@ -74,7 +74,7 @@ from .middleware import allowed_methods
 log = logging.getLogger("service.errors")
 
 __all__ = ["ApiError", "ServiceError", "error_body", "to_api_error", "status_for", "install", "error_response",
-           "validation_body", "ShutdownAnswerMiddleware", "SHUTTING_DOWN", "raw_error_response"]
+           "validation_body", "field_names", "ShutdownAnswerMiddleware", "SHUTTING_DOWN", "raw_error_response"]
 
 
 class ServiceError(Exception):
@@ -206,7 +206,61 @@ def segments_over_limit(errors: list[dict[str, Any]], max_segments: int | None) 
 UNSTATED = frozenset({"ragged"})
 
 
-def validation_body(errors: list[dict[str, Any]]) -> dict[str, Any]:
+def _resolve(schema: dict[str, Any], defs: dict[str, Any]) -> dict[str, Any]:
+    while isinstance(schema, dict) and "$ref" in schema:
+        schema = defs.get(schema["$ref"].rsplit("/", 1)[-1], {})
+    return schema if isinstance(schema, dict) else {}
+
+
+def _forms(schema: dict[str, Any], defs: dict[str, Any]) -> list[dict[str, Any]]:
+    schema = _resolve(schema, defs)
+    alts = [a for key in ("anyOf", "oneOf", "allOf") for a in schema.get(key, ())]
+    return [f for a in alts for f in _forms(a, defs)] if alts else [schema]
+
+
+def field_names(schema: dict[str, Any], defs: dict[str, Any], loc: tuple[Any, ...] | list[Any]) -> list[str]:
+    """The names the object at ``loc`` (a validation error's location, ``body`` first) may have, by the JSON
+    schema ``schema`` of the body (``$ref``s into ``defs``; every alternative of a union), in schema order."""
+    parts = [p for p in loc if not (isinstance(p, str) and p.startswith("<") and p.endswith(">"))]
+    if parts and parts[0] == "body":
+        parts = parts[1:]
+    level = [schema]
+    for part in parts:
+        nxt = []
+        for form in (f for s in level for f in _forms(s, defs)):
+            if isinstance(part, int) and isinstance(form.get("items"), dict):
+                nxt.append(form["items"])
+            elif part in form.get("properties", {}):
+                nxt.append(form["properties"][part])
+            elif isinstance(form.get("additionalProperties"), dict):
+                nxt.append(form["additionalProperties"])
+        level = nxt
+    names: dict[str, None] = {}
+    for form in (f for s in level for f in _forms(s, defs)):
+        names.update(dict.fromkeys(form.get("properties", {})))
+    return list(names)
+
+
+def _unknown_first(items: list[dict[str, Any]], errors: list[dict[str, Any]], names: Any) -> list[dict[str, Any]]:
+    """The errors with a misspelt field (``extra_forbidden``) first, each saying so and naming the nearest valid
+    name (``dX: unknown field; did you mean dx?``); the others after, in their order."""
+    unknown, rest = [], []
+    for item, e in zip(items, errors, strict=True):
+        if item["type"] != "extra_forbidden":
+            rest.append(item)
+            continue
+        loc = tuple(e.get("loc", ()))
+        choices = names(loc[:-1]) if names is not None else []
+        unknown.append({**item, "message": unknown_name(str(loc[-1]) if loc else item["field"], choices)})
+    if unknown:
+        # a required field missing beside a misspelt one is the same mistake: the misspelling leads
+        return unknown + rest
+    return items
+
+
+def validation_body(errors: list[dict[str, Any]], names: Any = None) -> dict[str, Any]:
+    """The ``validation_error`` body of pydantic's ``errors``; ``names(loc)``: the valid names of the object at
+    ``loc`` (:func:`field_names`), for the nearest name to an unknown one."""
     items = []
     for e in errors:
         kind = str(e.get("type", "value_error"))
@@ -215,6 +269,8 @@ def validation_body(errors: list[dict[str, Any]]) -> dict[str, Any]:
             items.append({"field": "body", "message": f"invalid JSON: {reason}".rstrip(": "), "type": kind})
             continue
         items.append({"field": _loc_path(e.get("loc", ())), "message": str(e.get("msg", "invalid")), "type": kind})
+    if len(items) == len(errors):
+        items = _unknown_first(items, errors, names)
     if not items:
         items = [{"field": "body", "message": "invalid request", "type": "value_error"}]
     first = items[0]
@@ -271,6 +327,20 @@ ANSWERED = (ApiError, ServiceError, Saturated, SolveTimeout, JobsUnavailable, Te
             np.linalg.LinAlgError, ValueError, RuntimeError)
 
 
+def _body_names(request: Request) -> Any:
+    """``names(loc)`` of the request's route: the valid field names at ``loc`` by the OpenAPI document's body."""
+    route = request.scope.get("route")
+    if route is None or not hasattr(request.app, "openapi"):
+        return None
+    try:
+        doc = request.app.openapi()
+        body = doc["paths"][route.path][request.method.lower()]["requestBody"]["content"]["application/json"]["schema"]
+    except (KeyError, TypeError, AttributeError):
+        return None
+    defs = doc.get("components", {}).get("schemas", {})
+    return lambda loc: field_names(body, defs, loc)
+
+
 def install(app: FastAPI) -> None:
     """Register the exception handlers on ``app``."""
 
@@ -282,7 +352,7 @@ def install(app: FastAPI) -> None:
         if over is not None:
             _record_failure(request, "too_many_segments")
             return error_response(422, over)
-        body = validation_body(errors)
+        body = validation_body(errors, _body_names(request))
         _record_failure(request, "validation_error")
         ctype = request.headers.get("content-type", "")
         if body["field"] == "body" and "json" not in ctype.lower():

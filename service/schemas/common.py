@@ -109,6 +109,41 @@ def rectangular(row: Any, **field: Any) -> Any:
     return Annotated[list[row], Field(**field), OneLength]
 
 
+# ---------------------------------------------------------------------------- bounds
+def _bounds_form(v: Any) -> str:
+    return "<object>" if isinstance(v, (dict, BaseModel)) else "<pair>"
+
+
+def _as_pair(v: Any) -> list[Any]:
+    return [v.lo, v.hi] if isinstance(v, BaseModel) else list(v)
+
+
+def bounds_of(side: Any, name: str, what: str, *, object_doc: str | None = None) -> Any:
+    """Bounds on one quantity, in either form every interface takes: ``[lo, hi]`` (canonical: the library's
+    ``(lo, hi)``, the command line's ``LO HI``) or ``{"lo": lo, "hi": hi}`` (the object ``name``), each side a
+    ``side``; both come out as the list ``[lo, hi]`` (the library reads either: ``tensegrity_opt.bounds``), two
+    list sides of one length."""
+    from pydantic import create_model
+
+    obj = create_model(name, __config__=_STRICT, __doc__=object_doc or f"{what}: the object form of [lo, hi].",
+                       lo=(side, Field(description="lower bound")), hi=(side, Field(description="upper bound")))
+    return Annotated[
+        Union[
+            Annotated[list[side], Field(min_length=2, max_length=2), Tag("<pair>")],
+            Annotated[obj, Tag("<object>")],
+        ],
+        Discriminator(_bounds_form),
+        AfterValidator(_as_pair),
+        OneLength,
+        Field(description=f'{what}: [lo, hi] or {{"lo": lo, "hi": hi}}'),
+    ]
+
+
+#: ``total_length`` of a design: a length fixing ``2 sum(b)``, ``true`` to keep the initial one (``false``: free).
+TotalLength = Annotated[Union[bool, Annotated[float, Field(gt=0, le=MAX_LENGTH, allow_inf_nan=False)]], Field(
+    description="fix the total length 2 sum(b): a length, or true to keep the initial one (false: free)")]
+
+
 # ---------------------------------------------------------------------------- manipulator
 class SegmentIn(BaseModel):
     """One dual-triangle segment."""

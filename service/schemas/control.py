@@ -36,6 +36,7 @@ from .common import (
     Length,
     ManipulatorIn,
     SolverInfo,
+    bounds_of,
     integral,
     outcome_model,
     rectangular,
@@ -76,12 +77,12 @@ def _per_spring(item: Any, what: str) -> Any:
 
 
 # ---------------------------------------------------------------------------- plan
-class RestLengthBoundsIn(BaseModel):
-    """Actuator bounds on every rest length (length units)."""
-
-    model_config = _STRICT
-    lo: _per_spring(PositiveLength, "lower bound") = Field(description="lower bound (> 0): a number or 2n numbers")
-    hi: _per_spring(PositiveLength, "upper bound") = Field(description="upper bound (> lo): a number or 2n numbers")
+#: Actuator bounds on every rest length (length units): each side a number or 2n numbers.
+RestLengthBoundsIn = bounds_of(_per_spring(PositiveLength, "a side of the bounds"), "RestLengthBoundsIn",
+                               "actuator bounds on every rest length (length units; each side a number or 2n "
+                               "numbers, lo < hi)",
+                               object_doc="Actuator bounds {lo, hi} on every rest length (the object form of "
+                                          "[lo, hi]).")
 
 
 PlanLoads = Annotated[
@@ -356,8 +357,8 @@ __all__ = ["PlanRequest", "PlanOut", "RestLengthBoundsIn", "SimulationRequest", 
 
 # ---------------------------------------------------------------------------- stiffness shaping, load capacity
 Stiffness = Annotated[float, Field(ge=-MAX_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan=False)]
-StiffnessBound = Annotated[list[Stiffness | None], Field(min_length=2, max_length=2,
-                                                         description="[lo, hi]; null for an open side")]
+StiffnessBound = bounds_of(Stiffness | None, "StiffnessBoundIn", "bounds on a stiffness (force / length; null for "
+                                                                  "an open side)")
 
 
 class StiffnessBoundsIn(BaseModel):

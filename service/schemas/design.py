@@ -3,7 +3,7 @@ segments), the requests and the designed chain out."""
 
 from __future__ import annotations
 
-from typing import Annotated, Literal
+from typing import Annotated, Literal, Union
 
 from pydantic import BaseModel, Field
 
@@ -11,7 +11,6 @@ import tensegrity_opt as to
 
 from .common import (
     _STRICT,
-    MAX_LENGTH,
     MAX_STIFFNESS,
     Angle,
     Deflection,
@@ -20,8 +19,10 @@ from .common import (
     SegmentedManipulatorIn,
     SegmentIn,
     SolverInfo,
+    TotalLength,
     UniformManipulatorIn,
     _manipulator_union,
+    bounds_of,
     outcome_model,
 )
 
@@ -53,10 +54,15 @@ DesignVar = Literal["a", "b", "k", "L0"]
 Positive = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
 
 
-class BoundsIn(BaseModel):
-    model_config = _STRICT
-    lo: Positive = Field(description="lower bound (same for every segment)")
-    hi: Positive = Field(description="upper bound")
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+#: A side of a design variable's bounds: one number for every segment, or one per segment.
+DesignBound = Union[Positive, Annotated[list[Positive], Field(min_length=1, max_length=MAX_DESIGN_SEGMENTS)]]
+#: Bounds on a design variable (``bounds.<name>``), on every rest length (the preload problems).
+BoundsIn = bounds_of(DesignBound, "BoundsIn", "bounds (each side a number, or one per segment)",
+                     object_doc="Bounds {lo, hi}, each a number or one per segment (the object form of [lo, hi]).")
+#: Bounds on the spring preload tension at straight.
+TensionBounds = bounds_of(Finite, "TensionBoundsIn", "bounds [T_min, T_max] on the preload tension k (2b - L0) at "
+                                                     "straight (force units)")
 
 
 class DesignCriticalForceRequest(BaseModel):
@@ -69,9 +75,8 @@ class DesignCriticalForceRequest(BaseModel):
                                               description="bounds per variable; default (x0 / 10, 10 x0)")
     budget: dict[DesignVar, Positive] = Field(default_factory=dict, description="cap on the sum over the segments")
     boundary: Literal["guided", "free"] = "guided"
-    total_length: Annotated[float, Field(gt=0, le=MAX_LENGTH, allow_inf_nan=False)] | bool | None = Field(
-        None, description="fix 2 sum(b): a length, or true to keep the initial one")
-    tension: BoundsIn | None = Field(None, description="bounds on the preload tension k (2b - L0) at straight")
+    total_length: TotalLength | None = None
+    tension: TensionBounds | None = None
     K_min: Annotated[float, Field(ge=-MAX_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan=False)] | None = Field(
         None, description="lower bound on every joint stiffness K_i")
 
@@ -86,16 +91,10 @@ class PreloadsForLoadRequest(BaseModel):
     bounds: BoundsIn | None = Field(None, description="bounds on every L0; default (0.05 * 2b, 2b)")
 
 
-class Point(BaseModel):
-    model_config = _STRICT
-    x: Deflection
-    y: Deflection
-
-
-class LoadIn(BaseModel):
-    model_config = _STRICT
-    fx: ForceValue = 0.0
-    fy: ForceValue = 0.0
+#: A tip position ``[x, y]`` (length units), as every request takes it.
+Point = Annotated[list[Deflection], Field(min_length=2, max_length=2)]
+#: A tip force ``[fx, fy]`` (force units), as every request takes it.
+LoadIn = Annotated[list[ForceValue], Field(min_length=2, max_length=2)]
 
 
 class PreloadsRequest(BaseModel):
@@ -103,8 +102,8 @@ class PreloadsRequest(BaseModel):
 
     model_config = _STRICT
     manipulator: DesignManipulatorIn
-    target: Point = Field(description="tip position (length units)")
-    load: LoadIn = Field(default_factory=lambda: LoadIn(), description="tip force (dead load)")
+    target: Point = Field(description="tip position [x, y] (length units)")
+    load: LoadIn = Field([0.0, 0.0], description="the dead tip load [fx, fy] (force units)")
     objective: Literal["nominal", "margin", "energy"] = Field(
         "nominal", description="nominal: least change from the chain's own rest lengths (the library's "
                                "objective `change`); margin: largest stability margin; energy: least spring energy")

@@ -27,7 +27,18 @@ from pydantic import (
 )
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import Deflection, ForceValue, Length, OneLength, SegmentIn, Stiff, integral
+from .common import (
+    Deflection,
+    ForceValue,
+    Length,
+    LengthPair,
+    SegmentIn,
+    Stiff,
+    StiffPair,
+    TotalLength,
+    bounds_of,
+    integral,
+)
 
 __all__ = ["HARD_MAX_JOB_POINTS", "MAX_GRID_VALUES", "JobSpec", "SweepManipulator", "SweepUniformManipulator",
            "SweepSegmentedManipulator", "JobCreated", "JobSummary", "JobOut", "JobResults",
@@ -65,8 +76,8 @@ class SweepUniformManipulator(BaseModel):
     n: Segments = Field(4, description="number of segments")
     a: Length = Field(1.0, description="triangle half-height")
     b: Length = Field(1.0, description="triangle half-length")
-    k: Stiff = Field(1.0, description="spring stiffness (both springs)")
-    L0: Length = Field(1.0, description="spring rest length (both springs)")
+    k: StiffPair = 1.0
+    L0: LengthPair = 1.0
 
 
 class SweepSegmentedManipulator(BaseModel):
@@ -148,8 +159,9 @@ class SweepPoint(BaseModel):
 
 Finite = Annotated[float, Field(allow_inf_nan=False)]
 BoundValue = Union[Finite, Annotated[list[Finite], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]]
-BoundPair = Annotated[list[BoundValue], Field(min_length=2, max_length=2), OneLength]
-TotalLength = Union[Literal[True], Annotated[float, Field(gt=0, allow_inf_nan=False)]]
+BoundPair = bounds_of(BoundValue, "SweepBoundsIn", "bounds (each side a number, or one per segment)",
+                      object_doc="Bounds {lo, hi}, each a number or one per segment (the object form of [lo, hi]).")
+TensionPair = bounds_of(Finite, "SweepTensionIn", "[T_min, T_max] on the spring preloads at straight")
 
 
 class SweepOptions(BaseModel):
@@ -166,13 +178,13 @@ class SweepOptions(BaseModel):
     vary: list[DesignVariable] = Field(None, min_length=1, max_length=4,  # type: ignore[assignment]
                                        description="design: per-segment variables to optimise (default [k])")
     bounds: dict[DesignVariable, BoundPair] = Field(  # type: ignore[assignment]
-        None, description="design: {name: [lo, hi]}, numbers or per-segment lists")
+        None, description="design: {name: [lo, hi] or {lo, hi}}, numbers or per-segment lists")
     budget: dict[DesignVariable, Finite] = Field(  # type: ignore[assignment]
         None, description="design: {name: total}, sum over the segments <= total")
     total_length: TotalLength = Field(  # type: ignore[assignment]
         None, description="design: total length 2 sum(b) (true: keep the initial one)")
-    tension: Annotated[list[Finite], Field(min_length=2, max_length=2)] = Field(  # type: ignore[assignment]
-        None, description="design: [T_min, T_max] on the spring preloads at straight")
+    tension: TensionPair = Field(  # type: ignore[assignment]
+        None, description="design: [T_min, T_max] (or {lo, hi}) on the spring preloads at straight")
     K_min: Finite = Field(  # type: ignore[assignment]
         None, description="design: lower bound on every joint stiffness")
 

@@ -19,6 +19,7 @@ from tensegrity_opt.analyses.design.follower import SNAP_DISTANCE
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import _STRICT, MAX_ANGLE, MAX_STIFFNESS, Angle, Deflection, ForceValue, Length, ManipulatorIn
+from .control import RestLengthBoundsIn as StreamBounds
 from .design import DesignManipulatorIn
 
 #: The modes of a stream.
@@ -91,8 +92,8 @@ class InverseOpen(_Open):
         None, max_length=HARD_MAX_SEGMENTS,
         description="the start configuration (rad, n angles) with `manipulator`'s rest lengths under `load`; "
                     "default: reached from the least-energy rest configuration")
-    bounds: Annotated[list[Positive], Field(min_length=2, max_length=2)] | None = Field(
-        None, description="actuator bounds [lo, hi] on every rest length; default [0.1 b_min, 4 b_max]")
+    bounds: StreamBounds | None = Field(
+        None, description="actuator bounds [lo, hi] (or {lo, hi}) on every rest length; default [0.1 b_min, 4 b_max]")
     rate_limit: Positive | None = Field(None, description="largest change of each rest length per step")
     margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
         1e-3, description="required stability margin: smallest eigenvalue of the Hessian of E - F . tip "

@@ -54,8 +54,8 @@ def _infeasible_with_best(task: Callable[..., Any]) -> Callable[..., Any]:
 
 
 def _bounds(b: Any) -> tuple[Any, Any] | None:
-    """Rest-length bounds ``{lo, hi}`` (each a number or one per spring) as the library's ``(lo, hi)``."""
-    return None if b is None else (number_or_array(b.lo), number_or_array(b.hi))
+    """Rest-length bounds ``[lo, hi]`` (each a number or one per spring) as the library's ``(lo, hi)``."""
+    return None if b is None else (number_or_array(b[0]), number_or_array(b[1]))
 
 
 @_infeasible_with_best
@@ -65,11 +65,11 @@ def design_critical_force_task(req: s.DesignCriticalForceRequest) -> Any:
     if req.total_length is not None and req.total_length is not False:
         constraints["total_length"] = req.total_length
     if req.tension is not None:
-        constraints["tension"] = (req.tension.lo, req.tension.hi)
+        constraints["tension"] = tuple(req.tension)
     if req.K_min is not None:
         constraints["K_min"] = req.K_min
     return to.maximize_critical_force(m, vary=tuple(dict.fromkeys(req.vary)),
-                                      bounds={k: (v.lo, v.hi) for k, v in req.bounds.items()},
+                                      bounds={k: _bounds(v) for k, v in req.bounds.items()},
                                       budget=dict(req.budget), boundary=req.boundary, **constraints)
 
 
@@ -77,7 +77,7 @@ def design_critical_force_task(req: s.DesignCriticalForceRequest) -> Any:
 def preloads_for_load_task(req: s.PreloadsForLoadRequest) -> Any:
     m = build_manipulator(req.manipulator)
     d = to.preloads_for_critical_force(m, req.required, boundary=req.boundary,
-                                       bounds=(req.bounds.lo, req.bounds.hi) if req.bounds else None)
+                                       bounds=_bounds(req.bounds))
     if not d.feasible:
         raise to.InfeasibleDesignError(
             f"no rest lengths within the bounds give a critical load of {req.required:g}: the best achievable "
@@ -88,9 +88,9 @@ def preloads_for_load_task(req: s.PreloadsForLoadRequest) -> Any:
 @_infeasible_with_best
 def preloads_task(req: s.PreloadsRequest) -> Any:
     m = build_manipulator(req.manipulator)
-    return to.preloads_for_pose(m, (req.target.x, req.target.y), load=(req.load.fx, req.load.fy),
+    return to.preloads_for_pose(m, tuple(req.target), load=tuple(req.load),
                                 objective=PRELOAD_OBJECTIVES[req.objective], margin=req.margin, taut=req.taut,
-                                bounds=(req.bounds.lo, req.bounds.hi) if req.bounds else None, end_angle=req.end_angle)
+                                bounds=_bounds(req.bounds), end_angle=req.end_angle)
 
 
 def find_plan(req: Any, deadline: float) -> PreloadPlan:

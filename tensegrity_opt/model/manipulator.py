@@ -21,10 +21,19 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InvalidParameterError, UnreachableTargetError
+from ..errors import InvalidParameterError, UnreachableTargetError, unknown_name
 from .segment import Segment
 
 __all__ = ["Manipulator"]
+
+
+_SEGMENT_KEYS = ("a", "b", "k", "L0")
+
+
+def _known_keys(d: dict[str, Any], keys: tuple[str, ...], prefix: str) -> None:
+    for key in d:
+        if key not in keys:
+            raise InvalidParameterError(f"{prefix}{key}: {unknown_name(key, keys, 'key')}", field=f"{prefix}{key}")
 
 
 @dataclass(frozen=True)
@@ -80,9 +89,15 @@ class Manipulator:
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> "Manipulator":
-        """From ``{"n", "a", "b", "k", "L0"}`` (uniform) or ``{"segments": [...]}``."""
+        """From ``{"n", "a", "b", "k", "L0"}`` (uniform) or ``{"segments": [...]}``; a key it does not know is
+        refused naming the nearest valid one (``segments[0].l0: unknown key; did you mean L0?``)."""
         if "segments" in d:
+            _known_keys(d, ("segments",), "")
+            for i, s in enumerate(d["segments"]):
+                if isinstance(s, dict):
+                    _known_keys(s, _SEGMENT_KEYS, f"segments[{i}].")
             return cls(Segment(**s) for s in d["segments"])
+        _known_keys(d, ("n", *_SEGMENT_KEYS), "")
         return cls.uniform(d.get("n", 4), d.get("a", 1.0), d.get("b", 1.0), d.get("k", 1.0), d.get("L0", 1.0))
 
     def to_dict(self) -> dict[str, Any]:

@@ -54,7 +54,7 @@ def api(base):
 
 @pytest.mark.slow
 def test_equilibrium(api):
-    body = EquilibriumRequest(manipulator=UniformManipulatorIn(n=4, a=1, b=1, k=1, l0=1), dx=0.1, dy=0.0)
+    body = EquilibriumRequest(manipulator=UniformManipulatorIn(n=4, a=1, b=1, k=1, L0=1), dx=0.1, dy=0.0)
     r = solve_equilibrium.sync_detailed(client=api, body=body)
     assert r.status_code == 200, r.content
     eq = r.parsed

@@ -244,3 +244,13 @@ def test_equilibrium_residuals_of_rows_equal_the_residual_of_each_row():
         np.testing.assert_allclose(got, want, rtol=1e-12, atol=1e-15)
         Q[3, 0] = np.nan
         assert np.isnan(m.equilibrium_residuals(Q, F, target)[3])
+
+
+@pytest.mark.parametrize(("d", "words"), [
+    ({"segments": [{"a": 1, "b": 1, "k": 1, "l0": 1}]}, "segments[0].l0: unknown key; did you mean L0?"),
+    ({"n": 3, "A": 1.0}, "A: unknown key; did you mean a?"),
+    ({"segments": [], "segs": 1}, "segs: unknown key; did you mean segments?")])
+def test_from_dict_names_a_misspelt_key_and_its_nearest_name(d, words):
+    with pytest.raises(InvalidParameterError) as info:
+        Manipulator.from_dict(d)
+    assert str(info.value) == words and info.value.field == words.split(":")[0]

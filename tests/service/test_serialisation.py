@@ -153,7 +153,7 @@ def test_design_to_dict_equals_the_service_serialiser():
     _same(pl.to_dict(), _body(control_tasks.preloads_for_load_task, _req(s.PreloadsForLoadRequest, m, required=0.8)))
     p = to.preloads_for_pose(m, (7.5, 0.5), load=(0.0, 0.0), objective="energy")
     _same(p.to_dict(), refs.preload_design_out(p))
-    _same(p.to_dict(), _body(control_tasks.preloads_task, _req(s.PreloadsRequest, m, target={"x": 7.5, "y": 0.5},
+    _same(p.to_dict(), _body(control_tasks.preloads_task, _req(s.PreloadsRequest, m, target=[7.5, 0.5],
                                                  objective="energy")))
     # nullable: a starting design without a critical force
     import dataclasses

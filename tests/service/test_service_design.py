@@ -75,7 +75,7 @@ def test_design_infeasible_constraints(client):
 
 
 def test_preloads_pose_equals_library_and_verifies(client):
-    body = {"manipulator": PAPER, "target": {"x": 7.0, "y": 1.5}, "load": {"fx": 0.05, "fy": -0.02},
+    body = {"manipulator": PAPER, "target": [7.0, 1.5], "load": [0.05, -0.02],
             "objective": "nominal", "margin": 0.05}
     r = client.post("/v1/design/preloads", json=body)
     assert r.status_code == 200, r.text
@@ -93,7 +93,7 @@ def test_preloads_pose_equals_library_and_verifies(client):
 @pytest.mark.parametrize("body,field", [
     ({"manipulator": PAPER, "vary": ["c"]}, "vary"),
     ({"manipulator": PAPER, "required": -1.0}, "required"),
-    ({"manipulator": PAPER, "target": {"x": 7.0}}, "target"),
+    ({"manipulator": PAPER, "target": [7.0]}, "target"),
 ])
 def test_design_schema_errors(client, body, field):
     path = {"vary": "/v1/design/critical-force", "required": "/v1/design/preloads-for-load",
@@ -104,7 +104,7 @@ def test_design_schema_errors(client, body, field):
 
 
 def test_design_domain_errors(client):
-    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 9.0, "y": 0.0}})
+    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": [9.0, 0.0]})
     assert r.status_code == 422 and r.json()["code"] == "unreachable_target"
     r = client.post("/v1/design/critical-force", json={"manipulator": {"n": 3, "k": [1.0, 2.0]}, "vary": ["k"]})
     assert r.status_code == 422 and r.json()["code"] == "straight_not_equilibrium"

@@ -34,6 +34,17 @@ RAGGED: dict[tuple[str, str], tuple[dict[str, Any], str]] = {
         {"manipulator": CHAIN, "preloads": [[[1.0, 1.0]] * 4, [[1.1, 0.9]] * 3]}, "preloads"),
     ("/v1/plots/simulation/job", "preloads"): (
         {"manipulator": CHAIN, "preloads": [[[1.0, 1.0]] * 4, [[1.1, 0.9]] * 3]}, "preloads"),
+    **{(path, "bounds"): ({"manipulator": CHAIN, "targets": [[7.0, 1.0]], "bounds": [[0.5] * 8, [2.0] * 7]}, "bounds")
+       for path in ("/v1/control/plan", "/v1/plots/plan", "/v1/plots/plan/job")},
+    ("/v1/control/stiffness", "bounds"): (
+        {"manipulator": CHAIN, "target": [7.0, 1.0], "eig_bounds": [0.04, 0.6], "bounds": [[0.5] * 8, [2.0] * 7]},
+        "bounds"),
+    ("/v1/design/preloads", "bounds"): (
+        {"manipulator": CHAIN, "target": [7.0, 1.5], "bounds": [[0.5] * 8, [2.0] * 7]}, "bounds"),
+    ("/v1/design/preloads-for-load", "bounds"): (
+        {"manipulator": CHAIN, "required": 1.0, "bounds": [[0.2] * 4, [2.0] * 3]}, "bounds"),
+    ("/v1/design/critical-force", "bounds.*"): (
+        {"manipulator": CHAIN, "vary": ["k"], "bounds": {"k": [[0.2] * 4, [5.0] * 3]}}, "bounds.k"),
     ("/v1/jobs", "options.bounds.*"): (
         {"analysis": "design", "manipulator": CHAIN, "grid": {"k": [1.0]},
          "options": {"vary": ["k"], "bounds": {"k": [[0.2] * 4, [5.0] * 3]}}}, "options.bounds.k"),

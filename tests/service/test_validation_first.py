@@ -32,7 +32,7 @@ def test_preloads_for_one_segment_is_refused_before_the_nlp(client):
     with pytest.raises(InvalidParameterError) as e:
         to.preloads_for_pose(to.Manipulator.uniform(1), (x, y))
     assert e.value.field == "n"
-    r = client.post("/v1/design/preloads", json={"manipulator": {"n": 1}, "target": {"x": x, "y": y}})
+    r = client.post("/v1/design/preloads", json={"manipulator": {"n": 1}, "target": [x, y]})
     assert r.status_code == 422 and r.json()["code"] == "invalid_parameter", r.text
     assert r.json()["field"] == "manipulator.n"
 
@@ -49,10 +49,10 @@ def test_tension_bounds_in_the_wrong_order_name_the_field(client):
 
 
 @pytest.mark.slow_cases(keep=1)
-@pytest.mark.parametrize("load", [{"fx": 0.0, "fy": 1e12}, {"fx": 0.0, "fy": -1e12}, {"fx": 1e12, "fy": 1e12}])
+@pytest.mark.parametrize("load", [[0.0, 1e12], [0.0, -1e12], [1e12, 1e12]])
 def test_huge_loads_on_preloads_are_answered(client, load):
     # an absolute floor (1e-6) under entries of 1e12 would make numpy raise "Matrix is not positive definite"
-    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 7.0, "y": 1.5}, "load": load})
+    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": [7.0, 1.5], "load": load})
     assert r.status_code in (200, 422), r.text
     if r.status_code == 422:
         assert r.json()["code"] == "design_infeasible", r.text
@@ -63,7 +63,7 @@ def test_unreachable_preload_target_names_the_target(client):
     with pytest.raises(UnreachableTargetError) as e:
         to.preloads_for_pose(to.Manipulator.uniform(4), (9.0, 1.5))
     assert e.value.field == "target"
-    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": {"x": 9.0, "y": 1.5}})
+    r = client.post("/v1/design/preloads", json={"manipulator": PAPER, "target": [9.0, 1.5]})
     assert r.status_code == 422 and r.json()["code"] == "unreachable_target", r.text
     assert r.json()["field"] == "target"
 

@@ -86,7 +86,7 @@ async def design_preloads(
     request: Request,
     req: Annotated[s.PreloadsRequest, Body(openapi_examples={
         "pose": {"summary": "tip at (7, 1.5) under a small load", "value": {
-            "manipulator": ex.PAPER_CHAIN, "target": {"x": 7.0, "y": 1.5}, "load": {"fx": 0.05, "fy": -0.02},
+            "manipulator": ex.PAPER_CHAIN, "target": [7.0, 1.5], "load": [0.05, -0.02],
             "objective": "nominal", "margin": 0.05}}})],
     settings: SettingsDep,
 ) -> Any:

@@ -39,6 +39,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ...bounds import bound_pair
 from ...errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics.inverse_statics import inverse_statics
@@ -188,7 +189,7 @@ class PreloadController:
             raise InvalidParameterError(f"margin must be finite and >= 0, got {margin!r}", field="margin")
         self.m, self.n, self.objective, self.margin = m, n, objective, float(margin)
         self.load = checked_vector(load, 2, "load")
-        lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
+        lo, hi = bound_pair(bounds) if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
         self.lo = self._per_spring(lo, "bounds")
         self.hi = self._per_spring(hi, "bounds")
         if not (np.all(self.lo > 0) and np.all(self.lo < self.hi)):

@@ -25,6 +25,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ...bounds import bound_pair
 from ...errors import (
     InfeasibleDesignError,
     InvalidParameterError,
@@ -144,7 +145,7 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
     if not math.isfinite(required) or required <= 0:
         raise InvalidParameterError("required must be a positive finite load", field="required")
     b = m.b
-    bnds = {"L0": bounds if bounds is not None else (0.05 * 2 * b, 2 * b)}
+    bnds = {"L0": bound_pair(bounds) if bounds is not None else (0.05 * 2 * b, 2 * b)}
     with _time_limit(timeout):
         try:
             return buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
@@ -350,11 +351,12 @@ def checked_start(m: Manipulator, start) -> np.ndarray | None:
 
 
 def rest_length_bounds(m: Manipulator, bounds) -> tuple[Any, Any]:
-    """``(lo, hi)`` of a preload problem's ``bounds`` (each a number or ``2 n`` values: ``L1_0`` of every
-    segment, then every ``L2_0``; default ``(0.1 b_min, 4 b_max)``), checked (``field="bounds"``)."""
+    """``(lo, hi)`` of a preload problem's ``bounds`` (``[lo, hi]`` or ``{"lo", "hi"}``, each a number or ``2 n``
+    values: ``L1_0`` of every segment, then every ``L2_0``; default ``(0.1 b_min, 4 b_max)``), checked
+    (``field="bounds"``)."""
     n = m.n
     try:
-        lo, hi = bounds if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
+        lo, hi = bound_pair(bounds) if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
         lo = np.broadcast_to(np.asarray(lo, dtype=float), (2 * n)).copy() if np.ndim(lo) else float(lo)
         hi = np.broadcast_to(np.asarray(hi, dtype=float), (2 * n)).copy() if np.ndim(hi) else float(hi)
     except (TypeError, ValueError):

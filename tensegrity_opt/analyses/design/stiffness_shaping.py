@@ -35,6 +35,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ...bounds import bound_pair
 from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
@@ -181,8 +182,8 @@ class StiffnessDesign(Outcome):
 
 def _pair(v, name: str) -> tuple[float, float]:
     """``(lo, hi)`` from a pair of numbers or None (an open side), checked (``field=name``)."""
+    lo, hi = bound_pair(v, name)
     try:
-        lo, hi = v
         lo = -_INF if lo is None else float(lo)
         hi = _INF if hi is None else float(hi)
     except (TypeError, ValueError):

@@ -19,6 +19,7 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.linalg as sla
 
+from ...bounds import bound_pair
 from ...errors import (
     InfeasibleDesignError,
     InvalidParameterError,
@@ -158,6 +159,20 @@ def _build(cols: Mapping[str, np.ndarray]) -> Manipulator:
     return Manipulator(Segment(a, b, k, L0) for a, b, k, L0 in zip(cols["a"], cols["b"], cols["k"], cols["L0"]))
 
 
+def _invalid_design(m: Manipulator, boundary: str, vary: Iterable[str], exc: TensegrityError,
+                    status: str) -> InfeasibleDesignError:
+    """The refusal of a design that is not a valid chain, saying whose fault it is: the input chain's, when it is
+    not valid itself (then ``field`` names its culprit), else the optimiser's."""
+    try:
+        critical_force(m, boundary)
+    except TensegrityError as given:
+        return InfeasibleDesignError(
+            f"the input chain is not a valid chain, and varying {', '.join(vary)} within the bounds did not make "
+            f"it one: {given}", field=given.field, status=status)
+    return InfeasibleDesignError(f"the optimiser's design is not a valid chain (the input chain is): {exc}",
+                                 status=status)
+
+
 def _multiplicity(loads: np.ndarray, rel: float = 1e-4) -> int:
     return int(np.sum(loads <= loads[0] * (1.0 + rel)))
 
@@ -183,14 +198,14 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
     vary : iterable of {"a", "b", "k", "L0"}
         The per-segment variables to optimise.
     bounds : dict, optional
-        ``{name: (lo, hi)}`` with numbers or per-segment arrays. Default for a varied
-        variable: ``(x0 / 10, 10 x0)``.
+        ``{name: (lo, hi)}`` (or ``{name: {"lo": lo, "hi": hi}}``, :func:`tensegrity_opt.bounds.bound_pair`)
+        with numbers or per-segment arrays. Default for a varied variable: ``(x0 / 10, 10 x0)``.
     budget : dict, optional
         ``{name: total}``: ``sum(name) <= total`` over the segments.
     boundary : {"guided", "free"}
     **constraints
         ``total_length`` (float, or ``True`` to keep the initial ``2 sum(b)``),
-        ``tension=(T_min, T_max)`` bounds on the spring preload ``k (2b - L0)`` at straight,
+        ``tension=(T_min, T_max)`` (or ``{"lo", "hi"}``) bounds on the spring preload ``k (2b - L0)`` at straight,
         ``K_min`` a lower bound on every joint stiffness ``K_i = k (b L0 - 2 (b^2 - a^2))``.
         Condition (4), ``K_i > 0``, is always imposed: as ``K_i >= K_min`` with ``K_min`` raised
         to at least the floor ``K_FLOOR_REL * max_i k_i (a_i^2 + b_i^2)`` (``1e-9`` times the
@@ -228,7 +243,7 @@ def _tension_bounds(tension) -> tuple[float, float]:
     if tension is None:
         return -_INF, _INF
     try:
-        tmin, tmax = (float(v) for v in tension)
+        tmin, tmax = (float(v) for v in bound_pair(tension, "tension"))
     except (TypeError, ValueError):
         raise InvalidParameterError("tension must be a pair (T_min, T_max) of numbers", field="tension") from None
     if math.isnan(tmin) or math.isnan(tmax) or tmin > tmax or tmin == _INF or tmax == -_INF:
@@ -270,7 +285,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
     lo, hi = {}, {}
     for name in DESIGN_VARIABLES:
         if name in vary:
-            blo, bhi = bounds.get(name, (x0[name] / 10.0, x0[name] * 10.0))
+            blo, bhi = bound_pair(bounds.get(name, (x0[name] / 10.0, x0[name] * 10.0)), f"bounds.{name}")
             lo[name] = _per_segment(blo, n, f"bounds.{name}")
             hi[name] = _per_segment(bhi, n, f"bounds.{name}")
             if np.any(lo[name] <= 0) or np.any(hi[name] < lo[name]):
@@ -334,7 +349,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
         m_opt = _build(cols)
         bk = critical_force(m_opt, boundary)
     except TensegrityError as exc:
-        raise InfeasibleDesignError(f"the optimiser's design is not a valid chain: {exc}", status=res.status) from exc
+        raise _invalid_design(m, boundary, vary, exc, res.status) from exc
     rows = nlp.rows(xv)
     viol = max(float(np.max(lbg_a - rows, initial=0.0)), float(np.max(rows - ubg_a, initial=0.0)))
     solved = res.success and viol <= 1e-6

@@ -32,7 +32,8 @@ def _manipulator(header: Mapping[str, Any], point: Mapping[str, Any]) -> Manipul
     if "segments" in header["manipulator"]:
         return _chain_of(header["manipulator"])
     p = {**header["manipulator"], **{k: v for k, v in point.items() if k in MANIPULATOR_PARAMETERS}}
-    return Manipulator.uniform(p["n"], p["a"], p["b"], p["k"], p["L0"])
+    k, L0 = (tuple(p[x]) if isinstance(p[x], list) else p[x] for x in ("k", "L0"))
+    return Manipulator.uniform(p["n"], p["a"], p["b"], k, L0)
 
 
 def _chain_of(base: Mapping[str, Any]) -> Manipulator:

@@ -15,7 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from ...errors import InvalidParameterError
+from ...bounds import bound_pair
+from ...errors import InvalidParameterError, unknown_name
 
 __all__ = ["ANALYSES", "PARAMETERS", "MANIPULATOR_PARAMETERS", "DEFAULT_MANIPULATOR", "DESIGN_VARIABLES",
            "MAX_POINTS", "USES", "OPTIONS", "PARAMETER_TYPES", "RESULT_COLUMNS", "count_points", "validate_spec"]
@@ -105,9 +106,16 @@ def _value(name: str, v: Any, fld: str) -> Any:
     _fail(fld, f"unknown parameter; expected one of {', '.join(PARAMETERS)}")  # pragma: no cover
 
 
+def _spring_pair(name: str, v: Any, fld: str) -> list[float]:
+    """``k`` or ``L0`` of the base chain as the pair of its two springs ``[spring 1, spring 2]``."""
+    if len(v) != 2:
+        _fail(fld, "must be a number or the pair of the two springs")
+    return [_value(name, x, f"{fld}[{j}]") for j, x in enumerate(v)]
+
+
 def _check_name(name: Any, analysis: str, fld: str) -> None:
     if name not in PARAMETERS:
-        _fail(fld, f"unknown parameter {name!r}; a sweep varies {', '.join(PARAMETERS)}")
+        _fail(fld, unknown_name(name, PARAMETERS, "parameter") + f" (a sweep varies {', '.join(PARAMETERS)})")
     if name not in USES[analysis]:
         _fail(fld, f"{name!r} is not used by analysis {analysis!r} (it uses {', '.join(USES[analysis])})")
 
@@ -126,7 +134,7 @@ def _options(analysis: str, raw: Any) -> dict[str, Any]:
     out: dict[str, Any] = {}
     for key in raw:
         if key not in OPTIONS:
-            _fail(f"options.{key}", f"unknown option; expected one of {', '.join(OPTIONS)}")
+            _fail(f"options.{key}", unknown_name(key, OPTIONS, "option"))
         if analysis not in OPTIONS[key]:
             _fail(f"options.{key}", f"not used by analysis {analysis!r} (only by {', '.join(OPTIONS[key])})")
     if analysis in ("buckling", "design"):
@@ -155,14 +163,13 @@ def _options(analysis: str, raw: Any) -> dict[str, Any]:
     if "bounds" in raw:
         bounds = raw["bounds"]
         if not isinstance(bounds, Mapping):
-            _fail("options.bounds", "must be an object {name: [lo, hi]}")
+            _fail("options.bounds", "must be an object {name: [lo, hi] or {lo, hi}}")
         nb: dict[str, list[Any]] = {}
-        for name, pair in bounds.items():
+        for name, given in bounds.items():
             fld = f"options.bounds.{name}"
             if name not in DESIGN_VARIABLES:
                 _fail(fld, f"unknown design variable; expected one of {', '.join(DESIGN_VARIABLES)}")
-            if not isinstance(pair, (list, tuple)) or len(pair) != 2:
-                _fail(fld, "must be [lo, hi]")
+            pair = bound_pair(given, fld)
             side = []
             for j, s in enumerate(pair):
                 if isinstance(s, (list, tuple)):
@@ -182,11 +189,10 @@ def _options(analysis: str, raw: Any) -> dict[str, Any]:
         out["budget"] = {name: _finite(v, f"options.budget.{name}") for name, v in budget.items()}
     if "total_length" in raw:
         tl = raw["total_length"]
-        out["total_length"] = True if tl is True else _finite(tl, "options.total_length")
+        if tl is not False:
+            out["total_length"] = True if tl is True else _finite(tl, "options.total_length")
     if "tension" in raw:
-        t = raw["tension"]
-        if not isinstance(t, (list, tuple)) or len(t) != 2:
-            _fail("options.tension", "must be [T_min, T_max]")
+        t = bound_pair(raw["tension"], "options.tension")
         out["tension"] = [_finite(t[0], "options.tension[0]"), _finite(t[1], "options.tension[1]")]
     if "K_min" in raw:
         out["K_min"] = _finite(raw["K_min"], "options.K_min")
@@ -199,7 +205,7 @@ def _header(spec: Any) -> dict[str, Any]:
         _fail("spec", f"a sweep spec is a JSON object, got {type(spec).__name__}")
     for key in spec:
         if key not in _TOP_KEYS:
-            _fail(str(key), f"unknown key; a sweep spec has {', '.join(_TOP_KEYS)}")
+            _fail(str(key), unknown_name(key, _TOP_KEYS, "key") + f" (a sweep spec has {', '.join(_TOP_KEYS)})")
     analysis = spec.get("analysis")
     if analysis is None:
         _fail("analysis", f"missing; one of {', '.join(ANALYSES)}")
@@ -215,9 +221,12 @@ def _header(spec: Any) -> dict[str, Any]:
         base = dict(DEFAULT_MANIPULATOR)
         for key, v in raw_m.items():
             if key not in MANIPULATOR_PARAMETERS:
-                _fail(f"manipulator.{key}", "unknown key; the base chain is {n, a, b, k, L0} (uniform) or "
-                      "{segments: [{a, b, k, L0}, ...]}")
-            base[key] = _value(key, v, f"manipulator.{key}")
+                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "segments"), "key")
+                      + " (the base chain is {n, a, b, k, L0} (uniform) or {segments: [{a, b, k, L0}, ...]})")
+            if key in ("k", "L0") and isinstance(v, (list, tuple)):
+                base[key] = _spring_pair(key, v, f"manipulator.{key}")
+            else:
+                base[key] = _value(key, v, f"manipulator.{key}")
     return {"analysis": analysis, "manipulator": base, "options": _options(analysis, spec.get("options"))}
 
 
@@ -239,7 +248,7 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
             _fail(fld, "must be an object {a, b, k, L0}")
         for key in sd:
             if key not in ("a", "b", "k", "L0"):
-                _fail(f"{fld}.{key}", "unknown key; a segment has a, b, k, L0")
+                _fail(f"{fld}.{key}", unknown_name(key, ("a", "b", "k", "L0"), "key") + " (a segment has a, b, k, L0)")
         norm: dict[str, Any] = {}
         for key in ("a", "b", "k", "L0"):
             v = sd.get(key, 1.0)

@@ -197,3 +197,20 @@ def test_a_design_is_immutable():
     with pytest.raises(ValueError):
         d.loads[0] = 0.0
     assert isinstance(d.active, tuple)
+
+
+def test_an_invalid_input_chain_is_named_as_the_input():
+    # a = 0.5, L0 = 1: K = k (b L0 - 2 (b^2 - a^2)) < 0 for every k, so varying k cannot make the chain valid
+    with pytest.raises(InfeasibleDesignError, match="^the input chain is not a valid chain, and varying k") as info:
+        maximize_critical_force(to.Manipulator.uniform(3, 0.5), ["k"])
+    assert info.value.field == "segments[0].L0"
+    assert "optimiser" not in str(info.value)
+
+
+def test_an_invalid_design_of_a_valid_chain_is_the_optimisers():
+    from tensegrity_opt.analyses.design.strongest import _invalid_design
+    from tensegrity_opt.errors import UnstableStraightError
+
+    err = _invalid_design(to.Manipulator.uniform(3), "guided", ["k"], UnstableStraightError("K_1 < 0"), "Solve")
+    assert str(err) == "the optimiser's design is not a valid chain (the input chain is): K_1 < 0"
+    assert err.field is None

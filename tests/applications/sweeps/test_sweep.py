@@ -390,3 +390,16 @@ def test_a_sweep_result_follows_the_contract_and_is_immutable(tmp_path):
     assert (stopped.status, stopped.success) == ("cancelled", False)
     back = S.read_results(stopped.save(tmp_path / "stopped.json"))
     assert back.status == "cancelled" and back.rows == stopped.rows
+
+
+@pytest.mark.parametrize(("spec", "words"), [
+    ({"analysis": "buckling", "grid": {"N": [3]}}, "grid.N: unknown parameter; did you mean n?"),
+    ({"analysis": "design", "grid": {"n": [3]}, "options": {"bonds": {}}}, "options.bonds: unknown option; did you "
+                                                                           "mean bounds?"),
+    ({"analysis": "buckling", "gird": {"n": [3]}}, "gird: unknown key; did you mean grid?"),
+    ({"analysis": "buckling", "manipulator": {"l0": 1.0}, "grid": {"n": [3]}}, "manipulator.l0: unknown key; did you "
+                                                                               "mean L0?")])
+def test_a_misspelt_name_is_refused_naming_the_nearest(spec, words):
+    with pytest.raises(to.InvalidParameterError) as info:
+        S.validate_spec(spec)
+    assert str(info.value).startswith(words)

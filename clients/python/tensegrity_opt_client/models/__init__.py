@@ -115,7 +115,6 @@ from .load_capacity_out_weakest_type_0 import LoadCapacityOutWeakestType0
 from .load_capacity_request import LoadCapacityRequest
 from .load_capacity_request_boundary import LoadCapacityRequestBoundary
 from .load_control_in import LoadControlIn
-from .load_in import LoadIn
 from .manipulator_out import ManipulatorOut
 from .map_values_range import MapValuesRange
 from .mode_out import ModeOut
@@ -163,7 +162,6 @@ from .plot_simulation_request_format_type_0 import PlotSimulationRequestFormatTy
 from .plot_simulation_request_tip import PlotSimulationRequestTip
 from .plot_torque_request import PlotTorqueRequest
 from .plot_torque_request_format_type_0 import PlotTorqueRequestFormatType0
-from .point import Point
 from .preload_control_in import PreloadControlIn
 from .preload_control_in_tip import PreloadControlInTip
 from .preloads_for_load_request import PreloadsForLoadRequest
@@ -200,6 +198,7 @@ from .stability_boundary_out_status import StabilityBoundaryOutStatus
 from .stability_boundary_request import StabilityBoundaryRequest
 from .start_deflection import StartDeflection
 from .start_q import StartQ
+from .stiffness_bound_in import StiffnessBoundIn
 from .stiffness_bounds_in import StiffnessBoundsIn
 from .stiffness_design_out import StiffnessDesignOut
 from .stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK
@@ -208,6 +207,7 @@ from .stiffness_design_out_status import StiffnessDesignOutStatus
 from .stiffness_design_request import StiffnessDesignRequest
 from .stiffness_out import StiffnessOut
 from .stiffness_request import StiffnessRequest
+from .sweep_bounds_in import SweepBoundsIn
 from .sweep_grid import SweepGrid
 from .sweep_options import SweepOptions
 from .sweep_options_boundary import SweepOptionsBoundary
@@ -217,8 +217,10 @@ from .sweep_options_method import SweepOptionsMethod
 from .sweep_options_vary_item import SweepOptionsVaryItem
 from .sweep_point import SweepPoint
 from .sweep_segmented_manipulator import SweepSegmentedManipulator
+from .sweep_tension_in import SweepTensionIn
 from .sweep_uniform_manipulator import SweepUniformManipulator
 from .target import Target
+from .tension_bounds_in import TensionBoundsIn
 from .traced_branch_out import TracedBranchOut
 from .traced_branch_out_status import TracedBranchOutStatus
 from .uniform_manipulator_in import UniformManipulatorIn
@@ -341,7 +343,6 @@ __all__ = (
     "LoadCapacityRequest",
     "LoadCapacityRequestBoundary",
     "LoadControlIn",
-    "LoadIn",
     "ManipulatorOut",
     "MapValuesRange",
     "ModeOut",
@@ -389,7 +390,6 @@ __all__ = (
     "PlotSimulationRequestTip",
     "PlotTorqueRequest",
     "PlotTorqueRequestFormatType0",
-    "Point",
     "PreloadControlIn",
     "PreloadControlInTip",
     "PreloadsForLoadRequest",
@@ -426,6 +426,7 @@ __all__ = (
     "StabilityBoundaryRequest",
     "StartDeflection",
     "StartQ",
+    "StiffnessBoundIn",
     "StiffnessBoundsIn",
     "StiffnessDesignOut",
     "StiffnessDesignOutBoundsK",
@@ -434,6 +435,7 @@ __all__ = (
     "StiffnessDesignRequest",
     "StiffnessOut",
     "StiffnessRequest",
+    "SweepBoundsIn",
     "SweepGrid",
     "SweepOptions",
     "SweepOptionsBoundary",
@@ -443,8 +445,10 @@ __all__ = (
     "SweepOptionsVaryItem",
     "SweepPoint",
     "SweepSegmentedManipulator",
+    "SweepTensionIn",
     "SweepUniformManipulator",
     "Target",
+    "TensionBoundsIn",
     "TracedBranchOut",
     "TracedBranchOutStatus",
     "UniformManipulatorIn",

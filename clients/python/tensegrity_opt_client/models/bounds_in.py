@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar
+from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
@@ -10,19 +10,30 @@ T = TypeVar("T", bound="BoundsIn")
 
 @_attrs_define
 class BoundsIn:
-    """
+    """Bounds {lo, hi}, each a number or one per segment (the object form of [lo, hi]).
+
     Attributes:
-        hi (float): upper bound
-        lo (float): lower bound (same for every segment)
+        hi (float | list[float]): upper bound
+        lo (float | list[float]): lower bound
     """
 
-    hi: float
-    lo: float
+    hi: float | list[float]
+    lo: float | list[float]
 
     def to_dict(self) -> dict[str, Any]:
-        hi = self.hi
+        hi: float | list[float]
+        if isinstance(self.hi, list):
+            hi = self.hi
 
-        lo = self.lo
+        else:
+            hi = self.hi
+
+        lo: float | list[float]
+        if isinstance(self.lo, list):
+            lo = self.lo
+
+        else:
+            lo = self.lo
 
         field_dict: dict[str, Any] = {}
 
@@ -38,9 +49,32 @@ class BoundsIn:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        hi = d.pop("hi")
 
-        lo = d.pop("lo")
+        def _parse_hi(data: object) -> float | list[float]:
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                hi_type_1 = cast(list[float], data)
+
+                return hi_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float], data)
+
+        hi = _parse_hi(d.pop("hi"))
+
+        def _parse_lo(data: object) -> float | list[float]:
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                lo_type_1 = cast(list[float], data)
+
+                return lo_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float], data)
+
+        lo = _parse_lo(d.pop("lo"))
 
         bounds_in = cls(
             hi=hi,

@@ -10,11 +10,11 @@ from ..models.design_critical_force_request_vary_item import DesignCriticalForce
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.bounds_in import BoundsIn
     from ..models.design_critical_force_request_bounds import DesignCriticalForceRequestBounds
     from ..models.design_critical_force_request_budget import DesignCriticalForceRequestBudget
     from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn
     from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn
+    from ..models.tension_bounds_in import TensionBoundsIn
 
 
 T = TypeVar("T", bound="DesignCriticalForceRequest")
@@ -27,27 +27,27 @@ class DesignCriticalForceRequest:
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
             "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
-        k_min (float | None | Unset): lower bound on every joint stiffness K_i
+        K_min (float | None | Unset): lower bound on every joint stiffness K_i
         boundary (DesignCriticalForceRequestBoundary | Unset):  Default: DesignCriticalForceRequestBoundary.GUIDED.
         bounds (DesignCriticalForceRequestBounds | Unset): bounds per variable; default (x0 / 10, 10 x0)
         budget (DesignCriticalForceRequestBudget | Unset): cap on the sum over the segments
-        tension (BoundsIn | None | Unset): bounds on the preload tension k (2b - L0) at straight
-        total_length (bool | float | None | Unset): fix 2 sum(b): a length, or true to keep the initial one
+        tension (list[float] | None | TensionBoundsIn | Unset):
+        total_length (bool | float | None | Unset):
         vary (list[DesignCriticalForceRequestVaryItem] | Unset): per-segment variables to optimise
     """
 
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
-    k_min: float | None | Unset = UNSET
+    K_min: float | None | Unset = UNSET
     boundary: DesignCriticalForceRequestBoundary | Unset = DesignCriticalForceRequestBoundary.GUIDED
     bounds: DesignCriticalForceRequestBounds | Unset = UNSET
     budget: DesignCriticalForceRequestBudget | Unset = UNSET
-    tension: BoundsIn | None | Unset = UNSET
+    tension: list[float] | None | TensionBoundsIn | Unset = UNSET
     total_length: bool | float | None | Unset = UNSET
     vary: list[DesignCriticalForceRequestVaryItem] | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.bounds_in import BoundsIn  # noqa: PLC0415
         from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
+        from ..models.tension_bounds_in import TensionBoundsIn  # noqa: PLC0415
 
         manipulator: dict[str, Any]
         if isinstance(self.manipulator, DesignUniformManipulatorIn):
@@ -55,11 +55,11 @@ class DesignCriticalForceRequest:
         else:
             manipulator = self.manipulator.to_dict()
 
-        k_min: float | None | Unset
-        if isinstance(self.k_min, Unset):
-            k_min = UNSET
+        K_min: float | None | Unset
+        if isinstance(self.K_min, Unset):
+            K_min = UNSET
         else:
-            k_min = self.k_min
+            K_min = self.K_min
 
         boundary: str | Unset = UNSET
         if not isinstance(self.boundary, Unset):
@@ -73,10 +73,13 @@ class DesignCriticalForceRequest:
         if not isinstance(self.budget, Unset):
             budget = self.budget.to_dict()
 
-        tension: dict[str, Any] | None | Unset
+        tension: dict[str, Any] | list[float] | None | Unset
         if isinstance(self.tension, Unset):
             tension = UNSET
-        elif isinstance(self.tension, BoundsIn):
+        elif isinstance(self.tension, list):
+            tension = self.tension
+
+        elif isinstance(self.tension, TensionBoundsIn):
             tension = self.tension.to_dict()
         else:
             tension = self.tension
@@ -101,8 +104,8 @@ class DesignCriticalForceRequest:
                 "manipulator": manipulator,
             }
         )
-        if k_min is not UNSET:
-            field_dict["K_min"] = k_min
+        if K_min is not UNSET:
+            field_dict["K_min"] = K_min
         if boundary is not UNSET:
             field_dict["boundary"] = boundary
         if bounds is not UNSET:
@@ -120,11 +123,11 @@ class DesignCriticalForceRequest:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.bounds_in import BoundsIn  # noqa: PLC0415
         from ..models.design_critical_force_request_bounds import DesignCriticalForceRequestBounds  # noqa: PLC0415
         from ..models.design_critical_force_request_budget import DesignCriticalForceRequestBudget  # noqa: PLC0415
         from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn  # noqa: PLC0415
         from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
+        from ..models.tension_bounds_in import TensionBoundsIn  # noqa: PLC0415
 
         d = dict(src_dict)
 
@@ -152,7 +155,7 @@ class DesignCriticalForceRequest:
                 return data
             return cast(float | None | Unset, data)
 
-        k_min = _parse_k_min(d.pop("K_min", UNSET))
+        K_min = _parse_k_min(d.pop("K_min", UNSET))
 
         _boundary = d.pop("boundary", UNSET)
         boundary: DesignCriticalForceRequestBoundary | Unset
@@ -175,20 +178,28 @@ class DesignCriticalForceRequest:
         else:
             budget = DesignCriticalForceRequestBudget.from_dict(_budget)
 
-        def _parse_tension(data: object) -> BoundsIn | None | Unset:
+        def _parse_tension(data: object) -> list[float] | None | TensionBoundsIn | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
                 return data
             try:
-                if not isinstance(data, dict):
+                if not isinstance(data, list):
                     raise TypeError()
-                tension_type_0 = BoundsIn.from_dict(data)
+                tension_type_0_type_0 = cast(list[float], data)
 
-                return tension_type_0
+                return tension_type_0_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(BoundsIn | None | Unset, data)
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                tension_type_0_type_1 = TensionBoundsIn.from_dict(data)
+
+                return tension_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None | TensionBoundsIn | Unset, data)
 
         tension = _parse_tension(d.pop("tension", UNSET))
 
@@ -212,7 +223,7 @@ class DesignCriticalForceRequest:
 
         design_critical_force_request = cls(
             manipulator=manipulator,
-            k_min=k_min,
+            K_min=K_min,
             boundary=boundary,
             bounds=bounds,
             budget=budget,

@@ -16,7 +16,7 @@ class DesignUniformManipulatorIn:
 
     Attributes:
         n (int): number of segments (at most 60 for the design endpoints)
-        l0 (float | list[float] | Unset): spring rest length L0 (length units): one number for both springs or the pair
+        L0 (float | list[float] | Unset): spring rest length L0 (length units): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
         a (float | Unset): triangle half-height (length units) Default: 1.0.
         b (float | Unset): triangle half-length (length units) Default: 1.0.
@@ -25,7 +25,7 @@ class DesignUniformManipulatorIn:
     """
 
     n: int
-    l0: float | list[float] | Unset = 1.0
+    L0: float | list[float] | Unset = 1.0
     a: float | Unset = 1.0
     b: float | Unset = 1.0
     k: float | list[float] | Unset = 1.0
@@ -33,14 +33,14 @@ class DesignUniformManipulatorIn:
     def to_dict(self) -> dict[str, Any]:
         n = self.n
 
-        l0: float | list[float] | Unset
-        if isinstance(self.l0, Unset):
-            l0 = UNSET
-        elif isinstance(self.l0, list):
-            l0 = self.l0
+        L0: float | list[float] | Unset
+        if isinstance(self.L0, Unset):
+            L0 = UNSET
+        elif isinstance(self.L0, list):
+            L0 = self.L0
 
         else:
-            l0 = self.l0
+            L0 = self.L0
 
         a = self.a
 
@@ -62,8 +62,8 @@ class DesignUniformManipulatorIn:
                 "n": n,
             }
         )
-        if l0 is not UNSET:
-            field_dict["L0"] = l0
+        if L0 is not UNSET:
+            field_dict["L0"] = L0
         if a is not UNSET:
             field_dict["a"] = a
         if b is not UNSET:
@@ -91,7 +91,7 @@ class DesignUniformManipulatorIn:
                 pass
             return cast(float | list[float] | Unset, data)
 
-        l0 = _parse_l0(d.pop("L0", UNSET))
+        L0 = _parse_l0(d.pop("L0", UNSET))
 
         a = d.pop("a", UNSET)
 
@@ -114,7 +114,7 @@ class DesignUniformManipulatorIn:
 
         design_uniform_manipulator_in = cls(
             n=n,
-            l0=l0,
+            L0=L0,
             a=a,
             b=b,
             k=k,

@@ -28,7 +28,8 @@ class PlotPlanRequest:
             "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
         targets (list[list[float]]): tip positions [x, y] per step (length units; 1..2000, server limit
             TENSEGRITY_MAX_TRAJECTORY_STEPS)
-        bounds (None | RestLengthBoundsIn | Unset): actuator bounds on the rest lengths; default (0.1 b_min, 4 b_max)
+        bounds (list[float | list[float]] | None | RestLengthBoundsIn | Unset): actuator bounds on the rest lengths;
+            default (0.1 b_min, 4 b_max)
         dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
         end_angles (list[float | None] | None | Unset): the last link's absolute angle per step (rad; null: free), as
             many as targets; default free
@@ -53,7 +54,7 @@ class PlotPlanRequest:
 
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
     targets: list[list[float]]
-    bounds: None | RestLengthBoundsIn | Unset = UNSET
+    bounds: list[float | list[float]] | None | RestLengthBoundsIn | Unset = UNSET
     dpi: int | Unset = 100
     end_angles: list[float | None] | None | Unset = UNSET
     format_: None | PlotPlanRequestFormatType0 | Unset = UNSET
@@ -82,9 +83,20 @@ class PlotPlanRequest:
 
             targets.append(targets_item)
 
-        bounds: dict[str, Any] | None | Unset
+        bounds: dict[str, Any] | list[float | list[float]] | None | Unset
         if isinstance(self.bounds, Unset):
             bounds = UNSET
+        elif isinstance(self.bounds, list):
+            bounds = []
+            for bounds_type_0_type_0_item_data in self.bounds:
+                bounds_type_0_type_0_item: float | list[float]
+                if isinstance(bounds_type_0_type_0_item_data, list):
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+
+                else:
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+                bounds.append(bounds_type_0_type_0_item)
+
         elif isinstance(self.bounds, RestLengthBoundsIn):
             bounds = self.bounds.to_dict()
         else:
@@ -233,20 +245,45 @@ class PlotPlanRequest:
 
             targets.append(targets_item)
 
-        def _parse_bounds(data: object) -> None | RestLengthBoundsIn | Unset:
+        def _parse_bounds(data: object) -> list[float | list[float]] | None | RestLengthBoundsIn | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
                 return data
             try:
-                if not isinstance(data, dict):
+                if not isinstance(data, list):
                     raise TypeError()
-                bounds_type_0 = RestLengthBoundsIn.from_dict(data)
+                bounds_type_0_type_0 = []
+                _bounds_type_0_type_0 = data
+                for bounds_type_0_type_0_item_data in _bounds_type_0_type_0:
 
-                return bounds_type_0
+                    def _parse_bounds_type_0_type_0_item(data: object) -> float | list[float]:
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            bounds_type_0_type_0_item_type_1 = cast(list[float], data)
+
+                            return bounds_type_0_type_0_item_type_1
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(float | list[float], data)
+
+                    bounds_type_0_type_0_item = _parse_bounds_type_0_type_0_item(bounds_type_0_type_0_item_data)
+
+                    bounds_type_0_type_0.append(bounds_type_0_type_0_item)
+
+                return bounds_type_0_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(None | RestLengthBoundsIn | Unset, data)
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                bounds_type_0_type_1 = RestLengthBoundsIn.from_dict(data)
+
+                return bounds_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float | list[float]] | None | RestLengthBoundsIn | Unset, data)
 
         bounds = _parse_bounds(d.pop("bounds", UNSET))
 

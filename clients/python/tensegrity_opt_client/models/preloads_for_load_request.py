@@ -26,13 +26,13 @@ class PreloadsForLoadRequest:
             "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
         required (float): required critical compressive load (force units)
         boundary (PreloadsForLoadRequestBoundary | Unset):  Default: PreloadsForLoadRequestBoundary.GUIDED.
-        bounds (BoundsIn | None | Unset): bounds on every L0; default (0.05 * 2b, 2b)
+        bounds (BoundsIn | list[float | list[float]] | None | Unset): bounds on every L0; default (0.05 * 2b, 2b)
     """
 
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
     required: float
     boundary: PreloadsForLoadRequestBoundary | Unset = PreloadsForLoadRequestBoundary.GUIDED
-    bounds: BoundsIn | None | Unset = UNSET
+    bounds: BoundsIn | list[float | list[float]] | None | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.bounds_in import BoundsIn  # noqa: PLC0415
@@ -50,9 +50,20 @@ class PreloadsForLoadRequest:
         if not isinstance(self.boundary, Unset):
             boundary = self.boundary.value
 
-        bounds: dict[str, Any] | None | Unset
+        bounds: dict[str, Any] | list[float | list[float]] | None | Unset
         if isinstance(self.bounds, Unset):
             bounds = UNSET
+        elif isinstance(self.bounds, list):
+            bounds = []
+            for bounds_type_0_type_0_item_data in self.bounds:
+                bounds_type_0_type_0_item: float | list[float]
+                if isinstance(bounds_type_0_type_0_item_data, list):
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+
+                else:
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+                bounds.append(bounds_type_0_type_0_item)
+
         elif isinstance(self.bounds, BoundsIn):
             bounds = self.bounds.to_dict()
         else:
@@ -107,20 +118,45 @@ class PreloadsForLoadRequest:
         else:
             boundary = PreloadsForLoadRequestBoundary(_boundary)
 
-        def _parse_bounds(data: object) -> BoundsIn | None | Unset:
+        def _parse_bounds(data: object) -> BoundsIn | list[float | list[float]] | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
                 return data
             try:
-                if not isinstance(data, dict):
+                if not isinstance(data, list):
                     raise TypeError()
-                bounds_type_0 = BoundsIn.from_dict(data)
+                bounds_type_0_type_0 = []
+                _bounds_type_0_type_0 = data
+                for bounds_type_0_type_0_item_data in _bounds_type_0_type_0:
 
-                return bounds_type_0
+                    def _parse_bounds_type_0_type_0_item(data: object) -> float | list[float]:
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            bounds_type_0_type_0_item_type_1 = cast(list[float], data)
+
+                            return bounds_type_0_type_0_item_type_1
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(float | list[float], data)
+
+                    bounds_type_0_type_0_item = _parse_bounds_type_0_type_0_item(bounds_type_0_type_0_item_data)
+
+                    bounds_type_0_type_0.append(bounds_type_0_type_0_item)
+
+                return bounds_type_0_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(BoundsIn | None | Unset, data)
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                bounds_type_0_type_1 = BoundsIn.from_dict(data)
+
+                return bounds_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(BoundsIn | list[float | list[float]] | None | Unset, data)
 
         bounds = _parse_bounds(d.pop("bounds", UNSET))
 

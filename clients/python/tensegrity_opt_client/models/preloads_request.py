@@ -12,8 +12,6 @@ if TYPE_CHECKING:
     from ..models.bounds_in import BoundsIn
     from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn
     from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn
-    from ..models.load_in import LoadIn
-    from ..models.point import Point
 
 
 T = TypeVar("T", bound="PreloadsRequest")
@@ -26,10 +24,11 @@ class PreloadsRequest:
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
             "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
-        target (Point):
-        bounds (BoundsIn | None | Unset): bounds on every rest length; default (0.1 b_min, 4 b_max)
+        target (list[float]): tip position [x, y] (length units)
+        bounds (BoundsIn | list[float | list[float]] | None | Unset): bounds on every rest length; default (0.1 b_min, 4
+            b_max)
         end_angle (float | None | Unset): absolute angle of the last link (rad), optional
-        load (LoadIn | Unset):
+        load (list[float] | Unset): the dead tip load [fx, fy] (force units)
         margin (float | Unset): required smallest eigenvalue of the joint-space Hessian (torque / rad) Default: 0.001.
         objective (PreloadsRequestObjective | Unset): nominal: least change from the chain's own rest lengths (the
             library's objective `change`); margin: largest stability margin; energy: least spring energy Default:
@@ -38,10 +37,10 @@ class PreloadsRequest:
     """
 
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
-    target: Point
-    bounds: BoundsIn | None | Unset = UNSET
+    target: list[float]
+    bounds: BoundsIn | list[float | list[float]] | None | Unset = UNSET
     end_angle: float | None | Unset = UNSET
-    load: LoadIn | Unset = UNSET
+    load: list[float] | Unset = UNSET
     margin: float | Unset = 0.001
     objective: PreloadsRequestObjective | Unset = PreloadsRequestObjective.NOMINAL
     taut: bool | Unset = False
@@ -56,11 +55,22 @@ class PreloadsRequest:
         else:
             manipulator = self.manipulator.to_dict()
 
-        target = self.target.to_dict()
+        target = self.target
 
-        bounds: dict[str, Any] | None | Unset
+        bounds: dict[str, Any] | list[float | list[float]] | None | Unset
         if isinstance(self.bounds, Unset):
             bounds = UNSET
+        elif isinstance(self.bounds, list):
+            bounds = []
+            for bounds_type_0_type_0_item_data in self.bounds:
+                bounds_type_0_type_0_item: float | list[float]
+                if isinstance(bounds_type_0_type_0_item_data, list):
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+
+                else:
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+                bounds.append(bounds_type_0_type_0_item)
+
         elif isinstance(self.bounds, BoundsIn):
             bounds = self.bounds.to_dict()
         else:
@@ -72,9 +82,9 @@ class PreloadsRequest:
         else:
             end_angle = self.end_angle
 
-        load: dict[str, Any] | Unset = UNSET
+        load: list[float] | Unset = UNSET
         if not isinstance(self.load, Unset):
-            load = self.load.to_dict()
+            load = self.load
 
         margin = self.margin
 
@@ -112,8 +122,6 @@ class PreloadsRequest:
         from ..models.bounds_in import BoundsIn  # noqa: PLC0415
         from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn  # noqa: PLC0415
         from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
-        from ..models.load_in import LoadIn  # noqa: PLC0415
-        from ..models.point import Point  # noqa: PLC0415
 
         d = dict(src_dict)
 
@@ -134,22 +142,47 @@ class PreloadsRequest:
 
         manipulator = _parse_manipulator(d.pop("manipulator"))
 
-        target = Point.from_dict(d.pop("target"))
+        target = cast(list[float], d.pop("target"))
 
-        def _parse_bounds(data: object) -> BoundsIn | None | Unset:
+        def _parse_bounds(data: object) -> BoundsIn | list[float | list[float]] | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
                 return data
             try:
-                if not isinstance(data, dict):
+                if not isinstance(data, list):
                     raise TypeError()
-                bounds_type_0 = BoundsIn.from_dict(data)
+                bounds_type_0_type_0 = []
+                _bounds_type_0_type_0 = data
+                for bounds_type_0_type_0_item_data in _bounds_type_0_type_0:
 
-                return bounds_type_0
+                    def _parse_bounds_type_0_type_0_item(data: object) -> float | list[float]:
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            bounds_type_0_type_0_item_type_1 = cast(list[float], data)
+
+                            return bounds_type_0_type_0_item_type_1
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(float | list[float], data)
+
+                    bounds_type_0_type_0_item = _parse_bounds_type_0_type_0_item(bounds_type_0_type_0_item_data)
+
+                    bounds_type_0_type_0.append(bounds_type_0_type_0_item)
+
+                return bounds_type_0_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(BoundsIn | None | Unset, data)
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                bounds_type_0_type_1 = BoundsIn.from_dict(data)
+
+                return bounds_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(BoundsIn | list[float | list[float]] | None | Unset, data)
 
         bounds = _parse_bounds(d.pop("bounds", UNSET))
 
@@ -162,12 +195,7 @@ class PreloadsRequest:
 
         end_angle = _parse_end_angle(d.pop("end_angle", UNSET))
 
-        _load = d.pop("load", UNSET)
-        load: LoadIn | Unset
-        if isinstance(_load, Unset):
-            load = UNSET
-        else:
-            load = LoadIn.from_dict(_load)
+        load = cast(list[float], d.pop("load", UNSET))
 
         margin = d.pop("margin", UNSET)
 

@@ -10,11 +10,11 @@ T = TypeVar("T", bound="RestLengthBoundsIn")
 
 @_attrs_define
 class RestLengthBoundsIn:
-    """Actuator bounds on every rest length (length units).
+    """Actuator bounds {lo, hi} on every rest length (the object form of [lo, hi]).
 
     Attributes:
-        hi (float | list[float]): upper bound (> lo): a number or 2n numbers
-        lo (float | list[float]): lower bound (> 0): a number or 2n numbers
+        hi (float | list[float]): upper bound
+        lo (float | list[float]): lower bound
     """
 
     hi: float | list[float]

@@ -17,7 +17,7 @@ class SegmentIn:
     Attributes:
         a (float): triangle half-height (length units)
         b (float): triangle half-length (length units); the segment is 2b long
-        l0 (float | list[float] | Unset): spring rest length L0 (length units): one number for both springs or the pair
+        L0 (float | list[float] | Unset): spring rest length L0 (length units): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
         k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
@@ -25,7 +25,7 @@ class SegmentIn:
 
     a: float
     b: float
-    l0: float | list[float] | Unset = 1.0
+    L0: float | list[float] | Unset = 1.0
     k: float | list[float] | Unset = 1.0
 
     def to_dict(self) -> dict[str, Any]:
@@ -33,14 +33,14 @@ class SegmentIn:
 
         b = self.b
 
-        l0: float | list[float] | Unset
-        if isinstance(self.l0, Unset):
-            l0 = UNSET
-        elif isinstance(self.l0, list):
-            l0 = self.l0
+        L0: float | list[float] | Unset
+        if isinstance(self.L0, Unset):
+            L0 = UNSET
+        elif isinstance(self.L0, list):
+            L0 = self.L0
 
         else:
-            l0 = self.l0
+            L0 = self.L0
 
         k: float | list[float] | Unset
         if isinstance(self.k, Unset):
@@ -59,8 +59,8 @@ class SegmentIn:
                 "b": b,
             }
         )
-        if l0 is not UNSET:
-            field_dict["L0"] = l0
+        if L0 is not UNSET:
+            field_dict["L0"] = L0
         if k is not UNSET:
             field_dict["k"] = k
 
@@ -86,7 +86,7 @@ class SegmentIn:
                 pass
             return cast(float | list[float] | Unset, data)
 
-        l0 = _parse_l0(d.pop("L0", UNSET))
+        L0 = _parse_l0(d.pop("L0", UNSET))
 
         def _parse_k(data: object) -> float | list[float] | Unset:
             if isinstance(data, Unset):
@@ -106,7 +106,7 @@ class SegmentIn:
         segment_in = cls(
             a=a,
             b=b,
-            l0=l0,
+            L0=L0,
             k=k,
         )
 

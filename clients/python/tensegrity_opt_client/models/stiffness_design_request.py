@@ -11,6 +11,7 @@ if TYPE_CHECKING:
     from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn
     from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn
     from ..models.rest_length_bounds_in import RestLengthBoundsIn
+    from ..models.stiffness_bound_in import StiffnessBoundIn
     from ..models.stiffness_bounds_in import StiffnessBoundsIn
 
 
@@ -25,11 +26,12 @@ class StiffnessDesignRequest:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
             "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
         target (list[float]): tip position [x, y] (length units)
-        k_desired (list[list[float]] | None | Unset): the wanted 2 x 2 stiffness (symmetric; met exactly where
+        K_desired (list[list[float]] | None | Unset): the wanted 2 x 2 stiffness (symmetric; met exactly where
             reachable, else the closest in the Frobenius norm: `exact`, `residual`)
-        bounds (None | RestLengthBoundsIn | Unset): bounds on the rest lengths; default (0.1 b_min, 4 b_max)
-        bounds_k (None | StiffnessBoundsIn | Unset): bounds on kxx, kxy, kyy
-        eig_bounds (list[float | None] | None | Unset): bounds [lo, hi] on both eigenvalues of K
+        bounds (list[float | list[float]] | None | RestLengthBoundsIn | Unset): bounds on the rest lengths; default (0.1
+            b_min, 4 b_max)
+        bounds_K (None | StiffnessBoundsIn | Unset): bounds on kxx, kxy, kyy
+        eig_bounds (list[float | None] | None | StiffnessBoundIn | Unset): bounds [lo, hi] on both eigenvalues of K
         end_angle (float | None | Unset): the last link's absolute angle (rad), optional
         load (list[float] | Unset): the dead tip load [fx, fy] (force units)
         margin (float | Unset): required smallest eigenvalue of the joint-space Hessian (torque / rad) Default: 0.001.
@@ -38,10 +40,10 @@ class StiffnessDesignRequest:
 
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
     target: list[float]
-    k_desired: list[list[float]] | None | Unset = UNSET
-    bounds: None | RestLengthBoundsIn | Unset = UNSET
-    bounds_k: None | StiffnessBoundsIn | Unset = UNSET
-    eig_bounds: list[float | None] | None | Unset = UNSET
+    K_desired: list[list[float]] | None | Unset = UNSET
+    bounds: list[float | list[float]] | None | RestLengthBoundsIn | Unset = UNSET
+    bounds_K: None | StiffnessBoundsIn | Unset = UNSET
+    eig_bounds: list[float | None] | None | StiffnessBoundIn | Unset = UNSET
     end_angle: float | None | Unset = UNSET
     load: list[float] | Unset = UNSET
     margin: float | Unset = 0.001
@@ -50,6 +52,7 @@ class StiffnessDesignRequest:
     def to_dict(self) -> dict[str, Any]:
         from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
         from ..models.rest_length_bounds_in import RestLengthBoundsIn  # noqa: PLC0415
+        from ..models.stiffness_bound_in import StiffnessBoundIn  # noqa: PLC0415
         from ..models.stiffness_bounds_in import StiffnessBoundsIn  # noqa: PLC0415
 
         manipulator: dict[str, Any]
@@ -60,45 +63,58 @@ class StiffnessDesignRequest:
 
         target = self.target
 
-        k_desired: list[list[float]] | None | Unset
-        if isinstance(self.k_desired, Unset):
-            k_desired = UNSET
-        elif isinstance(self.k_desired, list):
-            k_desired = []
-            for k_desired_type_0_item_data in self.k_desired:
+        K_desired: list[list[float]] | None | Unset
+        if isinstance(self.K_desired, Unset):
+            K_desired = UNSET
+        elif isinstance(self.K_desired, list):
+            K_desired = []
+            for k_desired_type_0_item_data in self.K_desired:
                 k_desired_type_0_item = k_desired_type_0_item_data
 
-                k_desired.append(k_desired_type_0_item)
+                K_desired.append(k_desired_type_0_item)
 
         else:
-            k_desired = self.k_desired
+            K_desired = self.K_desired
 
-        bounds: dict[str, Any] | None | Unset
+        bounds: dict[str, Any] | list[float | list[float]] | None | Unset
         if isinstance(self.bounds, Unset):
             bounds = UNSET
+        elif isinstance(self.bounds, list):
+            bounds = []
+            for bounds_type_0_type_0_item_data in self.bounds:
+                bounds_type_0_type_0_item: float | list[float]
+                if isinstance(bounds_type_0_type_0_item_data, list):
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+
+                else:
+                    bounds_type_0_type_0_item = bounds_type_0_type_0_item_data
+                bounds.append(bounds_type_0_type_0_item)
+
         elif isinstance(self.bounds, RestLengthBoundsIn):
             bounds = self.bounds.to_dict()
         else:
             bounds = self.bounds
 
-        bounds_k: dict[str, Any] | None | Unset
-        if isinstance(self.bounds_k, Unset):
-            bounds_k = UNSET
-        elif isinstance(self.bounds_k, StiffnessBoundsIn):
-            bounds_k = self.bounds_k.to_dict()
+        bounds_K: dict[str, Any] | None | Unset
+        if isinstance(self.bounds_K, Unset):
+            bounds_K = UNSET
+        elif isinstance(self.bounds_K, StiffnessBoundsIn):
+            bounds_K = self.bounds_K.to_dict()
         else:
-            bounds_k = self.bounds_k
+            bounds_K = self.bounds_K
 
-        eig_bounds: list[float | None] | None | Unset
+        eig_bounds: dict[str, Any] | list[float | None] | None | Unset
         if isinstance(self.eig_bounds, Unset):
             eig_bounds = UNSET
         elif isinstance(self.eig_bounds, list):
             eig_bounds = []
-            for eig_bounds_type_0_item_data in self.eig_bounds:
-                eig_bounds_type_0_item: float | None
-                eig_bounds_type_0_item = eig_bounds_type_0_item_data
-                eig_bounds.append(eig_bounds_type_0_item)
+            for eig_bounds_type_0_type_0_item_data in self.eig_bounds:
+                eig_bounds_type_0_type_0_item: float | None
+                eig_bounds_type_0_type_0_item = eig_bounds_type_0_type_0_item_data
+                eig_bounds.append(eig_bounds_type_0_type_0_item)
 
+        elif isinstance(self.eig_bounds, StiffnessBoundIn):
+            eig_bounds = self.eig_bounds.to_dict()
         else:
             eig_bounds = self.eig_bounds
 
@@ -124,12 +140,12 @@ class StiffnessDesignRequest:
                 "target": target,
             }
         )
-        if k_desired is not UNSET:
-            field_dict["K_desired"] = k_desired
+        if K_desired is not UNSET:
+            field_dict["K_desired"] = K_desired
         if bounds is not UNSET:
             field_dict["bounds"] = bounds
-        if bounds_k is not UNSET:
-            field_dict["bounds_K"] = bounds_k
+        if bounds_K is not UNSET:
+            field_dict["bounds_K"] = bounds_K
         if eig_bounds is not UNSET:
             field_dict["eig_bounds"] = eig_bounds
         if end_angle is not UNSET:
@@ -148,6 +164,7 @@ class StiffnessDesignRequest:
         from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn  # noqa: PLC0415
         from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
         from ..models.rest_length_bounds_in import RestLengthBoundsIn  # noqa: PLC0415
+        from ..models.stiffness_bound_in import StiffnessBoundIn  # noqa: PLC0415
         from ..models.stiffness_bounds_in import StiffnessBoundsIn  # noqa: PLC0415
 
         d = dict(src_dict)
@@ -191,22 +208,47 @@ class StiffnessDesignRequest:
                 pass
             return cast(list[list[float]] | None | Unset, data)
 
-        k_desired = _parse_k_desired(d.pop("K_desired", UNSET))
+        K_desired = _parse_k_desired(d.pop("K_desired", UNSET))
 
-        def _parse_bounds(data: object) -> None | RestLengthBoundsIn | Unset:
+        def _parse_bounds(data: object) -> list[float | list[float]] | None | RestLengthBoundsIn | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
                 return data
             try:
-                if not isinstance(data, dict):
+                if not isinstance(data, list):
                     raise TypeError()
-                bounds_type_0 = RestLengthBoundsIn.from_dict(data)
+                bounds_type_0_type_0 = []
+                _bounds_type_0_type_0 = data
+                for bounds_type_0_type_0_item_data in _bounds_type_0_type_0:
 
-                return bounds_type_0
+                    def _parse_bounds_type_0_type_0_item(data: object) -> float | list[float]:
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            bounds_type_0_type_0_item_type_1 = cast(list[float], data)
+
+                            return bounds_type_0_type_0_item_type_1
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(float | list[float], data)
+
+                    bounds_type_0_type_0_item = _parse_bounds_type_0_type_0_item(bounds_type_0_type_0_item_data)
+
+                    bounds_type_0_type_0.append(bounds_type_0_type_0_item)
+
+                return bounds_type_0_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(None | RestLengthBoundsIn | Unset, data)
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                bounds_type_0_type_1 = RestLengthBoundsIn.from_dict(data)
+
+                return bounds_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float | list[float]] | None | RestLengthBoundsIn | Unset, data)
 
         bounds = _parse_bounds(d.pop("bounds", UNSET))
 
@@ -225,9 +267,9 @@ class StiffnessDesignRequest:
                 pass
             return cast(None | StiffnessBoundsIn | Unset, data)
 
-        bounds_k = _parse_bounds_k(d.pop("bounds_K", UNSET))
+        bounds_K = _parse_bounds_k(d.pop("bounds_K", UNSET))
 
-        def _parse_eig_bounds(data: object) -> list[float | None] | None | Unset:
+        def _parse_eig_bounds(data: object) -> list[float | None] | None | StiffnessBoundIn | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -235,23 +277,33 @@ class StiffnessDesignRequest:
             try:
                 if not isinstance(data, list):
                     raise TypeError()
-                eig_bounds_type_0 = []
-                _eig_bounds_type_0 = data
-                for eig_bounds_type_0_item_data in _eig_bounds_type_0:
+                eig_bounds_type_0_type_0 = []
+                _eig_bounds_type_0_type_0 = data
+                for eig_bounds_type_0_type_0_item_data in _eig_bounds_type_0_type_0:
 
-                    def _parse_eig_bounds_type_0_item(data: object) -> float | None:
+                    def _parse_eig_bounds_type_0_type_0_item(data: object) -> float | None:
                         if data is None:
                             return data
                         return cast(float | None, data)
 
-                    eig_bounds_type_0_item = _parse_eig_bounds_type_0_item(eig_bounds_type_0_item_data)
+                    eig_bounds_type_0_type_0_item = _parse_eig_bounds_type_0_type_0_item(
+                        eig_bounds_type_0_type_0_item_data
+                    )
 
-                    eig_bounds_type_0.append(eig_bounds_type_0_item)
+                    eig_bounds_type_0_type_0.append(eig_bounds_type_0_type_0_item)
 
-                return eig_bounds_type_0
+                return eig_bounds_type_0_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(list[float | None] | None | Unset, data)
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                eig_bounds_type_0_type_1 = StiffnessBoundIn.from_dict(data)
+
+                return eig_bounds_type_0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float | None] | None | StiffnessBoundIn | Unset, data)
 
         eig_bounds = _parse_eig_bounds(d.pop("eig_bounds", UNSET))
 
@@ -273,9 +325,9 @@ class StiffnessDesignRequest:
         stiffness_design_request = cls(
             manipulator=manipulator,
             target=target,
-            k_desired=k_desired,
+            K_desired=K_desired,
             bounds=bounds,
-            bounds_k=bounds_k,
+            bounds_K=bounds_K,
             eig_bounds=eig_bounds,
             end_angle=end_angle,
             load=load,

@@ -15,7 +15,7 @@ class SweepGrid:
     """``{parameter: [values]}``: the cartesian product, in the order the keys are given (first slowest).
 
     Attributes:
-        l0 (list[float] | Unset): spring rest lengths
+        L0 (list[float] | Unset): spring rest lengths
         a (list[float] | Unset): triangle half-heights
         b (list[float] | Unset): triangle half-lengths
         dx (list[float] | Unset): tip deflections along x (equilibrium, stiffness, equilibria_count, atlas)
@@ -25,7 +25,7 @@ class SweepGrid:
         n (list[int] | Unset): segment counts
     """
 
-    l0: list[float] | Unset = UNSET
+    L0: list[float] | Unset = UNSET
     a: list[float] | Unset = UNSET
     b: list[float] | Unset = UNSET
     dx: list[float] | Unset = UNSET
@@ -35,9 +35,9 @@ class SweepGrid:
     n: list[int] | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        l0: list[float] | Unset = UNSET
-        if not isinstance(self.l0, Unset):
-            l0 = self.l0
+        L0: list[float] | Unset = UNSET
+        if not isinstance(self.L0, Unset):
+            L0 = self.L0
 
         a: list[float] | Unset = UNSET
         if not isinstance(self.a, Unset):
@@ -74,8 +74,8 @@ class SweepGrid:
         field_dict: dict[str, Any] = {}
 
         field_dict.update({})
-        if l0 is not UNSET:
-            field_dict["L0"] = l0
+        if L0 is not UNSET:
+            field_dict["L0"] = L0
         if a is not UNSET:
             field_dict["a"] = a
         if b is not UNSET:
@@ -96,7 +96,7 @@ class SweepGrid:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        l0 = cast(list[float], d.pop("L0", UNSET))
+        L0 = cast(list[float], d.pop("L0", UNSET))
 
         a = cast(list[float], d.pop("a", UNSET))
 
@@ -120,7 +120,7 @@ class SweepGrid:
         n = cast(list[int], d.pop("n", UNSET))
 
         sweep_grid = cls(
-            l0=l0,
+            L0=L0,
             a=a,
             b=b,
             dx=dx,

@@ -13,6 +13,7 @@ from ..types import UNSET, Unset
 if TYPE_CHECKING:
     from ..models.sweep_options_bounds import SweepOptionsBounds
     from ..models.sweep_options_budget import SweepOptionsBudget
+    from ..models.sweep_tension_in import SweepTensionIn
 
 
 T = TypeVar("T", bound="SweepOptions")
@@ -24,28 +25,29 @@ class SweepOptions:
     (design only).
 
         Attributes:
-            k_min (float | Unset): design: lower bound on every joint stiffness
+            K_min (float | Unset): design: lower bound on every joint stiffness
             boundary (SweepOptionsBoundary | Unset): tip boundary condition (default guided)
-            bounds (SweepOptionsBounds | Unset): design: {name: [lo, hi]}, numbers or per-segment lists
+            bounds (SweepOptionsBounds | Unset): design: {name: [lo, hi] or {lo, hi}}, numbers or per-segment lists
             budget (SweepOptionsBudget | Unset): design: {name: total}, sum over the segments <= total
             method (SweepOptionsMethod | Unset): atlas only: how each target's equilibria are found, search (default) or
                 homotopy (certified counts; chains up to the server's homotopy_max_segments)
-            tension (list[float] | Unset): design: [T_min, T_max] on the spring preloads at straight
+            tension (list[float] | SweepTensionIn | Unset): design: [T_min, T_max] (or {lo, hi}) on the spring preloads at
+                straight
             total_length (bool | float | Unset): design: total length 2 sum(b) (true: keep the initial one)
             vary (list[SweepOptionsVaryItem] | Unset): design: per-segment variables to optimise (default [k])
     """
 
-    k_min: float | Unset = UNSET
+    K_min: float | Unset = UNSET
     boundary: SweepOptionsBoundary | Unset = UNSET
     bounds: SweepOptionsBounds | Unset = UNSET
     budget: SweepOptionsBudget | Unset = UNSET
     method: SweepOptionsMethod | Unset = UNSET
-    tension: list[float] | Unset = UNSET
+    tension: list[float] | SweepTensionIn | Unset = UNSET
     total_length: bool | float | Unset = UNSET
     vary: list[SweepOptionsVaryItem] | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        k_min = self.k_min
+        K_min = self.K_min
 
         boundary: str | Unset = UNSET
         if not isinstance(self.boundary, Unset):
@@ -63,9 +65,14 @@ class SweepOptions:
         if not isinstance(self.method, Unset):
             method = self.method.value
 
-        tension: list[float] | Unset = UNSET
-        if not isinstance(self.tension, Unset):
+        tension: dict[str, Any] | list[float] | Unset
+        if isinstance(self.tension, Unset):
+            tension = UNSET
+        elif isinstance(self.tension, list):
             tension = self.tension
+
+        else:
+            tension = self.tension.to_dict()
 
         total_length: bool | float | Unset
         if isinstance(self.total_length, Unset):
@@ -83,8 +90,8 @@ class SweepOptions:
         field_dict: dict[str, Any] = {}
 
         field_dict.update({})
-        if k_min is not UNSET:
-            field_dict["K_min"] = k_min
+        if K_min is not UNSET:
+            field_dict["K_min"] = K_min
         if boundary is not UNSET:
             field_dict["boundary"] = boundary
         if bounds is not UNSET:
@@ -106,9 +113,10 @@ class SweepOptions:
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.sweep_options_bounds import SweepOptionsBounds  # noqa: PLC0415
         from ..models.sweep_options_budget import SweepOptionsBudget  # noqa: PLC0415
+        from ..models.sweep_tension_in import SweepTensionIn  # noqa: PLC0415
 
         d = dict(src_dict)
-        k_min = d.pop("K_min", UNSET)
+        K_min = d.pop("K_min", UNSET)
 
         _boundary = d.pop("boundary", UNSET)
         boundary: SweepOptionsBoundary | Unset
@@ -138,7 +146,24 @@ class SweepOptions:
         else:
             method = SweepOptionsMethod(_method)
 
-        tension = cast(list[float], d.pop("tension", UNSET))
+        def _parse_tension(data: object) -> list[float] | SweepTensionIn | Unset:
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                tension_type_0 = cast(list[float], data)
+
+                return tension_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            if not isinstance(data, dict):
+                raise TypeError()
+            tension_type_1 = SweepTensionIn.from_dict(data)
+
+            return tension_type_1
+
+        tension = _parse_tension(d.pop("tension", UNSET))
 
         def _parse_total_length(data: object) -> bool | float | Unset:
             if isinstance(data, Unset):
@@ -157,7 +182,7 @@ class SweepOptions:
                 vary.append(vary_item)
 
         sweep_options = cls(
-            k_min=k_min,
+            K_min=K_min,
             boundary=boundary,
             bounds=bounds,
             budget=budget,

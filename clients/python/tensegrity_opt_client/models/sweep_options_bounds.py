@@ -1,61 +1,89 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
+
+if TYPE_CHECKING:
+    from ..models.sweep_bounds_in import SweepBoundsIn
+
 
 T = TypeVar("T", bound="SweepOptionsBounds")
 
 
 @_attrs_define
 class SweepOptionsBounds:
-    """design: {name: [lo, hi]}, numbers or per-segment lists"""
+    """design: {name: [lo, hi] or {lo, hi}}, numbers or per-segment lists"""
 
-    additional_properties: dict[str, list[float | list[float]]] = _attrs_field(init=False, factory=dict)
+    additional_properties: dict[str, list[float | list[float]] | SweepBoundsIn] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
 
         field_dict: dict[str, Any] = {}
         for prop_name, prop in self.additional_properties.items():
-            field_dict[prop_name] = []
-            for additional_property_item_data in prop:
-                additional_property_item: float | list[float]
-                if isinstance(additional_property_item_data, list):
-                    additional_property_item = additional_property_item_data
+            if isinstance(prop, list):
+                field_dict[prop_name] = []
+                for additional_property_type_0_item_data in prop:
+                    additional_property_type_0_item: float | list[float]
+                    if isinstance(additional_property_type_0_item_data, list):
+                        additional_property_type_0_item = additional_property_type_0_item_data
 
-                else:
-                    additional_property_item = additional_property_item_data
-                field_dict[prop_name].append(additional_property_item)
+                    else:
+                        additional_property_type_0_item = additional_property_type_0_item_data
+                    field_dict[prop_name].append(additional_property_type_0_item)
+
+            else:
+                field_dict[prop_name] = prop.to_dict()
 
         return field_dict
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.sweep_bounds_in import SweepBoundsIn  # noqa: PLC0415
+
         d = dict(src_dict)
         sweep_options_bounds = cls()
 
         additional_properties = {}
         for prop_name, prop_dict in d.items():
-            additional_property = []
-            _additional_property = prop_dict
-            for additional_property_item_data in _additional_property:
 
-                def _parse_additional_property_item(data: object) -> float | list[float]:
-                    try:
-                        if not isinstance(data, list):
-                            raise TypeError()
-                        additional_property_item_type_1 = cast(list[float], data)
+            def _parse_additional_property(data: object) -> list[float | list[float]] | SweepBoundsIn:
+                try:
+                    if not isinstance(data, list):
+                        raise TypeError()
+                    additional_property_type_0 = []
+                    _additional_property_type_0 = data
+                    for additional_property_type_0_item_data in _additional_property_type_0:
 
-                        return additional_property_item_type_1
-                    except (TypeError, ValueError, AttributeError, KeyError):
-                        pass
-                    return cast(float | list[float], data)
+                        def _parse_additional_property_type_0_item(data: object) -> float | list[float]:
+                            try:
+                                if not isinstance(data, list):
+                                    raise TypeError()
+                                additional_property_type_0_item_type_1 = cast(list[float], data)
 
-                additional_property_item = _parse_additional_property_item(additional_property_item_data)
+                                return additional_property_type_0_item_type_1
+                            except (TypeError, ValueError, AttributeError, KeyError):
+                                pass
+                            return cast(float | list[float], data)
 
-                additional_property.append(additional_property_item)
+                        additional_property_type_0_item = _parse_additional_property_type_0_item(
+                            additional_property_type_0_item_data
+                        )
+
+                        additional_property_type_0.append(additional_property_type_0_item)
+
+                    return additional_property_type_0
+                except (TypeError, ValueError, AttributeError, KeyError):
+                    pass
+                if not isinstance(data, dict):
+                    raise TypeError()
+                additional_property_type_1 = SweepBoundsIn.from_dict(data)
+
+                return additional_property_type_1
+
+            additional_property = _parse_additional_property(prop_dict)
 
             additional_properties[prop_name] = additional_property
 
@@ -66,10 +94,10 @@ class SweepOptionsBounds:
     def additional_keys(self) -> list[str]:
         return list(self.additional_properties.keys())
 
-    def __getitem__(self, key: str) -> list[float | list[float]]:
+    def __getitem__(self, key: str) -> list[float | list[float]] | SweepBoundsIn:
         return self.additional_properties[key]
 
-    def __setitem__(self, key: str, value: list[float | list[float]]) -> None:
+    def __setitem__(self, key: str, value: list[float | list[float]] | SweepBoundsIn) -> None:
         self.additional_properties[key] = value
 
     def __delitem__(self, key: str) -> None:

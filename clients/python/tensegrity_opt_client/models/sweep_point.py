@@ -15,7 +15,7 @@ class SweepPoint:
     """One point: any of the parameters (the rest from the base chain; dx = dy = 0).
 
     Attributes:
-        l0 (float | Unset):
+        L0 (float | Unset):
         a (float | Unset):
         b (float | Unset):
         dx (float | Unset):
@@ -25,7 +25,7 @@ class SweepPoint:
         n (int | Unset):
     """
 
-    l0: float | Unset = UNSET
+    L0: float | Unset = UNSET
     a: float | Unset = UNSET
     b: float | Unset = UNSET
     dx: float | Unset = UNSET
@@ -35,7 +35,7 @@ class SweepPoint:
     n: int | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
-        l0 = self.l0
+        L0 = self.L0
 
         a = self.a
 
@@ -56,8 +56,8 @@ class SweepPoint:
         field_dict: dict[str, Any] = {}
 
         field_dict.update({})
-        if l0 is not UNSET:
-            field_dict["L0"] = l0
+        if L0 is not UNSET:
+            field_dict["L0"] = L0
         if a is not UNSET:
             field_dict["a"] = a
         if b is not UNSET:
@@ -78,7 +78,7 @@ class SweepPoint:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        l0 = d.pop("L0", UNSET)
+        L0 = d.pop("L0", UNSET)
 
         a = d.pop("a", UNSET)
 
@@ -95,7 +95,7 @@ class SweepPoint:
         n = d.pop("n", UNSET)
 
         sweep_point = cls(
-            l0=l0,
+            L0=L0,
             a=a,
             b=b,
             dx=dx,

@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, TypeVar
+from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
@@ -15,35 +15,51 @@ class SweepUniformManipulator:
     """The uniform base chain; a point's own n, a, b, k, L0 replace these.
 
     Attributes:
-        l0 (float | Unset): spring rest length (both springs) Default: 1.0.
+        L0 (float | list[float] | Unset): spring rest length L0 (length units): one number for both springs or the pair
+            [spring 1, spring 2] Default: 1.0.
         a (float | Unset): triangle half-height Default: 1.0.
         b (float | Unset): triangle half-length Default: 1.0.
-        k (float | Unset): spring stiffness (both springs) Default: 1.0.
+        k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
+            [spring 1, spring 2] Default: 1.0.
         n (int | Unset): number of segments Default: 4.
     """
 
-    l0: float | Unset = 1.0
+    L0: float | list[float] | Unset = 1.0
     a: float | Unset = 1.0
     b: float | Unset = 1.0
-    k: float | Unset = 1.0
+    k: float | list[float] | Unset = 1.0
     n: int | Unset = 4
 
     def to_dict(self) -> dict[str, Any]:
-        l0 = self.l0
+        L0: float | list[float] | Unset
+        if isinstance(self.L0, Unset):
+            L0 = UNSET
+        elif isinstance(self.L0, list):
+            L0 = self.L0
+
+        else:
+            L0 = self.L0
 
         a = self.a
 
         b = self.b
 
-        k = self.k
+        k: float | list[float] | Unset
+        if isinstance(self.k, Unset):
+            k = UNSET
+        elif isinstance(self.k, list):
+            k = self.k
+
+        else:
+            k = self.k
 
         n = self.n
 
         field_dict: dict[str, Any] = {}
 
         field_dict.update({})
-        if l0 is not UNSET:
-            field_dict["L0"] = l0
+        if L0 is not UNSET:
+            field_dict["L0"] = L0
         if a is not UNSET:
             field_dict["a"] = a
         if b is not UNSET:
@@ -58,18 +74,45 @@ class SweepUniformManipulator:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        l0 = d.pop("L0", UNSET)
+
+        def _parse_l0(data: object) -> float | list[float] | Unset:
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                l0_type_1 = cast(list[float], data)
+
+                return l0_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float] | Unset, data)
+
+        L0 = _parse_l0(d.pop("L0", UNSET))
 
         a = d.pop("a", UNSET)
 
         b = d.pop("b", UNSET)
 
-        k = d.pop("k", UNSET)
+        def _parse_k(data: object) -> float | list[float] | Unset:
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                k_type_1 = cast(list[float], data)
+
+                return k_type_1
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(float | list[float] | Unset, data)
+
+        k = _parse_k(d.pop("k", UNSET))
 
         n = d.pop("n", UNSET)
 
         sweep_uniform_manipulator = cls(
-            l0=l0,
+            L0=L0,
             a=a,
             b=b,
             k=k,

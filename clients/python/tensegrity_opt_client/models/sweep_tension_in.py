@@ -5,31 +5,32 @@ from typing import Any, TypeVar
 
 from attrs import define as _attrs_define
 
-T = TypeVar("T", bound="Point")
+T = TypeVar("T", bound="SweepTensionIn")
 
 
 @_attrs_define
-class Point:
-    """
+class SweepTensionIn:
+    """[T_min, T_max] on the spring preloads at straight: the object form of [lo, hi].
+
     Attributes:
-        x (float):
-        y (float):
+        hi (float): upper bound
+        lo (float): lower bound
     """
 
-    x: float
-    y: float
+    hi: float
+    lo: float
 
     def to_dict(self) -> dict[str, Any]:
-        x = self.x
+        hi = self.hi
 
-        y = self.y
+        lo = self.lo
 
         field_dict: dict[str, Any] = {}
 
         field_dict.update(
             {
-                "x": x,
-                "y": y,
+                "hi": hi,
+                "lo": lo,
             }
         )
 
@@ -38,13 +39,13 @@ class Point:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         d = dict(src_dict)
-        x = d.pop("x")
+        hi = d.pop("hi")
 
-        y = d.pop("y")
+        lo = d.pop("lo")
 
-        point = cls(
-            x=x,
-            y=y,
+        sweep_tension_in = cls(
+            hi=hi,
+            lo=lo,
         )
 
-        return point
+        return sweep_tension_in
