@@ -9,7 +9,7 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from figures import check_png, check_svg  # noqa: E402
+from figures import check_png, check_svg, png_size  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -38,6 +38,18 @@ BODIES = {
     "map": {"manipulator": M4, "param_x": "k", "values_x": {"start": 0.5, "stop": 2.0, "num": 4},
             "param_y": "L0", "values_y": [0.5, 1.0, 1.5]},
 }
+
+
+def test_api_and_cli_write_pngs_of_the_same_resolution(client, tmp_path):
+    import tensegrity_opt as to
+    from tensegrity_opt.applications import cli, plots
+
+    r = client.post("/v1/plots/torque", json={"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}], "num": 21})
+    assert r.status_code == 200, r.text
+    out = tmp_path / "torque.png"
+    assert cli.main(["plot", "torque", "--num", "21", "-o", str(out)]) == 0       # the same figure, its defaults
+    w, h = plots.plot_torque(to.Segment(1.0, 1.0, 1.0, 1.0), num=21).get_size_inches()
+    assert png_size(r.content) == png_size(out.read_bytes()) == (round(w * plots.DPI), round(h * plots.DPI))
 
 
 @pytest.mark.slow

@@ -14,7 +14,7 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from figures import check_png, check_svg  # noqa: E402
+from figures import check_png, check_svg, png_size  # noqa: E402
 
 import tensegrity_opt as to  # noqa: E402
 from tensegrity_opt.applications import plots  # noqa: E402
@@ -34,6 +34,15 @@ def test_save_chooses_the_format_by_suffix(tmp_path):
     assert e.value.field == "format"
     check_png(plots.save(fig, tmp_path / "FIG.PNG").read_bytes())
     check_svg(plots.save(fig, tmp_path / "fig.svg").read_bytes())
+
+
+def test_png_resolution_defaults_to_one_constant(tmp_path):
+    fig = plots.plot_torque(to.Segment(1.0, 1.0), num=11)
+    w, h = fig.get_size_inches()
+    want = (round(w * plots.DPI), round(h * plots.DPI))
+    assert png_size(plots.render(fig, "png")) == want
+    assert png_size(plots.save(fig, tmp_path / "t.png").read_bytes()) == want
+    assert png_size(plots.render(fig, "png", dpi=50)) == (round(w * 50), round(h * 50))
 
 
 def test_svg_bytes_are_reproducible():
