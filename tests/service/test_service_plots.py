@@ -48,8 +48,27 @@ def test_api_and_cli_write_pngs_of_the_same_resolution(client, tmp_path):
     assert r.status_code == 200, r.text
     out = tmp_path / "torque.png"
     assert cli.main(["plot", "torque", "--num", "21", "-o", str(out)]) == 0       # the same figure, its defaults
+    assert png_size(r.content) == png_size(out.read_bytes())
     w, h = plots.plot_torque(to.Segment(1.0, 1.0, 1.0, 1.0), num=21).get_size_inches()
-    assert png_size(r.content) == png_size(out.read_bytes()) == (round(w * plots.DPI), round(h * plots.DPI))
+    assert png_size(r.content) == (round(w * plots.DPI), round(h * plots.DPI))
+
+
+def test_branch_figure_axes_have_one_default_on_every_interface():
+    import argparse
+    import inspect
+
+    from service.schemas.plots import PlotBranchRequest
+    from tensegrity_opt.applications import plots
+    from tensegrity_opt.applications.cli.plot import add_plot_parser
+
+    parser = argparse.ArgumentParser()
+    add_plot_parser(parser.add_subparsers(dest="command"))
+    args = parser.parse_args(["plot", "branch", "-o", "b.png"])
+    sig = inspect.signature(plots.plot_branches).parameters
+    fields = PlotBranchRequest.model_fields
+    assert (args.x, args.y) == (sig["x"].default, sig["y"].default) == (fields["x"].default, fields["y"].default) \
+        == ("t", "phi")
+    assert args.dpi == plots.DPI == PlotBranchRequest.model_fields["dpi"].default
 
 
 @pytest.mark.slow
