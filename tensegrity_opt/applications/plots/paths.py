@@ -236,16 +236,16 @@ def _morse_handles(indices: set[int]) -> tuple[list, list]:
     return hs, ls
 
 
-def _crop_window(items: list[Branch], name: str, crop: float) -> tuple[float, float] | None:
-    """The range of quantity ``name`` that shows every event and every branch's start with ``crop`` times their
-    span either side, within the data's range; ``None`` when no branch has an event or the window holds every
+def _crop_window(items: list[Branch], crop: float) -> tuple[float, float] | None:
+    """The range of ``t`` that holds every event and every branch's start with ``crop`` times their span either
+    side, within the branches' range of ``t``; ``None`` when no branch has an event or the window holds every
     point."""
-    marks = [_event_xy(br, e, name) for br in items for e in br.events]
+    marks = [float(e.t) for br in items for e in br.events]
     if not marks:
         return None
-    marks += [float(_branch_xy(br, name)[0]) for br in items if len(br)]
+    marks += [float(br.t[0]) for br in items if len(br)]
     marks = [v for v in marks if math.isfinite(v)]
-    data = np.concatenate([_branch_xy(br, name) for br in items])
+    data = np.concatenate([np.asarray(br.t, float) for br in items])
     data = data[np.isfinite(data)]
     if not marks or not data.size:
         return None
@@ -258,20 +258,19 @@ def _crop_window(items: list[Branch], name: str, crop: float) -> tuple[float, fl
     return lo, hi
 
 
-def _clipped_range(runs: list, lo: float, hi: float, along: int) -> tuple[float, float] | None:
-    """The range of the other coordinate of the polylines ``runs`` (``(k, x, y)``) within ``lo <= coordinate
-    along <= hi`` (``along``: 0 for x, 1 for y), the pieces crossing a bound cut there."""
+def _shown_range(lines: list[tuple[np.ndarray, np.ndarray]], lo: float, hi: float) -> tuple[float, float] | None:
+    """The range of the values ``v`` of the polylines ``(v, t)`` where ``lo <= t <= hi``, a piece crossing a bound
+    cut there."""
     vals: list[float] = []
-    for _, xs, ys in runs:
-        a, b = (xs, ys) if along == 0 else (ys, xs)
-        inside = (a >= lo) & (a <= hi)
-        vals += b[inside].tolist()
-        for i in range(a.size - 1):
+    for v, t in lines:
+        inside = (t >= lo) & (t <= hi)
+        vals += v[inside].tolist()
+        for i in range(t.size - 1):
             for edge in (lo, hi):
-                if (a[i] - edge) * (a[i + 1] - edge) < 0:
-                    f = (edge - a[i]) / (a[i + 1] - a[i])
-                    vals.append(float(b[i] + f * (b[i + 1] - b[i])))
-    vals = [v for v in vals if math.isfinite(v)]
+                if (t[i] - edge) * (t[i + 1] - edge) < 0:
+                    f = (edge - t[i]) / (t[i + 1] - t[i])
+                    vals.append(float(v[i] + f * (v[i + 1] - v[i])))
+    vals = [x for x in vals if math.isfinite(x)]
     return (min(vals), max(vals)) if vals else None
 
 
@@ -296,10 +295,10 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
     By default the diagram is the end angle ``phi_n = q_1 + ... + q_n`` against the control parameter ``t``,
     a bifurcation diagram: the straight chain lies on ``phi_n = 0``, each pitchfork's two mirror branches
     (``q -> -q``) leave it with opposite signs, and ``phi_n`` is a response under every control (a tip
-    force or deflection is ``t`` itself, or its negative, under a load or a displacement along it). The axis
-    showing ``t`` (else the horizontal one) is cut ``crop`` times the events' span past the first and the
-    last event (a branch traced to ``t ~ 70`` would squeeze its events into a corner); the other axis fits
-    what is shown. A branch along which the drawn quantity does not change says so in the axes.
+    force or deflection is ``t`` itself, or its negative, under a load or a displacement along it). The
+    diagram shows the points whose ``t`` lies within ``crop`` times the events' span (from the branches'
+    starts to the last event) of them, whatever the axes: a branch traced to ``t ~ 70`` would squeeze its
+    events into a corner. A branch along which the drawn quantity does not change says so in the axes.
 
     Parameters
     ----------
@@ -312,8 +311,8 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
         from the start, ``phi`` the end angle, ``energy``, ``s``) or ``"q<i>"`` (joint ``i``, 1-based).
         Default: ``phi`` against ``t``.
     crop : float or None
-        Margin past the events, as a fraction of their span (default :data:`BRANCH_CROP`); ``None`` shows
-        every point. Only the limits change: the artists hold every point.
+        Margin in ``t`` past the events, as a fraction of their span (default :data:`BRANCH_CROP`); ``None``
+        shows every point. Only the axes' limits change: the artists hold every point.
 
     Notes
     -----
@@ -334,11 +333,8 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
     if y in ("t", "fx", "fy", "energy", "phi") or x in ("fx", "fy"):
         ax.axhline(0.0, color="0.85", lw=0.8, zorder=0)
     indices: set[int] = set()
-    runs = []
     for b, br in enumerate(items):
-        runs_b = _morse_runs(br, x, y)
-        runs += runs_b
-        indices |= _draw_runs(ax, runs_b, f"branch-{b}")
+        indices |= _draw_runs(ax, _morse_runs(br, x, y), f"branch-{b}")
     handles, labels = _morse_handles(indices)
     counts = {}
     for kind, style in EVENT_STYLES.items():
@@ -352,17 +348,17 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
         line.set_gid(f"events-{kind}")
         handles.append(Line2D([], [], ls="none", **kw))
         labels.append(f"{style['label']} ({len(pts)})")
-    along = 1 if (y == "t" and x != "t") else 0
-    window = None if crop is None else _crop_window(items, (x, y)[along], float(crop))
-    if window is not None:
-        other = _clipped_range(runs, window[0], window[1], along)
-        marks = [(_event_xy(br, e, x), _event_xy(br, e, y)) for br in items for e in br.events]
-        ov = [p[1 - along] for p in marks if window[0] <= p[along] <= window[1] and math.isfinite(p[1 - along])]
-        if other is not None or ov:
-            olo = min([*([other[0]] if other else []), *ov])
-            ohi = max([*([other[1]] if other else []), *ov])
-            (ax.set_ylim if along == 0 else ax.set_xlim)(*_padded(olo, ohi))
-        (ax.set_xlim if along == 0 else ax.set_ylim)(*_padded(*window, frac=0.02))
+    window = None if crop is None else _crop_window(items, float(crop))
+    if window is not None:                  # each axis: what the branches show for t in the window
+        for name, set_lim in ((x, ax.set_xlim), (y, ax.set_ylim)):
+            if name == "t":
+                set_lim(*_padded(*window, frac=0.02))
+                continue
+            lines = [(v, t) for br in items for _, v, t in _morse_runs(br, name, "t")]
+            lines += [(np.array([_event_xy(br, e, name)]), np.array([e.t])) for br in items for e in br.events]
+            shown = _shown_range(lines, *window)
+            if shown is not None:
+                set_lim(*_padded(*shown))
     for name in {x, y} - {"t", "s"}:
         vals = np.concatenate([_branch_xy(br, name) for br in items])
         vals = vals[np.isfinite(vals)]

@@ -106,6 +106,9 @@ def test_default_branch_figure_is_a_response_against_the_load_cut_past_the_event
     assert ylo < ev[:, 1].min() and ev[:, 1].max() < yhi and yhi - ylo < 4.0
     assert "end angle" in ax.get_ylabel() and ax.get_ylabel().endswith("(rad)")
     assert ax.get_xlabel().endswith("(force, stiffness × length)")
+    # whatever the axes, the window in t: Fx against dx (Fig. 6's axes) shows Fx down to about -1.25 last, not -14
+    f6 = plots.plot_branches(diagram, PAPER, x="dx", y="fx").axes[0]
+    assert -1.5 * last <= f6.get_ylim()[0] < -last and f6.get_xlim()[1] > 3.0
     # the full trace is one keyword away, and every quantity still an option
     full = plots.plot_branches(diagram, PAPER, y="fx", crop=None).axes[0]
     assert full.get_xlim()[1] > 10.0
