@@ -91,6 +91,15 @@ def test_docs_figures_are_committed_small_and_referenced():
         check_png(png.read_bytes())
         assert png.stat().st_size <= 150_000, name
         assert f"img/{name}.png" in text and name in mod.FIGURES, name
+    # every figure kind's default: its PNG, made by the command the page shows
+    from tensegrity_opt.applications.cli.plot import KINDS
+
+    assert {k.replace("-", "_") for k in KINDS} <= set(mod.DEFAULTS)
+    for kind in mod.DEFAULTS:
+        png = ROOT / "docs" / "img" / f"default_{kind}.png"
+        check_png(png.read_bytes())
+        assert png.stat().st_size <= 150_000, kind
+        assert f"img/default_{kind}.png" in text and mod.default_command(kind) in text, kind
 
 
 #: The library functions a figure may call: closed-form geometry that draws (the landscape's reachable region
