@@ -1,9 +1,11 @@
-"""The figures of ``docs/figures.md``: our versions of the paper's Figs. 2, 4, 5 and 6, and a few beyond it.
+"""The figures of ``docs/figures.md``: our versions of the paper's Figs. 2, 4, 5 and 6, a few beyond it, and every
+figure kind's default as its command draws it.
 
 Run from the repository root::
 
-    python docs/figures.py            # writes docs/img/<name>.png (110 dpi, a 256-colour palette, each <= 150 kB)
+    python docs/figures.py            # writes docs/img/<name>.png (plots.DPI, a 256-colour palette, each <= 150 kB)
     python docs/figures.py fig6_curve map     # only these
+    python docs/figures.py default_branch     # one default: `tensegrity-opt plot branch -o ...`, as DEFAULTS says
 
 Every figure's result is computed by the library (``tensegrity_opt``) and drawn by
 ``tensegrity_opt.applications.plots``; the parameters are the paper's (n = 4, a/b = 1, L0/b = 1,
@@ -23,11 +25,11 @@ if str(ROOT) not in sys.path:
 
 import tensegrity_opt as to  # noqa: E402
 from tensegrity_opt.analyses.equilibria.landscape import landscape_span  # noqa: E402
-from tensegrity_opt.applications import plots  # noqa: E402
+from tensegrity_opt.applications import cli, plots  # noqa: E402
 from tensegrity_opt.applications.sweeps import critical_load_map  # noqa: E402
 
 OUT = ROOT / "docs" / "img"
-DPI = 110
+DPI = plots.DPI
 MAX_BYTES = 150_000
 PAPER = to.Manipulator.uniform(4, a=1.0, b=1.0, k=1.0, L0=1.0)
 
@@ -105,6 +107,45 @@ def map():  # noqa: A001 - the figure's name
 FIGURES = {f.__name__: f for f in (fig2_torque, fig4_landscape, fig4_landscape_q1q2, fig5_landscape, fig6_curve,
                                     shapes, branch, atlas, map)}
 
+#: Every figure kind's default (``tensegrity-opt plot --help``), drawn by its command: ``default_<name>.png`` is
+#: ``tensegrity-opt plot <these arguments> -o default_<name>.png``, at the command's own resolution. ``map``,
+#: ``plan`` and ``simulation`` need their inputs (the examples of ``tensegrity-opt plot KIND --help``); the
+#: branch diagram also with ``--depth 2`` and on the axes of the paper's Fig. 6.
+DEFAULTS = {
+    "curve": ["curve"],
+    "landscape": ["landscape"],
+    "shapes": ["shapes"],
+    "torque": ["torque"],
+    "map": ["map", "--x", "k", "0.5", "2", "16", "--y", "L0", "0.5", "2.5", "21"],
+    "branch": ["branch"],
+    "branch_depth2": ["branch", "--depth", "2"],
+    "branch_fig6": ["branch", "--depth", "2", "--x", "dx", "--y", "fx"],
+    "limit_load": ["limit-load"],
+    "boundary": ["boundary"],
+    "atlas": ["atlas"],
+    "plan": ["plan", "--line", "7.9", "0.2", "7.3", "1.4", "13", "--margin", "0.05"],
+    "simulation": ["simulation", "--n", "3", "--a", "0.5", "--load-cycle", "0.3", "--steps", "121"],
+}
+
+
+def default_command(name: str) -> str:
+    """The command line that draws ``default_<name>.png``."""
+    return " ".join(["tensegrity-opt", "plot", *DEFAULTS[name], "-o", f"default_{name}.png"])
+
+
+def _draw(name: str) -> Path:
+    """Write ``docs/img/<name>.png``: a figure of :data:`FIGURES`, or (``default_<kind>``) the command's own."""
+    path = OUT / f"{name}.png"
+    if name in FIGURES:
+        return plots.save(FIGURES[name](), path, dpi=DPI)
+    kind = name.removeprefix("default_")
+    if cli.main(["plot", *DEFAULTS[kind], "-o", str(path)]) != 0:
+        raise SystemExit(f"{default_command(kind)} failed")
+    return path
+
+
+NAMES = [*FIGURES, *(f"default_{k}" for k in DEFAULTS)]
+
 
 def _palette(path: Path) -> None:
     """Rewrite the PNG with a 256-colour palette (a third of the bytes; the figures have few colours)."""
@@ -117,11 +158,11 @@ def _palette(path: Path) -> None:
 
 def main(names: list[str]) -> int:
     OUT.mkdir(parents=True, exist_ok=True)
-    for name in names or list(FIGURES):
-        if name not in FIGURES:
-            print(f"unknown figure {name!r}; one of {', '.join(FIGURES)}", file=sys.stderr)
+    for name in names or NAMES:
+        if name not in NAMES:
+            print(f"unknown figure {name!r}; one of {', '.join(NAMES)}", file=sys.stderr)
             return 2
-        path = plots.save(FIGURES[name](), OUT / f"{name}.png", dpi=DPI)
+        path = _draw(name)
         _palette(path)
         size = path.stat().st_size
         print(f"wrote {path.relative_to(ROOT)} ({size} bytes)")

@@ -2,7 +2,8 @@
 
 Requests are strict (JSON numbers only, no NaN/Infinity, unknown fields refused). Every request
 may carry ``format`` (``"png"`` or ``"svg"``; when absent the ``Accept`` header decides, PNG by
-default) and ``dpi`` (PNG resolution). The answers are images, not JSON.
+default) and ``dpi`` (PNG resolution, default ``tensegrity_opt.applications.plots.DPI``, the command line's
+too). The answers are images, not JSON.
 """
 
 from __future__ import annotations
@@ -10,6 +11,9 @@ from __future__ import annotations
 from typing import Annotated, Any, Literal, Union
 
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
+
+from tensegrity_opt.applications.plots.paths import BRANCH_DEFAULT_X, BRANCH_DEFAULT_Y, BRANCH_QUANTITIES
+from tensegrity_opt.applications.plots.style import DPI
 
 from . import common as s
 from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
@@ -32,7 +36,8 @@ MIN_DESIGN_VALUE = 1.0e-6
 MAX_DESIGN_VALUE = 1.0e6
 
 ImageFormat = Literal["png", "svg"]
-Dpi = Annotated[int, Field(ge=30, le=200, description="PNG resolution in dots per inch (30..200)"),
+Dpi = Annotated[int, Field(ge=30, le=200, description=f"PNG resolution in dots per inch (30..200; default {DPI}, "
+                                                       "the command line's too)"),
               BeforeValidator(s.integral)]
 DesignParam = Literal["a", "b", "k", "L0"]
 DesignValue = Annotated[float, Field(ge=MIN_DESIGN_VALUE, le=MAX_DESIGN_VALUE, allow_inf_nan=False)]
@@ -42,7 +47,7 @@ class _PlotRequest(BaseModel):
     format: ImageFormat | None = Field(
         None, description='"png" or "svg"; when absent the Accept header decides (image/svg+xml or image/png), '
                           "PNG by default")
-    dpi: Dpi = 100
+    dpi: Dpi = DPI
 
 
 class MapValuesRange(s.RangeIn):
@@ -144,7 +149,7 @@ class PlotMapRequest(_PlotRequest):
 # ---------------------------------------------------------------------------- loading paths
 #: Quantities a branch diagram puts on an axis (``tensegrity_opt.applications.plots.BRANCH_QUANTITIES``)
 #: and ``q1``, ``q2``, ... (a joint angle, 1-based).
-BranchQuantity = Annotated[str, Field(pattern=r"^(t|fx|fy|dx|dy|x|y|u|energy|s|q[1-9][0-9]{0,2})$")]
+BranchQuantity = Annotated[str, Field(pattern=rf"^({'|'.join(BRANCH_QUANTITIES)}|q[1-9][0-9]{{0,2}})$")]
 
 
 class PlotBranchRequest(_PlotRequest, _BranchFields):
@@ -153,7 +158,7 @@ class PlotBranchRequest(_PlotRequest, _BranchFields):
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": s.PAPER_CHAIN, "start": {"q": [0.0, 0.0, 0.0, 0.0]},
-                      "control": {"kind": "guided", "direction": [-1.0, 0.0]}, "t_max": 2.0, "x": "t", "y": "fy"}]})
+                      "control": {"kind": "guided", "direction": [-1.0, 0.0]}, "t_max": 2.0}]})
 
     stop_at: Literal["stability_loss", "event"] | None = Field(
         None, description="one branch only: stop after the first event where stability is lost, or any event")
@@ -162,9 +167,12 @@ class PlotBranchRequest(_PlotRequest, _BranchFields):
     depth: Annotated[int, Field(ge=0, le=MAX_DEPTH), BeforeValidator(s.integral)] | None = Field(
         None, description=f"null: one branch; a number: the bifurcation diagram to this many switches (0..{MAX_DEPTH})")
     max_branches: s.Int = Field(24, ge=1, le=MAX_BRANCHES, description="with depth: at most this many branches")
-    x: BranchQuantity = Field("t", description="horizontal axis: t, fx, fy, dx, dy, x, y (tip), u (tip displacement "
-                                               "along the control direction), energy, s (arclength) or q1..qn")
-    y: BranchQuantity = Field("fx", description="vertical axis, as x")
+    x: BranchQuantity = Field(BRANCH_DEFAULT_X, description=(
+        "horizontal axis: t, fx, fy, dx, dy, x, y (tip), u (tip displacement along the control direction), phi (end "
+        "angle q1 + ... + qn), energy, s (arclength) or q1..qn"))
+    y: BranchQuantity = Field(BRANCH_DEFAULT_Y, description=(
+        "vertical axis, as x; default phi against t: a bifurcation diagram, the axis of t cut a margin past the "
+        "events"))
 
 
 class PlotLimitLoadRequest(_PlotRequest, _LimitLoadFields):

@@ -114,7 +114,7 @@ def plot_boundary_task(req: ps.PlotBoundaryRequest, deadline: float) -> Any:
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
-    return plots.plot_boundary(find_stability_boundary(req, deadline), m=m, control=req.control.kind)
+    return plots.plot_boundary(find_stability_boundary(req, deadline), m=m)
 
 
 @_rendered

@@ -9,7 +9,7 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from figures import check_png, check_svg  # noqa: E402
+from figures import check_png, check_svg, png_size  # noqa: E402
 
 
 @pytest.fixture(scope="module")
@@ -38,6 +38,37 @@ BODIES = {
     "map": {"manipulator": M4, "param_x": "k", "values_x": {"start": 0.5, "stop": 2.0, "num": 4},
             "param_y": "L0", "values_y": [0.5, 1.0, 1.5]},
 }
+
+
+def test_api_and_cli_write_pngs_of_the_same_resolution(client, tmp_path):
+    import tensegrity_opt as to
+    from tensegrity_opt.applications import cli, plots
+
+    r = client.post("/v1/plots/torque", json={"segments": [{"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}], "num": 21})
+    assert r.status_code == 200, r.text
+    out = tmp_path / "torque.png"
+    assert cli.main(["plot", "torque", "--num", "21", "-o", str(out)]) == 0       # the same figure, its defaults
+    assert png_size(r.content) == png_size(out.read_bytes())
+    w, h = plots.plot_torque(to.Segment(1.0, 1.0, 1.0, 1.0), num=21).get_size_inches()
+    assert png_size(r.content) == (round(w * plots.DPI), round(h * plots.DPI))
+
+
+def test_branch_figure_axes_have_one_default_on_every_interface():
+    import argparse
+    import inspect
+
+    from service.schemas.plots import PlotBranchRequest
+    from tensegrity_opt.applications import plots
+    from tensegrity_opt.applications.cli.plot import add_plot_parser
+
+    parser = argparse.ArgumentParser()
+    add_plot_parser(parser.add_subparsers(dest="command"))
+    args = parser.parse_args(["plot", "branch", "-o", "b.png"])
+    sig = inspect.signature(plots.plot_branches).parameters
+    fields = PlotBranchRequest.model_fields
+    assert (args.x, args.y) == (sig["x"].default, sig["y"].default) == (fields["x"].default, fields["y"].default) \
+        == ("t", "phi")
+    assert args.dpi == plots.DPI == PlotBranchRequest.model_fields["dpi"].default
 
 
 @pytest.mark.slow

@@ -20,6 +20,12 @@ def check_png(data: bytes) -> None:
     assert data[:8] == PNG_MAGIC
 
 
+def png_size(data: bytes) -> tuple[int, int]:
+    """The width and height in pixels of a PNG (its IHDR chunk)."""
+    check_png(data)
+    return int.from_bytes(data[16:20], "big"), int.from_bytes(data[20:24], "big")
+
+
 def check_svg(data: bytes) -> ET.Element:
     root = ET.fromstring(data)
     assert root.tag == SVG_TAG

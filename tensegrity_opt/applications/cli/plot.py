@@ -46,6 +46,8 @@ from ...analyses.equilibria.landscape import energy_landscape, landscape_span
 from ...analyses.paths.curves import force_deflection
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
+from ..plots.paths import BRANCH_DEFAULT_X, BRANCH_DEFAULT_Y  # no matplotlib: it is imported by each figure
+from ..plots.style import DPI
 from ..sweeps.critical_map import critical_load_map
 from ..sweeps.spec import DESIGN_VARIABLES
 from .common import (
@@ -76,7 +78,7 @@ KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load"
          "simulation")
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
-                  "direction), energy, s (arclength) or q1..qn (a joint angle)")
+                  "direction), phi (end angle q1 + ... + qn), energy, s (arclength) or q1..qn (a joint angle)")
 
 
 def _output(value: str) -> str:
@@ -90,7 +92,7 @@ def _common(sp: argparse.ArgumentParser) -> None:
     add_analysis_options(sp, "print JSON instead of a line of text")
     sp.add_argument("-o", "--output", type=_output, required=True, metavar="FIG.png|FIG.svg",
                     help="figure file; PNG or SVG by its suffix")
-    sp.add_argument("--dpi", type=float, default=150.0, help="resolution of a PNG (dots per inch)")
+    sp.add_argument("--dpi", type=float, default=float(DPI), help="resolution of a PNG (dots per inch)")
 
 
 def _axis(spec: list[str], name: str) -> tuple[str, np.ndarray]:
@@ -206,7 +208,7 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
 def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     b = boundary_from_args(args, m)
-    fig = plots.plot_boundary(b, m=m, control=args.control)
+    fig = plots.plot_boundary(b, m=m)
     return _render(args, fig, "boundary", {"boundary": str(b.kind), "points": int(np.size(b.p)),
                                            "cusps": len(list(b.cusps or [])), "status": b.status})
 
@@ -239,8 +241,9 @@ def _cmd_simulation(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
 def _add_branch_plot_options(k: argparse.ArgumentParser) -> None:
     """The ``branch`` command's options and the diagram's axes."""
     add_branch_options(k)
-    k.add_argument("--x", default="t", help=f"horizontal axis: {_QUANTITY_HELP}")
-    k.add_argument("--y", default="fx", help="vertical axis, as --x")
+    k.add_argument("--x", default=BRANCH_DEFAULT_X, help=f"horizontal axis: {_QUANTITY_HELP}")
+    k.add_argument("--y", default=BRANCH_DEFAULT_Y, help="vertical axis, as --x (default: the end angle, a bifurcation "
+                                                  "diagram; the axis of t shows a margin past the events)")
 
 
 #: The kinds that draw the result of another command, with that command's options: ``(kind, help, options, func)``.

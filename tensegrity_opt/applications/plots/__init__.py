@@ -5,8 +5,9 @@ stability atlas, and the control layer (rest-length plans, simulations).
 Every ``plot_*`` function draws a result the caller computed with the library (computing stays with the
 caller: the command line, the service, the user's script; no figure function runs an analysis) and returns a
 :class:`matplotlib.figure.Figure` on an Agg canvas; :func:`save` writes it as PNG or SVG (from the file
-suffix) and :func:`render` returns the bytes. Each takes the result first, then the chain ``m`` (for the
-title; where it is optional, a figure without it has no chain line), then its options::
+suffix; a PNG at :data:`DPI` dots per inch unless told otherwise) and :func:`render` returns the bytes. Each
+takes the result first, then the chain ``m`` (for the title; where it is optional, a figure without it has no
+chain line), then its options::
 
     c = to.force_deflection(m, np.linspace(0.0, 2.0, 41))
     plots.save(plots.plot_curve(c, m), "curve.png")
@@ -35,12 +36,13 @@ equilibria)
 :func:`plot_map`            critical load ``P = -Fx0`` over two design parameters (blank where
 (``CriticalLoadMap``)       :func:`~tensegrity_opt.critical_force` refused the design)
 :func:`plot_branches`       branch diagrams of :func:`~tensegrity_opt.trace_branch` /
-(``Branch``, branches)      :func:`~tensegrity_opt.bifurcation_diagram`: pieces coloured by Morse index
+(``Branch``, branches)      :func:`~tensegrity_opt.bifurcation_diagram`: by default the end angle against the
+                            load parameter, cut a margin past the events; pieces coloured by Morse index
                             (stable solid, unstable dashed), folds / branch points / joint limits marked
 :func:`plot_limit_load`     the load path of :func:`~tensegrity_opt.limit_load` (load against the tip
 (``LimitLoad``)             displacement along it), the limit point and the quasi-buckling load marked
-:func:`plot_boundary`       a stability boundary (critical ``t`` against the second parameter ``p``),
-(``StabilityBoundary``)     cusps marked
+:func:`plot_boundary`       a stability boundary (critical ``t`` against the second parameter ``p``, in
+(``StabilityBoundary``)     its unit), cusps marked
 :func:`plot_atlas`          the stability atlas of :func:`~tensegrity_opt.stability_atlas`: the number of
 (``StabilityAtlas``)        stable equilibria over ``(dx, dy)`` (discrete colours), the switch and
                             branch-end curves with their crossings
@@ -82,7 +84,7 @@ that they can be found again (tests read the data back from them):
   ``"critical-load"`` (QuadMesh, array ``load[iy, ix]``), ``"critical-load-contours"``, ``"condition4"``
   (the line ``K = 0``), ``"design"``;
 * branches: ``"branch-<b>-morse<k>-<j>"`` (branch ``b``'s ``j``-th piece, of Morse index ``k``),
-  ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"``; limit load:
+  ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"``, ``"constant-note"``; limit load:
   ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"``, ``"quasi-buckling-level"``,
   ``"path-end"``; boundary: ``"boundary"``, ``"cusps"``;
 * atlas: ``"n_stable"`` (QuadMesh, masked ``n_stable[j, i]``), ``"unreachable"``, ``"failed"`` (cells),
@@ -96,7 +98,7 @@ that they can be found again (tests read the data back from them):
 
 from __future__ import annotations
 
-from .control import CONTROL_STYLES, MARGIN_UNIT, plot_preload_plan, plot_simulation
+from .control import CONTROL_STYLES, MARGIN_UNIT, PLAN_STYLES, plot_preload_plan, plot_simulation
 from .curves import JUMP_STYLES, curve_breaks, jump_kind, jump_label, plot_curve
 from .equilibria import (
     distinct_segments,
@@ -113,9 +115,14 @@ from .geometry import chain_geometry
 from .maps import PARAM_LABELS, plot_map
 from .paths import (
     ATLAS_STYLES,
+    BOUNDARY_PARAMETER_LABELS,
+    BRANCH_CROP,
+    BRANCH_DEFAULT_X,
+    BRANCH_DEFAULT_Y,
     BRANCH_QUANTITIES,
     EVENT_STYLES,
     MORSE_COLORS,
+    boundary_parameter_label,
     branch_quantity_label,
     morse_color,
     plot_atlas,
@@ -123,12 +130,24 @@ from .paths import (
     plot_branches,
     plot_limit_load,
 )
-from .style import ENERGY_UNIT, FORCE_UNIT, FORMATS, MAP_PARAMS, STABILITY_COLORS, chain_label, new_figure, render, save
+from .style import (
+    DPI,
+    ENERGY_UNIT,
+    FORCE_UNIT,
+    FORMATS,
+    MAP_PARAMS,
+    STABILITY_COLORS,
+    chain_label,
+    new_figure,
+    render,
+    save,
+)
 
 __all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "plot_branches",
            "plot_limit_load", "plot_boundary", "plot_atlas", "plot_preload_plan", "plot_simulation", "save",
            "render", "new_figure", "chain_geometry", "chain_label", "curve_breaks", "jump_kind", "jump_label",
            "landscape_region", "physical_range", "segment_label", "stiffness_text", "torque_zeros",
-           "distinct_segments", "branch_quantity_label", "morse_color", "FORMATS", "STABILITY_COLORS", "MAP_PARAMS",
-           "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT", "MARGIN_UNIT", "JUMP_STYLES", "BRANCH_QUANTITIES",
-           "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES", "CONTROL_STYLES"]
+           "distinct_segments", "branch_quantity_label", "boundary_parameter_label", "morse_color", "FORMATS", "DPI",
+           "STABILITY_COLORS", "MAP_PARAMS", "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT", "MARGIN_UNIT", "JUMP_STYLES",
+           "BRANCH_QUANTITIES", "BRANCH_DEFAULT_X", "BRANCH_DEFAULT_Y", "BRANCH_CROP", "BOUNDARY_PARAMETER_LABELS",
+           "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES", "CONTROL_STYLES", "PLAN_STYLES"]

@@ -15,7 +15,7 @@ from ...model.manipulator import Manipulator
 from .paths import EVENT_STYLES
 from .style import FORCE_UNIT, chain_label, legend_beside, new_figure
 
-__all__ = ["plot_preload_plan", "plot_simulation", "CONTROL_STYLES", "MARGIN_UNIT"]
+__all__ = ["plot_preload_plan", "plot_simulation", "CONTROL_STYLES", "PLAN_STYLES", "MARGIN_UNIT"]
 
 
 # ---------------------------------------------------------------------------- control: plans and simulations
@@ -29,6 +29,14 @@ CONTROL_STYLES = {
     "bifurcation": {"marker": "o", "ms": 6.5, "mfc": "white", "mec": "tab:red", "mew": 1.4},
     "landing": {"marker": "o", "ms": 6.0, "mfc": "tab:green", "mec": "black"},
     "joint_limit": EVENT_STYLES["joint_limit"],
+}
+#: The plan's own lines, in black and grey (the segments take the colours): the margin, the required margin, the
+#: unverified steps' rings and the tip path (a wide grey band under the targets' black crosses).
+PLAN_STYLES = {
+    "margin": {"color": "black", "lw": 1.6, "ls": "-"},
+    "margin-required": {"color": "black", "lw": 1.2, "ls": (0, (1.0, 2.0))},
+    "unverified": {"marker": "o", "ms": 7.5, "mfc": "none", "mec": "black", "mew": 1.3},
+    "tip-path": {"color": "0.62", "lw": 3.2, "ls": "-", "solid_capstyle": "round"},
 }
 #: Segments drawn with a legend entry each (longer chains: a colour bar of the segment index).
 _MAX_SEGMENT_LEGEND = 10
@@ -59,7 +67,8 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
                       title: str | None = None, figsize: tuple[float, float] = (11.0, 6.4)) -> Any:
     """A rest-length plan of :func:`~tensegrity_opt.preloads_for_trajectory`, per step ``k``: the rest lengths of every
     spring (left, top; spring 1 ``L1_0`` solid, spring 2 ``L2_0`` dashed, one colour per segment), the stability
-    margin (left, bottom; ``margin``: the required one as a dotted level), and the tip path with the targets
+    margin (left, bottom, black; ``margin``: the required one as a dotted black level: the plan's own lines
+    are black, :data:`PLAN_STYLES`, so that no segment's colour is read as a margin), and the tip path with the targets
     (right, equal axes; each step's tip joined to the next, the targets as crosses). Infeasible steps (no
     admissible rest lengths: the controller stayed) are shaded in both step panels and their best reachable
     tips marked; feasible steps the forward solve did not verify are marked on the margin. The legend sits
@@ -113,20 +122,20 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     labels += ["spring 1: rest length $L_{1,0}$", "spring 2: rest length $L_{2,0}$"]
     # the margin; NaN (infeasible steps) leaves gaps
     M = np.asarray(plan.margin, float).reshape(K)
-    line, = ax_m.plot(steps, M, color="tab:blue", lw=1.6, marker=marker, ms=3.5, zorder=3)
+    line, = ax_m.plot(steps, M, marker=marker, ms=3.5, zorder=3, **PLAN_STYLES["margin"])
     line.set_gid("margin")
-    handles.append(Line2D([], [], color="tab:blue", lw=1.6))
+    handles.append(Line2D([], [], **PLAN_STYLES["margin"]))
     labels.append("stability margin (smallest eigenvalue of the Hessian of $E - F \\cdot$ tip)")
     if margin is not None:
-        lev = ax_m.axhline(float(margin), color="tab:orange", ls=":", lw=1.3, zorder=2)
+        lev = ax_m.axhline(float(margin), zorder=2, **PLAN_STYLES["margin-required"])
         lev.set_gid("margin-required")
-        handles.append(Line2D([], [], color="tab:orange", ls=":", lw=1.3))
+        handles.append(Line2D([], [], **PLAN_STYLES["margin-required"]))
         labels.append(f"required margin {float(margin):.3g}")
     unv = steps[feasible & ~verified]
-    pt, = ax_m.plot(unv, M[unv], ls="none", marker="o", ms=7.0, mfc="none", mec="tab:purple", mew=1.4, zorder=5)
+    pt, = ax_m.plot(unv, M[unv], ls="none", zorder=5, **PLAN_STYLES["unverified"])
     pt.set_gid("unverified")
     if unv.size:
-        handles.append(Line2D([], [], ls="none", marker="o", ms=7.0, mfc="none", mec="tab:purple", mew=1.4))
+        handles.append(Line2D([], [], ls="none", **PLAN_STYLES["unverified"]))
         labels.append(f"feasible, not verified by the forward solve ({unv.size})")
     _step_spans(ax_r, bad, "infeasible-rest")
     _step_spans(ax_m, bad, "infeasible-margin")
@@ -138,13 +147,13 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     tips = np.asarray(plan.tip, float).reshape(K, 2)
     tg, = ax_t.plot(T[:, 0], T[:, 1], ls=":", lw=0.9, color="0.45", marker="x", ms=6.0, mec="black", zorder=4)
     tg.set_gid("targets")
-    path, = ax_t.plot(tips[:, 0], tips[:, 1], color="tab:blue", lw=1.6, marker=".", ms=4.0, zorder=3)
+    path, = ax_t.plot(tips[:, 0], tips[:, 1], zorder=3, **PLAN_STYLES["tip-path"])
     path.set_gid("tip-path")
     inf, = ax_t.plot(tips[bad, 0], tips[bad, 1], ls="none", marker="s", ms=6.5, mfc="tab:red", mec="black",
                      zorder=5)
     inf.set_gid("infeasible-tips")
     handles += [Line2D([], [], ls=":", lw=0.9, color="0.45", marker="x", ms=6.0, mec="black"),
-                Line2D([], [], color="tab:blue", lw=1.6, marker=".", ms=4.0)]
+                Line2D([], [], **PLAN_STYLES["tip-path"])]
     labels += ["targets (in order)", "tip per step"]
     if bad.size:
         handles.append(Line2D([], [], ls="none", marker="s", ms=6.5, mfc="tab:red", mec="black"))

@@ -15,15 +15,23 @@ from ...analyses.paths.branches import Branch, BranchEvent, Control
 from ...analyses.paths.limit_load import LimitLoad
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from .style import ENERGY_UNIT, FORCE_UNIT, chain_label, legend_beside, new_figure
+from .style import ENERGY_UNIT, FORCE_UNIT, chain_label, legend_beside, new_figure, number_text
 
 __all__ = ["plot_branches", "plot_limit_load", "plot_boundary", "plot_atlas", "branch_quantity_label",
-           "morse_color", "BRANCH_QUANTITIES", "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES"]
+           "boundary_parameter_label", "morse_color", "BRANCH_QUANTITIES", "BRANCH_DEFAULT_X", "BRANCH_DEFAULT_Y",
+           "BRANCH_CROP", "BOUNDARY_PARAMETER_LABELS", "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES"]
 
 
 # ---------------------------------------------------------------------------- loading paths
 #: Quantities :func:`plot_branches` puts on an axis (and ``"q<i>"``, the 1-based joint angle ``q_i``).
-BRANCH_QUANTITIES = ("t", "fx", "fy", "dx", "dy", "x", "y", "u", "energy", "s")
+BRANCH_QUANTITIES = ("t", "fx", "fy", "dx", "dy", "x", "y", "u", "phi", "energy", "s")
+#: The default axes of :func:`plot_branches`: the end angle ``phi_n`` (a response under every control, zero on the
+#: straight chain, of opposite signs on the two mirror branches of a pitchfork) against the control parameter.
+BRANCH_DEFAULT_X = "t"
+BRANCH_DEFAULT_Y = "phi"
+#: The default crop of :func:`plot_branches`: the axis of ``t`` shows the events and the branches' starts with this
+#: fraction of their span added either side.
+BRANCH_CROP = 0.25
 
 #: Colour of a branch piece by its Morse index (index 0, stable: solid; the others dashed); beyond: the last.
 MORSE_COLORS = ("tab:blue", "tab:orange", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:gray")
@@ -85,6 +93,7 @@ def branch_quantity_label(name: str, control: Control | str | None = None) -> st
         "x": "tip $x$ (length)",
         "y": "tip $y$ (length)",
         "u": "tip displacement along the control direction $u$ (length)",
+        "phi": "end angle $\\varphi_n = q_1 + \\dots + q_n$ (rad)",
         "energy": f"elastic energy $E$ ({ENERGY_UNIT})",
         "s": "arclength $s$ (normalised: rad, $F / (k c^2 / 2b)$, length / $2b$)",
     }
@@ -136,6 +145,8 @@ def _quantity(name: str, br: Branch, t: np.ndarray, q: np.ndarray, force: np.nda
         return tip[:, 0]
     if name == "y":
         return tip[:, 1]
+    if name == "phi":
+        return q.sum(axis=1)
     if name == "energy":
         return energy
     if name == "s":
@@ -225,8 +236,52 @@ def _morse_handles(indices: set[int]) -> tuple[list, list]:
     return hs, ls
 
 
-def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str = "t", y: str = "fx",
-                  title: str | None = None, figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
+def _crop_window(items: list[Branch], crop: float) -> tuple[float, float] | None:
+    """The range of ``t`` that holds every event and every branch's start with ``crop`` times their span either
+    side, within the branches' range of ``t``; ``None`` when no branch has an event or the window holds every
+    point."""
+    marks = [float(e.t) for br in items for e in br.events]
+    if not marks:
+        return None
+    marks += [float(br.t[0]) for br in items if len(br)]
+    marks = [v for v in marks if math.isfinite(v)]
+    data = np.concatenate([np.asarray(br.t, float) for br in items])
+    data = data[np.isfinite(data)]
+    if not marks or not data.size:
+        return None
+    lo, hi = min(marks), max(marks)
+    dlo, dhi = float(data.min()), float(data.max())
+    span = hi - lo if hi > lo else max(abs(hi), 1e-3 * (dhi - dlo), 1e-12)
+    lo, hi = max(lo - crop * span, dlo), min(hi + crop * span, dhi)
+    if lo <= dlo and hi >= dhi:
+        return None
+    return lo, hi
+
+
+def _shown_range(lines: list[tuple[np.ndarray, np.ndarray]], lo: float, hi: float) -> tuple[float, float] | None:
+    """The range of the values ``v`` of the polylines ``(v, t)`` where ``lo <= t <= hi``, a piece crossing a bound
+    cut there."""
+    vals: list[float] = []
+    for v, t in lines:
+        inside = (t >= lo) & (t <= hi)
+        vals += v[inside].tolist()
+        for i in range(t.size - 1):
+            for edge in (lo, hi):
+                if (t[i] - edge) * (t[i + 1] - edge) < 0:
+                    f = (edge - t[i]) / (t[i + 1] - t[i])
+                    vals.append(float(v[i] + f * (v[i + 1] - v[i])))
+    vals = [x for x in vals if math.isfinite(x)]
+    return (min(vals), max(vals)) if vals else None
+
+
+def _padded(lo: float, hi: float, frac: float = 0.05) -> tuple[float, float]:
+    pad = frac * (hi - lo) if hi > lo else max(abs(hi) * frac, 0.05)
+    return lo - pad, hi + pad
+
+
+def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str = BRANCH_DEFAULT_X,
+                  y: str = BRANCH_DEFAULT_Y, crop: float | None = BRANCH_CROP, title: str | None = None,
+                  figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
     """Branch diagram of :func:`~tensegrity_opt.trace_branch` / :func:`~tensegrity_opt.bifurcation_diagram`.
 
     Each branch is drawn ``y`` against ``x`` in pieces of constant Morse index: stable (index 0) solid
@@ -237,31 +292,45 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
     lengths, energies ``stiffness x length^2``, angles rad; nothing is normalised but the arclength
     ``s``); the title names the control and the chain's parameters.
 
+    By default the diagram is the end angle ``phi_n = q_1 + ... + q_n`` against the control parameter ``t``,
+    a bifurcation diagram: the straight chain lies on ``phi_n = 0``, each pitchfork's two mirror branches
+    (``q -> -q``) leave it with opposite signs, and ``phi_n`` is a response under every control (a tip
+    force or deflection is ``t`` itself, or its negative, under a load or a displacement along it). The
+    diagram shows the points whose ``t`` lies within ``crop`` times the events' span (from the branches'
+    starts to the last event) of them, whatever the axes: a branch traced to ``t ~ 70`` would squeeze its
+    events into a corner. A branch along which the drawn quantity does not change says so in the axes.
+
     Parameters
     ----------
     branches : Branch or iterable of Branch
+    m : Manipulator
+        The branches' chain (for the title).
     x, y : str
         :data:`BRANCH_QUANTITIES` (``t`` the control parameter, ``fx``/``fy`` the tip force, ``dx``/``dy``
         the deflection, ``x``/``y`` the tip, ``u`` the tip displacement along the control direction
-        from the start, ``energy``, ``s``) or ``"q<i>"`` (joint ``i``, 1-based).
-    m : Manipulator
-        The branches' chain (for the title).
+        from the start, ``phi`` the end angle, ``energy``, ``s``) or ``"q<i>"`` (joint ``i``, 1-based).
+        Default: ``phi`` against ``t``.
+    crop : float or None
+        Margin in ``t`` past the events, as a fraction of their span (default :data:`BRANCH_CROP`); ``None``
+        shows every point. Only the axes' limits change: the artists hold every point.
 
     Notes
     -----
     Artists (``gid``): ``"branch-<b>-morse<k>-<j>"`` (branch ``b``, its ``j``-th piece, Morse index
     ``k``), ``"events-fold"``, ``"events-branch_point"``, ``"events-joint_limit"`` (every event of that
-    kind over all branches, in order).
+    kind over all branches, in order), ``"constant-note"`` (the note of a quantity that does not change).
     """
     items = _as_branches(branches)
     n = items[0].q.shape[1]
     x = _check_quantity(x, n, "x")
     y = _check_quantity(y, n, "y")
+    if crop is not None and not (isinstance(crop, (int, float)) and math.isfinite(crop) and crop >= 0):
+        raise InvalidParameterError(f"crop must be a number >= 0 or None, got {crop!r}", field="crop")
     from matplotlib.lines import Line2D
 
     fig = new_figure(figsize)
     ax = fig.subplots()
-    if y in ("t", "fx", "fy", "energy") or x in ("fx", "fy"):
+    if y in ("t", "fx", "fy", "energy", "phi") or x in ("fx", "fy"):
         ax.axhline(0.0, color="0.85", lw=0.8, zorder=0)
     indices: set[int] = set()
     for b, br in enumerate(items):
@@ -279,6 +348,28 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
         line.set_gid(f"events-{kind}")
         handles.append(Line2D([], [], ls="none", **kw))
         labels.append(f"{style['label']} ({len(pts)})")
+    window = None if crop is None else _crop_window(items, float(crop))
+    if window is not None:                  # each axis: what the branches show for t in the window
+        for name, set_lim in ((x, ax.set_xlim), (y, ax.set_ylim)):
+            if name == "t":
+                set_lim(*_padded(*window, frac=0.02))
+                continue
+            lines = [(v, t) for br in items for _, v, t in _morse_runs(br, name, "t")]
+            lines += [(np.array([_event_xy(br, e, name)]), np.array([e.t])) for br in items for e in br.events]
+            shown = _shown_range(lines, *window)
+            if shown is not None:
+                set_lim(*_padded(*shown))
+    for name in {x, y} - {"t", "s"}:
+        vals = np.concatenate([_branch_xy(br, name) for br in items])
+        vals = vals[np.isfinite(vals)]
+        if vals.size and float(np.ptp(vals)) <= 1e-12 * max(1.0, float(np.abs(vals).max())):
+            what = branch_quantity_label(name, items[0].control).rsplit(" (", 1)[0]
+            note = ax.annotate(f"{what} = {number_text(float(vals[0]))} all along "
+                               f"{'every' if len(items) > 1 else 'this'} branch;\nthe events mark where other "
+                               "branches leave it", (0.02, 0.96), xycoords="axes fraction", va="top", fontsize=8,
+                               color="0.3")
+            note.set_gid("constant-note")
+            break
     ax.set_xlabel(branch_quantity_label(x, items[0].control))
     ax.set_ylabel(branch_quantity_label(y, items[0].control))
     ax.grid(True, lw=0.4, alpha=0.5)
@@ -358,13 +449,31 @@ def plot_limit_load(result: LimitLoad, m: Manipulator, *, figsize: tuple[float, 
     return fig
 
 
+#: The second parameter of a stability boundary in words, with its unit (:data:`~tensegrity_opt.analyses.paths.
+#: boundaries.PARAMETERS`; every segment moves by ``p``).
+BOUNDARY_PARAMETER_LABELS = {
+    "asymmetry": "preload asymmetry $p$: $L_{1,0} = L_0 + p$, $L_{2,0} = L_0 - p$ (length)",
+    "L0": "rest-length change $p$: both $L_{i,0} + p$ (length)",
+    "a": "triangle half-height change $p$: $a + p$ (length)",
+    "b": "triangle half-length change $p$: $b + p$ (length)",
+    "k": "stiffness change $p$: both $k_i + p$ (stiffness)",
+    "direction": "parameter $p$ along the given direction (the unit of its entries per unit $p$)",
+}
+
+
+def boundary_parameter_label(parameter: str) -> str:
+    """The axis label (quantity and unit) of a stability boundary's second parameter."""
+    return BOUNDARY_PARAMETER_LABELS.get(parameter, f"second parameter $p$: {parameter} (its unit)")
+
+
 def plot_boundary(boundary: StabilityBoundary, m: Manipulator | None = None, *,
                   control: Control | str | None = None, figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
     """A stability boundary (:func:`~tensegrity_opt.stability_boundary`): the critical ``t`` (a fold or a branch
     point of the one-parameter branches) against the second parameter ``p``, with the cusps marked; an
     unsuccessful boundary says so in the title, with its status. ``m`` (the chain) and ``control`` (a
     :class:`~tensegrity_opt.Control` or its kind: the unit of ``t``; default the boundary's own control) are for
-    the labels; without ``m`` the title has no chain line.
+    the labels; without ``m`` the title has no chain line. The horizontal axis names the parameter and its unit
+    (:func:`boundary_parameter_label`: the preload asymmetry and the geometric parameters are lengths).
 
     Artists (``gid``): ``"boundary"`` (the curve ``(p, t)``), ``"cusps"`` (the cusp points).
     """
@@ -376,7 +485,9 @@ def plot_boundary(boundary: StabilityBoundary, m: Manipulator | None = None, *,
     if p.shape != t.shape:
         raise InvalidParameterError("the boundary's p and t differ in length", field="boundary")
     kind = str(boundary.kind)
-    control = control if control is not None else boundary.control
+    own = boundary.control
+    if control is None or (isinstance(control, str) and control == getattr(own, "kind", None)):
+        control = own                        # the boundary's own control: its direction in the title
     from matplotlib.lines import Line2D
 
     fig = new_figure(figsize)
@@ -393,7 +504,7 @@ def plot_boundary(boundary: StabilityBoundary, m: Manipulator | None = None, *,
         pt.set_gid("cusps")
         handles.append(Line2D([], [], ls="none", marker="^", ms=9, mfc="gold", mec="black"))
         labels.append(f"cusp ({len(cusps)})")
-    ax.set_xlabel(f"second parameter $p$: {boundary.parameter}")
+    ax.set_xlabel(boundary_parameter_label(str(boundary.parameter)))
     ax.set_ylabel("critical " + _t_label(control))
     ax.grid(True, lw=0.4, alpha=0.5)
     legend_beside(ax, handles, labels)

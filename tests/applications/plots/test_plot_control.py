@@ -59,6 +59,17 @@ def test_plan_figure_draws_the_library_plan(plan, tmp_path):
     assert {"rest-length-0-1", "tip-path", "targets", "margin", "infeasible-rest"} <= ids
 
 
+def test_plan_margin_lines_have_colours_of_their_own(plan):
+    from matplotlib.colors import to_rgba
+
+    fig = plots.plot_preload_plan(plan, PAPER, margin=0.3)
+    segments = {to_rgba(gid(fig, f"rest-length-{i}-{s}").get_color()) for i in range(4) for s in (1, 2)}
+    assert len(segments) == 4
+    for name in ("margin", "margin-required", "tip-path"):
+        assert to_rgba(gid(fig, name).get_color()) not in segments, name
+    assert gid(fig, "margin").get_linestyle() != gid(fig, "margin-required").get_linestyle()
+
+
 @pytest.mark.slow
 def test_plan_figure_of_a_long_chain_and_of_no_step(tmp_path):
     m = to.Manipulator.uniform(12)

@@ -14,7 +14,7 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from figures import check_renders, gid, gids, legend_texts  # noqa: E402
+from figures import check_renders, gid, gids, legend_texts, rows  # noqa: E402
 
 import tensegrity_opt as to  # noqa: E402
 from tensegrity_opt.analyses.paths.boundaries import BoundaryPoint, stability_boundary  # noqa: E402
@@ -75,8 +75,61 @@ def test_bifurcation_diagram_marks_each_event_kind_distinctly(tmp_path):
     check_renders(fig, tmp_path, "diagram")
 
 
+@pytest.fixture(scope="module")
+def diagram():
+    """The guided straight chain's bifurcation diagram, traced far past its events (t to about 14)."""
+    return to.bifurcation_diagram(PAPER, np.zeros(4), "guided", depth=1, max_points=200)
+
+
+def _event_ts(branches) -> list[float]:
+    return [e.t for b in branches for e in b.events]
+
+
+def test_default_branch_figure_is_a_response_against_the_load_cut_past_the_events(diagram, tmp_path):
+    fig = plots.plot_branches(diagram, PAPER)
+    ax = fig.axes[0]
+    xy = np.vstack([rows(gid(fig, g)) for g in gids(fig, "branch-")])
+    # the end angle q1 + ... + qn against t: not an affine function of t (Fx = -t is, under this load)
+    assert max(float(b.t.max()) for b in diagram) > 10.0
+    fit = np.polyfit(xy[:, 0], xy[:, 1], 1)
+    assert np.abs(xy[:, 1] - np.polyval(fit, xy[:, 0])).max() > 0.5
+    drawn = np.vstack([rows(gid(fig, g)) for g in gids(fig, "branch-2-")])
+    for t, phi in zip(diagram[2].t, diagram[2].q.sum(axis=1)):             # the library's numbers, unchanged
+        assert np.any(np.all(np.isclose(drawn, [t, phi], rtol=0, atol=1e-15), axis=1))
+    # the axis of t: the start and every event, a margin past them, not the whole trace
+    last = max(_event_ts(diagram))                     # the span: from the start, t = 0, to the last event
+    lo, hi = ax.get_xlim()
+    assert last < hi <= last + 0.5 * last
+    assert -0.5 * last <= lo < 0.0
+    ylo, yhi = ax.get_ylim()
+    ev = np.vstack([gid(fig, f"events-{k}").get_xydata() for k in ("fold", "branch_point", "joint_limit")])
+    assert ylo < ev[:, 1].min() and ev[:, 1].max() < yhi and yhi - ylo < 4.0
+    assert "end angle" in ax.get_ylabel() and ax.get_ylabel().endswith("(rad)")
+    assert ax.get_xlabel().endswith("(force, stiffness × length)")
+    # whatever the axes, the window in t: Fx against dx (Fig. 6's axes) shows Fx down to about -1.25 last, not -14
+    f6 = plots.plot_branches(diagram, PAPER, x="dx", y="fx").axes[0]
+    assert -1.5 * last <= f6.get_ylim()[0] < -last and f6.get_xlim()[1] > 3.0
+    # the full trace is one keyword away, and every quantity still an option
+    full = plots.plot_branches(diagram, PAPER, y="fx", crop=None).axes[0]
+    assert full.get_xlim()[1] > 10.0
+    check_renders(fig, tmp_path, "default")
+
+
+def test_one_trivial_branch_says_its_response_is_constant():
+    br = to.trace_branch(PAPER, np.zeros(4), "guided", max_points=200)
+    assert br.t[-1] > 10.0
+    fig = plots.plot_branches(br, PAPER)
+    lo, hi = fig.axes[0].get_xlim()
+    last = max(_event_ts([br]))
+    assert last < hi <= 1.5 * last and lo <= 0.0
+    assert "= 0 all along this branch" in gid(fig, "constant-note").get_text()
+    with pytest.raises(InvalidParameterError) as e:
+        plots.plot_branches(br, PAPER, crop=-1.0)
+    assert e.value.field == "crop"
+
+
 def test_branch_quantities_and_refusals(guided):
-    for name in ("fx", "dx", "dy", "x", "y", "u", "energy", "s", "q4"):
+    for name in ("fx", "dx", "dy", "x", "y", "u", "phi", "energy", "s", "q4"):
         fig = plots.plot_branches(guided, PAPER, x=name, y="t")
         assert gids(fig, "branch-0-")
     fig = plots.plot_branches([guided], PAPER, x="u", y="fx")
@@ -149,6 +202,24 @@ def test_boundary_plots_t_against_p_with_the_cusps(boundary, tmp_path):
     with pytest.raises(InvalidParameterError) as e:
         plots.plot_boundary(boundary.to_dict(), PAPER)
     assert e.value.field == "boundary"
+
+
+def _inside_figure(fig, artist) -> bool:
+    box = artist.get_window_extent(fig.canvas.get_renderer())
+    return fig.bbox.x0 <= box.x0 and box.x1 <= fig.bbox.x1 and fig.bbox.y0 <= box.y0 and box.y1 <= fig.bbox.y1
+
+
+@pytest.mark.parametrize("control", [None, "guided"])
+def test_boundary_title_is_whole_and_every_axis_has_a_unit(boundary, control):
+    fig = plots.plot_boundary(boundary, PAPER, control=control)
+    fig.canvas.draw()
+    ax = fig.axes[0]
+    assert "guided tip (y held), load along (-1, 0)" in ax.get_title()
+    assert _inside_figure(fig, ax.title)
+    assert all(_inside_figure(fig, t) for t in fig.legends[0].get_texts())
+    assert ax.get_xlabel().startswith("preload asymmetry $p$") and ax.get_xlabel().endswith("(length)")
+    assert ax.get_ylabel().endswith("(force, stiffness × length)")
+    assert plots.boundary_parameter_label("k").endswith("(stiffness)")
 
 
 def test_an_incomplete_boundary_says_so(boundary):

@@ -14,7 +14,7 @@ import pytest
 
 pytest.importorskip("matplotlib")
 
-from figures import check_png, check_svg  # noqa: E402
+from figures import check_png, check_svg, png_size  # noqa: E402
 
 import tensegrity_opt as to  # noqa: E402
 from tensegrity_opt.applications import plots  # noqa: E402
@@ -34,6 +34,15 @@ def test_save_chooses_the_format_by_suffix(tmp_path):
     assert e.value.field == "format"
     check_png(plots.save(fig, tmp_path / "FIG.PNG").read_bytes())
     check_svg(plots.save(fig, tmp_path / "fig.svg").read_bytes())
+
+
+def test_png_resolution_defaults_to_one_constant(tmp_path):
+    fig = plots.plot_torque(to.Segment(1.0, 1.0), num=11)
+    w, h = fig.get_size_inches()
+    want = (round(w * plots.DPI), round(h * plots.DPI))
+    assert png_size(plots.render(fig, "png")) == want
+    assert png_size(plots.save(fig, tmp_path / "t.png").read_bytes()) == want
+    assert png_size(plots.render(fig, "png", dpi=50)) == (round(w * 50), round(h * 50))
 
 
 def test_svg_bytes_are_reproducible():
@@ -82,6 +91,15 @@ def test_docs_figures_are_committed_small_and_referenced():
         check_png(png.read_bytes())
         assert png.stat().st_size <= 150_000, name
         assert f"img/{name}.png" in text and name in mod.FIGURES, name
+    # every figure kind's default: its PNG, made by the command the page shows
+    from tensegrity_opt.applications.cli.plot import KINDS
+
+    assert {k.replace("-", "_") for k in KINDS} <= set(mod.DEFAULTS)
+    for kind in mod.DEFAULTS:
+        png = ROOT / "docs" / "img" / f"default_{kind}.png"
+        check_png(png.read_bytes())
+        assert png.stat().st_size <= 150_000, kind
+        assert f"img/default_{kind}.png" in text and mod.default_command(kind) in text, kind
 
 
 #: The library functions a figure may call: closed-form geometry that draws (the landscape's reachable region

@@ -29,7 +29,7 @@ class PlotAtlasGridRequest:
             increasing: a list or {start, stop, num} (1..400 values)
         manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
             {"segments": [...]}
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         edges (bool | Unset): locate the switches and branch ends on the grid edges (false: the counts only) Default:
             True.
         format_ (None | PlotAtlasGridRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
@@ -42,7 +42,7 @@ class PlotAtlasGridRequest:
     dx: AtlasRange | list[float]
     dy: AtlasRange | list[float]
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     edges: bool | Unset = True
     format_: None | PlotAtlasGridRequestFormatType0 | Unset = UNSET
     method: PlotAtlasGridRequestMethod | Unset = PlotAtlasGridRequestMethod.SEARCH

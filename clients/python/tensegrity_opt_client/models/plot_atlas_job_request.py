@@ -17,7 +17,7 @@ class PlotAtlasJobRequest:
 
     Attributes:
         job (str): the id of a finished job with analysis atlas over a grid in dx and dy
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         edges (bool | Unset): locate the switches and branch ends on the grid edges (false: the counts only) Default:
             True.
         format_ (None | PlotAtlasJobRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
@@ -25,7 +25,7 @@ class PlotAtlasJobRequest:
     """
 
     job: str
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     edges: bool | Unset = True
     format_: None | PlotAtlasJobRequestFormatType0 | Unset = UNSET
 

@@ -30,7 +30,7 @@ class PlotBoundaryRequest:
             {"segments": [...]}
         control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | Unset | WallControlIn):
             the control of the one-parameter branches (default guided)
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         format_ (None | PlotBoundaryRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
         max_points (int | Unset): at most this many points per branch, the start included (2..5000; server limit
@@ -43,7 +43,7 @@ class PlotBoundaryRequest:
 
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
     control: DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | Unset | WallControlIn = UNSET
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     format_: None | PlotBoundaryRequestFormatType0 | Unset = UNSET
     max_points: int | Unset = 400
     p_max: float | Unset = 0.1

@@ -37,7 +37,7 @@ class PlotBranchRequest:
             manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
                 {"segments": [...]}
             depth (int | None | Unset): null: one branch; a number: the bifurcation diagram to this many switches (0..6)
-            dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+            dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
             format_ (None | PlotBranchRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
                 (image/svg+xml or image/png), PNG by default
             max_branches (int | Unset): with depth: at most this many branches Default: 24.
@@ -52,14 +52,15 @@ class PlotBranchRequest:
             t_max (float | None | Unset): stop where t reaches this (the control's unit)
             t_min (float | None | Unset): stop where t falls to this
             x (str | Unset): horizontal axis: t, fx, fy, dx, dy, x, y (tip), u (tip displacement along the control
-                direction), energy, s (arclength) or q1..qn Default: 't'.
-            y (str | Unset): vertical axis, as x Default: 'fx'.
+                direction), phi (end angle q1 + ... + qn), energy, s (arclength) or q1..qn Default: 't'.
+            y (str | Unset): vertical axis, as x; default phi against t: a bifurcation diagram, the axis of t cut a margin
+                past the events Default: 'phi'.
     """
 
     control: DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | WallControlIn
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
     depth: int | None | Unset = UNSET
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     format_: None | PlotBranchRequestFormatType0 | Unset = UNSET
     max_branches: int | Unset = 24
     max_points: int | Unset = 1000
@@ -69,7 +70,7 @@ class PlotBranchRequest:
     t_max: float | None | Unset = UNSET
     t_min: float | None | Unset = UNSET
     x: str | Unset = "t"
-    y: str | Unset = "fx"
+    y: str | Unset = "phi"
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.displacement_control_in import DisplacementControlIn  # noqa: PLC0415

@@ -29,7 +29,7 @@ class PlotCurveRequest:
             {"segments": [...]}
         branch (PlotCurveRequestBranch | Unset): "all" also draws every branch found at the first deflected point
             (unstable dashed) Default: PlotCurveRequestBranch.STABLE.
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         dy (float | Unset): tip deflection along y, the same at every point Default: 0.0.
         format_ (None | PlotCurveRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
@@ -38,7 +38,7 @@ class PlotCurveRequest:
     dx: DeflectionRange | list[float]
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
     branch: PlotCurveRequestBranch | Unset = PlotCurveRequestBranch.STABLE
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     dy: float | Unset = 0.0
     format_: None | PlotCurveRequestFormatType0 | Unset = UNSET
 

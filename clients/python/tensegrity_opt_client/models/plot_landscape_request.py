@@ -24,7 +24,7 @@ class PlotLandscapeRequest:
         dx (float): tip deflection along x (length units)
         manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
             {"segments": [...]}
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         dy (float | Unset): tip deflection along y (length units) Default: 0.0.
         format_ (None | PlotLandscapeRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
@@ -37,7 +37,7 @@ class PlotLandscapeRequest:
 
     dx: float
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     dy: float | Unset = 0.0
     format_: None | PlotLandscapeRequestFormatType0 | Unset = UNSET
     grid: int | Unset = 61

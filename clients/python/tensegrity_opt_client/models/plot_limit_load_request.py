@@ -29,7 +29,7 @@ class PlotLimitLoadRequest:
             boundary (PlotLimitLoadRequestBoundary | Unset): "free": the tip free, F = t d; "guided": y held, Fx = t d_x, Fy
                 the reaction Default: PlotLimitLoadRequestBoundary.FREE.
             direction (list[float] | Unset): the load's direction (normalised; [-1, 0] compresses)
-            dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+            dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
             format_ (None | PlotLimitLoadRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
                 (image/svg+xml or image/png), PNG by default
             max_load (float | None | Unset): stop there (force units); default 100 k c^2 / (2b)
@@ -42,7 +42,7 @@ class PlotLimitLoadRequest:
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
     boundary: PlotLimitLoadRequestBoundary | Unset = PlotLimitLoadRequestBoundary.FREE
     direction: list[float] | Unset = UNSET
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     format_: None | PlotLimitLoadRequestFormatType0 | Unset = UNSET
     max_load: float | None | Unset = UNSET
     max_points: int | Unset = 4000

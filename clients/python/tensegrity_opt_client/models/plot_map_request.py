@@ -35,7 +35,7 @@ class PlotMapRequest:
             list or {start, stop, num} (2..41 values)
         boundary (PlotMapRequestBoundary | Unset): "guided": tip held at dy = 0 (the paper); "free": cantilever Default:
             PlotMapRequestBoundary.GUIDED.
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         format_ (None | PlotMapRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
     """
@@ -46,7 +46,7 @@ class PlotMapRequest:
     values_x: list[float] | MapValuesRange
     values_y: list[float] | MapValuesRange
     boundary: PlotMapRequestBoundary | Unset = PlotMapRequestBoundary.GUIDED
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     format_: None | PlotMapRequestFormatType0 | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:

@@ -30,7 +30,7 @@ class PlotPlanRequest:
             TENSEGRITY_MAX_TRAJECTORY_STEPS)
         bounds (list[float | list[float]] | None | RestLengthBoundsIn | Unset): actuator bounds on the rest lengths;
             default (0.1 b_min, 4 b_max)
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         end_angles (list[float | None] | None | Unset): the last link's absolute angle per step (rad; null: free), as
             many as targets; default free
         format_ (None | PlotPlanRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
@@ -55,7 +55,7 @@ class PlotPlanRequest:
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
     targets: list[list[float]]
     bounds: list[float | list[float]] | None | RestLengthBoundsIn | Unset = UNSET
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     end_angles: list[float | None] | None | Unset = UNSET
     format_: None | PlotPlanRequestFormatType0 | Unset = UNSET
     loads: list[float] | list[list[float]] | None | Unset = UNSET

@@ -22,7 +22,7 @@ class PlotTorqueRequest:
 
     Attributes:
         segments (list[SegmentIn]): the segments compared (1..12)
-        dpi (int | Unset): PNG resolution in dots per inch (30..200) Default: 100.
+        dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         format_ (None | PlotTorqueRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
         num (int | Unset): points per curve over each segment's physical range (when q is absent) Default: 401.
@@ -31,7 +31,7 @@ class PlotTorqueRequest:
     """
 
     segments: list[SegmentIn]
-    dpi: int | Unset = 100
+    dpi: int | Unset = 120
     format_: None | PlotTorqueRequestFormatType0 | Unset = UNSET
     num: int | Unset = 401
     q: None | PlotAngleRange | Unset = UNSET
