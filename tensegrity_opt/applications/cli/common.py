@@ -27,7 +27,8 @@ from ...model.manipulator import Manipulator
 __all__ = ["add_manipulator_options", "add_analysis_options", "add_command", "add_deflection_options",
            "add_curve_options", "run_command", "positive_int", "non_negative_int",
            "at_least_two", "joint_index", "finite_float", "positive_float", "non_negative_float", "HELP_FORMAT",
-           "fmt_q", "eq_table", "Parser", "error", "note", "exclusive", "only_with", "add_progress_option", "GIVEN"]
+           "fmt_q", "eq_table", "Parser", "error", "note", "exclusive", "only_with", "add_rule", "add_progress_option",
+           "GIVEN"]
 
 #: Every command's help shows each option's default.
 HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
@@ -73,10 +74,18 @@ class Parser(argparse.ArgumentParser):
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
 
 
+def add_rule(sp: argparse.ArgumentParser, rule: Callable[[argparse.Namespace, frozenset[str]], str | None]) -> None:
+    """Check ``rule(namespace, given) -> message | None`` after parsing (a message: the usage error) on ``sp``, a
+    :class:`Parser` (on a plain ``ArgumentParser``, which does not note the options given, nothing)."""
+    if isinstance(sp, Parser):
+        sp.rules.append(rule)
+
+
 def exclusive(sp: argparse.ArgumentParser, first: Sequence[str], second: Sequence[str], why: str = "") -> None:
     """Refuse an option of ``second`` given with one of ``first`` (option strings; given at any value, its
     default included): ``argument --fx: not allowed with argument --dx (WHY)``, exit status 2. ``sp`` is a
-    :class:`Parser` (a subcommand's parser: subparsers inherit the class)."""
+    :class:`Parser` (a subcommand's parser: subparsers inherit the class); a plain ``ArgumentParser`` cannot
+    tell which options were given and checks nothing."""
     suffix = f" ({why})" if why else ""
 
     def rule(ns: argparse.Namespace, given: frozenset[str]) -> str | None:
@@ -84,7 +93,7 @@ def exclusive(sp: argparse.ArgumentParser, first: Sequence[str], second: Sequenc
         b = next((o for o in second if o in given), None)
         return None if a is None or b is None else f"argument {b}: not allowed with argument {a}{suffix}"
 
-    sp.rules.append(rule)
+    add_rule(sp, rule)
 
 
 def only_with(sp: argparse.ArgumentParser, options: Sequence[str], other: str, values: Sequence[Any] | None = None,
@@ -103,7 +112,7 @@ def only_with(sp: argparse.ArgumentParser, options: Sequence[str], other: str, v
         a = next((o for o in options if o in given), None)
         return None if a is None else f"argument {a}: only with {want}{suffix}"
 
-    sp.rules.append(rule)
+    add_rule(sp, rule)
 
 
 def add_progress_option(sp: argparse.ArgumentParser) -> None:

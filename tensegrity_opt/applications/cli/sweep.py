@@ -26,7 +26,7 @@ from typing import Any
 
 from ...errors import TensegrityError
 from ..sweeps.scheduler import AUTO_CLUSTER_SECONDS, AUTO_SERIAL_POINTS, SCHEDULERS
-from .common import add_progress_option
+from .common import add_progress_option, add_rule
 from .progress import Progress
 
 __all__ = ["add_sweep_parser", "cmd_sweep"]
@@ -56,7 +56,7 @@ def add_sweep_parser(subparsers: Any) -> argparse.ArgumentParser:
     sp.add_argument("--chunk-size", type=int, default=None, metavar="N",
                     help="points per task (threads, Dask); None: about four tasks per worker, at most 64")
     add_progress_option(sp)
-    sp.rules.append(_scheduler_rule)
+    add_rule(sp, _scheduler_rule)
     sp.set_defaults(run=cmd_sweep)
     return sp
 
