@@ -367,6 +367,8 @@ def _cmd_stiffness(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
              f"K = [[{d.K[0, 0]:.6g}, {d.K[0, 1]:.6g}], [{d.K[1, 0]:.6g}, {d.K[1, 1]:.6g}]] (force / length), "
              f"eigenvalues {_fmt_g(d.eigenvalues)}, margin {d.margin:.4g}",
              "rest lengths (L1_0, L2_0) per segment: " + "; ".join(f"{a:.6g}, {b:.6g}" for a, b in d.rest_lengths),
+             "active bounds (segments 0-based; wider bounds may change the design): "
+             + ("; ".join(b.describe() for b in d.active_bounds) or "none"),
              f"configuration q = {fmt_q(d.q)}"]
     return d.to_dict, "\n".join(lines)
 
