@@ -16,6 +16,7 @@ import sys
 import pytest
 
 from tensegrity_opt.applications.cli.progress import Progress
+from tensegrity_opt.numerics.homotopy import homotopy_available
 
 SPEC = '{"analysis": "buckling", "grid": {"n": [3, 4], "k": [0.5, 1, 2]}}'
 COMMANDS = {
@@ -23,9 +24,10 @@ COMMANDS = {
     "atlas": ["atlas", "--n", "3", "--a", "0.5", "--dx", "0.2", "1.4", "2", "--dy", "-0.3", "0.3", "2", "--no-edges"],
     "simulate": ["simulate", "--n", "3", "--a", "0.5", "--load-cycle", "0.3", "--steps", "9"],
     "plan": ["plan", "--line", "7.9", "0.2", "7.6", "0.8", "3"],
+    "equilibria": ["equilibria", "--n", "3", "--method", "homotopy"],
 }
 SUMMARY = {"sweep": "sweep: 6 points", "atlas": "atlas: 4 targets in", "simulate": "simulate: 9 of 9 samples in",
-           "plan": "plan: 3 steps in"}
+           "plan": "plan: 3 steps in", "equilibria": "equilibria in"}
 
 
 def _untimed(out: bytes) -> bytes:
@@ -67,6 +69,8 @@ def _run(argv: list[str], tmp_path, *, tty: bool) -> tuple[bytes, str]:
 @pytest.mark.slow
 @pytest.mark.parametrize("name", list(COMMANDS))
 def test_a_terminal_shows_a_bar_and_a_summary_a_pipe_neither(name, tmp_path):
+    if name == "equilibria" and not homotopy_available():
+        pytest.skip("PHCpack's phc is not installed")
     argv = COMMANDS[name]
     out_tty, err_tty = _run(argv, tmp_path, tty=True)
     assert "%|" in err_tty or "[00:" in err_tty, err_tty          # the bar (a count, or a spinner's elapsed time)
