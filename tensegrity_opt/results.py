@@ -25,8 +25,10 @@ result                      returned by                                      rec
 :class:`Simulation`         ``simulate``                                     :class:`SimulationEvent`
 :class:`Design`             ``maximize_critical_force``,                     :class:`SolverInfo`
                             ``preloads_for_critical_force``
-:class:`PreloadDesign`      ``preloads_for_pose``                            :class:`SolverInfo`
-:class:`StiffnessDesign`    ``preloads_for_stiffness``                       :class:`SolverInfo`
+:class:`PreloadDesign`      ``preloads_for_pose``                            :class:`SolverInfo`,
+                                                                             :class:`ActiveBound`
+:class:`StiffnessDesign`    ``preloads_for_stiffness``                       :class:`SolverInfo`,
+                                                                             :class:`ActiveBound`
 :class:`PreloadPlan`        ``preloads_for_trajectory``                      :class:`PreloadStep`
 (``PreloadStep``)           ``PreloadController.step``
 (``FollowerStep``)          ``PreloadFollower.step``                         :class:`Snap`
@@ -37,6 +39,7 @@ result                      returned by                                      rec
 ==========================  ===============================================  ======================================
 """
 
+from .analyses.design.active_bounds import ActiveBound
 from .analyses.design.follower import FollowerStep, Snap
 from .analyses.design.force_sensor import ForceEstimate
 from .analyses.design.load_capacity import LoadCapacity
@@ -64,6 +67,6 @@ __all__ = [
     "Equilibrium", "EquilibriumSet", "Buckling", "Mode", "Landscape",
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent",
-    "Design", "PreloadDesign", "StiffnessDesign", "PreloadPlan", "PreloadStep", "FollowerStep", "Snap",
+    "Design", "PreloadDesign", "StiffnessDesign", "ActiveBound", "PreloadPlan", "PreloadStep", "FollowerStep", "Snap",
     "LoadCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",
 ]

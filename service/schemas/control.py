@@ -41,7 +41,7 @@ from .common import (
     outcome_model,
     rectangular,
 )
-from .design import MAX_DESIGN_SEGMENTS, DesignManipulatorIn
+from .design import MAX_DESIGN_SEGMENTS, ActiveBoundOut, DesignManipulatorIn
 from .paths import StartQ
 
 #: Most steps of a trajectory (the schema's cap; the server's setting may be lower).
@@ -410,6 +410,8 @@ class StiffnessDesignOut(outcome_model(to.StiffnessDesign)):
     K_desired: list[list[float]] | None
     bounds_K: dict[str, list[float | None]]
     eig_bounds: list[float | None] | None
+    active_bounds: list[ActiveBoundOut] = Field(description="the rest lengths at (or near) their bounds: the design "
+                                                            "is the best within them")
     solver: SolverInfo
 
 

@@ -139,6 +139,16 @@ class DesignOut(outcome_model(to.Design)):
     solver: SolverInfo
 
 
+class ActiveBoundOut(BaseModel):
+    """A decision variable at (or within 1 % of its interval of) one of its bounds at the optimum (`ActiveBound`)."""
+
+    segment: int = Field(description="the segment, 0-based")
+    variable: str = Field(description="the variable: L1_0, L2_0 (rest lengths), a, b, k, L0")
+    side: Literal["lower", "upper"]
+    value: float = Field(description="the variable's value at the optimum")
+    bound: float = Field(description="the bound it is at")
+
+
 class PreloadsOut(outcome_model(to.PreloadDesign)):
     """`PreloadDesign.to_dict()`: rest lengths for a pose, verified by the forward equilibrium."""
 
@@ -148,4 +158,5 @@ class PreloadsOut(outcome_model(to.PreloadDesign)):
     margin: float = Field(description="achieved stability margin (recomputed)")
     tip: list[float]
     energy: float
+    active_bounds: list[ActiveBoundOut] = Field(description="the rest lengths at (or near) their bounds")
     solver: SolverInfo

@@ -322,6 +322,7 @@ def test_stiffness_and_load_capacity_are_the_library_calls(client):
     np.testing.assert_allclose(got["rest_lengths"], want.rest_lengths, atol=1e-9)
     np.testing.assert_allclose(got["K"], want.K, atol=1e-9)
     assert min(got["eigenvalues"]) >= 0.04 - 1e-6 and max(got["eigenvalues"]) <= 0.6 + 1e-6
+    assert got["active_bounds"] == [b.to_dict() for b in want.active_bounds]
     got = post_ok(client, "/v1/control/load-capacity", {"manipulator": PAPER, "directions": 4, "max_load": 2.0})
     # the straight chain compressed along -x buckles at the free critical load; the other directions have no limit
     assert got["kinds"] == ["none", "none", "bifurcation", "none"]
@@ -339,3 +340,14 @@ def test_stiffness_and_load_capacity_refusals_name_the_field(client):
     assert r.status_code == 422 and r.json()["field"] == "start.q"
     r = client.post("/v1/control/load-capacity", json={"manipulator": PAPER, "directions": 0})
     assert r.status_code == 422 and r.json()["errors"][0]["field"] == "directions"
+
+
+def test_the_stiffness_body_names_the_rest_lengths_at_their_bounds(client):
+    """The design of the paper's chain at (7.5, 1) puts three rest lengths on their upper bound 4 and one near its
+    lower bound 0.1: the body says which (0-based segment, variable, side, value, bound)."""
+    got = post_ok(client, "/v1/control/stiffness", {"manipulator": PAPER, "target": [7.5, 1.0],
+                                                      "eig_bounds": [0.05, 0.5]})
+    sides = {(b["segment"], b["variable"], b["side"]) for b in got["active_bounds"]}
+    assert (3, "L1_0", "lower") in sides and (1, "L1_0", "upper") in sides
+    low = next(b for b in got["active_bounds"] if b["side"] == "lower")
+    assert low["bound"] == pytest.approx(0.1) and 0.1 <= low["value"] < 0.11

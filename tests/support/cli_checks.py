@@ -29,3 +29,16 @@ def writes_png_and_svg(main, argvs, tmp_path, capsys) -> None:
             assert f"wrote {out}" in capsys.readouterr().out
             data = out.read_bytes()
             assert data[:4] == b"\x89PNG" if suffix == "png" else b"<svg" in data[:400]
+
+
+def refuses_together(main, argv: list[str], first: str, second: str, capsys) -> None:
+    """``main(argv)``, which gives the options ``first`` and ``second`` that exclude each other, is refused
+    at parse time: one line ``... error: ...`` on stderr naming both, nothing on stdout, exit status 2."""
+    import pytest
+
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    out, err = capsys.readouterr()
+    line = one_error_line(err)
+    assert first in line and second in line and out == "", (argv, err)

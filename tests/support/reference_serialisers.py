@@ -120,4 +120,6 @@ def design_out(d) -> dict[str, Any]:
 def preload_design_out(r) -> dict[str, Any]:
     return {**outcome(r), "manipulator": manipulator_out(r.manipulator), "preloads": _nums(r.preloads), "q": _nums(r.q),
             "margin": _num(r.margin), "tip": _nums(r.tip), "energy": _num(r.energy),
+            "active_bounds": [{"segment": int(b.segment), "variable": b.variable, "side": b.side,
+                               "value": _num(b.value), "bound": _num(b.bound)} for b in r.active_bounds],
             "solver": {"status": r.solver.status, "iterations": int(r.solver.iterations)}}

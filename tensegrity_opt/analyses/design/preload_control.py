@@ -34,6 +34,7 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -430,7 +431,8 @@ class PreloadPlan(Outcome):
 
 def preloads_for_trajectory(m: Manipulator, targets, *, loads=None, end_angles=None, bounds=None, rate_limit=None,
                             margin: float = 1e-3, objective: str = "change", weights=None, start=None,
-                            verify: bool = True, timeout: float | None = None) -> PreloadPlan:
+                            verify: bool = True, timeout: float | None = None,
+                            progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     """Rest lengths for a trajectory of tip poses, on one stable branch (module docstring).
 
     Parameters
@@ -448,6 +450,8 @@ def preloads_for_trajectory(m: Manipulator, targets, *, loads=None, end_angles=N
         Verify every step by the forward quasi-static solve (default).
     timeout : float, optional
         Seconds; on expiry the steps done are returned with ``status="time_limit"``.
+    progress : callable(done, total), optional
+        Called after each step with the steps done and ``K``.
 
     Returns
     -------
@@ -488,6 +492,8 @@ def preloads_for_trajectory(m: Manipulator, targets, *, loads=None, end_angles=N
                 break
             steps.append(st)
             verified.append(bool(verify) and bool(st.feasible) and _lands(ctl, st, Ls[k], q_prev))
+            if progress is not None:
+                progress(k + 1, K)
     n = m.n
     if status == "complete" and not all(s.feasible for s in steps):
         status = "infeasible_steps"

@@ -41,6 +41,7 @@ from ...serialize import number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 from ..equilibria.least_energy import solve_equilibrium
+from .active_bounds import ActiveBound, active_bounds
 from .strongest import Design, buckling_design
 
 __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
@@ -78,6 +79,8 @@ class PreloadDesign(Outcome):
         IPOPT's return status and iterations.
     equilibrium : Equilibrium
         The full verified equilibrium.
+    active_bounds : tuple of ActiveBound
+        The rest lengths at (or near) their bounds (:func:`~.active_bounds.active_bounds`).
     status : str
         ``"optimal"`` (:attr:`STATUSES`): a result is returned only when the solve converged and the forward
         check holds; otherwise :func:`preloads_for_pose` raises.
@@ -99,6 +102,7 @@ class PreloadDesign(Outcome):
     energy: float
     solver: SolverInfo
     equilibrium: Equilibrium = field(repr=False)
+    active_bounds: tuple[ActiveBound, ...] = ()
     status: str = "optimal"
 
     def __post_init__(self) -> None:
@@ -112,10 +116,12 @@ class PreloadDesign(Outcome):
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/design/preloads``): ``success``, ``status``, ``message``,
-        ``manipulator``, ``preloads``, ``q``, ``margin``, ``tip``, ``energy``, ``solver`` ``{status, iterations}``."""
+        ``manipulator``, ``preloads``, ``q``, ``margin``, ``tip``, ``energy``, ``active_bounds``, ``solver``
+        ``{status, iterations}``."""
         return {**self.outcome(), "manipulator": self.manipulator.to_dict(), "preloads": numbers(self.preloads),
                 "q": numbers(self.q), "margin": number(self.margin), "tip": numbers(self.tip),
-                "energy": number(self.energy), "solver": self.solver.to_dict()}
+                "energy": number(self.energy), "active_bounds": [b.to_dict() for b in self.active_bounds],
+                "solver": self.solver.to_dict()}
 
 
 def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: str = "guided",
@@ -275,7 +281,16 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     eq = forward_check(m_new, load, q, target, settle=True, status=res.status, best=best)
     return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q,
                          margin=stability_margin(m_new, eq.q, load), tip=eq.tip, energy=eq.energy,
-                         solver=SolverInfo(res.status, res.iterations), equilibrium=eq)
+                         solver=SolverInfo(res.status, res.iterations), equilibrium=eq,
+                         active_bounds=rest_length_active_bounds(L10, L20, lo2, hi2))
+
+
+def rest_length_active_bounds(L10, L20, lo: dict, hi: dict) -> tuple[ActiveBound, ...]:
+    """The rest lengths ``L1_0`` (``L10``), ``L2_0`` (``L20``) at or near their bounds ``lo``, ``hi``
+    (:func:`spring_bounds`' blocks), segment by segment (:func:`~.active_bounds.active_bounds`)."""
+    found = active_bounds({"L1_0": L10, "L2_0": L20}, {"L1_0": lo["L10"], "L2_0": lo["L20"]},
+                          {"L1_0": hi["L10"], "L2_0": hi["L20"]})
+    return tuple(sorted(found, key=lambda b: (b.segment, b.variable)))
 
 
 def spring_bounds(n: int, lo, hi) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray]]:

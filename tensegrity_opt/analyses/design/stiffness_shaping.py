@@ -45,12 +45,14 @@ from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium
 from ..equilibria.stiffness import cartesian_stiffness
+from .active_bounds import ActiveBound
 from .preloads import (
     PreloadDesign,
     checked_start,
     forward_check,
     nlp_pose,
     preloads_for_pose,
+    rest_length_active_bounds,
     rest_length_bounds,
     spring_bounds,
     stability_margin,
@@ -111,6 +113,9 @@ class StiffnessDesign(Outcome):
     eig_bounds : tuple or None
     equilibrium : Equilibrium
         The verified forward equilibrium.
+    active_bounds : tuple of ActiveBound
+        The rest lengths at (or near) their bounds (:func:`~.active_bounds.active_bounds`): the design is the
+        best within them, and wider bounds may change it.
     status : str
         :attr:`STATUSES`, from ``K_desired`` and ``exact``: ``"exact"``, ``"closest"`` (not a success: the wanted
         stiffness is out of reach) or ``"within_bounds"``.
@@ -143,6 +148,7 @@ class StiffnessDesign(Outcome):
     bounds_K: dict
     eig_bounds: tuple | None
     equilibrium: Equilibrium = field(repr=False)
+    active_bounds: tuple[ActiveBound, ...] = ()
 
     def __post_init__(self) -> None:
         freeze(self)
@@ -168,8 +174,8 @@ class StiffnessDesign(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``manipulator``, ``rest_lengths``, ``q``, ``tip``,
         ``K``, ``eigenvalues``, ``margin``, ``residual``, ``exact``, ``load``, ``K_desired`` (or null), ``bounds_K``
-        (``[lo, hi]`` per entry, null for an open side), ``eig_bounds`` (the same, or null), ``solver``
-        ``{status, iterations}``."""
+        (``[lo, hi]`` per entry, null for an open side), ``eig_bounds`` (the same, or null), ``active_bounds``
+        (``{segment, variable, side, value, bound}`` each), ``solver`` ``{status, iterations}``."""
         return {**self.outcome(), "manipulator": self.manipulator.to_dict(), "rest_lengths": numbers(self.rest_lengths),
                 "q": numbers(self.q), "tip": numbers(self.tip), "K": numbers(self.K),
                 "eigenvalues": numbers(self.eigenvalues), "margin": number(self.margin),
@@ -177,7 +183,7 @@ class StiffnessDesign(Outcome):
                 "K_desired": None if self.K_desired is None else numbers(self.K_desired),
                 "bounds_K": {k: nullables(v) for k, v in self.bounds_K.items()},
                 "eig_bounds": None if self.eig_bounds is None else nullables(self.eig_bounds),
-                "solver": self.solver.to_dict()}
+                "active_bounds": [b.to_dict() for b in self.active_bounds], "solver": self.solver.to_dict()}
 
 
 def _pair(v, name: str) -> tuple[float, float]:
@@ -590,4 +596,5 @@ def _verified(sh: _Shaper, res) -> StiffnessDesign:
                            K_desired=None if Kd is None else Kd.copy(),
                            bounds_K={k: (float(a), float(b)) for k, (a, b) in kb.items()
                                      if math.isfinite(a) or math.isfinite(b)},
-                           eig_bounds=None if eb is None else (float(eb[0]), float(eb[1])), equilibrium=eq)
+                           eig_bounds=None if eb is None else (float(eb[0]), float(eb[1])), equilibrium=eq,
+                           active_bounds=rest_length_active_bounds(L10, L20, sh.lo2, sh.hi2))

@@ -38,6 +38,7 @@ converged equilibrium inside the physical range, classified by its Morse index.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -546,7 +547,8 @@ class _Run:
 
 # ---------------------------------------------------------------------------- the function
 def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", targets=None, start=None,
-             perturbation: float = PERTURBATION, timeout: float | None = None) -> Simulation:
+             perturbation: float = PERTURBATION, timeout: float | None = None,
+             progress: Callable[[int, int], Any] | None = None) -> Simulation:
     """Quasi-static forward simulation of the chain under sampled inputs, with snap-through (module docstring).
 
     Parameters
@@ -573,6 +575,8 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
         starts.
     timeout : float, optional
         Seconds; on expiry the steps done are kept, ``status="time_limit"``.
+    progress : callable(done, total), optional
+        Called with the samples done and their number ``K``, after the start and after each step.
 
     Returns
     -------
@@ -610,20 +614,22 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
         raise InvalidParameterError(f"perturbation must be in (0, 0.1) rad, got {perturbation!r}",
                                     field="perturbation")
     with time_limit(timeout):
-        return _simulate(m, P, L, T, held, start, float(perturbation))
+        return _simulate(m, P, L, T, held, start, float(perturbation), progress)
 
 
-def _simulate(m, P, L, T, held, start, eps) -> Simulation:
+def _simulate(m, P, L, T, held, start, eps, progress=None) -> Simulation:
     K, n = P.shape[0], m.n
     run = _Run(m, P, L, T, held, eps)
     rows: list[ArmState] = []
     status, message = "complete", ""
+    tell = progress or (lambda done, total: None)
     try:
         state = _start_state(_chain(m, P[0]), held, None if held else L[0], T[0] if held else None, start)
     except TimeLimitError:
         state, status, message = None, "time_limit", "the time limit ran out before the start was found"
     if state is not None:
         rows.append(state)
+        tell(1, K)
         for k in range(K - 1):
             if expired():
                 status, message = "time_limit", f"the time limit ran out after {len(rows)} of {K} samples"
@@ -639,6 +645,7 @@ def _simulate(m, P, L, T, held, start, eps) -> Simulation:
                 break
             state = new
             rows.append(state)
+            tell(len(rows), K)
     if status == "complete":
         message = f"all {K} samples simulated, {len([e for e in run.events if e.kind != 'joint_limit'])} snap(s)"
     k = len(rows)

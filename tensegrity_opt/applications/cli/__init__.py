@@ -36,7 +36,9 @@ from .common import (
     add_curve_options,
     add_deflection_options,
     add_manipulator_options,
+    add_progress_option,
     eq_table,
+    exclusive,
     finite_float,
     fmt_q,
     note,
@@ -45,6 +47,7 @@ from .common import (
 from .control import add_control_parsers
 from .paths import add_path_parsers
 from .plot import add_plot_parser
+from .progress import Progress, equilibria_summary
 from .sweep import add_sweep_parser
 
 __all__ = ["main", "build_parser", "add_manipulator_options", "SERVICE_COMMANDS"]
@@ -79,7 +82,9 @@ def _cmd_equilibrium(args, m):
 
 
 def _cmd_equilibria(args, m):
-    eqs = find_equilibria(m, args.dx, args.dy, method=args.method)
+    with Progress("equilibria", enabled=args.progress) as bar:
+        eqs = find_equilibria(m, args.dx, args.dy, method=args.method)
+        bar.close(equilibria_summary(eqs, bar.seconds))
     how = f"method {eqs.method}, " + ("certified complete" if eqs.certified else "not certified")
     if eqs.paths:
         how += f" ({eqs.paths} homotopy paths, {eqs.failed_paths} failed)"
@@ -127,16 +132,18 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
                          "(2 sum b - dx, dy)")
     sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection (length)")
     sp.add_argument("--fx", type=finite_float, default=None,
-                    help="prescribe the tip force instead of the deflection (force; < 0 compresses; "
+                    help="prescribe the tip force instead of the deflection --dx, --dy (force; < 0 compresses; "
                          "0 when only --fy is given)")
     sp.add_argument("--fy", type=finite_float, default=None,
                     help="sideways tip force (force; 0 when only --fx is given)")
+    exclusive(sp, ["--dx", "--dy"], ["--fx", "--fy"], "a tip deflection or a tip force, not both")
 
     sp = command("equilibria", _cmd_equilibria, "every equilibrium (minima, saddles, maxima) for a tip deflection")
     add_deflection_options(sp)
     sp.add_argument("--method", choices=("search", "homotopy"), default="search",
                     help="search: multi-start Newton (any n, not certified); homotopy: PHCpack, certified, "
                          "n <= 6 (default: %(default)s)")
+    add_progress_option(sp)
 
     sp = command("curve", _cmd_curve, "force-deflection curve along the stable branch (Fig. 6)")
     add_curve_options(sp, num=11)

@@ -12,6 +12,8 @@ import json
 import math
 import os
 import sys
+from collections.abc import Callable, Sequence
+from typing import Any
 
 from ...errors import (
     InvalidParameterError,
@@ -25,24 +27,99 @@ from ...model.manipulator import Manipulator
 __all__ = ["add_manipulator_options", "add_analysis_options", "add_command", "add_deflection_options",
            "add_curve_options", "run_command", "positive_int", "non_negative_int",
            "at_least_two", "joint_index", "finite_float", "positive_float", "non_negative_float", "HELP_FORMAT",
-           "fmt_q", "eq_table", "Parser", "error", "note"]
+           "fmt_q", "eq_table", "Parser", "error", "note", "exclusive", "only_with", "add_rule", "add_progress_option",
+           "GIVEN"]
 
 #: Every command's help shows each option's default.
 HELP_FORMAT = argparse.ArgumentDefaultsHelpFormatter
+
+
+#: The namespace attribute holding the option strings given on the command line (:class:`Parser`).
+GIVEN = "given_options"
 
 
 class Parser(argparse.ArgumentParser):
     """An ``ArgumentParser`` whose usage errors are one line on stderr, ``PROG: error: MESSAGE (see PROG
     --help)``, and exit status 2 (argparse's status; its usage block is left out: for the commands with
     many options it buries the one line that matters). Subparsers inherit the class, and every
-    parser shows each option's default (:data:`HELP_FORMAT`) unless given another formatter."""
+    parser shows each option's default (:data:`HELP_FORMAT`) unless given another formatter.
+
+    It also refuses options that exclude each other (:func:`exclusive`, :func:`only_with`): argparse's
+    mutually exclusive groups take single options only and cannot see an option given at its default value,
+    so the parser notes every option given (the namespace's :data:`GIVEN`, a set of option strings) and checks
+    its rules after parsing, with argparse's own message: ``argument --fx: not allowed with argument --dx``."""
 
     def __init__(self, *args, **kwargs) -> None:
         kwargs.setdefault("formatter_class", HELP_FORMAT)
         super().__init__(*args, **kwargs)
+        self.rules: list[Callable[[argparse.Namespace, frozenset[str]], str | None]] = []
+        self._given: set[str] = set()
+
+    def _get_values(self, action, arg_strings):  # noqa: D102  (argparse's hook for every option it parses)
+        self._given.update(action.option_strings)
+        return super()._get_values(action, arg_strings)
+
+    def parse_known_args(self, args=None, namespace=None):  # noqa: D102
+        self._given = set()
+        ns, rest = super().parse_known_args(args, namespace)
+        given = frozenset(self._given | set(getattr(ns, GIVEN, ())))      # a subcommand's options included
+        setattr(ns, GIVEN, given)
+        for rule in self.rules:
+            message = rule(ns, given)
+            if message:
+                self.error(message)
+        return ns, rest
 
     def error(self, message: str):  # noqa: D102  (argparse's hook)
         self.exit(2, f"{self.prog}: error: {message} (see {self.prog} --help)\n")
+
+
+def add_rule(sp: argparse.ArgumentParser, rule: Callable[[argparse.Namespace, frozenset[str]], str | None]) -> None:
+    """Check ``rule(namespace, given) -> message | None`` after parsing (a message: the usage error) on ``sp``, a
+    :class:`Parser` (on a plain ``ArgumentParser``, which does not note the options given, nothing)."""
+    if isinstance(sp, Parser):
+        sp.rules.append(rule)
+
+
+def exclusive(sp: argparse.ArgumentParser, first: Sequence[str], second: Sequence[str], why: str = "") -> None:
+    """Refuse an option of ``second`` given with one of ``first`` (option strings; given at any value, its
+    default included): ``argument --fx: not allowed with argument --dx (WHY)``, exit status 2. ``sp`` is a
+    :class:`Parser` (a subcommand's parser: subparsers inherit the class); a plain ``ArgumentParser`` cannot
+    tell which options were given and checks nothing."""
+    suffix = f" ({why})" if why else ""
+
+    def rule(ns: argparse.Namespace, given: frozenset[str]) -> str | None:
+        a = next((o for o in first if o in given), None)
+        b = next((o for o in second if o in given), None)
+        return None if a is None or b is None else f"argument {b}: not allowed with argument {a}{suffix}"
+
+    add_rule(sp, rule)
+
+
+def only_with(sp: argparse.ArgumentParser, options: Sequence[str], other: str, values: Sequence[Any] | None = None,
+              why: str = "") -> None:
+    """Refuse the ``options`` (option strings) unless ``other`` is given too (``values`` None) or holds one of
+    ``values`` (its default counts): ``argument --normal: only with --control wall``, exit status 2."""
+    dest = other.lstrip("-").replace("-", "_")
+    names = [str(v) for v in values or ()]
+    want = other if values is None else f"{other} " + (names[0] if len(names) == 1 else
+                                                       f"{', '.join(names[:-1])} or {names[-1]}")
+    suffix = f" ({why})" if why else ""
+
+    def rule(ns: argparse.Namespace, given: frozenset[str]) -> str | None:
+        if (other in given) if values is None else (getattr(ns, dest, None) in values):
+            return None
+        a = next((o for o in options if o in given), None)
+        return None if a is None else f"argument {a}: only with {want}{suffix}"
+
+    add_rule(sp, rule)
+
+
+def add_progress_option(sp: argparse.ArgumentParser) -> None:
+    """``--progress/--no-progress``: a progress bar and a closing summary on stderr (None: when stderr is a
+    terminal; :mod:`.progress`)."""
+    sp.add_argument("--progress", action=argparse.BooleanOptionalAction, default=None,
+                    help="show a progress bar and a one-line summary on stderr; None: only when stderr is a terminal")
 
 
 def answer(exc: Exception) -> int:
@@ -165,7 +242,10 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
                    help="triangle half-length b (length; a segment is 2 b long straight)")
     g.add_argument("--k", type=finite_float, default=1.0, help="spring stiffness (force / length)")
     g.add_argument("--L0", type=finite_float, default=1.0, help="spring rest length (length)")
-    g.add_argument("--manipulator", metavar="FILE", help='JSON file {"segments": [{"a","b","k","L0"}, ...]}')
+    g.add_argument("--manipulator", metavar="FILE",
+                   help='JSON file {"segments": [{"a","b","k","L0"}, ...]}, instead of the uniform chain\'s options')
+    exclusive(sp, ["--manipulator"], ["--n", "--a", "--b", "--k", "--L0"],
+              "the chain comes from the file or from the uniform chain's options")
 
 
 

@@ -29,6 +29,7 @@ import argparse
 import csv
 import json
 import math
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
@@ -44,14 +45,17 @@ from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .common import (
     add_command,
+    add_progress_option,
     at_least_two,
     finite_float,
     fmt_q,
     joint_index,
     non_negative_float,
+    only_with,
     positive_float,
     positive_int,
 )
+from .progress import Progress
 
 __all__ = ["add_control_parsers", "add_plan_options", "add_simulate_options", "plan_from_args",
            "simulation_from_args", "load_cycle", "read_rows"]
@@ -147,13 +151,14 @@ def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any]:
     return T, loads, angles
 
 
-def plan_from_args(args: argparse.Namespace, m: Manipulator) -> PreloadPlan:
+def plan_from_args(args: argparse.Namespace, m: Manipulator,
+                   progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     T, loads, angles = _plan_inputs(args)
     return preloads_for_trajectory(m, T, loads=loads, end_angles=angles,
                                    bounds=None if args.bounds is None else tuple(args.bounds),
                                    rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
                                    start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
-                                   verify=not args.no_verify, timeout=args.timeout)
+                                   verify=not args.no_verify, timeout=args.timeout, progress=progress)
 
 
 def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
@@ -181,7 +186,8 @@ def _preloads(path: str, m: Manipulator) -> np.ndarray:
     return P
 
 
-def simulation_from_args(args: argparse.Namespace, m: Manipulator) -> Simulation:
+def simulation_from_args(args: argparse.Namespace, m: Manipulator,
+                         progress: Callable[[int, int], Any] | None = None) -> Simulation:
     P = None if args.preloads is None else _preloads(args.preloads, m)
     loads = None
     if args.load_cycle is not None:
@@ -198,7 +204,7 @@ def simulation_from_args(args: argparse.Namespace, m: Manipulator) -> Simulation
         raise InvalidParameterError("give --load-cycle, --preloads or (with --tip held) --targets", field="load_cycle")
     return simulate(m, P, loads, tip=args.tip, targets=targets,
                     start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
-                    perturbation=args.perturbation, timeout=args.timeout)
+                    perturbation=args.perturbation, timeout=args.timeout, progress=progress)
 
 
 # ---------------------------------------------------------------------------- shared options
@@ -253,6 +259,7 @@ def add_simulate_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
                    help="the state at sample 0 (rad, n angles; a stable equilibrium under the first inputs); "
                         "None: the least-energy one")
+    only_with(sp, ["--load-direction"], "--load-cycle")
     g.add_argument("--perturbation", type=positive_float, default=1e-4,
                    help="a snap's descent starts this far from the fold along its null vector (rad, < 0.1)")
     g.add_argument("--timeout", type=positive_float, default=None,
@@ -261,8 +268,11 @@ def add_simulate_options(sp: argparse.ArgumentParser) -> None:
 
 # ---------------------------------------------------------------------------- the commands
 def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
-    p = plan_from_args(args, m)
-    K = len(p.method)
+    with Progress("plan", unit="step", enabled=args.progress) as bar:
+        p = plan_from_args(args, m, progress=bar)
+        K = len(p.method)
+        bar.close(f"{K} steps in {bar.seconds:.1f} s, {int(np.sum(p.feasible))} feasible, "
+                  f"{int(np.sum(p.verified))} verified, status {p.status}")
     lines = [f"Preload plan, n = {m.n}, objective {args.objective}: {K} steps, {int(np.sum(p.feasible))} feasible, "
              f"{int(np.sum(p.verified))} verified, status {p.status} ({p.seconds:.2f} s)",
              f"{'#':>4} {'target x':>9} {'target y':>9} {'tip x':>9} {'tip y':>9} {'margin':>9} {'feas.':>5} "
@@ -277,7 +287,10 @@ def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
 
 
 def _cmd_simulate(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
-    sim = simulation_from_args(args, m)
+    with Progress("simulate", unit="sample", enabled=args.progress) as bar:
+        sim = simulation_from_args(args, m, progress=bar)
+        bar.close(f"{len(sim)} of {sim.steps} samples in {bar.seconds:.1f} s, {len(sim.snaps)} snap(s), "
+                  f"status {sim.status}")
     held = sim.mode == "held"
     D = sim.deflection
     lines = [f"Quasi-static simulation, {sim.mode} tip, n = {m.n}: {len(sim)} of {sim.steps} samples, "
@@ -354,6 +367,8 @@ def _cmd_stiffness(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
              f"K = [[{d.K[0, 0]:.6g}, {d.K[0, 1]:.6g}], [{d.K[1, 0]:.6g}, {d.K[1, 1]:.6g}]] (force / length), "
              f"eigenvalues {_fmt_g(d.eigenvalues)}, margin {d.margin:.4g}",
              "rest lengths (L1_0, L2_0) per segment: " + "; ".join(f"{a:.6g}, {b:.6g}" for a, b in d.rest_lengths),
+             "active bounds (segments 0-based; wider bounds may change the design): "
+             + ("; ".join(b.describe() for b in d.active_bounds) or "none"),
              f"configuration q = {fmt_q(d.q)}"]
     return d.to_dict, "\n".join(lines)
 
@@ -376,11 +391,13 @@ def add_control_parsers(subparsers: Any) -> None:
     sp = add_command(subparsers, "plan", _cmd_plan,
                      "rest lengths for a trajectory of tip positions, on one stable branch")
     add_plan_options(sp)
+    add_progress_option(sp)
 
     sp = add_command(subparsers, "simulate", _cmd_simulate,
                      "quasi-static simulation under a load cycle, preloads or held-tip targets, with the snaps at "
                      "folds")
     add_simulate_options(sp)
+    add_progress_option(sp)
 
     sp = add_command(subparsers, "force-estimate", _cmd_force_estimate,
                      "the tip force from measured joint angles (the arm as a force sensor)")

@@ -21,13 +21,14 @@ Examples::
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
 from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.equilibria.rest import find_equilibria_under_force
-from ...analyses.paths.atlas import StabilityAtlas, stability_atlas
+from ...analyses.paths.atlas import AtlasTarget, StabilityAtlas, stability_atlas
 from ...analyses.paths.boundaries import stability_boundary
 from ...analyses.paths.branches import Branch, trace_branch
 from ...analyses.paths.control import Control
@@ -37,14 +38,17 @@ from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .common import (
     add_command,
+    add_progress_option,
     at_least_two,
     eq_table,
     finite_float,
     fmt_q,
     non_negative_int,
+    only_with,
     positive_float,
     positive_int,
 )
+from .progress import Progress, equilibria_summary
 
 __all__ = ["add_path_parsers", "add_control_options", "add_start_options", "add_limit_load_options",
            "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args",
@@ -72,6 +76,9 @@ def add_control_options(sp: argparse.ArgumentParser, default: str = "guided") ->
                    help="preload only: the tip free under --load, or held where the start has it")
     g.add_argument("--load", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
                    help="preload only: the fixed tip load (force)")
+    only_with(sp, ["--base"], "--control", ("load", "guided", "wall"))
+    only_with(sp, ["--normal"], "--control", ("wall",))
+    only_with(sp, ["--tip", "--load"], "--control", ("preload",))
 
 
 def add_start_options(sp: argparse.ArgumentParser, deflection: bool = True) -> None:
@@ -83,6 +90,7 @@ def add_start_options(sp: argparse.ArgumentParser, deflection: bool = True) -> N
                        help="start from the least-energy equilibrium with the tip held at this deflection (length; "
                             "displacement and held-tip preload controls)")
         g.add_argument("--start-dy", type=finite_float, default=0.0, help="sideways deflection of that start (length)")
+        only_with(sp, ["--start-dy"], "--start-dx")
 
 
 def add_branch_options(sp: argparse.ArgumentParser) -> None:
@@ -98,6 +106,7 @@ def add_branch_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--depth", type=non_negative_int, default=None,
                    help="the bifurcation diagram to this many branch switches instead of one branch")
     g.add_argument("--max-branches", type=positive_int, default=24, help="with --depth: at most this many branches")
+    only_with(sp, ["--max-branches"], "--depth")
     g.add_argument("--timeout", type=positive_float, default=None,
                    help="seconds; then the points computed so far (status time_limit)")
 
@@ -146,9 +155,10 @@ def _grid_axis(spec: list[float], name: str) -> np.ndarray:
     return np.linspace(start, stop, int(num))
 
 
-def atlas_from_args(args: argparse.Namespace, m: Manipulator) -> StabilityAtlas:
+def atlas_from_args(args: argparse.Namespace, m: Manipulator,
+                    progress: Callable[[AtlasTarget], Any] | None = None) -> StabilityAtlas:
     return stability_atlas(m, _grid_axis(args.dx, "dx"), _grid_axis(args.dy, "dy"), method=args.method,
-                           edges=not args.no_edges, timeout=args.timeout)
+                           edges=not args.no_edges, timeout=args.timeout, progress=progress)
 
 
 def _control_kw(args: argparse.Namespace) -> dict[str, Any]:
@@ -216,8 +226,9 @@ def boundary_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
 
 # ---------------------------------------------------------------------------- the commands
 def _cmd_rest(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
-    fn = find_equilibria_under_force
-    eqs = fn(m, args.fx, args.fy, method=args.method, stable_only=args.stable_only)
+    with Progress("rest", enabled=args.progress) as bar:
+        eqs = find_equilibria_under_force(m, args.fx, args.fy, method=args.method, stable_only=args.stable_only)
+        bar.close(equilibria_summary(eqs, bar.seconds))
     head = ("Rest configurations (F = 0)" if args.fx == 0.0 and args.fy == 0.0 else
             f"Equilibria under the dead tip load ({args.fx:g}, {args.fy:g})")
     how = f"method {eqs.method}, " + ("certified complete" if eqs.certified else "not certified")
@@ -294,7 +305,20 @@ def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
 
 
 def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
-    at = atlas_from_args(args, m)
+    total = int(args.dx[2]) * int(args.dy[2])
+    seen = {"done": 0, "failed": 0}
+
+    def target_done(t: AtlasTarget) -> None:
+        seen["done"] += 1
+        seen["failed"] += not t.success
+        bar(seen["done"], total, seen["failed"])
+        if seen["done"] == total and not args.no_edges:
+            bar.stage("grid edges")
+
+    with Progress("atlas", total, unit="target", enabled=args.progress) as bar:
+        at = atlas_from_args(args, m, progress=target_done)
+        bar.close(f"{at.dx.size * at.dy.size} targets in {bar.seconds:.1f} s, {len(at.switches)} switches, "
+                  f"{len(at.branch_ends)} branch ends, status {at.status}")
     ns = at.n_stable
     lines = [f"Stability atlas of the held tip, n = {m.n}, method {at.method}: {at.dx.size} x {at.dy.size} targets, "
              f"status {at.status} ({at.seconds:.1f} s)",
@@ -328,6 +352,7 @@ def add_path_parsers(subparsers: Any) -> None:
                     help="for a nonzero load: multi-start Newton, or PHCpack's certified homotopy (n <= 6); "
                          "F = 0 is exact either way")
     sp.add_argument("--stable-only", action="store_true", help="only the stable equilibria")
+    add_progress_option(sp)
 
     sp = add_command(subparsers, "branch", _cmd_branch,
                      "an equilibrium branch by arclength continuation (or --depth: the bifurcation diagram), with "
@@ -338,6 +363,7 @@ def add_path_parsers(subparsers: Any) -> None:
                      "the dead load at which the path from a rest configuration loses stability")
     add_limit_load_options(sp)
     sp.add_argument("--include-branch", action="store_true", help="with --json: also the traced path")
+    only_with(sp, ["--include-branch"], "--json")
 
     sp = add_command(subparsers, "boundary", _cmd_boundary,
                      "a stability boundary: the folds or branch points over a second parameter")
@@ -347,3 +373,4 @@ def add_path_parsers(subparsers: Any) -> None:
                      "the stability atlas of the held tip: stable equilibria over a grid of deflections, the "
                      "least-energy switches and the branch ends")
     add_atlas_options(sp)
+    add_progress_option(sp)

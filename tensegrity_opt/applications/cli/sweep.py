@@ -1,4 +1,4 @@
-"""``tensegrity-opt sweep spec.json [-o out.csv|out.json|out.parquet] [--scheduler ...] [--no-progress]``.
+"""``tensegrity-opt sweep spec.json [-o out.csv|out.json|out.parquet] [--scheduler ...] [--[no-]progress]``.
 
 Wired into :mod:`tensegrity_opt.applications.cli` by :func:`add_sweep_parser` (the command handles
 its own arguments, so it registers as a ``run`` command returning the exit status).
@@ -8,7 +8,8 @@ benchmarks/RESULTS.md, "Sweep scheduler default"; :func:`tensegrity_opt.applicat
 ``serial`` solves in this process, ``threads`` in a pool of threads of this process, ``local`` on a
 ``dask.distributed.LocalCluster`` (one single-threaded worker process per core) and ``tcp://host:port``
 on a running Dask scheduler.
-A one-line summary goes to stderr. Errors (bad spec, unreadable file, unknown output type,
+A progress bar goes to stderr while it runs (by default when stderr is a terminal: ``--progress/--no-progress``,
+:mod:`.progress`), and a one-line summary at the end (always). Errors (bad spec, unreadable file, unknown output type,
 unreachable scheduler) print one line to stderr and exit with status 2; points that fail
 are rows with an ``error`` and do not change the exit status.
 """
@@ -25,6 +26,8 @@ from typing import Any
 
 from ...errors import TensegrityError
 from ..sweeps.scheduler import AUTO_CLUSTER_SECONDS, AUTO_SERIAL_POINTS, SCHEDULERS
+from .common import add_progress_option, add_rule
+from .progress import Progress
 
 __all__ = ["add_sweep_parser", "cmd_sweep"]
 
@@ -52,9 +55,23 @@ def add_sweep_parser(subparsers: Any) -> argparse.ArgumentParser:
                     help="threads (threads) or worker processes (local, auto) of this machine; None: one per core")
     sp.add_argument("--chunk-size", type=int, default=None, metavar="N",
                     help="points per task (threads, Dask); None: about four tasks per worker, at most 64")
-    sp.add_argument("--no-progress", action="store_true", help="no progress bar (it is shown only on a terminal)")
+    add_progress_option(sp)
+    add_rule(sp, _scheduler_rule)
     sp.set_defaults(run=cmd_sweep)
     return sp
+
+
+def _scheduler_rule(ns: argparse.Namespace, given: frozenset[str]) -> str | None:
+    """``--workers`` and ``--chunk-size`` are for the schedulers that use them: refused with ``serial`` (one point
+    after the other in this process), ``--workers`` with a running Dask scheduler's address (its workers)."""
+    if ns.scheduler == "serial":
+        bad = next((o for o in ("--workers", "--chunk-size") if o in given), None)
+        if bad:
+            return f"argument {bad}: not allowed with --scheduler serial (one point after the other in this process)"
+    elif "://" in ns.scheduler and "--workers" in given:
+        return (f"argument --workers: not allowed with --scheduler {ns.scheduler} (the running Dask scheduler's "
+                "workers solve)")
+    return None
 
 
 def _load_spec(path: str) -> Any:
@@ -88,13 +105,15 @@ def cmd_sweep(args: argparse.Namespace) -> int:
     if scheduler not in ("serial", "threads"):
         # Dask's INFO lines (cluster start and stop) would drown the summary.
         logging.getLogger("distributed").setLevel(logging.WARNING)
+    bar = Progress("sweep", unit="pt", enabled=args.progress)
     try:
-        result = sweep(spec, scheduler=scheduler, progress=not args.no_progress, chunk_size=args.chunk_size,
-                       workers=args.workers)
+        result = sweep(spec, scheduler=scheduler, progress=bar, chunk_size=args.chunk_size, workers=args.workers)
     except TensegrityError as exc:
         return fail(exc)
     except (OSError, TimeoutError) as exc:
         return fail(f"cannot reach the Dask scheduler {scheduler!r}: {exc}")
+    finally:
+        bar.close()
     try:
         if args.output:
             out = result.save(args.output)

@@ -9,7 +9,6 @@ import concurrent.futures
 import math
 import os
 import statistics
-import sys
 import time
 import uuid
 from collections.abc import Callable, Iterable
@@ -40,35 +39,21 @@ AUTO_PROBE_SECONDS = 5.0
 #: points (82 s); so only sweeps of minutes, where more cores pay, go to it.
 AUTO_CLUSTER_SECONDS = 120.0
 
-def _tty(stream: Any) -> bool:
-    try:
-        return bool(stream.isatty())
-    except Exception:
-        return False
+
+def _progress(progress: Any) -> tuple[Callable[[int, int, int], Any] | None, Callable[[], Any]]:
+    """``(report, close)`` for :func:`sweep`'s ``progress``: a callable is the report itself; True the command
+    line's bar (:class:`tensegrity_opt.applications.cli.progress.Progress`, shown when stderr is a terminal)."""
+    if callable(progress):
+        return progress, lambda: None
+    if not progress:
+        return None, lambda: None
+    from ..cli.progress import Progress
+
+    bar = Progress("sweep", unit="pt")
+    return bar, bar.close
 
 
-class _Progress:
-    def __init__(self, enabled: bool, total: int) -> None:
-        self.bar = None
-        if enabled and _tty(sys.stderr):
-            try:
-                from tqdm import tqdm
-            except ImportError:  # pragma: no cover - tqdm missing: no bar
-                return
-            self.bar = tqdm(total=total, unit="pt", file=sys.stderr, dynamic_ncols=True, smoothing=0.1)
-
-    def update(self, k: int, errors: int) -> None:
-        if self.bar is not None:
-            self.bar.update(k)
-            if errors:
-                self.bar.set_postfix(errors=errors, refresh=False)
-
-    def close(self) -> None:
-        if self.bar is not None:
-            self.bar.close()
-
-
-def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
+def sweep(spec: Any, *, scheduler: Any = None, progress: bool | Callable[[int, int, int], Any] = False,
           on_result: Callable[[int, dict[str, Any]], Any] | None = None, skip: Iterable[int] = (),
           should_stop: Callable[[], bool] | None = None, chunk_size: int | None = None,
           workers: int | None = None) -> SweepResult:
@@ -87,8 +72,10 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
         more than :data:`AUTO_CLUSTER_SECONDS` serially (:func:`auto_scheduler`;
         ``SweepResult.scheduler`` says what ran: ``"serial"`` or ``"serial+local"``).
         An address: the Dask scheduler there (its workers need ``tensegrity_opt`` installed).
-    progress : bool
-        Show a tqdm bar on stderr, only when stderr is a terminal.
+    progress : bool or callable(done, total, errors)
+        A callable is called in the calling thread as the points arrive (``done`` of ``total`` to solve,
+        ``errors`` of them failed; first with ``done = 0``). True: a tqdm bar on stderr, shown only when
+        stderr is a terminal (the command line's, :mod:`tensegrity_opt.applications.cli.progress`).
     on_result : callable(index, row), optional
         Called in the calling thread as each point's row arrives (completion order). An
         exception it raises stops the sweep and propagates.
@@ -111,9 +98,23 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
     stop = should_stop or (lambda: False)
     rows: dict[int, dict[str, Any]] = {}
     t0 = time.perf_counter()
-    bar = _Progress(progress, len(todo))
+    report, close_report = _progress(progress)
     n_err = 0
     cancelled = False
+    n_done = 0
+
+    class _Bar:
+        """The scheduler's view of ``report``: ``update(k, errors)`` after ``k`` more points."""
+
+        @staticmethod
+        def update(k: int, errors: int) -> None:
+            nonlocal n_done
+            n_done += k
+            if report is not None:
+                report(n_done, len(todo), errors)
+
+    bar = _Bar()
+    bar.update(0, 0)
 
     def deliver(i: int, row: dict[str, Any]) -> None:
         nonlocal n_err
@@ -166,7 +167,7 @@ def sweep(spec: Any, *, scheduler: Any = None, progress: bool = False,
             label, cancelled = _run_dask(scheduler, header, param_cols, result_cols, todo, deliver, bar,
                                          lambda: n_err, stop, chunk_size, workers)
     finally:
-        bar.close()
+        close_report()
     types = column_types(norm)
     return SweepResult(norm, cols, [rows[i] for i in sorted(rows)], total=len(points), skipped=len(points) - len(todo),
                        cancelled=cancelled, elapsed=time.perf_counter() - t0, scheduler=label, types=types)

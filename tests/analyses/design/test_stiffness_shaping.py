@@ -180,3 +180,31 @@ def test_stiffness_design_to_dict_is_json():
 def test_time_limit():
     with pytest.raises(to.TimeLimitError):
         to.preloads_for_stiffness(PAPER, TARGET, eig_bounds=[0.04, 0.6], timeout=1e-4)
+
+
+# ---------------------------------------------------------------------------- the bounds the design presses against
+def test_active_bounds_name_the_rest_lengths_at_or_near_a_bound():
+    """The paper's chain at (7.5, 1) with eigenvalues in [0.05, 0.5]: L2_0 of segment 0 and both springs of
+    segment 1 on the upper bound 4 (= 4 b), L1_0 of segment 3 at 0.105, within 1 % of the interval of its lower
+    bound 0.1 (= 0.1 b); the others (3.94 ...) are free."""
+    d = to.preloads_for_stiffness(PAPER, (7.5, 1.0), eig_bounds=(0.05, 0.5))
+    got = [(b.segment, b.variable, b.side, b.bound) for b in d.active_bounds]
+    assert got == [(0, "L2_0", "upper", 4.0), (1, "L1_0", "upper", 4.0), (1, "L2_0", "upper", 4.0),
+                   (3, "L1_0", "lower", pytest.approx(0.1))]
+    for b in d.active_bounds:
+        assert b.value == d.rest_lengths[b.segment, int(b.variable[1]) - 1]
+    assert d.to_dict()["active_bounds"][3] == {"segment": 3, "variable": "L1_0", "side": "lower",
+                                               "value": d.rest_lengths[3, 0], "bound": pytest.approx(0.1)}
+
+
+def test_active_bounds_helper():
+    from tensegrity_opt.analyses.design.active_bounds import ACTIVE_TOL, ActiveBound, active_bounds
+
+    x = {"L1_0": [0.1, 0.5, 3.99, 2.0], "k": [1.0, 5.0]}
+    lo = {"L1_0": 0.1, "k": [0.2, 0.2]}
+    hi = {"L1_0": [4.0, 4.0, 4.0, 4.0], "k": float("inf")}
+    got = active_bounds(x, lo, hi)
+    assert got == (ActiveBound(0, "L1_0", "lower", 0.1, 0.1), ActiveBound(2, "L1_0", "upper", 3.99, 4.0))
+    assert active_bounds({"k": [0.2 + 0.5 * ACTIVE_TOL]}, {"k": 0.2}, {"k": float("inf")})[0].side == "lower"
+    assert active_bounds({"k": [0.2 + 2 * ACTIVE_TOL]}, {"k": 0.2}, {"k": float("inf")}) == ()
+    assert got[0].describe() == "L1_0[0] = 0.1 (lower bound 0.1)"

@@ -7,7 +7,7 @@ import sys
 from pathlib import Path
 
 import pytest
-from cli_checks import USAGE_ERRORS, one_error_line
+from cli_checks import USAGE_ERRORS, one_error_line, refuses_together
 
 from tensegrity_opt.applications.cli import main
 
@@ -199,3 +199,18 @@ def test_a_physical_answer_is_no_usage_error(argv, capsys):
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and err[0].startswith("tensegrity-opt: answer: ")
     assert "K = " in err[0] and "= -1 <= 0" in err[0]
+
+
+# ---------------------------------------------------------------------------- options that exclude each other
+@pytest.mark.parametrize("argv, first, second", [
+    (["equilibrium", "--dx", "0.1", "--fx", "1"], "--dx", "--fx"),
+    (["equilibrium", "--dy", "0.1", "--fy", "1"], "--dy", "--fy"),
+    (["equilibrium", "--fx", "-0.05", "--dy", "0.2"], "--dy", "--fx"),
+    (["buckling", "--manipulator", "m.json", "--n", "3"], "--manipulator", "--n"),
+    (["curve", "--k", "2", "--manipulator", "m.json"], "--manipulator", "--k"),
+    (["equilibria", "--manipulator", "m.json", "--L0", "0.9"], "--manipulator", "--L0"),
+])
+def test_options_that_exclude_each_other_are_refused(argv, first, second, capsys):
+    """A deflection and a force (the force won silently), a chain file and the uniform chain's options (the
+    file won silently): one line naming both, exit status 2, before anything is read or solved."""
+    refuses_together(main, argv, first, second, capsys)

@@ -11,7 +11,7 @@ import json
 
 import numpy as np
 import pytest
-from cli_checks import writes_png_and_svg
+from cli_checks import refuses_together, writes_png_and_svg
 
 import tensegrity_opt as to
 from tensegrity_opt.applications.cli import build_parser, main
@@ -178,3 +178,21 @@ def test_stiffness_design_and_load_capacity(capsys):
     with pytest.raises(SystemExit) as e:
         main(["load-capacity", "--directions", "0"])
     assert e.value.code == 2 and "--directions" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("argv, first, second", [
+    (["simulate", "--preloads", "p.json", "--load-direction", "1", "0"], "--load-direction", "--load-cycle"),
+    (["plot", "simulation", "--tip", "held", "--targets", "t.csv", "--load-direction", "1", "0", "-o", "x.png"],
+     "--load-direction", "--load-cycle"),
+    (["plan", "--line", "7.9", "0.2", "7.3", "1.4", "3", "--manipulator", "m.json", "--a", "0.5"],
+     "--manipulator", "--a"),
+    (["plan", "--line", "7.9", "0.2", "7.3", "1.4", "3", "--targets", "t.csv"], "--line", "--targets"),
+])
+def test_control_options_that_exclude_each_other_are_refused(argv, first, second, capsys):
+    refuses_together(main, argv, first, second, capsys)
+
+
+def test_stiffness_design_names_the_active_bounds(capsys):
+    assert main(["stiffness-design", "--target", "7.5", "1.0", "--eig-bounds", "0.05", "0.5"]) == 0
+    line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("active bounds"))
+    assert "L1_0[3] = 0.104853 (lower bound 0.1)" in line and "L1_0[1] = 4 (upper bound 4)" in line

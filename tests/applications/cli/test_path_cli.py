@@ -12,7 +12,7 @@ import json
 
 import numpy as np
 import pytest
-from cli_checks import writes_png_and_svg
+from cli_checks import refuses_together, writes_png_and_svg
 
 import tensegrity_opt as to
 from tensegrity_opt.applications.cli import build_parser, main
@@ -127,3 +127,20 @@ def test_every_option_of_the_path_commands_has_help_and_its_default(capsys):
         main(["branch", "--help"])
     out = capsys.readouterr().out
     assert "(default: guided)" in out and "(default: 1000)" in out and "(length)" in out and "(force)" in out
+
+
+@pytest.mark.parametrize("argv, first, second", [
+    (["branch", "--control", "displacement", "--base", "1", "0"], "--base", "--control load, guided or wall"),
+    (["branch", "--normal", "0", "1"], "--normal", "--control wall"),
+    (["boundary", "--control", "load", "--normal", "0", "1"], "--normal", "--control wall"),
+    (["branch", "--load", "0", "0.1"], "--load", "--control preload"),
+    (["branch", "--control", "guided", "--tip", "held"], "--tip", "--control preload"),
+    (["branch", *STRAIGHT, "--start-dy", "0.1"], "--start-dy", "--start-dx"),
+    (["branch", *STRAIGHT, "--max-branches", "3"], "--max-branches", "--depth"),
+    (["limit-load", "--include-branch"], "--include-branch", "--json"),
+    (["plot", "branch", "--normal", "0", "1", "-o", "x.png"], "--normal", "--control wall"),
+])
+def test_options_for_another_mode_are_refused(argv, first, second, capsys):
+    """An option that belongs to another control, another start or another mode (it was ignored without a
+    word): one line naming it and what it needs, exit status 2."""
+    refuses_together(main, argv, first, second, capsys)

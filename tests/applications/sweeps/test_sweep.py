@@ -403,3 +403,18 @@ def test_a_misspelt_name_is_refused_naming_the_nearest(spec, words):
     with pytest.raises(to.InvalidParameterError) as info:
         S.validate_spec(spec)
     assert str(info.value).startswith(words)
+
+
+@pytest.mark.parametrize("argv, first, second", [
+    (["--scheduler", "serial", "--workers", "2"], "--workers", "--scheduler serial"),
+    (["--scheduler", "serial", "--chunk-size", "4"], "--chunk-size", "--scheduler serial"),
+    (["--scheduler", "tcp://127.0.0.1:8786", "--workers", "2"], "--workers", "--scheduler tcp://127.0.0.1:8786"),
+])
+def test_cli_sweep_refuses_options_its_scheduler_ignores(argv, first, second, tmp_path, capsys):
+    from cli_checks import refuses_together
+
+    from tensegrity_opt.applications.cli import main
+
+    spec_file = tmp_path / "spec.json"
+    spec_file.write_text(json.dumps(MIXED))
+    refuses_together(main, ["sweep", str(spec_file), *argv], first, second, capsys)

@@ -1,5 +1,7 @@
 """Contains all the data models used in inputs/outputs"""
 
+from .active_bound_out import ActiveBoundOut
+from .active_bound_out_side import ActiveBoundOutSide
 from .angle_range import AngleRange
 from .atlas_crossing_out import AtlasCrossingOut
 from .atlas_crossing_out_kind import AtlasCrossingOutKind
@@ -228,6 +230,8 @@ from .version_out import VersionOut
 from .wall_control_in import WallControlIn
 
 __all__ = (
+    "ActiveBoundOut",
+    "ActiveBoundOutSide",
     "AngleRange",
     "AtlasCrossingOut",
     "AtlasCrossingOutKind",

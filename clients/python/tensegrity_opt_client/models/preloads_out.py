@@ -7,6 +7,7 @@ from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
 if TYPE_CHECKING:
+    from ..models.active_bound_out import ActiveBoundOut
     from ..models.manipulator_out import ManipulatorOut
     from ..models.solver_info import SolverInfo
 
@@ -19,6 +20,7 @@ class PreloadsOut:
     """`PreloadDesign.to_dict()`: rest lengths for a pose, verified by the forward equilibrium.
 
     Attributes:
+        active_bounds (list[ActiveBoundOut]): the rest lengths at (or near) their bounds
         energy (float):
         manipulator (ManipulatorOut):
         margin (float): achieved stability margin (recomputed)
@@ -32,6 +34,7 @@ class PreloadsOut:
         tip (list[float]):
     """
 
+    active_bounds: list[ActiveBoundOut]
     energy: float
     manipulator: ManipulatorOut
     margin: float
@@ -45,6 +48,11 @@ class PreloadsOut:
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        active_bounds = []
+        for active_bounds_item_data in self.active_bounds:
+            active_bounds_item = active_bounds_item_data.to_dict()
+            active_bounds.append(active_bounds_item)
+
         energy = self.energy
 
         manipulator = self.manipulator.to_dict()
@@ -73,6 +81,7 @@ class PreloadsOut:
         field_dict.update(self.additional_properties)
         field_dict.update(
             {
+                "active_bounds": active_bounds,
                 "energy": energy,
                 "manipulator": manipulator,
                 "margin": margin,
@@ -90,10 +99,18 @@ class PreloadsOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.active_bound_out import ActiveBoundOut  # noqa: PLC0415
         from ..models.manipulator_out import ManipulatorOut  # noqa: PLC0415
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
 
         d = dict(src_dict)
+        active_bounds = []
+        _active_bounds = d.pop("active_bounds")
+        for active_bounds_item_data in _active_bounds:
+            active_bounds_item = ActiveBoundOut.from_dict(active_bounds_item_data)
+
+            active_bounds.append(active_bounds_item)
+
         energy = d.pop("energy")
 
         manipulator = ManipulatorOut.from_dict(d.pop("manipulator"))
@@ -122,6 +139,7 @@ class PreloadsOut:
         tip = cast(list[float], d.pop("tip"))
 
         preloads_out = cls(
+            active_bounds=active_bounds,
             energy=energy,
             manipulator=manipulator,
             margin=margin,

@@ -9,6 +9,7 @@ from attrs import field as _attrs_field
 from ..models.stiffness_design_out_status import StiffnessDesignOutStatus
 
 if TYPE_CHECKING:
+    from ..models.active_bound_out import ActiveBoundOut
     from ..models.solver_info import SolverInfo
     from ..models.stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK
     from ..models.stiffness_design_out_manipulator import StiffnessDesignOutManipulator
@@ -24,6 +25,8 @@ class StiffnessDesignOut:
     Attributes:
         k (list[list[float]]): the verified Cartesian stiffness (force / length)
         k_desired (list[list[float]] | None):
+        active_bounds (list[ActiveBoundOut]): the rest lengths at (or near) their bounds: the design is the best within
+            them
         bounds_k (StiffnessDesignOutBoundsK):
         eig_bounds (list[float | None] | None):
         eigenvalues (list[float]):
@@ -47,6 +50,7 @@ class StiffnessDesignOut:
 
     k: list[list[float]]
     k_desired: list[list[float]] | None
+    active_bounds: list[ActiveBoundOut]
     bounds_k: StiffnessDesignOutBoundsK
     eig_bounds: list[float | None] | None
     eigenvalues: list[float]
@@ -81,6 +85,11 @@ class StiffnessDesignOut:
 
         else:
             k_desired = self.k_desired
+
+        active_bounds = []
+        for active_bounds_item_data in self.active_bounds:
+            active_bounds_item = active_bounds_item_data.to_dict()
+            active_bounds.append(active_bounds_item)
 
         bounds_k = self.bounds_k.to_dict()
 
@@ -131,6 +140,7 @@ class StiffnessDesignOut:
             {
                 "K": k,
                 "K_desired": k_desired,
+                "active_bounds": active_bounds,
                 "bounds_K": bounds_k,
                 "eig_bounds": eig_bounds,
                 "eigenvalues": eigenvalues,
@@ -153,6 +163,7 @@ class StiffnessDesignOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.active_bound_out import ActiveBoundOut  # noqa: PLC0415
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
         from ..models.stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK  # noqa: PLC0415
         from ..models.stiffness_design_out_manipulator import StiffnessDesignOutManipulator  # noqa: PLC0415
@@ -184,6 +195,13 @@ class StiffnessDesignOut:
             return cast(list[list[float]] | None, data)
 
         k_desired = _parse_k_desired(d.pop("K_desired"))
+
+        active_bounds = []
+        _active_bounds = d.pop("active_bounds")
+        for active_bounds_item_data in _active_bounds:
+            active_bounds_item = ActiveBoundOut.from_dict(active_bounds_item_data)
+
+            active_bounds.append(active_bounds_item)
 
         bounds_k = StiffnessDesignOutBoundsK.from_dict(d.pop("bounds_K"))
 
@@ -247,6 +265,7 @@ class StiffnessDesignOut:
         stiffness_design_out = cls(
             k=k,
             k_desired=k_desired,
+            active_bounds=active_bounds,
             bounds_k=bounds_k,
             eig_bounds=eig_bounds,
             eigenvalues=eigenvalues,
