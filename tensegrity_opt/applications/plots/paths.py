@@ -366,7 +366,7 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
             what = branch_quantity_label(name, items[0].control).rsplit(" (", 1)[0]
             note = ax.annotate(f"{what} = {number_text(float(vals[0]))} all along "
                                f"{'every' if len(items) > 1 else 'this'} branch;\nthe events mark where other "
-                               "branches leave it", (0.02, 0.96), xycoords="axes fraction", va="top", fontsize=8,
+                               "branches leave it (a bifurcation diagram, depth 1, draws them)", (0.02, 0.96), xycoords="axes fraction", va="top", fontsize=8,
                                color="0.3")
             note.set_gid("constant-note")
             break

@@ -123,6 +123,7 @@ def test_one_trivial_branch_says_its_response_is_constant():
     last = max(_event_ts([br]))
     assert last < hi <= 1.5 * last and lo <= 0.0
     assert "= 0 all along this branch" in gid(fig, "constant-note").get_text()
+    assert "depth 1" in gid(fig, "constant-note").get_text()           # and how to draw the branches leaving it
     with pytest.raises(InvalidParameterError) as e:
         plots.plot_branches(br, PAPER, crop=-1.0)
     assert e.value.field == "crop"
