@@ -288,7 +288,8 @@ def test_sweep_rows_hold_the_values_of_the_result_dicts():
             k: d[k] for k in ("energy", "stable", "morse_index", "kind", "shape", "signs", "q")}
         assert (row["fx"], row["fy"]) == (d["force"]["fx"], d["force"]["fy"])
         assert [row["tip_x"], row["tip_y"]] == d["tip"]
-        assert (row["status"], row["iterations"]) == (d["solver"]["status"], d["solver"]["iterations"])
+        assert (row["status"], row["solver_status"], row["iterations"]) == (
+            d["status"], d["solver"]["status"], d["solver"]["iterations"])
 
     res = S.sweep({"analysis": "buckling", "grid": {"n": [3, 4]}})
     for row, n in zip(res.rows, (3, 4), strict=True):

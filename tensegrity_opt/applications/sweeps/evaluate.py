@@ -65,7 +65,7 @@ def _equilibrium_row(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str
     return {"energy": nullable(eq.energy), "fx": nullable(eq.fx), "fy": nullable(eq.fy), "stable": bool(eq.stable),
             "morse_index": int(eq.morse_index), "kind": eq.kind, "shape": eq.shape, "signs": eq.signs,
             "q": nullables(eq.q), "tip_x": nullable(eq.tip[0]), "tip_y": nullable(eq.tip[1]),
-            "status": str(eq.solver.status), "iterations": int(eq.solver.iterations)}
+            "status": eq.status, "solver_status": str(eq.solver.status), "iterations": int(eq.solver.iterations)}
 
 
 def _stiffness(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -> dict[str, Any]:
@@ -106,8 +106,8 @@ def _design(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -
     values = {"a": dm.a, "b": dm.b, "k": dm.k1, "L0": dm.L1_0}
     out = {"critical_force": nullable(d.critical_force), "multiplicity": int(d.multiplicity),
            "initial_critical_force": nullable(d.initial_critical_force), "loads": nullables(d.loads),
-           "active": [str(a) for a in d.active], "status": str(d.solver.status), "success": bool(d.success),
-           "iterations": int(d.solver.iterations)}
+           "active": [str(a) for a in d.active], "status": d.status, "success": bool(d.success),
+           "solver_status": str(d.solver.status), "iterations": int(d.solver.iterations)}
     out.update({f"{v}_opt": nullables(values[v]) for v in opts["vary"]})
     return out
 

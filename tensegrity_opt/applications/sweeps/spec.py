@@ -57,7 +57,7 @@ RESULT_COLUMNS: dict[str, dict[str, str]] = {
                  "mode_signs": "str", "mode_q": "floats"},
     "equilibrium": {"energy": "float", "fx": "float", "fy": "float", "stable": "bool", "morse_index": "int",
                     "kind": "str", "shape": "str", "signs": "str", "q": "floats", "tip_x": "float",
-                    "tip_y": "float", "status": "str", "iterations": "int"},
+                    "tip_y": "float", "status": "str", "solver_status": "str", "iterations": "int"},
     "equilibria_count": {"count": "int", "n_stable": "int", "n_saddle": "int", "n_maximum": "int",
                          "min_energy": "float"},
     "stiffness": {"kxx": "float", "kxy": "float", "kyy": "float", "fx": "float", "fy": "float",
@@ -66,7 +66,8 @@ RESULT_COLUMNS: dict[str, dict[str, str]] = {
               "least_energy": "float", "least_signs": "str", "tie": "bool", "stable_energy": "floats",
               "stable_q": "floats", "certified": "bool", "method": "str"},
     "design": {"critical_force": "float", "multiplicity": "int", "initial_critical_force": "float",
-               "loads": "floats", "active": "strs", "status": "str", "success": "bool", "iterations": "int"},
+               "loads": "floats", "active": "strs", "status": "str", "success": "bool", "solver_status": "str",
+               "iterations": "int"},
 }
 
 _BASE_TYPES = {"index": "int", "error": "str", **PARAMETER_TYPES}
