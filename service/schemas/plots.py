@@ -176,12 +176,17 @@ class PlotBranchRequest(_PlotRequest, _BranchFields):
 
 
 class PlotLimitLoadRequest(_PlotRequest, _LimitLoadFields):
-    """The load path of `/v1/limit-load`: load against the tip displacement along it, the limit point and the
-    quasi-buckling load marked."""
+    """The load path of `/v1/limit-load`, the limit point and the quasi-buckling load marked; at a bifurcation
+    also the buckled arms leaving it (load against the end angle), else load against the tip displacement along
+    the load."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [{"manipulator": s.PAPER_CHAIN, "direction": [-1.0, 0.0], "boundary": "guided",
                       "start": {"q": [0.0, 0.0, 0.0, 0.0]}}]})
+
+    arms: bool = Field(True, description=(
+        "at a bifurcation, also draw the buckled arms leaving it (to their first fold or joint limit) against the "
+        "end angle phi; false: the path only, against the tip displacement along the load"))
 
 
 class PlotBoundaryRequest(_PlotRequest, StabilityBoundaryRequest):

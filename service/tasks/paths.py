@@ -20,7 +20,8 @@ from .. import schemas as s
 from ..adapters.inputs import branch_start, build_control, build_manipulator, control_kwargs, optional_array, values
 
 __all__ = ["seconds_left", "rest_configurations_task", "trace_branches", "bifurcation_diagram_task",
-           "find_limit_load", "limit_load_task", "find_stability_boundary", "find_atlas", "find_job_atlas"]
+           "find_limit_load", "find_limit_arms", "limit_load_task", "find_stability_boundary", "find_atlas",
+           "find_job_atlas"]
 
 
 def seconds_left(deadline: float) -> float:
@@ -73,6 +74,12 @@ def find_limit_load(req: Any, deadline: float) -> to.LimitLoad:
     start = optional_array(None if req.start is None else req.start.q)
     return to.limit_load(m, req.direction, req.boundary, req.max_load, start, max_points=req.max_points,
                          timeout=seconds_left(deadline))
+
+
+def find_limit_arms(result: to.LimitLoad, deadline: float) -> list[to.Branch]:
+    """The buckled arms leaving the limit point of ``result`` (none unless it is a bifurcation) within the soft
+    ``deadline``."""
+    return to.limit_arms(result, timeout=seconds_left(deadline))
 
 
 def limit_load_task(req: s.LimitLoadRequest, deadline: float) -> dict[str, Any]:

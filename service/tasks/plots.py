@@ -22,7 +22,14 @@ from typing import Any
 from ..adapters.inputs import build_manipulator, build_segment, values
 from ..schemas import plots as ps
 from .control import find_plan, find_simulation
-from .paths import find_atlas, find_job_atlas, find_limit_load, find_stability_boundary, trace_branches
+from .paths import (
+    find_atlas,
+    find_job_atlas,
+    find_limit_arms,
+    find_limit_load,
+    find_stability_boundary,
+    trace_branches,
+)
 
 __all__ = ["plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task", "plot_map_task",
            "plot_branch_task", "plot_limit_load_task", "plot_boundary_task", "plot_atlas_task", "plot_job_atlas_task",
@@ -106,7 +113,8 @@ def plot_limit_load_task(req: ps.PlotLimitLoadRequest, deadline: float) -> Any:
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
-    return plots.plot_limit_load(find_limit_load(req, deadline), m)
+    result = find_limit_load(req, deadline)
+    return plots.plot_limit_load(result, m, arms=find_limit_arms(result, deadline) if req.arms else None)
 
 
 @_rendered

@@ -16,7 +16,8 @@ engine (:mod:`.branches`):
 * :mod:`.diagram` - :func:`~.diagram.switch_branch` and :func:`~.diagram.bifurcation_diagram`;
 * :mod:`.curves` - :func:`~.curves.force_deflection`, the force-deflection curve with its jumps
   (:class:`~.curves.Curve`);
-* :mod:`.limit_load` - :func:`~.limit_load.limit_load` (:class:`~.limit_load.LimitLoad`);
+* :mod:`.limit_load` - :func:`~.limit_load.limit_load` (:class:`~.limit_load.LimitLoad`) and
+  :func:`~.limit_load.limit_arms`, the buckled arms leaving a bifurcation;
 * :mod:`.boundaries` - :func:`~.boundaries.stability_boundary` (:class:`~.boundaries.StabilityBoundary`);
 * :mod:`.atlas` - :func:`~.atlas.stability_atlas` (:class:`~.atlas.StabilityAtlas`);
 * :mod:`.simulation` and :mod:`.descent` - :func:`~.simulation.simulate`, the quasi-static simulation with its

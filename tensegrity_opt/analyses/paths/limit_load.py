@@ -14,6 +14,10 @@ stiffness ``k(t) = 1 / (d . C(t) d)``, ``C = J H^-1 J^T`` the tip compliance (gu
 about the smallest ``k`` and re-solved there. For an imperfect (pre-bent) column this tends to the
 critical load as the imperfection vanishes (Southwell); it is None where ``k`` only decreases or only
 grows along the path.
+
+:func:`limit_arms` follows the branches that leave the limit point of a bifurcation (the buckled arms, two mirror
+images ``q -> -q`` for a symmetric chain) with the branch switching of :mod:`.diagram`: the shapes the arm buckles
+into and whether they carry more load (supercritical) or less (subcritical).
 """
 
 from __future__ import annotations
@@ -24,18 +28,22 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InvalidParameterError
+from ...errors import InvalidParameterError, NoEquilibriumError
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome
 from ...serialize import nullable, number, numbers
+from ...timelimit import time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0
 from .branches import Branch, trace_branch
 from .control import Control
+from .diagram import switch_branch
 
-__all__ = ["LimitLoad", "limit_load", "check_max_load", "DEFAULT_MAX_LOAD"]
+__all__ = ["LimitLoad", "limit_load", "limit_arms", "check_max_load", "DEFAULT_MAX_LOAD", "ARMS_REACH"]
 
 #: Without ``max_load`` the path is followed up to this many force units ``k c^2 / (2 b)``.
 DEFAULT_MAX_LOAD = 100.0
+#: :func:`limit_arms` follows each arm at most up to this many times the limit load.
+ARMS_REACH = 5.0
 
 
 @dataclass(frozen=True)
@@ -274,3 +282,47 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
         message = f"no limit point found before the path was cut: {br.message}"
     return LimitLoad(status, message, None, None, None, "none", None, qb, qbf, end_load, d, boundary, eq0, br,
                      F0.copy())
+
+
+def limit_arms(result: LimitLoad, *, reach: float = ARMS_REACH, max_points: int = 400,
+               timeout: float | None = None) -> list[Branch]:
+    """The branches leaving the limit point of a bifurcation (:func:`limit_load` with ``kind="bifurcation"``):
+    the buckled arms, both sides of the branch point (:func:`~tensegrity_opt.analyses.paths.diagram.switch_branch`).
+
+    Each arm starts at the branch point and is followed to its first event (a fold: it snaps; a joint limit; a
+    further branch point), with the load ``t`` kept within ``[0, reach * load]``. For a symmetric chain the two
+    arms are mirror images (``q -> -q``); on a supercritical arm ``t`` grows past the limit load, on a
+    subcritical one it falls.
+
+    Parameters
+    ----------
+    result : LimitLoad
+    reach : float
+        The largest load followed, in multiples of the limit load (default :data:`ARMS_REACH`).
+    max_points : int
+        At most this many points per arm.
+    timeout : float, optional
+        Seconds for both arms; an arm cut by it keeps its points (``status="time_limit"``).
+
+    Returns
+    -------
+    list of Branch
+        The arms (side ``+1`` first, along the mode :attr:`LimitLoad.null_vector`); empty unless the limit is a
+        bifurcation, and without an arm the switch could not leave the branch point on.
+    """
+    if not isinstance(result, LimitLoad):
+        raise InvalidParameterError(f"limit_arms needs a LimitLoad, got {type(result).__name__}", field="result")
+    if not (isinstance(reach, (int, float)) and math.isfinite(reach) and reach > 1.0):
+        raise InvalidParameterError(f"reach must be a number > 1, got {reach!r}", field="reach")
+    if result.kind != "bifurcation" or result.load is None:
+        return []
+    ev = next(e for e in result.branch.events if e.stability == "lost" and e.kind == "branch_point")
+    arms = []
+    with time_limit(timeout):
+        for side in (1, -1):
+            try:
+                arms.append(switch_branch(result.branch, ev, side, t_min=0.0, t_max=float(reach) * result.load,
+                                          max_points=max_points, stop_at="event"))
+            except NoEquilibriumError:
+                continue
+    return arms

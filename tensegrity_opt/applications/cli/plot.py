@@ -22,6 +22,7 @@ Examples::
     tensegrity-opt plot branch --control guided --t-max 2 --start-q 0 0 0 0 --y fy -o branch.png
     tensegrity-opt plot branch --control guided --t-max 2 --start-q 0 0 0 0 --depth 1 --x q1 --y t -o diagram.svg
     tensegrity-opt plot limit-load --boundary guided --start-q 0 0 0 0 -o limit.png
+    tensegrity-opt plot limit-load --no-arms -o path.png
     tensegrity-opt plot boundary --parameter asymmetry -o boundary.png
     tensegrity-opt plot atlas --n 3 --a 0.5 --dx 0.2 1.4 7 --dy -0.6 0.6 7 -o atlas.png
     tensegrity-opt plot plan --line 7.9 0.2 7.3 1.4 13 --margin 0.05 -o plan.png
@@ -44,6 +45,7 @@ import numpy as np
 from ...analyses.equilibria.all_equilibria import find_equilibria
 from ...analyses.equilibria.landscape import energy_landscape, landscape_span
 from ...analyses.paths.curves import force_deflection
+from ...analyses.paths.limit_load import limit_arms
 from ...errors import InvalidParameterError, UnsupportedError
 from ...model.manipulator import Manipulator
 from ..plots.paths import BRANCH_DEFAULT_X, BRANCH_DEFAULT_Y  # no matplotlib: it is imported by each figure
@@ -199,10 +201,13 @@ def _cmd_branch(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any
 def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     r = limit_load_from_args(args, m)
-    fig = plots.plot_limit_load(r, m=m)
+    arms = limit_arms(r, timeout=args.timeout) if args.arms else []
+    fig = plots.plot_limit_load(r, m=m, arms=arms)
     return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load,
                                              "reason": None if r.kind != "none" else r.status,
-                                             "quasi_buckling_load": r.quasi_buckling_load})
+                                             "quasi_buckling_load": r.quasi_buckling_load,
+                                             "arms": [{"end": a.events[0].kind if a.events else a.status,
+                                                       "t_end": float(a.t[-1])} for a in arms]})
 
 
 def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
@@ -246,12 +251,21 @@ def _add_branch_plot_options(k: argparse.ArgumentParser) -> None:
                                                   "diagram; the axis of t shows a margin past the events)")
 
 
+def _add_limit_load_plot_options(k: argparse.ArgumentParser) -> None:
+    """The ``limit-load`` command's options and whether to draw the buckled arms."""
+    add_limit_load_options(k)
+    k.add_argument("--arms", action=argparse.BooleanOptionalAction, default=True,
+                   help="at a bifurcation, also draw the buckled arms leaving it (to their first fold or joint "
+                        "limit), against the end angle; --no-arms: the path only, against the tip displacement "
+                        "along the load")
+
+
 #: The kinds that draw the result of another command, with that command's options: ``(kind, help, options, func)``.
 _RESULT_KINDS = (
     ("branch", "branch diagram: one branch (or --depth: the bifurcation diagram) by Morse index, events marked",
      _add_branch_plot_options, _cmd_branch),
-    ("limit-load", "the load path of a limit load, the limit point and quasi-buckling load marked",
-     add_limit_load_options, _cmd_limit_load),
+    ("limit-load", "the load path of a limit load, the limit point and quasi-buckling load marked, at a "
+     "bifurcation the buckled arms", _add_limit_load_plot_options, _cmd_limit_load),
     ("boundary", "a stability boundary: critical t against the second parameter, cusps marked", add_boundary_options,
      _cmd_boundary),
     ("atlas", "the stability atlas: stable equilibria over (dx, dy), switch and branch-end curves", add_atlas_options,

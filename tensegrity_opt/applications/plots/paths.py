@@ -19,7 +19,7 @@ from .style import ENERGY_UNIT, FORCE_UNIT, chain_label, legend_beside, new_figu
 
 __all__ = ["plot_branches", "plot_limit_load", "plot_boundary", "plot_atlas", "branch_quantity_label",
            "boundary_parameter_label", "morse_color", "BRANCH_QUANTITIES", "BRANCH_DEFAULT_X", "BRANCH_DEFAULT_Y",
-           "BRANCH_CROP", "BOUNDARY_PARAMETER_LABELS", "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES"]
+           "BRANCH_CROP", "LIMIT_ARMS_X", "BOUNDARY_PARAMETER_LABELS", "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES"]
 
 
 # ---------------------------------------------------------------------------- loading paths
@@ -32,6 +32,8 @@ BRANCH_DEFAULT_Y = "phi"
 #: The default crop of :func:`plot_branches`: the axis of ``t`` shows the events and the branches' starts with this
 #: fraction of their span added either side.
 BRANCH_CROP = 0.25
+#: The response :func:`plot_limit_load` draws the load against when it draws the buckled arms.
+LIMIT_ARMS_X = "phi"
 
 #: Colour of a branch piece by its Morse index (index 0, stable: solid; the others dashed); beyond: the last.
 MORSE_COLORS = ("tab:blue", "tab:orange", "tab:red", "tab:purple", "tab:brown", "tab:pink", "tab:gray")
@@ -366,8 +368,8 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
             what = branch_quantity_label(name, items[0].control).rsplit(" (", 1)[0]
             note = ax.annotate(f"{what} = {number_text(float(vals[0]))} all along "
                                f"{'every' if len(items) > 1 else 'this'} branch;\nthe events mark where other "
-                               "branches leave it (a bifurcation diagram, depth 1, draws them)", (0.02, 0.96), xycoords="axes fraction", va="top", fontsize=8,
-                               color="0.3")
+                               "branches leave it (a bifurcation diagram, depth 1, draws them)", (0.02, 0.96),
+                               xycoords="axes fraction", va="top", fontsize=8, color="0.3")
             note.set_gid("constant-note")
             break
     ax.set_xlabel(branch_quantity_label(x, items[0].control))
@@ -381,32 +383,55 @@ def plot_branches(branches: Branch | Sequence[Branch], m: Manipulator, *, x: str
     return fig
 
 
-def plot_limit_load(result: LimitLoad, m: Manipulator, *, figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
-    """The load path of :func:`~tensegrity_opt.limit_load`: the load ``t`` against the tip displacement along
-    the load ``u = d . (tip - tip_0)`` (guided: ``y`` is held, so ``u = d_x (x - x_0)``), in pieces of constant Morse
-    index as :func:`plot_branches`, with the limit point marked (a fold: snap-through; a bifurcation: the
-    branch point) and the quasi-buckling load (the least tangent stiffness along the load) as a dotted
-    level with its point; a path that ends without a limit marks its end (a joint limit, ``max_load``).
+def _as_arms(arms: Branch | Sequence[Branch] | None) -> list[Branch]:
+    items = [] if arms is None else [arms] if isinstance(arms, Branch) else list(arms)
+    for i, b in enumerate(items):
+        if not isinstance(b, Branch):
+            raise InvalidParameterError(f"arms[{i}] must be a Branch, got {type(b).__name__}", field=f"arms[{i}]")
+    return items
 
-    Artists (``gid``): ``"path-morse<k>-<j>"``, ``"limit-point"``, ``"quasi-buckling"`` (the point),
-    ``"quasi-buckling-level"`` (the horizontal line), ``"path-end"``.
+
+def plot_limit_load(result: LimitLoad, m: Manipulator, *, arms: Branch | Sequence[Branch] | None = None,
+                    figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
+    """The load path of :func:`~tensegrity_opt.limit_load`, and at a bifurcation the buckled arms leaving it
+    (:func:`~tensegrity_opt.limit_arms`).
+
+    The load ``t`` is drawn against a response, in pieces of constant Morse index as :func:`plot_branches`,
+    with the limit point marked (a fold: snap-through; a bifurcation: the branch point) and the
+    quasi-buckling load (the least tangent stiffness along the load) as a dotted level with its point; a
+    path that ends without a limit marks its end (a joint limit, ``max_load``).
+
+    Without ``arms`` the response is the tip displacement along the load ``u = d . (tip - tip_0)`` (guided:
+    ``y`` is held, so ``u = d_x (x - x_0)``): a fold's path moves along the load. With ``arms`` it is the end
+    angle ``phi_n = q_1 + ... + q_n`` (:data:`LIMIT_ARMS_X`, the branch diagram's default response): zero on
+    the straight chain's path, which does not move before it buckles, and of opposite signs on the two mirror
+    arms (``u`` is the same on both, they would overlap); each arm's end (its first fold or joint limit) is
+    marked as :data:`EVENT_STYLES`.
+
+    Artists (``gid``): ``"path-morse<k>-<j>"``, ``"arm-<a>-morse<k>-<j>"`` (arm ``a``, its ``j``-th piece of
+    Morse index ``k``), ``"arm-ends-<kind>"``, ``"limit-point"``, ``"quasi-buckling"`` (the point),
+    ``"quasi-buckling-level"`` (the horizontal line), ``"path-end"``, ``"no-displacement-note"``.
     """
     if not isinstance(result, LimitLoad):
         raise InvalidParameterError(f"plot_limit_load needs a LimitLoad, got {type(result).__name__}", field="result")
+    arm_list = _as_arms(arms)
     br = result.branch
+    xq = LIMIT_ARMS_X if arm_list else "u"
     d = np.asarray(result.direction, float)
     fig = new_figure(figsize)
     ax = fig.subplots()
     ax.axhline(0.0, color="0.85", lw=0.8, zorder=0)
-    U, T = _branch_xy(br, "u"), br.t
+    U, T = _branch_xy(br, xq), br.t
     lost = next((e for e in br.events if e.stability == "lost"), None)
-    runs = _morse_runs(br, "u", "t")
+    runs = _morse_runs(br, xq, "t")
     indices = _draw_runs(ax, [r for r in runs if r[1].size], "path")
+    for a, arm in enumerate(arm_list):
+        indices |= _draw_runs(ax, [r for r in _morse_runs(arm, xq, "t") if r[1].size], f"arm-{a}")
     from matplotlib.lines import Line2D
 
     handles, labels = _morse_handles(indices)
     if result.kind != "none" and result.load is not None:
-        ue = _event_xy(br, lost, "u") if lost is not None else float(U[-1])
+        ue = _event_xy(br, lost, xq) if lost is not None else float(U[-1])
         style = EVENT_STYLES["fold" if result.kind == "fold" else "branch_point"]
         kw = {k: v for k, v in style.items() if k != "label"}
         pt, = ax.plot([ue], [result.load], ls="none", zorder=7, **kw)
@@ -419,6 +444,18 @@ def plot_limit_load(result: LimitLoad, m: Manipulator, *, figsize: tuple[float, 
         pt.set_gid("path-end")
         handles.append(Line2D([], [], ls="none", marker="s", ms=6, mfc="white", mec="black"))
         labels.append(f"end of the path ({result.status})")
+    for kind, style in EVENT_STYLES.items():          # where each arm ends: its first fold or joint limit
+        ends = [e for arm in arm_list for e in arm.events[:1] if e.kind == kind]
+        if not ends:
+            continue
+        kw = {k: v for k, v in style.items() if k != "label"}
+        arm_of = [arm for arm in arm_list for e in arm.events[:1] if e.kind == kind]
+        xs = [_event_xy(arm, e, xq) for arm, e in zip(arm_of, ends)]
+        pt, = ax.plot(xs, [e.t for e in ends], ls="none", zorder=7, **kw)
+        pt.set_gid(f"arm-ends-{kind}")
+        handles.append(Line2D([], [], ls="none", **kw))
+        loads = ", ".join(dict.fromkeys(f"{e.t:.4g}" for e in ends))
+        labels.append(f"arm's end: {style['label'].split(' (')[0]} at t = {loads}")
     if result.quasi_buckling_load is not None:
         qb = float(result.quasi_buckling_load)
         lev = ax.axhline(qb, color="tab:green", ls=":", lw=1.2, zorder=1)
@@ -431,20 +468,28 @@ def plot_limit_load(result: LimitLoad, m: Manipulator, *, figsize: tuple[float, 
         pt.set_gid("quasi-buckling")
         handles.append(Line2D([], [], ls=":", color="tab:green", marker="*", ms=9, mfc="tab:green", mec="black"))
         labels.append(f"quasi-buckling load {qb:.6g} (least tangent stiffness)")
-    finite_u = U[np.isfinite(U)]
+    shown = np.concatenate([U, *(_branch_xy(arm, xq) for arm in arm_list)])
+    finite_u = shown[np.isfinite(shown)]
     if finite_u.size and float(np.ptp(finite_u)) <= 1e-9 * max(1.0, float(br.straight_length)):
         # e.g. the straight chain under a guided load: it does not move until the limit point
-        note = ax.annotate("the tip does not move\nalong the load on this\npath ($u$ = 0)", (0.5, 0.5),
+        what = ("the end angle does not change\non this path ($\\varphi_n$ = 0)" if arm_list else
+                "the tip does not move\nalong the load on this\npath ($u$ = 0)")
+        note = ax.annotate(what, (0.5, 0.5),
                            xycoords="axes fraction", textcoords="offset points", xytext=(8, 0), ha="left",
                            fontsize=8, color="0.3")
         note.set_gid("no-displacement-note")
-    ax.set_xlabel("tip displacement along the load $u = d \\cdot (\\mathrm{tip} - \\mathrm{tip}_0)$ (length)")
+    if arm_list:
+        ax.set_xlabel(branch_quantity_label(xq, br.control))
+    else:
+        ax.set_xlabel("tip displacement along the load $u = d \\cdot (\\mathrm{tip} - \\mathrm{tip}_0)$ (length)")
     ax.set_ylabel(f"load $t = |F|$ along $d$ (force, {FORCE_UNIT})")
     ax.grid(True, lw=0.4, alpha=0.5)
     legend_beside(ax, handles, labels)
     head = (f"Limit load: {result.kind}" + (f" at P = {result.load:.6g}" if result.load is not None else
                                              f" ({result.status})")
             + f"; {result.boundary} tip, load along ({d[0]:.3g}, {d[1]:.3g})")
+    if arm_list:
+        head += f"\nthe path and the buckled arm{'s' if len(arm_list) > 1 else ''} leaving the branch point"
     ax.set_title(f"{head}\n{chain_label(m)}", fontsize=9)
     return fig
 
