@@ -71,6 +71,31 @@ def test_branch_figure_axes_have_one_default_on_every_interface():
     assert args.dpi == plots.DPI == PlotBranchRequest.model_fields["dpi"].default
 
 
+def test_limit_load_figure_draws_the_buckled_arms_by_default_on_every_interface(client):
+    import argparse
+    import inspect
+
+    from service.schemas.plots import PlotLimitLoadRequest
+    from tensegrity_opt.applications import plots
+    from tensegrity_opt.applications.cli.plot import add_plot_parser
+
+    parser = argparse.ArgumentParser()
+    add_plot_parser(parser.add_subparsers(dest="command"))
+    assert parser.parse_args(["plot", "limit-load", "-o", "l.png"]).arms is True
+    assert parser.parse_args(["plot", "limit-load", "--no-arms", "-o", "l.png"]).arms is False
+    assert PlotLimitLoadRequest.model_fields["arms"].default is True
+    assert inspect.signature(plots.plot_limit_load).parameters["arms"].default is None     # the branches, or none
+    svg = {}
+    for arms in (None, False):
+        body = {"manipulator": M4, "format": "svg", **({} if arms is None else {"arms": arms})}
+        r = client.post("/v1/plots/limit-load", json=body)
+        assert r.status_code == 200, r.text
+        check_svg(r.content)
+        svg[arms] = r.text
+    assert 'id="arm-0-morse0-0"' in svg[None] and 'id="arm-1-morse0-0"' in svg[None] and "end angle" in svg[None]
+    assert 'id="arm-0' not in svg[False] and 'id="path-morse0-0"' in svg[False]
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("kind", list(BODIES))
 def test_api_answers_png_and_svg(client, kind):

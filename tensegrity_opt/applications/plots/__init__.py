@@ -121,6 +121,7 @@ from .paths import (
     BRANCH_DEFAULT_Y,
     BRANCH_QUANTITIES,
     EVENT_STYLES,
+    LIMIT_ARMS_X,
     MORSE_COLORS,
     boundary_parameter_label,
     branch_quantity_label,
@@ -150,4 +151,4 @@ __all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_m
            "distinct_segments", "branch_quantity_label", "boundary_parameter_label", "morse_color", "FORMATS", "DPI",
            "STABILITY_COLORS", "MAP_PARAMS", "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT", "MARGIN_UNIT", "JUMP_STYLES",
            "BRANCH_QUANTITIES", "BRANCH_DEFAULT_X", "BRANCH_DEFAULT_Y", "BRANCH_CROP", "BOUNDARY_PARAMETER_LABELS",
-           "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES", "CONTROL_STYLES", "PLAN_STYLES"]
+           "LIMIT_ARMS_X", "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES", "CONTROL_STYLES", "PLAN_STYLES"]

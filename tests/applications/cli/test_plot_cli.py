@@ -6,6 +6,7 @@ from __future__ import annotations
 import argparse
 import json
 
+import numpy as np
 import pytest
 
 pytest.importorskip("matplotlib")
@@ -70,3 +71,23 @@ def test_cli_options_and_errors(tmp_path, capsys):
 
     assert cli.main(["plot", "torque", "-o", str(tmp_path / "w.png")]) == 0       # the plot command of the CLI
     check_png((tmp_path / "w.png").read_bytes())
+
+
+def test_default_limit_load_figure_draws_the_buckled_arms(tmp_path, monkeypatch):
+    from figures import gid, gids
+
+    from tensegrity_opt.applications import plots
+
+    drawn = []
+    save = plots.save
+    monkeypatch.setattr(plots, "save", lambda fig, *a, **kw: (drawn.append(fig), save(fig, *a, **kw))[1])
+    data, _ = _run(["plot", "limit-load", "--dpi", "50", "-o", str(tmp_path / "l.png")])
+    assert data["limit"] == "bifurcation" and data["load"] == pytest.approx(0.0761205, abs=1e-6)
+    assert [a["end"] for a in data["arms"]] == ["joint_limit"] * 2
+    fig = drawn[-1]
+    arms = [gid(fig, g).get_xydata() for g in gids(fig, "arm-") if g.startswith("arm-0-") or g.startswith("arm-1-")]
+    assert len(arms) == 2 and all(np.ptp(a[:, 0]) > 1.0 for a in arms)        # the end angle moves on the arms
+    assert arms[1][:, 0] == pytest.approx(-arms[0][:, 0], abs=1e-9)            # mirror images
+    assert arms[0][0] == pytest.approx([0.0, data["load"]], abs=1e-6)
+    data, _ = _run(["plot", "limit-load", "--no-arms", "--dpi", "50", "-o", str(tmp_path / "p.png")])
+    assert data["arms"] == [] and not gids(drawn[-1], "arm-") and gids(drawn[-1], "path-")

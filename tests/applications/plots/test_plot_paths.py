@@ -181,6 +181,88 @@ def test_limit_load_of_a_pre_bent_chain_marks_the_quasi_buckling_load(tmp_path):
         plots.plot_limit_load(res.branch, m)
 
 
+FREE_LOAD = 0.0761205                                   # the paper's chain, free tip: conventions.md
+
+
+def _xt(fig, prefix):
+    """The ``(x, t)`` points of the pieces whose gid starts with ``prefix``, in drawing order."""
+    return np.vstack([gid(fig, g).get_xydata() for g in gids(fig, prefix)])
+
+
+@pytest.fixture(scope="module")
+def free_limit():
+    res = to.limit_load(PAPER)
+    return res, to.limit_arms(res)
+
+
+def test_limit_load_draws_the_buckled_arms_leaving_the_bifurcation(free_limit, tmp_path):
+    res, arms = free_limit
+    assert res.kind == "bifurcation" and res.load == pytest.approx(FREE_LOAD, abs=1e-6)
+    assert len(arms) == 2 and all(a.events and a.events[0].kind == "joint_limit" for a in arms)
+    fig = plots.plot_limit_load(res, PAPER, arms=arms)
+    a0, a1 = _xt(fig, "arm-0-"), _xt(fig, "arm-1-")
+    for a in (a0, a1):
+        assert np.ptp(a[:, 0]) > 1.0                    # the response moves on the arms (phi_n, rad)
+        assert a[0] == pytest.approx([0.0, FREE_LOAD], abs=1e-6)       # each starts at the limit point
+        assert a[:, 1].max() > 2 * FREE_LOAD            # supercritical: the arms carry more load as they bend
+    assert a1[:, 0] == pytest.approx(-a0[:, 0], abs=1e-9) and a1[:, 1] == pytest.approx(a0[:, 1], abs=1e-9)
+    assert np.sign(a0[-1, 0]) == -np.sign(a1[-1, 0])
+    assert gid(fig, "limit-point").get_xydata()[0] == pytest.approx([0.0, FREE_LOAD], abs=1e-6)
+    ends = gid(fig, "arm-ends-joint_limit").get_xydata()
+    assert sorted(ends[:, 0]) == pytest.approx(sorted([a0[-1, 0], a1[-1, 0]]))
+    ax = fig.axes[0]
+    assert ax.get_xlabel() == plots.branch_quantity_label(plots.LIMIT_ARMS_X)
+    assert "no-displacement-note" not in gids(fig, "no-")
+    assert "buckled arms" in ax.get_title()
+    assert any(t.startswith("arm's end: joint limit at t = 0.3146") for t in legend_texts(fig, beside=True, count=1))
+    check_renders(fig, tmp_path, "arms")
+
+
+def test_a_buckled_arm_is_in_equilibrium_by_finite_differences(free_limit):
+    import reference_model as R
+
+    arm = free_limit[1][0]
+    i = len(arm) // 2
+    q, F = arm.q[i], arm.force[i]
+    assert F == pytest.approx([-arm.t[i], 0.0], abs=1e-12) and abs(q.sum()) > 0.3
+    chain = R.Chain.uniform(4, 1.0, 1.0, 1.0, 1.0)
+
+    def work(x):                                        # energy minus the dead load's work
+        return chain.energy(x) - F @ chain.tip(x)
+
+    h = 1e-6
+    grad = np.array([(work(q + h * e) - work(q - h * e)) / (2 * h) for e in np.eye(4)])
+    assert np.abs(grad).max() < 1e-7
+    assert free_limit[1][1].q[i] == pytest.approx(-q, abs=1e-9)      # its mirror image
+
+
+def test_limit_load_without_arms_draws_the_path_only(free_limit):
+    res, _ = free_limit
+    fig = plots.plot_limit_load(res, PAPER)
+    assert not gids(fig, "arm-") and gids(fig, "path-")
+    assert "tip displacement along the load" in fig.axes[0].get_xlabel()
+    assert gid(fig, "no-displacement-note")            # the straight path: u = 0 all along
+    assert "buckled" not in fig.axes[0].get_title()
+
+
+def test_limit_load_of_a_fold_has_no_arms_and_keeps_its_figure():
+    m = to.Manipulator([to.Segment(1, 1, 1, (1.02, 0.98))] * 4)         # pre-bent
+    res = to.limit_load(m, (-1.0, 0.0), "guided")
+    assert res.kind == "fold" and res.load == pytest.approx(0.553664, abs=1e-6)     # docs/paths.md
+    assert to.limit_arms(res) == []
+    fig, plain = plots.plot_limit_load(res, m, arms=to.limit_arms(res)), plots.plot_limit_load(res, m)
+    drawn = [g for p in ("path-", "limit-", "quasi-", "no-", "arm-") for g in gids(fig, p)]
+    assert drawn == [g for p in ("path-", "limit-", "quasi-", "no-", "arm-") for g in gids(plain, p)]
+    assert "limit-point" in drawn and not gids(fig, "arm-")
+    path = _xt(fig, "path-")
+    assert path == pytest.approx(_xt(plain, "path-")) and np.ptp(path[:, 0]) > 1e-3     # the path itself moves
+    assert fig.axes[0].get_xlabel() == plain.axes[0].get_xlabel()
+    assert "tip displacement along the load" in fig.axes[0].get_xlabel()
+    with pytest.raises(InvalidParameterError) as e:
+        plots.plot_limit_load(res, m, arms=[res.branch, "x"])
+    assert e.value.field == "arms[1]"
+
+
 @pytest.fixture(scope="module")
 def boundary():
     return stability_boundary(PAPER, "guided", "asymmetry", p_min=-0.02, p_max=0.02, max_points=60)
