@@ -20,12 +20,16 @@ T = TypeVar("T", bound="PlotLimitLoadRequest")
 
 @_attrs_define
 class PlotLimitLoadRequest:
-    """The load path of `/v1/limit-load`: load against the tip displacement along it, the limit point and the
-    quasi-buckling load marked.
+    """The load path of `/v1/limit-load`, the limit point and the quasi-buckling load marked; at a bifurcation
+    also the buckled arms leaving it (load against the end angle), else load against the tip displacement along
+    the load.
 
         Attributes:
             manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
                 {"segments": [...]}
+            arms (bool | Unset): at a bifurcation, also draw the buckled arms leaving it (to their first fold or joint
+                limit) against the end angle phi; false: the path only, against the tip displacement along the load Default:
+                True.
             boundary (PlotLimitLoadRequestBoundary | Unset): "free": the tip free, F = t d; "guided": y held, Fx = t d_x, Fy
                 the reaction Default: PlotLimitLoadRequestBoundary.FREE.
             direction (list[float] | Unset): the load's direction (normalised; [-1, 0] compresses)
@@ -40,6 +44,7 @@ class PlotLimitLoadRequest:
     """
 
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
+    arms: bool | Unset = True
     boundary: PlotLimitLoadRequestBoundary | Unset = PlotLimitLoadRequestBoundary.FREE
     direction: list[float] | Unset = UNSET
     dpi: int | Unset = 120
@@ -57,6 +62,8 @@ class PlotLimitLoadRequest:
             manipulator = self.manipulator.to_dict()
         else:
             manipulator = self.manipulator.to_dict()
+
+        arms = self.arms
 
         boundary: str | Unset = UNSET
         if not isinstance(self.boundary, Unset):
@@ -99,6 +106,8 @@ class PlotLimitLoadRequest:
                 "manipulator": manipulator,
             }
         )
+        if arms is not UNSET:
+            field_dict["arms"] = arms
         if boundary is not UNSET:
             field_dict["boundary"] = boundary
         if direction is not UNSET:
@@ -140,6 +149,8 @@ class PlotLimitLoadRequest:
             return manipulator_type_1
 
         manipulator = _parse_manipulator(d.pop("manipulator"))
+
+        arms = d.pop("arms", UNSET)
 
         _boundary = d.pop("boundary", UNSET)
         boundary: PlotLimitLoadRequestBoundary | Unset
@@ -199,6 +210,7 @@ class PlotLimitLoadRequest:
 
         plot_limit_load_request = cls(
             manipulator=manipulator,
+            arms=arms,
             boundary=boundary,
             direction=direction,
             dpi=dpi,

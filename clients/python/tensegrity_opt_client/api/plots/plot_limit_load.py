@@ -91,9 +91,11 @@ def sync_detailed(
     resolution.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -129,9 +131,11 @@ def sync(
     resolution.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -162,9 +166,11 @@ async def asyncio_detailed(
     resolution.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -198,9 +204,11 @@ async def asyncio(
     resolution.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.

@@ -89,9 +89,11 @@ def sync_detailed(
     API keys configured the job belongs to the key that submitted it.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -128,9 +130,11 @@ def sync(
     API keys configured the job belongs to the key that submitted it.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -162,9 +166,11 @@ async def asyncio_detailed(
     API keys configured the job belongs to the key that submitted it.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -199,9 +205,11 @@ async def asyncio(
     API keys configured the job belongs to the key that submitted it.
 
     Args:
-        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`: load against the tip
-            displacement along it, the limit point and the
-            quasi-buckling load marked.
+        body (PlotLimitLoadRequest): The load path of `/v1/limit-load`, the limit point and the
+            quasi-buckling load marked; at a bifurcation
+            also the buckled arms leaving it (load against the end angle), else load against the tip
+            displacement along
+            the load.
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
