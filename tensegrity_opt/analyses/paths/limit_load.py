@@ -307,8 +307,8 @@ def limit_arms(result: LimitLoad, *, reach: float = ARMS_REACH, max_points: int 
     Returns
     -------
     list of Branch
-        The arms (side ``+1`` first, along the mode :attr:`LimitLoad.null_vector`); empty unless the limit is a
-        bifurcation, and without an arm the switch could not leave the branch point on.
+        The arms, the one leaving along the mode :attr:`LimitLoad.null_vector` first; empty unless the limit is a
+        bifurcation (and without an arm the switch could not leave the branch point on).
     """
     if not isinstance(result, LimitLoad):
         raise InvalidParameterError(f"limit_arms needs a LimitLoad, got {type(result).__name__}", field="result")
@@ -325,4 +325,6 @@ def limit_arms(result: LimitLoad, *, reach: float = ARMS_REACH, max_points: int 
                                           max_points=max_points, stop_at="event"))
             except NoEquilibriumError:
                 continue
+    if result.null_vector is not None:           # the arm along the mode first
+        arms.sort(key=lambda b: -float((b.q[min(1, len(b) - 1)] - b.q[0]) @ result.null_vector))
     return arms

@@ -199,6 +199,7 @@ def test_limit_load_draws_the_buckled_arms_leaving_the_bifurcation(free_limit, t
     res, arms = free_limit
     assert res.kind == "bifurcation" and res.load == pytest.approx(FREE_LOAD, abs=1e-6)
     assert len(arms) == 2 and all(a.events and a.events[0].kind == "joint_limit" for a in arms)
+    assert (arms[0].q[1] - arms[0].q[0]) @ res.null_vector > 0            # the arm along the mode first
     fig = plots.plot_limit_load(res, PAPER, arms=arms)
     a0, a1 = _xt(fig, "arm-0-"), _xt(fig, "arm-1-")
     for a in (a0, a1):
