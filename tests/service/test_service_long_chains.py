@@ -165,5 +165,5 @@ def _job_points_solved(client: TestClient, job: str, wait: Callable[[float], Non
         assert time.monotonic() < deadline, "the job did not end"
         wait(0.2)
     assert status == "done", status
-    rows = client.get(f"/v1/jobs/{job}/results").json()["results"]
+    rows = client.get(f"/v1/jobs/{job}/results").json()["rows"]
     assert rows and not any(row.get("error") for row in rows), rows
