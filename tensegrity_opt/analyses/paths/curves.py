@@ -383,15 +383,13 @@ def _newton_stable(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
     return search_stable(m, target, starts, {}, minimize=False)[0]
 
 
-def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
-    """Every stable equilibrium the Newton-seeded global search finds (IPOPT when it finds none)."""
-    stable = _newton_stable(m, dx, dy)
-    if not stable:
-        try:
-            stable = [solve_equilibrium(m, dx, dy)]
-        except SolverError:                  # NoEquilibriumError included; TimeLimitError is no SolverError
-            stable = []
-    return stable
+def _least_at(m: Manipulator, dx: float, dy: float) -> Equilibrium | None:
+    """The least-energy stable equilibrium of :func:`solve_equilibrium` (its global search, the same call), or
+    None when it finds none (the curve then ends there unless another branch is found)."""
+    try:
+        return solve_equilibrium(m, dx, dy)
+    except SolverError:                      # NoEquilibriumError included; TimeLimitError is no SolverError
+        return None
 
 
 def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"] = "stable", *,
@@ -570,15 +568,16 @@ def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve
 
 
 def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free: bool) -> list[Equilibrium]:
+    """The branches a run starts from at its first point: the least-energy stable equilibrium of
+    :func:`solve_equilibrium` and every stable one Newton finds from the global seeds (every equilibrium of
+    :func:`find_equilibria` for ``branch="all"``), the least-energy one added last when the others miss it."""
+    least = _least_at(m, dx, dy)
     if m.n == 1:
-        try:
-            return [solve_equilibrium(m, dx, dy)]
-        except SolverError:                  # no equilibrium here: the curve ends (TimeLimitError still raises)
-            return []
-    if branch == "all":
-        return find_equilibria(m, dx, dy)
-    eqs = _stable_at(m, dx, dy)
-    if mirror_free:
+        return [] if least is None else [least]
+    eqs = list(find_equilibria(m, dx, dy)) if branch == "all" else _newton_stable(m, dx, dy)
+    if least is not None and not any(np.max(np.abs(e.q - least.q)) < 1e-7 for e in eqs):
+        eqs.append(least)
+    if mirror_free and branch != "all":
         # mirror images (q -> -q) of a mirror-symmetric chain at dy = 0 have equal energy all
         # along: following one of each pair is enough
         kept: list[Equilibrium] = []
