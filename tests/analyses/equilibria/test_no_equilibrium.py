@@ -3,7 +3,7 @@ target is reachable inside the range (every solution of the equations lies outsi
 the range's workspace, and keeps a solver breakdown an error.
 
 The chains (as ``(a, b, k, L0)``, symmetric springs) were drawn at random with targets near the edge of the
-range's workspace; on each target the certified homotopy (96 paths, none failed) finds no root inside the range,
+range's workspace; on each target the certified homotopy (96 or 832 paths, none failed) finds no root inside the range,
 and 2000 least-squares starts of the reference model (``kkt_least_squares``) converge only to solutions outside
 it.
 """
@@ -31,6 +31,17 @@ NONE_INSIDE = [
     ([(1.3470062, 1.0839657, 1.9624156, 0.2099818), (0.4521763, 0.6902586, 0.8445569, 2.4601873),
       (0.4027471, 0.8292592, 0.6460561, 1.6180259)], 4.762199617596034, -1.2132366039758693),
 ]
+#: the same with four segments (832 homotopy paths, seconds each)
+NONE_INSIDE_4 = [
+    ([(0.7269723, 1.3885492, 1.2967771, 1.9819449), (1.2698965, 0.8519763, 1.5947047, 0.9632348),
+      (0.5069536, 0.9310689, 1.1033804, 0.6800059), (0.5847316, 0.6744781, 2.5345692, 1.0863113)],
+     8.790364323492653, -0.19115672088319668),
+    ([(0.7713871, 0.7561586, 0.5419551, 0.4948071), (0.7946686, 0.8539796, 2.0418199, 1.158053),
+      (1.0073307, 0.700754, 0.8349678, 0.856759), (0.4961084, 0.8292559, 1.6504483, 1.8115222)],
+     6.696641695638417, 3.19415615437031),
+]
+ALL = NONE_INSIDE + [pytest.param(*c, marks=pytest.mark.slow) for c in NONE_INSIDE_4]
+ALL_IDS = [f"n{len(c[0])}-dx{c[1]:.3f}-dy{c[2]:+.3f}" for c in NONE_INSIDE + NONE_INSIDE_4]
 #: within the chain's length, outside the workspace of the range: no configuration inside the range reaches it
 OUTSIDE_WORKSPACE = ([(0.6406598, 0.8237603, 0.7910227, 0.265325), (1.3813072, 0.8151609, 1.6729369, 1.7244185)],
                      3.777579300549713, 1.7907393228447095)
@@ -59,7 +70,7 @@ def test_no_equilibrium_inside_the_range_is_an_empty_set(segs, dx, dy):
 
 
 @needs_phc
-@pytest.mark.parametrize("segs, dx, dy", NONE_INSIDE, ids=_ids(NONE_INSIDE))
+@pytest.mark.parametrize("segs, dx, dy", ALL, ids=ALL_IDS)
 def test_the_certified_homotopy_agrees_that_the_set_is_empty(segs, dx, dy):
     m = _chain(segs)
     cert = find_equilibria(m, dx, dy, method="homotopy")
@@ -69,7 +80,7 @@ def test_the_certified_homotopy_agrees_that_the_set_is_empty(segs, dx, dy):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("segs, dx, dy", NONE_INSIDE, ids=_ids(NONE_INSIDE))
+@pytest.mark.parametrize("segs, dx, dy", NONE_INSIDE + NONE_INSIDE_4, ids=ALL_IDS)
 def test_a_brute_force_multistart_finds_no_equilibrium_inside_the_range(segs, dx, dy):
     inside, outside = kkt_least_squares(Chain.from_segments(segs), dx, dy, n_starts=2000)
     assert inside == [] and outside > 100          # the equations' solutions exist, all outside the range
