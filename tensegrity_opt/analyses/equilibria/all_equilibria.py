@@ -78,7 +78,8 @@ class EquilibriumSet(Outcome, Sequence):
     :class:`~tensegrity_opt.Equilibrium` (``len``, iteration, indexing, slicing give a tuple, ``bool``).
 
     An empty set is an answer, not a failure: no equilibrium lies inside the physical range (proven when
-    ``certified``). Its ``status`` is the one its method gives a non-empty set.
+    ``certified``); its ``message`` says so and why. Its ``status`` is the one its method gives a non-empty set
+    (the search's ``searched``: complete in practice; the homotopy's ``certified``: proven).
 
     Attributes
     ----------
@@ -168,10 +169,11 @@ def homotopy_set(eqs, sol, polished) -> EquilibriumSet:
     (:class:`~tensegrity_opt.numerics.homotopy.PolishedRoots`): ``eqs`` (sorted), ``certified`` when the
     polished roots are (every path ended, the report checked out, no root lost, none too close), else
     ``uncertified``; the message is the polish's report (phc's runs and paths, and why not certified)."""
-    none = ("" if eqs else "no equilibrium inside the physical joint range |q| < pi - 2 beta"
-            + (" (proven: the set is certified): " if polished.certified else " found: "))
+    none = "" if eqs else ("no equilibrium inside the physical joint range |q| < pi - 2 beta"
+                           + (" (proven: the set is certified): " if polished.certified else " found: "))
     return EquilibriumSet(eqs, method="homotopy", status="certified" if polished.certified else "uncertified",
-                          message=none + polished.report, paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds)
+                          message=none + polished.report, paths=sol.paths, failed_paths=sol.failures,
+                          seconds=sol.seconds)
 
 
 def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
@@ -215,18 +217,25 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         ``status`` (``searched``; ``certified`` or ``uncertified`` for the homotopy; ``exact`` for the
         straight chain and a single segment), ``message``, ``method``, ``certified``, ``paths``,
         ``failed_paths``. For the paper's chain at small ``dx > 0, dy = 0``: 2 stable U, 2 saddles ZU,
-        2 maxima Z. Empty at full extension when the straight chain is not an equilibrium.
+        2 maxima Z. Empty at full extension when the straight chain is not an equilibrium, and where the target
+        is reachable inside the range but every equilibrium lies outside it (the search: when IPOPT's descents
+        reach the target with a joint pressed against its range limit; a success, ``status`` ``searched``, the
+        message saying so; the homotopy proves it, ``certified``).
 
     Raises
     ------
     UnreachableTargetError
-        (``ValueError``) beyond the chain's reach.
+        (``ValueError``) beyond the chain's reach; the search also where the target lies within the chain's
+        length but outside the workspace of the physical range (IPOPT finds it infeasible from every start, as
+        :func:`~tensegrity_opt.analyses.equilibria.least_energy.solve_equilibrium` does; the homotopy returns its
+        certified empty set there).
     InvalidParameterError
         (``ValueError``, ``field="method"``) for an unknown method or a chain too long for the homotopy.
     HomotopyUnavailableError
         (``RuntimeError``) for ``method="homotopy"`` without PHCpack (Debian package ``phcpack``).
     SolverError
-        (``RuntimeError``) when no Newton start converged at all, or PHCpack failed.
+        (``RuntimeError``) when the search found no equilibrium and its solvers broke down (no descent reached
+        the target: nothing tells whether one exists), or PHCpack failed.
     """
     if method not in ("search", "homotopy"):
         raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")

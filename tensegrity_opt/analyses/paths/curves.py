@@ -1,7 +1,9 @@
 """Force-deflection curves by continuation (Fig. 6).
 
-``branch="stable"``: at every point the least-energy stable equilibrium. The stable
-branches present at the first deflected point (a Newton-seeded global search) are followed
+``branch="stable"``: at every point the least-energy stable equilibrium. The first deflected point of
+each run is :func:`solve_equilibrium`'s answer there (the same global search, the same call), so a curve
+never starts on a stable branch of higher energy; the other stable branches present there (Newton from
+the global seeds and, on multistable chains, every combination of the segments' wells) are followed
 point to point by Newton corrections, each started from the previous point's solution: for
 chains of up to ``numerics.DENSE_MAX`` segments the whole path runs in compiled code (the C
 kernels of :mod:`tensegrity_opt.numerics.kernels` up to ``KERNEL_MAX`` segments, CasADi ``rootfinder`` under
@@ -417,6 +419,12 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     Returns
     -------
     Curve
+        The first deflected point (of each run between straight points) is the least-energy stable equilibrium
+        of :func:`solve_equilibrium` there (the same search, the same answer); the stable branches of higher
+        energy found there are followed too, and the curve moves to one of them only where it becomes the
+        least-energy one (a ``"switch"`` jump) or where the selected one ends (a ``"snap"``). The curve is the
+        global minimum's path, not the path a loaded chain follows from a given state (that stays on its branch
+        until the branch loses stability: :func:`~tensegrity_opt.analyses.paths.simulation.simulate`).
         Every point up to the first one where no stable equilibrium is found. When the curve stops
         there (the stable branches end at a fold or the joint range and the global search finds no
         other), it holds only the points before it, ``Curve.ended_at`` is that point

@@ -18,7 +18,8 @@ from tensegrity_opt.errors import NoEquilibriumError, SolverError, UnreachableTa
 from tensegrity_opt.numerics.homotopy import homotopy_available
 from tensegrity_opt.numerics.results import LocalResult
 
-needs_phc = pytest.mark.skipif(not homotopy_available(), reason="PHCpack's phc is not installed (apt-get install phcpack)")
+needs_phc = pytest.mark.skipif(not homotopy_available(),
+                               reason="PHCpack's phc is not installed (apt-get install phcpack)")
 
 #: (segments, dx, dy): reachable inside the range, no equilibrium inside it
 NONE_INSIDE = [
