@@ -152,6 +152,23 @@ def test_equilibria_homotopy_refusals(client, monkeypatch):
     assert "phcpack" in r.json()["message"]
 
 
+def test_equilibria_none_inside_the_range_is_an_empty_answer(client):
+    """A target reachable inside the range whose equilibria all lie outside it: 200, an empty set, a success that
+    says so (not 422 ``solver_failed``); the library's body."""
+    segs = [(0.4244907, 1.1061139, 2.7977215, 2.0757221), (1.2855203, 1.0943198, 1.1138807, 1.9328666),
+            (0.6116747, 1.2481474, 0.6567948, 2.0724451)]
+    dx, dy = 8.356180218401274, -0.07981382020185246
+    r = client.post("/v1/equilibria", json={"manipulator": {"segments": [{"a": a, "b": b, "k": k, "L0": L0}
+                                                                        for a, b, k, L0 in segs]},
+                                            "dx": dx, "dy": dy})
+    assert r.status_code == 200, r.text
+    body = r.json()
+    assert (body["success"], body["status"], body["equilibria"]) == (True, "searched", [])
+    assert body["message"].startswith("no equilibrium inside the physical joint range")
+    expected = to.find_equilibria(to.Manipulator([to.Segment(*s) for s in segs]), dx, dy)
+    assert body["message"] == expected.message
+
+
 @pytest.mark.parametrize("boundary", ["guided", "free"])
 def test_buckling(client, boundary):
     r = client.post("/v1/buckling", json={"manipulator": PAPER, "boundary": boundary})

@@ -409,6 +409,42 @@ def all_force_equilibria(chain: Chain, F, n_starts=500, seed=2, dedupe=1e-6):
     return sols
 
 
+def kkt_least_squares(chain: Chain, dx, dy=0.0, n_starts=2000, seed=3, dedupe=1e-6):
+    """Brute force over the whole range: ``scipy.optimize.least_squares`` (Levenberg-Marquardt, the analytic
+    Jacobian) on the equilibrium equations ``[grad E - J^T F; tip - target] = 0`` in ``(q, F)`` from
+    ``n_starts`` uniform random ``q`` inside the physical range (random ``F``). Returns the distinct solutions
+    strictly inside the range (a list of ``(q, F)``) and how many starts converged to one outside it."""
+    rng = np.random.default_rng(seed)
+    target = chain.target(dx, dy)
+    n = chain.n
+    scale = float(np.mean((chain.k1 + chain.k2) * chain.c ** 2))
+
+    def residual(z):
+        return np.concatenate([chain.lagrangian_grad(z[:n], z[n:]), chain.tip(z[:n]) - target])
+
+    def jacobian(z):
+        J = chain.jac(z[:n])
+        A = np.zeros((n + 2, n + 2))
+        A[:n, :n] = chain.lagrangian_hess(z[:n], z[n:])
+        A[:n, n:] = -J.T
+        A[n:, :n] = J
+        return A
+
+    sols, outside = [], 0
+    for _ in range(n_starts):
+        z0 = np.concatenate([rng.uniform(-1.0, 1.0, n) * chain.limits, scale * rng.standard_normal(2)])
+        r = so.least_squares(residual, z0, jac=jacobian, method="lm", xtol=1e-15, ftol=1e-15, gtol=1e-15,
+                             max_nfev=200)
+        if not (np.all(np.isfinite(r.fun)) and np.max(np.abs(r.fun)) < 1e-9 * max(1.0, scale)):
+            continue
+        q = r.x[:n]
+        if not chain.in_range(q):
+            outside += 1
+        elif not any(np.max(np.abs(q - s)) < dedupe for s, _ in sols):
+            sols.append((q, r.x[n:]))
+    return sols, outside
+
+
 def tip_stiffness_fd(chain: Chain, target, q, F, h: float, max_move: float) -> np.ndarray:
     """``dF/d(tip)`` by central differences: the force holding the tip at ``target +- h e_j``, each found by
     Newton from the equilibrium ``(q, F)`` at ``target``, which it must not leave by more than ``max_move``."""

@@ -29,7 +29,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError
+from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError, UnreachableTargetError
 from ...model.manipulator import Manipulator
 from ...numerics import KERNEL_MAX, chain_solver, distinct, distinct_indices
 from ...outcome import Outcome, freeze
@@ -62,6 +62,10 @@ LONG_PER_JOINT = 20
 SHORT_N = 6
 SHORT_PER_JOINT = 500
 PROJECTED_SEED = 4242
+#: An IPOPT descent pressed against a joint limit counts as reaching the target (the evidence that the target is
+#: reachable inside the range when no equilibrium lies inside it) when its tip is within this fraction of the
+#: chain's straight length of the target.
+TIP_TOL = 1e-6
 
 #: Longest chain the homotopy method accepts (paths on general chains: 8, 96, 832, 6272, 43648 for
 #: n = 2..6; n = 6 takes ~12 min on 2 cores).
@@ -74,7 +78,8 @@ class EquilibriumSet(Outcome, Sequence):
     :class:`~tensegrity_opt.Equilibrium` (``len``, iteration, indexing, slicing give a tuple, ``bool``).
 
     An empty set is an answer, not a failure: no equilibrium lies inside the physical range (proven when
-    ``certified``). Its ``status`` is the one its method gives a non-empty set.
+    ``certified``); its ``message`` says so and why. Its ``status`` is the one its method gives a non-empty set
+    (the search's ``searched``: complete in practice; the homotopy's ``certified``: proven).
 
     Attributes
     ----------
@@ -152,8 +157,10 @@ def searched_set(eqs, statuses: Mapping[str, int]) -> EquilibriumSet:
     """The :class:`EquilibriumSet` of a multi-start search: ``eqs`` (sorted) and the tally of its local
     solves' statuses (the message)."""
     tally = ", ".join(f"{k} x{v}" for k, v in sorted(statuses.items()))
+    none = "no equilibrium found inside the physical joint range |q| < pi - 2 beta by " if not eqs else ""
     return EquilibriumSet(eqs, method="search", status="searched",
-                          message=f"the multi-start search (complete in practice, not proven); local solves: {tally}")
+                          message=f"{none}the multi-start search (complete in practice, not proven); local solves: "
+                                  f"{tally}")
 
 
 def homotopy_set(eqs, sol, polished) -> EquilibriumSet:
@@ -162,8 +169,11 @@ def homotopy_set(eqs, sol, polished) -> EquilibriumSet:
     (:class:`~tensegrity_opt.numerics.homotopy.PolishedRoots`): ``eqs`` (sorted), ``certified`` when the
     polished roots are (every path ended, the report checked out, no root lost, none too close), else
     ``uncertified``; the message is the polish's report (phc's runs and paths, and why not certified)."""
+    none = "" if eqs else ("no equilibrium inside the physical joint range |q| < pi - 2 beta"
+                           + (" (proven: the set is certified): " if polished.certified else " found: "))
     return EquilibriumSet(eqs, method="homotopy", status="certified" if polished.certified else "uncertified",
-                          message=polished.report, paths=sol.paths, failed_paths=sol.failures, seconds=sol.seconds)
+                          message=none + polished.report, paths=sol.paths, failed_paths=sol.failures,
+                          seconds=sol.seconds)
 
 
 def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
@@ -207,18 +217,25 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         ``status`` (``searched``; ``certified`` or ``uncertified`` for the homotopy; ``exact`` for the
         straight chain and a single segment), ``message``, ``method``, ``certified``, ``paths``,
         ``failed_paths``. For the paper's chain at small ``dx > 0, dy = 0``: 2 stable U, 2 saddles ZU,
-        2 maxima Z. Empty at full extension when the straight chain is not an equilibrium.
+        2 maxima Z. Empty at full extension when the straight chain is not an equilibrium, and where the target
+        is reachable inside the range but every equilibrium lies outside it (the search: when IPOPT's descents
+        reach the target with a joint pressed against its range limit; a success, ``status`` ``searched``, the
+        message saying so; the homotopy proves it, ``certified``).
 
     Raises
     ------
     UnreachableTargetError
-        (``ValueError``) beyond the chain's reach.
+        (``ValueError``) beyond the chain's reach; the search also where the target lies within the chain's
+        length but outside the workspace of the physical range (IPOPT finds it infeasible from every start, as
+        :func:`~tensegrity_opt.analyses.equilibria.least_energy.solve_equilibrium` does; the homotopy returns its
+        certified empty set there).
     InvalidParameterError
         (``ValueError``, ``field="method"``) for an unknown method or a chain too long for the homotopy.
     HomotopyUnavailableError
         (``RuntimeError``) for ``method="homotopy"`` without PHCpack (Debian package ``phcpack``).
     SolverError
-        (``RuntimeError``) when no Newton start converged at all, or PHCpack failed.
+        (``RuntimeError``) when the search found no equilibrium and its solvers broke down (no descent reached
+        the target: nothing tells whether one exists), or PHCpack failed.
     """
     if method not in ("search", "homotopy"):
         raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
@@ -261,9 +278,12 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         batch = chain_solver(m).newton_kkt_seeds(target, more, python_fallback=False)
         results += [batch.result(j) for j in _accepted_rows(m, batch, target, dedupe_tol)]
         statuses["Newton (projected starts)"] = more.shape[0]
-    # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present.
+    # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present, and where none
+    # lies inside the range, the evidence that the target is reachable (or not) inside it
+    descents = []
     for s in seeds(m, dx, dy, max_modes=2, n_random=0):
         res = local_equilibrium(m, target, s.q, minimize=True)
+        descents.append(res)
         if is_equilibrium(m, res, target):
             results.append(res)
     if dy == 0.0 and results and m == m.mirrored():
@@ -273,9 +293,40 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
             if is_equilibrium(m, res, target):
                 results.append(res)
     if not results:
-        raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
-                          status=", ".join(f"{k} x{v}" for k, v in sorted(statuses.items())), found=0)
+        return _none_found(m, target, dx, dy, statuses, descents)
     return searched_set(_sorted(m, distinct(results, dedupe_tol)), statuses)
+
+
+def _none_found(m: Manipulator, target: np.ndarray, dx: float, dy: float, statuses: dict[str, int],
+                descents) -> EquilibriumSet:
+    """What a search that found no equilibrium inside the range answers, from IPOPT's descents (``min E`` s.t.
+    ``tip = target`` inside the closed range): an empty set when one of them reached the target with a joint on
+    its range limit (the target is reachable inside the range, and the configurations of least energy reaching
+    it press against a limit: the equations' solutions lie outside the range); :class:`UnreachableTargetError`
+    when IPOPT found the target infeasible inside the range from every start; else :class:`SolverError` (the
+    solvers broke down: nothing tells whether an equilibrium exists)."""
+    for res in descents:
+        key = f"IPOPT {res.status}" + (" (on joint limit)" if res.on_bound else "")
+        statuses[key] = statuses.get(key, 0) + 1
+    tally = ", ".join(f"{k} x{v}" for k, v in sorted(statuses.items()))
+    if descents and all(r.status.startswith("Infeasible_Problem_Detected") for r in descents):
+        raise UnreachableTargetError(
+            f"the target for dx={dx:g}, dy={dy:g} lies within the chain's length but outside the workspace of the "
+            f"physical joint range |q| < pi - 2 beta: IPOPT found it infeasible from all {len(descents)} starts",
+            field="dx", status=tally)
+    pressed = [r for r in descents if r.on_bound and not r.status.startswith("Infeasible")
+               and np.all(np.isfinite(r.q)) and np.all(np.abs(r.q) <= np.asarray(m.joint_limits) * (1 + 1e-9))
+               and np.max(np.abs(m.tip(r.q) - target)) <= TIP_TOL * m.straight_length]
+    if not pressed:
+        raise SolverError(f"no Newton start converged inside the physical range for dx={dx:g}, dy={dy:g}",
+                          status=tally, found=0)
+    return EquilibriumSet([], method="search", status="searched",
+                          message=f"no equilibrium inside the physical joint range |q| < pi - 2 beta for dx={dx:g}, "
+                                  f"dy={dy:g}: the target is reachable inside the range, but the configurations of "
+                                  "least energy reaching it press a joint against its range limit (a spring length "
+                                  "reaches zero) and every equilibrium the solvers met lies outside the range (the "
+                                  "multi-start search: complete in practice, not proven; method='homotopy' "
+                                  f"certifies it); local solves: {tally}")
 
 
 def _accepted_rows(m: Manipulator, batch, target: np.ndarray, dedupe_tol: float) -> list[int]:

@@ -1,7 +1,9 @@
 """Force-deflection curves by continuation (Fig. 6).
 
-``branch="stable"``: at every point the least-energy stable equilibrium. The stable
-branches present at the first deflected point (a Newton-seeded global search) are followed
+``branch="stable"``: at every point the least-energy stable equilibrium. The first deflected point of
+each run is :func:`solve_equilibrium`'s answer there (the same global search, the same call), so a curve
+never starts on a stable branch of higher energy; the other stable branches present there (Newton from
+the global seeds and, on multistable chains, every combination of the segments' wells) are followed
 point to point by Newton corrections, each started from the previous point's solution: for
 chains of up to ``numerics.DENSE_MAX`` segments the whole path runs in compiled code (the C
 kernels of :mod:`tensegrity_opt.numerics.kernels` up to ``KERNEL_MAX`` segments, CasADi ``rootfinder`` under
@@ -383,15 +385,13 @@ def _newton_stable(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
     return search_stable(m, target, starts, {}, minimize=False)[0]
 
 
-def _stable_at(m: Manipulator, dx: float, dy: float) -> list[Equilibrium]:
-    """Every stable equilibrium the Newton-seeded global search finds (IPOPT when it finds none)."""
-    stable = _newton_stable(m, dx, dy)
-    if not stable:
-        try:
-            stable = [solve_equilibrium(m, dx, dy)]
-        except SolverError:                  # NoEquilibriumError included; TimeLimitError is no SolverError
-            stable = []
-    return stable
+def _least_at(m: Manipulator, dx: float, dy: float) -> Equilibrium | None:
+    """The least-energy stable equilibrium of :func:`solve_equilibrium` (its global search, the same call), or
+    None when it finds none (the curve then ends there unless another branch is found)."""
+    try:
+        return solve_equilibrium(m, dx, dy)
+    except SolverError:                      # NoEquilibriumError included; TimeLimitError is no SolverError
+        return None
 
 
 def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"] = "stable", *,
@@ -419,6 +419,12 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     Returns
     -------
     Curve
+        The first deflected point (of each run between straight points) is the least-energy stable equilibrium
+        of :func:`solve_equilibrium` there (the same search, the same answer); the stable branches of higher
+        energy found there are followed too, and the curve moves to one of them only where it becomes the
+        least-energy one (a ``"switch"`` jump) or where the selected one ends (a ``"snap"``). The curve is the
+        global minimum's path, not the path a loaded chain follows from a given state (that stays on its branch
+        until the branch loses stability: :func:`~tensegrity_opt.analyses.paths.simulation.simulate`).
         Every point up to the first one where no stable equilibrium is found. When the curve stops
         there (the stable branches end at a fold or the joint range and the global search finds no
         other), it holds only the points before it, ``Curve.ended_at`` is that point
@@ -570,15 +576,16 @@ def _from_rest(m: Manipulator, dx, dy, branch: str, recheck_every: int) -> Curve
 
 
 def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free: bool) -> list[Equilibrium]:
+    """The branches a run starts from at its first point: the least-energy stable equilibrium of
+    :func:`solve_equilibrium` and every stable one Newton finds from the global seeds (every equilibrium of
+    :func:`find_equilibria` for ``branch="all"``), the least-energy one added last when the others miss it."""
+    least = _least_at(m, dx, dy)
     if m.n == 1:
-        try:
-            return [solve_equilibrium(m, dx, dy)]
-        except SolverError:                  # no equilibrium here: the curve ends (TimeLimitError still raises)
-            return []
-    if branch == "all":
-        return find_equilibria(m, dx, dy)
-    eqs = _stable_at(m, dx, dy)
-    if mirror_free:
+        return [] if least is None else [least]
+    eqs = list(find_equilibria(m, dx, dy)) if branch == "all" else _newton_stable(m, dx, dy)
+    if least is not None and not any(np.max(np.abs(e.q - least.q)) < 1e-7 for e in eqs):
+        eqs.append(least)
+    if mirror_free and branch != "all":
         # mirror images (q -> -q) of a mirror-symmetric chain at dy = 0 have equal energy all
         # along: following one of each pair is enough
         kept: list[Equilibrium] = []

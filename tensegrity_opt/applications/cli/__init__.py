@@ -90,7 +90,7 @@ def _cmd_equilibria(args, m):
         how += f" ({eqs.paths} homotopy paths, {eqs.failed_paths} failed)"
     return (eqs.to_dict,
             "\n".join([f"All equilibria at dx = {args.dx:g}, dy = {args.dy:g}: {len(eqs)} ({how})",
-                       *eq_table(eqs)]))
+                       *(eq_table(eqs) if len(eqs) else [eqs.message])]))
 
 
 def _cmd_curve(args, m):

@@ -410,3 +410,75 @@ def test_curve_from_rest_is_zero_force_at_rest_and_straight_for_symmetric_chain(
     with pytest.raises(to.InvalidParameterError) as e:
         to.force_deflection(sym, [0.1], reference="bent")
     assert e.value.field == "reference"
+
+
+# ---------------------------------------------------------------------------- the first point is the least-energy one
+#: a mixed chain (bistable and monotonic segments, L1_0 = L2_0 and k1 = k2 per segment) as (a, b, k, L0), and the
+#: first point of its curve (a line of dx at constant dy, as `tensegrity-opt curve` and `/v1/force-deflection` draw)
+MIXED = [(0.8051575, 1.3535103, 2.2901407, 1.4806089), (0.5435207, 1.3909166, 1.4299473, 2.2654741),
+         (0.5031050, 1.1143596, 1.6877755, 1.7085544), (0.8356613, 0.6158667, 2.4110712, 0.4628743),
+         (1.0735836, 1.0579341, 1.4235177, 0.2253548), (0.5138389, 0.6912436, 2.7236217, 0.5262346)]
+MIXED_FIRST = (0.1244766, 0.5201387)
+
+
+def test_the_first_point_is_the_least_energy_stable_equilibrium():
+    """Newton from the global seeds and the wells finds a stable point 1.5e-2 above the least-energy one here; the
+    curve starts at :func:`solve_equilibrium`'s (the same search) and stays on the least-energy branch."""
+    m = Manipulator([Segment(*s) for s in MIXED])
+    dx, dy = MIXED_FIRST
+    c = force_deflection(m, np.linspace(dx, 0.3, 3), dy)
+    for j in range(2):
+        best = to.solve_equilibrium(m, c.dx[j], dy)
+        assert c.stable[j] and abs(c.energy[j] - best.energy) <= 1e-9 * abs(best.energy)
+    assert c.energy[0] == pytest.approx(12.748087683, abs=1e-8)
+    assert not [j for j in c.jumps if j.dx_before < 0.3]          # no exchange of minima at the start
+
+
+@pytest.mark.slow
+def test_no_lower_stable_point_at_the_first_point_by_brute_force():
+    """The reference model's SLSQP descent from 1000 random starts (plus 60 near straight) inside the range
+    finds no stable point below the curve's first one."""
+    dx, dy = MIXED_FIRST
+    c = force_deflection(Manipulator([Segment(*s) for s in MIXED]), [dx], dy)
+    e_ref, _, _ = ref.Chain.from_segments(MIXED).global_min(dx, dy, n_random=1000, seed=7)
+    assert c.energy[0] <= e_ref + 1e-9 * abs(e_ref)
+
+
+def _family(rng, family: str, n: int) -> list[tuple]:
+    """Random segments (a, b, k1, k2, L1_0, L2_0) of one family."""
+    segs = []
+    for _ in range(n):
+        a, b = rng.uniform(0.5, 1.3), rng.uniform(0.6, 1.3)
+        k = rng.uniform(0.5, 3.0)
+        K0 = 2.0 * (b * b - a * a)                       # K = k (b L0 - K0) for symmetric springs
+        if family == "bistable":
+            L0 = max(0.05, (K0 - rng.uniform(0.1, 0.6)) / b) if K0 > 0.2 else None
+            if L0 is None:
+                a, L0 = 0.5 * b, max(0.05, (2.0 * 0.75 * b * b - 0.3) / b)
+            segs.append((a, b, k, k, L0, L0))
+        elif family == "asymmetric":
+            L0 = (K0 + rng.uniform(0.3, 1.5)) / b
+            segs.append((a, b, k * rng.uniform(0.7, 1.3), k, L0 * rng.uniform(0.85, 1.15), L0))
+        else:                                            # heterogeneous monotonic
+            segs.append((a, b, k, k, (K0 + rng.uniform(0.2, 2.0)) / b, (K0 + rng.uniform(0.2, 2.0)) / b))
+    if family == "heterogeneous":
+        segs = [(a, b, k1, k1, L0, L0) for a, b, k1, _, L0, _ in segs]
+    return segs
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("family, n, seed", [("bistable", 4, 1), ("bistable", 5, 2), ("heterogeneous", 4, 3),
+                                             ("asymmetric", 4, 4), ("asymmetric", 5, 5), ("heterogeneous", 6, 6)])
+def test_the_first_point_against_a_multistart_on_random_chains(family, n, seed):
+    """Random chains of other families, the first point off the axis (dy != 0): the curve's first point is
+    :func:`solve_equilibrium`'s energy, stable, and no stable point of the reference model's multistart lies
+    below it."""
+    rng = np.random.default_rng(1000 + seed)
+    segs = _family(rng, family, n)
+    m = Manipulator([Segment(a, b, (k1, k2), (L1, L2)) for a, b, k1, k2, L1, L2 in segs])
+    dx, dy = float(rng.uniform(0.1, 0.8)), float(rng.choice([-1.0, 1.0]) * rng.uniform(0.1, 0.6))
+    c = force_deflection(m, np.linspace(dx, dx + 0.2, 3), dy)
+    best = to.solve_equilibrium(m, dx, dy)
+    assert c.stable[0] and abs(c.energy[0] - best.energy) <= 1e-9 * max(1.0, abs(best.energy))
+    e_ref, _, _ = ref.Chain.from_segments(segs).global_min(dx, dy, n_random=300, seed=seed)
+    assert c.energy[0] <= e_ref + 1e-9 * max(1.0, abs(e_ref))

@@ -43,6 +43,23 @@ def test_cli_errors(capsys, tmp_path):
     assert "b must be finite and > 0" in capsys.readouterr().err
 
 
+def test_cli_equilibria_none_inside_the_range(capsys, tmp_path):
+    """A target reachable inside the range whose equilibria all lie outside it: exit 0, zero equilibria and the
+    reason (table), an empty set that is a success (JSON)."""
+    chain = tmp_path / "m.json"
+    chain.write_text(json.dumps({"segments": [
+        {"a": 0.4244907, "b": 1.1061139, "k": 2.7977215, "L0": 2.0757221},
+        {"a": 1.2855203, "b": 1.0943198, "k": 1.1138807, "L0": 1.9328666},
+        {"a": 0.6116747, "b": 1.2481474, "k": 0.6567948, "L0": 2.0724451}]}))
+    argv = ["equilibria", "--manipulator", str(chain), "--dx", "8.356180218401274", "--dy", "-0.07981382020185246"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert ": 0 (method search, not certified)" in out and "no equilibrium inside the physical joint range" in out
+    assert main([*argv, "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert (data["success"], data["status"], data["equilibria"]) == (True, "searched", [])
+
+
 @pytest.mark.slow
 def test_console_script_runs():
     r = subprocess.run([sys.executable, "-m", "tensegrity_opt.applications.cli", "buckling"], capture_output=True,
