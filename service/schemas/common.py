@@ -57,6 +57,8 @@ Stiff = Annotated[float, Field(ge=MIN_STIFFNESS, le=MAX_STIFFNESS, allow_inf_nan
 Deflection = Annotated[float, Field(ge=-MAX_DEFLECTION, le=MAX_DEFLECTION, allow_inf_nan=False)]
 ForceValue = Annotated[float, Field(ge=-MAX_FORCE, le=MAX_FORCE, allow_inf_nan=False)]
 Angle = Annotated[float, Field(ge=-MAX_ANGLE, le=MAX_ANGLE, allow_inf_nan=False)]
+#: Any finite number (a bound, a required margin): the operation's own checks give its range.
+Finite = Annotated[float, Field(allow_inf_nan=False)]
 #: The held tip's deflection as most requests take it: ``dx: TipDx``, ``dy: TipDy = 0.0``.
 TipDx = Annotated[Deflection, Field(description="tip deflection along x (length units)")]
 TipDy = Annotated[Deflection, Field(description="tip deflection along y (length units)")]

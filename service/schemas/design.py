@@ -14,6 +14,7 @@ from .common import (
     MAX_STIFFNESS,
     Angle,
     Deflection,
+    Finite,
     ForceValue,
     Int,
     SegmentedManipulatorIn,
@@ -54,7 +55,6 @@ DesignVar = Literal["a", "b", "k", "L0"]
 Positive = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
 
 
-Finite = Annotated[float, Field(allow_inf_nan=False)]
 #: A side of a design variable's bounds: one number for every segment, or one per segment.
 DesignBound = Union[Positive, Annotated[list[Positive], Field(min_length=1, max_length=MAX_DESIGN_SEGMENTS)]]
 #: Bounds on a design variable (``bounds.<name>``), on every rest length (the preload problems).

@@ -29,6 +29,7 @@ from pydantic import (
 from ..config import HARD_MAX_SEGMENTS
 from .common import (
     Deflection,
+    Finite,
     ForceValue,
     Length,
     LengthPair,
@@ -52,7 +53,7 @@ _STRICT = ConfigDict(strict=True, extra="forbid")
 
 Analysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design", "atlas"]
 #: What a job computes: a sweep's analysis, or ``figure`` (a figure as a job, ``POST /v1/plots/{kind}/job``).
-JobAnalysis = Literal["buckling", "equilibrium", "equilibria_count", "stiffness", "design", "atlas", "figure"]
+JobAnalysis = Literal[Analysis, "figure"]
 JobStatus = Literal["queued", "running", "done", "failed", "cancelled", "interrupted"]
 DesignVariable = Literal["a", "b", "k", "L0"]
 Segments = Annotated[int, Field(ge=1, le=HARD_MAX_SEGMENTS), BeforeValidator(integral)]
@@ -157,7 +158,6 @@ class SweepPoint(BaseModel):
     load: Load = None  # type: ignore[assignment]
 
 
-Finite = Annotated[float, Field(allow_inf_nan=False)]
 BoundValue = Union[Finite, Annotated[list[Finite], Field(min_length=1, max_length=HARD_MAX_SEGMENTS)]]
 BoundPair = bounds_of(BoundValue, "SweepBoundsIn", "bounds (each side a number, or one per segment)",
                       object_doc="Bounds {lo, hi}, each a number or one per segment (the object form of [lo, hi]).")

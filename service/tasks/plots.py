@@ -41,10 +41,10 @@ def _rendered(draw: Callable[..., Any]) -> Callable[..., bytes]:
     """The figure task of ``draw(req, *args)`` (a matplotlib figure): ``task(req, fmt, *args)``, its bytes."""
 
     @functools.wraps(draw)
-    def task(req: Any, fmt: str, *args: Any, **kwargs: Any) -> bytes:
+    def task(req: Any, fmt: str, *args: Any) -> bytes:
         from tensegrity_opt.applications import plots
 
-        return plots.render(draw(req, *args, **kwargs), fmt, dpi=req.dpi)
+        return plots.render(draw(req, *args), fmt, dpi=req.dpi)
 
     return task
 

@@ -2,9 +2,9 @@
 the optimum (:func:`active_bounds`), one :class:`ActiveBound` each.
 
 A design whose variable sits on its bound is the best *within the bounds*: widening them may change it. The
-design results with bounded variables carry them (``StiffnessDesign.active_bounds``,
-``PreloadDesign.active_bounds``, ``Design.active_bounds``), and their ``to_dict()`` as ``active_bounds``,
-a list of ``{"segment", "variable", "side", "value", "bound"}``.
+design results of rest lengths carry them (``StiffnessDesign.active_bounds``, ``PreloadDesign.active_bounds``;
+the critical-force ``Design`` lists its own ``active`` strings), and their ``to_dict()`` as ``active_bounds``, a
+list of ``{"segment", "variable", "side", "value", "bound"}``.
 """
 
 from __future__ import annotations

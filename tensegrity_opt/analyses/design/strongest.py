@@ -244,6 +244,8 @@ def _tension_bounds(tension) -> tuple[float, float]:
         return -_INF, _INF
     try:
         tmin, tmax = (float(v) for v in bound_pair(tension, "tension"))
+    except InvalidParameterError:
+        raise                                # bound_pair's own words (an unknown key, lo or hi missing)
     except (TypeError, ValueError):
         raise InvalidParameterError("tension must be a pair (T_min, T_max) of numbers", field="tension") from None
     if math.isnan(tmin) or math.isnan(tmax) or tmin > tmax or tmin == _INF or tmax == -_INF:

@@ -340,7 +340,7 @@ def _accepted_rows(m: Manipulator, batch, target: np.ndarray, dedupe_tol: float)
               & np.all(np.abs(Q) < np.asarray(m.joint_limits, float), axis=1))
         rows = np.flatnonzero(ok)
         rows = rows[m.equilibrium_residuals(Q[rows], F[rows], target) <= RESIDUAL_TOL]
-    return distinct_indices(Q, rows.tolist(), dedupe_tol) if rows.size > 1 else rows.tolist()
+    return distinct_indices(Q, rows.tolist(), dedupe_tol)
 
 
 def _sorted(m: Manipulator, results) -> list[Equilibrium]:

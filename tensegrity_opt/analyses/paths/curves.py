@@ -57,6 +57,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, shape_labels
+from ...numerics.distinct import same
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import check_time
@@ -583,7 +584,7 @@ def _run_branches(m: Manipulator, dx: float, dy: float, branch: str, mirror_free
     if m.n == 1:
         return [] if least is None else [least]
     eqs = list(find_equilibria(m, dx, dy)) if branch == "all" else _newton_stable(m, dx, dy)
-    if least is not None and not any(np.max(np.abs(e.q - least.q)) < 1e-7 for e in eqs):
+    if least is not None and not any(same(e.q, least.q) for e in eqs):
         eqs.append(least)
     if mirror_free and branch != "all":
         # mirror images (q -> -q) of a mirror-symmetric chain at dy = 0 have equal energy all

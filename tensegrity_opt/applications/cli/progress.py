@@ -124,11 +124,6 @@ class Progress:
                 bar.set_postfix_str(f"{errors} failed", refresh=False)
             bar.update(int(done) - bar.n)
 
-    def advance(self, k: int = 1) -> None:
-        """``k`` more steps are done."""
-        if self.bar is not None:
-            self(self.bar.n + k)
-
     def stage(self, text: str) -> None:
         """What is being done now, after the counted steps (``"the grid edges"``): shown beside the bar."""
         if self.bar is not None:

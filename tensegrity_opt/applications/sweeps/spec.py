@@ -252,13 +252,11 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
                 _fail(f"{fld}.{key}", unknown_name(key, ("a", "b", "k", "L0"), "key") + " (a segment has a, b, k, L0)")
         norm: dict[str, Any] = {}
         for key in ("a", "b", "k", "L0"):
-            v = sd.get(key, 1.0)
+            v, name = sd.get(key, 1.0), "a" if key != "k" else "k"
             if isinstance(v, (list, tuple)):
-                if len(v) != 2:
-                    _fail(f"{fld}.{key}", "must be a number or the pair of the two springs")
-                norm[key] = [_value("a", x, f"{fld}.{key}[{j}]") for j, x in enumerate(v)]
+                norm[key] = _spring_pair(name, v, f"{fld}.{key}")
             else:
-                norm[key] = _value("a" if key != "k" else "k", v, f"{fld}.{key}")
+                norm[key] = _value(name, v, f"{fld}.{key}")
         try:
             Segment(norm["a"], norm["b"], tuple(norm["k"]) if isinstance(norm["k"], list) else norm["k"],
                     tuple(norm["L0"]) if isinstance(norm["L0"], list) else norm["L0"])

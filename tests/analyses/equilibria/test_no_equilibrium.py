@@ -86,8 +86,7 @@ BRUTE_FORCE = [NONE_INSIDE[0], NONE_INSIDE_4[0]]
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("segs, dx, dy", BRUTE_FORCE,
-                         ids=[f"n{len(c[0])}-dx{c[1]:.3f}-dy{c[2]:+.3f}" for c in BRUTE_FORCE])
+@pytest.mark.parametrize("segs, dx, dy", BRUTE_FORCE, ids=_ids(BRUTE_FORCE))
 def test_a_brute_force_multistart_finds_no_equilibrium_inside_the_range(segs, dx, dy):
     inside, outside = kkt_least_squares(Chain.from_segments(segs), dx, dy, n_starts=2000)
     assert inside == [] and outside > 100          # the equations' solutions exist, all outside the range
