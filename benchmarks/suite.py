@@ -25,7 +25,7 @@ Cases (each with its target):
    steps with bisection on stability; the stability atlas per target vs a ``find_equilibria`` loop, and
    per crossing vs bisecting the stable count along the edge.
 11. control in actuation space: a warm preload step of ``PreloadController`` (goal <= 0.2 ms for n = 4) vs
-   ``preloads_for_pose`` per step and scipy SLSQP on the same problem; ``preloads_for_trajectory`` per step.
+   ``preloads_for_pose`` per step and scipy SLSQP on the same problem; ``plan_preloads`` per step.
 12. figures: every figure route's default request on a server of default settings (``benchmarks/figures.py``):
    seconds from the client (first answer, then the median) against the time limit; target: the median at most a
    third of it. Its own table in RESULTS.md ("Figures").
@@ -938,7 +938,7 @@ def _atlas_rows(cfg: Config) -> list[Row]:
 
 def case11(cfg: Config) -> list[Row]:
     """Control in actuation space: one warm preload step (the compiled least-change Newton step) vs
-    ``preloads_for_pose`` per step and SLSQP on the same problem; ``preloads_for_trajectory`` per step with
+    ``preloads_for_pose`` per step and SLSQP on the same problem; ``plan_preloads`` per step with
     verification."""
     from tensegrity_opt.analyses.design.preload_control import PreloadController
 
@@ -985,11 +985,11 @@ def case11(cfg: Config) -> list[Row]:
                     median_ms(base_s), ratio=median_ms(base_s) / o, target="(info)", samples=ts,
                     baseline_samples=base_s))
     t0 = time.perf_counter()
-    plan = to.preloads_for_trajectory(m, traj[:200], loads=F)
+    plan = to.plan_preloads(m, traj[:200], loads=F)
     tp = (time.perf_counter() - t0) / 200
-    rows.append(Row("11", "preloads_for_trajectory per step (verified by the forward solve)", 4, tp * 1e3, "ms",
+    rows.append(Row("11", "plan_preloads per step (verified by the forward solve)", 4, tp * 1e3, "ms",
                     target="(info)", samples=[tp],
-                    notes=[f"preloads_for_trajectory over 200 steps: status {plan.status}, "
+                    notes=[f"plan_preloads over 200 steps: status {plan.status}, "
                            f"verified {int(plan.verified.sum())}/200"]))
     return rows
 

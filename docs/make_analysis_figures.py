@@ -105,7 +105,7 @@ def design() -> None:
 
 def plan() -> None:
     targets = [(7.6, 0.5), (7.5, 0.75), (7.4, 1.0), (7.3, 1.25)]
-    p = to.preloads_for_trajectory(PAPER, targets, loads=(0.0, -0.02), margin=0.01)
+    p = to.plan_preloads(PAPER, targets, loads=(0.0, -0.02), margin=0.01)
     _save(plots.plot_preload_plan(p, PAPER, margin=0.01), "plan")
 
 

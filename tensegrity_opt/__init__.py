@@ -16,7 +16,7 @@ from . import results
 from .analyses.design.follower import PreloadFollower
 from .analyses.design.force_sensor import ForceEstimate, estimate_tip_force
 from .analyses.design.load_capacity import LoadCapacity, load_capacity
-from .analyses.design.preload_control import PreloadController, PreloadPlan, preloads_for_trajectory
+from .analyses.design.preload_control import PreloadController, PreloadPlan, plan_preloads
 from .analyses.design.preloads import PreloadDesign, preloads_for_critical_force, preloads_for_pose
 from .analyses.design.sensitivity import critical_load_sensitivity, equilibrium_sensitivity
 from .analyses.design.stiffness_shaping import StiffnessDesign, preloads_for_stiffness
@@ -74,7 +74,7 @@ __all__ = [
     "Curve", "Branch", "LimitLoad", "StabilityBoundary", "StabilityAtlas", "Simulation",
     # design and control
     "maximize_critical_force", "preloads_for_pose", "preloads_for_critical_force", "preloads_for_stiffness",
-    "preloads_for_trajectory", "PreloadController", "PreloadFollower", "load_capacity", "estimate_tip_force",
+    "plan_preloads", "PreloadController", "PreloadFollower", "load_capacity", "estimate_tip_force",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "Design", "PreloadDesign", "StiffnessDesign", "PreloadPlan", "LoadCapacity", "ForceEstimate",
     # applications

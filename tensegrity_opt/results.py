@@ -29,7 +29,7 @@ result                      returned by                                      rec
                                                                              :class:`ActiveBound`
 :class:`StiffnessDesign`    ``preloads_for_stiffness``                       :class:`SolverInfo`,
                                                                              :class:`ActiveBound`
-:class:`PreloadPlan`        ``preloads_for_trajectory``                      :class:`PreloadStep`
+:class:`PreloadPlan`        ``plan_preloads``                      :class:`PreloadStep`
 (``PreloadStep``)           ``PreloadController.step``
 (``FollowerStep``)          ``PreloadFollower.step``                         :class:`Snap`
 :class:`LoadCapacity`       ``load_capacity``                                :class:`LimitLoad`

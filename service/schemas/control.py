@@ -1,6 +1,6 @@
 """Models of the control endpoints: ``/v1/control/plan``, ``/v1/control/simulate``, ``/v1/control/force-estimate``.
 
-* *plan*: rest lengths for a trajectory of tip positions (``tensegrity_opt.preloads_for_trajectory``);
+* *plan*: rest lengths for a trajectory of tip positions (``tensegrity_opt.plan_preloads``);
 * *simulate*: the quasi-static forward simulation under sampled inputs, snapping at folds
   (``tensegrity_opt.simulate``);
 * *force-estimate*: the tip force from measured joint angles (``tensegrity_opt.estimate_tip_force``).
@@ -132,7 +132,7 @@ PLAN_REQUEST_EXAMPLE = {"manipulator": PAPER_CHAIN, "targets": [[7.6, 0.5], [7.5
 
 
 class PlanRequest(_PlanFields):
-    """Rest lengths for a trajectory of tip positions, on one stable branch (`preloads_for_trajectory`)."""
+    """Rest lengths for a trajectory of tip positions, on one stable branch (`plan_preloads`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [PLAN_REQUEST_EXAMPLE]})
 

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design.preload_control import PreloadPlan, preloads_for_trajectory
+from tensegrity_opt.analyses.design.preload_control import PreloadPlan, plan_preloads
 from tensegrity_opt.errors import NonFiniteResult
 
 from .. import schemas as s
@@ -97,7 +97,7 @@ def find_plan(req: Any, deadline: float) -> PreloadPlan:
     """The plan of a plan request (``/v1/control/plan``, ``/v1/plots/plan``) within the soft ``deadline``."""
     m = build_manipulator(req.manipulator)
     end_angles = None if req.end_angles is None else [np.nan if a is None else a for a in req.end_angles]
-    return preloads_for_trajectory(m, np.asarray(req.targets, dtype=float), loads=req.loads, end_angles=end_angles,
+    return plan_preloads(m, np.asarray(req.targets, dtype=float), loads=req.loads, end_angles=end_angles,
                                    bounds=_bounds(req.bounds), rate_limit=number_or_array(req.rate_limit),
                                    margin=req.margin, objective=req.objective, weights=req.weights,
                                    start=optional_array(None if req.start is None else req.start.q),

@@ -44,14 +44,14 @@ def client():
 def test_plan_is_the_library_plan(client):
     got = post_ok(client, "/v1/control/plan", s.PLAN_REQUEST_EXAMPLE)
     ex = s.PLAN_REQUEST_EXAMPLE
-    want = to.preloads_for_trajectory(M, ex["targets"], loads=ex["loads"], margin=ex["margin"])
+    want = to.plan_preloads(M, ex["targets"], loads=ex["loads"], margin=ex["margin"])
     assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
     s.PlanOut.model_validate(got)
     assert got["status"] == "complete" and all(got["verified"]) and np.allclose(got["tip"], ex["targets"], atol=1e-9)
 
     body = {"manipulator": PAPER, "targets": ARC, "rate_limit": 0.05, "margin": 0.3}
     got = post_ok(client, "/v1/control/plan", body)
-    want = to.preloads_for_trajectory(M, ARC, rate_limit=0.05, margin=0.3)
+    want = to.plan_preloads(M, ARC, rate_limit=0.05, margin=0.3)
     assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
     assert got["status"] == "infeasible_steps" and got["feasible"] == [True, True, False, True, True]
     assert got["method"][2] == "none" and got["margin"][2] is None
@@ -60,7 +60,7 @@ def test_plan_is_the_library_plan(client):
             "bounds": {"lo": 0.5, "hi": [2.0] * 8}, "weights": [[1.0, 2.0]] * 4, "objective": "change",
             "loads": [[0.0, 0.0], [0.0, -0.01]], "start": {"q": [0.0] * 4}, "verify": False}
     got = post_ok(client, "/v1/control/plan", body)
-    want = to.preloads_for_trajectory(M, body["targets"], loads=body["loads"], end_angles=[0.0, np.nan],
+    want = to.plan_preloads(M, body["targets"], loads=body["loads"], end_angles=[0.0, np.nan],
                                       bounds=(0.5, np.full(8, 2.0)), weights=body["weights"], start=np.zeros(4),
                                       verify=False)
     assert without_seconds(got) == without_seconds(body_of(want.to_dict()))

@@ -1,6 +1,6 @@
 """Control: rest-length plans for tip trajectories, quasi-static simulation with snaps, the arm as a force sensor.
 
-``POST /v1/control/plan`` (``preloads_for_trajectory``; in a killable solver process, as ``/v1/design/preloads``:
+``POST /v1/control/plan`` (``plan_preloads``; in a killable solver process, as ``/v1/design/preloads``:
 its IPOPT fallback is ``preloads_for_pose``), ``POST /v1/control/simulate`` (``simulate``; in the solver threads, as
 the path endpoints) and ``POST /v1/control/force-estimate`` (``estimate_tip_force``). The figures of the first two are
 ``POST /v1/plots/plan`` and ``POST /v1/plots/simulation`` (:mod:`.plots`).
@@ -32,7 +32,7 @@ _M = ex.PAPER_CHAIN
     summary="Rest lengths for a trajectory of tip positions, on one stable branch",
     description="Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with "
                 "`margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step "
-                "(`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change "
+                "(`tensegrity_opt.plan_preloads`): `objective: change` is the least change "
                 "from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound "
                 "is active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach "
                 "is `feasible: false` with the best reachable pose, and the next step starts from the last feasible "

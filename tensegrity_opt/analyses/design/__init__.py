@@ -9,7 +9,7 @@ One module per concept:
 * :mod:`.sensitivity` - :func:`critical_load_sensitivity`, :func:`equilibrium_sensitivity`;
 * :mod:`.stiffness_shaping` - :func:`preloads_for_stiffness`, :class:`StiffnessDesign`;
 * :mod:`.load_capacity` - :func:`load_capacity`, :class:`LoadCapacity`;
-* :mod:`.preload_control` - :class:`PreloadController` (:class:`PreloadStep`) and :func:`preloads_for_trajectory`
+* :mod:`.preload_control` - :class:`PreloadController` (:class:`PreloadStep`) and :func:`plan_preloads`
   (:class:`PreloadPlan`);
 * :mod:`.follower` - :class:`PreloadFollower` (:class:`FollowerStep`, :class:`Snap`);
 * :mod:`.force_sensor` - :func:`estimate_tip_force`, :class:`ForceEstimate`.

@@ -24,7 +24,7 @@ bounds and a per-step rate limit, with a stability margin (the smallest eigenval
 
 A step's result is the equilibrium itself: ``q``, the rest lengths, the tip and the margin, with
 ``residual`` the scaled KKT residual; every accepted step is an equilibrium of the chain with those rest
-lengths at the target (the residual), stable with the margin. :func:`preloads_for_trajectory` runs a controller
+lengths at the target (the residual), stable with the margin. :func:`plan_preloads` runs a controller
 over a trajectory and verifies each step by the forward quasi-static solve
 (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` from the previous step's
 configuration: it must land on the target, stable).
@@ -54,7 +54,7 @@ from ..paths.control import checked_vector
 from .follower import loaded_rest
 from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose
 
-__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "preloads_for_trajectory"]
+__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads"]
 
 #: KKT residual (max-norm, force and length units) below which the Newton step has converged.
 NEWTON_TOL = 1e-10
@@ -352,7 +352,7 @@ class PreloadController:
 
 @dataclass(frozen=True)
 class PreloadPlan(Outcome):
-    """The result of :func:`preloads_for_trajectory` (``K`` steps done).
+    """The result of :func:`plan_preloads` (``K`` steps done).
 
     Attributes
     ----------
@@ -429,7 +429,7 @@ class PreloadPlan(Outcome):
                 "steps": [s.to_dict() for s in self.steps]}
 
 
-def preloads_for_trajectory(m: Manipulator, targets, *, loads=None, end_angles=None, bounds=None, rate_limit=None,
+def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, bounds=None, rate_limit=None,
                             margin: float = 1e-3, objective: str = "change", weights=None, start=None,
                             verify: bool = True, timeout: float | None = None,
                             progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:

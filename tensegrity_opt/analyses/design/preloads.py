@@ -1,7 +1,7 @@
 """Preloads: the springs' rest lengths for a pose, or for a required critical load.
 
 Every preload problem of the package (this module's two, :func:`~.stiffness_shaping.preloads_for_stiffness` and
-:func:`~.preload_control.preloads_for_trajectory`) is a function ``preloads_for_<requirement>(m, <requirement>,
+:func:`~.preload_control.plan_preloads`) is a function ``preloads_for_<requirement>(m, <requirement>,
 *, ...)`` with the same keywords for the same things: ``load`` (the dead tip load ``(fx, fy)``; ``loads`` per
 step of a trajectory), ``bounds`` (the actuator bounds on the rest lengths, :func:`rest_length_bounds`),
 ``margin`` (the required stability margin), ``end_angle`` (the last link's absolute angle; ``end_angles`` per

@@ -37,7 +37,7 @@ import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
 from ...analyses.design.load_capacity import load_capacity
-from ...analyses.design.preload_control import PreloadPlan, preloads_for_trajectory
+from ...analyses.design.preload_control import PreloadPlan, plan_preloads
 from ...analyses.design.preloads import OBJECTIVES
 from ...analyses.design.stiffness_shaping import preloads_for_stiffness
 from ...analyses.paths.simulation import Simulation, simulate
@@ -154,7 +154,7 @@ def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any]:
 def plan_from_args(args: argparse.Namespace, m: Manipulator,
                    progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     T, loads, angles = _plan_inputs(args)
-    return preloads_for_trajectory(m, T, loads=loads, end_angles=angles,
+    return plan_preloads(m, T, loads=loads, end_angles=angles,
                                    bounds=None if args.bounds is None else tuple(args.bounds),
                                    rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
                                    start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),

@@ -7,7 +7,7 @@ the elapsed time. A thread refreshes it twice a second, so the elapsed time move
 on stderr only, never on stdout (the table or ``--json`` stays clean), by default only when stderr is a
 terminal (``--progress/--no-progress``: :func:`~.common.add_progress_option`).
 
-The analyses report progress by callbacks (``stability_atlas(progress=...)``, ``preloads_for_trajectory``,
+The analyses report progress by callbacks (``stability_atlas(progress=...)``, ``plan_preloads``,
 ``simulate``, ``sweep``) and never print; a :class:`Progress` is such a callback:
 ``progress(done, total=None, errors=0)``.
 

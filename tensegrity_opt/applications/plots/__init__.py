@@ -46,7 +46,7 @@ equilibria)
 :func:`plot_atlas`          the stability atlas of :func:`~tensegrity_opt.stability_atlas`: the number of
 (``StabilityAtlas``)        stable equilibria over ``(dx, dy)`` (discrete colours), the switch and
                             branch-end curves with their crossings
-:func:`plot_preload_plan`   a rest-length plan of :func:`~tensegrity_opt.preloads_for_trajectory`: the rest lengths of
+:func:`plot_preload_plan`   a rest-length plan of :func:`~tensegrity_opt.plan_preloads`: the rest lengths of
 (``PreloadPlan``)           every spring and the margin per step, the tip path with the targets,
                             infeasible steps shaded
 :func:`plot_simulation`     the hysteresis loop of :func:`~tensegrity_opt.simulate`: the driving input

@@ -65,7 +65,7 @@ def _step_spans(ax: Any, steps: np.ndarray, gid: str) -> Any:
 
 def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin: float | None = None,
                       title: str | None = None, figsize: tuple[float, float] = (11.0, 6.4)) -> Any:
-    """A rest-length plan of :func:`~tensegrity_opt.preloads_for_trajectory`, per step ``k``: the rest lengths of every
+    """A rest-length plan of :func:`~tensegrity_opt.plan_preloads`, per step ``k``: the rest lengths of every
     spring (left, top; spring 1 ``L1_0`` solid, spring 2 ``L2_0`` dashed, one colour per segment), the stability
     margin (left, bottom, black; ``margin``: the required one as a dotted black level: the plan's own lines
     are black, :data:`PLAN_STYLES`, so that no segment's colour is read as a margin), and the tip path with the targets

@@ -16,7 +16,7 @@ import scipy.optimize as so
 from reference_model import Chain
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design.preload_control import PreloadController, preloads_for_trajectory
+from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
 
 PAPER = to.Manipulator.uniform(4)
 BISTABLE = to.Manipulator.uniform(4, 0.5, 1.0, 1.0, 1.0)
@@ -39,7 +39,7 @@ def arc(m, F, K=30, amp=(-0.15, 0.3)):
 @pytest.mark.parametrize("name,m,F", CHAINS, ids=[c[0] for c in CHAINS])
 def test_every_step_lands_on_its_target_stable_in_the_reference_model(name, m, F):
     traj = arc(m, F)
-    plan = preloads_for_trajectory(m, traj, loads=F, rate_limit=0.1)
+    plan = plan_preloads(m, traj, loads=F, rate_limit=0.1)
     assert plan.status == "complete" and plan.feasible.all() and plan.verified.all()
     q_prev = PreloadController(m, load=F).q
     for k in range(len(traj)):
@@ -105,9 +105,9 @@ def test_a_least_change_step_is_the_slsqp_optimum(name, m, F):
 def test_bounds_rate_and_margin_hold_and_the_margin_keeps_the_branch():
     m, F = PAPER, (-0.02, 0.01)
     traj = arc(m, F, K=25, amp=(-0.4, 0.8))
-    free = preloads_for_trajectory(m, traj, loads=F)
+    free = plan_preloads(m, traj, loads=F)
     need = float(np.percentile(free.margin, 60))          # above the least-change solution's margin somewhere
-    plan = preloads_for_trajectory(m, traj, loads=F, margin=need, rate_limit=0.08, bounds=(0.5, 1.6))
+    plan = plan_preloads(m, traj, loads=F, margin=need, rate_limit=0.08, bounds=(0.5, 1.6))
     assert plan.feasible.all() and plan.verified.all()
     assert "ipopt" in plan.method                          # where the least-change step was not stable enough
     assert all(st.to_dict()["residual"] is None for st in plan.steps if st.method == "ipopt")     # no residual
@@ -123,7 +123,7 @@ def test_an_unreachable_step_is_reported_with_the_best_pose_and_the_plan_goes_on
     ctl = PreloadController(m)
     tip0 = m.tip(ctl.q)
     traj = np.array([tip0 + [-0.05, 0.1], [10.0, 0.0], tip0 + [-0.1, 0.2]])
-    plan = preloads_for_trajectory(m, traj, loads=F)
+    plan = plan_preloads(m, traj, loads=F)
     assert plan.status == "infeasible_steps"
     assert plan.feasible.tolist() == [True, False, True] and plan.verified.tolist() == [True, False, True]
     assert plan.method[1] == "none" and "reach" in plan.steps[1].message
@@ -144,10 +144,10 @@ def test_validation_names_the_field():
             PreloadController(PAPER, **kw)
         assert e.value.field == fld
     with pytest.raises(to.InvalidParameterError) as e:
-        preloads_for_trajectory(PAPER, [[1.0, np.nan]])
+        plan_preloads(PAPER, [[1.0, np.nan]])
     assert e.value.field == "targets"
     with pytest.raises(to.InvalidParameterError) as e:
-        preloads_for_trajectory(PAPER, [[7.0, 0.5]], loads=[[0.0, 0.0], [1.0, 0.0]])
+        plan_preloads(PAPER, [[7.0, 0.5]], loads=[[0.0, 0.0], [1.0, 0.0]])
     assert e.value.field == "loads"
     with pytest.raises(to.InvalidParameterError) as e:
         PreloadController(PAPER).step([7.0, 0.5], end_angle=float("inf"))
@@ -170,7 +170,7 @@ def test_where_the_least_change_rule_would_snap_the_plan_stays_stable_on_its_bra
         worst = min(worst, float(np.linalg.eigvalsh(ref_chain(m, ell).lagrangian_hess(q, F))[0]))
     assert worst < -0.05                                  # the least-change path loses stability
     need = 0.05
-    plan = preloads_for_trajectory(m, traj, loads=F, margin=need)
+    plan = plan_preloads(m, traj, loads=F, margin=need)
     assert plan.feasible.all() and plan.verified.all() and "ipopt" in plan.method
     for k in range(K):
         w = np.linalg.eigvalsh(ref_chain(m, plan.rest_lengths[k]).lagrangian_hess(plan.q[k], F))
@@ -182,7 +182,7 @@ def test_a_plan_and_its_steps_follow_the_result_contract():
     """The plan's status from its steps; the solver's own status in the step's solver detail; frozen."""
     F = (-0.02, 0.01)
     tip0 = PAPER.tip(PreloadController(PAPER, load=F).q)
-    plan = preloads_for_trajectory(PAPER, [tip0 + [-0.03, 0.05], [10.0, 0.0]], loads=F)
+    plan = plan_preloads(PAPER, [tip0 + [-0.03, 0.05], [10.0, 0.0]], loads=F)
     assert (plan.status, plan.success) == ("infeasible_steps", False)
     ok, bad = plan.steps
     assert (ok.status, ok.success, ok.method) == ("feasible", True, "newton")

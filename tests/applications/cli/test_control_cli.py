@@ -39,18 +39,18 @@ def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
     assert "7 steps, 7 feasible, 7 verified, status complete" in out and "newton" in out
     got = run_json(capsys, argv)
     T = np.column_stack([np.linspace(7.9, 7.3, 7), np.linspace(0.2, 1.4, 7)])
-    assert same(got, json.loads(json.dumps(to.preloads_for_trajectory(M, T, margin=0.05).to_dict())))
+    assert same(got, json.loads(json.dumps(to.plan_preloads(M, T, margin=0.05).to_dict())))
 
     csv = tmp_path / "path.csv"
     csv.write_text("x,y,fx,fy\n7.9,0.2,0,-0.01\n7.8,0.4,0,-0.01\n7.7,0.6,0,-0.02\n", encoding="utf-8")
     got = run_json(capsys, ["plan", "--targets", str(csv), "--rate-limit", "0.2", "--bounds", "0.5", "2"])
-    want = to.preloads_for_trajectory(M, [[7.9, 0.2], [7.8, 0.4], [7.7, 0.6]],
+    want = to.plan_preloads(M, [[7.9, 0.2], [7.8, 0.4], [7.7, 0.6]],
                                       loads=[[0, -0.01], [0, -0.01], [0, -0.02]], rate_limit=0.2, bounds=(0.5, 2.0))
     assert same(got, json.loads(json.dumps(want.to_dict())))
     js = tmp_path / "path.json"
     js.write_text(json.dumps({"targets": [[7.8, 0.3], [7.8, 0.6]], "end_angles": [0.0, None]}), encoding="utf-8")
     got = run_json(capsys, ["plan", "--targets", str(js), "--objective", "change", "--no-verify"])
-    want = to.preloads_for_trajectory(M, [[7.8, 0.3], [7.8, 0.6]], end_angles=[0.0, np.nan], verify=False)
+    want = to.plan_preloads(M, [[7.8, 0.3], [7.8, 0.6]], end_angles=[0.0, np.nan], verify=False)
     assert same(got, json.loads(json.dumps(want.to_dict())))
 
 

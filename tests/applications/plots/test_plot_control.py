@@ -26,7 +26,7 @@ def plan():
     """Tips of the paper's chain bent evenly (q_i = alpha), the third moved off the arc: beyond a rate limit 0.05."""
     T = np.array([PAPER.tip(np.full(4, a)) for a in np.linspace(0.0, 0.05, 6)])
     T[3] += [-0.6, 0.8]
-    p = to.preloads_for_trajectory(PAPER, T, rate_limit=0.05, margin=0.3)
+    p = to.plan_preloads(PAPER, T, rate_limit=0.05, margin=0.3)
     assert list(p.feasible) == [True, True, True, False, True, True]
     return p
 
@@ -73,12 +73,12 @@ def test_plan_margin_lines_have_colours_of_their_own(plan):
 @pytest.mark.slow
 def test_plan_figure_of_a_long_chain_and_of_no_step(tmp_path):
     m = to.Manipulator.uniform(12)
-    p = to.preloads_for_trajectory(m, [[m.straight_length - 0.01, 0.3]])
+    p = to.plan_preloads(m, [[m.straight_length - 0.01, 0.3]])
     fig = plots.plot_preload_plan(p, m)
     assert len(fig.axes) == 4            # the three panels and a colour bar of the segments
     assert not any(t.startswith("segment") for t in legend_texts(fig, count=1))
     gid(fig, "rest-length-11-2")
-    empty = to.preloads_for_trajectory(PAPER, [[7.9, 0.1]], timeout=1e-9)
+    empty = to.plan_preloads(PAPER, [[7.9, 0.1]], timeout=1e-9)
     assert empty.status == "time_limit" and len(empty.method) == 0
     check_renders(plots.plot_preload_plan(empty), tmp_path, "empty")
     with pytest.raises(InvalidParameterError) as exc:

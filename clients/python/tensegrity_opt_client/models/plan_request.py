@@ -20,7 +20,7 @@ T = TypeVar("T", bound="PlanRequest")
 
 @_attrs_define
 class PlanRequest:
-    """Rest lengths for a trajectory of tip positions, on one stable branch (`preloads_for_trajectory`).
+    """Rest lengths for a trajectory of tip positions, on one stable branch (`plan_preloads`).
 
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",

@@ -85,13 +85,13 @@ def sync_detailed(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
-    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
-    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
-    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
-    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
-    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
-    (optional, null entries free) fix the last link's absolute angle. At most the server's
+    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
+    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
+    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
+    with the best reachable pose, and the next step starts from the last feasible state (`status:
+    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
+    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
+    entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
     The plan runs in a solver process and stops shortly before the server's time limit, answering the
@@ -102,7 +102,7 @@ def sync_detailed(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`preloads_for_trajectory`).
+            (`plan_preloads`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -132,13 +132,13 @@ def sync(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
-    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
-    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
-    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
-    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
-    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
-    (optional, null entries free) fix the last link's absolute angle. At most the server's
+    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
+    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
+    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
+    with the best reachable pose, and the next step starts from the last feasible state (`status:
+    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
+    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
+    entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
     The plan runs in a solver process and stops shortly before the server's time limit, answering the
@@ -149,7 +149,7 @@ def sync(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`preloads_for_trajectory`).
+            (`plan_preloads`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -174,13 +174,13 @@ async def asyncio_detailed(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
-    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
-    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
-    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
-    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
-    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
-    (optional, null entries free) fix the last link's absolute angle. At most the server's
+    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
+    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
+    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
+    with the best reachable pose, and the next step starts from the last feasible state (`status:
+    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
+    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
+    entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
     The plan runs in a solver process and stops shortly before the server's time limit, answering the
@@ -191,7 +191,7 @@ async def asyncio_detailed(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`preloads_for_trajectory`).
+            (`plan_preloads`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
@@ -219,13 +219,13 @@ async def asyncio(
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
     `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.preloads_for_trajectory`): `objective: change` is the least change from the
-    previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound is
-    active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is
-    `feasible: false` with the best reachable pose, and the next step starts from the last feasible
-    state (`status: "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous
-    step's configuration with the step's rest lengths lands on the target, stable. `end_angles`
-    (optional, null entries free) fix the last link's absolute angle. At most the server's
+    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
+    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
+    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
+    with the best reachable pose, and the next step starts from the last feasible state (`status:
+    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
+    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
+    entries free) fix the last link's absolute angle. At most the server's
     `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
     `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
     The plan runs in a solver process and stops shortly before the server's time limit, answering the
@@ -236,7 +236,7 @@ async def asyncio(
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
-            (`preloads_for_trajectory`).
+            (`plan_preloads`).
 
     Raises:
         errors.UnexpectedStatus: If the server returns an undocumented status code and Client.raise_on_unexpected_status is True.
