@@ -21,7 +21,11 @@ Functions (inputs ``x = (q, F, t, s)``, ``p``, ``dp``, ``dp2``, ``ctl`` — the 
   (``(n + 2) x (n + 4)``: the ``t`` and ``s`` columns are ``dR/dt``, ``dR/ds``), the Hessian of the
   potential ``E - F . tip`` in ``q``, the tip Jacobian, the elastic energy and the tip;
 * ``second(x, v, p, dp, dp2, ctl) -> (R_z v, d(R_z v)/dx, (R_zz v) v)``: directional second
-  derivatives for the extended systems (Moore-Spence fold system, the cusp test).
+  derivatives for the extended systems (Moore-Spence fold system, the cusp test);
+* ``curvature(x, v, p, dp, dp2, ctl) -> (R_xx[v, v], tip_xx[v, v])``: the second derivatives of the residual and
+  of the tip along a direction ``v`` in all of ``x``: with ``v`` the path's tangent ``dx/dt`` they give its
+  second derivative ``d^2x/dt^2`` and the tip's (the rate of the tangent stiffness along a load, the
+  quasi-buckling load of :mod:`tensegrity_opt.analyses.paths.limit_load`).
 
 Relative angles throughout (the joint range is a box in them); dense, so built for
 ``n <= DENSE_MAX`` only. Per thread (:mod:`.per_thread`), like every CasADi function here. For
@@ -112,7 +116,11 @@ def _graphs(n: int):
     Rzv = ca.jtimes(R, z, v)
     second = ca.Function("second", [x, v, p, dp, dp2, ctl],
                          [Rzv, ca.densify(ca.jacobian(Rzv, x)), ca.jtimes(Rzv, z, v)])
-    return path, second, _step(n, path)
+    u = ca.SX.sym("u", at.point.size)
+    curvature = ca.Function("curvature", [x, u, p, dp, dp2, ctl],
+                            [ca.densify(ca.jtimes(ca.jtimes(R, x, u), x, u)),
+                             ca.densify(ca.jtimes(ca.jtimes(tip, x, u), x, u))])
+    return path, second, _step(n, path), curvature
 
 
 def _step(n: int, path: ca.Function) -> ca.Function:
@@ -158,14 +166,17 @@ def _library(n: int) -> str:
     return f"tensegrity_paths_n{n}"
 
 
-def _functions(n: int) -> tuple[ca.Function, ca.Function, ca.Function, str, bool]:
-    """This thread's ``path``, ``second`` and ``step`` Functions, how they run (``"compiled"`` /
+#: The Functions of the path system, in the order :func:`_graphs` builds them.
+_NAMES = ("path", "second", "step", "curvature")
+
+
+def _functions(n: int) -> tuple[tuple[ca.Function, ...], str, bool]:
+    """This thread's ``path``, ``second``, ``step`` and ``curvature`` Functions, how they run (``"compiled"`` /
     ``"virtual machine"``) and whether they are compiled in the background meanwhile (:func:`.build.load`)."""
     if 2 <= n <= KERNEL_MAX:
-        loaded = load(_library(n), "the path functions", lambda: dict(zip(("path", "second", "step"), _graphs(n))))
-        f = loaded.functions
-        return f["path"], f["second"], f["step"], loaded.mode, loaded.pending
-    return (*_graphs(n), VIRTUAL_MACHINE, False)
+        loaded = load(_library(n), "the path functions", lambda: dict(zip(_NAMES, _graphs(n))))
+        return tuple(loaded.functions[k] for k in _NAMES), loaded.mode, loaded.pending
+    return _graphs(n), VIRTUAL_MACHINE, False
 
 
 class PathSystem:
@@ -177,10 +188,11 @@ class PathSystem:
         self.layouts = layouts(n)
         #: the point ``x = (q, F, t, s)`` of the functions (the control parameter ``t``, the second one ``s``)
         self.point = self.layouts.point
-        path, second, step, self.mode, self.pending = _functions(n)
+        (path, second, step, curvature), self.mode, self.pending = _functions(n)
         self._path = Fast(path)
         self._second = Fast(second)
         self._step = Fast(step)
+        self._curvature = Fast(curvature)
 
     def evaluate(self, x, p, dp, dp2, ctl):
         """``(R, R_x, H, J, E, tip)`` at ``x = (q, F, t, s)`` (copies: safe to keep)."""
@@ -209,6 +221,12 @@ class PathSystem:
         f = self._second
         out = f(x, v, p, dp, dp2, ctl)
         return out[0].copy(), f.dense(1).copy(), out[2].copy()
+
+    def curvature(self, x, u, p, dp, dp2, ctl):
+        """``(R_xx[u, u], tip_xx[u, u])`` at ``x`` for the direction ``u`` in all of ``x = (q, F, t, s)``."""
+        f = self._curvature
+        out = f(x, u, p, dp, dp2, ctl)
+        return out[0].copy(), out[1].copy()
 
 
 def _compiled_meanwhile(ps: PathSystem) -> bool:

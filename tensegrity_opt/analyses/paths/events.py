@@ -11,11 +11,17 @@ of a test function's sign and located precisely on the branch:
   the Moore-Spence system ``R = 0, R_z phi = 0, l . phi = 1`` (:func:`moore_spence`, regular at a quadratic
   fold);
 * a **joint limit** (``|q_i| = (1 - LIMIT_MARGIN)(pi - 2 beta_i)``) is located at the zero of the largest
-  ``|q_i| / limit_i - (1 - LIMIT_MARGIN)``; the branch ends there.
+  ``|q_i| / limit_i - (1 - LIMIT_MARGIN)``; the branch ends there;
+* the **least tangent stiffness** along a dead load ``F = base + t d`` (the quasi-buckling load,
+  :mod:`.limit_load`) is located at the zero of the derivative of the compliance ``c = d . dtip/dt``
+  (:func:`load_compliance`: exact, from the path's first and second derivatives in ``t``), by Brent's method
+  on ``t`` between two points of the stable path where that derivative falls through zero, the corrector solving
+  each trial point at its ``t`` (:func:`locate_stiffness_minimum`).
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -26,7 +32,7 @@ from ...serialize import nullable, number, numbers
 from .problem import LIMIT_MARGIN, NEWTON_TOL, PathPoint, PathProblem
 
 __all__ = ["BranchEvent", "EVENT_KINDS", "BP_TOL", "events_between", "locate_joint_limit", "joint_limit_events",
-           "moore_spence"]
+           "moore_spence", "load_compliance", "locate_stiffness_minimum"]
 
 #: Kinds of :class:`BranchEvent`.
 EVENT_KINDS = ("fold", "branch_point", "joint_limit")
@@ -270,3 +276,59 @@ def joint_limit_events(prob: PathProblem, index: int, a: PathPoint, end: PathPoi
     out.append(_make_event(prob, "joint_limit", index, end.x, a, end, "limit", None,
                            joint=prob.limit_ratio(end.x)[1]))
     return out
+
+
+def load_compliance(prob: PathProblem, x: np.ndarray, d: np.ndarray) -> tuple[float, float]:
+    """``(c, dc/dt)`` at the point ``x`` of a dead-load path ``F = base + t d`` (free or guided): the tip's
+    compliance along the load ``c = d . dtip/dt = 1 / k`` (``k`` the tangent stiffness; free ``d . C d``,
+    guided the compliance in ``x`` with ``y`` held, ``C = J H^-1 J^T``) and its rate along the path.
+
+    Exact: the path's tangent ``z' = -R_z^-1 R_t``, its second derivative ``z'' = -R_z^-1 R_xx[x', x']``
+    (``x' = (z', 1)``, the path system's ``curvature``) and ``tip'' = J q'' + tip_qq[q', q']``, so
+    ``dc/dt = d . tip''``; ``(inf, nan)`` where ``R_z`` is singular (a fold or a branch point)."""
+    at = prob.point
+    R, Rx = prob.eval(x)
+    Rz, Rt = Rx[:, at.span("q", "F")], Rx[:, at["t"]]
+    try:
+        zp = -np.linalg.solve(Rz, Rt)
+    except np.linalg.LinAlgError:
+        return math.inf, math.nan
+    xp = np.zeros(prob.ps.point.size)
+    xp[at.span("q", "F")] = zp
+    xp[at["t"]] = 1.0
+    Rxx, tip_xx = prob.ps.curvature(prob.full(x), xp, prob.p, prob.dp, prob.dp2, prob.ctl)
+    J = prob.eval_all(x)[3]
+    zpp = -np.linalg.solve(Rz, Rxx)
+    q = prob.ps.layouts.z["q"]
+    return float(d @ (J @ zp[q])), float(d @ (J @ zpp[q] + tip_xx))
+
+
+def locate_stiffness_minimum(prob: PathProblem, xa: np.ndarray, xb: np.ndarray, d: np.ndarray,
+                             rate_a: float, rate_b: float) -> tuple[np.ndarray, float] | None:
+    """``(x, c)``: the point between the path points ``xa`` and ``xb`` (``t`` growing, no fold between them)
+    where the compliance along the load is largest (the stiffness least), ``dc/dt`` there zero, with ``c``
+    there (:func:`load_compliance`; ``rate_a > 0 > rate_b`` its rates at the two points); None when it cannot be
+    located. Brent's method on ``t``, each trial point corrected at its ``t`` from the chord."""
+    at_t = prob.point["t"]
+    ta, tb = float(xa[at_t]), float(xb[at_t])
+
+    def solve(t: float) -> np.ndarray:
+        y, _ = prob.correct_t(xa + (xb - xa) * ((t - ta) / (tb - ta)), t)
+        if y is None:
+            raise _Unlocatable
+        return y
+
+    def rate(t: float) -> float:
+        g = load_compliance(prob, solve(t), d)[1]
+        if not math.isfinite(g):
+            raise _Unlocatable
+        return g
+
+    if not (tb > ta and rate_a > 0.0 > rate_b):
+        return None
+    try:
+        y = solve(_brent(rate, ta, tb, rate_a, rate_b))
+    except (_Unlocatable, ValueError, RuntimeError):
+        return None
+    c = load_compliance(prob, y, d)[0]
+    return (y, c) if math.isfinite(c) and c > 0.0 else None

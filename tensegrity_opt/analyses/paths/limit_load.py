@@ -10,10 +10,12 @@ arm under compression bends smoothly ("quasi-buckling") until a joint reaches it
 load reaches ``max_load`` — ``kind == "none"`` and ``status`` says why, and :attr:`LimitLoad.quasi_buckling_load` is the
 load at which the arm is softest along the load: the interior minimum along the path of the tangent
 stiffness ``k(t) = 1 / (d . C(t) d)``, ``C = J H^-1 J^T`` the tip compliance (guided: the compliance in
-``x`` with ``y`` held, ``C_xx - C_xy^2 / C_yy``), located by a parabola through the three path points
-about the smallest ``k`` and re-solved there. For an imperfect (pre-bent) column this tends to the
-critical load as the imperfection vanishes (Southwell); it is None where ``k`` only decreases or only
-grows along the path.
+``x`` with ``y`` held, ``C_xx - C_xy^2 / C_yy``), located as an event of the path: the zero of ``dk/dt``
+(exact, from the path's first and second derivatives, :func:`~.events.load_compliance`) by Brent's method
+between the path points where it changes sign, each trial point solved on the path at its load
+(:func:`~.events.locate_stiffness_minimum`); :attr:`LimitLoad.quasi_buckling_stiffness` is ``k`` there. For an
+imperfect (pre-bent) column this tends to the critical load as the imperfection vanishes (Southwell); it is
+None where ``k`` only decreases or only grows along the path.
 
 :func:`limit_arms` follows the branches that leave the limit point of a bifurcation (the buckled arms, two mirror
 images ``q -> -q`` for a symmetric chain) with the branch switching of :mod:`.diagram`: the shapes the arm buckles
@@ -37,6 +39,7 @@ from ..equilibria.equilibrium import Equilibrium, check_q0
 from .branches import Branch, trace_branch
 from .control import Control
 from .diagram import switch_branch
+from .events import load_compliance, locate_stiffness_minimum
 
 __all__ = ["LimitLoad", "limit_load", "limit_arms", "check_max_load", "DEFAULT_MAX_LOAD", "ARMS_REACH"]
 
@@ -81,6 +84,9 @@ class LimitLoad(Outcome):
         The traced path (up to the limit).
     base : ndarray (2,)
         The base load: the tip force is ``base + t d`` (guided: ``Fx = base_x + t d_x``).
+    quasi_buckling_stiffness : float or None
+        The tangent stiffness along the load ``k = 1 / (d . C d)`` at :attr:`quasi_buckling_load` (force per
+        length; guided: with ``y`` held), the least on the stable path.
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -111,6 +117,7 @@ class LimitLoad(Outcome):
     start: Equilibrium
     branch: Branch
     base: np.ndarray = field(default_factory=lambda: np.zeros(2))
+    quasi_buckling_stiffness: float | None = None
 
     def __post_init__(self) -> None:
         for a in (self.force, self.q, self.null_vector, self.quasi_buckling_force, self.direction, self.base):
@@ -122,8 +129,9 @@ class LimitLoad(Outcome):
     def to_dict(self, *, include_branch: bool = False) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/limit-load``): ``success``, ``status``, ``message``, ``load``,
         ``kind``, ``force``, ``q``, ``null_vector``, ``quasi_buckling_load``, ``quasi_buckling_force``,
-        ``end_load``, ``direction``, ``boundary``, ``base``, ``start`` (:meth:`Equilibrium.to_dict`),
-        ``branch_status``, ``branch_points``, and with ``include_branch`` the ``branch``."""
+        ``quasi_buckling_stiffness``, ``end_load``, ``direction``, ``boundary``, ``base``, ``start``
+        (:meth:`Equilibrium.to_dict`), ``branch_status``, ``branch_points``, and with ``include_branch`` the
+        ``branch``."""
         d = {**self.outcome(), "load": None if self.load is None else nullable(self.load), "kind": self.kind,
              "force": None if self.force is None else {"fx": number(self.force[0]), "fy": number(self.force[1])},
              "q": None if self.q is None else numbers(self.q),
@@ -131,6 +139,8 @@ class LimitLoad(Outcome):
              "quasi_buckling_load": None if self.quasi_buckling_load is None else nullable(self.quasi_buckling_load),
              "quasi_buckling_force": None if self.quasi_buckling_force is None else
              {"fx": number(self.quasi_buckling_force[0]), "fy": number(self.quasi_buckling_force[1])},
+             "quasi_buckling_stiffness": None if self.quasi_buckling_stiffness is None else
+             nullable(self.quasi_buckling_stiffness),
              "end_load": number(self.end_load), "direction": numbers(self.direction), "boundary": self.boundary,
              "base": numbers(self.base), "start": self.start.to_dict(),
              "branch_status": self.branch.status, "branch_points": len(self.branch)}
@@ -152,38 +162,32 @@ def check_max_load(max_load) -> float | None:
     return max_load
 
 
-def _compliance(prob, x: np.ndarray, d: np.ndarray, guided: bool) -> float:
-    _, _, H, J, _, _ = prob.eval_all(x)
-    try:
-        C = J @ np.linalg.solve(H, J.T)
-    except np.linalg.LinAlgError:
-        return math.inf
-    if guided:
-        return float(d[0] ** 2 * (C[0, 0] - C[0, 1] ** 2 / C[1, 1])) if C[1, 1] != 0.0 else math.inf
-    return float(d @ C @ d)
-
-
-def _quasi_buckling(br: Branch, d: np.ndarray, guided: bool, upto: int):
+def _quasi_buckling(br: Branch, d: np.ndarray, upto: int):
+    """``(load, force, stiffness)`` of the least tangent stiffness along the load on the stable path up to point
+    ``upto`` when it lies inside the path, else ``(None, None, None)`` (module docstring)."""
     prob = br.problem
     P = min(upto + 1, len(br))
     if P < 3:
-        return None, None
+        return None, None, None
     X = prob.point.stack(P, q=br.q[:P], F=br.force[:P], t=br.t[:P])
-    c = np.array([_compliance(prob, X[i], d, guided) for i in range(P)])
-    ok = np.isfinite(c) & (c > 0.0) & br.stable[:P]     # c = 0: no compliance along the load (straight, guided)
-    if ok.sum() < 3:
-        return None, None
-    i = int(np.argmax(np.where(ok, c, -np.inf)))
-    if i == 0 or i == P - 1 or not (ok[i - 1] and ok[i + 1]):
-        return None, None
-    t3, c3 = br.t[i - 1:i + 2], 1.0 / c[i - 1:i + 2]      # stiffness k = 1/c, a minimum at i
-    A = np.polyfit(t3, c3, 2)
-    ts = float(-A[1] / (2 * A[0])) if A[0] > 0 else float(br.t[i])
-    ts = min(max(ts, float(t3[0])), float(t3[2]))
-    y, _ = prob.correct_t(X[i], ts)
-    if y is None:
-        return float(br.t[i]), br.force[i].copy()
-    return float(y[prob.point["t"]]), y[prob.point["F"]].copy()
+    c, rate = np.array([load_compliance(prob, X[i], d) for i in range(P)]).T
+    # c = 0: no compliance along the load (the straight chain, guided); t must grow (no fold on a stable path)
+    ok = np.isfinite(c) & (c > 0.0) & np.isfinite(rate) & br.stable[:P]
+    ok[1:] &= np.diff(br.t[:P]) > 0.0
+    inside = np.flatnonzero(ok)
+    if inside.size < 3:
+        return None, None, None
+    best = None
+    for i in inside[:-1]:
+        if ok[i + 1] and rate[i] > 0.0 > rate[i + 1]:
+            found = locate_stiffness_minimum(prob, X[i], X[i + 1], d, float(rate[i]), float(rate[i + 1]))
+            if found is not None and (best is None or found[1] > best[1]):
+                best = found
+    # the softest point of the path: inside it (else k only decreases or only grows)
+    if best is None or best[1] <= max(c[inside[0]], c[inside[-1]]):
+        return None, None, None
+    y, cy = best
+    return float(y[prob.point["t"]]), y[prob.point["F"]].copy(), 1.0 / cy
 
 
 def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", max_load: float | None = None,
@@ -269,19 +273,19 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
         e = lost[0]
         qb_upto = e.index
         kind = "fold" if e.kind == "fold" else "bifurcation"
-        qb, qbf = _quasi_buckling(br, d, boundary == "guided", qb_upto)
+        qb, qbf, qbk = _quasi_buckling(br, d, qb_upto)
         return LimitLoad("stability_lost", f"stability is lost at a {kind} at load {e.t:.7g}", e.t, e.force.copy(),
-                         e.q.copy(), kind, e.null_vector, qb, qbf, e.t, d, boundary, eq0, br, F0.copy())
+                         e.q.copy(), kind, e.null_vector, qb, qbf, e.t, d, boundary, eq0, br, F0.copy(), qbk)
     status = {"t_max": "max_load"}.get(br.status, br.status)
     stable_end = int(np.flatnonzero(br.stable)[-1]) if br.stable.any() else 0
-    qb, qbf = _quasi_buckling(br, d, boundary == "guided", min(qb_upto, stable_end))
+    qb, qbf, qbk = _quasi_buckling(br, d, min(qb_upto, stable_end))
     end_load = float(br.t[stable_end])
     if status in LimitLoad.SUCCESS:
         message = f"no limit point: the path stays stable to its end ({status}) at load {end_load:.7g}"
     else:
         message = f"no limit point found before the path was cut: {br.message}"
     return LimitLoad(status, message, None, None, None, "none", None, qb, qbf, end_load, d, boundary, eq0, br,
-                     F0.copy())
+                     F0.copy(), qbk)
 
 
 def limit_arms(result: LimitLoad, *, reach: float = ARMS_REACH, max_points: int = 400,

@@ -1,15 +1,20 @@
 """Limit loads (``limit_load``) against the independent references: the straight chain's limit is its first critical
 load (a bifurcation), a pre-bent or bistable chain's the reference fold (``reference_paths.limit_load_reference``:
-a natural-parameter path with bisection and the extended system)."""
+a natural-parameter path with bisection and the extended system); the quasi-buckling load the least tangent
+stiffness along the reference's own natural path (Brent on its finite-difference rate)."""
 
 from __future__ import annotations
+
+import functools
 
 import numpy as np
 import pytest
 import reference_model as R
 import reference_paths as RP
-from branch_checks import bistable_rest, check_branch, check_name, lib, modes, ref, ref_limit, wells
+import scipy.optimize as so
+from branch_checks import bistable_rest, chain_of, check_branch, check_name, lib, modes, ref, ref_limit, wells
 
+import tensegrity_opt as to
 from tensegrity_opt import limit_load
 
 
@@ -76,3 +81,78 @@ def test_limit_load_single_segment_fold():
     lim = limit_load(lib("one_seg"), direction=(0.0, 1.0), boundary="free", start=np.array([wells("one_seg")[0]]))
     assert lim.kind == "fold" and lim.load == pytest.approx(t1, rel=1e-6)
     assert lim.q[0] == pytest.approx(q1, abs=1e-4)
+
+
+# ---------------------------------------------------------------------------------------------- quasi-buckling
+#: (a, b, k1, k2, L1_0, L2_0) per segment, boundary: chains whose stiffness along (-1, 0) has an interior minimum
+QUASI = {
+    "pre_bent4": ([(1.0, 1.0, 1.0, 1.0, 1.02, 0.98)] * 4, "free"),
+    "hetero_bent3": ([(1.0, 1.0, 1.0, 1.0, 1.03, 0.98), (0.9, 1.2, 1.6, 1.4, 1.0, 1.0),
+                      (1.1, 0.85, 0.8, 0.9, 0.97, 1.01)], "free"),
+    "hetero_bent2": ([(1.0, 1.0, 1.0, 1.2, 1.0, 1.0), (0.9, 1.2, 1.5, 1.3, 1.02, 1.0)], "guided"),
+}
+
+
+class _ReferenceStiffness:
+    """The tangent stiffness ``k(t) = 1 / (d . dtip/dt)`` along the dead-load path of ``reference_paths`` (its own
+    natural-parameter continuation and corrector, the analytic tangent ``dz/dt``), and its least value: the zero of
+    ``dk/dt`` (a central difference, step ``H``) by Brent between the grid points about the grid's least ``k``."""
+
+    H = 1e-6
+
+    def __init__(self, chain: R.Chain, boundary: str, t_end: float, direction=(-1.0, 0.0)):
+        self.chain = chain
+        q0 = RP.rest_configuration(chain)
+        self.system = RP.PathSystem(chain, q0, direction, boundary)
+        self.path = RP.load_path(chain, q0, direction, boundary, np.linspace(0.0, t_end, 61))
+        assert self.path.status == "done"
+        self.k_grid = np.array([self.k_of(z, t) for z, t in zip(self.path.z, self.path.t)])
+        i = int(np.argmin(self.k_grid))
+        assert 0 < i < len(self.k_grid) - 1            # an interior minimum
+        rate = lambda t: (self.k(t + self.H) - self.k(t - self.H)) / (2 * self.H)     # noqa: E731
+        self.t_min = so.brentq(rate, self.path.t[i - 1], self.path.t[i + 1], xtol=1e-14)
+        self.k_min = self.k(self.t_min)
+
+    def k_of(self, z, t) -> float:
+        """The stiffness at the equilibrium ``z`` of load ``t``."""
+        s = self.system
+        q, _ = s.split(z, t)
+        return 1.0 / float(s.d @ self.chain.jac(q) @ s.tangent(z, t)[:self.chain.n])
+
+    def k(self, t: float) -> float:
+        """The stiffness on the path at load ``t`` (solved from the nearest grid point)."""
+        z, ok = self.system.solve(self.path.z[int(np.argmin(np.abs(self.path.t - t)))], t)
+        assert ok
+        return self.k_of(z, t)
+
+
+@functools.lru_cache(maxsize=None)
+def _quasi(name):
+    segs, boundary = QUASI[name]
+    m = to.Manipulator([to.Segment(a, b, (k1, k2), (l1, l2)) for a, b, k1, k2, l1, l2 in segs])
+    lim = limit_load(m, direction=(-1.0, 0.0), boundary=boundary)
+    return m, lim, _ReferenceStiffness(chain_of(m), boundary, lim.end_load)
+
+
+@pytest.mark.parametrize("name", list(QUASI))
+def test_quasi_buckling_load_is_the_least_stiffness_of_the_path(name):
+    """The quasi-buckling load and stiffness equal the reference's least stiffness along its own path (1e-6 in the
+    load); the stiffness at the returned load is at most the stiffness at every point of both paths."""
+    m, lim, ref_k = _quasi(name)
+    assert lim.kind == "none" and lim.status == "joint_limit" and lim.success
+    assert lim.quasi_buckling_load == pytest.approx(ref_k.t_min, rel=1e-6)
+    assert lim.quasi_buckling_stiffness == pytest.approx(ref_k.k_min, rel=1e-9)
+    t = lim.quasi_buckling_load
+    if QUASI[name][1] == "free":
+        np.testing.assert_allclose(lim.quasi_buckling_force, [-t, 0.0], atol=1e-12)
+    else:
+        assert lim.quasi_buckling_force[0] == pytest.approx(-t, abs=1e-12)
+    k_at = ref_k.k(t)                                   # the reference's stiffness at the returned load
+    assert k_at == pytest.approx(lim.quasi_buckling_stiffness, rel=1e-9)
+    assert np.all(k_at <= ref_k.k_grid * (1 + 1e-12))
+    br = lim.branch
+    z = br.q if QUASI[name][1] == "free" else np.column_stack([br.q, br.force[:, 1]])
+    k_branch = np.array([ref_k.k_of(zi, ti) for zi, ti in zip(z, br.t)])
+    assert np.all(k_at <= k_branch * (1 + 1e-12))
+    d = lim.to_dict()
+    assert d["quasi_buckling_stiffness"] == pytest.approx(lim.quasi_buckling_stiffness)
