@@ -321,6 +321,9 @@ class LimitLoadOut(outcome_model(to.LimitLoad)):
     null_vector: list[float] | None
     quasi_buckling_load: float | None = Field(description="the load of least tangent stiffness along the load")
     quasi_buckling_force: Force | None
+    quasi_buckling_stiffness: float | None = Field(description="the tangent stiffness along the load there, "
+                                                               "1 / (d . C d) (force per length; guided: y held), "
+                                                               "the least on the stable path")
     end_load: float = Field(description="the last load reached on the stable path")
     direction: list[float]
     boundary: Literal["free", "guided"]

@@ -286,7 +286,8 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]
     else:
         lines.append(f"no limit point: the path stays stable to its end ({r.status}) at load {r.end_load:.7f}")
     lines.append("quasi-buckling load (least tangent stiffness): "
-                 + ("none" if r.quasi_buckling_load is None else f"{r.quasi_buckling_load:.7f}"))
+                 + ("none" if r.quasi_buckling_load is None else
+                    f"{r.quasi_buckling_load:.7f}, stiffness along the load {r.quasi_buckling_stiffness:.7g}"))
     lines.append(f"start q = {fmt_q(r.start.q)}; path: {len(r.branch)} points, status {r.branch.status}")
     return (lambda: r.to_dict(include_branch=args.include_branch)), "\n".join(lines)
 

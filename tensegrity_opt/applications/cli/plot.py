@@ -206,6 +206,7 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
     return _render(args, fig, "limit-load", {"limit": r.kind, "load": r.load,
                                              "reason": None if r.kind != "none" else r.status,
                                              "quasi_buckling_load": r.quasi_buckling_load,
+                                             "quasi_buckling_stiffness": r.quasi_buckling_stiffness,
                                              "arms": [{"end": a.events[0].kind if a.events else a.status,
                                                        "t_end": float(a.t[-1])} for a in arms]})
 

@@ -59,6 +59,15 @@ def test_limit_load_table_and_json(capsys):
     assert got == json.loads(json.dumps(want.to_dict(include_branch=True)))
 
 
+def test_limit_load_prints_the_quasi_buckling_load_and_stiffness(tmp_path, capsys):
+    path = tmp_path / "pre_bent.json"
+    path.write_text(json.dumps({"segments": [{"a": 1, "b": 1, "k": 1, "L0": [1.02, 0.98]}] * 4}))
+    assert main(["limit-load", "--manipulator", str(path)]) == 0
+    want = to.limit_load(to.Manipulator([to.Segment(1, 1, 1, (1.02, 0.98))] * 4), (-1.0, 0.0), "free")
+    assert (f"quasi-buckling load (least tangent stiffness): {want.quasi_buckling_load:.7f}, stiffness along the "
+            f"load {want.quasi_buckling_stiffness:.7g}") in capsys.readouterr().out
+
+
 @pytest.mark.slow
 def test_plot_kinds_write_png_and_svg(tmp_path, capsys):
     writes_png_and_svg(main, [["plot", "branch", "--control", "guided", "--t-max", "2", *STRAIGHT, "--y", "fy"],

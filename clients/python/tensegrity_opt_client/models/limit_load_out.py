@@ -39,6 +39,8 @@ class LimitLoadOut:
         q (list[float] | None):
         quasi_buckling_force (Force | None):
         quasi_buckling_load (float | None): the load of least tangent stiffness along the load
+        quasi_buckling_stiffness (float | None): the tangent stiffness along the load there, 1 / (d . C d) (force per
+            length; guided: y held), the least on the stable path
         start (EquilibriumOut): An equilibrium configuration.
         status (LimitLoadOutStatus): `stability_lost`: the path loses stability at load: a fold or a bifurcation (kind);
             `joint_limit`: no limit point: the path stays stable until a joint reaches its range bound; `max_load`: no limit
@@ -64,6 +66,7 @@ class LimitLoadOut:
     q: list[float] | None
     quasi_buckling_force: Force | None
     quasi_buckling_load: float | None
+    quasi_buckling_stiffness: float | None
     start: EquilibriumOut
     status: LimitLoadOutStatus
     success: bool
@@ -120,6 +123,9 @@ class LimitLoadOut:
         quasi_buckling_load: float | None
         quasi_buckling_load = self.quasi_buckling_load
 
+        quasi_buckling_stiffness: float | None
+        quasi_buckling_stiffness = self.quasi_buckling_stiffness
+
         start = self.start.to_dict()
 
         status = self.status.value
@@ -151,6 +157,7 @@ class LimitLoadOut:
                 "q": q,
                 "quasi_buckling_force": quasi_buckling_force,
                 "quasi_buckling_load": quasi_buckling_load,
+                "quasi_buckling_stiffness": quasi_buckling_stiffness,
                 "start": start,
                 "status": status,
                 "success": success,
@@ -256,6 +263,13 @@ class LimitLoadOut:
 
         quasi_buckling_load = _parse_quasi_buckling_load(d.pop("quasi_buckling_load"))
 
+        def _parse_quasi_buckling_stiffness(data: object) -> float | None:
+            if data is None:
+                return data
+            return cast(float | None, data)
+
+        quasi_buckling_stiffness = _parse_quasi_buckling_stiffness(d.pop("quasi_buckling_stiffness"))
+
         start = EquilibriumOut.from_dict(d.pop("start"))
 
         status = LimitLoadOutStatus(d.pop("status"))
@@ -293,6 +307,7 @@ class LimitLoadOut:
             q=q,
             quasi_buckling_force=quasi_buckling_force,
             quasi_buckling_load=quasi_buckling_load,
+            quasi_buckling_stiffness=quasi_buckling_stiffness,
             start=start,
             status=status,
             success=success,
