@@ -59,7 +59,14 @@ _MOVES = {"asymmetry": {"L10": 1.0, "L20": -1.0},        # L1_0 = L0 + p, L2_0 =
 
 
 def parameter_direction(m: Manipulator, parameter) -> tuple[str, np.ndarray]:
-    """``(name, dp)``: the direction ``dp`` (6n, order ``a, b, k1, k2, L1_0, L2_0``) a parameter moves."""
+    """``(name, dp)``: the direction ``dp`` a parameter moves, ``6n`` numbers in the order of
+    :attr:`Manipulator.params <tensegrity_opt.Manipulator.params>` (the blocks of
+    :func:`~tensegrity_opt.numerics.layout.chain_parameters`): the ``n`` values of ``a`` (segment 1 to n), then
+    the ``n`` of ``b``, of ``k1``, ``k2``, ``L1_0`` and ``L2_0``.
+
+    ``parameter`` is a name of :data:`PARAMETERS`, or such a direction: ``6n`` numbers in that order, or a
+    ``(6, n)`` array whose rows are ``a, b, k1, k2, L1_0, L2_0`` (a column per segment). Any other shape — e.g.
+    ``(n, 6)``, a row per segment — is refused."""
     at = chain_parameters(m.n)
     if isinstance(parameter, str):
         if parameter in _MOVES:
@@ -68,11 +75,17 @@ def parameter_direction(m: Manipulator, parameter) -> tuple[str, np.ndarray]:
             raise InvalidParameterError(f"parameter must be one of {PARAMETERS} or a vector of 6n numbers, got "
                                         f"{parameter!r}", field="parameter")
         return parameter, d
+    order = ("6n numbers in the order of Manipulator.params: the n values of a (segment 1 to n), then of b, k1, k2, "
+             "L1_0 and L2_0; or a (6, n) array with these rows")
     try:
-        d = np.asarray(parameter, dtype=float).ravel()
+        d = np.asarray(parameter, dtype=float)
     except (TypeError, ValueError):
-        raise InvalidParameterError("parameter must be a name or 6n numbers", field="parameter") from None
-    if d.size != at.size or not np.all(np.isfinite(d)) or not np.any(d):
+        raise InvalidParameterError(f"parameter must be a name or a direction: {order}", field="parameter") from None
+    if d.shape not in ((at.size,), (len(at.places), m.n)):
+        raise InvalidParameterError(f"a parameter direction of n = {m.n} segments is {order} (shape "
+                                    f"({at.size},) or (6, {m.n})), got shape {d.shape}", field="parameter")
+    d = d.ravel()
+    if not np.all(np.isfinite(d)) or not np.any(d):
         raise InvalidParameterError(f"a parameter direction has 6n = {at.size} finite numbers, not all zero",
                                     field="parameter")
     return "direction", d
@@ -113,7 +126,8 @@ class StabilityBoundary(Outcome):
     kind : str
         ``"fold"`` or ``"branch_point"``.
     parameter : str
-        Its name (or ``"direction"``); ``parameter_direction`` the 6n direction.
+        Its name (or ``"direction"``); ``parameter_direction`` the 6n direction, in the order of
+        :attr:`Manipulator.params <tensegrity_opt.Manipulator.params>` (:func:`parameter_direction`).
     p, t : ndarray (P,)
         Along the curve (``p = 0`` is the given chain).
     q : ndarray (P, n)
@@ -334,10 +348,12 @@ def stability_boundary(m: Manipulator, control: Control | str = "guided", parame
         stay where they are at ``p = 0`` while ``p`` moves: a guide or wall through the start's tip (``y = 0``
         for the straight chain: the imperfection sensitivity of a column in a fixed guide), a held tip at
         the start's position.
-    parameter : str or array_like (6n,)
+    parameter : str or array_like (6n,) or (6, n)
         ``"asymmetry"`` (``L1_0 = L0 + p``, ``L2_0 = L0 - p`` on every segment: a pre-bend), ``"L0"``
         (both rest lengths ``+ p``), ``"a"``, ``"b"``, ``"k"`` (both springs), or a direction in the
-        parameters ``a, b, k1, k2, L1_0, L2_0`` (6n numbers, that order, per segment).
+        chain's parameters: 6n numbers in the order of :attr:`Manipulator.params
+        <tensegrity_opt.Manipulator.params>` — the n values of ``a`` (segment 1 to n), then the n of ``b``,
+        ``k1``, ``k2``, ``L1_0``, ``L2_0`` — or a ``(6, n)`` array with these rows (:func:`parameter_direction`).
     start : Equilibrium, array_like or None
         The branch's start at ``p = 0`` (None: the rest configuration).
     p_min, p_max : float

@@ -33,6 +33,37 @@ def test_branch_point_boundary_is_the_critical_load_of_the_changed_chain(paramet
                                   else ref.critical_loads_free(chain_of(mp))[0], rel=1e-6)
 
 
+#: (a, b, k1, k2, L1_0, L2_0) per segment: symmetric segments that differ (the straight chain buckles at a branch point)
+HETERO = [(1.0, 1.0, 1.0, 1.0, 1.0, 1.0), (0.9, 1.3, 2.0, 2.0, 1.5, 1.5), (1.1, 0.8, 0.7, 0.7, 0.9, 0.9)]
+
+
+def test_a_direction_is_read_in_the_order_of_the_chains_parameters():
+    """A direction moving ONE segment's springs (segment 2's ``k1`` and ``k2``) as 6n numbers in the order of
+    ``Manipulator.params`` (every ``a``, then every ``b``, ``k1``, ``k2``, ``L1_0``, ``L2_0``) or as the ``(6, n)``
+    array of those rows: the boundary is the critical load of the chain changed by hand (segment 2's springs
+    ``k + p``), from the independent model. Read a row per segment, the same numbers would move segment 2's ``b``
+    and ``L1_0``. A ``(n, 6)`` array (a row per segment) is refused."""
+    n = len(HETERO)
+    m = to.Manipulator([to.Segment(a, b, (k1, k2), (l1, l2)) for a, b, k1, k2, l1, l2 in HETERO])
+    rows = np.zeros((6, n))
+    rows[2, 1] = rows[3, 1] = 1.0                  # k1 and k2 of segment 2
+    flat = np.zeros(6 * n)
+    flat[[2 * n + 1, 3 * n + 1]] = 1.0
+    assert np.array_equal(parameter_direction(m, rows)[1], flat)
+    assert np.array_equal(parameter_direction(m, flat)[1], flat)
+    B = stability_boundary(m, "guided", flat, start=np.zeros(n), p_min=-0.3, p_max=0.3, max_points=3)
+    assert B.kind == "branch_point" and B.success and B.parameter == "direction" and B.p.size == 3
+    np.testing.assert_array_equal(B.parameter_direction, flat)
+    for p, t in zip(B.p, B.t):
+        by_hand = [seg if i != 1 else (*seg[:2], seg[2] + p, seg[3] + p, *seg[4:]) for i, seg in enumerate(HETERO)]
+        assert t == pytest.approx(ref.critical_loads_guided(ref.Chain.from_segments(by_hand))[0], rel=1e-6)
+    assert np.ptp(B.t) > 1e-2                      # the load moves with segment 2's springs
+    with pytest.raises(to.InvalidParameterError, match=r"order of Manipulator.params.*got shape \(3, 6\)"):
+        parameter_direction(m, rows.T)
+    with pytest.raises(to.InvalidParameterError, match="order of Manipulator.params"):
+        parameter_direction(m, flat[:-1])
+
+
 def test_fold_boundary_through_the_cusp_of_the_unfolded_pitchfork():
     """A preload asymmetry unfolds the straight chain's pitchfork: the fold curve passes through the
     branch point (a cusp at p = 0, t = the critical load). Each point is checked on the independent model
