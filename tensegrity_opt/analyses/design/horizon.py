@@ -55,6 +55,8 @@ TRACKING = ("soft", "exact")
 TIP_WEIGHTS = (100.0, 100.0)
 #: Joint angles (rad) within which the forward solve must land on the planned configuration.
 SAME_POSE = 1e-6
+#: How far (times ``max b``) beyond its rate box a converged solve's command may lie: it is clipped into the box.
+RATE_TOL = 1e-7
 _INF = math.inf
 
 
@@ -396,7 +398,8 @@ class _Planner:
         adopted = verified = False
         eq = None
         if plan_ell is not None:
-            inside = bool(np.all(np.abs(proposal - self.ell) <= self.R[k] * (1 + 1e-7) + 1e-9))
+            # IPOPT holds the rate rows to its (scaled) tolerance: a proposal that far outside is clipped in
+            inside = bool(np.all(np.abs(proposal - self.ell) <= self.R[k] * (1 + 1e-6) + RATE_TOL * self.scale))
             if inside:
                 command = np.clip(proposal, self.ell - self.R[k], self.ell + self.R[k])
                 eq = self.forward(command, F, self.q)
@@ -427,13 +430,26 @@ class _Planner:
         return self._result(steps, horizon, status, time.perf_counter() - t0)
 
     def _run_all(self, steps: list[_Step]) -> None:
-        res = self._solve(0, self._cold(self._index(0)))
-        info = SolverInfo(res.status, res.iterations)
-        Q, Ell = self._split(res.x) if res.success else (None, None)
-        for k in range(self.K):
-            if expired():
-                raise TimeLimitError("the horizon plan ran out of time")
-            steps.append(self.apply(k, None if Q is None else Q[k], None if Ell is None else Ell[k], info))
+        """One NLP over the steps left; where a step cannot be applied (it holds), the steps after it are planned
+        again from the state reached."""
+        from ...numerics.horizon_nlp import horizon_nlp
+
+        j = 0
+        while j < self.K:
+            self.nlp = horizon_nlp(self.n, self.K - j, self.A is not None)
+            self.N = self.K - j
+            res = self._solve(j, self._cold(self._index(j)))            # from the current state
+            info = SolverInfo(res.status, res.iterations)
+            Q, Ell = self._split(res.x) if res.success else (None, None)
+            first = j
+            for k in range(first, self.K):
+                if expired():
+                    raise TimeLimitError("the horizon plan ran out of time")
+                st = self.apply(k, None if Q is None else Q[k - first], None if Ell is None else Ell[k - first], info)
+                steps.append(st)
+                j = k + 1
+                if not st.adopted:
+                    break
 
     def _run_receding(self, steps: list[_Step]) -> None:
         warm = None
