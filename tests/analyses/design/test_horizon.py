@@ -45,8 +45,11 @@ def forward(ch: Chain, F, q_prev) -> np.ndarray:
     F = np.asarray(F, float)
     res = so.minimize(lambda q: ch.energy(q) - F @ ch.tip(q), q_prev, jac=lambda q: ch.lagrangian_grad(q, F),
                       hess=lambda q: ch.lagrangian_hess(q, F), method="trust-exact", options={"gtol": 1e-12})
-    assert res.success or np.abs(ch.lagrangian_grad(res.x, F)).max() < 1e-9, res.message
-    return res.x
+    q = res.x
+    for _ in range(4):                          # polished by Newton on the reference's own derivatives
+        q = q - np.linalg.solve(ch.lagrangian_hess(q, F), ch.lagrangian_grad(q, F))
+    assert np.abs(ch.lagrangian_grad(q, F)).max() < 1e-11, res.message
+    return q
 
 
 def check_forward(m, plan, loads, q0, rest0, rate, margin):
