@@ -29,6 +29,8 @@ Cases (each with its target):
 12. figures: every figure route's default request on a server of default settings (``benchmarks/figures.py``):
    seconds from the client (first answer, then the median) against the time limit; target: the median at most a
    third of it. Its own table in RESULTS.md ("Figures").
+13. horizon planner: one warm receding-horizon step (n = 4, N = 10) beside the step-by-step controller's step on
+   the same trajectory, both timed in the same run (info).
 """
 
 from __future__ import annotations
@@ -1014,9 +1016,41 @@ def case12(cfg: Config) -> list[Row]:
     return rows
 
 
+def case13(cfg: Config) -> list[Row]:
+    """One warm receding-horizon step (n = 4, N = 10) vs the step-by-step controller's step, same trajectory."""
+    from tensegrity_opt.analyses.design.horizon import plan_horizon
+    from tensegrity_opt.analyses.design.preload_control import PreloadController
+
+    m = to.Manipulator.uniform(4, **{k: v for k, v in PAPER.items() if k != "n"})
+    F = np.array([-0.02, 0.01])
+    K = 20 if cfg.quick else 40
+    ctl = PreloadController(m, load=F)
+    tip0 = m.tip(ctl.q)
+    traj = np.array([tip0 + np.array([-0.3, 0.6]) * np.sin(np.pi * k / (K - 1)) for k in range(K)])
+    plan_horizon(m, traj[:2], horizon=10, loads=F, rate=0.05)          # warm-up (the NLP built)
+    t0 = time.perf_counter()
+    hz = plan_horizon(m, traj, horizon=10, loads=F, rate=0.05)
+    th = (time.perf_counter() - t0) / K
+    ctl.step(traj[0])
+    ts = []
+    for k in range(1, K):
+        t0 = time.perf_counter()
+        ctl.step(traj[k])
+        ts.append(time.perf_counter() - t0)
+    o = th * 1e3
+    note = (f"paper chain n=4 under F = {F.tolist()}, {K} tip poses on an arc (0.3 x 0.6), rate 0.05 per step: "
+            f"receding horizon N = 10 per step (one warm IPOPT solve of 10 steps and the forward verification), "
+            f"status {hz.status}, {hz.solves} solves, median {int(np.median([s.iterations for s in hz.solver]))} "
+            f"IPOPT iterations; the step-by-step controller's warm step (the compiled Newton step) on the same "
+            f"trajectory")
+    return [Row("13", "receding-horizon step (N = 10, warm)", 4, o, "ms", "PreloadController.step (same trajectory)",
+                median_ms(ts), ratio=median_ms(ts) / o, target="(info)", samples=[th], baseline_samples=ts,
+                notes=[note])]
+
+
 CASES: list[tuple[str, Callable[[Config], list[Row]]]] = [
     ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8), ("9", case9),
-    ("10", case10), ("11", case11), ("12", case12),
+    ("10", case10), ("11", case11), ("12", case12), ("13", case13),
 ]
 
 

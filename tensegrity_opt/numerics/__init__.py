@@ -11,7 +11,9 @@ The analyses (:mod:`tensegrity_opt.analyses`) talk to it through these doors, ne
   :meth:`~ChainSolver.tangent_stiffness`, :meth:`~ChainSolver.kkt_parameter_jacobian`); results are numpy
   only (:class:`LocalResult`, :class:`SeedResults`, :class:`Continuation`);
 * the design NLP builders :func:`buckling_design_nlp`, :func:`preload_nlp` and :func:`stiffness_nlp`
-  (:mod:`.design_nlp`), each NLP with named layouts of its variables, rows and parameters (:class:`Layout`);
+  (:mod:`.design_nlp`) and the horizon problem (:mod:`.horizon_nlp`: N control steps as one NLP,
+  :func:`.horizon_nlp.horizon_nlp`), each NLP with named layouts of its variables, rows and parameters
+  (:class:`Layout`);
 * the compiled systems of the loading paths (:func:`.path_system.path_system`) and of the control step
   (:func:`.inverse_statics.inverse_statics`), each with the named layouts of its vectors (:mod:`.layout`: the
   analyses pack and read every solver vector by name, never by offset);

@@ -1,0 +1,147 @@
+"""The horizon problem: the springs' rest lengths for ``N`` consecutive steps of a trajectory as one CasADi NLP.
+
+The shape of do-mpc's and rockit's optimal-control problems, for quasi-static steps: the problem (this module)
+is built once per ``(n, N, angles)`` and cached per thread (:mod:`.per_thread`); every number that varies
+between calls (the geometry, the loads, the current rest lengths, the per-spring weights of the motion, the
+objective's weights, the length scale, the required margin) enters through the parameter vector ``p``, and
+the targets, the rates, the actuator bounds and the joint range through the bounds. The method that calls it
+(receding or whole-trajectory) is :mod:`tensegrity_opt.analyses.design.horizon`.
+
+Variables, per step ``k = 1..N`` (each block holds the ``N`` steps one after the other):
+``phi`` (absolute angles, n), ``L10``, ``L20`` (rest lengths, n each), ``L`` (the lower-triangular factor
+of ``H_q - margin I = L L^T``, as :class:`~.design_nlp.PreloadNLP`: ``H_q`` the Hessian of ``E - F_k . tip``
+in the joint angles, ``diag(L) >= 0``: the stability margin in Cholesky form), ``e`` (the pose error:
+the tip's two coordinates, and with ``angles`` the last link's angle times the length scale) and ``t``
+(``t >= |e|`` component by component).
+
+Rows, per step: ``grad`` (``grad E - J^T F_k = 0``), ``psd`` (the factorisation, ``= 0``), ``q`` (the joint
+angles, inside the range), ``stretch1``, ``stretch2`` (``L_i - L_i0``: ``>= 0`` for taut springs), ``pose``
+(``pose_k - e_k``, bounded by the target: the pose is the target plus the error), ``abs_hi``, ``abs_lo``
+(``t - e >= 0``, ``t + e >= 0``) and ``rate`` (``l_k - l_{k-1}``, ``l_0`` the current rest lengths ``ell0``,
+bounded by the step's rate box ``+- r_k``).
+
+Objective (``s`` the length scale, ``w`` the weights ``(w_2, w_1, w_move)``, ``v`` the per-spring weights)::
+
+    w_2 sum_k |e_k|^2 / s^2 + w_1 sum_k sum(t_k) / s + w_move sum_k sum_j v_j (l_kj - l_{k-1,j})^2 / s^2
+
+The pose error is soft: an out-of-reach stretch of the trajectory still has a solution, which moves toward
+the targets as fast as the rates allow. Its first-power part makes the penalty exact (a step whose target
+is reachable is met exactly once ``w_1`` exceeds the multiplier of the pose row), its square part spreads a
+shortfall over the steps; bounding ``e`` (and ``t``) to zero turns it into exact tracking.
+"""
+
+from __future__ import annotations
+
+import casadi as ca
+import numpy as np
+
+from .design_nlp import NLPResult, _factor_floor, _lower, _nlpsol, _problem, _run, _tril, tril_size
+from .expressions import chain_expressions
+from .layout import Layout
+
+__all__ = ["HorizonNLP", "horizon_nlp"]
+
+#: IPOPT iterations of one horizon solve at most (a receding step is warm: tens).
+HORIZON_MAX_ITER = 1000
+
+
+class HorizonNLP:
+    """Rest lengths, configurations and margins of ``N`` quasi-static steps (module docstring).
+
+    Parameters
+    ----------
+    n : int
+        Segments (``>= 2``).
+    N : int
+        Steps of the horizon (``>= 1``).
+    angles : bool
+        The pose includes the last link's absolute angle (times the length scale ``s``).
+
+    Attributes
+    ----------
+    variables, constraints, parameters : Layout
+        The named blocks of ``x``, ``g`` and ``p``; a block of per-step values holds the ``N`` steps one after
+        the other (``unpack(x)["phi"].reshape(N, n)``).
+    pose_size : int
+        2, or 3 with ``angles``.
+    factor_floor : ndarray
+        The lower bounds of one step's factor block (``diag(L) >= 0``).
+    """
+
+    def __init__(self, n: int, N: int, angles: bool) -> None:
+        if n < 2 or N < 1:
+            raise ValueError(f"a horizon problem needs n >= 2 segments and N >= 1 steps, got n={n}, N={N}")
+        self.n, self.N, self.angles = n, N, bool(angles)
+        d = self.pose_size = 3 if angles else 2
+        nt = tril_size(n)
+        a, b, k1, k2 = (ca.SX.sym(s, n) for s in ("a", "b", "k1", "k2"))
+        F = ca.SX.sym("F", 2 * N)
+        ell0 = ca.SX.sym("ell0", 2 * n)                # the current rest lengths: L10 then L20
+        v = ca.SX.sym("v", 2 * n)                      # per-spring weights of the motion
+        w = ca.SX.sym("w", 3)                          # w_2, w_1, w_move
+        s = ca.SX.sym("scale")
+        margin = ca.SX.sym("margin")
+        phi, L10, L20 = (ca.SX.sym(nm, n * N) for nm in ("phi", "L10", "L20"))
+        lv = ca.SX.sym("L", nt * N)
+        e, t = ca.SX.sym("e", d * N), ca.SX.sym("t", d * N)
+        T = ca.DM(np.tril(np.ones((n, n))))            # dphi/dq
+        rows: dict[str, list] = {k: [] for k in ("grad", "psd", "q", "stretch1", "stretch2", "pose", "abs_hi",
+                                                 "abs_lo", "rate")}
+        diag = None
+        f = 0
+        prev = ell0
+        for k in range(N):
+            ph = phi[k * n:(k + 1) * n]
+            l1, l2 = L10[k * n:(k + 1) * n], L20[k * n:(k + 1) * n]
+            Fk = F[2 * k:2 * k + 2]
+            q, S1, S2, E, tip = chain_expressions(ph, a, b, k1, k2, l1, l2)
+            J = ca.jacobian(tip, ph)
+            Hq = T.T @ ca.hessian(E - ca.dot(Fk, tip), ph)[0] @ T
+            Lc, diag = _tril(lv[k * nt:(k + 1) * nt], n)
+            ek, tk = e[k * d:(k + 1) * d], t[k * d:(k + 1) * d]
+            pose = ca.vertcat(tip, s * ph[n - 1]) if angles else tip
+            ell = ca.vertcat(l1, l2)
+            rows["grad"].append(ca.gradient(E, ph) - J.T @ Fk)
+            rows["psd"].append(_lower(Hq - margin * ca.SX.eye(n) - Lc @ Lc.T, n))
+            rows["q"].append(q)
+            rows["stretch1"].append(S1 - l1)
+            rows["stretch2"].append(S2 - l2)
+            rows["pose"].append(pose - ek)
+            rows["abs_hi"].append(tk - ek)
+            rows["abs_lo"].append(tk + ek)
+            rows["rate"].append(ell - prev)
+            f += w[0] * ca.sumsqr(ek) / (s * s) + w[1] * ca.sum1(tk) / s \
+                + w[2] * ca.sum1(v * (ell - prev) ** 2) / (s * s)
+            prev = ell
+        g = ca.vertcat(*(ca.vertcat(*r) for r in rows.values()))
+        x = ca.vertcat(phi, L10, L20, lv, e, t)
+        p = ca.vertcat(a, b, k1, k2, F, ell0, v, w, s, margin)
+        #: ``phi``, ``L10``, ``L20`` (n per step), ``L`` (``tril(n)`` per step), ``e``, ``t`` (``pose_size`` per step)
+        self.variables = Layout(phi=n * N, L10=n * N, L20=n * N, L=nt * N, e=d * N, t=d * N)
+        #: per step: ``grad`` (n), ``psd`` (tril(n)), ``q`` (n), ``stretch1``, ``stretch2`` (n), ``pose``, ``abs_hi``,
+        #: ``abs_lo`` (``pose_size``), ``rate`` (2n: the L10 then the L20 changes)
+        self.constraints = Layout(grad=n * N, psd=nt * N, q=n * N, stretch1=n * N, stretch2=n * N, pose=d * N,
+                                  abs_hi=d * N, abs_lo=d * N, rate=2 * n * N)
+        #: geometry ``a, b, k1, k2``; the loads ``F`` (2 per step); ``ell0`` the current rest lengths (L10 then
+        #: L20); ``v`` the per-spring weights of the motion; ``w = (w_2, w_1, w_move)``; the length ``scale``;
+        #: the required ``margin``
+        self.parameters = Layout(a=n, b=n, k1=n, k2=n, F=2 * N, ell0=2 * n, v=2 * n, w=3, scale=(), margin=())
+        self.factor_floor = _factor_floor(n, diag)
+        self.solver, self._deadline = _nlpsol(f"horizon_{n}_{N}", {"x": x, "p": p, "f": f, "g": g},
+                                              **{"ipopt.max_iter": HORIZON_MAX_ITER})
+        self._eval = ca.Function("horizon_eval", [x, p], [g, f])
+
+    def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
+        """IPOPT from ``x0`` (:class:`~.design_nlp.NLPResult`; out of time: ``TimeLimitError``)."""
+        return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
+
+    def evaluate(self, x: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, float]:
+        """The rows ``g(x)`` and the objective at ``x`` (numpy)."""
+        g, f = self._eval(x, p)
+        return np.asarray(g).ravel(), float(f)
+
+
+def horizon_nlp(n: int, N: int, angles: bool = False) -> HorizonNLP:
+    """This thread's :class:`HorizonNLP` for ``n`` segments and ``N`` steps (``angles``: the pose includes the last
+    link's angle), built on the first call and reused (:mod:`.per_thread`)."""
+    return _problem(HorizonNLP, int(n), int(N), bool(angles))

@@ -1,0 +1,144 @@
+"""The horizon planner (analyses/design/horizon.py) against independent routes.
+
+* every step of a plan is re-solved forward with the reference model (tests/support/reference_model.py: its own
+  energy, scipy's minimiser of E - F . tip from the previous step's configuration) and must land on the reported
+  pose, stable with the margin by the reference Hessian's eigenvalues; the rates hold between consecutive commands
+  and from the given current rest lengths, the bounds hold;
+* the anticipation case (a compressive payload arriving at a known step, a slow actuator and a margin): the
+  step-by-step plan goes infeasible at the payload and never recovers, the horizon plan stiffens the arm ahead of it
+  and stays on every target;
+* the whole-trajectory plan and the receding one agree on an easy trajectory (both on target);
+* an unreachable jump: the soft plan moves toward it at the full rate and catches up, the exact one holds and says
+  why (the solver's status).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+import scipy.optimize as so
+from reference_model import Chain
+
+import tensegrity_opt as to
+from tensegrity_opt.analyses.design.horizon import plan_horizon
+from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
+from tensegrity_opt.errors import InvalidParameterError
+
+PREBENT = to.Manipulator.uniform(4, 1.0, 1.0, 1.0, (1.04, 0.96))
+HETERO = to.Manipulator([to.Segment(0.9, 1.0, 1.2, (1.05, 0.97)), to.Segment(1.1, 0.9, 0.8, 1.0),
+                         to.Segment(1.0, 1.1, 1.0, (0.98, 1.02))])
+MARGIN, RATE, PAYLOAD, ARRIVES, K = 0.05, 0.04, 0.08, 7, 14
+
+
+def step_by_step(m, targets, loads, rate, margin):
+    """The step-by-step controller's plan of the same trajectory, its rate a length per step."""
+    return plan_preloads(m, targets, loads=loads, rate_limit=rate, margin=margin)
+
+
+def ref_chain(m: to.Manipulator, ell) -> Chain:
+    ell = np.asarray(ell, float).reshape(m.n, 2)
+    return Chain.from_segments([(s.a, s.b, s.k1, s.k2, l1, l2) for s, (l1, l2) in zip(m.segments, ell)])
+
+
+def forward(ch: Chain, F, q_prev) -> np.ndarray:
+    """The reference forward quasi-static solve: a local minimiser of E - F . tip from q_prev."""
+    F = np.asarray(F, float)
+    res = so.minimize(lambda q: ch.energy(q) - F @ ch.tip(q), q_prev, jac=lambda q: ch.lagrangian_grad(q, F),
+                      hess=lambda q: ch.lagrangian_hess(q, F), method="trust-exact", options={"gtol": 1e-12})
+    q = res.x
+    for _ in range(4):                          # polished by Newton on the reference's own derivatives
+        q = q - np.linalg.solve(ch.lagrangian_hess(q, F), ch.lagrangian_grad(q, F))
+    assert np.abs(ch.lagrangian_grad(q, F)).max() < 1e-11, res.message
+    return q
+
+
+def check_forward(m, plan, loads, q0, rest0, rate, margin):
+    """Every step re-solved forward by the reference model: on the reported pose, stable with the margin; rates
+    and bounds held."""
+    q_prev = q0
+    lo, hi = 0.1 * float(m.b.min()), 4.0 * float(m.b.max())
+    prev = np.asarray(rest0, float)
+    for k in range(len(plan.targets)):
+        cmd = plan.commands[k]
+        ch = ref_chain(m, cmd)
+        q = forward(ch, loads[k], q_prev)
+        np.testing.assert_allclose(q, plan.q[k], atol=1e-7)
+        np.testing.assert_allclose(ch.tip(q), plan.tip[k], atol=1e-7)
+        w = np.linalg.eigvalsh(ch.lagrangian_hess(q, np.asarray(loads[k], float)))
+        assert w[0] >= margin - 1e-7
+        assert np.abs(cmd - prev).max() <= rate + 1e-9           # the rate box, from rest_lengths0 first
+        assert cmd.min() >= lo and cmd.max() <= hi
+        q_prev, prev = q, cmd
+
+
+@pytest.fixture(scope="module")
+def payload():
+    """The anticipation case: a pre-bent chain, the tip moving up, a compressive payload arriving at step 7."""
+    m = PREBENT
+    q0 = PreloadController(m).q
+    tip0 = m.tip(q0)
+    targets = np.array([tip0 + np.array([-0.1, 0.2]) * min(k, 5) / 5 for k in range(K)])
+    loads = np.zeros((K, 2))
+    loads[ARRIVES:, 0] = -PAYLOAD
+    hz = plan_horizon(m, targets, horizon=10, loads=loads, rate=RATE, margin=MARGIN)
+    sbs = step_by_step(m, targets, loads, RATE, MARGIN)
+    return m, q0, targets, loads, hz, sbs
+
+
+def test_the_horizon_plan_anticipates_the_payload_where_the_step_by_step_plan_goes_infeasible(payload):
+    m, q0, targets, loads, hz, sbs = payload
+    assert not sbs.feasible[ARRIVES:].any() and sbs.feasible[:ARRIVES].all()      # infeasible at the payload, on
+    assert hz.status == "complete" and hz.success
+    assert hz.adopted.all() and hz.verified.all() and hz.on_target.all() and hz.feasible.all()
+    assert np.linalg.norm(hz.tip - targets, axis=1).max() <= 1e-6
+    assert all(s.status == "Solve_Succeeded" for s in hz.solver)
+    # it starts moving before the payload: the rest lengths change while the tip target stands still (steps 5, 6)
+    assert np.abs(hz.commands[ARRIVES - 1] - hz.commands[ARRIVES - 3]).max() > 0.5 * RATE
+    assert hz.margin[ARRIVES:].min() >= MARGIN - 1e-7
+
+
+def test_every_step_of_the_horizon_plan_lands_forward_in_the_reference_model(payload):
+    m, q0, targets, loads, hz, _ = payload
+    check_forward(m, hz, loads, q0, np.column_stack([m.L1_0, m.L2_0]), RATE, MARGIN)
+
+
+def test_whole_trajectory_and_receding_agree_on_an_easy_trajectory():
+    m, F = HETERO, np.array([0.01, -0.01])
+    q0 = PreloadController(m, load=F).q
+    tip0 = m.tip(q0)
+    targets = np.array([tip0 + np.array([-0.1, 0.2]) * np.sin(np.pi * k / 7) for k in range(8)])
+    rest0 = np.column_stack([m.L1_0, m.L2_0]) + 0.01                    # the arm's own rest lengths, not m's
+    eq0 = to.solve_equilibrium_under_force(to.Manipulator(s.replace(L0=tuple(r)) for s, r in zip(m.segments, rest0)),
+                                           *F, q0=q0)
+    plans = [plan_horizon(m, targets, horizon=h, loads=F, rate=0.1, margin=1e-3, rest_lengths0=rest0, start=eq0)
+             for h in (3, "all")]
+    for p in plans:
+        assert p.status == "complete" and p.on_target.all() and p.verified.all()
+        check_forward(m, p, np.tile(F, (8, 1)), eq0.q, rest0, 0.1, 1e-3)
+    np.testing.assert_allclose(plans[0].tip, plans[1].tip, atol=1e-6)
+
+
+def test_an_unreachable_jump_soft_catches_up_at_the_full_rate_exact_holds():
+    m = HETERO
+    q0 = PreloadController(m).q
+    tip0 = m.tip(q0)
+    targets = np.array([tip0] + [tip0 + np.array([-0.1, 0.4])] * 5)
+    rate = 0.03
+    soft = plan_horizon(m, targets, horizon=2, rate=rate)
+    assert soft.adopted.all() and soft.verified.all() and not soft.on_target[1] and soft.on_target[-1]
+    assert soft.status == "off_target" and not soft.success
+    moves = np.abs(np.diff(soft.commands, axis=0)).max(axis=(1, 2))
+    assert moves[0] == pytest.approx(rate, rel=1e-6)                      # as fast as allowed
+    assert np.all(np.diff(soft.tip_error[1:][~soft.on_target[1:]]) < 0)    # the error falls until on target
+    exact = plan_horizon(m, targets, horizon=2, rate=rate, tracking="exact")
+    assert exact.status == "held_steps" and not exact.adopted[1]
+    assert exact.solver[1].status != "Solve_Succeeded"                    # IPOPT's own status
+    np.testing.assert_allclose(exact.commands[1], exact.commands[0])      # the held command
+    assert np.isnan(exact.proposals[1]).all()
+
+
+@pytest.mark.parametrize("horizon", [0, -1, "some", 2.5, True])
+def test_the_horizon_vocabulary(horizon):
+    with pytest.raises(InvalidParameterError) as exc:
+        plan_horizon(HETERO, [[5.0, 0.1]], horizon=horizon)
+    assert exc.value.field == "horizon"

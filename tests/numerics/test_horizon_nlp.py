@@ -1,0 +1,63 @@
+"""The horizon NLP (numerics/horizon_nlp.py): built once per (n, N, angles), and its rows and objective against the
+independent reference model (tests/support/reference_model.py: energy, gradient and Hessian in the joint angles,
+written from docs/model.md)."""
+
+from __future__ import annotations
+
+import numpy as np
+from reference_model import Chain
+
+from tensegrity_opt.numerics.design_nlp import tril_vector
+from tensegrity_opt.numerics.horizon_nlp import HorizonNLP, horizon_nlp
+
+
+def test_built_once_per_shape_and_reused():
+    h = horizon_nlp(3, 4)
+    assert horizon_nlp(3, 4) is h                     # the second call reuses the built problem
+    assert horizon_nlp(3, 4, True) is not h and horizon_nlp(3, 5) is not h
+    assert isinstance(h, HorizonNLP) and (h.n, h.N, h.angles, h.pose_size) == (3, 4, False, 2)
+    assert h.variables.size == 4 * (3 * 3 + 6 + 2 + 2)
+    assert horizon_nlp(3, 4, True).pose_size == 3
+
+
+def test_rows_and_objective_match_the_reference_model():
+    rng = np.random.default_rng(7)
+    n, N = 3, 2
+    h = horizon_nlp(n, N, True)
+    a, b = rng.uniform(0.7, 1.2, n), rng.uniform(0.8, 1.2, n)
+    k1, k2 = rng.uniform(0.5, 1.5, n), rng.uniform(0.5, 1.5, n)
+    ell0 = rng.uniform(0.9, 1.1, 2 * n)                          # L10 then L20
+    Ell = ell0 + rng.uniform(-0.05, 0.05, (N, 2 * n))
+    Q = rng.uniform(-0.3, 0.3, (N, n))
+    F = rng.uniform(-0.1, 0.1, (N, 2))
+    v = rng.uniform(0.5, 2.0, 2 * n)
+    w, s, margin = np.array([3.0, 5.0, 2.0]), float(b.max()), 0.01
+    E = rng.uniform(-0.1, 0.1, (N, 3))
+    Tt = np.abs(E) + 0.2
+    Ls = []
+    chains = [Chain(a, b, k1, k2, Ell[k, :n], Ell[k, n:]) for k in range(N)]
+    for k, ch in enumerate(chains):
+        Hq = ch.lagrangian_hess(Q[k], F[k])
+        Ls.append(tril_vector(np.linalg.cholesky(Hq - margin * np.eye(n))))
+    x = h.variables.pack(phi=np.cumsum(Q, axis=1).ravel(), L10=Ell[:, :n].ravel(), L20=Ell[:, n:].ravel(),
+                         L=np.concatenate(Ls), e=E.ravel(), t=Tt.ravel())
+    p = h.parameters.pack(a=a, b=b, k1=k1, k2=k2, F=F.ravel(), ell0=ell0, v=v, w=w, scale=s, margin=margin)
+    g, f = h.evaluate(x, p)
+    rows = h.constraints.unpack(g)
+    Tm = np.tril(np.ones((n, n)))
+    for k, ch in enumerate(chains):
+        # grad E - J^T F in the absolute angles: T^-T times the gradient in the joint angles
+        np.testing.assert_allclose(Tm.T @ rows["grad"].reshape(N, n)[k], ch.lagrangian_grad(Q[k], F[k]), atol=1e-12)
+        np.testing.assert_allclose(rows["psd"].reshape(N, -1)[k], 0.0, atol=1e-12)      # the factor is exact
+        np.testing.assert_allclose(rows["q"].reshape(N, n)[k], Q[k], atol=1e-14)
+        L1, L2 = ch.lengths(Q[k])
+        np.testing.assert_allclose(rows["stretch1"].reshape(N, n)[k], L1 - Ell[k, :n], atol=1e-13)
+        np.testing.assert_allclose(rows["stretch2"].reshape(N, n)[k], L2 - Ell[k, n:], atol=1e-13)
+        pose = np.append(ch.tip(Q[k]), s * np.sum(Q[k]))
+        np.testing.assert_allclose(rows["pose"].reshape(N, 3)[k], pose - E[k], atol=1e-13)
+    np.testing.assert_allclose(rows["rate"].reshape(N, 2 * n), np.diff(np.vstack([ell0, Ell]), axis=0), atol=1e-14)
+    np.testing.assert_allclose(rows["abs_hi"], (Tt - E).ravel())
+    np.testing.assert_allclose(rows["abs_lo"], (Tt + E).ravel())
+    dl = np.diff(np.vstack([ell0, Ell]), axis=0)
+    expect = w[0] * np.sum(E ** 2) / s ** 2 + w[1] * np.sum(Tt) / s + w[2] * np.sum(v * dl ** 2) / s ** 2
+    assert abs(f - expect) <= 1e-12 * max(1.0, abs(expect))
