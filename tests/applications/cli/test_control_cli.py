@@ -43,9 +43,10 @@ def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
 
     csv = tmp_path / "path.csv"
     csv.write_text("x,y,fx,fy\n7.9,0.2,0,-0.01\n7.8,0.4,0,-0.01\n7.7,0.6,0,-0.02\n", encoding="utf-8")
-    got = run_json(capsys, ["plan", "--targets", str(csv), "--rate-limit", "0.2", "--bounds", "0.5", "2"])
+    got = run_json(capsys, ["plan", "--targets", str(csv), "--rate-limit", "0.2", "--dt", "1", "--bounds", "0.5", "2"])
     want = to.plan_preloads(M, [[7.9, 0.2], [7.8, 0.4], [7.7, 0.6]],
-                                      loads=[[0, -0.01], [0, -0.01], [0, -0.02]], rate_limit=0.2, bounds=(0.5, 2.0))
+                                      loads=[[0, -0.01], [0, -0.01], [0, -0.02]], rate_limit=0.2, dt=1.0,
+                                      bounds=(0.5, 2.0))
     assert same(got, json.loads(json.dumps(want.to_dict())))
     js = tmp_path / "path.json"
     js.write_text(json.dumps({"targets": [[7.8, 0.3], [7.8, 0.6]], "end_angles": [0.0, None]}), encoding="utf-8")
