@@ -314,7 +314,8 @@ PLAN = {'success': True,
  'feasible': [True, True, True, True],
  'verified': [True, True, True, True],
  'method': ['ipopt', 'newton', 'newton', 'newton'],
- 'targets': [[7.6, 0.5], [7.5, 0.75], [7.4, 1.0], [7.3, 1.25]]}
+ 'targets': [[7.6, 0.5], [7.5, 0.75], [7.4, 1.0], [7.3, 1.25]],
+ 'times': [None, None, None, None]}
 
 #: The simulation of SIMULATION_REQUEST_EXAMPLE (a load cycle on three bistable segments), rounded.
 SIMULATION = {'success': True,

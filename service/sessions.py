@@ -12,7 +12,8 @@ the stream's events:
   dead load from the last state, a ``snap`` event when the configuration moves by more than ``snap_distance``
   (rad, largest joint) or the result is unstable.
 * ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.PreloadController`; each step is
-  ``PreloadController.step(target, load, end_angle)``.
+  ``PreloadController.step(target, load, end_angle, dt=...)``, ``dt`` the step's own, the difference of its
+  ``time`` and the last step's (the open is time 0), or the open's; the answer carries the step's ``time``.
 
 Every function here runs in the stream's solver thread (:class:`service.execution.slots.StreamSlots`), never
 on the event loop; :func:`step_task` returns the answer already rendered (``service.responses.render_json``).
@@ -98,16 +99,32 @@ class InverseSession(Session):
     def __init__(self, m: to.Manipulator, req: s.InverseOpen) -> None:
         super().__init__(m)
         self.controller = PreloadController(
-            m, req.start, load=tuple(req.load), bounds=None if req.bounds is None else tuple(req.bounds),
-            rate_limit=req.rate_limit, margin=req.margin, objective=req.objective, weights=req.weights)
+            m, req.start, rest_lengths0=req.rest_lengths0, load=tuple(req.load),
+            bounds=None if req.bounds is None else tuple(req.bounds), rate_limit=req.rate_limit, dt=req.dt,
+            margin=req.margin, objective=req.objective, weights=req.weights)
+        #: the last step's instant (s; the open is 0), None once a step came without a time base
+        self.time: float | None = 0.0
 
     def opened(self) -> dict[str, Any]:
         c = self.controller
         return {"n": self.m.n, "q": numbers(c.q), "rest_lengths": [numbers(p) for p in c.ell.reshape(c.n, 2)],
-                "load": numbers(c.load)}
+                "load": numbers(c.load), "time": 0.0}
 
     def step(self, msg: s.InverseStep) -> dict[str, Any]:
-        return self.controller.step(msg.target, load=msg.load, end_angle=msg.end_angle).to_dict()
+        dt = msg.dt
+        if msg.time is not None:
+            if dt is not None:
+                raise to.InvalidParameterError("give the step's time or its dt, not both", field="dt")
+            if self.time is None:
+                raise to.InvalidParameterError("the stream's clock is unknown (an earlier step had no time): give "
+                                               "dt, the seconds since the last step", field="time")
+            if not msg.time > self.time:
+                raise to.InvalidParameterError(f"time must be after the last step's, {self.time:g} s", field="time")
+            dt = msg.time - self.time
+        h = dt if dt is not None else self.controller.dt
+        res = self.controller.step(msg.target, load=msg.load, end_angle=msg.end_angle, dt=dt)
+        self.time = None if h is None or self.time is None else (msg.time if msg.time is not None else self.time + h)
+        return {**res.to_dict(), "time": self.time}
 
 
 #: The session class of each mode.

@@ -221,7 +221,8 @@ def _per_step(v: Any) -> Any:
 def check_plan(req: Any, settings: Settings) -> FieldContext:
     """The limits of a plan request (the endpoint's and the figure's): its field context."""
     ctx = check_manipulator(req.manipulator, settings, PLAN_ALIASES)
-    check_trajectory_steps(settings, targets=req.targets, loads=_per_step(req.loads), end_angles=req.end_angles)
+    check_trajectory_steps(settings, targets=req.targets, loads=_per_step(req.loads), end_angles=req.end_angles,
+                           times=req.times)
     return ctx
 
 

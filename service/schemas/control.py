@@ -26,6 +26,7 @@ from tensegrity_opt.analyses.paths.simulation import Simulation, SimulationEvent
 from ..config import HARD_MAX_SEGMENTS, HARD_MAX_TRAJECTORY_STEPS
 from .common import (
     _STRICT,
+    MARGIN_DOC,
     MAX_ANGLE,
     MAX_STIFFNESS,
     PAPER_CHAIN,
@@ -54,6 +55,8 @@ Vec2 = Annotated[list[ForceValue], Field(min_length=2, max_length=2)]
 Position = Annotated[list[Deflection], Field(min_length=2, max_length=2)]
 PositiveLength = Annotated[float, Field(gt=0.0, le=1.0e6, allow_inf_nan=False)]
 Weight = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
+
+Seconds = Annotated[float, Field(gt=0.0, le=1.0e9, allow_inf_nan=False)]
 
 _TIME = ("Computed within the server's time limit: when it runs out, the steps done so far are answered (200, "
          "`status: \"time_limit\"`, `success: false`).")
@@ -107,12 +110,23 @@ class _PlanFields(BaseModel):
                                                 "as targets; default free")
     bounds: RestLengthBoundsIn | None = Field(None, description="actuator bounds on the rest lengths; default "
                                                                 "(0.1 b_min, 4 b_max)")
-    rate_limit: _per_spring(PositiveLength, "largest change of a rest length per step (length units, > 0)") | None = \
-        Field(None, description="largest change of each rest length per step (length units): a number or 2n "
-                                "numbers; default none")
+    rate_limit: _per_spring(PositiveLength, "largest speed of a rest length (length units per second, > 0)") | None = \
+        Field(None, description="largest speed of each rest length (length units per second): a number or 2n "
+                                "numbers; step k changes each rest length by at most rate_limit * (t_k - t_{k-1}). "
+                                "Needs `times` or `dt`; default none")
+    times: list[Seconds] | None = Field(
+        None, min_length=1, max_length=MAX_STEPS,
+        description="the steps' instants (seconds), as many as targets, strictly increasing from a first one > 0: "
+                    "the start (`rest_lengths0`, `start`) is the state at time 0; default none (or `dt`)")
+    dt: Seconds | None = Field(None, description="a fixed time between steps (seconds, > 0) instead of `times`: "
+                                                 "t_k = (k + 1) dt")
+    rest_lengths0: list[Annotated[list[PositiveLength], Field(min_length=2, max_length=2)]] | None = Field(
+        None, min_length=1, max_length=MAX_DESIGN_SEGMENTS,
+        description="the arm's current rest lengths [L1_0, L2_0] per segment (n pairs, length units, inside `bounds`): "
+                    "the start is an equilibrium with them and the first step's change is measured from them; "
+                    "default the manipulator's own")
     margin: Annotated[float, Field(ge=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
-        1e-3, description="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the "
-                          "joint angles (torque / rad)")
+        1e-3, description=MARGIN_DOC)
     objective: Literal[OBJECTIVES] = Field(
         "change", description="change: least change from the previous step (compiled Newton, IPOPT where a bound "
                               "is active); margin: largest margin; energy: least spring energy (IPOPT)")
@@ -120,9 +134,9 @@ class _PlanFields(BaseModel):
         None, min_length=1, max_length=MAX_DESIGN_SEGMENTS,
         description="weights [w1, w2] of each segment's rest-length changes in the least-change objective "
                     "(n pairs, > 0); default 1")
-    start: StartQ | None = Field(None, description='{"q": [...]}: the configuration with the chain\'s rest lengths '
-                                                   "under the first load; null: the equilibrium under it reached from "
-                                                   "the least-energy rest configuration")
+    start: StartQ | None = Field(None, description='{"q": [...]}: the configuration with the start\'s rest lengths '
+                                                   "(`rest_lengths0`) under the first load; null: the equilibrium "
+                                                   "under it reached from the least-energy rest configuration")
     verify: bool = Field(True, description="verify every step by the forward quasi-static solve from the previous "
                                            "step's configuration (`verified`)")
 
@@ -170,6 +184,8 @@ class PlanOut(outcome_model(to.PreloadPlan)):
                                              "(with `verify: false` no solve runs: false everywhere)")
     method: list[Literal["newton", "ipopt", "none"]] = Field(description="how each step was solved")
     targets: list[list[float]] = Field(description="the targets of the steps done")
+    times: list[float | None] = Field(description="the instants of the steps done (seconds; the start at 0); null "
+                                                  "without a time base")
     margin_required: float = Field(description="the stability margin asked for (torque / rad)")
     objective: Literal["change", "margin", "energy"] = Field(description="how the redundancy was resolved")
     steps: list[PlanStepOut] = Field(description="every step in full (why an infeasible step failed: `message`)")
@@ -386,8 +402,7 @@ class StiffnessDesignRequest(BaseModel):
     eig_bounds: StiffnessBound | None = Field(None, description="bounds [lo, hi] on both eigenvalues of K")
     load: Vec2 = Field([0.0, 0.0], description="the dead tip load [fx, fy] (force units)")
     end_angle: Angle | None = Field(None, description="the last link's absolute angle (rad), optional")
-    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
-        1e-3, description="required smallest eigenvalue of the joint-space Hessian (torque / rad)")
+    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(1e-3, description=MARGIN_DOC)
     bounds: RestLengthBoundsIn | None = Field(None, description="bounds on the rest lengths; default "
                                                                 "(0.1 b_min, 4 b_max)")
     max_starts: Annotated[int, Field(ge=1, le=16), BeforeValidator(integral)] = Field(

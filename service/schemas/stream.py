@@ -18,7 +18,17 @@ from pydantic import BaseModel, ConfigDict, Field
 from tensegrity_opt.analyses.design.follower import SNAP_DISTANCE
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import _STRICT, MAX_ANGLE, MAX_STIFFNESS, Angle, Deflection, ForceValue, Length, ManipulatorIn
+from .common import (
+    _STRICT,
+    MARGIN_DOC,
+    MAX_ANGLE,
+    MAX_STIFFNESS,
+    Angle,
+    Deflection,
+    ForceValue,
+    Length,
+    ManipulatorIn,
+)
 from .control import RestLengthBoundsIn as StreamBounds
 from .design import DesignManipulatorIn
 
@@ -29,6 +39,7 @@ Pair = Annotated[list[ForceValue], Field(min_length=2, max_length=2)]
 Point = Annotated[list[Deflection], Field(min_length=2, max_length=2)]
 RestPair = Annotated[list[Length], Field(min_length=2, max_length=2)]
 Positive = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
+Seconds = Annotated[float, Field(gt=0.0, le=1.0e9, allow_inf_nan=False)]
 
 
 # ---------------------------------------------------------------------------- dispatch
@@ -94,10 +105,18 @@ class InverseOpen(_Open):
                     "default: reached from the least-energy rest configuration")
     bounds: StreamBounds | None = Field(
         None, description="actuator bounds [lo, hi] (or {lo, hi}) on every rest length; default [0.1 b_min, 4 b_max]")
-    rate_limit: Positive | None = Field(None, description="largest change of each rest length per step")
-    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(
-        1e-3, description="required stability margin: smallest eigenvalue of the Hessian of E - F . tip "
-                          "(torque / rad)")
+    rest_lengths0: list[RestPair] | None = Field(
+        None, max_length=HARD_MAX_SEGMENTS,
+        description="the arm's current rest lengths [L1_0, L2_0] per segment (n pairs, inside `bounds`): the start "
+                    "is an equilibrium with them and the first step's change is measured from them; default the "
+                    "manipulator's own")
+    rate_limit: Positive | None = Field(
+        None, description="largest speed of each rest length (length units per second): a step dt seconds after the "
+                          "last changes each by at most rate_limit * dt; needs a time base (`dt` here, or each "
+                          "step's `time` or `dt`)")
+    dt: Seconds | None = Field(None, description="the time between steps (seconds, > 0) for a step that gives "
+                                                 "neither `time` nor `dt`")
+    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(1e-3, description=MARGIN_DOC)
     objective: Literal["change", "margin", "energy"] = Field(
         "change", description="`change`: least change from the last step (Newton, IPOPT where a bound is "
                               "active); `margin`: largest margin; `energy`: least spring energy (IPOPT)")
@@ -138,6 +157,10 @@ class InverseStep(BaseModel):
     target: Point = Field(description="tip position [x, y] (length units)")
     end_angle: Angle | None = Field(None, description="absolute angle of the last link (rad), optional")
     load: Pair | None = Field(None, description="dead tip load [fx, fy]; default the open's")
+    time: Seconds | None = Field(
+        None, description="the step's instant (seconds; the start, at the open, is time 0; after the last step's)")
+    dt: Seconds | None = Field(None, description="the time since the last step (seconds, > 0); not with `time`; "
+                                                 "default the open's `dt`")
 
 
 #: The step model of each mode.

@@ -98,10 +98,11 @@ def find_plan(req: Any, deadline: float) -> PreloadPlan:
     m = build_manipulator(req.manipulator)
     end_angles = None if req.end_angles is None else [np.nan if a is None else a for a in req.end_angles]
     return plan_preloads(m, np.asarray(req.targets, dtype=float), loads=req.loads, end_angles=end_angles,
-                                   bounds=_bounds(req.bounds), rate_limit=number_or_array(req.rate_limit),
-                                   margin=req.margin, objective=req.objective, weights=req.weights,
-                                   start=optional_array(None if req.start is None else req.start.q),
-                                   verify=req.verify, timeout=seconds_left(deadline))
+                         times=optional_array(req.times), dt=req.dt, rest_lengths0=optional_array(req.rest_lengths0),
+                         bounds=_bounds(req.bounds), rate_limit=number_or_array(req.rate_limit),
+                         margin=req.margin, objective=req.objective, weights=req.weights,
+                         start=optional_array(None if req.start is None else req.start.q),
+                         verify=req.verify, timeout=seconds_left(deadline))
 
 
 def find_simulation(req: Any, deadline: float) -> to.Simulation:

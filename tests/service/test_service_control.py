@@ -49,9 +49,9 @@ def test_plan_is_the_library_plan(client):
     s.PlanOut.model_validate(got)
     assert got["status"] == "complete" and all(got["verified"]) and np.allclose(got["tip"], ex["targets"], atol=1e-9)
 
-    body = {"manipulator": PAPER, "targets": ARC, "rate_limit": 0.05, "margin": 0.3}
+    body = {"manipulator": PAPER, "targets": ARC, "rate_limit": 0.05, "dt": 1.0, "margin": 0.3}
     got = post_ok(client, "/v1/control/plan", body)
-    want = to.plan_preloads(M, ARC, rate_limit=0.05, margin=0.3)
+    want = to.plan_preloads(M, ARC, rate_limit=0.05, dt=1.0, margin=0.3)
     assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
     assert got["status"] == "infeasible_steps" and got["feasible"] == [True, True, False, True, True]
     assert got["method"][2] == "none" and got["margin"][2] is None
@@ -146,7 +146,7 @@ def test_domain_refusals_name_the_field(client):
         ("/v1/control/plan", {**plan, "bounds": {"lo": 2.0, "hi": 1.0}}, "invalid_parameter", "bounds"),
         ("/v1/control/plan", {**plan, "bounds": {"lo": [0.5] * 3, "hi": 2.0}}, "invalid_parameter", "bounds"),
         ("/v1/control/plan", {**plan, "weights": [[1.0, 1.0]]}, "invalid_parameter", "weights"),
-        ("/v1/control/plan", {**plan, "rate_limit": [0.1] * 3}, "invalid_parameter", "rate_limit"),
+        ("/v1/control/plan", {**plan, "rate_limit": [0.1] * 3, "dt": 1.0}, "invalid_parameter", "rate_limit"),
         ("/v1/control/plan", {**plan, "end_angles": [0.0, 0.0]}, "invalid_parameter", "end_angles"),
         ("/v1/control/plan", {**plan, "loads": [[0.0, 0.0]] * 2}, "invalid_parameter", "loads"),
         ("/v1/control/plan", {**plan, "manipulator": {"n": 1}}, "invalid_parameter", "manipulator.n"),
@@ -265,7 +265,8 @@ def test_a_time_limited_plan_answers_partial(monkeypatch):
 # ---------------------------------------------------------------------------- figures, documentation
 @pytest.mark.slow
 @pytest.mark.parametrize("path,body", [
-    ("/v1/plots/plan", {"manipulator": PAPER, "targets": ARC, "rate_limit": 0.05, "margin": 0.3, "dpi": 40}),
+    ("/v1/plots/plan", {"manipulator": PAPER, "targets": ARC, "rate_limit": 0.05, "dt": 1.0, "margin": 0.3,
+                        "dpi": 40}),
     ("/v1/plots/simulation", {**s.SIMULATION_REQUEST_EXAMPLE, "dpi": 40}),
 ])
 def test_control_figures_answer_png_and_svg(client, path, body):

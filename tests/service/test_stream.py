@@ -194,7 +194,7 @@ def test_inverse_mode_is_the_preload_controller(server):
     _, base = server
     F = (-0.02, 0.01)
     m = to.Manipulator.uniform(4)
-    ctl = PreloadController(m, load=F, rate_limit=0.1)
+    ctl = PreloadController(m, load=F, rate_limit=0.1, dt=1.0)
     tip0 = m.tip(ctl.q)
     steps = [{"target": (tip0 + np.array([-0.15, 0.3]) * math.sin(math.pi * k / 11)).tolist()} for k in range(12)]
     steps[5]["end_angle"] = 0.55                        # beyond the rate limit's Newton step: IPOPT
@@ -208,7 +208,7 @@ def test_inverse_mode_is_the_preload_controller(server):
     async def go():
         async with connect(base) as ws:
             opened = await ask(ws, {"type": "open", "manipulator": PAPER, "mode": "inverse", "load": list(F),
-                                    "rate_limit": 0.1})
+                                    "rate_limit": 0.1, "dt": 1.0})
             assert opened["type"] == "opened" and opened["mode"] == "inverse"
             assert_same(opened, opened_want)
             return [await ask(ws, {"type": "step", **st}) for st in steps]

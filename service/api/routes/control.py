@@ -31,7 +31,9 @@ _M = ex.PAPER_CHAIN
     "/plan", operation_id="control_plan", response_model=s.PlanOut,
     summary="Rest lengths for a trajectory of tip positions, on one stable branch",
     description="Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with "
-                "`margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step "
+                "`margin` under the dead tip load, inside `bounds` and within `rate_limit` (length per second) times "
+                "the time since the previous step (`times`, or a fixed `dt`; the start, with the arm's current "
+                "rest lengths `rest_lengths0`, is the state at time 0) "
                 "(`tensegrity_opt.plan_preloads`): `objective: change` is the least change "
                 "from the previous step (a compiled Newton step on its KKT system, warm-started; IPOPT where a bound "
                 "is active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach "
@@ -45,9 +47,10 @@ async def control_plan(
     req: Annotated[s.PlanRequest, Body(openapi_examples={
         "arc": {"summary": "the paper's chain, the tip along a short arc under a small load",
                 "value": s.PLAN_REQUEST_EXAMPLE},
-        "rate_limited": {"summary": "a line of targets with a rate limit, a margin and bounds", "value": {
+        "rate_limited": {"summary": "a line of targets every 0.5 s, a rate limit (length / s), a margin and bounds",
+                         "value": {
             "manipulator": _M, "targets": [[7.9, 0.2], [7.85, 0.4], [7.8, 0.6], [7.7, 0.8]], "rate_limit": 0.1,
-            "bounds": {"lo": 0.5, "hi": 2.0}, "margin": 0.05}},
+            "dt": 0.5, "bounds": {"lo": 0.5, "hi": 2.0}, "margin": 0.05}},
         "end_angles": {"summary": "the last link kept level (end angle 0) along a vertical line", "value": {
             "manipulator": _M, "targets": [[7.8, 0.3], [7.8, 0.6], [7.8, 0.9]], "end_angles": [0.0, 0.0, None]}}})],
     settings: SettingsDep,

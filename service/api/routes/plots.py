@@ -352,7 +352,7 @@ FIGURES: tuple[Figure, ...] = (
             "rate_limited": {"summary": "a bending arc, its third target out of reach of the rate limit, as SVG",
                              "value": {"manipulator": _M, "targets": [[7.997, 0.2], [7.986, 0.4], [7.369, 1.399],
                                                                       [7.945, 0.797], [7.914, 0.994]],
-                                       "rate_limit": 0.05, "margin": 0.3, "format": "svg"}}}),
+                                       "rate_limit": 0.05, "dt": 1.0, "margin": 0.3, "format": "svg"}}}),
     Figure(
         "simulation", ps.PlotSimulationRequest, task=tasks.plot_simulation_task, limits=check_simulation,
         continuation=True, placement=Placement.HEAVY,

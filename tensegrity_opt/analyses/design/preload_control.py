@@ -4,8 +4,23 @@ The control inputs of the arm are the rest lengths ``(L1_0, L2_0)`` of its ``2 n
 2 numbers (``x, y``) or 3 (with the last link's absolute angle): the inputs are redundant. A step asks
 for rest lengths putting the tip at the target, stable, under a dead tip load, close to the previous
 step's (no snap between steps: the configuration moves continuously on one branch), inside the actuator
-bounds and a per-step rate limit, with a stability margin (the smallest eigenvalue of the Hessian of
-``E - F . tip`` in the joint angles, torque per radian).
+bounds and a rate limit, with a stability margin (the smallest eigenvalue of the Hessian of ``E - F . tip`` in
+the joint angles, torque per radian).
+
+**Time and the start.** The start is the state at time ``0``: the arm's current rest lengths
+(``rest_lengths0``, default the Manipulator's own) and the equilibrium with them under the load. A rate limit is
+a length per second: step ``k`` at time ``t_k`` may change each rest length by at most
+``rate_limit * (t_k - t_{k-1})`` from the previous step's (``t_{-1} = 0``: the first step's change is measured
+from ``rest_lengths0``). The times are given as ``times`` (``0 < t_0 < t_1 < ...``, seconds) or a fixed step
+``dt`` (``t_k = (k + 1) dt``); a rate limit without either is refused (the field ``dt``).
+
+**The margin** is absolute, in the chain's torque per radian (force x length / rad), as every stability margin
+the library accepts (:func:`~tensegrity_opt.analyses.design.preloads.preloads_for_pose`,
+:func:`~tensegrity_opt.analyses.design.stiffness_shaping.preloads_for_stiffness`): a requirement on a physical
+stiffness (a torque disturbance ``dtau`` at the joints moves them by at most ``|dtau| / margin`` rad) that the
+results report in the same unit. The library's tolerances, judgements of "numerically zero", are relative to the
+chain's torque scale ``max k c^2`` (``Manipulator.torque_scale``) instead; to ask for a relative margin pass
+``r * m.torque_scale``.
 
 :class:`PreloadController` answers one step at a time, warm-started from the last:
 
@@ -54,7 +69,7 @@ from ..paths.control import checked_vector
 from .follower import loaded_rest
 from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose
 
-__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads"]
+__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "step_times"]
 
 #: KKT residual (max-norm, force and length units) below which the Newton step has converged.
 NEWTON_TOL = 1e-10
@@ -62,6 +77,43 @@ NEWTON_TOL = 1e-10
 Q_WEIGHT = 1e-8
 #: The solver detail of a Newton step, per iteration count (immutable, so shared).
 _NEWTON: dict[int, SolverInfo] = {}
+
+
+def _seconds(v, field: str) -> float:
+    """A duration in seconds: finite and > 0."""
+    try:
+        h = float(v)
+    except (TypeError, ValueError):
+        h = math.nan
+    if not (math.isfinite(h) and h > 0):
+        raise InvalidParameterError(f"{field} must be a finite number of seconds > 0, got {v!r}", field=field)
+    return h
+
+
+def step_times(K: int, times=None, dt: float | None = None, rate_limit=None) -> np.ndarray:
+    """The instants ``t_0 .. t_{K-1}`` (s) of ``K`` steps after the start at ``t = 0``: ``times`` (strictly
+    increasing, ``t_0 > 0``) or ``(k + 1) dt``; NaN without either (then no ``rate_limit`` may be given: a rate is
+    per second)."""
+    if times is not None and dt is not None:
+        raise InvalidParameterError("give the steps' times or a fixed step dt, not both", field="times")
+    if times is not None:
+        try:
+            t = np.asarray(times, dtype=float)
+        except (TypeError, ValueError):
+            t = np.empty((0, 0))
+        if t.shape != (K,) or not np.all(np.isfinite(t)):
+            raise InvalidParameterError(f"times must be {K} finite instants (seconds), one per target",
+                                        field="times")
+        if t[0] <= 0 or np.any(np.diff(t) <= 0):
+            raise InvalidParameterError("times must increase strictly from a first instant > 0 (the start is the "
+                                        "state at time 0)", field="times")
+        return t.copy()
+    if dt is not None:
+        return _seconds(dt, "dt") * np.arange(1, K + 1)
+    if rate_limit is not None:
+        raise InvalidParameterError("rate_limit is a length per second: give the steps' times or a fixed step dt "
+                                    "(seconds)", field="dt")
+    return np.full(K, math.nan)
 
 
 @dataclass(frozen=True)
@@ -157,27 +209,38 @@ class PreloadController:
     Parameters
     ----------
     m : Manipulator
-        Geometry and stiffness (kept); its rest lengths are the start's. ``2 <= n <= KERNEL_MAX`` for the
-        compiled Newton step (longer chains: CasADi's virtual machine, slower).
+        Geometry and stiffness (kept); its rest lengths are the start's unless ``rest_lengths0`` is given.
+        ``2 <= n <= KERNEL_MAX`` for the compiled Newton step (longer chains: CasADi's virtual machine, slower).
     start : Equilibrium or array_like (n,), optional
-        The configuration with ``m``'s rest lengths under ``load``; default the equilibrium under ``load``
-        reached from the least-energy rest configuration.
+        The configuration with the start's rest lengths (``rest_lengths0``) under ``load``; default the
+        equilibrium under ``load`` reached from the least-energy rest configuration of the chain with those rest
+        lengths.
     load : (fx, fy)
         The dead tip load (each step may give its own).
+    rest_lengths0 : array_like (n, 2), optional
+        The arm's current rest lengths ``L1_0, L2_0`` per segment (length units): the first step's change is
+        measured from them and the start is an equilibrium with them. Default ``m``'s own. Finite, inside
+        ``bounds``.
     bounds : (lo, hi), optional
         Actuator bounds on every rest length (numbers, or ``2 n`` values ``L1_0`` of every segment then
         ``L2_0``); default ``(0.1 b_min, 4 b_max)``.
     rate_limit : float or array_like, optional
-        Largest change of each rest length per step (length units).
+        Largest speed of each rest length (length units per second; a number or ``2 n`` values): a step ``dt``
+        seconds after the last changes each by at most ``rate_limit * dt``. Needs a time base: ``dt`` here or
+        per :meth:`step`.
+    dt : float, optional
+        The time between steps (s, > 0), used by every :meth:`step` that gives none.
     margin : float
-        Required stability margin (>= 0).
+        Required stability margin (>= 0): the smallest eigenvalue of the Hessian of ``E - F . tip`` in the joint
+        angles, absolute, torque per radian (module docstring).
     objective : {"change", "margin", "energy"}
     weights : array_like (n, 2), optional
         Weights of each rest length's change in the least-change objective (default 1).
     """
 
-    def __init__(self, m: Manipulator, start=None, *, load=(0.0, 0.0), bounds=None, rate_limit=None,
-                 margin: float = 1e-3, objective: str = "change", weights=None) -> None:
+    def __init__(self, m: Manipulator, start=None, *, rest_lengths0=None, load=(0.0, 0.0), bounds=None,
+                 rate_limit=None, dt: float | None = None, margin: float = 1e-3, objective: str = "change",
+                 weights=None) -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
         n = m.n
@@ -198,13 +261,14 @@ class PreloadController:
         self.rate = None if rate_limit is None else self._per_spring(rate_limit, "rate_limit")
         if self.rate is not None and not np.all(self.rate > 0):
             raise InvalidParameterError("rate_limit must be > 0", field="rate_limit")
+        self.dt = None if dt is None else _seconds(dt, "dt")
         self.w = np.ones(2 * n) if weights is None else self._per_spring_pairs(weights, "weights")
         if not np.all(self.w > 0):
             raise InvalidParameterError("weights must be > 0", field="weights")
         self.geo = step_layouts(n, False).geometry.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2)
         self.limits = m.joint_limits
         self.scale = float(np.max(m.b))
-        self.ell = np.column_stack([m.L1_0, m.L2_0]).ravel()        # segment-major: l[2i], l[2i+1]
+        self.ell = self._rest_lengths0(rest_lengths0)               # segment-major: l[2i], l[2i+1]
         self.q = self._start(start)
         self.mu: dict[bool, np.ndarray] = {}
         self.last: PreloadStep | None = None
@@ -225,19 +289,39 @@ class PreloadController:
             raise InvalidParameterError(f"{name} must be {self.n} pairs of finite numbers", field=name)
         return a.ravel()
 
+    def _rest_lengths0(self, r0) -> np.ndarray:
+        """The start's rest lengths, segment-major 2n: ``m``'s own, or ``rest_lengths0`` checked."""
+        if r0 is None:
+            return np.column_stack([self.m.L1_0, self.m.L2_0]).ravel()
+        try:
+            a = np.asarray(r0, dtype=float)
+        except (TypeError, ValueError):
+            a = np.empty(0)
+        if a.shape != (self.n, 2) or not np.all(np.isfinite(a)):
+            raise InvalidParameterError(f"rest_lengths0 must be {self.n} pairs (L1_0, L2_0) of finite numbers, got "
+                                        f"shape {a.shape}", field="rest_lengths0")
+        ell = a.ravel()
+        out = np.flatnonzero((ell < self.lo) | (ell > self.hi))
+        if out.size:
+            i = int(out[0])
+            raise InvalidParameterError(
+                f"rest_lengths0[{i // 2}][{i % 2}] = {ell[i]:g} is outside the actuator bounds "
+                f"[{self.lo[i]:g}, {self.hi[i]:g}]", field="rest_lengths0")
+        return ell.copy()
+
     def _start(self, start) -> np.ndarray:
         if isinstance(start, Equilibrium):
             return start.q.copy()
         if start is not None:
             try:
-                q = check_q0(self.m, start)
+                q = check_q0(self.manipulator(), start)
             except InvalidParameterError as exc:
                 raise InvalidParameterError(exc.message.replace("q0", "start"), field="start") from None
             if q is None:
                 raise InvalidParameterError("start must be an Equilibrium or n joint angles", field="start")
             return q
         try:
-            eq = loaded_rest(self.m, self.load)
+            eq = loaded_rest(self.manipulator(), self.load)
         except NoEquilibriumError as exc:
             raise NoEquilibriumError(f"no equilibrium under the load from the rest configuration: {exc.message}; "
                                      "give a start", field="load") from None
@@ -253,17 +337,23 @@ class PreloadController:
                            for i, s in enumerate(self.m.segments))
 
     # ------------------------------------------------------------------ one step
-    def step(self, target, load=None, end_angle: float | None = None) -> PreloadStep:
+    def step(self, target, load=None, end_angle: float | None = None, *, dt: float | None = None) -> PreloadStep:
         """Rest lengths for the tip at ``target = (x, y)`` (and the last link at ``end_angle``, rad) under
-        ``load`` (default the controller's), from the current state; the state moves there when the step
-        is feasible."""
+        ``load`` (default the controller's), from the current state, ``dt`` seconds after the last step (default
+        the controller's ``dt``; needed with a rate limit: each rest length moves by at most ``rate_limit * dt``);
+        the state moves there when the step is feasible."""
         target = checked_vector(target, 2, "target")
         F = self.load if load is None else checked_vector(load, 2, "load")
         if end_angle is not None and not math.isfinite(float(end_angle)):
             raise InvalidParameterError("end_angle must be finite", field="end_angle")
+        h = self.dt if dt is None else _seconds(dt, "dt")
         lo, hi = self.lo, self.hi
         if self.rate is not None:
-            lo, hi = np.maximum(lo, self.ell - self.rate), np.minimum(hi, self.ell + self.rate)
+            if h is None:
+                raise InvalidParameterError(
+                    "rate_limit is a length per second: give the time since the last step, dt (seconds), to the "
+                    "step or the controller", field="dt")
+            lo, hi = np.maximum(lo, self.ell - self.rate * h), np.minimum(hi, self.ell + self.rate * h)
         res = None
         if self.objective == "change":
             res = self._newton(target, F, end_angle, lo, hi)
@@ -376,6 +466,8 @@ class PreloadPlan(Outcome):
         The targets of the steps done.
     margin_required : float
     objective : str
+    times : ndarray (K,)
+        The steps' instants (s; the start at 0), NaN without a time base (``null`` in :meth:`to_dict`).
     message : str
         The status in a sentence.
     """
@@ -402,8 +494,11 @@ class PreloadPlan(Outcome):
     targets: np.ndarray
     margin_required: float = 0.0
     objective: str = "change"
+    times: np.ndarray | None = None
 
     def __post_init__(self) -> None:
+        if self.times is None:
+            object.__setattr__(self, "times", np.full(len(self.steps), math.nan))
         freeze(self, copy=False)
 
     @property
@@ -418,21 +513,23 @@ class PreloadPlan(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``seconds``, the per-step arrays (``rest_lengths``,
         ``q``, ``tip``, ``end_angle``, ``margin`` (null: infeasible), ``feasible``, ``verified``, ``method``),
-        ``targets``, ``margin_required``, ``objective`` and ``steps`` (:meth:`PreloadStep.to_dict`)."""
+        ``targets``, ``times`` (null: no time base), ``margin_required``, ``objective`` and ``steps``
+        (:meth:`PreloadStep.to_dict`)."""
         return {**self.outcome(), "seconds": number(self.seconds),
                 "rest_lengths": [[numbers(r) for r in s] for s in self.rest_lengths],
                 "q": [numbers(r) for r in self.q], "tip": [numbers(r) for r in self.tip],
                 "end_angle": numbers(self.end_angle), "margin": [nullable(v) for v in self.margin],
                 "feasible": [bool(v) for v in self.feasible], "verified": [bool(v) for v in self.verified],
                 "method": list(self.method), "targets": [numbers(r) for r in self.targets],
-                "margin_required": number(self.margin_required), "objective": self.objective,
+                "times": [nullable(t) for t in self.times], "margin_required": number(self.margin_required),
+                "objective": self.objective,
                 "steps": [s.to_dict() for s in self.steps]}
 
 
-def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, bounds=None, rate_limit=None,
-                            margin: float = 1e-3, objective: str = "change", weights=None, start=None,
-                            verify: bool = True, timeout: float | None = None,
-                            progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
+def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times=None, dt: float | None = None,
+                  rest_lengths0=None, bounds=None, rate_limit=None, margin: float = 1e-3, objective: str = "change",
+                  weights=None, start=None, verify: bool = True, timeout: float | None = None,
+                  progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     """Rest lengths for a trajectory of tip poses, on one stable branch (module docstring).
 
     Parameters
@@ -444,7 +541,19 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, bound
         Dead tip loads (default none).
     end_angles : array_like (K,), optional
         The last link's absolute angle per step (rad); NaN leaves a step's angle free.
-    bounds, rate_limit, margin, objective, weights, start
+    times : array_like (K,), optional
+        The steps' instants (s): the start is the state at time 0, ``0 < times[0] < times[1] < ...``; step ``k``
+        changes each rest length by at most ``rate_limit * (times[k] - times[k-1])`` (``times[-1] = 0``).
+    dt : float, optional
+        A fixed step (s) instead of ``times``: ``times[k] = (k + 1) dt``.
+    rest_lengths0 : array_like (n, 2), optional
+        The arm's rest lengths at time 0 (default ``m``'s own): the first step's change is measured from them and
+        the start is an equilibrium with them.
+    rate_limit : float or array_like, optional
+        Largest speed of each rest length (length units per second); needs ``times`` or ``dt``.
+    margin : float
+        Required stability margin: absolute, torque per radian (module docstring).
+    bounds, objective, weights, start
         As :class:`PreloadController`.
     verify : bool
         Verify every step by the forward quasi-static solve (default).
@@ -473,8 +582,10 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, bound
         A = np.asarray(end_angles, dtype=float).ravel()
         if A.size != K or np.any(np.isinf(A)):
             raise InvalidParameterError(f"end_angles must be {K} numbers (NaN: free)", field="end_angles")
-    ctl = PreloadController(m, start, load=Ls[0], bounds=bounds, rate_limit=rate_limit, margin=margin,
-                            objective=objective, weights=weights)
+    t_steps = step_times(K, times, dt, rate_limit)
+    h_steps = np.diff(t_steps, prepend=0.0)
+    ctl = PreloadController(m, start, rest_lengths0=rest_lengths0, load=Ls[0], bounds=bounds, rate_limit=rate_limit,
+                            margin=margin, objective=objective, weights=weights)
     t0 = time.perf_counter()
     steps: list[PreloadStep] = []
     verified: list[bool] = []
@@ -486,7 +597,8 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, bound
                 break
             q_prev = ctl.q.copy()
             try:
-                st = ctl.step(T[k], Ls[k], None if A is None or math.isnan(A[k]) else float(A[k]))
+                st = ctl.step(T[k], Ls[k], None if A is None or math.isnan(A[k]) else float(A[k]),
+                              dt=None if math.isnan(h_steps[k]) else float(h_steps[k]))
             except TimeLimitError:
                 status = "time_limit"
                 break
@@ -507,7 +619,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, bound
                        margin=arr(lambda s: s.margin, ()), feasible=np.array([s.feasible for s in steps], dtype=bool),
                        verified=np.array(verified, dtype=bool), method=tuple(s.method for s in steps), status=status,
                        steps=tuple(steps), seconds=time.perf_counter() - t0, targets=T[:P].copy(),
-                       margin_required=float(margin), objective=objective)
+                       margin_required=float(margin), objective=objective, times=t_steps[:P].copy())
 
 
 def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:

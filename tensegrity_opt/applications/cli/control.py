@@ -7,15 +7,17 @@ plan and simulation options (:func:`add_plan_options`, :func:`add_simulate_optio
 ``plot plan|simulation`` (:mod:`.plot`).
 
 Files: ``--targets`` (plan) is JSON, a list ``[[x, y], ...]`` or an object ``{"targets": [...], "loads": [...],
-"end_angles": [...]}`` (the body of ``/v1/control/plan`` minus the chain), or CSV with the columns ``x, y`` (then
-optionally ``fx, fy`` and ``end_angle``, ``nan`` for free; a header row is skipped). ``--preloads`` (simulate) is
+"end_angles": [...], "times": [...]}`` (the per-step series of ``/v1/control/plan``), or CSV with the columns
+``x, y`` (then optionally ``fx, fy`` and ``end_angle``, ``nan`` for free), or CSV whose header row names its
+columns among ``t`` (or ``time``: the step's instant, seconds), ``x``, ``y``, ``fx``, ``fy``, ``end_angle`` in any
+order (another header row is skipped). ``--preloads`` (simulate) is
 JSON ``(K, n, 2)`` (or ``{"preloads": ...}``) or CSV, one row of ``2n`` rest lengths per sample (``L1_0, L2_0`` of
 segment 1, then of segment 2, ...); ``--targets`` (simulate, held tip) JSON ``(K, 2)`` or CSV ``dx, dy``.
 
 Examples::
 
     tensegrity-opt plan --line 7.9 0.2 7.3 1.4 13 --margin 0.05
-    tensegrity-opt plan --targets path.csv --load 0 -0.02 --rate-limit 0.05 --json
+    tensegrity-opt plan --targets path.csv --load 0 -0.02 --rate-limit 0.05 --dt 0.5 --json
     tensegrity-opt simulate --n 3 --a 0.5 --load-cycle 0.3 --steps 121
     tensegrity-opt simulate --n 2 --preloads preloads.json
     tensegrity-opt simulate --tip held --targets targets.csv
@@ -58,7 +60,7 @@ from .common import (
 from .progress import Progress
 
 __all__ = ["add_control_parsers", "add_plan_options", "add_simulate_options", "plan_from_args",
-           "simulation_from_args", "load_cycle", "read_rows"]
+           "simulation_from_args", "load_cycle", "read_rows", "read_table", "PLAN_COLUMNS"]
 
 
 def _angle_or_nan(text: str) -> float:
@@ -75,14 +77,21 @@ def _angle_or_nan(text: str) -> float:
 # ---------------------------------------------------------------------------- files
 def read_rows(path: str, field: str) -> Any:
     """The numbers of a JSON file (any nesting, or an object) or the rows of a CSV file (a header row skipped)."""
+    return read_table(path, field)[1]
+
+
+def read_table(path: str, field: str) -> tuple[list[str] | None, Any]:
+    """``(header, numbers)``: a JSON file's numbers (any nesting, or an object; no header), or a CSV file's rows and
+    its header row (the names lower-cased; None without one)."""
     p = Path(path)
     text = p.read_text(encoding="utf-8")
     if p.suffix.lower() == ".json" or text.lstrip()[:1] in ("[", "{"):
         try:
-            return json.loads(text)
+            return None, json.loads(text)
         except json.JSONDecodeError as exc:
             raise InvalidParameterError(f"--{field}: {path} is not valid JSON ({exc})", field=field) from None
     rows = []
+    header = None
     for i, row in enumerate(csv.reader(text.splitlines())):
         cells = [c.strip() for c in row if c.strip()]
         if not cells or cells[0].startswith("#"):
@@ -91,6 +100,7 @@ def read_rows(path: str, field: str) -> Any:
             rows.append([float(c) for c in cells])
         except ValueError:
             if i == 0 and not rows:
+                header = [c.lower() for c in cells]
                 continue                        # a header
             raise InvalidParameterError(f"--{field}: {path} line {i + 1} is not a row of numbers: {row!r}",
                                         field=field) from None
@@ -98,7 +108,7 @@ def read_rows(path: str, field: str) -> Any:
         raise InvalidParameterError(f"--{field}: {path} holds no rows of numbers", field=field)
     if len({len(r) for r in rows}) != 1:
         raise InvalidParameterError(f"--{field}: the rows of {path} differ in length", field=field)
-    return rows
+    return header, rows
 
 
 def _array(v: Any, field: str) -> np.ndarray:
@@ -108,10 +118,29 @@ def _array(v: Any, field: str) -> np.ndarray:
         raise InvalidParameterError(f"--{field}: expected arrays of numbers", field=field) from None
 
 
-def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any]:
-    """``(targets, loads, end_angles)`` from ``--targets FILE`` or ``--line``, ``--load`` and ``--end-angle``."""
+#: The names of a plan's CSV columns (a header row naming each column; any order).
+PLAN_COLUMNS = {"x": "x", "y": "y", "fx": "fx", "fy": "fy", "end_angle": "end_angle", "t": "time", "time": "time",
+                "times": "time"}
+
+
+def _named_columns(header: list[str], A: np.ndarray) -> dict[str, np.ndarray] | None:
+    """The columns of a CSV whose header names every column (:data:`PLAN_COLUMNS`) by name; None otherwise (the
+    header is only skipped)."""
+    names = [PLAN_COLUMNS.get(h) for h in header]
+    if len(header) != A.shape[1] or None in names or len(set(names)) != len(names):
+        return None
+    cols = dict(zip(names, A.T))
+    if "x" not in cols or "y" not in cols or ("fx" in cols) != ("fy" in cols):
+        raise InvalidParameterError(f"--targets: the columns {header} need x and y (and fx with fy)", field="targets")
+    return cols
+
+
+def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any, Any]:
+    """``(targets, loads, end_angles, times)`` from ``--targets FILE`` or ``--line``, ``--load``, ``--end-angle``
+    and ``--times``."""
     loads: Any = None
     angles: Any = None
+    times: Any = None
     if args.line is not None:
         x0, y0, x1, y1, num = args.line
         if num != int(num) or num < 1:
@@ -119,16 +148,23 @@ def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any]:
                                         field="line")
         T = np.column_stack([np.linspace(x0, x1, int(num)), np.linspace(y0, y1, int(num))])
     else:
-        data = read_rows(args.targets, "targets")
+        header, data = read_table(args.targets, "targets")
+        named = None
         if isinstance(data, dict):
-            unknown = set(data) - {"targets", "loads", "end_angles"}
+            unknown = set(data) - {"targets", "loads", "end_angles", "times"}
             if unknown or "targets" not in data:
                 raise InvalidParameterError(f"--targets: a JSON object holds 'targets' (and optionally 'loads', "
-                                            f"'end_angles'), got {sorted(data)}", field="targets")
+                                            f"'end_angles', 'times'), got {sorted(data)}", field="targets")
             T = _array(data["targets"], "targets")
             loads = data.get("loads")
             angles = data.get("end_angles")
             angles = None if angles is None else [math.nan if a is None else a for a in angles]
+            times = data.get("times")
+        elif header is not None and (named := _named_columns(header, _array(data, "targets"))) is not None:
+            T = np.column_stack([named["x"], named["y"]])
+            loads = np.column_stack([named["fx"], named["fy"]]) if "fx" in named else None
+            angles = named.get("end_angle")
+            times = named.get("time")
         else:
             A = _array(data, "targets")
             if A.ndim != 2 or A.shape[1] not in (2, 4, 5):
@@ -148,17 +184,31 @@ def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any]:
             raise InvalidParameterError("give the end angle by --end-angle or in the --targets file, not both",
                                         field="end_angle")
         angles = np.full(len(T), args.end_angle)
-    return T, loads, angles
+    if args.times is not None:
+        if times is not None:
+            raise InvalidParameterError("give the steps' times by --times or in the --targets file, not both",
+                                        field="times")
+        times = list(args.times)
+    return T, loads, angles, times
+
+
+def _rest_lengths0(values: list[float] | None) -> np.ndarray | None:
+    """``--rest-lengths0``: 2n numbers, ``L1_0, L2_0`` of segment 1, then of segment 2, ... as (n, 2)."""
+    if values is None:
+        return None
+    a = np.asarray(values, dtype=float)
+    return a.reshape(-1, 2) if a.size % 2 == 0 else a
 
 
 def plan_from_args(args: argparse.Namespace, m: Manipulator,
                    progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
-    T, loads, angles = _plan_inputs(args)
-    return plan_preloads(m, T, loads=loads, end_angles=angles,
-                                   bounds=None if args.bounds is None else tuple(args.bounds),
-                                   rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
-                                   start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
-                                   verify=not args.no_verify, timeout=args.timeout, progress=progress)
+    T, loads, angles, times = _plan_inputs(args)
+    return plan_preloads(m, T, loads=loads, end_angles=angles, times=times, dt=args.dt,
+                         rest_lengths0=_rest_lengths0(args.rest_lengths0),
+                         bounds=None if args.bounds is None else tuple(args.bounds),
+                         rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
+                         start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
+                         verify=not args.no_verify, timeout=args.timeout, progress=progress)
 
 
 def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
@@ -212,8 +262,9 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
     g = sp.add_argument_group("targets (one of)")
     one = g.add_mutually_exclusive_group(required=True)
     one.add_argument("--targets", metavar="FILE", default=None,
-                     help="tip positions per step: JSON [[x, y], ...] or {\"targets\", \"loads\", \"end_angles\"}, or "
-                          "CSV rows x, y [, fx, fy [, end_angle]] (length, force, rad)")
+                     help="tip positions per step: JSON [[x, y], ...] or {\"targets\", \"loads\", \"end_angles\", "
+                          "\"times\"}, or CSV rows x, y [, fx, fy [, end_angle]] (length, force, rad), or CSV with a "
+                          "header naming its columns among t (or time; seconds), x, y, fx, fy, end_angle")
     one.add_argument("--line", type=finite_float, nargs=5, default=None, metavar=("X0", "Y0", "X1", "Y1", "NUM"),
                      help="NUM tip positions evenly spaced from (X0, Y0) to (X1, Y1) (length)")
     g = sp.add_argument_group("the plan")
@@ -224,16 +275,26 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--bounds", type=positive_float, nargs=2, default=None, metavar=("LO", "HI"),
                    help="actuator bounds on every rest length (length; None: 0.1 b_min, 4 b_max)")
     g.add_argument("--rate-limit", type=positive_float, default=None,
-                   help="largest change of each rest length per step (length; None: no limit)")
+                   help="largest speed of each rest length (length per second; None: no limit): step k changes each "
+                        "by at most RATE_LIMIT * (t_k - t_{k-1}); needs --dt, --times or a time column")
+    g.add_argument("--dt", type=positive_float, default=None, metavar="SECONDS",
+                   help="a fixed time between steps: t_k = (k + 1) DT (the start is the state at time 0)")
+    g.add_argument("--times", type=positive_float, nargs="+", default=None, metavar="T",
+                   help="the steps' instants (seconds, one per target, increasing from a first one > 0; the start "
+                        "is the state at time 0)")
+    g.add_argument("--rest-lengths0", type=positive_float, nargs="+", default=None, metavar="L",
+                   help="the arm's current rest lengths, 2n numbers (L1_0, L2_0 of segment 1, then of segment 2, "
+                        "...; length): the start is an equilibrium with them and the first step's change is "
+                        "measured from them; None: the chain's own")
     g.add_argument("--margin", type=non_negative_float, default=1e-3,
-                   help="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip "
-                        "(torque / rad)")
+                   help="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip, "
+                        "absolute, torque / rad (times the chain's torque scale max k c^2 for a relative one)")
     g.add_argument("--objective", choices=OBJECTIVES, default="change",
                    help="change: least change from the previous step (Newton, IPOPT where a bound is active); "
                         "margin: largest margin; energy: least spring energy (IPOPT)")
     g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
-                   help="the start configuration (rad, n angles) with the chain's rest lengths under the first "
-                        "load; None: reached from the least-energy rest configuration")
+                   help="the start configuration (rad, n angles) with the start's rest lengths (--rest-lengths0) "
+                        "under the first load; None: reached from the least-energy rest configuration")
     g.add_argument("--no-verify", action="store_true",
                    help="skip the forward quasi-static solve that verifies each step")
     g.add_argument("--timeout", type=positive_float, default=None,
@@ -273,14 +334,17 @@ def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
         K = len(p.method)
         bar.close(f"{K} steps in {bar.seconds:.1f} s, {int(np.sum(p.feasible))} feasible, "
                   f"{int(np.sum(p.verified))} verified, status {p.status}")
+    timed = bool(np.all(np.isfinite(p.times)))
     lines = [f"Preload plan, n = {m.n}, objective {args.objective}: {K} steps, {int(np.sum(p.feasible))} feasible, "
              f"{int(np.sum(p.verified))} verified, status {p.status} ({p.seconds:.2f} s)",
-             f"{'#':>4} {'target x':>9} {'target y':>9} {'tip x':>9} {'tip y':>9} {'margin':>9} {'feas.':>5} "
-             f"{'verif.':>6} {'method':>6}  rest lengths [L1_0, L2_0] per segment"]
+             f"{'#':>4} " + (f"{'t (s)':>9} " if timed else "") + f"{'target x':>9} {'target y':>9} {'tip x':>9} "
+             f"{'tip y':>9} {'margin':>9} {'feas.':>5} {'verif.':>6} {'method':>6}  rest lengths [L1_0, L2_0] per "
+             "segment"]
     for k in range(K):
         mg = "-" if not math.isfinite(p.margin[k]) else f"{p.margin[k]:.5f}"
         rl = " ".join(f"[{a:.4f}, {b:.4f}]" for a, b in p.rest_lengths[k])
-        lines.append(f"{k:>4} {p.targets[k, 0]:>9.5f} {p.targets[k, 1]:>9.5f} {p.tip[k, 0]:>9.5f} {p.tip[k, 1]:>9.5f} "
+        lines.append(f"{k:>4} " + (f"{p.times[k]:>9.4g} " if timed else "")
+                     + f"{p.targets[k, 0]:>9.5f} {p.targets[k, 1]:>9.5f} {p.tip[k, 0]:>9.5f} {p.tip[k, 1]:>9.5f} "
                      f"{mg:>9} {'yes' if p.feasible[k] else 'no':>5} {'yes' if p.verified[k] else 'no':>6} "
                      f"{p.method[k]:>6}  {rl}")
     return p.to_dict, "\n".join(lines)
@@ -421,7 +485,8 @@ def add_control_parsers(subparsers: Any) -> None:
     sp.add_argument("--load", type=finite_float, nargs=2, default=[0.0, 0.0], metavar=("FX", "FY"),
                     help="dead tip load (force)")
     sp.add_argument("--margin", type=non_negative_float, default=1e-3,
-                    help="required smallest eigenvalue of the joint-space Hessian (torque / rad)")
+                    help="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip, "
+                         "absolute, torque / rad (times the chain's torque scale max k c^2 for a relative one)")
 
     sp = add_command(subparsers, "load-capacity", _cmd_load_capacity,
                      "how much more tip load the rest pose carries, per direction")

@@ -39,7 +39,7 @@ def arc(m, F, K=30, amp=(-0.15, 0.3)):
 @pytest.mark.parametrize("name,m,F", CHAINS, ids=[c[0] for c in CHAINS])
 def test_every_step_lands_on_its_target_stable_in_the_reference_model(name, m, F):
     traj = arc(m, F)
-    plan = plan_preloads(m, traj, loads=F, rate_limit=0.1)
+    plan = plan_preloads(m, traj, loads=F, rate_limit=0.1, dt=1.0)
     assert plan.status == "complete" and plan.feasible.all() and plan.verified.all()
     q_prev = PreloadController(m, load=F).q
     for k in range(len(traj)):
@@ -107,7 +107,7 @@ def test_bounds_rate_and_margin_hold_and_the_margin_keeps_the_branch():
     traj = arc(m, F, K=25, amp=(-0.4, 0.8))
     free = plan_preloads(m, traj, loads=F)
     need = float(np.percentile(free.margin, 60))          # above the least-change solution's margin somewhere
-    plan = plan_preloads(m, traj, loads=F, margin=need, rate_limit=0.08, bounds=(0.5, 1.6))
+    plan = plan_preloads(m, traj, loads=F, margin=need, rate_limit=0.08, dt=1.0, bounds=(0.5, 1.6))
     assert plan.feasible.all() and plan.verified.all()
     assert "ipopt" in plan.method                          # where the least-change step was not stable enough
     assert all(st.to_dict()["residual"] is None for st in plan.steps if st.method == "ipopt")     # no residual

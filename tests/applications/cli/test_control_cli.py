@@ -14,6 +14,7 @@ import pytest
 from cli_checks import refuses_together, writes_png_and_svg
 
 import tensegrity_opt as to
+from tensegrity_opt.analyses.design.preload_control import PreloadController
 from tensegrity_opt.applications.cli import build_parser, main
 from tensegrity_opt.applications.cli.control import load_cycle
 
@@ -43,9 +44,10 @@ def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
 
     csv = tmp_path / "path.csv"
     csv.write_text("x,y,fx,fy\n7.9,0.2,0,-0.01\n7.8,0.4,0,-0.01\n7.7,0.6,0,-0.02\n", encoding="utf-8")
-    got = run_json(capsys, ["plan", "--targets", str(csv), "--rate-limit", "0.2", "--bounds", "0.5", "2"])
+    got = run_json(capsys, ["plan", "--targets", str(csv), "--rate-limit", "0.2", "--dt", "1", "--bounds", "0.5", "2"])
     want = to.plan_preloads(M, [[7.9, 0.2], [7.8, 0.4], [7.7, 0.6]],
-                                      loads=[[0, -0.01], [0, -0.01], [0, -0.02]], rate_limit=0.2, bounds=(0.5, 2.0))
+                                      loads=[[0, -0.01], [0, -0.01], [0, -0.02]], rate_limit=0.2, dt=1.0,
+                                      bounds=(0.5, 2.0))
     assert same(got, json.loads(json.dumps(want.to_dict())))
     js = tmp_path / "path.json"
     js.write_text(json.dumps({"targets": [[7.8, 0.3], [7.8, 0.6]], "end_angles": [0.0, None]}), encoding="utf-8")
@@ -196,3 +198,34 @@ def test_stiffness_design_names_the_active_bounds(capsys):
     assert main(["stiffness-design", "--target", "7.5", "1.0", "--eig-bounds", "0.05", "0.5"]) == 0
     line = next(x for x in capsys.readouterr().out.splitlines() if x.startswith("active bounds"))
     assert "L1_0[3] = 0.104853 (lower bound 0.1)" in line and "L1_0[1] = 4 (upper bound 4)" in line
+
+
+def test_plan_times_from_a_csv_column_times_or_dt_and_the_arm_s_rest_lengths(capsys, tmp_path):
+    r0 = [[1.03, 0.98], [1.0, 1.02], [0.97, 1.0], [1.01, 0.99]]
+    flat = [str(v) for pair in r0 for v in pair]
+    ctl = PreloadController(M, rest_lengths0=r0)
+    tip0 = ctl.manipulator().tip(ctl.q)
+    T = [(tip0 + [-0.01 * k, 0.03 * k]).tolist() for k in (1, 2, 3)]
+    times = [0.3, 0.4, 1.0]
+    csv = tmp_path / "timed.csv"                  # named columns, any order
+    csv.write_text("y,t,x\n" + "".join(f"{y!r},{t!r},{x!r}\n" for (x, y), t in zip(T, times)), encoding="utf-8")
+    js = tmp_path / "targets.json"
+    js.write_text(json.dumps(T), encoding="utf-8")
+    want = to.plan_preloads(M, T, times=times, rate_limit=0.1, rest_lengths0=r0)
+    assert want.feasible.any()
+    want = json.loads(json.dumps(want.to_dict()))
+    got = run_json(capsys, ["plan", "--targets", str(csv), "--rate-limit", "0.1", "--rest-lengths0", *flat])
+    assert same(got, want) and got["times"] == times
+    plan = ["plan", "--targets", str(js), "--rate-limit", "0.1"]
+    assert same(run_json(capsys, [*plan, "--rest-lengths0", *flat, "--times", *map(str, times)]), want)
+    got = run_json(capsys, [*plan, "--rest-lengths0", *flat, "--dt", "0.5"])
+    assert same(got, json.loads(json.dumps(to.plan_preloads(M, T, dt=0.5, rate_limit=0.1,
+                                                            rest_lengths0=r0).to_dict())))
+    assert main(plan) == 2                                                  # a rate per second needs a time base
+    assert "per second" in capsys.readouterr().err
+    assert main(["plan", "--targets", str(csv), "--times", "1", "2", "3"]) == 2
+    assert "--times" in capsys.readouterr().err
+    assert main([*plan, "--times", "0.5", "0.4", "1"]) == 2                 # not increasing
+    assert "times" in capsys.readouterr().err
+    assert main([*plan, "--dt", "1", "--rest-lengths0", "1", "1", "1"]) == 2
+    assert "rest_lengths0" in capsys.readouterr().err

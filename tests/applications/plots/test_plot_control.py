@@ -26,7 +26,7 @@ def plan():
     """Tips of the paper's chain bent evenly (q_i = alpha), the third moved off the arc: beyond a rate limit 0.05."""
     T = np.array([PAPER.tip(np.full(4, a)) for a in np.linspace(0.0, 0.05, 6)])
     T[3] += [-0.6, 0.8]
-    p = to.plan_preloads(PAPER, T, rate_limit=0.05, margin=0.3)
+    p = to.plan_preloads(PAPER, T, rate_limit=0.05, dt=1.0, margin=0.3)
     assert list(p.feasible) == [True, True, True, False, True, True]
     return p
 

@@ -39,6 +39,7 @@ class PlanOut:
         steps (list[PlanStepOut]): every step in full (why an infeasible step failed: `message`)
         success (bool): whether it worked: `status` is one of complete
         targets (list[list[float]]): the targets of the steps done
+        times (list[float | None]): the instants of the steps done (seconds; the start at 0); null without a time base
         tip (list[list[float]]): the tip per step (the target when feasible; else the best reachable pose)
         verified (list[bool]): the forward solve from the previous step lands on the target, stable (with `verify:
             false` no solve runs: false everywhere)
@@ -58,6 +59,7 @@ class PlanOut:
     steps: list[PlanStepOut]
     success: bool
     targets: list[list[float]]
+    times: list[float | None]
     tip: list[list[float]]
     verified: list[bool]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
@@ -117,6 +119,12 @@ class PlanOut:
 
             targets.append(targets_item)
 
+        times = []
+        for times_item_data in self.times:
+            times_item: float | None
+            times_item = times_item_data
+            times.append(times_item)
+
         tip = []
         for tip_item_data in self.tip:
             tip_item = tip_item_data
@@ -143,6 +151,7 @@ class PlanOut:
                 "steps": steps,
                 "success": success,
                 "targets": targets,
+                "times": times,
                 "tip": tip,
                 "verified": verified,
             }
@@ -224,6 +233,19 @@ class PlanOut:
 
             targets.append(targets_item)
 
+        times = []
+        _times = d.pop("times")
+        for times_item_data in _times:
+
+            def _parse_times_item(data: object) -> float | None:
+                if data is None:
+                    return data
+                return cast(float | None, data)
+
+            times_item = _parse_times_item(times_item_data)
+
+            times.append(times_item)
+
         tip = []
         _tip = d.pop("tip")
         for tip_item_data in _tip:
@@ -248,6 +270,7 @@ class PlanOut:
             steps=steps,
             success=success,
             targets=targets,
+            times=times,
             tip=tip,
             verified=verified,
         )

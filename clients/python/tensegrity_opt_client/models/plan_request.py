@@ -29,19 +29,27 @@ class PlanRequest:
             TENSEGRITY_MAX_TRAJECTORY_STEPS)
         bounds (list[float | list[float]] | None | RestLengthBoundsIn | Unset): actuator bounds on the rest lengths;
             default (0.1 b_min, 4 b_max)
+        dt (float | None | Unset): a fixed time between steps (seconds, > 0) instead of `times`: t_k = (k + 1) dt
         end_angles (list[float | None] | None | Unset): the last link's absolute angle per step (rad; null: free), as
             many as targets; default free
         loads (list[float] | list[list[float]] | None | Unset): dead tip load: one [fx, fy] or one per step; default
             none
         margin (float | Unset): required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the
-            joint angles (torque / rad) Default: 0.001.
+            joint angles, absolute, in torque per radian (force x length / rad) like every margin of the API; for a margin
+            relative to the chain's torque scale max k c^2, multiply by that scale Default: 0.001.
         objective (PlanRequestObjective | Unset): change: least change from the previous step (compiled Newton, IPOPT
             where a bound is active); margin: largest margin; energy: least spring energy (IPOPT) Default:
             PlanRequestObjective.CHANGE.
-        rate_limit (float | list[float] | None | Unset): largest change of each rest length per step (length units): a
-            number or 2n numbers; default none
-        start (None | StartQ | Unset): {"q": [...]}: the configuration with the chain's rest lengths under the first
-            load; null: the equilibrium under it reached from the least-energy rest configuration
+        rate_limit (float | list[float] | None | Unset): largest speed of each rest length (length units per second): a
+            number or 2n numbers; step k changes each rest length by at most rate_limit * (t_k - t_{k-1}). Needs `times` or
+            `dt`; default none
+        rest_lengths0 (list[list[float]] | None | Unset): the arm's current rest lengths [L1_0, L2_0] per segment (n
+            pairs, length units, inside `bounds`): the start is an equilibrium with them and the first step's change is
+            measured from them; default the manipulator's own
+        start (None | StartQ | Unset): {"q": [...]}: the configuration with the start's rest lengths (`rest_lengths0`)
+            under the first load; null: the equilibrium under it reached from the least-energy rest configuration
+        times (list[float] | None | Unset): the steps' instants (seconds), as many as targets, strictly increasing from
+            a first one > 0: the start (`rest_lengths0`, `start`) is the state at time 0; default none (or `dt`)
         verify (bool | Unset): verify every step by the forward quasi-static solve from the previous step's
             configuration (`verified`) Default: True.
         weights (list[list[float]] | None | Unset): weights [w1, w2] of each segment's rest-length changes in the least-
@@ -51,12 +59,15 @@ class PlanRequest:
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
     targets: list[list[float]]
     bounds: list[float | list[float]] | None | RestLengthBoundsIn | Unset = UNSET
+    dt: float | None | Unset = UNSET
     end_angles: list[float | None] | None | Unset = UNSET
     loads: list[float] | list[list[float]] | None | Unset = UNSET
     margin: float | Unset = 0.001
     objective: PlanRequestObjective | Unset = PlanRequestObjective.CHANGE
     rate_limit: float | list[float] | None | Unset = UNSET
+    rest_lengths0: list[list[float]] | None | Unset = UNSET
     start: None | StartQ | Unset = UNSET
+    times: list[float] | None | Unset = UNSET
     verify: bool | Unset = True
     weights: list[list[float]] | None | Unset = UNSET
 
@@ -95,6 +106,12 @@ class PlanRequest:
             bounds = self.bounds.to_dict()
         else:
             bounds = self.bounds
+
+        dt: float | None | Unset
+        if isinstance(self.dt, Unset):
+            dt = UNSET
+        else:
+            dt = self.dt
 
         end_angles: list[float | None] | None | Unset
         if isinstance(self.end_angles, Unset):
@@ -140,6 +157,19 @@ class PlanRequest:
         else:
             rate_limit = self.rate_limit
 
+        rest_lengths0: list[list[float]] | None | Unset
+        if isinstance(self.rest_lengths0, Unset):
+            rest_lengths0 = UNSET
+        elif isinstance(self.rest_lengths0, list):
+            rest_lengths0 = []
+            for rest_lengths0_type_0_item_data in self.rest_lengths0:
+                rest_lengths0_type_0_item = rest_lengths0_type_0_item_data
+
+                rest_lengths0.append(rest_lengths0_type_0_item)
+
+        else:
+            rest_lengths0 = self.rest_lengths0
+
         start: dict[str, Any] | None | Unset
         if isinstance(self.start, Unset):
             start = UNSET
@@ -147,6 +177,15 @@ class PlanRequest:
             start = self.start.to_dict()
         else:
             start = self.start
+
+        times: list[float] | None | Unset
+        if isinstance(self.times, Unset):
+            times = UNSET
+        elif isinstance(self.times, list):
+            times = self.times
+
+        else:
+            times = self.times
 
         verify = self.verify
 
@@ -173,6 +212,8 @@ class PlanRequest:
         )
         if bounds is not UNSET:
             field_dict["bounds"] = bounds
+        if dt is not UNSET:
+            field_dict["dt"] = dt
         if end_angles is not UNSET:
             field_dict["end_angles"] = end_angles
         if loads is not UNSET:
@@ -183,8 +224,12 @@ class PlanRequest:
             field_dict["objective"] = objective
         if rate_limit is not UNSET:
             field_dict["rate_limit"] = rate_limit
+        if rest_lengths0 is not UNSET:
+            field_dict["rest_lengths0"] = rest_lengths0
         if start is not UNSET:
             field_dict["start"] = start
+        if times is not UNSET:
+            field_dict["times"] = times
         if verify is not UNSET:
             field_dict["verify"] = verify
         if weights is not UNSET:
@@ -266,6 +311,15 @@ class PlanRequest:
             return cast(list[float | list[float]] | None | RestLengthBoundsIn | Unset, data)
 
         bounds = _parse_bounds(d.pop("bounds", UNSET))
+
+        def _parse_dt(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        dt = _parse_dt(d.pop("dt", UNSET))
 
         def _parse_end_angles(data: object) -> list[float | None] | None | Unset:
             if data is None:
@@ -351,6 +405,28 @@ class PlanRequest:
 
         rate_limit = _parse_rate_limit(d.pop("rate_limit", UNSET))
 
+        def _parse_rest_lengths0(data: object) -> list[list[float]] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                rest_lengths0_type_0 = []
+                _rest_lengths0_type_0 = data
+                for rest_lengths0_type_0_item_data in _rest_lengths0_type_0:
+                    rest_lengths0_type_0_item = cast(list[float], rest_lengths0_type_0_item_data)
+
+                    rest_lengths0_type_0.append(rest_lengths0_type_0_item)
+
+                return rest_lengths0_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[float]] | None | Unset, data)
+
+        rest_lengths0 = _parse_rest_lengths0(d.pop("rest_lengths0", UNSET))
+
         def _parse_start(data: object) -> None | StartQ | Unset:
             if data is None:
                 return data
@@ -367,6 +443,23 @@ class PlanRequest:
             return cast(None | StartQ | Unset, data)
 
         start = _parse_start(d.pop("start", UNSET))
+
+        def _parse_times(data: object) -> list[float] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                times_type_0 = cast(list[float], data)
+
+                return times_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None | Unset, data)
+
+        times = _parse_times(d.pop("times", UNSET))
 
         verify = d.pop("verify", UNSET)
 
@@ -396,12 +489,15 @@ class PlanRequest:
             manipulator=manipulator,
             targets=targets,
             bounds=bounds,
+            dt=dt,
             end_angles=end_angles,
             loads=loads,
             margin=margin,
             objective=objective,
             rate_limit=rate_limit,
+            rest_lengths0=rest_lengths0,
             start=start,
+            times=times,
             verify=verify,
             weights=weights,
         )

@@ -29,7 +29,9 @@ class PreloadsRequest:
             b_max)
         end_angle (float | None | Unset): absolute angle of the last link (rad), optional
         load (list[float] | Unset): the dead tip load [fx, fy] (force units)
-        margin (float | Unset): required smallest eigenvalue of the joint-space Hessian (torque / rad) Default: 0.001.
+        margin (float | Unset): required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the
+            joint angles, absolute, in torque per radian (force x length / rad) like every margin of the API; for a margin
+            relative to the chain's torque scale max k c^2, multiply by that scale Default: 0.001.
         objective (PreloadsRequestObjective | Unset): nominal: least change from the chain's own rest lengths (the
             library's objective `change`); margin: largest stability margin; energy: least spring energy Default:
             PreloadsRequestObjective.NOMINAL.

@@ -34,7 +34,9 @@ class StiffnessDesignRequest:
         eig_bounds (list[float | None] | None | StiffnessBoundIn | Unset): bounds [lo, hi] on both eigenvalues of K
         end_angle (float | None | Unset): the last link's absolute angle (rad), optional
         load (list[float] | Unset): the dead tip load [fx, fy] (force units)
-        margin (float | Unset): required smallest eigenvalue of the joint-space Hessian (torque / rad) Default: 0.001.
+        margin (float | Unset): required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the
+            joint angles, absolute, in torque per radian (force x length / rad) like every margin of the API; for a margin
+            relative to the chain's torque scale max k c^2, multiply by that scale Default: 0.001.
         max_starts (int | Unset): arm shapes tried (the target's equilibria, stable first) Default: 4.
     """
 

@@ -84,21 +84,22 @@ def sync_detailed(
     """Rest lengths for a trajectory of tip positions, on one stable branch
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
-    `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
-    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
-    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
-    with the best reachable pose, and the next step starts from the last feasible state (`status:
-    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
-    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
-    entries free) fix the last link's absolute angle. At most the server's
-    `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
-    `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
-    The plan runs in a solver process and stops shortly before the server's time limit, answering the
-    steps done (200, `status: "time_limit"`, `success: false`) instead of a 504. A step costs ~4 ms by
-    Newton with its verification (n = 4), tens of milliseconds by IPOPT; the first plan for a chain
-    length builds its IPOPT problem in one call nothing interrupts (n = 40: ~1.5 s; n = 60: ~40 s, a
-    504, and the process is replaced).
+    `margin` under the dead tip load, inside `bounds` and within `rate_limit` (length per second) times
+    the time since the previous step (`times`, or a fixed `dt`; the start, with the arm's current rest
+    lengths `rest_lengths0`, is the state at time 0) (`tensegrity_opt.plan_preloads`): `objective:
+    change` is the least change from the previous step (a compiled Newton step on its KKT system, warm-
+    started; IPOPT where a bound is active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no
+    admissible rest lengths reach is `feasible: false` with the best reachable pose, and the next step
+    starts from the last feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-
+    static solve from the previous step's configuration with the step's rest lengths lands on the
+    target, stable. `end_angles` (optional, null entries free) fix the last link's absolute angle. At
+    most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422
+    `too_many_steps` naming `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT
+    fallback is the same problem). The plan runs in a solver process and stops shortly before the
+    server's time limit, answering the steps done (200, `status: "time_limit"`, `success: false`)
+    instead of a 504. A step costs ~4 ms by Newton with its verification (n = 4), tens of milliseconds
+    by IPOPT; the first plan for a chain length builds its IPOPT problem in one call nothing interrupts
+    (n = 40: ~1.5 s; n = 60: ~40 s, a 504, and the process is replaced).
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
@@ -131,21 +132,22 @@ def sync(
     """Rest lengths for a trajectory of tip positions, on one stable branch
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
-    `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
-    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
-    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
-    with the best reachable pose, and the next step starts from the last feasible state (`status:
-    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
-    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
-    entries free) fix the last link's absolute angle. At most the server's
-    `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
-    `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
-    The plan runs in a solver process and stops shortly before the server's time limit, answering the
-    steps done (200, `status: "time_limit"`, `success: false`) instead of a 504. A step costs ~4 ms by
-    Newton with its verification (n = 4), tens of milliseconds by IPOPT; the first plan for a chain
-    length builds its IPOPT problem in one call nothing interrupts (n = 40: ~1.5 s; n = 60: ~40 s, a
-    504, and the process is replaced).
+    `margin` under the dead tip load, inside `bounds` and within `rate_limit` (length per second) times
+    the time since the previous step (`times`, or a fixed `dt`; the start, with the arm's current rest
+    lengths `rest_lengths0`, is the state at time 0) (`tensegrity_opt.plan_preloads`): `objective:
+    change` is the least change from the previous step (a compiled Newton step on its KKT system, warm-
+    started; IPOPT where a bound is active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no
+    admissible rest lengths reach is `feasible: false` with the best reachable pose, and the next step
+    starts from the last feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-
+    static solve from the previous step's configuration with the step's rest lengths lands on the
+    target, stable. `end_angles` (optional, null entries free) fix the last link's absolute angle. At
+    most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422
+    `too_many_steps` naming `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT
+    fallback is the same problem). The plan runs in a solver process and stops shortly before the
+    server's time limit, answering the steps done (200, `status: "time_limit"`, `success: false`)
+    instead of a 504. A step costs ~4 ms by Newton with its verification (n = 4), tens of milliseconds
+    by IPOPT; the first plan for a chain length builds its IPOPT problem in one call nothing interrupts
+    (n = 40: ~1.5 s; n = 60: ~40 s, a 504, and the process is replaced).
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
@@ -173,21 +175,22 @@ async def asyncio_detailed(
     """Rest lengths for a trajectory of tip positions, on one stable branch
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
-    `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
-    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
-    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
-    with the best reachable pose, and the next step starts from the last feasible state (`status:
-    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
-    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
-    entries free) fix the last link's absolute angle. At most the server's
-    `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
-    `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
-    The plan runs in a solver process and stops shortly before the server's time limit, answering the
-    steps done (200, `status: "time_limit"`, `success: false`) instead of a 504. A step costs ~4 ms by
-    Newton with its verification (n = 4), tens of milliseconds by IPOPT; the first plan for a chain
-    length builds its IPOPT problem in one call nothing interrupts (n = 40: ~1.5 s; n = 60: ~40 s, a
-    504, and the process is replaced).
+    `margin` under the dead tip load, inside `bounds` and within `rate_limit` (length per second) times
+    the time since the previous step (`times`, or a fixed `dt`; the start, with the arm's current rest
+    lengths `rest_lengths0`, is the state at time 0) (`tensegrity_opt.plan_preloads`): `objective:
+    change` is the least change from the previous step (a compiled Newton step on its KKT system, warm-
+    started; IPOPT where a bound is active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no
+    admissible rest lengths reach is `feasible: false` with the best reachable pose, and the next step
+    starts from the last feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-
+    static solve from the previous step's configuration with the step's rest lengths lands on the
+    target, stable. `end_angles` (optional, null entries free) fix the last link's absolute angle. At
+    most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422
+    `too_many_steps` naming `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT
+    fallback is the same problem). The plan runs in a solver process and stops shortly before the
+    server's time limit, answering the steps done (200, `status: "time_limit"`, `success: false`)
+    instead of a 504. A step costs ~4 ms by Newton with its verification (n = 4), tens of milliseconds
+    by IPOPT; the first plan for a chain length builds its IPOPT problem in one call nothing interrupts
+    (n = 40: ~1.5 s; n = 60: ~40 s, a 504, and the process is replaced).
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
@@ -218,21 +221,22 @@ async def asyncio(
     """Rest lengths for a trajectory of tip positions, on one stable branch
 
      Per step the springs' rest lengths `(L1_0, L2_0)` putting the tip at the target, stable with
-    `margin` under the dead tip load, inside `bounds` and within `rate_limit` of the previous step
-    (`tensegrity_opt.plan_preloads`): `objective: change` is the least change from the previous step (a
-    compiled Newton step on its KKT system, warm-started; IPOPT where a bound is active), `margin` /
-    `energy` IPOPT (`preloads_for_pose`). A step no admissible rest lengths reach is `feasible: false`
-    with the best reachable pose, and the next step starts from the last feasible state (`status:
-    "infeasible_steps"`). `verified`: the forward quasi-static solve from the previous step's
-    configuration with the step's rest lengths lands on the target, stable. `end_angles` (optional, null
-    entries free) fix the last link's absolute angle. At most the server's
-    `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422 `too_many_steps` naming
-    `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT fallback is the same problem).
-    The plan runs in a solver process and stops shortly before the server's time limit, answering the
-    steps done (200, `status: "time_limit"`, `success: false`) instead of a 504. A step costs ~4 ms by
-    Newton with its verification (n = 4), tens of milliseconds by IPOPT; the first plan for a chain
-    length builds its IPOPT problem in one call nothing interrupts (n = 40: ~1.5 s; n = 60: ~40 s, a
-    504, and the process is replaced).
+    `margin` under the dead tip load, inside `bounds` and within `rate_limit` (length per second) times
+    the time since the previous step (`times`, or a fixed `dt`; the start, with the arm's current rest
+    lengths `rest_lengths0`, is the state at time 0) (`tensegrity_opt.plan_preloads`): `objective:
+    change` is the least change from the previous step (a compiled Newton step on its KKT system, warm-
+    started; IPOPT where a bound is active), `margin` / `energy` IPOPT (`preloads_for_pose`). A step no
+    admissible rest lengths reach is `feasible: false` with the best reachable pose, and the next step
+    starts from the last feasible state (`status: "infeasible_steps"`). `verified`: the forward quasi-
+    static solve from the previous step's configuration with the step's rest lengths lands on the
+    target, stable. `end_angles` (optional, null entries free) fix the last link's absolute angle. At
+    most the server's `TENSEGRITY_MAX_TRAJECTORY_STEPS` targets (default 2000; above: 422
+    `too_many_steps` naming `targets`), chains of 2 to 60 segments (as `/v1/design/*`: the IPOPT
+    fallback is the same problem). The plan runs in a solver process and stops shortly before the
+    server's time limit, answering the steps done (200, `status: "time_limit"`, `success: false`)
+    instead of a 504. A step costs ~4 ms by Newton with its verification (n = 4), tens of milliseconds
+    by IPOPT; the first plan for a chain length builds its IPOPT problem in one call nothing interrupts
+    (n = 40: ~1.5 s; n = 60: ~40 s, a 504, and the process is replaced).
 
     Args:
         body (PlanRequest): Rest lengths for a trajectory of tip positions, on one stable branch
