@@ -46,7 +46,7 @@ from .control import Control, as_control
 from .events import BranchEvent
 from .problem import NEWTON_TOL, PathProblem
 
-__all__ = ["StabilityBoundary", "BoundaryPoint", "stability_boundary", "parameter_direction", "PARAMETERS"]
+__all__ = ["StabilityBoundary", "BoundaryPoint", "stability_boundary", "parameter_direction", "chain_at", "PARAMETERS"]
 
 #: Named parameter directions: ``p`` is added to these entries of every segment.
 PARAMETERS = ("asymmetry", "L0", "a", "b", "k")
@@ -82,6 +82,15 @@ def _chain_at(m: Manipulator, dp: np.ndarray, p: float) -> Manipulator:
     v = chain_parameters(m.n).unpack(np.array(m.params) + p * dp)
     return Manipulator(Segment(a, b, (k1, k2), (l1, l2))
                        for a, b, k1, k2, l1, l2 in zip(*(v[k] for k in ("a", "b", "k1", "k2", "L10", "L20"))))
+
+
+def chain_at(m: Manipulator, parameter, p: float) -> Manipulator:
+    """The chain ``m`` moved by ``p`` along a parameter (a name of :data:`PARAMETERS` or a direction, as
+    :func:`parameter_direction`): for ``"asymmetry"`` every segment's rest lengths become ``L1_0 + p`` and
+    ``L2_0 - p`` (a symmetric segment of rest length ``L0``: ``L0 + p``, ``L0 - p``, pre-bent towards its
+    shorter spring). ``p = 0`` is ``m`` itself; :func:`stability_boundary` and
+    :func:`~.imperfection.imperfection_sensitivity` move the chain this way."""
+    return _chain_at(m, parameter_direction(m, parameter)[1], float(p))
 
 
 @dataclass(frozen=True)
