@@ -169,3 +169,10 @@ def test_curve_against_reference_continuation(segs, boundary):
             assert load == pytest.approx(ref_load, rel=1e-5), p
     # the perfect chain's arms: both carry more (supercritical), no small-imperfection law
     assert r.bifurcation == "stable_symmetric" and r.law_exponent is None
+
+
+def test_stability_boundary_says_which_curve_it_is():
+    """The fold curve of ``stability_boundary`` is documented as that curve, pointing to the imperfect arm's."""
+    doc = to.stability_boundary.__doc__
+    assert "imperfection_sensitivity" in doc and "imperfection sensitivity of a column" not in doc
+    assert "imperfection_sensitivity" in to.StabilityBoundary.__doc__
