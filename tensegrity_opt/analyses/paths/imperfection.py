@@ -47,7 +47,8 @@ from ...timelimit import expired, time_limit
 from .boundaries import PARAMETERS, chain_at, parameter_direction
 from .limit_load import LimitLoad, check_max_load, limit_arms, limit_load
 
-__all__ = ["ImperfectionSensitivity", "imperfection_sensitivity", "KINDS", "BIFURCATIONS", "LAW_POINTS"]
+__all__ = ["ImperfectionSensitivity", "imperfection_sensitivity", "KINDS", "BIFURCATIONS", "AMPLITUDE_STATUSES",
+           "LAW_POINTS"]
 
 #: The kind of each amplitude's limit.
 KINDS = ("fold", "bifurcation", "joint_limit", "none", "unknown")
@@ -58,6 +59,8 @@ BIFURCATIONS = {"unstable_symmetric": 2.0 / 3.0, "asymmetric": 0.5, "stable_symm
 LAW_POINTS = 4
 #: An amplitude's status beyond :attr:`LimitLoad.STATUSES`.
 _NOT_COMPUTED, _FAILED = "not_computed", "failed"
+#: Every status an amplitude may have (:attr:`ImperfectionSensitivity.statuses`).
+AMPLITUDE_STATUSES = (*LimitLoad.STATUSES, _FAILED, _NOT_COMPUTED)
 
 
 @dataclass(frozen=True)
@@ -150,8 +153,8 @@ class ImperfectionSensitivity(Outcome):
         """The perfect chain's kind of limit (as :attr:`kinds`)."""
         return "unknown" if self.perfect is None else _kind(self.perfect)
 
-    def to_dict(self, *, include_limit_loads: bool = True) -> dict[str, Any]:
-        """JSON form (the body of ``POST /v1/paths/imperfection-sensitivity``): ``success``, ``status``,
+    def to_dict(self, *, include_limit_loads: bool = False) -> dict[str, Any]:
+        """JSON form (the body of ``POST /v1/imperfection-sensitivity``): ``success``, ``status``,
         ``message``, ``imperfection``, ``direction``, ``boundary``, ``max_load``, ``amplitudes``, ``loads`` (null
         for NaN), ``kinds``, ``statuses``, ``messages``, ``perfect_load``, ``perfect_kind``, ``law`` (``exponent``,
         ``coefficient``, ``amplitudes``; null where it does not apply) and with ``include_limit_loads`` the
@@ -240,7 +243,7 @@ def _law(amplitudes: np.ndarray, loads: np.ndarray, kinds, perfect: LimitLoad | 
 
 
 def imperfection_sensitivity(m: Manipulator, amplitudes, *, imperfection="asymmetry", direction=(-1.0, 0.0),
-                             boundary: str = "guided", max_load: float | None = None,
+                             boundary: str = "guided", max_load: float | None = None, max_points: int = 4000,
                              timeout: float | None = None) -> ImperfectionSensitivity:
     """The limit load of the dead-load path from the rest shape of the imperfect chain, against the amplitude.
 
@@ -254,7 +257,7 @@ def imperfection_sensitivity(m: Manipulator, amplitudes, *, imperfection="asymme
         What the amplitude moves (:func:`~.boundaries.chain_at`): ``"asymmetry"`` (``L1_0 + p``, ``L2_0 - p`` on
         every segment: a pre-bend), another name of :data:`~.boundaries.PARAMETERS` or a direction in the
         chain's parameters, as the parameter of :func:`~.boundaries.stability_boundary`.
-    direction, boundary, max_load
+    direction, boundary, max_load, max_points
         As :func:`~.limit_load.limit_load` (default the guided compression ``(-1, 0)``); each imperfect chain's
         path starts at its own least-energy rest configuration, guided: the guide through its rest tip.
     timeout : float, optional
@@ -305,7 +308,7 @@ def imperfection_sensitivity(m: Manipulator, amplitudes, *, imperfection="asymme
                 timed_out = True
                 break
             try:
-                r = limit_load(m if i < 0 else chains[i], direction, boundary, max_load)
+                r = limit_load(m if i < 0 else chains[i], direction, boundary, max_load, max_points=max_points)
             except TimeLimitError:
                 timed_out = True
                 break

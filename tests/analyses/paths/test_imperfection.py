@@ -100,9 +100,10 @@ def test_kinds_vocabulary_and_json(subcritical):
     assert joint.limit_loads[0].status == "joint_limit"
     for r in (subcritical, free, joint):
         assert set(r.kinds) <= set(imp.KINDS)
-        d = json.loads(json.dumps(r.to_dict()))
+        d = json.loads(json.dumps(r.to_dict(include_limit_loads=True)))
         assert list(d)[:3] == ["success", "status", "message"]
         assert d["kinds"] == list(r.kinds) and len(d["limit_loads"]) == r.amplitudes.size
+        assert "limit_loads" not in r.to_dict()
         with pytest.raises(dataclasses.FrozenInstanceError):
             r.status = "changed"                                        # type: ignore[misc]
     assert json.loads(json.dumps(free.to_dict()))["loads"][1] is None
