@@ -242,12 +242,8 @@ class LimitLoadRequest(_LimitLoadFields):
     include_branch: bool = Field(False, description="also return the traced path (`branch`)")
 
 
-class ImperfectionSensitivityRequest(BaseModel):
-    """The limit load of each imperfect chain's dead-load path from its rest shape, against the imperfection's
-    amplitude (`tensegrity_opt.imperfection_sensitivity`)."""
-
-    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
-        "examples": [{"manipulator": PAPER_CHAIN, "amplitudes": [0.0, 0.01, 0.02851, 0.061]}]})
+class _ImperfectionFields(BaseModel):
+    model_config = ConfigDict(strict=True, extra="forbid")
 
     manipulator: ManipulatorIn
     amplitudes: list[Parameter] = Field(
@@ -262,6 +258,15 @@ class ImperfectionSensitivityRequest(BaseModel):
     max_load: Annotated[float, Field(gt=0, le=MAX_FORCE, allow_inf_nan=False)] | None = Field(
         None, description="stop each path there (force units); default 100 k c^2 / (2b)")
     max_points: MaxPoints = 4000
+
+
+class ImperfectionSensitivityRequest(_ImperfectionFields):
+    """The limit load of each imperfect chain's dead-load path from its rest shape, against the imperfection's
+    amplitude (`tensegrity_opt.imperfection_sensitivity`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "amplitudes": [0.0, 0.01, 0.02851, 0.061]}]})
+
     include_limit_loads: bool = Field(False, description="also return each amplitude's limit load (`limit_loads`, "
                                                          "as `/v1/limit-load` answers it) and `perfect`")
 
