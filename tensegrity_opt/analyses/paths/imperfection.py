@@ -71,8 +71,10 @@ class ImperfectionSensitivity(Outcome):
     ----------
     status : str
         :attr:`STATUSES`: ``"complete"`` when every amplitude's path reached its end; ``"partial"`` when some
-        path was cut or some imperfect chain could not be followed (those amplitudes' ``kinds`` are
-        ``"unknown"``); ``"time_limit"`` when the time limit ran out first (the amplitudes done are kept).
+        path was cut, some imperfect chain could not be followed, or a path without a limit point has unstable
+        points (stability lost where no event was located: a step over a very sharp fold); those amplitudes'
+        ``kinds`` are ``"unknown"``; ``"time_limit"`` when the time limit ran out first (the amplitudes done are
+        kept).
     message : str
     amplitudes : ndarray (A,)
         The amplitudes, in the order given.
@@ -82,7 +84,8 @@ class ImperfectionSensitivity(Outcome):
         ``"none"`` (stable up to ``max_load``) and ``"unknown"``.
     kinds : tuple of str
         Per amplitude (:data:`KINDS`): ``"fold"``, ``"bifurcation"``, ``"joint_limit"``, ``"none"``, or
-        ``"unknown"`` where the path was cut, the chain could not be followed, or the time ran out first.
+        ``"unknown"`` where the path was cut, the chain could not be followed, the time ran out first, or the
+        path reports no limit point but has unstable points.
     statuses : tuple of str
         Per amplitude the :class:`LimitLoad` status, ``"failed"`` (the imperfect chain could not be followed:
         ``messages`` says why) or ``"not_computed"`` (the time limit ran out before it).
@@ -111,7 +114,8 @@ class ImperfectionSensitivity(Outcome):
 
     STATUSES: ClassVar[dict[str, str]] = {
         "complete": "every amplitude's path was followed to its limit point or its end",
-        "partial": "some amplitude's path was cut or its chain could not be followed (kind unknown)",
+        "partial": "some amplitude's path was cut, could not be followed or lost stability at no located limit "
+                   "point (kind unknown)",
         "time_limit": "the time limit ran out before every amplitude was computed (those computed are kept)",
     }
     SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
@@ -174,9 +178,16 @@ class ImperfectionSensitivity(Outcome):
         return d
 
 
+def _unlocated_loss(r: LimitLoad) -> bool:
+    """The path has no limit point, yet unstable points: it lost stability where no event was located."""
+    return r.kind == "none" and not bool(np.all(r.branch.stable))
+
+
 def _kind(r: LimitLoad) -> str:
     if r.kind in ("fold", "bifurcation"):
         return r.kind
+    if _unlocated_loss(r):
+        return "unknown"
     return {"joint_limit": "joint_limit", "max_load": "none"}.get(r.status, "unknown")
 
 
@@ -327,6 +338,9 @@ def imperfection_sensitivity(m: Manipulator, amplitudes, *, imperfection="asymme
                 perfect = r
                 continue
             results[i], statuses[i], messages[i] = r, r.status, r.message
+            if _unlocated_loss(r):
+                messages[i] = (f"{r.message}; but the path has unstable points: stability was lost where no limit "
+                               "point was located (kind unknown)")
             if r.status == "time_limit":
                 timed_out = True
                 break
@@ -338,14 +352,15 @@ def imperfection_sensitivity(m: Manipulator, amplitudes, *, imperfection="asymme
     bifurcation = None if timed_out else _bifurcation(perfect)
     e, c, used = _law(amps, loads, kinds, perfect, bifurcation)
     done = sum(r is not None for r in results)
-    cut = [i for i in range(A) if statuses[i] != _NOT_COMPUTED and (results[i] is None or not results[i].success)]
+    cut = [i for i in range(A) if statuses[i] != _NOT_COMPUTED and (results[i] is None or not results[i].success
+                                                                     or kinds[i] == "unknown")]
     if timed_out and done < A or any(s == "time_limit" for s in statuses):
         status = "time_limit"
         message = f"the time limit ran out: {done} of {A} amplitudes computed"
     elif cut:
         status = "partial"
-        message = (f"{len(cut)} of {A} amplitudes without a limit: their paths were cut or could not be followed "
-                   f"(amplitudes {', '.join(f'{amps[i]:g}' for i in cut)})")
+        message = (f"{len(cut)} of {A} amplitudes of unknown kind: their paths were cut, could not be followed or "
+                   f"lost stability at no located limit point (amplitudes {', '.join(f'{amps[i]:g}' for i in cut)})")
     else:
         status = "complete"
         counts = {k: kinds.count(k) for k in KINDS if k in kinds}

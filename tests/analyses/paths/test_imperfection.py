@@ -177,3 +177,17 @@ def test_stability_boundary_says_which_curve_it_is():
     doc = to.stability_boundary.__doc__
     assert "imperfection_sensitivity" in doc and "imperfection sensitivity of a column" not in doc
     assert "imperfection_sensitivity" in to.StabilityBoundary.__doc__
+
+
+def test_a_path_without_a_located_limit_but_unstable_points_is_unknown():
+    """A very small pre-bend of the subcritical chain: its fold is so sharp that the continuation may step over it
+    onto unstable points; the curve then says it does not know (never "none", stable to max_load)."""
+    m = lib(SUBCRITICAL)
+    r = to.imperfection_sensitivity(m, [1e-4, 3e-4])
+    for lim, kind in zip(r.limit_loads, r.kinds):
+        if lim.kind == "none" and not np.all(lim.branch.stable):
+            assert kind == "unknown" and r.status == "partial" and "no limit point was located" in r.message + \
+                " ".join(r.messages)
+        else:
+            assert kind == lim.kind and kind in ("fold", "bifurcation")
+    assert r.kinds[1] == "fold"

@@ -45,8 +45,9 @@ class ImperfectionSensitivityOut:
         perfect_kind (ImperfectionSensitivityOutPerfectKind):
         perfect_load (float | None): the given chain's limit load
         status (ImperfectionSensitivityOutStatus): `complete`: every amplitude's path was followed to its limit point or
-            its end; `partial`: some amplitude's path was cut or its chain could not be followed (kind unknown);
-            `time_limit`: the time limit ran out before every amplitude was computed (those computed are kept)
+            its end; `partial`: some amplitude's path was cut, could not be followed or lost stability at no located limit
+            point (kind unknown); `time_limit`: the time limit ran out before every amplitude was computed (those computed
+            are kept)
         statuses (list[ImperfectionSensitivityOutStatusesItem]): per amplitude the limit load's status, failed (its
             chain could not be followed) or not_computed (time ran out before it)
         success (bool): whether it worked: `status` is one of complete
