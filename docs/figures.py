@@ -109,8 +109,8 @@ FIGURES = {f.__name__: f for f in (fig2_torque, fig4_landscape, fig4_landscape_q
 
 #: Every figure kind's default (``tensegrity-opt plot --help``), drawn by its command: ``default_<name>.png`` is
 #: ``tensegrity-opt plot <these arguments> -o default_<name>.png``, at the command's own resolution. ``map``,
-#: ``plan`` and ``simulation`` need their inputs (the examples of ``tensegrity-opt plot KIND --help``); the
-#: branch diagram also with ``--depth 2`` and on the axes of the paper's Fig. 6.
+#: ``imperfection``, ``plan`` and ``simulation`` need their inputs (the examples of ``tensegrity-opt plot KIND
+#: --help``); the branch diagram also with ``--depth 2`` and on the axes of the paper's Fig. 6.
 DEFAULTS = {
     "curve": ["curve"],
     "landscape": ["landscape"],
@@ -121,6 +121,7 @@ DEFAULTS = {
     "branch_depth2": ["branch", "--depth", "2"],
     "branch_fig6": ["branch", "--depth", "2", "--x", "dx", "--y", "fx"],
     "limit_load": ["limit-load"],
+    "imperfection": ["imperfection", "--amplitudes", "0", "0.005", "0.01", "0.02", "0.03", "0.04", "0.061"],
     "boundary": ["boundary"],
     "atlas": ["atlas"],
     "plan": ["plan", "--line", "7.9", "0.2", "7.3", "1.4", "13", "--margin", "0.05"],

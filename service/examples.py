@@ -257,6 +257,18 @@ LIMIT_LOAD = {'success': True,
  'branch_status': 'stability_loss',
  'branch_points': 12}
 
+#: ``/v1/imperfection-sensitivity``: the paper's chain, guided
+#: (``imperfection_sensitivity(m, [0, 0.01, 0.02851, 0.061])``, rounded).
+IMPERFECTION_SENSITIVITY = {
+    "success": True, "status": "complete", "message": "4 amplitudes: 3 fold, 1 bifurcation",
+    "imperfection": "asymmetry", "direction": [-1.0, 0.0], "boundary": "guided", "max_load": None,
+    "amplitudes": [0.0, 0.01, 0.02851, 0.061], "loads": [0.572793, 0.584089, 0.527429, 0.424701],
+    "kinds": ["bifurcation", "fold", "fold", "fold"], "statuses": ["stability_lost"] * 4,
+    "messages": ["stability is lost at a bifurcation at load 0.5727928",
+                 "stability is lost at a fold at load 0.5840895", "stability is lost at a fold at load 0.527429",
+                 "stability is lost at a fold at load 0.4247007"],
+    "perfect_load": 0.572793, "perfect_kind": "bifurcation", "bifurcation": "stable_symmetric", "law": None}
+
 #: ``/v1/stability-boundary``: the shape of ``StabilityBoundary.to_dict()`` (illustrative numbers).
 STABILITY_BOUNDARY = {
     "success": True, "status": "p_range", "message": "p up: p left [-0.1, 0.1]; p down: p left [-0.1, 0.1]",

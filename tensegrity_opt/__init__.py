@@ -35,6 +35,7 @@ from .analyses.paths.continuation import Tracker, solve_equilibria_batch
 from .analyses.paths.control import Control
 from .analyses.paths.curves import Curve, force_deflection
 from .analyses.paths.diagram import bifurcation_diagram, switch_branch
+from .analyses.paths.imperfection import ImperfectionSensitivity, imperfection_sensitivity
 from .analyses.paths.limit_load import LimitLoad, limit_arms, limit_load
 from .analyses.paths.simulation import Simulation, simulate
 from .applications.sweeps import CriticalLoadMap, SweepResult, critical_load_map, sweep
@@ -70,8 +71,9 @@ __all__ = [
     "Equilibrium", "EquilibriumSet", "Buckling", "Landscape",
     # loading paths
     "solve_equilibria_batch", "Tracker", "force_deflection", "Control", "trace_branch", "switch_branch",
-    "bifurcation_diagram", "limit_load", "limit_arms", "stability_boundary", "stability_atlas", "simulate",
-    "Curve", "Branch", "LimitLoad", "StabilityBoundary", "StabilityAtlas", "Simulation",
+    "bifurcation_diagram", "limit_load", "limit_arms", "imperfection_sensitivity", "stability_boundary",
+    "stability_atlas", "simulate",
+    "Curve", "Branch", "LimitLoad", "ImperfectionSensitivity", "StabilityBoundary", "StabilityAtlas", "Simulation",
     # design and control
     "maximize_critical_force", "preloads_for_pose", "preloads_for_critical_force", "preloads_for_stiffness",
     "plan_preloads", "PreloadController", "PreloadFollower", "load_capacity", "estimate_tip_force",

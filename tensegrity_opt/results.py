@@ -19,6 +19,7 @@ result                      returned by                                      rec
 :class:`Branch`             ``trace_branch``, ``switch_branch``,             :class:`BranchEvent`
                             ``bifurcation_diagram`` (a list)
 :class:`LimitLoad`          ``limit_load``                                   :class:`Branch`
+|ImperfectionSens|          ``imperfection_sensitivity``                     :class:`LimitLoad`
 :class:`StabilityBoundary`  ``stability_boundary``                           :class:`BoundaryPoint`
 :class:`StabilityAtlas`     ``stability_atlas``                              :class:`AtlasTarget`,
                                                                              :class:`AtlasCrossing`
@@ -37,6 +38,8 @@ result                      returned by                                      rec
 :class:`SweepResult`        ``sweep``
 :class:`CriticalLoadMap`    ``critical_load_map``
 ==========================  ===============================================  ======================================
+
+.. |ImperfectionSens| replace:: :class:`ImperfectionSensitivity`
 """
 
 from .analyses.design.active_bounds import ActiveBound
@@ -56,6 +59,7 @@ from .analyses.paths.boundaries import BoundaryPoint, StabilityBoundary
 from .analyses.paths.branches import Branch
 from .analyses.paths.curves import Curve, CurveEnd, Jump
 from .analyses.paths.events import BranchEvent
+from .analyses.paths.imperfection import ImperfectionSensitivity
 from .analyses.paths.limit_load import LimitLoad
 from .analyses.paths.simulation import Simulation, SimulationEvent
 from .applications.sweeps.critical_map import CriticalLoadMap
@@ -65,7 +69,8 @@ from .outcome import Outcome, SolverInfo
 __all__ = [
     "Outcome", "SolverInfo",
     "Equilibrium", "EquilibriumSet", "Buckling", "Mode", "Landscape",
-    "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "StabilityBoundary", "BoundaryPoint",
+    "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
+    "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent",
     "Design", "PreloadDesign", "StiffnessDesign", "ActiveBound", "PreloadPlan", "PreloadStep", "FollowerStep", "Snap",
     "LoadCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",

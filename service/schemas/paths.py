@@ -1,5 +1,5 @@
 """Models of the loading-path endpoints: ``/v1/rest-configurations``, ``/v1/branch``,
-``/v1/bifurcation-diagram``, ``/v1/limit-load`` and ``/v1/stability-boundary``.
+``/v1/bifurcation-diagram``, ``/v1/limit-load``, ``/v1/imperfection-sensitivity`` and ``/v1/stability-boundary``.
 
 A *control* says what the continuation parameter ``t`` moves (``tensegrity_opt.Control``): the tip
 along a line (``displacement``), a dead tip load (``load``), the paper's guided tip (``guided``: ``y``
@@ -18,7 +18,9 @@ from typing import Annotated, Any, Literal, Union
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 import tensegrity_opt as to
+from tensegrity_opt.analyses.paths.boundaries import PARAMETERS
 from tensegrity_opt.analyses.paths.events import EVENT_KINDS
+from tensegrity_opt.analyses.paths.imperfection import AMPLITUDE_STATUSES, BIFURCATIONS, KINDS
 
 from ..config import HARD_MAX_PATH_POINTS, HARD_MAX_SEGMENTS
 from .common import (
@@ -40,6 +42,8 @@ from .equilibrium import EquilibriumOut
 #: Most bifurcation switches (depth) and branches of one diagram.
 MAX_DEPTH = 6
 MAX_BRANCHES = 64
+#: Most amplitudes of one imperfection-sensitivity curve.
+MAX_AMPLITUDES = 64
 #: Largest |t| bound and |p| accepted (the units of the control: force or length).
 MAX_PARAMETER = MAX_FORCE
 
@@ -238,6 +242,35 @@ class LimitLoadRequest(_LimitLoadFields):
     include_branch: bool = Field(False, description="also return the traced path (`branch`)")
 
 
+class _ImperfectionFields(BaseModel):
+    model_config = ConfigDict(strict=True, extra="forbid")
+
+    manipulator: ManipulatorIn
+    amplitudes: list[Parameter] = Field(
+        min_length=1, max_length=MAX_AMPLITUDES,
+        description=f"the amplitudes p, computed in this order (1..{MAX_AMPLITUDES}; 0 is the given chain)")
+    imperfection: Literal[PARAMETERS] = Field(
+        "asymmetry", description="what p moves: asymmetry (every segment's rest lengths L1_0 + p, L2_0 - p: a "
+                                 "pre-bend), L0 (both + p), a, b, k (both springs)")
+    direction: Vec2 = Field([-1.0, 0.0], description="the load's direction (normalised; [-1, 0] compresses)")
+    boundary: Literal["free", "guided"] = Field(
+        "guided", description='"guided": y held at each imperfect chain\'s rest tip, Fx = t d_x; "free": F = t d')
+    max_load: Annotated[float, Field(gt=0, le=MAX_FORCE, allow_inf_nan=False)] | None = Field(
+        None, description="stop each path there (force units); default 100 k c^2 / (2b)")
+    max_points: MaxPoints = 4000
+
+
+class ImperfectionSensitivityRequest(_ImperfectionFields):
+    """The limit load of each imperfect chain's dead-load path from its rest shape, against the imperfection's
+    amplitude (`tensegrity_opt.imperfection_sensitivity`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": PAPER_CHAIN, "amplitudes": [0.0, 0.01, 0.02851, 0.061]}]})
+
+    include_limit_loads: bool = Field(False, description="also return each amplitude's limit load (`limit_loads`, "
+                                                         "as `/v1/limit-load` answers it) and `perfect`")
+
+
 class StabilityBoundaryRequest(BaseModel):
     """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.stability_boundary`)."""
 
@@ -331,6 +364,40 @@ class LimitLoadOut(outcome_model(to.LimitLoad)):
     branch_status: Literal[tuple(to.Branch.STATUSES)] = Field(description="how the traced path ended (its status)")
     branch_points: int
     branch: TracedBranchOut | None = Field(None, description="include_branch only: the traced path")
+
+
+class ImperfectionLawOut(BaseModel):
+    """The small-imperfection law `perfect_load - load = coefficient |p|^exponent` fitted at `amplitudes`."""
+
+    exponent: float
+    expected: float = Field(description="the classical exponent: 2/3 (unstable-symmetric), 1/2 (asymmetric)")
+    coefficient: float
+    amplitudes: list[float]
+
+
+class ImperfectionSensitivityOut(outcome_model(to.ImperfectionSensitivity)):
+    """The imperfection-sensitivity curve: per amplitude the limit load and its kind."""
+
+    imperfection: Literal[PARAMETERS]
+    direction: list[float]
+    boundary: Literal["free", "guided"]
+    max_load: float | None
+    amplitudes: list[float]
+    loads: list[float | None] = Field(description="the limit load per amplitude (a joint limit: the load where the "
+                                                  "stable path reaches it; null for kind none or unknown)")
+    kinds: list[Literal[KINDS]] = Field(description="fold, bifurcation, joint_limit, none (stable to max_load), "
+                                                    "unknown (the path was cut, or time ran out before it)")
+    statuses: list[Literal[AMPLITUDE_STATUSES]] = Field(
+        description="per amplitude the limit load's status, failed (its chain could not be followed) or "
+                    "not_computed (time ran out before it)")
+    messages: list[str]
+    perfect_load: float | None = Field(description="the given chain's limit load")
+    perfect_kind: Literal[KINDS]
+    bifurcation: Literal[tuple(BIFURCATIONS)] | None = Field(
+        description="the given chain's bifurcation by its buckled arms (null: its limit is not a bifurcation)")
+    law: ImperfectionLawOut | None = Field(description="the fitted small-imperfection law, where one applies")
+    limit_loads: list[LimitLoadOut | None] | None = Field(None, description="include_limit_loads only")
+    perfect: LimitLoadOut | None = Field(None, description="include_limit_loads only: the given chain's limit load")
 
 
 class CuspOut(BaseModel):

@@ -19,7 +19,14 @@ from . import common as s
 from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
 from .control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE, _PlanFields, _SimulationFields
 from .curves import CurveDeflections
-from .paths import MAX_BRANCHES, MAX_DEPTH, StabilityBoundaryRequest, _BranchFields, _LimitLoadFields
+from .paths import (
+    MAX_BRANCHES,
+    MAX_DEPTH,
+    StabilityBoundaryRequest,
+    _BranchFields,
+    _ImperfectionFields,
+    _LimitLoadFields,
+)
 
 #: Points per axis of a landscape figure by default (the data endpoint /v1/energy-landscape: 101).
 LANDSCAPE_FIGURE_GRID = 61
@@ -187,6 +194,14 @@ class PlotLimitLoadRequest(_PlotRequest, _LimitLoadFields):
     arms: bool = Field(True, description=(
         "at a bifurcation, also draw the buckled arms leaving it (to their first fold or joint limit) against the "
         "end angle phi; false: the path only, against the tip displacement along the load"))
+
+
+class PlotImperfectionRequest(_PlotRequest, _ImperfectionFields):
+    """The imperfection-sensitivity curve of `/v1/imperfection-sensitivity`: the limit load against the amplitude,
+    a marker per kind, the perfect chain's limit load as a line, the fitted small-imperfection law dashed."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": s.PAPER_CHAIN, "amplitudes": [0.0, 0.01, 0.02851, 0.061]}]})
 
 
 class PlotBoundaryRequest(_PlotRequest, StabilityBoundaryRequest):

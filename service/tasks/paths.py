@@ -1,5 +1,5 @@
-"""Tasks of the loading-path requests: rest configurations, branches, bifurcation diagrams, limit loads, stability
-boundaries, the stability atlas (inline and of a job).
+"""Tasks of the loading-path requests: rest configurations, branches, bifurcation diagrams, limit loads, imperfection
+sensitivity, stability boundaries, the stability atlas (inline and of a job).
 
 ``deadline`` is the soft ``time.monotonic()`` deadline of :func:`service.api.deps.path_deadline`: the computation
 stops there and answers what it has (``status: "time_limit"``) instead of a 504. The ``find_*`` tasks return the
@@ -20,7 +20,8 @@ from .. import schemas as s
 from ..adapters.inputs import branch_start, build_control, build_manipulator, control_kwargs, optional_array, values
 
 __all__ = ["seconds_left", "rest_configurations_task", "trace_branches", "bifurcation_diagram_task",
-           "find_limit_load", "find_limit_arms", "limit_load_task", "find_stability_boundary", "find_atlas",
+           "find_limit_load", "find_limit_arms", "limit_load_task", "find_imperfection_sensitivity",
+           "imperfection_sensitivity_task", "find_stability_boundary", "find_atlas",
            "find_job_atlas"]
 
 
@@ -84,6 +85,18 @@ def find_limit_arms(result: to.LimitLoad, deadline: float) -> list[to.Branch]:
 
 def limit_load_task(req: s.LimitLoadRequest, deadline: float) -> dict[str, Any]:
     return find_limit_load(req, deadline).to_dict(include_branch=req.include_branch)
+
+
+def find_imperfection_sensitivity(req: Any, deadline: float) -> to.ImperfectionSensitivity:
+    m = build_manipulator(req.manipulator)
+    _continuable(m)
+    return to.imperfection_sensitivity(m, req.amplitudes, imperfection=req.imperfection, direction=req.direction,
+                                       boundary=req.boundary, max_load=req.max_load, max_points=req.max_points,
+                                       timeout=seconds_left(deadline))
+
+
+def imperfection_sensitivity_task(req: s.ImperfectionSensitivityRequest, deadline: float) -> dict[str, Any]:
+    return find_imperfection_sensitivity(req, deadline).to_dict(include_limit_loads=req.include_limit_loads)
 
 
 def find_stability_boundary(req: Any, deadline: float) -> Any:

@@ -24,6 +24,7 @@ from ..schemas import plots as ps
 from .control import find_plan, find_simulation
 from .paths import (
     find_atlas,
+    find_imperfection_sensitivity,
     find_job_atlas,
     find_limit_arms,
     find_limit_load,
@@ -32,9 +33,9 @@ from .paths import (
 )
 
 __all__ = ["plot_curve_task", "plot_landscape_task", "plot_shapes_task", "plot_torque_task", "plot_map_task",
-           "plot_branch_task", "plot_limit_load_task", "plot_boundary_task", "plot_atlas_task", "plot_job_atlas_task",
-           "plot_plan_task", "plot_simulation_task", "FIGURE_TASKS", "FIGURE_ANALYSIS", "figure_steps",
-           "figure_job_task", "figure_request"]
+           "plot_branch_task", "plot_limit_load_task", "plot_imperfection_task", "plot_boundary_task",
+           "plot_atlas_task", "plot_job_atlas_task", "plot_plan_task", "plot_simulation_task", "FIGURE_TASKS",
+           "FIGURE_ANALYSIS", "figure_steps", "figure_job_task", "figure_request"]
 
 
 def _rendered(draw: Callable[..., Any]) -> Callable[..., bytes]:
@@ -118,6 +119,13 @@ def plot_limit_load_task(req: ps.PlotLimitLoadRequest, deadline: float) -> Any:
 
 
 @_rendered
+def plot_imperfection_task(req: ps.PlotImperfectionRequest, deadline: float) -> Any:
+    from tensegrity_opt.applications import plots
+
+    return plots.plot_imperfection(find_imperfection_sensitivity(req, deadline), build_manipulator(req.manipulator))
+
+
+@_rendered
 def plot_boundary_task(req: ps.PlotBoundaryRequest, deadline: float) -> Any:
     from tensegrity_opt.applications import plots
 
@@ -172,6 +180,7 @@ FIGURE_TASKS: dict[str, tuple[Any, Callable[..., bytes], bool]] = {
     "map": (ps.PlotMapRequest, plot_map_task, False),
     "branch": (ps.PlotBranchRequest, plot_branch_task, True),
     "limit-load": (ps.PlotLimitLoadRequest, plot_limit_load_task, True),
+    "imperfection": (ps.PlotImperfectionRequest, plot_imperfection_task, True),
     "boundary": (ps.PlotBoundaryRequest, plot_boundary_task, True),
     "atlas": (ps.PlotAtlasGridRequest, plot_atlas_task, True),
     "plan": (ps.PlotPlanRequest, plot_plan_task, True),

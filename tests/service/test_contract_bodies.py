@@ -18,7 +18,8 @@ SCHEMAS = SPEC["components"]["schemas"]
 BODIES = {
     "EquilibriumOut": to.Equilibrium, "EquilibriaOut": to.EquilibriumSet, "BucklingOut": to.Buckling,
     "EnergyLandscapeOut": to.Landscape, "ForceDeflectionOut": to.Curve, "TracedBranchOut": to.Branch,
-    "LimitLoadOut": to.LimitLoad, "StabilityBoundaryOut": to.StabilityBoundary, "AtlasOut": to.StabilityAtlas,
+    "LimitLoadOut": to.LimitLoad, "ImperfectionSensitivityOut": to.ImperfectionSensitivity,
+    "StabilityBoundaryOut": to.StabilityBoundary, "AtlasOut": to.StabilityAtlas,
     "SimulationOut": to.Simulation, "DesignOut": to.Design, "PreloadsOut": to.PreloadDesign,
     "StiffnessDesignOut": to.StiffnessDesign, "PlanOut": to.PreloadPlan, "LoadCapacityOut": to.LoadCapacity,
     "ForceEstimateOut": to.ForceEstimate, "CurveEndOut": results.CurveEnd, "PlanStepOut": results.PreloadStep,

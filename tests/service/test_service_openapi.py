@@ -44,19 +44,21 @@ def test_every_operation_is_documented():
                 ("/v1/design/critical-force", "post"), ("/v1/design/preloads", "post"),
                 ("/v1/design/preloads-for-load", "post"),
                 ("/v1/rest-configurations", "post"), ("/v1/branch", "post"), ("/v1/bifurcation-diagram", "post"),
-                ("/v1/limit-load", "post"), ("/v1/stability-boundary", "post"),
+                ("/v1/limit-load", "post"), ("/v1/imperfection-sensitivity", "post"),
+                ("/v1/stability-boundary", "post"),
                 ("/v1/atlas", "post"),
                 ("/v1/control/plan", "post"), ("/v1/control/simulate", "post"), ("/v1/control/force-estimate", "post"),
                 ("/v1/control/stiffness", "post"), ("/v1/control/load-capacity", "post"),
                 *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map", "branch",
-                                                             "limit-load", "boundary", "atlas", "plan", "simulation")),
+                                                             "limit-load", "imperfection", "boundary", "atlas", "plan",
+                                                             "simulation")),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
                 ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/cancel", "post"),
                 ("/v1/jobs/{job_id}/results", "get"), ("/v1/jobs/{job_id}/atlas", "get"),
                 ("/v1/jobs/{job_id}/figure", "get"),
                 *((f"/v1/plots/{kind}/job", "post") for kind in ("curve", "landscape", "shapes", "torque", "map",
-                                                                 "branch", "limit-load", "boundary", "atlas", "plan",
-                                                                 "simulation"))}
+                                                                 "branch", "limit-load", "imperfection", "boundary",
+                                                                 "atlas", "plan", "simulation"))}
     assert set(ops) == expected
     ids = [op["operationId"] for op in ops.values()]
     assert len(ids) == len(set(ids))

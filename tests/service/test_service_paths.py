@@ -264,6 +264,7 @@ def test_the_time_limit_answers_the_points_so_far(monkeypatch):
     ("/v1/plots/branch", {"manipulator": PAPER, "start": STRAIGHT, "control": GUIDED, "t_max": 2.0, "depth": 1,
                           "max_points": 100, "x": "q1", "y": "t"}),
     ("/v1/plots/limit-load", {"manipulator": PAPER, "boundary": "guided", "start": STRAIGHT}),
+    ("/v1/plots/imperfection", {"manipulator": {"n": 2, "a": 1.5}, "amplitudes": [0.0, 3e-4, 1e-3, 3e-3]}),
 ])
 def test_path_figures_answer_png_and_svg(client, path, body):
     r = client.post(path, json=body)
@@ -275,9 +276,32 @@ def test_path_figures_answer_png_and_svg(client, path, body):
 def test_the_new_operations_are_documented(client):
     doc = client.get("/openapi.json").json()
     for path in ("/v1/rest-configurations", "/v1/branch", "/v1/bifurcation-diagram", "/v1/limit-load",
-                 "/v1/stability-boundary"):
+                 "/v1/imperfection-sensitivity", "/v1/stability-boundary"):
         op = doc["paths"][path]["post"]
         assert op["tags"] == ["paths"] and op["requestBody"]["content"]["application/json"]["examples"]
         assert op["responses"]["200"]["content"]["application/json"]["example"]
-    for kind in ("branch", "limit-load", "boundary"):
+    for kind in ("branch", "limit-load", "imperfection", "boundary"):
         assert doc["paths"][f"/v1/plots/{kind}"]["post"]["tags"] == ["plots"]
+
+
+def test_imperfection_sensitivity_is_the_library_curve(client):
+    """The paper chain guided at the two amplitudes of the stability boundary's comparison: the folds of the
+    imperfect arms (0.52743, 0.42470), not the fixed-guide fold curve (0.615908, 0.6424)."""
+    body = {"manipulator": PAPER, "amplitudes": [0.0, 0.02851, 0.061]}
+    got = post_ok(client, "/v1/imperfection-sensitivity", body)
+    want = to.imperfection_sensitivity(M, [0.0, 0.02851, 0.061])
+    assert got == body_of(want.to_dict())
+    s.ImperfectionSensitivityOut.model_validate(got)
+    assert got["kinds"] == ["bifurcation", "fold", "fold"] and got["bifurcation"] == "stable_symmetric"
+    assert got["loads"] == pytest.approx([GUIDED_LOADS[0], 0.52743, 0.42470], abs=1e-5)
+    got = post_ok(client, "/v1/imperfection-sensitivity", {**body, "boundary": "free", "max_load": 0.2,
+                                                             "include_limit_loads": True})
+    want = to.imperfection_sensitivity(M, [0.0, 0.02851, 0.061], boundary="free", max_load=0.2)
+    assert got == body_of(want.to_dict(include_limit_loads=True))
+    assert got["loads"][1:] == [None, None] and got["kinds"][1:] == ["none", "none"]
+    s.ImperfectionSensitivityOut.model_validate(got)
+    for extra, field in (({"amplitudes": []}, "amplitudes"), ({"amplitudes": [0.1] * 65}, "amplitudes"),
+                         ({"imperfection": "bend"}, "imperfection"), ({"boundary": "wall"}, "boundary")):
+        check_error(client.post("/v1/imperfection-sensitivity", json={**body, **extra}), "validation_error", field)
+    r = client.post("/v1/imperfection-sensitivity", json={**body, "amplitudes": [2.0]})
+    assert check_error(r, "invalid_parameter", "amplitudes")

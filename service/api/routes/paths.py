@@ -1,4 +1,5 @@
-"""Loading paths: rest configurations, equilibrium branches, bifurcation diagrams, limit loads, stability boundaries."""
+"""Loading paths: rest configurations, equilibrium branches, bifurcation diagrams, limit loads, imperfection
+sensitivity, stability boundaries."""
 
 from __future__ import annotations
 
@@ -13,6 +14,7 @@ from ...config import Settings
 from ...tasks.paths import (
     bifurcation_diagram_task,
     find_stability_boundary,
+    imperfection_sensitivity_task,
     limit_load_task,
     rest_configurations_task,
     trace_branches,
@@ -144,11 +146,39 @@ async def limit_load(
 
 
 @router.post(
+    "/imperfection-sensitivity", operation_id="imperfection_sensitivity", response_model=s.ImperfectionSensitivityOut,
+    summary="The limit load an imperfect arm reaches, against the imperfection's amplitude",
+    description="Koiter's imperfection-sensitivity curve (`tensegrity_opt.imperfection_sensitivity`): for each "
+                "amplitude `p` the chain made imperfect (`asymmetry`: every segment's rest lengths `L1_0 + p`, "
+                "`L2_0 - p`) and the limit load of its dead-load path from its own rest shape, as `/v1/limit-load` "
+                "computes it (guided: the guide through its rest tip): `loads` and `kinds` (`fold`, `bifurcation`, "
+                "`joint_limit`, `none`, `unknown`). `bifurcation` classifies the given chain's bifurcation by its "
+                "buckled arms and `law` is the small-imperfection law fitted where one applies (the 2/3 power of an "
+                "unstable-symmetric bifurcation). Not the fold curve of `/v1/stability-boundary`, whose guide stays "
+                "fixed. " + _CONTINUATION,
+    responses=solve_responses(ex.IMPERFECTION_SENSITIVITY, "continuation_too_long", "too_many_points",
+                              "response_too_large"))
+async def imperfection_sensitivity(
+    request: Request,
+    req: Annotated[s.ImperfectionSensitivityRequest, Body(openapi_examples={
+        "guided": {"summary": "the paper's chain, guided: folds below the critical load 0.572793", "value": {
+            "manipulator": _M, "amplitudes": [0.0, 0.01, 0.02851, 0.061]}},
+        "subcritical": {"summary": "two segments a = 1.5, guided: the 2/3-power drop", "value": {
+            "manipulator": {"n": 2, "a": 1.5, "b": 1.0, "k": 1.0, "L0": 1.0},
+            "amplitudes": [0.0003, 0.001, 0.003, 0.01]}}})],
+    settings: SettingsDep,
+) -> Any:
+    return await _follow(request, imperfection_sensitivity_task, req, settings, LIMIT_LOAD_ALIASES)
+
+
+@router.post(
     "/stability-boundary", operation_id="stability_boundary", response_model=s.StabilityBoundaryOut,
     summary="The curve of folds or branch points over a second parameter",
     description="Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the "
-                "critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`) "
-                "followed as `parameter` moves from `p_min` to `p_max`, with its cusps. " + _CONTINUATION,
+                "critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind` says "
+                "which curve) followed as `parameter` moves from `p_min` to `p_max`, with its cusps; the control's "
+                "references stay fixed (a guide at the start's tip). The limit load an imperfect arm reaches from "
+                "its rest shape is `/v1/imperfection-sensitivity`. " + _CONTINUATION,
     responses=solve_responses(ex.STABILITY_BOUNDARY, "continuation_too_long", "too_many_points",
                               "response_too_large"))
 async def stability_boundary(

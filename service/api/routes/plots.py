@@ -1,4 +1,5 @@
-"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,boundary,atlas,plan,simulation}``
+"""Figures: ``POST /v1/plots/{curve,landscape,shapes,torque,map,branch,limit-load,imperfection,boundary,atlas,plan,
+simulation}``
 answering PNG or SVG.
 
 One table, :data:`FIGURES`, declares every figure kind (its request, examples, words, limits, task and placement);
@@ -303,6 +304,18 @@ FIGURES: tuple[Figure, ...] = (
         examples={
             "guided": {"summary": "the paper's chain, guided: the bifurcation at 0.572793", "value": {
                 "manipulator": _M, "direction": [-1.0, 0.0], "boundary": "guided", "start": _STRAIGHT}}}),
+    Figure(
+        "imperfection", ps.PlotImperfectionRequest, task=tasks.plot_imperfection_task, limits=_limit_load,
+        continuation=True, placement=Placement.HEAVY,
+        summary="Figure: the imperfection-sensitivity curve, limit load against the imperfection's amplitude",
+        description="The limit loads of `/v1/imperfection-sensitivity` against the amplitude, a marker per kind "
+                    "(fold, bifurcation, joint limit; no limit and unknown at the bottom), the perfect chain's limit "
+                    "load as a line and the fitted small-imperfection law dashed where one applies. " + _PARTIAL
+                    + _FORMATS,
+        responses=image_responses("continuation_too_long", "too_many_points"),
+        examples={
+            "guided": {"summary": "the paper's chain, guided", "value": {
+                "manipulator": _M, "amplitudes": [0.0, 0.005, 0.01, 0.02, 0.03, 0.04, 0.061]}}}),
     Figure(
         "boundary", ps.PlotBoundaryRequest, task=tasks.plot_boundary_task, limits=check_path, continuation=True,
         placement=Placement.HEAVY,

@@ -1,5 +1,5 @@
 """Loading paths: continuation (natural and arclength), events, bifurcation diagrams, force-deflection curves,
-limit loads, stability boundaries, the stability atlas, quasi-static simulation.
+limit loads, imperfection sensitivity, stability boundaries, the stability atlas, quasi-static simulation.
 
 One module per concept, around one path system (:mod:`tensegrity_opt.numerics.path_system`) and one arclength
 engine (:mod:`.branches`):
@@ -18,6 +18,8 @@ engine (:mod:`.branches`):
   (:class:`~.curves.Curve`);
 * :mod:`.limit_load` - :func:`~.limit_load.limit_load` (:class:`~.limit_load.LimitLoad`) and
   :func:`~.limit_load.limit_arms`, the buckled arms leaving a bifurcation;
+* :mod:`.imperfection` - :func:`~.imperfection.imperfection_sensitivity`
+  (:class:`~.imperfection.ImperfectionSensitivity`), the limit load of the imperfect chain against the imperfection;
 * :mod:`.boundaries` - :func:`~.boundaries.stability_boundary` (:class:`~.boundaries.StabilityBoundary`);
 * :mod:`.atlas` - :func:`~.atlas.stability_atlas` (:class:`~.atlas.StabilityAtlas`);
 * :mod:`.simulation` and :mod:`.descent` - :func:`~.simulation.simulate`, the quasi-static simulation with its

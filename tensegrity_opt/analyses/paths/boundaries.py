@@ -3,7 +3,9 @@
 :func:`stability_boundary` follows the first point where a branch loses stability (a fold or a branch
 point of :func:`~tensegrity_opt.analyses.paths.branches.trace_branch`) as a second parameter ``p`` moves the
 chain along a direction in its parameter space (:data:`PARAMETERS`: a preload asymmetry, both rest
-lengths, ``a``, ``b``, the stiffness, or any direction of the ``6n`` numbers).
+lengths, ``a``, ``b``, the stiffness, or any direction of the ``6n`` numbers). These are curves of singular
+points with the control's references fixed; the limit load an imperfect arm reaches when loaded from its own
+rest shape is :func:`~tensegrity_opt.analyses.paths.imperfection.imperfection_sensitivity`.
 
 * **Folds** are continued by pseudo-arclength on the Moore-Spence system in ``Y = (z, t, phi, p)``::
 
@@ -12,8 +14,8 @@ lengths, ``a``, ``b``, the stiffness, or any direction of the ``6n`` numbers).
   (``2N + 1`` equations, ``2N + 2`` unknowns: a curve), predictor along the null vector of its Jacobian,
   Newton corrector on the bordered system, adaptive step. This system stays regular where a
   symmetry-breaking parameter (``"asymmetry"``) unfolds a pitchfork of the straight chain: the curve
-  passes through the branch point, whose projection on ``(p, t)`` is a **cusp** (the fold load of a
-  pre-bent arm tends to the critical load like ``|p|^(2/3)``). Cusps are marked where the fold's
+  passes through the branch point, whose projection on ``(p, t)`` is a **cusp** (the fold load tends to the
+  critical load like ``|p|^(2/3)`` near it). Cusps are marked where the fold's
   quadratic coefficient ``u . R_zz[phi, phi]`` (``u`` the left null vector, oriented continuously)
   changes sign, located by Brent's method along the curve.
 * **Branch points** persist only by symmetry (the straight symmetric chain under a symmetric
@@ -46,7 +48,7 @@ from .control import Control, as_control
 from .events import BranchEvent
 from .problem import NEWTON_TOL, PathProblem
 
-__all__ = ["StabilityBoundary", "BoundaryPoint", "stability_boundary", "parameter_direction", "PARAMETERS"]
+__all__ = ["StabilityBoundary", "BoundaryPoint", "stability_boundary", "parameter_direction", "chain_at", "PARAMETERS"]
 
 #: Named parameter directions: ``p`` is added to these entries of every segment.
 PARAMETERS = ("asymmetry", "L0", "a", "b", "k")
@@ -97,6 +99,15 @@ def _chain_at(m: Manipulator, dp: np.ndarray, p: float) -> Manipulator:
                        for a, b, k1, k2, l1, l2 in zip(*(v[k] for k in ("a", "b", "k1", "k2", "L10", "L20"))))
 
 
+def chain_at(m: Manipulator, parameter, p: float) -> Manipulator:
+    """The chain ``m`` moved by ``p`` along a parameter (a name of :data:`PARAMETERS` or a direction, as
+    :func:`parameter_direction`): for ``"asymmetry"`` every segment's rest lengths become ``L1_0 + p`` and
+    ``L2_0 - p`` (a symmetric segment of rest length ``L0``: ``L0 + p``, ``L0 - p``, pre-bent towards its
+    shorter spring). ``p = 0`` is ``m`` itself; :func:`stability_boundary` and
+    :func:`~.imperfection.imperfection_sensitivity` move the chain this way."""
+    return _chain_at(m, parameter_direction(m, parameter)[1], float(p))
+
+
 @dataclass(frozen=True)
 class BoundaryPoint:
     """A special point of a boundary (a cusp): the parameter, the load, the configuration. A fact about the
@@ -124,7 +135,9 @@ class StabilityBoundary(Outcome):
     Attributes
     ----------
     kind : str
-        ``"fold"`` or ``"branch_point"``.
+        Which curve it is: ``"fold"`` (a fold continued by the Moore-Spence system) or ``"branch_point"`` (a
+        branch point kept by symmetry). Neither is the imperfection-sensitivity curve of an arm loaded from its
+        rest shape (:func:`~.imperfection.imperfection_sensitivity`).
     parameter : str
         Its name (or ``"direction"``); ``parameter_direction`` the 6n direction, in the order of
         :attr:`Manipulator.params <tensegrity_opt.Manipulator.params>` (:func:`parameter_direction`).
@@ -338,6 +351,14 @@ def stability_boundary(m: Manipulator, control: Control | str = "guided", parame
                        **control_kw) -> StabilityBoundary:
     """The first stability-losing fold or branch point of a branch, continued in a second parameter ``p``.
 
+    The curve is the singular point itself, followed in ``p`` (:attr:`StabilityBoundary.kind`: ``"fold"`` or
+    ``"branch_point"``), with the control's references fixed where they are at ``p = 0`` and the branch found at
+    ``p = 0`` only. With ``parameter="asymmetry"`` and the guided load on the straight chain it is the curve of
+    the fold where the branch bent *against* the pre-bend is born (guide fixed at ``y = 0``, start straight):
+    loading the imperfect arm from its rest shape never reaches it. It is not the limit load an imperfect arm
+    carries: that is :func:`~.imperfection.imperfection_sensitivity` (the dead-load path from the rest shape of
+    each imperfect chain, the guide through its rest tip).
+
     Parameters
     ----------
     m : Manipulator
@@ -346,8 +367,7 @@ def stability_boundary(m: Manipulator, control: Control | str = "guided", parame
         The one-parameter control whose branch loses stability (:class:`~.branches.Control`; default the
         guided compression of the paper). Keywords of its constructor in ``control_kw``. Its references
         stay where they are at ``p = 0`` while ``p`` moves: a guide or wall through the start's tip (``y = 0``
-        for the straight chain: the imperfection sensitivity of a column in a fixed guide), a held tip at
-        the start's position.
+        for the straight chain), a held tip at the start's position.
     parameter : str or array_like (6n,) or (6, n)
         ``"asymmetry"`` (``L1_0 = L0 + p``, ``L2_0 = L0 - p`` on every segment: a pre-bend), ``"L0"``
         (both rest lengths ``+ p``), ``"a"``, ``"b"``, ``"k"`` (both springs), or a direction in the

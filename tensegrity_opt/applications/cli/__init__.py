@@ -1,5 +1,5 @@
-"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|boundary|atlas|plan|
-simulate|force-estimate|plot|sweep ...``.
+"""Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|imperfection|boundary|
+atlas|plan|simulate|force-estimate|plot|sweep ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
@@ -162,7 +162,7 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
 
 #: The command groups of the top help, in order; a command in none of them is listed under "more".
 GROUPS = (("equilibria", ("buckling", "equilibrium", "equilibria", "curve", "rest")),
-          ("loading paths", ("branch", "limit-load", "boundary", "atlas")),
+          ("loading paths", ("branch", "limit-load", "imperfection", "boundary", "atlas")),
           ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "load-capacity")),
           ("figures", ("plot",)), ("parameter sweeps", ("sweep",)), ("HTTP service", SERVICE_COMMANDS))
 

@@ -1,11 +1,13 @@
-"""Command line loading paths and the stability atlas: ``tensegrity-opt rest|branch|limit-load|boundary|atlas ...``.
+"""Command line loading paths and the stability atlas: ``tensegrity-opt rest|branch|limit-load|imperfection|boundary|
+atlas ...``.
 
-:func:`add_path_parsers` adds the five commands to the ``tensegrity-opt`` parser; each sets
+:func:`add_path_parsers` adds the six commands to the ``tensegrity-opt`` parser; each sets
 ``func(args, m) -> (data, text)`` like the other analysis commands (a table, or with ``--json`` the
 result's ``to_dict()``: the body of ``/v1/rest-configurations``, ``/v1/branch`` (``/v1/bifurcation-diagram``
-with ``--depth``), ``/v1/limit-load``, ``/v1/stability-boundary``, ``/v1/atlas``). The control, start and
-atlas options (:func:`add_control_options`, :func:`add_start_options`, :func:`add_atlas_options`) are shared
-with ``plot branch|limit-load|boundary|atlas`` (:mod:`.plot`).
+with ``--depth``), ``/v1/limit-load``, ``/v1/imperfection-sensitivity``, ``/v1/stability-boundary``,
+``/v1/atlas``). The control, start, imperfection and atlas options (:func:`add_control_options`,
+:func:`add_start_options`, :func:`add_imperfection_options`, :func:`add_atlas_options`) are shared with
+``plot branch|limit-load|imperfection|boundary|atlas`` (:mod:`.plot`).
 
 Examples::
 
@@ -13,6 +15,8 @@ Examples::
     tensegrity-opt branch --control guided --t-max 2 --start-q 0 0 0 0
     tensegrity-opt branch --control guided --t-max 2 --t-min -0.2 --start-q 0 0 0 0 --depth 1 --json
     tensegrity-opt limit-load --boundary free --direction -1 0
+    tensegrity-opt imperfection --amplitudes 0 0.01 0.02851 0.061
+    tensegrity-opt imperfection --n 2 --a 1.5 --amplitudes 3e-4 1e-3 3e-3 --json
     tensegrity-opt boundary --parameter asymmetry --p-min -0.05 --p-max 0.05
     tensegrity-opt atlas --n 3 --a 0.5 --dx 0.2 1.4 7 --dy -0.6 0.6 7
     tensegrity-opt atlas --n 3 --a 0.5 --dx 0.2 1.4 3 --dy 0 0.6 3 --method homotopy --no-edges --json
@@ -29,10 +33,11 @@ import numpy as np
 from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.equilibria.rest import find_equilibria_under_force
 from ...analyses.paths.atlas import AtlasTarget, StabilityAtlas, stability_atlas
-from ...analyses.paths.boundaries import stability_boundary
+from ...analyses.paths.boundaries import PARAMETERS, stability_boundary
 from ...analyses.paths.branches import Branch, trace_branch
 from ...analyses.paths.control import Control
 from ...analyses.paths.diagram import bifurcation_diagram
+from ...analyses.paths.imperfection import imperfection_sensitivity
 from ...analyses.paths.limit_load import limit_load
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
@@ -51,8 +56,9 @@ from .common import (
 from .progress import Progress, equilibria_summary
 
 __all__ = ["add_path_parsers", "add_control_options", "add_start_options", "add_limit_load_options",
-           "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args",
-           "limit_load_from_args", "boundary_from_args", "add_atlas_options", "atlas_from_args", "CONTROL_KINDS"]
+           "add_boundary_options", "control_from_args", "start_from_args", "branches_from_args", "limit_load_from_args",
+           "boundary_from_args", "add_imperfection_options", "imperfection_from_args", "add_atlas_options",
+           "atlas_from_args", "CONTROL_KINDS"]
 
 CONTROL_KINDS = ("displacement", "load", "guided", "wall", "preload")
 
@@ -122,6 +128,23 @@ def add_limit_load_options(sp: argparse.ArgumentParser) -> None:
     sp.add_argument("--max-points", type=at_least_two, default=4000, help="at most this many points on the path")
     sp.add_argument("--timeout", type=positive_float, default=None,
                     help="seconds; then the path so far (reason time_limit)")
+
+
+def add_imperfection_options(sp: argparse.ArgumentParser) -> None:
+    sp.add_argument("--amplitudes", type=finite_float, nargs="+", required=True, metavar="P",
+                    help="the imperfection's amplitudes p, computed in this order (0: the given chain)")
+    sp.add_argument("--imperfection", choices=PARAMETERS, default="asymmetry",
+                    help="what p moves: asymmetry (every segment's rest lengths L1_0 + p, L2_0 - p: a pre-bend), "
+                         "L0, a, b, k")
+    sp.add_argument("--boundary", choices=("free", "guided"), default="guided",
+                    help="guided: y held at each imperfect chain's rest tip, Fx = t d_x; free: F = t d")
+    sp.add_argument("--direction", type=finite_float, nargs=2, default=[-1.0, 0.0], metavar=("DX", "DY"),
+                    help="the load's direction (normalised; -1 0 compresses)")
+    sp.add_argument("--max-load", type=positive_float, default=None,
+                    help="stop each path at this load (force); default 100 k c^2 / (2b)")
+    sp.add_argument("--max-points", type=at_least_two, default=4000, help="at most this many points per path")
+    sp.add_argument("--timeout", type=positive_float, default=None,
+                    help="seconds for the whole curve; then the amplitudes done (status time_limit)")
 
 
 def add_boundary_options(sp: argparse.ArgumentParser) -> None:
@@ -216,6 +239,12 @@ def limit_load_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
                       timeout=args.timeout)
 
 
+def imperfection_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
+    return imperfection_sensitivity(m, args.amplitudes, imperfection=args.imperfection, direction=args.direction,
+                                    boundary=args.boundary, max_load=args.max_load, max_points=args.max_points,
+                                    timeout=args.timeout)
+
+
 def boundary_from_args(args: argparse.Namespace, m: Manipulator) -> Any:
     fn = stability_boundary
     kw = _control_kw(args)
@@ -292,6 +321,22 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]
     return (lambda: r.to_dict(include_branch=args.include_branch)), "\n".join(lines)
 
 
+def _cmd_imperfection(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    r = imperfection_from_args(args, m)
+    lines = [f"Imperfection sensitivity ({r.imperfection}), {r.boundary} tip, load along {fmt_q(r.direction)}, "
+             f"n = {m.n}: status {r.status}" + ("" if r.success else " (incomplete)"),
+             "perfect chain: " + (f"{r.perfect_kind} at P = {r.perfect_load:.7f}" if r.perfect_load is not None
+                                  else r.perfect_kind)
+             + ("" if r.bifurcation is None else f" ({r.bifurcation.replace('_', '-')})"),
+             f"{'#':>4} {'p':>12} {'load':>12} {'kind':<12} status"]
+    for i, (p, load, kind, st) in enumerate(zip(r.amplitudes, r.loads, r.kinds, r.statuses)):
+        lines.append(f"{i:>4} {p:>12.7g} {'-' if np.isnan(load) else f'{load:.7f}':>12} {kind:<12} {st}")
+    if r.law_exponent is not None:
+        lines.append(f"small-imperfection law: P_c - P = {r.law_coefficient:.5g} |p|^{r.law_exponent:.4f} "
+                     f"(expected exponent {r.law_expected:.4g})")
+    return (lambda: r.to_dict(include_limit_loads=args.include_limit_loads)), "\n".join(lines)
+
+
 def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     b = boundary_from_args(args, m)
     p, t = np.asarray(b.p, float), np.asarray(b.t, float)
@@ -343,8 +388,8 @@ def _cmd_atlas(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
 
 
 def add_path_parsers(subparsers: Any) -> None:
-    """Add ``rest``, ``branch``, ``limit-load``, ``boundary`` and ``atlas`` to ``subparsers`` (``add_subparsers()``'s
-    result)."""
+    """Add ``rest``, ``branch``, ``limit-load``, ``imperfection``, ``boundary`` and ``atlas`` to ``subparsers``
+    (``add_subparsers()``'s result)."""
 
     sp = add_command(subparsers, "rest", _cmd_rest, "rest configurations, or every equilibrium under a dead tip load")
     sp.add_argument("--fx", type=finite_float, default=0.0, help="dead tip load along x (force; < 0 compresses)")
@@ -365,6 +410,13 @@ def add_path_parsers(subparsers: Any) -> None:
     add_limit_load_options(sp)
     sp.add_argument("--include-branch", action="store_true", help="with --json: also the traced path")
     only_with(sp, ["--include-branch"], "--json")
+
+    sp = add_command(subparsers, "imperfection", _cmd_imperfection,
+                     "the imperfection-sensitivity curve: the limit load of the imperfect chain from its rest shape "
+                     "against the imperfection's amplitude")
+    add_imperfection_options(sp)
+    sp.add_argument("--include-limit-loads", action="store_true", help="with --json: also each amplitude's limit load")
+    only_with(sp, ["--include-limit-loads"], "--json")
 
     sp = add_command(subparsers, "boundary", _cmd_boundary,
                      "a stability boundary: the folds or branch points over a second parameter")

@@ -1,5 +1,5 @@
-"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map|branch|limit-load|boundary|atlas|
-plan|simulation ... -o fig.png|fig.svg``.
+"""Command line figures: ``tensegrity-opt plot curve|landscape|shapes|torque|map|branch|limit-load|imperfection|
+boundary|atlas|plan|simulation ... -o fig.png|fig.svg``.
 
 :func:`add_plot_parser` adds the ``plot`` subcommand to the ``tensegrity-opt`` parser
 (:func:`tensegrity_opt.applications.cli.build_parser`). Every kind takes the manipulator options of the
@@ -23,12 +23,13 @@ Examples::
     tensegrity-opt plot branch --control guided --t-max 2 --start-q 0 0 0 0 --depth 1 --x q1 --y t -o diagram.svg
     tensegrity-opt plot limit-load --boundary guided --start-q 0 0 0 0 -o limit.png
     tensegrity-opt plot limit-load --no-arms -o path.png
+    tensegrity-opt plot imperfection --amplitudes 0 0.005 0.01 0.02 0.04 0.061 -o imperfection.png
     tensegrity-opt plot boundary --parameter asymmetry -o boundary.png
     tensegrity-opt plot atlas --n 3 --a 0.5 --dx 0.2 1.4 7 --dy -0.6 0.6 7 -o atlas.png
     tensegrity-opt plot plan --line 7.9 0.2 7.3 1.4 13 --margin 0.05 -o plan.png
     tensegrity-opt plot simulation --n 3 --a 0.5 --load-cycle 0.3 --steps 121 -o loop.svg
 
-The loading-path kinds take the options of the ``branch``, ``limit-load`` and ``boundary`` commands,
+The loading-path kinds take the options of the ``branch``, ``limit-load``, ``imperfection`` and ``boundary`` commands,
 ``atlas`` those of the ``atlas`` command (:mod:`.paths`), ``plan`` and ``simulation`` those of the ``plan`` and
 ``simulate`` commands (:mod:`.control`).
 """
@@ -67,17 +68,19 @@ from .paths import (
     add_atlas_options,
     add_boundary_options,
     add_branch_options,
+    add_imperfection_options,
     add_limit_load_options,
     atlas_from_args,
     boundary_from_args,
     branches_from_args,
+    imperfection_from_args,
     limit_load_from_args,
 )
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
-KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "boundary", "atlas", "plan",
-         "simulation")
+KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "imperfection", "boundary", "atlas",
+         "plan", "simulation")
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
                   "direction), phi (end angle q1 + ... + qn), energy, s (arclength) or q1..qn (a joint angle)")
@@ -211,6 +214,15 @@ def _cmd_limit_load(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str,
                                                        "t_end": float(a.t[-1])} for a in arms]})
 
 
+def _cmd_imperfection(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    plots = _plots()
+    r = imperfection_from_args(args, m)
+    fig = plots.plot_imperfection(r, m)
+    return _render(args, fig, "imperfection", {"amplitudes": int(r.amplitudes.size), "status": r.status,
+                                               "kinds": list(r.kinds), "bifurcation": r.bifurcation,
+                                               "law_exponent": r.law_exponent})
+
+
 def _cmd_boundary(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     b = boundary_from_args(args, m)
@@ -267,6 +279,8 @@ _RESULT_KINDS = (
      _add_branch_plot_options, _cmd_branch),
     ("limit-load", "the load path of a limit load, the limit point and quasi-buckling load marked, at a "
      "bifurcation the buckled arms", _add_limit_load_plot_options, _cmd_limit_load),
+    ("imperfection", "the imperfection-sensitivity curve: the limit load against the amplitude, a marker per kind, "
+     "the fitted small-imperfection law", add_imperfection_options, _cmd_imperfection),
     ("boundary", "a stability boundary: critical t against the second parameter, cusps marked", add_boundary_options,
      _cmd_boundary),
     ("atlas", "the stability atlas: stable equilibria over (dx, dy), switch and branch-end curves", add_atlas_options,

@@ -41,6 +41,9 @@ equilibria)
                             (stable solid, unstable dashed), folds / branch points / joint limits marked
 :func:`plot_limit_load`     the load path of :func:`~tensegrity_opt.limit_load` (load against the tip
 (``LimitLoad``)             displacement along it), the limit point and the quasi-buckling load marked
+:func:`plot_imperfection`   the imperfection-sensitivity curve of :func:`~tensegrity_opt.imperfection_sensitivity`
+(imperfection curve)        (limit load against the amplitude), a marker per kind, the perfect chain's limit
+                            load as a line, the fitted small-imperfection law dashed
 :func:`plot_boundary`       a stability boundary (critical ``t`` against the second parameter ``p``, in
 (``StabilityBoundary``)     its unit), cusps marked
 :func:`plot_atlas`          the stability atlas of :func:`~tensegrity_opt.stability_atlas`: the number of
@@ -129,6 +132,7 @@ from .paths import (
     plot_atlas,
     plot_boundary,
     plot_branches,
+    plot_imperfection,
     plot_limit_load,
 )
 from .style import (
@@ -144,11 +148,11 @@ from .style import (
     save,
 )
 
-__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "plot_branches",
-           "plot_limit_load", "plot_boundary", "plot_atlas", "plot_preload_plan", "plot_simulation", "save",
-           "render", "new_figure", "chain_geometry", "chain_label", "curve_breaks", "jump_kind", "jump_label",
-           "landscape_region", "physical_range", "segment_label", "stiffness_text", "torque_zeros",
-           "distinct_segments", "branch_quantity_label", "boundary_parameter_label", "morse_color", "FORMATS", "DPI",
-           "STABILITY_COLORS", "MAP_PARAMS", "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT", "MARGIN_UNIT", "JUMP_STYLES",
-           "BRANCH_QUANTITIES", "BRANCH_DEFAULT_X", "BRANCH_DEFAULT_Y", "BRANCH_CROP", "BOUNDARY_PARAMETER_LABELS",
-           "LIMIT_ARMS_X", "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES", "CONTROL_STYLES", "PLAN_STYLES"]
+__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "plot_branches", "plot_limit_load",
+           "plot_imperfection", "plot_boundary", "plot_atlas", "plot_preload_plan", "plot_simulation", "save", "render",
+           "new_figure", "chain_geometry", "chain_label", "curve_breaks", "jump_kind", "jump_label", "landscape_region",
+           "physical_range", "segment_label", "stiffness_text", "torque_zeros", "distinct_segments",
+           "branch_quantity_label", "boundary_parameter_label", "morse_color", "FORMATS", "DPI", "STABILITY_COLORS",
+           "MAP_PARAMS", "PARAM_LABELS", "FORCE_UNIT", "ENERGY_UNIT", "MARGIN_UNIT", "JUMP_STYLES", "BRANCH_QUANTITIES",
+           "BRANCH_DEFAULT_X", "BRANCH_DEFAULT_Y", "BRANCH_CROP", "BOUNDARY_PARAMETER_LABELS", "LIMIT_ARMS_X",
+           "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES", "CONTROL_STYLES", "PLAN_STYLES"]

@@ -1,5 +1,5 @@
-"""Figures of loading paths: branch diagrams, the load path of a limit load, stability boundaries and the
-workspace stability atlas of the held tip."""
+"""Figures of loading paths: branch diagrams, the load path of a limit load, the imperfection-sensitivity curve,
+stability boundaries and the workspace stability atlas of the held tip."""
 
 from __future__ import annotations
 
@@ -12,14 +12,16 @@ import numpy as np
 from ...analyses.paths.atlas import StabilityAtlas
 from ...analyses.paths.boundaries import StabilityBoundary
 from ...analyses.paths.branches import Branch, BranchEvent, Control
+from ...analyses.paths.imperfection import ImperfectionSensitivity
 from ...analyses.paths.limit_load import LimitLoad
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from .style import ENERGY_UNIT, FORCE_UNIT, chain_label, legend_beside, new_figure, number_text
 
-__all__ = ["plot_branches", "plot_limit_load", "plot_boundary", "plot_atlas", "branch_quantity_label",
-           "boundary_parameter_label", "morse_color", "BRANCH_QUANTITIES", "BRANCH_DEFAULT_X", "BRANCH_DEFAULT_Y",
-           "BRANCH_CROP", "LIMIT_ARMS_X", "BOUNDARY_PARAMETER_LABELS", "MORSE_COLORS", "EVENT_STYLES", "ATLAS_STYLES"]
+__all__ = ["plot_branches", "plot_limit_load", "plot_imperfection", "plot_boundary", "plot_atlas",
+           "branch_quantity_label", "boundary_parameter_label", "morse_color", "BRANCH_QUANTITIES", "BRANCH_DEFAULT_X",
+           "BRANCH_DEFAULT_Y", "BRANCH_CROP", "LIMIT_ARMS_X", "BOUNDARY_PARAMETER_LABELS", "MORSE_COLORS",
+           "EVENT_STYLES", "ATLAS_STYLES", "IMPERFECTION_STYLES"]
 
 
 # ---------------------------------------------------------------------------- loading paths
@@ -491,6 +493,85 @@ def plot_limit_load(result: LimitLoad, m: Manipulator, *, arms: Branch | Sequenc
     if arm_list:
         head += f"\nthe path and the buckled arm{'s' if len(arm_list) > 1 else ''} leaving the branch point"
     ax.set_title(f"{head}\n{chain_label(m)}", fontsize=9)
+    return fig
+
+
+#: Marker style of each kind of limit on the imperfection-sensitivity curve (``"none"`` and ``"unknown"`` have no
+#: load: they are marked on the axis, at the bottom).
+IMPERFECTION_STYLES = {
+    "fold": {"marker": "D", "ms": 6.0, "mfc": "tab:red", "mec": "black", "label": "fold (snap-through)"},
+    "bifurcation": {"marker": "o", "ms": 7.0, "mfc": "white", "mec": "black", "mew": 1.4, "label": "bifurcation"},
+    "joint_limit": {"marker": "X", "ms": 7.5, "mfc": "0.35", "mec": "black",
+                    "label": "joint limit (stable to it)"},
+    "none": {"marker": "^", "ms": 7.0, "mfc": "tab:green", "mec": "black", "label": "no limit up to max_load"},
+    "unknown": {"marker": "s", "ms": 6.0, "mfc": "white", "mec": "0.5", "label": "unknown (path cut)"},
+}
+
+
+def plot_imperfection(result: ImperfectionSensitivity, m: Manipulator | None = None, *,
+                      figsize: tuple[float, float] = (8.4, 4.8)) -> Any:
+    """The imperfection-sensitivity curve of :func:`~tensegrity_opt.imperfection_sensitivity`: the limit load
+    against the amplitude, a marker per kind (:data:`IMPERFECTION_STYLES`; amplitudes without a load at the
+    bottom of the axes), the perfect chain's limit load as a horizontal line, and where a small-imperfection law
+    applies the fitted ``P_c - C |p|^e`` dashed over the amplitudes' range.
+
+    Artists (``gid``): ``"curve"`` (the loads joined in amplitude order), ``"kind-<kind>"``, ``"perfect-load"``,
+    ``"law"``.
+    """
+    if not isinstance(result, ImperfectionSensitivity):
+        raise InvalidParameterError(f"plot_imperfection needs an ImperfectionSensitivity, got "
+                                    f"{type(result).__name__}", field="result")
+    from matplotlib.lines import Line2D
+
+    p = np.asarray(result.amplitudes, float)
+    loads = np.asarray(result.loads, float)
+    kinds = np.asarray(result.kinds)
+    order = np.argsort(p, kind="stable")
+    fig = new_figure(figsize)
+    ax = fig.subplots()
+    handles, labels = [], []
+    has = np.isfinite(loads[order])
+    line, = ax.plot(p[order][has], loads[order][has], color="0.55", lw=1.0, zorder=2)
+    line.set_gid("curve")
+    pc = result.perfect_load
+    if pc is not None:
+        lev = ax.axhline(float(pc), color="tab:blue", ls="-", lw=1.0, alpha=0.7, zorder=1)
+        lev.set_gid("perfect-load")
+        handles.append(Line2D([], [], color="tab:blue", lw=1.0))
+        labels.append(f"perfect chain: {result.perfect_kind} at P = {float(pc):.6g}")
+    finite = loads[np.isfinite(loads)]
+    bottom = float(min(finite.min(), pc if pc is not None else finite.min())) if finite.size else 0.0
+    for kind, style in IMPERFECTION_STYLES.items():
+        sel = kinds == kind
+        if not sel.any():
+            continue
+        kw = {k: v for k, v in style.items() if k != "label"}
+        y = np.where(np.isfinite(loads[sel]), loads[sel], bottom)
+        pt, = ax.plot(p[sel], y, ls="none", zorder=6, clip_on=False, **kw)
+        pt.set_gid(f"kind-{kind}")
+        handles.append(Line2D([], [], ls="none", **kw))
+        labels.append(f"{style['label']} ({int(sel.sum())})")
+    if result.law_exponent is not None and pc is not None:
+        e, c = float(result.law_exponent), float(result.law_coefficient)
+        side = np.sign(result.law_amplitudes[0])
+        on = p[np.sign(p) == side]
+        a = np.linspace(0.0, float(np.max(np.abs(on))), 200)
+        law, = ax.plot(side * a, float(pc) - c * a ** e, color="tab:purple", ls="--", lw=1.2, zorder=3)
+        law.set_gid("law")
+        handles.append(Line2D([], [], color="tab:purple", ls="--", lw=1.2))
+        what = (result.bifurcation or "").replace("_", "-")
+        labels.append(f"{what} law: $P_c - {c:.3g}\\,|p|^{{{e:.3f}}}$ (expected {result.law_expected:.3g})")
+    ax.set_xlabel(boundary_parameter_label(str(result.imperfection)).replace("parameter", "amplitude", 1)
+                  if result.imperfection != "asymmetry" else
+                  "imperfection amplitude $p$: $L_{1,0} + p$, $L_{2,0} - p$ on every segment (length)")
+    ax.set_ylabel(f"limit load $P$ (force, {FORCE_UNIT})")
+    ax.grid(True, lw=0.4, alpha=0.5)
+    legend_beside(ax, handles, labels)
+    d = np.asarray(result.direction, float)
+    incomplete = "" if result.success else f" (incomplete: {result.status})"
+    head = (f"Imperfection sensitivity{incomplete}: the imperfect arm's limit load\n"
+            f"{result.boundary} tip, load along ({d[0]:.3g}, {d[1]:.3g})")
+    ax.set_title(head + (f"\n{chain_label(m)}" if m is not None else ""), fontsize=9)
     return fig
 
 

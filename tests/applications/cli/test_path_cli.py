@@ -1,5 +1,5 @@
-"""The loading-path commands: ``rest``, ``branch``, ``limit-load``, ``boundary`` and
-``plot branch|limit-load|boundary``.
+"""The loading-path commands: ``rest``, ``branch``, ``limit-load``, ``imperfection``, ``boundary`` and
+``plot branch|limit-load|imperfection|boundary``.
 
 ``--json`` prints the library's ``to_dict()`` (the body of the HTTP API for the same request); errors are one
 line on stderr and exit status 2; every option has its help with the default.
@@ -68,6 +68,20 @@ def test_limit_load_prints_the_quasi_buckling_load_and_stiffness(tmp_path, capsy
             f"load {want.quasi_buckling_stiffness:.7g}") in capsys.readouterr().out
 
 
+def test_imperfection_table_json_and_figure(capsys, tmp_path):
+    argv = ["imperfection", "--amplitudes", "0", "0.02851", "0.061"]
+    assert main(argv) == 0
+    out = capsys.readouterr().out
+    assert "bifurcation at P = 0.5727928 (stable-symmetric)" in out and "0.5274290" in out and "0.4247007" in out
+    got = run_json(capsys, [*argv, "--include-limit-loads"])
+    want = to.imperfection_sensitivity(M, [0.0, 0.02851, 0.061])
+    assert got == json.loads(json.dumps(want.to_dict(include_limit_loads=True)))
+    info = run_json(capsys, ["plot", "imperfection", "--n", "2", "--a", "1.5", "--amplitudes", "3e-4", "1e-3", "3e-3",
+                             "-o", str(tmp_path / "i.png")])
+    assert info["bifurcation"] == "unstable_symmetric" and info["law_exponent"] == pytest.approx(2 / 3, abs=0.02)
+    assert (tmp_path / "i.png").read_bytes()[:4] == b"\x89PNG"
+
+
 @pytest.mark.slow
 def test_plot_kinds_write_png_and_svg(tmp_path, capsys):
     writes_png_and_svg(main, [["plot", "branch", "--control", "guided", "--t-max", "2", *STRAIGHT, "--y", "fy"],
@@ -126,8 +140,8 @@ def test_boundary_command(capsys, tmp_path):
 def test_every_option_of_the_path_commands_has_help_and_its_default(capsys):
     sub = next(a for a in build_parser()._actions if isinstance(a, argparse._SubParsersAction))
     plot = next(a for a in sub.choices["plot"]._actions if isinstance(a, argparse._SubParsersAction))
-    parsers = {cmd: sub.choices[cmd] for cmd in ("rest", "branch", "limit-load", "boundary")}
-    parsers.update({f"plot {k}": plot.choices[k] for k in ("branch", "limit-load", "boundary")})
+    parsers = {cmd: sub.choices[cmd] for cmd in ("rest", "branch", "limit-load", "imperfection", "boundary")}
+    parsers.update({f"plot {k}": plot.choices[k] for k in ("branch", "limit-load", "imperfection", "boundary")})
     for name, p in parsers.items():
         opts = [a for a in p._actions if a.option_strings and a.dest != "help"]
         assert [a.dest for a in opts if not a.help] == [], name
@@ -147,6 +161,7 @@ def test_every_option_of_the_path_commands_has_help_and_its_default(capsys):
     (["branch", *STRAIGHT, "--start-dy", "0.1"], "--start-dy", "--start-dx"),
     (["branch", *STRAIGHT, "--max-branches", "3"], "--max-branches", "--depth"),
     (["limit-load", "--include-branch"], "--include-branch", "--json"),
+    (["imperfection", "--amplitudes", "0.01", "--include-limit-loads"], "--include-limit-loads", "--json"),
     (["plot", "branch", "--normal", "0", "1", "-o", "x.png"], "--normal", "--control wall"),
 ])
 def test_options_for_another_mode_are_refused(argv, first, second, capsys):

@@ -312,3 +312,27 @@ def test_an_incomplete_boundary_says_so(boundary):
     b = dataclasses.replace(boundary, status="time_limit")
     assert not b.success
     assert "incomplete: time_limit" in plots.plot_boundary(b, PAPER).axes[0].get_title()
+
+
+def test_imperfection_curve_marks_each_kind_the_perfect_load_and_the_law(tmp_path):
+    """Two segments a = 1.5 under the guided load: the perfect chain's bifurcation at 35/6 as the line, the folds
+    of the imperfect chains as markers on their loads, the fitted 2/3-power law dashed through them."""
+    m = to.Manipulator.uniform(2, a=1.5, b=1.0, k=1.0, L0=1.0)
+    res = to.imperfection_sensitivity(m, [0.0, 3e-4, 1e-3, 3e-3, -1e-3])
+    fig = plots.plot_imperfection(res, m)
+    assert gid(fig, "perfect-load").get_ydata()[0] == pytest.approx(35.0 / 6.0, rel=1e-9)
+    folds = gid(fig, "kind-fold").get_xydata()
+    assert sorted(map(tuple, folds)) == sorted(zip(res.amplitudes[1:], res.loads[1:]))
+    assert gid(fig, "kind-bifurcation").get_xydata()[0] == pytest.approx([0.0, 35.0 / 6.0])
+    law = gid(fig, "law")
+    assert law.get_linestyle() == "--"
+    x, y = law.get_xdata(), law.get_ydata()
+    assert np.all(x >= 0) and y[0] == pytest.approx(35.0 / 6.0)
+    assert np.interp(3e-3, x, y) == pytest.approx(res.loads[3], rel=2e-3)        # the law through the folds
+    assert "unstable-symmetric" in " ".join(legend_texts(fig, beside=True, count=1))
+    free = to.imperfection_sensitivity(PAPER, [0.0, 0.01], boundary="free", max_load=0.2)
+    fig2 = plots.plot_imperfection(free, PAPER)
+    assert "law" not in gids(fig2, "law") and gid(fig2, "kind-none").get_xydata()[0, 0] == pytest.approx(0.01)
+    check_renders(fig, tmp_path, "imperfection")
+    with pytest.raises(InvalidParameterError):
+        plots.plot_imperfection(to.limit_load(m, (-1.0, 0.0), "guided"), m)

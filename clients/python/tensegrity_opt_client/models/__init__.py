@@ -78,6 +78,18 @@ from .force_estimate_request import ForceEstimateRequest
 from .get_job_results_format_type_0 import GetJobResultsFormatType0
 from .guided_control_in import GuidedControlIn
 from .health import Health
+from .imperfection_law_out import ImperfectionLawOut
+from .imperfection_sensitivity_out import ImperfectionSensitivityOut
+from .imperfection_sensitivity_out_bifurcation_type_0 import ImperfectionSensitivityOutBifurcationType0
+from .imperfection_sensitivity_out_boundary import ImperfectionSensitivityOutBoundary
+from .imperfection_sensitivity_out_imperfection import ImperfectionSensitivityOutImperfection
+from .imperfection_sensitivity_out_kinds_item import ImperfectionSensitivityOutKindsItem
+from .imperfection_sensitivity_out_perfect_kind import ImperfectionSensitivityOutPerfectKind
+from .imperfection_sensitivity_out_status import ImperfectionSensitivityOutStatus
+from .imperfection_sensitivity_out_statuses_item import ImperfectionSensitivityOutStatusesItem
+from .imperfection_sensitivity_request import ImperfectionSensitivityRequest
+from .imperfection_sensitivity_request_boundary import ImperfectionSensitivityRequestBoundary
+from .imperfection_sensitivity_request_imperfection import ImperfectionSensitivityRequestImperfection
 from .job_created import JobCreated
 from .job_created_analysis import JobCreatedAnalysis
 from .job_created_status import JobCreatedStatus
@@ -144,6 +156,10 @@ from .plot_branch_request_stop_at_type_0 import PlotBranchRequestStopAtType0
 from .plot_curve_request import PlotCurveRequest
 from .plot_curve_request_branch import PlotCurveRequestBranch
 from .plot_curve_request_format_type_0 import PlotCurveRequestFormatType0
+from .plot_imperfection_request import PlotImperfectionRequest
+from .plot_imperfection_request_boundary import PlotImperfectionRequestBoundary
+from .plot_imperfection_request_format_type_0 import PlotImperfectionRequestFormatType0
+from .plot_imperfection_request_imperfection import PlotImperfectionRequestImperfection
 from .plot_landscape_request import PlotLandscapeRequest
 from .plot_landscape_request_format_type_0 import PlotLandscapeRequestFormatType0
 from .plot_limit_load_request import PlotLimitLoadRequest
@@ -308,6 +324,18 @@ __all__ = (
     "GetJobResultsFormatType0",
     "GuidedControlIn",
     "Health",
+    "ImperfectionLawOut",
+    "ImperfectionSensitivityOut",
+    "ImperfectionSensitivityOutBifurcationType0",
+    "ImperfectionSensitivityOutBoundary",
+    "ImperfectionSensitivityOutImperfection",
+    "ImperfectionSensitivityOutKindsItem",
+    "ImperfectionSensitivityOutPerfectKind",
+    "ImperfectionSensitivityOutStatus",
+    "ImperfectionSensitivityOutStatusesItem",
+    "ImperfectionSensitivityRequest",
+    "ImperfectionSensitivityRequestBoundary",
+    "ImperfectionSensitivityRequestImperfection",
     "JobCreated",
     "JobCreatedAnalysis",
     "JobCreatedStatus",
@@ -374,6 +402,10 @@ __all__ = (
     "PlotCurveRequest",
     "PlotCurveRequestBranch",
     "PlotCurveRequestFormatType0",
+    "PlotImperfectionRequest",
+    "PlotImperfectionRequestBoundary",
+    "PlotImperfectionRequestFormatType0",
+    "PlotImperfectionRequestImperfection",
     "PlotLandscapeRequest",
     "PlotLandscapeRequestFormatType0",
     "PlotLimitLoadRequest",

@@ -88,8 +88,10 @@ def sync_detailed(
     """The curve of folds or branch points over a second parameter
 
      Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
-    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
-    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind` says
+    which curve) followed as `parameter` moves from `p_min` to `p_max`, with its cusps; the control's
+    references stay fixed (a guide at the start's tip). The limit load an imperfect arm reaches from its
+    rest shape is `/v1/imperfection-sensitivity`. Pseudo-arclength continuation
     (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
     `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
@@ -127,8 +129,10 @@ def sync(
     """The curve of folds or branch points over a second parameter
 
      Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
-    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
-    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind` says
+    which curve) followed as `parameter` moves from `p_min` to `p_max`, with its cusps; the control's
+    references stay fixed (a guide at the start's tip). The limit load an imperfect arm reaches from its
+    rest shape is `/v1/imperfection-sensitivity`. Pseudo-arclength continuation
     (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
     `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
@@ -161,8 +165,10 @@ async def asyncio_detailed(
     """The curve of folds or branch points over a second parameter
 
      Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
-    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
-    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind` says
+    which curve) followed as `parameter` moves from `p_min` to `p_max`, with its cusps; the control's
+    references stay fixed (a guide at the start's tip). The limit load an imperfect arm reaches from its
+    rest shape is `/v1/imperfection-sensitivity`. Pseudo-arclength continuation
     (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
     `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
@@ -198,8 +204,10 @@ async def asyncio(
     """The curve of folds or branch points over a second parameter
 
      Two-parameter continuation (`tensegrity_opt.analyses.paths.boundaries.stability_boundary`): the
-    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind`)
-    followed as `parameter` moves from `p_min` to `p_max`, with its cusps. Pseudo-arclength continuation
+    critical `t` of the one-parameter branches under `control` (a fold or a branch point: `kind` says
+    which curve) followed as `parameter` moves from `p_min` to `p_max`, with its cusps; the control's
+    references stay fixed (a guide at the start's tip). The limit load an imperfect arm reaches from its
+    rest shape is `/v1/imperfection-sensitivity`. Pseudo-arclength continuation
     (`tensegrity_opt.analyses.paths.branches`): chains of up to 64 segments (longer: 422
     `invalid_parameter` on `manipulator.n`); `max_points` up to the server's
     `TENSEGRITY_MAX_PATH_POINTS` (default 5000; above: 422 `too_many_points`). The computation stops
