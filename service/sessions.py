@@ -99,12 +99,13 @@ class InverseSession(Session):
         super().__init__(m)
         self.controller = PreloadController(
             m, req.start, load=tuple(req.load), bounds=None if req.bounds is None else tuple(req.bounds),
-            rate_limit=req.rate_limit, margin=req.margin, objective=req.objective, weights=req.weights)
+            rate_limit=req.rate_limit, margin=req.margin, objective=req.objective, weights=req.weights,
+            on_infeasible=req.on_infeasible)
 
     def opened(self) -> dict[str, Any]:
         c = self.controller
-        return {"n": self.m.n, "q": numbers(c.q), "rest_lengths": [numbers(p) for p in c.ell.reshape(c.n, 2)],
-                "load": numbers(c.load)}
+        return {"n": self.m.n, "q": numbers(c.q), "command": [numbers(p) for p in c.ell.reshape(c.n, 2)],
+                "load": numbers(c.load), "on_infeasible": c.on_infeasible}
 
     def step(self, msg: s.InverseStep) -> dict[str, Any]:
         return self.controller.step(msg.target, load=msg.load, end_angle=msg.end_angle).to_dict()
