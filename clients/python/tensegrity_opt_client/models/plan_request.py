@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 
 from ..models.plan_request_objective import PlanRequestObjective
+from ..models.plan_request_on_infeasible import PlanRequestOnInfeasible
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -38,12 +39,16 @@ class PlanRequest:
         objective (PlanRequestObjective | Unset): change: least change from the previous step (compiled Newton, IPOPT
             where a bound is active); margin: largest margin; energy: least spring energy (IPOPT) Default:
             PlanRequestObjective.CHANGE.
+        on_infeasible (PlanRequestOnInfeasible | Unset): what an infeasible step commands: hold (the previous command;
+            the arm stays, under the step's load) or approach (the rest lengths of the admissible pose nearest to the
+            target, within the bounds, the rate limit and the margin: the arm moves toward the target and catches up when it
+            is in reach) Default: PlanRequestOnInfeasible.HOLD.
         rate_limit (float | list[float] | None | Unset): largest change of each rest length per step (length units): a
             number or 2n numbers; default none
         start (None | StartQ | Unset): {"q": [...]}: the configuration with the chain's rest lengths under the first
             load; null: the equilibrium under it reached from the least-energy rest configuration
         verify (bool | Unset): verify every step by the forward quasi-static solve from the previous step's
-            configuration (`verified`) Default: True.
+            configuration with its command (`verified`) Default: True.
         weights (list[list[float]] | None | Unset): weights [w1, w2] of each segment's rest-length changes in the least-
             change objective (n pairs, > 0); default 1
     """
@@ -55,6 +60,7 @@ class PlanRequest:
     loads: list[float] | list[list[float]] | None | Unset = UNSET
     margin: float | Unset = 0.001
     objective: PlanRequestObjective | Unset = PlanRequestObjective.CHANGE
+    on_infeasible: PlanRequestOnInfeasible | Unset = PlanRequestOnInfeasible.HOLD
     rate_limit: float | list[float] | None | Unset = UNSET
     start: None | StartQ | Unset = UNSET
     verify: bool | Unset = True
@@ -131,6 +137,10 @@ class PlanRequest:
         if not isinstance(self.objective, Unset):
             objective = self.objective.value
 
+        on_infeasible: str | Unset = UNSET
+        if not isinstance(self.on_infeasible, Unset):
+            on_infeasible = self.on_infeasible.value
+
         rate_limit: float | list[float] | None | Unset
         if isinstance(self.rate_limit, Unset):
             rate_limit = UNSET
@@ -181,6 +191,8 @@ class PlanRequest:
             field_dict["margin"] = margin
         if objective is not UNSET:
             field_dict["objective"] = objective
+        if on_infeasible is not UNSET:
+            field_dict["on_infeasible"] = on_infeasible
         if rate_limit is not UNSET:
             field_dict["rate_limit"] = rate_limit
         if start is not UNSET:
@@ -334,6 +346,13 @@ class PlanRequest:
         else:
             objective = PlanRequestObjective(_objective)
 
+        _on_infeasible = d.pop("on_infeasible", UNSET)
+        on_infeasible: PlanRequestOnInfeasible | Unset
+        if isinstance(_on_infeasible, Unset):
+            on_infeasible = UNSET
+        else:
+            on_infeasible = PlanRequestOnInfeasible(_on_infeasible)
+
         def _parse_rate_limit(data: object) -> float | list[float] | None | Unset:
             if data is None:
                 return data
@@ -400,6 +419,7 @@ class PlanRequest:
             loads=loads,
             margin=margin,
             objective=objective,
+            on_infeasible=on_infeasible,
             rate_limit=rate_limit,
             start=start,
             verify=verify,

@@ -7,6 +7,7 @@ from attrs import define as _attrs_define
 
 from ..models.plot_plan_request_format_type_0 import PlotPlanRequestFormatType0
 from ..models.plot_plan_request_objective import PlotPlanRequestObjective
+from ..models.plot_plan_request_on_infeasible import PlotPlanRequestOnInfeasible
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -42,12 +43,16 @@ class PlotPlanRequest:
         objective (PlotPlanRequestObjective | Unset): change: least change from the previous step (compiled Newton,
             IPOPT where a bound is active); margin: largest margin; energy: least spring energy (IPOPT) Default:
             PlotPlanRequestObjective.CHANGE.
+        on_infeasible (PlotPlanRequestOnInfeasible | Unset): what an infeasible step commands: hold (the previous
+            command; the arm stays, under the step's load) or approach (the rest lengths of the admissible pose nearest to
+            the target, within the bounds, the rate limit and the margin: the arm moves toward the target and catches up
+            when it is in reach) Default: PlotPlanRequestOnInfeasible.HOLD.
         rate_limit (float | list[float] | None | Unset): largest change of each rest length per step (length units): a
             number or 2n numbers; default none
         start (None | StartQ | Unset): {"q": [...]}: the configuration with the chain's rest lengths under the first
             load; null: the equilibrium under it reached from the least-energy rest configuration
         verify (bool | Unset): verify every step by the forward quasi-static solve from the previous step's
-            configuration (`verified`) Default: True.
+            configuration with its command (`verified`) Default: True.
         weights (list[list[float]] | None | Unset): weights [w1, w2] of each segment's rest-length changes in the least-
             change objective (n pairs, > 0); default 1
     """
@@ -61,6 +66,7 @@ class PlotPlanRequest:
     loads: list[float] | list[list[float]] | None | Unset = UNSET
     margin: float | Unset = 0.001
     objective: PlotPlanRequestObjective | Unset = PlotPlanRequestObjective.CHANGE
+    on_infeasible: PlotPlanRequestOnInfeasible | Unset = PlotPlanRequestOnInfeasible.HOLD
     rate_limit: float | list[float] | None | Unset = UNSET
     start: None | StartQ | Unset = UNSET
     verify: bool | Unset = True
@@ -147,6 +153,10 @@ class PlotPlanRequest:
         if not isinstance(self.objective, Unset):
             objective = self.objective.value
 
+        on_infeasible: str | Unset = UNSET
+        if not isinstance(self.on_infeasible, Unset):
+            on_infeasible = self.on_infeasible.value
+
         rate_limit: float | list[float] | None | Unset
         if isinstance(self.rate_limit, Unset):
             rate_limit = UNSET
@@ -201,6 +211,8 @@ class PlotPlanRequest:
             field_dict["margin"] = margin
         if objective is not UNSET:
             field_dict["objective"] = objective
+        if on_infeasible is not UNSET:
+            field_dict["on_infeasible"] = on_infeasible
         if rate_limit is not UNSET:
             field_dict["rate_limit"] = rate_limit
         if start is not UNSET:
@@ -373,6 +385,13 @@ class PlotPlanRequest:
         else:
             objective = PlotPlanRequestObjective(_objective)
 
+        _on_infeasible = d.pop("on_infeasible", UNSET)
+        on_infeasible: PlotPlanRequestOnInfeasible | Unset
+        if isinstance(_on_infeasible, Unset):
+            on_infeasible = UNSET
+        else:
+            on_infeasible = PlotPlanRequestOnInfeasible(_on_infeasible)
+
         def _parse_rate_limit(data: object) -> float | list[float] | None | Unset:
             if data is None:
                 return data
@@ -441,6 +460,7 @@ class PlotPlanRequest:
             loads=loads,
             margin=margin,
             objective=objective,
+            on_infeasible=on_infeasible,
             rate_limit=rate_limit,
             start=start,
             verify=verify,
