@@ -144,6 +144,10 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     E = np.asarray(plan.tip_error, float).reshape(K)
     line, = ax_e.plot(steps, E, marker=marker, ms=3.5, zorder=3, **PLAN_STYLES["tip-error"])
     line.set_gid("tip-error")
+    # from zero; a floor a thousandth of the workspace's size keeps the roundoff of on-target steps flat at zero
+    size = float(np.abs(np.asarray(plan.targets, float)).max(initial=0.0))
+    top = float(np.nanmax(E)) if K and np.any(np.isfinite(E)) else 0.0
+    ax_e.set_ylim(0.0, max(1.08 * top, 1e-3 * max(size, 1e-12)))
     handles.append(Line2D([], [], **PLAN_STYLES["tip-error"]))
     labels.append("tip error |tip - target|")
     _step_spans(ax_r, bad, "infeasible-rest")
