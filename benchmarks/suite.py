@@ -973,8 +973,8 @@ def case11(cfg: Config) -> list[Row]:
             base_s.append(time.perf_counter() - t0)
         st = ctl2.step(traj[k])
         if k in sub:
-            agree.append(max(float(np.abs(d.preloads.ravel() - st.rest_lengths.ravel()).max()),
-                             float(np.abs(r.x[m.n:] - st.rest_lengths.ravel()).max())))
+            agree.append(max(float(np.abs(d.preloads.ravel() - st.command.ravel()).max()),
+                             float(np.abs(r.x[m.n:] - st.command.ravel()).max())))
     o = median_ms(ts)
     note = (f"paper chain n=4 under F = {F.tolist()}, {K} tip poses on an arc (0.3 x 0.6): {methods.count('newton')} "
             f"steps by the compiled Newton step, {methods.count('ipopt')} by IPOPT, {methods.count('none')} "

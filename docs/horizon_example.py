@@ -45,7 +45,7 @@ def step_by_step_commands(plan) -> np.ndarray:
 
 def main() -> dict:
     targets, loads = case()
-    sbs = plan_preloads(M, targets, loads=loads, rate_limit=RATE, margin=MARGIN)
+    sbs = plan_preloads(M, targets, loads=loads, rate_limit=RATE, dt=1.0, margin=MARGIN)
     hz = plan_horizon(M, targets, horizon=HORIZON, loads=loads, rate=RATE, margin=MARGIN)
     rest0 = np.column_stack([M.L1_0, M.L2_0])
     steps = np.arange(K)

@@ -101,14 +101,14 @@ class InverseSession(Session):
         self.controller = PreloadController(
             m, req.start, rest_lengths0=req.rest_lengths0, load=tuple(req.load),
             bounds=None if req.bounds is None else tuple(req.bounds), rate_limit=req.rate_limit, dt=req.dt,
-            margin=req.margin, objective=req.objective, weights=req.weights)
+            margin=req.margin, objective=req.objective, weights=req.weights, on_infeasible=req.on_infeasible)
         #: the last step's instant (s; the open is 0), None once a step came without a time base
         self.time: float | None = 0.0
 
     def opened(self) -> dict[str, Any]:
         c = self.controller
-        return {"n": self.m.n, "q": numbers(c.q), "rest_lengths": [numbers(p) for p in c.ell.reshape(c.n, 2)],
-                "load": numbers(c.load), "time": 0.0}
+        return {"n": self.m.n, "q": numbers(c.q), "command": [numbers(p) for p in c.ell.reshape(c.n, 2)],
+                "load": numbers(c.load), "on_infeasible": c.on_infeasible, "time": 0.0}
 
     def step(self, msg: s.InverseStep) -> dict[str, Any]:
         dt = msg.dt

@@ -19,6 +19,7 @@ from typing import Annotated, Any, Literal, Union
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 import tensegrity_opt as to
+from tensegrity_opt.analyses.design.preload_control import METHODS, ON_INFEASIBLE
 from tensegrity_opt.analyses.design.preloads import OBJECTIVES
 from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
 from tensegrity_opt.analyses.paths.simulation import Simulation, SimulationEvent
@@ -137,8 +138,13 @@ class _PlanFields(BaseModel):
     start: StartQ | None = Field(None, description='{"q": [...]}: the configuration with the start\'s rest lengths '
                                                    "(`rest_lengths0`) under the first load; null: the equilibrium "
                                                    "under it reached from the least-energy rest configuration")
+    on_infeasible: Literal[ON_INFEASIBLE] = Field(
+        "hold", description="what an infeasible step commands: hold (the previous command; the arm stays, under the "
+                            "step's load) or approach (the rest lengths of the admissible pose nearest to the "
+                            "target, within the bounds, the rate limit and the margin: the arm moves toward the "
+                            "target and catches up when it is in reach)")
     verify: bool = Field(True, description="verify every step by the forward quasi-static solve from the previous "
-                                           "step's configuration (`verified`)")
+                                           "step's configuration with its command (`verified`)")
 
 
 PLAN_REQUEST_EXAMPLE = {"manipulator": PAPER_CHAIN, "targets": [[7.6, 0.5], [7.5, 0.75], [7.4, 1.0], [7.3, 1.25]],
@@ -154,14 +160,21 @@ class PlanRequest(_PlanFields):
 class PlanStepOut(outcome_model(to.results.PreloadStep)):
     """One step of a plan (`PreloadStep.to_dict()`)."""
 
-    rest_lengths: list[list[float]] = Field(description="[L1_0, L2_0] per segment")
-    q: list[float]
-    tip: list[float]
+    command: list[list[float]] = Field(description="[L1_0, L2_0] per segment: what to send (an infeasible step: the "
+                                                   "held value, or with approach the nearest admissible pose's)")
+    proposal: list[list[float]] = Field(description="the controller's proposal (the command, except on a held step: "
+                                                    "the nearest admissible pose's rest lengths)")
+    q: list[float] = Field(description="the arm's configuration under the command (rad)")
+    tip: list[float] = Field(description="the arm's tip under the command")
     end_angle: float
-    margin: float | None = Field(description="null: infeasible")
-    energy: float | None = Field(description="null: infeasible")
+    margin: float | None = Field(description="the arm's stability margin under the command (torque / rad; null: "
+                                             "the held rest lengths have no equilibrium under the step's load)")
+    energy: float | None = Field(description="the spring energy there (null likewise)")
+    tip_error: float = Field(description="|tip - target| (length units)")
+    proposal_tip: list[float] = Field(description="the tip the proposal reaches")
     feasible: bool
-    method: Literal["newton", "ipopt", "none"]
+    method: Literal[METHODS] = Field(description="how the command was found: newton, ipopt, nearest (the nearest "
+                                                 "admissible pose), none (held)")
     solver: SolverInfo = Field(description="the solver's status (Newton_Converged, IPOPT's; for an infeasible step "
                                            "the failed solve's, or none) and iterations")
     residual: float | None = Field(description="max-norm of the equilibrium and pose equations (Newton steps)")
@@ -172,22 +185,28 @@ class PlanOut(outcome_model(to.PreloadPlan)):
     """`PreloadPlan.to_dict()`: per step done (`K` rows, fewer when the time limit cut the plan)."""
 
     seconds: float = Field(description="wall time of the plan (s)")
-    rest_lengths: list[list[list[float]]] = Field(description="[L1_0, L2_0] per segment per step (what to command)")
-    q: list[list[float]] = Field(description="the equilibrium configuration per step (rad)")
-    tip: list[list[float]] = Field(description="the tip per step (the target when feasible; else the best reachable "
-                                               "pose)")
+    commands: list[list[list[float]]] = Field(description="[L1_0, L2_0] per segment per step: what to send "
+                                                          "(consecutive commands differ by at most the rate limit)")
+    proposals: list[list[list[float]]] = Field(description="the controller's proposal per step (the commands, except "
+                                                           "on held steps: the nearest admissible pose's)")
+    q: list[list[float]] = Field(description="the arm's configuration under each command (rad)")
+    tip: list[list[float]] = Field(description="the arm's tip under each command (the target when feasible)")
+    tip_error: list[float] = Field(description="|tip - target| per step (length units)")
     end_angle: list[float] = Field(description="the last link's absolute angle sum(q) per step (rad)")
-    margin: list[float | None] = Field(description="stability margin per step (torque / rad; null: infeasible)")
-    feasible: list[bool] = Field(description="rest lengths meeting every requirement were found (false: the "
-                                             "controller stays where it was, q and tip the best reachable pose)")
-    verified: list[bool] = Field(description="the forward solve from the previous step lands on the target, stable "
-                                             "(with `verify: false` no solve runs: false everywhere)")
-    method: list[Literal["newton", "ipopt", "none"]] = Field(description="how each step was solved")
+    margin: list[float | None] = Field(description="the arm's stability margin per step (torque / rad; null: no "
+                                                   "equilibrium under the held command)")
+    feasible: list[bool] = Field(description="rest lengths meeting every requirement put the tip on the target "
+                                             "(false: the command held, or approaching with on_infeasible approach)")
+    verified: list[bool] = Field(description="the forward solve from the previous step's configuration with the "
+                                             "step's command lands on the step's pose (the target when feasible), "
+                                             "stable (with `verify: false` no solve runs: false everywhere)")
+    method: list[Literal[METHODS]] = Field(description="how each step's command was found")
     targets: list[list[float]] = Field(description="the targets of the steps done")
     times: list[float | None] = Field(description="the instants of the steps done (seconds; the start at 0); null "
                                                   "without a time base")
     margin_required: float = Field(description="the stability margin asked for (torque / rad)")
     objective: Literal["change", "margin", "energy"] = Field(description="how the redundancy was resolved")
+    on_infeasible: Literal[ON_INFEASIBLE] = Field(description="what the infeasible steps commanded")
     steps: list[PlanStepOut] = Field(description="every step in full (why an infeasible step failed: `message`)")
 
 

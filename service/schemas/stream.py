@@ -16,6 +16,7 @@ from typing import Annotated, Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from tensegrity_opt.analyses.design.follower import SNAP_DISTANCE
+from tensegrity_opt.analyses.design.preload_control import ON_INFEASIBLE
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import (
@@ -123,6 +124,10 @@ class InverseOpen(_Open):
     weights: list[Annotated[list[Positive], Field(min_length=2, max_length=2)]] | None = Field(
         None, max_length=HARD_MAX_SEGMENTS, description="weights [w1, w2] per segment of each rest length's "
                                                         "change (objective change; default 1)")
+    on_infeasible: Literal[ON_INFEASIBLE] = Field(
+        "hold", description="what an infeasible step commands: `hold` the previous command, `approach` the rest "
+                            "lengths of the admissible pose nearest to the target (within the bounds, the rate limit "
+                            "and the margin)")
 
 
 #: The open model of each mode.

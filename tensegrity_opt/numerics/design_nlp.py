@@ -16,7 +16,9 @@ repeated), plus budget, total-length, preload-tension and joint-stiffness rows. 
 ``mu`` and a lower-triangular ``L``; constraints ``grad E = J^T F``, ``tip = target``,
 optional last-link angle, ``H_q - mu I = L L^T`` (``H_q``: Hessian of ``E - F.tip`` in joint
 angles), spring lengths ``L_i - L_i0`` (for tautness) and joint angles (physical range).
-Objective ``w_nom |L0 - L0_nom|^2 / |L0_nom|^2 - w_mu mu + w_E E``.
+Objective ``w_nom |L0 - L0_nom|^2 / |L0_nom|^2 - w_mu mu + w_E E + w_tip |tip - aim_xy|^2
++ w_ang (phi_n - aim_angle)^2``: with the tip rows left free, the distance terms make it the nearest
+admissible pose to an aim.
 
 ``StiffnessNLP`` — the variables of ``PreloadNLP`` and the compliance columns ``Y = H^-1 J^T``
 (``H`` the Hessian of ``E - F.tip`` in the absolute angles, ``n x 2``, scaled); the rows of
@@ -227,6 +229,7 @@ class _Pose:
         self.x = (phi, L10, L20, mu, lv)
         self.p = ca.vertcat(a, b, k1, k2, F, self.L0nom)
         self.q, self.L1, self.L2, self.E, tip = chain_expressions(phi, a, b, k1, k2, L10, L20)
+        self.tip = tip
         J = self.J = ca.jacobian(tip, phi)
         grad = ca.gradient(self.E, phi) - J.T @ F
         Hphi = self.Hphi = ca.hessian(self.E - ca.dot(F, tip), phi)[0]
@@ -249,8 +252,10 @@ class PreloadNLP:
         self.n = n
         pose = _Pose(n)
         self.diag = pose.diag
-        w = ca.SX.sym("w", 3)
-        f = (w[0] * ca.sumsqr(pose.L0 - pose.L0nom) / ca.sumsqr(pose.L0nom) - w[1] * pose.mu + w[2] * pose.E)
+        w = ca.SX.sym("w", 5)
+        aim = ca.SX.sym("aim", 3)                # the tip and last-link angle the distance terms measure from
+        f = (w[0] * ca.sumsqr(pose.L0 - pose.L0nom) / ca.sumsqr(pose.L0nom) - w[1] * pose.mu + w[2] * pose.E
+             + w[3] * ca.sumsqr(pose.tip - aim[:2]) + w[4] * (pose.phi[n - 1] - aim[2]) ** 2)
         rows = ca.vertcat(pose.rows, pose.L1 - pose.L10, pose.L2 - pose.L20, pose.q)
         x = ca.vertcat(*pose.x)
         #: absolute angles ``phi``, rest lengths ``L10, L20``, margin ``mu``, the factor ``L`` (row by row)
@@ -258,9 +263,12 @@ class PreloadNLP:
         #: ``grad E - J^T F``, ``tip``, the last link's ``angle``, ``psd`` (= 0), the springs' ``stretch1``,
         #: ``stretch2`` (``L_i - L_i0``), the joint angles ``q``
         self.constraints = Layout(**pose.row_blocks, stretch1=n, stretch2=n, q=n)
-        self.parameters = Layout(**pose.p_blocks, w=3)
+        #: the chain, the load, the nominal rest lengths, the objective's weights ``w`` (change, margin, energy,
+        #: tip distance, angle distance) and the ``aim`` ``(x, y, angle)`` of the distance terms
+        self.parameters = Layout(**pose.p_blocks, w=5, aim=3)
         self.factor_floor = pose.factor_floor
-        self.solver, self._deadline = _nlpsol("design_preload", {"x": x, "p": ca.vertcat(pose.p, w), "f": f, "g": rows})
+        self.solver, self._deadline = _nlpsol("design_preload",
+                                              {"x": x, "p": ca.vertcat(pose.p, w, aim), "f": f, "g": rows})
 
     def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)

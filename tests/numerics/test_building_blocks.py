@@ -40,7 +40,7 @@ def test_each_design_nlp_names_every_variable_row_and_parameter(n):
     """The layouts cover the NLP's vectors exactly (sizes counted here from the problems' definitions)."""
     m = tril_size(n)
     for nlp, nx, ng, npar in [
-        (preload_nlp(n), 3 * n + 1 + m, n + 3 + m + 3 * n, 6 * n + 2 + 3),
+        (preload_nlp(n), 3 * n + 1 + m, n + 3 + m + 3 * n, 6 * n + 2 + 5 + 3),
         (stiffness_nlp(n), 3 * n + 1 + m + 2 * n + 1, n + 3 + m + 2 * n + n + 3 + 3 + 4, 6 * n + 2 + 3 + 3 + 2 + 2),
         (buckling_design_nlp(n, False), 4 * n + 1 + m, m + 5 + 2 * n, n + 2),
     ]:

@@ -54,7 +54,7 @@ def test_plan_is_the_library_plan(client):
     want = to.plan_preloads(M, ARC, rate_limit=0.05, dt=1.0, margin=0.3)
     assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
     assert got["status"] == "infeasible_steps" and got["feasible"] == [True, True, False, True, True]
-    assert got["method"][2] == "none" and got["margin"][2] is None
+    assert got["method"][2] == "none" and got["commands"][2] == got["commands"][1]     # held
 
     body = {"manipulator": PAPER, "targets": [[7.8, 0.3], [7.8, 0.6]], "end_angles": [0.0, None],
             "bounds": {"lo": 0.5, "hi": [2.0] * 8}, "weights": [[1.0, 2.0]] * 4, "objective": "change",
@@ -66,6 +66,24 @@ def test_plan_is_the_library_plan(client):
     assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
     assert got["end_angle"][0] == pytest.approx(0.0, abs=1e-9)
     assert got["verified"] == [False, False] and got["feasible"] == [True, True]   # verify: false checks nothing
+
+
+def test_a_plan_that_approaches_is_the_library_plan(client):
+    """on_infeasible: approach — the step beyond the rate limit commands the nearest admissible pose's rest lengths
+    (within the rate limit of the previous command) and the body says so; hold keeps the command."""
+    body = {"manipulator": PAPER, "targets": ARC[:3], "rate_limit": 0.05, "dt": 1.0, "margin": 0.3,
+            "on_infeasible": "approach"}
+    got = post_ok(client, "/v1/control/plan", body)
+    want = to.plan_preloads(M, ARC[:3], rate_limit=0.05, dt=1.0, margin=0.3, on_infeasible="approach")
+    assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
+    s.PlanOut.model_validate(got)
+    assert got["on_infeasible"] == "approach" and got["method"][2] == "nearest" and not got["feasible"][2]
+    assert np.abs(np.subtract(got["commands"][2], got["commands"][1])).max() <= 0.05 + 1e-12
+    assert got["steps"][2]["proposal"] == got["steps"][2]["command"] and got["verified"] == [True] * 3
+    held = post_ok(client, "/v1/control/plan", {**body, "on_infeasible": "hold"})
+    assert held["commands"][2] == held["commands"][1] and 0 < got["tip_error"][2] < held["tip_error"][2]
+    check_error(client.post("/v1/control/plan", json={**body, "on_infeasible": "wait"}), "validation_error",
+                "on_infeasible")
 
 
 @pytest.mark.slow
@@ -254,7 +272,7 @@ def test_a_time_limited_plan_answers_partial(monkeypatch):
     with app_client(heavy_workers=0) as c:
         got = post_ok(c, "/v1/control/plan", {"manipulator": PAPER, "targets": arc})
         assert got["status"] == "time_limit" and got["success"] is False and 1 <= len(got["method"]) < 2000
-        assert len(got["rest_lengths"]) == len(got["targets"]) == len(got["feasible"])
+        assert len(got["commands"]) == len(got["targets"]) == len(got["feasible"])
         s.PlanOut.model_validate(got)
         got = post_ok(c, "/v1/control/simulate", {"manipulator": BISTABLE,
                                                   "loads": np.column_stack([0 * fy, fy]).tolist()})

@@ -51,7 +51,7 @@ def test_the_plan_body_is_the_library_plan_with_times_and_rest_lengths0(client, 
     want = to.plan_preloads(M, targets, loads=F, times=times, rate_limit=0.2, rest_lengths0=R0)
     assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
     assert got["times"] == times
-    change = np.abs(np.diff(np.concatenate([[R0], got["rest_lengths"]]), axis=0)).reshape(4, -1).max(axis=1)
+    change = np.abs(np.diff(np.concatenate([[R0], got["commands"]]), axis=0)).reshape(4, -1).max(axis=1)
     assert np.all(change <= 0.2 * np.diff(times, prepend=0.0) + 1e-9)
     got = post_ok(client, "/v1/control/plan", {**{k: v for k, v in body.items() if k != "times"}, "dt": 0.25})
     want = to.plan_preloads(M, targets, loads=F, dt=0.25, rate_limit=0.2, rest_lengths0=R0)
@@ -84,7 +84,7 @@ def test_the_inverse_stream_takes_times_and_dts_as_the_controller_does(client, t
         ws.send_json({"type": "open", "manipulator": PAPER, "mode": "inverse", "load": list(F), "rate_limit": 0.2,
                       "rest_lengths0": R0, "dt": 0.3})
         opened = ws.receive_json()
-        assert opened["type"] == "opened" and opened["rest_lengths"] == R0 and opened["time"] == 0.0
+        assert opened["type"] == "opened" and opened["command"] == R0 and opened["time"] == 0.0
         steps = [{"target": targets[0]},                      # the open's dt
                  {"target": targets[1], "time": 0.45},         # 0.15 s after the last
                  {"target": targets[2], "dt": 0.75},

@@ -200,10 +200,12 @@ def test_inverse_mode_is_the_preload_controller(server):
     steps[5]["end_angle"] = 0.55                        # beyond the rate limit's Newton step: IPOPT
     steps[7]["load"] = [-0.03, 0.0]
     steps.insert(9, {"target": [10.0, 0.0]})            # out of reach: infeasible, the controller stays
-    opened_want = {"q": ctl.q.tolist(), "rest_lengths": ctl.ell.reshape(4, 2).tolist(), "load": list(F)}
+    opened_want = {"q": ctl.q.tolist(), "command": ctl.ell.reshape(4, 2).tolist(), "load": list(F),
+                   "on_infeasible": "hold"}
     want = [ctl.step(st["target"], load=st.get("load"), end_angle=st.get("end_angle")).to_dict() for st in steps]
     assert not want[9]["feasible"] and all(w["feasible"] for i, w in enumerate(want) if i != 9)
-    assert want[5]["method"] == "ipopt" and want[5]["residual"] is None and want[9]["energy"] is None
+    assert want[5]["method"] == "ipopt" and want[5]["residual"] is None
+    assert want[9]["method"] == "none" and want[9]["command"] == want[8]["command"]     # held
 
     async def go():
         async with connect(base) as ws:
@@ -520,3 +522,30 @@ def test_the_stream_bound_and_a_killed_client_frees_its_slot(server):
     assert httpx.get(base + "/healthz").status_code == 200
     metrics = httpx.get(base + "/metrics", headers={"X-API-Key": KEY}).text
     assert "tensegrity_stream_connections" in metrics
+
+
+def test_inverse_mode_approaches_when_asked():
+    """In process: ``on_infeasible: "approach"`` in the open; a target beyond the rate limit is approached (the
+    command the nearest admissible pose's, within the rate limit), as the library's controller does."""
+    from service_helpers import app_client
+
+    F = (0.0, -0.01)
+    m = to.Manipulator.uniform(4)
+    ctl = PreloadController(m, load=F, rate_limit=0.05, dt=1.0, on_infeasible="approach")
+    far = (m.tip(ctl.q) + [-0.5, 1.0]).tolist()
+    want = [ctl.step(far).to_dict() for _ in range(2)]
+    assert want[0]["method"] == "nearest" and want[1]["tip_error"] < want[0]["tip_error"]
+    with app_client(inline_processes=0, heavy_workers=0) as client:
+        with client.websocket_connect("/v1/control/stream") as ws:
+            ws.send_json({"type": "open", "manipulator": PAPER, "mode": "inverse", "load": list(F),
+                          "rate_limit": 0.05, "dt": 1.0, "on_infeasible": "approach"})
+            opened = ws.receive_json()
+            assert opened["type"] == "opened" and opened["on_infeasible"] == "approach"
+            got = []
+            for _ in range(2):
+                ws.send_json({"type": "step", "target": far})
+                got.append(ws.receive_json())
+    for g, w in zip(got, want):
+        assert g["type"] == "result"
+        assert_same(g, w)
+    assert np.abs(np.subtract(got[0]["command"], opened["command"])).max() <= 0.05 + 1e-12

@@ -33,16 +33,24 @@ chain's torque scale ``max k c^2`` (``Manipulator.torque_scale``) instead; to as
    energy): :func:`~tensegrity_opt.analyses.design.preloads.preloads_for_pose` with the previous rest lengths as
    the nominal ones, the bounds intersected with the rate box, warm-started from the previous
    configuration.
-3. Where neither finds admissible rest lengths the step is **infeasible**: reported with the best
-   reachable pose (the forward equilibrium with the IPOPT's best rest lengths, or the previous state
-   when there is none), and the controller stays where it was.
+3. Where neither finds admissible rest lengths the step is **infeasible**. Its **proposal** is the admissible
+   pose nearest to the target (:meth:`PreloadController.nearest`: the preload NLP minimising the tip's distance
+   to the target subject to the equilibrium under the load, the margin, the bounds intersected with the rate
+   box and the joint range, from several starts, each candidate kept only where the forward solve from the
+   current configuration lands on it, stable). What the step **commands** depends on ``on_infeasible``:
 
-A step's result is the equilibrium itself: ``q``, the rest lengths, the tip and the margin, with
-``residual`` the scaled KKT residual; every accepted step is an equilibrium of the chain with those rest
-lengths at the target (the residual), stable with the margin. :func:`plan_preloads` runs a controller
-over a trajectory and verifies each step by the forward quasi-static solve
-(:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` from the previous step's
-configuration: it must land on the target, stable).
+   * ``"hold"``: the previous command. The arm's state is the forward equilibrium with the held rest lengths
+     under the step's load from the previous configuration (the same state when the load does not change);
+   * ``"approach"``: the nearest admissible pose's rest lengths: the arm moves there, as close to the target
+     as the bounds, the rate limit and the margin allow, and the controller catches up once the target is
+     in reach again.
+
+Every step carries the ``command`` to send and, apart, the ``proposal``; ``q``, ``tip``, ``margin``, ``energy``
+describe the arm under the command (what a pipeline will observe), ``tip_error`` its distance to the target.
+Consecutive commands never differ by more than the rate limit. ``residual`` is the scaled KKT residual of a
+Newton step. :func:`plan_preloads` runs a controller over a trajectory and verifies each step by the forward
+quasi-static solve (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` from the
+previous step's configuration with the step's command: it must land on the step's pose, stable).
 """
 
 from __future__ import annotations
@@ -56,8 +64,9 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...bounds import bound_pair
-from ...errors import InfeasibleDesignError, InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
+from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
+from ...numerics import chain_solver
 from ...numerics.inverse_statics import inverse_statics
 from ...numerics.inverse_statics import layouts as step_layouts
 from ...numerics.layout import rest_lengths
@@ -67,9 +76,19 @@ from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 from ..paths.control import checked_vector
 from .follower import loaded_rest
-from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose
+from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose, solve_pose_nlp, stability_margin
 
-__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "step_times"]
+__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "step_times", "ON_INFEASIBLE", "METHODS"]
+
+#: What an infeasible step commands: ``"hold"`` the previous command, ``"approach"`` the nearest admissible pose's
+#: rest lengths.
+ON_INFEASIBLE = ("hold", "approach")
+#: How a step's command was found: the least-change ``"newton"`` step, ``"ipopt"`` (the fallback or the
+#: objective), ``"nearest"`` (the nearest admissible pose: an approach step, or the target reached by it where
+#: the other two failed), ``"none"`` (held: no new command).
+METHODS = ("newton", "ipopt", "nearest", "none")
+#: Spread starts of the nearest-pose search (besides the current state, IPOPT's last point and the held state).
+NEAREST_SPREAD = 2
 
 #: KKT residual (max-norm, force and length units) below which the Newton step has converged.
 NEWTON_TOL = 1e-10
@@ -122,23 +141,31 @@ class PreloadStep(Outcome):
 
     Attributes
     ----------
-    rest_lengths : ndarray (n, 2)
-        ``L1_0, L2_0`` per segment (what to command).
+    command : ndarray (n, 2)
+        ``L1_0, L2_0`` per segment: what to send to the actuators (on an infeasible step the held value with
+        ``on_infeasible="hold"``, the nearest admissible pose's with ``"approach"``).
+    proposal : ndarray (n, 2)
+        The controller's proposal: the command, except on an infeasible step held, where it is the nearest
+        admissible pose's rest lengths (the held value when there is none).
     q : ndarray (n,)
-        The equilibrium configuration (relative joint angles, rad).
+        The arm's equilibrium configuration under the command (relative joint angles, rad).
     tip : ndarray (2,)
+        The arm's tip under the command.
     end_angle : float
         The last link's absolute angle ``sum(q)``.
     margin : float
-        Smallest eigenvalue of the Hessian of ``E - F . tip`` in ``q`` (torque / rad); NaN for an infeasible
-        step (``null`` in :meth:`to_dict`).
+        Smallest eigenvalue of the Hessian of ``E - F . tip`` in ``q`` at the arm's state (torque / rad); NaN
+        (``null`` in :meth:`to_dict`) when the held rest lengths have no equilibrium under the step's load.
     energy : float
-        NaN for an infeasible step (``null`` in :meth:`to_dict`).
+        The spring energy there (NaN likewise).
+    tip_error : float
+        ``|tip - target|`` (length units).
+    proposal_tip : ndarray (2,)
+        The tip the proposal reaches.
     feasible : bool
-        Rest lengths satisfying every requirement were found (False: ``q``, ``tip`` are the best reachable
-        pose, ``rest_lengths`` what reaches it).
+        Rest lengths satisfying every requirement put the tip on the target.
     method : str
-        ``"newton"`` (the compiled KKT step), ``"ipopt"`` (the fallback or the objective), ``"none"``.
+        How the command was found (:data:`METHODS`): ``"newton"``, ``"ipopt"``, ``"nearest"``, ``"none"`` (held).
     solver : SolverInfo
         The solver's status (``"Newton_Converged"``, IPOPT's return status; for an infeasible step the status
         of the failed solve, ``"none"`` when there is none) and its iterations.
@@ -154,17 +181,22 @@ class PreloadStep(Outcome):
     STATUSES: ClassVar[dict[str, str]] = {
         "feasible": "rest lengths meeting every requirement were found: the tip on the target, stable with the "
                     "margin, inside the bounds and the rate limit",
-        "infeasible": "no admissible rest lengths: q and tip are the best reachable pose (rest_lengths what reaches "
-                      "it); the controller stays where it was",
+        "infeasible": "no admissible rest lengths put the tip on the target: the command is the held value "
+                      "(on_infeasible hold) or the nearest admissible pose's rest lengths (approach); q, tip, "
+                      "margin and energy describe the arm under the command, proposal and proposal_tip the "
+                      "nearest admissible pose",
     }
     SUCCESS: ClassVar[frozenset[str]] = frozenset({"feasible"})
 
-    rest_lengths: np.ndarray
+    command: np.ndarray
+    proposal: np.ndarray
     q: np.ndarray
     tip: np.ndarray
     end_angle: float
     margin: float
     energy: float
+    tip_error: float
+    proposal_tip: np.ndarray
     feasible: bool
     method: str
     solver: SolverInfo
@@ -174,10 +206,8 @@ class PreloadStep(Outcome):
 
     def __post_init__(self) -> None:
         # the controller passes arrays it owns: read-only in place (this is on the control loop's path)
-        self.rest_lengths.setflags(write=False)
-        self.q.setflags(write=False)
-        self.tip.setflags(write=False)
-        self.target.setflags(write=False)
+        for a in (self.command, self.proposal, self.q, self.tip, self.proposal_tip, self.target):
+            a.setflags(write=False)
 
     @classmethod
     def _of(cls, **fields: Any) -> PreloadStep:
@@ -193,14 +223,28 @@ class PreloadStep(Outcome):
         return "feasible" if self.feasible else "infeasible"
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``success``, ``status``, ``message``, ``rest_lengths``, ``q``, ``tip``, ``end_angle``,
-        ``margin`` and ``energy`` (null: infeasible), ``feasible``, ``method``, ``solver`` ``{status,
-        iterations}``, ``residual`` (null: not a Newton step), ``target``."""
-        return {**self.outcome(), "rest_lengths": [numbers(r) for r in self.rest_lengths], "q": numbers(self.q),
-                "tip": numbers(self.tip), "end_angle": number(self.end_angle), "margin": nullable(self.margin),
-                "energy": nullable(self.energy), "feasible": self.feasible, "method": self.method,
+        """JSON form: ``success``, ``status``, ``message``, ``command``, ``proposal``, ``q``, ``tip``, ``end_angle``,
+        ``margin`` and ``energy`` (null: no equilibrium), ``tip_error``, ``proposal_tip``, ``feasible``, ``method``,
+        ``solver`` ``{status, iterations}``, ``residual`` (null: not a Newton step), ``target``."""
+        return {**self.outcome(), "command": [numbers(r) for r in self.command],
+                "proposal": [numbers(r) for r in self.proposal], "q": numbers(self.q), "tip": numbers(self.tip),
+                "end_angle": number(self.end_angle), "margin": nullable(self.margin),
+                "energy": nullable(self.energy), "tip_error": number(self.tip_error),
+                "proposal_tip": numbers(self.proposal_tip), "feasible": self.feasible, "method": self.method,
                 "solver": self.solver.to_dict(), "residual": None if self.residual is None else nullable(self.residual),
                 "target": numbers(self.target)}
+
+
+@dataclass(frozen=True)
+class _Pose:
+    """A candidate state of the arm: rest lengths (segment-major 2n), its configuration, tip, margin, energy."""
+
+    ell: np.ndarray
+    q: np.ndarray
+    tip: np.ndarray
+    margin: float
+    energy: float
+    solver: SolverInfo
 
 
 class PreloadController:
@@ -236,11 +280,15 @@ class PreloadController:
     objective : {"change", "margin", "energy"}
     weights : array_like (n, 2), optional
         Weights of each rest length's change in the least-change objective (default 1).
+    on_infeasible : {"hold", "approach"}
+        What an infeasible step commands (:data:`ON_INFEASIBLE`): the previous command, or the rest lengths of
+        the admissible pose nearest to the target (the arm moves toward the target as far as the bounds, the
+        rate limit and the margin allow).
     """
 
     def __init__(self, m: Manipulator, start=None, *, rest_lengths0=None, load=(0.0, 0.0), bounds=None,
                  rate_limit=None, dt: float | None = None, margin: float = 1e-3, objective: str = "change",
-                 weights=None) -> None:
+                 weights=None, on_infeasible: str = "hold") -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
         n = m.n
@@ -251,7 +299,11 @@ class PreloadController:
                                         field="objective")
         if not (isinstance(margin, (int, float)) and math.isfinite(margin) and margin >= 0):
             raise InvalidParameterError(f"margin must be finite and >= 0, got {margin!r}", field="margin")
+        if on_infeasible not in ON_INFEASIBLE:
+            raise InvalidParameterError(f"on_infeasible must be one of {ON_INFEASIBLE}, got {on_infeasible!r}",
+                                        field="on_infeasible")
         self.m, self.n, self.objective, self.margin = m, n, objective, float(margin)
+        self.on_infeasible = on_infeasible
         self.load = checked_vector(load, 2, "load")
         lo, hi = bound_pair(bounds) if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
         self.lo = self._per_spring(lo, "bounds")
@@ -270,6 +322,7 @@ class PreloadController:
         self.scale = float(np.max(m.b))
         self.ell = self._rest_lengths0(rest_lengths0)               # segment-major: l[2i], l[2i+1]
         self.q = self._start(start)
+        self.state_load = self.load.copy()          # the load the state q is an equilibrium under
         self.mu: dict[bool, np.ndarray] = {}
         self.last: PreloadStep | None = None
 
@@ -341,28 +394,39 @@ class PreloadController:
         """Rest lengths for the tip at ``target = (x, y)`` (and the last link at ``end_angle``, rad) under
         ``load`` (default the controller's), from the current state, ``dt`` seconds after the last step (default
         the controller's ``dt``; needed with a rate limit: each rest length moves by at most ``rate_limit * dt``);
-        the state moves there when the step is feasible."""
+        the state moves to the arm's equilibrium under the step's command (module docstring)."""
         target = checked_vector(target, 2, "target")
         F = self.load if load is None else checked_vector(load, 2, "load")
         if end_angle is not None and not math.isfinite(float(end_angle)):
             raise InvalidParameterError("end_angle must be finite", field="end_angle")
-        h = self.dt if dt is None else _seconds(dt, "dt")
-        lo, hi = self.lo, self.hi
-        if self.rate is not None:
-            if h is None:
-                raise InvalidParameterError(
-                    "rate_limit is a length per second: give the time since the last step, dt (seconds), to the "
-                    "step or the controller", field="dt")
-            lo, hi = np.maximum(lo, self.ell - self.rate * h), np.minimum(hi, self.ell + self.rate * h)
+        lo, hi = self.box(dt)
         res = None
         if self.objective == "change":
             res = self._newton(target, F, end_angle, lo, hi)
         if res is None:
             res = self._ipopt(target, F, end_angle, lo, hi)
-        if res.feasible:
-            self.q, self.ell = res.q.copy(), res.rest_lengths.ravel().copy()
+        if isinstance(res, TensegrityError):
+            res = self._infeasible(target, F, end_angle, lo, hi, res)
+        if res.method != "none":
+            self.ell = res.command.ravel().copy()
+        if res.method in ("ipopt", "nearest"):
+            self.mu.clear()                 # the multipliers of the least-change problem start again
+        if math.isfinite(res.energy):       # the state is an equilibrium under F
+            self.q, self.state_load = res.q.copy(), F.copy()
         self.last = res
         return res
+
+    def box(self, dt: float | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """The bounds of a step's rest lengths ``dt`` seconds after the last step (default the controller's
+        ``dt``), segment-major 2n: the actuator bounds intersected with the rate box ``rate_limit * dt`` around
+        the current command."""
+        if self.rate is None:
+            return self.lo, self.hi
+        h = self.dt if dt is None else _seconds(dt, "dt")
+        if h is None:
+            raise InvalidParameterError("rate_limit is a length per second: give the time since the last step, dt "
+                                        "(seconds), to the step or the controller", field="dt")
+        return np.maximum(self.lo, self.ell - self.rate * h), np.minimum(self.hi, self.ell + self.rate * h)
 
     def _newton(self, target, F, end_angle, lo, hi) -> PreloadStep | None:
         angle = end_angle is not None
@@ -394,50 +458,165 @@ class PreloadController:
         self.mu[angle] = y[at["mu"]].copy()
         solver = _NEWTON.get(iters) or _NEWTON.setdefault(iters, SolverInfo("Newton_Converged", iters))
         # q and ell are views of the step's own iterate y: no copy needed before they turn read-only
-        return PreloadStep._of(rest_lengths=ell.reshape(n, 2), q=q, tip=tip, end_angle=float(np.sum(q)),
-                               margin=margin, energy=E, feasible=True, method="newton", solver=solver,
-                               residual=resid, target=target.copy(), message="the least-change Newton step converged")
+        command = ell.reshape(n, 2)
+        return PreloadStep._of(command=command, proposal=command, q=q, tip=tip, end_angle=float(np.sum(q)),
+                               margin=margin, energy=E, tip_error=_distance(tip, target), proposal_tip=tip,
+                               feasible=True, method="newton", solver=solver, residual=resid, target=target.copy(),
+                               message="the least-change Newton step converged")
 
-    def _ipopt(self, target, F, end_angle, lo, hi) -> PreloadStep:
+    def _springs(self, v: np.ndarray) -> np.ndarray:
+        """Segment-major 2n -> the design problems' ``L10``, ``L20`` blocks."""
+        return rest_lengths(self.n).pack(L10=v[0::2], L20=v[1::2])
+
+    def _ipopt(self, target, F, end_angle, lo, hi) -> PreloadStep | TensegrityError:
+        """IPOPT's step (:func:`preloads_for_pose`), or the error saying why it found none."""
         nominal = self.manipulator()
-        springs = rest_lengths(self.n)
-        to_spec = lambda v: springs.pack(L10=v[0::2], L20=v[1::2])   # noqa: E731  segment-major -> the L10, L20 blocks
         try:
             d = preloads_for_pose(nominal, target, load=F, objective=self.objective, margin=self.margin,
-                                  bounds=(to_spec(lo), to_spec(hi)), end_angle=end_angle, start=self.q)
+                                  bounds=(self._springs(lo), self._springs(hi)), end_angle=end_angle, start=self.q)
         except TimeLimitError:
             raise
-        except InfeasibleDesignError as exc:
-            return self._best(target, F, exc)
         except TensegrityError as exc:
-            return self._best(target, F, exc)
-        self.mu.clear()                     # the multipliers of the least-change problem start again
+            return exc
         q = d.q
-        return PreloadStep._of(rest_lengths=d.preloads.copy(), q=q.copy(), tip=d.tip.copy(),
+        command = d.preloads.copy()
+        return PreloadStep._of(command=command, proposal=command, q=q.copy(), tip=d.tip.copy(),
                                end_angle=float(np.sum(q)), margin=float(d.margin), energy=float(d.energy),
-                               feasible=True, method="ipopt", solver=d.solver, residual=None, target=target.copy(),
+                               tip_error=_distance(d.tip, target), proposal_tip=d.tip.copy(), feasible=True,
+                               method="ipopt", solver=d.solver, residual=None, target=target.copy(),
                                message=f"IPOPT ({self.objective}) converged, verified by the forward solve")
 
-    def _best(self, target, F, exc: TensegrityError) -> PreloadStep:
-        """The best reachable pose of an infeasible step: the forward equilibrium with the IPOPT's best rest
-        lengths (when it has them and they hold the arm), else the current state."""
+    # ------------------------------------------------------------------ infeasible steps
+    def _infeasible(self, target, F, end_angle, lo, hi, exc: TensegrityError) -> PreloadStep:
+        """An infeasible step: the nearest admissible pose (the proposal; the command with ``"approach"``, or
+        the target itself where it reaches it) and the held state."""
         n = self.n
+        held = self.hold(F)
         best = getattr(exc, "best", None)
-        ell, q = self.ell, self.q
-        if isinstance(best, dict) and "preloads" in best:
-            cand = np.clip(np.asarray(best["preloads"], float).ravel(), self.lo, self.hi)
-            try:
-                eq = solve_equilibrium_under_force(self.manipulator(cand), *F, q0=self.q)
-                if eq.stable:
-                    ell, q = cand, eq.q
-            except TensegrityError:
-                pass
+        near = self.nearest(target, F, end_angle, lo, hi, best=best if isinstance(best, dict) else None, held=held)
+        solver = SolverInfo(str(exc.status) if exc.status else "none", 0)
+        if near is not None and _distance(near.tip, target) <= LAND_TOL * self.scale and (
+                end_angle is None or abs(float(np.sum(near.q)) - float(end_angle)) <= 1e-6):
+            command = near.ell.reshape(n, 2).copy()
+            return PreloadStep._of(command=command, proposal=command, q=near.q, tip=near.tip,
+                                   end_angle=float(np.sum(near.q)), margin=near.margin, energy=near.energy,
+                                   tip_error=_distance(near.tip, target), proposal_tip=near.tip, feasible=True,
+                                   method="nearest", solver=near.solver, residual=None, target=target.copy(),
+                                   message="the nearest admissible pose reaches the target (the step's own solve "
+                                           f"failed: {exc.message}), verified by the forward solve")
+        if near is not None and self.on_infeasible == "approach":
+            command = near.ell.reshape(n, 2).copy()
+            return PreloadStep._of(command=command, proposal=command, q=near.q, tip=near.tip,
+                                   end_angle=float(np.sum(near.q)), margin=near.margin, energy=near.energy,
+                                   tip_error=_distance(near.tip, target), proposal_tip=near.tip, feasible=False,
+                                   method="nearest", solver=near.solver, residual=None, target=target.copy(),
+                                   message=f"{exc.message}; approaching: the nearest admissible pose, "
+                                           f"{_distance(near.tip, target):.6g} from the target")
+        prop = near if near is not None else held
+        why = ("" if near is not None else "; no admissible pose found, the proposal is the held value")
+        return PreloadStep._of(command=self.ell.reshape(n, 2).copy(), proposal=prop.ell.reshape(n, 2).copy(),
+                               q=held.q, tip=held.tip, end_angle=float(np.sum(held.q)), margin=held.margin,
+                               energy=held.energy, tip_error=_distance(held.tip, target), proposal_tip=prop.tip,
+                               feasible=False, method="none", solver=solver, residual=None, target=target.copy(),
+                               message=f"{exc.message}; holding the previous command{why}")
+
+    def hold(self, F) -> _Pose:
+        """The arm's state with the current command under the load ``F``: the current state when ``F`` is its
+        load, else the forward equilibrium from it (NaN margin and energy when there is none)."""
+        F = checked_vector(F, 2, "load")
+        if np.array_equal(F, self.state_load):
+            return self._pose(self.ell, self.q, F, SolverInfo("none", 0))
+        eq = self._forward(self.ell, F, self.q)
+        if eq is None:
+            q = self.q.copy()
+            q.setflags(write=False)
+            return _Pose(self.ell.copy(), q, self.m_tip(q), math.nan, math.nan, SolverInfo("none", 0))
+        return self._pose(self.ell, eq.q, F, SolverInfo("none", 0))
+
+    def m_tip(self, q: np.ndarray) -> np.ndarray:
+        tip = self.m.tip(q)
+        tip.setflags(write=False)
+        return tip
+
+    def _pose(self, ell: np.ndarray, q: np.ndarray, F: np.ndarray, solver: SolverInfo) -> _Pose:
         m = self.manipulator(ell)
+        E, _, _, _, _ = chain_solver(m).evaluate(q, F)
+        q = np.array(q, dtype=float)
+        ell = np.array(ell, dtype=float)
         tip = m.tip(q)
-        return PreloadStep._of(rest_lengths=ell.reshape(n, 2).copy(), q=q.copy(), tip=tip,
-                               end_angle=float(np.sum(q)), margin=math.nan, energy=math.nan, feasible=False,
-                               method="none", solver=SolverInfo(str(exc.status) if exc.status else "none", 0),
-                               residual=None, target=np.asarray(target, float).copy(), message=exc.message)
+        for v in (q, ell, tip):
+            v.setflags(write=False)
+        return _Pose(ell, q, tip, stability_margin(m, q, F), float(E), solver)
+
+    def _forward(self, ell: np.ndarray, F: np.ndarray, q_from: np.ndarray) -> Equilibrium | None:
+        """The forward quasi-static solve: the equilibrium with rest lengths ``ell`` under ``F`` reached from
+        ``q_from`` (Newton; IPOPT's descent where Newton does not settle), or None."""
+        m = self.manipulator(ell)
+        eq = settle_under_force(m, F, q_from)
+        if eq is None:
+            try:
+                eq = solve_equilibrium_under_force(m, *F, q0=q_from)
+            except TimeLimitError:
+                raise
+            except TensegrityError:
+                return None
+        return eq
+
+    def nearest(self, target, F, end_angle=None, lo=None, hi=None, *, best: dict | None = None,
+                held: _Pose | None = None) -> _Pose | None:
+        """The admissible pose nearest to ``target`` (and ``end_angle``) under ``F`` from the current state:
+        rest lengths within ``lo``, ``hi`` (default :meth:`box`), stable with the margin, inside the joint
+        range. The preload NLP minimising the tip's distance (:func:`~.preloads.solve_pose_nlp`) from several
+        starts: the current state, IPOPT's last point ``best`` (``{"q", "preloads"}``), the held state and
+        :data:`NEAREST_SPREAD` rest lengths spread in the box; a candidate counts only where the forward solve
+        from the current configuration with its rest lengths lands on it (``q`` within 1e-6, stable, the
+        margin held). ``held`` (:meth:`hold`) is a candidate itself. None: no admissible pose found."""
+        target = checked_vector(target, 2, "target")
+        F = checked_vector(F, 2, "load")
+        if lo is None or hi is None:
+            lo, hi = self.box()
+        springs = rest_lengths(self.n)
+        nominal = self.manipulator()
+        lo_s, hi_s = self._springs(lo), self._springs(hi)
+        starts: list[tuple[np.ndarray, np.ndarray]] = [(self.q, self._springs(self.ell))]
+        if best is not None and "q" in best and "preloads" in best:
+            pre = np.asarray(best["preloads"], dtype=float).reshape(self.n, 2)
+            starts.append((np.asarray(best["q"], dtype=float), springs.pack(L10=pre[:, 0], L20=pre[:, 1])))
+        if held is not None and math.isfinite(held.energy) and not np.array_equal(held.q, self.q):
+            starts.append((held.q, self._springs(held.ell)))
+        rng = np.random.default_rng(0)
+        for u in [np.full(2 * self.n, 0.5), *rng.uniform(size=(NEAREST_SPREAD - 1, 2 * self.n))]:
+            ell0 = lo + u * (hi - lo)
+            eq = settle_under_force(self.manipulator(ell0), F, self.q)
+            starts.append((self.q if eq is None else eq.q, self._springs(ell0)))
+        candidates: list[_Pose] = []
+        if held is not None and math.isfinite(held.margin) and held.margin >= self.margin - 1e-9:
+            candidates.append(held)
+        for q0, ell0 in starts:
+            q0 = np.clip(q0, -self.limits * 0.999, self.limits * 0.999)
+            res, q, L10, L20, _, _ = solve_pose_nlp(nominal, target, F, "change", self.margin, False, lo_s, hi_s,
+                                                    end_angle, q0, ell0, nearest=True)
+            ell = np.column_stack([L10, L20]).ravel()
+            eq = self._forward(ell, F, self.q)
+            if eq is None or not eq.stable or float(np.max(np.abs(eq.q - q))) > 1e-6:
+                continue                    # the arm does not get there from here (another well, or none)
+            pose = self._pose(ell, eq.q, F, SolverInfo(res.status, res.iterations))
+            if pose.margin >= self.margin - 1e-7 * max(1.0, self.margin):
+                candidates.append(pose)
+        if not candidates:
+            return None
+
+        def distance(p: _Pose) -> tuple[float, float]:
+            d = float(np.sum((p.tip - target) ** 2)) / self.scale ** 2
+            if end_angle is not None:
+                d += (float(np.sum(p.q)) - float(end_angle)) ** 2
+            return round(d, 14), float(np.sum((p.ell - self.ell) ** 2))
+
+        return min(candidates, key=distance)
+
+
+def _distance(tip: np.ndarray, target: np.ndarray) -> float:
+    return float(math.hypot(float(tip[0]) - float(target[0]), float(tip[1]) - float(target[1])))
 
 
 @dataclass(frozen=True)
@@ -446,20 +625,27 @@ class PreloadPlan(Outcome):
 
     Attributes
     ----------
-    rest_lengths : ndarray (K, n, 2)
-        ``L1_0, L2_0`` per segment and step.
+    commands : ndarray (K, n, 2)
+        ``L1_0, L2_0`` per segment and step: what to send (:attr:`PreloadStep.command`). Consecutive commands
+        differ by at most the rate limit.
+    proposals : ndarray (K, n, 2)
+        The controller's proposals (:attr:`PreloadStep.proposal`; the commands except on held steps).
     q : ndarray (K, n)
+        The arm's configuration under each command.
     tip : ndarray (K, 2)
+    tip_error : ndarray (K,)
+        ``|tip - target|`` per step.
     end_angle, margin : ndarray (K,)
     feasible : ndarray (K,) of bool
     verified : ndarray (K,) of bool
-        The forward quasi-static solve from the previous step's configuration with this step's rest lengths
-        lands on the target (``LAND_TOL max b``), stable (False everywhere with ``verify=False``: not checked).
+        The forward quasi-static solve from the previous step's configuration with this step's command lands on
+        the step's pose (``LAND_TOL max b`` on the tip, 1e-6 on the joint angles; on the target for a feasible
+        step), stable (False everywhere with ``verify=False``: not checked).
     method : tuple of str
-        Per step ``"newton"``, ``"ipopt"`` or ``"none"``.
+        Per step (:data:`METHODS`) ``"newton"``, ``"ipopt"``, ``"nearest"`` or ``"none"`` (held).
     status : str
-        ``"complete"``, ``"infeasible_steps"`` (some steps infeasible: see ``feasible``), ``"time_limit"``
-        (the steps done so far) (:attr:`STATUSES`).
+        ``"complete"``, ``"infeasible_steps"`` (some steps infeasible: see ``feasible``; approach steps that did
+        not reach the target count), ``"time_limit"`` (the steps done so far) (:attr:`STATUSES`).
     steps : tuple of PreloadStep
     seconds : float
     targets : ndarray (K, 2)
@@ -468,21 +654,26 @@ class PreloadPlan(Outcome):
     objective : str
     times : ndarray (K,)
         The steps' instants (s; the start at 0), NaN without a time base (``null`` in :meth:`to_dict`).
+    on_infeasible : str
+        ``"hold"`` or ``"approach"`` (:data:`ON_INFEASIBLE`).
     message : str
         The status in a sentence.
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
         "complete": "every step is feasible",
-        "infeasible_steps": "some steps are infeasible (see feasible): each answered with the best reachable pose, "
-                            "the next starting from the last feasible state",
+        "infeasible_steps": "some steps are infeasible (see feasible): each commands the held value (hold) or the "
+                            "nearest admissible pose's rest lengths (approach), the next starting from the arm's "
+                            "state under that command",
         "time_limit": "the time limit ran out: the steps done so far",
     }
     SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
 
-    rest_lengths: np.ndarray
+    commands: np.ndarray
+    proposals: np.ndarray
     q: np.ndarray
     tip: np.ndarray
+    tip_error: np.ndarray
     end_angle: np.ndarray
     margin: np.ndarray
     feasible: np.ndarray
@@ -495,6 +686,7 @@ class PreloadPlan(Outcome):
     margin_required: float = 0.0
     objective: str = "change"
     times: np.ndarray | None = None
+    on_infeasible: str = "hold"
 
     def __post_init__(self) -> None:
         if self.times is None:
@@ -511,24 +703,26 @@ class PreloadPlan(Outcome):
         return done
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON form: ``success``, ``status``, ``message``, ``seconds``, the per-step arrays (``rest_lengths``,
-        ``q``, ``tip``, ``end_angle``, ``margin`` (null: infeasible), ``feasible``, ``verified``, ``method``),
-        ``targets``, ``times`` (null: no time base), ``margin_required``, ``objective`` and ``steps``
-        (:meth:`PreloadStep.to_dict`)."""
+        """JSON form: ``success``, ``status``, ``message``, ``seconds``, the per-step arrays (``commands``,
+        ``proposals``, ``q``, ``tip``, ``tip_error``, ``end_angle``, ``margin`` (null: no equilibrium),
+        ``feasible``, ``verified``, ``method``), ``targets``, ``times`` (null: no time base), ``margin_required``,
+        ``objective``, ``on_infeasible`` and ``steps`` (:meth:`PreloadStep.to_dict`)."""
         return {**self.outcome(), "seconds": number(self.seconds),
-                "rest_lengths": [[numbers(r) for r in s] for s in self.rest_lengths],
+                "commands": [[numbers(r) for r in s] for s in self.commands],
+                "proposals": [[numbers(r) for r in s] for s in self.proposals],
                 "q": [numbers(r) for r in self.q], "tip": [numbers(r) for r in self.tip],
-                "end_angle": numbers(self.end_angle), "margin": [nullable(v) for v in self.margin],
-                "feasible": [bool(v) for v in self.feasible], "verified": [bool(v) for v in self.verified],
-                "method": list(self.method), "targets": [numbers(r) for r in self.targets],
-                "times": [nullable(t) for t in self.times], "margin_required": number(self.margin_required),
-                "objective": self.objective,
-                "steps": [s.to_dict() for s in self.steps]}
+                "tip_error": numbers(self.tip_error), "end_angle": numbers(self.end_angle),
+                "margin": [nullable(v) for v in self.margin], "feasible": [bool(v) for v in self.feasible],
+                "verified": [bool(v) for v in self.verified], "method": list(self.method),
+                "targets": [numbers(r) for r in self.targets], "times": [nullable(t) for t in self.times],
+                "margin_required": number(self.margin_required), "objective": self.objective,
+                "on_infeasible": self.on_infeasible, "steps": [s.to_dict() for s in self.steps]}
 
 
 def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times=None, dt: float | None = None,
                   rest_lengths0=None, bounds=None, rate_limit=None, margin: float = 1e-3, objective: str = "change",
-                  weights=None, start=None, verify: bool = True, timeout: float | None = None,
+                  weights=None, start=None, on_infeasible: str = "hold", verify: bool = True,
+                  timeout: float | None = None,
                   progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     """Rest lengths for a trajectory of tip poses, on one stable branch (module docstring).
 
@@ -553,7 +747,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
         Largest speed of each rest length (length units per second); needs ``times`` or ``dt``.
     margin : float
         Required stability margin: absolute, torque per radian (module docstring).
-    bounds, objective, weights, start
+    bounds, objective, weights, start, on_infeasible
         As :class:`PreloadController`.
     verify : bool
         Verify every step by the forward quasi-static solve (default).
@@ -585,7 +779,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     t_steps = step_times(K, times, dt, rate_limit)
     h_steps = np.diff(t_steps, prepend=0.0)
     ctl = PreloadController(m, start, rest_lengths0=rest_lengths0, load=Ls[0], bounds=bounds, rate_limit=rate_limit,
-                            margin=margin, objective=objective, weights=weights)
+                            margin=margin, objective=objective, weights=weights, on_infeasible=on_infeasible)
     t0 = time.perf_counter()
     steps: list[PreloadStep] = []
     verified: list[bool] = []
@@ -603,7 +797,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
                 status = "time_limit"
                 break
             steps.append(st)
-            verified.append(bool(verify) and bool(st.feasible) and _lands(ctl, st, Ls[k], q_prev))
+            verified.append(bool(verify) and _lands(ctl, st, Ls[k], q_prev))
             if progress is not None:
                 progress(k + 1, K)
     n = m.n
@@ -614,23 +808,27 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     def arr(get, shape):
         return np.array([get(s) for s in steps], dtype=float).reshape((P, *shape))
 
-    return PreloadPlan(rest_lengths=arr(lambda s: s.rest_lengths, (n, 2)), q=arr(lambda s: s.q, (n,)),
-                       tip=arr(lambda s: s.tip, (2,)), end_angle=arr(lambda s: s.end_angle, ()),
+    return PreloadPlan(commands=arr(lambda s: s.command, (n, 2)), proposals=arr(lambda s: s.proposal, (n, 2)),
+                       q=arr(lambda s: s.q, (n,)), tip=arr(lambda s: s.tip, (2,)),
+                       tip_error=arr(lambda s: s.tip_error, ()), end_angle=arr(lambda s: s.end_angle, ()),
                        margin=arr(lambda s: s.margin, ()), feasible=np.array([s.feasible for s in steps], dtype=bool),
                        verified=np.array(verified, dtype=bool), method=tuple(s.method for s in steps), status=status,
                        steps=tuple(steps), seconds=time.perf_counter() - t0, targets=T[:P].copy(),
-                       margin_required=float(margin), objective=objective, times=t_steps[:P].copy())
+                       margin_required=float(margin), objective=objective, times=t_steps[:P].copy(),
+                       on_infeasible=on_infeasible)
 
 
 def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:
-    """The forward quasi-static solve from the previous configuration with the step's rest lengths lands on
-    the target, stable."""
-    m = ctl.manipulator(st.rest_lengths.ravel())
+    """The forward quasi-static solve from the previous configuration with the step's command lands on the
+    step's pose (on the target for a feasible step), stable."""
+    m = ctl.manipulator(st.command.ravel())
     eq = settle_under_force(m, F, q_prev)        # Newton from the previous state; IPOPT's descent if it fails
     if eq is None:
         try:
             eq = solve_equilibrium_under_force(m, *F, q0=q_prev)
         except TensegrityError:
             return False
-    return bool(eq.stable) and float(np.max(np.abs(eq.tip - st.target))) <= LAND_TOL * ctl.scale \
-        and float(np.max(np.abs(eq.q - st.q))) <= 1e-6
+    tol = LAND_TOL * ctl.scale
+    return bool(eq.stable) and float(np.max(np.abs(eq.tip - st.tip))) <= tol \
+        and float(np.max(np.abs(eq.q - st.q))) <= 1e-6 \
+        and (not st.feasible or float(np.max(np.abs(eq.tip - st.target))) <= tol)

@@ -45,7 +45,8 @@ from .active_bounds import ActiveBound, active_bounds
 from .strongest import Design, buckling_design
 
 __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
-           "forward_check", "stability_margin", "checked_start", "nlp_pose", "spring_bounds"]
+           "forward_check", "stability_margin", "checked_start", "nlp_pose", "spring_bounds", "solve_pose_nlp",
+           "NEAREST_REGULARISER"]
 
 #: What a preload problem minimises: ``"change"`` the (weighted) change of the rest lengths from the reference
 #: ones (the chain's own for a pose, the previous step's along a trajectory), ``"margin"`` minus the stability
@@ -53,6 +54,9 @@ __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", 
 OBJECTIVES = ("change", "margin", "energy")
 #: Tip error (times ``max b``) within which a forward solve lands on the target.
 LAND_TOL = 1e-6
+#: Weight of the (normalised) change of the rest lengths in the nearest-pose objective, against the tip distance
+#: in units of ``max b``: it picks the least change among equally near poses and moves the distance by ~1e-6.
+NEAREST_REGULARISER = 1e-6
 _INF = float("inf")
 
 
@@ -216,7 +220,6 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
 
 def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start) -> PreloadDesign:
     from ...numerics import preload_nlp
-    from ...numerics.design_nlp import tril_vector
 
     if objective not in OBJECTIVES:
         raise InvalidParameterError(f"objective must be one of {OBJECTIVES}, got {objective!r}", field="objective")
@@ -245,10 +248,45 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
             q0 = solve_equilibrium(m, dx, dy).q
         except TensegrityError:
             q0 = _reach_guess(m, target)
+    res, q, L10, L20, lo2, hi2 = solve_pose_nlp(m, target, load, objective, margin, taut, lo, hi, end_angle, q0)
+    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(),
+            "margin": float(res.x[preload_nlp(n).variables["mu"]])}
+    if not res.success:
+        raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
+                                    best=best)
+    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
+    # the forward solve from the optimiser's q: Newton (IPOPT's own descent from an exact minimum near a joint
+    # bound can be pushed into another well by its barrier), IPOPT's descent where Newton does not settle
+    eq = forward_check(m_new, load, q, target, settle=True, status=res.status, best=best)
+    return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q,
+                         margin=stability_margin(m_new, eq.q, load), tip=eq.tip, energy=eq.energy,
+                         solver=SolverInfo(res.status, res.iterations), equilibrium=eq,
+                         active_bounds=rest_length_active_bounds(L10, L20, lo2, hi2))
+
+
+def solve_pose_nlp(m: Manipulator, target, load, objective: str, margin: float, taut: bool, lo, hi, end_angle,
+                   q0: np.ndarray, ell0: np.ndarray | None = None, *, nearest: bool = False):
+    """One IPOPT solve of the preload NLP (:func:`tensegrity_opt.numerics.preload_nlp`) from the configuration
+    ``q0`` and the rest lengths ``ell0`` (the :func:`~tensegrity_opt.numerics.layout.rest_lengths` layout;
+    default ``m``'s, clipped into the bounds ``lo``, ``hi`` of :func:`rest_length_bounds`); ``m``'s rest lengths
+    are the nominal ones of ``objective="change"``.
+
+    ``nearest=False``: the tip on ``target`` (and the last link at ``end_angle``), ``objective`` minimised.
+    ``nearest=True``: the tip rows free, minimising ``|tip - target|^2 / max(b)^2`` (plus ``(phi_n -
+    end_angle)^2``) plus :data:`NEAREST_REGULARISER` times the change: the admissible pose nearest to the target
+    (every other requirement kept: equilibrium under ``load``, the margin, the bounds, the joint range).
+
+    Returns ``(NLPResult, q, L10, L20, lo2, hi2)``: IPOPT's result, its configuration and rest lengths
+    (:func:`nlp_pose`) and the bounds' blocks (:func:`spring_bounds`).
+    """
+    from ...numerics import preload_nlp
+    from ...numerics.design_nlp import tril_vector
+
+    n = m.n
     nlp = preload_nlp(n)
     springs = rest_lengths(n)
     L0nom = springs.pack(L10=m.L1_0, L20=m.L2_0)
-    L0start = springs.unpack(np.clip(L0nom, lo, hi))
+    L0start = springs.unpack(np.clip(L0nom if ell0 is None else ell0, lo, hi))
     m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start["L10"], L0start["L20"]))
     _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
     Hq = _relative(Hphi)
@@ -263,26 +301,22 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     lbx = x.pack(phi=-_INF, **lo2, mu=margin, L=nlp.factor_floor)
     ubx = x.pack(phi=_INF, **hi2, mu=margin if objective != "margin" else _INF, L=_INF)
     lim = m.joint_limits * (1 - RANGE_SHRINK)
-    ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
     slack = 0.0 if taut else -_INF
-    lbg = g.pack(grad=0.0, tip=target, angle=ea[0], psd=0.0, stretch1=slack, stretch2=slack, q=-lim)
-    ubg = g.pack(grad=0.0, tip=target, angle=ea[1], psd=0.0, stretch1=_INF, stretch2=_INF, q=lim)
-    weights = {"change": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
-    p = nlp.parameters.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=load, L0nom=L0nom, w=weights)
+    if nearest:
+        tip_lo, tip_hi, ea = -_INF, _INF, (-_INF, _INF)
+        weights = [NEAREST_REGULARISER, 0.0, 0.0, 1.0 / float(np.max(m.b)) ** 2, float(end_angle is not None)]
+    else:
+        tip_lo = tip_hi = target
+        ea = (-_INF, _INF) if end_angle is None else (float(end_angle), float(end_angle))
+        weights = {"change": [1.0, 0.0, 0.0], "margin": [1e-6, 1.0, 0.0], "energy": [0.0, 0.0, 1.0]}[objective]
+        weights = [*weights, 0.0, 0.0]
+    lbg = g.pack(grad=0.0, tip=tip_lo, angle=ea[0], psd=0.0, stretch1=slack, stretch2=slack, q=-lim)
+    ubg = g.pack(grad=0.0, tip=tip_hi, angle=ea[1], psd=0.0, stretch1=_INF, stretch2=_INF, q=lim)
+    aim = [float(target[0]), float(target[1]), 0.0 if end_angle is None else float(end_angle)]
+    p = nlp.parameters.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=load, L0nom=L0nom, w=weights, aim=aim)
     res = nlp.solve(x0, lbx, ubx, lbg, ubg, p)
     q, L10, L20 = nlp_pose(x, res.x, lo2, hi2)
-    best = {"q": q.tolist(), "preloads": np.column_stack([L10, L20]).tolist(), "margin": float(res.x[x["mu"]])}
-    if not res.success:
-        raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
-                                    best=best)
-    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
-    # the forward solve from the optimiser's q: Newton (IPOPT's own descent from an exact minimum near a joint
-    # bound can be pushed into another well by its barrier), IPOPT's descent where Newton does not settle
-    eq = forward_check(m_new, load, q, target, settle=True, status=res.status, best=best)
-    return PreloadDesign(manipulator=m_new, preloads=np.column_stack([L10, L20]), q=eq.q,
-                         margin=stability_margin(m_new, eq.q, load), tip=eq.tip, energy=eq.energy,
-                         solver=SolverInfo(res.status, res.iterations), equilibrium=eq,
-                         active_bounds=rest_length_active_bounds(L10, L20, lo2, hi2))
+    return res, q, L10, L20, lo2, hi2
 
 
 def rest_length_active_bounds(L10, L20, lo: dict, hi: dict) -> tuple[ActiveBound, ...]:

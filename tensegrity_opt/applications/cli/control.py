@@ -39,7 +39,7 @@ import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
 from ...analyses.design.load_capacity import load_capacity
-from ...analyses.design.preload_control import PreloadPlan, plan_preloads
+from ...analyses.design.preload_control import ON_INFEASIBLE, PreloadPlan, plan_preloads
 from ...analyses.design.preloads import OBJECTIVES
 from ...analyses.design.stiffness_shaping import preloads_for_stiffness
 from ...analyses.paths.simulation import Simulation, simulate
@@ -208,7 +208,8 @@ def plan_from_args(args: argparse.Namespace, m: Manipulator,
                          bounds=None if args.bounds is None else tuple(args.bounds),
                          rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
                          start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
-                         verify=not args.no_verify, timeout=args.timeout, progress=progress)
+                         on_infeasible=args.on_infeasible, verify=not args.no_verify, timeout=args.timeout,
+                         progress=progress)
 
 
 def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
@@ -295,6 +296,10 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--start-q", type=finite_float, nargs="+", default=None, metavar="Q",
                    help="the start configuration (rad, n angles) with the start's rest lengths (--rest-lengths0) "
                         "under the first load; None: reached from the least-energy rest configuration")
+    g.add_argument("--on-infeasible", choices=ON_INFEASIBLE, default="hold",
+                   help="what an infeasible step commands: hold the previous command, or approach: the rest "
+                        "lengths of the admissible pose nearest to the target (within the bounds, the rate limit "
+                        "and the margin)")
     g.add_argument("--no-verify", action="store_true",
                    help="skip the forward quasi-static solve that verifies each step")
     g.add_argument("--timeout", type=positive_float, default=None,
@@ -335,18 +340,19 @@ def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
         bar.close(f"{K} steps in {bar.seconds:.1f} s, {int(np.sum(p.feasible))} feasible, "
                   f"{int(np.sum(p.verified))} verified, status {p.status}")
     timed = bool(np.all(np.isfinite(p.times)))
-    lines = [f"Preload plan, n = {m.n}, objective {args.objective}: {K} steps, {int(np.sum(p.feasible))} feasible, "
-             f"{int(np.sum(p.verified))} verified, status {p.status} ({p.seconds:.2f} s)",
+    lines = [f"Preload plan, n = {m.n}, objective {args.objective}, on infeasible steps {p.on_infeasible}: {K} steps, "
+             f"{int(np.sum(p.feasible))} feasible, {int(np.sum(p.verified))} verified, status {p.status} "
+             f"({p.seconds:.2f} s)",
              f"{'#':>4} " + (f"{'t (s)':>9} " if timed else "") + f"{'target x':>9} {'target y':>9} {'tip x':>9} "
-             f"{'tip y':>9} {'margin':>9} {'feas.':>5} {'verif.':>6} {'method':>6}  rest lengths [L1_0, L2_0] per "
-             "segment"]
+             f"{'tip y':>9} {'tip err.':>9} {'margin':>9} {'feas.':>5} {'verif.':>6} {'method':>7}  command "
+             "[L1_0, L2_0] per segment"]
     for k in range(K):
         mg = "-" if not math.isfinite(p.margin[k]) else f"{p.margin[k]:.5f}"
-        rl = " ".join(f"[{a:.4f}, {b:.4f}]" for a, b in p.rest_lengths[k])
+        rl = " ".join(f"[{a:.4f}, {b:.4f}]" for a, b in p.commands[k])
         lines.append(f"{k:>4} " + (f"{p.times[k]:>9.4g} " if timed else "")
                      + f"{p.targets[k, 0]:>9.5f} {p.targets[k, 1]:>9.5f} {p.tip[k, 0]:>9.5f} {p.tip[k, 1]:>9.5f} "
-                     f"{mg:>9} {'yes' if p.feasible[k] else 'no':>5} {'yes' if p.verified[k] else 'no':>6} "
-                     f"{p.method[k]:>6}  {rl}")
+                     f"{p.tip_error[k]:>9.2e} {mg:>9} {'yes' if p.feasible[k] else 'no':>5} "
+                     f"{'yes' if p.verified[k] else 'no':>6} {p.method[k]:>7}  {rl}")
     return p.to_dict, "\n".join(lines)
 
 

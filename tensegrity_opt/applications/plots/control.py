@@ -1,4 +1,4 @@
-"""Figures of the control layer: a rest-length plan (rest lengths, margin and tip path per step) and the
+"""Figures of the control layer: a rest-length plan (commands, margin, tip error and tip path per step) and the
 hysteresis loop of a quasi-static simulation (the snaps as arrows from fold to landing)."""
 
 from __future__ import annotations
@@ -37,6 +37,7 @@ PLAN_STYLES = {
     "margin-required": {"color": "black", "lw": 1.2, "ls": (0, (1.0, 2.0))},
     "unverified": {"marker": "o", "ms": 7.5, "mfc": "none", "mec": "black", "mew": 1.3},
     "tip-path": {"color": "0.62", "lw": 3.2, "ls": "-", "solid_capstyle": "round"},
+    "tip-error": {"color": "black", "lw": 1.4, "ls": "-"},
 }
 #: Segments drawn with a legend entry each (longer chains: a colour bar of the segment index).
 _MAX_SEGMENT_LEGEND = 10
@@ -64,21 +65,22 @@ def _step_spans(ax: Any, steps: np.ndarray, gid: str) -> Any:
 
 
 def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin: float | None = None,
-                      title: str | None = None, figsize: tuple[float, float] = (11.0, 6.4)) -> Any:
-    """A rest-length plan of :func:`~tensegrity_opt.plan_preloads`, per step ``k``: the rest lengths of every
-    spring (left, top; spring 1 ``L1_0`` solid, spring 2 ``L2_0`` dashed, one colour per segment), the stability
-    margin (left, bottom, black; ``margin``: the required one as a dotted black level: the plan's own lines
-    are black, :data:`PLAN_STYLES`, so that no segment's colour is read as a margin), and the tip path with the targets
-    (right, equal axes; each step's tip joined to the next, the targets as crosses). Infeasible steps (no
-    admissible rest lengths: the controller stayed) are shaded in both step panels and their best reachable
-    tips marked; feasible steps the forward solve did not verify are marked on the margin. The legend sits
-    below the panels (outside the data); the axes are in the caller's units; the title gives the counts, the
-    status and (``m``) the chain's parameters.
+                      title: str | None = None, figsize: tuple[float, float] = (11.0, 7.4)) -> Any:
+    """A rest-length plan of :func:`~tensegrity_opt.plan_preloads`, per step ``k``: the commanded rest lengths of
+    every spring (left, top; spring 1 ``L1_0`` solid, spring 2 ``L2_0`` dashed, one colour per segment), the
+    stability margin of the arm under the command (left, middle, black; ``margin``: the required one as a dotted
+    black level: the plan's own lines are black, :data:`PLAN_STYLES`, so that no segment's colour is read as a
+    margin), the tip error ``|tip - target|`` (left, bottom, black) and the tip path with the targets (right,
+    equal axes; each step's tip joined to the next, the targets as crosses). Infeasible steps (the command held,
+    or approaching the target: ``on_infeasible``) are shaded in the step panels and the arm's tips there
+    marked; steps the forward solve did not verify are marked on the margin. The legend sits below the panels
+    (outside the data); the axes are in the caller's units; the title gives the counts, the status and (``m``)
+    the chain's parameters.
 
-    Artists (``gid``): ``"rest-length-<i>-<1|2>"`` (segment ``i``, 0-based: its spring's rest length per step),
-    ``"margin"``, ``"margin-required"``, ``"unverified"`` (margins of the feasible steps not verified),
-    ``"infeasible-rest"``, ``"infeasible-margin"`` (the bands), ``"targets"``, ``"tip-path"``,
-    ``"infeasible-tips"``.
+    Artists (``gid``): ``"rest-length-<i>-<1|2>"`` (segment ``i``, 0-based: its spring's commanded rest length
+    per step), ``"margin"``, ``"margin-required"``, ``"unverified"`` (margins of the steps not verified),
+    ``"tip-error"``, ``"infeasible-rest"``, ``"infeasible-margin"``, ``"infeasible-error"`` (the bands),
+    ``"targets"``, ``"tip-path"``, ``"infeasible-tips"``.
     """
     if not isinstance(plan, PreloadPlan):
         raise InvalidParameterError(f"plot_preload_plan needs a PreloadPlan, got {type(plan).__name__}", field="plan")
@@ -87,7 +89,7 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
 
-    R = np.asarray(plan.rest_lengths, float)
+    R = np.asarray(plan.commands, float)
     K = R.shape[0]
     n = R.shape[1] if R.ndim == 3 else (m.n if m is not None else 0)
     steps = np.arange(K)
@@ -95,9 +97,11 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     verified = np.asarray(plan.verified, bool).reshape(K)
     bad = steps[~feasible]
     fig = new_figure(figsize)
-    axd = fig.subplot_mosaic([["rest", "tip"], ["margin", "tip"]], width_ratios=[1.35, 1.0])
-    ax_r, ax_m, ax_t = axd["rest"], axd["margin"], axd["tip"]
+    axd = fig.subplot_mosaic([["rest", "tip"], ["margin", "tip"], ["error", "tip"]], width_ratios=[1.35, 1.0],
+                             height_ratios=[1.2, 1.0, 0.8])
+    ax_r, ax_m, ax_e, ax_t = axd["rest"], axd["margin"], axd["error"], axd["tip"]
     ax_m.sharex(ax_r)
+    ax_e.sharex(ax_r)
     colors = _segment_colors(n)
     marker = "." if K <= 60 else None
     for i in range(n):
@@ -131,17 +135,28 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
         lev.set_gid("margin-required")
         handles.append(Line2D([], [], **PLAN_STYLES["margin-required"]))
         labels.append(f"required margin {float(margin):.3g}")
-    unv = steps[feasible & ~verified]
+    unv = steps[~verified]
     pt, = ax_m.plot(unv, M[unv], ls="none", zorder=5, **PLAN_STYLES["unverified"])
     pt.set_gid("unverified")
     if unv.size:
         handles.append(Line2D([], [], ls="none", **PLAN_STYLES["unverified"]))
-        labels.append(f"feasible, not verified by the forward solve ({unv.size})")
+        labels.append(f"not verified by the forward solve ({unv.size})")
+    E = np.asarray(plan.tip_error, float).reshape(K)
+    line, = ax_e.plot(steps, E, marker=marker, ms=3.5, zorder=3, **PLAN_STYLES["tip-error"])
+    line.set_gid("tip-error")
+    # from zero; a floor a thousandth of the workspace's size keeps the roundoff of on-target steps flat at zero
+    size = float(np.abs(np.asarray(plan.targets, float)).max(initial=0.0))
+    top = float(np.nanmax(E)) if K and np.any(np.isfinite(E)) else 0.0
+    ax_e.set_ylim(0.0, max(1.08 * top, 1e-3 * max(size, 1e-12)))
+    handles.append(Line2D([], [], **PLAN_STYLES["tip-error"]))
+    labels.append("tip error |tip - target|")
     _step_spans(ax_r, bad, "infeasible-rest")
     _step_spans(ax_m, bad, "infeasible-margin")
+    _step_spans(ax_e, bad, "infeasible-error")
     if bad.size:
         handles.append(Patch(**CONTROL_STYLES["infeasible"]))
-        labels.append(f"infeasible step: the controller stays ({bad.size})")
+        action = "approaching the target" if plan.on_infeasible == "approach" else "the command held"
+        labels.append(f"infeasible step: {action} ({bad.size})")
     # the tip path and the targets
     T = np.asarray(plan.targets, float).reshape(K, 2)
     tips = np.asarray(plan.tip, float).reshape(K, 2)
@@ -157,20 +172,22 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     labels += ["targets (in order)", "tip per step"]
     if bad.size:
         handles.append(Line2D([], [], ls="none", marker="s", ms=6.5, mfc="tab:red", mec="black"))
-        labels.append("best reachable tip of an infeasible step")
+        labels.append("the tip on an infeasible step")
     if K:
         ax_t.annotate("first", T[0], textcoords="offset points", xytext=(6, 6), fontsize=7)
     ax_t.set_aspect("equal", adjustable="datalim")
     ax_r.set_ylabel("rest length (length)")
     ax_m.set_ylabel(f"margin ({MARGIN_UNIT})")
-    ax_m.set_xlabel("step $k$")
+    ax_e.set_ylabel("tip error (length)")
+    ax_e.set_xlabel("step $k$")
     from matplotlib.ticker import MaxNLocator
 
-    ax_m.xaxis.set_major_locator(MaxNLocator(integer=True))
+    ax_e.xaxis.set_major_locator(MaxNLocator(integer=True))
     ax_r.tick_params(labelbottom=False)
+    ax_m.tick_params(labelbottom=False)
     ax_t.set_xlabel("tip $x$ (length)")
     ax_t.set_ylabel("tip $y$ (length)")
-    for ax in (ax_r, ax_m, ax_t):
+    for ax in (ax_r, ax_m, ax_e, ax_t):
         ax.grid(True, lw=0.4, alpha=0.5)
     if K:
         ax_r.set_xlim(-0.5, K - 0.5)

@@ -32,7 +32,7 @@ MARGIN, RATE, PAYLOAD, ARRIVES, K = 0.05, 0.04, 0.08, 7, 14
 
 def step_by_step(m, targets, loads, rate, margin):
     """The step-by-step controller's plan of the same trajectory, its rate a length per step."""
-    return plan_preloads(m, targets, loads=loads, rate_limit=rate, margin=margin)
+    return plan_preloads(m, targets, loads=loads, rate_limit=rate, dt=1.0, margin=margin)
 
 
 def ref_chain(m: to.Manipulator, ell) -> Chain:

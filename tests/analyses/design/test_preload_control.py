@@ -43,7 +43,7 @@ def test_every_step_lands_on_its_target_stable_in_the_reference_model(name, m, F
     assert plan.status == "complete" and plan.feasible.all() and plan.verified.all()
     q_prev = PreloadController(m, load=F).q
     for k in range(len(traj)):
-        ch = ref_chain(m, plan.rest_lengths[k])
+        ch = ref_chain(m, plan.commands[k])
         q, ok = ch.newton_force(np.asarray(F, float), q_prev)       # the forward quasi-static solve
         assert ok and ch.in_range(q)
         np.testing.assert_allclose(ch.tip(q), traj[k], atol=1e-6)
@@ -51,7 +51,7 @@ def test_every_step_lands_on_its_target_stable_in_the_reference_model(name, m, F
         w = np.linalg.eigvalsh(ch.lagrangian_hess(q, np.asarray(F, float)))
         assert w[0] > 0 and w[0] == pytest.approx(plan.margin[k], rel=1e-6, abs=1e-9)
         q_prev = q
-    assert np.abs(np.diff(plan.rest_lengths, axis=0)).max() <= 0.1 + 1e-12
+    assert np.abs(np.diff(plan.commands, axis=0)).max() <= 0.1 + 1e-12
 
 
 def _slsqp_step(m, ell_prev, q_prev, target, F, angle=None):
@@ -91,7 +91,7 @@ def test_a_least_change_step_is_the_slsqp_optimum(name, m, F):
     # Newton, or IPOPT where Newton's KKT point is not a local minimum (the n = 3 chain: a saddle)
     assert st.feasible and st.method == ("ipopt" if name == "hetero" else "newton")
     q_ref, ell_ref = _slsqp_step(m, ell0, q0, target, F)
-    np.testing.assert_allclose(st.rest_lengths.ravel(), ell_ref, atol=2e-6)
+    np.testing.assert_allclose(st.command.ravel(), ell_ref, atol=2e-6)
     np.testing.assert_allclose(st.q, q_ref, atol=2e-6)
     # with the last link's angle prescribed too
     ctl2 = PreloadController(m, load=F)
@@ -99,7 +99,7 @@ def test_a_least_change_step_is_the_slsqp_optimum(name, m, F):
     st2 = ctl2.step(target, end_angle=angle)
     assert st2.feasible and st2.end_angle == pytest.approx(angle, abs=1e-10)
     q_ref, ell_ref = _slsqp_step(m, ell0, q0, target, F, angle)
-    np.testing.assert_allclose(st2.rest_lengths.ravel(), ell_ref, atol=2e-6)
+    np.testing.assert_allclose(st2.command.ravel(), ell_ref, atol=2e-6)
 
 
 def test_bounds_rate_and_margin_hold_and_the_margin_keeps_the_branch():
@@ -112,8 +112,8 @@ def test_bounds_rate_and_margin_hold_and_the_margin_keeps_the_branch():
     assert "ipopt" in plan.method                          # where the least-change step was not stable enough
     assert all(st.to_dict()["residual"] is None for st in plan.steps if st.method == "ipopt")     # no residual
     assert np.all(plan.margin >= need - 1e-7)
-    assert np.all(plan.rest_lengths >= 0.5 - 1e-9) and np.all(plan.rest_lengths <= 1.6 + 1e-9)
-    assert np.abs(np.diff(plan.rest_lengths, axis=0)).max() <= 0.08 + 1e-9
+    assert np.all(plan.commands >= 0.5 - 1e-9) and np.all(plan.commands <= 1.6 + 1e-9)
+    assert np.abs(np.diff(plan.commands, axis=0)).max() <= 0.08 + 1e-9
     # one branch: consecutive configurations stay close (no snap to another well between steps)
     assert np.abs(np.diff(plan.q, axis=0)).max() < 0.2
 
@@ -125,15 +125,16 @@ def test_an_unreachable_step_is_reported_with_the_best_pose_and_the_plan_goes_on
     traj = np.array([tip0 + [-0.05, 0.1], [10.0, 0.0], tip0 + [-0.1, 0.2]])
     plan = plan_preloads(m, traj, loads=F)
     assert plan.status == "infeasible_steps"
-    assert plan.feasible.tolist() == [True, False, True] and plan.verified.tolist() == [True, False, True]
+    assert plan.feasible.tolist() == [True, False, True] and plan.verified.tolist() == [True, True, True]
     assert plan.method[1] == "none" and "reach" in plan.steps[1].message
     assert plan.steps[1].status == "infeasible" and not plan.steps[1].success and plan.steps[0].success
     assert not plan.success and "2 feasible" in plan.message
     np.testing.assert_allclose(plan.tip[1], plan.tip[0], atol=1e-9)      # stayed at the last feasible pose
+    np.testing.assert_array_equal(plan.commands[1], plan.commands[0])     # held
     d = plan.to_dict()
-    assert d["feasible"] == [True, False, True] and d["margin"][1] is None
-    s = plan.steps[1].to_dict()             # one infeasible step (the control stream sends it): no NaN
-    assert s["feasible"] is False and s["margin"] is None and s["energy"] is None
+    assert d["feasible"] == [True, False, True] and d["margin"][1] == d["margin"][0]
+    s = plan.steps[1].to_dict()             # one infeasible step (the control stream sends it): the held state
+    assert s["feasible"] is False and s["margin"] == d["margin"][0] and s["command"] == d["commands"][0]
 
 
 def test_validation_names_the_field():
@@ -173,7 +174,7 @@ def test_where_the_least_change_rule_would_snap_the_plan_stays_stable_on_its_bra
     plan = plan_preloads(m, traj, loads=F, margin=need)
     assert plan.feasible.all() and plan.verified.all() and "ipopt" in plan.method
     for k in range(K):
-        w = np.linalg.eigvalsh(ref_chain(m, plan.rest_lengths[k]).lagrangian_hess(plan.q[k], F))
+        w = np.linalg.eigvalsh(ref_chain(m, plan.commands[k]).lagrangian_hess(plan.q[k], F))
         assert w[0] >= need - 1e-6
     assert np.abs(np.diff(plan.q, axis=0)).max() < 0.2   # continuous: no jump to another well between steps
 
@@ -196,5 +197,5 @@ def test_a_plan_and_its_steps_follow_the_result_contract():
     with pytest.raises(ValueError):
         plan.q[0, 0] = 1.0
     with pytest.raises(ValueError):
-        ok.rest_lengths[0, 0] = 1.0
+        ok.command[0, 0] = 1.0
     assert isinstance(plan.steps, tuple) and isinstance(plan.method, tuple)

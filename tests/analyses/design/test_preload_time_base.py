@@ -64,14 +64,14 @@ def test_the_rate_is_per_second_with_non_uniform_times():
     tip0, ell0 = m.tip(ctl.q), ctl.ell.copy()
     T = np.array([tip0 + np.array([-0.05, 0.1]) * k for k in range(1, 5)])
     free = plan_preloads(m, T, loads=F)
-    need = changes(ell0, free.rest_lengths)                 # each step's change without a rate limit
+    need = changes(ell0, free.commands)                 # each step's change without a rate limit
     times = np.array([0.4, 0.5, 1.1, 1.25])                  # 0.4, 0.1, 0.6, 0.15 s apart
     rate = 0.8 * need.min() / 0.1                            # length / s: the 0.1 s step cannot make its free change
     plan = plan_preloads(m, T, loads=F, times=times, rate_limit=rate)
     np.testing.assert_array_equal(plan.times, times)
     assert plan.to_dict()["times"] == times.tolist()
     allowed = rate * np.array([0.4, 0.1, 0.6, 0.15])         # by hand: rate * (t_k - t_{k-1}), t_{-1} = 0
-    got = changes(ell0, plan.rest_lengths)
+    got = changes(ell0, plan.commands)
     assert np.all(got <= allowed + 1e-9)
     assert plan.feasible.all() and plan.verified.all()
     assert got[1] == pytest.approx(allowed[1], rel=1e-5)     # the short step moves as fast as allowed
@@ -81,8 +81,8 @@ def test_the_rate_is_per_second_with_non_uniform_times():
     fixed = plan_preloads(m, T, loads=F, dt=0.25, rate_limit=rate)
     np.testing.assert_allclose(fixed.times, [0.25, 0.5, 0.75, 1.0])
     same = plan_preloads(m, T, loads=F, times=[0.25, 0.5, 0.75, 1.0], rate_limit=rate)
-    np.testing.assert_allclose(fixed.rest_lengths, same.rest_lengths, atol=1e-12)
-    assert np.all(changes(ell0, fixed.rest_lengths) <= rate * 0.25 + 1e-9)
+    np.testing.assert_allclose(fixed.commands, same.commands, atol=1e-12)
+    assert np.all(changes(ell0, fixed.commands) <= rate * 0.25 + 1e-9)
     # no time base, no rate: the times are unknown (null in JSON)
     assert np.isnan(free.times).all() and free.to_dict()["times"] == [None] * 4
 
@@ -93,16 +93,16 @@ def test_the_limit_binds_exactly_where_the_least_max_change_says(name, m, F):
     tip0, ell0, q0 = m.tip(ctl.q), ctl.ell.copy(), ctl.q.copy()
     target = tip0 + np.array([-0.05, 0.1])
     free = PreloadController(m, load=F).step(target)
-    s = least_max_change(m, ell0, q0, target, F, free.rest_lengths.ravel())
-    assert s < np.abs(free.rest_lengths.ravel() - ell0).max() - 1e-3    # the least-change step moves more
+    s = least_max_change(m, ell0, q0, target, F, free.command.ravel())
+    assert s < np.abs(free.command.ravel() - ell0).max() - 1e-3    # the least-change step moves more
     rate = 0.1                                                            # length / s
     slow = PreloadController(m, load=F, rate_limit=rate).step(target, dt=0.95 * s / rate)
     assert not slow.feasible                                              # not reachable in that time
     fast_ctl = PreloadController(m, load=F, rate_limit=rate, dt=1.05 * s / rate)    # the controller's own dt
     fast = fast_ctl.step(target)
     assert fast.feasible
-    assert np.abs(fast.rest_lengths.ravel() - ell0).max() == pytest.approx(1.05 * s, rel=1e-6)   # it binds
-    ch = ref_chain(m, fast.rest_lengths)
+    assert np.abs(fast.command.ravel() - ell0).max() == pytest.approx(1.05 * s, rel=1e-6)   # it binds
+    ch = ref_chain(m, fast.command)
     q, ok = ch.newton_force(np.asarray(F, float), q0)                    # the forward solve lands on the target
     assert ok and np.allclose(ch.tip(q), target, atol=1e-6)
     assert np.linalg.eigvalsh(ch.lagrangian_hess(q, np.asarray(F, float)))[0] > 0
@@ -123,15 +123,15 @@ def test_the_start_and_the_first_step_use_rest_lengths0():
     rate, dt = 0.1, 0.5
     plan = plan_preloads(m, T, loads=F, rest_lengths0=r0, dt=dt, rate_limit=rate)
     assert plan.feasible.all() and plan.verified.all()
-    got = changes(r0, plan.rest_lengths)
+    got = changes(r0, plan.commands)
     assert np.all(got <= rate * dt + 1e-9)
-    assert np.abs(plan.rest_lengths[0] - own).max() > rate * dt       # measured from m's own it would not fit
-    ch = ref_chain(m, plan.rest_lengths[0])
+    assert np.abs(plan.commands[0] - own).max() > rate * dt       # measured from m's own it would not fit
+    ch = ref_chain(m, plan.commands[0])
     q, ok = ch.newton_force(Fa, ctl.q)                                # from the start with r0
     assert ok and np.allclose(ch.tip(q), T[0], atol=1e-6) and np.allclose(q, plan.q[0], atol=1e-7)
     # a start configuration given explicitly is read with r0 too
     again = plan_preloads(m, T, loads=F, rest_lengths0=r0, dt=dt, rate_limit=rate, start=ctl.q)
-    np.testing.assert_allclose(again.rest_lengths, plan.rest_lengths, atol=1e-12)
+    np.testing.assert_allclose(again.commands, plan.commands, atol=1e-12)
 
 
 def test_refusals_name_the_field():

@@ -56,6 +56,28 @@ def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
     assert same(got, json.loads(json.dumps(want.to_dict())))
 
 
+def test_plan_on_infeasible_approach_commands_the_nearest_pose(capsys):
+    """A target beyond the rate limit: approach moves toward it (the table's tip error and command columns, the
+    JSON body the library's); hold keeps the command."""
+    tip0 = M.tip(to.PreloadController(M).q)
+    x1, y1 = tip0 + [-0.4, 0.8]
+    line = ["--line", *(repr(float(v)) for v in (tip0[0], tip0[1], x1, y1)), "3", "--rate-limit", "0.05", "--dt", "1"]
+    assert main(["plan", *line, "--on-infeasible", "approach"]) == 0
+    out = capsys.readouterr().out
+    assert "on infeasible steps approach" in out and "tip err." in out and "command [L1_0, L2_0]" in out
+    assert "nearest" in out
+    got = run_json(capsys, ["plan", *line, "--on-infeasible", "approach"])
+    want = to.plan_preloads(M, np.linspace(tip0, [x1, y1], 3), rate_limit=0.05, dt=1.0,
+                            on_infeasible="approach")
+    assert same(got, json.loads(json.dumps(want.to_dict())))
+    assert got["on_infeasible"] == "approach" and got["method"][1] == "nearest"
+    assert got["commands"][1] != got["commands"][0]
+    assert 0 < got["tip_error"][1] < float(np.hypot(*(np.array([x1, y1]) - tip0))) / 2
+    held = run_json(capsys, ["plan", *line])
+    assert held["on_infeasible"] == "hold" and held["commands"][1] == held["commands"][0]
+    assert held["tip_error"][2] > got["tip_error"][2]
+
+
 @pytest.mark.slow
 def test_simulate_a_load_cycle_preloads_and_a_held_tip(capsys, tmp_path):
     argv = ["simulate", *BISTABLE, "--load-cycle", "0.3", "--steps", "25"]

@@ -38,22 +38,23 @@ def test_plan_figure_draws_the_library_plan(plan, tmp_path):
         for s in (1, 2):
             line = gid(fig, f"rest-length-{i}-{s}")
             assert np.array_equal(line.get_xdata(), np.arange(K))
-            assert np.array_equal(line.get_ydata(), plan.rest_lengths[:, i, s - 1])
+            assert np.array_equal(line.get_ydata(), plan.commands[:, i, s - 1])
     m = gid(fig, "margin")
-    assert np.array_equal(np.isnan(m.get_ydata()), ~plan.feasible)
-    assert np.allclose(m.get_ydata()[plan.feasible], plan.margin[plan.feasible])
+    assert np.array_equal(m.get_ydata(), plan.margin, equal_nan=True)
+    assert np.array_equal(gid(fig, "tip-error").get_ydata(), plan.tip_error)
+    assert plan.tip_error[3] > 0.5 and plan.tip_error[0] < 1e-9
     assert gid(fig, "margin-required").get_ydata()[0] == pytest.approx(0.3)
     assert np.array_equal(gid(fig, "targets").get_xydata(), plan.targets)
     assert np.array_equal(gid(fig, "tip-path").get_xydata(), plan.tip)
     assert np.array_equal(gid(fig, "infeasible-tips").get_xydata(), plan.tip[~plan.feasible])
-    for name in ("infeasible-rest", "infeasible-margin"):
+    for name in ("infeasible-rest", "infeasible-margin", "infeasible-error"):
         bands = gid(fig, name).get_paths()
         assert len(bands) == 1 and bands[0].get_extents().x0 == pytest.approx(2.5)
     labels = legend_texts(fig, count=1)
     assert "segment 4" in labels and any("infeasible step" in t for t in labels)
     assert any("required margin 0.3" in t for t in labels)
     axes_labels = " ".join(ax.get_xlabel() + " " + ax.get_ylabel() for ax in fig.axes)
-    assert "(length)" in axes_labels and "stiffness × length² / rad" in axes_labels
+    assert "(length)" in axes_labels and "tip error" in axes_labels and "stiffness × length² / rad" in axes_labels
     assert "status infeasible_steps" in fig.get_suptitle() and "n = 4, a = 1" in fig.get_suptitle()
     ids = check_renders(fig, tmp_path, "plan")
     assert {"rest-length-0-1", "tip-path", "targets", "margin", "infeasible-rest"} <= ids
@@ -75,7 +76,7 @@ def test_plan_figure_of_a_long_chain_and_of_no_step(tmp_path):
     m = to.Manipulator.uniform(12)
     p = to.plan_preloads(m, [[m.straight_length - 0.01, 0.3]])
     fig = plots.plot_preload_plan(p, m)
-    assert len(fig.axes) == 4            # the three panels and a colour bar of the segments
+    assert len(fig.axes) == 5            # the four panels and a colour bar of the segments
     assert not any(t.startswith("segment") for t in legend_texts(fig, count=1))
     gid(fig, "rest-length-11-2")
     empty = to.plan_preloads(PAPER, [[7.9, 0.1]], timeout=1e-9)

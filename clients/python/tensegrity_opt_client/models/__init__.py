@@ -135,9 +135,11 @@ from .mode_out import ModeOut
 from .plan_out import PlanOut
 from .plan_out_method_item import PlanOutMethodItem
 from .plan_out_objective import PlanOutObjective
+from .plan_out_on_infeasible import PlanOutOnInfeasible
 from .plan_out_status import PlanOutStatus
 from .plan_request import PlanRequest
 from .plan_request_objective import PlanRequestObjective
+from .plan_request_on_infeasible import PlanRequestOnInfeasible
 from .plan_step_out import PlanStepOut
 from .plan_step_out_method import PlanStepOutMethod
 from .plan_step_out_status import PlanStepOutStatus
@@ -173,6 +175,7 @@ from .plot_map_request_param_y import PlotMapRequestParamY
 from .plot_plan_request import PlotPlanRequest
 from .plot_plan_request_format_type_0 import PlotPlanRequestFormatType0
 from .plot_plan_request_objective import PlotPlanRequestObjective
+from .plot_plan_request_on_infeasible import PlotPlanRequestOnInfeasible
 from .plot_shapes_request import PlotShapesRequest
 from .plot_shapes_request_format_type_0 import PlotShapesRequestFormatType0
 from .plot_simulation_request import PlotSimulationRequest
@@ -381,9 +384,11 @@ __all__ = (
     "PlanOut",
     "PlanOutMethodItem",
     "PlanOutObjective",
+    "PlanOutOnInfeasible",
     "PlanOutStatus",
     "PlanRequest",
     "PlanRequestObjective",
+    "PlanRequestOnInfeasible",
     "PlanStepOut",
     "PlanStepOutMethod",
     "PlanStepOutStatus",
@@ -419,6 +424,7 @@ __all__ = (
     "PlotPlanRequest",
     "PlotPlanRequestFormatType0",
     "PlotPlanRequestObjective",
+    "PlotPlanRequestOnInfeasible",
     "PlotShapesRequest",
     "PlotShapesRequestFormatType0",
     "PlotSimulationRequest",

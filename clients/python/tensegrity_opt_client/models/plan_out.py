@@ -8,6 +8,7 @@ from attrs import field as _attrs_field
 
 from ..models.plan_out_method_item import PlanOutMethodItem
 from ..models.plan_out_objective import PlanOutObjective
+from ..models.plan_out_on_infeasible import PlanOutOnInfeasible
 from ..models.plan_out_status import PlanOutStatus
 
 if TYPE_CHECKING:
@@ -22,29 +23,37 @@ class PlanOut:
     """`PreloadPlan.to_dict()`: per step done (`K` rows, fewer when the time limit cut the plan).
 
     Attributes:
+        commands (list[list[list[float]]]): [L1_0, L2_0] per segment per step: what to send (consecutive commands differ
+            by at most the rate limit)
         end_angle (list[float]): the last link's absolute angle sum(q) per step (rad)
-        feasible (list[bool]): rest lengths meeting every requirement were found (false: the controller stays where it
-            was, q and tip the best reachable pose)
-        margin (list[float | None]): stability margin per step (torque / rad; null: infeasible)
+        feasible (list[bool]): rest lengths meeting every requirement put the tip on the target (false: the command
+            held, or approaching with on_infeasible approach)
+        margin (list[float | None]): the arm's stability margin per step (torque / rad; null: no equilibrium under the
+            held command)
         margin_required (float): the stability margin asked for (torque / rad)
         message (str): what happened, in a sentence
-        method (list[PlanOutMethodItem]): how each step was solved
+        method (list[PlanOutMethodItem]): how each step's command was found
         objective (PlanOutObjective): how the redundancy was resolved
-        q (list[list[float]]): the equilibrium configuration per step (rad)
-        rest_lengths (list[list[list[float]]]): [L1_0, L2_0] per segment per step (what to command)
+        on_infeasible (PlanOutOnInfeasible): what the infeasible steps commanded
+        proposals (list[list[list[float]]]): the controller's proposal per step (the commands, except on held steps: the
+            nearest admissible pose's)
+        q (list[list[float]]): the arm's configuration under each command (rad)
         seconds (float): wall time of the plan (s)
         status (PlanOutStatus): `complete`: every step is feasible; `infeasible_steps`: some steps are infeasible (see
-            feasible): each answered with the best reachable pose, the next starting from the last feasible state;
-            `time_limit`: the time limit ran out: the steps done so far
+            feasible): each commands the held value (hold) or the nearest admissible pose's rest lengths (approach), the
+            next starting from the arm's state under that command; `time_limit`: the time limit ran out: the steps done so
+            far
         steps (list[PlanStepOut]): every step in full (why an infeasible step failed: `message`)
         success (bool): whether it worked: `status` is one of complete
         targets (list[list[float]]): the targets of the steps done
         times (list[float | None]): the instants of the steps done (seconds; the start at 0); null without a time base
-        tip (list[list[float]]): the tip per step (the target when feasible; else the best reachable pose)
-        verified (list[bool]): the forward solve from the previous step lands on the target, stable (with `verify:
-            false` no solve runs: false everywhere)
+        tip (list[list[float]]): the arm's tip under each command (the target when feasible)
+        tip_error (list[float]): |tip - target| per step (length units)
+        verified (list[bool]): the forward solve from the previous step's configuration with the step's command lands on
+            the step's pose (the target when feasible), stable (with `verify: false` no solve runs: false everywhere)
     """
 
+    commands: list[list[list[float]]]
     end_angle: list[float]
     feasible: list[bool]
     margin: list[float | None]
@@ -52,8 +61,9 @@ class PlanOut:
     message: str
     method: list[PlanOutMethodItem]
     objective: PlanOutObjective
+    on_infeasible: PlanOutOnInfeasible
+    proposals: list[list[list[float]]]
     q: list[list[float]]
-    rest_lengths: list[list[list[float]]]
     seconds: float
     status: PlanOutStatus
     steps: list[PlanStepOut]
@@ -61,10 +71,21 @@ class PlanOut:
     targets: list[list[float]]
     times: list[float | None]
     tip: list[list[float]]
+    tip_error: list[float]
     verified: list[bool]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        commands = []
+        for commands_item_data in self.commands:
+            commands_item = []
+            for commands_item_item_data in commands_item_data:
+                commands_item_item = commands_item_item_data
+
+                commands_item.append(commands_item_item)
+
+            commands.append(commands_item)
+
         end_angle = self.end_angle
 
         feasible = self.feasible
@@ -86,21 +107,23 @@ class PlanOut:
 
         objective = self.objective.value
 
+        on_infeasible = self.on_infeasible.value
+
+        proposals = []
+        for proposals_item_data in self.proposals:
+            proposals_item = []
+            for proposals_item_item_data in proposals_item_data:
+                proposals_item_item = proposals_item_item_data
+
+                proposals_item.append(proposals_item_item)
+
+            proposals.append(proposals_item)
+
         q = []
         for q_item_data in self.q:
             q_item = q_item_data
 
             q.append(q_item)
-
-        rest_lengths = []
-        for rest_lengths_item_data in self.rest_lengths:
-            rest_lengths_item = []
-            for rest_lengths_item_item_data in rest_lengths_item_data:
-                rest_lengths_item_item = rest_lengths_item_item_data
-
-                rest_lengths_item.append(rest_lengths_item_item)
-
-            rest_lengths.append(rest_lengths_item)
 
         seconds = self.seconds
 
@@ -131,12 +154,15 @@ class PlanOut:
 
             tip.append(tip_item)
 
+        tip_error = self.tip_error
+
         verified = self.verified
 
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
             {
+                "commands": commands,
                 "end_angle": end_angle,
                 "feasible": feasible,
                 "margin": margin,
@@ -144,8 +170,9 @@ class PlanOut:
                 "message": message,
                 "method": method,
                 "objective": objective,
+                "on_infeasible": on_infeasible,
+                "proposals": proposals,
                 "q": q,
-                "rest_lengths": rest_lengths,
                 "seconds": seconds,
                 "status": status,
                 "steps": steps,
@@ -153,6 +180,7 @@ class PlanOut:
                 "targets": targets,
                 "times": times,
                 "tip": tip,
+                "tip_error": tip_error,
                 "verified": verified,
             }
         )
@@ -164,6 +192,18 @@ class PlanOut:
         from ..models.plan_step_out import PlanStepOut  # noqa: PLC0415
 
         d = dict(src_dict)
+        commands = []
+        _commands = d.pop("commands")
+        for commands_item_data in _commands:
+            commands_item = []
+            _commands_item = commands_item_data
+            for commands_item_item_data in _commands_item:
+                commands_item_item = cast(list[float], commands_item_item_data)
+
+                commands_item.append(commands_item_item)
+
+            commands.append(commands_item)
+
         end_angle = cast(list[float], d.pop("end_angle"))
 
         feasible = cast(list[bool], d.pop("feasible"))
@@ -194,24 +234,26 @@ class PlanOut:
 
         objective = PlanOutObjective(d.pop("objective"))
 
+        on_infeasible = PlanOutOnInfeasible(d.pop("on_infeasible"))
+
+        proposals = []
+        _proposals = d.pop("proposals")
+        for proposals_item_data in _proposals:
+            proposals_item = []
+            _proposals_item = proposals_item_data
+            for proposals_item_item_data in _proposals_item:
+                proposals_item_item = cast(list[float], proposals_item_item_data)
+
+                proposals_item.append(proposals_item_item)
+
+            proposals.append(proposals_item)
+
         q = []
         _q = d.pop("q")
         for q_item_data in _q:
             q_item = cast(list[float], q_item_data)
 
             q.append(q_item)
-
-        rest_lengths = []
-        _rest_lengths = d.pop("rest_lengths")
-        for rest_lengths_item_data in _rest_lengths:
-            rest_lengths_item = []
-            _rest_lengths_item = rest_lengths_item_data
-            for rest_lengths_item_item_data in _rest_lengths_item:
-                rest_lengths_item_item = cast(list[float], rest_lengths_item_item_data)
-
-                rest_lengths_item.append(rest_lengths_item_item)
-
-            rest_lengths.append(rest_lengths_item)
 
         seconds = d.pop("seconds")
 
@@ -253,9 +295,12 @@ class PlanOut:
 
             tip.append(tip_item)
 
+        tip_error = cast(list[float], d.pop("tip_error"))
+
         verified = cast(list[bool], d.pop("verified"))
 
         plan_out = cls(
+            commands=commands,
             end_angle=end_angle,
             feasible=feasible,
             margin=margin,
@@ -263,8 +308,9 @@ class PlanOut:
             message=message,
             method=method,
             objective=objective,
+            on_infeasible=on_infeasible,
+            proposals=proposals,
             q=q,
-            rest_lengths=rest_lengths,
             seconds=seconds,
             status=status,
             steps=steps,
@@ -272,6 +318,7 @@ class PlanOut:
             targets=targets,
             times=times,
             tip=tip,
+            tip_error=tip_error,
             verified=verified,
         )
 

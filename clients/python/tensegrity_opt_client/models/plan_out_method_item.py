@@ -3,6 +3,7 @@ from enum import StrEnum
 
 class PlanOutMethodItem(StrEnum):
     IPOPT = "ipopt"
+    NEAREST = "nearest"
     NEWTON = "newton"
     NONE = "none"
 

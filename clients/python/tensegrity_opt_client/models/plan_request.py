@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 
 from ..models.plan_request_objective import PlanRequestObjective
+from ..models.plan_request_on_infeasible import PlanRequestOnInfeasible
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -40,6 +41,10 @@ class PlanRequest:
         objective (PlanRequestObjective | Unset): change: least change from the previous step (compiled Newton, IPOPT
             where a bound is active); margin: largest margin; energy: least spring energy (IPOPT) Default:
             PlanRequestObjective.CHANGE.
+        on_infeasible (PlanRequestOnInfeasible | Unset): what an infeasible step commands: hold (the previous command;
+            the arm stays, under the step's load) or approach (the rest lengths of the admissible pose nearest to the
+            target, within the bounds, the rate limit and the margin: the arm moves toward the target and catches up when it
+            is in reach) Default: PlanRequestOnInfeasible.HOLD.
         rate_limit (float | list[float] | None | Unset): largest speed of each rest length (length units per second): a
             number or 2n numbers; step k changes each rest length by at most rate_limit * (t_k - t_{k-1}). Needs `times` or
             `dt`; default none
@@ -51,7 +56,7 @@ class PlanRequest:
         times (list[float] | None | Unset): the steps' instants (seconds), as many as targets, strictly increasing from
             a first one > 0: the start (`rest_lengths0`, `start`) is the state at time 0; default none (or `dt`)
         verify (bool | Unset): verify every step by the forward quasi-static solve from the previous step's
-            configuration (`verified`) Default: True.
+            configuration with its command (`verified`) Default: True.
         weights (list[list[float]] | None | Unset): weights [w1, w2] of each segment's rest-length changes in the least-
             change objective (n pairs, > 0); default 1
     """
@@ -64,6 +69,7 @@ class PlanRequest:
     loads: list[float] | list[list[float]] | None | Unset = UNSET
     margin: float | Unset = 0.001
     objective: PlanRequestObjective | Unset = PlanRequestObjective.CHANGE
+    on_infeasible: PlanRequestOnInfeasible | Unset = PlanRequestOnInfeasible.HOLD
     rate_limit: float | list[float] | None | Unset = UNSET
     rest_lengths0: list[list[float]] | None | Unset = UNSET
     start: None | StartQ | Unset = UNSET
@@ -148,6 +154,10 @@ class PlanRequest:
         if not isinstance(self.objective, Unset):
             objective = self.objective.value
 
+        on_infeasible: str | Unset = UNSET
+        if not isinstance(self.on_infeasible, Unset):
+            on_infeasible = self.on_infeasible.value
+
         rate_limit: float | list[float] | None | Unset
         if isinstance(self.rate_limit, Unset):
             rate_limit = UNSET
@@ -222,6 +232,8 @@ class PlanRequest:
             field_dict["margin"] = margin
         if objective is not UNSET:
             field_dict["objective"] = objective
+        if on_infeasible is not UNSET:
+            field_dict["on_infeasible"] = on_infeasible
         if rate_limit is not UNSET:
             field_dict["rate_limit"] = rate_limit
         if rest_lengths0 is not UNSET:
@@ -388,6 +400,13 @@ class PlanRequest:
         else:
             objective = PlanRequestObjective(_objective)
 
+        _on_infeasible = d.pop("on_infeasible", UNSET)
+        on_infeasible: PlanRequestOnInfeasible | Unset
+        if isinstance(_on_infeasible, Unset):
+            on_infeasible = UNSET
+        else:
+            on_infeasible = PlanRequestOnInfeasible(_on_infeasible)
+
         def _parse_rate_limit(data: object) -> float | list[float] | None | Unset:
             if data is None:
                 return data
@@ -494,6 +513,7 @@ class PlanRequest:
             loads=loads,
             margin=margin,
             objective=objective,
+            on_infeasible=on_infeasible,
             rate_limit=rate_limit,
             rest_lengths0=rest_lengths0,
             start=start,

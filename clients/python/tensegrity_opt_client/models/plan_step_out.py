@@ -21,41 +21,59 @@ class PlanStepOut:
     """One step of a plan (`PreloadStep.to_dict()`).
 
     Attributes:
+        command (list[list[float]]): [L1_0, L2_0] per segment: what to send (an infeasible step: the held value, or with
+            approach the nearest admissible pose's)
         end_angle (float):
-        energy (float | None): null: infeasible
+        energy (float | None): the spring energy there (null likewise)
         feasible (bool):
-        margin (float | None): null: infeasible
+        margin (float | None): the arm's stability margin under the command (torque / rad; null: the held rest lengths
+            have no equilibrium under the step's load)
         message (str): what happened, in a sentence
-        method (PlanStepOutMethod):
-        q (list[float]):
+        method (PlanStepOutMethod): how the command was found: newton, ipopt, nearest (the nearest admissible pose),
+            none (held)
+        proposal (list[list[float]]): the controller's proposal (the command, except on a held step: the nearest
+            admissible pose's rest lengths)
+        proposal_tip (list[float]): the tip the proposal reaches
+        q (list[float]): the arm's configuration under the command (rad)
         residual (float | None): max-norm of the equilibrium and pose equations (Newton steps)
-        rest_lengths (list[list[float]]): [L1_0, L2_0] per segment
         solver (SolverInfo):
         status (PlanStepOutStatus): `feasible`: rest lengths meeting every requirement were found: the tip on the
-            target, stable with the margin, inside the bounds and the rate limit; `infeasible`: no admissible rest lengths:
-            q and tip are the best reachable pose (rest_lengths what reaches it); the controller stays where it was
+            target, stable with the margin, inside the bounds and the rate limit; `infeasible`: no admissible rest lengths
+            put the tip on the target: the command is the held value (on_infeasible hold) or the nearest admissible pose's
+            rest lengths (approach); q, tip, margin and energy describe the arm under the command, proposal and proposal_tip
+            the nearest admissible pose
         success (bool): whether it worked: `status` is one of feasible
         target (list[float]):
-        tip (list[float]):
+        tip (list[float]): the arm's tip under the command
+        tip_error (float): |tip - target| (length units)
     """
 
+    command: list[list[float]]
     end_angle: float
     energy: float | None
     feasible: bool
     margin: float | None
     message: str
     method: PlanStepOutMethod
+    proposal: list[list[float]]
+    proposal_tip: list[float]
     q: list[float]
     residual: float | None
-    rest_lengths: list[list[float]]
     solver: SolverInfo
     status: PlanStepOutStatus
     success: bool
     target: list[float]
     tip: list[float]
+    tip_error: float
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        command = []
+        for command_item_data in self.command:
+            command_item = command_item_data
+
+            command.append(command_item)
+
         end_angle = self.end_angle
 
         energy: float | None
@@ -70,16 +88,18 @@ class PlanStepOut:
 
         method = self.method.value
 
+        proposal = []
+        for proposal_item_data in self.proposal:
+            proposal_item = proposal_item_data
+
+            proposal.append(proposal_item)
+
+        proposal_tip = self.proposal_tip
+
         q = self.q
 
         residual: float | None
         residual = self.residual
-
-        rest_lengths = []
-        for rest_lengths_item_data in self.rest_lengths:
-            rest_lengths_item = rest_lengths_item_data
-
-            rest_lengths.append(rest_lengths_item)
 
         solver = self.solver.to_dict()
 
@@ -91,24 +111,29 @@ class PlanStepOut:
 
         tip = self.tip
 
+        tip_error = self.tip_error
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
             {
+                "command": command,
                 "end_angle": end_angle,
                 "energy": energy,
                 "feasible": feasible,
                 "margin": margin,
                 "message": message,
                 "method": method,
+                "proposal": proposal,
+                "proposal_tip": proposal_tip,
                 "q": q,
                 "residual": residual,
-                "rest_lengths": rest_lengths,
                 "solver": solver,
                 "status": status,
                 "success": success,
                 "target": target,
                 "tip": tip,
+                "tip_error": tip_error,
             }
         )
 
@@ -119,6 +144,13 @@ class PlanStepOut:
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
 
         d = dict(src_dict)
+        command = []
+        _command = d.pop("command")
+        for command_item_data in _command:
+            command_item = cast(list[float], command_item_data)
+
+            command.append(command_item)
+
         end_angle = d.pop("end_angle")
 
         def _parse_energy(data: object) -> float | None:
@@ -141,6 +173,15 @@ class PlanStepOut:
 
         method = PlanStepOutMethod(d.pop("method"))
 
+        proposal = []
+        _proposal = d.pop("proposal")
+        for proposal_item_data in _proposal:
+            proposal_item = cast(list[float], proposal_item_data)
+
+            proposal.append(proposal_item)
+
+        proposal_tip = cast(list[float], d.pop("proposal_tip"))
+
         q = cast(list[float], d.pop("q"))
 
         def _parse_residual(data: object) -> float | None:
@@ -149,13 +190,6 @@ class PlanStepOut:
             return cast(float | None, data)
 
         residual = _parse_residual(d.pop("residual"))
-
-        rest_lengths = []
-        _rest_lengths = d.pop("rest_lengths")
-        for rest_lengths_item_data in _rest_lengths:
-            rest_lengths_item = cast(list[float], rest_lengths_item_data)
-
-            rest_lengths.append(rest_lengths_item)
 
         solver = SolverInfo.from_dict(d.pop("solver"))
 
@@ -167,21 +201,26 @@ class PlanStepOut:
 
         tip = cast(list[float], d.pop("tip"))
 
+        tip_error = d.pop("tip_error")
+
         plan_step_out = cls(
+            command=command,
             end_angle=end_angle,
             energy=energy,
             feasible=feasible,
             margin=margin,
             message=message,
             method=method,
+            proposal=proposal,
+            proposal_tip=proposal_tip,
             q=q,
             residual=residual,
-            rest_lengths=rest_lengths,
             solver=solver,
             status=status,
             success=success,
             target=target,
             tip=tip,
+            tip_error=tip_error,
         )
 
         plan_step_out.additional_properties = d

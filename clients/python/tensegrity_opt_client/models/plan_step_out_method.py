@@ -3,6 +3,7 @@ from enum import StrEnum
 
 class PlanStepOutMethod(StrEnum):
     IPOPT = "ipopt"
+    NEAREST = "nearest"
     NEWTON = "newton"
     NONE = "none"
 
