@@ -4,8 +4,8 @@ A pre-bent four-segment chain (``Segment(1, 1, 1, (1.04, 0.96))`` x 4) moves its
 holds it; at step 7 a compressive payload ``F = (-0.08, 0)`` arrives. Every rest length may change by at most 0.04
 per step and every step needs a stability margin of 0.05. Under the payload the arm needs stiffer springs than it
 has: more change than one step allows. The step-by-step controller (``plan_preloads``) sees the payload only at
-step 7 and goes infeasible from there on; the receding horizon (``plan_horizon``, ``N = 10``) sees it coming and
-stiffens the arm during the steps before it, on target throughout.
+step 7 and goes infeasible from there on; the receding horizon (``plan_preloads(..., horizon=10)``) sees it
+coming and stiffens the arm during the steps before it, on target throughout.
 
 Run ``python docs/horizon_example.py``: writes ``docs/img/horizon_payload.png`` and prints the numbers.
 """
@@ -21,7 +21,6 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import tensegrity_opt as to  # noqa: E402
-from tensegrity_opt.analyses.design.horizon import plan_horizon  # noqa: E402
 from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads  # noqa: E402
 
 OUT = Path(__file__).resolve().parent / "img" / "horizon_payload.png"
@@ -38,20 +37,15 @@ def case():
     return targets, loads
 
 
-def step_by_step_commands(plan) -> np.ndarray:
-    """The step-by-step plan's rest lengths per step, (K, n, 2)."""
-    return np.asarray(getattr(plan, "commands", None) if hasattr(plan, "commands") else plan.rest_lengths)
-
-
 def main() -> dict:
     targets, loads = case()
     sbs = plan_preloads(M, targets, loads=loads, rate_limit=RATE, dt=1.0, margin=MARGIN)
-    hz = plan_horizon(M, targets, horizon=HORIZON, loads=loads, rate=RATE, margin=MARGIN)
+    hz = plan_preloads(M, targets, loads=loads, rate_limit=RATE, dt=1.0, margin=MARGIN, horizon=HORIZON)
     rest0 = np.column_stack([M.L1_0, M.L2_0])
     steps = np.arange(K)
     err_s = np.linalg.norm(np.asarray(sbs.tip) - targets, axis=1)
     err_h = hz.tip_error
-    R_s, R_h = step_by_step_commands(sbs), hz.commands
+    R_s, R_h = sbs.commands, hz.commands
     fig, ax = plt.subplots(1, 3, figsize=(14.0, 4.2), constrained_layout=True)
     for a in ax:
         a.axvspan(ARRIVES - 0.5, K - 0.5, color="0.92", zorder=0)

@@ -19,6 +19,7 @@ from typing import Annotated, Any, Literal, Union
 from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 
 import tensegrity_opt as to
+from tensegrity_opt.analyses.design.horizon import HORIZONS
 from tensegrity_opt.analyses.design.preload_control import METHODS, ON_INFEASIBLE
 from tensegrity_opt.analyses.design.preloads import OBJECTIVES
 from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
@@ -98,6 +99,17 @@ PlanLoads = Annotated[
 ]
 
 
+def _int_or_name(v: Any) -> str:
+    return "<name>" if isinstance(v, str) else "<int>"
+
+
+#: A horizon: a number of steps or ``"all"`` (:data:`tensegrity_opt.analyses.design.horizon.HORIZONS`).
+Horizon = Annotated[
+    Union[Annotated[int, Field(ge=1, le=MAX_STEPS), Tag("<int>")], Annotated[Literal[HORIZONS], Tag("<name>")]],
+    Discriminator(_int_or_name),
+]
+
+
 class _PlanFields(BaseModel):
     model_config = ConfigDict(strict=True, extra="forbid")
 
@@ -143,6 +155,12 @@ class _PlanFields(BaseModel):
                             "step's load) or approach (the rest lengths of the admissible pose nearest to the "
                             "target, within the bounds, the rate limit and the margin: the arm moves toward the "
                             "target and catches up when it is in reach)")
+    horizon: Horizon | None = Field(
+        None, description="null: step by step; N: a receding horizon, each step planned with the N steps from it as "
+                          "one IPOPT problem (equilibrium, range, bounds, margin of every step and the rate box "
+                          "between steps as constraints; tip error and actuator motion as objective), the first "
+                          "applied; all: the whole trajectory as one problem. Needs `objective: change`; its steps' "
+                          "method is horizon (none: held)")
     verify: bool = Field(True, description="verify every step by the forward quasi-static solve from the previous "
                                            "step's configuration with its command (`verified`)")
 
@@ -174,7 +192,7 @@ class PlanStepOut(outcome_model(to.results.PreloadStep)):
     proposal_tip: list[float] = Field(description="the tip the proposal reaches")
     feasible: bool
     method: Literal[METHODS] = Field(description="how the command was found: newton, ipopt, nearest (the nearest "
-                                                 "admissible pose), none (held)")
+                                                 "admissible pose), horizon (a step of a horizon plan), none (held)")
     solver: SolverInfo = Field(description="the solver's status (Newton_Converged, IPOPT's; for an infeasible step "
                                            "the failed solve's, or none) and iterations")
     residual: float | None = Field(description="max-norm of the equilibrium and pose equations (Newton steps)")
@@ -207,6 +225,7 @@ class PlanOut(outcome_model(to.PreloadPlan)):
     margin_required: float = Field(description="the stability margin asked for (torque / rad)")
     objective: Literal["change", "margin", "energy"] = Field(description="how the redundancy was resolved")
     on_infeasible: Literal[ON_INFEASIBLE] = Field(description="what the infeasible steps commanded")
+    horizon: int | Literal[HORIZONS] | None = Field(description="null (step by step), N (receding) or all")
     steps: list[PlanStepOut] = Field(description="every step in full (why an infeasible step failed: `message`)")
 
 

@@ -102,7 +102,7 @@ def find_plan(req: Any, deadline: float) -> PreloadPlan:
                          bounds=_bounds(req.bounds), rate_limit=number_or_array(req.rate_limit),
                          margin=req.margin, objective=req.objective, weights=req.weights,
                          start=optional_array(None if req.start is None else req.start.q),
-                         on_infeasible=req.on_infeasible, verify=req.verify,
+                         on_infeasible=req.on_infeasible, horizon=req.horizon, verify=req.verify,
                          timeout=seconds_left(deadline))
 
 

@@ -86,6 +86,23 @@ def test_a_plan_that_approaches_is_the_library_plan(client):
                 "on_infeasible")
 
 
+def test_a_horizon_plan_is_the_library_plan(client):
+    """horizon: N — the body is the library's horizon plan (its steps' method horizon, the horizon echoed); the
+    vocabulary and the objective it needs are checked."""
+    body = {"manipulator": PAPER, "targets": ARC[:2], "rate_limit": 0.05, "dt": 1.0, "margin": 0.3, "horizon": 3,
+            "on_infeasible": "approach"}
+    got = post_ok(client, "/v1/control/plan", body)
+    want = to.plan_preloads(M, ARC[:2], rate_limit=0.05, dt=1.0, margin=0.3, horizon=3, on_infeasible="approach")
+    assert without_seconds(got) == without_seconds(body_of(want.to_dict()))
+    s.PlanOut.model_validate(got)
+    assert got["horizon"] == 3 and set(got["method"]) <= {"horizon", "none"}
+    assert post_ok(client, "/v1/control/plan", {**body, "horizon": "all"})["horizon"] == "all"
+    for bad in (0, "some", 2.5):
+        check_error(client.post("/v1/control/plan", json={**body, "horizon": bad}), "validation_error", "horizon")
+    check_error(client.post("/v1/control/plan", json={**body, "objective": "margin"}), "invalid_parameter",
+                "objective")
+
+
 @pytest.mark.slow
 def test_simulation_is_the_library_simulation(client):
     got = post_ok(client, "/v1/control/simulate", s.SIMULATION_REQUEST_EXAMPLE)

@@ -1,55 +1,62 @@
 """A horizon planner: the springs' rest lengths for several steps of a trajectory at once, as one CasADi NLP.
 
-The step-by-step controller (:mod:`.preload_control`) answers each step alone: it cannot start moving a slow
-actuator before a step that needs it (a load arriving, a jump of the target), and such a step goes infeasible.
-:func:`plan_horizon` plans ``N`` steps together (:class:`tensegrity_opt.numerics.horizon_nlp.HorizonNLP`: the
-equilibrium of every step, the joint range, the actuator bounds, the stability margin in Cholesky form and the
-rate box between consecutive steps as constraints; the pose error and the actuators' motion in the objective):
+The method behind :func:`~.preload_control.plan_preloads` with ``horizon=N`` or ``horizon="all"`` (its result, a
+:class:`~.preload_control.PreloadPlan` of :class:`~.preload_control.PreloadStep`, is the step-by-step plan's). The
+step-by-step controller (:class:`~.preload_control.PreloadController`) answers each step alone: it cannot start
+moving a slow actuator before a step that needs it (a load arriving, a jump of the target), and such a step goes
+infeasible. :func:`horizon_steps` plans ``N`` steps together
+(:class:`tensegrity_opt.numerics.horizon_nlp.HorizonNLP`: the equilibrium of every step, the joint range, the
+actuator bounds, the stability margin in Cholesky form and the rate box between consecutive steps as constraints;
+the pose error and the actuators' motion in the objective):
 
 * ``horizon=N`` (a positive int): **receding horizon**. At step ``j`` the steps ``j .. j+N-1`` are solved (past
   the end of the trajectory its last target and load repeat), the first is applied, and the next solve starts
   from this solution shifted by one step (warm); the first solve starts from the current state.
 * ``horizon="all"``: the whole trajectory as one NLP, solved once from the current state.
 
-The pose error is soft by default (``tracking="soft"``): an exact penalty (a first power plus a square, see the
-numerics module), so a reachable target is met exactly while an out-of-reach stretch still has a solution that
-moves toward the targets as fast as the bounds, rates and margin allow and catches up when it can;
-``tracking="exact"`` makes every pose a constraint (one unreachable target in the horizon then leaves the whole
-solve without a solution).
+What an off-target step does is the plan's ``on_infeasible``:
+
+* ``"approach"``: the pose error is an exact penalty (a first power plus a square, see the numerics module), so an
+  out-of-reach stretch still has a solution that moves toward the targets as fast as the bounds, rates and margin
+  allow and catches up when it can; the plan minimises the errors' sum over the window, and may leave a reachable
+  step a little off its target to be nearer the next ones (a step off its target is infeasible, and reported so).
+* ``"hold"``: the pose of the first step of each solve (the step about to be applied) is a constraint, the later
+  steps' poses the penalty: a step is met exactly or not at all, the freedom left (the redundant rest lengths)
+  moves ahead for the steps to come; a step whose pose cannot be met (the solve infeasible, or with ``"all"`` a
+  later step of the solve off its target) holds the previous command, and the plan is solved again from the state
+  reached.
 
 Every step is applied only when it is safe: its solve converged (IPOPT's return status is reported per step), the
 command lies inside the rate box of the command actually applied before it, and the forward quasi-static solve
 (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.settle_under_force`, IPOPT's descent where Newton does not
 settle) from the previous configuration with the step's rest lengths lands on the step's planned pose, stable.
-Otherwise the step **holds** the previous command (``adopted`` False; ``q``, ``tip`` are then where the arm goes
-under it and the step's load) and the next solve starts from that state.
+Otherwise the step **holds** the previous command (``method`` ``"none"``; ``q``, ``tip`` are then where the arm
+goes under it and the step's load, the IPOPT status in ``solver``) and the next solve starts from that state.
 """
 
 from __future__ import annotations
 
 import math
-import time
-from dataclasses import dataclass
-from typing import ClassVar
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
-from ...numerics.layout import rest_lengths
-from ...outcome import Outcome, SolverInfo, freeze
-from ...timelimit import expired, time_limit
+from ...outcome import SolverInfo
+from ...timelimit import expired
 from ..equilibria.equilibrium import Equilibrium, settle_under_force, solve_equilibrium_under_force
-from .follower import loaded_rest
-from .preloads import LAND_TOL, checked_start, rest_length_bounds, spring_bounds, stability_margin
+from .preloads import LAND_TOL, stability_margin
 
-__all__ = ["HorizonPlan", "plan_horizon", "HORIZONS", "TRACKING", "TIP_WEIGHTS"]
+if TYPE_CHECKING:
+    from .preload_control import PreloadController, PreloadStep
+
+__all__ = ["horizon_steps", "check_horizon", "HORIZONS", "TIP_WEIGHTS"]
 
 #: The ``horizon`` vocabulary besides a positive int ``N`` (receding): ``"all"``, the whole trajectory at once.
 HORIZONS = ("all",)
-#: How the pose enters the horizon problem: ``"soft"`` (an exact penalty) or ``"exact"`` (constraints).
-TRACKING = ("soft", "exact")
 #: The pose error's weights ``(square, first power)`` in the objective, relative to the motion's weight 1 (all
 #: lengths divided by ``max b``): the first power makes the penalty exact (a reachable target is met).
 TIP_WEIGHTS = (100.0, 100.0)
@@ -60,247 +67,67 @@ RATE_TOL = 1e-7
 _INF = math.inf
 
 
-@dataclass(frozen=True)
-class HorizonPlan(Outcome):
-    """The result of :func:`plan_horizon` (``K`` steps done), per step ``k``.
-
-    Attributes
-    ----------
-    commands : ndarray (K, n, 2)
-        ``L1_0, L2_0`` per segment: what to send (on a held step, the held value).
-    proposals : ndarray (K, n, 2)
-        The planned rest lengths (equal to ``commands`` on an adopted step; NaN where no solve converged).
-    q : ndarray (K, n)
-        The arm's equilibrium under the command (relative joint angles, rad).
-    tip : ndarray (K, 2)
-    tip_error : ndarray (K,)
-        ``|tip - target|``.
-    end_angle, margin, energy : ndarray (K,)
-        The last link's absolute angle, the stability margin (smallest eigenvalue of the Hessian of
-        ``E - F . tip`` in the joint angles, torque / rad; recomputed at ``q``) and the spring energy.
-    adopted : ndarray (K,) of bool
-        The step's solve converged and its command was applied (else the step held the previous command).
-    verified : ndarray (K,) of bool
-        The forward quasi-static solve from the previous configuration with the command landed on the planned
-        pose, stable (False everywhere with ``verify=False``: not checked).
-    on_target : ndarray (K,) of bool
-        ``tip_error <= LAND_TOL max b`` (and the end angle, when given, within ``LAND_TOL``).
-    solver : tuple of SolverInfo
-        The status and iterations of the IPOPT solve that planned each step (``"none"``: no solve).
-    targets : ndarray (K, 2)
-    horizon : int or str
-        ``N`` or ``"all"``.
-    solves : int
-        IPOPT solves run (a receding plan: one per step, plus the cold retries).
-    seconds : float
-    status : str
-        :attr:`STATUSES`.
-    """
-
-    STATUSES: ClassVar[dict[str, str]] = {
-        "complete": "every step was adopted, verified where asked, and on its target",
-        "off_target": "every step was adopted, some off their targets: out of reach within the bounds, rates and "
-                      "margin (the plan moves toward them as fast as allowed)",
-        "held_steps": "some steps held the previous command (their solve did not converge, or the forward solve did "
-                      "not land on the plan): see adopted and solver",
-        "time_limit": "the time limit ran out: the steps done so far",
-    }
-    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
-
-    commands: np.ndarray
-    proposals: np.ndarray
-    q: np.ndarray
-    tip: np.ndarray
-    tip_error: np.ndarray
-    end_angle: np.ndarray
-    margin: np.ndarray
-    energy: np.ndarray
-    adopted: np.ndarray
-    verified: np.ndarray
-    on_target: np.ndarray
-    solver: tuple[SolverInfo, ...]
-    targets: np.ndarray
-    horizon: int | str
-    solves: int
-    seconds: float
-    status: str
-    margin_required: float = 0.0
-    tracking: str = "soft"
-
-    def __post_init__(self) -> None:
-        freeze(self, copy=False)
-
-    @property
-    def feasible(self) -> np.ndarray:
-        """Per step: adopted and on target (what the step-by-step controller calls a feasible step)."""
-        return self.adopted & self.on_target
-
-    @property
-    def message(self) -> str:
-        """A sentence: how many steps, adopted, on target and verified."""
-        K = len(self.solver)
-        done = (f"{K} step(s) planned with horizon {self.horizon}: {int(self.adopted.sum())} adopted, "
-                f"{int(self.on_target.sum())} on target, {int(self.verified.sum())} verified, largest tip error "
-                f"{float(np.max(self.tip_error, initial=0.0)):.3g}")
-        if self.status == "time_limit":
-            return f"the time limit ran out after {done}"
-        return done
 
 
-def plan_horizon(m: Manipulator, targets, *, horizon: int | str, loads=None, end_angles=None, rest_lengths0=None,
-                 bounds=None, rate=None, margin: float = 1e-3, weights=None, start=None, tracking: str = "soft",
-                 taut: bool = False, verify: bool = True, timeout: float | None = None) -> HorizonPlan:
-    """Rest lengths for a trajectory of tip poses, planned over a horizon (module docstring).
+def check_horizon(horizon, field: str = "horizon") -> int | str:
+    """``horizon``: a positive int ``N`` or ``"all"`` (:data:`HORIZONS`), else ``InvalidParameterError``."""
+    if isinstance(horizon, str) and horizon in HORIZONS:
+        return horizon
+    if isinstance(horizon, (int, np.integer)) and not isinstance(horizon, bool) and horizon >= 1:
+        return int(horizon)
+    raise InvalidParameterError(f"horizon must be a positive int or 'all', got {horizon!r}", field=field)
 
-    Parameters
-    ----------
-    m : Manipulator
-        Geometry and stiffness (kept); its rest lengths are the current ones unless ``rest_lengths0`` is given.
-    targets : array_like (K, 2)
-        Tip positions ``(x, y)`` per step.
-    horizon : int or "all"
-        ``N >= 1`` steps solved at each step (receding), or ``"all"`` (the whole trajectory in one NLP).
-    loads : array_like (2,) or (K, 2), optional
-        Dead tip loads per step (default none).
-    end_angles : array_like (K,), optional
-        The last link's absolute angle per step (rad); NaN leaves a step's angle free.
-    rest_lengths0 : array_like (n, 2), optional
-        The arm's current rest lengths ``(L1_0, L2_0)`` per segment: the first step's rate box is measured from
-        them (default ``m``'s).
-    bounds : (lo, hi), optional
-        Actuator bounds (:func:`~.preloads.rest_length_bounds`).
-    rate : float or array_like (K,), optional
-        The largest change of every rest length at each step (length units; step ``k``'s change is measured from
-        step ``k - 1``'s command); default none.
-    margin : float
-        Required stability margin (torque / rad, absolute: as :func:`~.preloads.preloads_for_pose`).
-    weights : array_like (n, 2), optional
-        Weights of each rest length's motion in the objective (default 1).
-    start : array_like (n,) or Equilibrium, optional
-        The current configuration (an equilibrium with ``rest_lengths0`` under the first load); default the one
-        reached from the least-energy rest configuration (:func:`~.follower.loaded_rest`).
-    tracking : {"soft", "exact"}
-        The pose as an exact penalty (default: a solution exists whatever the targets) or as constraints.
-    taut : bool
-        Keep every spring in tension.
-    verify : bool
-        Adopt a step only when the forward solve lands on its planned pose (default).
-    timeout : float, optional
-        Seconds; on expiry the steps done are returned with ``status="time_limit"``.
 
-    Returns
-    -------
-    HorizonPlan
+def horizon_steps(ctl: PreloadController, targets: np.ndarray, loads: np.ndarray, end_angles: np.ndarray | None,
+                  dts: np.ndarray, horizon: int | str, out: list[tuple[PreloadStep, bool]], *, verify: bool = True,
+                  progress: Callable[[int, int], Any] | None = None) -> None:
+    """The steps of a trajectory planned over a horizon (module docstring), appended to ``out`` as ``(step,
+    verified)`` pairs as they are applied (a :class:`~tensegrity_opt.errors.TimeLimitError` leaves those done).
+
+    ``ctl`` carries the validated chain, start, rest lengths, bounds, rate limit (per second), margin, motion
+    weights and ``on_infeasible``; ``dts`` the seconds of each step (NaN: no time base, only without a rate
+    limit); ``end_angles`` NaN where free (None: none given). Called by
+    :func:`~.preload_control.plan_preloads`, which checks every argument.
     """
     from ...numerics.horizon_nlp import horizon_nlp
 
-    if not isinstance(m, Manipulator):
-        raise InvalidParameterError("m must be a Manipulator", field="m")
-    n = m.n
-    if n < 2:
-        raise InvalidParameterError("the horizon planner needs a chain of n >= 2 segments", field="n")
-    T = np.asarray(targets, dtype=float)
-    if T.ndim != 2 or T.shape[1] != 2 or T.shape[0] < 1 or not np.all(np.isfinite(T)):
-        raise InvalidParameterError("targets must be K >= 1 finite tip positions (x, y)", field="targets")
-    K = T.shape[0]
-    if isinstance(horizon, str):
-        if horizon not in HORIZONS:
-            raise InvalidParameterError(f"horizon must be a positive int or 'all', got {horizon!r}", field="horizon")
-        N = K
-    elif isinstance(horizon, (int, np.integer)) and not isinstance(horizon, bool) and horizon >= 1:
-        N = int(horizon)
+    K, n = targets.shape[0], ctl.n
+    N = K if horizon == "all" else int(horizon)
+    A = None if end_angles is None or np.all(np.isnan(end_angles)) else end_angles
+    block = lambda v: np.asarray(v, float).reshape(n, 2).T.ravel()     # noqa: E731  segment-major -> L10, L20 blocks
+    if ctl.rate is None:
+        R = np.full((K, 2 * n), _INF)
     else:
-        raise InvalidParameterError(f"horizon must be a positive int or 'all', got {horizon!r}", field="horizon")
-    if tracking not in TRACKING:
-        raise InvalidParameterError(f"tracking must be one of {TRACKING}, got {tracking!r}", field="tracking")
-    if not (isinstance(margin, (int, float)) and math.isfinite(margin) and margin >= 0):
-        raise InvalidParameterError(f"margin must be finite and >= 0, got {margin!r}", field="margin")
-    Ls = _per_step(loads, K, (2,), "loads", default=0.0)
-    A = None
-    if end_angles is not None:
-        A = np.asarray(end_angles, dtype=float).ravel()
-        if A.size != K or np.any(np.isinf(A)):
-            raise InvalidParameterError(f"end_angles must be {K} numbers (NaN: free)", field="end_angles")
-        if np.all(np.isnan(A)):
-            A = None
-    R = _per_step(rate, K, (), "rate", default=_INF)
-    if np.any(R <= 0):
-        raise InvalidParameterError("rate must be > 0", field="rate")
-    springs = rest_lengths(n)
-    if rest_lengths0 is None:
-        ell0 = springs.pack(L10=m.L1_0, L20=m.L2_0)
+        R = np.outer(dts, block(ctl.rate))
+    plan = _Planner(ctl, targets, loads, A, R, block(ctl.ell), block(ctl.w), block(ctl.lo), block(ctl.hi),
+                    bool(verify), horizon_nlp(n, N, A is not None), out, progress)
+    plan.q = ctl.q.copy()
+    if horizon == "all":
+        plan.run_all()
     else:
-        r0 = np.asarray(rest_lengths0, dtype=float)
-        if r0.shape != (n, 2) or not np.all(np.isfinite(r0)) or not np.all(r0 > 0):
-            raise InvalidParameterError(f"rest_lengths0 must be {n} pairs of positive numbers", field="rest_lengths0")
-        ell0 = springs.pack(L10=r0[:, 0], L20=r0[:, 1])
-    v = np.ones(2 * n)
-    if weights is not None:
-        wa = np.asarray(weights, dtype=float)
-        if wa.shape != (n, 2) or not np.all(np.isfinite(wa)) or not np.all(wa > 0):
-            raise InvalidParameterError(f"weights must be {n} pairs of positive numbers", field="weights")
-        v = springs.pack(L10=wa[:, 0], L20=wa[:, 1])
-    lo, hi = rest_length_bounds(m, bounds)
-    lo2, hi2 = spring_bounds(n, lo, hi)
-    plan = _Planner(m, T, Ls, A, R, ell0, v, springs.pack(**lo2), springs.pack(**hi2), float(margin), tracking,
-                    bool(taut), bool(verify), horizon_nlp(n, N, A is not None))
-    plan.q = plan.start(start)
-    return plan.run(horizon if isinstance(horizon, str) else N, timeout)
-
-
-def _per_step(value, K: int, shape: tuple, name: str, default: float) -> np.ndarray:
-    """``value`` given once (``shape``) or per step (``(K, *shape)``), finite, as ``(K, *shape)``."""
-    if value is None:
-        return np.full((K, *shape), default)
-    a = np.asarray(value, dtype=float)
-    if a.shape == shape or a.shape == (1, *shape):
-        a = np.broadcast_to(a.reshape(shape), (K, *shape)).copy()
-    if a.shape != (K, *shape) or not np.all(np.isfinite(a)):
-        what = "one number" if shape == () else f"one {shape} value"
-        raise InvalidParameterError(f"{name} must be {what} or {K} of them, finite", field=name)
-    return a
-
-
-@dataclass
-class _Step:
-    command: np.ndarray
-    proposal: np.ndarray
-    eq_q: np.ndarray
-    adopted: bool
-    verified: bool
-    solver: SolverInfo
+        plan.run_receding()
 
 
 class _Planner:
-    """One plan's state: the current command and configuration, the last solution (for the warm start)."""
+    """One plan's state: the current command and configuration, the last solution (for the warm start); the
+    rest lengths in the NLP's order (the ``L1_0`` block, then ``L2_0``)."""
 
-    def __init__(self, m, T, Ls, A, R, ell0, v, lo, hi, margin, tracking, taut, verify, nlp) -> None:
+    def __init__(self, ctl, T, Ls, A, R, ell0, v, lo, hi, verify, nlp, out, progress) -> None:
+        m = ctl.m
         self.m, self.T, self.Ls, self.A, self.R = m, T, Ls, A, R
         self.ell, self.v, self.lo, self.hi = ell0.copy(), v, lo, hi
-        self.margin, self.tracking, self.taut, self.verify, self.nlp = margin, tracking, taut, verify, nlp
+        self.margin, self.verify, self.nlp = ctl.margin, verify, nlp
+        self.hold_off_target = ctl.on_infeasible == "hold"
+        self.out, self.progress = out, progress
         self.n, self.K, self.N = m.n, T.shape[0], nlp.N
         self.scale = float(np.max(m.b))
         self.limits = m.joint_limits * (1 - RANGE_SHRINK)
-        self.solves = 0
         self.q = np.zeros(self.n)
 
     # ------------------------------------------------------------------ the arm
     def manipulator(self, ell: np.ndarray) -> Manipulator:
         n = self.n
         return Manipulator(s.replace(L0=(float(ell[i]), float(ell[n + i]))) for i, s in enumerate(self.m.segments))
-
-    def start(self, start) -> np.ndarray:
-        m0 = self.manipulator(self.ell)
-        if isinstance(start, Equilibrium):
-            return start.q.copy()
-        q = checked_start(m0, start)
-        if q is not None:
-            return q
-        eq = loaded_rest(m0, self.Ls[0])
-        if not eq.stable:
-            raise InvalidParameterError("the equilibrium under the first load reached from the rest configuration "
-                                        "is unstable: give a stable start", field="start")
-        return eq.q.copy()
 
     def forward(self, ell: np.ndarray, F: np.ndarray, q_prev: np.ndarray) -> Equilibrium | None:
         """The forward quasi-static solve: the arm with rest lengths ``ell`` under ``F`` from ``q_prev``."""
@@ -353,23 +180,26 @@ class _Planner:
             return self.T[k]
         return np.append(self.T[k], self.scale * self.A[k])            # NaN: free
 
-    def _solve(self, j: int, x0: np.ndarray):
-        """The window starting at ``j`` from ``x0``: IPOPT's result."""
+    def _solve(self, j: int, x0: np.ndarray, hard_first: bool | None = None):
+        """The window starting at ``j`` from ``x0``: IPOPT's result; ``hard_first``: the first step's pose a
+        constraint (default: holding off-target steps)."""
         nlp, n, N, m = self.nlp, self.n, self.N, self.m
         idx = self._index(j)
         x, g, p = nlp.variables, nlp.constraints, nlp.parameters
         P = np.array([self._pose_target(k) for k in idx])            # (N, d); NaN: a free angle
         free = np.isnan(P)
-        soft = self.tracking == "soft"
-        e_lo = np.where(free, 0.0, -_INF if soft else 0.0)
-        e_hi = np.where(free, 0.0, _INF if soft else 0.0)
-        t_hi = np.where(free, 0.0, _INF if soft else 0.0)
+        hard = np.zeros((N, 1), dtype=bool)             # a pose held exactly: e = 0 (module docstring)
+        hard[0] = self.hold_off_target if hard_first is None else hard_first
+        fixed = free | hard
+        e_lo = np.where(fixed, 0.0, -_INF)
+        e_hi = np.where(fixed, 0.0, _INF)
+        t_hi = np.where(fixed, 0.0, _INF)
         lbx = x.pack(phi=-_INF, L10=np.tile(self.lo[:n], N), L20=np.tile(self.lo[n:], N),
                      L=np.tile(nlp.factor_floor, N), e=e_lo.ravel(), t=0.0)
         ubx = x.pack(phi=_INF, L10=np.tile(self.hi[:n], N), L20=np.tile(self.hi[n:], N), L=_INF, e=e_hi.ravel(),
                      t=t_hi.ravel())
-        slack = 0.0 if self.taut else -_INF
-        r = np.repeat(self.R[idx], 2 * n)
+        slack = -_INF                               # slack springs allowed, as the step-by-step controller
+        r = self.R[idx].ravel()
         lim = np.tile(self.limits, N)
         lbg = g.pack(grad=0.0, psd=0.0, q=-lim, stretch1=slack, stretch2=slack,
                      pose=np.where(free, -_INF, P).ravel(), abs_hi=0.0, abs_lo=0.0, rate=-r)
@@ -378,7 +208,6 @@ class _Planner:
         w2, w1 = TIP_WEIGHTS
         pv = p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=self.Ls[idx].ravel(), ell0=self.ell, v=self.v,
                     w=[w2, w1, 1.0], scale=self.scale, margin=self.margin)
-        self.solves += 1
         return nlp.solve(x0, lbx, ubx, lbg, ubg, pv)
 
     def _split(self, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -391,45 +220,82 @@ class _Planner:
         return Q, Ell
 
     # ------------------------------------------------------------------ applying a step
-    def apply(self, k: int, plan_q: np.ndarray | None, plan_ell: np.ndarray | None, info: SolverInfo) -> _Step:
-        """Step ``k``: adopt the planned command when it is safe (module docstring), else hold."""
-        F = self.Ls[k]
-        proposal = np.full(2 * self.n, math.nan) if plan_ell is None else np.clip(plan_ell, self.lo, self.hi)
-        adopted = verified = False
+    def _on_target(self, k: int, tip: np.ndarray, q: np.ndarray) -> bool:
+        ok = float(np.max(np.abs(tip - self.T[k]))) <= LAND_TOL * self.scale
+        if ok and self.A is not None and not math.isnan(self.A[k]):
+            ok = abs(float(np.sum(q)) - self.A[k]) <= LAND_TOL
+        return ok
+
+    def apply(self, k: int, plan_q: np.ndarray | None, plan_ell: np.ndarray | None, info: SolverInfo) -> bool:
+        """Step ``k``: adopt the planned command when it is safe (module docstring), else hold; the step is
+        appended to the output. True when the plan's command was adopted."""
+        from .preload_control import PreloadStep
+
+        n, F = self.n, self.Ls[k]
+        ell_prev, q_prev = self.ell, self.q
+        adopted = lands = False
         eq = None
+        why = f"the horizon's IPOPT solve ended {info.status}: the previous command held"
+        proposal, proposal_tip = ell_prev, None
         if plan_ell is not None:
+            proposal = np.clip(plan_ell, self.lo, self.hi)
+            proposal_tip = self.manipulator(proposal).tip(plan_q)
             # IPOPT holds the rate rows to its (scaled) tolerance: a proposal that far outside is clipped in
-            inside = bool(np.all(np.abs(proposal - self.ell) <= self.R[k] * (1 + 1e-6) + RATE_TOL * self.scale))
-            if inside:
-                command = np.clip(proposal, self.ell - self.R[k], self.ell + self.R[k])
-                eq = self.forward(command, F, self.q)
-                lands = (eq is not None and bool(eq.stable)
-                         and float(np.max(np.abs(eq.q - plan_q))) <= SAME_POSE)
+            inside = bool(np.all(np.abs(proposal - ell_prev) <= self.R[k] * (1 + 1e-6) + RATE_TOL * self.scale))
+            on_target = self._on_target(k, proposal_tip, plan_q)
+            if not inside:
+                why = "the horizon's command leaves the rate box: the previous command held"
+            elif self.hold_off_target and not on_target:
+                why = (f"the target is out of reach this step (the horizon's pose is "
+                       f"{float(np.linalg.norm(proposal_tip - self.T[k])):.6g} from it): the previous command held")
+            else:
+                command = np.clip(proposal, ell_prev - self.R[k], ell_prev + self.R[k])
+                eq = self.forward(command, F, q_prev)
+                lands = (eq is not None and bool(eq.stable) and float(np.max(np.abs(eq.q - plan_q))) <= SAME_POSE)
                 if lands or not self.verify:
-                    adopted, verified = True, bool(lands and self.verify)
+                    adopted = True
                     self.ell = command
+                    why = "the horizon plan's step, verified by the forward solve" if lands else \
+                        "the horizon plan's step (not verified)"
+                else:
+                    why = "the forward solve with the horizon's command does not land on its pose: the previous " \
+                          "command held"
         if not adopted:
-            eq = self.forward(self.ell, F, self.q)
-        q = self.q if eq is None else eq.q
+            eq = self.forward(self.ell, F, q_prev)
+        q = q_prev if eq is None else eq.q
         self.q = q.copy()
-        return _Step(self.ell.copy(), proposal, q.copy(), adopted, verified, info)
+        mk = self.manipulator(self.ell)
+        tip = mk.tip(q)
+        feasible = adopted and self._on_target(k, tip, q)
+        held_ok = not adopted and eq is not None and bool(eq.stable)
+        verified = bool(self.verify) and (lands or held_ok)
+        pairs = lambda v: np.column_stack([v[:n], v[n:]])              # noqa: E731  blocks -> (n, 2)
+        step = PreloadStep._of(
+            command=pairs(self.ell), proposal=pairs(proposal), q=q.copy(), tip=tip, end_angle=float(np.sum(q)),
+            margin=stability_margin(mk, q, F), energy=float(mk.energy(q)),
+            tip_error=float(np.linalg.norm(tip - self.T[k])),
+            proposal_tip=tip if proposal_tip is None else proposal_tip,
+            feasible=feasible, method="horizon" if adopted else "none", solver=info, residual=None,
+            target=self.T[k].copy(), message=why)
+        self.out.append((step, verified))
+        if self.progress is not None:
+            self.progress(len(self.out), self.K)
+        return adopted
+
+    def _proposal(self, j: int) -> tuple[np.ndarray | None, np.ndarray | None]:
+        """Where the solve with the first step's pose held exactly failed (``"hold"``): the first step of the
+        window solved with every pose in the penalty, from the current state — the pose ``"approach"`` would
+        command, reported as the held step's proposal. ``(None, None)`` without one."""
+        if not self.hold_off_target:
+            return None, None
+        res = self._solve(j, self._cold(self._index(j)), hard_first=False)
+        if not res.success:
+            return None, None
+        Q, Ell = self._split(res.x)
+        return Q[0], Ell[0]
 
     # ------------------------------------------------------------------ the plan
-    def run(self, horizon: int | str, timeout: float | None) -> HorizonPlan:
-        t0 = time.perf_counter()
-        steps: list[_Step] = []
-        status = None
-        with time_limit(timeout):
-            try:
-                if horizon == "all":
-                    self._run_all(steps)
-                else:
-                    self._run_receding(steps)
-            except TimeLimitError:
-                status = "time_limit"
-        return self._result(steps, horizon, status, time.perf_counter() - t0)
-
-    def _run_all(self, steps: list[_Step]) -> None:
+    def run_all(self) -> None:
         """One NLP over the steps left; where a step cannot be applied (it holds), the steps after it are planned
         again from the state reached."""
         from ...numerics.horizon_nlp import horizon_nlp
@@ -440,18 +306,22 @@ class _Planner:
             self.N = self.K - j
             res = self._solve(j, self._cold(self._index(j)))            # from the current state
             info = SolverInfo(res.status, res.iterations)
-            Q, Ell = self._split(res.x) if res.success else (None, None)
+            if res.success:
+                Q, Ell = self._split(res.x)
+            else:
+                q1, e1 = self._proposal(j)
+                Q, Ell = (None, None) if q1 is None else (q1[None, :], e1[None, :])
             first = j
             for k in range(first, self.K):
                 if expired():
                     raise TimeLimitError("the horizon plan ran out of time")
-                st = self.apply(k, None if Q is None else Q[k - first], None if Ell is None else Ell[k - first], info)
-                steps.append(st)
+                has = Q is not None and k - first < len(Q)
+                adopted = self.apply(k, Q[k - first] if has else None, Ell[k - first] if has else None, info)
                 j = k + 1
-                if not st.adopted:
+                if not adopted or not res.success:
                     break
 
-    def _run_receding(self, steps: list[_Step]) -> None:
+    def run_receding(self) -> None:
         warm = None
         for j in range(self.K):
             if expired():
@@ -465,48 +335,15 @@ class _Planner:
             info = SolverInfo(res.status, res.iterations)
             if res.success:
                 Q, Ell = self._split(res.x)
-                st = self.apply(j, Q[0], Ell[0], info)
+                adopted = self.apply(j, Q[0], Ell[0], info)
             else:
-                st = self.apply(j, None, None, info)
-            steps.append(st)
-            if res.success and st.adopted and self.N > 1:
+                adopted = self.apply(j, *self._proposal(j), info)
+            if res.success and adopted and self.N > 1:
                 # the solution shifted by one step, its last step repeated
                 Qs = np.concatenate([Q[1:], Q[-1:]])
                 Es = np.concatenate([Ell[1:], Ell[-1:]])
                 warm = self._assemble(Qs, Es, self._index(j + 1))
-            elif res.success and st.adopted:
+            elif res.success and adopted:
                 warm = self._assemble(Q, Ell, self._index(j + 1))
             else:
                 warm = None
-
-    def _result(self, steps: list[_Step], horizon, status, seconds: float) -> HorizonPlan:
-        n, P = self.n, len(steps)
-        cmd = np.array([s.command for s in steps]).reshape(P, 2 * n)
-        prop = np.array([s.proposal for s in steps]).reshape(P, 2 * n)
-        Q = np.array([s.eq_q for s in steps]).reshape(P, n)
-        tips, err, ang, mar, ene, on = [], [], [], [], [], []
-        for k, s in enumerate(steps):
-            mk = self.manipulator(s.command)
-            tip = mk.tip(s.eq_q)
-            tips.append(tip)
-            err.append(float(np.linalg.norm(tip - self.T[k])))
-            ang.append(float(np.sum(s.eq_q)))
-            mar.append(stability_margin(mk, s.eq_q, self.Ls[k]))
-            ene.append(float(mk.energy(s.eq_q)))
-            ok = float(np.max(np.abs(tip - self.T[k]))) <= LAND_TOL * self.scale
-            if ok and self.A is not None and not math.isnan(self.A[k]):
-                ok = abs(ang[-1] - self.A[k]) <= LAND_TOL
-            on.append(ok)
-        adopted = np.array([s.adopted for s in steps], dtype=bool)
-        on_target = np.array(on, dtype=bool)
-        if status is None:
-            status = "held_steps" if not adopted.all() else "off_target" if not on_target.all() else "complete"
-        pairs = lambda a: np.stack([a[:, :n], a[:, n:]], axis=2)          # noqa: E731  (P, 2n) -> (P, n, 2)
-        return HorizonPlan(commands=pairs(cmd), proposals=pairs(prop), q=Q, tip=np.array(tips).reshape(P, 2),
-                           tip_error=np.array(err), end_angle=np.array(ang), margin=np.array(mar),
-                           energy=np.array(ene), adopted=adopted,
-                           verified=np.array([s.verified for s in steps], dtype=bool), on_target=on_target,
-                           solver=tuple(s.solver for s in steps), targets=self.T[:P].copy(), horizon=horizon,
-                           solves=self.solves, seconds=seconds, status=status, margin_required=self.margin,
-                           tracking=self.tracking)
-

@@ -85,8 +85,9 @@ __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "
 ON_INFEASIBLE = ("hold", "approach")
 #: How a step's command was found: the least-change ``"newton"`` step, ``"ipopt"`` (the fallback or the
 #: objective), ``"nearest"`` (the nearest admissible pose: an approach step, or the target reached by it where
-#: the other two failed), ``"none"`` (held: no new command).
-METHODS = ("newton", "ipopt", "nearest", "none")
+#: the other two failed), ``"horizon"`` (a step of a horizon plan, :mod:`.horizon`), ``"none"`` (held: no new
+#: command).
+METHODS = ("newton", "ipopt", "nearest", "horizon", "none")
 #: Spread starts of the nearest-pose search (besides the current state, IPOPT's last point and the held state).
 NEAREST_SPREAD = 2
 
@@ -656,6 +657,8 @@ class PreloadPlan(Outcome):
         The steps' instants (s; the start at 0), NaN without a time base (``null`` in :meth:`to_dict`).
     on_infeasible : str
         ``"hold"`` or ``"approach"`` (:data:`ON_INFEASIBLE`).
+    horizon : int, str or None
+        None (step by step), ``N`` (a receding horizon) or ``"all"`` (:func:`plan_preloads`).
     message : str
         The status in a sentence.
     """
@@ -687,6 +690,7 @@ class PreloadPlan(Outcome):
     objective: str = "change"
     times: np.ndarray | None = None
     on_infeasible: str = "hold"
+    horizon: int | str | None = None
 
     def __post_init__(self) -> None:
         if self.times is None:
@@ -706,7 +710,7 @@ class PreloadPlan(Outcome):
         """JSON form: ``success``, ``status``, ``message``, ``seconds``, the per-step arrays (``commands``,
         ``proposals``, ``q``, ``tip``, ``tip_error``, ``end_angle``, ``margin`` (null: no equilibrium),
         ``feasible``, ``verified``, ``method``), ``targets``, ``times`` (null: no time base), ``margin_required``,
-        ``objective``, ``on_infeasible`` and ``steps`` (:meth:`PreloadStep.to_dict`)."""
+        ``objective``, ``on_infeasible``, ``horizon`` and ``steps`` (:meth:`PreloadStep.to_dict`)."""
         return {**self.outcome(), "seconds": number(self.seconds),
                 "commands": [[numbers(r) for r in s] for s in self.commands],
                 "proposals": [[numbers(r) for r in s] for s in self.proposals],
@@ -716,13 +720,14 @@ class PreloadPlan(Outcome):
                 "verified": [bool(v) for v in self.verified], "method": list(self.method),
                 "targets": [numbers(r) for r in self.targets], "times": [nullable(t) for t in self.times],
                 "margin_required": number(self.margin_required), "objective": self.objective,
-                "on_infeasible": self.on_infeasible, "steps": [s.to_dict() for s in self.steps]}
+                "on_infeasible": self.on_infeasible, "horizon": self.horizon,
+                "steps": [s.to_dict() for s in self.steps]}
 
 
 def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times=None, dt: float | None = None,
                   rest_lengths0=None, bounds=None, rate_limit=None, margin: float = 1e-3, objective: str = "change",
-                  weights=None, start=None, on_infeasible: str = "hold", verify: bool = True,
-                  timeout: float | None = None,
+                  weights=None, start=None, on_infeasible: str = "hold", horizon: int | str | None = None,
+                  verify: bool = True, timeout: float | None = None,
                   progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     """Rest lengths for a trajectory of tip poses, on one stable branch (module docstring).
 
@@ -749,6 +754,12 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
         Required stability margin: absolute, torque per radian (module docstring).
     bounds, objective, weights, start, on_infeasible
         As :class:`PreloadController`.
+    horizon : int or "all", optional
+        None (default): step by step (:class:`PreloadController`). A positive int ``N``: a receding horizon, each
+        step planned with the ``N`` steps after it as one IPOPT problem (the equilibrium, range, bounds, margin of
+        every step and the rate box between steps as constraints; the tip error and the actuators' motion as
+        objective), the first applied; ``"all"``: the whole trajectory as one problem (:mod:`.horizon`). Its steps
+        have ``method`` ``"horizon"`` (``"none"``: held); ``objective`` must be ``"change"``.
     verify : bool
         Verify every step by the forward quasi-static solve (default).
     timeout : float, optional
@@ -778,6 +789,13 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
             raise InvalidParameterError(f"end_angles must be {K} numbers (NaN: free)", field="end_angles")
     t_steps = step_times(K, times, dt, rate_limit)
     h_steps = np.diff(t_steps, prepend=0.0)
+    if horizon is not None:
+        from .horizon import check_horizon
+
+        horizon = check_horizon(horizon)
+        if objective != "change":
+            raise InvalidParameterError("a horizon plan minimises the tip error and the actuators' motion: objective "
+                                        f"must be 'change', got {objective!r}", field="objective")
     ctl = PreloadController(m, start, rest_lengths0=rest_lengths0, load=Ls[0], bounds=bounds, rate_limit=rate_limit,
                             margin=margin, objective=objective, weights=weights, on_infeasible=on_infeasible)
     t0 = time.perf_counter()
@@ -785,7 +803,18 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     verified: list[bool] = []
     status = "complete"
     with time_limit(timeout):
-        for k in range(K):
+        if horizon is not None:
+            from .horizon import horizon_steps
+
+            done: list[tuple[PreloadStep, bool]] = []
+            try:
+                horizon_steps(ctl, T, Ls, None if A is None else A, h_steps, horizon, done, verify=verify,
+                              progress=progress)
+            except TimeLimitError:
+                status = "time_limit"
+            steps = [st for st, _ in done]
+            verified = [v for _, v in done]
+        for k in range(K if horizon is None else 0):
             if expired():
                 status = "time_limit"
                 break
@@ -815,7 +844,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
                        verified=np.array(verified, dtype=bool), method=tuple(s.method for s in steps), status=status,
                        steps=tuple(steps), seconds=time.perf_counter() - t0, targets=T[:P].copy(),
                        margin_required=float(margin), objective=objective, times=t_steps[:P].copy(),
-                       on_infeasible=on_infeasible)
+                       on_infeasible=on_infeasible, horizon=horizon)
 
 
 def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:

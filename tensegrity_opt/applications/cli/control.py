@@ -192,6 +192,19 @@ def _plan_inputs(args: argparse.Namespace) -> tuple[np.ndarray, Any, Any, Any]:
     return T, loads, angles, times
 
 
+def _horizon(text: str) -> int | str:
+    """``--horizon``: a positive int or ``all``."""
+    if text == "all":
+        return text
+    try:
+        n = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"a positive int or 'all', got {text!r}") from None
+    if n < 1:
+        raise argparse.ArgumentTypeError(f"a positive int or 'all', got {text!r}")
+    return n
+
+
 def _rest_lengths0(values: list[float] | None) -> np.ndarray | None:
     """``--rest-lengths0``: 2n numbers, ``L1_0, L2_0`` of segment 1, then of segment 2, ... as (n, 2)."""
     if values is None:
@@ -208,8 +221,8 @@ def plan_from_args(args: argparse.Namespace, m: Manipulator,
                          bounds=None if args.bounds is None else tuple(args.bounds),
                          rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
                          start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
-                         on_infeasible=args.on_infeasible, verify=not args.no_verify, timeout=args.timeout,
-                         progress=progress)
+                         on_infeasible=args.on_infeasible, horizon=args.horizon, verify=not args.no_verify,
+                         timeout=args.timeout, progress=progress)
 
 
 def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
@@ -300,6 +313,9 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
                    help="what an infeasible step commands: hold the previous command, or approach: the rest "
                         "lengths of the admissible pose nearest to the target (within the bounds, the rate limit "
                         "and the margin)")
+    g.add_argument("--horizon", type=_horizon, default=None, metavar="N|all",
+                   help="plan N steps at a time as one IPOPT problem (receding horizon: the first applied), or all "
+                        "the trajectory at once; default step by step")
     g.add_argument("--no-verify", action="store_true",
                    help="skip the forward quasi-static solve that verifies each step")
     g.add_argument("--timeout", type=positive_float, default=None,
@@ -340,7 +356,9 @@ def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
         bar.close(f"{K} steps in {bar.seconds:.1f} s, {int(np.sum(p.feasible))} feasible, "
                   f"{int(np.sum(p.verified))} verified, status {p.status}")
     timed = bool(np.all(np.isfinite(p.times)))
-    lines = [f"Preload plan, n = {m.n}, objective {args.objective}, on infeasible steps {p.on_infeasible}: {K} steps, "
+    how = "step by step" if p.horizon is None else f"horizon {p.horizon}"
+    lines = [f"Preload plan, n = {m.n}, {how}, objective {args.objective}, on infeasible steps {p.on_infeasible}: "
+             f"{K} steps, "
              f"{int(np.sum(p.feasible))} feasible, {int(np.sum(p.verified))} verified, status {p.status} "
              f"({p.seconds:.2f} s)",
              f"{'#':>4} " + (f"{'t (s)':>9} " if timed else "") + f"{'target x':>9} {'target y':>9} {'tip x':>9} "

@@ -1,4 +1,5 @@
-"""The horizon planner (analyses/design/horizon.py) against independent routes.
+"""The horizon planner (``plan_preloads(..., horizon=N | "all")``, analyses/design/horizon.py) against independent
+routes.
 
 * every step of a plan is re-solved forward with the reference model (tests/support/reference_model.py: its own
   energy, scipy's minimiser of E - F . tip from the previous step's configuration) and must land on the reported
@@ -8,8 +9,8 @@
   step-by-step plan goes infeasible at the payload and never recovers, the horizon plan stiffens the arm ahead of it
   and stays on every target;
 * the whole-trajectory plan and the receding one agree on an easy trajectory (both on target);
-* an unreachable jump: the soft plan moves toward it at the full rate and catches up, the exact one holds and says
-  why (the solver's status).
+* an unreachable jump: with ``on_infeasible="approach"`` the plan moves toward it at the full rate and catches up;
+  with ``"hold"`` the off-target steps hold the last command, their proposal nearer the target.
 """
 
 from __future__ import annotations
@@ -20,7 +21,6 @@ import scipy.optimize as so
 from reference_model import Chain
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.design.horizon import plan_horizon
 from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
 from tensegrity_opt.errors import InvalidParameterError
 
@@ -80,7 +80,7 @@ def payload():
     targets = np.array([tip0 + np.array([-0.1, 0.2]) * min(k, 5) / 5 for k in range(K)])
     loads = np.zeros((K, 2))
     loads[ARRIVES:, 0] = -PAYLOAD
-    hz = plan_horizon(m, targets, horizon=10, loads=loads, rate=RATE, margin=MARGIN)
+    hz = plan_preloads(m, targets, loads=loads, rate_limit=RATE, dt=1.0, margin=MARGIN, horizon=10)
     sbs = step_by_step(m, targets, loads, RATE, MARGIN)
     return m, q0, targets, loads, hz, sbs
 
@@ -88,10 +88,10 @@ def payload():
 def test_the_horizon_plan_anticipates_the_payload_where_the_step_by_step_plan_goes_infeasible(payload):
     m, q0, targets, loads, hz, sbs = payload
     assert not sbs.feasible[ARRIVES:].any() and sbs.feasible[:ARRIVES].all()      # infeasible at the payload, on
-    assert hz.status == "complete" and hz.success
-    assert hz.adopted.all() and hz.verified.all() and hz.on_target.all() and hz.feasible.all()
+    assert hz.status == "complete" and hz.success and hz.horizon == 10
+    assert hz.method == ("horizon",) * K and hz.verified.all() and hz.feasible.all()
     assert np.linalg.norm(hz.tip - targets, axis=1).max() <= 1e-6
-    assert all(s.status == "Solve_Succeeded" for s in hz.solver)
+    assert all(s.solver.status == "Solve_Succeeded" for s in hz.steps)
     # it starts moving before the payload: the rest lengths change while the tip target stands still (steps 5, 6)
     assert np.abs(hz.commands[ARRIVES - 1] - hz.commands[ARRIVES - 3]).max() > 0.5 * RATE
     assert hz.margin[ARRIVES:].min() >= MARGIN - 1e-7
@@ -110,35 +110,41 @@ def test_whole_trajectory_and_receding_agree_on_an_easy_trajectory():
     rest0 = np.column_stack([m.L1_0, m.L2_0]) + 0.01                    # the arm's own rest lengths, not m's
     eq0 = to.solve_equilibrium_under_force(to.Manipulator(s.replace(L0=tuple(r)) for s, r in zip(m.segments, rest0)),
                                            *F, q0=q0)
-    plans = [plan_horizon(m, targets, horizon=h, loads=F, rate=0.1, margin=1e-3, rest_lengths0=rest0, start=eq0)
-             for h in (3, "all")]
+    plans = [plan_preloads(m, targets, loads=F, rate_limit=0.1, dt=1.0, margin=1e-3, rest_lengths0=rest0, start=eq0,
+                           horizon=h) for h in (3, "all")]
     for p in plans:
-        assert p.status == "complete" and p.on_target.all() and p.verified.all()
+        assert p.status == "complete" and p.feasible.all() and p.verified.all()
         check_forward(m, p, np.tile(F, (8, 1)), eq0.q, rest0, 0.1, 1e-3)
     np.testing.assert_allclose(plans[0].tip, plans[1].tip, atol=1e-6)
 
 
-def test_an_unreachable_jump_soft_catches_up_at_the_full_rate_exact_holds():
+def test_an_unreachable_jump_approach_catches_up_at_the_full_rate_hold_stays():
     m = HETERO
     q0 = PreloadController(m).q
     tip0 = m.tip(q0)
     targets = np.array([tip0] + [tip0 + np.array([-0.1, 0.4])] * 5)
     rate = 0.03
-    soft = plan_horizon(m, targets, horizon=2, rate=rate)
-    assert soft.adopted.all() and soft.verified.all() and not soft.on_target[1] and soft.on_target[-1]
-    assert soft.status == "off_target" and not soft.success
-    moves = np.abs(np.diff(soft.commands, axis=0)).max(axis=(1, 2))
+    near = plan_preloads(m, targets, rate_limit=rate, dt=1.0, horizon=2, on_infeasible="approach")
+    assert near.method == ("horizon",) * 6 and near.verified.all() and not near.feasible[1] and near.feasible[-1]
+    assert near.status == "infeasible_steps" and not near.success
+    moves = np.abs(np.diff(near.commands, axis=0)).max(axis=(1, 2))
     assert moves[0] == pytest.approx(rate, rel=1e-6)                      # as fast as allowed
-    assert np.all(np.diff(soft.tip_error[1:][~soft.on_target[1:]]) < 0)    # the error falls until on target
-    exact = plan_horizon(m, targets, horizon=2, rate=rate, tracking="exact")
-    assert exact.status == "held_steps" and not exact.adopted[1]
-    assert exact.solver[1].status != "Solve_Succeeded"                    # IPOPT's own status
-    np.testing.assert_allclose(exact.commands[1], exact.commands[0])      # the held command
-    assert np.isnan(exact.proposals[1]).all()
+    assert np.all(np.diff(near.tip_error[1:][~near.feasible[1:]]) < 0)    # the error falls until on target
+    check_forward(m, near, np.zeros((6, 2)), q0, np.column_stack([m.L1_0, m.L2_0]), rate, 1e-3)
+    held = plan_preloads(m, targets, rate_limit=rate, dt=1.0, horizon=2, on_infeasible="hold")
+    assert held.method[1] == "none" and not held.feasible[1:].any()
+    np.testing.assert_allclose(held.commands[1:], np.broadcast_to(held.commands[0], held.commands[1:].shape))
+    assert held.steps[1].solver.status != "Solve_Succeeded"              # the pose of step 1 cannot be met
+    assert np.abs(held.proposals[1] - held.commands[0]).max() == pytest.approx(rate, rel=1e-6)   # what approach sends
+    assert np.linalg.norm(held.steps[1].proposal_tip - targets[1]) < held.tip_error[1] - 0.01
+    assert held.tip_error[-1] > 0.3 and near.tip_error[-1] <= 1e-6
 
 
 @pytest.mark.parametrize("horizon", [0, -1, "some", 2.5, True])
 def test_the_horizon_vocabulary(horizon):
     with pytest.raises(InvalidParameterError) as exc:
-        plan_horizon(HETERO, [[5.0, 0.1]], horizon=horizon)
+        plan_preloads(HETERO, [[5.0, 0.1]], horizon=horizon)
     assert exc.value.field == "horizon"
+    with pytest.raises(InvalidParameterError) as exc:
+        plan_preloads(HETERO, [[5.0, 0.1]], horizon=3, objective="margin")
+    assert exc.value.field == "objective"

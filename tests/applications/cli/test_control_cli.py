@@ -56,6 +56,24 @@ def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
     assert same(got, json.loads(json.dumps(want.to_dict())))
 
 
+def test_plan_with_a_horizon_is_the_library_plan(capsys):
+    tip0 = M.tip(to.PreloadController(M).q)
+    line = ["--line", *(repr(float(v)) for v in (tip0[0], tip0[1], tip0[0] - 0.1, tip0[1] + 0.3)), "3",
+            "--rate-limit", "0.05", "--dt", "1"]
+    got = run_json(capsys, ["plan", *line, "--horizon", "2", "--on-infeasible", "approach"])
+    want = to.plan_preloads(M, np.linspace(tip0, tip0 + [-0.1, 0.3], 3), rate_limit=0.05, dt=1.0, horizon=2,
+                            on_infeasible="approach")
+    assert same(got, json.loads(json.dumps(want.to_dict())))
+    assert got["horizon"] == 2 and set(got["method"]) <= {"horizon", "none"}
+    assert main(["plan", *line, "--horizon", "all"]) == 0
+    assert "horizon all" in capsys.readouterr().out
+    for bad in ("0", "some"):
+        with pytest.raises(SystemExit) as exc:
+            main(["plan", *line, "--horizon", bad])
+        assert exc.value.code == 2
+        assert "--horizon" in capsys.readouterr().err
+
+
 def test_plan_on_infeasible_approach_commands_the_nearest_pose(capsys):
     """A target beyond the rate limit: approach moves toward it (the table's tip error and command columns, the
     JSON body the library's); hold keeps the command."""

@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
@@ -28,6 +28,7 @@ class PlanOut:
         end_angle (list[float]): the last link's absolute angle sum(q) per step (rad)
         feasible (list[bool]): rest lengths meeting every requirement put the tip on the target (false: the command
             held, or approaching with on_infeasible approach)
+        horizon (int | Literal['all'] | None): null (step by step), N (receding) or all
         margin (list[float | None]): the arm's stability margin per step (torque / rad; null: no equilibrium under the
             held command)
         margin_required (float): the stability margin asked for (torque / rad)
@@ -56,6 +57,7 @@ class PlanOut:
     commands: list[list[list[float]]]
     end_angle: list[float]
     feasible: list[bool]
+    horizon: int | Literal["all"] | None
     margin: list[float | None]
     margin_required: float
     message: str
@@ -89,6 +91,9 @@ class PlanOut:
         end_angle = self.end_angle
 
         feasible = self.feasible
+
+        horizon: int | Literal["all"] | None
+        horizon = self.horizon
 
         margin = []
         for margin_item_data in self.margin:
@@ -165,6 +170,7 @@ class PlanOut:
                 "commands": commands,
                 "end_angle": end_angle,
                 "feasible": feasible,
+                "horizon": horizon,
                 "margin": margin,
                 "margin_required": margin_required,
                 "message": message,
@@ -207,6 +213,17 @@ class PlanOut:
         end_angle = cast(list[float], d.pop("end_angle"))
 
         feasible = cast(list[bool], d.pop("feasible"))
+
+        def _parse_horizon(data: object) -> int | Literal["all"] | None:
+            if data is None:
+                return data
+            horizon_type_1 = cast(Literal["all"], data)
+            if horizon_type_1 != "all":
+                raise ValueError(f"horizon_type_1 must match const 'all', got '{horizon_type_1}'")
+            return horizon_type_1
+            return cast(int | Literal["all"] | None, data)
+
+        horizon = _parse_horizon(d.pop("horizon"))
 
         margin = []
         _margin = d.pop("margin")
@@ -303,6 +320,7 @@ class PlanOut:
             commands=commands,
             end_angle=end_angle,
             feasible=feasible,
+            horizon=horizon,
             margin=margin,
             margin_required=margin_required,
             message=message,

@@ -2,6 +2,7 @@ from enum import StrEnum
 
 
 class PlanOutMethodItem(StrEnum):
+    HORIZON = "horizon"
     IPOPT = "ipopt"
     NEAREST = "nearest"
     NEWTON = "newton"

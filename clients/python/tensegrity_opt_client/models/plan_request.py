@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 
@@ -33,6 +33,10 @@ class PlanRequest:
         dt (float | None | Unset): a fixed time between steps (seconds, > 0) instead of `times`: t_k = (k + 1) dt
         end_angles (list[float | None] | None | Unset): the last link's absolute angle per step (rad; null: free), as
             many as targets; default free
+        horizon (int | Literal['all'] | None | Unset): null: step by step; N: a receding horizon, each step planned with
+            the N steps from it as one IPOPT problem (equilibrium, range, bounds, margin of every step and the rate box
+            between steps as constraints; tip error and actuator motion as objective), the first applied; all: the whole
+            trajectory as one problem. Needs `objective: change`; its steps' method is horizon (none: held)
         loads (list[float] | list[list[float]] | None | Unset): dead tip load: one [fx, fy] or one per step; default
             none
         margin (float | Unset): required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the
@@ -66,6 +70,7 @@ class PlanRequest:
     bounds: list[float | list[float]] | None | RestLengthBoundsIn | Unset = UNSET
     dt: float | None | Unset = UNSET
     end_angles: list[float | None] | None | Unset = UNSET
+    horizon: int | Literal["all"] | None | Unset = UNSET
     loads: list[float] | list[list[float]] | None | Unset = UNSET
     margin: float | Unset = 0.001
     objective: PlanRequestObjective | Unset = PlanRequestObjective.CHANGE
@@ -131,6 +136,12 @@ class PlanRequest:
 
         else:
             end_angles = self.end_angles
+
+        horizon: int | Literal["all"] | None | Unset
+        if isinstance(self.horizon, Unset):
+            horizon = UNSET
+        else:
+            horizon = self.horizon
 
         loads: list[float] | list[list[float]] | None | Unset
         if isinstance(self.loads, Unset):
@@ -226,6 +237,8 @@ class PlanRequest:
             field_dict["dt"] = dt
         if end_angles is not UNSET:
             field_dict["end_angles"] = end_angles
+        if horizon is not UNSET:
+            field_dict["horizon"] = horizon
         if loads is not UNSET:
             field_dict["loads"] = loads
         if margin is not UNSET:
@@ -360,6 +373,19 @@ class PlanRequest:
             return cast(list[float | None] | None | Unset, data)
 
         end_angles = _parse_end_angles(d.pop("end_angles", UNSET))
+
+        def _parse_horizon(data: object) -> int | Literal["all"] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            horizon_type_0_type_1 = cast(Literal["all"], data)
+            if horizon_type_0_type_1 != "all":
+                raise ValueError(f"horizon_type_0_type_1 must match const 'all', got '{horizon_type_0_type_1}'")
+            return horizon_type_0_type_1
+            return cast(int | Literal["all"] | None | Unset, data)
+
+        horizon = _parse_horizon(d.pop("horizon", UNSET))
 
         def _parse_loads(data: object) -> list[float] | list[list[float]] | None | Unset:
             if data is None:
@@ -510,6 +536,7 @@ class PlanRequest:
             bounds=bounds,
             dt=dt,
             end_angles=end_angles,
+            horizon=horizon,
             loads=loads,
             margin=margin,
             objective=objective,

@@ -30,7 +30,7 @@ class PlanStepOut:
             have no equilibrium under the step's load)
         message (str): what happened, in a sentence
         method (PlanStepOutMethod): how the command was found: newton, ipopt, nearest (the nearest admissible pose),
-            none (held)
+            horizon (a step of a horizon plan), none (held)
         proposal (list[list[float]]): the controller's proposal (the command, except on a held step: the nearest
             admissible pose's rest lengths)
         proposal_tip (list[float]): the tip the proposal reaches

@@ -2,6 +2,7 @@ from enum import StrEnum
 
 
 class PlanStepOutMethod(StrEnum):
+    HORIZON = "horizon"
     IPOPT = "ipopt"
     NEAREST = "nearest"
     NEWTON = "newton"

@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any, TypeVar, cast
+from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 
@@ -37,6 +37,10 @@ class PlotPlanRequest:
             many as targets; default free
         format_ (None | PlotPlanRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
+        horizon (int | Literal['all'] | None | Unset): null: step by step; N: a receding horizon, each step planned with
+            the N steps from it as one IPOPT problem (equilibrium, range, bounds, margin of every step and the rate box
+            between steps as constraints; tip error and actuator motion as objective), the first applied; all: the whole
+            trajectory as one problem. Needs `objective: change`; its steps' method is horizon (none: held)
         loads (list[float] | list[list[float]] | None | Unset): dead tip load: one [fx, fy] or one per step; default
             none
         margin (float | Unset): required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the
@@ -72,6 +76,7 @@ class PlotPlanRequest:
     dt: float | None | Unset = UNSET
     end_angles: list[float | None] | None | Unset = UNSET
     format_: None | PlotPlanRequestFormatType0 | Unset = UNSET
+    horizon: int | Literal["all"] | None | Unset = UNSET
     loads: list[float] | list[list[float]] | None | Unset = UNSET
     margin: float | Unset = 0.001
     objective: PlotPlanRequestObjective | Unset = PlotPlanRequestObjective.CHANGE
@@ -147,6 +152,12 @@ class PlotPlanRequest:
             format_ = self.format_.value
         else:
             format_ = self.format_
+
+        horizon: int | Literal["all"] | None | Unset
+        if isinstance(self.horizon, Unset):
+            horizon = UNSET
+        else:
+            horizon = self.horizon
 
         loads: list[float] | list[list[float]] | None | Unset
         if isinstance(self.loads, Unset):
@@ -246,6 +257,8 @@ class PlotPlanRequest:
             field_dict["end_angles"] = end_angles
         if format_ is not UNSET:
             field_dict["format"] = format_
+        if horizon is not UNSET:
+            field_dict["horizon"] = horizon
         if loads is not UNSET:
             field_dict["loads"] = loads
         if margin is not UNSET:
@@ -400,6 +413,19 @@ class PlotPlanRequest:
 
         format_ = _parse_format_(d.pop("format", UNSET))
 
+        def _parse_horizon(data: object) -> int | Literal["all"] | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            horizon_type_0_type_1 = cast(Literal["all"], data)
+            if horizon_type_0_type_1 != "all":
+                raise ValueError(f"horizon_type_0_type_1 must match const 'all', got '{horizon_type_0_type_1}'")
+            return horizon_type_0_type_1
+            return cast(int | Literal["all"] | None | Unset, data)
+
+        horizon = _parse_horizon(d.pop("horizon", UNSET))
+
         def _parse_loads(data: object) -> list[float] | list[list[float]] | None | Unset:
             if data is None:
                 return data
@@ -551,6 +577,7 @@ class PlotPlanRequest:
             dt=dt,
             end_angles=end_angles,
             format_=format_,
+            horizon=horizon,
             loads=loads,
             margin=margin,
             objective=objective,
