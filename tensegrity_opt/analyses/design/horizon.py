@@ -38,7 +38,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -49,9 +49,6 @@ from ...outcome import SolverInfo
 from ...timelimit import expired
 from ..equilibria.equilibrium import Equilibrium, settle_under_force, solve_equilibrium_under_force
 from .preloads import LAND_TOL, stability_margin
-
-if TYPE_CHECKING:
-    from .preload_control import PreloadController, PreloadStep
 
 __all__ = ["horizon_steps", "check_horizon", "HORIZONS", "TIP_WEIGHTS"]
 
@@ -78,15 +75,16 @@ def check_horizon(horizon, field: str = "horizon") -> int | str:
     raise InvalidParameterError(f"horizon must be a positive int or 'all', got {horizon!r}", field=field)
 
 
-def horizon_steps(ctl: PreloadController, targets: np.ndarray, loads: np.ndarray, end_angles: np.ndarray | None,
-                  dts: np.ndarray, horizon: int | str, out: list[tuple[PreloadStep, bool]], *, verify: bool = True,
-                  progress: Callable[[int, int], Any] | None = None) -> None:
+def horizon_steps(ctl: Any, targets: np.ndarray, loads: np.ndarray, end_angles: np.ndarray | None,
+                  dts: np.ndarray, horizon: int | str, out: list[tuple[Any, bool]], make_step: Callable[..., Any], *,
+                  verify: bool = True, progress: Callable[[int, int], Any] | None = None) -> None:
     """The steps of a trajectory planned over a horizon (module docstring), appended to ``out`` as ``(step,
     verified)`` pairs as they are applied (a :class:`~tensegrity_opt.errors.TimeLimitError` leaves those done).
 
-    ``ctl`` carries the validated chain, start, rest lengths, bounds, rate limit (per second), margin, motion
-    weights and ``on_infeasible``; ``dts`` the seconds of each step (NaN: no time base, only without a rate
-    limit); ``end_angles`` NaN where free (None: none given). Called by
+    ``ctl`` (a :class:`~.preload_control.PreloadController`) carries the validated chain, start, rest lengths,
+    bounds, rate limit (per second), margin, motion weights and ``on_infeasible``; ``dts`` the seconds of each step
+    (NaN: no time base, only without a rate limit); ``end_angles`` NaN where free (None: none given); ``make_step``
+    builds a step from its fields by keyword (:class:`~.preload_control.PreloadStep`'s). Called by
     :func:`~.preload_control.plan_preloads`, which checks every argument.
     """
     from ...numerics.horizon_nlp import horizon_nlp
@@ -100,7 +98,7 @@ def horizon_steps(ctl: PreloadController, targets: np.ndarray, loads: np.ndarray
     else:
         R = np.outer(dts, block(ctl.rate))
     plan = _Planner(ctl, targets, loads, A, R, block(ctl.ell), block(ctl.w), block(ctl.lo), block(ctl.hi),
-                    bool(verify), horizon_nlp(n, N, A is not None), out, progress)
+                    bool(verify), horizon_nlp(n, N, A is not None), out, make_step, progress)
     plan.q = ctl.q.copy()
     if horizon == "all":
         plan.run_all()
@@ -112,13 +110,13 @@ class _Planner:
     """One plan's state: the current command and configuration, the last solution (for the warm start); the
     rest lengths in the NLP's order (the ``L1_0`` block, then ``L2_0``)."""
 
-    def __init__(self, ctl, T, Ls, A, R, ell0, v, lo, hi, verify, nlp, out, progress) -> None:
+    def __init__(self, ctl, T, Ls, A, R, ell0, v, lo, hi, verify, nlp, out, make_step, progress) -> None:
         m = ctl.m
         self.m, self.T, self.Ls, self.A, self.R = m, T, Ls, A, R
         self.ell, self.v, self.lo, self.hi = ell0.copy(), v, lo, hi
         self.margin, self.verify, self.nlp = ctl.margin, verify, nlp
         self.hold_off_target = ctl.on_infeasible == "hold"
-        self.out, self.progress = out, progress
+        self.out, self.make_step, self.progress = out, make_step, progress
         self.n, self.K, self.N = m.n, T.shape[0], nlp.N
         self.scale = float(np.max(m.b))
         self.limits = m.joint_limits * (1 - RANGE_SHRINK)
@@ -229,8 +227,6 @@ class _Planner:
     def apply(self, k: int, plan_q: np.ndarray | None, plan_ell: np.ndarray | None, info: SolverInfo) -> bool:
         """Step ``k``: adopt the planned command when it is safe (module docstring), else hold; the step is
         appended to the output. True when the plan's command was adopted."""
-        from .preload_control import PreloadStep
-
         n, F = self.n, self.Ls[k]
         ell_prev, q_prev = self.ell, self.q
         adopted = lands = False
@@ -270,7 +266,7 @@ class _Planner:
         held_ok = not adopted and eq is not None and bool(eq.stable)
         verified = bool(self.verify) and (lands or held_ok)
         pairs = lambda v: np.column_stack([v[:n], v[n:]])              # noqa: E731  blocks -> (n, 2)
-        step = PreloadStep._of(
+        step = self.make_step(
             command=pairs(self.ell), proposal=pairs(proposal), q=q.copy(), tip=tip, end_angle=float(np.sum(q)),
             margin=stability_margin(mk, q, F), energy=float(mk.energy(q)),
             tip_error=float(np.linalg.norm(tip - self.T[k])),

@@ -808,7 +808,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
 
             done: list[tuple[PreloadStep, bool]] = []
             try:
-                horizon_steps(ctl, T, Ls, None if A is None else A, h_steps, horizon, done, verify=verify,
+                horizon_steps(ctl, T, Ls, A, h_steps, horizon, done, PreloadStep._of, verify=verify,
                               progress=progress)
             except TimeLimitError:
                 status = "time_limit"
