@@ -40,7 +40,8 @@ SINGULAR_TIP = 1e-3
 #: ... or where ``|F|`` exceeds this many force units ``k c^2 / (2 b)``.
 FORCE_BOUND = 1e4
 
-#: Largest angle (rad) between consecutive tangents before the step is refused and halved.
+#: Largest turn (rad) of a step before it is refused and halved: the angle between its end tangents, or between
+#: the chord and either tangent (a chord at a large angle to both tangents left the branch, e.g. over a sharp fold).
 MAX_TURN = 0.35
 
 
@@ -321,6 +322,25 @@ def _tip_rank(p: PathPoint) -> float:
     return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
 
 
+def _angle(u: np.ndarray, v: np.ndarray) -> float:
+    nu, nv = float(np.linalg.norm(u)), float(np.linalg.norm(v))
+    return math.acos(max(-1.0, min(1.0, float(u @ v) / (nu * nv)))) if nu > 0.0 and nv > 0.0 else 0.0
+
+
+def _turn(tau_a: np.ndarray, tau_b: np.ndarray, chord: np.ndarray) -> float:
+    """The turn of a step (scaled): the largest angle between its end tangents and between its chord and either
+    tangent. On an arc of the branch the chord lies between the tangents; a step that crossed onto a neighbouring
+    branch (over a fold sharper than the step) has a chord at a large angle to both, even where the end tangents
+    are nearly parallel."""
+    return max(_angle(tau_a, tau_b), _angle(chord, tau_a), _angle(chord, tau_b))
+
+
+def _unlocated(a: PathPoint, b: PathPoint, new: list[BranchEvent]) -> bool:
+    """Whether the Morse index changes from ``a`` to ``b`` by more than the folds and branch points located
+    between them account for (one per eigenvalue crossing zero)."""
+    return abs(b.morse - a.morse) > sum(e.kind != "joint_limit" for e in new)
+
+
 def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_points, step, max_step, min_step,
                     stop_at, prefix: list[PathPoint] | None = None) -> Branch:
     """The arclength engine: continue the branch of ``prob`` from ``first`` (or from the accepted points
@@ -349,9 +369,8 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         ok = y is not None
         if ok:
             tau = prob.tangent(y, a.tau) if tau is None else tau
-            turn = math.acos(max(-1.0, min(1.0, float(tau @ a.tau))))
             moved = float(np.linalg.norm(prob.w * y - (Xa + h * a.tau)))
-            ok = turn <= MAX_TURN and moved <= max(0.5 * h, 1e-9)
+            ok = _turn(a.tau, tau, prob.w * y - Xa) <= MAX_TURN and moved <= max(0.5 * h, 1e-9)
         if not ok:
             h *= 0.5
             if h < min_step:
@@ -386,6 +405,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             message = f"joint {prob.limit_ratio(yl)[1] + 1} reached its range bound at t = {yl[at_t]:.6g}"
             break
         # t bounds: the end point at exactly t_max / t_min
+        h_step = h
         for bound, name, crossed in ((t_max, "t_max", lambda v, bd: v > bd), (t_min, "t_min", lambda v, bd: v < bd)):
             if bound is not None and crossed(y[at_t], bound) and not crossed(a.x[at_t], bound):
                 frac = (bound - a.x[at_t]) / (y[at_t] - a.x[at_t])
@@ -407,6 +427,17 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             message = (f"the held tip reached the edge of its workspace at t = {t_edge:.6g} (the tip Jacobian loses "
                        "rank: the chain straightens); the branch ends there")
             break
+        if _unlocated(a, b, new):
+            # the Morse index changes across the step with no event located between the points: the step jumped
+            # over a sharp fold (or onto a neighbouring branch); a shorter step follows the branch through it
+            status, h = "max_points", 0.5 * h_step
+            if h < min_step:
+                status = "step_too_small"
+                message = (f"the stability changes between t = {a.x[at_t]:.7g} (Morse index {a.morse}) and "
+                           f"t = {b.x[at_t]:.7g} (Morse index {b.morse}) with no fold or branch point located "
+                           f"between them down to min_step = {min_step:g}: the branch is cut before the change")
+                break
+            continue
         events.extend(new)
         pts.append(b)
         s.append(s[-1] + float(np.linalg.norm((b.x - a.x) * prob.w)))
