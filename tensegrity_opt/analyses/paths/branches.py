@@ -3,12 +3,15 @@
 :func:`trace_branch` follows the equilibrium branch of a chain through a start as the parameter ``t`` of a
 :class:`~.control.Control` moves: tangent predictor, Newton corrector on the bordered system
 ``[R(z, t); tau . (x - x_pred)] = 0`` (compiled, :mod:`tensegrity_opt.numerics.path_system`, with a numpy
-fallback), adaptive step (iterations, tangent angle), in the scaled units of :class:`~.problem.PathProblem`
-(angles in rad, forces in ``k c^2 / (2 b)``, lengths in ``2 b``). Between two accepted points the events
-(folds, branch points, joint limits) are detected and located (:mod:`.events`); the branch ends at a joint
-limit, at ``t_max`` / ``t_min``, at the first (stability-losing) event on request, where it closes on its start,
-where the held tip reaches the edge of its workspace or the force grows beyond :data:`FORCE_BOUND`, or when
-the step or the time runs out (:attr:`Branch.status`).
+fallback), adaptive step (iterations, the step's turn: its end tangents and its chord), in the scaled units of
+:class:`~.problem.PathProblem` (angles in rad, forces in ``k c^2 / (2 b)``, lengths in ``2 b``). Between two accepted
+points the events (folds, branch points, joint limits) are detected and located (:mod:`.events`); a step across which
+the Morse index changes with no event located between its points is refused and shortened (it jumped over a fold
+sharper than the step onto a neighbouring branch; down to ``min_step`` the branch ends before it,
+``status="step_too_small"``). The branch ends at a joint limit, at ``t_max`` / ``t_min``, at the first
+(stability-losing) event on request, where it closes on its start, where the held tip reaches the edge of its
+workspace or the force grows beyond :data:`FORCE_BOUND`, or when the step or the time runs out
+(:attr:`Branch.status`).
 
 Branch switching and bifurcation diagrams build on it (:mod:`.diagram`); the natural-parameter followers
 (batches of targets, the :class:`~.continuation.Tracker`, force-deflection branches) are :mod:`.continuation`.
@@ -90,7 +93,8 @@ class Branch(Outcome):
         "closed_loop": "the branch closed on its start",
         "workspace_boundary": "the held tip reached the edge of its workspace (the tip Jacobian loses rank)",
         "force_bound": "the tip force exceeded FORCE_BOUND force units",
-        "step_too_small": "the step fell below min_step: the corrector cannot pass a singular point or a cusp",
+        "step_too_small": "the step fell below min_step: the corrector cannot pass a singular point or a cusp, "
+                          "or a change of stability between two points could not be located",
         "corrector_failed": "the corrector did not converge down to min_step",
         "time_limit": "the time limit ran out",
     }
