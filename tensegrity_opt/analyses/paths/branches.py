@@ -326,17 +326,15 @@ def _tip_rank(p: PathPoint) -> float:
     return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
 
 
-def _angle(u: np.ndarray, v: np.ndarray) -> float:
-    nu, nv = float(np.linalg.norm(u)), float(np.linalg.norm(v))
-    return math.acos(max(-1.0, min(1.0, float(u @ v) / (nu * nv)))) if nu > 0.0 and nv > 0.0 else 0.0
-
-
 def _turn(tau_a: np.ndarray, tau_b: np.ndarray, chord: np.ndarray) -> float:
-    """The turn of a step (scaled): the largest angle between its end tangents and between its chord and either
-    tangent. On an arc of the branch the chord lies between the tangents; a step that crossed onto a neighbouring
-    branch (over a fold sharper than the step) has a chord at a large angle to both, even where the end tangents
-    are nearly parallel."""
-    return max(_angle(tau_a, tau_b), _angle(chord, tau_a), _angle(chord, tau_b))
+    """The turn of a step (scaled; unit tangents): the largest angle between its end tangents and between its chord
+    and either tangent. On an arc of the branch the chord lies between the tangents; a step that crossed onto a
+    neighbouring branch (over a fold sharper than the step) has a chord at a large angle to both, even where the end
+    tangents are nearly parallel."""
+    length = math.sqrt(float(chord @ chord))
+    cos = min(float(tau_a @ tau_b), float(chord @ tau_a) / length, float(chord @ tau_b) / length) if length > 0.0 \
+        else float(tau_a @ tau_b)
+    return math.acos(max(-1.0, min(1.0, cos)))
 
 
 def _unlocated(a: PathPoint, b: PathPoint, new: list[BranchEvent]) -> bool:
