@@ -326,21 +326,23 @@ def _tip_rank(p: PathPoint) -> float:
     return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
 
 
-def _turn(tau_a: np.ndarray, tau_b: np.ndarray, chord: np.ndarray) -> float:
-    """The turn of a step (scaled; unit tangents): the largest angle between its end tangents and between its chord
+def _step_shape(tau_a: np.ndarray, tau_b: np.ndarray, chord: np.ndarray, h: float) -> tuple[float, float]:
+    """``(moved, turn)`` of a step of length ``h`` (scaled; unit tangents): how far the corrector moved from the
+    predictor ``h tau_a``, and the step's turn, the largest angle between its end tangents and between its chord
     and either tangent. On an arc of the branch the chord lies between the tangents; a step that crossed onto a
-    neighbouring branch (over a fold sharper than the step) has a chord at a large angle to both, even where the end
-    tangents are nearly parallel."""
-    length = math.sqrt(float(chord @ chord))
-    cos = min(float(tau_a @ tau_b), float(chord @ tau_a) / length, float(chord @ tau_b) / length) if length > 0.0 \
-        else float(tau_a @ tau_b)
-    return math.acos(max(-1.0, min(1.0, cos)))
+    neighbouring branch (over a fold sharper than the step) has a chord at a large angle to both, even where the
+    end tangents are nearly parallel."""
+    c2, ca, cb, ct = float(chord @ chord), float(chord @ tau_a), float(chord @ tau_b), float(tau_a @ tau_b)
+    moved = math.sqrt(max(c2 - 2.0 * h * ca + h * h, 0.0))
+    length = math.sqrt(c2)
+    cos = min(ct, ca / length, cb / length) if length > 0.0 else ct
+    return moved, math.acos(max(-1.0, min(1.0, cos)))
 
 
 def _unlocated(a: PathPoint, b: PathPoint, new: list[BranchEvent]) -> bool:
     """Whether the Morse index changes from ``a`` to ``b`` by more than the folds and branch points located
     between them account for (one per eigenvalue crossing zero)."""
-    return abs(b.morse - a.morse) > sum(e.kind != "joint_limit" for e in new)
+    return b.morse != a.morse and abs(b.morse - a.morse) > sum(e.kind != "joint_limit" for e in new)
 
 
 def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_points, step, max_step, min_step,
@@ -371,8 +373,8 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         ok = y is not None
         if ok:
             tau = prob.tangent(y, a.tau) if tau is None else tau
-            moved = float(np.linalg.norm(prob.w * y - (Xa + h * a.tau)))
-            ok = _turn(a.tau, tau, prob.w * y - Xa) <= MAX_TURN and moved <= max(0.5 * h, 1e-9)
+            moved, turn = _step_shape(a.tau, tau, prob.w * y - Xa, h)
+            ok = turn <= MAX_TURN and moved <= max(0.5 * h, 1e-9)
         if not ok:
             h *= 0.5
             if h < min_step:
