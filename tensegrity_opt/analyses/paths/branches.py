@@ -3,12 +3,15 @@
 :func:`trace_branch` follows the equilibrium branch of a chain through a start as the parameter ``t`` of a
 :class:`~.control.Control` moves: tangent predictor, Newton corrector on the bordered system
 ``[R(z, t); tau . (x - x_pred)] = 0`` (compiled, :mod:`tensegrity_opt.numerics.path_system`, with a numpy
-fallback), adaptive step (iterations, tangent angle), in the scaled units of :class:`~.problem.PathProblem`
-(angles in rad, forces in ``k c^2 / (2 b)``, lengths in ``2 b``). Between two accepted points the events
-(folds, branch points, joint limits) are detected and located (:mod:`.events`); the branch ends at a joint
-limit, at ``t_max`` / ``t_min``, at the first (stability-losing) event on request, where it closes on its start,
-where the held tip reaches the edge of its workspace or the force grows beyond :data:`FORCE_BOUND`, or when
-the step or the time runs out (:attr:`Branch.status`).
+fallback), adaptive step (iterations, the step's turn: its end tangents and its chord), in the scaled units of
+:class:`~.problem.PathProblem` (angles in rad, forces in ``k c^2 / (2 b)``, lengths in ``2 b``). Between two accepted
+points the events (folds, branch points, joint limits) are detected and located (:mod:`.events`); a step across which
+the Morse index changes with no event located between its points is refused and shortened (it jumped over a fold
+sharper than the step onto a neighbouring branch; down to ``min_step`` the branch ends before it,
+``status="step_too_small"``). The branch ends at a joint limit, at ``t_max`` / ``t_min``, at the first
+(stability-losing) event on request, where it closes on its start, where the held tip reaches the edge of its
+workspace or the force grows beyond :data:`FORCE_BOUND`, or when the step or the time runs out
+(:attr:`Branch.status`).
 
 Branch switching and bifurcation diagrams build on it (:mod:`.diagram`); the natural-parameter followers
 (batches of targets, the :class:`~.continuation.Tracker`, force-deflection branches) are :mod:`.continuation`.
@@ -40,7 +43,8 @@ SINGULAR_TIP = 1e-3
 #: ... or where ``|F|`` exceeds this many force units ``k c^2 / (2 b)``.
 FORCE_BOUND = 1e4
 
-#: Largest angle (rad) between consecutive tangents before the step is refused and halved.
+#: Largest turn (rad) of a step before it is refused and halved: the angle between its end tangents, or between
+#: the chord and either tangent (a chord at a large angle to both tangents left the branch, e.g. over a sharp fold).
 MAX_TURN = 0.35
 
 
@@ -89,7 +93,8 @@ class Branch(Outcome):
         "closed_loop": "the branch closed on its start",
         "workspace_boundary": "the held tip reached the edge of its workspace (the tip Jacobian loses rank)",
         "force_bound": "the tip force exceeded FORCE_BOUND force units",
-        "step_too_small": "the step fell below min_step: the corrector cannot pass a singular point or a cusp",
+        "step_too_small": "the step fell below min_step: the corrector cannot pass a singular point or a cusp, "
+                          "or a change of stability between two points could not be located",
         "corrector_failed": "the corrector did not converge down to min_step",
         "time_limit": "the time limit ran out",
     }
@@ -321,6 +326,25 @@ def _tip_rank(p: PathPoint) -> float:
     return float(sv[-1] / sv[0]) if sv[0] > 0 else 0.0
 
 
+def _step_shape(tau_a: np.ndarray, tau_b: np.ndarray, chord: np.ndarray, h: float) -> tuple[float, float]:
+    """``(moved, turn)`` of a step of length ``h`` (scaled; unit tangents): how far the corrector moved from the
+    predictor ``h tau_a``, and the step's turn, the largest angle between its end tangents and between its chord
+    and either tangent. On an arc of the branch the chord lies between the tangents; a step that crossed onto a
+    neighbouring branch (over a fold sharper than the step) has a chord at a large angle to both, even where the
+    end tangents are nearly parallel."""
+    c2, ca, cb, ct = float(chord @ chord), float(chord @ tau_a), float(chord @ tau_b), float(tau_a @ tau_b)
+    moved = math.sqrt(max(c2 - 2.0 * h * ca + h * h, 0.0))
+    length = math.sqrt(c2)
+    cos = min(ct, ca / length, cb / length) if length > 0.0 else ct
+    return moved, math.acos(max(-1.0, min(1.0, cos)))
+
+
+def _unlocated(a: PathPoint, b: PathPoint, new: list[BranchEvent]) -> bool:
+    """Whether the Morse index changes from ``a`` to ``b`` by more than the folds and branch points located
+    between them account for (one per eigenvalue crossing zero)."""
+    return b.morse != a.morse and abs(b.morse - a.morse) > sum(e.kind != "joint_limit" for e in new)
+
+
 def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_points, step, max_step, min_step,
                     stop_at, prefix: list[PathPoint] | None = None) -> Branch:
     """The arclength engine: continue the branch of ``prob`` from ``first`` (or from the accepted points
@@ -349,8 +373,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         ok = y is not None
         if ok:
             tau = prob.tangent(y, a.tau) if tau is None else tau
-            turn = math.acos(max(-1.0, min(1.0, float(tau @ a.tau))))
-            moved = float(np.linalg.norm(prob.w * y - (Xa + h * a.tau)))
+            moved, turn = _step_shape(a.tau, tau, prob.w * y - Xa, h)
             ok = turn <= MAX_TURN and moved <= max(0.5 * h, 1e-9)
         if not ok:
             h *= 0.5
@@ -386,6 +409,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             message = f"joint {prob.limit_ratio(yl)[1] + 1} reached its range bound at t = {yl[at_t]:.6g}"
             break
         # t bounds: the end point at exactly t_max / t_min
+        h_step = h
         for bound, name, crossed in ((t_max, "t_max", lambda v, bd: v > bd), (t_min, "t_min", lambda v, bd: v < bd)):
             if bound is not None and crossed(y[at_t], bound) and not crossed(a.x[at_t], bound):
                 frac = (bound - a.x[at_t]) / (y[at_t] - a.x[at_t])
@@ -407,6 +431,17 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             message = (f"the held tip reached the edge of its workspace at t = {t_edge:.6g} (the tip Jacobian loses "
                        "rank: the chain straightens); the branch ends there")
             break
+        if _unlocated(a, b, new):
+            # the Morse index changes across the step with no event located between the points: the step jumped
+            # over a sharp fold (or onto a neighbouring branch); a shorter step follows the branch through it
+            status, h = "max_points", 0.5 * h_step
+            if h < min_step:
+                status = "step_too_small"
+                message = (f"the stability changes between t = {a.x[at_t]:.7g} (Morse index {a.morse}) and "
+                           f"t = {b.x[at_t]:.7g} (Morse index {b.morse}) with no fold or branch point located "
+                           f"between them down to min_step = {min_step:g}: the branch is cut before the change")
+                break
+            continue
         events.extend(new)
         pts.append(b)
         s.append(s[-1] + float(np.linalg.norm((b.x - a.x) * prob.w)))

@@ -38,6 +38,9 @@ __all__ = ["BranchEvent", "EVENT_KINDS", "BP_TOL", "events_between", "locate_joi
 EVENT_KINDS = ("fold", "branch_point", "joint_limit")
 #: ``|u . R_t| / |R_t|`` below which a singular point is a branch point rather than a fold.
 BP_TOL = 1e-6
+#: A located eigenvalue zero is one where that eigenvalue of the reduced Hessian is below this many torque units
+#: (a sign change across a jump between branches is not a zero).
+ZERO_EIG = 1e-6
 
 
 @dataclass(frozen=True)
@@ -139,7 +142,8 @@ def _locate_eigen(prob: PathProblem, a: PathPoint, b: PathPoint, h: float, j: in
         raise _Unlocatable
     sig = _brent(g, 0.0, h, ga, gb)
     y = _on_step(prob, a, b, sig, h) if 0.0 < sig < h else (a.x if sig == 0.0 else b.x)
-    if y is None:
+    # a sign change without a zero (the trial points crossed onto another branch) locates nothing
+    if y is None or abs(float(prob.reduced(y)[0][j + k])) > ZERO_EIG * prob.m.torque_scale:
         raise _Unlocatable
     return y
 

@@ -14,7 +14,7 @@ limit load of the imperfect chain approaches the critical load ``P_c``:
 
 * **unstable-symmetric** (subcritical pitchfork: the buckled arms carry less): the imperfect path folds at
   ``P_s(p) = P_c - C |p|^(2/3)``. Example: two segments ``Segment(1.5, 1, 1, 1)`` under the guided load
-  (``P_c = 35/6``, the drop's log-log slope 0.667 for ``p`` from 3e-4 to 3e-3);
+  (``P_c = 35/6``, the drop's log-log slope 0.667 for ``p`` from 1e-5 to 3e-3);
 * **asymmetric** (transcritical): ``P_c - C |p|^(1/2)`` on the side of ``p`` that drops;
 * **stable-symmetric** (supercritical: the buckled arms carry more) the imperfect path has no limit near
   ``P_c``: it bends smoothly (``kind`` ``"none"`` or ``"joint_limit"``; the free paper chain), or, where the
@@ -72,9 +72,8 @@ class ImperfectionSensitivity(Outcome):
     status : str
         :attr:`STATUSES`: ``"complete"`` when every amplitude's path reached its end; ``"partial"`` when some
         path was cut, some imperfect chain could not be followed, or a path without a limit point has unstable
-        points (stability lost where no event was located: a step over a very sharp fold); those amplitudes'
-        ``kinds`` are ``"unknown"``; ``"time_limit"`` when the time limit ran out first (the amplitudes done are
-        kept).
+        points (stability lost where no event was located); those amplitudes' ``kinds`` are ``"unknown"``;
+        ``"time_limit"`` when the time limit ran out first (the amplitudes done are kept).
     message : str
     amplitudes : ndarray (A,)
         The amplitudes, in the order given.

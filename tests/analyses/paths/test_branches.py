@@ -352,3 +352,40 @@ def test_partial_results_on_max_points_and_time_limit(monkeypatch):
     br = trace_branch(PAPER, np.zeros(4), "guided", max_points=100000, step=1e-4, max_step=1e-4, timeout=50.0)
     assert br.status == "time_limit" and not br.success and 10 < len(br) < 100
     _assert_on_branch(PAPER, br)
+
+
+# --------------------------------------------------------------------------- sharp folds: no unlocated stability change
+def _imperfect_two(p: float) -> to.Manipulator:
+    """Two segments a = 1.5 > b pre-bent by p (``L1_0 + p``, ``L2_0 - p``): guided, the path folds just below the
+    straight chain's critical load 35/6 (Koiter), in a corner of size ~p^(1/3), far shorter than a step."""
+    return to.Manipulator([to.Segment(1.5, 1.0, 1.0, (1.0 + p, 1.0 - p))] * 2)
+
+
+def test_every_stability_change_of_a_branch_is_at_a_located_event():
+    """p = 1e-5 past its fold: wherever the Morse index changes between two points, an event lies between them
+    (a step over the sharp fold onto the neighbouring branch is refused and shortened)."""
+    m = _imperfect_two(1e-5)
+    br = trace_branch(m, None, "guided", direction=(-1.0, 0.0), t_max=6.5 * 1.625, max_points=200)
+    changes = np.flatnonzero(np.diff(br.morse_index))
+    assert changes.size >= 1 and br.morse_index[0] == 0
+    for i in changes:
+        located = [e for e in br.events if e.index == i and e.kind != "joint_limit"]
+        assert len(located) == abs(int(br.morse_index[i + 1] - br.morse_index[i])), i
+    fold = br.events[0]
+    assert fold.kind == "fold" and fold.stability == "lost" and 5.8 < fold.t < 35.0 / 6.0
+    assert np.all(br.morse_index[:fold.index + 1] == 0)
+
+
+def test_a_stability_change_that_cannot_be_located_cuts_the_branch(monkeypatch):
+    """With event location made to fail, the straight chain's stability loss at its branch point cannot be
+    located: the branch ends at it, not a success, saying so; no unstable point is reported."""
+    from tensegrity_opt.analyses.paths import branches
+
+    monkeypatch.setattr(branches, "events_between", lambda *args, **kw: [])
+    br = trace_branch(to.Manipulator.uniform(2, a=1.5), np.zeros(2), "guided", direction=(-1.0, 0.0),
+                      t_max=7.0 * 1.625)
+    assert br.status == "step_too_small" and not br.success
+    assert "stability changes" in br.message and "no fold or branch point" in br.message
+    # the last point is within min_step of the critical load: marginal at worst (Morse index 0)
+    assert np.all(br.morse_index == 0) and np.all(br.stable[:-1])
+    assert br.t[-1] == pytest.approx(35.0 / 6.0, rel=1e-6)

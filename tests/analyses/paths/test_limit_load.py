@@ -156,3 +156,45 @@ def test_quasi_buckling_load_is_the_least_stiffness_of_the_path(name):
     assert np.all(k_at <= k_branch * (1 + 1e-12))
     d = lim.to_dict()
     assert d["quasi_buckling_stiffness"] == pytest.approx(lim.quasi_buckling_stiffness)
+
+
+# ---------------------------------------------------------------------------- sharp folds of tiny imperfections
+#: Two segments a = 1.5 > b (guided: an unstable-symmetric bifurcation at P_c = 35/6) and the paper chain (guided: a
+#: stable-symmetric one whose arms fold at 0.6143), pre-bent by p: the imperfect path's fold is a corner of size
+#: ~p^(1/3), smaller than a continuation step at p = 1e-4.
+SHARP = {"two": [(1.5, 1.0, 1.0, 1.0, 1.0, 1.0)] * 2, "paper": [(1.0, 1.0, 1.0, 1.0, 1.0, 1.0)] * 4}
+
+
+def sharp_chains(name: str, p: float):
+    """The imperfect chain (``L1_0 + p``, ``L2_0 - p``) in the library and in the reference model."""
+    segs = [(a, b, k1, k2, l1 + p, l2 - p) for a, b, k1, k2, l1, l2 in SHARP[name]]
+    m = to.Manipulator([to.Segment(a, b, k=(k1, k2), L0=(l1, l2)) for a, b, k1, k2, l1, l2 in segs])
+    return m, R.Chain.from_segments(segs)
+
+
+@pytest.mark.parametrize("name", ["two", "paper"])
+def test_a_sharp_fold_of_a_tiny_imperfection_is_located(name):
+    """p = 1e-4, guided: the path folds (never "stable to its end" past unstable points); the fold against the
+    reference continuation, which rejects every unstable point and bisects to the loss, then solves the extended
+    system."""
+    m, c = sharp_chains(name, 1e-4)
+    lim = limit_load(m, direction=(-1.0, 0.0), boundary="guided")
+    ref_lim = RP.limit_load_reference(c, RP.rest_configuration(c), (-1.0, 0.0), "guided")
+    assert ref_lim.kind == "fold" and ref_lim.extended_converged
+    assert lim.success and lim.status == "stability_lost" and lim.kind == "fold"
+    assert lim.load == pytest.approx(ref_lim.t, rel=1e-7)
+    np.testing.assert_allclose(lim.q, ref_lim.q, atol=1e-5)
+    br = lim.branch
+    ev = br.events[0]
+    assert ev.kind == "fold" and ev.stability == "lost"
+    assert np.all(br.morse_index[:ev.index + 1] == 0)     # stable up to the fold, every change at an event
+    if name == "two":
+        # a brute check: the largest load along the path parametrised by q_2 (smooth through the fold)
+        s = RP.PathSystem(c, RP.rest_configuration(c), (-1.0, 0.0), "guided")
+        z0, ok = s.solve(s.start_z(t=0.0), 0.0)
+        assert ok
+        path = RP.coordinate_path(s, z0, 0.0, 1, np.linspace(z0[1], 1.5 * ref_lim.q[1], 400))
+        i = int(np.argmax(path.t))
+        assert 0 < i < path.t.size - 1                       # an interior maximum: the fold
+        t_fold, _ = RP.fold_by_coordinate(s, path.z[i], path.t[i], k=1, half_width=2 * abs(path.q[1, 1] - path.q[0, 1]))
+        assert lim.load == pytest.approx(t_fold, rel=1e-7)

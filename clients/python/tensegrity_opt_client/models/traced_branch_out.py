@@ -41,8 +41,9 @@ class TracedBranchOut:
                 stability is lost (stop_at='stability_loss'); `event`: stopped after the first event (stop_at='event');
                 `closed_loop`: the branch closed on its start; `workspace_boundary`: the held tip reached the edge of its
                 workspace (the tip Jacobian loses rank); `force_bound`: the tip force exceeded FORCE_BOUND force units;
-                `step_too_small`: the step fell below min_step: the corrector cannot pass a singular point or a cusp;
-                `corrector_failed`: the corrector did not converge down to min_step; `time_limit`: the time limit ran out
+                `step_too_small`: the step fell below min_step: the corrector cannot pass a singular point or a cusp, or a
+                change of stability between two points could not be located; `corrector_failed`: the corrector did not converge
+                down to min_step; `time_limit`: the time limit ran out
             success (bool): whether it worked: `status` is one of closed_loop, event, force_bound, joint_limit, max_points,
                 stability_loss, t_max, t_min, workspace_boundary
             t (list[float]): the control parameter (0 at the start)
