@@ -204,7 +204,8 @@ class PlanOut(outcome_model(to.PreloadPlan)):
 
     seconds: float = Field(description="wall time of the plan (s)")
     commands: list[list[list[float]]] = Field(description="[L1_0, L2_0] per segment per step: what to send "
-                                                          "(consecutive commands differ by at most the rate limit)")
+                                                          "(consecutive commands differ by at most rate_limit "
+                                                          "times the time between them)")
     proposals: list[list[list[float]]] = Field(description="the controller's proposal per step (the commands, except "
                                                            "on held steps: the nearest admissible pose's)")
     q: list[list[float]] = Field(description="the arm's configuration under each command (rad)")

@@ -11,23 +11,26 @@ Variables, per step ``k = 1..N`` (each block holds the ``N`` steps one after the
 ``phi`` (absolute angles, n), ``L10``, ``L20`` (rest lengths, n each), ``L`` (the lower-triangular factor
 of ``H_q - margin I = L L^T``, as :class:`~.design_nlp.PreloadNLP`: ``H_q`` the Hessian of ``E - F_k . tip``
 in the joint angles, ``diag(L) >= 0``: the stability margin in Cholesky form), ``e`` (the pose error:
-the tip's two coordinates, and with ``angles`` the last link's angle times the length scale) and ``t``
-(``t >= |e|`` component by component).
+the tip's two coordinates, and with ``angles`` the last link's angle times the length scale) and ``t`` (one per
+step: ``t >= |e|``, the Euclidean norm, smoothed: ``sqrt(|e|^2 + d^2) - d``, ``d = NORM_SMOOTHING s``).
 
 Rows, per step: ``grad`` (``grad E - J^T F_k = 0``), ``psd`` (the factorisation, ``= 0``), ``q`` (the joint
 angles, inside the range), ``stretch1``, ``stretch2`` (``L_i - L_i0``: ``>= 0`` for taut springs), ``pose``
-(``pose_k - e_k``, bounded by the target: the pose is the target plus the error), ``abs_hi``, ``abs_lo``
-(``t - e >= 0``, ``t + e >= 0``) and ``rate`` (``l_k - l_{k-1}``, ``l_0`` the current rest lengths ``ell0``,
+(``pose_k - e_k``, bounded by the target: the pose is the target plus the error), ``norm``
+(``t_k - (sqrt(|e_k|^2 + d^2) - d) >= 0``) and ``rate`` (``l_k - l_{k-1}``, ``l_0`` the current rest lengths ``ell0``,
 bounded by the step's rate box ``+- r_k``).
 
 Objective (``s`` the length scale, ``w`` the weights ``(w_2, w_1, w_move)``, ``v`` the per-spring weights)::
 
-    w_2 sum_k |e_k|^2 / s^2 + w_1 sum_k sum(t_k) / s + w_move sum_k sum_j v_j (l_kj - l_{k-1,j})^2 / s^2
+    w_2 sum_k |e_k|^2 / s^2 + w_1 sum_k t_k / s + w_move sum_k sum_j v_j (l_kj - l_{k-1,j})^2 / s^2
 
 The pose error is soft: an out-of-reach stretch of the trajectory still has a solution, which moves toward
 the targets as fast as the rates allow. Its first-power part makes the penalty exact (a step whose target
-is reachable is met exactly once ``w_1`` exceeds the multiplier of the pose row), its square part spreads a
-shortfall over the steps; bounding ``e`` (and ``t``) to zero turns it into exact tracking.
+is reachable is met once ``w_1`` exceeds the multiplier of the pose row: to within ``d`` times that multiplier
+over ``w_1``, the smoothing's price), its square part spreads a shortfall over the steps; both are functions of
+the Euclidean distance, so a target out of reach is approached along the distance the results report (a norm
+taken component by component would settle on another pose). Bounding ``e`` (and ``t``) to zero turns it into
+exact tracking.
 """
 
 from __future__ import annotations
@@ -43,6 +46,8 @@ __all__ = ["HorizonNLP", "horizon_nlp"]
 
 #: IPOPT iterations of one horizon solve at most (a receding step is warm: tens).
 HORIZON_MAX_ITER = 1000
+#: The smoothing ``d`` of the pose error's norm, times the length scale: ``sqrt(|e|^2 + d^2) - d``.
+NORM_SMOOTHING = 1e-6
 
 
 class HorizonNLP:
@@ -83,10 +88,10 @@ class HorizonNLP:
         margin = ca.SX.sym("margin")
         phi, L10, L20 = (ca.SX.sym(nm, n * N) for nm in ("phi", "L10", "L20"))
         lv = ca.SX.sym("L", nt * N)
-        e, t = ca.SX.sym("e", d * N), ca.SX.sym("t", d * N)
+        e, t = ca.SX.sym("e", d * N), ca.SX.sym("t", N)
+        dn = NORM_SMOOTHING * s
         T = ca.DM(np.tril(np.ones((n, n))))            # dphi/dq
-        rows: dict[str, list] = {k: [] for k in ("grad", "psd", "q", "stretch1", "stretch2", "pose", "abs_hi",
-                                                 "abs_lo", "rate")}
+        rows: dict[str, list] = {k: [] for k in ("grad", "psd", "q", "stretch1", "stretch2", "pose", "norm", "rate")}
         diag = None
         f = 0
         prev = ell0
@@ -98,7 +103,7 @@ class HorizonNLP:
             J = ca.jacobian(tip, ph)
             Hq = T.T @ ca.hessian(E - ca.dot(Fk, tip), ph)[0] @ T
             Lc, diag = _tril(lv[k * nt:(k + 1) * nt], n)
-            ek, tk = e[k * d:(k + 1) * d], t[k * d:(k + 1) * d]
+            ek, tk = e[k * d:(k + 1) * d], t[k]
             pose = ca.vertcat(tip, s * ph[n - 1]) if angles else tip
             ell = ca.vertcat(l1, l2)
             rows["grad"].append(ca.gradient(E, ph) - J.T @ Fk)
@@ -107,21 +112,21 @@ class HorizonNLP:
             rows["stretch1"].append(S1 - l1)
             rows["stretch2"].append(S2 - l2)
             rows["pose"].append(pose - ek)
-            rows["abs_hi"].append(tk - ek)
-            rows["abs_lo"].append(tk + ek)
+            rows["norm"].append(tk - (ca.sqrt(ca.sumsqr(ek) + dn * dn) - dn))
             rows["rate"].append(ell - prev)
-            f += w[0] * ca.sumsqr(ek) / (s * s) + w[1] * ca.sum1(tk) / s \
+            f += w[0] * ca.sumsqr(ek) / (s * s) + w[1] * tk / s \
                 + w[2] * ca.sum1(v * (ell - prev) ** 2) / (s * s)
             prev = ell
         g = ca.vertcat(*(ca.vertcat(*r) for r in rows.values()))
         x = ca.vertcat(phi, L10, L20, lv, e, t)
         p = ca.vertcat(a, b, k1, k2, F, ell0, v, w, s, margin)
-        #: ``phi``, ``L10``, ``L20`` (n per step), ``L`` (``tril(n)`` per step), ``e``, ``t`` (``pose_size`` per step)
-        self.variables = Layout(phi=n * N, L10=n * N, L20=n * N, L=nt * N, e=d * N, t=d * N)
-        #: per step: ``grad`` (n), ``psd`` (tril(n)), ``q`` (n), ``stretch1``, ``stretch2`` (n), ``pose``, ``abs_hi``,
-        #: ``abs_lo`` (``pose_size``), ``rate`` (2n: the L10 then the L20 changes)
+        #: ``phi``, ``L10``, ``L20`` (n per step), ``L`` (``tril(n)`` per step), ``e`` (``pose_size`` per step), ``t``
+        #: (one per step)
+        self.variables = Layout(phi=n * N, L10=n * N, L20=n * N, L=nt * N, e=d * N, t=N)
+        #: per step: ``grad`` (n), ``psd`` (tril(n)), ``q`` (n), ``stretch1``, ``stretch2`` (n), ``pose``
+        #: (``pose_size``), ``norm`` (1), ``rate`` (2n: the L10 then the L20 changes)
         self.constraints = Layout(grad=n * N, psd=nt * N, q=n * N, stretch1=n * N, stretch2=n * N, pose=d * N,
-                                  abs_hi=d * N, abs_lo=d * N, rate=2 * n * N)
+                                  norm=N, rate=2 * n * N)
         #: geometry ``a, b, k1, k2``; the loads ``F`` (2 per step); ``ell0`` the current rest lengths (L10 then
         #: L20); ``v`` the per-spring weights of the motion; ``w = (w_2, w_1, w_move)``; the length ``scale``;
         #: the required ``margin``

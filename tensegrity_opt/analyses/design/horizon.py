@@ -42,12 +42,12 @@ from typing import Any
 
 import numpy as np
 
-from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
+from ...errors import InvalidParameterError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...outcome import SolverInfo
 from ...timelimit import expired
-from ..equilibria.equilibrium import Equilibrium, settle_under_force, solve_equilibrium_under_force
+from ..equilibria.equilibrium import Equilibrium
 from .preloads import LAND_TOL, stability_margin
 
 __all__ = ["horizon_steps", "check_horizon", "HORIZONS", "TIP_WEIGHTS"]
@@ -90,7 +90,7 @@ def horizon_steps(ctl: Any, targets: np.ndarray, loads: np.ndarray, end_angles: 
     from ...numerics.horizon_nlp import horizon_nlp
 
     K, n = targets.shape[0], ctl.n
-    N = K if horizon == "all" else int(horizon)
+    N = K if horizon == "all" else min(int(horizon), K)        # a window past the trajectory's end repeats its last
     A = None if end_angles is None or np.all(np.isnan(end_angles)) else end_angles
     block = lambda v: np.asarray(v, float).reshape(n, 2).T.ravel()     # noqa: E731  segment-major -> L10, L20 blocks
     if ctl.rate is None:
@@ -112,6 +112,7 @@ class _Planner:
 
     def __init__(self, ctl, T, Ls, A, R, ell0, v, lo, hi, verify, nlp, out, make_step, progress) -> None:
         m = ctl.m
+        self.ctl = ctl
         self.m, self.T, self.Ls, self.A, self.R = m, T, Ls, A, R
         self.ell, self.v, self.lo, self.hi = ell0.copy(), v, lo, hi
         self.margin, self.verify, self.nlp = ctl.margin, verify, nlp
@@ -123,22 +124,17 @@ class _Planner:
         self.q = np.zeros(self.n)
 
     # ------------------------------------------------------------------ the arm
+    def _segment_major(self, ell: np.ndarray) -> np.ndarray:
+        return np.column_stack([ell[:self.n], ell[self.n:]]).ravel()
+
     def manipulator(self, ell: np.ndarray) -> Manipulator:
-        n = self.n
-        return Manipulator(s.replace(L0=(float(ell[i]), float(ell[n + i]))) for i, s in enumerate(self.m.segments))
+        """The chain with rest lengths ``ell`` (the L10 block, then L20): the controller's."""
+        return self.ctl.manipulator(self._segment_major(ell))
 
     def forward(self, ell: np.ndarray, F: np.ndarray, q_prev: np.ndarray) -> Equilibrium | None:
-        """The forward quasi-static solve: the arm with rest lengths ``ell`` under ``F`` from ``q_prev``."""
-        m = self.manipulator(ell)
-        eq = settle_under_force(m, F, q_prev)
-        if eq is None:
-            try:
-                eq = solve_equilibrium_under_force(m, *F, q0=q_prev)
-            except TimeLimitError:
-                raise
-            except TensegrityError:
-                return None
-        return eq
+        """The forward quasi-static solve: the arm with rest lengths ``ell`` under ``F`` from ``q_prev`` (the
+        controller's), or None."""
+        return self.ctl._forward(self._segment_major(ell), F, q_prev)
 
     # ------------------------------------------------------------------ one solve
     def _index(self, j: int) -> np.ndarray:
@@ -167,7 +163,7 @@ class _Planner:
         E = np.nan_to_num(np.array(E))
         x = self.nlp.variables
         return x.pack(phi=np.cumsum(Q, axis=1).ravel(), L10=Ell[:, :n].ravel(), L20=Ell[:, n:].ravel(),
-                      L=np.concatenate(Lf), e=E.ravel(), t=(np.abs(E) + 1e-3 * self.scale).ravel())
+                      L=np.concatenate(Lf), e=E.ravel(), t=np.linalg.norm(E, axis=1) + 1e-3 * self.scale)
 
     def _pose(self, m: Manipulator, q: np.ndarray) -> np.ndarray:
         tip = m.tip(q)
@@ -191,7 +187,7 @@ class _Planner:
         fixed = free | hard
         e_lo = np.where(fixed, 0.0, -_INF)
         e_hi = np.where(fixed, 0.0, _INF)
-        t_hi = np.where(fixed, 0.0, _INF)
+        t_hi = np.where(fixed.all(axis=1), 0.0, _INF)
         lbx = x.pack(phi=-_INF, L10=np.tile(self.lo[:n], N), L20=np.tile(self.lo[n:], N),
                      L=np.tile(nlp.factor_floor, N), e=e_lo.ravel(), t=0.0)
         ubx = x.pack(phi=_INF, L10=np.tile(self.hi[:n], N), L20=np.tile(self.hi[n:], N), L=_INF, e=e_hi.ravel(),
@@ -200,9 +196,9 @@ class _Planner:
         r = self.R[idx].ravel()
         lim = np.tile(self.limits, N)
         lbg = g.pack(grad=0.0, psd=0.0, q=-lim, stretch1=slack, stretch2=slack,
-                     pose=np.where(free, -_INF, P).ravel(), abs_hi=0.0, abs_lo=0.0, rate=-r)
+                     pose=np.where(free, -_INF, P).ravel(), norm=0.0, rate=-r)
         ubg = g.pack(grad=0.0, psd=0.0, q=lim, stretch1=_INF, stretch2=_INF, pose=np.where(free, _INF, P).ravel(),
-                     abs_hi=_INF, abs_lo=_INF, rate=r)
+                     norm=_INF, rate=r)
         w2, w1 = TIP_WEIGHTS
         pv = p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=self.Ls[idx].ravel(), ell0=self.ell, v=self.v,
                     w=[w2, w1, 1.0], scale=self.scale, margin=self.margin)
@@ -268,7 +264,8 @@ class _Planner:
         pairs = lambda v: np.column_stack([v[:n], v[n:]])              # noqa: E731  blocks -> (n, 2)
         step = self.make_step(
             command=pairs(self.ell), proposal=pairs(proposal), q=q.copy(), tip=tip, end_angle=float(np.sum(q)),
-            margin=stability_margin(mk, q, F), energy=float(mk.energy(q)),
+            margin=math.nan if eq is None else stability_margin(mk, q, F),       # no equilibrium: no margin
+            energy=math.nan if eq is None else float(mk.energy(q)),
             tip_error=float(np.linalg.norm(tip - self.T[k])),
             proposal_tip=tip if proposal_tip is None else proposal_tip,
             feasible=feasible, method="horizon" if adopted else "none", solver=info, residual=None,
@@ -292,14 +289,10 @@ class _Planner:
 
     # ------------------------------------------------------------------ the plan
     def run_all(self) -> None:
-        """One NLP over the steps left; where a step cannot be applied (it holds), the steps after it are planned
-        again from the state reached."""
-        from ...numerics.horizon_nlp import horizon_nlp
-
+        """One NLP over the trajectory; where a step cannot be applied (it holds), the steps after it are planned
+        again from the state reached (the same NLP, its window past the end repeating the last step)."""
         j = 0
         while j < self.K:
-            self.nlp = horizon_nlp(self.n, self.K - j, self.A is not None)
-            self.N = self.K - j
             res = self._solve(j, self._cold(self._index(j)))            # from the current state
             info = SolverInfo(res.status, res.iterations)
             if res.success:

@@ -47,10 +47,11 @@ chain's torque scale ``max k c^2`` (``Manipulator.torque_scale``) instead; to as
 
 Every step carries the ``command`` to send and, apart, the ``proposal``; ``q``, ``tip``, ``margin``, ``energy``
 describe the arm under the command (what a pipeline will observe), ``tip_error`` its distance to the target.
-Consecutive commands never differ by more than the rate limit. ``residual`` is the scaled KKT residual of a
-Newton step. :func:`plan_preloads` runs a controller over a trajectory and verifies each step by the forward
-quasi-static solve (:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` from the
-previous step's configuration with the step's command: it must land on the step's pose, stable).
+Consecutive commands never differ by more than ``rate_limit * dt`` (the time between them). ``residual`` is the
+scaled KKT residual of a Newton step. :func:`plan_preloads` runs a controller over a trajectory and verifies each
+step by the forward quasi-static solve
+(:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` from the previous step's
+configuration with the step's command: it must land on the step's pose, stable).
 """
 
 from __future__ import annotations
@@ -421,9 +422,9 @@ class PreloadController:
         """The bounds of a step's rest lengths ``dt`` seconds after the last step (default the controller's
         ``dt``), segment-major 2n: the actuator bounds intersected with the rate box ``rate_limit * dt`` around
         the current command."""
+        h = self.dt if dt is None else _seconds(dt, "dt")
         if self.rate is None:
             return self.lo, self.hi
-        h = self.dt if dt is None else _seconds(dt, "dt")
         if h is None:
             raise InvalidParameterError("rate_limit is a length per second: give the time since the last step, dt "
                                         "(seconds), to the step or the controller", field="dt")
@@ -628,7 +629,7 @@ class PreloadPlan(Outcome):
     ----------
     commands : ndarray (K, n, 2)
         ``L1_0, L2_0`` per segment and step: what to send (:attr:`PreloadStep.command`). Consecutive commands
-        differ by at most the rate limit.
+        differ by at most ``rate_limit`` times the time between them.
     proposals : ndarray (K, n, 2)
         The controller's proposals (:attr:`PreloadStep.proposal`; the commands except on held steps).
     q : ndarray (K, n)

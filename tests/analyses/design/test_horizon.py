@@ -148,3 +148,30 @@ def test_the_horizon_vocabulary(horizon):
     with pytest.raises(InvalidParameterError) as exc:
         plan_preloads(HETERO, [[5.0, 0.1]], horizon=3, objective="margin")
     assert exc.value.field == "objective"
+
+
+def test_approach_settles_on_the_nearest_pose_as_the_step_by_step_plan():
+    """A target out of reach that stays there: every horizon ends as near to it as the step-by-step controller's
+    nearest admissible pose (the distance the results report; a norm taken component by component settles
+    elsewhere: 0.1979 here against 0.1740)."""
+    m = to.Manipulator([to.Segment(0.8514, 0.9997, (1.0812, 0.623), (0.9648, 1.0428)),
+                        to.Segment(0.8282, 0.8519, (1.3587, 1.0975), (0.9869, 1.0011))])
+    tip0 = m.tip(PreloadController(m).q)
+    targets = [tip0 + np.array([-0.3, 0.5])] * 8
+    kw = dict(rate_limit=0.06, dt=1.0, margin=0.01, on_infeasible="approach")
+    near = plan_preloads(m, targets, **kw).tip_error[-1]
+    assert 0.1 < near < 0.3
+    for h in (3, "all"):
+        p = plan_preloads(m, targets, horizon=h, **kw)
+        assert p.verified.all() and p.tip_error[-1] <= near + 1e-6
+
+
+def test_a_horizon_longer_than_the_trajectory_is_the_whole_trajectory():
+    m = HETERO
+    tip0 = m.tip(PreloadController(m).q)
+    targets = [tip0 + np.array([-0.02, 0.05]) * k for k in range(3)]
+    whole = plan_preloads(m, targets, horizon="all")
+    for h in (3, 2000):
+        p = plan_preloads(m, targets, horizon=h)
+        assert p.status == "complete" and p.horizon == h
+        np.testing.assert_allclose(p.commands, whole.commands, atol=1e-7)

@@ -163,3 +163,12 @@ def test_refusals_name_the_field():
     with pytest.raises(to.InvalidParameterError) as e:
         PreloadController(PAPER, dt=0.0)
     assert e.value.field == "dt"
+
+
+@pytest.mark.parametrize("dt", [-1.0, 0.0, float("nan"), "abc"])
+def test_a_step_s_dt_is_checked_with_or_without_a_rate_limit(dt):
+    for ctl in (PreloadController(PAPER), PreloadController(PAPER, rate_limit=0.1, dt=1.0)):
+        tip = PAPER.tip(ctl.q)
+        with pytest.raises(to.InvalidParameterError) as exc:
+            ctl.step(tip, dt=dt)
+        assert exc.value.field == "dt"

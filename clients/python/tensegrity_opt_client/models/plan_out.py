@@ -24,7 +24,7 @@ class PlanOut:
 
     Attributes:
         commands (list[list[list[float]]]): [L1_0, L2_0] per segment per step: what to send (consecutive commands differ
-            by at most the rate limit)
+            by at most rate_limit times the time between them)
         end_angle (list[float]): the last link's absolute angle sum(q) per step (rad)
         feasible (list[bool]): rest lengths meeting every requirement put the tip on the target (false: the command
             held, or approaching with on_infeasible approach)
