@@ -1,5 +1,8 @@
-"""The library's tests need no service extra: ``tests/model``, ``tests/numerics``, ``tests/analyses`` and
-``tests/applications`` collect, and their fast lane passes, with the service's packages made unimportable.
+"""The library's tests need no service extra: with the service's packages made unimportable, every test of
+``tests/model``, ``tests/numerics``, ``tests/analyses`` and ``tests/applications`` collects (every module and
+the helpers it imports load), and the fast lane of a representative part passes (:data:`FAST_LANE_SAMPLE`: the
+model, a numerics file, a results file of each analyses package and one computing design file, the CLI with
+its figure commands, the plot style and a sweep) -- the whole fast lane runs in the ordinary run of the suite.
 
 The packages of the ``service`` extra (and the service itself) are blocked in a fresh interpreter by a meta-path
 finder that raises ``ImportError`` for them, installed by a ``sitecustomize`` module put first on its
@@ -24,6 +27,14 @@ ROOT = Path(__file__).resolve().parents[1]
 TESTS = ROOT / "tests"
 #: The folders of the library's tests (relative to the repository).
 LIBRARY_TESTS = ("tests/model", "tests/numerics", "tests/analyses", "tests/applications")
+#: The part of the library's tests whose fast lane is run without the service: each analyses package's results,
+#: the numerics, the CLI and its figures, the plots and the sweeps (~15 s; the rest is collected only).
+FAST_LANE_SAMPLE = ("tests/model", "tests/numerics/test_building_blocks.py",
+                    "tests/analyses/equilibria/test_equilibria_results.py",
+                    "tests/analyses/paths/test_paths_results.py", "tests/analyses/design/test_design_results.py",
+                    "tests/analyses/design/test_preloads.py", "tests/applications/cli/test_cli.py",
+                    "tests/applications/cli/test_plot_cli.py", "tests/applications/plots/test_plot_style.py",
+                    "tests/applications/sweeps/test_sweep.py")
 #: The service and the packages of its extra.
 BLOCKED = ("service", "fastapi", "starlette", "uvicorn", "pydantic_settings", "prometheus_client", "httpx")
 
@@ -122,7 +133,11 @@ def test_no_library_test_and_no_helper_it_uses_imports_the_service():
 
 @pytest.mark.slow
 def test_the_library_fast_lane_passes_without_the_service_packages(tmp_path):
-    r = _pytest_without_the_service(tmp_path, "-q", "-m", "not slow", *LIBRARY_TESTS, timeout=1500)
+    """The fast lane of :data:`FAST_LANE_SAMPLE`, every part of it a library test."""
+    library = _library_test_files()
+    for part in FAST_LANE_SAMPLE:
+        assert part in library or any(f.startswith(part + "/") for f in library), part
+    r = _pytest_without_the_service(tmp_path, "-q", "-m", "not slow", *FAST_LANE_SAMPLE, timeout=900)
     assert r.returncode == 0, r.stdout[-6000:] + r.stderr[-2000:]
     summary = _summary(r.stdout)
     assert " passed" in summary and "failed" not in summary and "error" not in summary, summary

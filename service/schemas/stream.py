@@ -31,6 +31,7 @@ from .common import (
     ManipulatorIn,
 )
 from .control import RestLengthBoundsIn as StreamBounds
+from .control import Seconds
 from .design import DesignManipulatorIn
 
 #: The modes of a stream.
@@ -40,7 +41,6 @@ Pair = Annotated[list[ForceValue], Field(min_length=2, max_length=2)]
 Point = Annotated[list[Deflection], Field(min_length=2, max_length=2)]
 RestPair = Annotated[list[Length], Field(min_length=2, max_length=2)]
 Positive = Annotated[float, Field(gt=0.0, le=MAX_STIFFNESS, allow_inf_nan=False)]
-Seconds = Annotated[float, Field(gt=0.0, le=1.0e9, allow_inf_nan=False)]
 
 
 # ---------------------------------------------------------------------------- dispatch

@@ -22,6 +22,7 @@ a documented ``ErrorOut`` with its code; the added check makes sure that is neve
 
 from __future__ import annotations
 
+import copy
 import os
 import re
 import shutil
@@ -29,6 +30,7 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+from types import SimpleNamespace
 
 import pytest
 from servers import GENEROUS_ENV, WAIT_SECONDS, clean_env, free_port, running_server, serve_command
@@ -79,6 +81,40 @@ def test_the_checks_are_every_check_of_schemathesis_but_the_response_time():
     offered = re.search(r"--exclude-checks .*?\[possible values: ([^\]]*)\]", text).group(1)
     builtin = {name.strip() for name in offered.split(",")} - {"all"}
     assert "max_response_time" not in builtin and builtin == set(CHECKS) - {"positive_data_is_accepted_by_the_schema"}
+
+
+def _mapped(hooks, path: str, body: dict, negative: bool = False) -> dict:
+    """``body`` as the hooks map a generated case of ``POST path`` (positive, or negative)."""
+    mode = SimpleNamespace(is_negative=negative)
+    case = SimpleNamespace(body=copy.deepcopy(body), operation=SimpleNamespace(path=path),
+                           meta=SimpleNamespace(generation=SimpleNamespace(mode=mode)))
+    return hooks.map_case(None, case).body
+
+
+def test_the_hooks_bound_the_imperfection_curve_and_the_plan_and_their_figure_jobs():
+    """A positive case of the imperfection-sensitivity curve keeps 3 amplitudes of at most 400 points; a plan keeps
+    4 steps of its per-step lists (``times`` with its targets) and a horizon of at most 4; a figure job's body is
+    bounded as its figure's; a negative case keeps its values."""
+    pytest.importorskip("schemathesis")
+    import schemathesis_hooks as hooks
+
+    chain = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}
+    curve = {"manipulator": chain, "amplitudes": [0.01 * i for i in range(10)], "max_points": 4000}
+    for path in ("/v1/imperfection-sensitivity", "/v1/plots/imperfection", "/v1/plots/imperfection/job"):
+        got = _mapped(hooks, path, curve)
+        assert got["amplitudes"] == [0.0, 0.01, 0.02] and got["max_points"] == 400, path
+        assert _mapped(hooks, path, curve, negative=True)["amplitudes"] == curve["amplitudes"], path
+    assert _mapped(hooks, "/v1/imperfection-sensitivity", {**curve, "max_points": 50})["max_points"] == 50
+    targets = [[7.6 - 0.1 * i, 0.25 * i] for i in range(8)]
+    plan = {"manipulator": chain, "targets": targets, "times": [0.5 * (i + 1) for i in range(8)],
+            "rate_limit": 0.1, "horizon": 7}
+    for path in ("/v1/control/plan", "/v1/plots/plan", "/v1/plots/plan/job"):
+        got = _mapped(hooks, path, plan)
+        assert got["targets"] == targets[:4] and got["times"] == [0.5, 1.0, 1.5, 2.0] and got["horizon"] == 4, path
+        assert _mapped(hooks, path, {**plan, "horizon": "all"})["horizon"] == "all", path
+        assert _mapped(hooks, path, {**plan, "horizon": 2})["horizon"] == 2, path
+        negative = _mapped(hooks, path, plan, negative=True)
+        assert negative["times"] == plan["times"] and negative["horizon"] == 7, path
 
 
 @pytest.mark.slow

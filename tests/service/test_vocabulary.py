@@ -304,3 +304,12 @@ def test_the_same_bounds_in_every_form_give_the_same_design_everywhere(api, tmp_
     assert want < 0
     for where, value in got.items():
         assert value == pytest.approx(want, rel=1e-6), (where, got)
+
+
+def test_the_stream_and_the_plan_take_seconds_as_one_declared_type():
+    """A time (``times``, ``dt``: seconds, > 0) is declared once, by the control schemas, and the stream's
+    messages take that declaration."""
+    from service.schemas import control, stream
+
+    assert stream.Seconds is control.Seconds
+    assert "Seconds = " not in (ROOT / "service" / "schemas" / "stream.py").read_text(encoding="utf-8")

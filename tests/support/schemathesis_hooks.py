@@ -5,9 +5,10 @@ what these hooks bound is the *cost* of the generated requests, not what is vali
 
 * ``map_case`` shrinks sizes inside the valid range (chains to 6 segments, 2 for the homotopy,
   curves to 21 points, grids to 21 per axis, batches to 10 targets, job sweeps to 3 values per
-  key and 3 points, inline atlases to 3 x 3 targets, the control trajectories -- plan targets, simulation
-  preloads, loads and targets -- to 4 steps), so that the run stays short and no generated input keeps the
-  job runner busy for the rest of the run. A positive
+  key and 3 points, inline atlases to 2 x 2 targets, the control trajectories -- plan targets, times, simulation
+  preloads, loads and targets -- to 4 steps, a plan's horizon to 4 steps, an imperfection-sensitivity curve to 3
+  amplitudes of at most 400 points each; a figure job's body as its figure's), so that the run stays short and
+  no generated input keeps the job runner busy for the rest of the run. A positive
   case stays positive; a negative case keeps its violation (only values valid for every operation
   are shrunk there, and schemathesis revalidates a mapped case).
 * ``positive_data_is_accepted_by_the_schema``: a check on top of schemathesis' own. A request the
@@ -38,11 +39,20 @@ MAX_DPI = 30
 #: The control trajectories (a plan step: ~1 ms by Newton, up to ~0.1 s by IPOPT; a simulation step up to ~0.5 s when
 #: a wild load makes its branch long): 4 steps of each per-step list.
 CONTROL_PATHS = ("/v1/control/plan", "/v1/control/simulate", "/v1/plots/plan", "/v1/plots/simulation")
-CONTROL_SERIES = ("targets", "loads", "preloads", "end_angles")
+#: A plan's ``times`` are cut with its targets (as many as targets: a cut plan stays consistent).
+CONTROL_SERIES = ("targets", "loads", "preloads", "end_angles", "times")
 MAX_CONTROL_STEPS = 4
-#: Stiffness shaping (an IPOPT solve per arm shape tried) and load capacity (a limit-load path per direction).
+#: Stiffness shaping (an IPOPT solve per arm shape tried), load capacity (a limit-load path per direction), a
+#: plan's horizon (an IPOPT problem of N steps per step; ``"all"`` is the cut trajectory) and the
+#: imperfection-sensitivity curve (a limit-load path per amplitude): a number over its cap is lowered to it, a list
+#: cut to that many items.
+_IMPERFECTION_CAPS = {"amplitudes": 3, "max_points": 400}
 COST_CAPS = {"/v1/control/stiffness": {"max_starts": 1},
-             "/v1/control/load-capacity": {"directions": 4, "max_load": 2.0}}
+             "/v1/control/load-capacity": {"directions": 4, "max_load": 2.0},
+             "/v1/control/plan": {"horizon": 4},
+             "/v1/plots/plan": {"horizon": 4},
+             "/v1/imperfection-sensitivity": _IMPERFECTION_CAPS,
+             "/v1/plots/imperfection": _IMPERFECTION_CAPS}
 
 
 def _small_n(v: Any, cap: int, positive: bool) -> Any:
@@ -80,12 +90,18 @@ def _bound(x: Any, positive: bool, cap: int, parent: str | None = None) -> Any:
     return out
 
 
+def _operation(path: str) -> str:
+    """The operation whose body ``path`` takes: a figure job's (``/v1/plots/x/job``) is its figure's."""
+    return path.removesuffix("/job") if path.startswith("/v1/plots/") else path
+
+
 @schemathesis.hook
 def map_case(ctx, case):
     body = case.body
     if isinstance(body, dict):
         meta = case.meta
         positive = meta is None or not meta.generation.mode.is_negative
+        path = _operation(case.operation.path)
         case.body = _bound(body, positive, MAX_N)
         dpi = case.body.get("dpi")
         if positive and case.operation.path.startswith("/v1/plots/") and isinstance(dpi, (int, float)) \
@@ -93,18 +109,20 @@ def map_case(ctx, case):
             case.body["dpi"] = MAX_DPI
         if positive and case.operation.path.startswith("/v1/plots/") and "dpi" not in case.body:
             case.body["dpi"] = MAX_DPI
-        if positive and case.operation.path in ATLAS_PATHS:
+        if positive and path in ATLAS_PATHS:
             for key in ("dx", "dy"):
                 v = case.body.get(key)
                 if isinstance(v, list):
                     case.body[key] = v[:MAX_ATLAS_AXIS]
                 elif isinstance(v, dict) and isinstance(v.get("num"), int) and v["num"] > MAX_ATLAS_AXIS:
                     case.body[key] = {**v, "num": MAX_ATLAS_AXIS}
-        for key, cap in COST_CAPS.get(case.operation.path, {}).items() if positive else ():
+        for key, cap in COST_CAPS.get(path, {}).items() if positive else ():
             v = case.body.get(key)
             if isinstance(v, (int, float)) and not isinstance(v, bool) and v > cap:
                 case.body[key] = type(v)(cap)
-        if case.operation.path in CONTROL_PATHS:
+            elif isinstance(v, list) and len(v) > cap:
+                case.body[key] = v[:cap]
+        if path in CONTROL_PATHS:
             # a sample's preloads: as many pairs as the (shrunk) chain has segments; valid either way (1..200), so
             # shrunk in negative cases too (a sample count over the cap then stays under the body size limit)
             v = case.body.get("preloads")

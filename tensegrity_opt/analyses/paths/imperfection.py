@@ -24,8 +24,9 @@ limit load of the imperfect chain approaches the critical load ``P_c``:
 :attr:`ImperfectionSensitivity.bifurcation` says which case the perfect chain is (from its buckled arms,
 :func:`~.limit_load.limit_arms`: both carry less, one does, both carry more), and ``law_exponent`` and
 ``law_coefficient`` are the law fitted at the smallest amplitudes where one applies (an unstable-symmetric or
-asymmetric bifurcation, the imperfect chains at folds below ``P_c``); compare the exponent with
-``law_expected`` (2/3 or 1/2).
+asymmetric bifurcation, the imperfect chains at folds below ``P_c``) on the side of ``p`` whose folds fall below
+``P_c`` (both signs are tried; where both drop, the side with more such amplitudes, the positive one on a tie);
+compare the exponent with ``law_expected`` (2/3 or 1/2).
 
 :func:`~.boundaries.stability_boundary` with ``parameter="asymmetry"`` is another curve: the fold (or branch
 point) of a branch continued in ``p`` with its references fixed, which is not the load an imperfect arm reaches.
@@ -226,25 +227,32 @@ def _bifurcation(perfect: LimitLoad | None) -> str | None:
     return "stable_symmetric" if sides == {1} else "asymmetric"
 
 
-def _law(amplitudes: np.ndarray, loads: np.ndarray, kinds, perfect: LimitLoad | None, bifurcation: str | None):
-    """``(exponent, coefficient, amplitudes)`` of ``P_c - P = C |p|^e`` at the smallest amplitudes, or Nones."""
-    none = (None, None, np.zeros(0))
-    if bifurcation not in ("unstable_symmetric", "asymmetric"):
-        return none
-    pc = float(perfect.load)
-    order = [i for i in np.argsort(np.abs(amplitudes), kind="stable") if amplitudes[i] != 0.0]
-    if not order:
-        return none
-    side = np.sign(amplitudes[order[0]])
-    order = [i for i in order if np.sign(amplitudes[i]) == side]
-    used = []
-    for i in order:                    # from the smallest amplitude on, while the limit is a fold below P_c
+def _law_side(amplitudes: np.ndarray, loads: np.ndarray, kinds, pc: float, side: float) -> list[int]:
+    """The amplitudes of one sign, from the smallest on, while the limit is a fold below ``pc`` (up to
+    :data:`LAW_POINTS`, increasing in size)."""
+    order = [i for i in np.argsort(np.abs(amplitudes), kind="stable") if np.sign(amplitudes[i]) == side]
+    used: list[int] = []
+    for i in order:
         if kinds[i] != "fold" or not pc - loads[i] > 0.0:
             break
         if not used or abs(amplitudes[i]) > abs(amplitudes[used[-1]]):
             used.append(i)
         if len(used) == LAW_POINTS:
             break
+    return used
+
+
+def _law(amplitudes: np.ndarray, loads: np.ndarray, kinds, perfect: LimitLoad | None, bifurcation: str | None):
+    """``(exponent, coefficient, amplitudes)`` of ``P_c - P = C |p|^e`` at the smallest amplitudes, or Nones.
+
+    Both signs of ``p`` are tried: the law is fitted on the side whose smallest amplitudes fold below ``P_c`` (the
+    side that drops); where both do (a symmetric bifurcation), on the side with more such amplitudes, the positive
+    one on a tie."""
+    none = (None, None, np.zeros(0))
+    if bifurcation not in ("unstable_symmetric", "asymmetric"):
+        return none
+    pc = float(perfect.load)
+    used = max((_law_side(amplitudes, loads, kinds, pc, side) for side in (1.0, -1.0)), key=len)
     if len(used) < 2:
         return none
     x, y = np.log(np.abs(amplitudes[used])), np.log(pc - loads[used])

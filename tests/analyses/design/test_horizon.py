@@ -17,8 +17,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-import scipy.optimize as so
-from reference_model import Chain
+from reference_control import forward, ref_chain
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
@@ -33,23 +32,6 @@ MARGIN, RATE, PAYLOAD, ARRIVES, K = 0.05, 0.04, 0.08, 7, 14
 def step_by_step(m, targets, loads, rate, margin):
     """The step-by-step controller's plan of the same trajectory, its rate a length per step."""
     return plan_preloads(m, targets, loads=loads, rate_limit=rate, dt=1.0, margin=margin)
-
-
-def ref_chain(m: to.Manipulator, ell) -> Chain:
-    ell = np.asarray(ell, float).reshape(m.n, 2)
-    return Chain.from_segments([(s.a, s.b, s.k1, s.k2, l1, l2) for s, (l1, l2) in zip(m.segments, ell)])
-
-
-def forward(ch: Chain, F, q_prev) -> np.ndarray:
-    """The reference forward quasi-static solve: a local minimiser of E - F . tip from q_prev."""
-    F = np.asarray(F, float)
-    res = so.minimize(lambda q: ch.energy(q) - F @ ch.tip(q), q_prev, jac=lambda q: ch.lagrangian_grad(q, F),
-                      hess=lambda q: ch.lagrangian_hess(q, F), method="trust-exact", options={"gtol": 1e-12})
-    q = res.x
-    for _ in range(4):                          # polished by Newton on the reference's own derivatives
-        q = q - np.linalg.solve(ch.lagrangian_hess(q, F), ch.lagrangian_grad(q, F))
-    assert np.abs(ch.lagrangian_grad(q, F)).max() < 1e-11, res.message
-    return q
 
 
 def check_forward(m, plan, loads, q0, rest0, rate, margin):

@@ -1,8 +1,8 @@
 """Preload trajectories (analyses/design/preload_control.py) against independent routes.
 
-* every planned step is re-solved forward by the numpy reference model (tests/support/reference_model.py: its own
-  energy, Newton under the dead load from the previous step's configuration) and must land on the target,
-  stable by its own Hessian;
+* every planned step is re-solved forward by the numpy reference model (tests/support/reference_control.py: a
+  local minimiser of its own energy under the dead load from the previous step's configuration, polished by
+  Newton) and must land on the target, stable by its own Hessian;
 * the least-change step equals scipy SLSQP on the same problem written with the reference model;
 * bounds, rate limits and the margin hold; a margin larger than the least-change solution's keeps the
   plan on its branch (IPOPT takes those steps) where the unconstrained step would lose it.
@@ -13,7 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.optimize as so
-from reference_model import Chain
+from reference_control import forward, ref_chain
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
@@ -23,11 +23,6 @@ BISTABLE = to.Manipulator.uniform(4, 0.5, 1.0, 1.0, 1.0)
 HETERO = to.Manipulator([to.Segment(0.9, 1.0, 1.2, (1.05, 0.97)), to.Segment(1.1, 0.9, 0.8, 1.0),
                          to.Segment(1.0, 1.1, 1.0, (0.98, 1.02))])
 CHAINS = [("paper", PAPER, (-0.02, 0.01)), ("bistable", BISTABLE, (0.0, 0.02)), ("hetero", HETERO, (0.01, -0.01))]
-
-
-def ref_chain(m: to.Manipulator, ell) -> Chain:
-    ell = np.asarray(ell, float).reshape(m.n, 2)
-    return Chain.from_segments([(s.a, s.b, s.k1, s.k2, l1, l2) for s, (l1, l2) in zip(m.segments, ell)])
 
 
 def arc(m, F, K=30, amp=(-0.15, 0.3)):
@@ -44,8 +39,7 @@ def test_every_step_lands_on_its_target_stable_in_the_reference_model(name, m, F
     q_prev = PreloadController(m, load=F).q
     for k in range(len(traj)):
         ch = ref_chain(m, plan.commands[k])
-        q, ok = ch.newton_force(np.asarray(F, float), q_prev)       # the forward quasi-static solve
-        assert ok and ch.in_range(q)
+        q = forward(ch, F, q_prev)                                    # the forward quasi-static solve
         np.testing.assert_allclose(ch.tip(q), traj[k], atol=1e-6)
         np.testing.assert_allclose(q, plan.q[k], atol=1e-7)           # the same branch, not another well
         w = np.linalg.eigvalsh(ch.lagrangian_hess(q, np.asarray(F, float)))

@@ -2,8 +2,8 @@
 
 * an actuator that obeys the commands stays in step with the controller: consecutive commands never differ by
   more than the rate limit, and every command re-solved forward by the numpy reference model
-  (tests/support/reference_model.py: its own energy, Newton under the dead load from the previous state) gives
-  the step's reported configuration and tip, stable;
+  (tests/support/reference_control.py: a local minimiser of its own energy under the dead load from the previous
+  state, polished by Newton) gives the step's reported configuration and tip, stable;
 * ``on_infeasible="approach"`` catches up with a target that moved faster than the rate limit allows; ``"hold"``
   never moves;
 * the nearest admissible pose against a multi-start reference: scipy SLSQP over the rest lengths in the box,
@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.optimize as so
-from reference_model import Chain
+from reference_control import equilibrium, forward, ref_chain
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
@@ -26,34 +26,22 @@ HETERO = to.Manipulator([to.Segment(0.9, 1.0, 1.2, (1.05, 0.97)), to.Segment(1.1
 F0 = np.array([0.0, -0.01])
 
 
-def ref_chain(m: to.Manipulator, ell) -> Chain:
-    ell = np.asarray(ell, float).reshape(m.n, 2)
-    return Chain.from_segments([(s.a, s.b, s.k1, s.k2, l1, l2) for s, (l1, l2) in zip(m.segments, ell)])
-
-
-def forward(m, ell, F, q_prev):
-    """The reference model's forward solve: the equilibrium with rest lengths ``ell`` under ``F`` reached from
-    ``q_prev`` (Newton; a BFGS descent of E - F . tip first where Newton does not converge in the range), with
-    its tip and smallest Hessian eigenvalue; None when there is none."""
+def solved(m, ell, F, q_prev, search=False):
+    """The arm with rest lengths ``ell`` under ``F`` from ``q_prev`` by the reference forward solve
+    (``reference_control``): its configuration, tip and smallest Hessian eigenvalue; with ``search`` None where it
+    reaches no equilibrium (else that fails the test)."""
     ch = ref_chain(m, ell)
-    F = np.asarray(F, float)
-    q, ok = ch.newton_force(F, q_prev)
-    if not ok or not ch.in_range(q):
-        r = so.minimize(lambda x: ch.energy(x) - F @ ch.tip(x), q_prev, jac=lambda x: ch.lagrangian_grad(x, F),
-                        method="BFGS", options={"gtol": 1e-12})
-        q, ok = ch.newton_force(F, r.x)
-        if not ok or not ch.in_range(q):
-            return None
-    return q, ch.tip(q), float(np.linalg.eigvalsh(ch.lagrangian_hess(q, F))[0])
+    q = equilibrium(ch, F, q_prev) if search else forward(ch, F, q_prev)
+    if q is None:
+        return None
+    return q, ch.tip(q), float(np.linalg.eigvalsh(ch.lagrangian_hess(q, np.asarray(F, float)))[0])
 
 
 def check_forward(m, plan, loads, q0):
     """Every command of ``plan`` re-solved forward from the previous state gives the step's q and tip, stable."""
     q_prev = q0
     for k in range(len(plan.targets)):
-        got = forward(m, plan.commands[k], loads[k], q_prev)
-        assert got is not None, k
-        q, tip, w = got
+        q, tip, w = solved(m, plan.commands[k], loads[k], q_prev)
         np.testing.assert_allclose(q, plan.q[k], atol=1e-7)
         np.testing.assert_allclose(tip, plan.tip[k], atol=1e-7)
         assert w > 0 and w == pytest.approx(plan.margin[k], rel=1e-6, abs=1e-9)
@@ -126,14 +114,14 @@ def test_on_infeasible_is_checked():
 
 def reference_nearest(m, ell, q, F, target, lo, hi, margin, starts=30, seed=1):
     """The smallest tip distance to ``target`` over rest lengths in the box ``[lo, hi]`` (segment-major) whose
-    equilibrium from ``q`` (:func:`forward`) has the margin: SLSQP from the current rest lengths and ``starts``
+    equilibrium from ``q`` (:func:`solved`) has the margin: SLSQP from the current rest lengths and ``starts``
     uniform points of the box."""
     seen: dict[bytes, object] = {}
 
     def at(x):
         key = x.tobytes()
         if key not in seen:
-            seen[key] = forward(m, x, F, q)
+            seen[key] = solved(m, x, F, q, search=True)
         return seen[key]
 
     def dist2(x):
@@ -171,8 +159,7 @@ def test_the_nearest_admissible_pose_is_as_near_as_a_multistart_reference(kw, mo
     ref = reference_nearest(m, ell0, q0, F0, target, lo, hi, ctl.margin)
     assert ref < np.hypot(*move) - 0.1                                       # moving helps
     assert st.tip_error <= ref + 1e-6
-    got = forward(m, st.command, F0, q0)                                     # the arm gets there from q0, stable
-    assert got is not None
+    got = solved(m, st.command, F0, q0)                                      # the arm gets there from q0, stable
     np.testing.assert_allclose(got[0], st.q, atol=1e-7)
     assert got[2] >= ctl.margin - 1e-7 and st.margin == pytest.approx(got[2], rel=1e-6)
     assert np.all(st.command.ravel() >= lo - 1e-12) and np.all(st.command.ravel() <= hi + 1e-12)

@@ -15,7 +15,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import scipy.optimize as so
-from reference_model import Chain
+from reference_control import forward, ref_chain
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.preload_control import PreloadController, plan_preloads
@@ -25,11 +25,6 @@ BISTABLE = to.Manipulator.uniform(4, 0.5, 1.0, 1.0, 1.0)
 HETERO = to.Manipulator([to.Segment(0.9, 1.0, 1.2, (1.05, 0.97)), to.Segment(1.1, 0.9, 0.8, 1.0),
                          to.Segment(1.0, 1.1, 1.0, (0.98, 1.02))])
 CHAINS = [("paper", PAPER, (-0.02, 0.01)), ("bistable", BISTABLE, (0.0, 0.02)), ("hetero", HETERO, (0.01, -0.01))]
-
-
-def ref_chain(m: to.Manipulator, ell) -> Chain:
-    ell = np.asarray(ell, float).reshape(m.n, 2)
-    return Chain.from_segments([(s.a, s.b, s.k1, s.k2, l1, l2) for s, (l1, l2) in zip(m.segments, ell)])
 
 
 def changes(ell0, rest_lengths) -> np.ndarray:
@@ -103,8 +98,8 @@ def test_the_limit_binds_exactly_where_the_least_max_change_says(name, m, F):
     assert fast.feasible
     assert np.abs(fast.command.ravel() - ell0).max() == pytest.approx(1.05 * s, rel=1e-6)   # it binds
     ch = ref_chain(m, fast.command)
-    q, ok = ch.newton_force(np.asarray(F, float), q0)                    # the forward solve lands on the target
-    assert ok and np.allclose(ch.tip(q), target, atol=1e-6)
+    q = forward(ch, F, q0)                                                # the forward solve lands on the target
+    assert np.allclose(ch.tip(q), target, atol=1e-6)
     assert np.linalg.eigvalsh(ch.lagrangian_hess(q, np.asarray(F, float)))[0] > 0
 
 
@@ -127,8 +122,8 @@ def test_the_start_and_the_first_step_use_rest_lengths0():
     assert np.all(got <= rate * dt + 1e-9)
     assert np.abs(plan.commands[0] - own).max() > rate * dt       # measured from m's own it would not fit
     ch = ref_chain(m, plan.commands[0])
-    q, ok = ch.newton_force(Fa, ctl.q)                                # from the start with r0
-    assert ok and np.allclose(ch.tip(q), T[0], atol=1e-6) and np.allclose(q, plan.q[0], atol=1e-7)
+    q = forward(ch, Fa, ctl.q)                                        # from the start with r0
+    assert np.allclose(ch.tip(q), T[0], atol=1e-6) and np.allclose(q, plan.q[0], atol=1e-7)
     # a start configuration given explicitly is read with r0 too
     again = plan_preloads(m, T, loads=F, rest_lengths0=r0, dt=dt, rate_limit=rate, start=ctl.q)
     np.testing.assert_allclose(again.commands, plan.commands, atol=1e-12)

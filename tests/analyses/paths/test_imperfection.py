@@ -190,3 +190,46 @@ def test_the_sharp_folds_of_tiny_imperfections_are_folds(subcritical):
     for lim in r.limit_loads:
         ev = next(e for e in lim.branch.events if e.stability == "lost")
         assert np.all(lim.branch.morse_index[:ev.index + 1] == 0)
+
+
+def test_law_side_is_the_one_that_drops(monkeypatch):
+    """The law is fitted on the side of ``p`` whose folds fall below ``P_c``, whichever sign the smallest amplitude
+    has. The subcritical chain (symmetric: both sides drop) with its smallest amplitude listed first on the side
+    with a single point: the other side's three folds give the 2/3 law. Then that smallest amplitude's path is
+    cut (an injected failure, kind ``"unknown"``): the law still comes from the side that folds below ``P_c``."""
+    m = lib(SUBCRITICAL)
+    amplitudes = [-1e-5, 3e-5, 1e-4, 3e-4]
+    r = to.imperfection_sensitivity(m, amplitudes)
+    assert r.bifurcation == "unstable_symmetric" and r.kinds == ("fold",) * 4
+    assert np.all(r.loads < 35.0 / 6.0)
+    np.testing.assert_array_equal(r.law_amplitudes, [3e-5, 1e-4, 3e-4])
+    assert r.law_exponent == pytest.approx(2.0 / 3.0, abs=0.03)     # Koiter: P_c - P_s ~ C p^(2/3)
+
+    real = imp.limit_load
+
+    def cut_negative_side(chain, *args, **kwargs):
+        if chain.segments[0].L1_0 < SUBCRITICAL[0][4]:
+            raise to.TensegrityError("injected: this path was cut")
+        return real(chain, *args, **kwargs)
+
+    monkeypatch.setattr(imp, "limit_load", cut_negative_side)
+    cut = to.imperfection_sensitivity(m, amplitudes)
+    assert cut.kinds[0] == "unknown" and cut.statuses[0] == "failed" and cut.kinds[1:] == ("fold",) * 3
+    np.testing.assert_array_equal(cut.law_amplitudes, [3e-5, 1e-4, 3e-4])
+    assert cut.law_exponent == pytest.approx(2.0 / 3.0, abs=0.03)
+
+
+def test_law_on_the_dropping_side_of_an_asymmetric_bifurcation():
+    """Transcritical (asymmetric) data: the smallest amplitudes on one side fold above ``P_c`` or not at all, the
+    other side drops as ``|p|^(1/2)``; the law is the dropping side's, and no side gives none."""
+    pc = 2.0
+    perfect = type("Perfect", (), {"load": pc})()
+    amps = np.array([1e-4, 4e-4, -4e-4, 1e-3, -1e-3, -4e-3, 4e-3])
+    drops = 0.3 * np.sqrt(np.abs(amps))
+    loads = np.where(amps < 0, pc - drops, pc + drops)
+    kinds = ["fold" if p < 0 else k for p, k in zip(amps, ("fold", "none", "", "fold", "", "", "joint_limit"))]
+    e, c, used = imp._law(amps, loads, kinds, perfect, "asymmetric")
+    np.testing.assert_array_equal(used, [-4e-4, -1e-3, -4e-3])
+    assert e == pytest.approx(0.5, rel=1e-9) and c == pytest.approx(0.3, rel=1e-9)
+    none = imp._law(amps, np.full(amps.size, pc + 0.1), ["fold"] * amps.size, perfect, "asymmetric")
+    assert none[0] is None and none[2].size == 0
