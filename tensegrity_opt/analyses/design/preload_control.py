@@ -497,23 +497,19 @@ class PreloadController:
         best = getattr(exc, "best", None)
         near = self.nearest(target, F, end_angle, lo, hi, best=best if isinstance(best, dict) else None, held=held)
         solver = SolverInfo(str(exc.status) if exc.status else "none", 0)
-        if near is not None and _distance(near.tip, target) <= LAND_TOL * self.scale and (
-                end_angle is None or abs(float(np.sum(near.q)) - float(end_angle)) <= 1e-6):
+        reaches = near is not None and _distance(near.tip, target) <= LAND_TOL * self.scale and (
+            end_angle is None or abs(float(np.sum(near.q)) - float(end_angle)) <= 1e-6)
+        if reaches or (near is not None and self.on_infeasible == "approach"):
             command = near.ell.reshape(n, 2).copy()
+            message = ("the nearest admissible pose reaches the target (the step's own solve failed: "
+                       f"{exc.message}), verified by the forward solve") if reaches else \
+                (f"{exc.message}; approaching: the nearest admissible pose, {_distance(near.tip, target):.6g} from "
+                 "the target")
             return PreloadStep._of(command=command, proposal=command, q=near.q, tip=near.tip,
                                    end_angle=float(np.sum(near.q)), margin=near.margin, energy=near.energy,
-                                   tip_error=_distance(near.tip, target), proposal_tip=near.tip, feasible=True,
+                                   tip_error=_distance(near.tip, target), proposal_tip=near.tip, feasible=reaches,
                                    method="nearest", solver=near.solver, residual=None, target=target.copy(),
-                                   message="the nearest admissible pose reaches the target (the step's own solve "
-                                           f"failed: {exc.message}), verified by the forward solve")
-        if near is not None and self.on_infeasible == "approach":
-            command = near.ell.reshape(n, 2).copy()
-            return PreloadStep._of(command=command, proposal=command, q=near.q, tip=near.tip,
-                                   end_angle=float(np.sum(near.q)), margin=near.margin, energy=near.energy,
-                                   tip_error=_distance(near.tip, target), proposal_tip=near.tip, feasible=False,
-                                   method="nearest", solver=near.solver, residual=None, target=target.copy(),
-                                   message=f"{exc.message}; approaching: the nearest admissible pose, "
-                                           f"{_distance(near.tip, target):.6g} from the target")
+                                   message=message)
         prop = near if near is not None else held
         why = ("" if near is not None else "; no admissible pose found, the proposal is the held value")
         return PreloadStep._of(command=self.ell.reshape(n, 2).copy(), proposal=prop.ell.reshape(n, 2).copy(),
@@ -851,13 +847,12 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
 def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:
     """The forward quasi-static solve from the previous configuration with the step's command lands on the
     step's pose (on the target for a feasible step), stable."""
-    m = ctl.manipulator(st.command.ravel())
-    eq = settle_under_force(m, F, q_prev)        # Newton from the previous state; IPOPT's descent if it fails
+    try:
+        eq = ctl._forward(st.command.ravel(), F, q_prev)
+    except TimeLimitError:
+        return False                # out of time: not verified (the plan stops before its next step)
     if eq is None:
-        try:
-            eq = solve_equilibrium_under_force(m, *F, q0=q_prev)
-        except TensegrityError:
-            return False
+        return False
     tol = LAND_TOL * ctl.scale
     return bool(eq.stable) and float(np.max(np.abs(eq.tip - st.tip))) <= tol \
         and float(np.max(np.abs(eq.q - st.q))) <= 1e-6 \
