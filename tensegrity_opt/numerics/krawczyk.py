@@ -1,0 +1,489 @@
+"""Interval certificates of equilibria: Krawczyk's test in ball arithmetic (Arb, through python-flint).
+
+A homotopy (:mod:`.homotopy`) finds every complex root in floating point; this module *proves*, for each
+equilibrium it returns, that an exact real equilibrium lies in a small box around it, that it is the only one
+in that box, that the box lies strictly inside the physical range ``|q_j| < pi - 2 beta_j``, that the boxes of
+different equilibria are pairwise disjoint (so the equilibria are distinct), and, where it can be decided, the
+Morse index of the exact equilibrium. Everything that is claimed is computed in ball arithmetic (Arb's
+``arb`` / ``arb_mat``: every operation returns a ball certainly containing the exact result), from the model's
+formulas in the real unknowns; the floating-point numbers only choose *what* to test.
+
+The systems
+-----------
+Displacement control (the tip held at ``target``): unknowns ``x = (q_1..q_n, Fx, Fy)``,
+
+``f(x) = [grad E(q) - J(q)^T F ; tip(q) - target]`` (``n + 2`` equations).
+
+Force control (the dead tip load ``F`` given): unknowns ``x = q``, ``f(q) = grad E(q) - J(q)^T F``.
+
+Per joint ``L1 = 2 (b cos(q/2) - a sin(q/2))``, ``L2 = 2 (b cos(q/2) + a sin(q/2))`` (``= 2c cos(beta -+ q/2)``,
+:mod:`tensegrity_opt.model.segment`), ``E_j = k1/2 (L1 - L1_0)^2 + k2/2 (L2 - L2_0)^2``; absolute angles
+``phi_j = q_1 + ... + q_j``, links ``l_j`` (:attr:`Manipulator.link_lengths`), tip
+``(b_1 + sum l_j cos phi_j, sum l_j sin phi_j)``.
+
+Krawczyk's test
+---------------
+For a box ``X = x~ +- r`` (``x~`` the equilibrium refined by a few float Newton steps, ``r`` a small radius),
+``Y`` a float approximate inverse of ``f'(x~)`` and ``f'(X)`` the interval Jacobian over the box,
+
+``K(X) = x~ - Y f(x~) + (I - Y f'(X)) (X - x~)``.
+
+If ``K(X)`` lies in the interior of ``X``, ``f`` has exactly one zero in ``X`` (Krawczyk 1969, Moore 1977) -
+it also proves ``Y`` and every matrix of ``f'(X)`` nonsingular - and the zero is real because ``X`` is a real
+box. A singular (degenerate) equilibrium never passes: there ``I - Y f'(X)`` cannot be contracting.
+
+The Morse index
+---------------
+By Sylvester's law of inertia the inertia of a symmetric matrix ``B`` is that of ``C = V^T B V`` for any
+nonsingular ``V``. ``V`` is the float eigenvector matrix of the midpoint of ``B(X)`` (proven nonsingular:
+``||I - V^T V||_inf < 1`` in ball arithmetic), ``C`` is computed in ball arithmetic over the whole box, and
+Gershgorin's discs of ``C`` decide the signs of its eigenvalues when every disc excludes 0 (the discs left of 0
+then hold exactly as many eigenvalues as there are of them). Force control: ``B = H_L``, the Hessian of
+``E - F . tip``; displacement control: the bordered Hessian ``B = [[H_L, J^T], [J, 0]]``, whose inertia is that of
+the reduced Hessian ``Z^T H_L Z`` plus ``(2, 2)`` (``J`` has full rank where ``B`` is nonsingular). The index is
+constant over the box, in particular at the exact equilibrium; the reduced Hessian is nonsingular there, so
+"stable" (index 0) is proven too. Where a disc touches 0 (a near-degenerate equilibrium) the index is not
+proven: :attr:`RootBox.morse_proven` is false and the caller's floating-point index stands.
+
+What it does not prove
+----------------------
+That the homotopy found every root (that is the path tracking's claim, :mod:`.homotopy`), nor that the complex
+roots it classed as non-real (distance from the real set against a tolerance) are not real: the boxes cover the
+returned equilibria only.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numpy as np
+
+from ..model.manipulator import Manipulator
+from ..outcome import Outcome, freeze
+
+__all__ = ["RootBox", "IntervalCertificate", "prove_equilibria", "prove_root", "METHOD", "RADII"]
+
+#: The method's name as the results state it.
+METHOD = "krawczyk (arb)"
+#: Box half-widths tried in turn (relative: radians for ``q``, the chain's force scale for ``F``); the first
+#: that passes is kept. Below ~1e-12 the rounding of ``f(x~)`` dominates, above ~1e-6 the interval Jacobian
+#: spreads: 1e-9 passes at every regular equilibrium met; the others serve ill-conditioned ones.
+RADII = (1e-9, 1e-11, 1e-7, 1e-5)
+#: Float Newton steps refining the point before the test (kept only while the residual decreases).
+NEWTON_STEPS = 3
+
+
+def _arb():
+    try:
+        import flint
+    except ImportError as exc:            # a core dependency: this only happens in a broken install
+        raise ImportError("the interval certificates need python-flint (pip install python-flint)") from exc
+    return flint
+
+
+# ----------------------------------------------------------------------------- the model in any arithmetic
+def _system(m: Manipulator, q: list, F: list, sin, cos, half, two, quarter):
+    """``(grad_L, H_L, J, tip)`` at ``q`` (list of n scalars) and ``F`` (2 scalars) in the arithmetic of the
+    scalars (python floats, or ``arb`` balls with ``sin``/``cos`` their functions): the gradient of the
+    Lagrangian ``E - F . tip`` (n), its Hessian (n x n lists), the tip Jacobian (2 x n) and the tip (2)."""
+    n = m.n
+    a, b, k1, k2, L10, L20 = (m.a.tolist(), m.b.tolist(), m.k1.tolist(), m.k2.tolist(), m.L1_0.tolist(),
+                              m.L2_0.tolist())
+    links = m.link_lengths.tolist()
+    Fx, Fy = F
+    g, h = [], []
+    for j in range(n):
+        s, c = sin(q[j] * half), cos(q[j] * half)
+        L1 = two * (b[j] * c - a[j] * s)
+        L2 = two * (b[j] * c + a[j] * s)
+        d1 = -(b[j] * s + a[j] * c)           # dL1/dq
+        d2 = a[j] * c - b[j] * s              # dL2/dq
+        e1 = k1[j] * (L1 - L10[j])
+        e2 = k2[j] * (L2 - L20[j])
+        g.append(e1 * d1 + e2 * d2)
+        # d2L/dq2 = -L/4
+        h.append(k1[j] * d1 * d1 + k2[j] * d2 * d2 - (e1 * L1 + e2 * L2) * quarter)
+    phi = q[0]
+    lc, ls = [], []
+    for j in range(n):
+        if j:
+            phi = phi + q[j]
+        lc.append(links[j] * cos(phi))
+        ls.append(links[j] * sin(phi))
+    SC, SS = [None] * n, [None] * n           # suffix sums over the links j >= i
+    accc, accs = lc[-1], ls[-1]
+    SC[-1], SS[-1] = accc, accs
+    for i in range(n - 2, -1, -1):
+        accc = accc + lc[i]
+        accs = accs + ls[i]
+        SC[i], SS[i] = accc, accs
+    J = [[-v for v in SS], list(SC)]
+    grad = [g[i] + Fx * SS[i] - Fy * SC[i] for i in range(n)]
+    H = [[None] * n for _ in range(n)]
+    for i in range(n):
+        for k in range(i, n):
+            v = Fx * SC[k] + Fy * SS[k]      # - Fx d2x/dq_i dq_k - Fy d2y/dq_i dq_k, k >= i
+            if k == i:
+                v = v + h[i]
+            H[i][k] = H[k][i] = v
+    tip = [m.base_length + SC[0], SS[0]]
+    return grad, H, J, tip
+
+
+def _residual_and_jacobian(m: Manipulator, x: list, target, force, sin, cos, half, two, quarter):
+    """``(f, f')`` of the displacement system (``target`` given; ``x = (q, Fx, Fy)``) or the force system
+    (``force`` given; ``x = q``), as lists, in the scalars' arithmetic."""
+    n = m.n
+    if target is not None:
+        q, F = x[:n], x[n:]
+    else:
+        q, F = x, list(force)
+    grad, H, J, tip = _system(m, q, F, sin, cos, half, two, quarter)
+    if target is None:
+        return grad, H
+    f = grad + [tip[0] - target[0], tip[1] - target[1]]
+    fp = [H[i] + [-J[0][i], -J[1][i]] for i in range(n)]
+    fp += [J[0] + [0.0 * J[0][0], 0.0 * J[0][0]], J[1] + [0.0 * J[0][0], 0.0 * J[0][0]]]
+    return f, fp
+
+
+def _float_system(m: Manipulator, x: np.ndarray, target, force) -> tuple[np.ndarray, np.ndarray]:
+    f, fp = _residual_and_jacobian(m, x.tolist(), target, force, math.sin, math.cos, 0.5, 2.0, 0.25)
+    return np.array(f, dtype=float), np.array(fp, dtype=float)
+
+
+# ----------------------------------------------------------------------------- results
+@dataclass(frozen=True)
+class RootBox:
+    """The interval proof about one equilibrium.
+
+    Attributes
+    ----------
+    lower, upper : ndarray (d,)
+        The box (``d = n + 2``: ``q`` then ``(Fx, Fy)`` under displacement control; ``d = n``: ``q`` under force
+        control), its bounds rounded outward to floats.
+    proven : bool
+        Krawczyk's test passed: exactly one real equilibrium in the box, the box strictly inside the physical
+        range, and disjoint from every other box of the certificate.
+    morse_index : int or None
+        The Morse index proven over the box (``None`` when not proven).
+    morse_proven : bool
+        The Morse index is proven (every Gershgorin disc decided); when false the equilibrium's own
+        (floating-point) index stands.
+    reason : str
+        Why not proven (``""`` when proven): ``"krawczyk"`` (the test did not contract at any radius; a singular
+        or ill-conditioned equilibrium), ``"singular"`` (the float Jacobian could not be inverted), ``"range"``
+        (the box is not strictly inside the joint range), ``"overlap"`` (the box meets another), ``"moved"``
+        (Newton's refinement left the neighbourhood of the given point).
+    """
+
+    lower: np.ndarray
+    upper: np.ndarray
+    proven: bool
+    morse_index: int | None
+    morse_proven: bool
+    reason: str = ""
+
+    def __post_init__(self) -> None:
+        freeze(self)
+
+    def contains(self, x: Any) -> bool:
+        """True when the point ``x`` (``q``, or ``(q, Fx, Fy)``) lies in the closed box."""
+        x = np.asarray(x, dtype=float)
+        return bool(np.all(self.lower <= x) and np.all(x <= self.upper))
+
+    def to_dict(self) -> dict[str, Any]:
+        """``{"lower", "upper", "proven", "morse_index", "morse_proven", "reason"}``."""
+        return {"lower": self.lower.tolist(), "upper": self.upper.tolist(), "proven": bool(self.proven),
+                "morse_index": None if self.morse_index is None else int(self.morse_index),
+                "morse_proven": bool(self.morse_proven), "reason": self.reason}
+
+
+@dataclass(frozen=True)
+class IntervalCertificate(Outcome):
+    """Which proofs a set of equilibria carries: one :class:`RootBox` per equilibrium, in the set's order.
+
+    Attributes
+    ----------
+    status : str
+        :attr:`STATUSES`: ``proven`` (every equilibrium and its Morse index), ``roots_proven`` (every
+        equilibrium; some Morse indices are floating-point), ``not_proven`` (some equilibrium is not).
+    message : str
+        The same in a sentence, with the counts.
+    method : str
+        ``"krawczyk (arb)"``.
+    control : str
+        ``"displacement"`` (unknowns ``q, Fx, Fy``) or ``"force"`` (unknowns ``q``).
+    paths : int
+        Homotopy paths whose end points the equilibria are (0 when not from a homotopy).
+    boxes : tuple of RootBox
+    seconds : float
+        Wall time of the proofs.
+    """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "proven": "every equilibrium proven by Krawczyk's test in ball arithmetic (exactly one real equilibrium in "
+                  "its box, the box inside the joint range, the boxes pairwise disjoint) and every Morse index "
+                  "proven over its box",
+        "roots_proven": "every equilibrium proven as for 'proven'; the Morse index of some (near-degenerate) is "
+                        "floating-point",
+        "not_proven": "some equilibrium was not proven (singular, ill-conditioned, against the range limit, or "
+                      "its box meets another): the boxes say which",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"proven", "roots_proven"})
+
+    status: str
+    message: str
+    control: str
+    boxes: tuple[RootBox, ...]
+    paths: int = 0
+    seconds: float = 0.0
+    method: str = METHOD
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "boxes", tuple(self.boxes))
+        freeze(self)
+
+    @property
+    def roots_proven(self) -> bool:
+        """Every equilibrium proven (unique in its box, real, inside the range, boxes pairwise disjoint)."""
+        return all(b.proven for b in self.boxes)
+
+    @property
+    def morse_proven(self) -> bool:
+        """Every equilibrium's Morse index proven."""
+        return all(b.morse_proven for b in self.boxes)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form: ``success``, ``status``, ``message``, ``method``, ``control``, ``paths``, ``roots_proven``,
+        ``morse_proven``, ``seconds``, ``boxes`` (each :meth:`RootBox.to_dict`)."""
+        return {**self.outcome(), "method": self.method, "control": self.control, "paths": int(self.paths),
+                "roots_proven": self.roots_proven, "morse_proven": self.morse_proven,
+                "seconds": float(self.seconds), "boxes": [b.to_dict() for b in self.boxes]}
+
+
+# ----------------------------------------------------------------------------- the proofs
+def _refine(m: Manipulator, x0: np.ndarray, target, force) -> np.ndarray:
+    """A few float Newton steps from ``x0``, each kept only when it lowers the residual."""
+    x = x0.copy()
+    f, fp = _float_system(m, x, target, force)
+    r = float(np.max(np.abs(f)))
+    for _ in range(NEWTON_STEPS):
+        if r == 0.0:
+            break
+        try:
+            step = np.linalg.solve(fp, f)
+        except np.linalg.LinAlgError:
+            break
+        y = x - step
+        if not np.all(np.isfinite(y)):
+            break
+        fy, fpy = _float_system(m, y, target, force)
+        ry = float(np.max(np.abs(fy)))
+        if not ry < r:
+            break
+        x, f, fp, r = y, fy, fpy, ry
+    return x
+
+
+def _outward(mid: np.ndarray, rad: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Float bounds certainly enclosing ``[mid - rad, mid + rad]`` (each rounded once, then one ulp out)."""
+    return np.nextafter(mid - rad, -np.inf), np.nextafter(mid + rad, np.inf)
+
+
+def _morse(flint, B) -> int | None:
+    """The number of negative eigenvalues of every symmetric matrix in the interval matrix ``B`` (an
+    ``arb_mat``), or ``None`` when Gershgorin's discs of ``V^T B V`` do not decide it."""
+    d = B.nrows()
+    mid = np.array([[float(B[i, j].mid()) for j in range(d)] for i in range(d)])
+    mid = 0.5 * (mid + mid.T)
+    try:
+        _, V = np.linalg.eigh(mid)
+    except np.linalg.LinAlgError:
+        return None
+    if not np.all(np.isfinite(V)):
+        return None
+    Va = flint.arb_mat(V.tolist())
+    Vt = Va.transpose()
+    # V nonsingular: ||I - V^T V||_inf < 1
+    G = Vt * Va
+    one = flint.arb(1)
+    for i in range(d):
+        row = flint.arb(0)
+        for j in range(d):
+            row += abs((one if i == j else 0) - G[i, j])
+        if not row < one:
+            return None
+    C = Vt * B * Va
+    neg = 0
+    for i in range(d):
+        R = flint.arb(0)
+        for j in range(d):
+            if j != i:
+                R += abs(C[i, j])
+        c = C[i, i]
+        if c + R < 0:
+            neg += 1
+        elif not c - R > 0:
+            return None
+    return neg
+
+
+def prove_root(m: Manipulator, x: Any, *, target=None, force=None, radii=RADII
+               ) -> tuple[bool, np.ndarray, np.ndarray, int | None, str]:
+    """Krawczyk's test about one equilibrium ``x`` (``(q, Fx, Fy)`` with ``target``, or ``q`` with ``force``).
+
+    Returns ``(proven, lower, upper, morse_index, reason)``: ``proven`` when some radius of ``radii`` gives
+    ``K(X)`` inside ``X``, ``x`` itself in ``X`` and ``X`` strictly inside the joint range; the box's float bounds
+    (outward; the last box tried when none passed); the Morse index proven over the box (``None`` when not
+    decided or not proven); ``reason`` as :attr:`RootBox.reason` (without ``"overlap"``, which needs the other
+    boxes). Exactly one of ``target`` and ``force`` must be given."""
+    if (target is None) == (force is None):
+        raise ValueError("give exactly one of target (displacement control) and force (force control)")
+    flint = _arb()
+    arb, arb_mat = flint.arb, flint.arb_mat
+    n = m.n
+    x0 = np.asarray(x, dtype=float).reshape(-1)
+    d = n + 2 if target is not None else n
+    if x0.shape != (d,):
+        raise ValueError(f"the point must have {d} entries, got {x0.shape}")
+    tgt = None if target is None else [arb(float(v)) for v in target]
+    frc = None if force is None else [arb(float(v)) for v in force]
+    fscale = float(m.torque_scale / float(m.b.sum()))
+    scale = np.ones(d)
+    scale[n:] = fscale
+    xt = _refine(m, x0, target, force) if np.all(np.isfinite(x0)) else x0
+    lower, upper = _outward(x0, np.zeros(d))
+    if not np.all(np.isfinite(xt)):
+        return False, lower, upper, None, "singular"
+    moved = np.abs(xt - x0) / scale
+    if float(moved.max()) > 1e-6:
+        return False, lower, upper, None, "moved"
+    xa = [arb(v) for v in xt.tolist()]
+    sin, cos = (lambda v: v.sin()), (lambda v: v.cos())
+    half, two, quarter = arb(0.5), arb(2), arb(0.25)
+    f, _ = _residual_and_jacobian(m, xa, tgt, frc, sin, cos, half, two, quarter)
+    fx = arb_mat(d, 1, f)
+    _, fp0 = _float_system(m, xt, target, force)
+    try:
+        Y = np.linalg.inv(fp0)
+    except np.linalg.LinAlgError:
+        return False, lower, upper, None, "singular"
+    if not np.all(np.isfinite(Y)):
+        return False, lower, upper, None, "singular"
+    Ya = arb_mat(Y.tolist())
+    Yf = Ya * fx
+    step = np.array([abs(float(Yf[i, 0].mid())) for i in range(d)]) / scale
+    eye = arb_mat(d, d, [arb(1) if i == j else arb(0) for i in range(d) for j in range(d)])
+    limits = [arb.pi() - 2 * (arb(a) / arb(b)).atan() for a, b in zip(m.a.tolist(), m.b.tolist())]
+    reason = "krawczyk"
+    for rel in radii:
+        r_rel = max(rel, 4.0 * float(step.max()), 2.0 * float(moved.max()))
+        rad = r_rel * scale
+        X = [arb(xt[i], rad[i]) for i in range(d)]
+        lower, upper = _outward(xt, np.array([float(v.rad()) for v in X]))
+        _, fpX = _residual_and_jacobian(m, X, tgt, frc, sin, cos, half, two, quarter)
+        A = arb_mat(fpX)
+        dX = arb_mat(d, 1, [X[i] - xa[i] for i in range(d)])
+        K = Yf * (-1) + (eye - Ya * A) * dX
+        if not all(X[i].contains_interior(xa[i] + K[i, 0]) for i in range(d)):
+            continue
+        if not (np.all(lower <= x0) and np.all(x0 <= upper)):
+            reason = "moved"
+            continue
+        if not all((X[j] < limits[j]) and (X[j] > -limits[j]) for j in range(n)):
+            return False, lower, upper, None, "range"
+        # the Morse index over the box: the bordered Hessian (displacement) or the Hessian (force)
+        if target is not None:
+            B = arb_mat([[fpX[i][j] if j < n or i >= n else -fpX[i][j] for j in range(d)] for i in range(d)])
+            neg = _morse(flint, B)
+            morse = None if neg is None or neg < 2 else neg - 2
+        else:
+            morse = _morse(flint, A)
+        return True, lower, upper, morse, ""
+    return False, lower, upper, None, reason
+
+
+def _overlapping(lower: np.ndarray, upper: np.ndarray) -> np.ndarray:
+    """Rows whose closed box meets another row's."""
+    k = lower.shape[0]
+    hit = np.zeros(k, dtype=bool)
+    for i in range(k - 1):
+        meet = np.all((lower[i + 1:] <= upper[i]) & (lower[i] <= upper[i + 1:]), axis=1)
+        if meet.any():
+            hit[i] = True
+            hit[i + 1:][meet] = True
+    return hit
+
+
+def prove_equilibria(m: Manipulator, q: Any, force: Any, *, target=None, control: str = "displacement",
+                     paths: int = 0, float_morse: Any = None) -> IntervalCertificate:
+    """The :class:`IntervalCertificate` of the equilibria ``q`` (k, n) with tip forces ``force`` (k, 2).
+
+    Parameters
+    ----------
+    m : Manipulator
+    q, force : array_like (k, n), (k, 2)
+        The equilibria, in the order the certificate's boxes follow.
+    target : array_like (2,), optional
+        The tip position (displacement control; required there).
+    control : {"displacement", "force"}
+        Displacement control proves ``(q, F)`` against ``target``; force control proves ``q`` under the given
+        load (every row of ``force`` the same load).
+    paths : int
+        Homotopy paths behind the equilibria (reported).
+    float_morse : array_like (k,) of int, optional
+        The equilibria's floating-point Morse indices: a proven index that differs from it is reported and that
+        box counts as not Morse-proven (the float classification it is set against is then wrong).
+
+    Returns
+    -------
+    IntervalCertificate
+    """
+    if control not in ("displacement", "force"):
+        raise ValueError(f"control must be 'displacement' or 'force', got {control!r}")
+    if control == "displacement" and target is None:
+        raise ValueError("displacement control needs the target")
+    t0 = time.perf_counter()
+    Q = np.asarray(q, dtype=float).reshape(-1, m.n)
+    Fs = np.asarray(force, dtype=float).reshape(-1, 2)
+    proofs = []
+    for i in range(Q.shape[0]):
+        if control == "displacement":
+            proofs.append(prove_root(m, np.concatenate([Q[i], Fs[i]]), target=target))
+        else:
+            proofs.append(prove_root(m, Q[i], force=Fs[i]))
+    d = m.n + 2 if control == "displacement" else m.n
+    lower = np.array([p[1] for p in proofs], dtype=float).reshape(-1, d)
+    upper = np.array([p[2] for p in proofs], dtype=float).reshape(-1, d)
+    overlap = _overlapping(lower, upper)
+    boxes, mismatch = [], 0
+    for i, (ok, lo, hi, morse, reason) in enumerate(proofs):
+        if ok and overlap[i]:
+            ok, reason = False, "overlap"
+        morse_ok = ok and morse is not None
+        if morse_ok and float_morse is not None and int(float_morse[i]) != morse:
+            mismatch += 1
+            morse_ok = False
+        boxes.append(RootBox(lo, hi, ok, morse if ok else None, morse_ok, reason))
+    k = len(boxes)
+    roots = sum(b.proven for b in boxes)
+    morses = sum(b.morse_proven for b in boxes)
+    status = "not_proven" if roots < k else ("proven" if morses == k else "roots_proven")
+    why: dict[str, int] = {}
+    for b in boxes:
+        if not b.proven:
+            why[b.reason] = why.get(b.reason, 0) + 1
+    msg = (f"Krawczyk's test in ball arithmetic proved {roots} of {k} equilibria (each the only one in its box, "
+           f"real, inside the joint range, the boxes pairwise disjoint) and {morses} Morse indices")
+    if why:
+        msg += "; not proven: " + ", ".join(f"{v} {r}" for r, v in sorted(why.items()))
+    if mismatch:
+        msg += f"; {mismatch} proven Morse indices differ from the floating-point ones"
+    if morses < roots:
+        msg += "; the others' Morse indices are floating-point"
+    return IntervalCertificate(status, msg, control, boxes, paths=int(paths),
+                               seconds=time.perf_counter() - t0)
