@@ -12,7 +12,9 @@ result                      returned by                                      rec
 ==========================  ===============================================  ======================================
 :class:`Equilibrium`        ``solve_equilibrium``, ``..._under_force``,      :class:`SolverInfo`
                             ``rest_configuration``, ``Tracker.solve``
-:class:`EquilibriumSet`     ``find_equilibria``, ``..._under_force``         :class:`Equilibrium`
+:class:`EquilibriumSet`     ``find_equilibria``, ``..._under_force``         :class:`Equilibrium`,
+                                                                             :class:`IntervalCertificate`
+(``IntervalCertificate``)   ``EquilibriumSet.certificate`` (homotopy)        :class:`RootBox`
 :class:`Buckling`           ``critical_force``                               :class:`Mode`
 :class:`Landscape`          ``energy_landscape``
 :class:`Curve`              ``force_deflection``                             :class:`Jump`, :class:`CurveEnd`
@@ -64,11 +66,12 @@ from .analyses.paths.limit_load import LimitLoad
 from .analyses.paths.simulation import Simulation, SimulationEvent
 from .applications.sweeps.critical_map import CriticalLoadMap
 from .applications.sweeps.results import SweepResult
+from .numerics.krawczyk import IntervalCertificate, RootBox
 from .outcome import Outcome, SolverInfo
 
 __all__ = [
     "Outcome", "SolverInfo",
-    "Equilibrium", "EquilibriumSet", "Buckling", "Mode", "Landscape",
+    "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "Buckling", "Mode", "Landscape",
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent",

@@ -19,7 +19,7 @@ from tensegrity_opt.outcome import Outcome, outcome_classes
 NOT_RESULTS = {"Segment", "Manipulator", "Tracker", "Control", "PreloadController", "PreloadFollower"}
 #: Records inside results that carry no outcome of their own (facts about a path or a solve).
 PLAIN_RECORDS = {"Mode", "Jump", "BranchEvent", "BoundaryPoint", "AtlasCrossing", "Snap", "SolverInfo", "Outcome",
-                 "ActiveBound"}
+                 "ActiveBound", "RootBox"}
 
 
 def _public_classes(module, names):

@@ -64,7 +64,7 @@ import numpy as np
 from ..model.manipulator import Manipulator
 from ..outcome import Outcome, freeze
 
-__all__ = ["RootBox", "IntervalCertificate", "prove_equilibria", "prove_root", "METHOD", "RADII"]
+__all__ = ["RootBox", "IntervalCertificate", "prove_equilibria", "prove_root", "certificate", "METHOD", "RADII"]
 
 #: The method's name as the results state it.
 METHOD = "krawczyk (arb)"
@@ -246,6 +246,10 @@ class IntervalCertificate(Outcome):
     def __post_init__(self) -> None:
         object.__setattr__(self, "boxes", tuple(self.boxes))
         freeze(self)
+
+    def select(self, keep) -> "IntervalCertificate":
+        """The certificate of the boxes at the indices ``keep`` (e.g. the stable members of a set), restated."""
+        return certificate([self.boxes[i] for i in keep], self.control, paths=self.paths, seconds=self.seconds)
 
     @property
     def roots_proven(self) -> bool:
@@ -460,18 +464,25 @@ def prove_equilibria(m: Manipulator, q: Any, force: Any, *, target=None, control
     lower = np.array([p[1] for p in proofs], dtype=float).reshape(-1, d)
     upper = np.array([p[2] for p in proofs], dtype=float).reshape(-1, d)
     overlap = _overlapping(lower, upper)
-    boxes, mismatch = [], 0
+    boxes = []
     for i, (ok, lo, hi, morse, reason) in enumerate(proofs):
         if ok and overlap[i]:
             ok, reason = False, "overlap"
         morse_ok = ok and morse is not None
         if morse_ok and float_morse is not None and int(float_morse[i]) != morse:
-            mismatch += 1
-            morse_ok = False
+            morse_ok = False            # the proven index stays in the box; the float one it contradicts is wrong
         boxes.append(RootBox(lo, hi, ok, morse if ok else None, morse_ok, reason))
+    return certificate(boxes, control, paths=paths, seconds=time.perf_counter() - t0)
+
+
+def certificate(boxes, control: str, *, paths: int = 0, seconds: float = 0.0) -> IntervalCertificate:
+    """The :class:`IntervalCertificate` of the proofs ``boxes`` (status and message from them): how
+    :func:`prove_equilibria` ends, and how a subset of its boxes (the stable equilibria of a set) is restated."""
+    boxes = list(boxes)
     k = len(boxes)
     roots = sum(b.proven for b in boxes)
     morses = sum(b.morse_proven for b in boxes)
+    mismatch = sum(b.proven and b.morse_index is not None and not b.morse_proven for b in boxes)
     status = "not_proven" if roots < k else ("proven" if morses == k else "roots_proven")
     why: dict[str, int] = {}
     for b in boxes:
@@ -485,5 +496,4 @@ def prove_equilibria(m: Manipulator, q: Any, force: Any, *, target=None, control
         msg += f"; {mismatch} proven Morse indices differ from the floating-point ones"
     if morses < roots:
         msg += "; the others' Morse indices are floating-point"
-    return IntervalCertificate(status, msg, control, boxes, paths=int(paths),
-                               seconds=time.perf_counter() - t0)
+    return IntervalCertificate(status, msg, control, tuple(boxes), paths=int(paths), seconds=float(seconds))

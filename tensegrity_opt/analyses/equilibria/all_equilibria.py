@@ -14,8 +14,13 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted read-only sequen
     never certified (``status="searched"``).
 ``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
     Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
-    (:mod:`tensegrity_opt.numerics.homotopy`); the real roots inside the physical range, polished by Newton.
-    ``status="certified"`` when every path ended and every real root polished, else ``"uncertified"``.
+    (:mod:`tensegrity_opt.numerics.homotopy`); the real roots inside the physical range, polished by Newton,
+    then each proven by Krawczyk's test in ball arithmetic (:mod:`tensegrity_opt.numerics.krawczyk`: the only
+    equilibrium in its box, real, inside the range, the boxes pairwise disjoint; its Morse index proven where
+    decidable), the proofs in :attr:`EquilibriumSet.certificate`. ``status="certified"`` when every path ended,
+    every real root polished and every equilibrium proven, else ``"uncertified"``. Which complex roots are real
+    is decided in floating point (their distance from the real set against a tolerance): the interval proofs
+    cover the returned equilibria, not the roots classed non-real.
 
 Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest
 classified by the Morse index of the reduced Hessian and sorted by energy.
@@ -32,6 +37,7 @@ import numpy as np
 from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError, UnreachableTargetError
 from ...model.manipulator import Manipulator
 from ...numerics import KERNEL_MAX, chain_solver, distinct, distinct_indices
+from ...numerics.krawczyk import IntervalCertificate, prove_equilibria
 from ...outcome import Outcome, freeze
 from .equilibrium import (
     RESIDUAL_TOL,
@@ -45,7 +51,7 @@ from .equilibrium import (
 )
 from .seeds import projected_sample, seeds, well_seeds
 
-__all__ = ["find_equilibria", "EquilibriumSet", "searched_set", "homotopy_set", "HOMOTOPY_MAX_N"]
+__all__ = ["find_equilibria", "EquilibriumSet", "searched_set", "homotopy_set", "certify_set", "HOMOTOPY_MAX_N"]
 
 #: Uniform random configurations projected onto the tip constraint per joint (default of ``n_projected``),
 #: and their generator's seed.
@@ -99,16 +105,22 @@ class EquilibriumSet(Outcome, Sequence):
         Homotopy paths tracked and failed (0 for the other methods).
     seconds : float
         Wall time of the homotopy solver (0 for the other methods).
+    certificate : IntervalCertificate or None
+        The homotopy's interval proofs (:class:`~tensegrity_opt.numerics.krawczyk.IntervalCertificate`: one box
+        per equilibrium, in the set's order, with the proven Morse indices); ``None`` for the other methods.
     certified : bool
         The set is proven complete: ``status`` is ``certified`` or ``exact``.
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
         "certified": "the polynomial homotopy proved the set complete: every path ended, every real root inside the "
-                     "range polished onto an equilibrium, no two distinct roots merged",
+                     "range polished onto an equilibrium, no two distinct roots merged, and every equilibrium "
+                     "proven by Krawczyk's test in ball arithmetic (the only one in its box, real, inside the "
+                     "range, the boxes pairwise disjoint: certificate)",
         "uncertified": "the polynomial homotopy ran but did not prove the set complete (a path failed, its report "
                        "did not check out, a real root did not polish, or two distinct roots lay closer than the "
-                       "merge tolerance: the message says which); every equilibrium listed is one, others may exist",
+                       "merge tolerance, or an equilibrium's interval proof failed: the message says which); every "
+                       "equilibrium listed is one, others may exist",
         "searched": "the multi-start search: complete in practice (measured against the homotopy), never proven",
         "exact": "known exactly: the straight chain at full extension, a single segment, or the unloaded chain "
                  "(the product of its segments' critical points)",
@@ -122,6 +134,7 @@ class EquilibriumSet(Outcome, Sequence):
     paths: int = 0
     failed_paths: int = 0
     seconds: float = 0.0
+    certificate: IntervalCertificate | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "equilibria", tuple(self.equilibria))
@@ -148,9 +161,11 @@ class EquilibriumSet(Outcome, Sequence):
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/equilibria`` and ``POST /v1/rest-configurations``): ``success``,
         ``status``, ``message``, ``equilibria`` (each :meth:`Equilibrium.to_dict`), ``method``, ``certified``,
-        ``paths``, ``failed_paths``."""
+        ``paths``, ``failed_paths``, ``certificate`` (:meth:`IntervalCertificate.to_dict`, ``None`` but for the
+        homotopy)."""
         return {**self.outcome(), "equilibria": [e.to_dict() for e in self.equilibria], "method": self.method,
-                "certified": self.certified, "paths": int(self.paths), "failed_paths": int(self.failed_paths)}
+                "certified": self.certified, "paths": int(self.paths), "failed_paths": int(self.failed_paths),
+                "certificate": None if self.certificate is None else self.certificate.to_dict()}
 
 
 def searched_set(eqs, statuses: Mapping[str, int]) -> EquilibriumSet:
@@ -163,17 +178,39 @@ def searched_set(eqs, statuses: Mapping[str, int]) -> EquilibriumSet:
                                   f"{tally}")
 
 
-def homotopy_set(eqs, sol, polished) -> EquilibriumSet:
+def certify_set(m: Manipulator, eqs, sol, *, target=None, force=None) -> IntervalCertificate:
+    """The interval proofs (:func:`~tensegrity_opt.numerics.krawczyk.prove_equilibria`) of the equilibria
+    ``eqs`` (sorted) of the homotopy solve ``sol``: displacement control with ``target``, force control with
+    ``force``; each proven Morse index is checked against the equilibrium's floating-point one."""
+    Q = np.array([e.q for e in eqs], dtype=float).reshape(-1, m.n)
+    morse = [e.morse_index for e in eqs]
+    if target is not None:
+        F = np.array([e.force for e in eqs], dtype=float).reshape(-1, 2)
+        return prove_equilibria(m, Q, F, target=target, paths=sol.paths, float_morse=morse)
+    F = np.tile(np.asarray(force, dtype=float), (Q.shape[0], 1))
+    return prove_equilibria(m, Q, F, control="force", paths=sol.paths, float_morse=morse)
+
+
+def homotopy_set(eqs, sol, polished, certificate: IntervalCertificate | None = None) -> EquilibriumSet:
     """The :class:`EquilibriumSet` of a homotopy solve ``sol``
     (:class:`~tensegrity_opt.numerics.homotopy.HomotopySolve`) whose real roots gave ``polished``
-    (:class:`~tensegrity_opt.numerics.homotopy.PolishedRoots`): ``eqs`` (sorted), ``certified`` when the
-    polished roots are (every path ended, the report checked out, no root lost, none too close), else
-    ``uncertified``; the message is the polish's report (phc's runs and paths, and why not certified)."""
+    (:class:`~tensegrity_opt.numerics.homotopy.PolishedRoots`) and whose equilibria ``eqs`` (sorted) carry the
+    interval proofs ``certificate`` (:func:`certify_set`): ``certified`` when the polished roots are (every path
+    ended, the report checked out, no root lost, none too close) and every equilibrium is proven, else
+    ``uncertified``; the message is the polish's report (phc's runs and paths, and why not certified) and the
+    certificate's."""
+    proven = certificate is not None and certificate.roots_proven
+    ok = polished.certified and proven
     none = "" if eqs else ("no equilibrium inside the physical joint range |q| < pi - 2 beta"
-                           + (" (proven: the set is certified): " if polished.certified else " found: "))
-    return EquilibriumSet(eqs, method="homotopy", status="certified" if polished.certified else "uncertified",
-                          message=none + polished.report, paths=sol.paths, failed_paths=sol.failures,
-                          seconds=sol.seconds)
+                           + (" (proven: the set is certified): " if ok else " found: "))
+    report = polished.report
+    if certificate is None:
+        report += "; no interval proofs"
+    else:
+        report += ("; " if proven else "; not certified: ") + certificate.message
+    return EquilibriumSet(eqs, method="homotopy", status="certified" if ok else "uncertified",
+                          message=none + report, paths=sol.paths, failed_paths=sol.failures,
+                          seconds=sol.seconds, certificate=certificate)
 
 
 def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
@@ -370,4 +407,5 @@ def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: fl
                        root_is_equilibrium=lambda qi, Fi: (m.equilibrium_residual(qi, Fi, target) <= RESIDUAL_TOL
                                                            and m.in_range(qi)),
                        dedupe_tol=dedupe_tol, note=f" ({rest.shape[0]} with F = 0)" if rest.shape[0] else "")
-    return homotopy_set(_sorted(m, out.found), sol, out)
+    eqs = _sorted(m, out.found)
+    return homotopy_set(eqs, sol, out, certify_set(m, eqs, sol, target=target))

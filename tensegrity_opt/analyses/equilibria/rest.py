@@ -25,7 +25,9 @@ double precision and come out ``"degenerate"``.
 (:meth:`~tensegrity_opt.numerics.ChainSolver.newton_force`) from many starts and is complete in
 practice, not certified; ``method="homotopy"`` (``n <= 6``, PHCpack) finds every isolated complex
 root of the polynomial force system (:func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy`)
-and is certified when every path ended and every real root inside the range polished.
+and is certified when every path ended, every real root inside the range polished and every equilibrium
+proven by Krawczyk's test in ball arithmetic (:mod:`tensegrity_opt.numerics.krawczyk`; the set's
+``certificate``).
 """
 
 from __future__ import annotations
@@ -43,7 +45,7 @@ from ...model.manipulator import Manipulator
 from ...numerics import LocalResult, chain_solver, distinct
 from ...outcome import SolverInfo
 from ...timelimit import check_time
-from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, homotopy_set, searched_set
+from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, certify_set, homotopy_set, searched_set
 from .buckling import critical_force
 from .equilibrium import RESIDUAL_TOL, Equilibrium, is_equilibrium, make_equilibrium
 
@@ -305,8 +307,8 @@ def _homotopy(m: Manipulator, force: np.ndarray, dedupe_tol: float, timeout: flo
                        root_is_equilibrium=lambda qi, Fi: (m.equilibrium_residual(qi, force) <= RESIDUAL_TOL
                                                            and m.in_range(qi)),
                        dedupe_tol=dedupe_tol)
-    eqs = [make_equilibrium(m, r, constrained=False) for r in out.found]
-    return homotopy_set(_sorted(m, eqs, force), sol, out)
+    eqs = _sorted(m, [make_equilibrium(m, r, constrained=False) for r in out.found], force)
+    return homotopy_set(eqs, sol, out, certify_set(m, eqs, sol, force=force))
 
 
 # ----------------------------------------------------------------------------- the public functions
@@ -349,7 +351,8 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
         model's Newton). ``"homotopy"``: every isolated complex root of the polynomial force system by PHCpack
         (:func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy`; ``n <= 6``; paths 4, 24, 128, 704,
         3840 for n = 1..5 on general chains; 2 cores: n = 4 ~2-4 s, n = 5 ~15-70 s), the real roots
-        inside the range polished by Newton; certified when every path ended and every real root polished
+        inside the range polished by Newton; certified when every path ended, every real root polished and
+        every equilibrium proven by Krawczyk's test in ball arithmetic (the set's ``certificate``)
         (uniform n = 5 chains end with failed paths: uncertified). For ``F = 0`` both give the exact set.
     stable_only : bool
         Return the stable equilibria (minima of ``E - F . tip``) only.
@@ -412,7 +415,9 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
     else:
         out = _search(m, force, int(n_random), tol)
     if stable_only:
-        out = replace(out, equilibria=[e for e in out if e.stable])
+        keep = [i for i, e in enumerate(out) if e.stable]
+        out = replace(out, equilibria=[out[i] for i in keep],
+                      certificate=None if out.certificate is None else out.certificate.select(keep))
     return out
 
 
