@@ -86,6 +86,36 @@ class EquilibriumOut(outcome_model(to.Equilibrium)):
     solver: SolverInfo
 
 
+class RootBoxOut(BaseModel):
+    """The interval proof about one equilibrium (`tensegrity_opt.results.RootBox`)."""
+
+    lower: list[float] = Field(description="the box's lower bounds (outward-rounded): q (rad), then Fx, Fy under "
+                                           "displacement control")
+    upper: list[float] = Field(description="the box's upper bounds, as `lower`")
+    proven: bool = Field(description="Krawczyk's test passed: exactly one real equilibrium in the box, the box "
+                                     "strictly inside the joint range and disjoint from the other boxes")
+    morse_index: int | None = Field(description="the Morse index proven over the box (null: not proven)")
+    morse_proven: bool = Field(description="the Morse index is proven; false: the equilibrium's own index is "
+                                           "floating-point")
+    reason: Literal["", "krawczyk", "singular", "range", "overlap", "moved"] = Field(
+        description="why not proven (empty when proven): `krawczyk` the test did not contract (singular or "
+                    "ill-conditioned), `singular` no float inverse, `range` the box reaches a joint limit, "
+                    "`overlap` the box meets another, `moved` the refined point left the given one")
+
+
+class IntervalCertificateOut(outcome_model(to.results.IntervalCertificate)):
+    """The interval (ball-arithmetic) proofs of a homotopy's equilibria
+    (`tensegrity_opt.results.IntervalCertificate`)."""
+
+    method: str = Field(description="`krawczyk (arb)`: Krawczyk's test in Arb's ball arithmetic (python-flint)")
+    control: Literal["displacement", "force"] = Field(description="the unknowns proven: (q, Fx, Fy) or q")
+    paths: int = Field(description="homotopy paths behind the equilibria")
+    roots_proven: bool = Field(description="every equilibrium proven (unique in its box, real, in range, disjoint)")
+    morse_proven: bool = Field(description="every Morse index proven")
+    seconds: float = Field(description="wall time of the proofs (s)")
+    boxes: list[RootBoxOut] = Field(description="one per equilibrium, in the order of `equilibria`")
+
+
 class EquilibriaOut(outcome_model(to.EquilibriumSet)):
     """Every equilibrium found and what the set claims (`tensegrity_opt.EquilibriumSet`)."""
 
@@ -97,3 +127,6 @@ class EquilibriaOut(outcome_model(to.EquilibriumSet)):
                                         "`exact`)")
     paths: int = Field(description="homotopy paths tracked (0 for the search)")
     failed_paths: int = Field(description="homotopy paths that failed (any makes `certified` false)")
+    certificate: IntervalCertificateOut | None = Field(
+        description="the homotopy's interval proofs of its equilibria (null for the other methods); `certified` "
+                    "needs every equilibrium proven")

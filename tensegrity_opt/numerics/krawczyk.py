@@ -64,7 +64,8 @@ import numpy as np
 from ..model.manipulator import Manipulator
 from ..outcome import Outcome, freeze
 
-__all__ = ["RootBox", "IntervalCertificate", "prove_equilibria", "prove_root", "certificate", "METHOD", "RADII"]
+__all__ = ["RootBox", "IntervalCertificate", "prove_equilibria", "prove_root", "krawczyk_test", "certificate",
+           "METHOD", "RADII"]
 
 #: The method's name as the results state it.
 METHOD = "krawczyk (arb)"
@@ -336,77 +337,114 @@ def _morse(flint, B) -> int | None:
     return neg
 
 
+class _Ball:
+    """The ball-arithmetic pieces of one problem: the chain's constants as balls, ``f`` at a point and ``f'`` over a
+    box."""
+
+    def __init__(self, m: Manipulator, target, force) -> None:
+        if (target is None) == (force is None):
+            raise ValueError("give exactly one of target (displacement control) and force (force control)")
+        self.flint = flint = _arb()
+        arb = flint.arb
+        self.m, self.target, self.force = m, target, force
+        self.d = m.n + 2 if target is not None else m.n
+        self.tgt = None if target is None else [arb(float(v)) for v in target]
+        self.frc = None if force is None else [arb(float(v)) for v in force]
+        self.consts = (lambda v: v.sin(), lambda v: v.cos(), arb(0.5), arb(2), arb(0.25))
+        self.limits = [arb.pi() - 2 * (arb(a) / arb(b)).atan() for a, b in zip(m.a.tolist(), m.b.tolist())]
+        self.eye = flint.arb_mat(self.d, self.d, [1 if i == j else 0 for i in range(self.d) for j in range(self.d)])
+
+    def system(self, x: list):
+        return _residual_and_jacobian(self.m, x, self.tgt, self.frc, *self.consts)
+
+    def krawczyk(self, xt: np.ndarray, rad: np.ndarray, Y: np.ndarray | None = None):
+        """Krawczyk's test on the box ``xt +- rad``: ``(passed, X, f'(X) as lists)``; ``Y`` defaults to the float
+        inverse of ``f'(xt)`` (``None`` returned for ``X`` when it cannot be formed)."""
+        arb, arb_mat = self.flint.arb, self.flint.arb_mat
+        d = self.d
+        if Y is None:
+            _, fp0 = _float_system(self.m, xt, self.target, self.force)
+            try:
+                Y = np.linalg.inv(fp0)
+            except np.linalg.LinAlgError:
+                return False, None, None
+        if not np.all(np.isfinite(Y)):
+            return False, None, None
+        xa = [arb(float(v)) for v in xt]
+        f, _ = self.system(xa)
+        Ya = arb_mat(Y.tolist())
+        X = [arb(float(xt[i]), float(rad[i])) for i in range(d)]
+        _, fpX = self.system(X)
+        dX = arb_mat(d, 1, [X[i] - xa[i] for i in range(d)])
+        K = Ya * arb_mat(d, 1, f) * (-1) + (self.eye - Ya * arb_mat(fpX)) * dX
+        return all(X[i].contains_interior(xa[i] + K[i, 0]) for i in range(d)), X, fpX
+
+
+def krawczyk_test(m: Manipulator, center: Any, radius: Any, *, target=None, force=None) -> bool:
+    """Krawczyk's test alone on the box ``center +- radius`` (``(q, Fx, Fy)`` with ``target``, ``q`` with
+    ``force``; ``radius`` a number or one per unknown): True proves exactly one zero of the equilibrium
+    equations in the box (no range check, no refinement)."""
+    ball = _Ball(m, target, force)
+    xt = np.asarray(center, dtype=float).reshape(-1)
+    rad = np.broadcast_to(np.asarray(radius, dtype=float), xt.shape)
+    return ball.krawczyk(xt, rad)[0]
+
+
 def prove_root(m: Manipulator, x: Any, *, target=None, force=None, radii=RADII
                ) -> tuple[bool, np.ndarray, np.ndarray, int | None, str]:
     """Krawczyk's test about one equilibrium ``x`` (``(q, Fx, Fy)`` with ``target``, or ``q`` with ``force``).
 
-    Returns ``(proven, lower, upper, morse_index, reason)``: ``proven`` when some radius of ``radii`` gives
-    ``K(X)`` inside ``X``, ``x`` itself in ``X`` and ``X`` strictly inside the joint range; the box's float bounds
-    (outward; the last box tried when none passed); the Morse index proven over the box (``None`` when not
-    decided or not proven); ``reason`` as :attr:`RootBox.reason` (without ``"overlap"``, which needs the other
-    boxes). Exactly one of ``target`` and ``force`` must be given."""
-    if (target is None) == (force is None):
-        raise ValueError("give exactly one of target (displacement control) and force (force control)")
-    flint = _arb()
-    arb, arb_mat = flint.arb, flint.arb_mat
-    n = m.n
+    ``x`` is refined by a few float Newton steps (``x~``; more than ``1e-6`` away from ``x``, relative: not
+    proven, ``"moved"``), then the boxes ``x~ +- r`` are tried for ``r`` in ``radii`` (relative: rad for ``q``,
+    the chain's force scale for ``F``; at least four Newton steps and twice the refinement's move).
+
+    Returns ``(proven, lower, upper, morse_index, reason)``: ``proven`` when some box passes Krawczyk's test,
+    holds ``x`` itself and lies strictly inside the joint range; the box's float bounds (outward; the last box
+    tried when none passed); the Morse index proven over the box (``None`` when not decided or not proven);
+    ``reason`` as :attr:`RootBox.reason` (without ``"overlap"``, which needs the other boxes). Exactly one of
+    ``target`` and ``force`` must be given."""
+    ball = _Ball(m, target, force)
+    n, d = m.n, ball.d
     x0 = np.asarray(x, dtype=float).reshape(-1)
-    d = n + 2 if target is not None else n
     if x0.shape != (d,):
         raise ValueError(f"the point must have {d} entries, got {x0.shape}")
-    tgt = None if target is None else [arb(float(v)) for v in target]
-    frc = None if force is None else [arb(float(v)) for v in force]
-    fscale = float(m.torque_scale / float(m.b.sum()))
     scale = np.ones(d)
-    scale[n:] = fscale
-    xt = _refine(m, x0, target, force) if np.all(np.isfinite(x0)) else x0
+    scale[n:] = float(m.torque_scale / float(m.b.sum()))
     lower, upper = _outward(x0, np.zeros(d))
-    if not np.all(np.isfinite(xt)):
+    if not np.all(np.isfinite(x0)):
         return False, lower, upper, None, "singular"
+    xt = _refine(m, x0, target, force)
     moved = np.abs(xt - x0) / scale
     if float(moved.max()) > 1e-6:
         return False, lower, upper, None, "moved"
-    xa = [arb(v) for v in xt.tolist()]
-    sin, cos = (lambda v: v.sin()), (lambda v: v.cos())
-    half, two, quarter = arb(0.5), arb(2), arb(0.25)
-    f, _ = _residual_and_jacobian(m, xa, tgt, frc, sin, cos, half, two, quarter)
-    fx = arb_mat(d, 1, f)
-    _, fp0 = _float_system(m, xt, target, force)
+    f0, fp0 = _float_system(m, xt, target, force)
     try:
         Y = np.linalg.inv(fp0)
     except np.linalg.LinAlgError:
         return False, lower, upper, None, "singular"
     if not np.all(np.isfinite(Y)):
         return False, lower, upper, None, "singular"
-    Ya = arb_mat(Y.tolist())
-    Yf = Ya * fx
-    step = np.array([abs(float(Yf[i, 0].mid())) for i in range(d)]) / scale
-    eye = arb_mat(d, d, [arb(1) if i == j else arb(0) for i in range(d) for j in range(d)])
-    limits = [arb.pi() - 2 * (arb(a) / arb(b)).atan() for a, b in zip(m.a.tolist(), m.b.tolist())]
+    step = np.abs(Y @ f0) / scale
     reason = "krawczyk"
     for rel in radii:
-        r_rel = max(rel, 4.0 * float(step.max()), 2.0 * float(moved.max()))
-        rad = r_rel * scale
-        X = [arb(xt[i], rad[i]) for i in range(d)]
+        rad = max(rel, 4.0 * float(step.max()), 2.0 * float(moved.max())) * scale
+        ok, X, fpX = ball.krawczyk(xt, rad, Y)
         lower, upper = _outward(xt, np.array([float(v.rad()) for v in X]))
-        _, fpX = _residual_and_jacobian(m, X, tgt, frc, sin, cos, half, two, quarter)
-        A = arb_mat(fpX)
-        dX = arb_mat(d, 1, [X[i] - xa[i] for i in range(d)])
-        K = Yf * (-1) + (eye - Ya * A) * dX
-        if not all(X[i].contains_interior(xa[i] + K[i, 0]) for i in range(d)):
+        if not ok:
             continue
         if not (np.all(lower <= x0) and np.all(x0 <= upper)):
             reason = "moved"
             continue
-        if not all((X[j] < limits[j]) and (X[j] > -limits[j]) for j in range(n)):
+        if not all((X[j] < ball.limits[j]) and (X[j] > -ball.limits[j]) for j in range(n)):
             return False, lower, upper, None, "range"
         # the Morse index over the box: the bordered Hessian (displacement) or the Hessian (force)
+        flint = ball.flint
         if target is not None:
-            B = arb_mat([[fpX[i][j] if j < n or i >= n else -fpX[i][j] for j in range(d)] for i in range(d)])
+            B = flint.arb_mat([[fpX[i][j] if j < n or i >= n else -fpX[i][j] for j in range(d)] for i in range(d)])
             neg = _morse(flint, B)
             morse = None if neg is None or neg < 2 else neg - 2
         else:
-            morse = _morse(flint, A)
+            morse = _morse(flint, flint.arb_mat(fpX))
         return True, lower, upper, morse, ""
     return False, lower, upper, None, reason
 
