@@ -114,6 +114,8 @@ from .equilibrium import (
     EquilibriumOut,
     EquilibriumRequest,
     ForceEquilibriumRequest,
+    IntervalCertificateOut,
+    RootBoxOut,
 )
 from .jobs import (
     JobCreated,
@@ -233,6 +235,8 @@ __all__ = [
     "EnergyLandscapeRequest",
     "Envelope",
     "EquilibriaOut",
+    "IntervalCertificateOut",
+    "RootBoxOut",
     "EquilibriaRequest",
     "EquilibriumOut",
     "EquilibriumRequest",

@@ -65,7 +65,7 @@ def test_the_http_models_carry_the_vocabularies():
                        (s.LimitLoadOut, to.LimitLoad), (s.StabilityBoundaryOut, to.StabilityBoundary),
                        (s.AtlasOut, to.StabilityAtlas), (s.AtlasTargetOut, AtlasTarget),
                        (s.SimulationOut, to.Simulation), (s.SimulationEventOut, to.results.SimulationEvent),
-                       (s.CurveEndOut, CurveEnd)):
+                       (s.CurveEndOut, CurveEnd), (s.IntervalCertificateOut, results.IntervalCertificate)):
         assert list(model.model_fields)[:3] == ["success", "status", "message"], model
         assert set(model.model_fields["status"].annotation.__args__) == set(cls.STATUSES), model
     assert set(s.CurvePoint.model_fields["status"].annotation.__args__) == set(POINT_STATUSES)

@@ -121,7 +121,7 @@ def test_equilibria(client):
     # sorted by energy; mirror images tie (equal to roundoff), so compare with a tolerance
     assert all(b >= a - 1e-12 * abs(a) for a, b in zip(energies, energies[1:]))
     assert [g["kind"] for g in got] == ["minimum", "minimum", "saddle", "saddle", "maximum", "maximum"]
-    assert r.json()["method"] == "search" and r.json()["certified"] is False
+    assert r.json()["method"] == "search" and r.json()["certified"] is False and r.json()["certificate"] is None
     assert list(r.json())[:3] == ["success", "status", "message"]
     assert (r.json()["success"], r.json()["status"]) == (True, "searched") and r.json()["message"] == expected.message
 
@@ -137,6 +137,14 @@ def test_equilibria_homotopy_is_certified(client):
     assert body["method"] == "homotopy" and body["certified"] is True and body["failed_paths"] == 0
     assert (body["success"], body["status"]) == (True, "certified") and body["message"].startswith("phc (")
     assert body["paths"] == 96
+    cert = body["certificate"]           # the interval proofs: one box per equilibrium, holding it
+    assert (cert["status"], cert["roots_proven"], cert["method"]) == ("proven", True, "krawczyk (arb)")
+    assert cert["paths"] == 96
+    assert len(cert["boxes"]) == len(body["equilibria"])
+    for g, box in zip(body["equilibria"], cert["boxes"]):
+        x = np.array(g["q"] + [g["force"]["fx"], g["force"]["fy"]])
+        assert box["proven"] and np.all(np.array(box["lower"]) <= x) and np.all(x <= np.array(box["upper"]))
+        assert box["morse_index"] == g["morse_index"]
     search = to.find_equilibria(to.Manipulator.uniform(3, a=0.6, L0=0.8), 0.5, 0.2)
     assert len(body["equilibria"]) == len(search) > 0
     for g in body["equilibria"]:
