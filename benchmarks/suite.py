@@ -31,6 +31,10 @@ Cases (each with its target):
    third of it. Its own table in RESULTS.md ("Figures").
 13. horizon planner: one warm receding-horizon step (n = 4, N = 10) beside the step-by-step controller's step on
    the same trajectory, both timed in the same run (info).
+14. interval certificates: Krawczyk's test in ball arithmetic (python-flint) on every equilibrium of a set, per
+   set, n = 2..5 on the PHCpack oracle's sets (``tests/data/homotopy_oracle.json``), n = 6 on the search's sets of
+   bistable chains; beside the Newton polish and float classification of the same equilibria (what the homotopy
+   already does per root), same run (info).
 """
 
 from __future__ import annotations
@@ -1048,9 +1052,58 @@ def case13(cfg: Config) -> list[Row]:
                 notes=[note])]
 
 
+def case14(cfg: Config) -> list[Row]:
+    """Interval certificates (Krawczyk, Arb) of whole sets of equilibria, per n, beside the float polish."""
+    from tensegrity_opt.analyses.equilibria.equilibrium import local_equilibrium, make_equilibrium
+    from tensegrity_opt.numerics.krawczyk import prove_equilibria
+
+    cases = json.loads((ROOT / "tests" / "data" / "homotopy_oracle.json").read_text())["cases"]
+    sets: dict[int, list] = {}
+    for c in cases:
+        m = to.Manipulator.from_dict(c["manipulator"])
+        Q = np.array([e["q"] for e in c["equilibria"]])
+        F = np.array([e["force"] for e in c["equilibria"]])
+        sets.setdefault(m.n, []).append((m, m.target(c["dx"], c["dy"]), Q, F, c["seconds"]))
+    for seed in range(2 if cfg.quick else 4):
+        m = to.Manipulator.uniform(6, **BISTABLE)
+        rng = np.random.default_rng(seed)
+        dx, dy = rng.uniform(0.1, 0.4) * m.straight_length, rng.uniform(-0.2, 0.2) * m.straight_length
+        eqs = to.find_equilibria(m, dx, dy)
+        sets.setdefault(6, []).append((m, m.target(dx, dy), np.array([e.q for e in eqs]),
+                                       np.array([e.force for e in eqs]), None))
+    rows = []
+    for n in sorted(sets):
+        ours, base, per, counts, proven, phc = [], [], [], [], 0, []
+        for m, target, Q, F, sec in sets[n][: 6 if cfg.quick else None]:
+            t = repeat(lambda: prove_equilibria(m, Q, F, target=target), 1 if cfg.quick else 3, warmup=0)
+            cert = prove_equilibria(m, Q, F, target=target)
+            proven += cert.status == "proven"
+            ours.append(statistics.median(t))
+            per.append(statistics.median(t) / max(1, len(Q)))
+            counts.append(len(Q))
+
+            def polish():
+                for q, f in zip(Q, F):
+                    make_equilibrium(m, local_equilibrium(m, target, q, f), constrained=True)
+            base.append(statistics.median(repeat(polish, 1 if cfg.quick else 3, warmup=0)))
+            if sec is not None:
+                phc.append(sec)
+        o, b = median_ms(ours), median_ms(base)
+        src = "PHCpack oracle" if n <= 5 else f"search sets of bistable chains ({BISTABLE})"
+        rows.append(Row("14", "interval certificate of a set (Krawczyk, arb)", n, o, "ms",
+                        "Newton polish + float classification of the same equilibria", b, ratio=b / o,
+                        target="(info)", samples=ours, baseline_samples=base,
+                        notes=[f"n={n}: {len(ours)} sets ({src}), {min(counts)}-{max(counts)} equilibria a set, "
+                               f"{proven}/{len(ours)} sets proven (every root and Morse index); "
+                               f"{1e3 * statistics.median(per):.2f} ms an equilibrium"
+                               + (f"; the oracle's phc solve took {statistics.median(phc):.2f} s (median, recorded)"
+                                  if phc else "")]))
+    return rows
+
+
 CASES: list[tuple[str, Callable[[Config], list[Row]]]] = [
     ("1", case1), ("2", case2), ("3", case3), ("4-5", case4_5), ("6", case6), ("7-8", case7_8), ("9", case9),
-    ("10", case10), ("11", case11), ("12", case12), ("13", case13),
+    ("10", case10), ("11", case11), ("12", case12), ("13", case13), ("14", case14),
 ]
 
 
