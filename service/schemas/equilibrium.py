@@ -112,6 +112,8 @@ class IntervalCertificateOut(outcome_model(to.results.IntervalCertificate)):
     paths: int = Field(description="homotopy paths behind the equilibria")
     roots_proven: bool = Field(description="every equilibrium proven (unique in its box, real, in range, disjoint)")
     morse_proven: bool = Field(description="every Morse index proven")
+    nonreal_checked: int = Field(description="homotopy roots classed non-real but near the real set (within 0.1)")
+    nonreal_proven: int = Field(description="of those, proven non-real (complex Krawczyk, a box off the real set)")
     seconds: float = Field(description="wall time of the proofs (s)")
     boxes: list[RootBoxOut] = Field(description="one per equilibrium, in the order of `equilibria`")
 

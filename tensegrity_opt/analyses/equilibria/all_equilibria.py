@@ -181,14 +181,15 @@ def searched_set(eqs, statuses: Mapping[str, int]) -> EquilibriumSet:
 def certify_set(m: Manipulator, eqs, sol, *, target=None, force=None) -> IntervalCertificate:
     """The interval proofs (:func:`~tensegrity_opt.numerics.krawczyk.prove_equilibria`) of the equilibria
     ``eqs`` (sorted) of the homotopy solve ``sol``: displacement control with ``target``, force control with
-    ``force``; each proven Morse index is checked against the equilibrium's floating-point one."""
+    ``force``; each proven Morse index is checked against the equilibrium's floating-point one, and the
+    homotopy's complex roots near the real set are proven non-real."""
     Q = np.array([e.q for e in eqs], dtype=float).reshape(-1, m.n)
     morse = [e.morse_index for e in eqs]
     if target is not None:
         F = np.array([e.force for e in eqs], dtype=float).reshape(-1, 2)
-        return prove_equilibria(m, Q, F, target=target, paths=sol.paths, float_morse=morse)
-    F = np.tile(np.asarray(force, dtype=float), (Q.shape[0], 1))
-    return prove_equilibria(m, Q, F, control="force", paths=sol.paths, float_morse=morse)
+        return prove_equilibria(m, Q, F, target=target, paths=sol.paths, float_morse=morse, roots=sol.roots)
+    F = np.tile(np.asarray(force, dtype=float), (max(1, Q.shape[0]), 1))    # one row at least: the load
+    return prove_equilibria(m, Q, F, control="force", paths=sol.paths, float_morse=morse, roots=sol.roots)
 
 
 def homotopy_set(eqs, sol, polished, certificate: IntervalCertificate | None = None) -> EquilibriumSet:

@@ -107,3 +107,33 @@ def test_live_homotopy_sets_are_proven():
     stable = to.find_equilibria_under_force(TRIPLE, -0.1, 0.05, method="homotopy", stable_only=True)
     assert 0 < len(stable) < len(loaded) and len(stable.certificate.boxes) == len(stable)
     _check(stable, TRIPLE)
+
+
+@needs_phc
+def test_the_homotopys_non_real_roots_are_proven_non_real():
+    """Every root of a live run: those the homotopy classes non-real are proven non-real (complex Krawczyk, a box
+    off the real set), the real ones never; and the real ones inside the range are exactly the set's equilibria."""
+    target = TRIPLE.target(0.8, 0.3)
+    sol = homotopy.solve_homotopy(TRIPLE, target)
+    X = krawczyk.homotopy_unknowns(TRIPLE, sol.roots)
+    real = np.max(np.abs(X.imag), axis=1) < 1e-9
+    assert 0 < real.sum() < len(X)
+    assert [krawczyk.prove_nonreal(TRIPLE, x, target=target) for x in X] == (~real).tolist()
+    inside = [x.real for x in X[real] if TRIPLE.in_range(x.real[:TRIPLE.n])]
+    eqs = to.find_equilibria(TRIPLE, 0.8, 0.3, method="homotopy")
+    assert len(inside) == len(eqs)
+    for e in eqs:
+        assert min(np.max(np.abs(x[:TRIPLE.n] - e.q)) for x in inside) < 1e-8
+
+
+def test_a_single_segments_roots_are_real_and_not_proven_non_real():
+    """n = 1 under a load: the quartic's four roots lie on the unit circle (real angles): none is proven non-real,
+    the three inside the range are proven equilibria, the fourth lies beyond the range."""
+    m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 0.9)])
+    F = (-0.1, 0.05)
+    P = homotopy._force_laurent_terms(m, F)[0]
+    z = np.roots([P.get((p,), 0.0) for p in (2, 1, 0, -1, -2)])
+    X = krawczyk.homotopy_unknowns(m, z[:, None], displacement=False)
+    assert not any(krawczyk.prove_nonreal(m, x, force=F) for x in X)
+    proofs = [krawczyk.prove_root(m, x.real, force=F) for x in X]
+    assert sorted(p[4] for p in proofs) == ["", "", "", "range"]
