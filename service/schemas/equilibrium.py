@@ -97,9 +97,10 @@ class RootBoxOut(BaseModel):
     morse_index: int | None = Field(description="the Morse index proven over the box (null: not proven)")
     morse_proven: bool = Field(description="the Morse index is proven; false: the equilibrium's own index is "
                                            "floating-point")
-    reason: Literal["", "krawczyk", "singular", "range", "overlap", "moved"] = Field(
+    reason: Literal["", "krawczyk", "singular", "range", "outside", "overlap", "moved"] = Field(
         description="why not proven (empty when proven): `krawczyk` the test did not contract (singular or "
-                    "ill-conditioned), `singular` no float inverse, `range` the box reaches a joint limit, "
+                    "ill-conditioned), `singular` no float inverse, `range` the box straddles a joint limit, `outside` "
+                    "it lies beyond one, "
                     "`overlap` the box meets another, `moved` the refined point left the given one")
 
 
@@ -114,6 +115,8 @@ class IntervalCertificateOut(outcome_model(to.results.IntervalCertificate)):
     morse_proven: bool = Field(description="every Morse index proven")
     nonreal_checked: int = Field(description="homotopy roots classed non-real but near the real set (within 0.1)")
     nonreal_proven: int = Field(description="of those, proven non-real (complex Krawczyk, a box off the real set)")
+    outside_checked: int = Field(description="homotopy real roots just beyond the joint range (by less than 0.1 rad)")
+    outside_proven: int = Field(description="of those, proven beyond it (Krawczyk, a box beyond a joint limit)")
     seconds: float = Field(description="wall time of the proofs (s)")
     boxes: list[RootBoxOut] = Field(description="one per equilibrium, in the order of `equilibria`")
 

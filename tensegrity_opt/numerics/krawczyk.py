@@ -55,10 +55,13 @@ root exists in the box, and no point of the box is real. The certificate runs it
 :data:`NEAR_REAL` of the real set (the only ones a floating-point error could misclass; ~1 ms a root); the
 farther ones are non-real in floating point, by that margin.
 
+The real roots the homotopy puts just beyond the joint range (by less than :data:`NEAR_REAL` rad) are proven
+beyond it the same way: Krawczyk's test, the box beyond a joint limit.
+
 What it does not prove
 ----------------------
-That the homotopy found every root (that is the path tracking's claim, :mod:`.homotopy`), nor that a real root the
-homotopy put outside the range is outside it (only those inside are proven, with their boxes).
+That the homotopy found every root (that is the path tracking's claim, :mod:`.homotopy`); the roots farther from
+the real set or from the range than :data:`NEAR_REAL` are classed in floating point.
 """
 
 from __future__ import annotations
@@ -192,8 +195,9 @@ class RootBox:
     reason : str
         Why not proven (``""`` when proven): ``"krawczyk"`` (the test did not contract at any radius; a singular
         or ill-conditioned equilibrium), ``"singular"`` (the float Jacobian could not be inverted), ``"range"``
-        (the box is not strictly inside the joint range), ``"overlap"`` (the box meets another), ``"moved"``
-        (Newton's refinement left the neighbourhood of the given point).
+        (the box straddles a joint limit), ``"outside"`` (the box lies beyond a joint limit: a real root of the
+        equations, proven not a configuration), ``"overlap"`` (the box meets another), ``"moved"`` (Newton's
+        refinement left the neighbourhood of the given point).
     """
 
     lower: np.ndarray
@@ -242,6 +246,10 @@ class IntervalCertificate(Outcome):
         The homotopy's roots classed non-real yet near the real set (within :data:`NEAR_REAL`), and how many of
         them :func:`prove_nonreal` proved non-real (the others' split is floating-point; the roots farther from
         the real set are non-real in floating point, by that margin).
+    outside_checked, outside_proven : int
+        The homotopy's real roots beyond the joint range by less than :data:`NEAR_REAL` (rad), and how many of
+        them are proven beyond it (a box with exactly one root, beyond a joint limit; :attr:`RootBox.reason`
+        ``"outside"``).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -264,6 +272,8 @@ class IntervalCertificate(Outcome):
     method: str = METHOD
     nonreal_checked: int = 0
     nonreal_proven: int = 0
+    outside_checked: int = 0
+    outside_proven: int = 0
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "boxes", tuple(self.boxes))
@@ -272,7 +282,8 @@ class IntervalCertificate(Outcome):
     def select(self, keep) -> "IntervalCertificate":
         """The certificate of the boxes at the indices ``keep`` (e.g. the stable members of a set), restated."""
         return certificate([self.boxes[i] for i in keep], self.control, paths=self.paths, seconds=self.seconds,
-                           nonreal=(self.nonreal_checked, self.nonreal_proven))
+                           nonreal=(self.nonreal_checked, self.nonreal_proven),
+                           outside=(self.outside_checked, self.outside_proven))
 
     @property
     def roots_proven(self) -> bool:
@@ -286,11 +297,13 @@ class IntervalCertificate(Outcome):
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``method``, ``control``, ``paths``, ``roots_proven``,
-        ``morse_proven``, ``nonreal_checked``, ``nonreal_proven``, ``seconds``, ``boxes`` (each
+        ``morse_proven``, ``nonreal_checked``, ``nonreal_proven``, ``outside_checked``, ``outside_proven``,
+        ``seconds``, ``boxes`` (each
         :meth:`RootBox.to_dict`)."""
         return {**self.outcome(), "method": self.method, "control": self.control, "paths": int(self.paths),
                 "roots_proven": self.roots_proven, "morse_proven": self.morse_proven,
                 "nonreal_checked": int(self.nonreal_checked), "nonreal_proven": int(self.nonreal_proven),
+                "outside_checked": int(self.outside_checked), "outside_proven": int(self.outside_proven),
                 "seconds": float(self.seconds), "boxes": [b.to_dict() for b in self.boxes]}
 
 
@@ -460,7 +473,8 @@ def prove_root(m: Manipulator, x: Any, *, target=None, force=None, radii=RADII
             reason = "moved"
             continue
         if not all((X[j] < ball.limits[j]) and (X[j] > -ball.limits[j]) for j in range(n)):
-            return False, lower, upper, None, "range"
+            beyond = any((X[j] > ball.limits[j]) or (X[j] < -ball.limits[j]) for j in range(n))
+            return False, lower, upper, None, "outside" if beyond else "range"
         # the Morse index over the box: the bordered Hessian (displacement) or the Hessian (force)
         flint = ball.flint
         if target is not None:
@@ -611,7 +625,7 @@ def prove_equilibria(m: Manipulator, q: Any, force: Any, *, target=None, control
         if morse_ok and float_morse is not None and int(float_morse[i]) != morse:
             morse_ok = False            # the proven index stays in the box; the float one it contradicts is wrong
         boxes.append(RootBox(lo, hi, ok, morse if ok else None, morse_ok, reason))
-    checked = proven = 0
+    checked = proven = out_checked = out_proven = 0
     if roots is not None and len(roots):
         disp = control == "displacement"
         X = homotopy_unknowns(m, roots, displacement=disp)
@@ -621,11 +635,19 @@ def prove_equilibria(m: Manipulator, q: Any, force: Any, *, target=None, control
         for x in X[(im > NONREAL_FLOOR) & (im < NEAR_REAL)]:
             checked += 1
             proven += prove_nonreal(m, x, target=target if disp else None, force=None if disp else Fs[0])
-    return certificate(boxes, control, paths=paths, seconds=time.perf_counter() - t0, nonreal=(checked, proven))
+        # the real roots the homotopy put beyond the range, near it: proven beyond it
+        R = X[im <= NONREAL_FLOOR].real
+        excess = np.max(np.abs(R[:, :m.n]) - m.joint_limits, axis=1) if len(R) else np.zeros(0)
+        for x in R[(excess >= -NONREAL_FLOOR) & (excess < NEAR_REAL)]:
+            out_checked += 1
+            out_proven += prove_root(m, x, target=target if disp else None,
+                                     force=None if disp else Fs[0])[4] == "outside"
+    return certificate(boxes, control, paths=paths, seconds=time.perf_counter() - t0, nonreal=(checked, proven),
+                       outside=(out_checked, out_proven))
 
 
 def certificate(boxes, control: str, *, paths: int = 0, seconds: float = 0.0,
-                nonreal: tuple[int, int] = (0, 0)) -> IntervalCertificate:
+                nonreal: tuple[int, int] = (0, 0), outside: tuple[int, int] = (0, 0)) -> IntervalCertificate:
     """The :class:`IntervalCertificate` of the proofs ``boxes`` (status and message from them): how
     :func:`prove_equilibria` ends, and how a subset of its boxes (the stable equilibria of a set) is restated."""
     boxes = list(boxes)
@@ -650,5 +672,9 @@ def certificate(boxes, control: str, *, paths: int = 0, seconds: float = 0.0,
     if checked:
         msg += (f"; {proven} of {checked} complex roots near the real set (within {NEAR_REAL:g}) proven non-real"
                 + ("" if proven == checked else " (the others' split is floating-point)"))
+    if outside[0]:
+        msg += (f"; {outside[1]} of {outside[0]} real roots just beyond the joint range (within {NEAR_REAL:g}) proven "
+                "beyond it" + ("" if outside[1] == outside[0] else " (the others' side is floating-point)"))
     return IntervalCertificate(status, msg, control, tuple(boxes), paths=int(paths), seconds=float(seconds),
-                               nonreal_checked=int(checked), nonreal_proven=int(proven))
+                               nonreal_checked=int(checked), nonreal_proven=int(proven),
+                               outside_checked=int(outside[0]), outside_proven=int(outside[1]))

@@ -191,7 +191,7 @@ def test_an_equilibrium_outside_the_range_is_not_proven():
     q = brentq(lambda x: float(s.torque(x)), s.joint_limit, 3.0, xtol=1e-15)
     assert s.joint_limit < q < s.joint_limit + 0.05
     ok, *_, reason = prove_root(to.Manipulator([s]), [q], force=(0.0, 0.0))
-    assert not ok and reason == "range"
+    assert not ok and reason == "outside"
     assert krawczyk_test(to.Manipulator([s]), [q], 1e-9, force=(0.0, 0.0))   # a true root, out of range
 
 

@@ -104,6 +104,9 @@ def test_live_homotopy_sets_are_proven():
     loaded = to.find_equilibria_under_force(TRIPLE, -0.1, 0.05, method="homotopy")
     assert loaded.certified and loaded.certificate.control == "force" and len(loaded) >= 4
     _check(loaded, TRIPLE)
+    cert = loaded.certificate          # two real roots lie just beyond the range: proven beyond it
+    assert cert.outside_checked == cert.outside_proven == 2 and cert.nonreal_checked == cert.nonreal_proven
+    assert "2 of 2 real roots just beyond the joint range (within 0.1) proven beyond it" in loaded.message
     stable = to.find_equilibria_under_force(TRIPLE, -0.1, 0.05, method="homotopy", stable_only=True)
     assert 0 < len(stable) < len(loaded) and len(stable.certificate.boxes) == len(stable)
     _check(stable, TRIPLE)
@@ -136,4 +139,4 @@ def test_a_single_segments_roots_are_real_and_not_proven_non_real():
     X = krawczyk.homotopy_unknowns(m, z[:, None], displacement=False)
     assert not any(krawczyk.prove_nonreal(m, x, force=F) for x in X)
     proofs = [krawczyk.prove_root(m, x.real, force=F) for x in X]
-    assert sorted(p[4] for p in proofs) == ["", "", "", "range"]
+    assert sorted(p[4] for p in proofs) == ["", "", "", "outside"]
