@@ -111,7 +111,10 @@ def _system(m: Manipulator, q: list, F: list, sin, cos, half, two, quarter):
     n = m.n
     a, b, k1, k2, L10, L20 = (m.a.tolist(), m.b.tolist(), m.k1.tolist(), m.k2.tolist(), m.L1_0.tolist(),
                               m.L2_0.tolist())
-    links = m.link_lengths.tolist()
+    # the link lengths b_j + b_{j+1} summed in the scalars' arithmetic (a float sum may round): half * two is an
+    # exact 1 of that arithmetic
+    one = half * two
+    links = [one * b[j] + one * b[j + 1] for j in range(n - 1)] + [one * b[-1]]
     Fx, Fy = F
     g, h = [], []
     for j in range(n):
