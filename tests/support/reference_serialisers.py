@@ -47,10 +47,23 @@ def equilibrium_out(eq) -> dict[str, Any]:
                        "iterations": None if eq.solver.iterations is None else int(eq.solver.iterations)}}
 
 
+def certificate_out(c) -> dict[str, Any] | None:
+    if c is None:
+        return None
+    return {**outcome(c), "method": c.method, "control": c.control, "paths": int(c.paths),
+            "roots_proven": all(b.proven for b in c.boxes), "morse_proven": all(b.morse_proven for b in c.boxes),
+            "nonreal_checked": int(c.nonreal_checked), "nonreal_proven": int(c.nonreal_proven),
+            "outside_checked": int(c.outside_checked), "outside_proven": int(c.outside_proven),
+            "seconds": float(c.seconds),
+            "boxes": [{"lower": [float(v) for v in b.lower], "upper": [float(v) for v in b.upper],
+                       "proven": bool(b.proven), "morse_index": None if b.morse_index is None else int(b.morse_index),
+                       "morse_proven": bool(b.morse_proven), "reason": b.reason} for b in c.boxes]}
+
+
 def equilibria_out(eqs) -> dict[str, Any]:
     return {**outcome(eqs), "equilibria": [equilibrium_out(e) for e in eqs], "method": eqs.method,
             "certified": eqs.certified,
-            "paths": eqs.paths, "failed_paths": eqs.failed_paths}
+            "paths": eqs.paths, "failed_paths": eqs.failed_paths, "certificate": certificate_out(eqs.certificate)}
 
 
 def buckling_out(bk) -> dict[str, Any]:
