@@ -88,6 +88,10 @@ def _cmd_equilibria(args, m):
     how = f"method {eqs.method}, " + ("certified complete" if eqs.certified else "not certified")
     if eqs.paths:
         how += f" ({eqs.paths} homotopy paths, {eqs.failed_paths} failed)"
+    if eqs.certificate is not None:
+        c, k = eqs.certificate, len(eqs.certificate.boxes)
+        how += (f"; interval proofs (Krawczyk, ball arithmetic): {sum(b.proven for b in c.boxes)}/{k} equilibria, "
+                f"{sum(b.morse_proven for b in c.boxes)}/{k} Morse indices")
     return (eqs.to_dict,
             "\n".join([f"All equilibria at dx = {args.dx:g}, dy = {args.dy:g}: {len(eqs)} ({how})",
                        *(eq_table(eqs) if len(eqs) else [eqs.message])]))
