@@ -208,3 +208,24 @@ def test_a_subset_is_restated_and_the_json_form():
         prove_equilibria(M3, X3[:, :M3.n], X3[:, M3.n:])               # displacement control needs the target
     with pytest.raises(ValueError):
         prove_root(M3, X3[0])                                          # neither target nor force
+
+
+def test_the_equations_are_the_reference_models():
+    """f and f' (float arithmetic of the same code the balls run) against the reference model's gradient, Hessian,
+    tip and Jacobian at random points of a heterogeneous chain with asymmetric preloads."""
+    from tensegrity_opt.numerics.krawczyk import _float_system
+
+    rng = np.random.default_rng(7)
+    m = to.Manipulator([to.Segment(0.5, 1.0, (1.2, 0.8), (1.0, 1.3)), to.Segment(0.7, 1.3, 2.0, 0.9),
+                        to.Segment(0.3, 0.8, (0.6, 1.5), (0.7, 0.5)), to.Segment(0.6, 1.1, 1.0, 1.6)])
+    c = _chain(m)
+    target = m.target(0.7, -0.4)
+    for _ in range(5):
+        q, F = rng.uniform(-1.0, 1.0, m.n) * m.joint_limits, rng.uniform(-1.0, 1.0, 2)
+        f, fp = _float_system(m, np.r_[q, F], target, None)
+        J = c.jac(q)
+        assert np.allclose(f, np.r_[c.lagrangian_grad(q, F), c.tip(q) - target], atol=1e-12)
+        assert np.allclose(fp[:m.n, :m.n], c.lagrangian_hess(q, F), atol=1e-12)
+        assert np.allclose(fp[:m.n, m.n:], -J.T, atol=1e-12) and np.allclose(fp[m.n:, :m.n], J, atol=1e-12)
+        g, H = _float_system(m, q, None, F)
+        assert np.allclose(g, c.lagrangian_grad(q, F), atol=1e-12) and np.allclose(H, fp[:m.n, :m.n])
