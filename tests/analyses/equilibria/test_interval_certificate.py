@@ -97,10 +97,23 @@ def test_a_failed_interval_proof_uncertifies_the_set(monkeypatch):
 
 @needs_phc
 def test_live_homotopy_sets_are_proven():
+    """A live run of each control: every equilibrium proven (boxes against the reference model); every root the
+    homotopy classes non-real proven non-real (complex Krawczyk, a box off the real set), the real ones never; the
+    real roots inside the range are exactly the set's equilibria."""
     target = TRIPLE.target(0.8, 0.3)
     eqs = to.find_equilibria(TRIPLE, 0.8, 0.3, method="homotopy")
     assert eqs.certified and len(eqs) >= 4
     _check(eqs, TRIPLE, target)
+    sol = homotopy.solve_homotopy(TRIPLE, target)
+    X = krawczyk.homotopy_unknowns(TRIPLE, sol.roots)
+    real = np.max(np.abs(X.imag), axis=1) < 1e-9
+    assert 0 < real.sum() < len(X)
+    assert [krawczyk.prove_nonreal(TRIPLE, x, target=target) for x in X] == (~real).tolist()
+    inside = [x.real for x in X[real] if TRIPLE.in_range(x.real[:TRIPLE.n])]
+    assert len(inside) == len(eqs)
+    for e in eqs:
+        assert min(np.max(np.abs(x[:TRIPLE.n] - e.q)) for x in inside) < 1e-8
+
     loaded = to.find_equilibria_under_force(TRIPLE, -0.1, 0.05, method="homotopy")
     assert loaded.certified and loaded.certificate.control == "force" and len(loaded) >= 4
     _check(loaded, TRIPLE)
@@ -110,23 +123,6 @@ def test_live_homotopy_sets_are_proven():
     stable = to.find_equilibria_under_force(TRIPLE, -0.1, 0.05, method="homotopy", stable_only=True)
     assert 0 < len(stable) < len(loaded) and len(stable.certificate.boxes) == len(stable)
     _check(stable, TRIPLE)
-
-
-@needs_phc
-def test_the_homotopys_non_real_roots_are_proven_non_real():
-    """Every root of a live run: those the homotopy classes non-real are proven non-real (complex Krawczyk, a box
-    off the real set), the real ones never; and the real ones inside the range are exactly the set's equilibria."""
-    target = TRIPLE.target(0.8, 0.3)
-    sol = homotopy.solve_homotopy(TRIPLE, target)
-    X = krawczyk.homotopy_unknowns(TRIPLE, sol.roots)
-    real = np.max(np.abs(X.imag), axis=1) < 1e-9
-    assert 0 < real.sum() < len(X)
-    assert [krawczyk.prove_nonreal(TRIPLE, x, target=target) for x in X] == (~real).tolist()
-    inside = [x.real for x in X[real] if TRIPLE.in_range(x.real[:TRIPLE.n])]
-    eqs = to.find_equilibria(TRIPLE, 0.8, 0.3, method="homotopy")
-    assert len(inside) == len(eqs)
-    for e in eqs:
-        assert min(np.max(np.abs(x[:TRIPLE.n] - e.q)) for x in inside) < 1e-8
 
 
 def test_a_single_segments_roots_are_real_and_not_proven_non_real():
