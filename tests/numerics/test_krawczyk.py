@@ -229,3 +229,15 @@ def test_the_equations_are_the_reference_models():
         assert np.allclose(fp[:m.n, m.n:], -J.T, atol=1e-12) and np.allclose(fp[m.n:, :m.n], J, atol=1e-12)
         g, H = _float_system(m, q, None, F)
         assert np.allclose(g, c.lagrangian_grad(q, F), atol=1e-12) and np.allclose(H, fp[:m.n, :m.n])
+
+
+def test_a_float_morse_index_the_proof_contradicts_is_reported():
+    """A floating-point index set against the proof (here deliberately wrong for one equilibrium): that box is not
+    Morse-proven, the certificate ``roots_proven`` (a success: the roots stand), its message says so."""
+    true = [e["morse_index"] for e in CASE["equilibria"]]
+    wrong = list(true)
+    wrong[0] += 1
+    cert = prove_equilibria(M3, X3[:, :M3.n], X3[:, M3.n:], target=T3, float_morse=wrong)
+    assert (cert.status, cert.success, cert.roots_proven, cert.morse_proven) == ("roots_proven", True, True, False)
+    assert cert.boxes[0].morse_index == true[0] and not cert.boxes[0].morse_proven
+    assert "1 proven Morse indices differ from the floating-point ones" in cert.message
