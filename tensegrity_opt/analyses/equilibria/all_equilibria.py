@@ -19,8 +19,10 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted read-only sequen
     equilibrium in its box, real, inside the range, the boxes pairwise disjoint; its Morse index proven where
     decidable), the proofs in :attr:`EquilibriumSet.certificate`. ``status="certified"`` when every path ended,
     every real root polished and every equilibrium proven, else ``"uncertified"``. Which complex roots are real
-    is decided in floating point (their distance from the real set against a tolerance): the interval proofs
-    cover the returned equilibria, not the roots classed non-real.
+    is decided in floating point (their distance from the real set against a tolerance); the certificate also
+    proves the roots classed non-real within ``krawczyk.NEAR_REAL`` of the real set non-real, and the real roots
+    within it beyond the range beyond it (counted there; the farther ones are classed in floating point, by that
+    margin; measured: non-real roots lie 0.04 or more from the real set).
 
 Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest
 classified by the Morse index of the reduced Hessian and sorted by energy.
