@@ -90,6 +90,9 @@ from .imperfection_sensitivity_out_statuses_item import ImperfectionSensitivityO
 from .imperfection_sensitivity_request import ImperfectionSensitivityRequest
 from .imperfection_sensitivity_request_boundary import ImperfectionSensitivityRequestBoundary
 from .imperfection_sensitivity_request_imperfection import ImperfectionSensitivityRequestImperfection
+from .interval_certificate_out import IntervalCertificateOut
+from .interval_certificate_out_control import IntervalCertificateOutControl
+from .interval_certificate_out_status import IntervalCertificateOutStatus
 from .job_created import JobCreated
 from .job_created_analysis import JobCreatedAnalysis
 from .job_created_status import JobCreatedStatus
@@ -199,6 +202,8 @@ from .ready_status import ReadyStatus
 from .rest_configurations_request import RestConfigurationsRequest
 from .rest_configurations_request_method import RestConfigurationsRequestMethod
 from .rest_length_bounds_in import RestLengthBoundsIn
+from .root_box_out import RootBoxOut
+from .root_box_out_reason import RootBoxOutReason
 from .segment_in import SegmentIn
 from .segment_out import SegmentOut
 from .segment_torque_out import SegmentTorqueOut
@@ -339,6 +344,9 @@ __all__ = (
     "ImperfectionSensitivityRequest",
     "ImperfectionSensitivityRequestBoundary",
     "ImperfectionSensitivityRequestImperfection",
+    "IntervalCertificateOut",
+    "IntervalCertificateOutControl",
+    "IntervalCertificateOutStatus",
     "JobCreated",
     "JobCreatedAnalysis",
     "JobCreatedStatus",
@@ -448,6 +456,8 @@ __all__ = (
     "RestConfigurationsRequest",
     "RestConfigurationsRequestMethod",
     "RestLengthBoundsIn",
+    "RootBoxOut",
+    "RootBoxOutReason",
     "SegmentedManipulatorIn",
     "SegmentIn",
     "SegmentOut",
