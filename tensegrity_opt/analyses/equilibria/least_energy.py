@@ -258,8 +258,8 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
                           fallback: bool = True) -> tuple[list[Equilibrium], int]:
     """:func:`search_stable` by Newton from every start: only converged points are looked at, only
     the distinct ones are classified (the first of each group of coinciding points, in the order of
-    the starts; with ``least`` and more starts than one kernel call takes, the lowest-energy one of each
-    group, compared only up to the least stable energy), only the stable ones become objects (plain
+    the starts; with ``least`` and more starts than one kernel call takes, only the rows up to the least
+    stable energy are compared), only the stable ones become objects (plain
     floats: a global search has ~10-20 starts)."""
     # ``fallback=False`` (multistable chains under method "auto": hundreds of well starts, IPOPT's
     # descents after): a start the compiled Newton did not settle is dropped rather than run again by
@@ -298,19 +298,27 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     e_max = math.inf
     ts = m.torque_scale
     Q = b.q
-    seen = np.empty((len(idx) if dedupe else 0, m.n))   # the points classified (when deduplicated here)
-    k = 0
-    for j in (sorted(idx, key=energy.__getitem__) if least else idx):
+    order = sorted(idx, key=energy.__getitem__) if least else idx
+    if dedupe:
+        # the thousands of starts of a multistable chain converge to a few points: only the rows up to the least
+        # stable energy are compared, each with the points classified so far, and a new point stands for its
+        # group by the group's first row in the order of the starts (the rule of tensegrity_opt.numerics.distinct:
+        # the rows of a group converged to one point, their energies within rounding; searched near its energy)
+        rows = np.asarray(order, dtype=int)
+        e_rows = np.asarray([energy[j] for j in order])
+        seen = np.empty((len(order), m.n))
+        k = 0
+    for j in order:
         if energy[j] > e_max:
             break                                   # beyond the least stable energy and its ties
         if dedupe:
-            # the same point as one classified already (the rule of tensegrity_opt.numerics.distinct; the
-            # lowest-energy row of each group stands for it): the thousands of starts of a multistable chain
-            # converge to a few points, and only those below the least stable energy are compared
             if k and bool(same(seen[:k], Q[j]).any()):
                 continue
             seen[k] = Q[j]
             k += 1
+            w = 1e-9 * max(ts, abs(energy[j]))
+            near = rows[np.searchsorted(e_rows, energy[j] - w, "left"):np.searchsorted(e_rows, energy[j] + w, "right")]
+            j = int(near[same(Q[near], Q[j])].min())
         inertia, e, tip = (known[j] if j in known else
                            (inertia_of_reduced(b.reduced_hessian[j], scale=ts), energy[j], b.tip[j]))
         if inertia.stable:
