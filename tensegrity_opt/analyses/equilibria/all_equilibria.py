@@ -8,7 +8,8 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted read-only sequen
     solved by damped Newton (CasADi residual and exact Jacobian) from many seeds: every buckling
     mode with both signs at several amplitudes, random starts, the wells of bistable segments
     (:func:`tensegrity_opt.analyses.equilibria.seeds.well_seeds`), uniform random configurations projected
-    onto the tip constraint, mirror images, and IPOPT's minima. Complete *in practice* for n <= 5: measured
+    onto the tip constraint, mirror images, and IPOPT's minima (chains of up to 4 monotonic segments: only where
+    Newton found nothing, ``MONOTONIC_NO_DESCENT_MAX_N``). Complete *in practice* for n <= 5: measured
     against the homotopy on 104 random multistable chains (``tests/analyses/equilibria/test_completeness.py``);
     for n >= 6 against an independent brute force (``benchmarks/search_check.py``), where it misses some;
     never certified (``status="searched"``).
