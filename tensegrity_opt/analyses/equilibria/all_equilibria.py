@@ -8,7 +8,8 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted read-only sequen
     solved by damped Newton (CasADi residual and exact Jacobian) from many seeds: every buckling
     mode with both signs at several amplitudes, random starts, the wells of bistable segments
     (:func:`tensegrity_opt.analyses.equilibria.seeds.well_seeds`), uniform random configurations projected
-    onto the tip constraint, mirror images, and IPOPT's minima. Complete *in practice* for n <= 5: measured
+    onto the tip constraint, mirror images, and IPOPT's minima (chains of up to 4 monotonic segments: only where
+    Newton found nothing, ``MONOTONIC_NO_DESCENT_MAX_N``). Complete *in practice* for n <= 5: measured
     against the homotopy on 104 random multistable chains (``tests/analyses/equilibria/test_completeness.py``);
     for n >= 6 against an independent brute force (``benchmarks/search_check.py``), where it misses some;
     never certified (``status="searched"``).
@@ -70,6 +71,16 @@ LONG_PER_JOINT = 20
 SHORT_N = 6
 SHORT_PER_JOINT = 500
 PROJECTED_SEED = 4242
+#: Chains of monotonic segments (condition (4)) of up to this many segments skip IPOPT's descents from the mode
+#: seeds in ``find_equilibria`` when the Newton search found equilibria (4-6 IPOPT solves, ~3 ms each: half the
+#: time of the paper's chain). Measured on random monotonic chains (uniform, heterogeneous, asymmetric preloads;
+#: dx up to 0.8 of the length, dy != 0 in 70 %): for n = 2..4 the descents added nothing (328 chains and targets,
+#: 840 equilibria, the 26 empty sets the same; none either among the n <= 4 ones of 577 cases n = 2..8), and
+#: the search without them equals the certified homotopy on 50 random monotonic chains n = 2..4 (87 equilibria;
+#: ``tests/analyses/equilibria/test_completeness.py`` keeps two). On longer chains they added 1 stable
+#: equilibrium of 3213 (n = 8, a large deflection): those keep them. Where Newton finds nothing they always
+#: run: they tell an empty set from an unreachable target.
+MONOTONIC_NO_DESCENT_MAX_N = 4
 #: An IPOPT descent pressed against a joint limit counts as reaching the target (the evidence that the target is
 #: reachable inside the range when no equilibrium lies inside it) when its tip is within this fraction of the
 #: chain's straight length of the target.
@@ -319,9 +330,11 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         results += [batch.result(j) for j in _accepted_rows(m, batch, target, dedupe_tol)]
         statuses["Newton (projected starts)"] = more.shape[0]
     # IPOPT's minima from the mode seeds: a cheap guarantee that the stable ones are present, and where none
-    # lies inside the range, the evidence that the target is reachable (or not) inside it
+    # lies inside the range, the evidence that the target is reachable (or not) inside it; short monotonic chains
+    # only where Newton found nothing (MONOTONIC_NO_DESCENT_MAX_N: there the descents never added an equilibrium)
     descents = []
-    for s in seeds(m, dx, dy, max_modes=2, n_random=0):
+    descend = not (results and m.monotonic and m.n <= MONOTONIC_NO_DESCENT_MAX_N)
+    for s in (seeds(m, dx, dy, max_modes=2, n_random=0) if descend else ()):
         res = local_equilibrium(m, target, s.q, minimize=True)
         descents.append(res)
         if is_equilibrium(m, res, target):

@@ -258,7 +258,9 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
                           fallback: bool = True) -> tuple[list[Equilibrium], int]:
     """:func:`search_stable` by Newton from every start: only converged points are looked at, only
     the distinct ones are classified (the first of each group of coinciding points, in the order of
-    the starts), only the stable ones become objects (plain floats: a global search has ~10-20 starts)."""
+    the starts; with ``least`` and more starts than one kernel call takes, only the rows up to the least
+    stable energy are compared), only the stable ones become objects (plain
+    floats: a global search has ~10-20 starts)."""
     # ``fallback=False`` (multistable chains under method "auto": hundreds of well starts, IPOPT's
     # descents after): a start the compiled Newton did not settle is dropped rather than run again by
     # the Python method (~3 ms each)
@@ -268,6 +270,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
         # one kernel call settled every start (all converged, no Python-method row) and compared the
         # converged points inside the range (the rule of tensegrity_opt.numerics.distinct)
         idx = np.flatnonzero(b.distinct).tolist()
+        dedupe = False
         bound = int(np.count_nonzero(b.on_bound))
         _count(statuses, "Newton_Converged", False, True, len(energy) - bound)
         _count(statuses, "Newton_Converged", True, False, bound)
@@ -279,7 +282,12 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
             good[j] = is_equilibrium(m, b.result(j), target, check_residual=False)   # a Python-method row
         for (status, bound, ok), count in Counter(zip(b.status, on_bound, good)).items():
             _count(statuses, status, bound, ok, count)
-        idx = distinct_indices(b.q, [j for j, ok in enumerate(good) if ok])
+        idx = [j for j, ok in enumerate(good) if ok]
+        # ``least``: only the points up to the least stable energy are looked at, deduplicated as they are
+        # met (below); the others: every distinct one
+        dedupe = least
+        if not least:
+            idx = distinct_indices(b.q, idx)
     known = {}                                      # Python-method rows: classified from the model
     for j in idx:
         if energy[j] != energy[j]:
@@ -289,9 +297,28 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
     n_unstable = 0
     e_max = math.inf
     ts = m.torque_scale
-    for j in (sorted(idx, key=energy.__getitem__) if least else idx):
+    Q = b.q
+    order = sorted(idx, key=energy.__getitem__) if least else idx
+    if dedupe:
+        # the thousands of starts of a multistable chain converge to a few points: only the rows up to the least
+        # stable energy are compared, each with the points classified so far, and a new point stands for its
+        # group by the group's first row in the order of the starts (the rule of tensegrity_opt.numerics.distinct:
+        # the rows of a group converged to one point, their energies within rounding; searched near its energy)
+        rows = np.asarray(order, dtype=int)
+        e_rows = np.asarray([energy[j] for j in order])
+        seen = np.empty((len(order), m.n))
+        k = 0
+    for j in order:
         if energy[j] > e_max:
             break                                   # beyond the least stable energy and its ties
+        if dedupe:
+            if k and bool(same(seen[:k], Q[j]).any()):
+                continue
+            seen[k] = Q[j]
+            k += 1
+            w = 1e-9 * max(ts, abs(energy[j]))
+            near = rows[np.searchsorted(e_rows, energy[j] - w, "left"):np.searchsorted(e_rows, energy[j] + w, "right")]
+            j = int(near[same(Q[near], Q[j])].min())
         inertia, e, tip = (known[j] if j in known else
                            (inertia_of_reduced(b.reduced_hessian[j], scale=ts), energy[j], b.tip[j]))
         if inertia.stable:

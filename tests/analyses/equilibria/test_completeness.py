@@ -156,6 +156,48 @@ def test_monotonic_n6_maxima_are_found():
         assert _verified_morse(chain, chain.target(0.5), e) == 4
 
 
+
+def _monotonic_chain(rng, n):
+    """A random chain of monotonic segments (condition (4) with margin; asymmetric preloads in half of them)."""
+    segs = []
+    for _ in range(n):
+        a, b = rng.uniform(0.4, 0.8), rng.uniform(0.8, 1.2)
+        base = max(2.0 * (b * b - a * a) / b, 0.0)
+        if rng.random() < 0.5:
+            segs.append(to.Segment(a, b, (rng.uniform(0.5, 2), rng.uniform(0.5, 2)),
+                                   (base + rng.uniform(0.05, 1.2), base + rng.uniform(0.05, 1.2))))
+        else:
+            segs.append(to.Segment(a, b, rng.uniform(0.5, 2), base + rng.uniform(0.05, 1.2)))
+    return to.Manipulator(segs)
+
+
+@needs_phc
+@pytest.mark.parametrize("seed, n", [(0, 3), (2, 2)])
+def test_search_equals_homotopy_on_monotonic_chains(seed, n):
+    """Short monotonic chains (whose search skips IPOPT's descents when Newton finds equilibria:
+    ``MONOTONIC_NO_DESCENT_MAX_N``) at large deflections, dy != 0: the search's set is the certified homotopy's,
+    with the same Morse indices."""
+    rng = np.random.default_rng(700 + seed)
+    while True:
+        m = _monotonic_chain(rng, n)
+        L = m.straight_length
+        dx, dy = rng.uniform(0.3, 0.7) * L, rng.uniform(-0.3, 0.3) * L
+        if not m.monotonic:
+            continue
+        try:
+            m.check_reachable(dx, dy)
+        except ValueError:
+            continue
+        hom = to.find_equilibria(m, dx, dy, method="homotopy")
+        if len(hom):
+            break
+    assert hom.certified
+    search = to.find_equilibria(m, dx, dy)
+    assert len(search) == len(hom)
+    for e in hom:
+        f = min(search, key=lambda f: np.max(np.abs(e.q - f.q)))
+        assert np.max(np.abs(e.q - f.q)) < 1e-8 and f.morse_index == e.morse_index
+
 @pytest.mark.slow
 @needs_phc
 def test_bistable_n4_least_energy_vs_homotopy():

@@ -285,3 +285,38 @@ def test_large_deflection_c_shape_is_found(rows, dx):
         assert eq.stable and eq.energy == pytest.approx(e_ref, rel=1e-9), method
         assert eq.shape == "C"
         np.testing.assert_allclose(np.abs(eq.q), np.abs(q_ref), atol=1e-6)
+
+
+def _bistable_chains():
+    """Multistable chains of three families (uniform, heterogeneous, asymmetric preloads), fixed seed."""
+    rng = np.random.default_rng(2929)
+    segs = []
+    for _ in range(5):
+        a, b, k = rng.uniform(0.45, 0.75), rng.uniform(0.85, 1.15), rng.uniform(0.6, 1.8)
+        segs.append(Segment(a, b, k, rng.uniform(0.4, 0.85) * 2.0 * (b * b - a * a) / b))
+    asym = [Segment(s.a, s.b, (s.k1, 1.3 * s.k1), (s.L1_0, 0.9 * s.L1_0)) for s in segs[:4]]
+    return [Manipulator.uniform(6, a=0.6, b=1.0, k=1.0, L0=1.2), Manipulator(segs), Manipulator(asym)]
+
+
+@pytest.mark.parametrize("m", _bistable_chains(), ids=["uniform6", "heterogeneous5", "asymmetric4"])
+def test_least_energy_search_on_a_large_sample_keeps_the_full_search_pick(m):
+    """With thousands of starts (several kernel calls: the rows are compared in Python) search_stable(least=True)
+    deduplicates only the points it classifies, in order of energy; its answer is exactly the full search's
+    (every converged start deduplicated first, every distinct point classified) cut to the ties of the least
+    energy (the same rows' numbers, in the same order), and it never counts more unstable points."""
+    from tensegrity_opt.analyses.equilibria.least_energy import search_stable
+    from tensegrity_opt.analyses.equilibria.seeds import projected_sample, well_seeds
+
+    L = m.straight_length
+    for dx, dy in ((0.25 * L, 0.0), (0.4 * L, 0.12 * L), (0.15 * L, -0.2 * L)):
+        target = m.target(dx, dy)
+        starts = np.vstack([well_seeds(m, dx, dy, hilltops=False), projected_sample(m, target, 150 * m.n, 5)])
+        assert starts.shape[0] > 64
+        full, n_full = search_stable(m, target, starts, {}, minimize=False)
+        least, n_least = search_stable(m, target, starts, {}, minimize=False, least=True)
+        assert full, (dx, dy)
+        e_min = min(e.energy for e in full)
+        ties = [e for e in full if e.energy <= e_min + 1e-9 * max(1.0, abs(e_min))]
+        assert [(e.q.tolist(), e.energy, e.solver.iterations) for e in least] == \
+               [(e.q.tolist(), e.energy, e.solver.iterations) for e in ties], (dx, dy)
+        assert n_least <= n_full
