@@ -42,15 +42,16 @@ from .equilibrium import (
     one_segment_equilibrium,
     straight_equilibrium,
 )
-from .seeds import projected_sample, seed_starts, well_seeds
+from .lower_bound import energy_lower_bound
+from .seeds import projected_sample, ranked_well_seeds, seed_starts, well_seeds
 from .stability import inertia_of_reduced
 
-__all__ = ["solve_equilibrium", "search_stable", "WELLS_MAX"]
+__all__ = ["solve_equilibrium", "search_stable", "certify_least", "WELLS_MAX"]
 
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
                       method: str = "auto", n_random: int | None = None,
-                      max_modes: int | None = None) -> Equilibrium:
+                      max_modes: int | None = None, certify: bool = False) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -90,6 +91,12 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         for chains of up to 64 segments, plus the two arc seeds of large deflections
         (:func:`tensegrity_opt.analyses.equilibria.seeds.arc_seeds`); 0 and 2 (no arcs) for longer ones, whose
         least-energy equilibria lie on the lowest modes' branches (each seed costs O(n) per iteration).
+    certify : bool
+        Prove the answer least: a rigorous lower bound on the energy of every configuration meeting the tip
+        constraint inside the closed joint range (:func:`~.lower_bound.energy_lower_bound`: pattern boxes,
+        the Lagrangian bound per box, branch and bound), carried as ``certificate`` (bound, gap, tolerance);
+        ``status`` ``"certified"`` when the gap is within the tolerance. When the bound finds a lower
+        configuration than the search's, it is polished by Newton and returned instead. Not with ``local``.
 
     Returns
     -------
@@ -107,6 +114,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         (``RuntimeError``) when no solve converged to a stable equilibrium inside the
         physical range; ``status`` lists the solver statuses met.
     """
+    if certify and not local:
+        best = solve_equilibrium(m, dx, dy, q0=q0, method=method, n_random=n_random, max_modes=max_modes)
+        return certify_least(m, dx, dy, best)
     target = m.check_reachable(dx, dy)
     q0 = check_q0(m, q0)
     if local and q0 is None:
@@ -143,6 +153,8 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         # the wells of the bistable segments (one per segment, every combination up to WELLS_MAX),
         # projected onto the tip constraint: Newton from each; IPOPT's descent from the lowest ones
         wells = well_seeds(m, dx, dy, hilltops=False, cap=WELLS_MAX)
+        # more patterns than WELLS_MAX: the ones whose tip the chain reaches with the least elastic work first
+        wells = np.vstack([ranked_well_seeds(m, dx, dy, RANKED_WELLS), wells])
         if wells.shape[0]:
             starts = np.vstack([starts, wells])
             order = np.argsort([m.energy(q) for q in wells], kind="stable")[:WELL_DESCENTS]
@@ -198,6 +210,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
 #: also descends from.
 WELLS_MAX = 256
 WELL_DESCENTS = 8
+#: Chains with more well patterns than WELLS_MAX also start Newton from this many patterns ranked by the
+#: elastic work of moving their tip to the target (:func:`.seeds.ranked_well_seeds`).
+RANKED_WELLS = 64
 #: Multistable chains with compiled kernels (n <= KERNEL_MAX) also start Newton from this many uniform
 #: random configurations per joint, projected onto the tip constraint (methods "auto" and "ipopt"; the
 #: bounded "newton" method keeps the seeds and wells only) (an n = 7 chain's least-energy
@@ -205,6 +220,24 @@ WELL_DESCENTS = 8
 #: random projected starts).
 LEAST_PROJECTED_PER_JOINT = 500
 LEAST_PROJECTED_SEED = 9090
+
+
+def certify_least(m: Manipulator, dx: float, dy: float, best: Equilibrium) -> Equilibrium:
+    """``best`` (the search's least-energy stable equilibrium) with the certificate of
+    :func:`~.lower_bound.energy_lower_bound`; a lower configuration the bound found replaces it (Newton-polished
+    and classified: kept when stable and lower)."""
+    from dataclasses import replace
+
+    cert = energy_lower_bound(m, dx, dy, best.q, force=best.force)
+    if cert.improved:
+        target = m.target(dx, dy)
+        res = local_equilibrium(m, target, cert.q, cert.force)
+        if is_equilibrium(m, res, target):
+            cand = make_equilibrium(m, res, constrained=True)
+            if cand.stable and cand.energy < best.energy:
+                best = cand
+    status = "certified" if cert.certified and cert.energy >= best.energy - cert.tolerance else best.status
+    return replace(best, certificate=cert, status=status)
 
 
 def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None) -> Equilibrium:

@@ -32,7 +32,7 @@ from ...numerics import distinct_rows
 from .buckling import critical_force, quad_G, tip_slope
 
 __all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds", "well_seeds", "project_to_target",
-           "projected_sample"]
+           "projected_sample", "ranked_well_seeds"]
 
 
 @dataclass(frozen=True)
@@ -266,3 +266,60 @@ def well_seeds(m: Manipulator, dx: float, dy: float, *, hilltops: bool = True, c
     P = _pattern_matrix(m, hilltops, cap, rng_seed)
     Q = project_to_target(m, P, m.target(dx, dy))
     return Q[distinct_rows(Q, dedupe)]
+
+
+#: Most well patterns :func:`ranked_well_seeds` ranks exhaustively (vectorised in chunks); beyond, none.
+RANK_PATTERNS_MAX = 1 << 20
+
+
+def ranked_well_seeds(m: Manipulator, dx: float, dy: float, count: int, *, chunk: int = 1 << 14) -> np.ndarray:
+    """The ``count`` well patterns (one unloaded well per segment) that reach the target with the least
+    elastic work, projected onto the tip constraint: ``(k, n)``, ``k <= count``.
+
+    Each pattern ``w`` is ranked by ``E(w) + 1/2 d^T C^-1 d``: its energy plus the work of moving its tip by
+    ``d = target - tip(w)`` through the linear compliance ``C = J diag(1/E_j''(w_j)) J^T`` (the least-energy
+    configuration of a chain of bistable segments near its wells is a pattern whose tip lies close to the
+    target in that metric; there are ``2^n`` patterns and the default search tries at most ``WELLS_MAX``).
+    Every pattern while there are at most :data:`RANK_PATTERNS_MAX` (an n = 20 chain: ~0.3 s); empty when
+    there are more, when the chain is monotonic or ``n < 2``."""
+    if m.n < 2 or m.monotonic or count <= 0:
+        return np.zeros((0, m.n))
+    wells = [np.asarray(s.critical_angles()[0], dtype=float) for s in m.segments]
+    wells = [w if w.size else np.zeros(1) for w in wells]
+    sizes = np.array([w.size for w in wells])
+    total = int(np.prod(sizes.astype(float)))
+    if total > RANK_PATTERNS_MAX or total <= 1:
+        return np.zeros((0, m.n))
+    pmax = int(sizes.max())
+    W = np.array([np.pad(w, (0, pmax - w.size), mode="edge") for w in wells])           # (n, pmax)
+    Ew = np.array([m.segments[j].energy(W[j]) for j in range(m.n)])
+    Kw = np.array([np.maximum(-m.segments[j].dtorque(W[j]), 1e-12 * m.torque_scale) for j in range(m.n)])
+    target = m.target(dx, dy)
+    l = m.link_lengths
+    cols = np.arange(m.n)
+    best_score = np.zeros(0)
+    best_q = np.zeros((0, m.n))
+    for start in range(0, total, chunk):
+        ids = np.arange(start, min(total, start + chunk))
+        digits = np.empty((ids.size, m.n), dtype=np.int64)
+        rem = ids
+        for j in range(m.n - 1, -1, -1):
+            rem, digits[:, j] = np.divmod(rem, sizes[j])
+        Q = W[cols, digits]
+        phi = np.cumsum(Q, axis=1)
+        c, s = np.cos(phi) * l, np.sin(phi) * l
+        d = np.stack([target[0] - m.base_length - c.sum(axis=1), target[1] - s.sum(axis=1)], axis=1)
+        Jx = -np.cumsum(s[:, ::-1], axis=1)[:, ::-1]
+        Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
+        ik = 1.0 / Kw[cols, digits]
+        cxx, cxy, cyy = (Jx * Jx * ik).sum(axis=1), (Jx * Jy * ik).sum(axis=1), (Jy * Jy * ik).sum(axis=1)
+        det = np.maximum(cxx * cyy - cxy * cxy, 1e-300)
+        work = 0.5 * (cyy * d[:, 0] ** 2 - 2 * cxy * d[:, 0] * d[:, 1] + cxx * d[:, 1] ** 2) / det
+        score = Ew[cols, digits].sum(axis=1) + work
+        keep = np.argsort(score)[:count]
+        best_score = np.concatenate([best_score, score[keep]])
+        best_q = np.vstack([best_q, Q[keep]])
+        order = np.argsort(best_score, kind="stable")[:count]
+        best_score, best_q = best_score[order], best_q[order]
+    Qp = project_to_target(m, best_q, target)
+    return Qp[distinct_rows(Qp, 1e-3)] if Qp.shape[0] else Qp
