@@ -54,7 +54,7 @@ from ...outcome import Outcome
 from ...serialize import number
 
 __all__ = ["EnergyBound", "energy_lower_bound", "bound_tolerance", "segment_pieces", "TOL_REL", "TOL_ABS",
-           "MAX_PATTERNS", "MAX_BOXES"]
+           "MAX_PATTERNS", "MAX_BOXES", "MAX_SECONDS"]
 
 #: The certificate's tolerance: ``TOL_REL |E| + TOL_ABS max(k c^2)`` (energy units).
 TOL_REL = 1e-7
@@ -63,6 +63,8 @@ TOL_ABS = 1e-9
 MAX_PATTERNS = 1 << 21
 #: Most boxes bounded in all (patterns included) before the branch and bound stops (open).
 MAX_BOXES = 1 << 16
+#: Wall-time budget (s) of the refinement.
+MAX_SECONDS = 10.0
 #: Boxes bounded at once (numpy arrays of CHUNK x n).
 CHUNK = 1 << 15
 #: Relative rounding margin subtracted from every box bound (times the magnitude of its terms).
@@ -428,6 +430,26 @@ class _Chain:
             best_lam[up] = lam[up]
         return best, best_lam
 
+    def infeasible(self, lo, hi, C, directions: int = 8) -> np.ndarray:
+        """Boxes proven to hold no configuration with the tip at the target: along some direction ``v`` the
+        target's projection lies beyond ``max v . tip`` over the box, bounded link by link (each link's angle
+        ``phi_j`` ranges over the interval of the partial sums of the joint intervals)."""
+        Plo, Phi = np.cumsum(lo, axis=1), np.cumsum(hi, axis=1)
+        tip = self.kinematics(C)[2]
+        thetas = [np.full(lo.shape[0], 2 * math.pi * k / directions) for k in range(directions)]
+        dd = self.T - tip
+        thetas.append(np.arctan2(dd[:, 1], dd[:, 0]))
+        out = np.zeros(lo.shape[0], dtype=bool)
+        reach = float(self.l.sum()) + self.base + float(np.abs(self.T).sum())
+        for th in thetas:
+            a, b = Plo - th[:, None], Phi - th[:, None]
+            k = np.ceil(a / (2 * math.pi))
+            top = np.where(2 * math.pi * k <= b, 1.0, np.maximum(np.cos(a), np.cos(b)))
+            vmax = self.base * np.cos(th) + (self.l * top).sum(axis=1)
+            vT = self.T[0] * np.cos(th) + self.T[1] * np.sin(th)
+            out |= vT > vmax + 1e-12 * reach
+        return out
+
     # ------------------------------------------------------------------ batched Newton on the KKT system
     def newton(self, Q0: np.ndarray, iters: int = 40, tol: float = 1e-12):
         """Newton on ``grad E = J^T lambda``, ``tip = T`` from each row (projected onto the tip first); the
@@ -481,8 +503,8 @@ class _Chain:
 
 
 def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any = None, *,
-                       force: Any = None, max_patterns: int = MAX_PATTERNS, max_boxes: int = MAX_BOXES
-                       ) -> EnergyBound:
+                       force: Any = None, max_patterns: int = MAX_PATTERNS, max_boxes: int = MAX_BOXES,
+                       max_seconds: float = MAX_SECONDS) -> EnergyBound:
     """A rigorous lower bound on ``E(q)`` over every ``q`` of the closed joint range with the tip at the target
     of ``(dx, dy)``, and the best feasible configuration known (method: the module's docstring).
 
@@ -498,6 +520,9 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         ``q_best``'s tip force (the first multiplier tried in each box).
     max_patterns, max_boxes : int
         Limits of the enumeration (beyond them ``status`` is ``"open"``).
+    max_seconds : float
+        Wall-time budget of the refinement (checked between rounds; the pattern sweep always completes):
+        when spent, ``status`` is ``"open"`` with the bound reached.
 
     Returns
     -------
@@ -520,7 +545,6 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
     improved = False
     counts = {"patterns": 0, "boxes": 0, "newton": 0}
     emin_cache: dict = {}
-    reason = ""
 
     def result(bound: float, status: str, why: str = "") -> EnergyBound:
         if inc_q is None:
@@ -571,6 +595,9 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         counts["patterns"] += ids.size
         counts["boxes"] += ids.size
         bnd, lam = ch.bound(lo, hi, C, np.broadcast_to(inc_f, (ids.size, 2)), curv=K)
+        op = bnd < inc_e - 0.5 * tol
+        if op.any():
+            bnd[np.flatnonzero(op)[ch.infeasible(lo[op], hi[op], C[op])]] = math.inf
         shut = bnd >= inc_e - 0.5 * tol
         if shut.any():
             low = min(low, float(bnd[shut].min()))
@@ -595,13 +622,14 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
             break
         if counts["boxes"] + 2 * lo.shape[0] > max_boxes or rounds > 24:
             return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_boxes")
+        if time.perf_counter() - t0 > max_seconds:
+            return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_seconds")
         rounds += 1
         # Newton from the centres projected onto the tip constraint (rows that do not project keep the centre)
         Qs = _project_rows(m, C, target)
         Qn, ln, okn = ch.newton(Qs)
         counts["newton"] += Qs.shape[0]
         new_incumbent(Qn, ln, okn)
-        inside = okn & np.all((Qn >= lo) & (Qn <= hi), axis=1)
         C2 = np.where(okn[:, None], np.clip(Qn, lo, hi), C)
         lam2 = np.where(okn[:, None], ln, lam)
         counts["boxes"] += lo.shape[0]
@@ -629,6 +657,7 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
             Cc = np.clip(C, L, H)
             counts["boxes"] += L.shape[0]
             b, lb = ch.bound(L, H, Cc, lam, fine=FINE)
+            b[ch.infeasible(L, H, Cc)] = math.inf
             up = bnd > b                           # a child's bound is at least its parent's
             open_boxes.append((L, H, Cc, np.where(up[:, None], lam, lb), np.where(up, bnd, b)))
     bound = min(low, inc_e)
