@@ -313,8 +313,10 @@ def ranked_well_seeds(m: Manipulator, dx: float, dy: float, count: int, *, chunk
         Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
         ik = 1.0 / Kw[cols, digits]
         cxx, cxy, cyy = (Jx * Jx * ik).sum(axis=1), (Jx * Jy * ik).sum(axis=1), (Jy * Jy * ik).sum(axis=1)
-        det = np.maximum(cxx * cyy - cxy * cxy, 1e-300)
-        work = 0.5 * (cyy * d[:, 0] ** 2 - 2 * cxy * d[:, 0] * d[:, 1] + cxx * d[:, 1] ** 2) / det
+        det = cxx * cyy - cxy * cxy
+        with np.errstate(divide="ignore", over="ignore", invalid="ignore"):      # a singular C: rank it last
+            work = 0.5 * (cyy * d[:, 0] ** 2 - 2 * cxy * d[:, 0] * d[:, 1] + cxx * d[:, 1] ** 2) / det
+        work = np.where(np.isfinite(work) & (det > 0), work, np.inf)
         score = Ew[cols, digits].sum(axis=1) + work
         keep = np.argsort(score)[:count]
         best_score = np.concatenate([best_score, score[keep]])
