@@ -13,6 +13,7 @@ result                      returned by                                      rec
 :class:`Equilibrium`        ``solve_equilibrium``, ``..._under_force``,      :class:`SolverInfo`
                             ``rest_configuration``, ``Tracker.solve``
 :class:`EquilibriumSet`     ``find_equilibria``, ``..._under_force``         :class:`Equilibrium`
+:class:`EnergyBound`        ``energy_lower_bound``, ``Equilibrium.certificate``
 :class:`Buckling`           ``critical_force``                               :class:`Mode`
 :class:`Landscape`          ``energy_landscape``
 :class:`Curve`              ``force_deflection``                             :class:`Jump`, :class:`CurveEnd`
@@ -54,6 +55,7 @@ from .analyses.equilibria.all_equilibria import EquilibriumSet
 from .analyses.equilibria.buckling import Buckling, Mode
 from .analyses.equilibria.equilibrium import Equilibrium
 from .analyses.equilibria.landscape import Landscape
+from .analyses.equilibria.lower_bound import EnergyBound
 from .analyses.paths.atlas import AtlasCrossing, AtlasTarget, StabilityAtlas
 from .analyses.paths.boundaries import BoundaryPoint, StabilityBoundary
 from .analyses.paths.branches import Branch
@@ -68,7 +70,7 @@ from .outcome import Outcome, SolverInfo
 
 __all__ = [
     "Outcome", "SolverInfo",
-    "Equilibrium", "EquilibriumSet", "Buckling", "Mode", "Landscape",
+    "Equilibrium", "EquilibriumSet", "EnergyBound", "Buckling", "Mode", "Landscape",
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent",
