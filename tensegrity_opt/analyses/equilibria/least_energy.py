@@ -153,8 +153,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         # the wells of the bistable segments (one per segment, every combination up to WELLS_MAX),
         # projected onto the tip constraint: Newton from each; IPOPT's descent from the lowest ones
         wells = well_seeds(m, dx, dy, hilltops=False, cap=WELLS_MAX)
-        # more patterns than WELLS_MAX: the ones whose tip the chain reaches with the least elastic work first
-        wells = np.vstack([ranked_well_seeds(m, dx, dy, RANKED_WELLS), wells])
+        if _pattern_count(m) > WELLS_MAX:
+            # more patterns than WELLS_MAX: those whose tip the chain reaches with the least elastic work first
+            wells = np.vstack([ranked_well_seeds(m, dx, dy, RANKED_WELLS), wells])
         if wells.shape[0]:
             starts = np.vstack([starts, wells])
             order = np.argsort([m.energy(q) for q in wells], kind="stable")[:WELL_DESCENTS]
@@ -220,6 +221,11 @@ RANKED_WELLS = 64
 #: random projected starts).
 LEAST_PROJECTED_PER_JOINT = 500
 LEAST_PROJECTED_SEED = 9090
+
+
+def _pattern_count(m: Manipulator) -> float:
+    """The number of well patterns (one unloaded well per segment) of a chain."""
+    return math.prod(float(max(1, len(s.critical_angles()[0]))) for s in m.segments)
 
 
 def certify_least(m: Manipulator, dx: float, dy: float, best: Equilibrium) -> Equilibrium:

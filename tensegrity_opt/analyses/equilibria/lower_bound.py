@@ -594,8 +594,12 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         lo, hi, C, K = Plo[cols, digits], Phi[cols, digits], Pc[cols, digits], Pk[cols, digits]
         counts["patterns"] += ids.size
         counts["boxes"] += ids.size
-        bnd, lam = ch.bound(lo, hi, C, np.broadcast_to(inc_f, (ids.size, 2)), curv=K)
+        bnd, lam = ch.bound(lo, hi, C, np.broadcast_to(inc_f, (ids.size, 2)), curv=K, iters=2)
         op = bnd < inc_e - 0.5 * tol
+        if op.any():                               # more dual steps where two did not close the box
+            b2, l2 = ch.bound(lo[op], hi[op], C[op], lam[op], curv=K[op], iters=6)
+            bnd[op], lam[op] = np.maximum(bnd[op], b2), np.where((b2 > bnd[op])[:, None], l2, lam[op])
+            op = bnd < inc_e - 0.5 * tol
         if op.any():
             bnd[np.flatnonzero(op)[ch.infeasible(lo[op], hi[op], C[op])]] = math.inf
         shut = bnd >= inc_e - 0.5 * tol
