@@ -51,7 +51,7 @@ __all__ = ["solve_equilibrium", "search_stable", "certify_least", "WELLS_MAX"]
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
                       method: str = "auto", n_random: int | None = None,
-                      max_modes: int | None = None, certify: bool = False) -> Equilibrium:
+                      max_modes: int | None = None, certify: bool | None = False) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -97,6 +97,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         the Lagrangian bound per box, branch and bound), carried as ``certificate`` (bound, gap, tolerance);
         ``status`` ``"certified"`` when the gap is within the tolerance. When the bound finds a lower
         configuration than the search's, it is polished by Newton and returned instead. Not with ``local``.
+        Without it, chains of more than ``WELLS_MAX`` and at most ``BOUND_SEEDED_PATTERNS`` well patterns (9 to 14
+        bistable segments) still run the bound's pattern sweep on a short budget (``BOUND_SEEDED_SECONDS``) to
+        find a lower configuration among all the patterns, without a certificate; ``None``: the search alone.
 
     Returns
     -------
@@ -114,9 +117,16 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         (``RuntimeError``) when no solve converged to a stable equilibrium inside the
         physical range; ``status`` lists the solver statuses met.
     """
-    if certify and not local:
-        best = solve_equilibrium(m, dx, dy, q0=q0, method=method, n_random=n_random, max_modes=max_modes)
-        return certify_least(m, dx, dy, best)
+    if certify is not None and not local and method in ("auto", "ipopt") and \
+            (certify or (m.n >= 2 and not m.monotonic and WELLS_MAX < _pattern_count(m) <= BOUND_SEEDED_PATTERNS)):
+        best = solve_equilibrium(m, dx, dy, q0=q0, method=method, n_random=n_random, max_modes=max_modes,
+                                 certify=None)
+        if certify:
+            return certify_least(m, dx, dy, best)
+        # more well patterns than the search tries: the bound's pattern sweep and Newton re-centrings (a short
+        # budget, no certificate) look for a lower configuration among all of them
+        return _bound_polished(m, dx, dy, best, energy_lower_bound(m, dx, dy, best.q, force=best.force,
+                                                                  max_seconds=BOUND_SEEDED_SECONDS))[0]
     target = m.check_reachable(dx, dy)
     q0 = check_q0(m, q0)
     if local and q0 is None:
@@ -214,6 +224,11 @@ WELL_DESCENTS = 8
 #: Chains with more well patterns than WELLS_MAX also start Newton from this many patterns ranked by the
 #: elastic work of moving their tip to the target (:func:`.seeds.ranked_well_seeds`).
 RANKED_WELLS = 64
+#: Chains of more than WELLS_MAX and at most this many well patterns also run the lower bound's pattern sweep
+#: and its first round of Newton re-centrings (:func:`~.lower_bound.energy_lower_bound` with this budget, s: 0 stops
+#: after that round) in the default search, for a lower configuration.
+BOUND_SEEDED_PATTERNS = 1 << 14
+BOUND_SEEDED_SECONDS = 0.0
 #: Multistable chains with compiled kernels (n <= KERNEL_MAX) also start Newton from this many uniform
 #: random configurations per joint, projected onto the tip constraint (methods "auto" and "ipopt"; the
 #: bounded "newton" method keeps the seeds and wells only) (an n = 7 chain's least-energy
@@ -234,7 +249,14 @@ def certify_least(m: Manipulator, dx: float, dy: float, best: Equilibrium) -> Eq
     and classified: kept when stable and lower)."""
     from dataclasses import replace
 
-    cert = energy_lower_bound(m, dx, dy, best.q, force=best.force)
+    best, cert = _bound_polished(m, dx, dy, best, energy_lower_bound(m, dx, dy, best.q, force=best.force))
+    status = "certified" if cert.certified and cert.energy >= best.energy - cert.tolerance else best.status
+    return replace(best, certificate=cert, status=status)
+
+
+def _bound_polished(m: Manipulator, dx: float, dy: float, best: Equilibrium, cert) -> tuple[Equilibrium, object]:
+    """``best``, or the lower configuration the bound found (Newton-polished, classified; kept when stable and
+    lower), with the bound."""
     if cert.improved:
         target = m.target(dx, dy)
         res = local_equilibrium(m, target, cert.q, cert.force)
@@ -242,8 +264,7 @@ def certify_least(m: Manipulator, dx: float, dy: float, best: Equilibrium) -> Eq
             cand = make_equilibrium(m, res, constrained=True)
             if cand.stable and cand.energy < best.energy:
                 best = cand
-    status = "certified" if cert.certified and cert.energy >= best.energy - cert.tolerance else best.status
-    return replace(best, certificate=cert, status=status)
+    return best, cert
 
 
 def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None) -> Equilibrium:

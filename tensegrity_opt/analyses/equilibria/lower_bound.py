@@ -634,6 +634,8 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         Qn, ln, okn = ch.newton(Qs)
         counts["newton"] += Qs.shape[0]
         new_incumbent(Qn, ln, okn)
+        if time.perf_counter() - t0 > max_seconds:
+            return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_seconds")
         C2 = np.where(okn[:, None], np.clip(Qn, lo, hi), C)
         lam2 = np.where(okn[:, None], ln, lam)
         counts["boxes"] += lo.shape[0]
