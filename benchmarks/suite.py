@@ -784,9 +784,9 @@ def case9(cfg: Config) -> list[Row]:
     return rows
 
 
-#: The certified least-energy rows of case 9: bistable chains and targets (near their wells: the least energy
-#: within ~1e-4 of n x 0.63, 2^n near-degenerate well patterns).
-CERTIFIED_TARGETS = ((8, (2.0, 0.0)), (12, (CERT12_DX := 2.0, 0.3)), (20, (1.0, 0.0)))
+#: The certified least-energy rows of case 9: bistable chains and targets near their wells (the least energy
+#: within ~1e-4 of n x 0.63 among 2^n near-degenerate well patterns).
+CERTIFIED_TARGETS = ((8, (2.0, 0.0)), (12, (3.5, 0.3)), (20, (4.84, 0.3)))
 
 
 def _certified_least_rows(cfg: Config) -> list[Row]:
@@ -796,22 +796,21 @@ def _certified_least_rows(cfg: Config) -> list[Row]:
     for n, (dx, dy) in CERTIFIED_TARGETS:
         m = to.Manipulator.uniform(n, **BISTABLE)
         to.solve_equilibrium(m, dx, dy)                     # warm-up (kernels built)
-        cert = [to.solve_equilibrium(m, dx, dy, certify=True)]
-        tc = [cert[0].certificate.seconds * 1e3]
-        tc += repeat(lambda: cert.append(to.solve_equilibrium(m, dx, dy, certify=True)), reps - 1, warmup=0) \
-            if reps > 1 else []
         td = repeat(lambda: to.solve_equilibrium(m, dx, dy), reps, warmup=0)
-        full = repeat(lambda: to.solve_equilibrium(m, dx, dy, certify=True), reps, warmup=0)
-        e = cert[-1]
+        got: list = []
+        full = repeat(lambda: got.append(to.solve_equilibrium(m, dx, dy, certify=True)), reps, warmup=0)
+        e = got[-1]
         c = e.certificate
-        rows.append(Row("9", "certified least energy (search + lower bound)", n, median_ms(full), "ms",
-                        "default search (no certificate)", median_ms(td), ratio=median_ms(td) / median_ms(full),
-                        target="certified, seconds (goal n <= 20)", met=bool(c.certified and median_ms(full) < 10000),
+        o, b = median_ms(full), median_ms(td)
+        rows.append(Row("9", "certified least energy (search + lower bound)", n, o, "ms",
+                        "default search (no certificate)", b, ratio=b / o,
+                        target="certified in seconds (goal n <= 20)", met=bool(c.certified and o < 10000.0),
                         samples=full, baseline_samples=td,
-                        notes=[f"bistable n={n} at (dx, dy) = ({dx}, {dy}): energy {e.energy:.10g}, bound {c.bound:.10g}, "
-                               f"gap {c.gap:.3g} (tolerance {c.tolerance:.3g}), status {e.status}; {c.patterns} pattern "
-                               f"boxes, {c.boxes} boxes, {c.newton} Newton re-centrings; the bound alone "
-                               f"{median_ms(tc):.0f} ms"]))
+                        notes=[f"bistable n={n} at (dx, dy) = ({dx}, {dy}): energy {e.energy:.10g}, bound "
+                               f"{c.bound:.10g}, gap {c.gap:.3g} (tolerance {c.tolerance:.3g}), status {e.status}; "
+                               f"{c.patterns} pattern boxes, {c.boxes} boxes, {c.newton} Newton re-centrings; "
+                               f"the bound alone {1e3 * float(np.median([g.certificate.seconds for g in got])):.0f} "
+                               f"ms; the default's energy {to.solve_equilibrium(m, dx, dy).energy:.10g}"]))
     return rows
 
 
