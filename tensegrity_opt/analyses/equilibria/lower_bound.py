@@ -391,7 +391,7 @@ class _Chain:
         lam = np.zeros((B, 2)) if lam0 is None else np.array(np.broadcast_to(lam0, (B, 2)), dtype=float)
         best, a, t, e = evaluate(lam)
         best_lam = lam.copy()
-        if lam0 is not None:                       # lambda = 0: the sum of the joints' own minima over the box
+        if lam0 is not None and fine:              # lambda = 0: the sum of the joints' own minima over the box
             v0 = evaluate(np.zeros((B, 2)))[0]
             up = v0 > best
             best = np.where(up, v0, best)
@@ -594,9 +594,9 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         lo, hi, C, K = Plo[cols, digits], Phi[cols, digits], Pc[cols, digits], Pk[cols, digits]
         counts["patterns"] += ids.size
         counts["boxes"] += ids.size
-        bnd, lam = ch.bound(lo, hi, C, np.broadcast_to(inc_f, (ids.size, 2)), curv=K, iters=2)
+        bnd, lam = ch.bound(lo, hi, C, np.broadcast_to(inc_f, (ids.size, 2)), curv=K, iters=1)
         op = bnd < inc_e - 0.5 * tol
-        if op.any():                               # more dual steps where two did not close the box
+        if op.any():                               # more dual steps where one did not close the box
             b2, l2 = ch.bound(lo[op], hi[op], C[op], lam[op], curv=K[op], iters=6)
             bnd[op], lam[op] = np.maximum(bnd[op], b2), np.where((b2 > bnd[op])[:, None], l2, lam[op])
             op = bnd < inc_e - 0.5 * tol
