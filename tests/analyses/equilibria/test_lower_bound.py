@@ -10,6 +10,7 @@ claim of optimality.
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 
 import numpy as np
@@ -170,3 +171,31 @@ def test_open_status_when_the_patterns_exceed_the_cap():
     cert = energy_lower_bound(m, 1.5, 0.2, eq.q, force=eq.force, max_patterns=4)
     assert cert.status == "open" and not cert.success and "max_patterns" in cert.message
     assert cert.bound == pytest.approx(6 * 0.63, abs=1e-8) and cert.bound <= eq.energy
+
+
+@pytest.mark.parametrize(("n", "dx", "dy", "energy"), [(10, 3.5, 0.0, 6.3000804), (12, 3.5, 0.3, 7.5600489)])
+def test_certified_long_bistable_chains(n, dx, dy, energy):
+    """n = 10, 12 uniform bistable near their wells: certified; the default search finds the same energy; the
+    reference SLSQP from random well patterns finds nothing lower."""
+    m = to.Manipulator.uniform(n, **BISTABLE)
+    eq = solve_equilibrium(m, dx, dy, certify=True)
+    assert eq.status == "certified" and eq.certificate.gap <= eq.certificate.tolerance
+    assert eq.energy == pytest.approx(energy, abs=1e-7)
+    assert solve_equilibrium(m, dx, dy).energy == pytest.approx(eq.energy, abs=1e-9)
+    best = _reference_least(m, dx, dy, n_random=0, seed=11, wells=0.7108424, n_wells=12)
+    assert eq.energy <= best + 1e-9
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(os.environ.get("TENSEGRITY_LONG_TESTS") != "1",
+                    reason="8-20 s on 2 cores (CI time): set TENSEGRITY_LONG_TESTS=1; benchmark case 9 has the row")
+def test_certified_bistable_n20():
+    """n = 20 (2^20 well patterns, ~8-20 s): the default search's answer is certified by the bound."""
+    m = to.Manipulator.uniform(20, **BISTABLE)
+    eq = solve_equilibrium(m, 4.84, 0.3)
+    cert = energy_lower_bound(m, 4.84, 0.3, eq.q, force=eq.force, max_seconds=60.0)
+    assert cert.certified and cert.patterns == 1 << 20
+    assert cert.energy == pytest.approx(eq.energy, abs=1e-12) and not cert.improved
+    assert cert.bound <= eq.energy and cert.gap <= cert.tolerance
+    best = _reference_least(m, 4.84, 0.3, n_random=0, seed=13, wells=0.7108424, n_wells=4)
+    assert eq.energy <= best + 1e-9
