@@ -42,7 +42,8 @@ class EquilibriumRequest(BaseModel):
     certify: bool = Field(False, description="prove the answer least: a rigorous lower bound on the energy of every "
                                              "configuration meeting the tip constraint in the closed joint range "
                                              "(`certificate`: bound, gap, tolerance); `status` `certified` when the "
-                                             "gap is within the tolerance; up to ~10 s more (not with `local`)")
+                                             "gap is within the tolerance; up to ~5 s more, longer for 2^17+ "
+                                             "well patterns (not with `local`)")
 
 
 class ForceEquilibriumRequest(BaseModel):

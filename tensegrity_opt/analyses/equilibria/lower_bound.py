@@ -64,7 +64,7 @@ MAX_PATTERNS = 1 << 21
 #: Most boxes bounded in all (patterns included) before the branch and bound stops (open).
 MAX_BOXES = 1 << 16
 #: Wall-time budget (s) of the refinement.
-MAX_SECONDS = 10.0
+MAX_SECONDS = 5.0
 #: Boxes bounded at once (numpy arrays of CHUNK x n).
 CHUNK = 1 << 15
 #: Relative rounding margin subtracted from every box bound (times the magnitude of its terms).
