@@ -98,8 +98,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         ``status`` ``"certified"`` when the gap is within the tolerance. When the bound finds a lower
         configuration than the search's, it is polished by Newton and returned instead. Not with ``local``.
         Without it, chains of more than ``WELLS_MAX`` and at most ``BOUND_SEEDED_PATTERNS`` well patterns (9 to 14
-        bistable segments) still run the bound's pattern sweep on a short budget (``BOUND_SEEDED_SECONDS``) to
-        find a lower configuration among all the patterns, without a certificate; ``None``: the search alone.
+        bistable segments) still run the bound's pattern sweep and one round of its Newton re-centrings
+        (``BOUND_SEEDED_ROUNDS``) to find a lower configuration among all the patterns, without a certificate;
+        ``None``: the search alone.
 
     Returns
     -------
@@ -126,7 +127,8 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         # more well patterns than the search tries: the bound's pattern sweep and Newton re-centrings (a short
         # budget, no certificate) look for a lower configuration among all of them
         return _bound_polished(m, dx, dy, best, energy_lower_bound(m, dx, dy, best.q, force=best.force,
-                                                                  max_seconds=BOUND_SEEDED_SECONDS))[0]
+                                                                  max_seconds=math.inf, max_rounds=BOUND_SEEDED_ROUNDS,
+                                                                  fine=12))[0]
     target = m.check_reachable(dx, dy)
     q0 = check_q0(m, q0)
     if local and q0 is None:
@@ -224,11 +226,12 @@ WELL_DESCENTS = 8
 #: Chains with more well patterns than WELLS_MAX also start Newton from this many patterns ranked by the
 #: elastic work of moving their tip to the target (:func:`.seeds.ranked_well_seeds`).
 RANKED_WELLS = 64
-#: Chains of more than WELLS_MAX and at most this many well patterns also run the lower bound's pattern sweep
-#: and its first round of Newton re-centrings (:func:`~.lower_bound.energy_lower_bound` with this budget, s: 0 stops
-#: after that round) in the default search, for a lower configuration.
+#: Chains of more than WELLS_MAX and at most this many well patterns also run the lower bound's pattern sweep and
+#: this many rounds of its Newton re-centrings of the boxes left open (:func:`~.lower_bound.energy_lower_bound`; a
+#: limit on the work, not on the time: the answer does not depend on the machine) in the default search, for a
+#: lower configuration.
 BOUND_SEEDED_PATTERNS = 1 << 14
-BOUND_SEEDED_SECONDS = 0.0
+BOUND_SEEDED_ROUNDS = 1
 #: Multistable chains with compiled kernels (n <= KERNEL_MAX) also start Newton from this many uniform
 #: random configurations per joint, projected onto the tip constraint (methods "auto" and "ipopt"; the
 #: bounded "newton" method keeps the seeds and wells only) (an n = 7 chain's least-energy

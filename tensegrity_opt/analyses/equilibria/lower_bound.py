@@ -63,6 +63,8 @@ TOL_ABS = 1e-9
 MAX_PATTERNS = 1 << 21
 #: Most boxes bounded in all (patterns included) before the branch and bound stops (open).
 MAX_BOXES = 1 << 16
+#: Rounds of the refinement at most.
+MAX_ROUNDS = 25
 #: Wall-time budget (s) of the refinement.
 MAX_SECONDS = 5.0
 #: Boxes bounded at once (numpy arrays of CHUNK x n).
@@ -504,7 +506,8 @@ class _Chain:
 
 def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any = None, *,
                        force: Any = None, max_patterns: int = MAX_PATTERNS, max_boxes: int = MAX_BOXES,
-                       max_seconds: float = MAX_SECONDS) -> EnergyBound:
+                       max_seconds: float = MAX_SECONDS, fine: int = FINE, max_rounds: int = MAX_ROUNDS
+                       ) -> EnergyBound:
     """A rigorous lower bound on ``E(q)`` over every ``q`` of the closed joint range with the tip at the target
     of ``(dx, dy)``, and the best feasible configuration known (method: the module's docstring).
 
@@ -523,6 +526,12 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
     max_seconds : float
         Wall-time budget of the refinement (checked between rounds; the pattern sweep always completes):
         when spent, ``status`` is ``"open"`` with the bound reached.
+    max_rounds : int
+        Rounds of the refinement (Newton re-centring, bound, bisection) at most: a limit on the work that does not
+        depend on the machine's speed (the default search's short sweep uses a few).
+    fine : int
+        Cells per joint of the refinement's bound (fewer: cheaper and looser; the default search's short
+        pattern sweep uses a few to find lower configurations, not to certify).
 
     Returns
     -------
@@ -624,7 +633,7 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         lo, hi, C, lam, bnd = lo[keep], hi[keep], C[keep], lam[keep], bnd[keep]
         if not lo.shape[0]:
             break
-        if counts["boxes"] + 2 * lo.shape[0] > max_boxes or rounds > 24:
+        if counts["boxes"] + 2 * lo.shape[0] > max_boxes or rounds >= max_rounds:
             return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_boxes")
         if time.perf_counter() - t0 > max_seconds:
             return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_seconds")
@@ -639,7 +648,7 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         C2 = np.where(okn[:, None], np.clip(Qn, lo, hi), C)
         lam2 = np.where(okn[:, None], ln, lam)
         counts["boxes"] += lo.shape[0]
-        b2, l2 = ch.bound(lo, hi, C2, lam2, fine=FINE)
+        b2, l2 = ch.bound(lo, hi, C2, lam2, fine=fine)
         up = b2 > bnd
         bnd = np.where(up, b2, bnd)
         lam = np.where(up[:, None], l2, lam)
@@ -651,6 +660,8 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         lo, hi, C, lam, bnd = lo[~shut], hi[~shut], C[~shut], lam[~shut], bnd[~shut]
         if not lo.shape[0]:
             break
+        if rounds >= max_rounds:                   # the last round: no children to bound
+            return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_rounds")
         # bisect each open box along its widest joint (relative to the joint's curvature loss)
         width = hi - lo
         j = np.argmax(width * (1.0 + np.abs(C - 0.5 * (lo + hi))), axis=1)
@@ -662,7 +673,9 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
         for L, H in ((lo_a, hi_a), (lo_b, hi_b)):
             Cc = np.clip(C, L, H)
             counts["boxes"] += L.shape[0]
-            b, lb = ch.bound(L, H, Cc, lam, fine=FINE)
+            if time.perf_counter() - t0 > max_seconds:
+                return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_seconds")
+            b, lb = ch.bound(L, H, Cc, lam, fine=fine)
             b[ch.infeasible(L, H, Cc)] = math.inf
             up = bnd > b                           # a child's bound is at least its parent's
             open_boxes.append((L, H, Cc, np.where(up[:, None], lam, lb), np.where(up, bnd, b)))

@@ -199,3 +199,16 @@ def test_certified_bistable_n20():
     assert cert.bound <= eq.energy and cert.gap <= cert.tolerance
     best = _reference_least(m, 4.84, 0.3, n_random=0, seed=13, wells=0.7108424, n_wells=4)
     assert eq.energy <= best + 1e-9
+
+
+def test_default_search_finds_the_lower_pattern_n10():
+    """n = 10 uniform bistable at (1.75, -0.25): the plain search stops at 6.3015246 (``certify=None``); the
+    default (the bound's pattern sweep and one round of Newton re-centrings) finds 6.3011121, which the
+    reference SLSQP from random well patterns does not beat."""
+    m = to.Manipulator.uniform(10, **BISTABLE)
+    plain = solve_equilibrium(m, 1.75, -0.25, certify=None)
+    eq = solve_equilibrium(m, 1.75, -0.25)
+    assert plain.energy == pytest.approx(6.3015246, abs=1e-7)
+    assert eq.energy == pytest.approx(6.3011121, abs=1e-7) and eq.stable and eq.certificate is None
+    best = _reference_least(m, 1.75, -0.25, n_random=0, seed=17, wells=0.7108424, n_wells=16)
+    assert eq.energy <= best + 1e-9
