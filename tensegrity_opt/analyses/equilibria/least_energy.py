@@ -253,7 +253,8 @@ def certify_least(m: Manipulator, dx: float, dy: float, best: Equilibrium) -> Eq
     from dataclasses import replace
 
     best, cert = _bound_polished(m, dx, dy, best, energy_lower_bound(m, dx, dy, best.q, force=best.force))
-    status = "certified" if cert.certified and cert.energy >= best.energy - cert.tolerance else best.status
+    proven = cert.certified and cert.energy >= best.energy - cert.tolerance and best.status != "exact"
+    status = "certified" if proven else best.status          # "exact" (one configuration) stays exact
     return replace(best, certificate=cert, status=status)
 
 

@@ -212,3 +212,14 @@ def test_default_search_finds_the_lower_pattern_n10():
     assert eq.energy == pytest.approx(6.3011121, abs=1e-7) and eq.stable and eq.certificate is None
     best = _reference_least(m, 1.75, -0.25, n_random=0, seed=17, wells=0.7108424, n_wells=16)
     assert eq.energy <= best + 1e-9
+
+
+def test_single_configuration_cases_are_certified():
+    """The straight chain (dx = dy = 0) and a single segment: one configuration meets the constraint."""
+    m = to.Manipulator.uniform(4, **BISTABLE)
+    eq = solve_equilibrium(m, 0.0, 0.0, certify=True)
+    assert eq.certificate.certified and eq.certificate.bound == eq.energy == pytest.approx(4 * 0.64)
+    assert eq.status == "exact"
+    one = to.Manipulator.uniform(1, **BISTABLE)
+    eq = solve_equilibrium(one, 1.0 - np.sqrt(1.0 - 0.09), 0.3, certify=True)
+    assert eq.certificate.certified and eq.certificate.gap == 0.0
