@@ -15,6 +15,8 @@ result                      returned by                                      rec
 :class:`EquilibriumSet`     ``find_equilibria``, ``..._under_force``         :class:`Equilibrium`,
                                                                              :class:`IntervalCertificate`
 (``IntervalCertificate``)   ``EquilibriumSet.certificate`` (homotopy)        :class:`RootBox`
+:class:`EnergyBound`        ``energy_lower_bound``,
+                            ``Equilibrium.certificate`` (``certify=True``)
 :class:`Buckling`           ``critical_force``                               :class:`Mode`
 :class:`Landscape`          ``energy_landscape``
 :class:`Curve`              ``force_deflection``                             :class:`Jump`, :class:`CurveEnd`
@@ -56,6 +58,7 @@ from .analyses.equilibria.all_equilibria import EquilibriumSet
 from .analyses.equilibria.buckling import Buckling, Mode
 from .analyses.equilibria.equilibrium import Equilibrium
 from .analyses.equilibria.landscape import Landscape
+from .analyses.equilibria.lower_bound import EnergyBound
 from .analyses.paths.atlas import AtlasCrossing, AtlasTarget, StabilityAtlas
 from .analyses.paths.boundaries import BoundaryPoint, StabilityBoundary
 from .analyses.paths.branches import Branch
@@ -71,7 +74,7 @@ from .outcome import Outcome, SolverInfo
 
 __all__ = [
     "Outcome", "SolverInfo",
-    "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "Buckling", "Mode", "Landscape",
+    "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "EnergyBound", "Buckling", "Mode", "Landscape",
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent",

@@ -117,8 +117,9 @@ def branch_start(m: to.Manipulator, start: Any, control: Any) -> Any:
 
 
 def equilibrium_args(req: s.EquilibriumRequest) -> tuple[Any, ...]:
-    """An equilibrium request as plain numbers (chain key, dx, dy, q0, local): cheap to send to a process."""
-    return (manipulator_key(req.manipulator), req.dx, req.dy, None if req.q0 is None else tuple(req.q0), req.local)
+    """An equilibrium request as plain numbers (chain key, dx, dy, q0, local, certify): cheap to send to a process."""
+    return (manipulator_key(req.manipulator), req.dx, req.dy, None if req.q0 is None else tuple(req.q0), req.local,
+            req.certify)
 
 
 def bounded_search_may_settle(key: tuple[Any, ...], max_segments: int) -> bool:

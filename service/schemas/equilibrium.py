@@ -39,6 +39,11 @@ class EquilibriumRequest(BaseModel):
     local: bool = Field(False, description="only the local solve from `q0` (required): the equilibrium on the "
                                            "branch through `q0`, whatever its stability (read `stable`) — for "
                                            "control loops sending their previous answer; no global search")
+    certify: bool = Field(False, description="prove the answer least: a rigorous lower bound on the energy of every "
+                                             "configuration meeting the tip constraint in the closed joint range "
+                                             "(`certificate`: bound, gap, tolerance); `status` `certified` when the "
+                                             "gap is within the tolerance; up to ~5 s more, longer for 2^17+ "
+                                             "well patterns (not with `local`)")
 
 
 class ForceEquilibriumRequest(BaseModel):
@@ -71,6 +76,22 @@ class EquilibriaRequest(BaseModel):
 
 
 # ---------------------------------------------------------------------------- responses
+class CertificateOut(outcome_model(to.EnergyBound)):
+    """The least-energy certificate (`tensegrity_opt.EnergyBound`)."""
+
+    bound: float = Field(description="no configuration meeting the tip constraint in the closed joint range has a "
+                                     "lower energy")
+    energy: float = Field(description="the least energy of a feasible configuration known (the answer's)")
+    gap: float = Field(description="energy - bound (>= 0)")
+    tolerance: float = Field(description="certified when gap <= tolerance (1e-7 |E| + 1e-9 max k c^2)")
+    certified: bool
+    improved: bool = Field(description="the bound found a lower configuration than the search's (returned instead)")
+    patterns: int = Field(description="pattern boxes (products of the joints' low-energy pieces) enumerated")
+    boxes: int = Field(description="boxes bounded in all")
+    newton: int = Field(description="Newton re-centrings of open boxes")
+    seconds: float = Field(description="wall time of the bound (s)")
+
+
 class EquilibriumOut(outcome_model(to.Equilibrium)):
     """An equilibrium configuration."""
 
@@ -84,6 +105,8 @@ class EquilibriumOut(outcome_model(to.Equilibrium)):
     signs: str = Field(description="sign of each joint angle: +, - or 0")
     tip: list[float] = Field(description="tip position [x, y]")
     solver: SolverInfo
+    certificate: CertificateOut | None = Field(None, description="with `certify: true` only: the rigorous lower "
+                                                                 "bound and its gap")
 
 
 class RootBoxOut(BaseModel):

@@ -40,7 +40,7 @@ def build_in_background() -> None:
 
 
 def equilibrium_task(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float, ...] | None, local: bool,
-                     bounded: bool = False) -> Equilibrium | None:
+                     certify: bool = False, bounded: bool = False) -> Equilibrium | None:
     """``solve_equilibrium`` of the chain ``key`` (:func:`service.adapters.inputs.equilibrium_args`).
 
     ``bounded``: the bounded Newton-only search (``method="newton"``), ``None`` when it finds no stable
@@ -52,6 +52,8 @@ def equilibrium_task(key: tuple[Any, ...], dx: float, dy: float, q0: tuple[float
     """
     m = manipulator(key)
     q = optional_array(q0)
+    if certify and not local:
+        return to.solve_equilibrium(m, dx, dy, q0=q, certify=True)
     if not bounded:
         return to.solve_equilibrium(m, dx, dy, q0=q, local=local)
     try:

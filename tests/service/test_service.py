@@ -95,6 +95,24 @@ def test_equilibrium_segments_and_q0(client):
     check_equilibrium(r.json(), to.solve_equilibrium(m, 0.2, 0.05, q0=np.array(q0)))
 
 
+def test_equilibrium_certify(client):
+    """certify: the answer carries the rigorous lower bound (the library's certificate, same numbers); without it
+    the body has no certificate."""
+    body = {"manipulator": {"n": 3, "a": 0.6, "b": 1.0, "k": 1.0, "L0": 1.2}, "dx": 0.6, "dy": 0.2}
+    r = client.post("/v1/equilibrium", json={**body, "certify": True})
+    assert r.status_code == 200, r.text
+    got = r.json()
+    lib = to.solve_equilibrium(to.Manipulator.uniform(3, 0.6, 1.0, 1.0, 1.2), 0.6, 0.2, certify=True)
+    assert got["status"] == lib.status == "certified"
+    cert = got["certificate"]
+    assert cert["certified"] is True and cert["success"] is True
+    assert cert["bound"] == pytest.approx(lib.certificate.bound, rel=1e-12)
+    assert cert["bound"] <= got["energy"] and cert["gap"] <= cert["tolerance"]
+    plain = client.post("/v1/equilibrium", json=body).json()
+    assert plain.get("certificate") is None
+    assert plain["energy"] == pytest.approx(got["energy"], abs=1e-9)
+
+
 def test_equilibrium_straight(client):
     r = client.post("/v1/equilibrium", json={"manipulator": PAPER, "dx": 0.0})
     assert r.status_code == 200

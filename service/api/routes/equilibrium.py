@@ -28,7 +28,9 @@ _M = ex.PAPER_CHAIN
                 "(`tensegrity_opt.solve_equilibrium`). `q0` (optional) is a nearby configuration, e.g. the "
                 "previous answer of a control loop; it competes with the global search. With `local: true` "
                 "only the local solve from `q0` runs: the equilibrium on the branch through `q0` (read "
-                "`stable`), what a control loop following its arm wants, much cheaper than the search.",
+                "`stable`), what a control loop following its arm wants, much cheaper than the search. With "
+                "`certify: true` the answer carries `certificate`, a rigorous lower bound on the energy of every "
+                "configuration meeting the tip constraint and its gap (`status` `certified` when within tolerance).",
     responses=solve_responses(ex.EQUILIBRIUM, "unreachable_target", "solver_failed", "no_equilibrium"))
 async def solve_equilibrium(
     request: Request,
@@ -49,7 +51,7 @@ async def solve_equilibrium(
     # others go straight to the solver threads
     args = equilibrium_args(req)
     return await run_task(request, equilibrium_task, *args, fields=ctx,
-                          bounded=bounded_search_may_settle(args[0], settings.inline_max_segments))
+                          bounded=not req.certify and bounded_search_may_settle(args[0], settings.inline_max_segments))
 
 
 @router.post(

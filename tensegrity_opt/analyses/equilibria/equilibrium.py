@@ -37,6 +37,7 @@ from ...numerics import LocalResult, chain_solver
 from ...outcome import Outcome, SolverInfo
 from ...serialize import number, numbers
 from .buckling import critical_force, tip_slope
+from .lower_bound import EnergyBound
 from .stability import analyse, inertia_of_reduced
 
 __all__ = ["settle_under_force", "Equilibrium", "solve_equilibrium_under_force", "make_equilibrium",
@@ -86,6 +87,10 @@ class Equilibrium(Outcome, TipForce):
         ``"displacement"`` or ``"force"``.
     hessian_eigenvalues : ndarray
         Eigenvalues of the reduced Hessian (absolute-angle coordinates).
+    certificate : EnergyBound or None
+        With ``solve_equilibrium(..., certify=True)``: the rigorous lower bound on the energy of every
+        configuration meeting the tip constraint in the closed joint range, and the gap
+        (:class:`~.lower_bound.EnergyBound`); ``status`` is ``"certified"`` when the gap is within its tolerance.
     status : str
         How it was obtained (:attr:`STATUSES`); every status is a success: an unconverged solve is never
         returned as an equilibrium.
@@ -99,7 +104,8 @@ class Equilibrium(Outcome, TipForce):
         "exact": "known in closed form: the straight chain, a single segment, or an unloaded chain (a product of "
                  "its segments' critical points)",
         "certified": "the least-energy stable member of a set of equilibria proven complete by the polynomial "
-                     "homotopy (method='homotopy')",
+                     "homotopy (method='homotopy'), or the least-energy one proven by a rigorous lower bound on "
+                     "the energy of every configuration meeting the tip constraint (certify=True; certificate)",
     }
     SUCCESS: ClassVar[frozenset[str]] = frozenset(STATUSES)
 
@@ -113,6 +119,7 @@ class Equilibrium(Outcome, TipForce):
     control: str = "displacement"
     hessian_eigenvalues: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
     status: str = "converged"
+    certificate: EnergyBound | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         # the builders pass arrays they own: read-only in place (this is on the control loop's path)
@@ -128,6 +135,8 @@ class Equilibrium(Outcome, TipForce):
         """A sentence: how the equilibrium was obtained."""
         if self.status == "exact":
             return "exact: " + _EXACT.get(self.solver.status, self.solver.status.replace("_", " "))
+        if self.status == "certified" and self.certificate is not None:
+            return f"the least-energy stable equilibrium, {self.certificate.message}"
         if self.status == "certified":
             return ("the least-energy stable equilibrium of the complete set certified by the homotopy "
                     f"({self.solver.status})")
@@ -157,13 +166,14 @@ class Equilibrium(Outcome, TipForce):
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/equilibrium``): ``success``, ``status``, ``message``, ``q``,
         ``energy``, ``force`` ``{fx, fy}``, ``morse_index``, ``stable``, ``kind``, ``shape``, ``signs``, ``tip``,
-        ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted); every number finite
-        (:mod:`tensegrity_opt.serialize`)."""
+        ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted), and with ``certify=True``
+        ``certificate`` (:meth:`EnergyBound.to_dict`); every number finite (:mod:`tensegrity_opt.serialize`)."""
+        extra = {} if self.certificate is None else {"certificate": self.certificate.to_dict()}
         return {**self.outcome(), "q": numbers(self.q), "energy": number(self.energy),
                 "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,
                 "shape": self.shape, "signs": self.signs, "tip": numbers(self.tip),
-                "solver": self.solver.to_dict()}
+                "solver": self.solver.to_dict(), **extra}
 
 
 #: What each exact case is (the sentence of :attr:`Equilibrium.message`), by its ``solver.status``.

@@ -42,15 +42,16 @@ from .equilibrium import (
     one_segment_equilibrium,
     straight_equilibrium,
 )
-from .seeds import projected_sample, seed_starts, well_seeds
+from .lower_bound import energy_lower_bound
+from .seeds import projected_sample, ranked_well_seeds, seed_starts, well_seeds
 from .stability import inertia_of_reduced
 
-__all__ = ["solve_equilibrium", "search_stable", "WELLS_MAX"]
+__all__ = ["solve_equilibrium", "search_stable", "certify_least", "WELLS_MAX"]
 
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
                       method: str = "auto", n_random: int | None = None,
-                      max_modes: int | None = None) -> Equilibrium:
+                      max_modes: int | None = None, certify: bool | None = False) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -90,6 +91,16 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         for chains of up to 64 segments, plus the two arc seeds of large deflections
         (:func:`tensegrity_opt.analyses.equilibria.seeds.arc_seeds`); 0 and 2 (no arcs) for longer ones, whose
         least-energy equilibria lie on the lowest modes' branches (each seed costs O(n) per iteration).
+    certify : bool
+        Prove the answer least: a rigorous lower bound on the energy of every configuration meeting the tip
+        constraint inside the closed joint range (:func:`~.lower_bound.energy_lower_bound`: pattern boxes,
+        the Lagrangian bound per box, branch and bound), carried as ``certificate`` (bound, gap, tolerance);
+        ``status`` ``"certified"`` when the gap is within the tolerance. When the bound finds a lower
+        configuration than the search's, it is polished by Newton and returned instead. Not with ``local``.
+        Without it, chains of more than ``WELLS_MAX`` and at most ``BOUND_SEEDED_PATTERNS`` well patterns (9 to 14
+        bistable segments) still run the bound's pattern sweep and one round of its Newton re-centrings
+        (``BOUND_SEEDED_ROUNDS``) to find a lower configuration among all the patterns, without a certificate;
+        ``None``: the search alone.
 
     Returns
     -------
@@ -107,6 +118,17 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         (``RuntimeError``) when no solve converged to a stable equilibrium inside the
         physical range; ``status`` lists the solver statuses met.
     """
+    if certify is not None and not local and method in ("auto", "ipopt") and \
+            (certify or (m.n >= 2 and not m.monotonic and WELLS_MAX < _pattern_count(m) <= BOUND_SEEDED_PATTERNS)):
+        best = solve_equilibrium(m, dx, dy, q0=q0, method=method, n_random=n_random, max_modes=max_modes,
+                                 certify=None)
+        if certify:
+            return certify_least(m, dx, dy, best)
+        # more well patterns than the search tries: the bound's pattern sweep and Newton re-centrings (a short
+        # budget, no certificate) look for a lower configuration among all of them
+        return _bound_polished(m, dx, dy, best, energy_lower_bound(m, dx, dy, best.q, force=best.force,
+                                                                  max_seconds=math.inf, max_rounds=BOUND_SEEDED_ROUNDS,
+                                                                  fine=12))[0]
     target = m.check_reachable(dx, dy)
     q0 = check_q0(m, q0)
     if local and q0 is None:
@@ -143,6 +165,9 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         # the wells of the bistable segments (one per segment, every combination up to WELLS_MAX),
         # projected onto the tip constraint: Newton from each; IPOPT's descent from the lowest ones
         wells = well_seeds(m, dx, dy, hilltops=False, cap=WELLS_MAX)
+        if _pattern_count(m) > WELLS_MAX:
+            # more patterns than WELLS_MAX: those whose tip the chain reaches with the least elastic work first
+            wells = np.vstack([ranked_well_seeds(m, dx, dy, RANKED_WELLS), wells])
         if wells.shape[0]:
             starts = np.vstack([starts, wells])
             order = np.argsort([m.energy(q) for q in wells], kind="stable")[:WELL_DESCENTS]
@@ -198,6 +223,15 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
 #: also descends from.
 WELLS_MAX = 256
 WELL_DESCENTS = 8
+#: Chains with more well patterns than WELLS_MAX also start Newton from this many patterns ranked by the
+#: elastic work of moving their tip to the target (:func:`.seeds.ranked_well_seeds`).
+RANKED_WELLS = 64
+#: Chains of more than WELLS_MAX and at most this many well patterns also run the lower bound's pattern sweep and
+#: this many rounds of its Newton re-centrings of the boxes left open (:func:`~.lower_bound.energy_lower_bound`; a
+#: limit on the work, not on the time: the answer does not depend on the machine) in the default search, for a
+#: lower configuration.
+BOUND_SEEDED_PATTERNS = 1 << 14
+BOUND_SEEDED_ROUNDS = 1
 #: Multistable chains with compiled kernels (n <= KERNEL_MAX) also start Newton from this many uniform
 #: random configurations per joint, projected onto the tip constraint (methods "auto" and "ipopt"; the
 #: bounded "newton" method keeps the seeds and wells only) (an n = 7 chain's least-energy
@@ -205,6 +239,36 @@ WELL_DESCENTS = 8
 #: random projected starts).
 LEAST_PROJECTED_PER_JOINT = 500
 LEAST_PROJECTED_SEED = 9090
+
+
+def _pattern_count(m: Manipulator) -> float:
+    """The number of well patterns (one unloaded well per segment) of a chain."""
+    return math.prod(float(max(1, len(s.critical_angles()[0]))) for s in m.segments)
+
+
+def certify_least(m: Manipulator, dx: float, dy: float, best: Equilibrium) -> Equilibrium:
+    """``best`` (the search's least-energy stable equilibrium) with the certificate of
+    :func:`~.lower_bound.energy_lower_bound`; a lower configuration the bound found replaces it (Newton-polished
+    and classified: kept when stable and lower)."""
+    from dataclasses import replace
+
+    best, cert = _bound_polished(m, dx, dy, best, energy_lower_bound(m, dx, dy, best.q, force=best.force))
+    proven = cert.certified and cert.energy >= best.energy - cert.tolerance and best.status != "exact"
+    status = "certified" if proven else best.status          # "exact" (one configuration) stays exact
+    return replace(best, certificate=cert, status=status)
+
+
+def _bound_polished(m: Manipulator, dx: float, dy: float, best: Equilibrium, cert) -> tuple[Equilibrium, object]:
+    """``best``, or the lower configuration the bound found (Newton-polished, classified; kept when stable and
+    lower), with the bound."""
+    if cert.improved:
+        target = m.target(dx, dy)
+        res = local_equilibrium(m, target, cert.q, cert.force)
+        if is_equilibrium(m, res, target):
+            cand = make_equilibrium(m, res, constrained=True)
+            if cand.stable and cand.energy < best.energy:
+                best = cand
+    return best, cert
 
 
 def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None) -> Equilibrium:

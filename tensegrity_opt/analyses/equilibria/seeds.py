@@ -32,7 +32,7 @@ from ...numerics import distinct_rows
 from .buckling import critical_force, quad_G, tip_slope
 
 __all__ = ["Seed", "seeds", "seed_matrix", "seed_starts", "arc_seeds", "well_seeds", "project_to_target",
-           "projected_sample"]
+           "projected_sample", "ranked_well_seeds"]
 
 
 @dataclass(frozen=True)
@@ -278,3 +278,91 @@ def well_seeds(m: Manipulator, dx: float, dy: float, *, hilltops: bool = True, c
     P = _pattern_matrix(m, hilltops, cap, rng_seed)
     Q = project_to_target(m, P, m.target(dx, dy))
     return Q[distinct_rows(Q, dedupe)]
+
+
+#: Most well patterns :func:`ranked_well_seeds` ranks exhaustively; beyond, a local search over the patterns.
+RANK_PATTERNS_MAX = 1 << 14
+#: The local search: random patterns to start from, the best kept each round, and the rounds of one- and
+#: two-segment flips of the kept ones.
+RANK_SAMPLE = 4096
+RANK_KEEP = 32
+RANK_ROUNDS = 6
+
+
+def ranked_well_seeds(m: Manipulator, dx: float, dy: float, count: int, *, rng_seed: int = 29) -> np.ndarray:
+    """The ``count`` well patterns (one unloaded well per segment) that reach the target with the least
+    elastic work found, projected onto the tip constraint: ``(k, n)``, ``k <= count``.
+
+    Each pattern ``w`` is ranked by ``E(w) + 1/2 d^T C^-1 d``: its energy plus the work of moving its tip by
+    ``d = target - tip(w)`` through the linear compliance ``C = J diag(1/E_j''(w_j)) J^T`` (the least-energy
+    configuration of a chain of bistable segments near its wells is a pattern whose tip lies close to the
+    target in that metric; there are ``2^n`` patterns and the default search tries at most ``WELLS_MAX``).
+    Every pattern while there are at most :data:`RANK_PATTERNS_MAX`; beyond, a local search: a fixed-seed random
+    sample, then rounds of every one- and two-segment change of the best ones (heuristic: it ranks seeds, the
+    certificate is :mod:`.lower_bound`'s). Empty when the chain is monotonic or ``n < 2``."""
+    if m.n < 2 or m.monotonic or count <= 0:
+        return np.zeros((0, m.n))
+    wells = [np.asarray(s.critical_angles()[0], dtype=float) for s in m.segments]
+    wells = [w if w.size else np.zeros(1) for w in wells]
+    sizes = np.array([w.size for w in wells])
+    total = float(np.prod(sizes.astype(float)))
+    if total <= 1:
+        return np.zeros((0, m.n))
+    pmax = int(sizes.max())
+    W = np.array([np.pad(w, (0, pmax - w.size), mode="edge") for w in wells])           # (n, pmax)
+    Ew = np.array([m.segments[j].energy(W[j]) for j in range(m.n)])
+    Kw = np.array([np.maximum(-m.segments[j].dtorque(W[j]), 1e-12 * m.torque_scale) for j in range(m.n)])
+    target = m.target(dx, dy)
+    l = m.link_lengths
+    cols = np.arange(m.n)
+
+    def score(D: np.ndarray) -> np.ndarray:
+        Q = W[cols, D]
+        phi = np.cumsum(Q, axis=1)
+        c, s = np.cos(phi) * l, np.sin(phi) * l
+        d0 = target[0] - m.base_length - c.sum(axis=1)
+        d1 = target[1] - s.sum(axis=1)
+        Jx = -np.cumsum(s[:, ::-1], axis=1)[:, ::-1]
+        Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
+        ik = 1.0 / Kw[cols, D]
+        cxx, cxy, cyy = (Jx * Jx * ik).sum(axis=1), (Jx * Jy * ik).sum(axis=1), (Jy * Jy * ik).sum(axis=1)
+        det = cxx * cyy - cxy * cxy
+        with np.errstate(divide="ignore", over="ignore", invalid="ignore"):      # a singular C: rank it last
+            work = 0.5 * (cyy * d0 ** 2 - 2 * cxy * d0 * d1 + cxx * d1 ** 2) / det
+        work = np.where(np.isfinite(work) & (det > 0), work, np.inf)
+        return Ew[cols, D].sum(axis=1) + work
+
+    def digits(ids: np.ndarray) -> np.ndarray:
+        D = np.empty((ids.size, m.n), dtype=np.int64)
+        rem = ids
+        for j in range(m.n - 1, -1, -1):
+            rem, D[:, j] = np.divmod(rem, sizes[j])
+        return D
+
+    if total <= RANK_PATTERNS_MAX:
+        D = digits(np.arange(int(total)))
+        best = D[np.argsort(score(D), kind="stable")[:count]]
+    else:
+        rng = np.random.default_rng(rng_seed + m.n)
+        D = (rng.random((RANK_SAMPLE, m.n)) * sizes).astype(np.int64)
+        D = np.vstack([D, np.zeros((1, m.n), dtype=np.int64), sizes[None, :] - 1])
+        sc = score(D)
+        pairs = [(i, j) for i in range(m.n) for j in range(i, m.n)]
+        pi = np.array([p[0] for p in pairs])
+        pj = np.array([p[1] for p in pairs])
+        for _ in range(RANK_ROUNDS):
+            D, idx = np.unique(D, axis=0, return_index=True)
+            sc = sc[idx]
+            top = D[np.argsort(sc, kind="stable")[:RANK_KEEP]]
+            # every one-segment (i == j) and two-segment change of the best: the next well of each
+            nb = np.repeat(top, len(pairs), axis=0)
+            r = np.arange(nb.shape[0])
+            ii, jj = np.tile(pi, top.shape[0]), np.tile(pj, top.shape[0])
+            nb[r, ii] = (nb[r, ii] + 1) % sizes[ii]
+            nb[r, jj] = np.where(ii == jj, nb[r, jj], (nb[r, jj] + 1) % sizes[jj])
+            D = np.vstack([top, nb])
+            sc = score(D)
+        D, idx = np.unique(D, axis=0, return_index=True)
+        best = D[np.argsort(sc[idx], kind="stable")[:count]]
+    Qp = project_to_target(m, W[cols, best], target)
+    return Qp[distinct_rows(Qp, 1e-3)] if Qp.shape[0] else Qp
