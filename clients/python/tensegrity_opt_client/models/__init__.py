@@ -32,6 +32,8 @@ from .buckling_out import BucklingOut
 from .buckling_out_boundary import BucklingOutBoundary
 from .buckling_request import BucklingRequest
 from .buckling_request_boundary import BucklingRequestBoundary
+from .certificate_out import CertificateOut
+from .certificate_out_status import CertificateOutStatus
 from .control_out import ControlOut
 from .control_out_kind import ControlOutKind
 from .control_out_tip_type_0 import ControlOutTipType0
@@ -286,6 +288,8 @@ __all__ = (
     "BucklingOutBoundary",
     "BucklingRequest",
     "BucklingRequestBoundary",
+    "CertificateOut",
+    "CertificateOutStatus",
     "ControlOut",
     "ControlOutKind",
     "ControlOutTipType0",

@@ -8,8 +8,10 @@ from attrs import field as _attrs_field
 
 from ..models.equilibrium_out_kind import EquilibriumOutKind
 from ..models.equilibrium_out_status import EquilibriumOutStatus
+from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
+    from ..models.certificate_out import CertificateOut
     from ..models.force import Force
     from ..models.solver_info import SolverInfo
 
@@ -36,9 +38,11 @@ class EquilibriumOut:
             a continuation step; the solver's own status is in solver) and the equilibrium equations hold; `exact`: known in
             closed form: the straight chain, a single segment, or an unloaded chain (a product of its segments' critical
             points); `certified`: the least-energy stable member of a set of equilibria proven complete by the polynomial
-            homotopy (method='homotopy')
+            homotopy (method='homotopy'), or the least-energy one proven by a rigorous lower bound on the energy of every
+            configuration meeting the tip constraint (certify=True; certificate)
         success (bool): whether it worked: `status` is one of certified, converged, exact
         tip (list[float]): tip position [x, y]
+        certificate (CertificateOut | None | Unset): with `certify: true` only: the rigorous lower bound and its gap
     """
 
     energy: float
@@ -54,9 +58,12 @@ class EquilibriumOut:
     status: EquilibriumOutStatus
     success: bool
     tip: list[float]
+    certificate: CertificateOut | None | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        from ..models.certificate_out import CertificateOut  # noqa: PLC0415
+
         energy = self.energy
 
         force = self.force.to_dict()
@@ -83,6 +90,14 @@ class EquilibriumOut:
 
         tip = self.tip
 
+        certificate: dict[str, Any] | None | Unset
+        if isinstance(self.certificate, Unset):
+            certificate = UNSET
+        elif isinstance(self.certificate, CertificateOut):
+            certificate = self.certificate.to_dict()
+        else:
+            certificate = self.certificate
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
@@ -102,11 +117,14 @@ class EquilibriumOut:
                 "tip": tip,
             }
         )
+        if certificate is not UNSET:
+            field_dict["certificate"] = certificate
 
         return field_dict
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.certificate_out import CertificateOut  # noqa: PLC0415
         from ..models.force import Force  # noqa: PLC0415
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
 
@@ -137,6 +155,23 @@ class EquilibriumOut:
 
         tip = cast(list[float], d.pop("tip"))
 
+        def _parse_certificate(data: object) -> CertificateOut | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                certificate_type_0 = CertificateOut.from_dict(data)
+
+                return certificate_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(CertificateOut | None | Unset, data)
+
+        certificate = _parse_certificate(d.pop("certificate", UNSET))
+
         equilibrium_out = cls(
             energy=energy,
             force=force,
@@ -151,6 +186,7 @@ class EquilibriumOut:
             status=status,
             success=success,
             tip=tip,
+            certificate=certificate,
         )
 
         equilibrium_out.additional_properties = d

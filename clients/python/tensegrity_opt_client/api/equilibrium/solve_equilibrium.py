@@ -91,7 +91,9 @@ def sync_detailed(
     (`tensegrity_opt.solve_equilibrium`). `q0` (optional) is a nearby configuration, e.g. the previous
     answer of a control loop; it competes with the global search. With `local: true` only the local
     solve from `q0` runs: the equilibrium on the branch through `q0` (read `stable`), what a control
-    loop following its arm wants, much cheaper than the search.
+    loop following its arm wants, much cheaper than the search. With `certify: true` the answer carries
+    `certificate`, a rigorous lower bound on the energy of every configuration meeting the tip
+    constraint and its gap (`status` `certified` when within tolerance).
 
     Args:
         body (EquilibriumRequest): Least-energy stable equilibrium with the tip held at `(2 sum(b)
@@ -127,7 +129,9 @@ def sync(
     (`tensegrity_opt.solve_equilibrium`). `q0` (optional) is a nearby configuration, e.g. the previous
     answer of a control loop; it competes with the global search. With `local: true` only the local
     solve from `q0` runs: the equilibrium on the branch through `q0` (read `stable`), what a control
-    loop following its arm wants, much cheaper than the search.
+    loop following its arm wants, much cheaper than the search. With `certify: true` the answer carries
+    `certificate`, a rigorous lower bound on the energy of every configuration meeting the tip
+    constraint and its gap (`status` `certified` when within tolerance).
 
     Args:
         body (EquilibriumRequest): Least-energy stable equilibrium with the tip held at `(2 sum(b)
@@ -158,7 +162,9 @@ async def asyncio_detailed(
     (`tensegrity_opt.solve_equilibrium`). `q0` (optional) is a nearby configuration, e.g. the previous
     answer of a control loop; it competes with the global search. With `local: true` only the local
     solve from `q0` runs: the equilibrium on the branch through `q0` (read `stable`), what a control
-    loop following its arm wants, much cheaper than the search.
+    loop following its arm wants, much cheaper than the search. With `certify: true` the answer carries
+    `certificate`, a rigorous lower bound on the energy of every configuration meeting the tip
+    constraint and its gap (`status` `certified` when within tolerance).
 
     Args:
         body (EquilibriumRequest): Least-energy stable equilibrium with the tip held at `(2 sum(b)
@@ -192,7 +198,9 @@ async def asyncio(
     (`tensegrity_opt.solve_equilibrium`). `q0` (optional) is a nearby configuration, e.g. the previous
     answer of a control loop; it competes with the global search. With `local: true` only the local
     solve from `q0` runs: the equilibrium on the branch through `q0` (read `stable`), what a control
-    loop following its arm wants, much cheaper than the search.
+    loop following its arm wants, much cheaper than the search. With `certify: true` the answer carries
+    `certificate`, a rigorous lower bound on the energy of every configuration meeting the tip
+    constraint and its gap (`status` `certified` when within tolerance).
 
     Args:
         body (EquilibriumRequest): Least-energy stable equilibrium with the tip held at `(2 sum(b)
