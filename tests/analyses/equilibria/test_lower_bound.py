@@ -223,3 +223,29 @@ def test_single_configuration_cases_are_certified():
     one = to.Manipulator.uniform(1, **BISTABLE)
     eq = solve_equilibrium(one, 1.0 - np.sqrt(1.0 - 0.09), 0.3, certify=True)
     assert eq.certificate.certified and eq.certificate.gap == 0.0
+
+
+@pytest.mark.parametrize("n, dx, dy, kind", [(8, 2.0, 0.0, "uniform"), (8, 3.0, 1.0, "uniform"),
+                                             (5, 0.7, -0.35, "heterogeneous"), (4, 1.5, 0.4, "uniform")])
+def test_default_short_way_is_the_whole_search_and_certified(monkeypatch, n, dx, dy, kind):
+    """The default search's short way (Newton from the seeds and the best-ranked wells, then the bound) returns,
+    where it certifies, the whole search's equilibrium (the same q: mirror ties included), and nothing an
+    independent many-start reference (the reference model's SLSQP from random starts and well patterns) beats."""
+    from tensegrity_opt.analyses.equilibria import least_energy
+
+    if kind == "uniform":
+        m = to.Manipulator.uniform(n, **BISTABLE)
+    else:
+        rng = np.random.default_rng(n)
+        m = to.Manipulator([to.Segment(rng.uniform(0.55, 0.65), 1.0, rng.uniform(0.8, 1.2), rng.uniform(1.15, 1.25))
+                            for _ in range(n)])
+    short = solve_equilibrium(m, dx, dy)
+    assert short.status == "certified" and short.certificate.certified
+    assert short.certificate.bound <= short.energy <= short.certificate.bound + short.certificate.tolerance
+    monkeypatch.setattr(least_energy, "QUICK_ROUNDS", 0)             # the whole search alone
+    whole = solve_equilibrium(m, dx, dy)
+    assert whole.status == "converged" and whole.certificate is None
+    np.testing.assert_allclose(short.q, whole.q, atol=1e-8)
+    assert short.energy == pytest.approx(whole.energy, abs=1e-10)
+    wells = float(np.max(np.abs(m.segments[0].critical_angles()[0])))
+    assert short.energy <= _reference_least(m, dx, dy, 40, 5, wells=wells, n_wells=40) + 1e-9
