@@ -128,6 +128,12 @@ class HomotopySolve:
         ``phc`` runs made (a run with failed paths is repeated, :func:`solve_homotopy`).
     consistent : bool
         The report checked out (:func:`_parse`): exit code 0, declared, listed and mixed-volume counts equal.
+    engine : str
+        ``"polyhedral"`` (``phc -b`` from the mixed-volume start system) or ``"parameter"`` (``phc -p`` from the
+        start roots of a generic instance, :mod:`.parameter_homotopy`).
+    note : str
+        How the roots were found, in words (:mod:`.parameter_homotopy`: the parameter homotopy, or why the
+        polyhedral solve answered); empty for a plain polyhedral solve.
     """
 
     roots: np.ndarray
@@ -140,6 +146,8 @@ class HomotopySolve:
     threads: int = 1
     attempts: int = 1
     consistent: bool = True
+    engine: str = "polyhedral"
+    note: str = ""
 
     @property
     def complete(self) -> bool:
@@ -392,20 +400,22 @@ def _run_phc(exe: str, text: str, names: list[str], n: int, threads: int, timeou
     return _parse(report, names, seconds, threads, proc.returncode)
 
 
-def _parse(report: str, names: list[str], seconds: float, threads: int, returncode: int = 0) -> HomotopySolve:
+def _parse(report: str, names: list[str], seconds: float, threads: int, returncode: int = 0,
+           paths: int | None = None) -> HomotopySolve:
     """Read phc's report: every path's end point, classified by its own line, with the totals checked.
 
     A report is ``consistent`` only when phc exited with 0, it states the mixed volume, the solution list's
     declared size equals the number of blocks and the mixed volume, every block ended at ``Re t = 1`` (phc
     prints a complex ``t`` whose imaginary part is not zero at the end of polyhedral paths) and
     maps every unknown by name. Clustered end points (two paths on one root: path jumping, a root may be
-    missing) count as failures."""
+    missing) count as failures. ``paths`` (the start solutions of a ``phc -p`` run, whose report states no mixed
+    volume) stands for the mixed volume."""
     nv = len(names)
     head, sep, sols = report.rpartition("THE SOLUTIONS")
     if not sep:
         raise SolverError("phc's output holds no solution list", status="phc_failed")
     counts = dict((k, int(v)) for k, v in _COUNT.findall(sols))
-    mv = _MV.findall(head)
+    mv = _MV.findall(head) if paths is None else [str(int(paths))]
     declared = re.search(r"^\s*:?\s*(\d+)\s+(\d+)\s*$", sols, flags=re.M)
     roots, regular = [], []
     blocks = re.split(r"^solution \d+ :", sols, flags=re.M)[1:]
@@ -559,6 +569,8 @@ def polish_roots(solve: HomotopySolve, q: np.ndarray, F: np.ndarray, regular: np
     if close:
         why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
     runs = f"{solve.attempts} run{'s' if solve.attempts > 1 else ''}"
-    report = (f"phc ({runs}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at infinity, "
-              f"{solve.singular} singular; {len(q)} real roots in range" + note + "".join(f"; {w}" for w in why))
+    engine = "parameter homotopy" if solve.engine == "parameter" else "polyhedral homotopy"
+    report = (f"phc ({runs}, {engine}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at "
+              f"infinity, {solve.singular} singular; {len(q)} real roots in range" + note
+              + "".join(f"; {w}" for w in why) + (f"; {solve.note}" if solve.note else ""))
     return PolishedRoots(found, solve.complete and lost == 0 and close == 0, report)

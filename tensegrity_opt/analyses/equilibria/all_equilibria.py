@@ -350,12 +350,13 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from ...numerics.homotopy import polish_roots, real_configurations, rest_points_at, solve_homotopy
+    from ...numerics.homotopy import polish_roots, real_configurations, rest_points_at
+    from ...numerics.parameter_homotopy import solve_parameter_homotopy
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
                                     f"(its path count grows ~8x a segment), got n = {m.n}", field="method")
-    sol = solve_homotopy(m, target, timeout=timeout)
+    sol = solve_parameter_homotopy(m, target, timeout=timeout)
     q, F, inside, regular = real_configurations(m, sol)
     # F = 0 equilibria (g = h = 0) lie outside the torus the mixed volume counts: added from the
     # segments' unloaded critical points (all of them, from each torque's quartic)

@@ -291,12 +291,13 @@ def _sorted(m: Manipulator, eqs: list[Equilibrium], force: np.ndarray) -> list[E
 
 # ----------------------------------------------------------------------------- F != 0: the homotopy
 def _homotopy(m: Manipulator, force: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from ...numerics.homotopy import polish_roots, real_force_configurations, solve_force_homotopy
+    from ...numerics.homotopy import polish_roots, real_force_configurations
+    from ...numerics.parameter_homotopy import solve_force_parameter_homotopy
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
                                     f"(its path count grows ~6x a segment), got n = {m.n}", field="method")
-    sol = solve_force_homotopy(m, force, timeout=timeout)
+    sol = solve_force_parameter_homotopy(m, force, timeout=timeout)
     q, inside, regular = real_force_configurations(m, sol)
     mdl = chain_solver(m)
     q = q[inside]

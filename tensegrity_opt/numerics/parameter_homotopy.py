@@ -1,0 +1,564 @@
+"""Every equilibrium by a parameter (coefficient-parameter, "cheater's") homotopy: a few paths a query.
+
+The polynomial systems of :mod:`.homotopy` keep their *structure* for a given number of segments ``n``;
+only their coefficients change from chain to chain and target to target. Every coefficient is linear in a
+parameter vector ``p``:
+
+* the displacement system (:func:`~.homotopy.polynomial_system`, unknowns ``z_1..z_n, g, h``): per segment
+  the four coefficients of its torque polynomial (powers ``2, 1, -1, -2`` of
+  :meth:`~tensegrity_opt.model.segment.Segment.torque_polynomial`; its ``z^0`` coefficient ``(A + B)/2`` is zero
+  identically), the link lengths ``l_j`` (each one parameter, tied across the two tip equations and its
+  stationarity row) and the tip target ``T`` and its conjugate ``T'`` (independent once complexified):
+  ``5 n + 2`` parameters (:func:`displacement_parameters`, :func:`displacement_family`);
+* the force system (:func:`~.homotopy.force_polynomial_system`, unknowns ``z_1..z_n``): the torque
+  coefficients and ``c_j = l_j g``, ``d_j = l_j h``: ``6 n`` parameters (:func:`force_parameters`,
+  :func:`force_family`).
+
+So ``F(x; p)`` is linear in ``p`` and PHCpack's linear homotopy ``(1 - t) gamma F(x; p0) + t F(x; p1)`` is
+``F(x; (1 - t) gamma p0 + t p1)``: every system on the path belongs to the family.
+
+Completeness
+------------
+The coefficient-parameter homotopy theorem (Morgan & Sommese 1989; Sommese & Wampler, *The Numerical
+Solution of Systems of Polynomials*, 2005, Thm. 7.1.1 and ch. 7.3): on the irreducible domain
+``X = (C*)^n x C^2`` (``(C*)^n`` for the force system) the number of isolated roots is the same number
+``N`` for all parameters off a proper algebraic subset (the generic root count of the *family*), and for
+a generic start ``p0`` and all but finitely many ``gamma`` on the unit circle the ``N`` paths from the
+isolated roots of ``F(x; p0)`` reach, as ``t -> 1``, every isolated root of ``F(x; p1)`` in ``X`` (with
+multiplicity), for *any* target ``p1`` in the family, including targets with zero coefficients (symmetric
+segments, ``a = b``): the paths in excess diverge (leave ``X``: ``|x| -> inf`` or some ``z_j -> 0``).
+
+* ``N`` and the start roots: one generic complex instance ``p0`` per ``n`` (random phases, magnitudes of a
+  typical chain), solved once by PHCpack's polyhedral homotopy (``phc -b``); the run counts only when every
+  path ended, none failed, the report checked out and no two roots coincide (else a new ``p0`` is drawn).
+  Generically no root has ``g = 0`` or ``h = 0`` (``n + 2`` equations in fewer unknowns), so the roots in
+  the torus ``(C*)^(n+2)`` that ``phc -b`` returns are all the isolated roots in ``X``. Measured ``N``
+  (equal to the mixed volume: the tied parameters do not lower the count): 8, 96, 832, 6272 (and 43648 for
+  ``n = 6``) for the displacement system, 4, 24, 128, 704, 3840 for the force system.
+* Every query tracks the ``N`` paths with ``phc -p`` (its continuation from given start solutions, in
+  ``threads`` processes over slices of the start roots, one ``gamma`` for all); the set is certified when
+  every path ended (a finite root at ``t = 1`` or diverged: "at infinity"), none failed, no two regular
+  end points coincide (path jumping), and every real root inside the range polished (:func:`~.homotopy.polish_roots`).
+  Singular end points (a degenerate equilibrium, several paths on one root) are kept as in :mod:`.homotopy`:
+  accepted at a looser distance from the real set and polished by Newton.
+* A run with a failed path is repeated once with a new ``gamma``; if paths still fail, the full polyhedral
+  solve (:func:`~.homotopy.solve_homotopy`) answers and the message says so.
+
+The start roots are kept on disk per machine (:func:`start_file`: ``TENSEGRITY_CACHE_DIR`` like the compiled
+kernels, a file per system kind, ``n``, structure and engine version :data:`ENGINE`); those of ``n <= 5``
+ship with the package (``tensegrity_opt/numerics/homotopy_starts``). A query whose start file is missing
+computes it first (one polyhedral solve of the generic instance) and stores it; the message says so.
+:func:`precompute` (CLI ``tensegrity-opt homotopy-precompute``) fills the cache ahead.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import tempfile
+import time
+from dataclasses import dataclass, replace
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import HomotopyUnavailableError, InvalidParameterError, SolverError
+from ..model.manipulator import Manipulator
+from .build import cache_dir
+from .homotopy import (
+    HomotopySolve,
+    _names,
+    _parse,
+    _residuals,
+    _solve,
+    _system_text,
+    force_polynomial_system,
+    phc_path,
+    polynomial_system,
+)
+
+__all__ = ["ENGINE", "KINDS", "StartSolutions", "displacement_parameters", "displacement_family",
+           "force_parameters", "force_family", "start_file", "load_start", "compute_start", "precompute",
+           "track", "solve_parameter_homotopy", "solve_force_parameter_homotopy", "TORQUE_POWERS"]
+
+#: The torque powers of a segment's parameters (:meth:`~tensegrity_opt.model.segment.Segment.torque_polynomial`
+#: without its identically-zero ``z^0``).
+TORQUE_POWERS = (2, 1, -1, -2)
+#: The two system kinds: the displacement (KKT) system and the force-controlled one.
+KINDS = ("displacement", "force")
+#: The engine version in the start files' names: the file format and PHCpack's version (a start file of
+#: another version is not used).
+ENGINE = "f1-phc2.4.86"
+#: The structure of the start systems: every segment general (``a != b`` or ``k1 != k2``); chains with
+#: symmetric segments lie in a sub-family, reached by the same paths (some diverge).
+STRUCTURE = "general"
+#: ``phc -p`` runs (each with a new ``gamma``) before the polyhedral fallback.
+ATTEMPTS = 2
+#: Two regular end points closer than this (max-norm, relative to ``1 + |x|``) are one root reached twice
+#: (path jumping: a root may be missing).
+CLUSTER_TOL = 1e-8
+#: PHCpack's continuation settings for the tracking (``phc -p``'s menu: number, value); see :func:`track`.
+SETTINGS: tuple[tuple[int, float], ...] = ((4, 0.01), (21, 1e-6), (23, 1e-6), (25, 1e-6), (27, 1e-6))
+_PACKAGED = Path(__file__).with_name("homotopy_starts")
+
+
+# ----------------------------------------------------------------------------- the families
+def _torque_parameters(m: Manipulator) -> np.ndarray:
+    out = np.zeros((m.n, len(TORQUE_POWERS)), dtype=complex)
+    for j, seg in enumerate(m.segments):
+        tp = seg.torque_polynomial()
+        out[j] = [tp.get(p, 0.0) for p in TORQUE_POWERS]
+    return out
+
+
+def displacement_parameters(m: Manipulator, target) -> np.ndarray:
+    """The ``5 n + 2`` parameters of the displacement system of ``m`` for the tip at ``target``: the torque
+    coefficients per segment (powers :data:`TORQUE_POWERS`), the link lengths, ``T = (x_t - b_1) + i y_t``
+    and ``T' = conj(T)``."""
+    T = complex(float(target[0]) - m.base_length, float(target[1]))
+    return np.concatenate([_torque_parameters(m).ravel(), np.asarray(m.link_lengths, dtype=complex),
+                           [T, T.conjugate()]])
+
+
+def force_parameters(m: Manipulator, force) -> np.ndarray:
+    """The ``6 n`` parameters of the force system of ``m`` under the tip load ``force``: the torque coefficients
+    per segment, ``c_j = l_j g`` and ``d_j = l_j h`` (``g = Fx + i Fy``, ``h = conj(g)``)."""
+    g = complex(float(force[0]), float(force[1]))
+    l = np.asarray(m.link_lengths, dtype=complex)
+    return np.concatenate([_torque_parameters(m).ravel(), l * g, l * g.conjugate()])
+
+
+def _torque_rows(n: int, nv: int, p: np.ndarray) -> list[dict]:
+    """``E_j' - E_{j+1}'`` (``E_n'`` last) as dicts, from the torque parameters ``p`` (n, 4)."""
+    def dE(j: int) -> dict:
+        out = {}
+        for k, pw in enumerate(TORQUE_POWERS):
+            e = [0] * nv
+            e[j] = pw
+            out[tuple(e)] = complex(p[j, k])
+        return out
+
+    dEs = [dE(j) for j in range(n)]
+    rows = []
+    for j in range(n):
+        row = dict(dEs[j])
+        if j < n - 1:
+            for e, c in dEs[j + 1].items():
+                row[e] = row.get(e, 0.0) - c
+        rows.append(row)
+    return rows
+
+
+def _direction(nv: int, j: int, sign: int, extra: int | None = None) -> tuple[int, ...]:
+    e = [0] * nv
+    for i in range(j + 1):
+        e[i] = 2 * sign
+    if extra is not None:
+        e[extra] += 1
+    return tuple(e)
+
+
+def displacement_family(n: int, p) -> list[dict]:
+    """The displacement system's ``n + 2`` Laurent polynomials (dicts exponent -> coefficient; unknowns
+    ``z_1..z_n, g, h``) at the parameters ``p`` (:func:`displacement_parameters`), linear in ``p``: the system
+    of :func:`~.homotopy.polynomial_system` for real parameters."""
+    p = np.asarray(p, dtype=complex)
+    nv = n + 2
+    tq, l, T, Tc = p[:4 * n].reshape(n, 4), p[4 * n:5 * n], p[5 * n], p[5 * n + 1]
+    zero = (0,) * nv
+    tip1: dict = {zero: -T}
+    tip2: dict = {zero: -Tc}
+    for j in range(n):
+        tip1[_direction(nv, j, 1)] = complex(l[j])
+        tip2[_direction(nv, j, -1)] = complex(l[j])
+    rows = _torque_rows(n, nv, tq)
+    for j in range(n):
+        rows[j][_direction(nv, j, -1, n)] = -complex(l[j]) / 2j
+        rows[j][_direction(nv, j, 1, n + 1)] = complex(l[j]) / 2j
+    return [tip1, tip2] + rows
+
+
+def force_family(n: int, p) -> list[dict]:
+    """The force system's ``n`` Laurent polynomials (unknowns ``z_1..z_n``) at the parameters ``p``
+    (:func:`force_parameters`), linear in ``p``."""
+    p = np.asarray(p, dtype=complex)
+    tq, c, d = p[:4 * n].reshape(n, 4), p[4 * n:5 * n], p[5 * n:6 * n]
+    rows = _torque_rows(n, n, tq)
+    for j in range(n):
+        rows[j][_direction(n, j, -1)] = -complex(c[j]) / 2j
+        rows[j][_direction(n, j, 1)] = complex(d[j]) / 2j
+    return rows
+
+
+def _family(kind: str):
+    return displacement_family if kind == "displacement" else force_family
+
+
+def _unknowns(kind: str, n: int) -> list[str]:
+    return _names(n) if kind == "displacement" else _names(n)[:n]
+
+
+def _typical_parameters(kind: str, n: int) -> np.ndarray:
+    """The parameters of a typical chain (general segments of mixed sizes and preloads, tip pulled in by a
+    quarter of its length, or a moderate load): the magnitudes of the random start parameters."""
+    segs = []
+    for j in range(n):
+        a, b = 0.5 + 0.1 * (j % 3), 1.0 - 0.05 * (j % 2)
+        segs.append({"a": a, "b": b, "k": [1.0 + 0.1 * j, 1.3], "L0": [1.1 * b, 0.9 * b]})
+    m = Manipulator.from_dict({"segments": segs})
+    if kind == "displacement":
+        return displacement_parameters(m, m.target(0.3 * m.straight_length, 0.1 * m.straight_length))
+    return force_parameters(m, (-0.3, 0.2))
+
+
+# ----------------------------------------------------------------------------- the start solutions
+@dataclass(frozen=True)
+class StartSolutions:
+    """The isolated roots of one generic instance of a family, the start of every parameter homotopy.
+
+    Attributes
+    ----------
+    kind : str
+        ``"displacement"`` or ``"force"`` (:data:`KINDS`).
+    n : int
+        Segments.
+    parameters : ndarray complex
+        The generic start parameters ``p0`` (:func:`displacement_parameters` / :func:`force_parameters` layout).
+    roots : ndarray (N, nv) complex
+        Its ``N`` isolated roots (the generic root count of the family).
+    paths : int
+        Paths of the polyhedral solve that found them (its mixed volume).
+    seconds : float
+        Wall time of that solve.
+    source : str
+        Where they came from: ``"packaged"``, ``"cache"`` or ``"computed"`` (this call).
+    """
+
+    kind: str
+    n: int
+    parameters: np.ndarray
+    roots: np.ndarray
+    paths: int
+    seconds: float
+    source: str = "cache"
+
+    @property
+    def count(self) -> int:
+        """``N``, the number of start roots (paths a query tracks)."""
+        return int(self.roots.shape[0])
+
+
+def _file_name(kind: str, n: int) -> str:
+    return f"{kind}-n{n}-{STRUCTURE}-{ENGINE}.npz"
+
+
+def start_file(kind: str, n: int) -> Path:
+    """Where the start roots of ``kind`` and ``n`` are cached on this machine
+    (``<cache_dir>/homotopy/<kind>-n<n>-<structure>-<engine>.npz``)."""
+    return cache_dir() / "homotopy" / _file_name(kind, n)
+
+
+def _check_kind(kind: str) -> None:
+    if kind not in KINDS:
+        raise InvalidParameterError(f"kind must be one of {KINDS}, got {kind!r}", field="kind")
+
+
+def _read(path: Path, kind: str, n: int, source: str) -> StartSolutions | None:
+    try:
+        with np.load(path) as f:
+            start = StartSolutions(kind, n, np.asarray(f["parameters"], complex), np.asarray(f["roots"], complex),
+                                   int(f["paths"]), float(f["seconds"]), source)
+    except (OSError, KeyError, ValueError):
+        return None
+    nv = len(_unknowns(kind, n))
+    if start.roots.ndim != 2 or start.roots.shape[1] != nv or start.roots.shape[0] == 0:
+        return None
+    # the roots must solve their system (a damaged or foreign file is ignored)
+    if np.max(_residuals(_family(kind)(n, start.parameters), start.roots)) > 1e-8:
+        return None
+    return start
+
+
+def load_start(kind: str, n: int) -> StartSolutions | None:
+    """The start roots of ``kind`` and ``n`` from this machine's cache, else from the package's data, else
+    ``None``. A file whose roots do not solve its system (residual above ``1e-8``) is ignored."""
+    _check_kind(kind)
+    for path, source in ((start_file(kind, n), "cache"), (_PACKAGED / _file_name(kind, n), "packaged")):
+        if path.exists():
+            start = _read(path, kind, n, source)
+            if start is not None:
+                return start
+    return None
+
+
+def _save(start: StartSolutions, path: Path) -> None:
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=path.stem, suffix=".tmp.npz")
+    os.close(fd)
+    np.savez_compressed(tmp, parameters=start.parameters, roots=start.roots, paths=start.paths,
+                        seconds=start.seconds)
+    os.replace(tmp, path)                   # atomic: concurrent writers leave one complete file
+
+
+def compute_start(kind: str, n: int, *, threads: int | None = None, timeout: float | None = None,
+                  attempts: int = 4, seed: int | None = None, store: bool = True) -> StartSolutions:
+    """Solve a generic instance of the family ``kind`` for ``n`` segments by ``phc -b`` and (``store``) cache
+    its roots (:func:`start_file`).
+
+    The start parameters are the :func:`_typical_parameters` magnitudes with random phases and a random
+    factor in ``[0.5, 1.5]`` (generic with probability one). A solve counts when PHCpack's report checked out,
+    no path failed or diverged, and no two roots coincide; else a new instance is drawn, up to ``attempts``.
+
+    Raises
+    ------
+    SolverError
+        (``RuntimeError``, status ``"phc_failed"``) when no attempt gave a clean solve.
+    """
+    _check_kind(kind)
+    rng = np.random.default_rng(seed)
+    names = _unknowns(kind, n)
+    typical = _typical_parameters(kind, n)
+    why = ""
+    deadline = None if timeout is None else time.monotonic() + float(timeout)
+    for _ in range(max(1, int(attempts))):
+        left = None if deadline is None else max(1.0, deadline - time.monotonic())
+        p0 = typical * rng.uniform(0.5, 1.5, typical.size) * np.exp(2j * np.pi * rng.random(typical.size))
+        polys = _family(kind)(n, p0)
+        sol = _solve(_system_text(polys, names), names, n, threads, left, 1)
+        if not sol.complete or sol.at_infinity or sol.roots.shape[0] != sol.paths:
+            why = f"{sol.failures} failed, {sol.at_infinity} diverged of {sol.paths} paths"
+            continue
+        if _clusters(sol.roots, np.ones(sol.roots.shape[0], bool)):
+            why = "two roots coincide"
+            continue
+        start = StartSolutions(kind, n, p0, sol.roots, sol.paths, sol.seconds, "computed")
+        if store:
+            _save(start, start_file(kind, n))
+        return start
+    raise SolverError(f"no clean polyhedral solve of a generic {kind} system, n = {n} ({why})",
+                      status="phc_failed")
+
+
+def precompute(max_segments: int = 5, kinds=KINDS, *, min_segments: int = 2, force: bool = False,
+               threads: int | None = None, progress=None) -> list[tuple[str, int, StartSolutions]]:
+    """Compute and cache the start roots of every ``kind`` in ``kinds`` for ``n = min_segments..max_segments``
+    (those already cached or packaged are kept unless ``force``). ``progress(kind, n, start)`` is called after
+    each. Returns ``(kind, n, start)`` per system."""
+    out = []
+    for kind in kinds:
+        _check_kind(kind)
+        for n in range(int(min_segments), int(max_segments) + 1):
+            start = None if force else load_start(kind, n)
+            if start is None:
+                start = compute_start(kind, n, threads=threads)
+            out.append((kind, n, start))
+            if progress is not None:
+                progress(kind, n, start)
+    return out
+
+
+# ----------------------------------------------------------------------------- tracking
+def _clusters(roots: np.ndarray, regular: np.ndarray) -> int:
+    """Pairs of regular roots closer than :data:`CLUSTER_TOL` (relative): one root reached by two paths."""
+    R = roots[regular]
+    if R.shape[0] < 2:
+        return 0
+    scale = 1.0 + np.abs(R).max(axis=1)
+    # sort along a random projection, then compare neighbours within the tolerance window
+    key = (R @ np.exp(1j * np.arange(1, R.shape[1] + 1))).real
+    order = np.argsort(key)
+    R, key, scale = R[order], key[order], scale[order]
+    count = 0
+    for i in range(R.shape[0]):
+        j = i + 1
+        while j < R.shape[0] and key[j] - key[i] <= CLUSTER_TOL * R.shape[1] * max(scale[i], scale[j]):
+            if np.abs(R[j] - R[i]).max() <= CLUSTER_TOL * max(scale[i], scale[j]):
+                count += 1
+            j += 1
+    return count
+
+
+def _script(target: str, out: str, start: str, gamma: complex, settings) -> str:
+    """The answers to ``phc -p``'s dialogue: target, output, no separate solution file, start file, homotopy
+    ``gamma (1 - t) Q + t P`` (relaxation ``k = 1``, accessibility constant ``gamma``), continuation settings,
+    no intermediate output."""
+    lines = [target, out, "n", start, "k", "1", "a", repr(gamma.real), repr(gamma.imag), "0"]
+    for key, value in settings:
+        lines += [str(int(key)), repr(float(value)) if not float(value).is_integer() else str(int(value))]
+    lines += ["0", "0"]
+    return "\n".join(lines) + "\n"
+
+
+def _solutions_text(roots: np.ndarray, names: list[str]) -> str:
+    """Start solutions in PHCpack's format, each at ``t = 0``."""
+    lines = ["THE SOLUTIONS :", f"{roots.shape[0]} {len(names)}", "=" * 75]
+    zero = f"{0.0: .17E}"
+    for k, r in enumerate(roots):
+        lines += [f"solution {k + 1} :", f"t : {zero}  {zero}", "m : 1", "the solution for t :"]
+        lines += [f" {nm} : {v.real: .17E}  {v.imag: .17E}" for nm, v in zip(names, r)]
+        lines.append("== err :  0.000E+00 = rco :  1.000E+00 = res :  0.000E+00 ==")
+    return "\n".join(lines) + "\n"
+
+
+def track(target_text: str, start: StartSolutions, *, threads: int | None = None, timeout: float | None = None,
+          gamma: complex | None = None, settings=None, rng=None) -> HomotopySolve:
+    """Track the ``N`` start roots of ``start`` to the system ``target_text`` (PHCpack's format, a member of
+    the family) by ``phc -p``: ``threads`` processes over slices of the start roots, all with the homotopy
+    ``gamma (1 - t) F(x; p0) + t F(x; p1)`` (``gamma`` random on the unit circle unless given).
+
+    Returns the end points as a :class:`~.homotopy.HomotopySolve` (``paths = N``; ``failures`` counts failed
+    paths and pairs of regular end points that coincide across slices; ``consistent`` when every slice's
+    report checked out).
+
+    Raises
+    ------
+    SolverError
+        (``RuntimeError``) status ``"phc_timeout"`` or ``"phc_failed"``.
+    """
+    exe = phc_path()
+    if exe is None:
+        raise HomotopyUnavailableError(
+            "the homotopy method needs PHCpack's 'phc' on the PATH: install the Debian package 'phcpack' "
+            "(apt-get install phcpack) or set TENSEGRITY_PHC to the executable", field="method")
+    if threads is None:
+        threads = max(1, min(8, len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else 1))
+    rng = np.random.default_rng() if rng is None else rng
+    if gamma is None:
+        gamma = complex(np.exp(2j * np.pi * rng.random()))
+    settings = SETTINGS if settings is None else settings
+    names = _unknowns(start.kind, start.n)
+    N = start.count
+    k = max(1, min(int(threads), N))
+    slices = np.array_split(np.arange(N), k)
+    start_sys = _system_text(_family(start.kind)(start.n, start.parameters), names)
+    t0 = time.perf_counter()
+    with tempfile.TemporaryDirectory(prefix="tensegrity_phcp_") as tmp:
+        with open(os.path.join(tmp, "target.phc"), "w") as f:
+            f.write(target_text)
+        procs = []
+        try:
+            for i, rows in enumerate(slices):
+                with open(os.path.join(tmp, f"start{i}.phc"), "w") as f:
+                    f.write(start_sys + "\n" + _solutions_text(start.roots[rows], names))
+                script = _script("target.phc", f"out{i}.txt", f"start{i}.phc", gamma, settings)
+                proc = subprocess.Popen([exe, "-p"], cwd=tmp, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                                        stderr=subprocess.PIPE)
+                procs.append((proc, script))
+            for proc, script in procs:
+                proc.stdin.write(script.encode())
+                proc.stdin.close()
+            deadline = None if timeout is None else time.monotonic() + float(timeout)
+            codes = []
+            for proc, _ in procs:
+                left = None if deadline is None else max(0.0, deadline - time.monotonic())
+                try:
+                    codes.append(proc.wait(timeout=left))
+                except subprocess.TimeoutExpired:
+                    raise SolverError(f"phc -p did not finish within {timeout:g} s (n = {start.n})",
+                                      status="phc_timeout") from None
+        finally:
+            for proc, _ in procs:
+                if proc.poll() is None:
+                    proc.kill()
+                    proc.wait()
+                if proc.stderr is not None:
+                    proc.stderr.close()
+        seconds = time.perf_counter() - t0
+        runs = []
+        for i, rows in enumerate(slices):
+            path = os.path.join(tmp, f"out{i}.txt")
+            if not os.path.exists(path):
+                raise SolverError(f"phc -p wrote no output (exit code {codes[i]})", status="phc_failed")
+            with open(path, errors="replace") as f:
+                runs.append(_parse(f.read(), names, seconds, 1, codes[i], paths=len(rows)))
+    roots = np.vstack([r.roots for r in runs]) if runs else np.zeros((0, len(names)), complex)
+    regular = np.concatenate([r.regular for r in runs])
+    clustered = _clusters(roots, regular)
+    return HomotopySolve(roots=roots, regular=regular, paths=N, failures=sum(r.failures for r in runs) + clustered,
+                         at_infinity=sum(r.at_infinity for r in runs), singular=sum(r.singular for r in runs),
+                         seconds=seconds, threads=k, attempts=1, consistent=all(r.consistent for r in runs),
+                         engine="parameter")
+
+
+# ----------------------------------------------------------------------------- the solves
+def _parameter_solve(kind: str, n: int, target_text: str, polyhedral, *, threads: int | None,
+                     timeout: float | None, attempts: int = ATTEMPTS) -> HomotopySolve:
+    """Track from the cached start roots (computing them when missing), repeat once with a new ``gamma`` when
+    paths fail, else the polyhedral solve ``polyhedral(timeout)``; the result's ``note`` says which."""
+    t0 = time.monotonic()
+    deadline = None if timeout is None else t0 + float(timeout)
+
+    def left() -> float | None:
+        return None if deadline is None else deadline - time.monotonic()
+
+    start = load_start(kind, n)
+    note = ""
+    if start is None:
+        try:
+            start = compute_start(kind, n, threads=threads, timeout=timeout)
+        except SolverError as exc:
+            if exc.status == "phc_timeout":
+                raise
+            sol = polyhedral(left())
+            return replace(sol, note=f"no start solutions for n = {n} ({exc}): the polyhedral solve answered")
+        note = (f"; the start solutions (n = {n}, {start.count} roots) were missing: computed now "
+                f"({start.seconds:.1f} s) and stored in {start_file(kind, n)}")
+    best = None
+    spent = 0.0
+    for attempt in range(max(1, int(attempts))):
+        rest = left()
+        if rest is not None and rest <= 0.0:
+            break
+        try:
+            sol = track(target_text, start, threads=threads, timeout=rest)
+        except SolverError as exc:
+            if exc.status == "phc_timeout":
+                raise
+            note += f"; phc -p failed ({exc})"
+            break
+        spent += sol.seconds
+        sol = replace(sol, attempts=attempt + 1, seconds=spent)
+        if best is None or (not sol.complete, sol.failures) < (not best.complete, best.failures):
+            best = sol
+        if sol.complete:
+            return replace(sol, note=f"parameter homotopy from {start.count} start solutions "
+                                     f"({start.source})" + note)
+    if best is None:
+        why = "phc -p did not run"
+    elif best.failures:
+        why = f"{best.failures} of {best.paths} paths failed in {best.attempts} runs"
+    else:
+        why = f"its report did not check out in {best.attempts} runs"
+    rest = left()
+    if best is not None and rest is not None and rest <= 0.0:
+        return replace(best, note=f"parameter homotopy from {start.count} start solutions: {why}, no time left "
+                                  "for the polyhedral fallback" + note)
+    sol = polyhedral(rest)
+    return replace(sol, seconds=sol.seconds + spent,
+                   note=f"the parameter homotopy from {start.count} start solutions was not complete ({why}): the "
+                        "full polyhedral solve answered" + note)
+
+
+def solve_parameter_homotopy(m: Manipulator, target, *, threads: int | None = None,
+                             timeout: float | None = None, attempts: int = ATTEMPTS) -> HomotopySolve:
+    """Every isolated root of the displacement system (:func:`~.homotopy.polynomial_system`) by the parameter
+    homotopy from the cached start roots (see the module), else by the polyhedral solve
+    (:func:`~.homotopy.solve_homotopy`); ``note`` says which. Same roots, errors and parameters as
+    :func:`~.homotopy.solve_homotopy` (``timeout`` for the whole call)."""
+    from .homotopy import solve_homotopy
+
+    return _parameter_solve("displacement", m.n, polynomial_system(m, target),
+                            lambda left: solve_homotopy(m, target, threads=threads, timeout=left),
+                            threads=threads, timeout=timeout, attempts=attempts)
+
+
+def solve_force_parameter_homotopy(m: Manipulator, force, *, threads: int | None = None,
+                                   timeout: float | None = None, attempts: int = ATTEMPTS) -> HomotopySolve:
+    """Every isolated root of the force system (:func:`~.homotopy.force_polynomial_system`, ``force != 0``) by
+    the parameter homotopy, else the polyhedral :func:`~.homotopy.solve_force_homotopy`; as
+    :func:`solve_parameter_homotopy`."""
+    from .homotopy import solve_force_homotopy
+
+    return _parameter_solve("force", m.n, force_polynomial_system(m, force),
+                            lambda left: solve_force_homotopy(m, force, threads=threads, timeout=left),
+                            threads=threads, timeout=timeout, attempts=attempts)
