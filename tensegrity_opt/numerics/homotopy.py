@@ -134,6 +134,8 @@ class HomotopySolve:
     note : str
         How the roots were found, in words (:mod:`.parameter_homotopy`: the parameter homotopy, or why the
         polyhedral solve answered); empty for a plain polyhedral solve.
+    retracked : int
+        Parameter homotopy: paths tracked a second time with careful settings (failed or jumped the first time).
     """
 
     roots: np.ndarray
@@ -148,6 +150,7 @@ class HomotopySolve:
     consistent: bool = True
     engine: str = "polyhedral"
     note: str = ""
+    retracked: int = 0
 
     @property
     def complete(self) -> bool:
@@ -400,22 +403,20 @@ def _run_phc(exe: str, text: str, names: list[str], n: int, threads: int, timeou
     return _parse(report, names, seconds, threads, proc.returncode)
 
 
-def _parse(report: str, names: list[str], seconds: float, threads: int, returncode: int = 0,
-           paths: int | None = None) -> HomotopySolve:
+def _parse(report: str, names: list[str], seconds: float, threads: int, returncode: int = 0) -> HomotopySolve:
     """Read phc's report: every path's end point, classified by its own line, with the totals checked.
 
     A report is ``consistent`` only when phc exited with 0, it states the mixed volume, the solution list's
     declared size equals the number of blocks and the mixed volume, every block ended at ``Re t = 1`` (phc
     prints a complex ``t`` whose imaginary part is not zero at the end of polyhedral paths) and
     maps every unknown by name. Clustered end points (two paths on one root: path jumping, a root may be
-    missing) count as failures. ``paths`` (the start solutions of a ``phc -p`` run, whose report states no mixed
-    volume) stands for the mixed volume."""
+    missing) count as failures."""
     nv = len(names)
     head, sep, sols = report.rpartition("THE SOLUTIONS")
     if not sep:
         raise SolverError("phc's output holds no solution list", status="phc_failed")
     counts = dict((k, int(v)) for k, v in _COUNT.findall(sols))
-    mv = _MV.findall(head) if paths is None else [str(int(paths))]
+    mv = _MV.findall(head)
     declared = re.search(r"^\s*:?\s*(\d+)\s+(\d+)\s*$", sols, flags=re.M)
     roots, regular = [], []
     blocks = re.split(r"^solution \d+ :", sols, flags=re.M)[1:]

@@ -98,7 +98,13 @@ ATTEMPTS = 2
 #: (path jumping: a root may be missing).
 CLUSTER_TOL = 1e-8
 #: PHCpack's continuation settings for the tracking (``phc -p``'s menu: number, value); see :func:`track`.
+#: Measured on the oracle chains (n = 4, 5): PHCpack's defaults take ~2.7 (n = 4) and ~5 ms (n = 5) of CPU a path,
+#: these ~1.8 and ~3.4 ms (~30-45 steps, ~100-130 Newton iterations a path); larger steps, other predictors
+#: or more corrector iterations were slower or made paths jump.
 SETTINGS: tuple[tuple[int, float], ...] = ((4, 0.01), (21, 1e-6), (23, 1e-6), (25, 1e-6), (27, 1e-6))
+#: The settings a failed or jumped path is tracked again with: steps of at most 0.02, tolerances 1e-10 along
+#: the path.
+CAREFUL: tuple[tuple[int, float], ...] = ((11, 0.02), (21, 1e-10), (23, 1e-10), (25, 1e-10), (27, 1e-10))
 _PACKAGED = Path(__file__).with_name("homotopy_starts")
 
 
@@ -358,24 +364,33 @@ def precompute(max_segments: int = 5, kinds=KINDS, *, min_segments: int = 2, for
 
 
 # ----------------------------------------------------------------------------- tracking
-def _clusters(roots: np.ndarray, regular: np.ndarray) -> int:
-    """Pairs of regular roots closer than :data:`CLUSTER_TOL` (relative): one root reached by two paths."""
-    R = roots[regular]
-    if R.shape[0] < 2:
-        return 0
+def _cluster_pairs(roots: np.ndarray, rows: np.ndarray) -> set[int]:
+    """The rows (of ``rows``) of ``roots`` that coincide with another within :data:`CLUSTER_TOL` (max-norm,
+    relative to ``1 + |x|``): one root reached by two paths (path jumping: a root may be missing)."""
+    rows = np.asarray(rows, dtype=int)
+    if rows.size < 2:
+        return set()
+    R = roots[rows]
     scale = 1.0 + np.abs(R).max(axis=1)
-    # sort along a random projection, then compare neighbours within the tolerance window
+    # sorted along a fixed projection, neighbours compared within the tolerance window
     key = (R @ np.exp(1j * np.arange(1, R.shape[1] + 1))).real
     order = np.argsort(key)
-    R, key, scale = R[order], key[order], scale[order]
-    count = 0
-    for i in range(R.shape[0]):
-        j = i + 1
-        while j < R.shape[0] and key[j] - key[i] <= CLUSTER_TOL * R.shape[1] * max(scale[i], scale[j]):
-            if np.abs(R[j] - R[i]).max() <= CLUSTER_TOL * max(scale[i], scale[j]):
-                count += 1
-            j += 1
-    return count
+    out: set[int] = set()
+    for a in range(order.size):
+        i = order[a]
+        for b in range(a + 1, order.size):
+            j = order[b]
+            tol = CLUSTER_TOL * max(scale[i], scale[j])
+            if key[j] - key[i] > tol * R.shape[1]:
+                break
+            if np.abs(R[j] - R[i]).max() <= tol:
+                out.update((int(rows[i]), int(rows[j])))
+    return out
+
+
+def _clusters(roots: np.ndarray, regular: np.ndarray) -> int:
+    """Regular roots that coincide with another (:func:`_cluster_pairs`)."""
+    return len(_cluster_pairs(roots, np.flatnonzero(regular)))
 
 
 def _script(target: str, out: str, start: str, gamma: complex, settings) -> str:
@@ -384,7 +399,7 @@ def _script(target: str, out: str, start: str, gamma: complex, settings) -> str:
     no intermediate output."""
     lines = [target, out, "n", start, "k", "1", "a", repr(gamma.real), repr(gamma.imag), "0"]
     for key, value in settings:
-        lines += [str(int(key)), repr(float(value)) if not float(value).is_integer() else str(int(value))]
+        lines += [str(int(key)), str(int(value)) if float(value).is_integer() else repr(float(value))]
     lines += ["0", "0"]
     return "\n".join(lines) + "\n"
 
@@ -400,15 +415,112 @@ def _solutions_text(roots: np.ndarray, names: list[str]) -> str:
     return "\n".join(lines) + "\n"
 
 
+#: Per-path end states of :func:`track`.
+FINITE, INFINITE, FAILED = 0, 1, 2
+_NUM = r"[-+]?\d+\.\d+E[-+]\d+"
+
+
+def _blocks(report: str, names: list[str], count: int) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    """Read a ``phc -p`` report of ``count`` paths in order: ``(state (count,), roots (count, nv), regular
+    (count,), consistent)``. A path's state is :data:`FINITE` (ended at ``t = 1`` on a finite root, every unknown
+    read), :data:`INFINITE` (phc classified it "at infinity") or :data:`FAILED` (phc's "failure", "no solution",
+    "clustered", a path short of ``t = 1``, an unreadable block). ``consistent``: the solution list's declared
+    size and its number of blocks equal ``count``."""
+    import re
+
+    state = np.full(count, FAILED)
+    roots = np.full((count, len(names)), np.nan + 0j)
+    regular = np.zeros(count, dtype=bool)
+    _, sep, sols = report.rpartition("THE SOLUTIONS")
+    if not sep:
+        return state, roots, regular, False
+    declared = re.search(r"^\s*:?\s*(\d+)\s+(\d+)\s*$", sols, flags=re.M)
+    blocks = re.split(r"^solution \d+ :", sols, flags=re.M)[1:]
+    consistent = declared is not None and int(declared.group(1)) == len(blocks) == count
+    for k, blk in enumerate(blocks[:count]):
+        t = re.search(r"^t :\s*(" + _NUM + r")\s+(" + _NUM + r")", blk, flags=re.M)
+        found = re.search(r"^== err.*==\s*$", blk, flags=re.M)
+        tail = found.group(0) if found else ""
+        if "the solution for t" not in blk or t is None or not tail:
+            continue
+        if "failure" in tail or "no solution" in tail or "clustered" in tail:
+            continue
+        if "infinity" in tail or "infinite" in tail:
+            state[k] = INFINITE
+            continue
+        vals = dict((v, complex(float(r), float(i))) for v, r, i in re.findall(
+            r"^\s*(\w+)\s*:\s*(" + _NUM + r")\s+(" + _NUM + r")\s*$", blk.split("the solution for t :", 1)[1],
+            flags=re.M))
+        if abs(float(t.group(1)) - 1.0) > 1e-8 or any(v not in vals for v in names):
+            continue
+        state[k] = FINITE
+        roots[k] = [vals[v] for v in names]
+        regular[k] = "singular" not in tail
+    return state, roots, regular, consistent
+
+
+def _run_slices(exe: str, target_text: str, start: StartSolutions, rows: np.ndarray, k: int, gamma: complex,
+                settings, deadline: float | None) -> tuple[np.ndarray, np.ndarray, np.ndarray, bool]:
+    """``phc -p`` in ``k`` processes over the start roots ``rows``: per row its state, end point and regularity
+    (:func:`_blocks`), and whether every report checked out (exit code 0, counts)."""
+    names = _unknowns(start.kind, start.n)
+    slices = [s for s in np.array_split(np.asarray(rows, dtype=int), max(1, min(k, len(rows)))) if s.size]
+    start_sys = _system_text(_family(start.kind)(start.n, start.parameters), names)
+    state = np.full(len(rows), FAILED)
+    roots = np.full((len(rows), len(names)), np.nan + 0j)
+    regular = np.zeros(len(rows), dtype=bool)
+    consistent = True
+    with tempfile.TemporaryDirectory(prefix="tensegrity_phcp_") as tmp:
+        with open(os.path.join(tmp, "target.phc"), "w") as f:
+            f.write(target_text)
+        procs = []
+        try:
+            for i, sl in enumerate(slices):
+                with open(os.path.join(tmp, f"start{i}.phc"), "w") as f:
+                    f.write(start_sys + "\n" + _solutions_text(start.roots[sl], names))
+                proc = subprocess.Popen([exe, "-p"], cwd=tmp, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
+                                        stderr=subprocess.DEVNULL)
+                procs.append(proc)
+                proc.stdin.write(_script("target.phc", f"out{i}.txt", f"start{i}.phc", gamma, settings).encode())
+                proc.stdin.close()
+            codes = []
+            for proc in procs:
+                left = None if deadline is None else max(0.0, deadline - time.monotonic())
+                try:
+                    codes.append(proc.wait(timeout=left))
+                except subprocess.TimeoutExpired:
+                    raise SolverError(f"phc -p did not finish in time (n = {start.n})", status="phc_timeout") from None
+        finally:
+            for proc in procs:
+                if proc.poll() is None:
+                    proc.kill()
+                    proc.wait()
+        at = 0
+        for i, sl in enumerate(slices):
+            path = os.path.join(tmp, f"out{i}.txt")
+            if not os.path.exists(path):
+                raise SolverError(f"phc -p wrote no output (exit code {codes[i]})", status="phc_failed")
+            with open(path, errors="replace") as f:
+                st, rt, rg, ok = _blocks(f.read(), names, sl.size)
+            state[at:at + sl.size], roots[at:at + sl.size], regular[at:at + sl.size] = st, rt, rg
+            consistent = consistent and ok and codes[i] == 0
+            at += sl.size
+    return state, roots, regular, consistent
+
+
 def track(target_text: str, start: StartSolutions, *, threads: int | None = None, timeout: float | None = None,
-          gamma: complex | None = None, settings=None, rng=None) -> HomotopySolve:
+          gamma: complex | None = None, settings=None, careful=None, rng=None) -> HomotopySolve:
     """Track the ``N`` start roots of ``start`` to the system ``target_text`` (PHCpack's format, a member of
-    the family) by ``phc -p``: ``threads`` processes over slices of the start roots, all with the homotopy
+    the family) by ``phc -p``: ``threads`` processes over slices of the start roots, all on the one homotopy
     ``gamma (1 - t) F(x; p0) + t F(x; p1)`` (``gamma`` random on the unit circle unless given).
 
-    Returns the end points as a :class:`~.homotopy.HomotopySolve` (``paths = N``; ``failures`` counts failed
-    paths and pairs of regular end points that coincide across slices; ``consistent`` when every slice's
-    report checked out).
+    Paths are tracked with ``settings`` (default :data:`SETTINGS`: quick); the paths that failed, and those
+    whose regular end points coincide with another's (path jumping), are tracked again on the *same* homotopy
+    with ``careful`` settings (default :data:`CAREFUL`: small steps, tight tolerances). A path is the same path
+    however carefully it is followed, so the end points stay those of one homotopy.
+
+    Returns the end points as a :class:`~.homotopy.HomotopySolve` (``paths = N``; ``failures`` counts the paths
+    that failed again or still coincide; ``consistent`` when every report checked out).
 
     Raises
     ------
@@ -426,58 +538,27 @@ def track(target_text: str, start: StartSolutions, *, threads: int | None = None
     if gamma is None:
         gamma = complex(np.exp(2j * np.pi * rng.random()))
     settings = SETTINGS if settings is None else settings
-    names = _unknowns(start.kind, start.n)
+    careful = CAREFUL if careful is None else careful
+    deadline = None if timeout is None else time.monotonic() + float(timeout)
     N = start.count
-    k = max(1, min(int(threads), N))
-    slices = np.array_split(np.arange(N), k)
-    start_sys = _system_text(_family(start.kind)(start.n, start.parameters), names)
     t0 = time.perf_counter()
-    with tempfile.TemporaryDirectory(prefix="tensegrity_phcp_") as tmp:
-        with open(os.path.join(tmp, "target.phc"), "w") as f:
-            f.write(target_text)
-        procs = []
-        try:
-            for i, rows in enumerate(slices):
-                with open(os.path.join(tmp, f"start{i}.phc"), "w") as f:
-                    f.write(start_sys + "\n" + _solutions_text(start.roots[rows], names))
-                script = _script("target.phc", f"out{i}.txt", f"start{i}.phc", gamma, settings)
-                proc = subprocess.Popen([exe, "-p"], cwd=tmp, stdin=subprocess.PIPE, stdout=subprocess.DEVNULL,
-                                        stderr=subprocess.PIPE)
-                procs.append((proc, script))
-            for proc, script in procs:
-                proc.stdin.write(script.encode())
-                proc.stdin.close()
-            deadline = None if timeout is None else time.monotonic() + float(timeout)
-            codes = []
-            for proc, _ in procs:
-                left = None if deadline is None else max(0.0, deadline - time.monotonic())
-                try:
-                    codes.append(proc.wait(timeout=left))
-                except subprocess.TimeoutExpired:
-                    raise SolverError(f"phc -p did not finish within {timeout:g} s (n = {start.n})",
-                                      status="phc_timeout") from None
-        finally:
-            for proc, _ in procs:
-                if proc.poll() is None:
-                    proc.kill()
-                    proc.wait()
-                if proc.stderr is not None:
-                    proc.stderr.close()
-        seconds = time.perf_counter() - t0
-        runs = []
-        for i, rows in enumerate(slices):
-            path = os.path.join(tmp, f"out{i}.txt")
-            if not os.path.exists(path):
-                raise SolverError(f"phc -p wrote no output (exit code {codes[i]})", status="phc_failed")
-            with open(path, errors="replace") as f:
-                runs.append(_parse(f.read(), names, seconds, 1, codes[i], paths=len(rows)))
-    roots = np.vstack([r.roots for r in runs]) if runs else np.zeros((0, len(names)), complex)
-    regular = np.concatenate([r.regular for r in runs])
-    clustered = _clusters(roots, regular)
-    return HomotopySolve(roots=roots, regular=regular, paths=N, failures=sum(r.failures for r in runs) + clustered,
-                         at_infinity=sum(r.at_infinity for r in runs), singular=sum(r.singular for r in runs),
-                         seconds=seconds, threads=k, attempts=1, consistent=all(r.consistent for r in runs),
-                         engine="parameter")
+    state, roots, regular, consistent = _run_slices(exe, target_text, start, np.arange(N), int(threads), gamma,
+                                                    settings, deadline)
+    bad = np.flatnonzero(state == FAILED)
+    jumped = _cluster_pairs(roots, np.flatnonzero((state == FINITE) & regular))
+    again = np.union1d(bad, np.array(sorted(jumped), dtype=int))
+    retracked = int(again.size)
+    if again.size:
+        st, rt, rg, ok = _run_slices(exe, target_text, start, again, int(threads), gamma, careful, deadline)
+        state[again], roots[again], regular[again] = st, rt, rg
+        consistent = consistent and ok
+    failed = set(np.flatnonzero(state == FAILED).tolist())
+    failed |= _cluster_pairs(roots, np.flatnonzero((state == FINITE) & regular))
+    fin = (state == FINITE) & ~np.isin(np.arange(N), list(failed))
+    return HomotopySolve(roots=roots[fin], regular=regular[fin], paths=N, failures=len(failed),
+                         at_infinity=int((state == INFINITE).sum()), singular=int((fin & ~regular).sum()),
+                         seconds=time.perf_counter() - t0, threads=int(threads), attempts=1, consistent=consistent,
+                         engine="parameter", retracked=retracked)
 
 
 # ----------------------------------------------------------------------------- the solves
@@ -505,6 +586,7 @@ def _parameter_solve(kind: str, n: int, target_text: str, polyhedral, *, threads
                 f"({start.seconds:.1f} s) and stored in {start_file(kind, n)}")
     best = None
     spent = 0.0
+    runs = 0
     for attempt in range(max(1, int(attempts))):
         rest = left()
         if rest is not None and rest <= 0.0:
@@ -517,18 +599,20 @@ def _parameter_solve(kind: str, n: int, target_text: str, polyhedral, *, threads
             note += f"; phc -p failed ({exc})"
             break
         spent += sol.seconds
-        sol = replace(sol, attempts=attempt + 1, seconds=spent)
+        runs = attempt + 1
+        sol = replace(sol, attempts=runs, seconds=spent)
         if best is None or (not sol.complete, sol.failures) < (not best.complete, best.failures):
             best = sol
         if sol.complete:
+            again = f", {sol.retracked} paths tracked again carefully" if sol.retracked else ""
             return replace(sol, note=f"parameter homotopy from {start.count} start solutions "
-                                     f"({start.source})" + note)
+                                     f"({start.source}{again})" + note)
     if best is None:
         why = "phc -p did not run"
     elif best.failures:
-        why = f"{best.failures} of {best.paths} paths failed in {best.attempts} runs"
+        why = f"{best.failures} of {best.paths} paths failed or coincided in the best of {runs} runs"
     else:
-        why = f"its report did not check out in {best.attempts} runs"
+        why = f"its report did not check out ({runs} runs)"
     rest = left()
     if best is not None and rest is not None and rest <= 0.0:
         return replace(best, note=f"parameter homotopy from {start.count} start solutions: {why}, no time left "
