@@ -48,6 +48,7 @@ The start roots are kept on disk per machine (:func:`start_file`: ``TENSEGRITY_C
 kernels, a file per system kind, ``n``, structure and engine version :data:`ENGINE`); those of ``n <= 5``
 ship with the package (``tensegrity_opt/numerics/homotopy_starts``). A query whose start file is missing
 computes it first (one polyhedral solve of the generic instance) and stores it; the message says so.
+``TENSEGRITY_HOMOTOPY_ENGINE=polyhedral`` makes every query use the polyhedral solve (comparisons, tests).
 :func:`precompute` (CLI ``tensegrity-opt homotopy-precompute``) fills the cache ahead.
 """
 
@@ -68,7 +69,6 @@ from .build import cache_dir
 from .homotopy import (
     HomotopySolve,
     _names,
-    _parse,
     _residuals,
     _solve,
     _system_text,
@@ -179,8 +179,9 @@ def displacement_family(n: int, p) -> list[dict]:
         tip2[_direction(nv, j, -1)] = complex(l[j])
     rows = _torque_rows(n, nv, tq)
     for j in range(n):
-        rows[j][_direction(nv, j, -1, n)] = -complex(l[j]) / 2j
-        rows[j][_direction(nv, j, 1, n + 1)] = complex(l[j]) / 2j
+        lj = complex(l[j])
+        for e, c in ((_direction(nv, j, -1, n), -lj / 2j), (_direction(nv, j, 1, n + 1), lj / 2j)):
+            rows[j][e] = rows[j].get(e, 0.0) + c
     return [tip1, tip2] + rows
 
 
@@ -191,8 +192,9 @@ def force_family(n: int, p) -> list[dict]:
     tq, c, d = p[:4 * n].reshape(n, 4), p[4 * n:5 * n], p[5 * n:6 * n]
     rows = _torque_rows(n, n, tq)
     for j in range(n):
-        rows[j][_direction(n, j, -1)] = -complex(c[j]) / 2j
-        rows[j][_direction(n, j, 1)] = complex(d[j]) / 2j
+        # e^{-+i phi_j} may be a torque monomial of the next segment (j = 0: z_1^-+2): the terms add
+        for e, v in ((_direction(n, j, -1), -complex(c[j]) / 2j), (_direction(n, j, 1), complex(d[j]) / 2j)):
+            rows[j][e] = rows[j].get(e, 0.0) + v
     return rows
 
 
@@ -303,6 +305,7 @@ def _save(start: StartSolutions, path: Path) -> None:
     os.close(fd)
     np.savez_compressed(tmp, parameters=start.parameters, roots=start.roots, paths=start.paths,
                         seconds=start.seconds)
+    os.chmod(tmp, 0o644)
     os.replace(tmp, path)                   # atomic: concurrent writers leave one complete file
 
 
@@ -572,6 +575,8 @@ def _parameter_solve(kind: str, n: int, target_text: str, polyhedral, *, threads
     def left() -> float | None:
         return None if deadline is None else deadline - time.monotonic()
 
+    if os.environ.get("TENSEGRITY_HOMOTOPY_ENGINE", "").strip().lower() == "polyhedral":
+        return polyhedral(timeout)
     start = load_start(kind, n)
     note = ""
     if start is None:
