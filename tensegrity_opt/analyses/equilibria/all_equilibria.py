@@ -13,8 +13,10 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted read-only sequen
     for n >= 6 against an independent brute force (``benchmarks/search_check.py``), where it misses some;
     never certified (``status="searched"``).
 ``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
-    Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
-    (:mod:`tensegrity_opt.numerics.homotopy`); the real roots inside the physical range, polished by Newton.
+    Every isolated complex root of the polynomial KKT system by PHCpack: the parameter homotopy from the
+    cached roots of a generic instance (:mod:`tensegrity_opt.numerics.parameter_homotopy`), the polyhedral
+    homotopy (:mod:`tensegrity_opt.numerics.homotopy`) when paths fail; the real roots inside the physical
+    range, polished by Newton.
     ``status="certified"`` when every path ended and every real root polished, else ``"uncertified"``.
 
 Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest
@@ -189,9 +191,10 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         Tip deflection (length units).
     method : {"search", "homotopy"}
         ``"search"``: multi-start Newton (fast, any ``n``, complete in practice but not certified).
-        ``"homotopy"``: PHCpack's polyhedral homotopy on the polynomial KKT system, certified
-        (``n <= 6``; on 2 cores ~0.5 s for n = 3, 4-8 s for n = 4, 1-2.5 min for n = 5, ~12 min for
-        n = 6; pass ``timeout``).
+        ``"homotopy"``: PHCpack's parameter homotopy on the polynomial KKT system (8, 96, 832, 6272, 43648
+        paths for n = 2..6 from cached start solutions; the polyhedral solve when paths fail), certified
+        (``n <= 6``; ~1.5 s of CPU for n = 4, ~20 s for n = 5, on 2 cores about half that in wall time on a
+        quiet machine; pass ``timeout``).
     n_random : int
         Random Newton starts (fixed seed: the answer is reproducible). Search only.
     amplitudes : sequence of float

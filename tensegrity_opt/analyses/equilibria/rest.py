@@ -348,8 +348,10 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
         homotopy found, nothing else) on 232 random chains of every family under random loads, n = 2..5
         (662 equilibria; ``tests/analyses/equilibria/test_rest.py`` repeats a few, also against the reference
         model's Newton). ``"homotopy"``: every isolated complex root of the polynomial force system by PHCpack
-        (:func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy`; ``n <= 6``; paths 4, 24, 128, 704,
-        3840 for n = 1..5 on general chains; 2 cores: n = 4 ~2-4 s, n = 5 ~15-70 s), the real roots
+        (the parameter homotopy from cached start solutions,
+        :func:`tensegrity_opt.numerics.parameter_homotopy.solve_force_parameter_homotopy`, the polyhedral
+        :func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy` when paths fail; ``n <= 6``; paths 4, 24,
+        128, 704, 3840 for n = 1..5 on general chains), the real roots
         inside the range polished by Newton; certified when every path ended and every real root polished
         (uniform n = 5 chains end with failed paths: uncertified). For ``F = 0`` both give the exact set.
     stable_only : bool
