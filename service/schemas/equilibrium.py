@@ -65,7 +65,7 @@ class EquilibriaRequest(BaseModel):
     dy: TipDy = 0.0
     method: Literal["search", "homotopy"] = Field(
         "search", description="`search`: multi-start Newton (any n; complete in practice, not certified); "
-                              "`homotopy`: PHCpack's parameter homotopy on the polynomial KKT system, every "
+                              "`homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every "
                               "equilibrium certified (chains up to the server's `homotopy_max_segments`, default 4; "
                               "seconds; needs the `phcpack` package on the server, else 503 `homotopy_unavailable`)")
 
