@@ -25,8 +25,10 @@ Solution of Systems of Polynomials*, 2005, Thm. 7.1.1 and ch. 7.3): on the irred
 ``N`` for all parameters off a proper algebraic subset (the generic root count of the *family*), and for
 a generic start ``p0`` and all but finitely many ``gamma`` on the unit circle the ``N`` paths from the
 isolated roots of ``F(x; p0)`` reach, as ``t -> 1``, every isolated root of ``F(x; p1)`` in ``X`` (with
-multiplicity), for *any* target ``p1`` in the family, including targets with zero coefficients (symmetric
-segments, ``a = b``): the paths in excess diverge (leave ``X``: ``|x| -> inf`` or some ``z_j -> 0``).
+multiplicity), for *any* target ``p1`` in the family, including targets with zero coefficients: the paths in
+excess diverge (leave ``X``: ``|x| -> inf`` or some ``z_j -> 0``). PHCpack reports a path to ``z_j -> 0`` as
+failed, so the chains with symmetric segments (``a = b``, ``k1 = k2``: no ``z^+-2`` torque terms; the uniform
+n = 4 chain has 456 roots, not 832) get start roots of their own sub-family (:func:`structure_of`).
 
 * ``N`` and the start roots: one generic complex instance ``p0`` per ``n`` (random phases, magnitudes of a
   typical chain), solved once by PHCpack's polyhedral homotopy (``phc -b``); the run counts only when every
@@ -65,6 +67,7 @@ import numpy as np
 
 from ..errors import HomotopyUnavailableError, InvalidParameterError, SolverError
 from ..model.manipulator import Manipulator
+from ..model.segment import clean_coefficients
 from .build import cache_dir
 from .homotopy import (
     HomotopySolve,
@@ -79,7 +82,8 @@ from .homotopy import (
 
 __all__ = ["ENGINE", "KINDS", "StartSolutions", "displacement_parameters", "displacement_family",
            "force_parameters", "force_family", "start_file", "load_start", "compute_start", "precompute",
-           "track", "solve_parameter_homotopy", "solve_force_parameter_homotopy", "TORQUE_POWERS"]
+           "track", "solve_parameter_homotopy", "solve_force_parameter_homotopy", "TORQUE_POWERS", "structure_of",
+           "GENERAL", "SYMMETRIC"]
 
 #: The torque powers of a segment's parameters (:meth:`~tensegrity_opt.model.segment.Segment.torque_polynomial`
 #: without its identically-zero ``z^0``).
@@ -89,9 +93,12 @@ KINDS = ("displacement", "force")
 #: The engine version in the start files' names: the file format and PHCpack's version (a start file of
 #: another version is not used).
 ENGINE = "f1-phc2.4.86"
-#: The structure of the start systems: every segment general (``a != b`` or ``k1 != k2``); chains with
-#: symmetric segments lie in a sub-family, reached by the same paths (some diverge).
-STRUCTURE = "general"
+#: The structures: a symmetric segment (``a = b`` and ``k1 = k2``) has no ``z^2``, ``z^-2`` torque terms, so
+#: a chain with one lies in a sub-family with fewer roots (456 instead of 832 for the uniform n = 4 chain).
+#: The general start system reaches it too, but its paths in excess end at toric infinity (some ``z_j -> 0``),
+#: which PHCpack reports as failed paths: each pattern of symmetric segments has its own start roots
+#: (``"general"``, ``"symmetric"`` or one letter per segment, ``g``/``s``: :func:`structure_of`).
+GENERAL, SYMMETRIC = "general", "symmetric"
 #: ``phc -p`` runs (each with a new ``gamma``) before the polyhedral fallback.
 ATTEMPTS = 2
 #: Two regular end points closer than this (max-norm, relative to ``1 + |x|``) are one root reached twice
@@ -135,10 +142,13 @@ def force_parameters(m: Manipulator, force) -> np.ndarray:
 
 
 def _torque_rows(n: int, nv: int, p: np.ndarray) -> list[dict]:
-    """``E_j' - E_{j+1}'`` (``E_n'`` last) as dicts, from the torque parameters ``p`` (n, 4)."""
+    """``E_j' - E_{j+1}'`` (``E_n'`` last) as dicts, from the torque parameters ``p`` (n, 4); a parameter that
+    is exactly zero (the ``z^+-2`` terms of a symmetric segment) leaves its monomial out."""
     def dE(j: int) -> dict:
         out = {}
         for k, pw in enumerate(TORQUE_POWERS):
+            if p[j, k] == 0.0:
+                continue
             e = [0] * nv
             e[j] = pw
             out[tuple(e)] = complex(p[j, k])
@@ -219,6 +229,22 @@ def _typical_parameters(kind: str, n: int) -> np.ndarray:
     return force_parameters(m, (-0.3, 0.2))
 
 
+def structure_of(m: Manipulator) -> str:
+    """The structure of ``m``'s systems: ``"general"`` when no segment is symmetric, ``"symmetric"`` when all are,
+    else one letter per segment (``g`` general, ``s`` symmetric: ``a = b`` and ``k1 = k2``, whose torque has no
+    ``z^+-2`` terms after :func:`~tensegrity_opt.model.segment.clean_coefficients`)."""
+    flags = "".join("g" if 2 in clean_coefficients(seg.torque_polynomial()) else "s" for seg in m.segments)
+    return GENERAL if set(flags) == {"g"} else SYMMETRIC if set(flags) == {"s"} else flags
+
+
+def _flags(structure: str, n: int) -> str:
+    flags = "g" * n if structure == GENERAL else "s" * n if structure == SYMMETRIC else structure
+    if len(flags) != n or set(flags) - {"g", "s"}:
+        raise InvalidParameterError(f"structure must be 'general', 'symmetric' or {n} letters g/s, got "
+                                    f"{structure!r}", field="structure")
+    return flags
+
+
 # ----------------------------------------------------------------------------- the start solutions
 @dataclass(frozen=True)
 class StartSolutions:
@@ -230,6 +256,8 @@ class StartSolutions:
         ``"displacement"`` or ``"force"`` (:data:`KINDS`).
     n : int
         Segments.
+    structure : str
+        Which torque terms the family has (:func:`structure_of`).
     parameters : ndarray complex
         The generic start parameters ``p0`` (:func:`displacement_parameters` / :func:`force_parameters` layout).
     roots : ndarray (N, nv) complex
@@ -244,6 +272,7 @@ class StartSolutions:
 
     kind: str
     n: int
+    structure: str
     parameters: np.ndarray
     roots: np.ndarray
     paths: int
@@ -256,14 +285,14 @@ class StartSolutions:
         return int(self.roots.shape[0])
 
 
-def _file_name(kind: str, n: int) -> str:
-    return f"{kind}-n{n}-{STRUCTURE}-{ENGINE}.npz"
+def _file_name(kind: str, n: int, structure: str) -> str:
+    return f"{kind}-n{n}-{structure}-{ENGINE}.npz"
 
 
-def start_file(kind: str, n: int) -> Path:
-    """Where the start roots of ``kind`` and ``n`` are cached on this machine
+def start_file(kind: str, n: int, structure: str = GENERAL) -> Path:
+    """Where the start roots of ``kind``, ``n`` and ``structure`` are cached on this machine
     (``<cache_dir>/homotopy/<kind>-n<n>-<structure>-<engine>.npz``)."""
-    return cache_dir() / "homotopy" / _file_name(kind, n)
+    return cache_dir() / "homotopy" / _file_name(kind, n, structure)
 
 
 def _check_kind(kind: str) -> None:
@@ -271,11 +300,11 @@ def _check_kind(kind: str) -> None:
         raise InvalidParameterError(f"kind must be one of {KINDS}, got {kind!r}", field="kind")
 
 
-def _read(path: Path, kind: str, n: int, source: str) -> StartSolutions | None:
+def _read(path: Path, kind: str, n: int, structure: str, source: str) -> StartSolutions | None:
     try:
         with np.load(path) as f:
-            start = StartSolutions(kind, n, np.asarray(f["parameters"], complex), np.asarray(f["roots"], complex),
-                                   int(f["paths"]), float(f["seconds"]), source)
+            start = StartSolutions(kind, n, structure, np.asarray(f["parameters"], complex),
+                                   np.asarray(f["roots"], complex), int(f["paths"]), float(f["seconds"]), source)
     except (OSError, KeyError, ValueError):
         return None
     nv = len(_unknowns(kind, n))
@@ -287,13 +316,15 @@ def _read(path: Path, kind: str, n: int, source: str) -> StartSolutions | None:
     return start
 
 
-def load_start(kind: str, n: int) -> StartSolutions | None:
-    """The start roots of ``kind`` and ``n`` from this machine's cache, else from the package's data, else
-    ``None``. A file whose roots do not solve its system (residual above ``1e-8``) is ignored."""
+def load_start(kind: str, n: int, structure: str = GENERAL) -> StartSolutions | None:
+    """The start roots of ``kind``, ``n`` and ``structure`` from this machine's cache, else from the package's
+    data, else ``None``. A file whose roots do not solve its system (residual above ``1e-8``) is ignored."""
     _check_kind(kind)
-    for path, source in ((start_file(kind, n), "cache"), (_PACKAGED / _file_name(kind, n), "packaged")):
+    _flags(structure, n)
+    for path, source in ((start_file(kind, n, structure), "cache"),
+                         (_PACKAGED / _file_name(kind, n, structure), "packaged")):
         if path.exists():
-            start = _read(path, kind, n, source)
+            start = _read(path, kind, n, structure, source)
             if start is not None:
                 return start
     return None
@@ -309,13 +340,15 @@ def _save(start: StartSolutions, path: Path) -> None:
     os.replace(tmp, path)                   # atomic: concurrent writers leave one complete file
 
 
-def compute_start(kind: str, n: int, *, threads: int | None = None, timeout: float | None = None,
-                  attempts: int = 4, seed: int | None = None, store: bool = True) -> StartSolutions:
-    """Solve a generic instance of the family ``kind`` for ``n`` segments by ``phc -b`` and (``store``) cache
-    its roots (:func:`start_file`).
+def compute_start(kind: str, n: int, structure: str = GENERAL, *, threads: int | None = None,
+                  timeout: float | None = None, attempts: int = 4, seed: int | None = None,
+                  store: bool = True) -> StartSolutions:
+    """Solve a generic instance of the family ``kind`` for ``n`` segments of the ``structure`` by ``phc -b``
+    and (``store``) cache its roots (:func:`start_file`).
 
     The start parameters are the :func:`_typical_parameters` magnitudes with random phases and a random
-    factor in ``[0.5, 1.5]`` (generic with probability one). A solve counts when PHCpack's report checked out,
+    factor in ``[0.5, 1.5]`` (generic with probability one), the ``z^+-2`` torque parameters of the symmetric
+    segments zero. A solve counts when PHCpack's report checked out,
     no path failed or diverged, and no two roots coincide; else a new instance is drawn, up to ``attempts``.
 
     Raises
@@ -324,9 +357,13 @@ def compute_start(kind: str, n: int, *, threads: int | None = None, timeout: flo
         (``RuntimeError``, status ``"phc_failed"``) when no attempt gave a clean solve.
     """
     _check_kind(kind)
+    flags = _flags(structure, n)
     rng = np.random.default_rng(seed)
     names = _unknowns(kind, n)
     typical = _typical_parameters(kind, n)
+    for j, f in enumerate(flags):
+        if f == "s":
+            typical[4 * j + TORQUE_POWERS.index(2)] = typical[4 * j + TORQUE_POWERS.index(-2)] = 0.0
     why = ""
     deadline = None if timeout is None else time.monotonic() + float(timeout)
     for _ in range(max(1, int(attempts))):
@@ -340,29 +377,31 @@ def compute_start(kind: str, n: int, *, threads: int | None = None, timeout: flo
         if _clusters(sol.roots, np.ones(sol.roots.shape[0], bool)):
             why = "two roots coincide"
             continue
-        start = StartSolutions(kind, n, p0, sol.roots, sol.paths, sol.seconds, "computed")
+        start = StartSolutions(kind, n, structure, p0, sol.roots, sol.paths, sol.seconds, "computed")
         if store:
-            _save(start, start_file(kind, n))
+            _save(start, start_file(kind, n, structure))
         return start
-    raise SolverError(f"no clean polyhedral solve of a generic {kind} system, n = {n} ({why})",
+    raise SolverError(f"no clean polyhedral solve of a generic {kind} system, n = {n}, {structure} ({why})",
                       status="phc_failed")
 
 
 def precompute(max_segments: int = 5, kinds=KINDS, *, min_segments: int = 2, force: bool = False,
-               threads: int | None = None, progress=None) -> list[tuple[str, int, StartSolutions]]:
-    """Compute and cache the start roots of every ``kind`` in ``kinds`` for ``n = min_segments..max_segments``
-    (those already cached or packaged are kept unless ``force``). ``progress(kind, n, start)`` is called after
-    each. Returns ``(kind, n, start)`` per system."""
+               structures=(GENERAL, SYMMETRIC), threads: int | None = None,
+               progress=None) -> list[tuple[str, int, StartSolutions]]:
+    """Compute and cache the start roots of every ``kind`` in ``kinds`` and structure in ``structures`` for
+    ``n = min_segments..max_segments`` (those already cached or packaged are kept unless ``force``).
+    ``progress(kind, n, start)`` is called after each. Returns ``(kind, n, start)`` per system."""
     out = []
     for kind in kinds:
         _check_kind(kind)
-        for n in range(int(min_segments), int(max_segments) + 1):
-            start = None if force else load_start(kind, n)
-            if start is None:
-                start = compute_start(kind, n, threads=threads)
-            out.append((kind, n, start))
-            if progress is not None:
-                progress(kind, n, start)
+        for structure in structures:
+            for n in range(int(min_segments), int(max_segments) + 1):
+                start = None if force else load_start(kind, n, structure)
+                if start is None:
+                    start = compute_start(kind, n, structure, threads=threads)
+                out.append((kind, n, start))
+                if progress is not None:
+                    progress(kind, n, start)
     return out
 
 
@@ -565,7 +604,7 @@ def track(target_text: str, start: StartSolutions, *, threads: int | None = None
 
 
 # ----------------------------------------------------------------------------- the solves
-def _parameter_solve(kind: str, n: int, target_text: str, polyhedral, *, threads: int | None,
+def _parameter_solve(kind: str, n: int, structure: str, target_text: str, polyhedral, *, threads: int | None,
                      timeout: float | None, attempts: int = ATTEMPTS) -> HomotopySolve:
     """Track from the cached start roots (computing them when missing), repeat once with a new ``gamma`` when
     paths fail, else the polyhedral solve ``polyhedral(timeout)``; the result's ``note`` says which."""
@@ -577,18 +616,18 @@ def _parameter_solve(kind: str, n: int, target_text: str, polyhedral, *, threads
 
     if os.environ.get("TENSEGRITY_HOMOTOPY_ENGINE", "").strip().lower() == "polyhedral":
         return polyhedral(timeout)
-    start = load_start(kind, n)
+    start = load_start(kind, n, structure)
     note = ""
     if start is None:
         try:
-            start = compute_start(kind, n, threads=threads, timeout=timeout)
+            start = compute_start(kind, n, structure, threads=threads, timeout=timeout)
         except SolverError as exc:
             if exc.status == "phc_timeout":
                 raise
             sol = polyhedral(left())
             return replace(sol, note=f"no start solutions for n = {n} ({exc}): the polyhedral solve answered")
-        note = (f"; the start solutions (n = {n}, {start.count} roots) were missing: computed now "
-                f"({start.seconds:.1f} s) and stored in {start_file(kind, n)}")
+        note = (f"; the start solutions (n = {n}, {structure}, {start.count} roots) were missing: computed now "
+                f"({start.seconds:.1f} s) and stored in {start_file(kind, n, structure)}")
     best = None
     spent = 0.0
     runs = 0
@@ -611,7 +650,7 @@ def _parameter_solve(kind: str, n: int, target_text: str, polyhedral, *, threads
         if sol.complete:
             again = f", {sol.retracked} paths tracked again carefully" if sol.retracked else ""
             return replace(sol, note=f"parameter homotopy from {start.count} start solutions "
-                                     f"({start.source}{again})" + note)
+                                     f"({structure}, {start.source}{again})" + note)
     if best is None:
         why = "phc -p did not run"
     elif best.failures:
@@ -636,7 +675,7 @@ def solve_parameter_homotopy(m: Manipulator, target, *, threads: int | None = No
     :func:`~.homotopy.solve_homotopy` (``timeout`` for the whole call)."""
     from .homotopy import solve_homotopy
 
-    return _parameter_solve("displacement", m.n, polynomial_system(m, target),
+    return _parameter_solve("displacement", m.n, structure_of(m), polynomial_system(m, target),
                             lambda left: solve_homotopy(m, target, threads=threads, timeout=left),
                             threads=threads, timeout=timeout, attempts=attempts)
 
@@ -648,6 +687,6 @@ def solve_force_parameter_homotopy(m: Manipulator, force, *, threads: int | None
     :func:`solve_parameter_homotopy`."""
     from .homotopy import solve_force_homotopy
 
-    return _parameter_solve("force", m.n, force_polynomial_system(m, force),
+    return _parameter_solve("force", m.n, structure_of(m), force_polynomial_system(m, force),
                             lambda left: solve_force_homotopy(m, force, threads=threads, timeout=left),
                             threads=threads, timeout=timeout, attempts=attempts)

@@ -122,8 +122,9 @@ def _cmd_homotopy_precompute(args) -> int:
     kinds = ph.KINDS if args.kind == "both" else (args.kind,)
 
     def progress(kind, n, start) -> None:
-        where = ph.start_file(kind, n) if start.source != "packaged" else "the package's data"
-        print(f"{kind:>12} n = {n}: {start.count:>6} start solutions ({start.source}, {where})", flush=True)
+        where = ph.start_file(kind, n, start.structure) if start.source != "packaged" else "the package's data"
+        print(f"{kind:>12} n = {n} {start.structure:>9}: {start.count:>6} start solutions ({start.source}, {where})",
+              flush=True)
 
     try:
         ph.precompute(args.max_segments, kinds, min_segments=args.min_segments, force=args.force,
