@@ -234,3 +234,38 @@ def test_a_missing_start_file_is_computed_and_stored(tmp_path, monkeypatch):
         data = dict(f)
     np.savez(path, **{**data, "roots": data["roots"] * 1.01})
     assert ph.load_start("displacement", 2) is None
+
+
+# ----------------------------------------------------------------------------- structures
+def test_structure_of_names_the_symmetric_segments():
+    sym, gen = to.Segment(0.8, 0.8, 1.0, 1.0), to.Segment(0.6, 1.0, 1.0, 1.2)
+    pre = to.Segment(0.8, 0.8, (1.0, 1.3), 1.0)            # a = b but k1 != k2: its z^2 terms are not zero
+    assert ph.structure_of(to.Manipulator([gen, gen])) == "general"
+    assert ph.structure_of(to.Manipulator.uniform(3)) == "symmetric"
+    assert ph.structure_of(to.Manipulator([gen, sym, pre])) == "gsg"
+    with pytest.raises(ValueError):
+        ph.load_start("displacement", 3, "gx")
+
+
+def test_packaged_symmetric_start_roots_count_the_mixed_volume():
+    """The a = b mixed volumes 8, 72, 456 measured by phc -b (module docstring of tensegrity_opt.numerics.homotopy)."""
+    for n, mv in ((2, 8), (3, 72), (4, 456)):
+        start = ph.load_start("displacement", n, "symmetric")
+        assert start is not None and start.count == mv == start.paths and start.structure == "symmetric"
+        assert np.max(homotopy._residuals(ph.displacement_family(n, start.parameters), start.roots)) < 1e-8
+
+
+@needs_phc
+def test_a_mixed_structure_gets_its_own_start_roots_and_the_polyhedral_set(tmp_path, monkeypatch):
+    """One symmetric segment among general ones: its start roots are computed on demand (the general start
+    system would reach the set only through paths PHCpack reports failed), the set is the polyhedral one."""
+    monkeypatch.setenv("TENSEGRITY_CACHE_DIR", str(tmp_path))
+    m = to.Manipulator([to.Segment(0.6, 1.0, 1.0, 1.2), to.Segment(0.8, 0.8, 1.3, 0.9),
+                        to.Segment(0.5, 1.1, (1.2, 0.8), 1.4)])
+    dx, dy = 0.3 * m.straight_length, 0.1 * m.straight_length
+    param = to.find_equilibria(m, dx, dy, method="homotopy")
+    assert param.certified and "(gsg, computed)" in param.message and "were missing: computed now" in param.message
+    assert ph.start_file("displacement", 3, "gsg").exists()
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")
+    poly = to.find_equilibria(m, dx, dy, method="homotopy")
+    assert poly.certified and param.paths == poly.paths and len(param) > 0 and _same_sets(param, poly, 3)
