@@ -34,17 +34,20 @@ n = 4 chain has 456 roots, not 832) get start roots of their own sub-family (:fu
   typical chain), solved once by PHCpack's polyhedral homotopy (``phc -b``); the run counts only when every
   path ended, none failed, the report checked out and no two roots coincide (else a new ``p0`` is drawn).
   Generically no root has ``g = 0`` or ``h = 0`` (``n + 2`` equations in fewer unknowns), so the roots in
-  the torus ``(C*)^(n+2)`` that ``phc -b`` returns are all the isolated roots in ``X``. Measured ``N``
-  (equal to the mixed volume: the tied parameters do not lower the count): 8, 96, 832, 6272 (and 43648 for
-  ``n = 6``) for the displacement system, 4, 24, 128, 704, 3840 for the force system.
+  the torus ``(C*)^(n+2)`` that ``phc -b`` returns are all the isolated roots in ``X``. Measured ``N`` for
+  ``n = 2..5`` (equal to the mixed volume: the tied parameters do not lower the count): 8, 96, 832, 6272
+  (43648 for ``n = 6``) for the displacement system, 24, 128, 704, 3840 for the force system; with every
+  segment symmetric 8, 72, 456, 2488 and 16, 64, 256, 1024.
 * Every query tracks the ``N`` paths with ``phc -p`` (its continuation from given start solutions, in
   ``threads`` processes over slices of the start roots, one ``gamma`` for all); the set is certified when
   every path ended (a finite root at ``t = 1`` or diverged: "at infinity"), none failed, no two regular
   end points coincide (path jumping), and every real root inside the range polished (:func:`~.homotopy.polish_roots`).
   Singular end points (a degenerate equilibrium, several paths on one root) are kept as in :mod:`.homotopy`:
   accepted at a looser distance from the real set and polished by Newton.
-* A run with a failed path is repeated once with a new ``gamma``; if paths still fail, the full polyhedral
-  solve (:func:`~.homotopy.solve_homotopy`) answers and the message says so.
+* A failed path, and two paths whose regular end points coincide, are tracked again on the *same* homotopy
+  (same ``gamma``) with careful settings (:data:`CAREFUL`): the same paths, followed more closely. If paths
+  still fail, the whole run is repeated with a new ``gamma`` (:data:`ATTEMPTS` runs in all); then the full
+  polyhedral solve (:func:`~.homotopy.solve_homotopy`) answers and the message says so.
 
 The start roots are kept on disk per machine (:func:`start_file`: ``TENSEGRITY_CACHE_DIR`` like the compiled
 kernels, a file per system kind, ``n``, structure and engine version :data:`ENGINE`); those of ``n <= 5``
