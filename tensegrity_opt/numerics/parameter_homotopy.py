@@ -107,9 +107,10 @@ ENGINE = "f1-phc2.4.86"
 #: (``"general"``, ``"symmetric"`` or one letter per segment, ``g``/``s``: :func:`structure_of`).
 GENERAL, SYMMETRIC = "general", "symmetric"
 #: ``phc -p`` runs (each with a new ``gamma``, each with its careful re-tracking) before the polyhedral fallback.
-#: One: the careful re-tracking fixes the paths that fail by chance; paths that still fail end at toric infinity
-#: (uniform bistable n = 5 chains: 256 of 6272, the same with a new ``gamma`` or the polyhedral solve).
-ATTEMPTS = 1
+#: The careful re-tracking fixes most paths that fail by chance (6-10 of 43648 at n = 6), not all: one n = 6 run
+#: of three still had failures, and a second run (~3 min) is far cheaper than the polyhedral solve (12-21 min).
+#: Paths ending at toric infinity fail in every run (uniform bistable n = 5 chains: 256 of 6272).
+ATTEMPTS = 2
 #: Two regular end points closer than this (max-norm, relative to ``1 + |x|``) are one root reached twice
 #: (path jumping: a root may be missing).
 CLUSTER_TOL = 1e-8

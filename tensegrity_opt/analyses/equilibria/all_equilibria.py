@@ -193,8 +193,8 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         ``"search"``: multi-start Newton (fast, any ``n``, complete in practice but not certified).
         ``"homotopy"``: PHCpack's parameter homotopy on the polynomial KKT system (8, 96, 832, 6272, 43648
         paths for n = 2..6 from cached start solutions; the polyhedral solve when paths fail), certified
-        (``n <= 6``; ~1.5 s of CPU for n = 4, ~20 s for n = 5, on 2 cores about half that in wall time on a
-        quiet machine; pass ``timeout``).
+        (``n <= 6``; ~1.5 s of CPU for n = 4, ~20 s for n = 5, ~300 s for n = 6, on 2 cores about 0.6 of that
+        in wall time on a quiet machine; pass ``timeout``).
     n_random : int
         Random Newton starts (fixed seed: the answer is reproducible). Search only.
     amplitudes : sequence of float
