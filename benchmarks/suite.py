@@ -804,6 +804,55 @@ def case9(cfg: Config) -> list[Row]:
                         samples=[th / 1e3], baseline_samples=ts,
                         notes=[f"homotopy n={n}: {h.paths} paths, {h.failed_paths} failed, certified {h.certified}, "
                                f"{len(h)} equilibria; the search finds {len(s)} ({verdict})"]))
+    rows += _parameter_homotopy_rows(cfg)
+    return rows
+
+
+#: Goals of the parameter homotopy (issue 29), seconds on 2 cores.
+PARAMETER_GOALS = {4: 0.5, 5: 5.0, 6: 60.0}
+
+
+def _parameter_homotopy_rows(cfg: Config) -> list[Row]:
+    """The parameter homotopy (``phc -p`` from the cached start roots, the default engine of method="homotopy")
+    against the polyhedral solve (``phc -b``, ``TENSEGRITY_HOMOTOPY_ENGINE=polyhedral``), same chain and target,
+    n = 2..6 (--quick: 2..4; the polyhedral n = 6, ~12-20 min, only in the full run)."""
+    import os
+
+    from tensegrity_opt.numerics import parameter_homotopy as ph
+
+    rows: list[Row] = []
+    segs = [to.Segment(0.6, 1.0, 1.0, 1.2), to.Segment(0.55, 1.1, (1.2, 0.9), (1.0, 1.3)),
+            to.Segment(0.7, 0.9, 1.5, 0.6), to.Segment(0.5, 1.0, 0.8, 1.1), to.Segment(0.65, 1.05, 1.0, 1.0),
+            to.Segment(0.45, 0.95, (0.9, 1.1), 0.9)]
+    for n in ((2, 3, 4) if cfg.quick else (2, 3, 4, 5, 6)):
+        m = to.Manipulator(segs[:n])
+        dx, dy = 0.3 * m.straight_length, -0.1 * m.straight_length
+        if ph.load_start("displacement", n) is None:
+            log(f"  parameter homotopy n={n}: computing the start solutions first (once per machine)")
+            ph.compute_start("displacement", n)
+        par = []
+        for _ in range(1 if n >= 5 else 3):
+            t0 = time.perf_counter()
+            h = to.find_equilibria(m, dx, dy, method="homotopy")
+            par.append(time.perf_counter() - t0)
+        os.environ["TENSEGRITY_HOMOTOPY_ENGINE"] = "polyhedral"
+        try:
+            t0 = time.perf_counter()
+            poly = to.find_equilibria(m, dx, dy, method="homotopy")
+            tp = time.perf_counter() - t0
+        finally:
+            del os.environ["TENSEGRITY_HOMOTOPY_ENGINE"]
+        same = len(poly) == len(h) and all(min(np.max(np.abs(e.q - f.q)) for f in poly) < 1e-6 for e in h)
+        o = float(np.median(par)) * 1e3
+        goal = PARAMETER_GOALS.get(n)
+        rows.append(Row("9", "parameter homotopy find_equilibria (certified)", n, o, "ms",
+                        "polyhedral homotopy (phc -b, same target)", tp * 1e3, ratio=tp * 1e3 / o,
+                        target=f"<= {goal:g} s (goal)" if goal else "(info)",
+                        met=(h.certified and same and o <= goal * 1e3) if goal else None,
+                        samples=par, baseline_samples=[tp],
+                        notes=[f"parameter homotopy n={n}: {h.paths} paths ({h.failed_paths} failed), certified "
+                               f"{h.certified}, {len(h)} equilibria; polyhedral: {poly.paths} paths, certified "
+                               f"{poly.certified}, {'the same set' if same else 'DIFFERENT sets'}; {h.message}"]))
     return rows
 
 

@@ -108,8 +108,9 @@ class Settings(BaseSettings):
     solve_timeout: float = Field(10.0, gt=0, description="seconds one request may wait for its result")
     homotopy_max_segments: int = Field(
         4, ge=0, le=6,
-        description="longest chain for which /v1/equilibria accepts method=homotopy (PHCpack; n = 4 takes "
-                    "4-8 s, n = 5 one to two minutes: raise solve_timeout with it); 0: refused")
+        description="longest chain for which /v1/equilibria accepts method=homotopy (PHCpack's parameter "
+                    "homotopy; measured on 2 cores: n = 4 ~1.5 s of CPU, 1-4 s at load 3-8; n = 5 ~20 s of CPU, "
+                    "10-25 s: raise solve_timeout with it); 0: refused")
     batch_timeout: float = Field(60.0, gt=0, description="seconds one batch may run")
     max_path_points: int = Field(
         HARD_MAX_PATH_POINTS, ge=2, le=HARD_MAX_PATH_POINTS,

@@ -128,6 +128,14 @@ class HomotopySolve:
         ``phc`` runs made (a run with failed paths is repeated, :func:`solve_homotopy`).
     consistent : bool
         The report checked out (:func:`_parse`): exit code 0, declared, listed and mixed-volume counts equal.
+    engine : str
+        ``"polyhedral"`` (``phc -b`` from the mixed-volume start system) or ``"parameter"`` (``phc -p`` from the
+        start roots of a generic instance, :mod:`.parameter_homotopy`).
+    note : str
+        How the roots were found, in words (:mod:`.parameter_homotopy`: the parameter homotopy, or why the
+        polyhedral solve answered); empty for a plain polyhedral solve.
+    retracked : int
+        Parameter homotopy: paths tracked a second time with careful settings (failed or jumped the first time).
     """
 
     roots: np.ndarray
@@ -140,6 +148,9 @@ class HomotopySolve:
     threads: int = 1
     attempts: int = 1
     consistent: bool = True
+    engine: str = "polyhedral"
+    note: str = ""
+    retracked: int = 0
 
     @property
     def complete(self) -> bool:
@@ -559,6 +570,8 @@ def polish_roots(solve: HomotopySolve, q: np.ndarray, F: np.ndarray, regular: np
     if close:
         why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
     runs = f"{solve.attempts} run{'s' if solve.attempts > 1 else ''}"
-    report = (f"phc ({runs}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at infinity, "
-              f"{solve.singular} singular; {len(q)} real roots in range" + note + "".join(f"; {w}" for w in why))
+    engine = "parameter homotopy" if solve.engine == "parameter" else "polyhedral homotopy"
+    report = (f"phc ({runs}, {engine}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at "
+              f"infinity, {solve.singular} singular; {len(q)} real roots in range" + note
+              + "".join(f"; {w}" for w in why) + (f"; {solve.note}" if solve.note else ""))
     return PolishedRoots(found, solve.complete and lost == 0 and close == 0, report)

@@ -14,16 +14,18 @@ Two methods, one result type (:class:`EquilibriumSet`, a sorted read-only sequen
     for n >= 6 against an independent brute force (``benchmarks/search_check.py``), where it misses some;
     never certified (``status="searched"``).
 ``method="homotopy"`` (``n <= HOMOTOPY_MAX_N``; needs PHCpack)
-    Every isolated complex root of the polynomial KKT system by PHCpack's polyhedral homotopy
-    (:mod:`tensegrity_opt.numerics.homotopy`); the real roots inside the physical range, polished by Newton,
-    then each proven by Krawczyk's test in ball arithmetic (:mod:`tensegrity_opt.numerics.krawczyk`: the only
-    equilibrium in its box, real, inside the range, the boxes pairwise disjoint; its Morse index proven where
-    decidable), the proofs in :attr:`EquilibriumSet.certificate`. ``status="certified"`` when every path ended,
-    every real root polished and every equilibrium proven, else ``"uncertified"``. Which complex roots are real
-    is decided in floating point (their distance from the real set against a tolerance); the certificate also
-    proves the roots classed non-real within ``krawczyk.NEAR_REAL`` of the real set non-real, and the real roots
-    within it beyond the range beyond it (counted there; the farther ones are classed in floating point, by that
-    margin; measured: non-real roots lie 0.04 or more from the real set).
+    Every isolated complex root of the polynomial KKT system by PHCpack: the parameter homotopy from the
+    cached roots of a generic instance (:mod:`tensegrity_opt.numerics.parameter_homotopy`), the polyhedral
+    homotopy (:mod:`tensegrity_opt.numerics.homotopy`) when paths fail; the real roots inside the physical
+    range, polished by Newton, then each proven by Krawczyk's test in ball arithmetic
+    (:mod:`tensegrity_opt.numerics.krawczyk`: the only equilibrium in its box, real, inside the range, the boxes
+    pairwise disjoint; its Morse index proven where decidable), the proofs in :attr:`EquilibriumSet.certificate`.
+    ``status="certified"`` when every path ended, every real root polished and every equilibrium proven, else
+    ``"uncertified"``. Which complex roots are real is decided in floating point (their distance from the real
+    set against a tolerance); the certificate also proves the roots classed non-real within
+    ``krawczyk.NEAR_REAL`` of the real set non-real, and the real roots within it beyond the range beyond it
+    (counted there; the farther ones are classed in floating point, by that margin; measured: non-real roots lie
+    0.04 or more from the real set).
 
 Solutions outside the physical range or on a joint limit are dropped, duplicates merged, the rest
 classified by the Morse index of the reduced Hessian and sorted by energy.
@@ -240,9 +242,10 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         Tip deflection (length units).
     method : {"search", "homotopy"}
         ``"search"``: multi-start Newton (fast, any ``n``, complete in practice but not certified).
-        ``"homotopy"``: PHCpack's polyhedral homotopy on the polynomial KKT system, certified
-        (``n <= 6``; on 2 cores ~0.5 s for n = 3, 4-8 s for n = 4, 1-2.5 min for n = 5, ~12 min for
-        n = 6; pass ``timeout``).
+        ``"homotopy"``: PHCpack's parameter homotopy on the polynomial KKT system (8, 96, 832, 6272, 43648
+        paths for n = 2..6 from cached start solutions; the polyhedral solve when paths fail), certified
+        (``n <= 6``; ~1.5 s of CPU for n = 4, ~20 s for n = 5, ~300 s for n = 6, on 2 cores about 0.6 of that
+        in wall time on a quiet machine; pass ``timeout``).
     n_random : int
         Random Newton starts (fixed seed: the answer is reproducible). Search only.
     amplitudes : sequence of float
@@ -403,12 +406,13 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from ...numerics.homotopy import polish_roots, real_configurations, rest_points_at, solve_homotopy
+    from ...numerics.homotopy import polish_roots, real_configurations, rest_points_at
+    from ...numerics.parameter_homotopy import solve_parameter_homotopy
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
                                     f"(its path count grows ~8x a segment), got n = {m.n}", field="method")
-    sol = solve_homotopy(m, target, timeout=timeout)
+    sol = solve_parameter_homotopy(m, target, timeout=timeout)
     q, F, inside, regular = real_configurations(m, sol)
     # F = 0 equilibria (g = h = 0) lie outside the torus the mixed volume counts: added from the
     # segments' unloaded critical points (all of them, from each torque's quartic)

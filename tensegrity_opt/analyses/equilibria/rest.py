@@ -293,12 +293,13 @@ def _sorted(m: Manipulator, eqs: list[Equilibrium], force: np.ndarray) -> list[E
 
 # ----------------------------------------------------------------------------- F != 0: the homotopy
 def _homotopy(m: Manipulator, force: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:
-    from ...numerics.homotopy import polish_roots, real_force_configurations, solve_force_homotopy
+    from ...numerics.homotopy import polish_roots, real_force_configurations
+    from ...numerics.parameter_homotopy import solve_force_parameter_homotopy
 
     if m.n > HOMOTOPY_MAX_N:
         raise InvalidParameterError(f"method='homotopy' handles chains of up to {HOMOTOPY_MAX_N} segments "
                                     f"(its path count grows ~6x a segment), got n = {m.n}", field="method")
-    sol = solve_force_homotopy(m, force, timeout=timeout)
+    sol = solve_force_parameter_homotopy(m, force, timeout=timeout)
     q, inside, regular = real_force_configurations(m, sol)
     mdl = chain_solver(m)
     q = q[inside]
@@ -349,10 +350,12 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
         homotopy found, nothing else) on 232 random chains of every family under random loads, n = 2..5
         (662 equilibria; ``tests/analyses/equilibria/test_rest.py`` repeats a few, also against the reference
         model's Newton). ``"homotopy"``: every isolated complex root of the polynomial force system by PHCpack
-        (:func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy`; ``n <= 6``; paths 4, 24, 128, 704,
-        3840 for n = 1..5 on general chains; 2 cores: n = 4 ~2-4 s, n = 5 ~15-70 s), the real roots
-        inside the range polished by Newton; certified when every path ended, every real root polished and
-        every equilibrium proven by Krawczyk's test in ball arithmetic (the set's ``certificate``)
+        (the parameter homotopy from cached start solutions,
+        :func:`tensegrity_opt.numerics.parameter_homotopy.solve_force_parameter_homotopy`, the polyhedral
+        :func:`tensegrity_opt.numerics.homotopy.solve_force_homotopy` when paths fail; ``n <= 6``; paths 4, 24,
+        128, 704, 3840 for n = 1..5 on general chains), the real roots inside the range polished by Newton;
+        certified when every path ended, every real root polished and every equilibrium proven by Krawczyk's test
+        in ball arithmetic (the set's ``certificate``)
         (uniform n = 5 chains end with failed paths: uncertified). For ``F = 0`` both give the exact set.
     stable_only : bool
         Return the stable equilibria (minima of ``E - F . tip``) only.

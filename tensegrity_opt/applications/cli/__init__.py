@@ -1,5 +1,5 @@
 """Command line: ``tensegrity-opt buckling|equilibrium|equilibria|curve|rest|branch|limit-load|imperfection|boundary|
-atlas|plan|simulate|force-estimate|plot|sweep ...``.
+atlas|plan|simulate|force-estimate|plot|sweep|homotopy-precompute ...``.
 
 Every command takes the manipulator as ``--n --a --b --k --L0`` (uniform; the
 paper's chain by default) or ``--manipulator FILE.json`` (``{"segments": [...]}``),
@@ -31,6 +31,7 @@ from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
 from ...analyses.equilibria.least_energy import solve_equilibrium
 from ...analyses.paths.curves import force_deflection
 from .common import (
+    HELP_FORMAT,
     Parser,
     add_command,
     add_curve_options,
@@ -115,6 +116,28 @@ def _cmd_curve(args, m):
     return data, "\n".join(lines)
 
 
+def _cmd_homotopy_precompute(args) -> int:
+    """``homotopy-precompute``: the start roots of the parameter homotopy, computed and cached ahead
+    (:func:`tensegrity_opt.numerics.parameter_homotopy.precompute`)."""
+    from ...errors import TensegrityError
+    from ...numerics import parameter_homotopy as ph
+    from .common import error
+
+    kinds = ph.KINDS if args.kind == "both" else (args.kind,)
+
+    def progress(kind, n, start) -> None:
+        where = ph.start_file(kind, n, start.structure) if start.source != "packaged" else "the package's data"
+        print(f"{kind:>12} n = {n} {start.structure:>9}: {start.count:>6} start solutions ({start.source}, {where})",
+              flush=True)
+
+    try:
+        ph.precompute(args.max_segments, kinds, min_segments=args.min_segments, force=args.force,
+                      progress=progress)
+    except (TensegrityError, OSError) as exc:
+        return error(exc)
+    return 0
+
+
 def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.ArgumentParser:
     """The parser of every library command; ``add_commands(subparsers)`` adds more (a command that
     handles its own arguments sets ``run=callable(args) -> exit status`` as its default)."""
@@ -153,6 +176,16 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
     add_curve_options(sp, num=11)
     sp.add_argument("--reference", choices=("straight", "rest"), default="straight",
                     help="measure dx, dy from the straight tip or from the rest configuration's tip (pre-bent arms)")
+    sp = sub.add_parser("homotopy-precompute", formatter_class=HELP_FORMAT,
+                        help="compute and cache the start solutions of the parameter homotopy (method=homotopy)")
+    sp.add_argument("--max-segments", type=int, default=5, choices=range(2, 7), metavar="N",
+                    help="up to this many segments, 2..6 (n = 6: ~10-20 min on 2 cores; default: %(default)s)")
+    sp.add_argument("--min-segments", type=int, default=2, choices=range(2, 7), metavar="N",
+                    help="from this many segments (default: %(default)s)")
+    sp.add_argument("--kind", choices=("displacement", "force", "both"), default="both",
+                    help="the tip-displacement system, the tip-force system or both (default: %(default)s)")
+    sp.add_argument("--force", action="store_true", help="recompute those already cached or packaged")
+    sp.set_defaults(run=_cmd_homotopy_precompute)
     add_path_parsers(sub)
     add_control_parsers(sub)
     add_plot_parser(sub)
@@ -168,7 +201,8 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
 GROUPS = (("equilibria", ("buckling", "equilibrium", "equilibria", "curve", "rest")),
           ("loading paths", ("branch", "limit-load", "imperfection", "boundary", "atlas")),
           ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "load-capacity")),
-          ("figures", ("plot",)), ("parameter sweeps", ("sweep",)), ("HTTP service", SERVICE_COMMANDS))
+          ("figures", ("plot",)), ("parameter sweeps", ("sweep",)), ("set-up", ("homotopy-precompute",)),
+          ("HTTP service", SERVICE_COMMANDS))
 
 
 def describe(commands) -> str:

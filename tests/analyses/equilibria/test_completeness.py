@@ -342,6 +342,7 @@ def _report(m, dx, dy, failures: int) -> str:
 
 def test_failed_paths_make_the_result_uncertified(tmp_path, monkeypatch):
     m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 0.6), to.Segment(0.7, 1.1, 1.0, 0.8)])
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")     # a fake phc -b report
     monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, _report(m, 0.5, 0.2, failures=3)))
     eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
     assert eqs.failed_paths == 3 and not eqs.certified and (eqs.status, eqs.success) == ("uncertified", False)
@@ -362,6 +363,7 @@ def test_a_run_with_failed_paths_is_repeated(tmp_path, monkeypatch):
     exe.write_text(f"#!/bin/sh\nfor last; do :; done\nif [ -e '{count}' ]; then cp '{good}' \"$last\"; "
                    f"else touch '{count}'; cp '{bad}' \"$last\"; fi\n")
     exe.chmod(exe.stat().st_mode | stat.S_IEXEC)
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")     # fake phc -b reports
     monkeypatch.setenv("TENSEGRITY_PHC", str(exe))
     eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
     assert eqs.certified and eqs.failed_paths == 0 and "2 runs" in eqs.message and eqs.status == "certified"
@@ -382,6 +384,7 @@ def test_report_defects_make_the_result_uncertified(tmp_path, monkeypatch, defec
     else:
         bad = block.replace("real regular", "no solution")
     rep = rep.replace(block, bad)
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")     # a fake phc -b report
     monkeypatch.setenv("TENSEGRITY_PHC", _fake_phc(tmp_path, rep))
     eqs = to.find_equilibria(m, 0.5, 0.2, method="homotopy")
     assert not eqs.certified

@@ -53,6 +53,7 @@ def _homotopy_set(monkeypatch, failures: int = 0, extra=()) -> to.EquilibriumSet
     if len(extra):
         bogus = np.array([np.concatenate([np.exp(0.5j * np.asarray(q)), [0.1 + 0.0j, 0.1 + 0.0j]]) for q in extra])
         roots = np.vstack([roots, bogus])
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")     # the stand-in replaces the polyhedral solve
     monkeypatch.setattr(homotopy, "solve_homotopy", _stand_in(roots, failures))
     return to.find_equilibria(PAIR, 0.5, 0.2, method="homotopy")
 
@@ -131,6 +132,7 @@ def test_homotopy_certified_and_uncertified_through_a_stand_in(monkeypatch):
 def test_the_force_homotopy_uncertified_through_a_stand_in(monkeypatch):
     loaded = to.find_equilibria_under_force(PAIR, -0.2, 0.05)
     roots = np.array([np.exp(0.5j * e.q) for e in loaded])
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")     # the stand-in replaces the polyhedral solve
     monkeypatch.setattr(homotopy, "solve_force_homotopy", _stand_in(roots, 1))
     eqs = to.find_equilibria_under_force(PAIR, -0.2, 0.05, method="homotopy")
     assert (eqs.status, eqs.success, eqs.method, eqs.failed_paths) == ("uncertified", False, "homotopy", 1)

@@ -231,3 +231,16 @@ def test_options_that_exclude_each_other_are_refused(argv, first, second, capsys
     """A deflection and a force (the force won silently), a chain file and the uniform chain's options (the
     file won silently): one line naming both, exit status 2, before anything is read or solved."""
     refuses_together(main, argv, first, second, capsys)
+
+
+def test_cli_homotopy_precompute_lists_the_start_solutions(capsys, tmp_path, monkeypatch):
+    """n = 2 start roots of both kinds and structures: the packaged ones are found (nothing computed), their
+    counts are the mixed volumes (8 and 24 general, 8 and 16 symmetric)."""
+    monkeypatch.setenv("TENSEGRITY_CACHE_DIR", str(tmp_path))
+    assert main(["homotopy-precompute", "--max-segments", "2"]) == 0
+    lines = capsys.readouterr().out.strip().splitlines()
+    assert len(lines) == 4 and all("(packaged" in line for line in lines)
+    assert [int(line.split(":")[1].split()[0]) for line in lines] == [8, 8, 24, 16]
+    assert not (tmp_path / "homotopy").exists()
+    with pytest.raises(SystemExit):                                         # n = 2..6 only
+        main(["homotopy-precompute", "--max-segments", "7"])
