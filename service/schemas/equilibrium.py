@@ -76,7 +76,7 @@ class EquilibriaRequest(BaseModel):
 
 
 # ---------------------------------------------------------------------------- responses
-class CertificateOut(outcome_model(to.EnergyBound)):
+class EnergyBoundOut(outcome_model(to.EnergyBound)):
     """The least-energy certificate (`tensegrity_opt.EnergyBound`)."""
 
     bound: float = Field(description="no configuration meeting the tip constraint in the closed joint range has a "
@@ -105,8 +105,9 @@ class EquilibriumOut(outcome_model(to.Equilibrium)):
     signs: str = Field(description="sign of each joint angle: +, - or 0")
     tip: list[float] = Field(description="tip position [x, y]")
     solver: SolverInfo
-    certificate: CertificateOut | None = Field(None, description="with `certify: true` only: the rigorous lower "
-                                                                 "bound and its gap")
+    certificate: EnergyBoundOut | None = Field(
+        None, description="the rigorous lower bound on the energy and its gap: with `certify: true`, or where the "
+                          "default search's short way (short multistable chains) proved its answer; else null")
 
 
 class RootBoxOut(BaseModel):

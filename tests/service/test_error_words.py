@@ -44,7 +44,7 @@ def test_a_misspelt_field_leads_with_the_nearest_name(client, path, body, field,
 
 def test_a_name_far_from_every_field_lists_them(client):
     err = client.post("/v1/equilibrium", json={"manipulator": {"n": 4}, "dx": 0.1, "zzzz": 1}).json()
-    assert err["message"] == "zzzz: unknown field; expected one of manipulator, dx, dy, q0, local", err
+    assert err["message"] == "zzzz: unknown field; expected one of manipulator, dx, dy, q0, local, certify", err
 
 
 def test_without_the_schema_the_unknown_field_still_leads():

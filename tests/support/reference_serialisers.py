@@ -44,7 +44,16 @@ def equilibrium_out(eq) -> dict[str, Any]:
             "morse_index": int(eq.morse_index), "stable": bool(eq.stable), "kind": eq.kind, "shape": eq.shape,
             "signs": eq.signs, "tip": _nums(eq.tip),
             "solver": {"status": str(eq.solver.status),
-                       "iterations": None if eq.solver.iterations is None else int(eq.solver.iterations)}}
+                       "iterations": None if eq.solver.iterations is None else int(eq.solver.iterations)},
+            "certificate": energy_bound_out(eq.certificate)}
+
+
+def energy_bound_out(c) -> dict[str, Any] | None:
+    if c is None:
+        return None
+    return {**outcome(c), "bound": _num(c.bound), "energy": _num(c.energy), "gap": _num(max(0.0, c.energy - c.bound)),
+            "tolerance": _num(c.tolerance), "certified": c.status == "certified", "improved": bool(c.improved),
+            "patterns": int(c.patterns), "boxes": int(c.boxes), "newton": int(c.newton), "seconds": _num(c.seconds)}
 
 
 def certificate_out(c) -> dict[str, Any] | None:

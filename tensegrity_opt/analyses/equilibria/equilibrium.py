@@ -166,9 +166,10 @@ class Equilibrium(Outcome, TipForce):
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/equilibrium``): ``success``, ``status``, ``message``, ``q``,
         ``energy``, ``force`` ``{fx, fy}``, ``morse_index``, ``stable``, ``kind``, ``shape``, ``signs``, ``tip``,
-        ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted), and with ``certify=True``
-        ``certificate`` (:meth:`EnergyBound.to_dict`); every number finite (:mod:`tensegrity_opt.serialize`)."""
-        extra = {} if self.certificate is None else {"certificate": self.certificate.to_dict()}
+        ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted), ``certificate``
+        (:meth:`EnergyBound.to_dict`: with ``certify=True``, or where the search's short way proved its answer;
+        else ``null``); every number finite (:mod:`tensegrity_opt.serialize`)."""
+        extra = {"certificate": None if self.certificate is None else self.certificate.to_dict()}
         return {**self.outcome(), "q": numbers(self.q), "energy": number(self.energy),
                 "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,

@@ -32,8 +32,6 @@ from .buckling_out import BucklingOut
 from .buckling_out_boundary import BucklingOutBoundary
 from .buckling_request import BucklingRequest
 from .buckling_request_boundary import BucklingRequestBoundary
-from .certificate_out import CertificateOut
-from .certificate_out_status import CertificateOutStatus
 from .control_out import ControlOut
 from .control_out_kind import ControlOutKind
 from .control_out_tip_type_0 import ControlOutTipType0
@@ -52,6 +50,8 @@ from .design_out_status import DesignOutStatus
 from .design_segmented_manipulator_in import DesignSegmentedManipulatorIn
 from .design_uniform_manipulator_in import DesignUniformManipulatorIn
 from .displacement_control_in import DisplacementControlIn
+from .energy_bound_out import EnergyBoundOut
+from .energy_bound_out_status import EnergyBoundOutStatus
 from .energy_landscape_out import EnergyLandscapeOut
 from .energy_landscape_request import EnergyLandscapeRequest
 from .equilibria_out import EquilibriaOut
@@ -288,8 +288,6 @@ __all__ = (
     "BucklingOutBoundary",
     "BucklingRequest",
     "BucklingRequestBoundary",
-    "CertificateOut",
-    "CertificateOutStatus",
     "ControlOut",
     "ControlOutKind",
     "ControlOutTipType0",
@@ -308,6 +306,8 @@ __all__ = (
     "DesignSegmentedManipulatorIn",
     "DesignUniformManipulatorIn",
     "DisplacementControlIn",
+    "EnergyBoundOut",
+    "EnergyBoundOutStatus",
     "EnergyLandscapeOut",
     "EnergyLandscapeRequest",
     "EquilibriaOut",

@@ -11,7 +11,7 @@ from ..models.equilibrium_out_status import EquilibriumOutStatus
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
-    from ..models.certificate_out import CertificateOut
+    from ..models.energy_bound_out import EnergyBoundOut
     from ..models.force import Force
     from ..models.solver_info import SolverInfo
 
@@ -42,7 +42,8 @@ class EquilibriumOut:
             configuration meeting the tip constraint (certify=True; certificate)
         success (bool): whether it worked: `status` is one of certified, converged, exact
         tip (list[float]): tip position [x, y]
-        certificate (CertificateOut | None | Unset): with `certify: true` only: the rigorous lower bound and its gap
+        certificate (EnergyBoundOut | None | Unset): the rigorous lower bound on the energy and its gap: with `certify:
+            true`, or where the default search's short way (short multistable chains) proved its answer; else null
     """
 
     energy: float
@@ -58,11 +59,11 @@ class EquilibriumOut:
     status: EquilibriumOutStatus
     success: bool
     tip: list[float]
-    certificate: CertificateOut | None | Unset = UNSET
+    certificate: EnergyBoundOut | None | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
-        from ..models.certificate_out import CertificateOut  # noqa: PLC0415
+        from ..models.energy_bound_out import EnergyBoundOut  # noqa: PLC0415
 
         energy = self.energy
 
@@ -93,7 +94,7 @@ class EquilibriumOut:
         certificate: dict[str, Any] | None | Unset
         if isinstance(self.certificate, Unset):
             certificate = UNSET
-        elif isinstance(self.certificate, CertificateOut):
+        elif isinstance(self.certificate, EnergyBoundOut):
             certificate = self.certificate.to_dict()
         else:
             certificate = self.certificate
@@ -124,7 +125,7 @@ class EquilibriumOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
-        from ..models.certificate_out import CertificateOut  # noqa: PLC0415
+        from ..models.energy_bound_out import EnergyBoundOut  # noqa: PLC0415
         from ..models.force import Force  # noqa: PLC0415
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
 
@@ -155,7 +156,7 @@ class EquilibriumOut:
 
         tip = cast(list[float], d.pop("tip"))
 
-        def _parse_certificate(data: object) -> CertificateOut | None | Unset:
+        def _parse_certificate(data: object) -> EnergyBoundOut | None | Unset:
             if data is None:
                 return data
             if isinstance(data, Unset):
@@ -163,12 +164,12 @@ class EquilibriumOut:
             try:
                 if not isinstance(data, dict):
                     raise TypeError()
-                certificate_type_0 = CertificateOut.from_dict(data)
+                certificate_type_0 = EnergyBoundOut.from_dict(data)
 
                 return certificate_type_0
             except (TypeError, ValueError, AttributeError, KeyError):
                 pass
-            return cast(CertificateOut | None | Unset, data)
+            return cast(EnergyBoundOut | None | Unset, data)
 
         certificate = _parse_certificate(d.pop("certificate", UNSET))
 

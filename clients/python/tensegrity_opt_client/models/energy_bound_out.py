@@ -6,13 +6,13 @@ from typing import Any, TypeVar
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
 
-from ..models.certificate_out_status import CertificateOutStatus
+from ..models.energy_bound_out_status import EnergyBoundOutStatus
 
-T = TypeVar("T", bound="CertificateOut")
+T = TypeVar("T", bound="EnergyBoundOut")
 
 
 @_attrs_define
-class CertificateOut:
+class EnergyBoundOut:
     """The least-energy certificate (`tensegrity_opt.EnergyBound`).
 
     Attributes:
@@ -26,7 +26,7 @@ class CertificateOut:
         newton (int): Newton re-centrings of open boxes
         patterns (int): pattern boxes (products of the joints' low-energy pieces) enumerated
         seconds (float): wall time of the bound (s)
-        status (CertificateOutStatus): `certified`: the gap between the best energy and the rigorous lower bound is
+        status (EnergyBoundOutStatus): `certified`: the gap between the best energy and the rigorous lower bound is
             within the tolerance: the configuration is the least-energy one up to that tolerance; `open`: the lower bound is
             rigorous but the gap exceeds the tolerance (too many pieces or boxes, or the bounds were not tight enough): the
             configuration is not proven least
@@ -44,7 +44,7 @@ class CertificateOut:
     newton: int
     patterns: int
     seconds: float
-    status: CertificateOutStatus
+    status: EnergyBoundOutStatus
     success: bool
     tolerance: float
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
@@ -121,13 +121,13 @@ class CertificateOut:
 
         seconds = d.pop("seconds")
 
-        status = CertificateOutStatus(d.pop("status"))
+        status = EnergyBoundOutStatus(d.pop("status"))
 
         success = d.pop("success")
 
         tolerance = d.pop("tolerance")
 
-        certificate_out = cls(
+        energy_bound_out = cls(
             bound=bound,
             boxes=boxes,
             certified=certified,
@@ -143,8 +143,8 @@ class CertificateOut:
             tolerance=tolerance,
         )
 
-        certificate_out.additional_properties = d
-        return certificate_out
+        energy_bound_out.additional_properties = d
+        return energy_bound_out
 
     @property
     def additional_keys(self) -> list[str]:

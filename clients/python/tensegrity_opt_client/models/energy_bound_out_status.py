@@ -1,7 +1,7 @@
 from enum import StrEnum
 
 
-class CertificateOutStatus(StrEnum):
+class EnergyBoundOutStatus(StrEnum):
     CERTIFIED = "certified"
     OPEN = "open"
 
