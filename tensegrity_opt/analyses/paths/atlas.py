@@ -75,7 +75,7 @@ CROSSING_KINDS = ("switch", "branch_end")
 #: energy scale ``k (sum of rest lengths)^2``) tie for the least energy.
 TIE_TOL = 1e-9
 #: Chains up to this long get the homotopy's certified answer where the search finds no equilibrium (n = 3: ~0.3 s;
-#: n = 4: 4-8 s a target, too dear for a grid: its empty targets stay measured).
+#: n = 4: 1-3 s a target, too dear for a grid: its empty targets stay measured).
 HOMOTOPY_NONE_N = 3
 #: Two configurations closer than this (max-norm, rad) are the same equilibrium.
 SAME_Q = 1e-5
