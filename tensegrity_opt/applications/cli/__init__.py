@@ -76,10 +76,11 @@ def _cmd_equilibrium(args, m):
         eq = solve_equilibrium_under_force(m, args.fx or 0.0, args.fy or 0.0)
         head = f"Equilibrium under the tip force ({args.fx or 0.0:g}, {args.fy or 0.0:g})"
     else:
-        eq = solve_equilibrium(m, args.dx, args.dy)
+        eq = solve_equilibrium(m, args.dx, args.dy, certify=args.certify)
         head = f"Least-energy stable equilibrium at dx = {args.dx:g}, dy = {args.dy:g}"
     its = "iterations not counted" if eq.solver.iterations is None else f"{eq.solver.iterations} iterations"
-    return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.solver.status}, {its}"])
+    cert = [] if eq.certificate is None else [f"least energy {eq.certificate.message}"]
+    return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.solver.status}, {its}", *cert])
 
 
 def _cmd_equilibria(args, m):
@@ -163,7 +164,10 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
                          "0 when only --fy is given)")
     sp.add_argument("--fy", type=finite_float, default=None,
                     help="sideways tip force (force; 0 when only --fx is given)")
-    exclusive(sp, ["--dx", "--dy"], ["--fx", "--fy"], "a tip deflection or a tip force, not both")
+    sp.add_argument("--certify", action="store_true",
+                    help="prove the answer least: a rigorous lower bound on the energy of every configuration "
+                         "meeting the tip constraint, and the gap (certified when within its tolerance)")
+    exclusive(sp, ["--dx", "--dy", "--certify"], ["--fx", "--fy"], "a tip deflection or a tip force, not both")
 
     sp = command("equilibria", _cmd_equilibria, "every equilibrium (minima, saddles, maxima) for a tip deflection")
     add_deflection_options(sp)

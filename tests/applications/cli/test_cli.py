@@ -9,6 +9,7 @@ from pathlib import Path
 import pytest
 from cli_checks import USAGE_ERRORS, one_error_line, refuses_together
 
+import tensegrity_opt as to
 from tensegrity_opt.applications.cli import main
 
 
@@ -244,3 +245,21 @@ def test_cli_homotopy_precompute_lists_the_start_solutions(capsys, tmp_path, mon
     assert not (tmp_path / "homotopy").exists()
     with pytest.raises(SystemExit):                                         # n = 2..6 only
         main(["homotopy-precompute", "--max-segments", "7"])
+
+
+def test_cli_equilibrium_certify(capsys):
+    """--certify: the library's certify=True answer (a bistable chain near its wells: certified), its bound no
+    more than the energy; refused with a tip force."""
+    argv = ["equilibrium", "--n", "3", "--a", "0.6", "--b", "1", "--k", "1", "--L0", "1.2",
+            "--dx", "0.6", "--dy", "0.2"]
+    assert main([*argv, "--certify", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    lib = to.solve_equilibrium(to.Manipulator.uniform(3, 0.6, 1.0, 1.0, 1.2), 0.6, 0.2, certify=True)
+    assert data["status"] == lib.status == "certified" and data["energy"] == pytest.approx(lib.energy, abs=1e-12)
+    cert = data["certificate"]
+    assert cert["bound"] <= data["energy"] <= cert["bound"] + cert["tolerance"]
+    assert main([*argv, "--certify"]) == 0
+    assert "least energy certified" in capsys.readouterr().out
+    with pytest.raises(SystemExit) as exc:
+        main(["equilibrium", "--fx", "-0.1", "--certify"])
+    assert exc.value.code == 2 and "not allowed with argument --certify" in capsys.readouterr().err
