@@ -135,7 +135,11 @@ class HomotopySolve:
         How the roots were found, in words (:mod:`.parameter_homotopy`: the parameter homotopy, or why the
         polyhedral solve answered); empty for a plain polyhedral solve.
     retracked : int
-        Parameter homotopy: paths tracked a second time with careful settings (failed or jumped the first time).
+        Parameter homotopy: paths tracked a second time by ``phc -p`` with careful settings (not ended or jumped the
+        first time).
+    tracker : str
+        Parameter homotopy: what followed every path first, ``"batch"`` (:mod:`.homotopy_tracker`) or ``"phc"``
+        (``phc -p``); empty for a polyhedral solve.
     """
 
     roots: np.ndarray
@@ -151,6 +155,7 @@ class HomotopySolve:
     engine: str = "polyhedral"
     note: str = ""
     retracked: int = 0
+    tracker: str = ""
 
     @property
     def complete(self) -> bool:
@@ -571,6 +576,8 @@ def polish_roots(solve: HomotopySolve, q: np.ndarray, F: np.ndarray, regular: np
         why.append(f"{close} pairs of distinct roots closer than {dedupe_tol:g}")
     runs = f"{solve.attempts} run{'s' if solve.attempts > 1 else ''}"
     engine = "parameter homotopy" if solve.engine == "parameter" else "polyhedral homotopy"
+    if solve.engine == "parameter" and solve.tracker == "batch":
+        engine += ", batched tracker"
     report = (f"phc ({runs}, {engine}): {solve.paths} paths, {solve.failures} failed, {solve.at_infinity} at "
               f"infinity, {solve.singular} singular; {len(q)} real roots in range" + note
               + "".join(f"; {w}" for w in why) + (f"; {solve.note}" if solve.note else ""))

@@ -78,19 +78,20 @@ from ..model.segment import clean_coefficients
 from .build import cache_dir
 from .homotopy import (
     HomotopySolve,
+    _force_laurent_terms,
+    _laurent_terms,
     _names,
     _residuals,
     _solve,
     _system_text,
-    force_polynomial_system,
     phc_path,
-    polynomial_system,
 )
+from .homotopy_tracker import FAILED, FINITE, INFINITE, track_batch
 
 __all__ = ["ENGINE", "KINDS", "StartSolutions", "displacement_parameters", "displacement_family",
            "force_parameters", "force_family", "start_file", "load_start", "compute_start", "precompute",
            "track", "solve_parameter_homotopy", "solve_force_parameter_homotopy", "TORQUE_POWERS", "structure_of",
-           "GENERAL", "SYMMETRIC"]
+           "GENERAL", "SYMMETRIC", "TRACKERS", "tracker_name"]
 
 #: The torque powers of a segment's parameters (:meth:`~tensegrity_opt.model.segment.Segment.torque_polynomial`
 #: without its identically-zero ``z^0``).
@@ -122,6 +123,8 @@ SETTINGS: tuple[tuple[int, float], ...] = ((4, 0.01), (21, 1e-6), (23, 1e-6), (2
 #: The settings a failed or jumped path is tracked again with: steps of at most 0.02, tolerances 1e-10 along
 #: the path.
 CAREFUL: tuple[tuple[int, float], ...] = ((11, 0.02), (21, 1e-10), (23, 1e-10), (25, 1e-10), (27, 1e-10))
+#: The first trackers of :func:`track` (``TENSEGRITY_HOMOTOPY_TRACKER``): the batched numpy tracker or ``phc -p``.
+TRACKERS = ("batch", "phc")
 _PACKAGED = Path(__file__).with_name("homotopy_starts")
 
 
@@ -467,8 +470,6 @@ def _solutions_text(roots: np.ndarray, names: list[str]) -> str:
     return "\n".join(lines) + "\n"
 
 
-#: Per-path end states of :func:`track`.
-FINITE, INFINITE, FAILED = 0, 1, 2
 _NUM = r"[-+]?\d+\.\d+E[-+]\d+"
 
 
@@ -560,19 +561,34 @@ def _run_slices(exe: str, target_text: str, start: StartSolutions, rows: np.ndar
     return state, roots, regular, consistent
 
 
-def track(target_text: str, start: StartSolutions, *, threads: int | None = None, timeout: float | None = None,
-          gamma: complex | None = None, settings=None, careful=None, rng=None) -> HomotopySolve:
-    """Track the ``N`` start roots of ``start`` to the system ``target_text`` (PHCpack's format, a member of
-    the family) by ``phc -p``: ``threads`` processes over slices of the start roots, all on the one homotopy
-    ``gamma (1 - t) F(x; p0) + t F(x; p1)`` (``gamma`` random on the unit circle unless given).
+def tracker_name() -> str:
+    """The first tracker of :func:`track`: ``"batch"`` (:mod:`.homotopy_tracker`, the default) or ``"phc"`` (``phc -p``
+    for every path), from ``TENSEGRITY_HOMOTOPY_TRACKER``."""
+    name = os.environ.get("TENSEGRITY_HOMOTOPY_TRACKER", "").strip().lower() or "batch"
+    if name not in TRACKERS:
+        raise InvalidParameterError(f"TENSEGRITY_HOMOTOPY_TRACKER must be one of {TRACKERS}, got {name!r}",
+                                    field="TENSEGRITY_HOMOTOPY_TRACKER")
+    return name
 
-    Paths are tracked with ``settings`` (default :data:`SETTINGS`: quick); the paths that failed, and those
-    whose regular end points coincide with another's (path jumping), are tracked again on the *same* homotopy
-    with ``careful`` settings (default :data:`CAREFUL`: small steps, tight tolerances). A path is the same path
-    however carefully it is followed, so the end points stay those of one homotopy.
+
+def track(target: list[dict], start: StartSolutions, *, threads: int | None = None, timeout: float | None = None,
+          gamma: complex | None = None, settings=None, careful=None, rng=None, tracker: str | None = None
+          ) -> HomotopySolve:
+    """Track the ``N`` start roots of ``start`` to the system ``target`` (a member of the family, Laurent polynomials
+    as dicts exponent -> coefficient), all on the one homotopy ``gamma (1 - t) F(x; p0) + t F(x; p1)`` (``gamma``
+    random on the unit circle unless given).
+
+    The ``tracker`` (default :func:`tracker_name`) follows every path first: ``"batch"`` advances them together in
+    numpy (:func:`~.homotopy_tracker.track_batch`), ``"phc"`` runs ``phc -p`` with ``settings`` (default
+    :data:`SETTINGS`: quick) in ``threads`` processes over slices of the start roots. The paths it did not end, and
+    those whose regular end points coincide with another's (path jumping), are tracked again by ``phc -p`` on the
+    *same* homotopy with ``careful`` settings (default :data:`CAREFUL`: small steps, tight tolerances; PHCpack's end
+    games judge singular end points and paths to infinity). A path is the same path however it is followed, so the
+    end points stay those of one homotopy.
 
     Returns the end points as a :class:`~.homotopy.HomotopySolve` (``paths = N``; ``failures`` counts the paths
-    that failed again or still coincide; ``consistent`` when every report checked out).
+    that failed again or still coincide; ``retracked`` the paths ``phc -p`` tracked again; ``consistent`` when
+    every report checked out).
 
     Raises
     ------
@@ -589,13 +605,21 @@ def track(target_text: str, start: StartSolutions, *, threads: int | None = None
     rng = np.random.default_rng() if rng is None else rng
     if gamma is None:
         gamma = complex(np.exp(2j * np.pi * rng.random()))
+    tracker = tracker_name() if tracker is None else tracker
     settings = SETTINGS if settings is None else settings
     careful = CAREFUL if careful is None else careful
     deadline = None if timeout is None else time.monotonic() + float(timeout)
+    names = _unknowns(start.kind, start.n)
+    target_text = _system_text(target, names)
     N = start.count
     t0 = time.perf_counter()
-    state, roots, regular, consistent = _run_slices(exe, target_text, start, np.arange(N), int(threads), gamma,
-                                                    settings, deadline)
+    if tracker == "batch":
+        tracked = track_batch(_family(start.kind)(start.n, start.parameters), target, gamma, start.roots,
+                              threads=int(threads), deadline=deadline)
+        state, roots, regular, consistent = tracked.state, tracked.roots, tracked.regular, True
+    else:
+        state, roots, regular, consistent = _run_slices(exe, target_text, start, np.arange(N), int(threads), gamma,
+                                                        settings, deadline)
     bad = np.flatnonzero(state == FAILED)
     jumped = _cluster_pairs(roots, np.flatnonzero((state == FINITE) & regular))
     again = np.union1d(bad, np.array(sorted(jumped), dtype=int))
@@ -610,11 +634,11 @@ def track(target_text: str, start: StartSolutions, *, threads: int | None = None
     return HomotopySolve(roots=roots[fin], regular=regular[fin], paths=N, failures=len(failed),
                          at_infinity=int((state == INFINITE).sum()), singular=int((fin & ~regular).sum()),
                          seconds=time.perf_counter() - t0, threads=int(threads), attempts=1, consistent=consistent,
-                         engine="parameter", retracked=retracked)
+                         engine="parameter", retracked=retracked, tracker=tracker)
 
 
 # ----------------------------------------------------------------------------- the solves
-def _parameter_solve(kind: str, n: int, structure: str, target_text: str, polyhedral, *, threads: int | None,
+def _parameter_solve(kind: str, n: int, structure: str, target: list[dict], polyhedral, *, threads: int | None,
                      timeout: float | None, attempts: int = ATTEMPTS) -> HomotopySolve:
     """Track from the cached start roots (computing them when missing), repeat once with a new ``gamma`` when
     paths fail, else the polyhedral solve ``polyhedral(timeout)``; the result's ``note`` says which."""
@@ -646,7 +670,7 @@ def _parameter_solve(kind: str, n: int, structure: str, target_text: str, polyhe
         if rest is not None and rest <= 0.0:
             break
         try:
-            sol = track(target_text, start, threads=threads, timeout=rest)
+            sol = track(target, start, threads=threads, timeout=rest)
         except SolverError as exc:
             if exc.status == "phc_timeout":
                 raise
@@ -658,9 +682,10 @@ def _parameter_solve(kind: str, n: int, structure: str, target_text: str, polyhe
         if best is None or (not sol.complete, sol.failures) < (not best.complete, best.failures):
             best = sol
         if sol.complete:
-            again = f", {sol.retracked} paths tracked again carefully" if sol.retracked else ""
+            how = "batched tracker" if sol.tracker == "batch" else "phc -p"
+            again = f", {sol.retracked} paths tracked again by phc -p" if sol.retracked else ""
             return replace(sol, note=f"parameter homotopy from {start.count} start solutions "
-                                     f"({structure}, {start.source}{again})" + note)
+                                     f"({structure}, {start.source}; {how}{again})" + note)
     if best is None:
         why = "phc -p did not run"
     elif best.failures:
@@ -685,7 +710,7 @@ def solve_parameter_homotopy(m: Manipulator, target, *, threads: int | None = No
     :func:`~.homotopy.solve_homotopy` (``timeout`` for the whole call)."""
     from .homotopy import solve_homotopy
 
-    return _parameter_solve("displacement", m.n, structure_of(m), polynomial_system(m, target),
+    return _parameter_solve("displacement", m.n, structure_of(m), _laurent_terms(m, target),
                             lambda left: solve_homotopy(m, target, threads=threads, timeout=left),
                             threads=threads, timeout=timeout, attempts=attempts)
 
@@ -697,6 +722,6 @@ def solve_force_parameter_homotopy(m: Manipulator, force, *, threads: int | None
     :func:`solve_parameter_homotopy`."""
     from .homotopy import solve_force_homotopy
 
-    return _parameter_solve("force", m.n, structure_of(m), force_polynomial_system(m, force),
+    return _parameter_solve("force", m.n, structure_of(m), _force_laurent_terms(m, force),
                             lambda left: solve_force_homotopy(m, force, threads=threads, timeout=left),
                             threads=threads, timeout=timeout, attempts=attempts)

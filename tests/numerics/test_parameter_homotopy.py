@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import json
 import os
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -192,8 +193,9 @@ def test_failed_paths_fall_back_to_the_polyhedral_solve(monkeypatch):
 
 @needs_phc
 def test_a_failed_path_is_tracked_again_on_the_same_homotopy(monkeypatch):
-    """The first phc -p run reports path 0 failed: it alone is tracked again (careful settings, same gamma),
-    the set is certified and the same."""
+    """phc -p as the first tracker: its first run reports path 0 failed; that path alone is tracked again (careful
+    settings, same gamma), the set is certified and the same."""
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_TRACKER", "phc")
     real = ph._run_slices
     seen = []
 
@@ -207,12 +209,44 @@ def test_a_failed_path_is_tracked_again_on_the_same_homotopy(monkeypatch):
     monkeypatch.setattr(ph, "_run_slices", first_fails)
     target = PAIR.target(0.5, 0.2)
     sol = ph.solve_parameter_homotopy(PAIR, target)
-    assert sol.complete and sol.retracked == 1 and sol.engine == "parameter"
+    assert sol.complete and sol.retracked == 1 and sol.engine == "parameter" and sol.tracker == "phc"
     assert [s[0] for s in seen] == [8, 1] and seen[0][1] == seen[1][1] and seen[1][2] == ph.CAREFUL
     monkeypatch.setattr(ph, "_run_slices", real)
     again = ph.solve_parameter_homotopy(PAIR, target)
     assert again.roots.shape == sol.roots.shape
     assert all(np.abs(again.roots - r).max(axis=1).min() < 1e-8 for r in sol.roots)
+
+
+@needs_phc
+def test_a_path_the_batch_tracker_did_not_end_goes_to_phc_on_the_same_homotopy(monkeypatch):
+    """The batched tracker (the default) leaves path 3 not ended and makes path 5 land on path 6's root (a jump):
+    exactly those three are tracked again by phc -p, careful, with the batch's gamma, and the set is the one of
+    a clean run."""
+    real_batch, real_slices = ph.track_batch, ph._run_slices
+    gammas, seen = [], []
+
+    def batch(polys0, polys1, gamma, starts, **kw):
+        gammas.append(gamma)
+        out = real_batch(polys0, polys1, gamma, starts, **kw)
+        state, roots, regular = out.state.copy(), out.roots.copy(), out.regular.copy()
+        state[3], roots[3], regular[3] = ph.FAILED, np.nan, False
+        roots[5] = roots[6]
+        return replace(out, state=state, roots=roots, regular=regular)
+
+    def slices(exe, text, start, rows, k, gamma, settings, deadline):
+        seen.append((sorted(np.asarray(rows).tolist()), gamma, settings))
+        return real_slices(exe, text, start, rows, k, gamma, settings, deadline)
+
+    target = PAIR.target(0.5, 0.2)
+    clean = ph.solve_parameter_homotopy(PAIR, target)
+    assert clean.complete and clean.tracker == "batch" and "batched tracker" in clean.note
+    monkeypatch.setattr(ph, "track_batch", batch)
+    monkeypatch.setattr(ph, "_run_slices", slices)
+    sol = ph.solve_parameter_homotopy(PAIR, target)
+    assert sol.complete and sol.retracked == 3 and "3 paths tracked again by phc -p" in sol.note
+    assert seen == [([3, 5, 6], gammas[0], ph.CAREFUL)]
+    assert sol.roots.shape == clean.roots.shape
+    assert all(np.abs(clean.roots - r).max(axis=1).min() < 1e-8 for r in sol.roots)
 
 
 @needs_phc
@@ -227,7 +261,7 @@ def test_a_missing_start_file_is_computed_and_stored(tmp_path, monkeypatch):
     start = ph.load_start("displacement", 2)
     assert start is not None and start.source == "cache" and start.count == 8
     again = to.find_equilibria(PAIR, 0.5, 0.2, method="homotopy")
-    assert again.certified and "(general, cache)" in again.message and "missing" not in again.message
+    assert again.certified and "(general, cache; batched tracker)" in again.message and "missing" not in again.message
     assert _same_sets(eqs, again, 2)
     # a damaged file (roots that do not solve its system) is ignored, not trusted
     with np.load(path) as f:
@@ -264,7 +298,7 @@ def test_a_mixed_structure_gets_its_own_start_roots_and_the_polyhedral_set(tmp_p
                         to.Segment(0.5, 1.1, (1.2, 0.8), 1.4)])
     dx, dy = 0.3 * m.straight_length, 0.1 * m.straight_length
     param = to.find_equilibria(m, dx, dy, method="homotopy")
-    assert param.certified and "(gsg, computed)" in param.message and "were missing: computed now" in param.message
+    assert param.certified and "(gsg, computed; batched tracker)" in param.message and "were missing: computed now" in param.message
     assert ph.start_file("displacement", 3, "gsg").exists()
     monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")
     poly = to.find_equilibria(m, dx, dy, method="homotopy")
