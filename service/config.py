@@ -8,7 +8,7 @@ variable                               default    meaning
 ``TENSEGRITY_MAX_SEGMENTS``            200        largest chain accepted (``too_many_segments`` above)
 ``TENSEGRITY_MAX_BATCH``               1000       most targets in one ``/v1/batch/equilibrium``
 ``TENSEGRITY_SOLVE_TIMEOUT``           10         seconds one request may run (504; its computation is stopped)
-``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   4          longest chain for ``method: homotopy`` (``too_many_segments``)
+``TENSEGRITY_HOMOTOPY_MAX_SEGMENTS``   5          longest chain for ``method: homotopy`` (``too_many_segments``)
 ``TENSEGRITY_BATCH_TIMEOUT``           60         seconds a batch may run (later targets: ``timeout``)
 ``TENSEGRITY_MAX_PATH_POINTS``         5000       most points of one branch (``max_points`` of the path endpoints)
 ``TENSEGRITY_MAX_ATLAS_TARGETS``       400        most targets of ``/v1/atlas`` (``atlas_too_large`` above: a job)
@@ -107,10 +107,10 @@ class Settings(BaseSettings):
     max_batch: int = Field(HARD_MAX_BATCH, ge=1, le=HARD_MAX_BATCH, description="most targets in one batch")
     solve_timeout: float = Field(10.0, gt=0, description="seconds one request may wait for its result")
     homotopy_max_segments: int = Field(
-        4, ge=0, le=6,
-        description="longest chain for which /v1/equilibria accepts method=homotopy (PHCpack's parameter "
-                    "homotopy; measured on 2 cores: n = 4 ~1.5 s of CPU, 1-4 s at load 3-8; n = 5 ~20 s of CPU, "
-                    "10-25 s: raise solve_timeout with it); 0: refused")
+        5, ge=0, le=6,
+        description="longest chain for which /v1/equilibria accepts method=homotopy (the parameter homotopy, "
+                    "batched tracker; measured on 2 cores: n = 4 ~0.25 s, n = 5 ~2 s (up to 4.5 s), n = 6 ~20 s: "
+                    "raise solve_timeout with it); 0: refused")
     batch_timeout: float = Field(60.0, gt=0, description="seconds one batch may run")
     max_path_points: int = Field(
         HARD_MAX_PATH_POINTS, ge=2, le=HARD_MAX_PATH_POINTS,

@@ -71,7 +71,7 @@ class EquilibriaRequest(BaseModel):
     method: Literal["search", "homotopy"] = Field(
         "search", description="`search`: multi-start Newton (any n; complete in practice, not certified); "
                               "`homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every "
-                              "equilibrium certified (chains up to the server's `homotopy_max_segments`, default 4; "
+                              "equilibrium certified (chains up to the server's `homotopy_max_segments`, default 5; "
                               "seconds; needs the `phcpack` package on the server, else 503 `homotopy_unavailable`)")
 
 

@@ -76,7 +76,7 @@ async def solve_equilibrium_under_force(
     summary="Every equilibrium for a tip deflection (minima, saddles, maxima)",
     description="All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy; "
                 "`morse_index`/`kind` classify each one. `method: homotopy` certifies the set (`certified`) "
-                "for chains up to the server's `homotopy_max_segments` (default 4); the default search is complete in "
+                "for chains up to the server's `homotopy_max_segments` (default 5); the default search is complete in "
                 "practice, not certified.",
     responses=solve_responses(ex.EQUILIBRIA, "unreachable_target", "solver_failed"))
 async def find_equilibria(
