@@ -813,9 +813,10 @@ PARAMETER_GOALS = {4: 0.5, 5: 5.0, 6: 60.0}
 
 
 def _parameter_homotopy_rows(cfg: Config) -> list[Row]:
-    """The parameter homotopy (``phc -p`` from the cached start roots, the default engine of method="homotopy")
-    against the polyhedral solve (``phc -b``, ``TENSEGRITY_HOMOTOPY_ENGINE=polyhedral``), same chain and target,
-    n = 2..6 (--quick: 2..4; the polyhedral n = 6, ~12-20 min, only in the full run)."""
+    """The parameter homotopy (the batched tracker from the cached start roots, the default engine of
+    method="homotopy") against the polyhedral solve (``phc -b``, ``TENSEGRITY_HOMOTOPY_ENGINE=polyhedral``), same
+    chain and target, n = 2..6 (--quick: 2..4; the polyhedral n = 6, ~12-20 min, only in the full run); the notes
+    add the parameter homotopy with ``phc -p`` for every path (``TENSEGRITY_HOMOTOPY_TRACKER=phc``)."""
     import os
 
     from tensegrity_opt.numerics import parameter_homotopy as ph
@@ -835,6 +836,13 @@ def _parameter_homotopy_rows(cfg: Config) -> list[Row]:
             t0 = time.perf_counter()
             h = to.find_equilibria(m, dx, dy, method="homotopy")
             par.append(time.perf_counter() - t0)
+        os.environ["TENSEGRITY_HOMOTOPY_TRACKER"] = "phc"
+        try:
+            t0 = time.perf_counter()
+            phcp = to.find_equilibria(m, dx, dy, method="homotopy")
+            tq = time.perf_counter() - t0
+        finally:
+            del os.environ["TENSEGRITY_HOMOTOPY_TRACKER"]
         os.environ["TENSEGRITY_HOMOTOPY_ENGINE"] = "polyhedral"
         try:
             t0 = time.perf_counter()
@@ -842,7 +850,11 @@ def _parameter_homotopy_rows(cfg: Config) -> list[Row]:
             tp = time.perf_counter() - t0
         finally:
             del os.environ["TENSEGRITY_HOMOTOPY_ENGINE"]
-        same = len(poly) == len(h) and all(min(np.max(np.abs(e.q - f.q)) for f in poly) < 1e-6 for e in h)
+
+        def agree(a, b) -> bool:
+            return len(a) == len(b) and all(min(np.max(np.abs(e.q - f.q)) for f in b) < 1e-6 for e in a)
+
+        same = agree(h, poly) and agree(h, phcp)
         o = float(np.median(par)) * 1e3
         goal = PARAMETER_GOALS.get(n)
         rows.append(Row("9", "parameter homotopy find_equilibria (certified)", n, o, "ms",
@@ -851,8 +863,9 @@ def _parameter_homotopy_rows(cfg: Config) -> list[Row]:
                         met=(h.certified and same and o <= goal * 1e3) if goal else None,
                         samples=par, baseline_samples=[tp],
                         notes=[f"parameter homotopy n={n}: {h.paths} paths ({h.failed_paths} failed), certified "
-                               f"{h.certified}, {len(h)} equilibria; polyhedral: {poly.paths} paths, certified "
-                               f"{poly.certified}, {'the same set' if same else 'DIFFERENT sets'}; {h.message}"]))
+                               f"{h.certified}, {len(h)} equilibria; with phc -p for every path {tq:.2f} s "
+                               f"(certified {phcp.certified}); polyhedral: {poly.paths} paths, certified "
+                               f"{poly.certified}; {'the same set' if same else 'DIFFERENT sets'}; {h.message}"]))
     return rows
 
 

@@ -41,7 +41,8 @@ from dataclasses import dataclass
 import numpy as np
 
 __all__ = ["TrackedPaths", "track_batch", "FINITE", "INFINITE", "FAILED", "BETA", "CONTRACTION", "H_MIN",
-           "RCOND_MIN", "MAX_STEPS", "MIN_SLICE"]
+           "RCOND_MIN", "MAX_STEPS", "MIN_SLICE", "ENDGAME", "VALUATION_TOL", "VALUATION_MIN",
+           "VALUATION_CHECKS"]
 
 #: Per-path end states (as :mod:`.parameter_homotopy` reads PHCpack's): ended on a finite root at ``t = 1``,
 #: diverged, or not ended (to be tracked again).
@@ -56,6 +57,13 @@ H_MIN = 1e-9
 MAX_STEPS = 3000
 #: An end point whose Jacobian has a reciprocal condition number below this is left to PHCpack (singular or nearly).
 RCOND_MIN = 1e-9
+#: The end game watches the paths from ``1 - t`` below this on (:func:`track_batch`).
+ENDGAME = 5e-2
+#: A path diverges when its valuation estimates agree within this at :data:`VALUATION_CHECKS` checkpoints in a
+#: row (each a halving of ``1 - t`` past the last), one unknown's at least :data:`VALUATION_MIN` in modulus.
+VALUATION_TOL = 1e-2
+VALUATION_MIN = 0.1
+VALUATION_CHECKS = 3
 #: A path whose unknowns exceed this in modulus (or fall below its reciprocal: a ``z_j -> 0``) leaves the torus.
 BIG = 1e8
 _ROUNDOFF = 1e-13
@@ -238,13 +246,17 @@ def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedP
     t_prev = np.full(N, np.nan)
     h = np.full(N, 0.02)
     steps = np.zeros(N, int)
+    # the end game's valuation checkpoints: the last estimate, the 1 - t it was taken at, how many agreed in a row
+    nu_ck = np.full((N, nv), np.nan)
+    s_ck = np.full(N, np.inf)
+    agree = np.zeros(N, int)
     alive = ok & np.isfinite(v).all(axis=1)
     total_steps = total_rejected = iterations = 0
 
     def drop(keep: np.ndarray) -> None:
-        nonlocal idx, x, t, v, x_prev, v_prev, t_prev, h, steps
-        idx, x, t, v, x_prev, v_prev, t_prev, h, steps = (a[keep] for a in (idx, x, t, v, x_prev, v_prev, t_prev,
-                                                                            h, steps))
+        nonlocal idx, x, t, v, x_prev, v_prev, t_prev, h, steps, nu_ck, s_ck, agree
+        idx, x, t, v, x_prev, v_prev, t_prev, h, steps, nu_ck, s_ck, agree = (
+            a[keep] for a in (idx, x, t, v, x_prev, v_prev, t_prev, h, steps, nu_ck, s_ck, agree))
 
     drop(alive)
     done_x, done_idx = [], []
@@ -253,6 +265,11 @@ def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedP
             break
         iterations += 1
         h = np.minimum(h, 1.0 - t)
+        # a path whose valuation is not near zero (heading for 0 or infinity, see the end game below) steps at
+        # most half way to t = 1: its end game's checkpoints come, and it never lands on t = 1 out of the torus
+        rest = 1.0 - t
+        away = np.abs(rest[:, None] * (v / x).real).max(axis=1) >= VALUATION_MIN
+        h[away] = np.minimum(h[away], 0.5 * rest[away])
         s = t + h
         # predictor: cubic Hermite through (t_prev, x_prev, v_prev), (t, x, v); Euler without a previous point
         xp = x + h[:, None] * v
@@ -284,15 +301,29 @@ def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedP
         h[acc] *= grow
         rej = ~good
         h[rej] *= 0.5
-        # ended or lost
+        # end game: near t = 1 the valuations nu_j = d log|x_j| / d log(1 - t) = -(1 - t) Re(x_j' / x_j), estimated
+        # at checkpoints each a halving of 1 - t apart; a path whose valuations agree at VALUATION_CHECKS
+        # checkpoints in a row, one of them nonzero, is leaving the torus (x_j -> 0 or infinity as a power of 1 - t)
+        sr = 1.0 - t[acc]
+        ck = acc[(sr <= ENDGAME) & (sr > 0.0) & (sr <= 0.5 * s_ck[acc])]
+        diverged = np.zeros(idx.size, bool)
+        if ck.size:
+            nu = -(1.0 - t[ck])[:, None] * (v[ck] / x[ck]).real
+            same = (np.abs(nu - nu_ck[ck]).max(axis=1) <= VALUATION_TOL) & (np.abs(nu).max(axis=1) >= VALUATION_MIN)
+            agree[ck] = np.where(same, agree[ck] + 1, 0)
+            nu_ck[ck], s_ck[ck] = nu, 1.0 - t[ck]
+            diverged[ck] = agree[ck] >= VALUATION_CHECKS - 1
+        # ended, diverged or lost
         mag = np.abs(x).max(axis=1)
         small = np.abs(x).min(axis=1)
         lost = (h < H_MIN) | (steps > MAX_STEPS) | (mag > BIG) | (small < 1.0 / BIG) | ~np.isfinite(mag)
-        ended = (t >= 1.0) & ~lost
+        lost &= ~diverged
+        ended = (t >= 1.0) & ~lost & ~diverged
         if ended.any():
             done_x.append(x[ended])
             done_idx.append(idx[ended])
-        drop(~(ended | lost))
+        state[idx[diverged]] = INFINITE
+        drop(~(ended | lost | diverged))
 
     if done_idx:
         ids = np.concatenate(done_idx)

@@ -56,18 +56,21 @@ def test_two_unknowns_end_on_every_root():
     assert got == [(-2.0, -3.0), (2.0, 3.0)] and np.abs(out.roots.imag).max() < 1e-12
 
 
-def test_a_double_root_and_a_path_to_infinity_are_not_reported_as_ended():
-    """Targets a regular tracker cannot end cleanly: ``(x - 1)^2`` (a double root, singular) and ``x - 1`` with the
-    ``x^2`` coefficient zero (one path diverges). Those paths come back FAILED (for PHCpack's end games); the
-    regular root of the second is still found."""
+def test_a_double_root_is_left_to_phc_and_paths_leaving_the_torus_are_diverged():
+    """``(x - 1)^2`` (a double root, singular): both paths come back FAILED, for PHCpack's end games. ``x - 1`` with
+    the ``x^2`` coefficient zero: one path ends on 1, the other goes to infinity (valuation -1); ``x^2 - x`` with
+    the constant zero: one ends on 1, the other goes to 0 (valuation +1, out of the torus of a Laurent system):
+    the end game calls both INFINITE."""
     rng = np.random.default_rng(3)
     start = np.concatenate([rng.normal(size=2) + 1j * rng.normal(size=2), [1.0]])
     x0 = _roots(start)[:, None]
     double = ht.track_batch(_univariate(start), _univariate([1.0, -2.0, 1.0]), np.exp(1.3j), x0)
     assert (double.state == ht.FAILED).all()
-    linear = ht.track_batch(_univariate(start), _univariate([-1.0, 1.0, 0.0]), np.exp(1.3j), x0)
-    assert sorted(linear.state.tolist()) == [ht.FINITE, ht.FAILED]
-    assert abs(linear.roots[linear.state == ht.FINITE, 0][0] - 1.0) < 1e-12
+    for target in ([-1.0, 1.0, 0.0], [0.0, -1.0, 1.0]):
+        out = ht.track_batch(_univariate(start), _univariate(target), np.exp(1.3j), x0)
+        assert sorted(out.state.tolist()) == [ht.FINITE, ht.INFINITE], target
+        assert abs(out.roots[out.state == ht.FINITE, 0][0] - 1.0) < 1e-12
+        assert np.isnan(out.roots[out.state == ht.INFINITE]).all()
 
 
 def test_a_past_deadline_ends_nothing_and_returns():

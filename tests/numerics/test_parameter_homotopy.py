@@ -126,7 +126,8 @@ def _oracle_cases():
 
 @needs_phc
 @pytest.mark.parametrize("case", _oracle_cases(),
-                         ids=lambda c: f"n{len(c['manipulator']['segments'])}-{c['family']}-{c['dx']:.3f}-{c['dy']:.3f}")
+                         ids=lambda c: (f"n{len(c['manipulator']['segments'])}-{c['family']}-{c['dx']:.3f}-"
+                                        f"{c['dy']:.3f}"))
 def test_parameter_homotopy_gives_the_oracle_sets(case):
     m = to.Manipulator.from_dict(case["manipulator"])
     eqs = to.find_equilibria(m, case["dx"], case["dy"], method="homotopy")
@@ -298,8 +299,36 @@ def test_a_mixed_structure_gets_its_own_start_roots_and_the_polyhedral_set(tmp_p
                         to.Segment(0.5, 1.1, (1.2, 0.8), 1.4)])
     dx, dy = 0.3 * m.straight_length, 0.1 * m.straight_length
     param = to.find_equilibria(m, dx, dy, method="homotopy")
-    assert param.certified and "(gsg, computed; batched tracker)" in param.message and "were missing: computed now" in param.message
+    assert param.certified and "(gsg, computed; batched tracker)" in param.message
+    assert "were missing: computed now" in param.message
     assert ph.start_file("displacement", 3, "gsg").exists()
     monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")
     poly = to.find_equilibria(m, dx, dy, method="homotopy")
     assert poly.certified and param.paths == poly.paths and len(param) > 0 and _same_sets(param, poly, 3)
+
+
+# ----------------------------------------------------------------------------- a sub-family: identical segments
+@pytest.mark.slow
+@needs_phc
+def test_uniform_bistable_n5_is_certified_with_its_excess_paths_diverged():
+    """Identical bistable segments tie the rows' coefficients: 256 of the 6272 paths leave the torus (some
+    ``z_j -> 0``), which PHCpack reports as failed paths (the set was uncertified). The batched tracker's end game
+    reads them as diverged: the set is certified, and it is the independent reference's: 52 equilibria (at least 52
+    were known), each confirmed by the reference model's Newton with its Morse index, every equilibrium of a
+    1500-start reference brute force among them."""
+    import reference_model as ref
+
+    m = to.Manipulator.uniform(5, 0.6, 1, 1, 1.2)
+    eqs = to.find_equilibria(m, 0.5, method="homotopy")
+    assert eqs.certified and eqs.failed_paths == 0 and "256 at infinity" in eqs.message, eqs.message
+    assert len(eqs) == 52
+    chain = ref.Chain(m.a, m.b, m.k1, m.k2, m.L1_0, m.L2_0)
+    target = chain.target(0.5)
+    for e in eqs:
+        q, F, ok = chain.newton_kkt(target, e.q, e.force)
+        assert ok and chain.in_range(q) and np.max(np.abs(q - e.q)) < 1e-8
+        assert int(np.sum(chain.reduced_eigs(q, F, fd=False) < 0)) == e.morse_index
+    got = _qs(eqs, 5)
+    brute = ref.all_equilibria(chain, 0.5, n_starts=1500, seed=11)
+    assert len(brute) >= 40
+    assert all(np.abs(got - q).max(axis=1).min() < 1e-6 for q, _ in brute)
