@@ -17,14 +17,27 @@ import math
 from collections.abc import Iterable
 from dataclasses import dataclass
 from functools import cached_property
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
 from ..errors import InvalidParameterError, UnreachableTargetError, unknown_name
 from .segment import Segment
 
-__all__ = ["Manipulator"]
+__all__ = ["Manipulator", "TipKinematics"]
+
+
+class TipKinematics(NamedTuple):
+    """The tip of many configurations at once (:meth:`Manipulator.tip_kinematics`), rows as the rows of ``Q``."""
+
+    #: ``cos phi_j``, ``sin phi_j`` of the absolute link angles ``phi_j = q_1 + ... + q_j``, (M, n).
+    cos: np.ndarray
+    sin: np.ndarray
+    #: Tip positions, (M, 2).
+    tip: np.ndarray
+    #: The tip Jacobian's rows ``d x_tip / dq`` and ``d y_tip / dq``, (M, n) each.
+    Jx: np.ndarray
+    Jy: np.ndarray
 
 
 _SEGMENT_KEYS = ("a", "b", "k", "L0")
@@ -231,6 +244,17 @@ class Manipulator:
         dx = -l * np.sin(phi)
         dy = l * np.cos(phi)
         return np.vstack([np.cumsum(dx[::-1])[::-1], np.cumsum(dy[::-1])[::-1]])
+
+    def tip_kinematics(self, Q: np.ndarray) -> TipKinematics:
+        """:meth:`tip` and :meth:`jacobian` of every row of ``Q`` (M, n) at once, with the links' absolute angles'
+        cosines and sines (no validation: the batched searches' inner loops)."""
+        phi = np.cumsum(Q, axis=1)
+        c, s = np.cos(phi), np.sin(phi)
+        lc, ls = self.link_lengths * c, self.link_lengths * s
+        tip = np.stack([self.base_length + lc.sum(axis=1), ls.sum(axis=1)], axis=1)
+        Jx = -np.cumsum(ls[:, ::-1], axis=1)[:, ::-1]
+        Jy = np.cumsum(lc[:, ::-1], axis=1)[:, ::-1]
+        return TipKinematics(c, s, tip, Jx, Jy)
 
     def target(self, dx: float, dy: float = 0.0) -> np.ndarray:
         """Tip position ``(2 sum(b) - dx, dy)`` for a deflection ``(dx, dy)``."""

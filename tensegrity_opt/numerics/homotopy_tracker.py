@@ -6,12 +6,13 @@
     ``H(x, t) = gamma (1 - t) F(x; p0) + t F(x; p1)``,  ``t`` real from 0 to 1,
 
 (``phc -p`` with relaxation power 1 and accessibility constant ``gamma``). PHCpack tracks one path at a time, at
-~2-3 ms of CPU a path for n = 4..5 (43648 paths at n = 6: ~2.5 min on 2 cores); the same paths advanced as one
+~2-3 ms of CPU a path for n = 4..5 (43648 paths at n = 6: ~3-4 min on 2 cores); the same paths advanced as one
 batch share every evaluation and linear solve (numpy's batched ``solve`` and one matrix product for all the
-monomials), so the cost a path falls to ~0.1-0.5 ms. This module only follows the easy paths: each path it
-cannot end cleanly (a step below :data:`H_MIN`, a path diverging or leaving the torus, an ill-conditioned or
-unconverged end point) comes back as :data:`FAILED` and is tracked again by ``phc -p`` on the *same* homotopy
-(same ``gamma``), whose end games handle singular end points and paths to infinity.
+monomials), so the cost a path falls to ~0.2-0.4 ms (n = 4: ~0.25 s, n = 5: ~2 s, n = 6: ~20 s). This module
+follows the regular paths and calls the ones leaving the torus diverged (:data:`INFINITE`); each path it cannot end
+cleanly (a step below :data:`H_MIN`, an ill-conditioned or unconverged end point, a path its end game does not
+settle) comes back as :data:`FAILED` and is tracked again by ``phc -p`` on the *same* homotopy (same ``gamma``),
+whose end games handle singular end points.
 
 Method (per path, all paths at once, each with its own ``t`` and step ``h``)
 ----------------------------------------------------------------------------
@@ -22,9 +23,15 @@ Method (per path, all paths at once, each with its own ``t`` and step ``h``)
   contracted it by :data:`CONTRACTION` or reached round-off (quadratic convergence: on the path, not on a
   neighbour); else ``h`` is halved;
 * step control: after an accepted step ``h`` grows by up to 2, by the predictor error's ratio to :data:`BETA`;
-* end: at ``t = 1`` three more Newton steps; the end point counts when its residual is at round-off and the
-  Jacobian's reciprocal condition number is above :data:`RCOND_MIN` (a regular root; PHCpack's singular end
-  points are its to judge).
+* end: at ``t = 1`` three more Newton steps; the end point counts when the last correction is at round-off
+  (:data:`CONVERGED`) and the Jacobian's reciprocal condition number is above :data:`RCOND_MIN` (a regular root;
+  PHCpack's singular end points are its to judge);
+* end game: from ``1 - t <=`` :data:`ENDGAME` on, the valuations ``nu_j = d log|x_j| / d log(1 - t) =
+  -(1 - t) Re(x_j' / x_j)`` are read at checkpoints, each a halving of ``1 - t`` past the last. On a path to a
+  finite root of the torus they tend to 0; on a path leaving it (``x_j -> 0`` or infinity, ``x_j ~ (1 - t)^w``
+  with ``w`` rational) to ``w``. A path whose valuations agree within :data:`VALUATION_TOL` at
+  :data:`VALUATION_CHECKS` checkpoints in a row, one at least :data:`VALUATION_MIN` in modulus, is :data:`INFINITE`.
+  A path whose current valuation is not near zero steps at most half way to ``t = 1``, so it never lands there.
 
 Nothing here decides completeness: :mod:`.parameter_homotopy` checks that the end points are pairwise distinct
 (two paths on one regular root means one jumped) and re-tracks the failed and coinciding paths by ``phc -p``.
@@ -80,8 +87,8 @@ class TrackedPaths:
     Attributes
     ----------
     state : ndarray (N,) int
-        :data:`FINITE` or :data:`FAILED` per path (this tracker does not classify divergence: a diverging path
-        is :data:`FAILED`, for PHCpack's end game).
+        :data:`FINITE`, :data:`INFINITE` (the end game: the path leaves the torus) or :data:`FAILED` (not ended here,
+        for PHCpack) per path.
     roots : ndarray (N, nv) complex
         The end points (``nan`` where not :data:`FINITE`).
     regular : ndarray (N,) bool

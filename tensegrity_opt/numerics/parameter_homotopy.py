@@ -38,20 +38,28 @@ n = 4 chain has 456 roots, not 832) get start roots of their own sub-family (:fu
   ``n = 2..5`` (equal to the mixed volume: the tied parameters do not lower the count): 8, 96, 832, 6272
   (43648 for ``n = 6``) for the displacement system, 24, 128, 704, 3840 for the force system; with every
   segment symmetric 8, 72, 456, 2488 and 16, 64, 256, 1024.
-* Every query tracks the ``N`` paths with ``phc -p`` (its continuation from given start solutions, in
-  ``threads`` processes over slices of the start roots, one ``gamma`` for all); the set is certified when
-  every path ended (a finite root at ``t = 1`` or diverged: "at infinity"), none failed, no two regular
-  end points coincide (path jumping), and every real root inside the range polished (:func:`~.homotopy.polish_roots`).
+* Every query tracks the ``N`` paths on one homotopy (one ``gamma`` for all): first all together by the batched
+  tracker of :mod:`.homotopy_tracker` (``TENSEGRITY_HOMOTOPY_TRACKER=phc``: by ``phc -p``, PHCpack's continuation
+  from given start solutions, in ``threads`` processes over slices of the start roots). The set is certified when
+  every path ended (a finite root at ``t = 1`` or diverged: "at infinity"), none failed, no two regular end points
+  coincide (path jumping), and every real root inside the range polished (:func:`~.homotopy.polish_roots`).
   Singular end points (a degenerate equilibrium, several paths on one root) are kept as in :mod:`.homotopy`:
   accepted at a looser distance from the real set and polished by Newton.
-* A failed path, and two paths whose regular end points coincide, are tracked again on the *same* homotopy
-  (same ``gamma``) with careful settings (:data:`CAREFUL`): the same paths, followed more closely. If paths
-  still fail (after :data:`ATTEMPTS` runs, each with a new ``gamma``), the full polyhedral solve
+* A path the first tracker did not end (the batched tracker leaves singular and ill-conditioned end points to
+  PHCpack's end games), and two paths whose regular end points coincide, are tracked again by ``phc -p`` on the
+  *same* homotopy (same ``gamma``) with careful settings (:data:`CAREFUL`): the same paths, followed more closely.
+  If paths still fail (after :data:`ATTEMPTS` runs, each with a new ``gamma``), the full polyhedral solve
   (:func:`~.homotopy.solve_homotopy`) answers and the message says so.
+* When every one of the ``N`` paths ends on a distinct regular finite root, that set is complete whatever happened
+  along the paths: Bernstein's theorem bounds the isolated roots in the torus of *every* member of the family by the
+  mixed volume ``N``, with multiplicity.
 
-Not covered: chains of identical segments are a further sub-family (their rows' torque coefficients are tied);
-for n = 5 uniform bistable chains 256 of the 6272 paths go to toric infinity and PHCpack reports them failed, in
-the parameter homotopy as in the polyhedral one: such a set stays uncertified (its equilibria are listed).
+Sub-families: chains of identical segments tie their rows' torque coefficients; for n = 5 uniform bistable chains
+256 of the 6272 paths (128 of 3840 for the force system) leave the torus (some ``z_j -> 0``) as ``t -> 1``. PHCpack
+reports those paths failed (the set was uncertified); the batched tracker's end game reads their valuations
+(``z_j ~ (1 - t)^w``, ``w`` rational and nonzero, agreeing at three checkpoints) and counts them diverged, so these
+sets are certified. That classification is numerical, like PHCpack's "at infinity"; a path it does not settle goes
+to ``phc -p`` as above.
 
 The start roots are kept on disk per machine (:func:`start_file`: ``TENSEGRITY_CACHE_DIR`` like the compiled
 kernels, a file per system kind, ``n``, structure and engine version :data:`ENGINE`); those of ``n <= 5``

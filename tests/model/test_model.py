@@ -126,6 +126,29 @@ def test_tip_with_different_b_and_jacobian_by_finite_differences():
         assert np.allclose(J[:, i], (m.tip(q + e) - m.tip(q - e)) / (2 * h), atol=1e-8)
 
 
+def test_batched_tip_kinematics_is_the_walk_and_finite_differences_row_by_row():
+    """``tip_kinematics`` on many rows (large angles, different b): each row's tip is the explicit walk of the links
+    and its Jacobian the central differences of that walk."""
+    m = Manipulator([Segment(1, 0.5), Segment(0.7, 1.5), Segment(0.3, 0.9), Segment(0.6, 1.1)])
+    lengths = np.array([0.5 + 1.5, 1.5 + 0.9, 0.9 + 1.1, 1.1])
+
+    def walk(q):
+        ang = np.cumsum(q)
+        return np.array([0.5 + lengths @ np.cos(ang), lengths @ np.sin(ang)])
+
+    Q = np.random.default_rng(4).uniform(-0.95, 0.95, (7, 4)) * m.joint_limits
+    k = m.tip_kinematics(Q)
+    h = 1e-6
+    for r, q in enumerate(Q):
+        assert np.allclose(k.tip[r], walk(q), rtol=1e-14, atol=1e-14)
+        assert np.allclose(k.cos[r], np.cos(np.cumsum(q))) and np.allclose(k.sin[r], np.sin(np.cumsum(q)))
+        for i in range(4):
+            e = np.zeros(4)
+            e[i] = h
+            fd = (walk(q + e) - walk(q - e)) / (2 * h)
+            assert abs(k.Jx[r, i] - fd[0]) < 1e-8 and abs(k.Jy[r, i] - fd[1]) < 1e-8
+
+
 def test_paper_jacobian_eq12_at_small_angles():
     # eq. (12): J^T = b [[-7q1-5q2-3q3-q4, 7], [-5q1-5q2-3q3-q4, 5], ...] (linearised)
     m = Manipulator.uniform(4)

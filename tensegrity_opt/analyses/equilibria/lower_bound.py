@@ -56,6 +56,7 @@ from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome
 from ...serialize import number
+from .seeds import project_to_target
 
 __all__ = ["EnergyBound", "energy_lower_bound", "bound_tolerance", "segment_pieces", "TOL_REL", "TOL_ABS",
            "MAX_PATTERNS", "MAX_BOXES", "MAX_SECONDS"]
@@ -324,15 +325,6 @@ class _Chain:
             out[:, js] = self.segs[js[0]].curvature_lower(lo[:, js], hi[:, js])
         return out
 
-    def kinematics(self, Q: np.ndarray):
-        phi = np.cumsum(Q, axis=1)
-        cphi, sphi = np.cos(phi), np.sin(phi)
-        lc, ls = self.l * cphi, self.l * sphi
-        tip = np.stack([self.base + lc.sum(axis=1), ls.sum(axis=1)], axis=1)
-        Jx = -np.cumsum(ls[:, ::-1], axis=1)[:, ::-1]
-        Jy = np.cumsum(lc[:, ::-1], axis=1)[:, ::-1]
-        return cphi, sphi, tip, Jx, Jy
-
     # ------------------------------------------------------------------ the bound of boxes
     def bound(self, lo, hi, C, lam0: np.ndarray | None, curv=None, iters: int = 5, fine: int = 0):
         """Rigorous lower bounds of ``E`` over the feasible points of each box (rows), and the multipliers used.
@@ -343,7 +335,7 @@ class _Chain:
         each bounded by its own second-order model (error ``O(M3 h^3)``: the refinement)."""
         B, n = lo.shape
         E, g, _ = self.derivs(C)
-        cphi, sphi, tip, Jx, Jy = self.kinematics(C)
+        cphi, sphi, tip, Jx, Jy = self.m.tip_kinematics(C)
         d = tip - self.T
         elo, ehi = lo - C, hi - C
         rho = np.maximum(np.maximum(-elo, ehi), 1e-300)
@@ -441,7 +433,7 @@ class _Chain:
         target's projection lies beyond ``max v . tip`` over the box, bounded link by link (each link's angle
         ``phi_j`` ranges over the interval of the partial sums of the joint intervals)."""
         Plo, Phi = np.cumsum(lo, axis=1), np.cumsum(hi, axis=1)
-        tip = self.kinematics(C)[2]
+        tip = self.m.tip_kinematics(C)[2]
         thetas = [np.full(lo.shape[0], 2 * math.pi * k / directions) for k in range(directions)]
         dd = self.T - tip
         thetas.append(np.arctan2(dd[:, 1], dd[:, 0]))
@@ -471,7 +463,7 @@ class _Chain:
         ok = np.zeros(B, dtype=bool)
         for it in range(iters):
             _, g, h = self.derivs(Q)
-            cphi, sphi, tip, Jx, Jy = self.kinematics(Q)
+            cphi, sphi, tip, Jx, Jy = self.m.tip_kinematics(Q)
             r1 = g - Jx * lam[:, :1] - Jy * lam[:, 1:]
             r2 = tip - self.T
             res = np.maximum(np.abs(r1).max(axis=1) / ts, np.abs(r2).max(axis=1) / scale)
@@ -647,7 +639,7 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
             return result(min(low, float(bnd.min())), "open", f"{lo.shape[0]} boxes still open at max_seconds")
         rounds += 1
         # Newton from the centres projected onto the tip constraint (rows that do not project keep the centre)
-        Qs = _project_rows(m, C, target)
+        Qs = project_to_target(m, C, target, tol=1e-13, drop=False)
         Qn, ln, okn = ch.newton(Qs)
         counts["newton"] += Qs.shape[0]
         new_incumbent(Qn, ln, okn)
@@ -692,25 +684,3 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
     return result(bound, status, "" if status == "certified" else "bounds not tight")
 
 
-def _project_rows(m: Manipulator, Q: np.ndarray, target: np.ndarray, iters: int = 30) -> np.ndarray:
-    """Rows moved onto the tip constraint by minimum-norm Gauss-Newton steps (at most 0.5 rad a step);
-    a row that does not converge keeps what it reached (Newton goes on from there)."""
-    Q = np.array(Q, dtype=float, copy=True)
-    l = m.link_lengths
-    for _ in range(iters):
-        phi = np.cumsum(Q, axis=1)
-        c, s = np.cos(phi) * l, np.sin(phi) * l
-        r = np.column_stack([target[0] - m.base_length - c.sum(axis=1), target[1] - s.sum(axis=1)])
-        if np.abs(r).max() < 1e-13 * float(m.b.sum()):
-            break
-        Jx = -np.cumsum(s[:, ::-1], axis=1)[:, ::-1]
-        Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
-        a11, a12, a22 = (Jx * Jx).sum(axis=1), (Jx * Jy).sum(axis=1), (Jy * Jy).sum(axis=1)
-        det = a11 * a22 - a12 * a12
-        det = np.where(det > 1e-14 * np.maximum(a11 * a22, 1e-300), det, np.inf)
-        w1 = (a22 * r[:, 0] - a12 * r[:, 1]) / det
-        w2 = (a11 * r[:, 1] - a12 * r[:, 0]) / det
-        step = Jx * w1[:, None] + Jy * w2[:, None]
-        step *= np.minimum(1.0, 0.5 / np.maximum(np.abs(step).max(axis=1), 1e-300))[:, None]
-        Q += np.where(np.isfinite(step), step, 0.0)
-    return Q

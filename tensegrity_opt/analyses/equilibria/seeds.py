@@ -206,34 +206,32 @@ def _pattern_matrix(m: Manipulator, hilltops: bool, cap: int, rng_seed: int) -> 
 
 
 def project_to_target(m: Manipulator, Q: np.ndarray, target: np.ndarray, *, iters: int = 30,
-                      tol: float = 1e-11) -> np.ndarray:
+                      tol: float = 1e-11, drop: bool = True) -> np.ndarray:
     """Each row of ``Q`` moved onto ``tip(q) = target`` by minimum-norm Gauss-Newton steps
-    (``q <- q + J^T (J J^T)^-1 (target - tip)``, at most 0.5 rad a step), all rows at once; rows that do not
-    converge or leave the physical range are dropped. A row stops once its tip is within ``tol`` of the chain's
-    half length ``sum b`` of the target (the rows still moving are the only ones evaluated: thousands of
-    starts, most settled in a few steps); the rows kept are within ``1e-8 sum b``."""
+    (``q <- q + J^T (J J^T)^-1 (target - tip)``, at most 0.5 rad a step), all rows at once. A row stops once its
+    tip is within ``tol`` of the chain's half length ``sum b`` of the target (the rows still moving are the only
+    ones evaluated: thousands of starts, most settled in a few steps). With ``drop`` the rows that do not converge
+    (within ``1e-8 sum b``), meet a singular Jacobian or leave the physical range are dropped; without it every row
+    is returned, in order, each where it got to (a row at a singular Jacobian stays where it was)."""
     Q = np.array(Q, dtype=float, copy=True)
     if Q.size == 0:
         return Q.reshape(0, m.n)
-    l = m.link_lengths
     lim = m.joint_limits
     scale = float(m.b.sum())
-    tx, ty = float(target[0]) - m.base_length, float(target[1])
+    tx, ty = float(target[0]), float(target[1])
     ok = np.ones(Q.shape[0], dtype=bool)
     active = np.arange(Q.shape[0])                  # rows still moving (not yet within tol, not broken)
     A = Q
     for _ in range(iters + 1):
-        phi = np.cumsum(A, axis=1)
-        c, s = np.cos(phi) * l, np.sin(phi) * l
-        rx, ry = tx - c.sum(axis=1), ty - s.sum(axis=1)
+        k = m.tip_kinematics(A)
+        rx, ry = tx - k.tip[:, 0], ty - k.tip[:, 1]
+        Jx, Jy = k.Jx, k.Jy
         moving = np.maximum(np.abs(rx), np.abs(ry)) >= tol * scale
         if not moving.all():                        # settled rows leave the active set
             Q[active] = A
-            active, A, c, s, rx, ry = active[moving], A[moving], c[moving], s[moving], rx[moving], ry[moving]
+            active, A, Jx, Jy, rx, ry = active[moving], A[moving], Jx[moving], Jy[moving], rx[moving], ry[moving]
         if active.size == 0 or _ == iters:
             break
-        Jx = -np.cumsum(s[:, ::-1], axis=1)[:, ::-1]
-        Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
         a11 = (Jx * Jx).sum(axis=1)
         a12 = (Jx * Jy).sum(axis=1)
         a22 = (Jy * Jy).sum(axis=1)
@@ -245,16 +243,17 @@ def project_to_target(m: Manipulator, Q: np.ndarray, target: np.ndarray, *, iter
         step = Jx * w1[:, None] + Jy * w2[:, None]
         big = np.abs(step).max(axis=1)
         step *= np.minimum(1.0, 0.5 / np.maximum(big, 1e-300))[:, None]      # at most 0.5 rad a step
-        A = A + step
-        broken = bad | ~np.all(np.isfinite(A), axis=1)
-        if broken.any():                            # a singular Jacobian or a non-finite step: dropped
+        broken = bad | ~np.all(np.isfinite(step), axis=1)
+        if broken.any():                            # a singular Jacobian or a non-finite step: stops (dropped)
             ok[active[broken]] = False
+            Q[active[broken]] = A[broken]
             keep = ~broken
-            active, A = active[keep], A[keep]
+            active, A, step = active[keep], A[keep], step[keep]
+        A = A + step
     Q[active] = A
-    phi = np.cumsum(Q, axis=1)
-    r = np.column_stack([tx - (np.cos(phi) * l).sum(axis=1), ty - (np.sin(phi) * l).sum(axis=1)])
-    ok &= np.abs(r).max(axis=1) < 1e-8 * scale
+    if not drop:
+        return Q
+    ok &= np.abs(m.tip_kinematics(Q).tip - (tx, ty)).max(axis=1) < 1e-8 * scale
     ok &= np.all(np.abs(Q) < lim, axis=1)
     return Q[ok]
 
@@ -313,17 +312,11 @@ def ranked_well_seeds(m: Manipulator, dx: float, dy: float, count: int, *, rng_s
     Ew = np.array([m.segments[j].energy(W[j]) for j in range(m.n)])
     Kw = np.array([np.maximum(-m.segments[j].dtorque(W[j]), 1e-12 * m.torque_scale) for j in range(m.n)])
     target = m.target(dx, dy)
-    l = m.link_lengths
     cols = np.arange(m.n)
 
     def score(D: np.ndarray) -> np.ndarray:
-        Q = W[cols, D]
-        phi = np.cumsum(Q, axis=1)
-        c, s = np.cos(phi) * l, np.sin(phi) * l
-        d0 = target[0] - m.base_length - c.sum(axis=1)
-        d1 = target[1] - s.sum(axis=1)
-        Jx = -np.cumsum(s[:, ::-1], axis=1)[:, ::-1]
-        Jy = np.cumsum(c[:, ::-1], axis=1)[:, ::-1]
+        _, _, tip, Jx, Jy = m.tip_kinematics(W[cols, D])
+        d0, d1 = target[0] - tip[:, 0], target[1] - tip[:, 1]
         ik = 1.0 / Kw[cols, D]
         cxx, cxy, cyy = (Jx * Jx * ik).sum(axis=1), (Jx * Jy * ik).sum(axis=1), (Jy * Jy * ik).sum(axis=1)
         det = cxx * cyy - cxy * cxy
