@@ -26,7 +26,8 @@ Eliminating the absolute angles keeps the system small: ``n + 2`` unknowns inste
 (the number of paths) is measured as 8, 96, 832, 6272 and 43648 for ``n = 2..6`` on general
 chains (8, 72, 456, 2488 when ``a = b``, which zeroes the ``z^2`` terms of symmetric segments); a
 naive formulation in absolute cosines, sines and unit circles gave 32, 704 for ``n = 2, 3`` with
-many failing paths. Time on 2 cores: n = 4 ~4-8 s, n = 5 ~1-2.5 min, n = 6 ~12 min. The flip
+many failing paths. Time of this polyhedral solve on 2 cores: n = 4 ~3-8 s, n = 5 ~1-2.5 min, n = 6 ~9-12 min (the
+parameter homotopy of :mod:`.parameter_homotopy`, the default, ~0.25 s, ~2 s, ~20 s). The flip
 ``z_j -> -z_j`` is *not* a symmetry here: it is the same segment with ``L_0 -> -L_0`` (spring
 lengths negative, ``q_j + 2 pi``), whose roots are genuine roots of the polynomial system and are
 dropped as outside the physical range; the 2^n sign copies of a formulation in absolute half
@@ -38,8 +39,9 @@ Force control
 Under a dead tip load ``F`` (:func:`force_polynomial_system`, :func:`solve_force_homotopy`) ``g = Fx + i Fy``
 and ``h = conj(g)`` are given numbers and the tip is free: the ``n`` stationarity rows above in the ``n``
 unknowns ``z_j`` alone, no tip equations. Mixed volume 4, 24, 128, 704, 3840 for ``n = 1..5`` on general
-chains; 2 cores: n = 3 ~0.3 s, n = 4 ~2-4 s, n = 5 ~15-70 s. Uniform chains of n = 5 measured with 128
-failed paths in every run (uncertified), like the displacement system's uniform bistable chains. The
+chains; polyhedral solve on 2 cores: n = 3 ~0.3 s, n = 4 ~2-4 s, n = 5 ~15-70 s. Uniform chains of n = 5 have
+128 paths to toric infinity, which PHCpack reports failed (uncertified here; the parameter homotopy's end game
+counts them diverged), like the displacement system's uniform bistable chains. The
 real roots are read by :func:`real_force_configurations`; ``F = 0`` needs no homotopy (the rows decouple:
 each segment's :meth:`~tensegrity_opt.model.segment.Segment.critical_points`).
 
