@@ -51,7 +51,7 @@ __all__ = ["solve_equilibrium", "search_stable", "certify_least", "WELLS_MAX"]
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
                       method: str = "auto", n_random: int | None = None,
-                      max_modes: int | None = None, certify: bool | None = False) -> Equilibrium:
+                      max_modes: int | None = None, certify: bool = False) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -118,10 +118,17 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         (``RuntimeError``) when no solve converged to a stable equilibrium inside the
         physical range; ``status`` lists the solver statuses met.
     """
+    return _solve_equilibrium(m, dx, dy, q0=q0, local=local, method=method, n_random=n_random, max_modes=max_modes,
+                              certify=bool(certify))
+
+
+def _solve_equilibrium(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str, n_random: int | None,
+                       max_modes: int | None, certify: bool | None) -> Equilibrium:
+    """:func:`solve_equilibrium`; ``certify=None`` is the search alone (no lower bound of any kind)."""
     if certify is not None and not local and method in ("auto", "ipopt") and \
             (certify or (m.n >= 2 and not m.monotonic and WELLS_MAX < _pattern_count(m) <= BOUND_SEEDED_PATTERNS)):
-        best = solve_equilibrium(m, dx, dy, q0=q0, method=method, n_random=n_random, max_modes=max_modes,
-                                 certify=None)
+        best = _solve_equilibrium(m, dx, dy, q0=q0, local=False, method=method, n_random=n_random,
+                                  max_modes=max_modes, certify=None)
         if certify:
             return certify_least(m, dx, dy, best)
         # more well patterns than the search tries: the bound's pattern sweep and Newton re-centrings (a short

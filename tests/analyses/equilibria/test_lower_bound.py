@@ -17,7 +17,7 @@ import pytest
 import reference_model as ref
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.equilibria.least_energy import solve_equilibrium
+from tensegrity_opt.analyses.equilibria.least_energy import _solve_equilibrium, solve_equilibrium
 from tensegrity_opt.analyses.equilibria.lower_bound import EnergyBound, energy_lower_bound, segment_pieces
 from tensegrity_opt.errors import InvalidParameterError
 
@@ -199,11 +199,12 @@ def test_certified_bistable_n20():
 
 
 def test_default_search_finds_the_lower_pattern_n10():
-    """n = 10 uniform bistable at (1.75, -0.25): the plain search stops at 6.3015246 (``certify=None``); the
+    """n = 10 uniform bistable at (1.75, -0.25): the plain search stops at 6.3015246 (the search alone); the
     default (the bound's pattern sweep and one round of Newton re-centrings) finds 6.3011121, which the
     reference SLSQP from random well patterns does not beat."""
     m = to.Manipulator.uniform(10, **BISTABLE)
-    plain = solve_equilibrium(m, 1.75, -0.25, certify=None)
+    plain = _solve_equilibrium(m, 1.75, -0.25, q0=None, local=False, method="auto", n_random=None, max_modes=None,
+                               certify=None)
     eq = solve_equilibrium(m, 1.75, -0.25)
     assert plain.energy == pytest.approx(6.3015246, abs=1e-7)
     assert eq.energy == pytest.approx(6.3011121, abs=1e-7) and eq.stable and eq.certificate is None
