@@ -27,7 +27,7 @@ class EquilibriaRequest:
         dy (float | Unset): tip deflection along y (length units) Default: 0.0.
         method (EquilibriaRequestMethod | Unset): `search`: multi-start Newton (any n; complete in practice, not
             certified); `homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every equilibrium certified
-            (chains up to the server's `homotopy_max_segments`, default 4; seconds; needs the `phcpack` package on the
+            (chains up to the server's `homotopy_max_segments`, default 5; seconds; needs the `phcpack` package on the
             server, else 503 `homotopy_unavailable`) Default: EquilibriaRequestMethod.SEARCH.
     """
 

@@ -89,7 +89,7 @@ def sync_detailed(
 
      All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy;
     `morse_index`/`kind` classify each one. `method: homotopy` certifies the set (`certified`) for
-    chains up to the server's `homotopy_max_segments` (default 4); the default search is complete in
+    chains up to the server's `homotopy_max_segments` (default 5); the default search is complete in
     practice, not certified.
 
     Args:
@@ -124,7 +124,7 @@ def sync(
 
      All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy;
     `morse_index`/`kind` classify each one. `method: homotopy` certifies the set (`certified`) for
-    chains up to the server's `homotopy_max_segments` (default 4); the default search is complete in
+    chains up to the server's `homotopy_max_segments` (default 5); the default search is complete in
     practice, not certified.
 
     Args:
@@ -154,7 +154,7 @@ async def asyncio_detailed(
 
      All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy;
     `morse_index`/`kind` classify each one. `method: homotopy` certifies the set (`certified`) for
-    chains up to the server's `homotopy_max_segments` (default 4); the default search is complete in
+    chains up to the server's `homotopy_max_segments` (default 5); the default search is complete in
     practice, not certified.
 
     Args:
@@ -187,7 +187,7 @@ async def asyncio(
 
      All equilibria inside the physical range (`tensegrity_opt.find_equilibria`), sorted by energy;
     `morse_index`/`kind` classify each one. `method: homotopy` certifies the set (`certified`) for
-    chains up to the server's `homotopy_max_segments` (default 4); the default search is complete in
+    chains up to the server's `homotopy_max_segments` (default 5); the default search is complete in
     practice, not certified.
 
     Args:
