@@ -192,7 +192,7 @@ def test_the_inline_atlas_is_stability_atlas(client, direct):
      "atlas_too_large", "dx"),
     ({"manipulator": {**PRE_BENT, "n": 3}}, "validation_error", "manipulator.n"),   # segments and n together
     ({"manipulator": {**CHAIN, "n": 1}}, "invalid_parameter", "manipulator.n"),
-    ({"manipulator": {**CHAIN, "n": 5}, "method": "homotopy"}, "too_many_segments", "method"),
+    ({"manipulator": {**CHAIN, "n": 6}, "method": "homotopy"}, "too_many_segments", "method"),
     ({"method": "newton"}, "validation_error", "method"),
     ({"edges": 1}, "validation_error", "edges"),
 ])
