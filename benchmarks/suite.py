@@ -832,7 +832,7 @@ def _parameter_homotopy_rows(cfg: Config) -> list[Row]:
             log(f"  parameter homotopy n={n}: computing the start solutions first (once per machine)")
             ph.compute_start("displacement", n)
         par = []
-        for _ in range(1 if n >= 5 else 3):
+        for _ in range(1 if n >= 6 else 3):
             t0 = time.perf_counter()
             h = to.find_equilibria(m, dx, dy, method="homotopy")
             par.append(time.perf_counter() - t0)
