@@ -174,7 +174,7 @@ def test_equilibria_homotopy_is_certified(client):
 
 
 def test_equilibria_homotopy_refusals(client, monkeypatch):
-    r = client.post("/v1/equilibria", json={"manipulator": {"n": 5}, "dx": 0.5, "method": "homotopy"})
+    r = client.post("/v1/equilibria", json={"manipulator": {"n": 6}, "dx": 0.5, "method": "homotopy"})
     assert r.status_code == 422 and r.json()["code"] == "too_many_segments" and r.json()["field"] == "method"
     monkeypatch.setenv("TENSEGRITY_PHC", "/nonexistent/phc")
     r = client.post("/v1/equilibria", json={"manipulator": {"n": 3}, "dx": 0.5, "method": "homotopy"})

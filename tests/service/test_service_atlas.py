@@ -168,7 +168,7 @@ def test_the_atlas_of_a_job_not_done_or_not_an_atlas_is_refused(client):
     assert r.status_code == 404 and r.json()["code"] == "not_found"
     r = client.post("/v1/jobs", json={"analysis": "buckling", "grid": {"n": [3]}, "options": {"method": "search"}})
     assert r.status_code == 422 and r.json()["field"] == "options.method"      # atlas only
-    r = client.post("/v1/jobs", json={"analysis": "atlas", "manipulator": {"n": 5}, "grid": {"dx": [0.1], "dy": [0.0]},
+    r = client.post("/v1/jobs", json={"analysis": "atlas", "manipulator": {"n": 6}, "grid": {"dx": [0.1], "dy": [0.0]},
                                       "options": {"method": "homotopy"}})
     assert r.status_code == 422 and r.json()["code"] == "too_many_segments" and r.json()["field"] == "options.method"
 
