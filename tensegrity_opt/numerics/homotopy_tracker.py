@@ -26,12 +26,18 @@ Method (per path, all paths at once, each with its own ``t`` and step ``h``)
 * end: at ``t = 1`` three more Newton steps; the end point counts when the last correction is at round-off
   (:data:`CONVERGED`) and the Jacobian's reciprocal condition number is above :data:`RCOND_MIN` (a regular root;
   PHCpack's singular end points are its to judge);
-* end game: from ``1 - t <=`` :data:`ENDGAME` on, the valuations ``nu_j = d log|x_j| / d log(1 - t) =
-  -(1 - t) Re(x_j' / x_j)`` are read at checkpoints, each a halving of ``1 - t`` past the last. On a path to a
-  finite root of the torus they tend to 0; on a path leaving it (``x_j -> 0`` or infinity, ``x_j ~ (1 - t)^w``
-  with ``w`` rational) to ``w``. A path whose valuations agree within :data:`VALUATION_TOL` at
-  :data:`VALUATION_CHECKS` checkpoints in a row, one at least :data:`VALUATION_MIN` in modulus, is :data:`INFINITE`.
-  A path whose current valuation is not near zero steps at most half way to ``t = 1``, so it never lands there.
+* path variable: ``s = 1 - t``, from 1 to 0, so that near the end ``s`` keeps its relative precision;
+* end game: from ``s <=`` :data:`ENDGAME` on, the valuations ``nu_j = d log|x_j| / d log s = s Re(x_j' / x_j)``
+  are read at checkpoints, each a halving of ``s`` past the last. On a path to a finite root of the torus they
+  tend to 0; on a path leaving it (``x_j -> 0`` or infinity, ``x_j ~ s^w`` with ``w`` rational) to ``w``. A path
+  whose valuations agree within :data:`VALUATION_TOL` at :data:`VALUATION_CHECKS` checkpoints in a row and one of
+  whose *watched* unknowns (``angles``: the joints' ``z_j``, of modulus 1 at every real point) is already beyond
+  :data:`FAR` (``|z_j| <= 1e-3`` or ``>= 1e3``, i.e. ``|Im q_j| >= 13.8``) and still going that way with
+  ``|nu_j| >=`` :data:`VALUATION_MIN` is :data:`INFINITE`: it cannot end on a real equilibrium, whether it diverges
+  or ends on a far complex root. The force unknowns are not watched: a root with a small but finite force (a
+  target next to a rest configuration) has small ``g, h`` most of the way and is followed to its end. A path whose
+  current valuation is not near zero steps at most half way to ``s = 0``, so it never lands there out of the
+  torus.
 
 Nothing here decides completeness: :mod:`.parameter_homotopy` checks that the end points are pairwise distinct
 (two paths on one regular root means one jumped) and re-tracks the failed and coinciding paths by ``phc -p``.
@@ -49,7 +55,7 @@ import numpy as np
 
 __all__ = ["TrackedPaths", "track_batch", "FINITE", "INFINITE", "FAILED", "BETA", "CONTRACTION", "H_MIN",
            "RCOND_MIN", "MAX_STEPS", "MIN_SLICE", "ENDGAME", "VALUATION_TOL", "VALUATION_MIN",
-           "VALUATION_CHECKS"]
+           "VALUATION_CHECKS", "FAR"]
 
 #: Per-path end states (as :mod:`.parameter_homotopy` reads PHCpack's): ended on a finite root at ``t = 1``,
 #: diverged, or not ended (to be tracked again).
@@ -58,7 +64,7 @@ FINITE, INFINITE, FAILED = 0, 1, 2
 BETA = 1e-2
 #: The second Newton correction must be at most this times the first (or at round-off).
 CONTRACTION = 0.1
-#: A path whose step fell below this is not ended here.
+#: A path whose step fell below this (times ``s``) is not ended here.
 H_MIN = 1e-9
 #: A path that took more steps than this is not ended here.
 MAX_STEPS = 3000
@@ -71,6 +77,9 @@ ENDGAME = 5e-2
 VALUATION_TOL = 1e-2
 VALUATION_MIN = 0.1
 VALUATION_CHECKS = 3
+#: ... and one of the watched unknowns (the joints' ``z_j``, of modulus 1 at every real point) is already below this
+#: in modulus, or above its reciprocal: a path there cannot end on a real equilibrium, whether it diverges or not.
+FAR = 1e-3
 #: A path whose unknowns exceed this in modulus (or fall below its reciprocal: a ``z_j -> 0``) leaves the torus.
 BIG = 1e8
 _ROUNDOFF = 1e-13
@@ -112,8 +121,10 @@ class TrackedPaths:
 
 
 class _Family:
-    """``H(x, t) = (1 - t) gamma F0(x) + t F1(x)`` of two Laurent systems (dicts exponent -> coefficient),
-    evaluated with its Jacobian on a batch of points, each at its own ``t``."""
+    """``H(x, s) = s gamma F0(x) + (1 - s) F1(x)`` (``s = 1 - t``) of two Laurent systems (dicts exponent ->
+    coefficient), evaluated with its Jacobian on a batch of points, each at its own ``s``. The path variable is
+    ``s``, not ``t``: near the end ``s`` keeps its relative precision down to any size (``t = 1 - s`` would lose it
+    below ``1e-16``), which the end game needs."""
 
     def __init__(self, polys0: list[dict], polys1: list[dict], gamma: complex, nv: int):
         keys = sorted(set().union(*(p.keys() for p in polys0), *(p.keys() for p in polys1)))
@@ -128,11 +139,11 @@ class _Family:
             for i, p in enumerate(polys):
                 for e, c in p.items():
                     C[i, index[e]] += scale * complex(c)
-        # one matrix product of the monomials gives F0 = gamma F(p0), F1 - F0 and their Jacobians' numerators
-        # (d/dx_v x^e = e_v x^e / x_v): H = F0 + t (F1 - F0), H_x likewise, H_t = F1 - F0
+        # one matrix product of the monomials gives F1, F0 - F1 (F0 = gamma F(p0)) and their Jacobians' numerators
+        # (d/dx_v x^e = e_v x^e / x_v): H = F1 + s (F0 - F1), H_x likewise, H_s = F0 - F1
         CE0 = (C0[:, :, None] * E[None, :, :]).transpose(1, 0, 2).reshape(K, -1)
         CE1 = (C1[:, :, None] * E[None, :, :]).transpose(1, 0, 2).reshape(K, -1)
-        self.W = np.ascontiguousarray(np.hstack([C0.T, CE0, (C1 - C0).T, CE1 - CE0]))
+        self.W = np.ascontiguousarray(np.hstack([C1.T, CE1, (C0 - C1).T, CE0 - CE1]))
         self.K = K
         self._plan(E)
 
@@ -170,7 +181,8 @@ class _Family:
         return np.ascontiguousarray(S[self.index].T)
 
     def evaluate(self, X: np.ndarray, t: np.ndarray, *, tangent: bool = False):
-        """``H``, ``H_x`` (and ``H_t`` with ``tangent``) at the points ``X`` (M, nv) and times ``t`` (M,)."""
+        """``H``, ``H_x`` (and ``H_s`` with ``tangent``) at the points ``X`` (M, nv) and path variables ``s`` (M,),
+        passed as ``t``."""
         neq, nv = self.neq, self.nv
         c = neq + neq * nv
         R = self.monomials(X) @ self.W
@@ -203,28 +215,30 @@ def _solve(J: np.ndarray, rhs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 
 def track_batch(polys0: list[dict], polys1: list[dict], gamma: complex, starts: np.ndarray, *,
-                threads: int = 1, deadline: float | None = None) -> TrackedPaths:
+                threads: int = 1, deadline: float | None = None, angles: int | None = None) -> TrackedPaths:
     """Track the roots ``starts`` (N, nv) of ``polys0`` along ``gamma (1 - t) polys0 + t polys1`` to ``t = 1``.
 
     ``polys0`` and ``polys1`` are Laurent systems as dicts exponent tuple -> coefficient (:mod:`.homotopy`'s form);
     ``threads`` batches run side by side (numpy releases the GIL in its products and solves), each on a slice of
     at least :data:`MIN_SLICE` paths; ``deadline`` a :func:`time.monotonic` instant after which the paths still
-    running are :data:`FAILED`. Returns a :class:`TrackedPaths`; see the module for the method and what counts
-    as ended.
+    running are :data:`FAILED`; ``angles`` the leading unknowns of unit modulus at every real point (the joints'
+    ``z_j``; default all), the ones the end game watches. Returns a :class:`TrackedPaths`; see the module for the
+    method and what counts as ended.
     """
     t_start = time.perf_counter()
     starts = np.asarray(starts, dtype=complex)
     N, nv = starts.shape
     fam = _Family(polys0, polys1, complex(gamma), nv)
+    angles = nv if angles is None else max(1, min(int(angles), nv))
     k = max(1, min(int(threads), N // MIN_SLICE))
     if k == 1:
-        out = _track(fam, starts, deadline)
+        out = _track(fam, starts, deadline, angles)
     else:
         from concurrent.futures import ThreadPoolExecutor
 
         slices = np.array_split(np.arange(N), k)
         with ThreadPoolExecutor(max_workers=k) as pool:
-            parts = list(pool.map(lambda rows: _track(fam, starts[rows], deadline), slices))
+            parts = list(pool.map(lambda rows: _track(fam, starts[rows], deadline, angles), slices))
         state = np.concatenate([p.state for p in parts])
         roots = np.concatenate([p.roots for p in parts])
         regular = np.concatenate([p.regular for p in parts])
@@ -234,26 +248,26 @@ def track_batch(polys0: list[dict], polys1: list[dict], gamma: complex, starts: 
                         time.perf_counter() - t_start)
 
 
-def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedPaths:
-    """:func:`track_batch` on one batch."""
+def _track(fam: _Family, starts: np.ndarray, deadline: float | None, angles: int) -> TrackedPaths:
+    """:func:`track_batch` on one batch; the path variable is ``s = 1 - t``, from 1 down to 0."""
     N, nv = starts.shape
     state = np.full(N, FAILED)
     roots = np.full((N, nv), np.nan + 0j)
     regular = np.zeros(N, bool)
 
-    # the running paths' state, compacted as paths end
+    # the running paths' state, compacted as paths end: x at s, its tangent v = dx/ds, the previous point
     idx = np.arange(N)
     x = starts.copy()
-    t = np.zeros(N)
-    H, J, Ht = fam.evaluate(x, t, tangent=True)
-    sol, ok = _solve(J, -Ht[:, :, None])
+    s = np.ones(N)
+    H, J, Hs = fam.evaluate(x, s, tangent=True)
+    sol, ok = _solve(J, -Hs[:, :, None])
     v = sol[:, :, 0]
     x_prev = np.full_like(x, np.nan)
     v_prev = np.full_like(x, np.nan)
-    t_prev = np.full(N, np.nan)
+    s_prev = np.full(N, np.nan)
     h = np.full(N, 0.02)
     steps = np.zeros(N, int)
-    # the end game's valuation checkpoints: the last estimate, the 1 - t it was taken at, how many agreed in a row
+    # the end game's valuation checkpoints: the last estimate, the s it was taken at, how many agreed in a row
     nu_ck = np.full((N, nv), np.nan)
     s_ck = np.full(N, np.inf)
     agree = np.zeros(N, int)
@@ -261,9 +275,9 @@ def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedP
     total_steps = total_rejected = iterations = 0
 
     def drop(keep: np.ndarray) -> None:
-        nonlocal idx, x, t, v, x_prev, v_prev, t_prev, h, steps, nu_ck, s_ck, agree
-        idx, x, t, v, x_prev, v_prev, t_prev, h, steps, nu_ck, s_ck, agree = (
-            a[keep] for a in (idx, x, t, v, x_prev, v_prev, t_prev, h, steps, nu_ck, s_ck, agree))
+        nonlocal idx, x, s, v, x_prev, v_prev, s_prev, h, steps, nu_ck, s_ck, agree
+        idx, x, s, v, x_prev, v_prev, s_prev, h, steps, nu_ck, s_ck, agree = (
+            a[keep] for a in (idx, x, s, v, x_prev, v_prev, s_prev, h, steps, nu_ck, s_ck, agree))
 
     drop(alive)
     done_x, done_idx = [], []
@@ -271,28 +285,27 @@ def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedP
         if deadline is not None and time.monotonic() > deadline:
             break
         iterations += 1
-        h = np.minimum(h, 1.0 - t)
+        h = np.minimum(h, s)
         # a path whose valuation is not near zero (heading for 0 or infinity, see the end game below) steps at
-        # most half way to t = 1: its end game's checkpoints come, and it never lands on t = 1 out of the torus
-        rest = 1.0 - t
-        away = np.abs(rest[:, None] * (v / x).real).max(axis=1) >= VALUATION_MIN
-        h[away] = np.minimum(h[away], 0.5 * rest[away])
-        s = t + h
-        # predictor: cubic Hermite through (t_prev, x_prev, v_prev), (t, x, v); Euler without a previous point
-        xp = x + h[:, None] * v
-        have = np.isfinite(t_prev)
+        # most half way to s = 0: its end game's checkpoints come, and it never lands on s = 0 out of the torus
+        away = np.abs(s[:, None] * (v / x).real).max(axis=1) >= VALUATION_MIN
+        h[away] = np.minimum(h[away], 0.5 * s[away])
+        sn = s - h
+        # predictor: cubic Hermite through (s_prev, x_prev, v_prev), (s, x, v); Euler without a previous point
+        xp = x - h[:, None] * v
+        have = np.isfinite(s_prev)
         if have.any():
-            d = (t - t_prev)[have][:, None]
-            u = 1.0 + h[have][:, None] / d
+            d = (s - s_prev)[have][:, None]
+            u = 1.0 - h[have][:, None] / d
             h00, h10 = 2 * u**3 - 3 * u**2 + 1, u**3 - 2 * u**2 + u
             h01, h11 = -2 * u**3 + 3 * u**2, u**3 - u**2
             xp[have] = h00 * x_prev[have] + h10 * d * v_prev[have] + h01 * x[have] + h11 * d * v[have]
-        # corrector: two Newton steps at s
-        H1, J1 = fam.evaluate(xp, s)
+        # corrector: two Newton steps at sn
+        H1, J1 = fam.evaluate(xp, sn)
         d1, ok1 = _solve(J1, H1[:, :, None])
         x1 = xp - d1[:, :, 0]
-        H2, J2, Ht2 = fam.evaluate(x1, s, tangent=True)
-        d2, ok2 = _solve(J2, np.stack([H2, Ht2], axis=2))
+        H2, J2, Hs2 = fam.evaluate(x1, sn, tangent=True)
+        d2, ok2 = _solve(J2, np.stack([H2, Hs2], axis=2))
         x2 = x1 - d2[:, :, 0]
         r1, r2 = _norm(d1[:, :, 0], x1), _norm(d2[:, :, 0], x2)
         good = ok1 & ok2 & np.isfinite(x2).all(axis=1) & (r1 <= BETA) & ((r2 <= CONTRACTION * r1) | (r2 <= _ROUNDOFF))
@@ -300,32 +313,38 @@ def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedP
         acc = np.flatnonzero(good)
         total_steps += acc.size
         total_rejected += idx.size - acc.size
-        x_prev[acc], v_prev[acc], t_prev[acc] = x[acc], v[acc], t[acc]
-        x[acc], t[acc] = x2[acc], s[acc]
+        x_prev[acc], v_prev[acc], s_prev[acc] = x[acc], v[acc], s[acc]
+        x[acc], s[acc] = x2[acc], sn[acc]
         v[acc] = -d2[acc, :, 1]
         steps[acc] += 1
         grow = np.clip(0.9 * (BETA / np.maximum(r1[acc], 1e-16)) ** 0.25, 0.5, 2.0)
         h[acc] *= grow
         rej = ~good
         h[rej] *= 0.5
-        # end game: near t = 1 the valuations nu_j = d log|x_j| / d log(1 - t) = -(1 - t) Re(x_j' / x_j), estimated
-        # at checkpoints each a halving of 1 - t apart; a path whose valuations agree at VALUATION_CHECKS
-        # checkpoints in a row, one of them nonzero, is leaving the torus (x_j -> 0 or infinity as a power of 1 - t)
-        sr = 1.0 - t[acc]
-        ck = acc[(sr <= ENDGAME) & (sr > 0.0) & (sr <= 0.5 * s_ck[acc])]
+        # end game: near s = 0 the valuations nu_j = d log|x_j| / d log s = s Re(x_j' / x_j), estimated at
+        # checkpoints each a halving of s apart; a path whose valuations agree at VALUATION_CHECKS checkpoints in a
+        # row, one of its first `angles` unknowns already beyond FAR (below, or above its reciprocal) and still
+        # going that way, is leaving the torus (x_j -> 0 or infinity as a power of s) and cannot end on a real
+        # point (|z_j| = 1). Only those unknowns count: a root with a small but finite force (a target near a
+        # rest configuration) has small g, h on the way and is followed to its end.
+        ck = acc[(s[acc] <= ENDGAME) & (s[acc] > 0.0) & (s[acc] <= 0.5 * s_ck[acc])]
         diverged = np.zeros(idx.size, bool)
         if ck.size:
-            nu = -(1.0 - t[ck])[:, None] * (v[ck] / x[ck]).real
+            nu = s[ck][:, None] * (v[ck] / x[ck]).real
             same = (np.abs(nu - nu_ck[ck]).max(axis=1) <= VALUATION_TOL) & (np.abs(nu).max(axis=1) >= VALUATION_MIN)
             agree[ck] = np.where(same, agree[ck] + 1, 0)
-            nu_ck[ck], s_ck[ck] = nu, 1.0 - t[ck]
-            diverged[ck] = agree[ck] >= VALUATION_CHECKS - 1
-        # ended, diverged or lost
+            nu_ck[ck], s_ck[ck] = nu, s[ck]
+            xa = np.abs(x[ck, :angles])
+            na = nu[:, :angles]
+            far = (((na >= VALUATION_MIN) & (xa <= FAR)) | ((na <= -VALUATION_MIN) & (xa >= 1.0 / FAR))).any(axis=1)
+            diverged[ck] = (agree[ck] >= VALUATION_CHECKS - 1) & far
+        # ended, diverged or lost (magnitudes are bounded by BIG until the end game, where they may run far)
         mag = np.abs(x).max(axis=1)
         small = np.abs(x).min(axis=1)
-        lost = (h < H_MIN) | (steps > MAX_STEPS) | (mag > BIG) | (small < 1.0 / BIG) | ~np.isfinite(mag)
+        big = np.where(s <= ENDGAME, BIG ** 4, BIG)
+        lost = (h < H_MIN * s) | (steps > MAX_STEPS) | (mag > big) | (small < 1.0 / big) | ~np.isfinite(mag)
         lost &= ~diverged
-        ended = (t >= 1.0) & ~lost & ~diverged
+        ended = (s <= 0.0) & ~lost & ~diverged
         if ended.any():
             done_x.append(x[ended])
             done_idx.append(idx[ended])
@@ -335,14 +354,14 @@ def _track(fam: _Family, starts: np.ndarray, deadline: float | None) -> TrackedP
     if done_idx:
         ids = np.concatenate(done_idx)
         X = np.concatenate(done_x)
-        one = np.ones(ids.size)
+        zero = np.zeros(ids.size)
         last = np.full(ids.size, np.inf)
         for _ in range(3):
-            H, J = fam.evaluate(X, one)
+            H, J = fam.evaluate(X, zero)
             d, ok = _solve(J, H[:, :, None])
             X = np.where(ok[:, None], X - d[:, :, 0], np.nan)
             last = np.where(ok, _norm(d[:, :, 0], X), np.inf)
-        H, J = fam.evaluate(X, one)
+        H, J = fam.evaluate(X, zero)
         fine = np.isfinite(X).all(axis=1) & np.isfinite(J).all(axis=(1, 2)) & np.isfinite(last)
         rc = np.zeros(ids.size)
         if fine.any():

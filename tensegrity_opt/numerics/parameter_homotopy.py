@@ -57,9 +57,15 @@ n = 4 chain has 456 roots, not 832) get start roots of their own sub-family (:fu
 Sub-families: chains of identical segments tie their rows' torque coefficients; for n = 5 uniform bistable chains
 256 of the 6272 paths (128 of 3840 for the force system) leave the torus (some ``z_j -> 0``) as ``t -> 1``. PHCpack
 reports those paths failed (the set was uncertified); the batched tracker's end game reads their valuations
-(``z_j ~ (1 - t)^w``, ``w`` rational and nonzero, agreeing at three checkpoints) and counts them diverged, so these
-sets are certified. That classification is numerical, like PHCpack's "at infinity"; a path it does not settle goes
-to ``phc -p`` as above.
+(``z_j ~ (1 - t)^w``, ``w`` rational and nonzero, agreeing at three checkpoints, with ``|z_j|`` already beyond 1e-3 or
+1e3 where no real equilibrium lies) and counts them diverged, so these sets are certified. That classification is
+numerical, like PHCpack's "at infinity"; a path it does not settle goes to ``phc -p`` as above.
+
+Units: every solve runs on :func:`unit_chain` (lengths and stiffnesses rescaled by powers of two so that the mean
+``b`` and the largest torque coefficient are about 1, the start parameters' magnitudes); the roots' forces are
+returned in the caller's units. Without it a chain in other units ran its paths from coefficients ~1 to ones many
+orders away: measured, a chain with stiffnesses times 1e-5 came back certified with no equilibrium (its small
+forces read as diverging paths), lengths times 1e4 fell back to the polyhedral solve with half its paths failed.
 
 The start roots are kept on disk per machine (:func:`start_file`: ``TENSEGRITY_CACHE_DIR`` like the compiled
 kernels, a file per system kind, ``n``, structure and engine version :data:`ENGINE`); those of ``n <= 5``
@@ -71,6 +77,7 @@ computes it first (one polyhedral solve of the generic instance) and stores it; 
 
 from __future__ import annotations
 
+import math
 import os
 import subprocess
 import tempfile
@@ -83,7 +90,7 @@ import numpy as np
 
 from ..errors import HomotopyUnavailableError, InvalidParameterError, SolverError
 from ..model.manipulator import Manipulator
-from ..model.segment import clean_coefficients
+from ..model.segment import Segment, clean_coefficients
 from .build import cache_dir
 from .homotopy import (
     HomotopySolve,
@@ -100,7 +107,7 @@ from .homotopy_tracker import FAILED, FINITE, INFINITE, track_batch
 __all__ = ["ENGINE", "KINDS", "StartSolutions", "displacement_parameters", "displacement_family",
            "force_parameters", "force_family", "start_file", "load_start", "compute_start", "precompute",
            "track", "solve_parameter_homotopy", "solve_force_parameter_homotopy", "TORQUE_POWERS", "structure_of",
-           "GENERAL", "SYMMETRIC", "TRACKERS", "tracker_name", "retarget_start"]
+           "GENERAL", "SYMMETRIC", "TRACKERS", "tracker_name", "retarget_start", "unit_chain"]
 
 #: The torque powers of a segment's parameters (:meth:`~tensegrity_opt.model.segment.Segment.torque_polynomial`
 #: without its identically-zero ``z^0``).
@@ -672,7 +679,7 @@ def track(target: list[dict], start: StartSolutions, *, threads: int | None = No
     t0 = time.perf_counter()
     if tracker == "batch":
         tracked = track_batch(_family(start.kind)(start.n, start.parameters), target, gamma, start.roots,
-                              threads=int(threads), deadline=deadline)
+                              threads=int(threads), deadline=deadline, angles=start.n)
         state, roots, regular, consistent = tracked.state, tracked.roots, tracked.regular, True
     else:
         state, roots, regular, consistent = _run_slices(exe, target_text, start, np.arange(N), int(threads), gamma,
@@ -759,26 +766,57 @@ def _parameter_solve(kind: str, n: int, structure: str, target: list[dict], poly
                         "full polyhedral solve answered" + note)
 
 
+def unit_chain(m: Manipulator) -> tuple[Manipulator, float, float]:
+    """``(m', lam, kap)``: ``m`` with its lengths multiplied by ``lam`` and its stiffnesses by ``kap`` (powers of two:
+    exact), so that the mean ``b`` and the largest torque coefficient ``k (a^2 + b^2)`` are about 1, the magnitudes
+    of the start parameters. The joint angles of every equilibrium are unchanged; tip targets scale by ``lam``, forces
+    by ``kap lam``. The tracked paths stay well scaled whatever the caller's units (a chain in micrometres or with
+    springs of 1e8 would otherwise run from start parameters about 1 to coefficients many orders away)."""
+    lam = 2.0 ** -round(math.log2(float(np.mean(m.b))))
+    torque = float(np.max(np.maximum(m.k1, m.k2) * (m.a ** 2 + m.b ** 2))) * lam * lam
+    kap = 2.0 ** -round(math.log2(torque))
+    if lam == 1.0 and kap == 1.0:
+        return m, lam, kap
+    segs = [Segment(s.a * lam, s.b * lam, (s.k1 * kap, s.k2 * kap), (s.L1_0 * lam, s.L2_0 * lam)) for s in m.segments]
+    return Manipulator(segs), lam, kap
+
+
+def _in_units(sol: HomotopySolve, force_columns: bool, factor: float) -> HomotopySolve:
+    """The roots of a solve in unit-chain units back in the caller's (the force columns ``g, h`` divided by
+    ``kap lam``)."""
+    if not force_columns or factor == 1.0 or sol.roots.size == 0:
+        return sol
+    roots = np.array(sol.roots, dtype=complex)
+    roots[:, -2:] /= factor
+    return replace(sol, roots=roots)
+
+
 def solve_parameter_homotopy(m: Manipulator, target, *, threads: int | None = None,
                              timeout: float | None = None, attempts: int = ATTEMPTS) -> HomotopySolve:
     """Every isolated root of the displacement system (:func:`~.homotopy.polynomial_system`) by the parameter
     homotopy from the cached start roots (see the module), else by the polyhedral solve
     (:func:`~.homotopy.solve_homotopy`); ``note`` says which. Same roots, errors and parameters as
-    :func:`~.homotopy.solve_homotopy` (``timeout`` for the whole call)."""
+    :func:`~.homotopy.solve_homotopy` (``timeout`` for the whole call). Both solve the chain in the units of
+    :func:`unit_chain`; the roots come back in the caller's."""
     from .homotopy import solve_homotopy
 
-    return _parameter_solve("displacement", m.n, structure_of(m), _laurent_terms(m, target),
-                            lambda left: solve_homotopy(m, target, threads=threads, timeout=left),
-                            threads=threads, timeout=timeout, attempts=attempts)
+    u, lam, kap = unit_chain(m)
+    tu = np.asarray(target, dtype=float) * lam
+    sol = _parameter_solve("displacement", m.n, structure_of(u), _laurent_terms(u, tu),
+                           lambda left: solve_homotopy(u, tu, threads=threads, timeout=left),
+                           threads=threads, timeout=timeout, attempts=attempts)
+    return _in_units(sol, True, kap * lam)
 
 
 def solve_force_parameter_homotopy(m: Manipulator, force, *, threads: int | None = None,
                                    timeout: float | None = None, attempts: int = ATTEMPTS) -> HomotopySolve:
     """Every isolated root of the force system (:func:`~.homotopy.force_polynomial_system`, ``force != 0``) by
     the parameter homotopy, else the polyhedral :func:`~.homotopy.solve_force_homotopy`; as
-    :func:`solve_parameter_homotopy`."""
+    :func:`solve_parameter_homotopy` (the roots, joint half-angles only, are the same in every unit)."""
     from .homotopy import solve_force_homotopy
 
-    return _parameter_solve("force", m.n, structure_of(m), _force_laurent_terms(m, force),
-                            lambda left: solve_force_homotopy(m, force, threads=threads, timeout=left),
+    u, lam, kap = unit_chain(m)
+    fu = np.asarray(force, dtype=float) * (kap * lam)
+    return _parameter_solve("force", m.n, structure_of(u), _force_laurent_terms(u, fu),
+                            lambda left: solve_force_homotopy(u, fu, threads=threads, timeout=left),
                             threads=threads, timeout=timeout, attempts=attempts)

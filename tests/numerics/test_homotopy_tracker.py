@@ -73,6 +73,25 @@ def test_a_double_root_is_left_to_phc_and_paths_leaving_the_torus_are_diverged()
         assert np.isnan(out.roots[out.state == ht.INFINITE]).all()
 
 
+def test_a_small_finite_unknown_is_followed_to_its_end_unless_watched():
+    """``z^2 = a``, ``g = b z`` from a generic instance to ``a = 1``, ``b = 1e-9``: the roots ``(+-1, +-1e-9)``.
+    On the way ``g`` shrinks like a power of ``s`` (valuation ~1) until ``s`` is far below 1e-9. Watching only ``z``
+    (a joint's half-angle, of modulus 1 at real points) both paths end on their roots; watching ``g`` too, the end
+    game calls them diverged (which is why only the joints' unknowns are watched)."""
+    def system(a, b):
+        return [{(2, 0): 1.0, (0, 0): -a}, {(0, 1): 1.0, (1, 0): -b}]
+
+    a0, b0 = 0.4 - 0.9j, 0.7 + 0.3j
+    z0 = np.sqrt(a0) * np.array([1.0, -1.0])
+    starts = np.stack([z0, b0 * z0], axis=1)
+    out = ht.track_batch(system(a0, b0), system(1.0, 1e-9), np.exp(0.9j), starts, angles=1)
+    assert (out.state == ht.FINITE).all()
+    got = out.roots[np.argsort(out.roots[:, 0].real)]
+    assert np.allclose(got[:, 0], [-1.0, 1.0], atol=1e-12) and np.allclose(got[:, 1], [-1e-9, 1e-9], rtol=1e-9)
+    watched = ht.track_batch(system(a0, b0), system(1.0, 1e-9), np.exp(0.9j), starts, angles=2)
+    assert (watched.state == ht.INFINITE).all()
+
+
 def test_a_past_deadline_ends_nothing_and_returns():
     start = [2.0 + 1j, 0.5, 1.0]
     out = ht.track_batch(_univariate(start), _univariate([-2.0, 1.0, 1.0]), 1j, _roots(start)[:, None],

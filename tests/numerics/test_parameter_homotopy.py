@@ -332,3 +332,46 @@ def test_uniform_bistable_n5_is_certified_with_its_excess_paths_diverged():
     brute = ref.all_equilibria(chain, 0.5, n_starts=1500, seed=11)
     assert len(brute) >= 40
     assert all(np.abs(got - q).max(axis=1).min() < 1e-6 for q, _ in brute)
+
+
+# ----------------------------------------------------------------------------- units and near-rest targets
+def _scaled(L: float, K: float) -> to.Manipulator:
+    segs = [(0.6, 1.0, (1.0, 1.3), (1.1, 0.9)), (0.55, 1.1, (1.2, 0.9), (1.0, 1.3)), (0.7, 0.9, (1.5, 1.5), (0.6, 0.6))]
+    return to.Manipulator([to.Segment(a * L, b * L, (k[0] * K, k[1] * K), (L0[0] * L, L0[1] * L))
+                           for a, b, k, L0 in segs])
+
+
+@needs_phc
+@pytest.mark.parametrize("L, K", [(1e-4, 1.0), (1e4, 1.0), (1.0, 1e-5), (1.0, 1e8), (1e-3, 1e6), (1e5, 1e-4)])
+def test_the_set_does_not_depend_on_the_units(L, K):
+    """Lengths times L and stiffnesses times K leave every equilibrium's joint angles unchanged and scale its force
+    by K L. The chain is tracked in the units of unit_chain: before, a chain with K = 1e-5 came back certified with
+    no equilibrium (the paths' small forces were taken for diverging paths) and L = 1e4 fell back to the polyhedral
+    solve with half its paths failed."""
+    ref = to.find_equilibria(_scaled(1.0, 1.0), 0.3 * _scaled(1.0, 1.0).straight_length,
+                             0.1 * _scaled(1.0, 1.0).straight_length, method="homotopy")
+    m = _scaled(L, K)
+    eqs = to.find_equilibria(m, 0.3 * m.straight_length, 0.1 * m.straight_length, method="homotopy")
+    assert ref.certified and eqs.certified and "batched tracker" in eqs.message and len(ref) == len(eqs) == 4
+    for e in ref:
+        f = eqs[int(np.argmin([np.abs(g.q - e.q).max() for g in eqs]))]
+        assert np.abs(f.q - e.q).max() < 1e-7 and f.morse_index == e.morse_index
+        assert np.allclose(f.force, e.force * K * L, rtol=1e-6, atol=1e-9 * K * L)
+
+
+@needs_phc
+@pytest.mark.parametrize("delta", [1e-7, 1e-10, 1e-13])
+def test_a_target_next_to_a_rest_configuration_keeps_its_small_force_equilibrium(delta, monkeypatch):
+    """The tip ``delta`` from the rest configuration's: the equilibrium next to it has a force of ~delta, whose path
+    shrinks like a power of s almost to the end. It is found (the polyhedral solve's set, certified both)."""
+    m = to.Manipulator([to.Segment(0.6, 1.0, 1.0, 1.2), to.Segment(0.55, 1.1, (1.2, 0.9), (1.6, 1.5)),
+                        to.Segment(0.7, 0.9, 1.5, 0.6)])
+    rest = to.rest_configuration(m).q
+    target = m.tip(rest) + delta * np.array([0.6, 0.8])
+    dx, dy = m.straight_length - target[0], target[1]
+    eqs = to.find_equilibria(m, dx, dy, method="homotopy")
+    near = min(eqs, key=lambda e: np.abs(e.q - rest).max())
+    assert eqs.certified and np.abs(near.q - rest).max() < 10 * delta and np.linalg.norm(near.force) < delta
+    monkeypatch.setenv("TENSEGRITY_HOMOTOPY_ENGINE", "polyhedral")
+    poly = to.find_equilibria(m, dx, dy, method="homotopy")
+    assert poly.certified and _same_sets(eqs, poly, 3)
