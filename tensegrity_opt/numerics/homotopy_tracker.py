@@ -49,7 +49,7 @@ Bernstein's theorem bounds the isolated roots of *every* member by it, with mult
 from __future__ import annotations
 
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -180,13 +180,12 @@ class _Family:
             np.multiply(S[parent], XT[v] if sign > 0 else inv[v], out=S[new])
         return np.ascontiguousarray(S[self.index].T)
 
-    def evaluate(self, X: np.ndarray, t: np.ndarray, *, tangent: bool = False):
-        """``H``, ``H_x`` (and ``H_s`` with ``tangent``) at the points ``X`` (M, nv) and path variables ``s`` (M,),
-        passed as ``t``."""
+    def evaluate(self, X: np.ndarray, s: np.ndarray, *, tangent: bool = False):
+        """``H``, ``H_x`` (and ``H_s`` with ``tangent``) at the points ``X`` (M, nv) and path variables ``s`` (M,)."""
         neq, nv = self.neq, self.nv
         c = neq + neq * nv
         R = self.monomials(X) @ self.W
-        HJ = R[:, :c] + t[:, None] * R[:, c:]
+        HJ = R[:, :c] + s[:, None] * R[:, c:]
         H = HJ[:, :neq]
         J = HJ[:, neq:].reshape(-1, neq, nv) / X[:, None, :]
         if tangent:
@@ -244,8 +243,7 @@ def track_batch(polys0: list[dict], polys1: list[dict], gamma: complex, starts: 
         regular = np.concatenate([p.regular for p in parts])
         out = TrackedPaths(state, roots, regular, sum(p.steps for p in parts), sum(p.rejected for p in parts),
                            max(p.iterations for p in parts), 0.0)
-    return TrackedPaths(out.state, out.roots, out.regular, out.steps, out.rejected, out.iterations,
-                        time.perf_counter() - t_start)
+    return replace(out, seconds=time.perf_counter() - t_start)
 
 
 def _track(fam: _Family, starts: np.ndarray, deadline: float | None, angles: int) -> TrackedPaths:

@@ -773,7 +773,7 @@ def unit_chain(m: Manipulator) -> tuple[Manipulator, float, float]:
     by ``kap lam``. The tracked paths stay well scaled whatever the caller's units (a chain in micrometres or with
     springs of 1e8 would otherwise run from start parameters about 1 to coefficients many orders away)."""
     lam = 2.0 ** -round(math.log2(float(np.mean(m.b))))
-    torque = float(np.max(np.maximum(m.k1, m.k2) * (m.a ** 2 + m.b ** 2))) * lam * lam
+    torque = m.torque_scale * lam * lam
     kap = 2.0 ** -round(math.log2(torque))
     if lam == 1.0 and kap == 1.0:
         return m, lam, kap
@@ -781,10 +781,10 @@ def unit_chain(m: Manipulator) -> tuple[Manipulator, float, float]:
     return Manipulator(segs), lam, kap
 
 
-def _in_units(sol: HomotopySolve, force_columns: bool, factor: float) -> HomotopySolve:
-    """The roots of a solve in unit-chain units back in the caller's (the force columns ``g, h`` divided by
-    ``kap lam``)."""
-    if not force_columns or factor == 1.0 or sol.roots.size == 0:
+def _in_units(sol: HomotopySolve, factor: float) -> HomotopySolve:
+    """The roots of a displacement solve in unit-chain units back in the caller's (the force columns ``g, h``
+    divided by ``factor = kap lam``)."""
+    if factor == 1.0 or sol.roots.size == 0:
         return sol
     roots = np.array(sol.roots, dtype=complex)
     roots[:, -2:] /= factor
@@ -805,7 +805,7 @@ def solve_parameter_homotopy(m: Manipulator, target, *, threads: int | None = No
     sol = _parameter_solve("displacement", m.n, structure_of(u), _laurent_terms(u, tu),
                            lambda left: solve_homotopy(u, tu, threads=threads, timeout=left),
                            threads=threads, timeout=timeout, attempts=attempts)
-    return _in_units(sol, True, kap * lam)
+    return _in_units(sol, kap * lam)
 
 
 def solve_force_parameter_homotopy(m: Manipulator, force, *, threads: int | None = None,

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 from collections import Counter
+from dataclasses import replace
 
 import numpy as np
 
@@ -99,8 +100,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         configuration than the search's, it is polished by Newton and returned instead. Not with ``local``.
         Without it, chains of more than ``WELLS_MAX`` and at most ``BOUND_SEEDED_PATTERNS`` well patterns (9 to 14
         bistable segments) still run the bound's pattern sweep and one round of its Newton re-centrings
-        (``BOUND_SEEDED_ROUNDS``) to find a lower configuration among all the patterns, without a certificate;
-        ``None``: the search alone.
+        (``BOUND_SEEDED_ROUNDS``) to find a lower configuration among all the patterns, without a certificate.
 
     Returns
     -------
@@ -270,8 +270,6 @@ def _quick_certified(m: Manipulator, dx: float, dy: float, target: np.ndarray, q
     """The short way of the multistable search (:data:`QUICK_ROUNDS`): the least-energy stable equilibrium Newton
     reaches from ``first`` (the seeds, and ``q0``) and the best-ranked well patterns, returned with its certificate
     when the lower bound proves it least; ``None`` otherwise (the caller runs the whole search)."""
-    from dataclasses import replace
-
     ranked = ranked_well_seeds(m, dx, dy, QUICK_WELLS)
     starts = np.vstack([first, ranked]) if ranked.shape[0] else first
     found, _ = search_stable(m, target, starts, {}, minimize=False, least=True)
@@ -299,8 +297,6 @@ def certify_least(m: Manipulator, dx: float, dy: float, best: Equilibrium) -> Eq
     """``best`` (the search's least-energy stable equilibrium) with the certificate of
     :func:`~.lower_bound.energy_lower_bound`; a lower configuration the bound found replaces it (Newton-polished
     and classified: kept when stable and lower)."""
-    from dataclasses import replace
-
     if best.status == "certified" and best.certificate is not None:
         return best                                           # the search's short way proved it already
     best, cert = _bound_polished(m, dx, dy, best, energy_lower_bound(m, dx, dy, best.q, force=best.force))
@@ -325,8 +321,6 @@ def _bound_polished(m: Manipulator, dx: float, dy: float, best: Equilibrium, cer
 def _least_certified(m: Manipulator, dx: float, dy: float, q0: np.ndarray | None) -> Equilibrium:
     """The least-energy stable equilibrium of the homotopy's complete set (``status`` says whether
     that set is certified)."""
-    from dataclasses import replace
-
     from .all_equilibria import find_equilibria
 
     eqs = find_equilibria(m, dx, dy, method="homotopy")
