@@ -57,124 +57,17 @@ from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
-from .branches import trace_branch
-from .control import Control
-from .descent import ArmState, Descent, state_at
+from .descent import ArmState
+from .transition import (
+    BRANCH_POINT_OFFSET,
+    EVENT_KINDS,
+    PERTURBATION,
+    Move,
+    SimulationEvent,
+    chain_with,
+)
 
 __all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "BRANCH_POINT_OFFSET"]
-
-#: Kinds of :class:`SimulationEvent`: a snap at a fold, a snap (or a continuous buckling, then with
-#: ``energy_released`` near 0) at a branch point, the end at a joint's range bound.
-EVENT_KINDS = ("snap", "bifurcation", "joint_limit")
-#: The descent after a fold starts this far (rad, the largest joint) from the fold along its null vector.
-PERTURBATION = 1e-4
-#: A branch point is left by descent at this scaled arclength past it (in the units of
-#: :func:`~tensegrity_opt.analyses.paths.branches.trace_branch`).
-BRANCH_POINT_OFFSET = 1e-5
-#: At most this many snaps within one step (a longer cascade ends the simulation, ``"failed"``).
-MAX_EVENTS_PER_STEP = 32
-
-
-@dataclass(frozen=True)
-class SimulationEvent(Outcome):
-    """Something that happened between step ``step`` and ``step + 1``, at ``time = step + fraction``.
-
-    Attributes
-    ----------
-    status : str
-        Where the arm went (:attr:`STATUSES`): ``"landed"`` on a stable equilibrium under the same inputs
-        (``q_after``), or ``"joint_limit"``: a joint reached its range bound (the end of the simulation).
-    message : str
-        The same in a sentence.
-    kind : str
-        ``"snap"`` (the followed branch folded: the arm jumps), ``"bifurcation"`` (it lost stability at
-        a branch point: a snap, or a continuous buckling onto a stable bifurcating branch when
-        ``energy_released`` is near 0), ``"joint_limit"`` (a joint reached its range bound: the end).
-    step : int
-    fraction : float
-        Where in the step (0 at sample ``step``, 1 at ``step + 1``); the inputs there are the linear
-        interpolation of the two samples.
-    preloads : ndarray (n, 2)
-        The rest lengths ``(L1_0, L2_0)`` of each segment there.
-    load : ndarray (2,) or None
-        The dead tip load there (tip free).
-    target : ndarray (2,) or None
-        The tip deflection ``(dx, dy)`` there (tip held).
-    q_before : ndarray (n,)
-        The configuration at the fold (branch point, joint limit).
-    q_after : ndarray (n,) or None
-        The landing configuration: a stable equilibrium under the same inputs (None for a joint limit,
-        or when the descent ran into a joint's bound: then ``message`` says so).
-    force_before, force_after : ndarray (2,) or None
-        The tip force (the load when free; the holding force when held).
-    tip_before, tip_after : ndarray (2,) or None
-    energy_before, energy_after : float or None
-        Elastic energy ``E``.
-    potential_before, potential_after : float or None
-        The potential that the descent decreases: ``E - F . tip`` (free) or ``E`` (held).
-    energy_released : float or None
-        ``potential_before - potential_after`` (> 0 for a snap).
-    null_vector : ndarray (n,) or None
-        The joint-angle part of the fold's null vector (largest entry +1), the snapping mode.
-    direction : int
-        The sign of ``null_vector`` the descent left along (0 for a joint limit).
-    method : str
-        How the point was located (``"moore_spence"``, ``"test_function"``, ``"limit"``).
-    """
-
-    STATUSES: ClassVar[dict[str, str]] = {
-        "landed": "the arm left the lost branch and landed on a stable equilibrium under the same inputs",
-        "joint_limit": "a joint reached its range bound (on the followed branch, or during the snap's descent): "
-                       "no equilibrium beyond inside the physical range; the simulation ends",
-    }
-    SUCCESS: ClassVar[frozenset[str]] = frozenset({"landed"})
-
-    status: str
-    message: str
-    kind: str
-    step: int
-    fraction: float
-    preloads: np.ndarray
-    load: np.ndarray | None
-    target: np.ndarray | None
-    q_before: np.ndarray
-    q_after: np.ndarray | None
-    force_before: np.ndarray | None
-    force_after: np.ndarray | None
-    tip_before: np.ndarray | None
-    tip_after: np.ndarray | None
-    energy_before: float | None
-    energy_after: float | None
-    potential_before: float | None
-    potential_after: float | None
-    energy_released: float | None
-    null_vector: np.ndarray | None
-    direction: int
-    method: str
-
-    def __post_init__(self) -> None:
-        freeze(self, copy=False)            # the builder passes arrays it owns
-
-    @property
-    def time(self) -> float:
-        """``step + fraction``."""
-        return self.step + self.fraction
-
-    def to_dict(self) -> dict[str, Any]:
-        def opt(v, f=numbers):
-            return None if v is None else f(v)
-
-        return {**self.outcome(), "kind": self.kind, "step": int(self.step), "fraction": number(self.fraction),
-                "time": number(self.time), "preloads": [numbers(r) for r in self.preloads],
-                "load": opt(self.load), "target": opt(self.target), "q_before": numbers(self.q_before),
-                "q_after": opt(self.q_after), "force_before": opt(self.force_before),
-                "force_after": opt(self.force_after), "tip_before": opt(self.tip_before),
-                "tip_after": opt(self.tip_after), "energy_before": opt(self.energy_before, number),
-                "energy_after": opt(self.energy_after, number),
-                "potential_before": opt(self.potential_before, number),
-                "potential_after": opt(self.potential_after, number),
-                "energy_released": opt(self.energy_released, number), "null_vector": opt(self.null_vector),
-                "direction": int(self.direction), "method": self.method}
 
 
 @dataclass(frozen=True)
@@ -340,13 +233,6 @@ def _inputs(m: Manipulator, preloads, loads, tip, targets):
     return P, L, T
 
 
-def _chain(m: Manipulator, P: np.ndarray) -> Manipulator:
-    """``m`` with the rest lengths ``P`` (n, 2)."""
-    if np.array_equal(P[:, 0], m.L1_0) and np.array_equal(P[:, 1], m.L2_0):
-        return m
-    return Manipulator(s.replace(L0=(float(P[i, 0]), float(P[i, 1]))) for i, s in enumerate(m.segments))
-
-
 # ---------------------------------------------------------------------------- the start
 def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> ArmState:
     if start is None:
@@ -404,145 +290,6 @@ def _least_energy_held(m0: Manipulator, T0) -> Equilibrium:
     from ..equilibria.least_energy import solve_equilibrium
 
     return solve_equilibrium(m0, float(T0[0]), float(T0[1]))
-
-
-# ---------------------------------------------------------------------------- one step
-class _Run:
-    def __init__(self, m: Manipulator, P, L, T, held: bool, perturbation: float) -> None:
-        self.m, self.P, self.L, self.T, self.held, self.eps = m, P, L, T, held, perturbation
-        self.events: list[SimulationEvent] = []
-
-    def inputs(self, k: int, s: float):
-        P = self.P[k] + s * (self.P[k + 1] - self.P[k])
-        if self.held:
-            return P, None, self.T[k] + s * (self.T[k + 1] - self.T[k])
-        return P, self.L[k] + s * (self.L[k + 1] - self.L[k]), None
-
-    def step(self, k: int, state: ArmState):
-        """The state at sample ``k + 1`` from ``state`` at sample ``k``: ``(state, status, message)``; on an
-        irregular end ``state`` is None."""
-        s0 = 0.0
-        n = self.m.n
-        for _ in range(MAX_EVENTS_PER_STEP + 1):
-            P0, F0, T0 = self.inputs(k, s0)
-            r = 1.0 - s0
-            dP = r * (self.P[k + 1] - self.P[k])
-            d2 = r * ((self.T[k + 1] - self.T[k]) if self.held else (self.L[k + 1] - self.L[k]))
-            if not (np.any(dP != 0.0) or np.any(d2 != 0.0)):
-                return state, "complete", ""
-            mk = _chain(self.m, P0)
-            ctl = (Control.move(n, preload=dP, displacement=d2, tip="held") if self.held
-                   else Control.move(n, preload=dP, load=d2, base=F0))
-            br = trace_branch(mk, state.equilibrium(self.held), ctl, t_max=1.0, stop_at="stability_loss",
-                              max_points=5000)
-            prob = br.problem
-            # (a stability loss on the last step to t = 1 ends the branch as "t_max": the events decide)
-            lost = [e for e in br.events if e.stability == "lost" and e.kind in ("fold", "branch_point")]
-            if not lost and br.status == "t_max":
-                end = state_at(prob, prob.point.pack(q=br.q[-1], F=br.force[-1], t=br.t[-1]))
-                if end.stable:
-                    return end, "complete", ""
-                return None, "failed", (f"step {k}: the followed branch became unstable without a located fold or "
-                                        "branch point")
-            if lost:
-                landed, s_d, status, msg = self.snap(k, s0, r, prob, br, lost[0])
-                if landed is None:
-                    return None, status, msg
-                state, s0 = landed, s_d
-                continue
-            if br.status == "joint_limit":
-                ev = next((e for e in br.events if e.kind == "joint_limit"), None)
-                if ev is not None:
-                    s_ev = s0 + r * ev.t
-                    self.events.append(self._event("joint_limit", "joint_limit", k, s_ev, ev.q, None, ev.force, None,
-                                                   ev.tip, None, ev.energy, None, None, None, 0, "limit",
-                                                   f"joint {ev.joint + 1} reached its range bound"))
-                return None, "joint_limit", (f"a joint reached its range bound in step {k} (at fraction "
-                                             f"{s0 + r * (ev.t if ev else br.t[-1]):.6g}): no equilibrium "
-                                             "beyond inside the physical range")
-            if br.status in ("workspace_boundary", "force_bound", "time_limit"):
-                return None, br.status, f"step {k}: {br.message}"
-            return None, "failed", f"step {k}: the branch could not be followed ({br.status}: {br.message})"
-        return None, "failed", f"more than {MAX_EVENTS_PER_STEP} snaps in step {k}"
-
-    def _event(self, status, kind, k, s, qb, qa, Fb, Fa, tb, ta, Eb, Ea, Vb, Va, sign, method, msg, nv=None):
-        P, F, T = self.inputs(k, s)
-        return SimulationEvent(status, msg, kind, int(k), float(s), P.copy(), None if F is None else F.copy(),
-                               None if T is None else T.copy(), np.asarray(qb, float).copy(),
-                               None if qa is None else np.asarray(qa, float).copy(),
-                               None if Fb is None else np.asarray(Fb, float).copy(),
-                               None if Fa is None else np.asarray(Fa, float).copy(),
-                               None if tb is None else np.asarray(tb, float).copy(),
-                               None if ta is None else np.asarray(ta, float).copy(),
-                               None if Eb is None else float(Eb), None if Ea is None else float(Ea),
-                               None if Vb is None else float(Vb), None if Va is None else float(Va),
-                               None if (Vb is None or Va is None) else float(Vb - Va),
-                               None if nv is None else np.asarray(nv, float).copy(), int(sign), method)
-
-    def snap(self, k: int, s0: float, r: float, prob, br, ev):
-        """Descent from the fold (branch point) ``ev`` of ``br`` (the sub-step from fraction ``s0``, of length
-        ``r``): ``(state, fraction, "landed", "")`` with the event recorded, or ``(None, fraction, status,
-        message)``."""
-        fold = ev.kind == "fold"
-        at = prob.point
-        x_ev = ev.x.copy()
-        phi = np.asarray(ev.null_vector, float)
-        phi = phi / max(float(np.abs(phi).max()), 1e-300)
-        note = ""
-        if not fold:
-            # just past the branch point along the traced branch (unstable there): at the branch point itself the
-            # flow would leave only algebraically slowly
-            after = at.pack(q=br.q[-1], F=br.force[-1], t=br.t[-1])
-            t_ev, t_after = x_ev[at["t"]], after[at["t"]]
-            t_d = min(float(t_ev) + BRANCH_POINT_OFFSET / float(prob.w[at["t"]]), float(t_after))
-            frac = (t_d - t_ev) / max(t_after - t_ev, 1e-300)
-            y, _ = prob.correct_t(x_ev + (after - x_ev) * frac, t_d)
-            if y is None:
-                return None, s0 + r * ev.t, "failed", f"step {k}: no point on the branch just past its branch point"
-            note = f"the branch point is at fraction {s0 + r * ev.t:.12g}; the arm leaves it just past, here"
-            x_ev = y
-        t_d = float(x_ev[at["t"]])
-        s_d = s0 + r * t_d
-        d = Descent(prob, t_d, self.held, x_ev[at["F"]].copy())
-        q_ev = x_ev[at["q"]].copy()
-        V_ev = d.potential(q_ev)
-        cands = {}
-        for sign in (1, -1):
-            qs = q_ev + sign * self.eps * phi
-            qs = d.onto(qs) if self.held else qs
-            cands[sign] = (d.potential(qs), qs)
-        if fold:
-            # the unstable side: where the traced branch goes on past the fold (V decreases along it at the fold)
-            side = float(phi @ (br.q[-1] - ev.q))
-            sign = 1 if side > 0 else -1 if side < 0 else (1 if cands[1][0] <= cands[-1][0] else -1)
-            if cands[sign][0] > V_ev and cands[-sign][0] < V_ev:
-                sign = -sign
-        else:
-            sign = 1 if cands[1][0] <= cands[-1][0] + 1e-15 * max(1.0, abs(V_ev)) else -1
-        before = state_at(prob, x_ev)
-        outcome, res = d.run(cands[sign][1])
-        kind = "snap" if fold else "bifurcation"
-        if outcome == "landed":
-            s = res
-            if fold and float(np.abs(s.q - q_ev).max()) < 10 * self.eps:
-                return None, s_d, "failed", f"step {k}: the descent from the fold came back to it"
-            released = before.potential(self.held) - s.potential(self.held)
-            note = note or (f"snap at fraction {s_d:.6g} of step {k}: landed on a stable equilibrium (potential "
-                            f"released {released:.6g})")
-            self.events.append(self._event("landed", kind, k, s_d, q_ev, s.q, before.force, s.force, before.tip,
-                                           s.tip, before.energy, s.energy, before.potential(self.held),
-                                           s.potential(self.held), sign, ev.method, note, ev.null_vector))
-            return s, s_d, "landed", ""
-        if outcome == "joint_limit":
-            msg = (f"the snap at step {k} + {s_d:.6g} runs into a joint's range bound (no equilibrium inside the "
-                   "physical range on the way)")
-            self.events.append(self._event("joint_limit", kind, k, s_d, q_ev, None, before.force, None, before.tip,
-                                           None, before.energy, None, before.potential(self.held), None, sign,
-                                           ev.method, msg, ev.null_vector))
-            return None, s_d, "joint_limit", msg
-        if outcome == "time_limit":
-            return None, s_d, "time_limit", "the time limit ran out during a snap"
-        return None, s_d, "failed", f"step {k}: the descent from the fold at fraction {s_d:.6g} did not land"
 
 
 # ---------------------------------------------------------------------------- the function
@@ -619,12 +366,13 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
 
 def _simulate(m, P, L, T, held, start, eps, progress=None) -> Simulation:
     K, n = P.shape[0], m.n
-    run = _Run(m, P, L, T, held, eps)
+    A = T if held else L
+    events: list[SimulationEvent] = []
     rows: list[ArmState] = []
     status, message = "complete", ""
     tell = progress or (lambda done, total: None)
     try:
-        state = _start_state(_chain(m, P[0]), held, None if held else L[0], T[0] if held else None, start)
+        state = _start_state(chain_with(m, P[0]), held, None if held else L[0], T[0] if held else None, start)
     except TimeLimitError:
         state, status, message = None, "time_limit", "the time limit ran out before the start was found"
     if state is not None:
@@ -634,12 +382,14 @@ def _simulate(m, P, L, T, held, start, eps, progress=None) -> Simulation:
             if expired():
                 status, message = "time_limit", f"the time limit ran out after {len(rows)} of {K} samples"
                 break
+            move = Move(m, P[k], P[k + 1], A[k], A[k + 1], held, step=k, perturbation=eps)
             try:
-                new, st, msg = run.step(k, state)
+                new, st, msg = move.run(state)
             except TimeLimitError:
                 new, st, msg = None, "time_limit", "the time limit ran out"
             except TensegrityError as exc:
                 new, st, msg = None, "failed", f"step {k}: {exc}"
+            events.extend(move.events)
             if new is None:
                 status, message = st, msg
                 break
@@ -647,7 +397,7 @@ def _simulate(m, P, L, T, held, start, eps, progress=None) -> Simulation:
             rows.append(state)
             tell(len(rows), K)
     if status == "complete":
-        message = f"all {K} samples simulated, {len([e for e in run.events if e.kind != 'joint_limit'])} snap(s)"
+        message = f"all {K} samples simulated, {len([e for e in events if e.kind != 'joint_limit'])} snap(s)"
     k = len(rows)
     q = np.array([s.q for s in rows]).reshape(k, n)
     force = np.array([s.force for s in rows]).reshape(k, 2)
@@ -656,5 +406,5 @@ def _simulate(m, P, L, T, held, start, eps, progress=None) -> Simulation:
                       energy=np.array([s.energy for s in rows], float),
                       potential=np.array([s.potential(held) for s in rows], float),
                       stable=np.array([s.stable for s in rows], bool),
-                      morse_index=np.array([s.morse for s in rows], int), events=run.events, status=status,
+                      morse_index=np.array([s.morse for s in rows], int), events=events, status=status,
                       message=message, straight_length=m.straight_length)
