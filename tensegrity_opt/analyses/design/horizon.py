@@ -47,8 +47,7 @@ from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...outcome import SolverInfo
 from ...timelimit import expired
-from ..equilibria.equilibrium import Equilibrium
-from .preloads import LAND_TOL, stability_margin
+from .preloads import LAND_TOL
 
 __all__ = ["horizon_steps", "check_horizon", "HORIZONS", "TIP_WEIGHTS"]
 
@@ -76,16 +75,16 @@ def check_horizon(horizon, field: str = "horizon") -> int | str:
 
 
 def horizon_steps(ctl: Any, targets: np.ndarray, loads: np.ndarray, end_angles: np.ndarray | None,
-                  dts: np.ndarray, horizon: int | str, out: list[tuple[Any, bool]], make_step: Callable[..., Any], *,
-                  verify: bool = True, progress: Callable[[int, int], Any] | None = None) -> None:
-    """The steps of a trajectory planned over a horizon (module docstring), appended to ``out`` as ``(step,
-    verified)`` pairs as they are applied (a :class:`~tensegrity_opt.errors.TimeLimitError` leaves those done).
+                  dts: np.ndarray, horizon: int | str, out: list, *, stop: bool = False,
+                  progress: Callable[[int, int], Any] | None = None) -> None:
+    """The steps of a trajectory planned over a horizon (module docstring), taken by the controller ``ctl`` and
+    appended to ``out`` as they are taken (a :class:`~tensegrity_opt.errors.TimeLimitError` leaves those done).
 
-    ``ctl`` (a :class:`~.preload_control.PreloadController`) carries the validated chain, start, rest lengths,
-    bounds, rate limit (per second), margin, motion weights and ``on_infeasible``; ``dts`` the seconds of each step
-    (NaN: no time base, only without a rate limit); ``end_angles`` NaN where free (None: none given); ``make_step``
-    builds a step from its fields by keyword (:class:`~.preload_control.PreloadStep`'s). Called by
-    :func:`~.preload_control.plan_preloads`, which checks every argument.
+    ``ctl`` (a :class:`~.preload_control.PreloadController`) carries the validated chain, the state (its
+    configuration, command and load), bounds, rate limit (per second), margin, motion weights, ``on_infeasible``
+    and ``verify``; ``dts`` the seconds of each step (NaN: no time base, only without a rate limit);
+    ``end_angles`` NaN where free (None: none given); ``stop``: end after a step where the arm snapped or had no
+    equilibrium. Called by :func:`~.preload_control.plan_preloads`, which checks every argument.
     """
     from ...numerics.horizon_nlp import horizon_nlp
 
@@ -97,33 +96,44 @@ def horizon_steps(ctl: Any, targets: np.ndarray, loads: np.ndarray, end_angles: 
         R = np.full((K, 2 * n), _INF)
     else:
         R = np.outer(dts, block(ctl.rate))
-    plan = _Planner(ctl, targets, loads, A, R, block(ctl.ell), block(ctl.w), block(ctl.lo), block(ctl.hi),
-                    bool(verify), horizon_nlp(n, N, A is not None), out, make_step, progress)
-    plan.q = ctl.q.copy()
+    plan = _Planner(ctl, targets, loads, A, R, dts, block(ctl.w), block(ctl.lo), block(ctl.hi),
+                    horizon_nlp(n, N, A is not None), out, stop, progress)
     if horizon == "all":
         plan.run_all()
     else:
         plan.run_receding()
 
 
-class _Planner:
-    """One plan's state: the current command and configuration, the last solution (for the warm start); the
-    rest lengths in the NLP's order (the ``L1_0`` block, then ``L2_0``)."""
+class _Stop(Exception):
+    """The plan ends (a step where the arm snapped or had no equilibrium, with ``on_snap="stop"``)."""
 
-    def __init__(self, ctl, T, Ls, A, R, ell0, v, lo, hi, verify, nlp, out, make_step, progress) -> None:
+
+class _Planner:
+    """One plan: the controller (the arm's state: its command and configuration), the last solution (for the warm
+    start); the rest lengths in the NLP's order (the ``L1_0`` block, then ``L2_0``)."""
+
+    def __init__(self, ctl, T, Ls, A, R, dts, v, lo, hi, nlp, out, stop, progress) -> None:
         m = ctl.m
         self.ctl = ctl
-        self.m, self.T, self.Ls, self.A, self.R = m, T, Ls, A, R
-        self.ell, self.v, self.lo, self.hi = ell0.copy(), v, lo, hi
-        self.margin, self.verify, self.nlp = ctl.margin, verify, nlp
-        self.hold_off_target = ctl.on_infeasible == "hold"
-        self.out, self.make_step, self.progress = out, make_step, progress
+        self.m, self.T, self.Ls, self.A, self.R, self.dts = m, T, Ls, A, R, dts
+        self.v, self.lo, self.hi = v, lo, hi
+        self.margin, self.nlp = ctl.margin, nlp
+        self.approach = ctl.on_infeasible == "approach"
+        self.out, self.stop, self.progress = out, stop, progress
         self.n, self.K, self.N = m.n, T.shape[0], nlp.N
         self.scale = float(np.max(m.b))
         self.limits = m.joint_limits * (1 - RANGE_SHRINK)
-        self.q = np.zeros(self.n)
 
-    # ------------------------------------------------------------------ the arm
+    # ------------------------------------------------------------------ the arm (the controller's state)
+    @property
+    def ell(self) -> np.ndarray:
+        """The current command in the NLP's order."""
+        return np.asarray(self.ctl.ell, float).reshape(self.n, 2).T.ravel()
+
+    @property
+    def q(self) -> np.ndarray:
+        return self.ctl.q
+
     def _segment_major(self, ell: np.ndarray) -> np.ndarray:
         return np.column_stack([ell[:self.n], ell[self.n:]]).ravel()
 
@@ -131,26 +141,24 @@ class _Planner:
         """The chain with rest lengths ``ell`` (the L10 block, then L20): the controller's."""
         return self.ctl.manipulator(self._segment_major(ell))
 
-    def forward(self, ell: np.ndarray, F: np.ndarray, q_prev: np.ndarray) -> Equilibrium | None:
-        """The forward quasi-static solve: the arm with rest lengths ``ell`` under ``F`` from ``q_prev`` (the
-        controller's), or None."""
-        return self.ctl._forward(self._segment_major(ell), F, q_prev)
-
     # ------------------------------------------------------------------ one solve
-    def _index(self, j: int) -> np.ndarray:
-        """The trajectory's steps of the window starting at ``j`` (its last step repeated past the end)."""
-        return np.minimum(np.arange(j, j + self.N), self.K - 1)
+    def _index(self, j: int, N: int | None = None) -> np.ndarray:
+        """The trajectory's steps of the window of ``N`` (default the plan's) starting at ``j`` (its last step
+        repeated past the end)."""
+        return np.minimum(np.arange(j, j + (self.N if N is None else N)), self.K - 1)
 
-    def _cold(self, idx: np.ndarray) -> np.ndarray:
+    def _cold(self, idx: np.ndarray, nlp=None) -> np.ndarray:
         """A start: the current state at every step of the window."""
-        return self._assemble(np.tile(self.q, (self.N, 1)), np.tile(self.ell, (self.N, 1)), idx)
+        N = idx.size
+        return self._assemble(np.tile(self.q, (N, 1)), np.tile(self.ell, (N, 1)), idx, nlp)
 
-    def _assemble(self, Q: np.ndarray, Ell: np.ndarray, idx: np.ndarray) -> np.ndarray:
+    def _assemble(self, Q: np.ndarray, Ell: np.ndarray, idx: np.ndarray, nlp=None) -> np.ndarray:
         """The variables for configurations ``Q`` (N, n) and rest lengths ``Ell`` (N, 2n): the margin's factors
         and the pose errors computed (floored where a Hessian is below the margin)."""
         from ...numerics.design_nlp import tril_vector
 
-        n, N = self.n, self.N
+        nlp = self.nlp if nlp is None else nlp
+        n, N = self.n, nlp.N
         Lf, E = [], []
         for k in range(N):
             mk = self.manipulator(Ell[k])
@@ -161,7 +169,7 @@ class _Planner:
             Lf.append(tril_vector(np.linalg.cholesky(V_ @ np.diag(np.maximum(w_, floor)) @ V_.T)))
             E.append(self._pose(mk, Q[k]) - self._pose_target(idx[k]))
         E = np.nan_to_num(np.array(E))
-        x = self.nlp.variables
+        x = nlp.variables
         return x.pack(phi=np.cumsum(Q, axis=1).ravel(), L10=Ell[:, :n].ravel(), L20=Ell[:, n:].ravel(),
                       L=np.concatenate(Lf), e=E.ravel(), t=np.linalg.norm(E, axis=1) + 1e-3 * self.scale)
 
@@ -174,20 +182,40 @@ class _Planner:
             return self.T[k]
         return np.append(self.T[k], self.scale * self.A[k])            # NaN: free
 
-    def _solve(self, j: int, x0: np.ndarray, hard_first: bool | None = None):
-        """The window starting at ``j`` from ``x0``: IPOPT's result; ``hard_first``: the first step's pose a
-        constraint (default: holding off-target steps)."""
-        nlp, n, N, m = self.nlp, self.n, self.N, self.m
-        idx = self._index(j)
+    def _window(self, j: int, warm: np.ndarray | None):
+        """The window starting at ``j`` solved: from ``warm`` (when given), else from the current state; where its
+        solve fails (e.g. a step of it has no stable equilibrium under its load at all), the shorter windows
+        ``N/2, N/4, ..., 1`` from ``j``, from the current state. ``(result, Q, Ell)``; ``Q``, ``Ell`` None when
+        every solve failed (the last result is returned)."""
+        res = None
+        if warm is not None:
+            res = self._solve(j, warm)
+        if res is None or not res.success:
+            res = self._solve(j, self._cold(self._index(j)))
+        nlp = self.nlp
+        while not res.success and nlp.N > 1:
+            from ...numerics.horizon_nlp import horizon_nlp
+
+            nlp = horizon_nlp(self.n, max(1, nlp.N // 2), nlp.angles)
+            res = self._solve(j, self._cold(self._index(j, nlp.N), nlp), nlp)
+        if not res.success:
+            return res, None, None
+        Q, Ell = self._split(res.x, nlp)
+        return res, Q, Ell
+
+    def _solve(self, j: int, x0: np.ndarray, nlp=None):
+        """The window starting at ``j`` from ``x0`` (``nlp``: a shorter window's problem; default the plan's):
+        IPOPT's result. Every pose is in the exact penalty (a reachable target is met, an unreachable one
+        approached), never a hard constraint: one step out of reach does not make the window infeasible."""
+        nlp = self.nlp if nlp is None else nlp
+        n, N, m = self.n, nlp.N, self.m
+        idx = self._index(j, N)
         x, g, p = nlp.variables, nlp.constraints, nlp.parameters
         P = np.array([self._pose_target(k) for k in idx])            # (N, d); NaN: a free angle
         free = np.isnan(P)
-        hard = np.zeros((N, 1), dtype=bool)             # a pose held exactly: e = 0 (module docstring)
-        hard[0] = self.hold_off_target if hard_first is None else hard_first
-        fixed = free | hard
-        e_lo = np.where(fixed, 0.0, -_INF)
-        e_hi = np.where(fixed, 0.0, _INF)
-        t_hi = np.where(fixed.all(axis=1), 0.0, _INF)
+        e_lo = np.where(free, 0.0, -_INF)
+        e_hi = np.where(free, 0.0, _INF)
+        t_hi = np.where(free.all(axis=1), 0.0, _INF)
         lbx = x.pack(phi=-_INF, L10=np.tile(self.lo[:n], N), L20=np.tile(self.lo[n:], N),
                      L=np.tile(nlp.factor_floor, N), e=e_lo.ravel(), t=0.0)
         ubx = x.pack(phi=_INF, L10=np.tile(self.hi[:n], N), L20=np.tile(self.hi[n:], N), L=_INF, e=e_hi.ravel(),
@@ -204,135 +232,104 @@ class _Planner:
                     w=[w2, w1, 1.0], scale=self.scale, margin=self.margin)
         return nlp.solve(x0, lbx, ubx, lbg, ubg, pv)
 
-    def _split(self, xs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def _split(self, xs: np.ndarray, nlp=None) -> tuple[np.ndarray, np.ndarray]:
         """``(Q (N, n), Ell (N, 2n))`` of a solution."""
-        n, N = self.n, self.N
-        v = self.nlp.variables.unpack(xs)
+        nlp = self.nlp if nlp is None else nlp
+        n, N = self.n, nlp.N
+        v = nlp.variables.unpack(xs)
         phi = v["phi"].reshape(N, n)
         Q = np.diff(np.concatenate([np.zeros((N, 1)), phi], axis=1), axis=1)
         Ell = np.concatenate([v["L10"].reshape(N, n), v["L20"].reshape(N, n)], axis=1)
         return Q, Ell
 
-    # ------------------------------------------------------------------ applying a step
-    def _on_target(self, k: int, tip: np.ndarray, q: np.ndarray) -> bool:
-        ok = float(np.max(np.abs(tip - self.T[k]))) <= LAND_TOL * self.scale
-        if ok and self.A is not None and not math.isnan(self.A[k]):
-            ok = abs(float(np.sum(q)) - self.A[k]) <= LAND_TOL
-        return ok
-
+    # ------------------------------------------------------------------ taking a step
     def apply(self, k: int, plan_q: np.ndarray | None, plan_ell: np.ndarray | None, info: SolverInfo) -> bool:
-        """Step ``k``: adopt the planned command when it is safe (module docstring), else hold; the step is
-        appended to the output. True when the plan's command was adopted."""
-        n, F = self.n, self.Ls[k]
-        ell_prev, q_prev = self.ell, self.q
-        adopted = lands = False
-        eq = None
-        why = f"the horizon's IPOPT solve ended {info.status}: the previous command held"
-        proposal, proposal_tip = ell_prev, None
+        """Step ``k``: the horizon's command where it is safe and not worse than the step-by-step controller's
+        answer from the same state (module docstring), else that answer; the step is taken and appended to the
+        output. True when the horizon's command was taken."""
+        ctl, F = self.ctl, self.Ls[k]
+        angle = None if self.A is None or math.isnan(self.A[k]) else float(self.A[k])
+        dt = None if math.isnan(self.dts[k]) else float(self.dts[k])
+        if expired():
+            raise TimeLimitError("the horizon plan ran out of time")
+        own = ctl.propose(self.T[k], F, angle, dt=dt)             # the step-by-step answer from this state
+        hz = None
+        why = f"the horizon's IPOPT solve ended {info.status}"
         if plan_ell is not None:
+            ell_prev = self.ell
             proposal = np.clip(plan_ell, self.lo, self.hi)
-            proposal_tip = self.manipulator(proposal).tip(plan_q)
             # IPOPT holds the rate rows to its (scaled) tolerance: a proposal that far outside is clipped in
             inside = bool(np.all(np.abs(proposal - ell_prev) <= self.R[k] * (1 + 1e-6) + RATE_TOL * self.scale))
-            on_target = self._on_target(k, proposal_tip, plan_q)
             if not inside:
-                why = "the horizon's command leaves the rate box: the previous command held"
-            elif self.hold_off_target and not on_target:
-                why = (f"the target is out of reach this step (the horizon's pose is "
-                       f"{float(np.linalg.norm(proposal_tip - self.T[k])):.6g} from it): the previous command held")
+                why = "the horizon's command leaves the rate box"
             else:
                 command = np.clip(proposal, ell_prev - self.R[k], ell_prev + self.R[k])
-                eq = self.forward(command, F, q_prev)
-                lands = (eq is not None and bool(eq.stable) and float(np.max(np.abs(eq.q - plan_q))) <= SAME_POSE)
-                if lands or not self.verify:
-                    adopted = True
-                    self.ell = command
-                    why = "the horizon plan's step, verified by the forward solve" if lands else \
-                        "the horizon plan's step (not verified)"
+                hz = ctl.evaluate(self._segment_major(command), F, self.T[k], angle, method="horizon",
+                                  solver=info, planned_q=plan_q, message="the horizon plan's step")
+                if hz.feasible:
+                    why = ""
+                elif not (hz.verified or not ctl.verify) or not math.isfinite(hz.margin):
+                    why = hz.message
+                elif own.feasible:
+                    why = "the horizon's step is off its target where the step-by-step answer reaches it"
+                elif not self.approach:
+                    why = "the horizon's step is off its target (on_infeasible hold)"
+                elif hz.tip_error > own.tip_error * (1 + 1e-9) + LAND_TOL * self.scale:
+                    why = "the horizon's step is farther from its target than the step-by-step answer"
                 else:
-                    why = "the forward solve with the horizon's command does not land on its pose: the previous " \
-                          "command held"
-        if not adopted:
-            eq = self.forward(self.ell, F, q_prev)
-        q = q_prev if eq is None else eq.q
-        self.q = q.copy()
-        mk = self.manipulator(self.ell)
-        tip = mk.tip(q)
-        feasible = adopted and self._on_target(k, tip, q)
-        held_ok = not adopted and eq is not None and bool(eq.stable)
-        verified = bool(self.verify) and (lands or held_ok)
-        pairs = lambda v: np.column_stack([v[:n], v[n:]])              # noqa: E731  blocks -> (n, 2)
-        step = self.make_step(
-            command=pairs(self.ell), proposal=pairs(proposal), q=q.copy(), tip=tip, end_angle=float(np.sum(q)),
-            margin=math.nan if eq is None else stability_margin(mk, q, F),       # no equilibrium: no margin
-            energy=math.nan if eq is None else float(mk.energy(q)),
-            tip_error=float(np.linalg.norm(tip - self.T[k])),
-            proposal_tip=tip if proposal_tip is None else proposal_tip,
-            feasible=feasible, method="horizon" if adopted else "none", solver=info, residual=None,
-            target=self.T[k].copy(), message=why)
-        self.out.append((step, verified))
+                    why = ""
+        take = hz if (hz is not None and not why) else own
+        if take is own:
+            take = own._but(message=f"{own.message} (the step-by-step answer: {why})")
+        ctl.commit(take, F)
+        self.out.append(take)
         if self.progress is not None:
             self.progress(len(self.out), self.K)
-        return adopted
-
-    def _proposal(self, j: int) -> tuple[np.ndarray | None, np.ndarray | None]:
-        """Where the solve with the first step's pose held exactly failed (``"hold"``): the first step of the
-        window solved with every pose in the penalty, from the current state — the pose ``"approach"`` would
-        command, reported as the held step's proposal. ``(None, None)`` without one."""
-        if not self.hold_off_target:
-            return None, None
-        res = self._solve(j, self._cold(self._index(j)), hard_first=False)
-        if not res.success:
-            return None, None
-        Q, Ell = self._split(res.x)
-        return Q[0], Ell[0]
+        if self.stop and take.status in ("snap", "no_equilibrium"):
+            raise _Stop
+        return take is not own and take.method == "horizon"
 
     # ------------------------------------------------------------------ the plan
     def run_all(self) -> None:
-        """One NLP over the trajectory; where a step cannot be applied (it holds), the steps after it are planned
-        again from the state reached (the same NLP, its window past the end repeating the last step)."""
+        """One NLP over the trajectory; where a step's command is not the horizon's (the step-by-step answer was
+        taken), the steps after it are planned again from the state reached (the same NLP, its window past the end
+        repeating the last step)."""
         j = 0
-        while j < self.K:
-            res = self._solve(j, self._cold(self._index(j)))            # from the current state
-            info = SolverInfo(res.status, res.iterations)
-            if res.success:
-                Q, Ell = self._split(res.x)
-            else:
-                q1, e1 = self._proposal(j)
-                Q, Ell = (None, None) if q1 is None else (q1[None, :], e1[None, :])
-            first = j
-            for k in range(first, self.K):
-                if expired():
-                    raise TimeLimitError("the horizon plan ran out of time")
-                has = Q is not None and k - first < len(Q)
-                adopted = self.apply(k, Q[k - first] if has else None, Ell[k - first] if has else None, info)
-                j = k + 1
-                if not adopted or not res.success:
-                    break
+        try:
+            while j < self.K:
+                res, Q, Ell = self._window(j, None)                         # from the current state
+                info = SolverInfo(res.status, res.iterations)
+                if Q is None:                       # no window solved from here: the step-by-step answer
+                    self.apply(j, None, None, info)
+                    j += 1
+                    continue
+                first = j
+                for k in range(first, min(self.K, first + len(Q))):
+                    adopted = self.apply(k, Q[k - first], Ell[k - first], info)
+                    j = k + 1
+                    if not adopted:
+                        break
+        except _Stop:
+            return
 
     def run_receding(self) -> None:
         warm = None
-        for j in range(self.K):
-            if expired():
-                raise TimeLimitError("the horizon plan ran out of time")
-            idx = self._index(j)
-            res = None
-            if warm is not None:
-                res = self._solve(j, warm)
-            if res is None or not res.success:
-                res = self._solve(j, self._cold(idx))             # from the current state
-            info = SolverInfo(res.status, res.iterations)
-            if res.success:
-                Q, Ell = self._split(res.x)
-                adopted = self.apply(j, Q[0], Ell[0], info)
-            else:
-                adopted = self.apply(j, *self._proposal(j), info)
-            if res.success and adopted and self.N > 1:
-                # the solution shifted by one step, its last step repeated
-                Qs = np.concatenate([Q[1:], Q[-1:]])
-                Es = np.concatenate([Ell[1:], Ell[-1:]])
-                warm = self._assemble(Qs, Es, self._index(j + 1))
-            elif res.success and adopted:
-                warm = self._assemble(Q, Ell, self._index(j + 1))
-            else:
-                warm = None
+        try:
+            for j in range(self.K):
+                if expired():
+                    raise TimeLimitError("the horizon plan ran out of time")
+                res, Q, Ell = self._window(j, warm)
+                info = SolverInfo(res.status, res.iterations)
+                if Q is not None:
+                    adopted = self.apply(j, Q[0], Ell[0], info)
+                else:
+                    adopted = self.apply(j, None, None, info)
+                if Q is not None and adopted and len(Q) == self.N:
+                    # the solution shifted by one step, its last step repeated
+                    Qs = np.concatenate([Q[1:], Q[-1:]])
+                    Es = np.concatenate([Ell[1:], Ell[-1:]])
+                    warm = self._assemble(Qs, Es, self._index(j + 1))
+                else:
+                    warm = None
+        except _Stop:
+            return

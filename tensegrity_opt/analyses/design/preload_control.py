@@ -65,7 +65,13 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...bounds import bound_pair
-from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
+from ...errors import (
+    InfeasibleDesignError,
+    InvalidParameterError,
+    NoEquilibriumError,
+    TensegrityError,
+    TimeLimitError,
+)
 from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
 from ...numerics.inverse_statics import inverse_statics
@@ -76,19 +82,27 @@ from ...serialize import nullable, number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 from ..paths.control import checked_vector
+from ..paths.descent import ArmState
+from ..paths.transition import Transition, follow, released
 from .follower import loaded_rest
 from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose, solve_pose_nlp, stability_margin
 
-__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "step_times", "ON_INFEASIBLE", "METHODS"]
+__all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "step_times", "ON_INFEASIBLE", "ON_SNAP",
+           "METHODS"]
 
 #: What an infeasible step commands: ``"hold"`` the previous command, ``"approach"`` the nearest admissible pose's
 #: rest lengths.
 ON_INFEASIBLE = ("hold", "approach")
+#: What a plan does after a step where the arm snapped or had no equilibrium: ``"continue"`` from where it went,
+#: or ``"stop"`` there.
+ON_SNAP = ("continue", "stop")
 #: How a step's command was found: the least-change ``"newton"`` step, ``"ipopt"`` (the fallback or the
 #: objective), ``"nearest"`` (the nearest admissible pose: an approach step, or the target reached by it where
 #: the other two failed), ``"horizon"`` (a step of a horizon plan, :mod:`.horizon`), ``"none"`` (held: no new
 #: command).
 METHODS = ("newton", "ipopt", "nearest", "horizon", "none")
+#: Joint angles (rad) within which a transition must end on the planned configuration.
+SAME_POSE = 1e-6
 #: Spread starts of the nearest-pose search (besides the current state, IPOPT's last point and the held state).
 NEAREST_SPREAD = 2
 
@@ -176,17 +190,36 @@ class PreloadStep(Outcome):
     target : ndarray (2,)
     message : str
         How the step was solved, or why it is infeasible.
+    verified : bool
+        The step's transition was followed (:mod:`~tensegrity_opt.analyses.paths.transition`: the previous command
+        and load moving linearly to this step's): no fold, no branch point, no joint limit, the margin held all
+        along it, and the arm ends on the reported pose (False with ``verify=False``: not checked; False for a
+        step that starts against a joint's stop, whose release is not a followed path).
+    transition_margin : float
+        The least stability margin along the step's transition (torque / rad; 0 where the arm snapped; NaN when no
+        transition was followed).
+    events : tuple of SimulationEvent
+        What happened during the transition: the snaps (``kind`` ``"snap"`` or ``"bifurcation"``, with the landing
+        ``q_after`` and ``tip_after``) and a joint reaching its stop (``"joint_limit"``); ``step`` is the step's index
+        since the controller's start, ``fraction`` where in the move.
     status : str
-        ``"feasible"`` or ``"infeasible"`` (:attr:`STATUSES`, from ``feasible``).
+        :attr:`STATUSES`: ``"feasible"``, ``"infeasible"``, ``"snap"`` (the arm snapped during the transition:
+        ``q``, ``tip`` are where it landed) or ``"no_equilibrium"`` (a joint reached its stop: ``q`` is the
+        configuration there, ``margin`` and ``energy`` NaN).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
         "feasible": "rest lengths meeting every requirement were found: the tip on the target, stable with the "
-                    "margin, inside the bounds and the rate limit",
+                    "margin, inside the bounds and the rate limit (and, verified, all along the transition)",
         "infeasible": "no admissible rest lengths put the tip on the target: the command is the held value "
                       "(on_infeasible hold) or the nearest admissible pose's rest lengths (approach); q, tip, "
                       "margin and energy describe the arm under the command, proposal and proposal_tip the "
                       "nearest admissible pose",
+        "snap": "the arm snapped during the step's transition (nothing admissible avoided it, e.g. a held command "
+                "under a changing load): q and tip are where it landed (events give where it snapped)",
+        "no_equilibrium": "the arm has no equilibrium inside the physical range under the step's inputs: a joint "
+                          "reached its stop during the transition; q is the configuration there (margin and "
+                          "energy null) and the next step starts from it",
     }
     SUCCESS: ClassVar[frozenset[str]] = frozenset({"feasible"})
 
@@ -205,6 +238,9 @@ class PreloadStep(Outcome):
     residual: float | None
     target: np.ndarray
     message: str
+    verified: bool = False
+    transition_margin: float = math.nan
+    events: tuple = ()
 
     def __post_init__(self) -> None:
         # the controller passes arrays it owns: read-only in place (this is on the control loop's path)
@@ -220,26 +256,42 @@ class PreloadStep(Outcome):
         step.__post_init__()
         return step
 
+    def _but(self, **fields: Any) -> PreloadStep:
+        """This step with ``fields`` replaced (the controller's; arrays passed are owned by the new step)."""
+        return PreloadStep._of(**{**self.__dict__, **fields})
+
     @property
     def status(self) -> str:
+        if any(e.kind == "joint_limit" for e in self.events):
+            return "no_equilibrium"
+        if any(e.kind in ("snap", "bifurcation") for e in self.events):
+            return "snap"
         return "feasible" if self.feasible else "infeasible"
+
+    @property
+    def snap(self):
+        """The first snap of the step's transition (a :class:`~.transition.SimulationEvent`), or None."""
+        return next((e for e in self.events if e.kind in ("snap", "bifurcation")), None)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``command``, ``proposal``, ``q``, ``tip``, ``end_angle``,
         ``margin`` and ``energy`` (null: no equilibrium), ``tip_error``, ``proposal_tip``, ``feasible``, ``method``,
-        ``solver`` ``{status, iterations}``, ``residual`` (null: not a Newton step), ``target``."""
+        ``solver`` ``{status, iterations}``, ``residual`` (null: not a Newton step), ``target``, ``verified``,
+        ``transition_margin`` (null: none followed), ``events``."""
         return {**self.outcome(), "command": [numbers(r) for r in self.command],
                 "proposal": [numbers(r) for r in self.proposal], "q": numbers(self.q), "tip": numbers(self.tip),
                 "end_angle": number(self.end_angle), "margin": nullable(self.margin),
                 "energy": nullable(self.energy), "tip_error": number(self.tip_error),
                 "proposal_tip": numbers(self.proposal_tip), "feasible": self.feasible, "method": self.method,
                 "solver": self.solver.to_dict(), "residual": None if self.residual is None else nullable(self.residual),
-                "target": numbers(self.target)}
+                "target": numbers(self.target), "verified": bool(self.verified),
+                "transition_margin": nullable(self.transition_margin), "events": [e.to_dict() for e in self.events]}
 
 
 @dataclass(frozen=True)
 class _Pose:
-    """A candidate state of the arm: rest lengths (segment-major 2n), its configuration, tip, margin, energy."""
+    """A candidate state of the arm: rest lengths (segment-major 2n), its configuration, tip, margin, energy; and
+    the transition that gets it there (``tr``, None when not followed: ``verify=False``)."""
 
     ell: np.ndarray
     q: np.ndarray
@@ -247,6 +299,11 @@ class _Pose:
     margin: float
     energy: float
     solver: SolverInfo
+    tr: Transition | None = None
+
+    @property
+    def verified(self) -> bool:
+        return self.tr is not None and self.tr.status == "followed"
 
 
 class PreloadController:
@@ -286,11 +343,15 @@ class PreloadController:
         What an infeasible step commands (:data:`ON_INFEASIBLE`): the previous command, or the rest lengths of
         the admissible pose nearest to the target (the arm moves toward the target as far as the bounds, the
         rate limit and the margin allow).
+    verify : bool
+        Follow every step's transition (default): a command is adopted only where the arm gets to its pose along
+        the move from the previous command, stable with the margin all along (module docstring); False: the end
+        pose only, nothing verified (faster).
     """
 
     def __init__(self, m: Manipulator, start=None, *, rest_lengths0=None, load=(0.0, 0.0), bounds=None,
                  rate_limit=None, dt: float | None = None, margin: float = 1e-3, objective: str = "change",
-                 weights=None, on_infeasible: str = "hold") -> None:
+                 weights=None, on_infeasible: str = "hold", verify: bool = True) -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
         n = m.n
@@ -325,6 +386,9 @@ class PreloadController:
         self.ell = self._rest_lengths0(rest_lengths0)               # segment-major: l[2i], l[2i+1]
         self.q = self._start(start)
         self.state_load = self.load.copy()          # the load the state q is an equilibrium under
+        self.at_stop = False                        # the state is against a joint's stop (no equilibrium)
+        self.verify = bool(verify)
+        self.index = 0                              # steps taken (the events' step)
         self.mu: dict[bool, np.ndarray] = {}
         self.last: PreloadStep | None = None
 
@@ -396,27 +460,126 @@ class PreloadController:
         """Rest lengths for the tip at ``target = (x, y)`` (and the last link at ``end_angle``, rad) under
         ``load`` (default the controller's), from the current state, ``dt`` seconds after the last step (default
         the controller's ``dt``; needed with a rate limit: each rest length moves by at most ``rate_limit * dt``);
-        the state moves to the arm's equilibrium under the step's command (module docstring)."""
+        the state moves to where the arm goes under the step's command (module docstring)."""
+        F = self.load if load is None else checked_vector(load, 2, "load")
+        st = self.propose(target, F, end_angle, dt=dt)
+        self.commit(st, F)
+        return st
+
+    def propose(self, target, load=None, end_angle: float | None = None, *, dt: float | None = None) -> PreloadStep:
+        """The step :meth:`step` takes, without taking it: the state does not move (:meth:`commit` moves it)."""
         target = checked_vector(target, 2, "target")
         F = self.load if load is None else checked_vector(load, 2, "load")
-        if end_angle is not None and not math.isfinite(float(end_angle)):
-            raise InvalidParameterError("end_angle must be finite", field="end_angle")
+        if end_angle is not None:
+            end_angle = checked_vector(end_angle, 1, "end_angle")[0]
         lo, hi = self.box(dt)
         res = None
         if self.objective == "change":
             res = self._newton(target, F, end_angle, lo, hi)
         if res is None:
             res = self._ipopt(target, F, end_angle, lo, hi)
+        if not isinstance(res, TensegrityError) and self.verify:
+            tr = self.transition(res.command.ravel(), F)
+            if self._safe(tr, res.q):
+                res = res._but(verified=True, transition_margin=tr.margin,
+                               message=res.message.replace(", verified by the forward solve", "")
+                               + ", verified along its transition")
+            elif tr.status == "released" and float(np.max(np.abs(tr.q - res.q))) <= SAME_POSE:
+                res = res._but(message=res.message.replace(", verified by the forward solve", "")
+                               + "; the arm, released from its joint stop, settles on the step's pose (a release "
+                                 "from a stop is not a followed path: not verified)")
+            else:
+                res = InfeasibleDesignError(
+                    f"the {res.method} step's command reaches the target but not along the way: "
+                    f"{self._unsafe_why(tr, res.q)}", status="transition")
         if isinstance(res, TensegrityError):
             res = self._infeasible(target, F, end_angle, lo, hi, res)
-        if res.method != "none":
-            self.ell = res.command.ravel().copy()
-        if res.method in ("ipopt", "nearest"):
-            self.mu.clear()                 # the multipliers of the least-change problem start again
-        if math.isfinite(res.energy):       # the state is an equilibrium under F
-            self.q, self.state_load = res.q.copy(), F.copy()
-        self.last = res
         return res
+
+    def commit(self, st: PreloadStep, load=None) -> None:
+        """Take the step ``st`` (a :meth:`propose` from the current state) under ``load`` (default the
+        controller's): the command becomes the current one, the state where the arm went."""
+        F = self.load if load is None else checked_vector(load, 2, "load")
+        if st.method != "none":
+            self.ell = st.command.ravel().copy()
+        if st.method in ("ipopt", "nearest", "horizon") or st.status != "feasible":
+            self.mu.clear()                 # the multipliers of the least-change problem start again
+        if st.status == "no_equilibrium":
+            self.q, self.state_load, self.at_stop = st.q.copy(), F.copy(), True
+        elif math.isfinite(st.energy):      # the state is an equilibrium under F
+            self.q, self.state_load, self.at_stop = st.q.copy(), F.copy(), False
+        self.last = st
+        self.index += 1
+
+    # ------------------------------------------------------------------ transitions
+    def transition(self, ell: np.ndarray, F: np.ndarray) -> Transition:
+        """What the arm does while the command moves linearly from the current one to ``ell`` (segment-major
+        ``2n``) and the load from the state's to ``F``, from the current state
+        (:mod:`~tensegrity_opt.analyses.paths.transition`); from a joint's stop, its release under ``(ell, F)``."""
+        P0, P1 = self.ell.reshape(self.n, 2), np.asarray(ell, float).reshape(self.n, 2)
+        if self.at_stop:
+            return released(self.m, self.q, P1, F, step=self.index)
+        m0 = self.manipulator()
+        E, _, _, _, _ = chain_solver(m0).evaluate(self.q, self.state_load)
+        state = ArmState(self.q.copy(), self.state_load.copy(), m0.tip(self.q), float(E), 0, True)
+        return follow(self.m, state, P0, P1, self.state_load, F, step=self.index)
+
+    def _margin_tol(self) -> float:
+        return 1e-9 * self.m.torque_scale + 1e-7 * self.margin
+
+    def state_margin(self) -> float:
+        """The stability margin of the current state (NaN against a joint's stop)."""
+        key = (self.index, self.at_stop)
+        if getattr(self, "_state_margin", (None, None))[0] != key:
+            mu = math.nan if self.at_stop else stability_margin(self.manipulator(), self.q, self.state_load)
+            self._state_margin = (key, mu)
+        return self._state_margin[1]
+
+    def _floor(self) -> float:
+        """The least margin a transition may pass through: the required one, or the state's own where the arm
+        already is below it (a move never makes the margin worse than required, or than where the arm was)."""
+        mu0 = self.state_margin()
+        return self.margin if not math.isfinite(mu0) else min(self.margin, mu0)
+
+    def _safe(self, tr: Transition, q: np.ndarray) -> bool:
+        """The transition ``tr`` gets the arm to ``q`` along its branch, stable all along, its margin never below
+        :meth:`_floor`, and at ``q`` at least the required one."""
+        if not (tr.status == "followed" and float(np.max(np.abs(tr.q - q))) <= SAME_POSE):
+            return False
+        tol = self._margin_tol()
+        return tr.margin >= self._floor() - tol and tr.margin_end >= self.margin - tol
+
+    def _unsafe_why(self, tr: Transition, q: np.ndarray) -> str:
+        """Why :meth:`_safe` refuses ``tr`` (a phrase)."""
+        if tr.status == "snapped":
+            e = tr.snaps[0]
+            return (f"the arm snaps at {e.fraction:.4g} of the move (largest joint motion {e.distance:.3g} rad) and "
+                    f"lands with the tip at ({e.tip_after[0]:.6g}, {e.tip_after[1]:.6g})")
+        if tr.status == "joint_limit":
+            return f"a joint reaches its stop at {tr.fraction:.4g} of the move (no equilibrium beyond)"
+        if tr.status == "released":
+            return "the arm starts against a joint's stop: its release is not a followed path"
+        if tr.status != "followed":
+            return f"the transition could not be followed ({tr.message})"
+        if tr.margin < self._floor() - self._margin_tol():
+            return (f"the margin falls to {tr.margin:.6g} at {tr.margin_at:.4g} of the move, below the required "
+                    f"{self.margin:.6g}")
+        if tr.margin_end < self.margin - self._margin_tol():
+            return f"the margin at the end of the move is {tr.margin_end:.6g}, below the required {self.margin:.6g}"
+        return f"the followed branch ends {float(np.max(np.abs(tr.q - q))):.3g} rad away from the planned pose"
+
+    def _pose_of(self, ell: np.ndarray, tr: Transition, F: np.ndarray, solver: SolverInfo) -> _Pose:
+        """The arm's state at the end of the transition ``tr`` under ``(ell, F)`` (NaN margin and energy at a
+        joint's stop)."""
+        if tr.status in ("followed", "snapped", "released"):
+            p = self._pose(ell, tr.q, F, solver)
+            return _Pose(p.ell, p.q, p.tip, p.margin, p.energy, solver, tr)
+        q = np.array(tr.q, dtype=float)
+        tip = np.array(tr.tip, dtype=float)
+        ell = np.array(ell, dtype=float)
+        for v in (q, tip, ell):
+            v.setflags(write=False)
+        return _Pose(ell, q, tip, math.nan, math.nan, solver, tr)
 
     def box(self, dt: float | None = None) -> tuple[np.ndarray, np.ndarray]:
         """The bounds of a step's rest lengths ``dt`` seconds after the last step (default the controller's
@@ -488,6 +651,49 @@ class PreloadController:
                                method="ipopt", solver=d.solver, residual=None, target=target.copy(),
                                message=f"IPOPT ({self.objective}) converged, verified by the forward solve")
 
+    def evaluate(self, command, F, target, end_angle: float | None = None, *, method: str, solver: SolverInfo,
+                 planned_q: np.ndarray | None = None, message: str = "") -> PreloadStep:
+        """The step that sends ``command`` (``(n, 2)``) under the load ``F`` from the current state, toward
+        ``target``: where the arm goes along the transition (``verify``; else the forward solve), feasible when it
+        ends on the target, stable with the margin (along the whole transition when verified) and, with
+        ``planned_q``, on that configuration. The state does not move (:meth:`commit`)."""
+        ell = np.asarray(command, float).ravel()
+        target = checked_vector(target, 2, "target")
+        F = checked_vector(F, 2, "load")
+        if self.verify:
+            tr = self.transition(ell, F)
+            pose = self._pose_of(ell, tr, F, solver)
+            verified = self._safe(tr, tr.q if planned_q is None else planned_q)
+            why = "" if verified else self._unsafe_why(tr, tr.q if planned_q is None else planned_q)
+        else:
+            tr = None
+            eq = self._forward(ell, F, self.q)
+            if eq is None:
+                q = self.q.copy()
+                q.setflags(write=False)
+                pose = _Pose(ell.copy(), q, self.m_tip(q), math.nan, math.nan, solver)
+            else:
+                pose = self._pose(ell, eq.q, F, solver)
+            verified, why = False, "" if eq is not None else "the forward solve finds no equilibrium"
+            if planned_q is not None and eq is not None and float(np.max(np.abs(eq.q - planned_q))) > SAME_POSE:
+                why = "the forward solve does not land on the planned pose"
+        on_target = _distance(pose.tip, target) <= LAND_TOL * self.scale and (
+            end_angle is None or abs(float(np.sum(pose.q)) - float(end_angle)) <= LAND_TOL)
+        ok = (verified or (not self.verify and not why)) and math.isfinite(pose.margin) \
+            and pose.margin >= self.margin - self._margin_tol()
+        feasible = bool(on_target and ok)
+        text = message or f"the {method} command"
+        text += (", verified along its transition" if verified else "") if not why else f" (refused: {why})"
+        if ok and not on_target:
+            text += f"; {_distance(pose.tip, target):.6g} from the target"
+        command = ell.reshape(self.n, 2).copy()
+        return PreloadStep._of(command=command, proposal=command, q=pose.q, tip=pose.tip,
+                               end_angle=float(np.sum(pose.q)), margin=pose.margin, energy=pose.energy,
+                               tip_error=_distance(pose.tip, target), proposal_tip=pose.tip, feasible=feasible,
+                               method=method, solver=solver, residual=None, target=target.copy(), message=text,
+                               verified=verified, transition_margin=math.nan if tr is None else tr.margin,
+                               events=() if tr is None else tr.events)
+
     # ------------------------------------------------------------------ infeasible steps
     def _infeasible(self, target, F, end_angle, lo, hi, exc: TensegrityError) -> PreloadStep:
         """An infeasible step: the nearest admissible pose (the proposal; the command with ``"approach"``, or
@@ -501,28 +707,57 @@ class PreloadController:
             end_angle is None or abs(float(np.sum(near.q)) - float(end_angle)) <= 1e-6)
         if reaches or (near is not None and self.on_infeasible == "approach"):
             command = near.ell.reshape(n, 2).copy()
+            checked = ", verified along its transition" if near.verified else ""
             message = ("the nearest admissible pose reaches the target (the step's own solve failed: "
-                       f"{exc.message}), verified by the forward solve") if reaches else \
+                       f"{exc.message}){checked}") if reaches else \
                 (f"{exc.message}; approaching: the nearest admissible pose, {_distance(near.tip, target):.6g} from "
-                 "the target")
+                 f"the target{checked}")
             return PreloadStep._of(command=command, proposal=command, q=near.q, tip=near.tip,
                                    end_angle=float(np.sum(near.q)), margin=near.margin, energy=near.energy,
                                    tip_error=_distance(near.tip, target), proposal_tip=near.tip, feasible=reaches,
                                    method="nearest", solver=near.solver, residual=None, target=target.copy(),
-                                   message=message)
+                                   message=message, verified=near.verified,
+                                   transition_margin=math.nan if near.tr is None else near.tr.margin, events=())
         prop = near if near is not None else held
         why = ("" if near is not None else "; no admissible pose found, the proposal is the held value")
+        what = f"{exc.message}; holding the previous command{why}"
+        if self.on_infeasible == "hold" and near is not None and not reaches:
+            what += (f" (the target is {_distance(near.tip, target):.6g} from the nearest admissible pose: held, the "
+                     "arm does not move toward it; on_infeasible='approach' moves it as far as the rate limit "
+                     "allows)")
+        tr = held.tr
+        if tr is not None and tr.status == "snapped":
+            e = tr.snaps[0]
+            what += (f"; the held arm snaps at {e.fraction:.4g} of the step (largest joint motion "
+                     f"{e.distance:.3g} rad): q and tip are where it lands")
+        elif tr is not None and tr.status == "joint_limit":
+            what += (f"; the arm has no equilibrium under the held command and the step's load: a joint reaches its "
+                     f"stop at {tr.fraction:.4g} of the step (q is the configuration there)")
+        elif tr is not None and tr.status == "released":
+            what += "; the arm, released from its joint stop under the held command, settles at q"
+        elif tr is not None and tr.status == "followed" and min(tr.margin, tr.margin_end) < \
+                self.margin - self._margin_tol():
+            what += (f"; the held arm's margin is {tr.margin_end:.6g} at the end of the step (least "
+                     f"{tr.margin:.6g} at {tr.margin_at:.4g} of it), below the required {self.margin:.6g}")
+        elif tr is None and not math.isfinite(held.energy):
+            what += "; the held rest lengths have no equilibrium under the step's load"
+        verified = tr is not None and self._safe(tr, held.q)
         return PreloadStep._of(command=self.ell.reshape(n, 2).copy(), proposal=prop.ell.reshape(n, 2).copy(),
                                q=held.q, tip=held.tip, end_angle=float(np.sum(held.q)), margin=held.margin,
                                energy=held.energy, tip_error=_distance(held.tip, target), proposal_tip=prop.tip,
                                feasible=False, method="none", solver=solver, residual=None, target=target.copy(),
-                               message=f"{exc.message}; holding the previous command{why}")
+                               message=what, verified=verified,
+                               transition_margin=math.nan if tr is None else tr.margin,
+                               events=() if tr is None else tr.events)
 
     def hold(self, F) -> _Pose:
-        """The arm's state with the current command under the load ``F``: the current state when ``F`` is its
-        load, else the forward equilibrium from it (NaN margin and energy when there is none)."""
+        """The arm's state with the current command under the load ``F``: where the transition of holding takes
+        it (the load moving from the state's to ``F``; with ``verify=False`` the current state when ``F`` is its
+        load, else the forward equilibrium from it); NaN margin and energy where there is no equilibrium."""
         F = checked_vector(F, 2, "load")
-        if np.array_equal(F, self.state_load):
+        if self.verify:
+            return self._pose_of(self.ell, self.transition(self.ell, F), F, SolverInfo("none", 0))
+        if np.array_equal(F, self.state_load) and not self.at_stop:
             return self._pose(self.ell, self.q, F, SolverInfo("none", 0))
         eq = self._forward(self.ell, F, self.q)
         if eq is None:
@@ -568,7 +803,8 @@ class PreloadController:
         starts: the current state, IPOPT's last point ``best`` (``{"q", "preloads"}``), the held state and
         :data:`NEAREST_SPREAD` rest lengths spread in the box; a candidate counts only where the forward solve
         from the current configuration with its rest lengths lands on it (``q`` within 1e-6, stable, the
-        margin held). ``held`` (:meth:`hold`) is a candidate itself. None: no admissible pose found."""
+        margin held; with ``verify``, along its whole transition). ``held`` (:meth:`hold`) is a candidate itself.
+        None: no admissible pose found."""
         target = checked_vector(target, 2, "target")
         F = checked_vector(F, 2, "load")
         if lo is None or hi is None:
@@ -588,17 +824,25 @@ class PreloadController:
             eq = settle_under_force(self.manipulator(ell0), F, self.q)
             starts.append((self.q if eq is None else eq.q, self._springs(ell0)))
         candidates: list[_Pose] = []
-        if held is not None and math.isfinite(held.margin) and held.margin >= self.margin - 1e-9:
+        if held is not None and math.isfinite(held.margin) and held.margin >= self.margin - 1e-9 and (
+                held.tr is None or self._safe(held.tr, held.q)):
             candidates.append(held)
         for q0, ell0 in starts:
             q0 = np.clip(q0, -self.limits * 0.999, self.limits * 0.999)
             res, q, L10, L20, _, _ = solve_pose_nlp(nominal, target, F, "change", self.margin, False, lo_s, hi_s,
                                                     end_angle, q0, ell0, nearest=True)
             ell = np.column_stack([L10, L20]).ravel()
-            eq = self._forward(ell, F, self.q)
-            if eq is None or not eq.stable or float(np.max(np.abs(eq.q - q))) > 1e-6:
-                continue                    # the arm does not get there from here (another well, or none)
-            pose = self._pose(ell, eq.q, F, SolverInfo(res.status, res.iterations))
+            solver = SolverInfo(res.status, res.iterations)
+            if self.verify:
+                tr = self.transition(ell, F)
+                if not self._safe(tr, q):
+                    continue                # the arm does not get there from here along the move (a snap, ...)
+                pose = self._pose_of(ell, tr, F, solver)
+            else:
+                eq = self._forward(ell, F, self.q)
+                if eq is None or not eq.stable or float(np.max(np.abs(eq.q - q))) > 1e-6:
+                    continue                # the arm does not get there from here (another well, or none)
+                pose = self._pose(ell, eq.q, F, solver)
             if pose.margin >= self.margin - 1e-7 * max(1.0, self.margin):
                 candidates.append(pose)
         if not candidates:
@@ -636,14 +880,20 @@ class PreloadPlan(Outcome):
     end_angle, margin : ndarray (K,)
     feasible : ndarray (K,) of bool
     verified : ndarray (K,) of bool
-        The forward quasi-static solve from the previous step's configuration with this step's command lands on
-        the step's pose (``LAND_TOL max b`` on the tip, 1e-6 on the joint angles; on the target for a feasible
-        step), stable (False everywhere with ``verify=False``: not checked).
+        Each step's transition was followed (:attr:`PreloadStep.verified`): the previous command and load moving
+        linearly to this step's over the step's interval, the arm stays on its branch -- no fold, no branch point,
+        no joint limit -- with the margin all along, and ends on the step's pose (False everywhere with
+        ``verify=False``: not checked).
+    transition_margin : ndarray (K,)
+        The least stability margin along each step's transition (torque / rad; NaN where none was followed).
     method : tuple of str
-        Per step (:data:`METHODS`) ``"newton"``, ``"ipopt"``, ``"nearest"`` or ``"none"`` (held).
+        Per step (:data:`METHODS`) ``"newton"``, ``"ipopt"``, ``"nearest"``, ``"horizon"`` or ``"none"`` (held).
     status : str
-        ``"complete"``, ``"infeasible_steps"`` (some steps infeasible: see ``feasible``; approach steps that did
-        not reach the target count), ``"time_limit"`` (the steps done so far) (:attr:`STATUSES`).
+        :attr:`STATUSES`: ``"complete"``, ``"infeasible_steps"`` (some steps infeasible: see ``feasible``; approach
+        steps that did not reach the target count), ``"snapped"`` (the arm snapped in some step),
+        ``"no_equilibrium"`` (in some step the arm had no equilibrium: a joint reached its stop), ``"time_limit"``
+        (the steps done so far). With ``on_snap="stop"`` the plan ends after the first step that snapped or had no
+        equilibrium.
     steps : tuple of PreloadStep
     seconds : float
     targets : ndarray (K, 2)
@@ -654,6 +904,11 @@ class PreloadPlan(Outcome):
         The steps' instants (s; the start at 0), NaN without a time base (``null`` in :meth:`to_dict`).
     on_infeasible : str
         ``"hold"`` or ``"approach"`` (:data:`ON_INFEASIBLE`).
+    on_snap : str
+        ``"continue"`` or ``"stop"`` (:data:`ON_SNAP`).
+    start : ndarray (n,)
+        The arm's configuration at time 0 (the first step's transition starts there): ``start`` as given, or the
+        default (:class:`PreloadController`); the same whatever the ``horizon``.
     horizon : int, str or None
         None (step by step), ``N`` (a receding horizon) or ``"all"`` (:func:`plan_preloads`).
     message : str
@@ -665,6 +920,12 @@ class PreloadPlan(Outcome):
         "infeasible_steps": "some steps are infeasible (see feasible): each commands the held value (hold) or the "
                             "nearest admissible pose's rest lengths (approach), the next starting from the arm's "
                             "state under that command",
+        "snapped": "the arm snapped during some step's transition (nothing admissible avoided it): that step "
+                   "reports where it landed and the next starts from there (on_snap continue), or the plan ends "
+                   "after it (stop)",
+        "no_equilibrium": "in some step the arm had no equilibrium inside the physical range (a joint reached its "
+                          "stop): that step reports the configuration there and the next starts from it, released "
+                          "(on_snap continue), or the plan ends after it (stop)",
         "time_limit": "the time limit ran out: the steps done so far",
     }
     SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
@@ -688,17 +949,34 @@ class PreloadPlan(Outcome):
     times: np.ndarray | None = None
     on_infeasible: str = "hold"
     horizon: int | str | None = None
+    on_snap: str = "continue"
+    transition_margin: np.ndarray | None = None
+    start: np.ndarray | None = None
 
     def __post_init__(self) -> None:
         if self.times is None:
             object.__setattr__(self, "times", np.full(len(self.steps), math.nan))
+        if self.transition_margin is None:
+            object.__setattr__(self, "transition_margin", np.array([s.transition_margin for s in self.steps], float))
         freeze(self, copy=False)
 
     @property
     def message(self) -> str:
-        """A sentence: how many steps, feasible and verified."""
+        """A sentence: how many steps, feasible and verified; where the arm snapped or had no equilibrium."""
         K = len(self.steps)
         done = f"{K} step(s), {int(np.sum(self.feasible))} feasible, {int(np.sum(self.verified))} verified"
+        snaps = [k for k, s in enumerate(self.steps) if s.status == "snap"]
+        lost = [k for k, s in enumerate(self.steps) if s.status == "no_equilibrium"]
+        if snaps:
+            done += f"; the arm snapped in step(s) {', '.join(map(str, snaps))}"
+        if lost:
+            done += f"; no equilibrium (a joint at its stop) in step(s) {', '.join(map(str, lost))}"
+        if (snaps or lost) and self.on_snap == "stop" and self.status != "time_limit":
+            done += f"; stopped after step {K - 1} (on_snap='stop')"
+        held = [k for k, s in enumerate(self.steps) if s.method == "none" and s.status == "infeasible"]
+        if held and self.on_infeasible == "hold" and len(held) >= 2:
+            done += (f"; {len(held)} step(s) held (on_infeasible='hold' never moves toward a target out of reach: "
+                     "'approach' does)")
         if self.status == "time_limit":
             return f"the time limit ran out after {done}"
         return done
@@ -706,25 +984,28 @@ class PreloadPlan(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``seconds``, the per-step arrays (``commands``,
         ``proposals``, ``q``, ``tip``, ``tip_error``, ``end_angle``, ``margin`` (null: no equilibrium),
-        ``feasible``, ``verified``, ``method``), ``targets``, ``times`` (null: no time base), ``margin_required``,
-        ``objective``, ``on_infeasible``, ``horizon`` and ``steps`` (:meth:`PreloadStep.to_dict`)."""
+        ``feasible``, ``verified``, ``transition_margin`` (null: none followed), ``method``), ``targets``, ``times``
+        (null: no time base), ``margin_required``, ``objective``, ``on_infeasible``, ``on_snap``, ``horizon``,
+        ``start`` (the configuration at time 0) and ``steps`` (:meth:`PreloadStep.to_dict`)."""
         return {**self.outcome(), "seconds": number(self.seconds),
                 "commands": [[numbers(r) for r in s] for s in self.commands],
                 "proposals": [[numbers(r) for r in s] for s in self.proposals],
                 "q": [numbers(r) for r in self.q], "tip": [numbers(r) for r in self.tip],
                 "tip_error": numbers(self.tip_error), "end_angle": numbers(self.end_angle),
                 "margin": [nullable(v) for v in self.margin], "feasible": [bool(v) for v in self.feasible],
-                "verified": [bool(v) for v in self.verified], "method": list(self.method),
+                "verified": [bool(v) for v in self.verified],
+                "transition_margin": [nullable(v) for v in self.transition_margin], "method": list(self.method),
                 "targets": [numbers(r) for r in self.targets], "times": [nullable(t) for t in self.times],
                 "margin_required": number(self.margin_required), "objective": self.objective,
-                "on_infeasible": self.on_infeasible, "horizon": self.horizon,
+                "on_infeasible": self.on_infeasible, "on_snap": self.on_snap, "horizon": self.horizon,
+                "start": None if self.start is None else numbers(self.start),
                 "steps": [s.to_dict() for s in self.steps]}
 
 
 def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times=None, dt: float | None = None,
                   rest_lengths0=None, bounds=None, rate_limit=None, margin: float = 1e-3, objective: str = "change",
                   weights=None, start=None, on_infeasible: str = "hold", horizon: int | str | None = None,
-                  verify: bool = True, timeout: float | None = None,
+                  verify: bool = True, on_snap: str = "continue", timeout: float | None = None,
                   progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     """Rest lengths for a trajectory of tip poses, on one stable branch (module docstring).
 
@@ -758,7 +1039,14 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
         objective), the first applied; ``"all"``: the whole trajectory as one problem (:mod:`.horizon`). Its steps
         have ``method`` ``"horizon"`` (``"none"``: held); ``objective`` must be ``"change"``.
     verify : bool
-        Verify every step by the forward quasi-static solve (default).
+        Verify every step along its transition (default): the previous command and load moving linearly to the
+        step's over its interval (:mod:`~tensegrity_opt.analyses.paths.transition`), a command is adopted only
+        where the arm follows its branch to the step's pose with the margin all along; False: the end pose only,
+        nothing verified.
+    on_snap : {"continue", "stop"}
+        When the arm snaps during a step (nothing admissible avoids it) or has no equilibrium (a joint reaches its
+        stop): ``"continue"`` (default) plans the next steps from where it went, ``"stop"`` ends the plan after
+        that step (:data:`ON_SNAP`).
     timeout : float, optional
         Seconds; on expiry the steps done are returned with ``status="time_limit"``.
     progress : callable(done, total), optional
@@ -793,29 +1081,27 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
         if objective != "change":
             raise InvalidParameterError("a horizon plan minimises the tip error and the actuators' motion: objective "
                                         f"must be 'change', got {objective!r}", field="objective")
+    if on_snap not in ON_SNAP:
+        raise InvalidParameterError(f"on_snap must be one of {ON_SNAP}, got {on_snap!r}", field="on_snap")
     ctl = PreloadController(m, start, rest_lengths0=rest_lengths0, load=Ls[0], bounds=bounds, rate_limit=rate_limit,
-                            margin=margin, objective=objective, weights=weights, on_infeasible=on_infeasible)
+                            margin=margin, objective=objective, weights=weights, on_infeasible=on_infeasible,
+                            verify=verify)
+    q_start = ctl.q.copy()
     t0 = time.perf_counter()
     steps: list[PreloadStep] = []
-    verified: list[bool] = []
     status = "complete"
     with time_limit(timeout):
         if horizon is not None:
             from .horizon import horizon_steps
 
-            done: list[tuple[PreloadStep, bool]] = []
             try:
-                horizon_steps(ctl, T, Ls, A, h_steps, horizon, done, PreloadStep._of, verify=verify,
-                              progress=progress)
+                horizon_steps(ctl, T, Ls, A, h_steps, horizon, steps, stop=on_snap == "stop", progress=progress)
             except TimeLimitError:
                 status = "time_limit"
-            steps = [st for st, _ in done]
-            verified = [v for _, v in done]
         for k in range(K if horizon is None else 0):
             if expired():
                 status = "time_limit"
                 break
-            q_prev = ctl.q.copy()
             try:
                 st = ctl.step(T[k], Ls[k], None if A is None or math.isnan(A[k]) else float(A[k]),
                               dt=None if math.isnan(h_steps[k]) else float(h_steps[k]))
@@ -823,12 +1109,15 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
                 status = "time_limit"
                 break
             steps.append(st)
-            verified.append(bool(verify) and _lands(ctl, st, Ls[k], q_prev))
             if progress is not None:
                 progress(k + 1, K)
+            if on_snap == "stop" and st.status in ("snap", "no_equilibrium"):
+                break
     n = m.n
-    if status == "complete" and not all(s.feasible for s in steps):
-        status = "infeasible_steps"
+    if status == "complete":
+        kinds = {s.status for s in steps}
+        status = "no_equilibrium" if "no_equilibrium" in kinds else "snapped" if "snap" in kinds else \
+            "infeasible_steps" if not all(s.feasible for s in steps) else "complete"
     P = len(steps)
 
     def arr(get, shape):
@@ -838,22 +1127,8 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
                        q=arr(lambda s: s.q, (n,)), tip=arr(lambda s: s.tip, (2,)),
                        tip_error=arr(lambda s: s.tip_error, ()), end_angle=arr(lambda s: s.end_angle, ()),
                        margin=arr(lambda s: s.margin, ()), feasible=np.array([s.feasible for s in steps], dtype=bool),
-                       verified=np.array(verified, dtype=bool), method=tuple(s.method for s in steps), status=status,
+                       verified=np.array([s.verified for s in steps], dtype=bool),
+                       method=tuple(s.method for s in steps), status=status,
                        steps=tuple(steps), seconds=time.perf_counter() - t0, targets=T[:P].copy(),
                        margin_required=float(margin), objective=objective, times=t_steps[:P].copy(),
-                       on_infeasible=on_infeasible, horizon=horizon)
-
-
-def _lands(ctl: PreloadController, st: PreloadStep, F: np.ndarray, q_prev: np.ndarray) -> bool:
-    """The forward quasi-static solve from the previous configuration with the step's command lands on the
-    step's pose (on the target for a feasible step), stable."""
-    try:
-        eq = ctl._forward(st.command.ravel(), F, q_prev)
-    except TimeLimitError:
-        return False                # out of time: not verified (the plan stops before its next step)
-    if eq is None:
-        return False
-    tol = LAND_TOL * ctl.scale
-    return bool(eq.stable) and float(np.max(np.abs(eq.tip - st.tip))) <= tol \
-        and float(np.max(np.abs(eq.q - st.q))) <= 1e-6 \
-        and (not st.feasible or float(np.max(np.abs(eq.tip - st.target))) <= tol)
+                       on_infeasible=on_infeasible, horizon=horizon, on_snap=on_snap, start=q_start)

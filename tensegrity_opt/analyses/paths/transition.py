@@ -58,7 +58,7 @@ from .descent import ArmState, Descent, state_at
 from .problem import LIMIT_MARGIN, PathProblem
 
 __all__ = ["transition", "Transition", "Move", "SimulationEvent", "EVENT_KINDS", "PERTURBATION",
-           "BRANCH_POINT_OFFSET", "MAX_EVENTS_PER_STEP", "MAX_STEP", "release", "chain_with"]
+           "BRANCH_POINT_OFFSET", "MAX_EVENTS_PER_STEP", "MAX_STEP", "release", "released", "follow", "chain_with"]
 
 #: Kinds of :class:`SimulationEvent`: a snap at a fold, a snap (or a continuous buckling, then with
 #: ``energy_released`` near 0) at a branch point, the end at a joint's range bound.
@@ -223,6 +223,7 @@ class Move:
         self.watch = bool(watch_margin)
         self.events: list[SimulationEvent] = []
         self.least: tuple[float, float] = (math.inf, math.nan)
+        self.end_margin = math.nan
         self.fraction = 0.0
         self.limit_q: np.ndarray | None = None
 
@@ -306,7 +307,8 @@ class Move:
         mk = chain_with(self.m, P)
         ctl = Control.load((1.0, 0.0), base=F) if not self.held else Control.displacement((1.0, 0.0))
         prob = PathProblem(mk, ctl, state.q, state.force)
-        self._keep(margin_at(prob, prob.point.pack(q=state.q, F=state.force, t=0.0)), s)
+        self.end_margin = margin_at(prob, prob.point.pack(q=state.q, F=state.force, t=0.0))
+        self._keep(self.end_margin, s)
 
     def _watch(self, prob: PathProblem, br, lost, s0: float, r: float) -> None:
         """The least margin of the stable stretch of ``br`` (the sub-move from fraction ``s0``, of length ``r``):
@@ -315,6 +317,8 @@ class Move:
         last = len(br) - 1 if lost is None else int(lost.index)
         X = [at.pack(q=br.q[i], F=br.force[i], t=br.t[i]) for i in range(last + 1)]
         mu = np.array([margin_at(prob, x) for x in X])
+        if lost is None and br.status == "t_max":
+            self.end_margin = float(mu[-1])
         if lost is not None:                        # the stability loss itself: the margin reaches zero there
             self._keep(0.0, s0 + r * float(lost.t))
         i = int(np.argmin(mu))
@@ -443,8 +447,8 @@ class Transition(Outcome):
     status : str
         :attr:`STATUSES`: ``"followed"`` (the arm stayed on its branch, stable, to the end of the move),
         ``"snapped"`` (it lost its branch and snapped, once or more, and ends on a stable equilibrium),
-        ``"joint_limit"`` (a joint reached its range bound: no equilibrium beyond), ``"failed"``,
-        ``"time_limit"``.
+        ``"joint_limit"`` (a joint reached its range bound: no equilibrium beyond), ``"released"`` (it started
+        against a joint's stop: :func:`released`), ``"failed"``, ``"time_limit"``.
     message : str
     q : ndarray (n,)
         The arm at the end of the move; at a joint limit, the configuration at the bound (no equilibrium).
@@ -460,6 +464,8 @@ class Transition(Outcome):
         arm snapped: stability is lost there), located (module docstring).
     margin_at : float
         The fraction where it is least.
+    margin_end : float
+        The margin of the end state (NaN at a joint limit, and for a release: not measured).
     fraction : float
         Where the move ended: 1, or the fraction of the joint limit (or of the failure).
     events : tuple of SimulationEvent
@@ -472,6 +478,8 @@ class Transition(Outcome):
                    "ends on a stable equilibrium under the final inputs",
         "joint_limit": "a joint reached its range bound, on the branch or during a snap: no equilibrium beyond "
                        "inside the physical range; q is the configuration at the bound",
+        "released": "the arm started against a joint's stop (no equilibrium there) and, released under the final "
+                    "inputs, settled on a stable equilibrium by descent (not a followed path)",
         "failed": "the branch or a snap could not be computed (message says where)",
         "time_limit": "the time limit ran out",
     }
@@ -486,6 +494,7 @@ class Transition(Outcome):
     stable: bool
     margin: float
     margin_at: float
+    margin_end: float
     fraction: float
     events: tuple
 
@@ -499,12 +508,13 @@ class Transition(Outcome):
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``q``, ``force`` ``{fx, fy}``, ``tip``, ``energy``,
-        ``stable``, ``margin`` (null: none measured), ``margin_at``, ``fraction``, ``events``."""
+        ``stable``, ``margin`` (null: none measured), ``margin_at``, ``margin_end``, ``fraction``, ``events``."""
         return {**self.outcome(), "q": numbers(self.q), "force": {"fx": number(self.force[0]),
                                                                   "fy": number(self.force[1])},
                 "tip": numbers(self.tip), "energy": nullable(self.energy), "stable": bool(self.stable),
                 "margin": nullable(self.margin), "margin_at": nullable(self.margin_at),
-                "fraction": number(self.fraction), "events": [e.to_dict() for e in self.events]}
+                "margin_end": nullable(self.margin_end), "fraction": number(self.fraction),
+                "events": [e.to_dict() for e in self.events]}
 
 
 def start_state(m: Manipulator, q0, load, *, held: bool = False, field: str = "start") -> ArmState:
@@ -614,7 +624,7 @@ def follow(m: Manipulator, state: ArmState, P0, P1, F0, F1, *, perturbation: flo
                           ("the arm snapped: " + "; ".join(e.message for e in events)) if snapped else
                           f"the arm followed its branch to the end of the move, least margin {least:.6g}",
                           end.q.copy(), np.asarray(end.force, float).copy(), np.asarray(end.tip, float).copy(),
-                          float(end.energy), bool(end.stable), least, at, 1.0, events)
+                          float(end.energy), bool(end.stable), least, at, mv.end_margin, 1.0, events)
     s = mv.fraction
     P, F, _ = mv.inputs(s)
     q = mv.limit_q if mv.limit_q is not None else state.q
@@ -622,4 +632,36 @@ def follow(m: Manipulator, state: ArmState, P0, P1, F0, F1, *, perturbation: flo
     E = float(mk.energy(q))
     status = "joint_limit" if status == "joint_limit" else ("time_limit" if status == "time_limit" else "failed")
     return Transition(status, message, np.asarray(q, float).copy(), np.asarray(F, float).copy(), mk.tip(q), E,
-                      False, least, at, float(s), events)
+                      False, least, at, math.nan, float(s), events)
+
+
+def released(m: Manipulator, q: np.ndarray, P1, F1, *, step: int = 0,
+             perturbation: float = PERTURBATION) -> Transition:
+    """The :class:`Transition` of an arm that starts against a joint's stop at ``q`` (no equilibrium there): its
+    release under the final inputs ``(P1, F1)`` (:func:`release`): ``"released"`` where it settles on a stable
+    equilibrium, ``"joint_limit"`` where the descent reaches a bound again (``q`` there). The model has no
+    equilibrium along the way, so nothing is followed and no margin is measured (NaN)."""
+    P1 = np.asarray(P1, float)
+    F1 = np.asarray(F1, float)
+    mk = chain_with(m, P1)
+    try:
+        outcome, res = release(mk, q, F1, perturbation=perturbation)
+    except TimeLimitError:
+        outcome, res = "time_limit", q
+    if outcome == "landed":
+        return Transition("released", "the arm, released from its joint stop under the step's inputs, settled on a "
+                          "stable equilibrium (not a followed path)", res.q.copy(), F1.copy(),
+                          np.asarray(res.tip, float).copy(), float(res.energy), True, math.nan, math.nan, math.nan,
+                          1.0, ())
+    qe = np.asarray(res, float).copy()
+    if outcome == "joint_limit":
+        ev = SimulationEvent("joint_limit", "the released arm reaches a joint's stop again: no equilibrium under the "
+                             "step's inputs", "joint_limit", int(step), 1.0, P1.copy(), F1.copy(), None,
+                             np.asarray(q, float).copy(), None, F1.copy(), None, mk.tip(q), None,
+                             float(mk.energy(q)), None, None, None, None, None, 0, "limit")
+        return Transition("joint_limit", "released from its joint stop under the step's inputs, the arm reaches a "
+                          "stop again: no equilibrium", qe, F1.copy(), mk.tip(qe), float(mk.energy(qe)), False,
+                          math.nan, math.nan, math.nan, 1.0, (ev,))
+    status = "time_limit" if outcome == "time_limit" else "failed"
+    return Transition(status, "the release from the joint stop did not settle", qe, F1.copy(), mk.tip(qe),
+                      float(mk.energy(qe)), False, math.nan, math.nan, math.nan, 1.0, ())

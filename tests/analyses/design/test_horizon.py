@@ -107,7 +107,10 @@ def test_an_unreachable_jump_approach_catches_up_at_the_full_rate_hold_stays():
     targets = np.array([tip0] + [tip0 + np.array([-0.1, 0.4])] * 5)
     rate = 0.03
     near = plan_preloads(m, targets, rate_limit=rate, dt=1.0, horizon=2, on_infeasible="approach")
-    assert near.method == ("horizon",) * 6 and near.verified.all() and not near.feasible[1] and near.feasible[-1]
+    # step 0 (the start pose) is kept on target by the step-by-step answer (the window would leave it a little off
+    # to be nearer the jump): a step that step by step reaches stays on target
+    assert near.method == ("newton",) + ("horizon",) * 5 and near.tip_error[0] <= 1e-9
+    assert near.verified.all() and not near.feasible[1] and near.feasible[-1]
     assert near.status == "infeasible_steps" and not near.success
     moves = np.abs(np.diff(near.commands, axis=0)).max(axis=(1, 2))
     assert moves[0] == pytest.approx(rate, rel=1e-6)                      # as fast as allowed
