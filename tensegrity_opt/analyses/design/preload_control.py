@@ -262,7 +262,7 @@ class PreloadStep(Outcome):
 
     @property
     def status(self) -> str:
-        if any(e.kind == "joint_limit" for e in self.events):
+        if any(e.status == "joint_limit" for e in self.events):     # on the branch or in a snap's descent
             return "no_equilibrium"
         if any(e.kind in ("snap", "bifurcation") for e in self.events):
             return "snap"
