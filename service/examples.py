@@ -341,10 +341,13 @@ PLAN = {'success': True,
  'margin': [0.957768, 0.954612, 0.951496, 0.948326],
  'feasible': [True, True, True, True],
  'verified': [True, True, True, True],
+ 'transition_margin': [0.957768, 0.954612, 0.951496, 0.948326],
  'method': ['ipopt', 'newton', 'newton', 'newton'],
  'targets': [[7.6, 0.5], [7.5, 0.75], [7.4, 1.0], [7.3, 1.25]],
  'times': [None, None, None, None],
- 'on_infeasible': 'hold'}
+ 'on_infeasible': 'hold',
+ 'on_snap': 'continue',
+ 'start': [-0.136046, -0.096348, -0.057394, -0.019054]}
 
 #: The simulation of SIMULATION_REQUEST_EXAMPLE (a load cycle on three bistable segments), rounded.
 SIMULATION = {'success': True,

@@ -20,7 +20,7 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Discriminator, Fiel
 
 import tensegrity_opt as to
 from tensegrity_opt.analyses.design.horizon import HORIZONS
-from tensegrity_opt.analyses.design.preload_control import METHODS, ON_INFEASIBLE
+from tensegrity_opt.analyses.design.preload_control import METHODS, ON_INFEASIBLE, ON_SNAP
 from tensegrity_opt.analyses.design.preloads import OBJECTIVES
 from tensegrity_opt.analyses.paths.simulation import EVENT_KINDS as SIMULATION_EVENT_KINDS
 from tensegrity_opt.analyses.paths.simulation import Simulation, SimulationEvent
@@ -161,8 +161,15 @@ class _PlanFields(BaseModel):
                           "between steps as constraints; tip error and actuator motion as objective), the first "
                           "applied; all: the whole trajectory as one problem. Needs `objective: change`; its steps' "
                           "method is horizon (none: held)")
-    verify: bool = Field(True, description="verify every step by the forward quasi-static solve from the previous "
-                                           "step's configuration with its command (`verified`)")
+    verify: bool = Field(True, description="verify every step along its transition (`verified`): the previous "
+                                           "command and load moving linearly to the step's over its interval, a "
+                                           "command is sent only where the arm follows its branch to the step's "
+                                           "pose, stable with the margin all along (no fold, branch point or joint "
+                                           "stop on the way); false: the end pose only, nothing verified")
+    on_snap: Literal[ON_SNAP] = Field(
+        "continue", description="when the arm snaps during a step (nothing admissible avoids it) or has no "
+                                "equilibrium (a joint reaches its stop): continue (the next steps start from where "
+                                "it went) or stop (the plan ends after that step)")
 
 
 PLAN_REQUEST_EXAMPLE = {"manipulator": PAPER_CHAIN, "targets": [[7.6, 0.5], [7.5, 0.75], [7.4, 1.0], [7.3, 1.25]],
@@ -173,6 +180,37 @@ class PlanRequest(_PlanFields):
     """Rest lengths for a trajectory of tip positions, on one stable branch (`plan_preloads`)."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [PLAN_REQUEST_EXAMPLE]})
+
+
+class SimulationEventOut(outcome_model(SimulationEvent)):
+    """Something that happened during a move of the inputs (a simulation's step from sample `step` to `step + 1`,
+    a plan's step `step` from the previous command to its own), at `time = step + fraction`: where the arm went
+    (`status`) and what it did there."""
+
+    kind: Literal[SIMULATION_EVENT_KINDS] = Field(
+        description="snap (the followed branch folded: the arm jumps), bifurcation (lost stability at a branch "
+                    "point), joint_limit (a joint reached its range bound: the end)")
+    step: int
+    fraction: float = Field(description="where in the step (0 at sample step, 1 at step + 1)")
+    time: float = Field(description="step + fraction")
+    preloads: list[list[float]] = Field(description="the rest lengths [L1_0, L2_0] per segment there")
+    load: list[float] | None = Field(description="the dead tip load there (tip free)")
+    target: list[float] | None = Field(description="the tip deflection there (tip held)")
+    q_before: list[float] = Field(description="the configuration at the fold (branch point, joint limit)")
+    q_after: list[float] | None = Field(description="the landing configuration (null: a joint limit, or the descent "
+                                                    "ran into a joint's bound)")
+    force_before: list[float] | None
+    force_after: list[float] | None
+    tip_before: list[float] | None
+    tip_after: list[float] | None
+    energy_before: float | None
+    energy_after: float | None
+    potential_before: float | None = Field(description="E - F . tip (free) or E (held) at the fold")
+    potential_after: float | None
+    energy_released: float | None = Field(description="potential_before - potential_after (> 0 for a snap)")
+    null_vector: list[float] | None = Field(description="the snapping mode (largest entry +1)")
+    direction: int = Field(description="the sign of null_vector the descent left along (0: joint limit)")
+    method: str = Field(description="moore_spence, test_function or limit")
 
 
 class PlanStepOut(outcome_model(to.results.PreloadStep)):
@@ -197,6 +235,15 @@ class PlanStepOut(outcome_model(to.results.PreloadStep)):
                                            "the failed solve's, or none) and iterations")
     residual: float | None = Field(description="max-norm of the equilibrium and pose equations (Newton steps)")
     target: list[float]
+    verified: bool = Field(description="the step's transition was followed: no fold, branch point or joint stop, the "
+                                       "margin held all along, and the arm ends on the step's pose (false with "
+                                       "`verify: false`, and for a step that starts against a joint's stop)")
+    transition_margin: float | None = Field(description="the least stability margin along the step's transition "
+                                                        "(torque / rad; 0 where the arm snapped; null: none "
+                                                        "followed)")
+    events: list[SimulationEventOut] = Field(
+        description="what happened during the transition: snaps (with the landing q_after, tip_after) and a joint "
+                    "reaching its stop; `step` is the step's index, `fraction` where in its move")
 
 
 class PlanOut(outcome_model(to.PreloadPlan)):
@@ -216,9 +263,12 @@ class PlanOut(outcome_model(to.PreloadPlan)):
                                                    "equilibrium under the held command)")
     feasible: list[bool] = Field(description="rest lengths meeting every requirement put the tip on the target "
                                              "(false: the command held, or approaching with on_infeasible approach)")
-    verified: list[bool] = Field(description="the forward solve from the previous step's configuration with the "
-                                             "step's command lands on the step's pose (the target when feasible), "
-                                             "stable (with `verify: false` no solve runs: false everywhere)")
+    verified: list[bool] = Field(description="each step's transition was followed (the previous command and load "
+                                             "moving linearly to the step's): no fold, branch point or joint stop, "
+                                             "the margin held all along, the arm ends on the step's pose (with "
+                                             "`verify: false` nothing is followed: false everywhere)")
+    transition_margin: list[float | None] = Field(description="the least stability margin along each step's "
+                                                              "transition (torque / rad; null: none followed)")
     method: list[Literal[METHODS]] = Field(description="how each step's command was found")
     targets: list[list[float]] = Field(description="the targets of the steps done")
     times: list[float | None] = Field(description="the instants of the steps done (seconds; the start at 0); null "
@@ -226,7 +276,10 @@ class PlanOut(outcome_model(to.PreloadPlan)):
     margin_required: float = Field(description="the stability margin asked for (torque / rad)")
     objective: Literal["change", "margin", "energy"] = Field(description="how the redundancy was resolved")
     on_infeasible: Literal[ON_INFEASIBLE] = Field(description="what the infeasible steps commanded")
+    on_snap: Literal[ON_SNAP] = Field(description="what the plan did after a snap or a step without equilibrium")
     horizon: int | Literal[HORIZONS] | None = Field(description="null (step by step), N (receding) or all")
+    start: list[float] | None = Field(description="the arm's configuration at time 0 (rad): where the first step's "
+                                                  "transition starts")
     steps: list[PlanStepOut] = Field(description="every step in full (why an infeasible step failed: `message`)")
 
 
@@ -279,36 +332,6 @@ class SimulationRequest(_SimulationFields):
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
         "examples": [SIMULATION_REQUEST_EXAMPLE]})
-
-
-class SimulationEventOut(outcome_model(SimulationEvent)):
-    """Something that happened between sample `step` and `step + 1`, at `time = step + fraction`: where the arm
-    went (`status`) and what it did there."""
-
-    kind: Literal[SIMULATION_EVENT_KINDS] = Field(
-        description="snap (the followed branch folded: the arm jumps), bifurcation (lost stability at a branch "
-                    "point), joint_limit (a joint reached its range bound: the end)")
-    step: int
-    fraction: float = Field(description="where in the step (0 at sample step, 1 at step + 1)")
-    time: float = Field(description="step + fraction")
-    preloads: list[list[float]] = Field(description="the rest lengths [L1_0, L2_0] per segment there")
-    load: list[float] | None = Field(description="the dead tip load there (tip free)")
-    target: list[float] | None = Field(description="the tip deflection there (tip held)")
-    q_before: list[float] = Field(description="the configuration at the fold (branch point, joint limit)")
-    q_after: list[float] | None = Field(description="the landing configuration (null: a joint limit, or the descent "
-                                                    "ran into a joint's bound)")
-    force_before: list[float] | None
-    force_after: list[float] | None
-    tip_before: list[float] | None
-    tip_after: list[float] | None
-    energy_before: float | None
-    energy_after: float | None
-    potential_before: float | None = Field(description="E - F . tip (free) or E (held) at the fold")
-    potential_after: float | None
-    energy_released: float | None = Field(description="potential_before - potential_after (> 0 for a snap)")
-    null_vector: list[float] | None = Field(description="the snapping mode (largest entry +1)")
-    direction: int = Field(description="the sign of null_vector the descent left along (0: joint limit)")
-    method: str = Field(description="moore_spence, test_function or limit")
 
 
 class SimulationOut(outcome_model(Simulation)):

@@ -128,6 +128,9 @@ class InverseOpen(_Open):
         "hold", description="what an infeasible step commands: `hold` the previous command, `approach` the rest "
                             "lengths of the admissible pose nearest to the target (within the bounds, the rate limit "
                             "and the margin)")
+    verify: bool = Field(True, description="verify every step along its transition (`verified`): a command is sent "
+                                           "only where the arm follows its branch from the last step's pose to the "
+                                           "step's, stable with the margin all along; false: the end pose only")
 
 
 #: The open model of each mode.

@@ -39,7 +39,7 @@ import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
 from ...analyses.design.load_capacity import load_capacity
-from ...analyses.design.preload_control import ON_INFEASIBLE, PreloadPlan, plan_preloads
+from ...analyses.design.preload_control import ON_INFEASIBLE, ON_SNAP, PreloadPlan, plan_preloads
 from ...analyses.design.preloads import OBJECTIVES
 from ...analyses.design.stiffness_shaping import preloads_for_stiffness
 from ...analyses.paths.simulation import Simulation, simulate
@@ -222,7 +222,7 @@ def plan_from_args(args: argparse.Namespace, m: Manipulator,
                          rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
                          start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
                          on_infeasible=args.on_infeasible, horizon=args.horizon, verify=not args.no_verify,
-                         timeout=args.timeout, progress=progress)
+                         on_snap=args.on_snap, timeout=args.timeout, progress=progress)
 
 
 def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
@@ -317,7 +317,11 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
                    help="plan N steps at a time as one IPOPT problem (receding horizon: the first applied), or all "
                         "the trajectory at once; default step by step")
     g.add_argument("--no-verify", action="store_true",
-                   help="skip the forward quasi-static solve that verifies each step")
+                   help="do not follow each step's transition (the previous command and load moving linearly to the "
+                        "step's): the end pose only, nothing verified")
+    g.add_argument("--on-snap", choices=ON_SNAP, default="continue",
+                   help="when the arm snaps during a step (nothing admissible avoids it) or has no equilibrium (a "
+                        "joint reaches its stop): continue from where it went, or stop the plan after that step")
     g.add_argument("--timeout", type=positive_float, default=None,
                    help="seconds; then the steps done so far (status time_limit)")
 
@@ -362,15 +366,25 @@ def _cmd_plan(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
              f"{int(np.sum(p.feasible))} feasible, {int(np.sum(p.verified))} verified, status {p.status} "
              f"({p.seconds:.2f} s)",
              f"{'#':>4} " + (f"{'t (s)':>9} " if timed else "") + f"{'target x':>9} {'target y':>9} {'tip x':>9} "
-             f"{'tip y':>9} {'tip err.':>9} {'margin':>9} {'feas.':>5} {'verif.':>6} {'method':>7}  command "
-             "[L1_0, L2_0] per segment"]
+             f"{'tip y':>9} {'tip err.':>9} {'margin':>9} {'on move':>9} {'status':>14} {'verif.':>6} {'method':>7}  "
+             "command [L1_0, L2_0] per segment"]
     for k in range(K):
         mg = "-" if not math.isfinite(p.margin[k]) else f"{p.margin[k]:.5f}"
+        mv = "-" if not math.isfinite(p.transition_margin[k]) else f"{p.transition_margin[k]:.5f}"
         rl = " ".join(f"[{a:.4f}, {b:.4f}]" for a, b in p.commands[k])
         lines.append(f"{k:>4} " + (f"{p.times[k]:>9.4g} " if timed else "")
                      + f"{p.targets[k, 0]:>9.5f} {p.targets[k, 1]:>9.5f} {p.tip[k, 0]:>9.5f} {p.tip[k, 1]:>9.5f} "
-                     f"{p.tip_error[k]:>9.2e} {mg:>9} {'yes' if p.feasible[k] else 'no':>5} "
+                     f"{p.tip_error[k]:>9.2e} {mg:>9} {mv:>9} {p.steps[k].status:>14} "
                      f"{'yes' if p.verified[k] else 'no':>6} {p.method[k]:>7}  {rl}")
+    for k, st in enumerate(p.steps):
+        for e in st.events:
+            if e.q_after is not None:
+                lines.append(f"step {k}: the arm snaps at {e.fraction:.4g} of its move (largest joint motion "
+                             f"{e.distance:.3g} rad) and lands with the tip at ({e.tip_after[0]:.6g}, "
+                             f"{e.tip_after[1]:.6g})")
+            else:
+                lines.append(f"step {k}: a joint reaches its stop at {e.fraction:.4g} of its move: no equilibrium")
+    lines.append(p.message)
     return p.to_dict, "\n".join(lines)
 
 

@@ -64,7 +64,8 @@ def test_plan_with_a_horizon_is_the_library_plan(capsys):
     want = to.plan_preloads(M, np.linspace(tip0, tip0 + [-0.1, 0.3], 3), rate_limit=0.05, dt=1.0, horizon=2,
                             on_infeasible="approach")
     assert same(got, json.loads(json.dumps(want.to_dict())))
-    assert got["horizon"] == 2 and set(got["method"]) <= {"horizon", "none"}
+    # the window's steps, or (where one is not safe or is worse) the step-by-step answer from the same state
+    assert got["horizon"] == 2 and "horizon" in got["method"]
     assert main(["plan", *line, "--horizon", "all"]) == 0
     assert "horizon all" in capsys.readouterr().out
     for bad in ("0", "some"):

@@ -141,10 +141,12 @@ from .plan_out import PlanOut
 from .plan_out_method_item import PlanOutMethodItem
 from .plan_out_objective import PlanOutObjective
 from .plan_out_on_infeasible import PlanOutOnInfeasible
+from .plan_out_on_snap import PlanOutOnSnap
 from .plan_out_status import PlanOutStatus
 from .plan_request import PlanRequest
 from .plan_request_objective import PlanRequestObjective
 from .plan_request_on_infeasible import PlanRequestOnInfeasible
+from .plan_request_on_snap import PlanRequestOnSnap
 from .plan_step_out import PlanStepOut
 from .plan_step_out_method import PlanStepOutMethod
 from .plan_step_out_status import PlanStepOutStatus
@@ -181,6 +183,7 @@ from .plot_plan_request import PlotPlanRequest
 from .plot_plan_request_format_type_0 import PlotPlanRequestFormatType0
 from .plot_plan_request_objective import PlotPlanRequestObjective
 from .plot_plan_request_on_infeasible import PlotPlanRequestOnInfeasible
+from .plot_plan_request_on_snap import PlotPlanRequestOnSnap
 from .plot_shapes_request import PlotShapesRequest
 from .plot_shapes_request_format_type_0 import PlotShapesRequestFormatType0
 from .plot_simulation_request import PlotSimulationRequest
@@ -397,10 +400,12 @@ __all__ = (
     "PlanOutMethodItem",
     "PlanOutObjective",
     "PlanOutOnInfeasible",
+    "PlanOutOnSnap",
     "PlanOutStatus",
     "PlanRequest",
     "PlanRequestObjective",
     "PlanRequestOnInfeasible",
+    "PlanRequestOnSnap",
     "PlanStepOut",
     "PlanStepOutMethod",
     "PlanStepOutStatus",
@@ -437,6 +442,7 @@ __all__ = (
     "PlotPlanRequestFormatType0",
     "PlotPlanRequestObjective",
     "PlotPlanRequestOnInfeasible",
+    "PlotPlanRequestOnSnap",
     "PlotShapesRequest",
     "PlotShapesRequestFormatType0",
     "PlotSimulationRequest",

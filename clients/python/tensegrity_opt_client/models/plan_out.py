@@ -9,6 +9,7 @@ from attrs import field as _attrs_field
 from ..models.plan_out_method_item import PlanOutMethodItem
 from ..models.plan_out_objective import PlanOutObjective
 from ..models.plan_out_on_infeasible import PlanOutOnInfeasible
+from ..models.plan_out_on_snap import PlanOutOnSnap
 from ..models.plan_out_status import PlanOutStatus
 
 if TYPE_CHECKING:
@@ -36,22 +37,31 @@ class PlanOut:
         method (list[PlanOutMethodItem]): how each step's command was found
         objective (PlanOutObjective): how the redundancy was resolved
         on_infeasible (PlanOutOnInfeasible): what the infeasible steps commanded
+        on_snap (PlanOutOnSnap): what the plan did after a snap or a step without equilibrium
         proposals (list[list[list[float]]]): the controller's proposal per step (the commands, except on held steps: the
             nearest admissible pose's)
         q (list[list[float]]): the arm's configuration under each command (rad)
         seconds (float): wall time of the plan (s)
+        start (list[float] | None): the arm's configuration at time 0 (rad): where the first step's transition starts
         status (PlanOutStatus): `complete`: every step is feasible; `infeasible_steps`: some steps are infeasible (see
             feasible): each commands the held value (hold) or the nearest admissible pose's rest lengths (approach), the
-            next starting from the arm's state under that command; `time_limit`: the time limit ran out: the steps done so
-            far
+            next starting from the arm's state under that command; `snapped`: the arm snapped during some step's transition
+            (nothing admissible avoided it): that step reports where it landed and the next starts from there (on_snap
+            continue), or the plan ends after it (stop); `no_equilibrium`: in some step the arm had no equilibrium inside
+            the physical range (a joint reached its stop): that step reports the configuration there and the next starts
+            from it, released (on_snap continue), or the plan ends after it (stop); `time_limit`: the time limit ran out:
+            the steps done so far
         steps (list[PlanStepOut]): every step in full (why an infeasible step failed: `message`)
         success (bool): whether it worked: `status` is one of complete
         targets (list[list[float]]): the targets of the steps done
         times (list[float | None]): the instants of the steps done (seconds; the start at 0); null without a time base
         tip (list[list[float]]): the arm's tip under each command (the target when feasible)
         tip_error (list[float]): |tip - target| per step (length units)
-        verified (list[bool]): the forward solve from the previous step's configuration with the step's command lands on
-            the step's pose (the target when feasible), stable (with `verify: false` no solve runs: false everywhere)
+        transition_margin (list[float | None]): the least stability margin along each step's transition (torque / rad;
+            null: none followed)
+        verified (list[bool]): each step's transition was followed (the previous command and load moving linearly to the
+            step's): no fold, branch point or joint stop, the margin held all along, the arm ends on the step's pose (with
+            `verify: false` nothing is followed: false everywhere)
     """
 
     commands: list[list[list[float]]]
@@ -64,9 +74,11 @@ class PlanOut:
     method: list[PlanOutMethodItem]
     objective: PlanOutObjective
     on_infeasible: PlanOutOnInfeasible
+    on_snap: PlanOutOnSnap
     proposals: list[list[list[float]]]
     q: list[list[float]]
     seconds: float
+    start: list[float] | None
     status: PlanOutStatus
     steps: list[PlanStepOut]
     success: bool
@@ -74,6 +86,7 @@ class PlanOut:
     times: list[float | None]
     tip: list[list[float]]
     tip_error: list[float]
+    transition_margin: list[float | None]
     verified: list[bool]
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
@@ -114,6 +127,8 @@ class PlanOut:
 
         on_infeasible = self.on_infeasible.value
 
+        on_snap = self.on_snap.value
+
         proposals = []
         for proposals_item_data in self.proposals:
             proposals_item = []
@@ -131,6 +146,13 @@ class PlanOut:
             q.append(q_item)
 
         seconds = self.seconds
+
+        start: list[float] | None
+        if isinstance(self.start, list):
+            start = self.start
+
+        else:
+            start = self.start
 
         status = self.status.value
 
@@ -161,6 +183,12 @@ class PlanOut:
 
         tip_error = self.tip_error
 
+        transition_margin = []
+        for transition_margin_item_data in self.transition_margin:
+            transition_margin_item: float | None
+            transition_margin_item = transition_margin_item_data
+            transition_margin.append(transition_margin_item)
+
         verified = self.verified
 
         field_dict: dict[str, Any] = {}
@@ -177,9 +205,11 @@ class PlanOut:
                 "method": method,
                 "objective": objective,
                 "on_infeasible": on_infeasible,
+                "on_snap": on_snap,
                 "proposals": proposals,
                 "q": q,
                 "seconds": seconds,
+                "start": start,
                 "status": status,
                 "steps": steps,
                 "success": success,
@@ -187,6 +217,7 @@ class PlanOut:
                 "times": times,
                 "tip": tip,
                 "tip_error": tip_error,
+                "transition_margin": transition_margin,
                 "verified": verified,
             }
         )
@@ -253,6 +284,8 @@ class PlanOut:
 
         on_infeasible = PlanOutOnInfeasible(d.pop("on_infeasible"))
 
+        on_snap = PlanOutOnSnap(d.pop("on_snap"))
+
         proposals = []
         _proposals = d.pop("proposals")
         for proposals_item_data in _proposals:
@@ -273,6 +306,21 @@ class PlanOut:
             q.append(q_item)
 
         seconds = d.pop("seconds")
+
+        def _parse_start(data: object) -> list[float] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                start_type_0 = cast(list[float], data)
+
+                return start_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[float] | None, data)
+
+        start = _parse_start(d.pop("start"))
 
         status = PlanOutStatus(d.pop("status"))
 
@@ -314,6 +362,19 @@ class PlanOut:
 
         tip_error = cast(list[float], d.pop("tip_error"))
 
+        transition_margin = []
+        _transition_margin = d.pop("transition_margin")
+        for transition_margin_item_data in _transition_margin:
+
+            def _parse_transition_margin_item(data: object) -> float | None:
+                if data is None:
+                    return data
+                return cast(float | None, data)
+
+            transition_margin_item = _parse_transition_margin_item(transition_margin_item_data)
+
+            transition_margin.append(transition_margin_item)
+
         verified = cast(list[bool], d.pop("verified"))
 
         plan_out = cls(
@@ -327,9 +388,11 @@ class PlanOut:
             method=method,
             objective=objective,
             on_infeasible=on_infeasible,
+            on_snap=on_snap,
             proposals=proposals,
             q=q,
             seconds=seconds,
+            start=start,
             status=status,
             steps=steps,
             success=success,
@@ -337,6 +400,7 @@ class PlanOut:
             times=times,
             tip=tip,
             tip_error=tip_error,
+            transition_margin=transition_margin,
             verified=verified,
         )
 

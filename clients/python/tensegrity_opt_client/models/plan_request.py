@@ -7,6 +7,7 @@ from attrs import define as _attrs_define
 
 from ..models.plan_request_objective import PlanRequestObjective
 from ..models.plan_request_on_infeasible import PlanRequestOnInfeasible
+from ..models.plan_request_on_snap import PlanRequestOnSnap
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -49,6 +50,9 @@ class PlanRequest:
             the arm stays, under the step's load) or approach (the rest lengths of the admissible pose nearest to the
             target, within the bounds, the rate limit and the margin: the arm moves toward the target and catches up when it
             is in reach) Default: PlanRequestOnInfeasible.HOLD.
+        on_snap (PlanRequestOnSnap | Unset): when the arm snaps during a step (nothing admissible avoids it) or has no
+            equilibrium (a joint reaches its stop): continue (the next steps start from where it went) or stop (the plan
+            ends after that step) Default: PlanRequestOnSnap.CONTINUE.
         rate_limit (float | list[float] | None | Unset): largest speed of each rest length (length units per second): a
             number or 2n numbers; step k changes each rest length by at most rate_limit * (t_k - t_{k-1}). Needs `times` or
             `dt`; default none
@@ -59,8 +63,10 @@ class PlanRequest:
             under the first load; null: the equilibrium under it reached from the least-energy rest configuration
         times (list[float] | None | Unset): the steps' instants (seconds), as many as targets, strictly increasing from
             a first one > 0: the start (`rest_lengths0`, `start`) is the state at time 0; default none (or `dt`)
-        verify (bool | Unset): verify every step by the forward quasi-static solve from the previous step's
-            configuration with its command (`verified`) Default: True.
+        verify (bool | Unset): verify every step along its transition (`verified`): the previous command and load moving
+            linearly to the step's over its interval, a command is sent only where the arm follows its branch to the step's
+            pose, stable with the margin all along (no fold, branch point or joint stop on the way); false: the end pose
+            only, nothing verified Default: True.
         weights (list[list[float]] | None | Unset): weights [w1, w2] of each segment's rest-length changes in the least-
             change objective (n pairs, > 0); default 1
     """
@@ -75,6 +81,7 @@ class PlanRequest:
     margin: float | Unset = 0.001
     objective: PlanRequestObjective | Unset = PlanRequestObjective.CHANGE
     on_infeasible: PlanRequestOnInfeasible | Unset = PlanRequestOnInfeasible.HOLD
+    on_snap: PlanRequestOnSnap | Unset = PlanRequestOnSnap.CONTINUE
     rate_limit: float | list[float] | None | Unset = UNSET
     rest_lengths0: list[list[float]] | None | Unset = UNSET
     start: None | StartQ | Unset = UNSET
@@ -169,6 +176,10 @@ class PlanRequest:
         if not isinstance(self.on_infeasible, Unset):
             on_infeasible = self.on_infeasible.value
 
+        on_snap: str | Unset = UNSET
+        if not isinstance(self.on_snap, Unset):
+            on_snap = self.on_snap.value
+
         rate_limit: float | list[float] | None | Unset
         if isinstance(self.rate_limit, Unset):
             rate_limit = UNSET
@@ -247,6 +258,8 @@ class PlanRequest:
             field_dict["objective"] = objective
         if on_infeasible is not UNSET:
             field_dict["on_infeasible"] = on_infeasible
+        if on_snap is not UNSET:
+            field_dict["on_snap"] = on_snap
         if rate_limit is not UNSET:
             field_dict["rate_limit"] = rate_limit
         if rest_lengths0 is not UNSET:
@@ -433,6 +446,13 @@ class PlanRequest:
         else:
             on_infeasible = PlanRequestOnInfeasible(_on_infeasible)
 
+        _on_snap = d.pop("on_snap", UNSET)
+        on_snap: PlanRequestOnSnap | Unset
+        if isinstance(_on_snap, Unset):
+            on_snap = UNSET
+        else:
+            on_snap = PlanRequestOnSnap(_on_snap)
+
         def _parse_rate_limit(data: object) -> float | list[float] | None | Unset:
             if data is None:
                 return data
@@ -541,6 +561,7 @@ class PlanRequest:
             margin=margin,
             objective=objective,
             on_infeasible=on_infeasible,
+            on_snap=on_snap,
             rate_limit=rate_limit,
             rest_lengths0=rest_lengths0,
             start=start,

@@ -10,6 +10,7 @@ from ..models.plan_step_out_method import PlanStepOutMethod
 from ..models.plan_step_out_status import PlanStepOutStatus
 
 if TYPE_CHECKING:
+    from ..models.simulation_event_out import SimulationEventOut
     from ..models.solver_info import SolverInfo
 
 
@@ -25,6 +26,8 @@ class PlanStepOut:
             approach the nearest admissible pose's)
         end_angle (float):
         energy (float | None): the spring energy there (null likewise)
+        events (list[SimulationEventOut]): what happened during the transition: snaps (with the landing q_after,
+            tip_after) and a joint reaching its stop; `step` is the step's index, `fraction` where in its move
         feasible (bool):
         margin (float | None): the arm's stability margin under the command (torque / rad; null: the held rest lengths
             have no equilibrium under the step's load)
@@ -38,19 +41,29 @@ class PlanStepOut:
         residual (float | None): max-norm of the equilibrium and pose equations (Newton steps)
         solver (SolverInfo):
         status (PlanStepOutStatus): `feasible`: rest lengths meeting every requirement were found: the tip on the
-            target, stable with the margin, inside the bounds and the rate limit; `infeasible`: no admissible rest lengths
-            put the tip on the target: the command is the held value (on_infeasible hold) or the nearest admissible pose's
-            rest lengths (approach); q, tip, margin and energy describe the arm under the command, proposal and proposal_tip
-            the nearest admissible pose
+            target, stable with the margin, inside the bounds and the rate limit (and, verified, all along the transition);
+            `infeasible`: no admissible rest lengths put the tip on the target: the command is the held value (on_infeasible
+            hold) or the nearest admissible pose's rest lengths (approach); q, tip, margin and energy describe the arm under
+            the command, proposal and proposal_tip the nearest admissible pose; `snap`: the arm snapped during the step's
+            transition (nothing admissible avoided it, e.g. a held command under a changing load): q and tip are where it
+            landed (events give where it snapped); `no_equilibrium`: the arm has no equilibrium inside the physical range
+            under the step's inputs: a joint reached its stop during the transition; q is the configuration there (margin
+            and energy null) and the next step starts from it
         success (bool): whether it worked: `status` is one of feasible
         target (list[float]):
         tip (list[float]): the arm's tip under the command
         tip_error (float): |tip - target| (length units)
+        transition_margin (float | None): the least stability margin along the step's transition (torque / rad; 0 where
+            the arm snapped; null: none followed)
+        verified (bool): the step's transition was followed: no fold, branch point or joint stop, the margin held all
+            along, and the arm ends on the step's pose (false with `verify: false`, and for a step that starts against a
+            joint's stop)
     """
 
     command: list[list[float]]
     end_angle: float
     energy: float | None
+    events: list[SimulationEventOut]
     feasible: bool
     margin: float | None
     message: str
@@ -65,6 +78,8 @@ class PlanStepOut:
     target: list[float]
     tip: list[float]
     tip_error: float
+    transition_margin: float | None
+    verified: bool
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -78,6 +93,11 @@ class PlanStepOut:
 
         energy: float | None
         energy = self.energy
+
+        events = []
+        for events_item_data in self.events:
+            events_item = events_item_data.to_dict()
+            events.append(events_item)
 
         feasible = self.feasible
 
@@ -113,6 +133,11 @@ class PlanStepOut:
 
         tip_error = self.tip_error
 
+        transition_margin: float | None
+        transition_margin = self.transition_margin
+
+        verified = self.verified
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
@@ -120,6 +145,7 @@ class PlanStepOut:
                 "command": command,
                 "end_angle": end_angle,
                 "energy": energy,
+                "events": events,
                 "feasible": feasible,
                 "margin": margin,
                 "message": message,
@@ -134,6 +160,8 @@ class PlanStepOut:
                 "target": target,
                 "tip": tip,
                 "tip_error": tip_error,
+                "transition_margin": transition_margin,
+                "verified": verified,
             }
         )
 
@@ -141,6 +169,7 @@ class PlanStepOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.simulation_event_out import SimulationEventOut  # noqa: PLC0415
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
 
         d = dict(src_dict)
@@ -159,6 +188,13 @@ class PlanStepOut:
             return cast(float | None, data)
 
         energy = _parse_energy(d.pop("energy"))
+
+        events = []
+        _events = d.pop("events")
+        for events_item_data in _events:
+            events_item = SimulationEventOut.from_dict(events_item_data)
+
+            events.append(events_item)
 
         feasible = d.pop("feasible")
 
@@ -203,10 +239,20 @@ class PlanStepOut:
 
         tip_error = d.pop("tip_error")
 
+        def _parse_transition_margin(data: object) -> float | None:
+            if data is None:
+                return data
+            return cast(float | None, data)
+
+        transition_margin = _parse_transition_margin(d.pop("transition_margin"))
+
+        verified = d.pop("verified")
+
         plan_step_out = cls(
             command=command,
             end_angle=end_angle,
             energy=energy,
+            events=events,
             feasible=feasible,
             margin=margin,
             message=message,
@@ -221,6 +267,8 @@ class PlanStepOut:
             target=target,
             tip=tip,
             tip_error=tip_error,
+            transition_margin=transition_margin,
+            verified=verified,
         )
 
         plan_step_out.additional_properties = d

@@ -8,6 +8,7 @@ from attrs import define as _attrs_define
 from ..models.plot_plan_request_format_type_0 import PlotPlanRequestFormatType0
 from ..models.plot_plan_request_objective import PlotPlanRequestObjective
 from ..models.plot_plan_request_on_infeasible import PlotPlanRequestOnInfeasible
+from ..models.plot_plan_request_on_snap import PlotPlanRequestOnSnap
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -53,6 +54,9 @@ class PlotPlanRequest:
             command; the arm stays, under the step's load) or approach (the rest lengths of the admissible pose nearest to
             the target, within the bounds, the rate limit and the margin: the arm moves toward the target and catches up
             when it is in reach) Default: PlotPlanRequestOnInfeasible.HOLD.
+        on_snap (PlotPlanRequestOnSnap | Unset): when the arm snaps during a step (nothing admissible avoids it) or has
+            no equilibrium (a joint reaches its stop): continue (the next steps start from where it went) or stop (the plan
+            ends after that step) Default: PlotPlanRequestOnSnap.CONTINUE.
         rate_limit (float | list[float] | None | Unset): largest speed of each rest length (length units per second): a
             number or 2n numbers; step k changes each rest length by at most rate_limit * (t_k - t_{k-1}). Needs `times` or
             `dt`; default none
@@ -63,8 +67,10 @@ class PlotPlanRequest:
             under the first load; null: the equilibrium under it reached from the least-energy rest configuration
         times (list[float] | None | Unset): the steps' instants (seconds), as many as targets, strictly increasing from
             a first one > 0: the start (`rest_lengths0`, `start`) is the state at time 0; default none (or `dt`)
-        verify (bool | Unset): verify every step by the forward quasi-static solve from the previous step's
-            configuration with its command (`verified`) Default: True.
+        verify (bool | Unset): verify every step along its transition (`verified`): the previous command and load moving
+            linearly to the step's over its interval, a command is sent only where the arm follows its branch to the step's
+            pose, stable with the margin all along (no fold, branch point or joint stop on the way); false: the end pose
+            only, nothing verified Default: True.
         weights (list[list[float]] | None | Unset): weights [w1, w2] of each segment's rest-length changes in the least-
             change objective (n pairs, > 0); default 1
     """
@@ -81,6 +87,7 @@ class PlotPlanRequest:
     margin: float | Unset = 0.001
     objective: PlotPlanRequestObjective | Unset = PlotPlanRequestObjective.CHANGE
     on_infeasible: PlotPlanRequestOnInfeasible | Unset = PlotPlanRequestOnInfeasible.HOLD
+    on_snap: PlotPlanRequestOnSnap | Unset = PlotPlanRequestOnSnap.CONTINUE
     rate_limit: float | list[float] | None | Unset = UNSET
     rest_lengths0: list[list[float]] | None | Unset = UNSET
     start: None | StartQ | Unset = UNSET
@@ -185,6 +192,10 @@ class PlotPlanRequest:
         if not isinstance(self.on_infeasible, Unset):
             on_infeasible = self.on_infeasible.value
 
+        on_snap: str | Unset = UNSET
+        if not isinstance(self.on_snap, Unset):
+            on_snap = self.on_snap.value
+
         rate_limit: float | list[float] | None | Unset
         if isinstance(self.rate_limit, Unset):
             rate_limit = UNSET
@@ -267,6 +278,8 @@ class PlotPlanRequest:
             field_dict["objective"] = objective
         if on_infeasible is not UNSET:
             field_dict["on_infeasible"] = on_infeasible
+        if on_snap is not UNSET:
+            field_dict["on_snap"] = on_snap
         if rate_limit is not UNSET:
             field_dict["rate_limit"] = rate_limit
         if rest_lengths0 is not UNSET:
@@ -472,6 +485,13 @@ class PlotPlanRequest:
         else:
             on_infeasible = PlotPlanRequestOnInfeasible(_on_infeasible)
 
+        _on_snap = d.pop("on_snap", UNSET)
+        on_snap: PlotPlanRequestOnSnap | Unset
+        if isinstance(_on_snap, Unset):
+            on_snap = UNSET
+        else:
+            on_snap = PlotPlanRequestOnSnap(_on_snap)
+
         def _parse_rate_limit(data: object) -> float | list[float] | None | Unset:
             if data is None:
                 return data
@@ -582,6 +602,7 @@ class PlotPlanRequest:
             margin=margin,
             objective=objective,
             on_infeasible=on_infeasible,
+            on_snap=on_snap,
             rate_limit=rate_limit,
             rest_lengths0=rest_lengths0,
             start=start,

@@ -14,8 +14,9 @@ T = TypeVar("T", bound="SimulationEventOut")
 
 @_attrs_define
 class SimulationEventOut:
-    """Something that happened between sample `step` and `step + 1`, at `time = step + fraction`: where the arm
-    went (`status`) and what it did there.
+    """Something that happened during a move of the inputs (a simulation's step from sample `step` to `step + 1`,
+    a plan's step `step` from the previous command to its own), at `time = step + fraction`: where the arm went
+    (`status`) and what it did there.
 
         Attributes:
             direction (int): the sign of null_vector the descent left along (0: joint limit)
@@ -39,7 +40,7 @@ class SimulationEventOut:
             q_before (list[float]): the configuration at the fold (branch point, joint limit)
             status (SimulationEventOutStatus): `landed`: the arm left the lost branch and landed on a stable equilibrium
                 under the same inputs; `joint_limit`: a joint reached its range bound (on the followed branch, or during the
-                snap's descent): no equilibrium beyond inside the physical range; the simulation ends
+                snap's descent): no equilibrium beyond inside the physical range; the move ends there
             step (int):
             success (bool): whether it worked: `status` is one of landed
             target (list[float] | None): the tip deflection there (tip held)
