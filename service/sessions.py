@@ -8,9 +8,9 @@ the stream's events:
   ``(dx, dy)`` is ``Tracker.solve(dx, dy)``; a ``jump`` event when the tracker left its branch (the
   branch ended or turned unstable: a global re-solve from the last configuration, what the chain does).
 * ``preloads`` (:class:`PreloadsSession`): a :class:`tensegrity_opt.PreloadFollower`; each step's rest lengths
-  are commanded, ``PreloadFollower.step(rest_lengths, load)``: the forward quasi-static equilibrium under the
-  dead load from the last state, a ``snap`` event when the configuration moves by more than ``snap_distance``
-  (rad, largest joint) or the result is unstable.
+  are commanded, ``PreloadFollower.step(rest_lengths, load)``: the equilibrium the arm reaches along the
+  command's transition from the last state (the branch followed by continuation), a ``snap`` event where the branch
+  folds on the way (the landing ``q_after``).
 * ``inverse`` (:class:`InverseSession`): a :class:`tensegrity_opt.PreloadController`; each step is
   ``PreloadController.step(target, load, end_angle, dt=...)``, ``dt`` the step's own, the difference of its
   ``time`` and the last step's (the open is time 0), or the open's; the answer carries the step's ``time``.
@@ -83,7 +83,7 @@ class PreloadsSession(Session):
 
     def __init__(self, m: to.Manipulator, req: s.PreloadsOpen) -> None:
         super().__init__(m)
-        self.follower = PreloadFollower(m, req.start, load=req.load, snap_distance=req.snap_distance)
+        self.follower = PreloadFollower(m, req.start, load=req.load)
 
     def opened(self) -> dict[str, Any]:
         f = self.follower

@@ -28,6 +28,7 @@ result                      returned by                                      rec
 :class:`StabilityAtlas`     ``stability_atlas``                              :class:`AtlasTarget`,
                                                                              :class:`AtlasCrossing`
 :class:`Simulation`         ``simulate``                                     :class:`SimulationEvent`
+(``Transition``)            ``transition``                                   :class:`SimulationEvent`
 :class:`Design`             ``maximize_critical_force``,                     :class:`SolverInfo`
                             ``preloads_for_critical_force``
 :class:`PreloadDesign`      ``preloads_for_pose``                            :class:`SolverInfo`,
@@ -36,7 +37,7 @@ result                      returned by                                      rec
                                                                              :class:`ActiveBound`
 :class:`PreloadPlan`        ``plan_preloads``                      :class:`PreloadStep`
 (``PreloadStep``)           ``PreloadController.step``
-(``FollowerStep``)          ``PreloadFollower.step``                         :class:`Snap`
+(``FollowerStep``)          ``PreloadFollower.step``                         :class:`SimulationEvent`
 :class:`LoadCapacity`       ``load_capacity``                                :class:`LimitLoad`
 :class:`ForceEstimate`      ``estimate_tip_force``
 :class:`SweepResult`        ``sweep``
@@ -47,7 +48,7 @@ result                      returned by                                      rec
 """
 
 from .analyses.design.active_bounds import ActiveBound
-from .analyses.design.follower import FollowerStep, Snap
+from .analyses.design.follower import FollowerStep
 from .analyses.design.force_sensor import ForceEstimate
 from .analyses.design.load_capacity import LoadCapacity
 from .analyses.design.preload_control import PreloadPlan, PreloadStep
@@ -67,6 +68,7 @@ from .analyses.paths.events import BranchEvent
 from .analyses.paths.imperfection import ImperfectionSensitivity
 from .analyses.paths.limit_load import LimitLoad
 from .analyses.paths.simulation import Simulation, SimulationEvent
+from .analyses.paths.transition import Transition
 from .applications.sweeps.critical_map import CriticalLoadMap
 from .applications.sweeps.results import SweepResult
 from .numerics.krawczyk import IntervalCertificate, RootBox
@@ -77,7 +79,7 @@ __all__ = [
     "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "EnergyBound", "Buckling", "Mode", "Landscape",
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
-    "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent",
-    "Design", "PreloadDesign", "StiffnessDesign", "ActiveBound", "PreloadPlan", "PreloadStep", "FollowerStep", "Snap",
+    "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent", "Transition",
+    "Design", "PreloadDesign", "StiffnessDesign", "ActiveBound", "PreloadPlan", "PreloadStep", "FollowerStep",
     "LoadCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",
 ]

@@ -18,7 +18,7 @@ from tensegrity_opt.outcome import Outcome, outcome_classes
 #: Public classes of the top level that are not results (the model, the stateful steppers, the control spec).
 NOT_RESULTS = {"Segment", "Manipulator", "Tracker", "Control", "PreloadController", "PreloadFollower"}
 #: Records inside results that carry no outcome of their own (facts about a path or a solve).
-PLAIN_RECORDS = {"Mode", "Jump", "BranchEvent", "BoundaryPoint", "AtlasCrossing", "Snap", "SolverInfo", "Outcome",
+PLAIN_RECORDS = {"Mode", "Jump", "BranchEvent", "BoundaryPoint", "AtlasCrossing", "SolverInfo", "Outcome",
                  "ActiveBound", "RootBox"}
 
 

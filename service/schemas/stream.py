@@ -15,14 +15,12 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field
 
-from tensegrity_opt.analyses.design.follower import SNAP_DISTANCE
 from tensegrity_opt.analyses.design.preload_control import ON_INFEASIBLE
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import (
     _STRICT,
     MARGIN_DOC,
-    MAX_ANGLE,
     MAX_STIFFNESS,
     Angle,
     Deflection,
@@ -79,8 +77,9 @@ class TrackOpen(_Open):
 
 
 class PreloadsOpen(_Open):
-    """Rest-length commands: the forward equilibrium under the dead load, warm-started from the last one
-    (``tensegrity_opt.PreloadFollower``)."""
+    """Rest-length commands: the equilibrium the arm reaches along each command's transition (the last command and
+    load moving linearly to the new ones, the branch followed, a `snap` event where it folds;
+    ``tensegrity_opt.PreloadFollower``)."""
 
     mode: Literal["preloads"]
     load: Pair = Field([0.0, 0.0], description="dead tip load [fx, fy] (force units); a step may give its own")
@@ -88,9 +87,6 @@ class PreloadsOpen(_Open):
         None, max_length=HARD_MAX_SEGMENTS,
         description="the configuration the first step starts from (rad, n angles); default: the equilibrium "
                     "under `load` reached from the least-energy rest configuration of `manipulator`")
-    snap_distance: Annotated[float, Field(gt=0, le=2 * MAX_ANGLE, allow_inf_nan=False)] = Field(
-        SNAP_DISTANCE, description="a step whose joint angles move by more than this (rad, largest joint) from the "
-                                   "last is reported as a `snap` event (so is an unstable result)")
 
 
 class InverseOpen(_Open):

@@ -11,6 +11,6 @@ One module per concept:
 * :mod:`.load_capacity` - :func:`load_capacity`, :class:`LoadCapacity`;
 * :mod:`.preload_control` - :class:`PreloadController` (:class:`PreloadStep`) and :func:`plan_preloads`
   (:class:`PreloadPlan`);
-* :mod:`.follower` - :class:`PreloadFollower` (:class:`FollowerStep`, :class:`Snap`);
+* :mod:`.follower` - :class:`PreloadFollower` (:class:`FollowerStep`);
 * :mod:`.force_sensor` - :func:`estimate_tip_force`, :class:`ForceEstimate`.
 """

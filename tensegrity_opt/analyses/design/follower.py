@@ -1,13 +1,13 @@
 """The preload follower: commanded rest lengths in, the equilibrium the arm settles into out.
 
 The forward problem of control in actuation space (:mod:`.preload_control` is the inverse one): the springs' rest
-lengths ``(L1_0, L2_0)`` are commanded step by step, with a dead tip load, and the arm answers each command with
-the equilibrium it reaches quasi-statically from where it was: a local minimiser of ``E - F . tip`` for the new
-rest lengths, found from the previous configuration
-(:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` with ``q0`` the last
-state). Where the well the arm sat in has vanished the minimiser lands in another one: the arm **snaps**. A step is
-reported as a snap (:class:`Snap`) when its configuration moves by more than ``snap_distance`` (rad, the largest
-joint) from the last one, or when the equilibrium reached is not stable.
+lengths ``(L1_0, L2_0)`` are commanded step by step, with a dead tip load, and the arm answers each command the way
+a plan's step is verified: its **transition** (:mod:`tensegrity_opt.analyses.paths.transition`), the previous
+command and load moving linearly to the new ones while the arm follows its equilibrium branch by continuation.
+Where that branch loses stability on the way (a fold, a branch point: the well the arm sat in has vanished) the arm
+**snaps**: it lands, by descent, in another well, and the move goes on from there; each snap is an event
+(:class:`~tensegrity_opt.analyses.paths.transition.SimulationEvent`: where in the move, from which configuration,
+to which, the energy released). A large but continuous motion on one branch is not a snap.
 
 :class:`PreloadFollower` keeps the state between commands; each :meth:`PreloadFollower.step` returns a
 :class:`FollowerStep`. This is the ``preloads`` mode of the control stream (``docs/stream.md``).
@@ -19,77 +19,48 @@ snaps into the other one)::
     >>> m = to.Manipulator([to.Segment(0.5, 1.0, 1.0, 1.0), to.Segment(1.0, 1.0, 1.0, 1.0)])
     >>> f = to.PreloadFollower(m)
     >>> steps = [f.step([[1 + d, 1 - d], [1.0, 1.0]]) for d in (0.1, 0.2, 0.3, 0.4)]
-    >>> [s.snap is not None for s in steps], steps[-1].snap.cause, steps[-1].status
-    ([False, False, False, True], 'distance', 'converged')
+    >>> [s.snap is not None for s in steps], steps[-1].snap.kind, steps[-1].status
+    ([False, False, False, True], 'snap', 'converged')
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InvalidParameterError
+from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
 from ...model.manipulator import Manipulator
+from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
-from ...serialize import number, numbers
-from ..equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
+from ...serialize import numbers
+from ..equilibria.equilibrium import Equilibrium, is_equilibrium, make_equilibrium, solve_equilibrium_under_force
 from ..paths.control import checked_vector
+from ..paths.transition import follow, start_state
 
-__all__ = ["PreloadFollower", "FollowerStep", "Snap", "SNAP_DISTANCE", "loaded_rest"]
-
-#: Default largest joint motion (rad) of a step that is not reported as a snap.
-SNAP_DISTANCE = 0.2
-
-
-@dataclass(frozen=True)
-class Snap:
-    """The arm jumped during a step (:meth:`PreloadFollower.step`).
-
-    Attributes
-    ----------
-    cause : str
-        ``"unstable"`` (the equilibrium reached is not stable) or ``"distance"`` (the configuration moved by more
-        than ``snap_distance``).
-    distance : float
-        The largest joint motion of the step (rad).
-    q_before : ndarray (n,)
-        The configuration before the step.
-    """
-
-    cause: str
-    distance: float
-    q_before: np.ndarray
-
-    def __post_init__(self) -> None:
-        freeze(self)
-
-    def to_dict(self) -> dict[str, Any]:
-        """JSON form, an event of the control stream: ``kind`` (``"snap"``), ``cause``, ``distance``,
-        ``q_before``."""
-        return {"kind": "snap", "cause": self.cause, "distance": number(self.distance),
-                "q_before": numbers(self.q_before)}
+__all__ = ["PreloadFollower", "FollowerStep", "loaded_rest"]
 
 
 @dataclass(frozen=True)
 class FollowerStep(Outcome):
-    """One command of :class:`PreloadFollower`: the equilibrium reached, what was commanded, and the snap.
+    """One command of :class:`PreloadFollower`: the equilibrium reached, what was commanded, and the snaps.
 
     Its outcome is the equilibrium's (:attr:`STATUSES` are :attr:`Equilibrium.STATUSES`): a command the arm finds
-    no equilibrium for raises instead (the follower then stays where it was).
+    no equilibrium for (a joint reaches its stop on the way) raises instead (the follower then stays where it was).
 
     Attributes
     ----------
     equilibrium : Equilibrium
-        The equilibrium under ``load`` with ``rest_lengths``, reached from the previous configuration (tip free,
+        The equilibrium under ``load`` with ``rest_lengths`` at the end of the command's transition (tip free,
         ``control == "force"``).
     rest_lengths : ndarray (n, 2)
         The commanded ``(L1_0, L2_0)`` per segment.
     load : ndarray (2,)
         The dead tip load of the step.
-    snap : Snap or None
-        The snap of the step, None when the arm moved continuously and stayed stable.
+    events : tuple of SimulationEvent
+        The snaps of the transition (``kind`` ``"snap"`` or ``"bifurcation"``; ``step`` the command's index since
+        the follower's start, ``fraction`` where in the move), none when the arm followed its branch.
     status, message : str
         The equilibrium's.
     """
@@ -100,7 +71,7 @@ class FollowerStep(Outcome):
     equilibrium: Equilibrium
     rest_lengths: np.ndarray
     load: np.ndarray
-    snap: Snap | None = field(default=None)
+    events: tuple = ()
 
     def __post_init__(self) -> None:
         freeze(self)
@@ -118,12 +89,18 @@ class FollowerStep(Outcome):
         """The configuration reached (``equilibrium.q``)."""
         return self.equilibrium.q
 
+    @property
+    def snap(self):
+        """The first snap of the step (a :class:`~tensegrity_opt.analyses.paths.transition.SimulationEvent`), or
+        None when the arm followed its branch."""
+        return next((e for e in self.events if e.kind in ("snap", "bifurcation")), None)
+
     def to_dict(self) -> dict[str, Any]:
         """JSON form (a ``result`` of the stream's ``preloads`` mode): the equilibrium's
-        (:meth:`Equilibrium.to_dict`), then ``rest_lengths``, ``load`` and ``events`` (the snap's
-        :meth:`Snap.to_dict`, or none)."""
+        (:meth:`Equilibrium.to_dict`), then ``rest_lengths``, ``load`` and ``events`` (each
+        :meth:`~tensegrity_opt.analyses.paths.transition.SimulationEvent.to_dict`)."""
         return {**self.outcome(), **self.equilibrium.to_dict(), "rest_lengths": [numbers(p) for p in self.rest_lengths],
-                "load": numbers(self.load), "events": [] if self.snap is None else [self.snap.to_dict()]}
+                "load": numbers(self.load), "events": [e.to_dict() for e in self.events]}
 
 
 def loaded_rest(m: Manipulator, load) -> Equilibrium:
@@ -143,14 +120,13 @@ class PreloadFollower:
     Parameters
     ----------
     m : Manipulator
-        Geometry and stiffness (kept; each command replaces the rest lengths).
+        Geometry and stiffness (kept); its rest lengths are the ones before the first command.
     start : Equilibrium or array_like (n,), optional
-        The configuration the first command starts from; default the equilibrium under ``load`` reached from
-        the least-energy rest configuration of ``m`` (:func:`loaded_rest`).
+        The configuration the first command starts from: a stable equilibrium with ``m``'s rest lengths under
+        ``load`` (Newton polishes it); default the equilibrium under ``load`` reached from the least-energy rest
+        configuration of ``m`` (:func:`loaded_rest`).
     load : (fx, fy)
         The dead tip load (a command may give its own).
-    snap_distance : float
-        A step whose joint angles move by more than this (rad, the largest joint) is a snap (``SNAP_DISTANCE``).
 
     Attributes
     ----------
@@ -160,22 +136,23 @@ class PreloadFollower:
         The default load.
     """
 
-    def __init__(self, m: Manipulator, start=None, *, load=(0.0, 0.0), snap_distance: float = SNAP_DISTANCE) -> None:
+    def __init__(self, m: Manipulator, start=None, *, load=(0.0, 0.0)) -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
         self.m = m
         self.load = checked_vector(load, 2, "load")
-        if not snap_distance > 0:
-            raise InvalidParameterError(f"snap_distance must be > 0, got {snap_distance!r}", field="snap_distance")
-        self.snap_distance = float(snap_distance)
         if isinstance(start, Equilibrium):
             start = start.q
         if start is None:
-            self.q = loaded_rest(m, self.load).q.copy()
+            q0 = loaded_rest(m, self.load).q.copy()
         else:
             if len(start) != m.n:
                 raise InvalidParameterError(f"start must be {m.n} joint angles, got {len(start)}", field="start")
-            self.q = np.asarray(start, dtype=float)
+            q0 = checked_vector(start, m.n, "start")
+        self._state = start_state(m, q0, self.load)
+        self.q = self._state.q.copy()
+        self.rest = np.column_stack([m.L1_0, m.L2_0])       # the command the state is an equilibrium with
+        self.index = 0
 
     def manipulator(self, rest_lengths) -> Manipulator:
         """The chain with the commanded rest lengths (``[L1_0, L2_0]`` per segment, ``field="rest_lengths"``)."""
@@ -192,23 +169,34 @@ class PreloadFollower:
         return Manipulator(segments)
 
     def step(self, rest_lengths, load=None) -> FollowerStep:
-        """The equilibrium the arm reaches from the current configuration under the commanded ``rest_lengths``
-        (``n`` pairs ``[L1_0, L2_0]``) and ``load`` (default the follower's); the state moves there.
+        """The equilibrium the arm reaches along the transition from the current state to the commanded
+        ``rest_lengths`` (``n`` pairs ``[L1_0, L2_0]``) and ``load`` (default the follower's); the state moves there.
 
         Raises
         ------
         InvalidParameterError
             Bad rest lengths (``field="rest_lengths"`` or ``"rest_lengths[i]"``) or load.
-        NoEquilibriumError, SolverError
-            No equilibrium reached inside the physical range; the state stays where it was.
+        NoEquilibriumError
+            A joint reaches its stop during the transition: no equilibrium inside the physical range
+            (``field="rest_lengths"``); the state stays where it was.
+        SolverError
+            The transition could not be followed; the state stays where it was.
         """
-        m = self.manipulator(rest_lengths)
+        m1 = self.manipulator(rest_lengths)
         F = self.load if load is None else checked_vector(load, 2, "load")
-        eq = solve_equilibrium_under_force(m, float(F[0]), float(F[1]), q0=self.q)
-        distance = float(np.max(np.abs(eq.q - self.q)))
-        snap = None
-        if distance > self.snap_distance or not eq.stable:
-            snap = Snap(cause="unstable" if not eq.stable else "distance", distance=distance, q_before=self.q)
-        self.q = eq.q.copy()
-        return FollowerStep(equilibrium=eq, rest_lengths=np.array([[float(a), float(b)] for a, b in rest_lengths]),
-                            load=np.array(F, dtype=float), snap=snap)
+        P1 = np.column_stack([m1.L1_0, m1.L2_0])
+        tr = follow(self.m, self._state, self.rest, P1, self._state.force, F, step=self.index)
+        if tr.status == "joint_limit":
+            raise NoEquilibriumError(f"a joint reaches its stop at {tr.fraction:.4g} of the move to this command: no "
+                                     "equilibrium inside the physical range (the state stays where it was)",
+                                     field="rest_lengths", status="joint_limit")
+        if tr.status not in ("followed", "snapped"):
+            raise SolverError(f"the move to this command could not be followed: {tr.message}", status=tr.status)
+        res = chain_solver(m1).newton_force(np.asarray(F, float), tr.q)
+        if not is_equilibrium(m1, res):
+            raise SolverError("the end of the move is not a converged equilibrium", status="not_converged")
+        eq = make_equilibrium(m1, res, constrained=False)
+        self._state = start_state(m1, eq.q, F)
+        self.q, self.rest = eq.q.copy(), P1
+        self.index += 1
+        return FollowerStep(equilibrium=eq, rest_lengths=P1.copy(), load=np.array(F, dtype=float), events=tr.events)

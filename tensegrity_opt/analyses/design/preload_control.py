@@ -65,6 +65,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...bounds import bound_pair
+from ...checks import is_real, real_array
 from ...errors import (
     InfeasibleDesignError,
     InvalidParameterError,
@@ -101,6 +102,9 @@ ON_SNAP = ("continue", "stop")
 #: the other two failed), ``"horizon"`` (a step of a horizon plan, :mod:`.horizon`), ``"none"`` (held: no new
 #: command).
 METHODS = ("newton", "ipopt", "nearest", "horizon", "none")
+#: A target farther than this many times the chain's straight length from its base is refused (out of reach is
+#: approached; this far is a mistake, and its distances overflow the objectives).
+FAR_TARGET = 1e4
 #: Joint angles (rad) within which a transition must end on the planned configuration.
 SAME_POSE = 1e-6
 #: Spread starts of the nearest-pose search (besides the current state, IPOPT's last point and the held state).
@@ -115,11 +119,8 @@ _NEWTON: dict[int, SolverInfo] = {}
 
 
 def _seconds(v, field: str) -> float:
-    """A duration in seconds: finite and > 0."""
-    try:
-        h = float(v)
-    except (TypeError, ValueError):
-        h = math.nan
+    """A duration in seconds: a finite number > 0 (a string or a bool is refused)."""
+    h = float(v) if is_real(v) else math.nan
     if not (math.isfinite(h) and h > 0):
         raise InvalidParameterError(f"{field} must be a finite number of seconds > 0, got {v!r}", field=field)
     return h
@@ -132,10 +133,7 @@ def step_times(K: int, times=None, dt: float | None = None, rate_limit=None) -> 
     if times is not None and dt is not None:
         raise InvalidParameterError("give the steps' times or a fixed step dt, not both", field="times")
     if times is not None:
-        try:
-            t = np.asarray(times, dtype=float)
-        except (TypeError, ValueError):
-            t = np.empty((0, 0))
+        t = real_array(times, "times")
         if t.shape != (K,) or not np.all(np.isfinite(t)):
             raise InvalidParameterError(f"times must be {K} finite instants (seconds), one per target",
                                         field="times")
@@ -1056,20 +1054,27 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     -------
     PreloadPlan
     """
-    T = np.asarray(targets, dtype=float)
+    T = real_array(targets, "targets")
     if T.ndim != 2 or T.shape[1] != 2 or T.shape[0] < 1 or not np.all(np.isfinite(T)):
         raise InvalidParameterError("targets must be K >= 1 finite tip positions (x, y)", field="targets")
+    far = np.flatnonzero(np.hypot(T[:, 0], T[:, 1]) > FAR_TARGET * m.straight_length)
+    if far.size:
+        k = int(far[0])
+        raise InvalidParameterError(
+            f"targets[{k}] = ({T[k, 0]:.6g}, {T[k, 1]:.6g}) is more than {FAR_TARGET:g} times the chain's length "
+            f"({m.straight_length:.6g}) from its base: not a tip position (a target out of reach is approached; "
+            "give one within that distance)", field="targets")
     K = T.shape[0]
     if loads is None:
         Ls = np.zeros((K, 2))
     else:
-        Ls = np.asarray(loads, dtype=float)
+        Ls = real_array(loads, "loads")
         Ls = np.broadcast_to(Ls, (K, 2)).copy() if Ls.shape in ((2,), (1, 2)) else Ls
         if Ls.shape != (K, 2) or not np.all(np.isfinite(Ls)):
             raise InvalidParameterError(f"loads must be one (fx, fy) or {K} of them, finite", field="loads")
     A = None
     if end_angles is not None:
-        A = np.asarray(end_angles, dtype=float).ravel()
+        A = real_array(end_angles, "end_angles").ravel()
         if A.size != K or np.any(np.isinf(A)):
             raise InvalidParameterError(f"end_angles must be {K} numbers (NaN: free)", field="end_angles")
     t_steps = step_times(K, times, dt, rate_limit)

@@ -16,6 +16,7 @@ from typing import Any
 
 import numpy as np
 
+from ...checks import real_array
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...serialize import numbers
@@ -43,10 +44,7 @@ def _unit(v, field: str, size: int | None = None) -> np.ndarray:
 
 def checked_vector(v, size: int, name: str) -> np.ndarray:
     """``size`` finite numbers (a target, a load, a direction), flattened, checked (``field=name``)."""
-    try:
-        a = np.asarray(v, dtype=float).ravel()
-    except (TypeError, ValueError):
-        raise InvalidParameterError(f"{name} must be {size} numbers, got {v!r}", field=name) from None
+    a = real_array(v, name).ravel()
     if a.size != size or not np.all(np.isfinite(a)):
         raise InvalidParameterError(f"{name} must be {size} finite numbers, got {v!r}", field=name)
     return a

@@ -40,6 +40,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
+from ...checks import real_array
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
@@ -199,10 +200,7 @@ def _load(r: LimitLoad) -> float:
 
 
 def _check_amplitudes(amplitudes) -> np.ndarray:
-    try:
-        a = np.asarray(amplitudes, dtype=float)
-    except (TypeError, ValueError):
-        raise InvalidParameterError("amplitudes must be numbers", field="amplitudes") from None
+    a = real_array(amplitudes, "amplitudes")
     if a.ndim == 0:
         a = a.reshape(1)
     if a.ndim != 1 or a.size == 0 or not np.all(np.isfinite(a)):
