@@ -243,7 +243,29 @@ class _Planner:
         return Q, Ell
 
     # ------------------------------------------------------------------ taking a step
-    def apply(self, k: int, plan_q: np.ndarray | None, plan_ell: np.ndarray | None, info: SolverInfo) -> bool:
+    def worse(self, j: int, Q: np.ndarray, Ell: np.ndarray) -> str:
+        """Why the window's plan from step ``j`` (configurations ``Q``, rest lengths ``Ell``) is worse than the
+        step-by-step controller over the same steps from the same state ("" when it is not): fewer steps on their
+        targets, or (as many) a larger summed distance to them; the window's steps as planned, the controller's as
+        it would take them (:meth:`~.preload_control.PreloadController.rollout`)."""
+        ks = list(range(j, min(self.K, j + len(Q))))
+        tol = LAND_TOL * self.scale
+        planned = [float(np.linalg.norm(self.manipulator(Ell[i]).tip(Q[i]) - self.T[k])) for i, k in enumerate(ks)]
+        own = [st.tip_error if st.feasible else max(st.tip_error, 2 * tol)
+               for st in self.ctl.rollout(self.T[ks], self.Ls[ks], None if self.A is None else self.A[ks],
+                                          self.dts[ks])]
+        on = lambda e: sum(v <= tol for v in e)                      # noqa: E731
+        cost = lambda e: sum(v for v in e if v > tol)               # noqa: E731
+        if on(planned) < on(own):
+            return (f"the window puts {on(planned)} of its {len(ks)} steps on their targets where step by step "
+                    f"puts {on(own)}")
+        if on(planned) == on(own) and cost(planned) > cost(own) * (1 + 1e-9) + tol:
+            return (f"the window's summed distance to the targets ({cost(planned):.6g}) exceeds step by step's "
+                    f"({cost(own):.6g})")
+        return ""
+
+    def apply(self, k: int, plan_q: np.ndarray | None, plan_ell: np.ndarray | None, info: SolverInfo,
+              worse: str = "") -> bool:
         """Step ``k``: the horizon's command where it is safe and not worse than the step-by-step controller's
         answer from the same state (module docstring), else that answer; the step is taken and appended to the
         output. True when the horizon's command was taken."""
@@ -254,8 +276,8 @@ class _Planner:
             raise TimeLimitError("the horizon plan ran out of time")
         own = ctl.propose(self.T[k], F, angle, dt=dt)             # the step-by-step answer from this state
         hz = None
-        why = f"the horizon's IPOPT solve ended {info.status}"
-        if plan_ell is not None:
+        why = f"the horizon's IPOPT solve ended {info.status}" if not worse else worse
+        if plan_ell is not None and not worse:
             ell_prev = self.ell
             proposal = np.clip(plan_ell, self.lo, self.hi)
             # IPOPT holds the rate rows to its (scaled) tolerance: a proposal that far outside is clipped in
@@ -303,6 +325,11 @@ class _Planner:
                     self.apply(j, None, None, info)
                     j += 1
                     continue
+                worse = self.worse(j, Q, Ell)
+                if worse:                           # step by step does better from here: its step, then again
+                    self.apply(j, None, None, info, worse)
+                    j += 1
+                    continue
                 first = j
                 for k in range(first, min(self.K, first + len(Q))):
                     adopted = self.apply(k, Q[k - first], Ell[k - first], info)
@@ -320,10 +347,11 @@ class _Planner:
                     raise TimeLimitError("the horizon plan ran out of time")
                 res, Q, Ell = self._window(j, warm)
                 info = SolverInfo(res.status, res.iterations)
-                if Q is not None:
+                worse = "" if Q is None else self.worse(j, Q, Ell)
+                if Q is not None and not worse:
                     adopted = self.apply(j, Q[0], Ell[0], info)
                 else:
-                    adopted = self.apply(j, None, None, info)
+                    adopted = self.apply(j, None, None, info, worse)
                 if Q is not None and adopted and len(Q) == self.N:
                     # the solution shifted by one step, its last step repeated
                     Qs = np.concatenate([Q[1:], Q[-1:]])

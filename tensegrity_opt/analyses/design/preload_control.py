@@ -579,6 +579,33 @@ class PreloadController:
             v.setflags(write=False)
         return _Pose(ell, q, tip, math.nan, math.nan, solver, tr)
 
+    def rollout(self, targets, loads, end_angles=None, dts=None) -> list[PreloadStep]:
+        """The steps the controller would take over ``targets`` (``(k, 2)``) under ``loads`` (``(k, 2)``), with
+        ``end_angles`` (NaN: free) and ``dts`` (seconds; NaN: none), from the current state; the state is left as
+        it was (the horizon planner's comparison)."""
+        saved = self.snapshot()
+        out = []
+        try:
+            for k in range(len(targets)):
+                a = None if end_angles is None or math.isnan(end_angles[k]) else float(end_angles[k])
+                h = None if dts is None or math.isnan(dts[k]) else float(dts[k])
+                out.append(self.step(targets[k], loads[k], a, dt=h))
+        finally:
+            self.restore(saved)
+        return out
+
+    def snapshot(self) -> tuple:
+        """The controller's state (its command, the arm's configuration and load, the step count, the warm
+        start), for :meth:`restore`."""
+        return (self.ell.copy(), self.q.copy(), self.state_load.copy(), self.at_stop, self.index,
+                {k: v.copy() for k, v in self.mu.items()}, self.last)
+
+    def restore(self, saved: tuple) -> None:
+        """Back to a :meth:`snapshot`."""
+        ell, q, F, at_stop, index, mu, last = saved
+        self.ell, self.q, self.state_load, self.at_stop, self.index = ell.copy(), q.copy(), F.copy(), at_stop, index
+        self.mu, self.last = {k: v.copy() for k, v in mu.items()}, last
+
     def box(self, dt: float | None = None) -> tuple[np.ndarray, np.ndarray]:
         """The bounds of a step's rest lengths ``dt`` seconds after the last step (default the controller's
         ``dt``), segment-major 2n: the actuator bounds intersected with the rate box ``rate_limit * dt`` around
@@ -907,6 +934,8 @@ class PreloadPlan(Outcome):
     start : ndarray (n,)
         The arm's configuration at time 0 (the first step's transition starts there): ``start`` as given, or the
         default (:class:`PreloadController`); the same whatever the ``horizon``.
+    note : str
+        Part of :attr:`message`: with a ``horizon``, that the step-by-step plan was returned (it was better).
     horizon : int, str or None
         None (step by step), ``N`` (a receding horizon) or ``"all"`` (:func:`plan_preloads`).
     message : str
@@ -950,6 +979,7 @@ class PreloadPlan(Outcome):
     on_snap: str = "continue"
     transition_margin: np.ndarray | None = None
     start: np.ndarray | None = None
+    note: str = ""
 
     def __post_init__(self) -> None:
         if self.times is None:
@@ -975,6 +1005,8 @@ class PreloadPlan(Outcome):
         if held and self.on_infeasible == "hold" and len(held) >= 2:
             done += (f"; {len(held)} step(s) held (on_infeasible='hold' never moves toward a target out of reach: "
                      "'approach' does)")
+        if self.note:
+            done += f"; {self.note}"
         if self.status == "time_limit":
             return f"the time limit ran out after {done}"
         return done
@@ -1095,29 +1127,29 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     t0 = time.perf_counter()
     steps: list[PreloadStep] = []
     status = "complete"
+    note = ""
     with time_limit(timeout):
-        if horizon is not None:
+        if horizon is None:
+            status = _step_by_step(ctl, T, Ls, A, h_steps, steps, on_snap, progress)
+        else:
             from .horizon import horizon_steps
 
+            saved = ctl.snapshot()
             try:
                 horizon_steps(ctl, T, Ls, A, h_steps, horizon, steps, stop=on_snap == "stop", progress=progress)
             except TimeLimitError:
                 status = "time_limit"
-        for k in range(K if horizon is None else 0):
-            if expired():
-                status = "time_limit"
-                break
-            try:
-                st = ctl.step(T[k], Ls[k], None if A is None or math.isnan(A[k]) else float(A[k]),
-                              dt=None if math.isnan(h_steps[k]) else float(h_steps[k]))
-            except TimeLimitError:
-                status = "time_limit"
-                break
-            steps.append(st)
-            if progress is not None:
-                progress(k + 1, K)
-            if on_snap == "stop" and st.status in ("snap", "no_equilibrium"):
-                break
+            if status == "complete":
+                # never worse than step by step: the step-by-step plan of the same trajectory from the same start,
+                # returned where it is better (more steps on target, or as many nearer in sum)
+                ctl.restore(saved)
+                own: list[PreloadStep] = []
+                if _step_by_step(ctl, T, Ls, A, h_steps, own, on_snap, None) == "complete" and \
+                        _score(own, ctl.scale) > _score(steps, ctl.scale):
+                    f_h, e_h = _score(steps, ctl.scale)
+                    note = (f"the step-by-step plan is returned: it is better on this trajectory than the horizon's "
+                            f"({int(f_h)} steps on target, summed distance {-e_h:.6g} to the others)")
+                    steps = own
     n = m.n
     if status == "complete":
         kinds = {s.status for s in steps}
@@ -1136,4 +1168,30 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
                        method=tuple(s.method for s in steps), status=status,
                        steps=tuple(steps), seconds=time.perf_counter() - t0, targets=T[:P].copy(),
                        margin_required=float(margin), objective=objective, times=t_steps[:P].copy(),
-                       on_infeasible=on_infeasible, horizon=horizon, on_snap=on_snap, start=q_start)
+                       on_infeasible=on_infeasible, horizon=horizon, on_snap=on_snap, start=q_start, note=note)
+
+
+def _step_by_step(ctl: PreloadController, T, Ls, A, h_steps, steps: list, on_snap: str, progress) -> str:
+    """The controller's steps over the trajectory, appended to ``steps``: ``"complete"`` or ``"time_limit"``."""
+    K = T.shape[0]
+    for k in range(K):
+        if expired():
+            return "time_limit"
+        try:
+            st = ctl.step(T[k], Ls[k], None if A is None or math.isnan(A[k]) else float(A[k]),
+                          dt=None if math.isnan(h_steps[k]) else float(h_steps[k]))
+        except TimeLimitError:
+            return "time_limit"
+        steps.append(st)
+        if progress is not None:
+            progress(k + 1, K)
+        if on_snap == "stop" and st.status in ("snap", "no_equilibrium"):
+            break
+    return "complete"
+
+
+def _score(steps, scale: float) -> tuple[float, float]:
+    """``(steps on target, minus the summed distance of the others)``: larger is better (the tip on its target:
+    within the landing tolerance)."""
+    tol = LAND_TOL * scale
+    return (float(sum(s.tip_error <= tol for s in steps)), -float(sum(s.tip_error for s in steps if s.tip_error > tol)))
