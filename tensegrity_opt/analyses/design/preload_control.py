@@ -387,6 +387,7 @@ class PreloadController:
         self.at_stop = False                        # the state is against a joint's stop (no equilibrium)
         self.verify = bool(verify)
         self.index = 0                              # steps taken (the events' step)
+        self._rollout = False                       # inside rollout(): held steps need no proposal
         self.mu: dict[bool, np.ndarray] = {}
         self.last: PreloadStep | None = None
 
@@ -585,6 +586,7 @@ class PreloadController:
         it was (the horizon planner's comparison)."""
         saved = self.snapshot()
         out = []
+        self._rollout = True
         try:
             for k in range(len(targets)):
                 a = None if end_angles is None or math.isnan(end_angles[k]) else float(end_angles[k])
@@ -592,6 +594,7 @@ class PreloadController:
                 out.append(self.step(targets[k], loads[k], a, dt=h))
         finally:
             self.restore(saved)
+            self._rollout = False
         return out
 
     def snapshot(self) -> tuple:
@@ -726,7 +729,11 @@ class PreloadController:
         n = self.n
         held = self.hold(F)
         best = getattr(exc, "best", None)
-        near = self.nearest(target, F, end_angle, lo, hi, best=best if isinstance(best, dict) else None, held=held)
+        if self._rollout and self.on_infeasible == "hold":
+            near = None                     # a rollout holds: the proposal is not needed
+        else:
+            near = self.nearest(target, F, end_angle, lo, hi, best=best if isinstance(best, dict) else None,
+                                held=held)
         solver = SolverInfo(str(exc.status) if exc.status else "none", 0)
         reaches = near is not None and _distance(near.tip, target) <= LAND_TOL * self.scale and (
             end_angle is None or abs(float(np.sum(near.q)) - float(end_angle)) <= 1e-6)

@@ -334,8 +334,8 @@ class Move:
                 return math.inf if y is None else margin_at(prob, y)
 
             try:
-                res = so.minimize_scalar(g, bounds=(ta, tb), method="bounded",
-                                         options={"xatol": 1e-10 * max(1.0, tb)})
+                # at a minimum the value's error is quadratic in the location's: 1e-4 of the interval is ample
+                res = so.minimize_scalar(g, bounds=(ta, tb), method="bounded", options={"xatol": 1e-4 * (tb - ta)})
             except (ValueError, RuntimeError, np.linalg.LinAlgError):
                 continue
             if math.isfinite(float(res.fun)):
