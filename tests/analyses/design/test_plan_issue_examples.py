@@ -14,8 +14,8 @@ import reference_control as RC  # noqa: E402
 from test_plan_transitions import _segment, check_plan
 
 import tensegrity_opt as to
-from tensegrity_opt.analyses.paths.transition import follow
 from tensegrity_opt.analyses.paths.descent import ArmState
+from tensegrity_opt.analyses.paths.transition import follow
 
 
 def _transition_of(m, q, ell, F0, command, F1):
