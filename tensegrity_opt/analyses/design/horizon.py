@@ -46,7 +46,7 @@ from ...errors import InvalidParameterError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...outcome import SolverInfo
-from ...timelimit import expired
+from ...timelimit import expired, remaining, time_limit
 from .preloads import LAND_TOL
 
 __all__ = ["horizon_steps", "check_horizon", "HORIZONS", "TIP_WEIGHTS"]
@@ -58,6 +58,9 @@ HORIZONS = ("all",)
 TIP_WEIGHTS = (100.0, 100.0)
 #: Joint angles (rad) within which the forward solve must land on the planned configuration.
 SAME_POSE = 1e-6
+#: The share of the time left that one window's solve may take under a time limit; a window that runs out of it
+#: leaves the rest of the plan to the step-by-step controller (the steps get done before the limit).
+WINDOW_SHARE = 0.5
 #: How far (times ``max b``) beyond its rate box a converged solve's command may lie: it is clipped into the box.
 RATE_TOL = 1e-7
 _INF = math.inf
@@ -104,6 +107,16 @@ def horizon_steps(ctl: Any, targets: np.ndarray, loads: np.ndarray, end_angles: 
         plan.run_receding()
 
 
+class _NoSolve:
+    """A window not solved (its share of the time spent): its ``status`` for the steps' solver detail."""
+
+    success = False
+    iterations = 0
+
+    def __init__(self, status: str) -> None:
+        self.status = status
+
+
 class _Stop(Exception):
     """The plan ends (a step where the arm snapped or had no equilibrium, with ``on_snap="stop"``)."""
 
@@ -123,6 +136,7 @@ class _Planner:
         self.n, self.K, self.N = m.n, T.shape[0], nlp.N
         self.scale = float(np.max(m.b))
         self.limits = m.joint_limits * (1 - RANGE_SHRINK)
+        self.out_of_time = False
 
     # ------------------------------------------------------------------ the arm (the controller's state)
     @property
@@ -182,22 +196,51 @@ class _Planner:
             return self.T[k]
         return np.append(self.T[k], self.scale * self.A[k])            # NaN: free
 
-    def _window(self, j: int, warm: np.ndarray | None):
-        """The window starting at ``j`` solved: from ``warm`` (when given), else from the current state; where its
-        solve fails (e.g. a step of it has no stable equilibrium under its load at all), the shorter windows
-        ``N/2, N/4, ..., 1`` from ``j``, from the current state. ``(result, Q, Ell)``; ``Q``, ``Ell`` None when
-        every solve failed (the last result is returned)."""
-        res = None
-        if warm is not None:
-            res = self._solve(j, warm)
-        if res is None or not res.success:
-            res = self._solve(j, self._cold(self._index(j)))
-        nlp = self.nlp
-        while not res.success and nlp.N > 1:
-            from ...numerics.horizon_nlp import horizon_nlp
+    def _own(self, j: int) -> list:
+        """The step-by-step controller's steps over the window from ``j`` (from the current state; the state is
+        left as it is): the comparison of :meth:`worse`, and the start of a window solved afresh."""
+        ks = list(range(j, min(self.K, j + self.N)))
+        return self.ctl.rollout(self.T[ks], self.Ls[ks], None if self.A is None else self.A[ks], self.dts[ks])
 
-            nlp = horizon_nlp(self.n, max(1, nlp.N // 2), nlp.angles)
-            res = self._solve(j, self._cold(self._index(j, nlp.N), nlp), nlp)
+    def _guess(self, j: int, own: list) -> np.ndarray:
+        """A start for the window from ``j``: the step-by-step controller's steps (``own``; past the trajectory's
+        end its last repeated), so that the window plans the shapes the controller would take (not their mirror
+        images, which a symmetric start leaves free)."""
+        idx = self._index(j)
+        Q = np.array([own[min(i, len(own) - 1)].q for i in range(self.N)])
+        Ell = np.array([np.asarray(own[min(i, len(own) - 1)].command).T.ravel() for i in range(self.N)])
+        return self._assemble(Q, Ell, idx)
+
+    def _window(self, j: int, warm: np.ndarray | None, own: list):
+        """The window starting at ``j`` solved: from ``warm`` (when given), else from the step-by-step controller's
+        steps ``own``, else from the current state; where its solve fails (e.g. a step of it has no stable
+        equilibrium under its load at all), the shorter windows ``N/2, N/4, ..., 1`` from ``j``, from the current
+        state. ``(result, Q, Ell)``; ``Q``, ``Ell`` None when every solve failed (the last result is returned)."""
+        if self.out_of_time:
+            return _NoSolve("time_budget"), None, None
+        left = remaining()
+        budget = None if left is None else WINDOW_SHARE * left
+        try:
+            with time_limit(budget):
+                res = None
+                if warm is not None:
+                    res = self._solve(j, warm)
+                if res is None or not res.success:
+                    res = self._solve(j, self._guess(j, own))
+                if not res.success:
+                    res = self._solve(j, self._cold(self._index(j)))
+                nlp = self.nlp
+                while not res.success and nlp.N > 1:
+                    from ...numerics.horizon_nlp import horizon_nlp
+
+                    nlp = horizon_nlp(self.n, max(1, nlp.N // 2), nlp.angles)
+                    res = self._solve(j, self._cold(self._index(j, nlp.N), nlp), nlp)
+        except TimeLimitError:
+            if expired():
+                raise                               # the plan's own time is up
+            # the window's share of the time is spent: the rest of the plan step by step (the steps get done)
+            self.out_of_time = True
+            return _NoSolve("time_budget"), None, None
         if not res.success:
             return res, None, None
         Q, Ell = self._split(res.x, nlp)
@@ -243,17 +286,15 @@ class _Planner:
         return Q, Ell
 
     # ------------------------------------------------------------------ taking a step
-    def worse(self, j: int, Q: np.ndarray, Ell: np.ndarray) -> str:
+    def worse(self, j: int, Q: np.ndarray, Ell: np.ndarray, own_steps: list) -> str:
         """Why the window's plan from step ``j`` (configurations ``Q``, rest lengths ``Ell``) is worse than the
         step-by-step controller over the same steps from the same state ("" when it is not): fewer steps on their
         targets, or (as many) a larger summed distance to them; the window's steps as planned, the controller's as
-        it would take them (:meth:`~.preload_control.PreloadController.rollout`)."""
+        it would take them (``own_steps``, :meth:`_own`)."""
         ks = list(range(j, min(self.K, j + len(Q))))
         tol = LAND_TOL * self.scale
         planned = [float(np.linalg.norm(self.manipulator(Ell[i]).tip(Q[i]) - self.T[k])) for i, k in enumerate(ks)]
-        own = [st.tip_error if st.feasible else max(st.tip_error, 2 * tol)
-               for st in self.ctl.rollout(self.T[ks], self.Ls[ks], None if self.A is None else self.A[ks],
-                                          self.dts[ks])]
+        own = [st.tip_error if st.feasible else max(st.tip_error, 2 * tol) for st in own_steps[:len(ks)]]
         on = lambda e: sum(v <= tol for v in e)                      # noqa: E731
         cost = lambda e: sum(v for v in e if v > tol)               # noqa: E731
         if on(planned) < on(own):
@@ -319,13 +360,14 @@ class _Planner:
         j = 0
         try:
             while j < self.K:
-                res, Q, Ell = self._window(j, None)                         # from the current state
+                own = self._own(j)
+                res, Q, Ell = self._window(j, None, own)                    # from the current state
                 info = SolverInfo(res.status, res.iterations)
                 if Q is None:                       # no window solved from here: the step-by-step answer
                     self.apply(j, None, None, info)
                     j += 1
                     continue
-                worse = self.worse(j, Q, Ell)
+                worse = self.worse(j, Q, Ell, own)
                 if worse:                           # step by step does better from here: its step, then again
                     self.apply(j, None, None, info, worse)
                     j += 1
@@ -345,9 +387,10 @@ class _Planner:
             for j in range(self.K):
                 if expired():
                     raise TimeLimitError("the horizon plan ran out of time")
-                res, Q, Ell = self._window(j, warm)
+                own = self._own(j)
+                res, Q, Ell = self._window(j, warm, own)
                 info = SolverInfo(res.status, res.iterations)
-                worse = "" if Q is None else self.worse(j, Q, Ell)
+                worse = "" if Q is None else self.worse(j, Q, Ell, own)
                 if Q is not None and not worse:
                     adopted = self.apply(j, Q[0], Ell[0], info)
                 else:

@@ -133,3 +133,36 @@ def test_a_step_without_equilibrium_is_a_state_and_the_plan_goes_on_from_it(hori
     d = plan.to_dict()
     assert d["steps"][5]["status"] == "no_equilibrium" and d["steps"][5]["margin"] is None
     assert d["steps"][5]["events"][-1]["status"] == "joint_limit"
+
+
+def test_step_by_step_and_the_horizon_start_from_the_same_state_and_shape():
+    """The straight paper chain under compression (a symmetric start: both mirror-image shapes reach a target off
+    the axis): both planners start from the same configuration and take the same shape, whatever the horizon."""
+    m = to.Manipulator.uniform(4)
+    F = np.array([-0.05, 0.0])
+    tip0 = m.tip(to.PreloadController(m, load=F).q)
+    T = np.array([tip0 + np.array([-0.3, 0.6]) * np.sin(np.pi * k / 11) for k in range(12)])
+    own = to.plan_preloads(m, T, loads=F, rate_limit=0.05, dt=1.0)
+    hz = to.plan_preloads(m, T, loads=F, rate_limit=0.05, dt=1.0, horizon=10)
+    np.testing.assert_array_equal(own.start, hz.start)
+    assert np.all(np.sign(own.q[1]) == np.sign(hz.q[1])) and np.abs(own.q - hz.q).max() < 0.05
+    assert hz.verified.all() and own.verified.all()
+
+
+def test_a_whole_trajectory_too_long_for_the_time_limit_still_gets_its_steps(monkeypatch):
+    """horizon='all' on a long trajectory with a time limit its one NLP cannot meet: the window's share of the time
+    runs out (a deterministic stand-in: the solve raises the time limit at once) and the steps are planned step by
+    step, all of them, each saying why."""
+    from tensegrity_opt.analyses.design import horizon as H
+    from tensegrity_opt.errors import TimeLimitError
+
+    def slow(self, *a, **k):
+        raise TimeLimitError("the window's share of the time ran out")
+
+    monkeypatch.setattr(H._Planner, "_solve", slow)
+    m = to.Manipulator.uniform(4)
+    tip0 = m.tip(np.zeros(4))
+    T = np.array([tip0 + np.array([-0.3, 0.6]) * np.sin(np.pi * k / 29) for k in range(30)])
+    p = to.plan_preloads(m, T, horizon="all", timeout=600)
+    assert p.status == "complete" and len(p.steps) == 30 and p.verified.all()
+    assert all("time_budget" in s.message for s in p.steps)
