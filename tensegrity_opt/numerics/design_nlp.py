@@ -145,9 +145,10 @@ def _nlpsol(name: str, nlp: dict, **options) -> tuple[ca.Function, _DeadlineCall
     return ca.nlpsol(name, "ipopt", nlp, {**_DESIGN_OPTIONS, **options, "iteration_callback": cb}), cb
 
 
-def _run(solver, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
+def _run(solver, x0, lbx, ubx, lbg, ubg, p, lam_x0=None, lam_g0=None) -> NLPResult:
     check_time("the design solve")
-    sol = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg, p=p)
+    warm = {} if lam_x0 is None else {"lam_x0": lam_x0, "lam_g0": lam_g0}
+    sol = solver(x0=x0, lbx=lbx, ubx=ubx, lbg=lbg, ubg=ubg, p=p, **warm)
     st = solver.stats()
     status = str(st["return_status"])
     if status in TIMEOUT_STATUSES:

@@ -46,6 +46,12 @@ __all__ = ["HorizonNLP", "horizon_nlp"]
 
 #: IPOPT iterations of one horizon solve at most (a receding step is warm: tens).
 HORIZON_MAX_ITER = 1000
+#: IPOPT's warm start from a nearby solution and its multipliers (a receding step): the barrier parameter starts
+#: small and the point and multipliers are not pushed away from their bounds.
+WARM_OPTIONS = {"ipopt.warm_start_init_point": "yes", "ipopt.mu_init": 1e-8, "ipopt.mu_strategy": "monotone",
+                "ipopt.warm_start_bound_push": 1e-9, "ipopt.warm_start_bound_frac": 1e-9,
+                "ipopt.warm_start_slack_bound_push": 1e-9, "ipopt.warm_start_slack_bound_frac": 1e-9,
+                "ipopt.warm_start_mult_bound_push": 1e-9}
 #: The smoothing ``d`` of the pose error's norm, times the length scale: ``sqrt(|e|^2 + d^2) - d``.
 NORM_SMOOTHING = 1e-6
 
@@ -132,13 +138,21 @@ class HorizonNLP:
         #: the required ``margin``
         self.parameters = Layout(a=n, b=n, k1=n, k2=n, F=2 * N, ell0=2 * n, v=2 * n, w=3, scale=(), margin=())
         self.factor_floor = _factor_floor(n, diag)
-        self.solver, self._deadline = _nlpsol(f"horizon_{n}_{N}", {"x": x, "p": p, "f": f, "g": g},
-                                              **{"ipopt.max_iter": HORIZON_MAX_ITER})
+        self._nlp = {"x": x, "p": p, "f": f, "g": g}
+        self.solver, self._deadline = _nlpsol(f"horizon_{n}_{N}", self._nlp, **{"ipopt.max_iter": HORIZON_MAX_ITER})
+        self._warm = None
         self._eval = ca.Function("horizon_eval", [x, p], [g, f])
 
-    def solve(self, x0, lbx, ubx, lbg, ubg, p) -> NLPResult:
-        """IPOPT from ``x0`` (:class:`~.design_nlp.NLPResult`; out of time: ``TimeLimitError``)."""
-        return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
+    def solve(self, x0, lbx, ubx, lbg, ubg, p, lam_x0=None, lam_g0=None) -> NLPResult:
+        """IPOPT from ``x0`` (:class:`~.design_nlp.NLPResult`; out of time: ``TimeLimitError``); with the
+        multipliers ``lam_x0``, ``lam_g0`` of a nearby solution (a receding step's shifted one), IPOPT's warm start
+        (:data:`WARM_OPTIONS`: the barrier starts small, the point is not pushed into the interior)."""
+        if lam_x0 is None or lam_g0 is None:
+            return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
+        if self._warm is None:
+            self._warm, self._warm_deadline = _nlpsol(f"horizon_{self.n}_{self.N}_warm", self._nlp,
+                                                      **{"ipopt.max_iter": HORIZON_MAX_ITER, **WARM_OPTIONS})
+        return _run(self._warm, x0, lbx, ubx, lbg, ubg, p, lam_x0, lam_g0)
 
     def evaluate(self, x: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, float]:
         """The rows ``g(x)`` and the objective at ``x`` (numpy)."""

@@ -117,6 +117,18 @@ class _NoSolve:
         self.status = status
 
 
+class _Once:
+    """A value computed on the first call and kept (a window's step-by-step rollout, only when it is needed)."""
+
+    def __init__(self, make: Callable[[], Any]) -> None:
+        self._make, self._done, self._value = make, False, None
+
+    def __call__(self) -> Any:
+        if not self._done:
+            self._value, self._done = self._make(), True
+        return self._value
+
+
 class _Stop(Exception):
     """The plan ends (a step where the arm snapped or had no equilibrium, with ``on_snap="stop"``)."""
 
@@ -211,9 +223,10 @@ class _Planner:
         Ell = np.array([np.asarray(own[min(i, len(own) - 1)].command).T.ravel() for i in range(self.N)])
         return self._assemble(Q, Ell, idx)
 
-    def _window(self, j: int, warm: np.ndarray | None, own: list):
-        """The window starting at ``j`` solved: from ``warm`` (when given), else from the step-by-step controller's
-        steps ``own``, else from the current state; where its solve fails (e.g. a step of it has no stable
+    def _window(self, j: int, warm, own):
+        """The window starting at ``j`` solved: from ``warm`` (a shifted solution and its multipliers, when given),
+        else from the step-by-step controller's steps (``own()``, :meth:`_own`), else from the current state; where
+        its solve fails (e.g. a step of it has no stable
         equilibrium under its load at all), the shorter windows ``N/2, N/4, ..., 1`` from ``j``, from the current
         state. ``(result, Q, Ell)``; ``Q``, ``Ell`` None when every solve failed (the last result is returned)."""
         if self.out_of_time:
@@ -224,9 +237,10 @@ class _Planner:
             with time_limit(budget):
                 res = None
                 if warm is not None:
-                    res = self._solve(j, warm)
+                    x0, lam = warm
+                    res = self._solve(j, x0, lam=lam)
                 if res is None or not res.success:
-                    res = self._solve(j, self._guess(j, own))
+                    res = self._solve(j, self._guess(j, own()))
                 if not res.success:
                     res = self._solve(j, self._cold(self._index(j)))
                 nlp = self.nlp
@@ -246,7 +260,21 @@ class _Planner:
         Q, Ell = self._split(res.x, nlp)
         return res, Q, Ell
 
-    def _solve(self, j: int, x0: np.ndarray, nlp=None):
+    def _shifted(self, res) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+        """The solution ``res`` and its multipliers shifted by one step (its last step repeated): the warm start of
+        the next receding window."""
+        nlp = self.nlp
+
+        def shift(v, layout) -> np.ndarray:
+            parts = {}
+            for name, block in layout.unpack(v).items():
+                a = np.asarray(block, float).reshape(nlp.N, -1)
+                parts[name] = np.concatenate([a[1:], a[-1:]]).ravel()
+            return layout.pack(**parts)
+
+        return shift(res.x, nlp.variables), (shift(res.lam_x, nlp.variables), shift(res.lam_g, nlp.constraints))
+
+    def _solve(self, j: int, x0: np.ndarray, nlp=None, lam=None):
         """The window starting at ``j`` from ``x0`` (``nlp``: a shorter window's problem; default the plan's):
         IPOPT's result. Every pose is in the exact penalty (a reachable target is met, an unreachable one
         approached), never a hard constraint: one step out of reach does not make the window infeasible."""
@@ -273,6 +301,8 @@ class _Planner:
         w2, w1 = TIP_WEIGHTS
         pv = p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, F=self.Ls[idx].ravel(), ell0=self.ell, v=self.v,
                     w=[w2, w1, 1.0], scale=self.scale, margin=self.margin)
+        if lam is not None:
+            return nlp.solve(x0, lbx, ubx, lbg, ubg, pv, *lam)
         return nlp.solve(x0, lbx, ubx, lbg, ubg, pv)
 
     def _split(self, xs: np.ndarray, nlp=None) -> tuple[np.ndarray, np.ndarray]:
@@ -286,15 +316,18 @@ class _Planner:
         return Q, Ell
 
     # ------------------------------------------------------------------ taking a step
-    def worse(self, j: int, Q: np.ndarray, Ell: np.ndarray, own_steps: list) -> str:
+    def worse(self, j: int, Q: np.ndarray, Ell: np.ndarray, own_steps) -> str:
         """Why the window's plan from step ``j`` (configurations ``Q``, rest lengths ``Ell``) is worse than the
         step-by-step controller over the same steps from the same state ("" when it is not): fewer steps on their
         targets, or (as many) a larger summed distance to them; the window's steps as planned, the controller's as
-        it would take them (``own_steps``, :meth:`_own`)."""
+        it would take them (``own_steps``: a callable giving :meth:`_own`'s steps, called only when the window has
+        a step off its target: a window with every step on target cannot be worse)."""
         ks = list(range(j, min(self.K, j + len(Q))))
         tol = LAND_TOL * self.scale
         planned = [float(np.linalg.norm(self.manipulator(Ell[i]).tip(Q[i]) - self.T[k])) for i, k in enumerate(ks)]
-        own = [st.tip_error if st.feasible else max(st.tip_error, 2 * tol) for st in own_steps[:len(ks)]]
+        if all(e <= tol for e in planned):
+            return ""
+        own = [st.tip_error if st.feasible else max(st.tip_error, 2 * tol) for st in own_steps()[:len(ks)]]
         on = lambda e: sum(v <= tol for v in e)                      # noqa: E731
         cost = lambda e: sum(v for v in e if v > tol)               # noqa: E731
         if on(planned) < on(own):
@@ -315,7 +348,7 @@ class _Planner:
         dt = None if math.isnan(self.dts[k]) else float(self.dts[k])
         if expired():
             raise TimeLimitError("the horizon plan ran out of time")
-        own = ctl.propose(self.T[k], F, angle, dt=dt)             # the step-by-step answer from this state
+        own = None                          # the step-by-step answer from this state, when it is needed
         hz = None
         why = f"the horizon's IPOPT solve ended {info.status}" if not worse else worse
         if plan_ell is not None and not worse:
@@ -329,6 +362,8 @@ class _Planner:
                 command = np.clip(proposal, ell_prev - self.R[k], ell_prev + self.R[k])
                 hz = ctl.evaluate(self._segment_major(command), F, self.T[k], angle, method="horizon",
                                   solver=info, planned_q=plan_q, message="the horizon plan's step")
+                if not hz.feasible and (hz.verified or not ctl.verify) and math.isfinite(hz.margin):
+                    own = ctl.propose(self.T[k], F, angle, dt=dt)
                 if hz.feasible:
                     why = ""
                 elif not (hz.verified or not ctl.verify) or not math.isfinite(hz.margin):
@@ -341,8 +376,10 @@ class _Planner:
                     why = "the horizon's step is farther from its target than the step-by-step answer"
                 else:
                     why = ""
-        take = hz if (hz is not None and not why) else own
-        if take is own:
+        if hz is not None and not why:
+            take = hz
+        else:
+            own = ctl.propose(self.T[k], F, angle, dt=dt) if own is None else own
             take = own._but(message=f"{own.message} (the step-by-step answer: {why})")
         ctl.commit(take, F)
         self.out.append(take)
@@ -350,7 +387,7 @@ class _Planner:
             self.progress(len(self.out), self.K)
         if self.stop and take.status in ("snap", "no_equilibrium"):
             raise _Stop
-        return take is not own and take.method == "horizon"
+        return take is hz
 
     # ------------------------------------------------------------------ the plan
     def run_all(self) -> None:
@@ -360,7 +397,7 @@ class _Planner:
         j = 0
         try:
             while j < self.K:
-                own = self._own(j)
+                own = _Once(lambda: self._own(j))
                 res, Q, Ell = self._window(j, None, own)                    # from the current state
                 info = SolverInfo(res.status, res.iterations)
                 if Q is None:                       # no window solved from here: the step-by-step answer
@@ -387,7 +424,7 @@ class _Planner:
             for j in range(self.K):
                 if expired():
                     raise TimeLimitError("the horizon plan ran out of time")
-                own = self._own(j)
+                own = _Once(lambda: self._own(j))
                 res, Q, Ell = self._window(j, warm, own)
                 info = SolverInfo(res.status, res.iterations)
                 worse = "" if Q is None else self.worse(j, Q, Ell, own)
@@ -396,10 +433,7 @@ class _Planner:
                 else:
                     adopted = self.apply(j, None, None, info, worse)
                 if Q is not None and adopted and len(Q) == self.N:
-                    # the solution shifted by one step, its last step repeated
-                    Qs = np.concatenate([Q[1:], Q[-1:]])
-                    Es = np.concatenate([Ell[1:], Ell[-1:]])
-                    warm = self._assemble(Qs, Es, self._index(j + 1))
+                    warm = self._shifted(res)       # the solution shifted by one step, its last step repeated
                 else:
                     warm = None
         except _Stop:

@@ -323,23 +323,41 @@ class Move:
             self._keep(0.0, s0 + r * float(lost.t))
         i = int(np.argmin(mu))
         self._keep(mu[i], s0 + r * float(br.t[i]))
-        for j0, j1 in ((i - 1, i), (i, i + 1)):
-            if j0 < 0 or j1 > last or not br.t[j1] > br.t[j0]:
-                continue
-            ta, tb = float(br.t[j0]), float(br.t[j1])
-            xa, xb = X[j0], X[j1]
+        t = br.t
 
-            def g(t: float) -> float:
-                y, _ = prob.correct_t(xa + (xb - xa) * ((t - ta) / (tb - ta)), t)
-                return math.inf if y is None else margin_at(prob, y)
+        def g(tt: float) -> float:
+            """The margin on the branch at ``tt`` (corrected from the chord of its neighbouring points)."""
+            j = min(max(int(np.searchsorted(t[:last + 1], tt)), 1), last)
+            xa, xb, ta, tb = X[j - 1], X[j], float(t[j - 1]), float(t[j])
+            y, _ = prob.correct_t(xa + (xb - xa) * ((tt - ta) / (tb - ta)), tt)
+            return math.inf if y is None else margin_at(prob, y)
 
-            try:
-                # at a minimum the value's error is quadratic in the location's: 1e-4 of the interval is ample
-                res = so.minimize_scalar(g, bounds=(ta, tb), method="bounded", options={"xatol": 1e-4 * (tb - ta)})
-            except (ValueError, RuntimeError, np.linalg.LinAlgError):
-                continue
-            if math.isfinite(float(res.fun)):
-                self._keep(float(res.fun), s0 + r * float(res.x))
+        if not np.all(np.diff(t[:last + 1]) > 0):
+            return                                  # t not monotone on the stretch: the samples are the measure
+        # a bracket of the least: the least point and its neighbours, or at an end the end, the middle of the
+        # neighbouring interval (evaluated) and the neighbour; then Brent's parabolic search inside it
+        bracket = None
+        if 0 < i < last:
+            bracket = (float(t[i - 1]), float(t[i]), float(t[i + 1]))
+        elif last >= 1:
+            j = 1 if i == 0 else last - 1
+            mid = 0.5 * (float(t[i]) + float(t[j]))
+            gm = g(mid)
+            self._keep(gm, s0 + r * mid)
+            if gm < mu[i] and gm < mu[j]:
+                bracket = tuple(sorted((float(t[i]), float(t[j]))))
+                bracket = (bracket[0], mid, bracket[1])
+        if bracket is None:
+            return
+        try:
+            # at a minimum the value's error is quadratic in the location's: 1e-4 of the bracket is ample (Brent's
+            # tolerance is relative to |t|)
+            tol = max(1e-4 * (bracket[2] - bracket[0]) / max(abs(bracket[1]), 1e-12), 1e-12)
+            res = so.minimize_scalar(g, bracket=bracket, method="brent", tol=tol)
+        except (ValueError, RuntimeError, np.linalg.LinAlgError):
+            return
+        if math.isfinite(float(res.fun)) and bracket[0] <= float(res.x) <= bracket[2]:
+            self._keep(float(res.fun), s0 + r * float(res.x))
 
     # ------------------------------------------------------------------ events
     def _event(self, status, kind, s, qb, qa, Fb, Fa, tb, ta, Eb, Ea, Vb, Va, sign, method, msg, nv=None):
