@@ -135,12 +135,20 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
         lev.set_gid("margin-required")
         handles.append(Line2D([], [], **PLAN_STYLES["margin-required"]))
         labels.append(f"required margin {float(margin):.3g}")
+    TM = np.asarray(getattr(plan, "transition_margin", np.full(K, np.nan)), float).reshape(K)
+    if np.any(np.isfinite(TM)):
+        line, = ax_m.plot(steps, TM, ls="none", marker="v", ms=3.5, color=PLAN_STYLES["margin"].get("color", "C0"),
+                          alpha=0.7, zorder=4)
+        line.set_gid("transition-margin")
+        handles.append(Line2D([], [], ls="none", marker="v", ms=3.5, color=PLAN_STYLES["margin"].get("color", "C0"),
+                              alpha=0.7))
+        labels.append("least margin on the step's move (its transition)")
     unv = steps[~verified]
     pt, = ax_m.plot(unv, M[unv], ls="none", zorder=5, **PLAN_STYLES["unverified"])
     pt.set_gid("unverified")
     if unv.size:
         handles.append(Line2D([], [], ls="none", **PLAN_STYLES["unverified"]))
-        labels.append(f"not verified by the forward solve ({unv.size})")
+        labels.append(f"not verified along its transition ({unv.size})")
     E = np.asarray(plan.tip_error, float).reshape(K)
     line, = ax_e.plot(steps, E, marker=marker, ms=3.5, zorder=3, **PLAN_STYLES["tip-error"])
     line.set_gid("tip-error")
@@ -170,6 +178,14 @@ def plot_preload_plan(plan: PreloadPlan, m: Manipulator | None = None, *, margin
     handles += [Line2D([], [], ls=":", lw=0.9, color="0.45", marker="x", ms=6.0, mec="black"),
                 Line2D([], [], **PLAN_STYLES["tip-path"])]
     labels += ["targets (in order)", "tip per step"]
+    status = [getattr(st, "status", "") for st in getattr(plan, "steps", ())]
+    lost = np.array([k for k, st in enumerate(status) if st in ("snap", "no_equilibrium")], dtype=int)
+    if lost.size:
+        sn, = ax_t.plot(tips[lost, 0], tips[lost, 1], ls="none", marker="*", ms=11.0, mfc="gold", mec="black",
+                        zorder=6)
+        sn.set_gid("snaps")
+        handles.append(Line2D([], [], ls="none", marker="*", ms=11.0, mfc="gold", mec="black"))
+        labels.append(f"the arm snapped or met a joint stop ({lost.size}): where it went")
     if bad.size:
         handles.append(Line2D([], [], ls="none", marker="s", ms=6.5, mfc="tab:red", mec="black"))
         labels.append("the tip on an infeasible step")
