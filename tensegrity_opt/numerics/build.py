@@ -46,7 +46,7 @@ from pathlib import Path
 import casadi as ca
 
 __all__ = ["COMPILED", "VIRTUAL_MACHINE", "Loaded", "load", "libraries", "cache_dir", "compiler", "compiler_name",
-           "compile_in_background", "in_background", "pending", "schedule", "wait_built"]
+           "compile_in_background", "in_background", "pending", "schedule", "wait_built", "cached_library"]
 
 #: How loaded Functions run.
 COMPILED = "compiled"
@@ -253,6 +253,27 @@ def load(name: str, what: str, graphs: Callable[[], dict[str, ca.Function]]) -> 
             with _lock:
                 _libraries[name] = ""
     return Loaded(funcs or graphs(), VIRTUAL_MACHINE)
+
+
+def cached_library(name: str, graphs: Callable[[], dict[str, ca.Function]]) -> bool:
+    """Whether the library ``name`` of the Functions ``graphs()`` is compiled in the cache (or already loaded
+    compiled in this process); never compiles. Where it is, :func:`libraries` has its path."""
+    with _lock:
+        path = _libraries.get(name)
+    if path and os.path.exists(path):
+        return True
+    cc = compiler()
+    if cc is None:
+        return False
+    try:
+        found = _compile_with(cc, name, graphs(), build=False)
+    except (OSError, RuntimeError, subprocess.SubprocessError):
+        return False
+    if found:
+        with _lock:
+            _libraries[name] = found
+        return True
+    return False
 
 
 def _compile(name: str, what: str, funcs: dict[str, ca.Function], *, build: bool = True,

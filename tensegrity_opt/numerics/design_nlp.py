@@ -138,11 +138,13 @@ class _DeadlineCallback(ca.Callback):
         return [1 if expired() else 0]
 
 
-def _nlpsol(name: str, nlp: dict, **options) -> tuple[ca.Function, _DeadlineCallback]:
+def _nlpsol(name: str, nlp: dict, source: str | None = None, **options) -> tuple[ca.Function, _DeadlineCallback]:
     """``nlpsol`` with the design options (``options`` override them) and a deadline callback (kept alive by
-    the caller)."""
+    the caller); ``source``: a compiled library of the problem's Functions (``nlp_f``, ``nlp_g``, ...) to
+    evaluate instead of CasADi's virtual machine."""
     cb = _DeadlineCallback(f"{name}_deadline", nlp["x"].numel(), nlp["g"].numel(), nlp["p"].numel())
-    return ca.nlpsol(name, "ipopt", nlp, {**_DESIGN_OPTIONS, **options, "iteration_callback": cb}), cb
+    return ca.nlpsol(name, "ipopt", nlp if source is None else source,
+                     {**_DESIGN_OPTIONS, **options, "iteration_callback": cb}), cb
 
 
 def _run(solver, x0, lbx, ubx, lbg, ubg, p, lam_x0=None, lam_g0=None) -> NLPResult:

@@ -5,6 +5,7 @@ written from docs/model.md)."""
 from __future__ import annotations
 
 import numpy as np
+import pytest
 from reference_model import Chain
 
 from tensegrity_opt.numerics.design_nlp import tril_vector
@@ -61,3 +62,46 @@ def test_rows_and_objective_match_the_reference_model():
     dl = np.diff(np.vstack([ell0, Ell]), axis=0)
     expect = w[0] * np.sum(E ** 2) / s ** 2 + w[1] * np.sum(Tt) / s + w[2] * np.sum(v * dl ** 2) / s ** 2
     assert abs(f - expect) <= 1e-12 * max(1.0, abs(expect))
+
+
+@pytest.mark.slow
+def test_a_prebuilt_problem_warm_solves_in_compiled_code_to_the_same_answer(tmp_path, monkeypatch):
+    """prebuild compiles the problem once (into TENSEGRITY_CACHE_DIR); a warm solve then evaluates the compiled
+    library and lands where the virtual machine does (the same code, generated); a cold process finds it without
+    compiling (compiled_path)."""
+    import tensegrity_opt as to
+    from tensegrity_opt.analyses.design import horizon as H
+    from tensegrity_opt.analyses.design.preload_control import PreloadController
+    from tensegrity_opt.numerics import build
+    from tensegrity_opt.numerics import horizon_nlp as HN
+
+    monkeypatch.setenv("TENSEGRITY_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.delenv("TENSEGRITY_COMPILE", raising=False)
+    if build.compiler() is None:
+        pytest.skip("no C compiler")
+    n, N = 3, 2
+    assert HN.compiled_path(n, N) is None                     # nothing in this cache yet: never compiles
+    path = HN.prebuild(n, N)
+    assert path and path.startswith(str(tmp_path / "cache"))
+    assert HN.compiled_path(n, N) == path
+
+    m = to.Manipulator.uniform(n)
+    ctl = PreloadController(m, load=(0.0, -0.01), rate_limit=0.05, dt=1.0)
+    tip0 = m.tip(ctl.q)
+    T = np.array([tip0 + [-0.02 * k, 0.04 * k] for k in range(1, 5)])
+    block = lambda v: np.asarray(v, float).reshape(n, 2).T.ravel()          # noqa: E731
+    answers = {}
+    for mode in ("compiled", "virtual machine"):
+        nlp = HN.HorizonNLP(n, N, False)                      # a fresh problem: its own warm solver
+        if mode == "virtual machine":
+            nlp._warm, nlp._warm_deadline = HN._nlpsol("vm", nlp._nlp, **{"ipopt.max_iter": 1000,
+                                                                           **HN.WARM_OPTIONS})
+        c = PreloadController(m, load=(0.0, -0.01), rate_limit=0.05, dt=1.0)
+        pl = H._Planner(c, T, np.tile([0.0, -0.01], (4, 1)), None, np.outer(np.ones(4), block(c.rate)), np.ones(4),
+                        block(c.w), block(c.lo), block(c.hi), nlp, [], False, None)
+        res = pl._solve(0, pl._cold(pl._index(0)))
+        warm = pl._shifted(res)
+        again = pl._solve(1, warm[0], lam=warm[1])
+        assert again.success and nlp.mode == ("compiled" if mode == "compiled" else "virtual machine")
+        answers[mode] = again.x
+    np.testing.assert_allclose(answers["compiled"], answers["virtual machine"], atol=1e-8)
