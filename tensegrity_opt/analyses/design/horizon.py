@@ -11,27 +11,25 @@ the pose error and the actuators' motion in the objective):
 
 * ``horizon=N`` (a positive int): **receding horizon**. At step ``j`` the steps ``j .. j+N-1`` are solved (past
   the end of the trajectory its last target and load repeat), the first is applied, and the next solve starts
-  from this solution shifted by one step (warm); the first solve starts from the current state.
-* ``horizon="all"``: the whole trajectory as one NLP, solved once from the current state.
+  from this solution and its multipliers shifted by one step (IPOPT's warm start: a few iterations); a window
+  solved afresh starts from the step-by-step controller's own steps over it (the shapes the controller would
+  take, not their mirror images).
+* ``horizon="all"``: the whole trajectory as one NLP.
 
-What an off-target step does is the plan's ``on_infeasible``:
+Every pose error is an exact penalty (a first power plus a square, see the numerics module): a reachable target
+is met, an out-of-reach one approached, and one step out of reach does not make the window infeasible; a window
+with no solution at all (a step whose load leaves no stable equilibrium) is solved shorter (``N/2, N/4, ...``).
 
-* ``"approach"``: the pose error is an exact penalty (a first power plus a square, see the numerics module), so an
-  out-of-reach stretch still has a solution that moves toward the targets as fast as the bounds, rates and margin
-  allow and catches up when it can; the plan minimises the errors' sum over the window, and may leave a reachable
-  step a little off its target to be nearer the next ones (a step off its target is infeasible, and reported so).
-* ``"hold"``: the pose of the first step of each solve (the step about to be applied) is a constraint, the later
-  steps' poses the penalty: a step is met exactly or not at all, the freedom left (the redundant rest lengths)
-  moves ahead for the steps to come; a step whose pose cannot be met (the solve infeasible, or with ``"all"`` a
-  later step of the solve off its target) holds the previous command, and the plan is solved again from the state
-  reached.
-
-Every step is applied only when it is safe: its solve converged (IPOPT's return status is reported per step), the
-command lies inside the rate box of the command actually applied before it, and the forward quasi-static solve
-(:func:`~tensegrity_opt.analyses.equilibria.equilibrium.settle_under_force`, IPOPT's descent where Newton does not
-settle) from the previous configuration with the step's rest lengths lands on the step's planned pose, stable.
-Otherwise the step **holds** the previous command (``method`` ``"none"``; ``q``, ``tip`` are then where the arm
-goes under it and the step's load, the IPOPT status in ``solver``) and the next solve starts from that state.
+**Never worse than step by step.** A window's first step is taken only where the window is not worse than the
+controller's own steps over the same targets from the same state (:meth:`_Planner.worse`: fewer steps on target,
+or as many farther in sum), the command lies in the rate box of the command applied before it, its transition is
+verified (:meth:`~.preload_control.PreloadController.evaluate`: the arm follows its branch to the planned pose with
+the margin), and it is on its target, or -- approaching, where the controller's own answer is off its target too --
+no farther from it. Otherwise the step is the controller's own answer from that state
+(:meth:`~.preload_control.PreloadController.propose`), and the next window is solved from the state reached;
+``plan_preloads`` finally returns the step-by-step plan of the trajectory where that one is better. Under a time
+limit a window's solve takes at most half the time left; a window that runs out of it leaves the rest to the
+step-by-step controller (the steps get done).
 """
 
 from __future__ import annotations

@@ -37,10 +37,12 @@ chain's torque scale ``max k c^2`` (``Manipulator.torque_scale``) instead; to as
    pose nearest to the target (:meth:`PreloadController.nearest`: the preload NLP minimising the tip's distance
    to the target subject to the equilibrium under the load, the margin, the bounds intersected with the rate
    box and the joint range, from several starts, each candidate kept only where the forward solve from the
-   current configuration lands on it, stable). What the step **commands** depends on ``on_infeasible``:
+   current configuration lands on it, stable; verified, along its transition). What the step **commands** depends
+   on ``on_infeasible``:
 
-   * ``"hold"``: the previous command. The arm's state is the forward equilibrium with the held rest lengths
-     under the step's load from the previous configuration (the same state when the load does not change);
+   * ``"hold"``: the previous command. The arm's state is where holding takes it (the same state when the load does
+     not change; else the transition of the held command under the changing load). A target more than one rate box
+     away is never reached by holding, even a still one;
    * ``"approach"``: the nearest admissible pose's rest lengths: the arm moves there, as close to the target
      as the bounds, the rate limit and the margin allow, and the controller catches up once the target is
      in reach again.
@@ -48,10 +50,19 @@ chain's torque scale ``max k c^2`` (``Manipulator.torque_scale``) instead; to as
 Every step carries the ``command`` to send and, apart, the ``proposal``; ``q``, ``tip``, ``margin``, ``energy``
 describe the arm under the command (what a pipeline will observe), ``tip_error`` its distance to the target.
 Consecutive commands never differ by more than ``rate_limit * dt`` (the time between them). ``residual`` is the
-scaled KKT residual of a Newton step. :func:`plan_preloads` runs a controller over a trajectory and verifies each
-step by the forward quasi-static solve
-(:func:`~tensegrity_opt.analyses.equilibria.equilibrium.solve_equilibrium_under_force` from the previous step's
-configuration with the step's command: it must land on the step's pose, stable).
+scaled KKT residual of a Newton step.
+
+**Verified along the transition** (``verify=True``, the default). A controller ramps each rest length linearly in
+time from one command to the next over the step's interval, and the load ramps with it: the step's *transition*
+(:mod:`tensegrity_opt.analyses.paths.transition`). Every candidate command (Newton's, IPOPT's, the nearest
+pose's) is followed along it from the current state: it is sent only where the arm stays on its branch (no fold,
+no branch point, no joint stop), its margin never below the required one (nor below the current state's, when
+that is already lower) and at least the required one at the end, ending on the candidate's pose
+(``verified=True``, ``transition_margin`` the least margin on the way). A candidate that fails is refused and the
+nearest-pose search looks for another; where nothing admissible avoids it (a held command under a changing load),
+the step says what happens: ``status="snap"`` (``q``, ``tip`` where the arm landed; ``events`` the snaps) or
+``"no_equilibrium"`` (a joint reached its stop: ``q`` there); the state moves there, and a step from a stop
+releases the arm by descent (never verified). :func:`plan_preloads` runs a controller over a trajectory.
 """
 
 from __future__ import annotations
