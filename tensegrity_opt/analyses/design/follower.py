@@ -37,6 +37,7 @@ from ...outcome import Outcome, freeze
 from ...serialize import numbers
 from ..equilibria.equilibrium import Equilibrium, is_equilibrium, make_equilibrium, solve_equilibrium_under_force
 from ..paths.control import checked_vector
+from ..paths.descent import ArmState
 from ..paths.transition import follow, start_state
 
 __all__ = ["PreloadFollower", "FollowerStep", "loaded_rest"]
@@ -196,7 +197,7 @@ class PreloadFollower:
         if not is_equilibrium(m1, res):
             raise SolverError("the end of the move is not a converged equilibrium", status="not_converged")
         eq = make_equilibrium(m1, res, constrained=False)
-        self._state = start_state(m1, eq.q, F)
+        self._state = ArmState(eq.q.copy(), np.array(F, dtype=float), eq.tip.copy(), float(eq.energy), 0, True)
         self.q, self.rest = eq.q.copy(), P1
         self.index += 1
         return FollowerStep(equilibrium=eq, rest_lengths=P1.copy(), load=np.array(F, dtype=float), events=tr.events)

@@ -54,8 +54,6 @@ HORIZONS = ("all",)
 #: The pose error's weights ``(square, first power)`` in the objective, relative to the motion's weight 1 (all
 #: lengths divided by ``max b``): the first power makes the penalty exact (a reachable target is met).
 TIP_WEIGHTS = (100.0, 100.0)
-#: Joint angles (rad) within which the forward solve must land on the planned configuration.
-SAME_POSE = 1e-6
 #: The share of the time left that one window's solve may take under a time limit; a window that runs out of it
 #: leaves the rest of the plan to the step-by-step controller (the steps get done before the limit).
 WINDOW_SHARE = 0.5

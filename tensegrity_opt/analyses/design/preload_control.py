@@ -399,6 +399,7 @@ class PreloadController:
         self.verify = bool(verify)
         self.index = 0                              # steps taken (the events' step)
         self._rollout = False                       # inside rollout(): held steps need no proposal
+        self._state_margin: tuple = (None, math.nan)    # (index, at_stop) of the state it was computed for
         self.mu: dict[bool, np.ndarray] = {}
         self.last: PreloadStep | None = None
 
@@ -540,7 +541,7 @@ class PreloadController:
     def state_margin(self) -> float:
         """The stability margin of the current state (NaN against a joint's stop)."""
         key = (self.index, self.at_stop)
-        if getattr(self, "_state_margin", (None, None))[0] != key:
+        if self._state_margin[0] != key:
             mu = math.nan if self.at_stop else stability_margin(self.manipulator(), self.q, self.state_load)
             self._state_margin = (key, mu)
         return self._state_margin[1]

@@ -52,11 +52,11 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
-from ...numerics import DENSE_MAX, chain_solver
+from ...numerics import DENSE_MAX
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
-from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
+from ..equilibria.equilibrium import Equilibrium, check_q0
 from .descent import ArmState
 from .transition import (
     BRANCH_POINT_OFFSET,
@@ -65,6 +65,7 @@ from .transition import (
     Move,
     SimulationEvent,
     chain_with,
+    start_state,
 )
 
 __all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "BRANCH_POINT_OFFSET"]
@@ -255,25 +256,9 @@ def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> ArmState:
         if q0.shape != (m0.n,):
             raise InvalidParameterError(f"start must hold {m0.n} joint angles", field="start")
     if held:
-        target = m0.target(*T0)
         F = start.force if isinstance(start, Equilibrium) and start.control == "displacement" else None
-        res = local_equilibrium(m0, target, np.asarray(q0, float), F)
-        ok = is_equilibrium(m0, res, target)
-    else:
-        res = chain_solver(m0).newton_force(np.asarray(F0, float), np.asarray(q0, float))
-        ok = is_equilibrium(m0, res)
-    if not ok:
-        raise InvalidParameterError("start is not (near) an equilibrium under the first inputs: Newton did not "
-                                    "converge from it inside the joint range", field="start")
-    eq = make_equilibrium(m0, res, constrained=held)
-    if start is not None and np.abs(eq.q - q0).max() > 1e-3:
-        raise InvalidParameterError("start is not (near) an equilibrium under the first inputs: Newton moved it "
-                                    f"by {np.abs(eq.q - q0).max():.3g} rad", field="start")
-    if not eq.stable:
-        raise InvalidParameterError(f"start is not a stable equilibrium under the first inputs (Morse index "
-                                    f"{eq.morse_index})", field="start")
-    return ArmState(eq.q.copy(), np.asarray(F0, float).copy() if not held else eq.force.copy(), eq.tip.copy(),
-                  float(eq.energy), 0, True)
+        return start_state(m0, q0, target=m0.target(*T0), force=F, moved=start is not None)
+    return start_state(m0, q0, F0, moved=start is not None)
 
 
 def _start_q(m: Manipulator, start) -> np.ndarray:

@@ -45,13 +45,13 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.optimize as so
 
-from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError, TimeLimitError
+from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX, chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import time_limit
-from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, make_equilibrium
+from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, local_equilibrium, make_equilibrium
 from .branches import trace_branch
 from .control import Control
 from .descent import ArmState, Descent, state_at
@@ -535,24 +535,32 @@ class Transition(Outcome):
                 "events": [e.to_dict() for e in self.events]}
 
 
-def start_state(m: Manipulator, q0, load, *, held: bool = False, field: str = "start") -> ArmState:
-    """The stable equilibrium of ``m`` under the dead ``load`` (free) at ``q0`` polished by Newton, as an
-    :class:`~.descent.ArmState`; ``InvalidParameterError`` (``field``) when ``q0`` is not near a stable one."""
+def start_state(m: Manipulator, q0, load=None, *, target=None, force=None, moved: bool = True,
+                field: str = "start") -> ArmState:
+    """The stable equilibrium of ``m`` at ``q0`` polished by Newton, as an :class:`~.descent.ArmState`: under the
+    dead ``load`` (tip free), or with the tip held at ``target`` (``force`` a guess of the holding force).
+    ``InvalidParameterError`` (``field``) when Newton does not converge from ``q0`` inside the range, moves it by
+    more than 1e-3 rad (``moved``: checked) or ends on an unstable equilibrium."""
+    held = target is not None
+    q0 = np.asarray(q0, float)
     if held:
-        raise InvalidParameterError("a held start needs its target: use simulate", field="tip")
-    F = np.asarray(load, float)
-    res = chain_solver(m).newton_force(F, np.asarray(q0, float))
-    if not is_equilibrium(m, res):
+        res = local_equilibrium(m, target, q0, force)
+        ok = is_equilibrium(m, res, target)
+    else:
+        res = chain_solver(m).newton_force(np.asarray(load, float), q0)
+        ok = is_equilibrium(m, res)
+    if not ok:
         raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton did not "
                                     "converge from it inside the joint range", field=field)
-    eq = make_equilibrium(m, res, constrained=False)
-    if np.abs(eq.q - np.asarray(q0, float)).max() > 1e-3:
+    eq = make_equilibrium(m, res, constrained=held)
+    if moved and np.abs(eq.q - q0).max() > 1e-3:
         raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton moved it "
                                     f"by {np.abs(eq.q - q0).max():.3g} rad", field=field)
     if not eq.stable:
         raise InvalidParameterError(f"{field} is not a stable equilibrium under the first inputs (Morse index "
                                     f"{eq.morse_index})", field=field)
-    return ArmState(eq.q.copy(), F.copy(), eq.tip.copy(), float(eq.energy), 0, True)
+    F = eq.force.copy() if held else np.asarray(load, float).copy()
+    return ArmState(eq.q.copy(), F, eq.tip.copy(), float(eq.energy), 0, True)
 
 
 def _pair(v, shape: tuple[int, ...], name: str) -> np.ndarray:
@@ -632,7 +640,7 @@ def follow(m: Manipulator, state: ArmState, P0, P1, F0, F1, *, perturbation: flo
         end, status, message = mv.run(state)
     except TimeLimitError:
         end, status, message = None, "time_limit", "the time limit ran out"
-    except (TensegrityError, NoEquilibriumError) as exc:
+    except TensegrityError as exc:
         end, status, message = None, "failed", str(exc)
     least, at = mv.least
     events = tuple(mv.events)
