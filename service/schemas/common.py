@@ -7,7 +7,7 @@ Imports nothing from its sibling modules (they all import it).
 
 from __future__ import annotations
 
-from typing import Annotated, Any, Union
+from typing import Annotated, Any, Literal, Union
 
 from pydantic import AfterValidator, BaseModel, BeforeValidator, ConfigDict, Discriminator, Field, Tag
 from pydantic_core import PydanticCustomError
@@ -151,6 +151,13 @@ TotalLength = Annotated[Union[bool, Annotated[float, Field(gt=0, le=MAX_LENGTH, 
 
 
 # ---------------------------------------------------------------------------- manipulator
+SpringLaw = Annotated[Literal["linear", "tension_only"], Field(
+    description="the springs' law: `linear` (the paper's model: force k (L - L0) at every length, a spring shorter "
+                "than its rest length pushes) or `tension_only` (force k max(0, L - L0): it goes slack, as a real "
+                "extension spring or cable). Analyses that do not honour `tension_only` refuse it (422 "
+                "`unsupported`, field `segments[i].spring`)")]
+
+
 class SegmentIn(BaseModel):
     """One dual-triangle segment."""
 
@@ -162,6 +169,7 @@ class SegmentIn(BaseModel):
     b: Length = Field(description="triangle half-length (length units); the segment is 2b long")
     k: StiffPair = 1.0
     L0: LengthPair = 1.0
+    spring: SpringLaw = "linear"
 
 
 class UniformManipulatorIn(BaseModel):
@@ -176,6 +184,7 @@ class UniformManipulatorIn(BaseModel):
     b: Length = Field(1.0, description="triangle half-length (length units)")
     k: StiffPair = 1.0
     L0: LengthPair = 1.0
+    spring: SpringLaw = "linear"
 
 
 class SegmentedManipulatorIn(BaseModel):
@@ -199,7 +208,7 @@ def _manipulator_union(uniform: type, segmented: type, what: str) -> Any:
     return Annotated[
         Union[Annotated[uniform, Tag("<uniform>")], Annotated[segmented, Tag("<segments>")]],
         Discriminator(_manipulator_kind),
-        Field(description=f'{what}: {{"n", "a", "b", "k", "L0"}} (uniform) or {{"segments": [...]}}'),
+        Field(description=f'{what}: {{"n", "a", "b", "k", "L0", "spring"}} (uniform) or {{"segments": [...]}}'),
     ]
 
 
@@ -250,6 +259,39 @@ class AngleRange(RangeIn):
 
 
 # ---------------------------------------------------------------------------- shared answers
+SpringState = Literal["taut", "slack", "pushing"]
+_SPRING_DOC = {
+    "spring_lengths": "each spring's length L (length units), [spring 1, spring 2] per segment",
+    "spring_stretches": "L - L0 per spring (negative: shorter than its rest length)",
+    "spring_forces": "each spring's force, tension positive: k (L - L0) (linear law), k max(0, L - L0) (tension-only)",
+    "spring_states": "`taut` (L >= L0), `slack` (tension-only, L < L0: no force) or `pushing` (linear law, L < L0: "
+                     "a compressive force a real tension spring cannot carry)",
+}
+
+
+class SpringStateOut(BaseModel):
+    """The spring state of one configuration (n x 2 each: spring 1 then spring 2 of each segment; declared once,
+    mixed into every answer that carries a configuration)."""
+
+    spring_lengths: list[list[float]] | None = Field(description=_SPRING_DOC["spring_lengths"])
+    spring_stretches: list[list[float]] | None = Field(description=_SPRING_DOC["spring_stretches"])
+    spring_forces: list[list[float]] | None = Field(description=_SPRING_DOC["spring_forces"])
+    spring_states: list[list[SpringState]] | None = Field(description=_SPRING_DOC["spring_states"])
+
+
+class SpringSeriesOut(BaseModel):
+    """The spring state of a series of configurations (points x n x 2; a point without a configuration null)."""
+
+    spring_lengths: list[list[list[float]] | None] | None = Field(description=_SPRING_DOC["spring_lengths"]
+                                                                  + ", per point")
+    spring_stretches: list[list[list[float]] | None] | None = Field(description=_SPRING_DOC["spring_stretches"]
+                                                                    + ", per point")
+    spring_forces: list[list[list[float]] | None] | None = Field(description=_SPRING_DOC["spring_forces"]
+                                                                 + ", per point")
+    spring_states: list[list[list[SpringState]] | None] | None = Field(description=_SPRING_DOC["spring_states"]
+                                                                       + ", per point")
+
+
 class Force(BaseModel):
     fx: float = Field(description="tip force along x (force units)")
     fy: float = Field(description="tip force along y (force units)")

@@ -39,6 +39,8 @@ from .common import (
     Length,
     ManipulatorIn,
     SolverInfo,
+    SpringSeriesOut,
+    SpringStateOut,
     bounds_of,
     integral,
     outcome_model,
@@ -213,7 +215,7 @@ class SimulationEventOut(outcome_model(SimulationEvent)):
     method: str = Field(description="moore_spence, test_function or limit")
 
 
-class PlanStepOut(outcome_model(to.results.PreloadStep)):
+class PlanStepOut(SpringStateOut, outcome_model(to.results.PreloadStep)):
     """One step of a plan (`PreloadStep.to_dict()`)."""
 
     command: list[list[float]] = Field(description="[L1_0, L2_0] per segment: what to send (an infeasible step: the "
@@ -246,7 +248,7 @@ class PlanStepOut(outcome_model(to.results.PreloadStep)):
                     "reaching its stop; `step` is the step's index, `fraction` where in its move")
 
 
-class PlanOut(outcome_model(to.PreloadPlan)):
+class PlanOut(SpringSeriesOut, outcome_model(to.PreloadPlan)):
     """`PreloadPlan.to_dict()`: per step done (`K` rows, fewer when the time limit cut the plan)."""
 
     seconds: float = Field(description="wall time of the plan (s)")
@@ -334,7 +336,7 @@ class SimulationRequest(_SimulationFields):
         "examples": [SIMULATION_REQUEST_EXAMPLE]})
 
 
-class SimulationOut(outcome_model(Simulation)):
+class SimulationOut(SpringSeriesOut, outcome_model(Simulation)):
     """`Simulation.to_dict()`: the state at each sample done (`done` of `steps`) and the events; `status` says how
     it ended (time_limit: cut by the server's time limit; the samples done are kept)."""
 
@@ -407,7 +409,7 @@ class ForceEstimateRequest(BaseModel):
     measured: MeasuredIn | None = None
 
 
-class ForceEstimateOut(outcome_model(to.ForceEstimate)):
+class ForceEstimateOut(SpringStateOut, outcome_model(to.ForceEstimate)):
     """`ForceEstimate.to_dict()`."""
 
     force: Force = Field(description="the estimated tip force (force units)")
@@ -471,7 +473,7 @@ class StiffnessDesignRequest(BaseModel):
         4, description="arm shapes tried (the target's equilibria, stable first)")
 
 
-class StiffnessDesignOut(outcome_model(to.StiffnessDesign)):
+class StiffnessDesignOut(SpringStateOut, outcome_model(to.StiffnessDesign)):
     """`StiffnessDesign.to_dict()`: verified by the forward solve and `cartesian_stiffness`."""
 
     manipulator: dict[str, Any]

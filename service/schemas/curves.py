@@ -17,6 +17,7 @@ from .common import (
     Force,
     ManipulatorIn,
     SolverInfo,
+    SpringStateOut,
     list_or_range,
     outcome_model,
 )
@@ -45,7 +46,7 @@ class ForceDeflectionRequest(BaseModel):
                                 'dx = dy = 0)')
 
 
-class CurvePoint(BaseModel):
+class CurvePoint(SpringStateOut):
     dx: float
     dy: float
     fx: float
@@ -91,7 +92,7 @@ class CurveEndOut(outcome_model(to.results.CurveEnd)):
     dy: float
 
 
-class BranchPoint(BaseModel):
+class BranchPoint(SpringStateOut):
     """A point of one followed branch; numbers are null where the branch does not exist."""
 
     dx: float

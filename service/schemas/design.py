@@ -21,6 +21,7 @@ from .common import (
     SegmentedManipulatorIn,
     SegmentIn,
     SolverInfo,
+    SpringStateOut,
     TotalLength,
     UniformManipulatorIn,
     _manipulator_union,
@@ -149,7 +150,7 @@ class ActiveBoundOut(BaseModel):
     bound: float = Field(description="the bound it is at")
 
 
-class PreloadsOut(outcome_model(to.PreloadDesign)):
+class PreloadsOut(SpringStateOut, outcome_model(to.PreloadDesign)):
     """`PreloadDesign.to_dict()`: rest lengths for a pose, verified by the forward equilibrium."""
 
     manipulator: ManipulatorOut

@@ -17,6 +17,7 @@ from .common import (
     ForceValue,
     ManipulatorIn,
     SolverInfo,
+    SpringStateOut,
     TipDx,
     TipDy,
     outcome_model,
@@ -92,7 +93,7 @@ class EnergyBoundOut(outcome_model(to.EnergyBound)):
     seconds: float = Field(description="wall time of the bound (s)")
 
 
-class EquilibriumOut(outcome_model(to.Equilibrium)):
+class EquilibriumOut(SpringStateOut, outcome_model(to.Equilibrium)):
     """An equilibrium configuration."""
 
     q: list[float] = Field(description="relative joint angles (rad)")

@@ -34,6 +34,7 @@ from .common import (
     Length,
     LengthPair,
     SegmentIn,
+    SpringLaw,
     Stiff,
     StiffPair,
     TotalLength,
@@ -79,6 +80,7 @@ class SweepUniformManipulator(BaseModel):
     b: Length = Field(1.0, description="triangle half-length")
     k: StiffPair = 1.0
     L0: LengthPair = 1.0
+    spring: SpringLaw = "linear"
 
 
 class SweepSegmentedManipulator(BaseModel):
@@ -89,8 +91,8 @@ class SweepSegmentedManipulator(BaseModel):
         {"a": 1.0, "b": 1.0, "k": 1.0, "L0": [1.05, 0.95]}, {"a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0}]}]})
 
     segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
-                                      description="segments from base to tip ({a, b, k, L0}; k and L0 a number or "
-                                                  "the pair of the two springs)")
+                                      description="segments from base to tip ({a, b, k, L0, spring}; k and L0 a "
+                                                  "number or the pair of the two springs)")
 
 
 def _sweep_manipulator_kind(v: Any) -> str:
@@ -109,8 +111,13 @@ class SweepManipulator(RootModel[Annotated[
     model_config = ConfigDict(strict=True)
 
     def to_spec(self) -> dict[str, Any]:
-        """The library's ``manipulator`` of the spec: the five uniform keys, or ``{"segments": [...]}`` only."""
-        return self.root.model_dump()
+        """The library's ``manipulator`` of the spec: the five uniform keys, or ``{"segments": [...]}`` only;
+        ``spring`` only where it is not the default ``"linear"`` (as :meth:`tensegrity_opt.Manipulator.to_dict`)."""
+        d = self.root.model_dump()
+        for part in d.get("segments", [d]):
+            if part.get("spring") == "linear":
+                del part["spring"]
+        return d
 
 
 class SweepGrid(BaseModel):

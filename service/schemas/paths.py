@@ -32,6 +32,8 @@ from .common import (
     ForceValue,
     Int,
     ManipulatorIn,
+    SpringSeriesOut,
+    SpringStateOut,
     TipDx,
     TipDy,
     integral,
@@ -299,7 +301,7 @@ class ControlOut(BaseModel):
     tip: Literal["free", "held"] | None = Field(None, description="preload only")
 
 
-class BranchEventOut(BaseModel):
+class BranchEventOut(SpringStateOut):
     """A special point, located between points `index` and `index + 1`."""
 
     kind: Literal[EVENT_KINDS] = Field(description="fold (t turns back: snap-through under this control), "
@@ -319,7 +321,7 @@ class BranchEventOut(BaseModel):
     joint: int | None = Field(description="the joint at its limit (0-based), joint_limit only")
 
 
-class TracedBranchOut(outcome_model(to.Branch)):
+class TracedBranchOut(SpringSeriesOut, outcome_model(to.Branch)):
     """An equilibrium branch: per point the parameter, configuration, force, tip, energy and stability; `status`
     says how it ended (`success` false: the corrector failed or time ran out, the points computed are kept)."""
 
@@ -344,7 +346,7 @@ class BifurcationDiagramOut(BaseModel):
                                                         "the switched branches breadth-first")
 
 
-class LimitLoadOut(outcome_model(to.LimitLoad)):
+class LimitLoadOut(SpringStateOut, outcome_model(to.LimitLoad)):
     """The limit load: `status` stability_lost (`kind` fold or bifurcation), or why the path has none."""
 
     load: float | None = Field(description="the load where stability is first lost (null for kind none)")

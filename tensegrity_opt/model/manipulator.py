@@ -23,6 +23,7 @@ import numpy as np
 
 from ..errors import InvalidParameterError, UnreachableTargetError, unknown_name
 from .segment import Segment
+from .springs import Springs, linear_only
 
 __all__ = ["Manipulator", "TipKinematics"]
 
@@ -40,7 +41,7 @@ class TipKinematics(NamedTuple):
     Jy: np.ndarray
 
 
-_SEGMENT_KEYS = ("a", "b", "k", "L0")
+_SEGMENT_KEYS = ("a", "b", "k", "L0", "spring")
 
 
 def _known_keys(d: dict[str, Any], keys: tuple[str, ...], prefix: str) -> None:
@@ -93,16 +94,16 @@ class Manipulator:
 
     @classmethod
     def uniform(cls, n: int, a: float = 1.0, b: float = 1.0, k: float | tuple[float, float] = 1.0,
-                L0: float | tuple[float, float] = 1.0) -> "Manipulator":
-        """``n`` identical segments ``Segment(a, b, k, L0)``."""
+                L0: float | tuple[float, float] = 1.0, spring: str = "linear") -> "Manipulator":
+        """``n`` identical segments ``Segment(a, b, k, L0, spring)``."""
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
             raise InvalidParameterError(f"n must be an integer >= 1, got {n!r}", field="n")
-        seg = Segment(a, b, k, L0)
+        seg = Segment(a, b, k, L0, spring)
         return cls((seg,) * int(n))
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> "Manipulator":
-        """From ``{"n", "a", "b", "k", "L0"}`` (uniform) or ``{"segments": [...]}``; a key it does not know is
+        """From ``{"n", "a", "b", "k", "L0", "spring"}`` (uniform) or ``{"segments": [...]}``; a key it does not know is
         refused naming the nearest valid one (``segments[0].l0: unknown key; did you mean L0?``)."""
         if "segments" in d:
             _known_keys(d, ("segments",), "")
@@ -111,11 +112,13 @@ class Manipulator:
                     _known_keys(s, _SEGMENT_KEYS, f"segments[{i}].")
             return cls(Segment(**s) for s in d["segments"])
         _known_keys(d, ("n", *_SEGMENT_KEYS), "")
-        return cls.uniform(d.get("n", 4), d.get("a", 1.0), d.get("b", 1.0), d.get("k", 1.0), d.get("L0", 1.0))
+        return cls.uniform(d.get("n", 4), d.get("a", 1.0), d.get("b", 1.0), d.get("k", 1.0), d.get("L0", 1.0),
+                           d.get("spring", "linear"))
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form ``{"segments": [{"a", "b", "k", "L0"}, ...]}`` (``k`` / ``L0`` one number when both
-        springs agree, else the pair): what the API returns for a chain, accepted by :meth:`from_dict`."""
+        springs agree, else the pair; ``spring`` where it is not ``"linear"``): what the API returns for a chain,
+        accepted by :meth:`from_dict`."""
         return {"segments": [s.to_dict() for s in self.segments]}
 
     # ------------------------------------------------------------------ arrays
@@ -155,8 +158,26 @@ class Manipulator:
         return self._col("L2_0")
 
     @cached_property
+    def springs(self) -> Springs:
+        """The chain's springs as arrays: their law and their state at any configuration
+        (:class:`~tensegrity_opt.model.springs.Springs`)."""
+        return Springs(c=np.hypot(self.a, self.b), beta=np.arctan2(self.a, self.b),
+                       k=np.column_stack([self.k1, self.k2]), L0=np.column_stack([self.L1_0, self.L2_0]),
+                       tension_only=np.array([s.tension_only for s in self.segments]))
+
+    @property
+    def linear_springs(self) -> bool:
+        """Every spring follows the linear law (the paper's model)."""
+        return self.springs.linear
+
+    @cached_property
     def params(self) -> np.ndarray:
-        """Flat parameter vector ``[a, b, k1, k2, L1_0, L2_0]`` (each of length n) for the solvers."""
+        """Flat parameter vector ``[a, b, k1, k2, L1_0, L2_0]`` (each of length n) for the solvers.
+
+        The solvers built on it (CasADi: Newton, IPOPT, continuation, the design NLPs) model the linear spring
+        law: a chain with a tension-only segment is refused here (:func:`~.springs.linear_only`), so no analysis
+        silently answers for the linear law."""
+        linear_only(self, "this analysis (its solvers model the linear spring law)")
         p = np.concatenate([self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0])
         p.setflags(write=False)           # shared by every solve of this chain: never modified
         return p
@@ -303,12 +324,17 @@ class Manipulator:
         return L1, L2
 
     def spring_forces(self, q: Any) -> tuple[np.ndarray, np.ndarray]:
-        """Per-segment spring tensions ``k_i (L_i - L_i0)``."""
+        """Per-segment spring tensions ``k_i (L_i - L_i0)`` (``k_i max(0, L_i - L_i0)`` under the tension-only law)."""
+        if not self.linear_springs:
+            f = self.springs.forces(self._q(q))
+            return f[:, 0], f[:, 1]
         L1, L2 = self.spring_lengths(q)
         return self.k1 * (L1 - self.L1_0), self.k2 * (L2 - self.L2_0)
 
     def energy(self, q: Any) -> float:
-        """Total elastic energy ``sum_i E_i(q_i)``."""
+        """Total elastic energy ``sum_i E_i(q_i)`` (under each segment's spring law)."""
+        if not self.linear_springs:
+            return float(self.springs.energy(self._q(q)))
         L1, L2 = self.spring_lengths(q)
         return float(0.5 * (self.k1 @ (L1 - self.L1_0) ** 2 + self.k2 @ (L2 - self.L2_0) ** 2))
 
@@ -316,7 +342,10 @@ class Manipulator:
         """Joint torques ``M_i(q_i) = -dE/dq_i`` (eq. 1, general form)."""
         q = self._q(q)
         c, beta, L1, L2 = self._springs(q)
-        F1, F2 = self.k1 * (L1 - self.L1_0), self.k2 * (L2 - self.L2_0)
+        if self.linear_springs:
+            F1, F2 = self.k1 * (L1 - self.L1_0), self.k2 * (L2 - self.L2_0)
+        else:
+            F1, F2 = self.spring_forces(q)
         return c * (F1 * np.sin(beta + q / 2.0) - F2 * np.sin(beta - q / 2.0))
 
     def gradient(self, q: Any) -> np.ndarray:
@@ -349,8 +378,12 @@ class Manipulator:
         F = np.asarray(F, dtype=float).reshape(-1, 2)
         c, beta = np.hypot(self.a, self.b), np.arctan2(self.a, self.b)
         L1, L2 = 2.0 * c * np.cos(beta + Q / 2.0), 2.0 * c * np.cos(beta - Q / 2.0)
-        torques = c * (self.k1 * (L1 - self.L1_0) * np.sin(beta + Q / 2.0)
-                       - self.k2 * (L2 - self.L2_0) * np.sin(beta - Q / 2.0))
+        if self.linear_springs:
+            F1, F2 = self.k1 * (L1 - self.L1_0), self.k2 * (L2 - self.L2_0)
+        else:
+            f = self.springs.forces(Q)
+            F1, F2 = f[..., 0], f[..., 1]
+        torques = c * (F1 * np.sin(beta + Q / 2.0) - F2 * np.sin(beta - Q / 2.0))
         phi = np.cumsum(Q, axis=1)
         l = self.link_lengths
         # (J^T F)_i = sum over the links j >= i of d tip_j / d phi_j . F
@@ -363,3 +396,7 @@ class Manipulator:
     def mirrored(self) -> "Manipulator":
         """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""
         return Manipulator(s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments)
+
+    def with_spring(self, spring: str) -> "Manipulator":
+        """The same chain with every segment's spring law set to ``spring``."""
+        return Manipulator(s.replace(spring=spring) for s in self.segments)

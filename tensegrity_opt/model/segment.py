@@ -21,7 +21,8 @@ from typing import Any
 
 import numpy as np
 
-from ..errors import InvalidParameterError
+from ..errors import InvalidParameterError, UnsupportedError
+from .springs import spring_law
 
 __all__ = ["Segment", "clean_coefficients", "CLEAN_TOL", "MERGE_TOL"]
 
@@ -70,6 +71,10 @@ class Segment:
     L0 : float or (float, float)
         Spring rest lengths (the preloads / control inputs); one number or the
         pair ``(L1_0, L2_0)``.
+    spring : {"linear", "tension_only"}
+        The springs' law (:data:`~tensegrity_opt.model.springs.SPRING_LAWS`): ``"linear"`` (the paper's
+        model: a spring shorter than its rest length pushes) or ``"tension_only"`` (it goes slack and
+        carries nothing: a real extension spring or cable).
 
     Raises
     ------
@@ -84,9 +89,10 @@ class Segment:
     k2: float
     L1_0: float
     L2_0: float
+    spring: str
 
     def __init__(self, a: float, b: float, k: float | tuple[float, float] = 1.0,
-                 L0: float | tuple[float, float] = 1.0) -> None:
+                 L0: float | tuple[float, float] = 1.0, spring: str = "linear") -> None:
         object.__setattr__(self, "a", _positive(a, "a"))
         object.__setattr__(self, "b", _positive(b, "b"))
         k1, k2 = _pair(k, "k", ("k1", "k2"))
@@ -95,6 +101,7 @@ class Segment:
         object.__setattr__(self, "k2", k2)
         object.__setattr__(self, "L1_0", l1)
         object.__setattr__(self, "L2_0", l2)
+        object.__setattr__(self, "spring", spring_law(spring))
 
     # ------------------------------------------------------------------ geometry
     @property
@@ -128,8 +135,9 @@ class Segment:
         return self.L1_0 if self.L1_0 == self.L2_0 else (self.L1_0, self.L2_0)
 
     def replace(self, **changes: Any) -> "Segment":
-        """A copy with some of ``a``, ``b``, ``k``, ``L0`` changed."""
-        args = {"a": self.a, "b": self.b, "k": (self.k1, self.k2), "L0": (self.L1_0, self.L2_0)}
+        """A copy with some of ``a``, ``b``, ``k``, ``L0``, ``spring`` changed."""
+        args = {"a": self.a, "b": self.b, "k": (self.k1, self.k2), "L0": (self.L1_0, self.L2_0),
+                "spring": self.spring}
         unknown = set(changes) - set(args)
         if unknown:
             raise InvalidParameterError(f"unknown segment field(s): {sorted(unknown)}", field=sorted(unknown)[0])
@@ -137,11 +145,20 @@ class Segment:
         return Segment(**args)
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-friendly form accepted back by ``Segment(**d)``."""
+        """JSON-friendly form accepted back by ``Segment(**d)`` (``spring`` only when it is not the default
+        ``"linear"``)."""
         k = self.k
         L0 = self.L0
-        return {"a": self.a, "b": self.b, "k": list(k) if isinstance(k, tuple) else k,
-                "L0": list(L0) if isinstance(L0, tuple) else L0}
+        out = {"a": self.a, "b": self.b, "k": list(k) if isinstance(k, tuple) else k,
+               "L0": list(L0) if isinstance(L0, tuple) else L0}
+        if self.spring != "linear":
+            out["spring"] = self.spring
+        return out
+
+    @property
+    def tension_only(self) -> bool:
+        """The springs follow the tension-only law (slack below their rest length)."""
+        return self.spring == "tension_only"
 
     # ------------------------------------------------------------------ springs
     def spring_lengths(self, q: Any) -> tuple[np.ndarray, np.ndarray]:
@@ -150,12 +167,27 @@ class Segment:
         return (2.0 * self.c * np.cos(self.beta + q / 2.0), 2.0 * self.c * np.cos(self.beta - q / 2.0))
 
     def spring_forces(self, q: Any) -> tuple[np.ndarray, np.ndarray]:
-        """Spring tensions ``F_i = k_i (L_i - L_i0)`` (force units; > 0 in tension)."""
+        """Spring tensions ``F_i = k_i (L_i - L_i0)`` (force units; > 0 in tension); ``k_i max(0, L_i - L_i0)``
+        under the tension-only law."""
         L1, L2 = self.spring_lengths(q)
-        return self.k1 * (L1 - self.L1_0), self.k2 * (L2 - self.L2_0)
+        s1, s2 = L1 - self.L1_0, L2 - self.L2_0
+        if self.tension_only:
+            s1, s2 = np.maximum(s1, 0.0), np.maximum(s2, 0.0)
+        return self.k1 * s1, self.k2 * s2
+
+    def _taut(self, q: Any) -> tuple[Any, Any]:
+        """The factors ``dF_i/dL_i / k_i``: 1 (linear law, or taut), 0 where a tension-only spring is slack."""
+        if not self.tension_only:
+            return 1.0, 1.0
+        L1, L2 = self.spring_lengths(q)
+        return (L1 > self.L1_0).astype(float), (L2 > self.L2_0).astype(float)
 
     def energy(self, q: Any) -> np.ndarray:
-        """Elastic energy ``k1/2 (L1 - L1_0)^2 + k2/2 (L2 - L2_0)^2``."""
+        """Elastic energy ``k1/2 (L1 - L1_0)^2 + k2/2 (L2 - L2_0)^2`` (each stretch clipped at 0 under the
+        tension-only law)."""
+        if self.tension_only:
+            F1, F2 = self.spring_forces(q)
+            return 0.5 * F1 * F1 / self.k1 + 0.5 * F2 * F2 / self.k2
         L1, L2 = self.spring_lengths(q)
         return 0.5 * self.k1 * (L1 - self.L1_0) ** 2 + 0.5 * self.k2 * (L2 - self.L2_0) ** 2
 
@@ -168,14 +200,16 @@ class Segment:
         return self.c * (F1 * s1 - F2 * s2)
 
     def dtorque(self, q: Any) -> np.ndarray:
-        """Derivative ``M'(q) = -E''(q)``; the segment alone is stable where it is < 0."""
+        """Derivative ``M'(q) = -E''(q)``; the segment alone is stable where it is < 0 (under the tension-only law
+        the one-sided value on the side where the springs' states hold: a slack spring adds nothing)."""
         q = np.asarray(q, dtype=float)
         c = self.c
         F1, F2 = self.spring_forces(q)
+        t1, t2 = self._taut(q)
         s1, c1 = np.sin(self.beta + q / 2.0), np.cos(self.beta + q / 2.0)
         s2, c2 = np.sin(self.beta - q / 2.0), np.cos(self.beta - q / 2.0)
-        return (-self.k1 * c * c * s1 * s1 + 0.5 * c * F1 * c1
-                - self.k2 * c * c * s2 * s2 + 0.5 * c * F2 * c2)
+        return (-t1 * self.k1 * c * c * s1 * s1 + 0.5 * c * F1 * c1
+                - t2 * self.k2 * c * c * s2 * s2 + 0.5 * c * F2 * c2)
 
     @property
     def stiffness(self) -> float:
@@ -201,7 +235,14 @@ class Segment:
         ``E' = -k1 (L1 - L10)(b s + a c) + k2 (L2 - L20)(a c - b s)`` with ``L1 = 2 b c - 2 a s``,
         ``L2 = 2 b c + 2 a s``, i.e. ``E' = A c^2 + B s^2 + C c s + D c + Es s``, and
         ``c^2 = (z^2 + 2 + z^-2)/4``, ``s^2 = -(z^2 - 2 + z^-2)/4``, ``c s = -i (z^2 - z^-2)/4``.
+
+        The linear law's torque only: a tension-only segment's torque is piecewise (one polynomial per
+        taut / slack pattern), so this refuses it (:class:`UnsupportedError`, ``field="spring"``).
         """
+        if self.tension_only:
+            raise UnsupportedError("the torque polynomial (and the unloaded critical angles built on it) holds for "
+                                   "the linear spring law only; this segment's spring is 'tension_only'",
+                                   field="spring", spring="tension_only")
         aj, bj, k1, k2, L10, L20 = self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0
         A = -2.0 * aj * bj * k1 + 2.0 * aj * bj * k2
         B = 2.0 * aj * bj * k1 - 2.0 * aj * bj * k2

@@ -39,8 +39,38 @@ def outcome(r) -> dict[str, Any]:
     return {"success": bool(r.success), "status": str(r.status), "message": str(r.message)}
 
 
+def springs_out(q, sp) -> dict[str, Any]:
+    """The spring state at ``q`` written out spring by spring (plain floats): ``L = 2 c cos(beta -+ q/2)`` from the
+    segments' ``c``, ``beta``, ``k``, ``L0`` and law (``sp``), the force ``k (L - L0)`` or ``k max(0, L - L0)``, the
+    state ``taut`` / ``slack`` / ``pushing`` (shorter than ``L0`` by more than 1e-9 of it)."""
+    names = ("spring_lengths", "spring_stretches", "spring_forces", "spring_states")
+    if q is None or not all(math.isfinite(float(v)) for v in q):
+        return dict.fromkeys(names)
+    out: dict[str, list] = {k: [] for k in names}
+    for i, qi in enumerate(q):
+        c, beta, tension_only = float(sp.c[i]), float(sp.beta[i]), bool(sp.tension_only[i])
+        row = {k: [] for k in names}
+        for j, L in enumerate((2.0 * c * math.cos(beta + float(qi) / 2.0), 2.0 * c * math.cos(beta - float(qi) / 2.0))):
+            L0, k = float(sp.L0[i][j]), float(sp.k[i][j])
+            stretch = L - L0
+            short = stretch < -1e-9 * L0
+            row["spring_lengths"].append(L)
+            row["spring_stretches"].append(stretch)
+            row["spring_forces"].append(k * max(0.0, stretch) if tension_only else k * stretch)
+            row["spring_states"].append(("slack" if tension_only else "pushing") if short else "taut")
+        for k in names:
+            out[k].append(row[k])
+    return out
+
+
+def springs_series_out(Q, sp) -> dict[str, Any]:
+    """:func:`springs_out` of each row of ``Q``, as lists per field."""
+    rows = [springs_out(q, sp) for q in Q]
+    return {k: [r[k] for r in rows] for k in ("spring_lengths", "spring_stretches", "spring_forces", "spring_states")}
+
+
 def equilibrium_out(eq) -> dict[str, Any]:
-    return {**outcome(eq), "q": _nums(eq.q), "energy": _num(eq.energy), "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
+    return {**outcome(eq), **springs_out(eq.q, eq.springs), "q": _nums(eq.q), "energy": _num(eq.energy), "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
             "morse_index": int(eq.morse_index), "stable": bool(eq.stable), "kind": eq.kind, "shape": eq.shape,
             "signs": eq.signs, "tip": _nums(eq.tip),
             "solver": {"status": str(eq.solver.status),
@@ -88,7 +118,8 @@ def _force(v: Any) -> dict[str, float]:
 
 
 def curve_out(c) -> dict[str, Any]:
-    points = [{"dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]), "fy": _num(c.fy[i]),
+    points = [{**springs_out(c.q[i], c.springs), "dx": _num(c.dx[i]), "dy": _num(c.dy[i]), "fx": _num(c.fx[i]),
+               "fy": _num(c.fy[i]),
                "energy": _num(c.energy[i]), "q": _nums(c.q[i]), "stable": bool(c.stable[i]),
                "morse_index": int(c.morse_index[i]), "shape": c.shape[i], "branch": int(c.branch[i]),
                "status": c.point_status[i],
@@ -106,7 +137,8 @@ def curve_out(c) -> dict[str, Any]:
         pts = []
         for i in range(br.dx.size):
             exists = bool(np.isfinite(br.energy[i]))
-            pts.append({"dx": _num(br.dx[i]), "dy": _num(br.dy[i]), "exists": exists, "fx": _f(br.fx[i]),
+            pts.append({**springs_out(br.q[i], br.springs), "dx": _num(br.dx[i]), "dy": _num(br.dy[i]),
+                        "exists": exists, "fx": _f(br.fx[i]),
                         "fy": _f(br.fy[i]), "energy": _f(br.energy[i]),
                         "q": [_f(v) for v in br.q[i]], "stable": bool(br.stable[i]),
                         "morse_index": int(br.morse_index[i]), "shape": br.shape[i]})
@@ -128,7 +160,8 @@ def landscape_out(land) -> dict[str, Any]:
 def manipulator_out(m) -> dict[str, Any]:
     return {"segments": [{"a": _num(sg.a), "b": _num(sg.b),
                           "k": _num(sg.k1) if sg.k1 == sg.k2 else [_num(sg.k1), _num(sg.k2)],
-                          "L0": _num(sg.L1_0) if sg.L1_0 == sg.L2_0 else [_num(sg.L1_0), _num(sg.L2_0)]}
+                          "L0": _num(sg.L1_0) if sg.L1_0 == sg.L2_0 else [_num(sg.L1_0), _num(sg.L2_0)],
+                          **({} if sg.spring == "linear" else {"spring": sg.spring})}
                          for sg in m.segments]}
 
 
@@ -140,7 +173,8 @@ def design_out(d) -> dict[str, Any]:
 
 
 def preload_design_out(r) -> dict[str, Any]:
-    return {**outcome(r), "manipulator": manipulator_out(r.manipulator), "preloads": _nums(r.preloads), "q": _nums(r.q),
+    return {**outcome(r), **springs_out(r.q, r.manipulator.springs), "manipulator": manipulator_out(r.manipulator),
+            "preloads": _nums(r.preloads), "q": _nums(r.q),
             "margin": _num(r.margin), "tip": _nums(r.tip), "energy": _num(r.energy),
             "active_bounds": [{"segment": int(b.segment), "variable": b.variable, "side": b.side,
                                "value": _num(b.value), "bound": _num(b.bound)} for b in r.active_bounds],

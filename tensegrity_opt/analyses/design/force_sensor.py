@@ -20,13 +20,14 @@ to relative joint angles here.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
@@ -57,7 +58,7 @@ MAX_STEP = 0.5
 
 
 @dataclass(frozen=True)
-class ForceEstimate(Outcome, TipForce):
+class ForceEstimate(Outcome, TipForce, SpringFields):
     """The tip force estimated from joint angles (:func:`estimate_tip_force`).
 
     Attributes
@@ -101,6 +102,8 @@ class ForceEstimate(Outcome, TipForce):
         with the weight at the unweighted estimate, its covariance and ``chi2`` at that point.
     iterations : int
         Gauss-Newton / re-weighting iterations made.
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        The springs at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`).
     message : str
         The status in a sentence, with the residual (and ``chi2`` with ``sigma_q``).
     """
@@ -129,6 +132,7 @@ class ForceEstimate(Outcome, TipForce):
     hidden_covariance: np.ndarray | None
     status: str
     iterations: int
+    springs: Springs | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         freeze(self, copy=False)
@@ -153,8 +157,10 @@ class ForceEstimate(Outcome, TipForce):
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``force`` ``{fx, fy}``, ``covariance`` (2 x 2 lists or
         null), ``residual_torque``, ``residual_norm``, ``chi2``, ``dof``, ``p_value``, ``joint_chi2``, ``q``,
-        ``measured``, ``hidden_covariance``, ``iterations``; every number finite (:mod:`tensegrity_opt.serialize`)."""
-        return {**self.outcome(), "force": {"fx": number(self.fx), "fy": number(self.fy)},
+        ``measured``, ``hidden_covariance``, ``iterations``, the spring state at ``q`` (``spring_lengths``,
+        ``spring_stretches``, ``spring_forces``, ``spring_states``); every number finite
+        (:mod:`tensegrity_opt.serialize`)."""
+        return {**self.outcome(), **self.spring_dict(), "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "covariance": None if self.covariance is None else numbers(self.covariance),
                 "residual_torque": numbers(self.residual_torque), "residual_norm": number(self.residual_norm),
                 "chi2": None if self.chi2 is None else number(self.chi2), "dof": int(self.dof),
@@ -547,4 +553,4 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
     return ForceEstimate(force=np.asarray(F, float).copy(), covariance=cov, residual_torque=r.copy(),
                          residual_norm=float(np.linalg.norm(r)), chi2=chi2, dof=dof, p_value=p_value, joint_chi2=joint,
                          q=q.copy(), measured=tuple(int(i) for i in idx), hidden_covariance=hcov,
-                         status=status, iterations=iterations)
+                         status=status, iterations=iterations, springs=m.springs)

@@ -70,7 +70,7 @@ from __future__ import annotations
 import math
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
@@ -85,6 +85,7 @@ from ...errors import (
     TimeLimitError,
 )
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...numerics import chain_solver
 from ...numerics.inverse_statics import inverse_statics
 from ...numerics.inverse_statics import layouts as step_layouts
@@ -161,7 +162,7 @@ def step_times(K: int, times=None, dt: float | None = None, rate_limit=None) -> 
 
 
 @dataclass(frozen=True)
-class PreloadStep(Outcome):
+class PreloadStep(Outcome, SpringFields):
     """One control step (:meth:`PreloadController.step`).
 
     Attributes
@@ -207,6 +208,8 @@ class PreloadStep(Outcome):
     transition_margin : float
         The least stability margin along the step's transition (torque / rad; 0 where the arm snapped; NaN when no
         transition was followed).
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        The springs at ``q`` under the command (:class:`~tensegrity_opt.model.springs.SpringFields`).
     events : tuple of SimulationEvent
         What happened during the transition: the snaps (``kind`` ``"snap"`` or ``"bifurcation"``, with the landing
         ``q_after`` and ``tip_after``) and a joint reaching its stop (``"joint_limit"``); ``step`` is the step's index
@@ -250,6 +253,10 @@ class PreloadStep(Outcome):
     verified: bool = False
     transition_margin: float = math.nan
     events: tuple = ()
+    springs: Springs | None = field(default=None, repr=False, compare=False)
+
+    def _spring_rest_lengths(self) -> np.ndarray:
+        return self.command
 
     def __post_init__(self) -> None:
         # the controller passes arrays it owns: read-only in place (this is on the control loop's path)
@@ -286,8 +293,9 @@ class PreloadStep(Outcome):
         """JSON form: ``success``, ``status``, ``message``, ``command``, ``proposal``, ``q``, ``tip``, ``end_angle``,
         ``margin`` and ``energy`` (null: no equilibrium), ``tip_error``, ``proposal_tip``, ``feasible``, ``method``,
         ``solver`` ``{status, iterations}``, ``residual`` (null: not a Newton step), ``target``, ``verified``,
-        ``transition_margin`` (null: none followed), ``events``."""
-        return {**self.outcome(), "command": [numbers(r) for r in self.command],
+        ``transition_margin`` (null: none followed), ``events``, the spring state under the command
+        (``spring_lengths``, ``spring_stretches``, ``spring_forces``, ``spring_states``)."""
+        return {**self.outcome(), **self.spring_dict(), "command": [numbers(r) for r in self.command],
                 "proposal": [numbers(r) for r in self.proposal], "q": numbers(self.q), "tip": numbers(self.tip),
                 "end_angle": number(self.end_angle), "margin": nullable(self.margin),
                 "energy": nullable(self.energy), "tip_error": number(self.tip_error),
@@ -664,7 +672,8 @@ class PreloadController:
         solver = _NEWTON.get(iters) or _NEWTON.setdefault(iters, SolverInfo("Newton_Converged", iters))
         # q and ell are views of the step's own iterate y: no copy needed before they turn read-only
         command = ell.reshape(n, 2)
-        return PreloadStep._of(command=command, proposal=command, q=q, tip=tip, end_angle=float(np.sum(q)),
+        return PreloadStep._of(springs=self.m.springs,
+                               command=command, proposal=command, q=q, tip=tip, end_angle=float(np.sum(q)),
                                margin=margin, energy=E, tip_error=_distance(tip, target), proposal_tip=tip,
                                feasible=True, method="newton", solver=solver, residual=resid, target=target.copy(),
                                message="the least-change Newton step converged")
@@ -685,7 +694,7 @@ class PreloadController:
             return exc
         q = d.q
         command = d.preloads.copy()
-        return PreloadStep._of(command=command, proposal=command, q=q.copy(), tip=d.tip.copy(),
+        return PreloadStep._of(springs=self.m.springs, command=command, proposal=command, q=q.copy(), tip=d.tip.copy(),
                                end_angle=float(np.sum(q)), margin=float(d.margin), energy=float(d.energy),
                                tip_error=_distance(d.tip, target), proposal_tip=d.tip.copy(), feasible=True,
                                method="ipopt", solver=d.solver, residual=None, target=target.copy(),
@@ -727,7 +736,7 @@ class PreloadController:
         if ok and not on_target:
             text += f"; {_distance(pose.tip, target):.6g} from the target"
         command = ell.reshape(self.n, 2).copy()
-        return PreloadStep._of(command=command, proposal=command, q=pose.q, tip=pose.tip,
+        return PreloadStep._of(springs=self.m.springs, command=command, proposal=command, q=pose.q, tip=pose.tip,
                                end_angle=float(np.sum(pose.q)), margin=pose.margin, energy=pose.energy,
                                tip_error=_distance(pose.tip, target), proposal_tip=pose.tip, feasible=feasible,
                                method=method, solver=solver, residual=None, target=target.copy(), message=text,
@@ -756,7 +765,7 @@ class PreloadController:
                        f"{exc.message}){checked}") if reaches else \
                 (f"{exc.message}; approaching: the nearest admissible pose, {_distance(near.tip, target):.6g} from "
                  f"the target{checked}")
-            return PreloadStep._of(command=command, proposal=command, q=near.q, tip=near.tip,
+            return PreloadStep._of(springs=self.m.springs, command=command, proposal=command, q=near.q, tip=near.tip,
                                    end_angle=float(np.sum(near.q)), margin=near.margin, energy=near.energy,
                                    tip_error=_distance(near.tip, target), proposal_tip=near.tip, feasible=reaches,
                                    method="nearest", solver=near.solver, residual=None, target=target.copy(),
@@ -786,7 +795,8 @@ class PreloadController:
         elif tr is None and not math.isfinite(held.energy):
             what += "; the held rest lengths have no equilibrium under the step's load"
         verified = tr is not None and self._safe(tr, held.q)
-        return PreloadStep._of(command=self.ell.reshape(n, 2).copy(), proposal=prop.ell.reshape(n, 2).copy(),
+        return PreloadStep._of(springs=self.m.springs, command=self.ell.reshape(n, 2).copy(),
+                               proposal=prop.ell.reshape(n, 2).copy(),
                                q=held.q, tip=held.tip, end_angle=float(np.sum(held.q)), margin=held.margin,
                                energy=held.energy, tip_error=_distance(held.tip, target), proposal_tip=prop.tip,
                                feasible=False, method="none", solver=solver, residual=None, target=target.copy(),
@@ -906,7 +916,7 @@ def _distance(tip: np.ndarray, target: np.ndarray) -> float:
 
 
 @dataclass(frozen=True)
-class PreloadPlan(Outcome):
+class PreloadPlan(Outcome, SpringFields):
     """The result of :func:`plan_preloads` (``K`` steps done).
 
     Attributes
@@ -955,6 +965,8 @@ class PreloadPlan(Outcome):
         default (:class:`PreloadController`); the same whatever the ``horizon``.
     note : str
         Part of :attr:`message`: with a ``horizon``, that the step-by-step plan was returned (it was better).
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (K, n, 2)
+        The springs at each step's ``q`` under its command (:class:`~tensegrity_opt.model.springs.SpringFields`).
     horizon : int, str or None
         None (step by step), ``N`` (a receding horizon) or ``"all"`` (:func:`plan_preloads`).
     message : str
@@ -999,6 +1011,10 @@ class PreloadPlan(Outcome):
     transition_margin: np.ndarray | None = None
     start: np.ndarray | None = None
     note: str = ""
+    springs: Springs | None = field(default=None, repr=False, compare=False)
+
+    def _spring_rest_lengths(self) -> np.ndarray:
+        return self.commands
 
     def __post_init__(self) -> None:
         if self.times is None:
@@ -1035,8 +1051,10 @@ class PreloadPlan(Outcome):
         ``proposals``, ``q``, ``tip``, ``tip_error``, ``end_angle``, ``margin`` (null: no equilibrium),
         ``feasible``, ``verified``, ``transition_margin`` (null: none followed), ``method``), ``targets``, ``times``
         (null: no time base), ``margin_required``, ``objective``, ``on_infeasible``, ``on_snap``, ``horizon``,
-        ``start`` (the configuration at time 0) and ``steps`` (:meth:`PreloadStep.to_dict`)."""
-        return {**self.outcome(), "seconds": number(self.seconds),
+        ``start`` (the configuration at time 0), ``steps`` (:meth:`PreloadStep.to_dict`) and the spring state per
+        step under its command (``spring_lengths``, ``spring_stretches``, ``spring_forces``, ``spring_states``:
+        (K, n, 2))."""
+        return {**self.outcome(), **self.spring_dict(), "seconds": number(self.seconds),
                 "commands": [[numbers(r) for r in s] for s in self.commands],
                 "proposals": [[numbers(r) for r in s] for s in self.proposals],
                 "q": [numbers(r) for r in self.q], "tip": [numbers(r) for r in self.tip],
@@ -1187,7 +1205,8 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
                        method=tuple(s.method for s in steps), status=status,
                        steps=tuple(steps), seconds=time.perf_counter() - t0, targets=T[:P].copy(),
                        margin_required=float(margin), objective=objective, times=t_steps[:P].copy(),
-                       on_infeasible=on_infeasible, horizon=horizon, on_snap=on_snap, start=q_start, note=note)
+                       on_infeasible=on_infeasible, horizon=horizon, on_snap=on_snap, start=q_start, note=note,
+                       springs=m.springs)
 
 
 def _step_by_step(ctl: PreloadController, T, Ls, A, h_steps, steps: list, on_snap: str, progress) -> str:

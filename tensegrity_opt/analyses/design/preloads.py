@@ -34,6 +34,7 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
@@ -61,7 +62,7 @@ _INF = float("inf")
 
 
 @dataclass(frozen=True)
-class PreloadDesign(Outcome):
+class PreloadDesign(Outcome, SpringFields):
     """Result of :func:`preloads_for_pose`.
 
     Attributes
@@ -90,6 +91,8 @@ class PreloadDesign(Outcome):
         check holds; otherwise :func:`preloads_for_pose` raises.
     message : str
         The same in a sentence.
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        The springs at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -113,6 +116,11 @@ class PreloadDesign(Outcome):
         freeze(self)
 
     @property
+    def springs(self) -> Springs:
+        """The designed chain's springs (the spring state's model)."""
+        return self.manipulator.springs
+
+    @property
     def message(self) -> str:
         """A sentence: the verified pose and how IPOPT ended."""
         return (f"optimal rest lengths: the tip on the target, stable with margin {self.margin:.6g} "
@@ -121,8 +129,10 @@ class PreloadDesign(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/design/preloads``): ``success``, ``status``, ``message``,
         ``manipulator``, ``preloads``, ``q``, ``margin``, ``tip``, ``energy``, ``active_bounds``, ``solver``
-        ``{status, iterations}``."""
-        return {**self.outcome(), "manipulator": self.manipulator.to_dict(), "preloads": numbers(self.preloads),
+        ``{status, iterations}``, the spring state (``spring_lengths``, ``spring_stretches``, ``spring_forces``,
+        ``spring_states``)."""
+        return {**self.outcome(), **self.spring_dict(),
+                "manipulator": self.manipulator.to_dict(), "preloads": numbers(self.preloads),
                 "q": numbers(self.q), "margin": number(self.margin), "tip": numbers(self.tip),
                 "energy": number(self.energy), "active_bounds": [b.to_dict() for b in self.active_bounds],
                 "solver": self.solver.to_dict()}

@@ -38,6 +38,7 @@ import numpy as np
 from ...bounds import bound_pair
 from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
@@ -78,7 +79,7 @@ _ENTRY = {"kxx": 0, "kxy": 1, "kyx": 1, "kyy": 2}
 
 
 @dataclass(frozen=True)
-class StiffnessDesign(Outcome):
+class StiffnessDesign(Outcome, SpringFields):
     """Result of :func:`preloads_for_stiffness`.
 
     Attributes
@@ -121,6 +122,8 @@ class StiffnessDesign(Outcome):
         stiffness is out of reach) or ``"within_bounds"``.
     message : str
         The same in a sentence, with the residual.
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        The springs at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -154,6 +157,11 @@ class StiffnessDesign(Outcome):
         freeze(self)
 
     @property
+    def springs(self) -> Springs:
+        """The designed chain's springs (the spring state's model)."""
+        return self.manipulator.springs
+
+    @property
     def status(self) -> str:
         """``"exact"``, ``"closest"`` or ``"within_bounds"`` (:attr:`STATUSES`)."""
         if self.K_desired is None:
@@ -175,8 +183,10 @@ class StiffnessDesign(Outcome):
         """JSON form: ``success``, ``status``, ``message``, ``manipulator``, ``rest_lengths``, ``q``, ``tip``,
         ``K``, ``eigenvalues``, ``margin``, ``residual``, ``exact``, ``load``, ``K_desired`` (or null), ``bounds_K``
         (``[lo, hi]`` per entry, null for an open side), ``eig_bounds`` (the same, or null), ``active_bounds``
-        (``{segment, variable, side, value, bound}`` each), ``solver`` ``{status, iterations}``."""
-        return {**self.outcome(), "manipulator": self.manipulator.to_dict(), "rest_lengths": numbers(self.rest_lengths),
+        (``{segment, variable, side, value, bound}`` each), ``solver`` ``{status, iterations}``, the spring state
+        (``spring_lengths``, ``spring_stretches``, ``spring_forces``, ``spring_states``)."""
+        return {**self.outcome(), **self.spring_dict(),
+                "manipulator": self.manipulator.to_dict(), "rest_lengths": numbers(self.rest_lengths),
                 "q": numbers(self.q), "tip": numbers(self.tip), "K": numbers(self.K),
                 "eigenvalues": numbers(self.eigenvalues), "margin": number(self.margin),
                 "residual": number(self.residual), "exact": bool(self.exact), "load": numbers(self.load),

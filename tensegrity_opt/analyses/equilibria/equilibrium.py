@@ -33,6 +33,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
+from ...model.springs import SpringFields, Springs
 from ...numerics import LocalResult, chain_solver
 from ...outcome import Outcome, SolverInfo
 from ...serialize import number, numbers
@@ -60,7 +61,7 @@ class TipForce:
 
 
 @dataclass(frozen=True)
-class Equilibrium(Outcome, TipForce):
+class Equilibrium(Outcome, TipForce, SpringFields):
     """An equilibrium configuration of the chain.
 
     Attributes
@@ -87,6 +88,10 @@ class Equilibrium(Outcome, TipForce):
         ``"displacement"`` or ``"force"``.
     hessian_eigenvalues : ndarray
         Eigenvalues of the reduced Hessian (absolute-angle coordinates).
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        Each spring's length, ``L - L0``, force (tension positive, under its segment's law) and state
+        (``"taut"``, ``"slack"``, ``"pushing"``) at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`;
+        from ``springs``, the chain's springs).
     certificate : EnergyBound or None
         With ``solve_equilibrium(..., certify=True)``: the rigorous lower bound on the energy of every
         configuration meeting the tip constraint in the closed joint range, and the gap
@@ -120,6 +125,7 @@ class Equilibrium(Outcome, TipForce):
     hessian_eigenvalues: np.ndarray = field(default_factory=lambda: np.zeros(0), repr=False)
     status: str = "converged"
     certificate: EnergyBound | None = field(default=None, repr=False)
+    springs: Springs | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         # the builders pass arrays they own: read-only in place (this is on the control loop's path)
@@ -168,9 +174,10 @@ class Equilibrium(Outcome, TipForce):
         ``energy``, ``force`` ``{fx, fy}``, ``morse_index``, ``stable``, ``kind``, ``shape``, ``signs``, ``tip``,
         ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted), ``certificate``
         (:meth:`EnergyBound.to_dict`: with ``certify=True``, or where the search's short way proved its answer;
-        else ``null``); every number finite (:mod:`tensegrity_opt.serialize`)."""
+        else ``null``), the spring state ``spring_lengths``, ``spring_stretches``, ``spring_forces``,
+        ``spring_states`` ((n, 2) each); every number finite (:mod:`tensegrity_opt.serialize`)."""
         extra = {"certificate": None if self.certificate is None else self.certificate.to_dict()}
-        return {**self.outcome(), "q": numbers(self.q), "energy": number(self.energy),
+        return {**self.outcome(), **self.spring_dict(), "q": numbers(self.q), "energy": number(self.energy),
                 "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,
                 "shape": self.shape, "signs": self.signs, "tip": numbers(self.tip),
@@ -186,7 +193,8 @@ _EXACT = {"straight": "the straight chain, the only configuration at full extens
 def make_equilibrium(m: Manipulator, res: LocalResult, *, constrained: bool, status: str = "converged") -> Equilibrium:
     """Classify a converged local solution into an :class:`Equilibrium` (``status``: how it was obtained,
     :attr:`Equilibrium.STATUSES`)."""
-    return equilibrium_from(res, *classify_result(m, res, constrained), constrained, status=status)
+    return equilibrium_from(res, *classify_result(m, res, constrained), constrained, status=status,
+                            springs=m.springs)
 
 
 def classify_result(m: Manipulator, res: LocalResult, constrained: bool):
@@ -198,13 +206,13 @@ def classify_result(m: Manipulator, res: LocalResult, constrained: bool):
 
 
 def equilibrium_from(res: LocalResult, inertia, energy, tip, constrained: bool, *,
-                     status: str = "converged") -> Equilibrium:
+                     status: str = "converged", springs: Springs | None = None) -> Equilibrium:
     """The :class:`Equilibrium` of a local solution and its classification (:func:`classify_result`)."""
     return Equilibrium(q=res.q.copy(), energy=energy, force=np.asarray(res.force, float).copy(),
                        morse_index=inertia.morse_index, stable=inertia.stable,
                        solver=SolverInfo(res.status, res.iterations),
                        tip=np.array(tip, dtype=float), control="displacement" if constrained else "force",
-                       hessian_eigenvalues=inertia.eigenvalues, status=status)
+                       hessian_eigenvalues=inertia.eigenvalues, status=status, springs=springs)
 
 
 #: Largest accepted scaled residual of the equilibrium equations (checked in numpy, independently
@@ -260,7 +268,8 @@ def straight_equilibrium(m: Manipulator, *, check: bool = True) -> Equilibrium:
                 f"torques are not proportional to the lever arms: residual {r:.3g} of k c^2; asymmetric "
                 f"preloads bend it); choose dx > 0", field="dx")
     return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
-                       solver=SolverInfo("straight", 0), tip=m.tip(q), control="displacement", status="exact")
+                       solver=SolverInfo("straight", 0), tip=m.tip(q), control="displacement", status="exact",
+                       springs=m.springs)
 
 
 def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
@@ -278,7 +287,8 @@ def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
     J = m.jacobian(q)
     force = J[:, 0] * (m.gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
     return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True,
-                       solver=SolverInfo("closed_form", 0), tip=m.tip(q), control="displacement", status="exact")
+                       solver=SolverInfo("closed_form", 0), tip=m.tip(q), control="displacement", status="exact",
+                       springs=m.springs)
 
 
 def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None,

@@ -357,7 +357,7 @@ def search_stable(m: Manipulator, target: np.ndarray, starts: list[np.ndarray], 
     for res in distinct(candidates):
         inertia, energy, tip = classify_result(m, res, True)
         if inertia.stable:
-            stable.append(equilibrium_from(res, inertia, energy, tip, True))
+            stable.append(equilibrium_from(res, inertia, energy, tip, True, springs=m.springs))
         else:
             n_unstable += 1
     return stable, n_unstable
@@ -436,7 +436,7 @@ def _search_stable_newton(m: Manipulator, target: np.ndarray, starts, statuses: 
             stable.append((j, Equilibrium(q=b.q[j].copy(), energy=e, force=b.force[j].copy(),
                                           morse_index=inertia.morse_index, stable=True,
                                           solver=SolverInfo(b.status[j], int(b.iterations[j])),
-                                          tip=np.array(tip, dtype=float),
+                                          tip=np.array(tip, dtype=float), springs=m.springs,
                                           hessian_eigenvalues=inertia.eigenvalues)))
         else:
             n_unstable += 1

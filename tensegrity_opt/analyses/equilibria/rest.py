@@ -183,7 +183,7 @@ def _exact_set(m: Manipulator, stable_only: bool) -> EquilibriumSet:
     zero = np.zeros(2)
     eqs = [Equilibrium(q=Q[i].copy(), energy=float(energy[i]), force=zero.copy(), morse_index=int(morse[i]),
                        stable=bool(stable[i]), solver=SolverInfo("exact", 0), tip=tips[i].copy(), control="force",
-                       status="exact",
+                       status="exact", springs=m.springs,
                        hessian_eigenvalues=w)
            for i, w in zip(order.tolist(), eigs)]
     return EquilibriumSet(eqs, method="exact", status="exact",

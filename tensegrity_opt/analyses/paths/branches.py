@@ -27,6 +27,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...outcome import Outcome
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
@@ -49,7 +50,7 @@ MAX_TURN = 0.35
 
 
 @dataclass(frozen=True)
-class Branch(Outcome):
+class Branch(Outcome, SpringFields):
     """An equilibrium branch: ``P`` points along the arclength with their stability and events.
 
     Attributes
@@ -81,6 +82,8 @@ class Branch(Outcome):
         The rest lengths at each point, for a preload or move control.
     problem : PathProblem
         The path system it was traced on (switching at its branch points, the limit loads' stiffness).
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (P, n, 2)
+        The springs at each point (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -133,6 +136,14 @@ class Branch(Outcome):
         return None if self.problem is None else self.problem.m
 
     @property
+    def springs(self) -> Springs | None:
+        """The chain's springs (the spring state's model; ``rest_lengths`` per point under a preload control)."""
+        return None if self.problem is None else self.problem.m.springs
+
+    def _spring_rest_lengths(self) -> np.ndarray | None:
+        return self.rest_lengths
+
+    @property
     def deflection(self) -> np.ndarray:
         """``(dx, dy) = (2 sum b - x, y)`` at each point."""
         return np.column_stack([self.straight_length - self.tip[:, 0], self.tip[:, 1]])
@@ -164,8 +175,9 @@ class Branch(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``control``, ``points``; per point ``t, q, force, tip,
         deflection`` (from straight), ``displacement`` (from the start), ``energy, morse_index, stable, s``;
-        ``events``; ``rest_lengths`` (preload and move controls)."""
-        d = {**self.outcome(), "control": self.control.to_dict(), "points": int(self.t.size),
+        ``events``; ``rest_lengths`` (preload and move controls); the spring state per point (``spring_lengths``,
+        ``spring_stretches``, ``spring_forces``, ``spring_states``: (points, n, 2))."""
+        d = {**self.outcome(), **self.spring_dict(), "control": self.control.to_dict(), "points": int(self.t.size),
              "t": numbers(self.t), "q": [numbers(r) for r in self.q],
              "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
              "tip": [numbers(r) for r in self.tip], "deflection": [numbers(r) for r in self.deflection],

@@ -216,7 +216,7 @@ def _run(m: Manipulator, pts: np.ndarray, i: int, prev: Equilibrium, out: list) 
         out[i + j] = Equilibrium(q=q.copy(), energy=float(E[j]), force=Fs[j].copy(), morse_index=0, stable=True,
                                  solver=SolverInfo("Newton_Converged", None if its is None else int(its[j])),
                                  tip=T[j].copy(),
-                                 control="displacement",
+                                 control="displacement", springs=m.springs,
                                  hessian_eigenvalues=w[j].copy())
     return i + k_st
 

@@ -57,6 +57,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, shape_labels
+from ...model.springs import SpringFields, Springs
 from ...numerics.distinct import same
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
@@ -224,7 +225,7 @@ class CurveEnd(Outcome):
 
 
 @dataclass(frozen=True)
-class Curve(Outcome):
+class Curve(Outcome, SpringFields):
     """Per-point results of :func:`force_deflection` (arrays of length ``m`` = number of points computed).
 
     Attributes
@@ -257,6 +258,9 @@ class Curve(Outcome):
         on (the arrays hold the ``m < requested`` points before it).
     requested : int
         How many points were asked for (``m`` when complete).
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (m, n, 2)
+        The springs at each point (:class:`~tensegrity_opt.model.springs.SpringFields`; NaN where a branch of
+        ``branches`` is absent).
     status : str
         Derived (:attr:`STATUSES`): ``"complete"``, or ``ended_at.status`` where the curve stops early.
     message : str
@@ -288,6 +292,7 @@ class Curve(Outcome):
     origin: np.ndarray = field(default_factory=lambda: np.zeros(2))
     ended_at: CurveEnd | None = None
     requested: int = -1
+    springs: Springs | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         if self.requested < 0:
@@ -328,15 +333,18 @@ class Curve(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/force-deflection``): ``success``, ``status``, ``message``, ``points``
         (``dx``, ``dy``, ``fx``, ``fy``, ``energy``, ``q``, ``stable``, ``morse_index``, ``shape``, ``branch``,
-        ``status`` (:data:`POINT_STATUSES`), ``solver`` ``{status, iterations}``), ``jumps`` (each
+        ``status`` (:data:`POINT_STATUSES`), ``solver`` ``{status, iterations}``, the spring state ``spring_lengths``,
+        ``spring_stretches``, ``spring_forces``, ``spring_states``), ``jumps`` (each
         :meth:`Jump.to_dict`), ``branches`` (``branch="all"``: ``{id, points}`` per followed branch, a point with
         ``exists`` and ``null`` numbers where the branch does not reach), ``reference``, ``origin``, ``ended_at``
         (:meth:`CurveEnd.to_dict` or ``null``) and ``requested``."""
-        points = [{"dx": number(self.dx[i]), "dy": number(self.dy[i]), "fx": number(self.fx[i]),
+        springs = self._spring_rows()
+        points = [{**springs[i], "dx": number(self.dx[i]), "dy": number(self.dy[i]), "fx": number(self.fx[i]),
                    "fy": number(self.fy[i]), "energy": number(self.energy[i]), "q": numbers(self.q[i]),
                    "stable": bool(self.stable[i]), "morse_index": int(self.morse_index[i]), "shape": self.shape[i],
                    "branch": int(self.branch[i]), "status": self.point_status[i],
-                   "solver": None if self.solver[i] is None else self.solver[i].to_dict()} for i in range(self.dx.size)]
+                   "solver": None if self.solver[i] is None else self.solver[i].to_dict()}
+                  for i in range(self.dx.size)]
         return {**self.outcome(), "points": points, "jumps": [j.to_dict() for j in self.jumps],
                 "branches": [br._branch_dict(bi) for bi, br in enumerate(self.branches)],
                 "reference": self.reference, "origin": numbers(self.origin),
@@ -346,14 +354,21 @@ class Curve(Outcome):
     def _branch_dict(self, position: int) -> dict[str, Any]:
         """This curve as the ``position``-th item of ``branches``: its id and nullable points."""
         bid = int(self.branch[0]) if self.branch.size else position
+        springs = self._spring_rows()
         pts = []
         for i in range(self.dx.size):
             exists = bool(np.isfinite(self.energy[i]))
-            pts.append({"dx": number(self.dx[i]), "dy": number(self.dy[i]), "exists": exists,
+            pts.append({**springs[i], "dx": number(self.dx[i]), "dy": number(self.dy[i]), "exists": exists,
                         "fx": nullable(self.fx[i]), "fy": nullable(self.fy[i]), "energy": nullable(self.energy[i]),
                         "q": [nullable(v) for v in self.q[i]], "stable": bool(self.stable[i]),
                         "morse_index": int(self.morse_index[i]), "shape": self.shape[i]})
         return {"id": bid, "points": pts}
+
+    def _spring_rows(self) -> list[dict[str, Any]]:
+        """The spring state of each point as JSON (``null`` fields where a point has no configuration)."""
+        d = self.spring_dict()
+        k = int(self.dx.size)
+        return [{name: (None if v is None else v[i]) for name, v in d.items()} for i in range(k)]
 
 
 def _points(m: Manipulator, dx, dy) -> tuple[np.ndarray, np.ndarray]:
@@ -526,7 +541,7 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
     extra: dict[str, Any] = {"ended_at": ended, "requested": npts}
     if branch == "all":
         # a branch born at the end point has no point on the curve: left out
-        extra["branches"] = [_branch_curve(dxs[:end], dys[:end], br) for br in branches
+        extra["branches"] = [_branch_curve(dxs[:end], dys[:end], br, m.springs) for br in branches
                              if br.valid[:end].any()]
     return replace(curve, **extra)
 
@@ -662,10 +677,10 @@ def _assemble(m, dxs, dys, branches, sel, straight) -> Curve:
                           float(dys[j - 1]), float(dys[j]), cause))
     return Curve(dx=dxs.copy(), dy=dys.copy(), q=q, fx=F[:, 0].copy(), fy=F[:, 1].copy(), energy=E,
                  stable=stable, morse_index=morse, shape=shapes, branch=sel.copy(), point_status=status,
-                 solver=solver, jumps=jumps)
+                 solver=solver, jumps=jumps, springs=m.springs)
 
 
-def _branch_curve(dxs, dys, br: BranchPoints) -> Curve:
+def _branch_curve(dxs, dys, br: BranchPoints, springs: Springs) -> Curve:
     """One followed branch over the points ``dxs``, ``dys`` (the first ``dxs.size`` of the run)."""
     end = dxs.size
     return Curve(dx=dxs.copy(), dy=dys.copy(), q=br.q[:end].copy(), fx=br.F[:end, 0].copy(),
@@ -673,4 +688,4 @@ def _branch_curve(dxs, dys, br: BranchPoints) -> Curve:
                  morse_index=br.morse[:end].copy(),
                  shape=[shape_label(q) if v else "" for q, v in zip(br.q[:end], br.valid[:end])],
                  branch=np.full(end, br.id), point_status=["converged" if v else "absent" for v in br.valid[:end]],
-                 solver=br.solver[:end])
+                 solver=br.solver[:end], springs=springs)

@@ -28,6 +28,7 @@ from typing import Any
 import numpy as np
 import scipy.optimize as so
 
+from ...model.springs import SpringFields, Springs
 from ...serialize import nullable, number, numbers
 from .problem import LIMIT_MARGIN, NEWTON_TOL, PathPoint, PathProblem
 
@@ -44,7 +45,7 @@ ZERO_EIG = 1e-6
 
 
 @dataclass(frozen=True)
-class BranchEvent:
+class BranchEvent(SpringFields):
     """A special point of a branch, located between points ``index`` and ``index + 1``.
 
     An event is a fact about the branch, not an outcome: an event that cannot be located is not reported.
@@ -73,6 +74,8 @@ class BranchEvent:
         Scaled residual of the equilibrium equations at the point.
     joint : int or None
         The joint at its limit (0-based), for ``"joint_limit"``.
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        The springs at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
 
     kind: str
@@ -91,6 +94,7 @@ class BranchEvent:
     joint: int | None = None
     x: np.ndarray | None = field(default=None, repr=False)
     null_x: np.ndarray | None = field(default=None, repr=False)
+    springs: Springs | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         for a in (self.q, self.force, self.tip, self.null_vector, self.x, self.null_x):   # the builder's own arrays
@@ -99,7 +103,8 @@ class BranchEvent:
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form (an item of a branch's ``events``)."""
-        return {"kind": self.kind, "index": int(self.index), "t": number(self.t), "q": numbers(self.q),
+        return {**self.spring_dict(), "kind": self.kind, "index": int(self.index), "t": number(self.t),
+                "q": numbers(self.q),
                 "force": {"fx": number(self.force[0]), "fy": number(self.force[1])}, "tip": numbers(self.tip),
                 "energy": number(self.energy),
                 "null_vector": None if self.null_vector is None else numbers(self.null_vector),
@@ -213,7 +218,7 @@ def _make_event(prob: PathProblem, kind: str, index: int, x: np.ndarray, a: Path
     at = prob.point
     return BranchEvent(kind, index, float(x[at["t"]]), x[at["q"]].copy(), x[at["F"]].copy(), tip.copy(),
                        float(E), nv, a.morse, b.morse, stab, method, prob.residual(R), joint, x.copy(),
-                       None if null_x is None else null_x.copy())
+                       None if null_x is None else null_x.copy(), prob.springs_at(float(x[at["t"]])))
 
 
 def _singular_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h: float) -> list[BranchEvent]:

@@ -32,6 +32,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...outcome import Outcome
 from ...serialize import nullable, number, numbers
 from ...timelimit import time_limit
@@ -50,7 +51,7 @@ ARMS_REACH = 5.0
 
 
 @dataclass(frozen=True)
-class LimitLoad(Outcome):
+class LimitLoad(Outcome, SpringFields):
     """The result of :func:`limit_load`.
 
     Attributes
@@ -87,6 +88,8 @@ class LimitLoad(Outcome):
     quasi_buckling_stiffness : float or None
         The tangent stiffness along the load ``k = 1 / (d . C d)`` at :attr:`quasi_buckling_load` (force per
         length; guided: with ``y`` held), the least on the stable path.
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        The springs at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -126,13 +129,20 @@ class LimitLoad(Outcome):
         if self.status not in self.STATUSES:
             self._check_outcome()
 
+    @property
+    def springs(self) -> Springs | None:
+        """The chain's springs (the spring state's model, at ``q``)."""
+        return self.branch.springs
+
     def to_dict(self, *, include_branch: bool = False) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/limit-load``): ``success``, ``status``, ``message``, ``load``,
         ``kind``, ``force``, ``q``, ``null_vector``, ``quasi_buckling_load``, ``quasi_buckling_force``,
         ``quasi_buckling_stiffness``, ``end_load``, ``direction``, ``boundary``, ``base``, ``start``
-        (:meth:`Equilibrium.to_dict`), ``branch_status``, ``branch_points``, and with ``include_branch`` the
-        ``branch``."""
-        d = {**self.outcome(), "load": None if self.load is None else nullable(self.load), "kind": self.kind,
+        (:meth:`Equilibrium.to_dict`), ``branch_status``, ``branch_points``, the spring state at ``q``
+        (``spring_lengths``, ``spring_stretches``, ``spring_forces``, ``spring_states``; null without ``q``), and
+        with ``include_branch`` the ``branch``."""
+        d = {**self.outcome(), **self.spring_dict(),
+             "load": None if self.load is None else nullable(self.load), "kind": self.kind,
              "force": None if self.force is None else {"fx": number(self.force[0]), "fy": number(self.force[1])},
              "q": None if self.q is None else numbers(self.q),
              "null_vector": None if self.null_vector is None else numbers(self.null_vector),

@@ -22,6 +22,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, SingularStartError
 from ...model.manipulator import Manipulator
+from ...model.springs import Springs
 from ...numerics import DENSE_MAX
 from ...numerics.path_system import control_vector, path_system
 from .control import Control
@@ -240,6 +241,16 @@ class PathProblem:
         tol = EIG_REL_TOL * max(self.m.torque_scale, float(np.abs(w).max()))
         idx = int(np.sum(w < -tol)) - k
         return idx, idx == 0 and not bool(np.any(np.abs(w) <= tol))
+
+    def springs_at(self, t) -> Springs:
+        """The chain's springs with the rest lengths at ``t`` (a number, or an array for a series): the start's,
+        moved along the control's preload direction (preload and move controls)."""
+        sp = self.m.springs
+        dl = self.control.preload_direction
+        if dl is None:
+            return sp
+        t = np.asarray(t, dtype=float)
+        return sp.with_rest_lengths(sp.L0 + t[..., None, None] * dl)
 
     def limit_ratio(self, x: np.ndarray) -> tuple[float, int]:
         """``(max_i |q_i| / limit_i, i)``: how close the point is to a joint's range bound, and which joint."""

@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
@@ -52,6 +52,7 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...numerics import DENSE_MAX
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
@@ -72,7 +73,7 @@ __all__ = ["simulate", "Simulation", "SimulationEvent", "EVENT_KINDS", "PERTURBA
 
 
 @dataclass(frozen=True)
-class Simulation(Outcome):
+class Simulation(Outcome, SpringFields):
     """The result of :func:`simulate`: the state at each step done, and the events.
 
     The arrays hold the ``k <= K`` steps done (``k = K`` when ``status == "complete"``); each row is a
@@ -104,6 +105,8 @@ class Simulation(Outcome):
     message : str
         The same in a sentence.
     straight_length : float
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (k, n, 2)
+        The springs at each step done, under its rest lengths (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -132,6 +135,10 @@ class Simulation(Outcome):
     status: str
     message: str
     straight_length: float
+    springs: Springs | None = field(default=None, repr=False, compare=False)
+
+    def _spring_rest_lengths(self) -> np.ndarray:
+        return self.preloads[:len(self)]
 
     def __post_init__(self) -> None:
         freeze(self)
@@ -157,8 +164,9 @@ class Simulation(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``mode, status, success, message, steps, done``; per step done ``q, force``
         ``{fx, fy}``, ``tip, deflection, energy, potential, stable, morse_index``; ``events``; the inputs
-        ``preloads`` and ``loads`` or ``targets``."""
-        d = {**self.outcome(), "mode": self.mode, "steps": self.steps, "done": len(self),
+        ``preloads`` and ``loads`` or ``targets``; the spring state per step done (``spring_lengths``,
+        ``spring_stretches``, ``spring_forces``, ``spring_states``: (k, n, 2))."""
+        d = {**self.outcome(), **self.spring_dict(), "mode": self.mode, "steps": self.steps, "done": len(self),
              "q": [numbers(r) for r in self.q],
              "force": [{"fx": number(f[0]), "fy": number(f[1])} for f in self.force],
              "tip": [numbers(r) for r in self.tip], "deflection": [numbers(r) for r in self.deflection],
@@ -387,7 +395,8 @@ def _simulate(m, P, L, T, held, start, eps, progress=None) -> Simulation:
     q = np.array([s.q for s in rows]).reshape(k, n)
     force = np.array([s.force for s in rows]).reshape(k, 2)
     tips = np.array([s.tip for s in rows]).reshape(k, 2)
-    return Simulation(mode="held" if held else "free", preloads=P, loads=L, targets=T, q=q, force=force, tip=tips,
+    return Simulation(springs=m.springs,
+                      mode="held" if held else "free", preloads=P, loads=L, targets=T, q=q, force=force, tip=tips,
                       energy=np.array([s.energy for s in rows], float),
                       potential=np.array([s.potential(held) for s in rows], float),
                       stable=np.array([s.stable for s in rows], bool),

@@ -39,7 +39,7 @@ keeps them at most ``max_step`` apart in scaled arclength), not bounded rigorous
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
 import numpy as np
@@ -47,6 +47,7 @@ import scipy.optimize as so
 
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
+from ...model.springs import SpringFields, Springs
 from ...numerics import DENSE_MAX, chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import nullable, number, numbers
@@ -457,7 +458,7 @@ def release(m: Manipulator, q: np.ndarray, load, *, perturbation: float = PERTUR
 
 # ---------------------------------------------------------------------------- the public form
 @dataclass(frozen=True)
-class Transition(Outcome):
+class Transition(Outcome, SpringFields):
     """What the arm does while its inputs move from one sample to the next (:func:`transition`).
 
     Attributes
@@ -488,6 +489,8 @@ class Transition(Outcome):
         Where the move ended: 1, or the fraction of the joint limit (or of the failure).
     events : tuple of SimulationEvent
         The snaps (``kind`` ``"snap"``, ``"bifurcation"``) and the joint limit, in order.
+    spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
+        The springs at ``q`` under the final rest lengths (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
 
     STATUSES: ClassVar[dict[str, str]] = {
@@ -515,6 +518,7 @@ class Transition(Outcome):
     margin_end: float
     fraction: float
     events: tuple
+    springs: Springs | None = field(default=None, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         freeze(self, copy=False)
@@ -526,8 +530,9 @@ class Transition(Outcome):
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``q``, ``force`` ``{fx, fy}``, ``tip``, ``energy``,
-        ``stable``, ``margin`` (null: none measured), ``margin_at``, ``margin_end``, ``fraction``, ``events``."""
-        return {**self.outcome(), "q": numbers(self.q), "force": {"fx": number(self.force[0]),
+        ``stable``, ``margin`` (null: none measured), ``margin_at``, ``margin_end``, ``fraction``, ``events``, the
+        spring state (``spring_lengths``, ``spring_stretches``, ``spring_forces``, ``spring_states``)."""
+        return {**self.outcome(), **self.spring_dict(), "q": numbers(self.q), "force": {"fx": number(self.force[0]),
                                                                   "fy": number(self.force[1])},
                 "tip": numbers(self.tip), "energy": nullable(self.energy), "stable": bool(self.stable),
                 "margin": nullable(self.margin), "margin_at": nullable(self.margin_at),
@@ -650,7 +655,8 @@ def follow(m: Manipulator, state: ArmState, P0, P1, F0, F1, *, perturbation: flo
                           ("the arm snapped: " + "; ".join(e.message for e in events)) if snapped else
                           f"the arm followed its branch to the end of the move, least margin {least:.6g}",
                           end.q.copy(), np.asarray(end.force, float).copy(), np.asarray(end.tip, float).copy(),
-                          float(end.energy), bool(end.stable), least, at, mv.end_margin, 1.0, events)
+                          float(end.energy), bool(end.stable), least, at, mv.end_margin, 1.0, events,
+                          m.springs.with_rest_lengths(P1))
     s = mv.fraction
     P, F, _ = mv.inputs(s)
     q = mv.limit_q if mv.limit_q is not None else state.q
@@ -658,7 +664,7 @@ def follow(m: Manipulator, state: ArmState, P0, P1, F0, F1, *, perturbation: flo
     E = float(mk.energy(q))
     status = "joint_limit" if status == "joint_limit" else ("time_limit" if status == "time_limit" else "failed")
     return Transition(status, message, np.asarray(q, float).copy(), np.asarray(F, float).copy(), mk.tip(q), E,
-                      False, least, at, math.nan, float(s), events)
+                      False, least, at, math.nan, float(s), events, mk.springs)
 
 
 def released(m: Manipulator, q: np.ndarray, P1, F1, *, step: int = 0,
@@ -678,7 +684,7 @@ def released(m: Manipulator, q: np.ndarray, P1, F1, *, step: int = 0,
         return Transition("released", "the arm, released from its joint stop under the step's inputs, settled on a "
                           "stable equilibrium (not a followed path)", res.q.copy(), F1.copy(),
                           np.asarray(res.tip, float).copy(), float(res.energy), True, math.nan, math.nan, math.nan,
-                          1.0, ())
+                          1.0, (), mk.springs)
     qe = np.asarray(res, float).copy()
     if outcome == "joint_limit":
         ev = SimulationEvent("joint_limit", "the released arm reaches a joint's stop again: no equilibrium under the "
@@ -687,7 +693,7 @@ def released(m: Manipulator, q: np.ndarray, P1, F1, *, step: int = 0,
                              float(mk.energy(q)), None, None, None, None, None, 0, "limit")
         return Transition("joint_limit", "released from its joint stop under the step's inputs, the arm reaches a "
                           "stop again: no equilibrium", qe, F1.copy(), mk.tip(qe), float(mk.energy(qe)), False,
-                          math.nan, math.nan, math.nan, 1.0, (ev,))
+                          math.nan, math.nan, math.nan, 1.0, (ev,), mk.springs)
     status = "time_limit" if outcome == "time_limit" else "failed"
     return Transition(status, "the release from the joint stop did not settle", qe, F1.copy(), mk.tip(qe),
-                      float(mk.energy(qe)), False, math.nan, math.nan, math.nan, 1.0, ())
+                      float(mk.energy(qe)), False, math.nan, math.nan, math.nan, 1.0, (), mk.springs)

@@ -23,6 +23,7 @@ from ...errors import (
     UnstableStraightError,
 )
 from ...model.manipulator import Manipulator
+from ...model.springs import SPRING_LAWS
 
 __all__ = ["add_manipulator_options", "add_analysis_options", "add_command", "add_deflection_options",
            "add_curve_options", "run_command", "positive_int", "non_negative_int",
@@ -224,12 +225,21 @@ def fmt_q(q) -> str:
     return "[" + ", ".join(f"{v:+.5f}" for v in q) + "]"
 
 
+def springs_text(result) -> str:
+    """The springs of a result that are not taut, ``"spring 3.2 pushes 0.469; spring 1.1 slack"`` (segment.spring,
+    counted from 1), or ``""`` when every spring is taut (or the state is unknown)."""
+    sp = result._spring_model() if hasattr(result, "_spring_model") else None
+    return "" if sp is None else "; ".join(sp.summary(result.q))
+
+
 def eq_table(eqs) -> list[str]:
-    """The table of equilibria (energy, force, Morse index, stability, shape, q) the commands print."""
-    lines = [f"{'#':>2} {'energy':>12} {'Fx':>10} {'Fy':>10} {'morse':>5} {'stable':>6} {'shape':>5}  q (rad)"]
+    """The table of equilibria (energy, force, Morse index, stability, shape, q, the springs that are not taut) the
+    commands print."""
+    lines = [f"{'#':>2} {'energy':>12} {'Fx':>10} {'Fy':>10} {'morse':>5} {'stable':>6} {'shape':>5}  q (rad)"
+             "  springs not taut"]
     for i, e in enumerate(eqs, 1):
         lines.append(f"{i:>2} {e.energy:>12.6f} {e.fx:>10.6f} {e.fy:>10.6f} {e.morse_index:>5} "
-                     f"{'yes' if e.stable else 'no':>6} {e.shape:>5}  {fmt_q(e.q)}")
+                     f"{'yes' if e.stable else 'no':>6} {e.shape:>5}  {fmt_q(e.q)}  {springs_text(e) or '-'}")
     return lines
 
 
@@ -242,9 +252,13 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
                    help="triangle half-length b (length; a segment is 2 b long straight)")
     g.add_argument("--k", type=finite_float, default=1.0, help="spring stiffness (force / length)")
     g.add_argument("--L0", type=finite_float, default=1.0, help="spring rest length (length)")
+    g.add_argument("--spring", choices=tuple(SPRING_LAWS), default="linear",
+                   help="the springs' law: linear (the paper's: a spring shorter than its rest length pushes) or "
+                        "tension_only (it goes slack)")
     g.add_argument("--manipulator", metavar="FILE",
-                   help='JSON file {"segments": [{"a","b","k","L0"}, ...]}, instead of the uniform chain\'s options')
-    exclusive(sp, ["--manipulator"], ["--n", "--a", "--b", "--k", "--L0"],
+                   help='JSON file {"segments": [{"a","b","k","L0","spring"}, ...]}, instead of the uniform chain\'s '
+                        'options')
+    exclusive(sp, ["--manipulator"], ["--n", "--a", "--b", "--k", "--L0", "--spring"],
               "the chain comes from the file or from the uniform chain's options")
 
 
@@ -290,7 +304,7 @@ def _manipulator(args: argparse.Namespace) -> Manipulator:
             raise InvalidParameterError(f"--manipulator {args.manipulator}: expected a JSON object "
                                         '{"segments": [{"a", "b", "k", "L0"}, ...]}', field="manipulator")
         return Manipulator.from_dict(data)
-    return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0)
+    return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0, args.spring)
 
 
 def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:

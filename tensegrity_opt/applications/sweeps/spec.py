@@ -221,9 +221,13 @@ def _header(spec: Any) -> dict[str, Any]:
     else:
         base = dict(DEFAULT_MANIPULATOR)
         for key, v in raw_m.items():
+            if key == "spring":
+                base[key] = _law(v, "manipulator.spring")
+                continue
             if key not in MANIPULATOR_PARAMETERS:
-                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "segments"), "key")
-                      + " (the base chain is {n, a, b, k, L0} (uniform) or {segments: [{a, b, k, L0}, ...]})")
+                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "spring", "segments"), "key")
+                      + " (the base chain is {n, a, b, k, L0, spring} (uniform) or {segments: [{a, b, k, L0, spring}, "
+                        "...]})")
             if key in ("k", "L0") and isinstance(v, (list, tuple)):
                 base[key] = _spring_pair(key, v, f"manipulator.{key}")
             else:
@@ -248,8 +252,9 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
         if not isinstance(sd, Mapping):
             _fail(fld, "must be an object {a, b, k, L0}")
         for key in sd:
-            if key not in ("a", "b", "k", "L0"):
-                _fail(f"{fld}.{key}", unknown_name(key, ("a", "b", "k", "L0"), "key") + " (a segment has a, b, k, L0)")
+            if key not in ("a", "b", "k", "L0", "spring"):
+                _fail(f"{fld}.{key}", unknown_name(key, ("a", "b", "k", "L0", "spring"), "key")
+                      + " (a segment has a, b, k, L0, spring)")
         norm: dict[str, Any] = {}
         for key in ("a", "b", "k", "L0"):
             v, name = sd.get(key, 1.0), "a" if key != "k" else "k"
@@ -257,13 +262,22 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
                 norm[key] = _spring_pair(name, v, f"{fld}.{key}")
             else:
                 norm[key] = _value(name, v, f"{fld}.{key}")
+        if "spring" in sd:
+            norm["spring"] = _law(sd["spring"], f"{fld}.spring")
         try:
             Segment(norm["a"], norm["b"], tuple(norm["k"]) if isinstance(norm["k"], list) else norm["k"],
-                    tuple(norm["L0"]) if isinstance(norm["L0"], list) else norm["L0"])
+                    tuple(norm["L0"]) if isinstance(norm["L0"], list) else norm["L0"], norm.get("spring", "linear"))
         except InvalidParameterError as exc:
             _fail(f"{fld}.{exc.field}" if exc.field else fld, exc.message)
         out.append(norm)
     return {"segments": out}
+
+
+def _law(v: Any, fld: str) -> str:
+    """A spring law (``"linear"`` or ``"tension_only"``), or the spec's refusal naming ``fld``."""
+    from ...model.springs import spring_law
+
+    return spring_law(v, fld)
 
 
 def _fixed_chain(head: Mapping[str, Any], names: Iterable[str], fld: str) -> None:

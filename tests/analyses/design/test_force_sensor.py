@@ -404,6 +404,6 @@ def test_to_dict_is_json():
     assert list(d)[:3] == ["success", "status", "message"]
     assert set(d) == {"force", "covariance", "residual_torque", "residual_norm", "chi2", "dof", "p_value",
                       "joint_chi2", "q", "measured", "hidden_covariance", "success", "status", "message",
-                      "iterations"}
+                      "iterations", "spring_lengths", "spring_stretches", "spring_forces", "spring_states"}
     assert d["measured"] == [0, 1, 3, 4] and len(d["q"]) == 5 and len(d["hidden_covariance"]) == 1
     assert d["status"] == "weighted_gauss_newton" and d["dof"] == 2

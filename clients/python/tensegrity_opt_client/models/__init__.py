@@ -22,9 +22,11 @@ from .bifurcation_diagram_request import BifurcationDiagramRequest
 from .bounds_in import BoundsIn
 from .branch_event_out import BranchEventOut
 from .branch_event_out_kind import BranchEventOutKind
+from .branch_event_out_spring_states_type_0_item_item import BranchEventOutSpringStatesType0ItemItem
 from .branch_event_out_stability import BranchEventOutStability
 from .branch_out import BranchOut
 from .branch_point import BranchPoint
+from .branch_point_spring_states_type_0_item_item import BranchPointSpringStatesType0ItemItem
 from .branch_request import BranchRequest
 from .branch_request_orientation import BranchRequestOrientation
 from .branch_request_stop_at_type_0 import BranchRequestStopAtType0
@@ -37,6 +39,7 @@ from .control_out_kind import ControlOutKind
 from .control_out_tip_type_0 import ControlOutTipType0
 from .curve_end_out import CurveEndOut
 from .curve_point import CurvePoint
+from .curve_point_spring_states_type_0_item_item import CurvePointSpringStatesType0ItemItem
 from .curve_point_status import CurvePointStatus
 from .cusp_out import CuspOut
 from .deflection_range import DeflectionRange
@@ -49,6 +52,7 @@ from .design_out import DesignOut
 from .design_out_status import DesignOutStatus
 from .design_segmented_manipulator_in import DesignSegmentedManipulatorIn
 from .design_uniform_manipulator_in import DesignUniformManipulatorIn
+from .design_uniform_manipulator_in_spring import DesignUniformManipulatorInSpring
 from .displacement_control_in import DisplacementControlIn
 from .energy_bound_out import EnergyBoundOut
 from .energy_bound_out_status import EnergyBoundOutStatus
@@ -60,6 +64,7 @@ from .equilibria_request import EquilibriaRequest
 from .equilibria_request_method import EquilibriaRequestMethod
 from .equilibrium_out import EquilibriumOut
 from .equilibrium_out_kind import EquilibriumOutKind
+from .equilibrium_out_spring_states_type_0_item_item import EquilibriumOutSpringStatesType0ItemItem
 from .equilibrium_out_status import EquilibriumOutStatus
 from .equilibrium_request import EquilibriumRequest
 from .error_out import ErrorOut
@@ -75,6 +80,7 @@ from .force_deflection_request_branch import ForceDeflectionRequestBranch
 from .force_deflection_request_reference import ForceDeflectionRequestReference
 from .force_equilibrium_request import ForceEquilibriumRequest
 from .force_estimate_out import ForceEstimateOut
+from .force_estimate_out_spring_states_type_0_item_item import ForceEstimateOutSpringStatesType0ItemItem
 from .force_estimate_out_status import ForceEstimateOutStatus
 from .force_estimate_request import ForceEstimateRequest
 from .get_job_results_format_type_0 import GetJobResultsFormatType0
@@ -121,6 +127,7 @@ from .limit_load_out import LimitLoadOut
 from .limit_load_out_boundary import LimitLoadOutBoundary
 from .limit_load_out_branch_status import LimitLoadOutBranchStatus
 from .limit_load_out_kind import LimitLoadOutKind
+from .limit_load_out_spring_states_type_0_item_item import LimitLoadOutSpringStatesType0ItemItem
 from .limit_load_out_status import LimitLoadOutStatus
 from .limit_load_request import LimitLoadRequest
 from .limit_load_request_boundary import LimitLoadRequestBoundary
@@ -142,6 +149,7 @@ from .plan_out_method_item import PlanOutMethodItem
 from .plan_out_objective import PlanOutObjective
 from .plan_out_on_infeasible import PlanOutOnInfeasible
 from .plan_out_on_snap import PlanOutOnSnap
+from .plan_out_spring_states_type_0_item_type_0_item_item import PlanOutSpringStatesType0ItemType0ItemItem
 from .plan_out_status import PlanOutStatus
 from .plan_request import PlanRequest
 from .plan_request_objective import PlanRequestObjective
@@ -149,6 +157,7 @@ from .plan_request_on_infeasible import PlanRequestOnInfeasible
 from .plan_request_on_snap import PlanRequestOnSnap
 from .plan_step_out import PlanStepOut
 from .plan_step_out_method import PlanStepOutMethod
+from .plan_step_out_spring_states_type_0_item_item import PlanStepOutSpringStatesType0ItemItem
 from .plan_step_out_status import PlanStepOutStatus
 from .plot_angle_range import PlotAngleRange
 from .plot_atlas_grid_request import PlotAtlasGridRequest
@@ -196,6 +205,7 @@ from .preload_control_in_tip import PreloadControlInTip
 from .preloads_for_load_request import PreloadsForLoadRequest
 from .preloads_for_load_request_boundary import PreloadsForLoadRequestBoundary
 from .preloads_out import PreloadsOut
+from .preloads_out_spring_states_type_0_item_item import PreloadsOutSpringStatesType0ItemItem
 from .preloads_request import PreloadsRequest
 from .preloads_request_objective import PreloadsRequestObjective
 from .processes_state import ProcessesState
@@ -210,6 +220,7 @@ from .rest_length_bounds_in import RestLengthBoundsIn
 from .root_box_out import RootBoxOut
 from .root_box_out_reason import RootBoxOutReason
 from .segment_in import SegmentIn
+from .segment_in_spring import SegmentInSpring
 from .segment_out import SegmentOut
 from .segment_torque_out import SegmentTorqueOut
 from .segment_torque_request import SegmentTorqueRequest
@@ -219,6 +230,7 @@ from .simulation_event_out_kind import SimulationEventOutKind
 from .simulation_event_out_status import SimulationEventOutStatus
 from .simulation_out import SimulationOut
 from .simulation_out_mode import SimulationOutMode
+from .simulation_out_spring_states_type_0_item_type_0_item_item import SimulationOutSpringStatesType0ItemType0ItemItem
 from .simulation_out_status import SimulationOutStatus
 from .simulation_request import SimulationRequest
 from .simulation_request_tip import SimulationRequestTip
@@ -234,6 +246,7 @@ from .stiffness_bounds_in import StiffnessBoundsIn
 from .stiffness_design_out import StiffnessDesignOut
 from .stiffness_design_out_bounds_k import StiffnessDesignOutBoundsK
 from .stiffness_design_out_manipulator import StiffnessDesignOutManipulator
+from .stiffness_design_out_spring_states_type_0_item_item import StiffnessDesignOutSpringStatesType0ItemItem
 from .stiffness_design_out_status import StiffnessDesignOutStatus
 from .stiffness_design_request import StiffnessDesignRequest
 from .stiffness_out import StiffnessOut
@@ -250,11 +263,16 @@ from .sweep_point import SweepPoint
 from .sweep_segmented_manipulator import SweepSegmentedManipulator
 from .sweep_tension_in import SweepTensionIn
 from .sweep_uniform_manipulator import SweepUniformManipulator
+from .sweep_uniform_manipulator_spring import SweepUniformManipulatorSpring
 from .target import Target
 from .tension_bounds_in import TensionBoundsIn
 from .traced_branch_out import TracedBranchOut
+from .traced_branch_out_spring_states_type_0_item_type_0_item_item import (
+    TracedBranchOutSpringStatesType0ItemType0ItemItem,
+)
 from .traced_branch_out_status import TracedBranchOutStatus
 from .uniform_manipulator_in import UniformManipulatorIn
+from .uniform_manipulator_in_spring import UniformManipulatorInSpring
 from .version_out import VersionOut
 from .wall_control_in import WallControlIn
 
@@ -281,9 +299,11 @@ __all__ = (
     "BoundsIn",
     "BranchEventOut",
     "BranchEventOutKind",
+    "BranchEventOutSpringStatesType0ItemItem",
     "BranchEventOutStability",
     "BranchOut",
     "BranchPoint",
+    "BranchPointSpringStatesType0ItemItem",
     "BranchRequest",
     "BranchRequestOrientation",
     "BranchRequestStopAtType0",
@@ -296,6 +316,7 @@ __all__ = (
     "ControlOutTipType0",
     "CurveEndOut",
     "CurvePoint",
+    "CurvePointSpringStatesType0ItemItem",
     "CurvePointStatus",
     "CuspOut",
     "DeflectionRange",
@@ -308,6 +329,7 @@ __all__ = (
     "DesignOutStatus",
     "DesignSegmentedManipulatorIn",
     "DesignUniformManipulatorIn",
+    "DesignUniformManipulatorInSpring",
     "DisplacementControlIn",
     "EnergyBoundOut",
     "EnergyBoundOutStatus",
@@ -319,6 +341,7 @@ __all__ = (
     "EquilibriaRequestMethod",
     "EquilibriumOut",
     "EquilibriumOutKind",
+    "EquilibriumOutSpringStatesType0ItemItem",
     "EquilibriumOutStatus",
     "EquilibriumRequest",
     "ErrorOut",
@@ -334,6 +357,7 @@ __all__ = (
     "ForceDeflectionRequestReference",
     "ForceEquilibriumRequest",
     "ForceEstimateOut",
+    "ForceEstimateOutSpringStatesType0ItemItem",
     "ForceEstimateOutStatus",
     "ForceEstimateRequest",
     "GetJobResultsFormatType0",
@@ -380,6 +404,7 @@ __all__ = (
     "LimitLoadOutBoundary",
     "LimitLoadOutBranchStatus",
     "LimitLoadOutKind",
+    "LimitLoadOutSpringStatesType0ItemItem",
     "LimitLoadOutStatus",
     "LimitLoadRequest",
     "LimitLoadRequestBoundary",
@@ -401,6 +426,7 @@ __all__ = (
     "PlanOutObjective",
     "PlanOutOnInfeasible",
     "PlanOutOnSnap",
+    "PlanOutSpringStatesType0ItemType0ItemItem",
     "PlanOutStatus",
     "PlanRequest",
     "PlanRequestObjective",
@@ -408,6 +434,7 @@ __all__ = (
     "PlanRequestOnSnap",
     "PlanStepOut",
     "PlanStepOutMethod",
+    "PlanStepOutSpringStatesType0ItemItem",
     "PlanStepOutStatus",
     "PlotAngleRange",
     "PlotAtlasGridRequest",
@@ -455,6 +482,7 @@ __all__ = (
     "PreloadsForLoadRequest",
     "PreloadsForLoadRequestBoundary",
     "PreloadsOut",
+    "PreloadsOutSpringStatesType0ItemItem",
     "PreloadsRequest",
     "PreloadsRequestObjective",
     "ProcessesState",
@@ -470,6 +498,7 @@ __all__ = (
     "RootBoxOutReason",
     "SegmentedManipulatorIn",
     "SegmentIn",
+    "SegmentInSpring",
     "SegmentOut",
     "SegmentTorqueOut",
     "SegmentTorqueRequest",
@@ -478,6 +507,7 @@ __all__ = (
     "SimulationEventOutStatus",
     "SimulationOut",
     "SimulationOutMode",
+    "SimulationOutSpringStatesType0ItemType0ItemItem",
     "SimulationOutStatus",
     "SimulationRequest",
     "SimulationRequestTip",
@@ -493,6 +523,7 @@ __all__ = (
     "StiffnessDesignOut",
     "StiffnessDesignOutBoundsK",
     "StiffnessDesignOutManipulator",
+    "StiffnessDesignOutSpringStatesType0ItemItem",
     "StiffnessDesignOutStatus",
     "StiffnessDesignRequest",
     "StiffnessOut",
@@ -509,11 +540,14 @@ __all__ = (
     "SweepSegmentedManipulator",
     "SweepTensionIn",
     "SweepUniformManipulator",
+    "SweepUniformManipulatorSpring",
     "Target",
     "TensionBoundsIn",
     "TracedBranchOut",
+    "TracedBranchOutSpringStatesType0ItemType0ItemItem",
     "TracedBranchOutStatus",
     "UniformManipulatorIn",
+    "UniformManipulatorInSpring",
     "VersionOut",
     "WallControlIn",
 )

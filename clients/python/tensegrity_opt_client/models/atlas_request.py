@@ -26,8 +26,8 @@ class AtlasRequest:
             length units), strictly increasing: a list or {start, stop, num} (1..400 values)
         dy (AtlasRange | list[float]): the grid's dy (sideways) values (tip deflection, length units), strictly
             increasing: a list or {start, stop, num} (1..400 values)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         edges (bool | Unset): locate the switches and branch ends on the grid edges (false: the counts only) Default:
             True.
         method (AtlasRequestMethod | Unset): how each target's equilibria are found: `search` (multi-start Newton,

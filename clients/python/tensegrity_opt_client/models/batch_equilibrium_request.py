@@ -21,8 +21,8 @@ class BatchEquilibriumRequest:
     """Equilibria for a sequence of targets (a trajectory), solved in order.
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         targets (list[Target]): targets in order (server limit TENSEGRITY_MAX_BATCH)
         continuation (bool | Unset): start each solve from the previous result (q0) Default: True.
         q0 (list[float] | None | Unset): optional configuration near the first target

@@ -30,8 +30,8 @@ class BifurcationDiagramRequest:
         control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | WallControlIn): what the
             continuation parameter t moves: {"kind": displacement | load | guided | wall | preload, ...}
             (tensegrity_opt.Control)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         depth (int | Unset): branch switches followed (0..6) Default: 2.
         max_branches (int | Unset): at most this many branches (1..64) Default: 24.
         max_points (int | Unset): at most this many points per branch, the start included (2..5000; server limit

@@ -32,8 +32,8 @@ class BranchRequest:
         control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | WallControlIn): what the
             continuation parameter t moves: {"kind": displacement | load | guided | wall | preload, ...}
             (tensegrity_opt.Control)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         max_points (int | Unset): at most this many points per branch, the start included (2..5000; server limit
             TENSEGRITY_MAX_PATH_POINTS) Default: 1000.
         orientation (BranchRequestOrientation | Unset): leave the start with t increasing (1) or decreasing (-1)

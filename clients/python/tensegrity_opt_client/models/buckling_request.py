@@ -21,8 +21,8 @@ class BucklingRequest:
     """Critical loads and buckling modes of the straight configuration.
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         boundary (BucklingRequestBoundary | Unset): "guided": tip held at dy = 0 (the paper); "free": cantilever
             Default: BucklingRequestBoundary.GUIDED.
     """

@@ -26,7 +26,7 @@ class DesignCriticalForceRequest:
 
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
-            "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
+            "a", "b", "k", "L0", "spring"} (uniform) or {"segments": [...]}
         K_min (float | None | Unset): lower bound on every joint stiffness K_i
         boundary (DesignCriticalForceRequestBoundary | Unset):  Default: DesignCriticalForceRequestBoundary.GUIDED.
         bounds (DesignCriticalForceRequestBounds | Unset): bounds per variable; default (x0 / 10, 10 x0)

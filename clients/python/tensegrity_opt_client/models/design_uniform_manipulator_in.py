@@ -5,6 +5,7 @@ from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
+from ..models.design_uniform_manipulator_in_spring import DesignUniformManipulatorInSpring
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="DesignUniformManipulatorIn")
@@ -22,6 +23,10 @@ class DesignUniformManipulatorIn:
         b (float | Unset): triangle half-length (length units) Default: 1.0.
         k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
+        spring (DesignUniformManipulatorInSpring | Unset): the springs' law: `linear` (the paper's model: force k (L -
+            L0) at every length, a spring shorter than its rest length pushes) or `tension_only` (force k max(0, L - L0): it
+            goes slack, as a real extension spring or cable). Analyses that do not honour `tension_only` refuse it (422
+            `unsupported`, field `segments[i].spring`) Default: DesignUniformManipulatorInSpring.LINEAR.
     """
 
     n: int
@@ -29,6 +34,7 @@ class DesignUniformManipulatorIn:
     a: float | Unset = 1.0
     b: float | Unset = 1.0
     k: float | list[float] | Unset = 1.0
+    spring: DesignUniformManipulatorInSpring | Unset = DesignUniformManipulatorInSpring.LINEAR
 
     def to_dict(self) -> dict[str, Any]:
         n = self.n
@@ -55,6 +61,10 @@ class DesignUniformManipulatorIn:
         else:
             k = self.k
 
+        spring: str | Unset = UNSET
+        if not isinstance(self.spring, Unset):
+            spring = self.spring.value
+
         field_dict: dict[str, Any] = {}
 
         field_dict.update(
@@ -70,6 +80,8 @@ class DesignUniformManipulatorIn:
             field_dict["b"] = b
         if k is not UNSET:
             field_dict["k"] = k
+        if spring is not UNSET:
+            field_dict["spring"] = spring
 
         return field_dict
 
@@ -112,12 +124,20 @@ class DesignUniformManipulatorIn:
 
         k = _parse_k(d.pop("k", UNSET))
 
+        _spring = d.pop("spring", UNSET)
+        spring: DesignUniformManipulatorInSpring | Unset
+        if isinstance(_spring, Unset):
+            spring = UNSET
+        else:
+            spring = DesignUniformManipulatorInSpring(_spring)
+
         design_uniform_manipulator_in = cls(
             n=n,
             L0=L0,
             a=a,
             b=b,
             k=k,
+            spring=spring,
         )
 
         return design_uniform_manipulator_in

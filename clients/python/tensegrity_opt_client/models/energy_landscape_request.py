@@ -21,8 +21,8 @@ class EnergyLandscapeRequest:
 
     Attributes:
         dx (float): tip deflection along x (length units)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         dy (float | Unset): tip deflection along y (length units) Default: 0.0.
         grid (int | Unset): points per axis (2..201) Default: 51.
         pair (list[int] | Unset): the two grid joints, 0-based and different

@@ -22,8 +22,8 @@ class EquilibriaRequest:
 
     Attributes:
         dx (float): tip deflection along x (length units)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         dy (float | Unset): tip deflection along y (length units) Default: 0.0.
         method (EquilibriaRequestMethod | Unset): `search`: multi-start Newton (any n; complete in practice, not
             certified); `homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every equilibrium certified

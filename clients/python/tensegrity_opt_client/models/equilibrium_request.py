@@ -21,8 +21,8 @@ class EquilibriumRequest:
 
     Attributes:
         dx (float): tip deflection along x (length units); dx > 0 shortens the chain
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         certify (bool | Unset): prove the answer least: a rigorous lower bound on the energy of every configuration
             meeting the tip constraint in the closed joint range (`certificate`: bound, gap, tolerance); `status`
             `certified` when the gap is within the tolerance; up to ~5 s more, longer for 2^17+ well patterns (not with

@@ -25,8 +25,8 @@ class ForceDeflectionRequest:
     Attributes:
         dx (DeflectionRange | list[float]): deflections in the order to follow: a list or {start, stop, num} (at most
             501 points)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         branch (ForceDeflectionRequestBranch | Unset): "all" also returns every branch found at the first deflected
             point Default: ForceDeflectionRequestBranch.STABLE.
         dy (float | Unset): tip deflection along y, the same at every point Default: 0.0.

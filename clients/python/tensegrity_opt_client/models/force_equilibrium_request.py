@@ -21,8 +21,8 @@ class ForceEquilibriumRequest:
 
     Attributes:
         fx (float): tip force along x (force units); fx < 0 compresses
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         fy (float | Unset): tip force along y (force units) Default: 0.0.
         q0 (list[float] | None | Unset): optional start configuration (rad)
     """

@@ -20,8 +20,8 @@ class ForceEstimateRequest:
     """The tip force from measured joint angles (`tensegrity_opt.estimate_tip_force`).
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         q_measured (list[float | None]): joint angles (rad): all n (entries at unmeasured joints only start the solver;
             null there: 0), or the k measured ones in joint order; each inside the physical range |q_i| < pi - 2 beta_i
         measured (list[bool] | list[int] | None | Unset):

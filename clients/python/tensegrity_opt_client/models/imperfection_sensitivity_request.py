@@ -24,8 +24,8 @@ class ImperfectionSensitivityRequest:
 
         Attributes:
             amplitudes (list[float]): the amplitudes p, computed in this order (1..64; 0 is the given chain)
-            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-                {"segments": [...]}
+            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+                (uniform) or {"segments": [...]}
             boundary (ImperfectionSensitivityRequestBoundary | Unset): "guided": y held at each imperfect chain's rest tip,
                 Fx = t d_x; "free": F = t d Default: ImperfectionSensitivityRequestBoundary.GUIDED.
             direction (list[float] | Unset): the load's direction (normalised; [-1, 0] compresses)

@@ -9,6 +9,7 @@ from attrs import field as _attrs_field
 from ..models.limit_load_out_boundary import LimitLoadOutBoundary
 from ..models.limit_load_out_branch_status import LimitLoadOutBranchStatus
 from ..models.limit_load_out_kind import LimitLoadOutKind
+from ..models.limit_load_out_spring_states_type_0_item_item import LimitLoadOutSpringStatesType0ItemItem
 from ..models.limit_load_out_status import LimitLoadOutStatus
 from ..types import UNSET, Unset
 
@@ -41,6 +42,14 @@ class LimitLoadOut:
         quasi_buckling_load (float | None): the load of least tangent stiffness along the load
         quasi_buckling_stiffness (float | None): the tangent stiffness along the load there, 1 / (d . C d) (force per
             length; guided: y held), the least on the stable path
+        spring_forces (list[list[float]] | None): each spring's force, tension positive: k (L - L0) (linear law), k
+            max(0, L - L0) (tension-only)
+        spring_lengths (list[list[float]] | None): each spring's length L (length units), [spring 1, spring 2] per
+            segment
+        spring_states (list[list[LimitLoadOutSpringStatesType0ItemItem]] | None): `taut` (L >= L0), `slack` (tension-
+            only, L < L0: no force) or `pushing` (linear law, L < L0: a compressive force a real tension spring cannot
+            carry)
+        spring_stretches (list[list[float]] | None): L - L0 per spring (negative: shorter than its rest length)
         start (EquilibriumOut): An equilibrium configuration.
         status (LimitLoadOutStatus): `stability_lost`: the path loses stability at load: a fold or a bifurcation (kind);
             `joint_limit`: no limit point: the path stays stable until a joint reaches its range bound; `max_load`: no limit
@@ -67,6 +76,10 @@ class LimitLoadOut:
     quasi_buckling_force: Force | None
     quasi_buckling_load: float | None
     quasi_buckling_stiffness: float | None
+    spring_forces: list[list[float]] | None
+    spring_lengths: list[list[float]] | None
+    spring_states: list[list[LimitLoadOutSpringStatesType0ItemItem]] | None
+    spring_stretches: list[list[float]] | None
     start: EquilibriumOut
     status: LimitLoadOutStatus
     success: bool
@@ -126,6 +139,53 @@ class LimitLoadOut:
         quasi_buckling_stiffness: float | None
         quasi_buckling_stiffness = self.quasi_buckling_stiffness
 
+        spring_forces: list[list[float]] | None
+        if isinstance(self.spring_forces, list):
+            spring_forces = []
+            for spring_forces_type_0_item_data in self.spring_forces:
+                spring_forces_type_0_item = spring_forces_type_0_item_data
+
+                spring_forces.append(spring_forces_type_0_item)
+
+        else:
+            spring_forces = self.spring_forces
+
+        spring_lengths: list[list[float]] | None
+        if isinstance(self.spring_lengths, list):
+            spring_lengths = []
+            for spring_lengths_type_0_item_data in self.spring_lengths:
+                spring_lengths_type_0_item = spring_lengths_type_0_item_data
+
+                spring_lengths.append(spring_lengths_type_0_item)
+
+        else:
+            spring_lengths = self.spring_lengths
+
+        spring_states: list[list[str]] | None
+        if isinstance(self.spring_states, list):
+            spring_states = []
+            for spring_states_type_0_item_data in self.spring_states:
+                spring_states_type_0_item = []
+                for spring_states_type_0_item_item_data in spring_states_type_0_item_data:
+                    spring_states_type_0_item_item = spring_states_type_0_item_item_data.value
+                    spring_states_type_0_item.append(spring_states_type_0_item_item)
+
+                spring_states.append(spring_states_type_0_item)
+
+        else:
+            spring_states = self.spring_states
+
+        spring_stretches: list[list[float]] | None
+        if isinstance(self.spring_stretches, list):
+            spring_stretches = []
+            for spring_stretches_type_0_item_data in self.spring_stretches:
+                spring_stretches_type_0_item = spring_stretches_type_0_item_data
+
+                spring_stretches.append(spring_stretches_type_0_item)
+
+        else:
+            spring_stretches = self.spring_stretches
+
         start = self.start.to_dict()
 
         status = self.status.value
@@ -158,6 +218,10 @@ class LimitLoadOut:
                 "quasi_buckling_force": quasi_buckling_force,
                 "quasi_buckling_load": quasi_buckling_load,
                 "quasi_buckling_stiffness": quasi_buckling_stiffness,
+                "spring_forces": spring_forces,
+                "spring_lengths": spring_lengths,
+                "spring_states": spring_states,
+                "spring_stretches": spring_stretches,
                 "start": start,
                 "status": status,
                 "success": success,
@@ -270,6 +334,93 @@ class LimitLoadOut:
 
         quasi_buckling_stiffness = _parse_quasi_buckling_stiffness(d.pop("quasi_buckling_stiffness"))
 
+        def _parse_spring_forces(data: object) -> list[list[float]] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_forces_type_0 = []
+                _spring_forces_type_0 = data
+                for spring_forces_type_0_item_data in _spring_forces_type_0:
+                    spring_forces_type_0_item = cast(list[float], spring_forces_type_0_item_data)
+
+                    spring_forces_type_0.append(spring_forces_type_0_item)
+
+                return spring_forces_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[float]] | None, data)
+
+        spring_forces = _parse_spring_forces(d.pop("spring_forces"))
+
+        def _parse_spring_lengths(data: object) -> list[list[float]] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_lengths_type_0 = []
+                _spring_lengths_type_0 = data
+                for spring_lengths_type_0_item_data in _spring_lengths_type_0:
+                    spring_lengths_type_0_item = cast(list[float], spring_lengths_type_0_item_data)
+
+                    spring_lengths_type_0.append(spring_lengths_type_0_item)
+
+                return spring_lengths_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[float]] | None, data)
+
+        spring_lengths = _parse_spring_lengths(d.pop("spring_lengths"))
+
+        def _parse_spring_states(data: object) -> list[list[LimitLoadOutSpringStatesType0ItemItem]] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_states_type_0 = []
+                _spring_states_type_0 = data
+                for spring_states_type_0_item_data in _spring_states_type_0:
+                    spring_states_type_0_item = []
+                    _spring_states_type_0_item = spring_states_type_0_item_data
+                    for spring_states_type_0_item_item_data in _spring_states_type_0_item:
+                        spring_states_type_0_item_item = LimitLoadOutSpringStatesType0ItemItem(
+                            spring_states_type_0_item_item_data
+                        )
+
+                        spring_states_type_0_item.append(spring_states_type_0_item_item)
+
+                    spring_states_type_0.append(spring_states_type_0_item)
+
+                return spring_states_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[LimitLoadOutSpringStatesType0ItemItem]] | None, data)
+
+        spring_states = _parse_spring_states(d.pop("spring_states"))
+
+        def _parse_spring_stretches(data: object) -> list[list[float]] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_stretches_type_0 = []
+                _spring_stretches_type_0 = data
+                for spring_stretches_type_0_item_data in _spring_stretches_type_0:
+                    spring_stretches_type_0_item = cast(list[float], spring_stretches_type_0_item_data)
+
+                    spring_stretches_type_0.append(spring_stretches_type_0_item)
+
+                return spring_stretches_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[float]] | None, data)
+
+        spring_stretches = _parse_spring_stretches(d.pop("spring_stretches"))
+
         start = EquilibriumOut.from_dict(d.pop("start"))
 
         status = LimitLoadOutStatus(d.pop("status"))
@@ -308,6 +459,10 @@ class LimitLoadOut:
             quasi_buckling_force=quasi_buckling_force,
             quasi_buckling_load=quasi_buckling_load,
             quasi_buckling_stiffness=quasi_buckling_stiffness,
+            spring_forces=spring_forces,
+            spring_lengths=spring_lengths,
+            spring_states=spring_states,
+            spring_stretches=spring_stretches,
             start=start,
             status=status,
             success=success,

@@ -22,8 +22,8 @@ class LimitLoadRequest:
     """The dead load where the branch from a rest configuration first loses stability (`tensegrity_opt.limit_load`).
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         boundary (LimitLoadRequestBoundary | Unset): "free": the tip free, F = t d; "guided": y held, Fx = t d_x, Fy the
             reaction Default: LimitLoadRequestBoundary.FREE.
         direction (list[float] | Unset): the load's direction (normalised; [-1, 0] compresses)

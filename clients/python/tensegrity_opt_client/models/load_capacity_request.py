@@ -22,8 +22,8 @@ class LoadCapacityRequest:
     """The largest extra tip load per direction before a stable pose loses stability (`load_capacity`).
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         base (list[float] | Unset): the load the pose carries [fx, fy] (force units)
         boundary (LoadCapacityRequestBoundary | Unset):  Default: LoadCapacityRequestBoundary.FREE.
         directions (int | Unset): how many evenly spaced directions Default: 36.

@@ -10,6 +10,7 @@ from ..models.plan_out_method_item import PlanOutMethodItem
 from ..models.plan_out_objective import PlanOutObjective
 from ..models.plan_out_on_infeasible import PlanOutOnInfeasible
 from ..models.plan_out_on_snap import PlanOutOnSnap
+from ..models.plan_out_spring_states_type_0_item_type_0_item_item import PlanOutSpringStatesType0ItemType0ItemItem
 from ..models.plan_out_status import PlanOutStatus
 
 if TYPE_CHECKING:
@@ -42,6 +43,15 @@ class PlanOut:
             nearest admissible pose's)
         q (list[list[float]]): the arm's configuration under each command (rad)
         seconds (float): wall time of the plan (s)
+        spring_forces (list[list[list[float]] | None] | None): each spring's force, tension positive: k (L - L0) (linear
+            law), k max(0, L - L0) (tension-only), per point
+        spring_lengths (list[list[list[float]] | None] | None): each spring's length L (length units), [spring 1, spring
+            2] per segment, per point
+        spring_states (list[list[list[PlanOutSpringStatesType0ItemType0ItemItem]] | None] | None): `taut` (L >= L0),
+            `slack` (tension-only, L < L0: no force) or `pushing` (linear law, L < L0: a compressive force a real tension
+            spring cannot carry), per point
+        spring_stretches (list[list[list[float]] | None] | None): L - L0 per spring (negative: shorter than its rest
+            length), per point
         start (list[float] | None): the arm's configuration at time 0 (rad): where the first step's transition starts
         status (PlanOutStatus): `complete`: every step is feasible; `infeasible_steps`: some steps are infeasible (see
             feasible): each commands the held value (hold) or the nearest admissible pose's rest lengths (approach), the
@@ -78,6 +88,10 @@ class PlanOut:
     proposals: list[list[list[float]]]
     q: list[list[float]]
     seconds: float
+    spring_forces: list[list[list[float]] | None] | None
+    spring_lengths: list[list[list[float]] | None] | None
+    spring_states: list[list[list[PlanOutSpringStatesType0ItemType0ItemItem]] | None] | None
+    spring_stretches: list[list[list[float]] | None] | None
     start: list[float] | None
     status: PlanOutStatus
     steps: list[PlanStepOut]
@@ -147,6 +161,89 @@ class PlanOut:
 
         seconds = self.seconds
 
+        spring_forces: list[list[list[float]] | None] | None
+        if isinstance(self.spring_forces, list):
+            spring_forces = []
+            for spring_forces_type_0_item_data in self.spring_forces:
+                spring_forces_type_0_item: list[list[float]] | None
+                if isinstance(spring_forces_type_0_item_data, list):
+                    spring_forces_type_0_item = []
+                    for spring_forces_type_0_item_type_0_item_data in spring_forces_type_0_item_data:
+                        spring_forces_type_0_item_type_0_item = spring_forces_type_0_item_type_0_item_data
+
+                        spring_forces_type_0_item.append(spring_forces_type_0_item_type_0_item)
+
+                else:
+                    spring_forces_type_0_item = spring_forces_type_0_item_data
+                spring_forces.append(spring_forces_type_0_item)
+
+        else:
+            spring_forces = self.spring_forces
+
+        spring_lengths: list[list[list[float]] | None] | None
+        if isinstance(self.spring_lengths, list):
+            spring_lengths = []
+            for spring_lengths_type_0_item_data in self.spring_lengths:
+                spring_lengths_type_0_item: list[list[float]] | None
+                if isinstance(spring_lengths_type_0_item_data, list):
+                    spring_lengths_type_0_item = []
+                    for spring_lengths_type_0_item_type_0_item_data in spring_lengths_type_0_item_data:
+                        spring_lengths_type_0_item_type_0_item = spring_lengths_type_0_item_type_0_item_data
+
+                        spring_lengths_type_0_item.append(spring_lengths_type_0_item_type_0_item)
+
+                else:
+                    spring_lengths_type_0_item = spring_lengths_type_0_item_data
+                spring_lengths.append(spring_lengths_type_0_item)
+
+        else:
+            spring_lengths = self.spring_lengths
+
+        spring_states: list[list[list[str]] | None] | None
+        if isinstance(self.spring_states, list):
+            spring_states = []
+            for spring_states_type_0_item_data in self.spring_states:
+                spring_states_type_0_item: list[list[str]] | None
+                if isinstance(spring_states_type_0_item_data, list):
+                    spring_states_type_0_item = []
+                    for spring_states_type_0_item_type_0_item_data in spring_states_type_0_item_data:
+                        spring_states_type_0_item_type_0_item = []
+                        for (
+                            spring_states_type_0_item_type_0_item_item_data
+                        ) in spring_states_type_0_item_type_0_item_data:
+                            spring_states_type_0_item_type_0_item_item = (
+                                spring_states_type_0_item_type_0_item_item_data.value
+                            )
+                            spring_states_type_0_item_type_0_item.append(spring_states_type_0_item_type_0_item_item)
+
+                        spring_states_type_0_item.append(spring_states_type_0_item_type_0_item)
+
+                else:
+                    spring_states_type_0_item = spring_states_type_0_item_data
+                spring_states.append(spring_states_type_0_item)
+
+        else:
+            spring_states = self.spring_states
+
+        spring_stretches: list[list[list[float]] | None] | None
+        if isinstance(self.spring_stretches, list):
+            spring_stretches = []
+            for spring_stretches_type_0_item_data in self.spring_stretches:
+                spring_stretches_type_0_item: list[list[float]] | None
+                if isinstance(spring_stretches_type_0_item_data, list):
+                    spring_stretches_type_0_item = []
+                    for spring_stretches_type_0_item_type_0_item_data in spring_stretches_type_0_item_data:
+                        spring_stretches_type_0_item_type_0_item = spring_stretches_type_0_item_type_0_item_data
+
+                        spring_stretches_type_0_item.append(spring_stretches_type_0_item_type_0_item)
+
+                else:
+                    spring_stretches_type_0_item = spring_stretches_type_0_item_data
+                spring_stretches.append(spring_stretches_type_0_item)
+
+        else:
+            spring_stretches = self.spring_stretches
+
         start: list[float] | None
         if isinstance(self.start, list):
             start = self.start
@@ -209,6 +306,10 @@ class PlanOut:
                 "proposals": proposals,
                 "q": q,
                 "seconds": seconds,
+                "spring_forces": spring_forces,
+                "spring_lengths": spring_lengths,
+                "spring_states": spring_states,
+                "spring_stretches": spring_stretches,
                 "start": start,
                 "status": status,
                 "steps": steps,
@@ -307,6 +408,187 @@ class PlanOut:
 
         seconds = d.pop("seconds")
 
+        def _parse_spring_forces(data: object) -> list[list[list[float]] | None] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_forces_type_0 = []
+                _spring_forces_type_0 = data
+                for spring_forces_type_0_item_data in _spring_forces_type_0:
+
+                    def _parse_spring_forces_type_0_item(data: object) -> list[list[float]] | None:
+                        if data is None:
+                            return data
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            spring_forces_type_0_item_type_0 = []
+                            _spring_forces_type_0_item_type_0 = data
+                            for spring_forces_type_0_item_type_0_item_data in _spring_forces_type_0_item_type_0:
+                                spring_forces_type_0_item_type_0_item = cast(
+                                    list[float], spring_forces_type_0_item_type_0_item_data
+                                )
+
+                                spring_forces_type_0_item_type_0.append(spring_forces_type_0_item_type_0_item)
+
+                            return spring_forces_type_0_item_type_0
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(list[list[float]] | None, data)
+
+                    spring_forces_type_0_item = _parse_spring_forces_type_0_item(spring_forces_type_0_item_data)
+
+                    spring_forces_type_0.append(spring_forces_type_0_item)
+
+                return spring_forces_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[list[float]] | None] | None, data)
+
+        spring_forces = _parse_spring_forces(d.pop("spring_forces"))
+
+        def _parse_spring_lengths(data: object) -> list[list[list[float]] | None] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_lengths_type_0 = []
+                _spring_lengths_type_0 = data
+                for spring_lengths_type_0_item_data in _spring_lengths_type_0:
+
+                    def _parse_spring_lengths_type_0_item(data: object) -> list[list[float]] | None:
+                        if data is None:
+                            return data
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            spring_lengths_type_0_item_type_0 = []
+                            _spring_lengths_type_0_item_type_0 = data
+                            for spring_lengths_type_0_item_type_0_item_data in _spring_lengths_type_0_item_type_0:
+                                spring_lengths_type_0_item_type_0_item = cast(
+                                    list[float], spring_lengths_type_0_item_type_0_item_data
+                                )
+
+                                spring_lengths_type_0_item_type_0.append(spring_lengths_type_0_item_type_0_item)
+
+                            return spring_lengths_type_0_item_type_0
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(list[list[float]] | None, data)
+
+                    spring_lengths_type_0_item = _parse_spring_lengths_type_0_item(spring_lengths_type_0_item_data)
+
+                    spring_lengths_type_0.append(spring_lengths_type_0_item)
+
+                return spring_lengths_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[list[float]] | None] | None, data)
+
+        spring_lengths = _parse_spring_lengths(d.pop("spring_lengths"))
+
+        def _parse_spring_states(
+            data: object,
+        ) -> list[list[list[PlanOutSpringStatesType0ItemType0ItemItem]] | None] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_states_type_0 = []
+                _spring_states_type_0 = data
+                for spring_states_type_0_item_data in _spring_states_type_0:
+
+                    def _parse_spring_states_type_0_item(
+                        data: object,
+                    ) -> list[list[PlanOutSpringStatesType0ItemType0ItemItem]] | None:
+                        if data is None:
+                            return data
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            spring_states_type_0_item_type_0 = []
+                            _spring_states_type_0_item_type_0 = data
+                            for spring_states_type_0_item_type_0_item_data in _spring_states_type_0_item_type_0:
+                                spring_states_type_0_item_type_0_item = []
+                                _spring_states_type_0_item_type_0_item = spring_states_type_0_item_type_0_item_data
+                                for (
+                                    spring_states_type_0_item_type_0_item_item_data
+                                ) in _spring_states_type_0_item_type_0_item:
+                                    spring_states_type_0_item_type_0_item_item = (
+                                        PlanOutSpringStatesType0ItemType0ItemItem(
+                                            spring_states_type_0_item_type_0_item_item_data
+                                        )
+                                    )
+
+                                    spring_states_type_0_item_type_0_item.append(
+                                        spring_states_type_0_item_type_0_item_item
+                                    )
+
+                                spring_states_type_0_item_type_0.append(spring_states_type_0_item_type_0_item)
+
+                            return spring_states_type_0_item_type_0
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(list[list[PlanOutSpringStatesType0ItemType0ItemItem]] | None, data)
+
+                    spring_states_type_0_item = _parse_spring_states_type_0_item(spring_states_type_0_item_data)
+
+                    spring_states_type_0.append(spring_states_type_0_item)
+
+                return spring_states_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[list[PlanOutSpringStatesType0ItemType0ItemItem]] | None] | None, data)
+
+        spring_states = _parse_spring_states(d.pop("spring_states"))
+
+        def _parse_spring_stretches(data: object) -> list[list[list[float]] | None] | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, list):
+                    raise TypeError()
+                spring_stretches_type_0 = []
+                _spring_stretches_type_0 = data
+                for spring_stretches_type_0_item_data in _spring_stretches_type_0:
+
+                    def _parse_spring_stretches_type_0_item(data: object) -> list[list[float]] | None:
+                        if data is None:
+                            return data
+                        try:
+                            if not isinstance(data, list):
+                                raise TypeError()
+                            spring_stretches_type_0_item_type_0 = []
+                            _spring_stretches_type_0_item_type_0 = data
+                            for spring_stretches_type_0_item_type_0_item_data in _spring_stretches_type_0_item_type_0:
+                                spring_stretches_type_0_item_type_0_item = cast(
+                                    list[float], spring_stretches_type_0_item_type_0_item_data
+                                )
+
+                                spring_stretches_type_0_item_type_0.append(spring_stretches_type_0_item_type_0_item)
+
+                            return spring_stretches_type_0_item_type_0
+                        except (TypeError, ValueError, AttributeError, KeyError):
+                            pass
+                        return cast(list[list[float]] | None, data)
+
+                    spring_stretches_type_0_item = _parse_spring_stretches_type_0_item(
+                        spring_stretches_type_0_item_data
+                    )
+
+                    spring_stretches_type_0.append(spring_stretches_type_0_item)
+
+                return spring_stretches_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(list[list[list[float]] | None] | None, data)
+
+        spring_stretches = _parse_spring_stretches(d.pop("spring_stretches"))
+
         def _parse_start(data: object) -> list[float] | None:
             if data is None:
                 return data
@@ -392,6 +674,10 @@ class PlanOut:
             proposals=proposals,
             q=q,
             seconds=seconds,
+            spring_forces=spring_forces,
+            spring_lengths=spring_lengths,
+            spring_states=spring_states,
+            spring_stretches=spring_stretches,
             start=start,
             status=status,
             steps=steps,

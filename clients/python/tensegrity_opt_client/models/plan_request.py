@@ -26,7 +26,7 @@ class PlanRequest:
 
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
-            "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
+            "a", "b", "k", "L0", "spring"} (uniform) or {"segments": [...]}
         targets (list[list[float]]): tip positions [x, y] per step (length units; 1..2000, server limit
             TENSEGRITY_MAX_TRAJECTORY_STEPS)
         bounds (list[float | list[float]] | None | RestLengthBoundsIn | Unset): actuator bounds on the rest lengths;

@@ -27,8 +27,8 @@ class PlotAtlasGridRequest:
             length units), strictly increasing: a list or {start, stop, num} (1..400 values)
         dy (AtlasRange | list[float]): the grid's dy (sideways) values (tip deflection, length units), strictly
             increasing: a list or {start, stop, num} (1..400 values)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         edges (bool | Unset): locate the switches and branch ends on the grid edges (false: the counts only) Default:
             True.

@@ -26,8 +26,8 @@ class PlotBoundaryRequest:
     """The stability boundary of `/v1/stability-boundary`: critical t against p, cusps marked.
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | Unset | WallControlIn):
             the control of the one-parameter branches (default guided)
         dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.

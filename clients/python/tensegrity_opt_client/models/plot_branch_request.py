@@ -34,8 +34,8 @@ class PlotBranchRequest:
             control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | WallControlIn): what the
                 continuation parameter t moves: {"kind": displacement | load | guided | wall | preload, ...}
                 (tensegrity_opt.Control)
-            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-                {"segments": [...]}
+            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+                (uniform) or {"segments": [...]}
             depth (int | None | Unset): null: one branch; a number: the bifurcation diagram to this many switches (0..6)
             dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
             format_ (None | PlotBranchRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides

@@ -25,8 +25,8 @@ class PlotCurveRequest:
     Attributes:
         dx (DeflectionRange | list[float]): deflections in the order to follow: a list or {start, stop, num} (at most
             501 points)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         branch (PlotCurveRequestBranch | Unset): "all" also draws every branch found at the first deflected point
             (unstable dashed) Default: PlotCurveRequestBranch.STABLE.
         dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.

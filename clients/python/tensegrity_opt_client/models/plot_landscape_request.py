@@ -22,8 +22,8 @@ class PlotLandscapeRequest:
 
     Attributes:
         dx (float): tip deflection along x (length units)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         dpi (int | Unset): PNG resolution in dots per inch (30..200; default 120, the command line's too) Default: 120.
         dy (float | Unset): tip deflection along y (length units) Default: 0.0.
         format_ (None | PlotLandscapeRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides

@@ -25,8 +25,8 @@ class PlotLimitLoadRequest:
     the load.
 
         Attributes:
-            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-                {"segments": [...]}
+            manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+                (uniform) or {"segments": [...]}
             arms (bool | Unset): at a bifurcation, also draw the buckled arms leaving it (to their first fold or joint
                 limit) against the end angle phi; false: the path only, against the tip displacement along the load Default:
                 True.

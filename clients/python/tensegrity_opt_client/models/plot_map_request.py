@@ -25,8 +25,8 @@ class PlotMapRequest:
     """Critical load over two design parameters, applied uniformly to every segment.
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         param_x (PlotMapRequestParamX): horizontal axis: a, b, k or L0
         param_y (PlotMapRequestParamY): vertical axis: a, b, k or L0 (not param_x)
         values_x (list[float] | MapValuesRange): values of the parameter (> 0, strictly increasing or decreasing): a

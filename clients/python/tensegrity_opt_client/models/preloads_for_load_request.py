@@ -23,7 +23,7 @@ class PreloadsForLoadRequest:
 
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
-            "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
+            "a", "b", "k", "L0", "spring"} (uniform) or {"segments": [...]}
         required (float): required critical compressive load (force units)
         boundary (PreloadsForLoadRequestBoundary | Unset):  Default: PreloadsForLoadRequestBoundary.GUIDED.
         bounds (BoundsIn | list[float | list[float]] | None | Unset): bounds on every L0; default (0.05 * 2b, 2b)

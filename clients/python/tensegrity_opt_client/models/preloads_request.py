@@ -23,7 +23,7 @@ class PreloadsRequest:
 
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
-            "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
+            "a", "b", "k", "L0", "spring"} (uniform) or {"segments": [...]}
         target (list[float]): tip position [x, y] (length units)
         bounds (BoundsIn | list[float | list[float]] | None | Unset): bounds on every rest length; default (0.1 b_min, 4
             b_max)

@@ -21,8 +21,8 @@ class RestConfigurationsRequest:
     """Every equilibrium under a dead tip load `F = (fx, fy)`; `F = 0` (default): the rest configurations.
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         fx (float | Unset): tip force along x (force units); fx < 0 compresses Default: 0.0.
         fy (float | Unset): tip force along y (force units) Default: 0.0.
         method (RestConfigurationsRequestMethod | Unset): for F != 0: `search` (multi-start Newton, complete in

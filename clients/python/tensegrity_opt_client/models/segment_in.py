@@ -5,6 +5,7 @@ from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
+from ..models.segment_in_spring import SegmentInSpring
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="SegmentIn")
@@ -21,12 +22,17 @@ class SegmentIn:
             [spring 1, spring 2] Default: 1.0.
         k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
+        spring (SegmentInSpring | Unset): the springs' law: `linear` (the paper's model: force k (L - L0) at every
+            length, a spring shorter than its rest length pushes) or `tension_only` (force k max(0, L - L0): it goes slack,
+            as a real extension spring or cable). Analyses that do not honour `tension_only` refuse it (422 `unsupported`,
+            field `segments[i].spring`) Default: SegmentInSpring.LINEAR.
     """
 
     a: float
     b: float
     L0: float | list[float] | Unset = 1.0
     k: float | list[float] | Unset = 1.0
+    spring: SegmentInSpring | Unset = SegmentInSpring.LINEAR
 
     def to_dict(self) -> dict[str, Any]:
         a = self.a
@@ -51,6 +57,10 @@ class SegmentIn:
         else:
             k = self.k
 
+        spring: str | Unset = UNSET
+        if not isinstance(self.spring, Unset):
+            spring = self.spring.value
+
         field_dict: dict[str, Any] = {}
 
         field_dict.update(
@@ -63,6 +73,8 @@ class SegmentIn:
             field_dict["L0"] = L0
         if k is not UNSET:
             field_dict["k"] = k
+        if spring is not UNSET:
+            field_dict["spring"] = spring
 
         return field_dict
 
@@ -103,11 +115,19 @@ class SegmentIn:
 
         k = _parse_k(d.pop("k", UNSET))
 
+        _spring = d.pop("spring", UNSET)
+        spring: SegmentInSpring | Unset
+        if isinstance(_spring, Unset):
+            spring = UNSET
+        else:
+            spring = SegmentInSpring(_spring)
+
         segment_in = cls(
             a=a,
             b=b,
             L0=L0,
             k=k,
+            spring=spring,
         )
 
         return segment_in

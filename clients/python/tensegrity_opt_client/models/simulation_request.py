@@ -22,8 +22,8 @@ class SimulationRequest:
     """Quasi-static simulation under sampled preloads and a tip load or deflection (`tensegrity_opt.simulate`).
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         loads (list[list[float]] | None | Unset): the dead tip load [fx, fy] at each sample (tip free; force units;
             default zero); fx < 0 compresses
         perturbation (float | Unset): where a snap's descent starts: this far (rad, the largest joint) from the fold

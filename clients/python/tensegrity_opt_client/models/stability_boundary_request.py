@@ -25,8 +25,8 @@ class StabilityBoundaryRequest:
     """The curve of folds or branch points in (parameter, t) (`tensegrity_opt.stability_boundary`).
 
     Attributes:
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         control (DisplacementControlIn | GuidedControlIn | LoadControlIn | PreloadControlIn | Unset | WallControlIn):
             the control of the one-parameter branches (default guided)
         max_points (int | Unset): at most this many points per branch, the start included (2..5000; server limit

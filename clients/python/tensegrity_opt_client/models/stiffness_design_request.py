@@ -24,7 +24,7 @@ class StiffnessDesignRequest:
 
     Attributes:
         manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
-            "a", "b", "k", "L0"} (uniform) or {"segments": [...]}
+            "a", "b", "k", "L0", "spring"} (uniform) or {"segments": [...]}
         target (list[float]): tip position [x, y] (length units)
         K_desired (list[list[float]] | None | Unset): the wanted 2 x 2 stiffness (symmetric; met exactly where
             reachable, else the closest in the Frobenius norm: `exact`, `residual`)

@@ -21,8 +21,8 @@ class StiffnessRequest:
 
     Attributes:
         dx (float): tip deflection along x (length units)
-        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0"} (uniform) or
-            {"segments": [...]}
+        manipulator (SegmentedManipulatorIn | UniformManipulatorIn): the chain: {"n", "a", "b", "k", "L0", "spring"}
+            (uniform) or {"segments": [...]}
         dy (float | Unset): tip deflection along y (length units) Default: 0.0.
         q0 (list[float] | None | Unset): optional nearby configuration
     """

@@ -18,8 +18,8 @@ class SweepSegmentedManipulator:
     fixed, so the points vary only dx, dy, load.
 
         Attributes:
-            segments (list[SegmentIn]): segments from base to tip ({a, b, k, L0}; k and L0 a number or the pair of the two
-                springs)
+            segments (list[SegmentIn]): segments from base to tip ({a, b, k, L0, spring}; k and L0 a number or the pair of
+                the two springs)
     """
 
     segments: list[SegmentIn]

@@ -5,6 +5,7 @@ from typing import Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
+from ..models.sweep_uniform_manipulator_spring import SweepUniformManipulatorSpring
 from ..types import UNSET, Unset
 
 T = TypeVar("T", bound="SweepUniformManipulator")
@@ -22,6 +23,10 @@ class SweepUniformManipulator:
         k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
         n (int | Unset): number of segments Default: 4.
+        spring (SweepUniformManipulatorSpring | Unset): the springs' law: `linear` (the paper's model: force k (L - L0)
+            at every length, a spring shorter than its rest length pushes) or `tension_only` (force k max(0, L - L0): it
+            goes slack, as a real extension spring or cable). Analyses that do not honour `tension_only` refuse it (422
+            `unsupported`, field `segments[i].spring`) Default: SweepUniformManipulatorSpring.LINEAR.
     """
 
     L0: float | list[float] | Unset = 1.0
@@ -29,6 +34,7 @@ class SweepUniformManipulator:
     b: float | Unset = 1.0
     k: float | list[float] | Unset = 1.0
     n: int | Unset = 4
+    spring: SweepUniformManipulatorSpring | Unset = SweepUniformManipulatorSpring.LINEAR
 
     def to_dict(self) -> dict[str, Any]:
         L0: float | list[float] | Unset
@@ -55,6 +61,10 @@ class SweepUniformManipulator:
 
         n = self.n
 
+        spring: str | Unset = UNSET
+        if not isinstance(self.spring, Unset):
+            spring = self.spring.value
+
         field_dict: dict[str, Any] = {}
 
         field_dict.update({})
@@ -68,6 +78,8 @@ class SweepUniformManipulator:
             field_dict["k"] = k
         if n is not UNSET:
             field_dict["n"] = n
+        if spring is not UNSET:
+            field_dict["spring"] = spring
 
         return field_dict
 
@@ -111,12 +123,20 @@ class SweepUniformManipulator:
 
         n = d.pop("n", UNSET)
 
+        _spring = d.pop("spring", UNSET)
+        spring: SweepUniformManipulatorSpring | Unset
+        if isinstance(_spring, Unset):
+            spring = UNSET
+        else:
+            spring = SweepUniformManipulatorSpring(_spring)
+
         sweep_uniform_manipulator = cls(
             L0=L0,
             a=a,
             b=b,
             k=k,
             n=n,
+            spring=spring,
         )
 
         return sweep_uniform_manipulator
