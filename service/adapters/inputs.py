@@ -130,4 +130,5 @@ def bounded_search_may_settle(key: tuple[Any, ...], max_segments: int) -> bool:
     another request goes straight to the full search instead of a round trip answering "not settled"."""
     if (key[1] if key[0] == "uniform" else len(key) - 1) > max_segments:
         return False
-    return manipulator(key).monotonic       # the chain is cached: the solve reuses it
+    m = manipulator(key)                    # the chain is cached: the solve reuses it
+    return m.monotonic and m.linear_springs  # the tension-only search is not a bounded Newton one

@@ -109,6 +109,10 @@ class EquilibriumOut(SpringStateOut, outcome_model(to.Equilibrium)):
     certificate: EnergyBoundOut | None = Field(
         None, description="the rigorous lower bound on the energy and its gap: with `certify: true`, or where the "
                           "default search's short way (short multistable chains) proved its answer; else null")
+    at_stop: list[bool] = Field(description="the joints resting on their mechanical stop |q| = pi - 2 beta (reached "
+                                            "where springs go slack: the tension-only law); false inside the range")
+    contact_torques: list[float] = Field(description="the torque each stop supplies (>= 0; 0 where a joint is not "
+                                                     "at its stop)")
 
 
 class RootBoxOut(BaseModel):

@@ -160,14 +160,16 @@ class Springs:
 def linear_only(m: Any, what: str) -> None:
     """Refuse an analysis ``what`` that honours only the linear spring law when ``m`` has a tension-only segment:
     :class:`UnsupportedError` with ``field="segments[i].spring"`` (the first such segment)."""
-    if m.springs.linear:
+    sp = getattr(m, "springs", None)
+    if sp is None or sp.linear:                 # not a chain: the analysis's own checks refuse it
         return
-    i = int(np.flatnonzero(m.springs.tension_only)[0])
+    i = int(np.flatnonzero(sp.tension_only)[0])
     raise UnsupportedError(
         f"{what} honours only the linear spring law; segments[{i}].spring is 'tension_only'. The tension-only law "
-        f"is honoured by solve_equilibrium (the least-energy equilibrium, joint stops included) and by the spring "
-        f"state of every answer; use spring='linear' for this analysis (its answer is then valid where every "
-        f"spring_states entry is 'taut')", field=f"segments[{i}].spring", spring="tension_only", analysis=what)
+        f"is honoured by solve_equilibrium (the least-energy equilibrium, joint stops included), critical_force "
+        f"(springs taut at the straight chain), energy_landscape and the spring state of every answer; use "
+        f"spring='linear' for this analysis (its answer is then valid where every spring_states entry is 'taut')",
+        field=f"segments[{i}].spring", spring="tension_only", analysis=what)
 
 
 class SpringFields:

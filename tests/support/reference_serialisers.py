@@ -70,12 +70,14 @@ def springs_series_out(Q, sp) -> dict[str, Any]:
 
 
 def equilibrium_out(eq) -> dict[str, Any]:
-    return {**outcome(eq), **springs_out(eq.q, eq.springs), "q": _nums(eq.q), "energy": _num(eq.energy), "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
+    return {**outcome(eq), **springs_out(eq.q, eq.springs), "q": _nums(eq.q), "energy": _num(eq.energy),
+            "force": {"fx": _num(eq.fx), "fy": _num(eq.fy)},
             "morse_index": int(eq.morse_index), "stable": bool(eq.stable), "kind": eq.kind, "shape": eq.shape,
             "signs": eq.signs, "tip": _nums(eq.tip),
             "solver": {"status": str(eq.solver.status),
                        "iterations": None if eq.solver.iterations is None else int(eq.solver.iterations)},
-            "certificate": energy_bound_out(eq.certificate)}
+            "certificate": energy_bound_out(eq.certificate), "at_stop": [bool(v) for v in eq.at_stop],
+            "contact_torques": [_num(v) for v in eq.contact_torques]}
 
 
 def energy_bound_out(c) -> dict[str, Any] | None:

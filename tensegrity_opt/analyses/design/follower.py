@@ -32,6 +32,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import numbers
@@ -140,6 +141,7 @@ class PreloadFollower:
     def __init__(self, m: Manipulator, start=None, *, load=(0.0, 0.0)) -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
+        linear_only(m, "PreloadFollower")
         self.m = m
         self.load = checked_vector(load, 2, "load")
         if isinstance(start, Equilibrium):

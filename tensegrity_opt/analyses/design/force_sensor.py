@@ -27,7 +27,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
@@ -415,6 +415,7 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
     >>> round(est.fx, 9), round(est.fy, 9), est.dof, est.p_value > 0.5
     (-0.1, 0.05, 2, True)
     """
+    linear_only(m, "estimate_tip_force")
     if not isinstance(m, Manipulator):
         raise InvalidParameterError("m must be a Manipulator", field="m")
     n = m.n

@@ -23,6 +23,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...outcome import Outcome, freeze
 from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
@@ -262,6 +263,7 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
         (``ValueError``) bad arguments (``field`` names one), or a pose that is not a stable equilibrium under
         ``base`` (``field="pose"``).
     """
+    linear_only(m, "load_capacity")
     if boundary not in ("free", "guided"):
         raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")
     D = _directions(directions, boundary)

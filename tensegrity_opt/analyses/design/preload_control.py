@@ -85,7 +85,7 @@ from ...errors import (
     TimeLimitError,
 )
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import chain_solver
 from ...numerics.inverse_statics import inverse_statics
 from ...numerics.inverse_statics import layouts as step_layouts
@@ -371,6 +371,7 @@ class PreloadController:
                  weights=None, on_infeasible: str = "hold", verify: bool = True) -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
+        linear_only(m, "PreloadController")
         n = m.n
         if n < 2:
             raise InvalidParameterError("preload control needs a chain of n >= 2 segments", field="n")
@@ -1123,6 +1124,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     -------
     PreloadPlan
     """
+    linear_only(m, "plan_preloads")
     T = real_array(targets, "targets")
     if T.ndim != 2 or T.shape[1] != 2 or T.shape[0] < 1 or not np.all(np.isfinite(T)):
         raise InvalidParameterError("targets must be K >= 1 finite tip positions (x, y)", field="targets")

@@ -34,7 +34,7 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
@@ -161,6 +161,7 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
+    linear_only(m, "preloads_for_critical_force")
     required = float(required)
     if not math.isfinite(required) or required <= 0:
         raise InvalidParameterError("required must be a positive finite load", field="required")
@@ -224,6 +225,7 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
+    linear_only(m, "preloads_for_pose")
     with _time_limit(timeout):
         return _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start)
 

@@ -6,6 +6,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...numerics import chain_solver
 from ...numerics.layout import chain_parameters, equilibrium_unknowns
 from ..equilibria.buckling import critical_force, straight_matrices
@@ -34,6 +35,7 @@ def critical_load_sensitivity(m: Manipulator, boundary: str = "guided", mode: in
     InvalidParameterError
         When the load is repeated (not differentiable there; use the design NLP instead).
     """
+    linear_only(m, "critical_load_sensitivity")
     bk = critical_force(m, boundary)
     if mode < 0 or mode >= bk.loads.size:
         raise InvalidParameterError(f"mode must be in 0..{bk.loads.size - 1}", field="mode")
@@ -79,6 +81,7 @@ def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.nda
         ``names`` (``"a[0]", ..., "L2_0[n-1]"``); and per-parameter blocks
         ``"dq/<name>"`` (n, n) and ``"dF/<name>"`` (2, n).
     """
+    linear_only(m, "equilibrium_sensitivity")
     n = m.n
     Jz, Jp = chain_solver(m).kkt_parameter_jacobian(np.asarray(eq.q, float), np.asarray(eq.force, float),
                                                     np.asarray(eq.tip, float))

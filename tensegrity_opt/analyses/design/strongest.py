@@ -29,6 +29,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
+from ...model.springs import linear_only
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
 from ...timelimit import time_limit as _time_limit
@@ -234,6 +235,7 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
+    linear_only(m, "maximize_critical_force")
     with _time_limit(timeout):
         return buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)
 

@@ -41,6 +41,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError, UnreachableTargetError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...numerics import KERNEL_MAX, chain_solver, distinct, distinct_indices
 from ...numerics.krawczyk import IntervalCertificate, prove_equilibria
 from ...outcome import Outcome, freeze
@@ -292,6 +293,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         (``RuntimeError``) when the search found no equilibrium and its solvers broke down (no descent reached
         the target: nothing tells whether one exists), or PHCpack failed.
     """
+    linear_only(m, "find_equilibria")
     if method not in ("search", "homotopy"):
         raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
     target = m.check_reachable(dx, dy)

@@ -38,9 +38,11 @@ from ...errors import (
     InvalidParameterError,
     StraightNotEquilibriumError,
     UnstableStraightError,
+    UnsupportedError,
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
+from ...model.springs import SHORT_TOL
 from ...outcome import Outcome
 from ...serialize import number, numbers
 
@@ -197,6 +199,21 @@ def check_straight(m: Manipulator) -> None:
 SPARSE_ABOVE = 200
 
 
+def _taut_when_straight(m: Manipulator) -> None:
+    """Buckling linearises at the straight chain: a tension-only spring taut there (``2 b > L0``) is a linear one
+    for it; one slack or at its rest length there is refused by name (its stiffness is zero or one-sided)."""
+    if m.linear_springs:
+        return
+    sp = m.springs
+    short = sp.stretches(np.zeros(m.n)) <= SHORT_TOL * sp.L0
+    for i, j in zip(*np.nonzero(short & sp.tension_only[:, None])):
+        raise UnsupportedError(
+            f"critical_force linearises at the straight chain, where spring {j + 1} of segment {i} is slack or at its "
+            f"rest length (L0 = {sp.L0[i, j]:.6g} >= 2b = {2 * m.b[i]:.6g}) under the tension-only law: its stiffness "
+            "there is zero or one-sided (the linear law's answer would be wrong)", field=f"segments[{i}].spring",
+            spring="tension_only")
+
+
 def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
                    method: Literal["auto", "reduced", "paper", "sparse"] = "auto",
                    n_modes: int | None = None) -> Buckling:
@@ -233,6 +250,7 @@ def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
     """
     if boundary not in ("guided", "free"):
         raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
+    _taut_when_straight(m)
     if method not in ("auto", "reduced", "paper", "sparse"):
         raise InvalidParameterError(f"method must be 'auto', 'reduced', 'paper' or 'sparse', got {method!r}",
                                     field="method")

@@ -33,7 +33,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import LocalResult, chain_solver
 from ...outcome import Outcome, SolverInfo
 from ...serialize import number, numbers
@@ -92,6 +92,11 @@ class Equilibrium(Outcome, TipForce, SpringFields):
         Each spring's length, ``L - L0``, force (tension positive, under its segment's law) and state
         (``"taut"``, ``"slack"``, ``"pushing"``) at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`;
         from ``springs``, the chain's springs).
+    at_stop : ndarray (n,) of bool
+        The joints resting on their mechanical stop ``|q_i| = pi - 2 beta_i`` (reached only where springs go slack:
+        the tension-only law); all False for an equilibrium inside the open range.
+    contact_torques : ndarray (n,)
+        The torque each stop supplies (>= 0; 0 where a joint is not at its stop).
     certificate : EnergyBound or None
         With ``solve_equilibrium(..., certify=True)``: the rigorous lower bound on the energy of every
         configuration meeting the tip constraint in the closed joint range, and the gap
@@ -126,9 +131,17 @@ class Equilibrium(Outcome, TipForce, SpringFields):
     status: str = "converged"
     certificate: EnergyBound | None = field(default=None, repr=False)
     springs: Springs | None = field(default=None, repr=False, compare=False)
+    at_stop: np.ndarray | None = field(default=None, repr=False)
+    contact_torques: np.ndarray | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         # the builders pass arrays they own: read-only in place (this is on the control loop's path)
+        if self.at_stop is None:                # inside the open range: no stop touched (the common case)
+            object.__setattr__(self, "at_stop", _NO_STOP[self.q.size])
+            object.__setattr__(self, "contact_torques", _ZERO_TORQUE[self.q.size])
+        else:
+            self.at_stop.setflags(write=False)
+            self.contact_torques.setflags(write=False)
         self.q.setflags(write=False)
         self.force.setflags(write=False)
         self.tip.setflags(write=False)
@@ -175,13 +188,33 @@ class Equilibrium(Outcome, TipForce, SpringFields):
         ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted), ``certificate``
         (:meth:`EnergyBound.to_dict`: with ``certify=True``, or where the search's short way proved its answer;
         else ``null``), the spring state ``spring_lengths``, ``spring_stretches``, ``spring_forces``,
-        ``spring_states`` ((n, 2) each); every number finite (:mod:`tensegrity_opt.serialize`)."""
+        ``spring_states`` ((n, 2) each), ``at_stop`` and ``contact_torques`` (per joint); every number finite
+        (:mod:`tensegrity_opt.serialize`)."""
         extra = {"certificate": None if self.certificate is None else self.certificate.to_dict()}
         return {**self.outcome(), **self.spring_dict(), "q": numbers(self.q), "energy": number(self.energy),
                 "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,
                 "shape": self.shape, "signs": self.signs, "tip": numbers(self.tip),
-                "solver": self.solver.to_dict(), **extra}
+                "solver": self.solver.to_dict(), **extra, "at_stop": [bool(v) for v in self.at_stop],
+                "contact_torques": numbers(self.contact_torques)}
+
+
+class _Zeros(dict):
+    """Read-only zero vectors by length, made once (shared by every equilibrium inside the open range)."""
+
+    def __init__(self, dtype: type) -> None:
+        super().__init__()
+        self.dtype = dtype
+
+    def __missing__(self, n: int) -> np.ndarray:
+        z = np.zeros(n, dtype=self.dtype)
+        z.setflags(write=False)
+        self[n] = z
+        return z
+
+
+_NO_STOP = _Zeros(bool)
+_ZERO_TORQUE = _Zeros(float)
 
 
 #: What each exact case is (the sentence of :attr:`Equilibrium.message`), by its ``solver.status``.
@@ -345,6 +378,7 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
     NoEquilibriumError, SolverError
         (``RuntimeError``) when IPOPT does not converge or only finds a point on a joint limit.
     """
+    linear_only(m, "solve_equilibrium_under_force")
     for name, v in (("fx", fx), ("fy", fy)):
         if not math.isfinite(float(v)):
             raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)

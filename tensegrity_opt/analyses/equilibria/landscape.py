@@ -218,7 +218,10 @@ def energy_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int
     for elbow in (1, -1):
         q = complete_configuration(m, target, pair, QI, QJ, elbow)
         L1, L2 = _lengths(m, q)
-        E = 0.5 * ((m.k1 * (L1 - m.L1_0) ** 2).sum(-1) + (m.k2 * (L2 - m.L2_0) ** 2).sum(-1))
+        if m.linear_springs:
+            E = 0.5 * ((m.k1 * (L1 - m.L1_0) ** 2).sum(-1) + (m.k2 * (L2 - m.L2_0) ** 2).sum(-1))
+        else:                                   # each spring's law (a slack spring holds nothing)
+            E = m.springs.energy(q)
         inside = np.all(np.abs(q) < lim, axis=-1)
         energies.append(np.where(inside, E, np.nan))
         configs.append(q)

@@ -28,6 +28,7 @@ from ...errors import (
     NoEquilibriumError,
     SolverError,
     UnreachableTargetError,
+    UnsupportedError,
 )
 from ...model.manipulator import Manipulator
 from ...numerics import KERNEL_MAX, SAME_Q, LocalResult, chain_solver, distinct, distinct_indices, same
@@ -117,9 +118,44 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     NoEquilibriumError, SolverError
         (``RuntimeError``) when no solve converged to a stable equilibrium inside the
         physical range; ``status`` lists the solver statuses met.
+
+    Notes
+    -----
+    A chain with tension-only springs (``Segment(..., spring="tension_only")``) is solved by its own search
+    (:mod:`~.tension_only`): the closed joint range, a joint may rest on its stop (``at_stop``,
+    ``contact_torques``); IPOPT on the smooth slack problem from ``q0``, the linear law's answer, the stops and
+    random starts, each solution made exact by Newton and checked in numpy. It is measured, not certified:
+    ``method`` ``"auto"`` or ``"ipopt"`` only, ``certify=True`` refused (``field="certify"``).
     """
+    if not m.linear_springs:
+        return _solve_tension_only(m, dx, dy, q0=q0, local=local, method=method, certify=bool(certify))
     return _solve_equilibrium(m, dx, dy, q0=q0, local=local, method=method, n_random=n_random, max_modes=max_modes,
                               certify=bool(certify))
+
+
+def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str,
+                        certify: bool) -> Equilibrium:
+    """:func:`solve_equilibrium` of a chain with tension-only springs (:mod:`.tension_only`)."""
+    from .tension_only import least_energy_slack
+
+    if method not in ("auto", "ipopt"):
+        raise UnsupportedError(f"method {method!r} models the linear spring law; a chain with tension-only springs "
+                               "is solved by its own search (method 'auto')", field="method", spring="tension_only")
+    if certify:
+        raise UnsupportedError("certify=True proves the least energy under the linear spring law only; the "
+                               "tension-only search is measured, not certified", field="certify",
+                               spring="tension_only")
+    target = m.check_reachable(dx, dy)
+    q0 = check_q0(m, q0)
+    if local and q0 is None:
+        raise InvalidParameterError("local=True needs q0", field="q0")
+    linear = None
+    if not local:
+        try:
+            linear = solve_equilibrium(m.with_spring("linear"), dx, dy).q
+        except (ValueError, RuntimeError):      # no linear-law answer: the search's other starts
+            pass
+    return least_energy_slack(m, dx, dy, target, q0=q0, local=local, linear_start=linear)
 
 
 def _solve_equilibrium(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str, n_random: int | None,

@@ -54,6 +54,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...outcome import Outcome
 from ...serialize import number
 from .seeds import project_to_target
@@ -534,6 +535,7 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
     EnergyBound
         ``bound``, ``energy``, ``gap``, ``tolerance``, ``status`` (``"certified"`` or ``"open"``).
     """
+    linear_only(m, "energy_lower_bound")
     t0 = time.perf_counter()
     target = m.check_reachable(dx, dy)
     ch = _Chain(m, target)

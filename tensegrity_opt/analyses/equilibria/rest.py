@@ -42,6 +42,7 @@ import numpy as np
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from ...model.combinations import combination_indices, sample_combinations
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...numerics import LocalResult, chain_solver, distinct
 from ...outcome import SolverInfo
 from ...timelimit import check_time
@@ -396,6 +397,7 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
     TimeLimitError
         A :func:`tensegrity_opt.time_limit` expired during the search.
     """
+    linear_only(m, "find_equilibria_under_force")
     fx, fy = _finite("fx", fx), _finite("fy", fy)
     if method not in ("search", "homotopy"):
         raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
@@ -469,6 +471,7 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
         (``RuntimeError``) some segment has no well inside its range (its unloaded energy decreases
         towards a joint limit): the chain has no stable rest configuration.
     """
+    linear_only(m, "rest_configuration")
     if which != "least_energy":
         raise InvalidParameterError(f"which must be 'least_energy', got {which!r}", field="which")
     q = _least_energy_well(m)

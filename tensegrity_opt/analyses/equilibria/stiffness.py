@@ -14,6 +14,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...numerics import chain_solver
 from .equilibrium import Equilibrium
 
@@ -42,6 +43,7 @@ def cartesian_stiffness(m: Manipulator, eq: Equilibrium) -> np.ndarray:
         (``ValueError``) when the KKT system is singular there (e.g. the fully
         extended chain, where the tip Jacobian loses rank), or ``eq`` has the wrong size.
     """
+    linear_only(m, "cartesian_stiffness")
     q = np.asarray(eq.q, dtype=float)
     if q.shape != (m.n,):
         raise InvalidParameterError(f"eq has {q.size} joint angles, the manipulator {m.n}", field="eq")

@@ -53,6 +53,7 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...numerics import DENSE_MAX, chain_solver
 from ...numerics.homotopy import homotopy_available
 from ...outcome import Outcome, freeze
@@ -502,6 +503,7 @@ def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bo
     >>> at.n_stable.max(), len(at.switches) > 0                          # doctest: +SKIP
     (4, True)
     """
+    linear_only(m, "stability_atlas")
     X, Y = _check(m, dx, dy, method)
     targets = [[AtlasTarget(float(x), float(y), error="time_limit: not computed") for x in X] for y in Y]
 

@@ -39,6 +39,7 @@ import scipy.optimize as so
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
+from ...model.springs import linear_only
 from ...numerics.layout import chain_parameters
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
@@ -397,6 +398,7 @@ def stability_boundary(m: Manipulator, control: Control | str = "guided", parame
     NoEquilibriumError
         (``RuntimeError``) when the branch at ``p = 0`` never loses stability before ``t_max``.
     """
+    linear_only(m, "stability_boundary")
     with time_limit(timeout):
         return _boundary(m, control, parameter, start, p_min, p_max, max_points, t_max, step, max_step, control_kw)
 

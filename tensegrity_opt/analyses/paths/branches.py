@@ -27,7 +27,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...outcome import Outcome
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
@@ -278,6 +278,7 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
     NoEquilibriumError
         (``RuntimeError``) when Newton cannot put the start on the branch.
     """
+    linear_only(m, "trace_branch")
     if timeout is not None:
         with time_limit(timeout):
             return trace_branch(m, start, control, t_max=t_max, t_min=t_min, max_points=max_points, step=step,

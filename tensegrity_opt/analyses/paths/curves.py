@@ -57,7 +57,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, shape_labels
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics.distinct import same
 from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import nullable, number, numbers
@@ -459,6 +459,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         (``RuntimeError``) ``reference="rest"`` only: when the chain has no stable rest configuration
         (nothing to measure from). A point without a stable equilibrium ends the curve instead.
     """
+    linear_only(m, "force_deflection")
     if branch not in ("stable", "all"):
         raise InvalidParameterError(f"branch must be 'stable' or 'all', got {branch!r}", field="branch")
     if reference not in ("straight", "rest"):

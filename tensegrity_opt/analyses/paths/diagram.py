@@ -14,6 +14,7 @@ import scipy.optimize as so
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SingularStartError, TensegrityError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...timelimit import expired, time_limit
 from .branches import FORCE_BOUND, Branch, _start_of, continue_branch, trace_branch
 from .control import Control, as_control
@@ -114,6 +115,7 @@ def bifurcation_diagram(m: Manipulator, start=None, control: Control | str = "lo
         buckled arms), then the switched branches breadth-first;
         at most ``max_branches``.
     """
+    linear_only(m, "bifurcation_diagram")
     if isinstance(depth, bool) or not isinstance(depth, (int, np.integer)) or depth < 0:
         raise InvalidParameterError(f"depth must be an integer >= 0, got {depth!r}", field="depth")
     trace_kw = {k: kw.pop(k) for k in ("t_max", "t_min", "max_points", "step", "max_step", "min_step") if k in kw}

@@ -43,6 +43,7 @@ import numpy as np
 from ...checks import real_array
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
+from ...model.springs import linear_only
 from ...outcome import Outcome, freeze
 from ...serialize import nullable, nullables, number, numbers
 from ...timelimit import expired, time_limit
@@ -293,6 +294,7 @@ def imperfection_sensitivity(m: Manipulator, amplitudes, *, imperfection="asymme
         (``ValueError``) for bad amplitudes (also an amplitude giving an invalid chain, e.g. a rest length
         <= 0), imperfection, direction, boundary or ``max_load``.
     """
+    linear_only(m, "imperfection_sensitivity")
     amps = _check_amplitudes(amplitudes)
     if isinstance(imperfection, str) and imperfection not in PARAMETERS:
         raise InvalidParameterError(f"imperfection must be one of {PARAMETERS} or a vector of 6n numbers, got "

@@ -52,7 +52,7 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import DENSE_MAX
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
@@ -348,6 +348,7 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
     >>> sim.status, [(e.kind, e.step, round(float(e.load[1]), 6)) for e in sim.snaps]
     ('complete', [('snap', 15, 0.153111), ('snap', 69, -0.097754)])
     """
+    linear_only(m, "simulate")
     held = tip == "held"
     P, L, T = _inputs(m, preloads, loads, tip, targets)
     if not (isinstance(perturbation, (int, float)) and math.isfinite(perturbation) and 0 < perturbation < 0.1):

@@ -47,7 +47,7 @@ import scipy.optimize as so
 
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs
+from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import DENSE_MAX, chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import nullable, number, numbers
@@ -616,6 +616,7 @@ def transition(m: Manipulator, start, preloads, loads=None, *, perturbation: flo
     >>> tr.status, len(tr.snaps)
     ('snapped', 1)
     """
+    linear_only(m, "transition")
     if not isinstance(m, Manipulator):
         raise InvalidParameterError("m must be a Manipulator", field="m")
     if m.n > DENSE_MAX:

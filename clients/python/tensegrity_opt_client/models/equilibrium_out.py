@@ -25,6 +25,9 @@ class EquilibriumOut:
     """An equilibrium configuration.
 
     Attributes:
+        at_stop (list[bool]): the joints resting on their mechanical stop |q| = pi - 2 beta (reached where springs go
+            slack: the tension-only law); false inside the range
+        contact_torques (list[float]): the torque each stop supplies (>= 0; 0 where a joint is not at its stop)
         energy (float): elastic energy (force x length)
         force (Force):
         kind (EquilibriumOutKind):
@@ -55,6 +58,8 @@ class EquilibriumOut:
             true`, or where the default search's short way (short multistable chains) proved its answer; else null
     """
 
+    at_stop: list[bool]
+    contact_torques: list[float]
     energy: float
     force: Force
     kind: EquilibriumOutKind
@@ -77,6 +82,10 @@ class EquilibriumOut:
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.energy_bound_out import EnergyBoundOut  # noqa: PLC0415
+
+        at_stop = self.at_stop
+
+        contact_torques = self.contact_torques
 
         energy = self.energy
 
@@ -163,6 +172,8 @@ class EquilibriumOut:
         field_dict.update(self.additional_properties)
         field_dict.update(
             {
+                "at_stop": at_stop,
+                "contact_torques": contact_torques,
                 "energy": energy,
                 "force": force,
                 "kind": kind,
@@ -194,6 +205,10 @@ class EquilibriumOut:
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
 
         d = dict(src_dict)
+        at_stop = cast(list[bool], d.pop("at_stop"))
+
+        contact_torques = cast(list[float], d.pop("contact_torques"))
+
         energy = d.pop("energy")
 
         force = Force.from_dict(d.pop("force"))
@@ -325,6 +340,8 @@ class EquilibriumOut:
         certificate = _parse_certificate(d.pop("certificate", UNSET))
 
         equilibrium_out = cls(
+            at_stop=at_stop,
+            contact_torques=contact_torques,
             energy=energy,
             force=force,
             kind=kind,

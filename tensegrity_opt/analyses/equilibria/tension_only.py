@@ -1,0 +1,189 @@
+"""The least-energy equilibrium of a chain whose springs may go slack (the tension-only law), joint stops included.
+
+Under the tension-only law (``docs/model.md``, "The spring law") a slack spring holds nothing, so a joint may
+reach its mechanical stop ``|q| = pi - 2 beta`` (the triangles meet, a spring's length reaches zero) and rest on
+it: an equilibrium with a *contact torque* (>= 0) at that joint. The least-energy configuration meeting the tip
+constraint in the closed joint range is found by IPOPT on the smooth slack problem
+(:mod:`tensegrity_opt.numerics.slack_nlp`) from several starts, then each solution is made exact and checked here:
+
+1. the joints at a stop are read from the solution (within ``STOP_TOL`` of the bound) and set on it;
+2. Newton on the free joints and the tip force (the equilibrium rows of the free joints, the tip rows) makes it
+   an equilibrium to rounding; the residual is re-checked in numpy (:meth:`Manipulator.equilibrium_residual` on the
+   free joints, under each spring's law: independent of CasADi);
+3. a stop's contact torque is ``-sign(q_i) (dE/dq_i - (J^T F)_i)``: it must be >= 0 (else the joint would leave the
+   stop: not an equilibrium there);
+4. stability: the Hessian of ``E - F . tip`` reduced to the directions that keep the tip and the joints in contact
+   fixed (a stop with a positive contact torque is a constraint: moving off it costs first-order energy), Morse
+   index 0 with every eigenvalue above the tolerance.
+
+The starts: ``q0``, the same chain's least-energy equilibrium under the linear law (where it exists), each joint
+near either stop, and ``STARTS`` random configurations (seeded: deterministic). The least energy of the stable
+equilibria found is returned. This is a *measured* global search, not a certified one: ``status`` is
+``"converged"`` and ``certify=True`` (or ``method="homotopy"``) is refused for a tension-only chain.
+
+A segment whose two springs are both slack has a free joint (no stiffness): the equilibrium is still reported where
+it is isolated (the tip constraint holds it), and refused naming the segment where the joint is left undetermined
+(a zero eigenvalue).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ...errors import NoEquilibriumError, UnreachableTargetError, UnsupportedError
+from ...model.manipulator import Manipulator
+from ...numerics.slack_nlp import slack_nlp
+from ...outcome import SolverInfo
+from ...timelimit import check_time
+from .equilibrium import RESIDUAL_TOL, Equilibrium
+
+__all__ = ["least_energy_slack", "STARTS", "STOP_TOL"]
+
+#: Random starts of the search (besides q0, the linear law's answer and the stop starts).
+STARTS = 24
+#: A joint within this distance of its bound (rad) rests on its stop.
+STOP_TOL = 1e-6
+#: Newton iterations of the polish at most.
+POLISH_ITER = 30
+#: Reduced-Hessian eigenvalues below this (times k c^2) are zero: not a strict minimum.
+EIG_TOL = 1e-9
+
+
+def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray, *, q0=None,
+                       local: bool = False, linear_start: np.ndarray | None = None) -> Equilibrium:
+    """The least-energy stable equilibrium of ``m`` (any spring laws) with the tip on ``target``, in the closed joint
+    range (module docstring). ``local``: only the solve from ``q0``; ``linear_start``: the same chain's least-energy
+    configuration under the linear law (a start)."""
+    nlp = slack_nlp(m.n)
+    p, bounds = nlp.parameters(m, target), nlp.bounds(m)
+    starts = [np.asarray(q0, float)] if local else _starts(m, q0, linear_start)
+    best: Equilibrium | None = None
+    statuses: dict[str, int] = {}
+    refused: UnsupportedError | None = None
+    for qs in starts:
+        check_time("the tension-only search")
+        res = nlp.solve(nlp.start(m, np.clip(qs, -m.joint_limits, m.joint_limits)), p, bounds)
+        statuses[res.status] = statuses.get(res.status, 0) + 1
+        if not res.success:
+            continue
+        try:
+            eq = _classified(m, nlp, nlp.x.unpack(res.x)["q"], -res.lam_g[nlp.g["tip"]], target,
+                             SolverInfo(res.status, res.iterations))
+        except UnsupportedError as exc:          # a free joint left undetermined
+            refused = exc
+            continue
+        if eq is None or not (eq.stable or local):
+            continue
+        if best is None or eq.energy < best.energy - 1e-12 * max(1.0, abs(best.energy)):
+            best = eq
+    if best is None:
+        if refused is not None:
+            raise refused
+        met = ", ".join(f"{k} x{v}" for k, v in sorted(statuses.items()))
+        if set(statuses) == {"Infeasible_Problem_Detected"} and not local:
+            raise UnreachableTargetError(
+                f"the target for dx={dx:g}, dy={dy:g} lies within the chain's length but outside the workspace of the "
+                f"closed joint range |q| <= pi - 2 beta: IPOPT found it infeasible from all {len(starts)} starts",
+                field="dx")
+        raise NoEquilibriumError(f"no stable equilibrium found from {len(starts)} start(s) of the tension-only search "
+                                 f"(IPOPT: {met})", status="no_stable_equilibrium")
+    return best
+
+
+def _starts(m: Manipulator, q0, linear_start) -> list[np.ndarray]:
+    n, lim = m.n, m.joint_limits
+    starts = [] if q0 is None else [np.asarray(q0, float)]
+    if linear_start is not None:
+        starts.append(np.asarray(linear_start, float))
+    for i in range(n):
+        for sign in (1.0, -1.0):
+            q = np.zeros(n)
+            q[i] = sign * 0.98 * lim[i]
+            starts.append(q)
+    rng = np.random.default_rng(20261207)
+    starts.extend(rng.uniform(-0.9, 0.9, size=(STARTS, n)) * lim)
+    return starts
+
+
+def _classified(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, target: np.ndarray,
+                solver: SolverInfo) -> Equilibrium | None:
+    """The checked equilibrium at IPOPT's solution ``(q, F)``, or None where it is not one (module docstring)."""
+    lim = m.joint_limits
+    if not np.all(np.isfinite(q)) or np.any(np.abs(q) > lim * (1 + 1e-9)):
+        return None
+    side = np.where(q >= lim - STOP_TOL, 1.0, np.where(q <= -lim + STOP_TOL, -1.0, 0.0))
+    q = np.where(side != 0.0, side * lim, q)
+    free = side == 0.0
+    if free.sum() < 2 and m.n >= 2:             # the tip rows need two free joints (else a rigid pose: rare)
+        return None
+    q, F = _polish(m, nlp, q, np.asarray(F, float), free, target)
+    if q is None:
+        return None
+    E, g, H, tip, J = nlp.derivatives(m, q, F)
+    r = g - J.T @ F
+    scale = m.torque_scale
+    if float(np.abs(tip - target).max()) > RESIDUAL_TOL * float(m.b.sum()) or \
+            _residual(m, q, F, free) > RESIDUAL_TOL:
+        return None
+    contact = np.where(free, 0.0, -side * r)
+    if np.any(contact < -1e-9 * scale):        # the joint would leave its stop
+        return None
+    contact = np.maximum(contact, 0.0)
+    held = np.flatnonzero(~free)
+    C = np.vstack([J, np.eye(m.n)[held]]) if held.size else J
+    _, sv, Vt = np.linalg.svd(C)
+    rank = int(np.sum(sv > 1e-10 * max(1.0, float(sv.max()))))
+    Z = Vt[rank:].T
+    w = np.linalg.eigvalsh(Z.T @ H @ Z) if Z.shape[1] else np.zeros(0)
+    morse = int(np.sum(w < -EIG_TOL * scale))
+    stable = morse == 0 and bool(np.all(w > EIG_TOL * scale))
+    if morse == 0 and not stable:
+        loose = [i for i in np.flatnonzero(free) if np.all(m.springs.states(q)[i] == "slack")]
+        if loose:
+            i = int(loose[0])
+            raise UnsupportedError(
+                f"both springs of segment {i} are slack at the least-energy configuration and its joint is left "
+                f"undetermined (a free joint: no stiffness, and the tip constraint does not hold it); the least "
+                f"energy is {E:.6g} but its configuration is not unique", field=f"segments[{i}]",
+                status="free_joint")
+    return Equilibrium(q=q.copy(), energy=float(m.energy(q)), force=F.copy(), morse_index=morse, stable=stable,
+                       solver=solver, tip=m.tip(q), control="displacement", hessian_eigenvalues=w,
+                       springs=m.springs, at_stop=side != 0.0, contact_torques=contact)
+
+
+def _polish(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, free: np.ndarray, target: np.ndarray):
+    """Newton on the free joints and the tip force with the stops held: ``(q, F)`` to rounding, or ``(None, None)``."""
+    idx = np.flatnonzero(free)
+    k = idx.size
+    scale = m.torque_scale
+    for _ in range(POLISH_ITER):
+        _, g, H, tip, J = nlp.derivatives(m, q, F)
+        r = np.concatenate([(g - J.T @ F)[idx], tip - target])
+        if float(np.abs(r[:k]).max(initial=0.0)) <= 1e-13 * scale and float(np.abs(r[k:]).max()) <= 1e-14 * m.b.sum():
+            return q, F
+        K = np.zeros((k + 2, k + 2))
+        K[:k, :k] = H[np.ix_(idx, idx)]
+        K[:k, k:] = -J[:, idx].T
+        K[k:, :k] = J[:, idx]
+        try:
+            d = np.linalg.solve(K, -r)
+        except np.linalg.LinAlgError:
+            return None, None
+        q = q.copy()
+        q[idx] += d[:k]
+        F = F + d[k:]
+        if np.any(np.abs(q) > m.joint_limits) or not np.all(np.isfinite(q)):
+            return None, None
+        if float(np.abs(d).max()) < 1e-15:
+            break
+    _, g, H, tip, J = nlp.derivatives(m, q, F)
+    ok = float(np.abs((g - J.T @ F)[idx]).max(initial=0.0)) <= 1e-10 * scale
+    return (q, F) if ok else (None, None)
+
+
+def _residual(m: Manipulator, q: np.ndarray, F: np.ndarray, free: np.ndarray) -> float:
+    """The free joints' equilibrium residual in numpy (scaled by k c^2), under each spring's law."""
+    r = m.gradient(q) - m.jacobian(q).T @ F
+    return float(np.abs(r[free]).max(initial=0.0)) / m.torque_scale if math.isfinite(float(r.sum())) else math.inf

@@ -1,0 +1,261 @@
+"""The spring law and the spring state (issue "the arm as built").
+
+Expected numbers come from the independent reference ``tests/support/reference_tension_only.py`` (spring lengths
+from the triangles' vertices, torques from the spring force vectors, the least energy by a dense brute force over
+the closed joint range polished by SLSQP), never from the code under test; the paper's chain's figures at dx = 2
+(4.86014 tension-only with joint 3 on its stop, 5.18323 linear) are the issue's own brute-force figures.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+
+import numpy as np
+import pytest
+import reference_tension_only as ref
+
+import tensegrity_opt as to
+from tensegrity_opt.errors import InvalidParameterError, UnsupportedError
+
+
+# ------------------------------------------------------------------------------------------- random chains
+def _chain(family: str, rng: np.random.Generator, spring: str = "linear", n: int | None = None):
+    """A random chain of one family and a deflection (dx, dy) for it."""
+    u = lambda lo, hi: float(rng.uniform(lo, hi))  # noqa: E731
+    n = int(rng.integers(2, 5)) if n is None else n
+    if family == "monotonic":
+        return to.Manipulator.uniform(n, a=u(0.8, 1.2), b=1.0, k=u(0.5, 2.0), L0=u(0.8, 1.2), spring=spring), \
+            u(0.05, 0.6) * n / 4, 0.0
+    if family == "bistable":
+        return to.Manipulator.uniform(n, a=0.5, b=1.0, k=u(0.5, 2.0), L0=u(0.4, 0.6), spring=spring), \
+            u(0.1, 0.6) * n / 4, 0.0
+    if family == "heterogeneous":
+        segs = [to.Segment(u(0.6, 1.4), u(0.6, 1.4), u(0.5, 2.0), u(0.7, 1.3), spring) for _ in range(n)]
+        m = to.Manipulator(segs)
+        return m, u(0.05, 0.3) * m.straight_length / 4, 0.0
+    if family == "asymmetric":
+        return to.Manipulator.uniform(n, a=1.0, b=1.0, k=(u(0.8, 1.2), u(1.2, 1.8)), L0=(u(0.9, 1.1), u(0.7, 0.95)),
+                                      spring=spring), u(0.1, 0.5) * n / 4, 0.0
+    if family == "dy":
+        return to.Manipulator.uniform(n, a=1.0, b=1.0, k=u(0.5, 2.0), L0=1.0, spring=spring), u(0.1, 0.5) * n / 4, \
+            u(-0.4, 0.4) * n / 4
+    if family == "large":                      # large deflections: springs go slack or push
+        return to.Manipulator.uniform(n, a=u(0.8, 1.2), b=1.0, k=u(0.5, 2.0), L0=u(0.8, 1.4), spring=spring), \
+            u(0.25, 0.4) * 2.0 * n, u(-0.3, 0.3)
+    raise AssertionError(family)
+
+
+FAMILIES = ("monotonic", "bistable", "heterogeneous", "asymmetric", "dy", "large")
+
+
+# ------------------------------------------------------------------------------------------- the spring state
+@pytest.mark.parametrize("family", FAMILIES)
+@pytest.mark.parametrize("seed", [0, 1])
+def test_the_spring_state_of_an_equilibrium_is_the_reference_geometry(family, seed):
+    """Linear law: lengths from the triangles' vertices, forces k (L - L0) (negative: pushing), the states."""
+    m, dx, dy = _chain(family, np.random.default_rng(seed))
+    eq = to.solve_equilibrium(m, dx, dy)
+    segs = ref.segs_of(m)
+    L = ref.lengths(segs, eq.q)
+    L0 = np.array([[s.L1_0, s.L2_0] for s in m.segments])
+    k = np.array([[s.k1, s.k2] for s in m.segments])
+    np.testing.assert_allclose(eq.spring_lengths, L, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(eq.spring_stretches, L - L0, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(eq.spring_forces, k * (L - L0), rtol=0, atol=1e-12)
+    np.testing.assert_array_equal(eq.spring_states, np.where(L - L0 < -1e-9 * L0, "pushing", "taut"))
+    d = eq.to_dict()
+    assert d["spring_forces"] == eq.spring_forces.tolist() and d["spring_states"] == eq.spring_states.tolist()
+    json.dumps(d, allow_nan=False)
+
+
+def test_the_paper_chain_past_its_first_rest_length_pushes_and_says_so():
+    """The issue's figures: past dx ~ 1.097 a spring is shorter than its rest length (0.217, 0.469, 0.945 at
+    dx = 1.5, 2, 3; two springs at dx = 3)."""
+    m = to.Manipulator.uniform(4)
+    short = {}
+    for dx in (1.0, 1.5, 2.0, 3.0):
+        eq = to.solve_equilibrium(m, dx)
+        s = eq.spring_stretches
+        short[dx] = sorted((-s[s < 0]).round(3).tolist(), reverse=True)
+        assert (eq.spring_states == "pushing").sum() == (s < 0).sum()
+    assert short[1.0] == [] and short[1.5] == [0.217] and short[2.0] == [0.469] and short[3.0][0] == 0.945
+    assert len(short[3.0]) == 2
+
+
+def test_series_results_carry_one_spring_state_per_point():
+    m = to.Manipulator.uniform(3)
+    c = to.force_deflection(m, np.linspace(0.2, 1.5, 4))
+    segs = ref.segs_of(m)
+    for i, pt in enumerate(c.to_dict()["points"]):
+        np.testing.assert_allclose(pt["spring_lengths"], ref.lengths(segs, c.q[i]), atol=1e-12)
+    br = to.trace_branch(m, to.solve_equilibrium(m, 0.2), to.Control.displacement(), t_max=0.6)
+    assert br.spring_forces.shape == (len(br), 3, 2)
+    np.testing.assert_allclose(br.spring_forces[-1], ref.forces(segs, br.q[-1]), atol=1e-12)
+    # a preload move: each point under its own rest lengths
+    P0 = np.column_stack([m.L1_0, m.L2_0])
+    plan = to.plan_preloads(m, [[5.5, 0.3], [5.4, 0.6]])
+    for s, cmd in zip(plan.steps, plan.commands):
+        mk = to.Manipulator(sg.replace(L0=tuple(c)) for sg, c in zip(m.segments, cmd))
+        np.testing.assert_allclose(s.spring_forces, ref.forces(ref.segs_of(mk), s.q), atol=1e-12)
+    np.testing.assert_allclose(plan.spring_forces[0], plan.steps[0].spring_forces, atol=0)
+    assert not np.allclose(plan.commands[-1], P0)
+
+
+# ------------------------------------------------------------------------------------------- the law itself
+def test_a_spring_law_is_named_once_and_refused_by_name():
+    assert to.Segment(1, 1).spring == "linear"
+    with pytest.raises(InvalidParameterError) as e:
+        to.Segment(1, 1, spring="tension")
+    assert e.value.field == "spring" and "tension_only" in str(e.value)
+    with pytest.raises(InvalidParameterError):
+        to.Manipulator.uniform(3, spring=1)
+    m = to.Manipulator([to.Segment(1, 1), to.Segment(1, 1, spring="tension_only")])
+    d = m.to_dict()
+    assert "spring" not in d["segments"][0] and d["segments"][1]["spring"] == "tension_only"
+    assert to.Manipulator.from_dict(d) == m
+    assert to.Manipulator.from_dict({"n": 2, "spring": "tension_only"}).segments[1].spring == "tension_only"
+    assert m.with_spring("linear").linear_springs and not m.linear_springs
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_the_tension_only_model_equals_the_reference(seed):
+    """Energy, joint torques and joint stiffness of random tension-only chains at random angles (springs slack
+    and taut), against the reference's vertex geometry, force vectors and finite differences."""
+    rng = np.random.default_rng(seed)
+    segs = [to.Segment(rng.uniform(0.5, 1.5), rng.uniform(0.5, 1.5), (rng.uniform(0.5, 2), rng.uniform(0.5, 2)),
+                       (rng.uniform(0.6, 2.2), rng.uniform(0.6, 2.2)), "tension_only") for _ in range(4)]
+    m = to.Manipulator(segs)
+    rs = ref.segs_of(m)
+    slack_seen = 0
+    for _ in range(40):
+        q = rng.uniform(-0.97, 0.97) * m.joint_limits
+        L = ref.lengths(rs, q)
+        L0 = np.array([[s.L1_0, s.L2_0] for s in segs])
+        if np.any(np.abs(L - L0) < 1e-4):      # not on a kink (the finite differences)
+            continue
+        slack_seen += int(np.sum(L < L0))
+        assert m.energy(q) == pytest.approx(ref.energy(rs, q), rel=1e-12, abs=1e-14)
+        np.testing.assert_allclose(m.torques(q), ref.torques(rs, q), rtol=1e-10, atol=1e-12)
+        np.testing.assert_allclose(m.springs.forces(q), ref.forces(rs, q), rtol=1e-12, atol=1e-14)
+        stiff = np.array([-s.dtorque(qi) for s, qi in zip(segs, q)])
+        np.testing.assert_allclose(stiff, ref.stiffness(rs, q), rtol=1e-5, atol=1e-6)
+    assert slack_seen > 0
+
+
+# ------------------------------------------------------------------------------------------- the least energy
+def test_the_paper_chain_under_both_laws():
+    """The issue's brute-force figures: tension-only 4.86014 at dx = 2 with joint 3 on its stop (q3 = -pi/2, its
+    mirror +pi/2), linear 5.18323 (no answer of the linear law touches a stop)."""
+    lin = to.solve_equilibrium(to.Manipulator.uniform(4), 2.0)
+    assert lin.energy == pytest.approx(5.18323, abs=1e-5) and not lin.at_stop.any()
+    assert lin.contact_torques.tolist() == [0.0] * 4
+    eq = to.solve_equilibrium(to.Manipulator.uniform(4, spring="tension_only"), 2.0)
+    assert eq.energy == pytest.approx(4.86014, abs=1e-5)
+    assert eq.at_stop.tolist() == [False, False, True, False] and abs(eq.q[2]) == math.pi / 2
+    assert eq.contact_torques[2] > 0.1 and eq.stable and eq.morse_index == 0
+    assert (eq.spring_states == "slack").sum() == 1 and not (eq.spring_states == "pushing").any()
+    d = eq.to_dict()
+    assert d["at_stop"] == [False, False, True, False] and d["contact_torques"][2] == eq.contact_torques[2]
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_the_least_energy_of_a_tension_only_chain_equals_the_brute_force(family, seed):
+    """Random tension-only chains of every family (n = 2, 3, 4), deflected far enough that springs go slack (the
+    largest of 3x, 2x, 1.5x, 1x the family's deflection the closed range reaches)."""
+    n = (3, 2, 4)[seed]
+    m, dx0, dy0 = _chain(family, np.random.default_rng(100 + seed), "tension_only", n=n)
+    segs = ref.segs_of(m)
+    best = None
+    for factor in (3.0, 2.0, 1.5, 1.0):
+        dx, dy = dx0 * factor, dy0 * factor
+        try:
+            best = ref.least_energy(segs, dx, dy)
+            break
+        except ValueError:                     # out of reach in the closed range: a smaller deflection
+            with pytest.raises(to.UnreachableTargetError):
+                to.solve_equilibrium(m, dx, dy)
+    if best is None:
+        return                                 # every deflection out of reach: each refused as unreachable
+    eq = to.solve_equilibrium(m, dx, dy)
+    assert eq.energy == pytest.approx(best.energy, rel=1e-7, abs=1e-9)
+    assert eq.stable and eq.energy == pytest.approx(ref.energy(segs, eq.q), rel=1e-12, abs=1e-12)
+    np.testing.assert_allclose(eq.tip, m.target(dx, dy), atol=1e-9)
+    assert np.all(np.abs(eq.q) <= m.joint_limits) and np.all(eq.contact_torques >= 0)
+    if eq.at_stop.any() or best.at_stop.any():
+        # the same stops, the same contact torques (the configuration is the brute force's up to its polish)
+        assert eq.at_stop.tolist() == best.at_stop.tolist()
+        np.testing.assert_allclose(eq.contact_torques, best.contact_torques, rtol=1e-4, atol=1e-6)
+    # the forces balance at the free joints in the reference model
+    r = ref.torques(segs, eq.q) + ref.tip_jacobian(segs, eq.q).T @ eq.force
+    assert np.abs(r[~eq.at_stop]).max() < 1e-8 * m.torque_scale
+
+
+# ------------------------------------------------------------------------------------------- refusals
+def _calls(m, lin_eq, P):
+    from tensegrity_opt.analyses.paths.transition import transition
+
+    return {
+        "solve_equilibrium_under_force": lambda: to.solve_equilibrium_under_force(m, -0.1, 0.0),
+        "find_equilibria": lambda: to.find_equilibria(m, 0.3),
+        "find_equilibria_under_force": lambda: to.find_equilibria_under_force(m, -0.1, 0.0),
+        "rest_configuration": lambda: to.rest_configuration(m),
+        "cartesian_stiffness": lambda: to.cartesian_stiffness(m, lin_eq),
+        "energy_lower_bound": lambda: to.energy_lower_bound(m, 0.3),
+        "solve_equilibria_batch": lambda: to.solve_equilibria_batch(m, [0.1, 0.2]),
+        "Tracker": lambda: to.Tracker(m),
+        "force_deflection": lambda: to.force_deflection(m, [0.1, 0.2]),
+        "trace_branch": lambda: to.trace_branch(m, lin_eq, to.Control.displacement(), t_max=0.1),
+        "bifurcation_diagram": lambda: to.bifurcation_diagram(m, lin_eq, to.Control.displacement(), t_max=0.1),
+        "limit_load": lambda: to.limit_load(m),
+        "imperfection_sensitivity": lambda: to.imperfection_sensitivity(m, [0.01, 0.02]),
+        "stability_boundary": lambda: to.stability_boundary(m, "displacement", "k"),
+        "stability_atlas": lambda: to.stability_atlas(m, [0.1], [0.0]),
+        "simulate": lambda: to.simulate(m, np.repeat(P[None], 2, 0), loads=np.zeros((2, 2))),
+        "transition": lambda: transition(m, lin_eq, np.stack([P, P * 1.01])),
+        "maximize_critical_force": lambda: to.maximize_critical_force(m),
+        "preloads_for_pose": lambda: to.preloads_for_pose(m, (5.5, 0.3)),
+        "preloads_for_critical_force": lambda: to.preloads_for_critical_force(m, 0.5),
+        "preloads_for_stiffness": lambda: to.preloads_for_stiffness(m, (5.5, 0.3), K_desired=np.eye(2)),
+        "plan_preloads": lambda: to.plan_preloads(m, [[5.5, 0.3]]),
+        "PreloadController": lambda: to.PreloadController(m),
+        "PreloadFollower": lambda: to.PreloadFollower(m),
+        "load_capacity": lambda: to.load_capacity(m),
+        "estimate_tip_force": lambda: to.estimate_tip_force(m, lin_eq.q),
+        "critical_load_sensitivity": lambda: to.critical_load_sensitivity(m),
+        "equilibrium_sensitivity": lambda: to.equilibrium_sensitivity(m, 0.3),
+        "solve_equilibrium (certify)": lambda: to.solve_equilibrium(m, 0.3, certify=True),
+        "solve_equilibrium (homotopy)": lambda: to.solve_equilibrium(m, 0.3, method="homotopy"),
+    }
+
+
+def test_every_analysis_honours_the_tension_only_law_or_refuses_it_by_name():
+    """No analysis answers for the linear law when a segment is tension-only: each one not yet honouring it
+    refuses naming the first such segment's spring (the second segment here)."""
+    m = to.Manipulator([to.Segment(1, 1), to.Segment(1, 1, spring="tension_only"), to.Segment(1, 1)])
+    lin = m.with_spring("linear")
+    lin_eq = to.solve_equilibrium(lin, 0.3)
+    P = np.column_stack([lin.L1_0, lin.L2_0])
+    for name, call in _calls(m, lin_eq, P).items():
+        with pytest.raises(UnsupportedError) as e:
+            call()
+        want = {"solve_equilibrium (certify)": "certify", "solve_equilibrium (homotopy)": "method"}
+        assert e.value.field == want.get(name, "segments[1].spring"), name
+    # honoured: the least energy, buckling of springs taut when straight, the landscape, the spring state
+    eq = to.solve_equilibrium(m, 0.3)
+    assert eq.stable and eq.energy == pytest.approx(lin_eq.energy, rel=1e-9)   # every spring taut here
+    assert to.critical_force(m).force == pytest.approx(to.critical_force(lin).force, rel=1e-12)
+    m4 = to.Manipulator.uniform(4, spring="tension_only")
+    land = to.energy_landscape(m4, 2.0, grid=5)
+    finite = np.isfinite(land.energy)
+    E = np.array([ref.energy(ref.segs_of(m4), q) for q in land.q[finite]])
+    np.testing.assert_allclose(land.energy[finite], E, rtol=1e-12)
+
+
+def test_buckling_refuses_a_spring_slack_at_the_straight_chain():
+    m = to.Manipulator([to.Segment(1, 1, L0=1.0, spring="tension_only"), to.Segment(1, 1, L0=2.5,
+                                                                                   spring="tension_only")])
+    with pytest.raises(UnsupportedError) as e:
+        to.critical_force(m, "free")
+    assert e.value.field == "segments[1].spring"
