@@ -104,8 +104,57 @@ def map():  # noqa: A001 - the figure's name
                           PAPER)
 
 
+def _least_energy_path(m, dxs):
+    """The least-energy equilibrium at each deflection (warm-started from the last)."""
+    out, q = [], None
+    for dx in dxs:
+        e = to.solve_equilibrium(m, float(dx), q0=q)
+        out.append(e)
+        q = e.q if not e.at_stop.any() else None
+    return out
+
+
+def spring_laws():
+    """The paper's chain past dx ~ 1.1 under both spring laws: the least energy, the tip force, the most compressed
+    spring's stretch; where a spring first goes short of its rest length and where a joint first rests on its
+    stop."""
+    dxs = np.linspace(0.05, 4.0, 80)
+    fig = plots.new_figure((11.0, 3.6))
+    axes = fig.subplots(1, 3)
+    for law, color in (("linear", "tab:blue"), ("tension_only", "tab:red")):
+        eqs = _least_energy_path(PAPER.with_spring(law), dxs)
+        stretch = np.array([e.spring_stretches.min() for e in eqs])
+        label = {"linear": "linear (pushes)", "tension_only": "tension-only (goes slack)"}[law]
+        axes[0].plot(dxs, [e.energy for e in eqs], color=color, label=label)
+        axes[1].plot(dxs, [e.fx for e in eqs], color=color, label=label)
+        axes[2].plot(dxs, stretch, color=color, label=label)
+        stop = next((dx for dx, e in zip(dxs, eqs) if e.at_stop.any()), None)
+        if stop is not None:
+            for ax in axes:
+                ax.axvline(stop, color=color, ls=":", lw=0.9)
+    first = next(dx for dx, e in zip(dxs, _least_energy_path(PAPER, dxs)) if e.spring_stretches.min() < 0)
+    for ax, ylabel in zip(axes, ("least energy $E$ (stiffness × length²)", "tip force $F_x$ (force)",
+                                 "least stretch $L - L_0$ (length)")):
+        ax.axvline(first, color="0.4", ls="--", lw=0.8)
+        ax.set_xlabel("$\\delta_x$ (length)")
+        ax.set_ylabel(ylabel, fontsize=9)
+    axes[2].axhline(0.0, color="0.6", lw=0.6)
+    axes[0].legend(fontsize=8)
+    fig.suptitle("The paper's chain (n = 4, a = b = k = L0 = 1) under both spring laws: dashed, a spring first "
+                 "shorter than its rest length;\ndotted, a joint first on its stop (the least-energy equilibrium at "
+                 "each deflection)", fontsize=9)
+    return fig
+
+
+def spring_laws_shapes():
+    """The least-energy equilibrium at dx = 2 under the linear law (left: spring 3.2 pushes) and the tension-only
+    law (right: spring 3.2 slack, joint 3 on its stop)."""
+    eqs = [to.solve_equilibrium(PAPER.with_spring(law), 2.0) for law in ("linear", "tension_only")]
+    return plots.plot_shapes(eqs, PAPER, 2.0)
+
+
 FIGURES = {f.__name__: f for f in (fig2_torque, fig4_landscape, fig4_landscape_q1q2, fig5_landscape, fig6_curve,
-                                    shapes, branch, atlas, map)}
+                                    shapes, branch, atlas, map, spring_laws, spring_laws_shapes)}
 
 #: Every figure kind's default (``tensegrity-opt plot --help``), drawn by its command: ``default_<name>.png`` is
 #: ``tensegrity-opt plot <these arguments> -o default_<name>.png``, at the command's own resolution. ``map``,

@@ -79,7 +79,8 @@ def plot_shapes_task(req: ps.PlotShapesRequest) -> Any:
     from tensegrity_opt.applications import plots
 
     m = build_manipulator(req.manipulator)
-    return plots.plot_shapes(find_equilibria(m, req.dx, req.dy), m, req.dx, req.dy, max_panels=req.max_panels)
+    return plots.plot_shapes(find_equilibria(m, req.dx, req.dy), m, req.dx, req.dy, max_panels=req.max_panels,
+                             springs=req.springs)
 
 
 @_rendered

@@ -159,6 +159,18 @@ def test_the_paper_chain_under_both_laws():
     assert d["at_stop"] == [False, False, True, False] and d["contact_torques"][2] == eq.contact_torques[2]
 
 
+@pytest.mark.parametrize("dx", [3.3, 4.0])
+def test_under_the_linear_law_too_the_arm_rests_on_a_stop_where_it_reaches_one(dx):
+    """The paper's chain pressed past dx ~ 3.1: the least-energy configuration of the closed range rests joint 3 on
+    its stop (the linear law's pushing spring is at zero length there), as the brute force finds."""
+    m = to.Manipulator.uniform(4)
+    eq, best = to.solve_equilibrium(m, dx), ref.least_energy(ref.segs_of(m), dx, 0.0)
+    assert eq.at_stop.tolist() == best.at_stop.tolist() == [False, False, True, False]
+    assert eq.energy == pytest.approx(best.energy, rel=1e-10)
+    np.testing.assert_allclose(eq.contact_torques, best.contact_torques, rtol=1e-6, atol=1e-9)
+    assert eq.spring_lengths[2].min() == pytest.approx(0.0, abs=1e-12)    # the spring at the stop has no length
+
+
 @pytest.mark.parametrize("family", FAMILIES)
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_the_least_energy_of_a_tension_only_chain_equals_the_brute_force(family, seed):

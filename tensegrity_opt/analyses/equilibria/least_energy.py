@@ -47,6 +47,7 @@ from .equilibrium import (
 from .lower_bound import energy_lower_bound
 from .seeds import projected_sample, ranked_well_seeds, seed_starts, well_seeds
 from .stability import inertia_of_reduced
+from .tension_only import least_energy_slack
 
 __all__ = ["solve_equilibrium", "search_stable", "certify_least", "WELLS_MAX"]
 
@@ -108,7 +109,10 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     Equilibrium
         Stable (``morse_index == 0``) and of least energy among those found. When two
         mirror images tie (``dy = 0``) the one nearer ``q0`` wins, else the one with
-        ``q_1 > 0``.
+        ``q_1 > 0``. Where the least-energy configurations press a joint against its range limit (no stable
+        equilibrium inside the open range: a large deflection), the arm rests on that joint's stop
+        ``|q_i| = pi - 2 beta_i``: the search of the closed range (:mod:`~.tension_only`, the same as for a
+        tension-only chain) returns it with ``at_stop`` and its ``contact_torques``.
 
     Raises
     ------
@@ -136,7 +140,6 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
 def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str,
                         certify: bool) -> Equilibrium:
     """:func:`solve_equilibrium` of a chain with tension-only springs (:mod:`.tension_only`)."""
-    from .tension_only import least_energy_slack
 
     if method not in ("auto", "ipopt"):
         raise UnsupportedError(f"method {method!r} models the linear spring law; a chain with tension-only springs "
@@ -155,6 +158,8 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
             linear = solve_equilibrium(m.with_spring("linear"), dx, dy).q
         except (ValueError, RuntimeError):      # no linear-law answer: the search's other starts
             pass
+        else:
+            linear = np.clip(linear, -m.joint_limits, m.joint_limits)
     return least_energy_slack(m, dx, dy, target, q0=q0, local=local, linear_start=linear)
 
 
@@ -260,10 +265,9 @@ def _solve_equilibrium(m: Manipulator, dx: float, dy: float, *, q0, local: bool,
             f"of the physical joint range |q| < pi - 2 beta: IPOPT found it infeasible from all "
             f"{sum(ipopt.values())} starts", field="dx", status=_summary(statuses))
     if any(k.endswith("(on joint limit)") and not k.startswith("Infeasible") for k in ipopt):
-        raise NoEquilibriumError(
-            f"no equilibrium inside the physical range for dx={dx:g}, dy={dy:g}: the least-energy "
-            "configurations press a joint against its range limit |q| = pi - 2 beta (a spring "
-            "length reaches zero)", status=_summary(statuses))
+        # the least-energy configurations press a joint against its range limit |q| = pi - 2 beta (a spring
+        # length reaches zero): the arm rests on that stop (the search of the closed range, its contact torque)
+        return least_energy_slack(m, dx, dy, target, q0=q0)
     raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
                       status=_summary(statuses))
 

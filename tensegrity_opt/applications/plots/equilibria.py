@@ -189,8 +189,16 @@ def plot_landscape(landscape: Landscape, equilibria: Sequence[Equilibrium], m: M
 
 
 # ---------------------------------------------------------------------------- shapes
+#: How a spring is drawn by its state (``springs="state"``): taut in the panel's stability colour, a linear-law spring
+#: shorter than its rest length (pushing: a force a real tension spring cannot carry) red and dashed, a slack
+#: tension-only spring grey and dotted.
+SPRING_STYLES = {"pushing": {"color": "tab:red", "ls": "--", "lw": 1.6},
+                 "slack": {"color": "0.55", "ls": ":", "lw": 1.1}}
+
+
 def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy: float = 0.0, *,
-                max_panels: int = 24, ncols: int | None = None, panel_width: float = 3.8) -> Any:
+                max_panels: int = 24, ncols: int | None = None, panel_width: float = 3.8,
+                springs: str = "state") -> Any:
     """The chain drawn in each of ``equilibria`` (those of :func:`~tensegrity_opt.find_equilibria`, an
     :class:`~tensegrity_opt.EquilibriumSet` or any sequence of :class:`~tensegrity_opt.Equilibrium`), one panel
     each.
@@ -202,10 +210,17 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
     first ones: the lowest energies of a set) are drawn. ``m`` is their chain; ``dx``, ``dy`` the tip
     deflection named in the title.
 
+    ``springs``: ``"state"`` (default) draws a taut spring solid in the panel's colour, a pushing one (linear law,
+    shorter than its rest length) red and dashed, a slack one (tension-only law) grey and dotted
+    (:data:`SPRING_STYLES`); ``"tension"`` colours every spring by its force (tension positive) on one diverging
+    scale shared by the panels, with a colour bar. A joint resting on its stop is ringed (``"stop-<i>"``).
+
     Artists (``gid``): per panel ``"triangle-<i>-<0|1>"`` (proximal/distal triangle of segment ``i``),
-    ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``; the axes' gid is
-    ``"equilibrium-<k>"``.
+    ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``, ``"stop-<i>"``; the axes' gid is
+    ``"equilibrium-<k>"``; with ``springs="tension"`` the colour bar's axes ``"spring-forces"``.
     """
+    if springs not in ("state", "tension"):
+        raise InvalidParameterError(f"springs must be 'state' or 'tension', got {springs!r}", field="springs")
     eqs = list(equilibria)
     shown = eqs[:max(1, int(max_panels))]
     k = len(shown)
@@ -220,8 +235,17 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
     width = panel_width
     fig = new_figure((width * cols, (width * aspect + 0.9) * rows + 0.4))
     axes = np.atleast_1d(fig.subplots(rows, cols, squeeze=False)).ravel()
+    from matplotlib.colors import TwoSlopeNorm
     from matplotlib.patches import Polygon
 
+    forces = [m.springs.forces(e.q) if e.springs is None else e.spring_forces for e in shown]
+    states = [m.springs.states(e.q) if e.springs is None else e.spring_states for e in shown]
+    norm = cmap = None
+    if springs == "tension":
+        import matplotlib
+
+        top = max(float(np.abs(f).max()) for f in forces) or 1.0
+        norm, cmap = TwoSlopeNorm(0.0, -top, top), matplotlib.colormaps["coolwarm"]
     for idx, (ax, e, g) in enumerate(zip(axes, shown, geos)):
         col = STABILITY_COLORS.get(e.kind, "k")
         ax.set_gid(f"equilibrium-{idx}")
@@ -236,8 +260,16 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
                 ax.add_patch(poly)
             for s in range(2):
                 p = g["springs"][i, s]
-                line, = ax.plot(p[:, 0], p[:, 1], color=col, lw=1.4, ls="-" if s == 0 else "--", zorder=3)
+                style = {"color": col, "ls": "-", "lw": 1.4}
+                if springs == "tension":
+                    style = {"color": cmap(norm(float(forces[idx][i, s]))), "ls": "-", "lw": 2.0}
+                style.update(SPRING_STYLES.get(str(states[idx][i, s]), {}) if springs == "state" else {})
+                line, = ax.plot(p[:, 0], p[:, 1], zorder=3, **style)
                 line.set_gid(f"spring-{i}-{s + 1}")
+            if e.at_stop[i]:
+                ring, = ax.plot([g["joints"][i, 0]], [g["joints"][i, 1]], marker="o", ms=9, mfc="none",
+                                mec="black", mew=1.2, ls="none", zorder=5)
+                ring.set_gid(f"stop-{i}")
         sc = ax.scatter(g["joints"][:, 0], g["joints"][:, 1], s=14, color="black", zorder=4)
         sc.set_gid("joints")
         line, = ax.plot([g["tip"][0]], [g["tip"][1]], marker="x", color="black", ms=6, zorder=5)
@@ -256,9 +288,18 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
     for ax in axes[k:]:
         ax.set_visible(False)
     more = f" (the {k} lowest of {len(eqs)})" if len(eqs) > k else ""
+    how = ("springs by force (tension > 0)" if springs == "tension" else
+           "springs: taut solid, pushing red dashed, slack grey dotted")
     fig.suptitle(f"Equilibria with the tip held at $\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}: {len(eqs)}{more}\n"
-                 f"{chain_label(m)}; spring 1 solid, spring 2 dashed; energy $E$ in {ENERGY_UNIT}, "
-                 f"tip force $F$ in {FORCE_UNIT}", fontsize=9)
+                 f"{chain_label(m)}" + ("; " if cols >= 3 else "\n") + f"{how}; stops ringed"
+                 + ("; " if cols >= 3 else "\n") + f"energy $E$ in {ENERGY_UNIT}, tip force $F$ in {FORCE_UNIT}",
+                 fontsize=9)
+    if springs == "tension":
+        from matplotlib.cm import ScalarMappable
+
+        cb = fig.colorbar(ScalarMappable(norm=norm, cmap=cmap), ax=list(axes[:k]), shrink=0.8)
+        cb.set_label(f"spring force ({FORCE_UNIT}; tension > 0)", fontsize=8)
+        cb.ax.set_gid("spring-forces")
     return fig
 
 

@@ -221,3 +221,33 @@ def test_torque_marks_the_equilibria_of_the_unloaded_segment():
     assert np.allclose(np.sort(st), [-well, well], atol=1e-4) and np.allclose(un, [0.0], atol=1e-12)
     assert np.allclose(gid(fig, "torque-1-stable").get_xdata(), [0.0])
     assert gid(fig, "torque-1-unstable").get_xdata().size == 0
+
+
+def test_shapes_draw_pushing_and_slack_springs_and_stops_distinctly():
+    """dx = 2 on the paper's chain: under the linear law spring 3.2 pushes (red dashed), under the tension-only law
+    it is slack (grey dotted) and joint 3 rests on its stop (ringed); with springs='tension' each spring's colour is
+    its force on the shared scale (the colour bar's)."""
+    from matplotlib.colors import to_rgba
+
+    lin = to.solve_equilibrium(PAPER, 2.0)
+    ten = to.solve_equilibrium(PAPER.with_spring("tension_only"), 2.0)
+    fig = plots.plot_shapes([lin, ten], PAPER, 2.0)
+    a0, a1 = gid(fig, "equilibrium-0"), gid(fig, "equilibrium-1")
+    pushing, slack, taut = gid(a0, "spring-2-2"), gid(a1, "spring-2-2"), gid(a0, "spring-2-1")
+    assert to_rgba(pushing.get_color()) == to_rgba("tab:red") and pushing.get_linestyle() == "--"
+    assert slack.get_linestyle() == ":" and to_rgba(slack.get_color()) == to_rgba("0.55")
+    assert taut.get_linestyle() == "-" and to_rgba(taut.get_color()) == to_rgba(plots.STABILITY_COLORS["minimum"])
+    assert gid(a1, "stop-2") is not None
+    assert not [a for a in a0.get_children() if str(a.get_gid()).startswith("stop-")]
+    fig = plots.plot_shapes([lin, ten], PAPER, 2.0, springs="tension")
+    line = gid(gid(fig, "equilibrium-0"), "spring-2-2")
+    mappable = [a for a in fig.axes if a.get_gid() == "spring-forces"]
+    assert mappable and "tension" in mappable[0].get_ylabel()
+    top = max(abs(lin.spring_forces).max(), abs(ten.spring_forces).max())
+    import matplotlib
+    from matplotlib.colors import TwoSlopeNorm
+
+    want = matplotlib.colormaps["coolwarm"](TwoSlopeNorm(0.0, -top, top)(lin.spring_forces[2, 1]))
+    assert to_rgba(line.get_color()) == pytest.approx(want)
+    with pytest.raises(to.InvalidParameterError):
+        plots.plot_shapes([lin], PAPER, 2.0, springs="colour")

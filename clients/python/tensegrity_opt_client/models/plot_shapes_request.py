@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 
 from ..models.plot_shapes_request_format_type_0 import PlotShapesRequestFormatType0
+from ..models.plot_shapes_request_springs import PlotShapesRequestSprings
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -29,6 +30,9 @@ class PlotShapesRequest:
         format_ (None | PlotShapesRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
         max_panels (int | Unset): draw at most this many equilibria, the lowest energies (1..24) Default: 24.
+        springs (PlotShapesRequestSprings | Unset): `state`: taut springs solid, pushing ones (linear law, shorter than
+            their rest length) red dashed, slack ones grey dotted; `tension`: every spring coloured by its force Default:
+            PlotShapesRequestSprings.STATE.
     """
 
     dx: float
@@ -37,6 +41,7 @@ class PlotShapesRequest:
     dy: float | Unset = 0.0
     format_: None | PlotShapesRequestFormatType0 | Unset = UNSET
     max_panels: int | Unset = 24
+    springs: PlotShapesRequestSprings | Unset = PlotShapesRequestSprings.STATE
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.uniform_manipulator_in import UniformManipulatorIn  # noqa: PLC0415
@@ -63,6 +68,10 @@ class PlotShapesRequest:
 
         max_panels = self.max_panels
 
+        springs: str | Unset = UNSET
+        if not isinstance(self.springs, Unset):
+            springs = self.springs.value
+
         field_dict: dict[str, Any] = {}
 
         field_dict.update(
@@ -79,6 +88,8 @@ class PlotShapesRequest:
             field_dict["format"] = format_
         if max_panels is not UNSET:
             field_dict["max_panels"] = max_panels
+        if springs is not UNSET:
+            field_dict["springs"] = springs
 
         return field_dict
 
@@ -130,6 +141,13 @@ class PlotShapesRequest:
 
         max_panels = d.pop("max_panels", UNSET)
 
+        _springs = d.pop("springs", UNSET)
+        springs: PlotShapesRequestSprings | Unset
+        if isinstance(_springs, Unset):
+            springs = UNSET
+        else:
+            springs = PlotShapesRequestSprings(_springs)
+
         plot_shapes_request = cls(
             dx=dx,
             manipulator=manipulator,
@@ -137,6 +155,7 @@ class PlotShapesRequest:
             dy=dy,
             format_=format_,
             max_panels=max_panels,
+            springs=springs,
         )
 
         return plot_shapes_request

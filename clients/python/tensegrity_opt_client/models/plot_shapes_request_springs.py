@@ -1,0 +1,9 @@
+from enum import StrEnum
+
+
+class PlotShapesRequestSprings(StrEnum):
+    STATE = "state"
+    TENSION = "tension"
+
+    def __str__(self) -> str:
+        return str(self.value)
