@@ -112,7 +112,7 @@ class PlotShapesRequest(_PlotRequest):
     dy: s.TipDy = 0.0
     max_panels: s.Int = Field(MAX_PANELS, ge=1, le=MAX_PANELS,
                             description=f"draw at most this many equilibria, the lowest energies (1..{MAX_PANELS})")
-    springs: Literal["state", "tension"] = Field(
+    spring_colors: Literal["state", "tension"] = Field(
         "state", description="`state`: taut springs solid, pushing ones (linear law, shorter than their rest length) "
                              "red dashed, slack ones grey dotted; `tension`: every spring coloured by its force")
 

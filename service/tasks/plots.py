@@ -80,7 +80,7 @@ def plot_shapes_task(req: ps.PlotShapesRequest) -> Any:
 
     m = build_manipulator(req.manipulator)
     return plots.plot_shapes(find_equilibria(m, req.dx, req.dy), m, req.dx, req.dy, max_panels=req.max_panels,
-                             springs=req.springs)
+                             spring_colors=req.spring_colors)
 
 
 @_rendered

@@ -257,7 +257,7 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     q0 = checked_start(m, start)
     if q0 is None:
         try:
-            q0 = solve_equilibrium(m, dx, dy).q
+            q0 = solve_equilibrium(m, dx, dy, stops=False).q
         except TensegrityError:
             q0 = _reach_guess(m, target)
     res, q, L10, L20, lo2, hi2 = solve_pose_nlp(m, target, load, objective, margin, taut, lo, hi, end_angle, q0)

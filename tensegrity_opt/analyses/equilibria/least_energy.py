@@ -54,7 +54,7 @@ __all__ = ["solve_equilibrium", "search_stable", "certify_least", "WELLS_MAX"]
 
 def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, local: bool = False,
                       method: str = "auto", n_random: int | None = None,
-                      max_modes: int | None = None, certify: bool = False) -> Equilibrium:
+                      max_modes: int | None = None, certify: bool = False, stops: bool = True) -> Equilibrium:
     """Least-energy stable equilibrium with the tip held at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -103,6 +103,12 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
         Without it, chains of more than ``WELLS_MAX`` and at most ``BOUND_SEEDED_PATTERNS`` well patterns (9 to 14
         bistable segments) still run the bound's pattern sweep and one round of its Newton re-centrings
         (``BOUND_SEEDED_ROUNDS``) to find a lower configuration among all the patterns, without a certificate.
+    stops : bool
+        ``True`` (default): where the least-energy configurations press a joint against its range limit, the
+        equilibrium resting on that stop (the closed range's search; ``at_stop``, ``contact_torques``).
+        ``False``: only equilibria inside the open range, :class:`NoEquilibriumError` there (the loading-path
+        analyses, which do not continue onto a stop, ask this). A tension-only chain is always searched over the
+        closed range.
 
     Returns
     -------
@@ -134,7 +140,7 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     if not m.linear_springs:
         return _solve_tension_only(m, dx, dy, q0=q0, local=local, method=method, certify=bool(certify))
     return _solve_equilibrium(m, dx, dy, q0=q0, local=local, method=method, n_random=n_random, max_modes=max_modes,
-                              certify=bool(certify))
+                              certify=bool(certify), stops=bool(stops))
 
 
 def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str,
@@ -164,12 +170,12 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
 
 
 def _solve_equilibrium(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str, n_random: int | None,
-                       max_modes: int | None, certify: bool | None) -> Equilibrium:
+                       max_modes: int | None, certify: bool | None, stops: bool = True) -> Equilibrium:
     """:func:`solve_equilibrium`; ``certify=None`` is the search alone (no lower bound of any kind)."""
     if certify is not None and not local and method in ("auto", "ipopt") and \
             (certify or (m.n >= 2 and not m.monotonic and WELLS_MAX < _pattern_count(m) <= BOUND_SEEDED_PATTERNS)):
         best = _solve_equilibrium(m, dx, dy, q0=q0, local=False, method=method, n_random=n_random,
-                                  max_modes=max_modes, certify=None)
+                                  max_modes=max_modes, certify=None, stops=stops)
         if certify:
             return certify_least(m, dx, dy, best)
         # more well patterns than the search tries: the bound's pattern sweep and Newton re-centrings (a short
@@ -267,7 +273,13 @@ def _solve_equilibrium(m: Manipulator, dx: float, dy: float, *, q0, local: bool,
     if any(k.endswith("(on joint limit)") and not k.startswith("Infeasible") for k in ipopt):
         # the least-energy configurations press a joint against its range limit |q| = pi - 2 beta (a spring
         # length reaches zero): the arm rests on that stop (the search of the closed range, its contact torque)
-        return least_energy_slack(m, dx, dy, target, q0=q0)
+        if stops:
+            return least_energy_slack(m, dx, dy, target, q0=q0)
+        raise NoEquilibriumError(
+            f"no equilibrium inside the physical range for dx={dx:g}, dy={dy:g}: the least-energy "
+            "configurations press a joint against its range limit |q| = pi - 2 beta (a spring "
+            "length reaches zero; solve_equilibrium with stops=True returns the arm resting on that stop)",
+            status=_summary(statuses))
     raise SolverError(f"no local solve converged inside the physical range for dx={dx:g}, dy={dy:g}",
                       status=_summary(statuses))
 

@@ -192,7 +192,7 @@ def continuation_prefix(m: Manipulator, targets: np.ndarray, q0: np.ndarray, F0:
 
 def _global(m: Manipulator, dx: float, dy: float, q0) -> Equilibrium | TensegrityError:
     try:
-        return solve_equilibrium(m, dx, dy, q0=q0)
+        return solve_equilibrium(m, dx, dy, q0=q0, stops=False)
     except TensegrityError as exc:
         return exc
 
@@ -265,7 +265,7 @@ class Tracker:
         m = self.m
         prev = self.current
         if prev is None or prev.status == "exact" or m.n < 2 or (dx == 0.0 and dy == 0.0):
-            eq = solve_equilibrium(m, dx, dy, q0=None if prev is None else prev.q)
+            eq = solve_equilibrium(m, dx, dy, q0=None if prev is None else prev.q, stops=False)
         else:
             target = m.check_reachable(dx, dy)
             res = chain_solver(m).newton_kkt(target, prev.q, prev.force)
@@ -278,7 +278,7 @@ class Tracker:
                 if eq is None and not self.jump:
                     raise SolverError(f"the followed branch ends before dx={dx:g}, dy={dy:g}",
                                       status="branch_ended")
-                eq = solve_equilibrium(m, dx, dy, q0=prev.q)
+                eq = solve_equilibrium(m, dx, dy, q0=prev.q, stops=False)
                 self.jumps += 1
         self.current = eq
         return eq
@@ -325,7 +325,7 @@ def follow(m: Manipulator, br: BranchPoints, start: int, stop: int, targets: np.
     if n == 1:                       # no continuation: every point is fixed by its target
         for i in range(start + 1, stop):
             try:
-                br.set(i, solve_equilibrium(m, dxs[i], dys[i]))
+                br.set(i, solve_equilibrium(m, dxs[i], dys[i], stops=False))
             except TimeLimitError:
                 raise
             except TensegrityError:

@@ -405,7 +405,7 @@ def _least_at(m: Manipulator, dx: float, dy: float) -> Equilibrium | None:
     """The least-energy stable equilibrium of :func:`solve_equilibrium` (its global search, the same call), or
     None when it finds none (the curve then ends there unless another branch is found)."""
     try:
-        return solve_equilibrium(m, dx, dy)
+        return solve_equilibrium(m, dx, dy, stops=False)
     except SolverError:                      # NoEquilibriumError included; TimeLimitError is no SolverError
         return None
 
@@ -518,7 +518,7 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
                 since = 0
                 try:
                     g = solve_equilibrium(m, dxs[j], dys[j], q0=branches[current].q[j - 1] if current is not None
-                                          and branches[current].valid[j - 1] else None)
+                                          and branches[current].valid[j - 1] else None, stops=False)
                 except TimeLimitError:
                     raise
                 except TensegrityError:

@@ -282,7 +282,7 @@ def _start_q(m: Manipulator, start) -> np.ndarray:
 def _least_energy_held(m0: Manipulator, T0) -> Equilibrium:
     from ..equilibria.least_energy import solve_equilibrium
 
-    return solve_equilibrium(m0, float(T0[0]), float(T0[1]))
+    return solve_equilibrium(m0, float(T0[0]), float(T0[1]), stops=False)
 
 
 # ---------------------------------------------------------------------------- the function

@@ -216,7 +216,7 @@ def start_from_args(m: Manipulator, args: argparse.Namespace) -> Any:
         if not (args.control == "displacement" or (args.control == "preload" and args.tip == "held")):
             raise InvalidParameterError("--start-dx needs a control that holds the tip (displacement, or preload "
                                         "with --tip held)", field="start")
-        return solve_equilibrium(m, args.start_dx, args.start_dy)
+        return solve_equilibrium(m, args.start_dx, args.start_dy, stops=False)
     return None
 
 

@@ -160,7 +160,7 @@ def _cmd_landscape(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, 
 def _cmd_shapes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
     plots = _plots()
     eqs = find_equilibria(m, args.dx, args.dy)
-    fig = plots.plot_shapes(eqs, m, args.dx, args.dy, max_panels=args.max_panels, springs=args.springs)
+    fig = plots.plot_shapes(eqs, m, args.dx, args.dy, max_panels=args.max_panels, spring_colors=args.spring_colors)
     return _render(args, fig, "shapes", {"equilibria": [{"shape": e.shape, "kind": e.kind, "q": e.q.tolist()}
                                                         for e in eqs]})
 
@@ -326,7 +326,7 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     _common(k)
     add_deflection_options(k, number=float)
     k.add_argument("--max-panels", type=positive_int, default=24, help="draw at most this many (lowest energies)")
-    k.add_argument("--springs", choices=("state", "tension"), default="state",
+    k.add_argument("--spring-colors", choices=("state", "tension"), default="state",
                    help="state: taut solid, pushing red dashed, slack grey dotted; tension: coloured by force")
     k.set_defaults(func=_cmd_shapes)
 

@@ -198,7 +198,7 @@ SPRING_STYLES = {"pushing": {"color": "tab:red", "ls": "--", "lw": 1.6},
 
 def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy: float = 0.0, *,
                 max_panels: int = 24, ncols: int | None = None, panel_width: float = 3.8,
-                springs: str = "state") -> Any:
+                spring_colors: str = "state") -> Any:
     """The chain drawn in each of ``equilibria`` (those of :func:`~tensegrity_opt.find_equilibria`, an
     :class:`~tensegrity_opt.EquilibriumSet` or any sequence of :class:`~tensegrity_opt.Equilibrium`), one panel
     each.
@@ -210,17 +210,18 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
     first ones: the lowest energies of a set) are drawn. ``m`` is their chain; ``dx``, ``dy`` the tip
     deflection named in the title.
 
-    ``springs``: ``"state"`` (default) draws a taut spring solid in the panel's colour, a pushing one (linear law,
-    shorter than its rest length) red and dashed, a slack one (tension-only law) grey and dotted
+    ``spring_colors``: ``"state"`` (default) draws a taut spring solid in the panel's colour, a pushing one (linear
+    law, shorter than its rest length) red and dashed, a slack one (tension-only law) grey and dotted
     (:data:`SPRING_STYLES`); ``"tension"`` colours every spring by its force (tension positive) on one diverging
     scale shared by the panels, with a colour bar. A joint resting on its stop is ringed (``"stop-<i>"``).
 
     Artists (``gid``): per panel ``"triangle-<i>-<0|1>"`` (proximal/distal triangle of segment ``i``),
     ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``, ``"stop-<i>"``; the axes' gid is
-    ``"equilibrium-<k>"``; with ``springs="tension"`` the colour bar's axes ``"spring-forces"``.
+    ``"equilibrium-<k>"``; with ``spring_colors="tension"`` the colour bar's axes ``"spring-forces"``.
     """
-    if springs not in ("state", "tension"):
-        raise InvalidParameterError(f"springs must be 'state' or 'tension', got {springs!r}", field="springs")
+    if spring_colors not in ("state", "tension"):
+        raise InvalidParameterError(f"spring_colors must be 'state' or 'tension', got {spring_colors!r}",
+                                    field="spring_colors")
     eqs = list(equilibria)
     shown = eqs[:max(1, int(max_panels))]
     k = len(shown)
@@ -241,7 +242,7 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
     forces = [m.springs.forces(e.q) if e.springs is None else e.spring_forces for e in shown]
     states = [m.springs.states(e.q) if e.springs is None else e.spring_states for e in shown]
     norm = cmap = None
-    if springs == "tension":
+    if spring_colors == "tension":
         import matplotlib
 
         top = max(float(np.abs(f).max()) for f in forces) or 1.0
@@ -261,9 +262,9 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
             for s in range(2):
                 p = g["springs"][i, s]
                 style = {"color": col, "ls": "-", "lw": 1.4}
-                if springs == "tension":
+                if spring_colors == "tension":
                     style = {"color": cmap(norm(float(forces[idx][i, s]))), "ls": "-", "lw": 2.0}
-                style.update(SPRING_STYLES.get(str(states[idx][i, s]), {}) if springs == "state" else {})
+                style.update(SPRING_STYLES.get(str(states[idx][i, s]), {}) if spring_colors == "state" else {})
                 line, = ax.plot(p[:, 0], p[:, 1], zorder=3, **style)
                 line.set_gid(f"spring-{i}-{s + 1}")
             if e.at_stop[i]:
@@ -288,13 +289,13 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
     for ax in axes[k:]:
         ax.set_visible(False)
     more = f" (the {k} lowest of {len(eqs)})" if len(eqs) > k else ""
-    how = ("springs by force (tension > 0)" if springs == "tension" else
+    how = ("springs by force (tension > 0)" if spring_colors == "tension" else
            "springs: taut solid, pushing red dashed, slack grey dotted")
     fig.suptitle(f"Equilibria with the tip held at $\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}: {len(eqs)}{more}\n"
                  f"{chain_label(m)}" + ("; " if cols >= 3 else "\n") + f"{how}; stops ringed"
                  + ("; " if cols >= 3 else "\n") + f"energy $E$ in {ENERGY_UNIT}, tip force $F$ in {FORCE_UNIT}",
                  fontsize=9)
-    if springs == "tension":
+    if spring_colors == "tension":
         from matplotlib.cm import ScalarMappable
 
         cb = fig.colorbar(ScalarMappable(norm=norm, cmap=cmap), ax=list(axes[:k]), shrink=0.8)

@@ -66,7 +66,9 @@ def _equilibrium_row(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str
     return {"energy": nullable(eq.energy), "fx": nullable(eq.fx), "fy": nullable(eq.fy), "stable": bool(eq.stable),
             "morse_index": int(eq.morse_index), "kind": eq.kind, "shape": eq.shape, "signs": eq.signs,
             "q": nullables(eq.q), "tip_x": nullable(eq.tip[0]), "tip_y": nullable(eq.tip[1]),
-            "status": eq.status, "solver_status": str(eq.solver.status), "iterations": int(eq.solver.iterations)}
+            "status": eq.status, "solver_status": str(eq.solver.status), "iterations": int(eq.solver.iterations),
+            "spring_forces": eq.spring_forces.tolist(), "spring_states": eq.spring_states.tolist(),
+            "contact_torques": nullables(eq.contact_torques)}
 
 
 def _stiffness(m: Manipulator, point: Mapping[str, Any], opts: Mapping[str, Any]) -> dict[str, Any]:

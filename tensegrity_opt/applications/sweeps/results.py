@@ -22,7 +22,7 @@ __all__ = ["SweepResult", "write_csv", "read_results"]
 def _cell_csv(v: Any, kind: str) -> str:
     if v is None:
         return ""
-    if kind in ("floats", "strs"):
+    if kind in ("floats", "strs", "floats2", "strs2"):
         return json.dumps(v, allow_nan=False)
     if kind == "bool":
         return "true" if v else "false"
@@ -40,7 +40,7 @@ def _cell_parse(text: str, kind: str) -> Any:
         return float(text)
     if kind == "bool":
         return text.lower() in ("true", "1", "yes")
-    if kind in ("floats", "strs"):
+    if kind in ("floats", "strs", "floats2", "strs2"):
         return json.loads(text)
     return text
 
@@ -166,7 +166,8 @@ class SweepResult(Outcome):
         import pyarrow.parquet as pq
 
         arrow = {"int": pa.int64(), "float": pa.float64(), "bool": pa.bool_(), "str": pa.string(),
-                 "floats": pa.list_(pa.float64()), "strs": pa.list_(pa.string())}
+                 "floats": pa.list_(pa.float64()), "strs": pa.list_(pa.string()),
+                 "floats2": pa.list_(pa.list_(pa.float64())), "strs2": pa.list_(pa.list_(pa.string()))}
         schema = pa.schema([pa.field(c, arrow[self.types.get(c, "str")]) for c in self.columns],
                            metadata={"tensegrity_sweep_spec": json.dumps(self.spec)})
         table = pa.Table.from_pylist([{c: r.get(c) for c in self.columns} for r in self.rows], schema=schema)

@@ -46,7 +46,8 @@ OPTIONS: dict[str, tuple[str, ...]] = {
     "method": ("atlas",),
 }
 
-#: Column types: ``int``, ``float``, ``bool``, ``str``, ``floats`` (list of numbers), ``strs``.
+#: Column types: ``int``, ``float``, ``bool``, ``str``, ``floats`` (list of numbers), ``strs``, ``floats2``
+#: and ``strs2`` (lists of such lists: one per segment, e.g. ``[spring 1, spring 2]``).
 PARAMETER_TYPES = {"n": "int", "a": "float", "b": "float", "k": "float", "L0": "float", "dx": "float",
                    "dy": "float", "load": "floats"}
 
@@ -57,7 +58,8 @@ RESULT_COLUMNS: dict[str, dict[str, str]] = {
                  "mode_signs": "str", "mode_q": "floats"},
     "equilibrium": {"energy": "float", "fx": "float", "fy": "float", "stable": "bool", "morse_index": "int",
                     "kind": "str", "shape": "str", "signs": "str", "q": "floats", "tip_x": "float",
-                    "tip_y": "float", "status": "str", "solver_status": "str", "iterations": "int"},
+                    "tip_y": "float", "status": "str", "solver_status": "str", "iterations": "int",
+                    "spring_forces": "floats2", "spring_states": "strs2", "contact_torques": "floats"},
     "equilibria_count": {"count": "int", "n_stable": "int", "n_saddle": "int", "n_maximum": "int",
                          "min_energy": "float"},
     "stiffness": {"kxx": "float", "kxy": "float", "kyy": "float", "fx": "float", "fy": "float",

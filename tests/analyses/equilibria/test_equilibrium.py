@@ -95,10 +95,14 @@ def test_targets_outside_the_joint_range_workspace():
     with pytest.raises(UnreachableTargetError) as ei:
         solve_equilibrium(m, 5.9, n_random=2)
     assert "Infeasible_Problem_Detected" in ei.value.status
-    # reachable, but every minimiser presses a joint against its limit: no equilibrium inside
+    # reachable, but every minimiser presses a joint against its limit: no equilibrium inside the open range
+    # (stops=False), the arm resting on a stop by default (its contact torque positive)
     with pytest.raises(NoEquilibriumError) as ei:
-        solve_equilibrium(PAPER, 5.0, 0.0)
+        solve_equilibrium(PAPER, 5.0, 0.0, stops=False)
     assert isinstance(ei.value, RuntimeError) and "joint limit" in ei.value.status
+    eq = solve_equilibrium(PAPER, 5.0, 0.0)
+    assert eq.at_stop.any() and np.all(eq.contact_torques[eq.at_stop] > 0) and eq.stable
+    assert np.allclose(np.abs(eq.q[eq.at_stop]), PAPER.joint_limits[eq.at_stop], rtol=0, atol=0)
 
 
 @pytest.mark.slow

@@ -239,7 +239,7 @@ def test_shapes_draw_pushing_and_slack_springs_and_stops_distinctly():
     assert taut.get_linestyle() == "-" and to_rgba(taut.get_color()) == to_rgba(plots.STABILITY_COLORS["minimum"])
     assert gid(a1, "stop-2") is not None
     assert not [a for a in a0.get_children() if str(a.get_gid()).startswith("stop-")]
-    fig = plots.plot_shapes([lin, ten], PAPER, 2.0, springs="tension")
+    fig = plots.plot_shapes([lin, ten], PAPER, 2.0, spring_colors="tension")
     line = gid(gid(fig, "equilibrium-0"), "spring-2-2")
     mappable = [a for a in fig.axes if a.get_gid() == "spring-forces"]
     assert mappable and "tension" in mappable[0].get_ylabel()
@@ -250,4 +250,4 @@ def test_shapes_draw_pushing_and_slack_springs_and_stops_distinctly():
     want = matplotlib.colormaps["coolwarm"](TwoSlopeNorm(0.0, -top, top)(lin.spring_forces[2, 1]))
     assert to_rgba(line.get_color()) == pytest.approx(want)
     with pytest.raises(to.InvalidParameterError):
-        plots.plot_shapes([lin], PAPER, 2.0, springs="colour")
+        plots.plot_shapes([lin], PAPER, 2.0, spring_colors="colour")

@@ -195,7 +195,7 @@ from .plot_plan_request_on_infeasible import PlotPlanRequestOnInfeasible
 from .plot_plan_request_on_snap import PlotPlanRequestOnSnap
 from .plot_shapes_request import PlotShapesRequest
 from .plot_shapes_request_format_type_0 import PlotShapesRequestFormatType0
-from .plot_shapes_request_springs import PlotShapesRequestSprings
+from .plot_shapes_request_spring_colors import PlotShapesRequestSpringColors
 from .plot_simulation_request import PlotSimulationRequest
 from .plot_simulation_request_format_type_0 import PlotSimulationRequestFormatType0
 from .plot_simulation_request_tip import PlotSimulationRequestTip
@@ -473,7 +473,7 @@ __all__ = (
     "PlotPlanRequestOnSnap",
     "PlotShapesRequest",
     "PlotShapesRequestFormatType0",
-    "PlotShapesRequestSprings",
+    "PlotShapesRequestSpringColors",
     "PlotSimulationRequest",
     "PlotSimulationRequestFormatType0",
     "PlotSimulationRequestTip",

@@ -6,7 +6,7 @@ from typing import TYPE_CHECKING, Any, TypeVar, cast
 from attrs import define as _attrs_define
 
 from ..models.plot_shapes_request_format_type_0 import PlotShapesRequestFormatType0
-from ..models.plot_shapes_request_springs import PlotShapesRequestSprings
+from ..models.plot_shapes_request_spring_colors import PlotShapesRequestSpringColors
 from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
@@ -30,9 +30,9 @@ class PlotShapesRequest:
         format_ (None | PlotShapesRequestFormatType0 | Unset): "png" or "svg"; when absent the Accept header decides
             (image/svg+xml or image/png), PNG by default
         max_panels (int | Unset): draw at most this many equilibria, the lowest energies (1..24) Default: 24.
-        springs (PlotShapesRequestSprings | Unset): `state`: taut springs solid, pushing ones (linear law, shorter than
-            their rest length) red dashed, slack ones grey dotted; `tension`: every spring coloured by its force Default:
-            PlotShapesRequestSprings.STATE.
+        spring_colors (PlotShapesRequestSpringColors | Unset): `state`: taut springs solid, pushing ones (linear law,
+            shorter than their rest length) red dashed, slack ones grey dotted; `tension`: every spring coloured by its
+            force Default: PlotShapesRequestSpringColors.STATE.
     """
 
     dx: float
@@ -41,7 +41,7 @@ class PlotShapesRequest:
     dy: float | Unset = 0.0
     format_: None | PlotShapesRequestFormatType0 | Unset = UNSET
     max_panels: int | Unset = 24
-    springs: PlotShapesRequestSprings | Unset = PlotShapesRequestSprings.STATE
+    spring_colors: PlotShapesRequestSpringColors | Unset = PlotShapesRequestSpringColors.STATE
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.uniform_manipulator_in import UniformManipulatorIn  # noqa: PLC0415
@@ -68,9 +68,9 @@ class PlotShapesRequest:
 
         max_panels = self.max_panels
 
-        springs: str | Unset = UNSET
-        if not isinstance(self.springs, Unset):
-            springs = self.springs.value
+        spring_colors: str | Unset = UNSET
+        if not isinstance(self.spring_colors, Unset):
+            spring_colors = self.spring_colors.value
 
         field_dict: dict[str, Any] = {}
 
@@ -88,8 +88,8 @@ class PlotShapesRequest:
             field_dict["format"] = format_
         if max_panels is not UNSET:
             field_dict["max_panels"] = max_panels
-        if springs is not UNSET:
-            field_dict["springs"] = springs
+        if spring_colors is not UNSET:
+            field_dict["spring_colors"] = spring_colors
 
         return field_dict
 
@@ -141,12 +141,12 @@ class PlotShapesRequest:
 
         max_panels = d.pop("max_panels", UNSET)
 
-        _springs = d.pop("springs", UNSET)
-        springs: PlotShapesRequestSprings | Unset
-        if isinstance(_springs, Unset):
-            springs = UNSET
+        _spring_colors = d.pop("spring_colors", UNSET)
+        spring_colors: PlotShapesRequestSpringColors | Unset
+        if isinstance(_spring_colors, Unset):
+            spring_colors = UNSET
         else:
-            springs = PlotShapesRequestSprings(_springs)
+            spring_colors = PlotShapesRequestSpringColors(_spring_colors)
 
         plot_shapes_request = cls(
             dx=dx,
@@ -155,7 +155,7 @@ class PlotShapesRequest:
             dy=dy,
             format_=format_,
             max_panels=max_panels,
-            springs=springs,
+            spring_colors=spring_colors,
         )
 
         return plot_shapes_request

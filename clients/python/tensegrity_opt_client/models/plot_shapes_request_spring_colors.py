@@ -1,7 +1,7 @@
 from enum import StrEnum
 
 
-class PlotShapesRequestSprings(StrEnum):
+class PlotShapesRequestSpringColors(StrEnum):
     STATE = "state"
     TENSION = "tension"
 
