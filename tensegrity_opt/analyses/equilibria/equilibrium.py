@@ -137,8 +137,8 @@ class Equilibrium(Outcome, TipForce, SpringFields):
     def __post_init__(self) -> None:
         # the builders pass arrays they own: read-only in place (this is on the control loop's path)
         if self.at_stop is None:                # inside the open range: no stop touched (the common case)
-            object.__setattr__(self, "at_stop", _NO_STOP[self.q.size])
-            object.__setattr__(self, "contact_torques", _ZERO_TORQUE[self.q.size])
+            d, n = self.__dict__, self.q.size   # (the control loop's path: no object.__setattr__)
+            d["at_stop"], d["contact_torques"] = _NO_STOP[n], _ZERO_TORQUE[n]
         else:
             self.at_stop.setflags(write=False)
             self.contact_torques.setflags(write=False)

@@ -158,15 +158,7 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
     q0 = check_q0(m, q0)
     if local and q0 is None:
         raise InvalidParameterError("local=True needs q0", field="q0")
-    linear = None
-    if not local:
-        try:
-            linear = solve_equilibrium(m.with_spring("linear"), dx, dy).q
-        except (ValueError, RuntimeError):      # no linear-law answer: the search's other starts
-            pass
-        else:
-            linear = np.clip(linear, -m.joint_limits, m.joint_limits)
-    return least_energy_slack(m, dx, dy, target, q0=q0, local=local, linear_start=linear)
+    return least_energy_slack(m, dx, dy, target, q0=q0, local=local)
 
 
 def _solve_equilibrium(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str, n_random: int | None,

@@ -16,9 +16,11 @@ constraint in the closed joint range is found by IPOPT on the smooth slack probl
    fixed (a stop with a positive contact torque is a constraint: moving off it costs first-order energy), Morse
    index 0 with every eigenvalue above the tolerance.
 
-The starts: ``q0``, the same chain's least-energy equilibrium under the linear law (where it exists), each joint
-near either stop, and ``STARTS`` random configurations (seeded: deterministic). The least energy of the stable
-equilibria found is returned. This is a *measured* global search, not a certified one: ``status`` is
+The starts: ``q0``, the same chain's least-energy equilibrium under the linear law where the caller has it, and the
+``STARTS`` lowest-energy distinct configurations of a ranked sample: ``SAMPLE_PER_JOINT * n`` seeded random
+configurations of the range (a quarter of them with one joint at a stop) projected onto the tip constraint
+(:func:`~.seeds.project_to_target`, kinematics only) and ranked by their energy under the springs' laws (numpy, all
+at once). The least energy of the stable equilibria found is returned. This is a *measured* global search, not a certified one: ``status`` is
 ``"converged"`` and ``certify=True`` (or ``method="homotopy"``) is refused for a tension-only chain.
 
 A segment whose two springs are both slack has a free joint (no stiffness): the equilibrium is still reported where
@@ -38,11 +40,16 @@ from ...numerics.slack_nlp import slack_nlp
 from ...outcome import SolverInfo
 from ...timelimit import check_time
 from .equilibrium import RESIDUAL_TOL, Equilibrium
+from .seeds import project_to_target
 
 __all__ = ["least_energy_slack", "STARTS", "STOP_TOL"]
 
-#: Random starts of the search (besides q0, the linear law's answer and the stop starts).
-STARTS = 24
+#: IPOPT starts of the search taken from the ranked sample (besides q0 and the linear law's answer).
+STARTS = 8
+#: Random configurations per joint of the ranked sample.
+SAMPLE_PER_JOINT = 256
+#: Two ranked starts closer than this (rad, largest joint) are one.
+DISTINCT = 0.15
 #: A joint within this distance of its bound (rad) rests on its stop.
 STOP_TOL = 1e-6
 #: Newton iterations of the polish at most.
@@ -58,7 +65,7 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
     configuration under the linear law (a start)."""
     nlp = slack_nlp(m.n)
     p, bounds = nlp.parameters(m, target), nlp.bounds(m)
-    starts = [np.asarray(q0, float)] if local else _starts(m, q0, linear_start)
+    starts = [np.asarray(q0, float)] if local else _starts(m, target, q0, linear_start)
     best: Equilibrium | None = None
     statuses: dict[str, int] = {}
     refused: UnsupportedError | None = None
@@ -92,18 +99,25 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
     return best
 
 
-def _starts(m: Manipulator, q0, linear_start) -> list[np.ndarray]:
+def _starts(m: Manipulator, target: np.ndarray, q0, linear_start) -> list[np.ndarray]:
     n, lim = m.n, m.joint_limits
     starts = [] if q0 is None else [np.asarray(q0, float)]
     if linear_start is not None:
         starts.append(np.asarray(linear_start, float))
-    for i in range(n):
-        for sign in (1.0, -1.0):
-            q = np.zeros(n)
-            q[i] = sign * 0.98 * lim[i]
-            starts.append(q)
-    rng = np.random.default_rng(20261207)
-    starts.extend(rng.uniform(-0.9, 0.9, size=(STARTS, n)) * lim)
+    rng = np.random.default_rng(20261207 + n)
+    Q = rng.uniform(-0.98, 0.98, size=(SAMPLE_PER_JOINT * n, n)) * lim
+    k = Q.shape[0] // 4                         # a quarter with one joint at (just inside) a stop
+    j = rng.integers(0, n, size=k)
+    Q[np.arange(k), j] = rng.choice([-1.0, 1.0], size=k) * (1.0 - 1e-9) * lim[j]
+    Q = project_to_target(m, Q, target)
+    if Q.shape[0]:
+        for i in np.argsort(m.springs.energy(Q), kind="stable"):
+            if all(float(np.abs(Q[i] - s).max()) > DISTINCT for s in starts):
+                starts.append(Q[i])
+            if len(starts) >= STARTS + 2:
+                break
+    if not starts:                              # no sample reaches the target: IPOPT decides (infeasible: unreachable)
+        starts.extend(rng.uniform(-0.9, 0.9, size=(4, n)) * lim)
     return starts
 
 
