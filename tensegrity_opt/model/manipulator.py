@@ -165,7 +165,7 @@ class Manipulator:
                        k=np.column_stack([self.k1, self.k2]), L0=np.column_stack([self.L1_0, self.L2_0]),
                        tension_only=np.array([s.tension_only for s in self.segments]))
 
-    @property
+    @cached_property
     def linear_springs(self) -> bool:
         """Every spring follows the linear law (the paper's model)."""
         return self.springs.linear

@@ -79,6 +79,8 @@ class Springs:
             a = np.array(getattr(self, name))
             a.setflags(write=False)
             object.__setattr__(self, name, a)
+        # read on the hot paths (every energy, torque and residual of a chain asks it): a plain bool, once
+        object.__setattr__(self, "_linear", not bool(self.tension_only.any()))
 
     def with_rest_lengths(self, L0: Any) -> "Springs":
         """The same springs with the rest lengths ``L0``: (n, 2), or (N, n, 2) for a series of configurations whose
@@ -88,7 +90,7 @@ class Springs:
     @property
     def linear(self) -> bool:
         """Every spring follows the linear law."""
-        return not bool(self.tension_only.any())
+        return self._linear
 
     def lengths(self, q: Any) -> np.ndarray:
         """Spring lengths ``L1 = 2c cos(beta + q/2)``, ``L2 = 2c cos(beta - q/2)`` at ``q`` (..., n): (..., n, 2)."""
