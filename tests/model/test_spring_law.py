@@ -271,3 +271,33 @@ def test_buckling_refuses_a_spring_slack_at_the_straight_chain():
     with pytest.raises(UnsupportedError) as e:
         to.critical_force(m, "free")
     assert e.value.field == "segments[1].spring"
+
+
+def test_a_rigid_configuration_on_two_stops_is_found():
+    """Two joints on their stops and the tip fixing the two others: the least energy (an independent brute force's)
+    that random samples projected onto the tip seldom reach (a regression: the search returned 7.6118 here)."""
+    m = to.Manipulator.uniform(4, a=0.9209530102308371, k=1.579145451463046, L0=1.135520437554391,
+                               spring="tension_only")
+    dx, dy = 7.843795235504559, 0.07794324677667466
+    best = ref.least_energy(ref.segs_of(m), dx, dy)
+    eq = to.solve_equilibrium(m, dx, dy)
+    assert best.at_stop.tolist() == [False, True, True, False]
+    assert eq.energy == pytest.approx(best.energy, rel=1e-9) and eq.at_stop.tolist() == best.at_stop.tolist()
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("seed", range(8))
+def test_many_random_tension_only_chains_equal_the_brute_force(seed):
+    """Large deflections (2x to 4x each family's), every family, n = 2..4: springs slack, joints on stops."""
+    rng = np.random.default_rng(5000 + seed)
+    for family in FAMILIES:
+        m, dx0, dy0 = _chain(family, rng, "tension_only", n=int(rng.integers(2, 5)))
+        f = float(rng.uniform(2.0, 4.0))
+        try:
+            best = ref.least_energy(ref.segs_of(m), dx0 * f, dy0 * f)
+        except ValueError:
+            with pytest.raises(to.UnreachableTargetError):
+                to.solve_equilibrium(m, dx0 * f, dy0 * f)
+            continue
+        eq = to.solve_equilibrium(m, dx0 * f, dy0 * f)
+        assert eq.energy == pytest.approx(best.energy, rel=1e-7, abs=1e-9), (family, m.n)
