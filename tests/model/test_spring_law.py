@@ -210,7 +210,7 @@ def _calls(m, lin_eq, P):
 
     return {
         "solve_equilibrium_under_force": lambda: to.solve_equilibrium_under_force(m, -0.1, 0.0),
-        "find_equilibria": lambda: to.find_equilibria(m, 0.3),
+        "find_equilibria (homotopy)": lambda: to.find_equilibria(m, 0.3, method="homotopy"),
         "find_equilibria_under_force": lambda: to.find_equilibria_under_force(m, -0.1, 0.0),
         "rest_configuration": lambda: to.rest_configuration(m),
         "cartesian_stiffness": lambda: to.cartesian_stiffness(m, lin_eq),
@@ -252,7 +252,8 @@ def test_every_analysis_honours_the_tension_only_law_or_refuses_it_by_name():
     for name, call in _calls(m, lin_eq, P).items():
         with pytest.raises(UnsupportedError) as e:
             call()
-        want = {"solve_equilibrium (certify)": "certify", "solve_equilibrium (homotopy)": "method"}
+        want = {"solve_equilibrium (certify)": "certify", "solve_equilibrium (homotopy)": "method",
+                "find_equilibria (homotopy)": "method"}
         assert e.value.field == want.get(name, "segments[1].spring"), name
     # honoured: the least energy, buckling of springs taut when straight, the landscape, the spring state
     eq = to.solve_equilibrium(m, 0.3)

@@ -39,12 +39,18 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InvalidParameterError, SolverError, StraightNotEquilibriumError, UnreachableTargetError
+from ...errors import (
+    InvalidParameterError,
+    SolverError,
+    StraightNotEquilibriumError,
+    UnreachableTargetError,
+    UnsupportedError,
+)
 from ...model.manipulator import Manipulator
-from ...model.springs import linear_only
 from ...numerics import KERNEL_MAX, chain_solver, distinct, distinct_indices
 from ...numerics.krawczyk import IntervalCertificate, prove_equilibria
 from ...outcome import Outcome, freeze
+from ...timelimit import time_limit
 from .equilibrium import (
     RESIDUAL_TOL,
     Equilibrium,
@@ -293,7 +299,6 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         (``RuntimeError``) when the search found no equilibrium and its solvers broke down (no descent reached
         the target: nothing tells whether one exists), or PHCpack failed.
     """
-    linear_only(m, "find_equilibria")
     if method not in ("search", "homotopy"):
         raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
     target = m.check_reachable(dx, dy)
@@ -309,6 +314,8 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     if m.n == 1:
         return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", status="exact",
                               message="a single segment: the target fixes its joint angle")
+    if not m.linear_springs:
+        return _slack_search(m, target, method, timeout)
     if method == "homotopy":
         return _homotopy(m, target, dedupe_tol, timeout)
     results = []
@@ -406,6 +413,23 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
     eqs = [make_equilibrium(m, r, constrained=True) for r in results]
     eqs.sort(key=lambda e: (round(e.energy, 10), -e.q[0]))
     return eqs
+
+
+def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: float | None) -> EquilibriumSet:
+    """Every equilibrium of a chain with tension-only springs, in the closed joint range (:mod:`.tension_only`)."""
+    from .tension_only import all_equilibria_slack
+
+    if method != "search":
+        raise UnsupportedError("the homotopy's polynomial systems model the linear spring law; a chain with "
+                               "tension-only springs is searched (method 'search': complete in practice, not "
+                               "certified)", field="method", spring="tension_only")
+    with time_limit(timeout):
+        eqs = all_equilibria_slack(m, target)
+    on_stop = sum(bool(e.at_stop.any()) for e in eqs)
+    where = f" ({on_stop} resting on a joint's stop)" if on_stop else ""
+    return EquilibriumSet(eqs, method="search", status="searched",
+                          message=f"{len(eqs)} equilibria{where} found by the tension-only search (Newton under the "
+                                  "springs' laws over the closed joint range: complete in practice, not certified)")
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:

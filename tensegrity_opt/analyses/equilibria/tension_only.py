@@ -46,12 +46,19 @@ from ...timelimit import check_time
 from .equilibrium import RESIDUAL_TOL, Equilibrium
 from .seeds import project_to_target
 
-__all__ = ["least_energy_slack", "STARTS", "STOP_TOL"]
+__all__ = ["least_energy_slack", "all_equilibria_slack", "STARTS", "STOP_TOL", "SEARCH_PER_JOINT", "STOP_STARTS"]
 
 #: IPOPT starts of the search taken from the ranked sample (besides q0 and the linear law's answer).
 STARTS = 6
 #: Random configurations per joint of the ranked sample.
 SAMPLE_PER_JOINT = 256
+#: Every-equilibrium search: Newton starts per joint inside the range, and per joint and side on a stop.
+SEARCH_PER_JOINT = 64
+STOP_STARTS = 16
+#: Newton iterations of one start of the every-equilibrium search at most.
+SEARCH_ITER = 60
+#: Two equilibria closer than this (rad, largest joint) are one.
+SAME_EQUILIBRIUM = 1e-7
 #: Chains of at most this many segments also rank their rigid configurations (n - 2 joints on a stop).
 RIGID_MAX = 6
 #: Two ranked starts closer than this (rad, largest joint) are one.
@@ -173,8 +180,9 @@ def _rigid(m: Manipulator, target: np.ndarray, rng: np.random.Generator) -> np.n
 
 
 def _classified(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, target: np.ndarray,
-                solver: SolverInfo) -> Equilibrium | None:
-    """The checked equilibrium at IPOPT's solution ``(q, F)``, or None where it is not one (module docstring)."""
+                solver: SolverInfo, *, refuse_free: bool = True) -> Equilibrium | None:
+    """The checked equilibrium at a solution ``(q, F)``, or None where it is not one (module docstring); a free joint
+    left undetermined is refused (``refuse_free``) or returned as it is (a degenerate equilibrium)."""
     lim = m.joint_limits
     if not np.all(np.isfinite(q)) or np.any(np.abs(q) > lim * (1 + 1e-9)):
         return None
@@ -204,7 +212,7 @@ def _classified(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, target: np.nd
     w = np.linalg.eigvalsh(Z.T @ H @ Z) if Z.shape[1] else np.zeros(0)
     morse = int(np.sum(w < -EIG_TOL * scale))
     stable = morse == 0 and bool(np.all(w > EIG_TOL * scale))
-    if morse == 0 and not stable:
+    if morse == 0 and not stable and refuse_free:
         loose = [i for i in np.flatnonzero(free) if np.all(m.springs.states(q)[i] == "slack")]
         if loose:
             i = int(loose[0])
@@ -216,6 +224,108 @@ def _classified(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, target: np.nd
     return Equilibrium(q=q.copy(), energy=float(m.energy(q)), force=F.copy(), morse_index=morse, stable=stable,
                        solver=solver, tip=m.tip(q), control="displacement", hessian_eigenvalues=w,
                        springs=m.springs, at_stop=side != 0.0, contact_torques=contact)
+
+
+def all_equilibria_slack(m: Manipulator, target: np.ndarray) -> list[Equilibrium]:
+    """Every equilibrium of ``m`` (any spring laws) with the tip on ``target`` in the closed joint range that the
+    search finds, with its Morse index, sorted by energy: damped Newton on the equilibrium equations under the
+    springs' laws (:meth:`~tensegrity_opt.numerics.slack_nlp.SlackNLP.derivatives`) from ``SEARCH_PER_JOINT * n``
+    configurations projected onto the tip, from ``STOP_STARTS`` per joint and side with that joint on its stop, and
+    from the rigid configurations (``n - 2`` joints on stops); a free joint that reaches its stop during Newton is
+    held there and Newton goes on (a stop equilibrium where its contact torque is >= 0). Each solution is checked
+    like the least-energy one (:func:`_classified`: residuals in numpy, contact torques, the reduced Hessian).
+    Complete in practice, never proven (measured against an independent enumeration:
+    ``tests/support/reference_equilibria_tension.py``)."""
+    nlp = slack_nlp(m.n)
+    n, lim = m.n, m.joint_limits
+    rng = np.random.default_rng(20261208 + n)
+    jobs: list[tuple[np.ndarray, frozenset]] = []
+    Q = project_to_target(m, rng.uniform(-0.98, 0.98, size=(SEARCH_PER_JOINT * n, n)) * lim, target)
+    jobs += [(q, frozenset()) for q in Q]
+    if n >= 3:
+        for i in range(n):
+            for side in (-1.0, 1.0):
+                for q in rng.uniform(-0.95, 0.95, size=(STOP_STARTS, n)) * lim:
+                    q[i] = side * lim[i]
+                    jobs.append((q, frozenset({i})))
+    if 2 <= n <= RIGID_MAX:
+        for q in _rigid(m, target, rng):
+            jobs.append((q, frozenset(np.flatnonzero(np.abs(q) >= lim).tolist())))
+    found: list[Equilibrium] = []
+    for q, held in jobs:
+        check_time("the tension-only search")
+        for _ in range(n):                      # each pass may hold one more joint on its stop
+            res = _newton(m, nlp, q, held, target)
+            if res is None:
+                break
+            q, F, hit = res
+            if hit is None:
+                eq = _classified(m, nlp, q, F, target, SolverInfo("Newton_Converged", 0), refuse_free=False)
+                if eq is not None and not any(float(np.abs(eq.q - e.q).max()) < SAME_EQUILIBRIUM for e in found):
+                    found.append(eq)
+                break
+            if len(held) + 1 > n - 2:
+                break
+            held = held | {hit}
+    return sorted(found, key=lambda e: e.energy)
+
+
+def _newton(m: Manipulator, nlp, q: np.ndarray, held: frozenset, target: np.ndarray):
+    """Damped Newton on the free joints and the tip force (the joints of ``held`` on their stops): ``(q, F, None)``
+    at a solution, ``(q, F, j)`` where free joint ``j`` reached its stop (``q`` there), None where it fails."""
+    lim = m.joint_limits
+    q = np.array(q, dtype=float)
+    for j in held:
+        q[j] = np.sign(q[j]) * lim[j] if q[j] != 0.0 else lim[j]
+    free = np.array([j not in held for j in range(m.n)])
+    idx = np.flatnonzero(free)
+    k = idx.size
+    if k < 2 and m.n >= 2:
+        return None
+    _, g, _, _, J = nlp.derivatives(m, q, np.zeros(2))
+    F = np.linalg.lstsq(J[:, idx].T, g[idx], rcond=None)[0]
+    scale, length = m.torque_scale, float(m.b.sum())
+
+    def residual(q, F):
+        _, g, H, tip, J = nlp.derivatives(m, q, F)
+        return np.concatenate([(g - J.T @ F)[idx] / scale, (tip - target) / length]), H, J
+
+    r, H, J = residual(q, F)
+    for _ in range(SEARCH_ITER):
+        norm = float(np.abs(r).max())
+        if norm <= 1e-13:
+            return q, F, None
+        K = np.zeros((k + 2, k + 2))
+        K[:k, :k] = H[np.ix_(idx, idx)] / scale
+        K[:k, k:] = -J[:, idx].T / scale
+        K[k:, :k] = J[:, idx] / length
+        try:
+            d = np.linalg.solve(K, -r)
+        except np.linalg.LinAlgError:
+            return None
+        if not np.all(np.isfinite(d)):
+            return None
+        t = 1.0
+        while t > 1e-4:
+            qn = q.copy()
+            qn[idx] += t * d[:k]
+            out = np.abs(qn) > lim
+            if out.any():                       # the step meets a stop: go there, then hold it
+                j = int(np.flatnonzero(out)[np.argmax((np.abs(qn) - lim)[out])])
+                frac = (lim[j] - abs(q[j])) / abs(qn[j] - q[j]) * t if qn[j] != q[j] else 0.0
+                qs = q.copy()
+                qs[idx] += frac * d[:k]
+                qs[j] = np.sign(qn[j]) * lim[j]
+                return np.clip(qs, -lim, lim), F + frac * d[k:], j
+            Fn = F + t * d[k:]
+            rn, Hn, Jn = residual(qn, Fn)
+            if float(np.abs(rn).max()) < norm or t < 0.05:
+                q, F, r, H, J = qn, Fn, rn, Hn, Jn
+                break
+            t *= 0.5
+        else:
+            return None
+    return (q, F, None) if float(np.abs(r).max()) <= 1e-10 else None
 
 
 def _polish(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, free: np.ndarray, target: np.ndarray):
