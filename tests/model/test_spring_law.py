@@ -213,7 +213,6 @@ def _calls(m, lin_eq, P):
         "find_equilibria (homotopy)": lambda: to.find_equilibria(m, 0.3, method="homotopy"),
         "find_equilibria_under_force": lambda: to.find_equilibria_under_force(m, -0.1, 0.0),
         "rest_configuration": lambda: to.rest_configuration(m),
-        "cartesian_stiffness": lambda: to.cartesian_stiffness(m, lin_eq),
         "energy_lower_bound": lambda: to.energy_lower_bound(m, 0.3),
         "solve_equilibria_batch": lambda: to.solve_equilibria_batch(m, [0.1, 0.2]),
         "Tracker": lambda: to.Tracker(m),
@@ -302,3 +301,21 @@ def test_many_random_tension_only_chains_equal_the_brute_force(seed):
             continue
         eq = to.solve_equilibrium(m, dx0 * f, dy0 * f)
         assert eq.energy == pytest.approx(best.energy, rel=1e-7, abs=1e-9), (family, m.n)
+
+
+def test_the_cartesian_stiffness_of_a_tension_only_equilibrium_on_a_stop_is_the_brute_force_derivative():
+    """dF/d(tip) at the paper's chain's tension-only equilibrium at (dx, dy) = (2, 0.2) (joint 3 on its stop, no mirror
+    tie): central differences of the brute force's tip force (the reference, h = 1e-4) against the library's held
+    KKT system."""
+    m = to.Manipulator.uniform(4, spring="tension_only")
+    eq = to.solve_equilibrium(m, 2.0, 0.2)
+    assert eq.at_stop.any()
+    K = to.cartesian_stiffness(m, eq)
+    segs, h = ref.segs_of(m), 1e-4
+    dFdx = (ref.least_energy(segs, 2.0 - h, 0.2).force - ref.least_energy(segs, 2.0 + h, 0.2).force) / (2 * h)
+    dFdy = (ref.least_energy(segs, 2.0, 0.2 + h).force - ref.least_energy(segs, 2.0, 0.2 - h).force) / (2 * h)
+    np.testing.assert_allclose(K, np.column_stack([dFdx, dFdy]), rtol=1e-4, atol=1e-6)
+    lin = to.Manipulator.uniform(4)                  # the laws agree where every spring is taut: the same stiffness
+    e = to.solve_equilibrium(lin, 0.5)
+    np.testing.assert_allclose(to.cartesian_stiffness(lin.with_spring("tension_only"), e),
+                               to.cartesian_stiffness(lin, e), rtol=1e-10, atol=1e-12)
