@@ -77,6 +77,10 @@ EIG_TOL = 1e-8
 KKT_TOL = 1e-11
 #: deduplication, max-norm in q
 DEDUP = 1e-7
+#: a 2-D chart seeds only where its IK minor is at least this fraction of the best minor over all pairs
+RESPONSIBLE = 0.3
+#: small-gradient seeds: grid local minima of |g1|/s1 + |g2|/s2 (s the 90th percentile) below this
+SMALL_GRADIENT = 0.05
 #: a tension-only spring this close to its rest length sits on the energy's kink: ``degenerate`` (one-sided Hessian)
 KINK_TOL = 1e-9
 
@@ -260,7 +264,14 @@ def _g_scaled(ch: _Chain, Q, i, j, params):
     Fdy = -Jx[:, j] * gi + Jx[:, i] * gj
     G = np.stack([dE[:, p] * det - (Jx[:, p] * Fdx + Jy[:, p] * Fdy) for p in params], -1) if params else \
         np.zeros((Q.shape[0], 0))
-    return G, det
+    return G, det, J
+
+
+def _best_minor(J, free):
+    """``max |det J[:, (a, b)]|`` over pairs of free joints (N,): the best-conditioned chart at each point."""
+    Jx, Jy = J[:, 0], J[:, 1]
+    return np.max([np.abs(Jx[:, a] * Jy[:, b] - Jy[:, a] * Jx[:, b]) for a, b in itertools.combinations(free, 2)],
+                  0)
 
 
 # ---------------------------------------------------------------------------- Newton on the KKT system
@@ -380,10 +391,14 @@ def _seeds_surface(ch, tgt, base, free, grid, margin, minima=200):
         for sigma in (1.0, -1.0):
             Qs, ok = _ik(ch, Q, i, j, sigma, tgt)
             ok &= _in_ext(ch, Qs, margin)
-            G, _ = _g_scaled(ch, Qs, i, j, [p1, p2])
+            G, det, J = _g_scaled(ch, Qs, i, j, [p1, p2])
             G = np.where(ok[:, None], G, np.nan).reshape(grid, grid, 2)
             okg = ok.reshape(grid, grid)
+            # this chart answers for the points where its minor is within RESPONSIBLE of the best one (every point
+            # of the manifold has a chart whose minor is the best: the charts overlap, none has to reach its folds)
+            resp = (ok & (np.abs(det) >= RESPONSIBLE * _best_minor(J, free))).reshape(grid, grid)
             V = okg[:-1, :-1] & okg[1:, :-1] & okg[:-1, 1:] & okg[1:, 1:]
+            V &= resp[:-1, :-1] | resp[1:, :-1] | resp[:-1, 1:] | resp[1:, 1:]
             corners = np.stack([G[:-1, :-1], G[1:, :-1], G[:-1, 1:], G[1:, 1:]])
             with np.errstate(invalid="ignore"):
                 mn, mx = np.nanmin(np.where(V[None, ..., None], corners, 0), 0), \
@@ -406,14 +421,14 @@ def _seeds_surface(ch, tgt, base, free, grid, margin, minima=200):
             # small-gradient seeds: local minima of the normalised |G| over 3 x 3 neighbourhoods
             scale = np.nanpercentile(np.abs(G[okg]), 90, axis=0) if okg.any() else np.ones(2)
             scale = np.where(scale > 0, scale, 1.0)
-            rho = np.where(okg, np.abs(G[..., 0]) / scale[0] + np.abs(G[..., 1]) / scale[1], np.inf)
+            rho = np.where(okg & resp, np.abs(G[..., 0]) / scale[0] + np.abs(G[..., 1]) / scale[1], np.inf)
             inner = rho[1:-1, 1:-1]
             is_min = np.isfinite(inner)
             for da in (-1, 0, 1):
                 for db in (-1, 0, 1):
                     if da or db:
                         is_min &= inner <= rho[1 + da:grid - 1 + da, 1 + db:grid - 1 + db]
-            ma, mb = np.nonzero(is_min)
+            ma, mb = np.nonzero(is_min & (inner < SMALL_GRADIENT))
             if ma.size:
                 order = np.argsort(inner[ma, mb])[:minima]
                 pts.append(np.column_stack([x1[ma[order] + 1], x2[mb[order] + 1]]))
@@ -537,7 +552,7 @@ def equilibria(segs, dx, dy=0.0, *, grid1=20001, grid2=801) -> list[Record]:
 
 def multistart(segs, dx, dy=0.0, *, starts=3000, seed=0, iters=60) -> list[Record]:
     """Independent cross-check: random starts per stop set (``starts`` for the interior, ``starts // 4`` for each
-    stop set with a curve, 8 for a rigid one), projected on ``tip = target`` by Gauss-Newton (minimum-norm steps),
+    stop set with a curve, 32 for a rigid one), projected on ``tip = target`` by Gauss-Newton (minimum-norm steps),
     then KKT Newton (batched; steps capped at 0.3 rad), the converged ones polished by :func:`_newton`."""
     ch = _chain(segs)
     n = ch.n
@@ -547,7 +562,7 @@ def multistart(segs, dx, dy=0.0, *, starts=3000, seed=0, iters=60) -> list[Recor
     for S, signs in _stop_sets(n):
         free = np.array([i for i in range(n) if i not in S])
         nf = free.size
-        N = starts if not S else (max(starts // 4, 20) if nf > 2 else 8)
+        N = starts if not S else (max(starts // 4, 20) if nf > 2 else 32)
         Q = np.tile(np.zeros(n), (N, 1))
         Q[:, list(S)] = np.array(signs) * ch.lim[list(S)]
         Q[:, free] = rng.uniform(-1, 1, (N, nf)) * ch.lim[free]
@@ -583,9 +598,16 @@ def multistart(segs, dx, dy=0.0, *, starts=3000, seed=0, iters=60) -> list[Recor
             F += step[:, nf:]
         stops = np.zeros(n, int)
         stops[list(S)] = signs
-        for qq, FF in zip(Q, F):
-            if not np.all(np.isfinite(qq)) or np.any(np.abs(qq) > ch.lim + 1e-6):
-                continue
+        _, dE, _ = _energy_derivs(ch, Q, second=False)
+        tip, J, _, _ = _kin(ch, Q)
+        r = np.concatenate([(dE[:, free] - np.einsum("nij,ni->nj", J[:, :, free], F)) / ch.scale_e,
+                            (tip - tgt) / ch.scale_x], 1)
+        good = np.all(np.isfinite(Q), 1) & np.all(np.abs(Q) <= ch.lim + 1e-6, 1)
+        good &= np.max(np.abs(np.where(np.isfinite(r), r, np.inf)), 1) < 1e-8
+        # one polish per cluster (the batch's converged points rounded to 1e-6; a cluster split by the rounding
+        # only costs a second polish, the records are merged at the end)
+        _, first = np.unique(np.round(Q[good], 6), axis=0, return_index=True)
+        for qq, FF in zip(Q[good][first], F[good][first]):
             q, Fp, ok = _newton(ch, qq, free, tgt, F0=FF, iters=20)
             if ok and np.all(np.abs(q) <= ch.lim + STOP_TOL):
                 r = _record(ch, np.clip(q, -ch.lim, ch.lim), Fp, stops, tgt)

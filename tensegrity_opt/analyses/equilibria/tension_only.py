@@ -40,6 +40,7 @@ import numpy as np
 
 from ...errors import NoEquilibriumError, UnreachableTargetError, UnsupportedError
 from ...model.manipulator import Manipulator
+from ...numerics import distinct_rows
 from ...numerics.slack_nlp import slack_nlp
 from ...outcome import SolverInfo
 from ...timelimit import check_time
@@ -53,12 +54,18 @@ STARTS = 6
 #: Random configurations per joint of the ranked sample.
 SAMPLE_PER_JOINT = 256
 #: Every-equilibrium search: Newton starts per joint inside the range, and per joint and side on a stop.
-SEARCH_PER_JOINT = 64
-STOP_STARTS = 16
+SEARCH_PER_JOINT = 128
+STOP_STARTS = 128
+#: Projected starts closer than this (rad, largest joint) are one start.
+START_SPACING = 0.05
 #: Newton iterations of one start of the every-equilibrium search at most.
 SEARCH_ITER = 60
 #: Two equilibria closer than this (rad, largest joint) are one.
 SAME_EQUILIBRIUM = 1e-7
+#: A free joint whose Newton steps meet its stop this many times is held there.
+STOP_HITS = 3
+#: Newton guesses of each rigid configuration's two free joints (both elbows, from random angles).
+RIGID_GUESSES = 12
 #: Chains of at most this many segments also rank their rigid configurations (n - 2 joints on a stop).
 RIGID_MAX = 6
 #: Two ranked starts closer than this (rad, largest joint) are one.
@@ -142,11 +149,33 @@ def _starts(m: Manipulator, target: np.ndarray, q0, linear_start) -> list[np.nda
     return starts
 
 
+def _project_held(m: Manipulator, Q: np.ndarray, target: np.ndarray, held: list[int]) -> np.ndarray:
+    """The rows of ``Q`` moved onto ``tip(q) = target`` by minimum-norm Gauss-Newton steps in the joints not in
+    ``held`` (those stay on their stops); the converged rows inside the closed range."""
+    Q = np.array(Q, dtype=float, copy=True)
+    free = np.array([j not in held for j in range(m.n)])
+    lim = m.joint_limits
+    for _ in range(30):
+        k = m.tip_kinematics(Q)
+        r = target - k.tip
+        J = np.stack([k.Jx * free, k.Jy * free], axis=1)             # (M, 2, n)
+        JJt = J @ np.transpose(J, (0, 2, 1))
+        ok = np.abs(np.linalg.det(JJt)) > 1e-14
+        JJt[~ok] = np.eye(2)
+        step = np.transpose(J, (0, 2, 1)) @ np.linalg.solve(JJt, r[:, :, None])
+        Q += np.clip(step[:, :, 0], -0.5, 0.5) * ok[:, None]
+        Q = np.clip(Q, -lim, lim)
+    k = m.tip_kinematics(Q)
+    good = np.abs(k.tip - target).max(axis=1) < 1e-10 * float(m.b.sum())
+    return Q[good]
+
+
 def _rigid(m: Manipulator, target: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """The rigid configurations: ``n - 2`` joints on a stop (every choice of joints and sides), the two others solved
-    for the tip by Newton (from four guesses each; the converged ones inside the range). A projection of random
+    for the tip by Newton (from ``RIGID_GUESSES`` guesses each; the converged ones inside the range). A projection of random
     samples moves every joint, so it seldom lands there, and the least energy may (both springs of two segments
-    slack at their stops)."""
+    slack at their stops). More than ``n - 2`` joints on stops meet a target only by coincidence (a chain of round
+    numbers: the paper's at ``dx = 2``), and there the tip force is not determined: not looked for."""
     from itertools import combinations as choose
     from itertools import product
 
@@ -155,7 +184,7 @@ def _rigid(m: Manipulator, target: np.ndarray, rng: np.random.Generator) -> np.n
     for held in choose(range(n), n - 2):
         free = [j for j in range(n) if j not in held]
         for sides in product((-1.0, 1.0), repeat=n - 2):
-            for _ in range(4):
+            for _ in range(RIGID_GUESSES):
                 q = rng.uniform(-0.9, 0.9, n) * lim
                 q[list(held)] = np.array(sides) * lim[list(held)]
                 rows.append(q)
@@ -241,13 +270,18 @@ def all_equilibria_slack(m: Manipulator, target: np.ndarray) -> list[Equilibrium
     rng = np.random.default_rng(20261208 + n)
     jobs: list[tuple[np.ndarray, frozenset]] = []
     Q = project_to_target(m, rng.uniform(-0.98, 0.98, size=(SEARCH_PER_JOINT * n, n)) * lim, target)
-    jobs += [(q, frozenset()) for q in Q]
+    jobs += [(Q[r], frozenset()) for r in (np.flatnonzero(distinct_rows(Q, START_SPACING)) if Q.shape[0] else ())]
     if n >= 3:
         for i in range(n):
             for side in (-1.0, 1.0):
-                for q in rng.uniform(-0.95, 0.95, size=(STOP_STARTS, n)) * lim:
-                    q[i] = side * lim[i]
-                    jobs.append((q, frozenset({i})))
+                S = rng.uniform(-0.95, 0.95, size=(STOP_STARTS, n)) * lim
+                half = STOP_STARTS // 2         # half with another joint near its stop (equilibria close to two)
+                j2 = (i + rng.integers(1, n, size=half)) % n
+                S[np.arange(half), j2] = rng.choice([-0.99, 0.99], size=half) * lim[j2]
+                S[:, i] = side * lim[i]
+                P = _project_held(m, S, target, [i])
+                for r in np.flatnonzero(distinct_rows(P, START_SPACING)) if P.shape[0] else ():
+                    jobs.append((P[r], frozenset({i})))
     if 2 <= n <= RIGID_MAX:
         for q in _rigid(m, target, rng):
             jobs.append((q, frozenset(np.flatnonzero(np.abs(q) >= lim).tolist())))
@@ -291,6 +325,7 @@ def _newton(m: Manipulator, nlp, q: np.ndarray, held: frozenset, target: np.ndar
         return np.concatenate([(g - J.T @ F)[idx] / scale, (tip - target) / length]), H, J
 
     r, H, J = residual(q, F)
+    hits = np.zeros(m.n, dtype=int)
     for _ in range(SEARCH_ITER):
         norm = float(np.abs(r).max())
         if norm <= 1e-13:
@@ -310,13 +345,20 @@ def _newton(m: Manipulator, nlp, q: np.ndarray, held: frozenset, target: np.ndar
             qn = q.copy()
             qn[idx] += t * d[:k]
             out = np.abs(qn) > lim
-            if out.any():                       # the step meets a stop: go there, then hold it
+            if out.any():                       # the step meets a stop: stop short of it, then (again) hold it
                 j = int(np.flatnonzero(out)[np.argmax((np.abs(qn) - lim)[out])])
                 frac = (lim[j] - abs(q[j])) / abs(qn[j] - q[j]) * t if qn[j] != q[j] else 0.0
+                hits[j] += 1
                 qs = q.copy()
-                qs[idx] += frac * d[:k]
-                qs[j] = np.sign(qn[j]) * lim[j]
-                return np.clip(qs, -lim, lim), F + frac * d[k:], j
+                if hits[j] >= STOP_HITS:
+                    qs[idx] += frac * d[:k]
+                    qs[j] = np.sign(qn[j]) * lim[j]
+                    return np.clip(qs, -lim, lim), F + frac * d[k:], j
+                t = 0.5 * frac                  # halfway to the stop: Newton may turn before it
+                if t <= 1e-4:
+                    qs[j] = np.sign(qn[j]) * lim[j]
+                    return np.clip(qs, -lim, lim), F, j
+                continue
             Fn = F + t * d[k:]
             rn, Hn, Jn = residual(qn, Fn)
             if float(np.abs(rn).max()) < norm or t < 0.05:
