@@ -172,8 +172,8 @@ def _project_held(m: Manipulator, Q: np.ndarray, target: np.ndarray, held: list[
 
 def _rigid(m: Manipulator, target: np.ndarray, rng: np.random.Generator) -> np.ndarray:
     """The rigid configurations: ``n - 2`` joints on a stop (every choice of joints and sides), the two others solved
-    for the tip by Newton (from ``RIGID_GUESSES`` guesses each; the converged ones inside the range). A projection of random
-    samples moves every joint, so it seldom lands there, and the least energy may (both springs of two segments
+    for the tip by Newton (from ``RIGID_GUESSES`` guesses each; the converged ones inside the range). A projection of
+    random samples moves every joint, so it seldom lands there, and the least energy may (both springs of two segments
     slack at their stops). More than ``n - 2`` joints on stops meet a target only by coincidence (a chain of round
     numbers: the paper's at ``dx = 2``), and there the tip force is not determined: not looked for."""
     from itertools import combinations as choose
