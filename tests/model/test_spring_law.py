@@ -252,7 +252,7 @@ def test_every_analysis_honours_the_tension_only_law_or_refuses_it_by_name():
         with pytest.raises(UnsupportedError) as e:
             call()
         want = {"solve_equilibrium (certify)": "certify", "solve_equilibrium (homotopy)": "method",
-                "find_equilibria (homotopy)": "method"}
+                "find_equilibria (homotopy)": "method", "preloads_for_pose": "taut"}
         assert e.value.field == want.get(name, "segments[1].spring"), name
     # honoured: the least energy, buckling of springs taut when straight, the landscape, the spring state
     eq = to.solve_equilibrium(m, 0.3)
@@ -359,3 +359,21 @@ def test_every_equilibrium_of_random_tension_only_chains_of_three(family):
 def test_every_equilibrium_of_the_paper_chain_under_the_tension_only_law(dx):
     """Up to 34 equilibria (22 on a stop at dx = 2), each with its Morse index."""
     _same_sets(to.Manipulator.uniform(4, spring="tension_only"), dx, 0.0)
+
+
+def test_preloads_for_a_pose_of_a_tension_only_chain_keep_every_spring_taut():
+    """taut=True: the linear law's design with every spring taut is the arm's as built (the laws agree there); the
+    reference model (its own geometry and force vectors) finds the designed pose in equilibrium and stable under
+    no load, every spring in tension."""
+    m = to.Manipulator.uniform(4, spring="tension_only")
+    d = to.preloads_for_pose(m, (5.5, 1.5), taut=True)
+    built = d.manipulator
+    assert all(s.spring == "tension_only" for s in built.segments) and d.success
+    segs = ref.segs_of(built)
+    assert np.all(ref.lengths(segs, d.q) - np.array([[s.L1_0, s.L2_0] for s in built.segments]) >= -1e-9)
+    assert np.abs(ref.torques(segs, d.q)).max() < 1e-8 * built.torque_scale        # no load: no torque
+    np.testing.assert_allclose(ref.tip(segs, d.q), [5.5, 1.5], atol=1e-8)
+    h = 1e-5
+    H = np.array([(ref.torques(segs, d.q - h * e) - ref.torques(segs, d.q + h * e)) / (2 * h) for e in np.eye(4)])
+    assert np.linalg.eigvalsh(0.5 * (H + H.T)).min() > 0.5 * d.margin
+    assert (d.spring_states == "taut").all()

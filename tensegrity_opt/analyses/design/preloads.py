@@ -32,6 +32,7 @@ from ...errors import (
     TensegrityError,
     TimeLimitError,
     UnreachableTargetError,
+    UnsupportedError,
 )
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs, linear_only
@@ -196,7 +197,9 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
         Required smallest eigenvalue of the joint-space Hessian of ``E - F.tip`` (torque/rad);
         the lower bound of the margin for ``objective="margin"``.
     taut : bool
-        Keep every spring in tension (``L >= L0``).
+        Keep every spring in tension (``L >= L0``). A chain with tension-only springs needs it (where every spring
+        is taut the two laws agree: the design holds for the arm as built); without it the chain is refused
+        (``UnsupportedError``, ``field="taut"``).
     bounds : (lo, hi), optional
         Bounds on every rest length, each a number or ``2 n`` values (``L1_0`` of every segment, then every
         ``L2_0``); default ``(0.1 b_min, 4 b_max)`` (:func:`rest_length_bounds`).
@@ -225,9 +228,18 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
-    linear_only(m, "preloads_for_pose")
+    if not m.linear_springs:
+        if not taut:
+            raise UnsupportedError("preloads_for_pose designs a tension-only chain with every spring kept taut (there "
+                                   "the laws agree): set taut=True", field="taut", spring="tension_only")
+        with _time_limit(timeout):
+            d = _preloads_for_pose(m.with_spring("linear"), target, load, objective, margin, True, bounds, end_angle,
+                                   start)
+        built = Manipulator(s.replace(spring=t.spring) for s, t in zip(d.manipulator.segments, m.segments))
+        return replace(d, manipulator=built, equilibrium=replace(d.equilibrium, springs=built.springs))
     with _time_limit(timeout):
         return _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start)
+
 
 
 def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start) -> PreloadDesign:
