@@ -81,6 +81,9 @@ DEDUP = 1e-7
 RESPONSIBLE = 0.3
 #: small-gradient seeds: grid local minima of |g1|/s1 + |g2|/s2 (s the 90th percentile) below this
 SMALL_GRADIENT = 0.05
+#: the reason given to a point of a zero-energy set (every spring of the chain slack: E = 0 and F = 0 on a whole
+#: neighbourhood, a continuum of equilibria, only sampled)
+CONTINUUM = "zero-energy continuum (every spring slack)"
 #: a tension-only spring this close to its rest length sits on the energy's kink: ``degenerate`` (one-sided Hessian)
 KINK_TOL = 1e-9
 
@@ -109,12 +112,20 @@ class Record:
 
 
 def count_by_kind(records) -> dict:
-    """``{"interior": {index: count}, "stop": {index: count}, "degenerate": count, "total": count}``."""
+    """``{"interior": {index: count}, "stop": {index: count}, "degenerate": count, "total": count}``, plus
+    ``"continuum": count`` (sample points of a zero-energy set, left out of the interior / stop counts) when any."""
     out = {"interior": collections.Counter(), "stop": collections.Counter()}
+    flat = 0
     for r in records:
-        out[r.kind][r.morse_index] += 1
-    return {"interior": dict(sorted(out["interior"].items())), "stop": dict(sorted(out["stop"].items())),
-            "degenerate": sum(r.degenerate for r in records), "total": len(records)}
+        if CONTINUUM in r.reasons:
+            flat += 1
+        else:
+            out[r.kind][r.morse_index] += 1
+    res = {"interior": dict(sorted(out["interior"].items())), "stop": dict(sorted(out["stop"].items())),
+           "degenerate": sum(r.degenerate for r in records), "total": len(records)}
+    if flat:
+        res["continuum"] = flat
+    return res
 
 
 # ---------------------------------------------------------------------------- the chain, closed forms
@@ -353,7 +364,12 @@ def _seeds_curve(ch, tgt, base, free, grid, margin):
             Qs, ok = _ik(ch, Q, i, j, sigma, tgt)
             ok &= _in_ext(ch, Qs, margin)
             G = _g_scaled(ch, Qs, i, j, [p])[0][:, 0]
-            exact = np.flatnonzero(ok & (G == 0.0))
+            # exact zeros: a flat (all-slack) stretch gives runs of them; seed only the ends of each run
+            z = ok & (G == 0.0)
+            inner = z.copy()
+            inner[1:-1] = z[:-2] & z[1:-1] & z[2:]
+            inner[[0, -1]] = False
+            exact = np.flatnonzero(z & ~inner)
             out.extend(Qs[e] for e in exact)
             br = np.flatnonzero(ok[:-1] & ok[1:] & (G[:-1] * G[1:] < 0))
 
@@ -481,6 +497,14 @@ def _record(ch: _Chain, q, F, stops, tgt) -> Record | None:
     free = np.flatnonzero(stops == 0)
     E, dE, _ = _energy_derivs(ch, q)
     tip, J, _, _ = _kin(ch, q)
+    Jf = J[:, free]
+    if np.linalg.matrix_rank(Jf, tol=1e-10 * ch.scale_x) < 2:
+        # the free rows do not fix F (fewer than two free joints, or a singular minor): an equilibrium iff SOME F
+        # balances the free rows with every contact torque >= 0 -- the linear programme max t, c_i >= t
+        F, t = _contact_lp(ch, q, stops, dE, J)
+        if F is None or t < -CONTACT_TOL * ch.scale_e:
+            return None
+        reasons.append("tip force not unique")
     res = dE - J.T @ F
     contact = np.where(stops != 0, -stops * res, 0.0)
     if np.any(contact < -CONTACT_TOL * ch.scale_e):
@@ -488,9 +512,6 @@ def _record(ch: _Chain, q, F, stops, tgt) -> Record | None:
     if np.any((stops != 0) & (np.abs(contact) <= CONTACT_TOL * ch.scale_e)):
         reasons.append("contact torque ~ 0")
     residual = max(float(np.max(np.abs(res[free]))) if free.size else 0.0, float(np.max(np.abs(tip - tgt))))
-    Jf = J[:, free]
-    if np.linalg.matrix_rank(Jf, tol=1e-10 * ch.scale_x) < 2:
-        reasons.append("J_free rank-deficient")
     Z = sl.null_space(Jf) if free.size > 2 else np.zeros((free.size, 0))
     if Z.shape[1]:
         H = _hess_L(ch, q, F)[np.ix_(free, free)]
@@ -499,12 +520,52 @@ def _record(ch: _Chain, q, F, stops, tgt) -> Record | None:
         eig = np.zeros(0)
     if np.any(np.abs(eig) <= EIG_TOL * ch.scale_e):
         reasons.append("singular reduced Hessian")
+    if np.all(dE == 0.0) and np.all(F == 0.0):
+        reasons.append(CONTINUUM)
     L, _, _ = _springs(ch, q)
     if np.any(ch.slack[:, None] & (np.abs(L - ch.L0) <= KINK_TOL * ch.scale_x)):
         reasons.append("tension-only spring at its rest length")
     return Record(q=q, F=np.array(F, float), energy=float(E), morse_index=int(np.sum(eig < -EIG_TOL * ch.scale_e)),
                   stops=stops, contact_torques=np.maximum(contact, 0.0) * (stops != 0), degenerate=bool(reasons),
                   residual=residual, eigenvalues=eig, reasons=tuple(reasons))
+
+
+def _contact_lp(ch, q, stops, dE, J):
+    """When the free rows leave ``F`` open: first ``t* = max t`` over ``(F, t)`` with ``(J^T F)_i = dE_i`` on the
+    free rows and every contact torque ``-s_i (dE_i - (J^T F)_i) >= t`` (``t <= max k c^2``); then, if
+    ``t* >= -CONTACT_TOL``, the least ``|F_x| + |F_y|`` keeping the contact torques ``>= min(t*, 0)`` (a
+    representative: such an F is a ray or a segment). Returns ``(F, t*)``, or ``(None, -inf)`` when infeasible."""
+    free = stops == 0
+    st = np.flatnonzero(~free)
+    big = 1e6 * ch.scale_e / ch.scale_x
+    # contact >= t  <=>  t - s_i J_i . F <= -s_i dE_i
+    G = -stops[st, None] * J[:, st].T
+    h = -stops[st] * dE[st]
+    A_eq = J[:, free].T if free.any() else np.zeros((0, 2))
+    b_eq = dE[free] if free.any() else np.zeros(0)
+    r = so.linprog([0.0, 0.0, -1.0], A_ub=np.column_stack([G, np.ones(st.size)]) if st.size else None,
+                   b_ub=h if st.size else None, A_eq=np.column_stack([A_eq, np.zeros(A_eq.shape[0])]) if free.any()
+                   else None, b_eq=b_eq if free.any() else None,
+                   bounds=[(-big, big), (-big, big), (None, ch.scale_e)], method="highs")
+    if r.status != 0:
+        return None, -math.inf
+    t = float(r.x[2])
+    if t < -CONTACT_TOL * ch.scale_e:
+        return r.x[:2], t
+    floor = min(t, 0.0)
+    # variables (Fx, Fy, ux, uy): min ux + uy, |F| <= u, contact >= floor
+    A_ub = [np.concatenate([G[i], [0.0, 0.0]]) for i in range(st.size)]
+    b_ub = list(h - floor)
+    for d in range(2):
+        for sg in (1.0, -1.0):
+            row = np.zeros(4)
+            row[d], row[2 + d] = sg, -1.0
+            A_ub.append(row)
+            b_ub.append(0.0)
+    r2 = so.linprog([0.0, 0.0, 1.0, 1.0], A_ub=np.array(A_ub), b_ub=np.array(b_ub),
+                    A_eq=np.column_stack([A_eq, np.zeros((A_eq.shape[0], 2))]) if free.any() else None,
+                    b_eq=b_eq if free.any() else None, bounds=[(-big, big)] * 2 + [(0, None)] * 2, method="highs")
+    return (r2.x[:2] if r2.status == 0 else r.x[:2]), t
 
 
 def _merge(records):

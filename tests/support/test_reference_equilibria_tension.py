@@ -292,7 +292,7 @@ def test_every_record_satisfies_its_equations(name, dx, dy):
         assert np.max(np.abs(res[free])) < 1e-10
         assert np.all(np.abs(q[free]) < lim[free])
         assert np.array_equal(q[~free], stops[~free] * lim[~free])
-        assert free.sum() >= 2
+        assert free.sum() >= 2 or "tip force not unique" in x.reasons      # three stops: F only bounded
         assert np.all(x.contact_torques >= 0) and np.all(x.contact_torques[free] == 0)
         assert np.allclose(x.contact_torques[~free], -stops[~free] * res[~free], atol=1e-10)
         if not x.degenerate:
