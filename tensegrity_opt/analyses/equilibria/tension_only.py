@@ -86,7 +86,7 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
     nlp = slack_nlp(m.n)
     p, bounds = nlp.parameters(m, target), nlp.bounds(m)
     starts = [np.asarray(q0, float)] if local else _starts(m, target, q0, linear_start)
-    best: Equilibrium | None = None
+    found: list[Equilibrium] = []
     statuses: dict[str, int] = {}
     refused: UnsupportedError | None = None
     for qs in starts:
@@ -103,8 +103,8 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
             continue
         if eq is None or not (eq.stable or local):
             continue
-        if best is None or eq.energy < best.energy - 1e-12 * max(1.0, abs(best.energy)):
-            best = eq
+        found.append(eq)
+    best = _least(found, q0)
     if best is None:
         if refused is not None:
             raise refused
@@ -117,6 +117,18 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
         raise NoEquilibriumError(f"no stable equilibrium found from {len(starts)} start(s) of the tension-only search "
                                  f"(IPOPT: {met})", status="no_stable_equilibrium")
     return best
+
+
+def _least(found: list[Equilibrium], q0) -> Equilibrium | None:
+    """The least energy of ``found``; of equal ones (mirror images at ``dy = 0``, within ``1e-10`` relative) the one
+    nearest ``q0``, else the one whose first non-zero angle is positive (as the linear law's search picks)."""
+    if not found:
+        return None
+    e0 = min(e.energy for e in found)
+    tied = [e for e in found if e.energy <= e0 + 1e-10 * max(1.0, abs(e0))]
+    if q0 is not None:
+        return min(tied, key=lambda e: float(np.abs(e.q - q0).max()))
+    return max(tied, key=lambda e: (next((float(np.sign(v)) for v in e.q if abs(v) > 1e-9), 0.0), -e.energy))
 
 
 def _starts(m: Manipulator, target: np.ndarray, q0, linear_start) -> list[np.ndarray]:
