@@ -44,15 +44,26 @@ Method (for every stop set ``S`` and sign pattern, ``S`` empty included, the fre
 * every seed is polished by damped Newton on the full KKT system in ``(q_f, F)`` (analytic Hessian), accepted when
   the residual is below 1e-11 (relative to ``max k c^2`` and ``sum b``) and the point lies in the closed range,
   then deduplicated (1e-7 in ``q``, max-norm).
+* classification: a free joint within ``STOP_TOL`` of its stop is moved to the stop set (``degenerate``); when
+  the free rows do not determine ``F`` (fewer than two free joints, e.g. three joints of n = 4 at their stops, or a
+  singular minor) the record is kept iff a linear programme finds an ``F`` balancing the free rows with every
+  contact torque ``>= 0`` (the least ``|F_x| + |F_y|`` such ``F`` is reported; ``degenerate``, "tip force not
+  unique"); a stop with a contact torque below ``-CONTACT_TOL`` rejects the candidate.
 
 :func:`multistart` is an independent cross-check: many random starts per stop set, projected on the manifold by
 Gauss-Newton, then the same KKT Newton, batched.
 
-Not covered (not generic): non-isolated critical sets (a region where every spring of the chain is slack makes
-``E`` flat: a continuum of equilibria, of which only isolated Newton limits would be reported, flagged
-``degenerate`` by the singular reduced Hessian); a root of even multiplicity (a tangency of the zero curves:
-no sign change; only the small-gradient seeds can find it); chains near a kinematic singularity of the whole
-arm (target distance equal to ``|sum +- l_j|``, where every minor of ``J`` is small).
+Not covered (not generic): non-isolated critical sets -- with ``F = 0`` and three or more free joints fully slack
+(both springs of each below rest length, tension-only) those joints' angles are free along the manifold: a
+continuum of equilibria, only SAMPLED (the ends of each flat run in 1-D, five flat grid points per chart in 2-D),
+its records flagged ``degenerate`` with reason :data:`CONTINUUM` and counted apart by :func:`count_by_kind`;
+a root of even multiplicity (a tangency of the zero curves: no sign change; only the small-gradient seeds can
+find it); two roots closer than a grid cell in every chart (only one is seeded by the sign test; the second needs
+a small-gradient seed); chains near a kinematic singularity of the whole arm (target distance equal to
+``|sum +- l_j|``, where every minor of ``J`` is small). The Morse index at a tension-only kink (a spring exactly at
+rest length) uses the slack side's second derivative and is flagged ``degenerate``.
+
+Cost (one core): n = 3 about 0.1 s; n = 4 about 2.5 s at ``grid2 = 401`` and 9-10 s at the default 801.
 """
 
 from __future__ import annotations
@@ -81,9 +92,9 @@ DEDUP = 1e-7
 RESPONSIBLE = 0.3
 #: small-gradient seeds: grid local minima of |g1|/s1 + |g2|/s2 (s the 90th percentile) below this
 SMALL_GRADIENT = 0.05
-#: the reason given to a point of a zero-energy set (every spring of the chain slack: E = 0 and F = 0 on a whole
-#: neighbourhood, a continuum of equilibria, only sampled)
-CONTINUUM = "zero-energy continuum (every spring slack)"
+#: the reason given to a sample point of a continuum of equilibria (F = 0 and at least three fully slack joints,
+#: whose angles are then free along the manifold); such sets are only sampled
+CONTINUUM = "continuum (F = 0, three or more free joints fully slack)"
 #: a tension-only spring this close to its rest length sits on the energy's kink: ``degenerate`` (one-sided Hessian)
 KINK_TOL = 1e-9
 
@@ -113,7 +124,8 @@ class Record:
 
 def count_by_kind(records) -> dict:
     """``{"interior": {index: count}, "stop": {index: count}, "degenerate": count, "total": count}``, plus
-    ``"continuum": count`` (sample points of a zero-energy set, left out of the interior / stop counts) when any."""
+    ``"continuum": count`` (sample points of a continuum of equilibria, left out of the interior / stop counts)
+    when any."""
     out = {"interior": collections.Counter(), "stop": collections.Counter()}
     flat = 0
     for r in records:
@@ -413,8 +425,12 @@ def _seeds_surface(ch, tgt, base, free, grid, margin, minima=200):
             # this chart answers for the points where its minor is within RESPONSIBLE of the best one (every point
             # of the manifold has a chart whose minor is the best: the charts overlap, none has to reach its folds)
             resp = (ok & (np.abs(det) >= RESPONSIBLE * _best_minor(J, free))).reshape(grid, grid)
+            # flat points (g exactly 0, e.g. every spring slack: a continuum of equilibria): a few samples seed,
+            # their cells and minima do not (they would be thousands)
+            flat = okg & np.all(G == 0.0, -1)
             V = okg[:-1, :-1] & okg[1:, :-1] & okg[:-1, 1:] & okg[1:, 1:]
             V &= resp[:-1, :-1] | resp[1:, :-1] | resp[:-1, 1:] | resp[1:, 1:]
+            V &= ~(flat[:-1, :-1] | flat[1:, :-1] | flat[:-1, 1:] | flat[1:, 1:])
             corners = np.stack([G[:-1, :-1], G[1:, :-1], G[:-1, 1:], G[1:, 1:]])
             with np.errstate(invalid="ignore"):
                 mn, mx = np.nanmin(np.where(V[None, ..., None], corners, 0), 0), \
@@ -427,17 +443,21 @@ def _seeds_surface(ch, tgt, base, free, grid, margin, minima=200):
                 d1 = (G[a_idx + 1, b_idx] - g00) / h1
                 d2 = (G[a_idx, b_idx + 1] - g00) / h2
                 A = np.stack([d1, d2], -1)                    # (N, 2 comps, 2 params)
-                det = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
-                with np.errstate(divide="ignore", invalid="ignore"):
-                    s1 = -(A[:, 1, 1] * g00[:, 0] - A[:, 0, 1] * g00[:, 1]) / det
-                    s2 = -(-A[:, 1, 0] * g00[:, 0] + A[:, 0, 0] * g00[:, 1]) / det
+                dlin = A[:, 0, 0] * A[:, 1, 1] - A[:, 0, 1] * A[:, 1, 0]
+                with np.errstate(divide="ignore", invalid="ignore"):     # the cell's linearised zero
+                    s1 = -(A[:, 1, 1] * g00[:, 0] - A[:, 0, 1] * g00[:, 1]) / dlin
+                    s2 = -(-A[:, 1, 0] * g00[:, 0] + A[:, 0, 0] * g00[:, 1]) / dlin
                 s1 = np.where(np.isfinite(s1), np.clip(s1, -h1, 2 * h1), 0.5 * h1)
                 s2 = np.where(np.isfinite(s2), np.clip(s2, -h2, 2 * h2), 0.5 * h2)
                 pts.append(np.column_stack([x1[a_idx] + s1, x2[b_idx] + s2]))
             # small-gradient seeds: local minima of the normalised |G| over 3 x 3 neighbourhoods
             scale = np.nanpercentile(np.abs(G[okg]), 90, axis=0) if okg.any() else np.ones(2)
             scale = np.where(scale > 0, scale, 1.0)
-            rho = np.where(okg & resp, np.abs(G[..., 0]) / scale[0] + np.abs(G[..., 1]) / scale[1], np.inf)
+            fa, fb = np.nonzero(flat)
+            if fa.size:
+                pick = np.linspace(0, fa.size - 1, min(fa.size, 5)).astype(int)
+                pts.append(np.column_stack([x1[fa[pick]], x2[fb[pick]]]))
+            rho = np.where(okg & resp & ~flat, np.abs(G[..., 0]) / scale[0] + np.abs(G[..., 1]) / scale[1], np.inf)
             inner = rho[1:-1, 1:-1]
             is_min = np.isfinite(inner)
             for da in (-1, 0, 1):
@@ -486,7 +506,6 @@ def _stopset(ch, tgt, fixed: dict, grid1, grid2, margin):
 # ---------------------------------------------------------------------------- classification
 def _record(ch: _Chain, q, F, stops, tgt) -> Record | None:
     """Classify ``(q, F)`` with the given stop pattern; None when a contact torque is negative."""
-    n = ch.n
     stops = np.array(stops, int)
     reasons = []
     near = (stops == 0) & (np.abs(q) >= ch.lim - STOP_TOL)
@@ -520,9 +539,12 @@ def _record(ch: _Chain, q, F, stops, tgt) -> Record | None:
         eig = np.zeros(0)
     if np.any(np.abs(eig) <= EIG_TOL * ch.scale_e):
         reasons.append("singular reduced Hessian")
-    if np.all(dE == 0.0) and np.all(F == 0.0):
-        reasons.append(CONTINUUM)
     L, _, _ = _springs(ch, q)
+    # F = 0 and three or more free joints with both springs strictly slack: those joints move freely along the
+    # manifold (it keeps |slack| - 2 >= 1 dimensions of them) -- a continuum, not an isolated equilibrium
+    full_slack = ch.slack & np.all(L - ch.L0 < -KINK_TOL * ch.scale_x, -1) & (stops == 0)
+    if full_slack.sum() >= 3 and np.max(np.abs(F)) <= 1e-9 * ch.scale_e / ch.scale_x:
+        reasons.append(CONTINUUM)
     if np.any(ch.slack[:, None] & (np.abs(L - ch.L0) <= KINK_TOL * ch.scale_x)):
         reasons.append("tension-only spring at its rest length")
     return Record(q=q, F=np.array(F, float), energy=float(E), morse_index=int(np.sum(eig < -EIG_TOL * ch.scale_e)),

@@ -239,7 +239,7 @@ N3_CASES = [((1.0, 1.0, 1.0, 1.0), 0.1), ((1.0, 1.0, 1.0, 1.0), 1.0), ((0.8, 1.2
             ((0.5, 1.0, 1.0, 1.0), 0.5), ((0.6, 1.0, 1.0, 1.0), 1.5), ((1.0, 1.0, 1.0, 1.0), 2.0)]
 
 
-@pytest.mark.slow_cases(keep=3)
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("params,dx", N3_CASES, ids=[f"{p}-dx{d}" for p, d in N3_CASES])
 def test_n3_uniform_linear_counts_match_an_independent_multistart(params, dx):
     segs = uniform(3, *params, "linear")
@@ -258,6 +258,7 @@ def test_n3_uniform_linear_counts_match_an_independent_multistart(params, dx):
         assert len(twin) == 1 and twin[0].morse_index == m and np.array_equal(twin[0].stops, stops)
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("dx", [1.0, 2.0])
 def test_n3_tension_only_against_an_independent_multistart(dx):
     segs = CHAINS["paper3-tension"]
@@ -270,12 +271,12 @@ def test_n3_tension_only_against_an_independent_multistart(dx):
 
 
 # ---------------------------------------------------------------------------- 4. every record's equations
-RECORD_CASES = [("paper4-tension", 2.0, 0.0), ("paper4-tension", 1.5, 0.0), ("paper3-tension", 1.0, 0.0),
-                ("paper3-tension", 2.0, 0.0), ("hetero3", 1.2, 0.3), ("hetero4", 2.5, -0.4),
+RECORD_CASES = [("paper3-tension", 1.0, 0.0), ("paper3-tension", 2.0, 0.0), ("hetero3", 1.2, 0.3),
+                ("paper4-tension", 2.0, 0.0), ("paper4-tension", 1.5, 0.0), ("hetero4", 2.5, -0.4),
                 ("paper4-linear", 0.1, 0.0)]
 
 
-@pytest.mark.slow_cases(keep=5)
+@pytest.mark.slow_cases(keep=3)
 @pytest.mark.parametrize("name,dx,dy", RECORD_CASES, ids=[f"{c[0]}-{c[1]}-{c[2]}" for c in RECORD_CASES])
 def test_every_record_satisfies_its_equations(name, dx, dy):
     segs = CHAINS[name]
@@ -299,7 +300,7 @@ def test_every_record_satisfies_its_equations(name, dx, dy):
             assert np.all(x.contact_torques[~free] > 0)
         assert x.energy == pytest.approx(RT.energy(segs, q), abs=1e-12)
         eig = reduced_eigs(segs, q, F, stops)
-        assert eig.size == free.sum() - 2
+        assert eig.size == max(free.sum() - 2, 0)
         if eig.size and np.min(np.abs(eig)) > 1e-3:
             assert int(np.sum(eig < 0)) == x.morse_index
             assert np.allclose(np.sort(eig), np.sort(x.eigenvalues), atol=1e-5)
