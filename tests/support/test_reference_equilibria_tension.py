@@ -340,6 +340,7 @@ def test_paper_chain_tension_only_at_dx_2_least_energy_on_joint_3_stop():
 
 
 # ---------------------------------------------------------------------------- 6. against the batched multistart
+@pytest.mark.slow
 def test_paper_chain_tension_only_multistart_finds_nothing_else():
     r = eq("paper4-tension", 2.0)
     m = RE.multistart(CHAINS["paper4-tension"], 2.0, 0.0, starts=1500, seed=7)
