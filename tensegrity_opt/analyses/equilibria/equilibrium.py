@@ -93,10 +93,11 @@ class Equilibrium(Outcome, TipForce, SpringFields):
         (``"taut"``, ``"slack"``, ``"pushing"``) at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`;
         from ``springs``, the chain's springs).
     at_stop : ndarray (n,) of bool
-        The joints resting on their mechanical stop ``|q_i| = pi - 2 beta_i`` (reached only where springs go slack:
-        the tension-only law); all False for an equilibrium inside the open range.
+        The joints resting on their mechanical stop ``|q_i| = pi - 2 beta_i`` (where springs go slack, or a large
+        deflection presses a joint there); all False for an equilibrium inside the open range.
     contact_torques : ndarray (n,)
-        The torque each stop supplies (>= 0; 0 where a joint is not at its stop).
+        The torque each stop supplies (>= 0; 0 where a joint is not at its stop). Both are read from ``stops``:
+        ``None`` inside the open range, else the pair ``(at_stop, contact_torques)``.
     certificate : EnergyBound or None
         With ``solve_equilibrium(..., certify=True)``: the rigorous lower bound on the energy of every
         configuration meeting the tip constraint in the closed joint range, and the gap
@@ -131,23 +132,29 @@ class Equilibrium(Outcome, TipForce, SpringFields):
     status: str = "converged"
     certificate: EnergyBound | None = field(default=None, repr=False)
     springs: Springs | None = field(default=None, repr=False, compare=False)
-    at_stop: np.ndarray | None = field(default=None, repr=False)
-    contact_torques: np.ndarray | None = field(default=None, repr=False)
+    stops: tuple | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         # the builders pass arrays they own: read-only in place (this is on the control loop's path)
-        if self.at_stop is None:                # inside the open range: no stop touched (the common case)
-            d, n = self.__dict__, self.q.size   # (the control loop's path: no object.__setattr__)
-            d["at_stop"], d["contact_torques"] = _NO_STOP[n], _ZERO_TORQUE[n]
-        else:
-            self.at_stop.setflags(write=False)
-            self.contact_torques.setflags(write=False)
+        if self.stops is not None:
+            for a in self.stops:
+                a.setflags(write=False)
         self.q.setflags(write=False)
         self.force.setflags(write=False)
         self.tip.setflags(write=False)
         self.hessian_eigenvalues.setflags(write=False)
         if self.status not in self.STATUSES:
             self._check_outcome()
+
+    @property
+    def at_stop(self) -> np.ndarray:
+        """The joints resting on their stop (n,): all False inside the open range."""
+        return _NO_STOP[self.q.size] if self.stops is None else self.stops[0]
+
+    @property
+    def contact_torques(self) -> np.ndarray:
+        """The torque each stop supplies (n,), >= 0: all 0 inside the open range."""
+        return _ZERO_TORQUE[self.q.size] if self.stops is None else self.stops[1]
 
     @property
     def message(self) -> str:

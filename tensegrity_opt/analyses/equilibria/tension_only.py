@@ -264,7 +264,7 @@ def _classified(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, target: np.nd
                 status="free_joint")
     return Equilibrium(q=q.copy(), energy=float(m.energy(q)), force=F.copy(), morse_index=morse, stable=stable,
                        solver=solver, tip=m.tip(q), control="displacement", hessian_eigenvalues=w,
-                       springs=m.springs, at_stop=side != 0.0, contact_torques=contact)
+                       springs=m.springs, stops=(side != 0.0, contact))
 
 
 def all_equilibria_slack(m: Manipulator, target: np.ndarray) -> list[Equilibrium]:
