@@ -32,8 +32,8 @@ from .per_thread import per_thread
 __all__ = ["SlackNLP", "slack_nlp"]
 
 #: IPOPT options of the slack problem (on top of the design problems' own).
-_OPTIONS = {"ipopt.max_iter": 500, "ipopt.tol": 1e-12, "ipopt.constr_viol_tol": 1e-11,
-            "ipopt.acceptable_tol": 1e-9, "ipopt.bound_relax_factor": 0.0, "ipopt.max_wall_time": 20.0}
+_OPTIONS = {"ipopt.max_iter": 300, "ipopt.tol": 1e-12, "ipopt.constr_viol_tol": 1e-11,
+            "ipopt.acceptable_tol": 1e-9, "ipopt.bound_relax_factor": 0.0, "ipopt.max_wall_time": 5.0}
 
 
 class SlackNLP:

@@ -61,12 +61,28 @@ def check_equilibrium(m: to.Manipulator, eq, target=None, *, stable: bool | None
         q, F, tip, energy = (np.array(eq["q"], float), np.array([eq["force"]["fx"], eq["force"]["fy"]], float),
                              np.array(eq["tip"], float), eq["energy"])
         is_stable = eq["stable"]
+        at_stop, contact = np.array(eq["at_stop"], bool), np.array(eq["contact_torques"], float)
     else:
         q, F, tip, energy, is_stable = eq.q, eq.force, eq.tip, eq.energy, eq.stable
+        at_stop, contact = np.asarray(eq.at_stop, bool), np.asarray(eq.contact_torques, float)
     ref = reference_chain(m)
-    assert np.all(np.abs(q) < ref.limits), f"outside the physical range: {q} vs {ref.limits}"
     T = float(np.max(np.maximum(ref.k1, ref.k2) * ref.c ** 2))
     L = float(np.sum(ref.b))
+    if at_stop.any():
+        # an equilibrium resting on joint stops (issue 40): those joints exactly at their bound, the others inside;
+        # the free joints balanced, each stop pushing back with the reported contact torque (>= 0)
+        assert np.allclose(np.abs(q[at_stop]), ref.limits[at_stop], rtol=1e-12, atol=0), \
+            f"not on its stop: {q} vs {ref.limits}"
+        assert np.all(np.abs(q[~at_stop]) < ref.limits[~at_stop]), f"outside the physical range: {q}"
+        res = ref.grad(q) - ref.jac(q).T @ F
+        assert float(np.abs(res[~at_stop]).max(initial=0.0)) / T <= TOL, "the free joints are not balanced"
+        c = -np.sign(q[at_stop]) * res[at_stop]
+        assert np.all(c >= -TOL * T) and np.allclose(c, contact[at_stop], rtol=1e-6, atol=TOL * T)
+        off = float(np.abs(ref.tip(q) - (tip if target is None else np.asarray(target, float))).max())
+        assert off <= TOL * L and abs(ref.energy(q) - energy) <= 1e-9 * max(T, abs(energy))
+        return
+    assert not np.any(contact), "contact torques without a joint on its stop"
+    assert np.all(np.abs(q) < ref.limits), f"outside the physical range: {q} vs {ref.limits}"
     r = float(np.abs(ref.grad(q) - ref.jac(q).T @ F).max()) / T
     assert r <= TOL, f"grad E - J^T F = {r:.3g} (relative to k c^2 = {T:.3g})"
     assert float(np.abs(ref.tip(q) - tip).max()) <= TOL * L, "reported tip is not the tip of q"

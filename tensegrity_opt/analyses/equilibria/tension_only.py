@@ -113,7 +113,7 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
             raise UnreachableTargetError(
                 f"the target for dx={dx:g}, dy={dy:g} lies within the chain's length but outside the workspace of the "
                 f"closed joint range |q| <= pi - 2 beta: IPOPT found it infeasible from all {len(starts)} starts",
-                field="dx")
+                field="dx", status=met)
         raise NoEquilibriumError(f"no stable equilibrium found from {len(starts)} start(s) of the tension-only search "
                                  f"(IPOPT: {met})", status="no_stable_equilibrium")
     return best
