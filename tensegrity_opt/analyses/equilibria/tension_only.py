@@ -16,7 +16,7 @@ constraint in the closed joint range is found by IPOPT on the smooth slack probl
    fixed (a stop with a positive contact torque is a constraint: moving off it costs first-order energy), Morse
    index 0 with every eigenvalue above the tolerance.
 
-The starts: ``q0``, the same chain's least-energy equilibrium under the linear law where the caller has it, and the
+The starts: ``q0`` and the
 ``STARTS`` lowest-energy distinct configurations of a ranked pool: ``SAMPLE_PER_JOINT * n`` seeded random
 configurations of the range (a quarter of them with one joint at a stop, a quarter with two) projected onto the tip
 constraint (:func:`~.seeds.project_to_target`, kinematics only), and for ``n <= RIGID_MAX`` the rigid configurations
@@ -49,7 +49,7 @@ from .seeds import project_to_target
 
 __all__ = ["least_energy_slack", "all_equilibria_slack", "STARTS", "STOP_TOL", "SEARCH_PER_JOINT", "STOP_STARTS"]
 
-#: IPOPT starts of the search taken from the ranked sample (besides q0 and the linear law's answer).
+#: IPOPT starts of the search taken from the ranked sample (besides q0).
 STARTS = 6
 #: Random configurations per joint of the ranked sample.
 SAMPLE_PER_JOINT = 256
@@ -79,13 +79,12 @@ EIG_TOL = 1e-9
 
 
 def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray, *, q0=None,
-                       local: bool = False, linear_start: np.ndarray | None = None) -> Equilibrium:
+                       local: bool = False) -> Equilibrium:
     """The least-energy stable equilibrium of ``m`` (any spring laws) with the tip on ``target``, in the closed joint
-    range (module docstring). ``local``: only the solve from ``q0``; ``linear_start``: the same chain's least-energy
-    configuration under the linear law (a start)."""
+    range (module docstring). ``local``: only the solve from ``q0``."""
     nlp = slack_nlp(m.n)
     p, bounds = nlp.parameters(m, target), nlp.bounds(m)
-    starts = [np.asarray(q0, float)] if local else _starts(m, target, q0, linear_start)
+    starts = [np.asarray(q0, float)] if local else _starts(m, target, q0)
     found: list[Equilibrium] = []
     statuses: dict[str, int] = {}
     refused: UnsupportedError | None = None
@@ -131,11 +130,9 @@ def _least(found: list[Equilibrium], q0) -> Equilibrium | None:
     return max(tied, key=lambda e: (next((float(np.sign(v)) for v in e.q if abs(v) > 1e-9), 0.0), -e.energy))
 
 
-def _starts(m: Manipulator, target: np.ndarray, q0, linear_start) -> list[np.ndarray]:
+def _starts(m: Manipulator, target: np.ndarray, q0) -> list[np.ndarray]:
     n, lim = m.n, m.joint_limits
     starts = [] if q0 is None else [np.asarray(q0, float)]
-    if linear_start is not None:
-        starts.append(np.asarray(linear_start, float))
     rng = np.random.default_rng(20261207 + n)
     Q = rng.uniform(-0.98, 0.98, size=(SAMPLE_PER_JOINT * n, n)) * lim
     k = Q.shape[0] // 4                         # a quarter with one joint at (just inside) a stop, ...
