@@ -24,7 +24,7 @@ import numpy as np
 from ..errors import InvalidParameterError, UnsupportedError
 from .springs import spring_law
 
-__all__ = ["Segment", "clean_coefficients", "CLEAN_TOL", "MERGE_TOL"]
+__all__ = ["Segment", "clean_coefficients", "torque_coefficients", "CLEAN_TOL", "MERGE_TOL"]
 
 #: Polynomial coefficients smaller than this relative to the largest one are zero (:func:`clean_coefficients`).
 CLEAN_TOL = 1e-14
@@ -243,15 +243,7 @@ class Segment:
             raise UnsupportedError("the torque polynomial (and the unloaded critical angles built on it) holds for "
                                    "the linear spring law only; this segment's spring is 'tension_only'",
                                    field="spring", spring="tension_only")
-        aj, bj, k1, k2, L10, L20 = self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0
-        A = -2.0 * aj * bj * k1 + 2.0 * aj * bj * k2
-        B = 2.0 * aj * bj * k1 - 2.0 * aj * bj * k2
-        C = (2.0 * aj * aj - 2.0 * bj * bj) * (k1 + k2)
-        D = k1 * L10 * aj - k2 * L20 * aj
-        Es = k1 * L10 * bj + k2 * L20 * bj
-        return {2: complex(A / 4 - B / 4 - 1j * C / 4), 0: complex(A / 2 + B / 2),
-                -2: complex(A / 4 - B / 4 + 1j * C / 4), 1: complex(D / 2 - 1j * Es / 2),
-                -1: complex(D / 2 + 1j * Es / 2)}
+        return torque_coefficients(self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0)
 
     def critical_points(self) -> np.ndarray:
         """Every angle inside the open range where the unloaded torque vanishes (``E'(q) = 0``), ascending
@@ -367,6 +359,20 @@ def _merged(roots: list[float], tol: float = 1e-9) -> list[float]:
         if not out or r - out[-1] > tol:
             out.append(r)
     return out
+
+
+def torque_coefficients(a: float, b: float, k1: float, k2: float, L10: float, L20: float) -> dict[int, complex]:
+    """The linear law's ``E'(q)`` of a segment as a Laurent polynomial in ``z = exp(i q/2)`` (powers -2..2): see
+    :meth:`Segment.torque_polynomial`. Linear in ``(k1, k2)``: ``k_i = 0`` is the segment with spring ``i`` slack
+    (the torque of one taut/slack pattern of the tension-only law)."""
+    A = -2.0 * a * b * k1 + 2.0 * a * b * k2
+    B = 2.0 * a * b * k1 - 2.0 * a * b * k2
+    C = (2.0 * a * a - 2.0 * b * b) * (k1 + k2)
+    D = k1 * L10 * a - k2 * L20 * a
+    Es = k1 * L10 * b + k2 * L20 * b
+    return {2: complex(A / 4 - B / 4 - 1j * C / 4), 0: complex(A / 2 + B / 2),
+            -2: complex(A / 4 - B / 4 + 1j * C / 4), 1: complex(D / 2 - 1j * Es / 2),
+            -1: complex(D / 2 + 1j * Es / 2)}
 
 
 def clean_coefficients(poly: dict, tol: float = CLEAN_TOL) -> dict:

@@ -107,7 +107,8 @@ from .homotopy_tracker import FAILED, FINITE, INFINITE, track_batch
 __all__ = ["ENGINE", "KINDS", "StartSolutions", "displacement_parameters", "displacement_family",
            "force_parameters", "force_family", "start_file", "load_start", "compute_start", "precompute",
            "track", "solve_parameter_homotopy", "solve_force_parameter_homotopy", "TORQUE_POWERS", "structure_of",
-           "GENERAL", "SYMMETRIC", "TRACKERS", "tracker_name", "retarget_start", "unit_chain"]
+           "GENERAL", "SYMMETRIC", "TRACKERS", "tracker_name", "retarget_start", "unit_chain", "link_family",
+           "link_structure", "solve_link_homotopy"]
 
 #: The torque powers of a segment's parameters (:meth:`~tensegrity_opt.model.segment.Segment.torque_polynomial`
 #: without its identically-zero ``z^0``).
@@ -208,18 +209,35 @@ def displacement_family(n: int, p) -> list[dict]:
     ``z_1..z_n, g, h``) at the parameters ``p`` (:func:`displacement_parameters`), linear in ``p``: the system
     of :func:`~.homotopy.polynomial_system` for real parameters."""
     p = np.asarray(p, dtype=complex)
-    nv = n + 2
     tq, l, T, Tc = p[:4 * n].reshape(n, 4), p[4 * n:5 * n], p[5 * n], p[5 * n + 1]
+    return link_family(tq, l, l, T, Tc)
+
+
+def link_family(torques, links, links_conj, T: complex, Tc: complex) -> list[dict]:
+    """The displacement system of a chain of ``n = len(links)`` joints whose links are *complex* vectors:
+    link ``j`` is ``mu_j e^{i phi_j}`` in the tip equation and ``mu'_j e^{-i phi_j}`` in its conjugate
+    (``mu' = conj(mu)`` on real chains; ``mu = mu' = l_j`` is :func:`displacement_family`), and the moment of the
+    tip force about it is ``(mu'_j e^{-i phi_j} g - mu_j e^{i phi_j} h) / (2i)``. ``torques`` (n, 4): each joint's
+    torque coefficients (powers :data:`TORQUE_POWERS`; exact zeros leave their monomials out).
+
+    This is the system of a chain with some joints held at fixed angles (on their stops): the links between two
+    free joints fold into one rigid complex link, the links before the first free joint into the target ``T``
+    (see :mod:`tensegrity_opt.analyses.equilibria.tension_only_homotopy`). Its monomials are those of the
+    ``n``-joint family, and the generic start roots of that family (all ``N`` of them regular) are a generic start
+    for this larger one (untied ``mu``, ``mu'``): its root count is at most the mixed volume ``N`` and is reached."""
+    tq = np.asarray(torques, dtype=complex)
+    n = tq.shape[0]
+    nv = n + 2
     zero = (0,) * nv
-    tip1: dict = {zero: -T}
-    tip2: dict = {zero: -Tc}
+    tip1: dict = {zero: -complex(T)}
+    tip2: dict = {zero: -complex(Tc)}
     for j in range(n):
-        tip1[_direction(nv, j, 1)] = complex(l[j])
-        tip2[_direction(nv, j, -1)] = complex(l[j])
+        tip1[_direction(nv, j, 1)] = complex(links[j])
+        tip2[_direction(nv, j, -1)] = complex(links_conj[j])
     rows = _torque_rows(n, nv, tq)
     for j in range(n):
-        lj = complex(l[j])
-        for e, c in ((_direction(nv, j, -1, n), -lj / 2j), (_direction(nv, j, 1, n + 1), lj / 2j)):
+        for e, c in ((_direction(nv, j, -1, n), -complex(links_conj[j]) / 2j),
+                     (_direction(nv, j, 1, n + 1), complex(links[j]) / 2j)):
             rows[j][e] = rows[j].get(e, 0.0) + c
     return [tip1, tip2] + rows
 
@@ -820,3 +838,34 @@ def solve_force_parameter_homotopy(m: Manipulator, force, *, threads: int | None
     return _parameter_solve("force", m.n, structure_of(u), _force_laurent_terms(u, fu),
                             lambda left: solve_force_homotopy(u, fu, threads=threads, timeout=left),
                             threads=threads, timeout=timeout, attempts=attempts)
+
+
+def link_structure(torques) -> str:
+    """:func:`structure_of` for :func:`link_family`'s ``torques`` (n, 4): ``s`` for a joint without ``z^+-2``
+    terms (relative to its largest coefficient, below ``CLEAN_TOL``), else ``g``."""
+    from ..model.segment import CLEAN_TOL
+
+    tq = np.abs(np.asarray(torques, dtype=complex))
+    big = np.maximum(tq.max(axis=1), 1e-300)
+    flags = "".join("g" if max(row[0], row[3]) > CLEAN_TOL * b else "s" for row, b in zip(tq, big))
+    return GENERAL if set(flags) == {"g"} else SYMMETRIC if set(flags) == {"s"} else flags
+
+
+def solve_link_homotopy(torques, links, links_conj, T: complex, Tc: complex, *, threads: int | None = None,
+                        timeout: float | None = None, attempts: int = ATTEMPTS) -> HomotopySolve:
+    """Every isolated root of :func:`link_family` (unknowns ``z_1..z_n, g, h``) by the parameter homotopy from the
+    cached start roots of the ``n``-joint displacement family (structure :func:`link_structure`), else the polyhedral
+    solve of the same system; as :func:`solve_parameter_homotopy` but in the caller's units (scale the chain first:
+    :func:`unit_chain`)."""
+    tq = np.asarray(torques, dtype=complex)
+    from ..model.segment import CLEAN_TOL
+
+    big = np.abs(tq).max(axis=1, keepdims=True)
+    tq = np.where(np.abs(tq) > CLEAN_TOL * big, tq, 0.0)
+    n = tq.shape[0]
+    system = link_family(tq, links, links_conj, T, Tc)
+    names = _names(n)
+    return _parameter_solve("displacement", n, link_structure(tq), system,
+                            lambda left: _solve(_system_text(system, names), names, n, threads, left, attempts),
+                            threads=threads, timeout=timeout, attempts=attempts)
+

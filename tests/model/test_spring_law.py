@@ -17,6 +17,7 @@ import reference_tension_only as ref
 
 import tensegrity_opt as to
 from tensegrity_opt.errors import InvalidParameterError, UnsupportedError
+from tensegrity_opt.numerics.homotopy import homotopy_available
 
 
 # ------------------------------------------------------------------------------------------- random chains
@@ -210,10 +211,8 @@ def _calls(m, lin_eq, P):
 
     return {
         "solve_equilibrium_under_force": lambda: to.solve_equilibrium_under_force(m, -0.1, 0.0),
-        "find_equilibria (homotopy)": lambda: to.find_equilibria(m, 0.3, method="homotopy"),
         "find_equilibria_under_force": lambda: to.find_equilibria_under_force(m, -0.1, 0.0),
         "rest_configuration": lambda: to.rest_configuration(m),
-        "energy_lower_bound": lambda: to.energy_lower_bound(m, 0.3),
         "solve_equilibria_batch": lambda: to.solve_equilibria_batch(m, [0.1, 0.2]),
         "Tracker": lambda: to.Tracker(m),
         "force_deflection": lambda: to.force_deflection(m, [0.1, 0.2]),
@@ -236,8 +235,6 @@ def _calls(m, lin_eq, P):
         "estimate_tip_force": lambda: to.estimate_tip_force(m, lin_eq.q),
         "critical_load_sensitivity": lambda: to.critical_load_sensitivity(m),
         "equilibrium_sensitivity": lambda: to.equilibrium_sensitivity(m, 0.3),
-        "solve_equilibrium (certify)": lambda: to.solve_equilibrium(m, 0.3, certify=True),
-        "solve_equilibrium (homotopy)": lambda: to.solve_equilibrium(m, 0.3, method="homotopy"),
     }
 
 
@@ -251,8 +248,7 @@ def test_every_analysis_honours_the_tension_only_law_or_refuses_it_by_name():
     for name, call in _calls(m, lin_eq, P).items():
         with pytest.raises(UnsupportedError) as e:
             call()
-        want = {"solve_equilibrium (certify)": "certify", "solve_equilibrium (homotopy)": "method",
-                "find_equilibria (homotopy)": "method", "preloads_for_pose": "taut"}
+        want = {"preloads_for_pose": "taut"}
         assert e.value.field == want.get(name, "segments[1].spring"), name
     # honoured: the least energy, buckling of springs taut when straight, the landscape, the spring state
     eq = to.solve_equilibrium(m, 0.3)
@@ -322,7 +318,7 @@ def test_the_cartesian_stiffness_of_a_tension_only_equilibrium_on_a_stop_is_the_
 
 
 # ------------------------------------------------------------------------------------------- every equilibrium
-def _same_sets(m, dx, dy):
+def _same_sets(m, dx, dy, method="search", status="searched"):
     """find_equilibria of a tension-only chain against the independent enumeration (the constraint manifold on dense
     grids, every stop set, both elbows: ``tests/support/reference_equilibria_tension.py``): the same equilibria, the
     same Morse indices, the same stops. Configurations with more than n - 2 joints on stops (met only by coincidence;
@@ -330,8 +326,8 @@ def _same_sets(m, dx, dy):
     import reference_equilibria_tension as reqs
 
     want = [r for r in reqs.equilibria(ref.segs_of(m), dx, dy) if np.abs(r.stops).sum() <= m.n - 2]
-    got = to.find_equilibria(m, dx, dy)
-    assert got.status == "searched" and len(got) == len(want), (len(got), len(want))
+    got = to.find_equilibria(m, dx, dy, method=method)
+    assert got.status == status and len(got) == len(want), (got.status, len(got), len(want), got.message)
     for e in got:
         d = [float(np.abs(e.q - r.q).max()) for r in want]
         r = want[int(np.argmin(d))]
@@ -359,6 +355,102 @@ def test_every_equilibrium_of_random_tension_only_chains_of_three(family):
 def test_every_equilibrium_of_the_paper_chain_under_the_tension_only_law(dx):
     """Up to 34 equilibria (22 on a stop at dx = 2), each with its Morse index."""
     _same_sets(to.Manipulator.uniform(4, spring="tension_only"), dx, 0.0)
+
+
+# ------------------------------------------------------------------------------------------- certified sets
+needs_phc = pytest.mark.skipif(not homotopy_available(), reason="PHCpack's phc is not installed")
+
+
+@needs_phc
+@pytest.mark.slow
+@pytest.mark.parametrize("family", FAMILIES)
+def test_the_certified_set_of_random_tension_only_chains_of_three_is_the_reference(family):
+    """One homotopy per taut/slack/stop pattern: the same equilibria, Morse indices, stops and contact torques as
+    the independent enumeration, certified (dy != 0: a mirror-symmetric chain at dy = 0 has double roots that the
+    linear law's homotopy leaves uncertified too)."""
+    m, dx, dy = _chain(family, np.random.default_rng(7100), "tension_only", n=3)
+    got = _same_sets(m, 2.0 * dx, 2.0 * dy + 0.3, "homotopy", "certified")
+    assert got.method == "homotopy" and got.certificate is None and "patterns" in got.message
+
+
+@needs_phc
+@pytest.mark.slow
+def test_the_certified_set_of_the_paper_chain_of_three_rests_on_stops():
+    got = _same_sets(to.Manipulator.uniform(3, spring="tension_only"), 1.0, 0.5, "homotopy", "certified")
+    assert any(e.at_stop.any() for e in got) and any(e.morse_index >= 1 for e in got)
+
+
+@needs_phc
+def test_a_mixed_chain_is_certified_with_the_linear_segments_stops():
+    """A linear segment between tension-only ones: one free option over its whole range, and its two stops."""
+    m = to.Manipulator([to.Segment(1, 1, spring="tension_only"), to.Segment(0.9, 1.1, k=1.3),
+                        to.Segment(1.1, 1.0, L0=1.2, spring="tension_only")])
+    _same_sets(m, 2.2, 0.4, "homotopy", "certified")
+
+
+@needs_phc
+def test_the_pattern_options_and_their_signs_agree_with_the_reference_model():
+    """Each joint's options: the springs' states inside each interval are the reference model's, the intervals
+    tile the closed range, and where an option gives the joint's moment a sign the reference torque has it."""
+    from tensegrity_opt.analyses.equilibria.tension_only_homotopy import joint_options
+
+    rng = np.random.default_rng(3)
+    for family in FAMILIES:
+        m, _, _ = _chain(family, rng, "tension_only", n=2)
+        segs = ref.segs_of(m)
+        for j, seg in enumerate(m.segments):
+            opts = joint_options(seg)
+            free = [o for o in opts if o.side == 0]
+            iv = np.sort(np.vstack([o.intervals for o in free]), axis=0)
+            lim = seg.joint_limit
+            assert iv[0, 0] == pytest.approx(-lim) and iv[-1, 1] == pytest.approx(lim)
+            assert np.allclose(iv[1:, 0], iv[:-1, 1])
+            for o in free:
+                for lo, hi in o.intervals:
+                    for q in np.linspace(lo, hi, 7)[1:-1]:
+                        qq = np.zeros(m.n)
+                        qq[j] = q
+                        L = ref.lengths(segs, qq)[j]
+                        L0 = np.array([seg.L1_0, seg.L2_0])
+                        assert tuple(L > L0) == o.taut
+                        if o.sign:
+                            dE = -ref.torques(segs, qq)[j]
+                            assert o.sign * dE >= -1e-12
+
+
+@needs_phc
+@pytest.mark.slow
+@pytest.mark.parametrize("family", FAMILIES)
+def test_certify_proves_the_least_energy_of_a_tension_only_chain(family):
+    """certify=True: the rigorous lower bound (each spring's curvature bounded on its taut and slack sides) or, where
+    it stays open (n <= 4), the patterns' certified set; the energy is the independent brute force's and the bound
+    never exceeds it."""
+    m, dx, dy = _chain(family, np.random.default_rng(8100), "tension_only", n=3)
+    dx, dy = 1.5 * dx, dy + 0.1
+    best = ref.least_energy(ref.segs_of(m), dx, dy)
+    eq = to.solve_equilibrium(m, dx, dy, certify=True)
+    assert eq.status == "certified", eq.message
+    assert eq.energy == pytest.approx(best.energy, rel=1e-9, abs=1e-12)
+    b = to.energy_lower_bound(m, dx, dy, eq.q, force=eq.force)
+    assert b.bound <= best.energy + 1e-12 * abs(best.energy)
+    h = to.solve_equilibrium(m, dx, dy, method="homotopy")
+    assert h.status == "certified" and h.energy == pytest.approx(best.energy, rel=1e-9, abs=1e-12)
+
+
+@needs_phc
+@pytest.mark.slow
+@pytest.mark.parametrize("dx, dy", [(1.0, 0.4), (3.0, 0.3)])
+def test_the_certified_set_of_the_paper_chain_of_four(dx, dy):
+    got = _same_sets(to.Manipulator.uniform(4, spring="tension_only"), dx, dy, "homotopy", "certified")
+    assert len(got) >= 16
+
+
+@needs_phc
+@pytest.mark.slow
+@pytest.mark.parametrize("family", FAMILIES)
+def test_the_certified_set_of_random_tension_only_chains_of_four(family):
+    m, dx, dy = _chain(family, np.random.default_rng(7400), "tension_only", n=4)
+    _same_sets(m, 2.0 * dx, 2.0 * dy + 0.2, "homotopy", "certified")
 
 
 def test_preloads_for_a_pose_of_a_tension_only_chain_keep_every_spring_taut():

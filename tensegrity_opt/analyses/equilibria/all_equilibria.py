@@ -44,7 +44,6 @@ from ...errors import (
     SolverError,
     StraightNotEquilibriumError,
     UnreachableTargetError,
-    UnsupportedError,
 )
 from ...model.manipulator import Manipulator
 from ...numerics import KERNEL_MAX, chain_solver, distinct, distinct_indices
@@ -99,6 +98,9 @@ TIP_TOL = 1e-6
 #: n = 2..6; the parameter homotopy with its batched tracker takes ~0.25 s for n = 4, ~2 s for n = 5, ~20 s for
 #: n = 6 on 2 cores).
 HOMOTOPY_MAX_N = 6
+#: Longest chain with tension-only springs ``method="homotopy"`` takes (a homotopy per taut/slack/stop pattern
+#: that may reach the target: n = 4 ~10 s on 2 cores, n = 5 minutes).
+SLACK_HOMOTOPY_MAX_N = 5
 
 
 @dataclass(frozen=True)
@@ -139,7 +141,9 @@ class EquilibriumSet(Outcome, Sequence):
         "certified": "the polynomial homotopy proved the set complete: every path ended, every real root inside the "
                      "range polished onto an equilibrium, no two distinct roots merged, and every equilibrium "
                      "proven by Krawczyk's test in ball arithmetic (the only one in its box, real, inside the "
-                     "range, the boxes pairwise disjoint: certificate)",
+                     "range, the boxes pairwise disjoint: certificate); for tension-only springs, one homotopy per "
+                     "taut/slack/stop pattern that may reach the target, each complete, without interval boxes "
+                     "(certificate null)",
         "uncertified": "the polynomial homotopy ran but did not prove the set complete (a path failed, its report "
                        "did not check out, a real root did not polish, or two distinct roots lay closer than the "
                        "merge tolerance, or an equilibrium's interval proof failed: the message says which); every "
@@ -253,7 +257,9 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         ``"homotopy"``: PHCpack's parameter homotopy on the polynomial KKT system (8, 96, 832, 6272, 43648
         paths for n = 2..6 from cached start solutions; the polyhedral solve when paths fail), certified
         (``n <= 6``; ~1.5 s of CPU for n = 4, ~20 s for n = 5, ~300 s for n = 6, on 2 cores about 0.6 of that
-        in wall time on a quiet machine; pass ``timeout``).
+        in wall time on a quiet machine; pass ``timeout``). A chain with tension-only springs (``n <= 5``): one
+        homotopy per taut/slack/stop pattern that may reach the target, stops included (n = 3 ~1 s, n = 4 ~10 s;
+        :mod:`.tension_only_homotopy`).
     n_random : int
         Random Newton starts (fixed seed: the answer is reproducible). Search only.
     amplitudes : sequence of float
@@ -416,13 +422,22 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
 
 
 def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: float | None) -> EquilibriumSet:
-    """Every equilibrium of a chain with tension-only springs, in the closed joint range (:mod:`.tension_only`)."""
+    """Every equilibrium of a chain with tension-only springs, in the closed joint range: the search
+    (:mod:`.tension_only`) or the homotopy of every taut/slack/stop pattern (:mod:`.tension_only_homotopy`)."""
+    if method == "homotopy":
+        from .tension_only_homotopy import certified_equilibria_slack
+
+        if m.n > SLACK_HOMOTOPY_MAX_N:
+            raise InvalidParameterError(f"method='homotopy' handles chains of tension-only springs of up to "
+                                        f"{SLACK_HOMOTOPY_MAX_N} segments (one homotopy per taut/slack/stop pattern: "
+                                        f"up to 5^n of them), got n = {m.n}", field="method", spring="tension_only")
+        with time_limit(timeout):
+            eqs, report = certified_equilibria_slack(m, target, timeout=timeout)
+        return EquilibriumSet(eqs, method="homotopy", status="certified" if report["certified"] else "uncertified",
+                              message=report["message"], paths=report["paths"], failed_paths=report["failed_paths"],
+                              seconds=report["seconds"])
     from .tension_only import all_equilibria_slack
 
-    if method != "search":
-        raise UnsupportedError("the homotopy's polynomial systems model the linear spring law; a chain with "
-                               "tension-only springs is searched (method 'search': complete in practice, not "
-                               "certified)", field="method", spring="tension_only")
     with time_limit(timeout):
         eqs = all_equilibria_slack(m, target)
     on_stop = sum(bool(e.at_stop.any()) for e in eqs)

@@ -147,13 +147,10 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
                         certify: bool) -> Equilibrium:
     """:func:`solve_equilibrium` of a chain with tension-only springs (:mod:`.tension_only`)."""
 
-    if method not in ("auto", "ipopt"):
+    if method not in ("auto", "ipopt", "homotopy"):
         raise UnsupportedError(f"method {method!r} models the linear spring law; a chain with tension-only springs "
-                               "is solved by its own search (method 'auto')", field="method", spring="tension_only")
-    if certify:
-        raise UnsupportedError("certify=True proves the least energy under the linear spring law only; the "
-                               "tension-only search is measured, not certified", field="certify",
-                               spring="tension_only")
+                               "is solved by its own search (method 'auto') or its patterns' homotopy (method "
+                               "'homotopy')", field="method", spring="tension_only")
     target = m.check_reachable(dx, dy)
     if q0 is not None:                          # the closed range: a start may rest on a stop
         q0 = np.asarray(q0, dtype=float)
@@ -163,7 +160,43 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
             raise InvalidParameterError("q0 lies outside the closed joint range |q_i| <= pi - 2 beta_i", field="q0")
     if local and q0 is None:
         raise InvalidParameterError("local=True needs q0", field="q0")
-    return least_energy_slack(m, dx, dy, target, q0=q0, local=local)
+    if method == "homotopy" and not local:
+        return _least_certified(m, dx, dy, q0)
+    best = least_energy_slack(m, dx, dy, target, q0=q0, local=local)
+    if certify and not local:
+        return _certify_slack(m, dx, dy, target, best)
+    return best
+
+
+#: Chains with tension-only springs of at most this many segments whose lower bound stays open are certified by their
+#: patterns' homotopy under ``certify=True`` (n = 4 ~10 s on 2 cores).
+CERTIFY_SET_MAX_N = 4
+
+
+def _certify_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray, best: Equilibrium) -> Equilibrium:
+    """``certify=True`` for a chain with tension-only springs: the rigorous lower bound of every configuration of the
+    closed range (:func:`~.lower_bound.energy_lower_bound`, each spring's curvature bounded on its taut and slack
+    sides); where it stays open and ``n <= CERTIFY_SET_MAX_N`` (PHCpack present), the least-energy stable member of
+    the patterns' certified set (:mod:`.tension_only_homotopy`)."""
+    from ...numerics.homotopy import homotopy_available
+
+    cert = energy_lower_bound(m, dx, dy, best.q, force=best.force)
+    if cert.improved:                           # a lower configuration: polish it under the springs' laws
+        try:
+            cand = least_energy_slack(m, dx, dy, target, q0=np.clip(cert.q, -m.joint_limits, m.joint_limits),
+                                      local=True)
+            if cand.stable and cand.energy < best.energy:
+                best = cand
+        except (NoEquilibriumError, UnreachableTargetError, UnsupportedError):
+            pass
+    if cert.certified and cert.energy >= best.energy - cert.tolerance:
+        return replace(best, certificate=cert, status="certified")
+    if m.n <= CERTIFY_SET_MAX_N and homotopy_available():
+        least = _least_certified(m, dx, dy, best.q)
+        if least.status == "certified":
+            return least if least.energy < best.energy - cert.tolerance else \
+                replace(best, status="certified", solver=least.solver, certificate=None)
+    return replace(best, certificate=cert)
 
 
 def _solve_equilibrium(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str, n_random: int | None,

@@ -54,7 +54,6 @@ import numpy as np
 
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
-from ...model.springs import linear_only
 from ...outcome import Outcome
 from ...serialize import number
 from .seeds import project_to_target
@@ -174,29 +173,68 @@ def bound_tolerance(m: Manipulator, energy: float) -> float:
 
 # ----------------------------------------------------------------------------- one segment, vectorised
 class _Seg:
-    """A segment's energy and derivatives, vectorised over angles, with analytic bounds of ``|E''|, |E'''|``."""
+    """A segment's energy and derivatives, vectorised over angles, with analytic bounds of ``|E''|, |E'''|``.
+
+    Under the tension-only law (``tension``) each spring's terms are its linear ones where it is taut
+    (``r = L - L0 > 0``) and zero where it is slack: ``E`` is C^1 and ``E''`` jumps where a spring goes slack. The
+    curvature bounds then take each spring apart (:meth:`cell_curvature`): its linear ``E''`` (Lipschitz ``M3_i``)
+    where the cell is taut throughout, 0 where slack throughout, the least of the two where it changes state."""
 
     def __init__(self, seg) -> None:
         self.c, self.beta = seg.c, seg.beta
         self.k1, self.k2, self.L10, self.L20 = seg.k1, seg.k2, seg.L1_0, seg.L2_0
         self.lim = seg.joint_limit
+        self.tension = bool(getattr(seg, "tension_only", False))
         c = self.c
         # |L'| <= c, |L''| <= c/2, |L'''| <= c/4, |L - L0| <= 2c + L0  (L = 2c cos(beta +- q/2))
         self.M2 = sum(k * (c * c + (2 * c + L0) * c / 2) for k, L0 in ((self.k1, self.L10), (self.k2, self.L20)))
-        self.M3 = sum(k * (1.5 * c * c + (2 * c + L0) * c / 4) for k, L0 in ((self.k1, self.L10), (self.k2, self.L20)))
+        self.M3s = tuple(k * (1.5 * c * c + (2 * c + L0) * c / 4)
+                         for k, L0 in ((self.k1, self.L10), (self.k2, self.L20)))
+        self.M3 = sum(self.M3s)
 
-    def derivs(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``E, E', E''`` at ``q``."""
+    def _springs(self, q: np.ndarray):
+        """Per spring: ``r = L - L0``, ``L'``, ``L''`` at ``q``."""
         c, b = self.c, self.beta
         a1, a2 = b + q / 2.0, b - q / 2.0
-        L1, L2 = 2 * c * np.cos(a1), 2 * c * np.cos(a2)
-        d1, d2 = -c * np.sin(a1), c * np.sin(a2)                  # dL/dq
-        s1, s2 = -0.5 * c * np.cos(a1), -0.5 * c * np.cos(a2)     # d2L/dq2
-        r1, r2 = L1 - self.L10, L2 - self.L20
-        E = 0.5 * self.k1 * r1 * r1 + 0.5 * self.k2 * r2 * r2
-        E1 = self.k1 * r1 * d1 + self.k2 * r2 * d2
-        E2 = self.k1 * (d1 * d1 + r1 * s1) + self.k2 * (d2 * d2 + r2 * s2)
+        return ((2 * c * np.cos(a1) - self.L10, -c * np.sin(a1), -0.5 * c * np.cos(a1)),
+                (2 * c * np.cos(a2) - self.L20, c * np.sin(a2), -0.5 * c * np.cos(a2)))
+
+    def derivs(self, q: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``E, E', E''`` at ``q`` (the one-sided ``E''`` of the slack side at a spring's rest length)."""
+        (r1, d1, s1), (r2, d2, s2) = self._springs(q)
+        if not self.tension:
+            E = 0.5 * self.k1 * r1 * r1 + 0.5 * self.k2 * r2 * r2
+            E1 = self.k1 * r1 * d1 + self.k2 * r2 * d2
+            E2 = self.k1 * (d1 * d1 + r1 * s1) + self.k2 * (d2 * d2 + r2 * s2)
+            return E, E1, E2
+        E = E1 = E2 = 0.0
+        for k, r, d, s in ((self.k1, r1, d1, s1), (self.k2, r2, d2, s2)):
+            t = r > 0.0
+            rp = np.where(t, r, 0.0)
+            E = E + 0.5 * k * rp * rp
+            E1 = E1 + k * rp * d
+            E2 = E2 + np.where(t, k * (d * d + r * s), 0.0)
         return E, E1, E2
+
+    def cell_curvature(self, mid: np.ndarray, half: np.ndarray) -> np.ndarray:
+        """A lower bound of ``E''`` over each cell ``[mid - half, mid + half]`` (elementwise), before the rounding
+        margin: ``E''(mid) - M3 half`` under the linear law; under the tension-only law per spring as in the class
+        docstring (``L`` is concave in ``q`` over the closed range, so ``r``'s least value over a cell is at an end,
+        its largest at an end or at the top ``q = -+2 beta``)."""
+        if not self.tension:
+            return self.derivs(mid)[2] - self.M3 * half
+        out = 0.0
+        lo, hi = mid - half, mid + half
+        for i, (k, M3, L0) in enumerate(zip((self.k1, self.k2), self.M3s, (self.L10, self.L20))):
+            r, d, s = self._springs(mid)[i]
+            lin = k * (d * d + r * s) - M3 * half
+            rlo, rhi = self._springs(lo)[i][0], self._springs(hi)[i][0]
+            top = -2.0 * self.beta if i == 0 else 2.0 * self.beta
+            rmax = np.where((lo < top) & (top < hi), 2 * self.c - L0, np.maximum(rlo, rhi))
+            slack_somewhere = np.minimum(rlo, rhi) <= 0.0
+            taut_somewhere = rmax > 0.0
+            out = out + np.where(~taut_somewhere, 0.0, np.where(slack_somewhere, np.minimum(lin, 0.0), lin))
+        return out
 
     def curvature_lower(self, lo: np.ndarray, hi: np.ndarray, parts: int = 4) -> np.ndarray:
         """A lower bound of ``E''`` over each ``[lo, hi]`` (``parts`` sub-intervals, Lipschitz ``M3``)."""
@@ -204,7 +242,7 @@ class _Seg:
         out = np.full(np.shape(lo), np.inf)
         for p in range(parts):
             mid = lo + (p + 0.5) * w
-            out = np.minimum(out, self.derivs(mid)[2] - self.M3 * 0.5 * w)
+            out = np.minimum(out, self.cell_curvature(mid, 0.5 * w))
         return out - ROUND_REL * self.M2
 
 
@@ -251,7 +289,7 @@ def _segment_pieces(S: _Seg, budget: float, grid: int):
     mid = 0.5 * (lo + hi)
     h2 = 0.5 * (hi - lo)
     E, E1, E2 = S.derivs(mid)
-    m = E2 - S.M3 * h2
+    m = S.cell_curvature(mid, h2)
     low, _ = _quad_min(E1, m, -h2, h2)
     cell = E + low - ROUND_REL * (abs(E) + S.M2 * (1 + S.lim ** 2))
     emin = float(cell.min())
@@ -350,8 +388,9 @@ class _Chain:
             E2m = np.empty_like(mids)
             for js in self.groups.values():
                 S = self.segs[js[0]]
-                Em[:, js], E1m[:, js], E2m[:, js] = S.derivs(mids[:, js])
-                E2m[:, js] -= S.M3 * 0.5 * h[:, js, None] + ROUND_REL * S.M2
+                Em[:, js], E1m[:, js], _ = S.derivs(mids[:, js])
+                half = np.broadcast_to(0.5 * h[:, js, None], mids[:, js].shape)
+                E2m[:, js] = S.cell_curvature(mids[:, js], half) - ROUND_REL * S.M2
             em = mids - C[:, :, None]
             hh = 0.5 * h[:, :, None]
             scale0 = np.abs(Em).max(axis=2).sum(axis=1) + self.M2.sum() * (1.0 + (rho * rho).sum(axis=1))
@@ -535,7 +574,6 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
     EnergyBound
         ``bound``, ``energy``, ``gap``, ``tolerance``, ``status`` (``"certified"`` or ``"open"``).
     """
-    linear_only(m, "energy_lower_bound")
     t0 = time.perf_counter()
     target = m.check_reachable(dx, dy)
     ch = _Chain(m, target)
