@@ -11,8 +11,9 @@ the paper's chain at dx = 2 and 3), deflected so that springs go slack or a join
 * the energies found: ours, SLSQP's best and the independent brute force's (``tests/support/reference_tension_only``:
   a dense grid over the closed range, polished), and whether ours is the least (within 1e-9 relative).
 
-A second table: every equilibrium (``find_equilibria``) of tension-only chains n = 3, 4 (the search: not certified)
-beside the linear law's search and certified homotopy on the same chain and target.
+A second table: every equilibrium (``find_equilibria``) of tension-only chains n = 3, 4, by the search (not
+certified) and by the patterns' homotopy (``method="homotopy"``: certified), beside the linear law's search and
+certified homotopy on the same chain and target.
 """
 
 from __future__ import annotations
@@ -101,22 +102,35 @@ def main(argv=None) -> int:
               f"{'yes' if least else 'NO'} | {int((eq.spring_states == 'slack').sum())} | "
               f"{int(eq.at_stop.sum())} |")
     print()
-    print("| every equilibrium | n | dx | tension-only search (median) | count (on a stop) | linear search (median) | "
-          "count | linear homotopy, certified (median) | count |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for n, dx in ((3, 1.5), (3, 2.0), (4, 1.0), (4, 2.0)):
-        m = to.Manipulator.uniform(n, spring="tension_only")
+    print("| every equilibrium | n | dx, dy | tension-only search (median) | count (on a stop) | tension-only "
+          "homotopy | count | status | patterns solved / all | linear search (median) | count | linear homotopy | "
+          "count | status |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    rng = np.random.default_rng(40)
+    cases = [("paper's segments", to.Manipulator.uniform(n, spring="tension_only"), dx, dy)
+             for n, dx, dy in ((3, 1.0, 0.5), (3, 2.0, 0.3), (4, 1.0, 0.4), (4, 3.0, 0.3))]
+    for n in (3, 4):
+        segs = [to.Segment(float(rng.uniform(0.6, 1.4)), float(rng.uniform(0.8, 1.2)),
+                           (float(rng.uniform(0.5, 2)), float(rng.uniform(0.5, 2))),
+                           (float(rng.uniform(0.8, 1.3)), float(rng.uniform(0.8, 1.3))), "tension_only")
+                 for _ in range(n)]
+        cases.append(("heterogeneous", to.Manipulator(segs), 0.45 * n, 0.2))
+    for label, m, dx, dy in cases:
         lin = m.with_spring("linear")
-        t_to, eqs = _median_time(lambda: to.find_equilibria(m, dx), reps)
-        t_lin, leqs = _median_time(lambda: to.find_equilibria(lin, dx), reps)
+        t_to, eqs = _median_time(lambda: to.find_equilibria(m, dx, dy), reps)
+        t_lin, leqs = _median_time(lambda: to.find_equilibria(lin, dx, dy), reps)
         try:
-            t_hom, heqs = _median_time(lambda: to.find_equilibria(lin, dx, method="homotopy"), 1)
-            hom = f"{t_hom * 1e3:.0f} ms | {len(heqs)}"
+            t_th, theqs = _median_time(lambda: to.find_equilibria(m, dx, dy, method="homotopy"), 1)
+            pats = theqs.message.split(" from ")[1].split(" taut")[0] + " / " + \
+                theqs.message.split("patterns of ")[1].split(" ")[0]
+            th = f"{t_th * 1e3:.0f} ms | {len(theqs)} | {theqs.status} | {pats}"
+            t_hom, heqs = _median_time(lambda: to.find_equilibria(lin, dx, dy, method="homotopy"), 1)
+            hom = f"{t_hom * 1e3:.0f} ms | {len(heqs)} | {heqs.status}"
         except to.HomotopyUnavailableError:
-            hom = "(no PHCpack) | -"
+            th, hom = "(no PHCpack) | - | - | -", "(no PHCpack) | - | -"
         on = sum(bool(e.at_stop.any()) for e in eqs)
-        print(f"| paper's segments | {n} | {dx:g} | {t_to * 1e3:.0f} ms | {len(eqs)} ({on}) | {t_lin * 1e3:.1f} ms | "
-              f"{len(leqs)} | {hom} |")
+        print(f"| {label} | {m.n} | {dx:g}, {dy:g} | {t_to * 1e3:.0f} ms | {len(eqs)} ({on}) | {th} | "
+              f"{t_lin * 1e3:.1f} ms | {len(leqs)} | {hom} |")
     return 0
 
 

@@ -134,8 +134,11 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     A chain with tension-only springs (``Segment(..., spring="tension_only")``) is solved by its own search
     (:mod:`~.tension_only`): the closed joint range, a joint may rest on its stop (``at_stop``,
     ``contact_torques``); IPOPT on the smooth slack problem from ``q0``, the linear law's answer, the stops and
-    random starts, each solution made exact by Newton and checked in numpy. It is measured, not certified:
-    ``method`` ``"auto"`` or ``"ipopt"`` only, ``certify=True`` refused (``field="certify"``).
+    random starts, each solution made exact by Newton and checked in numpy: measured. ``certify=True`` adds the
+    rigorous lower bound (each spring's curvature bounded on its taut and slack sides) and, where it stays open and
+    ``n <= 4``, the least-energy stable member of the set certified by one homotopy per taut/slack/stop pattern
+    (:mod:`~.tension_only_homotopy`); ``method="homotopy"`` answers from that set; other methods are refused
+    (``field="method"``).
     """
     if not m.linear_springs:
         return _solve_tension_only(m, dx, dy, q0=q0, local=local, method=method, certify=bool(certify))

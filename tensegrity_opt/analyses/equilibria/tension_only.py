@@ -22,8 +22,9 @@ configurations of the range (a quarter of them with one joint at a stop, a quart
 constraint (:func:`~.seeds.project_to_target`, kinematics only), and for ``n <= RIGID_MAX`` the rigid configurations
 (``n - 2`` joints on a stop, the two others solved for the tip), ranked by their energy under the springs' laws
 (numpy, all at once). The least energy of the stable equilibria found is returned. This is a *measured* global
-search, not a certified one: ``status`` is ``"converged"`` and ``certify=True`` (or ``method="homotopy"``) is refused
-for a tension-only chain. Measured against an independent brute force over the closed range (a dense grid, polished):
+search, not a certified one: ``status`` is ``"converged"``; ``certify=True`` adds the rigorous lower bound (and the
+patterns' certified set where it stays open, n <= 4) and ``method="homotopy"`` answers from that set
+(:mod:`.tension_only_homotopy`). Measured against an independent brute force over the closed range (a dense grid, polished):
 333 random chains of six families, n = 2..4, deflected up to 4x (130 with slack springs, 56 on a stop), every least
 energy found (``tests/model/test_spring_law.py``, ``benchmarks/spring_laws.py``).
 

@@ -50,10 +50,13 @@ import numpy as np
 
 from ...errors import (
     InvalidParameterError,
+    NoEquilibriumError,
     SolverError,
     StraightNotEquilibriumError,
     TensegrityError,
     TimeLimitError,
+    UnreachableTargetError,
+    UnsupportedError,
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, shape_labels
@@ -76,6 +79,10 @@ __all__ = ["Curve", "CurveEnd", "Jump", "force_deflection"]
 #: followed carry most equilibria along, the search only has to catch the new ones.
 BIRTH_PROJECTED = 50
 
+
+#: A tension-only curve's local continuation that moves a joint more than this (rad) from the previous point has left
+#: its branch (it ended there): a snap.
+CONTINUE_STEP = 0.5
 
 #: The kinds of :class:`Jump`, in the JSON form's ``kind``.
 JUMP_KINDS = ("buckling", "leave_straight", "snap", "switch")
@@ -459,11 +466,14 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         (``RuntimeError``) ``reference="rest"`` only: when the chain has no stable rest configuration
         (nothing to measure from). A point without a stable equilibrium ends the curve instead.
     """
-    linear_only(m, "force_deflection")
     if branch not in ("stable", "all"):
         raise InvalidParameterError(f"branch must be 'stable' or 'all', got {branch!r}", field="branch")
     if reference not in ("straight", "rest"):
         raise InvalidParameterError(f"reference must be 'straight' or 'rest', got {reference!r}", field="reference")
+    if not m.linear_springs:
+        if reference == "rest":
+            linear_only(m, "force_deflection (reference='rest')")
+        return _slack_curve(m, dx, dy, branch, np.zeros(2))
     if reference == "rest":
         return _from_rest(m, dx, dy, branch, recheck_every)
     return _curve(m, dx, dy, branch, recheck_every, np.zeros(2))
@@ -545,6 +555,65 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
         extra["branches"] = [_branch_curve(dxs[:end], dys[:end], br, m.springs) for br in branches
                              if br.valid[:end].any()]
     return replace(curve, **extra)
+
+
+def _slack_curve(m: Manipulator, dx, dy, branch: str, origin: np.ndarray) -> Curve:
+    """:func:`force_deflection` of a chain with tension-only springs: at every point the least-energy stable
+    equilibrium of the closed range (the global search of :mod:`~..equilibria.tension_only`, the previous point's
+    configuration one of its starts: the same definition as the linear law's curve), stops included. The branch
+    followed from the previous point is continued by a local solve from its configuration; where the selected one
+    differs, the jump is a ``"switch"`` when that continuation is still a stable equilibrium (of higher energy),
+    else a ``"snap"``. A point with no stable equilibrium (or a free joint left undetermined) ends the curve."""
+    from ..equilibria.tension_only import least_energy_slack
+
+    if branch != "stable":
+        raise UnsupportedError("branch='all' follows every branch by the linear law's compiled continuation; for a "
+                               "chain with tension-only springs the curve follows the least-energy stable one "
+                               "(branch='stable')", field="branch", spring="tension_only")
+    dxs, dys = _points(m, dx, dy)
+    npts = dxs.size
+    straight = (dxs == 0.0) & (dys == 0.0)
+    branches: list[BranchPoints] = []
+    sel = np.full(npts, -1, dtype=int)
+    end, ended = npts, None
+    scale = m.torque_scale
+    prev: BranchPoints | None = None
+    for j in range(npts):
+        check_time("the force-deflection curve")
+        if straight[j]:
+            prev = None
+            continue
+        target = m.target(dxs[j], dys[j])
+        q0 = prev.q[j - 1] if prev is not None else None
+        try:
+            g = least_energy_slack(m, float(dxs[j]), float(dys[j]), target, q0=q0)
+        except (NoEquilibriumError, UnreachableTargetError, UnsupportedError) as exc:
+            end = j
+            dxo, dyo = float(dxs[j] - origin[0]), float(dys[j] - origin[1])
+            ended = CurveEnd(dxo, dyo, "no_stable_equilibrium",
+                             f"No stable equilibrium at dx = {dxo:g}, dy = {dyo:g} under the springs' laws: "
+                             f"{exc}.")
+            break
+        cont = None
+        if prev is not None:
+            try:
+                cont = least_energy_slack(m, float(dxs[j]), float(dys[j]), target, q0=q0, local=True)
+            except (NoEquilibriumError, UnreachableTargetError, UnsupportedError):
+                cont = None
+            if cont is not None and (not cont.stable or float(np.abs(cont.q - q0).max()) > CONTINUE_STEP):
+                cont = None                          # the branch ended (a fold, a stop) or the solve left it
+        if prev is not None and cont is not None and (
+                float(np.abs(cont.q - g.q).max()) < 1e-6 or cont.energy <= g.energy + 1e-9 * max(scale, abs(g.energy))):
+            prev.set(j, cont)
+        else:
+            if prev is not None and cont is not None:
+                prev.set(j, cont)                    # still stable there: the new one is a switch
+            prev = BranchPoints(len(branches), npts, m.n)
+            prev.set(j, g)
+            branches.append(prev)
+        sel[j] = prev.id
+    curve = _assemble(m, dxs[:end], dys[:end], branches, sel[:end], straight[:end])
+    return replace(curve, ended_at=ended, requested=npts)
 
 
 def _end(m: Manipulator, dxs, dys, j: int, followed: BranchPoints | None, origin: np.ndarray) -> CurveEnd:
