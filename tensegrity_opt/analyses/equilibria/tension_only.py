@@ -24,8 +24,8 @@ constraint (:func:`~.seeds.project_to_target`, kinematics only), and for ``n <= 
 (numpy, all at once). The least energy of the stable equilibria found is returned. This is a *measured* global
 search, not a certified one: ``status`` is ``"converged"``; ``certify=True`` adds the rigorous lower bound (and the
 patterns' certified set where it stays open, n <= 4) and ``method="homotopy"`` answers from that set
-(:mod:`.tension_only_homotopy`). Measured against an independent brute force over the closed range (a dense grid, polished):
-333 random chains of six families, n = 2..4, deflected up to 4x (130 with slack springs, 56 on a stop), every least
+(:mod:`.tension_only_homotopy`). Measured against an independent brute force over the closed range (a dense grid,
+polished): 333 random chains of six families, n = 2..4, deflected up to 4x (130 with slack springs, 56 on a stop), every least
 energy found (``tests/model/test_spring_law.py``, ``benchmarks/spring_laws.py``).
 
 A segment whose two springs are both slack has a free joint (no stiffness): the equilibrium is still reported where
