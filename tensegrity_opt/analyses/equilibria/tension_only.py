@@ -25,8 +25,8 @@ constraint (:func:`~.seeds.project_to_target`, kinematics only), and for ``n <= 
 search, not a certified one: ``status`` is ``"converged"``; ``certify=True`` adds the rigorous lower bound (and the
 patterns' certified set where it stays open, n <= 4) and ``method="homotopy"`` answers from that set
 (:mod:`.tension_only_homotopy`). Measured against an independent brute force over the closed range (a dense grid,
-polished): 333 random chains of six families, n = 2..4, deflected up to 4x (130 with slack springs, 56 on a stop), every least
-energy found (``tests/model/test_spring_law.py``, ``benchmarks/spring_laws.py``).
+polished): 333 random chains of six families, n = 2..4, deflected up to 4x (130 with slack springs, 56 on a stop),
+every least energy found (``tests/model/test_spring_law.py``, ``benchmarks/spring_laws.py``).
 
 A segment whose two springs are both slack has a free joint (no stiffness): the equilibrium is still reported where
 it is isolated (the tip constraint holds it), and refused naming the segment where the joint is left undetermined
