@@ -305,7 +305,9 @@ class BranchEventOut(SpringStateOut):
     """A special point, located between points `index` and `index + 1`."""
 
     kind: Literal[EVENT_KINDS] = Field(description="fold (t turns back: snap-through under this control), "
-                                                   "branch_point (another branch crosses), joint_limit (the end)")
+                                                   "branch_point (another branch crosses), joint_limit (the end), "
+                                                   "spring_slack / spring_taut (a tension-only spring reaches its "
+                                                   "rest length: the joint's stiffness jumps)")
     index: int
     t: float
     q: list[float]
@@ -318,7 +320,11 @@ class BranchEventOut(SpringStateOut):
     stability: Literal["lost", "gained", "unchanged"]
     method: str = Field(description="moore_spence, test_function or limit")
     residual: float | None
-    joint: int | None = Field(description="the joint at its limit (0-based), joint_limit only")
+    joint: int | None = Field(description="the joint at its limit (0-based), joint_limit; the segment whose spring "
+                                          "changes state, spring_slack / spring_taut")
+    spring: int | None = Field(None, description="which of the segment's springs (1 or 2), spring events only")
+    stiffness_before: float | None = Field(None, description="the joint's stiffness d2E/dq2 before a spring event")
+    stiffness_after: float | None = Field(None, description="the joint's stiffness d2E/dq2 after a spring event")
 
 
 class TracedBranchOut(SpringSeriesOut, outcome_model(to.Branch)):

@@ -24,19 +24,26 @@ def _q_of_phi(phi):
     return phi - ca.vertcat(0, phi[:-1])
 
 
-def segment_energy(q, a, b, k1, k2, L10, L20, *, beta=None, c=None):
+def segment_energy(q, a, b, k1, k2, L10, L20, *, beta=None, c=None, tension=None):
     """Spring lengths and elastic energy of the segments at relative angles ``q`` (SX or MX columns).
 
     Returns ``(L1, L2, E)`` (``docs/model.md``): ``L1,2 = 2 c cos(beta +- q/2)`` per segment and
     ``E = 1/2 sum(k1 (L1 - L10)^2 + k2 (L2 - L20)^2)``. ``beta = atan2(a, b)`` and
     ``c = sqrt(a^2 + b^2)`` may be given (symbols computed once elsewhere) instead of being part
-    of every evaluation.
+    of every evaluation. ``tension`` (a sequence of bools, one per segment): the segments whose springs follow the
+    tension-only law, each stretch clipped at 0 (``fmax(L - L0, 0)``: C^1, its second derivative the taut side's
+    where ``L > L0`` and 0 elsewhere).
     """
     c = ca.sqrt(a * a + b * b) if c is None else c
     beta = ca.atan2(a, b) if beta is None else beta
     L1 = 2 * c * ca.cos(beta + q / 2)
     L2 = 2 * c * ca.cos(beta - q / 2)
-    E = 0.5 * ca.sum1(k1 * (L1 - L10) ** 2 + k2 * (L2 - L20) ** 2)
+    r1, r2 = L1 - L10, L2 - L20
+    if tension is not None and any(tension):
+        w = ca.DM([1.0 if t else 0.0 for t in tension])
+        r1 = w * ca.fmax(r1, 0) + (1 - w) * r1
+        r2 = w * ca.fmax(r2, 0) + (1 - w) * r2
+    E = 0.5 * ca.sum1(k1 * r1 ** 2 + k2 * r2 ** 2)
     return L1, L2, E
 
 

@@ -91,7 +91,7 @@ def layouts(n: int) -> PathLayouts:
 
 
 @lru_cache(maxsize=None)
-def _graphs(n: int):
+def _graphs(n: int, tension: tuple[bool, ...] = ()):
     at = layouts(n)
     x = ca.SX.sym("x", at.point.size)
     q, F, t, s = (x[at.point[k]] for k in ("q", "F", "t", "s"))
@@ -100,7 +100,7 @@ def _graphs(n: int):
     ctl = ca.SX.sym("ctl", CONTROL.size)
     pe = p + t * dp + s * dp2
     a, b, k1, k2, L10, L20 = (pe[at.parameters[k]] for k in ("a", "b", "k1", "k2", "L10", "L20"))
-    _, _, E = segment_energy(q, a, b, k1, k2, L10, L20)
+    _, _, E = segment_energy(q, a, b, k1, k2, L10, L20, tension=tension or None)
     phi = ca.cumsum(q)
     tip = tip_expression(phi, b)
     J = ca.jacobian(tip, q)
@@ -170,9 +170,13 @@ def _library(n: int) -> str:
 _NAMES = ("path", "second", "step", "curvature")
 
 
-def _functions(n: int) -> tuple[tuple[ca.Function, ...], str, bool]:
+def _functions(n: int, tension: tuple[bool, ...] = ()) -> tuple[tuple[ca.Function, ...], str, bool]:
     """This thread's ``path``, ``second``, ``step`` and ``curvature`` Functions, how they run (``"compiled"`` /
-    ``"virtual machine"``) and whether they are compiled in the background meanwhile (:func:`.build.load`)."""
+    ``"virtual machine"``) and whether they are compiled in the background meanwhile (:func:`.build.load`).
+    ``tension`` (one bool per segment, any true): the tension-only segments' variant, in the virtual machine (one
+    graph per pattern of laws: not compiled)."""
+    if any(tension):
+        return _graphs(n, tuple(bool(t) for t in tension)), VIRTUAL_MACHINE, False
     if 2 <= n <= KERNEL_MAX:
         loaded = load(_library(n), "the path functions", lambda: dict(zip(_NAMES, _graphs(n))))
         return tuple(loaded.functions[k] for k in _NAMES), loaded.mode, loaded.pending
@@ -182,13 +186,15 @@ def _functions(n: int) -> tuple[tuple[ca.Function, ...], str, bool]:
 class PathSystem:
     """This thread's evaluators of the path system for chains of ``n`` segments."""
 
-    def __init__(self, n: int) -> None:
+    def __init__(self, n: int, tension: tuple[bool, ...] = ()) -> None:
         self.n = n
+        #: which segments' springs are tension-only (empty: every one linear)
+        self.tension = tuple(tension)
         #: the blocks of the functions' vectors (:class:`PathLayouts`)
         self.layouts = layouts(n)
         #: the point ``x = (q, F, t, s)`` of the functions (the control parameter ``t``, the second one ``s``)
         self.point = self.layouts.point
-        (path, second, step, curvature), self.mode, self.pending = _functions(n)
+        (path, second, step, curvature), self.mode, self.pending = _functions(n, self.tension)
         self._path = Fast(path)
         self._second = Fast(second)
         self._step = Fast(step)
@@ -230,13 +236,14 @@ class PathSystem:
 
 
 def _compiled_meanwhile(ps: PathSystem) -> bool:
-    return ps.pending and not pending(_library(ps.n))
+    return ps.pending and not ps.tension and not pending(_library(ps.n))
 
 
 @per_thread(stale=_compiled_meanwhile)
-def path_system(n: int) -> PathSystem:
-    """This thread's :class:`PathSystem` for ``n`` segments (:func:`.per_thread.per_thread`)."""
-    return PathSystem(n)
+def path_system(n: int, tension: tuple[bool, ...] = ()) -> PathSystem:
+    """This thread's :class:`PathSystem` for ``n`` segments (:func:`.per_thread.per_thread`); ``tension``: which
+    segments' springs are tension-only (empty or all false: the linear law's compiled functions)."""
+    return PathSystem(n, tuple(bool(t) for t in tension) if any(tension) else ())
 
 
 def control_vector(A_tip, A_F, c, tip_ref, F_ref) -> np.ndarray:

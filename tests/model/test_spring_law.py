@@ -218,7 +218,6 @@ def _calls(m, lin_eq, P):
         "Tracker": lambda: to.Tracker(m),
         "force_deflection (branch all)": lambda: to.force_deflection(m, [0.1, 0.2], branch="all"),
         "force_deflection (from rest)": lambda: to.force_deflection(m, [0.1, 0.2], reference="rest"),
-        "trace_branch": lambda: to.trace_branch(m, lin_eq, to.Control.displacement(), t_max=0.1),
         "bifurcation_diagram": lambda: to.bifurcation_diagram(m, lin_eq, to.Control.displacement(), t_max=0.1),
         "limit_load": lambda: to.limit_load(m),
         "imperfection_sensitivity": lambda: to.imperfection_sensitivity(m, [0.01, 0.02]),
@@ -389,12 +388,83 @@ def test_the_force_deflection_curve_of_the_paper_chain_under_the_tension_only_la
     assert (c.spring_states[4] == "slack").sum() >= 1 and c.jumps[0].kind == "buckling"
 
 
-@pytest.mark.parametrize("family", [pytest.param(f, marks=pytest.mark.slow) if f == "heterogeneous" else f
-                                    for f in FAMILIES])      # its brute force takes ~20 s
+@pytest.mark.slow          # ~1 s each (the brute force at every point), heterogeneous ~20 s
+@pytest.mark.parametrize("family", FAMILIES)
 def test_the_force_deflection_curves_of_random_tension_only_chains(family):
     m, dx, dy = _chain(family, np.random.default_rng(9100), "tension_only", n=3)
     top = 1.0 if family == "large" else 2.0          # "large" is deflected far already (springs slack, stops)
     _curve_is_the_brute_force(m, np.linspace(0.25, 1.0, 4) * top * dx, dy + 0.05)
+
+
+# ------------------------------------------------------------------------------------------- branches
+def _branch_is_the_reference(m, br):
+    """Every point balances in the reference model (torques from the spring force vectors) inside the closed range,
+    and each spring event lies where the reference spring reaches its rest length, with the joint's one-sided
+    stiffnesses of the reference torque (one-sided differences) before and after."""
+    segs = ref.segs_of(m)
+    for q, F in zip(br.q, br.force):
+        r = ref.torques(segs, q) + ref.tip_jacobian(segs, q).T @ F
+        assert np.abs(r).max() < 1e-8 * m.torque_scale
+        assert np.all(np.abs(q) <= m.joint_limits)
+    events = [e for e in br.events if e.kind in ("spring_slack", "spring_taut")]
+    for e in events:
+        j, i = e.joint, e.spring - 1
+        L = ref.lengths(segs, e.q)[j, i]
+        L0 = (m.segments[j].L1_0, m.segments[j].L2_0)[i]
+        assert abs(L - L0) < 1e-9 * L0, (L, L0)
+        h = 1e-6
+        side = []
+        for s in (1.0, -1.0):
+            dq = np.zeros(m.n)
+            dq[j] = s * h
+            side.append(-(ref.torques(segs, e.q + dq)[j] - ref.torques(segs, e.q)[j]) / (s * h))
+        assert sorted([e.stiffness_before, e.stiffness_after]) == pytest.approx(sorted(side), abs=1e-4 * m.torque_scale)
+        assert e.stiffness_before != pytest.approx(e.stiffness_after)
+        d = e.to_dict()
+        assert d["kind"] == e.kind and d["spring"] == i + 1 and d["stiffness_after"] == e.stiffness_after
+    # each change of a spring's state along the points is one located event, in order (a point on the kink itself,
+    # |L - L0| ~ rounding, counts for neither side)
+    L0 = np.array([[s.L1_0, s.L2_0] for s in m.segments])
+    r = np.array([ref.lengths(segs, q) for q in br.q]) - L0
+    for j in range(m.n):
+        for i in range(2):
+            if not m.segments[j].tension_only:
+                continue
+            keep = np.abs(r[:, j, i]) > 1e-9 * L0[j, i]
+            st = r[keep, j, i] > 0.0
+            idx = np.flatnonzero(keep)
+            want = [int(idx[k]) for k in np.flatnonzero(st[1:] != st[:-1])]       # the last point before each change
+            got = [e for e in events if (e.joint, e.spring - 1) == (j, i)]
+            assert len(got) == len(want), (j, i, [e.index for e in got], want)
+            for e, w in zip(got, want):
+                assert w <= e.index <= w + 1
+                assert e.kind == ("spring_slack" if r[w, j, i] > 0.0 else "spring_taut")
+    return events
+
+
+def test_a_branch_of_the_paper_chain_locates_where_spring_3_2_goes_slack():
+    """Displacement control from dx = 0.5: spring 3.2 reaches its rest length at dx ~ 1.097 (the issue's figure), the
+    joint's stiffness drops there, and the branch ends where joint 3 reaches its stop (dx ~ 1.74, the docs' figure:
+    from ~1.75 the least-energy configuration rests on it)."""
+    m = to.Manipulator.uniform(4, spring="tension_only")
+    br = to.trace_branch(m, to.solve_equilibrium(m, 0.5), "displacement", t_max=2.5, max_points=400)
+    ev = _branch_is_the_reference(m, br)
+    assert [(e.kind, e.joint, e.spring) for e in ev] == [("spring_slack", 2, 2)]
+    assert 0.5 + ev[0].t == pytest.approx(1.097, abs=1e-3) and ev[0].stiffness_after < ev[0].stiffness_before
+    assert br.status == "joint_limit" and br.events[-1].joint == 2 and 0.5 + br.t[-1] == pytest.approx(1.74, abs=0.01)
+
+
+@pytest.mark.parametrize("family", ["large", "asymmetric", "heterogeneous", "dy"])
+@pytest.mark.parametrize("control", ["displacement", "load"])
+def test_branches_of_random_tension_only_chains(family, control):
+    m, dx, dy = _chain(family, np.random.default_rng(9300), "tension_only", n=3)
+    eq = to.solve_equilibrium(m, 0.3 * dx, dy)
+    if eq.at_stop.any():                         # a branch starts inside the range
+        eq = to.solve_equilibrium(m, 0.05 * dx, dy)
+    ctl = to.Control.displacement() if control == "displacement" else to.Control.load(base=eq.force)  # from eq
+    br = to.trace_branch(m, eq, ctl, t_max=3.0 if control == "displacement" else 2.0, max_points=300)
+    assert len(br.t) > 5
+    _branch_is_the_reference(m, br)
 
 
 # ------------------------------------------------------------------------------------------- certified sets
@@ -476,6 +546,26 @@ def test_certify_proves_the_least_energy_of_a_tension_only_chain(family):
     assert b.bound <= best.energy + 1e-12 * abs(best.energy)
     h = to.solve_equilibrium(m, dx, dy, method="homotopy")
     assert h.status == "certified" and h.energy == pytest.approx(best.energy, rel=1e-9, abs=1e-12)
+
+
+@needs_phc
+@pytest.mark.slow
+def test_an_option_whose_two_intervals_have_opposite_moments_prunes_nothing():
+    """A review's counterexample: with a / b < 0.41 a one-taut option can have two intervals on either side of its
+    spring's turning angle, its moment of opposite signs there; read from one interval, the sign test pruned a
+    pattern holding a stable equilibrium while the set said certified (5 of the reference's 6)."""
+    from tensegrity_opt.analyses.equilibria.tension_only_homotopy import joint_options
+
+    seg = to.Segment(math.tan(0.2), 1.0, 1.0, (2 * math.hypot(math.tan(0.2), 1) * math.cos(1.2),
+                                             2 * math.hypot(math.tan(0.2), 1) * math.cos(0.5)), "tension_only")
+    two = [o for o in joint_options(seg) if o.side == 0 and len(o.intervals) == 2]
+    assert two and all(o.sign == 0 for o in two)
+    m = to.Manipulator([to.Segment(0.22204, 1.39045, 1.0, (0.88682, 0.75931), "tension_only"),
+                        to.Segment(0.20271, 1.0, 1.0, (0.73946, 1.79086), "tension_only"),
+                        to.Segment(0.17292, 0.66221, 1.0, (0.93656, 1.11136), "tension_only")])
+    dx, dy = m.straight_length + 0.717058, -1.199148          # the target (-0.717058, -1.199148)
+    got = _same_sets(m, dx, dy, "homotopy", "certified")
+    assert any(float(np.abs(e.q - [2.80062, 1.67224, 1.19218]).max()) < 1e-4 and e.stable for e in got)
 
 
 @needs_phc

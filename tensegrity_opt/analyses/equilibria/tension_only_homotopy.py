@@ -163,8 +163,9 @@ def _signs(seg, o: Option) -> tuple[int, np.ndarray | None]:
     zeros = np.concatenate([ends[np.abs(Ls - L0) <= 1e-9 * L0], inside(np.array([turn]))])
     if np.any((iv[:, 0] < turn) & (turn < iv[:, 1])):
         return 0, zeros
-    mid = 0.5 * (iv[0, 0] + iv[0, 1])
-    return int(np.sign(float(-seg.torque(mid)))), zeros
+    # each interval has one sign; two intervals of one option may lie on either side of the turn (opposite signs)
+    signs = {int(np.sign(float(-seg.torque(0.5 * (lo + hi))))) for lo, hi in iv}
+    return (signs.pop() if len(signs) == 1 else 0), zeros
 
 
 # ----------------------------------------------------------------------------- pruning by the tip's reach
@@ -366,6 +367,7 @@ def certified_equilibria_slack(m: Manipulator, target, *, timeout: float | None 
     paths = failed = solved = lost = 0
     why: list[str] = []
     rigid = 0
+    doubtful: list = []
     loose_reach: set[int] = set()
     systems = []
     check_time("the tension-only homotopy")
@@ -413,20 +415,23 @@ def certified_equilibria_slack(m: Manipulator, target, *, timeout: float | None 
             G = 0.5 * (g[r] + np.conj(h[r])) / (kap * lam)
             F = np.array([G.real, G.imag])
             held = [j for j, o in enumerate(pat) if o.side != 0]
-            if held:
-                res = m.gradient(q) - m.jacobian(q).T @ F
-                if any(-pat[j].side * res[j] < -CONTACT_TOL * scale * 1e3 for j in held):
-                    continue                    # the joint would leave its stop: not an equilibrium there
+            contact = -np.array([pat[j].side for j in held]) * (m.gradient(q) - m.jacobian(q).T @ F)[held]
+            if held and sol.regular[r] and contact.min() < -CONTACT_TOL * scale * 1e3:
+                continue                        # a regular root: the joint would leave its stop, no equilibrium
             eq = _classified(m, nlp, q, F, target, SolverInfo("Homotopy_Polished", 0), refuse_free=False)
             if eq is None:
-                if held and any(-pat[j].side * (m.gradient(q) - m.jacobian(q).T @ F)[j] < CONTACT_TOL * scale
-                                for j in held):
-                    continue                    # a contact torque ~0 that the polish read as negative
-                lost += 1
-                why.append(f"pattern {_name(pat)}: a real root at q = {np.round(q, 6).tolist()} did not polish")
+                if held and contact.min() < -CONTACT_TOL * scale * 1e3:
+                    continue                    # (a singular root) polished, the contact torque stays negative
+                # a contact torque ~0 (the neighbouring free pattern's root, found there) or a failed polish: decided
+                # once every pattern is done
+                doubtful.append((pat, q))
                 continue
             if not any(float(np.abs(eq.q - e.q).max()) < SAME_EQUILIBRIUM for e in found):
                 found.append(eq)
+    for pat, q in doubtful:
+        if not any(float(np.abs(e.q - q).max()) < 1e-6 for e in found):
+            lost += 1
+            why.append(f"pattern {_name(pat)}: a real root at q = {np.round(q, 6).tolist()} did not polish")
     if rigid:
         why.append(f"{rigid} pattern(s) with fewer than two free joints meet the target (a rigid pose: its tip force "
                    "is not determined)")

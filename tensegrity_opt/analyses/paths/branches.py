@@ -27,14 +27,14 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs, linear_only
+from ...model.springs import SpringFields, Springs
 from ...outcome import Outcome
 from ...serialize import number, numbers
 from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0
 from .control import Control, as_control
 from .events import BranchEvent, events_between, joint_limit_events, locate_joint_limit
-from .problem import LIMIT_MARGIN, NEWTON_TOL, PathPoint, PathProblem, path_point
+from .problem import LIMIT_MARGIN, NEWTON_ITER, NEWTON_TOL, PathPoint, PathProblem, path_point
 
 __all__ = ["Branch", "trace_branch", "continue_branch", "FORCE_BOUND", "SINGULAR_TIP", "MAX_TURN"]
 
@@ -278,7 +278,6 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
     NoEquilibriumError
         (``RuntimeError``) when Newton cannot put the start on the branch.
     """
-    linear_only(m, "trace_branch")
     if timeout is not None:
         with time_limit(timeout):
             return trace_branch(m, start, control, t_max=t_max, t_min=t_min, max_points=max_points, step=step,
@@ -353,9 +352,76 @@ def _step_shape(tau_a: np.ndarray, tau_b: np.ndarray, chord: np.ndarray, h: floa
 
 
 def _unlocated(a: PathPoint, b: PathPoint, new: list[BranchEvent]) -> bool:
-    """Whether the Morse index changes from ``a`` to ``b`` by more than the folds and branch points located
-    between them account for (one per eigenvalue crossing zero)."""
+    """Whether the Morse index changes from ``a`` to ``b`` by more than the folds, branch points and spring events
+    located between them account for (one per eigenvalue crossing zero or jumping through it)."""
+    # a spring going slack or taut may change it too (the stiffness jumps: a fold or a loss of stability at the kink)
     return b.morse != a.morse and abs(b.morse - a.morse) > sum(e.kind != "joint_limit" for e in new)
+
+
+#: A step shorter than this (scaled) that still fails, with a tension-only spring changing state within it, is taken
+#: across the kink: the branch's tangent jumps where a spring goes slack or taut (its stiffness does), which the
+#: arclength predictor from the near side cannot pass.
+KINK_STEP = 1e-5
+#: ... a spring changing state within this scaled distance ahead along the tangent.
+KINK_AHEAD = 1e-3
+
+
+def _across_kink(prob: PathProblem, a: PathPoint, h: float) -> PathPoint | None:
+    """The kink just ahead of ``a`` (a tension-only spring reaching its rest length within ``h`` along the tangent):
+    the point of the branch where its stretch is zero (Newton on ``R = 0`` and that stretch ``= 0`` from ``a``) with
+    the branch's tangent beyond it: the far side's equations' tangent there (their Jacobian: the point moved across
+    the spring's rest length in that joint), oriented so that the stretch goes on across zero (the branch may turn
+    back in ``t`` there: a fold at the kink, where the stability changes). None when no spring changes state ahead or
+    Newton fails."""
+    m = prob.m
+    if m.linear_springs:
+        return None
+    at = prob.point
+    iq = at["q"].start
+    q = a.x[at["q"]]
+    ahead = (a.x + h * a.tau / prob.w)[at["q"]]
+    sp = prob.springs_at(float(a.x[at["t"]]))
+    r0, r1 = sp.stretches(q), sp.stretches(ahead)
+    cross = [(int(j), int(i)) for j, i in zip(*np.nonzero((r0 > 0.0) != (r1 > 0.0))) if m.segments[int(j)].tension_only]
+    if len(cross) != 1:
+        return None
+    j, i = cross[0]
+    seg = m.segments[j]
+    sgn = 1.0 if i == 0 else -1.0
+    L0 = seg.L1_0 if i == 0 else seg.L2_0
+
+    def stretch(x):
+        ang = seg.beta + sgn * x[iq + j] / 2.0
+        return 2.0 * seg.c * math.cos(ang) - L0, -sgn * seg.c * math.sin(ang)      # L - L0, dL/dq_j
+
+    x = a.x.copy()
+    for _ in range(NEWTON_ITER):
+        R, Rx = prob.eval(x)
+        r, d = stretch(x)
+        if prob.residual(R) <= NEWTON_TOL and abs(r) <= 1e-14 * max(1.0, L0):
+            break
+        row = np.zeros(Rx.shape[1])
+        row[iq + j] = d
+        try:
+            x = x + np.linalg.solve(np.vstack([Rx, row]), -np.concatenate([R, [r]]))
+        except np.linalg.LinAlgError:
+            return None
+    else:
+        return None
+    r, d = stretch(x)
+    if d == 0.0 or not np.all(np.isfinite(x)) or float(np.linalg.norm((x - a.x) * prob.w)) > h:
+        return None
+    want = -1.0 if r0[j, i] > 0.0 else 1.0              # the far side: the stretch goes on across zero
+    nudged = x.copy()
+    nudged[iq + j] += want * 1e-9 * max(1.0, L0) / d       # the stretch now 1e-9 on the far side
+    try:
+        tau = prob.tangent(nudged, a.tau)
+    except (np.linalg.LinAlgError, ValueError):
+        return None
+    rate = d * float(tau[iq + j])
+    if not np.all(np.isfinite(tau)) or rate == 0.0:
+        return None
+    return path_point(prob, x, tau if rate * want > 0.0 else -tau)
 
 
 def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_points, step, max_step, min_step,
@@ -372,6 +438,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
     status, message = "max_points", ""
     X0 = pts[0].x * prob.w
     at_t, at_F = prob.point["t"], prob.point["F"]
+    kinked = False                        # the last point's tangent was turned across a kink (once a point)
     while len(pts) < max_points:
         if expired():
             status, message = "time_limit", "the time limit ran out: the points computed so far"
@@ -390,6 +457,15 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             ok = turn <= MAX_TURN and moved <= max(0.5 * h, 1e-9)
         if not ok:
             h *= 0.5
+            if h < KINK_STEP and not kinked:
+                k = _across_kink(prob, a, KINK_AHEAD)
+                if k is not None:                 # a spring's state changes just ahead: the kink, then its far side
+                    hk = float(np.linalg.norm((k.x - a.x) * prob.w))
+                    events.extend(events_between(prob, len(pts) - 1, a, k, hk))
+                    pts.append(k)
+                    s.append(s[-1] + hk)
+                    h, kinked = max(2.0 * h, min(step, max_step) * 0.1), True
+                    continue
             if h < min_step:
                 if len(pts) == 1 and prob.held_rows.shape[0] == 2 and _tip_rank(a) < SINGULAR_TIP:
                     # the held tip starts on the edge of its workspace (the straight chain at full reach) and
@@ -457,6 +533,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
             continue
         events.extend(new)
         pts.append(b)
+        kinked = False
         s.append(s[-1] + float(np.linalg.norm((b.x - a.x) * prob.w)))
         if status in ("t_max", "t_min") and name is not None:
             message = f"t reached {status} = {b.x[at_t]:.6g}"

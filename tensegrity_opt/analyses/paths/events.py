@@ -21,6 +21,7 @@ of a test function's sign and located precisely on the branch:
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from typing import Any
@@ -32,11 +33,15 @@ from ...model.springs import SpringFields, Springs
 from ...serialize import nullable, number, numbers
 from .problem import LIMIT_MARGIN, NEWTON_TOL, PathPoint, PathProblem
 
-__all__ = ["BranchEvent", "EVENT_KINDS", "BP_TOL", "events_between", "locate_joint_limit", "joint_limit_events",
+__all__ = ["BranchEvent", "EVENT_KINDS", "SINGULAR_KINDS", "BP_TOL", "events_between", "locate_joint_limit",
+           "joint_limit_events",
            "moore_spence", "load_compliance", "locate_stiffness_minimum"]
 
 #: Kinds of :class:`BranchEvent`.
-EVENT_KINDS = ("fold", "branch_point", "joint_limit")
+EVENT_KINDS = ("fold", "branch_point", "joint_limit", "spring_slack", "spring_taut")
+#: The kinds that account for a change of the Morse index (the others: a joint limit ends the branch, a spring's
+#: state changes the stiffness only).
+SINGULAR_KINDS = ("fold", "branch_point")
 #: ``|u . R_t| / |R_t|`` below which a singular point is a branch point rather than a fold.
 BP_TOL = 1e-6
 #: A located eigenvalue zero is one where that eigenvalue of the reduced Hessian is below this many torque units
@@ -56,7 +61,9 @@ class BranchEvent(SpringFields):
         ``"fold"`` (a limit point: ``t`` turns back; snap-through under this control),
         ``"branch_point"`` (a simple bifurcation: another branch crosses; :func:`~.diagram.switch_branch`),
         ``"joint_limit"`` (a joint reaches its range bound, ``|q_i| = (1 - LIMIT_MARGIN)(pi - 2 beta_i)``:
-        the branch ends).
+        the branch ends), ``"spring_slack"`` / ``"spring_taut"`` (a tension-only spring reaches its rest length
+        and goes slack / taut: the joint's stiffness jumps; ``joint``, ``spring``, ``stiffness_before``,
+        ``stiffness_after``).
     index : int
     t, q, force, tip, energy
         The point itself (inside the open range).
@@ -73,7 +80,13 @@ class BranchEvent(SpringFields):
     residual : float
         Scaled residual of the equilibrium equations at the point.
     joint : int or None
-        The joint at its limit (0-based), for ``"joint_limit"``.
+        The joint at its limit (0-based), for ``"joint_limit"``; the segment whose spring changes state, for the
+        spring events.
+    spring : int or None
+        Which of the segment's springs (1 or 2), for the spring events.
+    stiffness_before, stiffness_after : float or None
+        The joint's stiffness ``d^2E/dq^2`` on either side of a spring event (one-sided: the springs' states
+        before and after).
     spring_lengths, spring_stretches, spring_forces, spring_states : ndarray (n, 2)
         The springs at ``q`` (:class:`~tensegrity_opt.model.springs.SpringFields`).
     """
@@ -95,6 +108,9 @@ class BranchEvent(SpringFields):
     x: np.ndarray | None = field(default=None, repr=False)
     null_x: np.ndarray | None = field(default=None, repr=False)
     springs: Springs | None = field(default=None, repr=False, compare=False)
+    spring: int | None = None
+    stiffness_before: float | None = None
+    stiffness_after: float | None = None
 
     def __post_init__(self) -> None:
         for a in (self.q, self.force, self.tip, self.null_vector, self.x, self.null_x):   # the builder's own arrays
@@ -110,7 +126,9 @@ class BranchEvent(SpringFields):
                 "null_vector": None if self.null_vector is None else numbers(self.null_vector),
                 "morse_before": int(self.morse_before), "morse_after": int(self.morse_after),
                 "stability": self.stability, "method": self.method, "residual": nullable(self.residual),
-                "joint": self.joint}
+                "joint": self.joint, "spring": self.spring,
+                "stiffness_before": None if self.stiffness_before is None else number(self.stiffness_before),
+                "stiffness_after": None if self.stiffness_after is None else number(self.stiffness_after)}
 
 
 def _on_step(prob: PathProblem, a: PathPoint, b: PathPoint, sigma: float, h: float) -> np.ndarray | None:
@@ -250,13 +268,72 @@ def _singular_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, 
     return out
 
 
+def _joint_stiffness(seg, q: float, taut: tuple[bool, bool]) -> float:
+    """``d^2E/dq^2`` of one segment at ``q`` with its springs in the states ``taut`` (a taut spring at its rest
+    length counts with its ``k L'^2``: the one-sided stiffness of that side)."""
+    c, beta = seg.c, seg.beta
+    out = 0.0
+    for t, k, L0, sgn in ((taut[0], seg.k1, seg.L1_0, 1.0), (taut[1], seg.k2, seg.L2_0, -1.0)):
+        if not t:
+            continue
+        ang = beta + sgn * q / 2.0
+        L, d, dd = 2.0 * c * math.cos(ang), -sgn * c * math.sin(ang), -0.5 * c * math.cos(ang)
+        out += k * (d * d + (L - L0) * dd)
+    return float(out)
+
+
+def _spring_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h: float
+                   ) -> list[tuple[float, BranchEvent]]:
+    """The tension-only springs that go slack or taut between ``a`` and ``b``: each located at the zero of its
+    stretch ``L - L0`` along the step (Brent's method, the corrector solving each trial point), with the joint's
+    stiffness ``d^2E/dq^2`` on either side (``(sigma, event)`` pairs)."""
+    m = prob.m
+    if m.linear_springs:
+        return []
+    at = prob.point
+    sp = prob.springs_at(0.0)
+    ra, rb = sp.stretches(a.x[at["q"]]), sp.stretches(b.x[at["q"]])
+    out = []
+    for j, i in zip(*np.nonzero((ra > 0.0) != (rb > 0.0))):
+        seg = m.segments[int(j)]
+        if not seg.tension_only:
+            continue
+
+        def g(sig: float, j=int(j), i=int(i)) -> float:
+            y = a.x if sig == 0.0 else (b.x if sig == h else _on_step(prob, a, b, sig, h))
+            if y is None:
+                raise _Unlocatable
+            return float(prob.springs_at(float(y[at["t"]])).stretches(y[at["q"]])[j, i])
+
+        try:
+            sig = _brent(g, 0.0, h, float(ra[j, i]), float(rb[j, i]))
+            y = a.x if sig == 0.0 else (b.x if sig == h else _on_step(prob, a, b, sig, h))
+        except (_Unlocatable, ValueError, RuntimeError):
+            continue
+        if y is None:
+            continue
+        qj = float(y[at["q"]][j])
+        state = [bool(s) for s in (prob.springs_at(float(y[at["t"]])).stretches(y[at["q"]])[j] > 0.0)]
+        before, after = list(state), list(state)
+        before[i], after[i] = bool(ra[j, i] > 0.0), bool(rb[j, i] > 0.0)
+        kind = "spring_slack" if before[i] else "spring_taut"
+        ev = _make_event(prob, kind, index, y, a, b, "test_function", None, joint=int(j))
+        out.append((sig, dataclasses.replace(ev, spring=int(i) + 1,
+                                             stiffness_before=_joint_stiffness(seg, qj, tuple(before)),
+                                             stiffness_after=_joint_stiffness(seg, qj, tuple(after)))))
+    return out
+
+
 def events_between(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h: float) -> list[BranchEvent]:
     """The folds and branch points between the accepted points ``a`` (number ``index``) and ``b``, ``h`` apart in
-    scaled arclength: none unless the Morse index changes or ``t`` turns back (located; module docstring)."""
+    scaled arclength: none unless the Morse index changes or ``t`` turns back (located; module docstring); then the
+    tension-only springs going slack or taut between them (:func:`_spring_events`), in their order along the step."""
     at_t = prob.point["t"]
+    out = []
     if b.morse != a.morse or a.tau[at_t] * b.tau[at_t] < 0:
-        return _singular_events(prob, index, a, b, h)
-    return []
+        out = _singular_events(prob, index, a, b, h)
+    springs = _spring_events(prob, index, a, b, h)
+    return out + [e for _, e in sorted(springs, key=lambda se: se[0])]
 
 
 def locate_joint_limit(prob: PathProblem, a: PathPoint, b: PathPoint, h: float) -> tuple[np.ndarray, float] | None:

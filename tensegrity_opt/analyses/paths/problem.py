@@ -58,10 +58,12 @@ class PathProblem:
         self.m, self.control, self.n = m, control, m.n
         n = m.n
         self.N = n + 2
-        self.ps = path_system(n)
+        tension = () if m.linear_springs else tuple(seg.tension_only for seg in m.segments)
+        self.ps = path_system(n, tension)
         #: the blocks of a point ``x = (q, F, t)``, of a tangent and of the columns of ``R_x`` in ``(z, t)``
         self.point = self.ps.layouts.branch_point
-        self.p = np.array(m.params, dtype=float)
+        # the chain's numbers (the law is the path system's: the parameters are the same under both)
+        self.p = np.array((m if m.linear_springs else m.with_spring("linear")).params, dtype=float)
         self.dp = np.zeros(self.p.size)
         self.dp2 = np.zeros(self.p.size) if dp2 is None else np.asarray(dp2, float)
         at_p = self.ps.layouts.parameters

@@ -12,6 +12,7 @@ import numpy as np
 from ...analyses.paths.atlas import StabilityAtlas
 from ...analyses.paths.boundaries import StabilityBoundary
 from ...analyses.paths.branches import Branch, BranchEvent, Control
+from ...analyses.paths.events import SINGULAR_KINDS
 from ...analyses.paths.imperfection import ImperfectionSensitivity
 from ...analyses.paths.limit_load import LimitLoad
 from ...errors import InvalidParameterError
@@ -189,7 +190,7 @@ def _morse_runs(br: Branch, xname: str, yname: str) -> list[tuple[int, np.ndarra
         return []
     starts = [0, *(np.flatnonzero(idx[1:] != idx[:-1]) + 1).tolist()]
     ends = [s - 1 for s in starts[1:]] + [P - 1]
-    located = [e for e in br.events if e.kind != "joint_limit"]
+    located = [e for e in br.events if e.kind in SINGULAR_KINDS]
     out = []
     for a, b in zip(starts, ends):
         xs, ys = list(X[a:b + 1]), list(Y[a:b + 1])

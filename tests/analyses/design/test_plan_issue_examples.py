@@ -135,6 +135,7 @@ def test_a_step_without_equilibrium_is_a_state_and_the_plan_goes_on_from_it(hori
     assert d["steps"][5]["events"][-1]["status"] == "joint_limit"
 
 
+@pytest.mark.slow          # ~13 s: the fast lane keeps its budget (issue 39's other examples stay in it)
 def test_step_by_step_and_the_horizon_start_from_the_same_state_and_shape():
     """The straight paper chain under compression (a symmetric start: both mirror-image shapes reach a target off
     the axis): both planners start from the same configuration and take the same shape, whatever the horizon."""

@@ -249,6 +249,7 @@ def test_default_short_way_is_the_whole_search_and_certified(monkeypatch, n, dx,
     assert short.energy <= _reference_least(m, dx, dy, 40, 5, wells=wells, n_wells=40) + 1e-9
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("n", [9, 10])
 def test_near_well_targets_of_long_bistable_chains(n):
     """The issue's failing kind of case: uniform bistable n = 9, 10 with the tip near a random well pattern's tip

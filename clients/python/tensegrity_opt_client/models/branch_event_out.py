@@ -9,6 +9,7 @@ from attrs import field as _attrs_field
 from ..models.branch_event_out_kind import BranchEventOutKind
 from ..models.branch_event_out_spring_states_type_0_item_item import BranchEventOutSpringStatesType0ItemItem
 from ..models.branch_event_out_stability import BranchEventOutStability
+from ..types import UNSET, Unset
 
 if TYPE_CHECKING:
     from ..models.force import Force
@@ -25,9 +26,11 @@ class BranchEventOut:
         energy (float):
         force (Force):
         index (int):
-        joint (int | None): the joint at its limit (0-based), joint_limit only
+        joint (int | None): the joint at its limit (0-based), joint_limit; the segment whose spring changes state,
+            spring_slack / spring_taut
         kind (BranchEventOutKind): fold (t turns back: snap-through under this control), branch_point (another branch
-            crosses), joint_limit (the end)
+            crosses), joint_limit (the end), spring_slack / spring_taut (a tension-only spring reaches its rest length: the
+            joint's stiffness jumps)
         method (str): moore_spence, test_function or limit
         morse_after (int):
         morse_before (int):
@@ -45,6 +48,9 @@ class BranchEventOut:
         stability (BranchEventOutStability):
         t (float):
         tip (list[float]):
+        spring (int | None | Unset): which of the segment's springs (1 or 2), spring events only
+        stiffness_after (float | None | Unset): the joint's stiffness d2E/dq2 after a spring event
+        stiffness_before (float | None | Unset): the joint's stiffness d2E/dq2 before a spring event
     """
 
     energy: float
@@ -65,6 +71,9 @@ class BranchEventOut:
     stability: BranchEventOutStability
     t: float
     tip: list[float]
+    spring: int | None | Unset = UNSET
+    stiffness_after: float | None | Unset = UNSET
+    stiffness_before: float | None | Unset = UNSET
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -150,6 +159,24 @@ class BranchEventOut:
 
         tip = self.tip
 
+        spring: int | None | Unset
+        if isinstance(self.spring, Unset):
+            spring = UNSET
+        else:
+            spring = self.spring
+
+        stiffness_after: float | None | Unset
+        if isinstance(self.stiffness_after, Unset):
+            stiffness_after = UNSET
+        else:
+            stiffness_after = self.stiffness_after
+
+        stiffness_before: float | None | Unset
+        if isinstance(self.stiffness_before, Unset):
+            stiffness_before = UNSET
+        else:
+            stiffness_before = self.stiffness_before
+
         field_dict: dict[str, Any] = {}
         field_dict.update(self.additional_properties)
         field_dict.update(
@@ -174,6 +201,12 @@ class BranchEventOut:
                 "tip": tip,
             }
         )
+        if spring is not UNSET:
+            field_dict["spring"] = spring
+        if stiffness_after is not UNSET:
+            field_dict["stiffness_after"] = stiffness_after
+        if stiffness_before is not UNSET:
+            field_dict["stiffness_before"] = stiffness_before
 
         return field_dict
 
@@ -320,6 +353,33 @@ class BranchEventOut:
 
         tip = cast(list[float], d.pop("tip"))
 
+        def _parse_spring(data: object) -> int | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(int | None | Unset, data)
+
+        spring = _parse_spring(d.pop("spring", UNSET))
+
+        def _parse_stiffness_after(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        stiffness_after = _parse_stiffness_after(d.pop("stiffness_after", UNSET))
+
+        def _parse_stiffness_before(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        stiffness_before = _parse_stiffness_before(d.pop("stiffness_before", UNSET))
+
         branch_event_out = cls(
             energy=energy,
             force=force,
@@ -339,6 +399,9 @@ class BranchEventOut:
             stability=stability,
             t=t,
             tip=tip,
+            spring=spring,
+            stiffness_after=stiffness_after,
+            stiffness_before=stiffness_before,
         )
 
         branch_event_out.additional_properties = d
