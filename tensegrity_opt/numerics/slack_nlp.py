@@ -3,13 +3,15 @@
 A tension-only spring's energy ``k/2 max(0, L - L0)^2`` is only C^1 (its stiffness jumps where it goes slack).
 Written with one extra variable per spring, the problem is smooth:
 
-    min  1/2 sum k e^2   over  q (n), e (2n)
+    min  1/2 sum k e^2 - F . tip(q)   over  q (n), e (2n)
     s.t. tip(q) = target,   e - (L(q) - L0) >= 0,  e >= 0   (tension-only spring)
                             e - (L(q) - L0)  = 0,  e free   (linear spring)
          -(pi - 2 beta) <= q <= pi - 2 beta                 (the joint stops: the closed range)
 
-At a solution ``e = max(0, L - L0)`` (tension-only) or ``L - L0`` (linear), so the objective is the chain's energy
-under each spring's law; the multiplier of a spring's row is its force ``k e``, the multipliers of the tip rows are
+Under a tip displacement ``F = 0`` and the tip rows hold; under a dead tip load ``F`` (force control) the tip rows'
+bounds are infinite (:meth:`SlackNLP.bounds` with ``free_tip``). At a solution ``e = max(0, L - L0)``
+(tension-only) or ``L - L0`` (linear), so the objective is the chain's energy (less ``F . tip``) under each
+spring's law; the multiplier of a spring's row is its force ``k e``, the multipliers of the tip rows are
 ``-F`` (CasADi's sign, ``docs/model.md``), and a joint's bound multiplier is the stop's contact torque. The law
 of each spring enters only through the bounds, so one problem per chain length serves every chain (built once per
 ``n`` and thread, :mod:`.per_thread`).
@@ -41,21 +43,22 @@ class SlackNLP:
 
     ``x``: variables ``q`` (n), ``e1``, ``e2`` (n each: springs 1 and 2 of each segment); ``g``: rows ``tip`` (2),
     ``s1``, ``s2`` (``e - (L - L0)``, n each); ``p``: ``a, b, k1, k2, L10, L20`` (n each, the chain's parameters)
-    then ``target`` (2).
+    then ``target`` (2) and the dead tip load ``force`` (2).
     """
 
     def __init__(self, n: int) -> None:
         self.n = n
         self.x = Layout(q=n, e1=n, e2=n)
         self.g = Layout(tip=2, s1=n, s2=n)
-        self.p = Layout(a=n, b=n, k1=n, k2=n, L10=n, L20=n, target=2)
+        self.p = Layout(a=n, b=n, k1=n, k2=n, L10=n, L20=n, target=2, force=2)
         q, e1, e2 = (ca.SX.sym(s, n) for s in ("q", "e1", "e2"))
         p = ca.SX.sym("p", self.p.size)
         a, b, k1, k2, L10, L20 = (p[i * n:(i + 1) * n] for i in range(6))
-        tgt = p[6 * n:6 * n + 2]
+        tgt = p[self.p["target"]]
+        load = p[self.p["force"]]
         L1, L2, _ = segment_energy(q, a, b, k1, k2, L10, L20)
         tip = tip_expression(ca.cumsum(q), b)
-        f = 0.5 * ca.sum1(k1 * e1 ** 2 + k2 * e2 ** 2)
+        f = 0.5 * ca.sum1(k1 * e1 ** 2 + k2 * e2 ** 2) - ca.dot(load, tip)
         g = ca.vertcat(tip - tgt, e1 - (L1 - L10), e2 - (L2 - L20))
         self.solver, self._cb = _nlpsol(f"slack_{n}", {"x": ca.vertcat(q, e1, e2), "p": p, "f": f, "g": g},
                                         **_OPTIONS)
@@ -68,21 +71,24 @@ class SlackNLP:
         H = ca.hessian(E - ca.dot(F, tip), q)[0]
         self._derivs = ca.Function(f"slack_derivs_{n}", [q, p, t1, t2, F], [E, ca.gradient(E, q), H, tip, J])
 
-    def parameters(self, m, target) -> np.ndarray:
+    def parameters(self, m, target, force=None) -> np.ndarray:
         """The parameter vector of the chain ``m`` (read attribute by attribute: its springs' laws are in the
-        bounds, :meth:`bounds`) and the tip ``target``."""
-        return self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=np.asarray(target, float))
+        bounds, :meth:`bounds`), the tip ``target`` and the dead tip load ``force`` (default none)."""
+        return self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=np.asarray(target, float),
+                           force=np.zeros(2) if force is None else np.asarray(force, float))
 
-    def bounds(self, m) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-        """``lbx, ubx, lbg, ubg`` of the chain ``m``: the closed joint range, each spring's law."""
+    def bounds(self, m, free_tip: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """``lbx, ubx, lbg, ubg`` of the chain ``m``: the closed joint range, each spring's law; ``free_tip``: the
+        tip rows unbounded (force control)."""
         n, lim = self.n, m.joint_limits
         t = m.springs.tension_only
         e_lo = np.where(t, 0.0, -np.inf)
         lbx = self.x.pack(q=-lim, e1=e_lo, e2=e_lo)
         ubx = self.x.pack(q=lim, e1=np.inf, e2=np.inf)
         row_hi = np.where(t, np.inf, 0.0)
-        lbg = self.g.pack(tip=0.0, s1=np.zeros(n), s2=np.zeros(n))
-        ubg = self.g.pack(tip=0.0, s1=row_hi, s2=row_hi)
+        tip = np.inf if free_tip else 0.0
+        lbg = self.g.pack(tip=-tip, s1=np.zeros(n), s2=np.zeros(n))
+        ubg = self.g.pack(tip=tip, s1=row_hi, s2=row_hi)
         return lbx, ubx, lbg, ubg
 
     def start(self, m, q0: np.ndarray) -> np.ndarray:
@@ -99,8 +105,8 @@ class SlackNLP:
         """``(E, grad E, Hess(E - F . tip), tip, J)`` at the relative angles ``q`` under each spring's law (a slack
         spring contributes nothing; where a spring is exactly at its rest length, its taut side)."""
         t = m.springs.tension_only.astype(float)
-        out = self._derivs(q, self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=0.0),
-                           t, t, np.asarray(F, float))
+        out = self._derivs(q, self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=0.0,
+                                          force=0.0), t, t, np.asarray(F, float))
         E, g, H, tip, J = (np.asarray(v, dtype=float) for v in out)
         return float(E.item()), g.ravel(), H, tip.ravel(), J
 

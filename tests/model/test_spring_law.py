@@ -211,7 +211,6 @@ def _calls(m, lin_eq, P):
     from tensegrity_opt.analyses.paths.transition import transition
 
     return {
-        "solve_equilibrium_under_force": lambda: to.solve_equilibrium_under_force(m, -0.1, 0.0),
         "find_equilibria_under_force": lambda: to.find_equilibria_under_force(m, -0.1, 0.0),
         "rest_configuration": lambda: to.rest_configuration(m),
         "solve_equilibria_batch": lambda: to.solve_equilibria_batch(m, [0.1, 0.2]),
@@ -394,6 +393,57 @@ def test_the_force_deflection_curves_of_random_tension_only_chains(family):
     m, dx, dy = _chain(family, np.random.default_rng(9100), "tension_only", n=3)
     top = 1.0 if family == "large" else 2.0          # "large" is deflected far already (springs slack, stops)
     _curve_is_the_brute_force(m, np.linspace(0.25, 1.0, 4) * top * dx, dy + 0.05)
+
+
+# ------------------------------------------------------------------------------------------- force control
+def _is_a_local_minimum_of_the_reference(m, eq):
+    """``eq`` (force control) is a strict local minimum of the reference potential ``E - F . tip`` over the closed
+    range: its free joints balance (reference torques), its stops push (contact >= 0), and SLSQP on the reference
+    potential from nearby starts (bounds: the closed range) comes back to it."""
+    import scipy.optimize as so
+
+    segs = ref.segs_of(m)
+    F = eq.force
+    r = ref.torques(segs, eq.q) + ref.tip_jacobian(segs, eq.q).T @ F
+    assert np.abs(r[~eq.at_stop]).max(initial=0.0) < 1e-8 * m.torque_scale
+    side = np.sign(eq.q)
+    assert np.all(side[eq.at_stop] * r[eq.at_stop] >= -1e-9 * m.torque_scale)        # the stop pushes back
+    np.testing.assert_allclose(eq.contact_torques[eq.at_stop], (side * r)[eq.at_stop], rtol=1e-6, atol=1e-9)
+    lim = ref.limits(segs)
+
+    def V(q):
+        return ref.energy(segs, q) - F @ ref.tip(segs, q)
+
+    rng = np.random.default_rng(1)
+    for _ in range(4):
+        q0 = np.clip(eq.q + rng.normal(0.0, 0.02, m.n), -lim, lim)
+        res = so.minimize(V, q0, method="L-BFGS-B", bounds=list(zip(-lim, lim)),
+                          options={"ftol": 1e-15, "gtol": 1e-11, "maxiter": 2000})
+        assert float(np.abs(res.x - eq.q).max()) < 1e-4, (res.x, eq.q)
+        assert V(eq.q) <= res.fun + 1e-10 * m.torque_scale
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+@pytest.mark.parametrize("load", [(-0.3, 0.0), (-0.8, 0.1), (0.4, -0.3)])
+def test_force_control_of_tension_only_chains_is_a_local_minimum_of_the_reference(family, load):
+    m, _, _ = _chain(family, np.random.default_rng(9500), "tension_only", n=3)
+    fx, fy = (v * m.torque_scale / float(m.b.mean()) for v in load)
+    try:
+        eq = to.solve_equilibrium_under_force(m, fx, fy)
+    except UnsupportedError as e:                 # a free joint left undetermined: said by name
+        assert e.field.startswith("segments[") and e.status == "free_joint"
+        return
+    assert eq.control == "force" and eq.stable
+    _is_a_local_minimum_of_the_reference(m, eq)
+
+
+def test_force_control_of_the_paper_chain_rests_on_a_stop_where_the_linear_law_has_none():
+    m = to.Manipulator.uniform(4, spring="tension_only")
+    eq = to.solve_equilibrium_under_force(m, -0.6, 0.05)
+    assert eq.at_stop[0] and eq.contact_torques[0] > 0 and (eq.spring_states == "slack").any()
+    _is_a_local_minimum_of_the_reference(m, eq)
+    with pytest.raises(to.NoEquilibriumError):
+        to.solve_equilibrium_under_force(m.with_spring("linear"), -0.6, 0.05)
 
 
 # ------------------------------------------------------------------------------------------- branches

@@ -33,7 +33,7 @@ from ...errors import (
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
-from ...model.springs import SpringFields, Springs, linear_only
+from ...model.springs import SpringFields, Springs
 from ...numerics import LocalResult, chain_solver
 from ...outcome import Outcome, SolverInfo
 from ...serialize import number, numbers
@@ -363,6 +363,30 @@ def settle_under_force(m: Manipulator, force, q0) -> Equilibrium | None:
     return eq if eq.stable else None
 
 
+def _under_force_slack(m: Manipulator, force: np.ndarray, q0) -> Equilibrium:
+    """:func:`solve_equilibrium_under_force` of a chain with tension-only springs (the closed range, stops held:
+    :func:`~.tension_only.equilibrium_under_force_slack`); the default start is straight, nudged along the first free
+    buckling mode under a load beyond the first critical one (or a small bend where the straight chain's springs are
+    not all taut)."""
+    from .tension_only import equilibrium_under_force_slack
+
+    if q0 is not None:
+        q0 = np.asarray(q0, dtype=float)
+        if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
+            raise InvalidParameterError(f"q0 must hold {m.n} finite joint angles, got shape {q0.shape}", field="q0")
+        if np.any(np.abs(q0) > m.joint_limits):
+            raise InvalidParameterError("q0 lies outside the closed joint range |q_i| <= pi - 2 beta_i", field="q0")
+    else:
+        q0 = np.zeros(m.n)
+        try:
+            first = critical_force(m, "free", n_modes=1).modes[0]
+            if -force[0] >= first.load:
+                q0 = 0.05 * first.q / np.abs(first.q).max() * float(np.min(m.joint_limits))
+        except TensegrityError:                 # not taut when straight, or straight no equilibrium
+            q0 = 0.02 * np.cos(np.arange(m.n)) * float(np.min(m.joint_limits))
+    return equilibrium_under_force_slack(m, force, q0)
+
+
 def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=None) -> Equilibrium:
     """A local minimiser of ``E(q) - F . tip(q)`` for the tip force ``F = (fx, fy)`` (dead load).
 
@@ -385,11 +409,12 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
     NoEquilibriumError, SolverError
         (``RuntimeError``) when IPOPT does not converge or only finds a point on a joint limit.
     """
-    linear_only(m, "solve_equilibrium_under_force")
     for name, v in (("fx", fx), ("fy", fy)):
         if not math.isfinite(float(v)):
             raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
     force = np.array([float(fx), float(fy)])
+    if not m.linear_springs:
+        return _under_force_slack(m, force, q0)
     q0 = check_q0(m, q0)
     if q0 is None:
         q0 = np.zeros(m.n)
