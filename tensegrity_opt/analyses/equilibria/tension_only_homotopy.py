@@ -60,6 +60,11 @@ PATTERN_TOL = 1e-8
 REACH_DEPTH = 10
 #: A stop's contact torque above ``-CONTACT_TOL k c^2`` keeps the root a candidate (it must then classify).
 CONTACT_TOL = 1e-9
+#: Parameter-homotopy runs (each with a new ``gamma``) of a pattern before the polyhedral fallback. A pattern whose
+#: system has paths to toric infinity (some ``z_j -> 0``: joints with one slack spring of a symmetric segment) loses
+#: one or two of them to the batched tracker's end game in about 3 runs of 8 (measured), and PHCpack's re-tracking
+#: and polyhedral solve report those as failed: more runs make the set complete (~0.2 s each at n = 4).
+ATTEMPTS = 6
 #: A root is real when ``||z| - 1|`` and ``|g - conj h|`` (relative) are below this.
 REAL_TOL = 1e-6
 
@@ -385,7 +390,7 @@ def certified_equilibria_slack(m: Manipulator, target, *, timeout: float | None 
         check_time("the tension-only homotopy")
         _, (fj, tq, mu, mu_c, T, Tc) = job
         left = None if deadline is None else deadline - time.monotonic()
-        return solve_link_homotopy(tq, mu, mu_c, T, Tc, timeout=left)
+        return solve_link_homotopy(tq, mu, mu_c, T, Tc, timeout=left, attempts=ATTEMPTS)
 
     # one after the other: two side by side in threads took as long in all (measured: the tracker's many small numpy
     # operations hold the GIL)
