@@ -212,13 +212,11 @@ def _calls(m, lin_eq, P):
 
     return {
         "find_equilibria_under_force": lambda: to.find_equilibria_under_force(m, -0.1, 0.0),
-        "rest_configuration": lambda: to.rest_configuration(m),
         "solve_equilibria_batch": lambda: to.solve_equilibria_batch(m, [0.1, 0.2]),
         "Tracker": lambda: to.Tracker(m),
         "force_deflection (branch all)": lambda: to.force_deflection(m, [0.1, 0.2], branch="all"),
         "force_deflection (from rest)": lambda: to.force_deflection(m, [0.1, 0.2], reference="rest"),
         "bifurcation_diagram": lambda: to.bifurcation_diagram(m, lin_eq, to.Control.displacement(), t_max=0.1),
-        "limit_load": lambda: to.limit_load(m),
         "imperfection_sensitivity": lambda: to.imperfection_sensitivity(m, [0.01, 0.02]),
         "stability_boundary": lambda: to.stability_boundary(m, "displacement", "k"),
         "stability_atlas": lambda: to.stability_atlas(m, [0.1], [0.0]),
@@ -444,6 +442,95 @@ def test_force_control_of_the_paper_chain_rests_on_a_stop_where_the_linear_law_h
     _is_a_local_minimum_of_the_reference(m, eq)
     with pytest.raises(to.NoEquilibriumError):
         to.solve_equilibrium_under_force(m.with_spring("linear"), -0.6, 0.05)
+
+
+# ------------------------------------------------------------------------------------------- rest configuration
+@pytest.mark.parametrize("family", FAMILIES)
+def test_the_rest_configuration_of_a_tension_only_chain_is_each_segments_least_energy(family):
+    """F = 0: E is a sum of one-joint energies, so the least rest energy is the sum of each segment's least energy
+    over its closed range (the reference's, on a dense grid polished), each joint at a minimiser of its own energy,
+    a joint on a stop pushed back by it."""
+    m, _, _ = _chain(family, np.random.default_rng(9700), "tension_only", n=3)
+    segs = ref.segs_of(m)
+    try:
+        r = to.rest_configuration(m)
+    except UnsupportedError as e:           # a segment with both springs slack over part of its range: said by name
+        assert e.status == "free_joint" and e.field.startswith("segments[")
+        return
+    import scipy.optimize as so
+
+    mins = []
+    for j in range(m.n):
+        one = [segs[j]]
+        lim = ref.limits(one)[0]
+        g = np.linspace(-lim, lim, 2001)
+        v = np.array([ref.energy(one, np.array([t])) for t in g])
+        i = int(np.argmin(v))
+        pol = so.minimize_scalar(lambda t: ref.energy(one, np.array([t])), method="bounded",
+                                 bounds=(g[max(i - 1, 0)], g[min(i + 1, g.size - 1)]), options={"xatol": 1e-13})
+        mins.append(min(v[i], pol.fun))
+        assert ref.energy(one, np.array([r.q[j]])) <= mins[-1] + 1e-9 * m.torque_scale
+    assert r.energy == pytest.approx(sum(mins), abs=1e-8 * m.torque_scale)
+    assert r.status == "exact" and r.stable and r.control == "force" and np.all(r.force == 0.0)
+    tq = ref.torques(segs, r.q)
+    assert np.abs(tq[~r.at_stop]).max(initial=0.0) < 1e-8 * m.torque_scale
+    np.testing.assert_allclose(r.contact_torques[r.at_stop], (np.sign(r.q) * tq)[r.at_stop], rtol=1e-8, atol=1e-12)
+    assert np.all(r.contact_torques >= 0.0)
+
+
+# ------------------------------------------------------------------------------------------- limit loads
+def _reference_minimum_near(m, F, q0, spread=0.01, starts=4):
+    """Where L-BFGS-B on the reference potential ``E - F . tip`` (the closed range as bounds) goes from near
+    ``q0``: the farthest end point from ``q0`` over a few nearby starts."""
+    import scipy.optimize as so
+
+    segs = ref.segs_of(m)
+    lim = ref.limits(segs)
+    V = lambda q: ref.energy(segs, q) - F @ ref.tip(segs, q)  # noqa: E731
+    rng = np.random.default_rng(2)
+    far = 0.0
+    for _ in range(starts):
+        x0 = np.clip(q0 + rng.normal(0.0, spread, m.n), -lim, lim)
+        r = so.minimize(V, x0, method="L-BFGS-B", bounds=list(zip(-lim, lim)),
+                        options={"ftol": 1e-15, "gtol": 1e-11, "maxiter": 5000})
+        far = max(far, float(np.abs(r.x - q0).max()))
+    return far
+
+
+@pytest.mark.parametrize("family", ["monotonic", "asymmetric", "dy", "large"])
+def test_a_limit_load_at_a_kink_is_where_the_reference_arm_snaps(family):
+    """Under a growing dead load the tension-only arm loses stability where a spring goes slack (the load turns
+    back at the kink: a fold). Checked in the reference model: just below the limit load the path's configuration is
+    a strict local minimum of the reference potential (L-BFGS-B from nearby comes back); just above, from the limit
+    configuration, it runs away (the arm snaps)."""
+    m, _, _ = _chain(family, np.random.default_rng(9900), "tension_only", n=3)
+    r = to.limit_load(m, (-1, 0.2), "free")
+    assert r.status == "stability_lost" and r.kind == "fold" and "goes slack" in r.message
+    e = next(ev for ev in r.branch.events if ev.stability == "lost")
+    assert e.kind == "spring_slack"
+    d = np.array([-1.0, 0.2]) / math.hypot(1.0, 0.2)
+    below = np.flatnonzero(r.branch.t[:e.index + 1] < (1 - 1e-3) * r.load)
+    k = int(below[-1])                            # a path point below the limit load (before the kink)
+    assert r.branch.stable[k]
+    # its basin ends where the spring goes slack (a small step away): nearby starts only
+    assert _reference_minimum_near(m, r.branch.t[k] * d, r.branch.q[k], spread=1e-7) < 1e-5
+    assert _reference_minimum_near(m, r.load * (1 + 2e-3) * d, r.q, spread=1e-4) > 1e-2
+
+
+def test_a_limit_load_from_a_rest_on_a_stop_is_refused_by_name():
+    m, _, _ = _chain("bistable", np.random.default_rng(9900), "tension_only", n=3)
+    assert to.rest_configuration(m).at_stop.any()
+    with pytest.raises(UnsupportedError) as e:
+        to.limit_load(m)
+    assert e.value.field == "start" and e.value.status == "start_on_stop"
+
+
+def test_the_paper_chains_limit_load_is_the_critical_load_under_both_laws():
+    """Every spring is taut at the straight chain: the bifurcation at the first critical load is the linear law's."""
+    m = to.Manipulator.uniform(4, spring="tension_only")
+    r, lin = to.limit_load(m), to.limit_load(m.with_spring("linear"))
+    assert r.kind == lin.kind == "bifurcation" and r.load == pytest.approx(lin.load, rel=1e-9)
+    assert r.load == pytest.approx(to.critical_force(m.with_spring("linear"), "free").force * -1, rel=1e-6)
 
 
 # ------------------------------------------------------------------------------------------- branches

@@ -30,11 +30,13 @@ from ...errors import (
     StraightNotEquilibriumError,
     TensegrityError,
     UnreachableTargetError,
+    UnsupportedError,
 )
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
 from ...model.springs import SpringFields, Springs
 from ...numerics import LocalResult, chain_solver
+from ...numerics.slack_nlp import slack_nlp
 from ...outcome import Outcome, SolverInfo
 from ...serialize import number, numbers
 from .buckling import critical_force, tip_slope
@@ -258,6 +260,16 @@ def equilibrium_from(res: LocalResult, inertia, energy, tip, constrained: bool, 
 #: Largest accepted scaled residual of the equilibrium equations (checked in numpy, independently
 #: of the solver that produced the point).
 RESIDUAL_TOL = 1e-9
+#: Chains whose springs may go slack (the closed range, joint stops; :mod:`.tension_only` shares these): a joint
+#: within this distance of its bound (rad) rests on its stop.
+STOP_TOL = 1e-6
+#: ... or within this one where the free joints do not balance otherwise (IPOPT's interior point may end that far
+#: inside a stop it presses on).
+HELD_TOL = 1e-4
+#: Newton iterations of the polish at most.
+POLISH_ITER = 30
+#: Reduced-Hessian eigenvalues below this (times k c^2) are zero: not a strict minimum.
+EIG_TOL = 1e-9
 
 
 def is_equilibrium(m: Manipulator, res: LocalResult, target: np.ndarray | None = None, *,
@@ -368,8 +380,6 @@ def _under_force_slack(m: Manipulator, force: np.ndarray, q0) -> Equilibrium:
     :func:`~.tension_only.equilibrium_under_force_slack`); the default start is straight, nudged along the first free
     buckling mode under a load beyond the first critical one (or a small bend where the straight chain's springs are
     not all taut)."""
-    from .tension_only import equilibrium_under_force_slack
-
     if q0 is not None:
         q0 = np.asarray(q0, dtype=float)
         if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
@@ -384,7 +394,7 @@ def _under_force_slack(m: Manipulator, force: np.ndarray, q0) -> Equilibrium:
                 q0 = 0.05 * first.q / np.abs(first.q).max() * float(np.min(m.joint_limits))
         except TensegrityError:                 # not taut when straight, or straight no equilibrium
             q0 = 0.02 * np.cos(np.arange(m.n)) * float(np.min(m.joint_limits))
-    return equilibrium_under_force_slack(m, force, q0)
+    return _equilibrium_under_force_slack(m, force, q0)
 
 
 def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=None) -> Equilibrium:
@@ -439,3 +449,73 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
             f"no equilibrium inside the physical range for the tip force ({fx:g}, {fy:g}): the minimiser "
             "presses a joint against its limit", status=res.status)
     return make_equilibrium(m, res, constrained=False)
+
+
+def free_residual(m: Manipulator, q: np.ndarray, F: np.ndarray, free: np.ndarray) -> float:
+    """The free joints' equilibrium residual in numpy (scaled by k c^2), under each spring's law."""
+    r = m.gradient(q) - m.jacobian(q).T @ F
+    return float(np.abs(r[free]).max(initial=0.0)) / m.torque_scale if math.isfinite(float(r.sum())) else math.inf
+
+
+# ----------------------------------------------------------------------------- force control
+def _equilibrium_under_force_slack(m: Manipulator, force: np.ndarray, q0: np.ndarray) -> Equilibrium:
+    """A local minimiser of ``E(q) - F . tip(q)`` under each spring's law in the closed joint range, from ``q0``
+    (force control: the tip free, the dead load ``F``): IPOPT on the slack problem with the tip rows unbounded, the
+    joints at a stop read from its solution and held, Newton on the free joints' rows ``dE/dq - J^T F = 0``, the
+    residual re-checked in numpy, each stop's contact torque ``-sign(q_i)(dE/dq_i - (J^T F)_i) >= 0``, and the
+    stability of the Hessian of ``E - F . tip`` on the free joints (the stops held).
+
+    Raises :class:`NoEquilibriumError` (``RuntimeError``) where IPOPT does not converge or its point does not check
+    out, :class:`UnsupportedError` (``field="segments[i]"``, status ``free_joint``) where a segment's two springs are
+    slack and nothing holds its joint (its angle undetermined)."""
+    nlp = slack_nlp(m.n)
+    force = np.asarray(force, dtype=float)
+    lim = m.joint_limits
+    res = nlp.solve(nlp.start(m, np.clip(q0, -lim, lim)), nlp.parameters(m, np.zeros(2), force),
+                    nlp.bounds(m, free_tip=True))
+    if not res.success:
+        raise NoEquilibriumError(f"IPOPT did not converge for the tip force ({force[0]:g}, {force[1]:g}) under the "
+                                 f"springs' laws ({res.status})", status=res.status)
+    q_ip = np.array(nlp.x.unpack(res.x)["q"], dtype=float)
+    scale = m.torque_scale
+    for tol in (STOP_TOL, HELD_TOL):            # IPOPT may end a little inside a stop it presses on: then held
+        side = np.where(q_ip >= lim - tol, 1.0, np.where(q_ip <= -lim + tol, -1.0, 0.0))
+        q = np.where(side != 0.0, side * lim, q_ip)
+        free = side == 0.0
+        idx = np.flatnonzero(free)
+        for _ in range(POLISH_ITER):            # Newton on the free joints' rows (F given)
+            _, g, H, _, J = nlp.derivatives(m, q, force)
+            r = (g - J.T @ force)[idx]
+            if float(np.abs(r).max(initial=0.0)) <= 1e-13 * scale:
+                break
+            try:
+                d = np.linalg.solve(H[np.ix_(idx, idx)], -r)
+            except np.linalg.LinAlgError:
+                break
+            q = q.copy()
+            q[idx] += d
+            if np.any(np.abs(q) > lim) or float(np.abs(d).max(initial=0.0)) < 1e-15:
+                break
+        if not np.any(np.abs(q) > lim) and free_residual(m, q, force, free) <= RESIDUAL_TOL:
+            break
+    if np.any(np.abs(q) > lim) or free_residual(m, q, force, free) > RESIDUAL_TOL:
+        raise NoEquilibriumError(f"the solve for the tip force ({force[0]:g}, {force[1]:g}) did not end on an "
+                                 "equilibrium under the springs' laws", status="not_an_equilibrium")
+    E, g, H, tip, J = nlp.derivatives(m, q, force)
+    contact = np.where(free, 0.0, -side * (g - J.T @ force))
+    if np.any(contact < -1e-9 * scale):
+        raise NoEquilibriumError(f"the solve for the tip force ({force[0]:g}, {force[1]:g}) ended against a stop that "
+                                 "pulls (a negative contact torque): not an equilibrium", status="not_an_equilibrium")
+    w = np.linalg.eigvalsh(H[np.ix_(idx, idx)]) if idx.size else np.zeros(0)
+    morse = int(np.sum(w < -EIG_TOL * scale))
+    stable = morse == 0 and bool(np.all(w > EIG_TOL * scale))
+    if morse == 0 and not stable:
+        loose = [i for i in idx if np.all(m.springs.states(q)[i] == "slack")]
+        if loose:
+            i = int(loose[0])
+            raise UnsupportedError(f"both springs of segment {i} are slack under the tip force ({force[0]:g}, "
+                                   f"{force[1]:g}) and its joint is left undetermined (a free joint: no stiffness and "
+                                   "nothing holds it)", field=f"segments[{i}]", status="free_joint")
+    return Equilibrium(q=q.copy(), energy=float(m.energy(q)), force=force.copy(), morse_index=morse, stable=stable,
+                       solver=SolverInfo(res.status, res.iterations), tip=m.tip(q), control="force",
+                       hessian_eigenvalues=w, springs=m.springs, stops=(side != 0.0, np.maximum(contact, 0.0)))

@@ -39,7 +39,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
+from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError, UnsupportedError
 from ...model.combinations import combination_indices, sample_combinations
 from ...model.manipulator import Manipulator
 from ...model.springs import linear_only
@@ -471,16 +471,33 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
         (``RuntimeError``) some segment has no well inside its range (its unloaded energy decreases
         towards a joint limit): the chain has no stable rest configuration.
     """
-    linear_only(m, "rest_configuration")
     if which != "least_energy":
         raise InvalidParameterError(f"which must be 'least_energy', got {which!r}", field="which")
+    if not m.linear_springs:
+        return _slack_rest(m)
     q = _least_energy_well(m)
     res = LocalResult(q, np.zeros(2), True, "exact", 0)
     return make_equilibrium(m, res, constrained=False, status="exact")
 
 
 def _least_energy_well(m: Manipulator) -> np.ndarray:
-    """The rule of :func:`rest_configuration` on the product of the segments' wells, without enumerating it.
+    """The rule of :func:`rest_configuration` on the product of the segments' wells, without enumerating it
+    (:func:`_tie_rule`)."""
+    wells, energies = [], []
+    for j, (q, d2, e) in enumerate(_segment_points(m)):
+        stable = _factor_kind(m, d2) == 1
+        if not stable.any():
+            raise NoEquilibriumError(
+                f"segment {j + 1} has no well inside its range (no non-degenerate minimum of its unloaded energy "
+                "there): the chain has no stable rest configuration", status="no_rest_configuration")
+        wells.append(q[stable])
+        energies.append(e[stable])
+    chosen = _tie_rule(wells, energies, ENERGY_TIE * m.torque_scale)
+    return np.array([w[i] for w, i in zip(wells, chosen)])
+
+
+def _tie_rule(wells: list[np.ndarray], energies: list[np.ndarray], tol: float) -> list[int]:
+    """Per segment, the index of its well in the least-energy combination chosen by :func:`rest_configuration`'s rule.
 
     A combination of wells exceeds the least energy by the sum of its segments' excesses ``d_j`` over their
     own least well energy; it ties when that sum is at most ``tol``. The least ``max |q_i|`` of a tie is the
@@ -489,30 +506,93 @@ def _least_energy_well(m: Manipulator) -> np.ndarray:
     whose excess still leaves the remaining segments' least excesses within the budget. Exact for the
     product set: each step checks that a completion exists.
     """
-    wells, excess = [], []
-    for j, (q, d2, e) in enumerate(_segment_points(m)):
-        stable = _factor_kind(m, d2) == 1
-        if not stable.any():
-            raise NoEquilibriumError(
-                f"segment {j + 1} has no well inside its range (no non-degenerate minimum of its unloaded energy "
-                "there): the chain has no stable rest configuration", status="no_rest_configuration")
-        wells.append(_rounded(q[stable]))
-        excess.append(e[stable] - e[stable].min())
-    tol = ENERGY_TIE * m.torque_scale
-    chosen = [None] * m.n
+    n = len(wells)
+    rounded = [_rounded(w) for w in wells]
+    excess = [e - e.min() for e in energies]
 
     def least(j: int, bound: float) -> float:
-        ok = np.abs(wells[j]) <= bound
+        ok = np.abs(rounded[j]) <= bound
         return float(excess[j][ok].min()) if ok.any() else math.inf
 
-    for bound in np.unique(np.concatenate([np.abs(w) for w in wells])).tolist():
-        if sum(least(j, bound) for j in range(m.n)) <= tol:
+    for bound in np.unique(np.concatenate([np.abs(w) for w in rounded])).tolist():
+        if sum(least(j, bound) for j in range(n)) <= tol:
             break
+    chosen = []
     used = 0.0
-    for j in range(m.n):
-        rest = sum(least(k, bound) for k in range(j + 1, m.n))
-        ok = (np.abs(wells[j]) <= bound) & (used + excess[j] + rest <= tol)
-        i = int(np.flatnonzero(ok)[np.argmax(wells[j][ok])])
-        chosen[j] = i
+    for j in range(n):
+        rest = sum(least(k, bound) for k in range(j + 1, n))
+        ok = (np.abs(rounded[j]) <= bound) & (used + excess[j] + rest <= tol)
+        i = int(np.flatnonzero(ok)[np.argmax(rounded[j][ok])])
+        chosen.append(i)
         used += float(excess[j][i])
-    return np.array([q[_factor_kind(m, d2) == 1][i] for (q, d2, _), i in zip(_segment_points(m), chosen)])
+    return chosen
+
+
+def _slack_wells(m: Manipulator, j: int) -> tuple[np.ndarray, np.ndarray]:
+    """Segment ``j``'s unloaded wells under its springs' laws over the *closed* range: ``(angles, energies)``.
+
+    Inside the range the wells are the zeros of the torque of each taut/slack option (its Laurent polynomial's
+    roots on the unit circle, in the option's intervals, polished by Newton on the torque) with ``E'' > 0``
+    (one-sided at a spring's rest length); a stop is a well where the energy still falls towards it (the stop then
+    pushes back: contact torque ``-s dE/dq(s lim) > 0``). A segment whose least energy (0) is reached on an interval
+    where both springs are slack has a free joint: refused by name (:class:`UnsupportedError`, ``field`` the
+    segment, status ``free_joint``)."""
+    from ...model.segment import torque_coefficients
+    from .tension_only_homotopy import joint_options
+
+    seg = m.segments[j]
+    tol = 1e-9 * m.torque_scale
+    lim = seg.joint_limit
+    qs: list[float] = []
+    for o in joint_options(seg):
+        if o.side:
+            slope = float(-seg.torque(o.side * lim))             # dE/dq at the stop
+            if o.side * slope < -tol:
+                qs.append(o.side * lim)
+            continue
+        if o.loose:
+            raise UnsupportedError(
+                f"both springs of segment {j} are slack over part of its range with no tip force: its joint is free "
+                "there (no stiffness) and the unloaded chain's configuration is not determined", field=f"segments[{j}]",
+                status="free_joint")
+        poly = torque_coefficients(seg.a, seg.b, seg.k1 * o.taut[0], seg.k2 * o.taut[1], seg.L1_0, seg.L2_0)
+        roots = np.roots([poly[2], poly[1], poly[0], poly[-1], poly[-2]])
+        for z in roots[(np.abs(np.abs(roots) - 1.0) < 1e-6) & (roots.real > 0.0)]:
+            q = 2.0 * float(np.angle(z))
+            for _ in range(3):
+                d = float(seg.dtorque(q))
+                if d == 0.0:
+                    break
+                q = q - float(seg.torque(q)) / d
+            if o.contains(q) and abs(q) <= lim and float(-seg.dtorque(q)) > tol:
+                qs.append(q)
+    q = np.array(qs, dtype=float)
+    q = np.where(np.abs(np.abs(q) - lim) <= 1e-9, np.sign(q) * lim, q)      # a well on the stop is the stop
+    q = np.sort(q)
+    q = q[np.concatenate([[True], np.diff(q) > 1e-9])] if q.size else q
+    return q, np.asarray(seg.energy(q), dtype=float).reshape(-1)
+
+
+def _slack_rest(m: Manipulator) -> Equilibrium:
+    """:func:`rest_configuration` of a chain with tension-only springs: the same rule on the segments' wells under
+    their laws, stops included (:func:`_slack_wells`)."""
+    wells, energies = [], []
+    for j in range(m.n):
+        q, e = _slack_wells(m, j)
+        if not q.size:
+            raise NoEquilibriumError(f"segment {j + 1} has no well in its closed range under its springs' laws: the "
+                                     "chain has no stable rest configuration", status="no_rest_configuration")
+        wells.append(q)
+        energies.append(e)
+    chosen = _tie_rule(wells, energies, ENERGY_TIE * m.torque_scale)
+    q = np.array([w[i] for w, i in zip(wells, chosen)])
+    lim = m.joint_limits
+    side = np.where(q >= lim, 1.0, np.where(q <= -lim, -1.0, 0.0))
+    contact = np.where(side != 0.0, side * m.torques(q), 0.0)       # -s dE/dq = s M
+    free = side == 0.0
+    w = np.array([float(-m.segments[i].dtorque(q[i])) for i in np.flatnonzero(free)])
+    return Equilibrium(q=q, energy=float(m.energy(q)), force=np.zeros(2), morse_index=0, stable=True,
+                       solver=SolverInfo("exact", 0), tip=m.tip(q), control="force", status="exact",
+                       hessian_eigenvalues=np.sort(w), springs=m.springs, stops=(side != 0.0, np.maximum(contact, 0)))
+
+

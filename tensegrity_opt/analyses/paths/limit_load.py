@@ -30,9 +30,9 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InvalidParameterError, NoEquilibriumError
+from ...errors import InvalidParameterError, NoEquilibriumError, UnsupportedError
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs, linear_only
+from ...model.springs import SpringFields, Springs
 from ...outcome import Outcome
 from ...serialize import nullable, number, numbers
 from ...timelimit import time_limit
@@ -244,7 +244,6 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
         (``ValueError``) for a bad direction, boundary, ``base``, ``max_load``, or a start that is not a
         stable equilibrium under ``base`` (a rest configuration when it is zero).
     """
-    linear_only(m, "limit_load")
     if boundary not in ("free", "guided"):
         raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")
     control = Control.load(direction, base) if boundary == "free" else Control.guided(direction, base)
@@ -269,6 +268,11 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
             what = "an equilibrium under the base load" if loaded else "a rest configuration"
             raise InvalidParameterError(f"start is not (near) {what}: Newton under that load moved it "
                                         f"by {np.abs(eq0.q - q0).max():.3g} rad", field="start")
+    if eq0.at_stop.any():
+        j = int(np.flatnonzero(eq0.at_stop)[0])
+        raise UnsupportedError(f"the start rests on joint {j + 1}'s stop (the arm as built: a slack spring lets it "
+                               "reach it); the loading path is followed by arclength continuation inside the range "
+                               "only", field="start", status="start_on_stop")
     bound = max_load
     br0 = trace_branch(m, eq0.q, control, t_max=1.0, max_points=3)        # its problem gives the force scale
     if bound is None:
@@ -283,9 +287,14 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
     if lost:
         e = lost[0]
         qb_upto = e.index
-        kind = "fold" if e.kind == "fold" else "bifurcation"
+        # a spring going slack (or taut) where stability is lost: the load turns back at the kink (a fold of a
+        # tension-only chain's path, whose tangent jumps there)
+        kind = "fold" if e.kind in ("fold", "spring_slack", "spring_taut") else "bifurcation"
+        where = (f" where spring {e.joint + 1}.{e.spring} goes {'slack' if e.kind == 'spring_slack' else 'taut'}"
+                 if e.kind in ("spring_slack", "spring_taut") else "")
         qb, qbf, qbk = _quasi_buckling(br, d, qb_upto)
-        return LimitLoad("stability_lost", f"stability is lost at a {kind} at load {e.t:.7g}", e.t, e.force.copy(),
+        return LimitLoad("stability_lost", f"stability is lost at a {kind}{where} at load {e.t:.7g}", e.t,
+                         e.force.copy(),
                          e.q.copy(), kind, e.null_vector, qb, qbf, e.t, d, boundary, eq0, br, F0.copy(), qbk)
     status = {"t_max": "max_load"}.get(br.status, br.status)
     stable_end = int(np.flatnonzero(br.stable)[-1]) if br.stable.any() else 0

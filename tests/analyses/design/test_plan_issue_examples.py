@@ -33,7 +33,7 @@ def five_random_segments(seed: int = 39) -> to.Manipulator:
     return to.Manipulator(_segment(rng, f) for f in fam)
 
 
-@pytest.mark.slow_cases(keep=1)
+@pytest.mark.slow          # ~12 s a seed: the fast lane's budget (issue 39's other examples stay in it)
 @pytest.mark.parametrize("seed", [39, 2])
 def test_a_horizon_step_that_hid_a_snap_is_not_sent(seed):
     """Targets moving, then (100, 100) three times, then back; approach, horizon 5, rate 0.1, dt 0.5, margin 0.01:
@@ -109,6 +109,7 @@ def test_a_held_step_below_the_margin_is_not_verified():
     assert reach.verified.all() and counts["verified"] == 1 and reach.margin[0] >= 0.3 - 1e-7
 
 
+@pytest.mark.slow_cases(keep=1)            # the horizon case (~7 s) in the slow lane: the fast one's budget
 @pytest.mark.parametrize("horizon", [None, "all"])
 def test_a_step_without_equilibrium_is_a_state_and_the_plan_goes_on_from_it(horizon):
     """The paper chain, 8 targets moving (-0.02, 0.04) a step, a load (-5, 0) at step 5 only: no equilibrium at

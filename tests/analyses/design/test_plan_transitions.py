@@ -147,7 +147,7 @@ def m_with(m, ell):
     return to.Manipulator(s.replace(L0=(float(a), float(b))) for s, (a, b) in zip(m.segments, ell))
 
 
-@pytest.mark.slow_cases(keep=2)
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("seed", range(36))
 def test_every_step_of_a_random_plan_holds_along_its_transition(seed):
     m, targets, kw = random_plan(seed)
