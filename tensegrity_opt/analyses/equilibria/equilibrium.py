@@ -287,7 +287,9 @@ def is_equilibrium(m: Manipulator, res: LocalResult, target: np.ndarray | None =
     return not check_residual or m.equilibrium_residual(res.q, res.force, target) <= RESIDUAL_TOL
 
 
-def check_q0(m: Manipulator, q0) -> np.ndarray | None:
+def check_q0(m: Manipulator, q0, *, closed: bool = False) -> np.ndarray | None:
+    """``q0`` as an array of ``n`` angles inside the open physical range (``closed``: the closed one, where a joint
+    may rest on its stop: the tension-only solves), or None; else :class:`InvalidParameterError` (``field="q0"``)."""
     if q0 is None:
         return None
     q0 = np.asarray(q0, dtype=float)
@@ -295,6 +297,10 @@ def check_q0(m: Manipulator, q0) -> np.ndarray | None:
         return q0
     if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
         raise InvalidParameterError(f"q0 must hold {m.n} finite joint angles, got shape {q0.shape}", field="q0")
+    if closed and np.all(np.abs(q0) <= m.joint_limits):
+        return q0
+    if closed:
+        raise InvalidParameterError("q0 lies outside the closed joint range |q_i| <= pi - 2 beta_i", field="q0")
     raise InvalidParameterError("q0 lies outside the physical joint range |q_i| < pi - 2 beta_i", field="q0")
 
 
@@ -377,16 +383,11 @@ def settle_under_force(m: Manipulator, force, q0) -> Equilibrium | None:
 
 def _under_force_slack(m: Manipulator, force: np.ndarray, q0) -> Equilibrium:
     """:func:`solve_equilibrium_under_force` of a chain with tension-only springs (the closed range, stops held:
-    :func:`~.tension_only.equilibrium_under_force_slack`); the default start is straight, nudged along the first free
+    :func:`_equilibrium_under_force_slack`); the default start is straight, nudged along the first free
     buckling mode under a load beyond the first critical one (or a small bend where the straight chain's springs are
     not all taut)."""
-    if q0 is not None:
-        q0 = np.asarray(q0, dtype=float)
-        if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
-            raise InvalidParameterError(f"q0 must hold {m.n} finite joint angles, got shape {q0.shape}", field="q0")
-        if np.any(np.abs(q0) > m.joint_limits):
-            raise InvalidParameterError("q0 lies outside the closed joint range |q_i| <= pi - 2 beta_i", field="q0")
-    else:
+    q0 = check_q0(m, q0, closed=True)
+    if q0 is None:
         q0 = np.zeros(m.n)
         try:
             first = critical_force(m, "free", n_modes=1).modes[0]

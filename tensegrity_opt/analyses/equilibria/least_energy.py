@@ -155,12 +155,7 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
                                "is solved by its own search (method 'auto') or its patterns' homotopy (method "
                                "'homotopy')", field="method", spring="tension_only")
     target = m.check_reachable(dx, dy)
-    if q0 is not None:                          # the closed range: a start may rest on a stop
-        q0 = np.asarray(q0, dtype=float)
-        if q0.shape != (m.n,) or not np.all(np.isfinite(q0)):
-            raise InvalidParameterError(f"q0 must hold {m.n} finite joint angles, got shape {q0.shape}", field="q0")
-        if np.any(np.abs(q0) > m.joint_limits):
-            raise InvalidParameterError("q0 lies outside the closed joint range |q_i| <= pi - 2 beta_i", field="q0")
+    q0 = check_q0(m, q0, closed=True)           # the closed range: a start may rest on a stop
     if local and q0 is None:
         raise InvalidParameterError("local=True needs q0", field="q0")
     if method == "homotopy" and not local:

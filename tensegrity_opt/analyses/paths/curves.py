@@ -473,7 +473,7 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
     if not m.linear_springs:
         if reference == "rest":
             linear_only(m, "force_deflection (reference='rest')")
-        return _slack_curve(m, dx, dy, branch, np.zeros(2))
+        return _slack_curve(m, dx, dy, branch)
     if reference == "rest":
         return _from_rest(m, dx, dy, branch, recheck_every)
     return _curve(m, dx, dy, branch, recheck_every, np.zeros(2))
@@ -557,7 +557,7 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
     return replace(curve, **extra)
 
 
-def _slack_curve(m: Manipulator, dx, dy, branch: str, origin: np.ndarray) -> Curve:
+def _slack_curve(m: Manipulator, dx, dy, branch: str) -> Curve:
     """:func:`force_deflection` of a chain with tension-only springs: at every point the least-energy stable
     equilibrium of the closed range (the global search of :mod:`~..equilibria.tension_only`, the previous point's
     configuration one of its starts: the same definition as the linear law's curve), stops included. The branch
@@ -589,7 +589,7 @@ def _slack_curve(m: Manipulator, dx, dy, branch: str, origin: np.ndarray) -> Cur
             g = least_energy_slack(m, float(dxs[j]), float(dys[j]), target, q0=q0)
         except (NoEquilibriumError, UnreachableTargetError, UnsupportedError) as exc:
             end = j
-            dxo, dyo = float(dxs[j] - origin[0]), float(dys[j] - origin[1])
+            dxo, dyo = float(dxs[j]), float(dys[j])
             ended = CurveEnd(dxo, dyo, "no_stable_equilibrium",
                              f"No stable equilibrium at dx = {dxo:g}, dy = {dyo:g} under the springs' laws: "
                              f"{exc}.")
