@@ -166,6 +166,12 @@ class Segment:
         q = np.asarray(q, dtype=float)
         return (2.0 * self.c * np.cos(self.beta + q / 2.0), 2.0 * self.c * np.cos(self.beta - q / 2.0))
 
+    def spring_rates(self, q: Any) -> tuple[tuple[np.ndarray, np.ndarray], tuple[np.ndarray, np.ndarray]]:
+        """The derivatives of the spring lengths in the joint angle: ``((L1', L2'), (L1'', L2''))`` at ``q``."""
+        q = np.asarray(q, dtype=float)
+        c, a1, a2 = self.c, self.beta + q / 2.0, self.beta - q / 2.0
+        return (-c * np.sin(a1), c * np.sin(a2)), (-0.5 * c * np.cos(a1), -0.5 * c * np.cos(a2))
+
     def spring_forces(self, q: Any) -> tuple[np.ndarray, np.ndarray]:
         """Spring tensions ``F_i = k_i (L_i - L_i0)`` (force units; > 0 in tension); ``k_i max(0, L_i - L_i0)``
         under the tension-only law."""

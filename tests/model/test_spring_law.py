@@ -208,8 +208,6 @@ def test_the_least_energy_of_a_tension_only_chain_equals_the_brute_force(family,
 
 # ------------------------------------------------------------------------------------------- refusals
 def _calls(m, lin_eq, P):
-    from tensegrity_opt.analyses.paths.transition import transition
-
     return {
         "find_equilibria_under_force": lambda: to.find_equilibria_under_force(m, -0.1, 0.0),
         "solve_equilibria_batch": lambda: to.solve_equilibria_batch(m, [0.1, 0.2]),
@@ -220,8 +218,6 @@ def _calls(m, lin_eq, P):
         "imperfection_sensitivity": lambda: to.imperfection_sensitivity(m, [0.01, 0.02]),
         "stability_boundary": lambda: to.stability_boundary(m, "displacement", "k"),
         "stability_atlas": lambda: to.stability_atlas(m, [0.1], [0.0]),
-        "simulate": lambda: to.simulate(m, np.repeat(P[None], 2, 0), loads=np.zeros((2, 2))),
-        "transition": lambda: transition(m, lin_eq, np.stack([P, P * 1.01])),
         "maximize_critical_force": lambda: to.maximize_critical_force(m),
         "preloads_for_pose": lambda: to.preloads_for_pose(m, (5.5, 0.3)),
         "preloads_for_critical_force": lambda: to.preloads_for_critical_force(m, 0.5),
@@ -737,3 +733,128 @@ def test_preloads_for_a_pose_of_a_tension_only_chain_keep_every_spring_taut():
     H = np.array([(ref.torques(segs, d.q - h * e) - ref.torques(segs, d.q + h * e)) / (2 * h) for e in np.eye(4)])
     assert np.linalg.eigvalsh(0.5 * (H + H.T)).min() > 0.5 * d.margin
     assert (d.spring_states == "taut").all()
+
+
+# ------------------------------------------------------------------------------------------- simulation, transitions
+def _reference_flow(m, F, q0):
+    """Where the reference gradient flow ``dq/dtau = -grad V`` of ``V = E - F . tip`` (the reference torques) goes
+    from ``q0``: ``("bound", q)`` where a joint reaches its range bound, ``("rest", q)`` where it settles."""
+    from scipy.integrate import solve_ivp
+
+    segs = ref.segs_of(m)
+    lim = ref.limits(segs)
+
+    def bound(_t, q):
+        return float(np.min(lim * (1.0 - 1e-6) - np.abs(q)))
+
+    bound.terminal = True
+    sol = solve_ivp(lambda _t, q: ref.torques(segs, q) + ref.tip_jacobian(segs, q).T @ F, (0.0, 1e4), q0,
+                    method="LSODA", rtol=1e-10, atol=1e-12, events=bound)
+    return ("bound" if sol.status == 1 else "rest"), sol.y[:, -1]
+
+
+def _states_are_reference_minima(m, sim, rest_lengths):
+    """Every state of a free-tip series is a strict local minimum of the reference potential under its own rest
+    lengths (free joints balance; L-BFGS-B from nearby comes back), with the reference's spring states."""
+    for k in range(len(sim)):
+        mk = to.Manipulator(sg.replace(L0=tuple(c)) for sg, c in zip(m.segments, rest_lengths[k]))
+        segs = ref.segs_of(mk)
+        r = ref.torques(segs, sim.q[k]) + ref.tip_jacobian(segs, sim.q[k]).T @ sim.force[k]
+        assert np.abs(r).max() < 1e-8 * m.torque_scale, k
+        assert _reference_minimum_near(mk, sim.force[k], sim.q[k], spread=1e-5) < 1e-5, k
+        L0 = np.asarray(rest_lengths[k], float)
+        slack = ref.lengths(segs, sim.q[k]) - L0 < 0.0
+        assert (sim.spring_states[k] == "slack").tolist() == slack.tolist(), k
+
+
+@pytest.mark.parametrize("family", ["monotonic", "asymmetric", "dy", "large"])
+def test_a_simulation_of_a_tension_only_chain_snaps_where_a_spring_goes_slack(family):
+    """A growing compressive load: the arm follows its branch (every state a strict local minimum of the reference
+    potential) until a spring goes slack and the branch turns back at the kink; there it snaps. The kink is where a
+    reference spring reaches its rest length; just past the event's load the reference arm runs away from it; the
+    reference gradient flow from where the descent starts goes where the simulation says (here into a joint's
+    stop: the arm as built rests on it, which ends the simulation, status joint_limit)."""
+    m, _, _ = _chain(family, np.random.default_rng(9900), "tension_only", n=3)
+    F = np.array([-1.0, 0.15]) * np.linspace(0.0, 1.0, 41)[:, None] * 3.0 * m.torque_scale / m.straight_length
+    sim = to.simulate(m, loads=F)
+    P = np.repeat(np.column_stack([m.L1_0, m.L2_0])[None], len(F), 0)
+    _states_are_reference_minima(m, sim, P)
+    assert sim.snaps, sim.message
+    e = sim.snaps[0]
+    segs = ref.segs_of(m)
+    stretch = ref.lengths(segs, e.q_before) - P[0]
+    assert np.abs(stretch).min() < 1e-8                              # a kink: a spring at its rest length
+    assert _reference_minimum_near(m, e.load * (1 + 2e-3), e.q_before, spread=1e-4) > 1e-2      # it snaps
+    assert _reference_minimum_near(m, sim.force[e.step], sim.q[e.step], spread=1e-5) < 1e-5     # stable before
+    q0 = e.q_before + e.direction * 1e-4 * e.null_vector
+    V = lambda q: ref.energy(segs, q) - e.load @ ref.tip(segs, q)  # noqa: E731
+    assert V(q0) < V(e.q_before)                                     # the descent starts downhill
+    where, q = _reference_flow(m, e.load, q0)
+    if e.status == "joint_limit":
+        assert where == "bound" and sim.status == "joint_limit"
+    else:
+        assert where == "rest" and np.abs(q - e.q_after).max() < 1e-6
+
+
+def test_a_held_tip_simulation_of_the_paper_chain_passes_its_springs_going_slack():
+    """The tip held and moved: springs 2.2 then 1.1 go slack on the way (each state the reference's) and the arm
+    follows, stable, until joint 1 reaches its stop. Each state is a strict local minimum of the reference energy
+    on the tip constraint (SLSQP from nearby starts comes back)."""
+    import scipy.optimize as so
+
+    m = to.Manipulator.uniform(3, spring="tension_only")
+    T = np.column_stack([np.linspace(0.5, 1.7, 25), np.zeros(25)])
+    sim = to.simulate(m, tip="held", targets=T)
+    assert sim.status == "joint_limit" and 17 <= len(sim) < 25
+    segs = ref.segs_of(m)
+    L0 = np.column_stack([m.L1_0, m.L2_0])
+    rng = np.random.default_rng(3)
+    for k in range(len(sim)):
+        tgt = ref.target(segs, *T[k])
+        assert np.abs(ref.tip(segs, sim.q[k]) - tgt).max() < 1e-10
+        slack = ref.lengths(segs, sim.q[k]) - L0 < 0.0
+        assert (sim.spring_states[k] == "slack").tolist() == slack.tolist()
+        assert sim.stable[k]
+        for _ in range(2):
+            res = so.minimize(lambda q: ref.energy(segs, q), sim.q[k] + rng.normal(0.0, 1e-3, 3), method="SLSQP",
+                              constraints={"type": "eq", "fun": lambda q, t=tgt: ref.tip(segs, q) - t},
+                              options={"ftol": 1e-15, "maxiter": 500})
+            assert np.abs(res.x - sim.q[k]).max() < 1e-5, k
+    slack_at = [k for k in range(len(sim)) if (sim.spring_states[k] == "slack").any()]
+    assert slack_at and (sim.spring_states[0] == "taut").all()
+    assert sim.events[-1].kind == "joint_limit"
+
+
+def test_a_preload_move_lets_a_tension_only_spring_go_slack_and_the_arm_follows():
+    """Raising a rest length past the spring's length under a load: the spring goes slack during the move (a kink
+    where the rest length moves, not the arm), the arm follows; its end is a strict local minimum of the reference
+    potential under the final rest lengths."""
+    from tensegrity_opt.analyses.paths.transition import transition
+
+    m = to.Manipulator.uniform(3, spring="tension_only")
+    P0 = np.column_stack([m.L1_0, m.L2_0])
+    P1 = P0.copy()
+    P1[1, 0] = 2.6
+    F = np.array([0.0, 0.2])
+    start = to.solve_equilibrium_under_force(m, *F, q0=to.rest_configuration(m).q)
+    tr = transition(m, start, [P0, P1], loads=[F, F])
+    assert tr.status == "followed" and tr.stable and tr.margin > 0
+    assert tr.spring_states[1, 0] == "slack" and (start.spring_states == "taut").all()
+    m1 = to.Manipulator(sg.replace(L0=tuple(c)) for sg, c in zip(m.segments, P1))
+    segs = ref.segs_of(m1)
+    r = ref.torques(segs, tr.q) + ref.tip_jacobian(segs, tr.q).T @ F
+    assert np.abs(r).max() < 1e-8
+    assert _reference_minimum_near(m1, F, tr.q, spread=1e-5) < 1e-5
+    # the branch's spring event sits where the spring's length equals its (moving) rest length
+    br = to.trace_branch(m, start, to.Control.move(3, preload=P1 - P0, load=np.zeros(2), base=F), t_max=1.0)
+    ev = [e for e in br.events if e.kind == "spring_slack"]
+    assert len(ev) == 1 and ev[0].joint == 1 and ev[0].spring == 1
+    L0t = P0[1, 0] + ev[0].t * (P1[1, 0] - P0[1, 0])
+    assert abs(ref.lengths(ref.segs_of(m), ev[0].q)[1, 0] - L0t) < 1e-9
+
+
+def test_a_simulation_from_a_rest_on_a_stop_is_refused_by_name():
+    m, _, _ = _chain("bistable", np.random.default_rng(9900), "tension_only", n=3)
+    with pytest.raises(UnsupportedError) as e:
+        to.simulate(m, loads=np.zeros((3, 2)))
+    assert e.value.field == "start" and e.value.status == "start_on_stop"

@@ -120,6 +120,19 @@ def test_simulation_is_the_library_simulation(client):
     assert got == body_of(to.simulate(M3, P, perturbation=2e-4).to_dict())
 
 
+def test_simulation_of_a_tension_only_chain_is_the_library_simulation(client):
+    """The spring law travels in the segment body; a start on a stop is refused naming the start."""
+    chain = {"n": 3, "spring": "tension_only"}
+    m = to.Manipulator.uniform(3, spring="tension_only")
+    held = {"manipulator": chain, "tip": "held", "targets": [[0.8, 0.0], [1.0, 0.0], [1.2, 0.0]]}
+    got = post_ok(client, "/v1/control/simulate", held)
+    assert got == body_of(to.simulate(m, tip="held", targets=held["targets"]).to_dict())
+    assert any("slack" in seg for seg in got["spring_states"][-1])           # spring 2.2 goes slack on the way
+    bistable = {"n": 3, "a": 0.5, "b": 1.0, "k": 1.0, "L0": 0.5, "spring": "tension_only"}
+    check_error(client.post("/v1/control/simulate", json={"manipulator": bistable, "loads": [[0, 0], [0, 0.1]]}),
+                "unsupported", "start.q")
+
+
 def test_force_estimate_is_the_library_estimate(client):
     for body, kw in [({"q_measured": EQ_Q, "sigma_q": 1e-3}, {"sigma_q": 1e-3}),
                      ({"q_measured": EQ_Q}, {}),

@@ -364,46 +364,55 @@ def _unlocated(a: PathPoint, b: PathPoint, new: list[BranchEvent]) -> bool:
 KINK_STEP = 1e-5
 #: ... a spring changing state within this scaled distance ahead along the tangent.
 KINK_AHEAD = 1e-3
+#: The kink's point is taken this far (relative to the rest length) past it, on the far side: its classification,
+#: its tangent and the spring's state are the far side's, and the spring event lies between it and the point before.
+KINK_PAST = 1e-12
 
 
 def _across_kink(prob: PathProblem, a: PathPoint, h: float) -> PathPoint | None:
     """The kink just ahead of ``a`` (a tension-only spring reaching its rest length within ``h`` along the tangent):
-    the point of the branch where its stretch is zero (Newton on ``R = 0`` and that stretch ``= 0`` from ``a``) with
-    the branch's tangent beyond it: the far side's equations' tangent there (their Jacobian: the point moved across
-    the spring's rest length in that joint), oriented so that the stretch goes on across zero (the branch may turn
-    back in ``t`` there: a fold at the kink, where the stability changes). None when no spring changes state ahead or
-    Newton fails."""
+    the point of the branch where its stretch is just past zero (``KINK_PAST``, on the far side; Newton on ``R = 0``
+    and that stretch from ``a``; the rest length moves with ``t`` under a preload or move control) with the branch's
+    tangent beyond it: the far side's equations' tangent there, oriented so that the stretch goes on across zero
+    (the branch may turn back in ``t`` there: a fold at the kink, where the stability changes; the point is classified
+    as the far side, so the spring event located between ``a`` and it carries the change). None when no spring
+    changes state ahead or Newton fails."""
     m = prob.m
     if m.linear_springs:
         return None
     at = prob.point
     iq = at["q"].start
     q = a.x[at["q"]]
-    ahead = (a.x + h * a.tau / prob.w)[at["q"]]
+    ahead = a.x + h * a.tau / prob.w
     sp = prob.springs_at(float(a.x[at["t"]]))
-    r0, r1 = sp.stretches(q), sp.stretches(ahead)
+    r0, r1 = sp.stretches(q), prob.springs_at(float(ahead[at["t"]])).stretches(ahead[at["q"]])
     cross = [(int(j), int(i)) for j, i in zip(*np.nonzero((r0 > 0.0) != (r1 > 0.0))) if m.segments[int(j)].tension_only]
     if len(cross) != 1:
         return None
     j, i = cross[0]
     seg = m.segments[j]
-    sgn = 1.0 if i == 0 else -1.0
-    L0 = seg.L1_0 if i == 0 else seg.L2_0
+    it = at["t"]
+    L0 = float(sp.L0[j, i])
+    dl = prob.control.preload_direction                # the rest lengths move with t (preload, move controls)
+    rate_t = 0.0 if dl is None else float(dl[j, i])
 
     def stretch(x):
-        ang = seg.beta + sgn * x[iq + j] / 2.0
-        return 2.0 * seg.c * math.cos(ang) - L0, -sgn * seg.c * math.sin(ang)      # L - L0, dL/dq_j
+        qj = float(x[iq + j])
+        L0t = float(prob.springs_at(float(x[it])).L0[j, i])
+        return float(seg.spring_lengths(qj)[i]) - L0t, float(seg.spring_rates(qj)[0][i])     # L - L0, dL/dq_j
 
+    want = -1.0 if r0[j, i] > 0.0 else 1.0              # the far side: the stretch goes on across zero
+    past = want * KINK_PAST * max(1.0, L0)              # the point just past the rest length: the far side's
     x = a.x.copy()
     for _ in range(NEWTON_ITER):
         R, Rx = prob.eval(x)
         r, d = stretch(x)
-        if prob.residual(R) <= NEWTON_TOL and abs(r) <= 1e-14 * max(1.0, L0):
+        if prob.residual(R) <= NEWTON_TOL and abs(r - past) <= 1e-14 * max(1.0, L0):
             break
         row = np.zeros(Rx.shape[1])
-        row[iq + j] = d
+        row[iq + j], row[it] = d, -rate_t
         try:
-            x = x + np.linalg.solve(np.vstack([Rx, row]), -np.concatenate([R, [r]]))
+            x = x + np.linalg.solve(np.vstack([Rx, row]), -np.concatenate([R, [r - past]]))
         except np.linalg.LinAlgError:
             return None
     else:
@@ -411,14 +420,11 @@ def _across_kink(prob: PathProblem, a: PathPoint, h: float) -> PathPoint | None:
     r, d = stretch(x)
     if d == 0.0 or not np.all(np.isfinite(x)) or float(np.linalg.norm((x - a.x) * prob.w)) > h:
         return None
-    want = -1.0 if r0[j, i] > 0.0 else 1.0              # the far side: the stretch goes on across zero
-    nudged = x.copy()
-    nudged[iq + j] += want * 1e-9 * max(1.0, L0) / d       # the stretch now 1e-9 on the far side
     try:
-        tau = prob.tangent(nudged, a.tau)
+        tau = prob.tangent(x, a.tau)
     except (np.linalg.LinAlgError, ValueError):
         return None
-    rate = d * float(tau[iq + j])
+    rate = d * float(tau[iq + j]) / float(prob.w[iq + j]) - rate_t * float(tau[it]) / float(prob.w[it])     # of L - L0
     if not np.all(np.isfinite(tau)) or rate == 0.0:
         return None
     return path_point(prob, x, tau if rate * want > 0.0 else -tau)
@@ -461,10 +467,17 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
                 k = _across_kink(prob, a, KINK_AHEAD)
                 if k is not None:                 # a spring's state changes just ahead: the kink, then its far side
                     hk = float(np.linalg.norm((k.x - a.x) * prob.w))
-                    events.extend(events_between(prob, len(pts) - 1, a, k, hk))
+                    new = events_between(prob, len(pts) - 1, a, k, hk)
+                    events.extend(new)
                     pts.append(k)
                     s.append(s[-1] + hk)
                     h, kinked = max(2.0 * h, min(step, max_step) * 0.1), True
+                    if stop_at == "event" and new:
+                        status, message = "event", f"stopped at the first event ({new[0].kind})"
+                        break
+                    if stop_at == "stability_loss" and any(e.stability == "lost" for e in new):
+                        status, message = "stability_loss", "stopped where the branch first loses stability"
+                        break
                     continue
             if h < min_step:
                 if len(pts) == 1 and prob.held_rows.shape[0] == 2 and _tip_rank(a) < SINGULAR_TIP:

@@ -271,14 +271,11 @@ def _singular_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, 
 def _joint_stiffness(seg, q: float, taut: tuple[bool, bool]) -> float:
     """``d^2E/dq^2`` of one segment at ``q`` with its springs in the states ``taut`` (a taut spring at its rest
     length counts with its ``k L'^2``: the one-sided stiffness of that side)."""
-    c, beta = seg.c, seg.beta
+    L, (d, dd) = seg.spring_lengths(q), seg.spring_rates(q)
     out = 0.0
-    for t, k, L0, sgn in ((taut[0], seg.k1, seg.L1_0, 1.0), (taut[1], seg.k2, seg.L2_0, -1.0)):
-        if not t:
-            continue
-        ang = beta + sgn * q / 2.0
-        L, d, dd = 2.0 * c * math.cos(ang), -sgn * c * math.sin(ang), -0.5 * c * math.cos(ang)
-        out += k * (d * d + (L - L0) * dd)
+    for i, (t, k, L0) in enumerate(((taut[0], seg.k1, seg.L1_0), (taut[1], seg.k2, seg.L2_0))):
+        if t:
+            out += k * (d[i] * d[i] + (L[i] - L0) * dd[i])
     return float(out)
 
 
@@ -291,8 +288,8 @@ def _spring_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h:
     if m.linear_springs:
         return []
     at = prob.point
-    sp = prob.springs_at(0.0)
-    ra, rb = sp.stretches(a.x[at["q"]]), sp.stretches(b.x[at["q"]])
+    ra = prob.springs_at(float(a.x[at["t"]])).stretches(a.x[at["q"]])
+    rb = prob.springs_at(float(b.x[at["t"]])).stretches(b.x[at["q"]])
     out = []
     for j, i in zip(*np.nonzero((ra > 0.0) != (rb > 0.0))):
         seg = m.segments[int(j)]
@@ -313,7 +310,9 @@ def _spring_events(prob: PathProblem, index: int, a: PathPoint, b: PathPoint, h:
         if y is None:
             continue
         qj = float(y[at["q"]][j])
-        state = [bool(s) for s in (prob.springs_at(float(y[at["t"]])).stretches(y[at["q"]])[j] > 0.0)]
+        sp = prob.springs_at(float(y[at["t"]]))
+        seg = seg.replace(L0=(float(sp.L0[j, 0]), float(sp.L0[j, 1])))       # its rest lengths there
+        state = [bool(s) for s in (sp.stretches(y[at["q"]])[j] > 0.0)]
         before, after = list(state), list(state)
         before[i], after[i] = bool(ra[j, i] > 0.0), bool(rb[j, i] > 0.0)
         kind = "spring_slack" if before[i] else "spring_taut"

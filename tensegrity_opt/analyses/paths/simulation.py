@@ -52,7 +52,7 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs, linear_only
+from ...model.springs import SpringFields, Springs
 from ...numerics import DENSE_MAX
 from ...outcome import Outcome, freeze
 from ...serialize import number, numbers
@@ -251,6 +251,16 @@ def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> ArmState:
             from ..equilibria.rest import rest_configuration
 
             eq = rest_configuration(m0)
+        elif not m0.linear_springs:
+            # the tension-only law: the local minimum of E - F . tip that IPOPT reaches from the rest configuration
+            # (the set of every equilibrium under a load is not available under this law)
+            from ..equilibria.equilibrium import solve_equilibrium_under_force
+            from ..equilibria.rest import rest_configuration
+
+            eq = solve_equilibrium_under_force(m0, float(F0[0]), float(F0[1]), q0=rest_configuration(m0).q)
+            if not eq.stable:
+                raise NoEquilibriumError("no stable equilibrium under the first load near the rest configuration",
+                                         status="no_start")
         else:
             from ..equilibria.rest import find_equilibria_under_force
 
@@ -271,7 +281,7 @@ def _start_state(m0: Manipulator, held: bool, F0, T0, start) -> ArmState:
 
 def _start_q(m: Manipulator, start) -> np.ndarray:
     try:
-        q = check_q0(m, start)
+        q = check_q0(m, start, closed=not m.linear_springs)
     except InvalidParameterError as exc:
         raise InvalidParameterError(exc.message.replace("q0", "start"), field="start") from None
     if q is None:
@@ -348,7 +358,6 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
     >>> sim.status, [(e.kind, e.step, round(float(e.load[1]), 6)) for e in sim.snaps]
     ('complete', [('snap', 15, 0.153111), ('snap', 69, -0.097754)])
     """
-    linear_only(m, "simulate")
     held = tip == "held"
     P, L, T = _inputs(m, preloads, loads, tip, targets)
     if not (isinstance(perturbation, (int, float)) and math.isfinite(perturbation) and 0 < perturbation < 0.1):

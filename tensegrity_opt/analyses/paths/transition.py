@@ -45,9 +45,9 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.optimize as so
 
-from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
+from ...errors import InvalidParameterError, TensegrityError, TimeLimitError, UnsupportedError
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs, linear_only
+from ...model.springs import SpringFields, Springs
 from ...numerics import DENSE_MAX, chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import nullable, number, numbers
@@ -69,6 +69,9 @@ PERTURBATION = 1e-4
 #: A branch point is left by descent at this scaled arclength past it (in the units of
 #: :func:`~tensegrity_opt.analyses.paths.branches.trace_branch`).
 BRANCH_POINT_OFFSET = 1e-5
+#: Branch events where the followed branch can lose stability: a fold, a branch point, and a tension-only spring
+#: going slack or taut (the joint's stiffness jumps there: the branch may turn back at the kink, a fold there).
+LOSSES = ("fold", "branch_point", "spring_slack", "spring_taut")
 #: At most this many snaps within one move (a longer cascade ends it, ``"failed"``).
 MAX_EVENTS_PER_STEP = 32
 #: The largest continuation step (scaled arclength) when the margin is watched: the points where it is sampled.
@@ -259,7 +262,7 @@ class Move:
                               max_points=5000, max_step=MAX_STEP if self.watch else 0.1)
             prob = br.problem
             # (a stability loss on the last step to t = 1 ends the branch as "t_max": the events decide)
-            lost = [e for e in br.events if e.stability == "lost" and e.kind in ("fold", "branch_point")]
+            lost = [e for e in br.events if e.stability == "lost" and e.kind in LOSSES]
             if self.watch:
                 self._watch(prob, br, lost[0] if lost else None, s0, r)
             if not lost and br.status == "t_max":
@@ -380,10 +383,11 @@ class Move:
         ``r``): ``(state, fraction, "landed", "")`` with the event recorded, or ``(None, fraction, status,
         message)``."""
         k = self.step_index
-        fold = ev.kind == "fold"
+        kink = ev.kind in ("spring_slack", "spring_taut")
+        fold = ev.kind == "fold" or kink
         at = prob.point
         x_ev = ev.x.copy()
-        phi = np.asarray(ev.null_vector, float)
+        phi = _kink_mode(prob, ev) if kink else np.asarray(ev.null_vector, float)
         phi = phi / max(float(np.abs(phi).max()), 1e-300)
         note = ""
         if not fold:
@@ -408,7 +412,10 @@ class Move:
             qs = q_ev + sign * self.eps * phi
             qs = d.onto(qs) if self.held else qs
             cands[sign] = (d.potential(qs), qs)
-        if fold:
+        if kink:
+            # phi points into the far side of the kink (where the branch lost its stability)
+            sign = -1 if cands[1][0] > V_ev and cands[-1][0] < V_ev else 1
+        elif fold:
             # the unstable side: where the traced branch goes on past the fold (V decreases along it at the fold)
             side = float(phi @ (br.q[-1] - ev.q))
             sign = 1 if side > 0 else -1 if side < 0 else (1 if cands[1][0] <= cands[-1][0] else -1)
@@ -428,7 +435,8 @@ class Move:
                             f"released {released:.6g})")
             self.events.append(self._event("landed", kind, s_d, q_ev, s.q, before.force, s.force, before.tip,
                                            s.tip, before.energy, s.energy, before.potential(self.held),
-                                           s.potential(self.held), sign, ev.method, note, ev.null_vector))
+                                           s.potential(self.held), sign, ev.method, note,
+                                           phi if kink else ev.null_vector))
             return s, s_d, "landed", ""
         if outcome == "joint_limit":
             self.limit_q = np.asarray(res, float).copy()
@@ -436,11 +444,33 @@ class Move:
                    "physical range on the way)")
             self.events.append(self._event("joint_limit", kind, s_d, q_ev, None, before.force, None, before.tip,
                                            None, before.energy, None, before.potential(self.held), None, sign,
-                                           ev.method, msg, ev.null_vector))
+                                           ev.method, msg, phi if kink else ev.null_vector))
             return None, s_d, "joint_limit", msg
         if outcome == "time_limit":
             return None, s_d, "time_limit", "the time limit ran out during a snap"
         return None, s_d, "failed", f"step {k}: the descent from the fold at fraction {s_d:.6g} did not land"
+
+
+def _kink_mode(prob: PathProblem, ev) -> np.ndarray:
+    """The snapping mode where the followed branch loses stability at a kink (a tension-only spring going slack or
+    taut, ``ev``): there is no null vector (the stiffness jumps, no eigenvalue passes through zero); the mode is the
+    eigenvector of the least eigenvalue of the Hessian of the potential on the far side of the kink (the kink point
+    moved 1e-9 across the spring's rest length in its joint), reduced to the tip motions left free when the tip is
+    held, signed into the far side (where the spring's stretch has the far side's sign)."""
+    j, i = int(ev.joint), int(ev.spring) - 1
+    dL = float(prob.m.segments[j].spring_rates(float(ev.q[j]))[0][i])      # dL/dq_j at the kink
+    far = -1.0 if ev.kind == "spring_slack" else 1.0                        # the stretch's sign on the far side
+    x_far = ev.x.copy()
+    x_far[prob.point["q"].start + j] += far * 1e-9 / dL                   # 1e-9 across the rest length
+    _, _, H, J, _, _ = prob.eval_all(x_far)
+    k = prob.held_rows.shape[0]
+    Z = np.eye(prob.n)
+    if k:
+        _, _, Vt = np.linalg.svd(prob.held_rows @ J)
+        Z = Vt[k:].T
+    _, V = np.linalg.eigh(Z.T @ H @ Z)
+    phi = Z @ V[:, 0]
+    return phi if dL * phi[j] * far >= 0.0 else -phi
 
 
 def release(m: Manipulator, q: np.ndarray, load, *, perturbation: float = PERTURBATION):
@@ -548,6 +578,8 @@ def start_state(m: Manipulator, q0, load=None, *, target=None, force=None, moved
     more than 1e-3 rad (``moved``: checked) or ends on an unstable equilibrium."""
     held = target is not None
     q0 = np.asarray(q0, float)
+    if not m.linear_springs:
+        return _start_state_slack(m, q0, load, target, force, moved, field)
     if held:
         res = local_equilibrium(m, target, q0, force)
         ok = is_equilibrium(m, res, target)
@@ -566,6 +598,49 @@ def start_state(m: Manipulator, q0, load=None, *, target=None, force=None, moved
                                     f"{eq.morse_index})", field=field)
     F = eq.force.copy() if held else np.asarray(load, float).copy()
     return ArmState(eq.q.copy(), F, eq.tip.copy(), float(eq.energy), 0, True)
+
+
+def _start_state_slack(m: Manipulator, q0: np.ndarray, load, target, force, moved: bool, field: str) -> ArmState:
+    """:func:`start_state` of a chain with tension-only springs: the path problem's corrector (Newton on the
+    equilibrium under each spring's law, the tip held at ``target`` or loaded by ``load``). The moves are followed
+    by arclength continuation inside the range only: a start resting on a joint's stop is refused
+    (``UnsupportedError``, status ``start_on_stop``)."""
+    held = target is not None
+    lim = m.joint_limits * (1.0 - LIMIT_MARGIN)
+    on = np.flatnonzero(np.abs(q0) >= lim)
+    if on.size:
+        raise UnsupportedError(f"{field} rests on joint {int(on[0]) + 1}'s stop (the arm as built: a slack spring "
+                               "lets it reach it); a move is followed by arclength continuation inside the range "
+                               "only", field=field, status="start_on_stop")
+    q = q0.copy()
+    if held:
+        for _ in range(8):                          # onto the tip constraint (Gauss-Newton, least norm)
+            r = m.tip(q) - target
+            if float(np.abs(r).max()) <= 1e-13 * m.straight_length:
+                break
+            q = q - np.linalg.lstsq(m.jacobian(q), r, rcond=None)[0]
+        F = m.force_from_torques(q) if force is None else np.asarray(force, float)
+        ctl = Control.displacement((1.0, 0.0))
+    else:
+        F = np.asarray(load, float)
+        ctl = Control.load((1.0, 0.0), base=F)
+    y = None
+    if np.all(np.isfinite(q)) and m.in_range(q):
+        prob = PathProblem(m, ctl, q, F)
+        y, _ = prob.correct_t(prob.x0_guess, 0.0)
+    if y is None or prob.limit_ratio(y)[0] >= 1.0 - LIMIT_MARGIN:
+        raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton did not "
+                                    "converge from it inside the joint range", field=field)
+    s = state_at(prob, y)
+    if held and float(np.abs(s.tip - target).max()) > 1e-9 * m.straight_length:
+        raise InvalidParameterError(f"{field} could not be put on the first target", field=field)
+    if moved and np.abs(s.q - q0).max() > 1e-3:
+        raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton moved it "
+                                    f"by {np.abs(s.q - q0).max():.3g} rad", field=field)
+    if not s.stable:
+        raise InvalidParameterError(f"{field} is not a stable equilibrium under the first inputs (Morse index "
+                                    f"{s.morse})", field=field)
+    return s
 
 
 def _pair(v, shape: tuple[int, ...], name: str) -> np.ndarray:
@@ -616,7 +691,6 @@ def transition(m: Manipulator, start, preloads, loads=None, *, perturbation: flo
     >>> tr.status, len(tr.snaps)
     ('snapped', 1)
     """
-    linear_only(m, "transition")
     if not isinstance(m, Manipulator):
         raise InvalidParameterError("m must be a Manipulator", field="m")
     if m.n > DENSE_MAX:
@@ -629,7 +703,7 @@ def transition(m: Manipulator, start, preloads, loads=None, *, perturbation: flo
     if not (isinstance(perturbation, (int, float)) and math.isfinite(perturbation) and 0 < perturbation < 0.1):
         raise InvalidParameterError(f"perturbation must be in (0, 0.1) rad, got {perturbation!r}",
                                     field="perturbation")
-    q0 = start.q if isinstance(start, Equilibrium) else check_q0(m, start)
+    q0 = start.q if isinstance(start, Equilibrium) else check_q0(m, start, closed=not m.linear_springs)
     if q0 is None:
         raise InvalidParameterError("start must be an Equilibrium or n joint angles", field="start")
     with time_limit(timeout):
