@@ -224,7 +224,6 @@ def _calls(m, lin_eq, P):
         "preloads_for_stiffness": lambda: to.preloads_for_stiffness(m, (5.5, 0.3), K_desired=np.eye(2)),
         "plan_preloads": lambda: to.plan_preloads(m, [[5.5, 0.3]]),
         "PreloadController": lambda: to.PreloadController(m),
-        "PreloadFollower": lambda: to.PreloadFollower(m),
         "load_capacity": lambda: to.load_capacity(m),
         "estimate_tip_force": lambda: to.estimate_tip_force(m, lin_eq.q),
         "critical_load_sensitivity": lambda: to.critical_load_sensitivity(m),
@@ -858,3 +857,32 @@ def test_a_simulation_from_a_rest_on_a_stop_is_refused_by_name():
     with pytest.raises(UnsupportedError) as e:
         to.simulate(m, loads=np.zeros((3, 2)))
     assert e.value.field == "start" and e.value.status == "start_on_stop"
+
+
+def test_the_preload_follower_answers_a_tension_only_chain_with_reference_equilibria():
+    """Rest lengths commanded step by step under a load: each answer is a strict local minimum of the reference
+    potential under its command, with the reference's spring states (spring 2.1 goes slack on the last command);
+    under another load the arm reaches a joint's stop on the way: refused naming the command, the state kept."""
+    from tensegrity_opt.errors import NoEquilibriumError
+
+    m = to.Manipulator.uniform(3, spring="tension_only")
+    F = np.array([0.0, 0.2])
+    f = to.PreloadFollower(m, load=F)
+    for v in (1.4, 2.0, 2.6):
+        P = np.column_stack([m.L1_0, m.L2_0])
+        P[1, 0] = v
+        st = f.step(P)
+        mk = to.Manipulator(sg.replace(L0=tuple(c)) for sg, c in zip(m.segments, P))
+        segs = ref.segs_of(mk)
+        r = ref.torques(segs, st.q) + ref.tip_jacobian(segs, st.q).T @ F
+        assert st.success and np.abs(r).max() < 1e-8
+        assert _reference_minimum_near(mk, F, st.q, spread=1e-5) < 1e-5
+        assert (st.equilibrium.spring_states == "slack").tolist() == (ref.lengths(segs, st.q) < P).tolist()
+    assert st.equilibrium.spring_states[1, 0] == "slack"
+    f = to.PreloadFollower(m, load=(-0.1, 0.05))
+    P = np.column_stack([m.L1_0, m.L2_0])
+    P[1, 0] = 2.6
+    q = f.q.copy()
+    with pytest.raises(NoEquilibriumError) as e:
+        f.step(P)
+    assert e.value.field == "rest_lengths" and np.array_equal(f.q, q)

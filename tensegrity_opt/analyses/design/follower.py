@@ -32,7 +32,6 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
 from ...model.manipulator import Manipulator
-from ...model.springs import linear_only
 from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
 from ...serialize import numbers
@@ -105,6 +104,20 @@ class FollowerStep(Outcome):
                 "load": numbers(self.load), "events": [e.to_dict() for e in self.events]}
 
 
+def _settled(m: Manipulator, F: np.ndarray, q: np.ndarray) -> Equilibrium:
+    """The end of a move, ``q``, polished into an :class:`Equilibrium` under the dead load ``F``: Newton (the linear
+    law) or the local minimiser under each spring's law (a chain with tension-only springs), which must stay there."""
+    if m.linear_springs:
+        res = chain_solver(m).newton_force(F, q)
+        if not is_equilibrium(m, res):
+            raise SolverError("the end of the move is not a converged equilibrium", status="not_converged")
+        return make_equilibrium(m, res, constrained=False)
+    eq = solve_equilibrium_under_force(m, float(F[0]), float(F[1]), q0=q)
+    if float(np.abs(eq.q - q).max()) > 1e-6:
+        raise SolverError("the end of the move is not a converged equilibrium", status="not_converged")
+    return eq
+
+
 def loaded_rest(m: Manipulator, load) -> Equilibrium:
     """The default start of the control modes: the least-energy rest configuration of ``m``, and under a
     non-zero dead tip ``load`` the equilibrium reached from it (which may be unstable; the caller decides)."""
@@ -141,7 +154,6 @@ class PreloadFollower:
     def __init__(self, m: Manipulator, start=None, *, load=(0.0, 0.0)) -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
-        linear_only(m, "PreloadFollower")
         self.m = m
         self.load = checked_vector(load, 2, "load")
         if isinstance(start, Equilibrium):
@@ -195,10 +207,7 @@ class PreloadFollower:
                                      field="rest_lengths", status="joint_limit")
         if tr.status not in ("followed", "snapped"):
             raise SolverError(f"the move to this command could not be followed: {tr.message}", status=tr.status)
-        res = chain_solver(m1).newton_force(np.asarray(F, float), tr.q)
-        if not is_equilibrium(m1, res):
-            raise SolverError("the end of the move is not a converged equilibrium", status="not_converged")
-        eq = make_equilibrium(m1, res, constrained=False)
+        eq = _settled(m1, np.asarray(F, float), tr.q)
         self._state = ArmState(eq.q.copy(), np.array(F, dtype=float), eq.tip.copy(), float(eq.energy), 0, True)
         self.q, self.rest = eq.q.copy(), P1
         self.index += 1
