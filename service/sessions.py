@@ -102,7 +102,7 @@ class InverseSession(Session):
             m, req.start, rest_lengths0=req.rest_lengths0, load=tuple(req.load),
             bounds=None if req.bounds is None else tuple(req.bounds), rate_limit=req.rate_limit, dt=req.dt,
             margin=req.margin, objective=req.objective, weights=req.weights, on_infeasible=req.on_infeasible,
-            verify=req.verify)
+            verify=req.verify, taut=req.taut)
         #: the last step's instant (s; the open is 0), None once a step came without a time base
         self.time: float | None = 0.0
 

@@ -33,6 +33,8 @@ MAX_GRID = 201
 #: Abscissae of a segment torque curve.
 MAX_TORQUE_POINTS = 10001
 #: The words of a required stability margin, wherever one is accepted (one rule: absolute, torque per radian).
+TAUT_DOC = ("keep every spring in tension (L > L0, strictly) at every designed pose; required for a chain with "
+            "tension-only springs (there the laws agree; the moves between a plan's poses are verified under the laws)")
 MARGIN_DOC = ("required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the joint angles, "
               "absolute, in torque per radian (force x length / rad) like every margin of the API; for a margin "
               "relative to the chain's torque scale max k c^2, multiply by that scale")

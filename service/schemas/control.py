@@ -32,6 +32,7 @@ from .common import (
     MAX_ANGLE,
     MAX_STIFFNESS,
     PAPER_CHAIN,
+    TAUT_DOC,
     Angle,
     Deflection,
     Force,
@@ -172,6 +173,7 @@ class _PlanFields(BaseModel):
         "continue", description="when the arm snaps during a step (nothing admissible avoids it) or has no "
                                 "equilibrium (a joint reaches its stop): continue (the next steps start from where "
                                 "it went) or stop (the plan ends after that step)")
+    taut: bool = Field(False, description=TAUT_DOC)
 
 
 PLAN_REQUEST_EXAMPLE = {"manipulator": PAPER_CHAIN, "targets": [[7.6, 0.5], [7.5, 0.75], [7.4, 1.0], [7.3, 1.25]],

@@ -13,6 +13,7 @@ from .common import (
     _STRICT,
     MARGIN_DOC,
     MAX_STIFFNESS,
+    TAUT_DOC,
     Angle,
     Deflection,
     Finite,
@@ -110,7 +111,7 @@ class PreloadsRequest(BaseModel):
         "nominal", description="nominal: least change from the chain's own rest lengths (the library's "
                                "objective `change`); margin: largest stability margin; energy: least spring energy")
     margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(1e-3, description=MARGIN_DOC)
-    taut: bool = Field(False, description="keep every spring in tension (L >= L0)")
+    taut: bool = Field(False, description=TAUT_DOC)
     bounds: BoundsIn | None = Field(None, description="bounds on every rest length; default (0.1 b_min, 4 b_max)")
     end_angle: Angle | None = Field(None, description="absolute angle of the last link (rad), optional")
 

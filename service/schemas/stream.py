@@ -22,6 +22,7 @@ from .common import (
     _STRICT,
     MARGIN_DOC,
     MAX_STIFFNESS,
+    TAUT_DOC,
     Angle,
     Deflection,
     ForceValue,
@@ -127,6 +128,7 @@ class InverseOpen(_Open):
     verify: bool = Field(True, description="verify every step along its transition (`verified`): a command is sent "
                                            "only where the arm follows its branch from the last step's pose to the "
                                            "step's, stable with the margin all along; false: the end pose only")
+    taut: bool = Field(False, description=TAUT_DOC)
 
 
 #: The open model of each mode.

@@ -103,7 +103,7 @@ def find_plan(req: Any, deadline: float) -> PreloadPlan:
                          margin=req.margin, objective=req.objective, weights=req.weights,
                          start=optional_array(None if req.start is None else req.start.q),
                          on_infeasible=req.on_infeasible, horizon=req.horizon, verify=req.verify,
-                         on_snap=req.on_snap, timeout=seconds_left(deadline))
+                         on_snap=req.on_snap, taut=req.taut, timeout=seconds_left(deadline))
 
 
 def find_simulation(req: Any, deadline: float) -> to.Simulation:

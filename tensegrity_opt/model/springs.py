@@ -170,10 +170,10 @@ def linear_only(m: Any, what: str) -> None:
         f"{what} honours only the linear spring law; segments[{i}].spring is 'tension_only'. The tension-only law "
         f"is honoured by solve_equilibrium (the least-energy equilibrium, joint stops included), find_equilibria, "
         f"force_deflection (branch='stable'), trace_branch, solve_equilibrium_under_force, rest_configuration, "
-        f"limit_load, simulate, transition, PreloadFollower, cartesian_stiffness, critical_force (springs taut at "
-        f"the straight chain), preloads_for_pose (taut=True), energy_landscape and the spring state of every "
-        f"answer; use spring='linear' for this analysis (its answer is then valid where every spring_states entry "
-        f"is 'taut')",
+        f"limit_load, simulate, transition, PreloadFollower, plan_preloads and PreloadController (taut=True), "
+        f"cartesian_stiffness, critical_force (springs taut at the straight chain), preloads_for_pose (taut=True), "
+        f"energy_landscape and the spring state of every answer; use spring='linear' for this analysis (its answer "
+        f"is then valid where every spring_states entry is 'taut')",
         field=f"segments[{i}].spring", spring="tension_only", analysis=what)
 
 

@@ -241,7 +241,8 @@ def test_every_analysis_honours_the_tension_only_law_or_refuses_it_by_name():
     for name, call in _calls(m, lin_eq, P).items():
         with pytest.raises(UnsupportedError) as e:
             call()
-        want = {"preloads_for_pose": "taut", "force_deflection (branch all)": "branch"}
+        want = {"preloads_for_pose": "taut", "plan_preloads": "taut", "PreloadController": "taut",
+                "force_deflection (branch all)": "branch"}
         assert e.value.field == want.get(name, "segments[1].spring"), name
     # honoured: the least energy, buckling of springs taut when straight, the landscape, the spring state
     eq = to.solve_equilibrium(m, 0.3)
@@ -886,3 +887,86 @@ def test_the_preload_follower_answers_a_tension_only_chain_with_reference_equili
     with pytest.raises(NoEquilibriumError) as e:
         f.step(P)
     assert e.value.field == "rest_lengths" and np.array_equal(f.q, q)
+
+
+# ------------------------------------------------------------------------------------------- plans
+#: Chains, trajectories (an arc of radius r times the straight length, from angle ang0 to ang1, 6 steps), loads and
+#: objectives where the linear law's plan (taut not asked) has springs shorter than their rest length (pushing).
+PLAN_CASES = [
+    dict(n=3, a=0.92, k=1.134, L0=1.025, ang0=-0.225, ang1=0.286, r=0.759, F=(0.136, 0.014), obj="energy"),
+    dict(n=3, a=1.051, k=1.939, L0=1.332, ang0=0.032, ang1=0.313, r=0.839, F=(0.051, 0.064), obj="margin"),
+    dict(n=4, a=1.198, k=0.974, L0=1.164, ang0=0.228, ang1=1.165, r=0.767, F=(0.092, -0.023), obj="energy"),
+    dict(n=3, a=1.101, k=1.871, L0=1.429, ang0=0.218, ang1=0.823, r=0.618, F=(-0.033, -0.079), obj="change"),
+]
+
+
+def _reference_follows(m, q0, P0, P1, F0, F1, q1):
+    """The reference arm (tension-only potential, L-BFGS-B over the closed range) moved quasi-statically from ``q0``
+    while the rest lengths and the load move linearly from ``(P0, F0)`` to ``(P1, F1)``: each substep's minimum
+    from the previous one, the substep halved where the arm moves by more than 0.02 rad. It follows continuously
+    (a snap would jump however small the substep: down to 1e-4 of the move), never on a stop, and ends on ``q1``."""
+    import scipy.optimize as so
+
+    q = np.asarray(q0, float)
+    lim = ref.limits(ref.segs_of(m))
+
+    def settle(s, x0):
+        P, F = P0 + s * (P1 - P0), F0 + s * (F1 - F0)
+        segs = ref.segs_of(to.Manipulator(sg.replace(L0=tuple(c)) for sg, c in zip(m.segments, P)))
+        return so.minimize(lambda x: ref.energy(segs, x) - F @ ref.tip(segs, x), x0, method="L-BFGS-B",
+                           jac=lambda x: -(ref.torques(segs, x) + ref.tip_jacobian(segs, x).T @ F),
+                           bounds=list(zip(-lim, lim)), options={"ftol": 1e-15, "gtol": 1e-12, "maxiter": 5000}).x
+
+    s, h = 0.0, 0.05
+    while s < 1.0:
+        h = min(h, 1.0 - s)
+        x = settle(s + h, q)
+        if np.abs(x - q).max() > 0.02:
+            assert h > 1e-4, (s, x, q)                                   # a jump that does not shrink: a snap
+            h *= 0.5
+            continue
+        assert np.all(np.abs(x) < lim * (1 - 1e-6))                      # no joint on its stop
+        s, q, h = s + h, x, 2.0 * h
+    assert np.abs(q - q1).max() < 1e-5, (q, q1)
+
+
+@pytest.mark.slow_cases(keep=2)         # the reference's quasi-static follow costs 3-15 s a plan
+@pytest.mark.parametrize("case", [1, 3, 0, 2])
+def test_a_plan_for_a_tension_only_chain_keeps_its_springs_taut_and_gets_there(case):
+    """The linear law's plan of these trajectories lets springs push; under the tension-only law (taut=True) every
+    planned pose has every reference spring in tension, each step's pose is an equilibrium of the reference under
+    its command, and each verified step is followed by the reference arm from the previous state without a snap."""
+    c = PLAN_CASES[case]
+    lin = to.Manipulator.uniform(c["n"], a=c["a"], k=c["k"], L0=c["L0"])
+    ang = np.linspace(c["ang0"], c["ang1"], 6)
+    T = c["r"] * lin.straight_length * np.column_stack([np.cos(ang), np.sin(ang)])
+    F = np.array(c["F"])
+    plan_lin = to.plan_preloads(lin, T, loads=F, objective=c["obj"])
+    assert any((st.spring_states == "pushing").any() for st in plan_lin.steps)
+    m = lin.with_spring("tension_only")
+    with pytest.raises(UnsupportedError) as e:
+        to.plan_preloads(m, T, loads=F, objective=c["obj"])
+    assert e.value.field == "taut"
+    plan = to.plan_preloads(m, T, loads=F, objective=c["obj"], taut=True)
+    assert plan.verified.sum() >= 4, plan.message
+    q_prev, P_prev = plan.start, np.column_stack([m.L1_0, m.L2_0])
+    for st in plan.steps:
+        segs = ref.segs_of(to.Manipulator(sg.replace(L0=tuple(p)) for sg, p in zip(m.segments, st.command)))
+        r = ref.torques(segs, st.q) + ref.tip_jacobian(segs, st.q).T @ F
+        assert np.abs(r).max() < 1e-8 * m.torque_scale
+        if st.method != "none":
+            assert np.all(ref.lengths(segs, st.q) - st.command > 0.0)          # every spring in tension
+            assert (st.spring_states == "taut").all()
+        if st.verified:
+            _reference_follows(m, q_prev, P_prev, st.command, F, F, st.q)
+        q_prev, P_prev = st.q, st.command
+
+
+def test_a_tension_only_plan_from_a_rest_on_a_stop_or_over_a_horizon_is_refused_by_name():
+    m = to.Manipulator.uniform(3, a=0.5, b=1.0, k=1.0, L0=0.5, spring="tension_only")
+    with pytest.raises(UnsupportedError) as e:
+        to.plan_preloads(m, [[2.5, 0.5]], taut=True)
+    assert e.value.field == "start" and e.value.status == "start_on_stop"
+    with pytest.raises(UnsupportedError) as e:
+        to.plan_preloads(to.Manipulator.uniform(3, spring="tension_only"), [[5.5, 0.3]], taut=True, horizon=2)
+    assert e.value.field == "horizon"

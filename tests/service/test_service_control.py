@@ -68,6 +68,16 @@ def test_plan_is_the_library_plan(client):
     assert got["verified"] == [False, False] and got["feasible"] == [True, True]   # verify: false checks nothing
 
 
+def test_a_plan_for_a_tension_only_chain_needs_taut_on_every_interface(client):
+    """`taut` has one name on the library, REST and the CLI; without it a tension-only chain is refused naming it."""
+    chain = {"n": 3, "spring": "tension_only"}
+    body = {"manipulator": chain, "targets": [[5.5, 0.3], [5.4, 0.6]], "taut": True}
+    got = post_ok(client, "/v1/control/plan", body)
+    want = to.plan_preloads(to.Manipulator.uniform(3, spring="tension_only"), body["targets"], taut=True)
+    assert without_seconds(got) == without_seconds(body_of(want.to_dict())) and all(got["verified"])
+    check_error(client.post("/v1/control/plan", json={**body, "taut": False}), "unsupported", "taut")
+
+
 def test_a_plan_that_approaches_is_the_library_plan(client):
     """on_infeasible: approach — the step beyond the rate limit commands the nearest admissible pose's rest lengths
     (within the rate limit of the previous command) and the body says so; hold keeps the command."""

@@ -83,9 +83,10 @@ from ...errors import (
     NoEquilibriumError,
     TensegrityError,
     TimeLimitError,
+    UnsupportedError,
 )
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs, linear_only
+from ...model.springs import SpringFields, Springs
 from ...numerics import chain_solver
 from ...numerics.inverse_statics import inverse_statics
 from ...numerics.inverse_statics import layouts as step_layouts
@@ -96,7 +97,7 @@ from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 from ..paths.control import checked_vector
 from ..paths.descent import ArmState
-from ..paths.transition import Transition, follow, released
+from ..paths.transition import Transition, follow, law_margin, released
 from .follower import loaded_rest
 from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose, solve_pose_nlp, stability_margin
 
@@ -364,14 +365,24 @@ class PreloadController:
         Follow every step's transition (default): a command is adopted only where the arm gets to its pose along
         the move from the previous command, stable with the margin all along (module docstring); False: the end
         pose only, nothing verified (faster).
+    taut : bool
+        Keep every spring in tension (``L >= L0``) at every planned pose: a Newton step that lets one go slack or
+        push is refused and IPOPT's (:func:`~.preloads.preloads_for_pose` with ``taut``) and the nearest-pose search
+        keep them taut. Required for a chain with tension-only springs (there the laws agree at the poses; the
+        transitions between them, and the arm's state where it snaps or is held, follow the tension-only law).
     """
 
     def __init__(self, m: Manipulator, start=None, *, rest_lengths0=None, load=(0.0, 0.0), bounds=None,
                  rate_limit=None, dt: float | None = None, margin: float = 1e-3, objective: str = "change",
-                 weights=None, on_infeasible: str = "hold", verify: bool = True) -> None:
+                 weights=None, on_infeasible: str = "hold", verify: bool = True, taut: bool = False) -> None:
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
-        linear_only(m, "PreloadController")
+        if not isinstance(taut, bool):
+            raise InvalidParameterError(f"taut must be true or false, got {taut!r}", field="taut")
+        if not m.linear_springs and not taut:
+            raise UnsupportedError("preload control of a chain with tension-only springs keeps every spring taut at "
+                                   "its poses (there the laws agree; the moves between them are verified under the "
+                                   "laws): set taut=True", field="taut", spring="tension_only")
         n = m.n
         if n < 2:
             raise InvalidParameterError("preload control needs a chain of n >= 2 segments", field="n")
@@ -383,7 +394,9 @@ class PreloadController:
         if on_infeasible not in ON_INFEASIBLE:
             raise InvalidParameterError(f"on_infeasible must be one of {ON_INFEASIBLE}, got {on_infeasible!r}",
                                         field="on_infeasible")
-        self.m, self.n, self.objective, self.margin = m, n, objective, float(margin)
+        self.m, self.n, self.objective, self.margin, self.taut = m, n, objective, float(margin), taut
+        #: the chain the design numerics solve (the linear law: the laws agree where every spring is taut)
+        self.lin = m if m.linear_springs else m.with_spring("linear")
         self.on_infeasible = on_infeasible
         self.load = checked_vector(load, 2, "load")
         lo, hi = bound_pair(bounds) if bounds is not None else (0.1 * float(m.b.min()), 4.0 * float(m.b.max()))
@@ -461,6 +474,11 @@ class PreloadController:
             return q
         try:
             eq = loaded_rest(self.manipulator(), self.load)
+            if eq.at_stop.any():
+                j = int(np.flatnonzero(eq.at_stop)[0])
+                raise UnsupportedError(f"the start rests on joint {j + 1}'s stop (the arm as built: a slack spring "
+                                       "lets it reach it); the moves are followed inside the range only: give a start",
+                                       field="start", status="start_on_stop")
         except NoEquilibriumError as exc:
             raise NoEquilibriumError(f"no equilibrium under the load from the rest configuration: {exc.message}; "
                                      "give a start", field="load") from None
@@ -469,11 +487,21 @@ class PreloadController:
                                         "unstable: give a stable start", field="load")
         return eq.q.copy()
 
-    def manipulator(self, ell: np.ndarray | None = None) -> Manipulator:
-        """The chain with rest lengths ``ell`` (segment-major 2n; default the current ones)."""
+    def manipulator(self, ell: np.ndarray | None = None, *, linear: bool = False) -> Manipulator:
+        """The chain with rest lengths ``ell`` (segment-major 2n; default the current ones); ``linear``: its
+        linear-law twin, which the design numerics solve."""
         ell = self.ell if ell is None else ell
         return Manipulator(s.replace(L0=(float(ell[2 * i]), float(ell[2 * i + 1])))
-                           for i, s in enumerate(self.m.segments))
+                           for i, s in enumerate((self.lin if linear else self.m).segments))
+
+    def _margin_energy(self, ell: np.ndarray, q: np.ndarray, F: np.ndarray) -> tuple[float, float]:
+        """``(stability margin, elastic energy)`` of the arm at ``q`` with rest lengths ``ell`` under ``F``, under
+        each spring's law."""
+        m = self.manipulator(ell)
+        if m.linear_springs:
+            E, _, _, _, _ = chain_solver(m).evaluate(q, F)
+            return stability_margin(m, q, F), float(E)
+        return law_margin(m, q, F), float(m.energy(q))
 
     # ------------------------------------------------------------------ one step
     def step(self, target, load=None, end_angle: float | None = None, *, dt: float | None = None) -> PreloadStep:
@@ -540,7 +568,7 @@ class PreloadController:
         if self.at_stop:
             return released(self.m, self.q, P1, F, step=self.index)
         m0 = self.manipulator()
-        E, _, _, _, _ = chain_solver(m0).evaluate(self.q, self.state_load)
+        E = chain_solver(m0).evaluate(self.q, self.state_load)[0] if m0.linear_springs else m0.energy(self.q)
         state = ArmState(self.q.copy(), self.state_load.copy(), m0.tip(self.q), float(E), 0, True)
         return follow(self.m, state, P0, P1, self.state_load, F, step=self.index)
 
@@ -551,7 +579,7 @@ class PreloadController:
         """The stability margin of the current state (NaN against a joint's stop)."""
         key = (self.index, self.at_stop)
         if self._state_margin[0] != key:
-            mu = math.nan if self.at_stop else stability_margin(self.manipulator(), self.q, self.state_load)
+            mu = math.nan if self.at_stop else self._margin_energy(self.ell, self.q, self.state_load)[0]
             self._state_margin = (key, mu)
         return self._state_margin[1]
 
@@ -666,6 +694,8 @@ class PreloadController:
         margin = float(np.linalg.eigvalsh(H)[0])
         if margin < self.margin:
             return None
+        if self.taut and not self._taut_at(ell, q):
+            return None                     # a spring slack or pushing at the pose: IPOPT keeps them taut
         kk = np.linalg.eigvalsh(KKT)
         if int(np.sum(kk > 0)) != 3 * n or int(np.sum(kk < 0)) != inv.rows:
             return None                     # a KKT point that is not a local minimum of the least change
@@ -679,6 +709,11 @@ class PreloadController:
                                feasible=True, method="newton", solver=solver, residual=resid, target=target.copy(),
                                message="the least-change Newton step converged")
 
+    def _taut_at(self, ell: np.ndarray, q: np.ndarray) -> bool:
+        """Every spring at least its rest length at ``q`` with rest lengths ``ell`` (segment-major 2n)."""
+        L1, L2 = self.m.spring_lengths(q)
+        return bool(np.all(L1 >= ell[0::2]) and np.all(L2 >= ell[1::2]))
+
     def _springs(self, v: np.ndarray) -> np.ndarray:
         """Segment-major 2n -> the design problems' ``L10``, ``L20`` blocks."""
         return rest_lengths(self.n).pack(L10=v[0::2], L20=v[1::2])
@@ -688,7 +723,8 @@ class PreloadController:
         nominal = self.manipulator()
         try:
             d = preloads_for_pose(nominal, target, load=F, objective=self.objective, margin=self.margin,
-                                  bounds=(self._springs(lo), self._springs(hi)), end_angle=end_angle, start=self.q)
+                                  bounds=(self._springs(lo), self._springs(hi)), end_angle=end_angle, start=self.q,
+                                  taut=self.taut)
         except TimeLimitError:
             raise
         except TensegrityError as exc:
@@ -827,20 +863,19 @@ class PreloadController:
         return tip
 
     def _pose(self, ell: np.ndarray, q: np.ndarray, F: np.ndarray, solver: SolverInfo) -> _Pose:
-        m = self.manipulator(ell)
-        E, _, _, _, _ = chain_solver(m).evaluate(q, F)
+        margin, E = self._margin_energy(ell, q, F)
         q = np.array(q, dtype=float)
         ell = np.array(ell, dtype=float)
-        tip = m.tip(q)
+        tip = self.m.tip(q)
         for v in (q, ell, tip):
             v.setflags(write=False)
-        return _Pose(ell, q, tip, stability_margin(m, q, F), float(E), solver)
+        return _Pose(ell, q, tip, margin, E, solver)
 
     def _forward(self, ell: np.ndarray, F: np.ndarray, q_from: np.ndarray) -> Equilibrium | None:
         """The forward quasi-static solve: the equilibrium with rest lengths ``ell`` under ``F`` reached from
         ``q_from`` (Newton; IPOPT's descent where Newton does not settle), or None."""
         m = self.manipulator(ell)
-        eq = settle_under_force(m, F, q_from)
+        eq = settle_under_force(m, F, q_from) if m.linear_springs else None
         if eq is None:
             try:
                 eq = solve_equilibrium_under_force(m, *F, q0=q_from)
@@ -865,7 +900,7 @@ class PreloadController:
         if lo is None or hi is None:
             lo, hi = self.box()
         springs = rest_lengths(self.n)
-        nominal = self.manipulator()
+        nominal = self.manipulator(linear=True)
         lo_s, hi_s = self._springs(lo), self._springs(hi)
         starts: list[tuple[np.ndarray, np.ndarray]] = [(self.q, self._springs(self.ell))]
         if best is not None and "q" in best and "preloads" in best:
@@ -876,7 +911,7 @@ class PreloadController:
         rng = np.random.default_rng(0)
         for u in [np.full(2 * self.n, 0.5), *rng.uniform(size=(NEAREST_SPREAD - 1, 2 * self.n))]:
             ell0 = lo + u * (hi - lo)
-            eq = settle_under_force(self.manipulator(ell0), F, self.q)
+            eq = settle_under_force(self.manipulator(ell0, linear=True), F, self.q)
             starts.append((self.q if eq is None else eq.q, self._springs(ell0)))
         candidates: list[_Pose] = []
         if held is not None and math.isfinite(held.margin) and held.margin >= self.margin - 1e-9 and (
@@ -884,8 +919,8 @@ class PreloadController:
             candidates.append(held)
         for q0, ell0 in starts:
             q0 = np.clip(q0, -self.limits * 0.999, self.limits * 0.999)
-            res, q, L10, L20, _, _ = solve_pose_nlp(nominal, target, F, "change", self.margin, False, lo_s, hi_s,
-                                                    end_angle, q0, ell0, nearest=True)
+            res, q, L10, L20, _, _ = solve_pose_nlp(nominal, target, F, "change", self.margin, self.taut, lo_s,
+                                                    hi_s, end_angle, q0, ell0, nearest=True)
             ell = np.column_stack([L10, L20]).ravel()
             solver = SolverInfo(res.status, res.iterations)
             if self.verify:
@@ -1073,7 +1108,7 @@ class PreloadPlan(Outcome, SpringFields):
 def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times=None, dt: float | None = None,
                   rest_lengths0=None, bounds=None, rate_limit=None, margin: float = 1e-3, objective: str = "change",
                   weights=None, start=None, on_infeasible: str = "hold", horizon: int | str | None = None,
-                  verify: bool = True, on_snap: str = "continue", timeout: float | None = None,
+                  verify: bool = True, on_snap: str = "continue", taut: bool = False, timeout: float | None = None,
                   progress: Callable[[int, int], Any] | None = None) -> PreloadPlan:
     """Rest lengths for a trajectory of tip poses, on one stable branch (module docstring).
 
@@ -1115,6 +1150,9 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
         When the arm snaps during a step (nothing admissible avoids it) or has no equilibrium (a joint reaches its
         stop): ``"continue"`` (default) plans the next steps from where it went, ``"stop"`` ends the plan after
         that step (:data:`ON_SNAP`).
+    taut : bool
+        Keep every spring in tension at every planned pose (:class:`PreloadController`); required for a chain with
+        tension-only springs, whose plans are step by step (a horizon is refused, ``field="horizon"``).
     timeout : float, optional
         Seconds; on expiry the steps done are returned with ``status="time_limit"``.
     progress : callable(done, total), optional
@@ -1124,7 +1162,10 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     -------
     PreloadPlan
     """
-    linear_only(m, "plan_preloads")
+    if isinstance(m, Manipulator) and not m.linear_springs and horizon is not None:
+        raise UnsupportedError("a horizon plan's problem models the linear spring law: a chain with tension-only "
+                               "springs is planned step by step (horizon=None, taut=True)", field="horizon",
+                               spring="tension_only")
     T = real_array(targets, "targets")
     if T.ndim != 2 or T.shape[1] != 2 or T.shape[0] < 1 or not np.all(np.isfinite(T)):
         raise InvalidParameterError("targets must be K >= 1 finite tip positions (x, y)", field="targets")
@@ -1161,7 +1202,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
         raise InvalidParameterError(f"on_snap must be one of {ON_SNAP}, got {on_snap!r}", field="on_snap")
     ctl = PreloadController(m, start, rest_lengths0=rest_lengths0, load=Ls[0], bounds=bounds, rate_limit=rate_limit,
                             margin=margin, objective=objective, weights=weights, on_infeasible=on_infeasible,
-                            verify=verify)
+                            verify=verify, taut=taut)
     q_start = ctl.q.copy()
     t0 = time.perf_counter()
     steps: list[PreloadStep] = []

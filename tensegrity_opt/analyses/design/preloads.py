@@ -60,6 +60,10 @@ LAND_TOL = 1e-6
 #: in units of ``max b``: it picks the least change among equally near poses and moves the distance by ~1e-6.
 NEAREST_REGULARISER = 1e-6
 _INF = float("inf")
+#: ``taut``: every spring at least this much (times the longest link ``b``) longer than its rest length, so that it is
+#: strictly in tension beyond IPOPT's feasibility tolerance (a spring ending 1e-9 short would read ``slack`` or
+#: ``pushing``, and its one-sided stiffness be the slack side's under the tension-only law).
+TAUT_FLOOR = 1e-7
 
 
 @dataclass(frozen=True)
@@ -197,9 +201,9 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
         Required smallest eigenvalue of the joint-space Hessian of ``E - F.tip`` (torque/rad);
         the lower bound of the margin for ``objective="margin"``.
     taut : bool
-        Keep every spring in tension (``L >= L0``). A chain with tension-only springs needs it (where every spring
-        is taut the two laws agree: the design holds for the arm as built); without it the chain is refused
-        (``UnsupportedError``, ``field="taut"``).
+        Keep every spring in tension (``L - L0 >= TAUT_FLOOR * max b``: strictly, beyond IPOPT's tolerance). A chain
+        with tension-only springs needs it (where every spring is taut the two laws agree: the design holds for the
+        arm as built); without it the chain is refused (``UnsupportedError``, ``field="taut"``).
     bounds : (lo, hi), optional
         Bounds on every rest length, each a number or ``2 n`` values (``L1_0`` of every segment, then every
         ``L2_0``); default ``(0.1 b_min, 4 b_max)`` (:func:`rest_length_bounds`).
@@ -325,7 +329,7 @@ def solve_pose_nlp(m: Manipulator, target, load, objective: str, margin: float, 
     lbx = x.pack(phi=-_INF, **lo2, mu=margin, L=nlp.factor_floor)
     ubx = x.pack(phi=_INF, **hi2, mu=margin if objective != "margin" else _INF, L=_INF)
     lim = m.joint_limits * (1 - RANGE_SHRINK)
-    slack = 0.0 if taut else -_INF
+    slack = TAUT_FLOOR * float(np.max(m.b)) if taut else -_INF
     if nearest:
         tip_lo, tip_hi, ea = -_INF, _INF, (-_INF, _INF)
         weights = [NEAREST_REGULARISER, 0.0, 0.0, 1.0 / float(np.max(m.b)) ** 2, float(end_angle is not None)]

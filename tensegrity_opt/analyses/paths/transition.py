@@ -58,7 +58,7 @@ from .control import Control
 from .descent import ArmState, Descent, state_at
 from .problem import LIMIT_MARGIN, PathProblem
 
-__all__ = ["transition", "Transition", "Move", "SimulationEvent", "EVENT_KINDS", "PERTURBATION",
+__all__ = ["transition", "Transition", "Move", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "law_margin",
            "BRANCH_POINT_OFFSET", "MAX_EVENTS_PER_STEP", "MAX_STEP", "release", "released", "follow", "chain_with"]
 
 #: Kinds of :class:`SimulationEvent`: a snap at a fold, a snap (or a continuous buckling, then with
@@ -207,6 +207,15 @@ def margin_at(prob: PathProblem, x: np.ndarray) -> float:
             return math.inf
         H = Z.T @ H @ Z
     return float(np.linalg.eigvalsh(H)[0])
+
+
+def law_margin(m: Manipulator, q: np.ndarray, load) -> float:
+    """The stability margin of the arm at ``q`` under the dead ``load``: the smallest eigenvalue of the Hessian of
+    ``E - F . tip`` in the joint angles (torque / rad), under each spring's law (the path problem's Hessian; on the
+    side where each spring's state holds)."""
+    F = np.asarray(load, float)
+    prob = PathProblem(m, Control.load((1.0, 0.0), base=F), q, F)
+    return margin_at(prob, prob.point.pack(q=q, F=F, t=0.0))
 
 
 # ---------------------------------------------------------------------------- the engine

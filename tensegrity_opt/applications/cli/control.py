@@ -222,7 +222,7 @@ def plan_from_args(args: argparse.Namespace, m: Manipulator,
                          rate_limit=args.rate_limit, margin=args.margin, objective=args.objective,
                          start=None if args.start_q is None else np.asarray(args.start_q, dtype=float),
                          on_infeasible=args.on_infeasible, horizon=args.horizon, verify=not args.no_verify,
-                         on_snap=args.on_snap, timeout=args.timeout, progress=progress)
+                         on_snap=args.on_snap, taut=args.taut, timeout=args.timeout, progress=progress)
 
 
 def load_cycle(amplitude: float, steps: int, direction: Any = (0.0, 1.0)) -> np.ndarray:
@@ -322,6 +322,8 @@ def add_plan_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--on-snap", choices=ON_SNAP, default="continue",
                    help="when the arm snaps during a step (nothing admissible avoids it) or has no equilibrium (a "
                         "joint reaches its stop): continue from where it went, or stop the plan after that step")
+    g.add_argument("--taut", action="store_true",
+                   help="keep every spring in tension at every planned pose (required for --spring tension_only)")
     g.add_argument("--timeout", type=positive_float, default=None,
                    help="seconds; then the steps done so far (status time_limit)")
 

@@ -56,6 +56,14 @@ def test_plan_from_a_line_a_csv_and_a_json_file(capsys, tmp_path):
     assert same(got, json.loads(json.dumps(want.to_dict())))
 
 
+def test_plan_of_a_tension_only_chain_keeps_its_springs_taut(capsys):
+    argv = ["plan", "--n", "3", "--spring", "tension_only", "--line", "5.5", "0.3", "5.4", "0.6", "2"]
+    got = run_json(capsys, [*argv, "--taut"])
+    want = to.plan_preloads(to.Manipulator.uniform(3, spring="tension_only"), [[5.5, 0.3], [5.4, 0.6]], taut=True)
+    assert same(got, json.loads(json.dumps(want.to_dict())))
+    assert main(argv) == 2 and "taut" in capsys.readouterr().err
+
+
 def test_plan_with_a_horizon_is_the_library_plan(capsys):
     tip0 = M.tip(to.PreloadController(M).q)
     line = ["--line", *(repr(float(v)) for v in (tip0[0], tip0[1], tip0[0] - 0.1, tip0[1] + 0.3)), "3",

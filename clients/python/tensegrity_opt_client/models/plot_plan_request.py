@@ -65,6 +65,9 @@ class PlotPlanRequest:
             measured from them; default the manipulator's own
         start (None | StartQ | Unset): {"q": [...]}: the configuration with the start's rest lengths (`rest_lengths0`)
             under the first load; null: the equilibrium under it reached from the least-energy rest configuration
+        taut (bool | Unset): keep every spring in tension (L > L0, strictly) at every designed pose; required for a
+            chain with tension-only springs (there the laws agree; the moves between a plan's poses are verified under the
+            laws) Default: False.
         times (list[float] | None | Unset): the steps' instants (seconds), as many as targets, strictly increasing from
             a first one > 0: the start (`rest_lengths0`, `start`) is the state at time 0; default none (or `dt`)
         verify (bool | Unset): verify every step along its transition (`verified`): the previous command and load moving
@@ -91,6 +94,7 @@ class PlotPlanRequest:
     rate_limit: float | list[float] | None | Unset = UNSET
     rest_lengths0: list[list[float]] | None | Unset = UNSET
     start: None | StartQ | Unset = UNSET
+    taut: bool | Unset = False
     times: list[float] | None | Unset = UNSET
     verify: bool | Unset = True
     weights: list[list[float]] | None | Unset = UNSET
@@ -226,6 +230,8 @@ class PlotPlanRequest:
         else:
             start = self.start
 
+        taut = self.taut
+
         times: list[float] | None | Unset
         if isinstance(self.times, Unset):
             times = UNSET
@@ -286,6 +292,8 @@ class PlotPlanRequest:
             field_dict["rest_lengths0"] = rest_lengths0
         if start is not UNSET:
             field_dict["start"] = start
+        if taut is not UNSET:
+            field_dict["taut"] = taut
         if times is not UNSET:
             field_dict["times"] = times
         if verify is not UNSET:
@@ -548,6 +556,8 @@ class PlotPlanRequest:
 
         start = _parse_start(d.pop("start", UNSET))
 
+        taut = d.pop("taut", UNSET)
+
         def _parse_times(data: object) -> list[float] | None | Unset:
             if data is None:
                 return data
@@ -606,6 +616,7 @@ class PlotPlanRequest:
             rate_limit=rate_limit,
             rest_lengths0=rest_lengths0,
             start=start,
+            taut=taut,
             times=times,
             verify=verify,
             weights=weights,

@@ -35,7 +35,9 @@ class PreloadsRequest:
         objective (PreloadsRequestObjective | Unset): nominal: least change from the chain's own rest lengths (the
             library's objective `change`); margin: largest stability margin; energy: least spring energy Default:
             PreloadsRequestObjective.NOMINAL.
-        taut (bool | Unset): keep every spring in tension (L >= L0) Default: False.
+        taut (bool | Unset): keep every spring in tension (L > L0, strictly) at every designed pose; required for a
+            chain with tension-only springs (there the laws agree; the moves between a plan's poses are verified under the
+            laws) Default: False.
     """
 
     manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
