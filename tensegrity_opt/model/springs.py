@@ -171,7 +171,9 @@ def linear_only(m: Any, what: str) -> None:
         f"is honoured by solve_equilibrium (the least-energy equilibrium, joint stops included), find_equilibria, "
         f"force_deflection (branch='stable'), trace_branch, solve_equilibrium_under_force, rest_configuration, "
         f"limit_load, simulate, transition, PreloadFollower, plan_preloads and PreloadController (taut=True), "
-        f"cartesian_stiffness, critical_force (springs taut at the straight chain), preloads_for_pose (taut=True), "
+        f"stability_atlas, "
+        f"cartesian_stiffness, critical_force (springs taut at the straight chain), preloads_for_critical_force, "
+        f"preloads_for_pose (taut=True), "
         f"energy_landscape and the spring state of every answer; use spring='linear' for this analysis (its answer "
         f"is then valid where every spring_states entry is 'taut')",
         field=f"segments[{i}].spring", spring="tension_only", analysis=what)

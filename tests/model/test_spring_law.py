@@ -217,10 +217,8 @@ def _calls(m, lin_eq, P):
         "bifurcation_diagram": lambda: to.bifurcation_diagram(m, lin_eq, to.Control.displacement(), t_max=0.1),
         "imperfection_sensitivity": lambda: to.imperfection_sensitivity(m, [0.01, 0.02]),
         "stability_boundary": lambda: to.stability_boundary(m, "displacement", "k"),
-        "stability_atlas": lambda: to.stability_atlas(m, [0.1], [0.0]),
         "maximize_critical_force": lambda: to.maximize_critical_force(m),
         "preloads_for_pose": lambda: to.preloads_for_pose(m, (5.5, 0.3)),
-        "preloads_for_critical_force": lambda: to.preloads_for_critical_force(m, 0.5),
         "preloads_for_stiffness": lambda: to.preloads_for_stiffness(m, (5.5, 0.3), K_desired=np.eye(2)),
         "plan_preloads": lambda: to.plan_preloads(m, [[5.5, 0.3]]),
         "PreloadController": lambda: to.PreloadController(m),
@@ -970,3 +968,72 @@ def test_a_tension_only_plan_from_a_rest_on_a_stop_or_over_a_horizon_is_refused_
     with pytest.raises(UnsupportedError) as e:
         to.plan_preloads(to.Manipulator.uniform(3, spring="tension_only"), [[5.5, 0.3]], taut=True, horizon=2)
     assert e.value.field == "horizon"
+
+
+# ------------------------------------------------------------------------------------------- the atlas
+def test_the_stability_atlas_of_a_tension_only_chain():
+    """Per target the counts are the reference enumeration's (stable ones on a stop included) with its least
+    energy; every branch end on an edge balances in the reference model with the tip on the edge (where a spring
+    goes slack there, it is at its rest length); every edge left unresolved starts from an equilibrium resting on a
+    stop (the path engine works inside the range) and says so."""
+    import reference_equilibria_tension as reqs
+
+    m = to.Manipulator.uniform(3, a=0.5, L0=0.5, spring="tension_only")
+    X, Y = np.array([1.1, 1.35, 1.6]), np.array([0.0, 0.4])
+    at = to.stability_atlas(m, X, Y)
+    segs = ref.segs_of(m)
+    for row in at.targets:
+        for t in row:
+            want = [r for r in reqs.equilibria(segs, t.dx, t.dy) if np.abs(r.stops).sum() <= m.n - 2]
+            stable = [r for r in want if r.stable]
+            assert (t.count, t.n_stable) == (len(want), len(stable)), (t.dx, t.dy)
+            assert t.least_energy == pytest.approx(min(r.energy for r in stable), rel=1e-9)
+    ends = [c for c in at.crossings if c.kind == "branch_end"]
+    assert ends
+    for c in ends:
+        r = ref.torques(segs, c.q) + ref.tip_jacobian(segs, c.q).T @ c.force
+        assert np.abs(r).max() < 1e-8
+        np.testing.assert_allclose(ref.tip(segs, c.q), ref.target(segs, c.dx, c.dy), atol=1e-9)
+        if c.event in ("spring_slack", "spring_taut"):
+            assert np.abs(ref.lengths(segs, c.q) - 0.5).min() < 1e-8
+    assert at.status == "partial" and at.unresolved
+    for (_, why) in at.unresolved:
+        assert "stop" in why
+
+
+# ------------------------------------------------------------------------------------------- preload design
+def _reference_guided_critical_load(m, h=1e-5):
+    """The straight chain's critical compressive load with the tip guided along x, from the reference model: the
+    least ``P`` where ``Z^T (K + P G) Z`` turns singular (``K`` the reference energy's Hessian, ``G`` the tip x's,
+    both by central differences at ``q = 0``; ``Z`` the null space of the tip y's gradient there)."""
+    segs = ref.segs_of(m)
+    n = m.n
+    q0 = np.zeros(n)
+    K = np.array([(ref.torques(segs, q0 - h * e) - ref.torques(segs, q0 + h * e)) / (2 * h) for e in np.eye(n)])
+    G = np.array([(ref.tip_jacobian(segs, q0 + h * e)[0] - ref.tip_jacobian(segs, q0 - h * e)[0]) / (2 * h)
+                  for e in np.eye(n)])
+    Jy = ref.tip_jacobian(segs, q0)[1]
+    Z = np.linalg.svd(Jy[None, :])[2][1:].T
+    A, B = Z.T @ (0.5 * (K + K.T)) @ Z, -Z.T @ (0.5 * (G + G.T)) @ Z
+    return float(np.min(np.linalg.eigvals(np.linalg.solve(B, A)).real))
+
+
+def test_preloads_for_a_critical_load_of_a_tension_only_chain_keep_every_spring_taut_at_straight():
+    """The designed rest lengths leave every reference spring taut at the straight chain, and the reference's
+    critical load of the designed chain is the one reported; a requirement out of reach returns the strongest
+    design, its rest lengths just below the springs' lengths at straight (taut by 1e-7: the reference's differences
+    then take a step inside that, 1e-9 rad, since a larger one reaches the slack side)."""
+    m = to.Manipulator.uniform(4, a=0.9, k=1.3, spring="tension_only")
+    for required, status in ((0.5, "optimal"), (5.0, "below_required")):
+        d = to.preloads_for_critical_force(m, required)
+        assert d.status == status and all(s.spring == "tension_only" for s in d.manipulator.segments)
+        segs = ref.segs_of(d.manipulator)
+        L0 = np.array([[s.L1_0, s.L2_0] for s in d.manipulator.segments])
+        assert np.all(ref.lengths(segs, np.zeros(4)) - L0 > 0.0)
+        h, rel = (1e-5, 1e-6) if status == "optimal" else (1e-9, 1e-4)
+        assert -d.critical_force == pytest.approx(_reference_guided_critical_load(d.manipulator, h), rel=rel)
+        if status == "optimal":
+            assert -d.critical_force >= required * (1 - 1e-7)
+    with pytest.raises(InvalidParameterError) as e:
+        to.preloads_for_critical_force(m, 0.5, bounds=(2.0, 3.0))
+    assert e.value.field == "bounds"

@@ -35,7 +35,7 @@ from ...errors import (
     UnsupportedError,
 )
 from ...model.manipulator import Manipulator
-from ...model.springs import SpringFields, Springs, linear_only
+from ...model.springs import SpringFields, Springs
 from ...numerics import RANGE_SHRINK, chain_solver
 from ...numerics.layout import rest_lengths
 from ...outcome import Outcome, SolverInfo, freeze
@@ -150,7 +150,9 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
     Minimises ``sum((L0 - L0_nom)^2) / sum(L0_nom^2)`` subject to
     ``Z^T (K(L0) - required G) Z`` positive semidefinite and ``L0`` within ``bounds``
     (default ``(0.05 * 2b, 2b)``: springs in tension at straight; each a number or ``n`` values, one per
-    segment: both springs of a segment keep one rest length). ``timeout`` (seconds) bounds the whole call,
+    segment: both springs of a segment keep one rest length). A chain with tension-only springs: the upper bound is
+    capped just below ``2b`` (``TAUT_FLOOR``), so every spring is taut at the straight chain, where the laws agree.
+    ``timeout`` (seconds) bounds the whole call,
     both solves, as in :func:`~tensegrity_opt.analyses.design.strongest.maximize_critical_force`.
 
     Returns
@@ -166,18 +168,33 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
-    linear_only(m, "preloads_for_critical_force")
     required = float(required)
     if not math.isfinite(required) or required <= 0:
         raise InvalidParameterError("required must be a positive finite load", field="required")
     b = m.b
     bnds = {"L0": bound_pair(bounds) if bounds is not None else (0.05 * 2 * b, 2 * b)}
+    law = m
+    if not m.linear_springs:
+        # the critical load is the straight chain's: where every spring is taut there (L0 < L = 2b) the laws agree,
+        # so the linear law's design with the rest lengths capped below 2b holds for the arm as built
+        lo, hi = bnds["L0"]
+        cap = 2.0 * b * (1.0 - TAUT_FLOOR)
+        if np.any(np.asarray(lo, float) >= cap):
+            raise InvalidParameterError("bounds: a tension-only spring is slack at the straight chain unless its rest "
+                                        "length is below its length there, 2 b: the lower bound must be below 2 b",
+                                        field="bounds")
+        bnds["L0"] = (lo, np.minimum(np.asarray(hi, float), cap))
+        m = m.with_spring("linear")
     with _time_limit(timeout):
         try:
-            return buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
+            d = buckling_design(m, ("L0",), bnds, None, boundary, {}, required=required)
         except InfeasibleDesignError:
             best = buckling_design(m, ("L0",), bnds, None, boundary, {}, required=None)
-            return replace(best, feasible=False, status="below_required")
+            d = replace(best, feasible=False, status="below_required")
+    if law is m:
+        return d
+    return replace(d, manipulator=Manipulator(s.replace(spring=t.spring)
+                                              for s, t in zip(d.manipulator.segments, law.segments)))
 
 
 

@@ -53,7 +53,6 @@ from ...errors import (
     UnreachableTargetError,
 )
 from ...model.manipulator import Manipulator
-from ...model.springs import linear_only
 from ...numerics import DENSE_MAX, chain_solver
 from ...numerics.homotopy import homotopy_available
 from ...outcome import Outcome, freeze
@@ -64,6 +63,7 @@ from ..equilibria.equilibrium import Equilibrium, make_equilibrium
 from .branches import Branch
 from .control import Control
 from .diagram import branches_from
+from .transition import start_state
 
 __all__ = ["StabilityAtlas", "AtlasTarget", "AtlasCrossing", "stability_atlas", "atlas_target", "assemble_atlas",
            "MAX_TARGETS", "CROSSING_KINDS"]
@@ -503,7 +503,6 @@ def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bo
     >>> at.n_stable.max(), len(at.switches) > 0                          # doctest: +SKIP
     (4, True)
     """
-    linear_only(m, "stability_atlas")
     X, Y = _check(m, dx, dy, method)
     targets = [[AtlasTarget(float(x), float(y), error="time_limit: not computed") for x in X] for y in Y]
 
@@ -620,6 +619,10 @@ def _trace_edge(m: Manipulator, eq: Equilibrium, vec: np.ndarray, length: float,
     """The stable branches leaving ``eq`` along the edge: one, or at the straight chain held at full reach (a
     branch point, where the chain buckles) the arms crossing there (:func:`branches_from`); none when the tip
     cannot move that way (the edge of the workspace)."""
+    if eq.at_stop.any():
+        j = int(np.flatnonzero(eq.at_stop)[0])
+        raise _EdgeFailed(f"{_follow(eq, where)}: it rests on joint {j + 1}'s stop (the arm as built: a slack spring "
+                          "lets it reach it); branches are followed inside the range only")
     scale = 2.0 * float(np.mean(m.b))
     h = min(0.02, 0.25 * length / scale)
     direction = vec if side == "A" else -vec
@@ -741,6 +744,12 @@ def _solve_on(m: Manipulator, p: _Path, u: float, a: np.ndarray, unit: np.ndarra
     F0 = np.array([np.interp(u, Us, F[:, c]) for c in range(2)])
     d = a + u * unit
     target = m.target(float(d[0]), float(d[1]))
+    if not m.linear_springs:                 # Newton under the laws (the path problem's corrector), stable only
+        try:
+            st = start_state(m, q0, target=target, force=F0, moved=False)
+        except TensegrityError:
+            return None
+        return st if np.max(np.abs(st.q - q0)) <= 0.05 else None
     res = chain_solver(m).newton_kkt(target, q0, F0)
     if not res.success or res.on_bound or np.max(np.abs(res.q - q0)) > 0.05:
         return None
