@@ -74,6 +74,11 @@ class EquilibriaRequest(BaseModel):
                               "`homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every "
                               "equilibrium certified (chains up to the server's `homotopy_max_segments`, default 5; "
                               "seconds; needs the `phcpack` package on the server, else 503 `homotopy_unavailable`)")
+    stops: bool | None = Field(
+        None, description="include the equilibria resting on a joint's stop (`at_stop`, `contact_torques`); null: "
+                          "yes for a chain with tension-only springs, no under the linear law (the open range). "
+                          "Under the linear law `true` adds Newton with each joint held on either stop (search) or "
+                          "one system per free/stop pattern (homotopy, certified, n <= 5)")
 
 
 # ---------------------------------------------------------------------------- responses

@@ -70,7 +70,7 @@ def force_equilibrium_task(req: s.ForceEquilibriumRequest) -> Equilibrium:
 def equilibria_task(req: s.EquilibriaRequest, timeout: float | None = None) -> Any:
     """Every equilibrium; ``timeout`` bounds the homotopy's external solver (killed then, freeing the thread)."""
     m = build_manipulator(req.manipulator)
-    return to.find_equilibria(m, req.dx, req.dy, method=req.method, timeout=timeout)
+    return to.find_equilibria(m, req.dx, req.dy, method=req.method, timeout=timeout, stops=req.stops)
 
 
 def buckling_task(req: s.BucklingRequest) -> Any:

@@ -310,7 +310,7 @@ def test_the_cartesian_stiffness_of_a_tension_only_equilibrium_on_a_stop_is_the_
 
 
 # ------------------------------------------------------------------------------------------- every equilibrium
-def _same_sets(m, dx, dy, method="search", status="searched"):
+def _same_sets(m, dx, dy, method="search", status="searched", **kw):
     """find_equilibria of a tension-only chain against the independent enumeration (the constraint manifold on dense
     grids, every stop set, both elbows: ``tests/support/reference_equilibria_tension.py``): the same equilibria, the
     same Morse indices, the same stops. Configurations with more than n - 2 joints on stops (met only by coincidence;
@@ -318,7 +318,7 @@ def _same_sets(m, dx, dy, method="search", status="searched"):
     import reference_equilibria_tension as reqs
 
     want = [r for r in reqs.equilibria(ref.segs_of(m), dx, dy) if np.abs(r.stops).sum() <= m.n - 2]
-    got = to.find_equilibria(m, dx, dy, method=method)
+    got = to.find_equilibria(m, dx, dy, method=method, **kw)
     assert got.status == status and len(got) == len(want), (got.status, len(got), len(want), got.message)
     for e in got:
         d = [float(np.abs(e.q - r.q).max()) for r in want]
@@ -1037,3 +1037,41 @@ def test_preloads_for_a_critical_load_of_a_tension_only_chain_keep_every_spring_
     with pytest.raises(InvalidParameterError) as e:
         to.preloads_for_critical_force(m, 0.5, bounds=(2.0, 3.0))
     assert e.value.field == "bounds"
+
+
+# ------------------------------------------------------------------------------------------- stops, the linear law
+#: Linear-law chains and targets with equilibria resting on a stop (the reference enumeration finds 1-4 of them).
+LINEAR_STOP_CASES = [("heterogeneous", 300, 2.0), ("heterogeneous", 301, 2.0), ("asymmetric", 300, 3.0),
+                     ("dy", 302, 3.0), ("large", 302, 2.0)]
+
+
+def _linear_stop_case(family, seed, scale):
+    rng = np.random.default_rng(seed)
+    m, dx, dy = _chain(family, rng, "linear", n=int(rng.integers(3, 5)))
+    return m, dx * scale, dy * scale + 0.1
+
+
+@pytest.mark.parametrize("case", LINEAR_STOP_CASES)
+def test_every_equilibrium_under_the_linear_law_with_stops_is_the_reference(case):
+    """``stops=True`` under the linear law: the open range's set and the equilibria resting on a stop, equal to the
+    reference enumeration (stops, Morse indices, contact torques); the default leaves the stop ones out."""
+    m, dx, dy = _linear_stop_case(*case)
+    got = _same_sets(m, dx, dy, stops=True)
+    assert any(e.at_stop.any() for e in got)
+    assert len(to.find_equilibria(m, dx, dy)) == sum(not e.at_stop.any() for e in got)
+
+
+@needs_phc
+@pytest.mark.slow_cases(keep=2)
+@pytest.mark.parametrize("case", LINEAR_STOP_CASES)
+def test_the_certified_set_under_the_linear_law_with_stops_is_the_reference(case):
+    m, dx, dy = _linear_stop_case(*case)
+    got = _same_sets(m, dx, dy, method="homotopy", status="certified", stops=True)
+    assert any(e.at_stop.any() for e in got)
+
+
+def test_stops_false_leaves_a_tension_only_chains_stop_equilibria_out():
+    m = to.Manipulator.uniform(3, spring="tension_only")
+    every, inside = to.find_equilibria(m, 2.0), to.find_equilibria(m, 2.0, stops=False)
+    assert [e.q.tolist() for e in inside] == [e.q.tolist() for e in every if not e.at_stop.any()]
+    assert len(inside) < len(every) and "stops=False" in inside.message

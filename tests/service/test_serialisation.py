@@ -233,6 +233,8 @@ def test_cli_json_is_the_api_body(chain, client, capsys, tmp_path):
     cases = [
         (["equilibrium", "--dx", "0.3", "--dy", "0.05"], "/v1/equilibrium", {"dx": 0.3, "dy": 0.05}),
         (["equilibria", "--dx", "0.2"], "/v1/equilibria", {"dx": 0.2}),
+        (["equilibria", "--dx", "0.9", "--dy", "0.3", "--stops"], "/v1/equilibria", {"dx": 0.9, "dy": 0.3,
+                                                                                     "stops": True}),
         (["buckling"], "/v1/buckling", {}),
         (["buckling", "--boundary", "free"], "/v1/buckling", {"boundary": "free"}),
         (["curve", "--start", "0", "--stop", "0.6", "--num", "4", "--dy", "0.0"], "/v1/force-deflection",

@@ -57,7 +57,8 @@ DISTINCT = {frozenset(p) for p in (("target", "targets"), ("load", "loads"), ("e
                                    ("segment", "segments"), ("value", "values"), ("preload", "preloads"),
                                    ("bound", "bounds"), ("step", "steps"), ("kind", "kinds"),
                                    ("weight", "weights"), ("point", "points"), ("start", "starts"),
-                                   ("direction", "directions"))}
+                                   ("direction", "directions"),
+                                   ("stop", "stops"))}          # a range's end; the joints' stops (`stops`)
 #: The parts of a composite value, compared under their parent's name.
 PARTS = {"lo", "hi", "start", "stop", "num"}
 _RANGE = "{num,start,stop}"

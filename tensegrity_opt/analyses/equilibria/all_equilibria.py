@@ -141,9 +141,9 @@ class EquilibriumSet(Outcome, Sequence):
         "certified": "the polynomial homotopy proved the set complete: every path ended, every real root inside the "
                      "range polished onto an equilibrium, no two distinct roots merged, and every equilibrium "
                      "proven by Krawczyk's test in ball arithmetic (the only one in its box, real, inside the "
-                     "range, the boxes pairwise disjoint: certificate); for tension-only springs, one homotopy per "
-                     "taut/slack/stop pattern that may reach the target, each complete, without interval boxes "
-                     "(certificate null)",
+                     "range, the boxes pairwise disjoint: certificate); for tension-only springs (and stops=True), one "
+                     "homotopy per taut/slack/stop pattern that may reach the target, each complete, without "
+                     "interval boxes (certificate null)",
         "uncertified": "the polynomial homotopy ran but did not prove the set complete (a path failed, its report "
                        "did not check out, a real root did not polish, or two distinct roots lay closer than the "
                        "merge tolerance, or an equilibrium's interval proof failed: the message says which); every "
@@ -244,7 +244,7 @@ def homotopy_set(eqs, sol, polished, certificate: IntervalCertificate | None = N
 def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str = "search", n_random: int = 16,
                     amplitudes=(0.6, 1.0, 1.6), max_modes: int = 12, extra_seeds=None,
                     dedupe_tol: float = 1e-6, n_projected: int | None = None,
-                    timeout: float | None = None) -> EquilibriumSet:
+                    timeout: float | None = None, stops: bool | None = None) -> EquilibriumSet:
     """All equilibria inside the physical range for the tip at ``(2 sum(b) - dx, dy)``.
 
     Parameters
@@ -277,6 +277,14 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         Two solutions closer than this (max-norm of ``q``, rad) are one.
     timeout : float, optional
         Homotopy only: seconds before PHCpack is stopped (:class:`SolverError`).
+    stops : bool, optional
+        Include the equilibria resting on a joint's stop (the closed range; ``at_stop``, ``contact_torques``).
+        Default: yes for a chain with tension-only springs (a slack spring lets a joint reach its stop), no under
+        the linear law (the open range, as before). Under the linear law ``stops=True`` adds them: the search adds
+        Newton with each joint held on either stop (:func:`~.tension_only.stop_equilibria`, measured; ~0.3-0.5 s at
+        n = 4), the homotopy solves one system per free/stop pattern that may reach the target (certified, n <= 5;
+        :mod:`.tension_only_homotopy`, no Krawczyk boxes). ``False`` for a tension-only chain keeps the open
+        range's members of its set.
 
     Returns
     -------
@@ -320,8 +328,22 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     if m.n == 1:
         return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", status="exact",
                               message="a single segment: the target fixes its joint angle")
-    if not m.linear_springs:
-        return _slack_search(m, target, method, timeout)
+    if not m.linear_springs or stops:
+        found = _slack_search(m, target, method, timeout, stops_only=m.linear_springs and method == "search")
+        if m.linear_springs:                # the linear law's open-range set, and the stop equilibria beside it
+            inner = None
+            if method == "search":
+                try:
+                    inner = find_equilibria(m, dx, dy, method=method, n_random=n_random, amplitudes=amplitudes,
+                                            max_modes=max_modes, extra_seeds=extra_seeds, dedupe_tol=dedupe_tol,
+                                            n_projected=n_projected, timeout=timeout, stops=False)
+                except SolverError as exc:      # none inside the open range: the stop equilibria may be all
+                    if exc.details.get("found") != 0 or not len(found):
+                        raise
+                    inner = EquilibriumSet([], method="search", status="searched",
+                                           message="no equilibrium inside the open range")
+            return _with_stops(inner, found)
+        return found if stops is not False else _open_range(found)
     if method == "homotopy":
         return _homotopy(m, target, dedupe_tol, timeout)
     results = []
@@ -421,9 +443,11 @@ def _sorted(m: Manipulator, results) -> list[Equilibrium]:
     return eqs
 
 
-def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: float | None) -> EquilibriumSet:
-    """Every equilibrium of a chain with tension-only springs, in the closed joint range: the search
-    (:mod:`.tension_only`) or the homotopy of every taut/slack/stop pattern (:mod:`.tension_only_homotopy`)."""
+def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: float | None, *,
+                  stops_only: bool = False) -> EquilibriumSet:
+    """Every equilibrium of a chain with tension-only springs (or, ``find_equilibria(stops=True)``, linear ones), in
+    the closed joint range: the search (:mod:`.tension_only`; ``stops_only``: from its stop and rigid starts only) or
+    the homotopy of every taut/slack/stop pattern (:mod:`.tension_only_homotopy`)."""
     if method == "homotopy":
         from .tension_only_homotopy import certified_equilibria_slack
 
@@ -436,15 +460,36 @@ def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: floa
         return EquilibriumSet(eqs, method="homotopy", status="certified" if report["certified"] else "uncertified",
                               message=report["message"], paths=report["paths"], failed_paths=report["failed_paths"],
                               seconds=report["seconds"])
-    from .tension_only import all_equilibria_slack
+    from .tension_only import all_equilibria_slack, stop_equilibria
 
     with time_limit(timeout):
-        eqs = all_equilibria_slack(m, target)
+        eqs = stop_equilibria(m, target) if stops_only else all_equilibria_slack(m, target)
     on_stop = sum(bool(e.at_stop.any()) for e in eqs)
     where = f" ({on_stop} resting on a joint's stop)" if on_stop else ""
     return EquilibriumSet(eqs, method="search", status="searched",
                           message=f"{len(eqs)} equilibria{where} found by the tension-only search (Newton under the "
                                   "springs' laws over the closed joint range: complete in practice, not certified)")
+
+
+def _with_stops(inner: EquilibriumSet | None, found: EquilibriumSet) -> EquilibriumSet:
+    """The linear law's set with the equilibria resting on a stop (``find_equilibria(stops=True)``): the homotopy's
+    set of every free/stop pattern as it is (``inner`` None), or the open-range search's set joined by the stop
+    search's (measured)."""
+    if inner is None:
+        return found
+    eqs = sorted([*inner, *(e for e in found if e.at_stop.any())], key=lambda e: (round(e.energy, 10), -e.q[0]))
+    on = len(eqs) - len(inner)
+    return EquilibriumSet(eqs, method="search", status="searched",
+                          message=f"{inner.message}; with {on} equilibria resting on a joint's stop (Newton with each "
+                                  "joint held on either stop; complete in practice, not certified)")
+
+
+def _open_range(found: EquilibriumSet) -> EquilibriumSet:
+    """The members of ``found`` inside the open range (``stops=False`` for a tension-only chain)."""
+    eqs = [e for e in found if not e.at_stop.any()]
+    return EquilibriumSet(eqs, method=found.method, status=found.status,
+                          message=f"{found.message}; {len(found) - len(eqs)} resting on a stop left out (stops=False)",
+                          paths=found.paths, failed_paths=found.failed_paths, seconds=found.seconds)
 
 
 def _homotopy(m: Manipulator, target: np.ndarray, dedupe_tol: float, timeout: float | None) -> EquilibriumSet:

@@ -55,7 +55,8 @@ from .equilibrium import (
 )
 from .seeds import project_to_target
 
-__all__ = ["least_energy_slack", "all_equilibria_slack", "STARTS", "STOP_TOL", "SEARCH_PER_JOINT", "STOP_STARTS"]
+__all__ = ["least_energy_slack", "all_equilibria_slack", "stop_equilibria", "STARTS", "STOP_TOL", "SEARCH_PER_JOINT",
+           "STOP_STARTS"]
 
 #: IPOPT starts of the search taken from the ranked sample (besides q0).
 STARTS = 6
@@ -278,12 +279,29 @@ def all_equilibria_slack(m: Manipulator, target: np.ndarray) -> list[Equilibrium
     dense grids, every stop set: ``tests/support/reference_equilibria_tension.py``) on 34 chains n = 3, 4 of every
     family. More than ``n - 2`` joints on stops meet a target only by coincidence (the tip force is then not
     determined): not looked for."""
-    nlp = slack_nlp(m.n)
+    rng = np.random.default_rng(20261208 + m.n)
+    return _run_jobs(m, target, _free_jobs(m, target, rng) + _stop_jobs(m, target, rng))
+
+
+def stop_equilibria(m: Manipulator, target: np.ndarray) -> list[Equilibrium]:
+    """The equilibria resting on at least one joint's stop that :func:`all_equilibria_slack` finds, from its stop
+    and rigid starts only (the linear law's search adds them to its open-range set: ``find_equilibria(stops=True)``)."""
+    rng = np.random.default_rng(20261208 + m.n)
+    return [e for e in _run_jobs(m, target, _stop_jobs(m, target, rng)) if e.at_stop.any()]
+
+
+def _free_jobs(m: Manipulator, target: np.ndarray, rng: np.random.Generator) -> list[tuple[np.ndarray, frozenset]]:
+    """Newton's starts with no joint held: ``SEARCH_PER_JOINT * n`` samples projected onto the tip."""
     n, lim = m.n, m.joint_limits
-    rng = np.random.default_rng(20261208 + n)
-    jobs: list[tuple[np.ndarray, frozenset]] = []
     Q = project_to_target(m, rng.uniform(-0.98, 0.98, size=(SEARCH_PER_JOINT * n, n)) * lim, target)
-    jobs += [(Q[r], frozenset()) for r in (np.flatnonzero(distinct_rows(Q, START_SPACING)) if Q.shape[0] else ())]
+    return [(Q[r], frozenset()) for r in (np.flatnonzero(distinct_rows(Q, START_SPACING)) if Q.shape[0] else ())]
+
+
+def _stop_jobs(m: Manipulator, target: np.ndarray, rng: np.random.Generator) -> list[tuple[np.ndarray, frozenset]]:
+    """Newton's starts with a joint held on its stop (``STOP_STARTS`` per joint and side, half with another joint
+    near its stop), and the rigid configurations (``n - 2`` joints on stops)."""
+    n, lim = m.n, m.joint_limits
+    jobs: list[tuple[np.ndarray, frozenset]] = []
     if n >= 3:
         for i in range(n):
             for side in (-1.0, 1.0):
@@ -298,6 +316,14 @@ def all_equilibria_slack(m: Manipulator, target: np.ndarray) -> list[Equilibrium
     if 2 <= n <= RIGID_MAX:
         for q in _rigid(m, target, rng):
             jobs.append((q, frozenset(np.flatnonzero(np.abs(q) >= lim).tolist())))
+    return jobs
+
+
+def _run_jobs(m: Manipulator, target: np.ndarray, jobs: list[tuple[np.ndarray, frozenset]]) -> list[Equilibrium]:
+    """Damped Newton from each start (its held joints on their stops), a joint that reaches its stop then held, each
+    solution classified; the distinct ones sorted by energy."""
+    nlp = slack_nlp(m.n)
+    n = m.n
     found: list[Equilibrium] = []
     for q, held in jobs:
         check_time("the tension-only search")

@@ -85,7 +85,7 @@ def _cmd_equilibrium(args, m):
 
 def _cmd_equilibria(args, m):
     with Progress("equilibria", enabled=args.progress) as bar:
-        eqs = find_equilibria(m, args.dx, args.dy, method=args.method)
+        eqs = find_equilibria(m, args.dx, args.dy, method=args.method, stops=args.stops)
         bar.close(equilibria_summary(eqs, bar.seconds))
     how = f"method {eqs.method}, " + ("certified complete" if eqs.certified else "not certified")
     if eqs.paths:
@@ -174,6 +174,9 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
     sp.add_argument("--method", choices=("search", "homotopy"), default="search",
                     help="search: multi-start Newton (any n, not certified); homotopy: PHCpack, certified, "
                          "n <= 6 (default: %(default)s)")
+    sp.add_argument("--stops", action=argparse.BooleanOptionalAction, default=None,
+                    help="include (or leave out) the equilibria resting on a joint's stop; default: included for "
+                         "tension-only springs, left out under the linear law")
     add_progress_option(sp)
 
     sp = command("curve", _cmd_curve, "force-deflection curve along the stable branch (Fig. 6)")

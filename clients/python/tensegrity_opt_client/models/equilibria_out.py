@@ -34,13 +34,14 @@ class EquilibriaOut:
         status (EquilibriaOutStatus): `certified`: the polynomial homotopy proved the set complete: every path ended,
             every real root inside the range polished onto an equilibrium, no two distinct roots merged, and every
             equilibrium proven by Krawczyk's test in ball arithmetic (the only one in its box, real, inside the range, the
-            boxes pairwise disjoint: certificate); for tension-only springs, one homotopy per taut/slack/stop pattern that
-            may reach the target, each complete, without interval boxes (certificate null); `uncertified`: the polynomial
-            homotopy ran but did not prove the set complete (a path failed, its report did not check out, a real root did
-            not polish, or two distinct roots lay closer than the merge tolerance, or an equilibrium's interval proof
-            failed: the message says which); every equilibrium listed is one, others may exist; `searched`: the multi-start
-            search: complete in practice (measured against the homotopy), never proven; `exact`: known exactly: the straight
-            chain at full extension, a single segment, or the unloaded chain (the product of its segments' critical points)
+            boxes pairwise disjoint: certificate); for tension-only springs (and stops=True), one homotopy per
+            taut/slack/stop pattern that may reach the target, each complete, without interval boxes (certificate null);
+            `uncertified`: the polynomial homotopy ran but did not prove the set complete (a path failed, its report did not
+            check out, a real root did not polish, or two distinct roots lay closer than the merge tolerance, or an
+            equilibrium's interval proof failed: the message says which); every equilibrium listed is one, others may exist;
+            `searched`: the multi-start search: complete in practice (measured against the homotopy), never proven; `exact`:
+            known exactly: the straight chain at full extension, a single segment, or the unloaded chain (the product of its
+            segments' critical points)
         success (bool): whether it worked: `status` is one of certified, exact, searched
     """
 

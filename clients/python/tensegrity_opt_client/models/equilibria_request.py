@@ -1,7 +1,7 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING, Any, TypeVar, cast
 
 from attrs import define as _attrs_define
 
@@ -29,12 +29,17 @@ class EquilibriaRequest:
             certified); `homotopy`: PHCpack's polyhedral homotopy on the polynomial KKT system, every equilibrium certified
             (chains up to the server's `homotopy_max_segments`, default 5; seconds; needs the `phcpack` package on the
             server, else 503 `homotopy_unavailable`) Default: EquilibriaRequestMethod.SEARCH.
+        stops (bool | None | Unset): include the equilibria resting on a joint's stop (`at_stop`, `contact_torques`);
+            null: yes for a chain with tension-only springs, no under the linear law (the open range). Under the linear law
+            `true` adds Newton with each joint held on either stop (search) or one system per free/stop pattern (homotopy,
+            certified, n <= 5)
     """
 
     dx: float
     manipulator: SegmentedManipulatorIn | UniformManipulatorIn
     dy: float | Unset = 0.0
     method: EquilibriaRequestMethod | Unset = EquilibriaRequestMethod.SEARCH
+    stops: bool | None | Unset = UNSET
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.uniform_manipulator_in import UniformManipulatorIn  # noqa: PLC0415
@@ -53,6 +58,12 @@ class EquilibriaRequest:
         if not isinstance(self.method, Unset):
             method = self.method.value
 
+        stops: bool | None | Unset
+        if isinstance(self.stops, Unset):
+            stops = UNSET
+        else:
+            stops = self.stops
+
         field_dict: dict[str, Any] = {}
 
         field_dict.update(
@@ -65,6 +76,8 @@ class EquilibriaRequest:
             field_dict["dy"] = dy
         if method is not UNSET:
             field_dict["method"] = method
+        if stops is not UNSET:
+            field_dict["stops"] = stops
 
         return field_dict
 
@@ -102,11 +115,21 @@ class EquilibriaRequest:
         else:
             method = EquilibriaRequestMethod(_method)
 
+        def _parse_stops(data: object) -> bool | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(bool | None | Unset, data)
+
+        stops = _parse_stops(d.pop("stops", UNSET))
+
         equilibria_request = cls(
             dx=dx,
             manipulator=manipulator,
             dy=dy,
             method=method,
+            stops=stops,
         )
 
         return equilibria_request
