@@ -270,25 +270,26 @@ def test_force_deflection_list_all_branches(client):
 
 @pytest.mark.slow
 def test_force_deflection_answers_a_partial_curve_with_200(client):
-    """The paper's chain has no stable equilibrium beyond dx = 3.15 (``tests/analyses/paths/test_curves.py``): the
-    points before, with the end and the buckling jump at the guided critical force, as the library's curve."""
-    body = {"manipulator": PAPER, "dx": {"start": 0.0, "stop": 4.0, "num": 81}, "dy": 0.0}
+    """The paper's chain has no stable equilibrium from dx = 6 on, out of the closed range's reach (past dx ~ 3.12 it
+    rests on joint 3's stop; ``tests/analyses/paths/test_curves.py``): the points before, with the end and the buckling
+    jump at the guided critical force, as the library's curve."""
+    body = {"manipulator": PAPER, "dx": {"start": 0.0, "stop": 6.2, "num": 63}, "dy": 0.0}
     r = client.post("/v1/force-deflection", json=body)
     assert r.status_code == 200, r.text
     got = r.json()
     schemas.ForceDeflectionOut.model_validate(got)
     assert got["success"] is False and got["status"] == "no_stable_equilibrium"
-    assert got["requested"] == 81 and len(got["points"]) == 63
-    assert got["ended_at"]["dx"] == pytest.approx(3.15) and got["ended_at"]["dy"] == 0.0
+    assert got["requested"] == 63 and len(got["points"]) == 60
+    assert got["ended_at"]["dx"] == pytest.approx(6.0) and got["ended_at"]["dy"] == 0.0
     assert got["ended_at"]["status"] == "no_stable_equilibrium" and got["ended_at"]["message"]
     assert got["ended_at"]["success"] is False
-    assert got["message"].endswith("63 of 81 points computed.")
+    assert got["message"].endswith("60 of 63 points computed.")
     assert got["points"][0]["status"] == "straight" and got["points"][-1]["status"] == "converged"
-    assert got["points"][-1]["solver"]["status"] == "Newton_Converged"
+    assert got["points"][31]["solver"]["status"] == "Newton_Converged"           # dx = 3.1, inside the range
     assert [j["kind"] for j in got["jumps"]] == ["buckling"]
     jd = got["jumps"][0]
     assert jd["delta"]["fx"] == pytest.approx(-0.572793, abs=1e-6) and jd["label"].startswith("buckling")
-    assert got == to.force_deflection(to.Manipulator.uniform(4), np.linspace(0.0, 4.0, 81)).to_dict()
+    assert got == to.force_deflection(to.Manipulator.uniform(4), np.linspace(0.0, 6.2, 63)).to_dict()
 
 
 def test_stiffness(client):

@@ -535,6 +535,16 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
                     g = None
                 if g is not None and not any(np.max(np.abs(br.q[j] - g.q)) < 1e-7 for br in live):
                     live.append(new_branch(j, g, stop))
+            if not live and branch == "stable":
+                # no stable equilibrium inside the open range: the closed range's, the arm resting on a joint's
+                # stop where it reaches one (on the followed branch when the local solve continues it there)
+                try:
+                    pick = _closed_range_point(m, j, dxs, dys, None if current is None else branches[current],
+                                               branches)
+                    current = sel[j] = pick.id
+                    continue
+                except _NoStable:
+                    pass
             if not live:
                 # the stable branches end here and the global search finds no other: the curve stops
                 end = j
@@ -564,8 +574,6 @@ def _slack_curve(m: Manipulator, dx, dy, branch: str) -> Curve:
     followed from the previous point is continued by a local solve from its configuration; where the selected one
     differs, the jump is a ``"switch"`` when that continuation is still a stable equilibrium (of higher energy),
     else a ``"snap"``. A point with no stable equilibrium (or a free joint left undetermined) ends the curve."""
-    from ..equilibria.tension_only import least_energy_slack
-
     if branch != "stable":
         raise UnsupportedError("branch='all' follows every branch by the linear law's compiled continuation; for a "
                                "chain with tension-only springs the curve follows the least-energy stable one "
@@ -576,44 +584,67 @@ def _slack_curve(m: Manipulator, dx, dy, branch: str) -> Curve:
     branches: list[BranchPoints] = []
     sel = np.full(npts, -1, dtype=int)
     end, ended = npts, None
-    scale = m.torque_scale
     prev: BranchPoints | None = None
     for j in range(npts):
         check_time("the force-deflection curve")
         if straight[j]:
             prev = None
             continue
-        target = m.target(dxs[j], dys[j])
-        q0 = prev.q[j - 1] if prev is not None else None
         try:
-            g = least_energy_slack(m, float(dxs[j]), float(dys[j]), target, q0=q0)
-        except (NoEquilibriumError, UnreachableTargetError, UnsupportedError) as exc:
-            end = j
-            dxo, dyo = float(dxs[j]), float(dys[j])
-            ended = CurveEnd(dxo, dyo, "no_stable_equilibrium",
-                             f"No stable equilibrium at dx = {dxo:g}, dy = {dyo:g} under the springs' laws: "
-                             f"{exc}.")
+            prev = _closed_range_point(m, j, dxs, dys, prev, branches)
+        except _NoStable as exc:
+            end, ended = j, exc.end
             break
-        cont = None
-        if prev is not None:
-            try:
-                cont = least_energy_slack(m, float(dxs[j]), float(dys[j]), target, q0=q0, local=True)
-            except (NoEquilibriumError, UnreachableTargetError, UnsupportedError):
-                cont = None
-            if cont is not None and (not cont.stable or float(np.abs(cont.q - q0).max()) > CONTINUE_STEP):
-                cont = None                          # the branch ended (a fold, a stop) or the solve left it
-        if prev is not None and cont is not None and (
-                float(np.abs(cont.q - g.q).max()) < 1e-6 or cont.energy <= g.energy + 1e-9 * max(scale, abs(g.energy))):
-            prev.set(j, cont)
-        else:
-            if prev is not None and cont is not None:
-                prev.set(j, cont)                    # still stable there: the new one is a switch
-            prev = BranchPoints(len(branches), npts, m.n)
-            prev.set(j, g)
-            branches.append(prev)
         sel[j] = prev.id
     curve = _assemble(m, dxs[:end], dys[:end], branches, sel[:end], straight[:end])
     return replace(curve, ended_at=ended, requested=npts)
+
+
+class _NoStable(Exception):
+    """No stable equilibrium at a point of the closed range: the curve ends (``end``, a :class:`CurveEnd`)."""
+
+    def __init__(self, end: CurveEnd) -> None:
+        super().__init__(end.message)
+        self.end = end
+
+
+def _closed_range_point(m: Manipulator, j: int, dxs, dys, prev: BranchPoints | None,
+                        branches: list[BranchPoints]) -> BranchPoints:
+    """Point ``j`` of a curve over the closed range (stops included, under the springs' laws): the least-energy
+    stable equilibrium (the global search of :mod:`~..equilibria.tension_only`, ``prev``'s configuration at the
+    point before one of its starts) set on the branch it lies on: ``prev`` where the local solve from there (its
+    continuation) is that equilibrium or no higher, else a new branch in ``branches`` (a switch when the
+    continuation is still stable, else a snap). :class:`_NoStable` where there is none."""
+    from ..equilibria.tension_only import least_energy_slack
+
+    target = m.target(dxs[j], dys[j])
+    q0 = prev.q[j - 1] if prev is not None and prev.valid[j - 1] else None
+    try:
+        g = least_energy_slack(m, float(dxs[j]), float(dys[j]), target, q0=q0)
+    except (NoEquilibriumError, UnreachableTargetError, UnsupportedError) as exc:
+        dxo, dyo = float(dxs[j]), float(dys[j])
+        raise _NoStable(CurveEnd(dxo, dyo, "no_stable_equilibrium",
+                                 f"No stable equilibrium at dx = {dxo:g}, dy = {dyo:g} under the springs' laws: "
+                                 f"{exc}.")) from None
+    cont = None
+    if q0 is not None:
+        try:
+            cont = least_energy_slack(m, float(dxs[j]), float(dys[j]), target, q0=q0, local=True)
+        except (NoEquilibriumError, UnreachableTargetError, UnsupportedError):
+            cont = None
+        if cont is not None and (not cont.stable or float(np.abs(cont.q - q0).max()) > CONTINUE_STEP):
+            cont = None                          # the branch ended (a fold, a stop) or the solve left it
+    scale = m.torque_scale
+    if prev is not None and cont is not None and (
+            float(np.abs(cont.q - g.q).max()) < 1e-6 or cont.energy <= g.energy + 1e-9 * max(scale, abs(g.energy))):
+        prev.set(j, cont)
+        return prev
+    if prev is not None and cont is not None:
+        prev.set(j, cont)                        # still stable there: the new one is a switch
+    new = BranchPoints(len(branches), dxs.size, m.n)
+    new.set(j, g)
+    branches.append(new)
+    return new
 
 
 def _end(m: Manipulator, dxs, dys, j: int, followed: BranchPoints | None, origin: np.ndarray) -> CurveEnd:

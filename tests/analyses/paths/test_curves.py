@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 import reference_model as ref
+import reference_tension_only as ref_closed
 from reference_paths import rest_configuration as ref_rest
 
 import tensegrity_opt as to
@@ -130,7 +131,9 @@ def test_every_return_to_straight_is_a_jump():
 # -------------------------------------------------------------------------------- partial curves and jump kinds
 PRE_BENT = to.Manipulator([Segment(1.0, 1.0, 1.0, (1.05, 0.95))] * 2 + [Segment(1.0, 1.0, 1.0, 1.0)] * 2)
 PAPER_REF = ref.Chain.uniform(4, 1.0, 1.0, 1.0, 1.0)
-FAILING = np.linspace(0.0, 4.0, 81)     # no stable equilibrium beyond dx = 3.15
+#: Past dx ~ 3.12 joint 3 rests on its stop (the open range has no stable equilibrium from dx = 3.15 on); from dx = 6
+#: on the target is out of the closed range's reach (only the rigid fold with every joint on a stop meets dx = 6).
+FAILING = np.linspace(0.0, 6.2, 63)
 
 
 def _stable_reference_equilibria(chain: ref.Chain, dx: float, dy: float, n_starts: int = 200) -> list:
@@ -164,53 +167,60 @@ def _branch_survives(chain: ref.Chain, q, F, d0: float, d1: float, dy: float = 0
 @pytest.mark.slow
 def test_partial_curve_ends_where_the_reference_model_finds_no_stable_equilibrium():
     c = to.force_deflection(PAPER, FAILING)
-    assert not c.success and c.status == "no_stable_equilibrium" and c.requested == 81 and c.dx.size == 63
+    assert not c.success and c.status == "no_stable_equilibrium" and c.requested == 63 and c.dx.size == 60
     e = c.ended_at
-    assert e.status == "no_stable_equilibrium" and not e.success and e.dx == FAILING[63] and e.dy == 0.0
-    assert "dx = 3.15" in e.message
-    assert c.message == ("The stable branch ends between dx = 3.1 and dx = 3.15 (dy = 0): no stable equilibrium at "
-                      "dx = 3.15; 63 of 81 points computed.")
-    np.testing.assert_array_equal(c.dx, FAILING[:63])
+    assert e.status == "no_stable_equilibrium" and not e.success and e.dx == FAILING[60] and e.dy == 0.0
+    assert "dx = 6" in e.message
+    assert c.message == ("The stable branch ends between dx = 5.9 and dx = 6 (dy = 0): no stable equilibrium at "
+                      "dx = 6; 60 of 63 points computed.")
+    np.testing.assert_array_equal(c.dx, FAILING[:60])
     for arr in (c.dy, c.fx, c.fy, c.energy, c.stable, c.morse_index, c.branch):
-        assert arr.shape == (63,)
-    assert c.q.shape == (63, 4) and len(c.shape) == len(c.point_status) == len(c.solver) == 63
+        assert arr.shape == (60,)
+    assert c.q.shape == (60, 4) and len(c.shape) == len(c.point_status) == len(c.solver) == 60
     assert c.stable.all() and c.point_status[0] == "straight" and set(c.point_status[1:]) == {"converged"}
-    assert c.solver[0].status == "straight" and {v.status for v in c.solver[1:]} == {"Newton_Converged"}
-    # the last point: the reference model's many-start least-energy stable equilibrium, same energy and force
-    E_ref, _, F_ref = PAPER_REF.global_min(c.dx[-1], 0.0, n_random=60)
-    assert c.energy[-1] == pytest.approx(E_ref, rel=1e-9)
-    np.testing.assert_allclose([c.fx[-1], c.fy[-1]], F_ref, atol=1e-7)
-    # the end: neither the reference descent nor its random-start Newton search finds a stable equilibrium
+    assert c.solver[0].status == "straight"
+    # inside the open range (dx <= 3.1): the reference model's many-start least-energy stable equilibrium
+    k = int(np.flatnonzero(np.isclose(c.dx, 3.1))[0])
+    E_ref, _, F_ref = PAPER_REF.global_min(c.dx[k], 0.0, n_random=60)
+    assert c.energy[k] == pytest.approx(E_ref, rel=1e-9)
+    np.testing.assert_allclose([c.fx[k], c.fy[k]], F_ref, atol=1e-7)
+    # from dx = 3.15 the open range has none (the reference's descent and Newton search), and the curve goes on with
+    # joint 3 on its stop: the closed range's brute-force least energy, up to the last point
     with pytest.raises(RuntimeError, match="found nothing"):
-        PAPER_REF.global_min(e.dx, e.dy, n_random=60)
-    assert _stable_reference_equilibria(PAPER_REF, e.dx, e.dy) == []
-    # the jumps lie on the returned part: only the buckling one
+        PAPER_REF.global_min(3.15, 0.0, n_random=60)
+    assert _stable_reference_equilibria(PAPER_REF, 3.15, 0.0) == []
+    segs = ref_closed.segs_of(PAPER)
+    for j in (k + 1, c.dx.size - 1):
+        assert np.abs(c.q[j]).max() == pytest.approx(PAPER.joint_limits.max(), abs=1e-9)
+        assert c.energy[j] == pytest.approx(ref_closed.least_energy(segs, c.dx[j], 0.0).energy, rel=1e-9)
+    # the jumps lie on the returned part: only the buckling one (the arm reaches the stop continuously)
     assert [j.kind for j in c.jumps] == ["buckling"]
 
 
 def test_a_complete_curve_says_so():
-    c = to.force_deflection(PAPER, FAILING[:63])
-    assert c.success and c.status == "complete" and c.ended_at is None and c.requested == 63 == c.dx.size
-    assert c.message == "all 63 requested points computed"
+    c = to.force_deflection(PAPER, FAILING[:32])
+    assert c.success and c.status == "complete" and c.ended_at is None and c.requested == 32 == c.dx.size
+    assert c.message == "all 32 requested points computed"
     d = c.to_dict()
     assert list(d)[:3] == ["success", "status", "message"] and "complete" not in d and "note" not in d
-    assert d["success"] is True and d["status"] == "complete" and d["ended_at"] is None and d["requested"] == 63
+    assert d["success"] is True and d["status"] == "complete" and d["ended_at"] is None and d["requested"] == 32
 
 
 def test_points_after_the_end_are_dropped():
-    """The curve stops at the first point without a stable equilibrium, even when later points have one."""
-    c = to.force_deflection(PAPER, [0.5, 1.0, 3.15, 1.0, 0.5])
+    """The curve stops at the first point without a stable equilibrium, even when later points have one (7.9: outside
+    the workspace of the closed joint range; past dx ~ 3.12 the arm rests on joint 3's stop, and the curve goes on)."""
+    c = to.force_deflection(PAPER, [0.5, 1.0, 7.9, 1.0, 0.5])
     assert c.dx.tolist() == [0.5, 1.0] and c.requested == 5
-    assert (c.ended_at.dx, c.ended_at.dy) == (3.15, 0.0)
+    assert (c.ended_at.dx, c.ended_at.dy) == (7.9, 0.0)
     assert c.message.endswith("2 of 5 points computed.")
 
 
 def test_a_curve_without_any_stable_point_is_empty():
-    c = to.force_deflection(PAPER, [3.15, 3.2])
+    c = to.force_deflection(PAPER, [7.9, 7.95])
     assert c.dx.size == 0 and c.q.shape == (0, 4) and c.jumps == () and c.requested == 2
-    assert c.ended_at.dx == 3.15
-    assert c.message == ("The stable branch ends at the first point, dx = 3.15 (dy = 0): no stable equilibrium at "
-                      "dx = 3.15; 0 of 2 points computed.")
+    assert c.ended_at.dx == 7.9
+    assert c.message == ("The stable branch ends at the first point, dx = 7.9 (dy = 0): no stable equilibrium at "
+                      "dx = 7.9; 0 of 2 points computed.")
     assert c.to_dict()["points"] == []
 
 
@@ -226,11 +236,11 @@ def test_partial_curve_with_every_branch_is_truncated_too():
 @pytest.mark.slow
 def test_partial_curve_from_the_rest_configuration_speaks_of_the_callers_deflections():
     m = to.Manipulator([to.Segment(1.0, 1.0, 1.0, (1.05, 0.95))] * 2 + [to.Segment(1.0, 1.0, 1.0, 1.0)] * 2)
-    rel = np.linspace(0.0, 6.0, 61)
+    rel = np.linspace(0.0, 13.0, 131)           # the closed range's reach ends between 11.7 and 11.8
     c = to.force_deflection(m, rel, 0.0, reference="rest")
     assert c.reference == "rest" and np.max(np.abs(c.origin)) > 0.1
     k = c.dx.size
-    assert not c.success and 0 < k < 61
+    assert not c.success and 0 < k < 131
     np.testing.assert_allclose(c.dx, rel[:k], atol=1e-12)
     assert c.ended_at.dx == pytest.approx(rel[k], abs=1e-12) and c.ended_at.dy == pytest.approx(0.0, abs=1e-12)
     assert f"dx = {rel[k]:g}, dy = 0:" in c.ended_at.message
@@ -239,7 +249,7 @@ def test_partial_curve_from_the_rest_configuration_speaks_of_the_callers_deflect
     x, y = rel[k] + c.origin[0], c.origin[1]
     with pytest.raises(RuntimeError, match="found nothing"):
         ch.global_min(x, y, n_random=60)
-    E_ref = ch.global_min(c.dx[-1] + c.origin[0], y, n_random=60)[0]
+    E_ref = ref_closed.least_energy(ref_closed.segs_of(m), c.dx[-1] + c.origin[0], y).energy   # on its stops
     assert c.energy[-1] == pytest.approx(E_ref, rel=1e-9)
 
 

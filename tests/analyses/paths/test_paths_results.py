@@ -90,12 +90,12 @@ def test_a_complete_curve_and_its_points():
 
 
 def test_a_partial_curve_is_no_success_and_says_where():
-    c = to.force_deflection(PAPER, [0.5, 1.0, 3.15])
+    c = to.force_deflection(PAPER, [0.5, 1.0, 7.9])      # 7.9: outside the closed range's workspace
     _check(c)
     assert not c.success and c.status == c.ended_at.status == "no_stable_equilibrium"
-    assert not c.ended_at.success and "1 and dx = 3.15" in c.message
+    assert not c.ended_at.success and "1 and dx = 7.9" in c.message
     assert c.to_dict()["ended_at"] == {"success": False, "status": "no_stable_equilibrium",
-                                       "message": c.ended_at.message, "dx": 3.15, "dy": 0.0}
+                                       "message": c.ended_at.message, "dx": 7.9, "dy": 0.0}
 
 
 def test_branches_and_their_events(monkeypatch):
