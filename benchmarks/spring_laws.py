@@ -13,7 +13,8 @@ the paper's chain at dx = 2 and 3), deflected so that springs go slack or a join
 
 A second table: every equilibrium (``find_equilibria``) of tension-only chains n = 3, 4, by the search (not
 certified) and by the patterns' homotopy (``method="homotopy"``: certified), beside the linear law's search and
-certified homotopy on the same chain and target.
+certified homotopy on the same chain and target. A third: the linear law's every-equilibrium set with the equilibria
+resting on a stop (``stops=True``) beside its default (the open range).
 """
 
 from __future__ import annotations
@@ -131,7 +132,31 @@ def main(argv=None) -> int:
         on = sum(bool(e.at_stop.any()) for e in eqs)
         print(f"| {label} | {m.n} | {dx:g}, {dy:g} | {t_to * 1e3:.0f} ms | {len(eqs)} ({on}) | {th} | "
               f"{t_lin * 1e3:.1f} ms | {len(leqs)} | {hom} |")
+    print()
+    _linear_stops(reps)
     return 0
+
+
+def _linear_stops(reps: int) -> None:
+    """A third table: the linear law's every-equilibrium set with the equilibria resting on a stop
+    (``find_equilibria(stops=True)``), beside its default (the open range), by the search and by the homotopy."""
+    print("| linear law, every equilibrium | n | dx, dy | default search (median) | count | stops=True search | "
+          "count (on a stop) | default homotopy | count | stops=True homotopy | count (on a stop) | status |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for label, m, dx, dy in (("paper's chain", to.Manipulator.uniform(4), 1.0, 0.1),
+                             ("paper's chain", to.Manipulator.uniform(4), 3.3, 0.1),
+                             ("paper's segments", to.Manipulator.uniform(3), 0.9, 0.3)):
+        t_d, d = _median_time(lambda: to.find_equilibria(m, dx, dy), reps)
+        t_s, s = _median_time(lambda: to.find_equilibria(m, dx, dy, stops=True), reps)
+        try:
+            t_hd, hd = _median_time(lambda: to.find_equilibria(m, dx, dy, method="homotopy"), 1)
+            t_hs, hs = _median_time(lambda: to.find_equilibria(m, dx, dy, method="homotopy", stops=True), 1)
+            hom = (f"{t_hd * 1e3:.0f} ms | {len(hd)} | {t_hs * 1e3:.0f} ms | {len(hs)} "
+                   f"({sum(bool(e.at_stop.any()) for e in hs)}) | {hs.status}")
+        except to.HomotopyUnavailableError:
+            hom = "(no PHCpack) | - | - | - | -"
+        print(f"| {label} | {m.n} | {dx:g}, {dy:g} | {t_d * 1e3:.1f} ms | {len(d)} | {t_s * 1e3:.0f} ms | {len(s)} "
+              f"({sum(bool(e.at_stop.any()) for e in s)}) | {hom} |")
 
 
 if __name__ == "__main__":
