@@ -452,9 +452,11 @@ def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: floa
         from .tension_only_homotopy import certified_equilibria_slack
 
         if m.n > SLACK_HOMOTOPY_MAX_N:
-            raise InvalidParameterError(f"method='homotopy' handles chains of tension-only springs of up to "
-                                        f"{SLACK_HOMOTOPY_MAX_N} segments (one homotopy per taut/slack/stop pattern: "
-                                        f"up to 5^n of them), got n = {m.n}", field="method", spring="tension_only")
+            what = "chains of tension-only springs" if not m.linear_springs else "the equilibria on stops (stops=True)"
+            raise InvalidParameterError(f"method='homotopy' handles {what} for up to {SLACK_HOMOTOPY_MAX_N} segments "
+                                        f"(one homotopy per taut/slack/stop pattern: up to 5^n of them), got n = "
+                                        f"{m.n}", field="method", spring="tension_only" if not m.linear_springs else
+                                        "linear")
         with time_limit(timeout):
             eqs, report = certified_equilibria_slack(m, target, timeout=timeout)
         return EquilibriumSet(eqs, method="homotopy", status="certified" if report["certified"] else "uncertified",
