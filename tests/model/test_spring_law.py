@@ -1037,6 +1037,10 @@ def test_preloads_for_a_critical_load_of_a_tension_only_chain_keep_every_spring_
     with pytest.raises(InvalidParameterError) as e:
         to.preloads_for_critical_force(m, 0.5, bounds=(2.0, 3.0))
     assert e.value.field == "bounds"
+    # springs slack at straight in the nominal chain: its starting critical load is undefined (not the linear twin's)
+    slack = to.Manipulator.uniform(3, a=0.9, k=1.3, L0=2.3, spring="tension_only")
+    d = to.preloads_for_critical_force(slack, 0.3)
+    assert math.isnan(d.initial_critical_force) and d.to_dict()["initial_critical_force"] is None
 
 
 # ------------------------------------------------------------------------------------------- stops, the linear law
@@ -1072,10 +1076,15 @@ def test_the_certified_set_under_the_linear_law_with_stops_is_the_reference(case
 
 
 def test_stops_false_leaves_a_tension_only_chains_stop_equilibria_out():
+    """The open range's members: the reference enumeration's equilibria with no joint on a stop."""
+    import reference_equilibria_tension as reqs
+
     m = to.Manipulator.uniform(3, spring="tension_only")
     every, inside = to.find_equilibria(m, 2.0), to.find_equilibria(m, 2.0, stops=False)
-    assert [e.q.tolist() for e in inside] == [e.q.tolist() for e in every if not e.at_stop.any()]
-    assert len(inside) < len(every) and "stops=False" in inside.message
+    want = [r for r in reqs.equilibria(ref.segs_of(m), 2.0, 0.0) if not r.stops.any()]
+    assert len(inside) == len(want) < len(every) and "stops=False" in inside.message
+    for r in want:
+        assert min(float(np.abs(e.q - r.q).max()) for e in inside) < 1e-7
 
 
 def test_the_linear_laws_curve_goes_on_resting_on_a_stop():
@@ -1088,3 +1097,71 @@ def test_the_linear_laws_curve_goes_on_resting_on_a_stop():
     assert not c.jumps and len(set(c.branch.tolist())) == 1
     assert np.all(np.abs(c.q[-4:]).max(axis=1) >= m.joint_limits.max() * (1 - 1e-9))    # on the stop
     assert np.all(np.abs(c.q[:3]).max(axis=1) < m.joint_limits.max() * (1 - 1e-3))       # inside the range
+
+
+#: Held-tip moves where the arm snaps at a spring's kink and lands inside the range (a review's random runs).
+HELD_SNAPS = [
+    (to.Manipulator.uniform(3, a=1.0, b=1.0, k=(0.8776101904028178, 1.434275348278633),
+                            L0=(1.0595867772194043, 0.7951188426608309), spring="tension_only"), 0.6751068249918712),
+    (to.Manipulator.uniform(3, a=0.807633384489745, b=1.0, k=0.6017360667834929, L0=1.1719713942108982,
+                            spring="tension_only"), -1.433772427366471),
+]
+
+
+@pytest.mark.parametrize("case", range(len(HELD_SNAPS)))
+def test_a_held_tip_snap_at_a_kink_lands_where_the_reference_flow_goes(case):
+    """The tip moved (held): the branch loses stability where a spring goes slack and the arm snaps, landing inside
+    the range. The kink is where a reference spring is at its rest length; the reference projected gradient flow of
+    the energy on the tip constraint (LSODA) from where the descent starts lands on the reported configuration; the
+    descent starts downhill; the landing is a constrained minimum of the reference energy (SLSQP returns)."""
+    import scipy.optimize as so
+    from scipy.integrate import solve_ivp
+
+    m, dy_end = HELD_SNAPS[case]
+    lim_len = m.straight_length
+    T = np.column_stack([np.linspace(0.05, 0.6, 25) * lim_len, np.linspace(0.0, 1.0, 25) * dy_end])
+    sim = to.simulate(m, tip="held", targets=T)
+    landed = [e for e in sim.events if e.kind == "snap" and e.status == "landed"]
+    assert landed, sim.message
+    segs = ref.segs_of(m)
+    L0 = np.column_stack([m.L1_0, m.L2_0])
+    for e in landed:
+        assert np.abs(ref.lengths(segs, e.q_before) - L0).min() < 1e-8
+        tgt = ref.tip(segs, e.q_before)
+        q0 = e.q_before + e.direction * 1e-4 * e.null_vector
+        for _ in range(20):                                         # onto the tip constraint
+            q0 = q0 - np.linalg.lstsq(ref.tip_jacobian(segs, q0), ref.tip(segs, q0) - tgt, rcond=None)[0]
+        assert ref.energy(segs, q0) < ref.energy(segs, e.q_before)
+
+        def flow(_t, q):
+            J = ref.tip_jacobian(segs, q)
+            Jp = np.linalg.pinv(J)
+            return (np.eye(m.n) - Jp @ J) @ ref.torques(segs, q) - 10.0 * Jp @ (ref.tip(segs, q) - tgt)
+
+        q1 = solve_ivp(flow, (0.0, 2e3), q0, method="LSODA", rtol=1e-10, atol=1e-12).y[:, -1]
+        assert np.abs(q1 - e.q_after).max() < 1e-6, (q1, e.q_after)
+        res = so.minimize(lambda q: ref.energy(segs, q), e.q_after + 1e-3, method="SLSQP",
+                          constraints={"type": "eq", "fun": lambda q: ref.tip(segs, q) - tgt},
+                          options={"ftol": 1e-15, "maxiter": 500})
+        assert np.abs(res.x - e.q_after).max() < 1e-5
+
+
+def test_a_step_crossing_two_kinks_is_not_taken():
+    """A held-tip move across which spring 3.2 goes slack while 4.2 stays taut (a review's reproducer): one step of
+    the continuation crossed both kinks and landed on another, unstable branch, reported as a snap that came back
+    (``failed``). Now the move is followed, stable, and its end is a constrained minimum of the reference energy."""
+    import scipy.optimize as so
+
+    seg = {"a": 1.0, "b": 1.0, "k": [0.8140236185598528, 1.653695828880264],
+           "L0": [1.0788728971297559, 0.7363294735243248], "spring": "tension_only"}
+    m = to.Manipulator.from_dict({"segments": [seg] * 4})
+    T = np.array([[3.15, -2.29091362], [3.33333333, -2.44364119]])
+    sim = to.simulate(m, tip="held", targets=T, start=np.array([0.37977371, -0.57175962, -1.03655164, -1.03934059]))
+    assert sim.status == "complete" and sim.stable.all() and not sim.snaps
+    assert sim.spring_states[-1, 2, 1] == "slack" and sim.spring_states[-1, 3, 1] == "taut"
+    segs = ref.segs_of(m)
+    tgt = ref.target(segs, *T[-1])
+    res = so.minimize(lambda q: ref.energy(segs, q), sim.q[-1] + 1e-3, method="SLSQP",
+                      constraints={"type": "eq", "fun": lambda q: ref.tip(segs, q) - tgt},
+                      options={"ftol": 1e-15, "maxiter": 500})
+    assert np.abs(res.x - sim.q[-1]).max() < 1e-5

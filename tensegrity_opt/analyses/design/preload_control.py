@@ -97,9 +97,10 @@ from ...timelimit import expired, time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 from ..paths.control import checked_vector
 from ..paths.descent import ArmState
+from ..paths.problem import refuse_start_on_stop
 from ..paths.transition import Transition, follow, law_margin, released
 from .follower import loaded_rest
-from .preloads import LAND_TOL, OBJECTIVES, preloads_for_pose, solve_pose_nlp, stability_margin
+from .preloads import LAND_TOL, OBJECTIVES, TAUT_FLOOR, preloads_for_pose, solve_pose_nlp, stability_margin
 
 __all__ = ["PreloadController", "PreloadStep", "PreloadPlan", "plan_preloads", "step_times", "ON_INFEASIBLE", "ON_SNAP",
            "METHODS"]
@@ -474,11 +475,7 @@ class PreloadController:
             return q
         try:
             eq = loaded_rest(self.manipulator(), self.load)
-            if eq.at_stop.any():
-                j = int(np.flatnonzero(eq.at_stop)[0])
-                raise UnsupportedError(f"the start rests on joint {j + 1}'s stop (the arm as built: a slack spring "
-                                       "lets it reach it); the moves are followed inside the range only: give a start",
-                                       field="start", status="start_on_stop")
+            refuse_start_on_stop(eq.at_stop, "start", "the moves are followed (give a start)")
         except NoEquilibriumError as exc:
             raise NoEquilibriumError(f"no equilibrium under the load from the rest configuration: {exc.message}; "
                                      "give a start", field="load") from None
@@ -710,9 +707,11 @@ class PreloadController:
                                message="the least-change Newton step converged")
 
     def _taut_at(self, ell: np.ndarray, q: np.ndarray) -> bool:
-        """Every spring at least its rest length at ``q`` with rest lengths ``ell`` (segment-major 2n)."""
+        """Every spring at least ``TAUT_FLOOR * max b`` longer than its rest length at ``q`` with rest lengths ``ell``
+        (segment-major 2n): the taut constraint IPOPT's steps keep."""
         L1, L2 = self.m.spring_lengths(q)
-        return bool(np.all(L1 >= ell[0::2]) and np.all(L2 >= ell[1::2]))
+        floor = TAUT_FLOOR * float(np.max(self.m.b))
+        return bool(np.all(L1 - ell[0::2] >= floor) and np.all(L2 - ell[1::2] >= floor))
 
     def _springs(self, v: np.ndarray) -> np.ndarray:
         """Segment-major 2n -> the design problems' ``L10``, ``L20`` blocks."""

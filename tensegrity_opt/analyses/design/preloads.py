@@ -44,7 +44,7 @@ from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, settle_under_force, solve_equilibrium_under_force
 from ..equilibria.least_energy import solve_equilibrium
 from .active_bounds import ActiveBound, active_bounds
-from .strongest import Design, buckling_design
+from .strongest import Design, _safe_critical, buckling_design
 
 __all__ = ["PreloadDesign", "preloads_for_pose", "preloads_for_critical_force", "rest_length_bounds", "OBJECTIVES",
            "forward_check", "stability_margin", "checked_start", "nlp_pose", "spring_bounds", "solve_pose_nlp",
@@ -193,8 +193,10 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
             d = replace(best, feasible=False, status="below_required")
     if law is m:
         return d
+    # the starting critical load is the arm's as built: undefined (null) where a spring is slack at straight
     return replace(d, manipulator=Manipulator(s.replace(spring=t.spring)
-                                              for s, t in zip(d.manipulator.segments, law.segments)))
+                                              for s, t in zip(d.manipulator.segments, law.segments)),
+                   initial_critical_force=_safe_critical(law, boundary))
 
 
 

@@ -369,6 +369,18 @@ KINK_AHEAD = 1e-3
 KINK_PAST = 1e-12
 
 
+def _kinks_crossed(prob: PathProblem, xa: np.ndarray, xb: np.ndarray) -> int:
+    """How many tension-only springs change state (slack / taut) between the points ``xa`` and ``xb``. A step that
+    crosses two kinks at once may have jumped onto another branch (the stiffness changes at each): it is halved."""
+    m = prob.m
+    if m.linear_springs:
+        return 0
+    at = prob.point
+    ra = prob.springs_at(float(xa[at["t"]])).stretches(xa[at["q"]])
+    rb = prob.springs_at(float(xb[at["t"]])).stretches(xb[at["q"]])
+    return int(np.sum(((ra > 0.0) != (rb > 0.0)) & m.springs.tension_only[:, None]))
+
+
 def _across_kink(prob: PathProblem, a: PathPoint, h: float) -> PathPoint | None:
     """The kink just ahead of ``a`` (a tension-only spring reaching its rest length within ``h`` along the tangent):
     the point of the branch where its stretch is just past zero (``KINK_PAST``, on the far side; Newton on ``R = 0``
@@ -460,7 +472,7 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         if ok:
             tau = prob.tangent(y, a.tau) if tau is None else tau
             moved, turn = _step_shape(a.tau, tau, prob.w * y - Xa, h)
-            ok = turn <= MAX_TURN and moved <= max(0.5 * h, 1e-9)
+            ok = turn <= MAX_TURN and moved <= max(0.5 * h, 1e-9) and _kinks_crossed(prob, a.x, y) <= 1
         if not ok:
             h *= 0.5
             if h < KINK_STEP and not kinked:

@@ -535,6 +535,7 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
                     g = None
                 if g is not None and not any(np.max(np.abs(br.q[j] - g.q)) < 1e-7 for br in live):
                     live.append(new_branch(j, g, stop))
+            closed = None
             if not live and branch == "stable":
                 # no stable equilibrium inside the open range: the closed range's, the arm resting on a joint's
                 # stop where it reaches one (on the followed branch when the local solve continues it there)
@@ -543,12 +544,15 @@ def _curve(m: Manipulator, dx, dy, branch: str, recheck_every: int, origin: np.n
                                                branches)
                     current = sel[j] = pick.id
                     continue
-                except _NoStable:
-                    pass
+                except _NoStable as exc:
+                    closed = exc.end
             if not live:
-                # the stable branches end here and the global search finds no other: the curve stops
+                # the stable branches end here and no global search (the closed range's included) finds another
                 end = j
                 ended = _end(m, dxs, dys, j, None if current is None else branches[current], origin)
+                if closed is not None:
+                    ended = replace(ended, message=f"{ended.message[:-1]}; over the closed range too: "
+                                                   f"{closed.message.split(': ', 1)[-1]}")
                 break
             e_min = min(br.E[j] for br in live)
             tol = 1e-9 * max(m.torque_scale, abs(e_min))

@@ -30,7 +30,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from ...errors import InvalidParameterError, NoEquilibriumError, UnsupportedError
+from ...errors import InvalidParameterError, NoEquilibriumError
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...outcome import Outcome
@@ -41,6 +41,7 @@ from .branches import Branch, trace_branch
 from .control import Control
 from .diagram import switch_branch
 from .events import load_compliance, locate_stiffness_minimum
+from .problem import refuse_start_on_stop
 
 __all__ = ["LimitLoad", "limit_load", "limit_arms", "check_max_load", "DEFAULT_MAX_LOAD", "ARMS_REACH"]
 
@@ -268,11 +269,7 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
             what = "an equilibrium under the base load" if loaded else "a rest configuration"
             raise InvalidParameterError(f"start is not (near) {what}: Newton under that load moved it "
                                         f"by {np.abs(eq0.q - q0).max():.3g} rad", field="start")
-    if eq0.at_stop.any():
-        j = int(np.flatnonzero(eq0.at_stop)[0])
-        raise UnsupportedError(f"the start rests on joint {j + 1}'s stop (the arm as built: a slack spring lets it "
-                               "reach it); the loading path is followed by arclength continuation inside the range "
-                               "only", field="start", status="start_on_stop")
+    refuse_start_on_stop(eq0.at_stop, "start", "the loading path is followed by arclength continuation")
     bound = max_load
     br0 = trace_branch(m, eq0.q, control, t_max=1.0, max_points=3)        # its problem gives the force scale
     if bound is None:

@@ -20,15 +20,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...errors import InvalidParameterError, SingularStartError
+from ...errors import InvalidParameterError, SingularStartError, UnsupportedError
 from ...model.manipulator import Manipulator
 from ...model.springs import Springs
 from ...numerics import DENSE_MAX
 from ...numerics.path_system import control_vector, path_system
 from .control import Control
 
-__all__ = ["PathProblem", "PathPoint", "path_point", "LIMIT_MARGIN", "NEWTON_TOL", "NEWTON_ITER", "EIG_REL_TOL",
-           "SINGULAR_START"]
+__all__ = ["PathProblem", "PathPoint", "path_point", "refuse_start_on_stop", "LIMIT_MARGIN", "NEWTON_TOL",
+           "NEWTON_ITER", "EIG_REL_TOL", "SINGULAR_START"]
 
 #: A point is on a joint limit at ``|q_i| >= (1 - LIMIT_MARGIN) (pi - 2 beta_i)``: the branch ends there.
 LIMIT_MARGIN = 1e-6
@@ -41,6 +41,17 @@ NEWTON_ITER = 12
 EIG_REL_TOL = 1e-9
 #: A start whose unit tangent (scaled) has a ``t`` component below this is singular: t has no direction there.
 SINGULAR_START = 1e-10
+
+
+def refuse_start_on_stop(stopped, field: str, doing: str) -> None:
+    """Refuse a start resting on a joint's stop (``stopped``: per joint, True on a stop): the path engine follows
+    branches inside the range only. ``UnsupportedError`` naming ``field``, status ``start_on_stop``; ``doing`` says
+    what is followed (``"the loading path is followed by arclength continuation"``)."""
+    on = np.flatnonzero(np.asarray(stopped, dtype=bool))
+    if on.size:
+        raise UnsupportedError(f"the {field} rests on joint {int(on[0]) + 1}'s stop (the arm as built: a slack spring "
+                               f"lets it reach it); {doing} inside the range only", field=field,
+                               status="start_on_stop")
 
 
 class PathProblem:

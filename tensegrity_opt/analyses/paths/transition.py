@@ -45,7 +45,7 @@ from typing import Any, ClassVar
 import numpy as np
 import scipy.optimize as so
 
-from ...errors import InvalidParameterError, TensegrityError, TimeLimitError, UnsupportedError
+from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...numerics import DENSE_MAX, chain_solver
@@ -56,7 +56,7 @@ from ..equilibria.equilibrium import Equilibrium, check_q0, is_equilibrium, loca
 from .branches import trace_branch
 from .control import Control
 from .descent import ArmState, Descent, state_at
-from .problem import LIMIT_MARGIN, PathProblem
+from .problem import LIMIT_MARGIN, PathProblem, refuse_start_on_stop
 
 __all__ = ["transition", "Transition", "Move", "SimulationEvent", "EVENT_KINDS", "PERTURBATION", "law_margin",
            "BRANCH_POINT_OFFSET", "MAX_EVENTS_PER_STEP", "MAX_STEP", "release", "released", "follow", "chain_with"]
@@ -197,16 +197,19 @@ def margin_at(prob: PathProblem, x: np.ndarray) -> float:
     """The stability margin at the point ``x`` of ``prob``: the smallest eigenvalue of the Hessian of
     ``E - F . tip`` in the joint angles, reduced to the null space of the held rows of the tip Jacobian when the tip
     is held (torque / rad)."""
+    Z, H = _reduced_hessian(prob, x)
+    return math.inf if Z.shape[1] == 0 else float(np.linalg.eigvalsh(H)[0])
+
+
+def _reduced_hessian(prob: PathProblem, x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(Z, Z^T H Z)`` at ``x``: ``H`` the Hessian of ``E - F . tip`` in the joint angles, ``Z`` an orthonormal basis
+    of the null space of the held rows of the tip Jacobian (the identity under a dead load)."""
     _, _, H, J, _, _ = prob.eval_all(x)
     k = prob.held_rows.shape[0]
-    if k:
-        C = prob.held_rows @ J
-        _, sv, Vt = np.linalg.svd(C)
-        Z = Vt[k:].T
-        if Z.shape[1] == 0:
-            return math.inf
-        H = Z.T @ H @ Z
-    return float(np.linalg.eigvalsh(H)[0])
+    if not k:
+        return np.eye(prob.n), H
+    Z = np.linalg.svd(prob.held_rows @ J)[2][k:].T
+    return Z, Z.T @ H @ Z
 
 
 def law_margin(m: Manipulator, q: np.ndarray, load) -> float:
@@ -471,14 +474,8 @@ def _kink_mode(prob: PathProblem, ev) -> np.ndarray:
     far = -1.0 if ev.kind == "spring_slack" else 1.0                        # the stretch's sign on the far side
     x_far = ev.x.copy()
     x_far[prob.point["q"].start + j] += far * 1e-9 / dL                   # 1e-9 across the rest length
-    _, _, H, J, _, _ = prob.eval_all(x_far)
-    k = prob.held_rows.shape[0]
-    Z = np.eye(prob.n)
-    if k:
-        _, _, Vt = np.linalg.svd(prob.held_rows @ J)
-        Z = Vt[k:].T
-    _, V = np.linalg.eigh(Z.T @ H @ Z)
-    phi = Z @ V[:, 0]
+    Z, H = _reduced_hessian(prob, x_far)
+    phi = Z @ np.linalg.eigh(H)[1][:, 0]
     return phi if dL * phi[j] * far >= 0.0 else -phi
 
 
@@ -615,12 +612,8 @@ def _start_state_slack(m: Manipulator, q0: np.ndarray, load, target, force, move
     by arclength continuation inside the range only: a start resting on a joint's stop is refused
     (``UnsupportedError``, status ``start_on_stop``)."""
     held = target is not None
-    lim = m.joint_limits * (1.0 - LIMIT_MARGIN)
-    on = np.flatnonzero(np.abs(q0) >= lim)
-    if on.size:
-        raise UnsupportedError(f"{field} rests on joint {int(on[0]) + 1}'s stop (the arm as built: a slack spring "
-                               "lets it reach it); a move is followed by arclength continuation inside the range "
-                               "only", field=field, status="start_on_stop")
+    refuse_start_on_stop(np.abs(q0) >= m.joint_limits * (1.0 - LIMIT_MARGIN), field,
+                         "a move is followed by arclength continuation")
     q = q0.copy()
     if held:
         for _ in range(8):                          # onto the tip constraint (Gauss-Newton, least norm)
