@@ -232,14 +232,25 @@ def springs_text(result) -> str:
     return "" if sp is None else "; ".join(sp.summary(result.q))
 
 
+def stops_text(eq) -> str:
+    """The joints of an equilibrium resting on their stops, ``"joint 3 on its stop (contact 0.21)"`` (counted from
+    1), or ``""``."""
+    at = getattr(eq, "at_stop", None)
+    if at is None:
+        return ""
+    return "; ".join(f"joint {j + 1} on its stop (contact {eq.contact_torques[j]:.3g})"
+                     for j, on in enumerate(at) if on)
+
+
 def eq_table(eqs) -> list[str]:
-    """The table of equilibria (energy, force, Morse index, stability, shape, q, the springs that are not taut) the
-    commands print."""
+    """The table of equilibria (energy, force, Morse index, stability, shape, q, the joints on a stop and the springs
+    that are not taut) the commands print."""
     lines = [f"{'#':>2} {'energy':>12} {'Fx':>10} {'Fy':>10} {'morse':>5} {'stable':>6} {'shape':>5}  q (rad)"
-             "  springs not taut"]
+             "  stops, springs not taut"]
     for i, e in enumerate(eqs, 1):
+        notes = "; ".join(t for t in (stops_text(e), springs_text(e)) if t)
         lines.append(f"{i:>2} {e.energy:>12.6f} {e.fx:>10.6f} {e.fy:>10.6f} {e.morse_index:>5} "
-                     f"{'yes' if e.stable else 'no':>6} {e.shape:>5}  {fmt_q(e.q)}  {springs_text(e) or '-'}")
+                     f"{'yes' if e.stable else 'no':>6} {e.shape:>5}  {fmt_q(e.q)}  {notes or '-'}")
     return lines
 
 

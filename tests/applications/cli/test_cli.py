@@ -44,6 +44,18 @@ def test_cli_errors(capsys, tmp_path):
     assert "b must be finite and > 0" in capsys.readouterr().err
 
 
+def test_cli_equilibria_with_stops_names_the_joint_on_its_stop(capsys):
+    """``--stops`` adds the equilibria resting on a stop (the library's ``stops=True``), and the table says which
+    joint rests there with its contact torque; the default leaves them out."""
+    argv = ["equilibria", "--n", "3", "--a", "0.9", "--dx", "0.9", "--dy", "0.3"]
+    assert main([*argv, "--stops"]) == 0
+    out = capsys.readouterr().out
+    want = to.find_equilibria(to.Manipulator.uniform(3, a=0.9), 0.9, 0.3, stops=True)
+    on = [e for e in want if e.at_stop.any()]
+    assert on and out.count("on its stop (contact") == len(on) and f": {len(want)} (" in out
+    assert main(argv) == 0 and "on its stop" not in capsys.readouterr().out
+
+
 def test_cli_equilibria_none_inside_the_range(capsys, tmp_path):
     """A target reachable inside the range whose equilibria all lie outside it: exit 0, zero equilibria and the
     reason (table), an empty set that is a success (JSON)."""
