@@ -199,17 +199,23 @@ class Segment:
 
     def torque(self, q: Any) -> np.ndarray:
         """Spring torque ``M(q) = M1 + M2 = -dE/dq`` (eq. 1, general form)."""
+        q = np.asarray(q, dtype=float)
         F1, F2 = self.spring_forces(q)
-        (d1, d2), _ = self.spring_rates(q)
-        return -(F1 * d1 + F2 * d2)
+        s1 = np.sin(self.beta + q / 2.0)
+        s2 = np.sin(self.beta - q / 2.0)
+        return self.c * (F1 * s1 - F2 * s2)
 
     def dtorque(self, q: Any) -> np.ndarray:
         """Derivative ``M'(q) = -E''(q)``; the segment alone is stable where it is < 0 (under the tension-only law
         the one-sided value on the side where the springs' states hold: a slack spring adds nothing)."""
+        q = np.asarray(q, dtype=float)
+        c = self.c
         F1, F2 = self.spring_forces(q)
         t1, t2 = self._taut(q)
-        (d1, d2), (dd1, dd2) = self.spring_rates(q)
-        return -(t1 * self.k1 * d1 * d1 + F1 * dd1 + t2 * self.k2 * d2 * d2 + F2 * dd2)
+        s1, c1 = np.sin(self.beta + q / 2.0), np.cos(self.beta + q / 2.0)
+        s2, c2 = np.sin(self.beta - q / 2.0), np.cos(self.beta - q / 2.0)
+        return (-t1 * self.k1 * c * c * s1 * s1 + 0.5 * c * F1 * c1
+                - t2 * self.k2 * c * c * s2 * s2 + 0.5 * c * F2 * c2)
 
     @property
     def stiffness(self) -> float:

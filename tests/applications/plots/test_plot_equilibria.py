@@ -201,7 +201,7 @@ def test_torque_label_prints_zero_for_a_zero_stiffness():
     seg = to.Segment(0.3, 1.0, 1.0, 2 * (1 - 0.3 ** 2))    # K = k (b L0 - 2 (b^2 - a^2)) = 0 up to rounding
     assert seg.stiffness != 0.0 and abs(seg.stiffness) < 1e-12     # rounding noise in the library's K
     assert plots.stiffness_text(seg) == "K = 0: degenerate"
-    assert plots.stiffness_text(to.Segment(0.5, 1.0, 1.0, 1.5)) == "K = 0: degenerate"     # exactly 0
+    assert plots.stiffness_text(to.Segment(0.5, 1.0, 1.0, 1.5)) == "K = 0: degenerate"     # 1.5 - 1.5
     segs = [to.Segment(0.5, 1.0, 1.0, L0) for L0 in (0.5, 1.5, 2.5)]
     texts = legend_texts(plots.plot_torque(segs))
     assert "L0=0.5 (K = -1: two-mode)" in texts                   # K = 0.5 - 1.5
