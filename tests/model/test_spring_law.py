@@ -971,6 +971,7 @@ def test_a_tension_only_plan_from_a_rest_on_a_stop_or_over_a_horizon_is_refused_
 
 
 # ------------------------------------------------------------------------------------------- the atlas
+@pytest.mark.slow          # ~3 s: the reference enumeration at six targets
 def test_the_stability_atlas_of_a_tension_only_chain():
     """Per target the counts are the reference enumeration's (stable ones on a stop included) with its least
     energy; every branch end on an edge balances in the reference model with the tip on the edge (where a spring
@@ -1108,6 +1109,7 @@ HELD_SNAPS = [
 ]
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("case", range(len(HELD_SNAPS)))
 def test_a_held_tip_snap_at_a_kink_lands_where_the_reference_flow_goes(case):
     """The tip moved (held): the branch loses stability where a spring goes slack and the arm snaps, landing inside
