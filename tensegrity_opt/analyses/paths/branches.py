@@ -369,6 +369,15 @@ KINK_AHEAD = 1e-3
 KINK_PAST = 1e-12
 
 
+def _stop_for(stop_at: str | None, new: list[BranchEvent]) -> tuple[str, str] | None:
+    """``(status, message)`` where ``stop_at`` ends the branch after the events ``new`` of its last step, else None."""
+    if stop_at == "event" and new:
+        return "event", f"stopped at the first event ({new[0].kind})"
+    if stop_at == "stability_loss" and any(e.stability == "lost" for e in new):
+        return "stability_loss", "stopped where the branch first loses stability"
+    return None
+
+
 def _kinks_crossed(prob: PathProblem, xa: np.ndarray, xb: np.ndarray) -> int:
     """How many tension-only springs change state (slack / taut) between the points ``xa`` and ``xb``. A step that
     crosses two kinks at once may have jumped onto another branch (the stiffness changes at each): it is halved."""
@@ -484,11 +493,9 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
                     pts.append(k)
                     s.append(s[-1] + hk)
                     h, kinked = max(2.0 * h, min(step, max_step) * 0.1), True
-                    if stop_at == "event" and new:
-                        status, message = "event", f"stopped at the first event ({new[0].kind})"
-                        break
-                    if stop_at == "stability_loss" and any(e.stability == "lost" for e in new):
-                        status, message = "stability_loss", "stopped where the branch first loses stability"
+                    stop = _stop_for(stop_at, new)
+                    if stop is not None:
+                        status, message = stop
                         break
                     continue
             if h < min_step:
@@ -563,11 +570,9 @@ def continue_branch(prob: PathProblem, first: PathPoint, *, t_max, t_min, max_po
         if status in ("t_max", "t_min") and name is not None:
             message = f"t reached {status} = {b.x[at_t]:.6g}"
             break
-        if stop_at == "event" and new:
-            status, message = "event", f"stopped at the first event ({new[0].kind})"
-            break
-        if stop_at == "stability_loss" and any(e.stability == "lost" for e in new):
-            status, message = "stability_loss", "stopped where the branch first loses stability"
+        stop = _stop_for(stop_at, new)
+        if stop is not None:
+            status, message = stop
             break
         Xa, Xb = prob.w * a.x, prob.w * b.x
         seg = Xb - Xa

@@ -596,12 +596,7 @@ def start_state(m: Manipulator, q0, load=None, *, target=None, force=None, moved
         raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton did not "
                                     "converge from it inside the joint range", field=field)
     eq = make_equilibrium(m, res, constrained=held)
-    if moved and np.abs(eq.q - q0).max() > 1e-3:
-        raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton moved it "
-                                    f"by {np.abs(eq.q - q0).max():.3g} rad", field=field)
-    if not eq.stable:
-        raise InvalidParameterError(f"{field} is not a stable equilibrium under the first inputs (Morse index "
-                                    f"{eq.morse_index})", field=field)
+    _check_start(field, eq.q, q0 if moved else None, eq.stable, eq.morse_index)
     F = eq.force.copy() if held else np.asarray(load, float).copy()
     return ArmState(eq.q.copy(), F, eq.tip.copy(), float(eq.energy), 0, True)
 
@@ -636,13 +631,19 @@ def _start_state_slack(m: Manipulator, q0: np.ndarray, load, target, force, move
     s = state_at(prob, y)
     if held and float(np.abs(s.tip - target).max()) > 1e-9 * m.straight_length:
         raise InvalidParameterError(f"{field} could not be put on the first target", field=field)
-    if moved and np.abs(s.q - q0).max() > 1e-3:
-        raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton moved it "
-                                    f"by {np.abs(s.q - q0).max():.3g} rad", field=field)
-    if not s.stable:
-        raise InvalidParameterError(f"{field} is not a stable equilibrium under the first inputs (Morse index "
-                                    f"{s.morse})", field=field)
+    _check_start(field, s.q, q0 if moved else None, s.stable, s.morse)
     return s
+
+
+def _check_start(field: str, q: np.ndarray, q0: np.ndarray | None, stable: bool, morse: int) -> None:
+    """The start Newton put at ``q`` is near the given ``q0`` (when given: 1e-3 rad) and stable, else
+    :class:`InvalidParameterError` naming ``field``."""
+    if q0 is not None and np.abs(q - q0).max() > 1e-3:
+        raise InvalidParameterError(f"{field} is not (near) an equilibrium under the first inputs: Newton moved it "
+                                    f"by {np.abs(q - q0).max():.3g} rad", field=field)
+    if not stable:
+        raise InvalidParameterError(f"{field} is not a stable equilibrium under the first inputs (Morse index "
+                                    f"{morse})", field=field)
 
 
 def _pair(v, shape: tuple[int, ...], name: str) -> np.ndarray:
