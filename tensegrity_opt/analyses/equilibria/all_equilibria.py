@@ -328,22 +328,25 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     if m.n == 1:
         return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", status="exact",
                               message="a single segment: the target fixes its joint angle")
-    if not m.linear_springs or stops:
-        found = _slack_search(m, target, method, timeout, stops_only=m.linear_springs and method == "search")
-        if m.linear_springs:                # the linear law's open-range set, and the stop equilibria beside it
-            inner = None
-            if method == "search":
-                try:
-                    inner = find_equilibria(m, dx, dy, method=method, n_random=n_random, amplitudes=amplitudes,
-                                            max_modes=max_modes, extra_seeds=extra_seeds, dedupe_tol=dedupe_tol,
-                                            n_projected=n_projected, timeout=timeout, stops=False)
-                except SolverError as exc:      # none inside the open range: the stop equilibria may be all
-                    if exc.details.get("found") != 0 or not len(found):
-                        raise
-                    inner = EquilibriumSet([], method="search", status="searched",
-                                           message="no equilibrium inside the open range")
-            return _with_stops(inner, found)
+    if not m.linear_springs or (stops and method == "homotopy"):
+        found = _slack_search(m, target, method, timeout)   # tension-only; or every free/stop pattern, certified
         return found if stops is not False else _open_range(found)
+    if stops:
+        # the linear law's search: its open-range set first (an unreachable target ends here), then the stop
+        # equilibria beside it
+        try:
+            inner = find_equilibria(m, dx, dy, method=method, n_random=n_random, amplitudes=amplitudes,
+                                    max_modes=max_modes, extra_seeds=extra_seeds, dedupe_tol=dedupe_tol,
+                                    n_projected=n_projected, timeout=timeout, stops=False)
+        except SolverError as exc:              # none inside the open range: the stop equilibria may be all
+            if exc.details.get("found") != 0:
+                raise
+            on = _slack_search(m, target, method, timeout, stops_only=True)
+            if not len(on):
+                raise
+            return _with_stops(EquilibriumSet([], method="search", status="searched",
+                                              message="no equilibrium inside the open range"), on)
+        return _with_stops(inner, _slack_search(m, target, method, timeout, stops_only=True))
     if method == "homotopy":
         return _homotopy(m, target, dedupe_tol, timeout)
     results = []
@@ -437,9 +440,14 @@ def _accepted_rows(m: Manipulator, batch, target: np.ndarray, dedupe_tol: float)
     return distinct_indices(Q, rows.tolist(), dedupe_tol)
 
 
+def _order(e: Equilibrium) -> tuple[float, float]:
+    """A set's order: by energy (to 1e-10), ties by ``q_1`` descending."""
+    return round(e.energy, 10), -e.q[0]
+
+
 def _sorted(m: Manipulator, results) -> list[Equilibrium]:
     eqs = [make_equilibrium(m, r, constrained=True) for r in results]
-    eqs.sort(key=lambda e: (round(e.energy, 10), -e.q[0]))
+    eqs.sort(key=_order)
     return eqs
 
 
@@ -473,17 +481,13 @@ def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: floa
                                   "springs' laws over the closed joint range: complete in practice, not certified)")
 
 
-def _with_stops(inner: EquilibriumSet | None, found: EquilibriumSet) -> EquilibriumSet:
-    """The linear law's set with the equilibria resting on a stop (``find_equilibria(stops=True)``): the homotopy's
-    set of every free/stop pattern as it is (``inner`` None), or the open-range search's set joined by the stop
-    search's (measured)."""
-    if inner is None:
-        return found
-    eqs = sorted([*inner, *(e for e in found if e.at_stop.any())], key=lambda e: (round(e.energy, 10), -e.q[0]))
-    on = len(eqs) - len(inner)
+def _with_stops(inner: EquilibriumSet, on: EquilibriumSet) -> EquilibriumSet:
+    """The linear law's search set with the equilibria resting on a stop (``find_equilibria(stops=True)``): the
+    open-range search's set ``inner`` joined by the stop search's ``on`` (measured)."""
+    eqs = sorted([*inner, *on], key=_order)
     return EquilibriumSet(eqs, method="search", status="searched",
-                          message=f"{inner.message}; with {on} equilibria resting on a joint's stop (Newton with each "
-                                  "joint held on either stop; complete in practice, not certified)")
+                          message=f"{inner.message}; with {len(on)} equilibria resting on a joint's stop (Newton with "
+                                  "each joint held on either stop; complete in practice, not certified)")
 
 
 def _open_range(found: EquilibriumSet) -> EquilibriumSet:
