@@ -630,16 +630,17 @@ def test_a_mixed_chain_is_certified_with_the_linear_segments_stops():
     _same_sets(m, 2.2, 0.4, "homotopy", "certified")
 
 
-@needs_phc
-def test_the_pattern_options_and_their_signs_agree_with_the_reference_model():
-    """Each joint's options: the springs' states inside each interval are the reference model's, the intervals
-    tile the closed range, and where an option gives the joint's moment a sign the reference torque has it."""
-    from tensegrity_opt.analyses.equilibria.tension_only_homotopy import joint_options
+def test_the_pattern_options_and_their_torque_bounds_agree_with_the_reference_model():
+    """Each joint's options: the springs' states inside each interval are the reference model's, the intervals tile
+    the closed range, and the pattern test's bounds of ``dE/dq`` over any piece of an interval hold every reference
+    value there (sampled densely) and are tight (to the sampling's resolution)."""
+    from tensegrity_opt.analyses.equilibria.tension_only_homotopy import _TorqueTables, joint_options
 
     rng = np.random.default_rng(3)
     for family in FAMILIES:
         m, _, _ = _chain(family, rng, "tension_only", n=2)
         segs = ref.segs_of(m)
+        tables = _TorqueTables(m)
         for j, seg in enumerate(m.segments):
             opts = joint_options(seg)
             free = [o for o in opts if o.side == 0]
@@ -655,9 +656,107 @@ def test_the_pattern_options_and_their_signs_agree_with_the_reference_model():
                         L = ref.lengths(segs, qq)[j]
                         L0 = np.array([seg.L1_0, seg.L2_0])
                         assert tuple(L > L0) == o.taut
-                        if o.sign:
-                            dE = -ref.torques(segs, qq)[j]
-                            assert o.sign * dE >= -1e-12
+                    for _ in range(5):
+                        a, b = np.sort(rng.uniform(lo, hi, 2))
+                        Q = np.zeros((801, m.n))
+                        Q[:, j] = np.linspace(a, b, 801)
+                        dE = np.array([-ref.torques(segs, qq)[j] for qq in Q])
+                        t = np.array([tables.index(j, o.taut)])
+                        low, high = tables.bounds(t, np.array([a]), np.array([b]))
+                        assert low[0] <= dE.min() + 1e-12 and high[0] >= dE.max() - 1e-12
+                        slope = float(np.abs(np.diff(dE)).max()) + 1e-12
+                        assert dE.min() - low[0] <= slope and high[0] - dE.max() <= slope
+
+
+def test_the_force_test_is_a_linear_program():
+    """``_force_exists`` (some F with every row a fx + b fy >= t) against scipy's linprog on random row sets,
+    degenerate ones too (parallel rows, rows of zeros): never "no" where the LP finds an F with a margin (sound), and
+    "no" wherever the LP's margin is clearly negative, except for two opposite parallel rows (rounding makes them
+    meet far away: such a pair is dropped, a relaxation)."""
+    from scipy.optimize import linprog
+
+    from tensegrity_opt.analyses.equilibria.tension_only_homotopy import _force_exists
+
+    rng = np.random.default_rng(11)
+    checked = feasible = 0
+    for trial in range(400):
+        M = int(rng.integers(2, 11))
+        A = rng.normal(size=(M, 2))
+        t = rng.normal(size=M) * rng.choice([0.0, 0.3, 1.0, 3.0])
+        if trial % 4 == 1:
+            A[1] = -A[0] * rng.uniform(0.5, 2.0)          # parallel (a strip or nothing)
+        if trial % 4 == 2:
+            A[-1], t[-1] = 0.0, -abs(t[-1])               # an empty row
+        # the largest margin s with A F >= t + s, |F| <= 1e3: > 0 feasible, < 0 not
+        res = linprog([0.0, 0.0, -1.0], A_ub=np.hstack([-A, np.ones((M, 1))]), b_ub=-t,
+                      bounds=[(-1e3, 1e3), (-1e3, 1e3), (None, 1.0)], method="highs")
+        assert res.status == 0
+        margin = res.x[2]
+        if abs(margin) < 1e-6:
+            continue
+        got = bool(_force_exists(A[:, 0], A[:, 1], t))
+        if margin > 0 or trial % 4 != 1:
+            assert got == (margin > 0), (trial, margin)
+        checked += 1
+        feasible += margin > 0
+    assert checked > 300 and 50 < feasible < checked - 50
+
+
+def _patterns_of(m, q, stops):
+    """The patterns (one option per joint) an equilibrium at ``q`` with ``stops`` lies in."""
+    from tensegrity_opt.analyses.equilibria.tension_only_homotopy import joint_options
+
+    per = []
+    for j, seg in enumerate(m.segments):
+        opts = joint_options(seg)
+        if stops[j]:
+            per.append([o for o in opts if o.side == stops[j]])
+        else:
+            per.append([o for o in opts if o.side == 0 and o.contains(q[j])])
+    return [tuple(per[j][i] for j, i in enumerate(idx)) for idx in np.ndindex(*[len(p) for p in per])]
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+@pytest.mark.parametrize("spring", ["tension_only", "linear"])
+def test_a_box_around_an_equilibrium_passes_the_pattern_test(family, spring):
+    """The pruning is sound: for every equilibrium of the independent enumeration (n = 3, the stops included), every
+    pattern it lies in is kept by ``patterns``, and random boxes about it inside its pattern pass the box test."""
+    import reference_equilibria_tension as reqs
+
+    from tensegrity_opt.analyses.equilibria import tension_only_homotopy as th
+
+    rng = np.random.default_rng(7500)
+    want = []
+    while not want:                              # a target the chain reaches
+        m, dx, dy = _chain(family, rng, spring, n=3)
+        dx, dy = 2.0 * dx, 2.0 * dy + 0.2
+        want = [r for r in reqs.equilibria(ref.segs_of(m), dx, dy) if np.abs(r.stops).sum() <= m.n - 2]
+    target = np.array([m.straight_length - dx, dy])
+    kept = {th._name(p) for p in th.patterns(m, target)[0]}
+    tables = th._TorqueTables(m)
+    tol = 1e-9 * float(m.link_lengths.sum())
+    slack = th.CONTACT_TOL * 1e3 * m.torque_scale
+    lim = m.joint_limits
+    for r in want:
+        pats = _patterns_of(m, r.q, r.stops)
+        assert pats
+        for pat in pats:
+            assert th._name(pat) in kept, (th._name(pat), r.q)
+            lo, hi = np.tile(r.q, (20, 1)), np.tile(r.q, (20, 1))
+            table = np.zeros((20, m.n), dtype=int)
+            side = np.tile([float(o.side) for o in pat], (20, 1))
+            held = np.tile([float(-m.segments[j].torque(o.side * lim[j])) if o.side else 0.0
+                            for j, o in enumerate(pat)], (20, 1))
+            for j, o in enumerate(pat):
+                if o.side:
+                    continue
+                table[:, j] = tables.index(j, o.taut)
+                iv = o.intervals[np.flatnonzero((o.intervals[:, 0] <= r.q[j] + 1e-8) &
+                                                (r.q[j] - 1e-8 <= o.intervals[:, 1]))[0]]
+                w = 10.0 ** rng.uniform(-6, 0, 20)
+                lo[:, j] = np.maximum(iv[0], r.q[j] - w * rng.random(20))
+                hi[:, j] = np.minimum(iv[1], r.q[j] + w * rng.random(20))
+            assert th._boxes_pass(m, target, lo, hi, table, side, held, tables, tol, slack).all()
 
 
 @needs_phc
@@ -683,14 +782,15 @@ def test_certify_proves_the_least_energy_of_a_tension_only_chain(family):
 @pytest.mark.slow
 def test_an_option_whose_two_intervals_have_opposite_moments_prunes_nothing():
     """A review's counterexample: with a / b < 0.41 a one-taut option can have two intervals on either side of its
-    spring's turning angle, its moment of opposite signs there; read from one interval, the sign test pruned a
-    pattern holding a stable equilibrium while the set said certified (5 of the reference's 6)."""
+    spring's turning angle, its moment of opposite signs there; read from one interval, the old sign test pruned a
+    pattern holding a stable equilibrium while the set said certified (5 of the reference's 6). The pattern test
+    bounds each interval on its own."""
     from tensegrity_opt.analyses.equilibria.tension_only_homotopy import joint_options
 
     seg = to.Segment(math.tan(0.2), 1.0, 1.0, (2 * math.hypot(math.tan(0.2), 1) * math.cos(1.2),
                                              2 * math.hypot(math.tan(0.2), 1) * math.cos(0.5)), "tension_only")
     two = [o for o in joint_options(seg) if o.side == 0 and len(o.intervals) == 2]
-    assert two and all(o.sign == 0 for o in two)
+    assert two
     m = to.Manipulator([to.Segment(0.22204, 1.39045, 1.0, (0.88682, 0.75931), "tension_only"),
                         to.Segment(0.20271, 1.0, 1.0, (0.73946, 1.79086), "tension_only"),
                         to.Segment(0.17292, 0.66221, 1.0, (0.93656, 1.11136), "tension_only")])
@@ -705,6 +805,26 @@ def test_an_option_whose_two_intervals_have_opposite_moments_prunes_nothing():
 def test_the_certified_set_of_the_paper_chain_of_four(dx, dy):
     got = _same_sets(to.Manipulator.uniform(4, spring="tension_only"), dx, dy, "homotopy", "certified")
     assert len(got) >= 16
+
+
+@needs_phc
+@pytest.mark.slow
+def test_the_pattern_test_leaves_only_the_four_free_patterns_that_hold_an_equilibrium():
+    """The pruning's strength (issue 40, item 4: "prune patterns that cannot occur"): on the paper chain of four at
+    (1, 0.4), of the 37 patterns with four free joints whose tip may reach the target, the kept ones are exactly the
+    9 that hold an equilibrium of the independent enumeration; the set is that enumeration's, certified."""
+    import reference_equilibria_tension as reqs
+
+    from tensegrity_opt.analyses.equilibria import tension_only_homotopy as th
+
+    m = to.Manipulator.uniform(4, spring="tension_only")
+    want = [r for r in reqs.equilibria(ref.segs_of(m), 1.0, 0.4) if np.abs(r.stops).sum() <= m.n - 2]
+    holding = {th._name(p) for r in want if not r.stops.any() for p in _patterns_of(m, r.q, r.stops)}
+    kept = {th._name(p) for p in th.patterns(m, [m.straight_length - 1.0, 0.4])[0]
+            if all(o.side == 0 for o in p)}
+    assert kept == holding and len(holding) == 9
+    got = to.find_equilibria(m, 1.0, 0.4, method="homotopy")
+    assert got.status == "certified" and len(got) == len(want) == 16
 
 
 @needs_phc

@@ -14,11 +14,24 @@ agree on the closed intervals: a spring at ``L = L0`` carries nothing under both
 1. **Options.** Per joint the breakpoints ``q = 2 (+-acos(L0 / 2c) - beta)`` (spring 1) and
    ``2 (beta -+ acos(L0 / 2c))`` (spring 2) inside the range cut it into intervals; intervals of one state are one
    option. A linear-law segment has one free option (its whole range) and its stops.
-2. **Pruning.** A pattern can have an equilibrium only if its box (each joint's option hull, a stop a point) can put the
-   tip on the target: the tip's interval enclosure over the box, bisected (:data:`REACH_DEPTH` levels at most), must
-   contain the target. Patterns with fewer than two free joints meet a target only by coincidence (a rigid pose);
-   each is checked directly (the tip of the rigid pose or the circle of its one free joint) and one that meets the
-   target leaves the set uncertified (its tip force is not determined).
+2. **Pruning** (which patterns cannot occur). A pattern can hold an equilibrium only if some configuration in its box
+   (each free joint in one of its option's intervals, a stop a point) puts the tip on the target *and* some tip force
+   ``F`` balances it: each free joint's ``dE/dq_j = r_j x F`` (``r_j`` from the joint to the tip) and each held
+   joint's contact torque ``>= 0``. Two tests, both sound (they only drop a pattern with no such configuration):
+
+   * the distance from joint 1 to the tip, sampled over the box with a Lipschitz margin (:func:`_distance_may_reach`);
+   * a branch and bound over the box (:func:`_may_balance`: all patterns' boxes bisected level by level together,
+     up to :data:`BOX_BUDGET` boxes a pattern). On each box: ``r_j`` enclosed from the tip's side (the links after
+     ``j``) and from the base's (the target minus the joint's position), the two intersected (empty: no tip on the
+     target); ``dE/dq_j`` bounded from a table with a Lipschitz margin (:class:`_TorqueTables`); and, in each sign
+     quadrant of ``F``, the extreme moments over the box are linear in ``F``, so "some ``F``" is a 2-D linear
+     feasibility problem (:func:`_force_exists`, Fourier-Motzkin). A pattern all of whose boxes fail is dropped; one
+     with a box left when its budget is spent is solved.
+
+   On the benchmark's n = 4 targets this leaves 8-15 of 37-49 four-free-joint patterns (those that hold an
+   equilibrium among them). Patterns with fewer than two free joints meet a target only by coincidence (a rigid
+   pose); each left is checked directly (the tip of the rigid pose or the circle of its one free joint) and one that
+   meets the target leaves the set uncertified (its tip force is not determined).
 3. **One system per pattern.** With the joints on stops fixed, the links between two consecutive free joints fold into
    one rigid *complex* link (``mu = sum l_j e^{i sigma_j}``, ``sigma_j`` the stop angles before link ``j``) and the
    links before the first free joint into the target: the displacement system of a chain of the free joints
@@ -52,12 +65,10 @@ from ...outcome import SolverInfo
 from ...timelimit import check_time
 from .tension_only import SAME_EQUILIBRIUM, _classified
 
-__all__ = ["joint_options", "patterns", "certified_equilibria_slack", "PATTERN_TOL", "REACH_DEPTH"]
+__all__ = ["joint_options", "patterns", "certified_equilibria_slack", "PATTERN_TOL", "BOX_BUDGET"]
 
 #: A root this far (rad) outside its option's intervals still belongs to it (a root on a breakpoint).
 PATTERN_TOL = 1e-8
-#: Bisection levels of a pattern's box before the tip enclosure's answer "may reach" is taken.
-REACH_DEPTH = 10
 #: A stop's contact torque above ``-CONTACT_TOL k c^2`` keeps the root a candidate (it must then classify).
 CONTACT_TOL = 1e-9
 #: Parameter-homotopy runs (each with a new ``gamma``) of a pattern before the polyhedral fallback. A pattern whose
@@ -73,15 +84,10 @@ class Option:
     """One joint's choice in a pattern: free in the intervals where its springs have the states ``taut``, or held on
     the stop ``side`` (+1 / -1)."""
 
-    __slots__ = ("side", "taut", "intervals", "sign", "zeros")
+    __slots__ = ("side", "taut", "intervals")
 
     def __init__(self, side: int, taut: tuple[bool, bool], intervals: np.ndarray) -> None:
         self.side, self.taut, self.intervals = side, taut, intervals
-        #: ``s`` with ``s tau_j >= 0`` at every equilibrium of this option (``tau = J^T F``, the tip force's moment
-        #: about the joint), 0 when the option says nothing; the angles where ``tau_j = 0`` is possible (``None``:
-        #: all of them): :func:`_signs`.
-        self.sign: int = 0
-        self.zeros: np.ndarray | None = None
 
     @property
     def loose(self) -> bool:
@@ -103,7 +109,7 @@ class Option:
 
 def joint_options(seg) -> list[Option]:
     """The options of one segment's joint (module docstring, step 1): the free ones (one per taut/slack state, with
-    its intervals), then the two stops; each with the sign its joint's moment must have (:func:`_signs`)."""
+    its intervals), then the two stops."""
     lim = seg.joint_limit
     stops = [Option(-1, (False, False), np.array([[-lim, -lim]])), Option(1, (False, False), np.array([[lim, lim]]))]
     if not seg.tension_only:
@@ -127,189 +133,305 @@ def joint_options(seg) -> list[Option]:
             key = (bool(L1 > seg.L1_0), bool(L2 > seg.L2_0))
             groups.setdefault(key, []).append([float(lo), float(hi)])
         free = [Option(0, key, np.array(iv)) for key, iv in sorted(groups.items(), reverse=True)]
-    for o in free + stops:
-        o.sign, o.zeros = _signs(seg, o)
     return free + stops
 
 
-def _signs(seg, o: Option) -> tuple[int, np.ndarray | None]:
-    """What an equilibrium of option ``o`` says of the joint's moment ``tau = (J^T F)_j``: ``(sign, zeros)``, with
-    ``s tau >= 0`` for ``sign = s`` (0: nothing said) and ``zeros`` the angles of the option where ``tau = 0`` is
-    possible (an equilibrium with no tip force), ``None`` for every angle (both springs slack: a free joint).
-
-    * free, one spring taut: ``tau = dE/dq = k (L - L0) L'`` with ``L >= L0`` on the option, and
-      ``L' = -+c sin(beta +- q/2)`` changes sign only at ``q = -+2 beta``: a definite weak sign when that angle is not
-      inside the option's intervals; ``tau = 0`` at the ends where ``L = L0`` and at ``-+2 beta``;
-    * free, both taut (or the linear law): no sign; ``tau = 0`` at the linear law's critical points in the intervals;
-    * on the stop ``s`` (contact torque ``-s (dE/dq - tau) >= 0``): ``s tau >= s dE/dq(s lim)``, sign ``s`` when that
-      is ``>= 0``; ``tau = 0`` possible when it is ``<= 0``."""
-    lim = seg.joint_limit
-    if o.side:
-        d = float(-seg.torque(o.side * lim)) * o.side
-        return (o.side if d >= 0.0 else 0), (np.array([o.side * lim]) if d <= 0.0 else np.zeros(0))
-    iv = o.intervals
-    if o.taut == (False, False):
-        return 0, None
-
-    def inside(q: np.ndarray) -> np.ndarray:
-        q = np.asarray(q, dtype=float)
-        keep = np.any((q[:, None] >= iv[:, 0] - PATTERN_TOL) & (q[:, None] <= iv[:, 1] + PATTERN_TOL), axis=1)
-        return q[keep]
-
-    if o.taut == (True, True):
-        lin = seg if not seg.tension_only else seg.replace(spring="linear")
-        ends = iv.ravel()
-        return 0, np.concatenate([inside(lin.critical_points()), ends[np.abs(lin.torque(ends)) <= 1e-12 * seg.k1]])
-    spring = 1 if o.taut[0] else 2                       # the taut one
-    turn = -2.0 * seg.beta if spring == 1 else 2.0 * seg.beta     # where its L' = 0
-    L0 = seg.L1_0 if spring == 1 else seg.L2_0
-    ends = iv.ravel()
-    Ls = seg.spring_lengths(ends)[spring - 1]
-    zeros = np.concatenate([ends[np.abs(Ls - L0) <= 1e-9 * L0], inside(np.array([turn]))])
-    if np.any((iv[:, 0] < turn) & (turn < iv[:, 1])):
-        return 0, zeros
-    # each interval has one sign; two intervals of one option may lie on either side of the turn (opposite signs)
-    signs = {int(np.sign(float(-seg.torque(0.5 * (lo + hi))))) for lo, hi in iv}
-    return (signs.pop() if len(signs) == 1 else 0), zeros
+# ----------------------------------------------------------------------------- pruning: reach and balance
+#: Boxes (in all, over the bisection) a pattern with so many free joints may use before its balance test gives up and
+#: the pattern is solved: about what its homotopy costs (a box ~10 us; a four-free-joint pattern's homotopy 0.15-0.7 s).
+BOX_BUDGET = {0: 64, 1: 256, 2: 1000, 3: 4000, 4: 24000}
+#: Every so many bisection levels a few of a pattern's boxes start Newton's method on its system: a root found inside
+#: the pattern ends its test (it must be solved), so the budget goes to the patterns that may be dropped.
+NEWTON_EVERY = 3
+#: Boxes handed to the force test at once (memory: ~3 kB each).
+BOX_CHUNK = 8192
+#: The four sign quadrants of the tip force ``(Fx, Fy)``.
+_QUADRANTS = ((1.0, 1.0), (1.0, -1.0), (-1.0, 1.0), (-1.0, -1.0))
+_TWO_PI = 2.0 * math.pi
 
 
-# ----------------------------------------------------------------------------- pruning by the tip's reach
-def _cos_range(lo: float, hi: float) -> tuple[float, float]:
-    """The range of ``cos`` over ``[lo, hi]`` (exact up to rounding)."""
-    if hi - lo >= 2.0 * math.pi:
-        return -1.0, 1.0
-    a, b = math.cos(lo), math.cos(hi)
-    top = 1.0 if math.floor(hi / (2 * math.pi)) * 2 * math.pi >= lo else max(a, b)
-    bot = -1.0 if math.floor((hi - math.pi) / (2 * math.pi)) * 2 * math.pi + math.pi >= lo else min(a, b)
+def _cos_ranges(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The range of ``cos`` over each ``[lo, hi]`` (elementwise, ``hi - lo < 2 pi``; exact up to rounding)."""
+    a, b = np.cos(lo), np.cos(hi)
+    top = np.where(np.ceil(lo / _TWO_PI) * _TWO_PI <= hi, 1.0, np.maximum(a, b))
+    bot = np.where(np.ceil((lo - math.pi) / _TWO_PI) * _TWO_PI + math.pi <= hi, -1.0, np.minimum(a, b))
     return bot, top
 
 
-#: Directions of the tip force tried by the sign test (a grid; each arc widened by half its step: sound).
-DIRECTIONS = 720
-_THETA = np.linspace(0.0, 2.0 * np.pi, DIRECTIONS, endpoint=False)
+class _TorqueTables:
+    """Exact bounds of each joint's ``dE/dq`` under each taut/slack state over any ``[lo, hi]``: its values at the
+    ends and at its critical points inside. With ``u = beta + q/2``, ``v = beta - q/2`` a taut spring adds
+    ``-k1 c (c sin 2u - L10 sin u)`` (spring 1) or ``k2 c (c sin 2v - L20 sin v)`` (spring 2); the derivative's zeros
+    are the unit roots of a quartic in ``e^{i q/2}`` (at most four; a root near the circle is kept: an extra
+    candidate only widens the bound)."""
+
+    STATES = ((True, True), (True, False), (False, True), (False, False))
+
+    def __init__(self, m: Manipulator) -> None:
+        coef, crit = [], []
+        for seg in m.segments:
+            c, beta, lim = seg.c, seg.beta, seg.joint_limit
+            for t1, t2 in self.STATES:
+                k1, k2 = seg.k1 * t1, seg.k2 * t2
+                coef.append((k1, k2, seg.L1_0, seg.L2_0, c, beta))
+                A, B, C, D = -2 * k1 * c * c, k1 * c * seg.L1_0, -2 * k2 * c * c, k2 * c * seg.L2_0
+                e1, e2 = np.exp(1j * beta), np.exp(2j * beta)
+                poly = [(A * e2 + C / e2) / 2, (B * e1 + D / e1) / 2, 0.0, (B / e1 + D * e1) / 2, (A / e2 + C * e2) / 2]
+                qs = np.zeros(0)
+                if max(abs(v) for v in poly) > 0.0:
+                    z = np.roots(poly)
+                    z = z[np.abs(np.abs(z) - 1.0) < 1e-6]
+                    qs = 2.0 * np.angle(z)
+                    qs = qs[np.abs(qs) <= lim]
+                crit.append(np.pad(qs, (0, 4 - qs.size), constant_values=np.nan))
+        self.coef = np.array(coef).T                       # (6, tables)
+        self.crit = np.array(crit)                         # (tables, 4)
+        self.crit_g = self._g(np.arange(len(crit))[:, None], np.nan_to_num(self.crit))
+        self.scale = 1e-12 * (self.coef[0] + self.coef[1] + 1e-300) * self.coef[4] ** 2 * 4.0
+
+    def _g(self, table: np.ndarray, q: np.ndarray) -> np.ndarray:
+        k1, k2, L10, L20, c, beta = (row[table] for row in self.coef)
+        u, v = beta + 0.5 * q, beta - 0.5 * q
+        return -k1 * c * (c * np.sin(2 * u) - L10 * np.sin(u)) + k2 * c * (c * np.sin(2 * v) - L20 * np.sin(v))
+
+    def dg(self, table: np.ndarray, q: np.ndarray) -> np.ndarray:
+        """``d^2 E / dq^2`` of the tables ``table`` at ``q``."""
+        k1, k2, L10, L20, c, beta = (row[table] for row in self.coef)
+        u, v = beta + 0.5 * q, beta - 0.5 * q
+        return -k1 * c * (c * np.cos(2 * u) - 0.5 * L10 * np.cos(u)) - k2 * c * (c * np.cos(2 * v) - 0.5 * L20 * np.cos(v))
+
+    def index(self, j: int, taut: tuple[bool, bool]) -> int:
+        return 4 * j + self.STATES.index(tuple(bool(t) for t in taut))
+
+    def bounds(self, table: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Lower and upper bounds of ``dE/dq`` over ``[lo, hi]`` (B, n) for the tables ``table`` (B, n)."""
+        g0, g1 = self._g(table, lo), self._g(table, hi)
+        cq, cg = self.crit[table], self.crit_g[table]
+        inside = (cq >= lo[..., None]) & (cq <= hi[..., None])
+        mg = self.scale[table]
+        low = np.minimum(np.minimum(g0, g1), np.where(inside, cg, np.inf).min(axis=-1))
+        high = np.maximum(np.maximum(g0, g1), np.where(inside, cg, -np.inf).max(axis=-1))
+        return low - mg, high + mg
 
 
-def _may_reach(links: np.ndarray, base: float, target: np.ndarray, lo: np.ndarray, hi: np.ndarray, depth: int,
-               tol: float, signs: np.ndarray | None = None) -> bool:
-    """False only when no equilibrium of the box ``[lo, hi]`` can put the tip on ``target``: the tip's interval
-    enclosure misses it, or (``signs``: the moments' signs of the pattern, when its tip force cannot be zero) no
-    direction of the tip force gives every joint's moment ``r_j x F`` its sign for some ``r_j`` (the tip from joint
-    ``j``) in its enclosure. The box is bisected along its widest joint up to ``depth`` levels."""
-    plo, phi = np.cumsum(lo), np.cumsum(hi)
-    n = lo.size
-    X = np.zeros((n, 2))
-    Y = np.zeros((n, 2))
-    for j, (l, a, b) in enumerate(zip(links, plo, phi)):
-        c0, c1 = _cos_range(a, b)
-        s0, s1 = _cos_range(a - math.pi / 2, b - math.pi / 2)
-        X[j], Y[j] = (l * c0, l * c1), (l * s0, l * s1)
-    RX, RY = np.cumsum(X[::-1], axis=0)[::-1], np.cumsum(Y[::-1], axis=0)[::-1]     # r_j: joint j to the tip
-    x0, x1 = base + RX[0]
-    y0, y1 = RY[0]
-    if not (x0 - tol <= target[0] <= x1 + tol and y0 - tol <= target[1] <= y1 + tol):
-        return False
-    if signs is not None and not _directions(RX, RY, signs, tol):
-        return False
-    w = hi - lo
-    j = int(np.argmax(w))
-    if depth <= 0 or w[j] <= 1e-12:
-        return True
-    mid = 0.5 * (lo[j] + hi[j])
-    hi1, lo2 = hi.copy(), lo.copy()
-    hi1[j], lo2[j] = mid, mid
-    return (_may_reach(links, base, target, lo, hi1, depth - 1, tol, signs)
-            or _may_reach(links, base, target, lo2, hi, depth - 1, tol, signs))
+def _force_exists(a: np.ndarray, b: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """Whether some ``F = (fx, fy)`` meets every row ``a fx + b fy >= t`` (rows on the last axis): ``fx`` eliminated
+    (Fourier-Motzkin: each pair of rows with opposite signs of ``a`` gives one row in ``fy``), then the interval of
+    ``fy`` left. Sound up to rounding: near-parallel pairs are dropped (a relaxation) and a tolerance widens the
+    end test."""
+    big = np.maximum(np.abs(a), np.abs(b))
+    big = np.where(big > 0.0, big, 1.0)
+    a, b, t = a / big, b / big, t / big
+    ai, bi, ti = a[..., :, None], b[..., :, None], t[..., :, None]
+    ak, bk, tk = a[..., None, :], b[..., None, :], t[..., None, :]
+    c = ak * bi - ai * bk                    # from (t_i - b_i fy) / a_i <= (t_k - b_k fy) / a_k, a_i > 0 > a_k
+    d = ak * ti - ai * tk                    # c fy <= d
+    pair = (a > 0.0)[..., :, None] & (a < 0.0)[..., None, :]
+    tol = 1e-9 * (1.0 + np.abs(t).max(axis=-1))
+    use = pair & (np.abs(c) > 1e-12 * (np.abs(ak * bi) + np.abs(ai * bk)))
+    bad = (pair & (c == 0.0) & (d < -tol[..., None, None])).any(axis=(-1, -2))
+    zero = a == 0.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r, rz = d / c, t / b
+    up = np.minimum(np.where(use & (c > 0.0), r, np.inf).min(axis=(-1, -2)),
+                    np.where(zero & (b < 0.0), rz, np.inf).min(axis=-1))
+    low = np.maximum(np.where(use & (c < 0.0), r, -np.inf).max(axis=(-1, -2)),
+                     np.where(zero & (b > 0.0), rz, -np.inf).max(axis=-1))
+    bad |= (zero & (b == 0.0) & (t > tol[..., None])).any(axis=-1)
+    size = np.abs(np.where(np.isfinite(low), low, 0.0)) + np.abs(np.where(np.isfinite(up), up, 0.0))
+    return (low <= up + tol * (1.0 + size)) & ~bad
 
 
-def _directions(RX: np.ndarray, RY: np.ndarray, signs: np.ndarray, tol: float) -> bool:
-    """Some direction ``theta`` of a nonzero tip force gives ``s_j (r_j x F) >= 0`` for every joint with a sign,
-    ``r_j`` anywhere in its box ``RX[j] x RY[j]``: ``r x F = |r| |F| sin(theta - alpha_r)``, so joint ``j`` allows
-    ``theta`` in ``[alpha_min, alpha_max + pi]`` (``s = +1``) or ``[alpha_min - pi, alpha_max]`` (``s = -1``), the
-    box's angles ``alpha``; a box about the origin allows every direction."""
-    ok = np.ones(DIRECTIONS, dtype=bool)
-    half = math.pi / DIRECTIONS + 1e-9
-    for j in np.flatnonzero(signs):
-        (a0, a1), (b0, b1) = RX[j], RY[j]
-        if a0 - tol <= 0.0 <= a1 + tol and b0 - tol <= 0.0 <= b1 + tol:
-            continue
-        ang = np.arctan2([b0, b0, b1, b1], [a0, a1, a0, a1])
-        ref = math.atan2(0.5 * (b0 + b1), 0.5 * (a0 + a1))
-        d = (ang - ref + np.pi) % (2 * np.pi) - np.pi
-        lo_a, hi_a = ref + d.min(), ref + d.max()
-        start, end = (lo_a, hi_a + math.pi) if signs[j] > 0 else (lo_a - math.pi, hi_a)
-        ok &= ((_THETA - (start - half)) % (2 * np.pi)) <= (end - start + 2 * half)
-        if not ok.any():
-            return False
-    return True
+def _boxes_pass(m: Manipulator, target: np.ndarray, lo: np.ndarray, hi: np.ndarray, table: np.ndarray,
+                side: np.ndarray, held: np.ndarray, tables: _TorqueTables, tol: float, slack: float) -> np.ndarray:
+    """The boxes ``[lo, hi]`` (B, n) that may hold an equilibrium with the tip on ``target`` (module docstring, step
+    2): the vector ``r_j`` from joint ``j`` to the tip, enclosed from the tip's side (the links after ``j``) and from
+    the base's (``target`` minus the joint's position), must exist; and some tip force ``F`` must give each free
+    joint's moment ``r_j x F`` a value in its ``dE/dq`` bounds and each held joint's a contact torque ``>= 0``
+    (``side (r_j x F) >= side dE/dq(stop)``, ``held``), for some ``r_j`` in its enclosure: in each quadrant of
+    ``F`` the extreme moments over the box are linear in ``F`` (:func:`_force_exists`)."""
+    B = lo.shape[0]
+    l, base = m.link_lengths, m.base_length
+    plo, phi = np.cumsum(lo, axis=1), np.cumsum(hi, axis=1)
+    c0, c1 = _cos_ranges(plo, phi)
+    s0, s1 = _cos_ranges(plo - 0.5 * math.pi, phi - 0.5 * math.pi)
+    X0, X1, Y0, Y1 = l * c0, l * c1, l * s0, l * s1
+
+    def after(v):            # sum over the links from j on
+        return np.cumsum(v[:, ::-1], axis=1)[:, ::-1]
+
+    def before(v):           # sum over the links before j
+        return np.hstack([np.zeros((B, 1)), np.cumsum(v, axis=1)[:, :-1]])
+
+    rx0 = np.maximum(after(X0), target[0] - base - before(X1)) - tol
+    rx1 = np.minimum(after(X1), target[0] - base - before(X0)) + tol
+    ry0 = np.maximum(after(Y0), target[1] - before(Y1)) - tol
+    ry1 = np.minimum(after(Y1), target[1] - before(Y0)) + tol
+    ok = (rx0 <= rx1).all(axis=1) & (ry0 <= ry1).all(axis=1)
+    rows = np.flatnonzero(ok)
+    if rows.size == 0:
+        return ok
+    rx0, rx1, ry0, ry1, lo, hi = rx0[rows], rx1[rows], ry0[rows], ry1[rows], lo[rows], hi[rows]
+    table, side = table[rows], side[rows]
+    glo, ghi = tables.bounds(table, lo, hi)
+    on = side != 0.0
+    glo = np.where(on, held[rows] - slack, glo)
+    ghi = np.where(on, held[rows] + slack, ghi)
+    lower = ~on | (side > 0.0)               # a row "moment >= glo"
+    upper = ~on | (side < 0.0)               # a row "moment <= ghi"
+    nb = rows.size
+    A, Bm, T = [], [], []
+    for sx, sy in _QUADRANTS:                # r x F = ax fx + ay fy with ax = -ry, ay = rx
+        ax_max, ax_min = (-ry0, -ry1) if sx > 0 else (-ry1, -ry0)
+        ay_max, ay_min = (rx1, rx0) if sy > 0 else (rx0, rx1)
+        A.append(np.hstack([np.where(lower, ax_max, 0.0), np.where(upper, -ax_min, 0.0), np.full((nb, 1), sx),
+                            np.zeros((nb, 1))]))
+        Bm.append(np.hstack([np.where(lower, ay_max, 0.0), np.where(upper, -ay_min, 0.0), np.zeros((nb, 1)),
+                             np.full((nb, 1), sy)]))
+        T.append(np.hstack([np.where(lower, glo, -1.0), np.where(upper, -ghi, -1.0), np.zeros((nb, 2))]))
+    A, Bm, T = np.stack(A, axis=1), np.stack(Bm, axis=1), np.stack(T, axis=1)
+    feasible = np.zeros(nb, dtype=bool)
+    for s in range(0, nb, BOX_CHUNK):
+        feasible[s:s + BOX_CHUNK] = _force_exists(A[s:s + BOX_CHUNK], Bm[s:s + BOX_CHUNK], T[s:s + BOX_CHUNK]).any(axis=1)
+    ok[rows] = feasible
+    return ok
 
 
-#: Grid points (in all) on which :func:`_distance_may_reach` samples a pattern's box.
-DISTANCE_GRID = 4096
+def _newton_finds(m: Manipulator, target: np.ndarray, q: np.ndarray, table: np.ndarray, side: np.ndarray,
+                  tables: _TorqueTables, iterations: int = 12) -> tuple[np.ndarray, np.ndarray]:
+    """Newton's method on each row's pattern system (unknowns ``q`` and the tip force ``F``; a held joint's row
+    ``q_j = its stop``) from the configurations ``q`` (B, n). Returns the end points and which converged (residual
+    below ``1e-10`` of the chain's scales) and each joint's moment ``r_j x F`` there; where they lie (and the contact
+    torques) is the caller's to check."""
+    B, n = q.shape
+    l = m.link_lengths
+    lim = m.joint_limits
+    free = side == 0.0
+    stop = side * lim
+    q = np.where(free, q, stop)
+    later = np.maximum.outer(np.arange(n), np.arange(n))            # r_{max(j, k)}
+    rows = np.arange(n)
+
+    def geometry(q):
+        r = np.cumsum((l * np.exp(1j * np.cumsum(q, axis=1)))[:, ::-1], axis=1)[:, ::-1]
+        return r, m.base_length + r[:, 0]
+
+    r, tip = geometry(q)
+    g = tables._g(table, q)
+    M = np.stack([-r.imag, r.real], axis=2) * free[..., None]         # r_j x F = M_j . F
+    F = np.linalg.lstsq(M.reshape(-1, 2), np.where(free, g, 0.0).reshape(-1), rcond=None)[0] if B == 1 else \
+        np.stack([np.linalg.lstsq(M[b], np.where(free[b], g[b], 0.0), rcond=None)[0] for b in range(B)])
+    F = np.broadcast_to(F, (B, 2)).copy()
+    scale = m.torque_scale
+    length = float(l.sum())
+    ok = np.zeros(B, dtype=bool)
+    for _ in range(iterations):
+        r, tip = geometry(q)
+        g, dg = tables._g(table, q), tables.dg(table, q)
+        mom = r.real * F[:, 1:2] - r.imag * F[:, 0:1]
+        res = np.hstack([np.where(free, g - mom, q - stop), (tip.real - target[0])[:, None],
+                         (tip.imag - target[1])[:, None]])
+        ok = (np.abs(res[:, :n]).max(axis=1) <= 1e-10 * scale) & (np.abs(res[:, n:]).max(axis=1) <= 1e-10 * length)
+        if ok.all():
+            break
+        Rl = r[:, later]                                              # (B, n, n)
+        J = np.zeros((B, n + 2, n + 2))
+        J[:, :n, :n] = np.where(free[..., None], Rl.real * F[:, None, 0:1] + Rl.imag * F[:, None, 1:2], 0.0)
+        J[:, rows, rows] += np.where(free, dg, 1.0)
+        J[:, :n, n] = np.where(free, r.imag, 0.0)
+        J[:, :n, n + 1] = np.where(free, -r.real, 0.0)
+        J[:, n, :n], J[:, n + 1, :n] = -r.imag, r.real
+        with np.errstate(all="ignore"):
+            try:
+                step = np.linalg.solve(J, res[..., None])[..., 0]
+            except np.linalg.LinAlgError:
+                step = np.stack([np.linalg.lstsq(Jb, rb, rcond=None)[0] for Jb, rb in zip(J, res)])
+        big = np.abs(step[:, :n]).max(axis=1, keepdims=True)
+        step *= np.minimum(1.0, 0.5 / np.maximum(big, 1e-300))       # at most half a radian a step
+        q, F = q - step[:, :n], F - step[:, n:]
+        q = np.where(np.isfinite(q), q, 0.0)
+        F = np.where(np.isfinite(F), F, 0.0)
+    r, _ = geometry(q)
+    return q, ok & np.isfinite(q).all(axis=1), r.real * F[:, 1:2] - r.imag * F[:, 0:1]
 
 
-def _distance_may_reach(links: np.ndarray, dist: float, lo: np.ndarray, hi: np.ndarray, tol: float) -> bool:
-    """False only when no configuration of the box ``[lo, hi]`` puts the tip at the distance ``dist`` from joint 1.
-
-    That distance ``|sum_k l_k e^{i psi_k}|`` (``psi_k = q_2 + ... + q_k``) does not depend on ``q_1`` (free of the
-    wrapping of the tip's interval enclosure); it is sampled on a grid of the box and bounded between the samples by
-    its Lipschitz constants ``sum_{k >= i} l_k`` in ``q_i`` (the reach of joint ``i``): sound."""
-    n = lo.size
-    w = hi[1:] - lo[1:]
-    dims = int(np.count_nonzero(w > 0.0))
-    per = max(2, int(round(DISTANCE_GRID ** (1.0 / dims)))) if dims else 1
-    axes = [np.linspace(a, b, per) if b > a else np.array([a]) for a, b in zip(lo[1:], hi[1:])]
-    Q = np.array(np.meshgrid(*axes, indexing="ij")).reshape(n - 1, -1).T if n > 1 else np.zeros((1, 0))
-    psi = np.concatenate([np.zeros((Q.shape[0], 1)), np.cumsum(Q, axis=1)], axis=1)
-    r = np.abs(np.exp(1j * psi) @ links)
-    reach = np.cumsum(links[::-1])[::-1][1:]
-    half = np.array([0.5 * (b - a) / (per - 1) if b > a else 0.0 for a, b in zip(lo[1:], hi[1:])])
-    margin = float(reach @ half) + tol
-    return bool(r.min() - margin <= dist <= r.max() + margin)
-
-
-def patterns(m: Manipulator, target, *, depth: int = REACH_DEPTH) -> tuple[list[tuple[Option, ...]], int]:
-    """The patterns (one option per joint) whose box may reach ``target`` (module docstring, step 2), and how many
-    patterns there are in all."""
-    options = [joint_options(seg) for seg in m.segments]
-    target = np.asarray(target, dtype=float)
+def _may_balance(m: Manipulator, pats: list[tuple[Option, ...]], target: np.ndarray,
+                 budget: dict[int, int] | None = None) -> np.ndarray:
+    """For each pattern, False when no equilibrium of it can put the tip on ``target`` (proved by bisection of its
+    box with :func:`_boxes_pass`), True when one may (a box is left after ``budget`` boxes). All the patterns'
+    boxes go through each bisection level together."""
+    P, n = len(pats), m.n
+    lim = m.joint_limits
     tol = 1e-9 * float(m.link_lengths.sum())
-    out: list[tuple[Option, ...]] = []
-    total = 0
-    dist = math.hypot(target[0] - m.base_length, target[1])
-    for idx in np.ndindex(*[len(o) for o in options]):
-        total += 1
-        pat = tuple(options[j][i] for j, i in enumerate(idx))
-        lo = np.array([o.hull[0] for o in pat])
-        hi = np.array([o.hull[1] for o in pat])
-        if not _distance_may_reach(m.link_lengths, dist, lo, hi, tol):
-            continue
-        signs = None if _unloaded_may_reach(m, pat, target, tol) else np.array([o.sign for o in pat])
-        if _may_reach(m.link_lengths, m.base_length, target, lo, hi, depth, tol, signs):
-            out.append(pat)
-    return out, total
+    slack = CONTACT_TOL * 1e3 * m.torque_scale
+    tables = _TorqueTables(m)
+    reach = np.cumsum(m.link_lengths[::-1])[::-1]          # how far a joint's turn moves the tip: bisect by it
+    table = np.zeros((P, n), dtype=int)
+    side = np.zeros((P, n))
+    held = np.zeros((P, n))
+    los, his, owner = [], [], []
+    for p, pat in enumerate(pats):
+        ivs = []
+        for j, o in enumerate(pat):
+            side[p, j] = o.side
+            if o.side:
+                held[p, j] = float(-m.segments[j].torque(o.side * lim[j]))
+                ivs.append(np.array([[o.side * lim[j], o.side * lim[j]]]))
+            else:
+                table[p, j] = tables.index(j, o.taut)
+                ivs.append(np.clip(o.intervals + [-PATTERN_TOL, PATTERN_TOL], -lim[j], lim[j]))
+        for idx in np.ndindex(*[len(v) for v in ivs]):
+            los.append([ivs[j][i, 0] for j, i in enumerate(idx)])
+            his.append([ivs[j][i, 1] for j, i in enumerate(idx)])
+            owner.append(p)
+    lo, hi, owner = np.array(los, dtype=float).reshape(-1, n), np.array(his, dtype=float).reshape(-1, n), \
+        np.array(owner, dtype=int)
+    budget = BOX_BUDGET if budget is None else budget
+    cap = np.array([budget.get(int((side[p] == 0).sum()), max(budget.values())) for p in range(P)])
+    may = np.zeros(P, dtype=bool)
+    used = np.zeros(P, dtype=int)
+    level = 0
+    while owner.size:
+        check_time("the tension-only homotopy's pattern test")
+        used += np.bincount(owner, minlength=P)
+        keep = _boxes_pass(m, target, lo, hi, table[owner], side[owner], held[owner], tables, tol, slack)
+        lo, hi, owner = lo[keep], hi[keep], owner[keep]
+        level += 1
+        if level % NEWTON_EVERY == 0 and owner.size:
+            first = np.unique(owner, return_index=True)[1]
+            q, ok, mom = _newton_finds(m, target, 0.5 * (lo[first] + hi[first]), table[owner[first]],
+                                       side[owner[first]], tables)
+            for i in np.flatnonzero(ok):
+                p = owner[first[i]]
+                contact = side[p] * (mom[i] - held[p])           # >= 0 on a stop
+                if all(o.contains(q[i, j]) if not o.side else contact[j] >= -slack for j, o in enumerate(pats[p])):
+                    may[p] = True                          # a root of its system in the pattern: it is solved
+            keep = ~may[owner]
+            lo, hi, owner = lo[keep], hi[keep], owner[keep]
+        alive = np.bincount(owner, minlength=P)
+        width = np.where(side[owner] != 0.0, -1.0, (hi - lo) * reach)
+        point = np.bincount(owner[width.max(axis=1, initial=-1.0) <= 1e-12], minlength=P) > 0   # nothing to bisect
+        spent = (alive > 0) & ((used + 2 * alive > cap) | point)
+        may |= spent
+        keep = ~spent[owner]
+        lo, hi, owner, width = lo[keep], hi[keep], owner[keep], width[keep]
+        j = np.argmax(width, axis=1)
+        r = np.arange(owner.size)
+        mid = 0.5 * (lo[r, j] + hi[r, j])
+        upper_lo, lower_hi = lo.copy(), hi.copy()
+        lower_hi[r, j] = mid
+        upper_lo[r, j] = mid
+        lo, hi, owner = np.concatenate([lo, upper_lo]), np.concatenate([lower_hi, hi]), np.concatenate([owner, owner])
+    return may
 
 
-def _unloaded_may_reach(m: Manipulator, pat: tuple[Option, ...], target: np.ndarray, tol: float) -> bool:
-    """An equilibrium of ``pat`` with no tip force may put the tip on ``target``: every joint at a zero of its
-    option's moment (:func:`_signs`), a free joint anywhere in its option; two or more free joints: assumed."""
-    loose = [j for j, o in enumerate(pat) if o.zeros is None]
-    if len(loose) >= 2:
-        return True
-    sets = [o.zeros if o.zeros is not None else np.zeros(1) for o in pat]
-    if any(z.size == 0 for z in sets):
-        return False
-    Q = np.array(np.meshgrid(*sets, indexing="ij")).reshape(m.n, -1).T
-    if not loose:
-        return bool((np.abs(m.tip_kinematics(Q).tip - target).max(axis=1) <= tol).any())
-    j = loose[0]
-    grid = np.concatenate([np.linspace(lo, hi, 721) for lo, hi in pat[j].intervals])
-    step = float(m.link_lengths.sum()) * float(np.max(np.diff(grid), initial=0.0))
-    for q in Q:
-        G = np.tile(q, (grid.size, 1))
-        G[:, j] = grid
-        if np.linalg.norm(m.tip_kinematics(G).tip - target, axis=1).min() <= step + tol:
-            return True
-    return False
+def patterns(m: Manipulator, target, *, budget: dict[int, int] | None = None) -> tuple[list[tuple[Option, ...]], int]:
+    """The patterns (one option per joint) that may hold an equilibrium with the tip on ``target`` (module docstring,
+    step 2), and how many patterns there are in all."""
+    options = [joint_options(seg) for seg in m.segments]
+    every = [tuple(options[j][i] for j, i in enumerate(idx)) for idx in np.ndindex(*[len(o) for o in options])]
+    may = _may_balance(m, every, np.asarray(target, dtype=float), budget)
+    return [p for p, k in zip(every, may) if k], len(every)
 
 
 # ----------------------------------------------------------------------------- one pattern's system
