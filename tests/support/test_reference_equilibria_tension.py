@@ -188,6 +188,7 @@ def test_inverse_kinematics_of_every_chart_hits_the_target(name):
 
 
 # ---------------------------------------------------------------------------- 2. the paper's count
+@pytest.mark.slow
 def test_paper_chain_linear_has_the_six_equilibria_of_table_2():
     r = eq("paper4-linear", 0.1)
     interior, stop = counts(r)

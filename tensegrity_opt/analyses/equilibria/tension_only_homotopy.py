@@ -182,7 +182,7 @@ class _TorqueTables:
                     z = np.roots(poly)
                     z = z[np.abs(np.abs(z) - 1.0) < 1e-6]
                     qs = 2.0 * np.angle(z)
-                    qs = qs[np.abs(qs) <= lim]
+                    qs = qs[np.abs(qs) <= lim + 1e-6]
                 crit.append(np.pad(qs, (0, 4 - qs.size), constant_values=np.nan))
         self.coef = np.array(coef).T                       # (6, tables)
         self.crit = np.array(crit)                         # (tables, 4)
@@ -379,7 +379,7 @@ def _may_balance(m: Manipulator, pats: list[tuple[Option, ...]], target: np.ndar
                 ivs.append(np.array([[o.side * lim[j], o.side * lim[j]]]))
             else:
                 table[p, j] = tables.index(j, o.taut)
-                ivs.append(np.clip(o.intervals + [-PATTERN_TOL, PATTERN_TOL], -lim[j], lim[j]))
+                ivs.append(o.intervals + [-PATTERN_TOL, PATTERN_TOL])    # a root this close still belongs
         for idx in np.ndindex(*[len(v) for v in ivs]):
             los.append([ivs[j][i, 0] for j, i in enumerate(idx)])
             his.append([ivs[j][i, 1] for j, i in enumerate(idx)])
