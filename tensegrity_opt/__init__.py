@@ -27,6 +27,7 @@ from .analyses.equilibria.equilibrium import Equilibrium, solve_equilibrium_unde
 from .analyses.equilibria.landscape import Landscape, energy_landscape
 from .analyses.equilibria.least_energy import solve_equilibrium
 from .analyses.equilibria.lower_bound import EnergyBound, energy_lower_bound
+from .analyses.equilibria.modes import Modes, modes
 from .analyses.equilibria.rest import find_equilibria_under_force, rest_configuration
 from .analyses.equilibria.stiffness import cartesian_stiffness
 from .analyses.paths.atlas import StabilityAtlas, stability_atlas
@@ -68,8 +69,8 @@ __all__ = [
     "Segment", "Manipulator", "shape_label", "sign_string",
     # equilibria
     "solve_equilibrium", "solve_equilibrium_under_force", "find_equilibria", "find_equilibria_under_force",
-    "rest_configuration", "critical_force", "cartesian_stiffness", "energy_landscape", "energy_lower_bound",
-    "Equilibrium", "EquilibriumSet", "Buckling", "Landscape", "EnergyBound",
+    "rest_configuration", "critical_force", "cartesian_stiffness", "energy_landscape", "energy_lower_bound", "modes",
+    "Equilibrium", "EquilibriumSet", "Buckling", "Landscape", "EnergyBound", "Modes",
     # loading paths
     "solve_equilibria_batch", "Tracker", "force_deflection", "Control", "trace_branch", "switch_branch",
     "bifurcation_diagram", "limit_load", "limit_arms", "imperfection_sensitivity", "stability_boundary",

@@ -22,7 +22,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..errors import InvalidParameterError, UnreachableTargetError, unknown_name
-from .segment import Segment
+from .segment import Segment, _nonnegative
 from .springs import Springs, linear_only
 
 __all__ = ["Manipulator", "TipKinematics"]
@@ -41,7 +41,7 @@ class TipKinematics(NamedTuple):
     Jy: np.ndarray
 
 
-_SEGMENT_KEYS = ("a", "b", "k", "L0", "spring")
+_SEGMENT_KEYS = ("a", "b", "k", "L0", "spring", "mass", "inertia")
 
 
 def _known_keys(d: dict[str, Any], keys: tuple[str, ...], prefix: str) -> None:
@@ -58,17 +58,21 @@ class Manipulator:
     ----------
     segments : sequence of Segment
         The segments from base to tip; they may differ in every parameter.
+    payload : float
+        A point mass at the tip (>= 0, default 0): like the segments' masses it changes no equilibrium without
+        gravity and sets the vibration modes (:func:`~tensegrity_opt.modes`).
 
     Raises
     ------
     InvalidParameterError
         (a ``ValueError``, ``field="segments"``) when the sequence is empty or
-        holds something other than :class:`Segment`.
+        holds something other than :class:`Segment`; ``field="payload"`` when it is negative or not finite.
     """
 
     segments: tuple[Segment, ...]
+    payload: float = 0.0
 
-    def __init__(self, segments: Iterable[Segment]) -> None:
+    def __init__(self, segments: Iterable[Segment], payload: float = 0.0) -> None:
         if isinstance(segments, Segment):
             segments = (segments,)
         try:
@@ -82,44 +86,51 @@ class Manipulator:
                 raise InvalidParameterError(
                     f"segments[{i}] must be a Segment, got {type(s).__name__}", field=f"segments[{i}]")
         object.__setattr__(self, "segments", segs)
+        object.__setattr__(self, "payload", _nonnegative(payload, "payload"))
 
     def __hash__(self) -> int:
         # computed once: hashing 10^4 segments costs milliseconds, and the caches keyed by the chain
         # (buckling modes, seed directions) look it up on every solve
         h = self.__dict__.get("_hash")
         if h is None:
-            h = hash(self.segments)
+            h = hash(self.segments) if not self.payload else hash((self.segments, self.payload))
             object.__setattr__(self, "_hash", h)
         return h
 
     @classmethod
     def uniform(cls, n: int, a: float = 1.0, b: float = 1.0, k: float | tuple[float, float] = 1.0,
-                L0: float | tuple[float, float] = 1.0, spring: str = "linear") -> "Manipulator":
-        """``n`` identical segments ``Segment(a, b, k, L0, spring)``."""
+                L0: float | tuple[float, float] = 1.0, spring: str = "linear", mass: float = 0.0,
+                inertia: float = 0.0, payload: float = 0.0) -> "Manipulator":
+        """``n`` identical segments ``Segment(a, b, k, L0, spring, mass, inertia)``, a ``payload`` at the tip."""
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
             raise InvalidParameterError(f"n must be an integer >= 1, got {n!r}", field="n")
-        seg = Segment(a, b, k, L0, spring)
-        return cls((seg,) * int(n))
+        seg = Segment(a, b, k, L0, spring, mass, inertia)
+        return cls((seg,) * int(n), payload)
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> "Manipulator":
-        """From ``{"n", "a", "b", "k", "L0", "spring"}`` (uniform) or ``{"segments": [...]}``; a key it does not know is
-        refused naming the nearest valid one (``segments[0].l0: unknown key; did you mean L0?``)."""
+        """From ``{"n", "a", "b", "k", "L0", "spring", "mass", "inertia", "payload"}`` (uniform) or
+        ``{"segments": [...], "payload"}``; a key it does not know is refused naming the nearest valid one
+        (``segments[0].l0: unknown key; did you mean L0?``)."""
         if "segments" in d:
-            _known_keys(d, ("segments",), "")
+            _known_keys(d, ("segments", "payload"), "")
             for i, s in enumerate(d["segments"]):
                 if isinstance(s, dict):
                     _known_keys(s, _SEGMENT_KEYS, f"segments[{i}].")
-            return cls(Segment(**s) for s in d["segments"])
-        _known_keys(d, ("n", *_SEGMENT_KEYS), "")
+            return cls((Segment(**s) for s in d["segments"]), d.get("payload", 0.0))
+        _known_keys(d, ("n", *_SEGMENT_KEYS, "payload"), "")
         return cls.uniform(d.get("n", 4), d.get("a", 1.0), d.get("b", 1.0), d.get("k", 1.0), d.get("L0", 1.0),
-                           d.get("spring", "linear"))
+                           d.get("spring", "linear"), d.get("mass", 0.0), d.get("inertia", 0.0),
+                           d.get("payload", 0.0))
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form ``{"segments": [{"a", "b", "k", "L0"}, ...]}`` (``k`` / ``L0`` one number when both
-        springs agree, else the pair; ``spring`` where it is not ``"linear"``): what the API returns for a chain,
-        accepted by :meth:`from_dict`."""
-        return {"segments": [s.to_dict() for s in self.segments]}
+        springs agree, else the pair; ``spring``, ``mass``, ``inertia`` where they are not their defaults;
+        ``payload`` where it is not 0): what the API returns for a chain, accepted by :meth:`from_dict`."""
+        out: dict[str, Any] = {"segments": [s.to_dict() for s in self.segments]}
+        if self.payload:
+            out["payload"] = self.payload
+        return out
 
     # ------------------------------------------------------------------ arrays
     def __len__(self) -> int:
@@ -395,8 +406,8 @@ class Manipulator:
 
     def mirrored(self) -> "Manipulator":
         """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""
-        return Manipulator(s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments)
+        return Manipulator((s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments), self.payload)
 
     def with_spring(self, spring: str) -> "Manipulator":
         """The same chain with every segment's spring law set to ``spring``."""
-        return Manipulator(s.replace(spring=spring) for s in self.segments)
+        return Manipulator((s.replace(spring=spring) for s in self.segments), self.payload)

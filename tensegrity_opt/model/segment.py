@@ -45,6 +45,16 @@ def _positive(value: Any, field: str) -> float:
     return x
 
 
+def _nonnegative(value: Any, field: str) -> float:
+    try:
+        x = float(value)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"{field} must be a number, got {value!r}", field=field) from None
+    if not math.isfinite(x) or x < 0.0:
+        raise InvalidParameterError(f"{field} must be finite and >= 0, got {value!r}", field=field)
+    return x
+
+
 def _pair(value: Any, field: str, names: tuple[str, str]) -> tuple[float, float]:
     if isinstance(value, (list, tuple, np.ndarray)):
         if len(value) != 2:
@@ -75,6 +85,13 @@ class Segment:
         The springs' law (:data:`~tensegrity_opt.model.springs.SPRING_LAWS`): ``"linear"`` (the paper's
         model: a spring shorter than its rest length pushes) or ``"tension_only"`` (it goes slack and
         carries nothing: a real extension spring or cable).
+    mass : float
+        The segment's mass (>= 0, default 0): two equal triangles of ``mass / 2``, their centroids on the chain's
+        axis ``2 b / 3`` from the joint, the lower one on the link before the joint, the upper one on the link after
+        it (``docs/model.md``, "Masses and modes"). Without gravity it changes no equilibrium; it sets the
+        vibration modes (:func:`~tensegrity_opt.modes`).
+    inertia : float
+        Each triangle's rotational inertia about its centroid (>= 0, default 0; mass x length^2).
 
     Raises
     ------
@@ -90,9 +107,12 @@ class Segment:
     L1_0: float
     L2_0: float
     spring: str
+    mass: float
+    inertia: float
 
     def __init__(self, a: float, b: float, k: float | tuple[float, float] = 1.0,
-                 L0: float | tuple[float, float] = 1.0, spring: str = "linear") -> None:
+                 L0: float | tuple[float, float] = 1.0, spring: str = "linear", mass: float = 0.0,
+                 inertia: float = 0.0) -> None:
         object.__setattr__(self, "a", _positive(a, "a"))
         object.__setattr__(self, "b", _positive(b, "b"))
         k1, k2 = _pair(k, "k", ("k1", "k2"))
@@ -102,6 +122,8 @@ class Segment:
         object.__setattr__(self, "L1_0", l1)
         object.__setattr__(self, "L2_0", l2)
         object.__setattr__(self, "spring", spring_law(spring))
+        object.__setattr__(self, "mass", _nonnegative(mass, "mass"))
+        object.__setattr__(self, "inertia", _nonnegative(inertia, "inertia"))
 
     # ------------------------------------------------------------------ geometry
     @property
@@ -135,9 +157,9 @@ class Segment:
         return self.L1_0 if self.L1_0 == self.L2_0 else (self.L1_0, self.L2_0)
 
     def replace(self, **changes: Any) -> "Segment":
-        """A copy with some of ``a``, ``b``, ``k``, ``L0``, ``spring`` changed."""
+        """A copy with some of ``a``, ``b``, ``k``, ``L0``, ``spring``, ``mass``, ``inertia`` changed."""
         args = {"a": self.a, "b": self.b, "k": (self.k1, self.k2), "L0": (self.L1_0, self.L2_0),
-                "spring": self.spring}
+                "spring": self.spring, "mass": self.mass, "inertia": self.inertia}
         unknown = set(changes) - set(args)
         if unknown:
             raise InvalidParameterError(f"unknown segment field(s): {sorted(unknown)}", field=sorted(unknown)[0])
@@ -145,14 +167,18 @@ class Segment:
         return Segment(**args)
 
     def to_dict(self) -> dict[str, Any]:
-        """JSON-friendly form accepted back by ``Segment(**d)`` (``spring`` only when it is not the default
-        ``"linear"``)."""
+        """JSON-friendly form accepted back by ``Segment(**d)`` (``spring``, ``mass``, ``inertia`` only where they
+        are not their defaults ``"linear"``, 0, 0)."""
         k = self.k
         L0 = self.L0
         out = {"a": self.a, "b": self.b, "k": list(k) if isinstance(k, tuple) else k,
                "L0": list(L0) if isinstance(L0, tuple) else L0}
         if self.spring != "linear":
             out["spring"] = self.spring
+        if self.mass:
+            out["mass"] = self.mass
+        if self.inertia:
+            out["inertia"] = self.inertia
         return out
 
     @property

@@ -21,7 +21,8 @@ __all__ = ["segment_energy", "tip_expression", "chain_expressions", "kkt_graph",
 
 
 def _q_of_phi(phi):
-    return phi - ca.vertcat(0, phi[:-1])
+    # one joint: phi[:-1] is 1 x 0 and the vertcat a 2 x 1 that would broadcast phi into two segments
+    return phi if phi.shape[0] == 1 else phi - ca.vertcat(0, phi[:-1])
 
 
 def segment_energy(q, a, b, k1, k2, L10, L20, *, beta=None, c=None, tension=None):

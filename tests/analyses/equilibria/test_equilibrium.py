@@ -324,3 +324,20 @@ def test_least_energy_search_on_a_large_sample_keeps_the_full_search_pick(m):
         assert [(e.q.tolist(), e.energy, e.solver.iterations) for e in least] == \
                [(e.q.tolist(), e.energy, e.solver.iterations) for e in ties], (dx, dy)
         assert n_least <= n_full
+
+
+@pytest.mark.parametrize("fx, fy", [(0.0, 0.01), (0.3, -0.2), (-0.2, 0.15)])
+def test_one_segment_under_a_tip_force_balances_it(fx, fy):
+    """A regression: with one joint the CasADi model counted the segment twice (``phi[:-1]`` of a 1 x 1 symbol is
+    1 x 0, and the relative angles broadcast into two entries), so the force solve stopped at half the angle. The
+    answer balances ``E'(q) = b (-fx sin q + fy cos q)`` (the segment's torque in closed form)."""
+    import math
+
+    import tensegrity_opt as to
+
+    a, b, k, L0 = 1.1, 1.0, 2.0, 1.2
+    m = to.Manipulator([to.Segment(a, b, k, L0)])
+    q = float(to.solve_equilibrium_under_force(m, fx, fy).q[0])
+    c, beta = math.hypot(a, b), math.atan2(a, b)
+    dE = sum(k * (2 * c * math.cos(beta + s * q / 2) - L0) * (-s * c * math.sin(beta + s * q / 2)) for s in (1, -1))
+    assert dE == pytest.approx(b * (-fx * math.sin(q) + fy * math.cos(q)), abs=1e-10)
