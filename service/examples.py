@@ -91,6 +91,11 @@ FORCE_DEFLECTION = {
     "ended_at": None, "requested": 3,
 }
 
+MODES = {"success": True, "status": "solved",
+         "message": "2 modes with the tip held; lowest frequency 4.14815 rad/s (0.660198 Hz)",
+         "frequencies": [4.148146, 12.167975], "eigenvalues": [17.207114, 148.059609],
+         "shapes": [[-1.964038, 3.982533, -1.119163, -2.904969], [-1.336268, 4.686772, -8.292312, 10.911387]],
+         "tip": "held", "held_joints": [False, False, False, False], "total_mass": 0.4, "equilibrium": EQUILIBRIUM}
 STIFFNESS = {"matrix": [[0.020242, -0.132106], [-0.132106, -0.06731]], "equilibrium": EQUILIBRIUM}
 
 SEGMENT_TORQUE = {"q": [-0.5, 0.0, 0.5], "torque": [0.494808, 0.0, -0.494808],

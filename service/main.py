@@ -38,6 +38,7 @@ from .api.routes import (
     equilibrium,
     health,
     landscape,
+    modes,
     ops,
     paths,
     plots,
@@ -54,7 +55,7 @@ from .responses import SafeJSONResponse
 
 #: Routers behind the API key (when keys are configured: the API, its version and metrics; the OpenAPI document
 #: too, :mod:`service.api.swagger`) and the open ones (health, the page).
-API_ROUTERS = (equilibrium, buckling, curves, stiffness, segment, landscape, batch, design, paths, atlas, control,
+API_ROUTERS = (equilibrium, buckling, curves, stiffness, modes, segment, landscape, batch, design, paths, atlas, control,
                plots, jobs_routes, ops)
 OPEN_ROUTERS = (health, web)
 #: The WebSocket routes: they check the API key themselves (a FastAPI dependency on ``Request`` does not

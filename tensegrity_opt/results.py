@@ -19,6 +19,7 @@ result                      returned by                                      rec
                             ``Equilibrium.certificate`` (``certify=True``)
 :class:`Buckling`           ``critical_force``                               :class:`Mode`
 :class:`Landscape`          ``energy_landscape``
+:class:`Modes`              ``modes``                                        :class:`Equilibrium`
 :class:`Curve`              ``force_deflection``                             :class:`Jump`, :class:`CurveEnd`
 :class:`Branch`             ``trace_branch``, ``switch_branch``,             :class:`BranchEvent`
                             ``bifurcation_diagram`` (a list)
@@ -58,6 +59,7 @@ from .analyses.design.strongest import Design
 from .analyses.equilibria.all_equilibria import EquilibriumSet
 from .analyses.equilibria.buckling import Buckling, Mode
 from .analyses.equilibria.equilibrium import Equilibrium
+from .analyses.equilibria.modes import Modes
 from .analyses.equilibria.landscape import Landscape
 from .analyses.equilibria.lower_bound import EnergyBound
 from .analyses.paths.atlas import AtlasCrossing, AtlasTarget, StabilityAtlas
@@ -76,7 +78,7 @@ from .outcome import Outcome, SolverInfo
 
 __all__ = [
     "Outcome", "SolverInfo",
-    "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "EnergyBound", "Buckling", "Mode", "Landscape",
+    "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "EnergyBound", "Buckling", "Mode", "Landscape", "Modes",
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent", "Transition",

@@ -41,14 +41,15 @@ def manipulator_form(m: Any) -> str:
 
 
 def build_segment(seg: s.SegmentIn) -> to.Segment:
-    return to.Segment(seg.a, seg.b, pair(seg.k), pair(seg.L0), seg.spring)
+    return to.Segment(seg.a, seg.b, pair(seg.k), pair(seg.L0), seg.spring, seg.mass, seg.inertia)
 
 
 def manipulator_key(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> tuple[Any, ...]:
     """A chain description as a hashable tuple of plain numbers (cache key; cheap to send to a process)."""
     if isinstance(m, s.UniformManipulatorIn):
-        return ("uniform", m.n, m.a, m.b, pair(m.k), pair(m.L0), m.spring)
-    return ("segments",) + tuple((seg.a, seg.b, pair(seg.k), pair(seg.L0), seg.spring) for seg in m.segments)
+        return ("uniform", m.n, m.a, m.b, pair(m.k), pair(m.L0), m.spring, m.mass, m.inertia, m.payload)
+    return ("segments", m.payload) + tuple((seg.a, seg.b, pair(seg.k), pair(seg.L0), seg.spring, seg.mass,
+                                            seg.inertia) for seg in m.segments)
 
 
 @lru_cache(maxsize=256)
@@ -57,9 +58,10 @@ def manipulator(key: tuple[Any, ...]) -> to.Manipulator:
     the same description gives the same (cached, immutable) object, so its derived arrays, buckling modes and
     seed directions are computed once, not per request."""
     if key[0] == "uniform":
-        return to.Manipulator.from_dict(dict(zip(("n", "a", "b", "k", "L0", "spring"), key[1:])))
-    return to.Manipulator.from_dict({"segments": [dict(zip(("a", "b", "k", "L0", "spring"), seg))
-                                                  for seg in key[1:]]})
+        return to.Manipulator.from_dict(dict(zip(("n", "a", "b", "k", "L0", "spring", "mass", "inertia", "payload"),
+                                                 key[1:])))
+    return to.Manipulator.from_dict({"segments": [dict(zip(("a", "b", "k", "L0", "spring", "mass", "inertia"), seg))
+                                                  for seg in key[2:]], "payload": key[1]})
 
 
 def build_manipulator(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> to.Manipulator:

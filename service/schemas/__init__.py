@@ -179,6 +179,7 @@ from .plots import (
     PlotTorqueRequest,
 )
 from .segment import SegmentTorqueOut, SegmentTorqueRequest
+from .modes import ModesOut, ModesRequest
 from .stiffness import StiffnessOut, StiffnessRequest
 from .stream import (
     MODES,
@@ -346,6 +347,8 @@ __all__ = [
     "StartQ",
     "Stiff",
     "StiffPair",
+    "ModesOut",
+    "ModesRequest",
     "StiffnessOut",
     "StiffnessRequest",
     "SweepGrid",

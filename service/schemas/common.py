@@ -160,6 +160,14 @@ SpringLaw = Annotated[Literal["linear", "tension_only"], Field(
                 "`unsupported`, field `segments[i].spring`)")]
 
 
+#: A mass or a rotational inertia (>= 0; the caller's units: kg and kg m^2 with N/m and m give rad/s).
+Mass = Annotated[float, Field(ge=0.0, le=1e12, allow_inf_nan=False)]
+MASS_DOC = ("the segment's mass (>= 0, default 0): two equal triangles whose centroids lie on the chain's axis 2b/3 "
+         "from the joint; without gravity it changes no equilibrium, it sets the vibration modes (`/v1/modes`)")
+INERTIA_DOC = "each triangle's rotational inertia about its centroid (>= 0, default 0; mass x length^2)"
+PAYLOAD_DOC = "a point mass at the tip (>= 0, default 0): it sets the vibration modes (`/v1/modes`)"
+
+
 class SegmentIn(BaseModel):
     """One dual-triangle segment."""
 
@@ -172,6 +180,8 @@ class SegmentIn(BaseModel):
     k: StiffPair = 1.0
     L0: LengthPair = 1.0
     spring: SpringLaw = "linear"
+    mass: Mass = Field(0.0, description=MASS_DOC)
+    inertia: Mass = Field(0.0, description=INERTIA_DOC)
 
 
 class UniformManipulatorIn(BaseModel):
@@ -187,6 +197,9 @@ class UniformManipulatorIn(BaseModel):
     k: StiffPair = 1.0
     L0: LengthPair = 1.0
     spring: SpringLaw = "linear"
+    mass: Mass = Field(0.0, description=MASS_DOC)
+    inertia: Mass = Field(0.0, description=INERTIA_DOC)
+    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
 class SegmentedManipulatorIn(BaseModel):
@@ -197,6 +210,7 @@ class SegmentedManipulatorIn(BaseModel):
 
     segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
                                       description="segments from base to tip (server limit TENSEGRITY_MAX_SEGMENTS)")
+    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
 def _manipulator_kind(v: Any) -> str:

@@ -28,7 +28,11 @@ from pydantic import (
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import (
+    INERTIA_DOC,
+    MASS_DOC,
+    PAYLOAD_DOC,
     Deflection,
+    Mass,
     Finite,
     ForceValue,
     Length,
@@ -81,6 +85,9 @@ class SweepUniformManipulator(BaseModel):
     k: StiffPair = 1.0
     L0: LengthPair = 1.0
     spring: SpringLaw = "linear"
+    mass: Mass = Field(0.0, description=MASS_DOC)
+    inertia: Mass = Field(0.0, description=INERTIA_DOC)
+    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
 class SweepSegmentedManipulator(BaseModel):
@@ -93,6 +100,7 @@ class SweepSegmentedManipulator(BaseModel):
     segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
                                       description="segments from base to tip ({a, b, k, L0, spring}; k and L0 a "
                                                   "number or the pair of the two springs)")
+    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
 def _sweep_manipulator_kind(v: Any) -> str:

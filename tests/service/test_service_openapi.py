@@ -39,6 +39,7 @@ def test_every_operation_is_documented():
     ops = {(path, method): op for path, item in doc["paths"].items() for method, op in item.items()}
     expected = {("/v1/equilibrium", "post"), ("/v1/equilibrium/force", "post"), ("/v1/equilibria", "post"),
                 ("/v1/buckling", "post"), ("/v1/force-deflection", "post"), ("/v1/stiffness", "post"),
+                ("/v1/modes", "post"),
                 ("/v1/segment/torque", "post"), ("/v1/energy-landscape", "post"), ("/v1/batch/equilibrium", "post"),
                 ("/healthz", "get"), ("/readyz", "get"), ("/version", "get"), ("/metrics", "get"),
                 ("/v1/design/critical-force", "post"), ("/v1/design/preloads", "post"),

@@ -18,6 +18,7 @@ commands of an application built on top (``add_commands``).
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 from collections.abc import Callable
 from typing import Any
@@ -29,6 +30,7 @@ from ...analyses.equilibria.all_equilibria import find_equilibria
 from ...analyses.equilibria.buckling import critical_force
 from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
 from ...analyses.equilibria.least_energy import solve_equilibrium
+from ...analyses.equilibria.modes import modes
 from ...analyses.paths.curves import force_deflection
 from .common import (
     HELP_FORMAT,
@@ -81,6 +83,25 @@ def _cmd_equilibrium(args, m):
     its = "iterations not counted" if eq.solver.iterations is None else f"{eq.solver.iterations} iterations"
     cert = [] if eq.certificate is None else [f"least energy {eq.certificate.message}"]
     return eq.to_dict, "\n".join([head, *(eq_table([eq])), f"solver: {eq.solver.status}, {its}", *cert])
+
+
+def _cmd_modes(args, m):
+    if args.fx is not None or args.fy is not None:
+        eq = solve_equilibrium_under_force(m, args.fx or 0.0, args.fy or 0.0)
+        head = f"Vibration modes of the equilibrium under the tip force ({args.fx or 0.0:g}, {args.fy or 0.0:g})"
+    else:
+        eq = solve_equilibrium(m, args.dx, args.dy)
+        head = f"Vibration modes of the least-energy stable equilibrium at dx = {args.dx:g}, dy = {args.dy:g}"
+    md = modes(m, eq, tip=args.tip)
+    lines = [head, md.message, f"{'mode':>4} {'w (rad/s)':>12} {'f (Hz)':>10} {'w^2':>12}  shape (joint angles, "
+                                "mass-normalised)"]
+    for i, (w, lam, s) in enumerate(zip(md.frequencies, md.eigenvalues, md.shapes), 1):
+        ws = f"{w:>12.6g} {w / (2 * math.pi):>10.6g}" if math.isfinite(w) else f"{'-':>12} {'-':>10}"
+        lines.append(f"{i:>4} {ws} {lam:>12.6g}  {fmt_q(s)}")
+
+    def body():
+        return {**md.to_dict(), "equilibrium": eq.to_dict()}
+    return body, "\n".join(lines)
 
 
 def _cmd_equilibria(args, m):
@@ -169,6 +190,16 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
                          "meeting the tip constraint, and the gap (certified when within its tolerance)")
     exclusive(sp, ["--dx", "--dy", "--certify"], ["--fx", "--fy"], "a tip deflection or a tip force, not both")
 
+    sp = command("modes", _cmd_modes, "natural frequencies and mode shapes of an equilibrium (needs --mass or "
+                                      "--payload)")
+    sp.add_argument("--dx", type=finite_float, default=0.1, help="tip deflection along the chain (the tip held)")
+    sp.add_argument("--dy", type=finite_float, default=0.0, help="sideways tip deflection")
+    sp.add_argument("--fx", type=finite_float, default=None, help="a dead tip force instead of the deflection")
+    sp.add_argument("--fy", type=finite_float, default=None, help="sideways dead tip force")
+    sp.add_argument("--tip", choices=("held", "loaded"), default=None,
+                    help="the modes with the tip held or free under its load (default: as the equilibrium is posed)")
+    exclusive(sp, ["--dx", "--dy"], ["--fx", "--fy"], "a tip deflection or a tip force, not both")
+
     sp = command("equilibria", _cmd_equilibria, "every equilibrium (minima, saddles, maxima) for a tip deflection")
     add_deflection_options(sp)
     sp.add_argument("--method", choices=("search", "homotopy"), default="search",
@@ -205,7 +236,7 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
 
 
 #: The command groups of the top help, in order; a command in none of them is listed under "more".
-GROUPS = (("equilibria", ("buckling", "equilibrium", "equilibria", "curve", "rest")),
+GROUPS = (("equilibria", ("buckling", "equilibrium", "equilibria", "curve", "rest", "modes")),
           ("loading paths", ("branch", "limit-load", "imperfection", "boundary", "atlas")),
           ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "load-capacity")),
           ("figures", ("plot",)), ("parameter sweeps", ("sweep",)), ("set-up", ("homotopy-precompute",)),

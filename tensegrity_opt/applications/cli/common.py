@@ -266,10 +266,17 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--spring", choices=tuple(SPRING_LAWS), default="linear",
                    help="the springs' law: linear (the paper's: a spring shorter than its rest length pushes) or "
                         "tension_only (it goes slack)")
+    g.add_argument("--mass", type=finite_float, default=0.0,
+                   help="each segment's mass (two triangles, centroids 2b/3 from the joint; no effect on equilibria "
+                        "without gravity; sets the vibration modes)")
+    g.add_argument("--inertia", type=finite_float, default=0.0,
+                   help="each triangle's rotational inertia about its centroid (mass x length^2)")
+    g.add_argument("--payload", type=finite_float, default=0.0, help="a point mass at the tip")
     g.add_argument("--manipulator", metavar="FILE",
-                   help='JSON file {"segments": [{"a","b","k","L0","spring"}, ...]}, instead of the uniform chain\'s '
-                        'options')
-    exclusive(sp, ["--manipulator"], ["--n", "--a", "--b", "--k", "--L0", "--spring"],
+                   help='JSON file {"segments": [{"a","b","k","L0","spring","mass","inertia"}, ...], "payload"}, '
+                        "instead of the uniform chain's options")
+    exclusive(sp, ["--manipulator"], ["--n", "--a", "--b", "--k", "--L0", "--spring", "--mass", "--inertia",
+                                      "--payload"],
               "the chain comes from the file or from the uniform chain's options")
 
 
@@ -315,7 +322,8 @@ def _manipulator(args: argparse.Namespace) -> Manipulator:
             raise InvalidParameterError(f"--manipulator {args.manipulator}: expected a JSON object "
                                         '{"segments": [{"a", "b", "k", "L0"}, ...]}', field="manipulator")
         return Manipulator.from_dict(data)
-    return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0, args.spring)
+    return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0, args.spring, args.mass, args.inertia,
+                               args.payload)
 
 
 def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:

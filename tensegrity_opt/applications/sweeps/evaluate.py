@@ -33,7 +33,8 @@ def _manipulator(header: Mapping[str, Any], point: Mapping[str, Any]) -> Manipul
         return _chain_of(header["manipulator"])
     p = {**header["manipulator"], **{k: v for k, v in point.items() if k in MANIPULATOR_PARAMETERS}}
     k, L0 = (tuple(p[x]) if isinstance(p[x], list) else p[x] for x in ("k", "L0"))
-    return Manipulator.uniform(p["n"], p["a"], p["b"], k, L0, p.get("spring", "linear"))
+    return Manipulator.uniform(p["n"], p["a"], p["b"], k, L0, p.get("spring", "linear"), p.get("mass", 0.0),
+                               p.get("inertia", 0.0), p.get("payload", 0.0))
 
 
 def _chain_of(base: Mapping[str, Any]) -> Manipulator:
@@ -42,8 +43,9 @@ def _chain_of(base: Mapping[str, Any]) -> Manipulator:
     def pair(v):
         return tuple(v) if isinstance(v, list) else v
 
-    return Manipulator(Segment(s["a"], s["b"], pair(s["k"]), pair(s["L0"]), s.get("spring", "linear"))
-                       for s in base["segments"])
+    return Manipulator((Segment(s["a"], s["b"], pair(s["k"]), pair(s["L0"]), s.get("spring", "linear"),
+                                s.get("mass", 0.0), s.get("inertia", 0.0)) for s in base["segments"]),
+                       base.get("payload", 0.0))
 
 
 def _equilibrium(m: Manipulator, point: Mapping[str, Any]):

@@ -226,10 +226,14 @@ def _header(spec: Any) -> dict[str, Any]:
             if key == "spring":
                 base[key] = _law(v, "manipulator.spring")
                 continue
+            if key in _MASSES:
+                base[key] = _mass(v, f"manipulator.{key}")
+                continue
             if key not in MANIPULATOR_PARAMETERS:
-                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "spring", "segments"), "key")
-                      + " (the base chain is {n, a, b, k, L0, spring} (uniform) or {segments: [{a, b, k, L0, spring}, "
-                        "...]})")
+                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "spring", *_MASSES,
+                                                               "segments"), "key")
+                      + " (the base chain is {n, a, b, k, L0, spring, mass, inertia, payload} (uniform) or "
+                        "{segments: [{a, b, k, L0, spring, mass, inertia}, ...], payload})")
             if key in ("k", "L0") and isinstance(v, (list, tuple)):
                 base[key] = _spring_pair(key, v, f"manipulator.{key}")
             else:
@@ -242,9 +246,9 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
     ``L0`` a number or the pair of the two springs. Its segments are fixed: no point varies n, a, b, k, L0."""
     from ...model.segment import Segment
 
-    extra = [k for k in raw_m if k != "segments"]
+    extra = [k for k in raw_m if k not in ("segments", "payload")]
     if extra:
-        _fail(f"manipulator.{extra[0]}", "a chain given by its segments takes no other key")
+        _fail(f"manipulator.{extra[0]}", "a chain given by its segments takes no other key but payload")
     segs = raw_m["segments"]
     if not isinstance(segs, (list, tuple)) or not segs:
         _fail("manipulator.segments", "must be a non-empty list of {a, b, k, L0}")
@@ -254,9 +258,9 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
         if not isinstance(sd, Mapping):
             _fail(fld, "must be an object {a, b, k, L0}")
         for key in sd:
-            if key not in ("a", "b", "k", "L0", "spring"):
-                _fail(f"{fld}.{key}", unknown_name(key, ("a", "b", "k", "L0", "spring"), "key")
-                      + " (a segment has a, b, k, L0, spring)")
+            if key not in _SEGMENT_KEYS:
+                _fail(f"{fld}.{key}", unknown_name(key, _SEGMENT_KEYS, "key")
+                      + " (a segment has a, b, k, L0, spring, mass, inertia)")
         norm: dict[str, Any] = {}
         for key in ("a", "b", "k", "L0"):
             v, name = sd.get(key, 1.0), "a" if key != "k" else "k"
@@ -266,13 +270,32 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
                 norm[key] = _value(name, v, f"{fld}.{key}")
         if "spring" in sd:
             norm["spring"] = _law(sd["spring"], f"{fld}.spring")
+        for key in ("mass", "inertia"):
+            if key in sd:
+                norm[key] = _mass(sd[key], f"{fld}.{key}")
         try:
             Segment(norm["a"], norm["b"], tuple(norm["k"]) if isinstance(norm["k"], list) else norm["k"],
                     tuple(norm["L0"]) if isinstance(norm["L0"], list) else norm["L0"], norm.get("spring", "linear"))
         except InvalidParameterError as exc:
             _fail(f"{fld}.{exc.field}" if exc.field else fld, exc.message)
         out.append(norm)
-    return {"segments": out}
+    chain: dict[str, Any] = {"segments": out}
+    if "payload" in raw_m:
+        chain["payload"] = _mass(raw_m["payload"], "manipulator.payload")
+    return chain
+
+
+#: The masses a chain may carry (``docs/model.md``, "Masses and modes"): a segment's ``mass`` and ``inertia``, the
+#: chain's ``payload``.
+_MASSES = ("mass", "inertia", "payload")
+_SEGMENT_KEYS = ("a", "b", "k", "L0", "spring", "mass", "inertia")
+
+
+def _mass(v: Any, fld: str) -> float:
+    """A mass or inertia (finite, >= 0), or the spec's refusal naming ``fld``."""
+    if not _is_number(v) or not math.isfinite(float(v)) or float(v) < 0.0:
+        _fail(fld, f"must be a finite number >= 0, got {v!r}")
+    return float(v)
 
 
 def _law(v: Any, fld: str) -> str:

@@ -186,3 +186,21 @@ def test_masses_change_no_equilibrium_and_round_trip():
     with pytest.raises(InvalidParameterError) as e:
         to.Manipulator.from_dict({"segments": [{"a": 1, "b": 1, "mas": 1}]})
     assert "mass" in str(e.value)
+
+
+def test_a_sweep_spec_carries_the_masses_and_its_rows_are_the_massless_chains():
+    """One name and one form: the sweep spec's chain takes mass, inertia (per segment) and payload as the library
+    and REST do; without gravity its rows are the massless chain's; a bad mass names its field."""
+    pts = [{"dx": 0.5}, {"dx": 0.8, "dy": 0.1}]
+    heavy = to.sweep({"analysis": "equilibrium", "manipulator": {"n": 3, "mass": 0.2, "inertia": 0.01,
+                                                                 "payload": 0.1}, "points": pts})
+    seg = to.sweep({"analysis": "equilibrium", "points": pts, "manipulator": {
+        "segments": [{"a": 1, "b": 1, "mass": 0.2, "inertia": 0.01}] * 3, "payload": 0.1}})
+    light = to.sweep({"analysis": "equilibrium", "manipulator": {"n": 3}, "points": pts})
+    assert [r["q"] for r in heavy.rows] == [r["q"] for r in light.rows] == [r["q"] for r in seg.rows]
+    for bad, field in (({"n": 3, "mass": -1}, "manipulator.mass"),
+                       ({"segments": [{"a": 1, "b": 1, "inertia": "x"}]}, "manipulator.segments[0].inertia"),
+                       ({"segments": [{"a": 1, "b": 1}], "payload": float("inf")}, "manipulator.payload")):
+        with pytest.raises(InvalidParameterError) as e:
+            to.sweep({"analysis": "equilibrium", "manipulator": bad, "points": pts})
+        assert e.value.field == field

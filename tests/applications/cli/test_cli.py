@@ -275,3 +275,20 @@ def test_cli_equilibrium_certify(capsys):
     with pytest.raises(SystemExit) as exc:
         main(["equilibrium", "--fx", "-0.1", "--certify"])
     assert exc.value.code == 2 and "not allowed with argument --certify" in capsys.readouterr().err
+
+
+def test_modes_prints_the_librarys_frequencies_and_its_json_is_the_api_body(capsys, tmp_path):
+    assert main(["modes", "--mass", "0.2", "--payload", "0.1", "--dx", "1.1", "--dy", "0.2"]) == 0
+    out = capsys.readouterr().out
+    m = to.Manipulator.uniform(4, mass=0.2, payload=0.1)
+    md = to.modes(m, to.solve_equilibrium(m, 1.1, 0.2))
+    assert md.message in out and f"{md.frequencies[0]:.6g}" in out
+    path = tmp_path / "chain.json"
+    path.write_text(json.dumps(m.to_dict()))
+    assert main(["modes", "--manipulator", str(path), "--dx", "1.1", "--dy", "0.2", "--json"]) == 0
+    body = json.loads(capsys.readouterr().out)
+    assert body["frequencies"] == pytest.approx(md.frequencies.tolist(), rel=1e-12)
+    assert body["equilibrium"]["q"] == pytest.approx(md.equilibrium.q.tolist())
+    assert main(["modes", "--dx", "1"]) == 2                  # no mass: one line naming it
+    assert "no mass" in one_error_line(capsys.readouterr().err)
+    refuses_together(main, ["modes", "--mass", "1", "--dx", "1", "--fx", "0.1"], "--dx", "--fx", capsys)

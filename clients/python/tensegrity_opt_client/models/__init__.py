@@ -144,6 +144,11 @@ from .load_control_in import LoadControlIn
 from .manipulator_out import ManipulatorOut
 from .map_values_range import MapValuesRange
 from .mode_out import ModeOut
+from .modes_out import ModesOut
+from .modes_out_status import ModesOutStatus
+from .modes_out_tip import ModesOutTip
+from .modes_request import ModesRequest
+from .modes_request_tip_type_0 import ModesRequestTipType0
 from .plan_out import PlanOut
 from .plan_out_method_item import PlanOutMethodItem
 from .plan_out_objective import PlanOutObjective
@@ -422,6 +427,11 @@ __all__ = (
     "ManipulatorOut",
     "MapValuesRange",
     "ModeOut",
+    "ModesOut",
+    "ModesOutStatus",
+    "ModesOutTip",
+    "ModesRequest",
+    "ModesRequestTipType0",
     "PlanOut",
     "PlanOutMethodItem",
     "PlanOutObjective",

@@ -5,6 +5,8 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from attrs import define as _attrs_define
 
+from ..types import UNSET, Unset
+
 if TYPE_CHECKING:
     from ..models.segment_in import SegmentIn
 
@@ -18,15 +20,20 @@ class SegmentedManipulatorIn:
 
     Attributes:
         segments (list[SegmentIn]): segments from base to tip (server limit TENSEGRITY_MAX_SEGMENTS)
+        payload (float | Unset): a point mass at the tip (>= 0, default 0): it sets the vibration modes (`/v1/modes`)
+            Default: 0.0.
     """
 
     segments: list[SegmentIn]
+    payload: float | Unset = 0.0
 
     def to_dict(self) -> dict[str, Any]:
         segments = []
         for segments_item_data in self.segments:
             segments_item = segments_item_data.to_dict()
             segments.append(segments_item)
+
+        payload = self.payload
 
         field_dict: dict[str, Any] = {}
 
@@ -35,6 +42,8 @@ class SegmentedManipulatorIn:
                 "segments": segments,
             }
         )
+        if payload is not UNSET:
+            field_dict["payload"] = payload
 
         return field_dict
 
@@ -50,8 +59,11 @@ class SegmentedManipulatorIn:
 
             segments.append(segments_item)
 
+        payload = d.pop("payload", UNSET)
+
         segmented_manipulator_in = cls(
             segments=segments,
+            payload=payload,
         )
 
         return segmented_manipulator_in

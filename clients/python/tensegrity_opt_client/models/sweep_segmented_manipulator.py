@@ -5,6 +5,8 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from attrs import define as _attrs_define
 
+from ..types import UNSET, Unset
+
 if TYPE_CHECKING:
     from ..models.segment_in import SegmentIn
 
@@ -20,15 +22,20 @@ class SweepSegmentedManipulator:
         Attributes:
             segments (list[SegmentIn]): segments from base to tip ({a, b, k, L0, spring}; k and L0 a number or the pair of
                 the two springs)
+            payload (float | Unset): a point mass at the tip (>= 0, default 0): it sets the vibration modes (`/v1/modes`)
+                Default: 0.0.
     """
 
     segments: list[SegmentIn]
+    payload: float | Unset = 0.0
 
     def to_dict(self) -> dict[str, Any]:
         segments = []
         for segments_item_data in self.segments:
             segments_item = segments_item_data.to_dict()
             segments.append(segments_item)
+
+        payload = self.payload
 
         field_dict: dict[str, Any] = {}
 
@@ -37,6 +44,8 @@ class SweepSegmentedManipulator:
                 "segments": segments,
             }
         )
+        if payload is not UNSET:
+            field_dict["payload"] = payload
 
         return field_dict
 
@@ -52,8 +61,11 @@ class SweepSegmentedManipulator:
 
             segments.append(segments_item)
 
+        payload = d.pop("payload", UNSET)
+
         sweep_segmented_manipulator = cls(
             segments=segments,
+            payload=payload,
         )
 
         return sweep_segmented_manipulator

@@ -20,9 +20,16 @@ class SweepUniformManipulator:
             [spring 1, spring 2] Default: 1.0.
         a (float | Unset): triangle half-height Default: 1.0.
         b (float | Unset): triangle half-length Default: 1.0.
+        inertia (float | Unset): each triangle's rotational inertia about its centroid (>= 0, default 0; mass x
+            length^2) Default: 0.0.
         k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
+        mass (float | Unset): the segment's mass (>= 0, default 0): two equal triangles whose centroids lie on the
+            chain's axis 2b/3 from the joint; without gravity it changes no equilibrium, it sets the vibration modes
+            (`/v1/modes`) Default: 0.0.
         n (int | Unset): number of segments Default: 4.
+        payload (float | Unset): a point mass at the tip (>= 0, default 0): it sets the vibration modes (`/v1/modes`)
+            Default: 0.0.
         spring (SweepUniformManipulatorSpring | Unset): the springs' law: `linear` (the paper's model: force k (L - L0)
             at every length, a spring shorter than its rest length pushes) or `tension_only` (force k max(0, L - L0): it
             goes slack, as a real extension spring or cable). Analyses that do not honour `tension_only` refuse it (422
@@ -32,8 +39,11 @@ class SweepUniformManipulator:
     L0: float | list[float] | Unset = 1.0
     a: float | Unset = 1.0
     b: float | Unset = 1.0
+    inertia: float | Unset = 0.0
     k: float | list[float] | Unset = 1.0
+    mass: float | Unset = 0.0
     n: int | Unset = 4
+    payload: float | Unset = 0.0
     spring: SweepUniformManipulatorSpring | Unset = SweepUniformManipulatorSpring.LINEAR
 
     def to_dict(self) -> dict[str, Any]:
@@ -50,6 +60,8 @@ class SweepUniformManipulator:
 
         b = self.b
 
+        inertia = self.inertia
+
         k: float | list[float] | Unset
         if isinstance(self.k, Unset):
             k = UNSET
@@ -59,7 +71,11 @@ class SweepUniformManipulator:
         else:
             k = self.k
 
+        mass = self.mass
+
         n = self.n
+
+        payload = self.payload
 
         spring: str | Unset = UNSET
         if not isinstance(self.spring, Unset):
@@ -74,10 +90,16 @@ class SweepUniformManipulator:
             field_dict["a"] = a
         if b is not UNSET:
             field_dict["b"] = b
+        if inertia is not UNSET:
+            field_dict["inertia"] = inertia
         if k is not UNSET:
             field_dict["k"] = k
+        if mass is not UNSET:
+            field_dict["mass"] = mass
         if n is not UNSET:
             field_dict["n"] = n
+        if payload is not UNSET:
+            field_dict["payload"] = payload
         if spring is not UNSET:
             field_dict["spring"] = spring
 
@@ -106,6 +128,8 @@ class SweepUniformManipulator:
 
         b = d.pop("b", UNSET)
 
+        inertia = d.pop("inertia", UNSET)
+
         def _parse_k(data: object) -> float | list[float] | Unset:
             if isinstance(data, Unset):
                 return data
@@ -121,7 +145,11 @@ class SweepUniformManipulator:
 
         k = _parse_k(d.pop("k", UNSET))
 
+        mass = d.pop("mass", UNSET)
+
         n = d.pop("n", UNSET)
+
+        payload = d.pop("payload", UNSET)
 
         _spring = d.pop("spring", UNSET)
         spring: SweepUniformManipulatorSpring | Unset
@@ -134,8 +162,11 @@ class SweepUniformManipulator:
             L0=L0,
             a=a,
             b=b,
+            inertia=inertia,
             k=k,
+            mass=mass,
             n=n,
+            payload=payload,
             spring=spring,
         )
 

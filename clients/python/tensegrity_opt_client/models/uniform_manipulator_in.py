@@ -21,8 +21,15 @@ class UniformManipulatorIn:
             [spring 1, spring 2] Default: 1.0.
         a (float | Unset): triangle half-height (length units) Default: 1.0.
         b (float | Unset): triangle half-length (length units) Default: 1.0.
+        inertia (float | Unset): each triangle's rotational inertia about its centroid (>= 0, default 0; mass x
+            length^2) Default: 0.0.
         k (float | list[float] | Unset): spring stiffness k (force / length): one number for both springs or the pair
             [spring 1, spring 2] Default: 1.0.
+        mass (float | Unset): the segment's mass (>= 0, default 0): two equal triangles whose centroids lie on the
+            chain's axis 2b/3 from the joint; without gravity it changes no equilibrium, it sets the vibration modes
+            (`/v1/modes`) Default: 0.0.
+        payload (float | Unset): a point mass at the tip (>= 0, default 0): it sets the vibration modes (`/v1/modes`)
+            Default: 0.0.
         spring (UniformManipulatorInSpring | Unset): the springs' law: `linear` (the paper's model: force k (L - L0) at
             every length, a spring shorter than its rest length pushes) or `tension_only` (force k max(0, L - L0): it goes
             slack, as a real extension spring or cable). Analyses that do not honour `tension_only` refuse it (422
@@ -33,7 +40,10 @@ class UniformManipulatorIn:
     L0: float | list[float] | Unset = 1.0
     a: float | Unset = 1.0
     b: float | Unset = 1.0
+    inertia: float | Unset = 0.0
     k: float | list[float] | Unset = 1.0
+    mass: float | Unset = 0.0
+    payload: float | Unset = 0.0
     spring: UniformManipulatorInSpring | Unset = UniformManipulatorInSpring.LINEAR
 
     def to_dict(self) -> dict[str, Any]:
@@ -52,6 +62,8 @@ class UniformManipulatorIn:
 
         b = self.b
 
+        inertia = self.inertia
+
         k: float | list[float] | Unset
         if isinstance(self.k, Unset):
             k = UNSET
@@ -60,6 +72,10 @@ class UniformManipulatorIn:
 
         else:
             k = self.k
+
+        mass = self.mass
+
+        payload = self.payload
 
         spring: str | Unset = UNSET
         if not isinstance(self.spring, Unset):
@@ -78,8 +94,14 @@ class UniformManipulatorIn:
             field_dict["a"] = a
         if b is not UNSET:
             field_dict["b"] = b
+        if inertia is not UNSET:
+            field_dict["inertia"] = inertia
         if k is not UNSET:
             field_dict["k"] = k
+        if mass is not UNSET:
+            field_dict["mass"] = mass
+        if payload is not UNSET:
+            field_dict["payload"] = payload
         if spring is not UNSET:
             field_dict["spring"] = spring
 
@@ -109,6 +131,8 @@ class UniformManipulatorIn:
 
         b = d.pop("b", UNSET)
 
+        inertia = d.pop("inertia", UNSET)
+
         def _parse_k(data: object) -> float | list[float] | Unset:
             if isinstance(data, Unset):
                 return data
@@ -124,6 +148,10 @@ class UniformManipulatorIn:
 
         k = _parse_k(d.pop("k", UNSET))
 
+        mass = d.pop("mass", UNSET)
+
+        payload = d.pop("payload", UNSET)
+
         _spring = d.pop("spring", UNSET)
         spring: UniformManipulatorInSpring | Unset
         if isinstance(_spring, Unset):
@@ -136,7 +164,10 @@ class UniformManipulatorIn:
             L0=L0,
             a=a,
             b=b,
+            inertia=inertia,
             k=k,
+            mass=mass,
+            payload=payload,
             spring=spring,
         )
 

@@ -1,0 +1,62 @@
+"""Models of ``/v1/modes``."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from pydantic import BaseModel, ConfigDict, Field, model_validator
+
+from ..config import HARD_MAX_SEGMENTS
+from .common import Angle, ForceValue, ManipulatorIn, TipDx, TipDy
+from .equilibrium import EquilibriumOut
+
+#: The example chain of ``/v1/modes``: the paper's chain with masses.
+MASSIVE_CHAIN = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0, "mass": 0.1}
+
+
+class ModesRequest(BaseModel):
+    """The vibration modes of an equilibrium: the least-energy stable one for a tip deflection (`dx`, `dy`: the tip
+    held), or the local minimiser under a dead tip force (`fx`, `fy`: the tip loaded)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": MASSIVE_CHAIN, "dx": 1.0, "dy": 0.0}]})
+
+    manipulator: ManipulatorIn
+    dx: TipDx | None = None
+    dy: TipDy | None = None
+    fx: ForceValue | None = Field(None, description="a dead tip force along x instead of the deflection "
+                                                    "(force units; < 0 compresses)")
+    fy: ForceValue | None = Field(None, description="the dead tip force along y (force units)")
+    tip: Literal["held", "loaded"] | None = Field(
+        None, description="`held`: the modes with the tip kept where it is (tangent to the tip constraint); "
+                          "`loaded`: the tip free under its dead load. Default: as the equilibrium is posed (held "
+                          "for dx, dy; loaded for fx, fy)")
+    q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS, description="optional nearby configuration")
+
+    @model_validator(mode="after")
+    def _one_pose(self) -> "ModesRequest":
+        deflected = self.dx is not None or self.dy is not None
+        loaded = self.fx is not None or self.fy is not None
+        if deflected and loaded:
+            raise ValueError("give a tip deflection (dx, dy) or a tip force (fx, fy), not both")
+        if not deflected and not loaded:
+            raise ValueError("give a tip deflection (dx, dy) or a tip force (fx, fy)")
+        return self
+
+
+class ModesOut(BaseModel):
+    """:meth:`tensegrity_opt.Modes.to_dict`, with the equilibrium."""
+
+    success: bool
+    status: Literal["solved", "unstable", "degenerate"] = Field(
+        description="`solved`: stable, every mode vibrates; `unstable`: some w^2 < 0 (frequency null there); "
+                    "`degenerate`: some w^2 ~ 0")
+    message: str
+    frequencies: list[float | None] = Field(description="natural frequencies w (rad/s with kg, N/m, m), ascending; "
+                                                        "null where a direction does not vibrate")
+    eigenvalues: list[float] = Field(description="w^2, ascending (negative: unstable directions)")
+    shapes: list[list[float]] = Field(description="mode k's joint angles (row k), mass-normalised")
+    tip: Literal["held", "loaded"]
+    held_joints: list[bool] = Field(description="the joints held on their stop")
+    total_mass: float = Field(description="the segments' masses and the payload")
+    equilibrium: EquilibriumOut
