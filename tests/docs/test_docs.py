@@ -9,6 +9,7 @@ import tensegrity_opt.analyses.design.follower
 import tensegrity_opt.analyses.design.force_sensor
 import tensegrity_opt.analyses.design.load_capacity
 import tensegrity_opt.analyses.design.stiffness_shaping
+import tensegrity_opt.analyses.equilibria.modes
 import tensegrity_opt.analyses.paths.continuation
 import tensegrity_opt.analyses.paths.simulation
 
@@ -18,7 +19,8 @@ import tensegrity_opt.analyses.paths.simulation
                                     tensegrity_opt.analyses.design.force_sensor,
                                     tensegrity_opt.analyses.design.stiffness_shaping,
                                     tensegrity_opt.analyses.design.load_capacity,
-                                    tensegrity_opt.analyses.design.follower])
+                                    tensegrity_opt.analyses.design.follower,
+                                    tensegrity_opt.analyses.equilibria.modes])
 def test_docstring_examples(module):
     result = doctest.testmod(module, optionflags=doctest.NORMALIZE_WHITESPACE)
     assert result.attempted > 0 and result.failed == 0
