@@ -157,13 +157,15 @@ FIGURES = {f.__name__: f for f in (fig2_torque, fig4_landscape, fig4_landscape_q
                                     shapes, branch, atlas, map, spring_laws, spring_laws_shapes)}
 
 #: Every figure kind's default (``tensegrity-opt plot --help``), drawn by its command: ``default_<name>.png`` is
-#: ``tensegrity-opt plot <these arguments> -o default_<name>.png``, at the command's own resolution. ``map``,
+#: ``tensegrity-opt plot <these arguments> -o default_<name>.png``, at the command's own resolution. ``modes`` needs
+#: a mass (the paper's chain with 0.1 per segment). ``map``,
 #: ``imperfection``, ``plan`` and ``simulation`` need their inputs (the examples of ``tensegrity-opt plot KIND
 #: --help``); the branch diagram also with ``--depth 2`` and on the axes of the paper's Fig. 6.
 DEFAULTS = {
     "curve": ["curve"],
     "landscape": ["landscape"],
     "shapes": ["shapes"],
+    "modes": ["modes", "--mass", "0.1", "--dx", "1"],
     "torque": ["torque"],
     "map": ["map", "--x", "k", "0.5", "2", "16", "--y", "L0", "0.5", "2.5", "21"],
     "branch": ["branch"],

@@ -14,12 +14,8 @@ from .equilibrium import EquilibriumOut
 MASSIVE_CHAIN = {"n": 4, "a": 1.0, "b": 1.0, "k": 1.0, "L0": 1.0, "mass": 0.1}
 
 
-class ModesRequest(BaseModel):
-    """The vibration modes of an equilibrium: the least-energy stable one for a tip deflection (`dx`, `dy`: the tip
-    held), or the local minimiser under a dead tip force (`fx`, `fy`: the tip loaded)."""
-
-    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
-        "examples": [{"manipulator": MASSIVE_CHAIN, "dx": 1.0, "dy": 0.0}]})
+class _ModesFields(BaseModel):
+    """The equilibrium whose modes are asked (shared by ``/v1/modes`` and its figure)."""
 
     manipulator: ManipulatorIn
     dx: TipDx | None = None
@@ -34,7 +30,7 @@ class ModesRequest(BaseModel):
     q0: list[Angle] | None = Field(None, max_length=HARD_MAX_SEGMENTS, description="optional nearby configuration")
 
     @model_validator(mode="after")
-    def _one_pose(self) -> "ModesRequest":
+    def _one_pose(self) -> "_ModesFields":
         deflected = self.dx is not None or self.dy is not None
         loaded = self.fx is not None or self.fy is not None
         if deflected and loaded:
@@ -42,6 +38,14 @@ class ModesRequest(BaseModel):
         if not deflected and not loaded:
             raise ValueError("give a tip deflection (dx, dy) or a tip force (fx, fy)")
         return self
+
+
+class ModesRequest(_ModesFields):
+    """The vibration modes of an equilibrium: the least-energy stable one for a tip deflection (`dx`, `dy`: the tip
+    held), or the local minimiser under a dead tip force (`fx`, `fy`: the tip loaded)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": MASSIVE_CHAIN, "dx": 1.0, "dy": 0.0}]})
 
 
 class ModesOut(BaseModel):

@@ -19,6 +19,7 @@ from . import common as s
 from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
 from .control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE, _PlanFields, _SimulationFields
 from .curves import CurveDeflections
+from .modes import MASSIVE_CHAIN, _ModesFields
 from .paths import (
     MAX_BRANCHES,
     MAX_DEPTH,
@@ -115,6 +116,18 @@ class PlotShapesRequest(_PlotRequest):
     spring_colors: Literal["state", "tension"] = Field(
         "state", description="`state`: taut springs solid, pushing ones (linear law, shorter than their rest length) "
                              "red dashed, slack ones grey dotted; `tension`: every spring coloured by its force")
+
+
+class PlotModesRequest(_PlotRequest, _ModesFields):
+    """The vibration modes of an equilibrium drawn: the chain displaced along each mode both ways."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": MASSIVE_CHAIN, "dx": 1.0, "dy": 0.0}]})
+
+    excursion: float = Field(0.3, gt=0.0, le=3.0, allow_inf_nan=False,
+                             description="each mode drawn with its largest joint excursion this many rad")
+    max_panels: s.Int = Field(8, ge=1, le=MAX_PANELS, description=f"draw at most this many modes, the lowest "
+                                                                  f"(1..{MAX_PANELS})")
 
 
 class PlotAngleRange(s.RangeIn):

@@ -89,13 +89,19 @@ def stiffness_task(req: s.StiffnessRequest) -> dict[str, Any]:
     return {"matrix": numbers(K), "equilibrium": eq.to_dict()}
 
 
-def modes_task(req: s.ModesRequest) -> dict[str, Any]:
+def find_modes(req: Any) -> tuple[to.Manipulator, to.Modes]:
+    """The chain of a modes request (``/v1/modes`` or its figure) and the modes of its equilibrium."""
     m = build_manipulator(req.manipulator)
     if req.fx is not None or req.fy is not None:
         eq = to.solve_equilibrium_under_force(m, req.fx or 0.0, req.fy or 0.0, q0=optional_array(req.q0))
     else:
         eq = to.solve_equilibrium(m, req.dx or 0.0, req.dy or 0.0, q0=optional_array(req.q0))
-    return {**to.modes(m, eq, tip=req.tip).to_dict(), "equilibrium": eq.to_dict()}
+    return m, to.modes(m, eq, tip=req.tip)
+
+
+def modes_task(req: s.ModesRequest) -> dict[str, Any]:
+    _, md = find_modes(req)
+    return {**md.to_dict(), "equilibrium": md.equilibrium.to_dict()}
 
 
 def segment_torque_task(req: s.SegmentTorqueRequest) -> dict[str, Any]:

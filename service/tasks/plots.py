@@ -84,6 +84,16 @@ def plot_shapes_task(req: ps.PlotShapesRequest) -> Any:
 
 
 @_rendered
+def plot_modes_task(req: ps.PlotModesRequest) -> Any:
+    from tensegrity_opt.applications import plots
+
+    from .equilibria import find_modes
+
+    m, md = find_modes(req)
+    return plots.plot_modes(md, m, excursion=req.excursion, max_panels=req.max_panels)
+
+
+@_rendered
 def plot_torque_task(req: ps.PlotTorqueRequest) -> Any:
     from tensegrity_opt.applications import plots
 
@@ -177,6 +187,7 @@ FIGURE_TASKS: dict[str, tuple[Any, Callable[..., bytes], bool]] = {
     "curve": (ps.PlotCurveRequest, plot_curve_task, False),
     "landscape": (ps.PlotLandscapeRequest, plot_landscape_task, False),
     "shapes": (ps.PlotShapesRequest, plot_shapes_task, False),
+    "modes": (ps.PlotModesRequest, plot_modes_task, False),
     "torque": (ps.PlotTorqueRequest, plot_torque_task, False),
     "map": (ps.PlotMapRequest, plot_map_task, False),
     "branch": (ps.PlotBranchRequest, plot_branch_task, True),

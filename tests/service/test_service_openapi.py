@@ -50,14 +50,14 @@ def test_every_operation_is_documented():
                 ("/v1/atlas", "post"),
                 ("/v1/control/plan", "post"), ("/v1/control/simulate", "post"), ("/v1/control/force-estimate", "post"),
                 ("/v1/control/stiffness", "post"), ("/v1/control/load-capacity", "post"),
-                *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "torque", "map", "branch",
+                *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "modes", "torque", "map", "branch",
                                                              "limit-load", "imperfection", "boundary", "atlas", "plan",
                                                              "simulation")),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
                 ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/cancel", "post"),
                 ("/v1/jobs/{job_id}/results", "get"), ("/v1/jobs/{job_id}/atlas", "get"),
                 ("/v1/jobs/{job_id}/figure", "get"),
-                *((f"/v1/plots/{kind}/job", "post") for kind in ("curve", "landscape", "shapes", "torque", "map",
+                *((f"/v1/plots/{kind}/job", "post") for kind in ("curve", "landscape", "shapes", "modes", "torque", "map",
                                                                  "branch", "limit-load", "imperfection", "boundary",
                                                                  "atlas", "plan", "simulation"))}
     assert set(ops) == expected

@@ -34,6 +34,7 @@ BODIES = {
     "curve": {"manipulator": M4, "dx": {"start": 0.0, "stop": 0.5, "num": 6}},
     "landscape": {"manipulator": M4, "dx": 0.1, "grid": 31},
     "shapes": {"manipulator": {"n": 3}, "dx": 0.1},
+    "modes": {"manipulator": {"n": 3, "mass": 0.2}, "dx": 0.5},
     "torque": {"segments": [{"a": 1.0, "b": 1.0, "L0": 0.5}, {"a": 1.0, "b": 1.0, "k": [1.0, 2.0]}], "num": 51},
     "map": {"manipulator": M4, "param_x": "k", "values_x": {"start": 0.5, "stop": 2.0, "num": 4},
             "param_y": "L0", "values_y": [0.5, 1.0, 1.5]},

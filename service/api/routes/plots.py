@@ -250,6 +250,17 @@ FIGURES: tuple[Figure, ...] = (
             "table2": {"summary": "Table 2: the six equilibria at dx = 0.1", "value": {
                 "manipulator": _M, "dx": 0.1, "dy": 0.0}}}),
     Figure(
+        "modes", ps.PlotModesRequest, task=tasks.plot_modes_task,
+        summary="Figure: the vibration modes of an equilibrium",
+        description="One panel per mode of `/v1/modes` (at most `max_panels`, the lowest): the equilibrium's centre "
+                    "line, the chain displaced along the mode both ways (largest joint excursion `excursion` rad), "
+                    "the masses as dots, the frequency in the title. A chain without mass: 422 `invalid_parameter`, "
+                    "field `mass`. " + _FORMATS,
+        responses=image_responses("unreachable_target", "solver_failed"),
+        examples={
+            "paper": {"summary": "the paper's chain with masses 0.1 at dx = 1", "value": {
+                "manipulator": {**_M, "mass": 0.1}, "dx": 1.0, "dy": 0.0}}}),
+    Figure(
         "torque", ps.PlotTorqueRequest, task=tasks.plot_torque_task, limits=_no_chain,
         summary="Figure: torque-angle curves of segments (Fig. 2)",
         description="`M(q)` of each segment (`Segment.torque`, the data of `/v1/segment/torque`) over its physical "

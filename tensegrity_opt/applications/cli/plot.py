@@ -79,7 +79,7 @@ from .paths import (
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
-KINDS = ("curve", "landscape", "shapes", "torque", "map", "branch", "limit-load", "imperfection", "boundary", "atlas",
+KINDS = ("curve", "landscape", "shapes", "modes", "torque", "map", "branch", "limit-load", "imperfection", "boundary", "atlas",
          "plan", "simulation")
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
@@ -163,6 +163,22 @@ def _cmd_shapes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any
     fig = plots.plot_shapes(eqs, m, args.dx, args.dy, max_panels=args.max_panels, spring_colors=args.spring_colors)
     return _render(args, fig, "shapes", {"equilibria": [{"shape": e.shape, "kind": e.kind, "q": e.q.tolist()}
                                                         for e in eqs]})
+
+
+def _cmd_modes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    from ...analyses.equilibria.equilibrium import solve_equilibrium_under_force
+    from ...analyses.equilibria.least_energy import solve_equilibrium
+    from ...analyses.equilibria.modes import modes
+
+    plots = _plots()
+    if args.fx is not None or args.fy is not None:
+        eq = solve_equilibrium_under_force(m, args.fx or 0.0, args.fy or 0.0)
+    else:
+        eq = solve_equilibrium(m, args.dx, args.dy)
+    md = modes(m, eq, tip=args.tip)
+    fig = plots.plot_modes(md, m, excursion=args.excursion, max_panels=args.max_panels)
+    return _render(args, fig, "modes", {"frequencies": [v if v == v else None for v in md.frequencies.tolist()],
+                                        "status": md.status})
 
 
 def _cmd_torque(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
@@ -329,6 +345,17 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     k.add_argument("--spring-colors", choices=("state", "tension"), default="state",
                    help="state: taut solid, pushing red dashed, slack grey dotted; tension: coloured by force")
     k.set_defaults(func=_cmd_shapes)
+
+    k = kinds.add_parser("modes", help="the vibration modes of an equilibrium (needs --mass or --payload)")
+    _common(k)
+    add_deflection_options(k, number=float)
+    k.add_argument("--fx", type=float, default=None, help="a dead tip force instead of the deflection")
+    k.add_argument("--fy", type=float, default=None, help="sideways dead tip force")
+    k.add_argument("--tip", choices=("held", "loaded"), default=None,
+                   help="the modes with the tip held or free under its load (default: as the equilibrium is posed)")
+    k.add_argument("--excursion", type=float, default=0.3, help="largest joint excursion drawn (rad)")
+    k.add_argument("--max-panels", type=positive_int, default=8, help="draw at most this many modes (the lowest)")
+    k.set_defaults(func=_cmd_modes)
 
     k = kinds.add_parser("torque", help="torque-angle curves M(q) of the segments (Fig. 2)")
     _common(k)

@@ -31,6 +31,8 @@ function (result)           figure
 equilibria)
 :func:`plot_shapes`         the chain in each equilibrium: triangles, joints, both springs, coloured
 (equilibria)                by stability, titled with Table 2's label
+:func:`plot_modes`          the vibration modes of :func:`~tensegrity_opt.modes`: the chain displaced along
+(``Modes``)                 each mode both ways over its equilibrium, the masses as dots, the frequency
 :func:`plot_torque`         torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2), their
 (segments)                  equilibria marked, ``K`` and the curve's kind in the legend
 :func:`plot_map`            critical load ``P = -Fx0`` over two design parameters (blank where
@@ -108,6 +110,7 @@ from .equilibria import (
     landscape_region,
     physical_range,
     plot_landscape,
+    plot_modes,
     plot_shapes,
     plot_torque,
     segment_label,
@@ -148,7 +151,7 @@ from .style import (
     save,
 )
 
-__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_torque", "plot_map", "plot_branches", "plot_limit_load",
+__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_modes", "plot_torque", "plot_map", "plot_branches", "plot_limit_load",
            "plot_imperfection", "plot_boundary", "plot_atlas", "plot_preload_plan", "plot_simulation", "save", "render",
            "new_figure", "chain_geometry", "chain_label", "curve_breaks", "jump_kind", "jump_label", "landscape_region",
            "physical_range", "segment_label", "stiffness_text", "torque_zeros", "distinct_segments",

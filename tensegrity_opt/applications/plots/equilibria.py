@@ -11,6 +11,8 @@ import numpy as np
 
 from ...analyses.equilibria.equilibrium import Equilibrium
 from ...analyses.equilibria.landscape import Landscape, complete_configuration, landscape_margin
+from ...analyses.equilibria.modes import Modes
+from ...model.inertia import mass_points
 from ...errors import InvalidParameterError
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
@@ -27,7 +29,7 @@ from .style import (
     param_text,
 )
 
-__all__ = ["plot_landscape", "plot_shapes", "plot_torque", "landscape_region", "segment_label", "physical_range",
+__all__ = ["plot_landscape", "plot_shapes", "plot_modes", "plot_torque", "landscape_region", "segment_label", "physical_range",
            "stiffness_text", "torque_zeros", "distinct_segments"]
 
 _KIND_TEXT = {"minimum": "stable", "saddle": "saddle", "maximum": "maximum", "degenerate": "degenerate"}
@@ -303,6 +305,80 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
         cb.ax.set_gid("spring-forces")
     return fig
 
+
+
+# ---------------------------------------------------------------------------- modes
+#: The two sides of a mode in :func:`plot_modes`: ``+`` and ``-`` its (scaled) shape.
+MODE_COLORS = ("tab:blue", "tab:orange")
+
+
+def plot_modes(modes: Modes, m: Manipulator, *, excursion: float = 0.3, max_panels: int = 8,
+               panel_width: float = 3.8) -> Any:
+    """The vibration modes of :func:`~tensegrity_opt.modes`, one panel per mode (the lowest ``max_panels``).
+
+    Each panel draws the equilibrium's centre line (grey, its triangles' centroids and the payload as dots sized by
+    their mass) and the chain displaced along the mode both ways, ``q* +- s shape`` (blue ``+``, orange ``-``),
+    ``s`` scaling the largest joint excursion to ``excursion`` rad; a joint held on its stop is ringed. The title
+    gives the mode's frequency (rad/s and Hz), or says that the direction does not vibrate (``w^2 <= 0``).
+
+    Artists (``gid``): per panel ``"equilibrium"``, ``"mode-plus"``, ``"mode-minus"``, ``"masses"``, ``"stop-<i>"``;
+    the axes' gid is ``"mode-<k>"``.
+    """
+    if not (isinstance(excursion, (int, float)) and math.isfinite(excursion) and excursion > 0):
+        raise InvalidParameterError(f"excursion must be a finite number > 0, got {excursion!r}", field="excursion")
+    q0 = np.asarray(modes.equilibrium.q, dtype=float)
+    k = min(int(max_panels), modes.eigenvalues.size)
+    if k < 1:
+        raise InvalidParameterError("the equilibrium leaves no motion to draw (no mode)", field="modes")
+    cols = min(k, 3)
+    rows = math.ceil(k / cols)
+    shapes = [modes.shapes[i] * (excursion / max(float(np.abs(modes.shapes[i]).max()), 1e-300)) for i in range(k)]
+    lines = [[chain_geometry(m, q0 + sg * s)["centerline"] for sg in (1.0, -1.0)] for s in shapes]
+    base = chain_geometry(m, q0)
+    pts = np.vstack([base["centerline"], *[c for pair in lines for c in pair]])
+    pad = 0.1 * float(np.max(m.b))
+    lo, hi = pts.min(axis=0) - pad, pts.max(axis=0) + pad
+    aspect = float(np.clip((hi[1] - lo[1]) / max(hi[0] - lo[0], 1e-12), 0.2, 3.0))
+    fig = new_figure((panel_width * cols, (panel_width * aspect + 0.8) * rows + 0.5))
+    axes = np.atleast_1d(fig.subplots(rows, cols, squeeze=False)).ravel()
+    mass, joint, link, offset = mass_points(m)
+    phi = base["link_angles"][1:]
+    where = base["joints"][joint] + offset[:, None] * np.column_stack([np.cos(phi[link]), np.sin(phi[link])])
+    size = 60.0 * mass / max(float(mass.max()), 1e-300)
+    for idx in range(k):
+        ax = axes[idx]
+        ax.set_gid(f"mode-{idx}")
+        eq_line, = ax.plot(base["centerline"][:, 0], base["centerline"][:, 1], color="0.5", lw=2.0, zorder=2)
+        eq_line.set_gid("equilibrium")
+        for side, (gid, col) in enumerate(zip(("mode-plus", "mode-minus"), MODE_COLORS)):
+            ln, = ax.plot(lines[idx][side][:, 0], lines[idx][side][:, 1], color=col, lw=1.4, marker="o", ms=3,
+                          zorder=3)
+            ln.set_gid(gid)
+        sc = ax.scatter(where[mass > 0, 0], where[mass > 0, 1], s=size[mass > 0], color="black", zorder=4)
+        sc.set_gid("masses")
+        for j in np.flatnonzero(modes.held_joints):
+            ring, = ax.plot([base["joints"][j, 0]], [base["joints"][j, 1]], marker="o", ms=9, mfc="none",
+                            mec="black", mew=1.2, ls="none", zorder=5)
+            ring.set_gid(f"stop-{j}")
+        w = float(modes.frequencies[idx])
+        title = (f"mode {idx + 1}: $\\omega$ = {w:.4g} rad/s ({w / (2 * math.pi):.4g} Hz)" if math.isfinite(w)
+                 else f"direction {idx + 1}: does not vibrate ($\\omega^2$ = {modes.eigenvalues[idx]:.3g})")
+        ax.set_title(title, fontsize=8, color="black" if math.isfinite(w) else STABILITY_COLORS.get("saddle", "r"))
+        ax.set_xlim(lo[0], hi[0])
+        ax.set_ylim(lo[1], hi[1])
+        ax.set_aspect("equal", adjustable="box")
+        ax.tick_params(labelsize=7)
+        if idx % cols == 0:
+            ax.set_ylabel("$y$ (length)", fontsize=8)
+        if idx + cols >= k:
+            ax.set_xlabel("$x$ (length)", fontsize=8)
+    for ax in axes[k:]:
+        ax.set_visible(False)
+    held = "the tip held" if modes.tip == "held" else "the tip loaded (free)"
+    fig.suptitle(f"Vibration modes with {held}: {modes.eigenvalues.size} directions, {modes.status}\n"
+                 f"{chain_label(m)}; total mass {modes.total_mass:.4g}; each mode drawn both ways, largest joint "
+                 f"excursion {excursion:g} rad", fontsize=9)
+    return fig
 
 
 # ---------------------------------------------------------------------------- torque

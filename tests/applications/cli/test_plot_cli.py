@@ -35,6 +35,7 @@ def _run(argv: list[str]):
     ["plot", "curve", "--start", "0", "--stop", "0.5", "--num", "6"],
     ["plot", "landscape", "--dx", "0.1", "--grid", "31"],
     ["plot", "shapes", "--dx", "0.1", "--n", "3"],
+    ["plot", "modes", "--dx", "0.5", "--n", "3", "--mass", "0.2"],
     ["plot", "torque", "--vary", "L0", "--values", "0.5", "1", "1.5", "--num", "51"],
     ["plot", "map", "--x", "a", "0.5", "1.5", "5", "--y", "L0", "0.5", "2", "4"],
 ], ids=lambda argv: argv[1])

@@ -252,3 +252,39 @@ def test_shapes_draw_pushing_and_slack_springs_and_stops_distinctly():
     assert to_rgba(line.get_color()) == pytest.approx(want)
     with pytest.raises(to.InvalidParameterError):
         plots.plot_shapes([lin], PAPER, 2.0, spring_colors="colour")
+
+
+def test_modes_draw_each_mode_both_ways_about_the_held_tip(tmp_path):
+    """``plot_modes``: per mode the equilibrium's centre line and the chain displaced along the mode both ways, the
+    largest joint excursion ``excursion``; with the tip held both displaced tips stay at the target to second
+    order in the amplitude (the mode is tangent to the tip constraint: checked on the reference kinematics); the
+    masses are drawn where the triangles' centroids are (the mean of each triangle's vertices)."""
+    import math
+
+    import reference_tension_only as ref
+
+    m = to.Manipulator.uniform(5, mass=0.1, payload=0.2)
+    eq = to.solve_equilibrium(m, 1.5, 0.3)
+    md = to.modes(m, eq)
+    amp = 0.01
+    fig = plots.plot_modes(md, m, excursion=amp)
+    ids = check_renders(fig, tmp_path, "modes")
+    assert {"mode-0", "mode-1", "mode-2"} <= ids
+    segs = ref.segs_of(m)
+    target = ref.tip(segs, eq.q)
+    for k in range(3):
+        ax = gid(fig, f"mode-{k}")
+        base = rows(gid(ax, "equilibrium"))
+        np.testing.assert_allclose(base[-1], target, atol=1e-12)
+        for name, sign in (("mode-plus", 1.0), ("mode-minus", -1.0)):
+            line = rows(gid(ax, name))
+            s = md.shapes[k] * amp / np.abs(md.shapes[k]).max()
+            np.testing.assert_allclose(line[-1], ref.tip(segs, eq.q + sign * s), atol=1e-12)
+            assert np.linalg.norm(line[-1] - target) <= 10 * amp ** 2 * float(m.b.sum())
+        w = md.frequencies[k]
+        assert f"{w:.4g} rad/s" in ax.get_title() and f"{w / (2 * math.pi):.4g} Hz" in ax.get_title()
+        masses = gid(ax, "masses").get_offsets()
+        assert len(masses) == 2 * m.n - 1 + 1                # every moving triangle and the payload
+    with pytest.raises(InvalidParameterError) as e:
+        plots.plot_modes(md, m, excursion=-1.0)
+    assert e.value.field == "excursion"

@@ -193,6 +193,9 @@ from .plot_map_request_boundary import PlotMapRequestBoundary
 from .plot_map_request_format_type_0 import PlotMapRequestFormatType0
 from .plot_map_request_param_x import PlotMapRequestParamX
 from .plot_map_request_param_y import PlotMapRequestParamY
+from .plot_modes_request import PlotModesRequest
+from .plot_modes_request_format_type_0 import PlotModesRequestFormatType0
+from .plot_modes_request_tip_type_0 import PlotModesRequestTipType0
 from .plot_plan_request import PlotPlanRequest
 from .plot_plan_request_format_type_0 import PlotPlanRequestFormatType0
 from .plot_plan_request_objective import PlotPlanRequestObjective
@@ -476,6 +479,9 @@ __all__ = (
     "PlotMapRequestFormatType0",
     "PlotMapRequestParamX",
     "PlotMapRequestParamY",
+    "PlotModesRequest",
+    "PlotModesRequestFormatType0",
+    "PlotModesRequestTipType0",
     "PlotPlanRequest",
     "PlotPlanRequestFormatType0",
     "PlotPlanRequestObjective",
