@@ -63,3 +63,14 @@ def test_force_deflection_and_buckling_baselines(m):
     np.testing.assert_allclose(loads, to.critical_force(m).loads, rtol=1e-10)
     q0 = bl.mode_start(m, 0.1, modes[:, 0])
     assert m.in_range(q0)
+
+
+def test_the_modes_baseline_agrees_with_the_library():
+    """benchmarks/modes.py's baseline (differences of positions, angles and the numpy gradient) gives the frequencies
+    of ``to.modes`` (their accuracy: ~1e-10)."""
+    from benchmarks import modes as bm
+
+    m = to.Manipulator([to.Segment(1, 1, 1, 1.1, mass=0.3, inertia=0.02), to.Segment(0.9, 1.1, 1.2, 1.0, mass=0.2),
+                        to.Segment(1.1, 0.9, 0.8, 0.9, mass=0.4, inertia=0.01)], payload=0.1)
+    eq = to.solve_equilibrium(m, 0.6, 0.2)
+    np.testing.assert_allclose(bm._baseline(m, eq), to.modes(m, eq).frequencies, rtol=1e-8)
