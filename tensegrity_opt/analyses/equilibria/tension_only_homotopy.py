@@ -17,21 +17,23 @@ agree on the closed intervals: a spring at ``L = L0`` carries nothing under both
 2. **Pruning** (which patterns cannot occur). A pattern can hold an equilibrium only if some configuration in its box
    (each free joint in one of its option's intervals, a stop a point) puts the tip on the target *and* some tip force
    ``F`` balances it: each free joint's ``dE/dq_j = r_j x F`` (``r_j`` from the joint to the tip) and each held
-   joint's contact torque ``>= 0``. Two tests, both sound (they only drop a pattern with no such configuration):
+   joint's contact torque ``>= 0``. The test is a branch and bound over the box (:func:`_may_balance`, sound: it
+   drops a pattern only when no box of it can hold such a configuration). All patterns' boxes are bisected level by
+   level together, up to :data:`BOX_BUDGET` boxes a pattern. On each box: ``r_j`` enclosed from the tip's side (the
+   links after ``j``) and from the base's (the target minus the joint's position), the two intersected (empty: no
+   tip on the target); ``dE/dq_j`` bounded exactly (:class:`_TorqueTables`: its values at the box's ends and at its
+   critical points inside, plus a rounding margin); and, in each sign quadrant of ``F``, the extreme moments over
+   the box are linear in ``F``, so "some ``F``" is a 2-D linear feasibility problem (:func:`_force_exists`,
+   Fourier-Motzkin). A pattern all of whose boxes fail is dropped; one with a box left when its budget is spent is
+   solved, and so is one where Newton's method from one of its boxes lands on a root inside it (that can only keep
+   a pattern).
 
-   * the distance from joint 1 to the tip, sampled over the box with a Lipschitz margin (:func:`_distance_may_reach`);
-   * a branch and bound over the box (:func:`_may_balance`: all patterns' boxes bisected level by level together,
-     up to :data:`BOX_BUDGET` boxes a pattern). On each box: ``r_j`` enclosed from the tip's side (the links after
-     ``j``) and from the base's (the target minus the joint's position), the two intersected (empty: no tip on the
-     target); ``dE/dq_j`` bounded from a table with a Lipschitz margin (:class:`_TorqueTables`); and, in each sign
-     quadrant of ``F``, the extreme moments over the box are linear in ``F``, so "some ``F``" is a 2-D linear
-     feasibility problem (:func:`_force_exists`, Fourier-Motzkin). A pattern all of whose boxes fail is dropped; one
-     with a box left when its budget is spent is solved.
-
-   On the benchmark's n = 4 targets this leaves 8-15 of 37-49 four-free-joint patterns (those that hold an
-   equilibrium among them). Patterns with fewer than two free joints meet a target only by coincidence (a rigid
-   pose); each left is checked directly (the tip of the rigid pose or the circle of its one free joint) and one that
-   meets the target leaves the set uncertified (its tip force is not determined).
+   On the benchmark's n = 4 targets the four-free-joint patterns kept are exactly those that hold an equilibrium
+   (9, 8 and 5 of 37, 37 and 49). Patterns with fewer than two free joints meet a target only by coincidence (a rigid
+   pose); one the test keeps is checked directly (the tip of the rigid pose or the circle of its one free joint) and
+   one that meets the target leaves the set uncertified (its tip force is not determined); one whose pose touches
+   the target but which no tip force can balance (a contact torque would be negative) is dropped by the test, so it
+   no longer leaves the set uncertified.
 3. **One system per pattern.** With the joints on stops fixed, the links between two consecutive free joints fold into
    one rigid *complex* link (``mu = sum l_j e^{i sigma_j}``, ``sigma_j`` the stop angles before link ``j``) and the
    links before the first free joint into the target: the displacement system of a chain of the free joints
@@ -151,7 +153,8 @@ _TWO_PI = 2.0 * math.pi
 
 
 def _cos_ranges(lo: np.ndarray, hi: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The range of ``cos`` over each ``[lo, hi]`` (elementwise, ``hi - lo < 2 pi``; exact up to rounding)."""
+    """The range of ``cos`` over each ``[lo, hi]`` (elementwise; exact up to rounding, ``[-1, 1]`` once the interval
+    spans a period)."""
     a, b = np.cos(lo), np.cos(hi)
     top = np.where(np.ceil(lo / _TWO_PI) * _TWO_PI <= hi, 1.0, np.maximum(a, b))
     bot = np.where(np.ceil((lo - math.pi) / _TWO_PI) * _TWO_PI + math.pi <= hi, -1.0, np.minimum(a, b))
@@ -162,8 +165,8 @@ class _TorqueTables:
     """Exact bounds of each joint's ``dE/dq`` under each taut/slack state over any ``[lo, hi]``: its values at the
     ends and at its critical points inside. With ``u = beta + q/2``, ``v = beta - q/2`` a taut spring adds
     ``-k1 c (c sin 2u - L10 sin u)`` (spring 1) or ``k2 c (c sin 2v - L20 sin v)`` (spring 2); the derivative's zeros
-    are the unit roots of a quartic in ``e^{i q/2}`` (at most four; a root near the circle is kept: an extra
-    candidate only widens the bound)."""
+    are the unit roots of a quartic in ``e^{i q/2}`` (at most four; a root within 1e-3 of the circle is kept: a
+    multiple root may come off it by ~eps^(1/3), and an extra candidate only widens the bound)."""
 
     STATES = ((True, True), (True, False), (False, True), (False, False))
 
@@ -180,7 +183,7 @@ class _TorqueTables:
                 qs = np.zeros(0)
                 if max(abs(v) for v in poly) > 0.0:
                     z = np.roots(poly)
-                    z = z[np.abs(np.abs(z) - 1.0) < 1e-6]
+                    z = z[np.abs(np.abs(z) - 1.0) < 1e-3]       # generous: an extra candidate only widens
                     qs = 2.0 * np.angle(z)
                     qs = qs[np.abs(qs) <= lim + 1e-6]
                 crit.append(np.pad(qs, (0, 4 - qs.size), constant_values=np.nan))
@@ -298,7 +301,7 @@ def _boxes_pass(m: Manipulator, target: np.ndarray, lo: np.ndarray, hi: np.ndarr
 
 
 def _newton_finds(m: Manipulator, target: np.ndarray, q: np.ndarray, table: np.ndarray, side: np.ndarray,
-                  tables: _TorqueTables, iterations: int = 12) -> tuple[np.ndarray, np.ndarray]:
+                  tables: _TorqueTables, iterations: int = 12) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Newton's method on each row's pattern system (unknowns ``q`` and the tip force ``F``; a held joint's row
     ``q_j = its stop``) from the configurations ``q`` (B, n). Returns the end points and which converged (residual
     below ``1e-10`` of the chain's scales) and each joint's moment ``r_j x F`` there; where they lie (and the contact
