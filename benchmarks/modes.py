@@ -40,7 +40,8 @@ def _baseline(m: to.Manipulator, eq) -> np.ndarray:
     for j in range(n):
         e = np.zeros(n)
         e[j] = h
-        K[:, j] = ((m.gradient(q + e) - m.jacobian(q + e).T @ F) - (m.gradient(q - e) - m.jacobian(q - e).T @ F)) / (2 * h)
+        up, down = m.gradient(q + e) - m.jacobian(q + e).T @ F, m.gradient(q - e) - m.jacobian(q - e).T @ F
+        K[:, j] = (up - down) / (2 * h)
         plus, minus = rd._bodies(segs, m.payload, q + e), rd._bodies(segs, m.payload, q - e)
         pos.append((np.array([b[2] for b in plus]) - np.array([b[2] for b in minus])) / (2 * h))
         ang.append((np.array([b[3] for b in plus]) - np.array([b[3] for b in minus])) / (2 * h))

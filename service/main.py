@@ -55,8 +55,8 @@ from .responses import SafeJSONResponse
 
 #: Routers behind the API key (when keys are configured: the API, its version and metrics; the OpenAPI document
 #: too, :mod:`service.api.swagger`) and the open ones (health, the page).
-API_ROUTERS = (equilibrium, buckling, curves, stiffness, modes, segment, landscape, batch, design, paths, atlas, control,
-               plots, jobs_routes, ops)
+API_ROUTERS = (equilibrium, buckling, curves, stiffness, modes, segment, landscape, batch, design, paths, atlas,
+               control, plots, jobs_routes, ops)
 OPEN_ROUTERS = (health, web)
 #: The WebSocket routes: they check the API key themselves (a FastAPI dependency on ``Request`` does not
 #: apply to a WebSocket; the key may also come as ``?api_key=``, which browsers can send).

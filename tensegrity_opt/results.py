@@ -59,9 +59,9 @@ from .analyses.design.strongest import Design
 from .analyses.equilibria.all_equilibria import EquilibriumSet
 from .analyses.equilibria.buckling import Buckling, Mode
 from .analyses.equilibria.equilibrium import Equilibrium
-from .analyses.equilibria.modes import Modes
 from .analyses.equilibria.landscape import Landscape
 from .analyses.equilibria.lower_bound import EnergyBound
+from .analyses.equilibria.modes import Modes
 from .analyses.paths.atlas import AtlasCrossing, AtlasTarget, StabilityAtlas
 from .analyses.paths.boundaries import BoundaryPoint, StabilityBoundary
 from .analyses.paths.branches import Branch
@@ -78,7 +78,8 @@ from .outcome import Outcome, SolverInfo
 
 __all__ = [
     "Outcome", "SolverInfo",
-    "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "EnergyBound", "Buckling", "Mode", "Landscape", "Modes",
+    "Equilibrium", "EquilibriumSet", "IntervalCertificate", "RootBox", "EnergyBound", "Buckling", "Mode", "Landscape",
+    "Modes",
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent", "Transition",

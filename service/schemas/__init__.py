@@ -133,6 +133,7 @@ from .jobs import (
     SweepUniformManipulator,
 )
 from .landscape import EnergyLandscapeOut, EnergyLandscapeRequest
+from .modes import ModesOut, ModesRequest
 from .ops import Health, JobsHealth, KernelsOut, Limits, ProcessesState, Ready, VersionOut
 from .paths import (
     BifurcationDiagramOut,
@@ -173,14 +174,13 @@ from .plots import (
     PlotLandscapeRequest,
     PlotLimitLoadRequest,
     PlotMapRequest,
-    PlotPlanRequest,
     PlotModesRequest,
+    PlotPlanRequest,
     PlotShapesRequest,
     PlotSimulationRequest,
     PlotTorqueRequest,
 )
 from .segment import SegmentTorqueOut, SegmentTorqueRequest
-from .modes import ModesOut, ModesRequest
 from .stiffness import StiffnessOut, StiffnessRequest
 from .stream import (
     MODES,

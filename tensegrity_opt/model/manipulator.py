@@ -406,8 +406,12 @@ class Manipulator:
 
     def mirrored(self) -> "Manipulator":
         """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""
-        return Manipulator((s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments), self.payload)
+        return self.with_segments(s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments)
+
+    def with_segments(self, segments: Iterable[Segment]) -> "Manipulator":
+        """The same chain's loads (its ``payload``) on new ``segments``: what a design or a preload change returns."""
+        return Manipulator(segments, self.payload)
 
     def with_spring(self, spring: str) -> "Manipulator":
         """The same chain with every segment's spring law set to ``spring``."""
-        return Manipulator((s.replace(spring=spring) for s in self.segments), self.payload)
+        return self.with_segments(s.replace(spring=spring) for s in self.segments)

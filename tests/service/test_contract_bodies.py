@@ -28,7 +28,8 @@ BODIES = {
 #: 200 bodies of POST /v1 that are compositions, not one library result (their parts carry the contract: a batch's
 #: items, a diagram's branches, a stiffness answer's equilibrium) or a plain evaluation (the segment's torque table),
 #: or a job's record.
-COMPOSITIONS = {"BatchOut", "BifurcationDiagramOut", "StiffnessOut", "ModesOut", "SegmentTorqueOut", "JobCreated", "JobSummary"}
+COMPOSITIONS = {"BatchOut", "BifurcationDiagramOut", "StiffnessOut", "ModesOut",
+                "SegmentTorqueOut", "JobCreated", "JobSummary"}
 
 
 def _status_values(schema: dict) -> set[str]:

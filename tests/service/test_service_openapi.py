@@ -34,6 +34,10 @@ def test_cli_prints_the_spec(monkeypatch):
     assert out == SPEC.read_text(encoding="utf-8")
 
 
+FIGURE_KINDS = ("curve", "landscape", "shapes", "modes", "torque", "map", "branch", "limit-load", "imperfection",
+                "boundary", "atlas", "plan", "simulation")
+
+
 def test_every_operation_is_documented():
     doc = json.loads(SPEC.read_text(encoding="utf-8"))
     ops = {(path, method): op for path, item in doc["paths"].items() for method, op in item.items()}
@@ -50,16 +54,12 @@ def test_every_operation_is_documented():
                 ("/v1/atlas", "post"),
                 ("/v1/control/plan", "post"), ("/v1/control/simulate", "post"), ("/v1/control/force-estimate", "post"),
                 ("/v1/control/stiffness", "post"), ("/v1/control/load-capacity", "post"),
-                *((f"/v1/plots/{kind}", "post") for kind in ("curve", "landscape", "shapes", "modes", "torque", "map", "branch",
-                                                             "limit-load", "imperfection", "boundary", "atlas", "plan",
-                                                             "simulation")),
+                *((f"/v1/plots/{kind}", "post") for kind in FIGURE_KINDS),
                 ("/v1/jobs", "post"), ("/v1/jobs", "get"), ("/v1/jobs/{job_id}", "get"),
                 ("/v1/jobs/{job_id}", "delete"), ("/v1/jobs/{job_id}/cancel", "post"),
                 ("/v1/jobs/{job_id}/results", "get"), ("/v1/jobs/{job_id}/atlas", "get"),
                 ("/v1/jobs/{job_id}/figure", "get"),
-                *((f"/v1/plots/{kind}/job", "post") for kind in ("curve", "landscape", "shapes", "modes", "torque", "map",
-                                                                 "branch", "limit-load", "imperfection", "boundary",
-                                                                 "atlas", "plan", "simulation"))}
+                *((f"/v1/plots/{kind}/job", "post") for kind in FIGURE_KINDS)}
     assert set(ops) == expected
     ids = [op["operationId"] for op in ops.values()]
     assert len(ids) == len(set(ids))

@@ -19,9 +19,8 @@ never ``tensegrity_opt``. The model, rebuilt from the triangles' vertices:
 from __future__ import annotations
 
 import numpy as np
-import scipy.linalg as sla
-
 import reference_tension_only as ref
+import scipy.linalg as sla
 
 H = 1e-3
 _STENCIL = ((-2, 1.0 / 12.0), (-1, -8.0 / 12.0), (1, 8.0 / 12.0), (2, -1.0 / 12.0))

@@ -181,7 +181,7 @@ class PreloadFollower:
                 segments.append(seg.replace(L0=(float(l1), float(l2))))
             except InvalidParameterError as exc:
                 raise InvalidParameterError(exc.message, field=f"rest_lengths[{i}]") from None
-        return Manipulator(segments)
+        return self.m.with_segments(segments)
 
     def step(self, rest_lengths, load=None) -> FollowerStep:
         """The equilibrium the arm reaches along the transition from the current state to the commanded

@@ -205,7 +205,7 @@ def _pose(m: Manipulator, pose, base):
     if arr.shape == (m.n, 2):
         if not np.all(np.isfinite(arr)) or np.any(arr <= 0):
             raise InvalidParameterError("rest lengths must be finite and > 0", field="pose")
-        mm = Manipulator(s.replace(L0=(float(l1), float(l2))) for s, (l1, l2) in zip(m.segments, arr))
+        mm = m.with_segments(s.replace(L0=(float(l1), float(l2))) for s, (l1, l2) in zip(m.segments, arr))
         return mm, None, base
     if arr.shape == (m.n,):
         try:

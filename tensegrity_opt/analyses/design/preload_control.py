@@ -488,8 +488,8 @@ class PreloadController:
         """The chain with rest lengths ``ell`` (segment-major 2n; default the current ones); ``linear``: its
         linear-law twin, which the design numerics solve."""
         ell = self.ell if ell is None else ell
-        return Manipulator(s.replace(L0=(float(ell[2 * i]), float(ell[2 * i + 1])))
-                           for i, s in enumerate((self.lin if linear else self.m).segments))
+        return self.m.with_segments(s.replace(L0=(float(ell[2 * i]), float(ell[2 * i + 1])))
+                                    for i, s in enumerate((self.lin if linear else self.m).segments))
 
     def _margin_energy(self, ell: np.ndarray, q: np.ndarray, F: np.ndarray) -> tuple[float, float]:
         """``(stability margin, elastic energy)`` of the arm at ``q`` with rest lengths ``ell`` under ``F``, under

@@ -194,8 +194,8 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
     if law is m:
         return d
     # the starting critical load is the arm's as built: undefined (null) where a spring is slack at straight
-    return replace(d, manipulator=Manipulator(s.replace(spring=t.spring)
-                                              for s, t in zip(d.manipulator.segments, law.segments)),
+    return replace(d, manipulator=law.with_segments(s.replace(spring=t.spring)
+                                                    for s, t in zip(d.manipulator.segments, law.segments)),
                    initial_critical_force=_safe_critical(law, boundary))
 
 
@@ -258,7 +258,7 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
         with _time_limit(timeout):
             d = _preloads_for_pose(m.with_spring("linear"), target, load, objective, margin, True, bounds, end_angle,
                                    start)
-        built = Manipulator(s.replace(spring=t.spring) for s, t in zip(d.manipulator.segments, m.segments))
+        built = m.with_segments(s.replace(spring=t.spring) for s, t in zip(d.manipulator.segments, m.segments))
         return replace(d, manipulator=built, equilibrium=replace(d.equilibrium, springs=built.springs))
     with _time_limit(timeout):
         return _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_angle, start)
@@ -301,7 +301,7 @@ def _preloads_for_pose(m, target, load, objective, margin, taut, bounds, end_ang
     if not res.success:
         raise InfeasibleDesignError(f"IPOPT found no feasible preloads ({res.status})", status=res.status,
                                     best=best)
-    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
+    m_new = m.with_segments(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
     # the forward solve from the optimiser's q: Newton (IPOPT's own descent from an exact minimum near a joint
     # bound can be pushed into another well by its barrier), IPOPT's descent where Newton does not settle
     eq = forward_check(m_new, load, q, target, settle=True, status=res.status, best=best)
@@ -334,7 +334,7 @@ def solve_pose_nlp(m: Manipulator, target, load, objective: str, margin: float, 
     springs = rest_lengths(n)
     L0nom = springs.pack(L10=m.L1_0, L20=m.L2_0)
     L0start = springs.unpack(np.clip(L0nom if ell0 is None else ell0, lo, hi))
-    m_start = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start["L10"], L0start["L20"]))
+    m_start = m.with_segments(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L0start["L10"], L0start["L20"]))
     _, _, Hphi, _, _ = chain_solver(m_start).evaluate(q0, load)
     Hq = _relative(Hphi)
     mu0 = margin if objective != "margin" else max(margin, float(np.linalg.eigvalsh(Hq)[0]))

@@ -583,7 +583,7 @@ def _verified(sh: _Shaper, res) -> StiffnessDesign:
     kb, eb, Kd, Ks = sh.kb, sh.eb, sh.Kd, sh.Ks
     best = sh.best(res.x)
     q, L10, L20 = sh.pose(res.x)
-    m_new = Manipulator(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
+    m_new = m.with_segments(s.replace(L0=(l1, l2)) for s, l1, l2 in zip(m.segments, L10, L20))
     eq = forward_check(m_new, load, q, target, settle=False, status=res.status, best=best)
     try:
         K = cartesian_stiffness(m_new, eq)

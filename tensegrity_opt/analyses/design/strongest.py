@@ -156,8 +156,11 @@ def _symmetric_columns(m: Manipulator) -> dict[str, np.ndarray]:
     return {"a": m.a.copy(), "b": m.b.copy(), "k": m.k1.copy(), "L0": m.L1_0.copy()}
 
 
-def _build(cols: Mapping[str, np.ndarray]) -> Manipulator:
-    return Manipulator(Segment(a, b, k, L0) for a, b, k, L0 in zip(cols["a"], cols["b"], cols["k"], cols["L0"]))
+def _build(cols: Mapping[str, np.ndarray], like: Manipulator) -> Manipulator:
+    """The chain of the design columns, with ``like``'s masses and payload (a design changes the geometry and the
+    springs, not what the arm carries)."""
+    return like.with_segments(Segment(a, b, k, L0, mass=s.mass, inertia=s.inertia)
+                              for a, b, k, L0, s in zip(cols["a"], cols["b"], cols["k"], cols["L0"], like.segments))
 
 
 def _invalid_design(m: Manipulator, boundary: str, vary: Iterable[str], exc: TensegrityError,
@@ -306,7 +309,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
             start[name] = np.maximum(start[name] * total / start[name].sum(), lo[name])
     nlp = buckling_design_nlp(n, boundary == "guided")
     # Initial load and Cholesky factor.
-    m_start = _build(start)
+    m_start = _build(start, m)
     K, G, S0 = straight_matrices(m_start)
     Z = _basis(S0, boundary == "guided", n)
     if required is None:
@@ -350,7 +353,7 @@ def buckling_design(m: Manipulator, vary: Iterable[str], bounds: Mapping | None,
         xv[x[name]] = cols[name]
     P_opt = float(v["P"])
     try:
-        m_opt = _build(cols)
+        m_opt = _build(cols, m)
         bk = critical_force(m_opt, boundary)
     except TensegrityError as exc:
         raise _invalid_design(m, boundary, vary, exc, res.status) from exc

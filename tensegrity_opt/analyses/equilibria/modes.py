@@ -27,7 +27,7 @@ from ...errors import InvalidParameterError
 from ...model.inertia import mass_matrix, total_mass
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
-from ...serialize import numbers, nullables
+from ...serialize import nullables, numbers
 from .equilibrium import Equilibrium
 
 __all__ = ["Modes", "modes", "TIPS"]
@@ -153,8 +153,10 @@ def modes(m: Manipulator, equilibrium: Equilibrium, *, tip: str | None = None) -
     Raises
     ------
     InvalidParameterError
-        (a ``ValueError``) ``field="mass"`` when the chain has no mass or none that moves on some allowed motion;
-        ``field="equilibrium"`` when its ``q`` does not fit ``m``; ``field="tip"`` for an unknown ``tip``.
+        (a ``ValueError``) ``field="mass"`` when the chain has no mass, none that moves on some allowed motion, or
+        masses too small or large against the stiffnesses to resolve in double precision; ``field="equilibrium"``
+        when its ``q`` does not fit ``m``; ``field="tip"`` for an unknown ``tip``, or a held tip where its
+        constraint is singular (the fully extended chain: the held arm cannot move).
 
     Examples
     --------
@@ -180,7 +182,14 @@ def modes(m: Manipulator, equilibrium: Equilibrium, *, tip: str | None = None) -
     held = np.asarray(equilibrium.at_stop, dtype=bool)
     rows = [np.eye(m.n)[held]]
     if tip == "held":
-        rows.append(m.jacobian(q))
+        J = m.jacobian(q)
+        s = np.linalg.svd(J, compute_uv=False)
+        if s[-1] <= 1e-9 * max(float(s[0]), float(m.link_lengths.sum())):
+            raise InvalidParameterError(
+                "the tip is held where its constraint is singular (the chain's joints in line with the tip, e.g. "
+                "fully extended): the held arm cannot move there, so it has no modes; ask for tip='loaded'",
+                field="tip")
+        rows.append(J)
     C = np.vstack(rows)
     if C.shape[0]:
         Q, R = np.linalg.qr(C.T, mode="complete")
@@ -193,13 +202,19 @@ def modes(m: Manipulator, equilibrium: Equilibrium, *, tip: str | None = None) -
         w, V = np.zeros(0), np.zeros((0, 0))
     else:
         mw = np.linalg.eigvalsh(Mr)
-        if mw[0] <= 1e-12 * mw[-1]:
+        if not mw[0] > 1e-12 * float(np.abs(M).max()):          # relative to the whole chain's (NaN: refused too)
             raise InvalidParameterError(
                 "the mass matrix is singular on the arm's allowed motions: some link carries no mass that moves "
                 "(give each segment a mass, or the tip a payload)", field="mass")
         w, V = sla.eigh(Kr, Mr)
+        if not (np.all(np.isfinite(w)) and np.all(np.isfinite(V))):
+            raise InvalidParameterError("the masses are too small or too large against the stiffnesses for the modes "
+                                        "to be resolved in double precision", field="mass")
     shapes = (Z @ V).T
-    tol = ZERO_TOL * max(float(np.abs(w).max(initial=0.0)), 1e-300)
+    # zero relative to the stiffness scale (torque / rad) over the largest reduced mass, not only to the largest w^2:
+    # a chain marginal in every direction has every w^2 ~ 0
+    scale = m.torque_scale / float(np.linalg.eigvalsh(Mr)[-1]) if Z.shape[1] else 1.0
+    tol = ZERO_TOL * max(float(np.abs(w).max(initial=0.0)), scale)
     status = "unstable" if np.any(w < -tol) else "degenerate" if np.any(np.abs(w) <= tol) else "solved"
     freq = np.where(w > tol, np.sqrt(np.maximum(w, 0.0)), np.nan)
     return Modes(freq, w, shapes, M, K, tip, held, total_mass(m), equilibrium, status)

@@ -201,7 +201,8 @@ class _TorqueTables:
         """``d^2 E / dq^2`` of the tables ``table`` at ``q``."""
         k1, k2, L10, L20, c, beta = (row[table] for row in self.coef)
         u, v = beta + 0.5 * q, beta - 0.5 * q
-        return -k1 * c * (c * np.cos(2 * u) - 0.5 * L10 * np.cos(u)) - k2 * c * (c * np.cos(2 * v) - 0.5 * L20 * np.cos(v))
+        return (-k1 * c * (c * np.cos(2 * u) - 0.5 * L10 * np.cos(u))
+                - k2 * c * (c * np.cos(2 * v) - 0.5 * L20 * np.cos(v)))
 
     def index(self, j: int, taut: tuple[bool, bool]) -> int:
         return 4 * j + self.STATES.index(tuple(bool(t) for t in taut))
@@ -295,7 +296,8 @@ def _boxes_pass(m: Manipulator, target: np.ndarray, lo: np.ndarray, hi: np.ndarr
     A, Bm, T = np.stack(A, axis=1), np.stack(Bm, axis=1), np.stack(T, axis=1)
     feasible = np.zeros(nb, dtype=bool)
     for s in range(0, nb, BOX_CHUNK):
-        feasible[s:s + BOX_CHUNK] = _force_exists(A[s:s + BOX_CHUNK], Bm[s:s + BOX_CHUNK], T[s:s + BOX_CHUNK]).any(axis=1)
+        part = slice(s, s + BOX_CHUNK)
+        feasible[part] = _force_exists(A[part], Bm[part], T[part]).any(axis=1)
     ok[rows] = feasible
     return ok
 

@@ -190,7 +190,7 @@ def chain_with(m: Manipulator, P: np.ndarray) -> Manipulator:
     """``m`` with the rest lengths ``P`` (n, 2) (``m`` itself when they are its own)."""
     if np.array_equal(P[:, 0], m.L1_0) and np.array_equal(P[:, 1], m.L2_0):
         return m
-    return Manipulator(s.replace(L0=(float(P[i, 0]), float(P[i, 1]))) for i, s in enumerate(m.segments))
+    return m.with_segments(s.replace(L0=(float(P[i, 0]), float(P[i, 1]))) for i, s in enumerate(m.segments))
 
 
 def margin_at(prob: PathProblem, x: np.ndarray) -> float:

@@ -79,8 +79,8 @@ from .paths import (
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
-KINDS = ("curve", "landscape", "shapes", "modes", "torque", "map", "branch", "limit-load", "imperfection", "boundary", "atlas",
-         "plan", "simulation")
+KINDS = ("curve", "landscape", "shapes", "modes", "torque", "map", "branch", "limit-load", "imperfection", "boundary",
+         "atlas", "plan", "simulation")
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
                   "direction), phi (end angle q1 + ... + qn), energy, s (arclength) or q1..qn (a joint angle)")

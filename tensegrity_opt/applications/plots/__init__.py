@@ -151,7 +151,8 @@ from .style import (
     save,
 )
 
-__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_modes", "plot_torque", "plot_map", "plot_branches", "plot_limit_load",
+__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_modes", "plot_torque", "plot_map", "plot_branches",
+           "plot_limit_load",
            "plot_imperfection", "plot_boundary", "plot_atlas", "plot_preload_plan", "plot_simulation", "save", "render",
            "new_figure", "chain_geometry", "chain_label", "curve_breaks", "jump_kind", "jump_label", "landscape_region",
            "physical_range", "segment_label", "stiffness_text", "torque_zeros", "distinct_segments",

@@ -12,8 +12,8 @@ import numpy as np
 from ...analyses.equilibria.equilibrium import Equilibrium
 from ...analyses.equilibria.landscape import Landscape, complete_configuration, landscape_margin
 from ...analyses.equilibria.modes import Modes
-from ...model.inertia import mass_points
 from ...errors import InvalidParameterError
+from ...model.inertia import mass_points
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from .geometry import chain_geometry
@@ -29,7 +29,8 @@ from .style import (
     param_text,
 )
 
-__all__ = ["plot_landscape", "plot_shapes", "plot_modes", "plot_torque", "landscape_region", "segment_label", "physical_range",
+__all__ = ["plot_landscape", "plot_shapes", "plot_modes", "plot_torque", "landscape_region", "segment_label",
+           "physical_range",
            "stiffness_text", "torque_zeros", "distinct_segments"]
 
 _KIND_TEXT = {"minimum": "stable", "saddle": "saddle", "maximum": "maximum", "degenerate": "degenerate"}

@@ -149,7 +149,7 @@ def critical_load_map(m: Manipulator, param_x: str, values_x: Any, param_y: str,
     P = np.full((ys.size, xs.size), np.nan)
     for iy, y in enumerate(ys):
         for ix, x in enumerate(xs):
-            mm = Manipulator([s.replace(**{param_x: float(x), param_y: float(y)}) for s in m.segments])
+            mm = m.with_segments([s.replace(**{param_x: float(x), param_y: float(y)}) for s in m.segments])
             try:
                 P[iy, ix] = -critical_force(mm, boundary).force
             except (TensegrityError, ArithmeticError, np.linalg.LinAlgError):

@@ -204,3 +204,38 @@ def test_a_sweep_spec_carries_the_masses_and_its_rows_are_the_massless_chains():
         with pytest.raises(InvalidParameterError) as e:
             to.sweep({"analysis": "equilibrium", "manipulator": bad, "points": pts})
         assert e.value.field == field
+
+
+def test_modes_refuse_or_flag_the_review_cases():
+    """A review's reproducers: a payload that cannot move with the tip held (the reduced mass matrix is rounding
+    noise), a chain marginal in every direction (K = 1e-16: every w^2 ~ 0), the fully extended chain with its tip
+    held (the tip constraint is singular: the held arm cannot move), masses too small to resolve."""
+    m = to.Manipulator.uniform(4, payload=1.0)
+    with pytest.raises(InvalidParameterError) as e:
+        to.modes(m, to.solve_equilibrium(m, 0.5))
+    assert e.value.field == "mass"
+    flat = to.Manipulator.uniform(4, a=0.5, L0=1.5, mass=1.0)
+    assert abs(flat.segments[0].stiffness) < 1e-12
+    md = to.modes(flat, to.solve_equilibrium_under_force(flat, 0.0, 0.0))
+    assert md.status == "degenerate" and not md.success and np.isnan(md.frequencies).all()
+    straight = to.Manipulator.uniform(4, mass=1.0)
+    eq = to.solve_equilibrium(straight, 0.0)
+    with pytest.raises(InvalidParameterError) as e:
+        to.modes(straight, eq)
+    assert e.value.field == "tip"
+    assert to.modes(straight, eq, tip="loaded").eigenvalues.size == 4
+    tiny = to.Manipulator.uniform(4, mass=1e-310)
+    with pytest.raises(InvalidParameterError) as e:
+        to.modes(tiny, to.solve_equilibrium(tiny, 0.5))
+    assert e.value.field == "mass"
+
+
+def test_a_design_keeps_what_the_arm_carries():
+    """A design changes the geometry or the springs, not the masses: the designed chain of every design verb keeps
+    each segment's mass and inertia and the payload (a review found them dropped)."""
+    m = to.Manipulator.uniform(4, mass=0.2, inertia=0.01, payload=0.5)
+    designs = [to.preloads_for_critical_force(m, 0.6).manipulator,
+               to.preloads_for_pose(m, m.tip(np.array([0.1, -0.1, 0.05, 0.0]))).manipulator,
+               to.maximize_critical_force(m).manipulator]
+    for d in designs:
+        assert d.payload == 0.5 and all(s.mass == 0.2 and s.inertia == 0.01 for s in d.segments)
