@@ -716,6 +716,7 @@ def _patterns_of(m, q, stops):
     return [tuple(per[j][i] for j, i in enumerate(idx)) for idx in np.ndindex(*[len(p) for p in per])]
 
 
+@pytest.mark.slow_cases(keep=2)
 @pytest.mark.parametrize("family", FAMILIES)
 @pytest.mark.parametrize("spring", ["tension_only", "linear"])
 def test_a_box_around_an_equilibrium_passes_the_pattern_test(family, spring):

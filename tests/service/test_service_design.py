@@ -57,6 +57,7 @@ def test_preloads_for_load(client):
     assert -got["critical_force"] >= 0.7 * (1 - 1e-6)
 
 
+@pytest.mark.slow
 def test_preloads_for_load_infeasible_answers_422_with_best(client):
     r = client.post("/v1/design/preloads-for-load", json={"manipulator": PAPER, "required": 10.0})
     assert r.status_code == 422

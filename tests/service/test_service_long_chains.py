@@ -35,6 +35,13 @@ def _chain(n: int, form: str) -> dict[str, Any]:
     return {"segments": [{"a": 1.0, "b": 1.0, "k": [1, 2]}] * n}
 
 
+def _massive(m: dict[str, Any]) -> dict[str, Any]:
+    """The chain ``m`` with a mass on every segment (either form)."""
+    if "segments" in m:
+        return {**m, "segments": [{**seg, "mass": 0.1} for seg in m["segments"]]}
+    return {**m, "mass": 0.1}
+
+
 def _bodies(n: int, m: dict[str, Any]) -> dict[str, dict[str, Any]]:
     """A valid body for every operation taking a chain ``m`` of ``n`` segments (``a = b = 1``)."""
     x = 2.0 * n - 0.3                            # near the straight chain's tip (2 b n)
@@ -48,6 +55,7 @@ def _bodies(n: int, m: dict[str, Any]) -> dict[str, dict[str, Any]]:
         "/v1/buckling": {"manipulator": m, "boundary": "guided"},
         "/v1/force-deflection": {"manipulator": m, "dx": {"start": 0.0, "stop": 0.1, "num": 3}},
         "/v1/stiffness": {"manipulator": m, "dx": 0.1},
+        "/v1/modes": {"manipulator": _massive(m), "dx": 0.1},
         "/v1/energy-landscape": {"manipulator": m, "dx": 0.1, "pair": [0, 3], "grid": 3},
         "/v1/batch/equilibrium": {"manipulator": m, "targets": [{"dx": 0.05}, {"dx": 0.1, "dy": 0.01}]},
         "/v1/design/critical-force": {"manipulator": m, "vary": ["k"], "bounds": {"k": {"lo": 0.2, "hi": 5.0}},
@@ -71,6 +79,7 @@ def _bodies(n: int, m: dict[str, Any]) -> dict[str, dict[str, Any]]:
         "/v1/plots/curve": {"manipulator": m, "dx": {"start": 0.0, "stop": 0.1, "num": 3}},
         "/v1/plots/landscape": {"manipulator": m, "dx": 0.1, "pair": [0, 3], "grid": 3},
         "/v1/plots/shapes": {"manipulator": m, "dx": 0.1},
+        "/v1/plots/modes": {"manipulator": _massive(m), "dx": 0.1, "max_panels": 2},
         "/v1/plots/map": {"manipulator": m, "param_x": "k", "values_x": [1.0, 2.0], "param_y": "L0",
                           "values_y": [1.0, 1.5]},
         "/v1/plots/branch": {"manipulator": m, "control": load, "stop_at": "event", "max_points": 50, "x": "t",

@@ -227,7 +227,8 @@ def _header(spec: Any) -> dict[str, Any]:
                 base[key] = _law(v, "manipulator.spring")
                 continue
             if key in _MASSES:
-                base[key] = _mass(v, f"manipulator.{key}")
+                if _mass(v, f"manipulator.{key}"):            # the normal form omits a zero (as to_dict does)
+                    base[key] = float(v)
                 continue
             if key not in MANIPULATOR_PARAMETERS:
                 _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "spring", *_MASSES,
@@ -271,8 +272,8 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
         if "spring" in sd:
             norm["spring"] = _law(sd["spring"], f"{fld}.spring")
         for key in ("mass", "inertia"):
-            if key in sd:
-                norm[key] = _mass(sd[key], f"{fld}.{key}")
+            if key in sd and _mass(sd[key], f"{fld}.{key}"):
+                norm[key] = float(sd[key])
         try:
             Segment(norm["a"], norm["b"], tuple(norm["k"]) if isinstance(norm["k"], list) else norm["k"],
                     tuple(norm["L0"]) if isinstance(norm["L0"], list) else norm["L0"], norm.get("spring", "linear"))
@@ -280,8 +281,8 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
             _fail(f"{fld}.{exc.field}" if exc.field else fld, exc.message)
         out.append(norm)
     chain: dict[str, Any] = {"segments": out}
-    if "payload" in raw_m:
-        chain["payload"] = _mass(raw_m["payload"], "manipulator.payload")
+    if "payload" in raw_m and _mass(raw_m["payload"], "manipulator.payload"):
+        chain["payload"] = float(raw_m["payload"])
     return chain
 
 

@@ -62,6 +62,7 @@ def test_a_horizon_step_that_hid_a_snap_is_not_sent(seed):
     assert plan.tip_error.sum() <= own.tip_error.sum() * (1 + 1e-9) + 1e-9
 
 
+@pytest.mark.slow
 def test_a_held_arm_under_a_load_jump_reports_where_it_goes():
     """``uniform(3, a=0.5)``, rate 0.04/s, dt 1, margin 0.01, hold; the load jumps at step 6 from (0, -0.01) to
     (0.9797, 0): the held arm does not stay where the hold says; the step reports where its transition takes it

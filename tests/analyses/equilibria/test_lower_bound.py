@@ -172,6 +172,7 @@ def test_open_status_when_the_patterns_exceed_the_cap():
     assert cert.bound == pytest.approx(6 * 0.63, abs=1e-8) and cert.bound <= eq.energy
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize(("n", "dx", "dy", "energy"), [(10, 3.5, 0.0, 6.3000804), (12, 3.5, 0.3, 7.5600489)])
 def test_certified_long_bistable_chains(n, dx, dy, energy):
     """n = 10, 12 uniform bistable near their wells: certified; the default search finds the same energy; the
@@ -198,6 +199,7 @@ def test_certified_bistable_n20():
     assert eq.energy <= best + 1e-9
 
 
+@pytest.mark.slow
 def test_default_search_finds_the_lower_pattern_n10():
     """n = 10 uniform bistable at (1.75, -0.25): the plain search stops at 6.3015246 (the search alone); the
     default (the bound's pattern sweep and one round of Newton re-centrings) finds 6.3011121, which the
@@ -223,6 +225,7 @@ def test_single_configuration_cases_are_certified():
     assert eq.certificate.certified and eq.certificate.gap == 0.0
 
 
+@pytest.mark.slow_cases(keep=2)
 @pytest.mark.parametrize("n, dx, dy, kind", [(8, 2.0, 0.0, "uniform"), (8, 3.0, 1.0, "uniform"),
                                              (5, 0.7, -0.35, "heterogeneous"), (4, 1.5, 0.4, "uniform")])
 def test_default_short_way_is_the_whole_search_and_certified(monkeypatch, n, dx, dy, kind):
@@ -249,7 +252,7 @@ def test_default_short_way_is_the_whole_search_and_certified(monkeypatch, n, dx,
     assert short.energy <= _reference_least(m, dx, dy, 40, 5, wells=wells, n_wells=40) + 1e-9
 
 
-@pytest.mark.slow_cases(keep=1)
+@pytest.mark.slow
 @pytest.mark.parametrize("n", [9, 10])
 def test_near_well_targets_of_long_bistable_chains(n):
     """The issue's failing kind of case: uniform bistable n = 9, 10 with the tip near a random well pattern's tip

@@ -69,6 +69,7 @@ def _check(m, eq, md, held):
         np.testing.assert_allclose(Z.T @ (K - lam * M) @ s, 0.0, atol=1e-8 * scale)
 
 
+@pytest.mark.slow_cases(keep=3)
 @pytest.mark.parametrize("family", FAMILIES)
 @pytest.mark.parametrize("seed", [0, 1])
 def test_the_modes_with_the_tip_held_are_the_reference(family, seed):
@@ -80,6 +81,7 @@ def test_the_modes_with_the_tip_held_are_the_reference(family, seed):
     _check(m, eq, md, held=True)
 
 
+@pytest.mark.slow_cases(keep=2)
 @pytest.mark.parametrize("family", FAMILIES)
 def test_the_modes_with_the_tip_loaded_are_the_reference(family):
     """The pose of a tip displacement, its tip force then a dead load: every joint moves (n modes; unstable where
@@ -112,6 +114,7 @@ def test_the_modes_of_a_saddle_say_unstable_with_the_reference_eigenvalues():
     json.dumps(body)
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("family", ["monotonic", "large"])
 def test_a_joint_on_its_stop_stays_there_in_the_modes(family):
     """Tension-only chains deflected far rest on a stop: that joint does not move in any mode."""

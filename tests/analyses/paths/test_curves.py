@@ -215,6 +215,7 @@ def test_points_after_the_end_are_dropped():
     assert c.message.endswith("2 of 5 points computed.")
 
 
+@pytest.mark.slow
 def test_a_curve_without_any_stable_point_is_empty():
     c = to.force_deflection(PAPER, [7.9, 7.95])
     assert c.dx.size == 0 and c.q.shape == (0, 4) and c.jumps == () and c.requested == 2

@@ -85,6 +85,7 @@ def test_a_terminal_shows_a_bar_and_a_summary_a_pipe_neither(name, tmp_path):
         assert SUMMARY[name] not in err_pipe and err_pipe == ""
 
 
+@pytest.mark.slow
 def test_the_sweep_shows_a_bar_on_a_terminal_without_a_size(tmp_path):
     """The fast one of the above: the sweep's bar on a pseudo-terminal of no size, not with --no-progress."""
     out_tty, err_tty = _run(COMMANDS["sweep"], tmp_path, tty=True)
