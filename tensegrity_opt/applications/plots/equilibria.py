@@ -281,14 +281,7 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
         ax.set_title(f"{e.shape} ({e.signs}): {_KIND_TEXT.get(e.kind, e.kind)}\n"
                      f"E = {e.energy:.4g}, F = ({number_text(e.fx, e.fy)}, {number_text(e.fy, e.fx)})",
                      fontsize=8, color=col)
-        ax.set_xlim(lo[0], hi[0])
-        ax.set_ylim(lo[1], hi[1])
-        ax.set_aspect("equal", adjustable="box")
-        ax.tick_params(labelsize=7)
-        if idx % cols == 0:
-            ax.set_ylabel("$y$ (length)", fontsize=8)
-        if idx + cols >= k:
-            ax.set_xlabel("$x$ (length)", fontsize=8)
+        _chain_panel(ax, lo, hi, idx, cols, k)
     for ax in axes[k:]:
         ax.set_visible(False)
     more = f" (the {k} lowest of {len(eqs)})" if len(eqs) > k else ""
@@ -306,6 +299,19 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
         cb.ax.set_gid("spring-forces")
     return fig
 
+
+
+def _chain_panel(ax: Any, lo: np.ndarray, hi: np.ndarray, idx: int, cols: int, k: int) -> None:
+    """One panel of a grid of ``k`` chain drawings (``cols`` a row): the common limits, equal axes, and the axis
+    labels on the left column and the bottom row."""
+    ax.set_xlim(lo[0], hi[0])
+    ax.set_ylim(lo[1], hi[1])
+    ax.set_aspect("equal", adjustable="box")
+    ax.tick_params(labelsize=7)
+    if idx % cols == 0:
+        ax.set_ylabel("$y$ (length)", fontsize=8)
+    if idx + cols >= k:
+        ax.set_xlabel("$x$ (length)", fontsize=8)
 
 
 # ---------------------------------------------------------------------------- modes
@@ -365,14 +371,7 @@ def plot_modes(modes: Modes, m: Manipulator, *, excursion: float = 0.3, max_pane
         title = (f"mode {idx + 1}: $\\omega$ = {w:.4g} rad/s ({w / (2 * math.pi):.4g} Hz)" if math.isfinite(w)
                  else f"direction {idx + 1}: does not vibrate ($\\omega^2$ = {modes.eigenvalues[idx]:.3g})")
         ax.set_title(title, fontsize=8, color="black" if math.isfinite(w) else STABILITY_COLORS.get("saddle", "r"))
-        ax.set_xlim(lo[0], hi[0])
-        ax.set_ylim(lo[1], hi[1])
-        ax.set_aspect("equal", adjustable="box")
-        ax.tick_params(labelsize=7)
-        if idx % cols == 0:
-            ax.set_ylabel("$y$ (length)", fontsize=8)
-        if idx + cols >= k:
-            ax.set_xlabel("$x$ (length)", fontsize=8)
+        _chain_panel(ax, lo, hi, idx, cols, k)
     for ax in axes[k:]:
         ax.set_visible(False)
     held = "the tip held" if modes.tip == "held" else "the tip loaded (free)"
