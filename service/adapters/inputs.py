@@ -19,7 +19,7 @@ from .. import schemas as s
 
 __all__ = ["pair", "segment_count", "manipulator_form", "build_segment", "manipulator_key", "manipulator",
            "build_manipulator", "optional_array", "number_or_array", "values", "build_control", "control_kwargs",
-           "branch_start", "equilibrium_args", "bounded_search_may_settle", "PRELOAD_OBJECTIVES"]
+           "branch_start", "equilibrium_args", "bounded_search_may_settle", "modes_pose", "PRELOAD_OBJECTIVES"]
 
 #: A preloads request's ``objective`` -> the library's (``"nominal"``: the least change from the chain's own rest
 #: lengths, the library's ``"change"``).
@@ -67,6 +67,19 @@ def manipulator(key: tuple[Any, ...]) -> to.Manipulator:
 def build_manipulator(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> to.Manipulator:
     """The chain of a request (:func:`manipulator` of its key)."""
     return manipulator(manipulator_key(m))
+
+
+def modes_pose(req: Any) -> str:
+    """How a modes request poses its equilibrium: ``"deflection"`` (dx, dy) or ``"force"`` (fx, fy); one of them,
+    not both (``InvalidParameterError`` naming the field)."""
+    deflected = req.dx is not None or req.dy is not None
+    loaded = req.fx is not None or req.fy is not None
+    if deflected and loaded:
+        raise to.InvalidParameterError("give a tip deflection (dx, dy) or a tip force (fx, fy), not both",
+                                       field="fx" if req.fx is not None else "fy")
+    if not deflected and not loaded:
+        raise to.InvalidParameterError("give a tip deflection (dx, dy) or a tip force (fx, fy)", field="dx")
+    return "deflection" if deflected else "force"
 
 
 def optional_array(v: Any) -> np.ndarray | None:

@@ -19,7 +19,7 @@ from tensegrity_opt.serialize import number, numbers
 
 from .. import schemas as s
 from ..adapters.fields import FieldContext
-from ..adapters.inputs import build_manipulator, build_segment, manipulator, optional_array, values
+from ..adapters.inputs import build_manipulator, build_segment, manipulator, modes_pose, optional_array, values
 from ..adapters.refusals import refusal_body
 
 __all__ = ["warmup", "equilibrium_task", "force_equilibrium_task", "equilibria_task", "buckling_task",
@@ -92,7 +92,7 @@ def stiffness_task(req: s.StiffnessRequest) -> dict[str, Any]:
 def find_modes(req: Any) -> tuple[to.Manipulator, to.Modes]:
     """The chain of a modes request (``/v1/modes`` or its figure) and the modes of its equilibrium."""
     m = build_manipulator(req.manipulator)
-    if req.fx is not None or req.fy is not None:
+    if modes_pose(req) == "force":
         eq = to.solve_equilibrium_under_force(m, req.fx or 0.0, req.fy or 0.0, q0=optional_array(req.q0))
     else:
         eq = to.solve_equilibrium(m, req.dx or 0.0, req.dy or 0.0, q0=optional_array(req.q0))

@@ -37,8 +37,11 @@ def test_the_modes_are_the_librarys_for_both_chain_forms(client):
 
 def test_modes_refuse_by_field(client):
     check_error(client.post("/v1/modes", json={"manipulator": {"n": 4}, "dx": 1.0}), "invalid_parameter", "mass")
-    r = client.post("/v1/modes", json={"manipulator": {"n": 4, "mass": 1}, "dx": 1.0, "fx": 0.1})
-    assert r.status_code == 422
+    check_error(client.post("/v1/modes", json={"manipulator": {"n": 4, "mass": 1}, "dx": 1.0, "fx": 0.1}),
+                "invalid_parameter", "fx")
+    check_error(client.post("/v1/modes", json={"manipulator": {"n": 4, "mass": 1}}), "invalid_parameter", "dx")
+    check_error(client.post("/v1/plots/modes/job", json={"manipulator": {"n": 4, "mass": 1}}), "invalid_parameter",
+                "dx")                                          # refused before a job is stored
     r = client.post("/v1/modes", json={"manipulator": {"n": 4, "mass": -1}, "dx": 1.0})
     assert r.status_code == 422 and "mass" in r.text
 

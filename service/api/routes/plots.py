@@ -30,6 +30,7 @@ from starlette.responses import JSONResponse, Response
 
 from ... import examples as ex
 from ...adapters.fields import LIMIT_LOAD_ALIASES, FieldContext
+from ...adapters.inputs import modes_pose
 from ...config import Settings
 from ...schemas import ErrorOut
 from ...schemas import jobs as js
@@ -149,6 +150,11 @@ def _chain(req: Any, settings: Settings) -> FieldContext:
     return check_manipulator(req.manipulator, settings)
 
 
+def _modes(req: Any, settings: Settings) -> FieldContext:
+    modes_pose(req)                      # a deflection or a force: refused before a job is stored
+    return _chain(req, settings)
+
+
 def _no_chain(req: Any, settings: Settings) -> FieldContext:
     return FieldContext()
 
@@ -250,7 +256,7 @@ FIGURES: tuple[Figure, ...] = (
             "table2": {"summary": "Table 2: the six equilibria at dx = 0.1", "value": {
                 "manipulator": _M, "dx": 0.1, "dy": 0.0}}}),
     Figure(
-        "modes", ps.PlotModesRequest, task=tasks.plot_modes_task,
+        "modes", ps.PlotModesRequest, task=tasks.plot_modes_task, limits=_modes,
         summary="Figure: the vibration modes of an equilibrium",
         description="One panel per mode of `/v1/modes` (at most `max_panels`, the lowest): the equilibrium's centre "
                     "line, the chain displaced along the mode both ways (largest joint excursion `excursion` rad), "
