@@ -198,6 +198,7 @@ def modes(m: Manipulator, equilibrium: Equilibrium, *, tip: str | None = None) -
     else:
         Z = np.eye(m.n)
     Kr, Mr = Z.T @ K @ Z, Z.T @ M @ Z
+    mw = np.zeros(1)
     if Z.shape[1] == 0:
         w, V = np.zeros(0), np.zeros((0, 0))
     else:
@@ -213,7 +214,7 @@ def modes(m: Manipulator, equilibrium: Equilibrium, *, tip: str | None = None) -
     shapes = (Z @ V).T
     # zero relative to the stiffness scale (torque / rad) over the largest reduced mass, not only to the largest w^2:
     # a chain marginal in every direction has every w^2 ~ 0
-    scale = m.torque_scale / float(np.linalg.eigvalsh(Mr)[-1]) if Z.shape[1] else 1.0
+    scale = m.torque_scale / float(mw[-1]) if Z.shape[1] else 1.0
     tol = ZERO_TOL * max(float(np.abs(w).max(initial=0.0)), scale)
     status = "unstable" if np.any(w < -tol) else "degenerate" if np.any(np.abs(w) <= tol) else "solved"
     freq = np.where(w > tol, np.sqrt(np.maximum(w, 0.0)), np.nan)
