@@ -22,6 +22,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from ..errors import InvalidParameterError, UnreachableTargetError, unknown_name
+from . import loads as _loads
 from .segment import Segment, _nonnegative
 from .springs import Springs, linear_only
 
@@ -61,18 +62,29 @@ class Manipulator:
     payload : float
         A point mass at the tip (>= 0, default 0): like the segments' masses it changes no equilibrium without
         gravity and sets the vibration modes (:func:`~tensegrity_opt.modes`).
+    gravity : (gx, gy) or None
+        The gravity vector in the plane of the chain (default None: no weight); ``(0, -9.81)`` for a chain pointing
+        along +x in a vertical plane, any direction (a tilted base). The weights of the segments' triangles and of
+        the payload then load the chain in every analysis that honours the loads (:mod:`~.loads`).
+    joint_forces : sequence of (joint, (fx, fy))
+        Dead point forces at joints (fixed in direction), joints counted from 1 at the base (joint 1 is fixed: a
+        force there does no work); beside the tip force of each analysis. Also ``{joint: (fx, fy)}``.
 
     Raises
     ------
     InvalidParameterError
         (a ``ValueError``, ``field="segments"``) when the sequence is empty or
-        holds something other than :class:`Segment`; ``field="payload"`` when it is negative or not finite.
+        holds something other than :class:`Segment`; ``field="payload"`` when it is negative or not finite;
+        ``field="gravity"`` / ``"joint_forces[i]..."`` for a malformed load.
     """
 
     segments: tuple[Segment, ...]
     payload: float = 0.0
+    gravity: tuple[float, float] | None = None
+    joint_forces: tuple[tuple[int, tuple[float, float]], ...] = ()
 
-    def __init__(self, segments: Iterable[Segment], payload: float = 0.0) -> None:
+    def __init__(self, segments: Iterable[Segment], payload: float = 0.0, gravity: Any = None,
+                 joint_forces: Any = ()) -> None:
         if isinstance(segments, Segment):
             segments = (segments,)
         try:
@@ -87,49 +99,68 @@ class Manipulator:
                     f"segments[{i}] must be a Segment, got {type(s).__name__}", field=f"segments[{i}]")
         object.__setattr__(self, "segments", segs)
         object.__setattr__(self, "payload", _nonnegative(payload, "payload"))
+        object.__setattr__(self, "gravity", _loads.check_gravity(gravity))
+        object.__setattr__(self, "joint_forces", _loads.check_joint_forces(joint_forces, len(segs)))
 
     def __hash__(self) -> int:
         # computed once: hashing 10^4 segments costs milliseconds, and the caches keyed by the chain
         # (buckling modes, seed directions) look it up on every solve
         h = self.__dict__.get("_hash")
         if h is None:
-            h = hash(self.segments) if not self.payload else hash((self.segments, self.payload))
+            extra = (self.payload, self.gravity, self.joint_forces)
+            h = hash(self.segments) if extra == (0.0, None, ()) else hash((self.segments, extra))
             object.__setattr__(self, "_hash", h)
         return h
 
     @classmethod
     def uniform(cls, n: int, a: float = 1.0, b: float = 1.0, k: float | tuple[float, float] = 1.0,
                 L0: float | tuple[float, float] = 1.0, spring: str = "linear", mass: float = 0.0,
-                inertia: float = 0.0, payload: float = 0.0) -> "Manipulator":
-        """``n`` identical segments ``Segment(a, b, k, L0, spring, mass, inertia)``, a ``payload`` at the tip."""
+                inertia: float = 0.0, payload: float = 0.0, gravity: Any = None,
+                joint_forces: Any = ()) -> "Manipulator":
+        """``n`` identical segments ``Segment(a, b, k, L0, spring, mass, inertia)``, a ``payload`` at the tip, the
+        chain's ``gravity`` and ``joint_forces``."""
         if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 1:
             raise InvalidParameterError(f"n must be an integer >= 1, got {n!r}", field="n")
         seg = Segment(a, b, k, L0, spring, mass, inertia)
-        return cls((seg,) * int(n), payload)
+        return cls((seg,) * int(n), payload, gravity, joint_forces)
 
     @classmethod
     def from_dict(cls, d: dict[str, Any]) -> "Manipulator":
-        """From ``{"n", "a", "b", "k", "L0", "spring", "mass", "inertia", "payload"}`` (uniform) or
-        ``{"segments": [...], "payload"}``; a key it does not know is refused naming the nearest valid one
+        """From ``{"n", "a", "b", "k", "L0", "spring", "mass", "inertia", "payload", "gravity", "joint_forces"}``
+        (uniform) or ``{"segments": [...], "payload", "gravity", "joint_forces"}`` (``joint_forces`` as
+        ``[{"joint": j, "force": [fx, fy]}, ...]``); a key it does not know is refused naming the nearest valid one
         (``segments[0].l0: unknown key; did you mean L0?``)."""
+        chain = ("payload", "gravity", "joint_forces")
+        loads = (d.get("payload", 0.0), d.get("gravity"), d.get("joint_forces", ()))
         if "segments" in d:
-            _known_keys(d, ("segments", "payload"), "")
+            _known_keys(d, ("segments", *chain), "")
             for i, s in enumerate(d["segments"]):
                 if isinstance(s, dict):
                     _known_keys(s, _SEGMENT_KEYS, f"segments[{i}].")
-            return cls((Segment(**s) for s in d["segments"]), d.get("payload", 0.0))
-        _known_keys(d, ("n", *_SEGMENT_KEYS, "payload"), "")
+            return cls((Segment(**s) for s in d["segments"]), *loads)
+        _known_keys(d, ("n", *_SEGMENT_KEYS, *chain), "")
         return cls.uniform(d.get("n", 4), d.get("a", 1.0), d.get("b", 1.0), d.get("k", 1.0), d.get("L0", 1.0),
-                           d.get("spring", "linear"), d.get("mass", 0.0), d.get("inertia", 0.0),
-                           d.get("payload", 0.0))
+                           d.get("spring", "linear"), d.get("mass", 0.0), d.get("inertia", 0.0), *loads)
 
     def to_dict(self) -> dict[str, Any]:
         """JSON form ``{"segments": [{"a", "b", "k", "L0"}, ...]}`` (``k`` / ``L0`` one number when both
         springs agree, else the pair; ``spring``, ``mass``, ``inertia`` where they are not their defaults;
-        ``payload`` where it is not 0): what the API returns for a chain, accepted by :meth:`from_dict`."""
+        ``payload``, ``gravity``, ``joint_forces`` where they are set): what the API returns for a chain, accepted by
+        :meth:`from_dict`."""
         out: dict[str, Any] = {"segments": [s.to_dict() for s in self.segments]}
+        out.update(self.loads_dict())
+        return out
+
+    def loads_dict(self) -> dict[str, Any]:
+        """The chain's own loads as JSON, those set only: ``payload``, ``gravity`` ``[gx, gy]``, ``joint_forces``
+        ``[{"joint", "force": [fx, fy]}]``."""
+        out: dict[str, Any] = {}
         if self.payload:
             out["payload"] = self.payload
+        if self.gravity is not None:
+            out["gravity"] = list(self.gravity)
+        if self.joint_forces:
+            out["joint_forces"] = [{"joint": j, "force": list(f)} for j, f in self.joint_forces]
         return out
 
     # ------------------------------------------------------------------ arrays
@@ -189,9 +220,34 @@ class Manipulator:
         law: a chain with a tension-only segment is refused here (:func:`~.springs.linear_only`), so no analysis
         silently answers for the linear law."""
         linear_only(self, "this analysis (its solvers model the linear spring law)")
+        _loads.unloaded_only(self, "this analysis (its solvers model the unloaded chain)")
         p = np.concatenate([self.a, self.b, self.k1, self.k2, self.L1_0, self.L2_0])
         p.setflags(write=False)           # shared by every solve of this chain: never modified
         return p
+
+    @cached_property
+    def link_loads(self) -> np.ndarray:
+        """The dead loads per link ``G`` (n, 2): weights under ``gravity`` and ``joint_forces``, the loads'
+        potential ``V = V_0 - sum_j G_j . (cos psi_j, sin psi_j)`` (:mod:`~.loads`). Read-only."""
+        G = _loads.link_loads(self)
+        G.setflags(write=False)
+        return G
+
+    @cached_property
+    def load_offset(self) -> float:
+        """``V_0``: the loads' potential no joint angle changes (:func:`~.loads.load_offset`)."""
+        return _loads.load_offset(self)
+
+    @cached_property
+    def loaded(self) -> bool:
+        """The chain carries dead loads: a weight under gravity (a mass or a payload) or a nonzero joint force."""
+        return bool(np.any(self.link_loads != 0.0))
+
+    @property
+    def paper_model(self) -> bool:
+        """The paper's model: every spring linear, no dead load (the CasADi kernels, the homotopy and the designs
+        solve it; the other chains go through the closed-range route of :mod:`~.tension_only`)."""
+        return self.linear_springs and not self.loaded
 
     @cached_property
     def link_lengths(self) -> np.ndarray:
@@ -363,6 +419,25 @@ class Manipulator:
         """``dE/dq = -M(q)``."""
         return -self.torques(q)
 
+    def potential_energy(self, q: Any) -> float:
+        """The chain's potential ``E(q) + V(q)``: its springs' energy and its dead loads' potential (weights under
+        ``gravity``, ``joint_forces``; :mod:`~.loads`). Equal to :meth:`energy` for a chain without loads."""
+        E = self.energy(q)
+        return E + _loads.load_potential(self, self._q(q)) if self.loaded else E
+
+    def load_gradient(self, q: Any) -> np.ndarray:
+        """``dV/dq`` of the dead loads' potential (zeros without loads)."""
+        return _loads.load_gradient(self, self._q(q))
+
+    def load_hessian(self, q: Any) -> np.ndarray:
+        """``d^2 V / dq^2`` (n, n) of the dead loads' potential."""
+        return _loads.load_hessian(self, self._q(q))
+
+    def potential_gradient(self, q: Any) -> np.ndarray:
+        """``d(E + V)/dq``: the joint torques of the springs and of the dead loads, with the sign of a gradient."""
+        g = self.gradient(q)
+        return g + _loads.load_gradient(self, self._q(q)) if self.loaded else g
+
     def force_from_torques(self, q: Any) -> np.ndarray:
         """Eq. (8): ``F = -(J^T)^+ M``, the least-squares (least-norm where ``J`` loses rank) tip force
         balancing the torques; ``-(J J^T)^-1 J M`` when ``J`` has full rank."""
@@ -377,7 +452,8 @@ class Manipulator:
     def equilibrium_residual(self, q: Any, force: Any, target: Any | None = None) -> float:
         """Largest violation of ``grad E = J^T F`` (scaled by ``k c^2``) and of ``tip = target`` (by ``sum b``)."""
         q = self._q(q)
-        r = float(np.abs(self.gradient(q) - self.jacobian(q).T @ np.asarray(force, float)).max()) / self.torque_scale
+        r = float(np.abs(self.potential_gradient(q) - self.jacobian(q).T @ np.asarray(force, float)).max()) \
+            / self.torque_scale
         if target is not None:
             r = max(r, float(np.abs(self.tip(q) - np.asarray(target, float)).max()) / float(self.b.sum()))
         return r
@@ -400,17 +476,22 @@ class Manipulator:
         # (J^T F)_i = sum over the links j >= i of d tip_j / d phi_j . F
         work = -l * np.sin(phi) * F[:, :1] + l * np.cos(phi) * F[:, 1:]
         jtf = np.cumsum(work[:, ::-1], axis=1)[:, ::-1]
-        r = np.abs(-torques - jtf).max(axis=1) / self.torque_scale
+        grad = -torques + _loads.load_gradient(self, Q) if self.loaded else -torques
+        r = np.abs(grad - jtf).max(axis=1) / self.torque_scale
         tip = np.stack([self.base_length + np.cos(phi) @ l, np.sin(phi) @ l], axis=1)
         return np.maximum(r, np.abs(tip - np.asarray(target, float)).max(axis=1) / float(self.b.sum()))
 
     def mirrored(self) -> "Manipulator":
-        """The mirror image (springs 1 and 2 swapped): ``q`` solves it iff ``-q`` solves this one."""
-        return self.with_segments(s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments)
+        """The mirror image (springs 1 and 2 swapped, the loads reflected in the x axis): ``q`` solves it iff ``-q``
+        solves this one (with the tip target and force reflected too)."""
+        gravity = None if self.gravity is None else (self.gravity[0], -self.gravity[1])
+        return Manipulator((s.replace(k=(s.k2, s.k1), L0=(s.L2_0, s.L1_0)) for s in self.segments), self.payload,
+                           gravity, tuple((j, (f[0], -f[1])) for j, f in self.joint_forces))
 
     def with_segments(self, segments: Iterable[Segment]) -> "Manipulator":
-        """The same chain's loads (its ``payload``) on new ``segments``: what a design or a preload change returns."""
-        return Manipulator(segments, self.payload)
+        """The same chain's loads (``payload``, ``gravity``, ``joint_forces``) on new ``segments``: what a design or a
+        preload change returns."""
+        return Manipulator(segments, self.payload, self.gravity, self.joint_forces)
 
     def with_spring(self, spring: str) -> "Manipulator":
         """The same chain with every segment's spring law set to ``spring``."""

@@ -3,14 +3,16 @@
 A tension-only spring's energy ``k/2 max(0, L - L0)^2`` is only C^1 (its stiffness jumps where it goes slack).
 Written with one extra variable per spring, the problem is smooth:
 
-    min  1/2 sum k e^2 - F . tip(q)   over  q (n), e (2n)
+    min  1/2 sum k e^2 - sum_j G_j . u_j(q) - F . tip(q)   over  q (n), e (2n)
     s.t. tip(q) = target,   e - (L(q) - L0) >= 0,  e >= 0   (tension-only spring)
                             e - (L(q) - L0)  = 0,  e free   (linear spring)
          -(pi - 2 beta) <= q <= pi - 2 beta                 (the joint stops: the closed range)
 
-Under a tip displacement ``F = 0`` and the tip rows hold; under a dead tip load ``F`` (force control) the tip rows'
+``G_j`` the chain's dead loads on link ``j`` (its weights under gravity and its joint forces,
+:mod:`tensegrity_opt.model.loads`; ``u_j = (cos psi_j, sin psi_j)``). Under a tip displacement ``F = 0`` and the
+tip rows hold; under a dead tip load ``F`` (force control) the tip rows'
 bounds are infinite (:meth:`SlackNLP.bounds` with ``free_tip``). At a solution ``e = max(0, L - L0)``
-(tension-only) or ``L - L0`` (linear), so the objective is the chain's energy (less ``F . tip``) under each
+(tension-only) or ``L - L0`` (linear), so the objective is the chain's potential (less ``F . tip``) under each
 spring's law; the multiplier of a spring's row is its force ``k e``, the multipliers of the tip rows are
 ``-F`` (CasADi's sign, ``docs/model.md``), and a joint's bound multiplier is the stop's contact torque. The law
 of each spring enters only through the bounds, so one problem per chain length serves every chain (built once per
@@ -43,22 +45,24 @@ class SlackNLP:
 
     ``x``: variables ``q`` (n), ``e1``, ``e2`` (n each: springs 1 and 2 of each segment); ``g``: rows ``tip`` (2),
     ``s1``, ``s2`` (``e - (L - L0)``, n each); ``p``: ``a, b, k1, k2, L10, L20`` (n each, the chain's parameters)
-    then ``target`` (2) and the dead tip load ``force`` (2).
+    then ``target`` (2), the dead tip load ``force`` (2) and the links' dead loads ``Gx``, ``Gy`` (n each).
     """
 
     def __init__(self, n: int) -> None:
         self.n = n
         self.x = Layout(q=n, e1=n, e2=n)
         self.g = Layout(tip=2, s1=n, s2=n)
-        self.p = Layout(a=n, b=n, k1=n, k2=n, L10=n, L20=n, target=2, force=2)
+        self.p = Layout(a=n, b=n, k1=n, k2=n, L10=n, L20=n, target=2, force=2, Gx=n, Gy=n)
         q, e1, e2 = (ca.SX.sym(s, n) for s in ("q", "e1", "e2"))
         p = ca.SX.sym("p", self.p.size)
         a, b, k1, k2, L10, L20 = (p[i * n:(i + 1) * n] for i in range(6))
         tgt = p[self.p["target"]]
         load = p[self.p["force"]]
+        psi = ca.cumsum(q)
+        V = -ca.dot(p[self.p["Gx"]], ca.cos(psi)) - ca.dot(p[self.p["Gy"]], ca.sin(psi))
         L1, L2, _ = segment_energy(q, a, b, k1, k2, L10, L20)
-        tip = tip_expression(ca.cumsum(q), b)
-        f = 0.5 * ca.sum1(k1 * e1 ** 2 + k2 * e2 ** 2) - ca.dot(load, tip)
+        tip = tip_expression(psi, b)
+        f = 0.5 * ca.sum1(k1 * e1 ** 2 + k2 * e2 ** 2) + V - ca.dot(load, tip)
         g = ca.vertcat(tip - tgt, e1 - (L1 - L10), e2 - (L2 - L20))
         self.solver, self._cb = _nlpsol(f"slack_{n}", {"x": ca.vertcat(q, e1, e2), "p": p, "f": f, "g": g},
                                         **_OPTIONS)
@@ -68,14 +72,16 @@ class SlackNLP:
         s1, s2 = L1 - L10, L2 - L20
         E = 0.5 * ca.sum1(k1 * (s1 - t1 * ca.fmin(s1, 0)) ** 2 + k2 * (s2 - t2 * ca.fmin(s2, 0)) ** 2)
         J = ca.jacobian(tip, q)
-        H = ca.hessian(E - ca.dot(F, tip), q)[0]
-        self._derivs = ca.Function(f"slack_derivs_{n}", [q, p, t1, t2, F], [E, ca.gradient(E, q), H, tip, J])
+        H = ca.hessian(E + V - ca.dot(F, tip), q)[0]
+        self._derivs = ca.Function(f"slack_derivs_{n}", [q, p, t1, t2, F], [E, ca.gradient(E + V, q), H, tip, J])
 
     def parameters(self, m, target, force=None) -> np.ndarray:
         """The parameter vector of the chain ``m`` (read attribute by attribute: its springs' laws are in the
-        bounds, :meth:`bounds`), the tip ``target`` and the dead tip load ``force`` (default none)."""
+        bounds, :meth:`bounds`; its dead loads ``m.link_loads``), the tip ``target`` and the dead tip load ``force``
+        (default none)."""
+        G = m.link_loads
         return self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=np.asarray(target, float),
-                           force=np.zeros(2) if force is None else np.asarray(force, float))
+                           force=np.zeros(2) if force is None else np.asarray(force, float), Gx=G[:, 0], Gy=G[:, 1])
 
     def bounds(self, m, free_tip: bool = False) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """``lbx, ubx, lbg, ubg`` of the chain ``m``: the closed joint range, each spring's law; ``free_tip``: the
@@ -102,11 +108,13 @@ class SlackNLP:
         return _run(self.solver, x0, lbx, ubx, lbg, ubg, p)
 
     def derivatives(self, m, q: np.ndarray, F: np.ndarray):
-        """``(E, grad E, Hess(E - F . tip), tip, J)`` at the relative angles ``q`` under each spring's law (a slack
-        spring contributes nothing; where a spring is exactly at its rest length, its taut side)."""
+        """``(E, grad (E + V), Hess(E + V - F . tip), tip, J)`` at the relative angles ``q`` under each spring's law
+        (a slack spring contributes nothing; where a spring is exactly at its rest length, its taut side): ``E`` the
+        springs' energy, ``V`` the chain's dead loads' potential (less its constant, :mod:`~..model.loads`)."""
         t = m.springs.tension_only.astype(float)
+        G = m.link_loads
         out = self._derivs(q, self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=0.0,
-                                          force=0.0), t, t, np.asarray(F, float))
+                                          force=0.0, Gx=G[:, 0], Gy=G[:, 1]), t, t, np.asarray(F, float))
         E, g, H, tip, J = (np.asarray(v, dtype=float) for v in out)
         return float(E.item()), g.ravel(), H, tip.ravel(), J
 

@@ -31,6 +31,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...numerics import chain_solver
 from ...outcome import Outcome, freeze
@@ -152,6 +153,7 @@ class PreloadFollower:
     """
 
     def __init__(self, m: Manipulator, start=None, *, load=(0.0, 0.0)) -> None:
+        unloaded_only(m, "PreloadFollower")
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
         self.m = m

@@ -26,6 +26,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SolverError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import chain_solver
@@ -415,6 +416,7 @@ def estimate_tip_force(m: Manipulator, q_measured, sigma_q=None, measured=None) 
     >>> round(est.fx, 9), round(est.fy, 9), est.dof, est.p_value > 0.5
     (-0.1, 0.05, 2, True)
     """
+    unloaded_only(m, "estimate_tip_force")
     linear_only(m, "estimate_tip_force")
     if not isinstance(m, Manipulator):
         raise InvalidParameterError("m must be a Manipulator", field="m")

@@ -22,6 +22,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import linear_only
 from ...outcome import Outcome, freeze
@@ -263,6 +264,7 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
         (``ValueError``) bad arguments (``field`` names one), or a pose that is not a stable equilibrium under
         ``base`` (``field="pose"``).
     """
+    unloaded_only(m, "load_capacity")
     linear_only(m, "load_capacity")
     if boundary not in ("free", "guided"):
         raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")

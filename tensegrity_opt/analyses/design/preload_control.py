@@ -85,6 +85,7 @@ from ...errors import (
     TimeLimitError,
     UnsupportedError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...numerics import chain_solver
@@ -376,6 +377,7 @@ class PreloadController:
     def __init__(self, m: Manipulator, start=None, *, rest_lengths0=None, load=(0.0, 0.0), bounds=None,
                  rate_limit=None, dt: float | None = None, margin: float = 1e-3, objective: str = "change",
                  weights=None, on_infeasible: str = "hold", verify: bool = True, taut: bool = False) -> None:
+        unloaded_only(m, "PreloadController")
         if not isinstance(m, Manipulator):
             raise InvalidParameterError("m must be a Manipulator", field="m")
         if not isinstance(taut, bool):
@@ -1161,6 +1163,7 @@ def plan_preloads(m: Manipulator, targets, *, loads=None, end_angles=None, times
     -------
     PreloadPlan
     """
+    unloaded_only(m, "plan_preloads")
     if isinstance(m, Manipulator) and not m.linear_springs and horizon is not None:
         raise UnsupportedError("a horizon plan's problem models the linear spring law: a chain with tension-only "
                                "springs is planned step by step (horizon=None, taut=True)", field="horizon",

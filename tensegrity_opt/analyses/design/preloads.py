@@ -34,6 +34,7 @@ from ...errors import (
     UnreachableTargetError,
     UnsupportedError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...numerics import RANGE_SHRINK, chain_solver
@@ -168,6 +169,7 @@ def preloads_for_critical_force(m: Manipulator, required: float, *, boundary: st
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
+    unloaded_only(m, "preloads_for_critical_force")
     required = float(required)
     if not math.isfinite(required) or required <= 0:
         raise InvalidParameterError("required must be a positive finite load", field="required")
@@ -251,6 +253,7 @@ def preloads_for_pose(m: Manipulator, target, *, load=(0.0, 0.0), objective: str
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
+    unloaded_only(m, "preloads_for_pose")
     if not m.linear_springs:
         if not taut:
             raise UnsupportedError("preloads_for_pose designs a tension-only chain with every spring kept taut (there "

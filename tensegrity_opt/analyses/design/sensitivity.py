@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...errors import InvalidParameterError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import linear_only
 from ...numerics import chain_solver
@@ -35,6 +36,7 @@ def critical_load_sensitivity(m: Manipulator, boundary: str = "guided", mode: in
     InvalidParameterError
         When the load is repeated (not differentiable there; use the design NLP instead).
     """
+    unloaded_only(m, "critical_load_sensitivity")
     linear_only(m, "critical_load_sensitivity")
     bk = critical_force(m, boundary)
     if mode < 0 or mode >= bk.loads.size:
@@ -81,6 +83,7 @@ def equilibrium_sensitivity(m: Manipulator, eq: Equilibrium) -> dict[str, np.nda
         ``names`` (``"a[0]", ..., "L2_0[n-1]"``); and per-parameter blocks
         ``"dq/<name>"`` (n, n) and ``"dF/<name>"`` (2, n).
     """
+    unloaded_only(m, "equilibrium_sensitivity")
     linear_only(m, "equilibrium_sensitivity")
     n = m.n
     Jz, Jp = chain_solver(m).kkt_parameter_jacobian(np.asarray(eq.q, float), np.asarray(eq.force, float),

@@ -37,6 +37,7 @@ import numpy as np
 
 from ...bounds import bound_pair
 from ...errors import InfeasibleDesignError, InvalidParameterError, TensegrityError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs, linear_only
 from ...numerics import RANGE_SHRINK, chain_solver
@@ -347,6 +348,7 @@ def preloads_for_stiffness(m: Manipulator, target, *, K_desired=None, bounds_K: 
     TimeLimitError
         (``RuntimeError``) the time limit was reached: no result.
     """
+    unloaded_only(m, "preloads_for_stiffness")
     linear_only(m, "preloads_for_stiffness")
     Kd, kb, eb = _check_stiffness_args(K_desired, bounds_K, eig_bounds)
     if isinstance(max_starts, bool) or not isinstance(max_starts, (int, np.integer)) or max_starts < 1:

@@ -27,6 +27,7 @@ from ...errors import (
     StraightNotEquilibriumError,
     TensegrityError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from ...model.springs import linear_only
@@ -238,6 +239,7 @@ def maximize_critical_force(m: Manipulator, vary: Iterable[str] = ("k",),
         (``RuntimeError``, ``code = "timeout"``) the time limit was reached, or IPOPT stopped at its
         own ``max_wall_time`` (``status = "Maximum_WallTime_Exceeded"``): no result.
     """
+    unloaded_only(m, "maximize_critical_force")
     linear_only(m, "maximize_critical_force")
     with _time_limit(timeout):
         return buckling_design(m, vary, bounds, budget, boundary, constraints, required=None)

@@ -45,6 +45,7 @@ from ...errors import (
     StraightNotEquilibriumError,
     UnreachableTargetError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...numerics import KERNEL_MAX, chain_solver, distinct, distinct_indices
 from ...numerics.krawczyk import IntervalCertificate, prove_equilibria
@@ -328,7 +329,7 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
     if m.n == 1:
         return EquilibriumSet([one_segment_equilibrium(m, target)], method="closed_form", status="exact",
                               message="a single segment: the target fixes its joint angle")
-    if not m.linear_springs or (stops and method == "homotopy"):
+    if not m.paper_model or (stops and method == "homotopy"):
         found = _slack_search(m, target, method, timeout)   # tension-only; or every free/stop pattern, certified
         return found if stops is not False else _open_range(found)
     if stops:
@@ -459,6 +460,7 @@ def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: floa
     if method == "homotopy":
         from .tension_only_homotopy import certified_equilibria_slack
 
+        unloaded_only(m, "find_equilibria(method='homotopy')")
         if m.n > SLACK_HOMOTOPY_MAX_N:
             what = "chains of tension-only springs" if not m.linear_springs else "the equilibria on stops (stops=True)"
             raise InvalidParameterError(f"method='homotopy' handles {what} for up to {SLACK_HOMOTOPY_MAX_N} segments "
@@ -476,9 +478,12 @@ def _slack_search(m: Manipulator, target: np.ndarray, method: str, timeout: floa
         eqs = stop_equilibria(m, target) if stops_only else all_equilibria_slack(m, target)
     on_stop = sum(bool(e.at_stop.any()) for e in eqs)
     where = f" ({on_stop} resting on a joint's stop)" if on_stop else ""
+    what = "the closed-range search (Newton under the chain's dead loads" + (" and the springs' laws" if not
+                                                                              m.linear_springs else "") \
+        if m.loaded else "the tension-only search (Newton under the springs' laws"
     return EquilibriumSet(eqs, method="search", status="searched",
-                          message=f"{len(eqs)} equilibria{where} found by the tension-only search (Newton under the "
-                                  "springs' laws over the closed joint range: complete in practice, not certified)")
+                          message=f"{len(eqs)} equilibria{where} found by {what} over the closed joint range: complete "
+                                  "in practice, not certified)")
 
 
 def _with_stops(inner: EquilibriumSet, on: EquilibriumSet) -> EquilibriumSet:

@@ -40,6 +40,7 @@ from ...errors import (
     UnstableStraightError,
     UnsupportedError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
 from ...model.springs import SHORT_TOL
@@ -248,6 +249,7 @@ def critical_force(m: Manipulator, boundary: Boundary = "guided", *,
         For an unknown ``boundary``/``method``, or ``boundary="guided"`` with ``n = 1``
         (a single guided segment cannot deflect).
     """
+    unloaded_only(m, "critical_force")
     if boundary not in ("guided", "free"):
         raise InvalidParameterError(f"boundary must be 'guided' or 'free', got {boundary!r}", field="boundary")
     _taut_when_straight(m)

@@ -71,7 +71,9 @@ class Equilibrium(Outcome, TipForce, SpringFields):
     q : ndarray (n,)
         Relative joint angles (rad), inside the physical range.
     energy : float
-        Elastic energy (force x length).
+        The chain's potential energy (force x length): its springs' elastic energy, plus the potential of its dead
+        loads where it carries some (weights under gravity, joint forces: ``Manipulator.potential_energy``); not
+        the tip force's work.
     force : ndarray (2,)
         Tip force ``[Fx, Fy]`` holding the equilibrium (``grad E = J^T F``); for the
         displacement problem it comes from the constraint multipliers.
@@ -316,7 +318,7 @@ def straight_equilibrium(m: Manipulator, *, check: bool = True) -> Equilibrium:
     q = np.zeros(m.n)
     S0 = tip_slope(m)
     s2 = float(S0 @ S0)
-    fy = float(S0 @ m.gradient(q) / s2) if s2 > 0.0 else 0.0
+    fy = float(S0 @ m.potential_gradient(q) / s2) if s2 > 0.0 else 0.0
     if check:
         r = m.equilibrium_residual(q, (0.0, fy))
         if r > RESIDUAL_TOL:
@@ -325,7 +327,7 @@ def straight_equilibrium(m: Manipulator, *, check: bool = True) -> Equilibrium:
                 f"straight chain is not an equilibrium of this chain under any finite tip force (its spring "
                 f"torques are not proportional to the lever arms: residual {r:.3g} of k c^2; asymmetric "
                 f"preloads bend it); choose dx > 0", field="dx")
-    return Equilibrium(q=q, energy=m.energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
+    return Equilibrium(q=q, energy=m.potential_energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
                        solver=SolverInfo("straight", 0), tip=m.tip(q), control="displacement", status="exact",
                        springs=m.springs)
 
@@ -343,8 +345,8 @@ def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
             f"reaching the target needs q = {q[0]:.6g}, outside the joint range |q| < {m.joint_limits[0]:.6g}",
             field="dx")
     J = m.jacobian(q)
-    force = J[:, 0] * (m.gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
-    return Equilibrium(q=q, energy=m.energy(q), force=force, morse_index=0, stable=True,
+    force = J[:, 0] * (m.potential_gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
+    return Equilibrium(q=q, energy=m.potential_energy(q), force=force, morse_index=0, stable=True,
                        solver=SolverInfo("closed_form", 0), tip=m.tip(q), control="displacement", status="exact",
                        springs=m.springs)
 
@@ -387,6 +389,13 @@ def _under_force_slack(m: Manipulator, force: np.ndarray, q0) -> Equilibrium:
     buckling mode under a load beyond the first critical one (or a small bend where the straight chain's springs are
     not all taut)."""
     q0 = check_q0(m, q0, closed=True)
+    if q0 is None and m.loaded:                 # from the sagged shape (the least potential with the tip free)
+        from .tension_only import least_energy_free
+
+        try:
+            q0 = least_energy_free(m).q
+        except TensegrityError:
+            q0 = 0.02 * np.cos(np.arange(m.n)) * float(np.min(m.joint_limits))
     if q0 is None:
         q0 = np.zeros(m.n)
         try:
@@ -424,7 +433,7 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
         if not math.isfinite(float(v)):
             raise InvalidParameterError(f"{name} must be finite, got {v!r}", field=name)
     force = np.array([float(fx), float(fy)])
-    if not m.linear_springs:
+    if not m.paper_model:
         return _under_force_slack(m, force, q0)
     q0 = check_q0(m, q0)
     if q0 is None:
@@ -453,8 +462,8 @@ def solve_equilibrium_under_force(m: Manipulator, fx: float, fy: float, *, q0=No
 
 
 def free_residual(m: Manipulator, q: np.ndarray, F: np.ndarray, free: np.ndarray) -> float:
-    """The free joints' equilibrium residual in numpy (scaled by k c^2), under each spring's law."""
-    r = m.gradient(q) - m.jacobian(q).T @ F
+    """The free joints' equilibrium residual in numpy (scaled by k c^2), under each spring's law and the dead loads."""
+    r = m.potential_gradient(q) - m.jacobian(q).T @ F
     return float(np.abs(r[free]).max(initial=0.0)) / m.torque_scale if math.isfinite(float(r.sum())) else math.inf
 
 
@@ -517,6 +526,7 @@ def _equilibrium_under_force_slack(m: Manipulator, force: np.ndarray, q0: np.nda
             raise UnsupportedError(f"both springs of segment {i} are slack under the tip force ({force[0]:g}, "
                                    f"{force[1]:g}) and its joint is left undetermined (a free joint: no stiffness and "
                                    "nothing holds it)", field=f"segments[{i}]", status="free_joint")
-    return Equilibrium(q=q.copy(), energy=float(m.energy(q)), force=force.copy(), morse_index=morse, stable=stable,
+    return Equilibrium(q=q.copy(), energy=float(m.potential_energy(q)), force=force.copy(), morse_index=morse,
+                       stable=stable,
                        solver=SolverInfo(res.status, res.iterations), tip=m.tip(q), control="force",
                        hessian_eigenvalues=w, springs=m.springs, stops=(side != 0.0, np.maximum(contact, 0.0)))

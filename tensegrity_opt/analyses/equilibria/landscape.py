@@ -18,6 +18,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError, UnsupportedError
+from ...model.loads import load_potential
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
 from ...serialize import nullables, numbers
@@ -222,6 +223,8 @@ def energy_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int
             E = 0.5 * ((m.k1 * (L1 - m.L1_0) ** 2).sum(-1) + (m.k2 * (L2 - m.L2_0) ** 2).sum(-1))
         else:                                   # each spring's law (a slack spring holds nothing)
             E = m.springs.energy(q)
+        if m.loaded:                            # the dead loads' potential (weights, joint forces)
+            E = E + load_potential(m, q.reshape(-1, m.n)).reshape(E.shape)
         inside = np.all(np.abs(q) < lim, axis=-1)
         energies.append(np.where(inside, E, np.nan))
         configs.append(q)

@@ -30,6 +30,7 @@ from ...errors import (
     UnreachableTargetError,
     UnsupportedError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...numerics import KERNEL_MAX, SAME_Q, LocalResult, chain_solver, distinct, distinct_indices, same
 from ...outcome import SolverInfo
@@ -140,20 +141,26 @@ def solve_equilibrium(m: Manipulator, dx: float, dy: float = 0.0, *, q0=None, lo
     (:mod:`~.tension_only_homotopy`); ``method="homotopy"`` answers from that set; other methods are refused
     (``field="method"``).
     """
-    if not m.linear_springs:
-        return _solve_tension_only(m, dx, dy, q0=q0, local=local, method=method, certify=bool(certify))
+    if not m.paper_model:
+        return _solve_tension_only(m, dx, dy, q0=q0, local=local, method=method, certify=bool(certify),
+                                   stops=bool(stops))
     return _solve_equilibrium(m, dx, dy, q0=q0, local=local, method=method, n_random=n_random, max_modes=max_modes,
                               certify=bool(certify), stops=bool(stops))
 
 
 def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool, method: str,
-                        certify: bool) -> Equilibrium:
-    """:func:`solve_equilibrium` of a chain with tension-only springs (:mod:`.tension_only`)."""
+                        certify: bool, stops: bool = True) -> Equilibrium:
+    """:func:`solve_equilibrium` of a chain with tension-only springs or dead loads (:mod:`.tension_only`)."""
 
     if method not in ("auto", "ipopt", "homotopy"):
-        raise UnsupportedError(f"method {method!r} models the linear spring law; a chain with tension-only springs "
-                               "is solved by its own search (method 'auto') or its patterns' homotopy (method "
-                               "'homotopy')", field="method", spring="tension_only")
+        what = "a chain with tension-only springs" if not m.linear_springs else "a chain with dead loads"
+        raise UnsupportedError(f"method {method!r} models the paper's chain (linear springs, no dead load); {what} "
+                               "is solved by its own search (method 'auto')"
+                               + (" or its patterns' homotopy (method 'homotopy')" if not m.loaded else ""),
+                               field="method", spring="linear" if m.linear_springs else "tension_only")
+    if m.loaded and (method == "homotopy" or certify):
+        unloaded_only(m, "solve_equilibrium(method='homotopy')" if method == "homotopy" else
+                      "solve_equilibrium(certify=True)")
     target = m.check_reachable(dx, dy)
     q0 = check_q0(m, q0, closed=True)           # the closed range: a start may rest on a stop
     if local and q0 is None:
@@ -161,6 +168,11 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
     if method == "homotopy" and not local:
         return _least_certified(m, dx, dy, q0)
     best = least_energy_slack(m, dx, dy, target, q0=q0, local=local)
+    if not stops and m.linear_springs and best.at_stop.any():
+        raise NoEquilibriumError(
+            "the least-energy configuration under the chain's loads rests on a joint stop "
+            f"(joint {int(np.flatnonzero(best.at_stop)[0]) + 1}) and stops=False asks for the open range only",
+            status="on_stop")
     if certify and not local:
         return _certify_slack(m, dx, dy, target, best)
     return best

@@ -53,6 +53,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome
 from ...serialize import number
@@ -574,6 +575,7 @@ def energy_lower_bound(m: Manipulator, dx: float, dy: float = 0.0, q_best: Any =
     EnergyBound
         ``bound``, ``energy``, ``gap``, ``tolerance``, ``status`` (``"certified"`` or ``"open"``).
     """
+    unloaded_only(m, "energy_lower_bound")
     t0 = time.perf_counter()
     target = m.check_reachable(dx, dy)
     ch = _Chain(m, target)

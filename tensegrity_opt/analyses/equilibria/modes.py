@@ -4,8 +4,9 @@ The linearised motion about an equilibrium ``q*`` is ``M dq'' + K dq = 0`` on th
 
 * ``M`` the chain's mass matrix (:func:`~tensegrity_opt.model.inertia.mass_matrix`: the triangles' centroids and the
   payload as point masses, plus each triangle's rotational inertia);
-* ``K`` the Hessian of the potential ``E(q) - F . tip(q)`` in the joint angles: ``diag(E_i''(q_i))`` plus
-  ``F . r_max(j, k)`` (``r_j`` the vector from joint ``j`` to the tip; ``F`` the tip force, under a held tip the
+* ``K`` the Hessian of the potential ``E(q) + V(q) - F . tip(q)`` in the joint angles: ``diag(E_i''(q_i))`` plus
+  the dead loads' ``sum_{l >= max(j, k)} G_l . u_l`` (:mod:`~tensegrity_opt.model.loads`) plus ``F . r_max(j, k)``
+  (``r_j`` the vector from joint ``j`` to the tip; ``F`` the tip force, under a held tip the
   constraint's multiplier: the same Lagrangian Hessian). Under the tension-only law ``E_i''`` is the one of the
   springs' states at ``q*``;
 * the motions: with the tip held (the equilibrium was posed by a tip displacement) those tangent to the tip
@@ -118,7 +119,8 @@ class Modes(Outcome):
 
 
 def stiffness_matrix(m: Manipulator, q: np.ndarray, force: np.ndarray) -> np.ndarray:
-    """``K`` (n, n): the Hessian of ``E(q) - F . tip(q)`` in the joint angles (module docstring)."""
+    """``K`` (n, n): the Hessian of ``E(q) + V(q) - F . tip(q)`` in the joint angles (module docstring; ``V`` the
+    chain's dead loads, :mod:`~tensegrity_opt.model.loads`)."""
     q = np.asarray(q, dtype=float)
     force = np.asarray(force, dtype=float)
     psi = np.cumsum(q)
@@ -128,6 +130,8 @@ def stiffness_matrix(m: Manipulator, q: np.ndarray, force: np.ndarray) -> np.nda
     n = m.n
     K = rF[np.maximum.outer(np.arange(n), np.arange(n))]
     K[np.diag_indices(n)] += np.array([-float(s.dtorque(v)) for s, v in zip(m.segments, q)])
+    if m.loaded:                                # the dead loads' potential (weights, joint forces)
+        K += m.load_hessian(q)
     return K
 
 

@@ -41,6 +41,7 @@ import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError, UnsupportedError
 from ...model.combinations import combination_indices, sample_combinations
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import linear_only
 from ...numerics import LocalResult, chain_solver, distinct
@@ -397,6 +398,7 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
     TimeLimitError
         A :func:`tensegrity_opt.time_limit` expired during the search.
     """
+    unloaded_only(m, "find_equilibria_under_force")
     linear_only(m, "find_equilibria_under_force")
     fx, fy = _finite("fx", fx), _finite("fy", fy)
     if method not in ("search", "homotopy"):
@@ -457,11 +459,15 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
     which : {"least_energy"}
         The only rule.
 
+    A chain with dead loads (weights under gravity, joint forces: the sagged shape) is no longer a sum of one-joint
+    energies: its least potential ``E + V`` with the tip free is searched over the closed joint range
+    (:func:`~.tension_only.least_energy_free`: measured, ``status="converged"``; a joint may rest on its stop).
+
     Returns
     -------
     Equilibrium
         ``control="force"``, ``force = (0, 0)``, ``stable=True``, classified by the full Hessian,
-        ``status="exact"``.
+        ``status="exact"`` (``"converged"`` under dead loads).
 
     Raises
     ------
@@ -473,6 +479,10 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
     """
     if which != "least_energy":
         raise InvalidParameterError(f"which must be 'least_energy', got {which!r}", field="which")
+    if m.loaded:
+        from .tension_only import least_energy_free
+
+        return least_energy_free(m)
     if not m.linear_springs:
         return _slack_rest(m)
     q = _least_energy_well(m)

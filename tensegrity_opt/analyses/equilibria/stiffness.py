@@ -48,7 +48,7 @@ def cartesian_stiffness(m: Manipulator, eq: Equilibrium) -> np.ndarray:
     if q.shape != (m.n,):
         raise InvalidParameterError(f"eq has {q.size} joint angles, the manipulator {m.n}", field="eq")
     try:
-        if m.linear_springs and not eq.at_stop.any():
+        if m.paper_model and not eq.at_stop.any():
             K = chain_solver(m).tangent_stiffness(q, np.asarray(eq.force, float))
         else:
             K = _held_stiffness(m, q, np.asarray(eq.force, float), np.asarray(eq.at_stop, bool))

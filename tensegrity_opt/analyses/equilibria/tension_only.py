@@ -38,6 +38,7 @@ from __future__ import annotations
 import numpy as np
 
 from ...errors import NoEquilibriumError, UnreachableTargetError, UnsupportedError
+from ...model.loads import load_potential
 from ...model.manipulator import Manipulator
 from ...numerics import distinct_rows
 from ...numerics.slack_nlp import slack_nlp
@@ -55,7 +56,8 @@ from .equilibrium import (
 )
 from .seeds import project_to_target
 
-__all__ = ["least_energy_slack", "all_equilibria_slack", "stop_equilibria", "STARTS", "STOP_TOL", "SEARCH_PER_JOINT",
+__all__ = ["least_energy_slack", "least_energy_free", "all_equilibria_slack",
+           "stop_equilibria", "STARTS", "STOP_TOL", "SEARCH_PER_JOINT",
            "STOP_STARTS"]
 
 #: IPOPT starts of the search taken from the ranked sample (besides q0).
@@ -121,6 +123,67 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
     return best
 
 
+def least_energy_free(m: Manipulator, force=(0.0, 0.0)) -> Equilibrium:
+    """The least-potential stable equilibrium of ``m`` with its tip free under the dead tip load ``force`` (default
+    none: the rest configuration), in the closed joint range: the local solve of
+    :func:`~.equilibrium._equilibrium_under_force_slack` (IPOPT on the slack problem with the tip rows free, Newton,
+    the checks in numpy) from straight and from the ``STARTS`` lowest-potential distinct configurations of
+    ``SAMPLE_PER_JOINT * n`` seeded random ones of the closed range (a quarter with one joint on a stop), ranked
+    by ``E + V - F . tip`` (numpy, all at once). A measured global search, not a certified one (``status``
+    ``"converged"``)."""
+    from .equilibrium import _equilibrium_under_force_slack
+
+    n, lim = m.n, m.joint_limits
+    F = np.asarray(force, dtype=float)
+    rng = np.random.default_rng(20261209 + n)
+    Q = rng.uniform(-0.98, 0.98, size=(SAMPLE_PER_JOINT * n, n)) * lim
+    k = Q.shape[0] // 4
+    j = rng.integers(0, n, size=k)
+    Q[np.arange(k), j] = rng.choice([-1.0, 1.0], size=k) * lim[j]
+    tip = m.tip_kinematics(Q).tip
+    E = m.springs.energy(Q) + (load_potential(m, Q) if m.loaded else 0.0) - tip @ F
+    starts = [np.zeros(n)]
+    for i in np.argsort(E, kind="stable"):
+        if all(float(np.abs(Q[i] - s).max()) > DISTINCT for s in starts):
+            starts.append(Q[i])
+        if len(starts) > STARTS:
+            break
+    found: list[Equilibrium] = []
+    refused: UnsupportedError | None = None
+    failures: list[str] = []
+    for qs in starts:
+        check_time("the free-tip search")
+        try:
+            eq = _equilibrium_under_force_slack(m, F, qs)
+        except UnsupportedError as exc:
+            refused = exc
+            continue
+        except NoEquilibriumError as exc:
+            failures.append(str(exc.details.get("status") or "failed"))
+            continue
+        if eq.stable:
+            found.append(eq)
+    if not found:
+        if refused is not None:
+            raise refused
+        raise NoEquilibriumError(f"no stable equilibrium with the tip free under the force ({F[0]:g}, {F[1]:g}) found "
+                                 f"from {len(starts)} starts ({', '.join(sorted(set(failures))) or 'all unstable'})",
+                                 status="no_stable_equilibrium")
+    key = [e.energy - float(F @ e.tip) for e in found]
+    e0 = min(key)
+    tied = [e for e, v in zip(found, key) if v <= e0 + 1e-10 * max(1.0, abs(e0))]
+    best = max(tied, key=lambda e: (next((float(np.sign(v)) for v in e.q if abs(v) > 1e-9), 0.0),
+                                    -float(np.abs(e.q).max())))
+    if F[1] == 0.0 and m == m.mirrored() and next((v for v in best.q if abs(v) > 1e-9), 0.0) < 0.0:
+        try:                                    # its mirror image ties: the one with q_1 > 0 (as the other searches)
+            twin = _equilibrium_under_force_slack(m, F, -best.q)
+            if twin.stable and abs(twin.energy - best.energy) <= 1e-10 * max(1.0, abs(best.energy)):
+                best = twin
+        except (NoEquilibriumError, UnsupportedError):
+            pass
+    return best
+
+
 def _least(found: list[Equilibrium], q0) -> Equilibrium | None:
     """The least energy of ``found``; of equal ones (mirror images at ``dy = 0``, within ``1e-10`` relative) the one
     nearest ``q0``, else the one whose first non-zero angle is positive (as the linear law's search picks)."""
@@ -151,7 +214,8 @@ def _starts(m: Manipulator, target: np.ndarray, q0) -> list[np.ndarray]:
         Q = np.vstack([Q, _rigid(m, target, rng)])
     given = len(starts)
     if Q.shape[0]:
-        for i in np.argsort(m.springs.energy(Q), kind="stable"):
+        E = m.springs.energy(Q) + (load_potential(m, Q) if m.loaded else 0.0)
+        for i in np.argsort(E, kind="stable"):
             if all(float(np.abs(Q[i] - s).max()) > DISTINCT for s in starts):
                 starts.append(Q[i])
             if len(starts) - given >= STARTS:
@@ -262,7 +326,7 @@ def _classified(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, target: np.nd
                 f"undetermined (a free joint: no stiffness, and the tip constraint does not hold it); the least "
                 f"energy is {E:.6g} but its configuration is not unique", field=f"segments[{i}]",
                 status="free_joint")
-    return Equilibrium(q=q.copy(), energy=float(m.energy(q)), force=F.copy(), morse_index=morse, stable=stable,
+    return Equilibrium(q=q.copy(), energy=m.potential_energy(q), force=F.copy(), morse_index=morse, stable=stable,
                        solver=solver, tip=m.tip(q), control="displacement", hessian_eigenvalues=w,
                        springs=m.springs, stops=(side != 0.0, contact))
 

@@ -52,6 +52,7 @@ from ...errors import (
     TimeLimitError,
     UnreachableTargetError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...numerics import DENSE_MAX, chain_solver
 from ...numerics.homotopy import homotopy_available
@@ -503,6 +504,7 @@ def stability_atlas(m: Manipulator, dx, dy, *, method: str = "search", edges: bo
     >>> at.n_stable.max(), len(at.switches) > 0                          # doctest: +SKIP
     (4, True)
     """
+    unloaded_only(m, "stability_atlas")
     X, Y = _check(m, dx, dy, method)
     targets = [[AtlasTarget(float(x), float(y), error="time_limit: not computed") for x in X] for y in Y]
 

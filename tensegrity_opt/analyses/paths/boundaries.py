@@ -37,6 +37,7 @@ import numpy as np
 import scipy.optimize as so
 
 from ...errors import InvalidParameterError, NoEquilibriumError, TensegrityError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from ...model.springs import linear_only
@@ -398,6 +399,7 @@ def stability_boundary(m: Manipulator, control: Control | str = "guided", parame
     NoEquilibriumError
         (``RuntimeError``) when the branch at ``p = 0`` never loses stability before ``t_max``.
     """
+    unloaded_only(m, "stability_boundary")
     linear_only(m, "stability_boundary")
     with time_limit(timeout):
         return _boundary(m, control, parameter, start, p_min, p_max, max_points, t_max, step, max_step, control_kw)

@@ -26,6 +26,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...outcome import Outcome
@@ -278,6 +279,7 @@ def trace_branch(m: Manipulator, start=None, control: Control | str = "load", *,
     NoEquilibriumError
         (``RuntimeError``) when Newton cannot put the start on the branch.
     """
+    unloaded_only(m, "trace_branch")
     if timeout is not None:
         with time_limit(timeout):
             return trace_branch(m, start, control, t_max=t_max, t_min=t_min, max_points=max_points, step=step,

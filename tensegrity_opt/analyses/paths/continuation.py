@@ -59,6 +59,7 @@ from functools import lru_cache
 import numpy as np
 
 from ...errors import InvalidParameterError, SolverError, TensegrityError, TimeLimitError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import linear_only
 from ...numerics import chain_solver
@@ -110,6 +111,7 @@ def solve_equilibria_batch(m: Manipulator, targets, *, continuation: bool = True
         One entry per target: an :class:`Equilibrium` (stable) or a :class:`TensegrityError`
         (a ``ValueError`` or ``RuntimeError`` subclass with ``code``, ``field``, ``status``).
     """
+    unloaded_only(m, "solve_equilibria_batch")
     linear_only(m, "solve_equilibria_batch")
     pts = _targets(targets)
     N = pts.shape[0]
@@ -247,6 +249,7 @@ class Tracker:
     """
 
     def __init__(self, m: Manipulator, start: Equilibrium | None = None, *, jump: bool = True) -> None:
+        unloaded_only(m, "Tracker")
         if start is not None and (start.control != "displacement" or start.q.shape != (m.n,)):
             raise ValueError("start must be a displacement-controlled equilibrium of this manipulator")
         linear_only(m, "Tracker")

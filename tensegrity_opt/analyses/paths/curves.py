@@ -58,6 +58,7 @@ from ...errors import (
     UnreachableTargetError,
     UnsupportedError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, shape_labels
 from ...model.springs import SpringFields, Springs, linear_only
@@ -470,9 +471,10 @@ def force_deflection(m: Manipulator, dx, dy=0.0, branch: Literal["stable", "all"
         raise InvalidParameterError(f"branch must be 'stable' or 'all', got {branch!r}", field="branch")
     if reference not in ("straight", "rest"):
         raise InvalidParameterError(f"reference must be 'straight' or 'rest', got {reference!r}", field="reference")
-    if not m.linear_springs:
+    if not m.paper_model:
         if reference == "rest":
             linear_only(m, "force_deflection (reference='rest')")
+            unloaded_only(m, "force_deflection (reference='rest')")
         return _slack_curve(m, dx, dy, branch)
     if reference == "rest":
         return _from_rest(m, dx, dy, branch, recheck_every)
@@ -579,9 +581,11 @@ def _slack_curve(m: Manipulator, dx, dy, branch: str) -> Curve:
     differs, the jump is a ``"switch"`` when that continuation is still a stable equilibrium (of higher energy),
     else a ``"snap"``. A point with no stable equilibrium (or a free joint left undetermined) ends the curve."""
     if branch != "stable":
+        what = "tension-only springs" if not m.linear_springs else "dead loads"
         raise UnsupportedError("branch='all' follows every branch by the linear law's compiled continuation; for a "
-                               "chain with tension-only springs the curve follows the least-energy stable one "
-                               "(branch='stable')", field="branch", spring="tension_only")
+                               f"chain with {what} the curve follows the least-energy stable one "
+                               "(branch='stable')", field="branch",
+                               spring="tension_only" if not m.linear_springs else "linear")
     dxs, dys = _points(m, dx, dy)
     npts = dxs.size
     straight = (dxs == 0.0) & (dys == 0.0)

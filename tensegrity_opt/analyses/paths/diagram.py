@@ -13,6 +13,7 @@ import numpy as np
 import scipy.optimize as so
 
 from ...errors import InvalidParameterError, NoEquilibriumError, SingularStartError, TensegrityError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import linear_only
 from ...timelimit import expired, time_limit
@@ -115,6 +116,7 @@ def bifurcation_diagram(m: Manipulator, start=None, control: Control | str = "lo
         buckled arms), then the switched branches breadth-first;
         at most ``max_branches``.
     """
+    unloaded_only(m, "bifurcation_diagram")
     linear_only(m, "bifurcation_diagram")
     if isinstance(depth, bool) or not isinstance(depth, (int, np.integer)) or depth < 0:
         raise InvalidParameterError(f"depth must be an integer >= 0, got {depth!r}", field="depth")

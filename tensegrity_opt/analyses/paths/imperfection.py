@@ -42,6 +42,7 @@ import numpy as np
 
 from ...checks import real_array
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import linear_only
 from ...outcome import Outcome, freeze
@@ -294,6 +295,7 @@ def imperfection_sensitivity(m: Manipulator, amplitudes, *, imperfection="asymme
         (``ValueError``) for bad amplitudes (also an amplitude giving an invalid chain, e.g. a rest length
         <= 0), imperfection, direction, boundary or ``max_load``.
     """
+    unloaded_only(m, "imperfection_sensitivity")
     linear_only(m, "imperfection_sensitivity")
     amps = _check_amplitudes(amplitudes)
     if isinstance(imperfection, str) and imperfection not in PARAMETERS:

@@ -31,6 +31,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError, NoEquilibriumError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...outcome import Outcome
@@ -245,6 +246,7 @@ def limit_load(m: Manipulator, direction=(-1.0, 0.0), boundary: str = "free", ma
         (``ValueError``) for a bad direction, boundary, ``base``, ``max_load``, or a start that is not a
         stable equilibrium under ``base`` (a rest configuration when it is zero).
     """
+    unloaded_only(m, "limit_load")
     if boundary not in ("free", "guided"):
         raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")
     control = Control.load(direction, base) if boundary == "free" else Control.guided(direction, base)

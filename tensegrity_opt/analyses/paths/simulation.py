@@ -51,6 +51,7 @@ from ...errors import (
     TimeLimitError,
     UnreachableTargetError,
 )
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...numerics import DENSE_MAX
@@ -358,6 +359,7 @@ def simulate(m: Manipulator, preloads=None, loads=None, *, tip: str = "free", ta
     >>> sim.status, [(e.kind, e.step, round(float(e.load[1]), 6)) for e in sim.snaps]
     ('complete', [('snap', 15, 0.153111), ('snap', 69, -0.097754)])
     """
+    unloaded_only(m, "simulate")
     held = tip == "held"
     P, L, T = _inputs(m, preloads, loads, tip, targets)
     if not (isinstance(perturbation, (int, float)) and math.isfinite(perturbation) and 0 < perturbation < 0.1):

@@ -46,6 +46,7 @@ import numpy as np
 import scipy.optimize as so
 
 from ...errors import InvalidParameterError, TensegrityError, TimeLimitError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.springs import SpringFields, Springs
 from ...numerics import DENSE_MAX, chain_solver
@@ -694,6 +695,7 @@ def transition(m: Manipulator, start, preloads, loads=None, *, perturbation: flo
     >>> tr.status, len(tr.snaps)
     ('snapped', 1)
     """
+    unloaded_only(m, "transition")
     if not isinstance(m, Manipulator):
         raise InvalidParameterError("m must be a Manipulator", field="m")
     if m.n > DENSE_MAX:

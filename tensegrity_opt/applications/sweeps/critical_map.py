@@ -17,6 +17,7 @@ import numpy as np
 
 from ...analyses.equilibria.buckling import critical_force
 from ...errors import InvalidParameterError, TensegrityError
+from ...model.loads import unloaded_only
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
 from ...serialize import nullables, numbers
@@ -135,6 +136,7 @@ def critical_load_map(m: Manipulator, param_x: str, values_x: Any, param_y: str,
     InvalidParameterError
         For a parameter, values or boundary outside the above (``field`` names the argument).
     """
+    unloaded_only(m, "critical_load_map")
     for f, p in (("param_x", param_x), ("param_y", param_y)):
         if p not in DESIGN_VARIABLES:
             raise InvalidParameterError(f"{f} must be one of {', '.join(DESIGN_VARIABLES)}, got {p!r}", field=f)
