@@ -46,10 +46,12 @@ def build_segment(seg: s.SegmentIn) -> to.Segment:
 
 def manipulator_key(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> tuple[Any, ...]:
     """A chain description as a hashable tuple of plain numbers (cache key; cheap to send to a process)."""
+    loads = (m.payload, None if m.gravity is None else tuple(m.gravity),
+             tuple((f.joint, tuple(f.force)) for f in m.joint_forces))
     if isinstance(m, s.UniformManipulatorIn):
-        return ("uniform", m.n, m.a, m.b, pair(m.k), pair(m.L0), m.spring, m.mass, m.inertia, m.payload)
-    return ("segments", m.payload) + tuple((seg.a, seg.b, pair(seg.k), pair(seg.L0), seg.spring, seg.mass,
-                                            seg.inertia) for seg in m.segments)
+        return ("uniform", loads, m.n, m.a, m.b, pair(m.k), pair(m.L0), m.spring, m.mass, m.inertia)
+    return ("segments", loads) + tuple((seg.a, seg.b, pair(seg.k), pair(seg.L0), seg.spring, seg.mass,
+                                        seg.inertia) for seg in m.segments)
 
 
 @lru_cache(maxsize=256)
@@ -57,11 +59,13 @@ def manipulator(key: tuple[Any, ...]) -> to.Manipulator:
     """The chain of a key, by the library's own reader of the two JSON forms (:meth:`Manipulator.from_dict`);
     the same description gives the same (cached, immutable) object, so its derived arrays, buckling modes and
     seed directions are computed once, not per request."""
+    payload, gravity, forces = key[1]
+    loads = {"payload": payload, "gravity": gravity, "joint_forces": forces}
     if key[0] == "uniform":
-        return to.Manipulator.from_dict(dict(zip(("n", "a", "b", "k", "L0", "spring", "mass", "inertia", "payload"),
-                                                 key[1:])))
+        return to.Manipulator.from_dict({**dict(zip(("n", "a", "b", "k", "L0", "spring", "mass", "inertia"),
+                                                     key[2:])), **loads})
     return to.Manipulator.from_dict({"segments": [dict(zip(("a", "b", "k", "L0", "spring", "mass", "inertia"), seg))
-                                                  for seg in key[2:]], "payload": key[1]})
+                                                  for seg in key[2:]], **loads})
 
 
 def build_manipulator(m: s.UniformManipulatorIn | s.SegmentedManipulatorIn) -> to.Manipulator:
@@ -143,7 +147,7 @@ def bounded_search_may_settle(key: tuple[Any, ...], max_segments: int) -> bool:
     (:func:`manipulator_key`): at most ``max_segments`` segments (decided from the key, the chain is not built)
     and every segment monotonic (bistable ones often give Newton saddles only). Decided by the caller, so
     another request goes straight to the full search instead of a round trip answering "not settled"."""
-    if (key[1] if key[0] == "uniform" else len(key) - 1) > max_segments:
+    if (key[2] if key[0] == "uniform" else len(key) - 2) > max_segments:
         return False
     m = manipulator(key)                    # the chain is cached: the solve reuses it
-    return m.monotonic and m.linear_springs  # the tension-only search is not a bounded Newton one
+    return m.monotonic and m.paper_model    # the closed-range search (tension-only, loads) is not a bounded Newton one

@@ -165,7 +165,48 @@ Mass = Annotated[float, Field(ge=0.0, le=1e12, allow_inf_nan=False)]
 MASS_DOC = ("the segment's mass (>= 0, default 0): two equal triangles whose centroids lie on the chain's axis 2b/3 "
          "from the joint; without gravity it changes no equilibrium, it sets the vibration modes (`/v1/modes`)")
 INERTIA_DOC = "each triangle's rotational inertia about its centroid (>= 0, default 0; mass x length^2)"
-PAYLOAD_DOC = "a point mass at the tip (>= 0, default 0): it sets the vibration modes (`/v1/modes`)"
+PAYLOAD_DOC = ("a point mass at the tip (>= 0, default 0): it sets the vibration modes (`/v1/modes`) and, under "
+               "`gravity`, weighs on the chain")
+#: A force or acceleration vector in the chain's plane ``[x, y]``.
+Vector = Annotated[list[ForceValue], Field(min_length=2, max_length=2)]
+GRAVITY_DOC = ("the gravity vector [gx, gy] in the chain's plane (default none: no weight); [0, -9.81] for a chain "
+               "pointing along +x in a vertical plane, any direction (a tilted base). The triangles' and the payload's "
+               "weights then load the chain in every analysis that honours dead loads; the others refuse it (422 "
+               "`unsupported`, field `gravity`)")
+JOINT_FORCES_DOC = ("dead point forces at joints, beside the tip's load: [{\"joint\": j, \"force\": [fx, fy]}], joints "
+                    "counted from 1 at the base (joint 1 is fixed: a force there does no work); analyses that do not "
+                    "honour dead loads refuse them (422 `unsupported`, field `joint_forces`)")
+
+
+class JointForceIn(BaseModel):
+    """A dead point force at a joint."""
+
+    model_config = ConfigDict(strict=True, extra="forbid",
+                              json_schema_extra={"examples": [{"joint": 3, "force": [0.0, -0.5]}]})
+
+    joint: Int = Field(ge=1, le=HARD_MAX_SEGMENTS, description="the joint, counted from 1 at the base (at most n)")
+    force: Vector = Field(description="the force [fx, fy] (force units), fixed in direction")
+
+
+class LoadsOut(BaseModel):
+    """The dead loads a result was computed under (null where the chain carries none)."""
+
+    gravity: list[float] | None = Field(description="the gravity vector [gx, gy], or null")
+    payload: float = Field(description="the point mass at the tip")
+    joint_forces: list[JointForceIn] = Field(description="the dead forces at joints")
+
+
+LOADS_OUT_DOC = ("the dead loads this was computed under (gravity on the chain's masses, joint forces); null where "
+                 "the chain carries none")
+
+
+class _ChainLoads(BaseModel):
+    """The chain's own loads (every form of a chain in a request takes them)."""
+
+    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
+    gravity: Vector | None = Field(None, description=GRAVITY_DOC)
+    joint_forces: list[JointForceIn] = Field(default_factory=list, max_length=HARD_MAX_SEGMENTS,
+                                             description=JOINT_FORCES_DOC)
 
 
 class SegmentIn(BaseModel):
@@ -184,7 +225,7 @@ class SegmentIn(BaseModel):
     inertia: Mass = Field(0.0, description=INERTIA_DOC)
 
 
-class UniformManipulatorIn(BaseModel):
+class UniformManipulatorIn(_ChainLoads):
     """`n` identical segments."""
 
     model_config = ConfigDict(strict=True, extra="forbid",
@@ -199,10 +240,9 @@ class UniformManipulatorIn(BaseModel):
     spring: SpringLaw = "linear"
     mass: Mass = Field(0.0, description=MASS_DOC)
     inertia: Mass = Field(0.0, description=INERTIA_DOC)
-    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
-class SegmentedManipulatorIn(BaseModel):
+class SegmentedManipulatorIn(_ChainLoads):
     """Segments listed from base to tip; they may differ in every parameter."""
 
     model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
@@ -210,7 +250,6 @@ class SegmentedManipulatorIn(BaseModel):
 
     segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
                                       description="segments from base to tip (server limit TENSEGRITY_MAX_SEGMENTS)")
-    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
 def _manipulator_kind(v: Any) -> str:

@@ -10,11 +10,13 @@ import tensegrity_opt as to
 
 from ..config import HARD_MAX_SEGMENTS
 from .common import (
+    LOADS_OUT_DOC,
     PAPER_CHAIN,
     Angle,
     Deflection,
     Force,
     ForceValue,
+    LoadsOut,
     ManipulatorIn,
     SolverInfo,
     SpringStateOut,
@@ -102,7 +104,8 @@ class EquilibriumOut(SpringStateOut, outcome_model(to.Equilibrium)):
     """An equilibrium configuration."""
 
     q: list[float] = Field(description="relative joint angles (rad)")
-    energy: float = Field(description="elastic energy (force x length)")
+    energy: float = Field(description="the chain's potential energy (force x length): its springs' elastic energy, "
+                                      "plus the potential of its dead loads where it carries some (`loads`)")
     force: Force
     morse_index: int = Field(description="negative eigenvalues of the reduced Hessian (0: stable)")
     stable: bool
@@ -118,6 +121,7 @@ class EquilibriumOut(SpringStateOut, outcome_model(to.Equilibrium)):
                                             "where springs go slack: the tension-only law); false inside the range")
     contact_torques: list[float] = Field(description="the torque each stop supplies (>= 0; 0 where a joint is not "
                                                      "at its stop)")
+    loads: LoadsOut | None = Field(description=LOADS_OUT_DOC)
 
 
 class RootBoxOut(BaseModel):

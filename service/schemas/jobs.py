@@ -30,7 +30,6 @@ from ..config import HARD_MAX_SEGMENTS
 from .common import (
     INERTIA_DOC,
     MASS_DOC,
-    PAYLOAD_DOC,
     Deflection,
     Finite,
     ForceValue,
@@ -42,6 +41,7 @@ from .common import (
     Stiff,
     StiffPair,
     TotalLength,
+    _ChainLoads,
     bounds_of,
     integral,
 )
@@ -74,7 +74,7 @@ def _values(item: Any, what: str) -> Any:
     return Annotated[list[item], Field(min_length=1, max_length=MAX_GRID_VALUES, description=what)]
 
 
-class SweepUniformManipulator(BaseModel):
+class SweepUniformManipulator(_ChainLoads):
     """The uniform base chain; a point's own n, a, b, k, L0 replace these."""
 
     model_config = _STRICT
@@ -87,10 +87,9 @@ class SweepUniformManipulator(BaseModel):
     spring: SpringLaw = "linear"
     mass: Mass = Field(0.0, description=MASS_DOC)
     inertia: Mass = Field(0.0, description=INERTIA_DOC)
-    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
-class SweepSegmentedManipulator(BaseModel):
+class SweepSegmentedManipulator(_ChainLoads):
     """The base chain segment by segment, base to tip (pre-bent: `L0` the pair `[L1_0, L2_0]`; heterogeneous):
     fixed, so the points vary only dx, dy, load."""
 
@@ -100,7 +99,6 @@ class SweepSegmentedManipulator(BaseModel):
     segments: list[SegmentIn] = Field(min_length=1, max_length=HARD_MAX_SEGMENTS,
                                       description="segments from base to tip ({a, b, k, L0, spring}; k and L0 a "
                                                   "number or the pair of the two springs)")
-    payload: Mass = Field(0.0, description=PAYLOAD_DOC)
 
 
 def _sweep_manipulator_kind(v: Any) -> str:

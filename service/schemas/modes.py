@@ -7,7 +7,7 @@ from typing import Literal
 from pydantic import BaseModel, ConfigDict, Field
 
 from ..config import HARD_MAX_SEGMENTS
-from .common import Angle, ForceValue, ManipulatorIn, TipDx, TipDy
+from .common import LOADS_OUT_DOC, Angle, ForceValue, LoadsOut, ManipulatorIn, TipDx, TipDy
 from .equilibrium import EquilibriumOut
 
 #: The example chain of ``/v1/modes``: the paper's chain with masses.
@@ -54,4 +54,5 @@ class ModesOut(BaseModel):
     tip: Literal["held", "loaded"]
     held_joints: list[bool] = Field(description="the joints held on their stop")
     total_mass: float = Field(description="the segments' masses and the payload")
+    loads: LoadsOut | None = Field(description=LOADS_OUT_DOC)
     equilibrium: EquilibriumOut

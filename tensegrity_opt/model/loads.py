@@ -30,7 +30,8 @@ from ..errors import InvalidParameterError, UnsupportedError
 if TYPE_CHECKING:
     from .manipulator import Manipulator
 
-__all__ = ["check_gravity", "check_joint_forces", "link_loads", "load_offset", "load_potential", "load_gradient",
+__all__ = ["loads_key", "loads_json", "describe", "check_gravity", "check_joint_forces", "link_loads", "load_offset",
+           "load_potential", "load_gradient",
            "load_hessian", "unloaded_only", "LOAD_ANALYSES"]
 
 #: The analyses that honour the loads (named by the refusal of the others).
@@ -149,6 +150,34 @@ def load_hessian(m: "Manipulator", q: Any) -> np.ndarray:
     d = np.flip(np.cumsum(np.flip(c * G[:, 0] + s * G[:, 1])))     # sum_{j >= i} G_j . u_j
     idx = np.maximum.outer(np.arange(m.n), np.arange(m.n))
     return d[idx]
+
+
+def loads_key(m: "Manipulator") -> tuple | None:
+    """The chain's dead loads as a plain tuple ``(payload, gravity, joint_forces)`` for a result to carry (picklable,
+    immutable), or None when it carries none (:attr:`Manipulator.loaded`)."""
+    return (m.payload, m.gravity, m.joint_forces) if m.loaded else None
+
+
+def loads_json(key: tuple | None) -> dict[str, Any] | None:
+    """The JSON form of :func:`loads_key`: ``gravity`` ``[gx, gy]`` (or null), ``payload``, ``joint_forces``
+    ``[{"joint", "force": [fx, fy]}]``, ``total_mass`` omitted (the chain's description has the masses)."""
+    if key is None:
+        return None
+    payload, gravity, forces = key
+    return {"gravity": None if gravity is None else list(gravity), "payload": float(payload),
+            "joint_forces": [{"joint": int(j), "force": [float(f[0]), float(f[1])]} for j, f in forces]}
+
+
+def describe(key: tuple | None) -> str:
+    """The loads in words (``"gravity (0, -9.81), payload 0.05, a force (0, 1) at joint 3"``); empty without."""
+    if key is None:
+        return ""
+    payload, gravity, forces = key
+    parts = []
+    if gravity is not None:
+        parts.append(f"gravity ({gravity[0]:g}, {gravity[1]:g})" + (f", payload {payload:g}" if payload else ""))
+    parts += [f"a force ({f[0]:g}, {f[1]:g}) at joint {j}" for j, f in forces]
+    return ", ".join(parts)
 
 
 def unloaded_only(m: Any, what: str) -> None:

@@ -77,7 +77,16 @@ def equilibrium_out(eq) -> dict[str, Any]:
             "solver": {"status": str(eq.solver.status),
                        "iterations": None if eq.solver.iterations is None else int(eq.solver.iterations)},
             "certificate": energy_bound_out(eq.certificate), "at_stop": [bool(v) for v in eq.at_stop],
-            "contact_torques": [_num(v) for v in eq.contact_torques]}
+            "contact_torques": [_num(v) for v in eq.contact_torques], "loads": loads_out(eq.loads)}
+
+
+def loads_out(key) -> dict[str, Any] | None:
+    """The dead loads ``(payload, gravity, joint_forces)`` an equilibrium was computed under, or None."""
+    if key is None:
+        return None
+    payload, gravity, forces = key
+    return {"gravity": None if gravity is None else [float(g) for g in gravity], "payload": float(payload),
+            "joint_forces": [{"joint": int(j), "force": [float(f[0]), float(f[1])]} for j, f in forces]}
 
 
 def energy_bound_out(c) -> dict[str, Any] | None:

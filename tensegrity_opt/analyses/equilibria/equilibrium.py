@@ -32,6 +32,7 @@ from ...errors import (
     UnreachableTargetError,
     UnsupportedError,
 )
+from ...model.loads import describe, loads_json, loads_key
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
 from ...model.springs import SpringFields, Springs
@@ -137,6 +138,7 @@ class Equilibrium(Outcome, TipForce, SpringFields):
     certificate: EnergyBound | None = field(default=None, repr=False)
     springs: Springs | None = field(default=None, repr=False, compare=False)
     stops: tuple | None = field(default=None, repr=False)
+    loads: tuple | None = field(default=None, repr=False)
 
     def __post_init__(self) -> None:
         # the builders pass arrays they own: read-only in place (this is on the control loop's path)
@@ -171,7 +173,7 @@ class Equilibrium(Outcome, TipForce, SpringFields):
             return ("the least-energy stable equilibrium of the complete set certified by the homotopy "
                     f"({self.solver.status})")
         its = "iterations not counted" if self.solver.iterations is None else f"{self.solver.iterations} iterations"
-        return f"converged ({self.solver.status}, {its})"
+        return f"converged ({self.solver.status}, {its})" + (f", under {describe(self.loads)}" if self.loads else "")
 
     @cached_property
     def shape(self) -> str:
@@ -199,15 +201,16 @@ class Equilibrium(Outcome, TipForce, SpringFields):
         ``solver`` ``{status, iterations}`` (``iterations`` ``null`` when not counted), ``certificate``
         (:meth:`EnergyBound.to_dict`: with ``certify=True``, or where the search's short way proved its answer;
         else ``null``), the spring state ``spring_lengths``, ``spring_stretches``, ``spring_forces``,
-        ``spring_states`` ((n, 2) each), ``at_stop`` and ``contact_torques`` (per joint); every number finite
-        (:mod:`tensegrity_opt.serialize`)."""
+        ``spring_states`` ((n, 2) each), ``at_stop`` and ``contact_torques`` (per joint), ``loads`` (the dead loads it
+        was computed under, :func:`~tensegrity_opt.model.loads.loads_json`; ``null`` where the chain carries none);
+        every number finite (:mod:`tensegrity_opt.serialize`)."""
         extra = {"certificate": None if self.certificate is None else self.certificate.to_dict()}
         return {**self.outcome(), **self.spring_dict(), "q": numbers(self.q), "energy": number(self.energy),
                 "force": {"fx": number(self.fx), "fy": number(self.fy)},
                 "morse_index": int(self.morse_index), "stable": bool(self.stable), "kind": self.kind,
                 "shape": self.shape, "signs": self.signs, "tip": numbers(self.tip),
                 "solver": self.solver.to_dict(), **extra, "at_stop": [bool(v) for v in self.at_stop],
-                "contact_torques": numbers(self.contact_torques)}
+                "contact_torques": numbers(self.contact_torques), "loads": loads_json(self.loads)}
 
 
 class _Zeros(dict):
@@ -329,7 +332,7 @@ def straight_equilibrium(m: Manipulator, *, check: bool = True) -> Equilibrium:
                 f"preloads bend it); choose dx > 0", field="dx")
     return Equilibrium(q=q, energy=m.potential_energy(q), force=np.array([0.0, fy]), morse_index=0, stable=True,
                        solver=SolverInfo("straight", 0), tip=m.tip(q), control="displacement", status="exact",
-                       springs=m.springs)
+                       springs=m.springs, loads=loads_key(m))
 
 
 def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
@@ -348,7 +351,7 @@ def one_segment_equilibrium(m: Manipulator, target: np.ndarray) -> Equilibrium:
     force = J[:, 0] * (m.potential_gradient(q)[0] / float(J[:, 0] @ J[:, 0]))
     return Equilibrium(q=q, energy=m.potential_energy(q), force=force, morse_index=0, stable=True,
                        solver=SolverInfo("closed_form", 0), tip=m.tip(q), control="displacement", status="exact",
-                       springs=m.springs)
+                       springs=m.springs, loads=loads_key(m))
 
 
 def local_equilibrium(m: Manipulator, target: np.ndarray, q0: np.ndarray, F0: np.ndarray | None = None,
@@ -529,4 +532,5 @@ def _equilibrium_under_force_slack(m: Manipulator, force: np.ndarray, q0: np.nda
     return Equilibrium(q=q.copy(), energy=float(m.potential_energy(q)), force=force.copy(), morse_index=morse,
                        stable=stable,
                        solver=SolverInfo(res.status, res.iterations), tip=m.tip(q), control="force",
-                       hessian_eigenvalues=w, springs=m.springs, stops=(side != 0.0, np.maximum(contact, 0.0)))
+                       hessian_eigenvalues=w, springs=m.springs, stops=(side != 0.0, np.maximum(contact, 0.0)),
+                       loads=loads_key(m))

@@ -26,6 +26,7 @@ import scipy.linalg as sla
 
 from ...errors import InvalidParameterError
 from ...model.inertia import mass_matrix, total_mass
+from ...model.loads import loads_json
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
 from ...serialize import nullables, numbers
@@ -112,10 +113,10 @@ class Modes(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form: ``success``, ``status``, ``message``, ``frequencies`` (null where a direction does not
         vibrate), ``eigenvalues``, ``shapes`` (mode-major, joint angles), ``tip``, ``held_joints``,
-        ``total_mass``."""
+        ``total_mass``, ``loads`` (the equilibrium's dead loads, null where none)."""
         return {**self.outcome(), "frequencies": nullables(self.frequencies), "eigenvalues": numbers(self.eigenvalues),
                 "shapes": numbers(self.shapes), "tip": self.tip, "held_joints": [bool(v) for v in self.held_joints],
-                "total_mass": float(self.total_mass)}
+                "total_mass": float(self.total_mass), "loads": loads_json(self.equilibrium.loads)}
 
 
 def stiffness_matrix(m: Manipulator, q: np.ndarray, force: np.ndarray) -> np.ndarray:

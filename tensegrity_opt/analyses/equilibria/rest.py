@@ -398,8 +398,8 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
     TimeLimitError
         A :func:`tensegrity_opt.time_limit` expired during the search.
     """
-    unloaded_only(m, "find_equilibria_under_force")
-    linear_only(m, "find_equilibria_under_force")
+    if not m.loaded:
+        linear_only(m, "find_equilibria_under_force")
     fx, fy = _finite("fx", fx), _finite("fy", fy)
     if method not in ("search", "homotopy"):
         raise InvalidParameterError(f"method must be 'search' or 'homotopy', got {method!r}", field="method")
@@ -414,6 +414,8 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
         raise InvalidParameterError(f"n_random must be an integer >= 0, got {n_random!r}", field="n_random")
     if timeout is not None and not (_finite("timeout", timeout) > 0.0):
         raise InvalidParameterError(f"timeout must be > 0 seconds, got {timeout!r}", field="timeout")
+    if m.loaded:
+        return _loaded_set(m, np.array([fx, fy]), bool(stable_only), method)
     if fx == 0.0 and fy == 0.0:
         return _exact_set(m, bool(stable_only))
     force = np.array([fx, fy])
@@ -426,6 +428,27 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
         out = replace(out, equilibria=[out[i] for i in keep],
                       certificate=None if out.certificate is None else out.certificate.select(keep))
     return out
+
+
+def _loaded_set(m: Manipulator, force: np.ndarray, stable_only: bool, method: str) -> EquilibriumSet:
+    """:func:`find_equilibria_under_force` of a chain with dead loads: its stable equilibria found by the free-tip
+    search (:func:`~.tension_only.stable_free_equilibria`); the unstable ones are not looked for (refused by name)."""
+    from .tension_only import stable_free_equilibria
+
+    if method == "homotopy":
+        unloaded_only(m, "find_equilibria_under_force(method='homotopy')")
+    if not stable_only:
+        raise UnsupportedError("under dead loads (gravity on the masses, joint forces) the equilibria with a free tip "
+                               "are searched for their stable ones only: pass stable_only=True (the wells the chain "
+                               "can rest in), or ask find_equilibria for every equilibrium with the tip held",
+                               field="stable_only")
+    eqs = stable_free_equilibria(m, force)
+    on_stop = sum(bool(e.at_stop.any()) for e in eqs)
+    where = f" ({on_stop} resting on a joint's stop)" if on_stop else ""
+    return EquilibriumSet(eqs, method="search", status="searched",
+                          message=f"{len(eqs)} stable equilibria{where} found under the chain's dead loads by local "
+                                  "descents from straight, the unloaded chain's wells and random configurations of "
+                                  "the closed range (measured, not certified)")
 
 
 def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equilibrium:

@@ -272,11 +272,17 @@ def add_manipulator_options(sp: argparse.ArgumentParser) -> None:
     g.add_argument("--inertia", type=finite_float, default=0.0,
                    help="each triangle's rotational inertia about its centroid (mass x length^2)")
     g.add_argument("--payload", type=finite_float, default=0.0, help="a point mass at the tip")
+    g.add_argument("--gravity", type=finite_float, nargs=2, metavar=("GX", "GY"), default=None,
+                   help="the gravity vector in the chain's plane (e.g. 0 -9.81: the chain along +x in a vertical "
+                        "plane); the masses and the payload then weigh on it")
+    g.add_argument("--joint-force", dest="joint_forces", type=finite_float, nargs=3, action="append",
+                   metavar=("J", "FX", "FY"), default=None,
+                   help="a dead force (FX, FY) at joint J (counted from 1 at the base); repeat for several joints")
     g.add_argument("--manipulator", metavar="FILE",
-                   help='JSON file {"segments": [{"a","b","k","L0","spring","mass","inertia"}, ...], "payload"}, '
-                        "instead of the uniform chain's options")
+                   help='JSON file {"segments": [{"a","b","k","L0","spring","mass","inertia"}, ...], "payload", '
+                        '"gravity", "joint_forces"}, instead of the uniform chain\'s options')
     exclusive(sp, ["--manipulator"], ["--n", "--a", "--b", "--k", "--L0", "--spring", "--mass", "--inertia",
-                                      "--payload"],
+                                      "--payload", "--gravity", "--joint-force"],
               "the chain comes from the file or from the uniform chain's options")
 
 
@@ -322,8 +328,14 @@ def _manipulator(args: argparse.Namespace) -> Manipulator:
             raise InvalidParameterError(f"--manipulator {args.manipulator}: expected a JSON object "
                                         '{"segments": [{"a", "b", "k", "L0"}, ...]}', field="manipulator")
         return Manipulator.from_dict(data)
+    forces = []
+    for j, fx, fy in args.joint_forces or ():
+        if j != int(j):
+            raise InvalidParameterError(f"--joint-force: the joint must be an integer, got {j:g}",
+                                        field="joint_forces")
+        forces.append((int(j), (fx, fy)))
     return Manipulator.uniform(args.n, args.a, args.b, args.k, args.L0, args.spring, args.mass, args.inertia,
-                               args.payload)
+                               args.payload, args.gravity, forces)
 
 
 def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:

@@ -34,7 +34,8 @@ def _manipulator(header: Mapping[str, Any], point: Mapping[str, Any]) -> Manipul
     p = {**header["manipulator"], **{k: v for k, v in point.items() if k in MANIPULATOR_PARAMETERS}}
     k, L0 = (tuple(p[x]) if isinstance(p[x], list) else p[x] for x in ("k", "L0"))
     return Manipulator.uniform(p["n"], p["a"], p["b"], k, L0, p.get("spring", "linear"), p.get("mass", 0.0),
-                               p.get("inertia", 0.0), p.get("payload", 0.0))
+                               p.get("inertia", 0.0), p.get("payload", 0.0), p.get("gravity"),
+                               p.get("joint_forces", ()))
 
 
 def _chain_of(base: Mapping[str, Any]) -> Manipulator:
@@ -45,7 +46,7 @@ def _chain_of(base: Mapping[str, Any]) -> Manipulator:
 
     return Manipulator((Segment(s["a"], s["b"], pair(s["k"]), pair(s["L0"]), s.get("spring", "linear"),
                                 s.get("mass", 0.0), s.get("inertia", 0.0)) for s in base["segments"]),
-                       base.get("payload", 0.0))
+                       base.get("payload", 0.0), base.get("gravity"), base.get("joint_forces", ()))
 
 
 def _equilibrium(m: Manipulator, point: Mapping[str, Any]):

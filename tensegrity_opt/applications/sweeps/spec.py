@@ -230,11 +230,15 @@ def _header(spec: Any) -> dict[str, Any]:
                 if _mass(v, f"manipulator.{key}"):            # the normal form omits a zero (as to_dict does)
                     base[key] = float(v)
                 continue
+            if key in _LOADS:
+                base.update(_loads({key: v}))
+                continue
             if key not in MANIPULATOR_PARAMETERS:
-                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "spring", *_MASSES,
+                _fail(f"manipulator.{key}", unknown_name(key, (*MANIPULATOR_PARAMETERS, "spring", *_MASSES, *_LOADS,
                                                                "segments"), "key")
-                      + " (the base chain is {n, a, b, k, L0, spring, mass, inertia, payload} (uniform) or "
-                        "{segments: [{a, b, k, L0, spring, mass, inertia}, ...], payload})")
+                      + " (the base chain is {n, a, b, k, L0, spring, mass, inertia, payload, gravity, joint_forces} "
+                        "(uniform) or {segments: [{a, b, k, L0, spring, mass, inertia}, ...], payload, gravity, "
+                        "joint_forces})")
             if key in ("k", "L0") and isinstance(v, (list, tuple)):
                 base[key] = _spring_pair(key, v, f"manipulator.{key}")
             else:
@@ -247,9 +251,10 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
     ``L0`` a number or the pair of the two springs. Its segments are fixed: no point varies n, a, b, k, L0."""
     from ...model.segment import Segment
 
-    extra = [k for k in raw_m if k not in ("segments", "payload")]
+    extra = [k for k in raw_m if k not in ("segments", "payload", *_LOADS)]
     if extra:
-        _fail(f"manipulator.{extra[0]}", "a chain given by its segments takes no other key but payload")
+        _fail(f"manipulator.{extra[0]}", "a chain given by its segments takes no other key but payload, gravity and "
+                                         "joint_forces")
     segs = raw_m["segments"]
     if not isinstance(segs, (list, tuple)) or not segs:
         _fail("manipulator.segments", "must be a non-empty list of {a, b, k, L0}")
@@ -283,7 +288,29 @@ def _segments(raw_m: Mapping[str, Any]) -> dict[str, Any]:
     chain: dict[str, Any] = {"segments": out}
     if "payload" in raw_m and _mass(raw_m["payload"], "manipulator.payload"):
         chain["payload"] = float(raw_m["payload"])
+    chain.update(_loads(raw_m))
     return chain
+
+
+#: The chain's dead loads besides its masses (``docs/model.md``, "Weights and loads").
+_LOADS = ("gravity", "joint_forces")
+
+
+def _loads(raw_m: Mapping[str, Any]) -> dict[str, Any]:
+    """``gravity`` ``[gx, gy]`` and ``joint_forces`` ``[{joint, force}]`` in their JSON form, those set only (the
+    library's readers check them; a joint beyond a point's ``n`` is that point's error)."""
+    from ...model.loads import check_gravity, check_joint_forces
+
+    out: dict[str, Any] = {}
+    try:
+        if raw_m.get("gravity") is not None:
+            out["gravity"] = list(check_gravity(raw_m["gravity"]))
+        forces = check_joint_forces(raw_m.get("joint_forces"), 1 << 30)
+    except InvalidParameterError as exc:
+        _fail(f"manipulator.{exc.field}", exc.message)
+    if forces:
+        out["joint_forces"] = [{"joint": j, "force": list(f)} for j, f in forces]
+    return out
 
 
 #: The masses a chain may carry (``docs/model.md``, "Masses and modes"): a segment's ``mass`` and ``inertia``, the

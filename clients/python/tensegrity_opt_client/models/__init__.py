@@ -120,6 +120,7 @@ from .job_summary_analysis import JobSummaryAnalysis
 from .job_summary_status import JobSummaryStatus
 from .jobs_health import JobsHealth
 from .jobs_health_status import JobsHealthStatus
+from .joint_force_in import JointForceIn
 from .jump_out import JumpOut
 from .jump_out_kind import JumpOutKind
 from .kernels_out import KernelsOut
@@ -141,6 +142,7 @@ from .load_capacity_out_weakest_type_0 import LoadCapacityOutWeakestType0
 from .load_capacity_request import LoadCapacityRequest
 from .load_capacity_request_boundary import LoadCapacityRequestBoundary
 from .load_control_in import LoadControlIn
+from .loads_out import LoadsOut
 from .manipulator_out import ManipulatorOut
 from .map_values_range import MapValuesRange
 from .mode_out import ModeOut
@@ -406,6 +408,7 @@ __all__ = (
     "JobSummary",
     "JobSummaryAnalysis",
     "JobSummaryStatus",
+    "JointForceIn",
     "JumpOut",
     "JumpOutKind",
     "KernelsOut",
@@ -427,6 +430,7 @@ __all__ = (
     "LoadCapacityRequest",
     "LoadCapacityRequestBoundary",
     "LoadControlIn",
+    "LoadsOut",
     "ManipulatorOut",
     "MapValuesRange",
     "ModeOut",

@@ -14,6 +14,7 @@ from ..types import UNSET, Unset
 if TYPE_CHECKING:
     from ..models.energy_bound_out import EnergyBoundOut
     from ..models.force import Force
+    from ..models.loads_out import LoadsOut
     from ..models.solver_info import SolverInfo
 
 
@@ -28,9 +29,12 @@ class EquilibriumOut:
         at_stop (list[bool]): the joints resting on their mechanical stop |q| = pi - 2 beta (reached where springs go
             slack: the tension-only law); false inside the range
         contact_torques (list[float]): the torque each stop supplies (>= 0; 0 where a joint is not at its stop)
-        energy (float): elastic energy (force x length)
+        energy (float): the chain's potential energy (force x length): its springs' elastic energy, plus the potential
+            of its dead loads where it carries some (`loads`)
         force (Force):
         kind (EquilibriumOutKind):
+        loads (LoadsOut | None): the dead loads this was computed under (gravity on the chain's masses, joint forces);
+            null where the chain carries none
         message (str): what happened, in a sentence
         morse_index (int): negative eigenvalues of the reduced Hessian (0: stable)
         q (list[float]): relative joint angles (rad)
@@ -63,6 +67,7 @@ class EquilibriumOut:
     energy: float
     force: Force
     kind: EquilibriumOutKind
+    loads: LoadsOut | None
     message: str
     morse_index: int
     q: list[float]
@@ -82,6 +87,7 @@ class EquilibriumOut:
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.energy_bound_out import EnergyBoundOut  # noqa: PLC0415
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
 
         at_stop = self.at_stop
 
@@ -92,6 +98,12 @@ class EquilibriumOut:
         force = self.force.to_dict()
 
         kind = self.kind.value
+
+        loads: dict[str, Any] | None
+        if isinstance(self.loads, LoadsOut):
+            loads = self.loads.to_dict()
+        else:
+            loads = self.loads
 
         message = self.message
 
@@ -177,6 +189,7 @@ class EquilibriumOut:
                 "energy": energy,
                 "force": force,
                 "kind": kind,
+                "loads": loads,
                 "message": message,
                 "morse_index": morse_index,
                 "q": q,
@@ -202,6 +215,7 @@ class EquilibriumOut:
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.energy_bound_out import EnergyBoundOut  # noqa: PLC0415
         from ..models.force import Force  # noqa: PLC0415
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
         from ..models.solver_info import SolverInfo  # noqa: PLC0415
 
         d = dict(src_dict)
@@ -214,6 +228,21 @@ class EquilibriumOut:
         force = Force.from_dict(d.pop("force"))
 
         kind = EquilibriumOutKind(d.pop("kind"))
+
+        def _parse_loads(data: object) -> LoadsOut | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                loads_type_0 = LoadsOut.from_dict(data)
+
+                return loads_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(LoadsOut | None, data)
+
+        loads = _parse_loads(d.pop("loads"))
 
         message = d.pop("message")
 
@@ -345,6 +374,7 @@ class EquilibriumOut:
             energy=energy,
             force=force,
             kind=kind,
+            loads=loads,
             message=message,
             morse_index=morse_index,
             q=q,

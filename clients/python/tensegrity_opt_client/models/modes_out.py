@@ -11,6 +11,7 @@ from ..models.modes_out_tip import ModesOutTip
 
 if TYPE_CHECKING:
     from ..models.equilibrium_out import EquilibriumOut
+    from ..models.loads_out import LoadsOut
 
 
 T = TypeVar("T", bound="ModesOut")
@@ -26,6 +27,8 @@ class ModesOut:
         frequencies (list[float | None]): natural frequencies w (rad/s with kg, N/m, m), ascending; null where a
             direction does not vibrate
         held_joints (list[bool]): the joints held on their stop
+        loads (LoadsOut | None): the dead loads this was computed under (gravity on the chain's masses, joint forces);
+            null where the chain carries none
         message (str):
         shapes (list[list[float]]): mode k's joint angles (row k), mass-normalised
         status (ModesOutStatus): `solved`: stable, every mode vibrates; `unstable`: some w^2 < 0 (frequency null there);
@@ -39,6 +42,7 @@ class ModesOut:
     equilibrium: EquilibriumOut
     frequencies: list[float | None]
     held_joints: list[bool]
+    loads: LoadsOut | None
     message: str
     shapes: list[list[float]]
     status: ModesOutStatus
@@ -48,6 +52,8 @@ class ModesOut:
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
+
         eigenvalues = self.eigenvalues
 
         equilibrium = self.equilibrium.to_dict()
@@ -59,6 +65,12 @@ class ModesOut:
             frequencies.append(frequencies_item)
 
         held_joints = self.held_joints
+
+        loads: dict[str, Any] | None
+        if isinstance(self.loads, LoadsOut):
+            loads = self.loads.to_dict()
+        else:
+            loads = self.loads
 
         message = self.message
 
@@ -84,6 +96,7 @@ class ModesOut:
                 "equilibrium": equilibrium,
                 "frequencies": frequencies,
                 "held_joints": held_joints,
+                "loads": loads,
                 "message": message,
                 "shapes": shapes,
                 "status": status,
@@ -98,6 +111,7 @@ class ModesOut:
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
         from ..models.equilibrium_out import EquilibriumOut  # noqa: PLC0415
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
 
         d = dict(src_dict)
         eigenvalues = cast(list[float], d.pop("eigenvalues"))
@@ -118,6 +132,21 @@ class ModesOut:
             frequencies.append(frequencies_item)
 
         held_joints = cast(list[bool], d.pop("held_joints"))
+
+        def _parse_loads(data: object) -> LoadsOut | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                loads_type_0 = LoadsOut.from_dict(data)
+
+                return loads_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(LoadsOut | None, data)
+
+        loads = _parse_loads(d.pop("loads"))
 
         message = d.pop("message")
 
@@ -141,6 +170,7 @@ class ModesOut:
             equilibrium=equilibrium,
             frequencies=frequencies,
             held_joints=held_joints,
+            loads=loads,
             message=message,
             shapes=shapes,
             status=status,
