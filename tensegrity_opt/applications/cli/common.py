@@ -22,6 +22,7 @@ from ...errors import (
     TensegrityError,
     UnstableStraightError,
 )
+from ...model.loads import describe, loads_key
 from ...model.manipulator import Manipulator
 from ...model.springs import SPRING_LAWS
 
@@ -357,6 +358,8 @@ def run_command(parser: argparse.ArgumentParser, argv: list[str] | None) -> int:
         data, text = args.func(args, m)
         if args.json:
             text = json.dumps(data() if callable(data) else data, indent=2)
+        elif m.loaded:                          # every answer says the loads it was computed under
+            text = f"{text}\nunder the chain's dead loads: {describe(loads_key(m))}"
     except (StraightNotEquilibriumError, UnstableStraightError) as exc:
         return answer(exc)
     except (TensegrityError, NonFiniteResult, OSError, ValueError, TypeError) as exc:

@@ -292,3 +292,26 @@ def test_modes_prints_the_librarys_frequencies_and_its_json_is_the_api_body(caps
     assert main(["modes", "--dx", "1"]) == 2                  # no mass: one line naming it
     assert "no mass" in one_error_line(capsys.readouterr().err)
     refuses_together(main, ["modes", "--mass", "1", "--dx", "1", "--fx", "0.1"], "--dx", "--fx", capsys)
+
+
+def test_the_chain_options_take_gravity_and_joint_forces(capsys, tmp_path):
+    assert main(["equilibrium", "--n", "3", "--mass", "0.05", "--payload", "0.02", "--gravity", "0", "-9.81",
+                 "--joint-force", "2", "0.1", "0.3", "--dx", "0.8", "--dy", "-0.2", "--json"]) == 0
+    body = json.loads(capsys.readouterr().out)
+    m = to.Manipulator.uniform(3, mass=0.05, payload=0.02, gravity=(0.0, -9.81), joint_forces=[(2, (0.1, 0.3))])
+    eq = to.solve_equilibrium(m, 0.8, -0.2)
+    assert body["q"] == pytest.approx(eq.q.tolist(), rel=1e-12, abs=1e-14)
+    assert body["loads"] == {"gravity": [0.0, -9.81], "payload": 0.02,
+                             "joint_forces": [{"joint": 2, "force": [0.1, 0.3]}]}
+    assert main(["equilibrium", "--n", "3", "--mass", "0.05", "--gravity", "0", "-9.81", "--dx", "0.8"]) == 0
+    assert "under the chain's dead loads: gravity (0, -9.81)" in capsys.readouterr().out
+    assert main(["buckling", "--mass", "0.1", "--gravity", "0", "-9.81"]) == 2
+    assert "gravity is set" in one_error_line(capsys.readouterr().err)
+    assert main(["equilibrium", "--joint-force", "2.5", "0", "1"]) == 2
+    assert "joint must be an integer" in one_error_line(capsys.readouterr().err)
+    # the file form takes them too
+    path = tmp_path / "chain.json"
+    path.write_text(json.dumps({"segments": [{"a": 1, "b": 1, "mass": 0.05}] * 3, "gravity": [0, -9.81]}))
+    assert main(["rest", "--manipulator", str(path), "--stable-only", "--json"]) == 0
+    sets = json.loads(capsys.readouterr().out)
+    assert sets["equilibria"][0]["loads"]["gravity"] == [0.0, -9.81]
