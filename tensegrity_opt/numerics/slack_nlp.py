@@ -48,8 +48,9 @@ class SlackNLP:
     then ``target`` (2), the dead tip load ``force`` (2) and the links' dead loads ``Gx``, ``Gy`` (n each).
     """
 
-    def __init__(self, n: int) -> None:
+    def __init__(self, n: int, loaded: bool = False) -> None:
         self.n = n
+        self.loaded = loaded
         self.x = Layout(q=n, e1=n, e2=n)
         self.g = Layout(tip=2, s1=n, s2=n)
         self.p = Layout(a=n, b=n, k1=n, k2=n, L10=n, L20=n, target=2, force=2, Gx=n, Gy=n)
@@ -59,26 +60,36 @@ class SlackNLP:
         tgt = p[self.p["target"]]
         load = p[self.p["force"]]
         psi = ca.cumsum(q)
-        V = -ca.dot(p[self.p["Gx"]], ca.cos(psi)) - ca.dot(p[self.p["Gy"]], ca.sin(psi))
+        # the dead loads' terms only in the loaded variant: the unloaded chain's expressions (and their rounding)
+        # stay those of the problem without loads
+        V = -ca.dot(p[self.p["Gx"]], ca.cos(psi)) - ca.dot(p[self.p["Gy"]], ca.sin(psi)) if loaded else 0.0
         L1, L2, _ = segment_energy(q, a, b, k1, k2, L10, L20)
         tip = tip_expression(psi, b)
-        f = 0.5 * ca.sum1(k1 * e1 ** 2 + k2 * e2 ** 2) + V - ca.dot(load, tip)
+        f = 0.5 * ca.sum1(k1 * e1 ** 2 + k2 * e2 ** 2)
+        f = (f + V if loaded else f) - ca.dot(load, tip)
         g = ca.vertcat(tip - tgt, e1 - (L1 - L10), e2 - (L2 - L20))
-        self.solver, self._cb = _nlpsol(f"slack_{n}", {"x": ca.vertcat(q, e1, e2), "p": p, "f": f, "g": g},
-                                        **_OPTIONS)
+        name = f"slack_{n}" + ("_loaded" if loaded else "")
+        self.solver, self._cb = _nlpsol(name, {"x": ca.vertcat(q, e1, e2), "p": p, "f": f, "g": g}, **_OPTIONS)
         # the energy under the laws (t = 1: tension-only) and its derivatives in q, for the classification
         t1, t2 = ca.SX.sym("t1", n), ca.SX.sym("t2", n)
         F = ca.SX.sym("F", 2)
         s1, s2 = L1 - L10, L2 - L20
         E = 0.5 * ca.sum1(k1 * (s1 - t1 * ca.fmin(s1, 0)) ** 2 + k2 * (s2 - t2 * ca.fmin(s2, 0)) ** 2)
         J = ca.jacobian(tip, q)
-        H = ca.hessian(E + V - ca.dot(F, tip), q)[0]
-        self._derivs = ca.Function(f"slack_derivs_{n}", [q, p, t1, t2, F], [E, ca.gradient(E + V, q), H, tip, J])
+        EV = E + V if loaded else E
+        H = ca.hessian(EV - ca.dot(F, tip), q)[0]
+        self._derivs = ca.Function(f"slack_derivs_{n}" + ("_loaded" if loaded else ""), [q, p, t1, t2, F],
+                                   [E, ca.gradient(EV, q), H, tip, J])
+
+    def _check(self, m) -> None:
+        if m.loaded and not self.loaded:
+            raise ValueError("a chain with dead loads needs slack_nlp(n, loaded=True)")
 
     def parameters(self, m, target, force=None) -> np.ndarray:
         """The parameter vector of the chain ``m`` (read attribute by attribute: its springs' laws are in the
         bounds, :meth:`bounds`; its dead loads ``m.link_loads``), the tip ``target`` and the dead tip load ``force``
         (default none)."""
+        self._check(m)
         G = m.link_loads
         return self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=np.asarray(target, float),
                            force=np.zeros(2) if force is None else np.asarray(force, float), Gx=G[:, 0], Gy=G[:, 1])
@@ -111,6 +122,7 @@ class SlackNLP:
         """``(E, grad (E + V), Hess(E + V - F . tip), tip, J)`` at the relative angles ``q`` under each spring's law
         (a slack spring contributes nothing; where a spring is exactly at its rest length, its taut side): ``E`` the
         springs' energy, ``V`` the chain's dead loads' potential (less its constant, :mod:`~..model.loads`)."""
+        self._check(m)
         t = m.springs.tension_only.astype(float)
         G = m.link_loads
         out = self._derivs(q, self.p.pack(a=m.a, b=m.b, k1=m.k1, k2=m.k2, L10=m.L1_0, L20=m.L2_0, target=0.0,
@@ -120,6 +132,7 @@ class SlackNLP:
 
 
 @per_thread
-def slack_nlp(n: int) -> SlackNLP:
-    """This thread's :class:`SlackNLP` for chains of ``n`` segments (built once)."""
-    return SlackNLP(n)
+def slack_nlp(n: int, loaded: bool = False) -> SlackNLP:
+    """This thread's :class:`SlackNLP` for chains of ``n`` segments, with the dead loads' terms where ``loaded`` (a
+    chain's ``m.loaded``; built once each)."""
+    return SlackNLP(n, bool(loaded))

@@ -481,7 +481,7 @@ def _equilibrium_under_force_slack(m: Manipulator, force: np.ndarray, q0: np.nda
     Raises :class:`NoEquilibriumError` (``RuntimeError``) where IPOPT does not converge or its point does not check
     out, :class:`UnsupportedError` (``field="segments[i]"``, status ``free_joint``) where a segment's two springs are
     slack and nothing holds its joint (its angle undetermined)."""
-    nlp = slack_nlp(m.n)
+    nlp = slack_nlp(m.n, m.loaded)
     force = np.asarray(force, dtype=float)
     lim = m.joint_limits
     res = nlp.solve(nlp.start(m, np.clip(q0, -lim, lim)), nlp.parameters(m, np.zeros(2), force),

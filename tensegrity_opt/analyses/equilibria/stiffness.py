@@ -66,7 +66,7 @@ def _held_stiffness(m: Manipulator, q: np.ndarray, force: np.ndarray, at_stop: n
     positive contact torque is rigid for a small change of the tip): the KKT system of the free joints,
     ``[[H_ff, -J_f^T], [J_f, 0]] [dq_f; dF] = [0; I]`` with ``H = Hess(E - F . tip)`` (a slack spring adds nothing; at
     a spring exactly at its rest length, its taut side)."""
-    _, _, H, _, J = slack_nlp(m.n).derivatives(m, q, force)
+    _, _, H, _, J = slack_nlp(m.n, m.loaded).derivatives(m, q, force)
     idx = np.flatnonzero(~at_stop)
     k = idx.size
     scale, length = m.torque_scale, float(m.b.sum())

@@ -89,7 +89,7 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
                        local: bool = False) -> Equilibrium:
     """The least-energy stable equilibrium of ``m`` (any spring laws) with the tip on ``target``, in the closed joint
     range (module docstring). ``local``: only the solve from ``q0``."""
-    nlp = slack_nlp(m.n)
+    nlp = slack_nlp(m.n, m.loaded)
     p, bounds = nlp.parameters(m, target), nlp.bounds(m)
     starts = [np.asarray(q0, float)] if local else _starts(m, target, q0)
     found: list[Equilibrium] = []
@@ -428,7 +428,7 @@ def _stop_jobs(m: Manipulator, target: np.ndarray, rng: np.random.Generator) -> 
 def _run_jobs(m: Manipulator, target: np.ndarray, jobs: list[tuple[np.ndarray, frozenset]]) -> list[Equilibrium]:
     """Damped Newton from each start (its held joints on their stops), a joint that reaches its stop then held, each
     solution classified; the distinct ones sorted by energy."""
-    nlp = slack_nlp(m.n)
+    nlp = slack_nlp(m.n, m.loaded)
     n = m.n
     found: list[Equilibrium] = []
     for q, held in jobs:
