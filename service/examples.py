@@ -140,6 +140,21 @@ PRELOADS = {
     "q": [-0.294564, 0.281086, 0.697109, 0.321762], "margin": 0.977663, "tip": [7.0, 1.5], "energy": 4.215705,
     "solver": {"status": "Solve_Succeeded", "iterations": 5}}
 
+#: ``/v1/design/holding``'s example chain: six segments in a vertical plane pointing up (gravity along -x).
+UPRIGHT_ARM = {"n": 6, "a": 0.04, "b": 0.05, "k": 300.0, "L0": 0.05, "mass": 0.05, "payload": 0.1,
+               "gravity": [-9.81, 0.0]}
+
+HOLDING = {
+    "success": True, "status": "optimal",
+    "message": "the least stiffness (total 36033.9) holding the chain under gravity (-9.81, 0), payload 0.1: largest "
+               "joint angle 9.687e-13 rad, margin 0.001 (Solve_Succeeded)",
+    "manipulator": {"segments": [{"a": 0.04, "b": 0.05, "k": k, "L0": 0.05, "mass": 0.05}
+                                 for k in (5046.571429, 4556.071429, 3715.214286, 2664.142857, 1543.0, 491.928571)],
+                    "payload": 0.1, "gravity": [-9.81, 0.0]},
+    "vary": ["k"], "change": [16.821905, 15.186905, 12.384048, 8.880476, 5.143333, 1.639762],
+    "q": [0.0, 0.0, 0.0, 0.0, 0.0, 0.0], "margin": 0.001, "tension": 1801.692857, "stiffness": 36033.857143,
+    "solver": {"status": "Solve_Succeeded", "iterations": 189}}
+
 # ---------------------------------------------------------------------------- loading paths
 #: ``/v1/rest-configurations`` of the paper's chain unloaded: the straight chain, exactly.
 REST_CONFIGURATIONS = {

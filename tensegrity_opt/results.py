@@ -36,6 +36,7 @@ result                      returned by                                      rec
                                                                              :class:`ActiveBound`
 :class:`StiffnessDesign`    ``preloads_for_stiffness``                       :class:`SolverInfo`,
                                                                              :class:`ActiveBound`
+:class:`HoldingDesign`      ``preloads_for_holding``                         :class:`SolverInfo`
 :class:`PreloadPlan`        ``plan_preloads``                      :class:`PreloadStep`
 (``PreloadStep``)           ``PreloadController.step``
 (``FollowerStep``)          ``PreloadFollower.step``                         :class:`SimulationEvent`
@@ -51,6 +52,7 @@ result                      returned by                                      rec
 from .analyses.design.active_bounds import ActiveBound
 from .analyses.design.follower import FollowerStep
 from .analyses.design.force_sensor import ForceEstimate
+from .analyses.design.holding import HoldingDesign
 from .analyses.design.load_capacity import LoadCapacity
 from .analyses.design.preload_control import PreloadPlan, PreloadStep
 from .analyses.design.preloads import PreloadDesign
@@ -83,6 +85,7 @@ __all__ = [
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent", "Transition",
-    "Design", "PreloadDesign", "StiffnessDesign", "ActiveBound", "PreloadPlan", "PreloadStep", "FollowerStep",
+    "Design", "PreloadDesign", "StiffnessDesign", "HoldingDesign", "ActiveBound", "PreloadPlan", "PreloadStep",
+    "FollowerStep",
     "LoadCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",
 ]

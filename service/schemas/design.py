@@ -29,6 +29,7 @@ from .common import (
     bounds_of,
     outcome_model,
 )
+from .equilibrium import EquilibriumOut
 
 # ---------------------------------------------------------------------------- the design chain
 #: Chains accepted by the design endpoints (their NLPs carry a dense n x n Cholesky factor).
@@ -161,4 +162,33 @@ class PreloadsOut(SpringStateOut, outcome_model(to.PreloadDesign)):
     tip: list[float]
     energy: float
     active_bounds: list[ActiveBoundOut] = Field(description="the rest lengths at (or near) their bounds")
+    solver: SolverInfo
+
+
+# ---------------------------------------------------------------------------- holding up under the loads
+class HoldingRequest(BaseModel):
+    """The least preload (or stiffness) with which the chain holds itself up under its dead loads."""
+
+    model_config = _STRICT
+    manipulator: DesignManipulatorIn
+    vary: list[Literal["L0", "k"]] = Field(["L0"], min_length=1, max_length=1,
+                                           description="what is designed, one of: the rest lengths (`L0`: the preload; "
+                                                       "both springs of a segment together) or the stiffnesses (`k`: a "
+                                                       "scale per segment)")
+    margin: Annotated[float, Field(ge=0, le=MAX_STIFFNESS, allow_inf_nan=False)] = Field(1e-3, description=MARGIN_DOC)
+    max_angle: Annotated[float, Field(gt=0, lt=3.141592653589793, allow_inf_nan=False)] | None = Field(
+        None, description="the sag allowed: every joint within this of straight (rad); default anywhere in range")
+
+
+class HoldingOut(SpringStateOut, outcome_model(to.HoldingDesign)):
+    """`HoldingDesign.to_dict()`: the designed chain holding itself up, verified by forward solves."""
+
+    manipulator: dict = Field(description="the designed chain (its segments and its loads, as a request takes it)")
+    vary: list[Literal["L0", "k"]] = Field(description="what was designed")
+    change: list[float] = Field(description="per segment: the rest lengths' change (L0) or the stiffness scale (k)")
+    q: list[float] = Field(description="the verified rest configuration under the loads (rad)")
+    margin: float = Field(description="the smallest eigenvalue of the potential's Hessian there (recomputed)")
+    tension: float = Field(description="the total spring tension of the designed chain when straight")
+    stiffness: float = Field(description="the total stiffness sum(k1 + k2)")
+    equilibrium: EquilibriumOut
     solver: SolverInfo

@@ -93,6 +93,12 @@ def preloads_task(req: s.PreloadsRequest) -> Any:
                                 bounds=_bounds(req.bounds), end_angle=req.end_angle)
 
 
+@_infeasible_with_best
+def holding_task(req: s.HoldingRequest) -> Any:
+    m = build_manipulator(req.manipulator)
+    return to.preloads_for_holding(m, vary=req.vary, margin=req.margin, max_angle=req.max_angle)
+
+
 def find_plan(req: Any, deadline: float) -> PreloadPlan:
     """The plan of a plan request (``/v1/control/plan``, ``/v1/plots/plan``) within the soft ``deadline``."""
     m = build_manipulator(req.manipulator)

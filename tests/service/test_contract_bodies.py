@@ -21,7 +21,8 @@ BODIES = {
     "LimitLoadOut": to.LimitLoad, "ImperfectionSensitivityOut": to.ImperfectionSensitivity,
     "StabilityBoundaryOut": to.StabilityBoundary, "AtlasOut": to.StabilityAtlas,
     "SimulationOut": to.Simulation, "DesignOut": to.Design, "PreloadsOut": to.PreloadDesign,
-    "StiffnessDesignOut": to.StiffnessDesign, "PlanOut": to.PreloadPlan, "LoadCapacityOut": to.LoadCapacity,
+    "StiffnessDesignOut": to.StiffnessDesign, "HoldingOut": to.HoldingDesign, "PlanOut": to.PreloadPlan,
+    "LoadCapacityOut": to.LoadCapacity,
     "ForceEstimateOut": to.ForceEstimate, "CurveEndOut": results.CurveEnd, "PlanStepOut": results.PreloadStep,
     "SimulationEventOut": results.SimulationEvent, "AtlasTargetOut": results.AtlasTarget,
 }

@@ -1,4 +1,5 @@
-"""Design and control: the strongest chain, preloads for a load, preloads for a pose."""
+"""Design and control: the strongest chain, preloads for a load, preloads for a pose, the preload holding a chain
+up under its weight."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ from ... import examples as ex
 from ... import schemas as s
 from ...adapters.inputs import segment_count
 from ...config import Settings
-from ...tasks.control import design_critical_force_task, preloads_for_load_task, preloads_task
+from ...tasks.control import design_critical_force_task, holding_task, preloads_for_load_task, preloads_task
 from ..deps import SettingsDep, check_manipulator
 from ..dispatch import Placement, run_task
 from ..errors import ServiceError
@@ -91,3 +92,24 @@ async def design_preloads(
     settings: SettingsDep,
 ) -> Any:
     return await _design(request, preloads_task, req, settings)
+
+
+@router.post(
+    "/holding", operation_id="design_holding", response_model=s.HoldingOut,
+    summary="The least preload (or stiffness) holding the chain up under its weight",
+    description="`tensegrity_opt.preloads_for_holding`: per segment, the least preload (`vary: [L0]`, the rest "
+                "lengths lengthened) or stiffness (`vary: [k]`) for which the chain, under its dead loads (`gravity` "
+                "on its masses and payload, `joint_forces`), rests in a stable equilibrium with its tip free, every "
+                "joint within `max_angle` of straight, every spring taut, the potential's Hessian >= `margin`. "
+                "Verified: the designed chain's forward equilibrium lands on the designed pose, and its "
+                "least-potential rest configuration is that pose (status `optimal`; else `metastable`). "
+                "Infeasible: 422 `design_infeasible`.",
+    responses=solve_responses(ex.HOLDING, *_INFEASIBLE))
+async def design_holding(
+    request: Request,
+    req: Annotated[s.HoldingRequest, Body(openapi_examples={
+        "upright": {"summary": "the least stiffness standing a 6-segment arm upright", "value": {
+            "manipulator": ex.UPRIGHT_ARM, "vary": ["k"], "max_angle": 0.05}}})],
+    settings: SettingsDep,
+) -> Any:
+    return await _design(request, holding_task, req, settings)

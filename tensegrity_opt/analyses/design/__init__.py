@@ -8,6 +8,8 @@ One module per concept:
   :func:`rest_length_bounds` and the keywords every preload problem shares;
 * :mod:`.sensitivity` - :func:`critical_load_sensitivity`, :func:`equilibrium_sensitivity`;
 * :mod:`.stiffness_shaping` - :func:`preloads_for_stiffness`, :class:`StiffnessDesign`;
+* :mod:`.holding` - :func:`preloads_for_holding`, :class:`HoldingDesign` (the least preload or stiffness holding a
+  chain up under its own weight);
 * :mod:`.load_capacity` - :func:`load_capacity`, :class:`LoadCapacity`;
 * :mod:`.preload_control` - :class:`PreloadController` (:class:`PreloadStep`) and :func:`plan_preloads`
   (:class:`PreloadPlan`);

@@ -238,7 +238,8 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
 #: The command groups of the top help, in order; a command in none of them is listed under "more".
 GROUPS = (("equilibria", ("buckling", "equilibrium", "equilibria", "curve", "rest", "modes")),
           ("loading paths", ("branch", "limit-load", "imperfection", "boundary", "atlas")),
-          ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "load-capacity")),
+          ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "holding-design",
+                                   "load-capacity")),
           ("figures", ("plot",)), ("parameter sweeps", ("sweep",)), ("set-up", ("homotopy-precompute",)),
           ("HTTP service", SERVICE_COMMANDS))
 

@@ -38,6 +38,7 @@ from typing import Any
 import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
+from ...analyses.design.holding import preloads_for_holding
 from ...analyses.design.load_capacity import load_capacity
 from ...analyses.design.preload_control import ON_INFEASIBLE, ON_SNAP, PreloadPlan, plan_preloads
 from ...analyses.design.preloads import OBJECTIVES
@@ -477,6 +478,16 @@ def _cmd_stiffness(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     return d.to_dict, "\n".join(lines)
 
 
+def _cmd_holding(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    d = preloads_for_holding(m, vary=args.vary, margin=args.margin, max_angle=args.max_angle)
+    what = "rest-length changes (both springs; > 0: less preload)" if d.vary == "L0" else "stiffness scales"
+    lines = [f"Holding design (n = {m.n}): {d.status}: {d.message}",
+             f"{what} per segment: " + ", ".join(f"{v:.6g}" for v in d.change),
+             f"total tension when straight {d.tension:.6g}, total stiffness {d.stiffness:.6g}",
+             f"rest configuration q = {fmt_q(d.q)}"]
+    return d.to_dict, "\n".join(lines)
+
+
 def _cmd_load_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     cap = load_capacity(m, None, base=tuple(args.base), directions=args.directions, boundary=args.boundary,
                         max_load=args.max_load)
@@ -489,7 +500,8 @@ def _cmd_load_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, s
 
 
 def add_control_parsers(subparsers: Any) -> None:
-    """Add ``plan``, ``simulate``, ``force-estimate``, ``stiffness-design`` and ``load-capacity`` to ``subparsers``
+    """Add ``plan``, ``simulate``, ``force-estimate``, ``stiffness-design``, ``holding-design`` and ``load-capacity``
+    to ``subparsers``
     (``add_subparsers()``'s result)."""
 
     sp = add_command(subparsers, "plan", _cmd_plan,
@@ -527,6 +539,16 @@ def add_control_parsers(subparsers: Any) -> None:
     sp.add_argument("--margin", type=non_negative_float, default=1e-3,
                     help="required stability margin: the smallest eigenvalue of the Hessian of E - F . tip, "
                          "absolute, torque / rad (times the chain's torque scale max k c^2 for a relative one)")
+
+    sp = add_command(subparsers, "holding-design", _cmd_holding,
+                     "the least preload (or stiffness) holding the chain up under its weight (--gravity)")
+    sp.add_argument("--vary", choices=("L0", "k"), default="L0",
+                    help="design the rest lengths (the preload) or the stiffnesses, per segment")
+    sp.add_argument("--margin", type=non_negative_float, default=1e-3,
+                    help="required stability margin: the smallest eigenvalue of the potential's Hessian (torque / "
+                         "rad)")
+    sp.add_argument("--max-angle", type=positive_float, default=None,
+                    help="the sag allowed: every joint within this of straight (rad); default anywhere in range")
 
     sp = add_command(subparsers, "load-capacity", _cmd_load_capacity,
                      "how much more tip load the rest pose carries, per direction")

@@ -86,6 +86,13 @@ from .force_estimate_request import ForceEstimateRequest
 from .get_job_results_format_type_0 import GetJobResultsFormatType0
 from .guided_control_in import GuidedControlIn
 from .health import Health
+from .holding_out import HoldingOut
+from .holding_out_manipulator import HoldingOutManipulator
+from .holding_out_spring_states_type_0_item_item import HoldingOutSpringStatesType0ItemItem
+from .holding_out_status import HoldingOutStatus
+from .holding_out_vary_item import HoldingOutVaryItem
+from .holding_request import HoldingRequest
+from .holding_request_vary_item import HoldingRequestVaryItem
 from .imperfection_law_out import ImperfectionLawOut
 from .imperfection_sensitivity_out import ImperfectionSensitivityOut
 from .imperfection_sensitivity_out_bifurcation_type_0 import ImperfectionSensitivityOutBifurcationType0
@@ -374,6 +381,13 @@ __all__ = (
     "GetJobResultsFormatType0",
     "GuidedControlIn",
     "Health",
+    "HoldingOut",
+    "HoldingOutManipulator",
+    "HoldingOutSpringStatesType0ItemItem",
+    "HoldingOutStatus",
+    "HoldingOutVaryItem",
+    "HoldingRequest",
+    "HoldingRequestVaryItem",
     "ImperfectionLawOut",
     "ImperfectionSensitivityOut",
     "ImperfectionSensitivityOutBifurcationType0",

@@ -1,0 +1,131 @@
+from __future__ import annotations
+
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any, TypeVar, cast
+
+from attrs import define as _attrs_define
+
+from ..models.holding_request_vary_item import HoldingRequestVaryItem
+from ..types import UNSET, Unset
+
+if TYPE_CHECKING:
+    from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn
+    from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn
+
+
+T = TypeVar("T", bound="HoldingRequest")
+
+
+@_attrs_define
+class HoldingRequest:
+    """The least preload (or stiffness) with which the chain holds itself up under its dead loads.
+
+    Attributes:
+        manipulator (DesignSegmentedManipulatorIn | DesignUniformManipulatorIn): the chain (at most 60 segments): {"n",
+            "a", "b", "k", "L0", "spring"} (uniform) or {"segments": [...]}
+        margin (float | Unset): required stability margin: the smallest eigenvalue of the Hessian of E - F . tip in the
+            joint angles, absolute, in torque per radian (force x length / rad) like every margin of the API; for a margin
+            relative to the chain's torque scale max k c^2, multiply by that scale Default: 0.001.
+        max_angle (float | None | Unset): the sag allowed: every joint within this of straight (rad); default anywhere
+            in range
+        vary (list[HoldingRequestVaryItem] | Unset): what is designed, one of: the rest lengths (`L0`: the preload; both
+            springs of a segment together) or the stiffnesses (`k`: a scale per segment)
+    """
+
+    manipulator: DesignSegmentedManipulatorIn | DesignUniformManipulatorIn
+    margin: float | Unset = 0.001
+    max_angle: float | None | Unset = UNSET
+    vary: list[HoldingRequestVaryItem] | Unset = UNSET
+
+    def to_dict(self) -> dict[str, Any]:
+        from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
+
+        manipulator: dict[str, Any]
+        if isinstance(self.manipulator, DesignUniformManipulatorIn):
+            manipulator = self.manipulator.to_dict()
+        else:
+            manipulator = self.manipulator.to_dict()
+
+        margin = self.margin
+
+        max_angle: float | None | Unset
+        if isinstance(self.max_angle, Unset):
+            max_angle = UNSET
+        else:
+            max_angle = self.max_angle
+
+        vary: list[str] | Unset = UNSET
+        if not isinstance(self.vary, Unset):
+            vary = []
+            for vary_item_data in self.vary:
+                vary_item = vary_item_data.value
+                vary.append(vary_item)
+
+        field_dict: dict[str, Any] = {}
+
+        field_dict.update(
+            {
+                "manipulator": manipulator,
+            }
+        )
+        if margin is not UNSET:
+            field_dict["margin"] = margin
+        if max_angle is not UNSET:
+            field_dict["max_angle"] = max_angle
+        if vary is not UNSET:
+            field_dict["vary"] = vary
+
+        return field_dict
+
+    @classmethod
+    def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.design_segmented_manipulator_in import DesignSegmentedManipulatorIn  # noqa: PLC0415
+        from ..models.design_uniform_manipulator_in import DesignUniformManipulatorIn  # noqa: PLC0415
+
+        d = dict(src_dict)
+
+        def _parse_manipulator(data: object) -> DesignSegmentedManipulatorIn | DesignUniformManipulatorIn:
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                manipulator_type_0 = DesignUniformManipulatorIn.from_dict(data)
+
+                return manipulator_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            if not isinstance(data, dict):
+                raise TypeError()
+            manipulator_type_1 = DesignSegmentedManipulatorIn.from_dict(data)
+
+            return manipulator_type_1
+
+        manipulator = _parse_manipulator(d.pop("manipulator"))
+
+        margin = d.pop("margin", UNSET)
+
+        def _parse_max_angle(data: object) -> float | None | Unset:
+            if data is None:
+                return data
+            if isinstance(data, Unset):
+                return data
+            return cast(float | None | Unset, data)
+
+        max_angle = _parse_max_angle(d.pop("max_angle", UNSET))
+
+        _vary = d.pop("vary", UNSET)
+        vary: list[HoldingRequestVaryItem] | Unset = UNSET
+        if _vary is not UNSET:
+            vary = []
+            for vary_item_data in _vary:
+                vary_item = HoldingRequestVaryItem(vary_item_data)
+
+                vary.append(vary_item)
+
+        holding_request = cls(
+            manipulator=manipulator,
+            margin=margin,
+            max_angle=max_angle,
+            vary=vary,
+        )
+
+        return holding_request
