@@ -47,7 +47,7 @@ REFUSED = {
     "plan_preloads": lambda m: to.plan_preloads(m, [[5.5, 0.3]]),
     "PreloadController": lambda m: to.PreloadController(m),
     "PreloadFollower": lambda m: to.PreloadFollower(m),
-    "load_capacity": lambda m: to.load_capacity(m),
+    "load_capacity (guided)": lambda m: to.load_capacity(m, boundary="guided"),
     "estimate_tip_force": lambda m: to.estimate_tip_force(m, _bare_eq().q),
     "critical_load_sensitivity": lambda m: to.critical_load_sensitivity(m),
     "equilibrium_sensitivity": lambda m: to.equilibrium_sensitivity(m, _bare_eq()),

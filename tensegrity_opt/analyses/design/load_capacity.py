@@ -30,6 +30,7 @@ from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, solve_equilibrium_under_force
 from ..paths.limit_load import DEFAULT_MAX_LOAD, check_max_load, limit_load
+from ..paths.loaded_path import loaded_limit
 
 __all__ = ["LoadCapacity", "load_capacity"]
 
@@ -254,6 +255,11 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
     timeout : float, optional
         Seconds for the whole call; directions not finished in time have ``reasons "time_limit"``.
 
+    A chain with dead loads (``gravity`` on its masses, ``joint_forces``) is followed from its sagged pose (the
+    least-potential rest configuration under the loads by default) by :func:`~..paths.loaded_path.loaded_limit`
+    (Newton along the load under the loads; ``results`` None): the extra tip load along the gravity direction it
+    carries is the payload it carries, ``loads / |g|`` (free tip only).
+
     Returns
     -------
     LoadCapacity
@@ -264,10 +270,11 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
         (``ValueError``) bad arguments (``field`` names one), or a pose that is not a stable equilibrium under
         ``base`` (``field="pose"``).
     """
-    unloaded_only(m, "load_capacity")
     linear_only(m, "load_capacity")
     if boundary not in ("free", "guided"):
         raise InvalidParameterError(f"boundary must be 'free' or 'guided', got {boundary!r}", field="boundary")
+    if m.loaded and boundary != "free":
+        unloaded_only(m, "load_capacity (boundary='guided')")
     D = _directions(directions, boundary)
     if base is not None:
         try:
@@ -288,6 +295,21 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
         forces, qs = np.full((K, 2), np.nan), np.full((K, mm.n), np.nan)
         kinds, reasons, results = [], [], []
         for i, d in enumerate(D):
+            if mm.loaded:                       # from the sagged pose, Newton under the loads (loaded_path)
+                try:
+                    lim = loaded_limit(mm, start, base, d, max_load)
+                except TimeLimitError:
+                    kinds.append("none")
+                    reasons.append("time_limit")
+                    results.append(None)
+                    continue
+                kinds.append(lim.kind)
+                reasons.append(lim.reason)
+                results.append(None)
+                end_loads[i] = lim.end_load
+                if lim.kind != "none":
+                    loads[i], forces[i], qs[i] = lim.load, base + lim.load * d, lim.q
+                continue
             try:
                 r = limit_load(mm, d, boundary, max_load, start, base=base, max_points=max_points)
             except TimeLimitError:
