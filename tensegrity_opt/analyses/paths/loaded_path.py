@@ -6,7 +6,8 @@ limit under a growing tip load is a limit-load problem from that configuration, 
 natural-parameter continuation in ``t``: each point predicted along the branch's tangent
 (``H_ff dq/dt = (J^T d)_f``), then corrected by Newton's method on the free joints' rows
 ``d(E + V)/dq - J^T F = 0`` (the closed-range route's derivatives, :mod:`tensegrity_opt.numerics.slack_nlp`; a joint
-resting on its stop held there) from the previous point, the step halved where Newton fails or lands far from the prediction (another branch), and the smallest eigenvalue ``lambda`` of the Hessian of ``E + V - F . tip`` on the free joints watched:
+resting on its stop held there), the step halved where Newton fails or lands far from the prediction (another
+branch), and the smallest eigenvalue ``lambda`` of the Hessian of ``E + V - F . tip`` on the free joints watched:
 
 * a **fold** (the arm snaps through): the path ends, no equilibrium near the last point for a slightly larger
   load; the step is halved down to ``LOAD_TOL`` relative and the last converged load reported;
