@@ -106,6 +106,11 @@ class HoldingDesign(Outcome, SpringFields):
             f"stiffness (total {self.stiffness:.6g})"
         where = f"largest joint angle {float(np.abs(self.q).max()):.4g} rad, margin {self.margin:.4g}"
         loads = describe(self.equilibrium.loads) or "no dead load"
+        floor = ((self.change <= 1.0 / K_RANGE * (1.0 + 1e-6)) if self.vary == "k" else
+                 np.zeros(self.change.size, bool))
+        if floor.any():
+            where += (f"; segments {', '.join(str(i + 1) for i in np.flatnonzero(floor))} at the design's lower bound "
+                      f"(k / {K_RANGE:g}: they need no stiffness)")
         if self.status == "optimal":
             return f"the least {what} holding the chain under {loads}: {where} ({self.solver.status})"
         return (f"the least {what} holding the chain under {loads} in a stable pose ({where}), but the designed chain "
