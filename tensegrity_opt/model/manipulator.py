@@ -240,8 +240,9 @@ class Manipulator:
 
     @cached_property
     def loaded(self) -> bool:
-        """The chain carries dead loads: a weight under gravity (a mass or a payload) or a nonzero joint force."""
-        return bool(np.any(self.link_loads != 0.0))
+        """The chain carries dead loads: a weight under gravity (a mass or a payload) or a nonzero joint force (one
+        at the fixed joint 1 too: it does no work, but its constant is part of the potential)."""
+        return bool(np.any(self.link_loads != 0.0)) or self.load_offset != 0.0
 
     @property
     def paper_model(self) -> bool:

@@ -83,7 +83,7 @@ class SlackNLP:
 
     def _check(self, m) -> None:
         if m.loaded and not self.loaded:
-            raise ValueError("a chain with dead loads needs slack_nlp(n, loaded=True)")
+            raise ValueError("a chain with dead loads needs the loaded problem, slack_nlp(n, True)")
 
     def parameters(self, m, target, force=None) -> np.ndarray:
         """The parameter vector of the chain ``m`` (read attribute by attribute: its springs' laws are in the
@@ -134,5 +134,5 @@ class SlackNLP:
 @per_thread
 def slack_nlp(n: int, loaded: bool = False) -> SlackNLP:
     """This thread's :class:`SlackNLP` for chains of ``n`` segments, with the dead loads' terms where ``loaded`` (a
-    chain's ``m.loaded``; built once each)."""
+    chain's ``m.loaded``; built once each; positional arguments only: ``slack_nlp(n, m.loaded)``)."""
     return SlackNLP(n, bool(loaded))

@@ -37,7 +37,7 @@ from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
 from ..equilibria.rest import rest_configuration
 
-__all__ = ["HoldingDesign", "preloads_for_holding", "SAME_POSE"]
+__all__ = ["HoldingDesign", "HoldingMap", "preloads_for_holding", "holding_map", "SAME_POSE"]
 
 #: The forward solve lands on the designed pose within this (rad, largest joint).
 SAME_POSE = 1e-6
@@ -265,3 +265,128 @@ def _design(m: Manipulator, vary: str, mu: float, lim: np.ndarray) -> HoldingDes
     tension = float(np.sum(md.k1 * (straight - md.L1_0) + md.k2 * (straight - md.L2_0)))
     return HoldingDesign(md, vary, s, eq.q.copy(), got, tension, float(np.sum(md.k1 + md.k2)), eq, solver, status)
 
+
+# ---------------------------------------------------------------------------- over the base's orientation
+@dataclass(frozen=True)
+class HoldingMap(Outcome):
+    """Result of :func:`holding_map`: the chain's sagged shape and the least design holding it, per orientation.
+
+    Attributes
+    ----------
+    angles : ndarray (K,)
+        The gravity vector's angle to the chain's axis (rad; ``pi``: the chain points up, ``-pi/2``: held out
+        sideways, ``0``: hanging down).
+    gravity : ndarray (K, 2)
+        The gravity vectors (the chain's ``|g|`` turned by ``angles``).
+    q : ndarray (K, n)
+        The rest configuration (least potential, tip free) under each; NaN rows where none was found.
+    tip : ndarray (K, 2)
+        Its tip.
+    sag : ndarray (K,)
+        Its largest joint angle (rad).
+    stiffness, tension : ndarray (K,)
+        The holding design's total stiffness ``sum (k1 + k2)`` and total tension when straight
+        (:func:`preloads_for_holding`); NaN where infeasible.
+    outcomes : tuple of str
+        Per orientation: the design's status (``"optimal"``, ``"metastable"``) or why there is none
+        (``"infeasible"``, the error's code).
+    vary : str
+        ``"k"`` or ``"L0"``.
+    max_angle : float or None
+    margin : float
+    status : str
+        ``"complete"`` (every orientation has a rest configuration and a design answer) or ``"partial"``.
+    """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "every orientation has its rest configuration and its design's answer (a design or "
+                    "'infeasible')",
+        "partial": "some orientation has no rest configuration or its design failed for another reason (outcomes)",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset({"complete"})
+
+    angles: np.ndarray
+    gravity: np.ndarray
+    q: np.ndarray
+    tip: np.ndarray
+    sag: np.ndarray
+    stiffness: np.ndarray
+    tension: np.ndarray
+    outcomes: tuple[str, ...]
+    vary: str
+    max_angle: float | None
+    margin: float
+    status: str = "complete"
+
+    def __post_init__(self) -> None:
+        freeze(self)
+
+    @property
+    def message(self) -> str:
+        held = sum(o in ("optimal", "metastable") for o in self.outcomes)
+        return (f"{len(self.outcomes)} orientations: {held} held by a design, "
+                f"{sum(o == 'infeasible' for o in self.outcomes)} infeasible, "
+                f"{len(self.outcomes) - held - sum(o == 'infeasible' for o in self.outcomes)} without an answer")
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form: the attributes (NaN as null)."""
+        from ...serialize import nullables
+
+        return {**self.outcome(), "angles": numbers(self.angles), "gravity": numbers(self.gravity),
+                "q": [nullables(r) for r in self.q], "tip": [nullables(r) for r in self.tip],
+                "sag": nullables(self.sag), "stiffness": nullables(self.stiffness), "tension": nullables(self.tension),
+                "outcomes": list(self.outcomes), "vary": [self.vary], "max_angle": self.max_angle,
+                "margin": number(self.margin)}
+
+
+def holding_map(m: Manipulator, orientations: Any = 12, *, vary: Any = "k", margin: float = 1e-3,
+                max_angle: float | None = None, timeout: float | None = None) -> HoldingMap:
+    """The chain's sagged shape and the least preload or stiffness holding it, as its base turns in a vertical
+    plane: for each orientation the chain ``m`` with its gravity (``|g|`` of ``m.gravity``, 9.81 without) turned
+    to the angle, its rest configuration (:func:`~..equilibria.rest.rest_configuration`) and
+    :func:`preloads_for_holding` (``vary``, ``margin``, ``max_angle``).
+
+    ``orientations``: ``K`` (the angles ``2 pi i / K``) or a sequence of angles (rad) of gravity to the chain's axis.
+    """
+    if isinstance(orientations, (int, np.integer)) and not isinstance(orientations, bool):
+        if orientations < 1:
+            raise InvalidParameterError(f"orientations must be >= 1, got {orientations}", field="orientations")
+        angles = 2 * np.pi * np.arange(int(orientations)) / int(orientations) - np.pi
+    else:
+        try:
+            angles = np.asarray(orientations, dtype=float).ravel()
+        except (TypeError, ValueError):
+            raise InvalidParameterError("orientations must be a count or a list of angles (rad)",
+                                        field="orientations") from None
+        if not angles.size or not np.all(np.isfinite(angles)):
+            raise InvalidParameterError("orientations must be finite angles (rad)", field="orientations")
+    if isinstance(vary, (list, tuple)) and len(vary) == 1:
+        vary = vary[0]
+    if vary not in VARY:
+        raise InvalidParameterError(f"vary must be one of {VARY}, got {vary!r}", field="vary")
+    g = 9.81 if m.gravity is None else float(np.hypot(*m.gravity))
+    K, n = angles.size, m.n
+    gravity = g * np.column_stack([np.cos(angles), np.sin(angles)])
+    q, tip = np.full((K, n), np.nan), np.full((K, 2), np.nan)
+    stiff, tens = np.full(K, np.nan), np.full(K, np.nan)
+    outcomes = []
+    with _time_limit(timeout):
+        for i, gv in enumerate(gravity):
+            mi = Manipulator(m.segments, m.payload, tuple(gv), m.joint_forces)
+            try:
+                rest = rest_configuration(mi)
+                q[i], tip[i] = rest.q, rest.tip
+            except TensegrityError as exc:
+                outcomes.append(exc.code)
+                continue
+            try:
+                d = preloads_for_holding(mi, vary=vary, margin=margin, max_angle=max_angle)
+                stiff[i], tens[i] = d.stiffness, d.tension
+                outcomes.append(d.status)
+            except InfeasibleDesignError:
+                outcomes.append("infeasible")
+            except TensegrityError as exc:
+                outcomes.append(exc.code)
+    status = "complete" if all(o in ("optimal", "metastable", "infeasible") for o in outcomes) else "partial"
+    return HoldingMap(angles, gravity, q, tip, np.nanmax(np.abs(q), axis=1, initial=0.0) if K else np.zeros(0),
+                      stiff, tens, tuple(outcomes), vary, max_angle, float(margin), status)

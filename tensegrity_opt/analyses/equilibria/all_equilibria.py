@@ -280,8 +280,9 @@ def find_equilibria(m: Manipulator, dx: float, dy: float = 0.0, *, method: str =
         Homotopy only: seconds before PHCpack is stopped (:class:`SolverError`).
     stops : bool, optional
         Include the equilibria resting on a joint's stop (the closed range; ``at_stop``, ``contact_torques``).
-        Default: yes for a chain with tension-only springs (a slack spring lets a joint reach its stop), no under
-        the linear law (the open range, as before). Under the linear law ``stops=True`` adds them: the search adds
+        Default: yes for a chain with tension-only springs (a slack spring lets a joint reach its stop) or with dead
+        loads (the closed-range search answers it), no under the linear law without loads (the open range, as
+        before). Under the linear law ``stops=True`` adds them: the search adds
         Newton with each joint held on either stop (:func:`~.tension_only.stop_equilibria`, measured; ~0.3-0.5 s at
         n = 4), the homotopy solves one system per free/stop pattern that may reach the target (certified, n <= 5;
         :mod:`.tension_only_homotopy`, no Krawczyk boxes). ``False`` for a tension-only chain keeps the open

@@ -162,6 +162,10 @@ def _solve_tension_only(m: Manipulator, dx: float, dy: float, *, q0, local: bool
         unloaded_only(m, "solve_equilibrium(method='homotopy')" if method == "homotopy" else
                       "solve_equilibrium(certify=True)")
     target = m.check_reachable(dx, dy)
+    if dx == 0.0 and dy == 0.0:
+        # full extension: only the straight chain reaches it, an equilibrium where a tip force balances its torques
+        # (else StraightNotEquilibriumError, as find_equilibria's empty set says)
+        return straight_equilibrium(m)
     q0 = check_q0(m, q0, closed=True)           # the closed range: a start may rest on a stop
     if local and q0 is None:
         raise InvalidParameterError("local=True needs q0", field="q0")

@@ -79,7 +79,8 @@ from .paths import (
 
 __all__ = ["add_plot_parser", "main", "KINDS"]
 
-KINDS = ("curve", "landscape", "shapes", "modes", "torque", "map", "branch", "limit-load", "imperfection", "boundary",
+KINDS = ("curve", "landscape", "shapes", "modes", "holding", "torque", "map", "branch", "limit-load", "imperfection",
+         "boundary",
          "atlas", "plan", "simulation")
 #: Axis quantities of ``plot branch`` (``plots.BRANCH_QUANTITIES``; also ``q1``, ``q2``, ...).
 _QUANTITY_HELP = ("t, fx, fy (tip force), dx, dy (deflection), x, y (tip), u (tip displacement along the control "
@@ -179,6 +180,16 @@ def _cmd_modes(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any]
     fig = plots.plot_modes(md, m, excursion=args.excursion, max_panels=args.max_panels)
     return _render(args, fig, "modes", {"frequencies": [v if v == v else None for v in md.frequencies.tolist()],
                                         "status": md.status})
+
+
+def _cmd_holding(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
+    from ...analyses.design.holding import holding_map
+
+    plots = _plots()
+    hmap = holding_map(m, args.orientations, vary=args.vary, margin=args.margin, max_angle=args.max_angle)
+    fig = plots.plot_holding(hmap, m)
+    return _render(args, fig, "holding", {"elevations": plots.elevations(hmap).tolist(),
+                                          "outcomes": list(hmap.outcomes), "status": hmap.status})
 
 
 def _cmd_torque(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, Any], str]:
@@ -356,6 +367,15 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     k.add_argument("--excursion", type=float, default=0.3, help="largest joint excursion drawn (rad)")
     k.add_argument("--max-panels", type=positive_int, default=8, help="draw at most this many modes (the lowest)")
     k.set_defaults(func=_cmd_modes)
+
+    k = kinds.add_parser("holding", help="the chain under its weight as its base turns: its sagged shapes and the "
+                                         "least stiffness or preload holding it (needs --mass or --payload)")
+    _common(k)
+    k.add_argument("--orientations", type=positive_int, default=12, help="base orientations over a full turn")
+    k.add_argument("--vary", choices=("k", "L0"), default="k", help="design the stiffnesses or the rest lengths")
+    k.add_argument("--margin", type=float, default=1e-3, help="required stability margin (torque / rad)")
+    k.add_argument("--max-angle", type=float, default=None, help="the sag allowed (rad); default anywhere in range")
+    k.set_defaults(func=_cmd_holding)
 
     k = kinds.add_parser("torque", help="torque-angle curves M(q) of the segments (Fig. 2)")
     _common(k)

@@ -33,6 +33,8 @@ equilibria)
 (equilibria)                by stability, titled with Table 2's label
 :func:`plot_modes`          the vibration modes of :func:`~tensegrity_opt.modes`: the chain displaced along
 (``Modes``)                 each mode both ways over its equilibrium, the masses as dots, the frequency
+:func:`plot_holding`        a chain under its weight as its base turns: its sagged shapes (gravity down), and
+(``HoldingMap``)            the least stiffness or preload holding it against the base's elevation
 :func:`plot_torque`         torque-angle curves ``M(q)`` of segments over the physical range (Fig. 2), their
 (segments)                  equilibria marked, ``K`` and the curve's kind in the legend
 :func:`plot_map`            critical load ``P = -Fx0`` over two design parameters (blank where
@@ -118,6 +120,7 @@ from .equilibria import (
     torque_zeros,
 )
 from .geometry import chain_geometry
+from .loads import elevations, plot_holding
 from .maps import PARAM_LABELS, plot_map
 from .paths import (
     ATLAS_STYLES,
@@ -151,7 +154,8 @@ from .style import (
     save,
 )
 
-__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_modes", "plot_torque", "plot_map", "plot_branches",
+__all__ = ["plot_curve", "plot_landscape", "plot_shapes", "plot_modes", "plot_holding", "elevations", "plot_torque",
+           "plot_map", "plot_branches",
            "plot_limit_load",
            "plot_imperfection", "plot_boundary", "plot_atlas", "plot_preload_plan", "plot_simulation", "save", "render",
            "new_figure", "chain_geometry", "chain_label", "curve_breaks", "jump_kind", "jump_label", "landscape_region",
