@@ -158,7 +158,8 @@ FIGURES = {f.__name__: f for f in (fig2_torque, fig4_landscape, fig4_landscape_q
 
 #: Every figure kind's default (``tensegrity-opt plot --help``), drawn by its command: ``default_<name>.png`` is
 #: ``tensegrity-opt plot <these arguments> -o default_<name>.png``, at the command's own resolution. ``modes`` needs
-#: a mass (the paper's chain with 0.1 per segment). ``map``,
+#: a mass (the paper's chain with 0.1 per segment), ``holding`` a chain with weight (the 6-segment arm of
+#: ``docs/model.md``, "Weights and loads"). ``map``,
 #: ``imperfection``, ``plan`` and ``simulation`` need their inputs (the examples of ``tensegrity-opt plot KIND
 #: --help``); the branch diagram also with ``--depth 2`` and on the axes of the paper's Fig. 6.
 DEFAULTS = {
@@ -166,6 +167,8 @@ DEFAULTS = {
     "landscape": ["landscape"],
     "shapes": ["shapes"],
     "modes": ["modes", "--mass", "0.1", "--dx", "1"],
+    "holding": ["holding", "--n", "6", "--a", "0.04", "--b", "0.05", "--k", "3000", "--L0", "0.05", "--mass", "0.05",
+                "--payload", "0.1", "--max-angle", "0.05", "--directions", "16"],
     "torque": ["torque"],
     "map": ["map", "--x", "k", "0.5", "2", "16", "--y", "L0", "0.5", "2.5", "21"],
     "branch": ["branch"],

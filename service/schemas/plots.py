@@ -19,6 +19,7 @@ from . import common as s
 from .atlas import ATLAS_REQUEST_EXAMPLE, _AtlasFields
 from .control import PLAN_REQUEST_EXAMPLE, SIMULATION_REQUEST_EXAMPLE, _PlanFields, _SimulationFields
 from .curves import CurveDeflections
+from .design import DesignManipulatorIn
 from .modes import MASSIVE_CHAIN, _ModesFields
 from .paths import (
     MAX_BRANCHES,
@@ -39,6 +40,10 @@ MAX_TORQUE_SEGMENTS = 12
 MAX_TORQUE_CURVE_POINTS = 2001
 #: Most equilibrium panels in one shapes figure.
 MAX_PANELS = 24
+#: Orientations of ``/v1/plots/holding`` at most (each a rest configuration and a holding design).
+MAX_GRAVITY_DIRECTIONS = 72
+#: Its example chain: six segments in a vertical plane (the worked example of ``docs/model.md``).
+UPRIGHT_ARM = {"n": 6, "a": 0.04, "b": 0.05, "k": 3000.0, "L0": 0.05, "mass": 0.05, "payload": 0.1}
 #: Largest design value a map axis accepts (lengths and stiffnesses alike).
 MIN_DESIGN_VALUE = 1.0e-6
 MAX_DESIGN_VALUE = 1.0e6
@@ -128,6 +133,24 @@ class PlotModesRequest(_PlotRequest, _ModesFields):
                              description="each mode drawn with its largest joint excursion this many rad")
     max_panels: s.Int = Field(8, ge=1, le=MAX_PANELS, description=f"draw at most this many modes, the lowest "
                                                                   f"(1..{MAX_PANELS})")
+
+
+class PlotHoldingRequest(_PlotRequest):
+    """The chain under its weight as its base turns: its sagged shapes and the least design holding it."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={
+        "examples": [{"manipulator": UPRIGHT_ARM, "max_angle": 0.05, "directions": 16}]})
+
+    manipulator: DesignManipulatorIn
+    directions: s.Int = Field(12, ge=1, le=MAX_GRAVITY_DIRECTIONS,
+                              description=f"gravity directions (base orientations) over a full turn "
+                                          f"(1..{MAX_GRAVITY_DIRECTIONS})")
+    vary: list[Literal["k", "L0"]] = Field(["k"], min_length=1, max_length=1,
+                                           description="what the holding design varies (one of k, L0)")
+    margin: Annotated[float, Field(ge=0, le=s.MAX_STIFFNESS, allow_inf_nan=False)] = Field(
+        1e-3, description=s.MARGIN_DOC)
+    max_angle: Annotated[float, Field(gt=0, lt=3.141592653589793, allow_inf_nan=False)] | None = Field(
+        None, description="the sag allowed (rad); default anywhere in range")
 
 
 class PlotAngleRange(s.RangeIn):

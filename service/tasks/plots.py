@@ -94,6 +94,16 @@ def plot_modes_task(req: ps.PlotModesRequest) -> Any:
 
 
 @_rendered
+def plot_holding_task(req: ps.PlotHoldingRequest) -> Any:
+    from tensegrity_opt.analyses.design.holding import holding_map
+    from tensegrity_opt.applications import plots
+
+    m = build_manipulator(req.manipulator)
+    hmap = holding_map(m, req.directions, vary=req.vary, margin=req.margin, max_angle=req.max_angle)
+    return plots.plot_holding(hmap, m)
+
+
+@_rendered
 def plot_torque_task(req: ps.PlotTorqueRequest) -> Any:
     from tensegrity_opt.applications import plots
 
@@ -188,6 +198,7 @@ FIGURE_TASKS: dict[str, tuple[Any, Callable[..., bytes], bool]] = {
     "landscape": (ps.PlotLandscapeRequest, plot_landscape_task, False),
     "shapes": (ps.PlotShapesRequest, plot_shapes_task, False),
     "modes": (ps.PlotModesRequest, plot_modes_task, False),
+    "holding": (ps.PlotHoldingRequest, plot_holding_task, False),
     "torque": (ps.PlotTorqueRequest, plot_torque_task, False),
     "map": (ps.PlotMapRequest, plot_map_task, False),
     "branch": (ps.PlotBranchRequest, plot_branch_task, True),

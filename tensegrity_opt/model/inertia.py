@@ -10,21 +10,21 @@ In the absolute link angles ``psi_j = q_1 + ... + q_j`` a mass point on link ``L
 the links before joint ``i``, plus ``d`` on link ``L``). So the kinetic energy ``1/2 psi'^T M_psi psi'`` has
 ``M_psi[j, k] = W[j, k] cos(psi_j - psi_k) + diag(I)``, ``W = sum_points m c c^T`` constant, and in the joint
 angles ``M = A^T M_psi A`` (``A`` the lower-triangular ones: ``psi = A q``).
+
+The functions take a :class:`~.manipulator.Manipulator` (typed ``Any``: ``manipulator`` imports this module, and no
+import goes back).
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+from typing import Any
 
 import numpy as np
-
-if TYPE_CHECKING:
-    from .manipulator import Manipulator
 
 __all__ = ["mass_points", "mass_matrix", "total_mass"]
 
 
-def mass_points(m: "Manipulator") -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def mass_points(m: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The moving mass points: ``(mass, joint, link, offset)`` per point: the point sits at joint ``joint``'s
     position plus ``offset`` along link ``link`` (0-based links; ``link = -1`` is the fixed base). The triangles'
     centroids of every segment, then the payload at the tip."""
@@ -37,7 +37,7 @@ def mass_points(m: "Manipulator") -> tuple[np.ndarray, np.ndarray, np.ndarray, n
     return np.array(mass), np.array(joint), np.array(link), np.array(offset)
 
 
-def _levers(m: "Manipulator") -> tuple[np.ndarray, np.ndarray]:
+def _levers(m: Any) -> tuple[np.ndarray, np.ndarray]:
     """``(W, I)``: the constant matrix ``W = sum m c c^T`` (n, n) and the links' rotational inertias (n,)."""
     mass, joint, link, offset = mass_points(m)
     n = m.n
@@ -53,7 +53,7 @@ def _levers(m: "Manipulator") -> tuple[np.ndarray, np.ndarray]:
     return W, inertia
 
 
-def mass_matrix(m: "Manipulator", q) -> np.ndarray:
+def mass_matrix(m: Any, q) -> np.ndarray:
     """The mass matrix ``M(q)`` (n, n) in the joint angles: kinetic energy ``1/2 q'^T M q'``."""
     q = np.asarray(q, dtype=float)
     W, inertia = _levers(m)
@@ -63,6 +63,6 @@ def mass_matrix(m: "Manipulator", q) -> np.ndarray:
     return np.cumsum(np.cumsum(Mpsi[::-1, ::-1], axis=0), axis=1)[::-1, ::-1]
 
 
-def total_mass(m: "Manipulator") -> float:
+def total_mass(m: Any) -> float:
     """The segments' masses and the payload."""
     return float(sum(s.mass for s in m.segments) + m.payload)

@@ -16,19 +16,19 @@ Derivatives (``u x G = cos psi G_y - sin psi G_x``): ``dV / dq_i = -sum_{j >= i}
 ``d^2 V / dq_i dq_k = sum_{j >= max(i, k)} G_j . u_j``.
 
 :func:`unloaded_only` is the one refusal of an analysis that does not (yet) honour the loads.
+
+The functions take a :class:`~.manipulator.Manipulator` (typed ``Any``: ``manipulator`` imports this module, and no
+import goes back).
 """
 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
 from ..errors import InvalidParameterError, UnsupportedError
-
-if TYPE_CHECKING:
-    from .manipulator import Manipulator
 
 __all__ = ["loads_key", "loads_json", "describe", "check_gravity", "check_joint_forces", "link_loads", "load_offset",
            "load_potential", "load_gradient",
@@ -90,7 +90,7 @@ def check_joint_forces(value: Any, n: int) -> tuple[tuple[int, tuple[float, floa
     return tuple(out)
 
 
-def _lever_rows(m: "Manipulator") -> tuple[np.ndarray, np.ndarray]:
+def _lever_rows(m: Any) -> tuple[np.ndarray, np.ndarray]:
     """``(w, C)``: the dead loads' forces ``w`` (P, 2) and their points' lever rows ``C`` (P, n)."""
     from .inertia import mass_points
 
@@ -110,14 +110,14 @@ def _lever_rows(m: "Manipulator") -> tuple[np.ndarray, np.ndarray]:
     return np.vstack(w_rows), np.vstack(c_rows)
 
 
-def link_loads(m: "Manipulator") -> np.ndarray:
+def link_loads(m: Any) -> np.ndarray:
     """``G`` (n, 2): the dead loads on each link, ``V = V_0 - sum_j G_j . u_j`` (module docstring); zeros when the
     chain carries none."""
     w, C = _lever_rows(m)
     return C.T @ w
 
 
-def load_offset(m: "Manipulator") -> float:
+def load_offset(m: Any) -> float:
     """``V_0 = -sum w . p_1``: the loads' potential that no joint angle changes (joint 1 is fixed at ``(b_1, 0)``)."""
     w, _ = _lever_rows(m)
     return float(-w[:, 0].sum() * m.base_length) if w.size else 0.0
@@ -128,7 +128,7 @@ def _directions(q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return np.cos(phi), np.sin(phi)
 
 
-def load_potential(m: "Manipulator", Q: Any) -> np.ndarray | float:
+def load_potential(m: Any, Q: Any) -> np.ndarray | float:
     """``V(q)`` of one configuration (n,) or of the rows of ``Q`` (M, n)."""
     G = m.link_loads
     c, s = _directions(np.asarray(Q, float))
@@ -136,7 +136,7 @@ def load_potential(m: "Manipulator", Q: Any) -> np.ndarray | float:
     return float(v) if np.ndim(v) == 0 else v
 
 
-def load_gradient(m: "Manipulator", Q: Any) -> np.ndarray:
+def load_gradient(m: Any, Q: Any) -> np.ndarray:
     """``dV / dq`` of one configuration (n,) or of the rows of ``Q`` (M, n)."""
     G = m.link_loads
     c, s = _directions(np.asarray(Q, float))
@@ -144,7 +144,7 @@ def load_gradient(m: "Manipulator", Q: Any) -> np.ndarray:
     return -np.flip(np.cumsum(np.flip(cross, -1), axis=-1), -1)
 
 
-def load_hessian(m: "Manipulator", q: Any) -> np.ndarray:
+def load_hessian(m: Any, q: Any) -> np.ndarray:
     """``d^2 V / dq^2`` (n, n) at ``q`` (n,)."""
     G = m.link_loads
     c, s = _directions(np.asarray(q, float))
@@ -153,7 +153,7 @@ def load_hessian(m: "Manipulator", q: Any) -> np.ndarray:
     return d[idx]
 
 
-def loads_key(m: "Manipulator") -> tuple | None:
+def loads_key(m: Any) -> tuple | None:
     """The chain's dead loads as a plain tuple ``(payload, gravity, joint_forces)`` for a result to carry (picklable,
     immutable), or None when it carries none (:attr:`Manipulator.loaded`)."""
     return (m.payload, m.gravity, m.joint_forces) if m.loaded else None

@@ -81,6 +81,7 @@ def _bodies(n: int, m: dict[str, Any]) -> dict[str, dict[str, Any]]:
         "/v1/plots/landscape": {"manipulator": m, "dx": 0.1, "pair": [0, 3], "grid": 3},
         "/v1/plots/shapes": {"manipulator": m, "dx": 0.1},
         "/v1/plots/modes": {"manipulator": _massive(m), "dx": 0.1, "max_panels": 2},
+        "/v1/plots/holding": {"manipulator": _massive(m), "directions": 1},
         "/v1/plots/map": {"manipulator": m, "param_x": "k", "values_x": [1.0, 2.0], "param_y": "L0",
                           "values_y": [1.0, 1.5]},
         "/v1/plots/branch": {"manipulator": m, "control": load, "stop_at": "event", "max_points": 50, "x": "t",

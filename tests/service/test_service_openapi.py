@@ -34,8 +34,8 @@ def test_cli_prints_the_spec(monkeypatch):
     assert out == SPEC.read_text(encoding="utf-8")
 
 
-FIGURE_KINDS = ("curve", "landscape", "shapes", "modes", "torque", "map", "branch", "limit-load", "imperfection",
-                "boundary", "atlas", "plan", "simulation")
+FIGURE_KINDS = ("curve", "landscape", "shapes", "modes", "holding", "torque", "map", "branch", "limit-load",
+                "imperfection", "boundary", "atlas", "plan", "simulation")
 
 
 def test_every_operation_is_documented():

@@ -267,6 +267,19 @@ FIGURES: tuple[Figure, ...] = (
             "paper": {"summary": "the paper's chain with masses 0.1 at dx = 1", "value": {
                 "manipulator": {**_M, "mass": 0.1}, "dx": 1.0, "dy": 0.0}}}),
     Figure(
+        "holding", ps.PlotHoldingRequest, task=tasks.plot_holding_task,
+        summary="Figure: the chain under its weight as its base turns, and the least design holding it",
+        description="For `directions` gravity directions (base orientations) over a full turn (the chain's gravity "
+                    "magnitude, 9.81 without `gravity`): left, the rest configuration under its weight drawn with "
+                    "gravity down; "
+                    "right, the least total stiffness (`vary: [k]`) or preload tension (`vary: [L0]`) of "
+                    "`/v1/design/holding` holding it within `max_angle` with `margin`, against the base's elevation "
+                    "(a cross where none holds it), and the sag without a design. At most 60 segments. " + _FORMATS,
+        responses=image_responses("solver_failed"),
+        examples={
+            "arm": {"summary": "a 6-segment arm over 16 orientations, held within 0.05 rad", "value": {
+                "manipulator": ps.UPRIGHT_ARM, "max_angle": 0.05, "directions": 16}}}),
+    Figure(
         "torque", ps.PlotTorqueRequest, task=tasks.plot_torque_task, limits=_no_chain,
         summary="Figure: torque-angle curves of segments (Fig. 2)",
         description="`M(q)` of each segment (`Segment.torque`, the data of `/v1/segment/torque`) over its physical "

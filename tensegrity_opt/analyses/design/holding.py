@@ -339,27 +339,28 @@ class HoldingMap(Outcome):
                 "margin": number(self.margin)}
 
 
-def holding_map(m: Manipulator, orientations: Any = 12, *, vary: Any = "k", margin: float = 1e-3,
+def holding_map(m: Manipulator, directions: Any = 12, *, vary: Any = "k", margin: float = 1e-3,
                 max_angle: float | None = None, timeout: float | None = None) -> HoldingMap:
     """The chain's sagged shape and the least preload or stiffness holding it, as its base turns in a vertical
     plane: for each orientation the chain ``m`` with its gravity (``|g|`` of ``m.gravity``, 9.81 without) turned
     to the angle, its rest configuration (:func:`~..equilibria.rest.rest_configuration`) and
     :func:`preloads_for_holding` (``vary``, ``margin``, ``max_angle``).
 
-    ``orientations``: ``K`` (the angles ``2 pi i / K``) or a sequence of angles (rad) of gravity to the chain's axis.
+    ``directions``: ``K`` (the angles ``2 pi i / K``) or a sequence of angles (rad) of gravity to the chain's axis
+    (as :func:`~.load_capacity.load_capacity`'s ``directions`` of the tip load).
     """
-    if isinstance(orientations, (int, np.integer)) and not isinstance(orientations, bool):
-        if orientations < 1:
-            raise InvalidParameterError(f"orientations must be >= 1, got {orientations}", field="orientations")
-        angles = 2 * np.pi * np.arange(int(orientations)) / int(orientations) - np.pi
+    if isinstance(directions, (int, np.integer)) and not isinstance(directions, bool):
+        if directions < 1:
+            raise InvalidParameterError(f"directions must be >= 1, got {directions}", field="directions")
+        angles = 2 * np.pi * np.arange(int(directions)) / int(directions) - np.pi
     else:
         try:
-            angles = np.asarray(orientations, dtype=float).ravel()
+            angles = np.asarray(directions, dtype=float).ravel()
         except (TypeError, ValueError):
-            raise InvalidParameterError("orientations must be a count or a list of angles (rad)",
-                                        field="orientations") from None
+            raise InvalidParameterError("directions must be a count or a list of angles (rad)",
+                                        field="directions") from None
         if not angles.size or not np.all(np.isfinite(angles)):
-            raise InvalidParameterError("orientations must be finite angles (rad)", field="orientations")
+            raise InvalidParameterError("directions must be finite angles (rad)", field="directions")
     if isinstance(vary, (list, tuple)) and len(vary) == 1:
         vary = vary[0]
     if vary not in VARY:

@@ -32,7 +32,7 @@ from ...errors import (
     UnreachableTargetError,
     UnsupportedError,
 )
-from ...model.loads import describe, loads_json, loads_key
+from ...model.loads import describe, load_potential, loads_json, loads_key
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, sign_string
 from ...model.springs import SpringFields, Springs
@@ -40,6 +40,7 @@ from ...numerics import LocalResult, chain_solver
 from ...numerics.slack_nlp import slack_nlp
 from ...outcome import Outcome, SolverInfo
 from ...serialize import number, numbers
+from ...timelimit import check_time
 from .buckling import critical_force, tip_slope
 from .lower_bound import EnergyBound
 from .stability import analyse, inertia_of_reduced
@@ -393,8 +394,6 @@ def _under_force_slack(m: Manipulator, force: np.ndarray, q0) -> Equilibrium:
     not all taut)."""
     q0 = check_q0(m, q0, closed=True)
     if q0 is None and m.loaded:                 # from the sagged shape (the least potential with the tip free)
-        from .tension_only import least_energy_free
-
         try:
             q0 = least_energy_free(m).q
         except TensegrityError:
@@ -534,3 +533,84 @@ def _equilibrium_under_force_slack(m: Manipulator, force: np.ndarray, q0: np.nda
                        solver=SolverInfo(res.status, res.iterations), tip=m.tip(q), control="force",
                        hessian_eigenvalues=w, springs=m.springs, stops=(side != 0.0, np.maximum(contact, 0.0)),
                        loads=loads_key(m))
+
+
+# ----------------------------------------------------------------------------- the free tip under dead loads
+#: The free-tip search under dead loads (:func:`least_energy_free`): random configurations per joint ranked, local
+#: solves from the lowest ``FREE_STARTS`` distinct ones (besides straight); two starts closer than ``FREE_DISTINCT``
+#: (rad) are one, two equilibria closer than ``FREE_SAME`` are one.
+FREE_SAMPLE_PER_JOINT = 256
+FREE_STARTS = 6
+FREE_DISTINCT = 0.15
+FREE_SAME = 1e-4
+
+
+def least_energy_free(m: Manipulator, force=(0.0, 0.0)) -> Equilibrium:
+    """The least-potential stable equilibrium of ``m`` with its tip free under the dead tip load ``force`` (default
+    none: the rest configuration), in the closed joint range: the local solve of
+    :func:`~.equilibrium._equilibrium_under_force_slack` (IPOPT on the slack problem with the tip rows free, Newton,
+    the checks in numpy) from straight and from the ``FREE_STARTS`` lowest-potential distinct configurations of
+    ``SAMPLE_PER_JOINT * n`` seeded random ones of the closed range (a quarter with one joint on a stop), ranked
+    by ``E + V - F . tip`` (numpy, all at once). A measured global search, not a certified one (``status``
+    ``"converged"``)."""
+    F = np.asarray(force, dtype=float)
+    found, failures, refused = free_stable(m, F, free_starts(m, F, FREE_STARTS))
+    if not found:
+        if refused is not None:
+            raise refused
+        why = ", ".join(sorted(set(failures))) or "all unstable"
+        raise NoEquilibriumError(f"no stable equilibrium with the tip free under the force ({F[0]:g}, {F[1]:g}) found "
+                                 f"from {FREE_STARTS + 1} starts ({why})", status="no_stable_equilibrium")
+    key = [e.energy - float(F @ e.tip) for e in found]
+    e0 = min(key)
+    tied = [e for e, v in zip(found, key) if v <= e0 + 1e-10 * max(1.0, abs(e0))]
+    best = max(tied, key=lambda e: (next((float(np.sign(v)) for v in e.q if abs(v) > 1e-9), 0.0),
+                                    -float(np.abs(e.q).max())))
+    if F[1] == 0.0 and m == m.mirrored() and next((v for v in best.q if abs(v) > 1e-9), 0.0) < 0.0:
+        twin, _, _ = free_stable(m, F, [-best.q])   # its mirror image ties: the one with q_1 > 0 (as elsewhere)
+        if twin and abs(twin[0].energy - best.energy) <= 1e-10 * max(1.0, abs(best.energy)):
+            best = twin[0]
+    return best
+
+
+def free_starts(m: Manipulator, F: np.ndarray, count: int) -> list[np.ndarray]:
+    """Straight and the ``count`` lowest-potential distinct configurations of a seeded random sample of the closed
+    range (a quarter with one joint on a stop), ranked by ``E + V - F . tip``."""
+    n, lim = m.n, m.joint_limits
+    rng = np.random.default_rng(20261209 + n)
+    Q = rng.uniform(-0.98, 0.98, size=(FREE_SAMPLE_PER_JOINT * n, n)) * lim
+    k = Q.shape[0] // 4
+    j = rng.integers(0, n, size=k)
+    Q[np.arange(k), j] = rng.choice([-1.0, 1.0], size=k) * lim[j]
+    tip = m.tip_kinematics(Q).tip
+    E = m.springs.energy(Q) + (load_potential(m, Q) if m.loaded else 0.0) - tip @ F
+    starts = [np.zeros(n)]
+    for i in np.argsort(E, kind="stable"):
+        if all(float(np.abs(Q[i] - s).max()) > FREE_DISTINCT for s in starts):
+            starts.append(Q[i])
+        if len(starts) > count:
+            break
+    return starts
+
+
+def free_stable(m: Manipulator, F: np.ndarray, starts) -> tuple[list[Equilibrium], list[str], Any]:
+    """The distinct stable equilibria reached from ``starts`` (tip free under ``F``), the failures' statuses and the
+    last refusal (a free joint left undetermined)."""
+    found: list[Equilibrium] = []
+    refused: UnsupportedError | None = None
+    failures: list[str] = []
+    for qs in starts:
+        check_time("the free-tip search")
+        try:
+            eq = _equilibrium_under_force_slack(m, F, qs)
+        except UnsupportedError as exc:
+            refused = exc
+            continue
+        except NoEquilibriumError as exc:
+            failures.append(str(exc.details.get("status") or "failed"))
+            continue
+        if eq.stable and not any(float(np.abs(eq.q - e.q).max()) < FREE_SAME for e in found):
+            found.append(eq)
+    return found, failures, refused
+
+

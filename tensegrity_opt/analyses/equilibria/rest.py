@@ -49,7 +49,15 @@ from ...outcome import SolverInfo
 from ...timelimit import check_time
 from .all_equilibria import HOMOTOPY_MAX_N, EquilibriumSet, certify_set, homotopy_set, searched_set
 from .buckling import critical_force
-from .equilibrium import RESIDUAL_TOL, Equilibrium, is_equilibrium, make_equilibrium
+from .equilibrium import (
+    RESIDUAL_TOL,
+    Equilibrium,
+    free_stable,
+    free_starts,
+    is_equilibrium,
+    least_energy_free,
+    make_equilibrium,
+)
 
 __all__ = ["ANGLE_DIGITS", "ENERGY_TIE", "MAX_PRODUCT", "find_equilibria_under_force", "rest_configuration",
            "rest_points"]
@@ -432,9 +440,7 @@ def find_equilibria_under_force(m: Manipulator, fx: float = 0.0, fy: float = 0.0
 
 def _loaded_set(m: Manipulator, force: np.ndarray, stable_only: bool, method: str) -> EquilibriumSet:
     """:func:`find_equilibria_under_force` of a chain with dead loads: its stable equilibria found by the free-tip
-    search (:func:`~.tension_only.stable_free_equilibria`); the unstable ones are not looked for (refused by name)."""
-    from .tension_only import stable_free_equilibria
-
+    search (:func:`stable_free_equilibria`); the unstable ones are not looked for (refused by name)."""
     if method == "homotopy":
         unloaded_only(m, "find_equilibria_under_force(method='homotopy')")
     if not stable_only:
@@ -449,6 +455,33 @@ def _loaded_set(m: Manipulator, force: np.ndarray, stable_only: bool, method: st
                           message=f"{len(eqs)} stable equilibria{where} found under the chain's dead loads by local "
                                   "descents from straight, the unloaded chain's wells and random configurations of "
                                   "the closed range (measured, not certified)")
+
+
+#: The stable set under dead loads with the tip free: random starts per joint besides the unloaded chain's wells.
+FREE_SET_PER_JOINT = 8
+#: ... and at most this many of the unloaded chain's wells (the product of its segments' wells) as starts.
+FREE_SET_WELLS = 64
+
+
+def stable_free_equilibria(m: Manipulator, force=(0.0, 0.0)) -> list[Equilibrium]:
+    """The distinct stable equilibria of ``m`` with its tip free under the dead tip load ``force`` that the local
+    solves of :func:`~.equilibrium.least_energy_free` reach from straight, the unloaded chain's stable rest
+    configurations (its segments' wells: each a well the loads deform, at most ``FREE_SET_WELLS``) and
+    ``FREE_SET_PER_JOINT * n``
+    ranked random starts; sorted by ``E + V - F . tip``. Measured, not certified: a well no start descends into is
+    missed."""
+    F = np.asarray(force, dtype=float)
+    starts = free_starts(m, F, FREE_SET_PER_JOINT * m.n)
+    try:
+        bare = Manipulator(m.segments).with_spring("linear")
+        wells = find_equilibria_under_force(bare, stable_only=True)
+        starts += [np.clip(e.q, -m.joint_limits, m.joint_limits) for e in list(wells)[:FREE_SET_WELLS]]
+    except (NoEquilibriumError, InvalidParameterError):
+        pass                                    # no well, or too many to list: the random starts only
+    found, _, refused = free_stable(m, F, starts)
+    if not found and refused is not None:
+        raise refused
+    return sorted(found, key=lambda e: e.energy - float(F @ e.tip))
 
 
 def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equilibrium:
@@ -484,7 +517,7 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
 
     A chain with dead loads (weights under gravity, joint forces: the sagged shape) is no longer a sum of one-joint
     energies: its least potential ``E + V`` with the tip free is searched over the closed joint range
-    (:func:`~.tension_only.least_energy_free`: measured, ``status="converged"``; a joint may rest on its stop).
+    (:func:`~.equilibrium.least_energy_free`: measured, ``status="converged"``; a joint may rest on its stop).
 
     Returns
     -------
@@ -503,8 +536,6 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
     if which != "least_energy":
         raise InvalidParameterError(f"which must be 'least_energy', got {which!r}", field="which")
     if m.loaded:
-        from .tension_only import least_energy_free
-
         return least_energy_free(m)
     if not m.linear_springs:
         return _slack_rest(m)

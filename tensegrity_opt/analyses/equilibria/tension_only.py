@@ -35,11 +35,9 @@ it is isolated (the tip constraint holds it), and refused naming the segment whe
 
 from __future__ import annotations
 
-from typing import Any
-
 import numpy as np
 
-from ...errors import InvalidParameterError, NoEquilibriumError, UnreachableTargetError, UnsupportedError
+from ...errors import NoEquilibriumError, UnreachableTargetError, UnsupportedError
 from ...model.loads import load_potential, loads_key
 from ...model.manipulator import Manipulator
 from ...numerics import distinct_rows
@@ -58,7 +56,7 @@ from .equilibrium import (
 )
 from .seeds import project_to_target
 
-__all__ = ["least_energy_slack", "least_energy_free", "stable_free_equilibria", "all_equilibria_slack",
+__all__ = ["least_energy_slack", "all_equilibria_slack",
            "stop_equilibria", "STARTS", "STOP_TOL", "SEARCH_PER_JOINT",
            "STOP_STARTS"]
 
@@ -123,105 +121,6 @@ def least_energy_slack(m: Manipulator, dx: float, dy: float, target: np.ndarray,
         raise NoEquilibriumError(f"no stable equilibrium found from {len(starts)} start(s) of the tension-only search "
                                  f"(IPOPT: {met})", status="no_stable_equilibrium")
     return best
-
-
-def least_energy_free(m: Manipulator, force=(0.0, 0.0)) -> Equilibrium:
-    """The least-potential stable equilibrium of ``m`` with its tip free under the dead tip load ``force`` (default
-    none: the rest configuration), in the closed joint range: the local solve of
-    :func:`~.equilibrium._equilibrium_under_force_slack` (IPOPT on the slack problem with the tip rows free, Newton,
-    the checks in numpy) from straight and from the ``STARTS`` lowest-potential distinct configurations of
-    ``SAMPLE_PER_JOINT * n`` seeded random ones of the closed range (a quarter with one joint on a stop), ranked
-    by ``E + V - F . tip`` (numpy, all at once). A measured global search, not a certified one (``status``
-    ``"converged"``)."""
-    F = np.asarray(force, dtype=float)
-    found, failures, refused = _free_stable(m, F, _free_starts(m, F, STARTS))
-    if not found:
-        if refused is not None:
-            raise refused
-        raise NoEquilibriumError(f"no stable equilibrium with the tip free under the force ({F[0]:g}, {F[1]:g}) found "
-                                 f"from {STARTS + 1} starts ({', '.join(sorted(set(failures))) or 'all unstable'})",
-                                 status="no_stable_equilibrium")
-    key = [e.energy - float(F @ e.tip) for e in found]
-    e0 = min(key)
-    tied = [e for e, v in zip(found, key) if v <= e0 + 1e-10 * max(1.0, abs(e0))]
-    best = max(tied, key=lambda e: (next((float(np.sign(v)) for v in e.q if abs(v) > 1e-9), 0.0),
-                                    -float(np.abs(e.q).max())))
-    if F[1] == 0.0 and m == m.mirrored() and next((v for v in best.q if abs(v) > 1e-9), 0.0) < 0.0:
-        twin, _, _ = _free_stable(m, F, [-best.q])   # its mirror image ties: the one with q_1 > 0 (as elsewhere)
-        if twin and abs(twin[0].energy - best.energy) <= 1e-10 * max(1.0, abs(best.energy)):
-            best = twin[0]
-    return best
-
-
-#: The stable set under dead loads with the tip free: random starts per joint besides the unloaded chain's wells.
-FREE_SET_PER_JOINT = 8
-#: ... and at most this many of the unloaded chain's wells (the product of its segments' wells) as starts.
-FREE_SET_WELLS = 64
-
-
-def stable_free_equilibria(m: Manipulator, force=(0.0, 0.0)) -> list[Equilibrium]:
-    """The distinct stable equilibria of ``m`` with its tip free under the dead tip load ``force`` that the local
-    solves of :func:`least_energy_free` reach from straight, the unloaded chain's stable rest configurations (its
-    segments' wells: each a well the loads deform, at most ``FREE_SET_WELLS``) and ``FREE_SET_PER_JOINT * n``
-    ranked random starts; sorted by ``E + V - F . tip``. Measured, not certified: a well no start descends into is
-    missed."""
-    from .rest import find_equilibria_under_force
-
-    F = np.asarray(force, dtype=float)
-    starts = _free_starts(m, F, FREE_SET_PER_JOINT * m.n)
-    try:
-        bare = Manipulator(m.segments).with_spring("linear")
-        wells = find_equilibria_under_force(bare, stable_only=True)
-        starts += [np.clip(e.q, -m.joint_limits, m.joint_limits) for e in list(wells)[:FREE_SET_WELLS]]
-    except (NoEquilibriumError, InvalidParameterError):
-        pass                                    # no well, or too many to list: the random starts only
-    found, _, refused = _free_stable(m, F, starts)
-    if not found and refused is not None:
-        raise refused
-    return sorted(found, key=lambda e: e.energy - float(F @ e.tip))
-
-
-def _free_starts(m: Manipulator, F: np.ndarray, count: int) -> list[np.ndarray]:
-    """Straight and the ``count`` lowest-potential distinct configurations of a seeded random sample of the closed
-    range (a quarter with one joint on a stop), ranked by ``E + V - F . tip``."""
-    n, lim = m.n, m.joint_limits
-    rng = np.random.default_rng(20261209 + n)
-    Q = rng.uniform(-0.98, 0.98, size=(SAMPLE_PER_JOINT * n, n)) * lim
-    k = Q.shape[0] // 4
-    j = rng.integers(0, n, size=k)
-    Q[np.arange(k), j] = rng.choice([-1.0, 1.0], size=k) * lim[j]
-    tip = m.tip_kinematics(Q).tip
-    E = m.springs.energy(Q) + (load_potential(m, Q) if m.loaded else 0.0) - tip @ F
-    starts = [np.zeros(n)]
-    for i in np.argsort(E, kind="stable"):
-        if all(float(np.abs(Q[i] - s).max()) > DISTINCT for s in starts):
-            starts.append(Q[i])
-        if len(starts) > count:
-            break
-    return starts
-
-
-def _free_stable(m: Manipulator, F: np.ndarray, starts) -> tuple[list[Equilibrium], list[str], Any]:
-    """The distinct stable equilibria reached from ``starts`` (tip free under ``F``), the failures' statuses and the
-    last refusal (a free joint left undetermined)."""
-    from .equilibrium import _equilibrium_under_force_slack
-
-    found: list[Equilibrium] = []
-    refused: UnsupportedError | None = None
-    failures: list[str] = []
-    for qs in starts:
-        check_time("the free-tip search")
-        try:
-            eq = _equilibrium_under_force_slack(m, F, qs)
-        except UnsupportedError as exc:
-            refused = exc
-            continue
-        except NoEquilibriumError as exc:
-            failures.append(str(exc.details.get("status") or "failed"))
-            continue
-        if eq.stable and not any(float(np.abs(eq.q - e.q).max()) < SAME_EQUILIBRIUM * 1e3 for e in found):
-            found.append(eq)
-    return found, failures, refused
 
 
 def _least(found: list[Equilibrium], q0) -> Equilibrium | None:

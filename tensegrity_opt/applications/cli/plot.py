@@ -186,7 +186,7 @@ def _cmd_holding(args: argparse.Namespace, m: Manipulator) -> tuple[dict[str, An
     from ...analyses.design.holding import holding_map
 
     plots = _plots()
-    hmap = holding_map(m, args.orientations, vary=args.vary, margin=args.margin, max_angle=args.max_angle)
+    hmap = holding_map(m, args.directions, vary=args.vary, margin=args.margin, max_angle=args.max_angle)
     fig = plots.plot_holding(hmap, m)
     return _render(args, fig, "holding", {"elevations": plots.elevations(hmap).tolist(),
                                           "outcomes": list(hmap.outcomes), "status": hmap.status})
@@ -371,7 +371,8 @@ def add_plot_parser(subparsers: Any) -> argparse.ArgumentParser:
     k = kinds.add_parser("holding", help="the chain under its weight as its base turns: its sagged shapes and the "
                                          "least stiffness or preload holding it (needs --mass or --payload)")
     _common(k)
-    k.add_argument("--orientations", type=positive_int, default=12, help="base orientations over a full turn")
+    k.add_argument("--directions", type=positive_int, default=12,
+                   help="gravity directions (base orientations) over a full turn")
     k.add_argument("--vary", choices=("k", "L0"), default="k", help="design the stiffnesses or the rest lengths")
     k.add_argument("--margin", type=float, default=1e-3, help="required stability margin (torque / rad)")
     k.add_argument("--max-angle", type=float, default=None, help="the sag allowed (rad); default anywhere in range")

@@ -188,6 +188,9 @@ from .plot_branch_request_stop_at_type_0 import PlotBranchRequestStopAtType0
 from .plot_curve_request import PlotCurveRequest
 from .plot_curve_request_branch import PlotCurveRequestBranch
 from .plot_curve_request_format_type_0 import PlotCurveRequestFormatType0
+from .plot_holding_request import PlotHoldingRequest
+from .plot_holding_request_format_type_0 import PlotHoldingRequestFormatType0
+from .plot_holding_request_vary_item import PlotHoldingRequestVaryItem
 from .plot_imperfection_request import PlotImperfectionRequest
 from .plot_imperfection_request_boundary import PlotImperfectionRequestBoundary
 from .plot_imperfection_request_format_type_0 import PlotImperfectionRequestFormatType0
@@ -483,6 +486,9 @@ __all__ = (
     "PlotCurveRequest",
     "PlotCurveRequestBranch",
     "PlotCurveRequestFormatType0",
+    "PlotHoldingRequest",
+    "PlotHoldingRequestFormatType0",
+    "PlotHoldingRequestVaryItem",
     "PlotImperfectionRequest",
     "PlotImperfectionRequestBoundary",
     "PlotImperfectionRequestFormatType0",
