@@ -37,6 +37,7 @@ result                      returned by                                      rec
 :class:`StiffnessDesign`    ``preloads_for_stiffness``                       :class:`SolverInfo`,
                                                                              :class:`ActiveBound`
 :class:`HoldingDesign`      ``preloads_for_holding``                         :class:`SolverInfo`
+:class:`HoldingMap`         ``holding_map``
 :class:`PreloadPlan`        ``plan_preloads``                      :class:`PreloadStep`
 (``PreloadStep``)           ``PreloadController.step``
 (``FollowerStep``)          ``PreloadFollower.step``                         :class:`SimulationEvent`
@@ -52,7 +53,7 @@ result                      returned by                                      rec
 from .analyses.design.active_bounds import ActiveBound
 from .analyses.design.follower import FollowerStep
 from .analyses.design.force_sensor import ForceEstimate
-from .analyses.design.holding import HoldingDesign
+from .analyses.design.holding import HoldingDesign, HoldingMap
 from .analyses.design.load_capacity import LoadCapacity
 from .analyses.design.preload_control import PreloadPlan, PreloadStep
 from .analyses.design.preloads import PreloadDesign
@@ -85,7 +86,7 @@ __all__ = [
     "Curve", "CurveEnd", "Jump", "Branch", "BranchEvent", "LimitLoad", "ImperfectionSensitivity",
     "StabilityBoundary", "BoundaryPoint",
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent", "Transition",
-    "Design", "PreloadDesign", "StiffnessDesign", "HoldingDesign", "ActiveBound", "PreloadPlan", "PreloadStep",
-    "FollowerStep",
+    "Design", "PreloadDesign", "StiffnessDesign", "HoldingDesign", "HoldingMap", "ActiveBound", "PreloadPlan",
+    "PreloadStep", "FollowerStep",
     "LoadCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",
 ]

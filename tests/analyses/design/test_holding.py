@@ -111,3 +111,29 @@ def test_a_preload_design_and_its_refusals():
     with pytest.raises(UnsupportedError) as e:
         to.preloads_for_holding(m.with_spring("tension_only"))
     assert e.value.field == "segments[0].spring"
+
+
+def test_the_holding_map_is_each_directions_rest_and_design():
+    """``holding_map`` over four gravity directions: each row is the rest configuration and the holding design of the
+    chain with its gravity turned there (the same calls made one by one), and its figure draws every row."""
+    from tensegrity_opt.applications import plots
+
+    arm = _arm((0.0, -G), k=3000.0)
+    hmap = to.holding_map(arm, [np.pi, -np.pi / 2, 0.0, np.pi / 2], max_angle=0.1)
+    assert hmap.status == "complete" and hmap.success
+    for i, angle in enumerate(hmap.angles):
+        turned = to.Manipulator(arm.segments, arm.payload, (G * np.cos(angle), G * np.sin(angle)))
+        rest = to.rest_configuration(turned)
+        np.testing.assert_allclose(hmap.q[i], rest.q, atol=1e-9)
+        d = to.preloads_for_holding(turned, vary="k", max_angle=0.1)
+        assert hmap.outcomes[i] == d.status and hmap.stiffness[i] == pytest.approx(d.stiffness, rel=1e-9)
+    np.testing.assert_allclose(plots.elevations(hmap), [90.0, 0.0, -90.0, -180.0], atol=1e-9)   # [-180, 180)
+    assert hmap.sag[2] == pytest.approx(0.0, abs=1e-9) and hmap.sag[1] > 0.3          # hanging vs held out
+    fig = plots.plot_holding(hmap, arm)
+    gids = {a.get_gid() for ax in fig.axes for a in ax.get_children()}
+    assert {f"sag-{i}" for i in range(4)} <= gids and {"design", "tips"} <= gids
+    body = hmap.to_dict()
+    assert body["outcomes"] == list(hmap.outcomes) and len(body["q"]) == 4
+    with pytest.raises(InvalidParameterError) as e:
+        to.holding_map(arm, 0)
+    assert e.value.field == "directions"
