@@ -68,6 +68,7 @@ def test_plan_is_the_library_plan(client):
     assert got["verified"] == [False, False] and got["feasible"] == [True, True]   # verify: false checks nothing
 
 
+@pytest.mark.slow
 def test_a_plan_for_a_tension_only_chain_needs_taut_on_every_interface(client):
     """`taut` has one name on the library, REST and the CLI; without it a tension-only chain is refused naming it."""
     chain = {"n": 3, "spring": "tension_only"}

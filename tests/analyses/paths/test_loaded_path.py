@@ -19,6 +19,7 @@ def _random_chain(rng):
                                       (float(rng.uniform(0.8, 1.6)), float(rng.uniform(0.8, 1.6)))) for _ in range(n)])
 
 
+@pytest.mark.slow_cases(keep=1)
 @pytest.mark.parametrize("seed", [3, 5])
 def test_without_loads_the_path_is_the_arclength_limit_load(seed):
     """A second method: the arclength continuation of ``limit_load`` (its own predictor, events and fold location)

@@ -64,6 +64,7 @@ def test_plan_of_a_tension_only_chain_keeps_its_springs_taut(capsys):
     assert main(argv) == 2 and "taut" in capsys.readouterr().err
 
 
+@pytest.mark.slow
 def test_plan_with_a_horizon_is_the_library_plan(capsys):
     tip0 = M.tip(to.PreloadController(M).q)
     line = ["--line", *(repr(float(v)) for v in (tip0[0], tip0[1], tip0[0] - 0.1, tip0[1] + 0.3)), "3",
