@@ -10,11 +10,13 @@ import tensegrity_opt as to
 from tensegrity_opt.analyses.paths.curves import POINT_STATUSES
 
 from .common import (
+    LOADS_OUT_DOC,
     MAX_CURVE_POINTS,
     PAPER_CHAIN,
     Deflection,
     DeflectionRange,
     Force,
+    LoadsOut,
     ManipulatorIn,
     SolverInfo,
     SpringStateOut,
@@ -126,3 +128,4 @@ class ForceDeflectionOut(outcome_model(to.Curve)):
         description="null when complete; else the first requested point where no stable equilibrium is found: "
                     "points holds only the points before it (the later ones are not computed)")
     requested: int = Field(description="how many points were asked for (len(points) when complete)")
+    loads: LoadsOut | None = Field(description=LOADS_OUT_DOC)

@@ -8,7 +8,19 @@ from pydantic import BaseModel, BeforeValidator, ConfigDict, Field
 
 import tensegrity_opt as to
 
-from .common import MAX_ANGLE, MAX_GRID, PAPER_CHAIN, Int, ManipulatorIn, TipDx, TipDy, integral, outcome_model
+from .common import (
+    LOADS_OUT_DOC,
+    MAX_ANGLE,
+    MAX_GRID,
+    PAPER_CHAIN,
+    Int,
+    LoadsOut,
+    ManipulatorIn,
+    TipDx,
+    TipDy,
+    integral,
+    outcome_model,
+)
 
 
 class EnergyLandscapeRequest(BaseModel):
@@ -35,3 +47,4 @@ class EnergyLandscapeOut(outcome_model(to.Landscape)):
     qj: list[float] = Field(description="grid axis of joint pair[1] (rad)")
     energy: list[list[list[float | None]]] = Field(
         description="energy[elbow][i][j], elbow 0: +1, 1: -1; null where unreachable or out of range")
+    loads: LoadsOut | None = Field(description=LOADS_OUT_DOC)

@@ -134,6 +134,12 @@ def test_stiffness_modes_and_the_landscape_include_the_loads():
     finite = np.isfinite(land.energy)
     E = np.array([m4.potential_energy(q) for q in land.q[finite]])
     np.testing.assert_allclose(land.energy[finite], E, rtol=1e-12)
+    assert land.to_dict()["loads"]["gravity"] == [0.0, -9.81]
+    c = to.force_deflection(HEAVY, [0.3, 0.6], 0.2)
+    assert c.success and c.to_dict()["loads"]["payload"] == 0.02
+    for i, dx in enumerate((0.3, 0.6)):                 # each point is the least-potential equilibrium there
+        assert c.energy[i] == pytest.approx(to.solve_equilibrium(HEAVY, dx, 0.2).energy, rel=1e-9)
+    assert to.force_deflection(BARE, [0.3]).to_dict()["loads"] is None
 
 
 def test_masses_without_gravity_and_gravity_without_masses_change_nothing():

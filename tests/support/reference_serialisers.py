@@ -158,14 +158,14 @@ def curve_out(c) -> dict[str, Any]:
     return {**outcome(c), "points": points, "jumps": jumps, "branches": branches,
             "reference": c.reference, "origin": [float(v) for v in c.origin],
             "ended_at": None if end is None else {**outcome(end), "dx": _num(end.dx), "dy": _num(end.dy)},
-            "requested": int(c.requested)}
+            "requested": int(c.requested), "loads": loads_out(c.loads)}
 
 
 def landscape_out(land) -> dict[str, Any]:
     E = land.energy
     energy = [[[None if not math.isfinite(v) else v for v in row] for row in plane] for plane in E.tolist()]
     return {**outcome(land), "pair": [int(p) for p in land.pair], "qi": _nums(land.qi), "qj": _nums(land.qj),
-            "energy": energy}
+            "energy": energy, "loads": loads_out(land.loads)}
 
 
 def manipulator_out(m) -> dict[str, Any]:

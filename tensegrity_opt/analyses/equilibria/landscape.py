@@ -18,7 +18,7 @@ from typing import Any, ClassVar
 import numpy as np
 
 from ...errors import InvalidParameterError, UnsupportedError
-from ...model.loads import load_potential
+from ...model.loads import load_potential, loads_json, loads_key
 from ...model.manipulator import Manipulator
 from ...outcome import Outcome, freeze
 from ...serialize import nullables, numbers
@@ -60,6 +60,7 @@ class Landscape(Outcome):
     energy: np.ndarray
     q: np.ndarray
     status: str = "evaluated"
+    loads: tuple | None = None
 
     def __post_init__(self) -> None:
         freeze(self)
@@ -75,9 +76,10 @@ class Landscape(Outcome):
     def to_dict(self) -> dict[str, Any]:
         """JSON form (the body of ``POST /v1/energy-landscape``): ``success``, ``status``, ``message``, ``pair``,
         ``qi``, ``qj`` and ``energy`` (``[elbow][i][j]``, ``null`` outside the reachable set or the physical
-        range)."""
+        range; the chain's potential under its dead loads where it carries some), ``loads`` (those loads, ``null``
+        without)."""
         return {**self.outcome(), "pair": [int(p) for p in self.pair], "qi": numbers(self.qi),
-                "qj": numbers(self.qj), "energy": nullables(self.energy)}
+                "qj": numbers(self.qj), "energy": nullables(self.energy), "loads": loads_json(self.loads)}
 
 
 def complete_configuration(m: Manipulator, target, pair: tuple[int, int], qi, qj, elbow: int) -> np.ndarray:
@@ -228,7 +230,7 @@ def energy_landscape(m: Manipulator, dx: float, dy: float = 0.0, pair: tuple[int
         inside = np.all(np.abs(q) < lim, axis=-1)
         energies.append(np.where(inside, E, np.nan))
         configs.append(q)
-    return Landscape(pair=pair, qi=qi, qj=qj, energy=np.stack(energies), q=np.stack(configs))
+    return Landscape(pair=pair, qi=qi, qj=qj, energy=np.stack(energies), q=np.stack(configs), loads=loads_key(m))
 
 
 

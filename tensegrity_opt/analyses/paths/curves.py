@@ -58,7 +58,7 @@ from ...errors import (
     UnreachableTargetError,
     UnsupportedError,
 )
-from ...model.loads import unloaded_only
+from ...model.loads import loads_json, loads_key, unloaded_only
 from ...model.manipulator import Manipulator
 from ...model.shapes import shape_label, shape_labels
 from ...model.springs import SpringFields, Springs, linear_only
@@ -301,6 +301,7 @@ class Curve(Outcome, SpringFields):
     ended_at: CurveEnd | None = None
     requested: int = -1
     springs: Springs | None = field(default=None, repr=False, compare=False)
+    loads: tuple | None = None
 
     def __post_init__(self) -> None:
         if self.requested < 0:
@@ -345,7 +346,8 @@ class Curve(Outcome, SpringFields):
         ``spring_stretches``, ``spring_forces``, ``spring_states``), ``jumps`` (each
         :meth:`Jump.to_dict`), ``branches`` (``branch="all"``: ``{id, points}`` per followed branch, a point with
         ``exists`` and ``null`` numbers where the branch does not reach), ``reference``, ``origin``, ``ended_at``
-        (:meth:`CurveEnd.to_dict` or ``null``) and ``requested``."""
+        (:meth:`CurveEnd.to_dict` or ``null``), ``requested`` and ``loads`` (the chain's dead loads the curve was
+        computed under, ``null`` without)."""
         springs = self._spring_rows()
         points = [{**springs[i], "dx": number(self.dx[i]), "dy": number(self.dy[i]), "fx": number(self.fx[i]),
                    "fy": number(self.fy[i]), "energy": number(self.energy[i]), "q": numbers(self.q[i]),
@@ -357,7 +359,7 @@ class Curve(Outcome, SpringFields):
                 "branches": [br._branch_dict(bi) for bi, br in enumerate(self.branches)],
                 "reference": self.reference, "origin": numbers(self.origin),
                 "ended_at": None if self.ended_at is None else self.ended_at.to_dict(),
-                "requested": int(self.requested)}
+                "requested": int(self.requested), "loads": loads_json(self.loads)}
 
     def _branch_dict(self, position: int) -> dict[str, Any]:
         """This curve as the ``position``-th item of ``branches``: its id and nullable points."""
@@ -605,7 +607,7 @@ def _slack_curve(m: Manipulator, dx, dy, branch: str) -> Curve:
             break
         sel[j] = prev.id
     curve = _assemble(m, dxs[:end], dys[:end], branches, sel[:end], straight[:end])
-    return replace(curve, ended_at=ended, requested=npts)
+    return replace(curve, ended_at=ended, requested=npts, loads=loads_key(m))
 
 
 class _NoStable(Exception):

@@ -1,10 +1,14 @@
 from __future__ import annotations
 
 from collections.abc import Mapping
-from typing import Any, Literal, TypeVar, cast
+from typing import TYPE_CHECKING, Any, Literal, TypeVar, cast
 
 from attrs import define as _attrs_define
 from attrs import field as _attrs_field
+
+if TYPE_CHECKING:
+    from ..models.loads_out import LoadsOut
+
 
 T = TypeVar("T", bound="EnergyLandscapeOut")
 
@@ -16,6 +20,8 @@ class EnergyLandscapeOut:
     Attributes:
         energy (list[list[list[float | None]]]): energy[elbow][i][j], elbow 0: +1, 1: -1; null where unreachable or out
             of range
+        loads (LoadsOut | None): the dead loads this was computed under (gravity on the chain's masses, joint forces);
+            null where the chain carries none
         message (str): what happened, in a sentence
         pair (list[int]):
         qi (list[float]): grid axis of joint pair[0] (rad)
@@ -26,6 +32,7 @@ class EnergyLandscapeOut:
     """
 
     energy: list[list[list[float | None]]]
+    loads: LoadsOut | None
     message: str
     pair: list[int]
     qi: list[float]
@@ -35,6 +42,8 @@ class EnergyLandscapeOut:
     additional_properties: dict[str, Any] = _attrs_field(init=False, factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
+
         energy = []
         for energy_item_data in self.energy:
             energy_item = []
@@ -48,6 +57,12 @@ class EnergyLandscapeOut:
                 energy_item.append(energy_item_item)
 
             energy.append(energy_item)
+
+        loads: dict[str, Any] | None
+        if isinstance(self.loads, LoadsOut):
+            loads = self.loads.to_dict()
+        else:
+            loads = self.loads
 
         message = self.message
 
@@ -66,6 +81,7 @@ class EnergyLandscapeOut:
         field_dict.update(
             {
                 "energy": energy,
+                "loads": loads,
                 "message": message,
                 "pair": pair,
                 "qi": qi,
@@ -79,6 +95,8 @@ class EnergyLandscapeOut:
 
     @classmethod
     def from_dict(cls: type[T], src_dict: Mapping[str, Any]) -> T:
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
+
         d = dict(src_dict)
         energy = []
         _energy = d.pop("energy")
@@ -103,6 +121,21 @@ class EnergyLandscapeOut:
 
             energy.append(energy_item)
 
+        def _parse_loads(data: object) -> LoadsOut | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                loads_type_0 = LoadsOut.from_dict(data)
+
+                return loads_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(LoadsOut | None, data)
+
+        loads = _parse_loads(d.pop("loads"))
+
         message = d.pop("message")
 
         pair = cast(list[int], d.pop("pair"))
@@ -119,6 +152,7 @@ class EnergyLandscapeOut:
 
         energy_landscape_out = cls(
             energy=energy,
+            loads=loads,
             message=message,
             pair=pair,
             qi=qi,

@@ -15,6 +15,7 @@ if TYPE_CHECKING:
     from ..models.curve_end_out import CurveEndOut
     from ..models.curve_point import CurvePoint
     from ..models.jump_out import JumpOut
+    from ..models.loads_out import LoadsOut
 
 
 T = TypeVar("T", bound="ForceDeflectionOut")
@@ -30,6 +31,8 @@ class ForceDeflectionOut:
             ended_at (CurveEndOut | None): null when complete; else the first requested point where no stable equilibrium is
                 found: points holds only the points before it (the later ones are not computed)
             jumps (list[JumpOut]):
+            loads (LoadsOut | None): the dead loads this was computed under (gravity on the chain's masses, joint forces);
+                null where the chain carries none
             message (str): what happened, in a sentence
             points (list[CurvePoint]):
             requested (int): how many points were asked for (len(points) when complete)
@@ -46,6 +49,7 @@ class ForceDeflectionOut:
     branches: list[BranchOut]
     ended_at: CurveEndOut | None
     jumps: list[JumpOut]
+    loads: LoadsOut | None
     message: str
     points: list[CurvePoint]
     requested: int
@@ -57,6 +61,7 @@ class ForceDeflectionOut:
 
     def to_dict(self) -> dict[str, Any]:
         from ..models.curve_end_out import CurveEndOut  # noqa: PLC0415
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
 
         branches = []
         for branches_item_data in self.branches:
@@ -73,6 +78,12 @@ class ForceDeflectionOut:
         for jumps_item_data in self.jumps:
             jumps_item = jumps_item_data.to_dict()
             jumps.append(jumps_item)
+
+        loads: dict[str, Any] | None
+        if isinstance(self.loads, LoadsOut):
+            loads = self.loads.to_dict()
+        else:
+            loads = self.loads
 
         message = self.message
 
@@ -102,6 +113,7 @@ class ForceDeflectionOut:
                 "branches": branches,
                 "ended_at": ended_at,
                 "jumps": jumps,
+                "loads": loads,
                 "message": message,
                 "points": points,
                 "requested": requested,
@@ -122,6 +134,7 @@ class ForceDeflectionOut:
         from ..models.curve_end_out import CurveEndOut  # noqa: PLC0415
         from ..models.curve_point import CurvePoint  # noqa: PLC0415
         from ..models.jump_out import JumpOut  # noqa: PLC0415
+        from ..models.loads_out import LoadsOut  # noqa: PLC0415
 
         d = dict(src_dict)
         branches = []
@@ -153,6 +166,21 @@ class ForceDeflectionOut:
 
             jumps.append(jumps_item)
 
+        def _parse_loads(data: object) -> LoadsOut | None:
+            if data is None:
+                return data
+            try:
+                if not isinstance(data, dict):
+                    raise TypeError()
+                loads_type_0 = LoadsOut.from_dict(data)
+
+                return loads_type_0
+            except (TypeError, ValueError, AttributeError, KeyError):
+                pass
+            return cast(LoadsOut | None, data)
+
+        loads = _parse_loads(d.pop("loads"))
+
         message = d.pop("message")
 
         points = []
@@ -181,6 +209,7 @@ class ForceDeflectionOut:
             branches=branches,
             ended_at=ended_at,
             jumps=jumps,
+            loads=loads,
             message=message,
             points=points,
             requested=requested,
