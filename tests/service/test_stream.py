@@ -278,6 +278,11 @@ def test_bad_messages_are_answered_and_the_stream_goes_on(server):
     ({"type": "open", "manipulator": {"n": 1}, "mode": "inverse"}, "invalid_parameter", "manipulator.n"),
     ({"type": "open", "manipulator": {"n": 61}, "mode": "inverse"}, "validation_error", "manipulator.n"),
     ({"type": "open", "manipulator": PAPER, "mode": "inverse", "start": [0.0] * 3}, "invalid_parameter", "start"),
+    # the chain's dead loads are taken and refused by name where the mode does not honour them
+    ({"type": "open", "manipulator": {**PAPER, "mass": 0.1, "gravity": [0.0, -9.81]}, "mode": "track"},
+     "unsupported", "gravity"),
+    ({"type": "open", "manipulator": {**PAPER, "joint_forces": [{"joint": 2, "force": [0.0, 0.1]}]},
+      "mode": "preloads"}, "unsupported", "joint_forces"),
 ])
 def test_a_refused_open_is_answered_then_closed_with_1008(server, open_msg, code, field):
     _, base = server
