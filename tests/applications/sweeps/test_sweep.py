@@ -114,6 +114,29 @@ def test_buckling_columns_equal_critical_force():
                                                             if k in S.RESULT_COLUMNS["buckling"]}
 
 
+def res_header(spec):
+    from tensegrity_opt.applications.sweeps.spec import _header
+
+    return _header(spec)
+
+
+def test_a_sweep_of_a_chain_with_loads_is_the_library_under_them():
+    """The base chain's gravity and joint forces reach every point (the normal form keeps them); a point's own ``n``
+    keeps them too; an analysis that does not honour them is that point's error, named."""
+    loads = {"gravity": [0.0, -9.81], "joint_forces": [{"joint": 2, "force": [0.0, 0.1]}]}
+    spec = {"analysis": "equilibrium", "manipulator": {"n": 3, "mass": 0.05, **loads},
+            "points": [{"dx": 0.4, "dy": 0.2}, {"n": 4, "dx": 0.4}]}
+    assert res_header(spec)["manipulator"]["gravity"] == [0.0, -9.81]
+    res = S.sweep(spec)
+    assert not res.errors
+    for r, n, dy in zip(res.rows, (3, 4), (0.2, 0.0)):
+        m = to.Manipulator.uniform(n, mass=0.05, gravity=(0.0, -9.81), joint_forces=[(2, (0.0, 0.1))])
+        eq = to.solve_equilibrium(m, 0.4, dy)
+        assert r["q"] == pytest.approx(eq.q.tolist(), **EXACT) and r["energy"] == pytest.approx(eq.energy, **EXACT)
+    bad = S.sweep({**spec, "analysis": "buckling", "points": [{"n": 3}]})
+    assert bad.errors and "gravity" in json.dumps(bad.rows[0])
+
+
 def test_equilibrium_columns_equal_solve_equilibrium_and_force_control():
     spec = {"analysis": "equilibrium", "manipulator": {"n": 4},
             "points": [{"dx": 0.1}, {"n": 5, "dx": 0.2, "dy": 0.05}, {"load": [0.2, 0.1]}]}
