@@ -14,6 +14,7 @@ from ...analyses.equilibria.landscape import Landscape, complete_configuration, 
 from ...analyses.equilibria.modes import Modes
 from ...errors import InvalidParameterError
 from ...model.inertia import mass_points
+from ...model.loads import describe, loads_key
 from ...model.manipulator import Manipulator
 from ...model.segment import Segment
 from .geometry import chain_geometry
@@ -218,8 +219,11 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
     (:data:`SPRING_STYLES`); ``"tension"`` colours every spring by its force (tension positive) on one diverging
     scale shared by the panels, with a colour bar. A joint resting on its stop is ringed (``"stop-<i>"``).
 
+    A chain with weight (``gravity``) has an arrow ``g`` in each panel and its loads in the title.
+
     Artists (``gid``): per panel ``"triangle-<i>-<0|1>"`` (proximal/distal triangle of segment ``i``),
-    ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``, ``"stop-<i>"``; the axes' gid is
+    ``"spring-<i>-<1|2>"``, ``"joints"`` (scatter), ``"centerline"``, ``"tip"``, ``"stop-<i>"``, ``"gravity"``; the
+    axes' gid is
     ``"equilibrium-<k>"``; with ``spring_colors="tension"`` the colour bar's axes ``"spring-forces"``.
     """
     if spring_colors not in ("state", "tension"):
@@ -282,13 +286,23 @@ def plot_shapes(equilibria: Sequence[Equilibrium], m: Manipulator, dx: float, dy
                      f"E = {e.energy:.4g}, F = ({number_text(e.fx, e.fy)}, {number_text(e.fy, e.fx)})",
                      fontsize=8, color=col)
         _chain_panel(ax, lo, hi, idx, cols, k)
+        if m.loaded and m.gravity is not None:          # the weights' direction
+            gx, gy = m.gravity
+            norm_g = math.hypot(gx, gy) or 1.0
+            arrow = ax.annotate("$g$", xy=(0.9 + 0.07 * gx / norm_g, 0.82 + 0.07 * gy / norm_g),
+                                xytext=(0.9 - 0.07 * gx / norm_g, 0.82 - 0.07 * gy / norm_g),
+                                xycoords="axes fraction", textcoords="axes fraction", ha="center", va="center",
+                                fontsize=8, arrowprops={"arrowstyle": "->", "color": "0.3"})
+            arrow.set_gid("gravity")
     for ax in axes[k:]:
         ax.set_visible(False)
     more = f" (the {k} lowest of {len(eqs)})" if len(eqs) > k else ""
     how = ("springs by force (tension > 0)" if spring_colors == "tension" else
            "springs: taut solid, pushing red dashed, slack grey dotted")
+    loads = describe(loads_key(m))
     fig.suptitle(f"Equilibria with the tip held at $\\delta_x$ = {dx:g}, $\\delta_y$ = {dy:g}: {len(eqs)}{more}\n"
-                 f"{chain_label(m)}" + ("; " if cols >= 3 else "\n") + f"{how}; stops ringed"
+                 f"{chain_label(m)}" + (f"; under {loads}" if loads else "")
+                 + ("; " if cols >= 3 and not loads else "\n") + f"{how}; stops ringed"
                  + ("; " if cols >= 3 else "\n") + f"energy $E$ in {ENERGY_UNIT}, tip force $F$ in {FORCE_UNIT}",
                  fontsize=9)
     if spring_colors == "tension":

@@ -288,3 +288,15 @@ def test_modes_draw_each_mode_both_ways_about_the_held_tip(tmp_path):
     with pytest.raises(InvalidParameterError) as e:
         plots.plot_modes(md, m, excursion=-1.0)
     assert e.value.field == "excursion"
+
+
+def test_shapes_of_a_chain_with_weight_draw_gravity_and_name_the_loads():
+    m = to.Manipulator.uniform(4, mass=0.05, gravity=(0.0, -9.81))
+    eqs = to.find_equilibria(m, 1.0, 0.5)
+    fig = plots.plot_shapes(eqs, m, 1.0, 0.5, max_panels=2)
+    for ax in fig.axes[:2]:
+        assert "gravity" in {a.get_gid() for a in ax.get_children()}
+    assert "under gravity (0, -9.81)" in fig._suptitle.get_text()
+    bare = plots.plot_shapes(to.find_equilibria(to.Manipulator.uniform(4), 1.0, 0.5), to.Manipulator.uniform(4),
+                             1.0, 0.5, max_panels=1)
+    assert "gravity" not in {a.get_gid() for a in bare.axes[0].get_children()}
