@@ -144,6 +144,15 @@ PRELOADS = {
 UPRIGHT_ARM = {"n": 6, "a": 0.04, "b": 0.05, "k": 300.0, "L0": 0.05, "mass": 0.05, "payload": 0.1,
                "gravity": [-9.81, 0.0]}
 
+#: ``/v1/control/weight-capacity``'s example chain: the upright arm stiff enough to stand.
+UPRIGHT_STIFF_ARM = {**UPRIGHT_ARM, "k": 5000.0}
+
+WEIGHT_CAPACITY = {
+    "success": True, "status": "complete",
+    "message": "the rest pose buckles (a bifurcation) when the weights are 1.25927 times theirs",
+    "factor": 1.25927, "kind": "bifurcation", "reason": None, "end_factor": 1.25927,
+    "q": [0.0, 0.0, 0.0, 0.0, 0.0, 0.0], "max_factor": 10.0}
+
 HOLDING = {
     "success": True, "status": "optimal",
     "message": "the least stiffness (total 36033.9) holding the chain under gravity (-9.81, 0), payload 0.1: largest "

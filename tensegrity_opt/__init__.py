@@ -16,7 +16,7 @@ from . import results
 from .analyses.design.follower import PreloadFollower
 from .analyses.design.force_sensor import ForceEstimate, estimate_tip_force
 from .analyses.design.holding import HoldingDesign, HoldingMap, holding_map, preloads_for_holding
-from .analyses.design.load_capacity import LoadCapacity, load_capacity
+from .analyses.design.load_capacity import LoadCapacity, WeightCapacity, load_capacity, weight_capacity
 from .analyses.design.preload_control import PreloadController, PreloadPlan, plan_preloads
 from .analyses.design.preloads import PreloadDesign, preloads_for_critical_force, preloads_for_pose
 from .analyses.design.sensitivity import critical_load_sensitivity, equilibrium_sensitivity
@@ -80,9 +80,11 @@ __all__ = [
     # design and control
     "maximize_critical_force", "preloads_for_pose", "preloads_for_critical_force", "preloads_for_stiffness",
     "preloads_for_holding", "holding_map", "plan_preloads", "PreloadController", "PreloadFollower", "load_capacity",
+    "weight_capacity",
     "estimate_tip_force",
     "critical_load_sensitivity", "equilibrium_sensitivity",
     "Design", "PreloadDesign", "StiffnessDesign", "HoldingDesign", "HoldingMap", "PreloadPlan", "LoadCapacity",
+    "WeightCapacity",
     "ForceEstimate",
     # applications
     "sweep", "critical_load_map", "SweepResult", "CriticalLoadMap",

@@ -42,6 +42,7 @@ result                      returned by                                      rec
 (``PreloadStep``)           ``PreloadController.step``
 (``FollowerStep``)          ``PreloadFollower.step``                         :class:`SimulationEvent`
 :class:`LoadCapacity`       ``load_capacity``                                :class:`LimitLoad`
+:class:`WeightCapacity`     ``weight_capacity``                              :class:`Equilibrium`
 :class:`ForceEstimate`      ``estimate_tip_force``
 :class:`SweepResult`        ``sweep``
 :class:`CriticalLoadMap`    ``critical_load_map``
@@ -54,7 +55,7 @@ from .analyses.design.active_bounds import ActiveBound
 from .analyses.design.follower import FollowerStep
 from .analyses.design.force_sensor import ForceEstimate
 from .analyses.design.holding import HoldingDesign, HoldingMap
-from .analyses.design.load_capacity import LoadCapacity
+from .analyses.design.load_capacity import LoadCapacity, WeightCapacity
 from .analyses.design.preload_control import PreloadPlan, PreloadStep
 from .analyses.design.preloads import PreloadDesign
 from .analyses.design.stiffness_shaping import StiffnessDesign
@@ -88,5 +89,5 @@ __all__ = [
     "StabilityAtlas", "AtlasTarget", "AtlasCrossing", "Simulation", "SimulationEvent", "Transition",
     "Design", "PreloadDesign", "StiffnessDesign", "HoldingDesign", "HoldingMap", "ActiveBound", "PreloadPlan",
     "PreloadStep", "FollowerStep",
-    "LoadCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",
+    "LoadCapacity", "WeightCapacity", "ForceEstimate", "SweepResult", "CriticalLoadMap",
 ]

@@ -80,6 +80,8 @@ from .control import (
     SimulationRequest,
     StiffnessDesignOut,
     StiffnessDesignRequest,
+    WeightCapacityOut,
+    WeightCapacityRequest,
 )
 from .curves import (
     BranchOut,
@@ -255,6 +257,8 @@ __all__ = [
     "ForceEstimateRequest",
     "LoadCapacityOut",
     "LoadCapacityRequest",
+    "WeightCapacityOut",
+    "WeightCapacityRequest",
     "StiffnessDesignOut",
     "StiffnessDesignRequest",
     "ForceValue",

@@ -529,3 +529,29 @@ class LoadCapacityOut(outcome_model(to.LoadCapacity)):
     weakest: dict[str, float] | None
     start: dict[str, Any]
     manipulator: dict[str, Any]
+
+
+class WeightCapacityRequest(BaseModel):
+    """By how much the chain's weights may grow before its rest pose loses stability (`weight_capacity`)."""
+
+    model_config = ConfigDict(strict=True, extra="forbid", json_schema_extra={"examples": [
+        {"manipulator": {"n": 6, "a": 0.04, "b": 0.05, "k": 5000.0, "L0": 0.05, "mass": 0.05, "payload": 0.1,
+                         "gravity": [-9.81, 0.0]}, "max_factor": 10.0}]})
+
+    manipulator: ManipulatorIn
+    start: StartQ | None = Field(None, description='{"q": [...]}: the pose (a stable equilibrium under the loads); '
+                                                   "null: the least-potential rest configuration")
+    max_factor: Annotated[float, Field(gt=1, le=1e6, allow_inf_nan=False)] = Field(
+        10.0, description="follow the weights up to this multiple of gravity")
+
+
+class WeightCapacityOut(outcome_model(to.WeightCapacity)):
+    """`WeightCapacity.to_dict()`: the gravity multiple at which the rest pose first loses stability."""
+
+    factor: float | None = Field(description="the multiple of gravity at the limit (null: none)")
+    kind: Literal["fold", "bifurcation", "none"]
+    reason: Literal["joint_limit", "max_factor"] | None
+    end_factor: float = Field(description="the last multiple on the stable path")
+    q: list[float] = Field(description="the configuration there (rad)")
+    max_factor: float
+    start: dict[str, Any]

@@ -24,7 +24,7 @@ from ..adapters.inputs import PRELOAD_OBJECTIVES, build_manipulator, number_or_a
 from .paths import seconds_left
 
 __all__ = ["design_critical_force_task", "preloads_for_load_task", "preloads_task", "find_plan", "find_simulation",
-           "force_estimate_task", "stiffness_design_task", "load_capacity_task"]
+           "force_estimate_task", "stiffness_design_task", "load_capacity_task", "weight_capacity_task"]
 
 
 def _best_as_json(exc: to.InfeasibleDesignError) -> to.InfeasibleDesignError:
@@ -149,3 +149,10 @@ def load_capacity_task(req: Any, deadline: float) -> Any:
     pose = optional_array(None if req.start is None else req.start.q)
     return to.load_capacity(m, pose, base=req.base, directions=req.directions, boundary=req.boundary,
                             max_load=req.max_load, timeout=seconds_left(deadline))
+
+
+def weight_capacity_task(req: Any, deadline: float) -> Any:
+    """``weight_capacity`` (``/v1/control/weight-capacity``) within the soft ``deadline``."""
+    m = build_manipulator(req.manipulator)
+    pose = optional_array(None if req.start is None else req.start.q)
+    return to.weight_capacity(m, pose, max_factor=req.max_factor, timeout=seconds_left(deadline))

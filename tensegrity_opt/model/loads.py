@@ -38,7 +38,8 @@ __all__ = ["loads_key", "loads_json", "describe", "check_gravity", "check_joint_
 LOAD_ANALYSES = ("solve_equilibrium", "find_equilibria (method='search')", "solve_equilibrium_under_force",
                  "rest_configuration", "find_equilibria_under_force (stable_only=True)",
                  "force_deflection (branch='stable')", "cartesian_stiffness", "modes", "energy_landscape",
-                 "load_capacity (boundary='free')", "preloads_for_holding", "holding_map")
+                 "load_capacity (boundary='free')", "preloads_for_holding", "holding_map",
+                 "weight_capacity")
 
 
 def _vector(value: Any, field: str) -> tuple[float, float]:

@@ -22,7 +22,7 @@ BODIES = {
     "StabilityBoundaryOut": to.StabilityBoundary, "AtlasOut": to.StabilityAtlas,
     "SimulationOut": to.Simulation, "DesignOut": to.Design, "PreloadsOut": to.PreloadDesign,
     "StiffnessDesignOut": to.StiffnessDesign, "HoldingOut": to.HoldingDesign, "PlanOut": to.PreloadPlan,
-    "LoadCapacityOut": to.LoadCapacity,
+    "LoadCapacityOut": to.LoadCapacity, "WeightCapacityOut": to.WeightCapacity,
     "ForceEstimateOut": to.ForceEstimate, "CurveEndOut": results.CurveEnd, "PlanStepOut": results.PreloadStep,
     "SimulationEventOut": results.SimulationEvent, "AtlasTargetOut": results.AtlasTarget,
 }

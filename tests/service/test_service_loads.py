@@ -66,3 +66,12 @@ def test_a_malformed_load_is_refused_naming_its_field(client):
     assert b["field"] == "manipulator.gravity"
     check_error(client.post("/v1/equilibrium", json={"manipulator": {"n": 3, "joint_forces": [
         {"joint": 2, "force": [0, 1], "where": 1}]}, "dx": 0.5}), "validation_error")
+
+
+def test_the_weight_capacity_is_the_librarys(client):
+    arm = {"n": 6, "a": 0.04, "b": 0.05, "k": 5000.0, "L0": 0.05, "mass": 0.05, "payload": 0.1, "gravity": [-9.81, 0.0]}
+    body = post_ok(client, "/v1/control/weight-capacity", {"manipulator": arm})
+    want = to.weight_capacity(to.Manipulator.from_dict(arm))
+    assert body["kind"] == "bifurcation" and body["factor"] == pytest.approx(want.factor, rel=1e-12)
+    check_error(client.post("/v1/control/weight-capacity", json={"manipulator": {"n": 3}}), "invalid_parameter",
+                "gravity")

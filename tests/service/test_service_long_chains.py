@@ -63,6 +63,7 @@ def _bodies(n: int, m: dict[str, Any]) -> dict[str, dict[str, Any]]:
         "/v1/design/preloads-for-load": {"manipulator": m, "required": 0.01},
         "/v1/design/preloads": {"manipulator": m, "target": [x, 0.5]},
         "/v1/design/holding": {"manipulator": {**_massive(m), "gravity": [0.0, -1e-3]}, "vary": ["k"]},
+        "/v1/control/weight-capacity": {"manipulator": {**_massive(m), "gravity": [0.0, -1e-3]}, "max_factor": 1.5},
         "/v1/rest-configurations": {"manipulator": m},
         "/v1/branch": {"manipulator": m, "control": load, "stop_at": "event", "max_points": 50},
         "/v1/bifurcation-diagram": {"manipulator": m, "start": {"q": zeros}, "control": guided, "t_max": 0.1,

@@ -47,7 +47,7 @@ def test_every_operation_is_documented():
                 ("/v1/segment/torque", "post"), ("/v1/energy-landscape", "post"), ("/v1/batch/equilibrium", "post"),
                 ("/healthz", "get"), ("/readyz", "get"), ("/version", "get"), ("/metrics", "get"),
                 ("/v1/design/critical-force", "post"), ("/v1/design/preloads", "post"),
-                ("/v1/design/holding", "post"),
+                ("/v1/design/holding", "post"), ("/v1/control/weight-capacity", "post"),
                 ("/v1/design/preloads-for-load", "post"),
                 ("/v1/rest-configurations", "post"), ("/v1/branch", "post"), ("/v1/bifurcation-diagram", "post"),
                 ("/v1/limit-load", "post"), ("/v1/imperfection-sensitivity", "post"),

@@ -15,7 +15,14 @@ from fastapi import APIRouter, Body, Request
 from ... import examples as ex
 from ... import schemas as s
 from ...adapters.fields import LOAD_CAPACITY_ALIASES
-from ...tasks.control import find_plan, find_simulation, force_estimate_task, load_capacity_task, stiffness_design_task
+from ...tasks.control import (
+    find_plan,
+    find_simulation,
+    force_estimate_task,
+    load_capacity_task,
+    stiffness_design_task,
+    weight_capacity_task,
+)
 from ..deps import SettingsDep, check_manipulator, check_plan, check_simulation, path_deadline, placement, steps_field
 from ..dispatch import Placement, run_task
 from ..json_bodies import JSONBodyRoute
@@ -162,4 +169,25 @@ async def control_load_capacity(
 ) -> Any:
     ctx = check_manipulator(req.manipulator, settings, LOAD_CAPACITY_ALIASES)
     return await run_task(request, load_capacity_task, req, path_deadline(settings), fields=ctx,
+                          placement=Placement.HEAVY)
+
+
+@router.post(
+    "/weight-capacity", operation_id="control_weight_capacity", response_model=s.WeightCapacityOut,
+    summary="By how much the chain's weights may grow before its rest pose loses stability",
+    description="The rest configuration under the chain's loads (`gravity` on its masses and payload; or `start`) "
+                "followed as gravity is scaled from 1 up to `max_factor`, until it first loses stability: a fold "
+                "(snap) or a bifurcation (buckling), located to 1e-9 of the range (`tensegrity_opt.weight_capacity`). "
+                "`factor` is null where the path stays stable to a joint's range bound or `max_factor` (`reason`). "
+                "A chain without weight: 422 `invalid_parameter`, field `gravity`.",
+    responses=solve_responses(ex.WEIGHT_CAPACITY, "no_equilibrium"))
+async def control_weight_capacity(
+    request: Request,
+    req: Annotated[s.WeightCapacityRequest, Body(openapi_examples={
+        "upright": {"summary": "a 6-segment arm standing upright: buckles at 1.259 times its weight", "value": {
+            "manipulator": ex.UPRIGHT_STIFF_ARM, "max_factor": 10.0}}})],
+    settings: SettingsDep,
+) -> Any:
+    ctx = check_manipulator(req.manipulator, settings)
+    return await run_task(request, weight_capacity_task, req, path_deadline(settings), fields=ctx,
                           placement=Placement.HEAVY)

@@ -30,9 +30,9 @@ from ...serialize import nullables, number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium, check_q0, solve_equilibrium_under_force
 from ..paths.limit_load import DEFAULT_MAX_LOAD, check_max_load, limit_load
-from ..paths.loaded_path import loaded_limit
+from ..paths.loaded_path import loaded_limit, weight_limit
 
-__all__ = ["LoadCapacity", "load_capacity"]
+__all__ = ["LoadCapacity", "load_capacity", "WeightCapacity", "weight_capacity"]
 
 
 @dataclass(frozen=True)
@@ -354,3 +354,119 @@ def _start_equilibrium(m: Manipulator, q0, base: np.ndarray) -> Equilibrium:
         raise InvalidParameterError(f"pose is not (near) an equilibrium under the base load {base.tolist()}: Newton "
                                     f"moved it by {moved:.3g} rad", field="pose")
     return eq
+
+
+# ---------------------------------------------------------------------------- how much heavier
+@dataclass(frozen=True)
+class WeightCapacity(Outcome):
+    """Result of :func:`weight_capacity`: by how much the chain's weights may grow before its rest pose loses
+    stability.
+
+    Attributes
+    ----------
+    factor : float
+        The multiple of ``gravity`` (the segments' and the payload's weights together) at which the pose first loses
+        stability (NaN for ``kind`` none).
+    kind : str
+        ``"fold"`` (the arm snaps), ``"bifurcation"`` (it buckles) or ``"none"``.
+    reason : str or None
+        For none: ``"joint_limit"`` (a joint reaches its range bound on the stable path) or ``"max_factor"``.
+    end_factor : float
+        The last multiple on the stable path (``factor`` where there is a limit).
+    q : ndarray (n,)
+        The configuration there.
+    max_factor : float
+    start : Equilibrium
+        The pose (the rest configuration under the chain's loads, or the given one).
+    status : str
+        ``"complete"``: the path was followed to its first loss of stability, a joint's range bound or ``max_factor``.
+    """
+
+    STATUSES: ClassVar[dict[str, str]] = {
+        "complete": "the path of growing weights was followed to its first loss of stability, a joint's range bound "
+                    "or max_factor",
+    }
+    SUCCESS: ClassVar[frozenset[str]] = frozenset(STATUSES)
+
+    factor: float
+    kind: str
+    reason: str | None
+    end_factor: float
+    q: np.ndarray
+    max_factor: float
+    start: Equilibrium
+    status: str = "complete"
+
+    def __post_init__(self) -> None:
+        freeze(self)
+
+    @property
+    def message(self) -> str:
+        if self.kind == "none":
+            why = "a joint reaches its range bound" if self.reason == "joint_limit" else "max_factor"
+            return f"no loss of stability up to {self.end_factor:.6g} times the weights ({why})"
+        what = "snaps (a fold)" if self.kind == "fold" else "buckles (a bifurcation)"
+        return f"the rest pose {what} when the weights are {self.factor:.6g} times theirs"
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form: ``success``, ``status``, ``message``, ``factor`` (null for none), ``kind``, ``reason``,
+        ``end_factor``, ``q``, ``max_factor``, ``start``."""
+        return {**self.outcome(), "factor": nullables(np.array([self.factor]))[0], "kind": self.kind,
+                "reason": self.reason, "end_factor": number(self.end_factor), "q": numbers(self.q),
+                "max_factor": number(self.max_factor), "start": self.start.to_dict()}
+
+
+def weight_capacity(m: Manipulator, pose=None, *, max_factor: float = 10.0,
+                    timeout: float | None = None) -> WeightCapacity:
+    """By how much the chain's weights (``gravity`` on its masses and payload, the joint forces held) may grow
+    before its rest pose loses stability: the rest configuration followed as gravity is scaled from 1 to
+    ``max_factor`` (:func:`~..paths.loaded_path.weight_limit`: tangent predictor, Newton corrector under the loads,
+    a fold or a bifurcation located to 1e-9 of the range).
+
+    Parameters
+    ----------
+    m : Manipulator
+        A chain with ``gravity`` and some mass.
+    pose : optional
+        The stable pose: None (the least-potential rest configuration), an :class:`Equilibrium` or ``n`` joint angles
+        (the equilibrium with the tip free reached from them).
+    max_factor : float
+        Follow up to this multiple of gravity (> 1).
+    timeout : float, optional
+        Seconds.
+
+    Raises
+    ------
+    InvalidParameterError
+        ``field="gravity"`` when the chain carries no weight; ``max_factor`` not > 1; a pose that is not a stable
+        equilibrium (``field="pose"``).
+    UnsupportedError
+        A tension-only chain (``field="segments[i].spring"``).
+    """
+    linear_only(m, "weight_capacity")
+    if m.gravity is None or not np.any(Manipulator(m.segments, m.payload, m.gravity).link_loads != 0.0):
+        raise InvalidParameterError("the chain carries no weight: give it gravity and a mass (Segment(..., mass=)) "
+                                    "or a payload", field="gravity")
+    try:
+        top = float(max_factor)
+    except (TypeError, ValueError):
+        raise InvalidParameterError(f"max_factor must be a number > 1, got {max_factor!r}",
+                                    field="max_factor") from None
+    if not (math.isfinite(top) and top > 1.0):
+        raise InvalidParameterError(f"max_factor must be a finite number > 1, got {max_factor!r}", field="max_factor")
+    with _time_limit(timeout):
+        if pose is None:
+            from ..equilibria.rest import rest_configuration
+
+            start = rest_configuration(m)
+        else:
+            q0 = pose.q if isinstance(pose, Equilibrium) else check_q0(m, pose, closed=True)
+            start = solve_equilibrium_under_force(m, 0.0, 0.0, q0=q0)
+            if not start.stable or float(np.abs(start.q - np.asarray(q0, float)).max()) > 1e-3:
+                raise InvalidParameterError("the pose is not a stable equilibrium of the chain under its loads",
+                                            field="pose")
+        lim = weight_limit(m, start, np.zeros(2), top)
+    reason = None if lim.kind != "none" else ("max_factor" if lim.reason == "max_load" else lim.reason)
+    return WeightCapacity(factor=1.0 + lim.load if lim.kind != "none" else float("nan"), kind=lim.kind,
+                          reason=reason, end_factor=1.0 + lim.end_load, q=np.asarray(lim.q, float).copy(),
+                          max_factor=top, start=start)

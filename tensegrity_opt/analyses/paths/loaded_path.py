@@ -28,7 +28,7 @@ from ...numerics.slack_nlp import slack_nlp
 from ...timelimit import check_time
 from ..equilibria.equilibrium import Equilibrium
 
-__all__ = ["LoadedLimit", "loaded_limit", "LOAD_TOL"]
+__all__ = ["LoadedLimit", "loaded_limit", "weight_limit", "LOAD_TOL"]
 
 #: The limit load is located to this, relative to ``max_load``.
 LOAD_TOL = 1e-9
@@ -64,6 +64,9 @@ def _newton(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, free: np.ndarray)
     lim = m.joint_limits
     scale = m.torque_scale
     q = q.copy()
+    if np.any(np.abs(q[idx]) > lim[idx]):      # a start (the predictor) beyond the range: never an answer there
+        _LEFT[0] = True
+        return None
     for _ in range(NEWTON_ITER):
         _, g, H, _, J = nlp.derivatives(m, q, F)
         r = (g - J.T @ F)[idx]
@@ -83,39 +86,93 @@ def _newton(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, free: np.ndarray)
     return None
 
 
-def _tangent(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, d: np.ndarray, free: np.ndarray) -> np.ndarray:
-    """``dq/dt`` along the path at ``q`` (the free joints): ``H_ff dq = (J^T d)_f``; zeros where ``H`` is singular."""
+def _tangent(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, dr_dt: np.ndarray, free: np.ndarray) -> np.ndarray:
+    """``dq/dt`` along the path at ``q`` (the free joints): ``H_ff dq = -(dr/dt)_f``; zeros where ``H`` is
+    singular."""
     idx = np.flatnonzero(free)
-    _, _, H, _, J = nlp.derivatives(m, q, F)
+    _, _, H, _, _ = nlp.derivatives(m, q, F)
     out = np.zeros_like(q)
     try:
-        out[idx] = np.linalg.solve(H[np.ix_(idx, idx)], (J.T @ d)[idx])
+        out[idx] = np.linalg.solve(H[np.ix_(idx, idx)], -dr_dt[idx])
     except np.linalg.LinAlgError:
         pass
     return out if np.all(np.isfinite(out)) else np.zeros_like(q)
+
+
+class _TipLoad:
+    """The path ``F = base + t d`` of a tip load on the chain ``m``."""
+
+    def __init__(self, m: Manipulator, base: np.ndarray, d: np.ndarray) -> None:
+        self.m, self.base, self.d = m, np.asarray(base, float), np.asarray(d, float)
+
+    def at(self, t: float) -> tuple[Manipulator, np.ndarray]:
+        return self.m, self.base + t * self.d
+
+    def dr_dt(self, q: np.ndarray, t: float) -> np.ndarray:
+        return -self.m.jacobian(q).T @ self.d          # r = grad(E + V) - J^T F
+
+
+class _Weight:
+    """The path of the chain's weights scaled by ``1 + t`` (gravity's magnitude; the joint forces and the tip load
+    ``base`` held)."""
+
+    def __init__(self, m: Manipulator, base: np.ndarray) -> None:
+        self.m, self.base = m, np.asarray(base, float)
+        self.unit = Manipulator(m.segments, m.payload, m.gravity)          # the weights alone, at factor 1
+        self._chains: dict[float, Manipulator] = {}
+
+    def at(self, t: float) -> tuple[Manipulator, np.ndarray]:
+        mt = self._chains.get(t)
+        if mt is None:
+            g = self.m.gravity
+            mt = Manipulator(self.m.segments, self.m.payload, (g[0] * (1.0 + t), g[1] * (1.0 + t)),
+                             self.m.joint_forces)
+            self._chains = {t: mt}
+        return mt, self.base
+
+    def dr_dt(self, q: np.ndarray, t: float) -> np.ndarray:
+        return self.unit.load_gradient(q)
 
 
 def loaded_limit(m: Manipulator, start: Equilibrium, base: np.ndarray, direction: np.ndarray,
                  max_load: float) -> LoadedLimit:
     """The path ``F = base + t d`` from the stable ``start`` (an equilibrium of ``m`` under ``base``, tip free) to
     its first loss of stability (module docstring)."""
-    nlp = slack_nlp(m.n, m.loaded)
-    d = np.asarray(direction, float)
+    return _follow(_TipLoad(m, base, direction), start, max_load)
+
+
+def weight_limit(m: Manipulator, start: Equilibrium, base: np.ndarray, max_factor: float) -> LoadedLimit:
+    """The path of the chain's weights growing, gravity scaled by ``1 + t`` from the stable ``start`` (tip free
+    under ``base``), ``t`` up to ``max_factor - 1``, to its first loss of stability: ``load`` is ``t`` there (the
+    weights may grow by that fraction). ``m`` must have ``gravity``."""
+    return _follow(_Weight(m, base), start, max_factor - 1.0)
+
+
+def _follow(path, start: Equilibrium, max_load: float) -> LoadedLimit:
+    """Follow ``path`` (``at(t) -> (chain, F)``, ``dr_dt(q, t)``) from ``start`` to its first loss of stability
+    (module docstring)."""
+    m0, _ = path.at(0.0)
+    nlp = slack_nlp(m0.n, True)
     free = ~np.asarray(start.at_stop, bool)
-    lim = m.joint_limits
+    lim = m0.joint_limits
     q, t = np.asarray(start.q, float).copy(), 0.0
     h = max_load / 50.0
     tol = LOAD_TOL * max_load
     points = 0
+
+    def solve(qs: np.ndarray, tt: float):
+        mt, F = path.at(tt)
+        return _newton(mt, nlp, qs, F, free)
+
     while t < max_load and points < MAX_STEPS:
         check_time("the load path")
         tn = min(t + h, max_load)
-        qp = q + (tn - t) * _tangent(m, nlp, q, base + t * d, d, free)       # the predictor: the branch's tangent
-        res = _newton(m, nlp, qp, base + tn * d, free)
+        mt, F = path.at(t)
+        qp = q + (tn - t) * _tangent(mt, nlp, q, F, path.dr_dt(q, t), free)     # the predictor: the branch's tangent
+        res = solve(qp, tn)
         points += 1
         if res is not None and float(np.abs(res[0] - qp).max()) > max(0.25 * float(np.abs(qp - q).max()), 1e-6):
             res = None                          # the corrector went far from the prediction: another branch, shorter
-
         if res is None:
             if h <= tol:                        # no equilibrium near for any larger load: the range ends, or a fold
                 if _LEFT[0] or np.any(np.abs(q[free]) > lim[free] * (1.0 - 1e-3)):
@@ -128,7 +185,7 @@ def loaded_limit(m: Manipulator, start: Equilibrium, base: np.ndarray, direction
             lo, hi, q_lo = t, tn, q
             while hi - lo > tol:
                 mid = 0.5 * (lo + hi)
-                r = _newton(m, nlp, q_lo, base + mid * d, free)
+                r = solve(q_lo, mid)
                 points += 1
                 if r is None or r[1] < 0.0:     # none near (past a fold) or unstable: the limit is below
                     hi = mid
@@ -136,7 +193,7 @@ def loaded_limit(m: Manipulator, start: Equilibrium, base: np.ndarray, direction
                     lo, q_lo = mid, r[0]
             # at a fold lambda is zero too (Newton may reach the unstable side below it): past a fold there is no
             # equilibrium near, past a bifurcation the branch goes on
-            on = _newton(m, nlp, q_lo, base + (lo + 1e-6 * max_load) * d, free)
+            on = solve(q_lo, lo + 1e-6 * max_load)
             points += 1
             return LoadedLimit("bifurcation" if on is not None else "fold", lo, lo, q_lo, None, points)
         q, t = qn, tn

@@ -160,11 +160,23 @@ def _cmd_homotopy_precompute(args) -> int:
     return 0
 
 
+class _WholeNames(argparse.HelpFormatter):
+    """The top help's formatter: its description lists the commands, so a line never breaks inside a hyphenated
+    name (``load-capacity``)."""
+
+    def _fill_text(self, text: str, width: int, indent: str) -> str:
+        import textwrap
+
+        return textwrap.fill(" ".join(text.split()), width, initial_indent=indent, subsequent_indent=indent,
+                             break_on_hyphens=False)
+
+
 def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.ArgumentParser:
     """The parser of every library command; ``add_commands(subparsers)`` adds more (a command that
     handles its own arguments sets ``run=callable(args) -> exit status`` as its default)."""
-    p = Parser(prog="tensegrity-opt", epilog="Each command's options and their defaults: tensegrity-opt COMMAND "
-                                             "--help (plot: tensegrity-opt plot KIND --help).")
+    p = Parser(prog="tensegrity-opt", formatter_class=_WholeNames,
+               epilog="Each command's options and their defaults: tensegrity-opt COMMAND --help (plot: tensegrity-opt "
+                      "plot KIND --help).")
     p.add_argument("--version", action="version", version=f"tensegrity-opt {__version__}")
     sub = p.add_subparsers(dest="command", required=True, metavar="COMMAND")
 
@@ -238,8 +250,8 @@ def build_parser(add_commands: Callable[[Any], None] | None = None) -> argparse.
 #: The command groups of the top help, in order; a command in none of them is listed under "more".
 GROUPS = (("equilibria", ("buckling", "equilibrium", "equilibria", "curve", "rest", "modes")),
           ("loading paths", ("branch", "limit-load", "imperfection", "boundary", "atlas")),
-          ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "holding-design",
-                                   "load-capacity")),
+          ("control and design", ("plan", "simulate", "force-estimate", "stiffness-design", "load-capacity",
+                                   "holding-design", "weight-capacity")),
           ("figures", ("plot",)), ("parameter sweeps", ("sweep",)), ("set-up", ("homotopy-precompute",)),
           ("HTTP service", SERVICE_COMMANDS))
 

@@ -39,7 +39,7 @@ import numpy as np
 
 from ...analyses.design.force_sensor import estimate_tip_force
 from ...analyses.design.holding import preloads_for_holding
-from ...analyses.design.load_capacity import load_capacity
+from ...analyses.design.load_capacity import load_capacity, weight_capacity
 from ...analyses.design.preload_control import ON_INFEASIBLE, ON_SNAP, PreloadPlan, plan_preloads
 from ...analyses.design.preloads import OBJECTIVES
 from ...analyses.design.stiffness_shaping import preloads_for_stiffness
@@ -488,6 +488,14 @@ def _cmd_holding(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     return d.to_dict, "\n".join(lines)
 
 
+def _cmd_weight_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
+    w = weight_capacity(m, None, max_factor=args.max_factor)
+    lines = [f"Weight capacity of the rest pose (n = {m.n}): {w.message}",
+             f"rest configuration q = {fmt_q(w.start.q)}",
+             f"at the {'limit' if w.kind != 'none' else 'end'} (x{w.end_factor:.6g}): q = {fmt_q(w.q)}"]
+    return w.to_dict, "\n".join(lines)
+
+
 def _cmd_load_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, str]:
     cap = load_capacity(m, None, base=tuple(args.base), directions=args.directions, boundary=args.boundary,
                         max_load=args.max_load)
@@ -500,8 +508,8 @@ def _cmd_load_capacity(args: argparse.Namespace, m: Manipulator) -> tuple[Any, s
 
 
 def add_control_parsers(subparsers: Any) -> None:
-    """Add ``plan``, ``simulate``, ``force-estimate``, ``stiffness-design``, ``holding-design`` and ``load-capacity``
-    to ``subparsers``
+    """Add ``plan``, ``simulate``, ``force-estimate``, ``stiffness-design``, ``holding-design``, ``weight-capacity`` and
+    ``load-capacity`` to ``subparsers``
     (``add_subparsers()``'s result)."""
 
     sp = add_command(subparsers, "plan", _cmd_plan,
@@ -549,6 +557,11 @@ def add_control_parsers(subparsers: Any) -> None:
                          "rad)")
     sp.add_argument("--max-angle", type=positive_float, default=None,
                     help="the sag allowed: every joint within this of straight (rad); default anywhere in range")
+
+    sp = add_command(subparsers, "weight-capacity", _cmd_weight_capacity,
+                     "how much heavier the chain may get (gravity scaled) before its rest pose snaps or buckles")
+    sp.add_argument("--max-factor", type=positive_float, default=10.0,
+                    help="follow the weights up to this multiple of gravity (> 1)")
 
     sp = add_command(subparsers, "load-capacity", _cmd_load_capacity,
                      "how much more tip load the rest pose carries, per direction")

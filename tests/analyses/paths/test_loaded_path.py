@@ -84,3 +84,44 @@ def test_a_loaded_chain_refuses_the_guided_boundary_by_name():
     with pytest.raises(to.UnsupportedError) as e:
         to.load_capacity(_arm((0.0, -G)), boundary="guided")
     assert e.value.field == "gravity"
+
+
+def test_the_weight_an_upright_arm_carries_before_it_buckles_is_where_its_straight_hessian_turns_singular():
+    """Standing straight up (gravity along -x), the arm's rest pose is straight and stays so as its weights grow,
+    until the straight pose's Hessian (the springs' ``K_i`` against the weights' destabilising term, linear in the
+    factor) turns singular: an independent bisection on its smallest eigenvalue gives the factor."""
+    m = to.Manipulator.uniform(6, a=0.04, b=0.05, k=5000.0, L0=0.05, mass=0.05, inertia=2e-5, payload=0.1,
+                               gravity=(-G, 0.0))
+    w = to.weight_capacity(m)
+    assert w.success and w.kind == "bifurcation" and w.reason is None
+    K = np.diag([-float(s.dtorque(0.0)) for s in m.segments])
+    Hg = m.load_hessian(np.zeros(6))                    # the weights' Hessian at the straight pose, factor 1
+    lo, hi = 0.0, 10.0
+    for _ in range(80):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if np.linalg.eigvalsh(K + mid * Hg)[0] > 0 else (lo, mid)
+    assert w.factor == pytest.approx(lo, rel=1e-8)
+    body = w.to_dict()
+    assert body["kind"] == "bifurcation" and body["start"]["loads"]["gravity"] == [-G, 0.0]
+
+
+def test_growing_weights_lean_an_arm_onto_its_range_bound_as_forward_solves_say():
+    m = to.Manipulator.uniform(4, a=0.04, b=0.05, k=800.0, L0=0.05, mass=0.05, payload=0.1, gravity=(-G, 0.5))
+    w = to.weight_capacity(m, max_factor=20.0)
+    assert (w.kind, w.reason) == ("none", "joint_limit") and 1.0 < w.end_factor < 20.0
+    assert np.all(np.abs(w.q) <= m.joint_limits)        # never past the range (a predictor there is refused)
+    # the chain with its weights at 0.99 of the end factor rests, stably, near the path's last configuration
+    g = 0.99 * w.end_factor
+    heavier = to.Manipulator(m.segments, m.payload, (-G * g, 0.5 * g))
+    eq = to.solve_equilibrium_under_force(heavier, 0.0, 0.0, q0=w.q)
+    assert eq.stable and float(np.abs(eq.q - w.q).max()) < 0.2
+    assert float(np.max(np.abs(w.q) / m.joint_limits)) > 0.99         # a joint at its bound at the end
+
+
+def test_a_chain_without_weight_has_no_weight_capacity():
+    with pytest.raises(to.InvalidParameterError) as e:
+        to.weight_capacity(to.Manipulator.uniform(3, mass=0.1))
+    assert e.value.field == "gravity"
+    with pytest.raises(to.InvalidParameterError) as e:
+        to.weight_capacity(_arm((0.0, -G)), max_factor=1.0)
+    assert e.value.field == "max_factor"

@@ -315,3 +315,14 @@ def test_the_chain_options_take_gravity_and_joint_forces(capsys, tmp_path):
     assert main(["rest", "--manipulator", str(path), "--stable-only", "--json"]) == 0
     sets = json.loads(capsys.readouterr().out)
     assert sets["equilibria"][0]["loads"]["gravity"] == [0.0, -9.81]
+
+
+def test_weight_capacity_prints_the_librarys_factor(capsys):
+    args = ["--n", "6", "--a", "0.04", "--b", "0.05", "--k", "5000", "--L0", "0.05", "--mass", "0.05", "--payload",
+            "0.1", "--gravity", "-9.81", "0"]
+    assert main(["weight-capacity", *args, "--json"]) == 0
+    body = json.loads(capsys.readouterr().out)
+    m = to.Manipulator.uniform(6, a=0.04, b=0.05, k=5000.0, L0=0.05, mass=0.05, payload=0.1, gravity=(-9.81, 0.0))
+    assert body["factor"] == pytest.approx(to.weight_capacity(m).factor, rel=1e-12)
+    assert main(["weight-capacity", "--n", "3"]) == 2
+    assert "no weight" in one_error_line(capsys.readouterr().err)

@@ -296,6 +296,11 @@ from .uniform_manipulator_in import UniformManipulatorIn
 from .uniform_manipulator_in_spring import UniformManipulatorInSpring
 from .version_out import VersionOut
 from .wall_control_in import WallControlIn
+from .weight_capacity_out import WeightCapacityOut
+from .weight_capacity_out_kind import WeightCapacityOutKind
+from .weight_capacity_out_reason_type_0 import WeightCapacityOutReasonType0
+from .weight_capacity_out_start import WeightCapacityOutStart
+from .weight_capacity_request import WeightCapacityRequest
 
 __all__ = (
     "ActiveBoundOut",
@@ -592,4 +597,9 @@ __all__ = (
     "UniformManipulatorInSpring",
     "VersionOut",
     "WallControlIn",
+    "WeightCapacityOut",
+    "WeightCapacityOutKind",
+    "WeightCapacityOutReasonType0",
+    "WeightCapacityOutStart",
+    "WeightCapacityRequest",
 )
