@@ -964,7 +964,7 @@ def test_inline_fast_path_answers_like_the_workers():
             assert a.status_code == b.status_code == 200, (a.text, b.text)
             # the fast path renders the body itself (no response-model pass): the same bytes
             assert a.content == b.content and a.headers["content-type"] == b.headers["content-type"]
-        assert [key[2] for key in submitted] == [0.6]      # only the bistable chain (a = 0.6) used a worker
+        assert [key[3] for key in submitted] == [0.6]      # only the bistable chain (a = 0.6) used a worker
 
 
 def test_local_equilibrium_follows_the_branch_through_q0(client):

@@ -231,6 +231,11 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
     ``base`` its load). Where the path stays stable up to a joint's range bound or ``max_load``, there is no
     limit (``kind "none"``, ``loads`` NaN, ``reasons`` says which).
 
+    A chain with dead loads (``gravity`` on its masses, ``joint_forces``) is followed from its sagged pose (the
+    least-potential rest configuration under the loads by default) by :func:`~..paths.loaded_path.loaded_limit`
+    (Newton along the load under the loads; ``results`` None): the extra tip load along the gravity direction it
+    carries is the payload it carries, ``loads / |g|`` (free tip only).
+
     Parameters
     ----------
     m : Manipulator
@@ -254,11 +259,6 @@ def load_capacity(m: Manipulator, pose=None, *, base=None, directions=36, bounda
         Continuation points per direction at most.
     timeout : float, optional
         Seconds for the whole call; directions not finished in time have ``reasons "time_limit"``.
-
-    A chain with dead loads (``gravity`` on its masses, ``joint_forces``) is followed from its sagged pose (the
-    least-potential rest configuration under the loads by default) by :func:`~..paths.loaded_path.loaded_limit`
-    (Newton along the load under the loads; ``results`` None): the extra tip load along the gravity direction it
-    carries is the payload it carries, ``loads / |g|`` (free tip only).
 
     Returns
     -------

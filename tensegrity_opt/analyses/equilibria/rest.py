@@ -509,15 +509,15 @@ def rest_configuration(m: Manipulator, *, which: str = "least_energy") -> Equili
     when another segment's wells fix ``max |q_i|`` anyway and the farther one has the larger ``q_j``
     (``tests/analyses/equilibria/test_rest.py`` has such a chain, and one whose near-ties add up past the tolerance).
 
+    A chain with dead loads (weights under gravity, joint forces: the sagged shape) is no longer a sum of one-joint
+    energies: its least potential ``E + V`` with the tip free is searched over the closed joint range
+    (:func:`~.equilibrium.least_energy_free`: measured, ``status="converged"``; a joint may rest on its stop).
+
     Parameters
     ----------
     m : Manipulator
     which : {"least_energy"}
         The only rule.
-
-    A chain with dead loads (weights under gravity, joint forces: the sagged shape) is no longer a sum of one-joint
-    energies: its least potential ``E + V`` with the tip free is searched over the closed joint range
-    (:func:`~.equilibrium.least_energy_free`: measured, ``status="converged"``; a joint may rest on its stop).
 
     Returns
     -------
