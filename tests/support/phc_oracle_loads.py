@@ -22,11 +22,19 @@ joint force at its joint. Each point is ``(b_1, 0) + sum_j lever_j u_j``, so wit
 (``du_j/dq_i = perp(u_j)`` for ``j >= i``; ``perp(u) . G = u x G``). The equilibria with the tip held on the target
 ``(2 sum b - dx, dy)``: ``grad (E + V) = J^T F`` and ``tip(q) = target``.
 
-The polynomial system, unknowns ``C_i, S_i`` (``i = 1..n``) and ``Fx, Fy`` (``2n + 2`` of them):
+The polynomial system, unknowns the half angles of the ABSOLUTE link angles ``X_j = cos(psi_j / 2)``, ``Y_j =
+sin(psi_j / 2)`` (``j = 1..n``; ``X_0 = 1, Y_0 = 0``) and ``Fx, Fy`` (``2n + 2`` of them), with the joints' half angles
+``C_i + i S_i = (X_i + i Y_i)(X_{i-1} - i Y_{i-1})`` (a bijection with the relative ``C_i, S_i``: ``X_j + i Y_j =
+prod_{i <= j} (C_i + i S_i)``) and ``u_j = (X_j^2 - Y_j^2, 2 X_j Y_j)``:
 
-* ``C_i^2 + S_i^2 - 1 = 0``;
-* ``dE_i/dq_i - sum_{j >= i} u_j x (G_j + l_j F) = 0`` with ``u_j = Re/Im prod_{i <= j} (C_i + i S_i)^2``;
-* ``b_1 + sum_j l_j Re(u_j) - target_x = 0``, ``sum_j l_j Im(u_j) - target_y = 0``.
+* ``X_j^2 + Y_j^2 - 1 = 0``;
+* ``dE_i/dq_i (C_i, S_i) - sum_{j >= i} u_j x (G_j + l_j F) = 0`` (degree 4);
+* ``b_1 + sum_j l_j u_j,x - target_x = 0``, ``sum_j l_j u_j,y - target_y = 0``.
+
+(The relative unknowns ``C_i, S_i`` give degree ``2n + 1``: PHCpack's blackbox did not finish that one in 10 minutes
+at n = 3; this one takes 4-25 s at n = 3, about 2 minutes at n = 4: 2816 paths.) A generic chain has 8 finite
+complex roots at n = 2 and 96 at n = 3 (:data:`GENERIC_ROOTS`; the roots with some ``C_i < 0`` -- the springs'
+lengths negative -- included): a run reporting fewer lost one.
 
 It is expanded exactly by a small monomial-dictionary arithmetic (:class:`_Poly`) and written in PHCpack's input
 format. Every finite root that PHCpack reports is taken; the real ones (imaginary parts small) are polished by
@@ -51,6 +59,10 @@ import numpy as np
 import scipy.linalg as sla
 
 PHC = shutil.which("phc")
+#: the finite complex roots of the system of a generic chain (measured: every n = 2 and n = 3 chain tried, loaded
+#: or not, symmetric segments too; PHCpack's other paths diverge, "no solution" / "at infinity"). A run that reports
+#: fewer lost a root.
+GENERIC_ROOTS = {2: 8, 3: 96}
 #: a root whose imaginary parts are all below this (relative to its size) is real
 IMAG_TOL = 1e-6
 #: dedupe in q (max-norm)
@@ -357,30 +369,35 @@ class _Poly:
 
 
 def names(n):
-    return [f"C{i + 1}" for i in range(n)] + [f"S{i + 1}" for i in range(n)] + ["Fx", "Fy"]
+    return [f"X{j + 1}" for j in range(n)] + [f"Y{j + 1}" for j in range(n)] + ["Fx", "Fy"]
 
 
 def system(ch: Chain, dx, dy=0.0) -> list[_Poly]:
-    """The ``2n + 2`` polynomials (module docstring) in ``C_1..C_n, S_1..S_n, Fx, Fy``."""
+    """The ``2n + 2`` polynomials (module docstring) in the half angles of the ABSOLUTE link angles,
+    ``X_j = cos(psi_j / 2)``, ``Y_j = sin(psi_j / 2)``
+    (``j = 1..n``; ``X_0 = 1``, ``Y_0 = 0`` the base), and ``Fx, Fy``.
+
+    ``C_i + i S_i = (X_i + i Y_i) (X_{i-1} - i Y_{i-1})`` (``q_i / 2 = psi_i / 2 - psi_{i-1} / 2``): a bijection with
+    the relative half angles ``(C, S)`` (``X_j + i Y_j = prod_{i <= j} (C_i + i S_i)``), so the two systems have the
+    same roots; this one is of degree 4 at most (``u_j = (X_j^2 - Y_j^2, 2 X_j Y_j)``), the relative one of degree
+    ``2n + 1``, which PHCpack's blackbox did not finish in 10 minutes at n = 3."""
     n = ch.n
     nv = 2 * n + 2
     V = lambda k: _Poly.var(nv, k)  # noqa: E731
-    C, S = [V(i) for i in range(n)], [V(n + i) for i in range(n)]
+    X = [_Poly.const(nv, 1.0)] + [V(j) for j in range(n)]
+    Y = [_Poly.const(nv, 0.0)] + [V(n + j) for j in range(n)]
     Fx, Fy = V(2 * n), V(2 * n + 1)
     l, G = ch.links, ch.G
     tgt = ch.target(dx, dy)
-    # u_j as a complex product of the joints' rotations (cos q + i sin q) = (C + i S)^2
-    ux, uy = [], []
-    re, im = _Poly.const(nv, 1.0), _Poly.const(nv, 0.0)
-    for i in range(n):
-        cq, sq = C[i] * C[i] - S[i] * S[i], 2.0 * C[i] * S[i]
-        re, im = re * cq - im * sq, re * sq + im * cq
-        ux.append(re), uy.append(im)
-    eqs = [C[i] * C[i] + S[i] * S[i] - 1.0 for i in range(n)]
+    ux = [X[j + 1] * X[j + 1] - Y[j + 1] * Y[j + 1] for j in range(n)]
+    uy = [2.0 * X[j + 1] * Y[j + 1] for j in range(n)]
+    eqs = [X[j + 1] * X[j + 1] + Y[j + 1] * Y[j + 1] - 1.0 for j in range(n)]
     for i in range(n):
         a, b = ch.a[i], ch.b[i]
-        L1, L2 = 2.0 * (b * C[i] - a * S[i]), 2.0 * (b * C[i] + a * S[i])
-        d1, d2 = -(a * C[i] + b * S[i]), a * C[i] - b * S[i]
+        C = X[i + 1] * X[i] + Y[i + 1] * Y[i]
+        S = Y[i + 1] * X[i] - X[i + 1] * Y[i]
+        L1, L2 = 2.0 * (b * C - a * S), 2.0 * (b * C + a * S)
+        d1, d2 = -(a * C + b * S), a * C - b * S
         dE = ch.k1[i] * (L1 - ch.L10[i]) * d1 + ch.k2[i] * (L2 - ch.L20[i]) * d2
         tq = _Poly.const(nv, 0.0)
         for j in range(i, n):
@@ -390,6 +407,18 @@ def system(ch: Chain, dx, dy=0.0) -> list[_Poly]:
     eqs.append(sum((l[j] * ux[j] for j in range(n)), _Poly.const(nv, ch.b[0] - tgt[0])))
     eqs.append(sum((l[j] * uy[j] for j in range(n)), _Poly.const(nv, -tgt[1])))
     return eqs
+
+
+def unknowns(q, F) -> np.ndarray:
+    """The system's unknowns at ``(q, F)``."""
+    h = np.cumsum(np.asarray(q, float)) / 2.0
+    return np.concatenate([np.cos(h), np.sin(h), np.asarray(F, float)])
+
+
+def relative_half_angles(x, n):
+    """``(C, S)`` of the unknowns ``x``."""
+    X, Y = np.concatenate([[1.0], x[:n]]), np.concatenate([[0.0], x[n:2 * n]])
+    return X[1:] * X[:-1] + Y[1:] * Y[:-1], Y[1:] * X[:-1] - X[1:] * Y[:-1]
 
 
 def phc_input(eqs, n) -> str:
@@ -407,7 +436,7 @@ def _parse(text: str, nm):
     for blk in part.split("the solution for t :")[1:]:
         vals = dict((k, complex(float(x), float(y)))
                     for k, x, y in re.findall(rf"^\s*(\w+)\s*:\s*({_NUM})\s+({_NUM})\s*$", blk.split("==")[0], re.M))
-        tail = re.search(r"==\s*err.*?==\s*(.*?)\s*==", blk)
+        tail = re.search(r"res :\s*\S+\s*=\s*([^=\n]*?)\s*==", blk)
         sols.append(([vals[k] for k in nm], tail.group(1) if tail else ""))
     return sols
 
@@ -442,7 +471,8 @@ class Root:
 @dataclass
 class Result:
     roots: list              # the equilibria inside the open range, sorted by q
-    n_solutions: int         # the finite solutions PHCpack reported
+    n_solutions: int         # the solutions PHCpack reported (one per path)
+    n_finite: int            # of them finite (not "no solution", not "at infinity")
     n_real: int              # of them real
     n_valid: int             # of them with C > 0 (q in (-pi, pi)) before the range filter
     seconds: float
@@ -465,6 +495,8 @@ def equilibria(ch: Chain, dx, dy=0.0, *, timeout=600.0, seed=None) -> Result:
     scale = ch.scale
     roots, n_real, n_valid = [], 0, 0
     for vals, flag in sols:
+        if flag in ("no solution", "at infinity"):
+            continue
         z = np.array(vals)
         if not np.all(np.isfinite(z)):
             continue
@@ -472,7 +504,7 @@ def equilibria(ch: Chain, dx, dy=0.0, *, timeout=600.0, seed=None) -> Result:
             continue
         n_real += 1
         x = z.real
-        Cs, Ss, F0 = x[:n], x[n:2 * n], x[2 * n:]
+        (Cs, Ss), F0 = relative_half_angles(x, n), x[2 * n:]
         if np.any(Cs <= 0.0):
             continue
         n_valid += 1
@@ -482,7 +514,7 @@ def equilibria(ch: Chain, dx, dy=0.0, *, timeout=600.0, seed=None) -> Result:
             raise AssertionError(f"a PHCpack root does not polish: q0 {q0}, q {q}, flag {flag!r}")
         if np.any(np.abs(q) >= ch.limits):
             continue
-        y = np.concatenate([np.cos(q / 2), np.sin(q / 2), F])
+        y = unknowns(q, F)
         res = max(abs(p(y)) for p in eqs) / scale
         idx, ev = morse(ch, q, F)
         if ev.size and np.abs(ev).min() < EIG_TOL * scale:
@@ -492,7 +524,9 @@ def equilibria(ch: Chain, dx, dy=0.0, *, timeout=600.0, seed=None) -> Result:
     for r in sorted(roots, key=lambda r: tuple(r.q)):
         if not any(np.abs(r.q - o.q).max() < DEDUP for o in out):
             out.append(r)
-    return Result(roots=out, n_solutions=len(sols), n_real=n_real, n_valid=n_valid, seconds=secs,
+    n_finite = sum(1 for v, f in sols if f not in ("no solution", "at infinity") and np.all(np.isfinite(v))
+                   and np.abs(np.array(v)).max() < 1e8)
+    return Result(roots=out, n_solutions=len(sols), n_finite=n_finite, n_real=n_real, n_valid=n_valid, seconds=secs,
                   flags=[f for _, f in sols])
 
 
