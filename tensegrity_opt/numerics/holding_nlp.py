@@ -24,6 +24,7 @@ n each), ``Gx, Gy`` (the links' dead loads, n each), ``mu``, ``w`` (the objectiv
 from __future__ import annotations
 
 import casadi as ca
+import numpy as np
 
 from .design_nlp import _factor_floor, _nlpsol, _run, _tril, tril_size
 from .expressions import segment_energy
@@ -67,8 +68,6 @@ class HoldingNLP:
 
     def solve(self, x0, p, lbx, ubx):
         """One IPOPT solve: the equilibrium and factor rows equalities, every spring taut (``L - L0 >= 0``)."""
-        import numpy as np
-
         lbg = np.zeros(self.g.size)
         ubg = np.zeros(self.g.size)
         ubg[self.g.span("stretch1", "stretch2")] = np.inf

@@ -35,6 +35,7 @@ from ...outcome import Outcome, SolverInfo, freeze
 from ...serialize import number, numbers
 from ...timelimit import time_limit as _time_limit
 from ..equilibria.equilibrium import Equilibrium, solve_equilibrium_under_force
+from ..equilibria.modes import stiffness_matrix
 from ..equilibria.rest import rest_configuration
 
 __all__ = ["HoldingDesign", "HoldingMap", "preloads_for_holding", "holding_map", "SAME_POSE"]
@@ -133,9 +134,9 @@ def _designed(m: Manipulator, vary: str, s: np.ndarray) -> Manipulator:
 
 
 def _margin(m: Manipulator, q: np.ndarray) -> float:
-    """The smallest eigenvalue of the Hessian of ``E + V`` at ``q`` (numpy: the segments' ``E''`` and the loads')."""
-    H = np.diag([-float(seg.dtorque(v)) for seg, v in zip(m.segments, q)]) + m.load_hessian(q)
-    return float(np.linalg.eigvalsh(H)[0])
+    """The smallest eigenvalue of the Hessian of ``E + V`` at ``q`` with the tip free (the modes' stiffness matrix,
+    numpy: the segments' ``E''`` and the loads')."""
+    return float(np.linalg.eigvalsh(stiffness_matrix(m, q, np.zeros(2)))[0])
 
 
 def preloads_for_holding(m: Manipulator, *, vary: Any = "L0", margin: float = 1e-3, max_angle: float | None = None,
@@ -261,8 +262,7 @@ def _design(m: Manipulator, vary: str, mu: float, lim: np.ndarray) -> HoldingDes
             status = "metastable"
     except TensegrityError:
         pass
-    straight = 2.0 * np.hypot(md.a, md.b) * np.cos(np.arctan2(md.a, md.b))
-    tension = float(np.sum(md.k1 * (straight - md.L1_0) + md.k2 * (straight - md.L2_0)))
+    tension = float(sum(np.sum(f) for f in md.spring_forces(np.zeros(n))))      # the straight chain's springs
     return HoldingDesign(md, vary, s, eq.q.copy(), got, tension, float(np.sum(md.k1 + md.k2)), eq, solver, status)
 
 

@@ -550,7 +550,7 @@ def least_energy_free(m: Manipulator, force=(0.0, 0.0)) -> Equilibrium:
     none: the rest configuration), in the closed joint range: the local solve of
     :func:`~.equilibrium._equilibrium_under_force_slack` (IPOPT on the slack problem with the tip rows free, Newton,
     the checks in numpy) from straight and from the ``FREE_STARTS`` lowest-potential distinct configurations of
-    ``SAMPLE_PER_JOINT * n`` seeded random ones of the closed range (a quarter with one joint on a stop), ranked
+    ``FREE_SAMPLE_PER_JOINT * n`` seeded random ones of the closed range (a quarter with one joint on a stop), ranked
     by ``E + V - F . tip`` (numpy, all at once). A measured global search, not a certified one (``status``
     ``"converged"``)."""
     F = np.asarray(force, dtype=float)

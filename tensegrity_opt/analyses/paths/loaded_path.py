@@ -19,7 +19,9 @@ Where a free joint reaches its range bound, or ``t`` reaches ``max_load``, there
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -38,8 +40,6 @@ MAX_STEPS = 2000
 JUMP = 0.2
 #: Newton iterations per point at most.
 NEWTON_ITER = 30
-#: Whether the last failed Newton solve left the joint range (a joint reaching its bound ends the path there).
-_LEFT = [False]
 
 
 @dataclass(frozen=True)
@@ -56,34 +56,44 @@ class LoadedLimit:
     points: int
 
 
-def _newton(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, free: np.ndarray):
-    """``(q, lambda_min)`` of the equilibrium under ``F`` near ``q`` (the free joints moved), or None (``_LEFT[0]``
-    says whether the last failure left the joint range)."""
-    _LEFT[0] = False
+class _Solved(NamedTuple):
+    """One corrector's answer: ``q`` and the smallest Hessian eigenvalue ``lam`` of the equilibrium found, or ``q``
+    None where Newton failed; ``left``: it failed by leaving the joint range (a joint reaching its bound ends the path
+    there, not a fold)."""
+
+    q: np.ndarray | None
+    lam: float = math.nan
+    left: bool = False
+
+
+_FAILED = _Solved(None)
+_LEFT_RANGE = _Solved(None, left=True)
+
+
+def _newton(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, free: np.ndarray) -> _Solved:
+    """The equilibrium under ``F`` near ``q`` (the free joints moved) by Newton's method (:class:`_Solved`)."""
     idx = np.flatnonzero(free)
     lim = m.joint_limits
     scale = m.torque_scale
     q = q.copy()
     if np.any(np.abs(q[idx]) > lim[idx]):      # a start (the predictor) beyond the range: never an answer there
-        _LEFT[0] = True
-        return None
+        return _LEFT_RANGE
     for _ in range(NEWTON_ITER):
         _, g, H, _, J = nlp.derivatives(m, q, F)
         r = (g - J.T @ F)[idx]
         if float(np.abs(r).max(initial=0.0)) <= 1e-12 * scale:
             w = np.linalg.eigvalsh(H[np.ix_(idx, idx)]) if idx.size else np.zeros(1)
-            return q, float(w[0])
+            return _Solved(q, float(w[0]))
         try:
             step = np.linalg.solve(H[np.ix_(idx, idx)], -r)
         except np.linalg.LinAlgError:
-            return None
+            return _FAILED
         if not np.all(np.isfinite(step)) or float(np.abs(step).max(initial=0.0)) > JUMP:
-            return None
+            return _FAILED
         q[idx] += step
         if np.any(np.abs(q) > lim):
-            _LEFT[0] = True
-            return None
-    return None
+            return _LEFT_RANGE
+    return _FAILED
 
 
 def _tangent(m: Manipulator, nlp, q: np.ndarray, F: np.ndarray, dr_dt: np.ndarray, free: np.ndarray) -> np.ndarray:
@@ -160,7 +170,7 @@ def _follow(path, start: Equilibrium, max_load: float) -> LoadedLimit:
     tol = LOAD_TOL * max_load
     points = 0
 
-    def solve(qs: np.ndarray, tt: float):
+    def solve(qs: np.ndarray, tt: float) -> _Solved:
         mt, F = path.at(tt)
         return _newton(mt, nlp, qs, F, free)
 
@@ -171,31 +181,31 @@ def _follow(path, start: Equilibrium, max_load: float) -> LoadedLimit:
         qp = q + (tn - t) * _tangent(mt, nlp, q, F, path.dr_dt(q, t), free)     # the predictor: the branch's tangent
         res = solve(qp, tn)
         points += 1
-        if res is not None and float(np.abs(res[0] - qp).max()) > max(0.25 * float(np.abs(qp - q).max()), 1e-6):
-            res = None                          # the corrector went far from the prediction: another branch, shorter
-        if res is None:
+        if res.q is not None and float(np.abs(res.q - qp).max()) > max(0.25 * float(np.abs(qp - q).max()), 1e-6):
+            res = _FAILED                       # the corrector went far from the prediction: another branch, shorter
+        if res.q is None:
             if h <= tol:                        # no equilibrium near for any larger load: the range ends, or a fold
-                if _LEFT[0] or np.any(np.abs(q[free]) > lim[free] * (1.0 - 1e-3)):
+                if res.left or np.any(np.abs(q[free]) > lim[free] * (1.0 - 1e-3)):
                     return LoadedLimit("none", np.nan, t, q, "joint_limit", points)
                 return LoadedLimit("fold", t, t, q, None, points)
             h *= 0.5
             continue
-        qn, lam_n = res
+        qn, lam_n = res.q, res.lam
         if lam_n < 0.0:                         # stability lost on a continuing branch: a bifurcation, bisected
             lo, hi, q_lo = t, tn, q
             while hi - lo > tol:
                 mid = 0.5 * (lo + hi)
                 r = solve(q_lo, mid)
                 points += 1
-                if r is None or r[1] < 0.0:     # none near (past a fold) or unstable: the limit is below
+                if r.q is None or r.lam < 0.0:  # none near (past a fold) or unstable: the limit is below
                     hi = mid
                 else:
-                    lo, q_lo = mid, r[0]
+                    lo, q_lo = mid, r.q
             # at a fold lambda is zero too (Newton may reach the unstable side below it): past a fold there is no
             # equilibrium near, past a bifurcation the branch goes on
             on = solve(q_lo, lo + 1e-6 * max_load)
             points += 1
-            return LoadedLimit("bifurcation" if on is not None else "fold", lo, lo, q_lo, None, points)
+            return LoadedLimit("bifurcation" if on.q is not None else "fold", lo, lo, q_lo, None, points)
         q, t = qn, tn
         h = min(h * 1.5, max_load / 20.0)
     return LoadedLimit("none", np.nan, t, q, "max_load", points)

@@ -22,8 +22,9 @@ def elevations(hmap: HoldingMap) -> np.ndarray:
     return (e + 180.0) % 360.0 - 180.0
 
 
-def plot_holding(hmap: HoldingMap, m: Manipulator | None = None, *, figsize: tuple[float, float] = (11.0, 5.0)) -> Any:
-    """The result of :func:`~tensegrity_opt.analyses.design.holding.holding_map`: left, the chain resting under its
+def plot_holding(hmap: HoldingMap, m: Manipulator, *, figsize: tuple[float, float] = (11.0, 5.0)) -> Any:
+    """The result of :func:`~tensegrity_opt.analyses.design.holding.holding_map` of the chain ``m`` (its geometry
+    draws the shapes): left, the chain resting under its
     weight in each orientation, drawn with gravity pointing down (its base turned; colour by the base's elevation,
     the tip a dot; a joint resting on its stop at the range's end); right, the least total stiffness (``vary k``)
     or preload tension (``vary L0``) of :func:`~tensegrity_opt.preloads_for_holding` against the base's elevation
@@ -48,9 +49,7 @@ def plot_holding(hmap: HoldingMap, m: Manipulator | None = None, *, figsize: tup
         rot = -np.pi / 2 - angle                        # turn the base so that gravity points down
         c, s = math.cos(rot), math.sin(rot)
         R = np.array([[c, -s], [s, c]])
-        line = chain_geometry(m, q)["centerline"] @ R.T if m is not None else None
-        if line is None:
-            continue
+        line = chain_geometry(m, q)["centerline"] @ R.T
         col = cmap((el[i] + 180.0) / 360.0)
         ln, = ax.plot(line[:, 0], line[:, 1], color=col, lw=1.6, marker="o", ms=2.5)
         ln.set_gid(f"sag-{i}")
@@ -96,6 +95,5 @@ def plot_holding(hmap: HoldingMap, m: Manipulator | None = None, *, figsize: tup
     bx.legend(handles=handles, fontsize=7, loc="upper left")
     held = "within %.3g rad" % hmap.max_angle if hmap.max_angle is not None else "anywhere in range"
     bx.set_title(f"holding it {held}, margin {hmap.margin:g} ({hmap.status})", fontsize=9)
-    title = "The chain under its weight" + ("" if m is None else f": {chain_label(m)}")
-    fig.suptitle(title, fontsize=10)
+    fig.suptitle(f"The chain under its weight: {chain_label(m)}", fontsize=10)
     return fig
